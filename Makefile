@@ -1,0 +1,62 @@
+# rotordyn: `make run` and `make test` install whatever is missing (Debian packages, a
+# virtualenv, the package) and then run the main job or every test. Idempotent: each step
+# leaves a stamp and is skipped while its inputs are unchanged.
+SHELL := /bin/bash
+.DEFAULT_GOAL := run
+
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+PIP    := $(PY) -m pip --disable-pip-version-check -q
+STAMPS := $(VENV)/.stamps
+APT_PKGS := libeigen3-dev libsuitesparse-dev libsundials-dev liblapack-dev libblas-dev g++ make
+PY_BUILD := scikit-build-core pybind11 cmake ninja
+PY_DEPS  := numpy scipy pandas pyarrow "dask[distributed]" matplotlib pytest hypothesis
+SOURCES := $(shell find cpp python cmake -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.py' -o -name '*.txt' -o -name '*.toml' -o -name '*.cmake' -o -name '*.pyi' -o -name 'py.typed' \) 2>/dev/null) CMakeLists.txt pyproject.toml
+OUT ?= out
+
+.PHONY: run test test-cpp test-py install sysdeps bench clean distclean
+
+sysdeps: $(STAMPS)/sysdeps
+$(STAMPS)/sysdeps:
+	@mkdir -p $(STAMPS)
+	@if ! dpkg -s $(APT_PKGS) >/dev/null 2>&1; then \
+	  SUDO=""; if [ "$$(id -u)" -ne 0 ]; then SUDO="sudo"; fi; \
+	  echo "make: installing Debian packages: $(APT_PKGS)"; \
+	  $$SUDO apt-get update -qq && \
+	  $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(APT_PKGS) >/dev/null; \
+	fi
+	@touch $@
+
+$(STAMPS)/venv: pyproject.toml | $(STAMPS)/sysdeps
+	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	@echo "make: installing Python build tools and dependencies into $(VENV)"
+	@$(PIP) install $(PY_BUILD) $(PY_DEPS)
+	@mkdir -p $(STAMPS) && touch $@
+
+install: $(STAMPS)/install
+$(STAMPS)/install: $(STAMPS)/venv $(SOURCES)
+	@echo "make: building and installing rotordyn (incremental build in build/py)"
+	@$(PIP) install --no-build-isolation --no-deps .
+	@touch $@
+
+run: $(STAMPS)/install
+	@mkdir -p $(OUT)
+	$(VENV)/bin/rotordyn report paper-rig --out $(OUT)
+
+test-cpp: $(STAMPS)/install
+	$(VENV)/bin/ctest --test-dir build/py --output-on-failure
+
+test-py: $(STAMPS)/install
+	$(PY) -m pytest -q
+
+test: test-cpp test-py
+
+bench: $(STAMPS)/install
+	for b in benchmarks/bench_*.py; do $(PY) $$b || exit 1; done
+
+clean:
+	rm -rf build $(OUT)
+
+distclean: clean
+	rm -rf $(VENV)

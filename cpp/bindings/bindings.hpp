@@ -1,0 +1,15 @@
+// Declarations of the per-concept binding functions (one file per concept).
+#pragma once
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+namespace rotordyn::py_bind {
+namespace py = pybind11;
+/// float64, C-ordered array argument (forcecast converts other dtypes).
+using array_d = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+void bind_errors(py::module_& m);
+void bind_info(py::module_& m);
+void bind_rotor(py::module_& m);
+void bind_modal(py::module_& m);
+}  // namespace rotordyn::py_bind

@@ -1,0 +1,11 @@
+// rotordyn._core: thin pybind11 wrapper around the rotordyn C++ core.
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "rotordyn C++ core (private; use the rotordyn package API)";
+  using namespace rotordyn::py_bind;
+  bind_errors(m);
+  bind_info(m);
+  bind_rotor(m);
+  bind_modal(m);
+}

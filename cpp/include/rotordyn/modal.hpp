@@ -1,0 +1,49 @@
+// Eigen-analysis of M q̈ + D q̇ + K q = 0 (D = C + Ω G): damped natural frequencies, damping,
+// whirl direction and mode shapes (paper §5, eq. 19 without excitation).
+#pragma once
+#include <Eigen/Core>
+
+#include <complex>
+#include <utility>
+#include <vector>
+
+namespace rotordyn {
+
+/// Whirl direction of a mode, from the orbits of its (x, y) pairs.
+enum class Whirl : int { Backward = -1, Planar = 0, Forward = 1 };
+
+struct ModalResult {
+  /// (n_modes,) eigenvalues λ = σ + iω_d with ω_d >= 0, ascending in ω_d (then |λ|), 1/s.
+  Eigen::VectorXcd eigenvalues;
+  /// (n_dof, n_modes) displacement part of the eigenvectors, scaled so that the largest
+  /// component is 1 (real).
+  Eigen::MatrixXcd modes;
+  /// (n_modes,) whirl direction of each mode.
+  std::vector<Whirl> whirl;
+};
+
+/// All eigenvalues of the real general matrix A (LAPACK dgeev). With vectors=true, V holds
+/// the right eigenvectors as columns.
+void eig_general(const Eigen::MatrixXd& A, Eigen::VectorXcd& w, Eigen::MatrixXcd* V);
+
+/// Modal analysis of the second-order system (dense, n_dof ≤ a few thousand).
+/// xy_pairs: (ix, iy) index pairs used to classify whirl. n_modes <= 0: all.
+ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K,
+                  const std::vector<std::pair<int, int>>& xy_pairs, int n_modes,
+                  bool with_modes = true);
+
+/// Campbell data: the n_modes least-frequency eigenvalues at each spin speed (rad/s), using
+/// D = C + Ω G at each speed. eigenvalues (n_speeds, n_modes); whirl (n_speeds, n_modes).
+struct CampbellResult {
+  Eigen::MatrixXcd eigenvalues;
+  Eigen::MatrixXi whirl;
+};
+CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
+                        const Eigen::MatrixXd& G, const Eigen::MatrixXd& K,
+                        const std::vector<std::pair<int, int>>& xy_pairs,
+                        const Eigen::VectorXd& speeds_rad_s, int n_modes);
+
+/// Classify the whirl of one displacement vector from its (x, y) pairs.
+Whirl whirl_direction(const Eigen::VectorXcd& shape, const std::vector<std::pair<int, int>>& xy);
+
+}  // namespace rotordyn

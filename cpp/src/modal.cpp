@@ -1,0 +1,160 @@
+#include "rotordyn/modal.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "rotordyn/errors.hpp"
+
+extern "C" {
+void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda,
+            double* wr, double* wi, double* vl, const int* ldvl, double* vr, const int* ldvr,
+            double* work, const int* lwork, int* info);
+}
+
+namespace rotordyn {
+
+void eig_general(const Eigen::MatrixXd& A_in, Eigen::VectorXcd& w, Eigen::MatrixXcd* V) {
+  const int n = static_cast<int>(A_in.rows());
+  require(A_in.cols() == n, shape_msg("A", n, n, A_in.rows(), A_in.cols()));
+  Eigen::MatrixXd A = A_in;  // dgeev overwrites
+  Eigen::VectorXd wr(n), wi(n);
+  Eigen::MatrixXd vr(V ? n : 1, V ? n : 1);
+  const char jobvl = 'N', jobvr = V ? 'V' : 'N';
+  int ldv = V ? n : 1, info = 0, lwork = -1, one = 1;
+  double wq = 0, dummy = 0;
+  dgeev_(&jobvl, &jobvr, &n, A.data(), &n, wr.data(), wi.data(), &dummy, &one, vr.data(), &ldv,
+         &wq, &lwork, &info);
+  lwork = std::max(1, static_cast<int>(wq));
+  std::vector<double> work(static_cast<std::size_t>(lwork));
+  dgeev_(&jobvl, &jobvr, &n, A.data(), &n, wr.data(), wi.data(), &dummy, &one, vr.data(), &ldv,
+         work.data(), &lwork, &info);
+  if (info != 0)
+    throw ConvergenceError("eigenvalue solver (LAPACK dgeev) failed, info = " +
+                           std::to_string(info));
+  w.resize(n);
+  for (int i = 0; i < n; ++i) w(i) = {wr(i), wi(i)};
+  if (V) {
+    V->resize(n, n);
+    for (int j = 0; j < n; ++j) {
+      if (wi(j) == 0.0) {
+        V->col(j) = vr.col(j).cast<std::complex<double>>();
+      } else if (j + 1 < n) {
+        for (int i = 0; i < n; ++i) {
+          (*V)(i, j) = {vr(i, j), vr(i, j + 1)};
+          (*V)(i, j + 1) = {vr(i, j), -vr(i, j + 1)};
+        }
+        ++j;
+      }
+    }
+  }
+}
+
+Whirl whirl_direction(const Eigen::VectorXcd& s, const std::vector<std::pair<int, int>>& xy) {
+  // x = Re(X e^{iωt}), y = Re(Y e^{iωt}); counter-clockwise (forward, with Ω > 0) when
+  // Im(X conj(Y)) > 0. Sum the signed orbit areas over all pairs.
+  double area = 0, scale = 0;
+  for (const auto& p : xy) {
+    const auto X = s(p.first), Y = s(p.second);
+    area += std::imag(X * std::conj(Y));
+    scale += std::norm(X) + std::norm(Y);
+  }
+  if (scale == 0 || std::abs(area) < 1e-6 * scale) return Whirl::Planar;
+  return area > 0 ? Whirl::Forward : Whirl::Backward;
+}
+
+namespace {
+Eigen::MatrixXd state_matrix(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
+                             const Eigen::MatrixXd& K) {
+  const Eigen::Index n = M.rows();
+  require(M.cols() == n, shape_msg("M", n, n, M.rows(), M.cols()));
+  require(D.rows() == n && D.cols() == n, shape_msg("D", n, n, D.rows(), D.cols()));
+  require(K.rows() == n && K.cols() == n, shape_msg("K", n, n, K.rows(), K.cols()));
+  Eigen::LLT<Eigen::MatrixXd> llt(M);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  A.topRightCorner(n, n).setIdentity();
+  if (llt.info() == Eigen::Success) {
+    A.bottomLeftCorner(n, n) = -llt.solve(K);
+    A.bottomRightCorner(n, n) = -llt.solve(D);
+  } else {
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
+    require(std::abs(lu.determinant()) > 0, "M: mass matrix is singular");
+    A.bottomLeftCorner(n, n) = -lu.solve(K);
+    A.bottomRightCorner(n, n) = -lu.solve(D);
+  }
+  return A;
+}
+
+std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes) {
+  // Keep one of each conjugate pair (ω_d >= 0); real roots are kept once each.
+  std::vector<int> idx;
+  const double big = w.cwiseAbs().maxCoeff();
+  for (int i = 0; i < w.size(); ++i) {
+    const double im = w(i).imag();
+    if (im > 1e-12 * big || im == 0.0) idx.push_back(i);
+  }
+  std::stable_sort(idx.begin(), idx.end(), [&](int a, int b) {
+    const double fa = w(a).imag(), fb = w(b).imag();
+    if (fa != fb) return fa < fb;
+    return std::abs(w(a)) < std::abs(w(b));
+  });
+  // Drop real roots: overdamped motions carry no natural frequency. Keep them only when
+  // nothing else is left.
+  std::vector<int> osc;
+  for (int i : idx)
+    if (w(i).imag() > 0) osc.push_back(i);
+  if (!osc.empty()) idx.swap(osc);
+  if (n_modes > 0 && static_cast<int>(idx.size()) > n_modes) idx.resize(n_modes);
+  return idx;
+}
+}  // namespace
+
+ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K,
+                  const std::vector<std::pair<int, int>>& xy_pairs, int n_modes,
+                  bool with_modes) {
+  const Eigen::Index n = M.rows();
+  const Eigen::MatrixXd A = state_matrix(M, D, K);
+  Eigen::VectorXcd w;
+  Eigen::MatrixXcd V;
+  eig_general(A, w, &V);  // vectors are needed for the whirl direction
+  const std::vector<int> idx = pick_modes(w, n_modes);
+  ModalResult out;
+  const int m = static_cast<int>(idx.size());
+  out.eigenvalues.resize(m);
+  if (with_modes) out.modes.resize(n, m);
+  out.whirl.resize(static_cast<std::size_t>(m));
+  for (int j = 0; j < m; ++j) {
+    out.eigenvalues(j) = w(idx[j]);
+    Eigen::VectorXcd s = V.col(idx[j]).head(n);
+    Eigen::Index imax = 0;
+    s.cwiseAbs().maxCoeff(&imax);
+    if (std::abs(s(imax)) > 0) s /= s(imax);
+    out.whirl[static_cast<std::size_t>(j)] = whirl_direction(s, xy_pairs);
+    if (with_modes) out.modes.col(j) = s;
+  }
+  return out;
+}
+
+CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
+                        const Eigen::MatrixXd& G, const Eigen::MatrixXd& K,
+                        const std::vector<std::pair<int, int>>& xy_pairs,
+                        const Eigen::VectorXd& speeds, int n_modes) {
+  require(n_modes > 0, "n_modes: expected > 0, got " + std::to_string(n_modes));
+  CampbellResult out;
+  out.eigenvalues = Eigen::MatrixXcd::Constant(speeds.size(), n_modes,
+                                               std::complex<double>(NAN, NAN));
+  out.whirl = Eigen::MatrixXi::Zero(speeds.size(), n_modes);
+  for (Eigen::Index s = 0; s < speeds.size(); ++s) {
+    const ModalResult r = modal(M, C + speeds(s) * G, K, xy_pairs, n_modes, false);
+    for (Eigen::Index j = 0; j < r.eigenvalues.size(); ++j) {
+      out.eigenvalues(s, j) = r.eigenvalues(j);
+      out.whirl(s, j) = static_cast<int>(r.whirl[static_cast<std::size_t>(j)]);
+    }
+  }
+  return out;
+}
+
+}  // namespace rotordyn

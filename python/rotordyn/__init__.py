@@ -1,0 +1,33 @@
+"""rotordyn: vibration analysis and control-law synthesis of multi-bearing rotors on
+fluid-film and active journal bearings (C++ core, Python API)."""
+
+from __future__ import annotations
+
+from rotordyn import _core
+from rotordyn.errors import (
+    ContactError,
+    ConvergenceError,
+    InputError,
+    RotordynError,
+    SundialsError,
+)
+
+__version__ = "0.1.0"
+
+
+def build_info() -> dict[str, str]:
+    """Versions of rotordyn and of the Eigen, SUNDIALS and SuiteSparse it was built with."""
+    info = dict(_core.build_info())
+    info["python_package"] = __version__
+    return info
+
+
+__all__ = [
+    "__version__",
+    "build_info",
+    "RotordynError",
+    "InputError",
+    "ConvergenceError",
+    "ContactError",
+    "SundialsError",
+]
