@@ -12,6 +12,20 @@ from rotordyn.errors import (
     SundialsError,
 )
 
+from rotordyn.model import (
+    STEEL,
+    Disk,
+    Material,
+    Reduction,
+    Rotor,
+    ShaftSection,
+    Support,
+    System,
+)
+from rotordyn.analysis import modes
+from rotordyn.results import ModesResult
+from rotordyn import models
+
 __version__ = "0.1.0"
 
 
@@ -30,4 +44,15 @@ __all__ = [
     "ConvergenceError",
     "ContactError",
     "SundialsError",
+    "Material",
+    "STEEL",
+    "ShaftSection",
+    "Disk",
+    "Support",
+    "Rotor",
+    "Reduction",
+    "System",
+    "modes",
+    "ModesResult",
+    "models",
 ]

@@ -1,18 +1,44 @@
-"""Command-line interface: ``rotordyn <command> ...`` (exit 0 ok, 2 bad input, 1 failure)."""
+"""Command-line interface: ``rotordyn <command> ...``.
+
+Exit codes: 0 success, 2 bad input (the message names the field), 1 runtime failure.
+Machine-readable output goes to stdout with ``--json``; logs go to stderr.
+"""
 
 from __future__ import annotations
 
 import argparse
 import json
 import sys
+from pathlib import Path
+
+import numpy as np
 
 import rotordyn
 
 
-def _cmd_info(args: argparse.Namespace) -> int:
+class _ArgumentParser(argparse.ArgumentParser):
+    """argparse that raises InputError (exit 2 through main) instead of exiting itself."""
+
+    def error(self, message):
+        raise rotordyn.InputError(f"{self.prog}: {message}")
+
+
+def _json(obj) -> str:
+    def conv(o):
+        if isinstance(o, np.ndarray):
+            return o.tolist()
+        if isinstance(o, (np.floating, np.integer)):
+            return o.item()
+        raise TypeError(type(o).__name__)
+
+    return json.dumps(obj, indent=2, default=conv)
+
+
+# -- info -------------------------------------------------------------------------------
+def _cmd_info(args) -> int:
     info = rotordyn.build_info()
     if args.json:
-        print(json.dumps(info, indent=2, sort_keys=True))
+        print(_json(info))
     else:
         print(f"rotordyn {rotordyn.__version__}")
         for key in ("eigen", "sundials", "suitesparse", "compiler"):
@@ -21,19 +47,111 @@ def _cmd_info(args: argparse.Namespace) -> int:
     return 0
 
 
+# -- validate ---------------------------------------------------------------------------
+def _cmd_validate(args) -> int:
+    s = rotordyn.models.load(args.model)
+    print(f"{args.model}: ok ({s.rotor.n_elements} elements, {s.rotor.n_stations} stations, "
+          f"{s.mass_kg:.4f} kg)")
+    return 0
+
+
+# -- modes ------------------------------------------------------------------------------
+def _modes_payload(r) -> dict:
+    out = {
+        "model": r.model,
+        "speed_hz": r.speed_hz,
+        "frequencies_hz": r.frequencies_hz,
+        "damping_ratio": r.damping_ratio,
+        "whirl": list(r.whirl),
+    }
+    if r.full is not None:
+        out["full_frequencies_hz"] = r.full.frequencies_hz
+        out["frequency_errors"] = r.frequency_errors()
+    return out
+
+
+def _cmd_modes(args) -> int:
+    if args.part == "sleeve":
+        from rotordyn import cli_sleeve  # provided with the sleeve model
+
+        return cli_sleeve.modes(args)
+    s = rotordyn.models.load(args.model)
+    r = rotordyn.modes(s, args.speed_hz, reduction=args.reduction, n_modes=args.n_modes)
+    if args.json:
+        print(_json(_modes_payload(r)))
+    else:
+        print(r.to_frame().to_string(index=False))
+    return 0
+
+
+# -- report (the main job of `make run`) --------------------------------------------------
+PAPER_ROTOR_HZ = (10.43, 43.04, 106.38)
+
+
+def _cmd_report(args) -> int:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    s = rotordyn.models.load(args.model)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    r = rotordyn.modes(s, 0.0, reduction=s.reduction.method if s.reduction.method != "none"
+                       else "guyan")
+    f_red = r.frequencies_hz[::2]
+    f_full = r.full.frequencies_hz[::2]
+    lines = [f"{s.name or args.model}: rotor {s.rotor.length_m:.3f} m, {s.mass_kg:.3f} kg, "
+             f"{s.rotor.n_elements} elements, masters at stations "
+             f"{list(s.reduction.master_stations)} ({r.model})",
+             f"{'mode':>4} {'full (Hz)':>11} {'condensed (Hz)':>15} {'error':>8}"
+             + (f" {'paper (Hz)':>11}" if s.name == "paper-rig" else "")]
+    for i, (a, b) in enumerate(zip(f_full, f_red)):
+        row = f"{i + 1:>4} {a:>11.3f} {b:>15.3f} {100 * (b - a) / a:>7.2f}%"
+        if s.name == "paper-rig" and i < len(PAPER_ROTOR_HZ):
+            row += f" {PAPER_ROTOR_HZ[i]:>11.2f}"
+        lines.append(row)
+    text = "\n".join(lines)
+    print(text)
+    (out / "rotor_modes.txt").write_text(text + "\n")
+    (out / "rotor_modes.json").write_text(_json(_modes_payload(r)) + "\n")
+    r.to_frame().to_csv(out / "rotor_modes.csv", index=False)
+    ax = r.full.plot(modes=range(0, 6, 2))
+    ax.figure.savefig(out / "rotor_mode_shapes.png", dpi=120, bbox_inches="tight")
+    print(f"wrote {out}/rotor_modes.txt, .json, .csv and rotor_mode_shapes.png", file=sys.stderr)
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="rotordyn", description=rotordyn.__doc__)
-    sub = p.add_subparsers(dest="command", required=True)
+    p = _ArgumentParser(prog="rotordyn", description=rotordyn.__doc__)
+    sub = p.add_subparsers(dest="command", required=True, parser_class=_ArgumentParser)
+
     s = sub.add_parser("info", help="package and library versions")
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=_cmd_info)
+
+    s = sub.add_parser("validate", help="check a model file")
+    s.add_argument("model", help="TOML path or a built-in name (paper-rig, friswell-5.9.1)")
+    s.set_defaults(func=_cmd_validate)
+
+    s = sub.add_parser("modes", help="natural frequencies of the rotor (full or reduced)")
+    s.add_argument("model", help="TOML path or a built-in name (paper-rig, friswell-5.9.1)")
+    s.add_argument("--speed-hz", type=float, default=0.0)
+    s.add_argument("--reduction", choices=["none", "guyan", "irs", "craig-bampton"], default=None,
+                   help="default: the model's [reduction] method")
+    s.add_argument("--n-modes", type=int, default=None)
+    s.add_argument("--part", choices=["rotor", "sleeve"], default="rotor")
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=_cmd_modes)
+
+    s = sub.add_parser("report", help="the main job: analyses of a model written under --out")
+    s.add_argument("model")
+    s.add_argument("--out", default="out")
+    s.set_defaults(func=_cmd_report)
     return p
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
-    args = parser.parse_args(argv)
     try:
+        args = build_parser().parse_args(argv)
         return int(args.func(args) or 0)
     except rotordyn.InputError as exc:
         print(f"rotordyn: error: {exc}", file=sys.stderr)

@@ -1,0 +1,106 @@
+"""Free-vibration analysis of the rotor alone: full FE model or reduced to master stations."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn.errors import InputError
+from rotordyn.model import _validate as v
+from rotordyn.model.system import REDUCTION_METHODS, System
+from rotordyn.results.modes import WHIRL_NAMES, ModesResult
+from rotordyn.units import hz_to_rad_s
+
+
+class RotorMatrices:
+    """Dense constrained matrices of the rotor and, optionally, their reduction.
+
+    ``full``: ``_core.ConstrainedRotor`` (M, K, C, G after the rigid supports, ``dofs`` maps to
+    the full free-free numbering). ``reduction``: ``_core.Reduction`` or None. ``xy``: (ix, iy)
+    pairs in the analysed coordinates, for whirl classification.
+    """
+
+    def __init__(self, system: System, method: str | None = None):
+        method = system.reduction.method if method is None else method
+        v.choice("reduction", method, REDUCTION_METHODS)
+        self.system = system
+        self.method = method
+        self.full = _core.constrain(system.to_core())
+        self.reduction = None
+        if method != "none":
+            if not system.reduction.master_stations:
+                raise InputError(
+                    "reduction.master_stations: a reduced model needs at least one master "
+                    "station")
+            masters = [self.full.local(int(d)) for d in system.master_dofs()]
+            n_modes = system.reduction.n_modes if method == "craig-bampton" else 0
+            self.reduction = _core.reduce_model(method, self.full.M, self.full.K, masters, n_modes)
+
+    def matrices(self):
+        """(M, K, C, G) of the analysed model (reduced when a reduction is in use)."""
+        f = self.full
+        if self.reduction is None:
+            return f.M, f.K, f.C, f.G
+        r = self.reduction
+        return r.M, r.K, r.reduce(f.C), r.reduce(f.G)
+
+    def xy_pairs(self):
+        if self.reduction is None:
+            return list(self.full.xy)
+        n_m = len(self.system.reduction.master_stations)
+        return [(2 * i, 2 * i + 1) for i in range(n_m)]
+
+    def expand(self, q: np.ndarray) -> np.ndarray:
+        """Analysed coordinates (n, k) → full free-free FE DOFs (4 n_nodes, k), zeros at the
+        fixed DOFs."""
+        qf = q if self.reduction is None else self.reduction.T @ q
+        n_full = 4 * (self.system.rotor.n_elements + 1)
+        out = np.zeros((n_full,) + qf.shape[1:], dtype=qf.dtype)
+        out[np.asarray(self.full.dofs)] = qf
+        return out
+
+
+def _result(rm: RotorMatrices, speed_hz: float, n_modes: int, model_name: str) -> ModesResult:
+    M, K, C, G = rm.matrices()
+    w = hz_to_rad_s(speed_hz)
+    r = _core.modal(M, C + w * G, K, rm.xy_pairs(), n_modes, True)
+    shapes = rm.expand(np.asarray(r.modes))  # (4 n_nodes, n_modes)
+    n_nodes = shapes.shape[0] // 4
+    return ModesResult(
+        speed_hz=float(speed_hz),
+        model=model_name,
+        eigenvalues=np.asarray(r.eigenvalues),
+        whirl=np.array([WHIRL_NAMES[int(x)] for x in r.whirl], dtype=object),
+        shapes=shapes.reshape(n_nodes, 4, -1),
+        node_positions_m=rm.system.rotor.node_positions_m(),
+    )
+
+
+def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None,
+          n_modes: int | None = None) -> ModesResult:
+    """Damped natural frequencies, damping, whirl and mode shapes of the rotor on its supports.
+
+    Parameters
+    ----------
+    speed_hz : spin speed Ω/2π, Hz (gyroscopic coupling Ω G).
+    reduction : ``"none"`` for the full FE model, or ``"guyan"``/``"irs"``/``"craig-bampton"``
+        to condense to the model's master stations; default: the model's own setting.
+    n_modes : number of modes (lowest damped frequencies) kept; default all of a reduced
+        model, 12 of a full one. A reduced result carries the full model's ``full`` result
+        with the same number of modes (for the frequency error).
+    """
+    v.finite("speed_hz", speed_hz)
+    if n_modes is not None:
+        v.integer("n_modes", n_modes, lo=1)
+    method = system.reduction.method if reduction is None else reduction
+    v.choice("reduction", method, REDUCTION_METHODS)
+    full_rm = RotorMatrices(system, "none")
+    if method == "none":
+        return _result(full_rm, speed_hz, n_modes or 12, "full")
+    rm = RotorMatrices(system, method)
+    n_red = rm.reduction.M.shape[0]
+    k = min(n_modes or n_red, n_red)
+    red = _result(rm, speed_hz, k, method)
+    full = _result(full_rm, speed_hz, k, "full")
+    return ModesResult(red.speed_hz, red.model, red.eigenvalues, red.whirl, red.shapes,
+                       red.node_positions_m, full=full)

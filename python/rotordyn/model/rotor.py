@@ -1,0 +1,232 @@
+"""Rotor description: materials, shaft sections (Timoshenko elements), disks and supports.
+
+Stations are the section boundaries, numbered 0 … n_sections from the left end; a section with
+``n_elements > 1`` is subdivided into equal Timoshenko elements whose inner nodes are not
+stations. SI units; field names carry their unit (``length_m``, ``density_kg_m3``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn.errors import InputError
+from rotordyn.model import _validate as v
+
+
+@dataclass(frozen=True, slots=True)
+class Material:
+    """Isotropic linear-elastic material. Give ``poisson`` or ``shear_modulus_pa`` (or both:
+    then the shear modulus is used and ν = E/(2G) − 1 enters the shear coefficient)."""
+
+    name: str
+    density_kg_m3: float
+    young_pa: float
+    poisson: float = 0.3
+    shear_modulus_pa: float | None = None
+
+    def __post_init__(self):
+        f = f"material.{self.name}"
+        if not isinstance(self.name, str) or not self.name:
+            raise InputError(f"material name: expected a non-empty string, got {self.name!r}")
+        v.positive(f"{f}.density_kg_m3", self.density_kg_m3)
+        v.positive(f"{f}.young_pa", self.young_pa)
+        v.in_range(f"{f}.poisson", self.poisson, -1.0, 0.5, lo_open=True, hi_open=True)
+        if self.shear_modulus_pa is not None:
+            v.positive(f"{f}.shear_modulus_pa", self.shear_modulus_pa)
+
+    @property
+    def shear_modulus(self) -> float:
+        """G in Pa."""
+        if self.shear_modulus_pa is not None:
+            return float(self.shear_modulus_pa)
+        return self.young_pa / (2.0 * (1.0 + self.poisson))
+
+
+STEEL = Material("steel", density_kg_m3=7850.0, young_pa=2.1e11, poisson=0.3)
+
+
+@dataclass(frozen=True, slots=True)
+class ShaftSection:
+    """A uniform shaft section between two stations, meshed with ``n_elements`` Timoshenko
+    beam elements (shear, rotary inertia, gyroscopics). Solid when inner_diameter_m = 0."""
+
+    length_m: float
+    outer_diameter_m: float
+    inner_diameter_m: float = 0.0
+    material: str = "steel"
+    n_elements: int = 1
+    shear_coefficient: float | None = None  # None: Cowper's value for the section
+
+    def check(self, where: str) -> None:
+        """Validate; ``where`` is the field path used in messages (``rotor.section[3]``)."""
+        v.positive(f"{where}.length_m", self.length_m)
+        v.positive(f"{where}.outer_diameter_m", self.outer_diameter_m)
+        v.non_negative(f"{where}.inner_diameter_m", self.inner_diameter_m)
+        if self.inner_diameter_m >= self.outer_diameter_m:
+            raise InputError(
+                f"{where}.inner_diameter_m: expected a value in [0, outer_diameter_m = "
+                f"{self.outer_diameter_m}), got {self.inner_diameter_m!r}"
+            )
+        v.integer(f"{where}.n_elements", self.n_elements, lo=1, hi=10000)
+        if self.shear_coefficient is not None:
+            v.in_range(f"{where}.shear_coefficient", self.shear_coefficient, 0.0, 2.0,
+                       lo_open=True)
+
+    @property
+    def area_m2(self) -> float:
+        return math.pi / 4.0 * (self.outer_diameter_m**2 - self.inner_diameter_m**2)
+
+    def mass_kg(self, material: Material) -> float:
+        return material.density_kg_m3 * self.area_m2 * self.length_m
+
+    def to_core(self, material: Material, *, shear: bool = True,
+                rotary_inertia: bool = True) -> list:
+        """The section's C++ elements (``n_elements`` equal ``_core.ShaftElement``)."""
+        out = []
+        for _ in range(self.n_elements):
+            e = _core.ShaftElement()
+            e.length = self.length_m / self.n_elements
+            e.outer_diameter = self.outer_diameter_m
+            e.inner_diameter = self.inner_diameter_m
+            e.density = material.density_kg_m3
+            e.young = material.young_pa
+            e.shear_modulus = material.shear_modulus
+            e.shear_coefficient = -1.0 if self.shear_coefficient is None else self.shear_coefficient
+            e.shear = shear
+            e.rotary_inertia = rotary_inertia
+            out.append(e)
+        return out
+
+    def M(self, material: Material = STEEL) -> np.ndarray:
+        """8×8 mass matrix of one element of this section, DOF (x1, y1, θx1, θy1, x2, …)."""
+        return self._one(material)[0]
+
+    def K(self, material: Material = STEEL) -> np.ndarray:
+        """8×8 stiffness matrix of one element of this section."""
+        return self._one(material)[1]
+
+    def G(self, material: Material = STEEL) -> np.ndarray:
+        """8×8 gyroscopic matrix (per unit spin speed, rad/s) of one element."""
+        return self._one(material)[2]
+
+    def _one(self, material: Material):
+        single = ShaftSection(self.length_m / self.n_elements, self.outer_diameter_m,
+                              self.inner_diameter_m, self.material, 1, self.shear_coefficient)
+        return _core.element_matrices(single.to_core(material)[0])
+
+
+@dataclass(frozen=True, slots=True)
+class Disk:
+    """Rigid disk at a station: mass, polar (ip) and diametral (id) moments of inertia."""
+
+    station: int
+    mass_kg: float
+    ip_kg_m2: float
+    id_kg_m2: float
+
+    def check(self, where: str, n_stations: int) -> None:
+        v.integer(f"{where}.station", self.station, lo=0, hi=n_stations - 1)
+        v.non_negative(f"{where}.mass_kg", self.mass_kg)
+        v.non_negative(f"{where}.ip_kg_m2", self.ip_kg_m2)
+        v.non_negative(f"{where}.id_kg_m2", self.id_kg_m2)
+
+    @classmethod
+    def from_geometry(cls, station: int, material: Material, width_m: float,
+                      outer_diameter_m: float, inner_diameter_m: float = 0.0) -> "Disk":
+        """Solid-of-revolution disk: m = ρ π/4 (do² − di²) w, Ip = m (do² + di²)/8,
+        Id = Ip/2 + m w²/12."""
+        v.positive("disk.width_m", width_m)
+        v.positive("disk.outer_diameter_m", outer_diameter_m)
+        v.non_negative("disk.inner_diameter_m", inner_diameter_m)
+        m = material.density_kg_m3 * math.pi / 4 * (outer_diameter_m**2 - inner_diameter_m**2) * width_m
+        ip = m * (outer_diameter_m**2 + inner_diameter_m**2) / 8.0
+        return cls(station, m, ip, ip / 2.0 + m * width_m**2 / 12.0)
+
+
+_SUPPORT_COEFS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m",
+                  "cxx_n_s_per_m", "cxy_n_s_per_m", "cyx_n_s_per_m", "cyy_n_s_per_m")
+
+
+@dataclass(frozen=True, slots=True)
+class Support:
+    """Support at a station: ``type="rigid"`` fixes x and y (rotations free, e.g. a ball
+    bearing), ``type="linear"`` adds a translational spring/damper to ground."""
+
+    station: int
+    type: str = "rigid"
+    kxx_n_per_m: float = 0.0
+    kxy_n_per_m: float = 0.0
+    kyx_n_per_m: float = 0.0
+    kyy_n_per_m: float = 0.0
+    cxx_n_s_per_m: float = 0.0
+    cxy_n_s_per_m: float = 0.0
+    cyx_n_s_per_m: float = 0.0
+    cyy_n_s_per_m: float = 0.0
+    name: str = ""
+
+    def check(self, where: str, n_stations: int) -> None:
+        v.integer(f"{where}.station", self.station, lo=0, hi=n_stations - 1)
+        v.choice(f"{where}.type", self.type, ("rigid", "linear"))
+        for c in _SUPPORT_COEFS:
+            val = v.finite(f"{where}.{c}", getattr(self, c))
+            if self.type == "rigid" and val != 0.0:
+                raise InputError(f"{where}.{c}: a rigid support takes no coefficients, got {val!r}")
+
+    def k(self) -> np.ndarray:
+        return np.array([[self.kxx_n_per_m, self.kxy_n_per_m], [self.kyx_n_per_m, self.kyy_n_per_m]])
+
+    def c(self) -> np.ndarray:
+        return np.array([[self.cxx_n_s_per_m, self.cxy_n_s_per_m],
+                         [self.cyx_n_s_per_m, self.cyy_n_s_per_m]])
+
+
+@dataclass(frozen=True, slots=True)
+class Rotor:
+    """Shaft sections (left to right) and rigid disks."""
+
+    sections: tuple[ShaftSection, ...]
+    disks: tuple[Disk, ...] = field(default_factory=tuple)
+
+    def __post_init__(self):
+        object.__setattr__(self, "sections", tuple(self.sections))
+        object.__setattr__(self, "disks", tuple(self.disks))
+        if not self.sections:
+            raise InputError("rotor.section: expected at least one shaft section, got none")
+        for i, s in enumerate(self.sections):
+            if not isinstance(s, ShaftSection):
+                raise InputError(f"rotor.section[{i}]: expected a ShaftSection, got {type(s).__name__}")
+            s.check(f"rotor.section[{i}]")
+        for i, d in enumerate(self.disks):
+            d.check(f"disk[{i}]", self.n_stations)
+
+    @property
+    def n_stations(self) -> int:
+        return len(self.sections) + 1
+
+    @property
+    def n_elements(self) -> int:
+        return sum(s.n_elements for s in self.sections)
+
+    def station_nodes(self) -> np.ndarray:
+        """FE node index of each station, shape (n_stations,)."""
+        return np.concatenate([[0], np.cumsum([s.n_elements for s in self.sections])]).astype(np.int64)
+
+    def station_positions_m(self) -> np.ndarray:
+        """Axial position of each station from the left end, shape (n_stations,), m."""
+        return np.concatenate([[0.0], np.cumsum([s.length_m for s in self.sections])])
+
+    def node_positions_m(self) -> np.ndarray:
+        """Axial position of each FE node, shape (n_elements + 1,), m."""
+        z = [0.0]
+        for s in self.sections:
+            for _ in range(s.n_elements):
+                z.append(z[-1] + s.length_m / s.n_elements)
+        return np.array(z)
+
+    @property
+    def length_m(self) -> float:
+        return float(sum(s.length_m for s in self.sections))

@@ -1,0 +1,163 @@
+"""The whole model: materials, rotor, supports, bearings and the reduction settings.
+
+``System`` is what a TOML model file describes (``System.from_toml`` / ``to_toml``) and what
+every analysis takes. Frozen: build a changed copy with :func:`dataclasses.replace`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.sparse as sp
+
+from rotordyn import _core
+from rotordyn.errors import InputError
+from rotordyn.model import _validate as v
+from rotordyn.model.rotor import STEEL, Material, Rotor, Support
+
+REDUCTION_METHODS = ("none", "guyan", "irs", "craig-bampton")
+
+
+@dataclass(frozen=True, slots=True)
+class Reduction:
+    """Condensation of the rotor to translations (x, y) at master stations (paper §4, §6).
+
+    ``method``: ``"guyan"`` (the paper's), ``"irs"`` (improved reduced system) or
+    ``"craig-bampton"`` (masters plus ``n_modes`` fixed-interface modes); ``"none"`` keeps the
+    full model."""
+
+    master_stations: tuple[int, ...] = ()
+    method: str = "guyan"
+    n_modes: int = 0
+
+    def __post_init__(self):
+        object.__setattr__(self, "master_stations", tuple(self.master_stations))
+        v.choice("reduction.method", self.method, REDUCTION_METHODS)
+        v.integer("reduction.n_modes", self.n_modes, lo=0, hi=1000)
+        seen = set()
+        for i, s in enumerate(self.master_stations):
+            v.integer(f"reduction.master_stations[{i}]", s, lo=0)
+            if s in seen:
+                raise InputError(f"reduction.master_stations[{i}]: station {s} is listed twice")
+            seen.add(s)
+
+
+@dataclass(frozen=True, slots=True)
+class System:
+    """A rotor-bearing system (paper eq. 12): rotor, supports, bearings, reduction."""
+
+    rotor: Rotor
+    materials: tuple[Material, ...] = (STEEL,)
+    supports: tuple[Support, ...] = ()
+    reduction: Reduction = field(default_factory=Reduction)
+    name: str = ""
+    description: str = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "materials", tuple(self.materials))
+        object.__setattr__(self, "supports", tuple(self.supports))
+        names = [m.name for m in self.materials]
+        if len(set(names)) != len(names):
+            raise InputError(f"material: names must be unique, got {names}")
+        for i, s in enumerate(self.rotor.sections):
+            if s.material not in names:
+                raise InputError(
+                    f"rotor.section[{i}].material: expected one of {names}, got {s.material!r}")
+        n = self.rotor.n_stations
+        for i, s in enumerate(self.supports):
+            s.check(f"support[{i}]", n)
+        for i, st in enumerate(self.reduction.master_stations):
+            if st >= n:
+                raise InputError(
+                    f"reduction.master_stations[{i}]: expected a station in [0, {n - 1}], got {st}")
+            if any(s.station == st and s.type == "rigid" for s in self.supports):
+                raise InputError(
+                    f"reduction.master_stations[{i}]: station {st} has a rigid support; "
+                    "its translations are fixed and cannot be masters")
+
+    # -- lookups -----------------------------------------------------------------------
+    def material(self, name: str) -> Material:
+        for m in self.materials:
+            if m.name == name:
+                return m
+        raise InputError(f"material: no material named {name!r}")
+
+    @property
+    def mass_kg(self) -> float:
+        """Total mass of shaft sections and disks, kg."""
+        shaft = sum(s.mass_kg(self.material(s.material)) for s in self.rotor.sections)
+        return float(shaft + sum(d.mass_kg for d in self.rotor.disks))
+
+    # -- C++ model -----------------------------------------------------------------------
+    def to_core(self, *, shear: bool = True, rotary_inertia: bool = True) -> "_core.RotorModel":
+        """The C++ ``RotorModel`` (elements, disks, linear and rigid supports at FE nodes)."""
+        nodes = self.rotor.station_nodes()
+        m = _core.RotorModel()
+        elems = []
+        for s in self.rotor.sections:
+            elems.extend(s.to_core(self.material(s.material), shear=shear,
+                                   rotary_inertia=rotary_inertia))
+        m.elements = elems
+        disks = []
+        for d in self.rotor.disks:
+            cd = _core.Disk()
+            cd.node, cd.mass, cd.ip, cd.id = int(nodes[d.station]), d.mass_kg, d.ip_kg_m2, d.id_kg_m2
+            disks.append(cd)
+        m.disks = disks
+        lin, rigid = [], []
+        for s in self.supports:
+            if s.type == "rigid":
+                rigid.append(int(nodes[s.station]))
+            else:
+                cs = _core.LinearSupport()
+                cs.node, cs.k, cs.c = int(nodes[s.station]), s.k(), s.c()
+                lin.append(cs)
+        m.supports = lin
+        m.rigid_nodes = rigid
+        return m
+
+    def _sparse(self, key: str) -> sp.csc_matrix:
+        data, indices, indptr, shape = _core.assemble(self.to_core())[key]
+        return sp.csc_matrix((data, indices, indptr), shape=shape)
+
+    def M(self) -> sp.csc_matrix:
+        """Free-free mass matrix of the rotor FE model, (4 n_nodes, 4 n_nodes), sparse."""
+        return self._sparse("M")
+
+    def K(self) -> sp.csc_matrix:
+        """Free-free stiffness matrix (linear supports included), sparse."""
+        return self._sparse("K")
+
+    def C(self) -> sp.csc_matrix:
+        """Damping matrix of the linear supports, sparse."""
+        return self._sparse("C")
+
+    def G(self) -> sp.csc_matrix:
+        """Gyroscopic matrix per unit spin speed (rad/s), skew-symmetric, sparse."""
+        return self._sparse("G")
+
+    def master_dofs(self) -> np.ndarray:
+        """Full-model DOF indices of the master translations, (2 n_masters,) ordered x, y per
+        station."""
+        nodes = self.rotor.station_nodes()
+        return np.array([4 * nodes[s] + k for s in self.reduction.master_stations for k in (0, 1)],
+                        dtype=np.int64)
+
+    # -- TOML ----------------------------------------------------------------------------
+    @classmethod
+    def from_toml(cls, path_or_text, *, is_text: bool = False) -> "System":
+        """Read a model file (``schema = "rotordyn/model/1"``); unknown keys are errors."""
+        from rotordyn.model.toml_io import system_from_toml
+
+        return system_from_toml(path_or_text, is_text=is_text)
+
+    def to_toml(self, path=None) -> str:
+        """The model as TOML text (written to ``path`` when given); round-trips losslessly."""
+        from rotordyn.model.toml_io import system_to_toml
+
+        text = system_to_toml(self)
+        if path is not None:
+            with open(path, "w", encoding="utf-8") as fh:
+                fh.write(text)
+        return text

@@ -1,0 +1,151 @@
+"""TOML model files (``schema = "rotordyn/model/1"``): hand-writable, SI, unit-suffixed keys.
+
+Reading rejects unknown keys (with the key's path in the message); writing emits the same
+layout, so ``System.from_toml(system.to_toml(), is_text=True) == system``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import tomllib
+
+import numpy as np
+from pathlib import Path
+
+from rotordyn.errors import InputError
+
+SCHEMA = "rotordyn/model/1"
+
+
+def _fields(cls) -> list[str]:
+    return [f.name for f in dataclasses.fields(cls)]
+
+
+def _check_keys(where: str, table: dict, allowed) -> None:
+    if not isinstance(table, dict):
+        raise InputError(f"{where}: expected a table, got {type(table).__name__}")
+    for k in table:
+        if k not in allowed:
+            raise InputError(f"{where}.{k}: unknown key (allowed: {', '.join(sorted(allowed))})")
+
+
+def _array_of_tables(where: str, value) -> list[dict]:
+    if not isinstance(value, list) or not all(isinstance(t, dict) for t in value):
+        raise InputError(f"{where}: expected an array of tables ([[{where}]])")
+    return value
+
+
+def _build(cls, where: str, table: dict, **extra):
+    try:
+        return cls(**table, **extra)
+    except TypeError as exc:  # missing required key
+        raise InputError(f"{where}: {exc}") from None
+
+
+def system_from_toml(path_or_text, *, is_text: bool = False):
+    """Parse a model (path or, with ``is_text=True``, the TOML text) into a ``System``."""
+    from rotordyn.model.rotor import Disk, Material, Rotor, ShaftSection, Support
+    from rotordyn.model.system import Reduction, System
+
+    if is_text:
+        text, src = str(path_or_text), "<text>"
+    else:
+        p = Path(path_or_text)
+        if not p.is_file():
+            raise InputError(f"model: no such file {str(p)!r}")
+        text, src = p.read_text(encoding="utf-8"), str(p)
+    try:
+        doc = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"model: {src} is not valid TOML: {exc}") from None
+
+    top = {"schema", "name", "description", "material", "rotor", "disk", "support", "reduction"}
+    _check_keys("model", doc, top)
+    if doc.get("schema") != SCHEMA:
+        raise InputError(f"schema: expected {SCHEMA!r}, got {doc.get('schema')!r}")
+
+    mats = []
+    for name, t in doc.get("material", {}).items():
+        _check_keys(f"material.{name}", t, set(_fields(Material)) - {"name"})
+        mats.append(_build(Material, f"material.{name}", t, name=name))
+
+    rotor_t = doc.get("rotor")
+    if rotor_t is None:
+        raise InputError("rotor: missing table [rotor] with [[rotor.section]] entries")
+    _check_keys("rotor", rotor_t, {"section"})
+    sections = []
+    for i, t in enumerate(_array_of_tables("rotor.section", rotor_t.get("section", []))):
+        _check_keys(f"rotor.section[{i}]", t, _fields(ShaftSection))
+        sections.append(_build(ShaftSection, f"rotor.section[{i}]", t))
+    disks = []
+    for i, t in enumerate(_array_of_tables("disk", doc.get("disk", []))):
+        _check_keys(f"disk[{i}]", t, _fields(Disk))
+        disks.append(_build(Disk, f"disk[{i}]", t))
+    supports = []
+    for i, t in enumerate(_array_of_tables("support", doc.get("support", []))):
+        _check_keys(f"support[{i}]", t, _fields(Support))
+        supports.append(_build(Support, f"support[{i}]", t))
+    red_t = doc.get("reduction", {})
+    _check_keys("reduction", red_t, _fields(Reduction))
+    reduction = _build(Reduction, "reduction", red_t)
+
+    kwargs = {}
+    if mats:
+        kwargs["materials"] = tuple(mats)
+    return System(rotor=Rotor(tuple(sections), tuple(disks)), supports=tuple(supports),
+                  reduction=reduction, name=doc.get("name", ""),
+                  description=doc.get("description", ""), **kwargs)
+
+
+# -- writing ----------------------------------------------------------------------------
+def _val(x) -> str:
+    if isinstance(x, (bool, np.bool_)):
+        return "true" if x else "false"
+    if isinstance(x, (int, np.integer)):
+        return str(int(x))
+    if isinstance(x, (float, np.floating)):
+        x = float(x)
+        if math.isnan(x) or math.isinf(x):
+            raise InputError(f"to_toml: cannot write non-finite value {x!r}")
+        return repr(x)
+    if isinstance(x, str):
+        return '"' + x.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+    if isinstance(x, (tuple, list)):
+        return "[" + ", ".join(_val(e) for e in x) + "]"
+    raise InputError(f"to_toml: cannot write value {x!r}")
+
+
+def _table_lines(obj, skip=(), defaults_too=False) -> list[str]:
+    out = []
+    for f in dataclasses.fields(obj):
+        if f.name in skip:
+            continue
+        val = getattr(obj, f.name)
+        if val is None:
+            continue
+        if not defaults_too and f.default is not dataclasses.MISSING and val == f.default \
+                and f.name not in ("type",):
+            continue
+        out.append(f"{f.name} = {_val(val)}")
+    return out
+
+
+def system_to_toml(system) -> str:
+    """TOML text of a ``System`` in the layout :func:`system_from_toml` reads."""
+    lines = [f'schema = "{SCHEMA}"']
+    if system.name:
+        lines.append(f"name = {_val(system.name)}")
+    if system.description:
+        lines.append(f"description = {_val(system.description)}")
+    for m in system.materials:
+        lines += ["", f"[material.{m.name}]"] + _table_lines(m, skip=("name",), defaults_too=True)
+    lines += ["", "[rotor]"]
+    for s in system.rotor.sections:
+        lines += ["", "[[rotor.section]]"] + _table_lines(s)
+    for d in system.rotor.disks:
+        lines += ["", "[[disk]]"] + _table_lines(d)
+    for s in system.supports:
+        lines += ["", "[[support]]"] + _table_lines(s)
+    lines += ["", "[reduction]"] + _table_lines(system.reduction, defaults_too=True)
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,43 @@
+"""Built-in models: the reference paper's three-bearing test rig and textbook rotors.
+
+Each is a TOML file under ``rotordyn/data/`` (read with :meth:`System.from_toml`), so the
+values and their sources are in one hand-readable place.
+"""
+
+from __future__ import annotations
+
+from importlib import resources
+
+from rotordyn.errors import InputError
+from rotordyn.model.system import System
+
+BUILTIN = {
+    "paper-rig": "paper_rig.toml",
+    "friswell-5.9.1": "friswell_5_9_1.toml",
+}
+
+
+def _load(filename: str) -> System:
+    text = resources.files("rotordyn.data").joinpath(filename).read_text(encoding="utf-8")
+    return System.from_toml(text, is_text=True)
+
+
+def paper_rig() -> System:
+    """The three-bearing test rig of the reference paper (§6); see docs/paper-rig.md."""
+    return _load(BUILTIN["paper-rig"])
+
+
+def friswell_5_9_1() -> System:
+    """Friswell, Penny, Garvey & Lees (2010), Dynamics of Rotating Machines, Example 5.9.1:
+    1.5 m shaft, two disks, isotropic 1 MN/m bearings."""
+    return _load(BUILTIN["friswell-5.9.1"])
+
+
+def load(name_or_path: str) -> System:
+    """A built-in model by name (``paper-rig``, ``friswell-5.9.1``) or a TOML file path."""
+    if name_or_path in BUILTIN:
+        return _load(BUILTIN[name_or_path])
+    if name_or_path.endswith(".toml"):
+        return System.from_toml(name_or_path)
+    raise InputError(
+        f"model: expected a TOML path or one of {sorted(BUILTIN)}, got {name_or_path!r}")

@@ -1,0 +1,5 @@
+"""Result objects (frozen dataclasses of numpy arrays with ``.to_frame()`` and ``.plot()``)."""
+
+from rotordyn.results.modes import ModesResult
+
+__all__ = ["ModesResult"]

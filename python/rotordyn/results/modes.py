@@ -1,0 +1,110 @@
+"""Modal results: eigenvalues, damped natural frequencies, damping, whirl, mode shapes."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+WHIRL_NAMES = {1: "forward", -1: "backward", 0: "planar"}
+
+
+@dataclass(frozen=True)
+class ModesResult:
+    """Eigen-analysis of the rotor at one speed (paper eq. 19 without excitation).
+
+    eigenvalues: (n_modes,) complex, 1/s, λ = σ + iω_d with ω_d ≥ 0, ascending in ω_d.
+    whirl: (n_modes,) ``"forward"``/``"backward"``/``"planar"``.
+    shapes: (n_nodes, 4, n_modes) complex mode shapes at every FE node, DOF (x, y, θx, θy).
+    node_positions_m: (n_nodes,) axial node positions.
+    full: the full model's result when this one is reduced, else None.
+    """
+
+    speed_hz: float
+    model: str  # "full" or the reduction method
+    eigenvalues: np.ndarray
+    whirl: np.ndarray
+    shapes: np.ndarray
+    node_positions_m: np.ndarray
+    full: "ModesResult | None" = None
+    status: str = "ok"
+    message: str = ""
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def frequencies_hz(self) -> np.ndarray:
+        """Damped natural frequencies ω_d/2π, Hz, ascending."""
+        return self.eigenvalues.imag / (2 * np.pi)
+
+    @property
+    def natural_frequencies_hz(self) -> np.ndarray:
+        """Undamped-equivalent natural frequencies |λ|/2π, Hz."""
+        return np.abs(self.eigenvalues) / (2 * np.pi)
+
+    @property
+    def damping_ratio(self) -> np.ndarray:
+        """ζ = −Re λ / |λ|."""
+        mag = np.abs(self.eigenvalues)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.where(mag > 0, -self.eigenvalues.real / np.where(mag > 0, mag, 1.0), 0.0)
+
+    @property
+    def log_dec(self) -> np.ndarray:
+        """Logarithmic decrement δ = −2π Re λ / Im λ."""
+        im = self.eigenvalues.imag
+        return np.where(im > 0, -2 * np.pi * self.eigenvalues.real / np.where(im > 0, im, 1.0),
+                        np.inf)
+
+    def frequency_errors(self) -> np.ndarray:
+        """Relative error of each reduced frequency against the full model's same mode number."""
+        if self.full is None:
+            raise ValueError("frequency_errors: this result is not from a reduced model")
+        n = min(len(self.eigenvalues), len(self.full.eigenvalues))
+        f, g = self.frequencies_hz[:n], self.full.frequencies_hz[:n]
+        return (f - g) / g
+
+    def to_frame(self) -> pd.DataFrame:
+        """One row per mode (and per model when reduced): tidy, unit-suffixed columns."""
+        frames = [self._frame()]
+        if self.full is not None:
+            frames.append(self.full._frame())
+        return pd.concat(frames, ignore_index=True)
+
+    def _frame(self) -> pd.DataFrame:
+        n = len(self.eigenvalues)
+        df = pd.DataFrame({
+            "model": pd.Categorical([self.model] * n),
+            "speed_hz": np.full(n, float(self.speed_hz)),
+            "mode": np.arange(1, n + 1, dtype=np.int64),
+            "freq_hz": self.frequencies_hz,
+            "natural_freq_hz": self.natural_frequencies_hz,
+            "eig_real_1_per_s": self.eigenvalues.real,
+            "eig_imag_rad_s": self.eigenvalues.imag,
+            "damping_ratio": self.damping_ratio,
+            "log_dec": self.log_dec,
+            "whirl": pd.Categorical(self.whirl, categories=["forward", "backward", "planar"]),
+            "status": pd.Categorical([self.status] * n),
+            "message": [self.message] * n,
+        })
+        return df
+
+    def plot(self, modes=None, ax=None, plane: str = "x"):
+        """Mode shapes along the shaft (real part of the x or y translation). Returns Axes."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7, 4))
+        k = {"x": 0, "y": 1}[plane]
+        idx = range(len(self.eigenvalues)) if modes is None else modes
+        for j in idx:
+            s = self.shapes[:, k, j]
+            scale = np.max(np.abs(s)) or 1.0
+            ax.plot(self.node_positions_m, np.real(s) / scale,
+                    label=f"mode {j + 1}: {self.frequencies_hz[j]:.2f} Hz ({self.whirl[j]})")
+        ax.set_xlabel("axial position (m)")
+        ax.set_ylabel(f"{plane} (normalised)")
+        ax.set_title(f"{self.model} model, {self.speed_hz:g} Hz")
+        ax.legend(fontsize="small")
+        ax.grid(True, alpha=0.3)
+        return ax
