@@ -7,6 +7,7 @@
 #include <numeric>
 #include <string>
 
+#include "modal_detail.hpp"
 #include "rotordyn/errors.hpp"
 
 extern "C" {
@@ -16,6 +17,10 @@ void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const
 }
 
 namespace rotordyn {
+
+namespace {
+constexpr Eigen::Index kDenseLimit = 120;  // DOFs above which the sparse path is tried
+}
 
 void eig_general(const Eigen::MatrixXd& A_in, Eigen::VectorXcd& w, Eigen::MatrixXcd* V) {
   const int n = static_cast<int>(A_in.rows());
@@ -88,12 +93,15 @@ Eigen::MatrixXd state_matrix(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
   return A;
 }
 
-std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes) {
-  // Keep one of each conjugate pair (ω_d >= 0); real roots are kept once each.
+std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero) {
+  // Keep one of each conjugate pair (ω_d >= 0); real roots are kept once each. Rigid-body
+  // roots (|λ| below `zero`, a multiple root that rounding spreads into tiny complex pairs)
+  // are dropped.
   std::vector<int> idx;
-  const double big = w.cwiseAbs().maxCoeff();
+  const double big = w.size() ? w.cwiseAbs().maxCoeff() : 0.0;
   for (int i = 0; i < w.size(); ++i) {
     const double im = w(i).imag();
+    if (std::abs(w(i)) < zero) continue;
     if (im > 1e-12 * big || im == 0.0) idx.push_back(i);
   }
   std::stable_sort(idx.begin(), idx.end(), [&](int a, int b) {
@@ -116,11 +124,29 @@ ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eige
                   const std::vector<std::pair<int, int>>& xy_pairs, int n_modes,
                   bool with_modes) {
   const Eigen::Index n = M.rows();
-  const Eigen::MatrixXd A = state_matrix(M, D, K);
   Eigen::VectorXcd w;
   Eigen::MatrixXcd V;
-  eig_general(A, w, &V);  // vectors are needed for the whirl direction
-  const std::vector<int> idx = pick_modes(w, n_modes);
+  // Rigid-body threshold from the model's own frequency scale √(max K_ii / max M_ii).
+  const double mk = K.diagonal().cwiseAbs().maxCoeff(), mm = M.diagonal().cwiseAbs().maxCoeff();
+  const double zero = 1e-7 * std::sqrt(mk / std::max(mm, 1e-300));
+  std::vector<int> idx;
+  bool done = false;
+  // Large model, few modes: shift-invert Arnoldi on the sparse pencil; ask for more roots
+  // while rigid-body or overdamped roots crowd out the oscillating ones.
+  for (int extra = 0; n > kDenseLimit && n_modes > 0 && extra <= 16; extra += 8) {
+    if (2 * (n_modes + extra) + 30 >= n) break;
+    if (!detail::modal_shift_invert(M, D, K, n_modes + extra, w, V)) break;
+    idx = pick_modes(w, n_modes, zero);
+    if (static_cast<int>(idx.size()) >= n_modes) {
+      done = true;
+      break;
+    }
+  }
+  if (!done) {
+    const Eigen::MatrixXd A = state_matrix(M, D, K);
+    eig_general(A, w, &V);  // vectors are needed for the whirl direction
+    idx = pick_modes(w, n_modes, zero);
+  }
   ModalResult out;
   const int m = static_cast<int>(idx.size());
   out.eigenvalues.resize(m);

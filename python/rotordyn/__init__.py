@@ -22,8 +22,8 @@ from rotordyn.model import (
     Support,
     System,
 )
-from rotordyn.analysis import modes
-from rotordyn.results import ModesResult
+from rotordyn.analysis import modes, rotor_campbell
+from rotordyn.results import CampbellResult, ModesResult
 from rotordyn import models
 
 __version__ = "0.1.0"
@@ -53,6 +53,8 @@ __all__ = [
     "Reduction",
     "System",
     "modes",
+    "rotor_campbell",
     "ModesResult",
+    "CampbellResult",
     "models",
 ]

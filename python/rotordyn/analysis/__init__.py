@@ -1,5 +1,5 @@
 """Analyses: verbs returning ``*Result`` objects."""
 
-from rotordyn.analysis.modes import RotorMatrices, modes
+from rotordyn.analysis.modes import RotorMatrices, modes, rotor_campbell
 
-__all__ = ["modes", "RotorMatrices"]
+__all__ = ["modes", "rotor_campbell", "RotorMatrices"]

@@ -8,6 +8,7 @@ from rotordyn import _core
 from rotordyn.errors import InputError
 from rotordyn.model import _validate as v
 from rotordyn.model.system import REDUCTION_METHODS, System
+from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.modes import WHIRL_NAMES, ModesResult
 from rotordyn.units import hz_to_rad_s
 
@@ -104,3 +105,23 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
     full = _result(full_rm, speed_hz, k, "full")
     return ModesResult(red.speed_hz, red.model, red.eigenvalues, red.whirl, red.shapes,
                        red.node_positions_m, full=full)
+
+
+def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
+                   n_modes: int = 8) -> CampbellResult:
+    """Campbell diagram of the rotor on its linear/rigid supports (no fluid film): the
+    ``n_modes`` lowest damped frequencies at each speed, computed in one C++ call.
+
+    speeds_hz: (n_speeds,) increasing, Hz.
+    """
+    sp = np.asarray(speeds_hz, dtype=float)
+    if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)):
+        raise InputError("speeds_hz: expected a non-empty 1-D array of finite speeds")
+    if sp.size > 1 and np.any(np.diff(sp) <= 0):
+        raise InputError("speeds_hz: expected strictly increasing speeds")
+    v.integer("n_modes", n_modes, lo=1)
+    rm = RotorMatrices(system, reduction)
+    M, K, C, G = rm.matrices()
+    r = _core.campbell(M, C, G, K, rm.xy_pairs(), hz_to_rad_s(sp), n_modes)
+    return CampbellResult(sp, np.asarray(r.eigenvalues), np.asarray(r.whirl),
+                          model="full" if rm.reduction is None else rm.method)

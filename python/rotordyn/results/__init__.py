@@ -1,5 +1,6 @@
 """Result objects (frozen dataclasses of numpy arrays with ``.to_frame()`` and ``.plot()``)."""
 
+from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.modes import ModesResult
 
-__all__ = ["ModesResult"]
+__all__ = ["ModesResult", "CampbellResult"]

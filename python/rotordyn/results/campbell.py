@@ -1,0 +1,91 @@
+"""Campbell diagrams: natural frequencies against spin speed, and the critical speeds where a
+frequency crosses a multiple of the running speed."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from rotordyn.results.modes import WHIRL_NAMES
+
+
+@dataclass(frozen=True)
+class CampbellResult:
+    """speeds_hz: (n_speeds,). eigenvalues: (n_speeds, n_modes) complex, 1/s, modes sorted by
+    damped frequency at each speed. whirl: (n_speeds, n_modes) int (+1 forward, −1 backward,
+    0 planar)."""
+
+    speeds_hz: np.ndarray
+    eigenvalues: np.ndarray
+    whirl: np.ndarray
+    model: str = "full"
+    status: str = "ok"
+    message: str = ""
+
+    @property
+    def frequencies_hz(self) -> np.ndarray:
+        """(n_speeds, n_modes) damped natural frequencies, Hz."""
+        return self.eigenvalues.imag / (2 * np.pi)
+
+    @property
+    def log_dec(self) -> np.ndarray:
+        im = self.eigenvalues.imag
+        return np.where(im > 0, -2 * np.pi * self.eigenvalues.real / np.where(im > 0, im, 1.0),
+                        np.inf)
+
+    def critical_speeds(self, harmonic: float = 1.0, whirl: str | None = "forward") -> pd.DataFrame:
+        """Speeds where a mode's damped frequency equals ``harmonic`` × running speed, by linear
+        interpolation between the computed speeds. ``whirl`` filters by the mode's whirl at the
+        crossing (None: any). Columns: mode, speed_hz, freq_hz, whirl."""
+        rows = []
+        f = self.frequencies_hz
+        for j in range(f.shape[1]):
+            g = f[:, j] - harmonic * self.speeds_hz
+            for i in np.where(np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]:
+                t = g[i] / (g[i] - g[i + 1])
+                s = self.speeds_hz[i] + t * (self.speeds_hz[i + 1] - self.speeds_hz[i])
+                w = WHIRL_NAMES[int(self.whirl[i if t < 0.5 else i + 1, j])]
+                if whirl is None or w == whirl:
+                    rows.append({"mode": j + 1, "speed_hz": s, "freq_hz": harmonic * s,
+                                 "whirl": w, "harmonic": harmonic})
+        df = pd.DataFrame(rows, columns=["mode", "speed_hz", "freq_hz", "whirl", "harmonic"])
+        return df.sort_values("speed_hz", ignore_index=True)
+
+    def to_frame(self) -> pd.DataFrame:
+        """Tidy: one row per (speed, mode)."""
+        ns, nm = self.eigenvalues.shape
+        lam = self.eigenvalues.ravel()
+        return pd.DataFrame({
+            "model": pd.Categorical([self.model] * (ns * nm)),
+            "speed_hz": np.repeat(self.speeds_hz, nm),
+            "mode": np.tile(np.arange(1, nm + 1, dtype=np.int64), ns),
+            "freq_hz": lam.imag / (2 * np.pi),
+            "eig_real_1_per_s": lam.real,
+            "log_dec": self.log_dec.ravel(),
+            "whirl": pd.Categorical([WHIRL_NAMES[int(w)] for w in self.whirl.ravel()],
+                                    categories=["forward", "backward", "planar"]),
+            "status": pd.Categorical([self.status] * (ns * nm)),
+            "message": [self.message] * (ns * nm),
+        })
+
+    def plot(self, ax=None, harmonics=(1.0,)):
+        """Frequencies against speed (forward solid, backward dashed) with n× lines."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7, 5))
+        f = self.frequencies_hz
+        for j in range(f.shape[1]):
+            fw = np.where(self.whirl[:, j] >= 0, f[:, j], np.nan)
+            bw = np.where(self.whirl[:, j] < 0, f[:, j], np.nan)
+            ax.plot(self.speeds_hz, fw, "-", color=f"C{j % 10}")
+            ax.plot(self.speeds_hz, bw, "--", color=f"C{j % 10}")
+        for h in harmonics:
+            ax.plot(self.speeds_hz, h * self.speeds_hz, "k:", lw=1, label=f"{h:g}× speed")
+        ax.set_xlabel("speed (Hz)")
+        ax.set_ylabel("damped natural frequency (Hz)")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize="small")
+        return ax
