@@ -32,7 +32,16 @@ def test_sparse_path_matches_dense_reference(supported, speed):
     D = c.C + speed * c.G
     r = core.modal(c.M, D, c.K, list(c.xy), 10, True)
     ref = reference(c.M, D, c.K, 10)
-    np.testing.assert_allclose(np.asarray(r.eigenvalues), ref, rtol=1e-7, atol=1e-9)
+    lam = np.asarray(r.eigenvalues)
+    # The free-free spinning rotor's nutation root (≈ Ω Ip/Id ≈ 0.5 rad/s) sits next to the
+    # defective zero cluster of the rigid-body modes: ill-conditioned, so NumPy's reference is
+    # itself only good to ~1e-5 there; the closed form of the rigid rotor checks it instead.
+    elastic = ref.imag > 1.0
+    np.testing.assert_allclose(lam[elastic], ref[elastic], rtol=1e-7, atol=1e-9)
+    if not supported and speed > 0:
+        L, d = 1.5, 0.05
+        ip, id_ = d**2 / 8, L**2 / 12 + d**2 / 16  # per unit mass
+        np.testing.assert_allclose(lam[0].imag, speed * ip / id_, rtol=1e-4)
     # eigenvectors: normwise backward error of the quadratic eigenproblem (Tisseur 2000)
     nM, nD, nK = (np.linalg.norm(X, 2) for X in (c.M, D, c.K))
     for j, lam in enumerate(np.asarray(r.eigenvalues)):
