@@ -48,7 +48,9 @@ def test_sparse_path_matches_dense_reference(supported, speed):
         x = np.asarray(r.modes)[:, j]
         res = (lam**2 * c.M + lam * D + c.K) @ x
         eta = np.linalg.norm(res) / ((abs(lam) ** 2 * nM + abs(lam) * nD + nK) * np.linalg.norm(x))
-        assert eta < 1e-9, eta  # the Arnoldi stopping test is 1e-9 on the Ritz residual
+        # The Arnoldi stopping test is 1e-9 on the shift-inverted Ritz residual; the backward
+        # error of the original pencil is a few times larger for the nutation root.
+        assert eta < 1e-8, eta
 
 
 def test_campbell_batch_equals_pointwise_modes():
