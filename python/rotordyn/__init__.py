@@ -11,6 +11,7 @@ from rotordyn.errors import (
     RotordynError,
     SundialsError,
 )
+from rotordyn.bearing import BearingEquilibrium, FilmResult, Groove, JournalBearing, PressureField
 
 __version__ = "0.1.0"
 
@@ -30,4 +31,9 @@ __all__ = [
     "ConvergenceError",
     "ContactError",
     "SundialsError",
+    "JournalBearing",
+    "Groove",
+    "BearingEquilibrium",
+    "FilmResult",
+    "PressureField",
 ]
