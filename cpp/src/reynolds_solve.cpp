@@ -198,11 +198,18 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
       for (int i = 0; i < s.n_unk; ++i)
         if (s.active[i]) r[i] = 0.0;
     Eigen::VectorXd x = s.ldlt.solve(-r);
+    // gumbel: p = max(p_full, 0); where p_full vanishes to round-off (e.g. on a symmetry line)
+    // the one-sided derivatives differ and we take their mean, as a central difference does.
+    double pmax = 0.0;
+    for (int n = 0; n < s.n_nodes; ++n) pmax = std::max(pmax, std::abs(s.pfull[n]));
+    const double ptol = 1e-10 * pmax;
     for (int i = 0; i < s.n_unk; ++i) {
       const int n = s.node_of[i];
-      if (s.cav == Cavitation::gumbel && !(s.pfull[n] > 0.0)) continue;
-      if (s.cav == Cavitation::reynolds && s.active[i]) continue;
-      dp.data()[n] = x[i];
+      double wgt = 1.0;
+      if (s.cav == Cavitation::gumbel)
+        wgt = s.pfull[n] > ptol ? 1.0 : (s.pfull[n] < -ptol ? 0.0 : 0.5);
+      if (s.cav == Cavitation::reynolds && s.active[i]) wgt = 0.0;
+      dp.data()[n] = wgt * x[i];
     }
   } else {
     Eigen::VectorXd x = s.lu.solve(-r);

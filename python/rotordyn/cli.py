@@ -7,6 +7,7 @@ import json
 import sys
 
 import rotordyn
+from rotordyn import cli_bearing
 
 
 def _cmd_info(args: argparse.Namespace) -> int:
@@ -27,6 +28,7 @@ def build_parser() -> argparse.ArgumentParser:
     s = sub.add_parser("info", help="package and library versions")
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=_cmd_info)
+    cli_bearing.register(sub)
     return p
 
 
