@@ -11,6 +11,7 @@ from rotordyn.errors import (
     RotordynError,
     SundialsError,
 )
+from rotordyn.bearing import BearingEquilibrium, FilmResult, Groove, JournalBearing, PressureField
 
 from rotordyn.model import (
     STEEL,
@@ -57,4 +58,9 @@ __all__ = [
     "ModesResult",
     "CampbellResult",
     "models",
+    "JournalBearing",
+    "Groove",
+    "BearingEquilibrium",
+    "FilmResult",
+    "PressureField",
 ]

@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 import rotordyn
+from rotordyn import cli_bearing
 
 
 class _ArgumentParser(argparse.ArgumentParser):
@@ -146,6 +147,7 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("model")
     s.add_argument("--out", default="out")
     s.set_defaults(func=_cmd_report)
+    cli_bearing.register(sub)
     return p
 
 

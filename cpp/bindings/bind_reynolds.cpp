@@ -1,0 +1,117 @@
+// Fluid-film journal bearing (Reynolds solver): geometry/grid structs, the reusable solver
+// object and its results. Every solve releases the GIL; one solver object must not be used by
+// two threads at once (the Python layer keeps one per thread).
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "rotordyn/reynolds.hpp"
+
+namespace rotordyn::py_bind {
+
+void bind_reynolds(py::module_& m) {
+  py::class_<Groove>(m, "Groove", "Axial groove fixed in the bearing frame (deg, deg, Pa).")
+      .def(py::init<>())
+      .def(py::init([](double c, double w, double p) { return Groove{c, w, p}; }),
+           py::arg("center_deg"), py::arg("width_deg"), py::arg("pressure_pa"))
+      .def_readwrite("center_deg", &Groove::center_deg)
+      .def_readwrite("width_deg", &Groove::width_deg)
+      .def_readwrite("pressure_pa", &Groove::pressure_pa);
+
+  py::class_<JournalBearingGeometry>(m, "JournalBearingGeometry", "360° bush, SI units.")
+      .def(py::init<>())
+      .def_readwrite("diameter_m", &JournalBearingGeometry::diameter_m)
+      .def_readwrite("length_m", &JournalBearingGeometry::length_m)
+      .def_readwrite("clearance_m", &JournalBearingGeometry::clearance_m)
+      .def_readwrite("viscosity_pa_s", &JournalBearingGeometry::viscosity_pa_s)
+      .def_readwrite("grooves", &JournalBearingGeometry::grooves)
+      .def("validate", &JournalBearingGeometry::validate);
+
+  py::class_<FilmGrid>(m, "FilmGrid", "n_circ nodes around, n_axial intervals along.")
+      .def(py::init<>())
+      .def(py::init([](int nc, int na) { return FilmGrid{nc, na}; }), py::arg("n_circ"),
+           py::arg("n_axial"))
+      .def_readwrite("n_circ", &FilmGrid::n_circ)
+      .def_readwrite("n_axial", &FilmGrid::n_axial)
+      .def("validate", &FilmGrid::validate);
+
+  py::class_<FilmSolution>(m, "FilmSolution")
+      .def_readonly("p_pa", &FilmSolution::p_pa)
+      .def_readonly("theta", &FilmSolution::theta)
+      .def_readonly("h_m", &FilmSolution::h_m)
+      .def_readonly("force_n", &FilmSolution::force_n)
+      .def_readonly("friction_torque_nm", &FilmSolution::friction_torque_nm)
+      .def_readonly("inlet_flow_m3_s", &FilmSolution::inlet_flow_m3_s)
+      .def_readonly("side_flow_m3_s", &FilmSolution::side_flow_m3_s)
+      .def_readonly("h_min_m", &FilmSolution::h_min_m)
+      .def_readonly("h_min_angle_deg", &FilmSolution::h_min_angle_deg)
+      .def_readonly("iterations", &FilmSolution::iterations);
+
+  py::class_<DynamicCoefficients>(m, "DynamicCoefficients")
+      .def_readonly("K", &DynamicCoefficients::K)
+      .def_readonly("C", &DynamicCoefficients::C)
+      .def_readonly("force_n", &DynamicCoefficients::force_n);
+
+  py::class_<EquilibriumSolution>(m, "EquilibriumSolution")
+      .def_readonly("x_m", &EquilibriumSolution::x_m)
+      .def_readonly("y_m", &EquilibriumSolution::y_m)
+      .def_readonly("force_n", &EquilibriumSolution::force_n)
+      .def_readonly("residual_rel", &EquilibriumSolution::residual_rel)
+      .def_readonly("iterations", &EquilibriumSolution::iterations);
+
+  using RS = ReynoldsSolver;
+  using gil = py::call_guard<py::gil_scoped_release>;
+  py::class_<RS>(m, "ReynoldsSolver",
+                 "Finite-length Reynolds solver for one geometry, grid and cavitation model.")
+      .def(py::init([](const JournalBearingGeometry& g, const FilmGrid& gr,
+                       const std::string& cav) { return new RS(g, gr, parse_cavitation(cav)); }),
+           py::arg("geometry"), py::arg("grid"), py::arg("cavitation"))
+      .def_property_readonly("cavitation",
+                             [](const RS& s) { return std::string(cavitation_name(s.cavitation())); })
+      .def_property_readonly("phi_rad", &RS::phi_rad)
+      .def_property_readonly("z_m", &RS::z_m)
+      .def_property_readonly("n_unknowns", &RS::n_unknowns)
+      .def("dirichlet_mask", &RS::dirichlet_mask)
+      .def(
+          "solve",
+          [](RS& s, const RowMatrixXd& h, const RowMatrixXd& dhdt, double omega) {
+            py::gil_scoped_release release;
+            return s.solve(h, dhdt, omega);  // copy: the solver's buffer is reused
+          },
+          py::arg("h"), py::arg("dhdt"), py::arg("omega_rad_s"),
+          "General film: h, dh/dt (n_circ, n_axial+1), m and m/s. Returns FilmSolution.")
+      .def("linearize", &RS::linearize, py::arg("dh"), py::arg("d_dhdt"), gil(),
+           "Pressure change (n_circ, n_axial+1) about the last solve for dh, d(dh/dt).")
+      .def("integrate_force", &RS::integrate_force, py::arg("p"), gil())
+      .def(
+          "rigid",
+          [](RS& s, double x, double y, double vx, double vy, double omega) {
+            py::gil_scoped_release release;
+            return s.rigid(x, y, vx, vy, omega);
+          },
+          py::arg("x_m"), py::arg("y_m"), py::arg("vx_m_s"), py::arg("vy_m_s"),
+          py::arg("omega_rad_s"))
+      .def(
+          "force",
+          [](RS& s, double x, double y, double vx, double vy, double omega) {
+            py::gil_scoped_release release;
+            return Eigen::Vector2d(s.rigid(x, y, vx, vy, omega).force_n);
+          },
+          py::arg("x_m"), py::arg("y_m"), py::arg("vx_m_s"), py::arg("vy_m_s"),
+          py::arg("omega_rad_s"), "Film force (Fx, Fy) on a rigid journal, N.")
+      .def("coefficients", &RS::coefficients, py::arg("x_m"), py::arg("y_m"),
+           py::arg("omega_rad_s"), gil())
+      .def("coefficients_fd", &RS::coefficients_fd, py::arg("x_m"), py::arg("y_m"),
+           py::arg("omega_rad_s"), py::arg("rel_step") = 1e-6, gil())
+      .def("equilibrium", &RS::equilibrium, py::arg("load_x_n"), py::arg("load_y_n"),
+           py::arg("omega_rad_s"), py::arg("x0_m") = 0.0, py::arg("y0_m") = 0.0,
+           py::arg("rtol") = 1e-10, py::arg("max_iter") = 60, gil())
+      .def("batch_forces", &RS::batch_forces, py::arg("states"), py::arg("omegas_rad_s"), gil(),
+           "states (n, 4) rows x, y, vx, vy; returns (n, 2) forces.")
+      .def("batch_coefficients", &RS::batch_coefficients, py::arg("positions"),
+           py::arg("omegas_rad_s"), gil(),
+           "positions (n, 2); returns (n, 10): Fx Fy Kxx Kxy Kyx Kyy Cxx Cxy Cyx Cyy.")
+      .def("reset", &RS::reset);
+}
+
+}  // namespace rotordyn::py_bind

@@ -1,0 +1,156 @@
+// Fluid-film journal bearing: finite-length Reynolds equation (paper eq. 2-5) on a (φ, z) grid,
+// with cavitation, forces, flows, friction and the linearised (perturbation) solve that gives
+// the stiffness and damping coefficients (paper eq. 18-20).
+//
+// Conventions (DESIGN.md §3): x horizontal, y up; φ measured from +x, positive with the
+// rotation; film thickness h = c − x cos φ − y sin φ (− w for a deformable sleeve);
+//   (1/R²) ∂φ(h³/(12μ) ∂φ p) + ∂z(h³/(12μ) ∂z p) = (ω/2) ∂h/∂φ + ∂h/∂t,
+// p = 0 (gauge) at z = ±L/2, periodic in φ, grooves are Dirichlet lines/bands p = p_groove.
+//
+// Discretisation: node-centred finite volumes. Nodes φ_j = j·2π/n_circ (j = 0..n_circ-1) and
+// z_k = −L/2 + k·L/n_axial (k = 0..n_axial; k = 0 and n_axial are the bearing ends). Face
+// values of h are the averages of the two nodes, the Poiseuille conductance is h_f³/(12μ),
+// the Couette flux through a φ-face is (ωR/2)·h_f·θ_upwind. The scheme is conservative and
+// second-order accurate; forces are integrated with the trapezoidal rule.
+//
+// A ReynoldsSolver is built once per (geometry, grid, cavitation model): it analyses the
+// sparse pattern once and refactors numerically per call; it keeps the last active set
+// (warm start) and the last factorisation for linearised solves. It is not thread-safe:
+// use one solver per thread (they share nothing).
+#pragma once
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rotordyn {
+
+using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+/// Cavitation model. none: full Sommerfeld (negative pressures kept); gumbel: half-Sommerfeld
+/// (solve, then clip p < 0); reynolds: Swift–Stieber, p ≥ 0 as a linear complementarity
+/// problem (primal–dual active set); jfo: mass-conserving Elrod–Adams p–θ complementarity
+/// (steady film; the squeeze term is taken as θ ∂h/∂t, i.e. quasi-static in θ).
+enum class Cavitation { none = 0, gumbel = 1, reynolds = 2, jfo = 3 };
+
+/// "none" | "gumbel" | "reynolds" | "jfo"; InputError naming `cavitation` otherwise.
+Cavitation parse_cavitation(const std::string& name);
+const char* cavitation_name(Cavitation c);
+
+/// Axial supply groove fixed in the bearing frame: nodes with φ in
+/// [center − width/2, center + width/2] (the nearest node for a zero width) are held at
+/// pressure_pa (gauge) over the whole interior length.
+struct Groove {
+  double center_deg = 0.0;
+  double width_deg = 0.0;
+  double pressure_pa = 0.0;
+};
+
+/// 360° bush (rigid, or with a sleeve deformation supplied through the film thickness).
+struct JournalBearingGeometry {
+  double diameter_m = 0.05;
+  double length_m = 0.04;
+  double clearance_m = 3e-4;
+  double viscosity_pa_s = 0.04;
+  std::vector<Groove> grooves;
+  /// InputError naming the field and its allowed range.
+  void validate() const;
+};
+
+/// n_circ nodes around (periodic), n_axial intervals along the length (n_axial + 1 node rows,
+/// the first and last on the bearing ends).
+struct FilmGrid {
+  int n_circ = 72;
+  int n_axial = 16;
+  void validate() const;
+};
+
+/// Everything one Reynolds solve produces. Fields are (n_circ, n_axial + 1), row j = φ_j.
+struct FilmSolution {
+  RowMatrixXd p_pa;          ///< gauge pressure, Pa
+  RowMatrixXd theta;         ///< fill fraction (1 in the full film; < 1 cavitated, jfo only)
+  RowMatrixXd h_m;           ///< film thickness, m
+  Eigen::Vector2d force_n;   ///< film force on the journal (Fx, Fy), N
+  double friction_torque_nm = 0.0;  ///< viscous torque resisting the rotation, N·m (> 0 for ω > 0)
+  double inlet_flow_m3_s = 0.0;     ///< flow supplied by the grooves into the film, m³/s
+  double side_flow_m3_s = 0.0;      ///< flow leaving through both ends, m³/s
+  double h_min_m = 0.0;             ///< minimum film thickness over the nodes, m
+  double h_min_angle_deg = 0.0;     ///< its angle φ, deg, in [0, 360)
+  int iterations = 0;               ///< active-set iterations (1 for none/gumbel)
+};
+
+/// Linear coefficients at an operating point: film force change = −K dq − C dq̇ (DESIGN frame).
+struct DynamicCoefficients {
+  Eigen::Matrix2d K;        ///< N/m
+  Eigen::Matrix2d C;        ///< N·s/m
+  Eigen::Vector2d force_n;  ///< film force at the operating point
+};
+
+struct EquilibriumSolution {
+  double x_m = 0.0;
+  double y_m = 0.0;
+  Eigen::Vector2d force_n;   ///< film force at the equilibrium (≈ −load)
+  double residual_rel = 0.0; ///< |F + load| / |load|
+  int iterations = 0;        ///< Newton iterations
+};
+
+class ReynoldsSolver {
+ public:
+  ReynoldsSolver(const JournalBearingGeometry& geometry, const FilmGrid& grid,
+                 Cavitation cavitation);
+  ~ReynoldsSolver();
+  ReynoldsSolver(ReynoldsSolver&&) noexcept;
+  ReynoldsSolver& operator=(ReynoldsSolver&&) noexcept;
+  ReynoldsSolver(const ReynoldsSolver&) = delete;
+  ReynoldsSolver& operator=(const ReynoldsSolver&) = delete;
+
+  const JournalBearingGeometry& geometry() const;
+  const FilmGrid& grid() const;
+  Cavitation cavitation() const;
+  Eigen::VectorXd phi_rad() const;  ///< (n_circ,)
+  Eigen::VectorXd z_m() const;      ///< (n_axial + 1,)
+  /// (n_circ, n_axial + 1): 1 where the node holds a prescribed pressure (end or groove).
+  RowMatrixXd dirichlet_mask() const;
+  int n_unknowns() const;
+
+  /// General film: h and ∂h/∂t on the nodes, (n_circ, n_axial + 1); ω in rad/s.
+  /// ContactError if h ≤ 0 anywhere.
+  const FilmSolution& solve(const RowMatrixXd& h, const RowMatrixXd& dhdt, double omega);
+
+  /// Linearised solve about the last solve(): the pressure change (n_circ, n_axial + 1) for a
+  /// film-thickness change dh and a change d_dhdt of ∂h/∂t, with the cavitation set frozen
+  /// (exact derivative of the discrete map away from set switches). Reuses the factorisation.
+  RowMatrixXd linearize(const RowMatrixXd& dh, const RowMatrixXd& d_dhdt);
+  /// Force change for a pressure change from linearize().
+  Eigen::Vector2d integrate_force(const RowMatrixXd& p) const;
+
+  /// Rigid journal at (x, y) with velocity (vx, vy). InputError if the eccentricity ratio ≥ 1.
+  const FilmSolution& rigid(double x_m, double y_m, double vx_m_s, double vy_m_s, double omega);
+  /// K, C by the perturbation (linearised) solve: one factorisation, four right-hand sides.
+  DynamicCoefficients coefficients(double x_m, double y_m, double omega);
+  /// K, C by central finite differences of rigid() (steps rel_step·c and rel_step·c·|ω|).
+  DynamicCoefficients coefficients_fd(double x_m, double y_m, double omega,
+                                      double rel_step = 1e-6);
+  /// Newton iteration for F(x, y) + load = 0 with the perturbation Jacobian −K.
+  /// x0, y0: starting point (a default guess is used when both are 0).
+  EquilibriumSolution equilibrium(double load_x_n, double load_y_n, double omega,
+                                  double x0_m = 0.0, double y0_m = 0.0, double rtol = 1e-10,
+                                  int max_iter = 60);
+
+  /// Batch of rigid-journal states: rows (x, y, vx, vy), omegas (n,). Returns (n, 2) forces.
+  RowMatrixXd batch_forces(const RowMatrixXd& states, const Eigen::VectorXd& omegas);
+  /// Batch of positions: rows (x, y), omegas (n,). Returns (n, 10): Fx, Fy, Kxx, Kxy, Kyx, Kyy,
+  /// Cxx, Cxy, Cyx, Cyy.
+  RowMatrixXd batch_coefficients(const RowMatrixXd& positions, const Eigen::VectorXd& omegas);
+
+  /// Forget the warm start (active set).
+  void reset();
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rotordyn

@@ -1,0 +1,317 @@
+// ReynoldsSolver: input validation, grid and groove layout, sparse pattern, film coefficients.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "reynolds_impl.hpp"
+#include "rotordyn/errors.hpp"
+
+namespace rotordyn {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+void require_positive(double v, const char* field) {
+  if (!(std::isfinite(v) && v > 0.0))
+    throw InputError(std::string(field) + ": expected a finite value > 0, got " + num(v));
+}
+}  // namespace
+
+Cavitation parse_cavitation(const std::string& name) {
+  if (name == "none") return Cavitation::none;
+  if (name == "gumbel") return Cavitation::gumbel;
+  if (name == "reynolds") return Cavitation::reynolds;
+  if (name == "jfo") return Cavitation::jfo;
+  throw InputError("cavitation: expected one of 'none', 'gumbel', 'reynolds', 'jfo', got '" +
+                   name + "'");
+}
+
+const char* cavitation_name(Cavitation c) {
+  switch (c) {
+    case Cavitation::none:
+      return "none";
+    case Cavitation::gumbel:
+      return "gumbel";
+    case Cavitation::reynolds:
+      return "reynolds";
+    case Cavitation::jfo:
+      return "jfo";
+  }
+  return "?";
+}
+
+void JournalBearingGeometry::validate() const {
+  require_positive(diameter_m, "diameter_m");
+  require_positive(length_m, "length_m");
+  require_positive(clearance_m, "clearance_m");
+  require_positive(viscosity_pa_s, "viscosity_pa_s");
+  if (!(clearance_m < 0.5 * diameter_m))
+    throw InputError("clearance_m: expected 0 < clearance_m < diameter_m/2 = " +
+                     num(0.5 * diameter_m) + ", got " + num(clearance_m));
+  for (std::size_t i = 0; i < grooves.size(); ++i) {
+    const Groove& g = grooves[i];
+    const std::string f = "grooves[" + std::to_string(i) + "].";
+    if (!std::isfinite(g.center_deg))
+      throw InputError(f + "center_deg: expected a finite angle, got " + num(g.center_deg));
+    if (!(std::isfinite(g.width_deg) && g.width_deg >= 0.0 && g.width_deg < 360.0))
+      throw InputError(f + "width_deg: expected 0 <= width_deg < 360, got " + num(g.width_deg));
+    if (!(std::isfinite(g.pressure_pa) && g.pressure_pa >= 0.0))
+      throw InputError(f + "pressure_pa: expected a finite gauge pressure >= 0, got " +
+                       num(g.pressure_pa));
+  }
+}
+
+void FilmGrid::validate() const {
+  if (n_circ < 12 || n_circ > 1 << 20)
+    throw InputError("n_circ: expected 12 <= n_circ <= 1048576 (grid too coarse below 12), got " +
+                     std::to_string(n_circ));
+  if (n_axial < 2 || n_axial > 1 << 20)
+    throw InputError("n_axial: expected 2 <= n_axial <= 1048576 (grid too coarse below 2), got " +
+                     std::to_string(n_axial));
+  if (static_cast<long long>(n_circ) * (n_axial + 1) > 50'000'000LL)
+    throw InputError("n_circ*n_axial: grid too large (more than 5e7 nodes)");
+}
+
+ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, Cavitation cv)
+    : geo(g), grid(gr), cav(cv) {
+  geo.validate();
+  grid.validate();
+  N = grid.n_circ;
+  K1 = grid.n_axial + 1;
+  n_nodes = N * K1;
+  R = 0.5 * geo.diameter_m;
+  L = geo.length_m;
+  c = geo.clearance_m;
+  mu = geo.viscosity_pa_s;
+  dphi = 2.0 * kPi / N;
+  dz = L / grid.n_axial;
+  cosphi.resize(N);
+  sinphi.resize(N);
+  for (int j = 0; j < N; ++j) {
+    cosphi[j] = std::cos(j * dphi);
+    sinphi[j] = std::sin(j * dphi);
+  }
+
+  // Prescribed-pressure nodes: both ends (p = 0), grooves (interior rows).
+  groove.assign(n_nodes, 0);
+  p_fixed.assign(n_nodes, 0.0);
+  std::vector<char> fixed(n_nodes, 0);
+  for (int j = 0; j < N; ++j) {
+    fixed[j * K1] = 1;
+    fixed[j * K1 + K1 - 1] = 1;
+  }
+  for (const Groove& gv : geo.grooves) {
+    std::vector<int> cols;
+    const double half = 0.5 * gv.width_deg * kPi / 180.0;
+    const double centre = gv.center_deg * kPi / 180.0;
+    if (gv.width_deg > 0.0) {
+      for (int j = 0; j < N; ++j) {
+        const double d = std::remainder(j * dphi - centre, 2.0 * kPi);
+        if (std::abs(d) <= half * (1.0 + 1e-12) + 1e-12) cols.push_back(j);
+      }
+    }
+    if (cols.empty()) {
+      long jj = std::lround(centre / dphi) % N;
+      if (jj < 0) jj += N;
+      cols.push_back(static_cast<int>(jj));
+    }
+    for (int j : cols)
+      for (int k = 1; k < K1 - 1; ++k) {
+        const int n = j * K1 + k;
+        fixed[n] = 1;
+        groove[n] = 1;
+        p_fixed[n] = gv.pressure_pa;  // a later groove overrides an overlapping earlier one
+      }
+  }
+  unk.assign(n_nodes, -1);
+  for (int n = 0; n < n_nodes; ++n)
+    if (!fixed[n]) {
+      unk[n] = static_cast<int>(node_of.size());
+      node_of.push_back(n);
+    }
+  n_unk = static_cast<int>(node_of.size());
+  if (n_unk == 0) throw InputError("grooves: the grooves cover the whole bearing (no film left)");
+
+  // Pattern: 5-point stencil between unknowns, both triangles, explicit zeros kept.
+  std::vector<Eigen::Triplet<double, int>> trip;
+  trip.reserve(5 * n_unk);
+  for (int i = 0; i < n_unk; ++i) {
+    const int n = node_of[i];
+    trip.emplace_back(i, i, 1.0);
+    for (int nb : {east(n), west(n), n + 1, n - 1})
+      if (unk[nb] >= 0) trip.emplace_back(unk[nb], i, 1.0);
+  }
+  A.resize(n_unk, n_unk);
+  A.setFromTriplets(trip.begin(), trip.end());
+  A.makeCompressed();
+  auto find = [&](int row, int col) -> int {
+    if (row < 0) return -1;
+    for (int q = A.outerIndexPtr()[col]; q < A.outerIndexPtr()[col + 1]; ++q)
+      if (A.innerIndexPtr()[q] == row) return q;
+    return -1;
+  };
+  pos.resize(n_unk);
+  for (int i = 0; i < n_unk; ++i) {
+    const int n = node_of[i];
+    pos[i] = ColPos{find(i, i), find(unk[east(n)], i), find(unk[west(n)], i), find(unk[n + 1], i),
+                    find(unk[n - 1], i)};
+  }
+  ldlt.analyzePattern(A);
+
+  h.assign(n_nodes, c);
+  hdot.assign(n_nodes, 0.0);
+  cE.assign(n_nodes, 0.0);
+  cN.assign(n_nodes, 0.0);
+  qE.assign(n_nodes, 0.0);
+  src.assign(n_nodes, 0.0);
+  p.assign(n_nodes, 0.0);
+  pfull.assign(n_nodes, 0.0);
+  theta.assign(n_nodes, 1.0);
+  active.assign(n_unk, 0);
+  rhs.resize(n_unk);
+  sol.resize(n_unk);
+  for (int n = 0; n < n_nodes; ++n) p[n] = pfull[n] = p_fixed[n];
+}
+
+void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, double omega_in) {
+  if (!std::isfinite(omega_in))
+    throw InputError("speed: expected a finite angular speed, got " + num(omega_in));
+  double hmin = h_in[0];
+  int nmin = 0;
+  for (int n = 0; n < n_nodes; ++n) {
+    const double hv = h_in[n];
+    if (!std::isfinite(hv) || !std::isfinite(hdot_in[n]))
+      throw InputError("h/dhdt: expected finite film thickness and rate at every node");
+    if (hv < hmin) {
+      hmin = hv;
+      nmin = n;
+    }
+  }
+  if (!(hmin > 0.0))
+    throw ContactError("film thickness " + num(hmin) + " m <= 0 at phi = " +
+                       num((nmin / K1) * dphi * 180.0 / kPi) + " deg: journal touches the bush");
+  omega = omega_in;
+  std::copy(h_in, h_in + n_nodes, h.begin());
+  std::copy(hdot_in, hdot_in + n_nodes, hdot.begin());
+  const double fE = dz / (12.0 * mu * R * dphi);
+  const double fN = R * dphi / (12.0 * mu * dz);
+  const double fq = 0.5 * omega * R * dz;
+  const double fs = R * dphi * dz;
+  for (int n = 0; n < n_nodes; ++n) {
+    const double he = 0.5 * (h[n] + h[east(n)]);
+    cE[n] = fE * he * he * he;
+    qE[n] = fq * he;
+    src[n] = fs * hdot[n];
+    if (n % K1 != K1 - 1) {
+      const double hn = 0.5 * (h[n] + h[n + 1]);
+      cN[n] = fN * hn * hn * hn;
+    } else {
+      cN[n] = 0.0;
+    }
+  }
+}
+
+void ReynoldsSolver::Impl::base_rhs(Eigen::VectorXd& b) const {
+  for (int i = 0; i < n_unk; ++i) {
+    const int n = node_of[i];
+    const int e = east(n), w = west(n);
+    double v = -(qE[n] - qE[w]) - src[n];
+    if (unk[e] < 0) v += cE[n] * p_fixed[e];
+    if (unk[w] < 0) v += cE[w] * p_fixed[w];
+    if (unk[n + 1] < 0) v += cN[n] * p_fixed[n + 1];
+    if (unk[n - 1] < 0) v += cN[n - 1] * p_fixed[n - 1];
+    b[i] = v;
+  }
+}
+
+void ReynoldsSolver::Impl::fill_spd(const std::vector<char>* mask) {
+  double* val = A.valuePtr();
+  for (int i = 0; i < n_unk; ++i) {
+    const int n = node_of[i];
+    const ColPos& q = pos[i];
+    const int e = east(n), w = west(n);
+    if (mask && (*mask)[i]) {
+      val[q.diag] = 1.0;
+      if (q.e >= 0) val[q.e] = 0.0;
+      if (q.w >= 0) val[q.w] = 0.0;
+      if (q.n >= 0) val[q.n] = 0.0;
+      if (q.s >= 0) val[q.s] = 0.0;
+      continue;
+    }
+    val[q.diag] = cE[n] + cE[w] + cN[n] + cN[n - 1];
+    auto off = [&](int at, int nb, double cf) {
+      if (at < 0) return;
+      val[at] = (mask && (*mask)[unk[nb]]) ? 0.0 : -cf;
+    };
+    off(q.e, e, cE[n]);
+    off(q.w, w, cE[w]);
+    off(q.n, n + 1, cN[n]);
+    off(q.s, n - 1, cN[n - 1]);
+  }
+}
+
+void ReynoldsSolver::Impl::factor_spd() {
+  ldlt.factorize(A);
+  if (ldlt.info() != Eigen::Success)
+    throw ConvergenceError("Reynolds operator: sparse LDLT factorisation failed");
+  factor = Factor::ldlt;
+}
+
+double ReynoldsSolver::Impl::cell_residual(int n, const std::vector<double>& pp) const {
+  const int e = east(n), w = west(n);
+  const double pn = pp[n];
+  double r = cE[n] * (pn - pp[e]) + cE[w] * (pn - pp[w]) + cN[n] * (pn - pp[n + 1]) +
+             cN[n - 1] * (pn - pp[n - 1]);
+  if (omega >= 0.0)
+    r += qE[n] * theta[n] - qE[w] * theta[w];
+  else
+    r += qE[n] * theta[e] - qE[w] * theta[n];
+  r += src[n] * theta[n];
+  return r;
+}
+
+// ---- public plumbing -------------------------------------------------------------------
+
+ReynoldsSolver::ReynoldsSolver(const JournalBearingGeometry& geometry, const FilmGrid& grid,
+                               Cavitation cavitation)
+    : impl_(std::make_unique<Impl>(geometry, grid, cavitation)) {}
+ReynoldsSolver::~ReynoldsSolver() = default;
+ReynoldsSolver::ReynoldsSolver(ReynoldsSolver&&) noexcept = default;
+ReynoldsSolver& ReynoldsSolver::operator=(ReynoldsSolver&&) noexcept = default;
+
+const JournalBearingGeometry& ReynoldsSolver::geometry() const { return impl_->geo; }
+const FilmGrid& ReynoldsSolver::grid() const { return impl_->grid; }
+Cavitation ReynoldsSolver::cavitation() const { return impl_->cav; }
+int ReynoldsSolver::n_unknowns() const { return impl_->n_unk; }
+
+Eigen::VectorXd ReynoldsSolver::phi_rad() const {
+  Eigen::VectorXd v(impl_->N);
+  for (int j = 0; j < impl_->N; ++j) v[j] = j * impl_->dphi;
+  return v;
+}
+
+Eigen::VectorXd ReynoldsSolver::z_m() const {
+  Eigen::VectorXd v(impl_->K1);
+  for (int k = 0; k < impl_->K1; ++k) v[k] = -0.5 * impl_->L + k * impl_->dz;
+  return v;
+}
+
+RowMatrixXd ReynoldsSolver::dirichlet_mask() const {
+  RowMatrixXd m(impl_->N, impl_->K1);
+  for (int n = 0; n < impl_->n_nodes; ++n) m.data()[n] = impl_->unk[n] < 0 ? 1.0 : 0.0;
+  return m;
+}
+
+void ReynoldsSolver::reset() {
+  impl_->have_active = false;
+  std::fill(impl_->active.begin(), impl_->active.end(), 0);
+}
+
+}  // namespace rotordyn

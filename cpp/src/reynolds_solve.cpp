@@ -1,0 +1,237 @@
+// ReynoldsSolver: the film solves (full/half Sommerfeld, Swift–Stieber LCP), outputs, and the
+// linearised solve that shares the last factorisation.
+#include <algorithm>
+#include <cmath>
+
+#include "reynolds_impl.hpp"
+#include "rotordyn/errors.hpp"
+
+namespace rotordyn {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+void ReynoldsSolver::Impl::solve_linear() {
+  fill_spd(nullptr);
+  factor_spd();
+  base_rhs(rhs);
+  sol = ldlt.solve(rhs);
+  for (int i = 0; i < n_unk; ++i) {
+    const int n = node_of[i];
+    pfull[n] = sol[i];
+    p[n] = (cav == Cavitation::gumbel && sol[i] < 0.0) ? 0.0 : sol[i];
+  }
+  out.iterations = 1;
+}
+
+// Swift–Stieber: find p >= 0 with μ = A p − b >= 0 and p·μ = 0 (A is a Stieltjes matrix, so
+// the LCP has one solution). Primal–dual active set (Hintermüller, Ito & Kunisch 2003): on the
+// active set p = 0, elsewhere A_II p_I = b_I; update active = {μ > 0 on the old set} ∪ {p < 0};
+// stop when the set repeats. The set is warm-started from the previous call. Active unknowns
+// are decoupled in place (identity row/column) so the pattern and its analysis never change.
+void ReynoldsSolver::Impl::solve_reynolds() {
+  if (!have_active) std::fill(active.begin(), active.end(), 0);
+  base_rhs(rhs);
+  double bscale = 0.0;
+  for (int i = 0; i < n_unk; ++i) bscale = std::max(bscale, std::abs(rhs[i]));
+  std::vector<char> next(n_unk);
+  const int max_iter = 100 + n_unk / 4;
+  for (int it = 1; it <= max_iter; ++it) {
+    fill_spd(&active);
+    factor_spd();
+    Eigen::VectorXd b = rhs;
+    for (int i = 0; i < n_unk; ++i)
+      if (active[i]) b[i] = 0.0;
+    sol = ldlt.solve(b);
+    double pscale = 0.0;
+    for (int i = 0; i < n_unk; ++i) {
+      const int n = node_of[i];
+      p[n] = active[i] ? 0.0 : sol[i];
+      pscale = std::max(pscale, std::abs(p[n]));
+    }
+    for (int n = 0; n < n_nodes; ++n)
+      if (unk[n] < 0) pscale = std::max(pscale, std::abs(p[n]));
+    const double tol_p = 1e-13 * pscale;
+    const double tol_mu = 1e-13 * std::max(bscale, 1e-300);
+    bool changed = false;
+    for (int i = 0; i < n_unk; ++i) {
+      const int n = node_of[i];
+      if (active[i]) {
+        const double mu_i = cell_residual(n, p);  // multiplier: (A p − b)_i
+        next[i] = mu_i >= -tol_mu ? 1 : 0;
+      } else {
+        next[i] = p[n] < -tol_p ? 1 : 0;
+      }
+      if (next[i] != active[i]) changed = true;
+    }
+    if (!changed) {
+      for (int n = 0; n < n_nodes; ++n) pfull[n] = p[n];
+      have_active = true;
+      out.iterations = it;
+      return;
+    }
+    active.swap(next);
+  }
+  have_active = false;
+  throw ConvergenceError("reynolds cavitation: active-set iteration did not converge in " +
+                         std::to_string(max_iter) + " iterations");
+}
+
+void ReynoldsSolver::Impl::postprocess() {
+  const int Kl = K1 - 1;
+  const double area = R * dphi * dz;
+  double fx = 0.0, fy = 0.0, torque = 0.0;
+  double hmin = h[0];
+  int nmin = 0;
+  for (int n = 0; n < n_nodes; ++n) {
+    const int j = n / K1, k = n % K1;
+    const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
+    fx -= wk * p[n] * cosphi[j];
+    fy -= wk * p[n] * sinphi[j];
+    const double dpdphi = (p[east(n)] - p[west(n)]) / (2.0 * dphi);
+    const double tau = mu * omega * R * theta[n] / h[n] + h[n] / (2.0 * R) * dpdphi;
+    torque += wk * tau;
+    if (h[n] < hmin) {
+      hmin = h[n];
+      nmin = n;
+    }
+  }
+  out.force_n = Eigen::Vector2d(fx * area, fy * area);
+  out.friction_torque_nm = torque * area * R;
+  out.h_min_m = hmin;
+  out.h_min_angle_deg = (nmin / K1) * dphi * 180.0 / kPi;
+
+  // Flows: supply through faces groove node -> film node, leakage through faces film -> end.
+  double qin = 0.0, qside = 0.0;
+  const bool fwd = omega >= 0.0;
+  for (int i = 0; i < n_unk; ++i) {
+    const int n = node_of[i];
+    const int e = east(n), w = west(n);
+    if (groove[w]) qin += cE[w] * (p[w] - p[n]) + qE[w] * (fwd ? theta[w] : theta[n]);
+    if (groove[e]) qin += cE[n] * (p[e] - p[n]) - qE[n] * (fwd ? theta[n] : theta[e]);
+    if (groove[n + 1]) qin += cN[n] * (p[n + 1] - p[n]);
+    if (groove[n - 1]) qin += cN[n - 1] * (p[n - 1] - p[n]);
+    if (n % K1 == 1) qside += cN[n - 1] * (p[n] - p[n - 1]);
+    if (n % K1 == Kl - 1) qside += cN[n] * (p[n] - p[n + 1]);
+  }
+  out.inlet_flow_m3_s = qin;
+  out.side_flow_m3_s = qside;
+
+  out.p_pa.resize(N, K1);
+  out.theta.resize(N, K1);
+  out.h_m.resize(N, K1);
+  std::copy(p.begin(), p.end(), out.p_pa.data());
+  std::copy(theta.begin(), theta.end(), out.theta.data());
+  std::copy(h.begin(), h.end(), out.h_m.data());
+}
+
+void ReynoldsSolver::Impl::residual_derivative(const double* dh, const double* dhdot,
+                                               Eigen::VectorXd& outv) const {
+  // Pressure at which the operator is linearised: the unclipped solution for none/gumbel.
+  const std::vector<double>& P =
+      (cav == Cavitation::none || cav == Cavitation::gumbel) ? pfull : p;
+  const double fE = 3.0 * dz / (12.0 * mu * R * dphi);
+  const double fN = 3.0 * R * dphi / (12.0 * mu * dz);
+  const double fq = 0.5 * omega * R * dz;
+  const double fs = R * dphi * dz;
+  const bool fwd = omega >= 0.0;
+  outv.resize(n_unk);
+  for (int i = 0; i < n_unk; ++i) {
+    const int n = node_of[i];
+    const int e = east(n), w = west(n);
+    const double he = 0.5 * (h[n] + h[e]), hw = 0.5 * (h[w] + h[n]);
+    const double hn = 0.5 * (h[n] + h[n + 1]), hs = 0.5 * (h[n - 1] + h[n]);
+    const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
+    const double dhn = 0.5 * (dh[n] + dh[n + 1]), dhs = 0.5 * (dh[n - 1] + dh[n]);
+    double r = fE * he * he * dhe * (P[n] - P[e]) + fE * hw * hw * dhw * (P[n] - P[w]) +
+               fN * hn * hn * dhn * (P[n] - P[n + 1]) + fN * hs * hs * dhs * (P[n] - P[n - 1]);
+    if (fwd)
+      r += fq * (dhe * theta[n] - dhw * theta[w]);
+    else
+      r += fq * (dhe * theta[e] - dhw * theta[n]);
+    r += fs * dhdot[n] * theta[n];
+    outv[i] = r;
+  }
+}
+
+// ---- public ------------------------------------------------------------------------------
+
+const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixXd& dhdt,
+                                          double omega) {
+  Impl& s = *impl_;
+  if (h.rows() != s.N || h.cols() != s.K1)
+    throw InputError(shape_msg("h", s.N, s.K1, h.rows(), h.cols()));
+  if (dhdt.rows() != s.N || dhdt.cols() != s.K1)
+    throw InputError(shape_msg("dhdt", s.N, s.K1, dhdt.rows(), dhdt.cols()));
+  s.solved = false;
+  s.set_film(h.data(), dhdt.data(), omega);
+  switch (s.cav) {
+    case Cavitation::none:
+    case Cavitation::gumbel:
+      s.solve_linear();
+      break;
+    case Cavitation::reynolds:
+      s.solve_reynolds();
+      break;
+    case Cavitation::jfo:
+      s.solve_jfo();
+      break;
+  }
+  s.postprocess();
+  s.solved = true;
+  return s.out;
+}
+
+RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& d_dhdt) {
+  Impl& s = *impl_;
+  if (!s.solved) throw InputError("linearize: call solve() or rigid() first");
+  if (dh.rows() != s.N || dh.cols() != s.K1)
+    throw InputError(shape_msg("dh", s.N, s.K1, dh.rows(), dh.cols()));
+  if (d_dhdt.rows() != s.N || d_dhdt.cols() != s.K1)
+    throw InputError(shape_msg("d_dhdt", s.N, s.K1, d_dhdt.rows(), d_dhdt.cols()));
+  Eigen::VectorXd r;
+  s.residual_derivative(dh.data(), d_dhdt.data(), r);
+  RowMatrixXd dp = RowMatrixXd::Zero(s.N, s.K1);
+  if (s.factor == Impl::Factor::ldlt) {
+    if (s.cav == Cavitation::reynolds)
+      for (int i = 0; i < s.n_unk; ++i)
+        if (s.active[i]) r[i] = 0.0;
+    Eigen::VectorXd x = s.ldlt.solve(-r);
+    // gumbel: p = max(p_full, 0); where p_full vanishes to round-off (e.g. on a symmetry line)
+    // the one-sided derivatives differ and we take their mean, as a central difference does.
+    double pmax = 0.0;
+    for (int n = 0; n < s.n_nodes; ++n) pmax = std::max(pmax, std::abs(s.pfull[n]));
+    const double ptol = 1e-10 * pmax;
+    for (int i = 0; i < s.n_unk; ++i) {
+      const int n = s.node_of[i];
+      double wgt = 1.0;
+      if (s.cav == Cavitation::gumbel)
+        wgt = s.pfull[n] > ptol ? 1.0 : (s.pfull[n] < -ptol ? 0.0 : 0.5);
+      if (s.cav == Cavitation::reynolds && s.active[i]) wgt = 0.0;
+      dp.data()[n] = wgt * x[i];
+    }
+  } else {
+    Eigen::VectorXd x = s.lu.solve(-r);
+    for (int i = 0; i < s.n_unk; ++i)
+      if (!s.active[i]) dp.data()[s.node_of[i]] = x[i];
+  }
+  return dp;
+}
+
+Eigen::Vector2d ReynoldsSolver::integrate_force(const RowMatrixXd& pr) const {
+  const Impl& s = *impl_;
+  if (pr.rows() != s.N || pr.cols() != s.K1)
+    throw InputError(shape_msg("p", s.N, s.K1, pr.rows(), pr.cols()));
+  double fx = 0.0, fy = 0.0;
+  for (int n = 0; n < s.n_nodes; ++n) {
+    const int j = n / s.K1, k = n % s.K1;
+    const double wk = (k == 0 || k == s.K1 - 1) ? 0.5 : 1.0;
+    fx -= wk * pr.data()[n] * s.cosphi[j];
+    fy -= wk * pr.data()[n] * s.sinphi[j];
+  }
+  const double area = s.R * s.dphi * s.dz;
+  return Eigen::Vector2d(fx * area, fy * area);
+}
+
+}  // namespace rotordyn

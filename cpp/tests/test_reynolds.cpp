@@ -1,0 +1,126 @@
+// Reynolds solver kernel tests: operator properties, closed-form limits (Ocvirk short bearing,
+// Sommerfeld long bearing), perturbation vs finite-difference derivatives, complementarity,
+// mass conservation of jfo, error paths. Python tests hold the published-table checks.
+#include <cmath>
+
+#include "rotordyn/errors.hpp"
+#include "rotordyn/reynolds.hpp"
+#include "testing.hpp"
+
+using namespace rotordyn;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+JournalBearingGeometry geom(double D, double L) {
+  JournalBearingGeometry g;
+  g.diameter_m = D;
+  g.length_m = L;
+  g.clearance_m = 1e-4;
+  g.viscosity_pa_s = 0.02;
+  return g;
+}
+}  // namespace
+
+TEST_CASE("reynolds: concentric journal without grooves carries no load; Petroff torque") {
+  ReynoldsSolver s(geom(0.05, 0.04), FilmGrid{36, 8}, Cavitation::reynolds);
+  const FilmSolution& f = s.rigid(0, 0, 0, 0, 100.0);
+  CHECK(f.force_n.norm() < 1e-9);
+  const double R = 0.025, L = 0.04, c = 1e-4;
+  CHECK_CLOSE(f.friction_torque_nm, 2 * kPi * 0.02 * 100.0 * R * R * R * L / c, 1e-12, 0.0);
+}
+
+TEST_CASE("reynolds: full Sommerfeld long bearing approaches the closed form as 1/(L/D)") {
+  // W∞ = 12π μ ω R³ L ε / (c² (2+ε²) √(1−ε²)), attitude 90°. End leakage lowers the finite
+  // bearing's load by a deficit ∝ D/L: doubling L/D halves it.
+  const double D = 0.05, c = 1e-4, mu = 0.02, w = 100.0, eps = 0.5, R = D / 2;
+  double deficit[2];
+  for (int m = 0; m < 2; ++m) {
+    const double L = (m == 0 ? 4.0 : 8.0) * D;
+    ReynoldsSolver s(geom(D, L), FilmGrid{96, m == 0 ? 32 : 64}, Cavitation::none);
+    const FilmSolution& f = s.rigid(0, -eps * c, 0, 0, w);
+    const double W = 12 * kPi * mu * w * R * R * R * L * eps /
+                     (c * c * (2 + eps * eps) * std::sqrt(1 - eps * eps));
+    deficit[m] = 1.0 - f.force_n.norm() / W;
+    CHECK(std::abs(f.force_n.y()) < 1e-6 * W);  // no force along the line of centres
+  }
+  CHECK(deficit[1] > 0.0 && deficit[1] < 0.15);
+  CHECK_CLOSE(deficit[0] / deficit[1], 2.0, 0.05, 0.0);
+}
+
+TEST_CASE("reynolds: short bearing (L/D = 1/16) approaches Ocvirk") {
+  const double D = 0.16, L = 0.01, c = 1e-4, mu = 0.02, w = 100.0, eps = 0.5;
+  ReynoldsSolver s(geom(D, L), FilmGrid{144, 16}, Cavitation::gumbel);
+  const FilmSolution& f = s.rigid(0, -eps * c, 0, 0, w);
+  const double R = D / 2;
+  const double W = mu * w * R * L * L * L / (4 * c * c) * eps *
+                   std::sqrt(16 * eps * eps + kPi * kPi * (1 - eps * eps)) /
+                   std::pow(1 - eps * eps, 2);
+  CHECK_CLOSE(f.force_n.norm(), W, 0.03, 0.0);
+}
+
+TEST_CASE("reynolds: Swift-Stieber solution is complementary and between gumbel and none") {
+  JournalBearingGeometry g = geom(0.05, 0.05);
+  g.grooves.push_back(Groove{90.0, 0.0, 0.0});
+  ReynoldsSolver rs(g, FilmGrid{72, 16}, Cavitation::reynolds);
+  const FilmSolution& f = rs.rigid(2e-5, -6e-5, 0, 0, 200.0);
+  CHECK(f.p_pa.minCoeff() >= 0.0);
+  CHECK(f.iterations >= 2);
+  // A warm start at the same point converges in one iteration.
+  CHECK(rs.rigid(2e-5, -6e-5, 0, 0, 200.0).iterations == 1);
+  ReynoldsSolver gs(g, FilmGrid{72, 16}, Cavitation::gumbel);
+  const FilmSolution& fg = gs.rigid(2e-5, -6e-5, 0, 0, 200.0);
+  // Reynolds pressures are lower than the clipped half-Sommerfeld ones only near the rupture;
+  // both carry a load of the same size.
+  CHECK_CLOSE(f.force_n.norm(), fg.force_n.norm(), 0.2, 0.0);
+}
+
+TEST_CASE("reynolds: perturbation K, C match central finite differences") {
+  JournalBearingGeometry g = geom(0.05, 0.025);
+  g.grooves.push_back(Groove{90.0, 0.0, 0.0});
+  for (Cavitation cv : {Cavitation::none, Cavitation::gumbel, Cavitation::reynolds,
+                        Cavitation::jfo}) {
+    ReynoldsSolver s(g, FilmGrid{48, 12}, cv);
+    const DynamicCoefficients a = s.coefficients(3e-5, -5e-5, 150.0);
+    const DynamicCoefficients b = s.coefficients_fd(3e-5, -5e-5, 150.0, 1e-6);
+    const double ks = a.K.norm(), cs = a.C.norm();
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        CHECK_CLOSE(a.K(i, j), b.K(i, j), 0.0, 1e-3 * ks);
+        CHECK_CLOSE(a.C(i, j), b.C(i, j), 0.0, 1e-3 * cs);
+      }
+  }
+}
+
+TEST_CASE("reynolds: jfo conserves mass, reynolds does not when the film reforms") {
+  JournalBearingGeometry g = geom(0.05, 0.04);
+  g.grooves.push_back(Groove{90.0, 0.0, 0.0});
+  ReynoldsSolver j(g, FilmGrid{72, 16}, Cavitation::jfo);
+  const FilmSolution& fj = j.rigid(0, -0.6e-4, 0, 0, 300.0);
+  CHECK(fj.inlet_flow_m3_s > 0.0);
+  CHECK_CLOSE(fj.inlet_flow_m3_s, fj.side_flow_m3_s, 1e-9, 0.0);
+  CHECK(fj.theta.minCoeff() < 0.99);
+  CHECK(fj.theta.minCoeff() >= 0.0);
+  ReynoldsSolver r(g, FilmGrid{72, 16}, Cavitation::reynolds);
+  const FilmSolution& fr = r.rigid(0, -0.6e-4, 0, 0, 300.0);
+  CHECK(std::abs(fr.inlet_flow_m3_s - fr.side_flow_m3_s) > 1e-3 * fr.side_flow_m3_s);
+}
+
+TEST_CASE("reynolds: bad input is an InputError, contact a ContactError") {
+  JournalBearingGeometry g = geom(0.05, 0.04);
+  g.clearance_m = 0.0;
+  CHECK_THROWS(ReynoldsSolver(g, FilmGrid{72, 16}, Cavitation::reynolds), InputError);
+  g.clearance_m = std::nan("");
+  CHECK_THROWS(ReynoldsSolver(g, FilmGrid{72, 16}, Cavitation::reynolds), InputError);
+  CHECK_THROWS(ReynoldsSolver(geom(0.05, 0.04), FilmGrid{8, 16}, Cavitation::reynolds),
+               InputError);
+  CHECK_THROWS(ReynoldsSolver(geom(0.05, 0.04), FilmGrid{72, 1}, Cavitation::reynolds),
+               InputError);
+  CHECK_THROWS(parse_cavitation("elrod"), InputError);
+  ReynoldsSolver s(geom(0.05, 0.04), FilmGrid{24, 4}, Cavitation::reynolds);
+  CHECK_THROWS(s.rigid(1e-4, 0, 0, 0, 10.0), InputError);
+  RowMatrixXd h = RowMatrixXd::Constant(24, 5, 1e-4), hd = RowMatrixXd::Zero(24, 5);
+  h(3, 2) = -1e-6;
+  CHECK_THROWS(s.solve(h, hd, 10.0), ContactError);
+  CHECK_THROWS(s.solve(RowMatrixXd::Constant(24, 4, 1e-4), hd, 10.0), InputError);
+}

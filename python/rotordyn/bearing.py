@@ -1,0 +1,440 @@
+"""Fluid-film journal bearing: finite-length Reynolds solver (paper eq. 2-5, 18-20).
+
+Frame and conventions (DESIGN.md §3): x horizontal, y up, the journal spins counter-clockwise
+(from +x to +y) for ``speed_hz > 0``; the film angle φ is measured from +x with the rotation;
+the film thickness is ``h = c - x cos φ - y sin φ``. Forces are the film forces **on the
+journal**, N. Linear coefficients are defined by ``dF = -K dq - C dq̇``.
+
+The numerical work is done by :class:`rotordyn._core.ReynoldsSolver` (C++; the GIL is released
+in every solve). A :class:`JournalBearing` keeps one solver per thread, so one bearing object
+can be shared by threads, and it pickles by its parameters (dask workers rebuild the solver).
+
+Example
+-------
+>>> import rotordyn
+>>> b = rotordyn.JournalBearing(diameter_m=0.05, length_m=0.04, clearance_m=3e-4,
+...                             viscosity_pa_s=0.04, n_circ=36, n_axial=8)
+>>> f = b.forces(x_m=0.0, y_m=-1e-4, speed_hz=50.0)
+>>> f.shape
+(2,)
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+from dataclasses import dataclass, field
+from typing import Iterable, Sequence
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn.errors import InputError
+
+CAVITATION_MODELS = ("none", "gumbel", "reynolds", "jfo")
+TWO_PI = 2.0 * math.pi
+
+
+def _finite(value, name: str) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: expected a real number, got {value!r}") from None
+    if not math.isfinite(v):
+        raise InputError(f"{name}: expected a finite number, got {v}")
+    return v
+
+
+def _positive(value, name: str) -> float:
+    v = _finite(value, name)
+    if not v > 0.0:
+        raise InputError(f"{name}: expected a finite value > 0, got {v}")
+    return v
+
+
+def _integer(value, name: str, lo: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise InputError(f"{name}: expected an integer >= {lo}, got {value!r}")
+    if int(value) < lo:
+        raise InputError(f"{name}: expected an integer >= {lo} (grid too coarse), got {value}")
+    return int(value)
+
+
+@dataclass(frozen=True, slots=True)
+class Groove:
+    """Axial supply groove fixed in the bearing frame.
+
+    Parameters
+    ----------
+    center_deg : angle φ of the groove centre from +x, with the rotation, deg.
+    width_deg : angular width, deg; 0 is a supply line at the nearest grid angle.
+    pressure_pa : supply pressure (gauge), Pa, held on the groove over the interior length.
+    """
+
+    center_deg: float
+    width_deg: float = 0.0
+    pressure_pa: float = 0.0
+
+    def __post_init__(self) -> None:
+        _finite(self.center_deg, "Groove.center_deg")
+        w = _finite(self.width_deg, "Groove.width_deg")
+        if not 0.0 <= w < 360.0:
+            raise InputError(f"Groove.width_deg: expected 0 <= width_deg < 360, got {w}")
+        p = _finite(self.pressure_pa, "Groove.pressure_pa")
+        if p < 0.0:
+            raise InputError(f"Groove.pressure_pa: expected a gauge pressure >= 0, got {p}")
+
+    def to_core(self) -> _core.Groove:
+        return _core.Groove(float(self.center_deg), float(self.width_deg), float(self.pressure_pa))
+
+
+@dataclass(frozen=True, slots=True)
+class FilmResult:
+    """Outputs of one Reynolds solve (SI units)."""
+
+    force_n: np.ndarray
+    friction_torque_nm: float
+    inlet_flow_m3_s: float
+    side_flow_m3_s: float
+    h_min_m: float
+    h_min_angle_deg: float
+    iterations: int
+
+
+@dataclass(frozen=True, slots=True)
+class PressureField:
+    """Pressure on the film grid: ``p_pa[j, k]`` at ``phi_rad[j]``, ``z_m[k]`` (k=0, -1: ends)."""
+
+    phi_rad: np.ndarray
+    z_m: np.ndarray
+    p_pa: np.ndarray
+    h_m: np.ndarray
+    theta: np.ndarray
+    force_n: np.ndarray
+
+    def to_frame(self):
+        import pandas as pd
+
+        phi, z = np.meshgrid(self.phi_rad, self.z_m, indexing="ij")
+        return pd.DataFrame(
+            {
+                "phi_rad": phi.ravel(),
+                "z_m": z.ravel(),
+                "p_pa": self.p_pa.ravel(),
+                "h_m": self.h_m.ravel(),
+                "theta": self.theta.ravel(),
+            }
+        )
+
+
+@dataclass(frozen=True, slots=True)
+class BearingEquilibrium:
+    """Static equilibrium of a rigid journal: film force + load = 0.
+
+    ``sommerfeld`` is S = μ N L D / W · (R/c)² with N = |speed_hz| (rev/s); the attitude angle
+    is the angle from the load line to the line of centres, positive in the rotation sense.
+    """
+
+    x_m: float
+    y_m: float
+    eccentricity_ratio: float
+    attitude_angle_deg: float
+    sommerfeld: float
+    load_n: tuple[float, float]
+    speed_hz: float
+    force_n: np.ndarray
+    residual_rel: float
+    iterations: int
+    status: str = "ok"
+    message: str = ""
+
+    def to_frame(self):
+        import pandas as pd
+
+        return pd.DataFrame(
+            [
+                {
+                    "speed_hz": self.speed_hz,
+                    "load_x_n": self.load_n[0],
+                    "load_y_n": self.load_n[1],
+                    "journal_x_m": self.x_m,
+                    "journal_y_m": self.y_m,
+                    "eccentricity_ratio": self.eccentricity_ratio,
+                    "attitude_angle_deg": self.attitude_angle_deg,
+                    "sommerfeld": self.sommerfeld,
+                    "residual_rel": self.residual_rel,
+                    "status": self.status,
+                    "message": self.message,
+                }
+            ]
+        )
+
+
+class JournalBearing:
+    """360° plain journal bearing with optional axial grooves, solved on an (φ, z) grid.
+
+    Parameters
+    ----------
+    diameter_m, length_m, clearance_m : journal diameter D, length L, radial clearance c, m.
+    viscosity_pa_s : dynamic viscosity μ (isoviscous), Pa·s.
+    n_circ : grid nodes around the circumference (periodic), >= 12.
+    n_axial : grid intervals along the length (n_axial + 1 node rows including both ends), >= 2.
+    cavitation : "reynolds" (Swift–Stieber, default), "gumbel" (half-Sommerfeld), "jfo"
+        (mass-conserving Elrod–Adams, steady) or "none" (full Sommerfeld).
+    grooves : sequence of :class:`Groove`.
+    """
+
+    def __init__(
+        self,
+        *,
+        diameter_m: float,
+        length_m: float,
+        clearance_m: float,
+        viscosity_pa_s: float,
+        n_circ: int = 72,
+        n_axial: int = 16,
+        cavitation: str = "reynolds",
+        grooves: Iterable[Groove] = (),
+    ) -> None:
+        self.diameter_m = _positive(diameter_m, "diameter_m")
+        self.length_m = _positive(length_m, "length_m")
+        self.clearance_m = _positive(clearance_m, "clearance_m")
+        if not self.clearance_m < 0.5 * self.diameter_m:
+            raise InputError(
+                f"clearance_m: expected 0 < clearance_m < diameter_m/2 = {0.5 * self.diameter_m},"
+                f" got {self.clearance_m}"
+            )
+        self.viscosity_pa_s = _positive(viscosity_pa_s, "viscosity_pa_s")
+        self.n_circ = _integer(n_circ, "n_circ", 12)
+        self.n_axial = _integer(n_axial, "n_axial", 2)
+        if cavitation not in CAVITATION_MODELS:
+            raise InputError(f"cavitation: expected one of {CAVITATION_MODELS}, got {cavitation!r}")
+        self.cavitation = cavitation
+        gs = tuple(grooves)
+        for i, g in enumerate(gs):
+            if not isinstance(g, Groove):
+                raise InputError(f"grooves[{i}]: expected a rotordyn.Groove, got {g!r}")
+        self.grooves = gs
+        self._local = threading.local()
+
+    # -- plumbing ------------------------------------------------------------------------
+    def _params(self) -> dict:
+        return dict(
+            diameter_m=self.diameter_m,
+            length_m=self.length_m,
+            clearance_m=self.clearance_m,
+            viscosity_pa_s=self.viscosity_pa_s,
+            n_circ=self.n_circ,
+            n_axial=self.n_axial,
+            cavitation=self.cavitation,
+            grooves=self.grooves,
+        )
+
+    def __getstate__(self) -> dict:
+        return self._params()
+
+    def __setstate__(self, state: dict) -> None:
+        self.__init__(**state)
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, JournalBearing) and self._params() == other._params()
+
+    def __hash__(self) -> int:
+        return hash(tuple(self._params().items()))
+
+    def __repr__(self) -> str:
+        args = ", ".join(f"{k}={v!r}" for k, v in self._params().items())
+        return f"JournalBearing({args})"
+
+    def to_core(self) -> tuple[_core.JournalBearingGeometry, _core.FilmGrid]:
+        """The C++ geometry and grid structs."""
+        g = _core.JournalBearingGeometry()
+        g.diameter_m = self.diameter_m
+        g.length_m = self.length_m
+        g.clearance_m = self.clearance_m
+        g.viscosity_pa_s = self.viscosity_pa_s
+        g.grooves = [gr.to_core() for gr in self.grooves]
+        return g, _core.FilmGrid(self.n_circ, self.n_axial)
+
+    def solver(self) -> _core.ReynoldsSolver:
+        """This thread's C++ solver (built on first use: pattern analysis, warm-start state)."""
+        s = getattr(self._local, "solver", None)
+        if s is None:
+            g, grid = self.to_core()
+            s = _core.ReynoldsSolver(g, grid, self.cavitation)
+            self._local.solver = s
+        return s
+
+    def _position(self, x_m, y_m) -> tuple[float, float]:
+        x = _finite(x_m, "x_m")
+        y = _finite(y_m, "y_m")
+        eps = math.hypot(x, y) / self.clearance_m
+        if not eps < 1.0:
+            raise InputError(
+                f"eccentricity ratio sqrt(x_m^2 + y_m^2)/clearance_m: expected < 1, got {eps:.6g}"
+            )
+        return x, y
+
+    # -- single operating point ----------------------------------------------------------
+    def forces(
+        self, *, x_m: float, y_m: float, speed_hz: float, vx_m_s: float = 0.0, vy_m_s: float = 0.0
+    ) -> np.ndarray:
+        """Film force ``[Fx, Fy]`` on the journal, N (rigid journal at (x, y) moving at (vx, vy))."""
+        x, y = self._position(x_m, y_m)
+        w = TWO_PI * _finite(speed_hz, "speed_hz")
+        vx, vy = _finite(vx_m_s, "vx_m_s"), _finite(vy_m_s, "vy_m_s")
+        return np.asarray(self.solver().force(x, y, vx, vy, w), dtype=float)
+
+    def solve(
+        self, *, x_m: float, y_m: float, speed_hz: float, vx_m_s: float = 0.0, vy_m_s: float = 0.0
+    ) -> FilmResult:
+        """Every scalar output of one solve: force, friction torque, flows, minimum film."""
+        x, y = self._position(x_m, y_m)
+        w = TWO_PI * _finite(speed_hz, "speed_hz")
+        r = self.solver().rigid(x, y, _finite(vx_m_s, "vx_m_s"), _finite(vy_m_s, "vy_m_s"), w)
+        return FilmResult(
+            force_n=np.asarray(r.force_n, dtype=float),
+            friction_torque_nm=float(r.friction_torque_nm),
+            inlet_flow_m3_s=float(r.inlet_flow_m3_s),
+            side_flow_m3_s=float(r.side_flow_m3_s),
+            h_min_m=float(r.h_min_m),
+            h_min_angle_deg=float(r.h_min_angle_deg),
+            iterations=int(r.iterations),
+        )
+
+    def pressure(
+        self, *, x_m: float, y_m: float, speed_hz: float, vx_m_s: float = 0.0, vy_m_s: float = 0.0
+    ) -> PressureField:
+        """Pressure field and its grid, shapes (n_circ,), (n_axial+1,), (n_circ, n_axial+1)."""
+        x, y = self._position(x_m, y_m)
+        w = TWO_PI * _finite(speed_hz, "speed_hz")
+        s = self.solver()
+        r = s.rigid(x, y, _finite(vx_m_s, "vx_m_s"), _finite(vy_m_s, "vy_m_s"), w)
+        return PressureField(
+            phi_rad=np.asarray(s.phi_rad),
+            z_m=np.asarray(s.z_m),
+            p_pa=np.array(r.p_pa),
+            h_m=np.array(r.h_m),
+            theta=np.array(r.theta),
+            force_n=np.asarray(r.force_n, dtype=float),
+        )
+
+    def coefficients(
+        self, *, x_m: float, y_m: float, speed_hz: float, method: str = "perturbation",
+        rel_step: float = 1e-6,
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Stiffness K (N/m) and damping C (N·s/m), 2×2, with dF = -K dq - C dq̇ (eq. 18).
+
+        ``method="perturbation"`` differentiates the discrete Reynolds system (one factorisation,
+        four right-hand sides); ``"finite_difference"`` takes central differences of the force
+        with steps ``rel_step·c`` and ``rel_step·c·ω``.
+        """
+        x, y = self._position(x_m, y_m)
+        w = TWO_PI * _finite(speed_hz, "speed_hz")
+        if method == "perturbation":
+            dc = self.solver().coefficients(x, y, w)
+        elif method == "finite_difference":
+            dc = self.solver().coefficients_fd(x, y, w, _positive(rel_step, "rel_step"))
+        else:
+            raise InputError(
+                f"method: expected 'perturbation' or 'finite_difference', got {method!r}"
+            )
+        return np.array(dc.K), np.array(dc.C)
+
+    def static_equilibrium(
+        self,
+        *,
+        load_n: Sequence[float],
+        speed_hz: float,
+        x0_m: float | None = None,
+        y0_m: float | None = None,
+        rtol: float = 1e-10,
+    ) -> BearingEquilibrium:
+        """Journal position where the film force balances the static load ``load_n`` (N).
+
+        Newton iteration with the perturbation Jacobian (in C++), converged to
+        ``|F + load| <= rtol·|load|``.
+        """
+        try:
+            lx, ly = (float(v) for v in load_n)
+        except (TypeError, ValueError):
+            raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}") from None
+        lx, ly = _finite(lx, "load_n[0]"), _finite(ly, "load_n[1]")
+        W = math.hypot(lx, ly)
+        if not W > 0.0:
+            raise InputError("load_n: expected a nonzero load, got (0, 0)")
+        f = _finite(speed_hz, "speed_hz")
+        if f == 0.0:
+            raise InputError("speed_hz: static equilibrium needs a nonzero speed, got 0")
+        x0 = y0 = 0.0
+        if x0_m is not None or y0_m is not None:
+            x0, y0 = self._position(x0_m or 0.0, y0_m or 0.0)
+        e = self.solver().equilibrium(lx, ly, TWO_PI * f, x0, y0, _positive(rtol, "rtol"))
+        x, y = float(e.x_m), float(e.y_m)
+        eps = math.hypot(x, y) / self.clearance_m
+        # attitude: angle from the load direction to the line of centres, + with the rotation
+        dx, dy = lx / W, ly / W
+        att = math.degrees(math.atan2(dx * y - dy * x, dx * x + dy * y))
+        if f < 0:
+            att = -att
+        R = 0.5 * self.diameter_m
+        S = (
+            self.viscosity_pa_s * abs(f) * self.length_m * self.diameter_m / W
+            * (R / self.clearance_m) ** 2
+        )
+        return BearingEquilibrium(
+            x_m=x,
+            y_m=y,
+            eccentricity_ratio=eps,
+            attitude_angle_deg=att,
+            sommerfeld=S,
+            load_n=(lx, ly),
+            speed_hz=f,
+            force_n=np.asarray(e.force_n, dtype=float),
+            residual_rel=float(e.residual_rel),
+            iterations=int(e.iterations),
+        )
+
+    # -- batches -------------------------------------------------------------------------
+    def forces_batch(self, *, x_m, y_m, speed_hz, vx_m_s=0.0, vy_m_s=0.0) -> np.ndarray:
+        """Forces (n, 2) for broadcast arrays of states, in one C++ call (GIL released)."""
+        x, y, f, vx, vy = np.broadcast_arrays(
+            *(np.asarray(a, dtype=float) for a in (x_m, y_m, speed_hz, vx_m_s, vy_m_s))
+        )
+        states = np.ascontiguousarray(np.stack([x.ravel(), y.ravel(), vx.ravel(), vy.ravel()], 1))
+        if not np.all(np.isfinite(states)) or not np.all(np.isfinite(f)):
+            raise InputError("x_m, y_m, vx_m_s, vy_m_s, speed_hz: expected finite values")
+        eps = np.hypot(states[:, 0], states[:, 1]) / self.clearance_m
+        if np.any(eps >= 1.0):
+            raise InputError(
+                f"eccentricity ratio: expected < 1 at every point, got max {eps.max():.6g}"
+            )
+        return np.asarray(self.solver().batch_forces(states, TWO_PI * f.ravel()))
+
+    def coefficients_batch(self, *, x_m, y_m, speed_hz) -> dict[str, np.ndarray]:
+        """Forces (n, 2), K (n, 2, 2) and C (n, 2, 2) by perturbation, in one C++ call."""
+        x, y, f = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (x_m, y_m, speed_hz)))
+        pos = np.ascontiguousarray(np.stack([x.ravel(), y.ravel()], 1))
+        if not np.all(np.isfinite(pos)) or not np.all(np.isfinite(f)):
+            raise InputError("x_m, y_m, speed_hz: expected finite values")
+        eps = np.hypot(pos[:, 0], pos[:, 1]) / self.clearance_m
+        if np.any(eps >= 1.0):
+            raise InputError(
+                f"eccentricity ratio: expected < 1 at every point, got max {eps.max():.6g}"
+            )
+        out = np.asarray(self.solver().batch_coefficients(pos, TWO_PI * f.ravel()))
+        return {
+            "force_n": out[:, 0:2],
+            "K": out[:, 2:6].reshape(-1, 2, 2),
+            "C": out[:, 6:10].reshape(-1, 2, 2),
+        }
+
+
+__all__ = [
+    "CAVITATION_MODELS",
+    "Groove",
+    "JournalBearing",
+    "FilmResult",
+    "PressureField",
+    "BearingEquilibrium",
+]
