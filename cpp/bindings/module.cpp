@@ -9,4 +9,5 @@ PYBIND11_MODULE(_core, m) {
   bind_rotor(m);
   bind_modal(m);
   bind_reynolds(m);
+  bind_system(m);
 }

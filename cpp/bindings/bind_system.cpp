@@ -1,0 +1,82 @@
+// Multi-bearing system: model struct, solver (film forces, linearisation, equilibrium).
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "rotordyn/system.hpp"
+
+namespace rotordyn::py_bind {
+
+void bind_system(py::module_& m) {
+  py::class_<FilmCoupling>(m, "FilmCoupling", "One fluid film coupling system coordinates.")
+      .def(py::init<>())
+      .def_readwrite("name", &FilmCoupling::name)
+      .def_readwrite("geometry", &FilmCoupling::geometry)
+      .def_readwrite("grid", &FilmCoupling::grid)
+      .def_property(
+          "cavitation", [](const FilmCoupling& f) { return std::string(cavitation_name(f.cavitation)); },
+          [](FilmCoupling& f, const std::string& s) { f.cavitation = parse_cavitation(s); })
+      .def_readwrite("coords", &FilmCoupling::coords)
+      .def_readwrite("shape", &FilmCoupling::shape);
+
+  py::class_<SystemModel>(m, "SystemModel", "M, K, C, G, loads and films of eq. 12 (SI).")
+      .def(py::init<>())
+      .def_readwrite("M", &SystemModel::M)
+      .def_readwrite("K", &SystemModel::K)
+      .def_readwrite("C", &SystemModel::C)
+      .def_readwrite("G", &SystemModel::G)
+      .def_readwrite("Q", &SystemModel::Q)
+      .def_readwrite("chamber", &SystemModel::chamber)
+      .def_readwrite("films", &SystemModel::films)
+      .def("validate", &SystemModel::validate);
+
+  py::class_<EquilibriumOptions>(m, "EquilibriumOptions")
+      .def(py::init<>())
+      .def_property(
+          "method",
+          [](const EquilibriumOptions& o) {
+            return std::string(o.method == EquilibriumMethod::Newton ? "newton" : "successive");
+          },
+          [](EquilibriumOptions& o, const std::string& s) { o.method = parse_equilibrium_method(s); })
+      .def_readwrite("tol", &EquilibriumOptions::tol)
+      .def_readwrite("max_iter", &EquilibriumOptions::max_iter)
+      .def_readwrite("pm", &EquilibriumOptions::pm)
+      .def_readwrite("contact_fraction", &EquilibriumOptions::contact_fraction);
+
+  py::class_<EquilibriumResult>(m, "EquilibriumResult")
+      .def_readonly("r", &EquilibriumResult::r)
+      .def_readonly("film_force", &EquilibriumResult::film_force)
+      .def_readonly("h_min", &EquilibriumResult::h_min)
+      .def_readonly("h_min_angle_deg", &EquilibriumResult::h_min_angle_deg)
+      .def_readonly("iterations", &EquilibriumResult::iterations)
+      .def_readonly("reynolds_solves", &EquilibriumResult::reynolds_solves)
+      .def_readonly("residual", &EquilibriumResult::residual)
+      .def_readonly("load_scale", &EquilibriumResult::load_scale)
+      .def_readonly("status", &EquilibriumResult::status)
+      .def_readonly("message", &EquilibriumResult::message);
+
+  py::class_<Linearization>(m, "Linearization")
+      .def_readonly("KH", &Linearization::KH)
+      .def_readonly("DH", &Linearization::DH)
+      .def_readonly("film_force", &Linearization::film_force);
+
+  using gil = py::call_guard<py::gil_scoped_release>;
+  py::class_<SystemSolver>(m, "SystemSolver",
+                           "Film forces, linearisation and equilibrium of a SystemModel. "
+                           "One per thread.")
+      .def(py::init<SystemModel>(), py::arg("model"))
+      .def_property_readonly("model", &SystemSolver::model)
+      .def("film_forces", &SystemSolver::film_forces, py::arg("r"), py::arg("rdot"),
+           py::arg("omega"), gil())
+      .def("linearize", &SystemSolver::linearize, py::arg("r"), py::arg("rdot"), py::arg("omega"),
+           gil())
+      .def("linearize_fd", &SystemSolver::linearize_fd, py::arg("r"), py::arg("omega"),
+           py::arg("rel_step") = 1e-5, gil())
+      .def("equilibrium", &SystemSolver::equilibrium, py::arg("omega"),
+           py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"), py::arg("options"), gil())
+      .def_property_readonly("reynolds_solves", &SystemSolver::reynolds_solves)
+      .def_property_readonly("last_h_min", &SystemSolver::last_h_min)
+      .def("last_pressure", &SystemSolver::last_pressure, py::arg("film"));
+}
+
+}  // namespace rotordyn::py_bind

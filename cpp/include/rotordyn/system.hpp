@@ -1,0 +1,114 @@
+// The multi-bearing system of the paper (eq. 12-13): rotor (condensed) and flexible-sleeve
+// coordinates r, coupled through any number of fluid films.
+//
+//   M r̈ + (C + Ω G) ṙ + K r = H(Ω, r, ṙ) + Q + p_c·c_s + F − K a_r                (eq. 12)
+//
+// Each film couples a few coordinates of r: the journal's (x, y) and, for an active bearing,
+// the sleeve's master coordinates. The film thickness is affine in them,
+//   h(φ, z) = c + Σ_k S(φ, k) r_coords[k]     (S = −cos φ, −sin φ for the journal; −ψ_j(φ)
+//                                             for the sleeve's inward modes, eq. 3-5),
+// so the generalised film force on coordinate k is, by virtual work, H_k = ∫∫ p S(φ, k) dA.
+#pragma once
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rotordyn/reynolds.hpp"
+
+namespace rotordyn {
+
+/// One fluid-film bearing in the system.
+struct FilmCoupling {
+  std::string name;
+  JournalBearingGeometry geometry;
+  FilmGrid grid;
+  Cavitation cavitation = Cavitation::reynolds;
+  std::vector<int> coords;  ///< indices into r: journal x, journal y, then sleeve coordinates
+  RowMatrixXd shape;        ///< (n_circ, n_coords): ∂h/∂r_k at the grid angles, m/m
+};
+
+/// Linear matrices, loads and films of the system (SI). n = total coordinates.
+struct SystemModel {
+  Eigen::MatrixXd M, K, C, G;  ///< (n, n); G per unit spin speed (rad/s)
+  Eigen::VectorXd Q;           ///< (n,) static load (gravity), N
+  Eigen::VectorXd chamber;     ///< (n,) chamber force per unit chamber pressure, N/Pa
+  std::vector<FilmCoupling> films;
+  Eigen::Index n() const { return M.rows(); }
+  void validate() const;  ///< shapes and indices; InputError naming the field
+};
+
+enum class EquilibriumMethod { Newton, Successive };
+EquilibriumMethod parse_equilibrium_method(const std::string& name);
+
+struct EquilibriumOptions {
+  EquilibriumMethod method = EquilibriumMethod::Newton;
+  double tol = 1e-10;          ///< residual tolerance relative to the load scale
+  int max_iter = 100;          ///< Newton iterations (successive: 50× this)
+  double pm = 1.0;             ///< P_m of eq. 16 (successive substitution)
+  double contact_fraction = 0.02;  ///< h_min below this fraction of c → status "contact"
+};
+
+struct EquilibriumResult {
+  Eigen::VectorXd r;           ///< (n,) equilibrium coordinates (relative to the housings)
+  Eigen::VectorXd film_force;  ///< (n,) H at the equilibrium
+  std::vector<double> h_min;   ///< per film, m
+  std::vector<double> h_min_angle_deg;
+  int iterations = 0;
+  int reynolds_solves = 0;
+  double residual = 0.0;       ///< ‖K(r + a) − H − Q − p_c c_s‖∞ / load scale
+  double load_scale = 0.0;     ///< N
+  std::string status = "ok";   ///< ok | not_converged | contact
+  std::string message;
+};
+
+struct Linearization {
+  Eigen::MatrixXd KH, DH;      ///< (n, n) film stiffness and damping, eq. 18: ΔH = −K_H Δr − D_H Δṙ
+  Eigen::VectorXd film_force;  ///< (n,) H at the operating point
+};
+
+/// Owns one Reynolds solver per film (factorisations and warm-start active sets). Not
+/// thread-safe: use one per thread.
+class SystemSolver {
+ public:
+  explicit SystemSolver(SystemModel model);
+  ~SystemSolver();
+  SystemSolver(SystemSolver&&) noexcept;
+  SystemSolver& operator=(SystemSolver&&) noexcept;
+
+  const SystemModel& model() const { return model_; }
+
+  /// H(Ω, r, ṙ) (n,). ContactError if a film thickness is ≤ 0.
+  Eigen::VectorXd film_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
+                              double omega);
+  /// Film forces and their linearisation about (r, ṙ) by the perturbation method: each film
+  /// is solved once and its linearised Reynolds equation reuses the factorisation.
+  Linearization linearize(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot, double omega);
+  /// The same by central finite differences of H (paper eq. 20, central form); steps
+  /// rel_step·c on positions and rel_step·c·|ω| on velocities.
+  Linearization linearize_fd(const Eigen::VectorXd& r, double omega, double rel_step = 1e-5);
+
+  /// Static equilibrium (eq. 14): K (r + a) = H(Ω, r, 0) + Q + p_c c_s.
+  /// a: (n,) configuration (housing offsets at the journal coordinates). r0: start (n,) or
+  /// empty for the concentric, undeformed state.
+  EquilibriumResult equilibrium(double omega, double chamber_pressure, const Eigen::VectorXd& a,
+                                const Eigen::VectorXd& r0, const EquilibriumOptions& opt);
+
+  int reynolds_solves() const { return solves_; }
+  /// Minimum film thickness of each film at the last film_forces/linearize call.
+  const std::vector<double>& last_h_min() const { return h_min_; }
+  const std::vector<double>& last_h_min_angle_deg() const { return h_min_angle_; }
+  /// Pressure field of film i at the last call, (n_circ, n_axial + 1).
+  const RowMatrixXd& last_pressure(int film) const;
+
+ private:
+  struct Film;
+  SystemModel model_;
+  std::vector<std::unique_ptr<Film>> films_;
+  std::vector<double> h_min_, h_min_angle_;
+  int solves_ = 0;
+  void solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot, double omega);
+};
+
+}  // namespace rotordyn

@@ -1,0 +1,171 @@
+// Static equilibrium of the multi-bearing system (paper eq. 14-16): Newton with line search
+// (Jacobian K + K_H by the perturbation method) and the paper's successive substitution with
+// the relaxation coefficient P_m.
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "rotordyn/errors.hpp"
+#include "rotordyn/system.hpp"
+
+namespace rotordyn {
+
+EquilibriumMethod parse_equilibrium_method(const std::string& name) {
+  if (name == "newton") return EquilibriumMethod::Newton;
+  if (name == "successive") return EquilibriumMethod::Successive;
+  throw InputError("method: expected 'newton' or 'successive', got '" + name + "'");
+}
+
+namespace {
+double inf_norm(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
+}  // namespace
+
+EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen::VectorXd& a,
+                                            const Eigen::VectorXd& r0,
+                                            const EquilibriumOptions& opt) {
+  const Eigen::Index n = model_.n();
+  require(std::isfinite(omega), "speed: expected a finite value");
+  require(std::isfinite(pc) && pc >= 0, "chamber_pressure_pa: expected a finite value >= 0");
+  require(a.size() == n && a.allFinite(), shape_msg("a", n, 1, a.size(), 1));
+  require(r0.size() == 0 || (r0.size() == n && r0.allFinite()),
+          shape_msg("r0", n, 1, r0.size(), 1));
+  require(opt.tol > 0 && opt.max_iter > 0, "options: tol and max_iter must be positive");
+  require(opt.pm >= 0, "pm: expected P_m >= 0");
+
+  const int solves0 = solves_;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd Ka = model_.K * a;
+  const Eigen::VectorXd F = model_.Q + pc * model_.chamber - Ka;  // eq. 14 right side less H
+  EquilibriumResult out;
+  out.load_scale = std::max({inf_norm(model_.Q), inf_norm(Ka), inf_norm(pc * model_.chamber),
+                             1e-12});
+  Eigen::VectorXd r = r0.size() ? r0 : zero;
+
+  auto residual = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& H) {
+    return Eigen::VectorXd(model_.K * rr - H - F);
+  };
+  auto finish = [&](Eigen::VectorXd rr, const Eigen::VectorXd& H, double res) {
+    out.r = std::move(rr);
+    out.film_force = H;
+    out.residual = res;
+    out.h_min = h_min_;
+    out.h_min_angle_deg = h_min_angle_;
+    out.reynolds_solves = solves_ - solves0;
+    if (out.status == "ok") {
+      for (std::size_t i = 0; i < films_.size(); ++i) {
+        const double c = model_.films[i].geometry.clearance_m;
+        if (h_min_[i] < opt.contact_fraction * c) {
+          std::ostringstream os;
+          os << "film '" << model_.films[i].name << "': minimum film thickness " << h_min_[i]
+             << " m is below " << opt.contact_fraction << " c";
+          out.status = "contact";
+          out.message = os.str();
+        }
+      }
+    }
+    return out;
+  };
+
+  if (opt.method == EquilibriumMethod::Newton) {
+    Linearization lin;
+    try {
+      lin = linearize(r, zero, omega);
+    } catch (const ContactError& e) {
+      out.status = "contact";
+      out.message = std::string("starting point: ") + e.what();
+      return finish(r, zero, NAN);
+    }
+    Eigen::VectorXd R = residual(r, lin.film_force);
+    double res = inf_norm(R) / out.load_scale;
+    for (out.iterations = 0; out.iterations < opt.max_iter; ++out.iterations) {
+      if (res < opt.tol) return finish(r, lin.film_force, res);
+      const Eigen::MatrixXd J = model_.K + lin.KH;
+      const Eigen::VectorXd dr = J.partialPivLu().solve(-R);
+      if (!dr.allFinite()) {
+        out.status = "not_converged";
+        out.message = "Newton: singular Jacobian K + K_H";
+        return finish(r, lin.film_force, res);
+      }
+      // Backtracking line search on ‖R‖∞, stepping back from contact.
+      double t = 1.0;
+      bool accepted = false;
+      Eigen::VectorXd r_try;
+      for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
+        r_try = r + t * dr;
+        try {
+          lin = linearize(r_try, zero, omega);
+        } catch (const ContactError&) {
+          continue;
+        }
+        const Eigen::VectorXd R_try = residual(r_try, lin.film_force);
+        const double res_try = inf_norm(R_try) / out.load_scale;
+        if (res_try <= (1.0 - 1e-4 * t) * res || res_try < opt.tol) {
+          R = R_try;
+          res = res_try;
+          accepted = true;
+          break;
+        }
+      }
+      if (!accepted) {
+        lin = linearize(r, zero, omega);
+        out.status = "not_converged";
+        out.message = "Newton: line search failed (residual " + std::to_string(res) + ")";
+        return finish(r, lin.film_force, res);
+      }
+      r = r_try;
+    }
+    out.status = res < opt.tol ? "ok" : "not_converged";
+    if (out.status != "ok")
+      out.message = "Newton: no convergence in " + std::to_string(opt.max_iter) + " iterations";
+    return finish(r, lin.film_force, res);
+  }
+
+  // Successive substitution, eq. 16: (1 + P_m) K r_{i+1} = P_m K r_i + H(r_i) + F.
+  Eigen::PartialPivLU<Eigen::MatrixXd> Klu(model_.K);
+  const double rc = 1.0 / (model_.K.cwiseAbs().rowwise().sum().maxCoeff() *
+                           Klu.inverse().cwiseAbs().rowwise().sum().maxCoeff());
+  require(std::isfinite(rc) && rc > 1e-14,
+          "method: successive substitution needs a non-singular structural stiffness K "
+          "(rigid or linear supports); use method='newton'");
+  Eigen::VectorXd H;
+  try {
+    H = film_forces(r, zero, omega);
+  } catch (const ContactError& e) {
+    out.status = "contact";
+    out.message = std::string("starting point: ") + e.what();
+    return finish(r, zero, NAN);
+  }
+  double res = inf_norm(residual(r, H)) / out.load_scale;
+  const int max_it = 50 * opt.max_iter;
+  for (out.iterations = 0; out.iterations < max_it; ++out.iterations) {
+    if (res < opt.tol) return finish(r, H, res);
+    const Eigen::VectorXd target = Klu.solve(H + F);
+    Eigen::VectorXd step = (target - r) / (1.0 + opt.pm);
+    bool ok = false;
+    for (int ls = 0; ls < 40; ++ls, step *= 0.5) {
+      try {
+        H = film_forces(r + step, zero, omega);
+        ok = true;
+        break;
+      } catch (const ContactError&) {
+      }
+    }
+    if (!ok) {
+      out.status = "contact";
+      out.message = "successive substitution: every step ends in contact";
+      H = film_forces(r, zero, omega);
+      return finish(r, H, res);
+    }
+    r += step;
+    res = inf_norm(residual(r, H)) / out.load_scale;
+    if (!std::isfinite(res)) break;
+  }
+  out.status = res < opt.tol ? "ok" : "not_converged";
+  if (out.status != "ok")
+    out.message = "successive substitution: no convergence in " + std::to_string(max_it) +
+                  " iterations (try a larger P_m)";
+  return finish(r, H, res);
+}
+
+}  // namespace rotordyn

@@ -1,0 +1,168 @@
+// Film forces of the multi-bearing system and their linearisation (paper eq. 12-13, 17-20).
+#include "rotordyn/system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "rotordyn/errors.hpp"
+
+namespace rotordyn {
+
+struct SystemSolver::Film {
+  ReynoldsSolver solver;
+  Eigen::VectorXd wz;  ///< trapezoid weights along z times R dφ dz, (n_axial + 1,)
+  RowMatrixXd h, dhdt, p;
+  Film(const FilmCoupling& f)
+      : solver(f.geometry, f.grid, f.cavitation),
+        h(f.grid.n_circ, f.grid.n_axial + 1),
+        dhdt(f.grid.n_circ, f.grid.n_axial + 1) {
+    const int K1 = f.grid.n_axial + 1;
+    const double R = 0.5 * f.geometry.diameter_m;
+    const double dphi = 2.0 * M_PI / f.grid.n_circ, dz = f.geometry.length_m / f.grid.n_axial;
+    wz = Eigen::VectorXd::Constant(K1, R * dphi * dz);
+    wz(0) *= 0.5;
+    wz(K1 - 1) *= 0.5;
+  }
+  /// ∫∫ p S(·, k) dA for every column k of S: (n_coords,).
+  Eigen::VectorXd integrate(const RowMatrixXd& pr, const RowMatrixXd& S) const {
+    const Eigen::VectorXd g = pr * wz;  // (n_circ,)
+    return S.transpose() * g;
+  }
+};
+
+void SystemModel::validate() const {
+  const Eigen::Index nn = M.rows();
+  require(nn > 0, "system: expected at least one coordinate");
+  require(M.cols() == nn, shape_msg("M", nn, nn, M.rows(), M.cols()));
+  require(K.rows() == nn && K.cols() == nn, shape_msg("K", nn, nn, K.rows(), K.cols()));
+  require(C.rows() == nn && C.cols() == nn, shape_msg("C", nn, nn, C.rows(), C.cols()));
+  require(G.rows() == nn && G.cols() == nn, shape_msg("G", nn, nn, G.rows(), G.cols()));
+  require(Q.size() == nn, shape_msg("Q", nn, 1, Q.size(), 1));
+  require(chamber.size() == nn, shape_msg("chamber", nn, 1, chamber.size(), 1));
+  for (std::size_t i = 0; i < films.size(); ++i) {
+    const auto& f = films[i];
+    const std::string w = "films[" + std::to_string(i) + "]";
+    f.geometry.validate();
+    f.grid.validate();
+    require(!f.coords.empty(), w + ".coords: expected at least the journal's x and y");
+    for (int c : f.coords)
+      require(c >= 0 && c < nn, w + ".coords: expected indices in [0, " + std::to_string(nn - 1) +
+                                    "], got " + std::to_string(c));
+    require(f.shape.rows() == f.grid.n_circ && f.shape.cols() == static_cast<long>(f.coords.size()),
+            shape_msg(w + ".shape", f.grid.n_circ, static_cast<long>(f.coords.size()),
+                      f.shape.rows(), f.shape.cols()));
+  }
+}
+
+SystemSolver::SystemSolver(SystemModel model) : model_(std::move(model)) {
+  model_.validate();
+  for (const auto& f : model_.films) films_.push_back(std::make_unique<Film>(f));
+  h_min_.assign(films_.size(), 0.0);
+  h_min_angle_.assign(films_.size(), 0.0);
+}
+SystemSolver::~SystemSolver() = default;
+SystemSolver::SystemSolver(SystemSolver&&) noexcept = default;
+SystemSolver& SystemSolver::operator=(SystemSolver&&) noexcept = default;
+
+const RowMatrixXd& SystemSolver::last_pressure(int film) const {
+  require(film >= 0 && film < static_cast<int>(films_.size()),
+          "film: expected an index in [0, " + std::to_string(films_.size()) + ")");
+  return films_[static_cast<std::size_t>(film)]->p;
+}
+
+void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
+                               double omega) {
+  require(r.size() == model_.n(), shape_msg("r", model_.n(), 1, r.size(), 1));
+  require(rdot.size() == model_.n(), shape_msg("rdot", model_.n(), 1, rdot.size(), 1));
+  for (std::size_t i = 0; i < films_.size(); ++i) {
+    const FilmCoupling& fc = model_.films[i];
+    Film& f = *films_[i];
+    Eigen::VectorXd rc(fc.coords.size()), vc(fc.coords.size());
+    for (std::size_t k = 0; k < fc.coords.size(); ++k) {
+      rc(k) = r(fc.coords[k]);
+      vc(k) = rdot(fc.coords[k]);
+    }
+    const Eigen::VectorXd hphi =
+        Eigen::VectorXd::Constant(fc.grid.n_circ, fc.geometry.clearance_m) + fc.shape * rc;
+    const Eigen::VectorXd vphi = fc.shape * vc;
+    if (!(hphi.minCoeff() > 0.0) || !hphi.allFinite()) {
+      std::ostringstream os;
+      os << "film '" << fc.name << "': contact, the film thickness reaches " << hphi.minCoeff()
+         << " m (clearance " << fc.geometry.clearance_m << " m)";
+      throw ContactError(os.str());
+    }
+    f.h = hphi.replicate(1, fc.grid.n_axial + 1);
+    f.dhdt = vphi.replicate(1, fc.grid.n_axial + 1);
+    const FilmSolution& s = f.solver.solve(f.h, f.dhdt, omega);
+    ++solves_;
+    f.p = s.p_pa;
+    h_min_[i] = s.h_min_m;
+    h_min_angle_[i] = s.h_min_angle_deg;
+  }
+}
+
+Eigen::VectorXd SystemSolver::film_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
+                                          double omega) {
+  solve_films(r, rdot, omega);
+  Eigen::VectorXd H = Eigen::VectorXd::Zero(model_.n());
+  for (std::size_t i = 0; i < films_.size(); ++i) {
+    const FilmCoupling& fc = model_.films[i];
+    const Eigen::VectorXd hk = films_[i]->integrate(films_[i]->p, fc.shape);
+    for (std::size_t k = 0; k < fc.coords.size(); ++k) H(fc.coords[k]) += hk(k);
+  }
+  return H;
+}
+
+Linearization SystemSolver::linearize(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
+                                      double omega) {
+  Linearization out;
+  out.film_force = film_forces(r, rdot, omega);
+  const Eigen::Index n = model_.n();
+  out.KH = Eigen::MatrixXd::Zero(n, n);
+  out.DH = Eigen::MatrixXd::Zero(n, n);
+  for (std::size_t i = 0; i < films_.size(); ++i) {
+    const FilmCoupling& fc = model_.films[i];
+    Film& f = *films_[i];
+    const int K1 = fc.grid.n_axial + 1;
+    const RowMatrixXd zero = RowMatrixXd::Zero(fc.grid.n_circ, K1);
+    for (std::size_t j = 0; j < fc.coords.size(); ++j) {
+      const RowMatrixXd dh = fc.shape.col(static_cast<Eigen::Index>(j)).replicate(1, K1);
+      const Eigen::VectorXd dk = -f.integrate(f.solver.linearize(dh, zero), fc.shape);
+      const Eigen::VectorXd dd = -f.integrate(f.solver.linearize(zero, dh), fc.shape);
+      for (std::size_t k = 0; k < fc.coords.size(); ++k) {
+        out.KH(fc.coords[k], fc.coords[j]) += dk(k);
+        out.DH(fc.coords[k], fc.coords[j]) += dd(k);
+      }
+    }
+  }
+  return out;
+}
+
+Linearization SystemSolver::linearize_fd(const Eigen::VectorXd& r, double omega,
+                                         double rel_step) {
+  require(rel_step > 0 && rel_step < 0.1, "rel_step: expected a value in (0, 0.1)");
+  const Eigen::Index n = model_.n();
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  Linearization out;
+  out.film_force = film_forces(r, zero, omega);
+  out.KH = Eigen::MatrixXd::Zero(n, n);
+  out.DH = Eigen::MatrixXd::Zero(n, n);
+  const double wref = std::abs(omega) > 0 ? std::abs(omega) : 1.0;
+  for (const FilmCoupling& fc : model_.films) {
+    for (int j : fc.coords) {
+      if (out.KH.col(j).cwiseAbs().sum() != 0.0) continue;  // already done (shared coordinate)
+      const double dx = rel_step * fc.geometry.clearance_m, dv = dx * wref;
+      Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
+      e(j) = dx;
+      out.KH.col(j) = -(film_forces(r + e, zero, omega) - film_forces(r - e, zero, omega)) /
+                      (2 * dx);
+      e(j) = dv;
+      out.DH.col(j) = -(film_forces(r, e, omega) - film_forces(r, -e, omega)) / (2 * dv);
+    }
+  }
+  film_forces(r, zero, omega);  // leave the solvers at the operating point
+  return out;
+}
+
+}  // namespace rotordyn
