@@ -12,4 +12,5 @@ void bind_errors(py::module_& m);
 void bind_info(py::module_& m);
 void bind_rotor(py::module_& m);
 void bind_modal(py::module_& m);
+void bind_sleeve(py::module_& m);
 }  // namespace rotordyn::py_bind

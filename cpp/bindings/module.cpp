@@ -8,4 +8,5 @@ PYBIND11_MODULE(_core, m) {
   bind_info(m);
   bind_rotor(m);
   bind_modal(m);
+  bind_sleeve(m);
 }

@@ -129,7 +129,8 @@ TEST_CASE("sleeve ring: free ring in-plane bending frequencies equal Hoppe (n = 
   // Guards element + closed-ring assembly against Hoppe's inextensional ring (Blevins,
   // Formulas for Natural Frequency and Mode Shape, ring in-plane): ω_n = n(n²−1)/√(n²+1)
   // √(EI/(m R⁴)). With the element's extension, shear and rotary inertia switched off the
-  // model is Hoppe's; 48 elements converge to ~1e-9 (observed), so 1e-7 is the tolerance.
+  // model is Hoppe's; 48 elements converge to 8e-10, 1.4e-8, 8.9e-8 for n = 2, 3, 4
+  // (observed, error falling as h⁶), so 3e-7 is the tolerance.
   // With everything on and R/d = 20 the frequencies fall slightly below Hoppe (thick-ring
   // corrections of order (d/R)² n²), which the second part bounds to (0, 1 %).
   const double R = 0.1, d = 0.005;
@@ -150,17 +151,18 @@ TEST_CASE("sleeve ring: free ring in-plane bending frequencies equal Hoppe (n = 
         n * (n * n - 1.0) / std::sqrt(n * n + 1.0) * std::sqrt(EI / (m * R * R * R * R)) /
         (2 * kPi);
     const int i = 3 + 2 * (n - 2);
-    CHECK_CLOSE(f(i), hoppe, 1e-7, 0);
-    CHECK_CLOSE(f(i + 1), hoppe, 1e-7, 0);  // each ring mode is a double (sin/cos) pair
+    CHECK_CLOSE(f(i), hoppe, 3e-7, 0);
+    CHECK_CLOSE(f(i + 1), hoppe, 3e-7, 0);  // each ring mode is a double (sin/cos) pair
     CHECK(g(i) < hoppe && g(i) > 0.99 * hoppe);
   }
 }
 
 TEST_CASE("sleeve arc: straight-cantilever limit λ1 = 1.8751², λ2 = 4.6941² as ψ → 0") {
   // Guards the element as the arc flattens (REFERENCES.md; Blevins, cantilever): an arc of
-  // fixed length L = 80 mm and ψ = 0.2° is an Euler-Bernoulli cantilever to O(ψ²) ≈ 1e-5.
-  // 20 elements converge the first two modes to better than 1e-7 (observed), so the tolerance
-  // is 2e-5; a 60° arc is > 1 % off, which shows the check can tell the difference.
+  // fixed length L = 80 mm and ψ = 0.2° is an Euler-Bernoulli cantilever up to an O(ψ²)
+  // curvature effect (2.5e-7 for mode 1 at 0.2°); with the 20-element discretization the
+  // observed total is 3.0e-7 and 6.1e-7 for modes 1 and 2, so the tolerance is 2e-6; a 60° arc
+  // is 2.2 % off, which shows the check can tell the difference.
   const double L = 0.08, d = 0.005;
   const CurvedBeamSection s = euler_bernoulli(bronze(d));
   const double EI = s.young * s.width * d * d * d / 12.0, m = s.density * s.width * d;
@@ -171,8 +173,8 @@ TEST_CASE("sleeve arc: straight-cantilever limit λ1 = 1.8751², λ2 = 4.6941² 
     return natural_frequencies_hz(a.M.bottomRightCorner(n, n), a.K.bottomRightCorner(n, n));
   };
   const Eigen::VectorXd f = freqs(0.2 * kPi / 180.0);
-  CHECK_CLOSE(f(0), 1.87510407 * 1.87510407 * scale, 2e-5, 0);
-  CHECK_CLOSE(f(1), 4.69409113 * 4.69409113 * scale, 2e-5, 0);
+  CHECK_CLOSE(f(0), 1.87510407 * 1.87510407 * scale, 2e-6, 0);
+  CHECK_CLOSE(f(1), 4.69409113 * 4.69409113 * scale, 2e-6, 0);
   CHECK(std::abs(freqs(kPi / 3.0)(0) / (1.87510407 * 1.87510407 * scale) - 1.0) > 0.01);
 }
 

@@ -31,3 +31,7 @@ __all__ = [
     "ContactError",
     "SundialsError",
 ]
+
+from rotordyn.sleeve import FlexibleSleeve, SleeveResult, paper_rig_sleeve  # noqa: E402
+
+__all__ += ["FlexibleSleeve", "SleeveResult", "paper_rig_sleeve"]
