@@ -10,4 +10,5 @@ PYBIND11_MODULE(_core, m) {
   bind_modal(m);
   bind_reynolds(m);
   bind_system(m);
+  bind_sleeve(m);
 }

@@ -64,3 +64,7 @@ __all__ = [
     "FilmResult",
     "PressureField",
 ]
+
+from rotordyn.sleeve import FlexibleSleeve, SleeveResult, paper_rig_sleeve  # noqa: E402
+
+__all__ += ["FlexibleSleeve", "SleeveResult", "paper_rig_sleeve"]
