@@ -61,3 +61,18 @@ def test_report_writes_outputs(tmp_path):
     assert "10.43" in p.stdout
     for name in ("rotor_modes.txt", "rotor_modes.json", "rotor_modes.csv", "rotor_mode_shapes.png"):
         assert (tmp_path / name).stat().st_size > 0
+
+
+def test_equilibrium_cli_json_and_negative_config():
+    p = run("equilibrium", "paper-rig", "--speed-hz", "50", "--chamber-pressure-pa", "1.5e5",
+            "--config-ay-m", "-1.85e-3", "--json")
+    assert p.returncode == 0, p.stderr
+    d = json.loads(p.stdout)
+    assert d["status"] == "ok" and d["residual"] < 1e-8
+    b = d["bearings"][0]
+    assert b["config_ay_m"] == -1.85e-3 and abs(b["x_over_c"]) < 1 and len(b["sleeve_m"]) == 3
+
+
+def test_equilibrium_cli_bad_pressure_exits_2():
+    p = run("equilibrium", "paper-rig", "--chamber-pressure-pa", "-5")
+    assert p.returncode == 2 and "chamber_pressure_pa" in p.stderr

@@ -52,6 +52,7 @@ void bind_system(py::module_& m) {
       .def_readonly("reynolds_solves", &EquilibriumResult::reynolds_solves)
       .def_readonly("residual", &EquilibriumResult::residual)
       .def_readonly("load_scale", &EquilibriumResult::load_scale)
+      .def_readonly("pm", &EquilibriumResult::pm)
       .def_readonly("status", &EquilibriumResult::status)
       .def_readonly("message", &EquilibriumResult::message);
 

@@ -1,6 +1,7 @@
 // Static equilibrium of the multi-bearing system (paper eq. 14-16): Newton with line search
 // (Jacobian K + K_H by the perturbation method) and the paper's successive substitution with
 // the relaxation coefficient P_m.
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -31,7 +32,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   require(r0.size() == 0 || (r0.size() == n && r0.allFinite()),
           shape_msg("r0", n, 1, r0.size(), 1));
   require(opt.tol > 0 && opt.max_iter > 0, "options: tol and max_iter must be positive");
-  require(opt.pm >= 0, "pm: expected P_m >= 0");
+  require(std::isfinite(opt.pm), "pm: expected P_m >= 0, or < 0 for automatic");
 
   const int solves0 = solves_;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
@@ -129,19 +130,44 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
           "method: successive substitution needs a non-singular structural stiffness K "
           "(rigid or linear supports); use method='newton'");
   Eigen::VectorXd H;
+  double pm = opt.pm;
   try {
-    H = film_forces(r, zero, omega);
+    if (pm < 0) {
+      // Automatic P_m: the iteration map's Jacobian is (P_m I − K⁻¹K_H)/(1 + P_m); choose
+      // P_m to minimise its spectral radius max|P_m − μ_i|/(1 + P_m) over the eigenvalues μ_i
+      // of K⁻¹K_H at the starting point (golden-section search on log P_m).
+      const Linearization lin = linearize(r, zero, omega);
+      H = lin.film_force;
+      const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(Klu.solve(lin.KH),
+                                                                      false).eigenvalues();
+      auto rho = [&](double lp) {
+        const double p = std::exp(lp);
+        double m = 0;
+        for (Eigen::Index i = 0; i < mu.size(); ++i) m = std::max(m, std::abs(p - mu(i)) / (1 + p));
+        return m;
+      };
+      double a = std::log(1e-3), b = std::log(1e9);
+      const double g = 0.5 * (std::sqrt(5.0) - 1);
+      for (int it = 0; it < 100; ++it) {
+        const double c1 = b - g * (b - a), c2 = a + g * (b - a);
+        if (rho(c1) < rho(c2)) b = c2; else a = c1;
+      }
+      pm = std::exp(0.5 * (a + b));
+    } else {
+      H = film_forces(r, zero, omega);
+    }
   } catch (const ContactError& e) {
     out.status = "contact";
     out.message = std::string("starting point: ") + e.what();
     return finish(r, zero, NAN);
   }
+  out.pm = pm;
   double res = inf_norm(residual(r, H)) / out.load_scale;
-  const int max_it = 50 * opt.max_iter;
+  const int max_it = 500 * opt.max_iter;  // the relaxation converges linearly, slowly
   for (out.iterations = 0; out.iterations < max_it; ++out.iterations) {
     if (res < opt.tol) return finish(r, H, res);
     const Eigen::VectorXd target = Klu.solve(H + F);
-    Eigen::VectorXd step = (target - r) / (1.0 + opt.pm);
+    Eigen::VectorXd step = (target - r) / (1.0 + pm);
     bool ok = false;
     for (int ls = 0; ls < 40; ++ls, step *= 0.5) {
       try {

@@ -12,10 +12,12 @@ from rotordyn.errors import (
     SundialsError,
 )
 from rotordyn.bearing import BearingEquilibrium, FilmResult, Groove, JournalBearing, PressureField
-
+from rotordyn.sleeve import FlexibleSleeve, SleeveResult, paper_rig_sleeve
 from rotordyn.model import (
     STEEL,
+    ActiveJournalBearing,
     Disk,
+    FluidFilmBearing,
     Material,
     Reduction,
     Rotor,
@@ -23,8 +25,8 @@ from rotordyn.model import (
     Support,
     System,
 )
-from rotordyn.analysis import modes, rotor_campbell
-from rotordyn.results import CampbellResult, ModesResult
+from rotordyn.analysis import equilibrium, modes, rotor_campbell
+from rotordyn.results import CampbellResult, EquilibriumResult, ModesResult
 from rotordyn import models
 
 __version__ = "0.1.0"
@@ -40,11 +42,13 @@ def build_info() -> dict[str, str]:
 __all__ = [
     "__version__",
     "build_info",
+    # errors
     "RotordynError",
     "InputError",
     "ConvergenceError",
     "ContactError",
     "SundialsError",
+    # model
     "Material",
     "STEEL",
     "ShaftSection",
@@ -53,18 +57,23 @@ __all__ = [
     "Rotor",
     "Reduction",
     "System",
-    "modes",
-    "rotor_campbell",
-    "ModesResult",
-    "CampbellResult",
+    "FluidFilmBearing",
+    "ActiveJournalBearing",
+    "FlexibleSleeve",
+    "paper_rig_sleeve",
     "models",
+    # journal bearing (standalone film model)
     "JournalBearing",
     "Groove",
     "BearingEquilibrium",
     "FilmResult",
     "PressureField",
+    # analyses and results
+    "modes",
+    "rotor_campbell",
+    "equilibrium",
+    "ModesResult",
+    "CampbellResult",
+    "EquilibriumResult",
+    "SleeveResult",
 ]
-
-from rotordyn.sleeve import FlexibleSleeve, SleeveResult, paper_rig_sleeve  # noqa: E402
-
-__all__ += ["FlexibleSleeve", "SleeveResult", "paper_rig_sleeve"]

@@ -85,6 +85,30 @@ def _cmd_modes(args) -> int:
     return 0
 
 
+# -- equilibrium ------------------------------------------------------------------------
+def _cmd_equilibrium(args) -> int:
+    s = rotordyn.models.load(args.model)
+    e = rotordyn.equilibrium(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
+                             method=args.method, warm_start=False)
+    if args.json:
+        print(_json({
+            "status": e.status, "message": e.message, "method": e.method,
+            "speed_hz": e.speed_hz, "chamber_pressure_pa": e.chamber_pressure_pa,
+            "bearings": [
+                {"name": e.bearing_names[i], "config_ax_m": e.config_ax_m[i],
+                 "config_ay_m": e.config_ay_m[i], "journal_x_m": e.journal_x_m[i],
+                 "journal_y_m": e.journal_y_m[i], "x_over_c": e.x_over_c[i],
+                 "y_over_c": e.y_over_c[i], "h_min_m": e.h_min_m[i],
+                 "sleeve_m": e.sleeve_m.get(i, np.zeros(0))}
+                for i in range(len(e.bearing_names))],
+            "iterations": e.iterations, "reynolds_solves": e.reynolds_solves,
+            "residual": e.residual,
+        }))
+    else:
+        print(e.to_frame().to_string(index=False))
+    return 0 if e.status in ("ok", "contact") else 1
+
+
 # -- report (the main job of `make run`) --------------------------------------------------
 PAPER_ROTOR_HZ = (10.43, 43.04, 106.38)
 
@@ -143,6 +167,16 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=_cmd_modes)
 
+    s = sub.add_parser("equilibrium", help="static equilibrium of the system (eq. 14)")
+    s.add_argument("model", help="TOML path or a built-in name (paper-rig)")
+    s.add_argument("--speed-hz", type=float, default=50.0)
+    s.add_argument("--chamber-pressure-pa", type=float, default=0.0)
+    s.add_argument("--config-ay-m", type=float, default=None,
+                   help="housing offset a_y of the active bearing (default: the model's)")
+    s.add_argument("--method", choices=["newton", "successive"], default="newton")
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=_cmd_equilibrium)
+
     s = sub.add_parser("report", help="the main job: analyses of a model written under --out")
     s.add_argument("model")
     s.add_argument("--out", default="out")
@@ -151,7 +185,28 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+def _join_negative_numbers(argv: list[str]) -> list[str]:
+    """``--flag -1.85e-3`` → ``--flag=-1.85e-3`` (argparse takes "-1.85e-3" for an option)."""
+    out, i = [], 0
+    while i < len(argv):
+        tok = argv[i]
+        if tok.startswith("--") and "=" not in tok and i + 1 < len(argv) and \
+                argv[i + 1].startswith("-"):
+            try:
+                float(argv[i + 1])
+            except ValueError:
+                pass
+            else:
+                out.append(f"{tok}={argv[i + 1]}")
+                i += 2
+                continue
+        out.append(tok)
+        i += 1
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
+    argv = _join_negative_numbers(list(sys.argv[1:] if argv is None else argv))
     try:
         args = build_parser().parse_args(argv)
         return int(args.func(args) or 0)

@@ -45,8 +45,8 @@ EquilibriumMethod parse_equilibrium_method(const std::string& name);
 struct EquilibriumOptions {
   EquilibriumMethod method = EquilibriumMethod::Newton;
   double tol = 1e-10;          ///< residual tolerance relative to the load scale
-  int max_iter = 100;          ///< Newton iterations (successive: 50× this)
-  double pm = 1.0;             ///< P_m of eq. 16 (successive substitution)
+  int max_iter = 100;          ///< Newton iterations (successive: 500× this)
+  double pm = -1.0;            ///< P_m of eq. 16 (successive substitution); < 0: automatic
   double contact_fraction = 0.02;  ///< h_min below this fraction of c → status "contact"
 };
 
@@ -59,6 +59,7 @@ struct EquilibriumResult {
   int reynolds_solves = 0;
   double residual = 0.0;       ///< ‖K(r + a) − H − Q − p_c c_s‖∞ / load scale
   double load_scale = 0.0;     ///< N
+  double pm = 0.0;             ///< P_m used (successive substitution)
   std::string status = "ok";   ///< ok | not_converged | contact
   std::string message;
 };

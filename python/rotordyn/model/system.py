@@ -14,6 +14,7 @@ import scipy.sparse as sp
 from rotordyn import _core
 from rotordyn.errors import InputError
 from rotordyn.model import _validate as v
+from rotordyn.model.bearings import ActiveJournalBearing, FluidFilmBearing
 from rotordyn.model.rotor import STEEL, Material, Rotor, Support
 
 REDUCTION_METHODS = ("none", "guyan", "irs", "craig-bampton")
@@ -51,12 +52,16 @@ class System:
     materials: tuple[Material, ...] = (STEEL,)
     supports: tuple[Support, ...] = ()
     reduction: Reduction = field(default_factory=Reduction)
+    bearings: tuple[FluidFilmBearing | ActiveJournalBearing, ...] = ()
+    gravity_m_s2: float = 9.81
     name: str = ""
     description: str = ""
 
     def __post_init__(self):
         object.__setattr__(self, "materials", tuple(self.materials))
         object.__setattr__(self, "supports", tuple(self.supports))
+        object.__setattr__(self, "bearings", tuple(self.bearings))
+        v.non_negative("gravity_m_s2", self.gravity_m_s2)
         names = [m.name for m in self.materials]
         if len(set(names)) != len(names):
             raise InputError(f"material: names must be unique, got {names}")
@@ -75,6 +80,25 @@ class System:
                 raise InputError(
                     f"reduction.master_stations[{i}]: station {st} has a rigid support; "
                     "its translations are fixed and cannot be masters")
+        seen = set()
+        for i, b in enumerate(self.bearings):
+            where = f"bearing[{i}]"
+            if not isinstance(b, (FluidFilmBearing, ActiveJournalBearing)):
+                raise InputError(f"{where}: expected a FluidFilmBearing or ActiveJournalBearing, "
+                                 f"got {type(b).__name__}")
+            b.check(where, n)
+            if b.station in seen:
+                raise InputError(f"{where}.station: station {b.station} already has a bearing")
+            seen.add(b.station)
+            if any(s.station == b.station and s.type == "rigid" for s in self.supports):
+                raise InputError(f"{where}.station: station {b.station} has a rigid support")
+            if (self.reduction.method != "none"
+                    and b.station not in self.reduction.master_stations):
+                raise InputError(
+                    f"{where}.station: station {b.station} must be one of "
+                    f"reduction.master_stations {list(self.reduction.master_stations)} "
+                    "(the film acts on the journal's x and y)")
+
 
     # -- lookups -----------------------------------------------------------------------
     def material(self, name: str) -> Material:

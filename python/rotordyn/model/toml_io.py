@@ -60,7 +60,8 @@ def system_from_toml(path_or_text, *, is_text: bool = False):
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"model: {src} is not valid TOML: {exc}") from None
 
-    top = {"schema", "name", "description", "material", "rotor", "disk", "support", "reduction"}
+    top = {"schema", "name", "description", "material", "rotor", "disk", "support", "reduction",
+           "bearing", "gravity_m_s2"}
     _check_keys("model", doc, top)
     if doc.get("schema") != SCHEMA:
         raise InputError(f"schema: expected {SCHEMA!r}, got {doc.get('schema')!r}")
@@ -90,12 +91,41 @@ def system_from_toml(path_or_text, *, is_text: bool = False):
     _check_keys("reduction", red_t, _fields(Reduction))
     reduction = _build(Reduction, "reduction", red_t)
 
+    bearings = [_bearing_from_table(f"bearing[{i}]", t)
+                for i, t in enumerate(_array_of_tables("bearing", doc.get("bearing", [])))]
+
     kwargs = {}
+    if "gravity_m_s2" in doc:
+        kwargs["gravity_m_s2"] = doc["gravity_m_s2"]
     if mats:
         kwargs["materials"] = tuple(mats)
     return System(rotor=Rotor(tuple(sections), tuple(disks)), supports=tuple(supports),
-                  reduction=reduction, name=doc.get("name", ""),
+                  reduction=reduction, bearings=tuple(bearings), name=doc.get("name", ""),
                   description=doc.get("description", ""), **kwargs)
+
+
+def _bearing_from_table(where: str, t: dict):
+    from rotordyn.bearing import Groove
+    from rotordyn.model.bearings import BEARING_TYPES
+    from rotordyn.sleeve import FlexibleSleeve
+
+    t = dict(t)
+    kind = t.pop("type", None)
+    if kind not in BEARING_TYPES:
+        raise InputError(f"{where}.type: expected one of {sorted(BEARING_TYPES)}, got {kind!r}")
+    cls = BEARING_TYPES[kind]
+    _check_keys(where, t, _fields(cls))
+    grooves = []
+    for j, g in enumerate(t.pop("grooves", [])):
+        _check_keys(f"{where}.grooves[{j}]", g, _fields(Groove))
+        grooves.append(_build(Groove, f"{where}.grooves[{j}]", g))
+    if "sleeve" in t:
+        st = t.pop("sleeve")
+        _check_keys(f"{where}.sleeve", st, _fields(FlexibleSleeve))
+        if "master_stations" in st:
+            st = dict(st, master_stations=tuple(st["master_stations"]))
+        t["sleeve"] = _build(FlexibleSleeve, f"{where}.sleeve", st)
+    return _build(cls, where, t, grooves=tuple(grooves))
 
 
 # -- writing ----------------------------------------------------------------------------
@@ -148,4 +178,19 @@ def system_to_toml(system) -> str:
     for s in system.supports:
         lines += ["", "[[support]]"] + _table_lines(s)
     lines += ["", "[reduction]"] + _table_lines(system.reduction, defaults_too=True)
+    from rotordyn.model.bearings import BEARING_TYPES
+
+    kinds = {cls: name for name, cls in BEARING_TYPES.items()}
+    for b in system.bearings:
+        lines += ["", "[[bearing]]", f"type = {_val(kinds[type(b)])}"]
+        lines += _table_lines(b, skip=("grooves", "sleeve"))
+        if b.grooves:
+            gs = ", ".join("{" + ", ".join(f"{f.name} = {_val(getattr(g, f.name))}"
+                                           for f in dataclasses.fields(g)) + "}"
+                           for g in b.grooves)
+            lines.append(f"grooves = [{gs}]")
+        if getattr(b, "sleeve", None) is not None:
+            lines += ["", "[bearing.sleeve]"] + _table_lines(b.sleeve, defaults_too=True)
+    if system.gravity_m_s2 != 9.81:
+        lines.insert(1, f"gravity_m_s2 = {_val(system.gravity_m_s2)}")
     return "\n".join(lines) + "\n"

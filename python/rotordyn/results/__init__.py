@@ -1,6 +1,7 @@
 """Result objects (frozen dataclasses of numpy arrays with ``.to_frame()`` and ``.plot()``)."""
 
 from rotordyn.results.campbell import CampbellResult
+from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.results.modes import ModesResult
 
-__all__ = ["ModesResult", "CampbellResult"]
+__all__ = ["ModesResult", "CampbellResult", "EquilibriumResult"]

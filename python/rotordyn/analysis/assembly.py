@@ -1,0 +1,163 @@
+"""Assembly of the system of eq. 12-13 for the C++ core: condensed rotor + sleeve coordinates,
+gravity, chamber loads and one film coupling per fluid-film bearing.
+
+Coordinates r = [q (rotor: masters' x, y in station order, or every free FE DOF when the
+reduction is "none"); r_s (each active bearing's sleeve masters, inward, in bearing order)].
+An ``Assembled`` object is cached per (system, thread), so repeated operating points reuse the
+reduction, the sleeve condensation and the Reynolds factorisations (warm starts).
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn.analysis.modes import RotorMatrices
+from rotordyn.errors import InputError
+from rotordyn.model.bearings import ActiveJournalBearing
+from rotordyn.model.system import System
+
+
+@dataclass
+class BearingCoords:
+    """Where bearing ``index`` sits in r: journal x, y and its sleeve coordinates."""
+
+    index: int
+    name: str
+    jx: int
+    jy: int
+    sleeve: tuple[int, ...]
+    clearance_m: float
+    active: bool
+
+
+class Assembled:
+    """The C++ ``SystemModel`` and ``SystemSolver`` of a System, with the index maps."""
+
+    def __init__(self, system: System):
+        if not system.bearings:
+            raise InputError("bearing: the system has no fluid-film bearing")
+        self.system = system
+        self.rotor = RotorMatrices(system)
+        M, K, C, G = self.rotor.matrices()
+        n_r = M.shape[0]
+        nodes = system.rotor.station_nodes()
+
+        # Gravity: consistent nodal loads −g M e_y on the constrained full model, condensed.
+        full = self.rotor.full
+        ey = np.zeros(len(full.dofs))
+        dofs = np.asarray(full.dofs)
+        ey[(dofs % 4) == 1] = 1.0
+        q_full = -system.gravity_m_s2 * (np.asarray(full.M) @ ey)
+        Q_r = q_full if self.rotor.reduction is None else np.asarray(self.rotor.reduction.T).T @ q_full
+
+        def journal_index(station: int) -> tuple[int, int]:
+            if self.rotor.reduction is None:
+                return full.local(int(4 * nodes[station])), full.local(int(4 * nodes[station] + 1))
+            i = list(system.reduction.master_stations).index(station)
+            return 2 * i, 2 * i + 1
+
+        blocks_M, blocks_K, chambers = [], [], []
+        self.bearings: list[BearingCoords] = []
+        self.sleeves = {}
+        films = []
+        n = n_r
+        for bi, b in enumerate(system.bearings):
+            jx, jy = journal_index(b.station)
+            jb = b.journal_bearing()
+            g, grid = jb.to_core()
+            phi = 2 * np.pi * np.arange(b.n_circ) / b.n_circ
+            shape = [-np.cos(phi), -np.sin(phi)]
+            coords = [jx, jy]
+            sleeve_idx: tuple[int, ...] = ()
+            if isinstance(b, ActiveJournalBearing):
+                res = b.sleeve.condense()
+                self.sleeves[bi] = res
+                W = res.interpolation_matrix(phi)
+                nm = W.shape[1]
+                sleeve_idx = tuple(range(n, n + nm))
+                coords += list(sleeve_idx)
+                shape += [-W[:, j] for j in range(nm)]
+                start = None if b.chamber_start_deg is None else np.radians(b.chamber_start_deg)
+                end = None if b.chamber_end_deg is None else np.radians(b.chamber_end_deg)
+                blocks_M.append(res.mass_matrix)
+                blocks_K.append(res.stiffness_matrix)
+                chambers.append((sleeve_idx, res.chamber_load(start, end)))
+                n += nm
+            f = _core.FilmCoupling()
+            f.name = b.name or f"bearing[{bi}]"
+            f.geometry, f.grid, f.cavitation = g, grid, b.cavitation
+            f.coords = [int(c) for c in coords]
+            f.shape = np.column_stack(shape)
+            films.append(f)
+            self.bearings.append(BearingCoords(bi, f.name, jx, jy, sleeve_idx, b.clearance_m,
+                                               isinstance(b, ActiveJournalBearing)))
+
+        def block(A_r, blocks):
+            out = np.zeros((n, n))
+            out[:n_r, :n_r] = A_r
+            k = n_r
+            for B in blocks:
+                m = B.shape[0]
+                out[k:k + m, k:k + m] = B
+                k += m
+            return out
+
+        model = _core.SystemModel()
+        model.M = block(M, blocks_M)
+        model.K = block(K, blocks_K)
+        model.C = block(C, [np.zeros_like(B) for B in blocks_M])
+        model.G = block(G, [np.zeros_like(B) for B in blocks_M])
+        Q = np.zeros(n)
+        Q[:n_r] = Q_r
+        model.Q = Q
+        ch = np.zeros(n)
+        for idx, cs in chambers:
+            ch[list(idx)] = cs
+        model.chamber = ch
+        model.films = films
+        self.model = model
+        self.n = n
+        self.n_rotor = n_r
+        self.solver = _core.SystemSolver(model)
+        self.last_r: dict = {}
+
+    def config_vector(self, config_ay_m=None, config_ax_m=None) -> np.ndarray:
+        """(n,) configuration a_r (eq. 13): each bearing's housing offset at its journal
+        coordinates; ``config_ay_m``/``config_ax_m`` override the active bearing's values (or
+        the only bearing's)."""
+        a = np.zeros(self.n)
+        active = [bc for bc in self.bearings if bc.active]
+        if not active and len(self.bearings) == 1:
+            active = self.bearings  # a single plain bearing is addressed the same way
+        for bc in self.bearings:
+            b = self.system.bearings[bc.index]
+            a[bc.jx], a[bc.jy] = b.config_ax_m, b.config_ay_m
+        for val, name, idx in ((config_ay_m, "config_ay_m", "jy"), (config_ax_m, "config_ax_m", "jx")):
+            if val is None:
+                continue
+            if len(active) != 1:
+                raise InputError(f"{name}: addresses the active bearing, but the system has "
+                                 f"{len(active)}; set config_ax_m/config_ay_m on the bearings")
+            a[getattr(active[0], idx)] = val
+        return a
+
+
+_local = threading.local()
+
+
+def assembled(system: System) -> Assembled:
+    """This thread's cached ``Assembled`` for ``system`` (keyed by value; a few kept)."""
+    cache = getattr(_local, "cache", None)
+    if cache is None:
+        cache = _local.cache = {}
+    key = system
+    hit = cache.get(key)
+    if hit is None:
+        if len(cache) >= 8:
+            cache.pop(next(iter(cache)))
+        hit = cache[key] = Assembled(system)
+    return hit

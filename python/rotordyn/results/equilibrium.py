@@ -1,0 +1,84 @@
+"""Static equilibrium of the system (paper eq. 14-16)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+
+@dataclass(frozen=True)
+class EquilibriumResult:
+    """Equilibrium at one operating point.
+
+    r: (n,) all coordinates (rotor masters relative to the housings, then sleeve masters, m).
+    journal_x_m, journal_y_m, clearance_m, h_min_m, h_min_angle_deg: (n_bearings,) per bearing;
+    journal positions are relative to the bearing housing (q of eq. 7), in the DESIGN frame.
+    sleeve_m: {bearing index: (n_m,) inward sleeve master coordinates, m}.
+    """
+
+    speed_hz: float
+    chamber_pressure_pa: float
+    config_ay_m: np.ndarray
+    config_ax_m: np.ndarray
+    method: str
+    r: np.ndarray
+    film_force_n: np.ndarray
+    bearing_names: tuple
+    journal_x_m: np.ndarray
+    journal_y_m: np.ndarray
+    clearance_m: np.ndarray
+    h_min_m: np.ndarray
+    h_min_angle_deg: np.ndarray
+    sleeve_m: dict = field(default_factory=dict)
+    iterations: int = 0
+    reynolds_solves: int = 0
+    residual: float = float("nan")
+    pm: float = float("nan")
+    status: str = "ok"
+    message: str = ""
+
+    @property
+    def x_over_c(self) -> np.ndarray:
+        return self.journal_x_m / self.clearance_m
+
+    @property
+    def y_over_c(self) -> np.ndarray:
+        return self.journal_y_m / self.clearance_m
+
+    @property
+    def eccentricity_ratio(self) -> np.ndarray:
+        return np.hypot(self.journal_x_m, self.journal_y_m) / self.clearance_m
+
+    def to_frame(self) -> pd.DataFrame:
+        """One row per bearing: inputs, journal position (m and /c), film, status."""
+        nb = len(self.bearing_names)
+        df = pd.DataFrame({
+            "bearing": self.bearing_names,
+            "speed_hz": np.full(nb, self.speed_hz),
+            "chamber_pressure_pa": np.full(nb, self.chamber_pressure_pa),
+            "config_ax_m": self.config_ax_m,
+            "config_ay_m": self.config_ay_m,
+            "journal_x_m": self.journal_x_m,
+            "journal_y_m": self.journal_y_m,
+            "x_over_c": self.x_over_c,
+            "y_over_c": self.y_over_c,
+            "eccentricity_ratio": self.eccentricity_ratio,
+            "h_min_m": self.h_min_m,
+            "h_min_angle_deg": self.h_min_angle_deg,
+            "iterations": np.full(nb, self.iterations, dtype=np.int64),
+            "reynolds_solves": np.full(nb, self.reynolds_solves, dtype=np.int64),
+            "residual": np.full(nb, self.residual),
+            "status": pd.Categorical([self.status] * nb,
+                                     categories=["ok", "no_equilibrium", "contact",
+                                                 "not_converged", "error"]),
+            "message": [self.message] * nb,
+        })
+        for bi, s in self.sleeve_m.items():
+            for j, val in enumerate(s):
+                col = f"sleeve_{j + 1}_m"
+                if col not in df:
+                    df[col] = np.nan
+                df.loc[bi, col] = val
+        return df
