@@ -25,8 +25,23 @@ from rotordyn.model import (
     Support,
     System,
 )
-from rotordyn.analysis import equilibrium, modes, rotor_campbell
-from rotordyn.results import CampbellResult, EquilibriumResult, ModesResult
+from rotordyn.analysis import (
+    campbell,
+    equilibrium,
+    linearize,
+    modes,
+    rotor_campbell,
+    stability,
+    stability_boundary,
+    threshold,
+)
+from rotordyn.results import (
+    CampbellResult,
+    EquilibriumResult,
+    LinearModel,
+    ModesResult,
+    StabilityResult,
+)
 from rotordyn import models
 
 __version__ = "0.1.0"
@@ -71,8 +86,15 @@ __all__ = [
     # analyses and results
     "modes",
     "rotor_campbell",
+    "campbell",
     "equilibrium",
+    "linearize",
+    "stability",
+    "threshold",
+    "stability_boundary",
     "ModesResult",
+    "LinearModel",
+    "StabilityResult",
     "CampbellResult",
     "EquilibriumResult",
     "SleeveResult",

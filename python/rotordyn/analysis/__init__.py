@@ -1,6 +1,9 @@
 """Analyses: verbs returning ``*Result`` objects."""
 
+from rotordyn.analysis.campbell import campbell
 from rotordyn.analysis.equilibrium import equilibrium
+from rotordyn.analysis.linear import linearize, stability
+from rotordyn.analysis.threshold import stability_boundary, threshold
 from rotordyn.analysis.modes import RotorMatrices, modes, rotor_campbell
 
-__all__ = ["modes", "rotor_campbell", "equilibrium", "RotorMatrices"]
+__all__ = ["campbell", "modes", "rotor_campbell", "equilibrium", "linearize", "stability", "threshold", "stability_boundary", "RotorMatrices"]

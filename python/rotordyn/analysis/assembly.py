@@ -38,8 +38,6 @@ class Assembled:
     """The C++ ``SystemModel`` and ``SystemSolver`` of a System, with the index maps."""
 
     def __init__(self, system: System):
-        if not system.bearings:
-            raise InputError("bearing: the system has no fluid-film bearing")
         self.system = system
         self.rotor = RotorMatrices(system)
         M, K, C, G = self.rotor.matrices()

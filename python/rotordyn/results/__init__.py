@@ -3,5 +3,6 @@
 from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.results.modes import ModesResult
+from rotordyn.results.stability import LinearModel, StabilityResult
 
-__all__ = ["ModesResult", "CampbellResult", "EquilibriumResult"]
+__all__ = ["ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel", "StabilityResult"]

@@ -23,6 +23,8 @@ class CampbellResult:
     model: str = "full"
     status: str = "ok"
     message: str = ""
+    kind: np.ndarray | None = None  # (n_speeds, n_modes) "rotor"/"sleeve" (systems with films)
+    point_status: np.ndarray | None = None  # (n_speeds,) equilibrium status per speed
 
     @property
     def frequencies_hz(self) -> np.ndarray:
@@ -41,6 +43,8 @@ class CampbellResult:
         crossing (None: any). Columns: mode, speed_hz, freq_hz, whirl."""
         rows = []
         f = self.frequencies_hz
+        if self.kind is not None:
+            f = np.where(self.kind == "rotor", f, np.nan)
         for j in range(f.shape[1]):
             g = f[:, j] - harmonic * self.speeds_hz
             for i in np.where(np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]:
@@ -53,11 +57,19 @@ class CampbellResult:
         df = pd.DataFrame(rows, columns=["mode", "speed_hz", "freq_hz", "whirl", "harmonic"])
         return df.sort_values("speed_hz", ignore_index=True)
 
+    def rotor_mask(self) -> np.ndarray:
+        """(n_speeds, n_modes) True for rotor modes (all when no sleeve)."""
+        if self.kind is None:
+            return np.ones(self.eigenvalues.shape, dtype=bool)
+        return self.kind == "rotor"
+
     def to_frame(self) -> pd.DataFrame:
         """Tidy: one row per (speed, mode)."""
         ns, nm = self.eigenvalues.shape
         lam = self.eigenvalues.ravel()
-        return pd.DataFrame({
+        st = (np.repeat(self.point_status, nm) if self.point_status is not None
+              else [self.status] * (ns * nm))
+        df = pd.DataFrame({
             "model": pd.Categorical([self.model] * (ns * nm)),
             "speed_hz": np.repeat(self.speeds_hz, nm),
             "mode": np.tile(np.arange(1, nm + 1, dtype=np.int64), ns),
@@ -66,9 +78,12 @@ class CampbellResult:
             "log_dec": self.log_dec.ravel(),
             "whirl": pd.Categorical([WHIRL_NAMES[int(w)] for w in self.whirl.ravel()],
                                     categories=["forward", "backward", "planar"]),
-            "status": pd.Categorical([self.status] * (ns * nm)),
+            "status": pd.Categorical(st),
             "message": [self.message] * (ns * nm),
         })
+        if self.kind is not None:
+            df.insert(4, "kind", pd.Categorical(self.kind.ravel(), categories=["rotor", "sleeve"]))
+        return df
 
     def plot(self, ax=None, harmonics=(1.0,)):
         """Frequencies against speed (forward solid, backward dashed) with n× lines."""
@@ -77,6 +92,8 @@ class CampbellResult:
         if ax is None:
             _, ax = plt.subplots(figsize=(7, 5))
         f = self.frequencies_hz
+        if self.kind is not None:
+            f = np.where(self.kind == "rotor", f, np.nan)  # the paper omits the sleeve curves
         for j in range(f.shape[1]):
             fw = np.where(self.whirl[:, j] >= 0, f[:, j], np.nan)
             bw = np.where(self.whirl[:, j] < 0, f[:, j], np.nan)

@@ -1,0 +1,56 @@
+"""Campbell diagram of the full system (rotor, films, sleeves) with the equilibrium continued
+from speed to speed, and critical speeds from the 1× (or n×) crossings (paper §6.3, Fig. 12)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.linear import _linear_from, _stability_from
+from rotordyn.analysis.equilibrium import equilibrium
+from rotordyn.errors import InputError, RotordynError
+from rotordyn.model import _validate as v
+from rotordyn.model.system import System
+from rotordyn.results.campbell import CampbellResult
+
+WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
+
+
+def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
+             config_ay_m: float | None = None, *, n_modes: int | None = None,
+             method: str = "perturbation") -> CampbellResult:
+    """Eigenvalues of eq. 19 at each speed in ``speeds_hz`` (strictly increasing, Hz): the
+    equilibrium is solved at each speed, warm-started from the previous one, then K_H(Ω),
+    D_H(Ω) and the eigenvalues. A speed whose equilibrium fails is a NaN row with its status
+    in ``point_status``; the diagram goes on. ``n_modes`` default: every mode of the system."""
+    sp = np.asarray(speeds_hz, dtype=float)
+    if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)):
+        raise InputError("speeds_hz: expected a non-empty 1-D array of finite speeds")
+    if sp.size > 1 and np.any(np.diff(sp) <= 0):
+        raise InputError("speeds_hz: expected strictly increasing speeds")
+    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    asm = assembled(system)
+    k = int(n_modes or asm.n)
+    v.integer("n_modes", k, lo=1)
+    lam = np.full((sp.size, k), np.nan + 1j * np.nan)
+    whirl = np.zeros((sp.size, k), dtype=np.int64)
+    kind = np.full((sp.size, k), "rotor", dtype=object)
+    status = np.empty(sp.size, dtype=object)
+    r0 = None
+    for i, s in enumerate(sp):
+        try:
+            e = equilibrium(system, float(s), chamber_pressure_pa, config_ay_m, r0=r0,
+                            warm_start=r0 is None)
+            st = _stability_from(asm, _linear_from(asm, e, float(s), method, 1e-5), k)
+        except RotordynError as exc:
+            status[i] = "error"
+            continue
+        status[i] = st.status
+        if e.status == "ok":
+            r0 = e.r
+        m = min(k, len(st.eigenvalues))
+        lam[i, :m] = st.eigenvalues[:m]
+        whirl[i, :m] = [WHIRL_CODE[w] for w in st.whirl[:m]]
+        kind[i, :m] = st.kind[:m]
+    return CampbellResult(sp, lam, whirl, model=system.reduction.method, kind=kind,
+                          point_status=status.astype(str))

@@ -1,0 +1,111 @@
+"""Linearised model about the equilibrium (paper eq. 17-20) and eigenvalue stability (eq. 19).
+
+K_H and D_H come from the perturbation method (linearised Reynolds equation sharing the base
+solve's factorisation, the default) or from the paper's finite differences (eq. 20, central,
+steps scaled to c and c·ω)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn.analysis.assembly import Assembled, assembled
+from rotordyn.analysis.equilibrium import equilibrium
+from rotordyn.model import _validate as v
+from rotordyn.model.system import System
+from rotordyn.results.equilibrium import EquilibriumResult
+from rotordyn.results.modes import WHIRL_NAMES
+from rotordyn.results.stability import LinearModel, StabilityResult
+from rotordyn.units import hz_to_rad_s
+
+LINEARIZATION_METHODS = ("perturbation", "finite_difference")
+
+
+def coordinate_labels(asm: Assembled) -> tuple:
+    """Names of the system coordinates: ``station<k>.x``/``.y`` (or ``dof<i>``), then
+    ``<bearing>.sleeve<j>``."""
+    s = asm.system
+    if asm.rotor.reduction is None:
+        names = [f"dof{d}" for d in asm.rotor.full.dofs]
+    else:
+        names = [f"station{st}.{c}" for st in s.reduction.master_stations for c in "xy"]
+        names += [f"cb_mode{j + 1}" for j in range(asm.n_rotor - len(names))]
+    for bc in asm.bearings:
+        names += [f"{bc.name}.sleeve{j + 1}" for j in range(len(bc.sleeve))]
+    return tuple(names)
+
+
+def _linear_from(asm: Assembled, e: EquilibriumResult, speed_hz: float, method: str,
+                 rel_step: float) -> LinearModel:
+    w = hz_to_rad_s(float(speed_hz))
+    m = asm.model
+    n = asm.n
+    if e.status in ("ok", "contact"):
+        if method == "perturbation":
+            lin = asm.solver.linearize(e.r, np.zeros(n), w)
+        else:
+            lin = asm.solver.linearize_fd(e.r, w, rel_step)
+        KH, DH = np.asarray(lin.KH), np.asarray(lin.DH)
+    else:
+        KH = DH = np.full((n, n), np.nan)
+    K0, C0, G, M = (np.asarray(x) for x in (m.K, m.C, m.G, m.M))
+    return LinearModel(speed_hz=float(speed_hz), M=M, D=C0 + w * G + DH, K=K0 + KH, KH=KH,
+                       DH=DH, K_structure=K0, C_structure=C0, G=G,
+                       chamber=np.asarray(m.chamber), labels=coordinate_labels(asm),
+                       equilibrium=e, method=method)
+
+
+def linearize(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
+              config_ay_m: float | None = None, *, method: str = "perturbation",
+              rel_step: float = 1e-5, **equilibrium_kw) -> LinearModel:
+    """Equilibrium, then K_H and D_H (eq. 18) and the matrices of eq. 19.
+
+    method: ``"perturbation"`` (default) or ``"finite_difference"`` (eq. 20, central, steps
+    ``rel_step``·c and ``rel_step``·c·ω). Other keywords go to :func:`equilibrium`.
+    """
+    v.choice("method", method, LINEARIZATION_METHODS)
+    v.in_range("rel_step", rel_step, 0.0, 0.1, lo_open=True, hi_open=True)
+    e = equilibrium(system, speed_hz, chamber_pressure_pa, config_ay_m, **equilibrium_kw)
+    return _linear_from(assembled(system), e, speed_hz, method, rel_step)
+
+
+def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> StabilityResult:
+    n = asm.n
+    xy = asm.rotor.xy_pairs()
+    if lm.status not in ("ok", "contact") or not np.all(np.isfinite(lm.K)):
+        empty = np.zeros(0, dtype=complex)
+        return StabilityResult(lm, empty, np.zeros(0, dtype=object), np.zeros(0, dtype=object),
+                               np.zeros((0, 4, 0), dtype=complex), status=lm.status,
+                               message=lm.equilibrium.message or "no equilibrium")
+    r = _core.modal(lm.M, lm.D, lm.K, xy, int(n_modes or n), True)
+    lam = np.asarray(r.eigenvalues)
+    phi = np.asarray(r.modes)  # (n, k)
+    # Which part carries the mode: kinetic-energy share of the sleeve coordinates.
+    sl = [i for bc in asm.bearings for i in bc.sleeve]
+    kin_total = np.real(np.einsum("ik,ij,jk->k", phi.conj(), lm.M, phi))
+    if sl:
+        Ms = lm.M[np.ix_(sl, sl)]
+        kin_s = np.real(np.einsum("ik,ij,jk->k", phi[sl].conj(), Ms, phi[sl]))
+    else:
+        kin_s = np.zeros(len(lam))
+    kind = np.where(kin_s > 0.5 * kin_total, "sleeve", "rotor").astype(object)
+    rotor = asm.rotor.expand(phi[:asm.n_rotor])
+    n_nodes = rotor.shape[0] // 4
+    sleeves = {bc.index: asm.sleeves[bc.index].transformation @ phi[list(bc.sleeve)]
+               for bc in asm.bearings if bc.sleeve}
+    return StabilityResult(lm, lam, np.array([WHIRL_NAMES[int(x)] for x in r.whirl], dtype=object),
+                           kind, rotor.reshape(n_nodes, 4, -1), sleeves, status=lm.status,
+                           message=lm.equilibrium.message)
+
+
+def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
+              config_ay_m: float | None = None, *, n_modes: int | None = None,
+              method: str = "perturbation", **equilibrium_kw) -> StabilityResult:
+    """Eigenvalues of eq. 19 at the equilibrium: damped natural frequencies, damping ratios,
+    logarithmic decrements, whirl, mode shapes (full rotor and full sleeve); ``.stable`` when
+    every real part is negative. ``n_modes``: lowest damped frequencies kept (default all)."""
+    if n_modes is not None:
+        v.integer("n_modes", n_modes, lo=1)
+    lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, method=method,
+                   **equilibrium_kw)
+    return _stability_from(assembled(system), lm, n_modes)

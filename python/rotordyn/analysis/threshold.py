@@ -1,0 +1,153 @@
+"""Thresholds of instability found exactly (bracketing + Brent's method on the largest real
+part of the eigenvalues of eq. 19), and boundary tracing by continuation (paper §6.2)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+from scipy.optimize import brentq
+
+from rotordyn.errors import InputError, RotordynError
+from rotordyn.model import _validate as v
+from rotordyn.model.system import System
+from rotordyn.results.threshold import BoundaryResult, ThresholdResult
+
+PARAMETERS = ("chamber_pressure_pa", "config_ay_m", "speed_hz")
+
+
+def _point(system, params, exclude_sleeve_modes):
+    from rotordyn.analysis.linear import stability
+
+    st = stability(system, params["speed_hz"], params["chamber_pressure_pa"],
+                   params["config_ay_m"])
+    if st.status not in ("ok", "contact") or len(st.eigenvalues) == 0:
+        return math.nan, math.nan, st.status
+    lam = st.eigenvalues
+    if exclude_sleeve_modes:
+        lam = lam[st.kind == "rotor"]
+    i = int(np.argmax(lam.real))
+    return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), st.status
+
+
+def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
+              speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
+              config_ay_m: float | None = None, n_scan: int = 9, xtol: float | None = None,
+              exclude_sleeve_modes: bool = False) -> ThresholdResult:
+    """The value of ``vary`` (``"chamber_pressure_pa"``, ``"config_ay_m"`` or ``"speed_hz"``)
+    in ``bounds`` where the least-damped eigenvalue's real part crosses zero.
+
+    The bounds are scanned at ``n_scan`` points (equilibria continued from point to point);
+    the first sign change is refined with Brent's method to ``xtol`` (default 1e-6 of the
+    bounds' span). No sign change gives status ``"no_crossing"`` and ``value`` NaN — never an
+    invented number.
+    """
+    v.choice("vary", vary, PARAMETERS)
+    try:
+        lo, hi = (float(b) for b in bounds)
+    except (TypeError, ValueError):
+        raise InputError(f"bounds: expected (low, high), got {bounds!r}") from None
+    if not (math.isfinite(lo) and math.isfinite(hi) and hi > lo):
+        raise InputError(f"bounds: expected finite low < high, got {bounds!r}")
+    if vary == "chamber_pressure_pa" and lo < 0:
+        raise InputError(f"bounds: chamber_pressure_pa must be >= 0, got {bounds!r}")
+    v.integer("n_scan", n_scan, lo=2, hi=10000)
+    xtol = (hi - lo) * 1e-6 if xtol is None else v.positive("xtol", xtol)
+    fixed = {"speed_hz": float(speed_hz), "chamber_pressure_pa": float(chamber_pressure_pa),
+             "config_ay_m": None if config_ay_m is None else float(config_ay_m)}
+    fixed.pop(vary)
+    for k, val in fixed.items():
+        if val is not None:
+            v.finite(k, val)
+    calls = [0]
+
+    def g(x):
+        calls[0] += 1
+        p = dict(fixed)
+        p[vary] = float(x)
+        try:
+            return _point(system, p, exclude_sleeve_modes)
+        except RotordynError as exc:  # a failed point is a NaN, the scan goes on
+            return math.nan, math.nan, f"error: {exc}"
+
+    xs = np.linspace(lo, hi, n_scan)
+    rows = []
+    for x in xs:
+        re, f, stt = g(x)
+        rows.append({vary: x, "max_real_1_per_s": re, "freq_hz": f, "status": stt})
+    scan = pd.DataFrame(rows)
+    ok = scan[np.isfinite(scan["max_real_1_per_s"])].reset_index(drop=True)
+    base = dict(vary=vary, fixed=fixed, bounds=(lo, hi), xtol=xtol, scan=scan)
+    re = ok["max_real_1_per_s"].to_numpy()
+    idx = np.where(np.sign(re[:-1]) * np.sign(re[1:]) < 0)[0]
+    if len(idx) == 0:
+        state = "unstable" if len(re) and np.all(re > 0) else "stable"
+        if len(re) == 0:
+            state = "without any equilibrium"
+        return ThresholdResult(value=math.nan, whirl_frequency_hz=math.nan,
+                               whirl_ratio=math.nan, stable_side="", evaluations=calls[0],
+                               status="no_crossing",
+                               message=f"max Re λ does not change sign in {vary} ∈ "
+                                       f"[{lo:g}, {hi:g}] (the system is {state} there)",
+                               **base)
+    roots = []
+    for i in idx:
+        a, b = float(ok[vary][i]), float(ok[vary][i + 1])
+        try:
+            roots.append((brentq(lambda x: g(x)[0], a, b, xtol=xtol,
+                                 rtol=4 * np.finfo(float).eps, maxiter=200), int(i)))
+        except ValueError as exc:  # NaN inside the bracket
+            return ThresholdResult(value=math.nan, whirl_frequency_hz=math.nan,
+                                   whirl_ratio=math.nan, stable_side="", evaluations=calls[0],
+                                   status="error",
+                                   message=f"root finding failed in [{a:g}, {b:g}]: {exc}",
+                                   **base)
+    root, i = roots[0]
+    _, f, _ = g(root)
+    speed = root if vary == "speed_hz" else fixed["speed_hz"]
+    side = "above" if re[i + 1] < 0 else "below"
+    msg = ""
+    if len(roots) > 1:
+        msg = (f"{len(roots)} crossings in the bounds: "
+               + ", ".join(f"{r:.6g}" for r, _ in roots) + "; value is the first")
+    return ThresholdResult(value=float(root), whirl_frequency_hz=f,
+                           whirl_ratio=f / speed if speed else math.nan, stable_side=side,
+                           evaluations=calls[0], crossings=tuple(float(r) for r, _ in roots),
+                           message=msg, **base)
+
+
+def stability_boundary(system: System, vary: str = "chamber_pressure_pa",
+                       along: str = "config_ay_m", *, values, bounds, n_scan: int = 9,
+                       **fixed) -> BoundaryResult:
+    """Trace the threshold of ``vary`` across ``values`` of ``along`` (paper Fig. 9: p_c
+    against a_y at 50 Hz; Fig. 10: p_c against speed at a_y = 0). Each point first searches a
+    narrow bracket around the previous threshold (continuation), then the full ``bounds``."""
+    v.choice("vary", vary, PARAMETERS)
+    v.choice("along", along, PARAMETERS)
+    if along == vary:
+        raise InputError("along: expected a parameter other than vary")
+    vals = np.asarray(values, dtype=float)
+    if vals.ndim != 1 or vals.size == 0 or not np.all(np.isfinite(vals)):
+        raise InputError("values: expected a non-empty 1-D array of finite values")
+    lo, hi = (float(b) for b in bounds)
+    rows, prev = [], None
+    for x in vals:
+        kw = dict(fixed)
+        kw[along] = float(x)
+        res = None
+        if prev is not None and math.isfinite(prev):
+            w = 0.15 * (hi - lo)
+            nb = (max(lo, prev - w), min(hi, prev + w))
+            res = threshold(system, vary, bounds=nb, n_scan=3, **kw)
+            if res.status != "ok":
+                res = None
+        if res is None:
+            res = threshold(system, vary, bounds=(lo, hi), n_scan=n_scan, **kw)
+        prev = res.value
+        rows.append({along: float(x), vary: res.value,
+                     "whirl_frequency_hz": res.whirl_frequency_hz,
+                     "whirl_ratio": res.whirl_ratio, "stable_side": res.stable_side,
+                     "evaluations": res.evaluations, "status": res.status,
+                     "message": res.message})
+    return BoundaryResult(vary=vary, along=along, table=pd.DataFrame(rows))

@@ -1,0 +1,126 @@
+"""Linear model about an equilibrium (paper eq. 17-20) and its eigen-analysis (eq. 19)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from rotordyn.results.equilibrium import EquilibriumResult
+
+
+@dataclass(frozen=True)
+class LinearModel:
+    """M Δr̈ + D Δṙ + K Δr = F + ΔC (eq. 19), with D = C + Ω G + D_H and K = K_s + K_H.
+
+    M, D, K, KH, DH, K_structure, C_structure, G: (n, n) SI matrices on the system coordinates
+    (rotor masters, then sleeve masters); chamber: (n,) force per Pa of chamber pressure;
+    labels: (n,) coordinate names.
+    """
+
+    speed_hz: float
+    M: np.ndarray
+    D: np.ndarray
+    K: np.ndarray
+    KH: np.ndarray
+    DH: np.ndarray
+    K_structure: np.ndarray
+    C_structure: np.ndarray
+    G: np.ndarray
+    chamber: np.ndarray
+    labels: tuple
+    equilibrium: EquilibriumResult
+    method: str = "perturbation"
+
+    @property
+    def status(self) -> str:
+        return self.equilibrium.status
+
+    def state_matrix(self) -> np.ndarray:
+        """A of ẋ = A x, x = [Δr; Δṙ], (2n, 2n)."""
+        n = self.M.shape[0]
+        Minv = np.linalg.inv(self.M)
+        return np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ self.K, -Minv @ self.D]])
+
+    def bearing_coefficients(self) -> pd.DataFrame:
+        """K_H and D_H entries between film-coupled coordinates, tidy (row, col, value)."""
+        rows = []
+        idx = np.where((np.abs(self.KH).sum(0) + np.abs(self.DH).sum(0)) > 0)[0]
+        for i in idx:
+            for j in idx:
+                rows.append({"row": self.labels[i], "col": self.labels[j],
+                             "k_n_per_m": self.KH[i, j], "c_n_s_per_m": self.DH[i, j]})
+        return pd.DataFrame(rows)
+
+
+@dataclass(frozen=True)
+class StabilityResult:
+    """Eigenvalues of the linearised system at one operating point.
+
+    eigenvalues: (n_modes,) complex 1/s, ascending damped frequency; whirl: (n_modes,) str;
+    kind: (n_modes,) "rotor" or "sleeve" (where the mode's kinetic energy lies);
+    rotor_shapes: (n_nodes, 4, n_modes) complex, expanded to every rotor FE node;
+    sleeve_shapes: {bearing index: (n_sleeve_dof, n_modes)} expanded to the full sleeve FEM.
+    """
+
+    linear: LinearModel
+    eigenvalues: np.ndarray
+    whirl: np.ndarray
+    kind: np.ndarray
+    rotor_shapes: np.ndarray
+    sleeve_shapes: dict = field(default_factory=dict)
+    status: str = "ok"
+    message: str = ""
+
+    @property
+    def speed_hz(self) -> float:
+        return self.linear.speed_hz
+
+    @property
+    def frequencies_hz(self) -> np.ndarray:
+        return self.eigenvalues.imag / (2 * np.pi)
+
+    @property
+    def damping_ratio(self) -> np.ndarray:
+        mag = np.abs(self.eigenvalues)
+        return np.where(mag > 0, -self.eigenvalues.real / np.where(mag > 0, mag, 1.0), 0.0)
+
+    @property
+    def log_dec(self) -> np.ndarray:
+        im = self.eigenvalues.imag
+        return np.where(im > 0, -2 * np.pi * self.eigenvalues.real / np.where(im > 0, im, 1.0),
+                        np.inf)
+
+    @property
+    def max_real_1_per_s(self) -> float:
+        """Largest real part (the least-damped mode); > 0 means unstable."""
+        return float(np.max(self.eigenvalues.real)) if len(self.eigenvalues) else float("nan")
+
+    @property
+    def stable(self) -> bool:
+        """Every eigenvalue has a negative real part (paper §6.2)."""
+        return self.status == "ok" and self.max_real_1_per_s < 0
+
+    def to_frame(self) -> pd.DataFrame:
+        """One row per mode: operating point, eigenvalue, frequency, damping, whirl, kind."""
+        n = len(self.eigenvalues)
+        e = self.linear.equilibrium
+        ay = float(e.config_ay_m[0]) if len(e.config_ay_m) else np.nan
+        return pd.DataFrame({
+            "speed_hz": np.full(n, self.speed_hz),
+            "chamber_pressure_pa": np.full(n, e.chamber_pressure_pa),
+            "config_ay_m": np.full(n, ay),
+            "mode": np.arange(1, n + 1, dtype=np.int64),
+            "freq_hz": self.frequencies_hz,
+            "eig_real_1_per_s": self.eigenvalues.real,
+            "damping_ratio": self.damping_ratio,
+            "log_dec": self.log_dec,
+            "whirl": pd.Categorical(self.whirl, categories=["forward", "backward", "planar"]),
+            "kind": pd.Categorical(self.kind, categories=["rotor", "sleeve"]),
+            "stable": np.full(n, self.stable),
+            "status": pd.Categorical([self.status] * n,
+                                     categories=["ok", "no_equilibrium", "contact",
+                                                 "not_converged", "error"]),
+            "message": [self.message] * n,
+        })
