@@ -33,7 +33,9 @@ from rotordyn.analysis import (
     rotor_campbell,
     stability,
     stability_boundary,
+    statespace,
     threshold,
+    unbalance_response,
 )
 from rotordyn.results import (
     CampbellResult,
@@ -92,6 +94,8 @@ __all__ = [
     "stability",
     "threshold",
     "stability_boundary",
+    "unbalance_response",
+    "statespace",
     "ModesResult",
     "LinearModel",
     "StabilityResult",

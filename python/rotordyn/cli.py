@@ -109,6 +109,107 @@ def _cmd_equilibrium(args) -> int:
     return 0 if e.status in ("ok", "contact") else 1
 
 
+# -- linear analyses (issue 5) -----------------------------------------------------------
+def _speeds(text: str) -> np.ndarray:
+    """"a:b:step" (inclusive) or "f1,f2,..." → speeds in Hz."""
+    try:
+        if ":" in text:
+            a, b, st = (float(x) for x in text.split(":"))
+            if st <= 0 or b < a:
+                raise ValueError
+            return np.arange(a, b + 0.5 * st, st)
+        return np.array([float(x) for x in text.split(",")])
+    except ValueError:
+        raise rotordyn.InputError(
+            f"--speeds-hz: expected 'start:stop:step' or a comma-separated list, got {text!r}"
+        ) from None
+
+
+def _cmd_stability(args) -> int:
+    s = rotordyn.models.load(args.model)
+    st = rotordyn.stability(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m)
+    if args.json:
+        print(_json({"status": st.status, "message": st.message, "stable": st.stable,
+                     "speed_hz": st.speed_hz, "max_real_1_per_s": st.max_real_1_per_s,
+                     "modes": st.to_frame()[["mode", "freq_hz", "eig_real_1_per_s",
+                                             "damping_ratio", "log_dec"]].to_dict("list")
+                     | {"whirl": list(st.whirl), "kind": list(st.kind)}}))
+    else:
+        print(st.to_frame().to_string(index=False))
+    return 0
+
+
+def _cmd_campbell(args) -> int:
+    s = rotordyn.models.load(args.model)
+    speeds = _speeds(args.speeds_hz)
+    if s.bearings:
+        c = rotordyn.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m)
+    else:
+        c = rotordyn.rotor_campbell(s, speeds)
+    crit = c.critical_speeds(harmonic=args.harmonic, whirl=None if args.all_whirl else "forward")
+    if args.json:
+        print(_json({"critical_speeds_hz": crit["speed_hz"].to_numpy(),
+                     "critical_speeds": crit.to_dict("records"),
+                     "speeds_hz": c.speeds_hz, "frequencies_hz": c.frequencies_hz,
+                     "point_status": list(c.point_status) if c.point_status is not None
+                     else None}))
+    else:
+        print(crit.to_string(index=False))
+    if args.plot:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        ax = c.plot()
+        ax.figure.savefig(args.plot, dpi=120, bbox_inches="tight")
+    return 0
+
+
+def _cmd_threshold(args) -> int:
+    s = rotordyn.models.load(args.model)
+    lo, hi = args.bounds
+    t = rotordyn.threshold(s, args.vary, bounds=(lo, hi), speed_hz=args.speed_hz,
+                           chamber_pressure_pa=args.chamber_pressure_pa,
+                           config_ay_m=args.config_ay_m, n_scan=args.n_scan)
+    payload = {args.vary: t.value, "whirl_frequency_hz": t.whirl_frequency_hz,
+               "whirl_ratio": t.whirl_ratio, "stable_side": t.stable_side,
+               "crossings": list(t.crossings), "status": t.status, "message": t.message,
+               "evaluations": t.evaluations}
+    print(_json(payload) if args.json else t.to_frame().to_string(index=False))
+    return 0
+
+
+def _cmd_unbalance(args) -> int:
+    s = rotordyn.models.load(args.model)
+    ub = []
+    for text in args.unbalance:
+        try:
+            st, me, ph = text.split(",")
+            ub.append((int(st), float(me), float(ph)))
+        except ValueError:
+            raise rotordyn.InputError(
+                f"--unbalance: expected STATION,MASS_KG_M,PHASE_DEG, got {text!r}") from None
+    u = rotordyn.unbalance_response(s, ub, _speeds(args.speeds_hz), stations=args.station,
+                                    chamber_pressure_pa=args.chamber_pressure_pa,
+                                    config_ay_m=args.config_ay_m,
+                                    operating_speed_hz=args.operating_speed_hz)
+    peaks = {int(st): u.peaks(st).to_dict("records") for st in u.stations}
+    if args.json:
+        print(_json({"stations": list(u.stations), "peaks": peaks,
+                     "response": u.to_frame().to_dict("list")}))
+    else:
+        for st in u.stations:
+            print(f"station {st}:")
+            print(u.peaks(st).to_string(index=False))
+    return 0
+
+
+def _add_operating_point(s, speed=True):
+    if speed:
+        s.add_argument("--speed-hz", type=float, default=50.0)
+    s.add_argument("--chamber-pressure-pa", type=float, default=0.0)
+    s.add_argument("--config-ay-m", type=float, default=None)
+
+
 # -- report (the main job of `make run`) --------------------------------------------------
 PAPER_ROTOR_HZ = (10.43, 43.04, 106.38)
 
@@ -177,6 +278,43 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=_cmd_equilibrium)
 
+    s = sub.add_parser("stability", help="eigenvalues of the linearised system (eq. 19)")
+    s.add_argument("model")
+    _add_operating_point(s)
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=_cmd_stability)
+
+    s = sub.add_parser("campbell", help="natural frequencies against speed; critical speeds")
+    s.add_argument("model")
+    s.add_argument("--speeds-hz", default="5:120:1", help="start:stop:step or a list")
+    _add_operating_point(s, speed=False)
+    s.add_argument("--harmonic", type=float, default=1.0)
+    s.add_argument("--all-whirl", action="store_true", help="backward crossings too")
+    s.add_argument("--plot", default=None, help="write the diagram to this PNG/SVG")
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=_cmd_campbell)
+
+    s = sub.add_parser("threshold", help="threshold of instability (max Re λ = 0)")
+    s.add_argument("model")
+    s.add_argument("--vary", choices=["chamber_pressure_pa", "config_ay_m", "speed_hz"],
+                   default="chamber_pressure_pa")
+    s.add_argument("--bounds", type=float, nargs=2, default=(0.0, 0.5e6), metavar=("LO", "HI"))
+    s.add_argument("--n-scan", type=int, default=11)
+    _add_operating_point(s)
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=_cmd_threshold)
+
+    s = sub.add_parser("unbalance", help="unbalance response, critical speeds, API 684 margins")
+    s.add_argument("model")
+    s.add_argument("--unbalance", action="append", required=True,
+                   metavar="STATION,MASS_KG_M,PHASE_DEG")
+    s.add_argument("--speeds-hz", default="5:120:1")
+    s.add_argument("--station", type=int, action="append", default=None)
+    s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None)
+    _add_operating_point(s, speed=False)
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=_cmd_unbalance)
+
     s = sub.add_parser("report", help="the main job: analyses of a model written under --out")
     s.add_argument("model")
     s.add_argument("--out", default="out")
@@ -216,6 +354,8 @@ def main(argv: list[str] | None = None) -> int:
     except rotordyn.RotordynError as exc:
         print(f"rotordyn: failed: {exc}", file=sys.stderr)
         return 1
+    except BrokenPipeError:  # output piped into e.g. `head`
+        return 0
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -123,6 +123,32 @@ class Assembled:
         self.solver = _core.SystemSolver(model)
         self.last_r: dict = {}
 
+    def station_load_matrix(self, station: int) -> np.ndarray:
+        """(n, 2) map from a force (Fx, Fy) at a rotor station (N) to generalised forces on r
+        (consistent with the reduction: Tᵀ f)."""
+        return self.station_output_matrix(station).T
+
+    def station_output_matrix(self, station: int) -> np.ndarray:
+        """(2, n) map from r to the x, y displacement of a rotor station (m), through the
+        reduction's transformation (zero on sleeve coordinates). InputError for a station
+        with a rigid support or out of range."""
+        nst = self.system.rotor.n_stations
+        if isinstance(station, bool) or not isinstance(station, (int, np.integer)) \
+                or not 0 <= station < nst:
+            raise InputError(f"station: expected an integer in [0, {nst - 1}], got {station!r}")
+        node = int(self.system.rotor.station_nodes()[station])
+        full = self.rotor.full
+        out = np.zeros((2, self.n))
+        for k in (0, 1):
+            loc = full.local(4 * node + k)
+            if loc < 0:
+                continue  # rigidly supported: no motion, no work
+            if self.rotor.reduction is None:
+                out[k, loc] = 1.0
+            else:
+                out[k, : self.n_rotor] = np.asarray(self.rotor.reduction.T)[loc]
+        return out
+
     def config_vector(self, config_ay_m=None, config_ax_m=None) -> np.ndarray:
         """(n,) configuration a_r (eq. 13): each bearing's housing offset at its journal
         coordinates; ``config_ay_m``/``config_ax_m`` override the active bearing's values (or

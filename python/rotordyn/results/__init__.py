@@ -4,5 +4,9 @@ from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.results.modes import ModesResult
 from rotordyn.results.stability import LinearModel, StabilityResult
+from rotordyn.results.threshold import BoundaryResult, ThresholdResult
+from rotordyn.results.statespace import StateSpaceResult
+from rotordyn.results.unbalance import UnbalanceResult
 
-__all__ = ["ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel", "StabilityResult"]
+__all__ = ["ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel", "StabilityResult",
+           "ThresholdResult", "BoundaryResult", "UnbalanceResult", "StateSpaceResult"]

@@ -1,0 +1,101 @@
+"""State-space export of the linearised system for control-law synthesis (paper eq. 19: the
+chamber-pressure fluctuation ΔC and excitation forces F as inputs)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.linear import linearize
+from rotordyn.errors import InputError
+from rotordyn.model.system import System
+from rotordyn.results.statespace import StateSpaceResult
+
+
+def _parse(item, kinds, field):
+    if isinstance(item, str):
+        item = (item,)
+    if not isinstance(item, tuple) or not item or item[0] not in kinds:
+        raise InputError(f"{field}: expected one of {kinds} (with a station or bearing index "
+                         f"where needed), got {item!r}")
+    return item
+
+
+def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
+               speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
+               config_ay_m: float | None = None, **kw) -> StateSpaceResult:
+    """(A, B, C, D) of the linearised system about its equilibrium.
+
+    inputs: ``"chamber_pressure"`` (Pa, every active bearing's ΔC_s of eq. 11), or
+    ``("chamber_pressure", bearing_index)``, or ``("force", station)`` (two inputs Fx, Fy, N).
+    outputs: ``("displacement", station)`` (x, y in m), ``("velocity", station)`` (m/s),
+    ``("journal", bearing_index)`` (journal x, y relative to the housing, m),
+    ``("sleeve", bearing_index)`` (sleeve masters, m). Default: the journal of every bearing.
+    """
+    lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, **kw)
+    if lm.status not in ("ok", "contact"):
+        raise InputError(f"statespace: no equilibrium at this operating point ({lm.status}: "
+                         f"{lm.equilibrium.message})")
+    asm = assembled(system)
+    n = asm.n
+    Minv = np.linalg.inv(lm.M)
+    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ lm.K, -Minv @ lm.D]])
+    names = list(lm.labels)
+    states = tuple(names + [f"d({s})/dt" for s in names])
+
+    bcols, in_names = [], []
+    for item in inputs:
+        item = _parse(item, ("chamber_pressure", "force"), "inputs")
+        if item[0] == "chamber_pressure":
+            idx = [bc for bc in asm.bearings if bc.sleeve]
+            if len(item) > 1:
+                idx = [bc for bc in asm.bearings if bc.index == item[1] and bc.sleeve]
+            if not idx:
+                raise InputError(f"inputs: {item!r} needs an active bearing")
+            f = np.zeros(n)
+            for bc in idx:
+                f[list(bc.sleeve)] = lm.chamber[list(bc.sleeve)]
+            bcols.append(f)
+            in_names.append("chamber_pressure_pa" if len(item) == 1 else
+                            f"chamber_pressure_pa[{item[1]}]")
+        else:
+            if len(item) != 2:
+                raise InputError(f"inputs: expected ('force', station), got {item!r}")
+            L = asm.station_load_matrix(item[1])
+            bcols += [L[:, 0], L[:, 1]]
+            in_names += [f"force_x_n[{item[1]}]", f"force_y_n[{item[1]}]"]
+    B = np.vstack([np.zeros((n, len(bcols))), Minv @ np.column_stack(bcols)]) if bcols \
+        else np.zeros((2 * n, 0))
+
+    if not outputs:
+        outputs = [("journal", bc.index) for bc in asm.bearings]
+    crows, out_names = [], []
+    for item in outputs:
+        item = _parse(item, ("displacement", "velocity", "journal", "sleeve"), "outputs")
+        if len(item) != 2:
+            raise InputError(f"outputs: expected (kind, station or bearing), got {item!r}")
+        kind, where = item
+        if kind in ("displacement", "velocity"):
+            Co = asm.station_output_matrix(where)
+            z = np.zeros_like(Co)
+            rows = np.hstack([Co, z]) if kind == "displacement" else np.hstack([z, Co])
+            unit = "m" if kind == "displacement" else "m_s"
+            crows += list(rows)
+            out_names += [f"{kind}_x_{unit}[{where}]", f"{kind}_y_{unit}[{where}]"]
+        else:
+            bcs = [bc for bc in asm.bearings if bc.index == where]
+            if not bcs:
+                raise InputError(f"outputs: no bearing with index {where!r}")
+            bc = bcs[0]
+            idx = [bc.jx, bc.jy] if kind == "journal" else list(bc.sleeve)
+            if not idx:
+                raise InputError(f"outputs: bearing {where} has no sleeve")
+            for j, ci in enumerate(idx):
+                row = np.zeros(2 * n)
+                row[ci] = 1.0
+                crows.append(row)
+                out_names.append(f"journal_{'xy'[j]}_m[{where}]" if kind == "journal"
+                                 else f"sleeve_{j + 1}_m[{where}]")
+    C = np.vstack(crows)
+    D = np.zeros((C.shape[0], B.shape[1]))
+    return StateSpaceResult(A, B, C, D, tuple(in_names), tuple(out_names), states, lm)

@@ -1,0 +1,62 @@
+"""Linear state-space model for control-law synthesis (paper eq. 19)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from rotordyn.results.stability import LinearModel
+
+
+@dataclass(frozen=True)
+class StateSpaceResult:
+    """ẋ = A x + B u, y = C x + D u with x = [Δr; Δṙ] about the equilibrium.
+
+    A (2n, 2n), B (2n, n_u), C (n_y, 2n), D (n_y, n_u), SI units: inputs in Pa (chamber
+    pressure fluctuation ΔC of eq. 11) or N (forces), outputs in m or m/s.
+    """
+
+    A: np.ndarray
+    B: np.ndarray
+    C: np.ndarray
+    D: np.ndarray
+    input_names: tuple
+    output_names: tuple
+    state_names: tuple
+    linear: LinearModel
+
+    @property
+    def poles(self) -> np.ndarray:
+        return np.linalg.eigvals(self.A)
+
+    def frequency_response(self, freqs_hz) -> np.ndarray:
+        """G(iω) = C (iωI − A)⁻¹ B + D at each frequency, (n_f, n_y, n_u) complex."""
+        f = np.atleast_1d(np.asarray(freqs_hz, dtype=float))
+        n = self.A.shape[0]
+        out = np.empty((f.size, self.C.shape[0], self.B.shape[1]), dtype=complex)
+        for i, fi in enumerate(f):
+            out[i] = self.C @ np.linalg.solve(2j * np.pi * fi * np.eye(n) - self.A, self.B) + self.D
+        return out
+
+    def to_control(self):
+        """A python-control ``StateSpace`` (needs the optional ``control`` package)."""
+        try:
+            import control
+        except ImportError as exc:  # pragma: no cover - depends on the environment
+            raise ImportError("to_control() needs python-control: pip install control") from exc
+        return control.ss(self.A, self.B, self.C, self.D, inputs=list(self.input_names),
+                          outputs=list(self.output_names), states=list(self.state_names))
+
+    def to_frame(self) -> pd.DataFrame:
+        """The matrices as a tidy table (matrix, row, col, value)."""
+        rows = []
+        for name, M, rn, cn in (("A", self.A, self.state_names, self.state_names),
+                                ("B", self.B, self.state_names, self.input_names),
+                                ("C", self.C, self.output_names, self.state_names),
+                                ("D", self.D, self.output_names, self.input_names)):
+            for i in range(M.shape[0]):
+                for j in range(M.shape[1]):
+                    rows.append((name, rn[i], cn[j], M[i, j]))
+        return pd.DataFrame(rows, columns=["matrix", "row", "col", "value"])
