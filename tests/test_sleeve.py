@@ -139,6 +139,9 @@ def test_paper_rig_condensed_frequencies_near_paper():
     assert_allclose(res.freq_condensed_hz, PAPER_HZ, rtol=0.08)
     gap = res.freq_condensed_hz / res.freq_full_hz[:3] - 1.0
     assert np.all(gap[:2] < 0.02) and 0.03 < gap[2] < 0.10
+    # Mode shapes: the expanded condensed modes match the full ones (mass-weighted MAC).
+    mac = res.modal_assurance()
+    assert np.all(np.diag(mac)[:2] > 0.999) and mac[2, 2] > 0.95
     # Ms and Ks are symmetric positive definite.
     for A in (res.mass_matrix, res.stiffness_matrix):
         assert_allclose(A, A.T, rtol=1e-12, atol=0)
