@@ -183,6 +183,7 @@ def test_chamber_load_is_virtual_work_of_outer_face_pressure():
     # Film angles may be given modulo 2π.
     assert_allclose(res.chamber_load(a - 2 * math.pi, b - 2 * math.pi), ref, rtol=1e-7)
     assert np.all(res.chamber_load() > 0)
+    assert_allclose(res.transformation.T @ res.chamber_load_full(a, b), ref, rtol=1e-7)
     with pytest.raises(rotordyn.InputError, match="chamber"):
         res.chamber_load(sl.clamp_phi_rad - 0.1, b)
     with pytest.raises(rotordyn.InputError, match="chamber"):

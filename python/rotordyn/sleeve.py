@@ -277,6 +277,15 @@ class SleeveResult:
         return cross**2 / np.outer(np.einsum("ij,ik,kj->j", vf, M, vf),
                                    np.einsum("ij,ik,kj->j", ve, M, ve))
 
+    def chamber_load_full(self, start_phi_rad: float | None = None,
+                          end_phi_rad: float | None = None) -> np.ndarray:
+        """(3n,) the same chamber load as consistent nodal loads on the full DOFs (x, y, v of
+        nodes 1 … n), m² (N and N·m per Pa); ``chamber_load = transformation.T @ this``."""
+        s = self.sleeve
+        a = s.clamp_phi_rad if start_phi_rad is None else _number("start_phi_rad", start_phi_rad)
+        b = s.free_end_phi_rad if end_phi_rad is None else _number("end_phi_rad", end_phi_rad)
+        return np.asarray(self._core_result.chamber_load_full(a, b))
+
     def _masters(self, r_s) -> np.ndarray:
         r = np.asarray(r_s, dtype=float)
         n_m = self.mass_matrix.shape[0]
