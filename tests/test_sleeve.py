@@ -165,6 +165,8 @@ def test_interpolation_matrix_conventions():
     phi = res.node_phi_rad[1:]
     w_nodes = -(q[:, 0] * np.cos(phi) + q[:, 1] * np.sin(phi))
     assert_allclose(res.radial_displacement(rs, phi), w_nodes, rtol=0, atol=1e-12 * 3e-5)
+    assert_allclose(res.interpolation_matrix_full(phi) @ res.expand(rs), w_nodes, rtol=0,
+                    atol=1e-12 * 3e-5)
 
 
 def test_chamber_load_is_virtual_work_of_outer_face_pressure():

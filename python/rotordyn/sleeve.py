@@ -241,6 +241,13 @@ class SleeveResult:
             raise InputError("phi_rad: expected finite angles")
         return np.asarray(self._core_result.interpolation(phi))
 
+    def interpolation_matrix_full(self, phi_rad) -> np.ndarray:
+        """(n_phi, 3n) the same on the full DOFs: ``interpolation_matrix = this @ T``."""
+        phi = np.atleast_1d(np.asarray(phi_rad, dtype=float))
+        if phi.ndim != 1 or not np.all(np.isfinite(phi)):
+            raise InputError(f"phi_rad: expected a 1-D array of finite angles, got {phi!r}")
+        return np.asarray(self._core_result.interpolation_full(phi))
+
     def radial_displacement(self, r_s, phi_rad) -> np.ndarray:
         """Inward radial displacement w (m) at ``phi_rad`` for master coordinates ``r_s`` (m)."""
         return self.interpolation_matrix(phi_rad) @ self._masters(r_s)

@@ -148,7 +148,8 @@ struct SleeveCondensation {
   Eigen::MatrixXd expand(const Eigen::MatrixXd& r_s) const;
   /// (n_phi, n_m) matrix W with w(φ_k) = Σ_j W_kj r_s,j: inward radial displacement of the
   /// sleeve centre line at film angles phi (rad, any real value, wrapped to the sleeve), from
-  /// the exact element shape functions. Angles outside the sleeve's arc give zero rows.
+  /// the exact element shape functions. Angles outside the sleeve's arc give zero rows (for a
+  /// 360° sleeve the free end's angle is the clamp's and maps to the clamp, w = 0).
   Eigen::MatrixXd interpolation(const Eigen::VectorXd& phi) const;
   /// (n_phi, 3n) the same on the full DOFs: w(φ_k) = Σ_i W_full,ki q_i (interpolation =
   /// interpolation_full · T).
