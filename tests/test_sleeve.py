@@ -139,6 +139,9 @@ def test_paper_rig_condensed_frequencies_near_paper():
     assert_allclose(res.freq_condensed_hz, PAPER_HZ, rtol=0.08)
     gap = res.freq_condensed_hz / res.freq_full_hz[:3] - 1.0
     assert np.all(gap[:2] < 0.02) and 0.03 < gap[2] < 0.10
+    # Mode shapes: the expanded condensed modes match the full ones (mass-weighted MAC).
+    mac = res.modal_assurance()
+    assert np.all(np.diag(mac)[:2] > 0.999) and mac[2, 2] > 0.95
     # Ms and Ks are symmetric positive definite.
     for A in (res.mass_matrix, res.stiffness_matrix):
         assert_allclose(A, A.T, rtol=1e-12, atol=0)
@@ -162,6 +165,8 @@ def test_interpolation_matrix_conventions():
     phi = res.node_phi_rad[1:]
     w_nodes = -(q[:, 0] * np.cos(phi) + q[:, 1] * np.sin(phi))
     assert_allclose(res.radial_displacement(rs, phi), w_nodes, rtol=0, atol=1e-12 * 3e-5)
+    assert_allclose(res.interpolation_matrix_full(phi) @ res.expand(rs), w_nodes, rtol=0,
+                    atol=1e-12 * 3e-5)
 
 
 def test_chamber_load_is_virtual_work_of_outer_face_pressure():
@@ -180,6 +185,7 @@ def test_chamber_load_is_virtual_work_of_outer_face_pressure():
     # Film angles may be given modulo 2π.
     assert_allclose(res.chamber_load(a - 2 * math.pi, b - 2 * math.pi), ref, rtol=1e-7)
     assert np.all(res.chamber_load() > 0)
+    assert_allclose(res.transformation.T @ res.chamber_load_full(a, b), ref, rtol=1e-7)
     with pytest.raises(rotordyn.InputError, match="chamber"):
         res.chamber_load(sl.clamp_phi_rad - 0.1, b)
     with pytest.raises(rotordyn.InputError, match="chamber"):

@@ -92,6 +92,12 @@ void bind_sleeve(py::module_& m) {
       .def("interpolation", &SleeveCondensation::interpolation, py::arg("phi"),
            py::call_guard<py::gil_scoped_release>(),
            "(n_phi, n_m) inward radial displacement w(phi) per master coordinate.")
+      .def("interpolation_full", &SleeveCondensation::interpolation_full, py::arg("phi"),
+           py::call_guard<py::gil_scoped_release>(),
+           "(n_phi, 3n) inward radial displacement w(phi) per full DOF.")
+      .def("chamber_load_full", &SleeveCondensation::chamber_load_full, py::arg("phi_start"),
+           py::arg("phi_end"), py::call_guard<py::gil_scoped_release>(),
+           "(3n,) consistent full-DOF load per unit chamber pressure, m^2.")
       .def("chamber_load", &SleeveCondensation::chamber_load, py::arg("phi_start"),
            py::arg("phi_end"), py::call_guard<py::gil_scoped_release>(),
            "(n_m,) generalized master force per unit chamber pressure, m^2.");

@@ -383,40 +383,46 @@ Eigen::MatrixXd SleeveCondensation::expand(const Eigen::MatrixXd& r_s) const {
 }
 
 namespace {
-// Row (1, n_m) of the inward radial displacement at the absolute arc angle θ (clamp + rel).
-Eigen::RowVectorXd radial_row(const SleeveCondensation& c, double rel) {
-  const int n = c.model.n_elements;
-  const double h = c.model.geometry.arc / n;
-  const int e = std::clamp(static_cast<int>(std::floor(rel / h)), 0, n - 1);
+// Row (1, 3n) over the full DOFs: inward radial displacement of the centre line at the arc
+// position `rel` (angle from the clamp), from element e's exact shape functions.
+Eigen::RowVectorXd radial_row_full(const SleeveCondensation& c, int e, double rel) {
   const CurvedBeamElement& el = c.mesh.elements[static_cast<std::size_t>(e)];
   const double th = std::clamp(c.model.geometry.clamp_angle + rel, el.theta_a(), el.theta_b());
   Eigen::RowVector3d er;
   er << -std::cos(th), -std::sin(th), 0.0;
   const Eigen::Matrix<double, 1, 6> re = er * el.shape(th);
-  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(c.T.cols());
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(3 * c.model.n_elements);
   for (int k = 0; k < 2; ++k) {
     const int node = e + k;
     if (node == 0) continue;  // clamped
-    for (int i = 0; i < 3; ++i) row.noalias() += re(3 * k + i) * c.T.row(3 * (node - 1) + i);
+    row.segment<3>(3 * (node - 1)) += re.segment<3>(3 * k);
   }
   return row;
 }
 }  // namespace
 
-Eigen::MatrixXd SleeveCondensation::interpolation(const Eigen::VectorXd& phi) const {
+Eigen::MatrixXd SleeveCondensation::interpolation_full(const Eigen::VectorXd& phi) const {
   const double arc = model.geometry.arc;
-  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(phi.size(), T.cols());
+  const int n = model.n_elements;
+  const double h = arc / n;
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(phi.size(), 3 * n);
   for (Eigen::Index k = 0; k < phi.size(); ++k) {
     require(std::isfinite(phi(k)), "phi[" + std::to_string(k) + "]: expected a finite angle");
     double rel = wrap(phi(k) - model.geometry.clamp_angle);
-    if (rel > kTwoPi - 1e-12) rel = 0.0;  // rounding just below the clamp
+    if (rel > kTwoPi - 1e-12) rel = 0.0;       // rounding just below the clamp
     if (rel > arc + 1e-12 * kTwoPi) continue;  // outside the sleeve: rigid bush, w = 0
-    W.row(k) = radial_row(*this, std::min(rel, arc));
+    rel = std::min(rel, arc);
+    const int e = std::clamp(static_cast<int>(std::floor(rel / h)), 0, n - 1);
+    W.row(k) = radial_row_full(*this, e, rel);
   }
   return W;
 }
 
-Eigen::VectorXd SleeveCondensation::chamber_load(double phi_start, double phi_end) const {
+Eigen::MatrixXd SleeveCondensation::interpolation(const Eigen::VectorXd& phi) const {
+  return interpolation_full(phi) * T;
+}
+
+Eigen::VectorXd SleeveCondensation::chamber_load_full(double phi_start, double phi_end) const {
   const double arc = model.geometry.arc;
   require(std::isfinite(phi_start) && std::isfinite(phi_end),
           "chamber: expected finite start and end angles");
@@ -435,29 +441,21 @@ Eigen::VectorXd SleeveCondensation::chamber_load(double phi_start, double phi_en
   const int n = model.n_elements;
   const double h = arc / n;
   const GaussRule& g = gauss();
-  Eigen::VectorXd cs = Eigen::VectorXd::Zero(T.cols());
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * n);
   for (int e = 0; e < n; ++e) {
     const double a = std::max(rs, e * h), b = std::min(std::min(re, arc), (e + 1) * h);
     if (b <= a) continue;
     const double half = 0.5 * (b - a);
-    for (int q = 0; q < kGauss; ++q) {
-      const double rel = a + half * (g.x[q] + 1.0);
-      // Element e explicitly (rel may sit on a node); same field from either side.
-      const CurvedBeamElement& el = mesh.elements[static_cast<std::size_t>(e)];
-      const double th = std::clamp(model.geometry.clamp_angle + rel, el.theta_a(), el.theta_b());
-      Eigen::RowVector3d er;
-      er << -std::cos(th), -std::sin(th), 0.0;
-      const Eigen::Matrix<double, 1, 6> rw = er * el.shape(th);
-      for (int k = 0; k < 2; ++k) {
-        const int node = e + k;
-        if (node == 0) continue;
-        for (int i = 0; i < 3; ++i)
-          cs.noalias() += (g.w[q] * half * outer * model.section.width * rw(3 * k + i)) *
-                          T.row(3 * (node - 1) + i).transpose();
-      }
-    }
+    // Element e explicitly (a point may sit on a node; the field is continuous there).
+    for (int q = 0; q < kGauss; ++q)
+      f.noalias() += (g.w[q] * half * outer * model.section.width) *
+                     radial_row_full(*this, e, a + half * (g.x[q] + 1.0)).transpose();
   }
-  return cs;
+  return f;
+}
+
+Eigen::VectorXd SleeveCondensation::chamber_load(double phi_start, double phi_end) const {
+  return T.transpose() * chamber_load_full(phi_start, phi_end);
 }
 
 }  // namespace rotordyn

@@ -190,6 +190,8 @@ class FlexibleSleeve:
             mass_matrix=np.asarray(c.Ms),
             stiffness_matrix=np.asarray(c.Ks),
             transformation=np.asarray(c.T),
+            full_mass_matrix=np.asarray(c.M_full),
+            full_stiffness_matrix=np.asarray(c.K_full),
             node_phi_rad=nodes,
             master_phi_rad=np.asarray(c.master_angles),
             _core_result=c,
@@ -208,6 +210,8 @@ class SleeveResult:
     mass_matrix, stiffness_matrix : (n_m, n_m) Ms (kg) and Ks (N/m) on the inward radial
         master coordinates r_s (m).
     transformation : (3n, n_m) full DOFs (x, y, v of nodes 1 … n) = T r_s.
+    full_mass_matrix, full_stiffness_matrix : (3n, 3n) clamped full FEM, global DOFs
+        (x_g, y_g, v_g) of nodes 1 … n.
     node_phi_rad : (n + 1,) film angles of the nodes, clamp first (not wrapped).
     master_phi_rad : (n_m,) film angles of the master stations.
     """
@@ -219,6 +223,8 @@ class SleeveResult:
     mass_matrix: np.ndarray
     stiffness_matrix: np.ndarray
     transformation: np.ndarray
+    full_mass_matrix: np.ndarray
+    full_stiffness_matrix: np.ndarray
     node_phi_rad: np.ndarray
     master_phi_rad: np.ndarray
     _core_result: Any = field(repr=False, compare=False)
@@ -234,6 +240,13 @@ class SleeveResult:
         if not np.all(np.isfinite(phi)):
             raise InputError("phi_rad: expected finite angles")
         return np.asarray(self._core_result.interpolation(phi))
+
+    def interpolation_matrix_full(self, phi_rad) -> np.ndarray:
+        """(n_phi, 3n) the same on the full DOFs: ``interpolation_matrix = this @ T``."""
+        phi = np.atleast_1d(np.asarray(phi_rad, dtype=float))
+        if phi.ndim != 1 or not np.all(np.isfinite(phi)):
+            raise InputError(f"phi_rad: expected a 1-D array of finite angles, got {phi!r}")
+        return np.asarray(self._core_result.interpolation_full(phi))
 
     def radial_displacement(self, r_s, phi_rad) -> np.ndarray:
         """Inward radial displacement w (m) at ``phi_rad`` for master coordinates ``r_s`` (m)."""
@@ -254,6 +267,31 @@ class SleeveResult:
         a = s.clamp_phi_rad if start_phi_rad is None else _number("start_phi_rad", start_phi_rad)
         b = s.free_end_phi_rad if end_phi_rad is None else _number("end_phi_rad", end_phi_rad)
         return np.asarray(self._core_result.chamber_load(a, b))
+
+    def modal_assurance(self) -> np.ndarray:
+        """(n_m, n_m) mass-weighted MAC between the first n_m full-model modes (rows) and the
+        condensed modes expanded with T (columns); 1 on the diagonal means the condensed model
+        reproduces the full mode shape (the paper: "almost identical eigenvectors up to the
+        second mode")."""
+        from scipy.linalg import eigh
+
+        n_m = self.mass_matrix.shape[0]
+        M = self.full_mass_matrix
+        _, vf = eigh(self.full_stiffness_matrix, M, subset_by_index=[0, n_m - 1])
+        _, vc = eigh(self.stiffness_matrix, self.mass_matrix)
+        ve = self.transformation @ vc
+        cross = vf.T @ M @ ve
+        return cross**2 / np.outer(np.einsum("ij,ik,kj->j", vf, M, vf),
+                                   np.einsum("ij,ik,kj->j", ve, M, ve))
+
+    def chamber_load_full(self, start_phi_rad: float | None = None,
+                          end_phi_rad: float | None = None) -> np.ndarray:
+        """(3n,) the same chamber load as consistent nodal loads on the full DOFs (x, y, v of
+        nodes 1 … n), m² (N and N·m per Pa); ``chamber_load = transformation.T @ this``."""
+        s = self.sleeve
+        a = s.clamp_phi_rad if start_phi_rad is None else _number("start_phi_rad", start_phi_rad)
+        b = s.free_end_phi_rad if end_phi_rad is None else _number("end_phi_rad", end_phi_rad)
+        return np.asarray(self._core_result.chamber_load_full(a, b))
 
     def _masters(self, r_s) -> np.ndarray:
         r = np.asarray(r_s, dtype=float)

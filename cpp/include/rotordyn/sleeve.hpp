@@ -148,13 +148,20 @@ struct SleeveCondensation {
   Eigen::MatrixXd expand(const Eigen::MatrixXd& r_s) const;
   /// (n_phi, n_m) matrix W with w(φ_k) = Σ_j W_kj r_s,j: inward radial displacement of the
   /// sleeve centre line at film angles phi (rad, any real value, wrapped to the sleeve), from
-  /// the exact element shape functions. Angles outside the sleeve's arc give zero rows.
+  /// the exact element shape functions. Angles outside the sleeve's arc give zero rows (for a
+  /// 360° sleeve the free end's angle is the clamp's and maps to the clamp, w = 0).
   Eigen::MatrixXd interpolation(const Eigen::VectorXd& phi) const;
+  /// (n_phi, 3n) the same on the full DOFs: w(φ_k) = Σ_i W_full,ki q_i (interpolation =
+  /// interpolation_full · T).
+  Eigen::MatrixXd interpolation_full(const Eigen::VectorXd& phi) const;
   /// (n_m,) generalized force on the masters per unit chamber pressure (m²): c_s with
   /// C_s0 = p_c c_s (eq. 11), from the virtual work of a uniform pressure on the outer face
   /// (radius R + d/2, width b) over the film-angle interval [phi_start, phi_end] (rad, inside
   /// the sleeve's arc, measured from the clamp in the direction of rotation).
   Eigen::VectorXd chamber_load(double phi_start, double phi_end) const;
+  /// (3n,) consistent load of the same pressure on the full DOFs, N/Pa (chamber_load =
+  /// Tᵀ · chamber_load_full).
+  Eigen::VectorXd chamber_load_full(double phi_start, double phi_end) const;
 };
 
 /// Validate the model (InputError naming the field and range), build, condense.
