@@ -22,8 +22,20 @@ PAPER_SLEEVE_HZ = (490.2, 1754.2, 6175.8)
 
 
 def load_sleeve(model: str) -> FlexibleSleeve:
-    """The built-in ``paper-rig`` sleeve or the ``[sleeve]`` table of a TOML file."""
-    if model in ("paper-rig", "paper_rig"):
+    """The sleeve of the model's active journal bearing (a built-in name such as
+    ``paper-rig``, or a model TOML with an ``active_journal`` bearing), or the ``[sleeve]``
+    table of a TOML file."""
+    from rotordyn import models
+    from rotordyn.model.bearings import ActiveJournalBearing
+
+    if model in models.BUILTIN or (model.endswith(".toml") and Path(model).is_file()
+                                   and "[[bearing]]" in Path(model).read_text()):
+        system = models.load(model)
+        for b in system.bearings:
+            if isinstance(b, ActiveJournalBearing):
+                return b.sleeve
+        raise InputError(f"model: {model!r} has no active journal bearing (no sleeve)")
+    if model == "paper_rig":
         return paper_rig_sleeve()
     path = Path(model)
     if not path.is_file():
