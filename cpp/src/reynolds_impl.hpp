@@ -10,6 +10,29 @@
 
 namespace rotordyn {
 
+/// Eigen's up-looking LDLT, refactorised on a sub-pattern of the analysed one. The numeric
+/// phase derives each row's pattern from the entries it is given (walking the elimination tree
+/// of the analysed pattern), so dropping zero couplings is valid and skips their work; the
+/// column slots it leaves unwritten would keep stale values from an earlier factorisation, so
+/// they are cleared (row index = column, value 0: ignored by the triangular solves).
+class SubPatternLDLT
+    : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double, Eigen::ColMajor, int>, Eigen::Lower,
+                                   Eigen::AMDOrdering<int>> {
+ public:
+  void factorize_subpattern(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& a) {
+    factorize(a);
+    const int n = static_cast<int>(m_matrix.cols());
+    const int* Lp = m_matrix.outerIndexPtr();
+    int* Li = m_matrix.innerIndexPtr();
+    double* Lx = m_matrix.valuePtr();
+    for (int i = 0; i < n; ++i)
+      for (int q = Lp[i] + m_nonZerosPerCol[i]; q < Lp[i + 1]; ++q) {
+        Li[q] = i;
+        Lx[q] = 0.0;
+      }
+  }
+};
+
 struct ReynoldsSolver::Impl {
   using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
@@ -30,11 +53,12 @@ struct ReynoldsSolver::Impl {
 
   // Sparse pattern: full symmetric 5-point stencil over the unknowns (explicit zeros kept).
   SpMat A;
+  SpMat Ap;  // A without the zero couplings of decoupled unknowns (sub-pattern, cheaper LDLT)
   struct ColPos {
     int diag, e, w, n, s;  // value positions of (i,i), (E,i), (W,i), (N,i), (S,i); -1: none
   };
   std::vector<ColPos> pos;
-  Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  SubPatternLDLT ldlt;
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
   bool lu_analysed = false;
 
@@ -66,7 +90,7 @@ struct ReynoldsSolver::Impl {
   void base_rhs(Eigen::VectorXd& b) const;
   // A's values; mask (unknown-indexed, may be null) decouples masked unknowns (identity rows).
   void fill_spd(const std::vector<char>* mask);
-  void factor_spd();
+  void factor_spd(bool prune = false);
   // Residual (outflow + storage) of node n's cell for node pressures pp and fill theta.
   double cell_residual(int n, const std::vector<double>& pp) const;
 

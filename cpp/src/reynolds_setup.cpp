@@ -257,8 +257,14 @@ void ReynoldsSolver::Impl::fill_spd(const std::vector<char>* mask) {
   }
 }
 
-void ReynoldsSolver::Impl::factor_spd() {
-  ldlt.factorize(A);
+void ReynoldsSolver::Impl::factor_spd(bool prune) {
+  if (prune) {
+    Ap = A;
+    Ap.prune([](const int&, const int&, const double& v) { return v != 0.0; });
+    ldlt.factorize_subpattern(Ap);
+  } else {
+    ldlt.factorize(A);
+  }
   if (ldlt.info() != Eigen::Success)
     throw ConvergenceError("Reynolds operator: sparse LDLT factorisation failed");
   factor = Factor::ldlt;

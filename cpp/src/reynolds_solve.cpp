@@ -39,7 +39,7 @@ void ReynoldsSolver::Impl::solve_reynolds() {
   const int max_iter = 100 + n_unk / 4;
   for (int it = 1; it <= max_iter; ++it) {
     fill_spd(&active);
-    factor_spd();
+    factor_spd(true);
     Eigen::VectorXd b = rhs;
     for (int i = 0; i < n_unk; ++i)
       if (active[i]) b[i] = 0.0;
