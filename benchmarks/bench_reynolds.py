@@ -211,14 +211,55 @@ def median_time(fn, points, repeat):
     return statistics.median(per)
 
 
-def bench_ross(n_circ, n_axial, repeat):
-    """ROSS's fluid-flow bearing on the same geometry and grid (optional)."""
+ROSS_SNIPPET = r"""
+import json, math, statistics, sys, time, warnings
+warnings.filterwarnings("ignore")
+from ross.bearings.fluid_flow import FluidFlow
+from ross.bearings.fluid_flow_coefficients import (calculate_oil_film_force,
+    calculate_stiffness_and_damping_coefficients)
+D, L, c, mu, f, x, y, nc, na, repeat = (float(a) for a in sys.argv[1:])
+nc, na, repeat = int(nc), int(na), int(repeat)
+R, omega = D / 2, 2 * math.pi * f
+def force():
+    ff = FluidFlow(nz=na + 1, ntheta=nc + 1, length=L, omega=omega, p_in=0.0, p_out=0.0,
+                   radius_rotor=R, radius_stator=R + c, viscosity=mu, density=860.0,
+                   eccentricity=math.hypot(x, y), attitude_angle=math.pi / 4,
+                   immediately_calculate_pressure_matrix_numerically=False)
+    ff.calculate_pressure_matrix_numerical()
+    return ff, calculate_oil_film_force(ff, force_type="numerical")
+tf, tk = [], []
+for _ in range(repeat):
+    t0 = time.perf_counter(); ff, F = force(); tf.append(time.perf_counter() - t0)
+for _ in range(max(1, repeat // 2)):
+    t0 = time.perf_counter(); calculate_stiffness_and_damping_coefficients(ff)
+    tk.append(time.perf_counter() - t0)
+print(json.dumps({"force_s": statistics.median(tf), "kc_s": statistics.median(tk),
+                  "force_n": float(math.hypot(F[0], F[1]))}))
+"""
+
+
+def bench_ross(n_circ, n_axial, repeat, ross_python=None):
+    """ROSS 2.x ``FluidFlow`` (finite differences, solve-then-clip film, pure Python assembly) on
+    the same bearing and grid, no groove; run in-process if ``ross`` imports, else in the
+    interpreter ``ross_python`` (a separate venv, since ROSS is never our dependency)."""
+    import json
+    import subprocess
+
+    exe = None
     try:
         import ross  # noqa: F401
-        from ross.bearings.fluid_flow import FluidFlow  # type: ignore
-    except Exception as exc:  # pragma: no cover - optional
-        return None, f"ross not importable ({type(exc).__name__})"
-    return None, "ross importable but no comparable call wired (see docs/journal-bearing.md)"
+
+        exe = sys.executable
+    except Exception:
+        exe = ross_python
+    if exe is None:
+        return None
+    args = [str(v) for v in (D, L, C_RAD, MU, SPEED_HZ, *POS, n_circ, n_axial, repeat)]
+    r = subprocess.run([exe, "-c", ROSS_SNIPPET, *args], capture_output=True, text=True,
+                       timeout=3600)
+    if r.returncode != 0:
+        return {"error": r.stderr.strip().splitlines()[-1] if r.stderr.strip() else "failed"}
+    return json.loads(r.stdout.strip().splitlines()[-1])
 
 
 def main(argv=None):
@@ -227,6 +268,8 @@ def main(argv=None):
     ap.add_argument("--points", type=int, default=32, help="orbit points per repeat")
     ap.add_argument("--no-scipy", action="store_true")
     ap.add_argument("--wall", action="store_true", help="wall-clock instead of thread CPU time")
+    ap.add_argument("--ross-python", default=None,
+                    help="python of a venv with ross-rotordynamics (used if ross is not importable)")
     args = ap.parse_args(argv)
     global CLOCK
     if args.wall:
@@ -273,8 +316,28 @@ def main(argv=None):
                 line += (f" {t_sf * 1e6:>7.0f}us {t_skc * 1e6:>7.0f}us {t_sf / t_warm:>5.0f}x "
                          f"{t_skc / t_kc:>5.0f}x | {dev:>11.1e}")
             print(line, flush=True)
-    _, msg = bench_ross(72, 16, args.repeat)
-    print(f"ROSS: {msg}")
+    rows = []
+    for grid in params[0][:2]:
+        res = bench_ross(grid[0], grid[1], args.repeat, args.ross_python)
+        if res is None:
+            print("ROSS: not importable and no --ross-python given; skipped")
+            break
+        if "error" in res:
+            print(f"ROSS {grid}: failed: {res['error']}")
+            continue
+        b = rotordyn.JournalBearing(diameter_m=D, length_m=L, clearance_m=C_RAD,
+                                    viscosity_pa_s=MU, n_circ=grid[0], n_axial=grid[1],
+                                    cavitation="gumbel")
+        s = b.solver()
+        t_f = median_time(lambda x, y: s.force(x, y, 0.0, 0.0, omega), pts, args.repeat)
+        t_k = median_time(lambda x, y: s.coefficients(x, y, omega), pts, args.repeat)
+        f_ours = np.linalg.norm(b.forces(x_m=POS[0], y_m=POS[1], speed_hz=SPEED_HZ))
+        rows.append((grid, res, t_f, t_k, f_ours))
+    for grid, res, t_f, t_k, f_ours in rows:
+        print(f"ROSS FluidFlow {grid[0]}x{grid[1]} (wall time, new object per point, no groove): "
+              f"force {res['force_s'] * 1e3:.1f} ms vs ours (gumbel) {t_f * 1e6:.0f} us "
+              f"({res['force_s'] / t_f:.0f}x); K,C {res['kc_s'] * 1e3:.0f} ms vs {t_k * 1e6:.0f} us "
+              f"({res['kc_s'] / t_k:.0f}x); |F| ROSS {res['force_n']:.1f} N, ours {f_ours:.1f} N")
     return 0
 
 
