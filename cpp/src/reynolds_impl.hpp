@@ -31,6 +31,29 @@ class SubPatternLDLT
         Lx[q] = 0.0;
       }
   }
+  /// x = A⁻¹ b with the current factors (P A Pᵀ = L D Lᵀ): plain column loops, about twice as
+  /// fast as the generic sparse triangular views at these sizes. y is scratch.
+  void solve_into(const double* b, double* x, std::vector<double>& y) const {
+    const int n = static_cast<int>(m_matrix.cols());
+    const int* P = m_P.size() ? m_P.indices().data() : nullptr;
+    const int* Lp = m_matrix.outerIndexPtr();
+    const int* Li = m_matrix.innerIndexPtr();
+    const double* Lx = m_matrix.valuePtr();
+    y.resize(n);
+    for (int i = 0; i < n; ++i) y[P ? P[i] : i] = b[i];
+    for (int j = 0; j < n; ++j) {
+      const double yj = y[j];
+      if (yj != 0.0)
+        for (int q = Lp[j]; q < Lp[j + 1]; ++q) y[Li[q]] -= Lx[q] * yj;
+    }
+    for (int j = 0; j < n; ++j) y[j] /= m_diag[j];
+    for (int j = n - 1; j >= 0; --j) {
+      double sj = y[j];
+      for (int q = Lp[j]; q < Lp[j + 1]; ++q) sj -= Lx[q] * y[Li[q]];
+      y[j] = sj;
+    }
+    for (int i = 0; i < n; ++i) x[i] = y[P ? P[i] : i];
+  }
 };
 
 /// One sparse system over a set of unknown nodes: the full grid, or — when the film and its
@@ -58,6 +81,7 @@ struct LinearSystem {
   bool have_active = false;
   enum class Factor { none, ldlt, lu } factor = Factor::none;
   Eigen::VectorXd rhs, sol;
+  std::vector<double> scratch;
 };
 
 struct ReynoldsSolver::Impl {

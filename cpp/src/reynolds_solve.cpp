@@ -16,7 +16,7 @@ void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
   fill_spd(S, nullptr);
   factor_spd(S);
   base_rhs(S, S.rhs);
-  S.sol = S.ldlt.solve(S.rhs);
+  S.ldlt.solve_into(S.rhs.data(), S.sol.data(), S.scratch);
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
     pfull[n] = S.sol[i];
@@ -43,7 +43,7 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
     fill_spd(S, &S.active);
     factor_spd(S, true);
     for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
-    S.sol = S.ldlt.solve(b);
+    S.ldlt.solve_into(b.data(), S.sol.data(), S.scratch);
     double pscale = 0.0;
     for (int i = 0; i < S.n_unk; ++i) {
       const int n = S.node_of[i];
@@ -236,7 +236,9 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     if (s.cav == Cavitation::reynolds)
       for (int i = 0; i < S->n_unk; ++i)
         if (S->active[i]) r[i] = 0.0;
-    Eigen::VectorXd x = S->ldlt.solve(-r);
+    r = -r;
+    Eigen::VectorXd x(S->n_unk);
+    S->ldlt.solve_into(r.data(), x.data(), S->scratch);
     // gumbel: p = max(p_full, 0); where p_full vanishes to round-off (e.g. on a symmetry line)
     // the one-sided derivatives differ and we take their mean, as a central difference does.
     double pmax = 0.0;
@@ -251,7 +253,8 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
       dpd[n] = wgt * x[i];
     }
   } else {
-    Eigen::VectorXd x = S->lu.solve(-r);
+    const Eigen::VectorXd mr = -r;
+    Eigen::VectorXd x = S->lu.solve(mr);
     for (int i = 0; i < S->n_unk; ++i)
       if (!S->active[i]) dpd[S->node_of[i]] = x[i];
   }
