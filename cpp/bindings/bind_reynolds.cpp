@@ -111,6 +111,8 @@ void bind_reynolds(py::module_& m) {
       .def("batch_coefficients", &RS::batch_coefficients, py::arg("positions"),
            py::arg("omegas_rad_s"), gil(),
            "positions (n, 2); returns (n, 10): Fx Fy Kxx Kxy Kyx Kyy Cxx Cxy Cyx Cyy.")
+      .def_property("use_axial_symmetry", &RS::use_axial_symmetry, &RS::set_use_axial_symmetry,
+                    "Solve symmetric films on the half grid (exact; default True).")
       .def("reset", &RS::reset);
 }
 

@@ -10,8 +10,82 @@
 
 namespace rotordyn {
 
-struct ReynoldsSolver::Impl {
+/// Eigen's up-looking LDLT, refactorised on a sub-pattern of the analysed one. The numeric
+/// phase derives each row's pattern from the entries it is given (walking the elimination tree
+/// of the analysed pattern), so dropping zero couplings is valid and skips their work; the
+/// column slots it leaves unwritten would keep stale values from an earlier factorisation, so
+/// they are cleared (row index = column, value 0: ignored by the triangular solves).
+class SubPatternLDLT
+    : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double, Eigen::ColMajor, int>, Eigen::Lower,
+                                   Eigen::AMDOrdering<int>> {
+ public:
+  void factorize_subpattern(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& a) {
+    factorize(a);
+    const int n = static_cast<int>(m_matrix.cols());
+    const int* Lp = m_matrix.outerIndexPtr();
+    int* Li = m_matrix.innerIndexPtr();
+    double* Lx = m_matrix.valuePtr();
+    for (int i = 0; i < n; ++i)
+      for (int q = Lp[i] + m_nonZerosPerCol[i]; q < Lp[i + 1]; ++q) {
+        Li[q] = i;
+        Lx[q] = 0.0;
+      }
+  }
+  /// x = A⁻¹ b with the current factors (P A Pᵀ = L D Lᵀ): plain column loops, about twice as
+  /// fast as the generic sparse triangular views at these sizes. y is scratch.
+  void solve_into(const double* b, double* x, std::vector<double>& y) const {
+    const int n = static_cast<int>(m_matrix.cols());
+    const int* P = m_P.size() ? m_P.indices().data() : nullptr;
+    const int* Lp = m_matrix.outerIndexPtr();
+    const int* Li = m_matrix.innerIndexPtr();
+    const double* Lx = m_matrix.valuePtr();
+    y.resize(n);
+    for (int i = 0; i < n; ++i) y[P ? P[i] : i] = b[i];
+    for (int j = 0; j < n; ++j) {
+      const double yj = y[j];
+      if (yj != 0.0)
+        for (int q = Lp[j]; q < Lp[j + 1]; ++q) y[Li[q]] -= Lx[q] * yj;
+    }
+    for (int j = 0; j < n; ++j) y[j] /= m_diag[j];
+    for (int j = n - 1; j >= 0; --j) {
+      double sj = y[j];
+      for (int q = Lp[j]; q < Lp[j + 1]; ++q) sj -= Lx[q] * y[Li[q]];
+      y[j] = sj;
+    }
+    for (int i = 0; i < n; ++i) x[i] = y[P ? P[i] : i];
+  }
+};
+
+/// One sparse system over a set of unknown nodes: the full grid, or — when the film and its
+/// rate are mirror-symmetric about z = 0 — the half grid k <= n_axial/2 whose mid-plane row is
+/// a half cell (its φ-terms and right-hand side halved, no flux across the mid-plane). The
+/// half system is the full system restricted by symmetry, not an approximation.
+struct LinearSystem {
   using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+  struct ColPos {
+    int diag, e, w, n, s;  // value positions of (i,i), (E,i), (W,i), (N,i), (S,i); -1: none
+  };
+  bool half = false;
+  int n_unk = 0;
+  std::vector<int> unk;        // node -> unknown index, -1 if prescribed (or mirrored, half)
+  std::vector<int> node_of;    // unknown -> node
+  std::vector<double> wphi;    // unknown -> weight of φ-fluxes and sources (0.5 on a half cell)
+  std::vector<char> has_n;     // unknown -> couples to its k+1 neighbour
+  SpMat A;                     // 5-point pattern, both triangles, explicit zeros kept
+  SpMat Ap;                    // A without zero couplings (sub-pattern, cheaper LDLT)
+  std::vector<ColPos> pos;
+  SubPatternLDLT ldlt;
+  Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
+  bool lu_analysed = false;
+  std::vector<char> active;    // unknown: 1 = p held at 0 (reynolds) / cavitated (jfo)
+  bool have_active = false;
+  enum class Factor { none, ldlt, lu } factor = Factor::none;
+  Eigen::VectorXd rhs, sol;
+  std::vector<double> scratch;
+};
+
+struct ReynoldsSolver::Impl {
+  using SpMat = LinearSystem::SpMat;
 
   JournalBearingGeometry geo;
   FilmGrid grid;
@@ -19,24 +93,18 @@ struct ReynoldsSolver::Impl {
 
   int N = 0;        // nodes around
   int K1 = 0;       // node rows along (n_axial + 1)
+  int Kh = -1;      // mid-plane row (n_axial even) or -1
   int n_nodes = 0;  // N * K1, node n = j * K1 + k
-  int n_unk = 0;
   double R = 0, L = 0, c = 0, mu = 0, dphi = 0, dz = 0;
   std::vector<double> cosphi, sinphi;
-  std::vector<int> unk;          // node -> unknown index, -1 for a prescribed-pressure node
-  std::vector<int> node_of;      // unknown -> node
+  std::vector<char> fixed;       // node -> prescribed pressure (ends, grooves)
   std::vector<double> p_fixed;   // node -> prescribed pressure (0 if unknown)
   std::vector<char> groove;      // node -> 1 on a groove (interior rows)
 
-  // Sparse pattern: full symmetric 5-point stencil over the unknowns (explicit zeros kept).
-  SpMat A;
-  struct ColPos {
-    int diag, e, w, n, s;  // value positions of (i,i), (E,i), (W,i), (N,i), (S,i); -1: none
-  };
-  std::vector<ColPos> pos;
-  Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
-  Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
-  bool lu_analysed = false;
+  LinearSystem full, halfsys;
+  bool halfsys_built = false;
+  bool use_symmetry = true;
+  LinearSystem* sys = nullptr;   // the system of the last solve
 
   // Film of the current solve (node arrays).
   double omega = 0.0;
@@ -45,39 +113,41 @@ struct ReynoldsSolver::Impl {
   std::vector<double> qE;      // Couette coefficient (ωRΔz/2)·h of face (j+1/2, k)
   std::vector<double> src;     // RΔφΔz ∂h/∂t
 
-  // Solution state.
+  // Solution state (node arrays).
   std::vector<double> p;       // node pressures (the model's answer)
   std::vector<double> pfull;   // unclipped linear solution (none/gumbel)
   std::vector<double> theta;   // node fill fraction
-  std::vector<char> active;    // unknown: 1 = p held at 0 (reynolds) / cavitated (jfo)
-  bool have_active = false;
   bool solved = false;
-  enum class Factor { none, ldlt, lu } factor = Factor::none;
-  Eigen::VectorXd rhs, sol;
   FilmSolution out;
 
   Impl(const JournalBearingGeometry& g, const FilmGrid& gr, Cavitation cv);
 
   int east(int n) const { return n + K1 >= n_nodes ? n + K1 - n_nodes : n + K1; }
   int west(int n) const { return n - K1 < 0 ? n - K1 + n_nodes : n - K1; }
+  int mirror(int n) const { return n - 2 * (n % K1) + K1 - 1; }
+
+  void build_system(LinearSystem& S, bool half);
+  bool symmetric(const double* f) const;  // f(φ, z) == f(φ, −z) bitwise
+  void mirror_fields();                   // fill k > Kh from k < Kh after a half solve
 
   void set_film(const double* h_in, const double* hdot_in, double omega_in);
   // Right-hand side b of A p = b (Couette, squeeze, prescribed neighbours), unknown ordering.
-  void base_rhs(Eigen::VectorXd& b) const;
+  void base_rhs(const LinearSystem& S, Eigen::VectorXd& b) const;
   // A's values; mask (unknown-indexed, may be null) decouples masked unknowns (identity rows).
-  void fill_spd(const std::vector<char>* mask);
-  void factor_spd();
-  // Residual (outflow + storage) of node n's cell for node pressures pp and fill theta.
+  void fill_spd(LinearSystem& S, const std::vector<char>* mask);
+  void factor_spd(LinearSystem& S, bool prune = false);
+  // Residual (outflow + storage) of node n's full cell for node pressures pp and fill theta.
   double cell_residual(int n, const std::vector<double>& pp) const;
 
-  void solve_linear();    // none / gumbel
-  void solve_reynolds();  // Swift–Stieber LCP by primal–dual active set
-  void solve_jfo();       // Elrod–Adams p–θ
-  void fill_jfo();
+  void solve_linear(LinearSystem& S);    // none / gumbel
+  void solve_reynolds(LinearSystem& S);  // Swift–Stieber LCP by primal–dual active set
+  void solve_jfo(LinearSystem& S);       // Elrod–Adams p–θ
+  void fill_jfo(LinearSystem& S);
   void postprocess();
 
-  // d(residual)/d(h, hdot) at the frozen state, unknown ordering.
-  void residual_derivative(const double* dh, const double* dhdot, Eigen::VectorXd& out) const;
+  // d(residual)/d(h, hdot) at the frozen state, S's unknown ordering and row weights.
+  void residual_derivative(const LinearSystem& S, const double* dh, const double* dhdot,
+                           Eigen::VectorXd& out) const;
 };
 
 }  // namespace rotordyn

@@ -15,17 +15,18 @@
 
 namespace rotordyn {
 
-void ReynoldsSolver::Impl::fill_jfo() {
-  double* val = A.valuePtr();
+void ReynoldsSolver::Impl::fill_jfo(LinearSystem& S) {
+  double* val = S.A.valuePtr();
   const bool fwd = omega >= 0.0;
-  for (int i = 0; i < n_unk; ++i) {
-    const int n = node_of[i];
-    const ColPos& q = pos[i];
+  for (int i = 0; i < S.n_unk; ++i) {
+    const int n = S.node_of[i];
+    const LinearSystem::ColPos& q = S.pos[i];
     const int w = west(n);
-    if (!active[i]) {  // pressure column
-      val[q.diag] = cE[n] + cE[w] + cN[n] + cN[n - 1];
-      if (q.e >= 0) val[q.e] = -cE[n];
-      if (q.w >= 0) val[q.w] = -cE[w];
+    const double wp = S.wphi[i];
+    if (!S.active[i]) {  // pressure column
+      val[q.diag] = wp * (cE[n] + cE[w]) + (S.has_n[i] ? cN[n] : 0.0) + cN[n - 1];
+      if (q.e >= 0) val[q.e] = -wp * cE[n];
+      if (q.w >= 0) val[q.w] = -wp * cE[w];
       if (q.n >= 0) val[q.n] = -cN[n];
       if (q.s >= 0) val[q.s] = -cN[n - 1];
       continue;
@@ -34,69 +35,70 @@ void ReynoldsSolver::Impl::fill_jfo() {
     if (q.n >= 0) val[q.n] = 0.0;
     if (q.s >= 0) val[q.s] = 0.0;
     if (fwd) {
-      val[q.diag] = -(qE[n] + src[n]);
-      if (q.e >= 0) val[q.e] = qE[n];
+      val[q.diag] = -wp * (qE[n] + src[n]);
+      if (q.e >= 0) val[q.e] = wp * qE[n];
       if (q.w >= 0) val[q.w] = 0.0;
     } else {
-      val[q.diag] = qE[w] - src[n];
-      if (q.w >= 0) val[q.w] = -qE[w];
+      val[q.diag] = wp * (qE[w] - src[n]);
+      if (q.w >= 0) val[q.w] = -wp * qE[w];
       if (q.e >= 0) val[q.e] = 0.0;
     }
   }
 }
 
-void ReynoldsSolver::Impl::solve_jfo() {
+void ReynoldsSolver::Impl::solve_jfo(LinearSystem& S) {
   if (omega == 0.0)
     throw InputError("speed_hz: cavitation='jfo' needs a nonzero speed (got 0)");
   std::fill(theta.begin(), theta.end(), 1.0);
   int it0 = 0;
-  if (!have_active) {  // start from the Swift–Stieber solution
-    solve_reynolds();
+  if (!S.have_active) {  // start from the Swift–Stieber solution
+    solve_reynolds(S);
     it0 = out.iterations;
   }
-  base_rhs(rhs);
-  std::vector<char> next(n_unk);
-  const int max_iter = 100 + n_unk / 4;
+  base_rhs(S, S.rhs);
+  std::vector<char> next(S.n_unk);
+  const int max_iter = 100 + S.n_unk / 4;
   for (int it = 1; it <= max_iter; ++it) {
-    fill_jfo();
-    if (!lu_analysed) {
-      lu.analyzePattern(A);
-      lu_analysed = true;
+    fill_jfo(S);
+    if (!S.lu_analysed) {
+      S.lu.analyzePattern(S.A);
+      S.lu_analysed = true;
     }
-    lu.factorize(A);
-    if (lu.info() != Eigen::Success)
+    S.lu.factorize(S.A);
+    if (S.lu.info() != Eigen::Success)
       throw ConvergenceError("jfo cavitation: sparse LU factorisation failed");
-    factor = Factor::lu;
-    sol = lu.solve(rhs);
+    S.factor = LinearSystem::Factor::lu;
+    S.sol = S.lu.solve(S.rhs);
     double pscale = 0.0;
-    for (int i = 0; i < n_unk; ++i) {
-      const int n = node_of[i];
-      if (active[i]) {
+    for (int i = 0; i < S.n_unk; ++i) {
+      const int n = S.node_of[i];
+      if (S.active[i]) {
         p[n] = 0.0;
-        theta[n] = 1.0 - sol[i];
+        theta[n] = 1.0 - S.sol[i];
       } else {
-        p[n] = sol[i];
+        p[n] = S.sol[i];
         theta[n] = 1.0;
-        pscale = std::max(pscale, std::abs(sol[i]));
+        pscale = std::max(pscale, std::abs(S.sol[i]));
       }
     }
     for (int n = 0; n < n_nodes; ++n)
-      if (unk[n] < 0) pscale = std::max(pscale, std::abs(p[n]));
+      if (fixed[n]) pscale = std::max(pscale, std::abs(p[n]));
     const double tol_p = 1e-13 * pscale;
     bool changed = false;
-    for (int i = 0; i < n_unk; ++i) {
-      next[i] = active[i] ? (sol[i] >= -1e-13 ? 1 : 0) : (sol[i] < -tol_p ? 1 : 0);
-      if (next[i] != active[i]) changed = true;
+    for (int i = 0; i < S.n_unk; ++i) {
+      next[i] = S.active[i] ? (S.sol[i] >= -1e-13 ? 1 : 0) : (S.sol[i] < -tol_p ? 1 : 0);
+      if (next[i] != S.active[i]) changed = true;
     }
     if (!changed) {
+      if (S.half) mirror_fields();
       for (int n = 0; n < n_nodes; ++n) pfull[n] = p[n];
-      have_active = true;
+      S.have_active = true;
       out.iterations = it0 + it;
       return;
     }
-    active.swap(next);
+    S.active.swap(next);
   }
-  have_active = false;
+  S.have_active = false;
   throw ConvergenceError("jfo cavitation: p-theta partition did not converge in " +
                          std::to_string(max_iter) + " iterations");
 }

@@ -88,6 +88,48 @@ DynamicCoefficients ReynoldsSolver::coefficients_fd(double x, double y, double o
   return dc;
 }
 
+namespace {
+// Damped Newton on F(q) + load = 0 with the perturbation Jacobian dF/dq = −K and a backtracking
+// line search on |F + load| that keeps q inside the clearance circle. Returns false (q at the
+// last iterate) when it stalls or runs out of iterations.
+bool newton_equilibrium(ReynoldsSolver& rs, const Eigen::Vector2d& load, double omega,
+                        double emax, double tol_abs, int max_iter, Eigen::Vector2d& q,
+                        DynamicCoefficients& dc, int& iters) {
+  dc = rs.coefficients(q.x(), q.y(), omega);
+  Eigen::Vector2d res = dc.force_n + load;
+  for (int it = 0; it <= max_iter; ++it) {
+    iters = it;
+    if (res.norm() <= tol_abs) return true;
+    // Newton step first; if the line search fails along it (a kink of the cavitated film or a
+    // poorly conditioned K), the steepest-descent direction of |F + load|²/2, i.e. Kᵀ(F + load).
+    const Eigen::Vector2d newton = dc.K.inverse() * res;  // F(q+δ) ≈ F − K δ = −load
+    Eigen::Vector2d grad = dc.K.transpose() * res;
+    if (grad.norm() > 0.0) grad *= 0.05 * emax / grad.norm();
+    bool accepted = false;
+    for (int dir = 0; dir < 2 && !accepted; ++dir) {
+      const Eigen::Vector2d step = dir == 0 ? newton : grad;
+      if (!step.allFinite() || step.norm() == 0.0) continue;
+      double alpha = 1.0;
+      for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
+        const Eigen::Vector2d qn = q + alpha * step;
+        if (qn.norm() >= emax) continue;
+        DynamicCoefficients dn = rs.coefficients(qn.x(), qn.y(), omega);
+        const Eigen::Vector2d rn = dn.force_n + load;
+        if (rn.norm() < (1.0 - 1e-4 * alpha) * res.norm()) {
+          q = qn;
+          dc = dn;
+          res = rn;
+          accepted = true;
+          break;
+        }
+      }
+    }
+    if (!accepted) return false;
+  }
+  return false;
+}
+}  // namespace
+
 EquilibriumSolution ReynoldsSolver::equilibrium(double lx, double ly, double omega, double x0,
                                                 double y0, double rtol, int max_iter) {
   Impl& s = *impl_;
@@ -100,56 +142,70 @@ EquilibriumSolution ReynoldsSolver::equilibrium(double lx, double ly, double ome
                      num(omega / (2.0 * kPi)));
   if (!(rtol > 0.0)) throw InputError("rtol: expected > 0, got " + num(rtol));
   const double emax = 0.9999 * s.c;
-  Eigen::Vector2d q(x0, y0);
-  if (q.norm() >= emax)
-    throw InputError("x0_m, y0_m: expected a starting point inside the clearance circle");
-  if (q.norm() == 0.0) {
-    // Journal moves along the load, turned by ~45° in the direction of rotation.
-    const double a = (omega > 0 ? 1.0 : -1.0) * kPi / 4.0;
-    const Eigen::Vector2d d(lx / W, ly / W);
-    q = 0.5 * s.c * Eigen::Vector2d(std::cos(a) * d.x() - std::sin(a) * d.y(),
-                                    std::sin(a) * d.x() + std::cos(a) * d.y());
-  }
   const Eigen::Vector2d load(lx, ly);
-  DynamicCoefficients dc = coefficients(q.x(), q.y(), omega);
-  Eigen::Vector2d res = dc.force_n + load;
-  for (int it = 0; it <= max_iter; ++it) {
-    if (res.norm() <= rtol * W) {
-      EquilibriumSolution e;
-      e.x_m = q.x();
-      e.y_m = q.y();
-      e.force_n = dc.force_n;
-      e.residual_rel = res.norm() / W;
-      e.iterations = it;
-      return e;
-    }
-    Eigen::Vector2d step = dc.K.inverse() * res;  // F(q+δ) ≈ F − K δ = −load
-    if (!step.allFinite()) step = res.normalized() * 0.05 * s.c;
-    double alpha = 1.0;
-    Eigen::Vector2d qn;
-    DynamicCoefficients dn;
-    Eigen::Vector2d rn;
-    for (int ls = 0; ls < 30; ++ls) {
-      qn = q + alpha * step;
-      if (qn.norm() >= emax) {
-        alpha *= 0.5;
-        continue;
-      }
-      dn = coefficients(qn.x(), qn.y(), omega);
-      rn = dn.force_n + load;
-      if (rn.norm() < (1.0 - 1e-4 * alpha) * res.norm() || ls == 29) break;
-      alpha *= 0.5;
-    }
-    if (qn.norm() >= emax)
-      throw ConvergenceError("static equilibrium: no film position inside the clearance "
-                             "carries the load (eccentricity ratio -> 1)");
-    q = qn;
-    dc = dn;
-    res = rn;
+  Eigen::Vector2d q(x0, y0);
+  if (!(q.allFinite() && q.norm() < emax))
+    throw InputError("x0_m, y0_m: expected a starting point inside the clearance circle");
+  const Eigen::Vector2d d = load / W;
+  auto guess = [&](double eps) {
+    // along the load, turned by ~45° in the direction of rotation
+    const double a = (omega > 0 ? 1.0 : -1.0) * kPi / 4.0;
+    return Eigen::Vector2d(eps * s.c * (std::cos(a) * d.x() - std::sin(a) * d.y()),
+                           eps * s.c * (std::sin(a) * d.x() + std::cos(a) * d.y()));
+  };
+  if (q.norm() == 0.0) q = guess(0.5);
+  DynamicCoefficients dc;
+  int iters = 0, total = 0;
+  auto done = [&](const Eigen::Vector2d& qq) {
+    EquilibriumSolution e;
+    e.x_m = qq.x();
+    e.y_m = qq.y();
+    e.force_n = dc.force_n;
+    e.residual_rel = (dc.force_n + load).norm() / W;
+    e.iterations = total;
+    return e;
+  };
+  // 1) Newton from the starting point.
+  Eigen::Vector2d qn = q;
+  const bool ok = newton_equilibrium(*this, load, omega, emax, rtol * W, max_iter, qn, dc, iters);
+  total += iters;
+  if (ok) return done(qn);
+  // 2) Continuation in the load from a lightly loaded journal (the equilibrium locus is
+  //    followed from near the centre, each Newton started from the previous equilibrium).
+  Eigen::Vector2d qc = guess(0.02);
+  {
+    // equilibrium for a load small enough that the film is nearly linear: F ≈ −K q
+    const DynamicCoefficients d0 = coefficients(0.0, 0.0, omega);
+    const Eigen::Vector2d q0 = d0.K.inverse() * (-(-load) * 1e-3);
+    if (q0.allFinite() && q0.norm() < 0.2 * s.c) qc = q0;
   }
-  throw ConvergenceError("static equilibrium: Newton did not converge in " +
-                         std::to_string(max_iter) + " iterations (relative residual " +
-                         num(res.norm() / W) + ")");
+  double frac = 1e-3, dfrac = 1e-3;
+  int n_fail = 0;
+  while (true) {
+    const double target = std::min(1.0, frac + dfrac);
+    Eigen::Vector2d qt = qc;
+    const bool okc = newton_equilibrium(*this, load * target, omega, emax,
+                                        target < 1.0 ? 1e-6 * W * target : rtol * W, 30, qt,
+                                        dc, iters);
+    total += iters;
+    if (okc) {
+      qc = qt;
+      frac = target;
+      if (frac >= 1.0) return done(qc);
+      dfrac = std::min(2.0 * dfrac, 1.0);
+      n_fail = 0;
+    } else {
+      dfrac *= 0.25;
+      if (++n_fail > 12 || dfrac < 1e-6)
+        throw ConvergenceError(
+            "static equilibrium: the film carries at most about " + num(frac * W) +
+            " N of the " + num(W) + " N load along this direction (eccentricity ratio " +
+            num(qc.norm() / s.c) + "); no equilibrium inside the clearance was found");
+    }
+    if (total > 40 * max_iter)
+      throw ConvergenceError("static equilibrium: Newton/continuation did not converge in " +
+                             std::to_string(total) + " iterations");
+  }
 }
 
 RowMatrixXd ReynoldsSolver::batch_forces(const RowMatrixXd& states,

@@ -85,6 +85,7 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   grid.validate();
   N = grid.n_circ;
   K1 = grid.n_axial + 1;
+  Kh = grid.n_axial % 2 == 0 ? grid.n_axial / 2 : -1;
   n_nodes = N * K1;
   R = 0.5 * geo.diameter_m;
   L = geo.length_m;
@@ -102,7 +103,7 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   // Prescribed-pressure nodes: both ends (p = 0), grooves (interior rows).
   groove.assign(n_nodes, 0);
   p_fixed.assign(n_nodes, 0.0);
-  std::vector<char> fixed(n_nodes, 0);
+  fixed.assign(n_nodes, 0);
   for (int j = 0; j < N; ++j) {
     fixed[j * K1] = 1;
     fixed[j * K1 + K1 - 1] = 1;
@@ -130,40 +131,10 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
         p_fixed[n] = gv.pressure_pa;  // a later groove overrides an overlapping earlier one
       }
   }
-  unk.assign(n_nodes, -1);
-  for (int n = 0; n < n_nodes; ++n)
-    if (!fixed[n]) {
-      unk[n] = static_cast<int>(node_of.size());
-      node_of.push_back(n);
-    }
-  n_unk = static_cast<int>(node_of.size());
-  if (n_unk == 0) throw InputError("grooves: the grooves cover the whole bearing (no film left)");
-
-  // Pattern: 5-point stencil between unknowns, both triangles, explicit zeros kept.
-  std::vector<Eigen::Triplet<double, int>> trip;
-  trip.reserve(5 * n_unk);
-  for (int i = 0; i < n_unk; ++i) {
-    const int n = node_of[i];
-    trip.emplace_back(i, i, 1.0);
-    for (int nb : {east(n), west(n), n + 1, n - 1})
-      if (unk[nb] >= 0) trip.emplace_back(unk[nb], i, 1.0);
-  }
-  A.resize(n_unk, n_unk);
-  A.setFromTriplets(trip.begin(), trip.end());
-  A.makeCompressed();
-  auto find = [&](int row, int col) -> int {
-    if (row < 0) return -1;
-    for (int q = A.outerIndexPtr()[col]; q < A.outerIndexPtr()[col + 1]; ++q)
-      if (A.innerIndexPtr()[q] == row) return q;
-    return -1;
-  };
-  pos.resize(n_unk);
-  for (int i = 0; i < n_unk; ++i) {
-    const int n = node_of[i];
-    pos[i] = ColPos{find(i, i), find(unk[east(n)], i), find(unk[west(n)], i), find(unk[n + 1], i),
-                    find(unk[n - 1], i)};
-  }
-  ldlt.analyzePattern(A);
+  build_system(full, false);
+  if (full.n_unk == 0)
+    throw InputError("grooves: the grooves cover the whole bearing (no film left)");
+  sys = &full;
 
   h.assign(n_nodes, c);
   hdot.assign(n_nodes, 0.0);
@@ -174,10 +145,74 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   p.assign(n_nodes, 0.0);
   pfull.assign(n_nodes, 0.0);
   theta.assign(n_nodes, 1.0);
-  active.assign(n_unk, 0);
-  rhs.resize(n_unk);
-  sol.resize(n_unk);
   for (int n = 0; n < n_nodes; ++n) p[n] = pfull[n] = p_fixed[n];
+}
+
+void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
+  S.half = half;
+  S.unk.assign(n_nodes, -1);
+  S.node_of.clear();
+  S.wphi.clear();
+  S.has_n.clear();
+  for (int n = 0; n < n_nodes; ++n) {
+    const int k = n % K1;
+    if (fixed[n] || (half && k > Kh)) continue;
+    S.unk[n] = static_cast<int>(S.node_of.size());
+    S.node_of.push_back(n);
+    S.wphi.push_back(half && k == Kh ? 0.5 : 1.0);
+    S.has_n.push_back(half && k == Kh ? 0 : 1);
+  }
+  S.n_unk = static_cast<int>(S.node_of.size());
+  if (S.n_unk == 0) return;
+  std::vector<Eigen::Triplet<double, int>> trip;
+  trip.reserve(5 * S.n_unk);
+  for (int i = 0; i < S.n_unk; ++i) {
+    const int n = S.node_of[i];
+    trip.emplace_back(i, i, 1.0);
+    for (int nb : {east(n), west(n), n - 1})
+      if (S.unk[nb] >= 0) trip.emplace_back(S.unk[nb], i, 1.0);
+    if (S.has_n[i] && S.unk[n + 1] >= 0) trip.emplace_back(S.unk[n + 1], i, 1.0);
+  }
+  S.A.resize(S.n_unk, S.n_unk);
+  S.A.setFromTriplets(trip.begin(), trip.end());
+  S.A.makeCompressed();
+  auto find = [&](int row, int col) -> int {
+    if (row < 0) return -1;
+    for (int q = S.A.outerIndexPtr()[col]; q < S.A.outerIndexPtr()[col + 1]; ++q)
+      if (S.A.innerIndexPtr()[q] == row) return q;
+    return -1;
+  };
+  S.pos.resize(S.n_unk);
+  for (int i = 0; i < S.n_unk; ++i) {
+    const int n = S.node_of[i];
+    S.pos[i] = LinearSystem::ColPos{find(i, i), find(S.unk[east(n)], i), find(S.unk[west(n)], i),
+                                    S.has_n[i] ? find(S.unk[n + 1], i) : -1,
+                                    find(S.unk[n - 1], i)};
+  }
+  S.ldlt.analyzePattern(S.A);
+  S.active.assign(S.n_unk, 0);
+  S.have_active = false;
+  S.rhs.resize(S.n_unk);
+  S.sol.resize(S.n_unk);
+}
+
+bool ReynoldsSolver::Impl::symmetric(const double* f) const {
+  for (int j = 0; j < N; ++j) {
+    const double* row = f + j * K1;
+    for (int k = 0; k < K1 / 2; ++k)
+      if (row[k] != row[K1 - 1 - k]) return false;
+  }
+  return true;
+}
+
+void ReynoldsSolver::Impl::mirror_fields() {
+  for (int j = 0; j < N; ++j)
+    for (int k = Kh + 1; k < K1 - 1; ++k) {
+      const int n = j * K1 + k, m = mirror(n);
+      p[n] = p[m];
+      pfull[n] = pfull[m];
+      theta[n] = theta[m];
+    }
 }
 
 void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, double omega_in) {
@@ -218,24 +253,26 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
   }
 }
 
-void ReynoldsSolver::Impl::base_rhs(Eigen::VectorXd& b) const {
-  for (int i = 0; i < n_unk; ++i) {
-    const int n = node_of[i];
+void ReynoldsSolver::Impl::base_rhs(const LinearSystem& S, Eigen::VectorXd& b) const {
+  for (int i = 0; i < S.n_unk; ++i) {
+    const int n = S.node_of[i];
     const int e = east(n), w = west(n);
+    const double wp = S.wphi[i];
     double v = -(qE[n] - qE[w]) - src[n];
-    if (unk[e] < 0) v += cE[n] * p_fixed[e];
-    if (unk[w] < 0) v += cE[w] * p_fixed[w];
-    if (unk[n + 1] < 0) v += cN[n] * p_fixed[n + 1];
-    if (unk[n - 1] < 0) v += cN[n - 1] * p_fixed[n - 1];
+    if (fixed[e]) v += cE[n] * p_fixed[e];
+    if (fixed[w]) v += cE[w] * p_fixed[w];
+    v *= wp;
+    if (S.has_n[i] && fixed[n + 1]) v += cN[n] * p_fixed[n + 1];
+    if (fixed[n - 1]) v += cN[n - 1] * p_fixed[n - 1];
     b[i] = v;
   }
 }
 
-void ReynoldsSolver::Impl::fill_spd(const std::vector<char>* mask) {
-  double* val = A.valuePtr();
-  for (int i = 0; i < n_unk; ++i) {
-    const int n = node_of[i];
-    const ColPos& q = pos[i];
+void ReynoldsSolver::Impl::fill_spd(LinearSystem& S, const std::vector<char>* mask) {
+  double* val = S.A.valuePtr();
+  for (int i = 0; i < S.n_unk; ++i) {
+    const int n = S.node_of[i];
+    const LinearSystem::ColPos& q = S.pos[i];
     const int e = east(n), w = west(n);
     if (mask && (*mask)[i]) {
       val[q.diag] = 1.0;
@@ -245,23 +282,30 @@ void ReynoldsSolver::Impl::fill_spd(const std::vector<char>* mask) {
       if (q.s >= 0) val[q.s] = 0.0;
       continue;
     }
-    val[q.diag] = cE[n] + cE[w] + cN[n] + cN[n - 1];
+    const double wp = S.wphi[i];
+    val[q.diag] = wp * (cE[n] + cE[w]) + (S.has_n[i] ? cN[n] : 0.0) + cN[n - 1];
     auto off = [&](int at, int nb, double cf) {
       if (at < 0) return;
-      val[at] = (mask && (*mask)[unk[nb]]) ? 0.0 : -cf;
+      val[at] = (mask && (*mask)[S.unk[nb]]) ? 0.0 : -cf;
     };
-    off(q.e, e, cE[n]);
-    off(q.w, w, cE[w]);
+    off(q.e, e, wp * cE[n]);
+    off(q.w, w, wp * cE[w]);
     off(q.n, n + 1, cN[n]);
     off(q.s, n - 1, cN[n - 1]);
   }
 }
 
-void ReynoldsSolver::Impl::factor_spd() {
-  ldlt.factorize(A);
-  if (ldlt.info() != Eigen::Success)
+void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, bool prune) {
+  if (prune) {
+    S.Ap = S.A;
+    S.Ap.prune([](const int&, const int&, const double& v) { return v != 0.0; });
+    S.ldlt.factorize_subpattern(S.Ap);
+  } else {
+    S.ldlt.factorize(S.A);
+  }
+  if (S.ldlt.info() != Eigen::Success)
     throw ConvergenceError("Reynolds operator: sparse LDLT factorisation failed");
-  factor = Factor::ldlt;
+  S.factor = LinearSystem::Factor::ldlt;
 }
 
 double ReynoldsSolver::Impl::cell_residual(int n, const std::vector<double>& pp) const {
@@ -289,7 +333,9 @@ ReynoldsSolver& ReynoldsSolver::operator=(ReynoldsSolver&&) noexcept = default;
 const JournalBearingGeometry& ReynoldsSolver::geometry() const { return impl_->geo; }
 const FilmGrid& ReynoldsSolver::grid() const { return impl_->grid; }
 Cavitation ReynoldsSolver::cavitation() const { return impl_->cav; }
-int ReynoldsSolver::n_unknowns() const { return impl_->n_unk; }
+int ReynoldsSolver::n_unknowns() const { return impl_->full.n_unk; }
+bool ReynoldsSolver::use_axial_symmetry() const { return impl_->use_symmetry; }
+void ReynoldsSolver::set_use_axial_symmetry(bool on) { impl_->use_symmetry = on; }
 
 Eigen::VectorXd ReynoldsSolver::phi_rad() const {
   Eigen::VectorXd v(impl_->N);
@@ -305,13 +351,15 @@ Eigen::VectorXd ReynoldsSolver::z_m() const {
 
 RowMatrixXd ReynoldsSolver::dirichlet_mask() const {
   RowMatrixXd m(impl_->N, impl_->K1);
-  for (int n = 0; n < impl_->n_nodes; ++n) m.data()[n] = impl_->unk[n] < 0 ? 1.0 : 0.0;
+  for (int n = 0; n < impl_->n_nodes; ++n) m.data()[n] = impl_->fixed[n] ? 1.0 : 0.0;
   return m;
 }
 
 void ReynoldsSolver::reset() {
-  impl_->have_active = false;
-  std::fill(impl_->active.begin(), impl_->active.end(), 0);
+  for (LinearSystem* S : {&impl_->full, &impl_->halfsys}) {
+    S->have_active = false;
+    std::fill(S->active.begin(), S->active.end(), 0);
+  }
 }
 
 }  // namespace rotordyn

@@ -12,16 +12,17 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-void ReynoldsSolver::Impl::solve_linear() {
-  fill_spd(nullptr);
-  factor_spd();
-  base_rhs(rhs);
-  sol = ldlt.solve(rhs);
-  for (int i = 0; i < n_unk; ++i) {
-    const int n = node_of[i];
-    pfull[n] = sol[i];
-    p[n] = (cav == Cavitation::gumbel && sol[i] < 0.0) ? 0.0 : sol[i];
+void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
+  fill_spd(S, nullptr);
+  factor_spd(S);
+  base_rhs(S, S.rhs);
+  S.ldlt.solve_into(S.rhs.data(), S.sol.data(), S.scratch);
+  for (int i = 0; i < S.n_unk; ++i) {
+    const int n = S.node_of[i];
+    pfull[n] = S.sol[i];
+    p[n] = (cav == Cavitation::gumbel && S.sol[i] < 0.0) ? 0.0 : S.sol[i];
   }
+  if (S.half) mirror_fields();
   out.iterations = 1;
 }
 
@@ -29,51 +30,51 @@ void ReynoldsSolver::Impl::solve_linear() {
 // the LCP has one solution). Primal–dual active set (Hintermüller, Ito & Kunisch 2003): on the
 // active set p = 0, elsewhere A_II p_I = b_I; update active = {μ > 0 on the old set} ∪ {p < 0};
 // stop when the set repeats. The set is warm-started from the previous call. Active unknowns
-// are decoupled in place (identity row/column) so the pattern and its analysis never change.
-void ReynoldsSolver::Impl::solve_reynolds() {
-  if (!have_active) std::fill(active.begin(), active.end(), 0);
-  base_rhs(rhs);
+// are decoupled in place (identity row/column) so the analysed pattern never changes.
+void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
+  if (!S.have_active) std::fill(S.active.begin(), S.active.end(), 0);
+  base_rhs(S, S.rhs);
   double bscale = 0.0;
-  for (int i = 0; i < n_unk; ++i) bscale = std::max(bscale, std::abs(rhs[i]));
-  std::vector<char> next(n_unk);
-  const int max_iter = 100 + n_unk / 4;
+  for (int i = 0; i < S.n_unk; ++i) bscale = std::max(bscale, std::abs(S.rhs[i]));
+  std::vector<char> next(S.n_unk);
+  Eigen::VectorXd b(S.n_unk);
+  const int max_iter = 100 + S.n_unk / 4;
   for (int it = 1; it <= max_iter; ++it) {
-    fill_spd(&active);
-    factor_spd();
-    Eigen::VectorXd b = rhs;
-    for (int i = 0; i < n_unk; ++i)
-      if (active[i]) b[i] = 0.0;
-    sol = ldlt.solve(b);
+    fill_spd(S, &S.active);
+    factor_spd(S, true);
+    for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
+    S.ldlt.solve_into(b.data(), S.sol.data(), S.scratch);
     double pscale = 0.0;
-    for (int i = 0; i < n_unk; ++i) {
-      const int n = node_of[i];
-      p[n] = active[i] ? 0.0 : sol[i];
+    for (int i = 0; i < S.n_unk; ++i) {
+      const int n = S.node_of[i];
+      p[n] = S.active[i] ? 0.0 : S.sol[i];
       pscale = std::max(pscale, std::abs(p[n]));
     }
     for (int n = 0; n < n_nodes; ++n)
-      if (unk[n] < 0) pscale = std::max(pscale, std::abs(p[n]));
+      if (fixed[n]) pscale = std::max(pscale, std::abs(p[n]));
+    if (S.half) mirror_fields();
     const double tol_p = 1e-13 * pscale;
     const double tol_mu = 1e-13 * std::max(bscale, 1e-300);
     bool changed = false;
-    for (int i = 0; i < n_unk; ++i) {
-      const int n = node_of[i];
-      if (active[i]) {
-        const double mu_i = cell_residual(n, p);  // multiplier: (A p − b)_i
+    for (int i = 0; i < S.n_unk; ++i) {
+      const int n = S.node_of[i];
+      if (S.active[i]) {
+        const double mu_i = cell_residual(n, p);  // multiplier ∝ (A p − b)_i
         next[i] = mu_i >= -tol_mu ? 1 : 0;
       } else {
         next[i] = p[n] < -tol_p ? 1 : 0;
       }
-      if (next[i] != active[i]) changed = true;
+      if (next[i] != S.active[i]) changed = true;
     }
     if (!changed) {
       for (int n = 0; n < n_nodes; ++n) pfull[n] = p[n];
-      have_active = true;
+      S.have_active = true;
       out.iterations = it;
       return;
     }
-    active.swap(next);
+    S.active.swap(next);
   }
-  have_active = false;
+  S.have_active = false;
   throw ConvergenceError("reynolds cavitation: active-set iteration did not converge in " +
                          std::to_string(max_iter) + " iterations");
 }
@@ -105,8 +106,8 @@ void ReynoldsSolver::Impl::postprocess() {
   // Flows: supply through faces groove node -> film node, leakage through faces film -> end.
   double qin = 0.0, qside = 0.0;
   const bool fwd = omega >= 0.0;
-  for (int i = 0; i < n_unk; ++i) {
-    const int n = node_of[i];
+  for (int n = 0; n < n_nodes; ++n) {
+    if (fixed[n]) continue;
     const int e = east(n), w = west(n);
     if (groove[w]) qin += cE[w] * (p[w] - p[n]) + qE[w] * (fwd ? theta[w] : theta[n]);
     if (groove[e]) qin += cE[n] * (p[e] - p[n]) - qE[n] * (fwd ? theta[n] : theta[e]);
@@ -126,8 +127,8 @@ void ReynoldsSolver::Impl::postprocess() {
   std::copy(h.begin(), h.end(), out.h_m.data());
 }
 
-void ReynoldsSolver::Impl::residual_derivative(const double* dh, const double* dhdot,
-                                               Eigen::VectorXd& outv) const {
+void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const double* dh,
+                                               const double* dhdot, Eigen::VectorXd& outv) const {
   // Pressure at which the operator is linearised: the unclipped solution for none/gumbel.
   const std::vector<double>& P =
       (cav == Cavitation::none || cav == Cavitation::gumbel) ? pfull : p;
@@ -136,9 +137,9 @@ void ReynoldsSolver::Impl::residual_derivative(const double* dh, const double* d
   const double fq = 0.5 * omega * R * dz;
   const double fs = R * dphi * dz;
   const bool fwd = omega >= 0.0;
-  outv.resize(n_unk);
-  for (int i = 0; i < n_unk; ++i) {
-    const int n = node_of[i];
+  outv.resize(S.n_unk);
+  for (int i = 0; i < S.n_unk; ++i) {
+    const int n = S.node_of[i];
     const int e = east(n), w = west(n);
     const double he = 0.5 * (h[n] + h[e]), hw = 0.5 * (h[w] + h[n]);
     const double hn = 0.5 * (h[n] + h[n + 1]), hs = 0.5 * (h[n - 1] + h[n]);
@@ -151,7 +152,7 @@ void ReynoldsSolver::Impl::residual_derivative(const double* dh, const double* d
     else
       r += fq * (dhe * theta[e] - dhw * theta[n]);
     r += fs * dhdot[n] * theta[n];
-    outv[i] = r;
+    outv[i] = S.wphi[i] * r;  // a half cell carries half of the full cell's balance
   }
 }
 
@@ -166,16 +167,24 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
     throw InputError(shape_msg("dhdt", s.N, s.K1, dhdt.rows(), dhdt.cols()));
   s.solved = false;
   s.set_film(h.data(), dhdt.data(), omega);
+  const bool half = s.use_symmetry && s.Kh > 0 && s.symmetric(h.data()) &&
+                    s.symmetric(dhdt.data());
+  if (half && !s.halfsys_built) {
+    s.build_system(s.halfsys, true);
+    s.halfsys_built = true;
+  }
+  LinearSystem& S = half ? s.halfsys : s.full;
+  s.sys = &S;
   switch (s.cav) {
     case Cavitation::none:
     case Cavitation::gumbel:
-      s.solve_linear();
+      s.solve_linear(S);
       break;
     case Cavitation::reynolds:
-      s.solve_reynolds();
+      s.solve_reynolds(S);
       break;
     case Cavitation::jfo:
-      s.solve_jfo();
+      s.solve_jfo(S);
       break;
   }
   s.postprocess();
@@ -190,32 +199,71 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     throw InputError(shape_msg("dh", s.N, s.K1, dh.rows(), dh.cols()));
   if (d_dhdt.rows() != s.N || d_dhdt.cols() != s.K1)
     throw InputError(shape_msg("d_dhdt", s.N, s.K1, d_dhdt.rows(), d_dhdt.cols()));
+  LinearSystem* S = s.sys;
+  if (S->half && !(s.symmetric(dh.data()) && s.symmetric(d_dhdt.data()))) {
+    // A non-symmetric perturbation of a symmetric film: factorise the full system with the
+    // mirrored cavitation set (same base state, so the same frozen-set derivative).
+    LinearSystem& F = s.full;
+    const LinearSystem& Hs = *S;
+    for (int i = 0; i < F.n_unk; ++i) {
+      const int n = F.node_of[i];
+      const int m = (n % s.K1) > s.Kh ? s.mirror(n) : n;
+      F.active[i] = Hs.active[Hs.unk[m]];
+    }
+    if (s.cav == Cavitation::jfo) {
+      s.fill_jfo(F);
+      if (!F.lu_analysed) {
+        F.lu.analyzePattern(F.A);
+        F.lu_analysed = true;
+      }
+      F.lu.factorize(F.A);
+      if (F.lu.info() != Eigen::Success)
+        throw ConvergenceError("jfo cavitation: sparse LU factorisation failed");
+      F.factor = LinearSystem::Factor::lu;
+    } else {
+      const bool masked = s.cav == Cavitation::reynolds;
+      s.fill_spd(F, masked ? &F.active : nullptr);
+      s.factor_spd(F, masked);
+    }
+    F.have_active = s.cav == Cavitation::reynolds || s.cav == Cavitation::jfo;
+    s.sys = S = &F;
+  }
   Eigen::VectorXd r;
-  s.residual_derivative(dh.data(), d_dhdt.data(), r);
+  s.residual_derivative(*S, dh.data(), d_dhdt.data(), r);
   RowMatrixXd dp = RowMatrixXd::Zero(s.N, s.K1);
-  if (s.factor == Impl::Factor::ldlt) {
+  double* dpd = dp.data();
+  if (S->factor == LinearSystem::Factor::ldlt) {
     if (s.cav == Cavitation::reynolds)
-      for (int i = 0; i < s.n_unk; ++i)
-        if (s.active[i]) r[i] = 0.0;
-    Eigen::VectorXd x = s.ldlt.solve(-r);
+      for (int i = 0; i < S->n_unk; ++i)
+        if (S->active[i]) r[i] = 0.0;
+    r = -r;
+    Eigen::VectorXd x(S->n_unk);
+    S->ldlt.solve_into(r.data(), x.data(), S->scratch);
     // gumbel: p = max(p_full, 0); where p_full vanishes to round-off (e.g. on a symmetry line)
     // the one-sided derivatives differ and we take their mean, as a central difference does.
     double pmax = 0.0;
     for (int n = 0; n < s.n_nodes; ++n) pmax = std::max(pmax, std::abs(s.pfull[n]));
     const double ptol = 1e-10 * pmax;
-    for (int i = 0; i < s.n_unk; ++i) {
-      const int n = s.node_of[i];
+    for (int i = 0; i < S->n_unk; ++i) {
+      const int n = S->node_of[i];
       double wgt = 1.0;
       if (s.cav == Cavitation::gumbel)
         wgt = s.pfull[n] > ptol ? 1.0 : (s.pfull[n] < -ptol ? 0.0 : 0.5);
-      if (s.cav == Cavitation::reynolds && s.active[i]) wgt = 0.0;
-      dp.data()[n] = wgt * x[i];
+      if (s.cav == Cavitation::reynolds && S->active[i]) wgt = 0.0;
+      dpd[n] = wgt * x[i];
     }
   } else {
-    Eigen::VectorXd x = s.lu.solve(-r);
-    for (int i = 0; i < s.n_unk; ++i)
-      if (!s.active[i]) dp.data()[s.node_of[i]] = x[i];
+    const Eigen::VectorXd mr = -r;
+    Eigen::VectorXd x = S->lu.solve(mr);
+    for (int i = 0; i < S->n_unk; ++i)
+      if (!S->active[i]) dpd[S->node_of[i]] = x[i];
   }
+  if (S->half)
+    for (int j = 0; j < s.N; ++j)
+      for (int k = s.Kh + 1; k < s.K1 - 1; ++k) {
+        const int n = j * s.K1 + k;
+        dpd[n] = dpd[s.mirror(n)];
+      }
   return dp;
 }
 

@@ -146,6 +146,11 @@ class ReynoldsSolver {
 
   /// Forget the warm start (active set).
   void reset();
+  /// When h and ∂h/∂t are mirror-symmetric about z = 0 (rigid aligned journal) and n_axial is
+  /// even, solve on the half grid (exactly the same discrete solution, ~4x cheaper); on by
+  /// default. Non-symmetric films and perturbations always use the full grid.
+  bool use_axial_symmetry() const;
+  void set_use_axial_symmetry(bool on);
 
   struct Impl;
 
