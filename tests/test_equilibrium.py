@@ -7,7 +7,8 @@ answers.
   equilibrium (same Reynolds solver; agreement to 1e-9 c is round-off of two Newton paths).
 - An active bearing with a very stiff sleeve and p_c = 0 reproduces the plain bearing (1e-6).
 - Equilibria are continuous in p_c, a_y and speed: each grid midpoint lies within 2 % of c of
-  the chord between its neighbours (a jump or branch switch breaks this by far).
+  the chord between its neighbours (a jump or branch switch breaks this by far; the smooth
+  loci bend by at most ~0.6 % of c over a 25 kPa step, where the sleeve lifts off).
 """
 
 import dataclasses
@@ -105,7 +106,7 @@ def _smooth(values, mids):
 
 @pytest.mark.parametrize("ay", [-1.0e-3, 0.5e-3, 2.5e-3])
 def test_continuous_in_chamber_pressure(rig, ay):
-    pcs = np.linspace(0, 0.25e6, 6)
+    pcs = np.linspace(0, 0.25e6, 11)
     mid = 0.5 * (pcs[:-1] + pcs[1:])
     xy = np.array([[e.journal_x_m[0], e.journal_y_m[0]]
                    for e in (rd.equilibrium(rig, 50.0, p, ay) for p in pcs)])

@@ -53,13 +53,14 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     out.h_min = h_min_;
     out.h_min_angle_deg = h_min_angle_;
     out.reynolds_solves = solves_ - solves0;
-    if (out.status == "ok") {
+    if (out.status == "ok" || out.status == "not_converged") {
       for (std::size_t i = 0; i < films_.size(); ++i) {
         const double c = model_.films[i].geometry.clearance_m;
         if (h_min_[i] < opt.contact_fraction * c) {
           std::ostringstream os;
           os << "film '" << model_.films[i].name << "': minimum film thickness " << h_min_[i]
              << " m is below " << opt.contact_fraction << " c";
+          if (out.status == "not_converged") os << " (no equilibrium: " << out.message << ")";
           out.status = "contact";
           out.message = os.str();
         }
@@ -69,57 +70,96 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   };
 
   if (opt.method == EquilibriumMethod::Newton) {
+    // Damped Newton on K r − H(r) − Fs = 0 from rs; Jacobian K + K_H (perturbation method),
+    // backtracking line search on ‖R‖∞ that also steps back from contact.
     Linearization lin;
+    auto newton = [&](const Eigen::VectorXd& Fs, Eigen::VectorXd& rs, int iters, double& res,
+                      std::string& why) -> bool {
+      auto resid = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& H) {
+        return Eigen::VectorXd(model_.K * rr - H - Fs);
+      };
+      try {
+        lin = linearize(rs, zero, omega);
+      } catch (const ContactError& e) {
+        why = std::string("starting point: ") + e.what();
+        return false;
+      }
+      Eigen::VectorXd R = resid(rs, lin.film_force);
+      res = inf_norm(R) / out.load_scale;
+      for (int it = 0; it < iters; ++it, ++out.iterations) {
+        if (res < opt.tol) return true;
+        const Eigen::VectorXd dr = (model_.K + lin.KH).partialPivLu().solve(-R);
+        if (!dr.allFinite()) {
+          why = "Newton: singular Jacobian K + K_H";
+          return false;
+        }
+        double t = 1.0;
+        bool accepted = false;
+        Eigen::VectorXd r_try;
+        for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
+          r_try = rs + t * dr;
+          try {
+            lin = linearize(r_try, zero, omega);
+          } catch (const ContactError&) {
+            continue;
+          }
+          const Eigen::VectorXd R_try = resid(r_try, lin.film_force);
+          const double res_try = inf_norm(R_try) / out.load_scale;
+          if (res_try <= (1.0 - 1e-4 * t) * res || res_try < opt.tol) {
+            R = R_try;
+            res = res_try;
+            accepted = true;
+            break;
+          }
+        }
+        if (!accepted) {
+          lin = linearize(rs, zero, omega);
+          why = "Newton: line search failed (residual " + std::to_string(res) + ")";
+          return false;
+        }
+        rs = r_try;
+      }
+      if (res < opt.tol) return true;
+      why = "Newton: no convergence in " + std::to_string(iters) + " iterations";
+      return false;
+    };
+
+    double res = NAN;
+    std::string why;
+    Eigen::VectorXd rn = r;
+    if (newton(F, rn, opt.max_iter, res, why)) return finish(rn, lin.film_force, res);
+    // Fallback: continuation in the load and configuration, F(λ) = λ F from the concentric,
+    // undeformed state (the solution at λ = 0), with adaptive steps.
+    Eigen::VectorXd rc = zero;
+    double lam = 0.0, dlam = 0.25, res_c = NAN;
+    std::string why_c;
+    while (lam < 1.0 && dlam > 1e-4 && out.iterations < 20 * opt.max_iter) {
+      const double next = std::min(1.0, lam + dlam);
+      Eigen::VectorXd rt = rc;
+      if (newton(next * F, rt, 40, res_c, why_c)) {
+        rc = rt;
+        lam = next;
+        dlam *= 1.5;
+      } else {
+        dlam *= 0.5;
+      }
+    }
+    if (lam >= 1.0) {
+      lin = linearize(rc, zero, omega);
+      return finish(rc, lin.film_force, inf_norm(model_.K * rc - lin.film_force - F) /
+                                            out.load_scale);
+    }
+    // No equilibrium reached: report where the continuation stopped.
     try {
-      lin = linearize(r, zero, omega);
-    } catch (const ContactError& e) {
-      out.status = "contact";
-      out.message = std::string("starting point: ") + e.what();
-      return finish(r, zero, NAN);
+      lin = linearize(lam > 0 ? rc : rn, zero, omega);
+    } catch (const ContactError&) {
     }
-    Eigen::VectorXd R = residual(r, lin.film_force);
-    double res = inf_norm(R) / out.load_scale;
-    for (out.iterations = 0; out.iterations < opt.max_iter; ++out.iterations) {
-      if (res < opt.tol) return finish(r, lin.film_force, res);
-      const Eigen::MatrixXd J = model_.K + lin.KH;
-      const Eigen::VectorXd dr = J.partialPivLu().solve(-R);
-      if (!dr.allFinite()) {
-        out.status = "not_converged";
-        out.message = "Newton: singular Jacobian K + K_H";
-        return finish(r, lin.film_force, res);
-      }
-      // Backtracking line search on ‖R‖∞, stepping back from contact.
-      double t = 1.0;
-      bool accepted = false;
-      Eigen::VectorXd r_try;
-      for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
-        r_try = r + t * dr;
-        try {
-          lin = linearize(r_try, zero, omega);
-        } catch (const ContactError&) {
-          continue;
-        }
-        const Eigen::VectorXd R_try = residual(r_try, lin.film_force);
-        const double res_try = inf_norm(R_try) / out.load_scale;
-        if (res_try <= (1.0 - 1e-4 * t) * res || res_try < opt.tol) {
-          R = R_try;
-          res = res_try;
-          accepted = true;
-          break;
-        }
-      }
-      if (!accepted) {
-        lin = linearize(r, zero, omega);
-        out.status = "not_converged";
-        out.message = "Newton: line search failed (residual " + std::to_string(res) + ")";
-        return finish(r, lin.film_force, res);
-      }
-      r = r_try;
-    }
-    out.status = res < opt.tol ? "ok" : "not_converged";
-    if (out.status != "ok")
-      out.message = "Newton: no convergence in " + std::to_string(opt.max_iter) + " iterations";
-    return finish(r, lin.film_force, res);
+    const Eigen::VectorXd rf = lam > 0 ? rc : rn;
+    out.status = "not_converged";
+    out.message = why + "; load continuation reached " + std::to_string(lam) +
+                  " of the load (" + why_c + ")";
+    return finish(rf, lin.film_force, inf_norm(model_.K * rf - lin.film_force - F) /
+                                          out.load_scale);
   }
 
   // Successive substitution, eq. 16: (1 + P_m) K r_{i+1} = P_m K r_i + H(r_i) + F.

@@ -1,0 +1,90 @@
+// System core: a mass on one film must reach the single-bearing solver's equilibrium; the
+// perturbation K_H must match central differences; Newton and successive substitution agree.
+#include <cmath>
+
+#include "rotordyn/errors.hpp"
+#include "rotordyn/system.hpp"
+#include "testing.hpp"
+
+using namespace rotordyn;
+
+namespace {
+SystemModel one_film(double k_struct) {
+  JournalBearingGeometry g;
+  g.diameter_m = 0.05;
+  g.length_m = 0.04;
+  g.clearance_m = 3e-4;
+  g.viscosity_pa_s = 0.04;
+  FilmGrid grid{48, 12};
+  FilmCoupling f;
+  f.name = "jb";
+  f.geometry = g;
+  f.grid = grid;
+  f.cavitation = Cavitation::reynolds;
+  f.coords = {0, 1};
+  f.shape.resize(grid.n_circ, 2);
+  for (int j = 0; j < grid.n_circ; ++j) {
+    const double phi = 2 * M_PI * j / grid.n_circ;
+    f.shape(j, 0) = -std::cos(phi);
+    f.shape(j, 1) = -std::sin(phi);
+  }
+  SystemModel m;
+  m.M = Eigen::Matrix2d::Identity() * 10.0;
+  m.K = Eigen::Matrix2d::Identity() * k_struct;
+  m.C = Eigen::Matrix2d::Zero();
+  m.G = Eigen::Matrix2d::Zero();
+  m.Q = Eigen::Vector2d(0.0, -500.0);
+  m.chamber = Eigen::Vector2d::Zero();
+  m.films = {f};
+  return m;
+}
+}  // namespace
+
+TEST_CASE("system: one film carrying a weight equals the bearing's own equilibrium") {
+  SystemModel m = one_film(0.0);
+  SystemSolver s(m);
+  const double w = 2 * M_PI * 50;
+  const EquilibriumResult e =
+      s.equilibrium(w, 0.0, Eigen::Vector2d::Zero(), Eigen::VectorXd(), EquilibriumOptions{});
+  CHECK(e.status == "ok");
+  ReynoldsSolver rs(m.films[0].geometry, m.films[0].grid, Cavitation::reynolds);
+  const EquilibriumSolution ref = rs.equilibrium(0.0, -500.0, w);
+  CHECK_CLOSE(e.r(0), ref.x_m, 0, 1e-12);
+  CHECK_CLOSE(e.r(1), ref.y_m, 0, 1e-12);
+  CHECK(e.residual < 1e-10);
+}
+
+TEST_CASE("system: perturbation K_H, D_H equal central finite differences") {
+  SystemSolver s(one_film(0.0));
+  const Eigen::Vector2d r(1e-4, -1.2e-4);
+  const double w = 2 * M_PI * 50;
+  const Linearization a = s.linearize(r, Eigen::Vector2d::Zero(), w);
+  const Linearization b = s.linearize_fd(r, w, 1e-5);
+  CHECK((a.KH - b.KH).norm() < 1e-5 * a.KH.norm());
+  CHECK((a.DH - b.DH).norm() < 1e-5 * a.DH.norm());
+}
+
+TEST_CASE("system: Newton and successive substitution (automatic P_m) agree") {
+  SystemSolver s(one_film(2e6));
+  const double w = 2 * M_PI * 50;
+  const Eigen::Vector2d a(0.0, -2e-4);
+  EquilibriumOptions on;
+  EquilibriumOptions os;
+  os.method = EquilibriumMethod::Successive;
+  const EquilibriumResult en = s.equilibrium(w, 0.0, a, Eigen::VectorXd(), on);
+  const EquilibriumResult es = s.equilibrium(w, 0.0, a, Eigen::VectorXd(), os);
+  CHECK(en.status == "ok" && es.status == "ok");
+  CHECK((en.r - es.r).cwiseAbs().maxCoeff() < 1e-9 * 3e-4);
+  CHECK(es.pm > 0);
+}
+
+TEST_CASE("system: contact is reported, bad shapes raise InputError") {
+  SystemSolver s(one_film(1e7));
+  EquilibriumOptions o;
+  const EquilibriumResult e =
+      s.equilibrium(2 * M_PI * 5, 0.0, Eigen::Vector2d(0, 0.05), Eigen::VectorXd(), o);
+  if (e.status != "contact") throw rdtest::Failure("status " + e.status + ": " + e.message);
+  CHECK_THROWS(s.film_forces(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 1.0), InputError);
+  CHECK_THROWS(s.film_forces(Eigen::Vector2d(0, -4e-4), Eigen::Vector2d::Zero(), 1.0),
+               ContactError);
+}
