@@ -211,39 +211,10 @@ def _add_operating_point(s, speed=True):
 
 
 # -- report (the main job of `make run`) --------------------------------------------------
-PAPER_ROTOR_HZ = (10.43, 43.04, 106.38)
-
-
 def _cmd_report(args) -> int:
-    import matplotlib
+    from rotordyn import report
 
-    matplotlib.use("Agg")
-    s = rotordyn.models.load(args.model)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    r = rotordyn.modes(s, 0.0, reduction=s.reduction.method if s.reduction.method != "none"
-                       else "guyan")
-    f_red = r.frequencies_hz[::2]
-    f_full = r.full.frequencies_hz[::2]
-    lines = [f"{s.name or args.model}: rotor {s.rotor.length_m:.3f} m, {s.mass_kg:.3f} kg, "
-             f"{s.rotor.n_elements} elements, masters at stations "
-             f"{list(s.reduction.master_stations)} ({r.model})",
-             f"{'mode':>4} {'full (Hz)':>11} {'condensed (Hz)':>15} {'error':>8}"
-             + (f" {'paper (Hz)':>11}" if s.name == "paper-rig" else "")]
-    for i, (a, b) in enumerate(zip(f_full, f_red)):
-        row = f"{i + 1:>4} {a:>11.3f} {b:>15.3f} {100 * (b - a) / a:>7.2f}%"
-        if s.name == "paper-rig" and i < len(PAPER_ROTOR_HZ):
-            row += f" {PAPER_ROTOR_HZ[i]:>11.2f}"
-        lines.append(row)
-    text = "\n".join(lines)
-    print(text)
-    (out / "rotor_modes.txt").write_text(text + "\n")
-    (out / "rotor_modes.json").write_text(_json(_modes_payload(r)) + "\n")
-    r.to_frame().to_csv(out / "rotor_modes.csv", index=False)
-    ax = r.full.plot(modes=range(0, 6, 2))
-    ax.figure.savefig(out / "rotor_mode_shapes.png", dpi=120, bbox_inches="tight")
-    print(f"wrote {out}/rotor_modes.txt, .json, .csv and rotor_mode_shapes.png", file=sys.stderr)
-    return 0
+    return report.run(args.model, args.out)
 
 
 def build_parser() -> argparse.ArgumentParser:
