@@ -59,7 +59,10 @@ def test_report_writes_outputs(tmp_path):
     p = run("report", "paper-rig", "--out", str(tmp_path))
     assert p.returncode == 0, p.stderr
     assert "10.43" in p.stdout
-    for name in ("rotor_modes.txt", "rotor_modes.json", "rotor_modes.csv", "rotor_mode_shapes.png"):
+    assert "threshold of instability" in p.stdout and "critical speeds" in p.stdout
+    for name in ("report.txt", "rotor_modes.json", "rotor_modes.csv", "rotor_mode_shapes.png",
+                 "sleeve_modes.csv", "table1_equilibrium.csv", "threshold.csv", "campbell.csv",
+                 "campbell.png"):
         assert (tmp_path / name).stat().st_size > 0
 
 
