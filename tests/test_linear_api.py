@@ -108,3 +108,16 @@ def test_cli_unbalance_reports_api_margins():
     assert pk and {"amplification_factor", "separation_margin_pct", "required_margin_pct"} <= set(pk[0])
     p = run("unbalance", "paper-rig", "--unbalance", "6;1e-4")
     assert p.returncode == 2 and "--unbalance" in p.stderr
+
+
+def test_statespace_to_python_control(rig):
+    """The exported model as a python-control StateSpace: same poles, same DC gain."""
+    control = pytest.importorskip("control")
+    ss = rd.statespace(rig, inputs=["chamber_pressure"], outputs=[("journal", 0)],
+                       speed_hz=50.0, chamber_pressure_pa=0.15e6, config_ay_m=-1.85e-3)
+    sys_ = ss.to_control()
+    assert isinstance(sys_, control.StateSpace)
+    np.testing.assert_allclose(np.sort_complex(control.poles(sys_)), np.sort_complex(ss.poles),
+                               rtol=1e-9)
+    np.testing.assert_allclose(np.asarray(control.dcgain(sys_)).ravel(),
+                               ss.frequency_response([0.0])[0].real.ravel(), rtol=1e-8)
