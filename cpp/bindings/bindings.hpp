@@ -13,6 +13,7 @@ void bind_info(py::module_& m);
 void bind_rotor(py::module_& m);
 void bind_modal(py::module_& m);
 void bind_system(py::module_& m);
+void bind_transient(py::module_& m);
 void bind_reynolds(py::module_& m);
 void bind_sleeve(py::module_& m);
 }  // namespace rotordyn::py_bind

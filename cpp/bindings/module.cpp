@@ -10,5 +10,6 @@ PYBIND11_MODULE(_core, m) {
   bind_modal(m);
   bind_reynolds(m);
   bind_system(m);
+  bind_transient(m);
   bind_sleeve(m);
 }

@@ -35,6 +35,7 @@ from rotordyn.analysis import (
     stability_boundary,
     statespace,
     threshold,
+    transient,
     unbalance_response,
 )
 from rotordyn.results import (
@@ -96,6 +97,7 @@ __all__ = [
     "stability_boundary",
     "unbalance_response",
     "statespace",
+    "transient",
     "ModesResult",
     "LinearModel",
     "StabilityResult",

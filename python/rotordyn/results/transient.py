@@ -1,0 +1,81 @@
+"""Nonlinear transient results: journal orbits, time histories, spectra."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+
+@dataclass(frozen=True)
+class TransientResult:
+    """t: (n_t,) s; r, v: (n_t, n) coordinates and velocities (m, m/s); journal_x_m,
+    journal_y_m: (n_t, n_bearings) relative to each housing; h_min_m: (n_t, n_bearings)."""
+
+    speed_hz: float
+    chamber_pressure_pa: float
+    config_ay_m: float
+    t: np.ndarray
+    r: np.ndarray
+    v: np.ndarray
+    journal_x_m: np.ndarray
+    journal_y_m: np.ndarray
+    clearance_m: np.ndarray
+    h_min_m: np.ndarray
+    bearing_names: tuple
+    equilibrium_r: np.ndarray
+    stats: dict
+    status: str = "ok"
+    message: str = ""
+
+    def to_frame(self) -> pd.DataFrame:
+        """One row per (time, bearing)."""
+        nt, nb = self.journal_x_m.shape
+        return pd.DataFrame({
+            "t_s": np.repeat(self.t, nb),
+            "bearing": np.tile(np.asarray(self.bearing_names, dtype=object), nt),
+            "speed_hz": self.speed_hz,
+            "chamber_pressure_pa": self.chamber_pressure_pa,
+            "journal_x_m": self.journal_x_m.ravel(),
+            "journal_y_m": self.journal_y_m.ravel(),
+            "h_min_m": self.h_min_m.ravel(),
+            "status": self.status,
+        })
+
+    def amplitude(self, bearing: int = 0, last_fraction: float = 0.25) -> float:
+        """Peak distance from the equilibrium over the last part of the run, m."""
+        n = max(2, int(len(self.t) * last_fraction))
+        x = self.journal_x_m[-n:, bearing]
+        y = self.journal_y_m[-n:, bearing]
+        return float(np.max(np.hypot(x - x.mean(), y - y.mean())))
+
+    def spectrum(self, bearing: int = 0, last_fraction: float = 0.5, axis: str = "x"):
+        """One-sided amplitude spectrum of the journal motion over the last part of the run:
+        (freq_hz, amplitude_m). Needs uniformly spaced output times."""
+        n = max(8, int(len(self.t) * last_fraction))
+        z = (self.journal_x_m if axis == "x" else self.journal_y_m)[-n:, bearing]
+        dt = np.diff(self.t[-n:])
+        if not np.allclose(dt, dt[0], rtol=1e-6):
+            raise ValueError("spectrum: output times must be uniformly spaced")
+        z = z - z.mean()
+        win = np.hanning(n)
+        amp = 2 * np.abs(np.fft.rfft(z * win)) / win.sum()
+        return np.fft.rfftfreq(n, dt[0]), amp
+
+    def plot(self, bearing: int = 0, ax=None):
+        """Journal orbit in units of the clearance, with the clearance circle."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(5, 5))
+        c = self.clearance_m[bearing]
+        th = np.linspace(0, 2 * np.pi, 200)
+        ax.plot(np.cos(th), np.sin(th), "k-", lw=0.8)
+        ax.plot(self.journal_x_m[:, bearing] / c, self.journal_y_m[:, bearing] / c, lw=0.8)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x / c")
+        ax.set_ylabel("y / c")
+        ax.set_title(f"{self.bearing_names[bearing]}: {self.speed_hz:g} Hz, "
+                     f"p_c = {self.chamber_pressure_pa / 1e6:g} MPa")
+        return ax
