@@ -71,24 +71,29 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
 
   if (opt.method == EquilibriumMethod::Newton) {
     // Damped Newton on K r − H(r) − Fs = 0 from rs; Jacobian K + K_H (perturbation method),
-    // backtracking line search on ‖R‖∞ that also steps back from contact.
-    Linearization lin;
+    // backtracking line search on ‖R‖∞ that also steps back from contact. Each trial point
+    // costs one Reynolds solve per film; K_H (linearised solves on that solve's factorisation,
+    // no D_H) is formed only at an accepted point that still needs a step, so the converged
+    // point and rejected trials cost no linearisation.
+    Eigen::VectorXd H = zero;
+    Eigen::MatrixXd KH;
     auto newton = [&](const Eigen::VectorXd& Fs, Eigen::VectorXd& rs, int iters, double& res,
                       std::string& why) -> bool {
-      auto resid = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& H) {
-        return Eigen::VectorXd(model_.K * rr - H - Fs);
+      auto resid = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& Hr) {
+        return Eigen::VectorXd(model_.K * rr - Hr - Fs);
       };
       try {
-        lin = linearize(rs, zero, omega);
+        H = film_forces(rs, zero, omega);
       } catch (const ContactError& e) {
         why = std::string("starting point: ") + e.what();
         return false;
       }
-      Eigen::VectorXd R = resid(rs, lin.film_force);
+      Eigen::VectorXd R = resid(rs, H);
       res = inf_norm(R) / out.load_scale;
       for (int it = 0; it < iters; ++it, ++out.iterations) {
         if (res < opt.tol) return true;
-        const Eigen::VectorXd dr = (model_.K + lin.KH).partialPivLu().solve(-R);
+        linearize_last_solve(false, KH, nullptr);  // the films' last solve is at rs
+        const Eigen::VectorXd dr = (model_.K + KH).partialPivLu().solve(-R);
         if (!dr.allFinite()) {
           why = "Newton: singular Jacobian K + K_H";
           return false;
@@ -98,14 +103,16 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
         Eigen::VectorXd r_try;
         for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
           r_try = rs + t * dr;
+          Eigen::VectorXd H_try;
           try {
-            lin = linearize(r_try, zero, omega);
+            H_try = film_forces(r_try, zero, omega);
           } catch (const ContactError&) {
             continue;
           }
-          const Eigen::VectorXd R_try = resid(r_try, lin.film_force);
+          const Eigen::VectorXd R_try = resid(r_try, H_try);
           const double res_try = inf_norm(R_try) / out.load_scale;
           if (res_try <= (1.0 - 1e-4 * t) * res || res_try < opt.tol) {
+            H = H_try;
             R = R_try;
             res = res_try;
             accepted = true;
@@ -113,7 +120,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
           }
         }
         if (!accepted) {
-          lin = linearize(rs, zero, omega);
+          H = film_forces(rs, zero, omega);
           why = "Newton: line search failed (residual " + std::to_string(res) + ")";
           return false;
         }
@@ -127,7 +134,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     double res = NAN;
     std::string why;
     Eigen::VectorXd rn = r;
-    if (newton(F, rn, opt.max_iter, res, why)) return finish(rn, lin.film_force, res);
+    if (newton(F, rn, opt.max_iter, res, why)) return finish(rn, H, res);
     // Fallback: continuation in the load and configuration, F(λ) = λ F from the concentric,
     // undeformed state (the solution at λ = 0), with adaptive steps.
     Eigen::VectorXd rc = zero;
@@ -145,21 +152,19 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       }
     }
     if (lam >= 1.0) {
-      lin = linearize(rc, zero, omega);
-      return finish(rc, lin.film_force, inf_norm(model_.K * rc - lin.film_force - F) /
-                                            out.load_scale);
+      H = film_forces(rc, zero, omega);
+      return finish(rc, H, inf_norm(model_.K * rc - H - F) / out.load_scale);
     }
     // No equilibrium reached: report where the continuation stopped.
     try {
-      lin = linearize(lam > 0 ? rc : rn, zero, omega);
+      H = film_forces(lam > 0 ? rc : rn, zero, omega);
     } catch (const ContactError&) {
     }
     const Eigen::VectorXd rf = lam > 0 ? rc : rn;
     out.status = "not_converged";
     out.message = why + "; load continuation reached " + std::to_string(lam) +
                   " of the load (" + why_c + ")";
-    return finish(rf, lin.film_force, inf_norm(model_.K * rf - lin.film_force - F) /
-                                          out.load_scale);
+    return finish(rf, H, inf_norm(model_.K * rf - H - F) / out.load_scale);
   }
 
   // Successive substitution, eq. 16: (1 + P_m) K r_{i+1} = P_m K r_i + H(r_i) + F.
@@ -176,9 +181,10 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       // Automatic P_m: the iteration map's Jacobian is (P_m I − K⁻¹K_H)/(1 + P_m); choose
       // P_m to minimise its spectral radius max|P_m − μ_i|/(1 + P_m) over the eigenvalues μ_i
       // of K⁻¹K_H at the starting point (golden-section search on log P_m).
-      const Linearization lin = linearize(r, zero, omega);
-      H = lin.film_force;
-      const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(Klu.solve(lin.KH),
+      H = film_forces(r, zero, omega);
+      Eigen::MatrixXd KH;
+      linearize_last_solve(false, KH, nullptr);
+      const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(Klu.solve(KH),
                                                                       false).eigenvalues();
       auto rho = [&](double lp) {
         const double p = std::exp(lp);

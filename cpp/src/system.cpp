@@ -114,13 +114,11 @@ Eigen::VectorXd SystemSolver::film_forces(const Eigen::VectorXd& r, const Eigen:
   return H;
 }
 
-Linearization SystemSolver::linearize(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
-                                      double omega) {
-  Linearization out;
-  out.film_force = film_forces(r, rdot, omega);
+void SystemSolver::linearize_last_solve(bool damping, Eigen::MatrixXd& KH,
+                                        Eigen::MatrixXd* DH) {
   const Eigen::Index n = model_.n();
-  out.KH = Eigen::MatrixXd::Zero(n, n);
-  out.DH = Eigen::MatrixXd::Zero(n, n);
+  KH = Eigen::MatrixXd::Zero(n, n);
+  if (damping) *DH = Eigen::MatrixXd::Zero(n, n);
   for (std::size_t i = 0; i < films_.size(); ++i) {
     const FilmCoupling& fc = model_.films[i];
     Film& f = *films_[i];
@@ -129,13 +127,20 @@ Linearization SystemSolver::linearize(const Eigen::VectorXd& r, const Eigen::Vec
     for (std::size_t j = 0; j < fc.coords.size(); ++j) {
       const RowMatrixXd dh = fc.shape.col(static_cast<Eigen::Index>(j)).replicate(1, K1);
       const Eigen::VectorXd dk = -f.integrate(f.solver.linearize(dh, zero), fc.shape);
+      for (std::size_t k = 0; k < fc.coords.size(); ++k) KH(fc.coords[k], fc.coords[j]) += dk(k);
+      if (!damping) continue;
       const Eigen::VectorXd dd = -f.integrate(f.solver.linearize(zero, dh), fc.shape);
-      for (std::size_t k = 0; k < fc.coords.size(); ++k) {
-        out.KH(fc.coords[k], fc.coords[j]) += dk(k);
-        out.DH(fc.coords[k], fc.coords[j]) += dd(k);
-      }
+      for (std::size_t k = 0; k < fc.coords.size(); ++k)
+        (*DH)(fc.coords[k], fc.coords[j]) += dd(k);
     }
   }
+}
+
+Linearization SystemSolver::linearize(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
+                                      double omega) {
+  Linearization out;
+  out.film_force = film_forces(r, rdot, omega);
+  linearize_last_solve(true, out.KH, &out.DH);
   return out;
 }
 

@@ -110,6 +110,9 @@ class SystemSolver {
   std::vector<double> h_min_, h_min_angle_;
   int solves_ = 0;
   void solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot, double omega);
+  /// K_H (and D_H if `damping`) about the films' last solve, by the perturbation method
+  /// (linearised solves reusing each film's factorisation; no new Reynolds solve).
+  void linearize_last_solve(bool damping, Eigen::MatrixXd& KH, Eigen::MatrixXd* DH);
 };
 
 }  // namespace rotordyn
