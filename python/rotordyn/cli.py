@@ -210,6 +210,32 @@ def _add_operating_point(s, speed=True):
     s.add_argument("--config-ay-m", type=float, default=None)
 
 
+# -- sweeps and plots ----------------------------------------------------------------------
+def _cmd_sweep(args) -> int:
+    from rotordyn.sweep import run_sweep
+
+    def progress(done, total):
+        print(f"chunks {done}/{total}", file=sys.stderr)
+
+    res = run_sweep(args.spec, args.out, scheduler=args.scheduler, workers=args.workers,
+                    resume=args.resume, progress=progress)
+    m = res.manifest
+    failed = m.get("chunks_failed", {})
+    print(f"{m['sweep_id']}: {len(m['chunks_done'])}/{m['n_chunks']} chunks, "
+          f"{m['n_points']} points -> {args.out}" + (f"; {len(failed)} chunks failed" if failed
+                                                     else ""))
+    return 0 if res.complete else 1
+
+
+def _cmd_plot(args) -> int:
+    from rotordyn.plot import plot_dataset
+    from rotordyn.sweep import read_dataset
+
+    plot_dataset(read_dataset(args.dir), args.kind, args.out)
+    print(f"wrote {args.out}", file=sys.stderr)
+    return 0
+
+
 # -- report (the main job of `make run`) --------------------------------------------------
 def _cmd_report(args) -> int:
     from rotordyn import report
@@ -285,6 +311,21 @@ def build_parser() -> argparse.ArgumentParser:
     _add_operating_point(s, speed=False)
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=_cmd_unbalance)
+
+    s = sub.add_parser("sweep", help="run a sweep spec on dask into a parquet dataset")
+    s.add_argument("spec", help="sweeps/<name>.toml")
+    s.add_argument("--out", required=True)
+    s.add_argument("--scheduler", default=None, help="tcp://host:port of an existing cluster")
+    s.add_argument("--workers", type=int, default=None, help="LocalCluster worker processes")
+    s.add_argument("--resume", action=argparse.BooleanOptionalAction, default=True)
+    s.set_defaults(func=_cmd_sweep)
+
+    s = sub.add_parser("plot", help="figure from a sweep directory")
+    s.add_argument("dir")
+    s.add_argument("--kind", required=True,
+                   choices=["stability-map", "equilibrium", "campbell", "waterfall"])
+    s.add_argument("--out", required=True, help="FIG.png or FIG.svg")
+    s.set_defaults(func=_cmd_plot)
 
     s = sub.add_parser("report", help="the main job: analyses of a model written under --out")
     s.add_argument("model")
