@@ -20,3 +20,5 @@ def test_readme_python_example_runs(tmp_path, monkeypatch):
                                atol=2e-3)
     assert abs(ns["r"].frequencies_hz[0] - 10.43) / 10.43 < 0.01
     assert (tmp_path / "my_rotor.toml").exists()
+    assert ns["e"].status == "ok" and ns["t"].status == "ok" and ns["tr"].status == "ok"
+    assert len(ns["c"].critical_speeds()) >= 2 and ns["ss"].A.shape[0] == 2 * len(ns["e"].r)
