@@ -4,7 +4,8 @@
 - Campbell critical speeds (1× crossings of forward rotor modes) and the unbalance-response
   peaks agree: to the speed grid's resolution (1.5 Hz) for the lightly damped first mode; to
   5 % for the second, whose damping ratio (~0.1) and close backward partner shift the peak.
-- The stability table is tidy and the modes split into rotor and sleeve families.
+- The stability table is tidy and the modes split into rotor and sleeve families (by where
+  the kinetic energy of each mode lies).
 """
 
 import json
@@ -26,8 +27,11 @@ def test_stability_table_and_kinds(rig):
     st = rd.stability(rig, 50.0, 0.15e6, -1.85e-3)
     df = st.to_frame()
     assert list(df.columns[:4]) == ["speed_hz", "chamber_pressure_pa", "config_ay_m", "mode"]
-    assert (df["kind"] == "sleeve").sum() >= 2  # the sleeve's own modes, far above the rotor's
-    assert df.loc[df["kind"] == "sleeve", "freq_hz"].min() > df.loc[df["kind"] == "rotor", "freq_hz"].max()
+    # The sleeve's own modes sit kHz above the rotor's; in the film they are heavily damped
+    # (one may be overdamped and carry no frequency at all).
+    assert (df["kind"] == "sleeve").sum() >= 1
+    assert df.loc[df["kind"] == "sleeve", "freq_hz"].min() > 1000.0
+    assert df.loc[df["kind"] == "rotor", "freq_hz"].iloc[:3].max() < 100.0
     assert st.rotor_shapes.shape[:2] == (rig.rotor.n_elements + 1, 4)
     assert st.sleeve_shapes[0].shape[0] == 3 * rig.bearings[0].sleeve.n_elements
     assert st.stable == (st.max_real_1_per_s < 0)
