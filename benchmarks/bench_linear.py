@@ -1,0 +1,252 @@
+"""Benchmark: the linear toolchain on the paper's rig (issue 5).
+
+Run ``python benchmarks/bench_linear.py [--repeat 7] [--wall] [--no-ross]``.
+
+1. **One full operating point** of the rig (W = 50 Hz, a_y = −1.85 mm, p_c from ``params``:
+   Table 1's pressures): static equilibrium + K_H, D_H + eigen-analysis with whirl, kind and
+   mode shapes, i.e. ``rotordyn.stability``, from a **warm start** (the equilibrium at
+   0.99 p_c is solved, untimed, just before; a sweep or continuation step). Broken down into
+   the equilibrium alone, the linearisation alone (``SystemSolver.linearize``) and the
+   eigen-analysis alone (``_core.modal``). Baselines in the same run: the same operating point
+   with the paper's finite-difference K_H, D_H (eq. 20, ``method="finite_difference"``), and
+   the eigen-step done by ``scipy.linalg.eig`` on the NumPy state matrix (eigenvalues and
+   right eigenvectors; no whirl or kind classification). Goal: < 3 ms on one core.
+2. **A 100-speed Campbell diagram** of the rig (5–120 Hz, p_c = 0.4 MPa, a_y = 0; the
+   equilibrium continued from speed to speed, K_H(Ω), D_H(Ω) and all 9 modes at each speed):
+   ``rotordyn.campbell``. Baselines: the same with finite-difference K_H, D_H; a Python loop
+   over ``rotordyn.linearize`` + ``scipy.linalg.eig``; and ROSS's ``Rotor.run_campbell``
+   (``ross-rotordynamics``, when importable) on a rotor of the same size: the rig's
+   26-element shaft and two disks on linear bearings in place of the ball bearings and the
+   film (ROSS has no film equilibrium; it solves its full 108-DOF model at each speed), next
+   to ``rotordyn.rotor_campbell`` on the same full rotor. Goal: < 0.5 s.
+
+Times are the CPU time of this thread (``time.thread_time``; the machine is shared), or wall
+time with ``--wall``; medians of ``--repeat`` runs after one warm-up. Structure as asv
+(``params`` × ``param_names``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import os
+import statistics
+import sys
+import time
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import numpy as np  # noqa: E402
+import scipy.linalg as sla  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(__file__))
+from _common import fmt, import_ross  # noqa: E402
+
+import rotordyn as rd  # noqa: E402
+from rotordyn import _core  # noqa: E402
+from rotordyn.analysis.assembly import assembled  # noqa: E402
+
+params = ([0.10e6, 0.15e6, 0.20e6, 0.25e6],)
+param_names = ("chamber_pressure_pa",)
+SPEED_HZ, AY_M = 50.0, -1.85e-3
+CAMPBELL_SPEEDS = np.linspace(5.0, 120.0, 100)
+CLOCK = time.thread_time
+
+
+def median_of(repeat, setup, fn):
+    """Median over ``repeat`` of the time of fn() after an untimed setup(); plus the last
+    result. One untimed warm-up round first."""
+    setup()
+    out = fn()
+    ts = []
+    for _ in range(repeat):
+        setup()
+        t0 = CLOCK()
+        out = fn()
+        ts.append(CLOCK() - t0)
+    return statistics.median(ts), out
+
+
+@contextlib.contextmanager
+def quiet_fds():
+    """Silence C-level stdout/stderr (ROSS's REFPROP loader prints from a shared library)."""
+    saved = [os.dup(1), os.dup(2)]
+    null = os.open(os.devnull, os.O_WRONLY)
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os.dup2(null, 1)
+        os.dup2(null, 2)
+        yield
+    finally:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os.dup2(saved[0], 1)
+        os.dup2(saved[1], 2)
+        for fd in saved + [null]:
+            os.close(fd)
+
+
+# -- 1. operating point ---------------------------------------------------------------------
+def bench_operating_point(rig, repeat):
+    asm = assembled(rig)
+    xy = asm.rotor.xy_pairs()
+    w = 2 * np.pi * SPEED_HZ
+    print(f"\n1) Rig operating point, W = {SPEED_HZ:g} Hz, a_y = {AY_M * 1e3:g} mm, warm start "
+          f"(equilibrium at 0.99 p_c just before), {asm.n} coordinates, film "
+          f"{rig.bearings[0].n_circ}x{rig.bearings[0].n_axial}")
+    print(f"   {'p_c (MPa)':>9} | {'stability()':>11} | {'equilibrium':>11} | {'linearize':>11} | "
+          f"{'modal (C++)':>11} || {'FD K_H stab.':>12} | {'FD linearize':>12} | "
+          f"{'SciPy eig':>11}")
+    totals = []
+    for pc in params[0]:
+        def setup(pc=pc):
+            rd.equilibrium(rig, SPEED_HZ, 0.99 * pc, AY_M)
+
+        t_st, st = median_of(repeat, setup, lambda: rd.stability(rig, SPEED_HZ, pc, AY_M))
+        t_fd, st_fd = median_of(repeat, setup, lambda: rd.stability(
+            rig, SPEED_HZ, pc, AY_M, method="finite_difference"))
+        t_eq, e = median_of(repeat, setup, lambda: rd.equilibrium(rig, SPEED_HZ, pc, AY_M))
+        assert e.status == "ok", e.message
+        t_lin, lin = median_of(repeat, lambda: None,
+                               lambda: asm.solver.linearize(e.r, np.zeros(asm.n), w))
+        t_lfd, _ = median_of(repeat, lambda: None,
+                             lambda: asm.solver.linearize_fd(e.r, w, 1e-5))
+        lm = st.linear
+        t_mod, mod = median_of(repeat, lambda: None,
+                               lambda: _core.modal(lm.M, lm.D, lm.K, xy, asm.n, True))
+
+        def scipy_eig():
+            return sla.eig(lm.state_matrix(), right=True)
+
+        t_sp, (ev, _) = median_of(repeat, lambda: None, scipy_eig)
+        # same eigenvalues by both paths, and FD vs perturbation within 1e-6
+        ev = np.sort_complex(ev[ev.imag > 1e-9])
+        ours = np.sort_complex(st.eigenvalues[st.eigenvalues.imag > 1e-9])
+        assert np.allclose(ev, ours, rtol=1e-8), (ev, ours)
+        assert np.allclose(st_fd.eigenvalues, st.eigenvalues, rtol=1e-6)
+        totals.append(t_st)
+        print(f"   {pc / 1e6:9.2f} | {fmt(t_st):>11} | {fmt(t_eq):>11} | {fmt(t_lin):>11} | "
+              f"{fmt(t_mod):>11} || {fmt(t_fd):>12} | {fmt(t_lfd):>12} | {fmt(t_sp):>11}")
+    print(f"   median over the pressures: {fmt(statistics.median(totals)).strip()} per full "
+          f"operating point (goal < 3 ms): {'met' if statistics.median(totals) < 3e-3 else 'NOT met'}")
+
+
+# -- 2. Campbell ----------------------------------------------------------------------------
+def ross_rig_like(ross, rig):
+    """The rig's 26-element shaft and disks in ROSS, linear bearings instead of the ball
+    bearings (1e9 N/m) and the film (1e6 N/m, 1e3 N s/m): same size, not the same physics."""
+    m = rig.materials[0]
+    steel = ross.Material(name="bench_rig_steel", rho=m.density_kg_m3, E=m.young_pa,
+                          Poisson=m.poisson)
+    shaft = []
+    for s in rig.rotor.sections:
+        for _ in range(s.n_elements):
+            shaft.append(ross.ShaftElement(L=s.length_m / s.n_elements, idl=0.0,
+                                           odl=s.outer_diameter_m, material=steel,
+                                           shear_effects=True, rotary_inertia=True,
+                                           gyroscopic=True))
+    nodes = rig.rotor.station_nodes()
+    disks = [ross.DiskElement(n=int(nodes[d.station]), m=d.mass_kg, Id=d.id_kg_m2, Ip=d.ip_kg_m2)
+             for d in rig.rotor.disks]
+    brgs = [ross.BearingElement(n=int(nodes[s.station]), kxx=1e9, kyy=1e9, cxx=0, cyy=0)
+            for s in rig.supports]
+    brgs.append(ross.BearingElement(n=int(nodes[rig.bearings[0].station]), kxx=1e6, kyy=1e6,
+                                    cxx=1e3, cyy=1e3))
+    return ross.Rotor(shaft, disks, brgs)
+
+
+def rd_rig_like(rig):
+    """The same linear-bearing rotor in rotordyn, full FE model (no reduction)."""
+    sups = [rd.Support(s.station, "linear", kxx_n_per_m=1e9, kyy_n_per_m=1e9)
+            for s in rig.supports]
+    sups.append(rd.Support(rig.bearings[0].station, "linear", kxx_n_per_m=1e6, kyy_n_per_m=1e6,
+                           cxx_n_s_per_m=1e3, cyy_n_s_per_m=1e3))
+    return rd.System(rotor=rig.rotor, materials=rig.materials, supports=tuple(sups),
+                     reduction=rd.Reduction(method="none"))
+
+
+def bench_campbell(rig, repeat, use_ross):
+    sp = CAMPBELL_SPEEDS
+    pc, ay = 0.4e6, 0.0
+    print(f"\n2) Campbell of the rig, {len(sp)} speeds {sp[0]:g}-{sp[-1]:g} Hz, p_c = "
+          f"{pc / 1e6:g} MPa, a_y = {ay:g} (equilibrium continued, K_H(Ω), D_H(Ω), all modes)")
+    t_rd, c = median_of(repeat, lambda: None, lambda: rd.campbell(rig, sp, pc, ay))
+    crit = c.critical_speeds()["speed_hz"].to_numpy()
+    print(f"   rotordyn.campbell                 {fmt(t_rd)}   ({1e3 * t_rd / len(sp):.2f} ms "
+          f"per speed; critical speeds {np.round(crit, 2)} Hz) goal < 0.5 s: "
+          f"{'met' if t_rd < 0.5 else 'NOT met'}")
+    t_fd, cfd = median_of(max(1, repeat // 2), lambda: None,
+                          lambda: rd.campbell(rig, sp, pc, ay, method="finite_difference"))
+    # Same modes: the FD velocity step (1e-5 c ω) crosses a cavitation-set change at some
+    # speeds (D_H within 0.35 %, tests/test_linear_references.py), so compare loosely.
+    fin = np.isfinite(c.eigenvalues)
+    dev = np.max(np.abs(cfd.eigenvalues[fin] - c.eigenvalues[fin]) / np.abs(c.eigenvalues[fin]))
+    assert dev < 1e-2, dev
+    print(f"   same, finite-difference K_H, D_H  {fmt(t_fd)}   ratio {t_fd / t_rd:6.2f}x "
+          f"(max |Δλ|/|λ| {dev:.1e})")
+
+    def python_loop():
+        out = []
+        for s in sp:
+            lm = rd.linearize(rig, float(s), pc, ay)
+            ev = sla.eigvals(lm.state_matrix())
+            ev = ev[ev.imag > 0]
+            out.append(np.sort(ev.imag))
+        return out
+
+    t_py, py = median_of(max(1, repeat // 2), lambda: None, python_loop)
+    ours = [np.sort(row[np.isfinite(row) & (row.imag > 0)].imag) for row in c.eigenvalues]
+    assert all(np.allclose(a, b, rtol=1e-7) for a, b in zip(py, ours))
+    print(f"   loop: linearize + scipy eigvals   {fmt(t_py)}   ratio {t_py / t_rd:6.2f}x")
+
+    like = rd_rig_like(rig)
+    n_dof = 4 * (rig.rotor.n_elements + 1)
+    t_rc, rc = median_of(max(1, repeat // 3), lambda: None,
+                         lambda: rd.rotor_campbell(like, sp, reduction="none", n_modes=6))
+    print(f"   same-size linear rotor ({n_dof} free-free DOF, 6 modes, no film):")
+    print(f"     rotordyn.rotor_campbell         {fmt(t_rc)}")
+    ross = None
+    if use_ross:
+        with quiet_fds():
+            ross = import_ross()
+    if ross is None:
+        print("     ROSS run_campbell               not installed")
+        return
+    with quiet_fds():
+        rr = ross_rig_like(ross, rig)
+    sp_rad = 2 * np.pi * sp
+
+    def ross_camp():
+        with quiet_fds():
+            return rr.run_campbell(sp_rad, frequencies=6)
+
+    t_ro, res = median_of(max(1, repeat // 3), lambda: None, ross_camp)
+    wd_ross = np.sort(np.asarray(res.wd)[0])[:4] / (2 * np.pi)
+    wd_rd = np.sort(rc.frequencies_hz[0])[:4]
+    print(f"     ROSS {ross.__version__} run_campbell         {fmt(t_ro)}   rotor_campbell / ROSS = "
+          f"{t_rc / t_ro:.1f}x; the rig's campbell / ROSS = {t_rd / t_ro:.2f}x "
+          f"(first ω_d at 5 Hz: ROSS {np.round(wd_ross, 2)}, rotordyn {np.round(wd_rd, 2)} Hz)")
+    print("     (ROSS solves a few modes by sparse shift-invert ARPACK per speed; rotor_campbell "
+          "all 216 states densely)")
+
+
+def main(argv=None):
+    global CLOCK
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=7)
+    ap.add_argument("--wall", action="store_true", help="wall time instead of thread CPU time")
+    ap.add_argument("--no-ross", action="store_true")
+    args = ap.parse_args(argv)
+    if args.wall:
+        CLOCK = time.perf_counter
+    rig = rd.models.paper_rig()
+    print(f"rotordyn {rd.__version__}; clock: {'wall' if args.wall else 'thread CPU'}; "
+          f"repeat {args.repeat}")
+    bench_operating_point(rig, args.repeat)
+    bench_campbell(rig, args.repeat, not args.no_ross)
+
+
+if __name__ == "__main__":
+    main()
