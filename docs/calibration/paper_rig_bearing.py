@@ -20,7 +20,7 @@ Unknowns fitted:
 
 Least squares on 8 + 3 residuals: (model − paper)/0.01 for −x/c and y/c at the four pressures,
 and ln(f_model/f_paper)/0.03 for the three condensed frequencies (a 1 % of c misfit weighs as
-much as a 3 % frequency misfit). Runtime: about 30 s.
+much as a 3 % frequency misfit). Runtime: 20-30 s on an idle core (longer on a busy one).
 
 Run:  .venv/bin/python docs/calibration/paper_rig_bearing.py [--table-only]
 (--table-only: just Table 1 of the built-in model, Newton and successive substitution.)
