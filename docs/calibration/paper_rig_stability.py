@@ -99,7 +99,7 @@ def fig9(system):
     for ay in AY_MM:
         th = rd.threshold(system, "chamber_pressure_pa", bounds=PC_BOUNDS, speed_hz=50.0,
                           config_ay_m=float(ay) * 1e-3, n_scan=N_SCAN)
-        out.append((float(ay), th))
+        out.append((float(ay), th, crossings_table(system, th, 50.0, float(ay) * 1e-3)))
     return out
 
 
@@ -108,7 +108,7 @@ def fig10(system):
     for sp in SPEEDS_FIG10:
         th = rd.threshold(system, "chamber_pressure_pa", bounds=PC_BOUNDS, speed_hz=float(sp),
                           config_ay_m=0.0, n_scan=N_SCAN)
-        out.append((float(sp), th))
+        out.append((float(sp), th, crossings_table(system, th, float(sp), 0.0)))
     return out
 
 
@@ -125,31 +125,34 @@ def upper_boundary(th):
 
 def print_boundary(name, along, results, unit_scale, unit):
     print(f"\n{name}")
-    print(f"  {along:>10}  crossings p_c (MPa) [whirl Hz at the first]    stable for p_c above")
-    for x, th in results:
-        cr = ", ".join(f"{c / 1e6:.4f}" for c in th.crossings) or "-"
-        wf = f"[{th.whirl_frequency_hz:.2f}]" if th.status == "ok" else ""
+    print(f"  {along:>10}  crossings p_c MPa (+: becomes unstable, -: stable; whirl Hz)"
+          f"        stable for p_c above")
+    for x, th, rows in results:
+        cr = ", ".join(f"{r['value'] / 1e6:.4f}{'+' if r['becomes'] == 'unstable' else '-'}"
+                       f"({r['whirl_hz']:.1f}{r['whirl'][0].upper()})" for r in rows) or "-"
+        wf = ""
         ub = upper_boundary(th)
         re0 = th.scan["max_real_1_per_s"].iloc[0]
         state0 = "stable" if re0 < 0 else "unstable"
-        ubs = "never (unstable at 0.6 MPa)" if np.isnan(ub) else f"{ub / 1e6:.4f} MPa"
+        ubs = ("never (unstable at 0.6 MPa)" if np.isnan(ub) else
+               "every p_c (no crossing)" if not th.crossings else f"{ub / 1e6:.4f} MPa")
         bad = set(th.scan["status"]) - {"ok"}
         extra = f"  statuses {sorted(bad)}" if bad else ""
-        print(f"  {x * unit_scale:10.2f}  {cr:28s} {wf:9s}  {ubs:28s} (p_c = 0: {state0}){extra}")
+        print(f"  {x * unit_scale:10.2f}  {cr:44s}{wf}  {ubs:28s} (p_c = 0: {state0}){extra}")
 
 
 def plot_boundary(results, along_label, scale, path, title, paper_point=None):
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
-    xs = np.array([x * scale for x, _ in results])
+    xs = np.array([x * scale for x, _, _ in results])
     ps = results[0][1].scan["chamber_pressure_pa"].to_numpy() / 1e6
-    re = np.array([th.scan["max_real_1_per_s"].to_numpy() for _, th in results]).T
+    re = np.array([th.scan["max_real_1_per_s"].to_numpy() for _, th, _ in results]).T
     lim = np.nanmax(np.abs(re))
     im = ax.pcolormesh(xs, ps, np.sign(re) * np.sqrt(np.abs(re) / lim), cmap="RdBu_r",
                        vmin=-1, vmax=1, shading="nearest", alpha=0.55)
     cb = fig.colorbar(im, ax=ax)
     cb.set_label("sign(max Re λ)·√(|max Re λ| / max)   (red: unstable)")
     first = True
-    for x, th in results:
+    for x, th, _ in results:
         for c in th.crossings:
             ax.plot(x * scale, c / 1e6, "ko", ms=4, label="threshold (Brent)" if first else None)
             first = False
@@ -200,7 +203,7 @@ def plot_campbell(c, crit, path):
     ax.set_ylim(0, 200)
     ax.set_xlabel("speed W (Hz)")
     ax.set_ylabel("damped natural frequency (Hz)")
-    ax.set_title("rig, p_c = 0.4 MPa, a_y = 0: rotor modes (sleeve modes > 400 Hz omitted)",
+    ax.set_title("rig, p_c = 0.4 MPa, a_y = 0: rotor modes (sleeve modes omitted, as in the paper)",
                  fontsize=9)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize="small", loc="upper left")
@@ -239,11 +242,16 @@ def sensitivity(system):
         ("clearance x1.1", dict(clearance_m=1.1 * b.clearance_m)),
         ("cavitation gumbel", dict(cavitation="gumbel")),
         ("film grid 144 x 32", dict(n_circ=144, n_axial=32)),
+        ("rotor shaft E x1.2 (rotor free freqs +9.5 %)", "rotor_E"),
     ]
     print("\nSensitivity (threshold at a_y = -1.85 mm, 50 Hz; critical speeds at 0.4 MPa, a_y = 0):")
     print(f"  {'variant':44s} crossings p_c (MPa)          critical speeds (Hz)")
     for name, ch in cases:
-        s = variant(system, **ch) if ch else system
+        if ch == "rotor_E":  # stiffer shaft: not a candidate, an illustration (see the doc)
+            s = dataclasses.replace(system, materials=tuple(
+                dataclasses.replace(m, young_pa=1.2 * m.young_pa) for m in system.materials))
+        else:
+            s = variant(system, **ch) if ch else system
         t0 = time.perf_counter()
         try:
             th = rd.threshold(s, "chamber_pressure_pa", bounds=PC_BOUNDS, speed_hz=50.0,
@@ -304,6 +312,13 @@ def main(argv=None):
                    f"({time.perf_counter() - t0:.1f} s)", "W (Hz)", r10, 1.0, "Hz")
     plot_boundary(r10, "speed W (Hz)", 1.0, os.path.join(args.out, "paper_rig_fig10_boundary.png"),
                   "Fig. 10: stability boundary at a_y = 0 (model)")
+    for pc in (0.0, 0.1e6, 0.2e6, 0.4e6):
+        ts = rd.threshold(system, "speed_hz", bounds=(10.0, 120.0), chamber_pressure_pa=pc,
+                          config_ay_m=0.0, n_scan=23)
+        cr = ", ".join(f"{v:.2f}" for v in ts.crossings) or "none"
+        print(f"   threshold speed at p_c = {pc / 1e6:.1f} MPa, a_y = 0 (10-120 Hz): {cr} Hz"
+              + (f"; whirl {ts.whirl_frequency_hz:.2f} Hz, ratio {ts.whirl_ratio:.3f}, stable "
+                 f"{ts.stable_side}" if ts.status == "ok" else f" ({ts.message})"))
 
     # 4. Fig. 12
     t0 = time.perf_counter()
@@ -332,6 +347,28 @@ def main(argv=None):
     m0 = rd.modes(system, 0.0)
     print("   rotor alone on its ball bearings (condensed, 0 Hz): "
           + ", ".join(f"{x:.2f}" for x in m0.eigenvalues.imag[::2] / (2 * np.pi)) + " Hz")
+    # The rotor with its journal pinned (a rigid support at the bearing station, no film):
+    # what the critical speeds tend to when the film is much stiffer than the rotor.
+    st4 = system.bearings[0].station
+    pinned = dataclasses.replace(
+        system, bearings=(), supports=system.supports + (rd.Support(st4),),
+        reduction=rd.Reduction(tuple(m for m in system.reduction.master_stations if m != st4),
+                               system.reduction.method))
+    pg = rd.modes(pinned, 0.0)
+    pf = rd.modes(pinned, 0.0, reduction="none", n_modes=4)
+    print("   rotor pinned at the journal (no film, 0 Hz): condensed "
+          + ", ".join(f"{x:.2f}" for x in pg.eigenvalues.imag[::2] / (2 * np.pi))
+          + " Hz; full " + ", ".join(f"{x:.2f}" for x in pf.eigenvalues.imag[::2] / (2 * np.pi))
+          + " Hz")
+    e = rd.linearize(system, 40.0, 0.4e6, 0.0)
+    j = [e.labels.index(f"station{st4}.x"), e.labels.index(f"station{st4}.y")]
+    n_r = 2 * len(system.reduction.master_stations)  # rotor coordinates come first
+    kr = np.linalg.inv(np.linalg.inv(e.K_structure[:n_r, :n_r])[np.ix_(j, j)])
+    cl = e.equilibrium.clearance_m[0]
+    print(f"   at 40 Hz, 0.4 MPa: film K_H at the journal {np.abs(e.KH[np.ix_(j, j)]).max():.3g} N/m "
+          f"(largest entry), rotor stiffness there {np.abs(kr).max():.3g} N/m; h_min/c "
+          f"{e.equilibrium.h_min_m[0] / cl:.3f}, journal x/c, y/c "
+          f"{e.equilibrium.journal_x_m[0] / cl:+.3f}, {e.equilibrium.journal_y_m[0] / cl:+.3f}")
     plot_campbell(c, crit, os.path.join(args.out, "paper_rig_fig12_campbell.png"))
 
     if args.sensitivity:
