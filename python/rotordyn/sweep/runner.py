@@ -96,6 +96,32 @@ def _write_chunk(out: Path, df: pd.DataFrame, meta: dict, chunk_id: int) -> None
     os.replace(tmp, final)
 
 
+def _local_cluster(n: int):
+    """A LocalCluster of ``n`` single-threaded worker processes. Worker start-up can be slow
+    on a loaded machine: the start is retried once with generous timeouts, then falls back
+    to worker threads in this process (the C++ core releases the GIL) rather than failing
+    the sweep."""
+    import dask
+    from dask.distributed import LocalCluster
+
+    last = None
+    for attempt in range(2):
+        timeout = "30s" if attempt == 0 else "120s"
+        try:
+            with dask.config.set({"distributed.comm.timeouts.connect": timeout,
+                                  "distributed.deploy.lost-worker-timeout": timeout}):
+                return LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                    dashboard_address=None)
+        except Exception as exc:  # noqa: BLE001 - start-up failure, retried
+            last = exc
+    import logging
+
+    logging.getLogger("rotordyn.sweep").warning(
+        "dask worker processes failed to start (%s); using worker threads", last)
+    return LocalCluster(n_workers=n, threads_per_worker=1, processes=False,
+                        dashboard_address=None)
+
+
 def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | None = None,
               resume: bool = True, progress=None) -> SweepResult:
     """Run (or resume) the sweep described by ``spec_path`` into directory ``out``."""
@@ -134,7 +160,7 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
     if not todo:
         return SweepResult(out, manifest)
 
-    from dask.distributed import Client, LocalCluster, as_completed
+    from dask.distributed import Client, as_completed
 
     cluster = None
     if scheduler:
@@ -143,8 +169,7 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
         n = workers or min(len(todo), os.cpu_count() or 1)
         # One thread per worker process; the C++ core's own OpenMP is kept to one thread.
         os.environ.setdefault("OMP_NUM_THREADS", "1")
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+        cluster = _local_cluster(n)
         client = Client(cluster)
     try:
         futs = {client.submit(run_chunk, model_toml, spec.analysis, spec.options, cid, pts,
