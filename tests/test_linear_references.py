@@ -228,11 +228,6 @@ def test_central_gyroscopic_disk_frequencies(speed_hz):
                                rtol=1e-6)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "whirl_direction (cpp/src/modal.cpp) sums orbit areas over the translation pairs only; "
-    "a pure tilt mode (centrally mounted disk: no translation at any node) gets a label "
-    "from round-off (seen: 'backward' for the forward tilt mode at 30 Hz, 'planar' at "
-    "100 Hz). Needs the rotation pairs (θx, θy) in the sum."))
 def test_central_gyroscopic_disk_tilt_whirl_labels():
     """The forward tilt mode (frequency rising with speed) is labelled forward and the
     backward one backward, at 30 and 100 Hz (closed form of the previous test)."""
@@ -334,6 +329,26 @@ def test_whirl_ratio_tends_to_one_half_at_light_load():
         ratios.append(th.whirl_ratio)
     assert abs(ratios[1] - 0.5) < abs(ratios[0] - 0.5)
     assert abs(ratios[1] - 0.5) < 0.002
+
+
+def test_no_oil_whirl_above_the_short_bearing_stability_limit():
+    """With the short-bearing coefficients Lund's γ² turns negative above ε ≈ 0.756: no
+    speed makes the rigid rotor unstable there (REFERENCES: Friswell et al. §5.6). A rotor
+    heavy enough that ε ≥ 0.78 (Ocvirk) at every speed up to 200 Hz (ε ≈ 0.79 in the
+    L/D = 1/8 film at 200 Hz) is stable over 20–200 Hz: the threshold search says
+    "no_crossing", stable, and the largest real part is clearly negative (measured −6.7 1/s)."""
+    eps, f_top = 0.78, 200.0
+    assert lund.__doc__ and short_bearing_ab(eps)[0].shape == (2, 2)
+    a, b = short_bearing_ab(eps)
+    keq = (a[0, 0] * b[1, 1] + a[1, 1] * b[0, 0] - a[0, 1] * b[1, 0] - a[1, 0] * b[0, 1]) \
+        / (b[0, 0] + b[1, 1])
+    assert ((a[0, 0] - keq) * (a[1, 1] - keq) - a[0, 1] * a[1, 0]) < 0  # γ² < 0
+    w = 2 * PI * f_top
+    load = BMU * w * (BD / 2) * (0.125 * BD) ** 3 / (4 * BC**2) * ocvirk_load_factor(eps)
+    s = rigid_rotor(2 * load / G_ACC, 0.125)
+    th = rd.threshold(s, "speed_hz", bounds=(20.0, f_top), n_scan=10)
+    assert th.status == "no_crossing" and "is stable" in th.message
+    assert th.scan["max_real_1_per_s"].max() < -1.0
 
 
 # -- 4. Consistency on the paper's rig ------------------------------------------------------

@@ -24,10 +24,12 @@ void bind_modal(py::module_& m) {
 
   m.def("modal", &modal, py::arg("M"), py::arg("D"), py::arg("K"), py::arg("xy_pairs"),
         py::arg("n_modes"), py::arg("with_modes") = true,
+        py::arg("rot_pairs") = std::vector<std::pair<int, int>>{},
         py::call_guard<py::gil_scoped_release>(),
         "Eigen-analysis of M q'' + D q' + K q = 0; n_modes <= 0 keeps all.");
   m.def("campbell", &campbell, py::arg("M"), py::arg("C"), py::arg("G"), py::arg("K"),
         py::arg("xy_pairs"), py::arg("speeds_rad_s"), py::arg("n_modes"),
+        py::arg("rot_pairs") = std::vector<std::pair<int, int>>{},
         py::call_guard<py::gil_scoped_release>(),
         "Eigenvalues (n_speeds, n_modes) with D = C + Ω G at each speed.");
 

@@ -69,6 +69,7 @@ void bind_rotor(py::module_& m) {
       .def_readonly("G", &ConstrainedRotor::G)
       .def_readonly("dofs", &ConstrainedRotor::dofs)
       .def_readonly("xy", &ConstrainedRotor::xy)
+      .def_readonly("rot", &ConstrainedRotor::rot)
       .def("local", &ConstrainedRotor::local, py::arg("full_dof"));
 
   m.def(

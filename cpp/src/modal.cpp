@@ -59,15 +59,27 @@ void eig_general(const Eigen::MatrixXd& A_in, Eigen::VectorXcd& w, Eigen::Matrix
   }
 }
 
-Whirl whirl_direction(const Eigen::VectorXcd& s, const std::vector<std::pair<int, int>>& xy) {
+Whirl whirl_direction(const Eigen::VectorXcd& s, const std::vector<std::pair<int, int>>& xy,
+                      const std::vector<std::pair<int, int>>& rot) {
   // x = Re(X e^{iωt}), y = Re(Y e^{iωt}); counter-clockwise (forward, with Ω > 0) when
-  // Im(X conj(Y)) > 0. Sum the signed orbit areas over all pairs.
-  double area = 0, scale = 0;
-  for (const auto& p : xy) {
-    const auto X = s(p.first), Y = s(p.second);
-    area += std::imag(X * std::conj(Y));
-    scale += std::norm(X) + std::norm(Y);
-  }
+  // Im(X conj(Y)) > 0. Sum the signed orbit areas over all pairs. For rotations the disk
+  // axis tip sits at (θy, −θx), which turns counter-clockwise when Im(θx conj(θy)) > 0: the
+  // same expression with (θx, θy) in place of (x, y).
+  auto areas = [&](const std::vector<std::pair<int, int>>& pairs, double& area, double& scale) {
+    area = 0;
+    scale = 0;
+    for (const auto& p : pairs) {
+      const auto X = s(p.first), Y = s(p.second);
+      area += std::imag(X * std::conj(Y));
+      scale += std::norm(X) + std::norm(Y);
+    }
+  };
+  double at, st, ar, sr;
+  areas(xy, at, st);
+  areas(rot, ar, sr);
+  // Translations decide unless they are round-off against the rotations (pure tilt modes).
+  const bool use_rot = !rot.empty() && st <= 1e-12 * (st + sr);
+  const double area = use_rot ? ar : at, scale = use_rot ? sr : st;
   if (scale == 0 || std::abs(area) < 1e-6 * scale) return Whirl::Planar;
   return area > 0 ? Whirl::Forward : Whirl::Backward;
 }
@@ -123,7 +135,7 @@ std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero)
 
 ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K,
                   const std::vector<std::pair<int, int>>& xy_pairs, int n_modes,
-                  bool with_modes) {
+                  bool with_modes, const std::vector<std::pair<int, int>>& rot_pairs) {
   const Eigen::Index n = M.rows();
   Eigen::VectorXcd w;
   Eigen::MatrixXcd V;
@@ -177,7 +189,7 @@ ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eige
     Eigen::Index imax = 0;
     s.cwiseAbs().maxCoeff(&imax);
     if (std::abs(s(imax)) > 0) s /= s(imax);
-    out.whirl[static_cast<std::size_t>(j)] = whirl_direction(s, xy_pairs);
+    out.whirl[static_cast<std::size_t>(j)] = whirl_direction(s, xy_pairs, rot_pairs);
     if (with_modes) out.modes.col(j) = s;
   }
   return out;
@@ -186,7 +198,8 @@ ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eige
 CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
                         const Eigen::MatrixXd& G, const Eigen::MatrixXd& K,
                         const std::vector<std::pair<int, int>>& xy_pairs,
-                        const Eigen::VectorXd& speeds, int n_modes) {
+                        const Eigen::VectorXd& speeds, int n_modes,
+                        const std::vector<std::pair<int, int>>& rot_pairs) {
   require(n_modes > 0, "n_modes: expected > 0, got " + std::to_string(n_modes));
   CampbellResult out;
   out.eigenvalues = Eigen::MatrixXcd::Constant(speeds.size(), n_modes,
@@ -198,7 +211,7 @@ CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
 #pragma omp parallel for schedule(dynamic)
   for (Eigen::Index s = 0; s < speeds.size(); ++s) {
     try {
-      const ModalResult r = modal(M, C + speeds(s) * G, K, xy_pairs, n_modes, false);
+      const ModalResult r = modal(M, C + speeds(s) * G, K, xy_pairs, n_modes, false, rot_pairs);
       for (Eigen::Index j = 0; j < r.eigenvalues.size(); ++j) {
         out.eigenvalues(s, j) = r.eigenvalues(j);
         out.whirl(s, j) = static_cast<int>(r.whirl[static_cast<std::size_t>(j)]);

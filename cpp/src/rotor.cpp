@@ -237,6 +237,8 @@ ConstrainedRotor constrain(const RotorModel& model) {
   for (int node = 0; node < model.n_nodes(); ++node) {
     const int ix = out.local(4 * node), iy = out.local(4 * node + 1);
     if (ix >= 0 && iy >= 0) out.xy.emplace_back(ix, iy);
+    const int tx = out.local(4 * node + 2), ty = out.local(4 * node + 3);
+    if (tx >= 0 && ty >= 0) out.rot.emplace_back(tx, ty);
   }
   return out;
 }

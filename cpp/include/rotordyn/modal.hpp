@@ -28,9 +28,12 @@ void eig_general(const Eigen::MatrixXd& A, Eigen::VectorXcd& w, Eigen::MatrixXcd
 
 /// Modal analysis of the second-order system (dense, n_dof ≤ a few thousand).
 /// xy_pairs: (ix, iy) index pairs used to classify whirl. n_modes <= 0: all.
+/// rot_pairs: (iθx, iθy) pairs, used for the whirl of modes without translation (a tilting
+/// disk).
 ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K,
                   const std::vector<std::pair<int, int>>& xy_pairs, int n_modes,
-                  bool with_modes = true);
+                  bool with_modes = true,
+                  const std::vector<std::pair<int, int>>& rot_pairs = {});
 
 /// Campbell data: the n_modes least-frequency eigenvalues at each spin speed (rad/s), using
 /// D = C + Ω G at each speed. eigenvalues (n_speeds, n_modes); whirl (n_speeds, n_modes).
@@ -41,9 +44,13 @@ struct CampbellResult {
 CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
                         const Eigen::MatrixXd& G, const Eigen::MatrixXd& K,
                         const std::vector<std::pair<int, int>>& xy_pairs,
-                        const Eigen::VectorXd& speeds_rad_s, int n_modes);
+                        const Eigen::VectorXd& speeds_rad_s, int n_modes,
+                        const std::vector<std::pair<int, int>>& rot_pairs = {});
 
-/// Classify the whirl of one displacement vector from its (x, y) pairs.
-Whirl whirl_direction(const Eigen::VectorXcd& shape, const std::vector<std::pair<int, int>>& xy);
+/// Classify the whirl of one displacement vector from its (x, y) pairs; when the translations
+/// are negligible (a pure tilt mode), from its (θx, θy) pairs (forward when the disk axis
+/// precesses with the spin).
+Whirl whirl_direction(const Eigen::VectorXcd& shape, const std::vector<std::pair<int, int>>& xy,
+                      const std::vector<std::pair<int, int>>& rot = {});
 
 }  // namespace rotordyn

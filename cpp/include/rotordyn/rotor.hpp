@@ -92,6 +92,7 @@ struct ConstrainedRotor {
   Eigen::MatrixXd M, K, C, G;              ///< (n_free, n_free)
   std::vector<int> dofs;                   ///< full DOF index of each retained DOF
   std::vector<std::pair<int, int>> xy;     ///< (ix, iy) local index pairs for whirl
+  std::vector<std::pair<int, int>> rot;    ///< (iθx, iθy) local index pairs
   /// Local index of full DOF d, or -1 if it was removed.
   int local(int full_dof) const;
 };

@@ -77,7 +77,7 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
         return StabilityResult(lm, empty, np.zeros(0, dtype=object), np.zeros(0, dtype=object),
                                np.zeros((0, 4, 0), dtype=complex), status=lm.status,
                                message=lm.equilibrium.message or "no equilibrium")
-    r = _core.modal(lm.M, lm.D, lm.K, xy, int(n_modes or n), True)
+    r = _core.modal(lm.M, lm.D, lm.K, xy, int(n_modes or n), True, asm.rotor.rot_pairs())
     lam = np.asarray(r.eigenvalues)
     phi = np.asarray(r.modes)  # (n, k)
     # Which part carries the mode: kinetic-energy share of the sleeve coordinates.

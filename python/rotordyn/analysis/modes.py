@@ -51,6 +51,10 @@ class RotorMatrices:
         n_m = len(self.system.reduction.master_stations)
         return [(2 * i, 2 * i + 1) for i in range(n_m)]
 
+    def rot_pairs(self):
+        """(iθx, iθy) pairs in the analysed coordinates (none for a reduced model)."""
+        return list(self.full.rot) if self.reduction is None else []
+
     def expand(self, q: np.ndarray) -> np.ndarray:
         """Analysed coordinates (n, k) → full free-free FE DOFs (4 n_nodes, k), zeros at the
         fixed DOFs."""
@@ -64,7 +68,7 @@ class RotorMatrices:
 def _result(rm: RotorMatrices, speed_hz: float, n_modes: int, model_name: str) -> ModesResult:
     M, K, C, G = rm.matrices()
     w = hz_to_rad_s(speed_hz)
-    r = _core.modal(M, C + w * G, K, rm.xy_pairs(), n_modes, True)
+    r = _core.modal(M, C + w * G, K, rm.xy_pairs(), n_modes, True, rm.rot_pairs())
     shapes = rm.expand(np.asarray(r.modes))  # (4 n_nodes, n_modes)
     n_nodes = shapes.shape[0] // 4
     return ModesResult(
@@ -122,6 +126,6 @@ def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
     v.integer("n_modes", n_modes, lo=1)
     rm = RotorMatrices(system, reduction)
     M, K, C, G = rm.matrices()
-    r = _core.campbell(M, C, G, K, rm.xy_pairs(), hz_to_rad_s(sp), n_modes)
+    r = _core.campbell(M, C, G, K, rm.xy_pairs(), hz_to_rad_s(sp), n_modes, rm.rot_pairs())
     return CampbellResult(sp, np.asarray(r.eigenvalues), np.asarray(r.whirl),
                           model="full" if rm.reduction is None else rm.method)
