@@ -292,6 +292,10 @@ def main(argv=None):
     if np.isfinite(ub):
         print(f"   stable for every p_c above {ub / 1e6:.5f} MPa: "
               f"{100 * (ub / PAPER_THRESHOLD_PA - 1):+.1f} % against the paper")
+    fig11 = [(p, rd.stability(system, 50.0, p, -1.85e-3)) for p in (0.05e6, 0.10e6, 0.15e6)]
+    print("   Fig. 11 pressures (paper, nonlinear: limit cycle, slow decay, fast decay): "
+          + "; ".join(f"{p / 1e6:.2f} MPa max Re λ {st.max_real_1_per_s:+.2f} 1/s "
+                      f"({'stable' if st.stable else 'unstable'})" for p, st in fig11))
     scan = th.scan
     print("   scan: " + "  ".join(f"{p / 1e6:.2f}:{r:+.1f}" for p, r in
                                    zip(scan["chamber_pressure_pa"], scan["max_real_1_per_s"])))
