@@ -83,6 +83,9 @@ void bind_reynolds(py::module_& m) {
       .def("linearize", &RS::linearize, py::arg("dh"), py::arg("d_dhdt"), gil(),
            "Pressure change (n_circ, n_axial+1) about the last solve for dh, d(dh/dt).")
       .def("integrate_force", &RS::integrate_force, py::arg("p"), gil())
+      .def("integrate", &RS::integrate, py::arg("p"), py::arg("g"), gil(),
+           "Trapezoidal integral of p*g over the bush surface (R dphi dz), e.g. a sleeve mode's "
+           "generalised film force.")
       .def(
           "rigid",
           [](RS& s, double x, double y, double vx, double vy, double omega) {

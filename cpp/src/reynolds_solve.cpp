@@ -267,6 +267,21 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
   return dp;
 }
 
+double ReynoldsSolver::integrate(const RowMatrixXd& pr, const RowMatrixXd& g) const {
+  const Impl& s = *impl_;
+  if (pr.rows() != s.N || pr.cols() != s.K1)
+    throw InputError(shape_msg("p", s.N, s.K1, pr.rows(), pr.cols()));
+  if (g.rows() != s.N || g.cols() != s.K1)
+    throw InputError(shape_msg("g", s.N, s.K1, g.rows(), g.cols()));
+  double acc = 0.0;
+  for (int n = 0; n < s.n_nodes; ++n) {
+    const int k = n % s.K1;
+    const double wk = (k == 0 || k == s.K1 - 1) ? 0.5 : 1.0;
+    acc += wk * pr.data()[n] * g.data()[n];
+  }
+  return acc * s.R * s.dphi * s.dz;
+}
+
 Eigen::Vector2d ReynoldsSolver::integrate_force(const RowMatrixXd& pr) const {
   const Impl& s = *impl_;
   if (pr.rows() != s.N || pr.cols() != s.K1)

@@ -124,3 +124,18 @@ TEST_CASE("reynolds: bad input is an InputError, contact a ContactError") {
   CHECK_THROWS(s.solve(h, hd, 10.0), ContactError);
   CHECK_THROWS(s.solve(RowMatrixXd::Constant(24, 4, 1e-4), hd, 10.0), InputError);
 }
+
+TEST_CASE("reynolds: integrate(p, -cos/-sin) is the journal force") {
+  JournalBearingGeometry g = geom(0.05, 0.04);
+  g.grooves.push_back(Groove{90.0, 0.0, 0.0});
+  ReynoldsSolver s(g, FilmGrid{48, 12}, Cavitation::reynolds);
+  const FilmSolution f = s.rigid(2e-5, -5e-5, 0, 0, 150.0);
+  RowMatrixXd gc(48, 13), gs(48, 13);
+  for (int j = 0; j < 48; ++j) {
+    gc.row(j).setConstant(-std::cos(j * 2 * kPi / 48));
+    gs.row(j).setConstant(-std::sin(j * 2 * kPi / 48));
+  }
+  CHECK_CLOSE(s.integrate(f.p_pa, gc), f.force_n.x(), 1e-12, 0.0);
+  CHECK_CLOSE(s.integrate(f.p_pa, gs), f.force_n.y(), 1e-12, 0.0);
+  CHECK_THROWS(s.integrate(f.p_pa, RowMatrixXd::Zero(48, 12)), InputError);
+}

@@ -124,6 +124,10 @@ class ReynoldsSolver {
   RowMatrixXd linearize(const RowMatrixXd& dh, const RowMatrixXd& d_dhdt);
   /// Force change for a pressure change from linearize().
   Eigen::Vector2d integrate_force(const RowMatrixXd& p) const;
+  /// ∫∫ p·g R dφ dz over the bush (trapezoidal rule on the nodes), e.g. the generalised
+  /// force of the film on a sleeve mode whose inward radial displacement is g(φ, z) (virtual
+  /// work: Q = ∫∫ p·w dA with w the mode's inward displacement per unit coordinate).
+  double integrate(const RowMatrixXd& p, const RowMatrixXd& g) const;
 
   /// Rigid journal at (x, y) with velocity (vx, vy). InputError if the eccentricity ratio ≥ 1.
   const FilmSolution& rigid(double x_m, double y_m, double vx_m_s, double vy_m_s, double omega);
