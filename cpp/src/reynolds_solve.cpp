@@ -16,7 +16,7 @@ void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
   fill_spd(S, nullptr);
   factor_spd(S);
   base_rhs(S, S.rhs);
-  S.ldlt.solve_into(S.rhs.data(), S.sol.data(), S.scratch);
+  S.ldlt.solve(S.rhs.data(), S.sol.data());
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
     pfull[n] = S.sol[i];
@@ -41,9 +41,9 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   const int max_iter = 100 + S.n_unk / 4;
   for (int it = 1; it <= max_iter; ++it) {
     fill_spd(S, &S.active);
-    factor_spd(S, true);
+    factor_spd(S);
     for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
-    S.ldlt.solve_into(b.data(), S.sol.data(), S.scratch);
+    S.ldlt.solve(b.data(), S.sol.data());
     double pscale = 0.0;
     for (int i = 0; i < S.n_unk; ++i) {
       const int n = S.node_of[i];
@@ -223,7 +223,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     } else {
       const bool masked = s.cav == Cavitation::reynolds;
       s.fill_spd(F, masked ? &F.active : nullptr);
-      s.factor_spd(F, masked);
+      s.factor_spd(F);
     }
     F.have_active = s.cav == Cavitation::reynolds || s.cav == Cavitation::jfo;
     s.sys = S = &F;
@@ -238,7 +238,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
         if (S->active[i]) r[i] = 0.0;
     r = -r;
     Eigen::VectorXd x(S->n_unk);
-    S->ldlt.solve_into(r.data(), x.data(), S->scratch);
+    S->ldlt.solve(r.data(), x.data());
     // gumbel: p = max(p_full, 0); where p_full vanishes to round-off (e.g. on a symmetry line)
     // the one-sided derivatives differ and we take their mean, as a central difference does.
     double pmax = 0.0;
