@@ -264,3 +264,29 @@ def test_static_equilibrium_is_robust_over_load_direction_and_size(cav):
     if cav == "jfo":
         with pytest.raises(rotordyn.ConvergenceError, match="carries at most"):
             b.static_equilibrium(load_n=(25.9, 96.6), speed_hz=50.0)
+
+
+def test_batch_threads_and_failing_points():
+    """A threaded batch equals the serial one; failing points are NaN rows with a status
+    (on_error="nan") or raise the matching rotordyn error after the batch (default)."""
+    b = bearing("reynolds")
+    rng = np.random.default_rng(3)
+    e = rng.uniform(0.0, 0.9, 40)
+    a = rng.uniform(0.0, 2 * math.pi, 40)
+    x, y = e * C_RAD * np.cos(a), e * C_RAD * np.sin(a)
+    f1 = b.forces_batch(x_m=x, y_m=y, speed_hz=N_HZ)
+    f2 = b.forces_batch(x_m=x, y_m=y, speed_hz=N_HZ, n_threads=3)
+    np.testing.assert_allclose(f2, f1, rtol=1e-10, atol=1e-12 * np.abs(f1).max())
+    c1 = b.coefficients_batch(x_m=x, y_m=y, speed_hz=N_HZ)
+    c2 = b.coefficients_batch(x_m=x, y_m=y, speed_hz=N_HZ, n_threads=2)
+    np.testing.assert_allclose(c2["K"], c1["K"], rtol=1e-9, atol=1e-9 * np.abs(c1["K"]).max())
+    assert np.all(c1["status"] == 0)
+    x_bad = x.copy()
+    x_bad[[5, 17]] = 2 * C_RAD  # eccentricity ratio > 1
+    fn = b.forces_batch(x_m=x_bad, y_m=y, speed_hz=N_HZ, n_threads=2, on_error="nan")
+    assert np.all(np.isnan(fn[[5, 17]])) and np.all(np.isfinite(np.delete(fn, [5, 17], 0)))
+    np.testing.assert_allclose(np.delete(fn, [5, 17], 0), np.delete(f1, [5, 17], 0), rtol=1e-10)
+    cb = b.coefficients_batch(x_m=x_bad, y_m=y, speed_hz=N_HZ, on_error="nan")
+    assert list(np.flatnonzero(cb["status"])) == [5, 17] and "eccentricity" in cb["message"][5]
+    with pytest.raises(rotordyn.InputError, match="eccentricity"):
+        b.forces_batch(x_m=x_bad, y_m=y, speed_hz=N_HZ)
