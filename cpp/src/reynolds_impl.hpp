@@ -32,7 +32,7 @@ struct LinearSystem {
   bool lu_analysed = false;
   std::vector<char> active;    // unknown: 1 = p held at 0 (reynolds) / cavitated (jfo)
   bool have_active = false;
-  enum class Factor { none, ldlt, lu } factor = Factor::none;
+  enum class Factor { none, ldlt, lu, static_lu } factor = Factor::none;
   Eigen::VectorXd rhs, sol;
 };
 
@@ -95,6 +95,10 @@ struct ReynoldsSolver::Impl {
   void solve_reynolds(LinearSystem& S);  // Swift–Stieber LCP by primal–dual active set
   void solve_jfo(LinearSystem& S);       // Elrod–Adams p–θ
   void fill_jfo(LinearSystem& S);
+  // Factorise the p–θ system in S.A: static-pattern LU without pivoting (columns are
+  // diagonally dominant) checked by its residual on b, else Eigen's pivoting SparseLU.
+  void factor_solve_jfo(LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  void solve_factored(const LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   void postprocess();
 
   // d(residual)/d(h, hdot) at the frozen state, S's unknown ordering and row weights.

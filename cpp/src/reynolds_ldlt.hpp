@@ -23,6 +23,12 @@ class StaticLDLT {
   bool factorize(const double* values);
   /// x = A⁻¹ b (x may alias b).
   void solve(const double* b, double* x) const;
+  /// LU without pivoting on the same (structurally symmetric) pattern, for a non-symmetric
+  /// matrix whose columns are diagonally dominant (the jfo p–θ system): P A Pᵀ = L U with unit
+  /// L. False if a pivot is zero or not finite (the caller then falls back to pivoting LU).
+  bool factorize_lu(const double* values);
+  /// x = A⁻¹ b with the factors of factorize_lu (x may alias b).
+  void solve_lu(const double* b, double* x) const;
   int rows() const { return n_; }
   long nnz_l() const { return static_cast<long>(Li_.size()); }
 
@@ -30,9 +36,12 @@ class StaticLDLT {
   int n_ = 0;
   std::vector<int> perm_;               // old index -> new index
   std::vector<int> Up_, Ui_, Usrc_;     // permuted upper triangle (with diagonal), by column
+  std::vector<int> Wp_, Wi_, Wsrc_;     // permuted strict lower triangle, by row
   std::vector<int> Lp_, Li_;            // strictly lower L, column-compressed, static rows
   std::vector<int> Rp_, Rcol_, Rslot_;  // row k of L: columns (ascending) and value slots
   std::vector<double> Lx_, D_;
+  std::vector<double> Ux_;              // LU: U(i, k) stored in the slot of L(k, i)
+  std::vector<double> w_;               // LU: row workspace
   std::vector<double> y_;           // factorisation workspace, all zero between calls
   mutable std::vector<double> ys_;  // solve workspace
 };

@@ -131,6 +131,9 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
         p_fixed[n] = gv.pressure_pa;  // a later groove overrides an overlapping earlier one
       }
   }
+  if (cav == Cavitation::jfo && geo.grooves.empty())
+    throw InputError("grooves: cavitation='jfo' needs at least one supply groove (without a "
+                     "supply the steady mass-conserving film content is undetermined)");
   build_system(full, false);
   if (full.n_unk == 0)
     throw InputError("grooves: the grooves cover the whole bearing (no film left)");

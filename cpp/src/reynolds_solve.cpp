@@ -212,14 +212,9 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     }
     if (s.cav == Cavitation::jfo) {
       s.fill_jfo(F);
-      if (!F.lu_analysed) {
-        F.lu.analyzePattern(F.A);
-        F.lu_analysed = true;
-      }
-      F.lu.factorize(F.A);
-      if (F.lu.info() != Eigen::Success)
-        throw ConvergenceError("jfo cavitation: sparse LU factorisation failed");
-      F.factor = LinearSystem::Factor::lu;
+      Eigen::VectorXd b0 = Eigen::VectorXd::Zero(F.n_unk), x0;
+      b0.setOnes();
+      s.factor_solve_jfo(F, b0, x0);
     } else {
       const bool masked = s.cav == Cavitation::reynolds;
       s.fill_spd(F, masked ? &F.active : nullptr);
@@ -254,7 +249,8 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     }
   } else {
     const Eigen::VectorXd mr = -r;
-    Eigen::VectorXd x = S->lu.solve(mr);
+    Eigen::VectorXd x;
+    s.solve_factored(*S, mr, x);
     for (int i = 0; i < S->n_unk; ++i)
       if (!S->active[i]) dpd[S->node_of[i]] = x[i];
   }

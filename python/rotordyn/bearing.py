@@ -214,6 +214,11 @@ class JournalBearing:
         for i, g in enumerate(gs):
             if not isinstance(g, Groove):
                 raise InputError(f"grooves[{i}]: expected a rotordyn.Groove, got {g!r}")
+        if cavitation == "jfo" and not gs:
+            raise InputError(
+                "grooves: cavitation='jfo' needs at least one supply groove (without a supply"
+                " the steady mass-conserving film content is undetermined)"
+            )
         self.grooves = gs
         self._local = threading.local()
 
