@@ -59,6 +59,13 @@ void bind_reynolds(py::module_& m) {
       .def_readonly("residual_rel", &EquilibriumSolution::residual_rel)
       .def_readonly("iterations", &EquilibriumSolution::iterations);
 
+  py::class_<BatchResult>(m, "BatchResult",
+                          "values (n, m) with NaN rows where status != 0; status 0 ok, 1 bad "
+                          "input, 2 contact, 3 not converged, 4 other; message per row.")
+      .def_readonly("values", &BatchResult::values)
+      .def_readonly("status", &BatchResult::status)
+      .def_readonly("message", &BatchResult::message);
+
   using RS = ReynoldsSolver;
   using gil = py::call_guard<py::gil_scoped_release>;
   py::class_<RS>(m, "ReynoldsSolver",
@@ -83,6 +90,9 @@ void bind_reynolds(py::module_& m) {
       .def("linearize", &RS::linearize, py::arg("dh"), py::arg("d_dhdt"), gil(),
            "Pressure change (n_circ, n_axial+1) about the last solve for dh, d(dh/dt).")
       .def("integrate_force", &RS::integrate_force, py::arg("p"), gil())
+      .def("integrate", &RS::integrate, py::arg("p"), py::arg("g"), gil(),
+           "Trapezoidal integral of p*g over the bush surface (R dphi dz), e.g. a sleeve mode's "
+           "generalised film force.")
       .def(
           "rigid",
           [](RS& s, double x, double y, double vx, double vy, double omega) {
@@ -106,11 +116,12 @@ void bind_reynolds(py::module_& m) {
       .def("equilibrium", &RS::equilibrium, py::arg("load_x_n"), py::arg("load_y_n"),
            py::arg("omega_rad_s"), py::arg("x0_m") = 0.0, py::arg("y0_m") = 0.0,
            py::arg("rtol") = 1e-10, py::arg("max_iter") = 60, gil())
-      .def("batch_forces", &RS::batch_forces, py::arg("states"), py::arg("omegas_rad_s"), gil(),
-           "states (n, 4) rows x, y, vx, vy; returns (n, 2) forces.")
+      .def("batch_forces", &RS::batch_forces, py::arg("states"), py::arg("omegas_rad_s"),
+           py::arg("n_threads") = 1, gil(),
+           "states (n, 4) rows x, y, vx, vy; BatchResult.values (n, 2) forces.")
       .def("batch_coefficients", &RS::batch_coefficients, py::arg("positions"),
-           py::arg("omegas_rad_s"), gil(),
-           "positions (n, 2); returns (n, 10): Fx Fy Kxx Kxy Kyx Kyy Cxx Cxy Cyx Cyy.")
+           py::arg("omegas_rad_s"), py::arg("n_threads") = 1, gil(),
+           "positions (n, 2); BatchResult.values (n, 10): Fx Fy Kxx Kxy Kyx Kyy Cxx Cxy Cyx Cyy.")
       .def_property("use_axial_symmetry", &RS::use_axial_symmetry, &RS::set_use_axial_symmetry,
                     "Solve symmetric films on the half grid (exact; default True).")
       .def("reset", &RS::reset);

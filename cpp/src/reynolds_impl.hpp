@@ -1,60 +1,14 @@
 // Private state of ReynoldsSolver (shared by the reynolds_*.cpp translation units).
 #pragma once
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
 #include <vector>
 
+#include "reynolds_ldlt.hpp"
 #include "rotordyn/reynolds.hpp"
 
 namespace rotordyn {
-
-/// Eigen's up-looking LDLT, refactorised on a sub-pattern of the analysed one. The numeric
-/// phase derives each row's pattern from the entries it is given (walking the elimination tree
-/// of the analysed pattern), so dropping zero couplings is valid and skips their work; the
-/// column slots it leaves unwritten would keep stale values from an earlier factorisation, so
-/// they are cleared (row index = column, value 0: ignored by the triangular solves).
-class SubPatternLDLT
-    : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double, Eigen::ColMajor, int>, Eigen::Lower,
-                                   Eigen::AMDOrdering<int>> {
- public:
-  void factorize_subpattern(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& a) {
-    factorize(a);
-    const int n = static_cast<int>(m_matrix.cols());
-    const int* Lp = m_matrix.outerIndexPtr();
-    int* Li = m_matrix.innerIndexPtr();
-    double* Lx = m_matrix.valuePtr();
-    for (int i = 0; i < n; ++i)
-      for (int q = Lp[i] + m_nonZerosPerCol[i]; q < Lp[i + 1]; ++q) {
-        Li[q] = i;
-        Lx[q] = 0.0;
-      }
-  }
-  /// x = A⁻¹ b with the current factors (P A Pᵀ = L D Lᵀ): plain column loops, about twice as
-  /// fast as the generic sparse triangular views at these sizes. y is scratch.
-  void solve_into(const double* b, double* x, std::vector<double>& y) const {
-    const int n = static_cast<int>(m_matrix.cols());
-    const int* P = m_P.size() ? m_P.indices().data() : nullptr;
-    const int* Lp = m_matrix.outerIndexPtr();
-    const int* Li = m_matrix.innerIndexPtr();
-    const double* Lx = m_matrix.valuePtr();
-    y.resize(n);
-    for (int i = 0; i < n; ++i) y[P ? P[i] : i] = b[i];
-    for (int j = 0; j < n; ++j) {
-      const double yj = y[j];
-      if (yj != 0.0)
-        for (int q = Lp[j]; q < Lp[j + 1]; ++q) y[Li[q]] -= Lx[q] * yj;
-    }
-    for (int j = 0; j < n; ++j) y[j] /= m_diag[j];
-    for (int j = n - 1; j >= 0; --j) {
-      double sj = y[j];
-      for (int q = Lp[j]; q < Lp[j + 1]; ++q) sj -= Lx[q] * y[Li[q]];
-      y[j] = sj;
-    }
-    for (int i = 0; i < n; ++i) x[i] = y[P ? P[i] : i];
-  }
-};
 
 /// One sparse system over a set of unknown nodes: the full grid, or — when the film and its
 /// rate are mirror-symmetric about z = 0 — the half grid k <= n_axial/2 whose mid-plane row is
@@ -72,16 +26,14 @@ struct LinearSystem {
   std::vector<double> wphi;    // unknown -> weight of φ-fluxes and sources (0.5 on a half cell)
   std::vector<char> has_n;     // unknown -> couples to its k+1 neighbour
   SpMat A;                     // 5-point pattern, both triangles, explicit zeros kept
-  SpMat Ap;                    // A without zero couplings (sub-pattern, cheaper LDLT)
   std::vector<ColPos> pos;
-  SubPatternLDLT ldlt;
+  StaticLDLT ldlt;             // symbolic once per system, numeric per call
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
   bool lu_analysed = false;
   std::vector<char> active;    // unknown: 1 = p held at 0 (reynolds) / cavitated (jfo)
   bool have_active = false;
-  enum class Factor { none, ldlt, lu } factor = Factor::none;
+  enum class Factor { none, ldlt, lu, static_lu } factor = Factor::none;
   Eigen::VectorXd rhs, sol;
-  std::vector<double> scratch;
 };
 
 struct ReynoldsSolver::Impl {
@@ -135,7 +87,7 @@ struct ReynoldsSolver::Impl {
   void base_rhs(const LinearSystem& S, Eigen::VectorXd& b) const;
   // A's values; mask (unknown-indexed, may be null) decouples masked unknowns (identity rows).
   void fill_spd(LinearSystem& S, const std::vector<char>* mask);
-  void factor_spd(LinearSystem& S, bool prune = false);
+  void factor_spd(LinearSystem& S);
   // Residual (outflow + storage) of node n's full cell for node pressures pp and fill theta.
   double cell_residual(int n, const std::vector<double>& pp) const;
 
@@ -143,6 +95,10 @@ struct ReynoldsSolver::Impl {
   void solve_reynolds(LinearSystem& S);  // Swift–Stieber LCP by primal–dual active set
   void solve_jfo(LinearSystem& S);       // Elrod–Adams p–θ
   void fill_jfo(LinearSystem& S);
+  // Factorise the p–θ system in S.A: static-pattern LU without pivoting (columns are
+  // diagonally dominant) checked by its residual on b, else Eigen's pivoting SparseLU.
+  void factor_solve_jfo(LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  void solve_factored(const LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   void postprocess();
 
   // d(residual)/d(h, hdot) at the frozen state, S's unknown ordering and row weights.

@@ -46,6 +46,44 @@ void ReynoldsSolver::Impl::fill_jfo(LinearSystem& S) {
   }
 }
 
+void ReynoldsSolver::Impl::factor_solve_jfo(LinearSystem& S, const Eigen::VectorXd& b,
+                                            Eigen::VectorXd& x) {
+  x.resize(S.n_unk);
+  if (S.ldlt.factorize_lu(S.A.valuePtr())) {
+    S.factor = LinearSystem::Factor::static_lu;
+    S.ldlt.solve_lu(b.data(), x.data());
+    const double res = (S.A * x - b).norm();
+    if (std::isfinite(res) && res <= 1e-10 * std::max(b.norm(), 1e-300)) return;
+  }
+  if (!S.lu_analysed) {
+    S.lu.analyzePattern(S.A);
+    S.lu_analysed = true;
+  }
+  S.lu.factorize(S.A);
+  if (S.lu.info() != Eigen::Success)
+    throw ConvergenceError("jfo cavitation: sparse LU factorisation failed");
+  S.factor = LinearSystem::Factor::lu;
+  x = S.lu.solve(b);
+}
+
+void ReynoldsSolver::Impl::solve_factored(const LinearSystem& S, const Eigen::VectorXd& b,
+                                          Eigen::VectorXd& x) const {
+  x.resize(S.n_unk);
+  switch (S.factor) {
+    case LinearSystem::Factor::ldlt:
+      S.ldlt.solve(b.data(), x.data());
+      break;
+    case LinearSystem::Factor::static_lu:
+      S.ldlt.solve_lu(b.data(), x.data());
+      break;
+    case LinearSystem::Factor::lu:
+      x = S.lu.solve(b);
+      break;
+    case LinearSystem::Factor::none:
+      throw ConvergenceError("Reynolds solver: no factorisation available");
+  }
+}
+
 void ReynoldsSolver::Impl::solve_jfo(LinearSystem& S) {
   if (omega == 0.0)
     throw InputError("speed_hz: cavitation='jfo' needs a nonzero speed (got 0)");
@@ -60,15 +98,7 @@ void ReynoldsSolver::Impl::solve_jfo(LinearSystem& S) {
   const int max_iter = 100 + S.n_unk / 4;
   for (int it = 1; it <= max_iter; ++it) {
     fill_jfo(S);
-    if (!S.lu_analysed) {
-      S.lu.analyzePattern(S.A);
-      S.lu_analysed = true;
-    }
-    S.lu.factorize(S.A);
-    if (S.lu.info() != Eigen::Success)
-      throw ConvergenceError("jfo cavitation: sparse LU factorisation failed");
-    S.factor = LinearSystem::Factor::lu;
-    S.sol = S.lu.solve(S.rhs);
+    factor_solve_jfo(S, S.rhs, S.sol);
     double pscale = 0.0;
     for (int i = 0; i < S.n_unk; ++i) {
       const int n = S.node_of[i];

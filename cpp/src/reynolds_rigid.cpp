@@ -3,7 +3,10 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <thread>
+#include <vector>
 
 #include "reynolds_impl.hpp"
 #include "rotordyn/errors.hpp"
@@ -208,32 +211,97 @@ EquilibriumSolution ReynoldsSolver::equilibrium(double lx, double ly, double ome
   }
 }
 
-RowMatrixXd ReynoldsSolver::batch_forces(const RowMatrixXd& states,
-                                         const Eigen::VectorXd& omegas) {
+namespace {
+// Runs row_fn(solver, r) for every row, in contiguous chunks over n_threads threads (the first
+// chunk on `self`, the others on fresh solvers of the same bearing); per-row exceptions become
+// status codes, so a failing point never aborts the batch or crosses a thread boundary.
+template <class RowFn>
+void run_batch(ReynoldsSolver& self, Eigen::Index n, int n_threads, int n_cols, BatchResult& out,
+               RowFn row_fn) {
+  out.values.setConstant(n, n_cols, std::numeric_limits<double>::quiet_NaN());
+  out.status.setZero(n);
+  out.message.assign(static_cast<std::size_t>(n), std::string());
+  if (n_threads <= 0) n_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  n_threads = static_cast<int>(std::min<Eigen::Index>(n_threads, std::max<Eigen::Index>(n, 1)));
+  auto chunk = [&](ReynoldsSolver& rs, Eigen::Index r0, Eigen::Index r1) {
+    for (Eigen::Index r = r0; r < r1; ++r) {
+      int code = 0;
+      try {
+        row_fn(rs, r);
+      } catch (const InputError& e) {
+        code = 1;
+        out.message[r] = e.what();
+      } catch (const ContactError& e) {
+        code = 2;
+        out.message[r] = e.what();
+      } catch (const ConvergenceError& e) {
+        code = 3;
+        out.message[r] = e.what();
+      } catch (const std::exception& e) {
+        code = 4;
+        out.message[r] = e.what();
+      }
+      if (code != 0) {
+        out.status[r] = code;
+        out.values.row(r).setConstant(std::numeric_limits<double>::quiet_NaN());
+      }
+    }
+  };
+  if (n_threads == 1) {
+    chunk(self, 0, n);
+    return;
+  }
+  std::vector<std::thread> pool;
+  const Eigen::Index per = (n + n_threads - 1) / n_threads;
+  for (int t = 1; t < n_threads; ++t) {
+    const Eigen::Index r0 = t * per, r1 = std::min(n, r0 + per);
+    if (r0 >= r1) break;
+    pool.emplace_back([&, r0, r1] {
+      try {
+        ReynoldsSolver rs(self.geometry(), self.grid(), self.cavitation());
+        rs.set_use_axial_symmetry(self.use_axial_symmetry());
+        chunk(rs, r0, r1);
+      } catch (const std::exception& e) {  // solver construction (memory): mark the chunk
+        for (Eigen::Index r = r0; r < r1; ++r) {
+          out.status[r] = 4;
+          out.message[r] = e.what();
+        }
+      }
+    });
+  }
+  chunk(self, 0, std::min(n, per));
+  for (auto& th : pool) th.join();
+}
+}  // namespace
+
+BatchResult ReynoldsSolver::batch_forces(const RowMatrixXd& states, const Eigen::VectorXd& omegas,
+                                         int n_threads) {
   if (states.cols() != 4)
     throw InputError(shape_msg("states", states.rows(), 4, states.rows(), states.cols()));
   if (omegas.size() != states.rows())
     throw InputError(shape_msg("omegas", states.rows(), 1, omegas.size(), 1));
-  RowMatrixXd out(states.rows(), 2);
-  for (Eigen::Index r = 0; r < states.rows(); ++r)
-    out.row(r) = rigid(states(r, 0), states(r, 1), states(r, 2), states(r, 3), omegas[r])
-                     .force_n.transpose();
+  BatchResult out;
+  run_batch(*this, states.rows(), n_threads, 2, out, [&](ReynoldsSolver& rs, Eigen::Index r) {
+    out.values.row(r) =
+        rs.rigid(states(r, 0), states(r, 1), states(r, 2), states(r, 3), omegas[r])
+            .force_n.transpose();
+  });
   return out;
 }
 
-RowMatrixXd ReynoldsSolver::batch_coefficients(const RowMatrixXd& positions,
-                                               const Eigen::VectorXd& omegas) {
+BatchResult ReynoldsSolver::batch_coefficients(const RowMatrixXd& positions,
+                                               const Eigen::VectorXd& omegas, int n_threads) {
   if (positions.cols() != 2)
     throw InputError(shape_msg("positions", positions.rows(), 2, positions.rows(),
                                positions.cols()));
   if (omegas.size() != positions.rows())
     throw InputError(shape_msg("omegas", positions.rows(), 1, omegas.size(), 1));
-  RowMatrixXd out(positions.rows(), 10);
-  for (Eigen::Index r = 0; r < positions.rows(); ++r) {
-    const DynamicCoefficients dc = coefficients(positions(r, 0), positions(r, 1), omegas[r]);
-    out.row(r) << dc.force_n.x(), dc.force_n.y(), dc.K(0, 0), dc.K(0, 1), dc.K(1, 0), dc.K(1, 1),
-        dc.C(0, 0), dc.C(0, 1), dc.C(1, 0), dc.C(1, 1);
-  }
+  BatchResult out;
+  run_batch(*this, positions.rows(), n_threads, 10, out, [&](ReynoldsSolver& rs, Eigen::Index r) {
+    const DynamicCoefficients dc = rs.coefficients(positions(r, 0), positions(r, 1), omegas[r]);
+    out.values.row(r) << dc.force_n.x(), dc.force_n.y(), dc.K(0, 0), dc.K(0, 1), dc.K(1, 0),
+        dc.K(1, 1), dc.C(0, 0), dc.C(0, 1), dc.C(1, 0), dc.C(1, 1);
+  });
   return out;
 }
 

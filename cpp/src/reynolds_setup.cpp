@@ -131,6 +131,9 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
         p_fixed[n] = gv.pressure_pa;  // a later groove overrides an overlapping earlier one
       }
   }
+  if (cav == Cavitation::jfo && geo.grooves.empty())
+    throw InputError("grooves: cavitation='jfo' needs at least one supply groove (without a "
+                     "supply the steady mass-conserving film content is undetermined)");
   build_system(full, false);
   if (full.n_unk == 0)
     throw InputError("grooves: the grooves cover the whole bearing (no film left)");
@@ -189,7 +192,7 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
                                     S.has_n[i] ? find(S.unk[n + 1], i) : -1,
                                     find(S.unk[n - 1], i)};
   }
-  S.ldlt.analyzePattern(S.A);
+  S.ldlt.analyze(S.A);
   S.active.assign(S.n_unk, 0);
   S.have_active = false;
   S.rhs.resize(S.n_unk);
@@ -295,16 +298,10 @@ void ReynoldsSolver::Impl::fill_spd(LinearSystem& S, const std::vector<char>* ma
   }
 }
 
-void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, bool prune) {
-  if (prune) {
-    S.Ap = S.A;
-    S.Ap.prune([](const int&, const int&, const double& v) { return v != 0.0; });
-    S.ldlt.factorize_subpattern(S.Ap);
-  } else {
-    S.ldlt.factorize(S.A);
-  }
-  if (S.ldlt.info() != Eigen::Success)
-    throw ConvergenceError("Reynolds operator: sparse LDLT factorisation failed");
+void ReynoldsSolver::Impl::factor_spd(LinearSystem& S) {
+  // Decoupled (cavitated) unknowns have zero couplings: StaticLDLT skips their work.
+  if (!S.ldlt.factorize(S.A.valuePtr()))
+    throw ConvergenceError("Reynolds operator: sparse LDLT factorisation failed (zero pivot)");
   S.factor = LinearSystem::Factor::ldlt;
 }
 

@@ -16,7 +16,7 @@ void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
   fill_spd(S, nullptr);
   factor_spd(S);
   base_rhs(S, S.rhs);
-  S.ldlt.solve_into(S.rhs.data(), S.sol.data(), S.scratch);
+  S.ldlt.solve(S.rhs.data(), S.sol.data());
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
     pfull[n] = S.sol[i];
@@ -41,9 +41,9 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   const int max_iter = 100 + S.n_unk / 4;
   for (int it = 1; it <= max_iter; ++it) {
     fill_spd(S, &S.active);
-    factor_spd(S, true);
+    factor_spd(S);
     for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
-    S.ldlt.solve_into(b.data(), S.sol.data(), S.scratch);
+    S.ldlt.solve(b.data(), S.sol.data());
     double pscale = 0.0;
     for (int i = 0; i < S.n_unk; ++i) {
       const int n = S.node_of[i];
@@ -212,18 +212,13 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     }
     if (s.cav == Cavitation::jfo) {
       s.fill_jfo(F);
-      if (!F.lu_analysed) {
-        F.lu.analyzePattern(F.A);
-        F.lu_analysed = true;
-      }
-      F.lu.factorize(F.A);
-      if (F.lu.info() != Eigen::Success)
-        throw ConvergenceError("jfo cavitation: sparse LU factorisation failed");
-      F.factor = LinearSystem::Factor::lu;
+      Eigen::VectorXd b0 = Eigen::VectorXd::Zero(F.n_unk), x0;
+      b0.setOnes();
+      s.factor_solve_jfo(F, b0, x0);
     } else {
       const bool masked = s.cav == Cavitation::reynolds;
       s.fill_spd(F, masked ? &F.active : nullptr);
-      s.factor_spd(F, masked);
+      s.factor_spd(F);
     }
     F.have_active = s.cav == Cavitation::reynolds || s.cav == Cavitation::jfo;
     s.sys = S = &F;
@@ -238,7 +233,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
         if (S->active[i]) r[i] = 0.0;
     r = -r;
     Eigen::VectorXd x(S->n_unk);
-    S->ldlt.solve_into(r.data(), x.data(), S->scratch);
+    S->ldlt.solve(r.data(), x.data());
     // gumbel: p = max(p_full, 0); where p_full vanishes to round-off (e.g. on a symmetry line)
     // the one-sided derivatives differ and we take their mean, as a central difference does.
     double pmax = 0.0;
@@ -254,7 +249,8 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     }
   } else {
     const Eigen::VectorXd mr = -r;
-    Eigen::VectorXd x = S->lu.solve(mr);
+    Eigen::VectorXd x;
+    s.solve_factored(*S, mr, x);
     for (int i = 0; i < S->n_unk; ++i)
       if (!S->active[i]) dpd[S->node_of[i]] = x[i];
   }
@@ -265,6 +261,21 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
         dpd[n] = dpd[s.mirror(n)];
       }
   return dp;
+}
+
+double ReynoldsSolver::integrate(const RowMatrixXd& pr, const RowMatrixXd& g) const {
+  const Impl& s = *impl_;
+  if (pr.rows() != s.N || pr.cols() != s.K1)
+    throw InputError(shape_msg("p", s.N, s.K1, pr.rows(), pr.cols()));
+  if (g.rows() != s.N || g.cols() != s.K1)
+    throw InputError(shape_msg("g", s.N, s.K1, g.rows(), g.cols()));
+  double acc = 0.0;
+  for (int n = 0; n < s.n_nodes; ++n) {
+    const int k = n % s.K1;
+    const double wk = (k == 0 || k == s.K1 - 1) ? 0.5 : 1.0;
+    acc += wk * pr.data()[n] * g.data()[n];
+  }
+  return acc * s.R * s.dphi * s.dz;
 }
 
 Eigen::Vector2d ReynoldsSolver::integrate_force(const RowMatrixXd& pr) const {

@@ -214,6 +214,11 @@ class JournalBearing:
         for i, g in enumerate(gs):
             if not isinstance(g, Groove):
                 raise InputError(f"grooves[{i}]: expected a rotordyn.Groove, got {g!r}")
+        if cavitation == "jfo" and not gs:
+            raise InputError(
+                "grooves: cavitation='jfo' needs at least one supply groove (without a supply"
+                " the steady mass-conserving film content is undetermined)"
+            )
         self.grooves = gs
         self._local = threading.local()
 
@@ -396,37 +401,76 @@ class JournalBearing:
         )
 
     # -- batches -------------------------------------------------------------------------
-    def forces_batch(self, *, x_m, y_m, speed_hz, vx_m_s=0.0, vy_m_s=0.0) -> np.ndarray:
-        """Forces (n, 2) for broadcast arrays of states, in one C++ call (GIL released)."""
+    _STATUS_ERRORS = {1: "InputError", 2: "ContactError", 3: "ConvergenceError", 4: "RotordynError"}
+
+    def _batch_result(self, res, on_error: str):
+        values = np.asarray(res.values)
+        status = np.asarray(res.status)
+        bad = np.flatnonzero(status)
+        if bad.size and on_error == "raise":
+            import rotordyn.errors as errors
+
+            i = int(bad[0])
+            exc = getattr(errors, self._STATUS_ERRORS.get(int(status[i]), "RotordynError"))
+            raise exc(f"point {i} (of {bad.size} failing): {res.message[i]}")
+        return values, status, list(res.message)
+
+    @staticmethod
+    def _check_batch_options(n_threads, on_error):
+        if on_error not in ("raise", "nan"):
+            raise InputError(f"on_error: expected 'raise' or 'nan', got {on_error!r}")
+        if isinstance(n_threads, bool) or not isinstance(n_threads, (int, np.integer)):
+            raise InputError(f"n_threads: expected an integer >= 0, got {n_threads!r}")
+        if n_threads < 0:
+            raise InputError(f"n_threads: expected an integer >= 0 (0: all cores), got {n_threads}")
+
+    def forces_batch(self, *, x_m, y_m, speed_hz, vx_m_s=0.0, vy_m_s=0.0, n_threads: int = 1,
+                     on_error: str = "raise") -> np.ndarray:
+        """Forces (n, 2) for broadcast arrays of states, in one C++ call (GIL released).
+
+        ``n_threads`` > 1 splits the points over threads, each with its own solver (0: all
+        cores). ``on_error="raise"`` raises the first failing point's error (after the batch);
+        ``"nan"`` leaves NaN rows for failing points.
+        """
+        self._check_batch_options(n_threads, on_error)
         x, y, f, vx, vy = np.broadcast_arrays(
             *(np.asarray(a, dtype=float) for a in (x_m, y_m, speed_hz, vx_m_s, vy_m_s))
         )
         states = np.ascontiguousarray(np.stack([x.ravel(), y.ravel(), vx.ravel(), vy.ravel()], 1))
-        if not np.all(np.isfinite(states)) or not np.all(np.isfinite(f)):
-            raise InputError("x_m, y_m, vx_m_s, vy_m_s, speed_hz: expected finite values")
-        eps = np.hypot(states[:, 0], states[:, 1]) / self.clearance_m
-        if np.any(eps >= 1.0):
-            raise InputError(
-                f"eccentricity ratio: expected < 1 at every point, got max {eps.max():.6g}"
-            )
-        return np.asarray(self.solver().batch_forces(states, TWO_PI * f.ravel()))
+        if on_error == "raise":
+            if not np.all(np.isfinite(states)) or not np.all(np.isfinite(f)):
+                raise InputError("x_m, y_m, vx_m_s, vy_m_s, speed_hz: expected finite values")
+            eps = np.hypot(states[:, 0], states[:, 1]) / self.clearance_m
+            if np.any(eps >= 1.0):
+                raise InputError(
+                    f"eccentricity ratio: expected < 1 at every point, got max {eps.max():.6g}"
+                )
+        res = self.solver().batch_forces(states, TWO_PI * f.ravel(), int(n_threads))
+        return self._batch_result(res, on_error)[0]
 
-    def coefficients_batch(self, *, x_m, y_m, speed_hz) -> dict[str, np.ndarray]:
-        """Forces (n, 2), K (n, 2, 2) and C (n, 2, 2) by perturbation, in one C++ call."""
+    def coefficients_batch(self, *, x_m, y_m, speed_hz, n_threads: int = 1,
+                           on_error: str = "raise") -> dict[str, np.ndarray]:
+        """Forces (n, 2), K (n, 2, 2), C (n, 2, 2) by perturbation, in one C++ call, with
+        ``status`` (n,) (0 ok, 1 bad input, 2 contact, 3 not converged) and ``message``."""
+        self._check_batch_options(n_threads, on_error)
         x, y, f = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (x_m, y_m, speed_hz)))
         pos = np.ascontiguousarray(np.stack([x.ravel(), y.ravel()], 1))
-        if not np.all(np.isfinite(pos)) or not np.all(np.isfinite(f)):
-            raise InputError("x_m, y_m, speed_hz: expected finite values")
-        eps = np.hypot(pos[:, 0], pos[:, 1]) / self.clearance_m
-        if np.any(eps >= 1.0):
-            raise InputError(
-                f"eccentricity ratio: expected < 1 at every point, got max {eps.max():.6g}"
-            )
-        out = np.asarray(self.solver().batch_coefficients(pos, TWO_PI * f.ravel()))
+        if on_error == "raise":
+            if not np.all(np.isfinite(pos)) or not np.all(np.isfinite(f)):
+                raise InputError("x_m, y_m, speed_hz: expected finite values")
+            eps = np.hypot(pos[:, 0], pos[:, 1]) / self.clearance_m
+            if np.any(eps >= 1.0):
+                raise InputError(
+                    f"eccentricity ratio: expected < 1 at every point, got max {eps.max():.6g}"
+                )
+        res = self.solver().batch_coefficients(pos, TWO_PI * f.ravel(), int(n_threads))
+        out, status, message = self._batch_result(res, on_error)
         return {
             "force_n": out[:, 0:2],
             "K": out[:, 2:6].reshape(-1, 2, 2),
             "C": out[:, 6:10].reshape(-1, 2, 2),
+            "status": status,
+            "message": message,
         }
 
 

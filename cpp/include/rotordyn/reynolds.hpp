@@ -95,6 +95,14 @@ struct EquilibriumSolution {
   int iterations = 0;        ///< Newton iterations
 };
 
+/// Result of a batch call: one row per point; status 0 ok, 1 bad input, 2 contact,
+/// 3 not converged, 4 other error; message empty where ok.
+struct BatchResult {
+  RowMatrixXd values;
+  Eigen::VectorXi status;
+  std::vector<std::string> message;
+};
+
 class ReynoldsSolver {
  public:
   ReynoldsSolver(const JournalBearingGeometry& geometry, const FilmGrid& grid,
@@ -124,6 +132,10 @@ class ReynoldsSolver {
   RowMatrixXd linearize(const RowMatrixXd& dh, const RowMatrixXd& d_dhdt);
   /// Force change for a pressure change from linearize().
   Eigen::Vector2d integrate_force(const RowMatrixXd& p) const;
+  /// ∫∫ p·g R dφ dz over the bush (trapezoidal rule on the nodes), e.g. the generalised
+  /// force of the film on a sleeve mode whose inward radial displacement is g(φ, z) (virtual
+  /// work: Q = ∫∫ p·w dA with w the mode's inward displacement per unit coordinate).
+  double integrate(const RowMatrixXd& p, const RowMatrixXd& g) const;
 
   /// Rigid journal at (x, y) with velocity (vx, vy). InputError if the eccentricity ratio ≥ 1.
   const FilmSolution& rigid(double x_m, double y_m, double vx_m_s, double vy_m_s, double omega);
@@ -138,11 +150,15 @@ class ReynoldsSolver {
                                   double x0_m = 0.0, double y0_m = 0.0, double rtol = 1e-10,
                                   int max_iter = 60);
 
-  /// Batch of rigid-journal states: rows (x, y, vx, vy), omegas (n,). Returns (n, 2) forces.
-  RowMatrixXd batch_forces(const RowMatrixXd& states, const Eigen::VectorXd& omegas);
-  /// Batch of positions: rows (x, y), omegas (n,). Returns (n, 10): Fx, Fy, Kxx, Kxy, Kyx, Kyy,
-  /// Cxx, Cxy, Cyx, Cyy.
-  RowMatrixXd batch_coefficients(const RowMatrixXd& positions, const Eigen::VectorXd& omegas);
+  /// Batch of rigid-journal states: rows (x, y, vx, vy), omegas (n,). values (n, 2): forces.
+  /// A failing point gets a NaN row and a status (never aborts the batch). n_threads > 1 splits
+  /// the rows into contiguous chunks, each solved by its own solver (0: all hardware threads).
+  BatchResult batch_forces(const RowMatrixXd& states, const Eigen::VectorXd& omegas,
+                           int n_threads = 1);
+  /// Batch of positions: rows (x, y), omegas (n,). values (n, 10): Fx, Fy, Kxx, Kxy, Kyx, Kyy,
+  /// Cxx, Cxy, Cyx, Cyy (perturbation method).
+  BatchResult batch_coefficients(const RowMatrixXd& positions, const Eigen::VectorXd& omegas,
+                                 int n_threads = 1);
 
   /// Forget the warm start (active set).
   void reset();
