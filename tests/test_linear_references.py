@@ -534,14 +534,14 @@ def test_speeds_not_increasing_are_rejected(small):
 
 def test_threshold_without_a_sign_change_reports_no_crossing(small):
     """Bounds that do not bracket a sign change give status "no_crossing", NaN value and
-    whirl frequency, no crossings, and a message saying which side the system is on —
-    never an invented number (threshold near 130 Hz for this rotor)."""
+    whirl frequency, no crossings, and a message saying which side the scanned points are
+    on — never an invented number (threshold near 130 Hz for this rotor)."""
     for bounds, side in (((20.0, 100.0), "stable"), ((150.0, 250.0), "unstable")):
         th = rd.threshold(small, "speed_hz", bounds=bounds, n_scan=4)
         assert th.status == "no_crossing"
         assert math.isnan(th.value) and math.isnan(th.whirl_frequency_hz)
         assert th.crossings == ()
-        assert f"is {side}" in th.message
+        assert f"{side} at all 4 scanned points" in th.message
         assert th.to_frame()["status"].iloc[0] == "no_crossing"
 
 
