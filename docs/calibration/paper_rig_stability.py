@@ -141,11 +141,20 @@ def print_boundary(name, along, results, unit_scale, unit):
         print(f"  {x * unit_scale:10.2f}  {cr:44s}{wf}  {ubs:28s} (p_c = 0: {state0}){extra}")
 
 
+def on_grid(scan, grid, vary="chamber_pressure_pa"):
+    """max Re λ of a threshold scan at the regular scan points (the scan also holds the
+    refinement points threshold() adds where a parabola dips through zero)."""
+    x = scan[vary].to_numpy()
+    re = scan["max_real_1_per_s"].to_numpy()
+    return np.array([re[np.argmin(np.abs(x - g))] for g in grid])
+
+
 def plot_boundary(results, along_label, scale, path, title, paper_point=None):
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     xs = np.array([x * scale for x, _, _ in results])
-    ps = results[0][1].scan["chamber_pressure_pa"].to_numpy() / 1e6
-    re = np.array([th.scan["max_real_1_per_s"].to_numpy() for _, th, _ in results]).T
+    grid = np.linspace(*PC_BOUNDS, N_SCAN)
+    ps = grid / 1e6
+    re = np.array([on_grid(th.scan, grid) for _, th, _ in results]).T
     lim = np.nanmax(np.abs(re))
     im = ax.pcolormesh(xs, ps, np.sign(re) * np.sqrt(np.abs(re) / lim), cmap="RdBu_r",
                        vmin=-1, vmax=1, shading="nearest", alpha=0.55)
@@ -296,9 +305,9 @@ def main(argv=None):
     print("   Fig. 11 pressures (paper, nonlinear: limit cycle, slow decay, fast decay): "
           + "; ".join(f"{p / 1e6:.2f} MPa max Re λ {st.max_real_1_per_s:+.2f} 1/s "
                       f"({'stable' if st.stable else 'unstable'})" for p, st in fig11))
-    scan = th.scan
+    grid = np.linspace(*PC_BOUNDS, N_SCAN)
     print("   scan: " + "  ".join(f"{p / 1e6:.2f}:{r:+.1f}" for p, r in
-                                   zip(scan["chamber_pressure_pa"], scan["max_real_1_per_s"])))
+                                   zip(grid, on_grid(th.scan, grid))))
 
     # 2. Fig. 9
     t0 = time.perf_counter()
