@@ -32,6 +32,13 @@ def _check_film(b, where: str, n_stations: int) -> None:
             raise InputError(f"{where}.grooves[{i}]: expected a Groove, got {type(g).__name__}")
 
 
+def _film_model(b) -> JournalBearing:
+    return JournalBearing(diameter_m=b.diameter_m, length_m=b.length_m,
+                          clearance_m=b.clearance_m, viscosity_pa_s=b.viscosity_pa_s,
+                          n_circ=b.n_circ, n_axial=b.n_axial, cavitation=b.cavitation,
+                          grooves=b.grooves)
+
+
 @dataclass(frozen=True, slots=True)
 class FluidFilmBearing:
     """Plain 360° journal bearing at ``station`` (film model: :class:`rotordyn.JournalBearing`)."""
@@ -57,10 +64,7 @@ class FluidFilmBearing:
 
     def journal_bearing(self) -> JournalBearing:
         """The standalone film model (forces, coefficients) of this bearing."""
-        return JournalBearing(diameter_m=self.diameter_m, length_m=self.length_m,
-                              clearance_m=self.clearance_m, viscosity_pa_s=self.viscosity_pa_s,
-                              n_circ=self.n_circ, n_axial=self.n_axial,
-                              cavitation=self.cavitation, grooves=self.grooves)
+        return _film_model(self)
 
 
 @dataclass(frozen=True, slots=True)
@@ -109,10 +113,7 @@ class ActiveJournalBearing:
 
     def journal_bearing(self) -> JournalBearing:
         """The film model of the bush with the sleeve undeformed."""
-        return JournalBearing(diameter_m=self.diameter_m, length_m=self.length_m,
-                              clearance_m=self.clearance_m, viscosity_pa_s=self.viscosity_pa_s,
-                              n_circ=self.n_circ, n_axial=self.n_axial,
-                              cavitation=self.cavitation, grooves=self.grooves)
+        return _film_model(self)
 
 
 BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBearing}

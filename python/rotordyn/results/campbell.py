@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from rotordyn.results.modes import WHIRL_NAMES
+from rotordyn.results.modes import WHIRL_NAMES, log_dec
 
 
 @dataclass(frozen=True)
@@ -33,9 +33,7 @@ class CampbellResult:
 
     @property
     def log_dec(self) -> np.ndarray:
-        im = self.eigenvalues.imag
-        return np.where(im > 0, -2 * np.pi * self.eigenvalues.real / np.where(im > 0, im, 1.0),
-                        np.inf)
+        return log_dec(self.eigenvalues)
 
     def critical_speeds(self, harmonic: float = 1.0, whirl: str | None = "forward") -> pd.DataFrame:
         """Speeds where a mode's damped frequency equals ``harmonic`` × running speed, by linear

@@ -10,6 +10,18 @@ import pandas as pd
 WHIRL_NAMES = {1: "forward", -1: "backward", 0: "planar"}
 
 
+def damping_ratio(eigenvalues: np.ndarray) -> np.ndarray:
+    """ζ = −Re λ / |λ| (0 for λ = 0)."""
+    mag = np.abs(eigenvalues)
+    return np.where(mag > 0, -eigenvalues.real / np.where(mag > 0, mag, 1.0), 0.0)
+
+
+def log_dec(eigenvalues: np.ndarray) -> np.ndarray:
+    """Logarithmic decrement δ = −2π Re λ / Im λ (inf for a non-oscillating root)."""
+    im = eigenvalues.imag
+    return np.where(im > 0, -2 * np.pi * eigenvalues.real / np.where(im > 0, im, 1.0), np.inf)
+
+
 @dataclass(frozen=True)
 class ModesResult:
     """Eigen-analysis of the rotor at one speed (paper eq. 19 without excitation).
@@ -45,16 +57,12 @@ class ModesResult:
     @property
     def damping_ratio(self) -> np.ndarray:
         """ζ = −Re λ / |λ|."""
-        mag = np.abs(self.eigenvalues)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return np.where(mag > 0, -self.eigenvalues.real / np.where(mag > 0, mag, 1.0), 0.0)
+        return damping_ratio(self.eigenvalues)
 
     @property
     def log_dec(self) -> np.ndarray:
         """Logarithmic decrement δ = −2π Re λ / Im λ."""
-        im = self.eigenvalues.imag
-        return np.where(im > 0, -2 * np.pi * self.eigenvalues.real / np.where(im > 0, im, 1.0),
-                        np.inf)
+        return log_dec(self.eigenvalues)
 
     def frequency_errors(self) -> np.ndarray:
         """Relative error of each reduced frequency against the full model's same mode number."""

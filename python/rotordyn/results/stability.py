@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 
 from rotordyn.results.equilibrium import EquilibriumResult
+from rotordyn.results.modes import damping_ratio, log_dec
 
 
 @dataclass(frozen=True)
@@ -83,14 +84,11 @@ class StabilityResult:
 
     @property
     def damping_ratio(self) -> np.ndarray:
-        mag = np.abs(self.eigenvalues)
-        return np.where(mag > 0, -self.eigenvalues.real / np.where(mag > 0, mag, 1.0), 0.0)
+        return damping_ratio(self.eigenvalues)
 
     @property
     def log_dec(self) -> np.ndarray:
-        im = self.eigenvalues.imag
-        return np.where(im > 0, -2 * np.pi * self.eigenvalues.real / np.where(im > 0, im, 1.0),
-                        np.inf)
+        return log_dec(self.eigenvalues)
 
     @property
     def max_real_1_per_s(self) -> float:
