@@ -127,3 +127,22 @@ def test_shipped_specs_parse():
     for f in names:
         s = SweepSpec.from_toml(os.path.join(root, f))
         assert s.points() and s.chunks()
+
+
+def test_equilibrium_and_campbell_plots(tmp_path):
+    """The equilibrium-loci and Campbell figures draw from their sweep datasets."""
+    spec = tmp_path / "e.toml"
+    spec.write_text(SPEC.replace('analysis = "stability"', 'analysis = "equilibrium"'))
+    run_sweep(spec, tmp_path / "eq", workers=1)
+    spec2 = tmp_path / "c.toml"
+    spec2.write_text(SPEC.replace("config_ay_m = [-1.85e-3, 0.0]", "config_ay_m = 0.0")
+                     .replace("chamber_pressure_pa = [0.0, 0.1e6, 0.2e6]",
+                              "chamber_pressure_pa = 0.4e6")
+                     .replace("speed_hz = 50.0", "speed_hz = [20.0, 40.0, 60.0]"))
+    run_sweep(spec2, tmp_path / "camp", workers=1)
+    for d, kind in (("eq", "equilibrium"), ("camp", "campbell")):
+        fig = tmp_path / f"{kind}.png"
+        r = subprocess.run([sys.executable, "-m", "rotordyn.cli", "plot", str(tmp_path / d),
+                            "--kind", kind, "--out", str(fig)], capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        assert fig.stat().st_size > 1000
