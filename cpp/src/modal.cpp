@@ -20,7 +20,7 @@ void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const
 namespace rotordyn {
 
 namespace {
-constexpr Eigen::Index kDenseLimit = 120;  // DOFs above which the sparse path is tried
+constexpr Eigen::Index kDenseLimit = 48;  // DOFs above which the sparse path is tried
 }
 
 void eig_general(const Eigen::MatrixXd& A_in, Eigen::VectorXcd& w, Eigen::MatrixXcd* V) {

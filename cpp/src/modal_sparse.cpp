@@ -88,18 +88,25 @@ bool modal_shift_invert(const Eigen::MatrixXd& Md, const Eigen::MatrixXd& Dd,
     std::sort(order.begin(), order.end(),
               [&](int a, int b) { return std::abs(theta(a)) > std::abs(theta(b)); });
     const int take = std::min(want, mm);
+    // The leading 2 n_modes + 2 Ritz values (the modes asked for, both conjugates, and a
+    // margin) must converge; further ones are returned only if they converged too.
+    const int need = std::min(take, 2 * n_modes + 2);
     bool ok = true;
+    std::vector<int> keep;
     for (int i = 0; i < take; ++i) {
       const int k = order[static_cast<std::size_t>(i)];
       const double res = std::abs(hlast) * std::abs(Y(mm - 1, k));
-      if (res > 1e-9 * std::abs(theta(k))) ok = false;
+      const bool conv = res <= 1e-9 * std::abs(theta(k));
+      if (i < need && !conv) ok = false;
+      if (conv || mm < m) keep.push_back(k);
     }
     if (ok || mm < m || m >= N - 1) {
-      lambda.resize(take);
-      shapes.resize(n, take);
+      const int nk = static_cast<int>(keep.size());
+      lambda.resize(nk);
+      shapes.resize(n, nk);
       const Eigen::MatrixXcd Vc = V.leftCols(mm).cast<std::complex<double>>();
-      for (int i = 0; i < take; ++i) {
-        const int k = order[static_cast<std::size_t>(i)];
+      for (int i = 0; i < nk; ++i) {
+        const int k = keep[static_cast<std::size_t>(i)];
         lambda(i) = sigma + 1.0 / theta(k);
         const Eigen::VectorXcd x = Vc * Y.col(k);
         shapes.col(i) = x.head(n);
