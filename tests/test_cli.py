@@ -50,7 +50,7 @@ def test_toml_path_model(tmp_path):
     p = run("modes", str(path), "--json")
     assert p.returncode == 0
     bad = tmp_path / "bad.toml"
-    bad.write_text(path.read_text().replace("mass_kg = 0.641", "mass_kg = -0.641"))
+    bad.write_text(path.read_text().replace("mass_kg = ", "mass_kg = -", 1))  # disk[0]
     p = run("modes", str(bad), "--json")
     assert p.returncode == 2 and "disk[0].mass_kg" in p.stderr
 

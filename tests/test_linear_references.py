@@ -403,7 +403,8 @@ def test_rig_threshold_consistent_with_grid_scan(rig):
 def test_rig_boundary_does_not_miss_a_narrow_unstable_band(rig):
     """Fig. 9 traced with stability_boundary over a_y = −2.0, −1.85 mm at 50 Hz, p_c in
     0–0.6 MPa: at −1.85 mm the rig is unstable in a narrow band at low p_c (0.0027–0.0595 MPa
-    for the model of fb487fd; docs/paper-rig-stability.md), so the row must list the same
+    for the model of fb487fd, 0.0076–0.0570 MPa after the rotor recalibration to the pinned-journal
+    frequencies; docs/paper-rig-stability.md), so the row must list the same
     crossings as a fine (61-point, 10 kPa) threshold scan — not "no_crossing", as the former
     9-point scan reported. Compared with the fine scan rather than fixed numbers so that a
     recalibrated rig keeps the test meaningful; to 1e-3 of the span (Brent's xtol is 1e-6)."""

@@ -63,3 +63,19 @@ def test_gyroscopic_split_grows_with_speed(rig):
     f = r.frequencies_hz
     assert list(r.whirl[:2]) == ["backward", "forward"]
     assert f[1] > f[0]
+
+
+def test_rotor_pinned_at_the_journal_near_the_papers_critical_speeds(rig):
+    """The rotor with x, y fixed at the journal (station 4) too: the paper's critical speeds at
+    p_c = 0.4 MPa, 39 and 90 Hz (§6.3), where the film pins the journal (docs/
+    paper-rig-stability.md §4), are calibration targets (docs/calibration/paper_rig_rotor.py).
+    The fit's compromise with the free frequencies and the Guyan bound leaves −1.7 % and
+    −1.0 % (38.32, 89.14 Hz); 2 % bounds it, while the rotor fitted to the free frequencies
+    alone (35.5, 80.0 Hz: −9 %, −11 %) fails."""
+    import dataclasses
+
+    pinned = dataclasses.replace(
+        rig, bearings=(), supports=rig.supports + (rd.Support(4),),
+        reduction=rd.Reduction((2, 6), "guyan"))
+    f = rd.modes(pinned, 0.0, reduction="none", n_modes=4).frequencies_hz[::2][:2]
+    np.testing.assert_allclose(f, [39.0, 90.0], rtol=0.02)

@@ -35,7 +35,7 @@ def test_table_and_toml(tmp_path, capsys):
     toml = tmp_path / "s.toml"
     toml.write_text(
         "[sleeve]\nradius_m = 0.0278\nthickness_m = 0.005\nwidth_m = 0.04\narc_deg = 160.0\n"
-        "clamp_deg = 105.0\nyoung_pa = 6.4e10\ndensity_kg_m3 = 6080.0\npoisson = 0.34\n"
+        "clamp_deg = 105.0\nyoung_pa = 6.2e10\ndensity_kg_m3 = 5890.0\npoisson = 0.34\n"
         "master_stations = [7, 14, 20]\n"
     )
     assert cli_sleeve.load_sleeve(str(toml)) == paper_rig_sleeve()

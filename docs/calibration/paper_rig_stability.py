@@ -241,7 +241,7 @@ def sensitivity(system):
                                                           sleeve_density_kg_m3=0.8 * rho)),
         ("sleeve E x1.25 (rho x1.25)", dict(sleeve_young_pa=1.25 * E,
                                            sleeve_density_kg_m3=1.25 * rho)),
-        ("chamber arc -10 deg (221-331)", dict(chamber_start_deg=b.chamber_start_deg - 10,
+        (f"chamber arc -10 deg ({b.chamber_start_deg - 10:.0f}-{b.chamber_end_deg - 10:.0f})", dict(chamber_start_deg=b.chamber_start_deg - 10,
                                                chamber_end_deg=b.chamber_end_deg - 10)),
         ("chamber = whole sleeve (195-355)", dict(chamber_start_deg=None, chamber_end_deg=None)),
         ("groove at 60 deg", dict(grooves=(dataclasses.replace(g0, center_deg=60.0),))),
