@@ -356,28 +356,51 @@ def rig():
     return rd.models.paper_rig()
 
 
-@pytest.mark.parametrize("point", [(50.0, 0.15e6, -1.85e-3), (30.0, 0.4e6, 0.0),
-                                   (67.72727272727272, 0.4e6, 0.0)])
+def _film_blocks(a, b):
+    """(perturbation, FD) pairs of the K_H and D_H blocks on the film-coupled coordinates."""
+    idx = np.where((np.abs(a.KH).sum(0) + np.abs(a.DH).sum(0)) > 0)[0]
+    return idx, [(p[np.ix_(idx, idx)], f[np.ix_(idx, idx)]) for p, f in ((a.KH, b.KH),
+                                                                          (a.DH, b.DH))]
+
+
+@pytest.mark.parametrize("point", [(50.0, 0.15e6, -1.85e-3), (30.0, 0.4e6, 0.0)])
 def test_rig_finite_difference_vs_perturbation(rig, point):
     """K_H and D_H of every film-coupled coordinate (journal x, y and the three sleeve
     masters) by the paper's central finite differences (eq. 20, default steps 1e-5 c and
     1e-5 c ω) and by the perturbation method: within 1 % (issue 5) for every entry above
     1e-3 of the block's largest, and within 1 % of the largest for the rest. Measured:
-    ≤ 1.2e-8 relative at the first two points (FD truncation and round-off); at the third
-    (a speed of the 100-point Campbell grid) the FD velocity step crosses a change of the
-    cavitation set and D_H differs by up to 0.35 % (K_H 3e-9; with 1e-6 steps 1e-11)."""
+    ≤ 1.1e-8 relative (FD truncation and round-off)."""
     a = rd.linearize(rig, *point)
     b = rd.linearize(rig, *point, method="finite_difference")
     assert a.status == b.status == "ok"
-    idx = np.where((np.abs(a.KH).sum(0) + np.abs(a.DH).sum(0)) > 0)[0]
+    idx, blocks = _film_blocks(a, b)
     labels = [a.labels[i] for i in idx]
     assert {"station4.x", "station4.y"} <= set(labels)
     assert sum("sleeve" in lab for lab in labels) == 3
-    for p, f in ((a.KH, b.KH), (a.DH, b.DH)):
-        p, f = p[np.ix_(idx, idx)], f[np.ix_(idx, idx)]
+    for p, f in blocks:
         big = np.abs(p) > 1e-3 * np.abs(p).max()
         assert np.all(np.abs(f - p)[big] <= 0.01 * np.abs(p)[big])
         assert np.all(np.abs(f - p) <= 0.01 * np.abs(p).max())
+
+
+def test_rig_finite_difference_vs_perturbation_along_the_campbell_speeds(rig):
+    """Over the 100 speeds of the Fig. 12 Campbell diagram (5–120 Hz, p_c = 0.4 MPa, a_y = 0):
+    FD with the default steps within 1 % of each block's largest entry at every speed, and
+    FD with 1e-6 steps within 1e-6 of it. Where the velocity step 1e-5 c ω straddles a change
+    of the discrete film's cavitation set the FD quotient mixes two one-sided derivatives:
+    measured (model of 7ba4985) 0.11 % of the largest D_H entry at 70.05 Hz — up to 1.03 % on
+    one small entry there, the only place the issue's per-entry 1 % is not met — and
+    3.6e-10 everywhere with 1e-6 steps, so both methods compute the same derivative."""
+    worst = [0.0, 0.0]
+    for s in np.linspace(5.0, 120.0, 100):
+        a = rd.linearize(rig, float(s), 0.4e6, 0.0)
+        for k, step in enumerate((1e-5, 1e-6)):
+            b = rd.linearize(rig, float(s), 0.4e6, 0.0, method="finite_difference",
+                             rel_step=step)
+            for p, f in _film_blocks(a, b)[1]:
+                worst[k] = max(worst[k], float(np.max(np.abs(f - p)) / np.abs(p).max()))
+    assert worst[0] < 0.01, worst
+    assert worst[1] < 1e-6, worst
 
 
 def test_rig_threshold_consistent_with_grid_scan(rig):
@@ -420,18 +443,21 @@ def test_rig_boundary_does_not_miss_a_narrow_unstable_band(rig):
 
 def test_rig_statespace_static_gain_is_equilibrium_derivative(rig):
     """The state-space DC gain from chamber pressure to the journal displacement, −C A⁻¹ B,
-    equals the central difference of two equilibria at p_c ± 1 kPa (eq. 14 differentiated
-    is (K + K_H) dr/dp = ∂C_s0/∂p, the static part of eq. 19). Limited by the central
-    difference's O(δ²) curvature error: rtol 1e-3 (measured 2e-5 in x, 6e-5 in y)."""
-    p0, d = 0.15e6, 1e3
+    equals the central difference of two equilibria at p_c ± 200 Pa (eq. 14 differentiated
+    is (K + K_H) dr/dp = ∂C_s0/∂p, the static part of eq. 19). The discrete film's
+    equilibrium is only piecewise smooth in p_c (a grid node entering or leaving the
+    cavitated set is a kink), so a difference interval that holds a kink averages two
+    one-sided slopes: measured (model of 7ba4985) 3e-4 and 5e-4 relative with ± 250 Pa …
+    ± 2 kPa, 1e-8 with ± 30 Pa, i.e. a kink 30–100 Pa from 0.15 MPa. rtol 2e-3."""
+    p0, d = 0.15e6, 200.0
     ss = rd.statespace(rig, inputs=["chamber_pressure"], outputs=[("journal", 0)],
                        speed_hz=50.0, chamber_pressure_pa=p0, config_ay_m=-1.85e-3)
     gain = (-ss.C @ np.linalg.solve(ss.A, ss.B)).ravel()
-    e_hi = rd.equilibrium(rig, 50.0, p0 + d, -1.85e-3)
-    e_lo = rd.equilibrium(rig, 50.0, p0 - d, -1.85e-3)
+    e_hi = rd.equilibrium(rig, 50.0, p0 + d, -1.85e-3, tol=1e-13)
+    e_lo = rd.equilibrium(rig, 50.0, p0 - d, -1.85e-3, tol=1e-13)
     fd = np.array([e_hi.journal_x_m[0] - e_lo.journal_x_m[0],
                    e_hi.journal_y_m[0] - e_lo.journal_y_m[0]]) / (2 * d)
-    np.testing.assert_allclose(gain, fd, rtol=1e-3, atol=1e-3 * np.abs(fd).max())
+    np.testing.assert_allclose(gain, fd, rtol=2e-3, atol=2e-3 * np.abs(fd).max())
     np.testing.assert_allclose(ss.frequency_response([0.0])[0].real.ravel(), gain, rtol=1e-8)
 
 
