@@ -72,7 +72,7 @@ void bind_system(py::module_& m) {
       .def("linearize", &SystemSolver::linearize, py::arg("r"), py::arg("rdot"), py::arg("omega"),
            gil())
       .def("linearize_fd", &SystemSolver::linearize_fd, py::arg("r"), py::arg("omega"),
-           py::arg("rel_step") = 1e-5, gil())
+           py::arg("rel_step") = 1e-6, gil())
       .def("equilibrium", &SystemSolver::equilibrium, py::arg("omega"),
            py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"), py::arg("options"), gil())
       .def_property_readonly("reynolds_solves", &SystemSolver::reynolds_solves)

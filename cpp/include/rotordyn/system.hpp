@@ -88,7 +88,7 @@ class SystemSolver {
   Linearization linearize(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot, double omega);
   /// The same by central finite differences of H (paper eq. 20, central form); steps
   /// rel_step·c on positions and rel_step·c·|ω| on velocities.
-  Linearization linearize_fd(const Eigen::VectorXd& r, double omega, double rel_step = 1e-5);
+  Linearization linearize_fd(const Eigen::VectorXd& r, double omega, double rel_step = 1e-6);
 
   /// Static equilibrium (eq. 14): K (r + a) = H(Ω, r, 0) + Q + p_c c_s.
   /// a: (n,) configuration (housing offsets at the journal coordinates). r0: start (n,) or

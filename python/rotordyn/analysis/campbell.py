@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from rotordyn.analysis.assembly import assembled
-from rotordyn.analysis.linear import _linear_from, _stability_from
+from rotordyn.analysis.linear import FD_REL_STEP, _linear_from, _stability_from
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn.errors import InputError, RotordynError
 from rotordyn.model import _validate as v
@@ -41,7 +41,7 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
         try:
             e = equilibrium(system, float(s), chamber_pressure_pa, config_ay_m, r0=r0,
                             warm_start=r0 is None)
-            st = _stability_from(asm, _linear_from(asm, e, float(s), method, 1e-5), k)
+            st = _stability_from(asm, _linear_from(asm, e, float(s), method, FD_REL_STEP), k)
         except RotordynError as exc:
             status[i] = "error"
             continue

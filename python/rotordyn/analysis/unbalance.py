@@ -7,7 +7,7 @@ import numpy as np
 
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.equilibrium import equilibrium
-from rotordyn.analysis.linear import _linear_from
+from rotordyn.analysis.linear import FD_REL_STEP, _linear_from
 from rotordyn.errors import InputError, RotordynError
 from rotordyn.model import _validate as v
 from rotordyn.model.system import System
@@ -72,7 +72,7 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
         if e.status not in ("ok", "contact"):
             continue
         r0 = e.r
-        lm = _linear_from(asm, e, float(s), method, 1e-5)
+        lm = _linear_from(asm, e, float(s), method, FD_REL_STEP)
         w = hz_to_rad_s(float(s))
         Z = lm.K - w**2 * lm.M + 1j * w * lm.D
         q = np.linalg.solve(Z, w**2 * F1)

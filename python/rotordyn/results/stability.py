@@ -97,8 +97,12 @@ class StabilityResult:
 
     @property
     def stable(self) -> bool:
-        """Every eigenvalue has a negative real part (paper §6.2)."""
-        return self.status == "ok" and self.max_real_1_per_s < 0
+        """No eigenvalue grows (paper §6.2): every Re λ < 1e-9 |λ|. Real parts within that
+        round-off band of zero (an undamped rotor) count as marginally stable, not unstable."""
+        if self.status not in ("ok", "contact") or len(self.eigenvalues) == 0:
+            return False
+        lam = self.eigenvalues
+        return bool(np.all(lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)))
 
     def to_frame(self) -> pd.DataFrame:
         """One row per mode: operating point, eigenvalue, frequency, damping, whirl, kind."""
