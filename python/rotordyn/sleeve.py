@@ -35,25 +35,10 @@ import numpy as np
 import pandas as pd
 
 from rotordyn import _core
+from rotordyn import _validate as v
 from rotordyn.errors import InputError
 
 __all__ = ["FlexibleSleeve", "SleeveResult", "paper_rig_sleeve"]
-
-
-def _number(name: str, value) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
-        raise InputError(f"{name}: expected a number, got {value!r}")
-    v = float(value)
-    if not math.isfinite(v):
-        raise InputError(f"{name}: expected a finite number, got {value!r}")
-    return v
-
-
-def _positive(name: str, value) -> float:
-    v = _number(name, value)
-    if v <= 0.0:
-        raise InputError(f"{name}: expected a value > 0, got {value!r}")
-    return v
 
 
 @dataclass(frozen=True, slots=True)
@@ -94,20 +79,20 @@ class FlexibleSleeve:
 
     def __post_init__(self):
         f = "sleeve"
-        r = _positive(f"{f}.radius_m", self.radius_m)
-        d = _positive(f"{f}.thickness_m", self.thickness_m)
+        r = v.positive(f"{f}.radius_m", self.radius_m)
+        d = v.positive(f"{f}.thickness_m", self.thickness_m)
         if d >= r:
             raise InputError(
                 f"{f}.thickness_m: expected a value in (0, radius_m = {r!r}), got {d!r}"
             )
-        _positive(f"{f}.width_m", self.width_m)
-        arc = _number(f"{f}.arc_deg", self.arc_deg)
+        v.positive(f"{f}.width_m", self.width_m)
+        arc = v.finite(f"{f}.arc_deg", self.arc_deg)
         if not 0.0 < arc <= 360.0:
             raise InputError(f"{f}.arc_deg: expected a value in (0, 360], got {self.arc_deg!r}")
-        _number(f"{f}.clamp_deg", self.clamp_deg)
-        _positive(f"{f}.young_pa", self.young_pa)
-        _positive(f"{f}.density_kg_m3", self.density_kg_m3)
-        nu = _number(f"{f}.poisson", self.poisson)
+        v.finite(f"{f}.clamp_deg", self.clamp_deg)
+        v.positive(f"{f}.young_pa", self.young_pa)
+        v.positive(f"{f}.density_kg_m3", self.density_kg_m3)
+        nu = v.finite(f"{f}.poisson", self.poisson)
         if not -1.0 < nu < 0.5:
             raise InputError(f"{f}.poisson: expected a value in (-1, 0.5), got {self.poisson!r}")
         n = self.n_elements
@@ -264,8 +249,8 @@ class SleeveResult:
         pushes the sleeve inward). Default: the whole sleeve. The chamber arc must lie inside
         the sleeve's (end > start, angles may be given modulo 2π)."""
         s = self.sleeve
-        a = s.clamp_phi_rad if start_phi_rad is None else _number("start_phi_rad", start_phi_rad)
-        b = s.free_end_phi_rad if end_phi_rad is None else _number("end_phi_rad", end_phi_rad)
+        a = s.clamp_phi_rad if start_phi_rad is None else v.finite("start_phi_rad", start_phi_rad)
+        b = s.free_end_phi_rad if end_phi_rad is None else v.finite("end_phi_rad", end_phi_rad)
         return np.asarray(self._core_result.chamber_load(a, b))
 
     def modal_assurance(self) -> np.ndarray:
@@ -289,8 +274,8 @@ class SleeveResult:
         """(3n,) the same chamber load as consistent nodal loads on the full DOFs (x, y, v of
         nodes 1 … n), m² (N and N·m per Pa); ``chamber_load = transformation.T @ this``."""
         s = self.sleeve
-        a = s.clamp_phi_rad if start_phi_rad is None else _number("start_phi_rad", start_phi_rad)
-        b = s.free_end_phi_rad if end_phi_rad is None else _number("end_phi_rad", end_phi_rad)
+        a = s.clamp_phi_rad if start_phi_rad is None else v.finite("start_phi_rad", start_phi_rad)
+        b = s.free_end_phi_rad if end_phi_rad is None else v.finite("end_phi_rad", end_phi_rad)
         return np.asarray(self._core_result.chamber_load_full(a, b))
 
     def _masters(self, r_s) -> np.ndarray:
@@ -306,8 +291,8 @@ class SleeveResult:
         rows = []
         for stage, f in (("full", self.freq_full_hz), ("rotations_eliminated", self.freq_step1_hz),
                          ("condensed", self.freq_condensed_hz)):
-            for i, v in enumerate(f):
-                rows.append((stage, i + 1, float(v)))
+            for i, val in enumerate(f):
+                rows.append((stage, i + 1, float(val)))
         df = pd.DataFrame(rows, columns=["stage", "mode", "freq_hz"])
         df["stage"] = pd.Categorical(df["stage"],
                                      categories=["full", "rotations_eliminated", "condensed"])

@@ -6,10 +6,9 @@ from __future__ import annotations
 import numpy as np
 
 from rotordyn.analysis.assembly import assembled
-from rotordyn.analysis.linear import FD_REL_STEP, _linear_from, _stability_from
-from rotordyn.analysis.equilibrium import equilibrium
+from rotordyn.analysis.linear import _stability_from, continued_linear_models
 from rotordyn.errors import InputError, RotordynError
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.campbell import CampbellResult
 
@@ -36,18 +35,16 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     whirl = np.zeros((sp.size, k), dtype=np.int64)
     kind = np.full((sp.size, k), "rotor", dtype=object)
     status = np.empty(sp.size, dtype=object)
-    r0 = None
-    for i, s in enumerate(sp):
+    for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
+                                              method):
+        status[i] = stt
+        if lm is None:
+            continue
         try:
-            e = equilibrium(system, float(s), chamber_pressure_pa, config_ay_m, r0=r0,
-                            warm_start=r0 is None)
-            st = _stability_from(asm, _linear_from(asm, e, float(s), method, FD_REL_STEP), k)
-        except RotordynError as exc:
+            st = _stability_from(asm, lm, k)
+        except RotordynError:
             status[i] = "error"
             continue
-        status[i] = st.status
-        if e.status == "ok":
-            r0 = e.r
         m = min(k, len(st.eigenvalues))
         lam[i, :m] = st.eigenvalues[:m]
         whirl[i, :m] = [WHIRL_CODE[w] for w in st.whirl[:m]]

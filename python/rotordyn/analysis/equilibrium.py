@@ -8,7 +8,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn.analysis.assembly import assembled
 from rotordyn.errors import InputError
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.units import hz_to_rad_s

@@ -11,7 +11,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn.analysis.assembly import Assembled, assembled
 from rotordyn.analysis.equilibrium import equilibrium
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.results.modes import WHIRL_NAMES
@@ -114,3 +114,27 @@ def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, method=method,
                    **equilibrium_kw)
     return _stability_from(assembled(system), lm, n_modes)
+
+
+def continued_linear_models(system: System, speeds_hz, chamber_pressure_pa: float,
+                            config_ay_m: float | None, method: str,
+                            continue_on=("ok",)):
+    """Yield ``(index, status, LinearModel | None)`` along increasing ``speeds_hz``: each
+    equilibrium starts from the last one whose status is in ``continue_on`` (continuation),
+    then K_H(Ω), D_H(Ω). A point whose solve raises is ``(i, "error", None)``; the sequence
+    goes on. Shared by the Campbell diagram and the unbalance response."""
+    from rotordyn.errors import RotordynError
+
+    asm = assembled(system)
+    r0 = None
+    for i, s in enumerate(speeds_hz):
+        try:
+            e = equilibrium(system, float(s), chamber_pressure_pa, config_ay_m, r0=r0,
+                            warm_start=r0 is None)
+            lm = _linear_from(asm, e, float(s), method, FD_REL_STEP)
+        except RotordynError:
+            yield i, "error", None
+            continue
+        if e.status in continue_on:
+            r0 = e.r
+        yield i, e.status, lm

@@ -6,7 +6,7 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn.errors import InputError
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 from rotordyn.model.system import REDUCTION_METHODS, System
 from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.modes import WHIRL_NAMES, ModesResult

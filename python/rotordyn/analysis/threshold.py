@@ -10,7 +10,7 @@ import pandas as pd
 from scipy.optimize import brentq
 
 from rotordyn.errors import InputError, RotordynError
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 

@@ -10,7 +10,7 @@ from rotordyn import _core
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn.errors import InputError
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.transient import TransientResult
 from rotordyn.units import hz_to_rad_s

@@ -6,10 +6,9 @@ from __future__ import annotations
 import numpy as np
 
 from rotordyn.analysis.assembly import assembled
-from rotordyn.analysis.equilibrium import equilibrium
-from rotordyn.analysis.linear import FD_REL_STEP, _linear_from
-from rotordyn.errors import InputError, RotordynError
-from rotordyn.model import _validate as v
+from rotordyn.analysis.linear import continued_linear_models
+from rotordyn.errors import InputError
+from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.unbalance import UnbalanceResult
 from rotordyn.units import hz_to_rad_s
@@ -60,20 +59,12 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     X = np.full((sp.size, len(outs)), np.nan + 0j)
     Y = np.full((sp.size, len(outs)), np.nan + 0j)
     status = np.empty(sp.size, dtype=object)
-    r0 = None
-    for i, s in enumerate(sp):
-        try:
-            e = equilibrium(system, float(s), chamber_pressure_pa, config_ay_m, r0=r0,
-                            warm_start=r0 is None)
-        except RotordynError:
-            status[i] = "error"
+    for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
+                                              method, continue_on=("ok", "contact")):
+        status[i] = stt
+        if stt not in ("ok", "contact"):
             continue
-        status[i] = e.status
-        if e.status not in ("ok", "contact"):
-            continue
-        r0 = e.r
-        lm = _linear_from(asm, e, float(s), method, FD_REL_STEP)
-        w = hz_to_rad_s(float(s))
+        w = hz_to_rad_s(float(sp[i]))
         Z = lm.K - w**2 * lm.M + 1j * w * lm.D
         q = np.linalg.solve(Z, w**2 * F1)
         for k, Co in enumerate(Cout):

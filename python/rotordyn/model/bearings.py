@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 from rotordyn.bearing import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.errors import InputError
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 from rotordyn.sleeve import FlexibleSleeve
 
 

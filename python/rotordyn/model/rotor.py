@@ -14,7 +14,7 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn.errors import InputError
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 
 
 @dataclass(frozen=True, slots=True)

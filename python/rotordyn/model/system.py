@@ -13,7 +13,7 @@ import scipy.sparse as sp
 
 from rotordyn import _core
 from rotordyn.errors import InputError
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 from rotordyn.model.bearings import ActiveJournalBearing, FluidFilmBearing
 from rotordyn.model.rotor import STEEL, Material, Rotor, Support
 

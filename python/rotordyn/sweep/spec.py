@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from rotordyn.errors import InputError
-from rotordyn.model import _validate as v
+from rotordyn import _validate as v
 
 SCHEMA = "rotordyn/sweep/1"
 AXES = ("speed_hz", "chamber_pressure_pa", "config_ay_m")

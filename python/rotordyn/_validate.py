@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from rotordyn.errors import InputError
 
 
 def _num(field: str, value) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
         raise InputError(f"{field}: expected a number, got {value!r}")
     v = float(value)
     if not math.isfinite(v):
