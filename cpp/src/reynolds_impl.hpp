@@ -3,12 +3,26 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "reynolds_ldlt.hpp"
 #include "rotordyn/reynolds.hpp"
 
 namespace rotordyn {
+
+namespace reynolds_detail {
+constexpr double kPi = 3.14159265358979323846;
+
+/// A number in error messages (6 significant digits).
+inline std::string num(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+}  // namespace reynolds_detail
 
 /// One sparse system over a set of unknown nodes: the full grid, or — when the film and its
 /// rate are mirror-symmetric about z = 0 — the half grid k <= n_axial/2 whose mid-plane row is

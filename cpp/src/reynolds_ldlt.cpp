@@ -133,7 +133,7 @@ bool StaticLDLT::factorize_lu(const double* values) {
   return true;
 }
 
-void StaticLDLT::solve_lu(const double* b, double* x) const {
+double* StaticLDLT::forward(const double* b) const {
   double* y = ys_.data();
   for (int i = 0; i < n_; ++i) y[perm_[i]] = b[i];
   for (int j = 0; j < n_; ++j) {
@@ -141,6 +141,11 @@ void StaticLDLT::solve_lu(const double* b, double* x) const {
     if (yj != 0.0)
       for (int p = Lp_[j]; p < Lp_[j + 1]; ++p) y[Li_[p]] -= Lx_[p] * yj;
   }
+  return y;
+}
+
+void StaticLDLT::solve_lu(const double* b, double* x) const {
+  double* y = forward(b);
   for (int j = n_ - 1; j >= 0; --j) {
     double s = y[j];
     for (int p = Lp_[j]; p < Lp_[j + 1]; ++p) s -= Ux_[p] * y[Li_[p]];
@@ -179,13 +184,7 @@ bool StaticLDLT::factorize(const double* values) {
 }
 
 void StaticLDLT::solve(const double* b, double* x) const {
-  double* y = ys_.data();
-  for (int i = 0; i < n_; ++i) y[perm_[i]] = b[i];
-  for (int j = 0; j < n_; ++j) {
-    const double yj = y[j];
-    if (yj != 0.0)
-      for (int p = Lp_[j]; p < Lp_[j + 1]; ++p) y[Li_[p]] -= Lx_[p] * yj;
-  }
+  double* y = forward(b);
   for (int j = 0; j < n_; ++j) y[j] /= D_[j];
   for (int j = n_ - 1; j >= 0; --j) {
     double s = y[j];

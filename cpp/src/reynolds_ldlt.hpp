@@ -33,6 +33,8 @@ class StaticLDLT {
   long nnz_l() const { return static_cast<long>(Li_.size()); }
 
  private:
+  /// ys_ = P b, then the unit-lower forward substitution L y = P b in place (both solves).
+  double* forward(const double* b) const;
   int n_ = 0;
   std::vector<int> perm_;               // old index -> new index
   std::vector<int> Up_, Ui_, Usrc_;     // permuted upper triangle (with diagonal), by column

@@ -14,14 +14,8 @@
 namespace rotordyn {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
+using reynolds_detail::kPi;
+using reynolds_detail::num;
 }  // namespace
 
 const FilmSolution& ReynoldsSolver::rigid(double x, double y, double vx, double vy,
