@@ -75,6 +75,8 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
                                double omega) {
   require(r.size() == model_.n(), shape_msg("r", model_.n(), 1, r.size(), 1));
   require(rdot.size() == model_.n(), shape_msg("rdot", model_.n(), 1, rdot.size(), 1));
+  if (solved_ && omega == last_omega_ && r == last_r_ && rdot == last_rdot_) return;
+  solved_ = false;  // stays false if a film throws (contact) below
   for (std::size_t i = 0; i < films_.size(); ++i) {
     const FilmCoupling& fc = model_.films[i];
     Film& f = *films_[i];
@@ -100,6 +102,10 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
     h_min_[i] = s.h_min_m;
     h_min_angle_[i] = s.h_min_angle_deg;
   }
+  solved_ = true;
+  last_r_ = r;
+  last_rdot_ = rdot;
+  last_omega_ = omega;
 }
 
 Eigen::VectorXd SystemSolver::film_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,

@@ -109,6 +109,12 @@ class SystemSolver {
   std::vector<std::unique_ptr<Film>> films_;
   std::vector<double> h_min_, h_min_angle_;
   int solves_ = 0;
+  // The state of the films' last solve: a call at the same (r, ṙ, Ω) — an equilibrium's
+  // final point then its linearisation, a CVODE right-hand side then its Jacobian — reuses
+  // the pressures and factorisations instead of solving again.
+  bool solved_ = false;
+  Eigen::VectorXd last_r_, last_rdot_;
+  double last_omega_ = 0.0;
   void solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot, double omega);
   /// K_H (and D_H if `damping`) about the films' last solve, by the perturbation method
   /// (linearised solves reusing each film's factorisation; no new Reynolds solve).
