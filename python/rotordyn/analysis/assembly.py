@@ -121,7 +121,7 @@ class Assembled:
         self.n = n
         self.n_rotor = n_r
         self.solver = _core.SystemSolver(model)
-        self.last_r: dict = {}
+        self.last_r: np.ndarray | None = None  # last converged equilibrium (warm starts)
 
     def station_load_matrix(self, station: int) -> np.ndarray:
         """(n, 2) map from a force (Fx, Fy) at a rotor station (N) to generalised forces on r

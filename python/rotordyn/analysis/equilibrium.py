@@ -54,8 +54,8 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         r_init = np.asarray(r0, dtype=float)
         if r_init.shape != (asm.n,):
             raise InputError(f"r0: expected shape ({asm.n},), got {r_init.shape}")
-    elif warm_start and "r" in asm.last_r:
-        r_init = asm.last_r["r"]
+    elif warm_start and asm.last_r is not None:
+        r_init = asm.last_r
     else:
         r_init = np.zeros(0)
     opt = _core.EquilibriumOptions()
@@ -66,7 +66,7 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
                                  r_init, opt)
     r = np.asarray(res.r)
     if res.status == "ok":
-        asm.last_r["r"] = r.copy()
+        asm.last_r = r.copy()
     bcs = asm.bearings
     return EquilibriumResult(
         speed_hz=float(speed_hz), chamber_pressure_pa=float(chamber_pressure_pa),

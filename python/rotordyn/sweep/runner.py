@@ -77,8 +77,6 @@ def _tidy(df: pd.DataFrame, sweep_id: str) -> pd.DataFrame:
     for c in outputs:
         if df[c].dtype.kind in "fiu" and c not in ("mode", "iterations"):
             df[c] = df[c].astype("float64")
-        if df[c].dtype == bool:
-            pass
     return df[ID_COLS + INPUT_COLS + outputs + ["status", "message"]]
 
 
