@@ -26,6 +26,19 @@ class CampbellResult:
     kind: np.ndarray | None = None  # (n_speeds, n_modes) "rotor"/"sleeve" (systems with films)
     point_status: np.ndarray | None = None  # (n_speeds,) equilibrium status per speed
 
+    def __repr__(self) -> str:
+        ns, nm = self.eigenvalues.shape
+        try:
+            crit = self.critical_speeds()["speed_hz"].to_numpy()
+            cs = ", ".join(f"{x:.4g}" for x in crit[:6]) or "none"
+        except Exception:  # noqa: BLE001 - a repr never raises
+            cs = "?"
+        bad = 0 if self.point_status is None else int(np.sum(self.point_status != "ok"))
+        return (f"<CampbellResult {self.model}: {ns} speeds {self.speeds_hz[0]:g}–"
+                f"{self.speeds_hz[-1]:g} Hz × {nm} modes; forward 1× critical speeds (Hz): {cs}"
+                + (f"; {bad} speeds not ok" if bad else "")
+                + (f"; status {self.status}" if self.status != "ok" else "") + ">")
+
     @property
     def frequencies_hz(self) -> np.ndarray:
         """(n_speeds, n_modes) damped natural frequencies, Hz."""

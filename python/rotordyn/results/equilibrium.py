@@ -39,6 +39,14 @@ class EquilibriumResult:
     status: str = "ok"
     message: str = ""
 
+    def __repr__(self) -> str:
+        pos = "; ".join(f"{n or i}: x/c = {x:.4f}, y/c = {y:.4f}"
+                        for i, (n, x, y) in enumerate(zip(self.bearing_names, self.x_over_c,
+                                                          self.y_over_c)))
+        return (f"<EquilibriumResult {self.status}: {self.speed_hz:g} Hz, p_c = "
+                f"{self.chamber_pressure_pa / 1e6:g} MPa; {pos or 'no bearings'}; "
+                f"{self.iterations} iterations, residual {self.residual:.2g}>")
+
     @property
     def x_over_c(self) -> np.ndarray:
         return self.journal_x_m / self.clearance_m

@@ -38,6 +38,11 @@ class LinearModel:
     def status(self) -> str:
         return self.equilibrium.status
 
+    def __repr__(self) -> str:
+        return (f"<LinearModel {self.speed_hz:g} Hz, {self.M.shape[0]} coordinates "
+                f"({', '.join(self.labels[:4])}{', …' if len(self.labels) > 4 else ''}), "
+                f"equilibrium {self.status}, K_H/D_H by {self.method}>")
+
     def state_matrix(self) -> np.ndarray:
         """A of ẋ = A x, x = [Δr; Δṙ], (2n, 2n)."""
         n = self.M.shape[0]
@@ -77,6 +82,18 @@ class StabilityResult:
     @property
     def speed_hz(self) -> float:
         return self.linear.speed_hz
+
+    def __repr__(self) -> str:
+        e = self.linear.equilibrium
+        head = (f"<StabilityResult {'stable' if self.stable else 'UNSTABLE'} ({self.status}): "
+                f"{self.speed_hz:g} Hz, p_c = {e.chamber_pressure_pa / 1e6:g} MPa, "
+                f"{len(self.eigenvalues)} modes")
+        if len(self.eigenvalues):
+            j = int(np.argmax(self.eigenvalues.real))
+            head += (f"; least damped {self.frequencies_hz[j]:.4g} Hz {self.whirl[j]} "
+                     f"{self.kind[j]} mode, Re λ = {self.eigenvalues.real[j]:.3g} 1/s, "
+                     f"log dec {self.log_dec[j]:.3g}")
+        return head + ">"
 
     @property
     def frequencies_hz(self) -> np.ndarray:

@@ -27,6 +27,15 @@ class StateSpaceResult:
     state_names: tuple
     linear: LinearModel
 
+    def __repr__(self) -> str:
+        def names(t):
+            return ", ".join(map(str, t[:4])) + (", …" if len(t) > 4 else "")
+
+        return (f"<StateSpaceResult {self.A.shape[0]} states, {self.B.shape[1]} inputs "
+                f"({names(self.input_names)}), {self.C.shape[0]} outputs "
+                f"({names(self.output_names)}); at {self.linear.speed_hz:g} Hz, "
+                f"max Re pole {np.max(self.poles.real):.3g} 1/s>")
+
     @property
     def poles(self) -> np.ndarray:
         return np.linalg.eigvals(self.A)

@@ -31,6 +31,12 @@ class ThresholdResult:
     status: str = "ok"
     message: str = ""
 
+    def __repr__(self) -> str:
+        return (f"<ThresholdResult {self.status}: {self.vary} = {self.value:.6g} (stable "
+                f"{self.stable_side or '?'}), whirl {self.whirl_frequency_hz:.4g} Hz "
+                f"(ratio {self.whirl_ratio:.3g}); {len(self.crossings)} crossings in "
+                f"{tuple(self.bounds)}, {self.evaluations} evaluations>")
+
     def to_frame(self) -> pd.DataFrame:
         row = dict(self.fixed)
         row.update({"vary": self.vary, self.vary: self.value,
@@ -48,6 +54,11 @@ class BoundaryResult:
     vary: str
     along: str
     table: pd.DataFrame  # columns: along, vary, whirl_frequency_hz, whirl_ratio, stable_side, status, message
+
+    def __repr__(self) -> str:
+        ok = int((self.table["status"] == "ok").sum()) if "status" in self.table else 0
+        return (f"<BoundaryResult threshold of {self.vary} along {self.along}: "
+                f"{len(self.table)} points, {ok} ok>")
 
     def to_frame(self) -> pd.DataFrame:
         return self.table.copy()

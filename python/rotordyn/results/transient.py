@@ -29,6 +29,14 @@ class TransientResult:
     status: str = "ok"
     message: str = ""
 
+    def __repr__(self) -> str:
+        amp = ""
+        if len(self.t) > 1 and self.journal_x_m.shape[1]:
+            amp = f", final amplitude {self.amplitude() * 1e6:.3g} µm ({self.bearing_names[0]})"
+        return (f"<TransientResult {self.status}: {self.t[-1] - self.t[0] if len(self.t) else 0:g}"
+                f" s, {len(self.t)} samples, {self.speed_hz:g} Hz, p_c = "
+                f"{self.chamber_pressure_pa / 1e6:g} MPa{amp}>")
+
     def to_frame(self) -> pd.DataFrame:
         """One row per (time, bearing)."""
         nt, nb = self.journal_x_m.shape

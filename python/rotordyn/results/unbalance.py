@@ -32,6 +32,18 @@ class UnbalanceResult:
     unbalances: tuple
     operating_speed_hz: tuple | None = None
 
+    def __repr__(self) -> str:
+        a = self.major_m
+        pk = ""
+        if np.isfinite(a).any():
+            i, k = np.unravel_index(np.nanargmax(a), a.shape)
+            pk = (f"; largest orbit {a[i, k] * 1e6:.4g} µm at station {self.stations[k]}, "
+                  f"{self.speeds_hz[i]:.4g} Hz")
+        bad = int(np.sum(self.point_status != "ok"))
+        return (f"<UnbalanceResult {len(self.speeds_hz)} speeds {self.speeds_hz[0]:g}–"
+                f"{self.speeds_hz[-1]:g} Hz, stations {list(self.stations)}{pk}"
+                + (f"; {bad} speeds not ok" if bad else "") + ">")
+
     @property
     def forward_m(self) -> np.ndarray:
         return np.abs(self.x + 1j * self.y) / 2
@@ -52,8 +64,10 @@ class UnbalanceResult:
 
     def to_frame(self) -> pd.DataFrame:
         """One row per (speed, station)."""
+        from rotordyn.results.modes import whirl_index, whirl_label
+
         ns, nk = self.x.shape
-        fw = self.forward_m >= self.backward_m
+        whirl = whirl_label(whirl_index(self.x, self.y, axis=()))  # per speed and station
         return pd.DataFrame({
             "speed_hz": np.repeat(self.speeds_hz, nk),
             "station": np.tile(np.asarray(self.stations, dtype=np.int64), ns),
@@ -63,7 +77,7 @@ class UnbalanceResult:
             "phase_y_deg": np.degrees(np.angle(self.y)).ravel(),
             "major_m": self.major_m.ravel(),
             "minor_m": self.minor_m.ravel(),
-            "whirl": pd.Categorical(np.where(fw, "forward", "backward").ravel(),
+            "whirl": pd.Categorical(whirl.ravel(),
                                     categories=["forward", "backward", "planar"]),
             "status": pd.Categorical(np.repeat(self.point_status, nk)),
         })
