@@ -130,22 +130,13 @@ class ModesResult:
         })
         return df
 
-    def plot(self, modes=None, ax=None, plane: str = "x"):
-        """Mode shapes along the shaft (real part of the x or y translation). Returns Axes."""
-        import matplotlib.pyplot as plt
+    def plot(self, modes=None, ax=None, plane: str = "x", *, system=None):
+        """Mode shapes. ``modes`` an int: the 3-D whirl orbits of that mode (0-based) along the
+        rotor (:func:`rotordyn.plot.mode_shape`; ``system`` adds the rotor outline, disks and
+        bearings); a list or None: the real part of the ``plane`` translation of those modes
+        along the shaft (:func:`rotordyn.plot.mode_shapes_2d`). Returns the Axes."""
+        from rotordyn.plot.shapes import mode_shape, mode_shapes_2d
 
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 4))
-        k = {"x": 0, "y": 1}[plane]
-        idx = range(len(self.eigenvalues)) if modes is None else modes
-        for j in idx:
-            s = self.shapes[:, k, j]
-            scale = np.max(np.abs(s)) or 1.0
-            ax.plot(self.node_positions_m, np.real(s) / scale,
-                    label=f"mode {j + 1}: {self.frequencies_hz[j]:.2f} Hz ({self.whirl[j]})")
-        ax.set_xlabel("axial position (m)")
-        ax.set_ylabel(f"{plane} (normalised)")
-        ax.set_title(f"{self.model} model, {self.speed_hz:g} Hz")
-        ax.legend(fontsize="small")
-        ax.grid(True, alpha=0.3)
-        return ax
+        if isinstance(modes, (int, np.integer)):
+            return mode_shape(self, int(modes), ax=ax, system=system)
+        return mode_shapes_2d(self, modes=modes, ax=ax, plane=plane)

@@ -123,6 +123,16 @@ class StabilityResult:
         lam = self.eigenvalues
         return bool(np.all(lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)))
 
+    def plot(self, mode: int | None = None, ax=None, system=None):
+        """3-D whirl orbits of ``mode`` (0-based; default: the least damped rotor mode) along
+        the rotor (:func:`rotordyn.plot.mode_shape`)."""
+        from rotordyn.plot.shapes import mode_shape
+
+        if mode is None:
+            re = np.where(self.kind == "rotor", self.eigenvalues.real, -np.inf)
+            mode = int(np.argmax(re))
+        return mode_shape(self, mode, ax=ax, system=system)
+
     def to_frame(self) -> pd.DataFrame:
         """One row per mode: operating point, eigenvalue, frequency, damping, whirl, kind."""
         n = len(self.eigenvalues)

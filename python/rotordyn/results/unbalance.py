@@ -123,22 +123,23 @@ class UnbalanceResult:
             rows.append(row)
         return pd.DataFrame(rows)
 
-    def plot(self, station: int | None = None, axes=None):
-        """Bode plot (amplitude and phase of x and y) at ``station``; returns (ax_amp, ax_phase)."""
-        import matplotlib.pyplot as plt
+    def plot(self, station: int | None = None, axes=None, kind: str = "bode", *,
+             speed_hz: float | None = None, system=None):
+        """``kind="bode"``: amplitude (µm) and phase against speed with AF, half-power bands,
+        operating range and margins (returns (ax_amp, ax_phase)); ``"polar"``: the response
+        vector over speed (returns Axes); ``"deflected"``: orbits at the output stations at
+        ``speed_hz`` (``system`` for axial positions)."""
+        from rotordyn.plot.response import bode, polar
+        from rotordyn.plot.shapes import deflected_shape
 
-        k = 0 if station is None else list(self.stations).index(station)
-        if axes is None:
-            _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
-        ax1, ax2 = axes
-        for comp, z in (("x", self.x[:, k]), ("y", self.y[:, k])):
-            ax1.plot(self.speeds_hz, np.abs(z) * 1e6, label=comp)
-            ax2.plot(self.speeds_hz, np.degrees(np.angle(z)), label=comp)
-        ax1.set_ylabel("amplitude (µm)")
-        ax2.set_ylabel("phase (deg)")
-        ax2.set_xlabel("speed (Hz)")
-        ax1.set_title(f"unbalance response at station {self.stations[k]}")
-        for ax in axes:
-            ax.grid(True, alpha=0.3)
-            ax.legend()
-        return ax1, ax2
+        if kind == "bode":
+            return bode(self, station=station, axes=axes)
+        if kind == "polar":
+            return polar(self, station=station, ax=axes)
+        if kind == "deflected":
+            sp = self.speeds_hz[np.nanargmax(np.nanmax(self.major_m, axis=1))] \
+                if speed_hz is None else speed_hz
+            return deflected_shape(self, sp, ax=axes, system=system)
+        from rotordyn.errors import InputError
+
+        raise InputError(f"kind: expected 'bode', 'polar' or 'deflected', got {kind!r}")
