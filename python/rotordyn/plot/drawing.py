@@ -14,6 +14,10 @@ def disk_radius_m(disk) -> float:
     return float(np.sqrt(2 * disk.ip_kg_m2 / disk.mass_kg)) if disk.mass_kg > 0 else 0.0
 
 
+KIND_LABEL = {"rigid": "ball bearing (rigid in x, y)", "linear": "linear support (spring)",
+              "journal": "journal bearing", "active": "active journal bearing"}
+
+
 def support_items(system):
     """[(station, label, kind)] of the supports and fluid-film bearings."""
     from rotordyn.model.bearings import ActiveJournalBearing
@@ -62,8 +66,8 @@ def rotor_drawing(system, ax=None, title: str | None = None, stations: bool = Tr
         top = max(top, r)
         ax.add_patch(Rectangle((zs[d.station] - width / 2, -r), width, 2 * r, fc="tab:gray",
                                ec="k", lw=0.6))
-        ax.annotate(f"{d.mass_kg:.3g} kg", (zs[d.station], r), xytext=(0, 2),
-                    textcoords="offset points", ha="center", va="bottom", fontsize=6)
+        ax.annotate(f"{d.mass_kg:.3g} kg", (zs[d.station] + width / 2, r * 0.8), xytext=(2, 0),
+                    textcoords="offset points", ha="left", va="center", fontsize=6)
     if rotor.disks:
         handles.append(Patch(fc="tab:gray", ec="k", label="disk (equivalent solid radius)"))
     seen = set()
@@ -72,10 +76,11 @@ def rotor_drawing(system, ax=None, title: str | None = None, stations: bool = Tr
         y = -top * 1.25
         ax.plot([zs[st]], [y], marker=mk, color=col, ms=7, ls="")
         ax.plot([zs[st], zs[st]], [y, -rmax], color=col, lw=0.8)
+        ax.annotate(lab, (zs[st], y), xytext=(0, -7), textcoords="offset points", ha="center",
+                    va="top", fontsize=5.5, color=col)
         if kind not in seen:
             handles.append(Line2D([], [], marker=mk, color=col, ls="", ms=6,
-                                  label=lab.split(" (")[0] if kind in ("journal", "active")
-                                  else lab))
+                                  label=KIND_LABEL[kind]))
             seen.add(kind)
     if stations:
         for k, z in enumerate(zs):
@@ -85,7 +90,7 @@ def rotor_drawing(system, ax=None, title: str | None = None, stations: bool = Tr
         handles.append(Line2D([], [], marker="|", color="0.3", ls="", label="station (number)"))
     ax.axhline(0.0, color="0.5", lw=0.5, ls="-.")
     ax.set_xlim(zs[0] - 0.03 * zs[-1], zs[-1] * 1.03)
-    ax.set_ylim(-top * 1.5, top * 1.45)
+    ax.set_ylim(-top * 1.85, top * 1.45)
     ax.set_xlabel("axial position (mm)")
     ax.set_ylabel("radius (mm)")
     ax.grid(False)
