@@ -231,7 +231,8 @@ def _cmd_plot(args) -> int:
 def _cmd_report(args) -> int:
     from rotordyn import report
 
-    return report.run(args.model, args.out, html=args.html)
+    return report.run(args.model, args.out, html=args.html,
+                      operating_speed_hz=args.operating_speed_hz)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -343,6 +344,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="directory for report.txt, tables and figures")
     s.add_argument("--html", default=None, metavar="FILE",
                    help="also write one self-contained HTML report (figures as SVG)")
+    s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
+                   metavar=("MIN", "MAX"),
+                   help="operating speed range, Hz, for the API margins in the HTML report "
+                        "(default: 45 55 for paper-rig, none otherwise)")
     s.set_defaults(func=_cmd_report)
     cli_bearing.register(sub)
     return p

@@ -48,7 +48,7 @@ def _fmt_row(cells, widths):
     return " ".join(f"{c:>{w}}" for c, w in zip(cells, widths))
 
 
-def run(model: str, out: str, html: str | None = None) -> int:
+def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) -> int:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -150,5 +150,10 @@ def run(model: str, out: str, html: str | None = None) -> int:
         ax.figure.savefig(outdir / "campbell.png", dpi=120, bbox_inches="tight")
 
     (outdir / "report.txt").write_text("\n".join(lines) + "\n")
+    if html:
+        from rotordyn.report_html import write_html
+
+        write_html(model, html, text_lines=lines, operating_speed_hz=operating_speed_hz)
+        print(f"wrote {html}", file=sys.stderr)
     print(f"wrote {outdir}/report.txt and tables/figures", file=sys.stderr)
     return 0
