@@ -149,8 +149,8 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   theta.assign(n_nodes, 1.0);
   biactive.assign(n_nodes, 0);
   for (int n = 0; n < n_nodes; ++n) p[n] = pfull[n] = p_fixed[n];
-  coarse_usable = (cav == Cavitation::reynolds || cav == Cavitation::jfo) && N % 2 == 0 &&
-                  grid.n_axial % 2 == 0 && N / 2 >= 24 && grid.n_axial / 2 >= 4;
+  coarse_usable = (cav == Cavitation::reynolds || cav == Cavitation::jfo) &&
+                  (N + 1) / 2 >= 24 && (grid.n_axial + 1) / 2 >= 4;
 }
 
 void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {

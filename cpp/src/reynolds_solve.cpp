@@ -35,28 +35,41 @@ void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
 // changes.
 void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
   if (coarse_usable) {
-    const int Nc = N / 2, K1c = grid.n_axial / 2 + 1;
+    // Coarse grid: ceil(N/2) × ceil(n_axial/2); coarse node jc sits at fine position
+    // jc·N/Nc (exactly every other node when N is even), likewise along z. The film is
+    // interpolated linearly from the fine nodes (exact sampling when the ratio is 2).
+    const int Nc = (N + 1) / 2, nac = (grid.n_axial + 1) / 2, K1c = nac + 1, na = grid.n_axial;
     try {
       if (!coarse) {
-        coarse = std::make_unique<ReynoldsSolver>(geo, FilmGrid{Nc, grid.n_axial / 2},
-                                                  Cavitation::reynolds);
-        coarse->set_use_axial_symmetry(use_symmetry);
+        coarse = std::make_unique<ReynoldsSolver>(geo, FilmGrid{Nc, nac}, Cavitation::reynolds);
         hc.resize(Nc, K1c);
         hdc.resize(Nc, K1c);
       }
       coarse->set_use_axial_symmetry(use_symmetry);
-      for (int j = 0; j < Nc; ++j)
-        for (int k = 0; k < K1c; ++k) {
-          hc(j, k) = h[2 * j * K1 + 2 * k];
-          hdc(j, k) = hdot[2 * j * K1 + 2 * k];
+      for (int jc = 0; jc < Nc; ++jc) {
+        const long sj = static_cast<long>(jc) * N;
+        const int j0 = static_cast<int>(sj / Nc), j1 = (j0 + 1) % N;
+        const double fj = static_cast<double>(sj % Nc) / Nc;
+        for (int kc = 0; kc < K1c; ++kc) {
+          const long sk = static_cast<long>(kc) * na;
+          const int k0 = static_cast<int>(sk / nac), k1 = std::min(k0 + 1, na);
+          const double fk = static_cast<double>(sk % nac) / nac;
+          auto lerp = [&](const std::vector<double>& f) {
+            const double a0 = f[j0 * K1 + k0] + fk * (f[j0 * K1 + k1] - f[j0 * K1 + k0]);
+            const double a1 = f[j1 * K1 + k0] + fk * (f[j1 * K1 + k1] - f[j1 * K1 + k0]);
+            return a0 + fj * (a1 - a0);
+          };
+          hc(jc, kc) = lerp(h);
+          hdc(jc, kc) = lerp(hdot);
         }
+      }
       const RowMatrixXd& pc = coarse->solve(hc, hdc, omega).p_pa;
       // A fine node is predicted cavitated when every coarse node around it is (p == 0).
       for (int i = 0; i < S.n_unk; ++i) {
         const int n = S.node_of[i];
-        const int j = n / K1, k = n % K1;
-        const int j0 = j / 2, j1 = (j % 2) ? (j0 + 1) % Nc : j0;
-        const int k0 = k / 2, k1 = (k % 2) ? k0 + 1 : k0;
+        const long sj = static_cast<long>(n / K1) * Nc, sk = static_cast<long>(n % K1) * nac;
+        const int j0 = static_cast<int>(sj / N), j1 = (sj % N) ? (j0 + 1) % Nc : j0;
+        const int k0 = static_cast<int>(sk / na), k1 = (sk % na) ? k0 + 1 : k0;
         S.active[i] = (pc(j0, k0) <= 0.0 && pc(j1, k0) <= 0.0 && pc(j0, k1) <= 0.0 &&
                        pc(j1, k1) <= 0.0)
                           ? 1
@@ -335,9 +348,6 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
   RowMatrixXd dp = RowMatrixXd::Zero(s.N, s.K1);
   double* dpd = dp.data();
   if (S->factor == LinearSystem::Factor::ldlt) {
-    if (s.cav == Cavitation::reynolds)
-      for (int i = 0; i < S->n_unk; ++i)
-        if (S->active[i]) r[i] = 0.0;
     Eigen::VectorXd x(S->n_unk);
     if (s.cav == Cavitation::reynolds && s.n_biactive > 0) {
       // Degenerate set: the limit of central differences, (D(+d) − D(−d))/2, of the
@@ -356,6 +366,9 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
           }
       return dp;
     }
+    if (s.cav == Cavitation::reynolds)
+      for (int i = 0; i < S->n_unk; ++i)
+        if (S->active[i]) r[i] = 0.0;
     r = -r;
     S->ldlt.solve(r.data(), x.data());
     // gumbel: p = max(p_full, 0); where p_full vanishes to round-off (e.g. on a symmetry line)
