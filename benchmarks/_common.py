@@ -116,11 +116,32 @@ def median_time(fn, repeat: int = 7, warmup: int = 1, number: int = 1) -> float:
     return measure(fn, repeat, warmup, number).wall
 
 
+@contextlib.contextmanager
+def quiet_fds():
+    """Silence C-level stdout/stderr (ROSS's REFPROP loader prints from a shared library)."""
+    saved = [os.dup(1), os.dup(2)]
+    null = os.open(os.devnull, os.O_WRONLY)
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os.dup2(null, 1)
+        os.dup2(null, 2)
+        yield
+    finally:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os.dup2(saved[0], 1)
+        os.dup2(saved[1], 2)
+        for fd in saved + [null]:
+            os.close(fd)
+
+
 def import_ross():
     """ross-rotordynamics if installed (optional extra ``rotordyn[ross]``), else None.
-    Its import prints REFPROP/CoolProp notices; they are swallowed here."""
+    Its import prints REFPROP/CoolProp notices (also from C); they are swallowed here."""
     try:
-        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+        with quiet_fds(), contextlib.redirect_stdout(io.StringIO()), \
+                contextlib.redirect_stderr(io.StringIO()):
             import warnings
 
             with warnings.catch_warnings():
@@ -131,28 +152,29 @@ def import_ross():
         return None
 
 
-def clear_ross_caches(ross_module) -> int:
-    """Clear every ``functools.lru_cache`` ROSS keeps (Rotor.run_modal, run_campbell, ... are
-    memoised on the rotor and its arguments, so a repeated call is a dictionary look-up).
-    Returns how many caches were cleared."""
+def clear_ross_caches(*rotors) -> int:
+    """Clear every cache ROSS keeps: its ``Rotor.run_modal`` and ``_run_freq_response`` are
+    memoised per rotor instance (methodtools ``lru_cache``), so run_campbell, a repeated
+    run_modal or a repeated response on the same rotor and arguments is a dictionary look-up.
+    Clears those of the given rotors and any module-level functools caches in ``ross``;
+    returns how many caches were cleared."""
     import functools
-    import inspect
 
     n = 0
-    seen = set()
-    mods = [m for name, m in list(sys.modules.items())
-            if name == "ross" or name.startswith("ross.")]
-    for mod in mods:
-        for _, obj in inspect.getmembers(mod):
-            cands = [obj]
-            if inspect.isclass(obj):
-                cands = [v for v in vars(obj).values()]
-            for f in cands:
-                f = getattr(f, "__func__", f)
-                if isinstance(f, functools._lru_cache_wrapper) and id(f) not in seen:
-                    seen.add(id(f))
-                    f.cache_clear()
-                    n += 1
+    for r in rotors:
+        for name in dir(type(r)):
+            attr = type(r).__dict__.get(name)
+            if attr is None or type(attr).__name__ != "_MethodRope":
+                continue
+            getattr(r, name).cache_clear()
+            n += 1
+    for modname, mod in list(sys.modules.items()):
+        if not (modname == "ross" or modname.startswith("ross.")):
+            continue
+        for obj in list(vars(mod).values()):
+            if isinstance(obj, functools._lru_cache_wrapper):
+                obj.cache_clear()
+                n += 1
     return n
 
 
