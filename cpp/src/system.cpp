@@ -108,6 +108,23 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
   last_omega_ = omega;
 }
 
+std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
+  require(r.size() == model_.n(), shape_msg("r", model_.n(), 1, r.size(), 1));
+  std::vector<double> out(model_.films.size());
+  for (std::size_t i = 0; i < model_.films.size(); ++i) {
+    const FilmCoupling& fc = model_.films[i];
+    double hmin = INFINITY;
+    for (Eigen::Index j = 0; j < fc.shape.rows(); ++j) {
+      double h = fc.geometry.clearance_m;
+      for (std::size_t k = 0; k < fc.coords.size(); ++k)
+        h += fc.shape(j, static_cast<Eigen::Index>(k)) * r(fc.coords[k]);
+      hmin = std::min(hmin, h);
+    }
+    out[i] = hmin;
+  }
+  return out;
+}
+
 Eigen::VectorXd SystemSolver::film_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
                                           double omega) {
   solve_films(r, rdot, omega);

@@ -229,12 +229,9 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     out.t(i) = in.t_out(i);
     out.r.row(i) = Y.head(n).transpose();
     out.v.row(i) = Y.tail(n).transpose();
-    try {
-      solver.film_forces(Y.head(n), Y.tail(n), in.omega);
-      for (std::size_t k = 0; k < m.films.size(); ++k)
-        out.h_min(i, static_cast<Eigen::Index>(k)) = solver.last_h_min()[k];
-    } catch (const ContactError&) {
-    }
+    // The film thickness needs no pressure: from the geometry, not a Reynolds solve.
+    const std::vector<double> hm = solver.film_h_min(Y.head(n));
+    for (std::size_t k = 0; k < hm.size(); ++k) out.h_min(i, static_cast<Eigen::Index>(k)) = hm[k];
   }
   long v = 0;
   CVodeGetNumSteps(mem, &v);

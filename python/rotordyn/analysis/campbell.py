@@ -3,6 +3,8 @@ from speed to speed, and critical speeds from the 1× (or n×) crossings (paper 
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn.analysis.assembly import assembled
@@ -16,6 +18,7 @@ from rotordyn.results.campbell import CampbellResult
 WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
 
 
+@limited_blas
 def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
              config_ay_m: float | None = None, *, n_modes: int | None = None,
              method: str = "perturbation") -> CampbellResult:

@@ -3,6 +3,8 @@ paper's successive substitution with the relaxation coefficient P_m (eq. 16)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
@@ -14,6 +16,7 @@ from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.units import hz_to_rad_s
 
 
+@limited_blas
 def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
                 config_ay_m: float | None = None, *, config_ax_m: float | None = None,
                 method: str = "newton", pm: float | str = "auto", tol: float = 1e-10,

@@ -6,6 +6,8 @@ steps scaled to c and c·ω)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
@@ -60,6 +62,7 @@ def _linear_from(asm: Assembled, e: EquilibriumResult, speed_hz: float, method: 
                        equilibrium=e, method=method)
 
 
+@limited_blas
 def linearize(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, *, method: str = "perturbation",
               rel_step: float = FD_REL_STEP, **equilibrium_kw) -> LinearModel:
@@ -103,6 +106,7 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
                            message=lm.equilibrium.message, modes=phi)
 
 
+@limited_blas
 def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, *, n_modes: int | None = None,
               method: str = "perturbation", **equilibrium_kw) -> StabilityResult:

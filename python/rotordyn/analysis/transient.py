@@ -4,6 +4,8 @@ waterfall of Fig. 13 is a set of these at increasing speeds)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
@@ -16,6 +18,7 @@ from rotordyn.results.transient import TransientResult
 from rotordyn.units import hz_to_rad_s
 
 
+@limited_blas
 def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None, *,
               unbalances=(), disturbance_m=(0.0, 0.0), r0=None, v0=None,
