@@ -14,6 +14,7 @@ import numpy as np
 
 import rotordyn
 from rotordyn import cli_bearing
+from rotordyn.results.equilibrium import CONVERGED
 
 
 class _ArgumentParser(argparse.ArgumentParser):
@@ -105,7 +106,7 @@ def _cmd_equilibrium(args) -> int:
         }))
     else:
         print(e.to_frame().to_string(index=False))
-    return 0 if e.status in ("ok", "contact") else 1
+    return 0 if e.converged else 1
 
 
 # -- linear analyses (issue 5) -----------------------------------------------------------
@@ -135,6 +136,9 @@ def _cmd_stability(args) -> int:
                      | {"whirl": list(st.whirl), "kind": list(st.kind)}}))
     else:
         print(st.to_frame().to_string(index=False))
+    if st.status not in CONVERGED:  # a failed equilibrium: no eigenvalues, exit 1
+        print(f"rotordyn: failed: {st.status}: {st.message}", file=sys.stderr)
+        return 1
     return 0
 
 

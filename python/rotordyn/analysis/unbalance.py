@@ -11,6 +11,7 @@ from rotordyn import _core
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import continued_linear_models
 from rotordyn.errors import InputError
+from rotordyn.results.equilibrium import CONVERGED
 from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.unbalance import UnbalanceResult
@@ -29,28 +30,16 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     ones). ``operating_speed_hz``: (min, max) operating speeds for the API 684 separation
     margins of :meth:`UnbalanceResult.peaks`.
     """
-    ub = []
-    try:
-        for i, u in enumerate(unbalances):
-            st, me, ph = u
-            v.integer(f"unbalances[{i}].station", int(st) if isinstance(st, (int, np.integer))
-                      else st, lo=0, hi=system.rotor.n_stations - 1)
-            ub.append((int(st), v.finite(f"unbalances[{i}].mass_kg_m", me),
-                       v.finite(f"unbalances[{i}].phase_deg", ph)))
-    except (TypeError, ValueError) as exc:
-        if isinstance(exc, InputError):
-            raise
-        raise InputError("unbalances: expected a list of (station, mass_kg_m, phase_deg)") from None
+    ub = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
     if not ub:
         raise InputError("unbalances: expected at least one (station, mass_kg_m, phase_deg)")
-    sp = np.asarray(speeds_hz, dtype=float)
-    if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)) or np.any(sp <= 0):
-        raise InputError("speeds_hz: expected a non-empty 1-D array of positive speeds")
-    if sp.size > 1 and np.any(np.diff(sp) <= 0):
-        raise InputError("speeds_hz: expected strictly increasing speeds")
+    sp = v.speeds("speeds_hz", speeds_hz, positive_only=True)
+    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    if config_ay_m is not None:
+        v.finite("config_ay_m", config_ay_m)
     if operating_speed_hz is not None:
-        lo, hi = (float(x) for x in operating_speed_hz)
-        if not 0 < lo <= hi:
+        lo, hi = v.bounds("operating_speed_hz", operating_speed_hz)
+        if not 0 < lo:
             raise InputError("operating_speed_hz: expected (min, max) with 0 < min <= max")
         operating_speed_hz = (lo, hi)
     asm = assembled(system)
@@ -64,9 +53,9 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     Y = np.full((sp.size, len(outs)), np.nan + 0j)
     status = np.empty(sp.size, dtype=object)
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
-                                              method, continue_on=("ok", "contact")):
+                                              method, continue_on=CONVERGED):
         status[i] = stt
-        if stt not in ("ok", "contact"):
+        if stt not in CONVERGED:
             continue
         w = hz_to_rad_s(float(sp[i]))
         # (K − Ω² M + iΩ D) q = Ω² F1: sparse LU in the core (FE rotors are banded).
