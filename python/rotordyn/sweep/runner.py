@@ -136,7 +136,8 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
         old = json.loads(mpath.read_text())
         if old.get("spec_hash") != spec.hash() or old.get("model_hash") != model_hash:
             raise InputError(f"out: {str(out)!r} holds a different sweep (spec or model "
-                             "changed); use another directory or resume=False")
+                             "changed); use another directory, or --no-resume to overwrite it "
+                             "(resume=False in Python)")
         done = {c for c in old.get("chunks_done", [])
                 if (out / f"part-{c:05d}.parquet").exists()}
     elif not resume:
