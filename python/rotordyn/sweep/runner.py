@@ -290,7 +290,8 @@ def _header(spec: SweepSpec, model_toml: str) -> dict:
             "model_hash": hashlib.sha256(model_toml.encode()).hexdigest()[:16],
             "rotordyn": rotordyn.__version__, "build_info": rotordyn.build_info(),
             "axes": spec.ordered_axes, "options": spec.options, "n_points": spec.n_points,
-            "n_chunks": len(bounds), "chunk_size": spec.chunk_size, "spec": spec.source,
+            "n_chunks": len(bounds), "chunk_size": spec.chunk_size,
+            "group": group_size(len(bounds), spec.max_files), "spec": spec.source,
             "model": model_toml,
             "units": {k: {"units": u, "long_name": n} for k, (u, n) in UNITS.items()}}
 
@@ -302,7 +303,7 @@ def group_size(n_chunks: int, max_files: int = 128) -> int:
 
 def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | None = None,
               threads: int | None = None, resume: bool = True, progress=None,
-              worker_timeout: float = 30.0, max_files: int = 128) -> SweepResult:
+              worker_timeout: float = 30.0) -> SweepResult:
     """Run (or resume) the sweep of ``spec_path`` into directory ``out``.
 
     threads : compute on this many threads in this process (no dask); else ``workers`` dask
@@ -331,9 +332,10 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
         return run_boundary(spec, header, model_toml, out, scheduler=scheduler,
                             workers=workers, threads=threads, resume=resume,
                             progress=progress, worker_timeout=worker_timeout)
-    store = Store(out, header, resume=resume, group=group_size(n_chunks, max_files))
+    store = Store(out, header, resume=resume, group=header["group"])
     try:
         bounds = spec.chunk_bounds()
+        store.compact_complete(n_chunks)
         done = store.done_chunks()
         prev = store.chunk_entries()
         counts0 = {k: sum(c[k] for c in prev.values()) for k in ("ok", "failed", "unstable")}

@@ -171,6 +171,7 @@ class SweepSpec:
     chunk_size: int = 20
     options: dict = field(default_factory=dict)
     source: str = ""
+    max_files: int = 128  # chunks are compacted so the dataset has at most this many files
 
     # -- loading -----------------------------------------------------------------------
     @classmethod
@@ -185,7 +186,8 @@ class SweepSpec:
             raise InputError(f"spec: {p} is not UTF-8 text") from None
         except tomllib.TOMLDecodeError as exc:
             raise InputError(f"spec: {p} is not valid TOML: {exc}") from None
-        allowed = {"schema", "name", "model", "analysis", "chunk_size", "grid", "options"}
+        allowed = {"schema", "name", "model", "analysis", "chunk_size", "max_files", "grid",
+                   "options"}
         for k in doc:
             if k not in allowed:
                 raise InputError(f"spec.{k}: unknown key (allowed: {', '.join(sorted(allowed))})")
@@ -214,11 +216,12 @@ class SweepSpec:
         if model.endswith(".toml") and not Path(model).is_absolute():
             model = str((p.parent / model).resolve())
         chunk = v.integer("chunk_size", doc.get("chunk_size", 20), lo=1, hi=100000)
+        max_files = v.integer("max_files", doc.get("max_files", 128), lo=1, hi=100000)
         name = doc.get("name", p.stem)
         if not isinstance(name, str) or not name or "/" in name:
             raise InputError(f"name: expected a non-empty string without '/', got {name!r}")
         spec = cls(name=name, model=model, analysis=analysis, axes=axes, chunk_size=chunk,
-                   options=checked, source=text)
+                   options=checked, source=text, max_files=max_files)
         spec._check_shape()
         if check_model:
             spec.check_against(spec.load_model())
@@ -367,5 +370,6 @@ class SweepSpec:
     def hash(self) -> str:
         payload = json.dumps({"model": self.model, "analysis": self.analysis,
                               "axes": self.axes, "options": self.options,
-                              "chunk_size": self.chunk_size}, sort_keys=True)
+                              "chunk_size": self.chunk_size, "max_files": self.max_files},
+                             sort_keys=True)
         return hashlib.sha256(payload.encode()).hexdigest()[:16]

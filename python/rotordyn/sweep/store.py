@@ -295,6 +295,17 @@ class Store:
             if g1 > g0 and all(n in self.files for n in names):
                 self._compact(g0, g1, names)
 
+    def compact_complete(self, n_chunks: int) -> None:
+        """Compact every complete group still held as single-chunk parts (a driver stopped
+        between the last part of a group and its compaction)."""
+        if self.group <= 1:
+            return
+        for g0 in range(0, n_chunks, self.group):
+            g1 = min(g0 + self.group, n_chunks) - 1
+            names = [part_name(c, c) for c in range(g0, g1 + 1)]
+            if g1 > g0 and all(n in self.files for n in names):
+                self._compact(g0, g1, names)
+
     def _compact(self, lo: int, hi: int, names: list[str]) -> None:
         tables = [pq.read_table(self.out / n) for n in names]
         counts = [self.files[n]["counts"][0] for n in names]
