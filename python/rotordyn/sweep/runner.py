@@ -186,8 +186,8 @@ class Progress:
 
 
 # -- executors ----------------------------------------------------------------------------
-def _task(job: Job, chunk_id: int, lo: int, hi: int):
-    t = run_chunk(job, chunk_id, lo, hi)
+def _task(job: Job, chunk_id: int, lo: int, hi: int, pids=None):
+    t = run_chunk(job, chunk_id, lo, hi, pids)
     return t, counts_of(t)
 
 

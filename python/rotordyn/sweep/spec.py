@@ -253,6 +253,9 @@ class SweepSpec:
                                      "values (the coarse grid)")
             if x == y:
                 raise InputError("options.y: must differ from options.x")
+            from rotordyn.sweep.boundary import fine_axes
+
+            fine_axes(self)
             res = self.options["resolution"]
             for k, ax in (("x", x), ("y", y)):
                 n0 = len(self.axes[ax])

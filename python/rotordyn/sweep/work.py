@@ -84,6 +84,7 @@ class Job:
         self.axes = axes  # ordered: first outermost
         self.shape = tuple(len(x) for x in axes.values())
         self.key = ""     # spec hash (task names)
+        self.level = 0    # refinement level (boundary)
         self.meta = {}    # provenance and units, stored in every part's schema metadata
 
     def point(self, pid: int):
@@ -219,13 +220,16 @@ def _same_line(prev, idx) -> bool:
     return prev is not None and prev[:-1] == idx[:-1]
 
 
-def run_chunk(job: Job, chunk_id: int, lo: int, hi: int) -> pa.Table:
-    """Rows of points [lo, hi) as a table with :func:`schema`."""
+def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
+    """Rows of points [lo, hi) (or of the listed point ids ``pids``, for the adaptive
+    boundary) as a table with :func:`schema`."""
     rows: list[dict] = []
     base = _base_system(job.model_toml)
     variants = _Variants(base)
-    fn = _ANALYSIS[job.analysis]
-    fn(job, variants, chunk_id, lo, hi, rows)
+    if pids is not None:
+        _boundary_rows(job, variants, chunk_id, pids, rows)
+    else:
+        _ANALYSIS[job.analysis](job, variants, chunk_id, lo, hi, rows)
     return to_table(job, rows)
 
 
@@ -250,11 +254,11 @@ def _fail(row, status, message):
     return {**row, "status": status, "message": message}
 
 
-def _points(job, variants, chunk_id, lo, hi):
-    """Yield (row, p, asm, opts, same_line) per point; a model-variant error is yielded as
-    asm=None with the message in row."""
+def _points(job, variants, chunk_id, lo, hi, pids=None):
+    """Yield (row, p, asm, opts, same_line, error) per point; a model-variant error is
+    yielded as asm=None with its message."""
     prev = None
-    for pid in range(lo, hi):
+    for pid in (range(lo, hi) if pids is None else pids):
         idx, p = job.point(pid)
         try:
             asm = variants.get(p)
@@ -401,8 +405,29 @@ def _unbalance_rows(job, variants, chunk_id, lo, hi, rows):
         unbalance_line(job, variants, chunk_id, s, e, rows)
 
 
-def _boundary_rows(job, variants, chunk_id, lo, hi, rows):
-    raise NotImplementedError("boundary points run through run_points")
+def _boundary_rows(job, variants, chunk_id, pids, rows):
+    """One row per listed point: max Re λ (rotor modes only with exclude_sleeve_modes), its
+    frequency, point_stable; ``level`` is set by the driver."""
+    from rotordyn.sweep.lines import _max_real
+
+    excl = bool(job.options.get("exclude_sleeve_modes", False))
+    r_prev = None
+    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, 0, 0, pids):
+        if err:
+            rows.append(_fail(row, "error", err))
+            continue
+        try:
+            y, fr, st, r = _max_real(job, asm, p, r_prev if line else None, opts, excl)
+        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
+            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
+            r_prev = None
+            continue
+        r_prev = r
+        if r is None:
+            rows.append(_fail(row, st if st in STATUS else "error", "no equilibrium"))
+            continue
+        rows.append({**row, "max_real_1_per_s": y, "freq_hz": fr, "point_stable": y < 0,
+                     "level": job.level, "status": st, "message": ""})
 
 
 _ANALYSIS = {"equilibrium": _eq_rows, "stability": _stab_rows, "campbell": _stab_rows,
