@@ -27,7 +27,7 @@ def _mat(name, M):
 
 @dataclass(frozen=True)
 class Controller:
-    """ẋ = A x + B y, u = C x + D y (continuous, ``sample_time_s`` = 0) or
+    """ẋ = A x + B y, u = C x + D y (continuous, ``sample_time_s`` None) or
     x⁺ = A x + B y_k, u_k = C x_k + D y_k held for one sample (discrete).
 
     y: the measurements (see :func:`rotordyn.control.measurement.measurement_matrix`) minus
@@ -42,7 +42,7 @@ class Controller:
     C: np.ndarray
     D: np.ndarray
     measurements: tuple
-    sample_time_s: float = 0.0
+    sample_time_s: float | None = None
     noise_std: object = 0.0
     noise_dt_s: float = 1e-4
     seed: int = 0
@@ -68,10 +68,13 @@ class Controller:
                              f"{B.shape} and {C.shape}")
         for k, M in zip("ABCD", (A, B, C, D)):
             object.__setattr__(self, k, M)
-        st = float(self.sample_time_s)
-        if not np.isfinite(st) or st < 0:
-            raise InputError(f"controller.sample_time_s: expected > 0 s for a discrete "
-                             f"controller (0: continuous), got {self.sample_time_s!r}")
+        st = self.sample_time_s
+        if st is not None:
+            if isinstance(st, bool) or not isinstance(st, (int, float, np.floating, np.integer)) \
+                    or not np.isfinite(st) or st <= 0:
+                raise InputError(f"controller.sample_time_s: expected > 0 s for a discrete "
+                                 f"controller (None: continuous), got {st!r}")
+            object.__setattr__(self, "sample_time_s", float(st))
         v.positive("controller.noise_dt_s", self.noise_dt_s)
         v.integer("controller.seed", self.seed, lo=0)
 
@@ -85,7 +88,7 @@ class Controller:
 
     @property
     def discrete(self) -> bool:
-        return self.sample_time_s > 0
+        return self.sample_time_s is not None
 
     @classmethod
     def static(cls, gains, measurements, **kw) -> "Controller":
@@ -110,8 +113,8 @@ class Controller:
         if dt is True:
             raise InputError("controller.sample_time_s: the discrete system has an "
                              "unspecified sample time (dt=True); give dt > 0")
-        dt = 0.0 if dt in (None, 0) else float(dt)
-        if dt and "sample_time_s" in kw and kw.pop("sample_time_s") != dt:
+        dt = None if dt in (None, 0) else float(dt)
+        if "sample_time_s" in kw and kw.pop("sample_time_s") != dt:
             raise InputError("controller.sample_time_s: differs from the system's dt")
         return cls(np.asarray(sys.A), np.asarray(sys.B), np.asarray(sys.C), np.asarray(sys.D),
                    measurements, sample_time_s=dt, **kw)
@@ -145,7 +148,7 @@ class Controller:
         k.A, k.B, k.C, k.D = self.A, self.B, self.C, self.D
         k.measurement = Cm
         k.offset = offset
-        k.sample_time = float(self.sample_time_s)
+        k.sample_time = float(self.sample_time_s or 0.0)
         ns = np.broadcast_to(np.asarray(self.noise_std, dtype=float), (ny,)).copy() \
             if np.ndim(self.noise_std) == 0 else np.asarray(self.noise_std, dtype=float)
         if ns.shape != (ny,) or not np.all(np.isfinite(ns)) or np.any(ns < 0):
