@@ -54,7 +54,7 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
     ``extra_shapes``: callables φ (rad, pad nodes) → ∂h/∂r_k for coordinates beyond the
     journal's x, y (pad tilt, pivot displacement), in the order of ``coords[2:]``.
     ``base_extra(phi, z)``: optional (N_pad, n_axial+1) addition to the base film (dam pocket).
-    ``n_circ``: nodes per 360° (the pad gets round(n_circ·β/2π) intervals, at least 6).
+    ``n_circ``: nodes per 360° (the pad gets round(n_circ·β/2π) intervals, at least 10).
     """
     Cb = clearance_m
     Cp = Cb / (1.0 - preload)
@@ -67,7 +67,7 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
         on = np.ones(N, dtype=bool)
         grooves = []
     else:
-        m = max(6, int(round(n_circ * arc_rad / TWO_PI)))
+        m = max(10, int(round(n_circ * arc_rad / TWO_PI)))  # core grids need N >= 12
         N = m + 2
         s = arc_rad * N / (TWO_PI * m)
         j = np.arange(N)
