@@ -161,12 +161,20 @@ class FixedGeometryBearing:
                vy_m_s: float = 0.0) -> np.ndarray:
         """Film force (Fx, Fy) on a rigid journal at (x, y) moving at (vx, vy), N."""
         r = np.array([v.finite("x_m", x_m), v.finite("y_m", y_m)])
-        if np.hypot(*r) >= self.clearance_m:
-            raise InputError(f"x_m, y_m: expected a journal inside the clearance circle "
-                             f"(|r| < {self.clearance_m:g} m)")
+        m = self.resolved()[0]
+        if np.hypot(*r) >= self.clearance_m / (1.0 - m):
+            raise InputError(f"x_m, y_m: expected a journal inside the machined clearance "
+                             f"circle (|r| < {self.clearance_m / (1.0 - m):g} m)")
         rd = np.array([v.finite("vx_m_s", vx_m_s), v.finite("vy_m_s", vy_m_s)])
         w = 2 * math.pi * v.finite("speed_hz", speed_hz)
         return np.asarray(self._solver().film_forces(r, rd, w))
+
+    def coefficients(self, *, x_m: float, y_m: float, speed_hz: float):
+        """K (N/m), C (N·s/m), 2×2, at the journal position (x, y) (perturbation method)."""
+        self.forces(x_m=x_m, y_m=y_m, speed_hz=speed_hz)  # validates the position
+        lin = self._solver().linearize(np.array([x_m, y_m], dtype=float), np.zeros(2),
+                                       2 * math.pi * float(speed_hz))
+        return np.asarray(lin.KH), np.asarray(lin.DH)
 
     def coefficient_table(self, speeds_hz, load_n, *, n_threads: int = 1):
         """Equilibrium under ``load_n`` (N, on the journal) and K, C at each speed (Hz),
