@@ -7,6 +7,7 @@ import numpy as np
 
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import _stability_from, continued_linear_models
+from rotordyn.analysis.tracking import track_modes
 from rotordyn.errors import InputError, RotordynError
 from rotordyn import _validate as v
 from rotordyn.model.system import System
@@ -35,6 +36,7 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     whirl = np.zeros((sp.size, k), dtype=np.int64)
     kind = np.full((sp.size, k), "rotor", dtype=object)
     status = np.empty(sp.size, dtype=object)
+    shapes = np.full((sp.size, asm.n, k), np.nan + 0j)
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
                                               method):
         status[i] = stt
@@ -49,5 +51,8 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
         lam[i, :m] = st.eigenvalues[:m]
         whirl[i, :m] = [WHIRL_CODE[w] for w in st.whirl[:m]]
         kind[i, :m] = st.kind[:m]
+        shapes[i, :, :m] = st.modes[:, :m]
+    # Modes tracked by eigenvector continuity (mass-weighted MAC between consecutive speeds).
+    mode_id = track_modes(lam, shapes, weight=np.asarray(asm.model.M))
     return CampbellResult(sp, lam, whirl, model=system.reduction.method, kind=kind,
-                          point_status=status.astype(str))
+                          point_status=status.astype(str), mode_id=mode_id)

@@ -101,7 +101,7 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
                for bc in asm.bearings if bc.sleeve}
     return StabilityResult(lm, lam, np.array([WHIRL_NAMES[int(x)] for x in r.whirl], dtype=object),
                            kind, rotor.reshape(n_nodes, 4, -1), sleeves, status=lm.status,
-                           message=lm.equilibrium.message)
+                           message=lm.equilibrium.message, modes=phi)
 
 
 def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,

@@ -62,7 +62,8 @@ class StabilityResult:
     eigenvalues: (n_modes,) complex 1/s, ascending damped frequency; whirl: (n_modes,) str;
     kind: (n_modes,) "rotor" or "sleeve" (where the mode's kinetic energy lies);
     rotor_shapes: (n_nodes, 4, n_modes) complex, expanded to every rotor FE node;
-    sleeve_shapes: {bearing index: (n_sleeve_dof, n_modes)} expanded to the full sleeve FEM.
+    sleeve_shapes: {bearing index: (n_sleeve_dof, n_modes)} expanded to the full sleeve FEM;
+    modes: (n, n_modes) complex shapes on the system coordinates (for mode tracking), or None.
     """
 
     linear: LinearModel
@@ -73,6 +74,7 @@ class StabilityResult:
     sleeve_shapes: dict = field(default_factory=dict)
     status: str = "ok"
     message: str = ""
+    modes: np.ndarray | None = None
 
     @property
     def speed_hz(self) -> float:
