@@ -40,6 +40,7 @@ def coordinate_labels(asm: Assembled) -> tuple:
         names += [f"cb_mode{j + 1}" for j in range(asm.n_rotor - len(names))]
     for bc in asm.bearings:
         names += [f"{bc.name}.sleeve{j + 1}" for j in range(len(bc.sleeve))]
+    names += list(getattr(asm, "extra_labels", []))
     return tuple(names)
 
 
