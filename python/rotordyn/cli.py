@@ -13,6 +13,7 @@ import numpy as np
 
 import rotordyn
 from rotordyn import cli_bearing
+from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.cli_common import ArgumentParser as _ArgumentParser
 from rotordyn.cli_common import json_text as _json
 
@@ -88,7 +89,7 @@ def _cmd_equilibrium(args) -> int:
         }))
     else:
         print(e.to_frame().to_string(index=False))
-    return 0 if e.status in ("ok", "contact") else 1
+    return 0 if e.converged else 1
 
 
 # -- linear analyses (issue 5) -----------------------------------------------------------
@@ -118,6 +119,9 @@ def _cmd_stability(args) -> int:
                      | {"whirl": list(st.whirl), "kind": list(st.kind)}}))
     else:
         print(st.to_frame().to_string(index=False))
+    if st.status not in CONVERGED:  # a failed equilibrium: no eigenvalues, exit 1
+        print(f"rotordyn: failed: {st.status}: {st.message}", file=sys.stderr)
+        return 1
     return 0
 
 
@@ -203,18 +207,23 @@ def _add_operating_point(s, speed=True):
 
 # -- sweeps and plots ----------------------------------------------------------------------
 def _cmd_sweep(args) -> int:
-    from rotordyn.sweep import run_sweep
+    from rotordyn.sweep import SweepInterrupted, run_sweep
+    from rotordyn.sweep.runner import manifest_json
 
-    def progress(done, total):
-        print(f"chunks {done}/{total}", file=sys.stderr)
-
-    res = run_sweep(args.spec, args.out, scheduler=args.scheduler, workers=args.workers,
-                    resume=args.resume, progress=progress)
-    m = res.manifest
-    failed = m.get("chunks_failed", {})
-    print(f"{m['sweep_id']}: {len(m['chunks_done'])}/{m['n_chunks']} chunks, "
-          f"{m['n_points']} points -> {args.out}" + (f"; {len(failed)} chunks failed" if failed
-                                                     else ""))
+    try:
+        res = run_sweep(args.spec, args.out, scheduler=args.scheduler, workers=args.workers,
+                        threads=args.threads, resume=args.resume,
+                        progress=False if args.json else None)
+    except SweepInterrupted as exc:
+        print(f"rotordyn: {exc}", file=sys.stderr)
+        return 130
+    if args.json:
+        print(manifest_json(res))
+    else:
+        c = res.counts
+        print(f"{res.manifest['sweep_id']}: {res.done}/{res.n_chunks} chunks, "
+              f"{res.manifest['n_points']} points (ok {c['ok']}, failed {c['failed']}, "
+              f"unstable {c['unstable']}) -> {args.out}")
     return 0 if res.complete else 1
 
 
@@ -326,8 +335,12 @@ def build_parser() -> argparse.ArgumentParser:
                    help="tcp://host:port of an existing dask cluster (default: a LocalCluster)")
     s.add_argument("--workers", type=int, default=None, metavar="N",
                    help="LocalCluster worker processes (default: dask's choice)")
+    s.add_argument("--threads", type=int, default=None, metavar="N",
+                   help="compute on N threads in this process, no dask (default: off)")
     s.add_argument("--resume", action=argparse.BooleanOptionalAction, default=True,
-                   help="continue an interrupted sweep in --out; --no-resume recomputes")
+                   help="continue an interrupted sweep in --out; --no-resume restarts the "
+                        "same sweep from scratch")
+    s.add_argument("--json", action="store_true", help="one JSON summary line, no progress")
     s.set_defaults(func=_cmd_sweep)
 
     s = sub.add_parser("plot", help="figure from a sweep directory")
@@ -380,6 +393,9 @@ def main(argv: list[str] | None = None) -> int:
         if getattr(args, "model", None) is not None and hasattr(args, "config_ay_m"):
             _check_offset(rotordyn.models.load(args.model), args)
         return int(args.func(args) or 0)
+    except KeyboardInterrupt:
+        print("rotordyn: interrupted", file=sys.stderr)
+        return 130
     except rotordyn.InputError as exc:
         print(f"rotordyn: error: {exc}", file=sys.stderr)
         return 2

@@ -48,8 +48,14 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="cavitation model (gumbel: half-Sommerfeld; reynolds: Swift-Stieber)")
     s.add_argument("--groove", action="append", default=[], metavar="C[,W[,P]]",
                    help="axial groove: centre deg, width deg, pressure Pa (repeatable)")
-    s.add_argument("--speed-hz", type=float, required=True, metavar="HZ",
-                   help="journal spin speed, Hz")
+    s.add_argument("--speed-hz", type=float, default=None, metavar="HZ",
+                   help="journal spin speed, Hz (or --speeds-hz for a coefficient table)")
+    s.add_argument("--speeds-hz", default=None, metavar="START:STOP:STEP",
+                   help="coefficient table over speeds (STOP included), with --load-n")
+    s.add_argument("--csv", action="store_true",
+                   help="with --speeds-hz: print the table as CSV (TableBearing.from_csv reads it)")
+    s.add_argument("--threads", type=int, default=1, metavar="N",
+                   help="threads over speeds (0: all cores)")
     s.add_argument("--x-m", type=float, default=None, metavar="M",
                    help="journal centre x (horizontal) from the bearing centre, m")
     s.add_argument("--y-m", type=float, default=None, metavar="M",
@@ -82,6 +88,10 @@ def run(args: argparse.Namespace) -> int:
     )
     rec: dict = {"bearing": {k: v for k, v in b.__getstate__().items() if k != "grooves"}}
     rec["bearing"]["grooves"] = [[g.center_deg, g.width_deg, g.pressure_pa] for g in grooves]
+    if args.speeds_hz is not None:
+        return _table(b, args)
+    if args.speed_hz is None:
+        raise InputError("--speed-hz: required (or --speeds-hz START:STOP:STEP for a table)")
     rec["speed_hz"] = args.speed_hz
     if args.load_n is not None:
         if args.x_m is not None or args.y_m is not None:
@@ -121,3 +131,27 @@ def run(args: argparse.Namespace) -> int:
         print("K [N/m] =", np.array2string(K, precision=5))
         print("C [N s/m] =", np.array2string(C, precision=5))
     return 0
+
+
+def _speeds(text: str) -> np.ndarray:
+    try:
+        a, b, st = (float(t) for t in text.split(":"))
+    except ValueError:
+        raise InputError(f"--speeds-hz: expected START:STOP:STEP in Hz, got {text!r}") from None
+    if not (st > 0 and b >= a and np.isfinite([a, b, st]).all()):
+        raise InputError(f"--speeds-hz: expected STEP > 0 and STOP >= START, got {text!r}")
+    n = int(np.floor((b - a) / st + 1e-9)) + 1
+    return a + st * np.arange(n)
+
+
+def _table(b: JournalBearing, args: argparse.Namespace) -> int:
+    if args.load_n is None:
+        raise InputError("--load-n: a coefficient table (--speeds-hz) needs the static load")
+    t = b.coefficient_table(_speeds(args.speeds_hz), tuple(args.load_n), n_threads=args.threads)
+    if args.csv:
+        print(t.to_csv(), end="")
+    elif args.json:
+        print(t.to_frame().to_json(orient="records", indent=2))
+    else:
+        print(t.to_frame().to_string(index=False))
+    return 0 if all(s == "ok" for s in t.status) else 1

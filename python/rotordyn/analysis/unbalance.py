@@ -3,11 +3,15 @@ centrifugal forces of imbalance), with speed-dependent bearing coefficients."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
+from rotordyn import _core
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import continued_linear_models
 from rotordyn.errors import InputError
+from rotordyn.results.equilibrium import CONVERGED
 from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.unbalance import UnbalanceResult
@@ -42,6 +46,7 @@ def _merge(a: UnbalanceResult, b: UnbalanceResult) -> UnbalanceResult:
                            a.operating_speed_hz)
 
 
+@limited_blas
 def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
                        chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None,
                        operating_speed_hz=None, method: str = "perturbation",
@@ -75,28 +80,16 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
                 break
             u = _merge(u, unbalance_response(system, unbalances, new, **kw))
         return u
-    ub = []
-    try:
-        for i, u in enumerate(unbalances):
-            st, me, ph = u
-            v.integer(f"unbalances[{i}].station", int(st) if isinstance(st, (int, np.integer))
-                      else st, lo=0, hi=system.rotor.n_stations - 1)
-            ub.append((int(st), v.finite(f"unbalances[{i}].mass_kg_m", me),
-                       v.finite(f"unbalances[{i}].phase_deg", ph)))
-    except (TypeError, ValueError) as exc:
-        if isinstance(exc, InputError):
-            raise
-        raise InputError("unbalances: expected a list of (station, mass_kg_m, phase_deg)") from None
+    ub = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
     if not ub:
         raise InputError("unbalances: expected at least one (station, mass_kg_m, phase_deg)")
-    sp = np.asarray(speeds_hz, dtype=float)
-    if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)) or np.any(sp <= 0):
-        raise InputError("speeds_hz: expected a non-empty 1-D array of positive speeds")
-    if sp.size > 1 and np.any(np.diff(sp) <= 0):
-        raise InputError("speeds_hz: expected strictly increasing speeds")
+    sp = v.speeds("speeds_hz", speeds_hz, positive_only=True)
+    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    if config_ay_m is not None:
+        v.finite("config_ay_m", config_ay_m)
     if operating_speed_hz is not None:
-        lo, hi = (float(x) for x in operating_speed_hz)
-        if not 0 < lo <= hi:
+        lo, hi = v.bounds("operating_speed_hz", operating_speed_hz)
+        if not 0 < lo:
             raise InputError("operating_speed_hz: expected (min, max) with 0 < min <= max")
         operating_speed_hz = (lo, hi)
     asm = assembled(system)
@@ -110,13 +103,13 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     Y = np.full((sp.size, len(outs)), np.nan + 0j)
     status = np.empty(sp.size, dtype=object)
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
-                                              method, continue_on=("ok", "contact")):
+                                              method, continue_on=CONVERGED):
         status[i] = stt
-        if stt not in ("ok", "contact"):
+        if stt not in CONVERGED:
             continue
         w = hz_to_rad_s(float(sp[i]))
-        Z = lm.K - w**2 * lm.M + 1j * w * lm.D
-        q = np.linalg.solve(Z, w**2 * F1)
+        # (K − Ω² M + iΩ D) q = Ω² F1: sparse LU in the core (FE rotors are banded).
+        q = np.asarray(_core.harmonic_response(lm.M, lm.D, lm.K, w, (w**2 * F1)[:, None]))[:, 0]
         for k, Co in enumerate(Cout):
             X[i, k], Y[i, k] = Co @ q
     return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub), operating_speed_hz)

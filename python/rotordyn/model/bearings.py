@@ -122,4 +122,13 @@ class ActiveJournalBearing:
         return _film_model(self)
 
 
-BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBearing}
+def _bearing_types() -> dict:
+    from rotordyn.bearings import (FixedGeometryBearing, SqueezeFilmDamper, TableBearing,
+                                   TiltingPadBearing)
+
+    return {"journal": FluidFilmBearing, "active_journal": ActiveJournalBearing,
+            "fixed_geometry": FixedGeometryBearing, "tilting_pad": TiltingPadBearing,
+            "squeeze_film_damper": SqueezeFilmDamper, "table": TableBearing}
+
+
+BEARING_TYPES = _bearing_types()

@@ -14,7 +14,7 @@ import scipy.sparse as sp
 from rotordyn import _core
 from rotordyn.errors import InputError
 from rotordyn import _validate as v
-from rotordyn.model.bearings import ActiveJournalBearing, FluidFilmBearing
+from rotordyn.model.bearings import BEARING_TYPES, ActiveJournalBearing, FluidFilmBearing
 from rotordyn.model.rotor import STEEL, Material, Rotor, Support
 
 REDUCTION_METHODS = ("none", "guyan", "irs", "craig-bampton")
@@ -59,7 +59,7 @@ class System:
     materials: tuple[Material, ...] = (STEEL,)
     supports: tuple[Support, ...] = ()
     reduction: Reduction = field(default_factory=Reduction)
-    bearings: tuple[FluidFilmBearing | ActiveJournalBearing, ...] = ()
+    bearings: tuple = ()  # FluidFilmBearing, ActiveJournalBearing or rotordyn.bearings elements
     gravity_m_s2: float = 9.81
     name: str = ""
     description: str = ""
@@ -90,8 +90,9 @@ class System:
         seen = set()
         for i, b in enumerate(self.bearings):
             where = f"bearing[{i}]"
-            if not isinstance(b, (FluidFilmBearing, ActiveJournalBearing)):
-                raise InputError(f"{where}: expected a FluidFilmBearing or ActiveJournalBearing, "
+            if not isinstance(b, tuple(BEARING_TYPES.values())):
+                raise InputError(f"{where}: expected one of "
+                                 f"{', '.join(c.__name__ for c in BEARING_TYPES.values())}, "
                                  f"got {type(b).__name__}")
             b.check(where, n)
             if b.station in seen:

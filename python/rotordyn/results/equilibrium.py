@@ -8,6 +8,13 @@ import numpy as np
 import pandas as pd
 
 
+STATUSES = ("ok", "no_equilibrium", "contact", "not_converged", "error")
+# Converged equilibria ("contact": converged with a film thinner than contact_fraction c);
+# only these are linearised, classified or integrated from. The others are failures.
+CONVERGED = ("ok", "contact")
+FAILED = ("no_equilibrium", "not_converged", "error")
+
+
 @dataclass(frozen=True)
 class EquilibriumResult:
     """Equilibrium at one operating point.
@@ -46,6 +53,11 @@ class EquilibriumResult:
         return (f"<EquilibriumResult {self.status}: {self.speed_hz:g} Hz, p_c = "
                 f"{self.chamber_pressure_pa / 1e6:g} MPa; {pos or 'no bearings'}; "
                 f"{self.iterations} iterations, residual {self.residual:.2g}>")
+
+    @property
+    def converged(self) -> bool:
+        """True for a converged equilibrium (status ``"ok"`` or ``"contact"``)."""
+        return self.status in CONVERGED
 
     @property
     def x_over_c(self) -> np.ndarray:
@@ -106,9 +118,7 @@ class EquilibriumResult:
             "iterations": np.full(nb, self.iterations, dtype=np.int64),
             "reynolds_solves": np.full(nb, self.reynolds_solves, dtype=np.int64),
             "residual": np.full(nb, self.residual),
-            "status": pd.Categorical([self.status] * nb,
-                                     categories=["ok", "no_equilibrium", "contact",
-                                                 "not_converged", "error"]),
+            "status": pd.Categorical([self.status] * nb, categories=list(STATUSES)),
             "message": [self.message] * nb,
         })
         for bi, s in self.sleeve_m.items():

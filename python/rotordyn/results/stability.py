@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from rotordyn.results.equilibrium import EquilibriumResult
+from rotordyn.results.equilibrium import CONVERGED, STATUSES, EquilibriumResult
 from rotordyn.results.modes import damping_ratio, log_dec
 
 
@@ -118,7 +118,7 @@ class StabilityResult:
     def stable(self) -> bool:
         """No eigenvalue grows (paper §6.2): every Re λ < 1e-9 |λ|. Real parts within that
         round-off band of zero (an undamped rotor) count as marginally stable, not unstable."""
-        if self.status not in ("ok", "contact") or len(self.eigenvalues) == 0:
+        if self.status not in CONVERGED or len(self.eigenvalues) == 0:
             return False
         lam = self.eigenvalues
         return bool(np.all(lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)))
@@ -150,8 +150,6 @@ class StabilityResult:
             "whirl": pd.Categorical(self.whirl, categories=["forward", "backward", "planar"]),
             "kind": pd.Categorical(self.kind, categories=["rotor", "sleeve"]),
             "stable": np.full(n, self.stable),
-            "status": pd.Categorical([self.status] * n,
-                                     categories=["ok", "no_equilibrium", "contact",
-                                                 "not_converged", "error"]),
+            "status": pd.Categorical([self.status] * n, categories=list(STATUSES)),
             "message": [self.message] * n,
         })

@@ -11,7 +11,11 @@ import pandas as pd
 @dataclass(frozen=True)
 class TransientResult:
     """t: (n_t,) s; r, v: (n_t, n) coordinates and velocities (m, m/s); journal_x_m,
-    journal_y_m: (n_t, n_bearings) relative to each housing; h_min_m: (n_t, n_bearings)."""
+    journal_y_m: (n_t, n_bearings) relative to each housing; h_min_m: (n_t, n_bearings);
+    speed_hz_t, angle_rad: (n_t,) speed and rotor angle; chamber_pressure_command_pa,
+    chamber_pressure_actual_pa: (n_t,) command (before saturation) and actuator output p_c;
+    controller_output_pa: (n_t,) feedback increment (0 without a controller);
+    actuator_states (n_t, order), controller_states (n_t, n_k)."""
 
     speed_hz: float
     chamber_pressure_pa: float
@@ -28,6 +32,13 @@ class TransientResult:
     stats: dict
     status: str = "ok"
     message: str = ""
+    speed_hz_t: np.ndarray | None = None
+    angle_rad: np.ndarray | None = None
+    chamber_pressure_command_pa: np.ndarray | None = None
+    chamber_pressure_actual_pa: np.ndarray | None = None
+    controller_output_pa: np.ndarray | None = None
+    actuator_states: np.ndarray | None = None
+    controller_states: np.ndarray | None = None
 
     def __repr__(self) -> str:
         amp = ""
@@ -40,11 +51,19 @@ class TransientResult:
     def to_frame(self) -> pd.DataFrame:
         """One row per (time, bearing)."""
         nt, nb = self.journal_x_m.shape
+
+        def col(a, default):
+            return np.repeat(a, nb) if a is not None else default
+
         return pd.DataFrame({
             "t_s": np.repeat(self.t, nb),
             "bearing": np.tile(np.asarray(self.bearing_names, dtype=object), nt),
-            "speed_hz": self.speed_hz,
-            "chamber_pressure_pa": self.chamber_pressure_pa,
+            "speed_hz": col(self.speed_hz_t, self.speed_hz),
+            "chamber_pressure_pa": col(self.chamber_pressure_actual_pa,
+                                       self.chamber_pressure_pa),
+            "chamber_pressure_command_pa": col(self.chamber_pressure_command_pa,
+                                               self.chamber_pressure_pa),
+            "controller_output_pa": col(self.controller_output_pa, 0.0),
             "journal_x_m": self.journal_x_m.ravel(),
             "journal_y_m": self.journal_y_m.ravel(),
             "h_min_m": self.h_min_m.ravel(),
