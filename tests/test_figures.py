@@ -91,7 +91,7 @@ def test_unbalance_bode_and_polar(rig):
     a1, a2 = u.plot()
     assert a1.get_ylabel() == "amplitude (µm, 0-peak)" and a2.get_ylabel() == "phase (deg)"
     assert a2.get_xlabel() == "rotor speed (Hz)"
-    leg = legend_texts(a1)
+    leg = [t.get_text() for t in a1.figure.legends[0].get_texts()]
     assert "operating speed range" in leg and "critical speed N_c (peak)" in leg
     assert any("half-power band" in t for t in leg)
     notes = " ".join(t.get_text() for t in a1.texts)
