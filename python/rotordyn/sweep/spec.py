@@ -99,7 +99,8 @@ OPTIONS = {
                   "operating_speed_hz": _opt_operating},
     "waterfall": {"unbalances": _opt_unbalances, "revolutions": _opt_int(4, 10000),
                   "samples_per_revolution": _opt_int(8, 4096),
-                  "max_harmonic": _opt_range(0.0, 100.0), "rtol": _opt_range(0.0, 1e-2)},
+                  "max_harmonic": _opt_range(0.0, 100.0),
+                  "max_frequency_hz": _opt_range(0.0, 1e6), "rtol": _opt_range(0.0, 1e-2)},
 }
 REQUIRED = {"threshold": ("vary",), "boundary": ("x", "y", "resolution"),
             "unbalance": ("unbalances",), "waterfall": ("unbalances",)}
