@@ -23,7 +23,7 @@ def _close():
 
 
 def legend_texts(ax):
-    leg = ax.get_legend()
+    leg = ax.get_legend() or (ax.figure.legends[0] if ax.figure.legends else None)
     assert leg is not None, "figure without legend"
     return [t.get_text() for t in leg.get_texts()]
 

@@ -69,5 +69,5 @@ def test_readme_runs_as_written(tmp_path, monkeypatch):
         p = subprocess.run([sys.executable, "-m", "rotordyn.cli", *c[1:]], capture_output=True,
                            text=True, cwd=tmp_path, env=env)
         assert p.returncode == 0, f"README command failed: {shlex.join(c)}\n{p.stderr[-2000:]}"
-        assert "warning" not in p.stderr, (shlex.join(c), p.stderr)
+        assert "rotordyn: warning" not in p.stderr, (shlex.join(c), p.stderr)
     assert (tmp_path / "out" / "fig9.png").stat().st_size > 10000

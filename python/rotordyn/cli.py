@@ -430,16 +430,27 @@ def _check_offset(s, args) -> None:
             return
 
 
-def _show_warning(message, category, filename, lineno, file=None, line=None):
-    """Warnings as one line on stderr: ``rotordyn: warning: <field> = ...``."""
-    print(f"rotordyn: warning: {message}", file=sys.stderr)
+def _warning_printer(default):
+    """rotordyn's own warnings as one line on stderr (``rotordyn: warning: <field> = ...``);
+    other libraries' warnings as usual."""
+
+    def show(message, category, filename, lineno, file=None, line=None):
+        from rotordyn.errors import RotordynWarning
+
+        if issubclass(category, RotordynWarning):
+            print(f"rotordyn: warning: {message}", file=sys.stderr)
+        else:
+            default(message, category, filename, lineno, file, line)
+
+    return show
 
 
 def main(argv: list[str] | None = None) -> int:
     import warnings
 
     argv = list(sys.argv[1:] if argv is None else argv)
-    shown, warnings.showwarning = warnings.showwarning, _show_warning
+    shown = warnings.showwarning
+    warnings.showwarning = _warning_printer(shown)
     try:
         args = build_parser().parse_args(argv)
         if getattr(args, "model", None) is not None and hasattr(args, "config_ay_m"):

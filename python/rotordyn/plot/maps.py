@@ -103,7 +103,7 @@ def equilibrium_loci(df: pd.DataFrame, ax=None, bearing: str | None = None):
         bearing = df["bearing"].iloc[0]
     if bearing is not None and "bearing" in df:
         df = df[df["bearing"] == bearing]
-    ax = new_axes(ax, width=COLUMN_IN * 1.5, aspect=0.75)
+    ax = new_axes(ax, width=COLUMN_IN * 1.6, aspect=0.68)
     th = np.linspace(0, 2 * np.pi, 721)
     ax.plot(np.cos(th), np.sin(th), color="0.4", lw=0.8)
     handles = [Line2D([], [], color="0.4", lw=0.8, label="clearance circle (e = c)")]
@@ -144,22 +144,13 @@ def equilibrium_loci(df: pd.DataFrame, ax=None, bearing: str | None = None):
         handles.append(Line2D([], [], ls="", marker="x", color="k", ms=4,
                               label="no equilibrium / contact"))
     ax.set_aspect("equal")
-    okall = df[df["status"] == "ok"]
-    if len(okall):
-        x0, x1 = okall["x_over_c"].min(), okall["x_over_c"].max()
-        y0, y1 = okall["y_over_c"].min(), okall["y_over_c"].max()
-        pad = 0.12 * max(x1 - x0, y1 - y0, 0.1)
-        ax.set_xlim(max(-1.08, x0 - pad), min(1.08, x1 + pad))
-        ax.set_ylim(max(-1.08, y0 - pad), min(1.08, y1 + pad))
-    else:
-        ax.set_xlim(-1.08, 1.08)
-        ax.set_ylim(-1.08, 1.08)
+    ax.set_xlim(-1.05, 1.05)   # the whole clearance circle: where the journal may go
+    ax.set_ylim(-1.05, 1.05)
     ax.set_xlabel("journal x / c (–), horizontal")
     ax.set_ylabel("journal y / c (–), vertical up")
     if bearing:
         ax.set_title(f"equilibrium loci: {bearing}")
-    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=6,
-              borderaxespad=0)
+    ax.figure.legend(handles=handles, loc="outside right upper", fontsize=6)
     return ax
 
 
