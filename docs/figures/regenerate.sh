@@ -27,4 +27,7 @@ for f in fig7_equilibrium:paper_rig_fig7:equilibrium fig8_equilibrium_speed:pape
     $RD sweep sweeps/$spec.toml --out "$TMP/$spec" --workers 2
     $RD plot "$TMP/$spec" --kind "$kind" --out $FIG/$out.png
 done
+$RD sweep sweeps/fig13_waterfall.toml --out "$TMP/fig13_waterfall" --workers 2   # resumes: no recompute
+$RD plot "$TMP/fig13_waterfall" --kind waterfall --style map --scale log \
+    --out $FIG/fig13_waterfall_map.png
 $RD report paper-rig --out "$TMP/report" --html "$TMP/report.html"
