@@ -149,8 +149,15 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   theta.assign(n_nodes, 1.0);
   biactive.assign(n_nodes, 0);
   for (int n = 0; n < n_nodes; ++n) p[n] = pfull[n] = p_fixed[n];
+  // Coarse grid for the cavitation-set prediction: a direction is halved (rounded up) if it
+  // keeps >= 24 nodes around / >= 4 intervals along and its spacing is not more than twice
+  // the other's. Coarsening the coarser direction of an elongated cell would move the
+  // predicted cavitation boundary by many of the fine direction's nodes (slow to correct).
+  const double sphi = R * dphi;
+  coarse_n_circ = N >= 48 && sphi <= 2.0 * dz ? (N + 1) / 2 : N;
+  coarse_n_axial = grid.n_axial >= 8 && dz <= 2.0 * sphi ? (grid.n_axial + 1) / 2 : grid.n_axial;
   coarse_usable = (cav == Cavitation::reynolds || cav == Cavitation::jfo) &&
-                  (N + 1) / 2 >= 24 && (grid.n_axial + 1) / 2 >= 4;
+                  (coarse_n_circ < N || coarse_n_axial < grid.n_axial);
 }
 
 void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
