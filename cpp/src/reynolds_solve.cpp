@@ -221,6 +221,12 @@ void ReynoldsSolver::Impl::postprocess() {
   }
   out.force_n = Eigen::Vector2d(fx * area, fy * area);
   out.friction_torque_nm = torque * area * R;
+  if (!(out.force_n.allFinite() && std::isfinite(out.friction_torque_nm)))
+    throw ConvergenceError(
+        "Reynolds solve: non-finite pressure or force (the film's pressure scale "
+        "viscosity_pa_s*omega*(R/clearance_m)^2 = " +
+        reynolds_detail::num(mu * std::abs(omega) * (R / c) * (R / c)) +
+        " Pa is beyond what double precision represents)");
   out.h_min_m = hmin;
   out.h_min_angle_deg = (nmin / K1) * dphi * 180.0 / kPi;
 

@@ -69,7 +69,8 @@ def linearize(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float
     ``rel_step``·c and ``rel_step``·c·ω). Other keywords go to :func:`equilibrium`.
     """
     v.choice("method", method, LINEARIZATION_METHODS)
-    v.in_range("rel_step", rel_step, 0.0, 0.1, lo_open=True, hi_open=True)
+    # below 1e-10 the step is lost in round-off of the position (K_H ≡ 0 with status ok)
+    v.in_range("rel_step", rel_step, 1e-10, 1e-2)
     e = equilibrium(system, speed_hz, chamber_pressure_pa, config_ay_m, **equilibrium_kw)
     return _linear_from(assembled(system), e, speed_hz, method, rel_step)
 
