@@ -28,9 +28,10 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   const Eigen::Index n = model_.n();
   require(std::isfinite(omega), "speed: expected a finite value");
   require(std::isfinite(pc) && pc >= 0, "chamber_pressure_pa: expected a finite value >= 0");
-  require(a.size() == n && a.allFinite(), shape_msg("a", n, 1, a.size(), 1));
-  require(r0.size() == 0 || (r0.size() == n && r0.allFinite()),
-          shape_msg("r0", n, 1, r0.size(), 1));
+  require(a.size() == n, shape_msg("a", n, 1, a.size(), 1));
+  require(r0.size() == 0 || r0.size() == n, shape_msg("r0", n, 1, r0.size(), 1));
+  require(r0.allFinite(), "r0: expected finite values");
+  require(a.allFinite(), "a: expected finite values");
   require(opt.tol > 0 && opt.max_iter > 0, "options: tol and max_iter must be positive");
   require(std::isfinite(opt.pm), "pm: expected P_m >= 0, or < 0 for automatic");
 
@@ -53,17 +54,29 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     out.h_min = h_min_;
     out.h_min_angle_deg = h_min_angle_;
     out.reynolds_solves = solves_ - solves0;
-    if (out.status == "ok" || out.status == "not_converged") {
-      for (std::size_t i = 0; i < films_.size(); ++i) {
-        const double c = model_.films[i].geometry.clearance_m;
-        if (h_min_[i] < opt.contact_fraction * c) {
-          std::ostringstream os;
-          os << "film '" << model_.films[i].name << "': minimum film thickness " << h_min_[i]
-             << " m is below " << opt.contact_fraction << " c";
-          if (out.status == "not_converged") os << " (no equilibrium: " << out.message << ")";
-          out.status = "contact";
-          out.message = os.str();
-        }
+    // Statuses (issue 13): "ok" and "contact" are converged equilibria (contact: a film is
+    // thinner than contact_fraction c there); "not_converged" and "no_equilibrium" (the
+    // iteration failed with a film closing) are failures, never to be linearised. A failed
+    // solve is never renamed to a converged status.
+    const bool converged = out.status == "ok";
+    if (converged && !(out.r.allFinite() && out.film_force.allFinite() &&
+                       std::isfinite(res))) {
+      out.status = "not_converged";
+      out.message = "non-finite equilibrium (residual " + std::to_string(res) + ")";
+    }
+    for (std::size_t i = 0; i < films_.size(); ++i) {
+      const double c = model_.films[i].geometry.clearance_m;
+      if (!(h_min_[i] < opt.contact_fraction * c)) continue;
+      std::ostringstream os;
+      os << "film '" << model_.films[i].name << "': minimum film thickness " << h_min_[i]
+         << " m is below " << opt.contact_fraction << " c";
+      if (out.status == "ok" || out.status == "contact") {
+        out.status = "contact";
+        out.message = os.str();
+      } else {
+        out.status = "no_equilibrium";
+        out.message = "no equilibrium: " + out.message + "; " + os.str();
+        break;
       }
     }
     return out;
@@ -241,7 +254,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       H = film_forces(r, zero, omega);
     }
   } catch (const ContactError& e) {
-    out.status = "contact";
+    out.status = "no_equilibrium";
     out.message = std::string("starting point: ") + e.what();
     return finish(r, zero, NAN);
   }
@@ -262,7 +275,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       }
     }
     if (!ok) {
-      out.status = "contact";
+      out.status = "no_equilibrium";
       out.message = "successive substitution: every step ends in contact";
       H = film_forces(r, zero, omega);
       return finish(r, H, res);

@@ -73,8 +73,8 @@ DynamicCoefficients ReynoldsSolver::coefficients(double x, double y, double omeg
 DynamicCoefficients ReynoldsSolver::coefficients_fd(double x, double y, double omega,
                                                     double rel_step) {
   Impl& s = *impl_;
-  if (!(rel_step >= 1e-10 && rel_step <= 1e-2))
-    throw InputError("rel_step: expected 1e-10 <= rel_step <= 1e-2 (a smaller step is lost in "
+  if (!(rel_step >= 1e-10 && rel_step < 0.1))
+    throw InputError("rel_step: expected 1e-10 <= rel_step < 0.1 (a smaller step is lost in "
                      "round-off of the position), got " + num(rel_step));
   DynamicCoefficients dc;
   dc.force_n = rigid(x, y, 0.0, 0.0, omega).force_n;
