@@ -416,13 +416,34 @@ class JournalBearing:
         return values, status, list(res.message)
 
     @staticmethod
+    def _batch_arrays(**named) -> list[np.ndarray]:
+        """Broadcast float arrays of the named batch inputs; InputError naming the field for
+        text, None or shapes that do not broadcast (issue 13)."""
+        arrs = []
+        for name, val in named.items():
+            try:
+                if val is None or isinstance(val, (str, bytes)):
+                    raise TypeError
+                arrs.append(np.asarray(val, dtype=float))
+            except (TypeError, ValueError, OverflowError):
+                raise InputError(f"{name}: expected a number or an array of numbers, got "
+                                 f"{val!r:.60}") from None
+        try:
+            return np.broadcast_arrays(*arrs)
+        except ValueError:
+            shapes = ", ".join(f"{n} {a.shape}" for n, a in zip(named, arrs))
+            raise InputError(f"{', '.join(named)}: expected shapes that broadcast together, "
+                             f"got {shapes}") from None
+
+    @staticmethod
     def _check_batch_options(n_threads, on_error):
         if on_error not in ("raise", "nan"):
             raise InputError(f"on_error: expected 'raise' or 'nan', got {on_error!r}")
         if isinstance(n_threads, bool) or not isinstance(n_threads, (int, np.integer)):
             raise InputError(f"n_threads: expected an integer >= 0, got {n_threads!r}")
-        if n_threads < 0:
-            raise InputError(f"n_threads: expected an integer >= 0 (0: all cores), got {n_threads}")
+        if not 0 <= n_threads <= 4096:
+            raise InputError(f"n_threads: expected an integer in [0, 4096] (0: all cores), "
+                             f"got {n_threads}")
 
     def forces_batch(self, *, x_m, y_m, speed_hz, vx_m_s=0.0, vy_m_s=0.0, n_threads: int = 1,
                      on_error: str = "raise") -> np.ndarray:
@@ -433,9 +454,8 @@ class JournalBearing:
         ``"nan"`` leaves NaN rows for failing points.
         """
         self._check_batch_options(n_threads, on_error)
-        x, y, f, vx, vy = np.broadcast_arrays(
-            *(np.asarray(a, dtype=float) for a in (x_m, y_m, speed_hz, vx_m_s, vy_m_s))
-        )
+        x, y, f, vx, vy = self._batch_arrays(x_m=x_m, y_m=y_m, speed_hz=speed_hz,
+                                             vx_m_s=vx_m_s, vy_m_s=vy_m_s)
         states = np.ascontiguousarray(np.stack([x.ravel(), y.ravel(), vx.ravel(), vy.ravel()], 1))
         if on_error == "raise":
             if not np.all(np.isfinite(states)) or not np.all(np.isfinite(f)):
@@ -453,7 +473,7 @@ class JournalBearing:
         """Forces (n, 2), K (n, 2, 2), C (n, 2, 2) by perturbation, in one C++ call, with
         ``status`` (n,) (0 ok, 1 bad input, 2 contact, 3 not converged) and ``message``."""
         self._check_batch_options(n_threads, on_error)
-        x, y, f = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (x_m, y_m, speed_hz)))
+        x, y, f = self._batch_arrays(x_m=x_m, y_m=y_m, speed_hz=speed_hz)
         pos = np.ascontiguousarray(np.stack([x.ravel(), y.ravel()], 1))
         if on_error == "raise":
             if not np.all(np.isfinite(pos)) or not np.all(np.isfinite(f)):
