@@ -38,8 +38,8 @@ TWO_PI = 2.0 * math.pi
 def _finite(value, name: str) -> float:
     try:
         v = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"{name}: expected a real number, got {value!r}") from None
+    except (TypeError, ValueError, OverflowError):  # OverflowError: an int beyond float
+        raise InputError(f"{name}: expected a real number, got {value!r:.60}") from None
     if not math.isfinite(v):
         raise InputError(f"{name}: expected a finite number, got {v}")
     return v
@@ -57,6 +57,8 @@ def _integer(value, name: str, lo: int) -> int:
         raise InputError(f"{name}: expected an integer >= {lo}, got {value!r}")
     if int(value) < lo:
         raise InputError(f"{name}: expected an integer >= {lo} (grid too coarse), got {value}")
+    if int(value) > 2**31 - 1:  # the C++ core's int (issue 13)
+        raise InputError(f"{name}: expected an integer <= {2**31 - 1}, got {value}")
     return int(value)
 
 

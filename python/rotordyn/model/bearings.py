@@ -15,6 +15,7 @@ from rotordyn.sleeve import FlexibleSleeve
 
 def _check_film(b, where: str, n_stations: int) -> None:
     v.integer(f"{where}.station", b.station, lo=0, hi=n_stations - 1)
+    v.text(f"{where}.name", b.name)
     v.positive(f"{where}.diameter_m", b.diameter_m)
     v.positive(f"{where}.length_m", b.length_m)
     c = v.positive(f"{where}.clearance_m", b.clearance_m)

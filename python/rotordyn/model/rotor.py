@@ -72,6 +72,7 @@ class ShaftSection:
                 f"{self.outer_diameter_m}), got {self.inner_diameter_m!r}"
             )
         v.integer(f"{where}.n_elements", self.n_elements, lo=1, hi=10000)
+        v.text(f"{where}.material", self.material)
         if self.shear_coefficient is not None:
             v.in_range(f"{where}.shear_coefficient", self.shear_coefficient, 0.0, 2.0,
                        lo_open=True)
@@ -171,6 +172,7 @@ class Support:
     def check(self, where: str, n_stations: int) -> None:
         v.integer(f"{where}.station", self.station, lo=0, hi=n_stations - 1)
         v.choice(f"{where}.type", self.type, ("rigid", "linear"))
+        v.text(f"{where}.name", self.name)
         for c in _SUPPORT_COEFS:
             val = v.finite(f"{where}.{c}", getattr(self, c))
             if self.type == "rigid" and val != 0.0:

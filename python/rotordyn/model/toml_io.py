@@ -132,7 +132,7 @@ def _bearing_from_table(where: str, t: dict):
 
     t = dict(t)
     kind = t.pop("type", None)
-    if kind not in BEARING_TYPES:
+    if not isinstance(kind, str) or kind not in BEARING_TYPES:
         raise InputError(f"{where}.type: expected one of {sorted(BEARING_TYPES)}, got {kind!r}")
     cls = BEARING_TYPES[kind]
     _check_keys(where, t, _fields(cls))
