@@ -11,7 +11,7 @@ PIP    := $(PY) -m pip --disable-pip-version-check -q
 STAMPS := $(VENV)/.stamps
 APT_PKGS := libeigen3-dev libsuitesparse-dev libsundials-dev liblapack-dev libblas-dev g++ make
 PY_BUILD := scikit-build-core pybind11 cmake ninja
-PY_DEPS  := numpy scipy pandas pyarrow "dask[distributed]" matplotlib pytest hypothesis control
+PY_DEPS  := numpy scipy pandas pyarrow "dask[distributed]" matplotlib threadpoolctl pytest hypothesis control
 SOURCES := $(shell find cpp python cmake -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.py' -o -name '*.txt' -o -name '*.toml' -o -name '*.cmake' -o -name '*.pyi' -o -name 'py.typed' \) 2>/dev/null) CMakeLists.txt pyproject.toml
 OUT ?= out
 

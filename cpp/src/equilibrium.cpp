@@ -91,9 +91,41 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     Eigen::VectorXd H = zero;
     Eigen::MatrixXd KH;
     auto newton = [&](const Eigen::VectorXd& Fs, Eigen::VectorXd& rs, int iters, double& res,
-                      std::string& why) -> bool {
+                      std::string& why, bool polish) -> bool {
       auto resid = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& Hr) {
         return Eigen::VectorXd(model_.K * rr - Hr - Fs);
+      };
+      Eigen::VectorXd R;
+      // Converged to the tolerance: full Newton steps on to the round-off floor, so the
+      // answer is the discrete root itself and not the first iterate inside the tolerance,
+      // which depends on the starting point (a warm start may change the cost, never the
+      // answer beyond round-off).
+      auto polish_root = [&]() {
+        if (!polish) return;
+        for (int k = 0; k < 3; ++k) {
+          linearize_last_solve(false, KH, nullptr);
+          const Eigen::VectorXd dr = (model_.K + KH).partialPivLu().solve(-R);
+          if (!dr.allFinite() || inf_norm(dr) <= 1e-15 * std::max(inf_norm(rs), 1e-300)) return;
+          const Eigen::VectorXd r_try = rs + dr;
+          Eigen::VectorXd H_try;
+          try {
+            H_try = film_forces(r_try, zero, omega);
+          } catch (const ContactError&) {
+            film_forces(rs, zero, omega);
+            return;
+          }
+          const Eigen::VectorXd R_try = resid(r_try, H_try);
+          const double res_try = inf_norm(R_try) / out.load_scale;
+          if (!(res_try <= res)) {
+            film_forces(rs, zero, omega);  // leave the films at the returned point
+            return;
+          }
+          ++out.iterations;
+          rs = r_try;
+          H = H_try;
+          R = R_try;
+          res = res_try;
+        }
       };
       try {
         H = film_forces(rs, zero, omega);
@@ -101,10 +133,13 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
         why = std::string("starting point: ") + e.what();
         return false;
       }
-      Eigen::VectorXd R = resid(rs, H);
+      R = resid(rs, H);
       res = inf_norm(R) / out.load_scale;
       for (int it = 0; it < iters; ++it, ++out.iterations) {
-        if (res < opt.tol) return true;
+        if (res < opt.tol) {
+          polish_root();
+          return true;
+        }
         linearize_last_solve(false, KH, nullptr);  // the films' last solve is at rs
         const Eigen::VectorXd dr = (model_.K + KH).partialPivLu().solve(-R);
         if (!dr.allFinite()) {
@@ -139,7 +174,10 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
         }
         rs = r_try;
       }
-      if (res < opt.tol) return true;
+      if (res < opt.tol) {
+        polish_root();
+        return true;
+      }
       why = "Newton: no convergence in " + std::to_string(iters) + " iterations";
       return false;
     };
@@ -147,7 +185,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     double res = NAN;
     std::string why;
     Eigen::VectorXd rn = r;
-    if (newton(F, rn, opt.max_iter, res, why)) return finish(rn, H, res);
+    if (newton(F, rn, opt.max_iter, res, why, true)) return finish(rn, H, res);
     // Fallback: continuation in the load and configuration, F(λ) = λ F from the concentric,
     // undeformed state (the solution at λ = 0), with adaptive steps.
     Eigen::VectorXd rc = zero;
@@ -156,7 +194,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     while (lam < 1.0 && dlam > 1e-4 && out.iterations < 20 * opt.max_iter) {
       const double next = std::min(1.0, lam + dlam);
       Eigen::VectorXd rt = rc;
-      if (newton(next * F, rt, 40, res_c, why_c)) {
+      if (newton(next * F, rt, 40, res_c, why_c, next >= 1.0)) {
         rc = rt;
         lam = next;
         dlam *= 1.5;

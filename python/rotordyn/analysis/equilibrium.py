@@ -3,6 +3,8 @@ paper's successive substitution with the relaxation coefficient P_m (eq. 16)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
@@ -14,6 +16,7 @@ from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.units import hz_to_rad_s
 
 
+@limited_blas
 def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
                 config_ay_m: float | None = None, *, config_ax_m: float | None = None,
                 method: str = "newton", pm: float | str = "auto", tol: float = 1e-10,
@@ -74,6 +77,7 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     if res.status == "ok":
         asm.last_r = r.copy()
     bcs = asm.bearings
+    h_min, h_ang = asm.bearing_h_min(np.asarray(res.h_min), np.asarray(res.h_min_angle_deg))
     return EquilibriumResult(
         speed_hz=float(speed_hz), chamber_pressure_pa=float(chamber_pressure_pa),
         config_ay_m=np.array([a[bc.jy] for bc in bcs]),
@@ -83,7 +87,7 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         journal_x_m=np.array([r[bc.jx] for bc in bcs]),
         journal_y_m=np.array([r[bc.jy] for bc in bcs]),
         clearance_m=np.array([bc.clearance_m for bc in bcs]),
-        h_min_m=np.asarray(res.h_min), h_min_angle_deg=np.asarray(res.h_min_angle_deg),
+        h_min_m=h_min, h_min_angle_deg=h_ang,
         sleeve_m={bc.index: r[list(bc.sleeve)] for bc in bcs if bc.sleeve},
         iterations=int(res.iterations), reynolds_solves=int(res.reynolds_solves),
         residual=float(res.residual), status=res.status, message=res.message,

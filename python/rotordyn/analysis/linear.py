@@ -6,6 +6,8 @@ steps scaled to c and c·ω)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
@@ -38,6 +40,7 @@ def coordinate_labels(asm: Assembled) -> tuple:
         names += [f"cb_mode{j + 1}" for j in range(asm.n_rotor - len(names))]
     for bc in asm.bearings:
         names += [f"{bc.name}.sleeve{j + 1}" for j in range(len(bc.sleeve))]
+    names += list(getattr(asm, "extra_labels", []))
     return tuple(names)
 
 
@@ -67,6 +70,7 @@ def _linear_from(asm: Assembled, e: EquilibriumResult, speed_hz: float, method: 
                        equilibrium=e, method=method)
 
 
+@limited_blas
 def linearize(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, *, method: str = "perturbation",
               rel_step: float = FD_REL_STEP, **equilibrium_kw) -> LinearModel:
@@ -109,9 +113,10 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
                for bc in asm.bearings if bc.sleeve}
     return StabilityResult(lm, lam, np.array([WHIRL_NAMES[int(x)] for x in r.whirl], dtype=object),
                            kind, rotor.reshape(n_nodes, 4, -1), sleeves, status=lm.status,
-                           message=lm.equilibrium.message)
+                           message=lm.equilibrium.message, modes=phi)
 
 
+@limited_blas
 def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, *, n_modes: int | None = None,
               method: str = "perturbation", **equilibrium_kw) -> StabilityResult:

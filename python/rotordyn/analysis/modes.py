@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
@@ -87,6 +89,7 @@ def _result(rm: RotorMatrices, speed_hz: float, n_modes: int, model_name: str) -
     )
 
 
+@limited_blas
 def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None,
           n_modes: int | None = None) -> ModesResult:
     """Damped natural frequencies, damping, whirl and mode shapes of the rotor on its supports.
@@ -120,6 +123,7 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
                        red.node_positions_m, full=full)
 
 
+@limited_blas
 def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
                    n_modes: int = 8) -> CampbellResult:
     """Campbell diagram of the rotor on its linear/rigid supports (no fluid film): the

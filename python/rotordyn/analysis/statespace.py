@@ -3,6 +3,8 @@ chamber-pressure fluctuation ΔC and excitation forces F as inputs)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn.analysis.assembly import assembled
@@ -22,6 +24,7 @@ def _parse(item, kinds, field):
     return item
 
 
+@limited_blas
 def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
                speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
                config_ay_m: float | None = None, **kw) -> StateSpaceResult:

@@ -3,6 +3,8 @@ part of the eigenvalues of eq. 19), and boundary tracing by continuation (paper 
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import math
 
 import numpy as np
@@ -31,6 +33,7 @@ def _point(system, params, exclude_sleeve_modes):
     return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), st.status
 
 
+@limited_blas
 def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
               speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, n_scan: int = 25, xtol: float | None = None,
@@ -149,6 +152,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
                            message=msg, **base)
 
 
+@limited_blas
 def stability_boundary(system: System, vary: str = "chamber_pressure_pa",
                        along: str = "config_ay_m", *, values, bounds, n_scan: int = 25,
                        **fixed) -> BoundaryResult:
