@@ -173,6 +173,7 @@ def cli(p: dict) -> list:
     finally:
         os.chdir(cwd)
     text = err.getvalue().strip()
+    _cache["detail"] = f"exit {code}"
     if code not in (0, 1, 2):
         v.append(f"exit code {code}")
     if "internal error" in text or "Traceback" in text:
@@ -194,7 +195,8 @@ def run_case(kind: str, payload: dict) -> dict:
 
     try:
         violations = CASES[kind](payload)
-        return {"outcome": "result", "violations": violations, "detail": ""}
+        return {"outcome": "result", "violations": violations,
+                "detail": _cache.pop("detail", "")}
     except rd.RotordynError as exc:
         msg = str(exc)
         bad = []
