@@ -7,7 +7,10 @@ Machine-readable output goes to stdout with ``--json``; logs go to stderr.
 from __future__ import annotations
 
 import argparse
+import math
+import os
 import sys
+from pathlib import Path
 
 import numpy as np
 
@@ -16,6 +19,8 @@ from rotordyn import cli_bearing
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.cli_common import ArgumentParser as _ArgumentParser
 from rotordyn.cli_common import json_text as _json
+
+MAX_SPEEDS = 100_000  # speeds of one Campbell/unbalance run (more is not a diagram)
 
 
 # -- info -------------------------------------------------------------------------------
@@ -94,18 +99,55 @@ def _cmd_equilibrium(args) -> int:
 
 # -- linear analyses (issue 5) -----------------------------------------------------------
 def _speeds(text: str) -> np.ndarray:
-    """"a:b:step" (inclusive) or "f1,f2,..." → speeds in Hz."""
+    """"a:b:step" (inclusive) or "f1,f2,..." → speeds in Hz (at most MAX_SPEEDS)."""
+    bad = rotordyn.InputError(
+        f"--speeds-hz: expected 'start:stop:step' or a comma-separated list, got {text!r}")
     try:
         if ":" in text:
             a, b, st = (float(x) for x in text.split(":"))
-            if st <= 0 or b < a:
-                raise ValueError
-            return np.arange(a, b + 0.5 * st, st)
-        return np.array([float(x) for x in text.split(",")])
+        else:
+            return np.array([float(x) for x in text.split(",")])
     except ValueError:
+        raise bad from None
+    if not (np.isfinite(a) and np.isfinite(b) and np.isfinite(st)) or st <= 0 or b < a:
+        raise bad
+    # Count before allocating (issue 13: 5:1e9:1e-9 raised MemoryError).
+    count = math.floor((b - a) / st + 0.5) + 1
+    if count > MAX_SPEEDS:
         raise rotordyn.InputError(
-            f"--speeds-hz: expected 'start:stop:step' or a comma-separated list, got {text!r}"
-        ) from None
+            f"--speeds-hz: expected at most {MAX_SPEEDS} speeds, {text!r} gives {count:.3g}")
+    return np.arange(a, b + 0.5 * st, st)
+
+
+def _figure_path(flag: str, path: str) -> str:
+    """An output figure: its folder must exist and its suffix be a format matplotlib writes
+    (issue 13: a missing folder or an unknown suffix gave a traceback after the solve)."""
+    from matplotlib.figure import Figure
+
+    p = Path(path)
+    kinds = Figure().canvas.get_supported_filetypes()
+    if p.suffix.lstrip(".").lower() not in kinds:
+        raise rotordyn.InputError(f"{flag}: expected a file name ending in one of "
+                                  f"{', '.join('.' + k for k in sorted(kinds))}, got {path!r}")
+    folder = p.parent if str(p.parent) else Path(".")
+    if not folder.is_dir():
+        raise rotordyn.InputError(f"{flag}: folder {str(folder)!r} does not exist")
+    if p.is_dir():
+        raise rotordyn.InputError(f"{flag}: {path!r} is a directory")
+    return path
+
+
+def _out_dir(flag: str, path: str) -> str:
+    """An output directory, created (with its parents) if missing; InputError naming the
+    flag when it is a file or cannot be created."""
+    p = Path(path)
+    if p.exists() and not p.is_dir():
+        raise rotordyn.InputError(f"{flag}: {path!r} exists and is not a directory")
+    try:
+        p.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise rotordyn.InputError(f"{flag}: cannot create {path!r}: {exc.strerror}") from None
+    return path
 
 
 def _cmd_stability(args) -> int:
@@ -126,8 +168,10 @@ def _cmd_stability(args) -> int:
 
 
 def _cmd_campbell(args) -> int:
-    s = rotordyn.models.load(args.model)
     speeds = _speeds(args.speeds_hz)
+    if args.plot:
+        _figure_path("--plot", args.plot)
+    s = rotordyn.models.load(args.model)
     if s.bearings:
         c = rotordyn.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m)
     else:
@@ -231,6 +275,7 @@ def _cmd_plot(args) -> int:
     from rotordyn.plot import plot_dataset
     from rotordyn.sweep import read_dataset
 
+    _figure_path("--out", args.out)
     plot_dataset(read_dataset(args.dir), args.kind, args.out)
     print(f"wrote {args.out}", file=sys.stderr)
     return 0
@@ -240,7 +285,7 @@ def _cmd_plot(args) -> int:
 def _cmd_report(args) -> int:
     from rotordyn import report
 
-    return report.run(args.model, args.out, html=args.html)
+    return report.run(args.model, _out_dir("--out", args.out), html=args.html)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -399,6 +444,19 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     except BrokenPipeError:  # output piped into e.g. `head`
         return 0
+    except MemoryError:
+        print("rotordyn: failed: out of memory (reduce the grid, the number of points or "
+              "n_out)", file=sys.stderr)
+        return 1
+    except OSError as exc:  # a file system failure while writing results
+        print(f"rotordyn: failed: {exc}", file=sys.stderr)
+        return 1
+    except Exception as exc:  # a bug: one line, not a traceback (ROTORDYN_DEBUG=1 re-raises)
+        if os.environ.get("ROTORDYN_DEBUG"):
+            raise
+        print(f"rotordyn: internal error: {type(exc).__name__}: {exc} (please report; "
+              "ROTORDYN_DEBUG=1 shows the traceback)", file=sys.stderr)
+        return 1
 
 
 if __name__ == "__main__":  # pragma: no cover
