@@ -11,6 +11,7 @@ PYBIND11_MODULE(_core, m) {
   bind_harmonic(m);
   bind_reynolds(m);
   bind_system(m);
+  bind_bearings(m);
   bind_transient(m);
   bind_sleeve(m);
 }

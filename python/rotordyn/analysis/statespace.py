@@ -9,7 +9,8 @@ import numpy as np
 
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import linearize
-from rotordyn.errors import InputError
+from rotordyn.errors import ConvergenceError, InputError
+from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.model.system import System
 from rotordyn.results.statespace import StateSpaceResult
 
@@ -36,8 +37,8 @@ def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
     ``("sleeve", bearing_index)`` (sleeve masters, m). Default: the journal of every bearing.
     """
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, **kw)
-    if lm.status not in ("ok", "contact"):
-        raise InputError(f"statespace: no equilibrium at this operating point ({lm.status}: "
+    if lm.status not in CONVERGED:
+        raise ConvergenceError(f"statespace: no equilibrium at this operating point ({lm.status}: "
                          f"{lm.equilibrium.message})")
     asm = assembled(system)
     n = asm.n
