@@ -233,7 +233,7 @@ def _cmd_unbalance(args) -> int:
     return 0
 
 
-MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, friswell-5.9.1); "
+MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, paper-rig-hs, friswell-5.9.1); "
               "see `rotordyn validate`")
 JSON_HELP = "print one JSON record on stdout (NaN written as null) instead of a table"
 
