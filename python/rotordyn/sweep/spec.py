@@ -329,7 +329,7 @@ class SweepSpec:
         campbell/unbalance/tracked stability, the varied axis for threshold."""
         if self.analysis == "threshold":
             return self.options["vary"]
-        if self.analysis in ("campbell", "unbalance", "waterfall"):
+        if self.analysis in ("campbell", "unbalance"):
             return "speed_hz"
         if self.analysis == "stability" and self.options.get("track", True) \
                 and len(self.axes.get("speed_hz", ())) > 1:

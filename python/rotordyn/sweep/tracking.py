@@ -27,24 +27,24 @@ def assign(prev: np.ndarray, cur: np.ndarray) -> np.ndarray:
 
 def track_line(rows: list, line: list) -> None:
     """Set ``mode_id`` in ``rows`` for the points of one line: ``line`` holds
-    (first row index, n modes, modes (n, k), eigenvalues) per point in line order. Ids start
-    1..k at the first point (ascending frequency); a mode continues the id of the mode of the
-    previous point it matches; an unmatched mode gets a new id."""
+    (row index of the point's block, modes (n, k)) per point in line order. Ids start 1..k at
+    the first point (ascending frequency); a mode continues the id of the mode of the previous
+    point it matches best (one-to-one); an unmatched mode gets a new id."""
     prev_phi = prev_ids = None
     next_id = 1
-    for first, k, phi, _lam in line:
+    for at, phi in line:
+        k = phi.shape[1]
         if prev_phi is None:
             ids = np.arange(1, k + 1)
             next_id = k + 1
         else:
             a = assign(prev_phi, phi)
-            ids = np.empty(k, dtype=int)
+            ids = np.empty(k, dtype=np.int64)
             for j in range(k):
                 if a[j] >= 0:
                     ids[j] = prev_ids[a[j]]
                 else:
                     ids[j] = next_id
                     next_id += 1
-        for j in range(k):
-            rows[first + j]["mode_id"] = int(ids[j])
+        rows[at]["mode_id"] = ids
         prev_phi, prev_ids = phi, ids

@@ -83,6 +83,8 @@ class Job:
         self.options = options
         self.axes = axes  # ordered: first outermost
         self.shape = tuple(len(x) for x in axes.values())
+        varying = [i for i, n in enumerate(self.shape) if n > 1]
+        self.line_pos = varying[-1] if varying else 0  # continuation runs along this axis
         self.key = ""     # spec hash (task names)
         self.level = 0    # refinement level (boundary)
         self.meta = {}    # provenance and units, stored in every part's schema metadata
@@ -107,15 +109,23 @@ def _base_system(model_toml: str):
     return sysm
 
 
-class _Variants:
-    """The model (and its freshly built solver) for each combination of model-field axes
-    met in this chunk."""
+_ASM: dict = {}  # (model text, model-axis values) -> Assembled (stateless parts reused)
 
-    def __init__(self, base):
+
+class _Variants:
+    """The model for each combination of model-field axes met in this chunk, each with a
+    solver built fresh for this chunk (the reduction and sleeve condensation are cached per
+    process; the solver, which keeps warm starts, is not shared between chunks)."""
+
+    def __init__(self, base, model_toml: str):
         self.base = base
+        self.model_toml = model_toml
         self.cache = {}
 
     def get(self, p: dict):
+        import copy
+
+        from rotordyn import _core
         from rotordyn.analysis.assembly import Assembled
         from rotordyn.sweep.paths import set_field
 
@@ -123,12 +133,22 @@ class _Variants:
                     or k == "gravity_m_s2")
         hit = self.cache.get(key)
         if hit is None:
-            s = self.base
-            for k, val in key:
-                s = set_field(s, k, val)
+            proto = _ASM.get((self.model_toml, key))
+            if proto is None:
+                s = self.base
+                for k, val in key:
+                    s = set_field(s, k, val)
+                if len(_ASM) > 8:
+                    _ASM.clear()
+                proto = _ASM[(self.model_toml, key)] = Assembled(s)
+            hit = copy.copy(proto)
+            hit.solver = _core.SystemSolver(proto.model)
+            hit.last_r = None
+            m = proto.model
+            hit.mats = tuple(np.asarray(x) for x in (m.M, m.C, m.G, m.K))
             if len(self.cache) > 4:
                 self.cache.clear()
-            hit = self.cache[key] = Assembled(s)
+            self.cache[key] = hit
         return hit
 
 
@@ -192,10 +212,9 @@ def _eigen(asm, e, f, opts, n_modes):
         from rotordyn.analysis.linear import FD_REL_STEP
 
         lin = asm.solver.linearize_fd(r, w, FD_REL_STEP)
-    m = asm.model
-    M = np.asarray(m.M)
-    D = np.asarray(m.C) + w * np.asarray(m.G) + np.asarray(lin.DH)
-    K = np.asarray(m.K) + np.asarray(lin.KH)
+    M, C0, G, K0 = asm.mats
+    D = C0 + w * G + np.asarray(lin.DH)
+    K = K0 + np.asarray(lin.KH)
     if not (np.all(np.isfinite(K)) and np.all(np.isfinite(D))):
         raise ArithmeticError("non-finite bearing coefficients")
     res = _core.modal(M, D, K, asm.rotor.xy_pairs(), int(n_modes or asm.n), True,
@@ -216,8 +235,9 @@ def _stable(lam) -> np.ndarray:
     return lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)
 
 
-def _same_line(prev, idx) -> bool:
-    return prev is not None and prev[:-1] == idx[:-1]
+def _same_line(prev, idx, pos) -> bool:
+    """Consecutive points that differ only along the innermost varying axis."""
+    return prev is not None and prev[:pos] == idx[:pos] and prev[pos + 1:] == idx[pos + 1:]
 
 
 def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
@@ -225,7 +245,7 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     boundary) as a table with :func:`schema`."""
     rows: list[dict] = []
     base = _base_system(job.model_toml)
-    variants = _Variants(base)
+    variants = _Variants(base, job.model_toml)
     if pids is not None:
         _boundary_rows(job, variants, chunk_id, pids, rows)
     else:
@@ -266,7 +286,7 @@ def _points(job, variants, chunk_id, lo, hi, pids=None):
         except RotordynError as exc:
             asm, err = None, str(exc)
         row = _common(job, pid, chunk_id, idx, p, asm)
-        yield row, p, asm, _options(job, p), _same_line(prev, idx), err
+        yield row, p, asm, _options(job, p), _same_line(prev, idx, job.line_pos), err
         prev = idx
 
 
@@ -338,18 +358,16 @@ def _stab_rows(job, variants, chunk_id, lo, hi, rows):
               "h_min_m": float(hmin.min()) if hmin.size else math.nan,
               "iterations": int(e.iterations), "point_stable": bool(ms.all()),
               "max_real_1_per_s": float(lam.real.max())}
-        first = len(rows)
-        for k in range(len(lam)):
-            rows.append({**row, **eq, "mode_id": k + 1, "mode": k + 1,
-                         "freq_hz": float(lam[k].imag / (2 * np.pi)),
-                         "eig_real_1_per_s": float(lam[k].real),
-                         "damping_ratio": float(-lam[k].real / abs(lam[k])) if abs(lam[k]) else math.nan,
-                         "log_dec": float(-2 * np.pi * lam[k].real / lam[k].imag)
-                         if lam[k].imag else math.nan,
-                         "whirl": str(whirl[k]), "kind": str(kind[k]),
-                         "mode_stable": bool(ms[k]), "status": e.status,
-                         "message": e.message})
-        line_buf.append((first, len(lam), phi, lam))
+        k = len(lam)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            dr = np.where(np.abs(lam) > 0, -lam.real / np.abs(lam), np.nan)
+            ld = np.where(lam.imag != 0, -2 * np.pi * lam.real / lam.imag, np.nan)
+        line_buf.append((len(rows), phi))
+        rows.append({**row, **eq, "_n": k, "mode_id": np.arange(1, k + 1),
+                     "mode": np.arange(1, k + 1), "freq_hz": lam.imag / (2 * np.pi),
+                     "eig_real_1_per_s": lam.real, "damping_ratio": dr, "log_dec": ld,
+                     "whirl": whirl, "kind": kind, "mode_stable": ms, "status": e.status,
+                     "message": e.message})
     flush()
 
 
@@ -441,18 +459,27 @@ def to_table(job: Job, rows: list[dict]) -> pa.Table:
     sch = schema(job.analysis, list(job.axes))
     cats = categories(job.analysis)
     cols = []
-    n = len(rows)
+    sizes = [r.get("_n", 1) for r in rows]
+    n = sum(sizes)
     for fld in sch:
         name = fld.name
         if name == "sweep_id":
             cols.append(pa.DictionaryArray.from_arrays(
                 pa.array(np.zeros(n, dtype=np.int8)), pa.array([job.sweep_id])))
             continue
-        vals = [r.get(name) for r in rows]
+        vals: list = []
+        for r, k in zip(rows, sizes):
+            x = r.get(name)
+            if isinstance(x, np.ndarray):
+                vals.extend(x.tolist())
+            elif k == 1:
+                vals.append(x)
+            else:
+                vals.extend([x] * k)
         if name in cats:
-            c = cats[name]
-            codes = pa.array([None if x is None else c.index(x) for x in vals], type=pa.int8())
-            cols.append(pa.DictionaryArray.from_arrays(codes, pa.array(c)))
+            code = {c: i for i, c in enumerate(cats[name])}
+            codes = pa.array([None if x is None else code[x] for x in vals], type=pa.int8())
+            cols.append(pa.DictionaryArray.from_arrays(codes, pa.array(cats[name])))
         elif name == "message":
             cols.append(pa.array(["" if x is None else str(x) for x in vals], type=STR))
         else:
