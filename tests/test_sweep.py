@@ -193,6 +193,19 @@ def test_directory_safety(sweep_dir, tmp_path):
         run_sweep(renamed, out, threads=1, resume=False)
 
 
+def test_failed_points_are_status_rows(tmp_path):
+    spec = tmp_path / "s.toml"
+    spec.write_text(SPEC.replace("config_ay_m = [-1.85e-3, 0.0]", "config_ay_m = [0.0, 0.05]")
+                    .replace("analysis = \"stability\"", "analysis = \"equilibrium\""))
+    res = run_sweep(spec, tmp_path / "o", threads=1)
+    df = res.to_frame()
+    assert res.complete and len(df) == 6
+    bad = df[(df["config_ay_m"] == 0.05) & (df["chamber_pressure_pa"] <= 0.1e6)]
+    # failed solves (no equilibrium with an open film), never the converged "contact" (issue 13)
+    assert (bad["status"] == "no_equilibrium").all() and bad["message"].str.contains("film").all()
+    assert (df[df["config_ay_m"] == 0.0]["status"] == "ok").all()
+
+
 @pytest.mark.skipif(os.geteuid() == 0, reason="root ignores directory permissions")
 def test_read_only_directory(tmp_path, sweep_dir):
     spec = sweep_dir[0]

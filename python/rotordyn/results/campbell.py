@@ -15,7 +15,9 @@ from rotordyn.results.modes import WHIRL_NAMES, log_dec
 class CampbellResult:
     """speeds_hz: (n_speeds,). eigenvalues: (n_speeds, n_modes) complex, 1/s, modes sorted by
     damped frequency at each speed. whirl: (n_speeds, n_modes) int (+1 forward, −1 backward,
-    0 planar)."""
+    0 planar). mode_id: (n_speeds, n_modes) int64 tracked id of each slot (eigenvector
+    continuity, :func:`rotordyn.analysis.tracking.track_modes`; −1 for no mode), or None when
+    the modes were not tracked (then a slot's index is its id)."""
 
     speeds_hz: np.ndarray
     eigenvalues: np.ndarray
@@ -25,6 +27,40 @@ class CampbellResult:
     message: str = ""
     kind: np.ndarray | None = None  # (n_speeds, n_modes) "rotor"/"sleeve" (systems with films)
     point_status: np.ndarray | None = None  # (n_speeds,) equilibrium status per speed
+    mode_id: np.ndarray | None = None  # (n_speeds, n_modes) tracked ids
+
+    def ids(self) -> np.ndarray:
+        """(n_speeds, n_modes) int64 mode ids: the tracked ones, else the slot index."""
+        if self.mode_id is not None:
+            return self.mode_id
+        ns, nm = self.eigenvalues.shape
+        return np.tile(np.arange(nm, dtype=np.int64), (ns, 1))
+
+    def tracked(self, values: np.ndarray | None = None) -> np.ndarray:
+        """Rearrange a (n_speeds, n_modes) array (default: the eigenvalues) by tracked mode:
+        (n_speeds, n_ids), column j the values of mode id j along the speeds (NaN where that
+        mode is absent). Plot these columns as curves: they cross where the modes cross."""
+        vals = self.eigenvalues if values is None else np.asarray(values)
+        ids = self.ids()
+        n_ids = int(ids.max()) + 1 if ids.size and ids.max() >= 0 else 0
+        dtype = vals.dtype if np.issubdtype(vals.dtype, np.inexact) else float
+        out = np.full((vals.shape[0], n_ids), np.nan, dtype=dtype)
+        i, j = np.nonzero(ids >= 0)
+        out[i, ids[i, j]] = vals[i, j]
+        return out
+
+    def __repr__(self) -> str:
+        ns, nm = self.eigenvalues.shape
+        try:
+            crit = self.critical_speeds()["speed_hz"].to_numpy()
+            cs = ", ".join(f"{x:.4g}" for x in crit[:6]) or "none"
+        except Exception:  # noqa: BLE001 - a repr never raises
+            cs = "?"
+        bad = 0 if self.point_status is None else int(np.sum(self.point_status != "ok"))
+        return (f"<CampbellResult {self.model}: {ns} speeds {self.speeds_hz[0]:g}–"
+                f"{self.speeds_hz[-1]:g} Hz × {nm} modes; forward 1× critical speeds (Hz): {cs}"
+                + (f"; {bad} speeds not ok" if bad else "")
+                + (f"; status {self.status}" if self.status != "ok" else "") + ">")
 
     @property
     def frequencies_hz(self) -> np.ndarray:
@@ -37,18 +73,22 @@ class CampbellResult:
 
     def critical_speeds(self, harmonic: float = 1.0, whirl: str | None = "forward") -> pd.DataFrame:
         """Speeds where a mode's damped frequency equals ``harmonic`` × running speed, by linear
-        interpolation between the computed speeds. ``whirl`` filters by the mode's whirl at the
-        crossing (None: any). Columns: mode, speed_hz, freq_hz, whirl."""
+        interpolation between the computed speeds along each tracked mode. ``whirl`` filters by
+        the mode's whirl at the crossing (None: any). Columns: mode (tracked id + 1),
+        speed_hz, freq_hz, whirl."""
         rows = []
         f = self.frequencies_hz
         if self.kind is not None:
             f = np.where(self.kind == "rotor", f, np.nan)
+        # Along the tracked curves: sorted slots swap modes where two frequencies cross.
+        f = self.tracked(f)
+        wh = self.tracked(self.whirl.astype(float))
         for j in range(f.shape[1]):
             g = f[:, j] - harmonic * self.speeds_hz
             for i in np.where(np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]:
                 t = g[i] / (g[i] - g[i + 1])
                 s = self.speeds_hz[i] + t * (self.speeds_hz[i + 1] - self.speeds_hz[i])
-                w = WHIRL_NAMES[int(self.whirl[i if t < 0.5 else i + 1, j])]
+                w = WHIRL_NAMES[int(wh[i if t < 0.5 else i + 1, j])]
                 if whirl is None or w == whirl:
                     rows.append({"mode": j + 1, "speed_hz": s, "freq_hz": harmonic * s,
                                  "whirl": w, "harmonic": harmonic})
@@ -71,6 +111,7 @@ class CampbellResult:
             "model": pd.Categorical([self.model] * (ns * nm)),
             "speed_hz": np.repeat(self.speeds_hz, nm),
             "mode": np.tile(np.arange(1, nm + 1, dtype=np.int64), ns),
+            "mode_id": self.ids().ravel(),
             "freq_hz": lam.imag / (2 * np.pi),
             "eig_real_1_per_s": lam.real,
             "log_dec": self.log_dec.ravel(),
@@ -83,24 +124,12 @@ class CampbellResult:
             df.insert(4, "kind", pd.Categorical(self.kind.ravel(), categories=["rotor", "sleeve"]))
         return df
 
-    def plot(self, ax=None, harmonics=(1.0,)):
-        """Frequencies against speed (forward solid, backward dashed) with n× lines."""
-        import matplotlib.pyplot as plt
+    def plot(self, ax=None, harmonics=(0.5, 1.0, 2.0), color_by: str = "log_dec",
+             critical: bool = True, rotor_only: bool = True):
+        """Campbell diagram (:func:`rotordyn.plot.campbell_diagram`): tracked modes coloured by
+        log decrement (or ``color_by="damping_ratio"``) with a colour bar, unstable stretches
+        red, forward/backward/planar solid/dashed/dotted, order lines, critical speeds."""
+        from rotordyn.plot.frequency import campbell_diagram
 
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 5))
-        f = self.frequencies_hz
-        if self.kind is not None:
-            f = np.where(self.kind == "rotor", f, np.nan)  # the paper omits the sleeve curves
-        for j in range(f.shape[1]):
-            fw = np.where(self.whirl[:, j] >= 0, f[:, j], np.nan)
-            bw = np.where(self.whirl[:, j] < 0, f[:, j], np.nan)
-            ax.plot(self.speeds_hz, fw, "-", color=f"C{j % 10}")
-            ax.plot(self.speeds_hz, bw, "--", color=f"C{j % 10}")
-        for h in harmonics:
-            ax.plot(self.speeds_hz, h * self.speeds_hz, "k:", lw=1, label=f"{h:g}× speed")
-        ax.set_xlabel("speed (Hz)")
-        ax.set_ylabel("damped natural frequency (Hz)")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize="small")
-        return ax
+        return campbell_diagram(self, ax=ax, color_by=color_by, harmonics=harmonics,
+                                critical=critical, rotor_only=rotor_only)

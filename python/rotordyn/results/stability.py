@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from rotordyn.results.equilibrium import EquilibriumResult
+from rotordyn.results.equilibrium import CONVERGED, STATUSES, EquilibriumResult
 from rotordyn.results.modes import damping_ratio, log_dec
 
 
@@ -38,6 +38,11 @@ class LinearModel:
     def status(self) -> str:
         return self.equilibrium.status
 
+    def __repr__(self) -> str:
+        return (f"<LinearModel {self.speed_hz:g} Hz, {self.M.shape[0]} coordinates "
+                f"({', '.join(self.labels[:4])}{', …' if len(self.labels) > 4 else ''}), "
+                f"equilibrium {self.status}, K_H/D_H by {self.method}>")
+
     def state_matrix(self) -> np.ndarray:
         """A of ẋ = A x, x = [Δr; Δṙ], (2n, 2n)."""
         n = self.M.shape[0]
@@ -62,7 +67,8 @@ class StabilityResult:
     eigenvalues: (n_modes,) complex 1/s, ascending damped frequency; whirl: (n_modes,) str;
     kind: (n_modes,) "rotor" or "sleeve" (where the mode's kinetic energy lies);
     rotor_shapes: (n_nodes, 4, n_modes) complex, expanded to every rotor FE node;
-    sleeve_shapes: {bearing index: (n_sleeve_dof, n_modes)} expanded to the full sleeve FEM.
+    sleeve_shapes: {bearing index: (n_sleeve_dof, n_modes)} expanded to the full sleeve FEM;
+    modes: (n, n_modes) complex shapes on the system coordinates (for mode tracking), or None.
     """
 
     linear: LinearModel
@@ -73,10 +79,23 @@ class StabilityResult:
     sleeve_shapes: dict = field(default_factory=dict)
     status: str = "ok"
     message: str = ""
+    modes: np.ndarray | None = None
 
     @property
     def speed_hz(self) -> float:
         return self.linear.speed_hz
+
+    def __repr__(self) -> str:
+        e = self.linear.equilibrium
+        head = (f"<StabilityResult {'stable' if self.stable else 'UNSTABLE'} ({self.status}): "
+                f"{self.speed_hz:g} Hz, p_c = {e.chamber_pressure_pa / 1e6:g} MPa, "
+                f"{len(self.eigenvalues)} modes")
+        if len(self.eigenvalues):
+            j = int(np.argmax(self.eigenvalues.real))
+            head += (f"; least damped {self.frequencies_hz[j]:.4g} Hz {self.whirl[j]} "
+                     f"{self.kind[j]} mode, Re λ = {self.eigenvalues.real[j]:.3g} 1/s, "
+                     f"log dec {self.log_dec[j]:.3g}")
+        return head + ">"
 
     @property
     def frequencies_hz(self) -> np.ndarray:
@@ -99,10 +118,20 @@ class StabilityResult:
     def stable(self) -> bool:
         """No eigenvalue grows (paper §6.2): every Re λ < 1e-9 |λ|. Real parts within that
         round-off band of zero (an undamped rotor) count as marginally stable, not unstable."""
-        if self.status not in ("ok", "contact") or len(self.eigenvalues) == 0:
+        if self.status not in CONVERGED or len(self.eigenvalues) == 0:
             return False
         lam = self.eigenvalues
         return bool(np.all(lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)))
+
+    def plot(self, mode: int | None = None, ax=None, system=None):
+        """3-D whirl orbits of ``mode`` (0-based; default: the least damped rotor mode) along
+        the rotor (:func:`rotordyn.plot.mode_shape`)."""
+        from rotordyn.plot.shapes import mode_shape
+
+        if mode is None:
+            re = np.where(self.kind == "rotor", self.eigenvalues.real, -np.inf)
+            mode = int(np.argmax(re))
+        return mode_shape(self, mode, ax=ax, system=system)
 
     def to_frame(self) -> pd.DataFrame:
         """One row per mode: operating point, eigenvalue, frequency, damping, whirl, kind."""
@@ -121,8 +150,6 @@ class StabilityResult:
             "whirl": pd.Categorical(self.whirl, categories=["forward", "backward", "planar"]),
             "kind": pd.Categorical(self.kind, categories=["rotor", "sleeve"]),
             "stable": np.full(n, self.stable),
-            "status": pd.Categorical([self.status] * n,
-                                     categories=["ok", "no_equilibrium", "contact",
-                                                 "not_converged", "error"]),
+            "status": pd.Categorical([self.status] * n, categories=list(STATUSES)),
             "message": [self.message] * n,
         })

@@ -1,0 +1,124 @@
+"""Mode tracking along a line of operating points (speed, chamber pressure, configuration) by
+eigenvector continuity: the modal assurance criterion (MAC) between consecutive points,
+completed by the eigenvalue distance, and a one-to-one assignment (Hungarian algorithm).
+
+Sorting the modes by frequency at each point mislabels them where two frequency curves cross
+(the "mode 1" of a sorted Campbell diagram jumps from one physical mode to another). Tracking
+follows each mode's shape instead: through a *crossing* (two modes of different shape whose
+frequencies cross) the ids follow the shapes and the curves cross; through a *veering* (the
+frequencies approach, do not cross, and the shapes exchange continuously) the ids follow the
+continuous branches, provided the points are fine enough to resolve the exchange.
+
+MAC (Allemang & Brown 1982): MAC(a, b) = |a^H W b|² / ((a^H W a)(b^H W b)), with W the identity
+or a (mass) weighting matrix.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import linear_sum_assignment
+
+from rotordyn.errors import InputError
+
+__all__ = ["mac", "track_modes"]
+
+
+def mac(phi_a: np.ndarray, phi_b: np.ndarray, weight: np.ndarray | None = None) -> np.ndarray:
+    """Modal assurance criterion between the columns of ``phi_a`` (n, ka) and ``phi_b`` (n, kb):
+    (ka, kb) array in [0, 1]; 1 for proportional shapes (any complex scale). ``weight``: optional
+    (n, n) Hermitian positive (semi-)definite matrix, e.g. the mass matrix."""
+    a = np.asarray(phi_a, dtype=complex)
+    b = np.asarray(phi_b, dtype=complex)
+    if a.ndim != 2 or b.ndim != 2 or a.shape[0] != b.shape[0]:
+        raise InputError(f"mac: expected shapes (n, ka) and (n, kb), got {a.shape} and {b.shape}")
+    wb = b if weight is None else np.asarray(weight) @ b
+    wa = a if weight is None else np.asarray(weight) @ a
+    cross = np.abs(a.conj().T @ wb) ** 2
+    na = np.real(np.einsum("ik,ik->k", a.conj(), wa))
+    nb = np.real(np.einsum("ik,ik->k", b.conj(), wb))
+    den = np.outer(na, nb)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out = np.where(den > 0, cross / np.where(den > 0, den, 1.0), 0.0)
+    return np.clip(out, 0.0, 1.0)
+
+
+def track_modes(eigenvalues: np.ndarray, shapes=None, *, weight: np.ndarray | None = None,
+                eig_weight: float = 0.2, min_mac: float = 0.3) -> np.ndarray:
+    """Tracked mode ids along a line of points.
+
+    eigenvalues: (n_points, k) complex, 1/s, the modes of each point in any order (NaN for a
+    point or a slot without a mode). shapes: (n_points, n, k) complex (or a list of (n, k_i)
+    arrays padded to k), the matching mode shapes on one set of coordinates; None tracks by
+    eigenvalue proximity alone. Returns ``mode_id``: (n_points, k) int64, the id of each slot,
+    -1 where there is no mode. Ids start at 0 in the order of the first point's slots; a mode
+    that appears later (e.g. it enters a truncated set of the lowest modes) gets the next
+    unused id.
+
+    Each point is matched with the last point where a mode was seen, by the assignment that
+    minimises Σ (1 − MAC) + eig_weight·|Δλ|/scale, scale = max(|λ|) over the two points.
+    A pair with MAC < ``min_mac`` (with shapes) or whose eigenvalues differ by more than 10 % of
+    the scale (without shapes) is not matched: the slot starts a new id (a mode that leaves a
+    truncated set and another that enters it are not joined).
+    """
+    lam = np.asarray(eigenvalues, dtype=complex)
+    if lam.ndim != 2:
+        raise InputError(f"eigenvalues: expected shape (n_points, n_modes), got {lam.shape}")
+    n_pts, k = lam.shape
+    phi = None
+    if shapes is not None:
+        if isinstance(shapes, (list, tuple)):
+            n = max((np.asarray(s).shape[0] for s in shapes if s is not None), default=0)
+            phi = np.full((n_pts, n, k), np.nan + 0j)
+            for i, s in enumerate(shapes):
+                if s is None:
+                    continue
+                s = np.asarray(s, dtype=complex)
+                phi[i, :, :s.shape[1]] = s
+        else:
+            phi = np.asarray(shapes, dtype=complex)
+        if phi.ndim != 3 or phi.shape[0] != n_pts or phi.shape[2] != k:
+            raise InputError(f"shapes: expected shape ({n_pts}, n, {k}), got {phi.shape}")
+    for name, x in (("eig_weight", eig_weight), ("min_mac", min_mac)):
+        if not np.isfinite(x) or x < 0:
+            raise InputError(f"{name}: expected a finite value >= 0, got {x!r}")
+
+    ids = np.full((n_pts, k), -1, dtype=np.int64)
+    next_id = 0
+    # Last seen eigenvalue and shape of every id.
+    last_lam: dict[int, complex] = {}
+    last_phi: dict[int, np.ndarray] = {}
+    for i in range(n_pts):
+        present = np.isfinite(lam[i])
+        if phi is not None:
+            present &= np.all(np.isfinite(phi[i]), axis=0)
+        slots = np.flatnonzero(present)
+        if slots.size == 0:
+            continue
+        known = sorted(last_lam)
+        assigned = {}
+        if known:
+            lk = np.array([last_lam[j] for j in known])
+            li = lam[i, slots]
+            scale = max(np.max(np.abs(lk)), np.max(np.abs(li)), 1e-300)
+            dist = np.abs(li[:, None] - lk[None, :]) / scale
+            if phi is not None:
+                pk = np.stack([last_phi[j] for j in known], axis=1)
+                m = mac(phi[i][:, slots], pk, weight)
+            else:
+                m = np.ones_like(dist)
+            cost = (1.0 - m) + eig_weight * dist
+            rows, cols = linear_sum_assignment(cost)
+            for r, c in zip(rows, cols):
+                if (m[r, c] < min_mac) if phi is not None else (dist[r, c] > 0.1):
+                    continue
+                assigned[slots[r]] = known[c]
+        for s in slots:
+            if s not in assigned:
+                assigned[s] = next_id
+                next_id += 1
+            j = assigned[s]
+            ids[i, s] = j
+            last_lam[j] = lam[i, s]
+            if phi is not None:
+                last_phi[j] = phi[i][:, s]
+    return ids
