@@ -117,3 +117,53 @@ def test_threshold_per_line_matches_api(tmp_path):
         if not len(want):
             assert (g["status"] == "no_crossing").all() and len(g) == 1
     assert (df["status"] == "ok").sum() >= 2  # a band: both crossings kept
+
+
+TRACK = """
+schema = "rotordyn/sweep/1"
+name = "t-track"
+model = "friswell-5.9.1"
+analysis = "stability"
+chunk_size = 100
+
+[grid]
+speed_hz = [0.0, {speed}]
+"supports.0.kxx_n_per_m" = {{start = 0.5e6, stop = 2.0e6, num = 30}}
+
+[options]
+n_modes = 4
+line = "supports.0.kxx_n_per_m"
+"""
+
+
+def test_mode_tracking_through_a_crossing_and_a_veering(tmp_path):
+    """Friswell et al. (2010) Example 5.9.1 with the x-stiffness of bearing 0 swept through
+    the isotropic 1 MN/m. At rest the x and y modes are uncoupled: the y modes keep the
+    isotropic rotor's frequencies 86.658 and 274.313 rad/s whatever k_xx, and the x modes
+    cross them. Tracking (MAC) keeps each id on one shape: the tracked y modes are constant
+    while the frequency-sorted slots swap. At 4000 rev/min the gyroscopic coupling makes the
+    curves veer: the tracked ids follow the continuous branches (never swap), whose
+    frequencies bracket the isotropic rotor's 85.389 (BW) and 87.796 (FW) rad/s at
+    k_xx = 1 MN/m, each with one whirl direction."""
+    res = run_sweep(_write(tmp_path, TRACK.format(speed=4000 / 60)), tmp_path / "o",
+                    threads=1)
+    df = res.to_frame()
+    assert res.complete and (df["status"] == "ok").all()
+    k = "supports.0.kxx_n_per_m"
+    rest = df[df["speed_hz"] == 0.0].pivot(index=k, columns="mode_id", values="freq_hz")
+    w_y = [86.658 / (2 * math.pi), 274.313 / (2 * math.pi)]
+    const = [j for j in rest.columns if np.ptp(rest[j]) < 1e-6 * rest[j].mean()]
+    assert len(const) == 2
+    np.testing.assert_allclose(sorted(rest[const].mean()), w_y, rtol=2e-5)
+    slot = df[df["speed_hz"] == 0.0].pivot(index=k, columns="mode", values="mode_id")
+    assert (slot[1] != slot[1].iloc[0]).any()  # the sorted slot 1 changes mode: a crossing
+    spin = df[df["speed_hz"] > 0]
+    ids = spin.pivot(index=k, columns="mode", values="mode_id")
+    assert (ids[1] == ids[1].iloc[0]).all() and (ids[2] == ids[2].iloc[0]).all()  # veering
+    f = spin.pivot(index=k, columns="mode_id", values="freq_hz")
+    kk = f.index.to_numpy()
+    i = np.searchsorted(kk, 1e6)
+    assert f.iloc[i - 1, 0] < 85.389 / (2 * math.pi) < f.iloc[i, 0]
+    assert f.iloc[i - 1, 1] < 87.796 / (2 * math.pi) < f.iloc[i, 1]
+    wh = spin.pivot(index=k, columns="mode_id", values="whirl")
+    assert all(wh[j].nunique() == 1 for j in wh.columns)

@@ -89,7 +89,8 @@ _EQ = {"method": _opt_choice("newton", "successive"), "tol": _opt_range(0.0, 1e-
 _LIN = {"linearization": _opt_choice("perturbation", "finite_difference")}
 OPTIONS = {
     "equilibrium": dict(_EQ),
-    "stability": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "track": _opt_bool},
+    "stability": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "track": _opt_bool,
+                  "line": _opt_axis},
     "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000)},
     "threshold": {"vary": _opt_axis, "exclude_sleeve_modes": _opt_bool,
                   "xtol": _opt_range(0.0, math.inf)},
@@ -264,6 +265,8 @@ class SweepSpec:
                         f"options.resolution: {res} - 1 must be a multiple of the coarse "
                         f"grid's {n0} - 1 intervals of grid.{ax} (the refined grid nests "
                         "the coarse one)")
+        if "line" in self.options and self.options["line"] not in self.axes:
+            raise InputError(f"options.line: {self.options['line']!r} is not a grid axis")
         if a in ("campbell", "unbalance") and len(self.axes.get("speed_hz", ())) < 2:
             raise InputError(f"grid.speed_hz: analysis {a!r} needs a speed axis with >= 2 "
                              "values")
@@ -331,6 +334,8 @@ class SweepSpec:
             return self.options["vary"]
         if self.analysis in ("campbell", "unbalance"):
             return "speed_hz"
+        if self.analysis == "stability" and "line" in self.options:
+            return self.options["line"]
         if self.analysis == "stability" and self.options.get("track", True) \
                 and len(self.axes.get("speed_hz", ())) > 1:
             return "speed_hz"

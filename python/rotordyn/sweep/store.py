@@ -50,6 +50,8 @@ def _io(path, exc: OSError) -> InputError:
 
 
 def _pid_alive(pid: int) -> bool:
+    if pid <= 0:
+        return False
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
@@ -87,31 +89,38 @@ class Store:
     def _lock(self) -> None:
         path = self.out / LOCK
         me = {"pid": os.getpid(), "host": socket.gethostname(), "started": time.time()}
-        for _ in range(2):
-            try:
-                fd = os.open(path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
-            except FileExistsError:
+        # The lock is created with its content in one step (a hard link to a written
+        # temporary file), so a driver killed at any moment never leaves an empty lock.
+        tmp = self.out / f"{TMP}lock-{me['pid']}"
+        try:
+            tmp.write_text(json.dumps(me))
+        except OSError as exc:
+            raise InputError(f"out: {str(self.out)!r} is not writable: "
+                             f"{exc.strerror or exc}") from None
+        try:
+            for _ in range(2):
                 try:
-                    other = json.loads(path.read_text())
-                    pid, host = int(other["pid"]), str(other["host"])
-                except (OSError, ValueError, KeyError, TypeError):
-                    other, pid, host = {}, -1, "?"
-                if host == me["host"] and (pid <= 0 or not _pid_alive(pid)):
-                    path.unlink(missing_ok=True)  # stale: its driver is gone
-                    continue
-                raise InputError(
-                    f"out: {str(self.out)!r} is in use by another sweep (pid {pid} on {host}); "
-                    f"wait for it to finish, or remove {str(path)!r} if that process is gone"
-                ) from None
-            except OSError as exc:
-                raise InputError(f"out: {str(self.out)!r} is not writable: "
-                                 f"{exc.strerror or exc}") from None
-            try:
-                os.write(fd, json.dumps(me).encode())
-            finally:
-                os.close(fd)
-            self._locked = True
-            return
+                    os.link(tmp, path)
+                except FileExistsError:
+                    try:
+                        other = json.loads(path.read_text())
+                        pid, host = int(other["pid"]), str(other["host"])
+                    except (OSError, ValueError, KeyError, TypeError):
+                        pid, host = -1, "?"
+                    if host == me["host"] and not _pid_alive(pid) or host == "?":
+                        path.unlink(missing_ok=True)  # stale: its driver is gone
+                        continue
+                    raise InputError(
+                        f"out: {str(self.out)!r} is in use by another sweep (pid {pid} on "
+                        f"{host}); wait for it to finish, or remove {str(path)!r} if that "
+                        "process is gone") from None
+                except OSError as exc:
+                    raise InputError(f"out: {str(self.out)!r} is not writable: "
+                                     f"{exc.strerror or exc}") from None
+                self._locked = True
+                return
+        finally:
+            tmp.unlink(missing_ok=True)
         raise InputError(f"out: could not lock {str(self.out)!r}")
 
     def close(self) -> None:

@@ -226,7 +226,9 @@ def _eigen(asm, e, f, opts, n_modes):
     kin_s = (np.real(np.einsum("ik,ij,jk->k", phi[sl].conj(), M[np.ix_(sl, sl)], phi[sl]))
              if sl else np.zeros(len(lam)))
     kind = np.where(kin_s > 0.5 * kin, "sleeve", "rotor")
-    whirl = np.array([WHIRL[int(x)] for x in res.whirl])
+    from rotordyn.results.modes import WHIRL_NAMES
+
+    whirl = np.array([WHIRL_NAMES[int(x)] for x in res.whirl])
     return lam, phi, whirl, kind
 
 
@@ -326,9 +328,11 @@ def _stab_rows(job, variants, chunk_id, lo, hi, rows):
     r_prev = None
     line_buf: list = []  # (first row index, phi) of the current line, for tracking
 
+    weight = [None]
+
     def flush():
         if track and line_buf:
-            track_line(rows, line_buf)
+            track_line(rows, line_buf, weight[0])
         line_buf.clear()
 
     for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
@@ -354,7 +358,8 @@ def _stab_rows(job, variants, chunk_id, lo, hi, rows):
         bc = _ref_bearing(asm)
         hmin = np.asarray(e.h_min)
         ms = _stable(lam)
-        eq = {"journal_x_m": float(r[bc.jx]), "journal_y_m": float(r[bc.jy]),
+        eq = {"journal_x_m": float(r[bc.jx]) if bc else math.nan,
+              "journal_y_m": float(r[bc.jy]) if bc else math.nan,
               "h_min_m": float(hmin.min()) if hmin.size else math.nan,
               "iterations": int(e.iterations), "point_stable": bool(ms.all()),
               "max_real_1_per_s": float(lam.real.max())}
@@ -362,8 +367,9 @@ def _stab_rows(job, variants, chunk_id, lo, hi, rows):
         with np.errstate(divide="ignore", invalid="ignore"):
             dr = np.where(np.abs(lam) > 0, -lam.real / np.abs(lam), np.nan)
             ld = np.where(lam.imag != 0, -2 * np.pi * lam.real / lam.imag, np.nan)
-        line_buf.append((len(rows), phi))
-        rows.append({**row, **eq, "_n": k, "mode_id": np.arange(1, k + 1),
+        line_buf.append((len(rows), lam, phi))
+        weight[0] = asm.mats[0]
+        rows.append({**row, **eq, "_n": k, "mode_id": np.arange(k),
                      "mode": np.arange(1, k + 1), "freq_hz": lam.imag / (2 * np.pi),
                      "eig_real_1_per_s": lam.real, "damping_ratio": dr, "log_dec": ld,
                      "whirl": whirl, "kind": kind, "mode_stable": ms, "status": e.status,
