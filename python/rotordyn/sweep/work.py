@@ -321,60 +321,110 @@ def _eq_rows(job, variants, chunk_id, lo, hi, rows):
 
 
 def _stab_rows(job, variants, chunk_id, lo, hi, rows):
+    """Stability points of a chunk through the C++ batch (one call per run of points sharing
+    a model and options): equilibrium continued along the line, K_H/D_H, eigen-analysis."""
     from rotordyn.sweep.tracking import track_line
 
-    n_modes = job.options.get("n_modes")
-    track = job.options.get("track", True)
-    r_prev = None
-    line_buf: list = []  # (first row index, phi) of the current line, for tracking
-
-    weight = [None]
+    items = []  # (row, asm, opts, line, (f, pc, a) or None, error)
+    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+        op = None
+        if not err:
+            try:
+                op = _operating(asm, p)
+            except RotordynError as exc:
+                err = f"{type(exc).__name__}: {exc}"
+        items.append([row, asm, opts, line, op, err])
+    # runs of consecutive valid points on one model with one set of options
+    out: list = [None] * len(items)
+    i = 0
+    while i < len(items):
+        if items[i][5]:
+            out[i] = (_fail(items[i][0], "error", items[i][5]), None, None)
+            i += 1
+            continue
+        j = i
+        while j + 1 < len(items) and not items[j + 1][5] and items[j + 1][1] is items[i][1] \
+                and items[j + 1][2] == items[i][2]:
+            j += 1
+        _stab_batch(job, items[i:j + 1], out, i, restart_first=True)
+        i = j + 1
+    # tracking along lines, rows in point order
+    weight = None
+    line_buf: list = []
 
     def flush():
-        if track and line_buf:
-            track_line(rows, line_buf, weight[0])
+        if job.options.get("track", True) and line_buf:
+            track_line(rows, line_buf, weight)
         line_buf.clear()
 
-    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
-        if not line:
+    for it, o in zip(items, out):
+        if not it[3]:
             flush()
-        if err:
-            rows.append(_fail(row, "error", err))
+        r, lam, phi = o
+        if lam is not None:
+            line_buf.append((len(rows), lam, phi))
+            weight = it[1].mats[0]
+        rows.append(r)
+    flush()
+
+
+def _stab_batch(job, seg, out, at, restart_first):
+    from rotordyn import _core
+    from rotordyn.analysis.linear import FD_REL_STEP
+    from rotordyn.units import hz_to_rad_s
+
+    asm, opts = seg[0][1], seg[0][2]
+    n_modes = job.options.get("n_modes") or 0
+    o = _core.EquilibriumOptions()
+    o.method = opts.get("method", "newton")
+    o.tol = float(opts.get("tol", 1e-10))
+    o.max_iter = int(opts.get("max_iter", 100))
+    o.pm = -1.0
+    o.contact_fraction = 0.02
+    restart = [1 if (k == 0 and restart_first) or not it[3] else 0 for k, it in enumerate(seg)]
+    res = _core.stability_batch(
+        asm.solver, np.array([hz_to_rad_s(it[4][0]) for it in seg]),
+        np.array([it[4][1] for it in seg]), np.array([it[4][2] for it in seg]), restart, o,
+        int(n_modes), opts.get("linearization", "perturbation") == "finite_difference",
+        FD_REL_STEP, asm.rotor.xy_pairs(), asm.rotor.rot_pairs(),
+        [i for bc in asm.bearings for i in bc.sleeve])
+    from rotordyn.results.modes import WHIRL_NAMES
+
+    bc = _ref_bearing(asm)
+    status, message = res.status, res.message
+    n_eig = np.asarray(res.n_eig)
+    R = np.asarray(res.r)
+    H = np.asarray(res.h_min)
+    EV = np.asarray(res.eigenvalues)
+    WH = np.asarray(res.whirl)
+    SS = np.asarray(res.sleeve_share)
+    IT = np.asarray(res.iterations)
+    modes = res.modes
+    names = np.array([WHIRL_NAMES[-1], WHIRL_NAMES[0], WHIRL_NAMES[1]])
+    for k, it in enumerate(seg):
+        row = it[0]
+        st = status[k] if status[k] in STATUS else "error"
+        ke = int(n_eig[k])
+        if st not in LINEARISABLE or ke == 0:
+            out[at + k] = (_fail(row, st, message[k] or "no equilibrium"), None, None)
             continue
-        try:
-            f, pc, a = _operating(asm, p)
-            e = _equilibrium(asm, f, pc, a, r_prev if line else None, opts)
-            r_prev = np.asarray(e.r) if e.status == "ok" else None
-            if e.status not in LINEARISABLE:
-                rows.append(_fail(row, e.status if e.status in STATUS else "error",
-                                  e.message or "no equilibrium"))
-                continue
-            lam, phi, whirl, kind = _eigen(asm, e, f, opts, n_modes)
-        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
-            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
-            r_prev = None
-            continue
-        r = np.asarray(e.r)
-        bc = _ref_bearing(asm)
-        hmin = np.asarray(e.h_min)
+        lam = EV[k, :ke]
         ms = _stable(lam)
-        eq = {"journal_x_m": float(r[bc.jx]) if bc else math.nan,
-              "journal_y_m": float(r[bc.jy]) if bc else math.nan,
-              "h_min_m": float(hmin.min()) if hmin.size else math.nan,
-              "iterations": int(e.iterations), "point_stable": bool(ms.all()),
-              "max_real_1_per_s": float(lam.real.max())}
-        k = len(lam)
         with np.errstate(divide="ignore", invalid="ignore"):
             dr = np.where(np.abs(lam) > 0, -lam.real / np.abs(lam), np.nan)
             ld = np.where(lam.imag != 0, -2 * np.pi * lam.real / lam.imag, np.nan)
-        line_buf.append((len(rows), lam, phi))
-        weight[0] = asm.mats[0]
-        rows.append({**row, **eq, "_n": k, "mode_id": np.arange(k),
-                     "mode": np.arange(1, k + 1), "freq_hz": lam.imag / (2 * np.pi),
-                     "eig_real_1_per_s": lam.real, "damping_ratio": dr, "log_dec": ld,
-                     "whirl": whirl, "kind": kind, "mode_stable": ms, "status": e.status,
-                     "message": e.message})
-    flush()
+        hm = H[k]
+        out[at + k] = ({**row, "_n": ke, "journal_x_m": float(R[k, bc.jx]) if bc else math.nan,
+                        "journal_y_m": float(R[k, bc.jy]) if bc else math.nan,
+                        "h_min_m": float(np.nanmin(hm)) if hm.size else math.nan,
+                        "iterations": int(IT[k]), "point_stable": bool(ms.all()),
+                        "max_real_1_per_s": float(lam.real.max()), "mode_id": np.arange(ke),
+                        "mode": np.arange(1, ke + 1), "freq_hz": lam.imag / (2 * np.pi),
+                        "eig_real_1_per_s": lam.real, "damping_ratio": dr, "log_dec": ld,
+                        "whirl": names[WH[k, :ke] + 1],
+                        "kind": np.where(SS[k, :ke] > 0.5, "sleeve", "rotor"),
+                        "mode_stable": ms, "status": st, "message": message[k]},
+                       lam, modes[k])
 
 
 def _wf_rows(job, variants, chunk_id, lo, hi, rows):
