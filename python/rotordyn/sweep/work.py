@@ -46,6 +46,8 @@ OUTPUTS = {
                   "phase_x_deg": F64, "phase_y_deg": F64, "major_m": F64, "minor_m": F64,
                   "peak": BOOL, "amplification_factor": F64, "separation_margin_pct": F64},
     "waterfall": {"freq_hz": F64, "order": F64, "amplitude_x_m": F64, "amplitude_y_m": F64},
+    "run-up": {"revolution": I64, "time_s": F64, "amplitude_x_m": F64, "amplitude_y_m": F64,
+               "h_min_m": F64},
 }
 OUTPUTS["campbell"] = OUTPUTS["stability"]
 
@@ -458,6 +460,52 @@ def _wf_rows(job, variants, chunk_id, lo, hi, rows):
                          "message": ""})
 
 
+def _runup_rows(job, variants, chunk_id, lo, hi, rows):
+    """A nonlinear run-up (or coast-down) per point: Ω(t) ramps from start_hz to stop_hz at
+    rate_hz_per_s (rotordyn.control.SpeedProfile); one row per revolution with its mean
+    speed (in ``speed_hz``), the half peak-to-peak journal motion of the active (or first)
+    bearing and the smallest film over that revolution."""
+    import rotordyn as rd
+    from rotordyn.control import SpeedProfile
+
+    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+        if err:
+            rows.append(_fail(row, "error", err))
+            continue
+        try:
+            _, pc, _ = _operating(asm, {**p, "speed_hz": opts["start_hz"]})
+            f0, f1, rate = opts["start_hz"], opts["stop_hz"], opts["rate_hz_per_s"]
+            prof = SpeedProfile.ramp(f0, f1, rate)
+            T = abs(f1 - f0) / rate
+            spr = int(opts.get("samples_per_revolution", 32))
+            revs = (f0 + f1) / 2 * T
+            tr = rd.transient(asm.system, T, chamber_pressure_pa=pc,
+                              config_ay_m=p.get("config_ay_m"), speed=prof,
+                              unbalances=[tuple(u) for u in opts["unbalances"]],
+                              n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)))
+        except (RotordynError, ArithmeticError, ValueError) as exc:
+            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
+            continue
+        bc = _ref_bearing(asm)
+        k = bc.index if bc else 0
+        rev = np.floor(np.asarray(tr.angle_rad) / (2 * np.pi)).astype(np.int64)
+        x, y = np.asarray(tr.journal_x_m)[:, k], np.asarray(tr.journal_y_m)[:, k]
+        h = np.asarray(tr.h_min_m)[:, k]
+        sp, t = np.asarray(tr.speed_hz_t), np.asarray(tr.t)
+        for n_rev in np.unique(rev):
+            m = rev == n_rev
+            if m.sum() < 2:
+                continue
+            rows.append({**row, "speed_hz": float(sp[m].mean()), "revolution": int(n_rev),
+                         "time_s": float(t[m].mean()),
+                         "amplitude_x_m": float(np.ptp(x[m]) / 2),
+                         "amplitude_y_m": float(np.ptp(y[m]) / 2), "h_min_m": float(h[m].min()),
+                         "status": tr.status if tr.status in STATUS else "error",
+                         "message": tr.message})
+        if tr.status != "ok" and not len(rev):
+            rows.append(_fail(row, tr.status if tr.status in STATUS else "error", tr.message))
+
+
 def _lines(job, lo, hi):
     """Split [lo, hi) into lines of the innermost axis."""
     n = job.shape[-1]
@@ -506,7 +554,7 @@ def _boundary_rows(job, variants, chunk_id, pids, rows):
 
 _ANALYSIS = {"equilibrium": _eq_rows, "stability": _stab_rows, "campbell": _stab_rows,
              "waterfall": _wf_rows, "threshold": _threshold_rows,
-             "unbalance": _unbalance_rows}
+             "unbalance": _unbalance_rows, "run-up": _runup_rows}
 
 
 def to_table(job: Job, rows: list[dict]) -> pa.Table:
