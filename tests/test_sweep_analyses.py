@@ -210,3 +210,43 @@ def test_run_up_passes_the_critical_speed_late_and_lower(tmp_path):
     f_run = df.loc[i, "speed_hz"]
     assert f_steady < f_run < 1.1 * f_steady
     assert df.loc[i, "amplitude_x_m"] < amp.max()
+
+
+UNBALANCE = """
+schema = "rotordyn/sweep/1"
+name = "t-unbalance"
+model = "paper-rig"
+analysis = "unbalance"
+chunk_size = 20
+
+[grid]
+chamber_pressure_pa = [0.2e6, 0.4e6]
+speed_hz = {start = 20.0, stop = 60.0, num = 41}
+
+[options]
+unbalances = [[6, 2.0e-5, 0.0]]
+operating_speed_hz = [50.0, 55.0]
+"""
+
+
+def test_unbalance_lines_match_the_api(tmp_path):
+    """Each speed line equals rotordyn.unbalance_response (same equilibria, K_H, D_H and
+    complex solve) to 1e-6 at the grid speeds, and a peak row sits at the grid speed nearest
+    each of UnbalanceResult.peaks' critical speeds."""
+    res = run_sweep(_write(tmp_path, UNBALANCE), tmp_path / "o", threads=2)
+    df = res.to_frame()
+    assert res.complete and (df["status"] == "ok").all() and len(df) == 82
+    rig = rd.models.paper_rig()
+    for pc, g in df.groupby("chamber_pressure_pa"):
+        u = rd.unbalance_response(rig, [(6, 2.0e-5, 0.0)], g["speed_hz"].to_numpy(),
+                                  chamber_pressure_pa=pc, operating_speed_hz=(50.0, 55.0))
+        on_grid = np.isin(u.speeds_hz, g["speed_hz"].to_numpy())  # the API refines peaks
+        np.testing.assert_allclose(g["amplitude_x_m"], np.abs(u.x[on_grid, 0]), rtol=1e-6)
+        pk = u.peaks()
+        got = g[g["peak"].astype(bool)]
+        assert len(got) == len(pk) >= 1
+        # the sweep's peak is a parabola through the 1 Hz grid (the API refines the speeds
+        # near a peak): within half a grid step
+        np.testing.assert_allclose(got["critical_speed_hz"], pk["critical_speed_hz"], atol=0.5)
+        assert np.all(np.abs(got["speed_hz"].to_numpy() - got["critical_speed_hz"]) <= 0.5)
+        assert (got["amplification_factor"] > 1).all()
