@@ -331,6 +331,9 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--out", default="out")
     s.set_defaults(func=_cmd_report)
     cli_bearing.register(sub)
+    from rotordyn import cli_control  # issue 8: `rotordyn control ...`
+
+    cli_control.register(sub)
     return p
 
 
