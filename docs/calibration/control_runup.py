@@ -143,17 +143,20 @@ def main():
             out.append(f"station {st}: {a1 / b1:.2f}x | {a2 / b2:.2f}x")
         print(f"  {name:9s} " + "; ".join(out))
 
+    suffix = "" if rate == 10.0 else f"_{rate:g}hz_s"
+    colours = {"passive": "C0", "schedule": "C1", "feedback": "C2"}
     fig, ax = plt.subplots(2, 2, figsize=(12, 7), sharex="col")
     for name in runs:
         for c, st in enumerate((JOURNAL, DISK)):
-            ax[0, c].semilogy(sp, amps[name][st] * 1e6, lw=0.8, label=f"{name} (run-up)")
+            ax[0, c].semilogy(sp, amps[name][st] * 1e6, lw=0.8, color=colours[name],
+                              label=f"{name} (run-up {rate:g} Hz/s)")
             df = lin[name]
             ax[0, c].semilogy(df.speed_hz, df[f"amplitude_m[{st}]"] * 1e6, lw=0.5, ls=":",
-                              label=f"{name} (linear steady)")
+                              color=colours[name], label=f"{name} (linear steady)")
             ax[0, c].set_title(f"station {st} ({'journal' if st == JOURNAL else 'disk B'})")
             ax[0, c].set_ylabel("1× amplitude (µm)")
         ax[1, 0].plot(runs[name].speed_hz_t, runs[name].chamber_pressure_actual_pa / 1e6,
-                      lw=0.6, label=name)
+                      lw=0.6, color=colours[name], label=name)
     ax[0, 0].legend(fontsize=7)
     ax[1, 0].set_ylabel("p_c (MPa)")
     ax[1, 0].set_xlabel("speed (Hz)")
@@ -164,7 +167,7 @@ def main():
     ax[1, 1].set_ylabel("p_c (MPa)")
     ax[1, 1].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(FIG / "control_runup.png", dpi=120)
+    fig.savefig(FIG / f"control_runup{suffix}.png", dpi=120)
 
     fig, ax = plt.subplots(1, 3, figsize=(14, 4.5), sharey=True)
     for a, (name, tr) in zip(ax, runs.items()):
@@ -176,8 +179,8 @@ def main():
         a.set_xlabel("frequency (Hz)")
     ax[0].set_ylabel("speed (Hz)")
     fig.colorbar(im, ax=ax, label="dB re 1 µm")
-    fig.savefig(FIG / "control_waterfalls.png", dpi=120)
-    print(f"wrote {FIG / 'control_runup.png'} and {FIG / 'control_waterfalls.png'}")
+    fig.savefig(FIG / f"control_waterfalls{suffix}.png", dpi=120)
+    print(f"wrote {FIG}/control_runup{suffix}.png and control_waterfalls{suffix}.png")
 
 
 if __name__ == "__main__":
