@@ -17,7 +17,9 @@ void bind_system(py::module_& m) {
           "cavitation", [](const FilmCoupling& f) { return std::string(cavitation_name(f.cavitation)); },
           [](FilmCoupling& f, const std::string& s) { f.cavitation = parse_cavitation(s); })
       .def_readwrite("coords", &FilmCoupling::coords)
-      .def_readwrite("shape", &FilmCoupling::shape);
+      .def_readwrite("shape", &FilmCoupling::shape)
+      .def_readwrite("base_h", &FilmCoupling::base_h)
+      .def_readwrite("spin_factor", &FilmCoupling::spin_factor);
 
   py::class_<SystemModel>(m, "SystemModel", "M, K, C, G, loads and films of eq. 12 (SI).")
       .def(py::init<>())
@@ -28,6 +30,7 @@ void bind_system(py::module_& m) {
       .def_readwrite("Q", &SystemModel::Q)
       .def_readwrite("chamber", &SystemModel::chamber)
       .def_readwrite("films", &SystemModel::films)
+      .def_readwrite("tables", &SystemModel::tables)
       .def("validate", &SystemModel::validate);
 
   py::class_<EquilibriumOptions>(m, "EquilibriumOptions")
@@ -77,6 +80,9 @@ void bind_system(py::module_& m) {
            py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"), py::arg("options"), gil())
       .def_property_readonly("reynolds_solves", &SystemSolver::reynolds_solves)
       .def_property_readonly("last_h_min", &SystemSolver::last_h_min)
+      .def("film_h_min", &SystemSolver::film_h_min, py::arg("r"),
+           "Minimum film thickness of each film at positions r (n,), m, from the geometry "
+           "alone (no Reynolds solve).")
       .def("last_pressure", &SystemSolver::last_pressure, py::arg("film"));
 }
 

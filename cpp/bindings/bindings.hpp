@@ -12,8 +12,10 @@ void bind_errors(py::module_& m);
 void bind_info(py::module_& m);
 void bind_rotor(py::module_& m);
 void bind_modal(py::module_& m);
+void bind_harmonic(py::module_& m);
 void bind_system(py::module_& m);
 void bind_transient(py::module_& m);
 void bind_reynolds(py::module_& m);
 void bind_sleeve(py::module_& m);
+void bind_bearings(py::module_& m);
 }  // namespace rotordyn::py_bind

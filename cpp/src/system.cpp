@@ -52,7 +52,16 @@ void SystemModel::validate() const {
     require(f.shape.rows() == f.grid.n_circ && f.shape.cols() == static_cast<long>(f.coords.size()),
             shape_msg(w + ".shape", f.grid.n_circ, static_cast<long>(f.coords.size()),
                       f.shape.rows(), f.shape.cols()));
+    require(f.base_h.size() == 0 ||
+                (f.base_h.rows() == f.grid.n_circ &&
+                 (f.base_h.cols() == 1 || f.base_h.cols() == f.grid.n_axial + 1) &&
+                 f.base_h.allFinite() && f.base_h.minCoeff() > 0.0),
+            w + ".base_h: expected (n_circ, 1) or (n_circ, n_axial + 1) finite values > 0, "
+                "or empty");
+    require(std::isfinite(f.spin_factor), w + ".spin_factor: expected a finite value");
   }
+  for (std::size_t i = 0; i < tables.size(); ++i)
+    tables[i].validate("tables[" + std::to_string(i) + "]", nn);
 }
 
 SystemSolver::SystemSolver(SystemModel model) : model_(std::move(model)) {
@@ -85,18 +94,23 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
       rc(k) = r(fc.coords[k]);
       vc(k) = rdot(fc.coords[k]);
     }
-    const Eigen::VectorXd hphi =
-        Eigen::VectorXd::Constant(fc.grid.n_circ, fc.geometry.clearance_m) + fc.shape * rc;
+    const int K1 = fc.grid.n_axial + 1;
+    const Eigen::VectorXd sphi = fc.shape * rc;
     const Eigen::VectorXd vphi = fc.shape * vc;
-    if (!(hphi.minCoeff() > 0.0) || !hphi.allFinite()) {
+    if (fc.base_h.size() == 0)
+      f.h = (sphi.array() + fc.geometry.clearance_m).matrix().replicate(1, K1);
+    else if (fc.base_h.cols() == 1)
+      f.h = (fc.base_h.col(0) + sphi).replicate(1, K1);
+    else
+      f.h = fc.base_h + sphi.replicate(1, K1);
+    if (!(f.h.minCoeff() > 0.0) || !f.h.allFinite()) {
       std::ostringstream os;
-      os << "film '" << fc.name << "': contact, the film thickness reaches " << hphi.minCoeff()
+      os << "film '" << fc.name << "': contact, the film thickness reaches " << f.h.minCoeff()
          << " m (clearance " << fc.geometry.clearance_m << " m)";
       throw ContactError(os.str());
     }
-    f.h = hphi.replicate(1, fc.grid.n_axial + 1);
-    f.dhdt = vphi.replicate(1, fc.grid.n_axial + 1);
-    const FilmSolution& s = f.solver.solve(f.h, f.dhdt, omega);
+    f.dhdt = vphi.replicate(1, K1);
+    const FilmSolution& s = f.solver.solve(f.h, f.dhdt, fc.spin_factor * omega);
     ++solves_;
     f.p = s.p_pa;
     h_min_[i] = s.h_min_m;
@@ -108,6 +122,23 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
   last_omega_ = omega;
 }
 
+std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
+  require(r.size() == model_.n(), shape_msg("r", model_.n(), 1, r.size(), 1));
+  std::vector<double> out(model_.films.size());
+  for (std::size_t i = 0; i < model_.films.size(); ++i) {
+    const FilmCoupling& fc = model_.films[i];
+    double hmin = INFINITY;
+    for (Eigen::Index j = 0; j < fc.shape.rows(); ++j) {
+      double h = fc.geometry.clearance_m;
+      for (std::size_t k = 0; k < fc.coords.size(); ++k)
+        h += fc.shape(j, static_cast<Eigen::Index>(k)) * r(fc.coords[k]);
+      hmin = std::min(hmin, h);
+    }
+    out[i] = hmin;
+  }
+  return out;
+}
+
 Eigen::VectorXd SystemSolver::film_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
                                           double omega) {
   solve_films(r, rdot, omega);
@@ -117,6 +148,7 @@ Eigen::VectorXd SystemSolver::film_forces(const Eigen::VectorXd& r, const Eigen:
     const Eigen::VectorXd hk = films_[i]->integrate(films_[i]->p, fc.shape);
     for (std::size_t k = 0; k < fc.coords.size(); ++k) H(fc.coords[k]) += hk(k);
   }
+  add_table_forces(r, rdot, omega, H);
   return H;
 }
 
@@ -139,6 +171,33 @@ void SystemSolver::linearize_last_solve(bool damping, Eigen::MatrixXd& KH,
       for (std::size_t k = 0; k < fc.coords.size(); ++k)
         (*DH)(fc.coords[k], fc.coords[j]) += dd(k);
     }
+  }
+  add_table_coefficients(last_omega_, KH, DH);
+}
+
+void SystemSolver::add_table_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
+                                    double omega, Eigen::VectorXd& H) const {
+  Eigen::Matrix2d Kt, Ct;
+  for (const TableCoupling& t : model_.tables) {
+    t.at(omega, Kt, Ct);
+    const Eigen::Vector2d q(r(t.coords[0]), r(t.coords[1]));
+    const Eigen::Vector2d v(rdot(t.coords[0]), rdot(t.coords[1]));
+    const Eigen::Vector2d f = -Kt * q - Ct * v;
+    H(t.coords[0]) += f(0);
+    H(t.coords[1]) += f(1);
+  }
+}
+
+void SystemSolver::add_table_coefficients(double omega, Eigen::MatrixXd& KH,
+                                          Eigen::MatrixXd* DH) const {
+  Eigen::Matrix2d Kt, Ct;
+  for (const TableCoupling& t : model_.tables) {
+    t.at(omega, Kt, Ct);
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) {
+        KH(t.coords[a], t.coords[b]) += Kt(a, b);
+        if (DH) (*DH)(t.coords[a], t.coords[b]) += Ct(a, b);
+      }
   }
 }
 
@@ -164,12 +223,32 @@ Linearization SystemSolver::linearize_fd(const Eigen::VectorXd& r, double omega,
     for (int j : fc.coords) {
       if (out.KH.col(j).cwiseAbs().sum() != 0.0) continue;  // already done (shared coordinate)
       const double dx = rel_step * fc.geometry.clearance_m, dv = dx * wref;
+      // A step lost in round-off (r ± dx == r) would give K_H = D_H = 0 with no error
+      // (issue 13: rel_step = 1e-300): refuse steps that r(j) cannot resolve to 1 %.
+      const double span = (r(j) + dx) - (r(j) - dx);
+      require(std::abs(span - 2 * dx) <= 0.01 * 2 * dx && std::isfinite(dv) && dv > 0,
+              "rel_step: the step " + std::to_string(dx) + " m is below the round-off of the "
+              "coordinate " + std::to_string(r(j)) + " m; use rel_step >= 1e-10");
       Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
       e(j) = dx;
       out.KH.col(j) = -(film_forces(r + e, zero, omega) - film_forces(r - e, zero, omega)) /
                       (2 * dx);
       e(j) = dv;
       out.DH.col(j) = -(film_forces(r, e, omega) - film_forces(r, -e, omega)) / (2 * dv);
+    }
+  }
+  // Tables are linear: their coefficients enter exactly (the differences above skip them
+  // unless a film shares the coordinate, whose columns then hold both: subtract nothing).
+  for (const TableCoupling& t : model_.tables) {
+    Eigen::Matrix2d Kt, Ct;
+    t.at(omega, Kt, Ct);
+    for (int b = 0; b < 2; ++b) {
+      const int j = t.coords[b];
+      if (out.KH.col(j).cwiseAbs().sum() != 0.0) continue;  // differenced with a film above
+      for (int a = 0; a < 2; ++a) {
+        out.KH(t.coords[a], j) += Kt(a, b);
+        out.DH(t.coords[a], j) += Ct(a, b);
+      }
     }
   }
   film_forces(r, zero, omega);  // leave the solvers at the operating point

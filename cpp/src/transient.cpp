@@ -265,8 +265,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   const SystemModel& m = solver.model();
   const Eigen::Index n = m.n();
   auto vec_ok = [&](const Eigen::VectorXd& v, const char* name, bool allow_empty) {
-    require((allow_empty && v.size() == 0) || (v.size() == n && v.allFinite()),
-            shape_msg(name, n, 1, v.size(), 1));
+    require((allow_empty && v.size() == 0) || v.size() == n, shape_msg(name, n, 1, v.size(), 1));
+    require(v.allFinite(), std::string(name) + ": expected finite values");
   };
   vec_ok(in.a, "a", false);
   vec_ok(in.r0, "r0", false);
@@ -445,12 +445,9 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     if (c.na) out.actuator_states.row(i) = Y.segment(2 * n, c.na).transpose();
     if (c.kcont) out.controller_states.row(i) = Y.tail(c.nk).transpose();
     if (c.kdisc) out.controller_states.row(i) = c.xk.transpose();
-    try {
-      solver.film_forces(Y.head(n), Y.segment(n, n), P.omega);
-      for (std::size_t k = 0; k < m.films.size(); ++k)
-        out.h_min(i, static_cast<Eigen::Index>(k)) = solver.last_h_min()[k];
-    } catch (const ContactError&) {
-    }
+    // The film thickness needs no pressure: from the geometry, not a Reynolds solve.
+    const std::vector<double> hm = solver.film_h_min(Y.head(n));
+    for (std::size_t k = 0; k < hm.size(); ++k) out.h_min(i, static_cast<Eigen::Index>(k)) = hm[k];
   }
   harvest();
   cleanup();

@@ -400,6 +400,23 @@ class JournalBearing:
             iterations=int(e.iterations),
         )
 
+    def coefficient_table(self, speeds_hz, load_n, *, n_threads: int = 1):
+        """Static equilibrium under ``load_n`` (N, on the journal) and K, C at each speed in
+        ``speeds_hz`` (Hz), in one C++ call parallel over speeds (``n_threads``, 0: all
+        cores): a :class:`rotordyn.bearings.CoefficientTable` (``.to_frame()``,
+        ``.to_csv()``; a failing speed is a NaN row with its status)."""
+        from rotordyn.bearings._element import coefficient_table
+        from rotordyn.bearings._film import SystemParts
+
+        g, grid = self.to_core()
+        f = _core.FilmCoupling()
+        f.name, f.geometry, f.grid, f.cavitation = "bearing", g, grid, self.cavitation
+        f.coords = [0, 1]
+        phi = TWO_PI * np.arange(self.n_circ) / self.n_circ
+        f.shape = np.column_stack([-np.cos(phi), -np.sin(phi)])
+        return coefficient_table(SystemParts(films=[f], tables=[]), load_n, speeds_hz,
+                                 self.clearance_m, n_threads=n_threads)
+
     # -- batches -------------------------------------------------------------------------
     _STATUS_ERRORS = {1: "InputError", 2: "ContactError", 3: "ConvergenceError", 4: "RotordynError"}
 

@@ -27,6 +27,29 @@ struct FilmCoupling {
   Cavitation cavitation = Cavitation::reynolds;
   std::vector<int> coords;  ///< indices into r: journal x, journal y, then sleeve coordinates
   RowMatrixXd shape;        ///< (n_circ, n_coords): ∂h/∂r_k at the grid angles, m/m
+  /// Film thickness at r = 0 (lobes, preload, pad geometry, dam step), m: (n_circ, 1), or
+  /// (n_circ, n_axial + 1) when it varies along z; empty: the clearance everywhere (plain
+  /// bush). h = base_h + S r.
+  RowMatrixXd base_h;
+  /// The film's surface speed is spin_factor·Ω: 1 for a journal bearing, 0 for a
+  /// squeeze-film damper (the damper journal does not spin).
+  double spin_factor = 1.0;
+};
+
+/// Linear bearing with speed-dependent coefficients (bearing tables): force on the two
+/// coordinates (x, y) = −K(Ω) q − C(Ω) q̇, K and C interpolated linearly in Ω between
+/// table rows. Outside [omegas.front(), omegas.back()] an InputError names the speed unless
+/// `extrapolate` (then the end intervals are extended linearly).
+struct TableCoupling {
+  std::string name;
+  std::vector<int> coords;  ///< (2,): x, y indices into r
+  Eigen::VectorXd omegas;   ///< (n_s,) rad/s, strictly increasing
+  RowMatrixXd K;            ///< (n_s, 4): kxx kxy kyx kyy, N/m
+  RowMatrixXd C;            ///< (n_s, 4): cxx cxy cyx cyy, N·s/m
+  bool extrapolate = false;
+  /// K(Ω), C(Ω) (2×2 each). InputError outside the table unless extrapolate.
+  void at(double omega, Eigen::Matrix2d& Kout, Eigen::Matrix2d& Cout) const;
+  void validate(const std::string& where, Eigen::Index n) const;
 };
 
 /// Linear matrices, loads and films of the system (SI). n = total coordinates.
@@ -35,6 +58,7 @@ struct SystemModel {
   Eigen::VectorXd Q;           ///< (n,) static load (gravity), N
   Eigen::VectorXd chamber;     ///< (n,) chamber force per unit chamber pressure, N/Pa
   std::vector<FilmCoupling> films;
+  std::vector<TableCoupling> tables;
   Eigen::Index n() const { return M.rows(); }
   void validate() const;  ///< shapes and indices; InputError naming the field
 };
@@ -97,6 +121,10 @@ class SystemSolver {
                                 const Eigen::VectorXd& r0, const EquilibriumOptions& opt);
 
   int reynolds_solves() const { return solves_; }
+  /// Minimum film thickness of each film at positions r (n,), m, from the geometry alone
+  /// (h = c + S r over the grid angles, eq. 3): no Reynolds solve, no change to the solvers'
+  /// state. Equals last_h_min() after a solve at the same r; ≤ 0 means contact.
+  std::vector<double> film_h_min(const Eigen::VectorXd& r) const;
   /// Minimum film thickness of each film at the last film_forces/linearize call.
   const std::vector<double>& last_h_min() const { return h_min_; }
   const std::vector<double>& last_h_min_angle_deg() const { return h_min_angle_; }
@@ -119,6 +147,10 @@ class SystemSolver {
   /// K_H (and D_H if `damping`) about the films' last solve, by the perturbation method
   /// (linearised solves reusing each film's factorisation; no new Reynolds solve).
   void linearize_last_solve(bool damping, Eigen::MatrixXd& KH, Eigen::MatrixXd* DH);
+  /// The table bearings' −K(Ω) q − C(Ω) q̇ added to H, and their K, C added to K_H, D_H.
+  void add_table_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot, double omega,
+                        Eigen::VectorXd& H) const;
+  void add_table_coefficients(double omega, Eigen::MatrixXd& KH, Eigen::MatrixXd* DH) const;
 };
 
 }  // namespace rotordyn

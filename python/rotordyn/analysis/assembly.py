@@ -32,6 +32,7 @@ class BearingCoords:
     sleeve: tuple[int, ...]
     clearance_m: float
     active: bool
+    extra: tuple[int, ...] = ()  # the element's own coordinates (pad tilts, pivots)
 
 
 class Assembled:
@@ -58,13 +59,33 @@ class Assembled:
             i = list(system.reduction.master_stations).index(station)
             return 2 * i, 2 * i + 1
 
-        blocks_M, blocks_K, chambers = [], [], []
+        blocks_M, blocks_K, blocks_C, chambers = [], [], [], []
         self.bearings: list[BearingCoords] = []
         self.sleeves = {}
-        films = []
+        self.extra_labels: list[str] = []
+        films, tables = [], []
+        self.film_owner: list[int] = []  # bearing index of each C++ film
+        self.film_phi: list = []         # physical node angles of each film (None: core grid)
         n = n_r
         for bi, b in enumerate(system.bearings):
             jx, jy = journal_index(b.station)
+            if hasattr(b, "system_parts"):  # rotordyn.bearings elements
+                name = b.name or f"bearing[{bi}]"
+                parts = b.system_parts(jx, jy, n, name)
+                films += [p.coupling for p in parts.films]
+                self.film_owner += [bi] * len(parts.films)
+                self.film_phi += [p.phi for p in parts.films]
+                tables += parts.tables
+                extra = tuple(range(n, n + parts.n_extra))
+                if parts.n_extra:
+                    blocks_M.append(parts.M)
+                    blocks_K.append(parts.K)
+                    blocks_C.append(parts.C)
+                    self.extra_labels += list(parts.labels)
+                    n += parts.n_extra
+                self.bearings.append(BearingCoords(bi, name, jx, jy, (),
+                                                   getattr(b, "clearance_m", 0.0), False, extra))
+                continue
             jb = b.journal_bearing()
             g, grid = jb.to_core()
             phi = 2 * np.pi * np.arange(b.n_circ) / b.n_circ
@@ -83,6 +104,7 @@ class Assembled:
                 end = None if b.chamber_end_deg is None else np.radians(b.chamber_end_deg)
                 blocks_M.append(res.mass_matrix)
                 blocks_K.append(res.stiffness_matrix)
+                blocks_C.append(np.zeros_like(res.mass_matrix))
                 chambers.append((sleeve_idx, res.chamber_load(start, end)))
                 n += nm
             f = _core.FilmCoupling()
@@ -91,6 +113,8 @@ class Assembled:
             f.coords = [int(c) for c in coords]
             f.shape = np.column_stack(shape)
             films.append(f)
+            self.film_owner.append(bi)
+            self.film_phi.append(None)
             self.bearings.append(BearingCoords(bi, f.name, jx, jy, sleeve_idx, b.clearance_m,
                                                isinstance(b, ActiveJournalBearing)))
 
@@ -107,7 +131,7 @@ class Assembled:
         model = _core.SystemModel()
         model.M = block(M, blocks_M)
         model.K = block(K, blocks_K)
-        model.C = block(C, [np.zeros_like(B) for B in blocks_M])
+        model.C = block(C, blocks_C)
         model.G = block(G, [np.zeros_like(B) for B in blocks_M])
         Q = np.zeros(n)
         Q[:n_r] = Q_r
@@ -117,11 +141,34 @@ class Assembled:
             ch[list(idx)] = cs
         model.chamber = ch
         model.films = films
+        model.tables = tables
         self.model = model
         self.n = n
         self.n_rotor = n_r
         self.solver = _core.SystemSolver(model)
         self.last_r: np.ndarray | None = None  # last converged equilibrium (warm starts)
+
+    def bearing_h_min(self, h_films, angle_films=None):
+        """Per-bearing minimum film thickness (last axis: films → bearings; NaN for a bearing
+        without a film) and, with ``angle_films``, the physical angle (deg) where it occurs."""
+        h = np.asarray(h_films, dtype=float)
+        nb = len(self.bearings)
+        out = np.full(h.shape[:-1] + (nb,), np.nan)
+        ang = np.full(nb, np.nan)
+        for b in range(nb):
+            idx = [i for i, o in enumerate(self.film_owner) if o == b]
+            if not idx:
+                continue
+            out[..., b] = h[..., idx].min(axis=-1)
+            if angle_films is not None and h.ndim == 1:
+                i = idx[int(np.argmin(h[idx]))]
+                a = float(angle_films[i])
+                phi = self.film_phi[i]
+                if phi is not None:  # pad film: core-grid angle -> physical angle
+                    j = int(round(a / 360.0 * len(phi))) % len(phi)
+                    a = float(np.degrees(phi[j]) % 360.0) if np.isfinite(phi[j]) else float("nan")
+                ang[b] = a
+        return out if angle_films is None else (out, ang)
 
     def station_load_matrix(self, station: int) -> np.ndarray:
         """(n, 2) map from a force (Fx, Fy) at a rotor station (N) to generalised forces on r

@@ -14,7 +14,7 @@ import scipy.sparse as sp
 from rotordyn import _core
 from rotordyn.errors import InputError
 from rotordyn import _validate as v
-from rotordyn.model.bearings import ActiveJournalBearing, FluidFilmBearing
+from rotordyn.model.bearings import BEARING_TYPES, ActiveJournalBearing, FluidFilmBearing
 from rotordyn.model.rotor import STEEL, Material, Rotor, Support
 
 REDUCTION_METHODS = ("none", "guyan", "irs", "craig-bampton")
@@ -26,15 +26,22 @@ class Reduction:
 
     ``method``: ``"guyan"`` (the paper's), ``"irs"`` (improved reduced system) or
     ``"craig-bampton"`` (masters plus ``n_modes`` fixed-interface modes); ``"none"`` keeps the
-    full model."""
+    full model. Default: ``"guyan"`` when master stations are given, else ``"none"`` (a
+    reduction without masters is refused, so every written model file can be analysed)."""
 
     master_stations: tuple[int, ...] = ()
-    method: str = "guyan"
+    method: str | None = None
     n_modes: int = 0
 
     def __post_init__(self):
         object.__setattr__(self, "master_stations", tuple(self.master_stations))
+        if self.method is None:
+            object.__setattr__(self, "method", "guyan" if self.master_stations else "none")
         v.choice("reduction.method", self.method, REDUCTION_METHODS)
+        if self.method != "none" and not self.master_stations:
+            raise InputError(
+                f"reduction.master_stations: method {self.method!r} needs at least one master "
+                "station (or set method = \"none\" for the full model)")
         v.integer("reduction.n_modes", self.n_modes, lo=0, hi=1000)
         seen = set()
         for i, s in enumerate(self.master_stations):
@@ -52,7 +59,7 @@ class System:
     materials: tuple[Material, ...] = (STEEL,)
     supports: tuple[Support, ...] = ()
     reduction: Reduction = field(default_factory=Reduction)
-    bearings: tuple[FluidFilmBearing | ActiveJournalBearing, ...] = ()
+    bearings: tuple = ()  # FluidFilmBearing, ActiveJournalBearing or rotordyn.bearings elements
     gravity_m_s2: float = 9.81
     name: str = ""
     description: str = ""
@@ -83,8 +90,9 @@ class System:
         seen = set()
         for i, b in enumerate(self.bearings):
             where = f"bearing[{i}]"
-            if not isinstance(b, (FluidFilmBearing, ActiveJournalBearing)):
-                raise InputError(f"{where}: expected a FluidFilmBearing or ActiveJournalBearing, "
+            if not isinstance(b, tuple(BEARING_TYPES.values())):
+                raise InputError(f"{where}: expected one of "
+                                 f"{', '.join(c.__name__ for c in BEARING_TYPES.values())}, "
                                  f"got {type(b).__name__}")
             b.check(where, n)
             if b.station in seen:

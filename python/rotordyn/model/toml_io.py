@@ -125,7 +125,11 @@ def _bearing_from_table(where: str, t: dict):
         if "master_stations" in st:
             st = dict(st, master_stations=tuple(st["master_stations"]))
         t["sleeve"] = _build(FlexibleSleeve, f"{where}.sleeve", st)
-    return _build(cls, where, t, grooves=tuple(grooves))
+    if "grooves" in _fields(cls):
+        return _build(cls, where, t, grooves=tuple(grooves))
+    if grooves:
+        raise InputError(f"{where}.grooves: type {kind!r} has no grooves")
+    return _build(cls, where, t)
 
 
 # -- writing ----------------------------------------------------------------------------
@@ -184,7 +188,7 @@ def system_to_toml(system) -> str:
     for b in system.bearings:
         lines += ["", "[[bearing]]", f"type = {_val(kinds[type(b)])}"]
         lines += _table_lines(b, skip=("grooves", "sleeve"))
-        if b.grooves:
+        if getattr(b, "grooves", ()):
             gs = ", ".join("{" + ", ".join(f"{f.name} = {_val(getattr(g, f.name))}"
                                            for f in dataclasses.fields(g)) + "}"
                            for g in b.grooves)

@@ -1,0 +1,132 @@
+// Speed-dependent coefficient tables: interpolation of a table bearing (TableCoupling) and
+// batches of operating points over speed (equilibrium + linearisation per speed, parallel).
+#include "rotordyn/bearing_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <sstream>
+#include <thread>
+
+#include "rotordyn/errors.hpp"
+
+namespace rotordyn {
+
+void TableCoupling::validate(const std::string& where, Eigen::Index n) const {
+  const std::string w = where + " '" + name + "'";
+  require(coords.size() == 2, w + ".coords: expected 2 indices (x, y), got " +
+                                  std::to_string(coords.size()));
+  for (int c : coords)
+    require(c >= 0 && c < n, w + ".coords: expected indices in [0, " + std::to_string(n - 1) +
+                                 "], got " + std::to_string(c));
+  const Eigen::Index ns = omegas.size();
+  require(ns >= 1, w + ".speeds: expected at least one speed");
+  require(omegas.allFinite(), w + ".speeds: expected finite speeds");
+  for (Eigen::Index i = 1; i < ns; ++i)
+    require(omegas(i) > omegas(i - 1),
+            w + ".speeds: expected strictly increasing speeds (row " + std::to_string(i) + ")");
+  require(K.rows() == ns && K.cols() == 4, shape_msg(w + ".K", ns, 4, K.rows(), K.cols()));
+  require(C.rows() == ns && C.cols() == 4, shape_msg(w + ".C", ns, 4, C.rows(), C.cols()));
+  require(K.allFinite() && C.allFinite(), w + ": expected finite coefficients");
+}
+
+void TableCoupling::at(double omega, Eigen::Matrix2d& Kout, Eigen::Matrix2d& Cout) const {
+  const Eigen::Index ns = omegas.size();
+  auto fill = [&](Eigen::Index i, Eigen::Index j, double t) {
+    for (int e = 0; e < 4; ++e) {
+      Kout(e / 2, e % 2) = (1 - t) * K(i, e) + t * K(j, e);
+      Cout(e / 2, e % 2) = (1 - t) * C(i, e) + t * C(j, e);
+    }
+  };
+  if (ns == 1) {
+    fill(0, 0, 0.0);
+    return;
+  }
+  const double lo = omegas(0), hi = omegas(ns - 1);
+  const double tol = 1e-12 * std::max(std::abs(lo), std::abs(hi));
+  if (!(omega >= lo - tol && omega <= hi + tol) && !extrapolate) {
+    std::ostringstream os;
+    os << "bearing '" << name << "': speed " << omega / (2 * M_PI) << " Hz is outside its table ["
+       << lo / (2 * M_PI) << ", " << hi / (2 * M_PI)
+       << "] Hz (extend the table or set extrapolate = true)";
+    throw InputError(os.str());
+  }
+  // interval i: omegas(i) <= omega < omegas(i+1), clamped to the end intervals
+  const double* b = omegas.data();
+  Eigen::Index i = std::upper_bound(b, b + ns, omega) - b - 1;
+  i = std::clamp<Eigen::Index>(i, 0, ns - 2);
+  const double t = (omega - omegas(i)) / (omegas(i + 1) - omegas(i));
+  fill(i, i + 1, t);
+}
+
+OperatingPointTable operating_points(const SystemModel& model, const Eigen::VectorXd& omegas,
+                                     const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
+                                     const EquilibriumOptions& options, int n_threads) {
+  model.validate();
+  const Eigen::Index n = model.n(), ns = omegas.size();
+  require(omegas.allFinite(), "speeds: expected finite values");
+  OperatingPointTable out;
+  out.r = RowMatrixXd::Constant(ns, n, NAN);
+  out.force = RowMatrixXd::Constant(ns, n, NAN);
+  out.KH = RowMatrixXd::Constant(ns, n * n, NAN);
+  out.DH = RowMatrixXd::Constant(ns, n * n, NAN);
+  out.status.assign(static_cast<std::size_t>(ns), "error");
+  out.message.assign(static_cast<std::size_t>(ns), "");
+  out.iterations = Eigen::VectorXi::Zero(ns);
+  if (n_threads <= 0) n_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  n_threads = static_cast<int>(std::min<Eigen::Index>(n_threads, std::max<Eigen::Index>(ns, 1)));
+
+  auto work = [&](Eigen::Index begin, Eigen::Index end) {
+    SystemSolver solver(model);
+    for (Eigen::Index i = begin; i < end; ++i) {
+      const auto si = static_cast<std::size_t>(i);
+      try {
+        const EquilibriumResult e = solver.equilibrium(omegas(i), 0.0, a, r0, options);
+        out.r.row(i) = e.r.transpose();
+        out.iterations(i) = e.iterations;
+        out.status[si] = e.status;
+        out.message[si] = e.message;
+        if (e.status != "ok") continue;  // a failed equilibrium is never linearised
+        const Linearization lin = solver.linearize(e.r, Eigen::VectorXd::Zero(n), omegas(i));
+        if (!lin.KH.allFinite() || !lin.DH.allFinite()) {
+          out.status[si] = "error";
+          out.message[si] = "non-finite film coefficients";
+          continue;
+        }
+        out.force.row(i) = lin.film_force.transpose();
+        for (Eigen::Index p = 0; p < n; ++p)
+          for (Eigen::Index q = 0; q < n; ++q) {
+            out.KH(i, p * n + q) = lin.KH(p, q);
+            out.DH(i, p * n + q) = lin.DH(p, q);
+          }
+      } catch (const std::exception& ex) {
+        out.status[si] = "error";
+        out.message[si] = ex.what();
+      }
+    }
+  };
+  if (n_threads == 1) {
+    work(0, ns);
+    return out;
+  }
+  std::vector<std::thread> pool;
+  std::vector<std::exception_ptr> errs(static_cast<std::size_t>(n_threads));
+  const Eigen::Index chunk = (ns + n_threads - 1) / n_threads;
+  for (int t = 0; t < n_threads; ++t) {
+    const Eigen::Index b = t * chunk, e = std::min(ns, b + chunk);
+    if (b >= e) break;
+    pool.emplace_back([&, b, e, t] {
+      try {
+        work(b, e);
+      } catch (...) {
+        errs[static_cast<std::size_t>(t)] = std::current_exception();
+      }
+    });
+  }
+  for (auto& th : pool) th.join();
+  for (auto& ep : errs)
+    if (ep) std::rethrow_exception(ep);
+  return out;
+}
+
+}  // namespace rotordyn

@@ -1,0 +1,119 @@
+"""Behaviour shared by the film bearing elements: validation of the common fields, the
+standalone coefficient table over speeds and the ``CoefficientTable`` result."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rotordyn import _validate as v
+from rotordyn.bearing import CAVITATION_MODELS
+from rotordyn.errors import InputError
+
+COEFF_NAMES = ("kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy")
+
+
+def check_common(b, where: str, n_stations: int | None) -> None:
+    """Fields every film element has (station, D, L, c, μ, cavitation, grid, configuration)."""
+    if n_stations is not None:
+        v.integer(f"{where}.station", b.station, lo=0, hi=n_stations - 1)
+    v.positive(f"{where}.diameter_m", b.diameter_m)
+    v.positive(f"{where}.length_m", b.length_m)
+    c = v.positive(f"{where}.clearance_m", b.clearance_m)
+    if c >= 0.1 * b.diameter_m:
+        raise InputError(f"{where}.clearance_m: expected a value in (0, 0.1 × diameter_m), "
+                         f"got {b.clearance_m!r}")
+    v.positive(f"{where}.viscosity_pa_s", b.viscosity_pa_s)
+    v.choice(f"{where}.cavitation", b.cavitation, CAVITATION_MODELS)
+    v.integer(f"{where}.n_circ", b.n_circ, lo=12, hi=4096)
+    v.integer(f"{where}.n_axial", b.n_axial, lo=2, hi=1024)
+    v.finite(f"{where}.config_ax_m", b.config_ax_m)
+    v.finite(f"{where}.config_ay_m", b.config_ay_m)
+
+
+def check_speeds(speeds_hz) -> np.ndarray:
+    s = np.atleast_1d(np.asarray(speeds_hz, dtype=float))
+    if s.ndim != 1 or s.size == 0 or not np.all(np.isfinite(s)) or np.any(s == 0):
+        raise InputError(f"speeds_hz: expected a 1-D array of finite nonzero speeds, got {speeds_hz!r}")
+    return s
+
+
+def check_load(load_n) -> np.ndarray:
+    try:
+        ld = np.asarray([float(x) for x in load_n])
+    except (TypeError, ValueError):
+        raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}") from None
+    if ld.shape != (2,) or not np.all(np.isfinite(ld)) or not np.hypot(*ld) > 0:
+        raise InputError(f"load_n: expected a finite nonzero load (Fx, Fy) in N, got {load_n!r}")
+    return ld
+
+
+@dataclass(frozen=True)
+class CoefficientTable:
+    """Bearing coefficients over speed at a static load: one row per speed.
+
+    ``K``, ``C`` (n_s, 2, 2) in N/m and N·s/m (dF = −K dq − C dq̇, DESIGN frame), ``x_m``,
+    ``y_m`` the journal's equilibrium, ``status``/``message`` per row (rows not ok are NaN).
+    ``whirl`` says at which whirl frequency extra coordinates (pads) were condensed."""
+
+    speeds_hz: np.ndarray
+    load_n: tuple
+    x_m: np.ndarray
+    y_m: np.ndarray
+    K: np.ndarray
+    C: np.ndarray
+    status: tuple
+    message: tuple
+    clearance_m: float
+    whirl: str = "synchronous"
+
+    def to_frame(self):
+        import pandas as pd
+
+        d = {"speed_hz": self.speeds_hz, "journal_x_m": self.x_m, "journal_y_m": self.y_m,
+             "eccentricity_ratio": np.hypot(self.x_m, self.y_m) / self.clearance_m}
+        for k, name in enumerate(COEFF_NAMES[:4]):
+            d[f"{name}_n_per_m"] = self.K[:, k // 2, k % 2]
+        for k, name in enumerate(COEFF_NAMES[4:]):
+            d[f"{name}_n_s_per_m"] = self.C[:, k // 2, k % 2]
+        d["status"] = list(self.status)
+        d["message"] = list(self.message)
+        return pd.DataFrame(d)
+
+    def to_csv(self, path=None) -> str:
+        """CSV text (written to ``path`` when given) that :meth:`TableBearing.from_csv` reads."""
+        text = self.to_frame().to_csv(index=False, float_format="%.10g")
+        if path is not None:
+            with open(path, "w", encoding="utf-8") as fh:
+                fh.write(text)
+        return text
+
+    def __repr__(self) -> str:
+        ok = sum(s == "ok" for s in self.status)
+        return (f"CoefficientTable({len(self.speeds_hz)} speeds {self.speeds_hz[0]:g}.."
+                f"{self.speeds_hz[-1]:g} Hz, {ok} ok)")
+
+
+def coefficient_table(parts, load_n, speeds_hz, clearance_m: float, *, n_threads: int = 1,
+                      whirl_ratio: float | None = 1.0, tol: float = 1e-10) -> CoefficientTable:
+    """Standalone table: equilibrium under ``load_n`` and the 2×2 coefficients at each speed;
+    extra coordinates condensed at the whirl frequency ``whirl_ratio``·Ω (None: static)."""
+    from rotordyn.bearings._film import operating_table, reduce_coefficients
+
+    s = check_speeds(speeds_hz)
+    ld = check_load(load_n)
+    if isinstance(n_threads, bool) or not isinstance(n_threads, (int, np.integer)) or n_threads < 0:
+        raise InputError(f"n_threads: expected an integer >= 0 (0: all cores), got {n_threads!r}")
+    r, KH, DH, status, message, M = operating_table(parts, ld, s, n_threads=n_threads, tol=tol)
+    K = np.full((len(s), 2, 2), np.nan)
+    C = np.full((len(s), 2, 2), np.nan)
+    for i in range(len(s)):
+        if status[i] != "ok":
+            continue
+        nu = 0.0 if whirl_ratio is None else whirl_ratio * 2 * math.pi * abs(s[i])
+        K[i], C[i] = reduce_coefficients(KH[i], DH[i], M, nu)
+    return CoefficientTable(s, tuple(ld), r[:, 0], r[:, 1], K, C, tuple(status), tuple(message),
+                            clearance_m, "static" if whirl_ratio is None else
+                            ("synchronous" if whirl_ratio == 1.0 else f"{whirl_ratio:g}×speed"))

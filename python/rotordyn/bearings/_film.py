@@ -1,0 +1,163 @@
+"""Film geometry shared by the fixed-geometry, tilting-pad and squeeze-film elements.
+
+One general film: a bearing is a set of *pads* (arcs of the bush), each with its own centre
+of curvature (preload m and offset α), separated by grooves held at the supply pressure.
+A pad's film thickness with the journal at (x, y) (DESIGN frame) is
+
+    h(φ) = C_p − (C_p − C_b) cos(φ − φ_p) − x cos φ − y sin φ  [+ tilt / pivot terms],
+
+C_b the bearing (minimum, assembled) clearance, C_p = C_b / (1 − m) the pad's machined
+clearance and φ_p = φ_start + α·β the angle of the pad's minimum clearance (the pivot of a
+tilting pad; β the pad arc). A 360° pad without preload is the plain bearing.
+
+Each pad is one film coupling of the C++ system (``FilmCoupling``) on the existing Reynolds
+core: the pad's arc is mapped onto m intervals of a periodic core grid of N = m + 2 nodes,
+whose remaining nodes form a groove (Dirichlet, p = supply pressure), so p equals the supply
+pressure on both pad edges. The core's angle φ_c maps to φ = φ_start + s·φ_c with
+s = β N / (2π m); the Reynolds equation on the pad is then exactly the core's with the
+diameter s·D and the surface speed ω/s (``spin_factor`` = 1/s), and its area element
+s·R dφ_c dz is R dφ dz, so forces by virtual work need no correction. Pad edges therefore
+sit exactly on grid nodes whatever the arc.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rotordyn import _core
+
+TWO_PI = 2.0 * math.pi
+GAP_FACTOR = 4.0  # film thickness put on the (pressure-prescribed) gap nodes, × C_p
+
+
+@dataclass
+class PadFilm:
+    """One pad's film: a C++ FilmCoupling plus the physical angles of its nodes."""
+
+    coupling: "_core.FilmCoupling"
+    phi: np.ndarray          # (N,) physical angle of each core node, rad (gap nodes: NaN)
+    on_pad: np.ndarray       # (N,) bool
+    scale: float             # s
+    extra_labels: list = field(default_factory=list)
+
+
+def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: float,
+             viscosity_pa_s: float, cavitation: str, start_rad: float, arc_rad: float,
+             pivot_rad: float, preload: float, n_circ: int, n_axial: int, coords: list[int],
+             extra_shapes=(), supply_pressure_pa: float = 0.0, spin: float = 1.0,
+             base_extra=None) -> PadFilm:
+    """Film coupling of one pad (or of a full 360° bush when ``arc_rad`` is 2π).
+
+    ``extra_shapes``: callables φ (rad, pad nodes) → ∂h/∂r_k for coordinates beyond the
+    journal's x, y (pad tilt, pivot displacement), in the order of ``coords[2:]``.
+    ``base_extra(phi, z)``: optional (N_pad, n_axial+1) addition to the base film (dam pocket).
+    ``n_circ``: nodes per 360° (the pad gets round(n_circ·β/2π) intervals, at least 10).
+    """
+    Cb = clearance_m
+    Cp = Cb / (1.0 - preload)
+    full = abs(arc_rad - TWO_PI) < 1e-12
+    if full:
+        N = int(n_circ)
+        m = N
+        s = 1.0
+        phi = start_rad + TWO_PI * np.arange(N) / N
+        on = np.ones(N, dtype=bool)
+        grooves = []
+    else:
+        m = max(10, int(round(n_circ * arc_rad / TWO_PI)))  # core grids need N >= 12
+        N = m + 2
+        s = arc_rad * N / (TWO_PI * m)
+        j = np.arange(N)
+        on = j <= m
+        phi = np.where(on, start_rad + s * TWO_PI * j / N, np.nan)
+        dc = 360.0 / N
+        grooves = [_core.Groove(0.5 * (m + N) * dc, (N - m) * dc, float(supply_pressure_pa))]
+    php = phi[on]
+    base = np.full(N, GAP_FACTOR * Cp)
+    base[on] = Cp - (Cp - Cb) * np.cos(php - pivot_rad)
+    cols = [-np.cos(php), -np.sin(php)] + [np.asarray(f(php), dtype=float) for f in extra_shapes]
+    shape = np.zeros((N, len(cols)))
+    shape[on] = np.column_stack(cols)
+    g = _core.JournalBearingGeometry()
+    g.diameter_m = diameter_m * s
+    g.length_m = length_m
+    g.clearance_m = Cb
+    g.viscosity_pa_s = viscosity_pa_s
+    g.grooves = grooves
+    f = _core.FilmCoupling()
+    f.name = name
+    f.geometry = g
+    f.grid = _core.FilmGrid(N, int(n_axial))
+    f.cavitation = cavitation
+    f.coords = [int(c) for c in coords]
+    f.shape = shape
+    if base_extra is not None:
+        z = np.linspace(-0.5 * length_m, 0.5 * length_m, int(n_axial) + 1)
+        b2 = np.repeat(base[:, None], int(n_axial) + 1, axis=1)
+        b2[on] += base_extra(php, z)
+        f.base_h = b2
+    elif not (full and preload == 0.0):
+        f.base_h = base[:, None]
+    f.spin_factor = spin / s
+    return PadFilm(f, phi, on, s)
+
+
+@dataclass
+class SystemParts:
+    """What a bearing element adds to the system of eq. 12-13: films and tables on the journal
+    coordinates (and on its own extra coordinates), with the extra coordinates' M, K, C."""
+
+    films: list
+    tables: list
+    n_extra: int = 0
+    M: np.ndarray | None = None
+    K: np.ndarray | None = None
+    C: np.ndarray | None = None
+    labels: tuple = ()
+
+
+def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1,
+                    tol: float = 1e-10):
+    """Equilibrium + linearisation of a standalone bearing (journal x, y = coordinates 0, 1,
+    extras after) at each speed: r (n_s, n); K, C (n_s, n, n) = film K_H, D_H plus the extra
+    coordinates' structural K, C (pivot stiffness); status, message; M (n, n)."""
+    n = 2 + parts.n_extra
+    model = _core.SystemModel()
+    M = np.zeros((n, n))
+    K = np.zeros((n, n))
+    C = np.zeros((n, n))
+    if parts.n_extra:
+        M[2:, 2:] = parts.M
+        K[2:, 2:] = parts.K
+        C[2:, 2:] = parts.C
+    model.M, model.K, model.C, model.G = M, K, C, np.zeros((n, n))
+    Q = np.zeros(n)
+    Q[:2] = load_n
+    model.Q = Q
+    model.chamber = np.zeros(n)
+    model.films = [p.coupling if isinstance(p, PadFilm) else p for p in parts.films]
+    model.tables = parts.tables
+    opt = _core.EquilibriumOptions()
+    opt.tol = tol
+    w = np.ascontiguousarray(np.asarray(speeds_hz, dtype=float) * TWO_PI)
+    res = _core.operating_points(model, w, np.zeros(n), np.zeros(0), opt, int(n_threads))
+    ns = len(w)
+    return (np.asarray(res.r), np.asarray(res.KH).reshape(ns, n, n) + K,
+            np.asarray(res.DH).reshape(ns, n, n) + C, list(res.status), list(res.message), M)
+
+
+def reduce_coefficients(KH, DH, M, nu):
+    """Condense extra (pad) coordinates at the whirl frequency ν (rad/s): the journal's 2×2
+    impedance Z = Z_jj − Z_jp Z_pp⁻¹ Z_pj with Z = K + iνC − ν²M; K = Re Z, C = Im Z / ν.
+    ν = 0 gives the static condensation of K and the limit of C."""
+    if KH.shape[0] == 2:
+        return KH.copy(), DH.copy()
+    if nu == 0.0:
+        nu = 1e-9 * max(1.0, np.abs(KH).max() / max(np.abs(DH).max(), 1e-300))
+    Z = KH + 1j * nu * DH - nu ** 2 * M
+    j, p = slice(0, 2), slice(2, None)
+    Zr = Z[j, j] - Z[j, p] @ np.linalg.solve(Z[p, p], Z[p, j])
+    return Zr.real.copy(), Zr.imag / nu

@@ -1,0 +1,183 @@
+"""Fixed-geometry journal bearings from one general film geometry (``_film.py``): partial arc,
+two-axial-groove, elliptical (two-lobe), offset halves, three- and four-lobe and pressure
+dam, with preload m and lobe offset α as fields, on the plain bearing's Reynolds core and
+cavitation models.
+
+Lobe k (k = 0 … n−1) is centred at ``orientation_deg`` + k·360°/n (φ from +x with the
+rotation; 270° is straight down, under a gravity load) and spans 360°/n − ``groove_width_deg``;
+the grooves between lobes hold ``supply_pressure_pa``. Its minimum clearance C_b
+(``clearance_m``, the assembled clearance) is at the fraction α (``offset``) of its arc from
+the leading edge; its machined clearance is C_p = C_b/(1 − m).
+
+kinds (defaults: n lobes, orientation, preload, offset):
+* ``partial_arc``: one arc of ``arc_deg`` centred at ``orientation_deg`` (270°), m = 0;
+  ``arc_deg = 360`` is the plain bearing.
+* ``two_axial_groove``: 2 cylindrical lobes, grooves at the horizontal split (lobes at 270°
+  and 90°).
+* ``elliptical``: 2 lobes at 270°/90°, m = 0.5, α = 0.5 (lemon bore).
+* ``offset_halves``: 2 lobes at 270°/90°, m = 0.5, α = 1.0 (halves displaced horizontally).
+* ``three_lobe``: 3 lobes, first centred at 270° (load on a lobe), m = 0.5, α = 0.5.
+* ``four_lobe``: 4 lobes centred at 225°, 315°, 45°, 135° (load between lobes), m = 0.5.
+* ``pressure_dam``: two-axial-groove with a relief pocket of depth ``dam_depth_m`` and axial
+  width ``dam_width_fraction``·L in the upper lobe, from its leading edge over
+  ``dam_arc_deg``, ending at the dam step.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn import _validate as v
+from rotordyn.bearings._element import check_common, coefficient_table
+from rotordyn.bearings._film import SystemParts, pad_film
+from rotordyn.errors import InputError
+
+KINDS = {  # n lobes, orientation deg, preload, offset
+    "partial_arc": (1, 270.0, 0.0, 0.5),
+    "two_axial_groove": (2, 270.0, 0.0, 0.5),
+    "elliptical": (2, 270.0, 0.5, 0.5),
+    "offset_halves": (2, 270.0, 0.5, 1.0),
+    "three_lobe": (3, 270.0, 0.5, 0.5),
+    "four_lobe": (4, 225.0, 0.5, 0.5),
+    "pressure_dam": (2, 270.0, 0.0, 0.5),
+}
+
+
+@dataclass(frozen=True, slots=True)
+class FixedGeometryBearing:
+    """Fixed-geometry (multi-lobe / partial arc) journal bearing at ``station``. ``None``
+    fields take the kind's default (module docstring)."""
+
+    station: int
+    diameter_m: float
+    length_m: float
+    clearance_m: float
+    viscosity_pa_s: float
+    kind: str = "two_axial_groove"
+    preload: float | None = None
+    offset: float | None = None
+    orientation_deg: float | None = None
+    groove_width_deg: float = 20.0
+    arc_deg: float = 150.0
+    supply_pressure_pa: float = 0.0
+    dam_depth_m: float = 0.0
+    dam_arc_deg: float = 125.0
+    dam_width_fraction: float = 0.5
+    cavitation: str = "reynolds"
+    n_circ: int = 72
+    n_axial: int = 16
+    config_ax_m: float = 0.0
+    config_ay_m: float = 0.0
+    name: str = ""
+
+    def __post_init__(self):
+        self.check("fixed_geometry_bearing", None)
+
+    # -- resolved geometry ----------------------------------------------------------------
+    @property
+    def n_lobes(self) -> int:
+        return KINDS[self.kind][0]
+
+    def resolved(self) -> tuple[float, float, float]:
+        """(preload, offset, orientation_deg) with the kind's defaults filled in."""
+        _, o, m, a = KINDS[self.kind]
+        return (m if self.preload is None else self.preload,
+                a if self.offset is None else self.offset,
+                o if self.orientation_deg is None else self.orientation_deg)
+
+    def lobe_arc_deg(self) -> float:
+        if self.kind == "partial_arc":
+            return float(self.arc_deg)
+        return 360.0 / self.n_lobes - self.groove_width_deg
+
+    def check(self, where: str, n_stations: int | None) -> None:
+        check_common(self, where, n_stations)
+        v.choice(f"{where}.kind", self.kind, tuple(KINDS))
+        if self.preload is not None:
+            v.in_range(f"{where}.preload", self.preload, 0.0, 1.0, hi_open=True)
+        if self.offset is not None:
+            v.in_range(f"{where}.offset", self.offset, 0.0, 1.0)
+        if self.orientation_deg is not None:
+            v.finite(f"{where}.orientation_deg", self.orientation_deg)
+        v.in_range(f"{where}.arc_deg", self.arc_deg, 0.0, 360.0, lo_open=True)
+        v.non_negative(f"{where}.supply_pressure_pa", self.supply_pressure_pa)
+        if self.kind != "partial_arc":
+            v.in_range(f"{where}.groove_width_deg", self.groove_width_deg, 0.0,
+                       360.0 / self.n_lobes, lo_open=True, hi_open=True)
+        v.non_negative(f"{where}.dam_depth_m", self.dam_depth_m)
+        if self.kind == "pressure_dam":
+            v.in_range(f"{where}.dam_arc_deg", self.dam_arc_deg, 0.0, self.lobe_arc_deg(),
+                       lo_open=True)
+            v.in_range(f"{where}.dam_width_fraction", self.dam_width_fraction, 0.0, 1.0,
+                       lo_open=True)
+        if self.cavitation == "jfo" and self.kind == "partial_arc" and self.arc_deg == 360.0:
+            raise InputError(f"{where}.cavitation: 'jfo' needs a supply groove; a 360° arc has none")
+
+    # -- films ----------------------------------------------------------------------------
+    def films(self, jx: int, jy: int, name: str, spin: float = 1.0) -> list:
+        m, alpha, orient = self.resolved()
+        arc = math.radians(self.lobe_arc_deg())
+        out = []
+        for k in range(self.n_lobes):
+            centre = math.radians(orient + k * 360.0 / self.n_lobes)
+            start = centre - 0.5 * arc
+            if abs(arc - 2 * math.pi) < 1e-12:
+                start = 0.0  # the plain bearing's grid (φ_0 = 0)
+            extra = None
+            if self.kind == "pressure_dam" and self.dam_depth_m > 0 and k == 1:
+                d, dam, w = self.dam_depth_m, math.radians(self.dam_arc_deg), self.dam_width_fraction
+                L = self.length_m
+
+                def extra(phi, z, start=start, d=d, dam=dam, w=w, L=L):
+                    inside = ((phi - start) <= dam * (1 + 1e-12))[:, None] & \
+                        (np.abs(z) <= 0.5 * w * L * (1 + 1e-12))[None, :]
+                    return np.where(inside, d, 0.0)
+            out.append(pad_film(
+                name=f"{name}.lobe{k}" if self.n_lobes > 1 else name,
+                diameter_m=self.diameter_m, length_m=self.length_m, clearance_m=self.clearance_m,
+                viscosity_pa_s=self.viscosity_pa_s, cavitation=self.cavitation, start_rad=start,
+                arc_rad=arc, pivot_rad=start + alpha * arc, preload=m, n_circ=self.n_circ,
+                n_axial=self.n_axial, coords=[jx, jy], supply_pressure_pa=self.supply_pressure_pa,
+                spin=spin, base_extra=extra))
+        return out
+
+    def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:
+        return SystemParts(films=self.films(jx, jy, name), tables=[])
+
+    # -- standalone -----------------------------------------------------------------------
+    def _solver(self):
+        model = _core.SystemModel()
+        z = np.zeros((2, 2))
+        model.M, model.K, model.C, model.G = z, z, z, z
+        model.Q, model.chamber = np.zeros(2), np.zeros(2)
+        model.films = [p.coupling for p in self.films(0, 1, self.name or "bearing")]
+        return _core.SystemSolver(model)
+
+    def forces(self, *, x_m: float, y_m: float, speed_hz: float, vx_m_s: float = 0.0,
+               vy_m_s: float = 0.0) -> np.ndarray:
+        """Film force (Fx, Fy) on a rigid journal at (x, y) moving at (vx, vy), N."""
+        r = np.array([v.finite("x_m", x_m), v.finite("y_m", y_m)])
+        m = self.resolved()[0]
+        if np.hypot(*r) >= self.clearance_m / (1.0 - m):
+            raise InputError(f"x_m, y_m: expected a journal inside the machined clearance "
+                             f"circle (|r| < {self.clearance_m / (1.0 - m):g} m)")
+        rd = np.array([v.finite("vx_m_s", vx_m_s), v.finite("vy_m_s", vy_m_s)])
+        w = 2 * math.pi * v.finite("speed_hz", speed_hz)
+        return np.asarray(self._solver().film_forces(r, rd, w))
+
+    def coefficients(self, *, x_m: float, y_m: float, speed_hz: float):
+        """K (N/m), C (N·s/m), 2×2, at the journal position (x, y) (perturbation method)."""
+        self.forces(x_m=x_m, y_m=y_m, speed_hz=speed_hz)  # validates the position
+        lin = self._solver().linearize(np.array([x_m, y_m], dtype=float), np.zeros(2),
+                                       2 * math.pi * float(speed_hz))
+        return np.asarray(lin.KH), np.asarray(lin.DH)
+
+    def coefficient_table(self, speeds_hz, load_n, *, n_threads: int = 1):
+        """Equilibrium under ``load_n`` (N, on the journal) and K, C at each speed (Hz),
+        parallel over speeds (``n_threads``, 0: all cores): a :class:`CoefficientTable`."""
+        parts = SystemParts(films=self.films(0, 1, self.name or "bearing"), tables=[])
+        return coefficient_table(parts, load_n, speeds_hz, self.clearance_m, n_threads=n_threads)

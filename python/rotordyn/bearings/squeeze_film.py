@@ -1,0 +1,129 @@
+"""Squeeze-film damper: a non-rotating journal (the damper ring, held by an anti-rotation pin
+or a centring spring) whirling in an oil film. The film is the plain bearing's finite-length
+Reynolds film with no surface speed (``spin_factor`` = 0): only the squeeze term ∂h/∂t
+acts, so its forces are nonlinear in the transient and linearised (D_H) for the linear
+analyses. ``cavitation``: ``"none"`` is the uncavitated full (2π) film, ``"gumbel"`` the
+π film (negative pressures clipped), ``"reynolds"`` Swift–Stieber. Open ends (p = 0 at
+z = ±L/2); a centring spring ``centring_spring_n_per_m`` acts in parallel (isotropic).
+
+Closed forms (short damper, L/D → 0, open ends; circular centred orbit of radius e = εc at
+whirl speed ν): integrating p = (6μ ∂h/∂t / h³)(z² − L²/4) over z and φ,
+
+    full film:  F_r = 0,                               F_t = −μRL³ν ε π / (c² (1 − ε²)^{3/2})
+    π film:     F_r = −2 μRL³ν ε² / (c² (1 − ε²)²),   F_t = −μRL³ν ε π / (2 c² (1 − ε²)^{3/2})
+
+i.e. C_tt = π μ R L³ / (2 c³ (1 − ε²)^{3/2}) for the π film (Vance, *Rotordynamics of
+Turbomachinery*, Wiley 1988, §6; San Andrés, *Squeeze film dampers*, Texas A&M lecture
+notes, eqs. for the short open-ends SFD). ``short_damper_orbit_forces`` evaluates them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn import _validate as v
+from rotordyn.bearings._element import check_common
+from rotordyn.bearings._film import SystemParts, pad_film
+from rotordyn.errors import InputError
+
+
+def short_damper_orbit_forces(*, diameter_m, length_m, clearance_m, viscosity_pa_s,
+                              eccentricity_ratio, whirl_hz, film: str = "pi"):
+    """(F_r, F_t), N: radial and tangential film force on a short open-ends damper journal in
+    a circular centred orbit (closed form, module docstring). film: "pi" or "full"."""
+    R, L, c, mu = 0.5 * diameter_m, length_m, clearance_m, viscosity_pa_s
+    eps = v.in_range("eccentricity_ratio", eccentricity_ratio, 0.0, 1.0, hi_open=True)
+    nu = 2 * math.pi * v.finite("whirl_hz", whirl_hz)
+    a = mu * R * L ** 3 * nu / c ** 2
+    if film == "full":
+        return 0.0, -a * eps * math.pi / (1 - eps ** 2) ** 1.5
+    if film == "pi":
+        return (-a * 2 * eps ** 2 / (1 - eps ** 2) ** 2,
+                -a * eps * math.pi / (2 * (1 - eps ** 2) ** 1.5))
+    raise InputError(f"film: expected 'pi' or 'full', got {film!r}")
+
+
+@dataclass(frozen=True, slots=True)
+class SqueezeFilmDamper:
+    """Squeeze-film damper at ``station`` (module docstring)."""
+
+    station: int
+    diameter_m: float
+    length_m: float
+    clearance_m: float
+    viscosity_pa_s: float
+    cavitation: str = "gumbel"
+    centring_spring_n_per_m: float = 0.0
+    n_circ: int = 72
+    n_axial: int = 16
+    config_ax_m: float = 0.0
+    config_ay_m: float = 0.0
+    name: str = ""
+
+    def __post_init__(self):
+        self.check("squeeze_film_damper", None)
+
+    def check(self, where: str, n_stations: int | None) -> None:
+        check_common(self, where, n_stations)
+        if self.cavitation == "jfo":
+            raise InputError(f"{where}.cavitation: 'jfo' needs a supply groove; use 'none' (full "
+                             "film), 'gumbel' (π film) or 'reynolds'")
+        v.non_negative(f"{where}.centring_spring_n_per_m", self.centring_spring_n_per_m)
+
+    def films(self, jx: int, jy: int, name: str) -> list:
+        return [pad_film(name=name, diameter_m=self.diameter_m, length_m=self.length_m,
+                         clearance_m=self.clearance_m, viscosity_pa_s=self.viscosity_pa_s,
+                         cavitation=self.cavitation, start_rad=0.0, arc_rad=2 * math.pi,
+                         pivot_rad=0.0, preload=0.0, n_circ=self.n_circ, n_axial=self.n_axial,
+                         coords=[jx, jy], spin=0.0)]
+
+    def _spring(self, jx: int, jy: int, name: str) -> list:
+        if self.centring_spring_n_per_m == 0.0:
+            return []
+        t = _core.TableCoupling()
+        t.name, t.coords = f"{name}.centring_spring", [int(jx), int(jy)]
+        k = self.centring_spring_n_per_m
+        t.omegas = np.array([0.0])
+        t.K = np.array([[k, 0.0, 0.0, k]])
+        t.C = np.zeros((1, 4))
+        return [t]
+
+    def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:
+        return SystemParts(films=self.films(jx, jy, name), tables=self._spring(jx, jy, name))
+
+    # -- standalone -----------------------------------------------------------------------
+    def _solver(self):
+        model = _core.SystemModel()
+        z = np.zeros((2, 2))
+        model.M, model.K, model.C, model.G = z, z, z, z
+        model.Q, model.chamber = np.zeros(2), np.zeros(2)
+        model.films = [p.coupling for p in self.films(0, 1, self.name or "damper")]
+        return _core.SystemSolver(model)
+
+    def forces(self, *, x_m: float, y_m: float, vx_m_s: float, vy_m_s: float) -> np.ndarray:
+        """Film force (Fx, Fy) on the damper journal at (x, y) moving at (vx, vy), N (the
+        centring spring not included)."""
+        r = np.array([v.finite("x_m", x_m), v.finite("y_m", y_m)])
+        if np.hypot(*r) >= self.clearance_m:
+            raise InputError(f"x_m, y_m: expected a journal inside the clearance circle "
+                             f"(|r| < {self.clearance_m:g} m)")
+        rd = np.array([v.finite("vx_m_s", vx_m_s), v.finite("vy_m_s", vy_m_s)])
+        return np.asarray(self._solver().film_forces(r, rd, 0.0))
+
+    def orbit_coefficients(self, *, eccentricity_ratio: float, whirl_hz: float) -> dict:
+        """Equivalent linear coefficients of a circular centred orbit (radius εc, whirl ν):
+        radial and tangential forces F_r, F_t (N), K_eq = −F_r/e (N/m) and C_eq = −F_t/(eν)
+        (N·s/m), the usual way to linearise a cavitated damper for linear analyses."""
+        eps = v.in_range("eccentricity_ratio", eccentricity_ratio, 0.0, 1.0, lo_open=True,
+                         hi_open=True)
+        nu = 2 * math.pi * v.finite("whirl_hz", whirl_hz)
+        if nu == 0:
+            raise InputError("whirl_hz: expected a nonzero whirl frequency")
+        e = eps * self.clearance_m
+        fr, ft = self.forces(x_m=e, y_m=0.0, vx_m_s=0.0, vy_m_s=e * nu)
+        return {"f_r_n": float(fr), "f_t_n": float(ft), "k_eq_n_per_m": float(-fr / e),
+                "c_eq_n_s_per_m": float(-ft / (e * nu))}

@@ -1,0 +1,167 @@
+"""Tilting-pad journal bearing: pads on pivots, each pad's tilt a coordinate of the system
+(with the pad's inertia), optionally its radial pivot displacement (pivot stiffness and pad
+mass), so the full eigen-analysis and the transient see the pad dynamics; and the reduced
+2×2 coefficients (synchronous, or at a given whirl frequency) for users who want them.
+
+Geometry (``_film.py``): pad k's pivot at ψ_k; the pad spans ``pad_arc_deg`` with the pivot
+at the fraction ``pivot_offset`` of the arc from its leading edge; load ``"between"`` pads
+puts the pivots at 270° ± 180°/n (pads straddle the downward load), ``"on"`` puts pad 0's
+pivot at 270°. Film of pad k with the journal at (x, y), tilt δ_k (rad, positive with the
+rotation, about the pivot at the radius R + t, t = ``pad_thickness_m``) and pivot
+displacement u_k (outward along ψ_k):
+
+    h = C_p − (C_p − C_b) cos(φ − ψ_k) − x cos φ − y sin φ − (R + t) δ_k sin(φ − ψ_k)
+        + u_k cos(φ − ψ_k).
+
+The film moment about the pivot and the radial pivot force follow by virtual work from the
+shape columns (−(R + t) sin(φ − ψ), cos(φ − ψ)). A pad is in equilibrium when its film
+moment is zero (plus ``tilt_stiffness_nm_per_rad``·δ if the pivot resists tilt).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn import _validate as v
+from rotordyn.bearings._element import check_common, coefficient_table
+from rotordyn.bearings._film import SystemParts, pad_film
+from rotordyn.errors import InputError
+
+
+@dataclass(frozen=True, slots=True)
+class TiltingPadBearing:
+    """Tilting-pad journal bearing at ``station`` (module docstring for the geometry)."""
+
+    station: int
+    diameter_m: float
+    length_m: float
+    clearance_m: float
+    viscosity_pa_s: float
+    n_pads: int = 4
+    pad_arc_deg: float = 80.0
+    pivot_offset: float = 0.5
+    preload: float = 0.0
+    load: str = "between"
+    orientation_deg: float | None = None
+    pad_inertia_kg_m2: float = 1e-4
+    pad_thickness_m: float = 0.0
+    tilt_stiffness_nm_per_rad: float = 0.0
+    pivot_stiffness_n_per_m: float = 0.0
+    pad_mass_kg: float = 0.0
+    cavitation: str = "reynolds"
+    n_circ: int = 72
+    n_axial: int = 16
+    config_ax_m: float = 0.0
+    config_ay_m: float = 0.0
+    name: str = ""
+
+    def __post_init__(self):
+        self.check("tilting_pad_bearing", None)
+
+    def check(self, where: str, n_stations: int | None) -> None:
+        check_common(self, where, n_stations)
+        v.integer(f"{where}.n_pads", self.n_pads, lo=1, hi=32)
+        v.in_range(f"{where}.pad_arc_deg", self.pad_arc_deg, 0.0, 360.0 / self.n_pads,
+                   lo_open=True, hi_open=True)
+        v.in_range(f"{where}.pivot_offset", self.pivot_offset, 0.0, 1.0, lo_open=True,
+                   hi_open=True)
+        v.in_range(f"{where}.preload", self.preload, 0.0, 1.0, hi_open=True)
+        v.choice(f"{where}.load", self.load, ("between", "on"))
+        if self.orientation_deg is not None:
+            v.finite(f"{where}.orientation_deg", self.orientation_deg)
+        v.positive(f"{where}.pad_inertia_kg_m2", self.pad_inertia_kg_m2)
+        v.non_negative(f"{where}.pad_thickness_m", self.pad_thickness_m)
+        v.non_negative(f"{where}.tilt_stiffness_nm_per_rad", self.tilt_stiffness_nm_per_rad)
+        v.non_negative(f"{where}.pivot_stiffness_n_per_m", self.pivot_stiffness_n_per_m)
+        v.non_negative(f"{where}.pad_mass_kg", self.pad_mass_kg)
+        if self.pivot_stiffness_n_per_m > 0 and not self.pad_mass_kg > 0:
+            raise InputError(f"{where}.pad_mass_kg: expected a value > 0 with a flexible pivot "
+                             f"(pivot_stiffness_n_per_m = {self.pivot_stiffness_n_per_m:g})")
+        if self.cavitation == "jfo":
+            raise InputError(f"{where}.cavitation: 'jfo' is not supported on tilting pads; use "
+                             "'reynolds', 'gumbel' or 'none'")
+
+    # -- geometry -------------------------------------------------------------------------
+    def pivot_angles_deg(self) -> np.ndarray:
+        """(n_pads,) pivot angles ψ_k, deg."""
+        if self.orientation_deg is not None:
+            first = self.orientation_deg
+        else:
+            first = 270.0 + (180.0 / self.n_pads if self.load == "between" else 0.0)
+        return (first + 360.0 / self.n_pads * np.arange(self.n_pads)) % 360.0
+
+    @property
+    def flexible_pivot(self) -> bool:
+        return self.pivot_stiffness_n_per_m > 0
+
+    @property
+    def dofs_per_pad(self) -> int:
+        return 2 if self.flexible_pivot else 1
+
+    def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:
+        R = 0.5 * self.diameter_m
+        lever = R + self.pad_thickness_m
+        arc = math.radians(self.pad_arc_deg)
+        films, labels = [], []
+        npd = self.dofs_per_pad
+        for k, psi_deg in enumerate(self.pivot_angles_deg()):
+            psi = math.radians(psi_deg)
+            start = psi - self.pivot_offset * arc
+            coords = [jx, jy, first_extra + npd * k]
+            shapes = [lambda phi, psi=psi: -lever * np.sin(phi - psi)]
+            labels.append(f"{name}.pad{k}.tilt")
+            if self.flexible_pivot:
+                coords.append(first_extra + npd * k + 1)
+                shapes.append(lambda phi, psi=psi: np.cos(phi - psi))
+                labels.append(f"{name}.pad{k}.pivot")
+            films.append(pad_film(
+                name=f"{name}.pad{k}", diameter_m=self.diameter_m, length_m=self.length_m,
+                clearance_m=self.clearance_m, viscosity_pa_s=self.viscosity_pa_s,
+                cavitation=self.cavitation, start_rad=start, arc_rad=arc, pivot_rad=psi,
+                preload=self.preload, n_circ=self.n_circ, n_axial=self.n_axial, coords=coords,
+                extra_shapes=shapes))
+        n = npd * self.n_pads
+        per_pad_m = [self.pad_inertia_kg_m2] + ([self.pad_mass_kg] if self.flexible_pivot else [])
+        per_pad_k = [self.tilt_stiffness_nm_per_rad] + (
+            [self.pivot_stiffness_n_per_m] if self.flexible_pivot else [])
+        M = np.diag(np.tile(per_pad_m, self.n_pads))
+        K = np.diag(np.tile(per_pad_k, self.n_pads))
+        return SystemParts(films=films, tables=[], n_extra=n, M=M, K=K, C=np.zeros((n, n)),
+                           labels=tuple(labels))
+
+    # -- standalone -----------------------------------------------------------------------
+    def coefficient_table(self, speeds_hz, load_n, *, whirl_ratio: float | None = 1.0,
+                          n_threads: int = 1):
+        """Equilibrium (journal and pads) under ``load_n`` (N) and the journal's 2×2 K, C with
+        the pad coordinates condensed at the whirl frequency ``whirl_ratio``·Ω (1:
+        synchronous; None: static condensation), per speed (Hz), parallel over speeds."""
+        if whirl_ratio is not None:
+            v.finite("whirl_ratio", whirl_ratio)
+        parts = self.system_parts(0, 1, 2, self.name or "bearing")
+        return coefficient_table(parts, load_n, speeds_hz, self.clearance_m,
+                                 n_threads=n_threads, whirl_ratio=whirl_ratio)
+
+    def full_coefficients(self, speed_hz: float, load_n):
+        """The unreduced coefficients at one speed: (r, K, C, M) with r the equilibrium
+        (journal x, y then the pad coordinates) and K, C, M (2 + n_pad_dofs square)."""
+        from rotordyn.bearings._element import check_load, check_speeds
+        from rotordyn.bearings._film import operating_table
+
+        parts = self.system_parts(0, 1, 2, self.name or "bearing")
+        r, K, C, status, message, M = operating_table(parts, check_load(load_n),
+                                                      check_speeds(speed_hz))
+        if status[0] != "ok":
+            from rotordyn.errors import ConvergenceError
+
+            raise ConvergenceError(f"tilting-pad equilibrium: {status[0]}: {message[0]}")
+        return r[0], K[0], C[0], M
+
+    def pad_films(self):
+        """The pads' C++ film couplings on the standalone coordinates (x, y, pad dofs)."""
+        return self.system_parts(0, 1, 2, self.name or "bearing").films
+
+
