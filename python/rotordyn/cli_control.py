@@ -49,43 +49,55 @@ def register(sub: argparse._SubParsersAction) -> None:
 
     def common(c):
         c.add_argument("model", help="TOML path or a built-in name (paper-rig)")
-        c.add_argument("--config-ay-m", type=float, default=None)
-        c.add_argument("--p-min-pa", type=float, default=0.0)
-        c.add_argument("--p-max-pa", type=float, default=1.0e6)
+        c.add_argument("--config-ay-m", type=float, default=None,
+                       help="active bearing's vertical housing offset a_y, m (default: the "
+                            "model's)")
+        c.add_argument("--p-min-pa", type=float, default=0.0,
+                       help="lower chamber-pressure limit of the valve, Pa")
+        c.add_argument("--p-max-pa", type=float, default=1.0e6,
+                       help="upper chamber-pressure limit of the valve, Pa")
         c.add_argument("--valve-hz", type=float, default=100.0,
                        help="servo-valve natural frequency (2nd order); 0: ideal")
-        c.add_argument("--valve-damping", type=float, default=0.7)
-        c.add_argument("--out", default="out/control")
+        c.add_argument("--valve-damping", type=float, default=0.7,
+                       help="servo-valve damping ratio ζ")
+        c.add_argument("--out", default="out/control", help="output directory")
         c.add_argument("--json", action="store_true", help="print the summary as JSON")
 
     c = csub.add_parser("schedule", help="open-loop p_c(Ω) schedule from the linear model")
     common(c)
     c.add_argument("--unbalance", type=float, nargs=3, action="append", required=True,
-                   metavar=("STATION", "MASS_KG_M", "PHASE_DEG"))
-    c.add_argument("--stations", type=int, nargs="+", default=None)
+                   metavar=("STATION", "MASS_KG_M", "PHASE_DEG"),
+                   help="rotating unbalance (repeatable)")
+    c.add_argument("--stations", type=int, nargs="+", default=None,
+                   help="output stations of the objective (default: the unbalanced ones)")
     c.add_argument("--speed-hz", type=float, nargs=3, default=[10.0, 120.0, 1.0],
-                   metavar=("START", "STOP", "STEP"))
+                   metavar=("START", "STOP", "STEP"), help="speed grid, Hz")
     c.add_argument("--pressure-pa", type=float, nargs=3, default=[0.0, 1.0e6, 0.05e6],
-                   metavar=("START", "STOP", "STEP"))
+                   metavar=("START", "STOP", "STEP"), help="chamber-pressure grid, Pa")
     c.add_argument("--min-damping", type=float, default=2e-4,
                    help="least damping ratio of every mode")
-    c.add_argument("--smooth-pa-per-hz", type=float, default=None)
+    c.add_argument("--smooth-pa-per-hz", type=float, default=None,
+                   help="largest schedule slope, Pa/Hz (default: none, pointwise choice)")
     c.set_defaults(func=run_schedule)
 
     c = csub.add_parser("closed-loop", help="design a feedback law and run it (linear + nonlinear)")
     common(c)
-    c.add_argument("--speed-hz", type=float, default=50.0)
-    c.add_argument("--chamber-pressure-pa", type=float, default=0.05e6)
-    c.add_argument("--law", choices=("pd", "lqg"), default="pd")
-    c.add_argument("--t-end-s", type=float, default=1.0)
+    c.add_argument("--speed-hz", type=float, default=50.0,
+                   help="design (and run) speed, Hz")
+    c.add_argument("--chamber-pressure-pa", type=float, default=0.05e6,
+                   help="base chamber pressure (operating point), Pa")
+    c.add_argument("--law", choices=("pd", "lqg"), default="pd",
+                   help="feedback law: tuned PD on the vertical journal displacement, or LQG")
+    c.add_argument("--t-end-s", type=float, default=1.0, help="simulated time, s")
     c.add_argument("--disturbance-c", type=float, default=0.1,
                    help="initial vertical journal displacement, units of the clearance")
     c.add_argument("--unbalance", type=float, nargs=3, action="append", default=[],
-                   metavar=("STATION", "MASS_KG_M", "PHASE_DEG"))
+                   metavar=("STATION", "MASS_KG_M", "PHASE_DEG"),
+                   help="rotating unbalance (repeatable; default: none)")
     c.add_argument("--run-up-hz", type=float, nargs=3, default=None,
                    metavar=("START", "STOP", "RATE_HZ_S"),
                    help="run up instead of a constant speed (design at --speed-hz)")
-    c.add_argument("--n-out", type=int, default=4001)
+    c.add_argument("--n-out", type=int, default=4001, help="stored time samples")
     c.set_defaults(func=run_closed_loop)
 
 
