@@ -403,6 +403,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also write one self-contained HTML report (figures as SVG)")
     s.set_defaults(func=_cmd_report)
     cli_bearing.register(sub)
+    from rotordyn import cli_control  # issue 8: `rotordyn control ...`
+
+    cli_control.register(sub)
     return p
 
 
