@@ -7,7 +7,10 @@ Machine-readable output goes to stdout with ``--json``; logs go to stderr.
 from __future__ import annotations
 
 import argparse
+import math
+import os
 import sys
+from pathlib import Path
 
 import numpy as np
 
@@ -16,6 +19,8 @@ from rotordyn import cli_bearing
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.cli_common import ArgumentParser as _ArgumentParser
 from rotordyn.cli_common import json_text as _json
+
+MAX_SPEEDS = 100_000  # speeds of one Campbell/unbalance run (more is not a diagram)
 
 
 # -- info -------------------------------------------------------------------------------
@@ -42,12 +47,13 @@ def _save(ax, path: str) -> None:
     print(f"wrote {path}", file=sys.stderr)
 
 
-def _check_fig(path) -> None:
-    if path is not None and not str(path).lower().endswith((".png", ".svg", ".pdf")):
-        raise rotordyn.InputError(f"--plot: expected a .png, .svg or .pdf file name, got {path!r}")
+def _check_fig(path, flag: str = "--plot") -> None:
+    """Check an output figure path before any solve (see :func:`_figure_path`); draw with Agg."""
     import matplotlib
 
     matplotlib.use("Agg")
+    if path is not None:
+        _figure_path(flag, path)
 
 
 def _cmd_validate(args) -> int:
@@ -127,18 +133,55 @@ def _cmd_equilibrium(args) -> int:
 
 # -- linear analyses (issue 5) -----------------------------------------------------------
 def _speeds(text: str) -> np.ndarray:
-    """"a:b:step" (inclusive) or "f1,f2,..." → speeds in Hz."""
+    """"a:b:step" (inclusive) or "f1,f2,..." → speeds in Hz (at most MAX_SPEEDS)."""
+    bad = rotordyn.InputError(
+        f"--speeds-hz: expected 'start:stop:step' or a comma-separated list, got {text!r}")
     try:
         if ":" in text:
             a, b, st = (float(x) for x in text.split(":"))
-            if st <= 0 or b < a:
-                raise ValueError
-            return np.arange(a, b + 0.5 * st, st)
-        return np.array([float(x) for x in text.split(",")])
+        else:
+            return np.array([float(x) for x in text.split(",")])
     except ValueError:
+        raise bad from None
+    if not (np.isfinite(a) and np.isfinite(b) and np.isfinite(st)) or st <= 0 or b < a:
+        raise bad
+    # Count before allocating (issue 13: 5:1e9:1e-9 raised MemoryError).
+    count = math.floor((b - a) / st + 0.5) + 1
+    if count > MAX_SPEEDS:
         raise rotordyn.InputError(
-            f"--speeds-hz: expected 'start:stop:step' or a comma-separated list, got {text!r}"
-        ) from None
+            f"--speeds-hz: expected at most {MAX_SPEEDS} speeds, {text!r} gives {count:.3g}")
+    return np.arange(a, b + 0.5 * st, st)
+
+
+def _figure_path(flag: str, path: str) -> str:
+    """An output figure: its folder must exist and its suffix be a format matplotlib writes
+    (issue 13: a missing folder or an unknown suffix gave a traceback after the solve)."""
+    from matplotlib.figure import Figure
+
+    p = Path(path)
+    kinds = Figure().canvas.get_supported_filetypes()
+    if p.suffix.lstrip(".").lower() not in kinds:
+        raise rotordyn.InputError(f"{flag}: expected a file name ending in one of "
+                                  f"{', '.join('.' + k for k in sorted(kinds))}, got {path!r}")
+    folder = p.parent if str(p.parent) else Path(".")
+    if not folder.is_dir():
+        raise rotordyn.InputError(f"{flag}: folder {str(folder)!r} does not exist")
+    if p.is_dir():
+        raise rotordyn.InputError(f"{flag}: {path!r} is a directory")
+    return path
+
+
+def _out_dir(flag: str, path: str) -> str:
+    """An output directory, created (with its parents) if missing; InputError naming the
+    flag when it is a file or cannot be created."""
+    p = Path(path)
+    if p.exists() and not p.is_dir():
+        raise rotordyn.InputError(f"{flag}: {path!r} exists and is not a directory")
+    try:
+        p.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise rotordyn.InputError(f"{flag}: cannot create {path!r}: {exc.strerror}") from None
+    return path
 
 
 def _cmd_stability(args) -> int:
@@ -159,9 +202,9 @@ def _cmd_stability(args) -> int:
 
 
 def _cmd_campbell(args) -> int:
+    speeds = _speeds(args.speeds_hz)
     _check_fig(args.plot)
     s = rotordyn.models.load(args.model)
-    speeds = _speeds(args.speeds_hz)
     if s.bearings:
         c = rotordyn.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m)
     else:
@@ -222,7 +265,7 @@ def _cmd_unbalance(args) -> int:
     return 0
 
 
-MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, friswell-5.9.1); "
+MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, paper-rig-hs, friswell-5.9.1); "
               "see `rotordyn validate`")
 JSON_HELP = "print one JSON record on stdout (NaN written as null) instead of a table"
 
@@ -264,6 +307,7 @@ def _cmd_plot(args) -> int:
     from rotordyn.plot import plot_dataset
     from rotordyn.sweep import read_dataset
 
+    _figure_path("--out", args.out)
     kw = ({"style": args.style, "scale": args.scale, "axis": args.axis}
           if args.kind == "waterfall" else {})
     plot_dataset(read_dataset(args.dir), args.kind, args.out, **kw)
@@ -275,7 +319,7 @@ def _cmd_plot(args) -> int:
 def _cmd_report(args) -> int:
     from rotordyn import report
 
-    return report.run(args.model, args.out, html=args.html,
+    return report.run(args.model, _out_dir("--out", args.out), html=args.html,
                       operating_speed_hz=args.operating_speed_hz)
 
 
@@ -415,6 +459,9 @@ def build_parser() -> argparse.ArgumentParser:
                         "(default: 45 55 for paper-rig, none otherwise)")
     s.set_defaults(func=_cmd_report)
     cli_bearing.register(sub)
+    from rotordyn import cli_control  # issue 8: `rotordyn control ...`
+
+    cli_control.register(sub)
     return p
 
 
@@ -467,6 +514,19 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     except BrokenPipeError:  # output piped into e.g. `head`
         return 0
+    except MemoryError:
+        print("rotordyn: failed: out of memory (reduce the grid, the number of points or "
+              "n_out)", file=sys.stderr)
+        return 1
+    except OSError as exc:  # a file system failure while writing results
+        print(f"rotordyn: failed: {exc}", file=sys.stderr)
+        return 1
+    except Exception as exc:  # a bug: one line, not a traceback (ROTORDYN_DEBUG=1 re-raises)
+        if os.environ.get("ROTORDYN_DEBUG"):
+            raise
+        print(f"rotordyn: internal error: {type(exc).__name__}: {exc} (please report; "
+              "ROTORDYN_DEBUG=1 shows the traceback)", file=sys.stderr)
+        return 1
     finally:
         warnings.showwarning = shown
 
