@@ -138,19 +138,22 @@ def _log_dec_figure(c, op_range):
                 continue
             w = int(np.nanmedian(wh[:, j])) if np.isfinite(wh[:, j]).any() else 0
             f0 = np.nanmedian(fr[:, j])
-            ln, = ax.plot(c.speeds_hz, np.clip(ld[:, j], -1, 5), ls=WHIRL_STYLE.get(w, "-"),
+            ln, = ax.plot(c.speeds_hz, np.clip(ld[:, j], -1, 1.5), ls=WHIRL_STYLE.get(w, "-"),
+                          color=["C0", "C1", "C2", "C4", "C5", "C6", "C8", "C9"][len(h) % 8],
                           label=f"mode ≈ {f0:.0f} Hz")
             h.append(ln)
-        ax.axhline(API_LOG_DEC_MIN, color="tab:red", lw=1)
+        ax.axhline(API_LOG_DEC_MIN, color="tab:red", lw=1.6, ls=(0, (5, 2)))
         ax.axhline(0, color="k", lw=0.6)
-        h.append(Line2D([], [], color="tab:red", label=f"API 617 level I: δ > {API_LOG_DEC_MIN}"))
+        h.append(Line2D([], [], color="tab:red", lw=1.6, ls=(0, (5, 2)),
+                        label=f"API 617 level I: δ > {API_LOG_DEC_MIN}"))
         h.append(Line2D([], [], color="0.3", ls="-", label="solid: forward, dashed: backward, "
                                                              "dotted: planar"))
         if op_range is not None:
             ax.axvspan(*op_range, color="tab:green", alpha=0.12, lw=0)
             h.append(Patch(color="tab:green", alpha=0.12, label="operating speed range"))
         ax.set_xlabel("rotor speed (Hz)")
-        ax.set_ylabel("logarithmic decrement δ (–), clipped to [−1, 5]")
+        ax.set_ylabel("logarithmic decrement δ (–), clipped to [−1, 1.5]")
+        ax.set_ylim(-0.1 + min(0.0, float(np.nanmin(np.clip(ld, -1, 1.5)))), 1.55)
         ax.set_title("stability of every rotor mode over the speed range")
         ax.legend(handles=h, loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=6)
     return fig
