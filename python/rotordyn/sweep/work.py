@@ -456,7 +456,11 @@ def _wf_rows(job, variants, chunk_id, lo, hi, rows):
             continue
         freq, ax = tr.spectrum(last_fraction=0.5, axis="x")
         _, ay_ = tr.spectrum(last_fraction=0.5, axis="y")
-        keep = freq <= float(opts.get("max_harmonic", 4.0)) * f
+        # max_frequency_hz: every speed's spectrum over the same span (a waterfall's traces
+        # then line up); else up to max_harmonic × speed
+        fmax = opts.get("max_frequency_hz")
+        keep = freq <= (float(fmax) if fmax is not None
+                        else float(opts.get("max_harmonic", 4.0)) * f)
         for fr, a1, a2 in zip(freq[keep], ax[keep], ay_[keep]):
             rows.append({**row, "freq_hz": float(fr), "amplitude_x_m": float(a1),
                          "amplitude_y_m": float(a2), "order": float(fr / f),
