@@ -2,7 +2,8 @@
 
 * A ROSS rotor imported into a System has ROSS's own natural frequencies: ROSS's example
   rotor (ross.rotor_example(): uniform steel shaft of 6 Timoshenko elements, two disks,
-  two 1e6 N/m bearings) at 0 and 500 rad/s, damped frequencies within 0.1 % (the same
+  two 1e6 N/m bearings) at 0 and 500 rad/s: our six lowest lateral damped frequencies are
+  among ROSS's within 0.1 % (the same
   Timoshenko/Cowper formulation on the same mesh; the tolerance covers the two codes'
   different element integrations of the shear coefficient).
 * A ROSS BearingElement exported from a bearing carries this solver's coefficients at its
@@ -34,11 +35,15 @@ def test_ross_rotor_imported_has_ross_frequencies():
         rotor = rs.rotor_example()
         s = system_from_ross(rotor)
         for w in (0.0, 500.0):
-            wd_ross = np.sort(np.asarray(rotor.run_modal(w, num_modes=12).wd))[:6]
-            m = rotordyn.modes(s, speed_hz=w / (2 * math.pi), n_modes=8)
+            wd_ross = np.sort(np.asarray(rotor.run_modal(w, num_modes=24).wd))
+            m = rotordyn.modes(s, speed_hz=w / (2 * math.pi), n_modes=12)
             wd = np.sort(np.asarray(m.eigenvalues).imag)
             wd = wd[wd > 1e-6][:6]
-            np.testing.assert_allclose(wd, wd_ross, rtol=1e-3)
+            assert len(wd) == 6
+            # ROSS 2 elements also carry axial and torsional DOFs, whose modes appear in its
+            # list: every lateral frequency of ours must be one of ROSS's.
+            rel = np.min(np.abs(wd[:, None] / wd_ross[None, :] - 1), axis=1)
+            assert np.all(rel < 1e-3), (wd, wd_ross)
 
 
 def test_export_tilting_pad_to_ross_bearing():
