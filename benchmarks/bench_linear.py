@@ -20,28 +20,30 @@ Run ``python benchmarks/bench_linear.py [--repeat 7] [--wall] [--no-ross]``.
    film (ROSS has no film equilibrium; it solves its full 108-DOF model at each speed), next
    to ``rotordyn.rotor_campbell`` on the same full rotor. Goal: < 0.5 s.
 
-Times are the CPU time of this thread (``time.thread_time``; the machine is shared), or wall
-time with ``--wall``; medians of ``--repeat`` runs after one warm-up. Structure as asv
-(``params`` × ``param_names``).
+Protocol (benchmarks/_common.py): one BLAS/OpenMP thread for every side (threadpoolctl),
+wall and CPU time of the process side by side (medians of ``--repeat`` runs after one
+warm-up), the machine load before and after, and the rotordyn/ROSS sides of the Campbell
+ratio timed in interleaved repeats. ROSS memoises ``Rotor.run_modal`` (which run_campbell
+calls at each speed) per rotor with an lru_cache: every cache is cleared before each timed
+ROSS call (a warm-up on the same rotor and speeds otherwise makes every timed call a
+dictionary look-up, which is where an earlier "6.4x slower than ROSS" came from). Ratios are
+in wall time. Structure as asv (``params`` × ``param_names``).
 """
 
 from __future__ import annotations
 
 import argparse
-import contextlib
 import os
 import statistics
 import sys
 import time
 
-os.environ.setdefault("OMP_NUM_THREADS", "1")
-os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
-
 import numpy as np  # noqa: E402
 import scipy.linalg as sla  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _common import fmt, import_ross  # noqa: E402
+from _common import (Timing, clear_ross_caches, fmt, footer, header, import_ross,  # noqa: E402
+                     interleaved, quiet_fds)
 
 import rotordyn as rd  # noqa: E402
 from rotordyn import _core  # noqa: E402
@@ -51,41 +53,26 @@ params = ([0.10e6, 0.15e6, 0.20e6, 0.25e6],)
 param_names = ("chamber_pressure_pa",)
 SPEED_HZ, AY_M = 50.0, -1.85e-3
 CAMPBELL_SPEEDS = np.linspace(5.0, 120.0, 100)
-CLOCK = time.thread_time
 
 
 def median_of(repeat, setup, fn):
-    """Median over ``repeat`` of the time of fn() after an untimed setup(); plus the last
-    result. One untimed warm-up round first."""
+    """Median wall and CPU time (a Timing) over ``repeat`` runs of fn() after an untimed
+    setup(); plus the last result. One untimed warm-up round first."""
     setup()
     out = fn()
-    ts = []
+    ws, cs = [], []
     for _ in range(repeat):
         setup()
-        t0 = CLOCK()
+        w0, c0 = time.perf_counter(), time.process_time()
         out = fn()
-        ts.append(CLOCK() - t0)
-    return statistics.median(ts), out
+        ws.append(time.perf_counter() - w0)
+        cs.append(time.process_time() - c0)
+    return Timing(statistics.median(ws), statistics.median(cs), ws, cs), out
 
 
-@contextlib.contextmanager
-def quiet_fds():
-    """Silence C-level stdout/stderr (ROSS's REFPROP loader prints from a shared library)."""
-    saved = [os.dup(1), os.dup(2)]
-    null = os.open(os.devnull, os.O_WRONLY)
-    try:
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os.dup2(null, 1)
-        os.dup2(null, 2)
-        yield
-    finally:
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os.dup2(saved[0], 1)
-        os.dup2(saved[1], 2)
-        for fd in saved + [null]:
-            os.close(fd)
+def wc(t: Timing) -> str:
+    """``wall/CPU`` in a table cell."""
+    return f"{fmt(t.wall).strip()}/{fmt(t.cpu).strip()}"
 
 
 # -- 1. operating point ---------------------------------------------------------------------
@@ -96,9 +83,10 @@ def bench_operating_point(rig, repeat):
     print(f"\n1) Rig operating point, W = {SPEED_HZ:g} Hz, a_y = {AY_M * 1e3:g} mm, warm start "
           f"(equilibrium at 0.99 p_c just before), {asm.n} coordinates, film "
           f"{rig.bearings[0].n_circ}x{rig.bearings[0].n_axial}")
-    print(f"   {'p_c (MPa)':>9} | {'stability()':>11} | {'equilibrium':>11} | {'linearize':>11} | "
-          f"{'modal (C++)':>11} || {'FD K_H stab.':>12} | {'FD linearize':>12} | "
-          f"{'SciPy eig':>11}")
+    print("   (each cell: median wall / CPU time)")
+    print(f"   {'p_c (MPa)':>9} | {'stability()':>19} | {'equilibrium':>19} | {'linearize':>19} | "
+          f"{'modal (C++)':>19} || {'FD K_H stab.':>19} | {'FD linearize':>19} | "
+          f"{'SciPy eig':>19}")
     totals = []
     for pc in params[0]:
         def setup(pc=pc):
@@ -127,10 +115,12 @@ def bench_operating_point(rig, repeat):
         assert np.allclose(ev, ours, rtol=1e-8), (ev, ours)
         assert np.allclose(st_fd.eigenvalues, st.eigenvalues, rtol=1e-6)
         totals.append(t_st)
-        print(f"   {pc / 1e6:9.2f} | {fmt(t_st):>11} | {fmt(t_eq):>11} | {fmt(t_lin):>11} | "
-              f"{fmt(t_mod):>11} || {fmt(t_fd):>12} | {fmt(t_lfd):>12} | {fmt(t_sp):>11}")
-    print(f"   median over the pressures: {fmt(statistics.median(totals)).strip()} per full "
-          f"operating point (goal < 3 ms): {'met' if statistics.median(totals) < 3e-3 else 'NOT met'}")
+        print(f"   {pc / 1e6:9.2f} | {wc(t_st):>19} | {wc(t_eq):>19} | {wc(t_lin):>19} | "
+              f"{wc(t_mod):>19} || {wc(t_fd):>19} | {wc(t_lfd):>19} | {wc(t_sp):>19}")
+    med_w = statistics.median(t.wall for t in totals)
+    med_c = statistics.median(t.cpu for t in totals)
+    print(f"   median over the pressures: {fmt(med_w).strip()} wall, {fmt(med_c).strip()} CPU per "
+          f"full operating point (goal < 3 ms): {'met' if med_w < 3e-3 else 'NOT met'} (wall)")
 
 
 # -- 2. Campbell ----------------------------------------------------------------------------
@@ -174,17 +164,15 @@ def bench_campbell(rig, repeat, use_ross):
           f"{pc / 1e6:g} MPa, a_y = {ay:g} (equilibrium continued, K_H(Ω), D_H(Ω), all modes)")
     t_rd, c = median_of(repeat, lambda: None, lambda: rd.campbell(rig, sp, pc, ay))
     crit = c.critical_speeds()["speed_hz"].to_numpy()
-    print(f"   rotordyn.campbell                 {fmt(t_rd)}   ({1e3 * t_rd / len(sp):.2f} ms "
+    print(f"   rotordyn.campbell                 {t_rd}   ({1e3 * t_rd.wall / len(sp):.2f} ms "
           f"per speed; critical speeds {np.round(crit, 2)} Hz) goal < 0.5 s: "
-          f"{'met' if t_rd < 0.5 else 'NOT met'}")
+          f"{'met' if t_rd.wall < 0.5 else 'NOT met'}")
     t_fd, cfd = median_of(max(1, repeat // 2), lambda: None,
                           lambda: rd.campbell(rig, sp, pc, ay, method="finite_difference"))
-    # Same modes: the FD velocity step (1e-5 c ω) crosses a cavitation-set change at some
-    # speeds (D_H within 0.35 %, tests/test_linear_references.py), so compare loosely.
     fin = np.isfinite(c.eigenvalues)
     dev = np.max(np.abs(cfd.eigenvalues[fin] - c.eigenvalues[fin]) / np.abs(c.eigenvalues[fin]))
     assert dev < 1e-2, dev
-    print(f"   same, finite-difference K_H, D_H  {fmt(t_fd)}   ratio {t_fd / t_rd:6.2f}x "
+    print(f"   same, finite-difference K_H, D_H  {t_fd}   ratio {t_fd.wall / t_rd.wall:6.2f}x "
           f"(max |Δλ|/|λ| {dev:.1e})")
 
     def python_loop():
@@ -199,53 +187,56 @@ def bench_campbell(rig, repeat, use_ross):
     t_py, py = median_of(max(1, repeat // 2), lambda: None, python_loop)
     ours = [np.sort(row[np.isfinite(row) & (row.imag > 0)].imag) for row in c.eigenvalues]
     assert all(np.allclose(a, b, rtol=1e-7) for a, b in zip(py, ours))
-    print(f"   loop: linearize + scipy eigvals   {fmt(t_py)}   ratio {t_py / t_rd:6.2f}x")
+    print(f"   loop: linearize + scipy eigvals   {t_py}   ratio {t_py.wall / t_rd.wall:6.2f}x")
 
     like = rd_rig_like(rig)
     n_dof = 4 * (rig.rotor.n_elements + 1)
-    t_rc, rc = median_of(max(1, repeat // 3), lambda: None,
-                         lambda: rd.rotor_campbell(like, sp, reduction="none", n_modes=6))
-    print(f"   same-size linear rotor ({n_dof} free-free DOF, 6 modes, no film):")
-    print(f"     rotordyn.rotor_campbell         {fmt(t_rc)}")
-    ross = None
-    if use_ross:
+    ross = import_ross() if use_ross else None
+    print(f"   same-size linear rotor ({n_dof} free-free DOF, 6 modes, no film), interleaved:")
+
+    def rd_camp():
+        return rd.rotor_campbell(like, sp, reduction="none", n_modes=6)
+
+    fns = {"rd": rd_camp}
+    if ross is not None:
         with quiet_fds():
-            ross = import_ross()
+            rr = ross_rig_like(ross, rig)
+        sp_rad = 2 * np.pi * sp
+
+        def ross_camp():
+            n = clear_ross_caches(rr)  # run_modal is memoised per rotor and speed
+            assert n >= 1
+            with quiet_fds():
+                return rr.run_campbell(sp_rad, frequencies=6)
+
+        fns["ross"] = ross_camp
+    t = interleaved(fns, repeat=max(1, repeat // 2))
+    rc = rd_camp()
+    print(f"     rotordyn.rotor_campbell         {t['rd']}")
     if ross is None:
         print("     ROSS run_campbell               not installed")
         return
-    with quiet_fds():
-        rr = ross_rig_like(ross, rig)
-    sp_rad = 2 * np.pi * sp
-
-    def ross_camp():
-        with quiet_fds():
-            return rr.run_campbell(sp_rad, frequencies=6)
-
-    t_ro, res = median_of(max(1, repeat // 3), lambda: None, ross_camp)
+    res = fns["ross"]()
     wd_ross = np.sort(np.asarray(res.wd)[0])[:4] / (2 * np.pi)
     wd_rd = np.sort(rc.frequencies_hz[0])[:4]
-    print(f"     ROSS {ross.__version__} run_campbell         {fmt(t_ro)}   rotor_campbell / ROSS = "
-          f"{t_rc / t_ro:.1f}x; the rig's campbell / ROSS = {t_rd / t_ro:.2f}x "
-          f"(first ω_d at 5 Hz: ROSS {np.round(wd_ross, 2)}, rotordyn {np.round(wd_rd, 2)} Hz)")
-    print("     (both solve a few modes by shift-invert Arnoldi per speed: ROSS with ARPACK "
-          "on the sparse state matrix, rotordyn from 48 DOFs up since 7ca922a)")
+    print(f"     ROSS {ross.__version__} run_campbell         {t['ross']}   ROSS / rotor_campbell = "
+          f"{t['ross'].wall / t['rd'].wall:.1f}x; ROSS / the rig's campbell = "
+          f"{t['ross'].wall / t_rd.wall:.2f}x (wall)")
+    print(f"     (ROSS's caches cleared before every timed call; first ω_d at 5 Hz: ROSS "
+          f"{np.round(wd_ross, 2)}, rotordyn {np.round(wd_rd, 2)} Hz)")
 
 
 def main(argv=None):
-    global CLOCK
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=7)
-    ap.add_argument("--wall", action="store_true", help="wall time instead of thread CPU time")
     ap.add_argument("--no-ross", action="store_true")
     args = ap.parse_args(argv)
-    if args.wall:
-        CLOCK = time.perf_counter
+    header("bench_linear: the rig's operating point and Campbell diagram")
     rig = rd.models.paper_rig()
-    print(f"rotordyn {rd.__version__}; clock: {'wall' if args.wall else 'thread CPU'}; "
-          f"repeat {args.repeat}")
+    print(f"rotordyn {rd.__version__}; repeat {args.repeat}")
     bench_operating_point(rig, args.repeat)
     bench_campbell(rig, args.repeat, not args.no_ross)
+    footer()
 
 
 if __name__ == "__main__":

@@ -1,13 +1,22 @@
-"""Rotor FE benchmarks (issue 2): assembly + eigen-analysis of a 100-element rotor, and a
-50-speed Campbell diagram of the Friswell et al. (2010) Example 5.9.1 rotor.
+"""Rotor FE benchmarks (issues 2 and 11): eigen-analysis of a 100-element rotor, a 50-speed
+Campbell diagram of Friswell et al. (2010) Example 5.9.1, and the unbalance response of the
+100-element rotor at 50 frequencies.
 
-Baselines measured in the same run: (a) SciPy — the same assembled matrices, state matrix
-formed in NumPy and all eigenvalues by scipy.linalg.eig (what a straightforward
-implementation does); (b) ROSS (`ross-rotordynamics`, optional extra) on the same rotor, when
-importable: `Rotor(...)` + `run_modal(speed, num_modes=12)` and `run_campbell(speeds,
-frequencies=6)`. Printed: median times and ratios (baseline / rotordyn).
+    .venv/bin/python benchmarks/bench_rotor.py [--repeat 5] [--no-ross]
 
-    .venv/bin/python benchmarks/bench_rotor.py [--repeat 5]
+Protocol (benchmarks/_common.py): every side on one BLAS/OpenMP thread (threadpoolctl) unless
+a row says otherwise, the sides of each ratio timed in interleaved repeats, medians of wall and
+CPU time, machine load before and after. Ratios are baseline / rotordyn in wall time.
+
+Baselines in the same run:
+(a) SciPy — the same assembled matrices, the state matrix formed in NumPy and all its
+    eigenvalues by scipy.linalg.eig (what a straightforward implementation does);
+(b) ROSS (``ross-rotordynamics``, optional extra) on the same rotor, when importable:
+    ``Rotor(...)`` + ``run_modal(speed, num_modes=12)``, ``run_campbell(speeds, frequencies=6)``
+    and ``run_unbalance_response``. ROSS memoises run_modal/run_campbell (functools.lru_cache):
+    every cache is cleared before each timed call, so no call is a dictionary look-up;
+(c) unbalance: the dense complex LU (numpy.linalg.solve) of the same dynamic stiffness, which is
+    what rotordyn did before issue 11, on one thread and — one row — with the default threads.
 """
 
 from __future__ import annotations
@@ -20,28 +29,32 @@ import numpy as np
 import scipy.linalg as sla
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _common import fmt, import_ross, median_time  # noqa: E402
+from _common import (clear_ross_caches, fmt, footer, header, import_ross,  # noqa: E402
+                     interleaved)
 
 import rotordyn as rd  # noqa: E402
 import rotordyn._core as core  # noqa: E402
 
 N_EL = 100
 L_EL, D_SHAFT = 0.015, 0.05
-K_BRG = 1e7
+K_BRG, C_BRG = 1e7, 200.0
 SPEED = 300.0  # rad/s
+UB_STATION, UB_ME = 30, 1e-4
+UB_SPEEDS_HZ = np.linspace(5.0, 400.0, 50)
 
 
 def rd_system():
     secs = tuple(rd.ShaftSection(L_EL, D_SHAFT) for _ in range(N_EL))
-    sups = tuple(rd.Support(s, "linear", kxx_n_per_m=K_BRG, kyy_n_per_m=K_BRG) for s in (0, N_EL))
+    sups = tuple(rd.Support(s, "linear", kxx_n_per_m=K_BRG, kyy_n_per_m=K_BRG,
+                            cxx_n_s_per_m=C_BRG, cyy_n_s_per_m=C_BRG) for s in (0, N_EL))
     steel = rd.Material("steel", 7810.0, 211e9, shear_modulus_pa=81.2e9)
+    # No gravity: a free linear response (the unbalance response does not depend on it).
     return rd.System(rotor=rd.Rotor(secs), materials=(steel,), supports=sups,
-                     reduction=rd.Reduction(method="none"))
+                     reduction=rd.Reduction(method="none"), gravity_m_s2=0.0)
 
 
 def rd_modal():
-    s = rd_system()
-    return rd.modes(s, SPEED / (2 * np.pi), reduction="none", n_modes=12)
+    return rd.modes(rd_system(), SPEED / (2 * np.pi), reduction="none", n_modes=12)
 
 
 def scipy_modal():
@@ -58,7 +71,8 @@ def ross_rotor_100(ross):
     steel = ross.Material(name="bench_steel", rho=7810, E=211e9, G_s=81.2e9)
     shaft = [ross.ShaftElement(L=L_EL, idl=0.0, odl=D_SHAFT, material=steel, shear_effects=True,
                                rotary_inertia=True, gyroscopic=True) for _ in range(N_EL)]
-    brgs = [ross.BearingElement(n=n, kxx=K_BRG, kyy=K_BRG, cxx=0, cyy=0) for n in (0, N_EL)]
+    brgs = [ross.BearingElement(n=n, kxx=K_BRG, kyy=K_BRG, cxx=C_BRG, cyy=C_BRG)
+            for n in (0, N_EL)]
     return ross.Rotor(shaft, [], brgs)
 
 
@@ -72,33 +86,31 @@ def ross_friswell(ross):
     return ross.Rotor(shaft, disks, brgs)
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--repeat", type=int, default=5)
-    args = ap.parse_args(argv)
-    ross = import_ross()
-    print(f"rotordyn {rd.__version__}; ROSS: {'ross ' + ross.__version__ if ross else 'not installed'}")
+def row(name, t, ref=None):
+    ratio = f"   ratio {t.wall / ref.wall:7.1f}x" if ref is not None else ""
+    print(f"   {name:<34} {t}{ratio}")
 
-    # -- 1. assembly + eigen-analysis of a 100-element rotor -------------------------------
+
+def section_modal(ross, repeat):
     ours = rd_modal()
     ref = scipy_modal()
     assert np.allclose(ours.eigenvalues, ref, rtol=1e-6), "rotordyn and SciPy disagree"
-    t_rd = median_time(rd_modal, repeat=args.repeat)
-    t_sp = median_time(scipy_modal, repeat=max(1, args.repeat // 2))
-    print(f"\n1) {N_EL}-element rotor ({4 * (N_EL + 1)} DOF), assembly + 12 modes at {SPEED:g} rad/s")
-    print(f"   rotordyn             {fmt(t_rd)}")
-    print(f"   SciPy dense eig      {fmt(t_sp)}   ratio {t_sp / t_rd:7.1f}x")
+    fns = {"rd": rd_modal, "scipy": scipy_modal}
     if ross:
-        def ross_modal():
-            r = ross_rotor_100(ross)
-            return r.run_modal(speed=SPEED, num_modes=12)
+        def ross_modal():  # a new rotor each call: nothing memoised
+            return ross_rotor_100(ross).run_modal(speed=SPEED, num_modes=12)
+        fns["ross"] = ross_modal
+    t = interleaved(fns, repeat=repeat)
+    print(f"\n1) {N_EL}-element rotor ({4 * (N_EL + 1)} DOF), assembly + 12 modes at {SPEED:g} rad/s")
+    row("rotordyn.modes", t["rd"])
+    row("SciPy dense eig (state matrix)", t["scipy"], t["rd"])
+    if ross:
+        wd = np.sort(fns["ross"]().wd)[:3]
+        row("ROSS Rotor + run_modal", t["ross"], t["rd"])
+        print(f"   (first ω_d: ROSS {wd.round(3)}, rotordyn {ours.eigenvalues.imag[:3].round(3)} rad/s)")
 
-        t_ro = median_time(ross_modal, repeat=max(1, args.repeat // 2))
-        wd = np.sort(ross_modal().wd)[:6]
-        print(f"   ROSS run_modal       {fmt(t_ro)}   ratio {t_ro / t_rd:7.1f}x "
-              f"(first ω_d ROSS {wd[:3].round(3)}, rotordyn {ours.eigenvalues.imag[:3].round(3)})")
 
-    # -- 2. 50-speed Campbell of the Friswell rotor ----------------------------------------
+def section_campbell(ross, repeat):
     fr = rd.models.friswell_5_9_1()
     speeds_rad = np.linspace(0, 4000 * 2 * np.pi / 60, 50)
 
@@ -120,17 +132,92 @@ def main(argv=None):
 
     cr = rd_camp()
     assert np.allclose(np.sort(cr.eigenvalues.imag, axis=1), sp_camp(), rtol=1e-8)
-    t_rd = median_time(rd_camp, repeat=args.repeat)
-    t_sp = median_time(sp_camp, repeat=args.repeat)
-    print("\n2) Campbell, Friswell Example 5.9.1 rotor, 50 speeds 0–4000 rev/min, 6 modes")
-    print(f"   rotordyn             {fmt(t_rd)}")
-    print(f"   SciPy dense eig      {fmt(t_sp)}   ratio {t_sp / t_rd:7.1f}x")
+    fns = {"rd": rd_camp, "scipy": sp_camp}
     if ross:
-        def ross_camp():
+        def ross_camp():  # a new rotor each call: nothing memoised
             return ross_friswell(ross).run_campbell(speeds_rad, frequencies=6)
+        fns["ross"] = ross_camp
+    t = interleaved(fns, repeat=repeat)
+    print("\n2) Campbell, Friswell Example 5.9.1 rotor, 50 speeds 0–4000 rev/min, 6 modes")
+    row("rotordyn.rotor_campbell", t["rd"])
+    row("SciPy dense eig per speed", t["scipy"], t["rd"])
+    if ross:
+        row("ROSS Rotor + run_campbell", t["ross"], t["rd"])
 
-        t_ro = median_time(ross_camp, repeat=max(1, args.repeat // 2))
-        print(f"   ROSS run_campbell    {fmt(t_ro)}   ratio {t_ro / t_rd:7.1f}x")
+
+def section_unbalance(ross, repeat):
+    s = rd_system()
+    ub = [(UB_STATION, UB_ME, 0.0)]
+    sp = UB_SPEEDS_HZ
+    lms = [rd.linearize(s, f) for f in sp]  # the matrices of each frequency (linear rotor)
+    from rotordyn.analysis.assembly import assembled
+    asm = assembled(s)
+    F1 = asm.station_load_matrix(UB_STATION) @ (UB_ME * np.array([1.0, -1j]))
+    n = asm.n
+
+    def solves_sparse():
+        return [core.harmonic_response(lm.M, lm.D, lm.K, 2 * np.pi * f,
+                                       ((2 * np.pi * f) ** 2 * F1)[:, None])
+                for lm, f in zip(lms, sp)]
+
+    def solves_dense():
+        out = []
+        for lm, f in zip(lms, sp):
+            w = 2 * np.pi * f
+            out.append(np.linalg.solve(lm.K - w**2 * lm.M + 1j * w * lm.D, w**2 * F1))
+        return out
+
+    def full_api():
+        return rd.unbalance_response(s, ub, sp, stations=[UB_STATION])
+
+    a, b = solves_sparse(), solves_dense()
+    err = max(np.abs(x[:, 0] - y).max() / np.abs(y).max() for x, y in zip(a, b))
+    assert err < 1e-9, err
+    fns = {"sparse": solves_sparse, "dense": solves_dense, "api": full_api}
+    if ross:
+        rr = ross_rotor_100(ross)
+
+        def ross_ub():
+            clear_ross_caches(rr)
+            return rr.run_unbalance_response(UB_STATION, UB_ME, 0.0, 2 * np.pi * sp)
+        fns["ross"] = ross_ub
+    t = interleaved(fns, repeat=repeat)
+    print(f"\n3) Unbalance response, {N_EL}-element rotor ({n} DOF after constraints), "
+          f"{len(sp)} frequencies {sp[0]:g}-{sp[-1]:g} Hz")
+    row("rotordyn sparse LU (C++), 50 solves", t["sparse"])
+    row("dense complex LU (NumPy), 50 solves", t["dense"], t["sparse"])
+    print(f"   per frequency: sparse {fmt(t['sparse'].wall / len(sp))}, dense "
+          f"{fmt(t['dense'].wall / len(sp))}; max relative difference {err:.1e}")
+    row("rd.unbalance_response (whole API)", t["api"])
+    if ross:
+        row("ROSS run_unbalance_response", t["ross"], t["api"])
+    # The one row with the default BLAS threads (what the former code did on a shared machine).
+    from threadpoolctl import threadpool_limits
+    with threadpool_limits(limits=os.cpu_count()):
+        td = interleaved({"dense": solves_dense}, repeat=repeat)["dense"]
+    row(f"dense LU, {os.cpu_count()} BLAS threads (row)", td, t["sparse"])
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--no-ross", action="store_true")
+    ap.add_argument("--only", choices=("modal", "campbell", "unbalance"))
+    args = ap.parse_args(argv)
+    header("bench_rotor: 100-element rotor and Friswell 5.9.1")
+    ross = None if args.no_ross else import_ross()
+    print(f"rotordyn {rd.__version__}; ROSS: {'ross ' + ross.__version__ if ross else 'not used'}"
+          f"; {args.repeat} interleaved repeats, medians")
+    if ross:
+        print("   ROSS memoises run_modal/run_campbell per rotor (methodtools lru_cache): each timed "
+              "ROSS call builds its rotor or has its caches cleared first")
+    if args.only in (None, "modal"):
+        section_modal(ross, args.repeat)
+    if args.only in (None, "campbell"):
+        section_campbell(ross, args.repeat)
+    if args.only in (None, "unbalance"):
+        section_unbalance(ross, args.repeat)
+    footer()
 
 
 if __name__ == "__main__":

@@ -80,6 +80,9 @@ void bind_system(py::module_& m) {
            py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"), py::arg("options"), gil())
       .def_property_readonly("reynolds_solves", &SystemSolver::reynolds_solves)
       .def_property_readonly("last_h_min", &SystemSolver::last_h_min)
+      .def("film_h_min", &SystemSolver::film_h_min, py::arg("r"),
+           "Minimum film thickness of each film at positions r (n,), m, from the geometry "
+           "alone (no Reynolds solve).")
       .def("last_pressure", &SystemSolver::last_pressure, py::arg("film"));
 }
 

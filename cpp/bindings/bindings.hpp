@@ -12,6 +12,7 @@ void bind_errors(py::module_& m);
 void bind_info(py::module_& m);
 void bind_rotor(py::module_& m);
 void bind_modal(py::module_& m);
+void bind_harmonic(py::module_& m);
 void bind_system(py::module_& m);
 void bind_transient(py::module_& m);
 void bind_reynolds(py::module_& m);

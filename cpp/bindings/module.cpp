@@ -8,6 +8,7 @@ PYBIND11_MODULE(_core, m) {
   bind_info(m);
   bind_rotor(m);
   bind_modal(m);
+  bind_harmonic(m);
   bind_reynolds(m);
   bind_system(m);
   bind_bearings(m);

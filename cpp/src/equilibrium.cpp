@@ -28,9 +28,10 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   const Eigen::Index n = model_.n();
   require(std::isfinite(omega), "speed: expected a finite value");
   require(std::isfinite(pc) && pc >= 0, "chamber_pressure_pa: expected a finite value >= 0");
-  require(a.size() == n && a.allFinite(), shape_msg("a", n, 1, a.size(), 1));
-  require(r0.size() == 0 || (r0.size() == n && r0.allFinite()),
-          shape_msg("r0", n, 1, r0.size(), 1));
+  require(a.size() == n, shape_msg("a", n, 1, a.size(), 1));
+  require(r0.size() == 0 || r0.size() == n, shape_msg("r0", n, 1, r0.size(), 1));
+  require(r0.allFinite(), "r0: expected finite values");
+  require(a.allFinite(), "a: expected finite values");
   require(opt.tol > 0 && opt.max_iter > 0, "options: tol and max_iter must be positive");
   require(std::isfinite(opt.pm), "pm: expected P_m >= 0, or < 0 for automatic");
 
@@ -53,17 +54,29 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     out.h_min = h_min_;
     out.h_min_angle_deg = h_min_angle_;
     out.reynolds_solves = solves_ - solves0;
-    if (out.status == "ok" || out.status == "not_converged") {
-      for (std::size_t i = 0; i < films_.size(); ++i) {
-        const double c = model_.films[i].geometry.clearance_m;
-        if (h_min_[i] < opt.contact_fraction * c) {
-          std::ostringstream os;
-          os << "film '" << model_.films[i].name << "': minimum film thickness " << h_min_[i]
-             << " m is below " << opt.contact_fraction << " c";
-          if (out.status == "not_converged") os << " (no equilibrium: " << out.message << ")";
-          out.status = "contact";
-          out.message = os.str();
-        }
+    // Statuses (issue 13): "ok" and "contact" are converged equilibria (contact: a film is
+    // thinner than contact_fraction c there); "not_converged" and "no_equilibrium" (the
+    // iteration failed with a film closing) are failures, never to be linearised. A failed
+    // solve is never renamed to a converged status.
+    const bool converged = out.status == "ok";
+    if (converged && !(out.r.allFinite() && out.film_force.allFinite() &&
+                       std::isfinite(res))) {
+      out.status = "not_converged";
+      out.message = "non-finite equilibrium (residual " + std::to_string(res) + ")";
+    }
+    for (std::size_t i = 0; i < films_.size(); ++i) {
+      const double c = model_.films[i].geometry.clearance_m;
+      if (!(h_min_[i] < opt.contact_fraction * c)) continue;
+      std::ostringstream os;
+      os << "film '" << model_.films[i].name << "': minimum film thickness " << h_min_[i]
+         << " m is below " << opt.contact_fraction << " c";
+      if (out.status == "ok" || out.status == "contact") {
+        out.status = "contact";
+        out.message = os.str();
+      } else {
+        out.status = "no_equilibrium";
+        out.message = "no equilibrium: " + out.message + "; " + os.str();
+        break;
       }
     }
     return out;
@@ -78,9 +91,41 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     Eigen::VectorXd H = zero;
     Eigen::MatrixXd KH;
     auto newton = [&](const Eigen::VectorXd& Fs, Eigen::VectorXd& rs, int iters, double& res,
-                      std::string& why) -> bool {
+                      std::string& why, bool polish) -> bool {
       auto resid = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& Hr) {
         return Eigen::VectorXd(model_.K * rr - Hr - Fs);
+      };
+      Eigen::VectorXd R;
+      // Converged to the tolerance: full Newton steps on to the round-off floor, so the
+      // answer is the discrete root itself and not the first iterate inside the tolerance,
+      // which depends on the starting point (a warm start may change the cost, never the
+      // answer beyond round-off).
+      auto polish_root = [&]() {
+        if (!polish) return;
+        for (int k = 0; k < 3; ++k) {
+          linearize_last_solve(false, KH, nullptr);
+          const Eigen::VectorXd dr = (model_.K + KH).partialPivLu().solve(-R);
+          if (!dr.allFinite() || inf_norm(dr) <= 1e-15 * std::max(inf_norm(rs), 1e-300)) return;
+          const Eigen::VectorXd r_try = rs + dr;
+          Eigen::VectorXd H_try;
+          try {
+            H_try = film_forces(r_try, zero, omega);
+          } catch (const ContactError&) {
+            film_forces(rs, zero, omega);
+            return;
+          }
+          const Eigen::VectorXd R_try = resid(r_try, H_try);
+          const double res_try = inf_norm(R_try) / out.load_scale;
+          if (!(res_try <= res)) {
+            film_forces(rs, zero, omega);  // leave the films at the returned point
+            return;
+          }
+          ++out.iterations;
+          rs = r_try;
+          H = H_try;
+          R = R_try;
+          res = res_try;
+        }
       };
       try {
         H = film_forces(rs, zero, omega);
@@ -88,10 +133,13 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
         why = std::string("starting point: ") + e.what();
         return false;
       }
-      Eigen::VectorXd R = resid(rs, H);
+      R = resid(rs, H);
       res = inf_norm(R) / out.load_scale;
       for (int it = 0; it < iters; ++it, ++out.iterations) {
-        if (res < opt.tol) return true;
+        if (res < opt.tol) {
+          polish_root();
+          return true;
+        }
         linearize_last_solve(false, KH, nullptr);  // the films' last solve is at rs
         const Eigen::VectorXd dr = (model_.K + KH).partialPivLu().solve(-R);
         if (!dr.allFinite()) {
@@ -126,7 +174,10 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
         }
         rs = r_try;
       }
-      if (res < opt.tol) return true;
+      if (res < opt.tol) {
+        polish_root();
+        return true;
+      }
       why = "Newton: no convergence in " + std::to_string(iters) + " iterations";
       return false;
     };
@@ -134,7 +185,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     double res = NAN;
     std::string why;
     Eigen::VectorXd rn = r;
-    if (newton(F, rn, opt.max_iter, res, why)) return finish(rn, H, res);
+    if (newton(F, rn, opt.max_iter, res, why, true)) return finish(rn, H, res);
     // Fallback: continuation in the load and configuration, F(λ) = λ F from the concentric,
     // undeformed state (the solution at λ = 0), with adaptive steps.
     Eigen::VectorXd rc = zero;
@@ -143,7 +194,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     while (lam < 1.0 && dlam > 1e-4 && out.iterations < 20 * opt.max_iter) {
       const double next = std::min(1.0, lam + dlam);
       Eigen::VectorXd rt = rc;
-      if (newton(next * F, rt, 40, res_c, why_c)) {
+      if (newton(next * F, rt, 40, res_c, why_c, next >= 1.0)) {
         rc = rt;
         lam = next;
         dlam *= 1.5;
@@ -203,7 +254,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       H = film_forces(r, zero, omega);
     }
   } catch (const ContactError& e) {
-    out.status = "contact";
+    out.status = "no_equilibrium";
     out.message = std::string("starting point: ") + e.what();
     return finish(r, zero, NAN);
   }
@@ -224,7 +275,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       }
     }
     if (!ok) {
-      out.status = "contact";
+      out.status = "no_equilibrium";
       out.message = "successive substitution: every step ends in contact";
       H = film_forces(r, zero, omega);
       return finish(r, H, res);

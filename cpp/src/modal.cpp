@@ -80,7 +80,13 @@ Whirl whirl_direction(const Eigen::VectorXcd& s, const std::vector<std::pair<int
   // Translations decide unless they are round-off against the rotations (pure tilt modes).
   const bool use_rot = !rot.empty() && st <= 1e-12 * (st + sr);
   const double area = use_rot ? ar : at, scale = use_rot ? sr : st;
-  if (scale == 0 || std::abs(area) < 1e-6 * scale) return Whirl::Planar;
+  // One rule with a stated tolerance (also rotordyn.results.modes.WHIRL_PLANAR_TOL): the whirl
+  // index 2·area/scale = (|F|² − |B|²)/(|F|² + |B|²) of the forward/backward circular
+  // components lies in [−1, 1]; a mode is planar when |index| < 0.05, i.e. its orbits'
+  // minor/major axis ratio is below about 2.5 % (near-planar modes of a nearly isotropic rotor
+  // at rest no longer flip between forward and backward on round-off).
+  constexpr double kPlanarTol = 0.05;
+  if (scale == 0 || 2.0 * std::abs(area) < kPlanarTol * scale) return Whirl::Planar;
   return area > 0 ? Whirl::Forward : Whirl::Backward;
 }
 

@@ -3,6 +3,7 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,8 +26,10 @@ inline std::string num(double v) {
 }  // namespace reynolds_detail
 
 /// One sparse system over a set of unknown nodes: the full grid, or — when the film and its
-/// rate are mirror-symmetric about z = 0 — the half grid k <= n_axial/2 whose mid-plane row is
-/// a half cell (its φ-terms and right-hand side halved, no flux across the mid-plane). The
+/// rate are mirror-symmetric about z = 0 — the half grid k <= Kh. For an even n_axial the
+/// mid-plane is the node row Kh = n_axial/2, a half cell (its φ-terms and right-hand side
+/// halved, no flux across the mid-plane); for an odd n_axial the mid-plane is the face between
+/// rows Kh = (n_axial-1)/2 and its mirror Kh+1, which carries no flux (equal pressures). The
 /// half system is the full system restricted by symmetry, not an approximation.
 struct LinearSystem {
   using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
@@ -45,7 +48,6 @@ struct LinearSystem {
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
   bool lu_analysed = false;
   std::vector<char> active;    // unknown: 1 = p held at 0 (reynolds) / cavitated (jfo)
-  bool have_active = false;
   enum class Factor { none, ldlt, lu, static_lu } factor = Factor::none;
   Eigen::VectorXd rhs, sol;
 };
@@ -59,7 +61,9 @@ struct ReynoldsSolver::Impl {
 
   int N = 0;        // nodes around
   int K1 = 0;       // node rows along (n_axial + 1)
-  int Kh = -1;      // mid-plane row (n_axial even) or -1
+  int Kh = -1;      // last row of the half grid: n_axial/2 (even; the mid-plane row) or
+                    // (n_axial-1)/2 (odd; the mid-plane is the face above it)
+  bool mid_node = true;  // n_axial even: the mid-plane is a node row
   int n_nodes = 0;  // N * K1, node n = j * K1 + k
   double R = 0, L = 0, c = 0, mu = 0, dphi = 0, dz = 0;
   std::vector<double> cosphi, sinphi;
@@ -83,6 +87,12 @@ struct ReynoldsSolver::Impl {
   std::vector<double> p;       // node pressures (the model's answer)
   std::vector<double> pfull;   // unclipped linear solution (none/gumbel)
   std::vector<double> theta;   // node fill fraction
+  // Reynolds: nodes where p = 0 and the multiplier A p − b = 0 (to round-off) — the
+  // cavitation set is degenerate there (e.g. the whole film of a centred journal) and the
+  // pressure is only directionally differentiable; linearize() then takes the limit of
+  // central differences (see solve_derivative_lcp).
+  std::vector<char> biactive;  // node -> 1 if degenerate
+  int n_biactive = 0;
   bool solved = false;
   FilmSolution out;
 
@@ -94,7 +104,7 @@ struct ReynoldsSolver::Impl {
 
   void build_system(LinearSystem& S, bool half);
   bool symmetric(const double* f) const;  // f(φ, z) == f(φ, −z) bitwise
-  void mirror_fields();                   // fill k > Kh from k < Kh after a half solve
+  void mirror_fields();                   // fill k > Kh from their mirrors after a half solve
 
   void set_film(const double* h_in, const double* hdot_in, double omega_in);
   // Right-hand side b of A p = b (Couette, squeeze, prescribed neighbours), unknown ordering.
@@ -106,7 +116,21 @@ struct ReynoldsSolver::Impl {
   double cell_residual(int n, const std::vector<double>& pp) const;
 
   void solve_linear(LinearSystem& S);    // none / gumbel
+  // Start of the active set, a function of this call's inputs only: the cavitated region of
+  // the same film on the grid with every other node in each direction (solved recursively
+  // the same way), interpolated; on grids too coarse or not halvable, the nodes whose source
+  // term b_i < 0 (divergent film: the Couette and squeeze terms draw fluid out of the cell).
+  // The primal–dual iteration then needs ~1–3 steps, nearly independent of the grid.
+  void predict_active(LinearSystem& S);
+  std::unique_ptr<ReynoldsSolver> coarse;  // Swift–Stieber solver on the halved grid
+  bool coarse_usable = false;
+  RowMatrixXd hc, hdc;                     // film sampled on the coarse nodes
   void solve_reynolds(LinearSystem& S);  // Swift–Stieber LCP by primal–dual active set
+  // Directional derivative dp of the Swift–Stieber solution for a residual change dr at a
+  // degenerate set: the LCP on the biactive unknowns, dp = 0 on the strongly active ones.
+  void solve_derivative_lcp(LinearSystem& S, const Eigen::VectorXd& dr, Eigen::VectorXd& x);
+  // (A_unmasked x)_i for the system's unknown ordering (x indexed by unknowns).
+  double apply_row(const LinearSystem& S, int i, const Eigen::VectorXd& x) const;
   void solve_jfo(LinearSystem& S);       // Elrod–Adams p–θ
   void fill_jfo(LinearSystem& S);
   // Factorise the p–θ system in S.A: static-pattern LU without pivoting (columns are

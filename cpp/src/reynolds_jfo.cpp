@@ -6,7 +6,7 @@
 // system M u = b whose column i is A's column (u_i = p_i) or the Couette column of r_i; the
 // partition is updated as in a semismooth Newton step on the piecewise-linear equation
 // F(u) = A max(u,0) − B max(−u,0) − b = 0 (Giacopini et al. 2010; Almqvist et al. 2014 give the
-// LCP form). Started from the Swift–Stieber solution, or from the previous partition.
+// LCP form). Started from this call's Swift–Stieber solution (no warm start).
 #include <algorithm>
 #include <cmath>
 
@@ -88,11 +88,10 @@ void ReynoldsSolver::Impl::solve_jfo(LinearSystem& S) {
   if (omega == 0.0)
     throw InputError("speed_hz: cavitation='jfo' needs a nonzero speed (got 0)");
   std::fill(theta.begin(), theta.end(), 1.0);
-  int it0 = 0;
-  if (!S.have_active) {  // start from the Swift–Stieber solution
-    solve_reynolds(S);
-    it0 = out.iterations;
-  }
+  // Always start from this call's Swift–Stieber solution (itself started from a prediction
+  // of the inputs only): no state of an earlier call enters the answer or its convergence.
+  solve_reynolds(S);
+  const int it0 = out.iterations;
   base_rhs(S, S.rhs);
   std::vector<char> next(S.n_unk);
   const int max_iter = 100 + S.n_unk / 4;
@@ -122,13 +121,11 @@ void ReynoldsSolver::Impl::solve_jfo(LinearSystem& S) {
     if (!changed) {
       if (S.half) mirror_fields();
       for (int n = 0; n < n_nodes; ++n) pfull[n] = p[n];
-      S.have_active = true;
       out.iterations = it0 + it;
       return;
     }
     S.active.swap(next);
   }
-  S.have_active = false;
   throw ConvergenceError("jfo cavitation: p-theta partition did not converge in " +
                          std::to_string(max_iter) + " iterations");
 }

@@ -56,8 +56,8 @@ void JournalBearingGeometry::validate() const {
       throw InputError(f + "center_deg: expected a finite angle, got " + num(g.center_deg));
     if (!(std::isfinite(g.width_deg) && g.width_deg >= 0.0 && g.width_deg < 360.0))
       throw InputError(f + "width_deg: expected 0 <= width_deg < 360, got " + num(g.width_deg));
-    if (!(std::isfinite(g.pressure_pa) && g.pressure_pa >= 0.0))
-      throw InputError(f + "pressure_pa: expected a finite gauge pressure >= 0, got " +
+    if (!(std::isfinite(g.pressure_pa) && g.pressure_pa >= 0.0 && g.pressure_pa <= 1e9))
+      throw InputError(f + "pressure_pa: expected a gauge pressure in [0, 1e9] Pa, got " +
                        num(g.pressure_pa));
   }
 }
@@ -79,7 +79,8 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   grid.validate();
   N = grid.n_circ;
   K1 = grid.n_axial + 1;
-  Kh = grid.n_axial % 2 == 0 ? grid.n_axial / 2 : -1;
+  mid_node = grid.n_axial % 2 == 0;
+  Kh = grid.n_axial / 2;  // even: the mid-plane row; odd: the row below the mid-plane face
   n_nodes = N * K1;
   R = 0.5 * geo.diameter_m;
   L = geo.length_m;
@@ -105,7 +106,11 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   for (const Groove& gv : geo.grooves) {
     std::vector<int> cols;
     const double half = 0.5 * gv.width_deg * kPi / 180.0;
-    const double centre = gv.center_deg * kPi / 180.0;
+    // wrap in degrees first (exact for any finite angle), then convert: a centre of
+    // 90 + 360e6 deg is the same groove as 90 deg, and 1e300 deg cannot overflow lround
+    double cdeg = std::fmod(gv.center_deg, 360.0);
+    if (cdeg < 0.0) cdeg += 360.0;
+    const double centre = cdeg * kPi / 180.0;
     if (gv.width_deg > 0.0) {
       for (int j = 0; j < N; ++j) {
         const double d = std::remainder(j * dphi - centre, 2.0 * kPi);
@@ -113,7 +118,7 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
       }
     }
     if (cols.empty()) {
-      long jj = std::lround(centre / dphi) % N;
+      long jj = std::lround(centre / dphi) % N;  // centre in [0, 2π]: no overflow
       if (jj < 0) jj += N;
       cols.push_back(static_cast<int>(jj));
     }
@@ -142,7 +147,10 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   p.assign(n_nodes, 0.0);
   pfull.assign(n_nodes, 0.0);
   theta.assign(n_nodes, 1.0);
+  biactive.assign(n_nodes, 0);
   for (int n = 0; n < n_nodes; ++n) p[n] = pfull[n] = p_fixed[n];
+  coarse_usable = (cav == Cavitation::reynolds || cav == Cavitation::jfo) &&
+                  (N + 1) / 2 >= 24 && (grid.n_axial + 1) / 2 >= 4;
 }
 
 void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
@@ -156,7 +164,7 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
     if (fixed[n] || (half && k > Kh)) continue;
     S.unk[n] = static_cast<int>(S.node_of.size());
     S.node_of.push_back(n);
-    S.wphi.push_back(half && k == Kh ? 0.5 : 1.0);
+    S.wphi.push_back(half && k == Kh && mid_node ? 0.5 : 1.0);
     S.has_n.push_back(half && k == Kh ? 0 : 1);
   }
   S.n_unk = static_cast<int>(S.node_of.size());
@@ -188,7 +196,6 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
   }
   S.ldlt.analyze(S.A);
   S.active.assign(S.n_unk, 0);
-  S.have_active = false;
   S.rhs.resize(S.n_unk);
   S.sol.resize(S.n_unk);
 }
@@ -347,10 +354,9 @@ RowMatrixXd ReynoldsSolver::dirichlet_mask() const {
 }
 
 void ReynoldsSolver::reset() {
-  for (LinearSystem* S : {&impl_->full, &impl_->halfsys}) {
-    S->have_active = false;
-    std::fill(S->active.begin(), S->active.end(), 0);
-  }
+  // Solves do not depend on earlier calls (each starts from its own prediction); this only
+  // drops the last solution, so linearize() needs a new solve first.
+  impl_->solved = false;
 }
 
 }  // namespace rotordyn

@@ -29,14 +29,66 @@ void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
 // Swift–Stieber: find p >= 0 with μ = A p − b >= 0 and p·μ = 0 (A is a Stieltjes matrix, so
 // the LCP has one solution). Primal–dual active set (Hintermüller, Ito & Kunisch 2003): on the
 // active set p = 0, elsewhere A_II p_I = b_I; update active = {μ > 0 on the old set} ∪ {p < 0};
-// stop when the set repeats. The set is warm-started from the previous call. Active unknowns
-// are decoupled in place (identity row/column) so the analysed pattern never changes.
+// stop when the set repeats. The set starts from predict_active(), a function of this call's
+// inputs only, so the answer never depends on what the solver solved before (bit for bit).
+// Active unknowns are decoupled in place (identity row/column): the analysed pattern never
+// changes.
+void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
+  if (coarse_usable) {
+    // Coarse grid: ceil(N/2) × ceil(n_axial/2); coarse node jc sits at fine position
+    // jc·N/Nc (exactly every other node when N is even), likewise along z. The film is
+    // interpolated linearly from the fine nodes (exact sampling when the ratio is 2).
+    const int Nc = (N + 1) / 2, nac = (grid.n_axial + 1) / 2, K1c = nac + 1, na = grid.n_axial;
+    try {
+      if (!coarse) {
+        coarse = std::make_unique<ReynoldsSolver>(geo, FilmGrid{Nc, nac}, Cavitation::reynolds);
+        hc.resize(Nc, K1c);
+        hdc.resize(Nc, K1c);
+      }
+      coarse->set_use_axial_symmetry(use_symmetry);
+      for (int jc = 0; jc < Nc; ++jc) {
+        const long sj = static_cast<long>(jc) * N;
+        const int j0 = static_cast<int>(sj / Nc), j1 = (j0 + 1) % N;
+        const double fj = static_cast<double>(sj % Nc) / Nc;
+        for (int kc = 0; kc < K1c; ++kc) {
+          const long sk = static_cast<long>(kc) * na;
+          const int k0 = static_cast<int>(sk / nac), k1 = std::min(k0 + 1, na);
+          const double fk = static_cast<double>(sk % nac) / nac;
+          auto lerp = [&](const std::vector<double>& f) {
+            const double a0 = f[j0 * K1 + k0] + fk * (f[j0 * K1 + k1] - f[j0 * K1 + k0]);
+            const double a1 = f[j1 * K1 + k0] + fk * (f[j1 * K1 + k1] - f[j1 * K1 + k0]);
+            return a0 + fj * (a1 - a0);
+          };
+          hc(jc, kc) = lerp(h);
+          hdc(jc, kc) = lerp(hdot);
+        }
+      }
+      const RowMatrixXd& pc = coarse->solve(hc, hdc, omega).p_pa;
+      // A fine node is predicted cavitated when every coarse node around it is (p == 0).
+      for (int i = 0; i < S.n_unk; ++i) {
+        const int n = S.node_of[i];
+        const long sj = static_cast<long>(n / K1) * Nc, sk = static_cast<long>(n % K1) * nac;
+        const int j0 = static_cast<int>(sj / N), j1 = (sj % N) ? (j0 + 1) % Nc : j0;
+        const int k0 = static_cast<int>(sk / na), k1 = (sk % na) ? k0 + 1 : k0;
+        S.active[i] = (pc(j0, k0) <= 0.0 && pc(j1, k0) <= 0.0 && pc(j0, k1) <= 0.0 &&
+                       pc(j1, k1) <= 0.0)
+                          ? 1
+                          : 0;
+      }
+      return;
+    } catch (const ConvergenceError&) {
+      // fall through to the local prediction (still a function of the inputs only)
+    }
+  }
+  for (int i = 0; i < S.n_unk; ++i) S.active[i] = S.rhs[i] < 0.0 ? 1 : 0;
+}
+
 void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
-  if (!S.have_active) std::fill(S.active.begin(), S.active.end(), 0);
   base_rhs(S, S.rhs);
+  predict_active(S);
   double bscale = 0.0;
   for (int i = 0; i < S.n_unk; ++i) bscale = std::max(bscale, std::abs(S.rhs[i]));
-  std::vector<char> next(S.n_unk);
+  std::vector<char> next(S.n_unk), degenerate(S.n_unk);
   Eigen::VectorXd b(S.n_unk);
   const int max_iter = 100 + S.n_unk / 4;
   for (int it = 1; it <= max_iter; ++it) {
@@ -54,29 +106,98 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
       if (fixed[n]) pscale = std::max(pscale, std::abs(p[n]));
     if (S.half) mirror_fields();
     const double tol_p = 1e-13 * pscale;
-    const double tol_mu = 1e-13 * std::max(bscale, 1e-300);
+    const double tol_mu = 1e-13 * bscale;
     bool changed = false;
     for (int i = 0; i < S.n_unk; ++i) {
       const int n = S.node_of[i];
       if (S.active[i]) {
         const double mu_i = cell_residual(n, p);  // multiplier ∝ (A p − b)_i
         next[i] = mu_i >= -tol_mu ? 1 : 0;
+        degenerate[i] = mu_i <= tol_mu ? 1 : 0;
       } else {
         next[i] = p[n] < -tol_p ? 1 : 0;
+        degenerate[i] = p[n] <= tol_p ? 1 : 0;
       }
       if (next[i] != S.active[i]) changed = true;
     }
     if (!changed) {
       for (int n = 0; n < n_nodes; ++n) pfull[n] = p[n];
-      S.have_active = true;
+      std::fill(biactive.begin(), biactive.end(), 0);
+      n_biactive = 0;
+      for (int i = 0; i < S.n_unk; ++i)
+        if (degenerate[i]) {
+          const int n = S.node_of[i];
+          biactive[n] = 1;
+          if (S.half) biactive[mirror(n)] = 1;
+          ++n_biactive;
+        }
       out.iterations = it;
       return;
     }
     S.active.swap(next);
   }
-  S.have_active = false;
   throw ConvergenceError("reynolds cavitation: active-set iteration did not converge in " +
                          std::to_string(max_iter) + " iterations");
+}
+
+double ReynoldsSolver::Impl::apply_row(const LinearSystem& S, int i,
+                                       const Eigen::VectorXd& x) const {
+  const int n = S.node_of[i];
+  const int e = east(n), w = west(n);
+  auto val = [&](int nb) { return S.unk[nb] >= 0 ? x[S.unk[nb]] : 0.0; };
+  const double xn = x[i];
+  double r = S.wphi[i] * (cE[n] * (xn - val(e)) + cE[w] * (xn - val(w)));
+  if (S.has_n[i]) r += cN[n] * (xn - val(n + 1));
+  r += cN[n - 1] * (xn - val(n - 1));
+  return r;
+}
+
+// At a degenerate Swift–Stieber state the solution map r ↦ p is piecewise linear and only
+// directionally differentiable (e.g. a centred journal: the film for +dx and for −dx cavitate
+// on opposite halves). The directional derivative dp for a residual change dr solves the LCP
+//   dp = 0 on strongly active unknowns (μ > 0),  (A dp + dr)_i = 0 on inactive ones (p > 0),
+//   dp_i >= 0, (A dp + dr)_i >= 0, dp_i (A dp + dr)_i = 0 on the degenerate ones,
+// solved by the same primal–dual active set (started from the prediction dr_i > 0). The
+// factorisation of the base state is restored afterwards.
+void ReynoldsSolver::Impl::solve_derivative_lcp(LinearSystem& S, const Eigen::VectorXd& dr,
+                                                Eigen::VectorXd& x) {
+  std::vector<char> mask(S.n_unk), next(S.n_unk);
+  std::vector<char> deg(S.n_unk);
+  double rscale = 0.0;
+  for (int i = 0; i < S.n_unk; ++i) {
+    deg[i] = biactive[S.node_of[i]];
+    mask[i] = S.active[i] && !deg[i] ? 1 : (deg[i] && dr[i] > 0.0 ? 1 : 0);
+    rscale = std::max(rscale, std::abs(dr[i]));
+  }
+  Eigen::VectorXd b(S.n_unk);
+  x.setZero(S.n_unk);
+  const int max_iter = 100 + S.n_unk / 4;
+  bool converged = false;
+  for (int it = 1; it <= max_iter && !converged; ++it) {
+    fill_spd(S, &mask);
+    factor_spd(S);
+    for (int i = 0; i < S.n_unk; ++i) b[i] = mask[i] ? 0.0 : -dr[i];
+    S.ldlt.solve(b.data(), x.data());
+    for (int i = 0; i < S.n_unk; ++i)
+      if (mask[i]) x[i] = 0.0;
+    double xscale = 0.0;
+    for (int i = 0; i < S.n_unk; ++i) xscale = std::max(xscale, std::abs(x[i]));
+    const double tol_x = 1e-13 * xscale, tol_mu = 1e-13 * rscale;
+    converged = true;
+    for (int i = 0; i < S.n_unk; ++i) {
+      next[i] = mask[i];
+      if (!deg[i]) continue;
+      next[i] = mask[i] ? (apply_row(S, i, x) + dr[i] >= -tol_mu ? 1 : 0)
+                        : (x[i] < -tol_x ? 1 : 0);
+      if (next[i] != mask[i]) converged = false;
+    }
+    mask.swap(next);
+  }
+  fill_spd(S, &S.active);
+  factor_spd(S);
+  if (!converged)
+    throw ConvergenceError("reynolds cavitation: the directional derivative at a degenerate "
+                           "cavitation set did not converge");
 }
 
 void ReynoldsSolver::Impl::postprocess() {
@@ -167,7 +288,7 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
     throw InputError(shape_msg("dhdt", s.N, s.K1, dhdt.rows(), dhdt.cols()));
   s.solved = false;
   s.set_film(h.data(), dhdt.data(), omega);
-  const bool half = s.use_symmetry && s.Kh > 0 && s.symmetric(h.data()) &&
+  const bool half = s.use_symmetry && s.symmetric(h.data()) &&
                     s.symmetric(dhdt.data());
   if (half && !s.halfsys_built) {
     s.build_system(s.halfsys, true);
@@ -220,7 +341,6 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
       s.fill_spd(F, masked ? &F.active : nullptr);
       s.factor_spd(F);
     }
-    F.have_active = s.cav == Cavitation::reynolds || s.cav == Cavitation::jfo;
     s.sys = S = &F;
   }
   Eigen::VectorXd r;
@@ -228,11 +348,28 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
   RowMatrixXd dp = RowMatrixXd::Zero(s.N, s.K1);
   double* dpd = dp.data();
   if (S->factor == LinearSystem::Factor::ldlt) {
+    Eigen::VectorXd x(S->n_unk);
+    if (s.cav == Cavitation::reynolds && s.n_biactive > 0) {
+      // Degenerate set: the limit of central differences, (D(+d) − D(−d))/2, of the
+      // directional derivatives D — what coefficients_fd converges to as its step → 0.
+      Eigen::VectorXd xp, xm;
+      s.solve_derivative_lcp(*S, r, xp);
+      const Eigen::VectorXd mr = -r;
+      s.solve_derivative_lcp(*S, mr, xm);
+      x = 0.5 * (xp - xm);
+      for (int i = 0; i < S->n_unk; ++i) dpd[S->node_of[i]] = x[i];
+      if (S->half)
+        for (int j = 0; j < s.N; ++j)
+          for (int k = s.Kh + 1; k < s.K1 - 1; ++k) {
+            const int n = j * s.K1 + k;
+            dpd[n] = dpd[s.mirror(n)];
+          }
+      return dp;
+    }
     if (s.cav == Cavitation::reynolds)
       for (int i = 0; i < S->n_unk; ++i)
         if (S->active[i]) r[i] = 0.0;
     r = -r;
-    Eigen::VectorXd x(S->n_unk);
     S->ldlt.solve(r.data(), x.data());
     // gumbel: p = max(p_full, 0); where p_full vanishes to round-off (e.g. on a symmetry line)
     // the one-sided derivatives differ and we take their mean, as a central difference does.

@@ -318,9 +318,11 @@ void validate(const SleeveModel& m) {
     require(k >= 1 && k <= m.n_elements,
             "sleeve.master_nodes[" + std::to_string(i) + "]: expected a node in [1, " +
                 std::to_string(m.n_elements) + "] (0 is the clamp), got " + std::to_string(k));
-    require(i == 0 || k > m.master_nodes[i - 1],
-            "sleeve.master_nodes: expected strictly increasing node numbers, got " +
-                std::to_string(m.master_nodes[i - 1]) + " before " + std::to_string(k));
+    // The message names the previous node, so it is built only when there is one (i > 0):
+    // an eagerly built message read master_nodes[-1] on every condensation (ASan, issue 13).
+    if (i > 0 && k <= m.master_nodes[i - 1])
+      throw InputError("sleeve.master_nodes: expected strictly increasing node numbers, got " +
+                       std::to_string(m.master_nodes[i - 1]) + " before " + std::to_string(k));
   }
 }
 }  // namespace

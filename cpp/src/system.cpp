@@ -126,6 +126,23 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
   last_omega_ = omega;
 }
 
+std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
+  require(r.size() == model_.n(), shape_msg("r", model_.n(), 1, r.size(), 1));
+  std::vector<double> out(model_.films.size());
+  for (std::size_t i = 0; i < model_.films.size(); ++i) {
+    const FilmCoupling& fc = model_.films[i];
+    double hmin = INFINITY;
+    for (Eigen::Index j = 0; j < fc.shape.rows(); ++j) {
+      double h = fc.geometry.clearance_m;
+      for (std::size_t k = 0; k < fc.coords.size(); ++k)
+        h += fc.shape(j, static_cast<Eigen::Index>(k)) * r(fc.coords[k]);
+      hmin = std::min(hmin, h);
+    }
+    out[i] = hmin;
+  }
+  return out;
+}
+
 Eigen::VectorXd SystemSolver::film_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
                                           double omega) {
   solve_films(r, rdot, omega);
@@ -210,6 +227,12 @@ Linearization SystemSolver::linearize_fd(const Eigen::VectorXd& r, double omega,
     for (int j : fc.coords) {
       if (out.KH.col(j).cwiseAbs().sum() != 0.0) continue;  // already done (shared coordinate)
       const double dx = rel_step * fc.geometry.clearance_m, dv = dx * wref;
+      // A step lost in round-off (r ± dx == r) would give K_H = D_H = 0 with no error
+      // (issue 13: rel_step = 1e-300): refuse steps that r(j) cannot resolve to 1 %.
+      const double span = (r(j) + dx) - (r(j) - dx);
+      require(std::abs(span - 2 * dx) <= 0.01 * 2 * dx && std::isfinite(dv) && dv > 0,
+              "rel_step: the step " + std::to_string(dx) + " m is below the round-off of the "
+              "coordinate " + std::to_string(r(j)) + " m; use rel_step >= 1e-10");
       Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
       e(j) = dx;
       out.KH.col(j) = -(film_forces(r + e, zero, omega) - film_forces(r - e, zero, omega)) /

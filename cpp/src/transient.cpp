@@ -11,7 +11,9 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <cmath>
+#include <algorithm>
 #include <memory>
+#include <random>
 #include <sstream>
 
 #include "rotordyn/errors.hpp"
@@ -52,35 +54,120 @@ namespace {
 struct Ctx {
   SystemSolver* solver;
   const TransientInput* in;
-  Eigen::Index n;
+  Eigen::Index n, na = 0, nk = 0, N = 0;
+  bool kcont = false;     // continuous controller (states in y)
+  bool kdisc = false;     // discrete controller (states here)
+  Eigen::VectorXd xk;     // discrete controller states
+  double u_hold = 0.0;    // discrete controller output (ZOH)
+  Eigen::MatrixXd noise;  // (n_samples, n_y) noise table, empty: none
+  double noise_dt = 0.0;
   Eigen::LLT<Eigen::MatrixXd> Mllt;
-  Eigen::MatrixXd D0;  // C + Ω G
-  Eigen::VectorXd Fconst;  // Q + p_c c_s − K a
+  Eigen::VectorXd F0;     // Q − K a
+  Eigen::VectorXd g;      // M⁻¹ c_s
   std::string last_error;
   bool contact = false;
   std::string cvode_message;
 };
 
-Eigen::VectorXd forcing(const Ctx& c, double t) {
-  Eigen::VectorXd f = c.Fconst;
-  const double w = c.in->omega;
-  if (c.in->unbalance_cos.size())
-    f += w * w * (std::cos(w * t) * c.in->unbalance_cos + std::sin(w * t) * c.in->unbalance_sin);
-  return f;
+// Everything the right-hand side and the Jacobian share at (t, y).
+struct Point {
+  double omega, omega_dot, theta;
+  Eigen::VectorXd ym;     // measurements (n_y), empty without controller
+  double u = 0.0;         // controller output
+  double cmd = 0.0;       // command before saturation
+  double csat = 0.0;      // saturated command
+  double pc = 0.0;        // actual chamber pressure
+};
+
+Eigen::VectorXd noise_at(const Ctx& c, double t) {
+  const Eigen::Index ns = c.noise.rows();
+  double s = t / c.noise_dt;
+  Eigen::Index i = static_cast<Eigen::Index>(std::floor(s));
+  if (i < 0) i = 0;
+  if (i >= ns - 1) return c.noise.row(ns - 1).transpose();
+  if (c.kdisc) return c.noise.row(i).transpose();  // sampled at the instants only
+  const double w = s - static_cast<double>(i);
+  return ((1 - w) * c.noise.row(i) + w * c.noise.row(i + 1)).transpose();
+}
+
+Eigen::VectorXd measure(const Ctx& c, const double* y, double t) {
+  const Controller& k = c.in->controller;
+  Eigen::Map<const Eigen::VectorXd> rv(y, 2 * c.n);
+  Eigen::VectorXd ym = k.measurement * rv - k.offset;
+  if (c.noise.size()) ym += noise_at(c, t);
+  return ym;
+}
+
+double clip(double x, double lo, double hi) { return std::min(std::max(x, lo), hi); }
+
+double base_command(const Ctx& c, double t, double omega, double theta) {
+  const PressureCommand& p = c.in->pressure;
+  double cmd = c.in->chamber_pressure;
+  if (p.source == PressureSource::time_table) cmd = interp_table(p.table_x, p.table_p, t);
+  else if (p.source == PressureSource::speed_table) cmd = interp_table(p.table_x, p.table_p, omega);
+  if (p.harmonic_amplitude != 0.0) {
+    const double arg = p.harmonic_order > 0 ? p.harmonic_order * theta + p.harmonic_phase
+                                            : p.harmonic_frequency * t + p.harmonic_phase;
+    cmd += p.harmonic_amplitude * std::sin(arg);
+  }
+  return cmd;
+}
+
+Point evaluate(const Ctx& c, double t, const double* y) {
+  const TransientInput& in = *c.in;
+  Point P;
+  P.omega = profile_speed(in.speed, in.omega, t);
+  P.omega_dot = profile_speed_rate(in.speed, t);
+  P.theta = profile_angle(in.speed, in.omega, t);
+  if (c.kcont) {
+    P.ym = measure(c, y, t);
+    Eigen::Map<const Eigen::VectorXd> xk(y + 2 * c.n + c.na, c.nk);
+    P.u = (in.controller.C * xk + in.controller.D * P.ym)(0);
+  } else if (c.kdisc) {
+    P.u = c.u_hold;
+  }
+  const Actuator& a = in.actuator;
+  P.cmd = base_command(c, t, P.omega, P.theta) + P.u;
+  P.csat = clip(P.cmd, a.p_min, a.p_max);
+  P.pc = a.order == 0 ? P.csat : clip(y[2 * c.n], a.p_min, a.p_max);
+  return P;
 }
 
 int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
   Ctx& c = *static_cast<Ctx*>(user);
   const Eigen::Index n = c.n;
-  Eigen::Map<const Eigen::VectorXd> Y(N_VGetArrayPointer(y), 2 * n);
-  Eigen::Map<Eigen::VectorXd> Yd(N_VGetArrayPointer(ydot), 2 * n);
+  const double* yp = N_VGetArrayPointer(y);
+  Eigen::Map<const Eigen::VectorXd> Y(yp, c.N);
+  Eigen::Map<Eigen::VectorXd> Yd(N_VGetArrayPointer(ydot), c.N);
   try {
-    const Eigen::VectorXd r = Y.head(n), v = Y.tail(n);
-    const Eigen::VectorXd H = c.solver->film_forces(r, v, c.in->omega);
-    const Eigen::VectorXd rhs_f =
-        H + forcing(c, t) - c.solver->model().K * r - c.D0 * v;
+    const TransientInput& in = *c.in;
+    const SystemModel& m = c.solver->model();
+    const Point P = evaluate(c, t, yp);
+    const Eigen::VectorXd r = Y.head(n), v = Y.segment(n, n);
+    const Eigen::VectorXd H = c.solver->film_forces(r, v, P.omega);
+    Eigen::VectorXd f = c.F0 + P.pc * m.chamber;
+    if (in.unbalance_cos.size()) {
+      const double cs = std::cos(P.theta), sn = std::sin(P.theta);
+      f += P.omega * P.omega * (cs * in.unbalance_cos + sn * in.unbalance_sin);
+      if (P.omega_dot != 0.0)
+        f -= P.omega_dot * (-sn * in.unbalance_cos + cs * in.unbalance_sin);
+    }
+    const Eigen::VectorXd rhs_f = H + f - m.K * r - (m.C + P.omega * m.G) * v;
     Yd.head(n) = v;
-    Yd.tail(n) = c.Mllt.solve(rhs_f);
+    Yd.segment(n, n) = c.Mllt.solve(rhs_f);
+    const Actuator& a = in.actuator;
+    const Eigen::Index ia = 2 * n;
+    if (a.order == 1) {
+      Yd(ia) = clip((P.csat - Y(ia)) / a.time_constant, -a.rate_limit, a.rate_limit);
+    } else if (a.order == 2) {
+      const double w = a.natural_frequency;
+      Yd(ia) = clip(Y(ia + 1), -a.rate_limit, a.rate_limit);
+      Yd(ia + 1) = w * w * (P.csat - Y(ia)) - 2 * a.damping * w * Y(ia + 1);
+    }
+    if (c.kcont) {
+      const Controller& k = in.controller;
+      Yd.tail(c.nk) = k.A * Y.tail(c.nk) + k.B * P.ym;
+    }
     return 0;
   } catch (const ContactError& e) {
     c.contact = true;
@@ -92,23 +179,59 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
   }
 }
 
-int jac(sunrealtype, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, N_Vector,
+int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, N_Vector,
         N_Vector) {
   Ctx& c = *static_cast<Ctx*>(user);
-  const Eigen::Index n = c.n;
-  Eigen::Map<const Eigen::VectorXd> Y(N_VGetArrayPointer(y), 2 * n);
+  const Eigen::Index n = c.n, N = c.N;
+  const double* yp = N_VGetArrayPointer(y);
+  Eigen::Map<const Eigen::VectorXd> Y(yp, N);
   try {
-    const Linearization lin = c.solver->linearize(Y.head(n), Y.tail(n), c.in->omega);
-    const Eigen::MatrixXd A21 = -c.Mllt.solve(c.solver->model().K + lin.KH);
-    const Eigen::MatrixXd A22 = -c.Mllt.solve(c.D0 + lin.DH);
+    const TransientInput& in = *c.in;
+    const SystemModel& m = c.solver->model();
+    const Point P = evaluate(c, t, yp);
+    const Linearization lin = c.solver->linearize(Y.head(n), Y.segment(n, n), P.omega);
     // SUNDenseMatrix is column-major.
-    sunrealtype* data = SUNDenseMatrix_Data(J);
-    const Eigen::Index N = 2 * n;
-    Eigen::Map<Eigen::MatrixXd> Jm(data, N, N);
+    Eigen::Map<Eigen::MatrixXd> Jm(SUNDenseMatrix_Data(J), N, N);
     Jm.setZero();
-    Jm.topRightCorner(n, n).setIdentity();
-    Jm.bottomLeftCorner(n, n) = A21;
-    Jm.bottomRightCorner(n, n) = A22;
+    Jm.block(0, n, n, n).setIdentity();
+    Jm.block(n, 0, n, n) = -c.Mllt.solve(m.K + lin.KH);
+    Jm.block(n, n, n, n) = -c.Mllt.solve(m.C + P.omega * m.G + lin.DH);
+    if (c.na == 0 && !c.kcont) return 0;
+    const Actuator& a = in.actuator;
+    // d(command)/dy: only a continuous controller makes it depend on the state.
+    Eigen::RowVectorXd dcmd = Eigen::RowVectorXd::Zero(N);
+    if (c.kcont) {
+      const Controller& k = in.controller;
+      dcmd.head(2 * n) = k.D * k.measurement;
+      dcmd.tail(c.nk) = k.C;
+    }
+    const double s_c = (P.cmd > a.p_min && P.cmd < a.p_max) ? 1.0 : 0.0;
+    const Eigen::Index ia = 2 * n;
+    if (a.order == 0) {
+      Jm.block(n, 0, n, N) += c.g * (s_c * dcmd);
+    } else {
+      const double s_p = (Y(ia) > a.p_min && Y(ia) < a.p_max) ? 1.0 : 0.0;
+      Jm.block(n, ia, n, 1) += s_p * c.g;
+      if (a.order == 1) {
+        const double rate = (P.csat - Y(ia)) / a.time_constant;
+        if (std::abs(rate) < a.rate_limit) {
+          Jm.row(ia) = s_c * dcmd / a.time_constant;
+          Jm(ia, ia) -= 1.0 / a.time_constant;
+        }
+      } else {
+        const double w = a.natural_frequency;
+        if (std::abs(Y(ia + 1)) < a.rate_limit) Jm(ia, ia + 1) = 1.0;
+        Jm.row(ia + 1) = w * w * s_c * dcmd;
+        Jm(ia + 1, ia) -= w * w;
+        Jm(ia + 1, ia + 1) -= 2 * a.damping * w;
+      }
+    }
+    if (c.kcont) {
+      const Controller& k = in.controller;
+      const Eigen::Index ik = 2 * n + c.na;
+      Jm.block(ik, 0, c.nk, 2 * n) = k.B * k.measurement;
+      Jm.block(ik, ik, c.nk, c.nk) = k.A;
+    }
     return 0;
   } catch (const ContactError& e) {
     c.contact = true;
@@ -142,8 +265,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   const SystemModel& m = solver.model();
   const Eigen::Index n = m.n();
   auto vec_ok = [&](const Eigen::VectorXd& v, const char* name, bool allow_empty) {
-    require((allow_empty && v.size() == 0) || (v.size() == n && v.allFinite()),
-            shape_msg(name, n, 1, v.size(), 1));
+    require((allow_empty && v.size() == 0) || v.size() == n, shape_msg(name, n, 1, v.size(), 1));
+    require(v.allFinite(), std::string(name) + ": expected finite values");
   };
   vec_ok(in.a, "a", false);
   vec_ok(in.r0, "r0", false);
@@ -154,31 +277,54 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
           "t_out: expected a non-empty array of times >= 0");
   for (Eigen::Index i = 1; i < in.t_out.size(); ++i)
     require(in.t_out(i) > in.t_out(i - 1), "t_out: expected strictly increasing times");
-  require(opt.rtol > 0 && opt.rtol < 1 && opt.atol_position > 0 && opt.atol_velocity > 0,
+  require(opt.rtol > 0 && opt.rtol < 1 && opt.atol_position > 0 && opt.atol_velocity > 0 &&
+              opt.atol_pressure > 0 && opt.atol_controller > 0,
           "cvode options: tolerances must be positive");
   require(opt.max_steps > 0, "cvode options: max_steps must be positive");
+  const Eigen::Index nt = in.t_out.size();
+  const double t_end = in.t_out(nt - 1);
+  validate_operation(in.speed, in.pressure, in.actuator, in.controller, n, t_end);
 
   Ctx c;
   c.solver = &solver;
   c.in = &in;
   c.n = n;
+  c.na = in.actuator.n_states();
+  const Controller& K = in.controller;
+  c.kcont = K.enabled && K.sample_time == 0.0;
+  c.kdisc = K.enabled && K.sample_time > 0.0;
+  c.nk = c.kcont ? K.n_states() : 0;
+  c.N = 2 * n + c.na + c.nk;
   c.Mllt.compute(m.M);
   require(c.Mllt.info() == Eigen::Success, "M: the mass matrix must be positive definite");
-  c.D0 = m.C + in.omega * m.G;
-  c.Fconst = m.Q + in.chamber_pressure * m.chamber - m.K * in.a;
+  c.F0 = m.Q - m.K * in.a;
+  c.g = c.Mllt.solve(m.chamber);
+  if (K.enabled && K.noise_std.size() && (K.noise_std.array() > 0).any()) {
+    c.noise_dt = c.kdisc ? K.sample_time : K.noise_dt;
+    const Eigen::Index ns = static_cast<Eigen::Index>(std::ceil(t_end / c.noise_dt)) + 2;
+    c.noise.resize(ns, K.noise_std.size());
+    std::mt19937_64 gen(K.seed);
+    std::normal_distribution<double> nd(0.0, 1.0);
+    for (Eigen::Index i = 0; i < ns; ++i)
+      for (Eigen::Index j = 0; j < K.noise_std.size(); ++j) c.noise(i, j) = K.noise_std(j) * nd(gen);
+  }
 
   TransientResult out;
-  const Eigen::Index nt = in.t_out.size();
   out.t = Eigen::VectorXd::Constant(nt, NAN);
   out.r = Eigen::MatrixXd::Constant(nt, n, NAN);
   out.v = Eigen::MatrixXd::Constant(nt, n, NAN);
   out.h_min = Eigen::MatrixXd::Constant(nt, static_cast<Eigen::Index>(m.films.size()), NAN);
+  out.speed = out.angle = out.pc_command = out.pc = out.controller_output =
+      Eigen::VectorXd::Constant(nt, NAN);
+  out.actuator_states = Eigen::MatrixXd::Constant(nt, c.na, NAN);
+  const Eigen::Index nks = K.enabled ? K.n_states() : 0;
+  out.controller_states = Eigen::MatrixXd::Constant(nt, nks, NAN);
 
   std::unique_ptr<SUNContext, SunDeleter> sunctx(new SUNContext(nullptr));
   if (SUNContext_Create(nullptr, sunctx.get()) != 0)
     throw SundialsError(-1, "SUNContext_Create", "could not create a SUNDIALS context");
   SUNContext ctx = *sunctx;
-  const sunindextype N = static_cast<sunindextype>(2 * n);
+  const sunindextype N = static_cast<sunindextype>(c.N);
   N_Vector y = N_VNew_Serial(N, ctx);
   N_Vector abstol = N_VNew_Serial(N, ctx);
   SUNMatrix A = SUNDenseMatrix(N, N, ctx);
@@ -200,10 +346,35 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   };
   Eigen::Map<Eigen::VectorXd> Y(N_VGetArrayPointer(y), N);
   Y.head(n) = in.r0;
-  Y.tail(n) = in.v0;
+  Y.segment(n, n) = in.v0;
   Eigen::Map<Eigen::VectorXd> AT(N_VGetArrayPointer(abstol), N);
   AT.head(n).setConstant(opt.atol_position);
-  AT.tail(n).setConstant(opt.atol_velocity);
+  AT.segment(n, n).setConstant(opt.atol_velocity);
+  if (c.kcont) {
+    Y.tail(c.nk) = K.x0.size() ? K.x0 : Eigen::VectorXd::Zero(c.nk);
+    AT.tail(c.nk).setConstant(opt.atol_controller);
+  }
+  if (c.kdisc) {
+    c.xk = K.x0.size() ? K.x0 : Eigen::VectorXd::Zero(K.n_states());
+  }
+  // Discrete controller: the first sample at t = 0 (before the actuator starts at rest).
+  auto sample = [&](double ts) {
+    const Eigen::VectorXd ym = measure(c, Y.data(), ts);
+    c.u_hold = (K.C * c.xk + K.D * ym)(0);
+    c.xk = K.A * c.xk + K.B * ym;
+  };
+  if (c.kdisc) sample(0.0);
+  if (c.na) {
+    // Actuator at rest at the saturated initial command.
+    Y(2 * n) = 0.0;
+    const Point P0 = evaluate(c, 0.0, Y.data());
+    Y(2 * n) = P0.csat;
+    AT(2 * n) = opt.atol_pressure;
+    if (c.na == 2) {
+      Y(2 * n + 1) = 0.0;
+      AT(2 * n + 1) = opt.atol_pressure * in.actuator.natural_frequency;
+    }
+  }
 
   check(CVodeSetErrHandlerFn(mem, err_handler, &c), "CVodeSetErrHandlerFn");
   check(CVodeInit(mem, rhs, 0.0, y), "CVodeInit");
@@ -213,12 +384,48 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   if (opt.analytic_jacobian) check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
   check(CVodeSetMaxNumSteps(mem, opt.max_steps), "CVodeSetMaxNumSteps");
   if (opt.max_step > 0) check(CVodeSetMaxStep(mem, opt.max_step), "CVodeSetMaxStep");
-  check(CVodeSetStopTime(mem, in.t_out(nt - 1)), "CVodeSetStopTime");
+  check(CVodeSetStopTime(mem, t_end), "CVodeSetStopTime");
 
+  // Discrete controller: sample k at k·T; CVODE stops there and restarts (the held output
+  // jumps). Samples and output times are merged in time order.
+  // CVodeReInit resets CVODE's counters: they are harvested before each restart.
+  auto harvest = [&]() {
+    long v = 0;
+    CVodeGetNumSteps(mem, &v);
+    out.steps += v;
+    CVodeGetNumRhsEvals(mem, &v);
+    out.rhs_evals += v;
+    CVodeGetNumJacEvals(mem, &v);
+    out.jac_evals += v;
+    CVodeGetNumNonlinSolvConvFails(mem, &v);
+    out.newton_fails += v;
+    CVodeGetNumErrTestFails(mem, &v);
+    out.error_test_fails += v;
+  };
+  long k_next = 1;
+  auto t_sample = [&](long k) { return static_cast<double>(k) * K.sample_time; };
   double t = 0.0;
   for (Eigen::Index i = 0; i < nt; ++i) {
     int flag = CV_SUCCESS;
-    if (in.t_out(i) > t) flag = CVode(mem, in.t_out(i), y, &t, CV_NORMAL);
+    const double target = in.t_out(i);
+    while (flag >= 0 && c.kdisc && t_sample(k_next) <= target) {
+      const double ts = t_sample(k_next);
+      if (ts > t) {
+        check(CVodeSetStopTime(mem, ts), "CVodeSetStopTime");
+        flag = CVode(mem, ts, y, &t, CV_NORMAL);
+        if (flag < 0) break;
+        t = ts;
+      }
+      sample(ts);
+      ++k_next;
+      harvest();
+      check(CVodeReInit(mem, t, y), "CVodeReInit");
+    }
+    if (flag >= 0 && target > t) {
+      if (c.kdisc) check(CVodeSetStopTime(mem, target), "CVodeSetStopTime");
+      flag = CVode(mem, target, y, &t, CV_NORMAL);
+      if (flag >= 0 && c.kdisc) t = target;
+    }
     if (flag < 0) {
       out.status = c.contact ? "contact" : "not_converged";
       out.message = cvode_flag_name(flag) + " at t = " + std::to_string(t) + " s" +
@@ -226,27 +433,23 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
                     (c.cvode_message.empty() ? "" : " [" + c.cvode_message + "]");
       break;
     }
-    out.t(i) = in.t_out(i);
+    out.t(i) = target;
     out.r.row(i) = Y.head(n).transpose();
-    out.v.row(i) = Y.tail(n).transpose();
-    try {
-      solver.film_forces(Y.head(n), Y.tail(n), in.omega);
-      for (std::size_t k = 0; k < m.films.size(); ++k)
-        out.h_min(i, static_cast<Eigen::Index>(k)) = solver.last_h_min()[k];
-    } catch (const ContactError&) {
-    }
+    out.v.row(i) = Y.segment(n, n).transpose();
+    const Point P = evaluate(c, target, Y.data());
+    out.speed(i) = P.omega;
+    out.angle(i) = P.theta;
+    out.pc_command(i) = P.cmd;
+    out.pc(i) = P.pc;
+    out.controller_output(i) = P.u;
+    if (c.na) out.actuator_states.row(i) = Y.segment(2 * n, c.na).transpose();
+    if (c.kcont) out.controller_states.row(i) = Y.tail(c.nk).transpose();
+    if (c.kdisc) out.controller_states.row(i) = c.xk.transpose();
+    // The film thickness needs no pressure: from the geometry, not a Reynolds solve.
+    const std::vector<double> hm = solver.film_h_min(Y.head(n));
+    for (std::size_t k = 0; k < hm.size(); ++k) out.h_min(i, static_cast<Eigen::Index>(k)) = hm[k];
   }
-  long v = 0;
-  CVodeGetNumSteps(mem, &v);
-  out.steps = v;
-  CVodeGetNumRhsEvals(mem, &v);
-  out.rhs_evals = v;
-  CVodeGetNumJacEvals(mem, &v);
-  out.jac_evals = v;
-  CVodeGetNumNonlinSolvConvFails(mem, &v);
-  out.newton_fails = v;
-  CVodeGetNumErrTestFails(mem, &v);
-  out.error_test_fails = v;
+  harvest();
   cleanup();
   return out;
 }

@@ -46,6 +46,7 @@ from rotordyn.results import (
     StabilityResult,
 )
 from rotordyn import models
+from rotordyn._threads import get_blas_threads, set_blas_threads
 
 __version__ = "0.1.0"
 
@@ -60,6 +61,8 @@ def build_info() -> dict[str, str]:
 __all__ = [
     "__version__",
     "build_info",
+    "set_blas_threads",
+    "get_blas_threads",
     # errors
     "RotordynError",
     "InputError",

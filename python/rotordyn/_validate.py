@@ -1,4 +1,9 @@
-"""Field checks shared by the model dataclasses; each error names the field and the range."""
+"""Field checks shared by the model dataclasses and every analysis: one rule everywhere
+(issue 13). Each error is an :class:`InputError` that names the field and the allowed range.
+
+Numbers are Python or numpy ints/floats (never bool, str or None); integers must also fit the
+C++ core's 32-bit ``int`` (< 2**31); arrays are float64 of a stated shape with finite entries.
+"""
 
 from __future__ import annotations
 
@@ -8,14 +13,32 @@ import numpy as np
 
 from rotordyn.errors import InputError
 
+INT_MAX = 2**31 - 1  # the C++ core's int
+
 
 def _num(field: str, value) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise InputError(f"{field}: expected a number, got {value!r}")
-    v = float(value)
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+            value, (int, float, np.integer, np.floating)):
+        raise InputError(f"{field}: expected a number, got {_show(value)}")
+    try:
+        v = float(value)
+    except OverflowError:  # an int beyond the float range
+        raise InputError(f"{field}: expected a finite number, got an integer of "
+                         f"{len(str(abs(value)))} digits") from None
     if not math.isfinite(v):
         raise InputError(f"{field}: expected a finite number, got {value!r}")
     return v
+
+
+def _show(value) -> str:
+    """A short repr for messages (a huge array or string is cut)."""
+    text = repr(value)
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def number(field: str, value) -> float:
+    """Any finite number (alias of :func:`finite`)."""
+    return _num(field, value)
 
 
 def positive(field: str, value) -> float:
@@ -51,19 +74,140 @@ def in_range(field: str, value, lo: float, hi: float, *, lo_open=False, hi_open=
 
 
 def integer(field: str, value, lo: int | None = None, hi: int | None = None) -> int:
-    """An int within optional bounds."""
-    if isinstance(value, bool) or not isinstance(value, int):
-        raise InputError(f"{field}: expected an integer, got {value!r}")
+    """An int (Python or numpy, not bool) within optional bounds and below 2**31."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InputError(f"{field}: expected an integer, got {_show(value)}")
+    value = int(value)
+    hi = INT_MAX if hi is None else min(hi, INT_MAX)
     if lo is not None and value < lo:
         raise InputError(f"{field}: expected an integer >= {lo}, got {value}")
-    if hi is not None and value > hi:
-        raise InputError(f"{field}: expected an integer <= {hi}, got {value}")
+    if value > hi:
+        shown = value if value < 10**30 else f"an integer of {len(str(value))} digits"
+        raise InputError(f"{field}: expected an integer <= {hi}, got {shown}")
     return value
 
 
 def choice(field: str, value, allowed) -> str:
     """One of a fixed set of strings."""
-    if value not in allowed:
+    if not isinstance(value, str) or value not in allowed:
         opts = ", ".join(repr(a) for a in allowed)
-        raise InputError(f"{field}: expected one of {opts}, got {value!r}")
+        raise InputError(f"{field}: expected one of {opts}, got {_show(value)}")
     return value
+
+
+def text(field: str, value) -> str:
+    """A string (possibly empty)."""
+    if not isinstance(value, str):
+        raise InputError(f"{field}: expected a string, got {_show(value)}")
+    return value
+
+
+def boolean(field: str, value) -> bool:
+    """True or False (Python or numpy bool)."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise InputError(f"{field}: expected true or false, got {_show(value)}")
+    return bool(value)
+
+
+def vector(field: str, value, n: int | None = None) -> np.ndarray:
+    """A 1-D float64 array of finite numbers (of length ``n`` when given); a copy."""
+    if value is None or isinstance(value, (str, bytes, dict)):
+        raise InputError(f"{field}: expected a sequence of numbers, got {_show(value)}")
+    try:
+        arr = np.array(value, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise InputError(f"{field}: expected a sequence of numbers, got {_show(value)}") \
+            from None
+    if arr.ndim != 1 or (n is not None and arr.shape[0] != n):
+        want = f"({n},)" if n is not None else "a 1-D array"
+        raise InputError(f"{field}: expected shape {want}, got {arr.shape}")
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise InputError(f"{field}[{i}]: expected a finite number, got {arr[i]!r}")
+    return arr
+
+
+def bounds(field: str, value) -> tuple[float, float]:
+    """A pair (low, high) of finite numbers with low < high."""
+    if value is None or isinstance(value, (str, bytes, dict)):
+        raise InputError(f"{field}: expected (low, high), got {_show(value)}")
+    try:
+        items = list(value)
+    except TypeError:
+        raise InputError(f"{field}: expected (low, high), got {_show(value)}") from None
+    if len(items) != 2:
+        raise InputError(f"{field}: expected (low, high), got {_show(value)}")
+    lo, hi = _num(f"{field}[0]", items[0]), _num(f"{field}[1]", items[1])
+    if not hi > lo:
+        raise InputError(f"{field}: expected low < high, got {_show(value)}")
+    return lo, hi
+
+
+def sequence(field: str, value) -> list:
+    """A list or tuple (not a string, mapping or scalar); a list copy."""
+    if not isinstance(value, (list, tuple)):
+        raise InputError(f"{field}: expected a list, got {_show(value)}")
+    return list(value)
+
+
+def memory(field: str, n_bytes: float, *, limit: float | None = None) -> None:
+    """Refuse an allocation estimated at ``n_bytes`` above ``limit`` (default
+    :func:`memory_limit`), naming the field and the estimate."""
+    if limit is None:
+        limit = memory_limit()
+    if n_bytes > limit:
+        raise InputError(f"{field}: needs about {_bytes(n_bytes)} of memory, above the limit "
+                         f"of {_bytes(limit)}; reduce it")
+
+
+def memory_limit() -> float:
+    """The largest single allocation an analysis may plan: a quarter of the physical memory,
+    at most 2 GiB (a result larger than that is not meaningful on a laptop, and the dense
+    solvers need several copies of their arrays)."""
+    try:
+        import os
+
+        phys = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (ValueError, OSError, AttributeError):
+        phys = 8 * 2**30
+    return float(min(phys / 4, 2 * 2**30))
+
+
+def _bytes(n: float) -> str:
+    for unit, k in (("GiB", 2**30), ("MiB", 2**20), ("KiB", 2**10)):
+        if n >= k:
+            return f"{n / k:.3g} {unit}"
+    return f"{n:.0f} B"
+
+
+def speeds(field: str, value, *, positive_only: bool = False, max_count: int = 100_000
+           ) -> np.ndarray:
+    """A non-empty, strictly increasing 1-D array of finite speeds (Hz), at most
+    ``max_count`` of them (a longer list is not a meaningful diagram)."""
+    arr = vector(field, value)
+    if arr.size == 0:
+        raise InputError(f"{field}: expected at least one speed, got none")
+    if arr.size > max_count:
+        raise InputError(f"{field}: expected at most {max_count} speeds, got {arr.size}")
+    if positive_only and np.any(arr <= 0):
+        raise InputError(f"{field}: expected speeds > 0, got {arr.min()!r}")
+    if arr.size > 1 and np.any(np.diff(arr) <= 0):
+        raise InputError(f"{field}: expected strictly increasing speeds")
+    return arr
+
+
+def unbalances(field: str, value, n_stations: int) -> list[tuple[int, float, float]]:
+    """``[(station, mass_kg_m, phase_deg), ...]``: station an integer in [0, n_stations),
+    the other two finite numbers."""
+    items = sequence(field, value) if not isinstance(value, np.ndarray) else list(value)
+    out = []
+    for i, u in enumerate(items):
+        if isinstance(u, (str, bytes, dict)) or not hasattr(u, "__len__") or len(u) != 3:
+            raise InputError(f"{field}[{i}]: expected (station, mass_kg_m, phase_deg), "
+                             f"got {_show(u)}")
+        st, me, ph = u
+        out.append((integer(f"{field}[{i}].station", st, lo=0, hi=n_stations - 1),
+                    finite(f"{field}[{i}].mass_kg_m", me),
+                    finite(f"{field}[{i}].phase_deg", ph)))
+    return out

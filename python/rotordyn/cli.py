@@ -7,31 +7,15 @@ Machine-readable output goes to stdout with ``--json``; logs go to stderr.
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 
 import numpy as np
 
 import rotordyn
 from rotordyn import cli_bearing
-
-
-class _ArgumentParser(argparse.ArgumentParser):
-    """argparse that raises InputError (exit 2 through main) instead of exiting itself."""
-
-    def error(self, message):
-        raise rotordyn.InputError(f"{self.prog}: {message}")
-
-
-def _json(obj) -> str:
-    def conv(o):
-        if isinstance(o, np.ndarray):
-            return o.tolist()
-        if isinstance(o, (np.floating, np.integer)):
-            return o.item()
-        raise TypeError(type(o).__name__)
-
-    return json.dumps(obj, indent=2, default=conv)
+from rotordyn.results.equilibrium import CONVERGED
+from rotordyn.cli_common import ArgumentParser as _ArgumentParser
+from rotordyn.cli_common import json_text as _json
 
 
 # -- info -------------------------------------------------------------------------------
@@ -105,7 +89,7 @@ def _cmd_equilibrium(args) -> int:
         }))
     else:
         print(e.to_frame().to_string(index=False))
-    return 0 if e.status in ("ok", "contact") else 1
+    return 0 if e.converged else 1
 
 
 # -- linear analyses (issue 5) -----------------------------------------------------------
@@ -135,6 +119,9 @@ def _cmd_stability(args) -> int:
                      | {"whirl": list(st.whirl), "kind": list(st.kind)}}))
     else:
         print(st.to_frame().to_string(index=False))
+    if st.status not in CONVERGED:  # a failed equilibrium: no eigenvalues, exit 1
+        print(f"rotordyn: failed: {st.status}: {st.message}", file=sys.stderr)
+        return 1
     return 0
 
 
@@ -202,27 +189,41 @@ def _cmd_unbalance(args) -> int:
     return 0
 
 
+MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, friswell-5.9.1); "
+              "see `rotordyn validate`")
+JSON_HELP = "print one JSON record on stdout (NaN written as null) instead of a table"
+
+
 def _add_operating_point(s, speed=True):
     if speed:
-        s.add_argument("--speed-hz", type=float, default=50.0)
-    s.add_argument("--chamber-pressure-pa", type=float, default=0.0)
-    s.add_argument("--config-ay-m", type=float, default=None)
+        s.add_argument("--speed-hz", type=float, default=50.0, metavar="HZ",
+                       help="spin speed W, Hz")
+    s.add_argument("--chamber-pressure-pa", type=float, default=0.0, metavar="PA",
+                   help="active bearing chamber pressure p_c, Pa gauge (0.15 MPa = 1.5e5)")
+    s.add_argument("--config-ay-m", type=float, default=None, metavar="M",
+                   help="housing offset a_y of the active bearing, m, > 0 above the line "
+                        "(-1.85 mm = -1.85e-3; default: the model's own)")
 
 
 # -- sweeps and plots ----------------------------------------------------------------------
 def _cmd_sweep(args) -> int:
-    from rotordyn.sweep import run_sweep
+    from rotordyn.sweep import SweepInterrupted, run_sweep
+    from rotordyn.sweep.runner import manifest_json
 
-    def progress(done, total):
-        print(f"chunks {done}/{total}", file=sys.stderr)
-
-    res = run_sweep(args.spec, args.out, scheduler=args.scheduler, workers=args.workers,
-                    resume=args.resume, progress=progress)
-    m = res.manifest
-    failed = m.get("chunks_failed", {})
-    print(f"{m['sweep_id']}: {len(m['chunks_done'])}/{m['n_chunks']} chunks, "
-          f"{m['n_points']} points -> {args.out}" + (f"; {len(failed)} chunks failed" if failed
-                                                     else ""))
+    try:
+        res = run_sweep(args.spec, args.out, scheduler=args.scheduler, workers=args.workers,
+                        threads=args.threads, resume=args.resume,
+                        progress=False if args.json else None)
+    except SweepInterrupted as exc:
+        print(f"rotordyn: {exc}", file=sys.stderr)
+        return 130
+    if args.json:
+        print(manifest_json(res))
+    else:
+        c = res.counts
+        print(f"{res.manifest['sweep_id']}: {res.done}/{res.n_chunks} chunks, "
+              f"{res.manifest['n_points']} points (ok {c['ok']}, failed {c['failed']}, "
+              f"unstable {c['unstable']}) -> {args.out}")
     return 0 if res.complete else 1
 
 
@@ -239,126 +240,157 @@ def _cmd_plot(args) -> int:
 def _cmd_report(args) -> int:
     from rotordyn import report
 
-    return report.run(args.model, args.out)
+    return report.run(args.model, args.out, html=args.html)
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = _ArgumentParser(prog="rotordyn", description=rotordyn.__doc__)
-    sub = p.add_subparsers(dest="command", required=True, parser_class=_ArgumentParser)
+    p = _ArgumentParser(prog="rotordyn", description=rotordyn.__doc__,
+                        epilog="Exit codes: 0 success, 2 bad input (one line naming the field), "
+                               "1 runtime failure. Units: SI, flags carry the unit suffix.")
+    sub = p.add_subparsers(dest="command", required=True, parser_class=_ArgumentParser,
+                           metavar="COMMAND")
 
     s = sub.add_parser("info", help="package and library versions")
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_info)
 
     s = sub.add_parser("validate", help="check a model file")
-    s.add_argument("model", help="TOML path or a built-in name (paper-rig, friswell-5.9.1)")
+    s.add_argument("model", help=MODEL_HELP)
     s.set_defaults(func=_cmd_validate)
 
     s = sub.add_parser("modes", help="natural frequencies of the rotor (full or reduced)")
-    s.add_argument("model", help="TOML path or a built-in name (paper-rig, friswell-5.9.1)")
-    s.add_argument("--speed-hz", type=float, default=0.0)
+    s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--speed-hz", type=float, default=0.0, metavar="HZ",
+                   help="spin speed for the gyroscopic coupling, Hz")
     s.add_argument("--reduction", choices=["none", "guyan", "irs", "craig-bampton"], default=None,
-                   help="default: the model's [reduction] method")
-    s.add_argument("--n-modes", type=int, default=None)
-    s.add_argument("--part", choices=["rotor", "sleeve"], default="rotor")
-    s.add_argument("--json", action="store_true")
+                   help="model reduction (default: the model's [reduction] method)")
+    s.add_argument("--n-modes", type=int, default=None, metavar="N",
+                   help="number of modes (default: all of a reduced model, 12 of a full one)")
+    s.add_argument("--part", choices=["rotor", "sleeve"], default="rotor",
+                   help="rotor, or the active bearing's flexible sleeve")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_modes)
 
     s = sub.add_parser("equilibrium", help="static equilibrium of the system (eq. 14)")
-    s.add_argument("model", help="TOML path or a built-in name (paper-rig)")
-    s.add_argument("--speed-hz", type=float, default=50.0)
-    s.add_argument("--chamber-pressure-pa", type=float, default=0.0)
-    s.add_argument("--config-ay-m", type=float, default=None,
-                   help="housing offset a_y of the active bearing (default: the model's)")
-    s.add_argument("--method", choices=["newton", "successive"], default="newton")
-    s.add_argument("--json", action="store_true")
+    s.add_argument("model", help=MODEL_HELP)
+    _add_operating_point(s)
+    s.add_argument("--method", choices=["newton", "successive"], default="newton",
+                   help="equilibrium iteration")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_equilibrium)
 
     s = sub.add_parser("stability", help="eigenvalues of the linearised system (eq. 19)")
-    s.add_argument("model")
+    s.add_argument("model", help=MODEL_HELP)
     _add_operating_point(s)
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_stability)
 
     s = sub.add_parser("campbell", help="natural frequencies against speed; critical speeds")
-    s.add_argument("model")
-    s.add_argument("--speeds-hz", default="5:120:1", help="start:stop:step or a list")
+    s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--speeds-hz", default="5:120:1", metavar="SPEC",
+                   help="speeds, Hz: start:stop:step (inclusive) or a comma-separated list")
     _add_operating_point(s, speed=False)
-    s.add_argument("--harmonic", type=float, default=1.0)
-    s.add_argument("--all-whirl", action="store_true", help="backward crossings too")
-    s.add_argument("--plot", default=None, help="write the diagram to this PNG/SVG")
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--harmonic", type=float, default=1.0, metavar="N",
+                   help="excitation order: critical speeds where f = N x speed")
+    s.add_argument("--all-whirl", action="store_true",
+                   help="report backward-whirl crossings too (default: forward only)")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also write the Campbell diagram to FIG.png or FIG.svg")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_campbell)
 
     s = sub.add_parser("threshold", help="threshold of instability (max Re λ = 0)")
-    s.add_argument("model")
+    s.add_argument("model", help=MODEL_HELP)
     s.add_argument("--vary", choices=["chamber_pressure_pa", "config_ay_m", "speed_hz"],
-                   default="chamber_pressure_pa")
-    s.add_argument("--bounds", type=float, nargs=2, default=(0.0, 0.5e6), metavar=("LO", "HI"))
-    s.add_argument("--n-scan", type=int, default=11)
+                   default="chamber_pressure_pa", help="the input scanned for the threshold")
+    s.add_argument("--bounds", type=float, nargs=2, default=(0.0, 0.5e6), metavar=("LO", "HI"),
+                   help="scan interval of --vary, in its unit (Pa, m or Hz)")
+    s.add_argument("--n-scan", type=int, default=11, metavar="N",
+                   help="points of the bracketing scan")
     _add_operating_point(s)
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_threshold)
 
     s = sub.add_parser("unbalance", help="unbalance response, critical speeds, API 684 margins")
-    s.add_argument("model")
+    s.add_argument("model", help=MODEL_HELP)
     s.add_argument("--unbalance", action="append", required=True,
-                   metavar="STATION,MASS_KG_M,PHASE_DEG")
-    s.add_argument("--speeds-hz", default="5:120:1")
-    s.add_argument("--station", type=int, action="append", default=None)
-    s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None)
+                   metavar="STATION,MASS_KG_M,PHASE_DEG",
+                   help="unbalance m·e (kg m) at a station with its phase (deg); repeatable")
+    s.add_argument("--speeds-hz", default="5:120:1", metavar="SPEC",
+                   help="speeds, Hz: start:stop:step or a list; refined near each peak")
+    s.add_argument("--station", type=int, action="append", default=None, metavar="K",
+                   help="output station, repeatable (default: the unbalanced stations)")
+    s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
+                   metavar=("MIN", "MAX"),
+                   help="operating speed range, Hz, for the API 684 separation margins")
     _add_operating_point(s, speed=False)
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_unbalance)
 
     s = sub.add_parser("sweep", help="run a sweep spec on dask into a parquet dataset")
-    s.add_argument("spec", help="sweeps/<name>.toml")
-    s.add_argument("--out", required=True)
-    s.add_argument("--scheduler", default=None, help="tcp://host:port of an existing cluster")
-    s.add_argument("--workers", type=int, default=None, help="LocalCluster worker processes")
-    s.add_argument("--resume", action=argparse.BooleanOptionalAction, default=True)
+    s.add_argument("spec", help="sweep specification, sweeps/<name>.toml")
+    s.add_argument("--out", required=True, metavar="DIR", help="output dataset directory")
+    s.add_argument("--scheduler", default=None, metavar="ADDR",
+                   help="tcp://host:port of an existing dask cluster (default: a LocalCluster)")
+    s.add_argument("--workers", type=int, default=None, metavar="N",
+                   help="LocalCluster worker processes (default: dask's choice)")
+    s.add_argument("--threads", type=int, default=None, metavar="N",
+                   help="compute on N threads in this process, no dask (default: off)")
+    s.add_argument("--resume", action=argparse.BooleanOptionalAction, default=True,
+                   help="continue an interrupted sweep in --out; --no-resume restarts the "
+                        "same sweep from scratch")
+    s.add_argument("--json", action="store_true", help="one JSON summary line, no progress")
     s.set_defaults(func=_cmd_sweep)
 
     s = sub.add_parser("plot", help="figure from a sweep directory")
-    s.add_argument("dir")
+    s.add_argument("dir", help="sweep dataset directory (written by `rotordyn sweep`)")
     s.add_argument("--kind", required=True,
-                   choices=["stability-map", "equilibrium", "campbell", "waterfall"])
-    s.add_argument("--out", required=True, help="FIG.png or FIG.svg")
+                   choices=["stability-map", "equilibrium", "campbell", "waterfall"],
+                   help="figure kind; it must match the sweep's analysis")
+    s.add_argument("--out", required=True, metavar="FIG", help="FIG.png or FIG.svg")
     s.set_defaults(func=_cmd_plot)
 
     s = sub.add_parser("report", help="the main job: analyses of a model written under --out")
-    s.add_argument("model")
-    s.add_argument("--out", default="out")
+    s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--out", default="out", metavar="DIR",
+                   help="directory for report.txt, tables and figures")
+    s.add_argument("--html", default=None, metavar="FILE",
+                   help="also write one self-contained HTML report (figures as SVG)")
     s.set_defaults(func=_cmd_report)
     cli_bearing.register(sub)
     return p
 
 
-def _join_negative_numbers(argv: list[str]) -> list[str]:
-    """``--flag -1.85e-3`` → ``--flag=-1.85e-3`` (argparse takes "-1.85e-3" for an option)."""
-    out, i = [], 0
-    while i < len(argv):
-        tok = argv[i]
-        if tok.startswith("--") and "=" not in tok and i + 1 < len(argv) and \
-                argv[i + 1].startswith("-"):
-            try:
-                float(argv[i + 1])
-            except ValueError:
-                pass
-            else:
-                out.append(f"{tok}={argv[i + 1]}")
-                i += 2
-                continue
-        out.append(tok)
-        i += 1
-    return out
+def _check_offset(s, args) -> None:
+    """Unit plausibility of --config-ay-m against the active bearing's clearance."""
+    from rotordyn import plausibility
+    from rotordyn.model.bearings import ActiveJournalBearing
+
+    ay = getattr(args, "config_ay_m", None)
+    for b in s.bearings:
+        if isinstance(b, ActiveJournalBearing):
+            plausibility.housing_offset("--config-ay-m", ay, b.clearance_m)
+            return
+
+
+def _show_warning(message, category, filename, lineno, file=None, line=None):
+    """Warnings as one line on stderr: ``rotordyn: warning: <field> = ...``."""
+    print(f"rotordyn: warning: {message}", file=sys.stderr)
 
 
 def main(argv: list[str] | None = None) -> int:
-    argv = _join_negative_numbers(list(sys.argv[1:] if argv is None else argv))
+    import warnings
+
+    argv = list(sys.argv[1:] if argv is None else argv)
+    warnings.showwarning = _show_warning
     try:
         args = build_parser().parse_args(argv)
+        if getattr(args, "model", None) is not None and hasattr(args, "config_ay_m"):
+            _check_offset(rotordyn.models.load(args.model), args)
         return int(args.func(args) or 0)
+    except KeyboardInterrupt:
+        print("rotordyn: interrupted", file=sys.stderr)
+        return 130
     except rotordyn.InputError as exc:
         print(f"rotordyn: error: {exc}", file=sys.stderr)
         return 2

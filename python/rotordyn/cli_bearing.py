@@ -9,11 +9,10 @@ readable record. Exit 2 on bad input (the message names the field).
 from __future__ import annotations
 
 import argparse
-import json
-
 import numpy as np
 
 from rotordyn.bearing import CAVITATION_MODELS, Groove, JournalBearing
+from rotordyn.cli_common import json_text
 from rotordyn.errors import InputError
 
 
@@ -32,27 +31,39 @@ def _groove(text: str) -> Groove:
 
 def register(sub: argparse._SubParsersAction) -> None:
     s = sub.add_parser("bearing", help="fluid-film journal bearing at one operating point",
-                       description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    s.add_argument("--diameter-m", type=float, required=True)
-    s.add_argument("--length-m", type=float, required=True)
-    s.add_argument("--clearance-m", type=float, required=True)
-    s.add_argument("--viscosity-pa-s", type=float, required=True)
-    s.add_argument("--n-circ", type=int, default=72)
-    s.add_argument("--n-axial", type=int, default=16)
-    s.add_argument("--cavitation", choices=CAVITATION_MODELS, default="reynolds")
+                       description=__doc__)
+    s.add_argument("--diameter-m", type=float, required=True, metavar="M",
+                   help="journal diameter D, m (50 mm = 0.05)")
+    s.add_argument("--length-m", type=float, required=True, metavar="M",
+                   help="bearing length L, m")
+    s.add_argument("--clearance-m", type=float, required=True, metavar="M",
+                   help="radial clearance c, m (0.3 mm = 3e-4)")
+    s.add_argument("--viscosity-pa-s", type=float, required=True, metavar="PA_S",
+                   help="dynamic viscosity of the lubricant, Pa s")
+    s.add_argument("--n-circ", type=int, default=72, metavar="N",
+                   help="film grid cells around the circumference")
+    s.add_argument("--n-axial", type=int, default=16, metavar="N",
+                   help="film grid cells along the length")
+    s.add_argument("--cavitation", choices=CAVITATION_MODELS, default="reynolds",
+                   help="cavitation model (gumbel: half-Sommerfeld; reynolds: Swift-Stieber)")
     s.add_argument("--groove", action="append", default=[], metavar="C[,W[,P]]",
                    help="axial groove: centre deg, width deg, pressure Pa (repeatable)")
-    s.add_argument("--speed-hz", type=float, default=None,
-                   help="one operating speed, Hz (or --speeds-hz for a coefficient table)")
+    s.add_argument("--speed-hz", type=float, default=None, metavar="HZ",
+                   help="journal spin speed, Hz (or --speeds-hz for a coefficient table)")
     s.add_argument("--speeds-hz", default=None, metavar="START:STOP:STEP",
                    help="coefficient table over speeds (STOP included), with --load-n")
     s.add_argument("--csv", action="store_true",
                    help="with --speeds-hz: print the table as CSV (TableBearing.from_csv reads it)")
-    s.add_argument("--threads", type=int, default=1, help="threads over speeds (0: all cores)")
-    s.add_argument("--x-m", type=float, default=None)
-    s.add_argument("--y-m", type=float, default=None)
-    s.add_argument("--vx-m-s", type=float, default=0.0)
-    s.add_argument("--vy-m-s", type=float, default=0.0)
+    s.add_argument("--threads", type=int, default=1, metavar="N",
+                   help="threads over speeds (0: all cores)")
+    s.add_argument("--x-m", type=float, default=None, metavar="M",
+                   help="journal centre x (horizontal) from the bearing centre, m")
+    s.add_argument("--y-m", type=float, default=None, metavar="M",
+                   help="journal centre y (vertical, up) from the bearing centre, m")
+    s.add_argument("--vx-m-s", type=float, default=0.0, metavar="M_S",
+                   help="journal centre velocity x, m/s")
+    s.add_argument("--vy-m-s", type=float, default=0.0, metavar="M_S",
+                   help="journal centre velocity y, m/s")
     s.add_argument("--load-n", type=float, nargs=2, metavar=("FX", "FY"), default=None,
                    help="static load on the journal, N: solve the equilibrium first")
     s.add_argument("--method", choices=("perturbation", "finite_difference"),
@@ -62,7 +73,14 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from rotordyn import plausibility
+
     grooves = [_groove(g) for g in args.groove]
+    if args.diameter_m > 0 and args.clearance_m > 0:
+        plausibility.length("--diameter-m", args.diameter_m)
+        plausibility.clearance("--clearance-m", args.clearance_m, args.diameter_m)
+    if args.viscosity_pa_s > 0:
+        plausibility.viscosity("--viscosity-pa-s", args.viscosity_pa_s)
     b = JournalBearing(
         diameter_m=args.diameter_m, length_m=args.length_m, clearance_m=args.clearance_m,
         viscosity_pa_s=args.viscosity_pa_s, n_circ=args.n_circ, n_axial=args.n_axial,
@@ -100,7 +118,7 @@ def run(args: argparse.Namespace) -> int:
         k_n_per_m=K.tolist(), c_n_s_per_m=C.tolist(), coefficient_method=args.method,
     )
     if args.json:
-        print(json.dumps(rec, indent=2))
+        print(json_text(rec))
     else:
         if "equilibrium" in rec:
             e = rec["equilibrium"]

@@ -10,11 +10,11 @@ Reductions: ``guyan`` (the paper's three-step condensation, the default) or ``no
 from __future__ import annotations
 
 import dataclasses
-import json
 from pathlib import Path
 
 import numpy as np
 
+from rotordyn.cli_common import json_text
 from rotordyn.errors import InputError
 from rotordyn.sleeve import FlexibleSleeve, paper_rig_sleeve
 
@@ -96,8 +96,7 @@ def modes(args) -> int:
     if args.model in ("paper-rig", "paper_rig"):
         payload["paper_frequencies_hz"] = list(PAPER_SLEEVE_HZ)
     if getattr(args, "json", False):
-        print(json.dumps(payload, indent=2,
-                         default=lambda o: o.tolist() if isinstance(o, np.ndarray) else o.item()))
+        print(json_text(payload))
         return 0
     paper = payload.get("paper_frequencies_hz", [])
     head = f"{'mode':>4} {'full (Hz)':>11}"

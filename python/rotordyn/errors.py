@@ -14,3 +14,16 @@ from rotordyn._core import (  # noqa: F401
 )
 
 __all__ = ["RotordynError", "InputError", "ConvergenceError", "ContactError", "SundialsError"]
+
+
+class RotordynWarning(UserWarning):
+    """Base class of rotordyn's warnings (the computation goes on; the input is suspicious)."""
+
+
+class UnitWarning(RotordynWarning):
+    """A value far outside its physical range, most likely a unit slip (millimetres typed as
+    metres, GPa as Pa, mPa·s as Pa·s, g/cm³ as kg/m³). The message names the field and the
+    likely slip. See :mod:`rotordyn.plausibility`."""
+
+
+__all__ += ["RotordynWarning", "UnitWarning"]

@@ -121,6 +121,10 @@ class SystemSolver {
                                 const Eigen::VectorXd& r0, const EquilibriumOptions& opt);
 
   int reynolds_solves() const { return solves_; }
+  /// Minimum film thickness of each film at positions r (n,), m, from the geometry alone
+  /// (h = c + S r over the grid angles, eq. 3): no Reynolds solve, no change to the solvers'
+  /// state. Equals last_h_min() after a solve at the same r; ≤ 0 means contact.
+  std::vector<double> film_h_min(const Eigen::VectorXd& r) const;
   /// Minimum film thickness of each film at the last film_forces/linearize call.
   const std::vector<double>& last_h_min() const { return h_min_; }
   const std::vector<double>& last_h_min_angle_deg() const { return h_min_angle_; }

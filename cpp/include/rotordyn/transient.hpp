@@ -1,12 +1,18 @@
 // Nonlinear time integration of the system (paper eq. 12) with SUNDIALS CVODE (BDF, dense
 // Newton with the analytic Jacobian from the perturbation method):
-//   M r̈ + (C + Ω G) ṙ + K (r + a) = H(Ω, r, ṙ) + Q + p_c c_s + Ω² (u_c cos Ωt + u_s sin Ωt)
+//   M r̈ + (C + Ω G) ṙ + K (r + a) = H(Ω, r, ṙ) + Q + p_c(t) c_s
+//                                   + Ω² (u_c cos θ + u_s sin θ) − Ω̇ (−u_c sin θ + u_s cos θ)
+// with Ω(t), θ(t) = ∫Ω dt (operation.hpp), p_c from the actuator driven by the pressure
+// command (schedule + harmonic + controller output); actuator and continuous-controller
+// states are integrated in the same CVODE run, a discrete controller is updated at its
+// sample instants (CVODE stopped and re-initialised there).
 // Each film's Reynolds equation is solved at every right-hand side.
 #pragma once
 #include <Eigen/Core>
 
 #include <string>
 
+#include "rotordyn/operation.hpp"
 #include "rotordyn/system.hpp"
 
 namespace rotordyn {
@@ -18,22 +24,35 @@ struct CvodeOptions {
   long max_steps = 200000;      ///< CVODE steps in all
   double max_step = 0.0;        ///< s; 0: no limit
   bool analytic_jacobian = true;
+  double atol_pressure = 1.0;     ///< Pa (actuator pressure state; its rate state: × ω_n)
+  double atol_controller = 1e-9;  ///< controller states (units of the controller)
 };
 
 struct TransientInput {
-  double omega = 0.0;              ///< rad/s
+  double omega = 0.0;              ///< rad/s (constant speed when speed.t is empty)
   double chamber_pressure = 0.0;   ///< Pa
   Eigen::VectorXd a;               ///< (n,) configuration
   Eigen::VectorXd unbalance_cos;   ///< (n,) u_c (kg·m mapped to coordinates), may be empty
   Eigen::VectorXd unbalance_sin;   ///< (n,) u_s, may be empty
   Eigen::VectorXd r0, v0;          ///< (n,) initial positions and velocities
   Eigen::VectorXd t_out;           ///< (n_t,) output times, increasing, ≥ 0 (t0 = 0)
+  SpeedProfile speed;              ///< Ω(t); empty: constant omega
+  PressureCommand pressure;        ///< p_cmd(t) (base = chamber_pressure when constant)
+  Actuator actuator;               ///< command -> p_c
+  Controller controller;           ///< optional LTI feedback added to the command
 };
 
 struct TransientResult {
   Eigen::VectorXd t;               ///< (n_t,) times reached
   Eigen::MatrixXd r, v;            ///< (n_t, n) positions and velocities
   Eigen::MatrixXd h_min;           ///< (n_t, n_films) minimum film thickness, m
+  Eigen::VectorXd speed;           ///< (n_t,) Ω, rad/s
+  Eigen::VectorXd angle;           ///< (n_t,) θ, rad
+  Eigen::VectorXd pc_command;      ///< (n_t,) pressure command before saturation, Pa
+  Eigen::VectorXd pc;              ///< (n_t,) actual chamber pressure p_c, Pa
+  Eigen::VectorXd controller_output;  ///< (n_t,) u, Pa (0 without a controller)
+  Eigen::MatrixXd actuator_states;    ///< (n_t, order)
+  Eigen::MatrixXd controller_states;  ///< (n_t, n_k)
   std::string status = "ok";       ///< ok | contact | not_converged | error
   std::string message;
   long steps = 0, rhs_evals = 0, jac_evals = 0, newton_fails = 0, error_test_fails = 0;

@@ -3,6 +3,8 @@ from speed to speed, and critical speeds from the 1× (or n×) crossings (paper 
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn.analysis.assembly import assembled
@@ -16,6 +18,7 @@ from rotordyn.results.campbell import CampbellResult
 WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
 
 
+@limited_blas
 def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
              config_ay_m: float | None = None, *, n_modes: int | None = None,
              method: str = "perturbation") -> CampbellResult:
@@ -23,15 +26,13 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     equilibrium is solved at each speed, warm-started from the previous one, then K_H(Ω),
     D_H(Ω) and the eigenvalues. A speed whose equilibrium fails is a NaN row with its status
     in ``point_status``; the diagram goes on. ``n_modes`` default: every mode of the system."""
-    sp = np.asarray(speeds_hz, dtype=float)
-    if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)):
-        raise InputError("speeds_hz: expected a non-empty 1-D array of finite speeds")
-    if sp.size > 1 and np.any(np.diff(sp) <= 0):
-        raise InputError("speeds_hz: expected strictly increasing speeds")
+    sp = v.speeds("speeds_hz", speeds_hz)
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    if config_ay_m is not None:  # a NaN here made every point "error" (issue 13)
+        v.finite("config_ay_m", config_ay_m)
+    v.choice("method", method, ("perturbation", "finite_difference"))
     asm = assembled(system)
-    k = int(n_modes or asm.n)
-    v.integer("n_modes", k, lo=1)
+    k = asm.n if n_modes is None else v.integer("n_modes", n_modes, lo=1, hi=asm.n)
     lam = np.full((sp.size, k), np.nan + 1j * np.nan)
     whirl = np.zeros((sp.size, k), dtype=np.int64)
     kind = np.full((sp.size, k), "rotor", dtype=object)

@@ -3,6 +3,8 @@ paper's successive substitution with the relaxation coefficient P_m (eq. 16)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
@@ -14,6 +16,7 @@ from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.units import hz_to_rad_s
 
 
+@limited_blas
 def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
                 config_ay_m: float | None = None, *, config_ax_m: float | None = None,
                 method: str = "newton", pm: float | str = "auto", tol: float = 1e-10,
@@ -33,8 +36,15 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     tol : residual ‖K(r + a) − H − Q − C_s0‖∞ relative to the largest load.
     warm_start : start from the last equilibrium of this system on this thread (else from
         the concentric, undeformed state), unless ``r0`` is given.
-    contact_fraction : status ``"contact"`` when a minimum film thickness is below this
-        fraction of its clearance.
+    contact_fraction : a converged equilibrium whose minimum film thickness is below this
+        fraction of its clearance has status ``"contact"``.
+
+    Returns
+    -------
+    EquilibriumResult with ``status``: ``"ok"`` or ``"contact"`` (converged: only these are
+    linearised, classified or integrated from), ``"not_converged"`` (the iteration failed) or
+    ``"no_equilibrium"`` (the iteration failed with a film closing: no equilibrium with an
+    open film was found); ``message`` says why.
     """
     v.finite("speed_hz", speed_hz)
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
@@ -46,14 +56,13 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     if pm != "auto":
         v.non_negative("pm", pm)
     v.in_range("tol", tol, 0.0, 1e-2, lo_open=True)
-    v.integer("max_iter", max_iter, lo=1)
+    v.integer("max_iter", max_iter, lo=1, hi=10_000)
+    v.boolean("warm_start", warm_start)
     v.in_range("contact_fraction", contact_fraction, 0.0, 1.0, hi_open=True)
     asm = assembled(system)
     a = asm.config_vector(config_ay_m, config_ax_m)
     if r0 is not None:
-        r_init = np.asarray(r0, dtype=float)
-        if r_init.shape != (asm.n,):
-            raise InputError(f"r0: expected shape ({asm.n},), got {r_init.shape}")
+        r_init = v.vector("r0", r0, asm.n)
     elif warm_start and asm.last_r is not None:
         r_init = asm.last_r
     else:

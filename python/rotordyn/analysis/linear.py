@@ -6,6 +6,8 @@ steps scaled to c and c·ω)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
@@ -13,7 +15,8 @@ from rotordyn.analysis.assembly import Assembled, assembled
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn import _validate as v
 from rotordyn.model.system import System
-from rotordyn.results.equilibrium import EquilibriumResult
+from rotordyn.errors import ConvergenceError
+from rotordyn.results.equilibrium import CONVERGED, EquilibriumResult
 from rotordyn.results.modes import WHIRL_NAMES
 from rotordyn.results.stability import LinearModel, StabilityResult
 from rotordyn.units import hz_to_rad_s
@@ -46,12 +49,18 @@ def _linear_from(asm: Assembled, e: EquilibriumResult, speed_hz: float, method: 
     w = hz_to_rad_s(float(speed_hz))
     m = asm.model
     n = asm.n
-    if e.status in ("ok", "contact"):
+    if e.status in CONVERGED:
         if method == "perturbation":
             lin = asm.solver.linearize(e.r, np.zeros(n), w)
         else:
             lin = asm.solver.linearize_fd(e.r, w, rel_step)
         KH, DH = np.asarray(lin.KH), np.asarray(lin.DH)
+        if not (np.all(np.isfinite(KH)) and np.all(np.isfinite(DH))):
+            raise ConvergenceError(f"linearize: non-finite K_H or D_H at {speed_hz:g} Hz "
+                                   f"({method}); the film solve is not trustworthy here")
+        if asm.bearings and not (np.any(KH) or np.any(DH)):
+            raise ConvergenceError(f"linearize: K_H and D_H are identically zero at {speed_hz:g} Hz "
+                                   f"({method}): a degenerate linearisation")
     else:
         KH = DH = np.full((n, n), np.nan)
     K0, C0, G, M = (np.asarray(x) for x in (m.K, m.C, m.G, m.M))
@@ -61,6 +70,7 @@ def _linear_from(asm: Assembled, e: EquilibriumResult, speed_hz: float, method: 
                        equilibrium=e, method=method)
 
 
+@limited_blas
 def linearize(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, *, method: str = "perturbation",
               rel_step: float = FD_REL_STEP, **equilibrium_kw) -> LinearModel:
@@ -70,7 +80,7 @@ def linearize(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float
     ``rel_step``·c and ``rel_step``·c·ω). Other keywords go to :func:`equilibrium`.
     """
     v.choice("method", method, LINEARIZATION_METHODS)
-    v.in_range("rel_step", rel_step, 0.0, 0.1, lo_open=True, hi_open=True)
+    v.in_range("rel_step", rel_step, 1e-10, 0.1, hi_open=True)
     e = equilibrium(system, speed_hz, chamber_pressure_pa, config_ay_m, **equilibrium_kw)
     return _linear_from(assembled(system), e, speed_hz, method, rel_step)
 
@@ -78,7 +88,7 @@ def linearize(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float
 def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> StabilityResult:
     n = asm.n
     xy = asm.rotor.xy_pairs()
-    if lm.status not in ("ok", "contact") or not np.all(np.isfinite(lm.K)):
+    if lm.status not in CONVERGED or not np.all(np.isfinite(lm.K)):
         empty = np.zeros(0, dtype=complex)
         return StabilityResult(lm, empty, np.zeros(0, dtype=object), np.zeros(0, dtype=object),
                                np.zeros((0, 4, 0), dtype=complex), status=lm.status,
@@ -86,6 +96,8 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
     r = _core.modal(lm.M, lm.D, lm.K, xy, int(n_modes or n), True, asm.rotor.rot_pairs())
     lam = np.asarray(r.eigenvalues)
     phi = np.asarray(r.modes)  # (n, k)
+    if not (np.all(np.isfinite(lam)) and np.all(np.isfinite(phi))):
+        raise ConvergenceError(f"stability: non-finite eigenvalues at {lm.speed_hz:g} Hz")
     # Which part carries the mode: kinetic-energy share of the sleeve coordinates.
     sl = [i for bc in asm.bearings for i in bc.sleeve]
     kin_total = np.real(np.einsum("ik,ij,jk->k", phi.conj(), lm.M, phi))
@@ -109,6 +121,7 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
                            message=lm.equilibrium.message, modes=phi)
 
 
+@limited_blas
 def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, *, n_modes: int | None = None,
               method: str = "perturbation", **equilibrium_kw) -> StabilityResult:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
@@ -24,6 +26,12 @@ class RotorMatrices:
     def __init__(self, system: System, method: str | None = None):
         method = system.reduction.method if method is None else method
         v.choice("reduction", method, REDUCTION_METHODS)
+        # The constrained matrices are dense: four N x N float64 arrays, N = 4 (n_elements+1),
+        # and as many again while they are built and reduced. Refuse before allocating
+        # (issue 13: n_elements = 10000 ended in std::bad_alloc).
+        n_dof = 4 * (system.rotor.n_elements + 1)
+        v.memory(f"rotor.n_elements (total {system.rotor.n_elements}, {n_dof} DOF)",
+                 8.0 * 8.0 * n_dof**2)
         self.system = system
         self.method = method
         self.full = _core.constrain(system.to_core())
@@ -81,6 +89,7 @@ def _result(rm: RotorMatrices, speed_hz: float, n_modes: int, model_name: str) -
     )
 
 
+@limited_blas
 def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None,
           n_modes: int | None = None) -> ModesResult:
     """Damped natural frequencies, damping, whirl and mode shapes of the rotor on its supports.
@@ -111,6 +120,7 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
                        red.node_positions_m, full=full)
 
 
+@limited_blas
 def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
                    n_modes: int = 8) -> CampbellResult:
     """Campbell diagram of the rotor on its linear/rigid supports (no fluid film): the
@@ -118,14 +128,16 @@ def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
 
     speeds_hz: (n_speeds,) increasing, Hz.
     """
-    sp = np.asarray(speeds_hz, dtype=float)
-    if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)):
-        raise InputError("speeds_hz: expected a non-empty 1-D array of finite speeds")
-    if sp.size > 1 and np.any(np.diff(sp) <= 0):
-        raise InputError("speeds_hz: expected strictly increasing speeds")
+    sp = v.speeds("speeds_hz", speeds_hz)
     v.integer("n_modes", n_modes, lo=1)
+    if reduction is not None:
+        v.choice("reduction", reduction, REDUCTION_METHODS)
     rm = RotorMatrices(system, reduction)
     M, K, C, G = rm.matrices()
+    # At most one damped frequency per coordinate pair and direction: more modes than
+    # coordinates is not meaningful (issue 13: n_modes=10**6 gave a 10^6-column NaN array).
+    v.integer("n_modes", n_modes, lo=1, hi=M.shape[0])
+    v.memory("n_modes", 16.0 * sp.size * n_modes)
     r = _core.campbell(M, C, G, K, rm.xy_pairs(), hz_to_rad_s(sp), n_modes, rm.rot_pairs())
     return CampbellResult(sp, np.asarray(r.eigenvalues), np.asarray(r.whirl),
                           model="full" if rm.reduction is None else rm.method)

@@ -3,11 +3,14 @@ chamber-pressure fluctuation ΔC and excitation forces F as inputs)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import linearize
-from rotordyn.errors import InputError
+from rotordyn.errors import ConvergenceError, InputError
+from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.model.system import System
 from rotordyn.results.statespace import StateSpaceResult
 
@@ -21,6 +24,7 @@ def _parse(item, kinds, field):
     return item
 
 
+@limited_blas
 def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
                speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
                config_ay_m: float | None = None, **kw) -> StateSpaceResult:
@@ -33,8 +37,8 @@ def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
     ``("sleeve", bearing_index)`` (sleeve masters, m). Default: the journal of every bearing.
     """
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, **kw)
-    if lm.status not in ("ok", "contact"):
-        raise InputError(f"statespace: no equilibrium at this operating point ({lm.status}: "
+    if lm.status not in CONVERGED:
+        raise ConvergenceError(f"statespace: no equilibrium at this operating point ({lm.status}: "
                          f"{lm.equilibrium.message})")
     asm = assembled(system)
     n = asm.n

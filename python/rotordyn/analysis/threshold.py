@@ -3,6 +3,8 @@ part of the eigenvalues of eq. 19), and boundary tracing by continuation (paper 
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import math
 
 import numpy as np
@@ -31,6 +33,7 @@ def _point(system, params, exclude_sleeve_modes):
     return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), st.status
 
 
+@limited_blas
 def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
               speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, n_scan: int = 25, xtol: float | None = None,
@@ -47,22 +50,18 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     leaves no trace in the scanned values can still be missed: raise ``n_scan``.
     """
     v.choice("vary", vary, PARAMETERS)
-    try:
-        lo, hi = (float(b) for b in bounds)
-    except (TypeError, ValueError):
-        raise InputError(f"bounds: expected (low, high), got {bounds!r}") from None
-    if not (math.isfinite(lo) and math.isfinite(hi) and hi > lo):
-        raise InputError(f"bounds: expected finite low < high, got {bounds!r}")
+    lo, hi = v.bounds("bounds", bounds)
     if vary == "chamber_pressure_pa" and lo < 0:
-        raise InputError(f"bounds: chamber_pressure_pa must be >= 0, got {bounds!r}")
+        raise InputError(f"bounds: {vary} must be >= 0, got {bounds!r}")
     v.integer("n_scan", n_scan, lo=2, hi=10000)
     xtol = (hi - lo) * 1e-6 if xtol is None else v.positive("xtol", xtol)
-    fixed = {"speed_hz": float(speed_hz), "chamber_pressure_pa": float(chamber_pressure_pa),
-             "config_ay_m": None if config_ay_m is None else float(config_ay_m)}
+    # The fixed parameters obey the ranges of stability() (issue 13: a negative fixed
+    # chamber pressure used to scan and report "no_crossing").
+    fixed = {"speed_hz": v.finite("speed_hz", speed_hz),
+             "chamber_pressure_pa": v.non_negative("chamber_pressure_pa", chamber_pressure_pa),
+             "config_ay_m": None if config_ay_m is None else v.finite("config_ay_m",
+                                                                       config_ay_m)}
     fixed.pop(vary)
-    for k, val in fixed.items():
-        if val is not None:
-            v.finite(k, val)
     calls = [0]
 
     def g(x):
@@ -107,15 +106,22 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     base = dict(vary=vary, fixed=fixed, bounds=(lo, hi), xtol=xtol, scan=scan)
     re = ok["max_real_1_per_s"].to_numpy()
     idx = np.where(np.sign(re[:-1]) * np.sign(re[1:]) < 0)[0]
+    n_failed = len(scan) - len(ok)
     if len(idx) == 0:
+        # A failed point (no converged equilibrium) is neither stable nor unstable: it is
+        # excluded from the scan and counted as failed (issue 13).
         if len(re) == 0:
-            what = "no scanned point has an equilibrium"
+            what = f"none of the {len(scan)} scanned points has a converged equilibrium"
         else:
             state = "unstable" if np.all(re > 0) else "stable"
-            what = f"{state} at all {len(re)} scanned points"
+            what = f"{state} at all {len(re)} scanned points with an equilibrium"
+            if n_failed:
+                what += f" ({n_failed} failed: " + ", ".join(
+                    sorted(set(scan.loc[~np.isfinite(scan["max_real_1_per_s"]),
+                                        "status"].str.split(":").str[0]))) + ")"
         return ThresholdResult(value=math.nan, whirl_frequency_hz=math.nan,
                                whirl_ratio=math.nan, stable_side="", evaluations=calls[0],
-                               status="no_crossing",
+                               status="no_crossing" if len(re) else "no_equilibrium",
                                message=f"max Re λ does not change sign in {vary} ∈ "
                                        f"[{lo:g}, {hi:g}]: {what} (a band narrower than the "
                                        "scan spacing can hide between them)",
@@ -146,6 +152,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
                            message=msg, **base)
 
 
+@limited_blas
 def stability_boundary(system: System, vary: str = "chamber_pressure_pa",
                        along: str = "config_ay_m", *, values, bounds, n_scan: int = 25,
                        **fixed) -> BoundaryResult:

@@ -4,49 +4,105 @@ waterfall of Fig. 13 is a set of these at increasing speeds)."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
 from rotordyn import _core
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.equilibrium import equilibrium
-from rotordyn.errors import InputError
+from rotordyn.errors import ConvergenceError, InputError
 from rotordyn import _validate as v
 from rotordyn.model.system import System
+from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.results.transient import TransientResult
-from rotordyn.units import hz_to_rad_s
+from rotordyn.units import hz_to_rad_s, rad_s_to_hz
 
 
+@limited_blas
 def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None, *,
               unbalances=(), disturbance_m=(0.0, 0.0), r0=None, v0=None,
               n_out: int = 2001, rtol: float = 1e-6, atol_m: float = 1e-9,
-              max_steps: int = 500000) -> TransientResult:
+              max_steps: int = 500000, speed=None, pressure=None, actuator=None,
+              controller=None, measurement_offset=None, atol_pa: float = 1.0,
+              max_step_s: float = 0.0) -> TransientResult:
     """Integrate eq. 12 from t = 0 to ``t_end_s``.
 
     The start is the static equilibrium (eq. 14) with the journal of the active (or only)
     bearing displaced by ``disturbance_m`` = (dx, dy), unless ``r0``/``v0`` are given.
-    ``unbalances``: [(station, mass_kg_m, phase_deg)] rotating with the rotor. Output at
-    ``n_out`` uniformly spaced times. A failure (film contact, CVODE giving up) returns the
-    rows reached with a ``status`` and the CVODE flag name in ``message``.
+    ``unbalances``: [(station, mass_kg_m, phase_deg)] rotating with the rotor; with a
+    varying speed the force is m e (Ω² e_r − Ω̇ e_t) at the rotor angle θ = ∫Ω dt (radial
+    and tangential, the tangential one from the angular acceleration). Output at ``n_out``
+    uniformly spaced times. A failure (film contact, CVODE giving up) returns the rows
+    reached with a ``status`` and the CVODE flag name in ``message``.
+
+    Time-varying operation (:mod:`rotordyn.control`): ``speed`` a
+    :class:`~rotordyn.control.SpeedProfile` (replaces ``speed_hz``; the equilibrium is taken
+    at its speed at t = 0); ``pressure`` a :class:`~rotordyn.control.PressureSchedule`
+    (replaces ``chamber_pressure_pa``); ``actuator`` an :class:`~rotordyn.control.Actuator`
+    (default: none, p_c = command without limits); ``controller`` a
+    :class:`~rotordyn.control.Controller` (or a python-control system with a ``measurements``
+    attribute is not accepted: wrap it with ``Controller.from_lti``) whose output is added to
+    the command; its measurements are taken relative to ``measurement_offset`` (default: their
+    value at the starting equilibrium). ``atol_pa``: absolute tolerance of the actuator
+    pressure state.
     """
+    from rotordyn.control.controller import Controller
+    from rotordyn.control.measurement import measurement_matrix
+    from rotordyn.control.operation import Actuator, PressureSchedule, SpeedProfile
+
+    if speed is not None:
+        if not isinstance(speed, SpeedProfile):
+            raise InputError(f"speed: expected a rotordyn.control.SpeedProfile, got "
+                             f"{type(speed).__name__}")
+        speed_hz = float(speed.speed_hz[0]) if speed.t_s[0] <= 0 else float(speed.speed_at(0.0))
+    if pressure is not None:
+        if not isinstance(pressure, PressureSchedule):
+            raise InputError(f"pressure: expected a rotordyn.control.PressureSchedule, got "
+                             f"{type(pressure).__name__}")
+        if pressure.kind == "time_table":
+            chamber_pressure_pa = float(np.interp(0.0, pressure.x, pressure.p_pa))
+        elif pressure.kind == "speed_table":
+            chamber_pressure_pa = float(np.interp(speed_hz, pressure.x, pressure.p_pa))
+        else:
+            chamber_pressure_pa = pressure.value_pa
+    if actuator is not None and not isinstance(actuator, Actuator):
+        raise InputError(f"actuator: expected a rotordyn.control.Actuator, got "
+                         f"{type(actuator).__name__}")
+    if controller is not None and not isinstance(controller, Controller):
+        raise InputError(f"controller: expected a rotordyn.control.Controller (use "
+                         f"Controller.from_lti for a python-control system), got "
+                         f"{type(controller).__name__}")
+    v.positive("atol_pa", atol_pa)
+    v.non_negative("max_step_s", max_step_s)
     v.positive("t_end_s", t_end_s)
     v.finite("speed_hz", speed_hz)
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
-    v.integer("n_out", n_out, lo=2, hi=10_000_000)
-    v.in_range("rtol", rtol, 0.0, 0.1, lo_open=True)
+    v.integer("n_out", n_out, lo=2)
+    v.in_range("rtol", rtol, 1e-14, 0.1, hi_open=True)
     v.positive("atol_m", atol_m)
     v.integer("max_steps", max_steps, lo=1)
+    if config_ay_m is not None:
+        v.finite("config_ay_m", config_ay_m)
     asm = assembled(system)
     n = asm.n
+    # Output arrays t, r, v, h_min in C++ and their numpy copies: refuse before allocating
+    # (issue 13: n_out=10**7).
+    v.memory("n_out", 2 * 8.0 * n_out * (2 * n + len(asm.bearings) + 1))
+    ub_list = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
+    dx, dy = v.vector("disturbance_m", disturbance_m, 2)
     a = asm.config_vector(config_ay_m)
+    start_status, start_note = "ok", ""
     if r0 is None:
         e = equilibrium(system, speed_hz, chamber_pressure_pa, config_ay_m)
-        if e.status not in ("ok", "contact"):
-            raise InputError(f"transient: no equilibrium to start from ({e.status}: {e.message});"
-                             " give r0")
+        if e.status not in CONVERGED:
+            raise ConvergenceError(f"transient: no equilibrium to start from ({e.status}: "
+                                   f"{e.message}); give r0")
+        if e.status == "contact":  # the result says it started from a contact equilibrium
+            start_status, start_note = "contact", f"started from a contact equilibrium: {e.message}"
         r_eq = e.r.copy()
         r_init = r_eq.copy()
-        dx, dy = (v.finite("disturbance_m", d) for d in disturbance_m)
         targets = [bc for bc in asm.bearings if bc.active] or asm.bearings[:1]
         if (dx or dy) and not targets:
             raise InputError("disturbance_m: the system has no journal bearing to disturb")
@@ -54,19 +110,14 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
             r_init[bc.jx] += dx
             r_init[bc.jy] += dy
     else:
-        r_init = np.asarray(r0, dtype=float)
-        if r_init.shape != (n,):
-            raise InputError(f"r0: expected shape ({n},), got {r_init.shape}")
+        r_init = v.vector("r0", r0, n)
         r_eq = r_init.copy()
-    v_init = np.zeros(n) if v0 is None else np.asarray(v0, dtype=float)
-    if v_init.shape != (n,):
-        raise InputError(f"v0: expected shape ({n},), got {v_init.shape}")
+    v_init = np.zeros(n) if v0 is None else v.vector("v0", v0, n)
 
     uc, us = np.zeros(n), np.zeros(n)
-    for i, (st, me, ph) in enumerate(unbalances):
-        v.finite(f"unbalances[{i}].mass_kg_m", me)
+    for st, me, ph in ub_list:
         L = asm.station_load_matrix(st)
-        p = np.radians(v.finite(f"unbalances[{i}].phase_deg", ph))
+        p = np.radians(ph)
         # F = m e Ω² (cos(Ωt + p), sin(Ωt + p)) = Ω² (u_c cos Ωt + u_s sin Ωt)
         uc += me * (L[:, 0] * np.cos(p) + L[:, 1] * np.sin(p))
         us += me * (-L[:, 0] * np.sin(p) + L[:, 1] * np.cos(p))
@@ -75,15 +126,36 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     inp.omega = hz_to_rad_s(float(speed_hz))
     inp.chamber_pressure = float(chamber_pressure_pa)
     inp.a = a
-    inp.unbalance_cos, inp.unbalance_sin = (uc, us) if len(unbalances) else (np.zeros(0), np.zeros(0))
+    inp.unbalance_cos, inp.unbalance_sin = (uc, us) if ub_list else (np.zeros(0), np.zeros(0))
     inp.r0, inp.v0 = r_init, v_init
     inp.t_out = np.linspace(0.0, float(t_end_s), int(n_out))
     opt = _core.CvodeOptions()
     opt.rtol, opt.atol_position = float(rtol), float(atol_m)
     opt.atol_velocity = float(atol_m) * max(hz_to_rad_s(abs(float(speed_hz))), 1.0)
     opt.max_steps = int(max_steps)
+    opt.atol_pressure = float(atol_pa)
+    opt.atol_controller = float(atol_m)
+    opt.max_step = float(max_step_s)
+    if speed is not None:
+        inp.speed = speed.to_core()
+    if pressure is not None:
+        inp.pressure = pressure.to_core()
+    if actuator is not None:
+        inp.actuator = actuator.to_core()
+    if controller is not None:
+        Cm, _ = measurement_matrix(system, controller.measurements)
+        if measurement_offset is None:
+            off = Cm @ np.concatenate([r_eq, np.zeros(n)])
+        else:
+            off = np.asarray(measurement_offset, dtype=float)
+            if off.shape != (Cm.shape[0],) or not np.all(np.isfinite(off)):
+                raise InputError(f"measurement_offset: expected {Cm.shape[0]} finite values")
+        inp.controller = controller.to_core(Cm, off)
     res = _core.integrate(asm.solver, inp, opt)
     r = np.asarray(res.r)
+    status, message = res.status, res.message
+    if status == "ok" and not (np.all(np.isfinite(r)) and np.all(np.isfinite(res.v))):
+        status, message = "error", "non-finite state in an integration reported as ok"
     bcs = asm.bearings
     return TransientResult(
         speed_hz=float(speed_hz), chamber_pressure_pa=float(chamber_pressure_pa),
@@ -91,8 +163,16 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
         t=np.asarray(res.t), r=r, v=np.asarray(res.v),
         journal_x_m=r[:, [bc.jx for bc in bcs]], journal_y_m=r[:, [bc.jy for bc in bcs]],
         clearance_m=np.array([bc.clearance_m for bc in bcs]),
-        h_min_m=asm.bearing_h_min(np.asarray(res.h_min)), bearing_names=tuple(bc.name for bc in bcs),
+        h_min_m=asm.bearing_h_min(np.asarray(res.h_min)),
+        bearing_names=tuple(bc.name for bc in bcs),
+        speed_hz_t=rad_s_to_hz(np.asarray(res.speed)), angle_rad=np.asarray(res.angle),
+        chamber_pressure_command_pa=np.asarray(res.pc_command),
+        chamber_pressure_actual_pa=np.asarray(res.pc),
+        controller_output_pa=np.asarray(res.controller_output),
+        actuator_states=np.asarray(res.actuator_states),
+        controller_states=np.asarray(res.controller_states),
         equilibrium_r=r_eq,
         stats={"steps": res.steps, "rhs_evals": res.rhs_evals, "jac_evals": res.jac_evals,
                "newton_fails": res.newton_fails, "error_test_fails": res.error_test_fails},
-        status=res.status, message=res.message)
+        status=start_status if status == "ok" else status,
+        message="; ".join(m for m in (start_note, message) if m))

@@ -3,50 +3,93 @@ centrifugal forces of imbalance), with speed-dependent bearing coefficients."""
 
 from __future__ import annotations
 
+from rotordyn._threads import limited_blas
+
 import numpy as np
 
+from rotordyn import _core
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import continued_linear_models
 from rotordyn.errors import InputError
+from rotordyn.results.equilibrium import CONVERGED
 from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.unbalance import UnbalanceResult
 from rotordyn.units import hz_to_rad_s
 
 
+REFINE_LEVELS = 6    # at most 6 refinements of a peak: 1 Hz grid → 1/4⁶ Hz ≈ 0.25 mHz
+REFINE_POINTS = 3    # new speeds on each side of a peak per refinement (spacing / 4)
+
+
+def _unresolved_peaks(u: UnbalanceResult) -> list[int]:
+    """Indices of local maxima (of |x|, |y| or the orbit's major axis at any station) whose
+    neighbours are not both above the half-power level a/√2: the peak lies between grid points
+    and its height and half-power band (AF) are not resolved yet."""
+    out = set()
+    for a in (np.abs(u.x), np.abs(u.y), u.major_m):
+        for k in range(a.shape[1]):
+            v = a[:, k]
+            for i in range(1, len(v) - 1):
+                if v[i] > v[i - 1] and v[i] >= v[i + 1] and \
+                        min(v[i - 1], v[i + 1]) < v[i] / np.sqrt(2):
+                    out.add(i)
+    return sorted(out)
+
+
+def _merge(a: UnbalanceResult, b: UnbalanceResult) -> UnbalanceResult:
+    sp = np.concatenate([a.speeds_hz, b.speeds_hz])
+    o = np.argsort(sp, kind="stable")
+    return UnbalanceResult(sp[o], a.stations, np.concatenate([a.x, b.x])[o],
+                           np.concatenate([a.y, b.y])[o],
+                           np.concatenate([a.point_status, b.point_status])[o], a.unbalances,
+                           a.operating_speed_hz)
+
+
+@limited_blas
 def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
                        chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None,
-                       operating_speed_hz=None, method: str = "perturbation") -> UnbalanceResult:
+                       operating_speed_hz=None, method: str = "perturbation",
+                       refine: bool = True) -> UnbalanceResult:
     """Response to rotating unbalances ``[(station, mass_kg_m, phase_deg), ...]`` (m·e in
     kg·m; the force at station is m e Ω² (cos(Ωt + φ), sin(Ωt + φ)), turning with the rotor).
 
     At every speed the equilibrium is continued, K_H and D_H recomputed, and
     (K − Ω² M + iΩ D) X = F solved. ``stations``: output stations (default: the unbalanced
     ones). ``operating_speed_hz``: (min, max) operating speeds for the API 684 separation
-    margins of :meth:`UnbalanceResult.peaks`.
+    margins of :meth:`UnbalanceResult.peaks`. ``refine``: add speeds around every resonance
+    peak until both neighbours of the peak lie above its half-power level (at most
+    ``REFINE_LEVELS`` quarterings of the spacing), so that neither the peak nor its AF is
+    missed between the given speeds (the returned ``speeds_hz`` include the added ones).
     """
-    ub = []
-    try:
-        for i, u in enumerate(unbalances):
-            st, me, ph = u
-            v.integer(f"unbalances[{i}].station", int(st) if isinstance(st, (int, np.integer))
-                      else st, lo=0, hi=system.rotor.n_stations - 1)
-            ub.append((int(st), v.finite(f"unbalances[{i}].mass_kg_m", me),
-                       v.finite(f"unbalances[{i}].phase_deg", ph)))
-    except (TypeError, ValueError) as exc:
-        if isinstance(exc, InputError):
-            raise
-        raise InputError("unbalances: expected a list of (station, mass_kg_m, phase_deg)") from None
+    if refine:
+        kw = dict(stations=stations, chamber_pressure_pa=chamber_pressure_pa,
+                  config_ay_m=config_ay_m, operating_speed_hz=operating_speed_hz,
+                  method=method, refine=False)
+        u = unbalance_response(system, unbalances, speeds_hz, **kw)
+        for _ in range(REFINE_LEVELS):
+            sp = u.speeds_hz
+            new = []
+            for i in _unresolved_peaks(u):
+                for lo, hi in ((sp[i - 1], sp[i]), (sp[i], sp[i + 1])):
+                    new.extend(lo + (hi - lo) * np.arange(1, REFINE_POINTS + 1)
+                               / (REFINE_POINTS + 1))
+            new = np.unique(np.asarray(new))
+            new = new[~np.isin(new, sp)]
+            if new.size == 0:
+                break
+            u = _merge(u, unbalance_response(system, unbalances, new, **kw))
+        return u
+    ub = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
     if not ub:
         raise InputError("unbalances: expected at least one (station, mass_kg_m, phase_deg)")
-    sp = np.asarray(speeds_hz, dtype=float)
-    if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)) or np.any(sp <= 0):
-        raise InputError("speeds_hz: expected a non-empty 1-D array of positive speeds")
-    if sp.size > 1 and np.any(np.diff(sp) <= 0):
-        raise InputError("speeds_hz: expected strictly increasing speeds")
+    sp = v.speeds("speeds_hz", speeds_hz, positive_only=True)
+    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    if config_ay_m is not None:
+        v.finite("config_ay_m", config_ay_m)
     if operating_speed_hz is not None:
-        lo, hi = (float(x) for x in operating_speed_hz)
-        if not 0 < lo <= hi:
+        lo, hi = v.bounds("operating_speed_hz", operating_speed_hz)
+        if not 0 < lo:
             raise InputError("operating_speed_hz: expected (min, max) with 0 < min <= max")
         operating_speed_hz = (lo, hi)
     asm = assembled(system)
@@ -60,13 +103,13 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     Y = np.full((sp.size, len(outs)), np.nan + 0j)
     status = np.empty(sp.size, dtype=object)
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
-                                              method, continue_on=("ok", "contact")):
+                                              method, continue_on=CONVERGED):
         status[i] = stt
-        if stt not in ("ok", "contact"):
+        if stt not in CONVERGED:
             continue
         w = hz_to_rad_s(float(sp[i]))
-        Z = lm.K - w**2 * lm.M + 1j * w * lm.D
-        q = np.linalg.solve(Z, w**2 * F1)
+        # (K − Ω² M + iΩ D) q = Ω² F1: sparse LU in the core (FE rotors are banded).
+        q = np.asarray(_core.harmonic_response(lm.M, lm.D, lm.K, w, (w**2 * F1)[:, None]))[:, 0]
         for k, Co in enumerate(Cout):
             X[i, k], Y[i, k] = Co @ q
     return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub), operating_speed_hz)

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from rotordyn.bearing import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.errors import InputError
 from rotordyn import _validate as v
+from rotordyn import plausibility
 from rotordyn.sleeve import FlexibleSleeve
 
 
@@ -27,6 +28,11 @@ def _check_film(b, where: str, n_stations: int) -> None:
     v.integer(f"{where}.n_axial", b.n_axial, lo=2, hi=1024)
     v.finite(f"{where}.config_ax_m", b.config_ax_m)
     v.finite(f"{where}.config_ay_m", b.config_ay_m)
+    plausibility.length(f"{where}.diameter_m", b.diameter_m)
+    plausibility.clearance(f"{where}.clearance_m", b.clearance_m, b.diameter_m)
+    plausibility.viscosity(f"{where}.viscosity_pa_s", b.viscosity_pa_s)
+    plausibility.housing_offset(f"{where}.config_ax_m", b.config_ax_m, b.clearance_m)
+    plausibility.housing_offset(f"{where}.config_ay_m", b.config_ay_m, b.clearance_m)
     for i, g in enumerate(b.grooves):
         if not isinstance(g, Groove):
             raise InputError(f"{where}.grooves[{i}]: expected a Groove, got {type(g).__name__}")

@@ -15,6 +15,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn.errors import InputError
 from rotordyn import _validate as v
+from rotordyn import plausibility
 
 
 @dataclass(frozen=True, slots=True)
@@ -37,6 +38,8 @@ class Material:
         v.in_range(f"{f}.poisson", self.poisson, -1.0, 0.5, lo_open=True, hi_open=True)
         if self.shear_modulus_pa is not None:
             v.positive(f"{f}.shear_modulus_pa", self.shear_modulus_pa)
+        plausibility.young_modulus(f"{f}.young_pa", self.young_pa)
+        plausibility.density(f"{f}.density_kg_m3", self.density_kg_m3)
 
     @property
     def shear_modulus(self) -> float:
@@ -72,6 +75,8 @@ class ShaftSection:
                 f"{self.outer_diameter_m}), got {self.inner_diameter_m!r}"
             )
         v.integer(f"{where}.n_elements", self.n_elements, lo=1, hi=10000)
+        plausibility.length(f"{where}.outer_diameter_m", self.outer_diameter_m)
+        plausibility.length(f"{where}.length_m", self.length_m, plausibility.MAX_SECTION_LENGTH_M)
         if self.shear_coefficient is not None:
             v.in_range(f"{where}.shear_coefficient", self.shear_coefficient, 0.0, 2.0,
                        lo_open=True)

@@ -26,15 +26,22 @@ class Reduction:
 
     ``method``: ``"guyan"`` (the paper's), ``"irs"`` (improved reduced system) or
     ``"craig-bampton"`` (masters plus ``n_modes`` fixed-interface modes); ``"none"`` keeps the
-    full model."""
+    full model. Default: ``"guyan"`` when master stations are given, else ``"none"`` (a
+    reduction without masters is refused, so every written model file can be analysed)."""
 
     master_stations: tuple[int, ...] = ()
-    method: str = "guyan"
+    method: str | None = None
     n_modes: int = 0
 
     def __post_init__(self):
         object.__setattr__(self, "master_stations", tuple(self.master_stations))
+        if self.method is None:
+            object.__setattr__(self, "method", "guyan" if self.master_stations else "none")
         v.choice("reduction.method", self.method, REDUCTION_METHODS)
+        if self.method != "none" and not self.master_stations:
+            raise InputError(
+                f"reduction.master_stations: method {self.method!r} needs at least one master "
+                "station (or set method = \"none\" for the full model)")
         v.integer("reduction.n_modes", self.n_modes, lo=0, hi=1000)
         seen = set()
         for i, s in enumerate(self.master_stations):

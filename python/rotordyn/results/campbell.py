@@ -49,6 +49,19 @@ class CampbellResult:
         out[i, ids[i, j]] = vals[i, j]
         return out
 
+    def __repr__(self) -> str:
+        ns, nm = self.eigenvalues.shape
+        try:
+            crit = self.critical_speeds()["speed_hz"].to_numpy()
+            cs = ", ".join(f"{x:.4g}" for x in crit[:6]) or "none"
+        except Exception:  # noqa: BLE001 - a repr never raises
+            cs = "?"
+        bad = 0 if self.point_status is None else int(np.sum(self.point_status != "ok"))
+        return (f"<CampbellResult {self.model}: {ns} speeds {self.speeds_hz[0]:g}–"
+                f"{self.speeds_hz[-1]:g} Hz × {nm} modes; forward 1× critical speeds (Hz): {cs}"
+                + (f"; {bad} speeds not ok" if bad else "")
+                + (f"; status {self.status}" if self.status != "ok" else "") + ">")
+
     @property
     def frequencies_hz(self) -> np.ndarray:
         """(n_speeds, n_modes) damped natural frequencies, Hz."""
@@ -111,24 +124,12 @@ class CampbellResult:
             df.insert(4, "kind", pd.Categorical(self.kind.ravel(), categories=["rotor", "sleeve"]))
         return df
 
-    def plot(self, ax=None, harmonics=(1.0,)):
-        """Frequencies against speed (forward solid, backward dashed) with n× lines."""
-        import matplotlib.pyplot as plt
+    def plot(self, ax=None, harmonics=(0.5, 1.0, 2.0), color_by: str = "log_dec",
+             critical: bool = True, rotor_only: bool = True):
+        """Campbell diagram (:func:`rotordyn.plot.campbell_diagram`): tracked modes coloured by
+        log decrement (or ``color_by="damping_ratio"``) with a colour bar, unstable stretches
+        red, forward/backward/planar solid/dashed/dotted, order lines, critical speeds."""
+        from rotordyn.plot.frequency import campbell_diagram
 
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 5))
-        f = self.frequencies_hz
-        if self.kind is not None:
-            f = np.where(self.kind == "rotor", f, np.nan)  # the paper omits the sleeve curves
-        for j in range(f.shape[1]):
-            fw = np.where(self.whirl[:, j] >= 0, f[:, j], np.nan)
-            bw = np.where(self.whirl[:, j] < 0, f[:, j], np.nan)
-            ax.plot(self.speeds_hz, fw, "-", color=f"C{j % 10}")
-            ax.plot(self.speeds_hz, bw, "--", color=f"C{j % 10}")
-        for h in harmonics:
-            ax.plot(self.speeds_hz, h * self.speeds_hz, "k:", lw=1, label=f"{h:g}× speed")
-        ax.set_xlabel("speed (Hz)")
-        ax.set_ylabel("damped natural frequency (Hz)")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize="small")
-        return ax
+        return campbell_diagram(self, ax=ax, color_by=color_by, harmonics=harmonics,
+                                critical=critical, rotor_only=rotor_only)

@@ -8,6 +8,13 @@ import numpy as np
 import pandas as pd
 
 
+STATUSES = ("ok", "no_equilibrium", "contact", "not_converged", "error")
+# Converged equilibria ("contact": converged with a film thinner than contact_fraction c);
+# only these are linearised, classified or integrated from. The others are failures.
+CONVERGED = ("ok", "contact")
+FAILED = ("no_equilibrium", "not_converged", "error")
+
+
 @dataclass(frozen=True)
 class EquilibriumResult:
     """Equilibrium at one operating point.
@@ -39,6 +46,19 @@ class EquilibriumResult:
     status: str = "ok"
     message: str = ""
 
+    def __repr__(self) -> str:
+        pos = "; ".join(f"{n or i}: x/c = {x:.4f}, y/c = {y:.4f}"
+                        for i, (n, x, y) in enumerate(zip(self.bearing_names, self.x_over_c,
+                                                          self.y_over_c)))
+        return (f"<EquilibriumResult {self.status}: {self.speed_hz:g} Hz, p_c = "
+                f"{self.chamber_pressure_pa / 1e6:g} MPa; {pos or 'no bearings'}; "
+                f"{self.iterations} iterations, residual {self.residual:.2g}>")
+
+    @property
+    def converged(self) -> bool:
+        """True for a converged equilibrium (status ``"ok"`` or ``"contact"``)."""
+        return self.status in CONVERGED
+
     @property
     def x_over_c(self) -> np.ndarray:
         return self.journal_x_m / self.clearance_m
@@ -50,6 +70,34 @@ class EquilibriumResult:
     @property
     def eccentricity_ratio(self) -> np.ndarray:
         return np.hypot(self.journal_x_m, self.journal_y_m) / self.clearance_m
+
+    def plot(self, ax=None):
+        """Journal centre of every bearing in units of its clearance, in the clearance circle."""
+        from matplotlib.lines import Line2D
+
+        from rotordyn.plot._style import COLUMN_IN, new_axes, paper_style
+
+        @paper_style
+        def draw(ax):
+            ax = new_axes(ax, width=COLUMN_IN, aspect=1.0)
+            th = np.linspace(0, 2 * np.pi, 361)
+            ax.plot(np.cos(th), np.sin(th), color="0.4", lw=0.8)
+            h = [Line2D([], [], color="0.4", lw=0.8, label="clearance circle (e = c)")]
+            for i, n in enumerate(self.bearing_names):
+                ln, = ax.plot([self.x_over_c[i]], [self.y_over_c[i]], "o", color=f"C{i}",
+                              label=f"{n}: e/c = {self.eccentricity_ratio[i]:.3f}")
+                h.append(ln)
+            ax.set_aspect("equal")
+            ax.set_xlim(-1.1, 1.1)
+            ax.set_ylim(-1.1, 1.1)
+            ax.set_xlabel("journal x / c (–), horizontal")
+            ax.set_ylabel("journal y / c (–), vertical up")
+            ax.set_title(f"equilibrium ({self.status}): {self.speed_hz:g} Hz, "
+                         f"p_c = {self.chamber_pressure_pa / 1e6:g} MPa")
+            ax.legend(handles=h, loc="lower left", fontsize=6)
+            return ax
+
+        return draw(ax)
 
     def to_frame(self) -> pd.DataFrame:
         """One row per bearing: inputs, journal position (m and /c), film, status."""
@@ -70,9 +118,7 @@ class EquilibriumResult:
             "iterations": np.full(nb, self.iterations, dtype=np.int64),
             "reynolds_solves": np.full(nb, self.reynolds_solves, dtype=np.int64),
             "residual": np.full(nb, self.residual),
-            "status": pd.Categorical([self.status] * nb,
-                                     categories=["ok", "no_equilibrium", "contact",
-                                                 "not_converged", "error"]),
+            "status": pd.Categorical([self.status] * nb, categories=list(STATUSES)),
             "message": [self.message] * nb,
         })
         for bi, s in self.sleeve_m.items():

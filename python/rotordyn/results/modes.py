@@ -8,6 +8,33 @@ import numpy as np
 import pandas as pd
 
 WHIRL_NAMES = {1: "forward", -1: "backward", 0: "planar"}
+WHIRL_PLANAR_TOL = 0.05
+"""A mode (or orbit) is planar when its whirl index (|F|² − |B|²)/(|F|² + |B|²) — F, B the
+forward and backward circular components of its (x, y) motion, summed over stations — is
+below this in magnitude (orbit minor/major axis ratio below about 2.5 %). The C++ modal
+solver (cpp/src/modal.cpp, ``whirl_direction``) applies the same rule; figures, tables and
+JSON take the label from there."""
+
+
+def whirl_index(x: np.ndarray, y: np.ndarray, axis=None) -> np.ndarray:
+    """(|F|² − |B|²)/(|F|² + |B|²) of complex amplitudes x, y (x = Re(X e^{iωt})): +1 circular
+    forward, −1 circular backward, 0 a straight line. Summed over ``axis`` (e.g. stations)."""
+    area = np.sum(np.imag(x * np.conj(y)), axis=axis)
+    scale = np.sum(np.abs(x) ** 2 + np.abs(y) ** 2, axis=axis)
+    return np.where(scale > 0, 2 * area / np.where(scale > 0, scale, 1.0), 0.0)
+
+
+def whirl_label(index) -> np.ndarray:
+    """"forward"/"backward"/"planar" from :func:`whirl_index` with :data:`WHIRL_PLANAR_TOL`."""
+    i = np.asarray(index, dtype=float)
+    return np.where(np.abs(i) < WHIRL_PLANAR_TOL, "planar",
+                    np.where(i > 0, "forward", "backward")).astype(object)
+
+
+def _freq_list(f, whirl=None, n: int = 6) -> str:
+    items = [f"{x:.4g}" + (f" {str(w)[0]}" if whirl is not None else "")
+             for x, w in zip(f[:n], whirl[:n] if whirl is not None else [None] * n)]
+    return ", ".join(items) + (", …" if len(f) > n else "")
 
 
 def damping_ratio(eigenvalues: np.ndarray) -> np.ndarray:
@@ -43,6 +70,12 @@ class ModesResult:
     status: str = "ok"
     message: str = ""
     extra: dict = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        return (f"<ModesResult {self.model} model at {self.speed_hz:g} Hz, "
+                f"{len(self.eigenvalues)} modes (Hz; f/b/p = forward/backward/planar): "
+                f"{_freq_list(self.frequencies_hz, self.whirl)}"
+                + (f"; status {self.status}" if self.status != "ok" else "") + ">")
 
     @property
     def frequencies_hz(self) -> np.ndarray:
@@ -97,22 +130,13 @@ class ModesResult:
         })
         return df
 
-    def plot(self, modes=None, ax=None, plane: str = "x"):
-        """Mode shapes along the shaft (real part of the x or y translation). Returns Axes."""
-        import matplotlib.pyplot as plt
+    def plot(self, modes=None, ax=None, plane: str = "x", *, system=None):
+        """Mode shapes. ``modes`` an int: the 3-D whirl orbits of that mode (0-based) along the
+        rotor (:func:`rotordyn.plot.mode_shape`; ``system`` adds the rotor outline, disks and
+        bearings); a list or None: the real part of the ``plane`` translation of those modes
+        along the shaft (:func:`rotordyn.plot.mode_shapes_2d`). Returns the Axes."""
+        from rotordyn.plot.shapes import mode_shape, mode_shapes_2d
 
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 4))
-        k = {"x": 0, "y": 1}[plane]
-        idx = range(len(self.eigenvalues)) if modes is None else modes
-        for j in idx:
-            s = self.shapes[:, k, j]
-            scale = np.max(np.abs(s)) or 1.0
-            ax.plot(self.node_positions_m, np.real(s) / scale,
-                    label=f"mode {j + 1}: {self.frequencies_hz[j]:.2f} Hz ({self.whirl[j]})")
-        ax.set_xlabel("axial position (m)")
-        ax.set_ylabel(f"{plane} (normalised)")
-        ax.set_title(f"{self.model} model, {self.speed_hz:g} Hz")
-        ax.legend(fontsize="small")
-        ax.grid(True, alpha=0.3)
-        return ax
+        if isinstance(modes, (int, np.integer)):
+            return mode_shape(self, int(modes), ax=ax, system=system)
+        return mode_shapes_2d(self, modes=modes, ax=ax, plane=plane)

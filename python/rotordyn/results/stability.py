@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from rotordyn.results.equilibrium import EquilibriumResult
+from rotordyn.results.equilibrium import CONVERGED, STATUSES, EquilibriumResult
 from rotordyn.results.modes import damping_ratio, log_dec
 
 
@@ -37,6 +37,11 @@ class LinearModel:
     @property
     def status(self) -> str:
         return self.equilibrium.status
+
+    def __repr__(self) -> str:
+        return (f"<LinearModel {self.speed_hz:g} Hz, {self.M.shape[0]} coordinates "
+                f"({', '.join(self.labels[:4])}{', …' if len(self.labels) > 4 else ''}), "
+                f"equilibrium {self.status}, K_H/D_H by {self.method}>")
 
     def state_matrix(self) -> np.ndarray:
         """A of ẋ = A x, x = [Δr; Δṙ], (2n, 2n)."""
@@ -80,6 +85,18 @@ class StabilityResult:
     def speed_hz(self) -> float:
         return self.linear.speed_hz
 
+    def __repr__(self) -> str:
+        e = self.linear.equilibrium
+        head = (f"<StabilityResult {'stable' if self.stable else 'UNSTABLE'} ({self.status}): "
+                f"{self.speed_hz:g} Hz, p_c = {e.chamber_pressure_pa / 1e6:g} MPa, "
+                f"{len(self.eigenvalues)} modes")
+        if len(self.eigenvalues):
+            j = int(np.argmax(self.eigenvalues.real))
+            head += (f"; least damped {self.frequencies_hz[j]:.4g} Hz {self.whirl[j]} "
+                     f"{self.kind[j]} mode, Re λ = {self.eigenvalues.real[j]:.3g} 1/s, "
+                     f"log dec {self.log_dec[j]:.3g}")
+        return head + ">"
+
     @property
     def frequencies_hz(self) -> np.ndarray:
         return self.eigenvalues.imag / (2 * np.pi)
@@ -101,10 +118,20 @@ class StabilityResult:
     def stable(self) -> bool:
         """No eigenvalue grows (paper §6.2): every Re λ < 1e-9 |λ|. Real parts within that
         round-off band of zero (an undamped rotor) count as marginally stable, not unstable."""
-        if self.status not in ("ok", "contact") or len(self.eigenvalues) == 0:
+        if self.status not in CONVERGED or len(self.eigenvalues) == 0:
             return False
         lam = self.eigenvalues
         return bool(np.all(lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)))
+
+    def plot(self, mode: int | None = None, ax=None, system=None):
+        """3-D whirl orbits of ``mode`` (0-based; default: the least damped rotor mode) along
+        the rotor (:func:`rotordyn.plot.mode_shape`)."""
+        from rotordyn.plot.shapes import mode_shape
+
+        if mode is None:
+            re = np.where(self.kind == "rotor", self.eigenvalues.real, -np.inf)
+            mode = int(np.argmax(re))
+        return mode_shape(self, mode, ax=ax, system=system)
 
     def to_frame(self) -> pd.DataFrame:
         """One row per mode: operating point, eigenvalue, frequency, damping, whirl, kind."""
@@ -123,8 +150,6 @@ class StabilityResult:
             "whirl": pd.Categorical(self.whirl, categories=["forward", "backward", "planar"]),
             "kind": pd.Categorical(self.kind, categories=["rotor", "sleeve"]),
             "stable": np.full(n, self.stable),
-            "status": pd.Categorical([self.status] * n,
-                                     categories=["ok", "no_equilibrium", "contact",
-                                                 "not_converged", "error"]),
+            "status": pd.Categorical([self.status] * n, categories=list(STATUSES)),
             "message": [self.message] * n,
         })

@@ -27,6 +27,15 @@ class StateSpaceResult:
     state_names: tuple
     linear: LinearModel
 
+    def __repr__(self) -> str:
+        def names(t):
+            return ", ".join(map(str, t[:4])) + (", …" if len(t) > 4 else "")
+
+        return (f"<StateSpaceResult {self.A.shape[0]} states, {self.B.shape[1]} inputs "
+                f"({names(self.input_names)}), {self.C.shape[0]} outputs "
+                f"({names(self.output_names)}); at {self.linear.speed_hz:g} Hz, "
+                f"max Re pole {np.max(self.poles.real):.3g} 1/s>")
+
     @property
     def poles(self) -> np.ndarray:
         return np.linalg.eigvals(self.A)
@@ -39,6 +48,30 @@ class StateSpaceResult:
         for i, fi in enumerate(f):
             out[i] = self.C @ np.linalg.solve(2j * np.pi * fi * np.eye(n) - self.A, self.B) + self.D
         return out
+
+    def plot(self, freqs_hz=None, ax=None):
+        """Magnitude of every input-to-output frequency response |G(i2πf)| against f (log-log),
+        in the outputs' unit per the inputs' unit (m/Pa, m/N, …)."""
+        from rotordyn.plot._style import COLUMN_IN, new_axes, paper_style
+
+        f = np.geomspace(1.0, 1000.0, 400) if freqs_hz is None else np.asarray(freqs_hz, float)
+
+        @paper_style
+        def draw(ax):
+            ax = new_axes(ax, width=COLUMN_IN * 1.3, aspect=0.7)
+            G = self.frequency_response(f)
+            for i, yn in enumerate(self.output_names):
+                for j, un in enumerate(self.input_names):
+                    uu = "Pa" if "pressure" in str(un) else "N"
+                    yu = "m/s" if "vel" in str(yn) or str(yn).startswith("v") else "m"
+                    ax.loglog(f, np.abs(G[:, i, j]), label=f"{un} → {yn} ({yu}/{uu})")
+            ax.set_xlabel("frequency (Hz)")
+            ax.set_ylabel("|G(i2πf)| (output unit / input unit)")
+            ax.set_title(f"linear model at {self.linear.speed_hz:g} Hz")
+            ax.legend(loc="best", fontsize=6)
+            return ax
+
+        return draw(ax)
 
     def to_control(self):
         """A python-control ``StateSpace`` (needs the optional ``control`` package)."""

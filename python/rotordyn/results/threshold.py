@@ -31,6 +31,12 @@ class ThresholdResult:
     status: str = "ok"
     message: str = ""
 
+    def __repr__(self) -> str:
+        return (f"<ThresholdResult {self.status}: {self.vary} = {self.value:.6g} (stable "
+                f"{self.stable_side or '?'}), whirl {self.whirl_frequency_hz:.4g} Hz "
+                f"(ratio {self.whirl_ratio:.3g}); {len(self.crossings)} crossings in "
+                f"{tuple(self.bounds)}, {self.evaluations} evaluations>")
+
     def to_frame(self) -> pd.DataFrame:
         row = dict(self.fixed)
         row.update({"vary": self.vary, self.vary: self.value,
@@ -39,6 +45,41 @@ class ThresholdResult:
                     "evaluations": self.evaluations, "status": self.status,
                     "message": self.message})
         return pd.DataFrame([row])
+
+    def plot(self, ax=None):
+        """The scan: largest real part (1/s) against the varied input, the threshold and
+        every crossing marked, the unstable side hatched."""
+        from matplotlib.lines import Line2D
+        from matplotlib.patches import Patch
+
+        from rotordyn.plot._style import COLUMN_IN, new_axes, paper_style
+        from rotordyn.plot.maps import AXIS_LABEL, AXIS_SCALE
+
+        @paper_style
+        def draw(ax):
+            ax = new_axes(ax, width=COLUMN_IN * 1.2)
+            k = AXIS_SCALE.get(self.vary, 1.0)
+            sc = self.scan[np.isfinite(self.scan["max_real_1_per_s"])]
+            x, y = sc[self.vary].to_numpy() * k, sc["max_real_1_per_s"].to_numpy()
+            ax.plot(x, y, "o-", color="tab:blue", ms=3)
+            ax.axhline(0, color="k", lw=0.6)
+            ax.fill_between(x, 0, np.maximum(y, 0), facecolor="none", edgecolor="tab:red",
+                            hatch="////", lw=0)
+            for c in self.crossings:
+                ax.axvline(c * k, color="k", ls="--", lw=0.8)
+            h = [Line2D([], [], color="tab:blue", marker="o", ms=3,
+                        label="largest real part of the eigenvalues"),
+                 Patch(facecolor="none", edgecolor="tab:red", hatch="////",
+                       label="unstable (Re λ > 0)")]
+            if self.crossings:
+                h.append(Line2D([], [], color="k", ls="--", lw=0.8,
+                                label=f"threshold {self.value * k:.4g}"))
+            ax.set_xlabel(AXIS_LABEL.get(self.vary, self.vary))
+            ax.set_ylabel("max Re λ (1/s)")
+            ax.legend(handles=h, loc="best")
+            return ax
+
+        return draw(ax)
 
 
 @dataclass(frozen=True)
@@ -49,22 +90,16 @@ class BoundaryResult:
     along: str
     table: pd.DataFrame  # columns: along, vary, whirl_frequency_hz, whirl_ratio, stable_side, status, message
 
+    def __repr__(self) -> str:
+        ok = int((self.table["status"] == "ok").sum()) if "status" in self.table else 0
+        return (f"<BoundaryResult threshold of {self.vary} along {self.along}: "
+                f"{len(self.table)} points, {ok} ok>")
+
     def to_frame(self) -> pd.DataFrame:
         return self.table.copy()
 
     def plot(self, ax=None):
-        """The boundary curve (stable side shaded lightly)."""
-        import matplotlib.pyplot as plt
+        """The boundary curve with the unstable side hatched (:func:`rotordyn.plot.boundary_curve`)."""
+        from rotordyn.plot.maps import boundary_curve
 
-        if ax is None:
-            _, ax = plt.subplots(figsize=(6, 4.5))
-        t = self.table[self.table["status"] == "ok"]
-        ax.plot(t[self.along], t[self.vary], "o-", label="stability boundary")
-        ax.set_xlabel(self.along)
-        ax.set_ylabel(self.vary)
-        ax.grid(True, alpha=0.3)
-        if len(t):
-            side = t["stable_side"].iloc[0]
-            ax.set_title(f"stable {side} the curve")
-        ax.legend()
-        return ax
+        return boundary_curve(self, ax=ax)

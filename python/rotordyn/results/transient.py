@@ -11,7 +11,11 @@ import pandas as pd
 @dataclass(frozen=True)
 class TransientResult:
     """t: (n_t,) s; r, v: (n_t, n) coordinates and velocities (m, m/s); journal_x_m,
-    journal_y_m: (n_t, n_bearings) relative to each housing; h_min_m: (n_t, n_bearings)."""
+    journal_y_m: (n_t, n_bearings) relative to each housing; h_min_m: (n_t, n_bearings);
+    speed_hz_t, angle_rad: (n_t,) speed and rotor angle; chamber_pressure_command_pa,
+    chamber_pressure_actual_pa: (n_t,) command (before saturation) and actuator output p_c;
+    controller_output_pa: (n_t,) feedback increment (0 without a controller);
+    actuator_states (n_t, order), controller_states (n_t, n_k)."""
 
     speed_hz: float
     chamber_pressure_pa: float
@@ -28,15 +32,38 @@ class TransientResult:
     stats: dict
     status: str = "ok"
     message: str = ""
+    speed_hz_t: np.ndarray | None = None
+    angle_rad: np.ndarray | None = None
+    chamber_pressure_command_pa: np.ndarray | None = None
+    chamber_pressure_actual_pa: np.ndarray | None = None
+    controller_output_pa: np.ndarray | None = None
+    actuator_states: np.ndarray | None = None
+    controller_states: np.ndarray | None = None
+
+    def __repr__(self) -> str:
+        amp = ""
+        if len(self.t) > 1 and self.journal_x_m.shape[1]:
+            amp = f", final amplitude {self.amplitude() * 1e6:.3g} µm ({self.bearing_names[0]})"
+        return (f"<TransientResult {self.status}: {self.t[-1] - self.t[0] if len(self.t) else 0:g}"
+                f" s, {len(self.t)} samples, {self.speed_hz:g} Hz, p_c = "
+                f"{self.chamber_pressure_pa / 1e6:g} MPa{amp}>")
 
     def to_frame(self) -> pd.DataFrame:
         """One row per (time, bearing)."""
         nt, nb = self.journal_x_m.shape
+
+        def col(a, default):
+            return np.repeat(a, nb) if a is not None else default
+
         return pd.DataFrame({
             "t_s": np.repeat(self.t, nb),
             "bearing": np.tile(np.asarray(self.bearing_names, dtype=object), nt),
-            "speed_hz": self.speed_hz,
-            "chamber_pressure_pa": self.chamber_pressure_pa,
+            "speed_hz": col(self.speed_hz_t, self.speed_hz),
+            "chamber_pressure_pa": col(self.chamber_pressure_actual_pa,
+                                       self.chamber_pressure_pa),
+            "chamber_pressure_command_pa": col(self.chamber_pressure_command_pa,
+                                               self.chamber_pressure_pa),
+            "controller_output_pa": col(self.controller_output_pa, 0.0),
             "journal_x_m": self.journal_x_m.ravel(),
             "journal_y_m": self.journal_y_m.ravel(),
             "h_min_m": self.h_min_m.ravel(),
@@ -64,18 +91,34 @@ class TransientResult:
         return np.fft.rfftfreq(n, dt[0]), amp
 
     def plot(self, bearing: int = 0, ax=None):
-        """Journal orbit in units of the clearance, with the clearance circle."""
-        import matplotlib.pyplot as plt
+        """Journal orbit in units of the clearance, with the clearance circle and the
+        equilibrium (start) point."""
+        from matplotlib.lines import Line2D
 
-        if ax is None:
-            _, ax = plt.subplots(figsize=(5, 5))
-        c = self.clearance_m[bearing]
-        th = np.linspace(0, 2 * np.pi, 200)
-        ax.plot(np.cos(th), np.sin(th), "k-", lw=0.8)
-        ax.plot(self.journal_x_m[:, bearing] / c, self.journal_y_m[:, bearing] / c, lw=0.8)
-        ax.set_aspect("equal")
-        ax.set_xlabel("x / c")
-        ax.set_ylabel("y / c")
-        ax.set_title(f"{self.bearing_names[bearing]}: {self.speed_hz:g} Hz, "
-                     f"p_c = {self.chamber_pressure_pa / 1e6:g} MPa")
-        return ax
+        from rotordyn.plot._style import COLUMN_IN, new_axes, paper_style
+
+        @paper_style
+        def draw(ax):
+            ax = new_axes(ax, width=COLUMN_IN, aspect=1.0)
+            c = self.clearance_m[bearing]
+            th = np.linspace(0, 2 * np.pi, 200)
+            ax.plot(np.cos(th), np.sin(th), "k-", lw=0.8)
+            x, y = self.journal_x_m[:, bearing] / c, self.journal_y_m[:, bearing] / c
+            ax.plot(x, y, lw=0.8, color="tab:blue")
+            ax.plot(x[:1], y[:1], "o", color="tab:green", ms=3)
+            ax.plot(x[-1:], y[-1:], "s", color="tab:red", ms=3)
+            ax.set_aspect("equal")
+            ax.set_xlabel("journal x / c (–), horizontal")
+            ax.set_ylabel("journal y / c (–), vertical up")
+            ax.set_title(f"{self.bearing_names[bearing]}: {self.speed_hz:g} Hz, "
+                         f"p_c = {self.chamber_pressure_pa / 1e6:g} MPa")
+            ax.legend(handles=[
+                Line2D([], [], color="k", lw=0.8, label="clearance circle (e = c)"),
+                Line2D([], [], color="tab:blue", lw=0.8,
+                       label=f"orbit, {self.t[-1] - self.t[0]:.3g} s"),
+                Line2D([], [], color="tab:green", marker="o", ls="", ms=3, label="start"),
+                Line2D([], [], color="tab:red", marker="s", ls="", ms=3, label="end")],
+                loc="lower left", fontsize=6)
+            return ax
+
+        return draw(ax)

@@ -32,6 +32,18 @@ class UnbalanceResult:
     unbalances: tuple
     operating_speed_hz: tuple | None = None
 
+    def __repr__(self) -> str:
+        a = self.major_m
+        pk = ""
+        if np.isfinite(a).any():
+            i, k = np.unravel_index(np.nanargmax(a), a.shape)
+            pk = (f"; largest orbit {a[i, k] * 1e6:.4g} µm at station {self.stations[k]}, "
+                  f"{self.speeds_hz[i]:.4g} Hz")
+        bad = int(np.sum(self.point_status != "ok"))
+        return (f"<UnbalanceResult {len(self.speeds_hz)} speeds {self.speeds_hz[0]:g}–"
+                f"{self.speeds_hz[-1]:g} Hz, stations {list(self.stations)}{pk}"
+                + (f"; {bad} speeds not ok" if bad else "") + ">")
+
     @property
     def forward_m(self) -> np.ndarray:
         return np.abs(self.x + 1j * self.y) / 2
@@ -52,8 +64,10 @@ class UnbalanceResult:
 
     def to_frame(self) -> pd.DataFrame:
         """One row per (speed, station)."""
+        from rotordyn.results.modes import whirl_index, whirl_label
+
         ns, nk = self.x.shape
-        fw = self.forward_m >= self.backward_m
+        whirl = whirl_label(whirl_index(self.x, self.y, axis=()))  # per speed and station
         return pd.DataFrame({
             "speed_hz": np.repeat(self.speeds_hz, nk),
             "station": np.tile(np.asarray(self.stations, dtype=np.int64), ns),
@@ -63,7 +77,7 @@ class UnbalanceResult:
             "phase_y_deg": np.degrees(np.angle(self.y)).ravel(),
             "major_m": self.major_m.ravel(),
             "minor_m": self.minor_m.ravel(),
-            "whirl": pd.Categorical(np.where(fw, "forward", "backward").ravel(),
+            "whirl": pd.Categorical(whirl.ravel(),
                                     categories=["forward", "backward", "planar"]),
             "status": pd.Categorical(np.repeat(self.point_status, nk)),
         })
@@ -109,22 +123,23 @@ class UnbalanceResult:
             rows.append(row)
         return pd.DataFrame(rows)
 
-    def plot(self, station: int | None = None, axes=None):
-        """Bode plot (amplitude and phase of x and y) at ``station``; returns (ax_amp, ax_phase)."""
-        import matplotlib.pyplot as plt
+    def plot(self, station: int | None = None, axes=None, kind: str = "bode", *,
+             speed_hz: float | None = None, system=None):
+        """``kind="bode"``: amplitude (µm) and phase against speed with AF, half-power bands,
+        operating range and margins (returns (ax_amp, ax_phase)); ``"polar"``: the response
+        vector over speed (returns Axes); ``"deflected"``: orbits at the output stations at
+        ``speed_hz`` (``system`` for axial positions)."""
+        from rotordyn.plot.response import bode, polar
+        from rotordyn.plot.shapes import deflected_shape
 
-        k = 0 if station is None else list(self.stations).index(station)
-        if axes is None:
-            _, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
-        ax1, ax2 = axes
-        for comp, z in (("x", self.x[:, k]), ("y", self.y[:, k])):
-            ax1.plot(self.speeds_hz, np.abs(z) * 1e6, label=comp)
-            ax2.plot(self.speeds_hz, np.degrees(np.angle(z)), label=comp)
-        ax1.set_ylabel("amplitude (µm)")
-        ax2.set_ylabel("phase (deg)")
-        ax2.set_xlabel("speed (Hz)")
-        ax1.set_title(f"unbalance response at station {self.stations[k]}")
-        for ax in axes:
-            ax.grid(True, alpha=0.3)
-            ax.legend()
-        return ax1, ax2
+        if kind == "bode":
+            return bode(self, station=station, axes=axes)
+        if kind == "polar":
+            return polar(self, station=station, ax=axes)
+        if kind == "deflected":
+            sp = self.speeds_hz[np.nanargmax(np.nanmax(self.major_m, axis=1))] \
+                if speed_hz is None else speed_hz
+            return deflected_shape(self, sp, ax=axes, system=system)
+        from rotordyn.errors import InputError
+
+        raise InputError(f"kind: expected 'bode', 'polar' or 'deflected', got {kind!r}")

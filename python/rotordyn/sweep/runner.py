@@ -1,33 +1,48 @@
-"""Run a sweep on dask: expand the grid, skip the chunks the manifest marks done, map the rest
-to workers (a LocalCluster of processes by default, or ``scheduler="tcp://..."``), write one
-parquet file per chunk (temporary name, then rename) and keep ``manifest.json`` current."""
+"""Run a sweep: expand the grid into fixed chunks, skip the chunks the directory already holds
+(verified), compute the rest on threads in this process (``threads=N``), on a LocalCluster
+of worker processes (default) or on a running dask cluster (``scheduler="tcp://..."``), and
+write each chunk as it arrives (:mod:`rotordyn.sweep.store`).
+
+Before the first task every dask worker is checked (same rotordyn version, build and core
+library, else an InputError naming the worker, within ``worker_timeout`` s). A chunk's rows do
+not depend on where or when it ran (see :mod:`rotordyn.sweep.work`), so 1, 2 or N workers,
+processes or threads, and any resume give the same dataset bit for bit.
+"""
 
 from __future__ import annotations
 
 import hashlib
 import json
+import math
 import os
+import sys
+import time
 from dataclasses import dataclass
 from pathlib import Path
-
-import pandas as pd
 
 import rotordyn
 from rotordyn.errors import InputError
 from rotordyn.sweep.spec import SweepSpec
-from rotordyn.sweep.work import STATUS, run_chunk
+from rotordyn.sweep.store import Store, read_manifest
+from rotordyn.sweep.work import Job, run_chunk
 
 UNITS = {
     "speed_hz": ("Hz", "spin speed"), "chamber_pressure_pa": ("Pa", "chamber pressure p_c"),
     "config_ay_m": ("m", "housing offset a_y of the active bearing"),
+    "config_ax_m": ("m", "housing offset a_x of the active bearing"),
     "journal_x_m": ("m", "journal x relative to the housing"),
-    "journal_y_m": ("m", "journal y relative to the housing"), "h_min_m": ("m", "minimum film"),
-    "freq_hz": ("Hz", "frequency"), "eig_real_1_per_s": ("1/s", "eigenvalue real part"),
-    "amplitude_x_m": ("m", "spectral amplitude of x"),
-    "amplitude_y_m": ("m", "spectral amplitude of y"),
+    "journal_y_m": ("m", "journal y relative to the housing"),
+    "h_min_m": ("m", "minimum film thickness"), "freq_hz": ("Hz", "damped natural frequency"),
+    "eig_real_1_per_s": ("1/s", "eigenvalue real part"),
+    "max_real_1_per_s": ("1/s", "largest eigenvalue real part of the point"),
+    "amplitude_x_m": ("m", "amplitude of x"), "amplitude_y_m": ("m", "amplitude of y"),
+    "value": ("axis units", "threshold value of the varied axis"),
+    "whirl_frequency_hz": ("Hz", "whirl frequency at the threshold"),
 }
-ID_COLS = ["sweep_id", "point_id", "chunk_id"]
-INPUT_COLS = ["speed_hz", "chamber_pressure_pa", "config_ay_m"]
+
+
+class SweepInterrupted(Exception):
+    """Ctrl-C: the chunks written so far are kept; running again resumes."""
 
 
 @dataclass(frozen=True)
@@ -36,159 +51,340 @@ class SweepResult:
 
     out: Path
     manifest: dict
+    done: int
+    n_chunks: int
+    counts: dict
 
     @property
     def complete(self) -> bool:
-        return len(self.manifest["chunks_done"]) == self.manifest["n_chunks"]
+        return self.done == self.n_chunks
 
-    def to_frame(self) -> pd.DataFrame:
-        """The whole dataset, one row per observation, sorted by point."""
-        return read_dataset(self.out)
+    def to_frame(self):
+        """The whole dataset (as :func:`rotordyn.sweep.open`)."""
+        from rotordyn.sweep.dataset import open_dataset
 
-
-def read_dataset(out) -> pd.DataFrame:
-    files = sorted(Path(out).glob("part-*.parquet"))
-    if not files:
-        raise InputError(f"sweep: no parquet chunks in {str(out)!r}")
-    df = pd.concat([pd.read_parquet(f) for f in files], ignore_index=True)
-    return df.sort_values(["point_id"], kind="stable", ignore_index=True)
+        return open_dataset(self.out).frame
 
 
-def _atomic_write_text(path: Path, text: str) -> None:
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(text, encoding="utf-8")
-    os.replace(tmp, path)
+def read_dataset(out):
+    """The dataset of a sweep directory as one DataFrame (rows in point order)."""
+    from rotordyn.sweep.dataset import open_dataset
+
+    return open_dataset(out).frame
 
 
-def _tidy(df: pd.DataFrame, sweep_id: str) -> pd.DataFrame:
-    df = df.copy()
-    df.insert(0, "sweep_id", sweep_id)
-    for c in ("point_id", "chunk_id", "mode", "iterations"):
-        if c in df:
-            df[c] = df[c].astype("int64")
-    outputs = [c for c in df.columns if c not in ID_COLS + INPUT_COLS + ["status", "message"]]
-    if "message" not in df:
-        df["message"] = ""
-    df["message"] = df["message"].fillna("").astype(str)
-    df["status"] = pd.Categorical(df["status"].fillna("error"), categories=STATUS)
-    for c in ("whirl", "kind", "bearing"):
-        if c in df:
-            df[c] = df[c].astype("category")
-    for c in outputs:
-        if df[c].dtype.kind in "fiu" and c not in ("mode", "iterations"):
-            df[c] = df[c].astype("float64")
-    return df[ID_COLS + INPUT_COLS + outputs + ["status", "message"]]
+# -- worker check -------------------------------------------------------------------------
+_PROBE_SRC = '''
+def probe():
+    try:
+        import hashlib, rotordyn
+        from rotordyn import _core
+        with open(_core.__file__, "rb") as fh:
+            core = hashlib.sha256(fh.read()).hexdigest()[:16]
+        return {"version": rotordyn.__version__, "build": _core.build_info(), "core": core}
+    except BaseException as exc:
+        return {"error": type(exc).__name__ + ": " + str(exc)}
+'''
 
 
-def _write_chunk(out: Path, df: pd.DataFrame, meta: dict, chunk_id: int) -> None:
-    import pyarrow as pa
-    import pyarrow.parquet as pq
-
-    table = pa.Table.from_pandas(df, preserve_index=False)
-    md = dict(table.schema.metadata or {})
-    md[b"rotordyn"] = json.dumps(meta).encode()
-    table = table.replace_schema_metadata(md)
-    final = out / f"part-{chunk_id:05d}.parquet"
-    tmp = out / f".part-{chunk_id:05d}.parquet.tmp"
-    pq.write_table(table, tmp)
-    os.replace(tmp, final)
+def _probe_function():
+    """A probe defined outside any importable module, so that cloudpickle ships it by value
+    and a worker without rotordyn can still run it (and say so)."""
+    ns: dict = {"__name__": "__rotordyn_probe__"}
+    exec(compile(_PROBE_SRC, "<rotordyn-probe>", "exec"), ns)
+    return ns["probe"]
 
 
-def _local_cluster(n: int):
-    """A LocalCluster of ``n`` single-threaded worker processes. Worker start-up can be slow
-    on a loaded machine: the start is retried once with generous timeouts, then falls back
-    to worker threads in this process (the C++ core releases the GIL) rather than failing
-    the sweep."""
-    import dask
-    from dask.distributed import LocalCluster
+def local_identity() -> dict:
+    from rotordyn import _core
 
-    last = None
-    for attempt in range(2):
-        timeout = "30s" if attempt == 0 else "120s"
+    with open(_core.__file__, "rb") as fh:
+        core = hashlib.sha256(fh.read()).hexdigest()[:16]
+    return {"version": rotordyn.__version__, "build": _core.build_info(), "core": core}
+
+
+def check_workers(client, timeout: float = 30.0) -> int:
+    """Every worker of ``client`` has this rotordyn (version, build, core library); returns
+    the number of workers. InputError naming the worker otherwise, within ``timeout`` s."""
+    t0 = time.monotonic()
+    try:
+        client.wait_for_workers(1, timeout=timeout)
+    except Exception:  # noqa: BLE001 - dask raises TimeoutError subclasses
+        raise InputError(f"scheduler: no dask worker joined within {timeout:g} s") from None
+    me = local_identity()
+    import concurrent.futures as cf
+
+    with cf.ThreadPoolExecutor(1) as ex:
+        fut = ex.submit(client.run, _probe_function(), on_error="return")
         try:
-            with dask.config.set({"distributed.comm.timeouts.connect": timeout,
-                                  "distributed.deploy.lost-worker-timeout": timeout}):
-                return LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                    dashboard_address=None)
-        except Exception as exc:  # noqa: BLE001 - start-up failure, retried
-            last = exc
-    import logging
+            info = fut.result(timeout=max(1.0, timeout - (time.monotonic() - t0)))
+        except cf.TimeoutError:
+            raise InputError(f"scheduler: the workers did not answer the rotordyn check "
+                             f"within {timeout:g} s") from None
+    for addr, got in sorted(info.items()):
+        if isinstance(got, BaseException):
+            got = {"error": f"{type(got).__name__}: {got}"}
+        if "error" in got:
+            raise InputError(f"worker {addr}: cannot run rotordyn ({got['error']}); install "
+                             f"rotordyn {me['version']} in the worker's environment")
+        for k in ("version", "build", "core"):
+            if got.get(k) != me[k]:
+                raise InputError(f"worker {addr}: rotordyn {k} differs from this driver's "
+                                 f"({got.get(k)!r} != {me[k]!r}); install the same build")
+    return len(info)
 
-    logging.getLogger("rotordyn.sweep").warning(
-        "dask worker processes failed to start (%s); using worker threads", last)
-    return LocalCluster(n_workers=n, threads_per_worker=1, processes=False,
-                        dashboard_address=None)
+
+# -- progress -----------------------------------------------------------------------------
+class Progress:
+    """One status line on a terminal: bar, chunks, points ok/failed/unstable, ETA."""
+
+    def __init__(self, n_chunks: int, n_done: int, counts: dict, stream=None, enabled=None):
+        self.stream = stream or sys.stderr
+        self.enabled = self.stream.isatty() if enabled is None else enabled
+        self.n, self.done0, self.done = n_chunks, n_done, n_done
+        self.counts = dict(counts)
+        self.t0 = time.monotonic()
+        self.last = 0.0
+        self.msg = ""
+
+    def status(self, msg: str) -> None:
+        self.msg = msg
+        self._draw(force=True)
+
+    def update(self, counts: dict) -> None:
+        self.done += 1
+        for k, val in counts.items():
+            self.counts[k] = self.counts.get(k, 0) + val
+        self._draw()
+
+    def _draw(self, force=False) -> None:
+        if not self.enabled:
+            return
+        now = time.monotonic()
+        if not force and now - self.last < 0.2 and self.done < self.n:
+            return
+        self.last = now
+        frac = self.done / self.n if self.n else 1.0
+        bar = "#" * int(24 * frac) + "." * (24 - int(24 * frac))
+        new = self.done - self.done0
+        eta = ""
+        if new > 0 and self.done < self.n:
+            s = (now - self.t0) / new * (self.n - self.done)
+            eta = f" ETA {int(s // 60)}m{int(s % 60):02d}s"
+        c = self.counts
+        line = (f"[{bar}] {self.done}/{self.n} chunks  ok {c.get('ok', 0)} failed "
+                f"{c.get('failed', 0)} unstable {c.get('unstable', 0)}{eta}")
+        if self.msg and self.done == self.done0:
+            line = f"{self.msg} ... {line}"
+        self.stream.write("\r" + line[:150].ljust(100))
+        self.stream.flush()
+
+    def close(self) -> None:
+        if self.enabled:
+            self.stream.write("\n")
+            self.stream.flush()
+
+
+# -- executors ----------------------------------------------------------------------------
+def _task(job: Job, chunk_id: int, lo: int, hi: int, pids=None):
+    t = run_chunk(job, chunk_id, lo, hi, pids)
+    return t, counts_of(t)
+
+
+def counts_of(table) -> dict:
+    """Points ok / failed / unstable in one chunk's table."""
+    import numpy as np
+    import pyarrow.compute as pc
+
+    pid = table.column("point_id").to_numpy()
+    status = table.column("status").cast("string").to_numpy(zero_copy_only=False)
+    bad = status != "ok"
+    bad &= status != "contact"
+    bad &= status != "no_crossing"
+    pts = np.unique(pid)
+    failed = np.unique(pid[bad])
+    unstable = 0
+    if "point_stable" in table.column_names:
+        ps = pc.fill_null(table.column("point_stable"), True).to_numpy(zero_copy_only=False)
+        unstable = len(np.unique(pid[(~ps) & ~bad]))
+    return {"ok": int(len(pts) - len(failed)), "failed": int(len(failed)),
+            "unstable": int(unstable)}
+
+
+class _Threads:
+    def __init__(self, n: int):
+        import concurrent.futures as cf
+
+        self.ex = cf.ThreadPoolExecutor(max_workers=n, thread_name_prefix="rotordyn-sweep")
+
+    def map(self, job, tasks):
+        import concurrent.futures as cf
+
+        futs = {self.ex.submit(_task, job, *t): t[0] for t in tasks}
+        try:
+            for f in cf.as_completed(futs):
+                yield futs[f], f.result()
+        finally:
+            for f in futs:
+                f.cancel()
+
+    def close(self):
+        self.ex.shutdown(wait=True, cancel_futures=True)
+
+
+class _Dask:
+    def __init__(self, scheduler, workers, timeout, progress):
+        import logging
+
+        from dask.distributed import Client
+
+        logging.getLogger("distributed").setLevel(logging.ERROR)
+        self.cluster = None
+        if scheduler:
+            progress.status(f"connecting to {scheduler}")
+            try:
+                self.client = Client(scheduler, timeout=f"{timeout}s")
+            except (OSError, TimeoutError) as exc:
+                raise InputError(f"scheduler: cannot connect to {scheduler!r} ({exc})") from None
+        else:
+            from dask.distributed import LocalCluster
+
+            progress.status(f"starting {workers} worker processes")
+            os.environ.setdefault("OMP_NUM_THREADS", "1")
+            self.cluster = LocalCluster(n_workers=workers, threads_per_worker=1,
+                                        processes=True, dashboard_address=None)
+            self.client = Client(self.cluster)
+        try:
+            progress.status("checking workers")
+            check_workers(self.client, timeout)
+        except BaseException:
+            self.close()
+            raise
+
+    def map(self, job, tasks):
+        from dask.distributed import as_completed
+
+        jf = self.client.scatter(job, broadcast=True, hash=False)
+        futs = {self.client.submit(_task, jf, *t, key=f"rotordyn-chunk-{job.key}-{t[0]}",
+                                   pure=False): t[0] for t in tasks}
+        try:
+            for f in as_completed(futs):
+                yield futs[f], f.result()
+        finally:
+            self.client.cancel(list(futs))
+
+    def close(self):
+        import contextlib
+
+        with contextlib.suppress(Exception):
+            self.client.close(timeout=5)
+        if self.cluster is not None:
+            with contextlib.suppress(Exception):
+                self.cluster.close(timeout=5)
+
+
+# -- the sweep ----------------------------------------------------------------------------
+def _header(spec: SweepSpec, model_toml: str) -> dict:
+    bounds = spec.chunk_bounds()
+    return {"sweep_id": spec.name, "analysis": spec.analysis, "spec_hash": spec.hash(),
+            "model_hash": hashlib.sha256(model_toml.encode()).hexdigest()[:16],
+            "rotordyn": rotordyn.__version__, "build_info": rotordyn.build_info(),
+            "axes": spec.ordered_axes, "options": spec.options, "n_points": spec.n_points,
+            "n_chunks": len(bounds), "chunk_size": spec.chunk_size,
+            "group": group_size(len(bounds), spec.max_files), "spec": spec.source,
+            "model": model_toml,
+            "units": {k: {"units": u, "long_name": n} for k, (u, n) in UNITS.items()}}
+
+
+def group_size(n_chunks: int, max_files: int = 128) -> int:
+    """Chunks per compacted file: at most ``max_files`` files whatever the size."""
+    return max(1, math.ceil(n_chunks / max_files))
 
 
 def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | None = None,
-              resume: bool = True, progress=None) -> SweepResult:
-    """Run (or resume) the sweep described by ``spec_path`` into directory ``out``."""
+              threads: int | None = None, resume: bool = True, progress=None,
+              worker_timeout: float = 30.0) -> SweepResult:
+    """Run (or resume) the sweep of ``spec_path`` into directory ``out``.
+
+    threads : compute on this many threads in this process (no dask); else ``workers`` dask
+        worker processes on this machine, or the cluster at ``scheduler``.
+    progress : True for a progress line on stderr, None for one only on a terminal, False
+        for none.
+    KeyboardInterrupt becomes :class:`SweepInterrupted` after the directory is left
+    consistent (running again resumes).
+    """
     spec = SweepSpec.from_toml(spec_path)
-    system = rotordyn.models.load(spec.model)
+    if threads is not None:
+        from rotordyn import _validate as v
+
+        v.integer("threads", threads, lo=1, hi=1024)
+    if workers is not None:
+        from rotordyn import _validate as v
+
+        v.integer("workers", workers, lo=1, hi=1024)
+    system = spec.load_model()
     model_toml = system.to_toml()
-    model_hash = hashlib.sha256(model_toml.encode()).hexdigest()[:16]
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    chunks = spec.chunks()
-    mpath = out / "manifest.json"
-    done: set[int] = set()
-    if mpath.exists() and resume:
-        old = json.loads(mpath.read_text())
-        if old.get("spec_hash") != spec.hash() or old.get("model_hash") != model_hash:
-            raise InputError(f"out: {str(out)!r} holds a different sweep (spec or model "
-                             "changed); use another directory or resume=False")
-        done = {c for c in old.get("chunks_done", [])
-                if (out / f"part-{c:05d}.parquet").exists()}
-    elif not resume:
-        for f in out.glob("part-*.parquet"):
-            f.unlink()
-    manifest = {
-        "sweep_id": spec.name, "analysis": spec.analysis, "spec_hash": spec.hash(),
-        "model_hash": model_hash, "rotordyn": rotordyn.__version__,
-        "build_info": rotordyn.build_info(), "axes": spec.axes, "options": spec.options,
-        "n_points": sum(len(c) for c in chunks), "n_chunks": len(chunks),
-        "chunks_done": sorted(done), "chunks_failed": {}, "spec": spec.source,
-        "model": model_toml,
-    }
-    _atomic_write_text(mpath, json.dumps(manifest, indent=2))
-    meta = {"rotordyn": rotordyn.__version__, "build_info": rotordyn.build_info(),
-            "model_hash": model_hash, "spec_hash": spec.hash(),
-            "units": {k: {"units": u, "long_name": n} for k, (u, n) in UNITS.items()}}
-    todo = [(i, c) for i, c in enumerate(chunks) if i not in done]
-    if not todo:
-        return SweepResult(out, manifest)
+    header = _header(spec, model_toml)
+    n_chunks = header["n_chunks"]
+    if spec.analysis == "boundary":
+        from rotordyn.sweep.boundary import run_boundary
 
-    from dask.distributed import Client, as_completed
-
-    cluster = None
-    if scheduler:
-        client = Client(scheduler)
-    else:
-        n = workers or min(len(todo), os.cpu_count() or 1)
-        # One thread per worker process; the C++ core's own OpenMP is kept to one thread.
-        os.environ.setdefault("OMP_NUM_THREADS", "1")
-        cluster = _local_cluster(n)
-        client = Client(cluster)
+        return run_boundary(spec, header, model_toml, out, scheduler=scheduler,
+                            workers=workers, threads=threads, resume=resume,
+                            progress=progress, worker_timeout=worker_timeout)
+    store = Store(out, header, resume=resume, group=header["group"])
     try:
-        futs = {client.submit(run_chunk, model_toml, spec.analysis, spec.options, cid, pts,
-                              key=f"{spec.name}-{spec.hash()}-chunk-{cid}", pure=False): cid
-                for cid, pts in todo}
-        for fut in as_completed(futs):
-            cid = futs[fut]
+        bounds = spec.chunk_bounds()
+        store.compact_complete(n_chunks)
+        done = store.done_chunks()
+        prev = store.chunk_entries()
+        counts0 = {k: sum(c[k] for c in prev.values()) for k in ("ok", "failed", "unstable")}
+        todo = [(cid, lo, hi) for cid, (lo, hi) in enumerate(bounds) if cid not in done]
+        bar = Progress(n_chunks, len(done), counts0,
+                       enabled=None if progress is None else bool(progress))
+        if todo:
+            job = Job(spec.name, model_toml, spec.analysis, spec.options, spec.ordered_axes)
+            job.key = header["spec_hash"]
+            job.meta = {"sweep_id": spec.name, "spec_hash": header["spec_hash"],
+                        "model_hash": header["model_hash"], "rotordyn": rotordyn.__version__,
+                        "units": header["units"]}
+            ex = None
             try:
-                df = fut.result()
-            except Exception as exc:  # noqa: BLE001 - infrastructure failure of one chunk
-                manifest["chunks_failed"][str(cid)] = f"{type(exc).__name__}: {exc}"
-                _atomic_write_text(mpath, json.dumps(manifest, indent=2))
-                continue
-            _write_chunk(out, _tidy(df, spec.name), meta, cid)
-            manifest["chunks_done"] = sorted(set(manifest["chunks_done"]) | {cid})
-            manifest["chunks_failed"].pop(str(cid), None)
-            _atomic_write_text(mpath, json.dumps(manifest, indent=2))
-            if progress:
-                progress(len(manifest["chunks_done"]), manifest["n_chunks"])
+                if threads is not None:
+                    ex = _Threads(threads)
+                else:
+                    n = workers or min(len(todo), os.cpu_count() or 1)
+                    ex = _Dask(scheduler, n, worker_timeout, bar)
+                for cid, (table, cnt) in ex.map(job, todo):
+                    store.add(cid, table, cnt, n_chunks)
+                    bar.update(cnt)
+            except KeyboardInterrupt:
+                bar.close()
+                raise SweepInterrupted(
+                    f"interrupted: {len(store.done_chunks())}/{n_chunks} chunks saved in "
+                    f"{str(out)!r}; run the same command again to resume") from None
+            finally:
+                if ex is not None:
+                    ex.close()
+        bar.close()
+        final = store.chunk_entries()
+        counts = {k: sum(c[k] for c in final.values()) for k in ("ok", "failed", "unstable")}
+        return SweepResult(Path(out), {"format": "", **header}, len(final), n_chunks, counts)
     finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
-    return SweepResult(out, manifest)
+        store.close()
+
+
+def result_of(out) -> SweepResult:
+    """The state of an existing sweep directory."""
+    m, entries = read_manifest(out)
+    done = {}
+    for e in entries:
+        for c, cnt in zip(range(e["lo"], e["hi"] + 1), e["counts"]):
+            done[c] = cnt
+    counts = {k: sum(c[k] for c in done.values()) for k in ("ok", "failed", "unstable")}
+    return SweepResult(Path(out), m, len(done), m["n_chunks"], counts)
+
+
+def manifest_json(res: SweepResult) -> str:
+    return json.dumps({"sweep_id": res.manifest.get("sweep_id"), "out": str(res.out),
+                       "chunks_done": res.done, "n_chunks": res.n_chunks, **res.counts})

@@ -1,46 +1,144 @@
-"""Sweep specifications (``sweeps/<name>.toml``): model, grid axes with units, analysis,
-options and chunk size. The grid expands deterministically, so ``point_id`` is stable across
-reruns and an interrupted sweep resumes where it stopped."""
+"""Sweep specifications (``sweeps/<name>.toml``): model, grid axes, analysis, options, chunk
+size. Everything is checked when the spec loads (axes against the model, options against the
+analysis), so a bad spec is one InputError naming the field before any worker starts.
+
+Axes are the operating variables (``speed_hz``, ``chamber_pressure_pa``, ``config_ay_m``,
+``config_ax_m``), any numeric model field by dotted path (:mod:`rotordyn.sweep.paths`) or an
+analysis option by ``options.<name>[.<index>...]`` (e.g. ``options.unbalances.0.1``, the first
+unbalance's magnitude). An axis is a number, a list, ``{start, stop, num}`` (values exact:
+``start + i*step`` computed in decimal, so ``-2.5e-3 + 1*0.25e-3`` is ``-0.00225``) or
+``{start, stop, num, scale = "log"}``. The grid expands in a fixed order (first axis
+outermost), so ``point_id`` is stable across reruns.
+"""
 
 from __future__ import annotations
 
 import hashlib
 import itertools
 import json
+import math
 import tomllib
 from dataclasses import dataclass, field
+from decimal import Decimal, localcontext
 from pathlib import Path
-
-import numpy as np
 
 from rotordyn.errors import InputError
 from rotordyn import _validate as v
 
 SCHEMA = "rotordyn/sweep/1"
-AXES = ("speed_hz", "chamber_pressure_pa", "config_ay_m")
-ANALYSES = ("equilibrium", "stability", "waterfall")
+OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
+DEFAULTS = {"speed_hz": 50.0, "chamber_pressure_pa": 0.0}
+ANALYSES = ("equilibrium", "stability", "campbell", "threshold", "boundary", "unbalance",
+            "waterfall")
+MAX_POINTS = 10_000_000
+
+
+def _opt_int(lo, hi):
+    return lambda f, x: v.integer(f, x, lo=lo, hi=hi)
+
+
+def _opt_choice(*allowed):
+    return lambda f, x: v.choice(f, x, allowed)
+
+
+def _opt_range(lo, hi, lo_open=True):
+    return lambda f, x: v.in_range(f, x, lo, hi, lo_open=lo_open)
+
+
+def _opt_bool(f, x):
+    if not isinstance(x, bool):
+        raise InputError(f"{f}: expected true or false, got {x!r}")
+    return x
+
+
+def _opt_axis(f, x):
+    if not isinstance(x, str):
+        raise InputError(f"{f}: expected an axis name, got {x!r}")
+    return x
+
+
+def _opt_unbalances(f, x):
+    if not isinstance(x, list) or not x:
+        raise InputError(f"{f}: expected a list of [station, mass_kg_m, phase_deg], got {x!r}")
+    out = []
+    for i, u in enumerate(x):
+        if not isinstance(u, list) or len(u) != 3:
+            raise InputError(f"{f}[{i}]: expected [station, mass_kg_m, phase_deg], got {u!r}")
+        out.append([v.integer(f"{f}[{i}].station", u[0], lo=0),
+                    v.finite(f"{f}[{i}].mass_kg_m", u[1]), v.finite(f"{f}[{i}].phase_deg", u[2])])
+    return out
+
+
+def _opt_stations(f, x):
+    if not isinstance(x, list) or not x:
+        raise InputError(f"{f}: expected a non-empty list of station indices, got {x!r}")
+    return [v.integer(f"{f}[{i}]", s, lo=0) for i, s in enumerate(x)]
+
+
+def _opt_operating(f, x):
+    if not isinstance(x, list) or len(x) != 2:
+        raise InputError(f"{f}: expected [min, max] in Hz, got {x!r}")
+    lo, hi = v.positive(f"{f}[0]", x[0]), v.positive(f"{f}[1]", x[1])
+    if hi < lo:
+        raise InputError(f"{f}: expected min <= max, got {x!r}")
+    return [lo, hi]
+
+
+_EQ = {"method": _opt_choice("newton", "successive"), "tol": _opt_range(0.0, 1e-2),
+       "max_iter": _opt_int(1, 10000)}
+_LIN = {"linearization": _opt_choice("perturbation", "finite_difference")}
 OPTIONS = {
-    "equilibrium": {"method"},
-    "stability": {"n_modes"},
-    "waterfall": {"unbalances", "revolutions", "samples_per_revolution", "max_harmonic",
-                  "rtol"},
+    "equilibrium": dict(_EQ),
+    "stability": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "track": _opt_bool},
+    "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000)},
+    "threshold": {"vary": _opt_axis, "exclude_sleeve_modes": _opt_bool,
+                  "xtol": _opt_range(0.0, math.inf)},
+    "boundary": {"x": _opt_axis, "y": _opt_axis, "resolution": _opt_int(3, 100001),
+                 "exclude_sleeve_modes": _opt_bool},
+    "unbalance": {**_LIN, "unbalances": _opt_unbalances, "stations": _opt_stations,
+                  "operating_speed_hz": _opt_operating},
+    "waterfall": {"unbalances": _opt_unbalances, "revolutions": _opt_int(4, 10000),
+                  "samples_per_revolution": _opt_int(8, 4096),
+                  "max_harmonic": _opt_range(0.0, 100.0), "rtol": _opt_range(0.0, 1e-2)},
 }
+REQUIRED = {"threshold": ("vary",), "boundary": ("x", "y", "resolution"),
+            "unbalance": ("unbalances",), "waterfall": ("unbalances",)}
+
+
+def _dec(x) -> Decimal:
+    return Decimal(repr(float(x)))
 
 
 def _axis(name: str, val) -> list[float]:
+    """The values of one axis (exact decimal arithmetic for ranges)."""
     where = f"grid.{name}"
     if isinstance(val, dict):
-        extra = set(val) - {"start", "stop", "num"}
+        extra = set(val) - {"start", "stop", "num", "scale"}
         if extra:
-            raise InputError(f"{where}.{sorted(extra)[0]}: unknown key (allowed: start, stop, num)")
+            raise InputError(f"{where}.{sorted(extra)[0]}: unknown key "
+                             "(allowed: start, stop, num, scale)")
         try:
             start, stop, num = val["start"], val["stop"], val["num"]
         except KeyError as exc:
             raise InputError(f"{where}: missing {exc.args[0]!r} (start, stop, num)") from None
-        v.finite(f"{where}.start", start)
-        v.finite(f"{where}.stop", stop)
-        v.integer(f"{where}.num", num, lo=1, hi=1_000_000)
-        return [float(x) for x in np.linspace(start, stop, num)]
+        start = v.finite(f"{where}.start", start)
+        stop = v.finite(f"{where}.stop", stop)
+        num = v.integer(f"{where}.num", num, lo=1, hi=MAX_POINTS)
+        scale = v.choice(f"{where}.scale", val.get("scale", "linear"), ("linear", "log"))
+        if num == 1:
+            return [start]
+        if scale == "log":
+            if start <= 0 or stop <= 0:
+                raise InputError(f"{where}: a log-spaced axis needs start > 0 and stop > 0")
+            a, b = math.log10(start), math.log10(stop)
+            vals = [float(f"{10 ** (a + (b - a) * i / (num - 1)):.15g}") for i in range(num)]
+            vals[0], vals[-1] = start, stop
+            return vals
+        with localcontext() as ctx:
+            ctx.prec = 40
+            s0, s1 = _dec(start), _dec(stop)
+            step = (s1 - s0) / (num - 1)
+            return [float(s0 + i * step) for i in range(num)]
     if isinstance(val, (int, float)) and not isinstance(val, bool):
         return [v.finite(where, val)]
     if isinstance(val, list) and val:
@@ -48,9 +146,23 @@ def _axis(name: str, val) -> list[float]:
     raise InputError(f"{where}: expected a number, a non-empty list or {{start, stop, num}}")
 
 
+def _flatten(grid: dict, prefix: str = "") -> dict:
+    """``[grid]`` with TOML sub-tables (``bearings.active.clearance_m = ...`` unquoted) turned
+    back into dotted names; a table of only start/stop/num/scale keys is a range."""
+    out = {}
+    for k, val in grid.items():
+        name = f"{prefix}{k}"
+        if isinstance(val, dict) and val and not set(val) <= {"start", "stop", "num", "scale"} \
+                and not ({"start", "stop", "num"} & set(val)):
+            out.update(_flatten(val, name + "."))
+        else:
+            out[name] = val
+    return out
+
+
 @dataclass(frozen=True)
 class SweepSpec:
-    """A parsed sweep: ``axes`` maps each grid axis to its values (outermost first)."""
+    """A parsed sweep: ``axes`` maps each axis name to its values (first axis outermost)."""
 
     name: str
     model: str
@@ -59,17 +171,23 @@ class SweepSpec:
     chunk_size: int = 20
     options: dict = field(default_factory=dict)
     source: str = ""
+    max_files: int = 128  # chunks are compacted so the dataset has at most this many files
 
+    # -- loading -----------------------------------------------------------------------
     @classmethod
-    def from_toml(cls, path) -> "SweepSpec":
+    def from_toml(cls, path, *, check_model: bool = True) -> "SweepSpec":
         p = Path(path)
         if not p.is_file():
             raise InputError(f"spec: no such file {str(p)!r}")
         try:
-            doc = tomllib.loads(p.read_text(encoding="utf-8"))
+            text = p.read_text(encoding="utf-8")
+            doc = tomllib.loads(text)
+        except UnicodeDecodeError:
+            raise InputError(f"spec: {p} is not UTF-8 text") from None
         except tomllib.TOMLDecodeError as exc:
             raise InputError(f"spec: {p} is not valid TOML: {exc}") from None
-        allowed = {"schema", "name", "model", "analysis", "chunk_size", "grid", "options"}
+        allowed = {"schema", "name", "model", "analysis", "chunk_size", "max_files", "grid",
+                   "options"}
         for k in doc:
             if k not in allowed:
                 raise InputError(f"spec.{k}: unknown key (allowed: {', '.join(sorted(allowed))})")
@@ -79,38 +197,182 @@ class SweepSpec:
         grid = doc.get("grid")
         if not isinstance(grid, dict) or not grid:
             raise InputError("grid: expected a [grid] table with at least one axis")
-        for k in grid:
-            if k not in AXES:
-                raise InputError(f"grid.{k}: unknown axis (allowed: {', '.join(AXES)})")
-        axes = {k: _axis(k, grid[k]) for k in grid}
+        axes = {k: _axis(k, val) for k, val in _flatten(grid).items()}
         opts = doc.get("options", {})
-        for k in opts:
+        if not isinstance(opts, dict):
+            raise InputError("options: expected a table")
+        checked = {}
+        for k, val in opts.items():
             if k not in OPTIONS[analysis]:
                 raise InputError(f"options.{k}: unknown option for analysis {analysis!r} "
                                  f"(allowed: {', '.join(sorted(OPTIONS[analysis]))})")
+            checked[k] = OPTIONS[analysis][k](f"options.{k}", val)
+        for k in REQUIRED.get(analysis, ()):
+            if k not in checked:
+                raise InputError(f"options.{k}: required for analysis {analysis!r}")
         model = doc.get("model")
         if not isinstance(model, str) or not model:
             raise InputError("model: expected a built-in model name or a TOML path")
         if model.endswith(".toml") and not Path(model).is_absolute():
             model = str((p.parent / model).resolve())
         chunk = v.integer("chunk_size", doc.get("chunk_size", 20), lo=1, hi=100000)
-        return cls(name=str(doc.get("name", p.stem)), model=model, analysis=analysis,
-                   axes=axes, chunk_size=chunk, options=dict(opts),
-                   source=p.read_text(encoding="utf-8"))
+        max_files = v.integer("max_files", doc.get("max_files", 128), lo=1, hi=100000)
+        name = doc.get("name", p.stem)
+        if not isinstance(name, str) or not name or "/" in name:
+            raise InputError(f"name: expected a non-empty string without '/', got {name!r}")
+        spec = cls(name=name, model=model, analysis=analysis, axes=axes, chunk_size=chunk,
+                   options=checked, source=text, max_files=max_files)
+        spec._check_shape()
+        if check_model:
+            spec.check_against(spec.load_model())
+        return spec
 
-    def points(self) -> list[dict]:
-        """Every grid point as a dict of axis values, in a fixed order (outermost first);
-        axes not in the grid take their defaults at run time."""
-        names = list(self.axes)
-        return [dict(zip(names, vals)) for vals in itertools.product(*self.axes.values())]
+    def load_model(self):
+        import rotordyn
 
-    def chunks(self) -> list[list[tuple[int, dict]]]:
-        """Contiguous chunks of (point_id, point)."""
-        pts = list(enumerate(self.points()))
-        return [pts[i:i + self.chunk_size] for i in range(0, len(pts), self.chunk_size)]
+        return rotordyn.models.load(self.model)
+
+    def _check_shape(self) -> None:
+        n = math.prod(len(x) for x in self.axes.values())
+        if n > MAX_POINTS:
+            raise InputError(f"grid: {n} points, more than the limit of {MAX_POINTS}")
+        a = self.analysis
+        if a == "threshold":
+            ax = self.options["vary"]
+            if ax not in self.axes or len(self.axes[ax]) < 2:
+                raise InputError(f"options.vary: {ax!r} must be a grid axis with >= 2 values "
+                                 "(its range is scanned)")
+            if ax not in OPERATING[:3]:
+                raise InputError(f"options.vary: expected one of speed_hz, "
+                                 f"chamber_pressure_pa, config_ay_m, got {ax!r}")
+        if a == "boundary":
+            x, y = self.options["x"], self.options["y"]
+            for k, ax in (("x", x), ("y", y)):
+                if ax not in self.axes or len(self.axes[ax]) < 2:
+                    raise InputError(f"options.{k}: {ax!r} must be a grid axis with >= 2 "
+                                     "values (the coarse grid)")
+            if x == y:
+                raise InputError("options.y: must differ from options.x")
+            from rotordyn.sweep.boundary import fine_axes
+
+            fine_axes(self)
+            res = self.options["resolution"]
+            for k, ax in (("x", x), ("y", y)):
+                n0 = len(self.axes[ax])
+                if (res - 1) % (n0 - 1):
+                    raise InputError(
+                        f"options.resolution: {res} - 1 must be a multiple of the coarse "
+                        f"grid's {n0} - 1 intervals of grid.{ax} (the refined grid nests "
+                        "the coarse one)")
+        if a in ("campbell", "unbalance") and len(self.axes.get("speed_hz", ())) < 2:
+            raise InputError(f"grid.speed_hz: analysis {a!r} needs a speed axis with >= 2 "
+                             "values")
+        if a in ("campbell", "unbalance"):
+            sp = self.axes["speed_hz"]
+            if any(b <= a_ for a_, b in zip(sp, sp[1:])) or sp[0] <= 0:
+                raise InputError("grid.speed_hz: expected positive, strictly increasing "
+                                 "speeds")
+        if "chamber_pressure_pa" in self.axes:
+            for i, p in enumerate(self.axes["chamber_pressure_pa"]):
+                if p < 0 and a in ("threshold", "boundary"):
+                    raise InputError(f"grid.chamber_pressure_pa[{i}]: expected >= 0, got {p}")
+
+    def check_against(self, system) -> None:
+        """Every axis exists (model fields by dotted path) and every value builds a valid
+        model; option stations exist. InputError names the axis."""
+        from rotordyn.sweep.paths import set_field
+
+        for name, vals in self.axes.items():
+            if name in OPERATING:
+                if name in ("config_ay_m", "config_ax_m"):
+                    from rotordyn.model.bearings import ActiveJournalBearing
+
+                    act = [b for b in system.bearings if isinstance(b, ActiveJournalBearing)]
+                    if len(act) != 1 and len(system.bearings) != 1:
+                        raise InputError(f"grid.{name}: addresses the active bearing, but the "
+                                         f"model has {len(act)}; use bearings.<name>.{name}")
+                continue
+            if name.startswith("options."):
+                self._option_axis(name)
+                continue
+            if "." not in name and name not in ("gravity_m_s2",):
+                raise InputError(f"grid.{name}: unknown axis (allowed: "
+                                 f"{', '.join(OPERATING)}, a dotted model field such as "
+                                 "bearings.active.clearance_m, or options.<name>)")
+            for val in vals:
+                set_field(system, name, val)
+        n_st = system.rotor.n_stations
+        for key in ("unbalances", "stations"):
+            for i, u in enumerate(self.options.get(key, ())):
+                st = u[0] if key == "unbalances" else u
+                if st >= n_st:
+                    raise InputError(f"options.{key}[{i}]: station {st} out of range "
+                                     f"(0..{n_st - 1})")
+
+    def _option_axis(self, name: str) -> None:
+        parts = name.split(".")[1:]
+        if not parts or parts[0] not in self.options:
+            raise InputError(f"grid.{name}: no option {parts[0] if parts else ''!r} in "
+                             f"[options] to sweep")
+        cur = self.options[parts[0]]
+        for p in parts[1:]:
+            if not isinstance(cur, list) or not p.isdigit() or int(p) >= len(cur):
+                raise InputError(f"grid.{name}: {p!r} does not index options.{parts[0]}")
+            cur = cur[int(p)]
+        if isinstance(cur, (list, bool)) or not isinstance(cur, (int, float)):
+            raise InputError(f"grid.{name}: not a number in options")
+
+    # -- expansion ---------------------------------------------------------------------
+    @property
+    def line_axis(self) -> str | None:
+        """The axis a task keeps whole (continuation and tracking along it): speed for
+        campbell/unbalance/tracked stability, the varied axis for threshold."""
+        if self.analysis == "threshold":
+            return self.options["vary"]
+        if self.analysis in ("campbell", "unbalance", "waterfall"):
+            return "speed_hz"
+        if self.analysis == "stability" and self.options.get("track", True) \
+                and len(self.axes.get("speed_hz", ())) > 1:
+            return "speed_hz"
+        return None
+
+    @property
+    def ordered_axes(self) -> dict:
+        """Axes in expansion order: as written, with the line axis moved innermost."""
+        la = self.line_axis
+        if la is None or la not in self.axes:
+            return dict(self.axes)
+        d = {k: val for k, val in self.axes.items() if k != la}
+        d[la] = self.axes[la]
+        return d
+
+    @property
+    def n_points(self) -> int:
+        return math.prod(len(x) for x in self.axes.values())
+
+    def points(self):
+        """Every grid point as (index tuple, value tuple) in the fixed expansion order."""
+        ax = self.ordered_axes
+        idx = itertools.product(*(range(len(x)) for x in ax.values()))
+        for ii in idx:
+            yield ii, tuple(vals[i] for vals, i in zip(ax.values(), ii))
+
+    def chunk_bounds(self) -> list[tuple[int, int]]:
+        """Contiguous point-id ranges [lo, hi) of each chunk; with a line axis, chunks hold
+        whole lines (the chunk size is rounded up to a multiple of the line length)."""
+        n = self.n_points
+        if self.analysis == "threshold":
+            # one task unit = one line; chunk_size counts lines
+            line = len(self.axes[self.options["vary"]])
+            size = self.chunk_size * line
+        else:
+            line = len(self.axes[self.line_axis]) if self.line_axis else 1
+            size = max(line, -(-self.chunk_size // line) * line)
+        return [(lo, min(lo + size, n)) for lo in range(0, n, size)]
 
     def hash(self) -> str:
         payload = json.dumps({"model": self.model, "analysis": self.analysis,
                               "axes": self.axes, "options": self.options,
-                              "chunk_size": self.chunk_size}, sort_keys=True)
+                              "chunk_size": self.chunk_size, "max_files": self.max_files},
+                             sort_keys=True)
         return hashlib.sha256(payload.encode()).hexdigest()[:16]

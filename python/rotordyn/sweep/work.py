@@ -1,90 +1,464 @@
-"""What one chunk of a sweep does (runs inside a dask worker process): one tidy DataFrame
-per chunk; a failed point becomes rows with ``status``/``message``, never a lost chunk."""
+"""What one chunk of a sweep does (inside a worker): the points [lo, hi) of the grid, computed
+in order from a fresh solver state, into one pyarrow table with the analysis's fixed schema.
+
+Determinism: a chunk builds its own :class:`Assembled` (no thread cache, no warm state from an
+earlier chunk), starts its first equilibrium cold and continues only along a line (points that
+differ in the innermost axis alone), so a chunk's rows are the same bit for bit whichever
+worker, thread or resume computes it. A point that fails (bad value, no equilibrium, contact,
+solver error) is a row with ``status``/``message``; the chunk goes on.
+"""
 
 from __future__ import annotations
 
 import math
 
 import numpy as np
-import pandas as pd
+import pyarrow as pa
 
 from rotordyn.errors import RotordynError
+from rotordyn import _validate as v
 
-STATUS = ["ok", "no_equilibrium", "contact", "not_converged", "error"]
-
-
-def _status(s: str) -> str:
-    return s if s in STATUS else "error"
-
-
-def _inputs(p: dict) -> dict:
-    return {"speed_hz": float(p.get("speed_hz", 50.0)),
-            "chamber_pressure_pa": float(p.get("chamber_pressure_pa", 0.0)),
-            "config_ay_m": float(p["config_ay_m"]) if "config_ay_m" in p else math.nan}
+STATUS = ["ok", "no_equilibrium", "contact", "not_converged", "no_crossing", "error"]
+LINEARISABLE = ("ok", "contact")  # statuses of a converged equilibrium
+WHIRL = ["forward", "backward", "planar"]
+KIND = ["rotor", "sleeve"]
+F64, I64, I32, BOOL, STR = pa.float64(), pa.int64(), pa.int32(), pa.bool_(), pa.string()
 
 
-def _point(system, analysis: str, inp: dict, options: dict) -> list[dict]:
+def _cat(values):
+    return pa.dictionary(pa.int8(), pa.string()), values
+
+
+# Output columns (after the ids and axes) per analysis: name -> arrow type (or a
+# (dictionary type, categories) pair for categoricals).
+OUTPUTS = {
+    "equilibrium": {"bearing": STR, "journal_x_m": F64, "journal_y_m": F64, "x_over_c": F64,
+                    "y_over_c": F64, "h_min_m": F64, "iterations": I64, "residual": F64},
+    "stability": {"mode_id": I64, "mode": I64, "freq_hz": F64, "eig_real_1_per_s": F64,
+                  "damping_ratio": F64, "log_dec": F64, "whirl": _cat(WHIRL),
+                  "kind": _cat(KIND), "mode_stable": BOOL, "point_stable": BOOL,
+                  "max_real_1_per_s": F64, "journal_x_m": F64, "journal_y_m": F64,
+                  "h_min_m": F64, "iterations": I64},
+    "threshold": {"crossing": I64, "value": F64, "whirl_frequency_hz": F64,
+                  "whirl_ratio": F64, "stable_side": STR, "evaluations": I64},
+    "boundary": {"max_real_1_per_s": F64, "freq_hz": F64, "point_stable": BOOL, "level": I64},
+    "unbalance": {"station": I64, "amplitude_x_m": F64, "amplitude_y_m": F64,
+                  "phase_x_deg": F64, "phase_y_deg": F64, "major_m": F64, "minor_m": F64,
+                  "peak": BOOL, "amplification_factor": F64, "separation_margin_pct": F64},
+    "waterfall": {"freq_hz": F64, "order": F64, "amplitude_x_m": F64, "amplitude_y_m": F64},
+}
+OUTPUTS["campbell"] = OUTPUTS["stability"]
+
+
+def schema(analysis: str, axes: list[str]) -> pa.Schema:
+    """The fixed arrow schema of a sweep's rows (every chunk is cast to it)."""
+    fields = [pa.field("sweep_id", pa.dictionary(pa.int8(), STR)),
+              pa.field("point_id", I64), pa.field("chunk_id", I64)]
+    base = ["speed_hz", "chamber_pressure_pa", "config_ay_m"]
+    for a in base + [a for a in axes if a not in base]:
+        fields.append(pa.field(a, F64))
+    for a in axes:
+        fields.append(pa.field(f"i_{a}", I32))
+    for k, t in OUTPUTS[analysis].items():
+        fields.append(pa.field(k, t[0] if isinstance(t, tuple) else t))
+    fields += [pa.field("status", pa.dictionary(pa.int8(), STR)), pa.field("message", STR)]
+    return pa.schema(fields)
+
+
+def categories(analysis: str) -> dict:
+    cats = {"status": STATUS}
+    for k, t in OUTPUTS[analysis].items():
+        if isinstance(t, tuple):
+            cats[k] = t[1]
+    return cats
+
+
+class Job:
+    """Everything a worker needs, shipped once per task (small: model TOML text, axes)."""
+
+    def __init__(self, sweep_id, model_toml, analysis, options, axes: dict):
+        self.sweep_id = sweep_id
+        self.model_toml = model_toml
+        self.analysis = analysis
+        self.options = options
+        self.axes = axes  # ordered: first outermost
+        self.shape = tuple(len(x) for x in axes.values())
+        self.key = ""     # spec hash (task names)
+        self.level = 0    # refinement level (boundary)
+        self.meta = {}    # provenance and units, stored in every part's schema metadata
+
+    def point(self, pid: int):
+        """(index tuple, {axis: value}) of point ``pid``."""
+        idx = np.unravel_index(pid, self.shape)
+        return tuple(int(i) for i in idx), {a: vals[i] for (a, vals), i in
+                                            zip(self.axes.items(), idx)}
+
+
+_BASE: dict = {}
+
+
+def _base_system(model_toml: str):
     import rotordyn as rd
 
-    ay = None if math.isnan(inp["config_ay_m"]) else inp["config_ay_m"]
-    if analysis == "equilibrium":
-        e = rd.equilibrium(system, inp["speed_hz"], inp["chamber_pressure_pa"], ay,
-                           method=options.get("method", "newton"))
-        rows = []
-        for i, name in enumerate(e.bearing_names):
-            rows.append({"bearing": name, "journal_x_m": e.journal_x_m[i],
-                         "journal_y_m": e.journal_y_m[i], "x_over_c": e.x_over_c[i],
-                         "y_over_c": e.y_over_c[i], "h_min_m": e.h_min_m[i],
-                         "iterations": e.iterations, "residual": e.residual,
-                         "status": _status(e.status), "message": e.message})
-        return rows
-    if analysis == "stability":
-        st = rd.stability(system, inp["speed_hz"], inp["chamber_pressure_pa"], ay,
-                          n_modes=options.get("n_modes"))
-        if len(st.eigenvalues) == 0:
-            return [{"status": _status(st.status), "message": st.message}]
-        rows = []
-        for k, lam in enumerate(st.eigenvalues):
-            rows.append({"mode": k + 1, "freq_hz": lam.imag / (2 * np.pi),
-                         "eig_real_1_per_s": lam.real, "damping_ratio": st.damping_ratio[k],
-                         "log_dec": st.log_dec[k], "whirl": st.whirl[k], "kind": st.kind[k],
-                         "stable": st.stable, "status": _status(st.status),
-                         "message": st.message})
-        return rows
-    if analysis == "waterfall":
-        f = inp["speed_hz"]
-        revs = int(options.get("revolutions", 60))
-        spr = int(options.get("samples_per_revolution", 64))
-        ub = [tuple(u) for u in options.get("unbalances", [])]
-        tr = rd.transient(system, revs / f, f, inp["chamber_pressure_pa"], ay, unbalances=ub,
-                          n_out=revs * spr + 1, rtol=float(options.get("rtol", 1e-6)))
+    sysm = _BASE.get(model_toml)
+    if sysm is None:
+        _BASE.clear()
+        sysm = _BASE[model_toml] = rd.System.from_toml(model_toml, is_text=True)
+    return sysm
+
+
+class _Variants:
+    """The model (and its freshly built solver) for each combination of model-field axes
+    met in this chunk."""
+
+    def __init__(self, base):
+        self.base = base
+        self.cache = {}
+
+    def get(self, p: dict):
+        from rotordyn.analysis.assembly import Assembled
+        from rotordyn.sweep.paths import set_field
+
+        key = tuple((k, val) for k, val in p.items() if "." in k and not k.startswith("options.")
+                    or k == "gravity_m_s2")
+        hit = self.cache.get(key)
+        if hit is None:
+            s = self.base
+            for k, val in key:
+                s = set_field(s, k, val)
+            if len(self.cache) > 4:
+                self.cache.clear()
+            hit = self.cache[key] = Assembled(s)
+        return hit
+
+
+def _options(job: Job, p: dict) -> dict:
+    import copy
+
+    opts = job.options
+    keys = [k for k in p if k.startswith("options.")]
+    if not keys:
+        return opts
+    opts = copy.deepcopy(opts)
+    for k in keys:
+        parts = k.split(".")[1:]
+        if len(parts) == 1:
+            opts[parts[0]] = p[k]
+            continue
+        cur = opts[parts[0]]
+        for q in parts[1:-1]:
+            cur = cur[int(q)]
+        cur[int(parts[-1])] = p[k]
+    return opts
+
+
+def _operating(asm, p: dict):
+    """speed (Hz), p_c (Pa), configuration vector; InputError on a bad value."""
+    f = v.finite("speed_hz", p.get("speed_hz", 50.0))
+    pc = v.non_negative("chamber_pressure_pa", p.get("chamber_pressure_pa", 0.0))
+    ay, ax = p.get("config_ay_m"), p.get("config_ax_m")
+    a = asm.config_vector(ay, ax)
+    return f, pc, a
+
+
+def _ref_bearing(asm):
+    act = [bc for bc in asm.bearings if bc.active]
+    return (act or asm.bearings)[0] if asm.bearings else None
+
+
+def _equilibrium(asm, f, pc, a, r0, opts):
+    from rotordyn import _core
+    from rotordyn.units import hz_to_rad_s
+
+    o = _core.EquilibriumOptions()
+    o.method = opts.get("method", "newton")
+    o.tol = float(opts.get("tol", 1e-10))
+    o.max_iter = int(opts.get("max_iter", 100))
+    o.pm = -1.0
+    o.contact_fraction = 0.02
+    return asm.solver.equilibrium(hz_to_rad_s(f), pc, a, np.zeros(0) if r0 is None else r0, o)
+
+
+def _eigen(asm, e, f, opts, n_modes):
+    """Eigenvalues, modes (n, k), whirl, kind of eq. 19 at equilibrium ``e``."""
+    from rotordyn import _core
+    from rotordyn.units import hz_to_rad_s
+
+    w = hz_to_rad_s(f)
+    r = np.asarray(e.r)
+    if opts.get("linearization", "perturbation") == "perturbation":
+        lin = asm.solver.linearize(r, np.zeros(asm.n), w)
+    else:
+        from rotordyn.analysis.linear import FD_REL_STEP
+
+        lin = asm.solver.linearize_fd(r, w, FD_REL_STEP)
+    m = asm.model
+    M = np.asarray(m.M)
+    D = np.asarray(m.C) + w * np.asarray(m.G) + np.asarray(lin.DH)
+    K = np.asarray(m.K) + np.asarray(lin.KH)
+    if not (np.all(np.isfinite(K)) and np.all(np.isfinite(D))):
+        raise ArithmeticError("non-finite bearing coefficients")
+    res = _core.modal(M, D, K, asm.rotor.xy_pairs(), int(n_modes or asm.n), True,
+                      asm.rotor.rot_pairs())
+    lam = np.asarray(res.eigenvalues)
+    phi = np.asarray(res.modes)
+    sl = [i for bc in asm.bearings for i in bc.sleeve]
+    kin = np.real(np.einsum("ik,ij,jk->k", phi.conj(), M, phi))
+    kin_s = (np.real(np.einsum("ik,ij,jk->k", phi[sl].conj(), M[np.ix_(sl, sl)], phi[sl]))
+             if sl else np.zeros(len(lam)))
+    kind = np.where(kin_s > 0.5 * kin, "sleeve", "rotor")
+    whirl = np.array([WHIRL[int(x)] for x in res.whirl])
+    return lam, phi, whirl, kind
+
+
+def _stable(lam) -> np.ndarray:
+    """Per mode: Re λ below the round-off band (as StabilityResult.stable)."""
+    return lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)
+
+
+def _same_line(prev, idx) -> bool:
+    return prev is not None and prev[:-1] == idx[:-1]
+
+
+def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
+    """Rows of points [lo, hi) (or of the listed point ids ``pids``, for the adaptive
+    boundary) as a table with :func:`schema`."""
+    rows: list[dict] = []
+    base = _base_system(job.model_toml)
+    variants = _Variants(base)
+    if pids is not None:
+        _boundary_rows(job, variants, chunk_id, pids, rows)
+    else:
+        _ANALYSIS[job.analysis](job, variants, chunk_id, lo, hi, rows)
+    return to_table(job, rows)
+
+
+def _common(job, pid, chunk_id, idx, p, asm):
+    row = {"point_id": pid, "chunk_id": chunk_id}
+    for (a, _), i in zip(job.axes.items(), idx):
+        row[f"i_{a}"] = i
+    row.update(p)
+    row.setdefault("speed_hz", 50.0)
+    row.setdefault("chamber_pressure_pa", 0.0)
+    if "config_ay_m" not in row:
+        bc = _ref_bearing(asm) if asm is not None else None
+        row["config_ay_m"] = (job_model_ay(asm, bc) if bc is not None else math.nan)
+    return row
+
+
+def job_model_ay(asm, bc):
+    return float(asm.system.bearings[bc.index].config_ay_m)
+
+
+def _fail(row, status, message):
+    return {**row, "status": status, "message": message}
+
+
+def _points(job, variants, chunk_id, lo, hi, pids=None):
+    """Yield (row, p, asm, opts, same_line, error) per point; a model-variant error is
+    yielded as asm=None with its message."""
+    prev = None
+    for pid in (range(lo, hi) if pids is None else pids):
+        idx, p = job.point(pid)
+        try:
+            asm = variants.get(p)
+            err = None
+        except RotordynError as exc:
+            asm, err = None, str(exc)
+        row = _common(job, pid, chunk_id, idx, p, asm)
+        yield row, p, asm, _options(job, p), _same_line(prev, idx), err
+        prev = idx
+
+
+def _eq_rows(job, variants, chunk_id, lo, hi, rows):
+    r_prev = None
+    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+        if err:
+            rows.append(_fail(row, "error", err))
+            continue
+        try:
+            f, pc, a = _operating(asm, p)
+            e = _equilibrium(asm, f, pc, a, r_prev if line else None, opts)
+        except (RotordynError, ArithmeticError, ValueError) as exc:
+            rows.append(_fail(row, "error", str(exc)))
+            r_prev = None
+            continue
+        r = np.asarray(e.r)
+        r_prev = r if e.status == "ok" else None
+        hmin = np.asarray(e.h_min)
+        for k, bc in enumerate(asm.bearings):
+            ok = e.status in LINEARISABLE
+            x = r[bc.jx] if ok else math.nan
+            y = r[bc.jy] if ok else math.nan
+            rows.append({**row, "bearing": bc.name, "journal_x_m": x, "journal_y_m": y,
+                         "x_over_c": x / bc.clearance_m, "y_over_c": y / bc.clearance_m,
+                         "h_min_m": float(hmin[k]) if ok and k < len(hmin) else math.nan,
+                         "iterations": int(e.iterations), "residual": float(e.residual),
+                         "status": e.status if e.status in STATUS else "error",
+                         "message": e.message})
+
+
+def _stab_rows(job, variants, chunk_id, lo, hi, rows):
+    from rotordyn.sweep.tracking import track_line
+
+    n_modes = job.options.get("n_modes")
+    track = job.options.get("track", True)
+    r_prev = None
+    line_buf: list = []  # (first row index, phi) of the current line, for tracking
+
+    def flush():
+        if track and line_buf:
+            track_line(rows, line_buf)
+        line_buf.clear()
+
+    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+        if not line:
+            flush()
+        if err:
+            rows.append(_fail(row, "error", err))
+            continue
+        try:
+            f, pc, a = _operating(asm, p)
+            e = _equilibrium(asm, f, pc, a, r_prev if line else None, opts)
+            r_prev = np.asarray(e.r) if e.status == "ok" else None
+            if e.status not in LINEARISABLE:
+                rows.append(_fail(row, e.status if e.status in STATUS else "error",
+                                  e.message or "no equilibrium"))
+                continue
+            lam, phi, whirl, kind = _eigen(asm, e, f, opts, n_modes)
+        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
+            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
+            r_prev = None
+            continue
+        r = np.asarray(e.r)
+        bc = _ref_bearing(asm)
+        hmin = np.asarray(e.h_min)
+        ms = _stable(lam)
+        eq = {"journal_x_m": float(r[bc.jx]), "journal_y_m": float(r[bc.jy]),
+              "h_min_m": float(hmin.min()) if hmin.size else math.nan,
+              "iterations": int(e.iterations), "point_stable": bool(ms.all()),
+              "max_real_1_per_s": float(lam.real.max())}
+        first = len(rows)
+        for k in range(len(lam)):
+            rows.append({**row, **eq, "mode_id": k + 1, "mode": k + 1,
+                         "freq_hz": float(lam[k].imag / (2 * np.pi)),
+                         "eig_real_1_per_s": float(lam[k].real),
+                         "damping_ratio": float(-lam[k].real / abs(lam[k])) if abs(lam[k]) else math.nan,
+                         "log_dec": float(-2 * np.pi * lam[k].real / lam[k].imag)
+                         if lam[k].imag else math.nan,
+                         "whirl": str(whirl[k]), "kind": str(kind[k]),
+                         "mode_stable": bool(ms[k]), "status": e.status,
+                         "message": e.message})
+        line_buf.append((first, len(lam), phi, lam))
+    flush()
+
+
+def _wf_rows(job, variants, chunk_id, lo, hi, rows):
+    import rotordyn as rd
+
+    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+        if err:
+            rows.append(_fail(row, "error", err))
+            continue
+        try:
+            f, pc, _ = _operating(asm, p)
+            v.positive("speed_hz", f)
+            revs = int(opts.get("revolutions", 60))
+            spr = int(opts.get("samples_per_revolution", 64))
+            ub = [tuple(u) for u in opts.get("unbalances", [])]
+            tr = rd.transient(asm.system, revs / f, f, pc, p.get("config_ay_m"),
+                              unbalances=ub, n_out=revs * spr + 1,
+                              rtol=float(opts.get("rtol", 1e-6)))
+        except (RotordynError, ArithmeticError, ValueError) as exc:
+            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
+            continue
         if tr.status != "ok":
-            return [{"status": _status(tr.status), "message": tr.message}]
+            rows.append(_fail(row, tr.status if tr.status in STATUS else "error", tr.message))
+            continue
         freq, ax = tr.spectrum(last_fraction=0.5, axis="x")
         _, ay_ = tr.spectrum(last_fraction=0.5, axis="y")
-        keep = freq <= float(options.get("max_harmonic", 4.0)) * f
-        return [{"freq_hz": fr, "amplitude_x_m": a1, "amplitude_y_m": a2,
-                 "order": fr / f, "status": "ok", "message": ""}
-                for fr, a1, a2 in zip(freq[keep], ax[keep], ay_[keep])]
-    raise ValueError(analysis)
+        keep = freq <= float(opts.get("max_harmonic", 4.0)) * f
+        for fr, a1, a2 in zip(freq[keep], ax[keep], ay_[keep]):
+            rows.append({**row, "freq_hz": float(fr), "amplitude_x_m": float(a1),
+                         "amplitude_y_m": float(a2), "order": float(fr / f), "status": "ok",
+                         "message": ""})
 
 
-def run_chunk(model_toml: str, analysis: str, options: dict, chunk_id: int,
-              points: list) -> pd.DataFrame:
-    """Run the points of one chunk (in order, so equilibria continue from point to point)."""
-    import rotordyn as rd
+def _lines(job, lo, hi):
+    """Split [lo, hi) into lines of the innermost axis."""
+    n = job.shape[-1]
+    for s in range(lo, hi, n):
+        yield s, min(s + n, hi)
 
-    system = rd.System.from_toml(model_toml, is_text=True)
-    rows = []
-    for point_id, p in points:
-        inp = _inputs(p)
+
+def _threshold_rows(job, variants, chunk_id, lo, hi, rows):
+    from rotordyn.sweep.lines import threshold_line
+
+    for s, e in _lines(job, lo, hi):
+        threshold_line(job, variants, chunk_id, s, e, rows)
+
+
+def _unbalance_rows(job, variants, chunk_id, lo, hi, rows):
+    from rotordyn.sweep.lines import unbalance_line
+
+    for s, e in _lines(job, lo, hi):
+        unbalance_line(job, variants, chunk_id, s, e, rows)
+
+
+def _boundary_rows(job, variants, chunk_id, pids, rows):
+    """One row per listed point: max Re λ (rotor modes only with exclude_sleeve_modes), its
+    frequency, point_stable; ``level`` is set by the driver."""
+    from rotordyn.sweep.lines import _max_real
+
+    excl = bool(job.options.get("exclude_sleeve_modes", False))
+    r_prev = None
+    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, 0, 0, pids):
+        if err:
+            rows.append(_fail(row, "error", err))
+            continue
         try:
-            out = _point(system, analysis, inp, options)
-        except RotordynError as exc:
-            out = [{"status": "error", "message": f"{type(exc).__name__}: {exc}"}]
-        except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
-            out = [{"status": "error", "message": f"{type(exc).__name__}: {exc}"}]
-        for r in out:
-            rows.append({"point_id": point_id, "chunk_id": chunk_id, **inp, **r})
-    df = pd.DataFrame(rows)
-    return df
+            y, fr, st, r = _max_real(job, asm, p, r_prev if line else None, opts, excl)
+        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
+            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
+            r_prev = None
+            continue
+        r_prev = r
+        if r is None:
+            rows.append(_fail(row, st if st in STATUS else "error", "no equilibrium"))
+            continue
+        rows.append({**row, "max_real_1_per_s": y, "freq_hz": fr, "point_stable": y < 0,
+                     "level": job.level, "status": st, "message": ""})
+
+
+_ANALYSIS = {"equilibrium": _eq_rows, "stability": _stab_rows, "campbell": _stab_rows,
+             "waterfall": _wf_rows, "threshold": _threshold_rows,
+             "unbalance": _unbalance_rows}
+
+
+def to_table(job: Job, rows: list[dict]) -> pa.Table:
+    """Rows (dicts) to the fixed schema: missing values are nulls, categoricals use the fixed
+    category lists so every part has the same dictionary."""
+    sch = schema(job.analysis, list(job.axes))
+    cats = categories(job.analysis)
+    cols = []
+    n = len(rows)
+    for fld in sch:
+        name = fld.name
+        if name == "sweep_id":
+            cols.append(pa.DictionaryArray.from_arrays(
+                pa.array(np.zeros(n, dtype=np.int8)), pa.array([job.sweep_id])))
+            continue
+        vals = [r.get(name) for r in rows]
+        if name in cats:
+            c = cats[name]
+            codes = pa.array([None if x is None else c.index(x) for x in vals], type=pa.int8())
+            cols.append(pa.DictionaryArray.from_arrays(codes, pa.array(c)))
+        elif name == "message":
+            cols.append(pa.array(["" if x is None else str(x) for x in vals], type=STR))
+        else:
+            cols.append(pa.array(vals, type=fld.type, from_pandas=False))
+    if job.meta:
+        import json
+
+        sch = sch.with_metadata({b"rotordyn": json.dumps(job.meta, sort_keys=True).encode()})
+    return pa.Table.from_arrays(cols, schema=sch)

@@ -1,0 +1,83 @@
+// Time-varying operation of the nonlinear transient: the speed Ω(t) and rotor angle θ(t), the
+// chamber-pressure command, the actuator (servo valve + chamber) from command to p_c, and an
+// LTI controller in the loop. Plain structs (bound to Python field by field) plus the small
+// evaluators the CVODE right-hand side calls.
+#pragma once
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <limits>
+
+namespace rotordyn {
+
+/// Ω(t): piecewise linear through (t_i, Ω_i), constant before the first and after the last
+/// point. Empty: the constant TransientInput::omega. θ(t) = ∫₀ᵗ Ω dτ exactly (the integral of
+/// a piecewise-linear function), so the rotor angle carries no integration error.
+struct SpeedProfile {
+  Eigen::VectorXd t;      ///< (n_s,) s, strictly increasing
+  Eigen::VectorXd omega;  ///< (n_s,) rad/s
+};
+
+enum class PressureSource { constant, time_table, speed_table };
+
+/// Chamber-pressure command p_cmd(t) = base + harmonic + controller output, in Pa:
+/// base = constant (TransientInput::chamber_pressure), a table p(t) or a table p(Ω)
+/// (piecewise linear, constant outside); harmonic = amplitude · sin(frequency·t + phase), or
+/// with order > 0 locked to the rotor: amplitude · sin(order·θ(t) + phase).
+struct PressureCommand {
+  PressureSource source = PressureSource::constant;
+  Eigen::VectorXd table_x;  ///< (n_p,) s (time_table) or rad/s (speed_table), increasing
+  Eigen::VectorXd table_p;  ///< (n_p,) Pa
+  double harmonic_amplitude = 0.0;  ///< Pa
+  double harmonic_frequency = 0.0;  ///< rad/s (order == 0)
+  double harmonic_phase = 0.0;      ///< rad
+  double harmonic_order = 0.0;      ///< > 0: argument order·θ(t) (1: once per revolution)
+};
+
+/// Servo valve + chamber from the command to the chamber pressure p_c.
+/// order 0: p_c = clip(p_cmd); order 1: τ ṗ = clip(p_cmd) − p; order 2:
+/// p̈ + 2ζω_n ṗ + ω_n² p = ω_n² clip(p_cmd); in both the rate ṗ is limited to ±rate_limit and
+/// p_c = clip(p) with clip to [p_min, p_max]. The states start at rest at clip(p_cmd(0)).
+struct Actuator {
+  int order = 0;
+  double time_constant = 0.0;      ///< s (order 1)
+  double natural_frequency = 0.0;  ///< rad/s (order 2)
+  double damping = 0.7;            ///< ζ (order 2)
+  double p_min = -std::numeric_limits<double>::infinity();  ///< Pa
+  double p_max = std::numeric_limits<double>::infinity();   ///< Pa
+  double rate_limit = std::numeric_limits<double>::infinity();  ///< Pa/s (order ≥ 1)
+  int n_states() const { return order; }
+};
+
+/// LTI controller u = output added to the pressure command (Pa), from the measurements
+/// y_m = C_m [r; ṙ] − offset + noise. Continuous (sample_time 0): ẋ = A x + B y_m,
+/// u = C x + D y_m, states integrated by CVODE with the rotor. Discrete (sample_time > 0):
+/// at t_k = k·T: u_k = C x_k + D y_m(t_k), x_{k+1} = A x_k + B y_m(t_k), u held (ZOH).
+/// Noise: Gaussian with noise_std per measurement, drawn from a seeded generator on a grid of
+/// noise_dt (the sample time for a discrete controller), linearly interpolated in between
+/// for a continuous one, so the right-hand side is a deterministic function of t.
+struct Controller {
+  bool enabled = false;
+  Eigen::MatrixXd A, B, C, D;    ///< (n_k, n_k), (n_k, n_y), (1, n_k), (1, n_y)
+  Eigen::MatrixXd measurement;   ///< C_m (n_y, 2n)
+  Eigen::VectorXd offset;        ///< (n_y,) subtracted from C_m [r; ṙ]
+  Eigen::VectorXd x0;            ///< (n_k,) initial controller states (empty: zeros)
+  double sample_time = 0.0;      ///< s; 0: continuous
+  Eigen::VectorXd noise_std;     ///< (n_y,) or empty: no noise
+  double noise_dt = 0.0;         ///< s (continuous controller with noise)
+  std::uint64_t seed = 0;
+  Eigen::Index n_states() const { return A.rows(); }
+};
+
+/// Evaluators of the profiles (validated once by `validate_operation`).
+double profile_speed(const SpeedProfile& s, double omega_const, double t);
+double profile_speed_rate(const SpeedProfile& s, double t);
+double profile_angle(const SpeedProfile& s, double omega_const, double t);
+/// Piecewise-linear interpolation, constant outside [x_0, x_last].
+double interp_table(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double xi);
+
+/// Shape and range checks; throws InputError naming the field.
+void validate_operation(const SpeedProfile& s, const PressureCommand& p, const Actuator& a,
+                        const Controller& c, Eigen::Index n_coords, double t_end);
+
+}  // namespace rotordyn

@@ -1,0 +1,76 @@
+"""Shared command-line plumbing: the argument parser every ``rotordyn`` subcommand uses
+(errors as :class:`rotordyn.InputError`, negative numbers in any notation read as values,
+defaults stated in the help) and strict JSON output (NaN and ±inf as ``null``)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import re
+
+import numpy as np
+
+from rotordyn.errors import InputError
+
+# A negative number, in any notation float() reads: -5, -.5, -5e2, -1.85E-3, -inf is not one.
+_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
+
+
+class ArgumentParser(argparse.ArgumentParser):
+    """argparse that raises InputError (exit 2 through main) instead of exiting itself, reads
+    negative numbers in scientific notation (``--load-n 0 -5e2``) as values, not options, and
+    states every option's default in its help."""
+
+    def __init__(self, *args, **kwargs):
+        kwargs.setdefault("formatter_class", _HelpFormatter)
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = _NEGATIVE_NUMBER
+
+    def error(self, message):
+        raise InputError(f"{self.prog}: {message}")
+
+
+class _HelpFormatter(argparse.RawDescriptionHelpFormatter):
+    """Appends "(default: X)" to an option's help unless the help already states it or the
+    option has no meaningful default (flags, required options)."""
+
+    def _get_help_string(self, action):
+        text = action.help or ""
+        d = action.default
+        if "default" in text or d is None or d is False or d is argparse.SUPPRESS \
+                or d == [] or action.required or not action.option_strings:
+            return text
+        if isinstance(d, (list, tuple)):
+            d = " ".join(str(x) for x in d)
+        return f"{text} (default: {d})"
+
+
+def _finite_or_none(o):
+    """Recursively replace NaN/±inf floats by None (JSON null)."""
+    if isinstance(o, float):
+        return o if math.isfinite(o) else None
+    if isinstance(o, dict):
+        return {k: _finite_or_none(v) for k, v in o.items()}
+    if isinstance(o, (list, tuple)):
+        return [_finite_or_none(v) for v in o]
+    return o
+
+
+def json_text(obj) -> str:
+    """Strict JSON (RFC 8259): numpy values converted, NaN and ±inf written as null."""
+
+    def plain(o):
+        if isinstance(o, np.ndarray):
+            return plain(o.tolist())
+        if isinstance(o, (np.floating, np.integer, np.bool_)):
+            return o.item()
+        if isinstance(o, dict):
+            return {k: plain(v) for k, v in o.items()}
+        if isinstance(o, (list, tuple)):
+            return [plain(v) for v in o]
+        return o
+
+    return json.dumps(_finite_or_none(plain(obj)), indent=2, allow_nan=False)
+
+

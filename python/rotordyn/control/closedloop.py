@@ -1,0 +1,108 @@
+"""The linear closed loop of a plant and a controller: eigenvalues, stability margin (least
+damping ratio, largest real part), loop gain/phase margins and the peak sensitivity at the
+actuator input (loop broken at u)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from rotordyn.results.modes import damping_ratio
+
+
+@dataclass(frozen=True)
+class ClosedLoopResult:
+    """A (closed-loop state matrix), eigenvalues (1/s), damping ratios; gain_margin (factor),
+    phase_margin_deg and peak_sensitivity of L(s) = −K(s) G(s) at the actuator input."""
+
+    A: np.ndarray
+    eigenvalues: np.ndarray
+    damping_ratio: np.ndarray
+    gain_margin: float
+    phase_margin_deg: float
+    peak_sensitivity: float
+
+    @property
+    def max_real(self) -> float:
+        return float(self.eigenvalues.real.max())
+
+    @property
+    def min_damping(self) -> float:
+        return float(self.damping_ratio.min())
+
+    @property
+    def stable(self) -> bool:
+        return self.max_real < 0
+
+    def __repr__(self):
+        return (f"ClosedLoopResult(stable={self.stable}, max Re λ={self.max_real:.4g} 1/s, "
+                f"min ζ={self.min_damping:.4g}, GM={self.gain_margin:.3g}, "
+                f"PM={self.phase_margin_deg:.3g}°, |S|max={self.peak_sensitivity:.3g})")
+
+
+def closed_loop_matrix(p, k) -> np.ndarray:
+    """State matrix of [x; x_k] for ẋ = A x + B u, y = C x, u = C_k x_k + D_k y,
+    ẋ_k = A_k x_k + B_k y (continuous controllers; a discrete one via its ZOH continuous
+    equivalent is not formed here)."""
+    A, B, C = p.A, p.B, p.C
+    Dr = p.info.get("feedthrough")
+    if Dr is not None and np.any(Dr):
+        # y = C x + D_r u with u = C_k x_k + D_k y: solve the algebraic loop.
+        M = np.linalg.inv(np.eye(C.shape[0]) - Dr @ k.D)
+        Cy, Dy = M @ C, M @ Dr @ k.C
+    else:
+        Cy, Dy = C, np.zeros((C.shape[0], k.n_states))
+    nk = k.n_states
+    top = np.hstack([A + B @ k.D @ Cy, B @ (k.C + k.D @ Dy)])
+    bot = np.hstack([k.B @ Cy, k.A + k.B @ Dy])
+    return np.vstack([top, bot]) if nk else A + B @ k.D @ Cy
+
+
+def loop_response(p, k, freqs_hz) -> np.ndarray:
+    """L(iω) = −K(iω) G(iω), (n_f,) complex (negative-feedback convention)."""
+    w = 2 * np.pi * np.asarray(freqs_hz, dtype=float)
+    n, nk = p.A.shape[0], k.n_states
+    Dr = p.info.get("feedthrough")
+    out = np.empty(w.size, dtype=complex)
+    for i, wi in enumerate(w):
+        G = p.C @ np.linalg.solve(1j * wi * np.eye(n) - p.A, p.B)
+        if Dr is not None:
+            G = G + Dr
+        K = k.D + (k.C @ np.linalg.solve(1j * wi * np.eye(nk) - k.A, k.B) if nk else 0)
+        out[i] = -(K @ G)[0, 0]
+    return out
+
+
+def closed_loop(p, k, *, freqs_hz=None) -> ClosedLoopResult:
+    """Closed loop of plant ``p`` (:func:`rotordyn.control.plant`) and controller ``k``
+    (:class:`rotordyn.control.Controller`, continuous). Margins from L on a log grid
+    (default 0.1 Hz – 5 kHz, 4000 points): gain margin = 1/|L| where arg L crosses −180°
+    (the smallest, inf if none), phase margin at |L| = 1 (the smallest)."""
+    from rotordyn.errors import InputError
+
+    if k.discrete:
+        raise InputError("controller.sample_time_s: closed_loop analyses continuous "
+                         "controllers; use the continuous design (or control.d2c)")
+    if k.n_inputs != p.C.shape[0]:
+        raise InputError(f"controller: expected {p.C.shape[0]} inputs (the plant's "
+                         f"measurements), got {k.n_inputs}")
+    Acl = closed_loop_matrix(p, k)
+    lam = np.linalg.eigvals(Acl)
+    f = np.logspace(-1, np.log10(5000.0), 4000) if freqs_hz is None else np.asarray(freqs_hz)
+    L = loop_response(p, k, f)
+    ph = np.unwrap(np.angle(L))
+    mag = np.abs(L)
+    gm = np.inf
+    for i in range(len(f) - 1):
+        for m in range(-5, 6):
+            target = (2 * m + 1) * np.pi
+            if (ph[i] - target) * (ph[i + 1] - target) < 0:
+                gm = min(gm, 1.0 / mag[i])
+    pm = np.inf
+    for i in range(len(f) - 1):
+        if (mag[i] - 1) * (mag[i + 1] - 1) < 0:
+            d = np.degrees(np.angle(L[i])) % 360.0
+            pm = min(pm, abs(d - 180.0))
+    S = 1.0 / np.abs(1 + L)
+    return ClosedLoopResult(Acl, lam, damping_ratio(lam), float(gm), float(pm), float(S.max()))

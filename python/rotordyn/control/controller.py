@@ -1,0 +1,160 @@
+"""An LTI controller in the loop: u = K(s) y_m added to the chamber-pressure command (Pa),
+continuous or discrete (sample time, zero-order hold), reading chosen measurements with
+optional seeded sensor noise. The same object closes the linear loop
+(:mod:`rotordyn.control.closedloop`) and runs inside the nonlinear CVODE transient."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn import _validate as v
+from rotordyn.control.measurement import parse_measurements
+from rotordyn.errors import InputError
+
+
+def _mat(name, M):
+    try:
+        M = np.atleast_2d(np.asarray(M, dtype=float))
+    except (TypeError, ValueError):
+        raise InputError(f"controller.{name}: expected a numeric matrix") from None
+    if M.ndim != 2 or not np.all(np.isfinite(M)):
+        raise InputError(f"controller.{name}: expected a finite 2-D matrix")
+    return M
+
+
+@dataclass(frozen=True)
+class Controller:
+    """ẋ = A x + B y, u = C x + D y (continuous, ``sample_time_s`` None) or
+    x⁺ = A x + B y_k, u_k = C x_k + D y_k held for one sample (discrete).
+
+    y: the measurements (see :func:`rotordyn.control.measurement.measurement_matrix`) minus
+    their value at the operating point; u: chamber-pressure command increment, Pa.
+    Shapes: A (n_k, n_k), B (n_k, n_y), C (1, n_k), D (1, n_y).
+    ``noise_std``: sensor noise standard deviation(s) (m or m/s; scalar or one per signal);
+    ``noise_dt_s``: the noise grid of a continuous controller (linearly interpolated).
+    """
+
+    A: np.ndarray
+    B: np.ndarray
+    C: np.ndarray
+    D: np.ndarray
+    measurements: tuple
+    sample_time_s: float | None = None
+    noise_std: object = 0.0
+    noise_dt_s: float = 1e-4
+    seed: int = 0
+    name: str = "controller"
+    info: dict = field(default_factory=dict, compare=False)
+
+    def __post_init__(self):
+        object.__setattr__(self, "measurements", parse_measurements(self.measurements))
+        A, B, C, D = (_mat(k, getattr(self, k)) for k in "ABCD")
+        nk = A.shape[0] if A.size else 0
+        if A.size == 0:
+            A = np.zeros((0, 0))
+        ny = D.shape[1]
+        if A.shape != (nk, nk):
+            raise InputError(f"controller.A: expected a square matrix, got shape {A.shape}")
+        if C.shape[0] != 1 or D.shape[0] != 1:
+            raise InputError(f"controller: expected 1 output (the chamber-pressure command), "
+                             f"got {max(C.shape[0], D.shape[0])} (C {C.shape}, D {D.shape})")
+        if nk == 0:
+            B, C = np.zeros((0, ny)), np.zeros((1, 0))
+        if B.shape != (nk, ny) or C.shape != (1, nk):
+            raise InputError(f"controller.B/C: expected shapes ({nk}, {ny}) and (1, {nk}), got "
+                             f"{B.shape} and {C.shape}")
+        for k, M in zip("ABCD", (A, B, C, D)):
+            object.__setattr__(self, k, M)
+        st = self.sample_time_s
+        if st is not None:
+            if isinstance(st, bool) or not isinstance(st, (int, float, np.floating, np.integer)) \
+                    or not np.isfinite(st) or st <= 0:
+                raise InputError(f"controller.sample_time_s: expected > 0 s for a discrete "
+                                 f"controller (None: continuous), got {st!r}")
+            object.__setattr__(self, "sample_time_s", float(st))
+        v.positive("controller.noise_dt_s", self.noise_dt_s)
+        v.integer("controller.seed", self.seed, lo=0)
+
+    @property
+    def n_inputs(self) -> int:
+        return self.D.shape[1]
+
+    @property
+    def n_states(self) -> int:
+        return self.A.shape[0]
+
+    @property
+    def discrete(self) -> bool:
+        return self.sample_time_s is not None
+
+    @classmethod
+    def static(cls, gains, measurements, **kw) -> "Controller":
+        """u = gains · y (no states), e.g. a PD law on journal displacement and velocity."""
+        g = np.atleast_2d(np.asarray(gains, dtype=float))
+        return cls(np.zeros((0, 0)), np.zeros((0, g.shape[1])), np.zeros((1, 0)), g,
+                   measurements, **kw)
+
+    @classmethod
+    def from_lti(cls, sys, measurements, **kw) -> "Controller":
+        """From a python-control ``StateSpace`` or ``TransferFunction`` (inputs: the
+        measurements in order, output: Pa). A discrete system (``dt`` > 0) keeps its sample
+        time; ``dt=True`` (unspecified) is rejected."""
+        import control
+
+        if isinstance(sys, control.TransferFunction):
+            sys = control.ss(sys)
+        if not isinstance(sys, control.StateSpace):
+            raise InputError(f"controller: expected a python-control StateSpace or "
+                             f"TransferFunction, got {type(sys).__name__}")
+        dt = sys.dt
+        if dt is True:
+            raise InputError("controller.sample_time_s: the discrete system has an "
+                             "unspecified sample time (dt=True); give dt > 0")
+        dt = None if dt in (None, 0) else float(dt)
+        if "sample_time_s" in kw and kw.pop("sample_time_s") != dt:
+            raise InputError("controller.sample_time_s: differs from the system's dt")
+        return cls(np.asarray(sys.A), np.asarray(sys.B), np.asarray(sys.C), np.asarray(sys.D),
+                   measurements, sample_time_s=dt, **kw)
+
+    def to_control(self):
+        """The python-control system (dt = sample time, or 0)."""
+        import control
+
+        return control.ss(self.A, self.B, self.C, self.D, dt=self.sample_time_s or 0)
+
+    def scaled(self, gain: float) -> "Controller":
+        """The same controller with its output multiplied by ``gain``."""
+        return Controller(self.A, self.B, gain * self.C, gain * self.D, self.measurements,
+                          self.sample_time_s, self.noise_std, self.noise_dt_s, self.seed,
+                          self.name, dict(self.info))
+
+    def with_options(self, **kw) -> "Controller":
+        d = dict(A=self.A, B=self.B, C=self.C, D=self.D, measurements=self.measurements,
+                 sample_time_s=self.sample_time_s, noise_std=self.noise_std,
+                 noise_dt_s=self.noise_dt_s, seed=self.seed, name=self.name, info=self.info)
+        d.update(kw)
+        return Controller(**d)
+
+    def to_core(self, Cm: np.ndarray, offset: np.ndarray):
+        ny = Cm.shape[0]
+        if ny != self.n_inputs:
+            raise InputError(f"controller: expected {ny} inputs (the measurements "
+                             f"{self.measurements} give {ny} signals), got {self.n_inputs}")
+        k = _core.Controller()
+        k.enabled = True
+        k.A, k.B, k.C, k.D = self.A, self.B, self.C, self.D
+        k.measurement = Cm
+        k.offset = offset
+        k.sample_time = float(self.sample_time_s or 0.0)
+        ns = np.broadcast_to(np.asarray(self.noise_std, dtype=float), (ny,)).copy() \
+            if np.ndim(self.noise_std) == 0 else np.asarray(self.noise_std, dtype=float)
+        if ns.shape != (ny,) or not np.all(np.isfinite(ns)) or np.any(ns < 0):
+            raise InputError(f"controller.noise_std: expected a scalar or {ny} values >= 0")
+        if np.any(ns > 0):
+            k.noise_std = ns
+            k.noise_dt = float(self.noise_dt_s)
+        k.seed = int(self.seed)
+        return k

@@ -1,0 +1,231 @@
+"""Time-varying operation for the nonlinear transient: the speed profile Ω(t), the chamber-
+pressure command p_cmd(t) (constant, table in time, schedule in speed, harmonic or 1×-locked)
+and the actuator (servo valve + chamber) between the command and the chamber pressure p_c.
+
+The actuator models follow W. J. Thayer, *Transfer functions for Moog servovalves*, Moog
+Technical Bulletin 103 (1958, rev. 1965): a servo valve is represented over the band that
+matters by a first-order lag or a second-order lag whose natural frequency is the frequency of
+90° phase lag and whose damping ratio fits the phase curve; H. E. Merritt, *Hydraulic Control
+Systems* (Wiley, 1967, ch. 5–6) gives the same forms and adds the chamber's compressibility,
+which for a small chamber is lumped into the same lag. The defaults (second order, f_n = 100 Hz,
+ζ = 0.7; first order τ = 1/(2π·50 Hz)) are our choice of a two-stage valve with a
+small chamber — two to ten times the rig's rotor critical speeds (39 and 90 Hz) — not numbers
+read from a data sheet; docs/control.md shows how the results depend on them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn import _validate as v
+from rotordyn.errors import InputError
+from rotordyn.units import hz_to_rad_s
+
+
+def _table(name, x, y, *, x_positive=False):
+    try:
+        x = np.asarray(x, dtype=float).ravel()
+        y = np.asarray(y, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: expected two numeric arrays") from None
+    if x.size == 0 or x.size != y.size:
+        raise InputError(f"{name}: expected arrays of the same non-zero length, got "
+                         f"{x.size} and {y.size}")
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(y))):
+        raise InputError(f"{name}: expected finite values")
+    if x.size > 1 and np.any(np.diff(x) <= 0):
+        raise InputError(f"{name}: expected strictly increasing abscissae")
+    if x_positive and np.any(x < 0):
+        raise InputError(f"{name}: expected abscissae >= 0")
+    return x, y
+
+
+@dataclass(frozen=True)
+class SpeedProfile:
+    """Ω(t): piecewise linear through (t_s, speed_hz), constant outside. The rotor angle is
+    its exact integral. Build with :meth:`constant`, :meth:`ramp` or :meth:`table`."""
+
+    t_s: np.ndarray
+    speed_hz: np.ndarray
+
+    @classmethod
+    def constant(cls, speed_hz: float) -> "SpeedProfile":
+        v.finite("speed_hz", speed_hz)
+        return cls(np.zeros(1), np.array([float(speed_hz)]))
+
+    @classmethod
+    def ramp(cls, start_hz: float, stop_hz: float, rate_hz_per_s: float,
+             t_start_s: float = 0.0) -> "SpeedProfile":
+        """Run-up (stop > start) or coast-down at |rate| Hz/s from ``t_start_s``; constant
+        before and after."""
+        v.finite("start_hz", start_hz)
+        v.finite("stop_hz", stop_hz)
+        v.positive("rate_hz_per_s", rate_hz_per_s)
+        v.non_negative("t_start_s", t_start_s)
+        if stop_hz == start_hz:
+            raise InputError("stop_hz: expected a speed different from start_hz")
+        t1 = t_start_s + abs(stop_hz - start_hz) / rate_hz_per_s
+        return cls(np.array([t_start_s, t1]), np.array([float(start_hz), float(stop_hz)]))
+
+    @classmethod
+    def table(cls, t_s, speed_hz) -> "SpeedProfile":
+        t, s = _table("speed_profile", t_s, speed_hz, x_positive=True)
+        return cls(t, s)
+
+    def speed_at(self, t_s) -> np.ndarray:
+        return np.interp(t_s, self.t_s, self.speed_hz)
+
+    @property
+    def is_constant(self) -> bool:
+        return self.t_s.size == 1 or bool(np.all(self.speed_hz == self.speed_hz[0]))
+
+    def to_core(self):
+        sp = _core.SpeedProfile()
+        if self.t_s.size > 1:
+            sp.t = self.t_s
+            sp.omega = hz_to_rad_s(self.speed_hz)
+        return sp
+
+
+@dataclass(frozen=True)
+class PressureSchedule:
+    """Chamber-pressure command without feedback, Pa: a base (constant, a table p(t) or a
+    schedule p(Ω) — piecewise linear, constant outside) plus an optional harmonic
+    ``amplitude_pa · sin(2π f t + phase)``, or with ``order`` > 0 locked to the rotor angle:
+    ``amplitude_pa · sin(order θ(t) + phase)`` (order 1: once per revolution)."""
+
+    kind: str = "constant"  # constant | time_table | speed_table
+    value_pa: float = 0.0
+    x: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    p_pa: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    amplitude_pa: float = 0.0
+    frequency_hz: float = 0.0
+    phase_deg: float = 0.0
+    order: float = 0.0
+
+    @classmethod
+    def constant(cls, chamber_pressure_pa: float) -> "PressureSchedule":
+        return cls("constant", v.finite("chamber_pressure_pa", chamber_pressure_pa))
+
+    @classmethod
+    def time_table(cls, t_s, chamber_pressure_pa) -> "PressureSchedule":
+        t, p = _table("chamber_pressure table", t_s, chamber_pressure_pa, x_positive=True)
+        return cls("time_table", float(p[0]), t, p)
+
+    @classmethod
+    def speed_table(cls, speed_hz, chamber_pressure_pa) -> "PressureSchedule":
+        """An open-loop schedule p_c(Ω) (e.g. from :func:`rotordyn.control.pressure_schedule`)."""
+        s, p = _table("chamber_pressure schedule", speed_hz, chamber_pressure_pa)
+        return cls("speed_table", float(p[0]), s, p)
+
+    def with_harmonic(self, amplitude_pa: float, *, frequency_hz: float = 0.0,
+                      phase_deg: float = 0.0, order: float = 0.0) -> "PressureSchedule":
+        v.finite("amplitude_pa", amplitude_pa)
+        v.non_negative("frequency_hz", frequency_hz)
+        v.finite("phase_deg", phase_deg)
+        v.non_negative("order", order)
+        if amplitude_pa and not (frequency_hz or order):
+            raise InputError("frequency_hz/order: a harmonic needs a frequency or an order > 0")
+        return PressureSchedule(self.kind, self.value_pa, self.x, self.p_pa,
+                                float(amplitude_pa), float(frequency_hz), float(phase_deg),
+                                float(order))
+
+    def to_core(self):
+        pc = _core.PressureCommand()
+        pc.source = getattr(_core.PressureSource, self.kind)
+        if self.kind != "constant":
+            pc.table_x = self.x if self.kind == "time_table" else hz_to_rad_s(self.x)
+            pc.table_p = self.p_pa
+        pc.harmonic_amplitude = self.amplitude_pa
+        pc.harmonic_frequency = hz_to_rad_s(self.frequency_hz)
+        pc.harmonic_phase = math.radians(self.phase_deg)
+        pc.harmonic_order = self.order
+        return pc
+
+
+DEFAULT_P_MIN_PA = 0.0
+DEFAULT_P_MAX_PA = 1.0e6
+
+
+@dataclass(frozen=True)
+class Actuator:
+    """Servo valve + chamber from the pressure command to p_c (module docstring for the
+    sources of the forms and defaults).
+
+    order 0: p_c = clip(p_cmd) (ideal); 1: τ ṗ = clip(p_cmd) − p; 2: p̈ + 2ζω_n ṗ + ω_n² p =
+    ω_n² clip(p_cmd); clip to [p_min_pa, p_max_pa] (gauge; the chamber cannot pull), the rate
+    |ṗ| ≤ rate_limit_pa_s (order ≥ 1), p_c = clip(p). States start at rest at the command.
+    """
+
+    order: int = 2
+    time_constant_s: float = 1.0 / (2 * math.pi * 50.0)
+    natural_frequency_hz: float = 100.0
+    damping: float = 0.7
+    p_min_pa: float = DEFAULT_P_MIN_PA
+    p_max_pa: float = DEFAULT_P_MAX_PA
+    rate_limit_pa_s: float = math.inf
+
+    def __post_init__(self):
+        v.integer("actuator.order", self.order, lo=0, hi=2)
+        if self.order == 1:
+            v.positive("actuator.time_constant_s", self.time_constant_s)
+        if self.order == 2:
+            v.positive("actuator.natural_frequency_hz", self.natural_frequency_hz)
+            v.positive("actuator.damping", self.damping)
+        for name in ("p_min_pa", "p_max_pa"):
+            val = getattr(self, name)
+            if not isinstance(val, (int, float, np.floating, np.integer)) or math.isnan(val):
+                raise InputError(f"actuator.{name}: expected a number, got {val!r}")
+        if not self.p_min_pa < self.p_max_pa:
+            raise InputError(f"actuator.p_min_pa/p_max_pa: expected p_min_pa < p_max_pa, got "
+                             f"{self.p_min_pa!r} and {self.p_max_pa!r}")
+        r = self.rate_limit_pa_s
+        if not isinstance(r, (int, float, np.floating, np.integer)) or not r > 0:
+            raise InputError(f"actuator.rate_limit_pa_s: expected > 0 Pa/s (inf: none), got {r!r}")
+        if self.order == 0 and math.isfinite(r):
+            raise InputError("actuator.rate_limit_pa_s: a rate limit needs actuator dynamics "
+                             "(order 1 or 2)")
+
+    @classmethod
+    def ideal(cls, p_min_pa: float = DEFAULT_P_MIN_PA, p_max_pa: float = DEFAULT_P_MAX_PA):
+        """No lag: p_c = clip(p_cmd)."""
+        return cls(order=0, p_min_pa=p_min_pa, p_max_pa=p_max_pa)
+
+    @classmethod
+    def unlimited(cls):
+        """No lag and no limits (the bare system of eq. 12)."""
+        return cls(order=0, p_min_pa=-math.inf, p_max_pa=math.inf)
+
+    def transfer_function(self):
+        """(num, den) of p_c/p_cmd in s (rad/s), unsaturated."""
+        if self.order == 0:
+            return np.array([1.0]), np.array([1.0])
+        if self.order == 1:
+            return np.array([1.0]), np.array([self.time_constant_s, 1.0])
+        w = hz_to_rad_s(self.natural_frequency_hz)
+        return np.array([w * w]), np.array([1.0, 2 * self.damping * w, w * w])
+
+    def statespace(self):
+        """(A, B, C) of the unsaturated lag, states [p] or [p, ṗ] (as integrated)."""
+        if self.order == 0:
+            return np.zeros((0, 0)), np.zeros((0, 1)), np.zeros((1, 0))
+        if self.order == 1:
+            tau = self.time_constant_s
+            return np.array([[-1 / tau]]), np.array([[1 / tau]]), np.array([[1.0]])
+        w = hz_to_rad_s(self.natural_frequency_hz)
+        return (np.array([[0.0, 1.0], [-w * w, -2 * self.damping * w]]),
+                np.array([[0.0], [w * w]]), np.array([[1.0, 0.0]]))
+
+    def to_core(self):
+        a = _core.Actuator()
+        a.order = int(self.order)
+        a.time_constant = float(self.time_constant_s)
+        a.natural_frequency = hz_to_rad_s(float(self.natural_frequency_hz))
+        a.damping = float(self.damping)
+        a.p_min, a.p_max = float(self.p_min_pa), float(self.p_max_pa)
+        a.rate_limit = float(self.rate_limit_pa_s)
+        return a

@@ -1,0 +1,56 @@
+"""Figures from sweep datasets (``rotordyn plot DIR --kind ...``): each kind checks that the
+dataset holds what it needs and says so in one line (InputError, exit 2) otherwise."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from rotordyn.plot._style import require
+from rotordyn.plot.cascade import waterfall
+from rotordyn.plot.frequency import campbell_arrays
+from rotordyn.plot.maps import equilibrium_loci, stability_map
+
+KINDS = ("stability-map", "equilibrium", "campbell", "waterfall")
+WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
+
+
+def campbell(df: pd.DataFrame, ax=None, rotor_only: bool = True):
+    """Campbell diagram from a stability sweep over speed (modes by their ``mode_id`` when
+    tracked, else by their slot), coloured by log decrement."""
+    require({"freq_hz", "log_dec", "whirl"} <= set(df.columns),
+            "campbell: the dataset has no modes (freq_hz, log_dec, whirl); run a stability "
+            "sweep over speed_hz")
+    d = df[df["status"] == "ok"]
+    if rotor_only and "kind" in d:
+        d = d[d["kind"] == "rotor"]
+    speeds = np.sort(d["speed_hz"].unique())
+    require(speeds.size >= 2, f"campbell: needs a sweep over 2 or more speeds, got "
+                              f"{speeds.size} (a one-speed sweep has no Campbell diagram)")
+    others = [c for c in ("chamber_pressure_pa", "config_ay_m") if c in d and d[c].nunique() > 1]
+    require(not others, f"campbell: expected speed_hz as the only varying input, also varying: "
+                        f"{others}")
+    key = "mode_id" if "mode_id" in d else "mode"
+    d = d.assign(_w=d["whirl"].astype(str).map(WHIRL_CODE).astype(float))
+    piv = {c: d.pivot_table(index="speed_hz", columns=key, values=c).reindex(speeds)
+           for c in ("freq_hz", "log_dec", "_w")}
+    return campbell_arrays(speeds, piv["freq_hz"].to_numpy(), piv["log_dec"].to_numpy(),
+                           piv["_w"].to_numpy(), ax=ax, critical=None)
+
+
+def plot_dataset(df: pd.DataFrame, kind: str, out: str, **kwargs) -> str:
+    """Draw ``kind`` from a sweep dataset and save it to ``out`` (PNG or SVG)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    require(kind in KINDS, f"--kind: expected one of {KINDS}, got {kind!r}")
+    require(str(out).lower().endswith((".png", ".svg", ".pdf")),
+            f"--out: expected a .png, .svg or .pdf file name, got {out!r}")
+    fn = {"stability-map": stability_map, "equilibrium": equilibrium_loci,
+          "campbell": campbell, "waterfall": waterfall}[kind]
+    ax = fn(df, **kwargs)
+    ax.figure.savefig(out)
+    plt.close(ax.figure)
+    return out

@@ -1,0 +1,101 @@
+"""A drawing of the rotor from the model: shaft sections to scale (axial and radial axes in mm,
+each to its own scale, stated on the axes), disks, bearings and supports at their stations,
+station numbers."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotordyn.plot._style import PAGE_IN, new_axes, paper_style
+
+
+def disk_radius_m(disk) -> float:
+    """Equivalent solid-disk outer radius from the polar inertia: r = sqrt(2 I_p / m)."""
+    return float(np.sqrt(2 * disk.ip_kg_m2 / disk.mass_kg)) if disk.mass_kg > 0 else 0.0
+
+
+KIND_LABEL = {"rigid": "ball bearing (rigid in x, y)", "linear": "linear support (spring)",
+              "journal": "journal bearing", "active": "active journal bearing"}
+
+
+def support_items(system):
+    """[(station, label, kind)] of the supports and fluid-film bearings."""
+    from rotordyn.model.bearings import ActiveJournalBearing
+
+    out = []
+    for s in system.supports:
+        lab = "ball bearing (rigid in x, y)" if s.type == "rigid" else \
+            f"linear support (k = {max(s.kxx_n_per_m, s.kyy_n_per_m):.3g} N/m)"
+        out.append((s.station, s.name or lab, s.type))
+    for b in system.bearings:
+        kind = "active" if isinstance(b, ActiveJournalBearing) else "journal"
+        lab = ("active journal bearing" if kind == "active" else "journal bearing") + \
+            f" (D = {b.diameter_m * 1e3:g} mm, c = {b.clearance_m * 1e6:g} µm)"
+        out.append((b.station, b.name or lab, kind))
+    return out
+
+
+SUPPORT_STYLE = {"rigid": ("^", "tab:blue"), "linear": ("^", "tab:green"),
+                 "journal": ("s", "tab:orange"), "active": ("D", "tab:red")}
+
+
+@paper_style
+def rotor_drawing(system, ax=None, title: str | None = None, stations: bool = True):
+    """Draw ``system``'s rotor: sections (hollow ones with their bore), disks, bearings."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch, Rectangle
+
+    ax = new_axes(ax, width=PAGE_IN, aspect=0.32)
+    rotor = system.rotor
+    zs = rotor.station_positions_m() * 1e3
+    rmax = max(s.outer_diameter_m for s in rotor.sections) / 2 * 1e3
+    for i, s in enumerate(rotor.sections):
+        ro, ri = s.outer_diameter_m / 2 * 1e3, s.inner_diameter_m / 2 * 1e3
+        ax.add_patch(Rectangle((zs[i], -ro), zs[i + 1] - zs[i], 2 * ro, fc="0.82", ec="0.25",
+                               lw=0.6))
+        if ri > 0:
+            ax.add_patch(Rectangle((zs[i], -ri), zs[i + 1] - zs[i], 2 * ri, fc="white",
+                                   ec="0.25", lw=0.4, hatch="...."))
+    handles = [Patch(fc="0.82", ec="0.25", label="shaft section (to scale)")]
+    if any(s.inner_diameter_m > 0 for s in rotor.sections):
+        handles.append(Patch(fc="white", ec="0.25", hatch="....", label="bore"))
+    width = 0.012 * zs[-1]
+    top = rmax
+    for d in rotor.disks:
+        r = disk_radius_m(d) * 1e3
+        top = max(top, r)
+        ax.add_patch(Rectangle((zs[d.station] - width / 2, -r), width, 2 * r, fc="tab:gray",
+                               ec="k", lw=0.6))
+        ax.annotate(f"{d.mass_kg:.3g} kg", (zs[d.station] + width / 2, r * 0.8), xytext=(2, 0),
+                    textcoords="offset points", ha="left", va="center", fontsize=6)
+    if rotor.disks:
+        handles.append(Patch(fc="tab:gray", ec="k", label="disk (equivalent solid radius)"))
+    seen = set()
+    for st, lab, kind in support_items(system):
+        mk, col = SUPPORT_STYLE[kind]
+        y = -top * 1.25
+        ax.plot([zs[st]], [y], marker=mk, color=col, ms=7, ls="")
+        ax.plot([zs[st], zs[st]], [y, -rmax], color=col, lw=0.8)
+        ax.annotate(lab, (zs[st], y), xytext=(0, -7), textcoords="offset points", ha="center",
+                    va="top", fontsize=5.5, color=col)
+        if kind not in seen:
+            handles.append(Line2D([], [], marker=mk, color=col, ls="", ms=6,
+                                  label=KIND_LABEL[kind]))
+            seen.add(kind)
+    if stations:
+        for k, z in enumerate(zs):
+            ax.annotate(str(k), (z, top * 1.12), ha="center", va="bottom", fontsize=6,
+                        color="0.3")
+        ax.plot(zs, np.full(zs.size, top * 1.08), "|", color="0.3", ms=4)
+        handles.append(Line2D([], [], marker="|", color="0.3", ls="", label="station (number)"))
+    ax.axhline(0.0, color="0.5", lw=0.5, ls="-.")
+    ax.set_xlim(zs[0] - 0.03 * zs[-1], zs[-1] * 1.03)
+    ax.set_ylim(-top * 1.85, top * 1.45)
+    ax.set_xlabel("axial position (mm)")
+    ax.set_ylabel("radius (mm)")
+    ax.grid(False)
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=6,
+              borderaxespad=0)
+    ax.set_title(title or f"{system.name or 'rotor'}: {zs[-1]:.0f} mm, {system.mass_kg:.2f} kg, "
+                          f"{rotor.n_elements} elements (radial scale exaggerated)")
+    return ax

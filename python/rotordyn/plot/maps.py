@@ -1,0 +1,169 @@
+"""Stability maps over two inputs (paper Fig. 9/10): colour = largest real part of the
+eigenvalues with a colour bar in 1/s, the boundary Re λ = 0 drawn, the unstable side hatched,
+failed points marked; equilibrium loci in units of the clearance with the clearance circle
+(paper Fig. 7/8)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from rotordyn.plot._style import COLUMN_IN, new_axes, paper_style, require
+
+AXIS_LABEL = {"speed_hz": "rotor speed W (Hz)", "chamber_pressure_pa": "chamber pressure p_c (MPa)",
+              "config_ay_m": "housing offset a_y (mm)"}
+AXIS_SCALE = {"speed_hz": 1.0, "chamber_pressure_pa": 1e-6, "config_ay_m": 1e3}
+AXIS_SHORT = {"speed_hz": ("W", "Hz"), "chamber_pressure_pa": ("p_c", "MPa"),
+              "config_ay_m": ("a_y", "mm")}
+
+
+def varying(df: pd.DataFrame) -> list[str]:
+    """The input columns that take more than one value."""
+    return [c for c in ("config_ay_m", "speed_hz", "chamber_pressure_pa")
+            if c in df and df[c].nunique() > 1]
+
+
+@paper_style
+def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, title=None):
+    """Map of max Re λ (1/s) on the grid ``x`` (n_x,) × ``y`` (n_y,), ``max_real`` (n_x, n_y),
+    in the inputs' own units (``xname``/``yname`` are column names such as
+    ``chamber_pressure_pa``). ``failed``: (k, 2) points without a result (marked ×)."""
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import TwoSlopeNorm
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    Z = np.asarray(max_real, dtype=float)
+    require(Z.ndim == 2 and min(Z.shape) >= 2,
+            f"stability-map: needs at least 2 values of each varying input, got grid {Z.shape}")
+    ax = new_axes(ax, width=COLUMN_IN * 1.25, aspect=0.8)
+    X, Y = np.meshgrid(np.asarray(x) * AXIS_SCALE[xname], np.asarray(y) * AXIS_SCALE[yname],
+                       indexing="ij")
+    lo, hi = np.nanmin(Z), np.nanmax(Z)
+    lo = min(lo, -1e-9)
+    hi = max(hi, 1e-9)
+    norm = TwoSlopeNorm(vcenter=0.0, vmin=lo, vmax=hi)
+    m = ax.pcolormesh(X, Y, Z, cmap="RdBu_r", norm=norm, shading="nearest")
+    cb = ax.figure.colorbar(m, ax=ax, pad=0.02)
+    cb.set_label("largest real part of the eigenvalues, max Re λ (1/s)")
+    handles = []
+    if lo < 0 < hi and np.isfinite(Z).sum() > 3:
+        ax.contourf(X, Y, np.nan_to_num(Z, nan=-np.inf), levels=[0.0, np.inf], colors="none",
+                    hatches=["////"])
+        ax.contour(X, Y, Z, levels=[0.0], colors="k", linewidths=1.8)
+        handles.append(Line2D([], [], color="k", lw=1.8, label="stability boundary, Re λ = 0"))
+        handles.append(Patch(facecolor="none", edgecolor="k", hatch="////",
+                             label="unstable side (Re λ > 0)"))
+    else:
+        handles.append(Patch(facecolor="none", edgecolor="none",
+                             label="stable everywhere" if hi <= 1e-9 else "unstable everywhere"))
+    if failed is not None and len(failed):
+        fp = np.asarray(failed, dtype=float)
+        ax.plot(fp[:, 0] * AXIS_SCALE[xname], fp[:, 1] * AXIS_SCALE[yname], "x", color="0.2",
+                ms=4)
+        handles.append(Line2D([], [], ls="", marker="x", color="0.2",
+                              label="no equilibrium / contact"))
+    ax.set_xlabel(AXIS_LABEL[xname])
+    ax.set_ylabel(AXIS_LABEL[yname])
+    ax.legend(handles=handles, loc="best")
+    ax.grid(False)
+    if title:
+        ax.set_title(title)
+    return ax
+
+
+def stability_map(df: pd.DataFrame, ax=None, rotor_only: bool = True):
+    """Stability map from a stability sweep dataset (two varying inputs)."""
+    axes = varying(df)
+    require(len(axes) == 2, f"stability-map: expected a stability sweep with exactly two "
+                            f"varying inputs, got {axes or 'none'}")
+    require("eig_real_1_per_s" in df, "stability-map: the dataset has no eigenvalues "
+                                      "(eig_real_1_per_s); run a stability sweep")
+    d = df[df["status"] == "ok"]
+    if rotor_only and "kind" in d:
+        d = d[d["kind"] == "rotor"]
+    g = d.groupby(axes)["eig_real_1_per_s"].max().unstack()
+    pts = df.groupby(axes)["status"].apply(lambda s: (s != "ok").all())
+    failed = np.array([k for k, bad in pts.items() if bad], dtype=float).reshape(-1, 2)
+    return stability_map_grid(g.index.to_numpy(), g.columns.to_numpy(), g.to_numpy(),
+                              xname=axes[0], yname=axes[1], ax=ax, failed=failed)
+
+
+@paper_style
+def equilibrium_loci(df: pd.DataFrame, ax=None, bearing: str | None = None):
+    """Journal centre x/c against y/c (one curve per value of the outer varying input), with
+    the clearance circle; arrows show the direction of the inner input."""
+    from matplotlib.lines import Line2D
+
+    require("x_over_c" in df, "equilibrium: the dataset has no journal positions (x_over_c); "
+                              "run an equilibrium sweep")
+    axes = varying(df)
+    require(bool(axes), "equilibrium: expected at least one varying input")
+    if bearing is None and "bearing" in df:
+        bearing = df["bearing"].iloc[0]
+    if bearing is not None and "bearing" in df:
+        df = df[df["bearing"] == bearing]
+    ax = new_axes(ax, width=COLUMN_IN * 1.2, aspect=0.9)
+    th = np.linspace(0, 2 * np.pi, 361)
+    ax.plot(np.cos(th), np.sin(th), color="0.4", lw=0.8)
+    handles = [Line2D([], [], color="0.4", lw=0.8, label="clearance circle (e = c)")]
+    outer = axes[0] if len(axes) > 1 else None
+    inner = axes[-1]
+    groups = df.groupby(outer) if outer else [(None, df)]
+    for i, (key, g) in enumerate(groups):
+        ok = g[g["status"] == "ok"].sort_values(inner)
+        if outer:
+            sym, unit = AXIS_SHORT[outer]
+            lab = f"{sym} = {key * AXIS_SCALE[outer]:g} {unit}"
+        else:
+            lab = "equilibrium locus"
+        ln, = ax.plot(ok["x_over_c"], ok["y_over_c"], "o-", ms=2.5, color=f"C{i % 10}",
+                      label=lab)
+        handles.append(ln)
+        if len(ok) >= 2:
+            a, b = ok.iloc[-2], ok.iloc[-1]
+            ax.annotate("", (b["x_over_c"], b["y_over_c"]), (a["x_over_c"], a["y_over_c"]),
+                        arrowprops=dict(arrowstyle="->", color=f"C{i % 10}", lw=1.0))
+        bad = g[g["status"] != "ok"]
+        if len(bad):
+            ax.plot(bad["x_over_c"], bad["y_over_c"], "x", color=f"C{i % 10}", ms=4)
+    sym, unit = AXIS_SHORT[inner]
+    handles.append(Line2D([], [], ls="", marker=r"$\rightarrow$", color="k", ms=8,
+                          label=f"increasing {sym} ({unit})"))
+    ax.set_aspect("equal")
+    ax.set_xlim(-1.08, 1.08)
+    ax.set_ylim(-1.08, 1.08)
+    ax.set_xlabel("journal x / c (–), horizontal")
+    ax.set_ylabel("journal y / c (–), vertical up")
+    if bearing:
+        ax.set_title(f"equilibrium loci: {bearing}")
+    ax.legend(handles=handles, loc="lower left", fontsize=6)
+    return ax
+
+
+@paper_style
+def boundary_curve(result, ax=None):
+    """A :class:`rotordyn.results.BoundaryResult`: the threshold of ``vary`` along ``along``,
+    the unstable side hatched."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    ax = new_axes(ax, width=COLUMN_IN * 1.2)
+    t = result.table[result.table["status"] == "ok"].sort_values(result.along)
+    xs = AXIS_SCALE.get(result.along, 1.0)
+    ys = AXIS_SCALE.get(result.vary, 1.0)
+    x, y = t[result.along].to_numpy() * xs, t[result.vary].to_numpy() * ys
+    ax.plot(x, y, "ko-", ms=3)
+    handles = [Line2D([], [], color="k", marker="o", ms=3, label="threshold of instability")]
+    if len(t):
+        side = t["stable_side"].iloc[0]
+        y0, y1 = ax.get_ylim()
+        lim = y0 if side == "above" else y1
+        ax.fill_between(x, y, lim, facecolor="none", edgecolor="k", hatch="////", lw=0)
+        ax.set_ylim(y0, y1)
+        handles.append(Patch(facecolor="none", edgecolor="k", hatch="////",
+                             label=f"unstable (stable {side})"))
+    ax.set_xlabel(AXIS_LABEL.get(result.along, result.along))
+    ax.set_ylabel(AXIS_LABEL.get(result.vary, result.vary))
+    ax.legend(handles=handles, loc="best")
+    return ax

@@ -1,0 +1,195 @@
+"""Adaptive stability boundary (paper Fig. 9/10 at the resolution of a fine grid for a few
+percent of its points).
+
+The coarse grid of the spec's two axes ``x``, ``y`` is evaluated first (max Re λ at each
+point). A cell whose four corners do not all share one state (stable, unstable, failed) holds
+the boundary: it is split in two along each axis whose step is still above the fine grid's,
+and the new corners are evaluated; this repeats until the mixed cells are one fine step wide.
+The fine grid has ``resolution`` points per axis and nests the coarse one (the ratio of steps
+is a power of two). The boundary is the zero contour of max Re λ over the evaluated fine
+points (linear interpolation on each cell edge), stored as polylines in ``_boundary.parquet``;
+the evaluated points are the dataset's rows, with the ``level`` that asked for them.
+
+Limitation (as any marching refinement): a stable or unstable island smaller than a coarse
+cell, whose corners all share one state, is not seen; choose the coarse grid accordingly.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+
+from rotordyn.errors import InputError
+from rotordyn.sweep.spec import _axis
+from rotordyn.sweep.store import Store
+from rotordyn.sweep.work import Job
+
+BOUNDARY = "_boundary.parquet"
+
+
+def fine_axes(spec) -> tuple[dict, dict]:
+    """(ordered fine axes: fixed axes first, then x, then y; per-axis coarse step in fine
+    index units)."""
+    x, y, res = spec.options["x"], spec.options["y"], spec.options["resolution"]
+    fixed = {k: val for k, val in spec.axes.items() if k not in (x, y)}
+    for k, val in fixed.items():
+        if len(val) != 1:
+            raise InputError(f"grid.{k}: a boundary sweep takes one value for every axis but "
+                             f"{x} and {y}, got {len(val)}")
+    ax = dict(fixed)
+    step = {}
+    for a in (x, y):
+        c = spec.axes[a]
+        ratio = (res - 1) // (len(c) - 1)
+        if ratio & (ratio - 1):
+            raise InputError(f"options.resolution: ({res} - 1) / ({len(c)} - 1) = {ratio} "
+                             f"must be a power of two for grid.{a}")
+        f = _axis(a, {"start": c[0], "stop": c[-1], "num": res})
+        if any(abs(f[i * ratio] - c[i]) > 1e-12 * max(1.0, abs(c[i])) for i in range(len(c))):
+            raise InputError(f"grid.{a}: the boundary's coarse grid must be a "
+                             "{start, stop, num} range (evenly spaced)")
+        ax[a] = f
+        step[a] = ratio
+    return ax, step
+
+
+def _classify(table) -> dict[int, tuple[int, float, float]]:
+    """point_id -> (state: 0 stable, 1 unstable, 2 failed; max Re λ; its frequency)."""
+    pid = table.column("point_id").to_numpy()
+    st = table.column("status").cast("string").to_numpy(zero_copy_only=False)
+    y = table.column("max_real_1_per_s").to_numpy(zero_copy_only=False)
+    fr = table.column("freq_hz").to_numpy(zero_copy_only=False)
+    out = {}
+    for p, s, v, f in zip(pid, st, y, fr):
+        ok = s in ("ok", "contact") and v is not None and math.isfinite(v)
+        out[int(p)] = ((0 if v < 0 else 1) if ok else 2, float(v) if ok else math.nan,
+                       float(f) if ok else math.nan)
+    return out
+
+
+def polylines(xs, ys, z) -> list[np.ndarray]:
+    """Zero contour of ``z`` (nx, ny; NaN = not evaluated) as (k, 2) polylines."""
+    import contourpy
+
+    zm = np.ma.masked_invalid(z)
+    gen = contourpy.contour_generator(np.asarray(ys), np.asarray(xs), zm,
+                                      line_type=contourpy.LineType.Separate)
+    return [ln[:, ::-1] for ln in gen.lines(0.0) if len(ln) >= 2]
+
+
+def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None, threads=None,
+                 resume=True, progress=None, worker_timeout=30.0):
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    import rotordyn
+    from rotordyn.sweep.runner import (Progress, SweepInterrupted, SweepResult, _Dask,
+                                       _Threads, group_size)
+
+    ax, step = fine_axes(spec)
+    x, y = spec.options["x"], spec.options["y"]
+    nx, ny = len(ax[x]), len(ax[y])
+    header = {**header, "axes": ax, "n_points": None, "n_chunks": None, "group": None}
+    store = Store(out, header, resume=resume, group=1)
+    job = Job(spec.name, model_toml, spec.analysis, spec.options, ax)
+    job.key = header["spec_hash"]
+    job.meta = {"sweep_id": spec.name, "spec_hash": header["spec_hash"],
+                "model_hash": header["model_hash"], "rotordyn": rotordyn.__version__,
+                "units": header["units"]}
+    base = int(np.ravel_multi_index(tuple(0 for _ in ax), tuple(len(v) for v in ax.values())))
+
+    def pid(i, j):
+        return base + i * ny + j
+
+    sx, sy = step[x], step[y]
+    pts = {(i, j) for i in range(0, nx, sx) for j in range(0, ny, sy)}
+    cells = [(i, j) for i in range(0, nx - 1, sx) for j in range(0, ny - 1, sy)]
+    state: dict[int, tuple] = {}
+    cid = 0
+    ex = None
+    bar = Progress(1, 0, {}, enabled=None if progress is None else bool(progress))
+    try:
+        level = 0
+        while True:
+            new = sorted(pid(i, j) for i, j in pts if pid(i, j) not in state)
+            chunks = [(cid + k, new[a:a + spec.chunk_size])
+                      for k, a in enumerate(range(0, len(new), spec.chunk_size))]
+            cid += len(chunks)
+            bar.n += len(chunks)
+            todo = []
+            done = store.done_chunks()
+            for c, pl in chunks:
+                t = store.table(c) if c in done else None
+                if t is not None and sorted(t.column("point_id").to_pylist()) == pl:
+                    state.update(_classify(t))
+                    bar.update({})
+                else:
+                    todo.append((c, 0, 0, pl))
+            if todo:
+                job.level = level
+                if ex is None:
+                    ex = (_Threads(threads) if threads is not None else
+                          _Dask(scheduler, workers or min(len(todo), os.cpu_count() or 1),
+                                worker_timeout, bar))
+                for c, (table, cnt) in ex.map(job, todo):
+                    store.add(c, table, cnt, 0)
+                    state.update(_classify(table))
+                    bar.update(cnt)
+            if sx == 1 and sy == 1:
+                break
+            mixed = []
+            for i, j in cells:
+                cs = {state[pid(a, b)][0] for a in (i, min(i + sx, nx - 1))
+                      for b in (j, min(j + sy, ny - 1))}
+                if len(cs) > 1:
+                    mixed.append((i, j))
+            hx, hy = max(1, sx // 2), max(1, sy // 2)
+            cells, pts = [], set()
+            for i, j in mixed:
+                for a in range(i, i + sx, hx):
+                    for b in range(j, j + sy, hy):
+                        cells.append((a, b))
+                        pts.update({(a, b), (a + hx, b), (a, b + hy), (a + hx, b + hy)})
+            sx, sy = hx, hy
+            level += 1
+            if not cells:
+                break
+    except KeyboardInterrupt:
+        bar.close()
+        store.close()
+        raise SweepInterrupted(f"interrupted: {len(store.done_chunks())} chunks saved in "
+                               f"{str(out)!r}; run the same command again to resume") from None
+    finally:
+        if ex is not None:
+            ex.close()
+    try:
+        bar.close()
+        store.group = group_size(cid, spec.max_files)
+        store.compact_complete(cid)
+        z = np.full((nx, ny), np.nan)
+        for p, (s, v, _) in state.items():
+            i, j = divmod(p - base, ny)
+            z[i, j] = v
+        lines = polylines(ax[x], ax[y], z)
+        rows = {"line": [], "vertex": [], x: [], y: []}
+        for k, ln in enumerate(lines):
+            rows["line"] += [k] * len(ln)
+            rows["vertex"] += list(range(len(ln)))
+            rows[x] += ln[:, 0].tolist()
+            rows[y] += ln[:, 1].tolist()
+        t = pa.table({"line": pa.array(rows["line"], pa.int64()),
+                      "vertex": pa.array(rows["vertex"], pa.int64()),
+                      x: pa.array(rows[x], pa.float64()), y: pa.array(rows[y], pa.float64())})
+        buf = pa.BufferOutputStream()
+        pq.write_table(t, buf)
+        store._atomic(BOUNDARY, buf.getvalue().to_pybytes())
+        entries = store.chunk_entries()
+        counts = {k: sum(c.get(k, 0) for c in entries.values())
+                  for k in ("ok", "failed", "unstable")}
+        man = {**header, "n_chunks": cid, "n_points": len(state), "fine_points": nx * ny}
+        return SweepResult(Path(out), man, len(entries), cid, counts)
+    finally:
+        store.close()

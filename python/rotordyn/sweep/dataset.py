@@ -1,0 +1,106 @@
+"""Reading a sweep directory: ``rotordyn.sweep.open(OUT)`` gives the rows (exactly what
+``pandas.read_parquet(OUT)`` gives), the manifest, the axes and helpers that pivot a map onto
+its axes."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from rotordyn.errors import InputError
+from rotordyn.sweep.store import read_manifest
+
+BOUNDARY = "_boundary.parquet"
+
+
+@dataclass
+class SweepDataset:
+    """A sweep directory opened for reading.
+
+    frame : the rows, in point order (pandas.read_parquet of the directory).
+    manifest : the ``_rotordyn_sweep.json`` contents (spec, model, versions, units).
+    axes : {axis: values} in expansion order.
+    """
+
+    out: Path
+    frame: pd.DataFrame
+    manifest: dict
+
+    @property
+    def axes(self) -> dict:
+        return self.manifest.get("axes", {})
+
+    @property
+    def complete(self) -> bool:
+        return self.frame["chunk_id"].nunique() == self.manifest.get("n_chunks")
+
+    @property
+    def units(self) -> dict:
+        return {k: val["units"] for k, val in self.manifest.get("units", {}).items()}
+
+    def per_point(self, value: str = "max_real_1_per_s", how: str = "first") -> pd.DataFrame:
+        """One row per point: the axes and ``value`` (reduced over a point's rows by
+        ``how``: first, max, min, mean)."""
+        keys = ["point_id"] + [a for a in self.axes]
+        g = self.frame.groupby(keys, observed=True, sort=True)[value]
+        return getattr(g, how)().reset_index()
+
+    def pivot(self, value: str = "max_real_1_per_s", x: str | None = None,
+              y: str | None = None, how: str = "first", **fixed) -> pd.DataFrame:
+        """A 2-D map of ``value`` on axes ``x`` (rows) and ``y`` (columns), the other axes
+        fixed by keyword (``speed_hz=50.0``) or required to have one value. Missing or failed
+        points are NaN."""
+        axes = list(self.axes)
+        varying = [a for a in axes if len(self.axes[a]) > 1 and a not in fixed]
+        if x is None or y is None:
+            if len(varying) < 2:
+                raise InputError(f"pivot: expected two varying axes, got {varying}")
+            x = x or [a for a in varying if a != y][0]
+            y = y or [a for a in varying if a != x][0]
+        for a in (x, y):
+            if a not in axes:
+                raise InputError(f"pivot: {a!r} is not an axis (axes: {axes})")
+        rest = [a for a in varying if a not in (x, y)]
+        if rest:
+            raise InputError(f"pivot: fix the other varying axes by keyword: {rest}")
+        df = self.frame
+        for k, val in fixed.items():
+            if k not in axes:
+                raise InputError(f"pivot: {k!r} is not an axis (axes: {axes})")
+            df = df[df[k] == val]
+        df = df[df["status"].isin(["ok", "contact"])]
+        g = df.groupby([x, y], observed=True)[value]
+        m = getattr(g, how)().unstack(y)
+        return m.reindex(index=self.axes[x], columns=self.axes[y])
+
+    def boundary(self) -> pd.DataFrame:
+        """Boundary polylines of a ``boundary`` sweep: (line, vertex, x, y)."""
+        p = self.out / BOUNDARY
+        if not p.is_file():
+            raise InputError(f"boundary: {str(self.out)!r} is not a boundary sweep")
+        return pd.read_parquet(p)
+
+
+def open_dataset(out) -> SweepDataset:
+    """Open a sweep directory written by :func:`rotordyn.sweep.run_sweep`."""
+    out = Path(out)
+    manifest, entries = read_manifest(out)
+    files = [out / e["file"] for e in entries]
+    if not files:
+        raise InputError(f"dir: {str(out)!r} holds no finished chunk yet")
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    try:
+        table = pa.concat_tables([pq.read_table(f) for f in files])
+    except (OSError, pa.ArrowException) as exc:
+        raise InputError(f"dir: {str(out)!r} has a damaged part ({exc}); run the sweep "
+                         "again to verify and recompute it") from None
+    return SweepDataset(out, table.to_pandas(), manifest)
+
+
+def _np(x):
+    return np.asarray(x)
