@@ -47,13 +47,13 @@ def _save(ax, path: str) -> None:
     print(f"wrote {path}", file=sys.stderr)
 
 
-def _check_fig(path, flag: str = "--plot") -> None:
-    """Check an output figure path before any solve (see :func:`_figure_path`); draw with Agg."""
+def _check_fig(path) -> None:
+    """Check a --plot file before any solve (folder, format) and select the Agg backend."""
+    if path is not None:
+        _figure_path("--plot", path)
     import matplotlib
 
     matplotlib.use("Agg")
-    if path is not None:
-        _figure_path(flag, path)
 
 
 def _cmd_validate(args) -> int:
@@ -202,8 +202,8 @@ def _cmd_stability(args) -> int:
 
 
 def _cmd_campbell(args) -> int:
-    speeds = _speeds(args.speeds_hz)
     _check_fig(args.plot)
+    speeds = _speeds(args.speeds_hz)
     s = rotordyn.models.load(args.model)
     if s.bearings:
         c = rotordyn.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m)
