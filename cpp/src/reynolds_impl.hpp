@@ -133,6 +133,7 @@ struct ReynoldsSolver::Impl {
   void predict_active(LinearSystem& S);
   std::unique_ptr<ReynoldsSolver> coarse;  // Swift–Stieber solver on the halved grid
   bool coarse_usable = false;
+  bool predict = true;  // coarse-grid prediction on; off: start from the empty set
   int coarse_n_circ = 0, coarse_n_axial = 0;
   RowMatrixXd hc, hdc;                     // film sampled on the coarse nodes
   void solve_reynolds(LinearSystem& S);  // Swift–Stieber LCP by primal–dual active set

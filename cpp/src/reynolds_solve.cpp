@@ -34,6 +34,10 @@ void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
 // Active unknowns are decoupled in place (identity row/column): the analysed pattern never
 // changes.
 void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
+  if (!predict) {
+    std::fill(S.active.begin(), S.active.end(), 0);
+    return;
+  }
   if (coarse_usable) {
     // Coarse grid Nc × nac (about half in each direction); coarse node jc sits at fine
     // position jc·N/Nc (exactly every other node when N is even), likewise along z. The film
