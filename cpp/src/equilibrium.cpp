@@ -105,7 +105,12 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
         for (int k = 0; k < 3; ++k) {
           linearize_last_solve(false, KH, nullptr);
           const Eigen::VectorXd dr = (model_.K + KH).partialPivLu().solve(-R);
-          if (!dr.allFinite() || inf_norm(dr) <= 1e-15 * std::max(inf_norm(rs), 1e-300)) return;
+          // Only a small correction (a well-conditioned Jacobian; in a nearly flat direction
+          // the step would amplify round-off instead of removing it), and only while the
+          // residual falls by half or more.
+          const double scale = std::max(inf_norm(rs), 1e-300);
+          if (!dr.allFinite() || inf_norm(dr) <= 1e-15 * scale || inf_norm(dr) > 1e-6 * scale)
+            return;
           const Eigen::VectorXd r_try = rs + dr;
           Eigen::VectorXd H_try;
           try {
@@ -116,7 +121,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
           }
           const Eigen::VectorXd R_try = resid(r_try, H_try);
           const double res_try = inf_norm(R_try) / out.load_scale;
-          if (!(res_try <= res)) {
+          if (!(res_try <= 0.5 * res)) {
             film_forces(rs, zero, omega);  // leave the films at the returned point
             return;
           }

@@ -117,10 +117,10 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
       if (S.active[i]) {
         const double mu_i = cell_residual(n, p);  // multiplier ∝ (A p − b)_i
         next[i] = mu_i >= -tol_mu ? 1 : 0;
-        degenerate[i] = mu_i <= tol_mu ? 1 : 0;
+        degenerate[i] = mu_i == 0.0 ? 1 : 0;
       } else {
         next[i] = p[n] < -tol_p ? 1 : 0;
-        degenerate[i] = p[n] <= tol_p ? 1 : 0;
+        degenerate[i] = p[n] == 0.0 ? 1 : 0;
       }
       if (next[i] != S.active[i]) changed = true;
     }
