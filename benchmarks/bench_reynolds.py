@@ -381,11 +381,12 @@ def main(argv=None):
         print(f"ROSS FluidFlow {grid[0]}x{grid[1]} vs ours (gumbel, no groove), wall (CPU) per "
               f"call, median of {args.repeat} interleaved rounds:\n"
               f"  force: ROSS {rw * 1e3:.1f} ms ({rc * 1e3:.1f}); ours {fw * 1e6:.0f} us "
-              f"({fc * 1e6:.0f}) reusing the solver = {rw / fw:.0f}x, {nw * 1e6:.0f} us "
-              f"({nc * 1e6:.0f}) with a new bearing per point = {rw / nw:.0f}x\n"
+              f"({fc * 1e6:.0f}) reusing the solver = {rw / fw:.0f}x wall ({rc / fc:.0f}x CPU), "
+              f"{nw * 1e6:.0f} us ({nc * 1e6:.0f}) with a new bearing per point = "
+              f"{rw / nw:.0f}x wall ({rc / nc:.0f}x CPU)\n"
               f"  K,C:   ROSS {kw * 1e3:.0f} ms ({kcpu * 1e3:.0f}); ours {cw * 1e6:.0f} us "
-              f"({cc * 1e6:.0f}) = {kw / cw:.0f}x;  |F| ROSS {res['force_n']:.1f} N, ours "
-              f"{f_ours:.1f} N")
+              f"({cc * 1e6:.0f}) = {kw / cw:.0f}x wall ({kcpu / cc:.0f}x CPU);  |F| ROSS "
+              f"{res['force_n']:.1f} N, ours {f_ours:.1f} N")
     footer()
     return 0
 
