@@ -3,6 +3,7 @@
 // the relaxation coefficient P_m.
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -101,10 +102,20 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       // which depends on the starting point (a warm start may change the cost, never the
       // answer beyond round-off).
       auto polish_root = [&]() {
-        if (!polish) return;
+        if (!polish || !opt.polish) return;
         for (int k = 0; k < 3; ++k) {
           linearize_last_solve(false, KH, nullptr);
-          const Eigen::VectorXd dr = (model_.K + KH).partialPivLu().solve(-R);
+          const Eigen::MatrixXd J = model_.K + KH;
+          if (k == 0) {
+            // Only where the root is well conditioned (cond(J) < 1e6): with a nearly singular
+            // Jacobian (e.g.
+            // a very stiff pivot beside a soft film) the step is round-off amplified, not
+            // removed, and the tolerance-converged point is kept.
+            if (J.rows() > 200) return;
+            const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(J).singularValues();
+            if (!(sv.size() > 0 && sv(sv.size() - 1) > 1e-6 * sv(0))) return;
+          }
+          const Eigen::VectorXd dr = J.partialPivLu().solve(-R);
           // Only a small correction (a well-conditioned Jacobian; in a nearly flat direction
           // the step would amplify round-off instead of removing it), and only while the
           // residual falls by half or more.

@@ -72,6 +72,10 @@ struct EquilibriumOptions {
   int max_iter = 100;          ///< Newton iterations (successive: 500× this)
   double pm = -1.0;            ///< P_m of eq. 16 (successive substitution); < 0: automatic
   double contact_fraction = 0.02;  ///< h_min below this fraction of c → status "contact"
+  /// After converging to tol, full Newton steps down to the round-off floor where the root is
+  /// well conditioned, so that the answer does not depend on the starting point (warm start)
+  /// beyond round-off. rotordyn.equilibrium sets it; bearing-element tables leave it off.
+  bool polish = false;
 };
 
 struct EquilibriumResult {
