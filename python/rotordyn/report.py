@@ -51,7 +51,7 @@ def _fmt_row(cells, widths):
     return " ".join(f"{c:>{w}}" for c, w in zip(cells, widths))
 
 
-def run(model: str, out: str, html: str | None = None) -> int:
+def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) -> int:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -157,6 +157,11 @@ def run(model: str, out: str, html: str | None = None) -> int:
             _calibrations_side_by_side(say, outdir)
 
     (outdir / "report.txt").write_text("\n".join(lines) + "\n")
+    if html:
+        from rotordyn.report_html import write_html
+
+        write_html(model, html, text_lines=lines, operating_speed_hz=operating_speed_hz)
+        print(f"wrote {html}", file=sys.stderr)
     print(f"wrote {outdir}/report.txt and tables/figures", file=sys.stderr)
     return 0
 
