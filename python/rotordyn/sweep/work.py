@@ -224,6 +224,8 @@ def _eigen(asm, e, f, opts, n_modes):
                       asm.rotor.rot_pairs())
     lam = np.asarray(res.eigenvalues)
     phi = np.asarray(res.modes)
+    if not np.all(np.isfinite(lam)):  # never a non-finite eigenvalue with status ok
+        raise ArithmeticError("non-finite eigenvalues")
     sl = [i for bc in asm.bearings for i in bc.sleeve]
     kin = np.real(np.einsum("ik,ij,jk->k", phi.conj(), M, phi))
     kin_s = (np.real(np.einsum("ik,ij,jk->k", phi[sl].conj(), M[np.ix_(sl, sl)], phi[sl]))
@@ -453,16 +455,20 @@ def _wf_rows(job, variants, chunk_id, lo, hi, rows):
         except (RotordynError, ArithmeticError, ValueError) as exc:
             rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
             continue
-        if tr.status != "ok":
+        if tr.status not in LINEARISABLE:  # "contact": integrated from a contact equilibrium
             rows.append(_fail(row, tr.status if tr.status in STATUS else "error", tr.message))
             continue
         freq, ax = tr.spectrum(last_fraction=0.5, axis="x")
         _, ay_ = tr.spectrum(last_fraction=0.5, axis="y")
-        keep = freq <= float(opts.get("max_harmonic", 4.0)) * f
+        # max_frequency_hz: every speed's spectrum over the same span (a waterfall's traces
+        # then line up); else up to max_harmonic × speed
+        fmax = opts.get("max_frequency_hz")
+        keep = freq <= (float(fmax) if fmax is not None
+                        else float(opts.get("max_harmonic", 4.0)) * f)
         for fr, a1, a2 in zip(freq[keep], ax[keep], ay_[keep]):
             rows.append({**row, "freq_hz": float(fr), "amplitude_x_m": float(a1),
-                         "amplitude_y_m": float(a2), "order": float(fr / f), "status": "ok",
-                         "message": ""})
+                         "amplitude_y_m": float(a2), "order": float(fr / f),
+                         "status": tr.status, "message": tr.message})
 
 
 def _start(asm, f, pc, a):
