@@ -33,6 +33,9 @@ max_files = 3
 config_ay_m = [-1.85e-3, -1.0e-3, 0.0]
 chamber_pressure_pa = {start = 0.0, stop = 0.25e6, num = 6}
 speed_hz = 50.0
+
+[options]
+track = false  # chunks of chunk_size points (not whole p_c lines), to test the bookkeeping
 """
 
 
