@@ -89,8 +89,22 @@ def test_controller_objects_accept_python_control_and_check_sizes(unstable_plant
         closed_loop(unstable_plant, Controller.from_lti(tf, [("journal", 0)]))  # 1 input
     kz = Controller.from_lti(control.c2d(sys, 1e-4), [("journal", 0)])
     assert kz.discrete and kz.sample_time_s == 1e-4
+    # Sampled-data loop (ZOH): the least-damped eigenvalue converges to the continuous loop's
+    # as T -> 0. The tuned PD places two eigenvalues almost on top of each other (−9.614 and
+    # −9.617 1/s, the optimum of the least damping), and a near-double eigenvalue moves as
+    # √(perturbation): observed 6.6 % at T = 1e-4 s, 1.8 % at 1e-5 s.
+    kt, clt = tune_pd(unstable_plant)
+    errs = []
+    for T in (1e-4, 1e-5):
+        kzt = Controller.from_lti(control.c2d(kt.to_control(), T), [("journal", 0)])
+        clz = closed_loop(unstable_plant, kzt)
+        assert clz.stable
+        errs.append(abs(clz.max_real / clt.max_real - 1))
+    assert errs[1] < 0.03 and errs[1] < errs[0] / 2
+    from rotordyn.control.closedloop import closed_loop_matrix
+
     with pytest.raises(rd.InputError, match="sample_time_s"):
-        closed_loop(unstable_plant, kz)
+        closed_loop_matrix(unstable_plant, kz)
 
 
 def test_modal_truncation_states_its_error(unstable_plant):
