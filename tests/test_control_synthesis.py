@@ -114,3 +114,25 @@ def test_modal_truncation_states_its_error(unstable_plant):
     kq = lqg(pr)
     assert kq.n_states == info["order"]
     assert closed_loop(unstable_plant, kq).stable  # the reduced design works on the full plant
+
+
+def test_balanced_truncation_obeys_its_hankel_bound(unstable_plant):
+    """Glover's bound ‖G − G_r‖∞ ≤ 2 Σ dropped Hankel singular values (stable part; the
+    unstable part is kept whole, so the reduced plant keeps the unstable poles exactly). The
+    measured error is the max over a 400-point grid, so it can only under-estimate the norm:
+    it must lie below the bound."""
+    from rotordyn.control.reduction import balanced_truncation
+
+    p = unstable_plant
+    unstable = np.sort_complex(p.poles[p.poles.real > 0])
+    errs = []
+    for order in (8, 12):
+        r, info = balanced_truncation(p, order)
+        assert r.A.shape == (order, order)
+        assert info["hinf_error_scaled"] <= info["bound_scaled"] * (1 + 1e-9)
+        ru = np.sort_complex(np.linalg.eigvals(r.A)[np.linalg.eigvals(r.A).real > 0])
+        assert np.allclose(ru, unstable, rtol=1e-8)
+        errs.append(info["relative_error"])
+    assert errs[1] < errs[0] < 0.05
+    with pytest.raises(rd.InputError, match="order"):
+        balanced_truncation(p, 1)  # fewer states than the unstable part
