@@ -84,6 +84,9 @@ def test_controller_objects_accept_python_control_and_check_sizes(unstable_plant
     k2 = Controller.from_lti(sys, [("journal", 0)])
     assert np.allclose(closed_loop(unstable_plant, k).eigenvalues.real.max(),
                        closed_loop(unstable_plant, k2).eigenvalues.real.max())
+    # python-control systems are accepted directly (the plant's measurements as inputs)
+    assert np.isclose(closed_loop(unstable_plant, sys).max_real,
+                      closed_loop(unstable_plant, k).max_real)
     tf = control.tf([1e3], [1e-3, 1])
     with pytest.raises(rd.InputError, match="controller: expected 2 inputs"):
         closed_loop(unstable_plant, Controller.from_lti(tf, [("journal", 0)]))  # 1 input

@@ -168,6 +168,12 @@ def test_discrete_controller_with_tiny_sample_time_matches_continuous(rig):
     d = 0.05 * C_RIG
     assert np.abs(a.r - ol.r).max() > 0.05 * d  # the feedback acts
     assert np.abs(a.r - b.r).max() < 0.03 * d
+    # the python-control system itself is accepted, with the measurements it reads
+    a2 = rd.transient(rig, 0.02, 50.0, 0.15e6, AY, controller=cont.to_control(),
+                      measurements=meas, **kw)
+    assert np.array_equal(a2.r, a.r)
+    with pytest.raises(rd.InputError, match="measurements"):
+        rd.transient(rig, 0.02, 50.0, 0.15e6, AY, controller=cont.to_control(), **kw)
 
 
 def test_saturation_and_rate_limits_hold_in_every_sample(rig):
