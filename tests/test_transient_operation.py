@@ -161,17 +161,15 @@ def test_discrete_controller_with_tiny_sample_time_matches_continuous(rig):
                       np.asarray(kz.C), np.hstack([np.zeros((1, 1)), np.asarray(kz.D)]), meas,
                       sample_time_s=Ts)
     kw = dict(disturbance_m=(0.0, 0.05 * C_RIG), n_out=41, rtol=1e-8, atol_m=1e-12)
-    a = rd.transient(rig, 0.02, 50.0, 0.15e6, AY, controller=cont, **kw)
+    # the continuous law given as the python-control system itself, with its measurements
+    a = rd.transient(rig, 0.02, 50.0, 0.15e6, AY, controller=cont.to_control(),
+                     measurements=meas, **kw)
     b = rd.transient(rig, 0.02, 50.0, 0.15e6, AY, controller=disc, **kw)
     ol = rd.transient(rig, 0.02, 50.0, 0.15e6, AY, **kw)
     assert a.status == b.status == "ok"
     d = 0.05 * C_RIG
     assert np.abs(a.r - ol.r).max() > 0.05 * d  # the feedback acts
     assert np.abs(a.r - b.r).max() < 0.03 * d
-    # the python-control system itself is accepted, with the measurements it reads
-    a2 = rd.transient(rig, 0.02, 50.0, 0.15e6, AY, controller=cont.to_control(),
-                      measurements=meas, **kw)
-    assert np.array_equal(a2.r, a.r)
     with pytest.raises(rd.InputError, match="measurements"):
         rd.transient(rig, 0.02, 50.0, 0.15e6, AY, controller=cont.to_control(), **kw)
 
