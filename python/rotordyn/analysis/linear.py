@@ -107,6 +107,11 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
     else:
         kin_s = np.zeros(len(lam))
     kind = np.where(kin_s > 0.5 * kin_total, "sleeve", "rotor").astype(object)
+    pads = [i for bc in asm.bearings for i in getattr(bc, "extra", ())]
+    if pads:  # tilting-pad coordinates: modes carried by the pads
+        Mp = lm.M[np.ix_(pads, pads)]
+        kin_p = np.real(np.einsum("ik,ij,jk->k", phi[pads].conj(), Mp, phi[pads]))
+        kind[kin_p > 0.5 * kin_total] = "pad"
     rotor = asm.rotor.expand(phi[:asm.n_rotor])
     n_nodes = rotor.shape[0] // 4
     sleeves = {bc.index: asm.sleeves[bc.index].transformation @ phi[list(bc.sleeve)]
@@ -124,7 +129,7 @@ def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float
     logarithmic decrements, whirl, mode shapes (full rotor and full sleeve); ``.stable`` when
     every real part is negative. ``n_modes``: lowest damped frequencies kept (default all)."""
     if n_modes is not None:
-        v.integer("n_modes", n_modes, lo=1)
+        v.integer("n_modes", n_modes, lo=1, hi=assembled(system).n)
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, method=method,
                    **equilibrium_kw)
     return _stability_from(assembled(system), lm, n_modes)
