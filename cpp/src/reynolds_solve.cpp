@@ -89,7 +89,12 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
 
 void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   base_rhs(S, S.rhs);
-  predict_active(S);
+  // In a continuation (a transient run: consecutive right-hand sides at nearby states) the
+  // last converged set is the better start; it leads to the same unique solution.
+  if (continuation && S.last_set.size() == static_cast<std::size_t>(S.n_unk))
+    S.active = S.last_set;
+  else
+    predict_active(S);
   double bscale = 0.0;
   for (int i = 0; i < S.n_unk; ++i) bscale = std::max(bscale, std::abs(S.rhs[i]));
   std::vector<char> next(S.n_unk), degenerate(S.n_unk);
@@ -136,10 +141,12 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
           ++n_biactive;
         }
       out.iterations = it;
+      if (continuation) S.last_set = S.active;
       return;
     }
     S.active.swap(next);
   }
+  S.last_set.clear();
   throw ConvergenceError("reynolds cavitation: active-set iteration did not converge in " +
                          std::to_string(max_iter) + " iterations");
 }

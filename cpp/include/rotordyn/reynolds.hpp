@@ -170,6 +170,14 @@ class ReynoldsSolver {
   /// complementarity solution is unique), different iteration counts.
   bool predict_cavitation() const;
   void set_predict_cavitation(bool on);
+  /// Continuation (off by default): a Swift–Stieber solve starts from the last converged
+  /// cavitation set instead of the prediction. For a sequence of nearby states (the right-hand
+  /// sides of one transient run) it saves most of the active-set iterations; the answer is the
+  /// same unique complementarity solution (equal to round-off at degenerate nodes, where
+  /// p = 0 and A p − b = 0 together). Switching it on or off forgets the stored sets, so a run
+  /// that switches it on at its start is a function of its own inputs.
+  bool continuation() const;
+  void set_continuation(bool on);
   /// When h and ∂h/∂t are mirror-symmetric about z = 0 (rigid aligned journal), solve on the
   /// half grid, for either parity of n_axial (exactly the same discrete solution, ~2-4x
   /// cheaper); on by default. Non-symmetric films and perturbations use the full grid.

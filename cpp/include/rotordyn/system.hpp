@@ -125,6 +125,10 @@ class SystemSolver {
                                 const Eigen::VectorXd& r0, const EquilibriumOptions& opt);
 
   int reynolds_solves() const { return solves_; }
+  /// Cavitation-set continuation in every film (ReynoldsSolver::set_continuation): on for the
+  /// duration of one transient run (consecutive right-hand sides at nearby states), off
+  /// otherwise. Each switch forgets the stored sets.
+  void set_film_continuation(bool on);
   /// Minimum film thickness of each film at positions r (n,), m, from the geometry alone
   /// (h = c + S r over the grid angles, eq. 3): no Reynolds solve, no change to the solvers'
   /// state. Equals last_h_min() after a solve at the same r; ≤ 0 means contact.
