@@ -1,6 +1,6 @@
 """Shared helpers for the benchmark scripts.
 
-Every benchmark follows the same protocol (docs/architecture.md, "Benchmarks"):
+Every benchmark follows the same protocol (docs/performance.md, "Protocol"):
 
 * one BLAS/OpenMP thread per side unless a row says otherwise (:func:`pin_threads`; call it
   before timing, it also limits libraries loaded later through the environment variables);

@@ -1,20 +1,27 @@
-"""Benchmark: Reynolds solver (force evaluation and K, C set) vs a SciPy implementation of the
-same discretisation, and ROSS's fluid-film bearing when ``ross`` is importable.
+"""Benchmark: Reynolds solver (force and (K, C) set) — cycled positions before/after the
+cavitation-set prediction, a SciPy implementation of the same discretisation, and ROSS's
+fluid-film bearing when a Python with ``ross`` is available.
 
-Run ``python benchmarks/bench_reynolds.py [--repeat 5] [--points 32]``. For every grid
-(36×8, 72×16, 144×32) and cavitation model it prints the median time
+Run ``python benchmarks/bench_reynolds.py [--repeat 5] [--points 32] [--ross-python PATH]``.
+Protocol (benchmarks/_common.py): one BLAS/OpenMP thread per side, the sides of each ratio
+timed in interleaved repeats, medians of the repeats, **wall time and CPU time of the same
+calls side by side** (ratios use wall time on both sides), the machine load before and after.
+For every grid (36×8, 72×16, 144×32, 144×31) and cavitation model it prints, per call:
 
-* per force evaluation along a small orbit (radius 2 % of c) around the operating point, so
-  each call is warm-started from the previous one as in an equilibrium iteration, transient or
-  sweep ("warm"), and with the warm start reset before every call ("cold");
-* per (K, C) set by the perturbation method (one factorisation, four right-hand sides);
-* the same two figures with the exact axial-symmetry reduction switched off ("full grid"):
-  the aligned rigid journal has a film symmetric about z = 0, which the solver detects and
-  solves on the half grid; the SciPy baseline always solves the full grid;
+* force at one fixed position (``same``), and cycling through ``--points`` random positions
+  (ε 0.05–0.85, any angle) — each solve on its own, as in a sweep or a transient;
+* the same cycled force and the (K, C) set (perturbation method: one solve, four linearised
+  solves) **before** (cavitation set started from the empty set, the algorithm before issue 11)
+  and **after** (started from the coarse-grid prediction), with the mean active-set
+  iterations of each — measured in the same run, interleaved;
+* the cycled force with the exact axial-symmetry reduction off (full grid);
+* the SciPy baseline (scipy.sparse + SuperLU, the same primal–dual active set / p–θ iteration,
+  checked against the C++ forces) on a quarter of the points.
 
-next to the SciPy baseline (scipy.sparse assembly, SuperLU factorisation, the same primal–dual
-active set / p–θ iteration in Python; checked against the C++ forces in the same run), both
-on one thread. Structure follows asv (``params`` × ``param_names``) with a warm-up call.
+ROSS rows: ``FluidFlow`` (ROSS 2.x, finite differences, solve-then-clip film, no groove) builds
+a new object per point; ours is given both reusing its solver and building a new bearing per
+point. ROSS runs in its own interpreter (``--ross-python``, never our dependency); its rounds
+are interleaved with ours and timed inside that interpreter with the same two clocks.
 """
 
 from __future__ import annotations
@@ -26,8 +33,8 @@ import statistics
 import sys
 import time
 
-os.environ.setdefault("OMP_NUM_THREADS", "1")
-os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from _common import footer, header, interleaved  # noqa: E402
 
 import numpy as np  # noqa: E402
 import scipy.sparse as sp  # noqa: E402
@@ -39,7 +46,7 @@ D, L, C_RAD, MU, SPEED_HZ = 0.05, 0.04, 3e-4, 0.04, 50.0
 POS = (1.0e-4, -1.5e-4)  # operating point, m (eccentricity ratio 0.60)
 GROOVES = [rotordyn.Groove(90.0, 0.0, 0.0)]
 
-params = ([(36, 8), (72, 16), (144, 32)], ["gumbel", "reynolds", "jfo"])
+params = ([(36, 8), (72, 16), (144, 32), (144, 31)], ["gumbel", "reynolds", "jfo"])
 param_names = ("grid", "cavitation")
 
 
@@ -200,18 +207,17 @@ def orbit(n_points):
     return [(POS[0] + r * math.cos(t), POS[1] + r * math.sin(t)) for t in a]
 
 
-CLOCK = time.thread_time  # CPU time of this thread (the machine may be shared); --wall for wall
+def cycled_positions(n, seed=0):
+    """n random journal positions, eccentricity ratio 0.05–0.85, any angle (m)."""
+    rng = np.random.default_rng(seed)
+    e = C_RAD * (0.05 + 0.8 * rng.random(n))
+    a = 2 * math.pi * rng.random(n)
+    return [(float(x), float(y)) for x, y in zip(e * np.cos(a), e * np.sin(a))]
 
 
-def median_time(fn, points, repeat):
-    fn(*points[0])  # warm-up
-    per = []
-    for _ in range(repeat):
-        t0 = CLOCK()
-        for q in points:
-            fn(*q)
-        per.append((CLOCK() - t0) / len(points))
-    return statistics.median(per)
+def us(t, n=1):
+    """'wall/CPU' in µs per call."""
+    return f"{t.wall / n * 1e6:6.0f}/{t.cpu / n * 1e6:<5.0f}"
 
 
 ROSS_SNIPPET = r"""
@@ -230,13 +236,15 @@ def force():
                    immediately_calculate_pressure_matrix_numerically=False)
     ff.calculate_pressure_matrix_numerical()
     return ff, calculate_oil_film_force(ff, force_type="numerical")
-tf, tk = [], []
+force()  # warm-up (imports, numba/JIT caches)
+tf, cf, tk, ck = [], [], [], []
 for _ in range(repeat):
-    t0 = time.perf_counter(); ff, F = force(); tf.append(time.perf_counter() - t0)
-for _ in range(max(1, repeat // 2)):
-    t0 = time.perf_counter(); calculate_stiffness_and_damping_coefficients(ff)
-    tk.append(time.perf_counter() - t0)
-print(json.dumps({"force_s": statistics.median(tf), "kc_s": statistics.median(tk),
+    t0, c0 = time.perf_counter(), time.process_time(); ff, F = force()
+    tf.append(time.perf_counter() - t0); cf.append(time.process_time() - c0)
+    t0, c0 = time.perf_counter(), time.process_time()
+    calculate_stiffness_and_damping_coefficients(ff)
+    tk.append(time.perf_counter() - t0); ck.append(time.process_time() - c0)
+print(json.dumps({"force_wall": tf, "force_cpu": cf, "kc_wall": tk, "kc_cpu": ck,
                   "force_n": float(math.hypot(F[0], F[1]))}))
 """
 
@@ -258,8 +266,10 @@ def bench_ross(n_circ, n_axial, repeat, ross_python=None):
     if exe is None:
         return None
     args = [str(v) for v in (D, L, C_RAD, MU, SPEED_HZ, *POS, n_circ, n_axial, repeat)]
+    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MKL_NUM_THREADS="1",
+               NUMBA_NUM_THREADS="1")
     r = subprocess.run([exe, "-c", ROSS_SNIPPET, *args], capture_output=True, text=True,
-                       timeout=3600)
+                       timeout=3600, env=env)
     if r.returncode != 0:
         return {"error": r.stderr.strip().splitlines()[-1] if r.stderr.strip() else "failed"}
     return json.loads(r.stdout.strip().splitlines()[-1])
@@ -268,88 +278,116 @@ def bench_ross(n_circ, n_axial, repeat, ross_python=None):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
-    ap.add_argument("--points", type=int, default=32, help="orbit points per repeat")
+    ap.add_argument("--points", type=int, default=32, help="cycled positions per repeat")
+    ap.add_argument("--grids", default="36x8,72x16,144x32,144x31")
+    ap.add_argument("--models", default="gumbel,reynolds,jfo")
     ap.add_argument("--no-scipy", action="store_true")
-    ap.add_argument("--wall", action="store_true", help="wall-clock instead of thread CPU time")
     ap.add_argument("--ross-python", default=None,
                     help="python of a venv with ross-rotordynamics (used if ross is not importable)")
     args = ap.parse_args(argv)
-    global CLOCK
-    if args.wall:
-        CLOCK = time.perf_counter
+    header("bench_reynolds: Reynolds film force and (K, C)")
     omega = 2 * math.pi * SPEED_HZ
-    pts = orbit(args.points)
+    pts = cycled_positions(args.points)
+    grids = [tuple(int(v) for v in g.split("x")) for g in args.grids.split(",")]
+    models = args.models.split(",")
     print(f"rotordyn {rotordyn.__version__}; D={D} L={L} c={C_RAD} mu={MU} speed={SPEED_HZ} Hz, "
-          f"journal at {POS} m, one supply line at 90 deg; times are medians of {args.repeat} "
-          f"repeats x {args.points} orbit points, one thread, "
-          f"{'wall-clock' if args.wall else 'thread CPU'} time")
-    hdr = (f"{'grid':>8} {'model':>9} | {'force warm':>10} {'force cold':>10} {'K,C':>9} | "
-           f"{'full-grid F':>10} {'KC':>9} | "
-           f"{'scipy F':>9} {'scipy KC':>9} {'x F':>6} {'x KC':>6} | {'max|dF|/|F|':>11}")
+          f"one supply line at 90 deg; per call, median of {args.repeat} interleaved repeats x "
+          f"{args.points} cycled positions; 'wall/CPU' in µs")
+    hdr = (f"{'grid':>8} {'model':>8} | {'F same':>12} | {'F cycled before':>15} "
+           f"{'after':>12} {'its':>9} | {'KC before':>12} {'after':>12} | {'F full grid':>12} | "
+           f"{'scipy F':>8} {'x F':>5} | {'dev':>7}")
     print(hdr)
     print("-" * len(hdr))
-    for grid in params[0]:
-        for cav in params[1]:
-            b = rotordyn.JournalBearing(diameter_m=D, length_m=L, clearance_m=C_RAD,
-                                        viscosity_pa_s=MU, n_circ=grid[0], n_axial=grid[1],
-                                        cavitation=cav, grooves=GROOVES)
-            s = b.solver()
-            t_warm = median_time(lambda x, y: s.force(x, y, 0.0, 0.0, omega), pts, args.repeat)
+    for grid in grids:
+        for cav in models:
+            mk = lambda: rotordyn.JournalBearing(  # noqa: E731
+                diameter_m=D, length_m=L, clearance_m=C_RAD, viscosity_pa_s=MU,
+                n_circ=grid[0], n_axial=grid[1], cavitation=cav, grooves=GROOVES)
+            s, s0, sf = mk().solver(), mk().solver(), mk().solver()
+            s0.predict_cavitation = False  # before: cavitation set from the empty set
+            sf.use_axial_symmetry = False
+            its = [np.mean([x.rigid(p, q, 0.0, 0.0, omega).iterations for p, q in pts])
+                   for x in (s0, s)]
 
-            def cold(x, y):
-                s.reset()
-                s.force(x, y, 0.0, 0.0, omega)
+            def loop(fn):
+                return lambda: [fn(p, q) for p, q in pts]
 
-            t_cold = median_time(cold, pts, args.repeat)
-            t_kc = median_time(lambda x, y: s.coefficients(x, y, omega), pts, args.repeat)
-            # the same without the exact axial-symmetry reduction (full grid, as SciPy does)
-            s.use_axial_symmetry = False
-            s.reset()
-            t_full = median_time(lambda x, y: s.force(x, y, 0.0, 0.0, omega), pts, args.repeat)
-            t_kc_full = median_time(lambda x, y: s.coefficients(x, y, omega), pts, args.repeat)
-            s.use_axial_symmetry = True
-            s.reset()
-            line = (f"{grid[0]:>4}x{grid[1]:<3} {cav:>9} | {t_warm * 1e6:>8.0f}us "
-                    f"{t_cold * 1e6:>8.0f}us {t_kc * 1e6:>7.0f}us | {t_full * 1e6:>8.0f}us "
-                    f"{t_kc_full * 1e6:>7.0f}us |")
-            if not args.no_scipy:
+            t = interleaved({
+                "same": lambda: [s.force(*POS, 0.0, 0.0, omega) for _ in pts],
+                "before": loop(lambda p, q: s0.force(p, q, 0.0, 0.0, omega)),
+                "after": loop(lambda p, q: s.force(p, q, 0.0, 0.0, omega)),
+                "kc_before": loop(lambda p, q: s0.coefficients(p, q, omega)),
+                "kc_after": loop(lambda p, q: s.coefficients(p, q, omega)),
+                "full": loop(lambda p, q: sf.force(p, q, 0.0, 0.0, omega)),
+            }, repeat=args.repeat)
+            n = len(pts)
+            line = (f"{grid[0]:>4}x{grid[1]:<3} {cav:>8} | {us(t['same'], n)} | "
+                    f"{us(t['before'], n):>15} {us(t['after'], n)} {its[0]:4.1f}>{its[1]:<4.1f}| "
+                    f"{us(t['kc_before'], n)} {us(t['kc_after'], n)} | {us(t['full'], n)} |")
+            if not args.no_scipy and grid[1] % 2 == 0:
                 ref = ScipyReynolds(grid[0], grid[1], cav)
-                sp_pts = pts[: max(4, len(pts) // 4)]
-                reps = max(1, args.repeat // 2)
-                t_sf = median_time(lambda x, y: ref.solve(x, y, 0.0, 0.0, omega), sp_pts, reps)
-                t_skc = median_time(lambda x, y: ref.coefficients(x, y, omega), sp_pts, reps)
+                sp = pts[: max(4, n // 4)]
+                ts = interleaved({"scipy": lambda: [ref.solve(p, q, 0.0, 0.0, omega)
+                                                    for p, q in sp],
+                                  "ours": lambda: [s.force(p, q, 0.0, 0.0, omega) for p, q in sp]},
+                                 repeat=max(1, args.repeat // 2))
                 f_py, _ = ref.solve(*POS, 0.0, 0.0, omega)
                 f_c = s.force(*POS, 0.0, 0.0, omega)
                 dev = np.linalg.norm(f_py - f_c) / np.linalg.norm(f_c)
-                K_py, C_py = ref.coefficients(*POS, omega)
-                K_c, C_c = b.coefficients(x_m=POS[0], y_m=POS[1], speed_hz=SPEED_HZ)
-                dev = max(dev, np.abs(K_py - K_c).max() / np.abs(K_c).max(),
-                          np.abs(C_py - C_c).max() / np.abs(C_c).max())
-                line += (f" {t_sf * 1e6:>7.0f}us {t_skc * 1e6:>7.0f}us {t_sf / t_warm:>5.0f}x "
-                         f"{t_skc / t_kc:>5.0f}x | {dev:>11.1e}")
+                line += (f" {ts['scipy'].wall / len(sp) * 1e6:6.0f}us "
+                         f"{ts['scipy'].wall / ts['ours'].wall:4.0f}x | {dev:7.1e}")
             print(line, flush=True)
-    rows = []
-    for grid in params[0][:2]:
-        res = bench_ross(grid[0], grid[1], args.repeat, args.ross_python)
-        if res is None:
-            print("ROSS: not importable and no --ross-python given; skipped")
-            break
-        if "error" in res:
-            print(f"ROSS {grid}: failed: {res['error']}")
-            continue
+    for grid in [g for g in grids if g in ((36, 8), (72, 16))]:
         b = rotordyn.JournalBearing(diameter_m=D, length_m=L, clearance_m=C_RAD,
                                     viscosity_pa_s=MU, n_circ=grid[0], n_axial=grid[1],
                                     cavitation="gumbel")
         s = b.solver()
-        t_f = median_time(lambda x, y: s.force(x, y, 0.0, 0.0, omega), pts, args.repeat)
-        t_k = median_time(lambda x, y: s.coefficients(x, y, omega), pts, args.repeat)
+
+        def fresh_force():
+            rotordyn.JournalBearing(diameter_m=D, length_m=L, clearance_m=C_RAD,
+                                    viscosity_pa_s=MU, n_circ=grid[0], n_axial=grid[1],
+                                    cavitation="gumbel").forces(x_m=POS[0], y_m=POS[1],
+                                                                speed_hz=SPEED_HZ)
+
+        ross = {"force_wall": [], "force_cpu": [], "kc_wall": [], "kc_cpu": []}
+        ours = {k: [] for k in ("f_reuse", "f_new", "kc")}
+        failed = None
+        for _ in range(args.repeat):  # interleaved rounds: ours, then one ROSS round
+            t = interleaved({"f_reuse": lambda: s.force(*POS, 0.0, 0.0, omega),
+                             "f_new": fresh_force,
+                             "kc": lambda: s.coefficients(*POS, omega)}, repeat=3)
+            for k in ours:
+                ours[k].append(t[k])
+            res = bench_ross(grid[0], grid[1], 1, args.ross_python)
+            if res is None or "error" in res:
+                failed = "not importable and no --ross-python given" if res is None else \
+                    res["error"]
+                break
+            for k in ross:
+                ross[k] += res[k]
+        if failed:
+            print(f"ROSS {grid[0]}x{grid[1]}: skipped ({failed})")
+            continue
+        med = statistics.median
+        rw, rc = med(ross["force_wall"]), med(ross["force_cpu"])
+        kw, kcpu = med(ross["kc_wall"]), med(ross["kc_cpu"])
+        fw = med(x.wall for x in ours["f_reuse"])
+        fc = med(x.cpu for x in ours["f_reuse"])
+        nw = med(x.wall for x in ours["f_new"])
+        nc = med(x.cpu for x in ours["f_new"])
+        cw = med(x.wall for x in ours["kc"])
+        cc = med(x.cpu for x in ours["kc"])
         f_ours = np.linalg.norm(b.forces(x_m=POS[0], y_m=POS[1], speed_hz=SPEED_HZ))
-        rows.append((grid, res, t_f, t_k, f_ours))
-    for grid, res, t_f, t_k, f_ours in rows:
-        print(f"ROSS FluidFlow {grid[0]}x{grid[1]} (wall time, new object per point, no groove): "
-              f"force {res['force_s'] * 1e3:.1f} ms vs ours (gumbel) {t_f * 1e6:.0f} us "
-              f"({res['force_s'] / t_f:.0f}x); K,C {res['kc_s'] * 1e3:.0f} ms vs {t_k * 1e6:.0f} us "
-              f"({res['kc_s'] / t_k:.0f}x); |F| ROSS {res['force_n']:.1f} N, ours {f_ours:.1f} N")
+        print(f"ROSS FluidFlow {grid[0]}x{grid[1]} vs ours (gumbel, no groove), wall (CPU) per "
+              f"call, median of {args.repeat} interleaved rounds:\n"
+              f"  force: ROSS {rw * 1e3:.1f} ms ({rc * 1e3:.1f}); ours {fw * 1e6:.0f} us "
+              f"({fc * 1e6:.0f}) reusing the solver = {rw / fw:.0f}x wall ({rc / fc:.0f}x CPU), "
+              f"{nw * 1e6:.0f} us ({nc * 1e6:.0f}) with a new bearing per point = "
+              f"{rw / nw:.0f}x wall ({rc / nc:.0f}x CPU)\n"
+              f"  K,C:   ROSS {kw * 1e3:.0f} ms ({kcpu * 1e3:.0f}); ours {cw * 1e6:.0f} us "
+              f"({cc * 1e6:.0f}) = {kw / cw:.0f}x wall ({kcpu / cc:.0f}x CPU);  |F| ROSS "
+              f"{res['force_n']:.1f} N, ours {f_ours:.1f} N")
+    footer()
     return 0
 
 

@@ -84,13 +84,30 @@ def test_controller_objects_accept_python_control_and_check_sizes(unstable_plant
     k2 = Controller.from_lti(sys, [("journal", 0)])
     assert np.allclose(closed_loop(unstable_plant, k).eigenvalues.real.max(),
                        closed_loop(unstable_plant, k2).eigenvalues.real.max())
+    # python-control systems are accepted directly (the plant's measurements as inputs)
+    assert np.isclose(closed_loop(unstable_plant, sys).max_real,
+                      closed_loop(unstable_plant, k).max_real)
     tf = control.tf([1e3], [1e-3, 1])
     with pytest.raises(rd.InputError, match="controller: expected 2 inputs"):
         closed_loop(unstable_plant, Controller.from_lti(tf, [("journal", 0)]))  # 1 input
     kz = Controller.from_lti(control.c2d(sys, 1e-4), [("journal", 0)])
     assert kz.discrete and kz.sample_time_s == 1e-4
+    # Sampled-data loop (ZOH): the least-damped eigenvalue converges to the continuous loop's
+    # as T -> 0. The tuned PD places two eigenvalues almost on top of each other (−9.614 and
+    # −9.617 1/s, the optimum of the least damping), and a near-double eigenvalue moves as
+    # √(perturbation): observed 6.6 % at T = 1e-4 s, 1.8 % at 1e-5 s.
+    kt, clt = tune_pd(unstable_plant)
+    errs = []
+    for T in (1e-4, 1e-5):
+        kzt = Controller.from_lti(control.c2d(kt.to_control(), T), [("journal", 0)])
+        clz = closed_loop(unstable_plant, kzt)
+        assert clz.stable
+        errs.append(abs(clz.max_real / clt.max_real - 1))
+    assert errs[1] < 0.03 and errs[1] < errs[0] / 2
+    from rotordyn.control.closedloop import closed_loop_matrix
+
     with pytest.raises(rd.InputError, match="sample_time_s"):
-        closed_loop(unstable_plant, kz)
+        closed_loop_matrix(unstable_plant, kz)
 
 
 def test_modal_truncation_states_its_error(unstable_plant):
@@ -100,3 +117,25 @@ def test_modal_truncation_states_its_error(unstable_plant):
     kq = lqg(pr)
     assert kq.n_states == info["order"]
     assert closed_loop(unstable_plant, kq).stable  # the reduced design works on the full plant
+
+
+def test_balanced_truncation_obeys_its_hankel_bound(unstable_plant):
+    """Glover's bound ‖G − G_r‖∞ ≤ 2 Σ dropped Hankel singular values (stable part; the
+    unstable part is kept whole, so the reduced plant keeps the unstable poles exactly). The
+    measured error is the max over a 400-point grid, so it can only under-estimate the norm:
+    it must lie below the bound."""
+    from rotordyn.control.reduction import balanced_truncation
+
+    p = unstable_plant
+    unstable = np.sort_complex(p.poles[p.poles.real > 0])
+    errs = []
+    for order in (8, 12):
+        r, info = balanced_truncation(p, order)
+        assert r.A.shape == (order, order)
+        assert info["hinf_error_scaled"] <= info["bound_scaled"] * (1 + 1e-9)
+        ru = np.sort_complex(np.linalg.eigvals(r.A)[np.linalg.eigvals(r.A).real > 0])
+        assert np.allclose(ru, unstable, rtol=1e-8)
+        errs.append(info["relative_error"])
+    assert errs[1] < errs[0] < 0.05
+    with pytest.raises(rd.InputError, match="order"):
+        balanced_truncation(p, 1)  # fewer states than the unstable part

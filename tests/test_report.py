@@ -87,3 +87,18 @@ def test_html_report_loads_in_chromium(report):
     assert p.returncode == 0, p.stderr[-2000:]
     assert p.stdout.count("<svg") >= 7 and "Campbell diagram" in p.stdout
     assert "Uncaught" not in p.stderr
+
+
+def test_text_report_shows_both_rig_calibrations(report):
+    """The two built-in calibrations side by side (issue 11): paper-rig misses the threshold
+    (0.057 vs 0.098 MPa) and fits Table 1; paper-rig-hs the other way round."""
+    out, stdout = report
+    assert "paper-rig-hs" in stdout and (out / "calibrations.csv").stat().st_size > 0
+    import pandas as pd
+
+    t = pd.read_csv(out / "calibrations.csv").set_index("quantity")
+    th = t.loc["threshold p_c (MPa)"]
+    assert abs(th["paper-rig-hs"] - 0.098) < 0.003 and abs(th["paper-rig"] - 0.057) < 0.003
+    table = t.drop(index="threshold p_c (MPa)")
+    assert (table["paper-rig"] - table["paper"]).abs().max() < 0.01
+    assert (table["paper-rig-hs"] - table["paper"]).abs().max() < 0.036

@@ -32,6 +32,9 @@ max_files = 4
 config_ay_m = [-1.85e-3, -1.0e-3, 0.0]
 chamber_pressure_pa = {start = 0.0, stop = 0.29e6, num = 30}
 speed_hz = 50.0
+
+[options]
+track = false  # chunks of chunk_size points (not whole p_c lines), to test the bookkeeping
 """
 
 
@@ -74,6 +77,7 @@ class Cluster:
                 p.wait(timeout=10)
             except subprocess.TimeoutExpired:
                 p.kill()
+                p.wait(timeout=30)
 
 
 def test_worker_without_rotordyn_is_refused(tmp_path):

@@ -33,6 +33,9 @@ max_files = 3
 config_ay_m = [-1.85e-3, -1.0e-3, 0.0]
 chamber_pressure_pa = {start = 0.0, stop = 0.25e6, num = 6}
 speed_hz = 50.0
+
+[options]
+track = false  # chunks of chunk_size points (not whole p_c lines), to test the bookkeeping
 """
 
 
@@ -160,21 +163,24 @@ def test_full_disk_and_unwritable(reference, tmp_path, monkeypatch):
         run_sweep(spec, tmp_path / "ro", threads=1)
 
 
-def test_ctrl_c_one_line_and_resumable(reference, tmp_path):
+@pytest.mark.parametrize("mode", [["--threads", "1"], ["--workers", "2"]])
+def test_ctrl_c_one_line_and_resumable(reference, tmp_path, mode):
+    """SIGINT to the whole process group (what Ctrl-C on a terminal does, worker processes
+    included): exit 130, one line on stderr, the lock released, the chunks kept."""
     spec, ref = reference
     out = tmp_path / "int"
     big = tmp_path / "big.toml"
     big.write_text(SPEC.replace("num = 6", "num = 60"))
     p = subprocess.Popen([sys.executable, "-m", "rotordyn.cli", "sweep", str(big), "--out",
-                          str(out), "--threads", "1"], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True)
+                          str(out), *mode], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, start_new_session=True)
     log = out / store_mod.LOG
     t0 = time.monotonic()
     while time.monotonic() - t0 < 60:
         if log.exists() and log.read_text().count("\n") >= 2:
             break
         time.sleep(0.05)
-    p.send_signal(signal.SIGINT)
+    os.killpg(p.pid, signal.SIGINT)
     _, err = p.communicate(timeout=60)
     assert p.returncode == 130, err
     lines = [ln for ln in err.splitlines() if ln.strip()]

@@ -121,3 +121,21 @@ def test_recorded_min_film_is_the_geometric_one(rig):
         np.testing.assert_allclose(geo, s.last_h_min, rtol=0, atol=1e-18)
     with pytest.raises(rd.InputError, match="r"):
         s.film_h_min(np.zeros(asm.n + 1))
+
+
+def test_a_run_does_not_depend_on_what_ran_before(rig):
+    """The films continue their cavitation sets from one right-hand side to the next inside a
+    run (ReynoldsSolver continuation, switched on afresh at the run's start): a run is a
+    function of its inputs, bit for bit, whatever the solver solved before; and the films are
+    back to predicted starts afterwards (an equilibrium after a run equals a fresh one)."""
+    args = (0.05, 50.0, 0.05e6, -1.85e-3)
+    kw = dict(disturbance_m=(0.0, 3e-5), n_out=101)
+    a = rd.transient(rig, *args, **kw)
+    e0 = rd.equilibrium(rig, 40.0, 0.1e6, -1.0e-3, warm_start=False)
+    rd.stability(rig, 70.0, 0.3e6, 0.0)
+    b = rd.transient(rig, *args, **kw)
+    assert a.status == b.status == "ok"
+    np.testing.assert_array_equal(a.r, b.r)
+    np.testing.assert_array_equal(a.h_min_m, b.h_min_m)
+    e1 = rd.equilibrium(rig, 40.0, 0.1e6, -1.0e-3, warm_start=False)
+    np.testing.assert_array_equal(e0.r, e1.r)

@@ -124,7 +124,10 @@ void bind_reynolds(py::module_& m) {
            "positions (n, 2); BatchResult.values (n, 10): Fx Fy Kxx Kxy Kyx Kyy Cxx Cxy Cyx Cyy.")
       .def_property("use_axial_symmetry", &RS::use_axial_symmetry, &RS::set_use_axial_symmetry,
                     "Solve symmetric films on the half grid (exact; default True).")
-      .def("reset", &RS::reset);
+      .def_property("predict_cavitation", &RS::predict_cavitation, &RS::set_predict_cavitation,
+                    "Start the cavitation set from a coarse-grid prediction (default True); "
+                    "False: from the empty set (benchmark baseline). Same answer either way.")
+      .def("reset", &RS::reset, "Drop the last solution (solves never depend on earlier calls).");
 }
 
 }  // namespace rotordyn::py_bind

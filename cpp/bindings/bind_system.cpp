@@ -44,7 +44,8 @@ void bind_system(py::module_& m) {
       .def_readwrite("tol", &EquilibriumOptions::tol)
       .def_readwrite("max_iter", &EquilibriumOptions::max_iter)
       .def_readwrite("pm", &EquilibriumOptions::pm)
-      .def_readwrite("contact_fraction", &EquilibriumOptions::contact_fraction);
+      .def_readwrite("contact_fraction", &EquilibriumOptions::contact_fraction)
+      .def_readwrite("polish", &EquilibriumOptions::polish);
 
   py::class_<EquilibriumResult>(m, "EquilibriumResult")
       .def_readonly("r", &EquilibriumResult::r)

@@ -3,6 +3,7 @@
 // the relaxation coefficient P_m.
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -101,11 +102,26 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       // which depends on the starting point (a warm start may change the cost, never the
       // answer beyond round-off).
       auto polish_root = [&]() {
-        if (!polish) return;
+        if (!polish || !opt.polish) return;
         for (int k = 0; k < 3; ++k) {
           linearize_last_solve(false, KH, nullptr);
-          const Eigen::VectorXd dr = (model_.K + KH).partialPivLu().solve(-R);
-          if (!dr.allFinite() || inf_norm(dr) <= 1e-15 * std::max(inf_norm(rs), 1e-300)) return;
+          const Eigen::MatrixXd J = model_.K + KH;
+          if (k == 0) {
+            // Only where the root is well conditioned (cond(J) < 1e6): with a nearly singular
+            // Jacobian (e.g.
+            // a very stiff pivot beside a soft film) the step is round-off amplified, not
+            // removed, and the tolerance-converged point is kept.
+            if (J.rows() > 200) return;
+            const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(J).singularValues();
+            if (!(sv.size() > 0 && sv(sv.size() - 1) > 1e-6 * sv(0))) return;
+          }
+          const Eigen::VectorXd dr = J.partialPivLu().solve(-R);
+          // Only a small correction (a well-conditioned Jacobian; in a nearly flat direction
+          // the step would amplify round-off instead of removing it), and only while the
+          // residual falls by half or more.
+          const double scale = std::max(inf_norm(rs), 1e-300);
+          if (!dr.allFinite() || inf_norm(dr) <= 1e-15 * scale || inf_norm(dr) > 1e-6 * scale)
+            return;
           const Eigen::VectorXd r_try = rs + dr;
           Eigen::VectorXd H_try;
           try {
@@ -116,7 +132,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
           }
           const Eigen::VectorXd R_try = resid(r_try, H_try);
           const double res_try = inf_norm(R_try) / out.load_scale;
-          if (!(res_try <= res)) {
+          if (!(res_try <= 0.5 * res)) {
             film_forces(rs, zero, omega);  // leave the films at the returned point
             return;
           }

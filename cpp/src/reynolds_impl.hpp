@@ -57,6 +57,7 @@ struct LinearSystem {
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
   bool lu_analysed = false;
   std::vector<char> active;    // unknown: 1 = p held at 0 (reynolds) / cavitated (jfo)
+  std::vector<char> last_set;  // the last converged Swift–Stieber set (continuation only)
   enum class Factor { none, ldlt, lu, static_lu } factor = Factor::none;
   Eigen::VectorXd rhs, sol;
 };
@@ -133,6 +134,8 @@ struct ReynoldsSolver::Impl {
   void predict_active(LinearSystem& S);
   std::unique_ptr<ReynoldsSolver> coarse;  // Swift–Stieber solver on the halved grid
   bool coarse_usable = false;
+  bool predict = true;  // coarse-grid prediction on; off: start from the empty set
+  bool continuation = false;  // start from the last converged set of this system (in a run)
   int coarse_n_circ = 0, coarse_n_axial = 0;
   RowMatrixXd hc, hdc;                     // film sampled on the coarse nodes
   void solve_reynolds(LinearSystem& S);  // Swift–Stieber LCP by primal–dual active set

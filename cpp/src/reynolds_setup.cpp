@@ -371,6 +371,13 @@ Cavitation ReynoldsSolver::cavitation() const { return impl_->cav; }
 int ReynoldsSolver::n_unknowns() const { return impl_->full.n_unk; }
 bool ReynoldsSolver::use_axial_symmetry() const { return impl_->use_symmetry; }
 void ReynoldsSolver::set_use_axial_symmetry(bool on) { impl_->use_symmetry = on; }
+bool ReynoldsSolver::predict_cavitation() const { return impl_->predict; }
+void ReynoldsSolver::set_predict_cavitation(bool on) { impl_->predict = on; }
+bool ReynoldsSolver::continuation() const { return impl_->continuation; }
+void ReynoldsSolver::set_continuation(bool on) {
+  impl_->continuation = on;
+  for (auto* S : {&impl_->full, &impl_->halfsys}) S->last_set.clear();
+}
 
 Eigen::VectorXd ReynoldsSolver::phi_rad() const {
   Eigen::VectorXd v(impl_->N);

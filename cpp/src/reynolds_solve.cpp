@@ -34,6 +34,10 @@ void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
 // Active unknowns are decoupled in place (identity row/column): the analysed pattern never
 // changes.
 void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
+  if (!predict) {
+    std::fill(S.active.begin(), S.active.end(), 0);
+    return;
+  }
   if (coarse_usable) {
     // Coarse grid Nc × nac (about half in each direction); coarse node jc sits at fine
     // position jc·N/Nc (exactly every other node when N is even), likewise along z. The film
@@ -85,7 +89,12 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
 
 void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   base_rhs(S, S.rhs);
-  predict_active(S);
+  // In a continuation (a transient run: consecutive right-hand sides at nearby states) the
+  // last converged set is the better start; it leads to the same unique solution.
+  if (continuation && S.last_set.size() == static_cast<std::size_t>(S.n_unk))
+    S.active = S.last_set;
+  else
+    predict_active(S);
   double bscale = 0.0;
   for (int i = 0; i < S.n_unk; ++i) bscale = std::max(bscale, std::abs(S.rhs[i]));
   std::vector<char> next(S.n_unk), degenerate(S.n_unk);
@@ -113,10 +122,10 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
       if (S.active[i]) {
         const double mu_i = cell_residual(n, p);  // multiplier ∝ (A p − b)_i
         next[i] = mu_i >= -tol_mu ? 1 : 0;
-        degenerate[i] = mu_i <= tol_mu ? 1 : 0;
+        degenerate[i] = mu_i == 0.0 ? 1 : 0;
       } else {
         next[i] = p[n] < -tol_p ? 1 : 0;
-        degenerate[i] = p[n] <= tol_p ? 1 : 0;
+        degenerate[i] = p[n] == 0.0 ? 1 : 0;
       }
       if (next[i] != S.active[i]) changed = true;
     }
@@ -132,10 +141,12 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
           ++n_biactive;
         }
       out.iterations = it;
+      if (continuation) S.last_set = S.active;
       return;
     }
     S.active.swap(next);
   }
+  S.last_set.clear();
   throw ConvergenceError("reynolds cavitation: active-set iteration did not converge in " +
                          std::to_string(max_iter) + " iterations");
 }

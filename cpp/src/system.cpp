@@ -126,6 +126,10 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
   last_omega_ = omega;
 }
 
+void SystemSolver::set_film_continuation(bool on) {
+  for (auto& f : films_) f->solver.set_continuation(on);
+}
+
 std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
   require(r.size() == model_.n(), shape_msg("r", model_.n(), 1, r.size(), 1));
   std::vector<double> out(model_.films.size());

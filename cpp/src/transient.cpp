@@ -285,6 +285,15 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   const double t_end = in.t_out(nt - 1);
   validate_operation(in.speed, in.pressure, in.actuator, in.controller, n, t_end);
 
+  // The films continue their cavitation sets from one right-hand side to the next for this
+  // run only (started afresh here, so the run is a function of its inputs; off again on exit,
+  // also by an exception).
+  struct Continuation {
+    SystemSolver& s;
+    explicit Continuation(SystemSolver& solver) : s(solver) { s.set_film_continuation(true); }
+    ~Continuation() { s.set_film_continuation(false); }
+  } continuation(solver);
+
   Ctx c;
   c.solver = &solver;
   c.in = &in;

@@ -14,8 +14,9 @@
 // second-order accurate; forces are integrated with the trapezoidal rule.
 //
 // A ReynoldsSolver is built once per (geometry, grid, cavitation model): it analyses the
-// sparse pattern once and refactors numerically per call; it keeps the last active set
-// (warm start) and the last factorisation for linearised solves. It is not thread-safe:
+// sparse pattern once and refactors numerically per call; it keeps the last solution and
+// factorisation for linearised solves. A solve never depends on earlier calls (its cavitation
+// set starts from a prediction of its own film: a coarse-grid solve). It is not thread-safe:
 // use one solver per thread (they share nothing).
 #pragma once
 #include <Eigen/Core>
@@ -160,11 +161,26 @@ class ReynoldsSolver {
   BatchResult batch_coefficients(const RowMatrixXd& positions, const Eigen::VectorXd& omegas,
                                  int n_threads = 1);
 
-  /// Forget the warm start (active set).
+  /// Drop the last solution (linearize() then needs a new solve). Solves never depend on
+  /// earlier calls: each starts its cavitation set from a prediction of its own inputs.
   void reset();
-  /// When h and ∂h/∂t are mirror-symmetric about z = 0 (rigid aligned journal) and n_axial is
-  /// even, solve on the half grid (exactly the same discrete solution, ~4x cheaper); on by
-  /// default. Non-symmetric films and perturbations always use the full grid.
+  /// Start the cavitation set from the coarse-grid prediction (default) or, when off, from
+  /// the empty set (the full-Sommerfeld solution: the pre-prediction algorithm, kept as the
+  /// in-run baseline of benchmarks/bench_reynolds.py). Same answer either way (the
+  /// complementarity solution is unique), different iteration counts.
+  bool predict_cavitation() const;
+  void set_predict_cavitation(bool on);
+  /// Continuation (off by default): a Swift–Stieber solve starts from the last converged
+  /// cavitation set instead of the prediction. For a sequence of nearby states (the right-hand
+  /// sides of one transient run) it saves most of the active-set iterations; the answer is the
+  /// same unique complementarity solution (equal to round-off at degenerate nodes, where
+  /// p = 0 and A p − b = 0 together). Switching it on or off forgets the stored sets, so a run
+  /// that switches it on at its start is a function of its own inputs.
+  bool continuation() const;
+  void set_continuation(bool on);
+  /// When h and ∂h/∂t are mirror-symmetric about z = 0 (rigid aligned journal), solve on the
+  /// half grid, for either parity of n_axial (exactly the same discrete solution, ~2-4x
+  /// cheaper); on by default. Non-symmetric films and perturbations use the full grid.
   bool use_axial_symmetry() const;
   void set_use_axial_symmetry(bool on);
 

@@ -72,6 +72,10 @@ struct EquilibriumOptions {
   int max_iter = 100;          ///< Newton iterations (successive: 500× this)
   double pm = -1.0;            ///< P_m of eq. 16 (successive substitution); < 0: automatic
   double contact_fraction = 0.02;  ///< h_min below this fraction of c → status "contact"
+  /// After converging to tol, full Newton steps down to the round-off floor where the root is
+  /// well conditioned, so that the answer does not depend on the starting point (warm start)
+  /// beyond round-off. rotordyn.equilibrium sets it; bearing-element tables leave it off.
+  bool polish = false;
 };
 
 struct EquilibriumResult {
@@ -121,6 +125,10 @@ class SystemSolver {
                                 const Eigen::VectorXd& r0, const EquilibriumOptions& opt);
 
   int reynolds_solves() const { return solves_; }
+  /// Cavitation-set continuation in every film (ReynoldsSolver::set_continuation): on for the
+  /// duration of one transient run (consecutive right-hand sides at nearby states), off
+  /// otherwise. Each switch forgets the stored sets.
+  void set_film_continuation(bool on);
   /// Minimum film thickness of each film at positions r (n,), m, from the geometry alone
   /// (h = c + S r over the grid angles, eq. 3): no Reynolds solve, no change to the solvers'
   /// state. Equals last_h_min() after a solve at the same r; ≤ 0 means contact.

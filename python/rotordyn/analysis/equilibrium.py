@@ -71,6 +71,7 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     opt.method, opt.tol, opt.max_iter = method, float(tol), int(max_iter)
     opt.pm = -1.0 if pm == "auto" else float(pm)
     opt.contact_fraction = float(contact_fraction)
+    opt.polish = True  # the answer is the root to round-off, not the first iterate within tol
     if asm.pad_penalty is not None and r_init.size == 0:
         # tilting pads: start from the pad-tilt homotopy (no jump onto an unloaded pad's
         # pressure-free branch); the equilibrium below is then solved on the true model

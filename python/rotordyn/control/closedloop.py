@@ -41,10 +41,50 @@ class ClosedLoopResult:
                 f"PM={self.phase_margin_deg:.3g}°, |S|max={self.peak_sensitivity:.3g})")
 
 
+def _discrete_loop(p, k, freqs_hz):
+    """Sampled-data loop of a discrete controller: the plant discretised exactly with a
+    zero-order hold (Φ = e^{AT}, Γ = ∫e^{Aτ}dτ B) and sampled at the controller's instants;
+    closed-loop z-eigenvalues mapped to s = ln z / T. Returns (A_cl (discrete), λ_s, L(e^{iωT}))
+    with the frequencies limited to below Nyquist."""
+    from scipy.linalg import expm
+
+    from rotordyn.errors import InputError
+
+    T = k.sample_time_s
+    Dr = p.info.get("feedthrough")
+    if Dr is not None and np.any(Dr):
+        raise InputError("controller.sample_time_s: a discrete controller on a reduced plant "
+                         "with feedthrough is not supported; use the full plant")
+    n, m = p.A.shape[0], 1
+    E = expm(np.block([[p.A, p.B], [np.zeros((m, n + m))]]) * T)
+    Phi, Gam = E[:n, :n], E[:n, n:]
+    C = p.C
+    nk = k.n_states
+    top = np.hstack([Phi + Gam @ k.D @ C, Gam @ k.C])
+    bot = np.hstack([k.B @ C, k.A])
+    Ad = np.vstack([top, bot]) if nk else Phi + Gam @ k.D @ C
+    z = np.linalg.eigvals(Ad).astype(complex)
+    lam = np.log(z) / T
+    f = np.asarray(freqs_hz, dtype=float)
+    f = f[f < 0.5 / T]
+    L = np.empty(f.size, dtype=complex)
+    for i, fi in enumerate(f):
+        zi = np.exp(2j * np.pi * fi * T)
+        G = C @ np.linalg.solve(zi * np.eye(n) - Phi, Gam)
+        K = k.D + (k.C @ np.linalg.solve(zi * np.eye(nk) - k.A, k.B) if nk else 0)
+        L[i] = -(K @ G)[0, 0]
+    return Ad, lam, L
+
+
 def closed_loop_matrix(p, k) -> np.ndarray:
     """State matrix of [x; x_k] for ẋ = A x + B u, y = C x, u = C_k x_k + D_k y,
     ẋ_k = A_k x_k + B_k y (continuous controllers; a discrete one via its ZOH continuous
     equivalent is not formed here)."""
+    if k.discrete:
+        from rotordyn.errors import InputError
+
+        raise InputError("controller.sample_time_s: a continuous closed-loop matrix needs a "
+                         "continuous controller (closed_loop() handles discrete ones)")
     A, B, C = p.A, p.B, p.C
     Dr = p.info.get("feedthrough")
     if Dr is not None and np.any(Dr):
@@ -76,21 +116,28 @@ def loop_response(p, k, freqs_hz) -> np.ndarray:
 
 def closed_loop(p, k, *, freqs_hz=None) -> ClosedLoopResult:
     """Closed loop of plant ``p`` (:func:`rotordyn.control.plant`) and controller ``k``
-    (:class:`rotordyn.control.Controller`, continuous). Margins from L on a log grid
+    (:class:`rotordyn.control.Controller`; a discrete one closes a sampled-data loop with the
+    plant discretised exactly under ZOH, eigenvalues mapped back by s = ln z / T, margins
+    below Nyquist). Margins from L on a log grid
     (default 0.1 Hz – 5 kHz, 4000 points): gain margin = 1/|L| where arg L crosses −180°
     (the smallest, inf if none), phase margin at |L| = 1 (the smallest)."""
+    from rotordyn.control.controller import Controller
     from rotordyn.errors import InputError
 
-    if k.discrete:
-        raise InputError("controller.sample_time_s: closed_loop analyses continuous "
-                         "controllers; use the continuous design (or control.d2c)")
+    if not isinstance(k, Controller):  # a python-control system reading the plant's outputs
+        k = Controller.from_lti(k, p.measurements)
     if k.n_inputs != p.C.shape[0]:
         raise InputError(f"controller: expected {p.C.shape[0]} inputs (the plant's "
                          f"measurements), got {k.n_inputs}")
-    Acl = closed_loop_matrix(p, k)
-    lam = np.linalg.eigvals(Acl)
     f = np.logspace(-1, np.log10(5000.0), 4000) if freqs_hz is None else np.asarray(freqs_hz)
-    L = loop_response(p, k, f)
+    if k.discrete:
+        Acl, lam, L = _discrete_loop(p, k, f)
+    else:
+        Acl = closed_loop_matrix(p, k)
+        lam = np.linalg.eigvals(Acl)
+        L = loop_response(p, k, f)
+    if k.discrete:
+        f = f[f < 0.5 / k.sample_time_s]
     ph = np.unwrap(np.angle(L))
     mag = np.abs(L)
     gm = np.inf

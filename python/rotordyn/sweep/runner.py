@@ -239,7 +239,11 @@ class _Dask:
 
         from dask.distributed import Client
 
-        logging.getLogger("distributed").setLevel(logging.ERROR)
+        # The driver reports failures itself; dask's own logging (tracebacks of closed
+        # connections when the sweep is interrupted) is silenced while the sweep runs.
+        self._log = logging.getLogger("distributed")
+        self._level = self._log.level
+        self._log.setLevel(logging.CRITICAL + 10)
         self.cluster = None
         if scheduler:
             progress.status(f"connecting to {scheduler}")
@@ -250,10 +254,23 @@ class _Dask:
         else:
             from dask.distributed import LocalCluster
 
+            import signal
+            import threading
+
             progress.status(f"starting {workers} worker processes")
             os.environ.setdefault("OMP_NUM_THREADS", "1")
-            self.cluster = LocalCluster(n_workers=workers, threads_per_worker=1,
-                                        processes=True, dashboard_address=None)
+            # Worker processes inherit an ignored SIGINT: Ctrl-C on the terminal reaches the
+            # whole process group, and only the driver should act on it (it stops the
+            # workers itself); otherwise each worker dies printing its own tracebacks.
+            main = threading.current_thread() is threading.main_thread()
+            old = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+            try:
+                self.cluster = LocalCluster(n_workers=workers, threads_per_worker=1,
+                                            processes=True, dashboard_address=None,
+                                            silence_logs=logging.CRITICAL)
+            finally:
+                if main:
+                    signal.signal(signal.SIGINT, old)
             self.client = Client(self.cluster)
         try:
             progress.status("checking workers")
@@ -282,6 +299,7 @@ class _Dask:
         if self.cluster is not None:
             with contextlib.suppress(Exception):
                 self.cluster.close(timeout=5)
+        self._log.setLevel(self._level)
 
 
 # -- the sweep ----------------------------------------------------------------------------

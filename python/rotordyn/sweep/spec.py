@@ -353,9 +353,11 @@ class SweepSpec:
             return "speed_hz"
         if self.analysis == "stability" and "line" in self.options:
             return self.options["line"]
-        if self.analysis == "stability" and self.options.get("track", True) \
-                and len(self.axes.get("speed_hz", ())) > 1:
-            return "speed_hz"
+        if self.analysis == "stability" and self.options.get("track", True):
+            if len(self.axes.get("speed_hz", ())) > 1:
+                return "speed_hz"
+            varying = [a for a, vals in self.axes.items() if len(vals) > 1]
+            return varying[-1] if varying else None  # modes tracked along the last one
         return None
 
     @property

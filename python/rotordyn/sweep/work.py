@@ -440,12 +440,16 @@ def _wf_rows(job, variants, chunk_id, lo, hi, rows):
             rows.append(_fail(row, "error", err))
             continue
         try:
-            f, pc, _ = _operating(asm, p)
+            f, pc, a = _operating(asm, p)
             v.positive("speed_hz", f)
+            r0 = _start(asm, f, pc, a)
+            if isinstance(r0, tuple):
+                rows.append(_fail(row, *r0))
+                continue
             revs = int(opts.get("revolutions", 60))
             spr = int(opts.get("samples_per_revolution", 64))
             ub = [tuple(u) for u in opts.get("unbalances", [])]
-            tr = rd.transient(asm.system, revs / f, f, pc, p.get("config_ay_m"),
+            tr = rd.transient(asm.system, revs / f, f, pc, p.get("config_ay_m"), r0=r0,
                               unbalances=ub, n_out=revs * spr + 1,
                               rtol=float(opts.get("rtol", 1e-6)))
         except (RotordynError, ArithmeticError, ValueError) as exc:
@@ -467,6 +471,16 @@ def _wf_rows(job, variants, chunk_id, lo, hi, rows):
                          "status": tr.status, "message": tr.message})
 
 
+def _start(asm, f, pc, a):
+    """The cold-started equilibrium a transient point starts from (not the thread's last
+    one: the rows must not depend on what ran before), or (status, message)."""
+    e = _equilibrium(asm, f, pc, a, None, {})
+    if e.status not in LINEARISABLE:
+        return (e.status if e.status in STATUS else "error",
+                f"no equilibrium to start from: {e.message}")
+    return np.asarray(e.r)
+
+
 def _runup_rows(job, variants, chunk_id, lo, hi, rows):
     """A nonlinear run-up (or coast-down) per point: Ω(t) ramps from start_hz to stop_hz at
     rate_hz_per_s (rotordyn.control.SpeedProfile); one row per revolution with its mean
@@ -480,14 +494,18 @@ def _runup_rows(job, variants, chunk_id, lo, hi, rows):
             rows.append(_fail(row, "error", err))
             continue
         try:
-            _, pc, _ = _operating(asm, {**p, "speed_hz": opts["start_hz"]})
+            _, pc, a = _operating(asm, {**p, "speed_hz": opts["start_hz"]})
             f0, f1, rate = opts["start_hz"], opts["stop_hz"], opts["rate_hz_per_s"]
+            r0 = _start(asm, f0, pc, a)
+            if isinstance(r0, tuple):
+                rows.append(_fail(row, *r0))
+                continue
             prof = SpeedProfile.ramp(f0, f1, rate)
             T = abs(f1 - f0) / rate
             spr = int(opts.get("samples_per_revolution", 32))
             revs = (f0 + f1) / 2 * T
             tr = rd.transient(asm.system, T, chamber_pressure_pa=pc,
-                              config_ay_m=p.get("config_ay_m"), speed=prof,
+                              config_ay_m=p.get("config_ay_m"), speed=prof, r0=r0,
                               unbalances=[tuple(u) for u in opts["unbalances"]],
                               n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)))
         except (RotordynError, ArithmeticError, ValueError) as exc:
