@@ -102,8 +102,9 @@ def bearing_payload(draw):
     c = geom["clearance_m"] if isinstance(geom["clearance_m"], float) and \
         geom["clearance_m"] > 0 else 3e-4
     if isinstance(geom["diameter_m"], float) and geom["diameter_m"] > 0:
-        geom["clearance_m"] = c = min(c, 0.05 * geom["diameter_m"]) if \
-            isinstance(geom["clearance_m"], float) else geom["clearance_m"]
+        c = min(c, 0.05 * geom["diameter_m"])
+        if isinstance(geom["clearance_m"], float):
+            geom["clearance_m"] = c
     if geom["cavitation"] == "jfo":
         import rotordyn as rd
 
