@@ -147,15 +147,16 @@ def test_fuzz_bearing(worker, p):
 @st.composite
 def system_payload(draw):
     a = draw(st.sampled_from(["equilibrium", "equilibrium", "stability", "stability",
-                              "linearize", "transient", "campbell", "threshold"]))
+                              "linearize", "transient", "campbell", "threshold", "unbalance",
+                              "statespace"]))
     speed = draw(number(-100.0, 300.0, special=False))
     pc = draw(number(0.0, 2e6, special=False))
     ay = draw(st.one_of(st.none(), number(-6e-3, 6e-3, special=False)))
     kw = {}
     if draw(st.integers(0, 3)) == 0:  # a quarter of the cases: one hostile operating value
-        hostile = draw(SPECIAL)
+        bad = draw(SPECIAL)
         which = draw(st.integers(0, 2))
-        speed, pc, ay = [hostile if i == which else x for i, x in enumerate((speed, pc, ay))]
+        speed, pc, ay = [bad if i == which else x for i, x in enumerate((speed, pc, ay))]
     if a == "equilibrium":
         if draw(st.booleans()):
             kw["method"] = draw(st.sampled_from(["newton", "successive", "magic"]))
@@ -185,6 +186,18 @@ def system_payload(draw):
                          max_size=2), SPECIAL))
         t_end = draw(st.one_of(st.floats(1e-4, 0.01), SPECIAL))
         return {"analysis": a, "op": [t_end, speed, pc, ay], "kw": kw}
+    if a == "unbalance":
+        speeds = draw(st.lists(st.floats(1.0, 200.0), min_size=1, max_size=3,
+                               unique=True).map(sorted))
+        ub = draw(st.lists(st.tuples(st.integers(0, 8), st.floats(0, 1e-3),
+                                     st.floats(-360, 360)), min_size=1, max_size=2))
+        args = draw(hostile({"unbalances": ub, "speeds_hz": speeds}))
+        kw = {"chamber_pressure_pa": pc, "config_ay_m": ay}
+        return {"analysis": a, "op": [args["unbalances"], args["speeds_hz"]], "kw": kw}
+    if a == "statespace":
+        kw = {"inputs": draw(st.sampled_from([("chamber_pressure",), (("force", 2),),
+                                             (("force", 1),), ("magic",), None]))}
+        return {"analysis": a, "op": [speed, pc, ay], "kw": kw}
     if a == "campbell":
         speeds = draw(st.one_of(
             st.lists(st.floats(-50, 300), min_size=1, max_size=3, unique=True).map(sorted),
