@@ -42,7 +42,7 @@ $(STAMPS)/install: $(STAMPS)/venv $(SOURCES)
 
 run: $(STAMPS)/install
 	@mkdir -p $(OUT)
-	$(VENV)/bin/rotordyn report paper-rig --out $(OUT)
+	$(VENV)/bin/rotordyn report paper-rig --out $(OUT) --html $(OUT)/report.html
 
 test-cpp: $(STAMPS)/install
 	$(VENV)/bin/ctest --test-dir build/py --output-on-failure

@@ -38,8 +38,12 @@ void bind_bearings(py::module_& m) {
 
   m.def("operating_points", &operating_points, py::arg("model"), py::arg("omegas"),
         py::arg("a"), py::arg("r0"), py::arg("options"), py::arg("n_threads") = 1,
-        py::call_guard<py::gil_scoped_release>(),
+        py::arg("pad_penalty") = Eigen::MatrixXd(), py::call_guard<py::gil_scoped_release>(),
         "Equilibrium and linearisation at each speed (rad/s), parallel over speeds.");
+  m.def("homotopy_start", &homotopy_start, py::arg("model"), py::arg("omega"),
+        py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"), py::arg("options"),
+        py::arg("pad_penalty"), py::call_guard<py::gil_scoped_release>(),
+        "Equilibrium start for systems with tilting pads (pad-tilt penalty released in stages).");
 }
 
 }  // namespace rotordyn::py_bind

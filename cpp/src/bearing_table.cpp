@@ -59,9 +59,55 @@ void TableCoupling::at(double omega, Eigen::Matrix2d& Kout, Eigen::Matrix2d& Cou
   fill(i, i + 1, t);
 }
 
+Eigen::VectorXd homotopy_start(const SystemModel& model, double omega, double pc,
+                               const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
+                               const EquilibriumOptions& options,
+                               const Eigen::MatrixXd& P) {
+  const Eigen::Index n = model.n();
+  require(P.rows() == n && P.cols() == n, shape_msg("pad_penalty", n, n, P.rows(), P.cols()));
+  Eigen::VectorXd r = r0.size() ? r0 : Eigen::VectorXd::Zero(n);
+  double kappa0 = 0.0;
+  {
+    SystemSolver s(model);
+    Eigen::VectorXd start = r;
+    try {
+      const Linearization lin = s.linearize(start, Eigen::VectorXd::Zero(n), omega);
+      kappa0 = 100.0 * lin.KH.diagonal().cwiseAbs().maxCoeff();
+    } catch (const std::exception&) {
+      return r;
+    }
+  }
+  if (!(kappa0 > 0) || !std::isfinite(kappa0)) return r;
+  const double pmax = P.diagonal().maxCoeff();
+  if (!(pmax > 0)) return r;
+  // κ = κ_0·10^{−t}, t from 0 to 10 (below the softest pad's own film stiffness) in steps of
+  // one decade, halved (down to 1/16) where a stage fails and doubled again after a success.
+  double t = 0.0, dt = 1.0;
+  bool first = true;
+  while (t < 10.0) {
+    const double next = first ? 0.0 : std::min(10.0, t + dt);
+    SystemModel m = model;
+    m.K += (kappa0 * std::pow(10.0, -next) / pmax) * P;
+    SystemSolver s(std::move(m));
+    const EquilibriumResult e = s.equilibrium(omega, pc, a, r, options);
+    if (e.status == "ok") {
+      r = e.r;
+      t = next;
+      first = false;
+      dt = std::min(1.0, 2.0 * dt);
+    } else if (first || dt <= 1.0 / 16) {
+      break;
+    } else {
+      dt *= 0.5;
+    }
+  }
+  return r;
+}
+
 OperatingPointTable operating_points(const SystemModel& model, const Eigen::VectorXd& omegas,
                                      const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
-                                     const EquilibriumOptions& options, int n_threads) {
+                                     const EquilibriumOptions& options, int n_threads,
+                                     const Eigen::MatrixXd& pad_penalty) {
   model.validate();
   const Eigen::Index n = model.n(), ns = omegas.size();
   require(omegas.allFinite(), "speeds: expected finite values");
@@ -81,7 +127,10 @@ OperatingPointTable operating_points(const SystemModel& model, const Eigen::Vect
     for (Eigen::Index i = begin; i < end; ++i) {
       const auto si = static_cast<std::size_t>(i);
       try {
-        const EquilibriumResult e = solver.equilibrium(omegas(i), 0.0, a, r0, options);
+        const Eigen::VectorXd start =
+            pad_penalty.size() ? homotopy_start(model, omegas(i), 0.0, a, r0, options, pad_penalty)
+                               : r0;
+        const EquilibriumResult e = solver.equilibrium(omegas(i), 0.0, a, start, options);
         out.r.row(i) = e.r.transpose();
         out.iterations(i) = e.iterations;
         out.status[si] = e.status;

@@ -85,6 +85,10 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
   require(r.size() == model_.n(), shape_msg("r", model_.n(), 1, r.size(), 1));
   require(rdot.size() == model_.n(), shape_msg("rdot", model_.n(), 1, rdot.size(), 1));
   if (solved_ && omega == last_omega_ && r == last_r_ && rdot == last_rdot_) return;
+  {  // a speed outside a bearing table is an InputError before any Reynolds solve
+    Eigen::Matrix2d Kt, Ct;
+    for (const TableCoupling& t : model_.tables) t.at(omega, Kt, Ct);
+  }
   solved_ = false;  // stays false if a film throws (contact) below
   for (std::size_t i = 0; i < films_.size(); ++i) {
     const FilmCoupling& fc = model_.films[i];
@@ -211,7 +215,8 @@ Linearization SystemSolver::linearize(const Eigen::VectorXd& r, const Eigen::Vec
 
 Linearization SystemSolver::linearize_fd(const Eigen::VectorXd& r, double omega,
                                          double rel_step) {
-  require(rel_step > 0 && rel_step < 0.1, "rel_step: expected a value in (0, 0.1)");
+  require(rel_step >= 1e-10 && rel_step < 0.1,
+          "rel_step: expected 1e-10 <= rel_step < 0.1 (a smaller step is lost in round-off)");
   const Eigen::Index n = model_.n();
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   Linearization out;

@@ -37,10 +37,34 @@ def _cmd_info(args) -> int:
 
 
 # -- validate ---------------------------------------------------------------------------
+def _save(ax, path: str) -> None:
+    """Save the figure of ``ax`` (or of the first of a tuple of Axes) to PNG/SVG/PDF."""
+    import matplotlib.pyplot as plt
+
+    fig = (ax[0] if isinstance(ax, tuple) else ax).figure
+    fig.savefig(path)
+    plt.close(fig)
+    print(f"wrote {path}", file=sys.stderr)
+
+
+def _check_fig(path) -> None:
+    """Check a --plot file before any solve (folder, format) and select the Agg backend."""
+    if path is not None:
+        _figure_path("--plot", path)
+    import matplotlib
+
+    matplotlib.use("Agg")
+
+
 def _cmd_validate(args) -> int:
+    _check_fig(args.plot)
     s = rotordyn.models.load(args.model)
     print(f"{args.model}: ok ({s.rotor.n_elements} elements, {s.rotor.n_stations} stations, "
           f"{s.mass_kg:.4f} kg)")
+    if args.plot:
+        from rotordyn.plot import rotor_drawing
+
+        _save(rotor_drawing(s), args.plot)
     return 0
 
 
@@ -64,12 +88,22 @@ def _cmd_modes(args) -> int:
         from rotordyn import cli_sleeve  # provided with the sleeve model
 
         return cli_sleeve.modes(args)
+    _check_fig(args.plot)
     s = rotordyn.models.load(args.model)
     r = rotordyn.modes(s, args.speed_hz, reduction=args.reduction, n_modes=args.n_modes)
     if args.json:
         print(_json(_modes_payload(r)))
     else:
         print(r.to_frame().to_string(index=False))
+    if args.plot:
+        shown = r.full if r.full is not None else r  # shapes of the full FE model
+        if args.mode is not None:
+            if not 1 <= args.mode <= len(shown.eigenvalues):
+                raise rotordyn.InputError(f"--mode: expected 1..{len(shown.eigenvalues)}, got "
+                                          f"{args.mode}")
+            _save(shown.plot(args.mode - 1, system=s), args.plot)
+        else:
+            _save(shown.plot(), args.plot)
     return 0
 
 
@@ -168,9 +202,8 @@ def _cmd_stability(args) -> int:
 
 
 def _cmd_campbell(args) -> int:
+    _check_fig(args.plot)
     speeds = _speeds(args.speeds_hz)
-    if args.plot:
-        _figure_path("--plot", args.plot)
     s = rotordyn.models.load(args.model)
     if s.bearings:
         c = rotordyn.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m)
@@ -186,11 +219,7 @@ def _cmd_campbell(args) -> int:
     else:
         print(crit.to_string(index=False))
     if args.plot:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        ax = c.plot()
-        ax.figure.savefig(args.plot, dpi=120, bbox_inches="tight")
+        _save(c.plot(), args.plot)
     return 0
 
 
@@ -209,6 +238,7 @@ def _cmd_threshold(args) -> int:
 
 
 def _cmd_unbalance(args) -> int:
+    _check_fig(args.plot)
     s = rotordyn.models.load(args.model)
     ub = []
     for text in args.unbalance:
@@ -230,10 +260,12 @@ def _cmd_unbalance(args) -> int:
         for st in u.stations:
             print(f"station {st}:")
             print(u.peaks(st).to_string(index=False))
+    if args.plot:
+        _save(u.plot(kind=args.plot_kind), args.plot)
     return 0
 
 
-MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, friswell-5.9.1); "
+MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, paper-rig-hs, friswell-5.9.1); "
               "see `rotordyn validate`")
 JSON_HELP = "print one JSON record on stdout (NaN written as null) instead of a table"
 
@@ -276,7 +308,9 @@ def _cmd_plot(args) -> int:
     from rotordyn.sweep import read_dataset
 
     _figure_path("--out", args.out)
-    plot_dataset(read_dataset(args.dir), args.kind, args.out)
+    kw = ({"style": args.style, "scale": args.scale, "axis": args.axis}
+          if args.kind == "waterfall" else {})
+    plot_dataset(read_dataset(args.dir), args.kind, args.out, **kw)
     print(f"wrote {args.out}", file=sys.stderr)
     return 0
 
@@ -285,7 +319,8 @@ def _cmd_plot(args) -> int:
 def _cmd_report(args) -> int:
     from rotordyn import report
 
-    return report.run(args.model, _out_dir("--out", args.out), html=args.html)
+    return report.run(args.model, _out_dir("--out", args.out), html=args.html,
+                      operating_speed_hz=args.operating_speed_hz)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -301,6 +336,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     s = sub.add_parser("validate", help="check a model file")
     s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also draw the rotor (sections, disks, bearings) to FIG.png/.svg")
     s.set_defaults(func=_cmd_validate)
 
     s = sub.add_parser("modes", help="natural frequencies of the rotor (full or reduced)")
@@ -313,6 +350,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="number of modes (default: all of a reduced model, 12 of a full one)")
     s.add_argument("--part", choices=["rotor", "sleeve"], default="rotor",
                    help="rotor, or the active bearing's flexible sleeve")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also write the mode shapes (full FE model) to FIG.png/.svg")
+    s.add_argument("--mode", type=int, default=None, metavar="K",
+                   help="with --plot: the 3-D whirl orbits of mode K (1-based) along the rotor "
+                        "(default: all modes' shapes in the x plane)")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_modes)
 
@@ -368,6 +410,10 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
                    metavar=("MIN", "MAX"),
                    help="operating speed range, Hz, for the API 684 separation margins")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also write the response figure to FIG.png/.svg")
+    s.add_argument("--plot-kind", choices=["bode", "polar"], default="bode",
+                   help="figure for --plot: Bode (amplitude/phase, AF, margins) or polar")
     _add_operating_point(s, speed=False)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_unbalance)
@@ -393,6 +439,12 @@ def build_parser() -> argparse.ArgumentParser:
                    choices=["stability-map", "equilibrium", "campbell", "waterfall"],
                    help="figure kind; it must match the sweep's analysis")
     s.add_argument("--out", required=True, metavar="FIG", help="FIG.png or FIG.svg")
+    s.add_argument("--style", choices=["cascade", "map"], default="cascade",
+                   help="waterfall: 3-D cascade or colour map (speed × frequency)")
+    s.add_argument("--scale", choices=["linear", "log"], default="linear",
+                   help="waterfall: amplitude scale")
+    s.add_argument("--axis", choices=["x", "y"], default="x",
+                   help="waterfall: journal motion component")
     s.set_defaults(func=_cmd_plot)
 
     s = sub.add_parser("report", help="the main job: analyses of a model written under --out")
@@ -401,8 +453,15 @@ def build_parser() -> argparse.ArgumentParser:
                    help="directory for report.txt, tables and figures")
     s.add_argument("--html", default=None, metavar="FILE",
                    help="also write one self-contained HTML report (figures as SVG)")
+    s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
+                   metavar=("MIN", "MAX"),
+                   help="operating speed range, Hz, for the API margins in the HTML report "
+                        "(default: 45 55 for paper-rig, none otherwise)")
     s.set_defaults(func=_cmd_report)
     cli_bearing.register(sub)
+    from rotordyn import cli_control  # issue 8: `rotordyn control ...`
+
+    cli_control.register(sub)
     return p
 
 
@@ -418,16 +477,27 @@ def _check_offset(s, args) -> None:
             return
 
 
-def _show_warning(message, category, filename, lineno, file=None, line=None):
-    """Warnings as one line on stderr: ``rotordyn: warning: <field> = ...``."""
-    print(f"rotordyn: warning: {message}", file=sys.stderr)
+def _warning_printer(default):
+    """rotordyn's own warnings as one line on stderr (``rotordyn: warning: <field> = ...``);
+    other libraries' warnings as usual."""
+
+    def show(message, category, filename, lineno, file=None, line=None):
+        from rotordyn.errors import RotordynWarning
+
+        if issubclass(category, RotordynWarning):
+            print(f"rotordyn: warning: {message}", file=sys.stderr)
+        else:
+            default(message, category, filename, lineno, file, line)
+
+    return show
 
 
 def main(argv: list[str] | None = None) -> int:
     import warnings
 
     argv = list(sys.argv[1:] if argv is None else argv)
-    warnings.showwarning = _show_warning
+    shown = warnings.showwarning
+    warnings.showwarning = _warning_printer(shown)
     try:
         args = build_parser().parse_args(argv)
         if getattr(args, "model", None) is not None and hasattr(args, "config_ay_m"):
@@ -457,6 +527,8 @@ def main(argv: list[str] | None = None) -> int:
         print(f"rotordyn: internal error: {type(exc).__name__}: {exc} (please report; "
               "ROTORDYN_DEBUG=1 shows the traceback)", file=sys.stderr)
         return 1
+    finally:
+        warnings.showwarning = shown
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -25,8 +25,22 @@ struct OperatingPointTable {
 /// Equilibrium (with r0 as the start at every speed: results do not depend on the order or the
 /// split over threads) and perturbation linearisation at each Ω in `omegas` (rad/s).
 /// n_threads: 1 serial, 0 all hardware threads; each thread builds its own SystemSolver.
+/// `pad_penalty` (n×n, or empty): see homotopy_start; used at every speed when not empty.
 OperatingPointTable operating_points(const SystemModel& model, const Eigen::VectorXd& omegas,
                                      const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
-                                     const EquilibriumOptions& options, int n_threads = 1);
+                                     const EquilibriumOptions& options, int n_threads = 1,
+                                     const Eigen::MatrixXd& pad_penalty = Eigen::MatrixXd());
+
+/// Starting point for the equilibrium of a system with tilting pads: equilibria of the model
+/// with K + κ_i P for κ = κ_0·10^{−t}, t = 0 … 10 in adaptive steps (each from the previous one), P the pads'
+/// penalty (e.g. identity on the pad coordinates), κ_0 = 100 × the largest diagonal entry of K_H at the
+/// start. The stiff penalty first holds the pads near their aligned position (every pad with
+/// a convergent, pressurised film), then releases them gradually, so Newton does not jump onto
+/// the pressure-free branch of an unloaded pad (fully divergent film: zero moment at any tilt).
+/// Returns the last converged stage's r (r0 / zero if none converged).
+Eigen::VectorXd homotopy_start(const SystemModel& model, double omega, double chamber_pressure,
+                               const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
+                               const EquilibriumOptions& options,
+                               const Eigen::MatrixXd& pad_penalty);
 
 }  // namespace rotordyn

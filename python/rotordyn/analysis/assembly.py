@@ -64,6 +64,7 @@ class Assembled:
         self.sleeves = {}
         self.extra_labels: list[str] = []
         films, tables = [], []
+        coupled = []  # (indices [jx, jy, extras], M, K, C) of elements with own coordinates
         self.film_owner: list[int] = []  # bearing index of each C++ film
         self.film_phi: list = []         # physical node angles of each film (None: core grid)
         n = n_r
@@ -78,9 +79,12 @@ class Assembled:
                 tables += parts.tables
                 extra = tuple(range(n, n + parts.n_extra))
                 if parts.n_extra:
-                    blocks_M.append(parts.M)
-                    blocks_K.append(parts.K)
-                    blocks_C.append(parts.C)
+                    z = np.zeros((parts.n_extra, parts.n_extra))
+                    blocks_M.append(z)
+                    blocks_K.append(z)
+                    blocks_C.append(z)
+                    coupled.append(([jx, jy] + list(extra), parts.M, parts.K, parts.C,
+                                    parts.penalty))
                     self.extra_labels += list(parts.labels)
                     n += parts.n_extra
                 self.bearings.append(BearingCoords(bi, name, jx, jy, (),
@@ -133,6 +137,18 @@ class Assembled:
         model.K = block(K, blocks_K)
         model.C = block(C, blocks_C)
         model.G = block(G, [np.zeros_like(B) for B in blocks_M])
+        Mm, Km, Cm = (np.array(x) for x in (model.M, model.K, model.C))
+        self.pad_penalty = None  # tilt penalty of the pads (equilibrium homotopy), (n, n)
+        for idx, Mp, Kp, Cp, Pp in coupled:  # pad inertia/pivot terms couple journal and pads
+            ix = np.ix_(idx, idx)
+            Mm[ix] += Mp
+            Km[ix] += Kp
+            Cm[ix] += Cp
+            if Pp is not None:
+                if self.pad_penalty is None:
+                    self.pad_penalty = np.zeros((n, n))
+                self.pad_penalty[ix] += Pp
+        model.M, model.K, model.C = Mm, Km, Cm
         Q = np.zeros(n)
         Q[:n_r] = Q_r
         model.Q = Q

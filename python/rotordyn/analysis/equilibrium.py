@@ -71,6 +71,12 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     opt.method, opt.tol, opt.max_iter = method, float(tol), int(max_iter)
     opt.pm = -1.0 if pm == "auto" else float(pm)
     opt.contact_fraction = float(contact_fraction)
+    if asm.pad_penalty is not None and r_init.size == 0:
+        # tilting pads: start from the pad-tilt homotopy (no jump onto an unloaded pad's
+        # pressure-free branch); the equilibrium below is then solved on the true model
+        r_init = np.asarray(_core.homotopy_start(asm.model, hz_to_rad_s(float(speed_hz)),
+                                                 float(chamber_pressure_pa), a, r_init, opt,
+                                                 asm.pad_penalty))
     res = asm.solver.equilibrium(hz_to_rad_s(float(speed_hz)), float(chamber_pressure_pa), a,
                                  r_init, opt)
     r = np.asarray(res.r)

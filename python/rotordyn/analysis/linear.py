@@ -107,6 +107,11 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
     else:
         kin_s = np.zeros(len(lam))
     kind = np.where(kin_s > 0.5 * kin_total, "sleeve", "rotor").astype(object)
+    pads = [i for bc in asm.bearings for i in getattr(bc, "extra", ())]
+    if pads:  # tilting-pad coordinates: modes carried by the pads
+        Mp = lm.M[np.ix_(pads, pads)]
+        kin_p = np.real(np.einsum("ik,ij,jk->k", phi[pads].conj(), Mp, phi[pads]))
+        kind[kin_p > 0.5 * kin_total] = "pad"
     rotor = asm.rotor.expand(phi[:asm.n_rotor])
     n_nodes = rotor.shape[0] // 4
     sleeves = {bc.index: asm.sleeves[bc.index].transformation @ phi[list(bc.sleeve)]

@@ -108,7 +108,8 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
 @dataclass
 class SystemParts:
     """What a bearing element adds to the system of eq. 12-13: films and tables on the journal
-    coordinates (and on its own extra coordinates), with the extra coordinates' M, K, C."""
+    coordinates (and on its own extra coordinates), and M, K, C over [journal x, journal y,
+    extras...] ((2 + n_extra) square; the extras' inertia may couple to the journal)."""
 
     films: list
     tables: list
@@ -117,6 +118,7 @@ class SystemParts:
     K: np.ndarray | None = None
     C: np.ndarray | None = None
     labels: tuple = ()
+    penalty: np.ndarray | None = None  # homotopy penalty over [x, y, extras] (pads only)
 
 
 def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1,
@@ -130,9 +132,9 @@ def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1
     K = np.zeros((n, n))
     C = np.zeros((n, n))
     if parts.n_extra:
-        M[2:, 2:] = parts.M
-        K[2:, 2:] = parts.K
-        C[2:, 2:] = parts.C
+        M += parts.M
+        K += parts.K
+        C += parts.C
     model.M, model.K, model.C, model.G = M, K, C, np.zeros((n, n))
     Q = np.zeros(n)
     Q[:2] = load_n
@@ -143,7 +145,8 @@ def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1
     opt = _core.EquilibriumOptions()
     opt.tol = tol
     w = np.ascontiguousarray(np.asarray(speeds_hz, dtype=float) * TWO_PI)
-    res = _core.operating_points(model, w, np.zeros(n), np.zeros(0), opt, int(n_threads))
+    pen = parts.penalty if parts.penalty is not None else np.zeros((0, 0))
+    res = _core.operating_points(model, w, np.zeros(n), np.zeros(0), opt, int(n_threads), pen)
     ns = len(w)
     return (np.asarray(res.r), np.asarray(res.KH).reshape(ns, n, n) + K,
             np.asarray(res.DH).reshape(ns, n, n) + C, list(res.status), list(res.message), M)

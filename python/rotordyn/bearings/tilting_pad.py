@@ -102,36 +102,71 @@ class TiltingPadBearing:
     def dofs_per_pad(self) -> int:
         return 2 if self.flexible_pivot else 1
 
+    @property
+    def lever_m(self) -> float:
+        """Pivot lever ℓ = R + t, m."""
+        return 0.5 * self.diameter_m + self.pad_thickness_m
+
     def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:
-        R = 0.5 * self.diameter_m
-        lever = R + self.pad_thickness_m
+        """Pad coordinates: η_k = q·t_k + ℓ δ_k, the journal's tangential offset relative to
+        tilted pad k (t_k the unit tangent at the pivot), m, and with a flexible pivot u_k.
+        In (q, η) each pad's film depends on the journal only through its radial offset
+        ξ_k = q·n_k: h = base − ξ_k cos θ − η_k sin θ + u_k cos θ (θ = φ − ψ_k). This keeps
+        Newton's steps from dragging a pad into the pressure-free (fully divergent) branch
+        when the journal moves tangentially to it. Tilt δ_k = (η_k − q·t_k)/ℓ: the pad's
+        kinetic energy ½ I δ̇² and tilt spring ½ k_t δ² couple η_k with the journal in M, K."""
+        lever = self.lever_m
         arc = math.radians(self.pad_arc_deg)
         films, labels = [], []
         npd = self.dofs_per_pad
+        n = npd * self.n_pads
+        M = np.zeros((2 + n, 2 + n))
+        K = np.zeros((2 + n, 2 + n))
+        P = np.zeros((2 + n, 2 + n))
         for k, psi_deg in enumerate(self.pivot_angles_deg()):
             psi = math.radians(psi_deg)
+            cp, sp = math.cos(psi), math.sin(psi)
             start = psi - self.pivot_offset * arc
+            ik = 2 + npd * k
             coords = [jx, jy, first_extra + npd * k]
-            shapes = [lambda phi, psi=psi: -lever * np.sin(phi - psi)]
-            labels.append(f"{name}.pad{k}.tilt")
+            shapes = [lambda phi, psi=psi: -np.sin(phi - psi)]
+            labels.append(f"{name}.pad{k}.eta")
+            a = np.zeros(2 + n)  # δ_k = a · [qx, qy, extras]
+            a[0], a[1], a[ik] = sp / lever, -cp / lever, 1.0 / lever
+            M += self.pad_inertia_kg_m2 * np.outer(a, a)
+            K += self.tilt_stiffness_nm_per_rad * np.outer(a, a)
+            P += np.outer(a, a)  # equilibrium homotopy: tilts held at 0 first
             if self.flexible_pivot:
                 coords.append(first_extra + npd * k + 1)
                 shapes.append(lambda phi, psi=psi: np.cos(phi - psi))
                 labels.append(f"{name}.pad{k}.pivot")
-            films.append(pad_film(
+                M[ik + 1, ik + 1] = self.pad_mass_kg
+                P[ik + 1, ik + 1] = 1.0 / lever ** 2  # and pivots at u = 0
+                K[ik + 1, ik + 1] = self.pivot_stiffness_n_per_m
+            pf = pad_film(
                 name=f"{name}.pad{k}", diameter_m=self.diameter_m, length_m=self.length_m,
                 clearance_m=self.clearance_m, viscosity_pa_s=self.viscosity_pa_s,
                 cavitation=self.cavitation, start_rad=start, arc_rad=arc, pivot_rad=psi,
                 preload=self.preload, n_circ=self.n_circ, n_axial=self.n_axial, coords=coords,
-                extra_shapes=shapes))
-        n = npd * self.n_pads
-        per_pad_m = [self.pad_inertia_kg_m2] + ([self.pad_mass_kg] if self.flexible_pivot else [])
-        per_pad_k = [self.tilt_stiffness_nm_per_rad] + (
-            [self.pivot_stiffness_n_per_m] if self.flexible_pivot else [])
-        M = np.diag(np.tile(per_pad_m, self.n_pads))
-        K = np.diag(np.tile(per_pad_k, self.n_pads))
-        return SystemParts(films=films, tables=[], n_extra=n, M=M, K=K, C=np.zeros((n, n)),
-                           labels=tuple(labels))
+                extra_shapes=shapes)
+            # journal columns in (q, η): −cos θ n_k (the tangential part is carried by η)
+            S = np.asarray(pf.coupling.shape).copy()
+            on = pf.on_pad
+            th = pf.phi[on] - psi
+            S[on, 0] = -np.cos(th) * cp
+            S[on, 1] = -np.cos(th) * sp
+            pf.coupling.shape = S
+            films.append(pf)
+        return SystemParts(films=films, tables=[], n_extra=n, M=M, K=K,
+                           C=np.zeros((2 + n, 2 + n)), labels=tuple(labels), penalty=P)
+
+    def pad_tilts_rad(self, r) -> np.ndarray:
+        """Pad tilts δ_k (rad) from standalone coordinates r = [x, y, pad coordinates...]."""
+        r = np.asarray(r, dtype=float)
+        psi = np.radians(self.pivot_angles_deg())
+        eta = r[2::self.dofs_per_pad][: self.n_pads]
+        qt = -r[0] * np.sin(psi) + r[1] * np.cos(psi)
+        return (eta - qt) / self.lever_m
 
     # -- standalone -----------------------------------------------------------------------
     def coefficient_table(self, speeds_hz, load_n, *, whirl_ratio: float | None = 1.0,
@@ -147,7 +182,8 @@ class TiltingPadBearing:
 
     def full_coefficients(self, speed_hz: float, load_n):
         """The unreduced coefficients at one speed: (r, K, C, M) with r the equilibrium
-        (journal x, y then the pad coordinates) and K, C, M (2 + n_pad_dofs square)."""
+        (journal x, y then the pad coordinates η_k [, u_k], see :meth:`system_parts`;
+        :meth:`pad_tilts_rad` gives the tilts) and K, C, M (2 + n_pad_dofs square)."""
         from rotordyn.bearings._element import check_load, check_speeds
         from rotordyn.bearings._film import operating_table
 
