@@ -12,10 +12,9 @@ Budget: derandomized (a fixed seed: CI is reproducible), ``max_examples`` per te
 ROTORDYN_FUZZ_SCALE (1 in ``make test``: about a minute on 2 cores; ``make fuzz`` runs 20x
 with a random seed and prints the failing example's reproduction blob).
 
-Restricted for now (film-core defects owned by the bearing work, issue 13 "film items"): the
-bearing strategies keep velocities |v| <= 10 m/s, speeds |f| <= 1e4 Hz, groove pressures
-<= 1e7 Pa, finite-difference rel_step >= 1e-8 and static_equilibrium loads >= 1e-3 N with
-rtol >= 1e-12 (beyond these the film returns NaN/inf or underflows; see the report).
+The film items of issue 13 (non-finite forces at extreme velocities/speeds/groove
+pressures, degenerate finite-difference steps, tiny loads, meaningless rtol) are fixed in the
+film core and fuzzed here without restriction.
 """
 
 from __future__ import annotations
@@ -110,15 +109,16 @@ def bearing_payload(draw):
 
         geom["grooves"] = [rd.Groove(center_deg=draw(st.floats(-720, 720)),
                                      width_deg=draw(st.floats(0, 60)),
-                                     pressure_pa=draw(st.floats(0, 1e7)))]
+                                     pressure_pa=draw(st.floats(0, 1e9)))]
     call = draw(st.sampled_from(["forces", "coefficients", "solve", "static_equilibrium"]))
     frac = st.floats(-1.2, 1.2)
     if call == "static_equilibrium":
         ang = draw(st.floats(0, 2 * math.pi))
-        w = draw(st.one_of(st.floats(1e-3, 1e5), st.sampled_from([0.0, math.nan, -1.0])))
+        w = draw(st.one_of(st.floats(1e-3, 1e5),
+                           st.sampled_from([0.0, math.nan, -1.0, 1e-200, 1e-12, 1e300])))
         args = {"load_n": (w * math.cos(ang), w * math.sin(ang)),
                 "speed_hz": draw(number(-1e4, 1e4, special=False)),
-                "rtol": draw(st.sampled_from([1e-10, 1e-6, 1e-12, 0.0, -1.0]))}
+                "rtol": draw(st.sampled_from([1e-10, 1e-6, 1e-12, 0.0, -1.0, 1e300]))}
         args = draw(hostile(args, share=5))
     else:
         args = {"x_m": draw(frac) * c, "y_m": draw(frac) * c,
@@ -129,11 +129,7 @@ def bearing_payload(draw):
         args = draw(hostile(args, share=5))
         if call == "coefficients" and draw(st.booleans()):
             args["method"] = "finite_difference"
-            args["rel_step"] = draw(st.sampled_from([1e-6, 1e-4, 1e-8]))
-    for k in list(args):  # non-finite and out-of-range magnitudes the film is fixed for later
-        if isinstance(args[k], float) and k in ("speed_hz", "vx_m_s", "vy_m_s") and \
-                math.isfinite(args[k]) and abs(args[k]) > 1e4:
-            args[k] = math.copysign(1e4, args[k])
+            args["rel_step"] = draw(st.sampled_from([1e-6, 1e-4, 1e-8, 1e-300, 0.5]))
     return {"geometry": geom, "call": call, "args": args}
 
 
