@@ -42,7 +42,7 @@ $(STAMPS)/install: $(STAMPS)/venv $(SOURCES)
 
 run: $(STAMPS)/install
 	@mkdir -p $(OUT)
-	$(VENV)/bin/rotordyn report paper-rig --out $(OUT)
+	$(VENV)/bin/rotordyn report paper-rig --out $(OUT) --html $(OUT)/report.html
 
 test-cpp: $(STAMPS)/install
 	$(VENV)/bin/ctest --test-dir build/py --output-on-failure
@@ -73,6 +73,13 @@ sanitize: $(STAMPS)/venv
 	$(ASAN_ENV) PYTHONMALLOC=malloc PYTHONPATH=$(CURDIR)/$(ASAN_DIR)/site \
 	  LD_PRELOAD="$$(g++ -print-file-name=libasan.so) $$(g++ -print-file-name=libubsan.so)" \
 	  $(PY) .ci/sanitize_smoke.py
+
+# Longer fuzzing than `make test`'s fixed budget: FUZZ_SCALE times the examples, a random
+# seed (a failure prints the @reproduce_failure blob to paste into the test).
+FUZZ_SCALE ?= 20
+fuzz: $(STAMPS)/install
+	ROTORDYN_FUZZ_SCALE=$(FUZZ_SCALE) ROTORDYN_FUZZ_EXPLORE=1 \
+	  $(PY) -m pytest -q tests/test_fuzz.py --hypothesis-show-statistics
 
 bench: $(STAMPS)/install
 	for b in benchmarks/bench_*.py; do $(PY) $$b || exit 1; done

@@ -31,12 +31,11 @@ import statistics
 import sys
 import time
 
-os.environ.setdefault("OMP_NUM_THREADS", "1")
-os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
-
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(__file__))
+from _common import footer, header  # noqa: E402
+
 import rotordyn as rd  # noqa: E402
 from rotordyn import _core  # noqa: E402
 from rotordyn.analysis.assembly import assembled  # noqa: E402
@@ -47,10 +46,16 @@ SPEED_HZ, AY_M = 50.0, -1.85e-3
 CLOCK = time.thread_time  # CPU time of this thread (the machine is shared); --wall for wall
 
 
+TOTALS = {"wall": 0.0, "cpu": 0.0}  # every timed call, both clocks (printed at the end)
+
+
 def timed(fn):
-    t0 = CLOCK()
+    t0, w0, c0 = CLOCK(), time.perf_counter(), time.process_time()
     out = fn()
-    return CLOCK() - t0, out
+    t = CLOCK() - t0
+    TOTALS["wall"] += time.perf_counter() - w0
+    TOTALS["cpu"] += time.process_time() - c0
+    return t, out
 
 
 def median_of(repeat, setup, fn):
@@ -176,6 +181,7 @@ def main(argv=None):
     global CLOCK
     if args.wall:
         CLOCK = time.perf_counter
+    header("bench_equilibrium: the rig's static equilibrium (Newton vs successive vs SciPy)")
     rig = rd.models.paper_rig()
     asm = assembled(rig)
     a = asm.config_vector(AY_M)
@@ -237,6 +243,9 @@ def main(argv=None):
         print(line, flush=True)
     print(f"\nwarm-started Newton, median over the pressures: {statistics.median(warm_times) * 1e3:.3f}"
           f" ms (goal < 2 ms)")
+    print(f"all timed calls: {TOTALS['wall']:.3f} s wall, {TOTALS['cpu']:.3f} s CPU of the "
+          "process (the table is in the clock named above; wall >> CPU means a busy machine)")
+    footer()
     return 0
 
 

@@ -55,17 +55,6 @@ def test_toml_path_model(tmp_path):
     assert p.returncode == 2 and "disk[0].mass_kg" in p.stderr
 
 
-def test_report_writes_outputs(tmp_path):
-    p = run("report", "paper-rig", "--out", str(tmp_path))
-    assert p.returncode == 0, p.stderr
-    assert "10.43" in p.stdout
-    assert "threshold of instability" in p.stdout and "critical speeds" in p.stdout
-    for name in ("report.txt", "rotor_modes.json", "rotor_modes.csv", "rotor_mode_shapes.png",
-                 "sleeve_modes.csv", "table1_equilibrium.csv", "threshold.csv", "campbell.csv",
-                 "campbell.png"):
-        assert (tmp_path / name).stat().st_size > 0
-
-
 def test_equilibrium_cli_json_and_negative_config():
     p = run("equilibrium", "paper-rig", "--speed-hz", "50", "--chamber-pressure-pa", "1.5e5",
             "--config-ay-m", "-1.85e-3", "--json")

@@ -9,7 +9,6 @@ import sys
 import warnings
 
 import numpy as np
-import pandas as pd
 import pytest
 
 import rotordyn as rd
@@ -80,30 +79,52 @@ def test_negative_scientific_numbers_are_values():
     assert a.bounds == [-2e-3, -1.5e-3] and a.config_ay_m == -0.5e-3
 
 
-def _fake_dataset(d, speeds, kind="stability"):
-    """A sweep-like parquet part with the columns of a stability sweep."""
-    rows = []
-    for i, sp in enumerate(speeds):
-        for m, (f, w) in enumerate(((20.0, "backward"), (22.0, "forward"))):
-            rows.append({"point_id": i, "speed_hz": sp, "chamber_pressure_pa": 4e5,
-                         "config_ay_m": 0.0, "mode": m + 1, "freq_hz": f + 0.01 * sp,
-                         "eig_real_1_per_s": -1.0, "damping_ratio": 0.01, "log_dec": 0.06,
-                         "whirl": w, "kind": "rotor", "status": "ok", "message": ""})
-    d.mkdir()
-    pd.DataFrame(rows).to_parquet(d / "part-00000.parquet")
-    return d
+SPEC = """schema = "rotordyn/sweep/1"
+name = "{name}"
+model = "paper-rig"
+analysis = "stability"
+chunk_size = 4
+[grid]
+speed_hz = {speeds}
+chamber_pressure_pa = 0.4e6
+config_ay_m = 0.0
+"""
 
 
-@pytest.mark.parametrize(("speeds", "kind", "needle"), [
-    ([20.0, 40.0], "waterfall", "waterfall"),
-    ([50.0], "campbell", "campbell"),
-    ([50.0], "stability-map", "stability-map"),
+def _sweep(tmp, name, speeds):
+    """A small stability sweep over ``speeds`` (threads in this process, no dask)."""
+    from rotordyn.sweep import run_sweep
+
+    spec = tmp / f"{name}.toml"
+    spec.write_text(SPEC.format(name=name, speeds=speeds))
+    run_sweep(spec, tmp / name, threads=1)
+    return spec, tmp / name
+
+
+@pytest.fixture(scope="module")
+def datasets(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("sweeps")
+    return {"two": _sweep(tmp, "two", "[20.0, 40.0]"), "one": _sweep(tmp, "one", "50.0")}
+
+
+@pytest.mark.parametrize(("which", "kind", "needle"), [
+    ("two", "waterfall", "waterfall: the dataset has no spectra"),
+    ("one", "campbell", "campbell: needs a sweep over 2 or more speeds"),
+    ("one", "stability-map", "stability-map: expected a stability sweep with exactly two"),
+    ("two", "equilibrium", "equilibrium: the dataset has no journal positions"),
 ])
-def test_plot_kind_mismatch_is_one_line_exit_2(tmp_path, speeds, kind, needle):
-    d = _fake_dataset(tmp_path / "ds", speeds)
-    p = run("plot", str(d), "--kind", kind, "--out", str(tmp_path / "f.png"))
+def test_plot_kind_mismatch_is_one_line_exit_2(datasets, tmp_path, which, kind, needle):
+    p = run("plot", str(datasets[which][1]), "--kind", kind, "--out", str(tmp_path / "f.png"))
     assert p.returncode == 2
-    assert p.stderr.strip().count("\n") == 0 and needle in p.stderr and "Traceback" not in p.stderr
+    assert p.stderr.strip().count("\n") == 0 and needle in p.stderr, p.stderr
+    assert "Traceback" not in p.stderr
+
+
+def test_plot_campbell_from_a_speed_sweep(datasets, tmp_path):
+    p = run("plot", str(datasets["two"][1]), "--kind", "campbell", "--out",
+            str(tmp_path / "c.png"))
+    assert p.returncode == 0, p.stderr
+    assert (tmp_path / "c.png").stat().st_size > 5000
 
 
 def test_json_has_null_not_nan():
@@ -113,17 +134,15 @@ def test_json_has_null_not_nan():
     assert _strict(out) == {"a": None, "b": [1.0, None], "c": [None, 2.0]}
 
 
-def test_sweep_refusal_names_the_cli_flag(tmp_path):
+def test_sweep_refusal_names_the_cli_flag(datasets, tmp_path):
     from rotordyn.sweep import run_sweep
 
-    spec = tmp_path / "s.toml"
-    spec.write_text('schema = "rotordyn/sweep/1"\nname = "t"\nmodel = "paper-rig"\n'
-                    'analysis = "stability"\n[grid]\nspeed_hz = 50.0\n')
-    out = tmp_path / "out"
-    out.mkdir()
-    (out / "manifest.json").write_text(json.dumps({"spec_hash": "other", "model_hash": "x"}))
-    with pytest.raises(rd.InputError, match="--no-resume"):
-        run_sweep(spec, out)
+    spec, out = datasets["two"]
+    other = tmp_path / "other.toml"
+    other.write_text(spec.read_text().replace("chunk_size = 4", "chunk_size = 3"))
+    with pytest.raises(rd.InputError, match="--no-resume") as exc:
+        run_sweep(other, out, threads=1)
+    assert "resume=False" not in str(exc.value)
 
 
 def _options(parser):
@@ -185,7 +204,7 @@ def test_reprs_are_short_and_informative():
                          speed_hz=50.0, chamber_pressure_pa=0.15e6, config_ay_m=-1.85e-3),
            rd.campbell(rig, [30.0, 40.0], 0.4e6, 0.0),
            rd.unbalance_response(rig, [(4, 1e-4, 0.0)], [30.0, 40.0], chamber_pressure_pa=4e5),
-           rd.rotor_campbell(rig, [0.0, 10.0])]
+           rd.rotor_campbell(rig, [0.0, 10.0], n_modes=4)]
     res.append(res[2].linear)
     for r in res:
         text = repr(r)

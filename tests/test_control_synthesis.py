@@ -2,8 +2,11 @@
 python-control and on the nonlinear transient.
 
 - LQR: the closed-loop eigenvalues of A − B K from rotordyn equal python-control's
-  ``control.lqr`` on the same (A, B, Q, R) to 1e-8 relative (both solve the same Riccati
-  equation; the tolerance is round-off on a 20-state plant with entries spanning 1e-8..1e8).
+  ``control.lqr`` on the same (A, B, Q, R) to 1e-6 relative per eigenvalue, and the stable
+  eigenvalues of the Hamiltonian [[A, −B R⁻¹ Bᵀ], [−Q, −Aᵀ]] (the exact LQR closed-loop
+  spectrum) to 1e-9; gains agree to 1e-5 of the largest. python-control solves the unscaled
+  Riccati equation of a plant whose entries span 1e-8..1e8 (its eigenvalues are ~7e-8 off the
+  Hamiltonian's); rotordyn solves it in scaled states (2.6e-11 off).
 - The rig at a_y = −1.85 mm, 50 Hz, p_c = 0.05 MPa is linearly unstable (max Re λ ≈ +2.4 1/s,
   docs/transient-and-sweeps.md); the tuned PD law with the default 100 Hz valve makes the
   linear closed loop stable, and the nonlinear closed-loop run from a 0.1 c disturbance
@@ -44,9 +47,13 @@ def test_lqr_eigenvalues_equal_python_control(unstable_plant):
     Q, R = default_weights(p)
     K, E = lqr(p, Q, R)
     Kc, _, Ec = control.lqr(p.A, p.B, Q, R)
-    assert np.allclose(K, Kc, rtol=1e-6, atol=1e-12 * np.abs(Kc).max())
+    assert np.abs(K - Kc).max() < 1e-5 * np.abs(Kc).max()
     a, b = np.sort_complex(E), np.sort_complex(np.asarray(Ec))
-    assert np.allclose(a, b, rtol=1e-8, atol=1e-8 * np.abs(b).max())
+    assert np.all(np.abs(a - b) <= 1e-6 * np.abs(b))
+    H = np.block([[p.A, -p.B @ np.linalg.solve(R, p.B.T)], [-Q, -p.A.T]])
+    lh = np.linalg.eigvals(H)
+    ham = np.sort_complex(lh[lh.real < 0])
+    assert np.all(np.abs(a - ham) <= 1e-9 * np.abs(ham))
     assert E.real.max() < 0 < p.poles.real.max()
 
 

@@ -63,7 +63,7 @@ def test_operating_point_validation():
     with pytest.raises(rotordyn.InputError, match="method"):
         b.coefficients(x_m=0.0, y_m=-1e-4, speed_hz=50.0, method="magic")
     with pytest.raises(rotordyn.InputError, match="load_n"):
-        b.static_equilibrium(load_n=(0.0, 0.0), speed_hz=50.0)
+        b.static_equilibrium(load_n=(0.0, math.inf), speed_hz=50.0)
     with pytest.raises(rotordyn.InputError, match="speed_hz"):
         b.static_equilibrium(load_n=(0.0, -100.0), speed_hz=0.0)
     with pytest.raises(rotordyn.InputError, match="eccentricity"):

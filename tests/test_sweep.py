@@ -291,3 +291,22 @@ def test_shipped_specs_parse():
     for f in names:
         s = SweepSpec.from_toml(os.path.join(root, f))
         assert s.n_points and s.chunk_bounds()
+
+
+def test_progress_line_counts_and_eta():
+    import io
+
+    from rotordyn.sweep.runner import Progress
+
+    s = io.StringIO()
+    p = Progress(4, 1, {"ok": 3, "failed": 0, "unstable": 1}, stream=s, enabled=True)
+    p.status("starting 2 worker processes")
+    p.update({"ok": 2, "failed": 1, "unstable": 0})
+    p.update({"ok": 3, "failed": 0, "unstable": 2})
+    p.close()
+    last = s.getvalue().strip().split("\r")[-1]
+    assert "3/4 chunks" in last and "ok 8 failed 1 unstable 3" in last and "ETA" in last
+    assert "starting 2 worker processes" in s.getvalue()
+    q = io.StringIO()
+    Progress(4, 0, {}, stream=q, enabled=False).update({"ok": 1})
+    assert q.getvalue() == ""

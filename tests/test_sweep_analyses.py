@@ -117,3 +117,136 @@ def test_threshold_per_line_matches_api(tmp_path):
         if not len(want):
             assert (g["status"] == "no_crossing").all() and len(g) == 1
     assert (df["status"] == "ok").sum() >= 2  # a band: both crossings kept
+
+
+TRACK = """
+schema = "rotordyn/sweep/1"
+name = "t-track"
+model = "friswell-5.9.1"
+analysis = "stability"
+chunk_size = 100
+
+[grid]
+speed_hz = [0.0, {speed}]
+"supports.0.kxx_n_per_m" = {{start = 0.5e6, stop = 2.0e6, num = 30}}
+
+[options]
+n_modes = 4
+line = "supports.0.kxx_n_per_m"
+"""
+
+
+def test_mode_tracking_through_a_crossing_and_a_veering(tmp_path):
+    """Friswell et al. (2010) Example 5.9.1 with the x-stiffness of bearing 0 swept through
+    the isotropic 1 MN/m. At rest the x and y modes are uncoupled: the y modes keep the
+    isotropic rotor's frequencies 86.658 and 274.313 rad/s whatever k_xx, and the x modes
+    cross them. Tracking (MAC) keeps each id on one shape: the tracked y modes are constant
+    while the frequency-sorted slots swap. At 4000 rev/min the gyroscopic coupling makes the
+    curves veer: the tracked ids follow the continuous branches (never swap), whose
+    frequencies bracket the isotropic rotor's 85.389 (BW) and 87.796 (FW) rad/s at
+    k_xx = 1 MN/m, each with one whirl direction."""
+    res = run_sweep(_write(tmp_path, TRACK.format(speed=4000 / 60)), tmp_path / "o",
+                    threads=1)
+    df = res.to_frame()
+    assert res.complete and (df["status"] == "ok").all()
+    k = "supports.0.kxx_n_per_m"
+    rest = df[df["speed_hz"] == 0.0].pivot(index=k, columns="mode_id", values="freq_hz")
+    w_y = [86.658 / (2 * math.pi), 274.313 / (2 * math.pi)]
+    const = [j for j in rest.columns if np.ptp(rest[j]) < 1e-6 * rest[j].mean()]
+    assert len(const) == 2
+    np.testing.assert_allclose(sorted(rest[const].mean()), w_y, rtol=2e-5)
+    slot = df[df["speed_hz"] == 0.0].pivot(index=k, columns="mode", values="mode_id")
+    assert (slot[1] != slot[1].iloc[0]).any()  # the sorted slot 1 changes mode: a crossing
+    spin = df[df["speed_hz"] > 0]
+    ids = spin.pivot(index=k, columns="mode", values="mode_id")
+    assert (ids[1] == ids[1].iloc[0]).all() and (ids[2] == ids[2].iloc[0]).all()  # veering
+    f = spin.pivot(index=k, columns="mode_id", values="freq_hz")
+    kk = f.index.to_numpy()
+    i = np.searchsorted(kk, 1e6)
+    assert f.iloc[i - 1, 0] < 85.389 / (2 * math.pi) < f.iloc[i, 0]
+    assert f.iloc[i - 1, 1] < 87.796 / (2 * math.pi) < f.iloc[i, 1]
+    wh = spin.pivot(index=k, columns="mode_id", values="whirl")
+    assert all(wh[j].nunique() == 1 for j in wh.columns)
+
+
+RUNUP = """
+schema = "rotordyn/sweep/1"
+name = "t-runup"
+model = "paper-rig"
+analysis = "run-up"
+chunk_size = 1
+
+[grid]
+chamber_pressure_pa = 0.4e6
+config_ay_m = 0.0
+
+[options]
+unbalances = [[6, 2.0e-5, 0.0]]
+start_hz = 30.0
+stop_hz = 50.0
+rate_hz_per_s = 15.0
+"""
+
+
+def test_run_up_passes_the_critical_speed_late_and_lower(tmp_path):
+    """A nonlinear run-up (Ω ramped at 15 Hz/s through the first critical speed, unbalance at
+    disk B) against the steady linear unbalance response of the same rig: the run-up's peak
+    comes later than the steady critical speed and is lower (the classical run-up shift and
+    attenuation of a rotor accelerated through a resonance; e.g. Genta, Dynamics of Rotating
+    Systems (2005) §4.11), but within 10 % of its speed."""
+    res = run_sweep(_write(tmp_path, RUNUP), tmp_path / "o", threads=1)
+    df = res.to_frame()
+    assert res.complete and (df["status"] == "ok").all()
+    assert df["revolution"].is_monotonic_increasing and df["speed_hz"].is_monotonic_increasing
+    assert df["speed_hz"].iloc[0] == pytest.approx(30.0, abs=0.5)
+    rig = rd.models.paper_rig()
+    st = rig.bearings[-1].station
+    sp = np.arange(30.0, 50.01, 0.25)
+    u = rd.unbalance_response(rig, [(6, 2.0e-5, 0.0)], sp, stations=[st],
+                              chamber_pressure_pa=0.4e6, config_ay_m=0.0)
+    amp = np.abs(u.x[:, 0])
+    f_steady = sp[np.argmax(amp)]
+    i = df["amplitude_x_m"].idxmax()
+    f_run = df.loc[i, "speed_hz"]
+    assert f_steady < f_run < 1.1 * f_steady
+    assert df.loc[i, "amplitude_x_m"] < amp.max()
+
+
+UNBALANCE = """
+schema = "rotordyn/sweep/1"
+name = "t-unbalance"
+model = "paper-rig"
+analysis = "unbalance"
+chunk_size = 20
+
+[grid]
+chamber_pressure_pa = [0.2e6, 0.4e6]
+speed_hz = {start = 20.0, stop = 60.0, num = 41}
+
+[options]
+unbalances = [[6, 2.0e-5, 0.0]]
+operating_speed_hz = [50.0, 55.0]
+"""
+
+
+def test_unbalance_lines_match_the_api(tmp_path):
+    """Each speed line equals rotordyn.unbalance_response (same equilibria, K_H, D_H and
+    complex solve) to 1e-6 at the grid speeds, and a peak row sits at the grid speed nearest
+    each of UnbalanceResult.peaks' critical speeds."""
+    res = run_sweep(_write(tmp_path, UNBALANCE), tmp_path / "o", threads=2)
+    df = res.to_frame()
+    assert res.complete and (df["status"] == "ok").all() and len(df) == 82
+    rig = rd.models.paper_rig()
+    for pc, g in df.groupby("chamber_pressure_pa"):
+        u = rd.unbalance_response(rig, [(6, 2.0e-5, 0.0)], g["speed_hz"].to_numpy(),
+                                  chamber_pressure_pa=pc, operating_speed_hz=(50.0, 55.0))
+        on_grid = np.isin(u.speeds_hz, g["speed_hz"].to_numpy())  # the API refines peaks
+        np.testing.assert_allclose(g["amplitude_x_m"], np.abs(u.x[on_grid, 0]), rtol=1e-6)
+        pk = u.peaks()
+        got = g[g["peak"].astype(bool)]
+        assert len(got) == len(pk) >= 1
+        # the sweep's peak is a parabola through the 1 Hz grid (the API refines the speeds
+        # near a peak): within half a grid step
+        np.testing.assert_allclose(got["critical_speed_hz"], pk["critical_speed_hz"], atol=0.5)
+        assert np.all(np.abs(got["speed_hz"].to_numpy() - got["critical_speed_hz"]) <= 0.5)
+        assert (got["amplification_factor"] > 1).all()

@@ -148,14 +148,14 @@ def test_full_disk_and_unwritable(reference, tmp_path, monkeypatch):
     assert run_sweep(spec, out, threads=1).complete
     assert _digest(out) == _digest(ref)
 
-    real_open = os.open
+    real_write = store_mod.Path.write_text
 
-    def deny(path, *a, **k):
-        if str(path).endswith(store_mod.LOCK):
+    def deny(self, *a, **k):
+        if "_tmp-lock" in self.name:
             raise PermissionError(errno.EACCES, os.strerror(errno.EACCES))
-        return real_open(path, *a, **k)
+        return real_write(self, *a, **k)
 
-    monkeypatch.setattr(store_mod.os, "open", deny)
+    monkeypatch.setattr(store_mod.Path, "write_text", deny)
     with pytest.raises(rd.InputError, match="out: .* is not writable: Permission denied"):
         run_sweep(spec, tmp_path / "ro", threads=1)
 

@@ -14,4 +14,5 @@ PYBIND11_MODULE(_core, m) {
   bind_bearings(m);
   bind_transient(m);
   bind_sleeve(m);
+  bind_batch(m);
 }

@@ -139,9 +139,12 @@ std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero)
 }
 }  // namespace
 
-ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K,
-                  const std::vector<std::pair<int, int>>& xy_pairs, int n_modes,
-                  bool with_modes, const std::vector<std::pair<int, int>>& rot_pairs) {
+namespace {
+ModalResult modal_impl(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
+                       const Eigen::MatrixXd& K, const std::vector<std::pair<int, int>>& xy_pairs,
+                       int n_modes, bool with_modes,
+                       const std::vector<std::pair<int, int>>& rot_pairs,
+                       Eigen::VectorXd* start) {
   const Eigen::Index n = M.rows();
   Eigen::VectorXcd w;
   Eigen::MatrixXcd V;
@@ -154,7 +157,7 @@ ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eige
   // while rigid-body or overdamped roots crowd out the oscillating ones.
   for (int extra = 0; n > kDenseLimit && n_modes > 0 && extra <= 16; extra += 8) {
     if (2 * (n_modes + extra) + 30 >= n) break;
-    if (!detail::modal_shift_invert(M, D, K, n_modes + extra, w, V)) break;
+    if (!detail::modal_shift_invert(M, D, K, n_modes + extra, w, V, start)) break;
     idx = pick_modes(w, n_modes, zero);
     if (static_cast<int>(idx.size()) >= n_modes) {
       done = true;
@@ -200,6 +203,13 @@ ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eige
   }
   return out;
 }
+}  // namespace
+
+ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K,
+                  const std::vector<std::pair<int, int>>& xy_pairs, int n_modes,
+                  bool with_modes, const std::vector<std::pair<int, int>>& rot_pairs) {
+  return modal_impl(M, D, K, xy_pairs, n_modes, with_modes, rot_pairs, nullptr);
+}
 
 CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
                         const Eigen::MatrixXd& G, const Eigen::MatrixXd& K,
@@ -211,20 +221,28 @@ CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
   out.eigenvalues = Eigen::MatrixXcd::Constant(speeds.size(), n_modes,
                                                std::complex<double>(NAN, NAN));
   out.whirl = Eigen::MatrixXi::Zero(speeds.size(), n_modes);
-  // Speeds are independent: spread them over threads; an exception in any thread is
+  // Speeds are spread over threads in contiguous blocks; within a block each speed's Krylov
+  // start is the previous speed's wanted Ritz vectors (nearby operators). The eigenvalues do
+  // not depend on the start beyond the convergence tolerance. An exception in any thread is
   // stored and rethrown on the calling thread.
   std::exception_ptr error = nullptr;
-#pragma omp parallel for schedule(dynamic)
-  for (Eigen::Index s = 0; s < speeds.size(); ++s) {
-    try {
-      const ModalResult r = modal(M, C + speeds(s) * G, K, xy_pairs, n_modes, false, rot_pairs);
-      for (Eigen::Index j = 0; j < r.eigenvalues.size(); ++j) {
-        out.eigenvalues(s, j) = r.eigenvalues(j);
-        out.whirl(s, j) = static_cast<int>(r.whirl[static_cast<std::size_t>(j)]);
-      }
-    } catch (...) {
+#pragma omp parallel
+  {
+    Eigen::VectorXd start;
+#pragma omp for schedule(static)
+    for (Eigen::Index s = 0; s < speeds.size(); ++s) {
+      try {
+        const ModalResult r = modal_impl(M, C + speeds(s) * G, K, xy_pairs, n_modes, false,
+                                         rot_pairs, &start);
+        for (Eigen::Index j = 0; j < r.eigenvalues.size(); ++j) {
+          out.eigenvalues(s, j) = r.eigenvalues(j);
+          out.whirl(s, j) = static_cast<int>(r.whirl[static_cast<std::size_t>(j)]);
+        }
+      } catch (...) {
+        start.resize(0);
 #pragma omp critical
-      if (!error) error = std::current_exception();
+        if (!error) error = std::current_exception();
+      }
     }
   }
   if (error) std::rethrow_exception(error);

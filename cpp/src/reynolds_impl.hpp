@@ -15,6 +15,15 @@ namespace rotordyn {
 
 namespace reynolds_detail {
 constexpr double kPi = 3.14159265358979323846;
+/// Operating ranges accepted at the boundary (beyond them the film has no physical meaning
+/// and its pressures overflow): |speed| <= 1e5 Hz, journal velocity |v| <= 1e3 m/s.
+constexpr double kMaxOmega = 2.0 * kPi * 1e5;
+constexpr double kMaxVelocity = 1e3;
+/// Resource caps of one film grid, checked before the factor is allocated: nodes, bytes of
+/// the sparse factor, multiply-adds of one numeric factorisation.
+constexpr long long kMaxFilmNodes = 1LL << 22;
+constexpr double kMaxFactorBytes = 4e9;
+constexpr double kMaxFactorFlops = 2e10;
 
 /// A number in error messages (6 significant digits).
 inline std::string num(double v) {
@@ -124,6 +133,7 @@ struct ReynoldsSolver::Impl {
   void predict_active(LinearSystem& S);
   std::unique_ptr<ReynoldsSolver> coarse;  // Swift–Stieber solver on the halved grid
   bool coarse_usable = false;
+  int coarse_n_circ = 0, coarse_n_axial = 0;
   RowMatrixXd hc, hdc;                     // film sampled on the coarse nodes
   void solve_reynolds(LinearSystem& S);  // Swift–Stieber LCP by primal–dual active set
   // Directional derivative dp of the Swift–Stieber solution for a residual change dr at a

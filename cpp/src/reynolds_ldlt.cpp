@@ -7,7 +7,7 @@
 
 namespace rotordyn {
 
-void StaticLDLT::analyze(const SpMat& A) {
+bool StaticLDLT::analyze(const SpMat& A, double max_bytes) {
   n_ = static_cast<int>(A.cols());
   {
     Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>> amd;
@@ -61,6 +61,28 @@ void StaticLDLT::analyze(const SpMat& A) {
   }
   // Elimination tree and row patterns of L (row k: the etree paths from the entries of U(:,k)).
   std::vector<int> parent(n_, -1), flag(n_, -1), colcount(n_, 0);
+  {
+    // Counting pass (no storage): the size of L before anything of that size is allocated.
+    std::vector<int> par(n_, -1), flg(n_, -1);
+    double nnz = 0.0;
+    for (int k = 0; k < n_; ++k) {
+      flg[k] = k;
+      for (int t = Up_[k]; t < Up_[k + 1]; ++t)
+        for (int i = Ui_[t]; i < k && flg[i] != k; i = par[i]) {
+          if (par[i] == -1) par[i] = k;
+          flg[i] = k;
+          ++colcount[i];
+          nnz += 1.0;
+        }
+    }
+    flops_ = 0.0;
+    for (int i = 0; i < n_; ++i) flops_ += static_cast<double>(colcount[i]) * colcount[i];
+    // Li, Rcol, Rslot (int) and Lx, Ux (double) per entry of L; D, y, w, ys, perm per row.
+    bytes_needed_ = nnz * (3 * sizeof(int) + 2 * sizeof(double)) +
+                    n_ * (4 * sizeof(double) + 2 * sizeof(int));
+    if (bytes_needed_ > max_bytes) return false;
+    std::fill(colcount.begin(), colcount.end(), 0);
+  }
   Rp_.assign(n_ + 1, 0);
   Rcol_.clear();
   for (int k = 0; k < n_; ++k) {
@@ -96,6 +118,7 @@ void StaticLDLT::analyze(const SpMat& A) {
   ys_.assign(n_, 0.0);
   Ux_.assign(Lp_[n_], 0.0);
   w_.assign(n_, 0.0);
+  return true;
 }
 
 // Up-looking LU: at step k, column k of U solves L y = A(0:k, k) and row k of L solves

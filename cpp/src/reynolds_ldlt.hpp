@@ -16,8 +16,14 @@ namespace rotordyn {
 class StaticLDLT {
  public:
   using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-  /// A: structurally symmetric pattern (both triangles stored, compressed).
-  void analyze(const SpMat& A);
+  /// A: structurally symmetric pattern (both triangles stored, compressed). Counts the fill
+  /// of L first (O(n) memory); returns false without allocating the factor when it would
+  /// need more than max_bytes (bytes_needed() then tells how much).
+  bool analyze(const SpMat& A, double max_bytes = 1e300);
+  /// Bytes of the factor's storage (values, indices, row patterns) as counted by analyze().
+  double bytes_needed() const { return bytes_needed_; }
+  /// Multiply-adds of one numeric factorisation (sum of squared column counts).
+  double flops() const { return flops_; }
   /// Numeric factorisation from A's value array (same pattern as analysed). False if a pivot
   /// is zero or not finite.
   bool factorize(const double* values);
@@ -36,6 +42,7 @@ class StaticLDLT {
   /// ys_ = P b, then the unit-lower forward substitution L y = P b in place (both solves).
   double* forward(const double* b) const;
   int n_ = 0;
+  double bytes_needed_ = 0.0, flops_ = 0.0;
   std::vector<int> perm_;               // old index -> new index
   std::vector<int> Up_, Ui_, Usrc_;     // permuted upper triangle (with diagonal), by column
   std::vector<int> Wp_, Wi_, Wsrc_;     // permuted strict lower triangle, by row

@@ -16,6 +16,11 @@ namespace rotordyn {
 namespace {
 using reynolds_detail::kPi;
 using reynolds_detail::num;
+
+void check_finite(const DynamicCoefficients& dc) {
+  if (!(dc.K.allFinite() && dc.C.allFinite() && dc.force_n.allFinite()))
+    throw ConvergenceError("bearing coefficients: non-finite K or C");
+}
 }  // namespace
 
 const FilmSolution& ReynoldsSolver::rigid(double x, double y, double vx, double vy,
@@ -24,9 +29,10 @@ const FilmSolution& ReynoldsSolver::rigid(double x, double y, double vx, double 
   if (!(std::isfinite(x) && std::isfinite(y)))
     throw InputError("x_m, y_m: expected finite journal position, got (" + num(x) + ", " +
                      num(y) + ")");
-  if (!(std::isfinite(vx) && std::isfinite(vy)))
-    throw InputError("vx_m_s, vy_m_s: expected finite journal velocity, got (" + num(vx) +
-                     ", " + num(vy) + ")");
+  if (!(std::isfinite(vx) && std::isfinite(vy) && std::abs(vx) <= reynolds_detail::kMaxVelocity &&
+        std::abs(vy) <= reynolds_detail::kMaxVelocity))
+    throw InputError("vx_m_s, vy_m_s: expected a journal velocity with |vx_m_s|, |vy_m_s| <= "
+                     "1e3 m/s, got (" + num(vx) + ", " + num(vy) + ")");
   const double e = std::hypot(x, y);
   if (!(e < s.c))
     throw InputError("eccentricity ratio: expected sqrt(x_m^2 + y_m^2)/clearance_m < 1, got " +
@@ -60,14 +66,16 @@ DynamicCoefficients ReynoldsSolver::coefficients(double x, double y, double omeg
   dc.K.col(1) = -integrate_force(linearize(ms, zero));
   dc.C.col(0) = -integrate_force(linearize(zero, mc));
   dc.C.col(1) = -integrate_force(linearize(zero, ms));
+  check_finite(dc);
   return dc;
 }
 
 DynamicCoefficients ReynoldsSolver::coefficients_fd(double x, double y, double omega,
                                                     double rel_step) {
   Impl& s = *impl_;
-  if (!(rel_step > 0.0 && rel_step < 0.1))
-    throw InputError("rel_step: expected 0 < rel_step < 0.1, got " + num(rel_step));
+  if (!(rel_step >= 1e-10 && rel_step < 0.1))
+    throw InputError("rel_step: expected 1e-10 <= rel_step < 0.1 (a smaller step is lost in "
+                     "round-off of the position), got " + num(rel_step));
   DynamicCoefficients dc;
   dc.force_n = rigid(x, y, 0.0, 0.0, omega).force_n;
   const double dq = rel_step * s.c;
@@ -82,6 +90,7 @@ DynamicCoefficients ReynoldsSolver::coefficients_fd(double x, double y, double o
     dc.C.col(m) = -(gp - gm) / (2.0 * dv);
   }
   rigid(x, y, 0.0, 0.0, omega);  // leave the solver at the operating point
+  check_finite(dc);
   return dc;
 }
 
@@ -96,7 +105,7 @@ bool newton_equilibrium(ReynoldsSolver& rs, const Eigen::Vector2d& load, double 
   Eigen::Vector2d res = dc.force_n + load;
   for (int it = 0; it <= max_iter; ++it) {
     iters = it;
-    if (res.norm() <= tol_abs) return true;
+    if (res.stableNorm() <= tol_abs) return true;
     // Newton step first; if the line search fails along it (a kink of the cavitated film or a
     // poorly conditioned K), the steepest-descent direction of |F + load|²/2, i.e. Kᵀ(F + load).
     const Eigen::Vector2d newton = dc.K.inverse() * res;  // F(q+δ) ≈ F − K δ = −load
@@ -112,7 +121,7 @@ bool newton_equilibrium(ReynoldsSolver& rs, const Eigen::Vector2d& load, double 
         if (qn.norm() >= emax) continue;
         DynamicCoefficients dn = rs.coefficients(qn.x(), qn.y(), omega);
         const Eigen::Vector2d rn = dn.force_n + load;
-        if (rn.norm() < (1.0 - 1e-4 * alpha) * res.norm()) {
+        if (rn.stableNorm() < (1.0 - 1e-4 * alpha) * res.stableNorm()) {
           q = qn;
           dc = dn;
           res = rn;
@@ -130,19 +139,52 @@ bool newton_equilibrium(ReynoldsSolver& rs, const Eigen::Vector2d& load, double 
 EquilibriumSolution ReynoldsSolver::equilibrium(double lx, double ly, double omega, double x0,
                                                 double y0, double rtol, int max_iter) {
   Impl& s = *impl_;
-  const double W = std::hypot(lx, ly);
-  if (!(std::isfinite(W) && W > 0.0))
-    throw InputError("load_n: expected a finite nonzero load, got (" + num(lx) + ", " + num(ly) +
-                     ")");
-  if (!(std::isfinite(omega) && omega != 0.0))
-    throw InputError("speed_hz: static equilibrium needs a finite nonzero speed, got " +
+  if (!(std::isfinite(lx) && std::isfinite(ly)))
+    throw InputError("load_n: expected a finite load, got (" + num(lx) + ", " + num(ly) + ")");
+  const double W = std::hypot(lx, ly);  // no underflow for tiny loads (unlike sqrt(x²+y²))
+  if (!std::isfinite(W))
+    throw InputError("load_n: expected a finite load, got (" + num(lx) + ", " + num(ly) + ")");
+  if (!(std::isfinite(omega) && omega != 0.0 && std::abs(omega) <= reynolds_detail::kMaxOmega))
+    throw InputError("speed_hz: static equilibrium needs 0 < |speed_hz| <= 1e5 Hz, got " +
                      num(omega / (2.0 * kPi)));
-  if (!(rtol > 0.0)) throw InputError("rtol: expected > 0, got " + num(rtol));
+  if (!(rtol >= 1e-14 && rtol <= 1e-2))
+    throw InputError("rtol: expected 1e-14 <= rtol <= 1e-2, got " + num(rtol));
+  if (!(max_iter >= 1 && max_iter <= 10000))
+    throw InputError("max_iter: expected 1 <= max_iter <= 10000, got " +
+                     std::to_string(max_iter));
   const double emax = 0.9999 * s.c;
   const Eigen::Vector2d load(lx, ly);
   Eigen::Vector2d q(x0, y0);
-  if (!(q.allFinite() && q.norm() < emax))
+  if (!(q.allFinite() && std::hypot(x0, y0) < emax))
     throw InputError("x0_m, y0_m: expected a starting point inside the clearance circle");
+  // Lightly loaded journal. The film's force scale is F_s = μ|ω|RL(R/c)²; a plain film
+  // carries nothing at the centre (F(0) = 0) and is positively homogeneous of degree one
+  // there: F(t·q) = t·F(q) + O(t²). Below W_lin = 1e-6·F_s (eccentricity ratio ~1e-6, where
+  // the film thickness changes by fewer digits than the force needs), the equilibrium is the
+  // one for the load W_lin in the same direction scaled by W/W_lin (relative error ~1e-6 of
+  // the eccentricity, far below the discretisation error); a zero load is the centre.
+  const double Fs = s.mu * std::abs(omega) * s.R * s.L * (s.R / s.c) * (s.R / s.c);
+  const double Wlin = 1e-6 * Fs;
+  if (W < Wlin && x0 == 0.0 && y0 == 0.0) {
+    const Eigen::Vector2d F0 = rigid(0.0, 0.0, 0.0, 0.0, omega).force_n;
+    if (F0.norm() <= 1e-12 * Fs) {
+      EquilibriumSolution e;
+      if (W == 0.0) {
+        e.force_n = F0;
+        e.residual_rel = F0.norm() / Fs;
+        return e;
+      }
+      e = equilibrium(lx / W * Wlin, ly / W * Wlin, omega, 0.0, 0.0, rtol, max_iter);
+      const double t = W / Wlin;
+      e.x_m *= t;
+      e.y_m *= t;
+      e.force_n *= t;
+      return e;
+    }
+  }
+  if (W == 0.0)
+    throw InputError("load_n: a zero load is accepted for a film that carries nothing at the "
+                     "centre; this one (pressurised grooves) needs a nonzero load");
   const Eigen::Vector2d d = load / W;
   auto guess = [&](double eps) {
     // along the load, turned by ~45° in the direction of rotation
@@ -150,7 +192,15 @@ EquilibriumSolution ReynoldsSolver::equilibrium(double lx, double ly, double ome
     return Eigen::Vector2d(eps * s.c * (std::cos(a) * d.x() - std::sin(a) * d.y()),
                            eps * s.c * (std::sin(a) * d.x() + std::cos(a) * d.y()));
   };
-  if (q.norm() == 0.0) q = guess(0.5);
+  if (q.norm() == 0.0) {
+    q = guess(0.5);
+    if (W < 0.05 * Fs) {
+      // light load: the centred film's linearisation F ≈ −K q gives q ≈ K⁻¹ load
+      const DynamicCoefficients d0 = coefficients(0.0, 0.0, omega);
+      const Eigen::Vector2d ql = d0.K.inverse() * load;
+      if (ql.allFinite() && ql.norm() < 0.5 * s.c && ql.norm() > 0.0) q = ql;
+    }
+  }
   DynamicCoefficients dc;
   int iters = 0, total = 0;
   auto done = [&](const Eigen::Vector2d& qq) {
@@ -158,7 +208,8 @@ EquilibriumSolution ReynoldsSolver::equilibrium(double lx, double ly, double ome
     e.x_m = qq.x();
     e.y_m = qq.y();
     e.force_n = dc.force_n;
-    e.residual_rel = (dc.force_n + load).norm() / W;
+    const Eigen::Vector2d res = dc.force_n + load;
+    e.residual_rel = std::hypot(res.x(), res.y()) / W;
     e.iterations = total;
     return e;
   };

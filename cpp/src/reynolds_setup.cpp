@@ -11,6 +11,10 @@ namespace rotordyn {
 namespace {
 using reynolds_detail::kPi;
 using reynolds_detail::num;
+using reynolds_detail::kMaxFactorBytes;
+using reynolds_detail::kMaxFactorFlops;
+using reynolds_detail::kMaxFilmNodes;
+using reynolds_detail::kMaxOmega;
 
 void require_positive(double v, const char* field) {
   if (!(std::isfinite(v) && v > 0.0))
@@ -69,8 +73,23 @@ void FilmGrid::validate() const {
   if (n_axial < 2 || n_axial > 1 << 20)
     throw InputError("n_axial: expected 2 <= n_axial <= 1048576 (grid too coarse below 2), got " +
                      std::to_string(n_axial));
-  if (static_cast<long long>(n_circ) * (n_axial + 1) > 50'000'000LL)
-    throw InputError("n_circ*n_axial: grid too large (more than 5e7 nodes)");
+  const long long nodes = static_cast<long long>(n_circ) * (n_axial + 1);
+  if (nodes > kMaxFilmNodes)
+    throw InputError("n_circ, n_axial: expected at most " + std::to_string(kMaxFilmNodes) +
+                     " film nodes n_circ*(n_axial+1), got " + std::to_string(nodes) +
+                     " (about " + num(nodes * 400.0 / 1e9) +
+                     " GB before the factorisation's fill)");
+  // A priori work of one factorisation (fill of AMD on a periodic 5-point grid: ~31 n^1.5
+  // multiply-adds for a square-ish grid, ~4 n (n_axial+1)^2 for a long thin ring; measured
+  // within ~30 %). Grids clearly beyond the cap are refused here, before any analysis; the
+  // exact count follows the ordering (build_system).
+  const double nd = static_cast<double>(nodes);
+  const double est = nd * std::min(31.0 * std::sqrt(nd), 4.0 * (n_axial + 1.0) * (n_axial + 1.0));
+  if (est > 4.0 * kMaxFactorFlops)
+    throw InputError("n_circ, n_axial: the " + std::to_string(n_circ) + " x " +
+                     std::to_string(n_axial) + " film grid needs about " + num(est) +
+                     " multiply-adds per sparse factorisation (limit " + num(kMaxFactorFlops) +
+                     ", about 10 s): use a coarser grid");
 }
 
 ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, Cavitation cv)
@@ -149,8 +168,15 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   theta.assign(n_nodes, 1.0);
   biactive.assign(n_nodes, 0);
   for (int n = 0; n < n_nodes; ++n) p[n] = pfull[n] = p_fixed[n];
+  // Coarse grid for the cavitation-set prediction: a direction is halved (rounded up) if it
+  // keeps >= 24 nodes around / >= 4 intervals along and its spacing is not more than twice
+  // the other's. Coarsening the coarser direction of an elongated cell would move the
+  // predicted cavitation boundary by many of the fine direction's nodes (slow to correct).
+  const double sphi = R * dphi;
+  coarse_n_circ = N >= 48 && sphi <= 2.0 * dz ? (N + 1) / 2 : N;
+  coarse_n_axial = grid.n_axial >= 8 && dz <= 2.0 * sphi ? (grid.n_axial + 1) / 2 : grid.n_axial;
   coarse_usable = (cav == Cavitation::reynolds || cav == Cavitation::jfo) &&
-                  (N + 1) / 2 >= 24 && (grid.n_axial + 1) / 2 >= 4;
+                  (coarse_n_circ < N || coarse_n_axial < grid.n_axial);
 }
 
 void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
@@ -194,7 +220,17 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
                                     S.has_n[i] ? find(S.unk[n + 1], i) : -1,
                                     find(S.unk[n - 1], i)};
   }
-  S.ldlt.analyze(S.A);
+  if (!S.ldlt.analyze(S.A, kMaxFactorBytes))
+    throw InputError("n_circ, n_axial: the " + std::to_string(N) + " x " +
+                     std::to_string(grid.n_axial) + " film grid needs an estimated " +
+                     num(S.ldlt.bytes_needed() / 1e9) +
+                     " GB for its sparse factorisation (limit " + num(kMaxFactorBytes / 1e9) +
+                     " GB): use a coarser grid");
+  if (S.ldlt.flops() > kMaxFactorFlops)
+    throw InputError("n_circ, n_axial: the " + std::to_string(N) + " x " +
+                     std::to_string(grid.n_axial) + " film grid needs an estimated " +
+                     num(S.ldlt.flops()) + " multiply-adds per factorisation (limit " +
+                     num(kMaxFactorFlops) + ", about 10 s): use a coarser grid");
   S.active.assign(S.n_unk, 0);
   S.rhs.resize(S.n_unk);
   S.sol.resize(S.n_unk);
@@ -220,8 +256,9 @@ void ReynoldsSolver::Impl::mirror_fields() {
 }
 
 void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, double omega_in) {
-  if (!std::isfinite(omega_in))
-    throw InputError("speed: expected a finite angular speed, got " + num(omega_in));
+  if (!(std::isfinite(omega_in) && std::abs(omega_in) <= kMaxOmega))
+    throw InputError("speed_hz: expected |speed_hz| <= 1e5 Hz, got " +
+                     num(omega_in / (2.0 * kPi)));
   double hmin = h_in[0];
   int nmin = 0;
   for (int n = 0; n < n_nodes; ++n) {

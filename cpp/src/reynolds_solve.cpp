@@ -35,10 +35,10 @@ void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
 // changes.
 void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
   if (coarse_usable) {
-    // Coarse grid: ceil(N/2) × ceil(n_axial/2); coarse node jc sits at fine position
-    // jc·N/Nc (exactly every other node when N is even), likewise along z. The film is
-    // interpolated linearly from the fine nodes (exact sampling when the ratio is 2).
-    const int Nc = (N + 1) / 2, nac = (grid.n_axial + 1) / 2, K1c = nac + 1, na = grid.n_axial;
+    // Coarse grid Nc × nac (about half in each direction); coarse node jc sits at fine
+    // position jc·N/Nc (exactly every other node when N is even), likewise along z. The film
+    // is interpolated linearly from the fine nodes (exact sampling when the ratio is 1 or 2).
+    const int Nc = coarse_n_circ, nac = coarse_n_axial, K1c = nac + 1, na = grid.n_axial;
     try {
       if (!coarse) {
         coarse = std::make_unique<ReynoldsSolver>(geo, FilmGrid{Nc, nac}, Cavitation::reynolds);
@@ -221,6 +221,12 @@ void ReynoldsSolver::Impl::postprocess() {
   }
   out.force_n = Eigen::Vector2d(fx * area, fy * area);
   out.friction_torque_nm = torque * area * R;
+  if (!(out.force_n.allFinite() && std::isfinite(out.friction_torque_nm)))
+    throw ConvergenceError(
+        "Reynolds solve: non-finite pressure or force (the film's pressure scale "
+        "viscosity_pa_s*omega*(R/clearance_m)^2 = " +
+        reynolds_detail::num(mu * std::abs(omega) * (R / c) * (R / c)) +
+        " Pa is beyond what double precision represents)");
   out.h_min_m = hmin;
   out.h_min_angle_deg = (nmin / K1) * dphi * 180.0 / kPi;
 

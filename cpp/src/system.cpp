@@ -215,7 +215,8 @@ Linearization SystemSolver::linearize(const Eigen::VectorXd& r, const Eigen::Vec
 
 Linearization SystemSolver::linearize_fd(const Eigen::VectorXd& r, double omega,
                                          double rel_step) {
-  require(rel_step > 0 && rel_step < 0.1, "rel_step: expected a value in (0, 0.1)");
+  require(rel_step >= 1e-10 && rel_step < 0.1,
+          "rel_step: expected 1e-10 <= rel_step < 0.1 (a smaller step is lost in round-off)");
   const Eigen::Index n = model_.n();
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   Linearization out;

@@ -356,6 +356,9 @@ TEST_CASE("sleeve: bad input raises InputError naming the field") {
   m = rig_like();
   m.master_nodes = {14, 7};
   CHECK(msg_of(m).find("sleeve.master_nodes") != std::string::npos);
+  // The order message names the previous node (issue 13: it was built at i = 0 too, reading
+  // master_nodes[-1]; `make sanitize` runs this test under AddressSanitizer).
+  CHECK(msg_of(m).find("got 14 before 7") != std::string::npos);
   m = rig_like();
   m.master_nodes = {7, 21};
   CHECK(msg_of(m).find("sleeve.master_nodes[1]") != std::string::npos);

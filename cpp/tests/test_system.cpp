@@ -78,12 +78,22 @@ TEST_CASE("system: Newton and successive substitution (automatic P_m) agree") {
   CHECK(es.pm > 0);
 }
 
-TEST_CASE("system: contact is reported, bad shapes raise InputError") {
+TEST_CASE("system: failed and contact equilibria are told apart, bad shapes raise InputError") {
   SystemSolver s(one_film(1e7));
   EquilibriumOptions o;
+  // A housing 50 mm off: no equilibrium with an open film. The failed solve is
+  // "no_equilibrium", never the converged status "contact" (issue 13).
   const EquilibriumResult e =
       s.equilibrium(2 * M_PI * 5, 0.0, Eigen::Vector2d(0, 0.05), Eigen::VectorXd(), o);
-  if (e.status != "contact") throw rdtest::Failure("status " + e.status + ": " + e.message);
+  if (e.status != "no_equilibrium") throw rdtest::Failure("status " + e.status + ": " + e.message);
+  CHECK(!(e.residual < o.tol));
+  // A converged equilibrium whose film is below contact_fraction c is "contact".
+  EquilibriumOptions oc;
+  oc.contact_fraction = 0.999;
+  const EquilibriumResult ec =
+      s.equilibrium(2 * M_PI * 50, 0.0, Eigen::Vector2d(0, 0), Eigen::VectorXd(), oc);
+  if (ec.status != "contact") throw rdtest::Failure("status " + ec.status + ": " + ec.message);
+  CHECK(ec.residual < oc.tol);
   CHECK_THROWS(s.film_forces(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 1.0), InputError);
   CHECK_THROWS(s.film_forces(Eigen::Vector2d(0, -4e-4), Eigen::Vector2d::Zero(), 1.0),
                ContactError);

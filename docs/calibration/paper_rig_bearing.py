@@ -22,11 +22,12 @@ Least squares on 8 + 3 residuals: (model − paper)/0.01 for −x/c and y/c at t
 and ln(f_model/f_paper)/0.03 for the three condensed frequencies (a 1 % of c misfit weighs as
 much as a 3 % frequency misfit). Runtime: 20-30 s on an idle core (longer on a busy one).
 
-Run:  .venv/bin/python docs/calibration/paper_rig_bearing.py [--table-only | --cavitation]
+Run:  .venv/bin/python docs/calibration/paper_rig_bearing.py [--table-only | --cavitation | --hs-model]
 (--table-only: just Table 1 of the built-in model, Newton and successive substitution;
 --cavitation: the same fit with the Swift-Stieber and the half-Sommerfeld (`gumbel`) film, to
 Table 1 alone and to Table 1 plus the paper's threshold 0.098 MPa at a_y = -1.85 mm, 50 Hz,
-docs/paper-rig.md, "Cavitation model".)
+docs/paper-rig.md, "Cavitation model"; --hs-model: that half-Sommerfeld fit to Table 1 plus
+the threshold alone, with the rounded values of the built-in model ``paper-rig-hs``.)
 """
 
 from __future__ import annotations
@@ -150,6 +151,30 @@ def cavitation_comparison(groove_deg=90.0):
                   f"  threshold {threshold_mpa(s):.4f} MPa", flush=True)
 
 
+def hs_model(groove_deg=90.0):
+    """The built-in ``paper-rig-hs``: the half-Sommerfeld (`gumbel`) film with E, rho and the
+    chamber arc fitted to Table 1, the sleeve frequencies and the threshold 0.098 MPa together;
+    prints the fitted and the rounded values written into python/rotordyn/data/paper_rig_hs.toml
+    and the rounded model's Table 1, frequencies and threshold (a few minutes)."""
+    r = least_squares(residual_joint, (43.5, 4130.0, 272.0, 334.0),
+                      args=(groove_deg, "gumbel", True),
+                      bounds=([30.0, 2000.0, SLEEVE_ARC[0], SLEEVE_ARC[0] + 20.0],
+                              [140.0, 14000.0, SLEEVE_ARC[1] - 20.0, SLEEVE_ARC[1]]),
+                      x_scale=[10.0, 1000.0, 10.0, 10.0], diff_step=1e-4, max_nfev=60)
+    e, rho, a, b = r.x
+    print(f"fitted: E {e:.3f} GPa, rho {rho:.1f} kg/m3 (E/rho {e * 1e9 / rho:.4g}), chamber "
+          f"{a:.2f}-{b:.2f} deg, cost {r.cost:.4f}, {r.nfev} evaluations")
+    e_r = round(e, 1)
+    rho_r = round(e_r * rho / e, -1)
+    a_r, b_r = round(a), round(b)
+    print(f"rounded: E = {e_r} GPa, rho = {rho_r:.0f} kg/m3, chamber {a_r}-{b_r} deg, "
+          f"groove {groove_deg} deg")
+    s = with_cavitation(build(e_r * 1e9, rho_r, a_r, b_r, groove_deg), "gumbel")
+    show("rounded model (72x16)", s)
+    print("sleeve condensed Hz " + " ".join(f"{v:.1f}" for v in freqs(s))
+          + f"; threshold {threshold_mpa(s):.4f} MPa (paper {PAPER_THRESHOLD_MPA})")
+
+
 def show(label, s):
     x, y, _ = table1(s)
     print(f"{label}:  -x/c " + " ".join(f"{v:.4f}" for v in x)
@@ -181,6 +206,9 @@ def main():
         return
     if "--cavitation" in sys.argv:
         cavitation_comparison()
+        return
+    if "--hs-model" in sys.argv:
+        hs_model()
         return
     t0 = time.perf_counter()
     print("paper Table 1:  -x/c " + " ".join(f"{v:.4f}" for v in PAPER_X)

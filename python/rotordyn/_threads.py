@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import functools
 import os
+import sys
 import threading
 
 from rotordyn.errors import InputError
@@ -39,6 +40,7 @@ def _from_env() -> int | None:
 _lock = threading.Lock()
 _threads: int | None = _from_env()
 _controller = None
+_controller_modules = -1  # len(sys.modules) when the controller was made
 _active = 0
 _saved = None
 
@@ -59,16 +61,20 @@ def get_blas_threads() -> int | None:
 
 
 def _enter():
-    global _controller, _active, _saved
+    global _controller, _controller_modules, _active, _saved
     with _lock:
         if _threads is None:
             return False
         if _active == 0:
             try:
-                if _controller is None:
+                # A BLAS loaded since the controller was made (a new extension module) would
+                # escape it: look again whenever modules were imported (~10 ms; rare once the
+                # program runs).
+                if _controller is None or len(sys.modules) != _controller_modules:
                     from threadpoolctl import ThreadpoolController
 
                     _controller = ThreadpoolController()
+                    _controller_modules = len(sys.modules)
                 _saved = _controller.limit(limits=_threads, user_api="blas")
             except ImportError:  # threadpoolctl is a dependency; tolerate its absence
                 _saved = None

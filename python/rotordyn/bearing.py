@@ -29,35 +29,61 @@ from typing import Iterable, Sequence
 import numpy as np
 
 from rotordyn import _core
+from rotordyn import _validate as v
 from rotordyn.errors import InputError
 
 CAVITATION_MODELS = ("none", "gumbel", "reynolds", "jfo")
 TWO_PI = 2.0 * math.pi
 
 
+# Ranges accepted at the boundary (the C++ core checks the same; beyond them a film has no
+# physical meaning and its pressures overflow).
+MAX_SPEED_HZ = 1e5
+MAX_VELOCITY_M_S = 1e3
+MAX_GRID = 1 << 20  # nodes in one direction
+MAX_FILM_NODES = 1 << 22  # n_circ * (n_axial + 1)
+MAX_THREADS = 1024
+
+
 def _finite(value, name: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"{name}: expected a real number, got {value!r}") from None
-    if not math.isfinite(v):
-        raise InputError(f"{name}: expected a finite number, got {v}")
-    return v
+    """A finite real number: int/float/numpy scalar; text, None and bools are rejected (the
+    rule of the model classes, rotordyn._validate)."""
+    return v.finite(name, value)
 
 
 def _positive(value, name: str) -> float:
-    v = _finite(value, name)
-    if not v > 0.0:
-        raise InputError(f"{name}: expected a finite value > 0, got {v}")
-    return v
+    return v.positive(name, value)
 
 
-def _integer(value, name: str, lo: int) -> int:
+def _integer(value, name: str, lo: int, hi: int = MAX_GRID) -> int:
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-        raise InputError(f"{name}: expected an integer >= {lo}, got {value!r}")
-    if int(value) < lo:
-        raise InputError(f"{name}: expected an integer >= {lo} (grid too coarse), got {value}")
+        raise InputError(f"{name}: expected an integer in [{lo}, {hi}], got {value!r}")
+    if not lo <= int(value) <= hi:
+        raise InputError(f"{name}: expected an integer in [{lo}, {hi}] (grid too coarse below "
+                         f"{lo}), got {value}")
     return int(value)
+
+
+def _speed(value) -> float:
+    f = _finite(value, "speed_hz")
+    if not abs(f) <= MAX_SPEED_HZ:
+        raise InputError(f"speed_hz: expected |speed_hz| <= {MAX_SPEED_HZ:g} Hz, got {f!r}")
+    return f
+
+
+def _velocity(value, name: str) -> float:
+    u = _finite(value, name)
+    if not abs(u) <= MAX_VELOCITY_M_S:
+        raise InputError(f"{name}: expected |{name}| <= {MAX_VELOCITY_M_S:g} m/s, got {u!r}")
+    return u
+
+
+def _float_array(value, name: str) -> np.ndarray:
+    try:
+        a = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: expected numbers (a scalar or an array), got {value!r}") from None
+    return a
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,13 +102,14 @@ class Groove:
     pressure_pa: float = 0.0
 
     def __post_init__(self) -> None:
-        _finite(self.center_deg, "Groove.center_deg")
-        w = _finite(self.width_deg, "Groove.width_deg")
-        if not 0.0 <= w < 360.0:
-            raise InputError(f"Groove.width_deg: expected 0 <= width_deg < 360, got {w}")
-        p = _finite(self.pressure_pa, "Groove.pressure_pa")
-        if p < 0.0:
-            raise InputError(f"Groove.pressure_pa: expected a gauge pressure >= 0, got {p}")
+        # numbers only (text is rejected as in the model classes), stored as floats so that
+        # Groove(90) == Groove(90.0)
+        c = _finite(self.center_deg, "Groove.center_deg")
+        w = v.in_range("Groove.width_deg", self.width_deg, 0.0, 360.0, hi_open=True)
+        p = v.in_range("Groove.pressure_pa", self.pressure_pa, 0.0, 1e9)
+        object.__setattr__(self, "center_deg", c)
+        object.__setattr__(self, "width_deg", w)
+        object.__setattr__(self, "pressure_pa", p)
 
     def to_core(self) -> _core.Groove:
         return _core.Groove(float(self.center_deg), float(self.width_deg), float(self.pressure_pa))
@@ -207,9 +234,18 @@ class JournalBearing:
         self.viscosity_pa_s = _positive(viscosity_pa_s, "viscosity_pa_s")
         self.n_circ = _integer(n_circ, "n_circ", 12)
         self.n_axial = _integer(n_axial, "n_axial", 2)
-        if cavitation not in CAVITATION_MODELS:
+        nodes = self.n_circ * (self.n_axial + 1)
+        if nodes > MAX_FILM_NODES:
+            raise InputError(
+                f"n_circ, n_axial: expected at most {MAX_FILM_NODES} film nodes"
+                f" n_circ*(n_axial+1), got {nodes} (about {nodes * 400 / 1e9:.3g} GB before the"
+                " factorisation's fill)"
+            )
+        if not isinstance(cavitation, str) or cavitation not in CAVITATION_MODELS:
             raise InputError(f"cavitation: expected one of {CAVITATION_MODELS}, got {cavitation!r}")
         self.cavitation = cavitation
+        if isinstance(grooves, (str, bytes)) or not isinstance(grooves, Iterable):
+            raise InputError(f"grooves: expected a sequence of rotordyn.Groove, got {grooves!r}")
         gs = tuple(grooves)
         for i, g in enumerate(gs):
             if not isinstance(g, Groove):
@@ -286,8 +322,8 @@ class JournalBearing:
     ) -> np.ndarray:
         """Film force ``[Fx, Fy]`` on the journal, N (rigid journal at (x, y) moving at (vx, vy))."""
         x, y = self._position(x_m, y_m)
-        w = TWO_PI * _finite(speed_hz, "speed_hz")
-        vx, vy = _finite(vx_m_s, "vx_m_s"), _finite(vy_m_s, "vy_m_s")
+        w = TWO_PI * _speed(speed_hz)
+        vx, vy = _velocity(vx_m_s, "vx_m_s"), _velocity(vy_m_s, "vy_m_s")
         return np.asarray(self.solver().force(x, y, vx, vy, w), dtype=float)
 
     def solve(
@@ -295,8 +331,8 @@ class JournalBearing:
     ) -> FilmResult:
         """Every scalar output of one solve: force, friction torque, flows, minimum film."""
         x, y = self._position(x_m, y_m)
-        w = TWO_PI * _finite(speed_hz, "speed_hz")
-        r = self.solver().rigid(x, y, _finite(vx_m_s, "vx_m_s"), _finite(vy_m_s, "vy_m_s"), w)
+        w = TWO_PI * _speed(speed_hz)
+        r = self.solver().rigid(x, y, _velocity(vx_m_s, "vx_m_s"), _velocity(vy_m_s, "vy_m_s"), w)
         return FilmResult(
             force_n=np.asarray(r.force_n, dtype=float),
             friction_torque_nm=float(r.friction_torque_nm),
@@ -312,9 +348,9 @@ class JournalBearing:
     ) -> PressureField:
         """Pressure field and its grid, shapes (n_circ,), (n_axial+1,), (n_circ, n_axial+1)."""
         x, y = self._position(x_m, y_m)
-        w = TWO_PI * _finite(speed_hz, "speed_hz")
+        w = TWO_PI * _speed(speed_hz)
         s = self.solver()
-        r = s.rigid(x, y, _finite(vx_m_s, "vx_m_s"), _finite(vy_m_s, "vy_m_s"), w)
+        r = s.rigid(x, y, _velocity(vx_m_s, "vx_m_s"), _velocity(vy_m_s, "vy_m_s"), w)
         return PressureField(
             phi_rad=np.asarray(s.phi_rad),
             z_m=np.asarray(s.z_m),
@@ -335,11 +371,12 @@ class JournalBearing:
         with steps ``rel_step·c`` and ``rel_step·c·ω``.
         """
         x, y = self._position(x_m, y_m)
-        w = TWO_PI * _finite(speed_hz, "speed_hz")
+        w = TWO_PI * _speed(speed_hz)
         if method == "perturbation":
             dc = self.solver().coefficients(x, y, w)
         elif method == "finite_difference":
-            dc = self.solver().coefficients_fd(x, y, w, _positive(rel_step, "rel_step"))
+            step = v.in_range("rel_step", rel_step, 1e-10, 0.1, hi_open=True)
+            dc = self.solver().coefficients_fd(x, y, w, step)
         else:
             raise InputError(
                 f"method: expected 'perturbation' or 'finite_difference', got {method!r}"
@@ -360,33 +397,36 @@ class JournalBearing:
         Newton iteration with the perturbation Jacobian (in C++), converged to
         ``|F + load| <= rtol·|load|``.
         """
-        try:
-            lx, ly = (float(v) for v in load_n)
-        except (TypeError, ValueError):
-            raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}") from None
-        lx, ly = _finite(lx, "load_n[0]"), _finite(ly, "load_n[1]")
+        if isinstance(load_n, (str, bytes)) or not isinstance(load_n, (Sequence, np.ndarray)) \
+                or len(load_n) != 2:
+            raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}")
+        lx, ly = _finite(load_n[0], "load_n[0]"), _finite(load_n[1], "load_n[1]")
         W = math.hypot(lx, ly)
-        if not W > 0.0:
-            raise InputError("load_n: expected a nonzero load, got (0, 0)")
-        f = _finite(speed_hz, "speed_hz")
+        if not math.isfinite(W):
+            raise InputError(f"load_n: expected a finite load, got {load_n!r}")
+        f = _speed(speed_hz)
         if f == 0.0:
-            raise InputError("speed_hz: static equilibrium needs a nonzero speed, got 0")
+            raise InputError("speed_hz: static equilibrium needs 0 < |speed_hz| <= 1e5, got 0")
         x0 = y0 = 0.0
         if x0_m is not None or y0_m is not None:
-            x0, y0 = self._position(x0_m or 0.0, y0_m or 0.0)
-        e = self.solver().equilibrium(lx, ly, TWO_PI * f, x0, y0, _positive(rtol, "rtol"))
+            x0, y0 = self._position(0.0 if x0_m is None else x0_m, 0.0 if y0_m is None else y0_m)
+        tol = v.in_range("rtol", rtol, 1e-14, 1e-2)
+        e = self.solver().equilibrium(lx, ly, TWO_PI * f, x0, y0, tol)
         x, y = float(e.x_m), float(e.y_m)
         eps = math.hypot(x, y) / self.clearance_m
         # attitude: angle from the load direction to the line of centres, + with the rotation
-        dx, dy = lx / W, ly / W
-        att = math.degrees(math.atan2(dx * y - dy * x, dx * x + dy * y))
-        if f < 0:
-            att = -att
+        if W > 0.0 and (x != 0.0 or y != 0.0):
+            dx, dy = lx / W, ly / W
+            att = math.degrees(math.atan2(dx * y - dy * x, dx * x + dy * y))
+            if f < 0:
+                att = -att
+        else:
+            att = float("nan")  # no load direction (zero load: the concentric journal)
         R = 0.5 * self.diameter_m
         S = (
             self.viscosity_pa_s * abs(f) * self.length_m * self.diameter_m / W
             * (R / self.clearance_m) ** 2
-        )
+        ) if W > 0.0 else math.inf
         return BearingEquilibrium(
             x_m=x,
             y_m=y,
@@ -436,10 +476,21 @@ class JournalBearing:
     def _check_batch_options(n_threads, on_error):
         if on_error not in ("raise", "nan"):
             raise InputError(f"on_error: expected 'raise' or 'nan', got {on_error!r}")
-        if isinstance(n_threads, bool) or not isinstance(n_threads, (int, np.integer)):
-            raise InputError(f"n_threads: expected an integer >= 0, got {n_threads!r}")
-        if n_threads < 0:
-            raise InputError(f"n_threads: expected an integer >= 0 (0: all cores), got {n_threads}")
+        if isinstance(n_threads, bool) or not isinstance(n_threads, (int, np.integer)) \
+                or not 0 <= n_threads <= MAX_THREADS:
+            raise InputError(
+                f"n_threads: expected an integer in [0, {MAX_THREADS}] (0: all cores), got "
+                f"{n_threads!r}"
+            )
+
+    @staticmethod
+    def _broadcast(**arrays):
+        vals = [_float_array(a, k) for k, a in arrays.items()]
+        try:
+            return np.broadcast_arrays(*vals)
+        except ValueError:
+            shapes = ", ".join(f"{k} {a.shape}" for k, a in zip(arrays, vals))
+            raise InputError(f"{', '.join(arrays)}: shapes do not broadcast ({shapes})") from None
 
     def forces_batch(self, *, x_m, y_m, speed_hz, vx_m_s=0.0, vy_m_s=0.0, n_threads: int = 1,
                      on_error: str = "raise") -> np.ndarray:
@@ -450,9 +501,8 @@ class JournalBearing:
         ``"nan"`` leaves NaN rows for failing points.
         """
         self._check_batch_options(n_threads, on_error)
-        x, y, f, vx, vy = np.broadcast_arrays(
-            *(np.asarray(a, dtype=float) for a in (x_m, y_m, speed_hz, vx_m_s, vy_m_s))
-        )
+        x, y, f, vx, vy = self._broadcast(x_m=x_m, y_m=y_m, speed_hz=speed_hz, vx_m_s=vx_m_s,
+                                          vy_m_s=vy_m_s)
         states = np.ascontiguousarray(np.stack([x.ravel(), y.ravel(), vx.ravel(), vy.ravel()], 1))
         if on_error == "raise":
             if not np.all(np.isfinite(states)) or not np.all(np.isfinite(f)):
@@ -470,7 +520,7 @@ class JournalBearing:
         """Forces (n, 2), K (n, 2, 2), C (n, 2, 2) by perturbation, in one C++ call, with
         ``status`` (n,) (0 ok, 1 bad input, 2 contact, 3 not converged) and ``message``."""
         self._check_batch_options(n_threads, on_error)
-        x, y, f = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (x_m, y_m, speed_hz)))
+        x, y, f = self._broadcast(x_m=x_m, y_m=y_m, speed_hz=speed_hz)
         pos = np.ascontiguousarray(np.stack([x.ravel(), y.ravel()], 1))
         if on_error == "raise":
             if not np.all(np.isfinite(pos)) or not np.all(np.isfinite(f)):

@@ -7,7 +7,10 @@ Machine-readable output goes to stdout with ``--json``; logs go to stderr.
 from __future__ import annotations
 
 import argparse
+import math
+import os
 import sys
+from pathlib import Path
 
 import numpy as np
 
@@ -16,6 +19,8 @@ from rotordyn import cli_bearing
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.cli_common import ArgumentParser as _ArgumentParser
 from rotordyn.cli_common import json_text as _json
+
+MAX_SPEEDS = 100_000  # speeds of one Campbell/unbalance run (more is not a diagram)
 
 
 # -- info -------------------------------------------------------------------------------
@@ -32,10 +37,34 @@ def _cmd_info(args) -> int:
 
 
 # -- validate ---------------------------------------------------------------------------
+def _save(ax, path: str) -> None:
+    """Save the figure of ``ax`` (or of the first of a tuple of Axes) to PNG/SVG/PDF."""
+    import matplotlib.pyplot as plt
+
+    fig = (ax[0] if isinstance(ax, tuple) else ax).figure
+    fig.savefig(path)
+    plt.close(fig)
+    print(f"wrote {path}", file=sys.stderr)
+
+
+def _check_fig(path) -> None:
+    """Check a --plot file before any solve (folder, format) and select the Agg backend."""
+    if path is not None:
+        _figure_path("--plot", path)
+    import matplotlib
+
+    matplotlib.use("Agg")
+
+
 def _cmd_validate(args) -> int:
+    _check_fig(args.plot)
     s = rotordyn.models.load(args.model)
     print(f"{args.model}: ok ({s.rotor.n_elements} elements, {s.rotor.n_stations} stations, "
           f"{s.mass_kg:.4f} kg)")
+    if args.plot:
+        from rotordyn.plot import rotor_drawing
+
+        _save(rotor_drawing(s), args.plot)
     return 0
 
 
@@ -59,12 +88,22 @@ def _cmd_modes(args) -> int:
         from rotordyn import cli_sleeve  # provided with the sleeve model
 
         return cli_sleeve.modes(args)
+    _check_fig(args.plot)
     s = rotordyn.models.load(args.model)
     r = rotordyn.modes(s, args.speed_hz, reduction=args.reduction, n_modes=args.n_modes)
     if args.json:
         print(_json(_modes_payload(r)))
     else:
         print(r.to_frame().to_string(index=False))
+    if args.plot:
+        shown = r.full if r.full is not None else r  # shapes of the full FE model
+        if args.mode is not None:
+            if not 1 <= args.mode <= len(shown.eigenvalues):
+                raise rotordyn.InputError(f"--mode: expected 1..{len(shown.eigenvalues)}, got "
+                                          f"{args.mode}")
+            _save(shown.plot(args.mode - 1, system=s), args.plot)
+        else:
+            _save(shown.plot(), args.plot)
     return 0
 
 
@@ -94,18 +133,55 @@ def _cmd_equilibrium(args) -> int:
 
 # -- linear analyses (issue 5) -----------------------------------------------------------
 def _speeds(text: str) -> np.ndarray:
-    """"a:b:step" (inclusive) or "f1,f2,..." → speeds in Hz."""
+    """"a:b:step" (inclusive) or "f1,f2,..." → speeds in Hz (at most MAX_SPEEDS)."""
+    bad = rotordyn.InputError(
+        f"--speeds-hz: expected 'start:stop:step' or a comma-separated list, got {text!r}")
     try:
         if ":" in text:
             a, b, st = (float(x) for x in text.split(":"))
-            if st <= 0 or b < a:
-                raise ValueError
-            return np.arange(a, b + 0.5 * st, st)
-        return np.array([float(x) for x in text.split(",")])
+        else:
+            return np.array([float(x) for x in text.split(",")])
     except ValueError:
+        raise bad from None
+    if not (np.isfinite(a) and np.isfinite(b) and np.isfinite(st)) or st <= 0 or b < a:
+        raise bad
+    # Count before allocating (issue 13: 5:1e9:1e-9 raised MemoryError).
+    count = math.floor((b - a) / st + 0.5) + 1
+    if count > MAX_SPEEDS:
         raise rotordyn.InputError(
-            f"--speeds-hz: expected 'start:stop:step' or a comma-separated list, got {text!r}"
-        ) from None
+            f"--speeds-hz: expected at most {MAX_SPEEDS} speeds, {text!r} gives {count:.3g}")
+    return np.arange(a, b + 0.5 * st, st)
+
+
+def _figure_path(flag: str, path: str) -> str:
+    """An output figure: its folder must exist and its suffix be a format matplotlib writes
+    (issue 13: a missing folder or an unknown suffix gave a traceback after the solve)."""
+    from matplotlib.figure import Figure
+
+    p = Path(path)
+    kinds = Figure().canvas.get_supported_filetypes()
+    if p.suffix.lstrip(".").lower() not in kinds:
+        raise rotordyn.InputError(f"{flag}: expected a file name ending in one of "
+                                  f"{', '.join('.' + k for k in sorted(kinds))}, got {path!r}")
+    folder = p.parent if str(p.parent) else Path(".")
+    if not folder.is_dir():
+        raise rotordyn.InputError(f"{flag}: folder {str(folder)!r} does not exist")
+    if p.is_dir():
+        raise rotordyn.InputError(f"{flag}: {path!r} is a directory")
+    return path
+
+
+def _out_dir(flag: str, path: str) -> str:
+    """An output directory, created (with its parents) if missing; InputError naming the
+    flag when it is a file or cannot be created."""
+    p = Path(path)
+    if p.exists() and not p.is_dir():
+        raise rotordyn.InputError(f"{flag}: {path!r} exists and is not a directory")
+    try:
+        p.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise rotordyn.InputError(f"{flag}: cannot create {path!r}: {exc.strerror}") from None
+    return path
 
 
 def _cmd_stability(args) -> int:
@@ -126,8 +202,9 @@ def _cmd_stability(args) -> int:
 
 
 def _cmd_campbell(args) -> int:
-    s = rotordyn.models.load(args.model)
+    _check_fig(args.plot)
     speeds = _speeds(args.speeds_hz)
+    s = rotordyn.models.load(args.model)
     if s.bearings:
         c = rotordyn.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m)
     else:
@@ -142,11 +219,7 @@ def _cmd_campbell(args) -> int:
     else:
         print(crit.to_string(index=False))
     if args.plot:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        ax = c.plot()
-        ax.figure.savefig(args.plot, dpi=120, bbox_inches="tight")
+        _save(c.plot(), args.plot)
     return 0
 
 
@@ -165,6 +238,7 @@ def _cmd_threshold(args) -> int:
 
 
 def _cmd_unbalance(args) -> int:
+    _check_fig(args.plot)
     s = rotordyn.models.load(args.model)
     ub = []
     for text in args.unbalance:
@@ -186,10 +260,12 @@ def _cmd_unbalance(args) -> int:
         for st in u.stations:
             print(f"station {st}:")
             print(u.peaks(st).to_string(index=False))
+    if args.plot:
+        _save(u.plot(kind=args.plot_kind), args.plot)
     return 0
 
 
-MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, friswell-5.9.1); "
+MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, paper-rig-hs, friswell-5.9.1); "
               "see `rotordyn validate`")
 JSON_HELP = "print one JSON record on stdout (NaN written as null) instead of a table"
 
@@ -231,7 +307,10 @@ def _cmd_plot(args) -> int:
     from rotordyn.plot import plot_dataset
     from rotordyn.sweep import read_dataset
 
-    plot_dataset(read_dataset(args.dir), args.kind, args.out)
+    _figure_path("--out", args.out)
+    kw = ({"style": args.style, "scale": args.scale, "axis": args.axis}
+          if args.kind == "waterfall" else {})
+    plot_dataset(read_dataset(args.dir), args.kind, args.out, **kw)
     print(f"wrote {args.out}", file=sys.stderr)
     return 0
 
@@ -240,7 +319,8 @@ def _cmd_plot(args) -> int:
 def _cmd_report(args) -> int:
     from rotordyn import report
 
-    return report.run(args.model, args.out, html=args.html)
+    return report.run(args.model, _out_dir("--out", args.out), html=args.html,
+                      operating_speed_hz=args.operating_speed_hz)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -256,6 +336,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     s = sub.add_parser("validate", help="check a model file")
     s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also draw the rotor (sections, disks, bearings) to FIG.png/.svg")
     s.set_defaults(func=_cmd_validate)
 
     s = sub.add_parser("modes", help="natural frequencies of the rotor (full or reduced)")
@@ -268,6 +350,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="number of modes (default: all of a reduced model, 12 of a full one)")
     s.add_argument("--part", choices=["rotor", "sleeve"], default="rotor",
                    help="rotor, or the active bearing's flexible sleeve")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also write the mode shapes (full FE model) to FIG.png/.svg")
+    s.add_argument("--mode", type=int, default=None, metavar="K",
+                   help="with --plot: the 3-D whirl orbits of mode K (1-based) along the rotor "
+                        "(default: all modes' shapes in the x plane)")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_modes)
 
@@ -323,6 +410,10 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
                    metavar=("MIN", "MAX"),
                    help="operating speed range, Hz, for the API 684 separation margins")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also write the response figure to FIG.png/.svg")
+    s.add_argument("--plot-kind", choices=["bode", "polar"], default="bode",
+                   help="figure for --plot: Bode (amplitude/phase, AF, margins) or polar")
     _add_operating_point(s, speed=False)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_unbalance)
@@ -348,6 +439,12 @@ def build_parser() -> argparse.ArgumentParser:
                    choices=["stability-map", "equilibrium", "campbell", "waterfall"],
                    help="figure kind; it must match the sweep's analysis")
     s.add_argument("--out", required=True, metavar="FIG", help="FIG.png or FIG.svg")
+    s.add_argument("--style", choices=["cascade", "map"], default="cascade",
+                   help="waterfall: 3-D cascade or colour map (speed × frequency)")
+    s.add_argument("--scale", choices=["linear", "log"], default="linear",
+                   help="waterfall: amplitude scale")
+    s.add_argument("--axis", choices=["x", "y"], default="x",
+                   help="waterfall: journal motion component")
     s.set_defaults(func=_cmd_plot)
 
     s = sub.add_parser("report", help="the main job: analyses of a model written under --out")
@@ -356,8 +453,15 @@ def build_parser() -> argparse.ArgumentParser:
                    help="directory for report.txt, tables and figures")
     s.add_argument("--html", default=None, metavar="FILE",
                    help="also write one self-contained HTML report (figures as SVG)")
+    s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
+                   metavar=("MIN", "MAX"),
+                   help="operating speed range, Hz, for the API margins in the HTML report "
+                        "(default: 45 55 for paper-rig, none otherwise)")
     s.set_defaults(func=_cmd_report)
     cli_bearing.register(sub)
+    from rotordyn import cli_control  # issue 8: `rotordyn control ...`
+
+    cli_control.register(sub)
     return p
 
 
@@ -373,16 +477,27 @@ def _check_offset(s, args) -> None:
             return
 
 
-def _show_warning(message, category, filename, lineno, file=None, line=None):
-    """Warnings as one line on stderr: ``rotordyn: warning: <field> = ...``."""
-    print(f"rotordyn: warning: {message}", file=sys.stderr)
+def _warning_printer(default):
+    """rotordyn's own warnings as one line on stderr (``rotordyn: warning: <field> = ...``);
+    other libraries' warnings as usual."""
+
+    def show(message, category, filename, lineno, file=None, line=None):
+        from rotordyn.errors import RotordynWarning
+
+        if issubclass(category, RotordynWarning):
+            print(f"rotordyn: warning: {message}", file=sys.stderr)
+        else:
+            default(message, category, filename, lineno, file, line)
+
+    return show
 
 
 def main(argv: list[str] | None = None) -> int:
     import warnings
 
     argv = list(sys.argv[1:] if argv is None else argv)
-    warnings.showwarning = _show_warning
+    shown = warnings.showwarning
+    warnings.showwarning = _warning_printer(shown)
     try:
         args = build_parser().parse_args(argv)
         if getattr(args, "model", None) is not None and hasattr(args, "config_ay_m"):
@@ -399,6 +514,21 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     except BrokenPipeError:  # output piped into e.g. `head`
         return 0
+    except MemoryError:
+        print("rotordyn: failed: out of memory (reduce the grid, the number of points or "
+              "n_out)", file=sys.stderr)
+        return 1
+    except OSError as exc:  # a file system failure while writing results
+        print(f"rotordyn: failed: {exc}", file=sys.stderr)
+        return 1
+    except Exception as exc:  # a bug: one line, not a traceback (ROTORDYN_DEBUG=1 re-raises)
+        if os.environ.get("ROTORDYN_DEBUG"):
+            raise
+        print(f"rotordyn: internal error: {type(exc).__name__}: {exc} (please report; "
+              "ROTORDYN_DEBUG=1 shows the traceback)", file=sys.stderr)
+        return 1
+    finally:
+        warnings.showwarning = shown
 
 
 if __name__ == "__main__":  # pragma: no cover

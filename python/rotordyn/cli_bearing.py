@@ -9,6 +9,8 @@ readable record. Exit 2 on bad input (the message names the field).
 from __future__ import annotations
 
 import argparse
+import math
+
 import numpy as np
 
 from rotordyn.bearing import CAVITATION_MODELS, Groove, JournalBearing
@@ -72,6 +74,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     s.set_defaults(func=run)
 
 
+def _finite_or_none(value: float):
+    return value if math.isfinite(value) else None
+
+
 def run(args: argparse.Namespace) -> int:
     from rotordyn import plausibility
 
@@ -101,7 +107,9 @@ def run(args: argparse.Namespace) -> int:
         rec["equilibrium"] = {
             "load_n": list(eq.load_n), "x_m": eq.x_m, "y_m": eq.y_m,
             "eccentricity_ratio": eq.eccentricity_ratio,
-            "attitude_angle_deg": eq.attitude_angle_deg, "sommerfeld": eq.sommerfeld,
+            # zero load: no load direction and no Sommerfeld number (null, not NaN/inf)
+            "attitude_angle_deg": _finite_or_none(eq.attitude_angle_deg),
+            "sommerfeld": _finite_or_none(eq.sommerfeld),
             "residual_rel": eq.residual_rel, "iterations": eq.iterations,
         }
     else:
@@ -122,8 +130,8 @@ def run(args: argparse.Namespace) -> int:
     else:
         if "equilibrium" in rec:
             e = rec["equilibrium"]
-            print(f"equilibrium: x = {x:.6g} m, y = {y:.6g} m, eps = {e['eccentricity_ratio']:.4f},"
-                  f" attitude = {e['attitude_angle_deg']:.2f} deg, S = {e['sommerfeld']:.4g}")
+            print(f"equilibrium: x = {x:.6g} m, y = {y:.6g} m, eps = {e['eccentricity_ratio']:.4g},"
+                  f" attitude = {eq.attitude_angle_deg:.2f} deg, S = {eq.sommerfeld:.4g}")
         print(f"force on journal: Fx = {r.force_n[0]:.6g} N, Fy = {r.force_n[1]:.6g} N")
         print(f"friction torque: {r.friction_torque_nm:.6g} N m; inlet flow {r.inlet_flow_m3_s:.6g}"
               f" m3/s, side flow {r.side_flow_m3_s:.6g} m3/s")

@@ -28,8 +28,10 @@ def load_sleeve(model: str) -> FlexibleSleeve:
     from rotordyn import models
     from rotordyn.model.bearings import ActiveJournalBearing
 
+    from rotordyn.model.toml_io import parse_toml, read_text
+
     if model in models.BUILTIN or (model.endswith(".toml") and Path(model).is_file()
-                                   and "[[bearing]]" in Path(model).read_text()):
+                                   and "[[bearing]]" in read_text(model)):
         system = models.load(model)
         for b in system.bearings:
             if isinstance(b, ActiveJournalBearing):
@@ -40,12 +42,7 @@ def load_sleeve(model: str) -> FlexibleSleeve:
     path = Path(model)
     if not path.is_file():
         raise InputError(f"model: expected 'paper-rig' or a TOML file, got {model!r}")
-    try:
-        import tomllib
-    except ModuleNotFoundError:  # Python 3.10
-        import tomli as tomllib  # type: ignore[no-redef]
-    with path.open("rb") as fh:
-        data = tomllib.load(fh)
+    data = parse_toml(read_text(path), model)
     table = data.get("sleeve")
     if not isinstance(table, dict):
         raise InputError(f"{model}: expected a [sleeve] table")
@@ -55,6 +52,9 @@ def load_sleeve(model: str) -> FlexibleSleeve:
         raise InputError(f"sleeve.{unknown[0]}: unknown key; expected one of {sorted(known)}")
     kw = dict(table)
     if "master_stations" in kw:
+        if not isinstance(kw["master_stations"], list):
+            raise InputError(f"sleeve.master_stations: expected a list of integers, got "
+                             f"{kw['master_stations']!r}")
         kw["master_stations"] = tuple(kw["master_stations"])
     missing = sorted(f.name for f in dataclasses.fields(FlexibleSleeve)
                      if f.default is dataclasses.MISSING and f.name not in kw)

@@ -14,6 +14,7 @@ from rotordyn.errors import InputError, RotordynError
 from rotordyn import _validate as v
 from rotordyn.model.system import System
 from rotordyn.results.campbell import CampbellResult
+from rotordyn.results.equilibrium import CONVERGED
 
 WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
 
@@ -41,7 +42,7 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
                                               method):
         status[i] = stt
-        if lm is None:
+        if lm is None or stt not in CONVERGED:  # a failed point stays a NaN row
             continue
         try:
             st = _stability_from(asm, lm, k)
@@ -52,7 +53,8 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
         lam[i, :m] = st.eigenvalues[:m]
         whirl[i, :m] = [WHIRL_CODE[w] for w in st.whirl[:m]]
         kind[i, :m] = st.kind[:m]
-        shapes[i, :, :m] = st.modes[:, :m]
+        if st.modes is not None:
+            shapes[i, :, :m] = st.modes[:, :m]
     # Modes tracked by eigenvector continuity (mass-weighted MAC between consecutive speeds).
     mode_id = track_modes(lam, shapes, weight=np.asarray(asm.model.M))
     return CampbellResult(sp, lam, whirl, model=system.reduction.method, kind=kind,

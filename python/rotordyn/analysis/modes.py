@@ -109,8 +109,11 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
     method = system.reduction.method if reduction is None else reduction
     v.choice("reduction", method, REDUCTION_METHODS)
     full_rm = RotorMatrices(system, "none")
+    n_full = full_rm.full.M.shape[0]
+    if n_modes is not None:  # no more modes than coordinates (issue 13)
+        v.integer("n_modes", n_modes, lo=1, hi=n_full)
     if method == "none":
-        return _result(full_rm, speed_hz, n_modes or 12, "full")
+        return _result(full_rm, speed_hz, n_modes or min(12, n_full), "full")
     rm = RotorMatrices(system, method)
     n_red = rm.reduction.M.shape[0]
     k = min(n_modes or n_red, n_red)

@@ -36,6 +36,12 @@ def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
     ``("journal", bearing_index)`` (journal x, y relative to the housing, m),
     ``("sleeve", bearing_index)`` (sleeve masters, m). Default: the journal of every bearing.
     """
+    for name, val in (("inputs", inputs), ("outputs", outputs)):
+        if isinstance(val, str):
+            val = (val,)
+        if not isinstance(val, (tuple, list)):
+            raise InputError(f"{name}: expected a list of {name}, got {val!r}")
+    inputs = (inputs,) if isinstance(inputs, str) else inputs
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, **kw)
     if lm.status not in CONVERGED:
         raise ConvergenceError(f"statespace: no equilibrium at this operating point ({lm.status}: "

@@ -163,10 +163,10 @@ def stability_boundary(system: System, vary: str = "chamber_pressure_pa",
     v.choice("along", along, PARAMETERS)
     if along == vary:
         raise InputError("along: expected a parameter other than vary")
-    vals = np.asarray(values, dtype=float)
-    if vals.ndim != 1 or vals.size == 0 or not np.all(np.isfinite(vals)):
+    vals = v.vector("values", values)
+    if vals.size == 0:
         raise InputError("values: expected a non-empty 1-D array of finite values")
-    lo, hi = (float(b) for b in bounds)
+    lo, hi = v.bounds("bounds", bounds)
     rows, prev = [], None
     for x in vals:
         kw = dict(fixed)

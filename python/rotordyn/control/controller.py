@@ -138,6 +138,20 @@ class Controller:
         d.update(kw)
         return Controller(**d)
 
+    def with_washout(self, corner_hz: float) -> "Controller":
+        """The controller behind a first-order high-pass s/(s + a), a = 2π·corner_hz, on every
+        measurement: slow drifts (the equilibrium moving during a run-up) no longer feed
+        the law. States [x_w (n_y); x_k]."""
+        v.positive("corner_hz", corner_hz)
+        a = 2 * np.pi * corner_hz
+        ny, nk = self.n_inputs, self.n_states
+        A = np.block([[-a * np.eye(ny), np.zeros((ny, nk))], [-a * self.B, self.A]])
+        B = np.vstack([np.eye(ny), self.B])
+        C = np.hstack([-a * self.D, self.C])
+        info = dict(self.info, washout_hz=corner_hz)
+        return self.with_options(A=A, B=B, C=C, D=self.D.copy(), info=info,
+                                 name=self.name + "+washout")
+
     def to_core(self, Cm: np.ndarray, offset: np.ndarray):
         ny = Cm.shape[0]
         if ny != self.n_inputs:

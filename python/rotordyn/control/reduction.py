@@ -63,7 +63,7 @@ def modal_truncation(p, max_frequency_hz: float = 500.0, *, keep_actuator: bool 
     Cp = p.C_perf @ T
     red = replace(p, A=Ar, B=Br, C=Cr, Bd=Bdr, C_perf=Cp,
                   state_names=tuple(f"modal_{i}" for i in range(Ar.shape[0])),
-                  info=dict(p.info, reduced_from=A.shape[0], feedthrough=Dr))
+                  info=dict(p.info, reduced_from=A.shape[0], feedthrough=Dr, T=T))
     w = 2 * np.pi * np.logspace(np.log10(check_hz[0]), np.log10(check_hz[1]), n_check)
     G = _freqresp(A, B, C, w)
     Gr = _freqresp(Ar, Br, Cr, w) + Dr

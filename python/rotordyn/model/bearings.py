@@ -16,6 +16,7 @@ from rotordyn.sleeve import FlexibleSleeve
 
 def _check_film(b, where: str, n_stations: int) -> None:
     v.integer(f"{where}.station", b.station, lo=0, hi=n_stations - 1)
+    v.text(f"{where}.name", b.name)
     v.positive(f"{where}.diameter_m", b.diameter_m)
     v.positive(f"{where}.length_m", b.length_m)
     c = v.positive(f"{where}.clearance_m", b.clearance_m)
@@ -103,6 +104,13 @@ class ActiveJournalBearing:
         _check_film(self, where, n_stations)
         if not isinstance(self.sleeve, FlexibleSleeve):
             raise InputError(f"{where}.sleeve: expected a FlexibleSleeve, got {self.sleeve!r}")
+        inner = self.sleeve.radius_m - 0.5 * self.sleeve.thickness_m
+        if inner <= 0.5 * self.diameter_m:  # issue 13: a sleeve inside the journal
+            raise InputError(
+                f"{where}.sleeve.radius_m: the sleeve's inner face (radius_m - thickness_m/2 "
+                f"= {inner:g} m) must lie outside the journal (diameter_m/2 = "
+                f"{0.5 * self.diameter_m:g} m; nominally diameter_m/2 + clearance_m), got "
+                f"radius_m = {self.sleeve.radius_m!r}")
         lo = self.sleeve.clamp_deg + 90.0
         hi = lo + self.sleeve.arc_deg
         for f in ("chamber_start_deg", "chamber_end_deg"):

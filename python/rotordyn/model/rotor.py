@@ -75,6 +75,7 @@ class ShaftSection:
                 f"{self.outer_diameter_m}), got {self.inner_diameter_m!r}"
             )
         v.integer(f"{where}.n_elements", self.n_elements, lo=1, hi=10000)
+        v.text(f"{where}.material", self.material)
         plausibility.length(f"{where}.outer_diameter_m", self.outer_diameter_m)
         plausibility.length(f"{where}.length_m", self.length_m, plausibility.MAX_SECTION_LENGTH_M)
         if self.shear_coefficient is not None:
@@ -176,6 +177,7 @@ class Support:
     def check(self, where: str, n_stations: int) -> None:
         v.integer(f"{where}.station", self.station, lo=0, hi=n_stations - 1)
         v.choice(f"{where}.type", self.type, ("rigid", "linear"))
+        v.text(f"{where}.name", self.name)
         for c in _SUPPORT_COEFS:
             val = v.finite(f"{where}.{c}", getattr(self, c))
             if self.type == "rigid" and val != 0.0:

@@ -34,7 +34,8 @@ class Reduction:
     n_modes: int = 0
 
     def __post_init__(self):
-        object.__setattr__(self, "master_stations", tuple(self.master_stations))
+        object.__setattr__(self, "master_stations", tuple(
+            v.sequence("reduction.master_stations", self.master_stations)))
         if self.method is None:
             object.__setattr__(self, "method", "guyan" if self.master_stations else "none")
         v.choice("reduction.method", self.method, REDUCTION_METHODS)
@@ -69,6 +70,19 @@ class System:
         object.__setattr__(self, "supports", tuple(self.supports))
         object.__setattr__(self, "bearings", tuple(self.bearings))
         v.non_negative("gravity_m_s2", self.gravity_m_s2)
+        v.text("name", self.name)
+        v.text("description", self.description)
+        if not isinstance(self.rotor, Rotor):
+            raise InputError(f"rotor: expected a Rotor, got {type(self.rotor).__name__}")
+        if not isinstance(self.reduction, Reduction):
+            raise InputError(f"reduction: expected a Reduction, got "
+                             f"{type(self.reduction).__name__}")
+        for i, m in enumerate(self.materials):
+            if not isinstance(m, Material):
+                raise InputError(f"materials[{i}]: expected a Material, got {type(m).__name__}")
+        for i, s in enumerate(self.supports):
+            if not isinstance(s, Support):
+                raise InputError(f"support[{i}]: expected a Support, got {type(s).__name__}")
         names = [m.name for m in self.materials]
         if len(set(names)) != len(names):
             raise InputError(f"material: names must be unique, got {names}")
@@ -77,8 +91,19 @@ class System:
                 raise InputError(
                     f"rotor.section[{i}].material: expected one of {names}, got {s.material!r}")
         n = self.rotor.n_stations
+        at: dict[int, int] = {}
         for i, s in enumerate(self.supports):
             s.check(f"support[{i}]", n)
+            # Two rigid supports, or a rigid and a linear one, at the same station are a
+            # modelling error (issue 13); linear supports at one station add up.
+            j = at.get(s.station)
+            if j is not None and "rigid" in (s.type, self.supports[j].type):
+                raise InputError(
+                    f"support[{i}].station: station {s.station} already has support[{j}] "
+                    f"({self.supports[j].type}); a rigid support must be the only support at "
+                    "its station")
+            if j is None or s.type == "rigid":
+                at[s.station] = i
         for i, st in enumerate(self.reduction.master_stations):
             if st >= n:
                 raise InputError(

@@ -43,22 +43,41 @@ def _build(cls, where: str, table: dict, **extra):
         raise InputError(f"{where}: {exc}") from None
 
 
+def read_text(path, field: str = "model") -> str:
+    """The UTF-8 text of a file; InputError naming ``field`` when it is missing, unreadable
+    or not UTF-8 (issue 13: a non-UTF-8 model file gave a traceback)."""
+    if not isinstance(path, (str, Path)):
+        raise InputError(f"{field}: expected a file path, got {type(path).__name__}")
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"{field}: no such file {str(p)!r}")
+    try:
+        return p.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"{field}: {str(p)!r} is not UTF-8 text (byte {exc.start})") from None
+    except OSError as exc:
+        raise InputError(f"{field}: cannot read {str(p)!r}: {exc.strerror}") from None
+
+
+def parse_toml(text: str, src: str, field: str = "model") -> dict:
+    """``tomllib.loads`` with a syntax error as InputError naming ``field`` and the source."""
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{field}: {src} is not valid TOML: {exc}") from None
+
+
 def system_from_toml(path_or_text, *, is_text: bool = False):
     """Parse a model (path or, with ``is_text=True``, the TOML text) into a ``System``."""
     from rotordyn.model.rotor import Disk, Material, Rotor, ShaftSection, Support
     from rotordyn.model.system import Reduction, System
 
     if is_text:
-        text, src = str(path_or_text), "<text>"
+        if not isinstance(path_or_text, str):
+            raise InputError(f"model: expected TOML text, got {type(path_or_text).__name__}")
+        doc = parse_toml(path_or_text, "<text>")
     else:
-        p = Path(path_or_text)
-        if not p.is_file():
-            raise InputError(f"model: no such file {str(p)!r}")
-        text, src = p.read_text(encoding="utf-8"), str(p)
-    try:
-        doc = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"model: {src} is not valid TOML: {exc}") from None
+        doc = parse_toml(read_text(path_or_text), str(path_or_text))
 
     top = {"schema", "name", "description", "material", "rotor", "disk", "support", "reduction",
            "bearing", "gravity_m_s2"}
@@ -67,7 +86,9 @@ def system_from_toml(path_or_text, *, is_text: bool = False):
         raise InputError(f"schema: expected {SCHEMA!r}, got {doc.get('schema')!r}")
 
     mats = []
-    for name, t in doc.get("material", {}).items():
+    mat_t = doc.get("material", {})
+    _check_keys("material", mat_t, set(mat_t) if isinstance(mat_t, dict) else ())
+    for name, t in mat_t.items():
         _check_keys(f"material.{name}", t, set(_fields(Material)) - {"name"})
         mats.append(_build(Material, f"material.{name}", t, name=name))
 
@@ -111,19 +132,23 @@ def _bearing_from_table(where: str, t: dict):
 
     t = dict(t)
     kind = t.pop("type", None)
-    if kind not in BEARING_TYPES:
+    if not isinstance(kind, str) or kind not in BEARING_TYPES:
         raise InputError(f"{where}.type: expected one of {sorted(BEARING_TYPES)}, got {kind!r}")
     cls = BEARING_TYPES[kind]
     _check_keys(where, t, _fields(cls))
     grooves = []
-    for j, g in enumerate(t.pop("grooves", [])):
+    for j, g in enumerate(_array_of_tables(f"{where}.grooves", t.pop("grooves", []))):
         _check_keys(f"{where}.grooves[{j}]", g, _fields(Groove))
         grooves.append(_build(Groove, f"{where}.grooves[{j}]", g))
     if "sleeve" in t:
         st = t.pop("sleeve")
         _check_keys(f"{where}.sleeve", st, _fields(FlexibleSleeve))
         if "master_stations" in st:
-            st = dict(st, master_stations=tuple(st["master_stations"]))
+            ms = st["master_stations"]
+            if not isinstance(ms, list):
+                raise InputError(f"{where}.sleeve.master_stations: expected a list of "
+                                 f"integers, got {ms!r}")
+            st = dict(st, master_stations=tuple(ms))
         t["sleeve"] = _build(FlexibleSleeve, f"{where}.sleeve", st)
     if "grooves" in _fields(cls):
         return _build(cls, where, t, grooves=tuple(grooves))

@@ -79,9 +79,14 @@ def waterfall(df: pd.DataFrame, ax=None, axis: str | None = "x", style: str = "c
     handles = []
     if style == "map":
         ax = new_axes(ax, width=PAGE_IN * 0.6, aspect=0.75)
-        g = d.pivot_table(index="speed_hz", columns="freq_hz", values=col)
-        F, S = np.meshgrid(g.columns.to_numpy(), g.index.to_numpy())
-        Z = g.to_numpy() * 1e6
+        # traces have their own frequency resolution (Δf = 1/record length): put each on one
+        # common grid, fine enough (≤ the finest Δf / 2) not to flatten a peak
+        df_min = min(np.min(np.diff(np.sort(d[d["speed_hz"] == s]["freq_hz"].unique())))
+                     for s in speeds)
+        fg = np.linspace(0.0, fmax, int(min(4000, max(200, 2 * fmax / df_min))) + 1)
+        Z = np.vstack([np.interp(fg, *d[d["speed_hz"] == s].sort_values("freq_hz")
+                                 [["freq_hz", col]].to_numpy().T) for s in speeds]) * 1e6
+        F, S = np.meshgrid(fg, speeds)
         norm = LogNorm(floor, peak) if scale == "log" else Normalize(0, peak)
         m = ax.pcolormesh(F, S, np.clip(Z, floor, None) if scale == "log" else Z, norm=norm,
                           cmap="magma_r", shading="nearest")

@@ -103,41 +103,54 @@ def equilibrium_loci(df: pd.DataFrame, ax=None, bearing: str | None = None):
         bearing = df["bearing"].iloc[0]
     if bearing is not None and "bearing" in df:
         df = df[df["bearing"] == bearing]
-    ax = new_axes(ax, width=COLUMN_IN * 1.2, aspect=0.9)
-    th = np.linspace(0, 2 * np.pi, 361)
+    ax = new_axes(ax, width=COLUMN_IN * 1.6, aspect=0.68)
+    th = np.linspace(0, 2 * np.pi, 721)
     ax.plot(np.cos(th), np.sin(th), color="0.4", lw=0.8)
     handles = [Line2D([], [], color="0.4", lw=0.8, label="clearance circle (e = c)")]
+    import matplotlib.pyplot as plt
+
     outer = axes[0] if len(axes) > 1 else None
     inner = axes[-1]
-    groups = df.groupby(outer) if outer else [(None, df)]
+    groups = list(df.groupby(outer)) if outer else [(None, df)]
+    cmap = plt.get_cmap("viridis")
     for i, (key, g) in enumerate(groups):
+        col = cmap(i / max(1, len(groups) - 1) * 0.92)
         ok = g[g["status"] == "ok"].sort_values(inner)
         if outer:
             sym, unit = AXIS_SHORT[outer]
             lab = f"{sym} = {key * AXIS_SCALE[outer]:g} {unit}"
         else:
             lab = "equilibrium locus"
-        ln, = ax.plot(ok["x_over_c"], ok["y_over_c"], "o-", ms=2.5, color=f"C{i % 10}",
+        ln, = ax.plot(ok["x_over_c"], ok["y_over_c"], "-", marker=".", ms=3, color=col,
                       label=lab)
         handles.append(ln)
+        if len(ok):
+            ax.plot(ok["x_over_c"].iloc[:1], ok["y_over_c"].iloc[:1], "o", mfc="white", mec=col,
+                    ms=4)
         if len(ok) >= 2:
             a, b = ok.iloc[-2], ok.iloc[-1]
             ax.annotate("", (b["x_over_c"], b["y_over_c"]), (a["x_over_c"], a["y_over_c"]),
-                        arrowprops=dict(arrowstyle="->", color=f"C{i % 10}", lw=1.0))
+                        arrowprops=dict(arrowstyle="->", color=col, lw=1.0))
         bad = g[g["status"] != "ok"]
         if len(bad):
-            ax.plot(bad["x_over_c"], bad["y_over_c"], "x", color=f"C{i % 10}", ms=4)
+            ax.plot(bad["x_over_c"], bad["y_over_c"], "x", color=col, ms=4)
     sym, unit = AXIS_SHORT[inner]
+    lo_in = df[inner].min() * AXIS_SCALE[inner]
+    handles.append(Line2D([], [], ls="", marker="o", mfc="white", mec="k", ms=4,
+                          label=f"{sym} = {lo_in:g} {unit} (start)"))
     handles.append(Line2D([], [], ls="", marker=r"$\rightarrow$", color="k", ms=8,
                           label=f"increasing {sym} ({unit})"))
+    if (df["status"] != "ok").any():
+        handles.append(Line2D([], [], ls="", marker="x", color="k", ms=4,
+                              label="no equilibrium / contact"))
     ax.set_aspect("equal")
-    ax.set_xlim(-1.08, 1.08)
-    ax.set_ylim(-1.08, 1.08)
+    ax.set_xlim(-1.05, 1.05)   # the whole clearance circle: where the journal may go
+    ax.set_ylim(-1.05, 1.05)
     ax.set_xlabel("journal x / c (–), horizontal")
     ax.set_ylabel("journal y / c (–), vertical up")
     if bearing:
         ax.set_title(f"equilibrium loci: {bearing}")
-    ax.legend(handles=handles, loc="lower left", fontsize=6)
+    ax.figure.legend(handles=handles, loc="outside right upper", fontsize=6)
     return ax
 
 

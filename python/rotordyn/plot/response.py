@@ -28,7 +28,7 @@ def bode(result, station=None, axes=None, annotate: bool = True):
     k = _station_index(result, station)
     require(len(result.speeds_hz) >= 3, "bode: needs 3 or more speeds")
     if axes is None:
-        fig, axes = plt.subplots(2, 1, sharex=True, figsize=(PAGE_IN * 0.62, PAGE_IN * 0.55),
+        fig, axes = plt.subplots(2, 1, sharex=True, figsize=(PAGE_IN * 0.62, PAGE_IN * 0.68),
                                  height_ratios=(2, 1), layout="constrained")
     a1, a2 = axes
     sp = result.speeds_hz
@@ -43,25 +43,30 @@ def bode(result, station=None, axes=None, annotate: bool = True):
     if annotate:
         pk = result.peaks(result.stations[k])
         top = float(np.nanmax(result.major_m[:, k])) * 1e6 if np.isfinite(result.major_m[:, k]).any() else 1.0
-        for _, row in pk.iterrows():
+        xr = float(sp[-1] - sp[0])
+        for n, (_, row) in enumerate(pk.sort_values("critical_speed_hz").iterrows()):
             nc, af = row["critical_speed_hz"], row["amplification_factor"]
             a1.axvline(nc, color="0.3", lw=0.6, ls=":")
             if np.isfinite(row["n1_hz"]) and np.isfinite(row["n2_hz"]):
                 a1.axvspan(row["n1_hz"], row["n2_hz"], color="tab:purple", alpha=0.15, lw=0)
-            txt = f"N_c = {nc:.1f} Hz\nAF = {af:.2g}" if np.isfinite(af) else \
-                f"N_c = {nc:.1f} Hz\nAF > 10³"
+            txt = f"N_c = {nc:.1f} Hz, " + (f"AF = {af:.2g}" if np.isfinite(af) else
+                                            "AF: no half-power points")
             if "separation_margin_pct" in row and np.isfinite(row.get("required_margin_pct",
                                                                       np.nan)):
                 sm, req = row["separation_margin_pct"], row["required_margin_pct"]
                 txt += f"\nSM = {sm:.0f} % (API ≥ {req:.0f} %: {'pass' if sm >= req else 'FAIL'})"
-            a1.annotate(txt, (nc, row["peak_m"] * 1e6), xytext=(5, -2),
-                        textcoords="offset points", fontsize=6, va="top",
-                        bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="0.6", alpha=0.85))
+            # boxes stacked in the free band above the curves, arrows to the peaks
+            ty = top * (1.55 - 0.2 * (n % 3))
+            tx = min(max(nc + 0.02 * xr, sp[0]), sp[-1] - 0.3 * xr)
+            a1.annotate(txt, (nc, row["peak_m"] * 1e6), xytext=(tx, ty), fontsize=5.8,
+                        va="top", ha="left", arrowprops=dict(arrowstyle="-", color="0.4",
+                                                             lw=0.5),
+                        bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="0.6", alpha=0.9))
         handles.append(Line2D([], [], color="0.3", lw=0.6, ls=":",
                               label="critical speed N_c (peak)"))
         handles.append(Patch(color="tab:purple", alpha=0.15,
                              label="half-power band N₁…N₂ (AF = N_c/(N₂−N₁))"))
-        a1.set_ylim(0, top * 1.25)
+        a1.set_ylim(0, top * 1.62)
     if result.operating_speed_hz is not None:
         lo, hi = result.operating_speed_hz
         for a in axes:
@@ -72,7 +77,7 @@ def bode(result, station=None, axes=None, annotate: bool = True):
     a2.set_yticks([-180, -90, 0, 90, 180])
     a2.set_xlabel("rotor speed (Hz)")
     hz_rpm_axis(a1)
-    a1.legend(handles=handles, loc="upper right", fontsize=6)
+    a2.figure.legend(handles=handles, loc="outside lower center", ncol=2, fontsize=6)
     a1.set_title(f"unbalance response at station {result.stations[k]}", fontsize=8)
     return a1, a2
 

@@ -107,6 +107,7 @@ def mode_shape(result, mode: int = 0, *, ax=None, system=None):
         (system.rotor.node_positions_m() if system is not None else np.arange(shapes.shape[0]))
     f = result.frequencies_hz[mode]
     ld = result.log_dec[mode]
+    ld = 0.0 if abs(ld) < 1e-6 else ld  # round-off of an undamped rotor
     wh = result.whirl[mode]
     title = (f"mode {mode + 1}: {f:.2f} Hz, {wh} whirl, log dec {ld:.3g}, at "
              f"{result.speed_hz:g} Hz")

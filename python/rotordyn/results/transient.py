@@ -90,6 +90,61 @@ class TransientResult:
         amp = 2 * np.abs(np.fft.rfft(z * win)) / win.sum()
         return np.fft.rfftfreq(n, dt[0]), amp
 
+    def _signal(self, output):
+        """(n_t, 2) x, y of ``output``: a bearing index (journal) or a (2, n) output matrix."""
+        if isinstance(output, (int, np.integer)):
+            return np.column_stack([self.journal_x_m[:, output], self.journal_y_m[:, output]])
+        return self.r @ np.asarray(output).T
+
+    def order_amplitude(self, output=0, speeds_hz=None, *, order: float = 1.0,
+                        revolutions: float = 8.0):
+        """Run-up order tracking: amplitude √(|X|² + |Y|²) of the ``order``× component of
+        ``output`` (bearing index, or a (2, n) matrix such as ``station_output_matrix``) at
+        each speed, by least squares on [1, t, cos kθ, sin kθ] over ±revolutions/2 around
+        the time the run passes that speed (θ: the integrated rotor angle). Returns
+        (speeds_hz, amplitude_m)."""
+        if self.speed_hz_t is None or self.angle_rad is None:
+            raise ValueError("order_amplitude: the result has no speed/angle history")
+        z = self._signal(output)
+        sp = self.speed_hz_t
+        if speeds_hz is None:
+            speeds_hz = np.linspace(sp.min(), sp.max(), 200)
+        speeds_hz = np.asarray(speeds_hz, dtype=float)
+        amp = np.full(speeds_hz.size, np.nan)
+        mono = np.all(np.diff(sp) >= 0)
+        for i, f in enumerate(speeds_hz):
+            if f <= 0:
+                continue
+            tc = np.interp(f, sp, self.t) if mono else self.t[np.argmin(np.abs(sp - f))]
+            win = np.abs(self.t - tc) <= 0.5 * revolutions / f
+            if win.sum() < 8:
+                continue
+            th, tt = order * self.angle_rad[win], self.t[win] - tc
+            A = np.column_stack([np.ones_like(tt), tt, np.cos(th), np.sin(th)])
+            c = np.linalg.lstsq(A, z[win], rcond=None)[0]
+            amp[i] = float(np.sqrt(np.sum(c[2:4] ** 2)))
+        return speeds_hz, amp
+
+    def waterfall(self, output=0, *, window_s: float = 0.25, step_s: float | None = None,
+                  axis: int = 0):
+        """Short-time amplitude spectra of ``output``'s x (axis 0) or y (1) motion (Hann
+        window, mean removed): (speed_hz (n_w,), freq_hz (n_f,), amplitude_m (n_w, n_f)).
+        Needs uniformly spaced output times."""
+        z = self._signal(output)[:, axis]
+        dt = np.diff(self.t)
+        if not np.allclose(dt, dt[0], rtol=1e-6):
+            raise ValueError("waterfall: output times must be uniformly spaced")
+        nw = max(8, int(round(window_s / dt[0])))
+        step = max(1, int(round((step_s or window_s / 2) / dt[0])))
+        win = np.hanning(nw)
+        sp, rows = [], []
+        for s0 in range(0, len(z) - nw + 1, step):
+            seg = z[s0:s0 + nw]
+            rows.append(2 * np.abs(np.fft.rfft((seg - seg.mean()) * win)) / win.sum())
+            sp.append(float(np.mean(self.speed_hz_t[s0:s0 + nw]))
+                      if self.speed_hz_t is not None else self.speed_hz)
+        return np.array(sp), np.fft.rfftfreq(nw, dt[0]), np.array(rows)
+
     def plot(self, bearing: int = 0, ax=None):
         """Journal orbit in units of the clearance, with the clearance circle and the
         equilibrium (start) point."""

@@ -11,9 +11,10 @@ import pandas as pd
 
 def api_required_margin(af: float, below_operating: bool) -> float:
     """Separation margin required by API 617/684 for a critical speed with amplification factor
-    ``af``: none below AF 2.5; otherwise 17 (1 − 1/(AF − 1.5)) % below the operating range
-    (at most 16 %) and 10 + 17 (1 − 1/(AF − 1.5)) % above it (at most 26 %)."""
-    if not np.isfinite(af) or af < 2.5:
+    ``af``: none below AF 2.5 (or for an unknown, NaN, AF); otherwise 17 (1 − 1/(AF − 1.5)) %
+    below the operating range (at most 16 %) and 10 + 17 (1 − 1/(AF − 1.5)) % above it (at
+    most 26 %); an infinite AF (half-power points not found) gets the largest margins."""
+    if np.isnan(af) or af < 2.5:  # an unresolved (infinite) AF needs the largest margin
         return 0.0
     base = 17.0 * (1.0 - 1.0 / (af - 1.5))
     return min(16.0, base) if below_operating else min(26.0, 10.0 + base)

@@ -172,6 +172,8 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
                          "phase_y_deg": float(np.degrees(np.angle(Y[k, j]))),
                          "major_m": float(major[k, j]), "minor_m": float(minor[k, j]),
                          "peak": pk is not None,
+                         "critical_speed_hz": float(pk["critical_speed_hz"])
+                         if pk is not None else math.nan,
                          "amplification_factor": float(pk["amplification_factor"])
                          if pk is not None else math.nan,
                          "separation_margin_pct": float(pk.get("separation_margin_pct",

@@ -181,6 +181,7 @@ class Progress:
 
     def close(self) -> None:
         if self.enabled:
+            self._draw(force=True)
             self.stream.write("\n")
             self.stream.flush()
 

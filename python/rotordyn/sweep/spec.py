@@ -29,7 +29,7 @@ SCHEMA = "rotordyn/sweep/1"
 OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
 DEFAULTS = {"speed_hz": 50.0, "chamber_pressure_pa": 0.0}
 ANALYSES = ("equilibrium", "stability", "campbell", "threshold", "boundary", "unbalance",
-            "waterfall")
+            "waterfall", "run-up")
 MAX_POINTS = 10_000_000
 
 
@@ -89,7 +89,8 @@ _EQ = {"method": _opt_choice("newton", "successive"), "tol": _opt_range(0.0, 1e-
 _LIN = {"linearization": _opt_choice("perturbation", "finite_difference")}
 OPTIONS = {
     "equilibrium": dict(_EQ),
-    "stability": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "track": _opt_bool},
+    "stability": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "track": _opt_bool,
+                  "line": _opt_axis},
     "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000)},
     "threshold": {"vary": _opt_axis, "exclude_sleeve_modes": _opt_bool,
                   "xtol": _opt_range(0.0, math.inf)},
@@ -99,10 +100,15 @@ OPTIONS = {
                   "operating_speed_hz": _opt_operating},
     "waterfall": {"unbalances": _opt_unbalances, "revolutions": _opt_int(4, 10000),
                   "samples_per_revolution": _opt_int(8, 4096),
-                  "max_harmonic": _opt_range(0.0, 100.0), "rtol": _opt_range(0.0, 1e-2)},
+                  "max_harmonic": _opt_range(0.0, 100.0),
+                  "max_frequency_hz": _opt_range(0.0, 1e6), "rtol": _opt_range(0.0, 1e-2)},
+    "run-up": {"unbalances": _opt_unbalances, "start_hz": _opt_range(0.0, 1e5),
+               "stop_hz": _opt_range(0.0, 1e5), "rate_hz_per_s": _opt_range(0.0, 1e6),
+               "samples_per_revolution": _opt_int(8, 4096), "rtol": _opt_range(0.0, 1e-2)},
 }
 REQUIRED = {"threshold": ("vary",), "boundary": ("x", "y", "resolution"),
-            "unbalance": ("unbalances",), "waterfall": ("unbalances",)}
+            "unbalance": ("unbalances",), "waterfall": ("unbalances",),
+            "run-up": ("unbalances", "start_hz", "stop_hz", "rate_hz_per_s")}
 
 
 def _dec(x) -> Decimal:
@@ -264,6 +270,20 @@ class SweepSpec:
                         f"options.resolution: {res} - 1 must be a multiple of the coarse "
                         f"grid's {n0} - 1 intervals of grid.{ax} (the refined grid nests "
                         "the coarse one)")
+        if a == "run-up":
+            if "speed_hz" in self.axes:
+                raise InputError("grid.speed_hz: a run-up takes its speeds from options "
+                                 "start_hz, stop_hz, rate_hz_per_s")
+            if self.options["stop_hz"] == self.options["start_hz"]:
+                raise InputError("options.stop_hz: expected a speed different from start_hz")
+            revs = (self.options["start_hz"] + self.options["stop_hz"]) / 2 * abs(
+                self.options["stop_hz"] - self.options["start_hz"]) / self.options["rate_hz_per_s"]
+            if revs * self.options.get("samples_per_revolution", 32) > 2e6:
+                raise InputError(f"options.rate_hz_per_s: the run-up lasts {revs:.3g} "
+                                 "revolutions; at most 2e6 samples per run (raise the rate "
+                                 "or lower samples_per_revolution)")
+        if "line" in self.options and self.options["line"] not in self.axes:
+            raise InputError(f"options.line: {self.options['line']!r} is not a grid axis")
         if a in ("campbell", "unbalance") and len(self.axes.get("speed_hz", ())) < 2:
             raise InputError(f"grid.speed_hz: analysis {a!r} needs a speed axis with >= 2 "
                              "values")
@@ -329,8 +349,10 @@ class SweepSpec:
         campbell/unbalance/tracked stability, the varied axis for threshold."""
         if self.analysis == "threshold":
             return self.options["vary"]
-        if self.analysis in ("campbell", "unbalance", "waterfall"):
+        if self.analysis in ("campbell", "unbalance"):
             return "speed_hz"
+        if self.analysis == "stability" and "line" in self.options:
+            return self.options["line"]
         if self.analysis == "stability" and self.options.get("track", True) \
                 and len(self.axes.get("speed_hz", ())) > 1:
             return "speed_hz"

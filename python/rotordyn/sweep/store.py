@@ -50,6 +50,8 @@ def _io(path, exc: OSError) -> InputError:
 
 
 def _pid_alive(pid: int) -> bool:
+    if pid <= 0:
+        return False
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
@@ -69,6 +71,9 @@ class Store:
         self.files: dict[str, dict] = {}   # file name -> log entry (live files only)
         self._locked = False
         self._log = None
+        # fsync after every file: only needed to survive a power loss (a killed process
+        # loses nothing the OS has been given); off by default, a resume verifies anyway
+        self.durable = os.environ.get("ROTORDYN_SWEEP_FSYNC", "") == "1"
         out = self.out
         if out.exists() and not out.is_dir():
             raise InputError(f"out: {str(out)!r} is a file, expected a directory")
@@ -87,31 +92,38 @@ class Store:
     def _lock(self) -> None:
         path = self.out / LOCK
         me = {"pid": os.getpid(), "host": socket.gethostname(), "started": time.time()}
-        for _ in range(2):
-            try:
-                fd = os.open(path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
-            except FileExistsError:
+        # The lock is created with its content in one step (a hard link to a written
+        # temporary file), so a driver killed at any moment never leaves an empty lock.
+        tmp = self.out / f"{TMP}lock-{me['pid']}"
+        try:
+            tmp.write_text(json.dumps(me))
+        except OSError as exc:
+            raise InputError(f"out: {str(self.out)!r} is not writable: "
+                             f"{exc.strerror or exc}") from None
+        try:
+            for _ in range(2):
                 try:
-                    other = json.loads(path.read_text())
-                    pid, host = int(other["pid"]), str(other["host"])
-                except (OSError, ValueError, KeyError, TypeError):
-                    other, pid, host = {}, -1, "?"
-                if host == me["host"] and (pid <= 0 or not _pid_alive(pid)):
-                    path.unlink(missing_ok=True)  # stale: its driver is gone
-                    continue
-                raise InputError(
-                    f"out: {str(self.out)!r} is in use by another sweep (pid {pid} on {host}); "
-                    f"wait for it to finish, or remove {str(path)!r} if that process is gone"
-                ) from None
-            except OSError as exc:
-                raise InputError(f"out: {str(self.out)!r} is not writable: "
-                                 f"{exc.strerror or exc}") from None
-            try:
-                os.write(fd, json.dumps(me).encode())
-            finally:
-                os.close(fd)
-            self._locked = True
-            return
+                    os.link(tmp, path)
+                except FileExistsError:
+                    try:
+                        other = json.loads(path.read_text())
+                        pid, host = int(other["pid"]), str(other["host"])
+                    except (OSError, ValueError, KeyError, TypeError):
+                        pid, host = -1, "?"
+                    if host == me["host"] and not _pid_alive(pid) or host == "?":
+                        path.unlink(missing_ok=True)  # stale: its driver is gone
+                        continue
+                    raise InputError(
+                        f"out: {str(self.out)!r} is in use by another sweep (pid {pid} on "
+                        f"{host}); wait for it to finish, or remove {str(path)!r} if that "
+                        "process is gone") from None
+                except OSError as exc:
+                    raise InputError(f"out: {str(self.out)!r} is not writable: "
+                                     f"{exc.strerror or exc}") from None
+                self._locked = True
+                return
+        finally:
+            tmp.unlink(missing_ok=True)
         raise InputError(f"out: could not lock {str(self.out)!r}")
 
     def close(self) -> None:
@@ -239,8 +251,9 @@ class Store:
         try:
             with open(tmp, "wb") as fh:
                 fh.write(data)
-                fh.flush()
-                os.fsync(fh.fileno())
+                if self.durable:
+                    fh.flush()
+                    os.fsync(fh.fileno())
             os.replace(tmp, self.out / name)
         except OSError as exc:
             tmp.unlink(missing_ok=True)
@@ -250,7 +263,8 @@ class Store:
         try:
             self._log.write((json.dumps(entry, sort_keys=True) + "\n").encode())
             self._log.flush()
-            os.fsync(self._log.fileno())
+            if self.durable:
+                os.fsync(self._log.fileno())
         except OSError as exc:
             raise _io(self.out / LOG, exc) from None
 

@@ -44,8 +44,11 @@ OUTPUTS = {
     "boundary": {"max_real_1_per_s": F64, "freq_hz": F64, "point_stable": BOOL, "level": I64},
     "unbalance": {"station": I64, "amplitude_x_m": F64, "amplitude_y_m": F64,
                   "phase_x_deg": F64, "phase_y_deg": F64, "major_m": F64, "minor_m": F64,
-                  "peak": BOOL, "amplification_factor": F64, "separation_margin_pct": F64},
+                  "peak": BOOL, "critical_speed_hz": F64, "amplification_factor": F64,
+                  "separation_margin_pct": F64},
     "waterfall": {"freq_hz": F64, "order": F64, "amplitude_x_m": F64, "amplitude_y_m": F64},
+    "run-up": {"revolution": I64, "time_s": F64, "amplitude_x_m": F64, "amplitude_y_m": F64,
+               "h_min_m": F64},
 }
 OUTPUTS["campbell"] = OUTPUTS["stability"]
 
@@ -83,6 +86,8 @@ class Job:
         self.options = options
         self.axes = axes  # ordered: first outermost
         self.shape = tuple(len(x) for x in axes.values())
+        varying = [i for i, n in enumerate(self.shape) if n > 1]
+        self.line_pos = varying[-1] if varying else 0  # continuation runs along this axis
         self.key = ""     # spec hash (task names)
         self.level = 0    # refinement level (boundary)
         self.meta = {}    # provenance and units, stored in every part's schema metadata
@@ -107,15 +112,23 @@ def _base_system(model_toml: str):
     return sysm
 
 
-class _Variants:
-    """The model (and its freshly built solver) for each combination of model-field axes
-    met in this chunk."""
+_ASM: dict = {}  # (model text, model-axis values) -> Assembled (stateless parts reused)
 
-    def __init__(self, base):
+
+class _Variants:
+    """The model for each combination of model-field axes met in this chunk, each with a
+    solver built fresh for this chunk (the reduction and sleeve condensation are cached per
+    process; the solver, which keeps warm starts, is not shared between chunks)."""
+
+    def __init__(self, base, model_toml: str):
         self.base = base
+        self.model_toml = model_toml
         self.cache = {}
 
     def get(self, p: dict):
+        import copy
+
+        from rotordyn import _core
         from rotordyn.analysis.assembly import Assembled
         from rotordyn.sweep.paths import set_field
 
@@ -123,12 +136,22 @@ class _Variants:
                     or k == "gravity_m_s2")
         hit = self.cache.get(key)
         if hit is None:
-            s = self.base
-            for k, val in key:
-                s = set_field(s, k, val)
+            proto = _ASM.get((self.model_toml, key))
+            if proto is None:
+                s = self.base
+                for k, val in key:
+                    s = set_field(s, k, val)
+                if len(_ASM) > 8:
+                    _ASM.clear()
+                proto = _ASM[(self.model_toml, key)] = Assembled(s)
+            hit = copy.copy(proto)
+            hit.solver = _core.SystemSolver(proto.model)
+            hit.last_r = None
+            m = proto.model
+            hit.mats = tuple(np.asarray(x) for x in (m.M, m.C, m.G, m.K))
             if len(self.cache) > 4:
                 self.cache.clear()
-            hit = self.cache[key] = Assembled(s)
+            self.cache[key] = hit
         return hit
 
 
@@ -192,22 +215,25 @@ def _eigen(asm, e, f, opts, n_modes):
         from rotordyn.analysis.linear import FD_REL_STEP
 
         lin = asm.solver.linearize_fd(r, w, FD_REL_STEP)
-    m = asm.model
-    M = np.asarray(m.M)
-    D = np.asarray(m.C) + w * np.asarray(m.G) + np.asarray(lin.DH)
-    K = np.asarray(m.K) + np.asarray(lin.KH)
+    M, C0, G, K0 = asm.mats
+    D = C0 + w * G + np.asarray(lin.DH)
+    K = K0 + np.asarray(lin.KH)
     if not (np.all(np.isfinite(K)) and np.all(np.isfinite(D))):
         raise ArithmeticError("non-finite bearing coefficients")
     res = _core.modal(M, D, K, asm.rotor.xy_pairs(), int(n_modes or asm.n), True,
                       asm.rotor.rot_pairs())
     lam = np.asarray(res.eigenvalues)
     phi = np.asarray(res.modes)
+    if not np.all(np.isfinite(lam)):  # never a non-finite eigenvalue with status ok
+        raise ArithmeticError("non-finite eigenvalues")
     sl = [i for bc in asm.bearings for i in bc.sleeve]
     kin = np.real(np.einsum("ik,ij,jk->k", phi.conj(), M, phi))
     kin_s = (np.real(np.einsum("ik,ij,jk->k", phi[sl].conj(), M[np.ix_(sl, sl)], phi[sl]))
              if sl else np.zeros(len(lam)))
     kind = np.where(kin_s > 0.5 * kin, "sleeve", "rotor")
-    whirl = np.array([WHIRL[int(x)] for x in res.whirl])
+    from rotordyn.results.modes import WHIRL_NAMES
+
+    whirl = np.array([WHIRL_NAMES[int(x)] for x in res.whirl])
     return lam, phi, whirl, kind
 
 
@@ -216,8 +242,9 @@ def _stable(lam) -> np.ndarray:
     return lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)
 
 
-def _same_line(prev, idx) -> bool:
-    return prev is not None and prev[:-1] == idx[:-1]
+def _same_line(prev, idx, pos) -> bool:
+    """Consecutive points that differ only along the innermost varying axis."""
+    return prev is not None and prev[:pos] == idx[:pos] and prev[pos + 1:] == idx[pos + 1:]
 
 
 def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
@@ -225,7 +252,7 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     boundary) as a table with :func:`schema`."""
     rows: list[dict] = []
     base = _base_system(job.model_toml)
-    variants = _Variants(base)
+    variants = _Variants(base, job.model_toml)
     if pids is not None:
         _boundary_rows(job, variants, chunk_id, pids, rows)
     else:
@@ -266,7 +293,7 @@ def _points(job, variants, chunk_id, lo, hi, pids=None):
         except RotordynError as exc:
             asm, err = None, str(exc)
         row = _common(job, pid, chunk_id, idx, p, asm)
-        yield row, p, asm, _options(job, p), _same_line(prev, idx), err
+        yield row, p, asm, _options(job, p), _same_line(prev, idx, job.line_pos), err
         prev = idx
 
 
@@ -299,58 +326,110 @@ def _eq_rows(job, variants, chunk_id, lo, hi, rows):
 
 
 def _stab_rows(job, variants, chunk_id, lo, hi, rows):
+    """Stability points of a chunk through the C++ batch (one call per run of points sharing
+    a model and options): equilibrium continued along the line, K_H/D_H, eigen-analysis."""
     from rotordyn.sweep.tracking import track_line
 
-    n_modes = job.options.get("n_modes")
-    track = job.options.get("track", True)
-    r_prev = None
-    line_buf: list = []  # (first row index, phi) of the current line, for tracking
+    items = []  # (row, asm, opts, line, (f, pc, a) or None, error)
+    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+        op = None
+        if not err:
+            try:
+                op = _operating(asm, p)
+            except RotordynError as exc:
+                err = f"{type(exc).__name__}: {exc}"
+        items.append([row, asm, opts, line, op, err])
+    # runs of consecutive valid points on one model with one set of options
+    out: list = [None] * len(items)
+    i = 0
+    while i < len(items):
+        if items[i][5]:
+            out[i] = (_fail(items[i][0], "error", items[i][5]), None, None)
+            i += 1
+            continue
+        j = i
+        while j + 1 < len(items) and not items[j + 1][5] and items[j + 1][1] is items[i][1] \
+                and items[j + 1][2] == items[i][2]:
+            j += 1
+        _stab_batch(job, items[i:j + 1], out, i, restart_first=True)
+        i = j + 1
+    # tracking along lines, rows in point order
+    weight = None
+    line_buf: list = []
 
     def flush():
-        if track and line_buf:
-            track_line(rows, line_buf)
+        if job.options.get("track", True) and line_buf:
+            track_line(rows, line_buf, weight)
         line_buf.clear()
 
-    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
-        if not line:
+    for it, o in zip(items, out):
+        if not it[3]:
             flush()
-        if err:
-            rows.append(_fail(row, "error", err))
-            continue
-        try:
-            f, pc, a = _operating(asm, p)
-            e = _equilibrium(asm, f, pc, a, r_prev if line else None, opts)
-            r_prev = np.asarray(e.r) if e.status == "ok" else None
-            if e.status not in LINEARISABLE:
-                rows.append(_fail(row, e.status if e.status in STATUS else "error",
-                                  e.message or "no equilibrium"))
-                continue
-            lam, phi, whirl, kind = _eigen(asm, e, f, opts, n_modes)
-        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
-            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
-            r_prev = None
-            continue
-        r = np.asarray(e.r)
-        bc = _ref_bearing(asm)
-        hmin = np.asarray(e.h_min)
-        ms = _stable(lam)
-        eq = {"journal_x_m": float(r[bc.jx]), "journal_y_m": float(r[bc.jy]),
-              "h_min_m": float(hmin.min()) if hmin.size else math.nan,
-              "iterations": int(e.iterations), "point_stable": bool(ms.all()),
-              "max_real_1_per_s": float(lam.real.max())}
-        first = len(rows)
-        for k in range(len(lam)):
-            rows.append({**row, **eq, "mode_id": k + 1, "mode": k + 1,
-                         "freq_hz": float(lam[k].imag / (2 * np.pi)),
-                         "eig_real_1_per_s": float(lam[k].real),
-                         "damping_ratio": float(-lam[k].real / abs(lam[k])) if abs(lam[k]) else math.nan,
-                         "log_dec": float(-2 * np.pi * lam[k].real / lam[k].imag)
-                         if lam[k].imag else math.nan,
-                         "whirl": str(whirl[k]), "kind": str(kind[k]),
-                         "mode_stable": bool(ms[k]), "status": e.status,
-                         "message": e.message})
-        line_buf.append((first, len(lam), phi, lam))
+        r, lam, phi = o
+        if lam is not None:
+            line_buf.append((len(rows), lam, phi))
+            weight = it[1].mats[0]
+        rows.append(r)
     flush()
+
+
+def _stab_batch(job, seg, out, at, restart_first):
+    from rotordyn import _core
+    from rotordyn.analysis.linear import FD_REL_STEP
+    from rotordyn.units import hz_to_rad_s
+
+    asm, opts = seg[0][1], seg[0][2]
+    n_modes = job.options.get("n_modes") or 0
+    o = _core.EquilibriumOptions()
+    o.method = opts.get("method", "newton")
+    o.tol = float(opts.get("tol", 1e-10))
+    o.max_iter = int(opts.get("max_iter", 100))
+    o.pm = -1.0
+    o.contact_fraction = 0.02
+    restart = [1 if (k == 0 and restart_first) or not it[3] else 0 for k, it in enumerate(seg)]
+    res = _core.stability_batch(
+        asm.solver, np.array([hz_to_rad_s(it[4][0]) for it in seg]),
+        np.array([it[4][1] for it in seg]), np.array([it[4][2] for it in seg]), restart, o,
+        int(n_modes), opts.get("linearization", "perturbation") == "finite_difference",
+        FD_REL_STEP, asm.rotor.xy_pairs(), asm.rotor.rot_pairs(),
+        [i for bc in asm.bearings for i in bc.sleeve])
+    from rotordyn.results.modes import WHIRL_NAMES
+
+    bc = _ref_bearing(asm)
+    status, message = res.status, res.message
+    n_eig = np.asarray(res.n_eig)
+    R = np.asarray(res.r)
+    H = np.asarray(res.h_min)
+    EV = np.asarray(res.eigenvalues)
+    WH = np.asarray(res.whirl)
+    SS = np.asarray(res.sleeve_share)
+    IT = np.asarray(res.iterations)
+    modes = res.modes
+    names = np.array([WHIRL_NAMES[-1], WHIRL_NAMES[0], WHIRL_NAMES[1]])
+    for k, it in enumerate(seg):
+        row = it[0]
+        st = status[k] if status[k] in STATUS else "error"
+        ke = int(n_eig[k])
+        if st not in LINEARISABLE or ke == 0:
+            out[at + k] = (_fail(row, st, message[k] or "no equilibrium"), None, None)
+            continue
+        lam = EV[k, :ke]
+        ms = _stable(lam)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            dr = np.where(np.abs(lam) > 0, -lam.real / np.abs(lam), np.nan)
+            ld = np.where(lam.imag != 0, -2 * np.pi * lam.real / lam.imag, np.nan)
+        hm = H[k]
+        out[at + k] = ({**row, "_n": ke, "journal_x_m": float(R[k, bc.jx]) if bc else math.nan,
+                        "journal_y_m": float(R[k, bc.jy]) if bc else math.nan,
+                        "h_min_m": float(np.nanmin(hm)) if hm.size else math.nan,
+                        "iterations": int(IT[k]), "point_stable": bool(ms.all()),
+                        "max_real_1_per_s": float(lam.real.max()), "mode_id": np.arange(ke),
+                        "mode": np.arange(1, ke + 1), "freq_hz": lam.imag / (2 * np.pi),
+                        "eig_real_1_per_s": lam.real, "damping_ratio": dr, "log_dec": ld,
+                        "whirl": names[WH[k, :ke] + 1],
+                        "kind": np.where(SS[k, :ke] > 0.5, "sleeve", "rotor"),
+                        "mode_stable": ms, "status": st, "message": message[k]},
+                       lam, modes[k])
 
 
 def _wf_rows(job, variants, chunk_id, lo, hi, rows):
@@ -372,16 +451,66 @@ def _wf_rows(job, variants, chunk_id, lo, hi, rows):
         except (RotordynError, ArithmeticError, ValueError) as exc:
             rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
             continue
-        if tr.status != "ok":
+        if tr.status not in LINEARISABLE:  # "contact": integrated from a contact equilibrium
             rows.append(_fail(row, tr.status if tr.status in STATUS else "error", tr.message))
             continue
         freq, ax = tr.spectrum(last_fraction=0.5, axis="x")
         _, ay_ = tr.spectrum(last_fraction=0.5, axis="y")
-        keep = freq <= float(opts.get("max_harmonic", 4.0)) * f
+        # max_frequency_hz: every speed's spectrum over the same span (a waterfall's traces
+        # then line up); else up to max_harmonic × speed
+        fmax = opts.get("max_frequency_hz")
+        keep = freq <= (float(fmax) if fmax is not None
+                        else float(opts.get("max_harmonic", 4.0)) * f)
         for fr, a1, a2 in zip(freq[keep], ax[keep], ay_[keep]):
             rows.append({**row, "freq_hz": float(fr), "amplitude_x_m": float(a1),
-                         "amplitude_y_m": float(a2), "order": float(fr / f), "status": "ok",
-                         "message": ""})
+                         "amplitude_y_m": float(a2), "order": float(fr / f),
+                         "status": tr.status, "message": tr.message})
+
+
+def _runup_rows(job, variants, chunk_id, lo, hi, rows):
+    """A nonlinear run-up (or coast-down) per point: Ω(t) ramps from start_hz to stop_hz at
+    rate_hz_per_s (rotordyn.control.SpeedProfile); one row per revolution with its mean
+    speed (in ``speed_hz``), the half peak-to-peak journal motion of the active (or first)
+    bearing and the smallest film over that revolution."""
+    import rotordyn as rd
+    from rotordyn.control import SpeedProfile
+
+    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+        if err:
+            rows.append(_fail(row, "error", err))
+            continue
+        try:
+            _, pc, _ = _operating(asm, {**p, "speed_hz": opts["start_hz"]})
+            f0, f1, rate = opts["start_hz"], opts["stop_hz"], opts["rate_hz_per_s"]
+            prof = SpeedProfile.ramp(f0, f1, rate)
+            T = abs(f1 - f0) / rate
+            spr = int(opts.get("samples_per_revolution", 32))
+            revs = (f0 + f1) / 2 * T
+            tr = rd.transient(asm.system, T, chamber_pressure_pa=pc,
+                              config_ay_m=p.get("config_ay_m"), speed=prof,
+                              unbalances=[tuple(u) for u in opts["unbalances"]],
+                              n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)))
+        except (RotordynError, ArithmeticError, ValueError) as exc:
+            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
+            continue
+        bc = _ref_bearing(asm)
+        k = bc.index if bc else 0
+        rev = np.floor(np.asarray(tr.angle_rad) / (2 * np.pi)).astype(np.int64)
+        x, y = np.asarray(tr.journal_x_m)[:, k], np.asarray(tr.journal_y_m)[:, k]
+        h = np.asarray(tr.h_min_m)[:, k]
+        sp, t = np.asarray(tr.speed_hz_t), np.asarray(tr.t)
+        for n_rev in np.unique(rev):
+            m = rev == n_rev
+            if m.sum() < 2:
+                continue
+            rows.append({**row, "speed_hz": float(sp[m].mean()), "revolution": int(n_rev),
+                         "time_s": float(t[m].mean()),
+                         "amplitude_x_m": float(np.ptp(x[m]) / 2),
+                         "amplitude_y_m": float(np.ptp(y[m]) / 2), "h_min_m": float(h[m].min()),
+                         "status": tr.status if tr.status in STATUS else "error",
+                         "message": tr.message})
+        if tr.status != "ok" and not len(rev):
+            rows.append(_fail(row, tr.status if tr.status in STATUS else "error", tr.message))
 
 
 def _lines(job, lo, hi):
@@ -432,7 +561,7 @@ def _boundary_rows(job, variants, chunk_id, pids, rows):
 
 _ANALYSIS = {"equilibrium": _eq_rows, "stability": _stab_rows, "campbell": _stab_rows,
              "waterfall": _wf_rows, "threshold": _threshold_rows,
-             "unbalance": _unbalance_rows}
+             "unbalance": _unbalance_rows, "run-up": _runup_rows}
 
 
 def to_table(job: Job, rows: list[dict]) -> pa.Table:
@@ -441,18 +570,27 @@ def to_table(job: Job, rows: list[dict]) -> pa.Table:
     sch = schema(job.analysis, list(job.axes))
     cats = categories(job.analysis)
     cols = []
-    n = len(rows)
+    sizes = [r.get("_n", 1) for r in rows]
+    n = sum(sizes)
     for fld in sch:
         name = fld.name
         if name == "sweep_id":
             cols.append(pa.DictionaryArray.from_arrays(
                 pa.array(np.zeros(n, dtype=np.int8)), pa.array([job.sweep_id])))
             continue
-        vals = [r.get(name) for r in rows]
+        vals: list = []
+        for r, k in zip(rows, sizes):
+            x = r.get(name)
+            if isinstance(x, np.ndarray):
+                vals.extend(x.tolist())
+            elif k == 1:
+                vals.append(x)
+            else:
+                vals.extend([x] * k)
         if name in cats:
-            c = cats[name]
-            codes = pa.array([None if x is None else c.index(x) for x in vals], type=pa.int8())
-            cols.append(pa.DictionaryArray.from_arrays(codes, pa.array(c)))
+            code = {c: i for i, c in enumerate(cats[name])}
+            codes = pa.array([None if x is None else code[x] for x in vals], type=pa.int8())
+            cols.append(pa.DictionaryArray.from_arrays(codes, pa.array(cats[name])))
         elif name == "message":
             cols.append(pa.array(["" if x is None else str(x) for x in vals], type=STR))
         else:

@@ -1,0 +1,52 @@
+// Batch entries of sweep chunks (GIL released around the whole chunk).
+#include <pybind11/complex.h>
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "rotordyn/batch.hpp"
+
+namespace rotordyn::py_bind {
+
+void bind_batch(py::module_& m) {
+  py::class_<StabilityBatchResult>(m, "StabilityBatchResult")
+      .def_readonly("status", &StabilityBatchResult::status)
+      .def_readonly("message", &StabilityBatchResult::message)
+      .def_readonly("iterations", &StabilityBatchResult::iterations)
+      .def_readonly("r", &StabilityBatchResult::r)
+      .def_readonly("h_min", &StabilityBatchResult::h_min)
+      .def_readonly("n_eig", &StabilityBatchResult::n_eig)
+      .def_readonly("eigenvalues", &StabilityBatchResult::eigenvalues)
+      .def_readonly("whirl", &StabilityBatchResult::whirl)
+      .def_readonly("sleeve_share", &StabilityBatchResult::sleeve_share)
+      .def_readonly("modes", &StabilityBatchResult::modes);
+  m.def(
+      "stability_batch",
+      [](SystemSolver& solver, const Eigen::VectorXd& omega, const Eigen::VectorXd& pressure,
+         const RowMatrixXd& a, const std::vector<int>& restart, const EquilibriumOptions& opt,
+         int n_modes, bool finite_difference, double fd_step,
+         const std::vector<std::pair<int, int>>& xy_pairs,
+         const std::vector<std::pair<int, int>>& rot_pairs, const std::vector<int>& sleeve) {
+        StabilityBatchInput in;
+        in.omega = omega;
+        in.pressure = pressure;
+        in.a = a;
+        in.restart = restart;
+        in.options = opt;
+        in.n_modes = n_modes;
+        in.finite_difference = finite_difference;
+        in.fd_step = fd_step;
+        in.xy_pairs = xy_pairs;
+        in.rot_pairs = rot_pairs;
+        in.sleeve = sleeve;
+        py::gil_scoped_release release;
+        return stability_batch(solver, in);
+      },
+      py::arg("solver"), py::arg("omega"), py::arg("pressure"), py::arg("a"),
+      py::arg("restart"), py::arg("options"), py::arg("n_modes"),
+      py::arg("finite_difference"), py::arg("fd_step"), py::arg("xy_pairs"),
+      py::arg("rot_pairs"), py::arg("sleeve"),
+      "Equilibrium (continued), K_H/D_H and eigen-analysis of each point of a sweep chunk.");
+}
+
+}  // namespace rotordyn::py_bind

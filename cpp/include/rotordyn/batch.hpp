@@ -1,0 +1,45 @@
+// One sweep chunk of stability points in one call: the equilibrium continued from point to
+// point along a line, K_H/D_H (eq. 18) and the eigen-analysis of eq. 19 at each point, the
+// results written into flat arrays (no per-point objects crossing into Python).
+#pragma once
+#include <Eigen/Core>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rotordyn/system.hpp"
+
+namespace rotordyn {
+
+struct StabilityBatchInput {
+  Eigen::VectorXd omega;     ///< (n_pts,) spin speed, rad/s
+  Eigen::VectorXd pressure;  ///< (n_pts,) chamber pressure, Pa
+  RowMatrixXd a;             ///< (n_pts, n) configuration vector of each point
+  std::vector<int> restart;  ///< (n_pts,) 1: start cold (a new line), 0: continue
+  EquilibriumOptions options;
+  int n_modes = 0;           ///< <= 0: all
+  bool finite_difference = false;
+  double fd_step = 1e-6;
+  std::vector<std::pair<int, int>> xy_pairs, rot_pairs;
+  std::vector<int> sleeve;   ///< sleeve coordinates (mode kind by kinetic-energy share)
+};
+
+struct StabilityBatchResult {
+  std::vector<std::string> status, message;  ///< (n_pts,)
+  Eigen::VectorXi iterations;                ///< (n_pts,)
+  RowMatrixXd r;                             ///< (n_pts, n) equilibrium
+  RowMatrixXd h_min;                         ///< (n_pts, n_films)
+  Eigen::VectorXi n_eig;                     ///< (n_pts,) eigenvalues found (0: none)
+  Eigen::MatrixXcd eigenvalues;              ///< (n_pts, k), NaN past n_eig
+  Eigen::MatrixXi whirl;                     ///< (n_pts, k) -1, 0, 1
+  RowMatrixXd sleeve_share;                  ///< (n_pts, k) kinetic-energy share of the sleeve
+  std::vector<Eigen::MatrixXcd> modes;       ///< per point (n, n_eig)
+};
+
+/// Points in order on one solver; a point failing at any stage gets status "error" (or the
+/// equilibrium's status) and the batch goes on. Continuation: a point with restart = 0 starts
+/// from the previous point's equilibrium when that one converged ("ok").
+StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchInput& in);
+
+}  // namespace rotordyn

@@ -1,0 +1,85 @@
+// Stability batch of a sweep chunk (see batch.hpp).
+#include "rotordyn/batch.hpp"
+
+#include <cmath>
+#include <exception>
+#include <limits>
+
+#include "rotordyn/errors.hpp"
+#include "rotordyn/modal.hpp"
+
+namespace rotordyn {
+
+StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchInput& in) {
+  const Eigen::Index np = in.omega.size();
+  const SystemModel& m = solver.model();
+  const Eigen::Index n = m.n();
+  if (in.pressure.size() != np || in.a.rows() != np || in.a.cols() != n ||
+      static_cast<Eigen::Index>(in.restart.size()) != np) {
+    throw InputError("stability_batch: expected omega, pressure, restart of length n_pts and "
+                     "a of shape (n_pts, n)");
+  }
+  const Eigen::Index k = in.n_modes > 0 ? std::min<Eigen::Index>(in.n_modes, n) : n;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  StabilityBatchResult out;
+  out.status.assign(np, "error");
+  out.message.assign(np, "");
+  out.iterations = Eigen::VectorXi::Zero(np);
+  out.r = RowMatrixXd::Constant(np, n, nan);
+  out.h_min = RowMatrixXd::Constant(np, static_cast<Eigen::Index>(m.films.size()), nan);
+  out.n_eig = Eigen::VectorXi::Zero(np);
+  out.eigenvalues = Eigen::MatrixXcd::Constant(np, k, std::complex<double>(nan, nan));
+  out.whirl = Eigen::MatrixXi::Zero(np, k);
+  out.sleeve_share = RowMatrixXd::Constant(np, k, nan);
+  out.modes.resize(np);
+  Eigen::VectorXd prev;
+  bool have_prev = false;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index i = 0; i < np; ++i) {
+    const double w = in.omega[i];
+    try {
+      const Eigen::VectorXd a = in.a.row(i).transpose();
+      const Eigen::VectorXd r0 = (in.restart[i] == 0 && have_prev) ? prev : Eigen::VectorXd();
+      EquilibriumResult e = solver.equilibrium(w, in.pressure[i], a, r0, in.options);
+      out.status[i] = e.status;
+      out.message[i] = e.message;
+      out.iterations[i] = e.iterations;
+      have_prev = e.status == "ok";
+      if (have_prev) prev = e.r;
+      for (std::size_t f = 0; f < e.h_min.size() && f < m.films.size(); ++f)
+        out.h_min(i, static_cast<Eigen::Index>(f)) = e.h_min[f];
+      if (e.status != "ok" && e.status != "contact") continue;
+      out.r.row(i) = e.r.transpose();
+      Linearization lin = in.finite_difference ? solver.linearize_fd(e.r, w, in.fd_step)
+                                               : solver.linearize(e.r, zero, w);
+      const Eigen::MatrixXd D = m.C + w * m.G + lin.DH;
+      const Eigen::MatrixXd K = m.K + lin.KH;
+      if (!D.allFinite() || !K.allFinite()) {
+        out.status[i] = "error";
+        out.message[i] = "non-finite bearing coefficients";
+        continue;
+      }
+      ModalResult mr = modal(m.M, D, K, in.xy_pairs, static_cast<int>(k), true, in.rot_pairs);
+      const Eigen::Index ke = mr.eigenvalues.size();
+      out.n_eig[i] = static_cast<int>(ke);
+      for (Eigen::Index j = 0; j < ke; ++j) {
+        out.eigenvalues(i, j) = mr.eigenvalues[j];
+        out.whirl(i, j) = static_cast<int>(mr.whirl[static_cast<std::size_t>(j)]);
+        const Eigen::VectorXcd phi = mr.modes.col(j);
+        const double kin = (phi.adjoint() * m.M * phi).real()(0, 0);
+        double ks = 0.0;
+        for (int p : in.sleeve)
+          for (int q : in.sleeve) ks += (std::conj(phi[p]) * m.M(p, q) * phi[q]).real();
+        out.sleeve_share(i, j) = kin > 0 ? ks / kin : 0.0;
+      }
+      out.modes[static_cast<std::size_t>(i)] = std::move(mr.modes);
+    } catch (const std::exception& ex) {
+      out.status[i] = "error";
+      out.message[i] = ex.what();
+      have_prev = false;
+    }
+  }
+  return out;
+}
+
+}  // namespace rotordyn

@@ -1,0 +1,134 @@
+"""Open-loop chamber-pressure schedule p_c(Ω): over a (speed × p_c) grid of linear models,
+the pressure at each speed that minimises the steady unbalance response at chosen stations
+subject to a stability margin (least damping ratio of every mode) and the actuator limits
+(paper §7, the "open-loop approach")."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from rotordyn import _validate as v
+from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.linear import continued_linear_models
+from rotordyn.errors import InputError
+from rotordyn.results.modes import damping_ratio
+from rotordyn.units import hz_to_rad_s
+
+
+@dataclass(frozen=True)
+class ScheduleResult:
+    """grid: tidy table (speed_hz, chamber_pressure_pa, amplitude_m per station,
+    objective_m, min_damping_ratio, feasible, status); speeds_hz, pressures_pa: the chosen
+    schedule (NaN where no pressure is feasible); best_constant_pa: the single pressure
+    feasible at every speed with the smallest peak objective (NaN if none)."""
+
+    grid: pd.DataFrame
+    speeds_hz: np.ndarray
+    pressures_pa: np.ndarray
+    objective_m: np.ndarray
+    best_constant_pa: float
+    best_constant_objective_m: np.ndarray
+    stations: tuple
+    min_damping: float
+
+    def to_frame(self) -> pd.DataFrame:
+        return pd.DataFrame({"speed_hz": self.speeds_hz, "chamber_pressure_pa": self.pressures_pa,
+                             "objective_m": self.objective_m,
+                             "best_constant_objective_m": self.best_constant_objective_m})
+
+    def schedule(self):
+        """The :class:`~rotordyn.control.PressureSchedule` p_c(Ω) (NaN speeds dropped)."""
+        from rotordyn.control.operation import PressureSchedule
+
+        ok = np.isfinite(self.pressures_pa)
+        if not ok.any():
+            raise InputError("schedule: no feasible pressure at any speed")
+        return PressureSchedule.speed_table(self.speeds_hz[ok], self.pressures_pa[ok])
+
+    def __repr__(self):
+        return (f"ScheduleResult({len(self.speeds_hz)} speeds, p_c {np.nanmin(self.pressures_pa):.4g}"
+                f"..{np.nanmax(self.pressures_pa):.4g} Pa, best constant {self.best_constant_pa:.4g} Pa)")
+
+
+def pressure_schedule(system, unbalances, speeds_hz, pressures_pa, *, stations=None,
+                      config_ay_m: float | None = None, min_damping: float = 0.0,
+                      p_min_pa: float = 0.0, p_max_pa: float = 1e6,
+                      smooth_pa_per_hz: float | None = None) -> ScheduleResult:
+    """Evaluate every (speed, p_c) of the grid on the linear model (equilibria continued in
+    speed at each pressure; K_H, D_H by perturbation) and pick, per speed, the feasible
+    pressure minimising the largest response amplitude √(|X|² + |Y|²) at ``stations``.
+    Feasible: the least damping ratio of all modes ≥ ``min_damping`` and
+    p_min_pa ≤ p_c ≤ p_max_pa. ``smooth_pa_per_hz``: optional limit on the schedule's slope
+    (a dynamic-programming pass over the grid; None: pointwise choice).
+    ``unbalances`` as in :func:`rotordyn.unbalance_response`."""
+    sp = np.asarray(speeds_hz, dtype=float)
+    pp = np.asarray(pressures_pa, dtype=float)
+    if sp.ndim != 1 or sp.size < 1 or np.any(np.diff(sp) <= 0) or np.any(sp <= 0):
+        raise InputError("speeds_hz: expected increasing positive speeds")
+    if pp.ndim != 1 or pp.size < 1 or not np.all(np.isfinite(pp)) or np.any(pp < 0):
+        raise InputError("pressures_pa: expected a 1-D array of pressures >= 0")
+    v.in_range("min_damping", min_damping, -1.0, 1.0)
+    asm = assembled(system)
+    ub = [(int(s), float(me), float(ph)) for s, me, ph in unbalances]
+    outs = tuple(stations) if stations is not None else tuple(dict.fromkeys(s for s, _, _ in ub))
+    Cout = [asm.station_output_matrix(s) for s in outs]
+    F1 = np.zeros(asm.n, dtype=complex)
+    for st, me, ph in ub:
+        F1 += asm.station_load_matrix(st) @ (me * np.exp(1j * np.radians(ph)) * np.array([1.0, -1j]))
+    amp = np.full((sp.size, pp.size, len(outs)), np.nan)
+    zmin = np.full((sp.size, pp.size), np.nan)
+    status = np.full((sp.size, pp.size), "error", dtype=object)
+    for j, p in enumerate(pp):
+        for i, stt, lm in continued_linear_models(system, sp, float(p), config_ay_m,
+                                                  "perturbation", continue_on=("ok",)):
+            status[i, j] = stt
+            if stt != "ok":
+                continue
+            w = hz_to_rad_s(sp[i])
+            q = np.linalg.solve(lm.K - w**2 * lm.M + 1j * w * lm.D, w**2 * F1)
+            for k, Co in enumerate(Cout):
+                x, y = Co @ q
+                amp[i, j, k] = np.hypot(abs(x), abs(y))
+            zmin[i, j] = damping_ratio(np.linalg.eigvals(lm.state_matrix())).min()
+    obj = amp.max(axis=2)
+    feas = (status == "ok") & (zmin >= min_damping) & (pp >= p_min_pa)[None, :] \
+        & (pp <= p_max_pa)[None, :] & np.isfinite(obj)
+    cost = np.where(feas, obj, np.inf)
+    if smooth_pa_per_hz is None:
+        jbest = np.argmin(cost, axis=1)
+    else:
+        v.positive("smooth_pa_per_hz", smooth_pa_per_hz)
+        # Minimise the largest amplitude along the path (min-max DP) under the slope limit.
+        ok_move = np.abs(pp[:, None] - pp[None, :])
+        acc = cost[0].copy()
+        back = np.zeros((sp.size, pp.size), dtype=int)
+        for i in range(1, sp.size):
+            lim = smooth_pa_per_hz * (sp[i] - sp[i - 1])
+            cand = np.where(ok_move <= lim + 1e-9, acc[:, None], np.inf)  # from a -> to b
+            back[i] = np.argmin(cand, axis=0)
+            acc = np.maximum(cand[back[i], np.arange(pp.size)], cost[i])
+        jbest = np.zeros(sp.size, dtype=int)
+        jbest[-1] = int(np.argmin(acc))
+        for i in range(sp.size - 1, 0, -1):
+            jbest[i - 1] = back[i, jbest[i]]
+    chosen = pp[jbest].astype(float)
+    chosen_obj = obj[np.arange(sp.size), jbest]
+    none = ~np.isfinite(cost[np.arange(sp.size), jbest])
+    chosen[none], chosen_obj[none] = np.nan, np.nan
+    allfeas = feas.all(axis=0)
+    if allfeas.any():
+        peak = np.where(allfeas, obj.max(axis=0), np.inf)
+        jc = int(np.argmin(peak))
+        best_c, best_obj = float(pp[jc]), obj[:, jc]
+    else:
+        best_c, best_obj = float("nan"), np.full(sp.size, np.nan)
+    rows = {"speed_hz": np.repeat(sp, pp.size), "chamber_pressure_pa": np.tile(pp, sp.size)}
+    for k, s in enumerate(outs):
+        rows[f"amplitude_m[{s}]"] = amp[:, :, k].ravel()
+    rows.update({"objective_m": obj.ravel(), "min_damping_ratio": zmin.ravel(),
+                 "feasible": feas.ravel(), "status": status.ravel().astype(str)})
+    return ScheduleResult(pd.DataFrame(rows), sp, chosen, chosen_obj, best_c, best_obj, outs,
+                          float(min_damping))

@@ -1,0 +1,89 @@
+"""``rotordyn report``: the text report with comparison marks from stated tolerances, and the
+self-contained HTML report (every section and figure present, each check with its criterion
+and verdict), parsed with html.parser and, when a Chromium is installed, loaded headless."""
+
+import html.parser
+import re
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+
+@pytest.fixture(scope="module")
+def report(tmp_path_factory):
+    out = tmp_path_factory.mktemp("report")
+    p = subprocess.run([sys.executable, "-m", "rotordyn.cli", "report", "paper-rig", "--out",
+                        str(out), "--html", str(out / "report.html")],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    return out, p.stdout
+
+
+def test_text_report_outputs_and_honest_marks(report):
+    out, stdout = report
+    assert "10.43" in stdout
+    assert "threshold of instability" in stdout and "critical speeds" in stdout
+    for name in ("report.txt", "rotor_modes.json", "rotor_modes.csv", "rotor_mode_shapes.png",
+                 "sleeve_modes.csv", "table1_equilibrium.csv", "threshold.csv", "campbell.csv",
+                 "campbell.png"):
+        assert (out / name).stat().st_size > 0
+    # the model's threshold (0.057 MPa) against the paper's 0.098 MPa is 42 % off
+    line = next(x for x in stdout.splitlines() if x.startswith("threshold of instability"))
+    assert re.search(r"paper 0\.098 MPa: OFF by \d+ % \(tolerance 10 %\)", line), line
+    assert "[ok]" not in stdout
+    assert "ok (±1 %)" in stdout  # rotor frequencies within their tolerance
+
+
+class _Parser(html.parser.HTMLParser):
+    def __init__(self):
+        super().__init__()
+        self.tags, self.h2, self.external, self._in_h2 = [], [], [], False
+        self.cells = []
+
+    def handle_starttag(self, tag, attrs):
+        self.tags.append(tag)
+        a = dict(attrs)
+        if tag in ("script", "img", "link") and (a.get("src") or a.get("href")):
+            self.external.append((tag, a))
+        self._in_h2 = tag == "h2"
+
+    def handle_endtag(self, tag):
+        self._in_h2 = False if tag == "h2" else self._in_h2
+
+    def handle_data(self, data):
+        if self._in_h2:
+            self.h2.append(data)
+        self.cells.append(data)
+
+
+def test_html_report_is_self_contained_with_every_section(report):
+    out, _ = report
+    text = (out / "report.html").read_text(encoding="utf-8")
+    p = _Parser()
+    p.feed(text)
+    assert not p.external, p.external  # nothing loaded from outside the file
+    heads = " ".join(p.h2)
+    for sec in ("Model", "Undamped critical speed map", "Campbell diagram", "Unbalance response",
+                "logarithmic decrement", "stability map in p_c", "text report"):
+        assert sec in heads, sec
+    assert p.tags.count("svg") >= 7
+    data = " ".join(p.cells)
+    assert "PASS" in data and "FAIL" in data
+    assert "API 684" in data and "API 617" in data and "OFF by" in data
+    # each check row: name, criterion, value, verdict
+    assert data.count("separation margin, N_c") >= 2
+
+
+@pytest.mark.skipif(shutil.which("chromium") is None, reason="no Chromium installed")
+def test_html_report_loads_in_chromium(report):
+    """Headless Chromium renders the page: the DOM holds every figure, no script errors."""
+    out, _ = report
+    p = subprocess.run(["chromium", "--headless", "--no-sandbox", "--disable-gpu",
+                        "--enable-logging=stderr", "--v=0", "--dump-dom",
+                        (out / "report.html").as_uri()],
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr[-2000:]
+    assert p.stdout.count("<svg") >= 7 and "Campbell diagram" in p.stdout
+    assert "Uncaught" not in p.stderr
