@@ -40,7 +40,9 @@ def main() -> int:
     assert np.all(np.isfinite(tr.r)), tr.message
     for cav in ("gumbel", "reynolds", "jfo"):
         b = rd.JournalBearing(diameter_m=0.05, length_m=0.04, clearance_m=3e-4,
-                              viscosity_pa_s=0.04, n_circ=32, n_axial=8, cavitation=cav)
+                              viscosity_pa_s=0.04, n_circ=32, n_axial=8, cavitation=cav,
+                              grooves=[rd.Groove(center_deg=90.0, width_deg=10.0,
+                                                 pressure_pa=1e4)])
         b.forces(x_m=1e-4, y_m=-1e-4, speed_hz=50.0, vx_m_s=1e-3, vy_m_s=-1e-3)
         b.coefficients(x_m=1e-4, y_m=-1e-4, speed_hz=50.0)
         b.pressure(x_m=1e-4, y_m=-1e-4, speed_hz=50.0)

@@ -131,6 +131,21 @@ def system(p: dict) -> list:
                 _finite(f"eigenvalues[{i}]", row[~np.isnan(row)], v)
             elif not np.all(np.isnan(row)):
                 v.append(f"campbell point {i} ({s}) has eigenvalues")
+    elif a == "unbalance":
+        u = rd.unbalance_response(rig, *op, **p.get("kw", {}))
+        for i, s in enumerate(u.point_status):
+            vals = np.concatenate([u.x[i], u.y[i]]) if hasattr(u, "x") else None
+            if vals is None:
+                break
+            if s in CONVERGED:
+                _finite(f"response[{i}]", vals, v)
+            elif not np.all(np.isnan(vals)):
+                v.append(f"unbalance point {i} ({s}) has a response")
+    elif a == "statespace":
+        ss = rd.statespace(rig, speed_hz=op[0], chamber_pressure_pa=op[1], config_ay_m=op[2],
+                           **p.get("kw", {}))
+        for name in ("A", "B", "C", "D"):
+            _finite(name, getattr(ss, name), v)
     elif a == "threshold":
         th = rd.threshold(rig, *op, **p.get("kw", {}))
         if th.status == "ok" and not math.isfinite(th.value):

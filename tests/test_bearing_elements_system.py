@@ -119,3 +119,23 @@ def test_transient_matches_linear_model_small_amplitude(kind):
     jx = 0  # station 0's x
     scale = np.max(np.abs(lin[:, jx]))
     assert np.max(np.abs(dev[:, jx] - lin[:, jx])) < 0.03 * scale, (dev[:, jx], lin[:, jx])
+
+
+@pytest.mark.parametrize("kind, path, value", [
+    ("fixed_geometry", "bearings.*.preload", 0.3),
+    ("tilting_pad", "bearings.0.pivot_offset", 0.6),
+    ("squeeze_film_damper", "bearings.*.centring_spring_n_per_m", 4e6),
+])
+def test_fields_are_sweep_axes(kind, path, value):
+    """Element fields are sweep axes (model paths of rotordyn.sweep.paths): the changed model
+    validates again and its operating point moves."""
+    from rotordyn.sweep.paths import get_field, set_field
+
+    s = _system(kind)
+    s2 = set_field(s, path, value)
+    assert np.all(np.asarray(get_field(s2, path), dtype=float) == value)
+    e1, e2 = rotordyn.equilibrium(s, speed_hz=50.0), rotordyn.equilibrium(s2, speed_hz=50.0)
+    assert e1.status == e2.status == "ok"
+    assert not np.allclose(e1.r[:6], e2.r[:6], rtol=1e-6, atol=0)
+    with pytest.raises(rotordyn.errors.InputError):
+        set_field(s, path, 1.5 if "spring" not in path else -1.0)

@@ -9,13 +9,12 @@ agrees with the eigenvalues; "contact" iff a converged film is thin). Never anot
 (tests/fuzz_cases.py), so a segfault or a hang fails the case, not the run.
 
 Budget: derandomized (a fixed seed: CI is reproducible), ``max_examples`` per test scaled by
-ROTORDYN_FUZZ_SCALE (1 in ``make test``: about a minute on 2 cores; ``make fuzz`` runs 20x
+ROTORDYN_FUZZ_SCALE (1 in ``make test``: 500 cases, ~30 s on 2 cores; ``make fuzz`` runs 20x
 with a random seed and prints the failing example's reproduction blob).
 
-Restricted for now (film-core defects owned by the bearing work, issue 13 "film items"): the
-bearing strategies keep velocities |v| <= 10 m/s, speeds |f| <= 1e4 Hz, groove pressures
-<= 1e7 Pa, finite-difference rel_step >= 1e-8 and static_equilibrium loads >= 1e-3 N with
-rtol >= 1e-12 (beyond these the film returns NaN/inf or underflows; see the report).
+The film items of issue 13 (non-finite forces at extreme velocities/speeds/groove
+pressures, degenerate finite-difference steps, tiny loads, meaningless rtol) are fixed in the
+film core and fuzzed here without restriction.
 """
 
 from __future__ import annotations
@@ -102,22 +101,24 @@ def bearing_payload(draw):
     c = geom["clearance_m"] if isinstance(geom["clearance_m"], float) and \
         geom["clearance_m"] > 0 else 3e-4
     if isinstance(geom["diameter_m"], float) and geom["diameter_m"] > 0:
-        geom["clearance_m"] = c = min(c, 0.05 * geom["diameter_m"]) if \
-            isinstance(geom["clearance_m"], float) else geom["clearance_m"]
+        c = min(c, 0.05 * geom["diameter_m"])
+        if isinstance(geom["clearance_m"], float):
+            geom["clearance_m"] = c
     if geom["cavitation"] == "jfo":
         import rotordyn as rd
 
         geom["grooves"] = [rd.Groove(center_deg=draw(st.floats(-720, 720)),
                                      width_deg=draw(st.floats(0, 60)),
-                                     pressure_pa=draw(st.floats(0, 1e7)))]
+                                     pressure_pa=draw(st.floats(0, 1e9)))]
     call = draw(st.sampled_from(["forces", "coefficients", "solve", "static_equilibrium"]))
     frac = st.floats(-1.2, 1.2)
     if call == "static_equilibrium":
         ang = draw(st.floats(0, 2 * math.pi))
-        w = draw(st.one_of(st.floats(1e-3, 1e5), st.sampled_from([0.0, math.nan, -1.0])))
+        w = draw(st.one_of(st.floats(1e-3, 1e5),
+                           st.sampled_from([0.0, math.nan, -1.0, 1e-200, 1e-12, 1e300])))
         args = {"load_n": (w * math.cos(ang), w * math.sin(ang)),
                 "speed_hz": draw(number(-1e4, 1e4, special=False)),
-                "rtol": draw(st.sampled_from([1e-10, 1e-6, 1e-12, 0.0, -1.0]))}
+                "rtol": draw(st.sampled_from([1e-10, 1e-6, 1e-12, 0.0, -1.0, 1e300]))}
         args = draw(hostile(args, share=5))
     else:
         args = {"x_m": draw(frac) * c, "y_m": draw(frac) * c,
@@ -128,11 +129,7 @@ def bearing_payload(draw):
         args = draw(hostile(args, share=5))
         if call == "coefficients" and draw(st.booleans()):
             args["method"] = "finite_difference"
-            args["rel_step"] = draw(st.sampled_from([1e-6, 1e-4, 1e-8]))
-    for k in list(args):  # non-finite and out-of-range magnitudes the film is fixed for later
-        if isinstance(args[k], float) and k in ("speed_hz", "vx_m_s", "vy_m_s") and \
-                math.isfinite(args[k]) and abs(args[k]) > 1e4:
-            args[k] = math.copysign(1e4, args[k])
+            args["rel_step"] = draw(st.sampled_from([1e-6, 1e-4, 1e-8, 1e-300, 0.5]))
     return {"geometry": geom, "call": call, "args": args}
 
 
@@ -146,15 +143,16 @@ def test_fuzz_bearing(worker, p):
 @st.composite
 def system_payload(draw):
     a = draw(st.sampled_from(["equilibrium", "equilibrium", "stability", "stability",
-                              "linearize", "transient", "campbell", "threshold"]))
+                              "linearize", "transient", "campbell", "threshold", "unbalance",
+                              "statespace"]))
     speed = draw(number(-100.0, 300.0, special=False))
     pc = draw(number(0.0, 2e6, special=False))
     ay = draw(st.one_of(st.none(), number(-6e-3, 6e-3, special=False)))
     kw = {}
     if draw(st.integers(0, 3)) == 0:  # a quarter of the cases: one hostile operating value
-        hostile = draw(SPECIAL)
+        bad = draw(SPECIAL)
         which = draw(st.integers(0, 2))
-        speed, pc, ay = [hostile if i == which else x for i, x in enumerate((speed, pc, ay))]
+        speed, pc, ay = [bad if i == which else x for i, x in enumerate((speed, pc, ay))]
     if a == "equilibrium":
         if draw(st.booleans()):
             kw["method"] = draw(st.sampled_from(["newton", "successive", "magic"]))
@@ -184,6 +182,18 @@ def system_payload(draw):
                          max_size=2), SPECIAL))
         t_end = draw(st.one_of(st.floats(1e-4, 0.01), SPECIAL))
         return {"analysis": a, "op": [t_end, speed, pc, ay], "kw": kw}
+    if a == "unbalance":
+        speeds = draw(st.lists(st.floats(1.0, 200.0), min_size=1, max_size=3,
+                               unique=True).map(sorted))
+        ub = draw(st.lists(st.tuples(st.integers(0, 8), st.floats(0, 1e-3),
+                                     st.floats(-360, 360)), min_size=1, max_size=2))
+        args = draw(hostile({"unbalances": ub, "speeds_hz": speeds}))
+        kw = {"chamber_pressure_pa": pc, "config_ay_m": ay}
+        return {"analysis": a, "op": [args["unbalances"], args["speeds_hz"]], "kw": kw}
+    if a == "statespace":
+        kw = {"inputs": draw(st.sampled_from([("chamber_pressure",), (("force", 2),),
+                                             (("force", 1),), ("magic",), None]))}
+        return {"analysis": a, "op": [speed, pc, ay], "kw": kw}
     if a == "campbell":
         speeds = draw(st.one_of(
             st.lists(st.floats(-50, 300), min_size=1, max_size=3, unique=True).map(sorted),

@@ -61,6 +61,7 @@ API_CASES = [
     ("campbell speeds text", lambda s: rd.campbell(s, "abc"), "speeds_hz"),
     ("campbell speeds None", lambda s: rd.campbell(s, None), "speeds_hz"),
     ("stability n_modes 2**31", lambda s: rd.stability(s, 50, n_modes=2**31), "n_modes"),
+    ("stability n_modes 0", lambda s: rd.stability(s, 50, n_modes=0), "n_modes"),
     ("stability n_modes text", lambda s: rd.stability(s, 50, n_modes="x"), "n_modes"),
     ("modes n_modes 2**31", lambda s: rd.modes(s, n_modes=2**31), "n_modes"),
     ("statespace inputs None", lambda s: rd.statespace(s, inputs=None), "inputs"),
@@ -70,9 +71,16 @@ API_CASES = [
      "bounds"),
     # resources: estimated before allocating (issue 13)
     ("transient n_out 10**7", lambda s: rd.transient(s, 0.01, n_out=10**7), "n_out"),
-    ("rotor_campbell n_modes 10**6", lambda s: rd.rotor_campbell(s, [0, 10], n_modes=10**6),
-     "n_modes"),
 ]
+
+
+def test_meaningless_mode_counts_are_capped(rig):
+    """Issue 13: ``rotor_campbell(n_modes=10**6)`` returned a 10^6-column NaN array; more
+    modes than coordinates are capped at the model's size (6 for the Guyan-reduced rig)."""
+    c = rd.rotor_campbell(rig, [0, 10], n_modes=10**6)
+    assert c.eigenvalues.shape == (2, 6) and np.all(np.isfinite(c.eigenvalues))
+    st = rd.stability(rig, 50.0, 0.15e6, -1.85e-3, n_modes=10**6)
+    assert len(st.eigenvalues) <= 9
 
 
 @pytest.mark.parametrize(("call", "field"), [c[1:] for c in API_CASES],

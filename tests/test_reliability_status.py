@@ -112,3 +112,16 @@ def test_fd_linearisation_with_a_degenerate_step_is_refused(rig):
     e = rd.equilibrium(rig, 50.0, PC, AY)
     with pytest.raises(rd.InputError, match="rel_step"):  # the C++ guard itself
         asm_solver.linearize_fd(e.r, 2 * np.pi * 50.0, 1e-300)
+
+
+def test_successive_substitution_stops_when_too_slow(rig):
+    """Fuzzing (issue 13) found successive substitution running 50 000 Reynolds solves (over
+    a minute) where the relaxation does not contract: it now stops when the observed rate
+    cannot reach tol within the budget, with status not_converged and the rate named."""
+    import time
+
+    t0 = time.process_time()
+    e = rd.equilibrium(rig, 20.0, 0.4e6, None, method="successive", warm_start=False)
+    assert e.status == "not_converged" and "too slow" in e.message and "P_m" in e.message
+    assert e.iterations < 5000
+    assert time.process_time() - t0 < 30  # a hang guard, not a timing test

@@ -277,6 +277,9 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   out.pm = pm;
   double res = inf_norm(residual(r, H)) / out.load_scale;
   const int max_it = 500 * opt.max_iter;  // the relaxation converges linearly, slowly
+  const int window = 200;
+  double res_window = res;
+  bool stalled = false;
   for (out.iterations = 0; out.iterations < max_it; ++out.iterations) {
     if (res < opt.tol) return finish(r, H, res);
     const Eigen::VectorXd target = Klu.solve(H + F);
@@ -299,9 +302,26 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     r += step;
     res = inf_norm(residual(r, H)) / out.load_scale;
     if (!std::isfinite(res)) break;
+    // Stall check every `window` iterations (issue 13: a slow relaxation ran 50 000 Reynolds
+    // solves, over a minute): from the observed linear rate, the iterations still needed to
+    // reach tol; stop when that is more than twice the remaining budget (or no progress).
+    if ((out.iterations + 1) % window == 0) {
+      const double rate = std::pow(res / res_window, 1.0 / window);
+      const double needed = rate < 1.0 ? std::log(opt.tol / res) / std::log(rate) : INFINITY;
+      if (res >= opt.tol && needed > 2.0 * (max_it - out.iterations)) {
+        stalled = true;
+        out.message = "successive substitution: too slow (residual " + std::to_string(res) +
+                      " after " + std::to_string(out.iterations + 1) +
+                      " iterations, rate " + std::to_string(rate) +
+                      " per iteration); try a larger P_m or method='newton'";
+        ++out.iterations;
+        break;
+      }
+      res_window = res;
+    }
   }
   out.status = res < opt.tol ? "ok" : "not_converged";
-  if (out.status != "ok")
+  if (out.status != "ok" && !stalled)
     out.message = "successive substitution: no convergence in " + std::to_string(max_it) +
                   " iterations (try a larger P_m)";
   return finish(r, H, res);

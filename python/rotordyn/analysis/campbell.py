@@ -33,7 +33,7 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
         v.finite("config_ay_m", config_ay_m)
     v.choice("method", method, ("perturbation", "finite_difference"))
     asm = assembled(system)
-    k = asm.n if n_modes is None else v.integer("n_modes", n_modes, lo=1, hi=asm.n)
+    k = asm.n if n_modes is None else min(v.integer("n_modes", n_modes, lo=1), asm.n)
     lam = np.full((sp.size, k), np.nan + 1j * np.nan)
     whirl = np.zeros((sp.size, k), dtype=np.int64)
     kind = np.full((sp.size, k), "rotor", dtype=object)

@@ -129,7 +129,7 @@ def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float
     logarithmic decrements, whirl, mode shapes (full rotor and full sleeve); ``.stable`` when
     every real part is negative. ``n_modes``: lowest damped frequencies kept (default all)."""
     if n_modes is not None:
-        v.integer("n_modes", n_modes, lo=1, hi=assembled(system).n)
+        n_modes = min(v.integer("n_modes", n_modes, lo=1), assembled(system).n)
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, method=method,
                    **equilibrium_kw)
     return _stability_from(assembled(system), lm, n_modes)

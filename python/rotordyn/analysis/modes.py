@@ -111,7 +111,7 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
     full_rm = RotorMatrices(system, "none")
     n_full = full_rm.full.M.shape[0]
     if n_modes is not None:  # no more modes than coordinates (issue 13)
-        v.integer("n_modes", n_modes, lo=1, hi=n_full)
+        n_modes = min(v.integer("n_modes", n_modes, lo=1), n_full)
     if method == "none":
         return _result(full_rm, speed_hz, n_modes or min(12, n_full), "full")
     rm = RotorMatrices(system, method)
@@ -137,9 +137,9 @@ def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
         v.choice("reduction", reduction, REDUCTION_METHODS)
     rm = RotorMatrices(system, reduction)
     M, K, C, G = rm.matrices()
-    # At most one damped frequency per coordinate pair and direction: more modes than
-    # coordinates is not meaningful (issue 13: n_modes=10**6 gave a 10^6-column NaN array).
-    v.integer("n_modes", n_modes, lo=1, hi=M.shape[0])
+    # More modes than coordinates is not meaningful: capped at the model's size (issue 13:
+    # n_modes=10**6 gave a 10^6-column NaN array).
+    n_modes = min(n_modes, M.shape[0])
     v.memory("n_modes", 16.0 * sp.size * n_modes)
     r = _core.campbell(M, C, G, K, rm.xy_pairs(), hz_to_rad_s(sp), n_modes, rm.rot_pairs())
     return CampbellResult(sp, np.asarray(r.eigenvalues), np.asarray(r.whirl),

@@ -17,20 +17,9 @@ COEFF_NAMES = ("kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy")
 
 def check_common(b, where: str, n_stations: int | None) -> None:
     """Fields every film element has (station, D, L, c, μ, cavitation, grid, configuration)."""
-    if n_stations is not None:
-        v.integer(f"{where}.station", b.station, lo=0, hi=n_stations - 1)
-    v.positive(f"{where}.diameter_m", b.diameter_m)
-    v.positive(f"{where}.length_m", b.length_m)
-    c = v.positive(f"{where}.clearance_m", b.clearance_m)
-    if c >= 0.1 * b.diameter_m:
-        raise InputError(f"{where}.clearance_m: expected a value in (0, 0.1 × diameter_m), "
-                         f"got {b.clearance_m!r}")
-    v.positive(f"{where}.viscosity_pa_s", b.viscosity_pa_s)
-    v.choice(f"{where}.cavitation", b.cavitation, CAVITATION_MODELS)
-    v.integer(f"{where}.n_circ", b.n_circ, lo=12, hi=4096)
-    v.integer(f"{where}.n_axial", b.n_axial, lo=2, hi=1024)
-    v.finite(f"{where}.config_ax_m", b.config_ax_m)
-    v.finite(f"{where}.config_ay_m", b.config_ay_m)
+    from rotordyn.model.bearings import check_film_fields  # (import here: no cycle at load)
+
+    check_film_fields(b, where, n_stations)
 
 
 def check_speeds(speeds_hz) -> np.ndarray:

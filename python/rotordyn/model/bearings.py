@@ -14,9 +14,11 @@ from rotordyn import plausibility
 from rotordyn.sleeve import FlexibleSleeve
 
 
-def _check_film(b, where: str, n_stations: int) -> None:
-    v.integer(f"{where}.station", b.station, lo=0, hi=n_stations - 1)
-    v.text(f"{where}.name", b.name)
+def check_film_fields(b, where: str, n_stations: int | None) -> None:
+    """The fields every film element has (station, D, L, c, μ, cavitation, grid,
+    configuration); ``n_stations`` None skips the station range (a standalone element)."""
+    if n_stations is not None:
+        v.integer(f"{where}.station", b.station, lo=0, hi=n_stations - 1)
     v.positive(f"{where}.diameter_m", b.diameter_m)
     v.positive(f"{where}.length_m", b.length_m)
     c = v.positive(f"{where}.clearance_m", b.clearance_m)
@@ -29,6 +31,11 @@ def _check_film(b, where: str, n_stations: int) -> None:
     v.integer(f"{where}.n_axial", b.n_axial, lo=2, hi=1024)
     v.finite(f"{where}.config_ax_m", b.config_ax_m)
     v.finite(f"{where}.config_ay_m", b.config_ay_m)
+
+
+def _check_film(b, where: str, n_stations: int) -> None:
+    v.text(f"{where}.name", b.name)
+    check_film_fields(b, where, n_stations)
     plausibility.length(f"{where}.diameter_m", b.diameter_m)
     plausibility.clearance(f"{where}.clearance_m", b.clearance_m, b.diameter_m)
     plausibility.viscosity(f"{where}.viscosity_pa_s", b.viscosity_pa_s)

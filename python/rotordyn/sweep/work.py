@@ -189,9 +189,10 @@ def _ref_bearing(asm):
     return (act or asm.bearings)[0] if asm.bearings else None
 
 
-def _equilibrium(asm, f, pc, a, r0, opts):
+def _equilibrium_options(opts):
+    """The C++ equilibrium options of a sweep's analysis options (automatic P_m, thin-film
+    contact at 2 % of c)."""
     from rotordyn import _core
-    from rotordyn.units import hz_to_rad_s
 
     o = _core.EquilibriumOptions()
     o.method = opts.get("method", "newton")
@@ -199,6 +200,13 @@ def _equilibrium(asm, f, pc, a, r0, opts):
     o.max_iter = int(opts.get("max_iter", 100))
     o.pm = -1.0
     o.contact_fraction = 0.02
+    return o
+
+
+def _equilibrium(asm, f, pc, a, r0, opts):
+    from rotordyn.units import hz_to_rad_s
+
+    o = _equilibrium_options(opts)
     return asm.solver.equilibrium(hz_to_rad_s(f), pc, a, np.zeros(0) if r0 is None else r0, o)
 
 
@@ -380,12 +388,7 @@ def _stab_batch(job, seg, out, at, restart_first):
 
     asm, opts = seg[0][1], seg[0][2]
     n_modes = job.options.get("n_modes") or 0
-    o = _core.EquilibriumOptions()
-    o.method = opts.get("method", "newton")
-    o.tol = float(opts.get("tol", 1e-10))
-    o.max_iter = int(opts.get("max_iter", 100))
-    o.pm = -1.0
-    o.contact_fraction = 0.02
+    o = _equilibrium_options(opts)
     restart = [1 if (k == 0 and restart_first) or not it[3] else 0 for k, it in enumerate(seg)]
     res = _core.stability_batch(
         asm.solver, np.array([hz_to_rad_s(it[4][0]) for it in seg]),
