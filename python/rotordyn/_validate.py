@@ -181,6 +181,18 @@ def _bytes(n: float) -> str:
     return f"{n:.0f} B"
 
 
+MAX_SPEED_HZ = 1e5  # 6·10⁶ rpm: beyond it ω overflows nothing yet, but no rotor turns
+
+
+def speed(field: str, value) -> float:
+    """A finite spin speed, Hz, |speed| ≤ MAX_SPEED_HZ (the film solver's range too)."""
+    f = finite(field, value)
+    if abs(f) > MAX_SPEED_HZ:
+        raise InputError(f"{field}: expected a speed in [-{MAX_SPEED_HZ:g}, {MAX_SPEED_HZ:g}] Hz, "
+                         f"got {_show(value)}")
+    return f
+
+
 def speeds(field: str, value, *, positive_only: bool = False, max_count: int = 100_000
            ) -> np.ndarray:
     """A non-empty, strictly increasing 1-D array of finite speeds (Hz), at most
@@ -192,6 +204,9 @@ def speeds(field: str, value, *, positive_only: bool = False, max_count: int = 1
         raise InputError(f"{field}: expected at most {max_count} speeds, got {arr.size}")
     if positive_only and np.any(arr <= 0):
         raise InputError(f"{field}: expected speeds > 0, got {arr.min()!r}")
+    if np.any(np.abs(arr) > MAX_SPEED_HZ):
+        raise InputError(f"{field}: expected speeds in [-{MAX_SPEED_HZ:g}, {MAX_SPEED_HZ:g}] Hz, "
+                         f"got {float(arr[np.argmax(np.abs(arr))])!r}")
     if arr.size > 1 and np.any(np.diff(arr) <= 0):
         raise InputError(f"{field}: expected strictly increasing speeds")
     return arr

@@ -46,7 +46,7 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     ``"no_equilibrium"`` (the iteration failed with a film closing: no equilibrium with an
     open film was found); ``message`` says why.
     """
-    v.finite("speed_hz", speed_hz)
+    v.speed("speed_hz", speed_hz)
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
     if config_ay_m is not None:
         v.finite("config_ay_m", config_ay_m)

@@ -103,7 +103,7 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
         model, 12 of a full one. A reduced result carries the full model's ``full`` result
         with the same number of modes (for the frequency error).
     """
-    v.finite("speed_hz", speed_hz)
+    v.speed("speed_hz", speed_hz)
     if n_modes is not None:
         v.integer("n_modes", n_modes, lo=1)
     method = system.reduction.method if reduction is None else reduction

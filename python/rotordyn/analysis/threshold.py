@@ -57,7 +57,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     xtol = (hi - lo) * 1e-6 if xtol is None else v.positive("xtol", xtol)
     # The fixed parameters obey the ranges of stability() (issue 13: a negative fixed
     # chamber pressure used to scan and report "no_crossing").
-    fixed = {"speed_hz": v.finite("speed_hz", speed_hz),
+    fixed = {"speed_hz": v.speed("speed_hz", speed_hz),
              "chamber_pressure_pa": v.non_negative("chamber_pressure_pa", chamber_pressure_pa),
              "config_ay_m": None if config_ay_m is None else v.finite("config_ay_m",
                                                                        config_ay_m)}

@@ -84,7 +84,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     v.positive("atol_pa", atol_pa)
     v.non_negative("max_step_s", max_step_s)
     v.positive("t_end_s", t_end_s)
-    v.finite("speed_hz", speed_hz)
+    v.speed("speed_hz", speed_hz)
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
     v.integer("n_out", n_out, lo=2)
     v.in_range("rtol", rtol, 1e-14, 0.1, hi_open=True)
