@@ -214,3 +214,12 @@ def test_speeds_beyond_any_rotor_are_refused(capsys):
                  lambda: rd.campbell(rig, [10.0, 1e6])):
         with pytest.raises(rd.InputError, match="speed"):
             call()
+
+
+def test_bearing_table_speed_range_is_counted_before_allocating(capsys):
+    """The coefficient-table CLI had its own START:STOP:STEP parser without the count check
+    (issue 13's campbell 5:1e9:1e-9 MemoryError, again): one parser for every --speeds-hz."""
+    code, err = _cli(capsys, "bearing", "--diameter-m", "0.05", "--length-m", "0.025",
+                     "--clearance-m", "1e-4", "--viscosity-pa-s", "0.03", "--load-n", "0", "-500",
+                     "--speeds-hz", "5:1e9:1e-9")
+    assert code == 2 and "--speeds-hz: expected at most" in err and "\n" not in err

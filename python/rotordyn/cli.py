@@ -7,7 +7,6 @@ Machine-readable output goes to stdout with ``--json``; logs go to stderr.
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import sys
 from pathlib import Path
@@ -19,8 +18,8 @@ from rotordyn import cli_bearing
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.cli_common import ArgumentParser as _ArgumentParser
 from rotordyn.cli_common import json_text as _json
+from rotordyn.cli_common import speeds as _speeds
 
-MAX_SPEEDS = 100_000  # speeds of one Campbell/unbalance run (more is not a diagram)
 
 
 # -- info -------------------------------------------------------------------------------
@@ -132,27 +131,6 @@ def _cmd_equilibrium(args) -> int:
 
 
 # -- linear analyses (issue 5) -----------------------------------------------------------
-def _speeds(text: str) -> np.ndarray:
-    """"a:b:step" (inclusive) or "f1,f2,..." → speeds in Hz (at most MAX_SPEEDS)."""
-    bad = rotordyn.InputError(
-        f"--speeds-hz: expected 'start:stop:step' or a comma-separated list, got {text!r}")
-    try:
-        if ":" in text:
-            a, b, st = (float(x) for x in text.split(":"))
-        else:
-            return np.array([float(x) for x in text.split(",")])
-    except ValueError:
-        raise bad from None
-    if not (np.isfinite(a) and np.isfinite(b) and np.isfinite(st)) or st <= 0 or b < a:
-        raise bad
-    # Count before allocating (issue 13: 5:1e9:1e-9 raised MemoryError).
-    count = math.floor((b - a) / st + 0.5) + 1
-    if count > MAX_SPEEDS:
-        raise rotordyn.InputError(
-            f"--speeds-hz: expected at most {MAX_SPEEDS} speeds, {text!r} gives {count:.3g}")
-    return np.arange(a, b + 0.5 * st, st)
-
-
 def _figure_path(flag: str, path: str) -> str:
     """An output figure: its folder must exist and its suffix be a format matplotlib writes
     (issue 13: a missing folder or an unknown suffix gave a traceback after the solve)."""

@@ -15,6 +15,7 @@ import numpy as np
 
 from rotordyn.bearing import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.cli_common import json_text
+from rotordyn.cli_common import speeds as _speeds
 from rotordyn.errors import InputError
 
 
@@ -139,17 +140,6 @@ def run(args: argparse.Namespace) -> int:
         print("K [N/m] =", np.array2string(K, precision=5))
         print("C [N s/m] =", np.array2string(C, precision=5))
     return 0
-
-
-def _speeds(text: str) -> np.ndarray:
-    try:
-        a, b, st = (float(t) for t in text.split(":"))
-    except ValueError:
-        raise InputError(f"--speeds-hz: expected START:STOP:STEP in Hz, got {text!r}") from None
-    if not (st > 0 and b >= a and np.isfinite([a, b, st]).all()):
-        raise InputError(f"--speeds-hz: expected STEP > 0 and STOP >= START, got {text!r}")
-    n = int(np.floor((b - a) / st + 1e-9)) + 1
-    return a + st * np.arange(n)
 
 
 def _table(b: JournalBearing, args: argparse.Namespace) -> int:

@@ -13,6 +13,8 @@ import numpy as np
 
 from rotordyn.errors import InputError
 
+MAX_SPEEDS = 100_000  # speeds of one Campbell/unbalance/table run (more is not a diagram)
+
 # A negative number, in any notation float() reads: -5, -.5, -5e2, -1.85E-3, -inf is not one.
 _NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
 
@@ -74,3 +76,22 @@ def json_text(obj) -> str:
     return json.dumps(_finite_or_none(plain(obj)), indent=2, allow_nan=False)
 
 
+def speeds(text: str) -> np.ndarray:
+    """"a:b:step" (inclusive) or "f1,f2,..." → speeds in Hz (at most MAX_SPEEDS)."""
+    bad = InputError(
+        f"--speeds-hz: expected 'start:stop:step' or a comma-separated list, got {text!r}")
+    try:
+        if ":" in text:
+            a, b, st = (float(x) for x in text.split(":"))
+        else:
+            return np.array([float(x) for x in text.split(",")])
+    except ValueError:
+        raise bad from None
+    if not (np.isfinite(a) and np.isfinite(b) and np.isfinite(st)) or st <= 0 or b < a:
+        raise bad
+    # Count before allocating (issue 13: 5:1e9:1e-9 raised MemoryError).
+    count = math.floor((b - a) / st + 0.5) + 1
+    if count > MAX_SPEEDS:
+        raise InputError(
+            f"--speeds-hz: expected at most {MAX_SPEEDS} speeds, {text!r} gives {count:.3g}")
+    return np.arange(a, b + 0.5 * st, st)
