@@ -96,11 +96,8 @@ def _probe_function():
 
 
 def local_identity() -> dict:
-    from rotordyn import _core
-
-    with open(_core.__file__, "rb") as fh:
-        core = hashlib.sha256(fh.read()).hexdigest()[:16]
-    return {"version": rotordyn.__version__, "build": _core.build_info(), "core": core}
+    """This process's identity, by the same probe the workers run."""
+    return _probe_function()()
 
 
 def check_workers(client, timeout: float = 30.0) -> int:
