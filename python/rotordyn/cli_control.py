@@ -5,8 +5,8 @@ schedule p_c(Ω) minimising the unbalance response at ``--stations`` under a sta
 margin and the actuator limits; writes grid.csv, schedule.csv, schedule.png under --out.
 
 ``rotordyn control closed-loop MODEL --speed-hz F --chamber-pressure-pa P ...``: designs a
-feedback law (``--law pd`` tuned on the journal's vertical displacement, or ``lqg`` on a
-modal truncation), prints the linear closed loop (eigenvalues, margins), runs the nonlinear
+feedback law (``--law pd`` tuned on the journal's vertical displacement, ``lqg`` or ``hinf``
+on a modal truncation), prints the linear closed loop (eigenvalues, margins), runs the nonlinear
 transient open and closed loop from a disturbance (or a run-up with ``--run-up-hz``),
 writes summary.json, timeseries.csv and closed_loop.png under --out.
 Exit 2 on bad input (the message names the field), 1 on a failed run.
@@ -86,8 +86,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="design (and run) speed, Hz")
     c.add_argument("--chamber-pressure-pa", type=float, default=0.05e6,
                    help="base chamber pressure (operating point), Pa")
-    c.add_argument("--law", choices=("pd", "lqg"), default="pd",
-                   help="feedback law: tuned PD on the vertical journal displacement, or LQG")
+    c.add_argument("--law", choices=("pd", "lqg", "hinf"), default="pd",
+                   help="feedback law: tuned PD on the vertical journal displacement, LQG, or "
+                        "H∞ (needs the optional slycot: pip install 'rotordyn[hinf]')")
     c.add_argument("--t-end-s", type=float, default=1.0, help="simulated time, s")
     c.add_argument("--disturbance-c", type=float, default=0.1,
                    help="initial vertical journal displacement, units of the clearance")
@@ -172,6 +173,13 @@ def run_closed_loop(args) -> int:
 
     if args.t_end_s <= 0:
         raise InputError(f"--t-end-s: expected > 0 s, got {args.t_end_s}")
+    if args.law == "hinf":
+        from rotordyn.control.hinf import _slycot
+
+        try:
+            _slycot()
+        except ImportError as exc:
+            raise InputError(f"--law hinf: {exc}") from None
     system = _load(args.model)
     act = _actuator(args)
     p = plant(system, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
@@ -180,7 +188,12 @@ def run_closed_loop(args) -> int:
         k, cl = tune_pd(p)
     else:
         pr, _ = modal_truncation(p, 500.0)
-        k = lqg(pr)
+        if args.law == "hinf":
+            from rotordyn.control.hinf import hinf
+
+            k = hinf(pr)
+        else:
+            k = lqg(pr)
         cl = closed_loop(p, k)
     ol_lam = p.poles
     asm = assembled(system)
@@ -217,6 +230,7 @@ def run_closed_loop(args) -> int:
         out / "timeseries.csv", index=False)
     last = cln.t >= 0.8 * t_end
     summary = {"law": args.law, "controller_states": k.n_states,
+               "hinf_gamma": k.info.get("gamma") if args.law == "hinf" else None,
                "open_loop_max_real_1_per_s": float(ol_lam.real.max()),
                "closed_loop_max_real_1_per_s": cl.max_real,
                "closed_loop_min_damping": cl.min_damping, "gain_margin": cl.gain_margin,
