@@ -35,7 +35,10 @@ void bind_transient(py::module_& m) {
       .def_readwrite("harmonic_amplitude", &PressureCommand::harmonic_amplitude)
       .def_readwrite("harmonic_frequency", &PressureCommand::harmonic_frequency)
       .def_readwrite("harmonic_phase", &PressureCommand::harmonic_phase)
-      .def_readwrite("harmonic_order", &PressureCommand::harmonic_order);
+      .def_readwrite("harmonic_order", &PressureCommand::harmonic_order)
+      .def_readwrite("harmonic_table_omega", &PressureCommand::harmonic_table_omega)
+      .def_readwrite("harmonic_table_amplitude", &PressureCommand::harmonic_table_amplitude)
+      .def_readwrite("harmonic_table_phase", &PressureCommand::harmonic_table_phase);
   py::class_<Actuator>(m, "Actuator")
       .def(py::init<>())
       .def_readwrite("order", &Actuator::order)

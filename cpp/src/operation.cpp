@@ -81,6 +81,15 @@ void validate_operation(const SpeedProfile& s, const PressureCommand& p, const A
   require(std::isfinite(p.harmonic_amplitude) && std::isfinite(p.harmonic_frequency) &&
               std::isfinite(p.harmonic_phase) && p.harmonic_order >= 0,
           "chamber_pressure harmonic: expected finite amplitude, frequency, phase and order >= 0");
+  const Eigen::Index nh = p.harmonic_table_omega.size();
+  require(p.harmonic_table_amplitude.size() == nh && p.harmonic_table_phase.size() == nh,
+          "chamber_pressure harmonic tables: expected speed, amplitude and phase of the same "
+          "length");
+  if (nh)
+    require(p.harmonic_table_omega.allFinite() && p.harmonic_table_amplitude.allFinite() &&
+                p.harmonic_table_phase.allFinite() && increasing(p.harmonic_table_omega),
+            "chamber_pressure harmonic tables: expected strictly increasing finite speeds and "
+            "finite amplitudes and phases");
   require(a.order >= 0 && a.order <= 2, "actuator.order: expected 0, 1 or 2");
   if (a.order == 1)
     require(std::isfinite(a.time_constant) && a.time_constant > 0,

@@ -105,10 +105,15 @@ double base_command(const Ctx& c, double t, double omega, double theta) {
   double cmd = c.in->chamber_pressure;
   if (p.source == PressureSource::time_table) cmd = interp_table(p.table_x, p.table_p, t);
   else if (p.source == PressureSource::speed_table) cmd = interp_table(p.table_x, p.table_p, omega);
-  if (p.harmonic_amplitude != 0.0) {
-    const double arg = p.harmonic_order > 0 ? p.harmonic_order * theta + p.harmonic_phase
-                                            : p.harmonic_frequency * t + p.harmonic_phase;
-    cmd += p.harmonic_amplitude * std::sin(arg);
+  double amp = p.harmonic_amplitude, phase = p.harmonic_phase;
+  if (p.harmonic_scheduled()) {
+    amp = interp_table(p.harmonic_table_omega, p.harmonic_table_amplitude, omega);
+    phase = interp_table(p.harmonic_table_omega, p.harmonic_table_phase, omega);
+  }
+  if (amp != 0.0) {
+    const double arg = p.harmonic_order > 0 ? p.harmonic_order * theta + phase
+                                            : p.harmonic_frequency * t + phase;
+    cmd += amp * std::sin(arg);
   }
   return cmd;
 }

@@ -23,7 +23,9 @@ enum class PressureSource { constant, time_table, speed_table };
 /// Chamber-pressure command p_cmd(t) = base + harmonic + controller output, in Pa:
 /// base = constant (TransientInput::chamber_pressure), a table p(t) or a table p(Ω)
 /// (piecewise linear, constant outside); harmonic = amplitude · sin(frequency·t + phase), or
-/// with order > 0 locked to the rotor: amplitude · sin(order·θ(t) + phase).
+/// with order > 0 locked to the rotor: amplitude · sin(order·θ(t) + phase). With the harmonic
+/// tables set, the amplitude and phase are scheduled over the speed: amplitude(Ω(t)) and
+/// phase(Ω(t)) interpolated piecewise linearly (constant outside) replace the constants.
 struct PressureCommand {
   PressureSource source = PressureSource::constant;
   Eigen::VectorXd table_x;  ///< (n_p,) s (time_table) or rad/s (speed_table), increasing
@@ -32,6 +34,10 @@ struct PressureCommand {
   double harmonic_frequency = 0.0;  ///< rad/s (order == 0)
   double harmonic_phase = 0.0;      ///< rad
   double harmonic_order = 0.0;      ///< > 0: argument order·θ(t) (1: once per revolution)
+  Eigen::VectorXd harmonic_table_omega;      ///< (n_h,) rad/s, increasing; empty: constants
+  Eigen::VectorXd harmonic_table_amplitude;  ///< (n_h,) Pa
+  Eigen::VectorXd harmonic_table_phase;      ///< (n_h,) rad (unwrapped: interpolated as is)
+  bool harmonic_scheduled() const { return harmonic_table_omega.size() > 0; }
 };
 
 /// Servo valve + chamber from the command to the chamber pressure p_c.

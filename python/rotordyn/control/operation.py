@@ -96,7 +96,10 @@ class PressureSchedule:
     """Chamber-pressure command without feedback, Pa: a base (constant, a table p(t) or a
     schedule p(Ω) — piecewise linear, constant outside) plus an optional harmonic
     ``amplitude_pa · sin(2π f t + phase)``, or with ``order`` > 0 locked to the rotor angle:
-    ``amplitude_pa · sin(order θ(t) + phase)`` (order 1: once per revolution)."""
+    ``amplitude_pa · sin(order θ(t) + phase)`` (order 1: once per revolution). With
+    :meth:`with_harmonic_schedule` the amplitude and phase are tables over the speed,
+    interpolated piecewise linearly at Ω(t) (constant outside): a speed-scheduled 1×
+    command locked to the rotor angle."""
 
     kind: str = "constant"  # constant | time_table | speed_table
     value_pa: float = 0.0
@@ -106,6 +109,9 @@ class PressureSchedule:
     frequency_hz: float = 0.0
     phase_deg: float = 0.0
     order: float = 0.0
+    harmonic_speed_hz: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    harmonic_amplitudes_pa: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    harmonic_phases_deg: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
     @classmethod
     def constant(cls, chamber_pressure_pa: float) -> "PressureSchedule":
@@ -134,6 +140,21 @@ class PressureSchedule:
                                 float(amplitude_pa), float(frequency_hz), float(phase_deg),
                                 float(order))
 
+    def with_harmonic_schedule(self, speed_hz, amplitude_pa, phase_deg, *, order: float = 1.0,
+                               frequency_hz: float = 0.0) -> "PressureSchedule":
+        """Add ``A(Ω) · sin(order θ(t) + φ(Ω))`` (or ``sin(2π f t + φ(Ω))`` with ``order`` 0):
+        amplitude (Pa) and phase (degrees, unwrapped — interpolated as given) tables over the
+        speed (Hz, increasing), e.g. from :func:`rotordyn.control.synchronous.synchronous_bound`.
+        One-point tables are a constant harmonic (bit for bit :meth:`with_harmonic`)."""
+        sp, amp = _table("harmonic schedule", speed_hz, amplitude_pa)
+        sp2, ph = _table("harmonic schedule", speed_hz, phase_deg)
+        v.non_negative("order", order)
+        v.non_negative("frequency_hz", frequency_hz)
+        if not (order or frequency_hz):
+            raise InputError("frequency_hz/order: a harmonic needs a frequency or an order > 0")
+        return PressureSchedule(self.kind, self.value_pa, self.x, self.p_pa, 0.0,
+                                float(frequency_hz), 0.0, float(order), sp, amp, ph)
+
     def to_core(self):
         pc = _core.PressureCommand()
         pc.source = getattr(_core.PressureSource, self.kind)
@@ -144,6 +165,10 @@ class PressureSchedule:
         pc.harmonic_frequency = hz_to_rad_s(self.frequency_hz)
         pc.harmonic_phase = math.radians(self.phase_deg)
         pc.harmonic_order = self.order
+        if self.harmonic_speed_hz.size:
+            pc.harmonic_table_omega = hz_to_rad_s(self.harmonic_speed_hz)
+            pc.harmonic_table_amplitude = self.harmonic_amplitudes_pa
+            pc.harmonic_table_phase = np.radians(self.harmonic_phases_deg)
         return pc
 
 
