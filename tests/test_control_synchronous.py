@@ -93,6 +93,10 @@ def test_synchronous_bound_against_brute_force(rig):
     assert abs(sb.p_hat_pa[0, 0]) <= lim * (1 + 1e-9)
     assert sb.objective[0, 0] < 0.5 * sb.objective_passive[0, 0]  # the 1× command helps here
     assert sb.objective_passive[0, 0] == pytest.approx(semi_major(a[:, 0], a[:, 1]).max())
+    # re-optimised for the journal alone (the disk's reference 1e6 times larger)
+    sj = sb.with_references([1e-6, 1.0])
+    objj = semi_major(Z[:, 0, 0], Z[:, 0, 1])
+    assert objj.min() - slope * h <= sj.optimal_m[0, 0, 0] <= objj.min() * (1 + 1e-9)
     with pytest.raises(rd.InputError, match="references_m"):
         synchronous_bound(rig, UB, [f], [P0], stations=stations, config_ay_m=0.0,
                           references_m=[1.0, 0.0])

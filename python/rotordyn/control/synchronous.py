@@ -87,6 +87,17 @@ def minimise_semi_major(a, b, limit, *, iters: int = 40):
     return p, _objective(a, b, p)
 
 
+def _references(references_m, ns, nst):
+    ref = np.ones(nst) if references_m is None else np.asarray(references_m, float)
+    try:
+        ref = np.broadcast_to(ref, (ns, nst)).copy()
+    except ValueError:
+        raise InputError(f"references_m: expected {nst} values or ({ns}, {nst})") from None
+    if not np.all(np.isfinite(ref)) or np.any(ref <= 0):
+        raise InputError("references_m: expected finite amplitudes > 0 m")
+    return ref
+
+
 @dataclass(frozen=True)
 class SynchronousBound:
     """Per (speed, mean pressure p₀) of the grid: the passive semi-major axes (p̂ = 0) and
@@ -153,6 +164,14 @@ class SynchronousBound:
         val = obj[np.arange(obj.shape[0]), j]
         p0 = np.where(np.isfinite(val), self.pressures_pa[j], np.nan)
         return p0, np.where(np.isfinite(val), val, np.nan), j
+
+    def with_references(self, references_m, *, iters: int = 40) -> "SynchronousBound":
+        """The same grid (no new equilibria) re-optimised for other reference amplitudes
+        ((n_st,) or (n_s, n_st), m; e.g. (1e-6, 1) to minimise the first station alone)."""
+        ns, nst = self.speeds_hz.size, len(self.stations)
+        ref = _references(references_m, ns, nst)
+        return _optimise(self.speeds_hz, self.pressures_pa, self.stations, self.a, self.b,
+                         self.limit_pa, self.min_damping_ratio, self.status, ref, iters)
 
     def harmonic_schedule(self, pressure_pa, speeds_hz=None):
         """Amplitude (Pa) and unwrapped phase (deg) tables of the optimal 1× command over the
@@ -223,15 +242,14 @@ def synchronous_bound(system, unbalances, speeds_hz, pressures_pa, *, stations,
                 a[i, j, k] = Co @ q[:, 0]
                 b[i, j, k] = Co @ q[:, 1]
             zmin[i, j] = damping_ratio(np.linalg.eigvals(lm.state_matrix())).min()
-    ref = np.ones(nst) if references_m is None else np.asarray(references_m, float)
-    try:
-        ref = np.broadcast_to(ref, (ns, nst)).copy()
-    except ValueError:
-        raise InputError(f"references_m: expected {nst} values or ({ns}, {nst})") from None
-    if not np.all(np.isfinite(ref)) or np.any(ref <= 0):
-        raise InputError("references_m: expected finite amplitudes > 0 m")
+    ref = _references(references_m, ns, nst)
     lim = np.minimum(pp - act.p_min_pa, act.p_max_pa - pp)
     lim = np.broadcast_to(lim[None, :], (ns, npp)).copy()
+    return _optimise(sp, pp, tuple(stations), a, b, lim, zmin, status, ref, iters)
+
+
+def _optimise(sp, pp, stations, a, b, lim, zmin, status, ref, iters):
+    ns, npp, nst = a.shape[:3]
     ok = status == "ok"
     passive = np.where(ok[..., None], semi_major(a[..., 0], a[..., 1]), np.nan)
     phat = np.full((ns, npp), np.nan, dtype=complex)
@@ -243,6 +261,5 @@ def synchronous_bound(system, unbalances, speeds_hz, pressures_pa, *, stations,
         z = a[ok] + b[ok] * p_ok[:, None, None]
         optimal[ok] = semi_major(z[..., 0], z[..., 1])
     R = ref[:, None, :]
-    return SynchronousBound(sp, pp, tuple(stations), passive, optimal,
-                            (passive / R).max(axis=2), (optimal / R).max(axis=2), phat, lim,
-                            zmin, status, a, b, ref)
+    return SynchronousBound(sp, pp, stations, passive, optimal, (passive / R).max(axis=2),
+                            (optimal / R).max(axis=2), phat, lim, zmin, status, a, b, ref)
