@@ -7,7 +7,8 @@
 - The bound at one speed against an independent computation: the unbalance map from
   :func:`rotordyn.unbalance_response`, the command map from the plant with the valve
   (:func:`rotordyn.control.plant.plant`, C (iΩ − A)⁻¹ B), and a brute-force 401 × 401 grid
-  over p̂ in the allowed disk: the golden-section optimum is at most the grid's minimum and
+  over p̂ in the allowed disk (with the valve's limits far and near: optimum inside / on
+  the limit): the golden-section optimum is at most the grid's minimum and
   at least the grid's minimum less the grid's resolution times the objective's slope bound.
 - Linear 1× prediction vs the nonlinear model: a slow run-up (5 Hz/s, 55 → 65 Hz, between the
   critical speeds; as test_transient_operation) with a 1× command of 0.1 MPa locked to the
@@ -63,11 +64,24 @@ def test_scheduled_harmonic_follows_its_tables(rig):
         PressureSchedule.constant(P0).with_harmonic_schedule([50.0, 51.0], [1.0], [0, 0])
     with pytest.raises(rd.InputError, match="order"):
         PressureSchedule.constant(P0).with_harmonic_schedule([50.0], [1.0], [0], order=0.0)
+    # the core checks the tables too (a direct call with mismatched lengths)
+    from rotordyn import _core
+
+    asm = assembled(rig)
+    inp = _core.TransientInput()
+    inp.a = inp.r0 = inp.v0 = np.zeros(asm.n)
+    inp.t_out = np.array([0.0, 1e-3])
+    pc = sched.to_core()
+    pc.harmonic_table_phase = np.zeros(2)
+    inp.pressure = pc
+    with pytest.raises(rd.InputError, match="harmonic tables"):
+        _core.integrate(asm.solver, inp, _core.CvodeOptions())
 
 
-def test_synchronous_bound_against_brute_force(rig):
+@pytest.mark.parametrize("p_lim", [(0.0, 1e6), (0.49e6, 0.51e6)])  # limit inactive / active
+def test_synchronous_bound_against_brute_force(rig, p_lim):
     f, stations = 38.5, [4, 6]
-    act = Actuator()
+    act = Actuator(p_min_pa=p_lim[0], p_max_pa=p_lim[1])
     sb = synchronous_bound(rig, UB, [f], [P0], stations=stations, config_ay_m=0.0, actuator=act)
     assert isinstance(sb, SynchronousBound) and sb.status[0, 0] == "ok"
     # independent maps: unbalance_response (a) and the plant with the valve (b)
@@ -91,7 +105,12 @@ def test_synchronous_bound_against_brute_force(rig):
     assert sb.objective[0, 0] <= obj.min() * (1 + 1e-9)
     assert sb.objective[0, 0] >= obj.min() - slope * h
     assert abs(sb.p_hat_pa[0, 0]) <= lim * (1 + 1e-9)
-    assert sb.objective[0, 0] < 0.5 * sb.objective_passive[0, 0]  # the 1× command helps here
+    if p_lim[1] - p_lim[0] < 1e5:
+        assert abs(sb.p_hat_pa[0, 0]) == pytest.approx(lim, rel=1e-6)  # on the limit
+        assert sb.objective[0, 0] < 0.95 * sb.objective_passive[0, 0]
+    else:
+        assert abs(sb.p_hat_pa[0, 0]) < 0.9 * lim  # inside
+        assert sb.objective[0, 0] < 0.5 * sb.objective_passive[0, 0]  # the 1× command helps
     assert sb.objective_passive[0, 0] == pytest.approx(semi_major(a[:, 0], a[:, 1]).max())
     # re-optimised for the journal alone (the disk's reference 1e6 times larger)
     sj = sb.with_references([1e-6, 1.0])
