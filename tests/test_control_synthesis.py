@@ -6,7 +6,10 @@ python-control and on the nonlinear transient.
   eigenvalues of the Hamiltonian [[A, −B R⁻¹ Bᵀ], [−Q, −Aᵀ]] (the exact LQR closed-loop
   spectrum) to 1e-9; gains agree to 1e-5 of the largest. python-control solves the unscaled
   Riccati equation of a plant whose entries span 1e-8..1e8 (its eigenvalues are ~7e-8 off the
-  Hamiltonian's); rotordyn solves it in scaled states (2.6e-11 off).
+  Hamiltonian's); rotordyn solves it in scaled states (2.6e-11 off). python-control is pinned
+  to its SciPy solver (``method="scipy"``): with slycot installed (the ``hinf`` extra) its
+  default becomes SLICOT's SB02MD, which on this unscaled problem is 5 % off in the gains and
+  52 % in the eigenvalues (the Hamiltonian check below shows whose error that is).
 - The rig at a_y = −1.85 mm, 50 Hz, p_c = 0.05 MPa is linearly unstable (max Re λ ≈ +2.4 1/s,
   docs/transient-and-sweeps.md); the tuned PD law with the default 100 Hz valve makes the
   linear closed loop stable, and the nonlinear closed-loop run from a 0.1 c disturbance
@@ -46,7 +49,7 @@ def test_lqr_eigenvalues_equal_python_control(unstable_plant):
     p = unstable_plant
     Q, R = default_weights(p)
     K, E = lqr(p, Q, R)
-    Kc, _, Ec = control.lqr(p.A, p.B, Q, R)
+    Kc, _, Ec = control.lqr(p.A, p.B, Q, R, method="scipy")
     assert np.abs(K - Kc).max() < 1e-5 * np.abs(Kc).max()
     a, b = np.sort_complex(E), np.sort_complex(np.asarray(Ec))
     assert np.all(np.abs(a - b) <= 1e-6 * np.abs(b))
