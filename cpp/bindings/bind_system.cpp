@@ -31,7 +31,10 @@ void bind_system(py::module_& m) {
       .def_readwrite("chamber", &SystemModel::chamber)
       .def_readwrite("films", &SystemModel::films)
       .def_readwrite("tables", &SystemModel::tables)
-      .def("validate", &SystemModel::validate);
+      .def("validate", &SystemModel::validate)
+      .def("has_table_mass", &SystemModel::has_table_mass)
+      .def("mass_at", &SystemModel::mass_at, py::arg("omega"),
+           "M plus the tables' mass coefficients at the spin speed omega (rad/s), (n, n).");
 
   py::class_<EquilibriumOptions>(m, "EquilibriumOptions")
       .def(py::init<>())

@@ -224,6 +224,8 @@ def _eigen(asm, e, f, opts, n_modes):
 
         lin = asm.solver.linearize_fd(r, w, FD_REL_STEP)
     M, C0, G, K0 = asm.mats
+    if asm.model.has_table_mass():  # bearing tables' mass coefficients: M(Ω)
+        M = np.asarray(asm.model.mass_at(w))
     D = C0 + w * G + np.asarray(lin.DH)
     K = K0 + np.asarray(lin.KH)
     if not (np.all(np.isfinite(K)) and np.all(np.isfinite(D))):
