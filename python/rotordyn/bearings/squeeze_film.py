@@ -14,10 +14,11 @@ times the film pressure above the ambient (0),
 
 solved in the Reynolds core (end node rows on half cells). G_s → ∞ is the open damper,
 G_s → 0 the fully sealed one, whose pressure no longer varies along z: the long-bearing
-(infinitely long) damper. This is the lumped end-seal model of the SFD literature (end-seal
-leakage proportional to the pressure difference: Marmol & Vance, "Squeeze film damper
-characteristics for gas turbine engines", ASME J. Mech. Des. 100 (1978) 139–146; San Andrés,
-*Squeeze Film Dampers*, Texas A&M lecture notes, "end seals"). For an end-plate seal (a thin
+(infinitely long) damper. This is the lumped end-seal model of SFD analyses: end-seal
+leakage proportional to the pressure difference across the seal (as in Marmol & Vance,
+"Squeeze film damper characteristics for gas turbine engines", ASME J. Mech. Des. 100 (1978)
+139–146, and San Andrés' *Squeeze Film Dampers* notes, "end seals"; we worked from secondary
+descriptions, the papers themselves were not available to us). For an end-plate seal (a thin
 annular gap of clearance c_s and axial land length ℓ_s; plane Poiseuille flow per unit
 width) G_s = c_s³/(12 μ ℓ_s): :func:`end_plate_seal_conductance`. A fully sealed film
 (G_s = 0) without a supply has no pressure level, so G_s must be > 0 (an O-ring that leaks
