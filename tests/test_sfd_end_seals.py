@@ -164,12 +164,16 @@ def test_end_plate_conductance_and_input_errors():
         pytest.approx(5e-5 ** 3 / (12 * 0.01 * 2e-3), rel=1e-15)
     with pytest.raises(InputError, match="gap_m"):
         end_plate_seal_conductance(gap_m=0.0, land_length_m=2e-3, viscosity_pa_s=0.01)
-    for bad in (0.0, -1e-9, math.nan, math.inf, True, "1e-9"):
+    for bad in (0.0, -1e-9, math.nan, math.inf, True, "1e-9", 1e-12 * G0):
         with pytest.raises(InputError, match="end_seal_conductance_m3_per_pa_s_per_m"):
             _damper("gumbel", bad)
-    for bad in (0.0, -1.0, math.nan):
+    g0 = 1e-4 ** 3 / (12 * 0.02 * 0.03)
+    for bad in (0.0, -1.0, math.nan, 0.9e-8 * g0):
         with pytest.raises(InputError, match="end_seal_conductance"):
             _solver("none", 6, bad)
+    _solver("none", 6, 1.01e-8 * g0)  # the bound: the sealed limit, still well conditioned
+    with pytest.raises(InputError, match=r"end_seal_conductance_m3_per_pa_s_per_m: expected >= 1e-8"):
+        _damper("gumbel", 0.9e-8 * G0)
     with pytest.raises(InputError, match="end_seal_conductance.*jfo"):
         _solver("jfo", 6, 1e-9, grooves=[(90.0, 20.0, 1e5)])
 

@@ -57,6 +57,16 @@ void JournalBearingGeometry::validate() const {
     throw InputError("end_seal_conductance: expected a seal conductance > 0 m^2/(Pa s) "
                      "(inf: open ends; a fully sealed film without a supply has no pressure "
                      "level: use a small positive value), got " + num(end_seal_conductance));
+  // Below 1e-8 of the film's own axial conductance c³/(12μL) the seal is the fully sealed
+  // limit to ~1e-8, and the film's pressure level (set by the seal alone) is lost in the
+  // round-off of a nearly singular operator (a π film then clips a wrong level).
+  const double g_min = 1e-8 * clearance_m * clearance_m * clearance_m /
+                       (12.0 * viscosity_pa_s * length_m);
+  if (std::isfinite(end_seal_conductance) && !(end_seal_conductance >= g_min))
+    throw InputError("end_seal_conductance: expected >= 1e-8 clearance_m^3/(12 viscosity_pa_s "
+                     "length_m) = " + num(g_min) + " m^2/(Pa s) (tighter is the fully sealed "
+                     "limit, whose pressure level round-off would lose), got " +
+                     num(end_seal_conductance));
   for (std::size_t i = 0; i < grooves.size(); ++i) {
     const Groove& g = grooves[i];
     const std::string f = "grooves[" + std::to_string(i) + "].";

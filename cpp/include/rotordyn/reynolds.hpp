@@ -65,8 +65,9 @@ struct JournalBearingGeometry {
   std::vector<Groove> grooves;
   /// End-seal conductance G_s, m²/(Pa·s) (= m³/s of axial leakage per Pa and per metre of
   /// circumference), the same at both ends: q_z = G_s (p − 0) leaves the film through each
-  /// end. +∞ (default): open ends, p = 0 at z = ±L/2. Must be > 0 (a fully sealed film
-  /// without a supply has no pressure level); not with cavitation "jfo".
+  /// end. +∞ (default): open ends, p = 0 at z = ±L/2. Must be ≥ 1e-8 c³/(12μL) (a fully
+  /// sealed film without a supply has no pressure level; below this bound the sealed limit
+  /// is reached and the level would be lost in round-off); not with cavitation "jfo".
   double end_seal_conductance = std::numeric_limits<double>::infinity();
   /// True when the ends are seals (finite end_seal_conductance).
   bool end_sealed() const { return std::isfinite(end_seal_conductance); }
