@@ -134,6 +134,10 @@ struct ReynoldsSolver::Impl {
   double cell_residual(int n, const std::vector<double>& pp) const;
 
   void solve_linear(LinearSystem& S);    // none / gumbel
+  // Short-bearing approximation (geo.short_bearing): p node by node, no linear system.
+  void solve_short();
+  double short_source(const double* hh, const double* hd, int n) const;  // (ω/2)∂h/∂φ + ∂h/∂t
+  double short_factor(int n) const;  // 6μ (z² − L²/4) at node n's row
   // Start of the active set, a function of this call's inputs only: the cavitated region of
   // the same film on the grid with every other node in each direction (solved recursively
   // the same way), interpolated; on grids too coarse or not halvable, the nodes whose source

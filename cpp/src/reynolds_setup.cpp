@@ -67,6 +67,9 @@ void JournalBearingGeometry::validate() const {
                      "length_m) = " + num(g_min) + " m^2/(Pa s) (tighter is the fully sealed "
                      "limit, whose pressure level round-off would lose), got " +
                      num(end_seal_conductance));
+  if (short_bearing && (end_sealed() || !grooves.empty()))
+    throw InputError("short_bearing: the short-bearing approximation has open ends and no "
+                     "grooves (end_seal_conductance must be inf, grooves empty)");
   for (std::size_t i = 0; i < grooves.size(); ++i) {
     const Groove& g = grooves[i];
     const std::string f = "grooves[" + std::to_string(i) + "].";
@@ -168,6 +171,9 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
         p_fixed[n] = gv.pressure_pa;  // a later groove overrides an overlapping earlier one
       }
   }
+  if (geo.short_bearing && cav == Cavitation::jfo)
+    throw InputError("short_bearing: not with cavitation='jfo' (use 'none', 'gumbel' or "
+                     "'reynolds')");
   if (cav == Cavitation::jfo && geo.grooves.empty())
     throw InputError("grooves: cavitation='jfo' needs at least one supply groove (without a "
                      "supply the steady mass-conserving film content is undetermined)");

@@ -71,6 +71,13 @@ struct JournalBearingGeometry {
   double end_seal_conductance = std::numeric_limits<double>::infinity();
   /// True when the ends are seals (finite end_seal_conductance).
   bool end_sealed() const { return std::isfinite(end_seal_conductance); }
+  /// Short-bearing (Ocvirk) approximation: the circumferential pressure flow is neglected, so
+  /// on every node line p = 6μ s (z² − L²/4)/h³ with s = (ω/2) ∂h/∂φ + ∂h/∂t (∂h/∂φ by
+  /// central differences), clipped at 0 for "gumbel" and "reynolds" (the short film's
+  /// Swift–Stieber solution is the clipped one, line by line). Open ends, no grooves, not
+  /// "jfo". Forces integrate it with the same trapezoidal rule (along z: relative error
+  /// 1/n_axial² on the parabola).
+  bool short_bearing = false;
   /// InputError naming the field and its allowed range.
   void validate() const;
 };

@@ -6,6 +6,13 @@ analyses. ``cavitation``: ``"none"`` is the uncavitated full (2π) film, ``"gumb
 π film (negative pressures clipped), ``"reynolds"`` Swift–Stieber. A centring spring
 ``centring_spring_n_per_m`` acts in parallel (isotropic).
 
+``film_model``: ``"finite"`` (default, the finite-length Reynolds equation above) or
+``"short"``, the short-damper model of DyRoBeS/XLTRC users: the circumferential pressure flow
+is neglected, p = 6μ (∂h/∂t)(z² − L²/4)/h³ node by node (the Reynolds core's
+``short_bearing`` option; clipped at 0 for the π film), for any journal motion — the closed
+forms below are its circular-orbit case, and the finite film tends to it as L/D → 0. Open
+ends only.
+
 Ends: open (p = 0 at z = ±L/2, default) or end seals, ``end_seal_conductance_m3_per_pa_s_per_m``
 = G_s: each end is a flow restriction whose axial leakage per unit circumference equals G_s
 times the film pressure above the ambient (0),
@@ -127,6 +134,7 @@ class SqueezeFilmDamper:
     config_ay_m: float = 0.0
     name: str = ""
     end_seal_conductance_m3_per_pa_s_per_m: float | None = None
+    film_model: str = "finite"
 
     def __post_init__(self):
         self.check("squeeze_film_damper", None)
@@ -137,7 +145,11 @@ class SqueezeFilmDamper:
             raise InputError(f"{where}.cavitation: 'jfo' needs a supply groove; use 'none' (full "
                              "film), 'gumbel' (π film) or 'reynolds'")
         v.non_negative(f"{where}.centring_spring_n_per_m", self.centring_spring_n_per_m)
+        v.choice(f"{where}.film_model", self.film_model, ("finite", "short"))
         g = self.end_seal_conductance_m3_per_pa_s_per_m
+        if g is not None and self.film_model == "short":
+            raise InputError(f"{where}.end_seal_conductance_m3_per_pa_s_per_m: the short "
+                             "damper model has open ends (use film_model = 'finite' with seals)")
         if g is not None:
             f = f"{where}.end_seal_conductance_m3_per_pa_s_per_m"
             if isinstance(g, bool) or not isinstance(g, (int, float)) or not math.isfinite(g) \
@@ -158,7 +170,8 @@ class SqueezeFilmDamper:
                          cavitation=self.cavitation, start_rad=0.0, arc_rad=2 * math.pi,
                          pivot_rad=0.0, preload=0.0, n_circ=self.n_circ, n_axial=self.n_axial,
                          coords=[jx, jy], spin=0.0,
-                         end_seal_conductance=self.end_seal_conductance_m3_per_pa_s_per_m)]
+                         end_seal_conductance=self.end_seal_conductance_m3_per_pa_s_per_m,
+                         short_bearing=self.film_model == "short")]
 
     def _spring(self, jx: int, jy: int, name: str) -> list:
         if self.centring_spring_n_per_m == 0.0:
