@@ -132,7 +132,8 @@ OperatingPointTable operating_points(const SystemModel& model, const Eigen::Vect
         // With pads the equilibrium starts from the pad assembly (pad_equilibrium.cpp); the
         // tilt homotopy is the fallback when that path fails.
         EquilibriumResult e = solver.equilibrium(omegas(i), 0.0, a, r0, options);
-        if (pad_penalty.size() && (e.status != "ok" || e.path != "pad_assembly")) {
+        const bool converged = e.status == "ok" || e.status == "contact";
+        if (pad_penalty.size() && (!converged || e.path != "pad_assembly")) {
           const Eigen::VectorXd start =
               homotopy_start(model, omegas(i), 0.0, a, r0, options, pad_penalty);
           e = solver.equilibrium(omegas(i), 0.0, a, start, options);

@@ -74,7 +74,8 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     opt.polish = True  # the answer is the root to round-off, not the first iterate within tol
     omega = hz_to_rad_s(float(speed_hz))
     res = asm.solver.equilibrium(omega, float(chamber_pressure_pa), a, r_init, opt)
-    if asm.pad_penalty is not None and (res.status != "ok" or res.path != "pad_assembly"):
+    if asm.pad_penalty is not None and (res.status not in ("ok", "contact")
+                                        or res.path != "pad_assembly"):
         # tilting pads whose pad-assembly equilibrium failed: fall back to the pad-tilt
         # homotopy from the concentric state (no jump onto an unloaded pad's pressure-free
         # branch), then the true model's Newton
