@@ -117,7 +117,11 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc, bool warm) {
       if (std::abs(r) <= ps.tol) return 1;
       if (k >= 3 && std::abs(r) > 0.25 * prev) break;  // not converging: bracket instead
       prev = std::abs(r);
+      // a pressured root is restoring (∂R/∂δ > 0: the film moment grows against the tilt);
+      // a negative slope means the iterate slides towards the pressure-free set, where the
+      // moment fades to zero without a root: bracket instead
       const double d = ps.jac()(0, 0);
+      if (!(d > 0)) break;
       const double xn = x - r / d;
       if (!std::isfinite(xn) || !(xn > lo && xn < hi)) break;
       if (std::abs(xn - x) <= step_tol) return 1;
@@ -141,7 +145,7 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc, bool warm) {
   bool pf_b = lo_loaded ? pf_hi : pf_lo;
   if (sL == 0.0 || eff(lo_loaded ? R_hi : R_lo, pf_b) == sL) return -1;
   double x = (x0 > std::min(a, b) && x0 < std::max(a, b)) ? x0 : 0.5 * (a + b);
-  double width_old = std::abs(b - a);
+  double dx_old = std::abs(b - a);
   for (int k = 0; k < 300; ++k) {
     ps.rc(it) = x;
     ps.eval();
@@ -153,19 +157,20 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc, bool warm) {
       b = x;
       pf_b = ps.pressure_free;
     }
-    const double width = std::abs(b - a);
-    if (width <= step_tol) break;
+    if (std::abs(b - a) <= step_tol) break;
     double xn = NAN;
     if (!ps.pressure_free) xn = x - r / ps.jac()(0, 0);
     const bool inside = std::isfinite(xn) && xn > std::min(a, b) && xn < std::max(a, b);
     if (inside && std::abs(xn - x) <= step_tol) return 1;
-    // Newton when it stays inside and the bracket keeps shrinking; bisection otherwise
-    if (inside && width <= 0.7 * width_old) {
+    // Newton while it stays inside the bracket and its steps at least halve (rtsafe);
+    // bisection otherwise
+    if (inside && std::abs(xn - x) <= 0.5 * dx_old) {
+      dx_old = std::abs(xn - x);
       x = xn;
     } else {
       x = 0.5 * (a + b);
+      dx_old = 0.5 * std::abs(b - a);
     }
-    width_old = width;
   }
   if (pf_b) {  // no pressured root: the boundary of the pressure-free set
     ps.rc(it) = b;
@@ -189,7 +194,10 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
   std::vector<int> outer;
   for (Eigen::Index i = 0; i < n; ++i)
     if (!in_pad[static_cast<std::size_t>(i)]) outer.push_back(static_cast<int>(i));
-  const double tol_in = 1e-12 * load_scale;
+  // Pad residual tolerance: loose while the journal is far from its equilibrium (the Newton
+  // step below solves for the pads' residual too), 1e-12 of the load scale at the end.
+  const double tol_floor = 1e-12 * load_scale;
+  double tol_in = tol_floor;
   std::vector<int> state(pads_.size(), 1);  // 1 pressured, 0 unloaded (pressure-free)
 
   // Every pad on its loaded branch for the other coordinates of r (pad coordinates in r are
@@ -295,6 +303,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
     resr = inf_norm(Rr) / load_scale;
     return std::isfinite(resr);
   };
+  tol_in = std::max(tol_floor, 1e-3 * load_scale);
   if (!evaluate(r, H, R, res)) {
     why = "pad assembly, starting point: " + why;
     return false;
@@ -344,6 +353,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
     }
     double t = 1.0;
     bool accepted = false;
+    tol_in = std::max(tol_floor, 1e-3 * res * load_scale);
     for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
       Eigen::VectorXd rt = r;
       for (Eigen::Index i = 0; i < no; ++i) rt(outer[static_cast<std::size_t>(i)]) += t * dro(i);
