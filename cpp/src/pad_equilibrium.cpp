@@ -209,7 +209,9 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
       const FilmCoupling& fc = model_.films[g.film];
       PadSolve ps(*this, g);
       ps.omega = omega;
-      ps.tol = tol_in;
+      // a flexible pivot's nested solve needs its tilt converged (a stiff pivot amplifies the
+      // tilt's error in f(u)): the tight tolerance there
+      ps.tol = g.coords.size() == 2 ? tol_floor : tol_in;
       ps.clearance = fc.geometry.clearance_m;
       ps.rc.resize(static_cast<Eigen::Index>(fc.coords.size()));
       for (std::size_t j = 0; j < fc.coords.size(); ++j)
@@ -242,7 +244,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
             ok = false;
           }
           const double fu = ok ? ps.R(1) : -INFINITY;
-          if (ok && std::abs(fu) <= tol_in) break;
+          if (ok && std::abs(fu) <= ps.tol) break;
           if (fu < 0) {
             a = u;
             has_a = true;
