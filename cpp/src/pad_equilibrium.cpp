@@ -114,14 +114,14 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc, bool warm) {
       ps.eval();
       if (ps.pressure_free) break;
       const double r = ps.R(0);
+      // a pressured root is restoring (∂R/∂δ > 0: the film moment grows against the tilt);
+      // a negative slope means the iterate slides towards the pressure-free set, where the
+      // moment fades to zero without a root (small |R| there is no root): bracket instead
+      const double d = ps.jac()(0, 0);
+      if (!(d > 0)) break;
       if (std::abs(r) <= ps.tol) return 1;
       if (k >= 3 && std::abs(r) > 0.25 * prev) break;  // not converging: bracket instead
       prev = std::abs(r);
-      // a pressured root is restoring (∂R/∂δ > 0: the film moment grows against the tilt);
-      // a negative slope means the iterate slides towards the pressure-free set, where the
-      // moment fades to zero without a root: bracket instead
-      const double d = ps.jac()(0, 0);
-      if (!(d > 0)) break;
       const double xn = x - r / d;
       if (!std::isfinite(xn) || !(xn > lo && xn < hi)) break;
       if (std::abs(xn - x) <= step_tol) return 1;
@@ -150,7 +150,8 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc, bool warm) {
     ps.rc(it) = x;
     ps.eval();
     const double r = ps.R(0);
-    if (!ps.pressure_free && std::abs(r) <= ps.tol) return 1;
+    const double d = ps.pressure_free ? 0.0 : ps.jac()(0, 0);
+    if (!ps.pressure_free && std::abs(r) <= ps.tol && d > 0) return 1;
     if (eff(r, ps.pressure_free) == sL) {
       a = x;
     } else {
@@ -159,9 +160,9 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc, bool warm) {
     }
     if (std::abs(b - a) <= step_tol) break;
     double xn = NAN;
-    if (!ps.pressure_free) xn = x - r / ps.jac()(0, 0);
+    if (!ps.pressure_free) xn = x - r / d;
     const bool inside = std::isfinite(xn) && xn > std::min(a, b) && xn < std::max(a, b);
-    if (inside && std::abs(xn - x) <= step_tol) return 1;
+    if (inside && std::abs(xn - x) <= step_tol && d > 0) return 1;
     // Newton while it stays inside the bracket and its steps at least halve (rtsafe);
     // bisection otherwise
     if (inside && std::abs(xn - x) <= 0.5 * dx_old) {
@@ -313,6 +314,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
   const auto no = static_cast<Eigen::Index>(outer.size());
   Eigen::MatrixXd KH;
   double step_prev = INFINITY;
+  bool tight = false;
   for (iterations = 0; iterations < max_iter; ++iterations) {
     if (res < 1e-2 * tol || (res < tol && step_prev <= 1e-13)) break;
     linearize_last_solve(false, KH, nullptr);  // every film's last solve is at r
@@ -355,7 +357,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
     }
     double t = 1.0;
     bool accepted = false;
-    tol_in = std::max(tol_floor, 1e-3 * res * load_scale);
+    tol_in = tight ? tol_floor : std::max(tol_floor, 1e-3 * res * load_scale);
     for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
       Eigen::VectorXd rt = r;
       for (Eigen::Index i = 0; i < no; ++i) rt(outer[static_cast<std::size_t>(i)]) += t * dro(i);
@@ -380,11 +382,13 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
       }
     }
     if (!accepted) {
-      // leave the films at r
-      Eigen::VectorXd rr = r, Hr, Rr;
-      double rs;
-      evaluate(rr, Hr, Rr, rs);
+      // leave the films at r (pads re-solved to the tight tolerance)
+      const bool was_tight = tight;
+      tight = true;
+      tol_in = tol_floor;
+      if (!evaluate(r, H, R, res)) return false;
       if (res < tol) break;
+      if (!was_tight) continue;  // inexact pads stalled the line search: again, exact
       std::ostringstream os;
       os << "pad assembly: line search failed (residual " << res << ")";
       why = os.str();
@@ -399,6 +403,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
     why = os.str();
     return false;
   }
+  why.clear();  // trial points in contact on the way are no failure
   return true;
 }
 
