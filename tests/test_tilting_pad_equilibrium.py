@@ -125,6 +125,7 @@ def test_warm_and_cold_starts_agree_in_a_system():
     rotordyn.equilibrium(sys_, 70.0)  # leaves a different warm start behind
     warm = rotordyn.equilibrium(sys_, 40.0, warm_start=True)
     assert cold.status == warm.status == "ok"
+    assert cold.path == warm.path == "pad_assembly"
     scale = np.abs(cold.r).max()
     assert np.abs(warm.r - cold.r).max() <= 1e-12 * scale, np.abs(warm.r - cold.r).max() / scale
 

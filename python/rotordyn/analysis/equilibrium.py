@@ -82,6 +82,9 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         start = np.asarray(_core.homotopy_start(asm.model, omega, float(chamber_pressure_pa), a,
                                                 np.zeros(0), opt, asm.pad_penalty))
         res = asm.solver.equilibrium(omega, float(chamber_pressure_pa), a, start, opt)
+        path = "homotopy"
+    else:
+        path = res.path
     r = np.asarray(res.r)
     if res.status == "ok":
         asm.last_r = r.copy()
@@ -100,5 +103,5 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         sleeve_m={bc.index: r[list(bc.sleeve)] for bc in bcs if bc.sleeve},
         iterations=int(res.iterations), reynolds_solves=int(res.reynolds_solves),
         residual=float(res.residual), status=res.status, message=res.message,
-        pm=float(res.pm) if method == "successive" else float("nan"),
+        pm=float(res.pm) if method == "successive" else float("nan"), path=path,
     )
