@@ -10,7 +10,10 @@ Checks (no published table: the checks are the equations themselves and independ
   same equilibrium (1e-8 of the clearance) on the 4-pad load-on-pad bearing where a plain
   Newton from the centre had jumped onto pressure-free side pads (K_xx ≈ 0); here the side
   pads stay pressured and K_xx is a few per cent of K_yy.
-* Warm and cold starts agree to 1e-12 of the largest coordinate (polished roots).
+* Warm and cold starts agree to 1e-12 of the largest coordinate (polished roots), in a
+  System (rotor on two 5-pad bearings) with rigid pivots; with very soft pivots (k_p = 1e5
+  N/m, the journals sink 6 clearances) the rotor to 1e-12 and the nearly unloaded upper pads'
+  tilts to 1e-9 of the clearance (their film tilt stiffness is almost zero).
 * Pivot stiffness k_p: as k_p → ∞ the rigid-pivot answer (tests/test_bearing_geometry.py);
   as k_p → 0 (here 300 and 3000× below the film's stiffness) the pivots carry the load in
   series with the films: the journal sinks by W/(k_p Σ n_y²) over the loaded pads (two pads
@@ -114,20 +117,30 @@ def test_pad_assembly_equals_the_homotopy_path_load_on_pad():
     assert t.K[0, 0, 0] > 5e-3 * t.K[0, 1, 1], t.K[0]
 
 
-def test_warm_and_cold_starts_agree_in_a_system():
+@pytest.mark.parametrize("pivot", [{}, dict(pivot_stiffness_n_per_m=1e5, pad_mass_kg=0.02)])
+def test_warm_and_cold_starts_agree_in_a_system(pivot):
     from test_bearing_elements_system import ROTOR_TOML, FILM
 
     base = rotordyn.System.from_toml(ROTOR_TOML, is_text=True)
     sys_ = dataclasses.replace(base, bearings=tuple(
         TiltingPadBearing(station=s, n_pads=5, pad_arc_deg=60.0, preload=0.5,
-                          pad_inertia_kg_m2=2e-5, **FILM) for s in (0, 2)))
+                          pad_inertia_kg_m2=2e-5, **FILM, **pivot) for s in (0, 2)))
     cold = rotordyn.equilibrium(sys_, 40.0, warm_start=False)
     rotordyn.equilibrium(sys_, 70.0)  # leaves a different warm start behind
     warm = rotordyn.equilibrium(sys_, 40.0, warm_start=True)
     assert cold.status == warm.status == "ok"
     assert cold.path == warm.path == "pad_assembly"
     scale = np.abs(cold.r).max()
-    assert np.abs(warm.r - cold.r).max() <= 1e-12 * scale, np.abs(warm.r - cold.r).max() / scale
+    d = np.abs(warm.r - cold.r)
+    n_rotor = 6  # three master stations: x, y
+    assert d[:n_rotor].max() <= 1e-12 * scale, d[:n_rotor].max() / scale
+    if not pivot:
+        assert d.max() <= 1e-12 * scale, d.max() / scale
+    else:
+        # the journals sink ~6 clearances onto the soft pivots: the upper pads' films are then
+        # thick and their tilt stiffness almost zero, so a residual at 1e-14 of the load fixes
+        # their tilts only to ~1e-10 m
+        assert d.max() <= 1e-9 * FILM["clearance_m"], d.max()
 
 
 def test_soft_pivot_tends_to_the_pivot_springs():
