@@ -68,7 +68,7 @@ struct SystemSolver::PadSolve {
   }
   /// ∂R/∂p_g (m × m) about the last eval.
   Eigen::Matrix2d jac() {
-    const Eigen::MatrixXd Kf = s.film_stiffness(g.film);
+    const Eigen::MatrixXd Kf = s.film_stiffness(g.film, g.local);  // the pad's own columns
     Eigen::Matrix2d J = Eigen::Matrix2d::Identity();
     for (int k = 0; k < m(); ++k)
       for (int j = 0; j < m(); ++j)

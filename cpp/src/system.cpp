@@ -197,14 +197,14 @@ Eigen::VectorXd SystemSolver::solve_film(std::size_t i, const Eigen::VectorXd& r
   return films_[i]->integrate(films_[i]->p, model_.films[i].shape);
 }
 
-Eigen::MatrixXd SystemSolver::film_stiffness(std::size_t i) {
+Eigen::MatrixXd SystemSolver::film_stiffness(std::size_t i, const std::vector<int>& cols) {
   const FilmCoupling& fc = model_.films[i];
   Film& f = *films_[i];
   const int K1 = fc.grid.n_axial + 1;
   const auto nc = static_cast<Eigen::Index>(fc.coords.size());
   const RowMatrixXd zero = RowMatrixXd::Zero(fc.grid.n_circ, K1);
-  Eigen::MatrixXd out(nc, nc);
-  for (Eigen::Index j = 0; j < nc; ++j) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(nc, nc);
+  for (const int j : cols) {
     const RowMatrixXd dh = fc.shape.col(j).replicate(1, K1);
     out.col(j) = -f.integrate(f.solver.linearize(dh, zero), fc.shape);
   }

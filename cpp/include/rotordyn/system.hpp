@@ -176,8 +176,9 @@ class SystemSolver {
   Eigen::VectorXd solve_film(std::size_t i, const Eigen::VectorXd& rc, double omega);
   void solve_one(std::size_t i, const Eigen::VectorXd& rc, const Eigen::VectorXd& vc,
                  double omega);
-  /// −∂H/∂rc of film i about its last solve (n_coords × n_coords), perturbation method.
-  Eigen::MatrixXd film_stiffness(std::size_t i);
+  /// −∂H/∂rc of film i about its last solve (n_coords × n_coords), perturbation method; only
+  /// the columns `cols` (positions in the film's coordinates; the others are zero).
+  Eigen::MatrixXd film_stiffness(std::size_t i, const std::vector<int>& cols);
   /// One pad (SystemModel::pad_coords) resolved: its film and the coordinates' positions in
   /// the film's coordinate list.
   struct PadGroup {
