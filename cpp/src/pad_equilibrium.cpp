@@ -23,6 +23,7 @@
 // every tilt counts as f = −∞. Newton on f with the Schur derivative, bracket expansion and
 // bisection.
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -355,6 +356,15 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
       drp = -(y + X * dro);
     } else {
       dro = Joo.partialPivLu().solve(-Ro);
+    }
+    if (!dro.allFinite() && np) {
+      // singular reduced Jacobian: e.g. a journal on one loaded pad with the others
+      // pressure-free has no stiffness across that pad's pivot line; minimum-norm step
+      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jpp);
+      const Eigen::MatrixXd X = lu.solve(Jpo);
+      const Eigen::VectorXd y = lu.solve(Rp);
+      dro = (Joo - Jop * X).completeOrthogonalDecomposition().solve(-(Ro - Jop * y));
+      drp = -(y + X * dro);
     }
     if (!dro.allFinite()) {
       why = "pad assembly: singular reduced Jacobian";
