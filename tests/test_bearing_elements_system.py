@@ -57,6 +57,14 @@ def _bearings(kind):
     if kind == "squeeze_film_damper":
         return [SqueezeFilmDamper(station=s, cavitation="none", centring_spring_n_per_m=2e6,
                                   **FILM) for s in (0, 2)]
+    if kind == "sealed_squeeze_film_damper":  # π film, end seals of G_s = c³/(12μL)
+        g = FILM["clearance_m"] ** 3 / (12 * FILM["viscosity_pa_s"] * FILM["length_m"])
+        return [SqueezeFilmDamper(station=s, cavitation="gumbel", centring_spring_n_per_m=2e6,
+                                  end_seal_conductance_m3_per_pa_s_per_m=g, **FILM)
+                for s in (0, 2)]
+    if kind == "short_squeeze_film_damper":  # the short-damper (Ocvirk) model, full film
+        return [SqueezeFilmDamper(station=s, cavitation="none", centring_spring_n_per_m=2e6,
+                                  film_model="short", **FILM) for s in (0, 2)]
     if kind == "table":
         return [TableBearing(station=s, speeds_hz=(10.0, 60.0, 110.0),
                              kxx_n_per_m=(2e6, 3e6, 4e6), kyy_n_per_m=(3e6, 4e6, 5e6),
@@ -66,7 +74,8 @@ def _bearings(kind):
     raise ValueError(kind)
 
 
-KINDS = ["fixed_geometry", "tilting_pad", "squeeze_film_damper", "table"]
+KINDS = ["fixed_geometry", "tilting_pad", "squeeze_film_damper", "sealed_squeeze_film_damper",
+         "short_squeeze_film_damper", "table"]
 
 
 def _system(kind):
@@ -78,7 +87,7 @@ def _system(kind):
 def test_toml_round_trip(kind):
     s = _system(kind)
     text = s.to_toml()
-    assert f'type = "{kind}"' in text
+    assert f'type = "{kind.removeprefix("sealed_").removeprefix("short_")}"' in text
     assert rotordyn.System.from_toml(text, is_text=True) == s
 
 

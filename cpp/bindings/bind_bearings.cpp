@@ -17,6 +17,7 @@ void bind_bearings(py::module_& m) {
       .def_readwrite("omegas", &TableCoupling::omegas)
       .def_readwrite("K", &TableCoupling::K)
       .def_readwrite("C", &TableCoupling::C)
+      .def_readwrite("M", &TableCoupling::M, "(n_s, 4) mxx mxy myx myy, kg; empty: none")
       .def_readwrite("extrapolate", &TableCoupling::extrapolate)
       .def(
           "at",
@@ -25,7 +26,15 @@ void bind_bearings(py::module_& m) {
             t.at(omega, K, C);
             return py::make_tuple(K, C);
           },
-          py::arg("omega"), "(K, C) at the speed omega (rad/s).");
+          py::arg("omega"), "(K, C) at the speed omega (rad/s).")
+      .def(
+          "mass_at",
+          [](const TableCoupling& t, double omega) {
+            Eigen::Matrix2d K, C, M;
+            t.at(omega, K, C, &M);
+            return M;
+          },
+          py::arg("omega"), "M (2x2, kg) at the speed omega (rad/s); zero without mass terms.");
 
   py::class_<OperatingPointTable>(m, "OperatingPointTable")
       .def_readonly("r", &OperatingPointTable::r)

@@ -25,6 +25,11 @@ void bind_reynolds(py::module_& m) {
       .def_readwrite("clearance_m", &JournalBearingGeometry::clearance_m)
       .def_readwrite("viscosity_pa_s", &JournalBearingGeometry::viscosity_pa_s)
       .def_readwrite("grooves", &JournalBearingGeometry::grooves)
+      .def_readwrite("short_bearing", &JournalBearingGeometry::short_bearing,
+                     "Short-bearing (Ocvirk) approximation: no circumferential pressure flow.")
+      .def_readwrite("end_seal_conductance", &JournalBearingGeometry::end_seal_conductance,
+                     "End-seal conductance G_s, m^2/(Pa s): axial leakage q_z = G_s p per metre "
+                     "of circumference at each end (Robin condition); inf (default): open ends.")
       .def("validate", &JournalBearingGeometry::validate);
 
   py::class_<FilmGrid>(m, "FilmGrid", "n_circ nodes around, n_axial intervals along.")

@@ -23,6 +23,9 @@ void bind_system(py::module_& m) {
 
   py::class_<SystemModel>(m, "SystemModel", "M, K, C, G, loads and films of eq. 12 (SI).")
       .def(py::init<>())
+      .def("has_table_mass", &SystemModel::has_table_mass)
+      .def("mass_at", &SystemModel::mass_at, py::arg("omega"),
+           "M plus the tables' mass coefficients at the spin speed omega (rad/s), (n, n).")
       .def_readwrite("M", &SystemModel::M)
       .def_readwrite("K", &SystemModel::K)
       .def_readwrite("C", &SystemModel::C)

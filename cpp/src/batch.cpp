@@ -59,17 +59,18 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
         out.message[i] = "non-finite bearing coefficients";
         continue;
       }
-      ModalResult mr = modal(m.M, D, K, in.xy_pairs, static_cast<int>(k), true, in.rot_pairs);
+      const Eigen::MatrixXd Mw = m.has_table_mass() ? m.mass_at(w) : m.M;  // table masses
+      ModalResult mr = modal(Mw, D, K, in.xy_pairs, static_cast<int>(k), true, in.rot_pairs);
       const Eigen::Index ke = mr.eigenvalues.size();
       out.n_eig[i] = static_cast<int>(ke);
       for (Eigen::Index j = 0; j < ke; ++j) {
         out.eigenvalues(i, j) = mr.eigenvalues[j];
         out.whirl(i, j) = static_cast<int>(mr.whirl[static_cast<std::size_t>(j)]);
         const Eigen::VectorXcd phi = mr.modes.col(j);
-        const double kin = (phi.adjoint() * m.M * phi).real()(0, 0);
+        const double kin = (phi.adjoint() * Mw * phi).real()(0, 0);
         double ks = 0.0;
         for (int p : in.sleeve)
-          for (int q : in.sleeve) ks += (std::conj(phi[p]) * m.M(p, q) * phi[q]).real();
+          for (int q : in.sleeve) ks += (std::conj(phi[p]) * Mw(p, q) * phi[q]).real();
         out.sleeve_share(i, j) = kin > 0 ? ks / kin : 0.0;
       }
       out.modes[static_cast<std::size_t>(i)] = std::move(mr.modes);

@@ -28,14 +28,19 @@ void TableCoupling::validate(const std::string& where, Eigen::Index n) const {
   require(K.rows() == ns && K.cols() == 4, shape_msg(w + ".K", ns, 4, K.rows(), K.cols()));
   require(C.rows() == ns && C.cols() == 4, shape_msg(w + ".C", ns, 4, C.rows(), C.cols()));
   require(K.allFinite() && C.allFinite(), w + ": expected finite coefficients");
+  require(M.size() == 0 || (M.rows() == ns && M.cols() == 4),
+          shape_msg(w + ".M", ns, 4, M.rows(), M.cols()));
+  require(M.allFinite(), w + ": expected finite mass coefficients");
 }
 
-void TableCoupling::at(double omega, Eigen::Matrix2d& Kout, Eigen::Matrix2d& Cout) const {
+void TableCoupling::at(double omega, Eigen::Matrix2d& Kout, Eigen::Matrix2d& Cout,
+                       Eigen::Matrix2d* Mout) const {
   const Eigen::Index ns = omegas.size();
   auto fill = [&](Eigen::Index i, Eigen::Index j, double t) {
     for (int e = 0; e < 4; ++e) {
       Kout(e / 2, e % 2) = (1 - t) * K(i, e) + t * K(j, e);
       Cout(e / 2, e % 2) = (1 - t) * C(i, e) + t * C(j, e);
+      if (Mout) (*Mout)(e / 2, e % 2) = M.size() ? (1 - t) * M(i, e) + t * M(j, e) : 0.0;
     }
   };
   if (ns == 1) {

@@ -51,6 +51,7 @@ struct LinearSystem {
   std::vector<int> node_of;    // unknown -> node
   std::vector<double> wphi;    // unknown -> weight of φ-fluxes and sources (0.5 on a half cell)
   std::vector<char> has_n;     // unknown -> couples to its k+1 neighbour
+  std::vector<char> has_s;     // unknown -> couples to its k-1 neighbour (0 on a sealed z = -L/2 row)
   SpMat A;                     // 5-point pattern, both triangles, explicit zeros kept
   std::vector<ColPos> pos;
   StaticLDLT ldlt;             // symbolic once per system, numeric per call
@@ -80,6 +81,12 @@ struct ReynoldsSolver::Impl {
   std::vector<char> fixed;       // node -> prescribed pressure (ends, grooves)
   std::vector<double> p_fixed;   // node -> prescribed pressure (0 if unknown)
   std::vector<char> groove;      // node -> 1 on a groove (interior rows)
+  // End seals (geo.end_sealed()): the end rows k = 0 and K1-1 are unknowns on half cells
+  // (φ-fluxes and sources weighted 1/2) whose outer face is the seal, a conductance
+  // gseal = G_s R Δφ to the ambient pressure 0. Off: the end rows are Dirichlet p = 0.
+  bool sealed = false;
+  double gseal = 0.0;
+  bool end_row(int n) const { return sealed && (n % K1 == 0 || n % K1 == K1 - 1); }
 
   LinearSystem full, halfsys;
   bool halfsys_built = false;
@@ -115,6 +122,7 @@ struct ReynoldsSolver::Impl {
   void build_system(LinearSystem& S, bool half);
   bool symmetric(const double* f) const;  // f(φ, z) == f(φ, −z) bitwise
   void mirror_fields();                   // fill k > Kh from their mirrors after a half solve
+  int mirror_end() const { return sealed ? K1 : K1 - 1; }  // rows Kh+1 .. mirror_end()-1 mirrored
 
   void set_film(const double* h_in, const double* hdot_in, double omega_in);
   // Right-hand side b of A p = b (Couette, squeeze, prescribed neighbours), unknown ordering.
@@ -126,6 +134,10 @@ struct ReynoldsSolver::Impl {
   double cell_residual(int n, const std::vector<double>& pp) const;
 
   void solve_linear(LinearSystem& S);    // none / gumbel
+  // Short-bearing approximation (geo.short_bearing): p node by node, no linear system.
+  void solve_short();
+  double short_source(const double* hh, const double* hd, int n) const;  // (ω/2)∂h/∂φ + ∂h/∂t
+  double short_factor(int n) const;  // 6μ (z² − L²/4) at node n's row
   // Start of the active set, a function of this call's inputs only: the cavitated region of
   // the same film on the grid with every other node in each direction (solved recursively
   // the same way), interpolated; on grids too coarse or not halvable, the nodes whose source

@@ -53,6 +53,23 @@ void JournalBearingGeometry::validate() const {
   if (!(clearance_m < 0.5 * diameter_m))
     throw InputError("clearance_m: expected 0 < clearance_m < diameter_m/2 = " +
                      num(0.5 * diameter_m) + ", got " + num(clearance_m));
+  if (!(end_seal_conductance > 0.0))  // NaN fails too; +inf: open ends
+    throw InputError("end_seal_conductance: expected a seal conductance > 0 m^2/(Pa s) "
+                     "(inf: open ends; a fully sealed film without a supply has no pressure "
+                     "level: use a small positive value), got " + num(end_seal_conductance));
+  // Below 1e-8 of the film's own axial conductance c³/(12μL) the seal is the fully sealed
+  // limit to ~1e-8, and the film's pressure level (set by the seal alone) is lost in the
+  // round-off of a nearly singular operator (a π film then clips a wrong level).
+  const double g_min = 1e-8 * clearance_m * clearance_m * clearance_m /
+                       (12.0 * viscosity_pa_s * length_m);
+  if (std::isfinite(end_seal_conductance) && !(end_seal_conductance >= g_min))
+    throw InputError("end_seal_conductance: expected >= 1e-8 clearance_m^3/(12 viscosity_pa_s "
+                     "length_m) = " + num(g_min) + " m^2/(Pa s) (tighter is the fully sealed "
+                     "limit, whose pressure level round-off would lose), got " +
+                     num(end_seal_conductance));
+  if (short_bearing && (end_sealed() || !grooves.empty()))
+    throw InputError("short_bearing: the short-bearing approximation has open ends and no "
+                     "grooves (end_seal_conductance must be inf, grooves empty)");
   for (std::size_t i = 0; i < grooves.size(); ++i) {
     const Groove& g = grooves[i];
     const std::string f = "grooves[" + std::to_string(i) + "].";
@@ -114,11 +131,16 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
     sinphi[j] = std::sin(j * dphi);
   }
 
-  // Prescribed-pressure nodes: both ends (p = 0), grooves (interior rows).
+  // Prescribed-pressure nodes: both ends (p = 0) unless they are seals, grooves (interior rows).
+  sealed = geo.end_sealed();
+  gseal = sealed ? geo.end_seal_conductance * R * dphi : 0.0;
+  if (sealed && cav == Cavitation::jfo)
+    throw InputError("end_seal_conductance: end seals are not available with cavitation='jfo' "
+                     "(use 'none', 'gumbel' or 'reynolds', or open ends: inf)");
   groove.assign(n_nodes, 0);
   p_fixed.assign(n_nodes, 0.0);
   fixed.assign(n_nodes, 0);
-  for (int j = 0; j < N; ++j) {
+  for (int j = 0; j < N && !sealed; ++j) {
     fixed[j * K1] = 1;
     fixed[j * K1 + K1 - 1] = 1;
   }
@@ -149,6 +171,9 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
         p_fixed[n] = gv.pressure_pa;  // a later groove overrides an overlapping earlier one
       }
   }
+  if (geo.short_bearing && cav == Cavitation::jfo)
+    throw InputError("short_bearing: not with cavitation='jfo' (use 'none', 'gumbel' or "
+                     "'reynolds')");
   if (cav == Cavitation::jfo && geo.grooves.empty())
     throw InputError("grooves: cavitation='jfo' needs at least one supply groove (without a "
                      "supply the steady mass-conserving film content is undetermined)");
@@ -185,13 +210,15 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
   S.node_of.clear();
   S.wphi.clear();
   S.has_n.clear();
+  S.has_s.clear();
   for (int n = 0; n < n_nodes; ++n) {
     const int k = n % K1;
     if (fixed[n] || (half && k > Kh)) continue;
     S.unk[n] = static_cast<int>(S.node_of.size());
     S.node_of.push_back(n);
-    S.wphi.push_back(half && k == Kh && mid_node ? 0.5 : 1.0);
-    S.has_n.push_back(half && k == Kh ? 0 : 1);
+    S.wphi.push_back((half && k == Kh && mid_node) || end_row(n) ? 0.5 : 1.0);
+    S.has_n.push_back((half && k == Kh) || k == K1 - 1 ? 0 : 1);  // k = K1-1: a sealed end
+    S.has_s.push_back(k > 0 ? 1 : 0);                              // k = 0: a sealed end
   }
   S.n_unk = static_cast<int>(S.node_of.size());
   if (S.n_unk == 0) return;
@@ -200,8 +227,9 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
     trip.emplace_back(i, i, 1.0);
-    for (int nb : {east(n), west(n), n - 1})
+    for (int nb : {east(n), west(n)})
       if (S.unk[nb] >= 0) trip.emplace_back(S.unk[nb], i, 1.0);
+    if (S.has_s[i] && S.unk[n - 1] >= 0) trip.emplace_back(S.unk[n - 1], i, 1.0);
     if (S.has_n[i] && S.unk[n + 1] >= 0) trip.emplace_back(S.unk[n + 1], i, 1.0);
   }
   S.A.resize(S.n_unk, S.n_unk);
@@ -218,7 +246,7 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
     const int n = S.node_of[i];
     S.pos[i] = LinearSystem::ColPos{find(i, i), find(S.unk[east(n)], i), find(S.unk[west(n)], i),
                                     S.has_n[i] ? find(S.unk[n + 1], i) : -1,
-                                    find(S.unk[n - 1], i)};
+                                    S.has_s[i] ? find(S.unk[n - 1], i) : -1};
   }
   if (!S.ldlt.analyze(S.A, kMaxFactorBytes))
     throw InputError("n_circ, n_axial: the " + std::to_string(N) + " x " +
@@ -246,8 +274,9 @@ bool ReynoldsSolver::Impl::symmetric(const double* f) const {
 }
 
 void ReynoldsSolver::Impl::mirror_fields() {
+  const int kend = mirror_end();
   for (int j = 0; j < N; ++j)
-    for (int k = Kh + 1; k < K1 - 1; ++k) {
+    for (int k = Kh + 1; k < kend; ++k) {
       const int n = j * K1 + k, m = mirror(n);
       p[n] = p[m];
       pfull[n] = pfull[m];
@@ -304,8 +333,8 @@ void ReynoldsSolver::Impl::base_rhs(const LinearSystem& S, Eigen::VectorXd& b) c
     if (fixed[w]) v += cE[w] * p_fixed[w];
     v *= wp;
     if (S.has_n[i] && fixed[n + 1]) v += cN[n] * p_fixed[n + 1];
-    if (fixed[n - 1]) v += cN[n - 1] * p_fixed[n - 1];
-    b[i] = v;
+    if (S.has_s[i] && fixed[n - 1]) v += cN[n - 1] * p_fixed[n - 1];
+    b[i] = v;  // a seal's outer pressure is the ambient 0: no term
   }
 }
 
@@ -324,7 +353,11 @@ void ReynoldsSolver::Impl::fill_spd(LinearSystem& S, const std::vector<char>* ma
       continue;
     }
     const double wp = S.wphi[i];
-    val[q.diag] = wp * (cE[n] + cE[w]) + (S.has_n[i] ? cN[n] : 0.0) + cN[n - 1];
+    if (S.has_s[i])
+      val[q.diag] = wp * (cE[n] + cE[w]) + (S.has_n[i] ? cN[n] : 0.0) + cN[n - 1];
+    else
+      val[q.diag] = wp * (cE[n] + cE[w]) + cN[n];
+    if (end_row(n)) val[q.diag] += gseal;
     auto off = [&](int at, int nb, double cf) {
       if (at < 0) return;
       val[at] = (mask && (*mask)[S.unk[nb]]) ? 0.0 : -cf;
@@ -346,6 +379,17 @@ void ReynoldsSolver::Impl::factor_spd(LinearSystem& S) {
 double ReynoldsSolver::Impl::cell_residual(int n, const std::vector<double>& pp) const {
   const int e = east(n), w = west(n);
   const double pn = pp[n];
+  if (end_row(n)) {  // a sealed end's half cell: half the φ-balance, its inner face, the seal
+    double r = cE[n] * (pn - pp[e]) + cE[w] * (pn - pp[w]);
+    if (omega >= 0.0)
+      r += qE[n] * theta[n] - qE[w] * theta[w];
+    else
+      r += qE[n] * theta[e] - qE[w] * theta[n];
+    r += src[n] * theta[n];
+    const int k = n % K1;
+    return 0.5 * r + (k == 0 ? cN[n] * (pn - pp[n + 1]) : cN[n - 1] * (pn - pp[n - 1])) +
+           gseal * pn;
+  }
   double r = cE[n] * (pn - pp[e]) + cE[w] * (pn - pp[w]) + cN[n] * (pn - pp[n + 1]) +
              cN[n - 1] * (pn - pp[n - 1]);
   if (omega >= 0.0)

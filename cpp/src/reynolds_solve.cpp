@@ -12,6 +12,25 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
+double ReynoldsSolver::Impl::short_source(const double* hh, const double* hd, int n) const {
+  return 0.5 * omega * (hh[east(n)] - hh[west(n)]) / (2.0 * dphi) + hd[n];
+}
+
+double ReynoldsSolver::Impl::short_factor(int n) const {
+  const double z = -0.5 * L + (n % K1) * dz;
+  return 6.0 * mu * (z * z - 0.25 * L * L);
+}
+
+void ReynoldsSolver::Impl::solve_short() {
+  for (int n = 0; n < n_nodes; ++n) {
+    const double hv = h[n];
+    const double pv = short_factor(n) * short_source(h.data(), hdot.data(), n) / (hv * hv * hv);
+    pfull[n] = pv;
+    p[n] = (cav != Cavitation::none && pv < 0.0) ? 0.0 : pv;
+  }
+  out.iterations = 1;
+}
+
 void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
   fill_spd(S, nullptr);
   factor_spd(S);
@@ -159,7 +178,8 @@ double ReynoldsSolver::Impl::apply_row(const LinearSystem& S, int i,
   const double xn = x[i];
   double r = S.wphi[i] * (cE[n] * (xn - val(e)) + cE[w] * (xn - val(w)));
   if (S.has_n[i]) r += cN[n] * (xn - val(n + 1));
-  r += cN[n - 1] * (xn - val(n - 1));
+  if (S.has_s[i]) r += cN[n - 1] * (xn - val(n - 1));
+  if (end_row(n)) r += gseal * xn;
   return r;
 }
 
@@ -247,12 +267,18 @@ void ReynoldsSolver::Impl::postprocess() {
   for (int n = 0; n < n_nodes; ++n) {
     if (fixed[n]) continue;
     const int e = east(n), w = west(n);
-    if (groove[w]) qin += cE[w] * (p[w] - p[n]) + qE[w] * (fwd ? theta[w] : theta[n]);
-    if (groove[e]) qin += cE[n] * (p[e] - p[n]) - qE[n] * (fwd ? theta[n] : theta[e]);
-    if (groove[n + 1]) qin += cN[n] * (p[n + 1] - p[n]);
-    if (groove[n - 1]) qin += cN[n - 1] * (p[n - 1] - p[n]);
-    if (n % K1 == 1) qside += cN[n - 1] * (p[n] - p[n - 1]);
-    if (n % K1 == Kl - 1) qside += cN[n] * (p[n] - p[n + 1]);
+    const int k = n % K1;
+    const double wq = end_row(n) ? 0.5 : 1.0;  // a sealed end's half cell
+    if (groove[w]) qin += wq * (cE[w] * (p[w] - p[n]) + qE[w] * (fwd ? theta[w] : theta[n]));
+    if (groove[e]) qin += wq * (cE[n] * (p[e] - p[n]) - qE[n] * (fwd ? theta[n] : theta[e]));
+    if (k < Kl && groove[n + 1]) qin += cN[n] * (p[n + 1] - p[n]);
+    if (k > 0 && groove[n - 1]) qin += cN[n - 1] * (p[n - 1] - p[n]);
+    if (sealed) {
+      if (k == 0 || k == Kl) qside += gseal * p[n];  // through the seal to the ambient 0
+    } else {
+      if (k == 1) qside += cN[n - 1] * (p[n] - p[n - 1]);
+      if (k == Kl - 1) qside += cN[n] * (p[n] - p[n + 1]);
+    }
   }
   out.inlet_flow_m3_s = qin;
   out.side_flow_m3_s = qside;
@@ -279,6 +305,21 @@ void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const doub
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
     const int e = east(n), w = west(n);
+    if (end_row(n)) {  // a sealed end's half cell; the seal's conductance does not depend on h
+      const int k = n % K1, in = k == 0 ? n + 1 : n - 1;
+      const double he = 0.5 * (h[n] + h[e]), hw = 0.5 * (h[w] + h[n]);
+      const double hi = 0.5 * (h[n] + h[in]);
+      const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
+      const double dhi = 0.5 * (dh[n] + dh[in]);
+      double r = fE * he * he * dhe * (P[n] - P[e]) + fE * hw * hw * dhw * (P[n] - P[w]);
+      if (fwd)
+        r += fq * (dhe * theta[n] - dhw * theta[w]);
+      else
+        r += fq * (dhe * theta[e] - dhw * theta[n]);
+      r += fs * dhdot[n] * theta[n];
+      outv[i] = 0.5 * r + fN * hi * hi * dhi * (P[n] - P[in]);
+      continue;
+    }
     const double he = 0.5 * (h[n] + h[e]), hw = 0.5 * (h[w] + h[n]);
     const double hn = 0.5 * (h[n] + h[n + 1]), hs = 0.5 * (h[n - 1] + h[n]);
     const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
@@ -305,6 +346,12 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
     throw InputError(shape_msg("dhdt", s.N, s.K1, dhdt.rows(), dhdt.cols()));
   s.solved = false;
   s.set_film(h.data(), dhdt.data(), omega);
+  if (s.geo.short_bearing) {
+    s.solve_short();
+    s.postprocess();
+    s.solved = true;
+    return s.out;
+  }
   const bool half = s.use_symmetry && s.symmetric(h.data()) &&
                     s.symmetric(dhdt.data());
   if (half && !s.halfsys_built) {
@@ -337,6 +384,25 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     throw InputError(shape_msg("dh", s.N, s.K1, dh.rows(), dh.cols()));
   if (d_dhdt.rows() != s.N || d_dhdt.cols() != s.K1)
     throw InputError(shape_msg("d_dhdt", s.N, s.K1, d_dhdt.rows(), d_dhdt.cols()));
+  if (s.geo.short_bearing) {
+    // dp = 6μ(z² − L²/4) (ds/h³ − 3 s dh/h⁴); the clipped films take the one-sided mean
+    // where the unclipped pressure vanishes to round-off (as the gumbel branch below).
+    RowMatrixXd dp(s.N, s.K1);
+    double pmax = 0.0;
+    for (int n = 0; n < s.n_nodes; ++n) pmax = std::max(pmax, std::abs(s.pfull[n]));
+    const double ptol = 1e-10 * pmax;
+    for (int n = 0; n < s.n_nodes; ++n) {
+      const double hv = s.h[n], src = s.short_source(s.h.data(), s.hdot.data(), n);
+      const double dsrc = s.short_source(dh.data(), d_dhdt.data(), n);
+      const double v = s.short_factor(n) * (dsrc - 3.0 * src * dh.data()[n] / hv) /
+                       (hv * hv * hv);
+      double wgt = 1.0;
+      if (s.cav != Cavitation::none)
+        wgt = s.pfull[n] > ptol ? 1.0 : (s.pfull[n] < -ptol ? 0.0 : 0.5);
+      dp.data()[n] = wgt * v;
+    }
+    return dp;
+  }
   LinearSystem* S = s.sys;
   if (S->half && !(s.symmetric(dh.data()) && s.symmetric(d_dhdt.data()))) {
     // A non-symmetric perturbation of a symmetric film: factorise the full system with the
@@ -377,7 +443,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
       for (int i = 0; i < S->n_unk; ++i) dpd[S->node_of[i]] = x[i];
       if (S->half)
         for (int j = 0; j < s.N; ++j)
-          for (int k = s.Kh + 1; k < s.K1 - 1; ++k) {
+          for (int k = s.Kh + 1; k < s.mirror_end(); ++k) {
             const int n = j * s.K1 + k;
             dpd[n] = dpd[s.mirror(n)];
           }
@@ -410,7 +476,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
   }
   if (S->half)
     for (int j = 0; j < s.N; ++j)
-      for (int k = s.Kh + 1; k < s.K1 - 1; ++k) {
+      for (int k = s.Kh + 1; k < s.mirror_end(); ++k) {
         const int n = j * s.K1 + k;
         dpd[n] = dpd[s.mirror(n)];
       }

@@ -35,6 +35,24 @@ struct SystemSolver::Film {
   }
 };
 
+bool SystemModel::has_table_mass() const {
+  for (const TableCoupling& t : tables)
+    if (t.M.size()) return true;
+  return false;
+}
+
+Eigen::MatrixXd SystemModel::mass_at(double omega) const {
+  Eigen::MatrixXd out = M;
+  Eigen::Matrix2d Kt, Ct, Mt;
+  for (const TableCoupling& t : tables) {
+    if (!t.M.size()) continue;
+    t.at(omega, Kt, Ct, &Mt);
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) out(t.coords[a], t.coords[b]) += Mt(a, b);
+  }
+  return out;
+}
+
 void SystemModel::validate() const {
   const Eigen::Index nn = M.rows();
   require(nn > 0, "system: expected at least one coordinate");

@@ -12,6 +12,7 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <random>
 #include <sstream>
@@ -64,6 +65,8 @@ struct Ctx {
   Eigen::LLT<Eigen::MatrixXd> Mllt;
   Eigen::VectorXd F0;     // Q − K a
   Eigen::VectorXd g;      // M⁻¹ c_s
+  bool table_mass = false;  // bearing tables with mass coefficients: M = M(Ω)
+  double mass_omega = std::numeric_limits<double>::quiet_NaN();  // Ω of Mllt (table_mass)
   std::string last_error;
   bool contact = false;
   std::string cvode_message;
@@ -133,6 +136,19 @@ Point evaluate(const Ctx& c, double t, const double* y) {
   return P;
 }
 
+// With table mass coefficients the mass matrix is M(Ω) at the current speed: refactor it (and
+// g = M⁻¹ c_s) whenever Ω changes — a function of Ω only, whatever the call order.
+void mass_at_speed(Ctx& c, double omega) {
+  if (!c.table_mass || omega == c.mass_omega) return;
+  const SystemModel& m = c.solver->model();
+  c.Mllt.compute(m.mass_at(omega));
+  if (c.Mllt.info() != Eigen::Success)
+    throw InputError("M: the mass matrix with the bearing tables' mass coefficients at " +
+                     std::to_string(omega / (2 * M_PI)) + " Hz is not positive definite");
+  c.g = c.Mllt.solve(m.chamber);
+  c.mass_omega = omega;
+}
+
 int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
   Ctx& c = *static_cast<Ctx*>(user);
   const Eigen::Index n = c.n;
@@ -143,6 +159,7 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     const TransientInput& in = *c.in;
     const SystemModel& m = c.solver->model();
     const Point P = evaluate(c, t, yp);
+    mass_at_speed(c, P.omega);
     const Eigen::VectorXd r = Y.head(n), v = Y.segment(n, n);
     const Eigen::VectorXd H = c.solver->film_forces(r, v, P.omega);
     Eigen::VectorXd f = c.F0 + P.pc * m.chamber;
@@ -189,6 +206,7 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
     const TransientInput& in = *c.in;
     const SystemModel& m = c.solver->model();
     const Point P = evaluate(c, t, yp);
+    mass_at_speed(c, P.omega);
     const Linearization lin = c.solver->linearize(Y.head(n), Y.segment(n, n), P.omega);
     // SUNDenseMatrix is column-major.
     Eigen::Map<Eigen::MatrixXd> Jm(SUNDenseMatrix_Data(J), N, N);
@@ -308,6 +326,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   require(c.Mllt.info() == Eigen::Success, "M: the mass matrix must be positive definite");
   c.F0 = m.Q - m.K * in.a;
   c.g = c.Mllt.solve(m.chamber);
+  c.table_mass = m.has_table_mass();
   if (K.enabled && K.noise_std.size() && (K.noise_std.array() > 0).any()) {
     c.noise_dt = c.kdisc ? K.sample_time : K.noise_dt;
     const Eigen::Index ns = static_cast<Eigen::Index>(std::ceil(t_end / c.noise_dt)) + 2;

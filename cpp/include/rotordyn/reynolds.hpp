@@ -6,6 +6,11 @@
 // rotation; film thickness h = c − x cos φ − y sin φ (− w for a deformable sleeve);
 //   (1/R²) ∂φ(h³/(12μ) ∂φ p) + ∂z(h³/(12μ) ∂z p) = (ω/2) ∂h/∂φ + ∂h/∂t,
 // p = 0 (gauge) at z = ±L/2, periodic in φ, grooves are Dirichlet lines/bands p = p_groove.
+// End seals (optional, JournalBearingGeometry::end_seal_conductance G_s finite): the ends are
+// flow restrictions instead, a Robin condition −(h³/12μ) ∂p/∂z = ±G_s p at z = ±L/2 (the
+// axial flow per unit circumference leaving the film equals G_s times the pressure above the
+// ambient 0); the end node rows are then unknowns on half cells. G_s = ∞ (default) is the
+// open-ends path above, unchanged.
 //
 // Discretisation: node-centred finite volumes. Nodes φ_j = j·2π/n_circ (j = 0..n_circ-1) and
 // z_k = −L/2 + k·L/n_axial (k = 0..n_axial; k = 0 and n_axial are the bearing ends). Face
@@ -20,6 +25,9 @@
 // use one solver per thread (they share nothing).
 #pragma once
 #include <Eigen/Core>
+
+#include <cmath>
+#include <limits>
 
 #include <memory>
 #include <string>
@@ -55,6 +63,21 @@ struct JournalBearingGeometry {
   double clearance_m = 3e-4;
   double viscosity_pa_s = 0.04;
   std::vector<Groove> grooves;
+  /// End-seal conductance G_s, m²/(Pa·s) (= m³/s of axial leakage per Pa and per metre of
+  /// circumference), the same at both ends: q_z = G_s (p − 0) leaves the film through each
+  /// end. +∞ (default): open ends, p = 0 at z = ±L/2. Must be ≥ 1e-8 c³/(12μL) (a fully
+  /// sealed film without a supply has no pressure level; below this bound the sealed limit
+  /// is reached and the level would be lost in round-off); not with cavitation "jfo".
+  double end_seal_conductance = std::numeric_limits<double>::infinity();
+  /// True when the ends are seals (finite end_seal_conductance).
+  bool end_sealed() const { return std::isfinite(end_seal_conductance); }
+  /// Short-bearing (Ocvirk) approximation: the circumferential pressure flow is neglected, so
+  /// on every node line p = 6μ s (z² − L²/4)/h³ with s = (ω/2) ∂h/∂φ + ∂h/∂t (∂h/∂φ by
+  /// central differences), clipped at 0 for "gumbel" and "reynolds" (the short film's
+  /// Swift–Stieber solution is the clipped one, line by line). Open ends, no grooves, not
+  /// "jfo". Forces integrate it with the same trapezoidal rule (along z: relative error
+  /// 1/n_axial² on the parabola).
+  bool short_bearing = false;
   /// InputError naming the field and its allowed range.
   void validate() const;
 };

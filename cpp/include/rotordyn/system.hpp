@@ -37,8 +37,9 @@ struct FilmCoupling {
 };
 
 /// Linear bearing with speed-dependent coefficients (bearing tables): force on the two
-/// coordinates (x, y) = −K(Ω) q − C(Ω) q̇, K and C interpolated linearly in Ω between
-/// table rows. Outside [omegas.front(), omegas.back()] an InputError names the speed unless
+/// coordinates (x, y) = −K(Ω) q − C(Ω) q̇ − M(Ω) q̈, K, C (and M) interpolated linearly in Ω
+/// between table rows; the mass coefficients enter the system's mass matrix
+/// (SystemModel::mass_at). Outside [omegas.front(), omegas.back()] an InputError names the speed unless
 /// `extrapolate` (then the end intervals are extended linearly).
 struct TableCoupling {
   std::string name;
@@ -46,9 +47,12 @@ struct TableCoupling {
   Eigen::VectorXd omegas;   ///< (n_s,) rad/s, strictly increasing
   RowMatrixXd K;            ///< (n_s, 4): kxx kxy kyx kyy, N/m
   RowMatrixXd C;            ///< (n_s, 4): cxx cxy cyx cyy, N·s/m
+  RowMatrixXd M;            ///< (n_s, 4): mxx mxy myx myy, kg; empty (0 × 0): no mass terms
   bool extrapolate = false;
-  /// K(Ω), C(Ω) (2×2 each). InputError outside the table unless extrapolate.
-  void at(double omega, Eigen::Matrix2d& Kout, Eigen::Matrix2d& Cout) const;
+  /// K(Ω), C(Ω) (2×2 each) and, when Mout is given, M(Ω) (zero without mass terms).
+  /// InputError outside the table unless extrapolate.
+  void at(double omega, Eigen::Matrix2d& Kout, Eigen::Matrix2d& Cout,
+          Eigen::Matrix2d* Mout = nullptr) const;
   void validate(const std::string& where, Eigen::Index n) const;
 };
 
@@ -68,6 +72,10 @@ struct SystemModel {
   std::vector<std::vector<int>> pad_coords;
   Eigen::Index n() const { return M.rows(); }
   void validate() const;  ///< shapes and indices; InputError naming the field
+  /// True when a table carries mass coefficients (the mass matrix then depends on Ω).
+  bool has_table_mass() const;
+  /// The mass matrix at spin speed Ω: M plus the tables' interpolated mass coefficients.
+  Eigen::MatrixXd mass_at(double omega) const;
 };
 
 enum class EquilibriumMethod { Newton, Successive };

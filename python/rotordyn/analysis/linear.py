@@ -63,7 +63,9 @@ def _linear_from(asm: Assembled, e: EquilibriumResult, speed_hz: float, method: 
                                    f"({method}): a degenerate linearisation")
     else:
         KH = DH = np.full((n, n), np.nan)
-    K0, C0, G, M = (np.asarray(x) for x in (m.K, m.C, m.G, m.M))
+    K0, C0, G = (np.asarray(x) for x in (m.K, m.C, m.G))
+    # bearing tables with mass coefficients: M(Ω) at this speed
+    M = np.asarray(m.mass_at(w) if m.has_table_mass() else m.M)
     return LinearModel(speed_hz=float(speed_hz), M=M, D=C0 + w * G + DH, K=K0 + KH, KH=KH,
                        DH=DH, K_structure=K0, C_structure=C0, G=G,
                        chamber=np.asarray(m.chamber), labels=coordinate_labels(asm),

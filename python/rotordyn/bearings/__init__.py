@@ -8,10 +8,12 @@ and also used standalone (forces, coefficient tables over speed)."""
 from rotordyn.bearings._element import CoefficientTable
 from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
 from rotordyn.bearings.ross_io import system_from_ross, to_ross_bearing
-from rotordyn.bearings.squeeze_film import SqueezeFilmDamper, short_damper_orbit_forces
+from rotordyn.bearings.squeeze_film import (SqueezeFilmDamper, end_plate_seal_conductance,
+                                            long_damper_orbit_forces, short_damper_orbit_forces)
 from rotordyn.bearings.table import TableBearing
 from rotordyn.bearings.tilting_pad import TiltingPadBearing
 
 __all__ = ["CoefficientTable", "FixedGeometryBearing", "SqueezeFilmDamper", "TableBearing",
-           "TiltingPadBearing", "short_damper_orbit_forces", "system_from_ross",
+           "TiltingPadBearing", "end_plate_seal_conductance", "long_damper_orbit_forces",
+           "short_damper_orbit_forces", "system_from_ross",
            "to_ross_bearing"]

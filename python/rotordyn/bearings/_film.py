@@ -48,13 +48,17 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
              viscosity_pa_s: float, cavitation: str, start_rad: float, arc_rad: float,
              pivot_rad: float, preload: float, n_circ: int, n_axial: int, coords: list[int],
              extra_shapes=(), supply_pressure_pa: float = 0.0, spin: float = 1.0,
-             base_extra=None) -> PadFilm:
+             base_extra=None, end_seal_conductance: float | None = None,
+             short_bearing: bool = False) -> PadFilm:
     """Film coupling of one pad (or of a full 360° bush when ``arc_rad`` is 2π).
 
     ``extra_shapes``: callables φ (rad, pad nodes) → ∂h/∂r_k for coordinates beyond the
     journal's x, y (pad tilt, pivot displacement), in the order of ``coords[2:]``.
     ``base_extra(phi, z)``: optional (N_pad, n_axial+1) addition to the base film (dam pocket).
     ``n_circ``: nodes per 360° (the pad gets round(n_circ·β/2π) intervals, at least 10).
+    ``end_seal_conductance``: G_s, m²/(Pa·s), of seals at both ends (Robin condition in the
+    Reynolds core); None: open ends (p = 0 at z = ±L/2). ``short_bearing``: the core's
+    short-bearing (Ocvirk) approximation (360° films only).
     """
     Cb = clearance_m
     Cp = Cb / (1.0 - preload)
@@ -87,6 +91,9 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
     g.clearance_m = Cb
     g.viscosity_pa_s = viscosity_pa_s
     g.grooves = grooves
+    if end_seal_conductance is not None:
+        g.end_seal_conductance = float(end_seal_conductance)
+    g.short_bearing = bool(short_bearing)
     f = _core.FilmCoupling()
     f.name = name
     f.geometry = g

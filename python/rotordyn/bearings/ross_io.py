@@ -7,7 +7,8 @@
 * :func:`system_from_ross` — a ROSS ``Rotor`` (uniform shaft elements, disks, linear bearings)
   as a :class:`rotordyn.System`: one section per ROSS shaft element (stations = ROSS nodes),
   materials by (E, G, ρ), disks, and bearings as linear supports (constant coefficients) or
-  :class:`TableBearing` (speed-dependent ones; ROSS frequencies are rad/s, ours Hz).
+  :class:`TableBearing` (speed-dependent ones, or with mass coefficients mxx…myy; ROSS
+  frequencies are rad/s, ours Hz).
 ROSS is imported only inside these functions.
 """
 
@@ -20,6 +21,7 @@ import numpy as np
 from rotordyn.errors import InputError
 
 _COEF = ("kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy")
+_MASS = ("mxx", "mxy", "myx", "myy")
 
 
 def _ross():
@@ -41,12 +43,15 @@ def to_ross_bearing(source, *, n: int, speeds_hz=None, load_n=None, tag: str | N
     """
     ross = _ross()
     from rotordyn.bearings._element import CoefficientTable
-    from rotordyn.bearings.table import C_FIELDS, K_FIELDS, TableBearing
+    from rotordyn.bearings.table import C_FIELDS, K_FIELDS, M_FIELDS, TableBearing
 
+    mass = {}
     if isinstance(source, TableBearing):
         speeds = np.asarray(source.speeds_hz)
         cols = {c: np.asarray(source._matrix((f,)))[:, 0]
                 for c, f in zip(_COEF, K_FIELDS + C_FIELDS)}
+        if source.has_mass:
+            mass = {c: [float(x) for x in getattr(source, f)] for c, f in zip(_MASS, M_FIELDS)}
     else:
         if not isinstance(source, CoefficientTable):
             if speeds_hz is None or load_n is None:
@@ -61,6 +66,7 @@ def to_ross_bearing(source, *, n: int, speeds_hz=None, load_n=None, tag: str | N
         cols = {c: (source.K if c[0] == "k" else source.C)[:, "xy".index(c[1]), "xy".index(c[2])]
                 for c in _COEF}
     kw = {c: [float(x) for x in cols[c]] for c in _COEF}
+    kw.update(mass)
     if len(speeds) == 1:
         kw = {c: val[0] for c, val in kw.items()}
         return ross.BearingElement(n=int(n), tag=tag, **kw)
@@ -70,8 +76,9 @@ def to_ross_bearing(source, *, n: int, speeds_hz=None, load_n=None, tag: str | N
 
 def system_from_ross(rotor, *, name: str = ""):
     """A :class:`rotordyn.System` with ROSS ``rotor``'s shaft, disks and linear bearings
-    (full FE model, no reduction). InputError for what has no counterpart here (tapered
-    elements, point masses, seals with mass coefficients, bearings linking two nodes)."""
+    (full FE model, no reduction). Bearing mass coefficients (mxx…myy) become a
+    TableBearing's mass columns. InputError for what has no counterpart here (tapered
+    elements, point masses, bearings linking two nodes)."""
     from rotordyn.bearings.table import TableBearing
     from rotordyn.model.rotor import Disk, Material, Rotor, ShaftSection, Support
     from rotordyn.model.system import Reduction, System
@@ -101,15 +108,27 @@ def system_from_ross(rotor, *, name: str = ""):
         if getattr(b, "n_link", None) is not None:
             raise InputError(f"rotor.bearing_elements[{j}]: bearings linking two nodes are not "
                              "supported")
-        for mname in ("mxx", "myy", "mxy", "myx"):
-            if np.any(np.asarray(getattr(b, mname, [0.0]), dtype=float) != 0):
-                raise InputError(f"rotor.bearing_elements[{j}].{mname}: mass coefficients are "
-                                 "not supported")
         vals = {c: np.atleast_1d(np.asarray(getattr(b, c), dtype=float)) for c in _COEF}
+        mvals = {c: np.atleast_1d(np.asarray(getattr(b, c, None) if getattr(b, c, None)
+                                             is not None else 0.0, dtype=float)) for c in _MASS}
+        has_mass = any(np.any(v != 0) for v in mvals.values())
         freq = getattr(b, "frequency", None)
         const = freq is None or all(np.all(v == v[0]) for v in vals.values())
         tag = str(getattr(b, "tag", "") or f"ross_bearing{j}")
-        if const:
+        if has_mass:  # mass terms: a table (a linear support has none), constant or by speed
+            f_hz = (np.asarray(freq, dtype=float) / (2 * math.pi) if freq is not None
+                    and np.size(freq) > 1 else np.array([0.0]))
+            ns = f_hz.size
+
+            def col(v, ns=ns):
+                return tuple(float(x) for x in (np.full(ns, v[0]) if v.size == 1 else v))
+
+            bearings.append(TableBearing(
+                station=int(b.n), speeds_hz=tuple(f_hz), name=tag,
+                **{f"{c}_n_per_m" if c[0] == "k" else f"{c}_n_s_per_m": col(vals[c])
+                   for c in _COEF},
+                **{f"{c}_kg": col(mvals[c]) for c in _MASS}))
+        elif const:
             supports.append(Support(station=int(b.n), type="linear", name=tag,
                                     **{f"{c}_n_per_m" if c[0] == "k" else f"{c}_n_s_per_m":
                                        float(vals[c][0]) for c in _COEF}))

@@ -3,8 +3,35 @@ or a centring spring) whirling in an oil film. The film is the plain bearing's f
 Reynolds film with no surface speed (``spin_factor`` = 0): only the squeeze term ∂h/∂t
 acts, so its forces are nonlinear in the transient and linearised (D_H) for the linear
 analyses. ``cavitation``: ``"none"`` is the uncavitated full (2π) film, ``"gumbel"`` the
-π film (negative pressures clipped), ``"reynolds"`` Swift–Stieber. Open ends (p = 0 at
-z = ±L/2); a centring spring ``centring_spring_n_per_m`` acts in parallel (isotropic).
+π film (negative pressures clipped), ``"reynolds"`` Swift–Stieber. A centring spring
+``centring_spring_n_per_m`` acts in parallel (isotropic).
+
+``film_model``: ``"finite"`` (default, the finite-length Reynolds equation above) or
+``"short"``, the short-damper model of DyRoBeS/XLTRC users: the circumferential pressure flow
+is neglected, p = 6μ (∂h/∂t)(z² − L²/4)/h³ node by node (the Reynolds core's
+``short_bearing`` option; clipped at 0 for the π film), for any journal motion — the closed
+forms below are its circular-orbit case, and the finite film tends to it as L/D → 0. Open
+ends only.
+
+Ends: open (p = 0 at z = ±L/2, default) or end seals, ``end_seal_conductance_m3_per_pa_s_per_m``
+= G_s: each end is a flow restriction whose axial leakage per unit circumference equals G_s
+times the film pressure above the ambient (0),
+
+    q_z = −(h³/12μ) ∂p/∂z = ±G_s p   at z = ±L/2          (a Robin condition)
+
+solved in the Reynolds core (end node rows on half cells). G_s → ∞ is the open damper,
+G_s → 0 the fully sealed one, whose pressure no longer varies along z: the long-bearing
+(infinitely long) damper. This is the lumped end-seal model of SFD analyses: end-seal
+leakage proportional to the pressure difference across the seal (as in Marmol & Vance,
+"Squeeze film damper characteristics for gas turbine engines", ASME J. Mech. Des. 100 (1978)
+139–146, and San Andrés' *Squeeze Film Dampers* notes, "end seals"; we worked from secondary
+descriptions, the papers themselves were not available to us). For an end-plate seal (a thin
+annular gap of clearance c_s and axial land length ℓ_s; plane Poiseuille flow per unit
+width) G_s = c_s³/(12 μ ℓ_s): :func:`end_plate_seal_conductance`. A fully sealed film
+(G_s = 0) without a supply has no pressure level, so G_s must be > 0, and at least
+1e-8 c³/(12μL): the long-bearing limit is reached once G_s ≪ c³/(12μL) (to ~1e-5 at 1e-6),
+while far below it the pressure level, set by the seal alone, is lost in round-off (measured:
+a π-film damper's C_eq 0.07 % off at 1e-12, wrong at 1e-15).
 
 Closed forms (short damper, L/D → 0, open ends; circular centred orbit of radius e = εc at
 whirl speed ν): integrating p = (6μ ∂h/∂t / h³)(z² − L²/4) over z and φ,
@@ -15,6 +42,22 @@ whirl speed ν): integrating p = (6μ ∂h/∂t / h³)(z² − L²/4) over z and
 i.e. C_tt = π μ R L³ / (2 c³ (1 − ε²)^{3/2}) for the π film (Vance, *Rotordynamics of
 Turbomachinery*, Wiley 1988, §6; San Andrés, *Squeeze film dampers*, Texas A&M lecture
 notes, eqs. for the short open-ends SFD). ``short_damper_orbit_forces`` evaluates them.
+
+Long damper (L/D → ∞, or fully sealed ends: ∂p/∂z = 0), same orbit, θ = φ − νt measured from
+the minimum film, h = c(1 − ε cos θ), ∂h/∂t = −eν sin θ. The 1-D Reynolds equation
+d/dθ(h³ p') = −12μR² eν sin θ integrates to h³ p' = 12μR² eν cos θ + A; periodicity
+(Sommerfeld integrals J₁ = ∫dθ/(1−ε cos θ)³ = π(2+ε²)/(1−ε²)^{5/2},
+J₂ = ∫cos θ dθ/(1−ε cos θ)³ = 3πε/(1−ε²)^{5/2}) gives A = −12μR² eν·3ε/(2+ε²), and the
+sealed-end limit fixes the level (zero net leakage: mean end pressure 0), so p is odd in θ,
+positive on 0 < θ < π. Forces F = −∫∫ p (cos φ, sin φ) R dφ dz (by parts):
+
+    full film:  F_r = 0,                                   F_t = −24πμR³Lνε / (c²(2+ε²)(1−ε²)^{1/2})
+    π film:     F_r = −24μR³Lνε² / (c²(2+ε²)(1−ε²)),       F_t = −12πμR³Lνε / (c²(2+ε²)(1−ε²)^{1/2})
+
+i.e. C_tt = −F_t/(eν) = 12πμL(R/c)³/((2+ε²)(1−ε²)^{1/2}) for the π film (Vance 1988 §6;
+San Andrés, long SFD; written "12πμRL(R/c)³" in the task text, one R too many: N·s, not
+N·s/m). ``long_damper_orbit_forces`` evaluates them; tests/test_sfd_end_seals.py checks
+them by quadrature of the 1-D pressure.
 """
 
 from __future__ import annotations
@@ -47,6 +90,33 @@ def short_damper_orbit_forces(*, diameter_m, length_m, clearance_m, viscosity_pa
     raise InputError(f"film: expected 'pi' or 'full', got {film!r}")
 
 
+def long_damper_orbit_forces(*, diameter_m, length_m, clearance_m, viscosity_pa_s,
+                             eccentricity_ratio, whirl_hz, film: str = "pi"):
+    """(F_r, F_t), N: radial and tangential film force on a long (or fully end-sealed)
+    damper journal in a circular centred orbit (closed form, module docstring)."""
+    R, L, c, mu = 0.5 * diameter_m, length_m, clearance_m, viscosity_pa_s
+    eps = v.in_range("eccentricity_ratio", eccentricity_ratio, 0.0, 1.0, hi_open=True)
+    nu = 2 * math.pi * v.finite("whirl_hz", whirl_hz)
+    a = mu * R ** 3 * L * nu * eps / (c ** 2 * (2 + eps ** 2))
+    ft = -24 * math.pi * a / math.sqrt(1 - eps ** 2)
+    if film == "full":
+        return 0.0, ft
+    if film == "pi":
+        return -24 * a * eps / (1 - eps ** 2), 0.5 * ft
+    raise InputError(f"film: expected 'pi' or 'full', got {film!r}")
+
+
+def end_plate_seal_conductance(*, gap_m: float, land_length_m: float,
+                               viscosity_pa_s: float) -> float:
+    """G_s = c_s³/(12 μ ℓ_s), m²/(Pa·s): end-seal conductance of an end plate leaving an
+    annular gap c_s over a land of axial length ℓ_s (plane Poiseuille flow, per unit
+    circumference), for ``end_seal_conductance_m3_per_pa_s_per_m``."""
+    cs = v.positive("gap_m", gap_m)
+    ls = v.positive("land_length_m", land_length_m)
+    mu = v.positive("viscosity_pa_s", viscosity_pa_s)
+    return cs ** 3 / (12.0 * mu * ls)
+
+
 @dataclass(frozen=True, slots=True)
 class SqueezeFilmDamper:
     """Squeeze-film damper at ``station`` (module docstring)."""
@@ -63,6 +133,8 @@ class SqueezeFilmDamper:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
+    end_seal_conductance_m3_per_pa_s_per_m: float | None = None
+    film_model: str = "finite"
 
     def __post_init__(self):
         self.check("squeeze_film_damper", None)
@@ -73,13 +145,33 @@ class SqueezeFilmDamper:
             raise InputError(f"{where}.cavitation: 'jfo' needs a supply groove; use 'none' (full "
                              "film), 'gumbel' (π film) or 'reynolds'")
         v.non_negative(f"{where}.centring_spring_n_per_m", self.centring_spring_n_per_m)
+        v.choice(f"{where}.film_model", self.film_model, ("finite", "short"))
+        g = self.end_seal_conductance_m3_per_pa_s_per_m
+        if g is not None and self.film_model == "short":
+            raise InputError(f"{where}.end_seal_conductance_m3_per_pa_s_per_m: the short "
+                             "damper model has open ends (use film_model = 'finite' with seals)")
+        if g is not None:
+            f = f"{where}.end_seal_conductance_m3_per_pa_s_per_m"
+            if isinstance(g, bool) or not isinstance(g, (int, float)) or not math.isfinite(g) \
+                    or g <= 0:
+                raise InputError(f"{f}: expected a finite seal conductance > 0 m²/(Pa·s) (omit "
+                                 f"it for open ends; a fully sealed film without a supply has "
+                                 f"no pressure level: use a small value), got {g!r}")
+            g_min = 1e-8 * self.clearance_m ** 3 / (12 * self.viscosity_pa_s * self.length_m)
+            if g < g_min:
+                raise InputError(f"{f}: expected >= 1e-8 clearance_m³/(12 viscosity_pa_s "
+                                 f"length_m) = {g_min:.6g} m²/(Pa·s) (tighter is the fully "
+                                 f"sealed limit; its pressure level would be lost in "
+                                 f"round-off), got {g!r}")
 
     def films(self, jx: int, jy: int, name: str) -> list:
         return [pad_film(name=name, diameter_m=self.diameter_m, length_m=self.length_m,
                          clearance_m=self.clearance_m, viscosity_pa_s=self.viscosity_pa_s,
                          cavitation=self.cavitation, start_rad=0.0, arc_rad=2 * math.pi,
                          pivot_rad=0.0, preload=0.0, n_circ=self.n_circ, n_axial=self.n_axial,
-                         coords=[jx, jy], spin=0.0)]
+                         coords=[jx, jy], spin=0.0,
+                         end_seal_conductance=self.end_seal_conductance_m3_per_pa_s_per_m,
+                         short_bearing=self.film_model == "short")]
 
     def _spring(self, jx: int, jy: int, name: str) -> list:
         if self.centring_spring_n_per_m == 0.0:

@@ -1,6 +1,10 @@
 """Linear bearing with speed-dependent coefficients (a bearing table from a bearing code or a
-test rig): K(Ω) and C(Ω) interpolated linearly in speed between the rows (in C++, so the
-transient with a varying speed sees them too). A speed outside the table is an
+test rig): K(Ω), C(Ω) and optionally the mass coefficients M(Ω) (``mxx_kg`` … ``myy_kg``,
+all four or none) interpolated linearly in speed between the rows (in C++, so the transient
+with a varying speed sees them too). The mass coefficients (force −M(Ω) q̈, e.g. the fluid
+inertia of a damper or seal) enter the system's mass matrix at the bearing's station at the
+analysis speed: linearisation, stability, Campbell, unbalance response, sweeps, and in the
+transient the mass matrix at the current speed (refactored when the speed changes). A speed outside the table is an
 ``InputError`` naming it, unless ``extrapolate=True`` (the end intervals are then extended).
 
 Linear interpolation error: |e| ≤ h²/8 · max|K''| per interval of width h; a table sampled
@@ -23,13 +27,15 @@ from rotordyn.errors import InputError
 
 K_FIELDS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m")
 C_FIELDS = ("cxx_n_s_per_m", "cxy_n_s_per_m", "cyx_n_s_per_m", "cyy_n_s_per_m")
+M_FIELDS = ("mxx_kg", "mxy_kg", "myx_kg", "myy_kg")
 
 
 @dataclass(frozen=True, slots=True)
 class TableBearing:
     """Linear bearing at ``station`` whose 2×2 stiffness (N/m) and damping (N·s/m) are
     tabulated against ``speeds_hz`` (strictly increasing); force = −K(Ω) q − C(Ω) q̇ with q the
-    journal's displacement from its housing (configuration ``config_ax_m``/``config_ay_m``)."""
+    journal's displacement from its housing (configuration ``config_ax_m``/``config_ay_m``);
+    with mass coefficients (kg, all four or none) − M(Ω) q̈ too."""
 
     station: int
     speeds_hz: tuple[float, ...]
@@ -45,9 +51,13 @@ class TableBearing:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
+    mxx_kg: tuple[float, ...] = ()
+    mxy_kg: tuple[float, ...] = ()
+    myx_kg: tuple[float, ...] = ()
+    myy_kg: tuple[float, ...] = ()
 
     def __post_init__(self):
-        for f in ("speeds_hz",) + K_FIELDS + C_FIELDS:
+        for f in ("speeds_hz",) + K_FIELDS + C_FIELDS + M_FIELDS:
             val = getattr(self, f)
             if isinstance(val, (str, bytes)) or not hasattr(val, "__iter__"):
                 raise InputError(f"{f}: expected a sequence of numbers, got {val!r}")
@@ -67,7 +77,13 @@ class TableBearing:
             i = int(bad[0]) + 1
             raise InputError(f"{where}.speeds_hz: expected strictly increasing speeds, got "
                              f"{s[i]:g} Hz after {s[i - 1]:g} Hz (row {i})")
-        for f in K_FIELDS + C_FIELDS:
+        given = [f for f in M_FIELDS if getattr(self, f)]
+        if given and len(given) < 4:
+            missing = [f for f in M_FIELDS if f not in given]
+            raise InputError(f"{where}.{', '.join(missing)}: mass coefficients come as all four "
+                             f"(mxx_kg, mxy_kg, myx_kg, myy_kg) or none; got only "
+                             f"{', '.join(given)}")
+        for f in K_FIELDS + C_FIELDS + M_FIELDS:
             val = getattr(self, f)
             if val and len(val) != s.size:
                 raise InputError(f"{where}.{f}: expected {s.size} values (one per speed) or none,"
@@ -92,8 +108,15 @@ class TableBearing:
         t.omegas = 2 * math.pi * np.asarray(self.speeds_hz)
         t.K = np.ascontiguousarray(self._matrix(K_FIELDS))
         t.C = np.ascontiguousarray(self._matrix(C_FIELDS))
+        if self.has_mass:
+            t.M = np.ascontiguousarray(self._matrix(M_FIELDS))
         t.extrapolate = bool(self.extrapolate)
         return t
+
+    @property
+    def has_mass(self) -> bool:
+        """True when the table carries mass coefficients."""
+        return bool(self.mxx_kg)
 
     def check_speed(self, speed_hz: float, where: str = "speed_hz") -> None:
         """InputError naming the speed when it is outside the table (and not extrapolating)."""
@@ -111,6 +134,12 @@ class TableBearing:
         K, C = self.to_core(0, 1, self.name).at(2 * math.pi * f)
         return np.asarray(K), np.asarray(C)
 
+    def mass(self, speed_hz: float) -> np.ndarray:
+        """M (2×2, kg) at ``speed_hz`` (zero without mass coefficients)."""
+        f = v.finite("speed_hz", speed_hz)
+        self.check_speed(f)
+        return np.asarray(self.to_core(0, 1, self.name).mass_at(2 * math.pi * f))
+
     def system_parts(self, jx: int, jy: int, first_extra: int, name: str):
         from rotordyn.bearings._film import SystemParts
 
@@ -121,7 +150,8 @@ class TableBearing:
     def from_csv(cls, path, *, station: int, extrapolate: bool = False, name: str = "",
                  config_ax_m: float = 0.0, config_ay_m: float = 0.0) -> "TableBearing":
         """Read a table: a header row with ``speed_hz`` and any of ``kxx_n_per_m`` …
-        ``cyy_n_s_per_m`` (other columns, e.g. ``status`` from :meth:`CoefficientTable.to_csv`,
+        ``cyy_n_s_per_m`` (and the mass columns ``mxx_kg`` … ``myy_kg``: all four or none;
+        other columns, e.g. ``status`` from :meth:`CoefficientTable.to_csv`,
         are ignored; rows whose status is not ``ok`` are an error)."""
         p = Path(path)
         if not p.is_file():
@@ -131,7 +161,7 @@ class TableBearing:
         if not rows or "speed_hz" not in rows[0]:
             raise InputError(f"csv: {str(p)!r} needs a header row with a speed_hz column")
         cols = {}
-        for f in ("speed_hz",) + K_FIELDS + C_FIELDS:
+        for f in ("speed_hz",) + K_FIELDS + C_FIELDS + M_FIELDS:
             if f in rows[0]:
                 try:
                     cols[f] = tuple(float(r[f]) for r in rows)
@@ -143,7 +173,7 @@ class TableBearing:
         speeds = cols.pop("speed_hz")
         return cls(station=station, speeds_hz=speeds, extrapolate=extrapolate, name=name,
                    config_ax_m=config_ax_m, config_ay_m=config_ay_m,
-                   **{f: cols.get(f, ()) for f in K_FIELDS + C_FIELDS
+                   **{f: cols.get(f, ()) for f in K_FIELDS + C_FIELDS + M_FIELDS
                       if f not in ("kxx_n_per_m", "kyy_n_per_m")},
                    kxx_n_per_m=cols.get("kxx_n_per_m", ()), kyy_n_per_m=cols.get("kyy_n_per_m", ()))
 

@@ -143,7 +143,8 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
             r0 = np.asarray(e.r)
             om = hz_to_rad_s(f)
             lin = asm.solver.linearize(r0, np.zeros(asm.n), om)
-            Z = (K0 + np.asarray(lin.KH)) - om**2 * M + 1j * om * (C0 + om * G
+            Mw = np.asarray(m.mass_at(om)) if m.has_table_mass() else M  # table masses
+            Z = (K0 + np.asarray(lin.KH)) - om**2 * Mw + 1j * om * (C0 + om * G
                                                                     + np.asarray(lin.DH))
             q = np.linalg.solve(Z, om**2 * F1)
             for j, Co in enumerate(Cout):

@@ -224,6 +224,8 @@ def _eigen(asm, e, f, opts, n_modes):
 
         lin = asm.solver.linearize_fd(r, w, FD_REL_STEP)
     M, C0, G, K0 = asm.mats
+    if asm.model.has_table_mass():  # bearing tables' mass coefficients: M(Ω)
+        M = np.asarray(asm.model.mass_at(w))
     D = C0 + w * G + np.asarray(lin.DH)
     K = K0 + np.asarray(lin.KH)
     if not (np.all(np.isfinite(K)) and np.all(np.isfinite(D))):
@@ -320,14 +322,16 @@ def _eq_rows(job, variants, chunk_id, lo, hi, rows):
             continue
         r = np.asarray(e.r)
         r_prev = r if e.status == "ok" else None
-        hmin = np.asarray(e.h_min)
+        # per bearing (a tilting pad has a film per pad, a table bearing none: NaN)
+        hmin = asm.bearing_h_min(np.asarray(e.h_min))
         for k, bc in enumerate(asm.bearings):
             ok = e.status in LINEARISABLE
             x = r[bc.jx] if ok else math.nan
             y = r[bc.jy] if ok else math.nan
+            c = bc.clearance_m if bc.clearance_m > 0 else math.nan  # a table: no clearance
             rows.append({**row, "bearing": bc.name, "journal_x_m": x, "journal_y_m": y,
-                         "x_over_c": x / bc.clearance_m, "y_over_c": y / bc.clearance_m,
-                         "h_min_m": float(hmin[k]) if ok and k < len(hmin) else math.nan,
+                         "x_over_c": x / c, "y_over_c": y / c,
+                         "h_min_m": float(hmin[k]) if ok else math.nan,
                          "iterations": int(e.iterations), "residual": float(e.residual),
                          "status": e.status if e.status in STATUS else "error",
                          "message": e.message})
