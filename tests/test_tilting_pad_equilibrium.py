@@ -20,6 +20,8 @@ Checks (no published table: the checks are the equations themselves and independ
   at ±45° under the load: Σ n_y² = 1) on top of the rigid-pivot film deflection, and the
   statically condensed K_yy tends to 1/(1/K_rigid + 1/k_p): both within 1 %.
 * Zero load: the journal stays centred (4- and 5-pad bearings with preload).
+* Sweeps: the sweep worker's equilibrium equals ``rotordyn.equilibrium`` (1e-9) over tilting-
+  pad preload and pivot offset (both now start from the C++ pad assembly).
 * Upper pads under a heavy load: each pad is either pressured with a restoring tilt stiffness
   or, when no tilt gives it pressure, at the documented defined position (the boundary of
   its pressure-free set: pressure-free there, pressured just towards the loaded side).
