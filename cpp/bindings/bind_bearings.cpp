@@ -43,7 +43,9 @@ void bind_bearings(py::module_& m) {
       .def_readonly("force", &OperatingPointTable::force)
       .def_readonly("status", &OperatingPointTable::status)
       .def_readonly("message", &OperatingPointTable::message)
-      .def_readonly("iterations", &OperatingPointTable::iterations);
+      .def_readonly("iterations", &OperatingPointTable::iterations)
+      .def_readonly("reynolds_solves", &OperatingPointTable::reynolds_solves)
+      .def_readonly("path", &OperatingPointTable::path);
 
   m.def("operating_points", &operating_points, py::arg("model"), py::arg("omegas"),
         py::arg("a"), py::arg("r0"), py::arg("options"), py::arg("n_threads") = 1,

@@ -34,6 +34,7 @@ void bind_system(py::module_& m) {
       .def_readwrite("chamber", &SystemModel::chamber)
       .def_readwrite("films", &SystemModel::films)
       .def_readwrite("tables", &SystemModel::tables)
+      .def_readwrite("pad_coords", &SystemModel::pad_coords)
       .def("validate", &SystemModel::validate);
 
   py::class_<EquilibriumOptions>(m, "EquilibriumOptions")
@@ -61,7 +62,9 @@ void bind_system(py::module_& m) {
       .def_readonly("load_scale", &EquilibriumResult::load_scale)
       .def_readonly("pm", &EquilibriumResult::pm)
       .def_readonly("status", &EquilibriumResult::status)
-      .def_readonly("message", &EquilibriumResult::message);
+      .def_readonly("message", &EquilibriumResult::message)
+      .def_readonly("path", &EquilibriumResult::path)
+      .def_readonly("unloaded_pads", &EquilibriumResult::unloaded_pads);
 
   py::class_<Linearization>(m, "Linearization")
       .def_readonly("KH", &Linearization::KH)

@@ -124,6 +124,8 @@ OperatingPointTable operating_points(const SystemModel& model, const Eigen::Vect
   out.status.assign(static_cast<std::size_t>(ns), "error");
   out.message.assign(static_cast<std::size_t>(ns), "");
   out.iterations = Eigen::VectorXi::Zero(ns);
+  out.reynolds_solves = Eigen::VectorXi::Zero(ns);
+  out.path.assign(static_cast<std::size_t>(ns), "");
   if (n_threads <= 0) n_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   n_threads = static_cast<int>(std::min<Eigen::Index>(n_threads, std::max<Eigen::Index>(ns, 1)));
 
@@ -132,10 +134,18 @@ OperatingPointTable operating_points(const SystemModel& model, const Eigen::Vect
     for (Eigen::Index i = begin; i < end; ++i) {
       const auto si = static_cast<std::size_t>(i);
       try {
-        const Eigen::VectorXd start =
-            pad_penalty.size() ? homotopy_start(model, omegas(i), 0.0, a, r0, options, pad_penalty)
-                               : r0;
-        const EquilibriumResult e = solver.equilibrium(omegas(i), 0.0, a, start, options);
+        // With pads the equilibrium starts from the pad assembly (pad_equilibrium.cpp); the
+        // tilt homotopy is the fallback when that path fails.
+        EquilibriumResult e = solver.equilibrium(omegas(i), 0.0, a, r0, options);
+        const bool converged = e.status == "ok" || e.status == "contact";
+        if (pad_penalty.size() && (!converged || e.path != "pad_assembly")) {
+          const Eigen::VectorXd start =
+              homotopy_start(model, omegas(i), 0.0, a, r0, options, pad_penalty);
+          e = solver.equilibrium(omegas(i), 0.0, a, start, options);
+          e.path = "homotopy";
+        }
+        out.path[si] = e.path;
+        out.reynolds_solves(i) = e.reynolds_solves;
         out.r.row(i) = e.r.transpose();
         out.iterations(i) = e.iterations;
         out.status[si] = e.status;

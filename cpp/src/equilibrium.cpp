@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "rotordyn/errors.hpp"
 #include "rotordyn/system.hpp"
@@ -21,6 +22,49 @@ EquilibriumMethod parse_equilibrium_method(const std::string& name) {
 
 namespace {
 double inf_norm(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
+
+/// Coordinates with a nonzero row or column in J (an unloaded tilting pad's tilt has neither:
+/// a pressure-free film and no tilt stiffness). Empty when all are.
+std::vector<Eigen::Index> inactive_coordinates(const Eigen::MatrixXd& J) {
+  std::vector<Eigen::Index> out;
+  for (Eigen::Index i = 0; i < J.rows(); ++i)
+    if (J.row(i).cwiseAbs().maxCoeff() == 0.0 && J.col(i).cwiseAbs().maxCoeff() == 0.0)
+      out.push_back(i);
+  return out;
+}
+
+/// J restricted to the active coordinates (all but `off`).
+Eigen::MatrixXd active_block(const Eigen::MatrixXd& J, const std::vector<Eigen::Index>& off,
+                             std::vector<Eigen::Index>& on) {
+  on.clear();
+  for (Eigen::Index i = 0, k = 0; i < J.rows(); ++i) {
+    if (k < static_cast<Eigen::Index>(off.size()) && off[static_cast<std::size_t>(k)] == i) {
+      ++k;
+      continue;
+    }
+    on.push_back(i);
+  }
+  Eigen::MatrixXd A(static_cast<Eigen::Index>(on.size()), static_cast<Eigen::Index>(on.size()));
+  for (std::size_t a = 0; a < on.size(); ++a)
+    for (std::size_t b = 0; b < on.size(); ++b)
+      A(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = J(on[a], on[b]);
+  return A;
+}
+
+/// Newton step −J⁻¹R; coordinates with a zero row and column in J (and R) stay put.
+Eigen::VectorXd newton_step(const Eigen::MatrixXd& J, const Eigen::VectorXd& R) {
+  const std::vector<Eigen::Index> off = inactive_coordinates(J);
+  if (off.empty()) return J.partialPivLu().solve(-R);
+  std::vector<Eigen::Index> on;
+  const Eigen::MatrixXd A = active_block(J, off, on);
+  if (on.empty()) return Eigen::VectorXd::Constant(J.rows(), NAN);  // J = 0: singular
+  Eigen::VectorXd Ra(static_cast<Eigen::Index>(on.size()));
+  for (std::size_t a = 0; a < on.size(); ++a) Ra(static_cast<Eigen::Index>(a)) = R(on[a]);
+  const Eigen::VectorXd da = A.partialPivLu().solve(-Ra);
+  Eigen::VectorXd dr = Eigen::VectorXd::Zero(J.rows());
+  for (std::size_t a = 0; a < on.size(); ++a) dr(on[a]) = da(static_cast<Eigen::Index>(a));
+  return dr;
+}
 }  // namespace
 
 EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen::VectorXd& a,
@@ -44,6 +88,18 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   out.load_scale = std::max({inf_norm(model_.Q), inf_norm(Ka), inf_norm(pc * model_.chamber),
                              1e-12});
   Eigen::VectorXd r = r0.size() ? r0 : zero;
+  if (!pads_.empty()) {
+    // With tilting pads the films carry force even without a load (preloaded pads): the
+    // residual scale is at least 1e-3 of the largest film's Sommerfeld load μ|Ω s| R L (R/C)²,
+    // so an unloaded bearing (centred journal) has a reachable tolerance.
+    double fs = 0.0;
+    for (const FilmCoupling& f : model_.films) {
+      const double R = 0.5 * f.geometry.diameter_m, C = f.geometry.clearance_m;
+      fs = std::max(fs, f.geometry.viscosity_pa_s * std::abs(omega * f.spin_factor) * R *
+                            f.geometry.length_m * (R / C) * (R / C));
+    }
+    out.load_scale = std::max(out.load_scale, 1e-3 * fs);
+  }
 
   auto residual = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& H) {
     return Eigen::VectorXd(model_.K * rr - H - F);
@@ -112,10 +168,13 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
             // a very stiff pivot beside a soft film) the step is round-off amplified, not
             // removed, and the tolerance-converged point is kept.
             if (J.rows() > 200) return;
-            const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(J).singularValues();
+            std::vector<Eigen::Index> on;
+            const Eigen::MatrixXd Ja = active_block(J, inactive_coordinates(J), on);
+            if (on.empty()) return;  // J = 0: nothing to polish
+            const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(Ja).singularValues();
             if (!(sv.size() > 0 && sv(sv.size() - 1) > 1e-6 * sv(0))) return;
           }
-          const Eigen::VectorXd dr = J.partialPivLu().solve(-R);
+          const Eigen::VectorXd dr = newton_step(J, R);
           // Only a small correction (a well-conditioned Jacobian; in a nearly flat direction
           // the step would amplify round-off instead of removing it), and only while the
           // residual falls by half or more.
@@ -157,7 +216,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
           return true;
         }
         linearize_last_solve(false, KH, nullptr);  // the films' last solve is at rs
-        const Eigen::VectorXd dr = (model_.K + KH).partialPivLu().solve(-R);
+        const Eigen::VectorXd dr = newton_step(model_.K + KH, R);
         if (!dr.allFinite()) {
           why = "Newton: singular Jacobian K + K_H";
           return false;
@@ -201,7 +260,28 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     double res = NAN;
     std::string why;
     Eigen::VectorXd rn = r;
-    if (newton(F, rn, opt.max_iter, res, why, true)) return finish(rn, H, res);
+    out.path = "newton";
+    std::string why_pads;
+    if (!pads_.empty()) {
+      // Tilting pads: pad assembly first (each pad on its loaded branch, reduced Newton on
+      // the rest; pad_equilibrium.cpp), then the full Newton below finishes and polishes.
+      Eigen::VectorXd rp = r;
+      int it = 0, unloaded = 0;
+      if (pad_assembly(omega, F, out.load_scale, opt.tol, opt.max_iter, rp, it, unloaded,
+                       why_pads)) {
+        rn = rp;
+        out.path = "pad_assembly";
+        out.unloaded_pads = unloaded;
+      }
+      out.iterations += it;
+    }
+    if (newton(F, rn, opt.max_iter, res, why, true)) {
+      if (!why_pads.empty() && out.path != "pad_assembly")
+        out.message = why_pads + "; plain Newton from the start converged";
+      return finish(rn, H, res);
+    }
+    if (!why_pads.empty()) why = why_pads + "; " + why;
+    out.path = "load_continuation";
     // Fallback: continuation in the load and configuration, F(λ) = λ F from the concentric,
     // undeformed state (the solution at λ = 0), with adaptive steps.
     Eigen::VectorXd rc = zero;
@@ -235,6 +315,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   }
 
   // Successive substitution, eq. 16: (1 + P_m) K r_{i+1} = P_m K r_i + H(r_i) + F.
+  out.path = "successive";
   Eigen::PartialPivLU<Eigen::MatrixXd> Klu(model_.K);
   const double rc = 1.0 / (model_.K.cwiseAbs().rowwise().sum().maxCoeff() *
                            Klu.inverse().cwiseAbs().rowwise().sum().maxCoeff());

@@ -13,6 +13,10 @@ struct SystemSolver::Film {
   ReynoldsSolver solver;
   Eigen::VectorXd wz;  ///< trapezoid weights along z times R dφ dz, (n_axial + 1,)
   RowMatrixXd h, dhdt, p;
+  // the inputs of the last solve (its pressures and factorisation are reused when unchanged)
+  bool valid = false;
+  Eigen::VectorXd last_rc, last_vc;
+  double last_w = 0.0;
   Film(const FilmCoupling& f)
       : solver(f.geometry, f.grid, f.cavitation),
         h(f.grid.n_circ, f.grid.n_axial + 1),
@@ -80,6 +84,41 @@ void SystemModel::validate() const {
   }
   for (std::size_t i = 0; i < tables.size(); ++i)
     tables[i].validate("tables[" + std::to_string(i) + "]", nn);
+  std::vector<int> group(static_cast<std::size_t>(nn), -1);
+  for (std::size_t g = 0; g < pad_coords.size(); ++g) {
+    const std::string w = "pad_coords[" + std::to_string(g) + "]";
+    const auto& pc = pad_coords[g];
+    require(pc.size() == 1 || pc.size() == 2,
+            w + ": expected 1 (tilt) or 2 (tilt, pivot) coordinates, got " +
+                std::to_string(pc.size()));
+    int owner = -1;
+    for (int c : pc) {
+      require(c >= 0 && c < nn, w + ": expected indices in [0, " + std::to_string(nn - 1) +
+                                    "], got " + std::to_string(c));
+      require(group[static_cast<std::size_t>(c)] < 0,
+              w + ": coordinate " + std::to_string(c) + " is in two pads");
+      group[static_cast<std::size_t>(c)] = static_cast<int>(g);
+      for (std::size_t i = 0; i < films.size(); ++i) {
+        const auto& fc = films[i].coords;
+        if (std::find(fc.begin(), fc.end(), c) == fc.end()) continue;
+        require(owner < 0 || owner == static_cast<int>(i),
+                w + ": coordinate " + std::to_string(c) + " enters more than one film");
+        owner = static_cast<int>(i);
+      }
+      for (const auto& t : tables)
+        require(t.coords[0] != c && t.coords[1] != c,
+                w + ": coordinate " + std::to_string(c) + " enters a table bearing");
+    }
+    require(owner >= 0, w + ": the pad's coordinates enter no film");
+    if (pc.size() == 2)
+      require(K(pc[1], pc[1]) > 0, w + ": the pivot coordinate needs K(u, u) > 0");
+  }
+  for (Eigen::Index a = 0; a < nn; ++a)
+    for (Eigen::Index b = 0; b < nn; ++b) {
+      const int ga = group[static_cast<std::size_t>(a)], gb = group[static_cast<std::size_t>(b)];
+      require(ga < 0 || gb < 0 || ga == gb || K(a, b) == 0.0,
+              "pad_coords: K couples pads " + std::to_string(ga) + " and " + std::to_string(gb));
+    }
 }
 
 SystemSolver::SystemSolver(SystemModel model) : model_(std::move(model)) {
@@ -87,6 +126,19 @@ SystemSolver::SystemSolver(SystemModel model) : model_(std::move(model)) {
   for (const auto& f : model_.films) films_.push_back(std::make_unique<Film>(f));
   h_min_.assign(films_.size(), 0.0);
   h_min_angle_.assign(films_.size(), 0.0);
+  for (const auto& pc : model_.pad_coords) {
+    PadGroup g;
+    g.coords = pc;
+    for (std::size_t i = 0; i < model_.films.size(); ++i) {
+      const auto& fc = model_.films[i].coords;
+      const auto it = std::find(fc.begin(), fc.end(), pc[0]);
+      if (it == fc.end()) continue;
+      g.film = i;
+      for (int c : pc)
+        g.local.push_back(static_cast<int>(std::find(fc.begin(), fc.end(), c) - fc.begin()));
+    }
+    pads_.push_back(std::move(g));
+  }
 }
 SystemSolver::~SystemSolver() = default;
 SystemSolver::SystemSolver(SystemSolver&&) noexcept = default;
@@ -110,33 +162,12 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
   solved_ = false;  // stays false if a film throws (contact) below
   for (std::size_t i = 0; i < films_.size(); ++i) {
     const FilmCoupling& fc = model_.films[i];
-    Film& f = *films_[i];
     Eigen::VectorXd rc(fc.coords.size()), vc(fc.coords.size());
     for (std::size_t k = 0; k < fc.coords.size(); ++k) {
       rc(k) = r(fc.coords[k]);
       vc(k) = rdot(fc.coords[k]);
     }
-    const int K1 = fc.grid.n_axial + 1;
-    const Eigen::VectorXd sphi = fc.shape * rc;
-    const Eigen::VectorXd vphi = fc.shape * vc;
-    if (fc.base_h.size() == 0)
-      f.h = (sphi.array() + fc.geometry.clearance_m).matrix().replicate(1, K1);
-    else if (fc.base_h.cols() == 1)
-      f.h = (fc.base_h.col(0) + sphi).replicate(1, K1);
-    else
-      f.h = fc.base_h + sphi.replicate(1, K1);
-    if (!(f.h.minCoeff() > 0.0) || !f.h.allFinite()) {
-      std::ostringstream os;
-      os << "film '" << fc.name << "': contact, the film thickness reaches " << f.h.minCoeff()
-         << " m (clearance " << fc.geometry.clearance_m << " m)";
-      throw ContactError(os.str());
-    }
-    f.dhdt = vphi.replicate(1, K1);
-    const FilmSolution& s = f.solver.solve(f.h, f.dhdt, fc.spin_factor * omega);
-    ++solves_;
-    f.p = s.p_pa;
-    h_min_[i] = s.h_min_m;
-    h_min_angle_[i] = s.h_min_angle_deg;
+    solve_one(i, rc, vc, omega);
   }
   solved_ = true;
   last_r_ = r;
@@ -144,8 +175,66 @@ void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& 
   last_omega_ = omega;
 }
 
+void SystemSolver::solve_one(std::size_t i, const Eigen::VectorXd& rc,
+                             const Eigen::VectorXd& vc, double omega) {
+  const FilmCoupling& fc = model_.films[i];
+  Film& f = *films_[i];
+  if (f.valid && omega == f.last_w && rc == f.last_rc && vc == f.last_vc) return;
+  f.valid = false;
+  const int K1 = fc.grid.n_axial + 1;
+  const Eigen::VectorXd sphi = fc.shape * rc;
+  const Eigen::VectorXd vphi = fc.shape * vc;
+  if (fc.base_h.size() == 0)
+    f.h = (sphi.array() + fc.geometry.clearance_m).matrix().replicate(1, K1);
+  else if (fc.base_h.cols() == 1)
+    f.h = (fc.base_h.col(0) + sphi).replicate(1, K1);
+  else
+    f.h = fc.base_h + sphi.replicate(1, K1);
+  if (!(f.h.minCoeff() > 0.0) || !f.h.allFinite()) {
+    std::ostringstream os;
+    os << "film '" << fc.name << "': contact, the film thickness reaches " << f.h.minCoeff()
+       << " m (clearance " << fc.geometry.clearance_m << " m)";
+    throw ContactError(os.str());
+  }
+  f.dhdt = vphi.replicate(1, K1);
+  const FilmSolution& s = f.solver.solve(f.h, f.dhdt, fc.spin_factor * omega);
+  ++solves_;
+  f.p = s.p_pa;
+  h_min_[i] = s.h_min_m;
+  h_min_angle_[i] = s.h_min_angle_deg;
+  f.valid = true;
+  f.last_rc = rc;
+  f.last_vc = vc;
+  f.last_w = omega;
+}
+
+Eigen::VectorXd SystemSolver::solve_film(std::size_t i, const Eigen::VectorXd& rc,
+                                         double omega) {
+  solved_ = false;  // the films no longer all sit at last_r_
+  solve_one(i, rc, Eigen::VectorXd::Zero(rc.size()), omega);
+  return films_[i]->integrate(films_[i]->p, model_.films[i].shape);
+}
+
+Eigen::MatrixXd SystemSolver::film_stiffness(std::size_t i, const std::vector<int>& cols) {
+  const FilmCoupling& fc = model_.films[i];
+  Film& f = *films_[i];
+  const int K1 = fc.grid.n_axial + 1;
+  const auto nc = static_cast<Eigen::Index>(fc.coords.size());
+  const RowMatrixXd zero = RowMatrixXd::Zero(fc.grid.n_circ, K1);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(nc, nc);
+  for (const int j : cols) {
+    const RowMatrixXd dh = fc.shape.col(j).replicate(1, K1);
+    out.col(j) = -f.integrate(f.solver.linearize(dh, zero), fc.shape);
+  }
+  return out;
+}
+
 void SystemSolver::set_film_continuation(bool on) {
-  for (auto& f : films_) f->solver.set_continuation(on);
+  for (auto& f : films_) {
+    f->solver.set_continuation(on);
+    f->valid = false;
+  }
+  solved_ = false;
 }
 
 std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {

@@ -19,13 +19,17 @@ namespace rotordyn {
 struct OperatingPointTable {
   RowMatrixXd r, KH, DH, force;
   std::vector<std::string> status, message;
+  std::vector<std::string> path;  ///< EquilibriumResult::path per speed ("homotopy": fallback)
   Eigen::VectorXi iterations;
+  Eigen::VectorXi reynolds_solves;  ///< equilibrium's Reynolds solves per speed (fallback too:
+                                    ///< only the final equilibrium's)
 };
 
 /// Equilibrium (with r0 as the start at every speed: results do not depend on the order or the
 /// split over threads) and perturbation linearisation at each Ω in `omegas` (rad/s).
 /// n_threads: 1 serial, 0 all hardware threads; each thread builds its own SystemSolver.
-/// `pad_penalty` (n×n, or empty): see homotopy_start; used at every speed when not empty.
+/// `pad_penalty` (n×n, or empty): see homotopy_start; the fallback at a speed whose
+/// equilibrium did not converge through the pad assembly (model.pad_coords).
 OperatingPointTable operating_points(const SystemModel& model, const Eigen::VectorXd& omegas,
                                      const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
                                      const EquilibriumOptions& options, int n_threads = 1,

@@ -63,6 +63,13 @@ struct SystemModel {
   Eigen::VectorXd chamber;     ///< (n,) chamber force per unit chamber pressure, N/Pa
   std::vector<FilmCoupling> films;
   std::vector<TableCoupling> tables;
+  /// Tilting pads (or any element whose own coordinates enter one film only): per pad, its
+  /// coordinates in r, the tilt-like one first (film moment; any structural stiffness, often
+  /// none), then optionally a radial pivot displacement (K(u, u) > 0, film force decreasing
+  /// as u grows). Each group's coordinates must belong to exactly one film and no other film
+  /// or table, and K must not couple two groups. Non-empty: the Newton equilibrium starts
+  /// from the pad-assembly solve (pad_equilibrium.cpp).
+  std::vector<std::vector<int>> pad_coords;
   Eigen::Index n() const { return M.rows(); }
   void validate() const;  ///< shapes and indices; InputError naming the field
   /// True when a table carries mass coefficients (the mass matrix then depends on Ω).
@@ -98,6 +105,11 @@ struct EquilibriumResult {
   double pm = 0.0;             ///< P_m used (successive substitution)
   std::string status = "ok";   ///< ok | not_converged | contact
   std::string message;
+  /// How the Newton start was reached: "newton" (from r0), "pad_assembly" (pads solved pad
+  /// by pad inside a reduced journal Newton, then full Newton), "load_continuation"
+  /// (fallback), "successive"; callers may set "homotopy" (bearing_table.cpp).
+  std::string path;
+  int unloaded_pads = 0;       ///< pads with no pressured tilt equilibrium (pad_assembly)
 };
 
 struct Linearization {
@@ -167,6 +179,29 @@ class SystemSolver {
   void add_table_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot, double omega,
                         Eigen::VectorXd& H) const;
   void add_table_coefficients(double omega, Eigen::MatrixXd& KH, Eigen::MatrixXd* DH) const;
+  /// Solve film i alone at its local coordinates rc (zero velocity): its generalised forces
+  /// (n_coords,). Reuses the film's last solve when rc and Ω are unchanged.
+  Eigen::VectorXd solve_film(std::size_t i, const Eigen::VectorXd& rc, double omega);
+  void solve_one(std::size_t i, const Eigen::VectorXd& rc, const Eigen::VectorXd& vc,
+                 double omega);
+  /// −∂H/∂rc of film i about its last solve (n_coords × n_coords), perturbation method; only
+  /// the columns `cols` (positions in the film's coordinates; the others are zero).
+  Eigen::MatrixXd film_stiffness(std::size_t i, const std::vector<int>& cols);
+  /// One pad (SystemModel::pad_coords) resolved: its film and the coordinates' positions in
+  /// the film's coordinate list.
+  struct PadGroup {
+    std::size_t film = 0;
+    std::vector<int> coords;  ///< indices into r: tilt[, pivot]
+    std::vector<int> local;   ///< their positions in films[film].coords
+  };
+  std::vector<PadGroup> pads_;
+  struct PadSolve;
+  /// Pad-assembly start (pad_equilibrium.cpp): every pad solved on its loaded branch for the
+  /// current journal/rotor coordinates, inside a Newton on those with the reduced Jacobian.
+  /// true with r at a point whose residual is below tol·load_scale (pads at round-off).
+  bool pad_assembly(double omega, const Eigen::VectorXd& F, double load_scale, double tol,
+                    int max_iter, Eigen::VectorXd& r, int& iterations, int& unloaded,
+                    std::string& why);
 };
 
 }  // namespace rotordyn

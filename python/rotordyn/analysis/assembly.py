@@ -64,6 +64,7 @@ class Assembled:
         self.sleeves = {}
         self.extra_labels: list[str] = []
         films, tables = [], []
+        pad_coords = []  # tilting pads' own coordinates, per pad (pad-assembly equilibrium)
         coupled = []  # (indices [jx, jy, extras], M, K, C) of elements with own coordinates
         self.film_owner: list[int] = []  # bearing index of each C++ film
         self.film_phi: list = []         # physical node angles of each film (None: core grid)
@@ -85,6 +86,8 @@ class Assembled:
                     blocks_C.append(z)
                     coupled.append(([jx, jy] + list(extra), parts.M, parts.K, parts.C,
                                     parts.penalty))
+                    loc = [jx, jy] + list(extra)
+                    pad_coords += [[loc[i] for i in g] for g in parts.pad_groups]
                     self.extra_labels += list(parts.labels)
                     n += parts.n_extra
                 self.bearings.append(BearingCoords(bi, name, jx, jy, (),
@@ -158,6 +161,7 @@ class Assembled:
         model.chamber = ch
         model.films = films
         model.tables = tables
+        model.pad_coords = pad_coords
         self.model = model
         self.n = n
         self.n_rotor = n_r

@@ -72,14 +72,19 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     opt.pm = -1.0 if pm == "auto" else float(pm)
     opt.contact_fraction = float(contact_fraction)
     opt.polish = True  # the answer is the root to round-off, not the first iterate within tol
-    if asm.pad_penalty is not None and r_init.size == 0:
-        # tilting pads: start from the pad-tilt homotopy (no jump onto an unloaded pad's
-        # pressure-free branch); the equilibrium below is then solved on the true model
-        r_init = np.asarray(_core.homotopy_start(asm.model, hz_to_rad_s(float(speed_hz)),
-                                                 float(chamber_pressure_pa), a, r_init, opt,
-                                                 asm.pad_penalty))
-    res = asm.solver.equilibrium(hz_to_rad_s(float(speed_hz)), float(chamber_pressure_pa), a,
-                                 r_init, opt)
+    omega = hz_to_rad_s(float(speed_hz))
+    res = asm.solver.equilibrium(omega, float(chamber_pressure_pa), a, r_init, opt)
+    if asm.pad_penalty is not None and (res.status not in ("ok", "contact")
+                                        or res.path != "pad_assembly"):
+        # tilting pads whose pad-assembly equilibrium failed: fall back to the pad-tilt
+        # homotopy from the concentric state (no jump onto an unloaded pad's pressure-free
+        # branch), then the true model's Newton
+        start = np.asarray(_core.homotopy_start(asm.model, omega, float(chamber_pressure_pa), a,
+                                                np.zeros(0), opt, asm.pad_penalty))
+        res = asm.solver.equilibrium(omega, float(chamber_pressure_pa), a, start, opt)
+        path = "homotopy"
+    else:
+        path = res.path
     r = np.asarray(res.r)
     if res.status == "ok":
         asm.last_r = r.copy()
@@ -98,5 +103,5 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         sleeve_m={bc.index: r[list(bc.sleeve)] for bc in bcs if bc.sleeve},
         iterations=int(res.iterations), reynolds_solves=int(res.reynolds_solves),
         residual=float(res.residual), status=res.status, message=res.message,
-        pm=float(res.pm) if method == "successive" else float("nan"),
+        pm=float(res.pm) if method == "successive" else float("nan"), path=path,
     )

@@ -57,6 +57,10 @@ class CoefficientTable:
     message: tuple
     clearance_m: float
     whirl: str = "synchronous"
+    # per row: how the equilibrium was reached (tilting pads: "pad_assembly", or "homotopy"
+    # when that failed) and its Reynolds solves (all films; a fallback row: the final stage's)
+    path: tuple = ()
+    reynolds_solves: tuple = ()
 
     def to_frame(self):
         import pandas as pd
@@ -95,7 +99,9 @@ def coefficient_table(parts, load_n, speeds_hz, clearance_m: float, *, n_threads
     ld = check_load(load_n)
     if isinstance(n_threads, bool) or not isinstance(n_threads, (int, np.integer)) or n_threads < 0:
         raise InputError(f"n_threads: expected an integer >= 0 (0: all cores), got {n_threads!r}")
-    r, KH, DH, status, message, M = operating_table(parts, ld, s, n_threads=n_threads, tol=tol)
+    info = {}
+    r, KH, DH, status, message, M = operating_table(parts, ld, s, n_threads=n_threads, tol=tol,
+                                                    info=info)
     K = np.full((len(s), 2, 2), np.nan)
     C = np.full((len(s), 2, 2), np.nan)
     for i in range(len(s)):
@@ -105,4 +111,5 @@ def coefficient_table(parts, load_n, speeds_hz, clearance_m: float, *, n_threads
         K[i], C[i] = reduce_coefficients(KH[i], DH[i], M, nu)
     return CoefficientTable(s, tuple(ld), r[:, 0], r[:, 1], K, C, tuple(status), tuple(message),
                             clearance_m, "static" if whirl_ratio is None else
-                            ("synchronous" if whirl_ratio == 1.0 else f"{whirl_ratio:g}×speed"))
+                            ("synchronous" if whirl_ratio == 1.0 else f"{whirl_ratio:g}×speed"),
+                            info["path"], info["reynolds_solves"])

@@ -126,13 +126,17 @@ class SystemParts:
     C: np.ndarray | None = None
     labels: tuple = ()
     penalty: np.ndarray | None = None  # homotopy penalty over [x, y, extras] (pads only)
+    # per pad, its own coordinates (indices into [x, y, extras]: tilt, then pivot): the C++
+    # equilibrium solves them pad by pad (SystemModel.pad_coords, pad_equilibrium.cpp)
+    pad_groups: list = field(default_factory=list)
 
 
 def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1,
-                    tol: float = 1e-10):
+                    tol: float = 1e-10, info: dict | None = None):
     """Equilibrium + linearisation of a standalone bearing (journal x, y = coordinates 0, 1,
     extras after) at each speed: r (n_s, n); K, C (n_s, n, n) = film K_H, D_H plus the extra
-    coordinates' structural K, C (pivot stiffness); status, message; M (n, n)."""
+    coordinates' structural K, C (pivot stiffness); status, message; M (n, n). ``info``
+    (optional dict) receives ``path`` and ``reynolds_solves`` per speed (tuples)."""
     n = 2 + parts.n_extra
     model = _core.SystemModel()
     M = np.zeros((n, n))
@@ -149,12 +153,16 @@ def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1
     model.chamber = np.zeros(n)
     model.films = [p.coupling if isinstance(p, PadFilm) else p for p in parts.films]
     model.tables = parts.tables
+    model.pad_coords = [list(g) for g in parts.pad_groups]
     opt = _core.EquilibriumOptions()
     opt.tol = tol
     w = np.ascontiguousarray(np.asarray(speeds_hz, dtype=float) * TWO_PI)
     pen = parts.penalty if parts.penalty is not None else np.zeros((0, 0))
     res = _core.operating_points(model, w, np.zeros(n), np.zeros(0), opt, int(n_threads), pen)
     ns = len(w)
+    if info is not None:
+        info["path"] = tuple(res.path)
+        info["reynolds_solves"] = tuple(int(x) for x in res.reynolds_solves)
     return (np.asarray(res.r), np.asarray(res.KH).reshape(ns, n, n) + K,
             np.asarray(res.DH).reshape(ns, n, n) + C, list(res.status), list(res.message), M)
 

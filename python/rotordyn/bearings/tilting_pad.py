@@ -123,6 +123,7 @@ class TiltingPadBearing:
         M = np.zeros((2 + n, 2 + n))
         K = np.zeros((2 + n, 2 + n))
         P = np.zeros((2 + n, 2 + n))
+        groups = []  # each pad's own coordinates (tilt, pivot): the pad-assembly equilibrium
         for k, psi_deg in enumerate(self.pivot_angles_deg()):
             psi = math.radians(psi_deg)
             cp, sp = math.cos(psi), math.sin(psi)
@@ -135,7 +136,8 @@ class TiltingPadBearing:
             a[0], a[1], a[ik] = sp / lever, -cp / lever, 1.0 / lever
             M += self.pad_inertia_kg_m2 * np.outer(a, a)
             K += self.tilt_stiffness_nm_per_rad * np.outer(a, a)
-            P += np.outer(a, a)  # equilibrium homotopy: tilts held at 0 first
+            P += np.outer(a, a)  # fallback equilibrium homotopy: tilts held at 0 first
+            groups.append([ik] + ([ik + 1] if self.flexible_pivot else []))
             if self.flexible_pivot:
                 coords.append(first_extra + npd * k + 1)
                 shapes.append(lambda phi, psi=psi: np.cos(phi - psi))
@@ -158,7 +160,8 @@ class TiltingPadBearing:
             pf.coupling.shape = S
             films.append(pf)
         return SystemParts(films=films, tables=[], n_extra=n, M=M, K=K,
-                           C=np.zeros((2 + n, 2 + n)), labels=tuple(labels), penalty=P)
+                           C=np.zeros((2 + n, 2 + n)), labels=tuple(labels), penalty=P,
+                           pad_groups=groups)
 
     def pad_tilts_rad(self, r) -> np.ndarray:
         """Pad tilts δ_k (rad) from standalone coordinates r = [x, y, pad coordinates...]."""

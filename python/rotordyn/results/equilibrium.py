@@ -45,6 +45,9 @@ class EquilibriumResult:
     pm: float = float("nan")
     status: str = "ok"
     message: str = ""
+    # how the Newton start was reached: "newton", "pad_assembly" (tilting pads), "homotopy"
+    # (tilting pads, fallback), "load_continuation", "successive"
+    path: str = ""
 
     def __repr__(self) -> str:
         pos = "; ".join(f"{n or i}: x/c = {x:.4f}, y/c = {y:.4f}"

@@ -1,0 +1,425 @@
+// Tilting-pad equilibrium by pad assembly (J. W. Lund, ASLE Trans. 7 (1964) 342-352; P. E.
+// Allaire & J. C. Nicholas's pad-assembly method): for given journal (and rotor, sleeve)
+// coordinates o, each pad's own coordinates p_k (tilt, and with a flexible pivot the radial
+// pivot displacement) are solved pad by pad — each pad's film depends only on its own
+// coordinates and the journal — then a Newton on o with the reduced Jacobian
+// J_oo − J_op J_pp⁻¹ J_po (implicit function theorem; J = K + K_H by the perturbation method)
+// and a backtracking line search. The caller (SystemSolver::equilibrium) finishes with full
+// Newton steps and the round-off polish on every coordinate.
+//
+// The pad's tilt: an unloaded pad has a continuum of pressure-free equilibria (fully divergent
+// film, zero moment at any tilt). The physical one carries pressure. Along the pad's tilt
+// coordinate the film closes at both ends of its range; near the end that pinches the trailing
+// edge the film is pressured and its moment clearly nonzero (sign s_L), towards the other end
+// the film becomes divergent and pressure-free. A pressure-free point whose residual vanishes
+// counts as sign −s_L, so the bracket [loaded end, other end] holds exactly one sign change:
+// the pressured root when one exists, else the boundary of the pressure-free set (the
+// smallest tilt, from the loaded side, at which the film carries no pressure), which is then
+// the pad's defined position: found by bisection to round-off, a function of the journal
+// position alone. Safeguarded Newton inside the bracket (bisection when a step leaves it).
+//
+// A flexible pivot u: for each u the tilt is solved as above, and f(u) = R_u(u, δ*(u)) is
+// increasing in u (K(u, u) > 0, the film force falls as the pad moves away); a film closed at
+// every tilt counts as f = −∞. Newton on f with the Schur derivative, bracket expansion and
+// bisection.
+#include <Eigen/LU>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "rotordyn/errors.hpp"
+#include "rotordyn/system.hpp"
+
+namespace rotordyn {
+
+namespace {
+constexpr double kPinch = 1e-3;  // the ends of a pad's tilt range: film pinched to kPinch·C
+double sgn(double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
+double inf_norm(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
+}  // namespace
+
+/// One pad's residual as a function of its own coordinates, everything else fixed.
+struct SystemSolver::PadSolve {
+  SystemSolver& s;
+  const PadGroup& g;
+  double omega = 0.0;
+  Eigen::VectorXd rc;         // the film's local coordinates (journal x, y, tilt[, pivot])
+  Eigen::Vector2d A = Eigen::Vector2d::Zero();  // (K r − F) on the pad less K_gg p_g
+  Eigen::Matrix2d Kgg = Eigen::Matrix2d::Zero();
+  double tol = 0.0;           // absolute residual tolerance, N
+  double clearance = 0.0;
+  bool pressure_free = false;
+  double pmax = 0.0;
+  Eigen::Vector2d R = Eigen::Vector2d::Zero();
+
+  PadSolve(SystemSolver& solver, const PadGroup& group) : s(solver), g(group) {}
+  int m() const { return static_cast<int>(g.local.size()); }
+  double own(int k) const { return rc(g.local[static_cast<std::size_t>(k)]); }
+  void eval() {
+    const Eigen::VectorXd Hl = s.solve_film(g.film, rc, omega);
+    const RowMatrixXd& p = s.last_pressure(static_cast<int>(g.film));
+    pmax = p.maxCoeff();
+    pressure_free = p.cwiseAbs().maxCoeff() == 0.0;
+    for (int k = 0; k < m(); ++k) {
+      R(k) = A(k) - Hl(g.local[static_cast<std::size_t>(k)]);
+      for (int j = 0; j < m(); ++j) R(k) += Kgg(k, j) * own(j);
+    }
+  }
+  /// ∂R/∂p_g (m × m) about the last eval.
+  Eigen::Matrix2d jac() {
+    const Eigen::MatrixXd Kf = s.film_stiffness(g.film, g.local);  // the pad's own columns
+    Eigen::Matrix2d J = Eigen::Matrix2d::Identity();
+    for (int k = 0; k < m(); ++k)
+      for (int j = 0; j < m(); ++j)
+        J(k, j) = Kgg(k, j) + Kf(g.local[static_cast<std::size_t>(k)],
+                                 g.local[static_cast<std::size_t>(j)]);
+    return J;
+  }
+};
+
+namespace {
+
+/// The tilt on the pad's loaded branch for the current other coordinates (ps.rc). Returns 1
+/// (pressured root), 0 (no pressured root: the pad sits at the boundary of its pressure-free
+/// set) or −1 (no sign change: nothing balances the pad); ContactError if the film closes at
+/// every tilt. ps is left evaluated at the returned tilt.
+template <class PadSolve, class FilmCoupling>
+int tilt_solve(PadSolve& ps, const FilmCoupling& fc, bool warm) {
+  const int it = ps.g.local[0];
+  const double C = fc.geometry.clearance_m, pinch = kPinch * C;
+  double lo = -INFINITY, hi = INFINITY;
+  for (Eigen::Index j = 0; j < fc.shape.rows(); ++j) {
+    double h0 = fc.base_h.size() ? fc.base_h.row(j).minCoeff() : C;
+    for (Eigen::Index k = 0; k < fc.shape.cols(); ++k)
+      if (k != it) h0 += fc.shape(j, k) * ps.rc(k);
+    const double sj = fc.shape(j, it);
+    if (sj > 0)
+      lo = std::max(lo, (pinch - h0) / sj);
+    else if (sj < 0)
+      hi = std::min(hi, (h0 - pinch) / -sj);
+    else if (!(h0 > pinch))
+      throw ContactError("film '" + fc.name + "': the pad's film closes at every tilt");
+  }
+  if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi))
+    throw ContactError("film '" + fc.name + "': the pad's film closes at every tilt");
+  const double step_tol = 1e-14 * std::max(C, std::max(std::abs(lo), std::abs(hi)));
+  const double x0 = ps.rc(it);
+
+  // Newton from the guess: accepted only on a pressured root inside the range.
+  if (warm && x0 > lo && x0 < hi) {
+    double x = x0, prev = INFINITY;
+    for (int k = 0; k < 12; ++k) {
+      ps.rc(it) = x;
+      ps.eval();
+      if (ps.pressure_free) break;
+      const double r = ps.R(0);
+      // a pressured root is restoring (∂R/∂δ > 0: the film moment grows against the tilt);
+      // a negative slope means the iterate slides towards the pressure-free set, where the
+      // moment fades to zero without a root (small |R| there is no root): bracket instead
+      const double d = ps.jac()(0, 0);
+      if (!(d > 0)) break;
+      if (std::abs(r) <= ps.tol) return 1;
+      if (k >= 3 && std::abs(r) > 0.25 * prev) break;  // not converging: bracket instead
+      prev = std::abs(r);
+      const double xn = x - r / d;
+      if (!std::isfinite(xn) || !(xn > lo && xn < hi)) break;
+      if (std::abs(xn - x) <= step_tol) return 1;
+      x = xn;
+    }
+  }
+
+  // Bracket: the loaded end (larger peak pressure) against the other.
+  ps.rc(it) = lo;
+  ps.eval();
+  const double R_lo = ps.R(0), p_lo = ps.pmax;
+  const bool pf_lo = ps.pressure_free;
+  ps.rc(it) = hi;
+  ps.eval();
+  const double R_hi = ps.R(0), p_hi = ps.pmax;
+  const bool pf_hi = ps.pressure_free;
+  const bool lo_loaded = p_lo >= p_hi;
+  const double sL = sgn(lo_loaded ? R_lo : R_hi);
+  auto eff = [&](double r, bool pf) { return pf && std::abs(r) <= ps.tol ? -sL : sgn(r); };
+  double a = lo_loaded ? lo : hi, b = lo_loaded ? hi : lo;
+  bool pf_b = lo_loaded ? pf_hi : pf_lo;
+  if (sL == 0.0 || eff(lo_loaded ? R_hi : R_lo, pf_b) == sL) return -1;
+  double x = (x0 > std::min(a, b) && x0 < std::max(a, b)) ? x0 : 0.5 * (a + b);
+  double dx_old = std::abs(b - a);
+  for (int k = 0; k < 300; ++k) {
+    ps.rc(it) = x;
+    ps.eval();
+    const double r = ps.R(0);
+    const double d = ps.pressure_free ? 0.0 : ps.jac()(0, 0);
+    if (!ps.pressure_free && std::abs(r) <= ps.tol && d > 0) return 1;
+    if (eff(r, ps.pressure_free) == sL) {
+      a = x;
+    } else {
+      b = x;
+      pf_b = ps.pressure_free;
+    }
+    if (std::abs(b - a) <= step_tol) break;
+    double xn = NAN;
+    if (!ps.pressure_free) xn = x - r / d;
+    const bool inside = std::isfinite(xn) && xn > std::min(a, b) && xn < std::max(a, b);
+    if (inside && std::abs(xn - x) <= step_tol && d > 0) return 1;
+    // Newton while it stays inside the bracket and its steps at least halve (rtsafe);
+    // bisection otherwise
+    if (inside && std::abs(xn - x) <= 0.5 * dx_old) {
+      dx_old = std::abs(xn - x);
+      x = xn;
+    } else {
+      x = 0.5 * (a + b);
+      dx_old = 0.5 * std::abs(b - a);
+    }
+  }
+  if (pf_b) {  // no pressured root: the boundary of the pressure-free set
+    ps.rc(it) = b;
+    ps.eval();
+    return 0;
+  }
+  ps.rc(it) = a;
+  ps.eval();
+  return std::abs(ps.R(0)) <= 1e3 * ps.tol ? 1 : -1;
+}
+
+}  // namespace
+
+bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double load_scale,
+                                double tol, int max_iter, Eigen::VectorXd& r, int& iterations,
+                                int& unloaded, std::string& why) {
+  const Eigen::Index n = model_.n();
+  std::vector<char> in_pad(static_cast<std::size_t>(n), 0);
+  for (const auto& g : pads_)
+    for (int c : g.coords) in_pad[static_cast<std::size_t>(c)] = 1;
+  std::vector<int> outer;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!in_pad[static_cast<std::size_t>(i)]) outer.push_back(static_cast<int>(i));
+  // Pad residual tolerance: loose while the journal is far from its equilibrium (the Newton
+  // step below solves for the pads' residual too), 1e-14 of the load scale at the end.
+  const double tol_floor = 1e-14 * load_scale;
+  double tol_in = tol_floor;
+  std::vector<int> state(pads_.size(), 1);  // 1 pressured, 0 unloaded (pressure-free)
+
+  // Every pad on its loaded branch for the other coordinates of r (pad coordinates in r are
+  // the guesses). false (why) if a pad cannot be balanced; ContactError propagates.
+  auto solve_pads = [&](Eigen::VectorXd& rr) -> bool {
+    const Eigen::VectorXd Kr = model_.K * rr - F;
+    for (std::size_t k = 0; k < pads_.size(); ++k) {
+      const PadGroup& g = pads_[k];
+      const FilmCoupling& fc = model_.films[g.film];
+      PadSolve ps(*this, g);
+      ps.omega = omega;
+      // a flexible pivot's nested solve needs its tilt converged (a stiff pivot amplifies the
+      // tilt's error in f(u)): the tight tolerance there
+      ps.tol = g.coords.size() == 2 ? tol_floor : tol_in;
+      ps.clearance = fc.geometry.clearance_m;
+      ps.rc.resize(static_cast<Eigen::Index>(fc.coords.size()));
+      for (std::size_t j = 0; j < fc.coords.size(); ++j)
+        ps.rc(static_cast<Eigen::Index>(j)) = rr(fc.coords[j]);
+      const int m = static_cast<int>(g.coords.size());
+      for (int a = 0; a < m; ++a) {
+        ps.A(a) = Kr(g.coords[static_cast<std::size_t>(a)]);
+        for (int b = 0; b < m; ++b) {
+          ps.Kgg(a, b) = model_.K(g.coords[static_cast<std::size_t>(a)],
+                                  g.coords[static_cast<std::size_t>(b)]);
+          ps.A(a) -= ps.Kgg(a, b) * rr(g.coords[static_cast<std::size_t>(b)]);
+        }
+      }
+      int st = -1;
+      if (m == 1) {
+        st = tilt_solve(ps, fc, true);
+      } else {
+        // flexible pivot: f(u) = R_u(u, tilt*(u)), increasing in u
+        const int iu = g.local[1];
+        const double C = fc.geometry.clearance_m;
+        double u = ps.rc(iu), a = 0, b = 0, step = 0.1 * C;
+        bool has_a = false, has_b = false;
+        for (int k2 = 0; k2 < 200; ++k2) {
+          ps.rc(iu) = u;
+          bool ok = true;
+          try {
+            st = tilt_solve(ps, fc, true);
+            ok = st >= 0;
+          } catch (const ContactError&) {
+            ok = false;
+          }
+          const double fu = ok ? ps.R(1) : -INFINITY;
+          if (ok && std::abs(fu) <= ps.tol) break;
+          if (fu < 0) {
+            a = u;
+            has_a = true;
+          } else {
+            b = u;
+            has_b = true;
+          }
+          double un = NAN;
+          if (ok) {
+            const Eigen::Matrix2d J = ps.jac();
+            const double d = (st == 1 && J(0, 0) != 0.0) ? J(1, 1) - J(1, 0) * J(0, 1) / J(0, 0)
+                                                         : J(1, 1);
+            if (d > 0) un = u - fu / d;
+          }
+          const double utol = 1e-14 * std::max(C, std::abs(u));
+          if (has_a && has_b) {
+            if (b - a <= utol) {
+              st = ok ? st : -1;
+              break;
+            }
+            if (!(std::isfinite(un) && un > a && un < b)) un = 0.5 * (a + b);
+          } else if (!has_b) {
+            if (!(std::isfinite(un) && un > u)) un = u + step;
+            step *= 2;
+          } else {
+            if (!(std::isfinite(un) && un < u)) un = u - step;
+            step *= 2;
+          }
+          if (ok && std::abs(un - u) <= utol) break;
+          u = un;
+          st = -1;
+        }
+      }
+      if (st < 0) {
+        why = "pad '" + fc.name + "': no tilt balances the pad";
+        return false;
+      }
+      state[k] = st;
+      for (int a = 0; a < m; ++a)
+        rr(g.coords[static_cast<std::size_t>(a)]) = ps.own(a);
+    }
+    return true;
+  };
+
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd H, R;
+  double res = NAN;
+  auto evaluate = [&](Eigen::VectorXd& rr, Eigen::VectorXd& Hr, Eigen::VectorXd& Rr,
+                      double& resr) -> bool {
+    try {
+      if (!solve_pads(rr)) return false;
+      Hr = film_forces(rr, zero, omega);  // the pads' films are reused (same coordinates)
+    } catch (const ContactError& e) {
+      why = e.what();
+      return false;
+    }
+    Rr = model_.K * rr - Hr - F;
+    resr = inf_norm(Rr) / load_scale;
+    return std::isfinite(resr);
+  };
+  tol_in = std::max(tol_floor, 1e-3 * load_scale);
+  if (!evaluate(r, H, R, res)) {
+    why = "pad assembly, starting point: " + why;
+    return false;
+  }
+  const auto no = static_cast<Eigen::Index>(outer.size());
+  Eigen::MatrixXd KH;
+  double step_prev = INFINITY;
+  bool tight = false;
+  double res_prev = INFINITY;
+  for (iterations = 0; iterations < max_iter; ++iterations) {
+    // converged: on to the round-off floor while each step at least halves the residual
+    // (the reduced Newton is well conditioned where the full Jacobian, with a very soft pivot
+    // or an almost unloaded pad, is not, so the full polish may decline)
+    if (res < tol && (res == 0.0 || res > 0.5 * res_prev || step_prev <= 1e-15)) break;
+    res_prev = res;
+    linearize_last_solve(false, KH, nullptr);  // every film's last solve is at r
+    const Eigen::MatrixXd J = model_.K + KH;
+    // pad coordinates that take part (an unloaded pad's tilt has a zero row and column)
+    std::vector<int> pc;
+    for (std::size_t k = 0; k < pads_.size(); ++k)
+      for (std::size_t a = 0; a < pads_[k].coords.size(); ++a)
+        if (state[k] == 1 || a > 0) pc.push_back(pads_[k].coords[a]);
+    const auto np = static_cast<Eigen::Index>(pc.size());
+    Eigen::MatrixXd Joo(no, no), Jop(no, np), Jpo(np, no), Jpp(np, np);
+    Eigen::VectorXd Ro(no), Rp(np);
+    for (Eigen::Index i = 0; i < no; ++i) {
+      Ro(i) = R(outer[static_cast<std::size_t>(i)]);
+      for (Eigen::Index j = 0; j < no; ++j)
+        Joo(i, j) = J(outer[static_cast<std::size_t>(i)], outer[static_cast<std::size_t>(j)]);
+      for (Eigen::Index j = 0; j < np; ++j) {
+        Jop(i, j) = J(outer[static_cast<std::size_t>(i)], pc[static_cast<std::size_t>(j)]);
+        Jpo(j, i) = J(pc[static_cast<std::size_t>(j)], outer[static_cast<std::size_t>(i)]);
+      }
+    }
+    for (Eigen::Index i = 0; i < np; ++i) {
+      Rp(i) = R(pc[static_cast<std::size_t>(i)]);
+      for (Eigen::Index j = 0; j < np; ++j)
+        Jpp(i, j) = J(pc[static_cast<std::size_t>(i)], pc[static_cast<std::size_t>(j)]);
+    }
+    Eigen::VectorXd dro, drp;
+    if (np) {
+      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jpp);
+      const Eigen::MatrixXd X = lu.solve(Jpo);
+      const Eigen::VectorXd y = lu.solve(Rp);
+      dro = (Joo - Jop * X).partialPivLu().solve(-(Ro - Jop * y));
+      drp = -(y + X * dro);
+    } else {
+      dro = Joo.partialPivLu().solve(-Ro);
+    }
+    if (!dro.allFinite() && np) {
+      // singular reduced Jacobian: e.g. a journal on one loaded pad with the others
+      // pressure-free has no stiffness across that pad's pivot line; minimum-norm step
+      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jpp);
+      const Eigen::MatrixXd X = lu.solve(Jpo);
+      const Eigen::VectorXd y = lu.solve(Rp);
+      dro = (Joo - Jop * X).completeOrthogonalDecomposition().solve(-(Ro - Jop * y));
+      drp = -(y + X * dro);
+    }
+    if (!dro.allFinite()) {
+      why = "pad assembly: singular reduced Jacobian";
+      return false;
+    }
+    double t = 1.0;
+    bool accepted = false;
+    tol_in = tight ? tol_floor : std::max(tol_floor, 1e-3 * res * load_scale);
+    for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
+      Eigen::VectorXd rt = r;
+      for (Eigen::Index i = 0; i < no; ++i) rt(outer[static_cast<std::size_t>(i)]) += t * dro(i);
+      for (Eigen::Index i = 0; i < np; ++i)
+        if (drp.allFinite()) rt(pc[static_cast<std::size_t>(i)]) += t * drp(i);
+      Eigen::VectorXd Ht, Rt;
+      double rest = NAN;
+      if (!evaluate(rt, Ht, Rt, rest)) continue;
+      if (rest <= (1.0 - 1e-4 * t) * res || rest < 1e-2 * tol) {
+        step_prev = 0.0;
+        for (Eigen::Index i = 0; i < no; ++i) {
+          const int c = outer[static_cast<std::size_t>(i)];
+          step_prev = std::max(step_prev, std::abs(rt(c) - r(c)) /
+                                              std::max(std::abs(r(c)), 1e-300));
+        }
+        r = rt;
+        H = Ht;
+        R = Rt;
+        res = rest;
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) {
+      // leave the films at r (pads re-solved to the tight tolerance)
+      const bool was_tight = tight;
+      tight = true;
+      tol_in = tol_floor;
+      if (!evaluate(r, H, R, res)) return false;
+      if (res < tol) break;
+      if (!was_tight) continue;  // inexact pads stalled the line search: again, exact
+      std::ostringstream os;
+      os << "pad assembly: line search failed (residual " << res << ")";
+      why = os.str();
+      return false;
+    }
+  }
+  unloaded = static_cast<int>(std::count(state.begin(), state.end(), 0));
+  if (!(res < tol)) {
+    std::ostringstream os;
+    os << "pad assembly: no convergence in " << max_iter << " iterations (residual " << res
+       << ")";
+    why = os.str();
+    return false;
+  }
+  why.clear();  // trial points in contact on the way are no failure
+  return true;
+}
+
+}  // namespace rotordyn
