@@ -113,10 +113,8 @@ def test_stability_sweep_over_preload_and_damper_clearance(tmp_path):
 
 def test_equilibrium_sweep_over_table_entry_and_bearing_fields(tmp_path):
     """Equilibrium rows per bearing (a table entry, a fixed-geometry lobe offset, a damper's
-    centring spring; the damper's film carries no static load) against direct calls. (Tilting pads are left out here: the sweep worker
-    starts the equilibrium from the centred state while rotordyn.equilibrium adds the pad-tilt
-    homotopy; the two can land on different pad branches until the pad start moves into the
-    C++ equilibrium.)"""
+    centring spring; the damper's film carries no static load) against direct calls. (Tilting pads have their own sweep-vs-API
+    check in tests/test_tilting_pad_equilibrium.py: both start from the C++ pad assembly.)"""
     fg = FixedGeometryBearing(station=0, kind="offset_halves", name="fg", **FILM)
     tb = TableBearing(station=1, speeds_hz=(10.0, 60.0, 110.0), kxx_n_per_m=(2e6, 3e6, 4e6),
                       kyy_n_per_m=(3e6, 4e6, 5e6), name="tab")
