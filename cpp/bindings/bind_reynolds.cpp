@@ -132,6 +132,9 @@ void bind_reynolds(py::module_& m) {
       .def_property("predict_cavitation", &RS::predict_cavitation, &RS::set_predict_cavitation,
                     "Start the cavitation set from a coarse-grid prediction (default True); "
                     "False: from the empty set (benchmark baseline). Same answer either way.")
+      .def_property("pressure_only", &RS::pressure_only, &RS::set_pressure_only,
+                    "solve() fills p_pa and h_min only (force, torque, flows NaN; theta, "
+                    "h_m empty); the pressures are the same bit for bit (default False).")
       .def("reset", &RS::reset, "Drop the last solution (solves never depend on earlier calls).");
 }
 

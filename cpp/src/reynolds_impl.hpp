@@ -163,6 +163,8 @@ struct ReynoldsSolver::Impl {
   void factor_solve_jfo(LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   void solve_factored(const LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   void postprocess();
+  bool pressure_only = false;  // solve() fills p_pa and h_min only (postprocess_pressure)
+  void postprocess_pressure();
 
   // d(residual)/d(h, hdot) at the frozen state, S's unknown ordering and row weights.
   void residual_derivative(const LinearSystem& S, const double* dh, const double* dhdot,

@@ -417,6 +417,8 @@ bool ReynoldsSolver::use_axial_symmetry() const { return impl_->use_symmetry; }
 void ReynoldsSolver::set_use_axial_symmetry(bool on) { impl_->use_symmetry = on; }
 bool ReynoldsSolver::predict_cavitation() const { return impl_->predict; }
 void ReynoldsSolver::set_predict_cavitation(bool on) { impl_->predict = on; }
+bool ReynoldsSolver::pressure_only() const { return impl_->pressure_only; }
+void ReynoldsSolver::set_pressure_only(bool on) { impl_->pressure_only = on; }
 bool ReynoldsSolver::continuation() const { return impl_->continuation; }
 void ReynoldsSolver::set_continuation(bool on) {
   impl_->continuation = on;

@@ -2,6 +2,7 @@
 // linearised solve that shares the last factorisation.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "reynolds_impl.hpp"
 #include "rotordyn/errors.hpp"
@@ -65,6 +66,7 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
     try {
       if (!coarse) {
         coarse = std::make_unique<ReynoldsSolver>(geo, FilmGrid{Nc, nac}, Cavitation::reynolds);
+        coarse->set_pressure_only(true);  // only its p_pa is read below
         hc.resize(Nc, K1c);
         hdc.resize(Nc, K1c);
       }
@@ -291,6 +293,36 @@ void ReynoldsSolver::Impl::postprocess() {
   std::copy(h.begin(), h.end(), out.h_m.data());
 }
 
+// The part of postprocess() a caller integrating p itself needs: p and h_min (the same
+// values bit for bit), no force, torque, flows or fill copies.
+void ReynoldsSolver::Impl::postprocess_pressure() {
+  double hmin = h[0];
+  int nmin = 0;
+  bool finite = true;
+  for (int n = 0; n < n_nodes; ++n) {
+    finite = finite && std::isfinite(p[n]);
+    if (h[n] < hmin) {
+      hmin = h[n];
+      nmin = n;
+    }
+  }
+  if (!finite)
+    throw ConvergenceError(
+        "Reynolds solve: non-finite pressure (the film's pressure scale "
+        "viscosity_pa_s*omega*(R/clearance_m)^2 = " +
+        reynolds_detail::num(mu * std::abs(omega) * (R / c) * (R / c)) +
+        " Pa is beyond what double precision represents)");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  out.force_n = Eigen::Vector2d(nan, nan);
+  out.friction_torque_nm = out.inlet_flow_m3_s = out.side_flow_m3_s = nan;
+  out.h_min_m = hmin;
+  out.h_min_angle_deg = (nmin / K1) * dphi * 180.0 / kPi;
+  out.p_pa.resize(N, K1);
+  out.theta.resize(0, 0);
+  out.h_m.resize(0, 0);
+  std::copy(p.begin(), p.end(), out.p_pa.data());
+}
+
 void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const double* dh,
                                                const double* dhdot, Eigen::VectorXd& outv) const {
   // Pressure at which the operator is linearised: the unclipped solution for none/gumbel.
@@ -348,7 +380,7 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
   s.set_film(h.data(), dhdt.data(), omega);
   if (s.geo.short_bearing) {
     s.solve_short();
-    s.postprocess();
+    s.pressure_only ? s.postprocess_pressure() : s.postprocess();
     s.solved = true;
     return s.out;
   }
@@ -372,7 +404,7 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
       s.solve_jfo(S);
       break;
   }
-  s.postprocess();
+  s.pressure_only ? s.postprocess_pressure() : s.postprocess();
   s.solved = true;
   return s.out;
 }

@@ -21,6 +21,7 @@ struct SystemSolver::Film {
       : solver(f.geometry, f.grid, f.cavitation),
         h(f.grid.n_circ, f.grid.n_axial + 1),
         dhdt(f.grid.n_circ, f.grid.n_axial + 1) {
+    solver.set_pressure_only(true);  // the forces are ∫∫ p S dA here (integrate), not force_n
     const int K1 = f.grid.n_axial + 1;
     const double R = 0.5 * f.geometry.diameter_m;
     const double dphi = 2.0 * M_PI / f.grid.n_circ, dz = f.geometry.length_m / f.grid.n_axial;

@@ -201,6 +201,13 @@ class ReynoldsSolver {
   /// that switches it on at its start is a function of its own inputs.
   bool continuation() const;
   void set_continuation(bool on);
+  /// Pressure only (off by default): solve() fills p_pa, h_min_m, h_min_angle_deg and
+  /// iterations only; force_n, the torque and the flows are NaN and theta, h_m empty. For a
+  /// caller that integrates the pressure itself (SystemSolver: one solve per transient
+  /// right-hand side, where the friction torque and the flows were ~15 % of the solve). The
+  /// pressures are the same bit for bit; a non-finite pressure still raises ConvergenceError.
+  bool pressure_only() const;
+  void set_pressure_only(bool on);
   /// When h and ∂h/∂t are mirror-symmetric about z = 0 (rigid aligned journal), solve on the
   /// half grid, for either parity of n_axial (exactly the same discrete solution, ~2-4x
   /// cheaper); on by default. Non-symmetric films and perturbations use the full grid.
