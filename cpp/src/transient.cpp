@@ -417,6 +417,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   if (opt.analytic_jacobian) check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
   check(CVodeSetMaxNumSteps(mem, opt.max_steps), "CVodeSetMaxNumSteps");
   if (opt.max_step > 0) check(CVodeSetMaxStep(mem, opt.max_step), "CVodeSetMaxStep");
+  if (opt.stability_limit_detection)
+    check(CVodeSetStabLimDet(mem, SUNTRUE), "CVodeSetStabLimDet");
   check(CVodeSetStopTime(mem, t_end), "CVodeSetStopTime");
 
   // Discrete controller: sample k at k·T; CVODE stops there and restarts (the held output
