@@ -288,20 +288,30 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
   if (!(std::isfinite(omega_in) && std::abs(omega_in) <= kMaxOmega))
     throw InputError("speed_hz: expected |speed_hz| <= 1e5 Hz, got " +
                      num(omega_in / (2.0 * kPi)));
-  double hmin = h_in[0];
-  int nmin = 0;
-  for (int n = 0; n < n_nodes; ++n) {
-    const double hv = h_in[n];
-    if (!std::isfinite(hv) || !std::isfinite(hdot_in[n]))
-      throw InputError("h/dhdt: expected finite film thickness and rate at every node");
-    if (hv < hmin) {
-      hmin = hv;
-      nmin = n;
+  // One pass per right-hand side of a transient: the minimum and the finiteness check run in
+  // four independent lanes (0·x is NaN exactly when x is not finite); the node of the minimum
+  // is searched only when it is needed for the contact message.
+  double m4[4] = {h_in[0], h_in[0], h_in[0], h_in[0]}, c4[4] = {0.0, 0.0, 0.0, 0.0};
+  int n = 0;
+  for (; n + 4 <= n_nodes; n += 4)
+    for (int l = 0; l < 4; ++l) {
+      m4[l] = std::min(m4[l], h_in[n + l]);
+      c4[l] += 0.0 * h_in[n + l] + 0.0 * hdot_in[n + l];
     }
+  for (; n < n_nodes; ++n) {
+    m4[0] = std::min(m4[0], h_in[n]);
+    c4[0] += 0.0 * h_in[n] + 0.0 * hdot_in[n];
   }
-  if (!(hmin > 0.0))
+  if (!(c4[0] + c4[1] + c4[2] + c4[3] == 0.0))
+    throw InputError("h/dhdt: expected finite film thickness and rate at every node");
+  const double hmin = std::min(std::min(m4[0], m4[1]), std::min(m4[2], m4[3]));
+  if (!(hmin > 0.0)) {
+    int nmin = 0;
+    for (int q = 1; q < n_nodes; ++q)
+      if (h_in[q] < h_in[nmin]) nmin = q;
     throw ContactError("film thickness " + num(hmin) + " m <= 0 at phi = " +
                        num((nmin / K1) * dphi * 180.0 / kPi) + " deg: journal touches the bush");
+  }
   omega = omega_in;
   std::copy(h_in, h_in + n_nodes, h.begin());
   std::copy(hdot_in, hdot_in + n_nodes, hdot.begin());
@@ -309,17 +319,21 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
   const double fN = R * dphi / (12.0 * mu * dz);
   const double fq = 0.5 * omega * R * dz;
   const double fs = R * dphi * dz;
-  for (int n = 0; n < n_nodes; ++n) {
-    const double he = 0.5 * (h[n] + h[east(n)]);
-    cE[n] = fE * he * he * he;
-    qE[n] = fq * he;
-    src[n] = fs * hdot[n];
-    if (n % K1 != K1 - 1) {
-      const double hn = 0.5 * (h[n] + h[n + 1]);
-      cN[n] = fN * hn * hn * hn;
-    } else {
-      cN[n] = 0.0;
+  for (int j = 0; j < N; ++j) {
+    const int row = j * K1, erow = (j + 1 == N) ? 0 : row + K1;
+    for (int k = 0; k < K1; ++k) {
+      const int q = row + k;
+      const double he = 0.5 * (h[q] + h[erow + k]);
+      cE[q] = fE * he * he * he;
+      qE[q] = fq * he;
+      src[q] = fs * hdot[q];
     }
+    for (int k = 0; k + 1 < K1; ++k) {
+      const int q = row + k;
+      const double hn = 0.5 * (h[q] + h[q + 1]);
+      cN[q] = fN * hn * hn * hn;
+    }
+    cN[row + K1 - 1] = 0.0;
   }
 }
 

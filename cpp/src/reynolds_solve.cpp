@@ -121,19 +121,20 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   std::vector<char> next(S.n_unk), degenerate(S.n_unk);
   Eigen::VectorXd b(S.n_unk);
   const int max_iter = 100 + S.n_unk / 4;
+  double pscale_fixed = 0.0;  // the prescribed nodes' pressures, the same every iteration
+  for (int n = 0; n < n_nodes; ++n)
+    if (fixed[n]) pscale_fixed = std::max(pscale_fixed, std::abs(p[n]));
   for (int it = 1; it <= max_iter; ++it) {
     fill_spd(S, &S.active);
     factor_spd(S);
     for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
     S.ldlt.solve(b.data(), S.sol.data());
-    double pscale = 0.0;
+    double pscale = pscale_fixed;
     for (int i = 0; i < S.n_unk; ++i) {
       const int n = S.node_of[i];
       p[n] = S.active[i] ? 0.0 : S.sol[i];
       pscale = std::max(pscale, std::abs(p[n]));
     }
-    for (int n = 0; n < n_nodes; ++n)
-      if (fixed[n]) pscale = std::max(pscale, std::abs(p[n]));
     if (S.half) mirror_fields();
     const double tol_p = 1e-13 * pscale;
     const double tol_mu = 1e-13 * bscale;
