@@ -135,7 +135,16 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
       p[n] = S.active[i] ? 0.0 : S.sol[i];
       pscale = std::max(pscale, std::abs(p[n]));
     }
-    if (S.half) mirror_fields();
+    // The half system's mirrored rows: only p is read below (the fill stays 1 with this
+    // model, pfull is set from p on convergence).
+    if (S.half) {
+      const int kend = mirror_end();
+      for (int j = 0; j < N; ++j)
+        for (int k = Kh + 1; k < kend; ++k) {
+          const int n = j * K1 + k;
+          p[n] = p[mirror(n)];
+        }
+    }
     const double tol_p = 1e-13 * pscale;
     const double tol_mu = 1e-13 * bscale;
     bool changed = false;
@@ -297,17 +306,23 @@ void ReynoldsSolver::Impl::postprocess() {
 // The part of postprocess() a caller integrating p itself needs: p and h_min (the same
 // values bit for bit), no force, torque, flows or fill copies.
 void ReynoldsSolver::Impl::postprocess_pressure() {
-  double hmin = h[0];
-  int nmin = 0;
-  bool finite = true;
-  for (int n = 0; n < n_nodes; ++n) {
-    finite = finite && std::isfinite(p[n]);
-    if (h[n] < hmin) {
-      hmin = h[n];
-      nmin = n;
+  // Four independent lanes (0·p is NaN exactly when p is not finite); the node of the
+  // minimum film is the first one that attains it, as in postprocess().
+  double m4[4] = {h[0], h[0], h[0], h[0]}, c4[4] = {0.0, 0.0, 0.0, 0.0};
+  int q = 0;
+  for (; q + 4 <= n_nodes; q += 4)
+    for (int l = 0; l < 4; ++l) {
+      m4[l] = std::min(m4[l], h[q + l]);
+      c4[l] += 0.0 * p[q + l];
     }
+  for (; q < n_nodes; ++q) {
+    m4[0] = std::min(m4[0], h[q]);
+    c4[0] += 0.0 * p[q];
   }
-  if (!finite)
+  const double hmin = std::min(std::min(m4[0], m4[1]), std::min(m4[2], m4[3]));
+  int nmin = 0;
+  while (h[nmin] != hmin) ++nmin;
+  if (!(c4[0] + c4[1] + c4[2] + c4[3] == 0.0))
     throw ConvergenceError(
         "Reynolds solve: non-finite pressure (the film's pressure scale "
         "viscosity_pa_s*omega*(R/clearance_m)^2 = " +
