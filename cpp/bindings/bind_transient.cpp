@@ -95,7 +95,12 @@ void bind_transient(py::module_& m) {
       .def_readonly("rhs_evals", &TransientResult::rhs_evals)
       .def_readonly("jac_evals", &TransientResult::jac_evals)
       .def_readonly("newton_fails", &TransientResult::newton_fails)
-      .def_readonly("error_test_fails", &TransientResult::error_test_fails);
+      .def_readonly("error_test_fails", &TransientResult::error_test_fails)
+      .def_readonly("linear_setups", &TransientResult::linear_setups)
+      .def_readonly("newton_iters", &TransientResult::newton_iters)
+      .def_readonly("stab_lim_order_reductions", &TransientResult::stab_lim_order_reductions)
+      .def_readonly("reynolds_solves", &TransientResult::reynolds_solves)
+      .def_readonly("reynolds_iterations", &TransientResult::reynolds_iterations);
   m.def("integrate", &integrate, py::arg("solver"), py::arg("input"), py::arg("options"),
         py::call_guard<py::gil_scoped_release>(),
         "Integrate eq. 12 with CVODE from t = 0 to input.t_out[-1].");

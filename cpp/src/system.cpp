@@ -200,6 +200,7 @@ void SystemSolver::solve_one(std::size_t i, const Eigen::VectorXd& rc,
   f.dhdt = vphi.replicate(1, K1);
   const FilmSolution& s = f.solver.solve(f.h, f.dhdt, fc.spin_factor * omega);
   ++solves_;
+  iterations_ += s.iterations;
   f.p = s.p_pa;
   h_min_[i] = s.h_min_m;
   h_min_angle_[i] = s.h_min_angle_deg;

@@ -316,6 +316,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     explicit Continuation(SystemSolver& solver) : s(solver) { s.set_film_continuation(true); }
     ~Continuation() { s.set_film_continuation(false); }
   } continuation(solver);
+  const long solves0 = solver.reynolds_solves(), iters0 = solver.reynolds_iterations();
 
   Ctx c;
   c.solver = &solver;
@@ -436,6 +437,12 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     out.newton_fails += v;
     CVodeGetNumErrTestFails(mem, &v);
     out.error_test_fails += v;
+    CVodeGetNumLinSolvSetups(mem, &v);
+    out.linear_setups += v;
+    CVodeGetNumNonlinSolvIters(mem, &v);
+    out.newton_iters += v;
+    CVodeGetNumStabLimOrderReds(mem, &v);
+    out.stab_lim_order_reductions += v;
   };
   long k_next = 1;
   auto t_sample = [&](long k) { return static_cast<double>(k) * K.sample_time; };
@@ -485,6 +492,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     for (std::size_t k = 0; k < hm.size(); ++k) out.h_min(i, static_cast<Eigen::Index>(k)) = hm[k];
   }
   harvest();
+  out.reynolds_solves = solver.reynolds_solves() - solves0;
+  out.reynolds_iterations = solver.reynolds_iterations() - iters0;
   cleanup();
   return out;
 }

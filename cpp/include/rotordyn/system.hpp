@@ -145,6 +145,8 @@ class SystemSolver {
                                 const Eigen::VectorXd& r0, const EquilibriumOptions& opt);
 
   int reynolds_solves() const { return solves_; }
+  /// Active-set (or linear) iterations summed over those solves: sparse factorisations.
+  long reynolds_iterations() const { return iterations_; }
   /// Cavitation-set continuation in every film (ReynoldsSolver::set_continuation): on for the
   /// duration of one transient run (consecutive right-hand sides at nearby states), off
   /// otherwise. Each switch forgets the stored sets.
@@ -165,6 +167,7 @@ class SystemSolver {
   std::vector<std::unique_ptr<Film>> films_;
   std::vector<double> h_min_, h_min_angle_;
   int solves_ = 0;
+  long iterations_ = 0;
   // The state of the films' last solve: a call at the same (r, ṙ, Ω) — an equilibrium's
   // final point then its linearisation, a CVODE right-hand side then its Jacobian — reuses
   // the pressures and factorisations instead of solving again.

@@ -61,6 +61,12 @@ struct TransientResult {
   std::string status = "ok";       ///< ok | contact | not_converged | error
   std::string message;
   long steps = 0, rhs_evals = 0, jac_evals = 0, newton_fails = 0, error_test_fails = 0;
+  /// CVODE's linear-solver setups (dense LU of I − γJ), Newton iterations and order
+  /// reductions by the stability-limit detection; the Reynolds solves of the run (right-hand
+  /// sides at a new state and the Jacobians' base states) and their active-set iterations
+  /// (one sparse factorisation each).
+  long linear_setups = 0, newton_iters = 0, stab_lim_order_reductions = 0;
+  long reynolds_solves = 0, reynolds_iterations = 0;
 };
 
 /// Integrate from t = 0 to t_out.back(); a failure stops the run with a status (the rows
