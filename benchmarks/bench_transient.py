@@ -13,7 +13,14 @@ integration is nothing but its film solves.
 Baseline in the same run: the same integration plus one Reynolds solve per output time, which
 is what recording the minimum film thickness cost before it came from the geometry (the
 solve is replayed at each output state after the run, so both rows integrate identically).
+Accuracy: the largest error over all output times against a reference run at rtol 1e-10,
+atol 1e-14 m (``--no-reference`` skips it), so a speed-up that changes the integrator's path
+is seen to keep the accuracy. CVODE's statistics (linear setups, Newton iterations,
+stability-limit order reductions) and the Reynolds solves / active-set iterations of the run
+are printed when the installed rotordyn reports them.
 Goals (issue 11): decaying ≥ 10 simulated s per wall s, limit cycle ≥ 2, ratio ≤ 1.5.
+Before/after a change: run this script alternately with the old and the new build (e.g.
+``PYTHONPATH=<old site-packages copy>``) and compare the medians.
 """
 
 from __future__ import annotations
@@ -64,6 +71,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--seconds", type=float, default=0.5, help="simulated time per run, s")
+    ap.add_argument("--no-reference", action="store_true",
+                    help="skip the rtol-1e-10 reference runs (accuracy)")
     args = ap.parse_args(argv)
     header("bench_transient: paper rig, 50 Hz, a_y = -1.85 mm, 64 outputs per revolution")
     rig = rd.models.paper_rig()
@@ -102,6 +111,20 @@ def main(argv=None):
               f"calls x cost = {fmt(pred)}")
         print(f"  wall / (calls x cost) = {t['new'].wall / pred:.2f}, "
               f"CPU / (calls x cost) = {t['new'].cpu / pred:.2f}")
+        if "linear_setups" in st:
+            print(f"  CVODE: {st['linear_setups']} linear setups, {st['newton_iters']} Newton "
+                  f"iterations, {st['stab_lim_order_reductions']} stability-limit order "
+                  f"reductions; {st['reynolds_solves']} Reynolds solves, "
+                  f"{st['reynolds_iterations'] / max(st['reynolds_solves'], 1):.2f} active-set "
+                  f"iterations (factorisations) per solve; CPU per RHS "
+                  f"{fmt(t['new'].cpu / st['rhs_evals'])} (all-in)")
+        if not args.no_reference:
+            ref = rd.transient(rig, args.seconds, SPEED_HZ, pc, AY_M,
+                               disturbance_m=(0.0, 0.1 * C_M), n_out=n_out, rtol=1e-10,
+                               atol_m=1e-14, max_steps=5_000_000)
+            err = np.abs(tr.r - ref.r).max()
+            print(f"  accuracy: max |r - r_ref| over the {n_out} outputs = {err:.2e} m "
+                  f"({err / C_M:.1e} c; reference rtol 1e-10, {ref.stats['steps']} steps)")
     footer()
 
 
