@@ -153,8 +153,10 @@ const RowMatrixXd& SystemSolver::last_pressure(int film) const {
 
 void SystemSolver::solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
                                double omega) {
-  require(r.size() == model_.n(), shape_msg("r", model_.n(), 1, r.size(), 1));
-  require(rdot.size() == model_.n(), shape_msg("rdot", model_.n(), 1, rdot.size(), 1));
+  // (the messages are built only on failure: this runs once per transient right-hand side)
+  if (r.size() != model_.n()) throw InputError(shape_msg("r", model_.n(), 1, r.size(), 1));
+  if (rdot.size() != model_.n())
+    throw InputError(shape_msg("rdot", model_.n(), 1, rdot.size(), 1));
   if (solved_ && omega == last_omega_ && r == last_r_ && rdot == last_rdot_) return;
   {  // a speed outside a bearing table is an InputError before any Reynolds solve
     Eigen::Matrix2d Kt, Ct;
@@ -240,7 +242,7 @@ void SystemSolver::set_film_continuation(bool on) {
 }
 
 std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
-  require(r.size() == model_.n(), shape_msg("r", model_.n(), 1, r.size(), 1));
+  if (r.size() != model_.n()) throw InputError(shape_msg("r", model_.n(), 1, r.size(), 1));
   std::vector<double> out(model_.films.size());
   for (std::size_t i = 0; i < model_.films.size(); ++i) {
     const FilmCoupling& fc = model_.films[i];

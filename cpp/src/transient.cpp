@@ -299,7 +299,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   require(in.t_out.size() > 0 && in.t_out.allFinite() && in.t_out(0) >= 0,
           "t_out: expected a non-empty array of times >= 0");
   for (Eigen::Index i = 1; i < in.t_out.size(); ++i)
-    require(in.t_out(i) > in.t_out(i - 1), "t_out: expected strictly increasing times");
+    if (!(in.t_out(i) > in.t_out(i - 1)))
+      throw InputError("t_out: expected strictly increasing times");
   require(opt.rtol > 0 && opt.rtol < 1 && opt.atol_position > 0 && opt.atol_velocity > 0 &&
               opt.atol_pressure > 0 && opt.atol_controller > 0,
           "cvode options: tolerances must be positive");
