@@ -139,3 +139,18 @@ def test_a_run_does_not_depend_on_what_ran_before(rig):
     np.testing.assert_array_equal(a.h_min_m, b.h_min_m)
     e1 = rd.equilibrium(rig, 40.0, 0.1e6, -1.0e-3, warm_start=False)
     np.testing.assert_array_equal(e0.r, e1.r)
+
+
+def test_the_path_does_not_depend_on_the_output_times(rig):
+    """CVODE steps toward t_end and interpolates each output (since the speed work of
+    docs/performance.md): the steps, and so the states at common output times, are the same
+    for any output grid, bit for bit (before, the first step was sized from the first output
+    time, so n_out changed the whole path)."""
+    kw = dict(disturbance_m=(0.0, 3e-5))
+    a = rd.transient(rig, 0.04, 50.0, 0.15e6, -1.85e-3, n_out=41, **kw)
+    b = rd.transient(rig, 0.04, 50.0, 0.15e6, -1.85e-3, n_out=81, **kw)
+    c = rd.transient(rig, 0.04, 50.0, 0.15e6, -1.85e-3, n_out=2, **kw)
+    assert a.status == b.status == c.status == "ok"
+    assert a.stats == b.stats == c.stats
+    assert np.array_equal(a.r, b.r[::2]) and np.array_equal(a.v, b.v[::2])
+    assert np.array_equal(a.r[-1], c.r[-1])

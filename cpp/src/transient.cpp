@@ -361,6 +361,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   SUNContext ctx = *sunctx;
   const sunindextype N = static_cast<sunindextype>(c.N);
   N_Vector y = N_VNew_Serial(N, ctx);
+  N_Vector yo = N_VNew_Serial(N, ctx);  // the state at the output time (interpolated)
   N_Vector abstol = N_VNew_Serial(N, ctx);
   SUNMatrix A = SUNDenseMatrix(N, N, ctx);
   SUNLinearSolver LS = SUNLinSol_Dense(y, A, ctx);
@@ -370,6 +371,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     SUNLinSolFree(LS);
     SUNMatDestroy(A);
     N_VDestroy(abstol);
+    N_VDestroy(yo);
     N_VDestroy(y);
   };
   auto check = [&](int flag, const char* where) {
@@ -447,7 +449,10 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   };
   long k_next = 1;
   auto t_sample = [&](long k) { return static_cast<double>(k) * K.sample_time; };
-  double t = 0.0;
+  double t = 0.0;   // time of the state in Yo (the last output)
+  double tn = 0.0;  // time CVODE has reached (continuous runs, one step at a time)
+  Eigen::Map<Eigen::VectorXd> Yo(N_VGetArrayPointer(yo), N);
+  Yo = Y;
   for (Eigen::Index i = 0; i < nt; ++i) {
     int flag = CV_SUCCESS;
     const double target = in.t_out(i);
@@ -464,32 +469,56 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       harvest();
       check(CVodeReInit(mem, t, y), "CVodeReInit");
     }
-    if (flag >= 0 && target > t) {
-      if (c.kdisc) check(CVodeSetStopTime(mem, target), "CVodeSetStopTime");
+    if (flag >= 0 && target > t && c.kdisc) {
+      check(CVodeSetStopTime(mem, target), "CVodeSetStopTime");
       flag = CVode(mem, target, y, &t, CV_NORMAL);
-      if (flag >= 0 && c.kdisc) t = target;
+      if (flag >= 0) t = target;
+    } else if (flag >= 0 && target > t) {
+      // Continuous run: CVODE steps toward t_end (its first step is sized from t_end, so the
+      // path does not depend on the output times) and each output is interpolated from the
+      // step that passed it (what CV_NORMAL does too).
+      // max_steps bounds the steps between two outputs, as CVODE's mxstep does in CV_NORMAL.
+      long steps0 = 0, steps = 0;
+      CVodeGetNumSteps(mem, &steps0);
+      while (flag >= 0 && tn < target) {
+        CVodeGetNumSteps(mem, &steps);
+        if (steps - steps0 >= opt.max_steps) {
+          flag = CV_TOO_MUCH_WORK;
+          c.cvode_message = "max_steps = " + std::to_string(opt.max_steps) +
+                            " steps taken before reaching the output time " +
+                            std::to_string(target) + " s";
+          break;
+        }
+        flag = CVode(mem, t_end, y, &tn, CV_ONE_STEP);
+      }
+      if (flag >= 0) {
+        check(CVodeGetDky(mem, target, 0, yo), "CVodeGetDky");
+        t = target;
+      }
     }
+    if (c.kdisc) Yo = Y;  // discrete controller: CVODE stopped exactly at the output time
     if (flag < 0) {
       out.status = c.contact ? "contact" : "not_converged";
-      out.message = cvode_flag_name(flag) + " at t = " + std::to_string(t) + " s" +
+      const double t_fail = c.kdisc ? t : tn;
+      out.message = cvode_flag_name(flag) + " at t = " + std::to_string(t_fail) + " s" +
                     (c.last_error.empty() ? "" : ": " + c.last_error) +
                     (c.cvode_message.empty() ? "" : " [" + c.cvode_message + "]");
       break;
     }
     out.t(i) = target;
-    out.r.row(i) = Y.head(n).transpose();
-    out.v.row(i) = Y.segment(n, n).transpose();
-    const Point P = evaluate(c, target, Y.data());
+    out.r.row(i) = Yo.head(n).transpose();
+    out.v.row(i) = Yo.segment(n, n).transpose();
+    const Point P = evaluate(c, target, Yo.data());
     out.speed(i) = P.omega;
     out.angle(i) = P.theta;
     out.pc_command(i) = P.cmd;
     out.pc(i) = P.pc;
     out.controller_output(i) = P.u;
-    if (c.na) out.actuator_states.row(i) = Y.segment(2 * n, c.na).transpose();
-    if (c.kcont) out.controller_states.row(i) = Y.tail(c.nk).transpose();
+    if (c.na) out.actuator_states.row(i) = Yo.segment(2 * n, c.na).transpose();
+    if (c.kcont) out.controller_states.row(i) = Yo.tail(c.nk).transpose();
     if (c.kdisc) out.controller_states.row(i) = c.xk.transpose();
     // The film thickness needs no pressure: from the geometry, not a Reynolds solve.
-    const std::vector<double> hm = solver.film_h_min(Y.head(n));
+    const std::vector<double> hm = solver.film_h_min(Yo.head(n));
     for (std::size_t k = 0; k < hm.size(); ++k) out.h_min(i, static_cast<Eigen::Index>(k)) = hm[k];
   }
   harvest();
