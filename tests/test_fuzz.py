@@ -10,7 +10,7 @@ agrees with the eigenvalues; "contact" iff a converged film is thin). Never anot
 (tests/fuzz_cases.py), so a segfault or a hang fails the case, not the run.
 
 Budget: derandomized (a fixed seed: CI is reproducible), ``max_examples`` per test scaled by
-ROTORDYN_FUZZ_SCALE (1 in ``make test``: 500 cases, ~30 s on 2 cores; ``make fuzz`` runs 20x
+ROTORDYN_FUZZ_SCALE (1 in ``make test``: 540 cases, ~60 s on 2 cores; ``make fuzz`` runs 20x
 with a random seed and prints the failing example's reproduction blob).
 
 The film items of issue 13 (non-finite forces at extreme velocities/speeds/groove
