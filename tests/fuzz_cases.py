@@ -202,7 +202,52 @@ def cli(p: dict) -> list:
     return v
 
 
-CASES = {"bearing": bearing, "system": system, "toml": toml, "cli": cli}
+def element(p: dict) -> list:
+    """A rotordyn.bearings element built from fields and its coefficient table over speeds
+    (tilting pads: the C++ pad assembly; dampers: end seals; tables: interpolation and mass).
+    A row is either converged with finite K, C and a journal inside the clearance, or not ok
+    with NaN coefficients and a message."""
+    from rotordyn import bearings as B
+
+    v: list = []
+    cls = {"fixed_geometry": B.FixedGeometryBearing, "tilting_pad": B.TiltingPadBearing,
+           "squeeze_film_damper": B.SqueezeFilmDamper, "table": B.TableBearing}[p["kind"]]
+    b = cls(**p["fields"])
+    if p["kind"] == "table":
+        K, C = b.coefficients(p["speed_hz"])[:2]
+        _finite("K", K, v)
+        _finite("C", C, v)
+        if b.has_mass:
+            _finite("M", b.mass(p["speed_hz"]), v)
+        return v
+    if p["kind"] == "squeeze_film_damper":  # no spin: orbit coefficients and film forces
+        oc = b.orbit_coefficients(eccentricity_ratio=p["eps"], whirl_hz=p["speed_hz"])
+        for k, x in oc.items():
+            _finite(k, x, v)
+        c = p["fields"].get("clearance_m", 0.0)
+        f = b.forces(x_m=0.5 * p["eps"] * c, y_m=0.0, vx_m_s=0.0, vy_m_s=p["speed_hz"] * 1e-5)
+        _finite("force", f, v)
+        return v
+    tab = b.coefficient_table(p["speeds_hz"], p["load_n"])
+    # the journal stays inside the machined clearance C_b/(1 - m) (preload m; lobes)
+    limit = tab.clearance_m / (1.0 - b.resolved()[0]) if p["kind"] == "fixed_geometry" else \
+        tab.clearance_m
+    for i, stt in enumerate(tab.status):
+        if stt in ("ok", "contact"):
+            _finite(f"K[{i}]", tab.K[i], v)
+            _finite(f"C[{i}]", tab.C[i], v)
+            e = math.hypot(tab.x_m[i], tab.y_m[i]) / limit
+            if not e < 1.0 + 1e-9 and p["kind"] != "tilting_pad":
+                v.append(f"row {i} {stt} outside the clearance: eps {e}")
+        else:
+            if not tab.message[i]:
+                v.append(f"row {i} status {stt} without a message")
+            if np.any(np.isfinite(tab.K[i])) or np.any(np.isfinite(tab.C[i])):
+                v.append(f"row {i} status {stt} with finite coefficients")
+    return v
+
+
+CASES = {"bearing": bearing, "element": element, "system": system, "toml": toml, "cli": cli}
 
 
 def run_case(kind: str, payload: dict) -> dict:

@@ -98,3 +98,24 @@ def test_cli_table_csv(tmp_path, capsys):
     K, C = jb.coefficients(x_m=e.x_m, y_m=e.y_m, speed_hz=70.0)
     Kt, Ct = tb.coefficients(70.0)
     np.testing.assert_allclose(Kt, K, rtol=1e-8, atol=1e-8 * np.abs(K).max())
+
+
+def test_contact_rows_are_linearised_like_the_system():
+    """A heavily loaded slow row converges with a thin film (status ``contact``: converged,
+    h_min < 0.02 c). Like every system analysis, the table linearises it: finite K, C equal to
+    a perturbation linearisation at the same equilibrium (JournalBearing.coefficients) to
+    1e-9. (Found by the element fuzz case: contact rows came back as NaN.)"""
+    from rotordyn.bearings import FixedGeometryBearing
+
+    geo = dict(station=0, diameter_m=0.1, length_m=0.05, clearance_m=1e-4,
+               viscosity_pa_s=0.03, n_circ=36, n_axial=6)
+    b = FixedGeometryBearing(kind="partial_arc", arc_deg=360.0, **geo)
+    t = b.coefficient_table([1.0, 50.0], (0.0, -1.0e4))
+    assert t.status == ("contact", "ok"), t.message
+    assert "below 0.02 c" in t.message[0]
+    assert np.all(np.isfinite(t.K)) and np.all(np.isfinite(t.C))
+    # the 360° arc is the plain bearing: its coefficients at the table's equilibrium
+    jb = rotordyn.JournalBearing(**{k: v for k, v in geo.items() if k != "station"})
+    K, C = jb.coefficients(x_m=t.x_m[0], y_m=t.y_m[0], speed_hz=1.0)
+    assert np.allclose(t.K[0], K, rtol=1e-9, atol=1e-9 * np.abs(K).max())
+    assert np.allclose(t.C[0], C, rtol=1e-9, atol=1e-9 * np.abs(C).max())

@@ -1,5 +1,6 @@
 """Property-based fuzzing (issue 13) of the bearing, the system analyses, the TOML loader and
-the CLI, as a careless or hostile user would call them.
+the CLI, and of the bearing elements (rotordyn.bearings), as a careless or hostile user
+would call them.
 
 Property: every call ends in a rotordyn exception whose message starts with the field it
 names (CLI: exit code 2 and one such line), or in a result that is finite and whose status is
@@ -9,7 +10,7 @@ agrees with the eigenvalues; "contact" iff a converged film is thin). Never anot
 (tests/fuzz_cases.py), so a segfault or a hang fails the case, not the run.
 
 Budget: derandomized (a fixed seed: CI is reproducible), ``max_examples`` per test scaled by
-ROTORDYN_FUZZ_SCALE (1 in ``make test``: 500 cases, ~30 s on 2 cores; ``make fuzz`` runs 20x
+ROTORDYN_FUZZ_SCALE (1 in ``make test``: 540 cases, ~60 s on 2 cores; ``make fuzz`` runs 20x
 with a random seed and prints the failing example's reproduction blob).
 
 The film items of issue 13 (non-finite forces at extreme velocities/speeds/groove
@@ -137,6 +138,58 @@ def bearing_payload(draw):
 @given(p=bearing_payload())
 def test_fuzz_bearing(worker, p):
     check(worker, "bearing", p)
+
+
+# -- bearing elements (rotordyn.bearings) -----------------------------------------------------
+FILM = {"station": 0, "diameter_m": 0.1, "length_m": 0.05, "clearance_m": 1e-4,
+        "viscosity_pa_s": 0.03, "n_circ": 36, "n_axial": 6}
+
+
+@st.composite
+def element_payload(draw):
+    kind = draw(st.sampled_from(["fixed_geometry", "tilting_pad", "tilting_pad",
+                                 "squeeze_film_damper", "table"]))
+    if kind == "fixed_geometry":
+        f = dict(FILM, kind=draw(st.sampled_from(["partial_arc", "two_axial_groove", "elliptical",
+                                                  "offset_halves", "three_lobe", "four_lobe",
+                                                  "pressure_dam"])),
+                 preload=draw(st.one_of(st.none(), st.floats(0, 0.9))),
+                 cavitation=draw(st.sampled_from(["reynolds", "gumbel"])))
+    elif kind == "tilting_pad":
+        f = dict(FILM, n_pads=draw(st.integers(2, 8)), pad_arc_deg=draw(st.floats(20, 100)),
+                 pivot_offset=draw(st.floats(0.05, 0.95)), preload=draw(st.floats(0, 0.8)),
+                 load=draw(st.sampled_from(["between", "on"])),
+                 pivot_stiffness_n_per_m=draw(st.sampled_from([0.0, 1e5, 1e8, 1e12])),
+                 pad_mass_kg=0.5)
+        if f["n_pads"] * f["pad_arc_deg"] > 340:
+            f["pad_arc_deg"] = 340 / f["n_pads"]
+    elif kind == "squeeze_film_damper":
+        f = dict(FILM, cavitation=draw(st.sampled_from(["none", "gumbel", "reynolds"])),
+                 centring_spring_n_per_m=draw(st.sampled_from([0.0, 1e6])),
+                 end_seal_conductance_m3_per_pa_s_per_m=draw(st.sampled_from(
+                     [None, 1e-12, 1e-9, 1e-6, 0.0, math.inf])))
+    else:
+        n = draw(st.integers(1, 4))
+        sp = draw(st.lists(st.floats(1, 300), min_size=n, max_size=n, unique=True))
+        if draw(st.integers(0, 3)):
+            sp = sorted(sp)
+        col = st.lists(st.floats(-1e9, 1e9), min_size=n, max_size=n).map(tuple)
+        f = {"station": 0, "speeds_hz": tuple(sp), "kxx_n_per_m": draw(col),
+             "kyy_n_per_m": draw(col), "cxx_n_s_per_m": draw(col),
+             "extrapolate": draw(st.booleans())}
+        if draw(st.booleans()):
+            f.update(mxx_kg=draw(col), mxy_kg=draw(col), myx_kg=draw(col), myy_kg=draw(col))
+    f = draw(hostile(f, share=6))
+    return {"kind": kind, "fields": f, "speed_hz": draw(st.floats(0.5, 400)),
+            "eps": draw(st.one_of(st.floats(0.01, 0.95), SPECIAL)),
+            "speeds_hz": draw(st.lists(st.floats(1, 300), min_size=1, max_size=3)),
+            "load_n": (draw(st.floats(-2e3, 2e3)), draw(st.floats(-2e4, -1.0)))}
+
+
+@budget(40)
+@given(p=element_payload())
+def test_fuzz_bearing_elements(worker, p):
+    check(worker, "element", p)
 
 
 # -- system analyses ------------------------------------------------------------------------

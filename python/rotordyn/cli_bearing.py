@@ -17,6 +17,7 @@ from rotordyn.bearing import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.cli_common import json_text
 from rotordyn.cli_common import speeds as _speeds
 from rotordyn.errors import InputError
+from rotordyn.results.equilibrium import CONVERGED
 
 
 def _groove(text: str) -> Groove:
@@ -152,4 +153,4 @@ def _table(b: JournalBearing, args: argparse.Namespace) -> int:
         print(t.to_frame().to_json(orient="records", indent=2))
     else:
         print(t.to_frame().to_string(index=False))
-    return 0 if all(s == "ok" for s in t.status) else 1
+    return 0 if all(s in CONVERGED for s in t.status) else 1

@@ -41,7 +41,11 @@ OperatingPointTable operating_points(const SystemModel& model, const Eigen::Vect
 /// start. The stiff penalty first holds the pads near their aligned position (every pad with
 /// a convergent, pressurised film), then releases them gradually, so Newton does not jump onto
 /// the pressure-free branch of an unloaded pad (fully divergent film: zero moment at any tilt).
-/// Returns the last converged stage's r (r0 / zero if none converged).
+/// Returns the last converged stage's r (r0 / zero if none converged). The stages stop once
+/// the failed ones' Reynolds solves exceed kHomotopyMaxSolves (bounded cost where no start
+/// exists).
+inline constexpr long kHomotopyMaxSolves = 30000;
+
 Eigen::VectorXd homotopy_start(const SystemModel& model, double omega, double chamber_pressure,
                                const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
                                const EquilibriumOptions& options,

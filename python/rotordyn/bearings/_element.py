@@ -11,6 +11,7 @@ import numpy as np
 from rotordyn import _validate as v
 from rotordyn.bearing import CAVITATION_MODELS
 from rotordyn.errors import InputError
+from rotordyn.results.equilibrium import CONVERGED
 
 COEFF_NAMES = ("kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy")
 
@@ -44,7 +45,8 @@ class CoefficientTable:
     """Bearing coefficients over speed at a static load: one row per speed.
 
     ``K``, ``C`` (n_s, 2, 2) in N/m and N·s/m (dF = −K dq − C dq̇, DESIGN frame), ``x_m``,
-    ``y_m`` the journal's equilibrium, ``status``/``message`` per row (rows not ok are NaN).
+    ``y_m`` the journal's equilibrium, ``status``/``message`` per row (rows neither ok nor
+    contact — a converged thin film, its message says so — are NaN).
     ``whirl`` says at which whirl frequency extra coordinates (pads) were condensed."""
 
     speeds_hz: np.ndarray
@@ -84,9 +86,9 @@ class CoefficientTable:
         return text
 
     def __repr__(self) -> str:
-        ok = sum(s == "ok" for s in self.status)
+        ok = sum(s in CONVERGED for s in self.status)
         return (f"CoefficientTable({len(self.speeds_hz)} speeds {self.speeds_hz[0]:g}.."
-                f"{self.speeds_hz[-1]:g} Hz, {ok} ok)")
+                f"{self.speeds_hz[-1]:g} Hz, {ok} converged)")
 
 
 def coefficient_table(parts, load_n, speeds_hz, clearance_m: float, *, n_threads: int = 1,
@@ -105,7 +107,7 @@ def coefficient_table(parts, load_n, speeds_hz, clearance_m: float, *, n_threads
     K = np.full((len(s), 2, 2), np.nan)
     C = np.full((len(s), 2, 2), np.nan)
     for i in range(len(s)):
-        if status[i] != "ok":
+        if status[i] not in CONVERGED:  # ok, or contact (converged, thin film)
             continue
         nu = 0.0 if whirl_ratio is None else whirl_ratio * 2 * math.pi * abs(s[i])
         K[i], C[i] = reduce_coefficients(KH[i], DH[i], M, nu)

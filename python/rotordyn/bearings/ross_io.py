@@ -19,6 +19,7 @@ import math
 import numpy as np
 
 from rotordyn.errors import InputError
+from rotordyn.results.equilibrium import CONVERGED
 
 _COEF = ("kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy")
 _MASS = ("mxx", "mxy", "myx", "myy")
@@ -57,7 +58,7 @@ def to_ross_bearing(source, *, n: int, speeds_hz=None, load_n=None, tag: str | N
             if speeds_hz is None or load_n is None:
                 raise InputError("speeds_hz, load_n: required to tabulate a bearing for ROSS")
             source = source.coefficient_table(speeds_hz, load_n, n_threads=n_threads)
-        bad = [i for i, s in enumerate(source.status) if s != "ok"]
+        bad = [i for i, s in enumerate(source.status) if s not in CONVERGED]
         if bad:
             i = bad[0]
             raise InputError(f"speeds_hz: no coefficients at {source.speeds_hz[i]:g} Hz "

@@ -24,6 +24,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn import _validate as v
 from rotordyn.errors import InputError
+from rotordyn.results.equilibrium import CONVERGED
 
 K_FIELDS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m")
 C_FIELDS = ("cxx_n_s_per_m", "cxy_n_s_per_m", "cyx_n_s_per_m", "cyy_n_s_per_m")
@@ -179,8 +180,9 @@ class TableBearing:
 
     @classmethod
     def from_coefficient_table(cls, table, *, station: int, **kw) -> "TableBearing":
-        """A table bearing from a :class:`~rotordyn.bearings.CoefficientTable` (rows ok only)."""
-        bad = [i for i, s in enumerate(table.status) if s != "ok"]
+        """A table bearing from a :class:`~rotordyn.bearings.CoefficientTable` (converged rows
+        only: ok or contact)."""
+        bad = [i for i, s in enumerate(table.status) if s not in CONVERGED]
         if bad:
             raise InputError(f"table: row {bad[0]} ({table.speeds_hz[bad[0]]:g} Hz) is "
                              f"{table.status[bad[0]]}: {table.message[bad[0]]}")

@@ -193,7 +193,9 @@ class TiltingPadBearing:
         parts = self.system_parts(0, 1, 2, self.name or "bearing")
         r, K, C, status, message, M = operating_table(parts, check_load(load_n),
                                                       check_speeds(speed_hz))
-        if status[0] != "ok":
+        from rotordyn.results.equilibrium import CONVERGED
+
+        if status[0] not in CONVERGED:  # ok, or contact (converged with a thin film)
             from rotordyn.errors import ConvergenceError
 
             raise ConvergenceError(f"tilting-pad equilibrium: {status[0]}: {message[0]}")
