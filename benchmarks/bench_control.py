@@ -153,6 +153,7 @@ def main():
             tr, wall, cpu = timed(fn)
             assert tr.status == "ok", tr.message
             res[name].append((wall, cpu, tr.stats["rhs_evals"], tr.stats["steps"]))
+            last_stats = dict(tr.stats)
     med = {}
     for name, rows in res.items():
         wall = statistics.median(r[0] for r in rows)
@@ -162,6 +163,15 @@ def main():
         print(f"{name:10s}: {args.t_sim / wall:7.3f} sim-s/wall-s ({args.t_sim / cpu:.3f} "
               f"per CPU-s), wall {wall:.3f} s, CPU {cpu:.3f} s, {steps} steps, {rhs} RHS, "
               f"{1e6 * cpu / rhs:.1f} µs CPU per RHS")
+    if "reynolds_solves" in last_stats:  # the closed loop (the last case run)
+        st = last_stats
+        print(f"closed-loop CVODE statistics: {st['jac_evals']} Jacobians, "
+              f"{st['linear_setups']} linear setups, {st['newton_iters']} Newton iterations, "
+              f"{st['error_test_fails']} error-test failures, "
+              f"{st['stab_lim_order_reductions']} stability-limit order reductions; "
+              f"{st['reynolds_solves']} Reynolds solves, "
+              f"{st['reynolds_iterations'] / max(st['reynolds_solves'], 1):.2f} "
+              "active-set iterations (sparse factorisations) per solve")
     extra = med["closed"][1] / med["closed"][2] / (med["open"][1] / med["open"][2]) - 1
     print(f"controller + valve cost per right-hand side: {100 * extra:+.1f} % (goal < 20 %); "
           f"per simulated second: {100 * (med['closed'][1] / med['open'][1] - 1):+.1f} % "
