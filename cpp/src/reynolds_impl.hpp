@@ -54,6 +54,10 @@ struct LinearSystem {
   std::vector<char> has_s;     // unknown -> couples to its k-1 neighbour (0 on a sealed z = -L/2 row)
   SpMat A;                     // 5-point pattern, both triangles, explicit zeros kept
   std::vector<ColPos> pos;
+  struct Nbr {
+    int e, w, n, s;  // neighbour unknowns of (i) where pos has a slot (else unused)
+  };
+  std::vector<Nbr> nbr;
   StaticLDLT ldlt;             // symbolic once per system, numeric per call
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
   bool lu_analysed = false;

@@ -242,8 +242,11 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
     return -1;
   };
   S.pos.resize(S.n_unk);
+  S.nbr.resize(S.n_unk);
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
+    S.nbr[i] = LinearSystem::Nbr{S.unk[east(n)], S.unk[west(n)],
+                                 S.has_n[i] ? S.unk[n + 1] : -1, S.has_s[i] ? S.unk[n - 1] : -1};
     S.pos[i] = LinearSystem::ColPos{find(i, i), find(S.unk[east(n)], i), find(S.unk[west(n)], i),
                                     S.has_n[i] ? find(S.unk[n + 1], i) : -1,
                                     S.has_s[i] ? find(S.unk[n - 1], i) : -1};
@@ -354,11 +357,11 @@ void ReynoldsSolver::Impl::base_rhs(const LinearSystem& S, Eigen::VectorXd& b) c
 
 void ReynoldsSolver::Impl::fill_spd(LinearSystem& S, const std::vector<char>* mask) {
   double* val = S.A.valuePtr();
+  const char* mk = mask ? mask->data() : nullptr;
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
     const LinearSystem::ColPos& q = S.pos[i];
-    const int e = east(n), w = west(n);
-    if (mask && (*mask)[i]) {
+    if (mk && mk[i]) {
       val[q.diag] = 1.0;
       if (q.e >= 0) val[q.e] = 0.0;
       if (q.w >= 0) val[q.w] = 0.0;
@@ -366,20 +369,19 @@ void ReynoldsSolver::Impl::fill_spd(LinearSystem& S, const std::vector<char>* ma
       if (q.s >= 0) val[q.s] = 0.0;
       continue;
     }
+    const int w = west(n);
     const double wp = S.wphi[i];
     if (S.has_s[i])
       val[q.diag] = wp * (cE[n] + cE[w]) + (S.has_n[i] ? cN[n] : 0.0) + cN[n - 1];
     else
       val[q.diag] = wp * (cE[n] + cE[w]) + cN[n];
     if (end_row(n)) val[q.diag] += gseal;
-    auto off = [&](int at, int nb, double cf) {
-      if (at < 0) return;
-      val[at] = (mask && (*mask)[S.unk[nb]]) ? 0.0 : -cf;
-    };
-    off(q.e, e, wp * cE[n]);
-    off(q.w, w, wp * cE[w]);
-    off(q.n, n + 1, cN[n]);
-    off(q.s, n - 1, cN[n - 1]);
+    // a slot exists only for an unknown neighbour (pos = -1 otherwise)
+    const LinearSystem::Nbr& u = S.nbr[i];
+    if (q.e >= 0) val[q.e] = (mk && mk[u.e]) ? 0.0 : -(wp * cE[n]);
+    if (q.w >= 0) val[q.w] = (mk && mk[u.w]) ? 0.0 : -(wp * cE[w]);
+    if (q.n >= 0) val[q.n] = (mk && mk[u.n]) ? 0.0 : -cN[n];
+    if (q.s >= 0) val[q.s] = (mk && mk[u.s]) ? 0.0 : -cN[n - 1];
   }
 }
 
