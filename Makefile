@@ -13,7 +13,8 @@ APT_PKGS := libeigen3-dev libsuitesparse-dev libsundials-dev liblapack-dev libbl
 PY_BUILD := scikit-build-core pybind11 cmake ninja
 PY_DEPS  := numpy scipy pandas pyarrow "dask[distributed]" matplotlib threadpoolctl pytest hypothesis control
 # Optional (the `hinf` extra): H∞ synthesis (python-control's hinfsyn/mixsyn need slycot);
-# a machine without a wheel still builds and tests, the H∞ tests skip with the reason.
+# wheels only (no Fortran build from source): a machine without a wheel still builds and
+# tests, the H∞ tests skip with the reason.
 PY_OPT_DEPS := "slycot>=0.6"
 SOURCES := $(shell find cpp python cmake -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.py' -o -name '*.txt' -o -name '*.toml' -o -name '*.cmake' -o -name '*.pyi' -o -name 'py.typed' \) 2>/dev/null) CMakeLists.txt pyproject.toml
 OUT ?= out
@@ -35,7 +36,7 @@ $(STAMPS)/venv: pyproject.toml Makefile | $(STAMPS)/sysdeps
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	@echo "make: installing Python build tools and dependencies into $(VENV)"
 	@$(PIP) install $(PY_BUILD) $(PY_DEPS)
-	@$(PIP) install $(PY_OPT_DEPS) || echo "make: optional $(PY_OPT_DEPS) not installed (no wheel?): the H∞ tests will skip"
+	@$(PIP) install --only-binary=slycot $(PY_OPT_DEPS) || echo "make: optional $(PY_OPT_DEPS) not installed (no wheel): the H∞ tests will skip"
 	@mkdir -p $(STAMPS) && touch $@
 
 install: $(STAMPS)/install
