@@ -23,13 +23,8 @@ from rotordyn.control.plant import plant
 from rotordyn.control.reduction import balanced_truncation, modal_truncation
 from rotordyn.control.threshold import closed_loop_threshold
 
-C, AY, F, PC = 3e-4, -1.85e-3, 50.0, 0.05e6
-
-
-def amplitude(tr, t0):
-    m = tr.t >= t0
-    return float(np.hypot(tr.journal_x_m[m, 0] - tr.equilibrium_r[2],
-                          tr.journal_y_m[m, 0] - tr.equilibrium_r[3]).max())
+# the same operating point and measure as the PD/LQG script beside this one
+from control_stabilisation import AY, PC, C, F, amplitude  # noqa: E402
 
 
 def main():
