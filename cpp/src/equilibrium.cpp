@@ -23,8 +23,8 @@ EquilibriumMethod parse_equilibrium_method(const std::string& name) {
 namespace {
 double inf_norm(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
-/// Coordinates with a nonzero row or column in J (an unloaded tilting pad's tilt has neither:
-/// a pressure-free film and no tilt stiffness). Empty when all are.
+/// Coordinates whose row and column in J are both zero (an unloaded tilting pad's tilt: a
+/// pressure-free film and no tilt stiffness). Empty when none are.
 std::vector<Eigen::Index> inactive_coordinates(const Eigen::MatrixXd& J) {
   std::vector<Eigen::Index> out;
   for (Eigen::Index i = 0; i < J.rows(); ++i)

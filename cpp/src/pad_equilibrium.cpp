@@ -49,7 +49,6 @@ struct SystemSolver::PadSolve {
   Eigen::Vector2d A = Eigen::Vector2d::Zero();  // (K r − F) on the pad less K_gg p_g
   Eigen::Matrix2d Kgg = Eigen::Matrix2d::Zero();
   double tol = 0.0;           // absolute residual tolerance, N
-  double clearance = 0.0;
   bool pressure_free = false;
   double pmax = 0.0;
   Eigen::Vector2d R = Eigen::Vector2d::Zero();
@@ -86,7 +85,7 @@ namespace {
 /// set) or −1 (no sign change: nothing balances the pad); ContactError if the film closes at
 /// every tilt. ps is left evaluated at the returned tilt.
 template <class PadSolve, class FilmCoupling>
-int tilt_solve(PadSolve& ps, const FilmCoupling& fc, bool warm) {
+int tilt_solve(PadSolve& ps, const FilmCoupling& fc) {
   const int it = ps.g.local[0];
   const double C = fc.geometry.clearance_m, pinch = kPinch * C;
   double lo = -INFINITY, hi = INFINITY;
@@ -108,7 +107,7 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc, bool warm) {
   const double x0 = ps.rc(it);
 
   // Newton from the guess: accepted only on a pressured root inside the range.
-  if (warm && x0 > lo && x0 < hi) {
+  if (x0 > lo && x0 < hi) {
     double x = x0, prev = INFINITY;
     for (int k = 0; k < 12; ++k) {
       ps.rc(it) = x;
@@ -214,7 +213,6 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
       // a flexible pivot's nested solve needs its tilt converged (a stiff pivot amplifies the
       // tilt's error in f(u)): the tight tolerance there
       ps.tol = g.coords.size() == 2 ? tol_floor : tol_in;
-      ps.clearance = fc.geometry.clearance_m;
       ps.rc.resize(static_cast<Eigen::Index>(fc.coords.size()));
       for (std::size_t j = 0; j < fc.coords.size(); ++j)
         ps.rc(static_cast<Eigen::Index>(j)) = rr(fc.coords[j]);
@@ -229,7 +227,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
       }
       int st = -1;
       if (m == 1) {
-        st = tilt_solve(ps, fc, true);
+        st = tilt_solve(ps, fc);
       } else {
         // flexible pivot: f(u) = R_u(u, tilt*(u)), increasing in u
         const int iu = g.local[1];
@@ -240,7 +238,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
           ps.rc(iu) = u;
           bool ok = true;
           try {
-            st = tilt_solve(ps, fc, true);
+            st = tilt_solve(ps, fc);
             ok = st >= 0;
           } catch (const ContactError&) {
             ok = false;
@@ -352,32 +350,28 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
       const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jpp);
       const Eigen::MatrixXd X = lu.solve(Jpo);
       const Eigen::VectorXd y = lu.solve(Rp);
-      dro = (Joo - Jop * X).partialPivLu().solve(-(Ro - Jop * y));
+      const Eigen::MatrixXd S = Joo - Jop * X;  // reduced Jacobian
+      dro = S.partialPivLu().solve(-(Ro - Jop * y));
+      // singular reduced Jacobian: e.g. a journal on one loaded pad with the others
+      // pressure-free has no stiffness across that pad's pivot line; minimum-norm step
+      if (!dro.allFinite()) dro = S.completeOrthogonalDecomposition().solve(-(Ro - Jop * y));
       drp = -(y + X * dro);
     } else {
       dro = Joo.partialPivLu().solve(-Ro);
-    }
-    if (!dro.allFinite() && np) {
-      // singular reduced Jacobian: e.g. a journal on one loaded pad with the others
-      // pressure-free has no stiffness across that pad's pivot line; minimum-norm step
-      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jpp);
-      const Eigen::MatrixXd X = lu.solve(Jpo);
-      const Eigen::VectorXd y = lu.solve(Rp);
-      dro = (Joo - Jop * X).completeOrthogonalDecomposition().solve(-(Ro - Jop * y));
-      drp = -(y + X * dro);
     }
     if (!dro.allFinite()) {
       why = "pad assembly: singular reduced Jacobian";
       return false;
     }
+    const bool drp_finite = drp.allFinite();
     double t = 1.0;
     bool accepted = false;
     tol_in = tight ? tol_floor : std::max(tol_floor, 1e-3 * res * load_scale);
     for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
       Eigen::VectorXd rt = r;
       for (Eigen::Index i = 0; i < no; ++i) rt(outer[static_cast<std::size_t>(i)]) += t * dro(i);
-      for (Eigen::Index i = 0; i < np; ++i)
-        if (drp.allFinite()) rt(pc[static_cast<std::size_t>(i)]) += t * drp(i);
+      if (drp_finite)
+        for (Eigen::Index i = 0; i < np; ++i) rt(pc[static_cast<std::size_t>(i)]) += t * drp(i);
       Eigen::VectorXd Ht, Rt;
       double rest = NAN;
       if (!evaluate(rt, Ht, Rt, rest)) continue;
