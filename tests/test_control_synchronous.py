@@ -157,3 +157,12 @@ def test_linear_1x_prediction_matches_the_nonlinear_run_up(rig):
         c = np.linalg.lstsq(A, z[win], rcond=None)[0]
         X, Y = c[2] - 1j * c[3]  # x = Re(X e^{iθ})
         assert semi_major(X, Y) == pytest.approx(lin[k], rel=0.03), f
+
+
+def test_synchronous_bound_refuses_bad_unbalances(rig):
+    """A NaN or missing unbalance is an InputError naming it (it came back as status ok with a
+    NaN objective and an arbitrary p̂)."""
+    with pytest.raises(rd.InputError, match=r"unbalances\[0\]\.mass_kg_m"):
+        synchronous_bound(rig, [(6, float("nan"), 0.0)], [38.5], [0.5e6], stations=[4])
+    with pytest.raises(rd.InputError, match="unbalances: expected at least one"):
+        synchronous_bound(rig, [], [38.5], [0.5e6], stations=[4])

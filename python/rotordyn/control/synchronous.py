@@ -218,8 +218,11 @@ def synchronous_bound(system, unbalances, speeds_hz, pressures_pa, *, stations,
         raise InputError(f"stations: {exc}") from None
     if not Cout:
         raise InputError("stations: expected at least one station")
+    ub = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
+    if not ub:
+        raise InputError("unbalances: expected at least one (station, mass_kg_m, phase_deg)")
     F1 = np.zeros(asm.n, dtype=complex)
-    for st, me, ph in unbalances:
+    for st, me, ph in ub:
         F1 += asm.station_load_matrix(int(st)) @ (float(me) * np.exp(1j * np.radians(float(ph)))
                                                   * np.array([1.0, -1j]))
     num, den = act.transfer_function()
@@ -242,6 +245,9 @@ def synchronous_bound(system, unbalances, speeds_hz, pressures_pa, *, stations,
                 a[i, j, k] = Co @ q[:, 0]
                 b[i, j, k] = Co @ q[:, 1]
             zmin[i, j] = damping_ratio(np.linalg.eigvals(lm.state_matrix())).min()
+            if not (np.all(np.isfinite(a[i, j])) and np.all(np.isfinite(b[i, j]))
+                    and np.isfinite(zmin[i, j])):
+                status[i, j] = "error"  # never an ok point with a non-finite response
     ref = _references(references_m, ns, nst)
     lim = np.minimum(pp - act.p_min_pa, act.p_max_pa - pp)
     lim = np.broadcast_to(lim[None, :], (ns, npp)).copy()
