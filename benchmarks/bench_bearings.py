@@ -128,7 +128,9 @@ def main(argv=None) -> int:
 
     # interleaved: ours `repeat` times per ROSS run (ROSS takes seconds)
     ours_t, ross_t, ross_el = [], [], None
-    ours_tp()  # warm-up (imports, first allocation)
+    ours_tp()  # warm-up (imports, first allocation), both sides alike
+    if ross is not None:
+        ross_tp()
     for k in range(max(args.repeat, args.ross_repeat if ross is not None else 0)):
         if k < args.repeat:
             ours_t.append(timed(ours_tp)[:2])
