@@ -195,6 +195,16 @@ class Assembled:
         (consistent with the reduction: Tᵀ f)."""
         return self.station_output_matrix(station).T
 
+    def unbalance_load(self, unbalances) -> np.ndarray:
+        """(n,) complex amplitude F₁ of the unbalance forcing per Ω² (the force is
+        Re(Ω² F₁ e^{iΩt})): Σ m e e^{iφ} (1, −i) at each (station, mass_kg_m, phase_deg),
+        mapped onto r as :meth:`station_load_matrix`. ``unbalances`` already validated."""
+        F1 = np.zeros(self.n, dtype=complex)
+        for st, me, ph in unbalances:
+            F1 += self.station_load_matrix(int(st)) @ (
+                float(me) * np.exp(1j * np.radians(float(ph))) * np.array([1.0, -1j]))
+        return F1
+
     def station_output_matrix(self, station: int) -> np.ndarray:
         """(2, n) map from r to the x, y displacement of a rotor station (m), through the
         reduction's transformation (zero on sleeve coordinates). InputError for a station

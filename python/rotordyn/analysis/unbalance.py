@@ -95,10 +95,7 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     asm = assembled(system)
     outs = tuple(stations) if stations is not None else tuple(dict.fromkeys(s for s, _, _ in ub))
     Cout = [asm.station_output_matrix(s) for s in outs]
-    F1 = np.zeros(asm.n, dtype=complex)  # per Ω²
-    for st, me, ph in ub:
-        fxy = me * np.exp(1j * np.radians(ph)) * np.array([1.0, -1j])
-        F1 += asm.station_load_matrix(st) @ fxy
+    F1 = asm.unbalance_load(ub)  # per Ω²
     X = np.full((sp.size, len(outs)), np.nan + 0j)
     Y = np.full((sp.size, len(outs)), np.nan + 0j)
     status = np.empty(sp.size, dtype=object)

@@ -179,9 +179,7 @@ def closed_loop_unbalance(system, controller, unbalances, speeds_hz, *, chamber_
         p = make_plant(system, f, float(pc), config_ay_m, measurements=controller.measurements,
                        actuator=actuator)
         n = p.n_mech
-        F = np.zeros(n, dtype=complex)
-        for st, me, ph in ub:
-            F += asm.station_load_matrix(st) @ (me * np.exp(1j * np.radians(ph)) * np.array([1.0, -1j]))
+        F = asm.unbalance_load(ub)
         w = hz_to_rad_s(f)
         Minv = np.linalg.inv(p.info["M"]) if "M" in p.info else None
         bF = np.zeros(p.A.shape[0], dtype=complex)

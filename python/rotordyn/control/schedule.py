@@ -75,9 +75,7 @@ def pressure_schedule(system, unbalances, speeds_hz, pressures_pa, *, stations=N
     ub = [(int(s), float(me), float(ph)) for s, me, ph in unbalances]
     outs = tuple(stations) if stations is not None else tuple(dict.fromkeys(s for s, _, _ in ub))
     Cout = [asm.station_output_matrix(s) for s in outs]
-    F1 = np.zeros(asm.n, dtype=complex)
-    for st, me, ph in ub:
-        F1 += asm.station_load_matrix(st) @ (me * np.exp(1j * np.radians(ph)) * np.array([1.0, -1j]))
+    F1 = asm.unbalance_load(ub)
     amp = np.full((sp.size, pp.size, len(outs)), np.nan)
     zmin = np.full((sp.size, pp.size), np.nan)
     status = np.full((sp.size, pp.size), "error", dtype=object)

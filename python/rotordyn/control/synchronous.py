@@ -221,10 +221,7 @@ def synchronous_bound(system, unbalances, speeds_hz, pressures_pa, *, stations,
     ub = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
     if not ub:
         raise InputError("unbalances: expected at least one (station, mass_kg_m, phase_deg)")
-    F1 = np.zeros(asm.n, dtype=complex)
-    for st, me, ph in ub:
-        F1 += asm.station_load_matrix(int(st)) @ (float(me) * np.exp(1j * np.radians(float(ph)))
-                                                  * np.array([1.0, -1j]))
+    F1 = asm.unbalance_load(ub)
     num, den = act.transfer_function()
     ns, npp, nst = sp.size, pp.size, len(Cout)
     a = np.full((ns, npp, nst, 2), np.nan, dtype=complex)

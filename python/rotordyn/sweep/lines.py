@@ -117,10 +117,7 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
     ub = opts["unbalances"]
     stations = tuple(opts.get("stations") or dict.fromkeys(int(u[0]) for u in ub))
     Cout = [asm.station_output_matrix(s) for s in stations]
-    F1 = np.zeros(asm.n, dtype=complex)
-    for st, me, ph in ub:
-        F1 += asm.station_load_matrix(int(st)) @ (me * np.exp(1j * np.radians(ph))
-                                                  * np.array([1.0, -1j]))
+    F1 = asm.unbalance_load(ub)
     n = hi - lo
     X = np.full((n, len(stations)), np.nan + 0j)
     Y = np.full((n, len(stations)), np.nan + 0j)
