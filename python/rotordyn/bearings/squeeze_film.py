@@ -152,11 +152,12 @@ class SqueezeFilmDamper:
                              "damper model has open ends (use film_model = 'finite' with seals)")
         if g is not None:
             f = f"{where}.end_seal_conductance_m3_per_pa_s_per_m"
-            if isinstance(g, bool) or not isinstance(g, (int, float)) or not math.isfinite(g) \
-                    or g <= 0:
+            try:
+                g = v.positive(f, g)  # the shared number rule, with the seal's own hint
+            except InputError:
                 raise InputError(f"{f}: expected a finite seal conductance > 0 m²/(Pa·s) (omit "
                                  f"it for open ends; a fully sealed film without a supply has "
-                                 f"no pressure level: use a small value), got {g!r}")
+                                 f"no pressure level: use a small value), got {g!r}") from None
             g_min = 1e-8 * self.clearance_m ** 3 / (12 * self.viscosity_pa_s * self.length_m)
             if g < g_min:
                 raise InputError(f"{f}: expected >= 1e-8 clearance_m³/(12 viscosity_pa_s "
