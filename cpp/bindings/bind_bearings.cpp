@@ -55,6 +55,11 @@ void bind_bearings(py::module_& m) {
         py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"), py::arg("options"),
         py::arg("pad_penalty"), py::call_guard<py::gil_scoped_release>(),
         "Equilibrium start for systems with tilting pads (pad-tilt penalty released in stages).");
+  m.def("pad_system_equilibrium", &pad_system_equilibrium, py::arg("solver"), py::arg("model"),
+        py::arg("omega"), py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"),
+        py::arg("homotopy_r0"), py::arg("options"), py::arg("pad_penalty"),
+        py::call_guard<py::gil_scoped_release>(),
+        "Equilibrium of a system with tilting pads: pad assembly, tilt homotopy as fallback.");
 }
 
 }  // namespace rotordyn::py_bind

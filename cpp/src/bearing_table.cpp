@@ -115,6 +115,25 @@ Eigen::VectorXd homotopy_start(const SystemModel& model, double omega, double pc
   return r;
 }
 
+EquilibriumResult pad_system_equilibrium(SystemSolver& solver, const SystemModel& model,
+                                         double omega, double pc, const Eigen::VectorXd& a,
+                                         const Eigen::VectorXd& r0,
+                                         const Eigen::VectorXd& homotopy_r0,
+                                         const EquilibriumOptions& options,
+                                         const Eigen::MatrixXd& P) {
+  EquilibriumResult e = solver.equilibrium(omega, pc, a, r0, options);
+  if (P.size() == 0) return e;
+  const bool converged = e.status == "ok" || e.status == "contact";
+  if (converged && e.path == "pad_assembly") return e;
+  // not through the pad assembly: a plain Newton may sit on an unloaded pad's pressure-free
+  // branch, so the homotopy decides; a converged first answer stays if the homotopy fails
+  const Eigen::VectorXd start = homotopy_start(model, omega, pc, a, homotopy_r0, options, P);
+  EquilibriumResult h = solver.equilibrium(omega, pc, a, start, options);
+  h.path = "homotopy";
+  if (converged && h.status != "ok" && h.status != "contact") return e;
+  return h;
+}
+
 OperatingPointTable operating_points(const SystemModel& model, const Eigen::VectorXd& omegas,
                                      const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
                                      const EquilibriumOptions& options, int n_threads,
@@ -142,14 +161,8 @@ OperatingPointTable operating_points(const SystemModel& model, const Eigen::Vect
       try {
         // With pads the equilibrium starts from the pad assembly (pad_equilibrium.cpp); the
         // tilt homotopy is the fallback when that path fails.
-        EquilibriumResult e = solver.equilibrium(omegas(i), 0.0, a, r0, options);
-        const bool converged = e.status == "ok" || e.status == "contact";
-        if (pad_penalty.size() && (!converged || e.path != "pad_assembly")) {
-          const Eigen::VectorXd start =
-              homotopy_start(model, omegas(i), 0.0, a, r0, options, pad_penalty);
-          e = solver.equilibrium(omegas(i), 0.0, a, start, options);
-          e.path = "homotopy";
-        }
+        const EquilibriumResult e =
+            pad_system_equilibrium(solver, model, omegas(i), 0.0, a, r0, r0, options, pad_penalty);
         out.path[si] = e.path;
         out.reynolds_solves(i) = e.reynolds_solves;
         out.r.row(i) = e.r.transpose();

@@ -51,4 +51,16 @@ Eigen::VectorXd homotopy_start(const SystemModel& model, double omega, double ch
                                const EquilibriumOptions& options,
                                const Eigen::MatrixXd& pad_penalty);
 
+/// The equilibrium of a system with tilting pads (`pad_penalty` P, n×n; empty: no pads, a
+/// plain solver.equilibrium): the pad assembly from r0 first; where it did not converge
+/// through the pad assembly, the tilt homotopy from `homotopy_r0` then the true model's
+/// Newton (path "homotopy"). A converged first answer is kept when the fallback fails.
+/// reynolds_solves: the returned equilibrium's own.
+EquilibriumResult pad_system_equilibrium(SystemSolver& solver, const SystemModel& model,
+                                         double omega, double chamber_pressure,
+                                         const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
+                                         const Eigen::VectorXd& homotopy_r0,
+                                         const EquilibriumOptions& options,
+                                         const Eigen::MatrixXd& pad_penalty);
+
 }  // namespace rotordyn

@@ -73,18 +73,16 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     opt.contact_fraction = float(contact_fraction)
     opt.polish = True  # the answer is the root to round-off, not the first iterate within tol
     omega = hz_to_rad_s(float(speed_hz))
-    res = asm.solver.equilibrium(omega, float(chamber_pressure_pa), a, r_init, opt)
-    if asm.pad_penalty is not None and (res.status not in ("ok", "contact")
-                                        or res.path != "pad_assembly"):
-        # tilting pads whose pad-assembly equilibrium failed: fall back to the pad-tilt
-        # homotopy from the concentric state (no jump onto an unloaded pad's pressure-free
-        # branch), then the true model's Newton
-        start = np.asarray(_core.homotopy_start(asm.model, omega, float(chamber_pressure_pa), a,
-                                                np.zeros(0), opt, asm.pad_penalty))
-        res = asm.solver.equilibrium(omega, float(chamber_pressure_pa), a, start, opt)
-        path = "homotopy"
+    if asm.pad_penalty is None:
+        res = asm.solver.equilibrium(omega, float(chamber_pressure_pa), a, r_init, opt)
     else:
-        path = res.path
+        # tilting pads: the pad assembly, and where it fails the pad-tilt homotopy from the
+        # concentric state (no jump onto an unloaded pad's pressure-free branch) — C++, the
+        # same function as the coefficient tables
+        res = _core.pad_system_equilibrium(asm.solver, asm.model, omega,
+                                           float(chamber_pressure_pa), a, r_init, np.zeros(0),
+                                           opt, asm.pad_penalty)
+    path = res.path
     r = np.asarray(res.r)
     if res.status == "ok":
         asm.last_r = r.copy()
