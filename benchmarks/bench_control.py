@@ -13,7 +13,10 @@ Run ``python benchmarks/bench_control.py [--repeat 3] [--t-sim 0.2] [--no-scipy]
   side written in Python around the same C++ film forces (``SystemSolver.film_forces``), a
   shorter run, two rows: (a) with its default finite-difference Jacobian — what a user who
   writes the right-hand side would run (the issue's baseline), and (b) given rotordyn's
-  analytic Jacobian (``SystemSolver.linearize``), the stronger baseline; each compared at
+  analytic Jacobian (``SystemSolver.linearize``), the stronger baseline, and (c) with the film
+  forces in NumPy/SciPy too (``python_film.py``: the same discrete Reynolds problem, SuperLU,
+  checked against the core to round-off) and SciPy's finite-difference Jacobian — the whole
+  right-hand side in Python, what a SciPy user without rotordyn has; each compared at
   equal tolerance and at equal accuracy (largest error over 11 output times against a tight
   CVODE reference; SciPy's CPU time interpolated log-log between the two tolerances whose
   errors bracket rotordyn's) (goal: rotordyn ≥ 20× faster in simulated seconds per CPU
@@ -45,6 +48,7 @@ from rotordyn.control import Actuator, SpeedProfile  # noqa: E402
 from rotordyn.control.measurement import measurement_matrix  # noqa: E402
 from rotordyn.control.pid import tune_pd  # noqa: E402
 from rotordyn.control.plant import plant  # noqa: E402
+from python_film import PythonFilmForces, check_against_core  # noqa: E402
 
 C, AY, F, PC = 3e-4, -1.85e-3, 50.0, 0.05e6
 RTOL, ATOL = 1e-6, 1e-9
@@ -63,9 +67,11 @@ def timed(fn):
 N_ERR = 11  # output times at which both sides' errors are measured (0 .. t_sim)
 
 
-def scipy_closed_loop(rig, k, act, t_sim, rtol=RTOL, atol_scale=1.0, analytic_jacobian=True):
-    """solve_ivp(BDF) on [r, v, p, ṗ, x_k] with the C++ film forces, Python elsewhere; the
-    Jacobian analytic (rotordyn's film K_H, D_H) or SciPy's finite differences."""
+def scipy_closed_loop(rig, k, act, t_sim, rtol=RTOL, atol_scale=1.0, analytic_jacobian=True,
+                      python_film=False):
+    """solve_ivp(BDF) on [r, v, p, ṗ, x_k] with the C++ film forces (or, ``python_film``, the
+    NumPy/SciPy ones of python_film.py), Python elsewhere; the Jacobian analytic (rotordyn's
+    film K_H, D_H) or SciPy's finite differences."""
     from scipy.integrate import solve_ivp
 
     asm = assembled(rig)
@@ -83,6 +89,7 @@ def scipy_closed_loop(rig, k, act, t_sim, rtol=RTOL, atol_scale=1.0, analytic_ja
     z = act.damping
     om = 2 * np.pi * F
     nk = k.n_states
+    film = PythonFilmForces(m) if python_film else s.film_forces
 
     def rhs(t, y):
         r, v = y[:n], y[n:2 * n]
@@ -91,7 +98,7 @@ def scipy_closed_loop(rig, k, act, t_sim, rtol=RTOL, atol_scale=1.0, analytic_ja
         u = (k.C @ xk + k.D @ ym)[0]
         cmd = min(max(PC + u, act.p_min_pa), act.p_max_pa)
         pc = min(max(p, act.p_min_pa), act.p_max_pa)
-        H = np.asarray(s.film_forces(r, v, om))
+        H = np.asarray(film(r, v, om))
         acc = Minv @ (H + F0 + pc * ch - K @ r - Cg @ v)
         return np.concatenate([v, acc, [pd, w * w * (cmd - p) - 2 * z * w * pd],
                                k.A @ xk + k.B @ ym])
@@ -147,6 +154,8 @@ def main():
     ap.add_argument("--t-scipy", type=float, default=0.05)
     ap.add_argument("--no-scipy", action="store_true")
     ap.add_argument("--no-runup", action="store_true")
+    ap.add_argument("--no-python-film", action="store_true",
+                    help="skip the SciPy row whose film is NumPy/SciPy too (~1 min)")
     args = ap.parse_args()
     print(f"load before: {load()}  (2 shared cores: figures are noisy)")
     rig = rd.models.paper_rig()
@@ -221,15 +230,26 @@ def main():
         print(f"rotordyn closed loop, {T} s at rtol {RTOL:g}: {first.stats['rhs_evals']} RHS, "
               f"largest error over {N_ERR} times: {err_rd:.2e} m; each SciPy row below: medians "
               f"of {args.repeat} interleaved (rotordyn, SciPy) pairs, CPU time both")
-        for label, analytic in (("default finite-difference Jacobian", False),
-                                ("rotordyn's analytic Jacobian", True)):
+        asm = assembled(rig)
+        e = rd.equilibrium(rig, F, PC, AY)
+        states = [(e.r + 0.1 * C * q * np.eye(n)[asm.bearings[0].jy], 1e-3 * q * np.ones(n))
+                  for q in (0.0, 0.5, 1.0)]
+        print("python_film.py vs the core's film forces (3 states): largest relative "
+              f"difference {check_against_core(asm.solver, PythonFilmForces(asm.model), states, 2 * np.pi * F):.1e}")
+        rows = [("default finite-difference Jacobian", False, False),
+                ("rotordyn's analytic Jacobian", True, False)]
+        if not args.no_python_film:
+            rows.append(("film in NumPy/SciPy (python_film.py), finite-difference Jacobian",
+                         False, True))
+        for label, analytic, pyfilm in rows:
             ratio_eq, points, cpu_rds = None, [], []
             # from rotordyn's rtol toward the tolerance whose error crosses rotordyn's: tighter
             # while SciPy is less accurate, looser while it is more accurate
             rt, step = RTOL, None
             while len(points) < 6:
                 cpu_rd, sol, cpu = paired(lambda: scipy_closed_loop(
-                    rig, k, act, T, rtol=rt, atol_scale=rt / RTOL, analytic_jacobian=analytic))
+                    rig, k, act, T, rtol=rt, atol_scale=rt / RTOL, analytic_jacobian=analytic,
+                    python_film=pyfilm))
                 err = np.abs(sol.y[:n].T - ref.r).max()
                 cpu_rds.append(cpu_rd)
                 points.append((err, cpu))
