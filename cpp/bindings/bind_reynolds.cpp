@@ -135,6 +135,12 @@ void bind_reynolds(py::module_& m) {
       .def_property("pressure_only", &RS::pressure_only, &RS::set_pressure_only,
                     "solve() fills p_pa and h_min only (force, torque, flows NaN; theta, "
                     "h_m empty); the pressures are the same bit for bit (default False).")
+      .def_property("band_factor", &RS::band_factor, &RS::set_band_factor,
+                    "Factorise in the band when a wholly cavitated ring (or a full-width "
+                    "groove) opens the circle (default True); False: always the sparse LDLT. "
+                    "The pressures agree to round-off.")
+      .def_property_readonly("band_factor_used", &RS::band_factor_used,
+                             "Whether the last solve's final factorisation was banded.")
       .def("reset", &RS::reset, "Drop the last solution (solves never depend on earlier calls).");
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "reynolds_band.hpp"
 #include "reynolds_ldlt.hpp"
 #include "rotordyn/reynolds.hpp"
 
@@ -59,11 +60,21 @@ struct LinearSystem {
   };
   std::vector<Nbr> nbr;
   StaticLDLT ldlt;             // symbolic once per system, numeric per call
+  BandLDLT band;               // when a decoupled ring opens the circle (reynolds_band.hpp)
+  std::vector<int> ring_first; // ring j's unknowns are ring_first[j] .. ring_first[j+1]-1
+  bool use_band = true;
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
   bool lu_analysed = false;
   std::vector<char> active;    // unknown: 1 = p held at 0 (reynolds) / cavitated (jfo)
   std::vector<char> last_set;  // the last converged Swift–Stieber set (continuation only)
-  enum class Factor { none, ldlt, lu, static_lu } factor = Factor::none;
+  enum class Factor { none, ldlt, band, lu, static_lu } factor = Factor::none;
+  /// x = A⁻¹ b with the symmetric factor of the last factor_spd (ldlt or band).
+  void solve_spd(const double* b, double* x) const {
+    if (factor == Factor::band)
+      band.solve(b, x);
+    else
+      ldlt.solve(b, x);
+  }
   Eigen::VectorXd rhs, sol;
 };
 
@@ -133,7 +144,10 @@ struct ReynoldsSolver::Impl {
   void base_rhs(const LinearSystem& S, Eigen::VectorXd& b) const;
   // A's values; mask (unknown-indexed, may be null) decouples masked unknowns (identity rows).
   void fill_spd(LinearSystem& S, const std::vector<char>* mask);
-  void factor_spd(LinearSystem& S);
+  // Factorise the values of fill_spd(S, mask): banded when a ring is wholly masked (or has
+  // no unknowns), which opens the circle there; the static sparse LDLᵀ otherwise.
+  void factor_spd(LinearSystem& S, const std::vector<char>* mask);
+  bool band_factor = true;  // the banded path on (off: always the sparse factor; tests)
   // Residual (outflow + storage) of node n's full cell for node pressures pp and fill theta.
   double cell_residual(int n, const std::vector<double>& pp) const;
 

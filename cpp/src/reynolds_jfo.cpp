@@ -71,7 +71,8 @@ void ReynoldsSolver::Impl::solve_factored(const LinearSystem& S, const Eigen::Ve
   x.resize(S.n_unk);
   switch (S.factor) {
     case LinearSystem::Factor::ldlt:
-      S.ldlt.solve(b.data(), x.data());
+    case LinearSystem::Factor::band:
+      S.solve_spd(b.data(), x.data());
       break;
     case LinearSystem::Factor::static_lu:
       S.ldlt.solve_lu(b.data(), x.data());

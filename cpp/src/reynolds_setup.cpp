@@ -262,6 +262,12 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
                      std::to_string(grid.n_axial) + " film grid needs an estimated " +
                      num(S.ldlt.flops()) + " multiply-adds per factorisation (limit " +
                      num(kMaxFactorFlops) + ", about 10 s): use a coarser grid");
+  // Unknowns are numbered in node order, node n = j * K1 + k: ring j's are contiguous.
+  S.ring_first.assign(N + 1, 0);
+  for (int n = 0; n < n_nodes; ++n)
+    if (S.unk[n] >= 0) ++S.ring_first[n / K1 + 1];
+  for (int j = 0; j < N; ++j) S.ring_first[j + 1] += S.ring_first[j];
+  S.use_band = S.band.analyze(S.A, S.ring_first);
   S.active.assign(S.n_unk, 0);
   S.rhs.resize(S.n_unk);
   S.sol.resize(S.n_unk);
@@ -385,7 +391,21 @@ void ReynoldsSolver::Impl::fill_spd(LinearSystem& S, const std::vector<char>* ma
   }
 }
 
-void ReynoldsSolver::Impl::factor_spd(LinearSystem& S) {
+void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* mask) {
+  if (band_factor && S.use_band) {
+    // A ring whose unknowns are all decoupled (or that has none) opens the circle.
+    int cut = -1;
+    for (int j = 0; j < N && cut < 0; ++j) {
+      bool all = true;
+      for (int i = S.ring_first[j]; i < S.ring_first[j + 1] && all; ++i)
+        all = mask && (*mask)[i];
+      if (all) cut = j;
+    }
+    if (cut >= 0 && S.band.factorize(S.A.valuePtr(), cut)) {
+      S.factor = LinearSystem::Factor::band;
+      return;
+    }
+  }
   // Decoupled (cavitated) unknowns have zero couplings: StaticLDLT skips their work.
   if (!S.ldlt.factorize(S.A.valuePtr()))
     throw ConvergenceError("Reynolds operator: sparse LDLT factorisation failed (zero pivot)");
@@ -435,6 +455,11 @@ bool ReynoldsSolver::predict_cavitation() const { return impl_->predict; }
 void ReynoldsSolver::set_predict_cavitation(bool on) { impl_->predict = on; }
 bool ReynoldsSolver::pressure_only() const { return impl_->pressure_only; }
 void ReynoldsSolver::set_pressure_only(bool on) { impl_->pressure_only = on; }
+bool ReynoldsSolver::band_factor() const { return impl_->band_factor; }
+void ReynoldsSolver::set_band_factor(bool on) { impl_->band_factor = on; }
+bool ReynoldsSolver::band_factor_used() const {
+  return impl_->sys && impl_->sys->factor == LinearSystem::Factor::band;
+}
 bool ReynoldsSolver::continuation() const { return impl_->continuation; }
 void ReynoldsSolver::set_continuation(bool on) {
   impl_->continuation = on;

@@ -45,9 +45,9 @@ void ReynoldsSolver::Impl::solve_short() {
 
 void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
   fill_spd(S, nullptr);
-  factor_spd(S);
+  factor_spd(S, nullptr);
   base_rhs(S, S.rhs);
-  S.ldlt.solve(S.rhs.data(), S.sol.data());
+  S.solve_spd(S.rhs.data(), S.sol.data());
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
     pfull[n] = S.sol[i];
@@ -136,9 +136,9 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
     if (fixed[n]) pscale_fixed = std::max(pscale_fixed, std::abs(p[n]));
   for (int it = 1; it <= max_iter; ++it) {
     fill_spd(S, &S.active);
-    factor_spd(S);
+    factor_spd(S, &S.active);
     for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
-    S.ldlt.solve(b.data(), S.sol.data());
+    S.solve_spd(b.data(), S.sol.data());
     for (int i = 0; i < S.n_unk; ++i) {
       if (S.active[i]) S.sol[i] = 0.0;
       p[S.node_of[i]] = S.sol[i];
@@ -227,9 +227,9 @@ void ReynoldsSolver::Impl::solve_derivative_lcp(LinearSystem& S, const Eigen::Ve
   bool converged = false;
   for (int it = 1; it <= max_iter && !converged; ++it) {
     fill_spd(S, &mask);
-    factor_spd(S);
+    factor_spd(S, &mask);
     for (int i = 0; i < S.n_unk; ++i) b[i] = mask[i] ? 0.0 : -dr[i];
-    S.ldlt.solve(b.data(), x.data());
+    S.solve_spd(b.data(), x.data());
     for (int i = 0; i < S.n_unk; ++i)
       if (mask[i]) x[i] = 0.0;
     double xscale = 0.0;
@@ -246,7 +246,7 @@ void ReynoldsSolver::Impl::solve_derivative_lcp(LinearSystem& S, const Eigen::Ve
     mask.swap(next);
   }
   fill_spd(S, &S.active);
-  factor_spd(S);
+  factor_spd(S, &S.active);
   if (!converged)
     throw ConvergenceError("reynolds cavitation: the directional derivative at a degenerate "
                            "cavitation set did not converge");
@@ -479,7 +479,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     } else {
       const bool masked = s.cav == Cavitation::reynolds;
       s.fill_spd(F, masked ? &F.active : nullptr);
-      s.factor_spd(F);
+      s.factor_spd(F, masked ? &F.active : nullptr);
     }
     s.sys = S = &F;
   }
@@ -487,7 +487,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
   s.residual_derivative(*S, dh.data(), d_dhdt.data(), r);
   RowMatrixXd dp = RowMatrixXd::Zero(s.N, s.K1);
   double* dpd = dp.data();
-  if (S->factor == LinearSystem::Factor::ldlt) {
+  if (S->factor == LinearSystem::Factor::ldlt || S->factor == LinearSystem::Factor::band) {
     Eigen::VectorXd x(S->n_unk);
     if (s.cav == Cavitation::reynolds && s.n_biactive > 0) {
       // Degenerate set: the limit of central differences, (D(+d) − D(−d))/2, of the
@@ -510,7 +510,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
       for (int i = 0; i < S->n_unk; ++i)
         if (S->active[i]) r[i] = 0.0;
     r = -r;
-    S->ldlt.solve(r.data(), x.data());
+    S->solve_spd(r.data(), x.data());
     // gumbel: p = max(p_full, 0); where p_full vanishes to round-off (e.g. on a symmetry line)
     // the one-sided derivatives differ and we take their mean, as a central difference does.
     double pmax = 0.0;

@@ -1,0 +1,202 @@
+// BandLDLT: the Reynolds operator with its circle opened at a decoupled ring (see
+// reynolds_band.hpp).
+#include "reynolds_band.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rotordyn {
+
+bool BandLDLT::analyze(const SpMat& A, const std::vector<int>& ring_first) {
+  usable_ = false;
+  n_ = static_cast<int>(A.cols());
+  const int n_rings = static_cast<int>(ring_first.size()) - 1;
+  if (n_rings < 3 || n_ <= 0) return false;
+  ring_first_ = ring_first;
+  const int* Ap = A.outerIndexPtr();
+  const int* Ai = A.innerIndexPtr();
+  const int nnz = Ap[n_];
+  col_of_.resize(nnz);
+  dist_.resize(nnz);
+  // Forward distance (row − column) mod n of each coupling. Opened at any ring, a coupling
+  // that does not cross the opening keeps it as its distance below the diagonal (or n minus
+  // it above); the band is the largest forward distance that is the shorter of the two.
+  int b = 0;
+  for (int c = 0; c < n_; ++c)
+    for (int q = Ap[c]; q < Ap[c + 1]; ++q) {
+      const int d = ((Ai[q] - c) % n_ + n_) % n_;
+      col_of_[q] = c;
+      if (d == 0 || 2 * d < n_) {
+        dist_[q] = d;
+        b = std::max(b, d);
+      } else {
+        dist_[q] = -1;
+      }
+    }
+  // A band of about half the matrix is no band (tiny grids): keep the sparse factor.
+  if (4 * b >= n_) return false;
+  b_ = b;
+  // b_ zero columns of padding: every column updates exactly b_ columns and rows.
+  a_.assign(static_cast<std::size_t>(n_ + b_) * (b_ + 1), 0.0);
+  coupled_.assign(n_, 0);
+  ys_.assign(n_ + b_, 0.0);
+  usable_ = true;
+  return true;
+}
+
+namespace {
+#if defined(__GNUC__) && !defined(__clang__)
+#define ROTORDYN_UNROLL _Pragma("GCC unroll 40")
+#else
+#define ROTORDYN_UNROLL
+#endif
+
+// Right-looking LDLᵀ in the band, B = the bandwidth (a compile-time constant: the update
+// loops unroll). Columns with no coupling below the diagonal (decoupled unknowns) are skipped;
+// so are zero multipliers. a has n + B columns of B + 1 values, the last B zero padding, so
+// every column updates exactly B columns. False on a zero or non-finite pivot.
+template <int B>
+bool factor_band(double* a, int n, char* coupled) {
+  constexpr int w = B + 1;
+  for (int c = 0; c < n; ++c) {
+    double* col = a + static_cast<std::size_t>(c) * w;
+    const double d = col[0];
+    if (!(d != 0.0 && std::isfinite(d))) return false;
+    bool nz = false;
+    for (int t = 1; t <= B; ++t) nz |= col[t] != 0.0;
+    coupled[c] = nz ? 1 : 0;
+    if (!nz) continue;
+    const double inv = 1.0 / d;
+    // A(c+t2, c+t1) −= A(c+t2, c) A(c+t1, c) / d, then L(c+t, c) = A(c+t, c) / d.
+ROTORDYN_UNROLL
+    for (int t1 = 1; t1 <= B; ++t1) {
+      const double g = col[t1] * inv;  // unrolled: no branch on a zero multiplier
+      double* tgt = a + static_cast<std::size_t>(c + t1) * w - t1;
+ROTORDYN_UNROLL
+      for (int t2 = t1; t2 <= B; ++t2) tgt[t2] -= g * col[t2];
+    }
+    for (int t = 1; t <= B; ++t) col[t] *= inv;
+  }
+  return true;
+}
+
+bool factor_band_any(double* a, int n, int b, char* coupled) {
+  const int w = b + 1;
+  for (int c = 0; c < n; ++c) {
+    double* col = a + static_cast<std::size_t>(c) * w;
+    const double d = col[0];
+    if (!(d != 0.0 && std::isfinite(d))) return false;
+    bool nz = false;
+    for (int t = 1; t <= b; ++t) nz |= col[t] != 0.0;
+    coupled[c] = nz ? 1 : 0;
+    if (!nz) continue;
+    const double inv = 1.0 / d;
+    for (int t1 = 1; t1 <= b; ++t1) {
+      const double f = col[t1];
+      if (f == 0.0) continue;
+      const double g = f * inv;
+      double* tgt = a + static_cast<std::size_t>(c + t1) * w - t1;
+      for (int t2 = t1; t2 <= b; ++t2) tgt[t2] -= g * col[t2];
+    }
+    for (int t = 1; t <= b; ++t) col[t] *= inv;
+  }
+  return true;
+}
+
+template <int B>
+void solve_band(const double* a, int n, const char* coupled, double* y) {
+  constexpr int w = B + 1;
+  for (int c = 0; c < n; ++c) {
+    const double yc = y[c];
+    if (!coupled[c] || yc == 0.0) continue;
+    const double* col = a + static_cast<std::size_t>(c) * w;
+    for (int t = 1; t <= B; ++t) y[c + t] -= col[t] * yc;
+  }
+  for (int c = 0; c < n; ++c) y[c] /= a[static_cast<std::size_t>(c) * w];
+  for (int c = n - 1; c >= 0; --c) {
+    if (!coupled[c]) continue;
+    const double* col = a + static_cast<std::size_t>(c) * w;
+    double s = y[c];
+    for (int t = 1; t <= B; ++t) s -= col[t] * y[c + t];
+    y[c] = s;
+  }
+}
+
+void solve_band_any(const double* a, int n, int b, const char* coupled, double* y) {
+  const int w = b + 1;
+  for (int c = 0; c < n; ++c) {
+    const double yc = y[c];
+    if (!coupled[c] || yc == 0.0) continue;
+    const double* col = a + static_cast<std::size_t>(c) * w;
+    for (int t = 1; t <= b; ++t) y[c + t] -= col[t] * yc;
+  }
+  for (int c = 0; c < n; ++c) y[c] /= a[static_cast<std::size_t>(c) * w];
+  for (int c = n - 1; c >= 0; --c) {
+    if (!coupled[c]) continue;
+    const double* col = a + static_cast<std::size_t>(c) * w;
+    double s = y[c];
+    for (int t = 1; t <= b; ++t) s -= col[t] * y[c + t];
+    y[c] = s;
+  }
+}
+
+// The bandwidths of the grids met in practice (unknowns per ring of a half or full film)
+// get unrolled kernels; others the generic loop.
+#define ROTORDYN_BAND_CASES(X) \
+  X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(9) X(10) X(11) X(12) X(13) X(14) X(15) X(16) X(17) \
+  X(18) X(19) X(20) X(21) X(22) X(23) X(24) X(25) X(31) X(32) X(33)
+}  // namespace
+
+bool BandLDLT::factorize(const double* values, int cut) {
+  if (!usable_) return false;
+  const int w = b_ + 1;
+  shift_ = ring_first_[cut];
+  std::fill(a_.begin(), a_.end(), 0.0);
+  const int nnz = static_cast<int>(dist_.size());
+  for (int q = 0; q < nnz; ++q) {
+    const double v = values[q];
+    if (v == 0.0) continue;
+    const int d = dist_[q];
+    if (d < 0) continue;  // upper triangle (mirror of a stored lower entry)
+    int c = col_of_[q] - shift_;
+    if (c < 0) c += n_;
+    // A nonzero coupling across the opening (column near the end, row near the start).
+    if (c + d >= n_) return false;
+    a_[static_cast<std::size_t>(c) * w + d] = v;
+  }
+  switch (b_) {
+#define ROTORDYN_BAND_FACTOR(B) \
+  case B:                      \
+    return factor_band<B>(a_.data(), n_, coupled_.data());
+    ROTORDYN_BAND_CASES(ROTORDYN_BAND_FACTOR)
+#undef ROTORDYN_BAND_FACTOR
+    default:
+      return factor_band_any(a_.data(), n_, b_, coupled_.data());
+  }
+}
+
+void BandLDLT::solve(const double* bvec, double* x) const {
+  double* y = ys_.data();
+  for (int i = 0; i < n_; ++i) {
+    int c = i - shift_;
+    if (c < 0) c += n_;
+    y[c] = bvec[i];
+  }
+  switch (b_) {
+#define ROTORDYN_BAND_SOLVE(B) \
+  case B:                     \
+    solve_band<B>(a_.data(), n_, coupled_.data(), y); \
+    break;
+    ROTORDYN_BAND_CASES(ROTORDYN_BAND_SOLVE)
+#undef ROTORDYN_BAND_SOLVE
+    default:
+      solve_band_any(a_.data(), n_, b_, coupled_.data(), y);
+  }
+  for (int i = 0; i < n_; ++i) {
+    int c = i - shift_;
+    if (c < 0) c += n_;
+    x[i] = y[c];
+  }
+}
+
+}  // namespace rotordyn

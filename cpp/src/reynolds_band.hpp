@@ -1,0 +1,44 @@
+// Banded LDLᵀ for the Reynolds operator when the cavitation set cuts the film (private).
+//
+// The unknowns are numbered ring by ring around the bearing, so the 5-point operator is
+// banded (bandwidth = the unknowns of about one ring) except for the couplings that close the
+// circle. When every unknown of some ring is held at p = 0 (decoupled: a cavitated ring, or a
+// ring with no unknowns), the circle is open there: numbering from that ring gives a banded
+// matrix, factorised densely in its band — about n·b²/2 multiply-adds, contiguous, and the
+// decoupled columns skipped — where the periodic pattern's sparse factor carries the fill of
+// the closed circle. Used by ReynoldsSolver when such a ring exists, StaticLDLT otherwise.
+#pragma once
+#include <Eigen/SparseCore>
+
+#include <vector>
+
+namespace rotordyn {
+
+class BandLDLT {
+ public:
+  using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+  /// Pattern of A (structurally symmetric, both triangles) with its unknowns numbered ring
+  /// by ring: ring_first[j] is the first unknown of ring j (size n_rings + 1, last = n).
+  /// Returns false (band path unavailable) when fewer than 3 rings or no narrow band exists.
+  bool analyze(const SpMat& A, const std::vector<int>& ring_first);
+  bool usable() const { return usable_; }
+  int bandwidth() const { return b_; }
+  /// Numeric factorisation with the circle opened before ring `cut` (every coupling of that
+  /// ring's unknowns must be zero in `values`). False if a pivot is zero or not finite or a
+  /// nonzero value falls outside the band (the caller then uses the sparse factor).
+  bool factorize(const double* values, int cut);
+  /// x = A⁻¹ b (x may alias b).
+  void solve(const double* b, double* x) const;
+
+ private:
+  bool usable_ = false;
+  int n_ = 0, b_ = 0, shift_ = 0;
+  std::vector<int> ring_first_;
+  std::vector<int> col_of_;   // value slot -> column (unknown)
+  std::vector<int> dist_;     // value slot -> forward distance row − column (mod n), -1: upper
+  std::vector<double> a_;     // band, column c at a_[c*(b+1) + d] = L(c + d, c) (d = 0: D)
+  std::vector<char> coupled_; // column c has a nonzero below the diagonal
+  mutable std::vector<double> ys_;
+};
+
+}  // namespace rotordyn
