@@ -19,7 +19,8 @@ void bind_transient(py::module_& m) {
       .def_readwrite("stability_limit_detection", &CvodeOptions::stability_limit_detection)
       .def_readwrite("analytic_jacobian", &CvodeOptions::analytic_jacobian)
       .def_readwrite("atol_pressure", &CvodeOptions::atol_pressure)
-      .def_readwrite("atol_controller", &CvodeOptions::atol_controller);
+      .def_readwrite("atol_controller", &CvodeOptions::atol_controller)
+      .def_readwrite("rub_fraction", &CvodeOptions::rub_fraction);
   py::class_<SpeedProfile>(m, "SpeedProfile", "Ω(t) piecewise linear through (t, omega).")
       .def(py::init<>())
       .def_readwrite("t", &SpeedProfile::t)

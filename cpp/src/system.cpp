@@ -248,7 +248,10 @@ std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
     const FilmCoupling& fc = model_.films[i];
     double hmin = INFINITY;
     for (Eigen::Index j = 0; j < fc.shape.rows(); ++j) {
-      double h = fc.geometry.clearance_m;
+      // h = base_h + S r, as solve_one builds it (base_h: lobes, preload, pads, dam step)
+      double base = fc.geometry.clearance_m;
+      if (fc.base_h.size() != 0) base = fc.base_h.row(j).minCoeff();
+      double h = base;
       for (std::size_t k = 0; k < fc.coords.size(); ++k)
         h += fc.shape(j, static_cast<Eigen::Index>(k)) * r(fc.coords[k]);
       hmin = std::min(hmin, h);

@@ -11,6 +11,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <cmath>
+#include <sstream>
 #include <algorithm>
 #include <limits>
 #include <memory>
@@ -70,6 +71,7 @@ struct Ctx {
   std::string last_error;
   bool contact = false;
   std::string cvode_message;
+  std::string rub;  // why the run stopped at a thin film (empty: it did not)
 };
 
 // Everything the right-hand side and the Jacobian share at (t, y).
@@ -305,6 +307,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
               opt.atol_pressure > 0 && opt.atol_controller > 0,
           "cvode options: tolerances must be positive");
   require(opt.max_steps > 0, "cvode options: max_steps must be positive");
+  require(opt.rub_fraction >= 0 && opt.rub_fraction < 1,
+          "rub_fraction: expected a value in [0, 1), got " + std::to_string(opt.rub_fraction));
   const Eigen::Index nt = in.t_out.size();
   const double t_end = in.t_out(nt - 1);
   validate_operation(in.speed, in.pressure, in.actuator, in.controller, n, t_end);
@@ -447,6 +451,24 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     CVodeGetNumStabLimOrderReds(mem, &v);
     out.stab_lim_order_reductions += v;
   };
+  // Rub check after every step: a film below rub_fraction of its clearance stops the run.
+  const auto& films = solver.model().films;
+  auto rubbed = [&](double at) {
+    if (!(opt.rub_fraction > 0.0)) return false;
+    const std::vector<double> hm = solver.film_h_min(Y.head(n));
+    for (std::size_t k = 0; k < hm.size(); ++k) {
+      const double cl = films[k].geometry.clearance_m;
+      if (hm[k] < opt.rub_fraction * cl) {
+        std::ostringstream os;
+        os << "film '" << films[k].name << "': minimum film thickness " << hm[k] << " m = "
+           << hm[k] / cl << " of the clearance, below rub_fraction = " << opt.rub_fraction
+           << ", at t = " << at << " s";
+        c.rub = os.str();
+        return true;
+      }
+    }
+    return false;
+  };
   long k_next = 1;
   auto t_sample = [&](long k) { return static_cast<double>(k) * K.sample_time; };
   double t = 0.0;   // time of the state in Yo (the last output)
@@ -462,6 +484,10 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
         check(CVodeSetStopTime(mem, ts), "CVodeSetStopTime");
         flag = CVode(mem, ts, y, &t, CV_NORMAL);
         if (flag < 0) break;
+        if (rubbed(ts)) {
+          flag = CV_RHSFUNC_FAIL;
+          break;
+        }
         t = ts;
       }
       sample(ts);
@@ -472,6 +498,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     if (flag >= 0 && target > t && c.kdisc) {
       check(CVodeSetStopTime(mem, target), "CVodeSetStopTime");
       flag = CVode(mem, target, y, &t, CV_NORMAL);
+      if (flag >= 0 && rubbed(target)) flag = CV_RHSFUNC_FAIL;
       if (flag >= 0) t = target;
     } else if (flag >= 0 && target > t) {
       // Continuous run: CVODE steps toward t_end (its first step is sized from t_end, so the
@@ -490,6 +517,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
           break;
         }
         flag = CVode(mem, t_end, y, &tn, CV_ONE_STEP);
+        if (flag >= 0 && rubbed(tn)) flag = CV_RHSFUNC_FAIL;
       }
       if (flag >= 0) {
         check(CVodeGetDky(mem, target, 0, yo), "CVodeGetDky");
@@ -498,7 +526,15 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     }
     if (c.kdisc) Yo = Y;  // discrete controller: CVODE stopped exactly at the output time
     if (flag < 0) {
-      out.status = c.contact ? "contact" : "not_converged";
+      // "rub": the journal reached the bush (a film below rub_fraction of its clearance, or
+      // closed so that CVODE could not step on). Not "contact", which names a converged
+      // equilibrium with a thin film (a run that started from one and finished is "contact").
+      if (!c.rub.empty()) {
+        out.status = "rub";
+        out.message = "the journal reached the bush: " + c.rub;
+        break;
+      }
+      out.status = c.contact ? "rub" : "not_converged";
       const double t_fail = c.kdisc ? t : tn;
       out.message = cvode_flag_name(flag) + " at t = " + std::to_string(t_fail) + " s" +
                     (c.last_error.empty() ? "" : ": " + c.last_error) +

@@ -31,6 +31,11 @@ struct CvodeOptions {
   bool stability_limit_detection = true;
   double atol_pressure = 1.0;     ///< Pa (actuator pressure state; its rate state: × ω_n)
   double atol_controller = 1e-9;  ///< controller states (units of the controller)
+  /// The run stops with status "rub" once a film's minimum thickness falls below
+  /// rub_fraction × its clearance (checked after every step): the journal has reached the
+  /// bush for any real surface finish, and the film force (∝ 1/h³) would otherwise hold
+  /// CVODE in ever smaller steps. 0: only a closed film (h ≤ 0 that CVODE cannot step past).
+  double rub_fraction = 1e-3;
 };
 
 struct TransientInput {

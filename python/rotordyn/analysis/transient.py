@@ -27,7 +27,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               max_steps: int = 500000, speed=None, pressure=None, actuator=None,
               controller=None, measurements=None, measurement_offset=None,
               atol_pa: float = 1.0,
-              max_step_s: float = 0.0) -> TransientResult:
+              max_step_s: float = 0.0, rub_fraction: float = 1e-3) -> TransientResult:
     """Integrate eq. 12 from t = 0 to ``t_end_s``.
 
     The start is the static equilibrium (eq. 14) with the journal of the active (or only)
@@ -35,8 +35,12 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     ``unbalances``: [(station, mass_kg_m, phase_deg)] rotating with the rotor; with a
     varying speed the force is m e (Ω² e_r − Ω̇ e_t) at the rotor angle θ = ∫Ω dt (radial
     and tangential, the tangential one from the angular acceleration). Output at ``n_out``
-    uniformly spaced times. A failure (film contact, CVODE giving up) returns the rows
-    reached with a ``status`` and the CVODE flag name in ``message``.
+    uniformly spaced times. A failure returns the rows reached (NaN after) with a ``status``:
+    ``"rub"`` when the journal reached the bush — a film thinner than ``rub_fraction`` of its
+    clearance (default 1e-3: below any real surface finish; checked after every step), or a
+    closed film CVODE could not step past — ``"not_converged"`` when CVODE gave up (its flag
+    name in ``message``); ``"ok"``, or ``"contact"`` for a completed run that started from a
+    contact equilibrium. A start whose film is already closed is an ``InputError``.
 
     Time-varying operation (:mod:`rotordyn.control`): ``speed`` a
     :class:`~rotordyn.control.SpeedProfile` (replaces ``speed_hz``; the equilibrium is taken
@@ -88,6 +92,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
     v.integer("n_out", n_out, lo=2)
     v.in_range("rtol", rtol, 1e-14, 0.1, hi_open=True)
+    v.in_range("rub_fraction", rub_fraction, 0.0, 1.0, hi_open=True)
     v.positive("atol_m", atol_m)
     v.integer("max_steps", max_steps, lo=1)
     if config_ay_m is not None:
@@ -123,6 +128,13 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
         r_init = v.vector("r0", r0, n)
         r_eq = r_init.copy()
     v_init = np.zeros(n) if v0 is None else v.vector("v0", v0, n)
+    h0 = np.asarray(asm.solver.film_h_min(r_init), dtype=float)
+    if np.any(h0 <= 0):
+        k = int(np.argmin(h0))
+        field = "disturbance_m" if r0 is None else "r0"
+        raise InputError(f"{field}: the start closes film '{asm.model.films[k].name}' "
+                         f"(minimum film thickness {h0[k]:.3g} m): the journal would start "
+                         "inside the bush")
 
     uc, us = np.zeros(n), np.zeros(n)
     for st, me, ph in ub_list:
@@ -146,6 +158,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     opt.atol_pressure = float(atol_pa)
     opt.atol_controller = float(atol_m)
     opt.max_step = float(max_step_s)
+    opt.rub_fraction = float(rub_fraction)
     if speed is not None:
         inp.speed = speed.to_core()
     if pressure is not None:

@@ -18,7 +18,7 @@ import pyarrow as pa
 from rotordyn.errors import RotordynError
 from rotordyn import _validate as v
 
-STATUS = ["ok", "no_equilibrium", "contact", "not_converged", "no_crossing", "error"]
+STATUS = ["ok", "no_equilibrium", "contact", "not_converged", "no_crossing", "error", "rub"]
 LINEARISABLE = ("ok", "contact")  # statuses of a converged equilibrium
 WHIRL = ["forward", "backward", "planar"]
 KIND = ["rotor", "sleeve"]
@@ -520,10 +520,12 @@ def _runup_rows(job, variants, chunk_id, lo, hi, rows):
             continue
         bc = _ref_bearing(asm)
         k = bc.index if bc else 0
-        rev = np.floor(np.asarray(tr.angle_rad) / (2 * np.pi)).astype(np.int64)
-        x, y = np.asarray(tr.journal_x_m)[:, k], np.asarray(tr.journal_y_m)[:, k]
-        h = np.asarray(tr.h_min_m)[:, k]
-        sp, t = np.asarray(tr.speed_hz_t), np.asarray(tr.t)
+        # the rows reached (a failed run, e.g. "rub", leaves NaN rows after it stopped)
+        done = np.isfinite(np.asarray(tr.angle_rad)) & np.all(np.isfinite(tr.r), axis=1)
+        rev = np.floor(np.asarray(tr.angle_rad)[done] / (2 * np.pi)).astype(np.int64)
+        x, y = np.asarray(tr.journal_x_m)[done, k], np.asarray(tr.journal_y_m)[done, k]
+        h = np.asarray(tr.h_min_m)[done, k]
+        sp, t = np.asarray(tr.speed_hz_t)[done], np.asarray(tr.t)[done]
         for n_rev in np.unique(rev):
             m = rev == n_rev
             if m.sum() < 2:

@@ -1,0 +1,76 @@
+"""A transient whose journal reaches the bush stops with status "rub" (issue 8 session 4,
+found by `make fuzz`): before, such a run was called "contact" — the status of a *converged*
+equilibrium with a thin film (rotordyn.results.equilibrium.CONVERGED) — so a waterfall sweep
+took its NaN rows for a converged point, and the film force (∝ 1/h³) held CVODE for 500 000
+ever smaller steps (49 s) before it gave up. Now the run stops after the step that takes a
+film below ``rub_fraction`` (default 1e-3) of its clearance, keeps the rows reached (NaN
+after), and says where; a start that closes a film is an InputError naming the field."""
+
+import numpy as np
+import pytest
+
+import rotordyn as rd
+from rotordyn.analysis.assembly import assembled
+from rotordyn.results.equilibrium import CONVERGED
+
+
+@pytest.fixture(scope="module")
+def rig():
+    return rd.models.paper_rig()
+
+
+def test_a_run_that_reaches_the_bush_says_rub(rig):
+    # a 2e-3 kg m unbalance at disk B at the first critical speed: the orbit grows to the bush
+    tr = rd.transient(rig, 0.2, 38.6, 0.5e6, 0.0, unbalances=[(6, 2e-3, 0.0)], n_out=201)
+    assert tr.status == "rub" and tr.status not in CONVERGED
+    assert "reached the bush" in tr.message and "active bearing" in tr.message
+    done = np.all(np.isfinite(tr.r), axis=1)
+    assert 0 < done.sum() < len(done) and np.all(done[: done.sum()])  # rows reached, then NaN
+    h = tr.h_min_m[done]
+    assert np.all(h > 0) and h.min() < 0.05 * tr.clearance_m[0]  # it was closing in
+    # without the rub check the run creeps on toward h = 0 (not run here: 49 s); a looser
+    # threshold stops it earlier
+    early = rd.transient(rig, 0.2, 38.6, 0.5e6, 0.0, unbalances=[(6, 2e-3, 0.0)], n_out=201,
+                         rub_fraction=0.05)
+    assert early.status == "rub"
+    assert np.all(np.isfinite(early.r), axis=1).sum() <= done.sum()
+
+
+def test_a_start_inside_the_bush_is_an_input_error(rig):
+    with pytest.raises(rd.InputError, match="disturbance_m: the start closes film"):
+        rd.transient(rig, 0.01, 1.0, 362652.0, None, n_out=2,
+                     disturbance_m=(0.0, 6.3195830396453e-05))  # the fuzz case
+    asm = assembled(rig)
+    r0 = np.zeros(asm.n)
+    r0[asm.bearings[0].jy] = -2 * asm.bearings[0].clearance_m
+    with pytest.raises(rd.InputError, match="r0: the start closes film"):
+        rd.transient(rig, 0.01, 50.0, 0.1e6, r0=r0, n_out=2)
+
+
+@pytest.mark.parametrize("bad", [-0.1, 1.0, float("nan")])
+def test_rub_fraction_is_checked(rig, bad):
+    with pytest.raises(rd.InputError, match="rub_fraction"):
+        rd.transient(rig, 0.01, 50.0, 0.1e6, n_out=2, rub_fraction=bad)
+
+
+def test_film_h_min_includes_the_bearing_geometry():
+    """h_min (the transient's output and the rub check) is min(base_h + S r) as the film
+    solve builds it: for a lobed bearing base_h is not the clearance (it was taken as the
+    clearance before)."""
+    from rotordyn.bearings import FixedGeometryBearing
+    steel = rd.Material("steel", density_kg_m3=7810.0, young_pa=211e9, shear_modulus_pa=81.2e9)
+    shaft = tuple(rd.ShaftSection(length_m=0.1, outer_diameter_m=0.1) for _ in range(4))
+    brg = tuple(FixedGeometryBearing(station=s, kind="elliptical", diameter_m=0.05,
+                                     length_m=0.025, clearance_m=1e-4, viscosity_pa_s=0.02,
+                                     n_circ=36, n_axial=8) for s in (0, 4))
+    system = rd.System(rotor=rd.Rotor(shaft, ()), materials=(steel,), bearings=brg,
+                       reduction=rd.Reduction(master_stations=(0, 4), method="guyan"))
+    asm = assembled(system)
+    r = np.random.default_rng(2).uniform(-2e-5, 2e-5, asm.n)
+    got = asm.solver.film_h_min(r)
+    for f, g in zip(asm.model.films, got):
+        base = np.asarray(f.base_h)
+        assert base.size and not np.allclose(base, f.geometry.clearance_m)  # lobed
+        h = (base.min(axis=1) if base.shape[1] > 1 else base[:, 0]) + np.asarray(f.shape) @ r[
+            np.asarray(f.coords)]
+        assert g == pytest.approx(h.min(), rel=1e-14)
