@@ -51,36 +51,13 @@ namespace {
 #define ROTORDYN_UNROLL
 #endif
 
-// Right-looking LDLᵀ in the band, B = the bandwidth (a compile-time constant: the update
-// loops unroll). Columns with no coupling below the diagonal (decoupled unknowns) are skipped;
-// so are zero multipliers. a has n + B columns of B + 1 values, the last B zero padding, so
-// every column updates exactly B columns. False on a zero or non-finite pivot.
+// Right-looking LDLᵀ in the band of width b: B = b as a compile-time constant (the update
+// loops unroll), or B = 0 for any b given at run time. Columns with no coupling below the
+// diagonal (decoupled unknowns) are skipped. a has n + b columns of b + 1 values, the last b
+// zero padding, so every column updates exactly b columns. False on a zero or non-finite pivot.
 template <int B>
-bool factor_band(double* a, int n, char* coupled) {
-  constexpr int w = B + 1;
-  for (int c = 0; c < n; ++c) {
-    double* col = a + static_cast<std::size_t>(c) * w;
-    const double d = col[0];
-    if (!(d != 0.0 && std::isfinite(d))) return false;
-    bool nz = false;
-    for (int t = 1; t <= B; ++t) nz |= col[t] != 0.0;
-    coupled[c] = nz ? 1 : 0;
-    if (!nz) continue;
-    const double inv = 1.0 / d;
-    // A(c+t2, c+t1) −= A(c+t2, c) A(c+t1, c) / d, then L(c+t, c) = A(c+t, c) / d.
-ROTORDYN_UNROLL
-    for (int t1 = 1; t1 <= B; ++t1) {
-      const double g = col[t1] * inv;  // unrolled: no branch on a zero multiplier
-      double* tgt = a + static_cast<std::size_t>(c + t1) * w - t1;
-ROTORDYN_UNROLL
-      for (int t2 = t1; t2 <= B; ++t2) tgt[t2] -= g * col[t2];
-    }
-    for (int t = 1; t <= B; ++t) col[t] *= inv;
-  }
-  return true;
-}
-
-bool factor_band_any(double* a, int n, int b, char* coupled) {
+bool factor_band(double* a, int n, int b_run, char* coupled) {
+  const int b = B > 0 ? B : b_run;
   const int w = b + 1;
   for (int c = 0; c < n; ++c) {
     double* col = a + static_cast<std::size_t>(c) * w;
@@ -91,11 +68,12 @@ bool factor_band_any(double* a, int n, int b, char* coupled) {
     coupled[c] = nz ? 1 : 0;
     if (!nz) continue;
     const double inv = 1.0 / d;
+    // A(c+t2, c+t1) −= A(c+t2, c) A(c+t1, c) / d, then L(c+t, c) = A(c+t, c) / d.
+ROTORDYN_UNROLL
     for (int t1 = 1; t1 <= b; ++t1) {
-      const double f = col[t1];
-      if (f == 0.0) continue;
-      const double g = f * inv;
+      const double g = col[t1] * inv;  // no branch on a zero multiplier (unrolled)
       double* tgt = a + static_cast<std::size_t>(c + t1) * w - t1;
+ROTORDYN_UNROLL
       for (int t2 = t1; t2 <= b; ++t2) tgt[t2] -= g * col[t2];
     }
     for (int t = 1; t <= b; ++t) col[t] *= inv;
@@ -103,26 +81,10 @@ bool factor_band_any(double* a, int n, int b, char* coupled) {
   return true;
 }
 
+// y = A⁻¹ y with the factor of factor_band<B> (same B / b_run convention).
 template <int B>
-void solve_band(const double* a, int n, const char* coupled, double* y) {
-  constexpr int w = B + 1;
-  for (int c = 0; c < n; ++c) {
-    const double yc = y[c];
-    if (!coupled[c] || yc == 0.0) continue;
-    const double* col = a + static_cast<std::size_t>(c) * w;
-    for (int t = 1; t <= B; ++t) y[c + t] -= col[t] * yc;
-  }
-  for (int c = 0; c < n; ++c) y[c] /= a[static_cast<std::size_t>(c) * w];
-  for (int c = n - 1; c >= 0; --c) {
-    if (!coupled[c]) continue;
-    const double* col = a + static_cast<std::size_t>(c) * w;
-    double s = y[c];
-    for (int t = 1; t <= B; ++t) s -= col[t] * y[c + t];
-    y[c] = s;
-  }
-}
-
-void solve_band_any(const double* a, int n, int b, const char* coupled, double* y) {
+void solve_band(const double* a, int n, int b_run, const char* coupled, double* y) {
+  const int b = B > 0 ? B : b_run;
   const int w = b + 1;
   for (int c = 0; c < n; ++c) {
     const double yc = y[c];
@@ -167,11 +129,11 @@ bool BandLDLT::factorize(const double* values, int cut) {
   switch (b_) {
 #define ROTORDYN_BAND_FACTOR(B) \
   case B:                      \
-    return factor_band<B>(a_.data(), n_, coupled_.data());
+    return factor_band<B>(a_.data(), n_, B, coupled_.data());
     ROTORDYN_BAND_CASES(ROTORDYN_BAND_FACTOR)
 #undef ROTORDYN_BAND_FACTOR
     default:
-      return factor_band_any(a_.data(), n_, b_, coupled_.data());
+      return factor_band<0>(a_.data(), n_, b_, coupled_.data());
   }
 }
 
@@ -185,12 +147,12 @@ void BandLDLT::solve(const double* bvec, double* x) const {
   switch (b_) {
 #define ROTORDYN_BAND_SOLVE(B) \
   case B:                     \
-    solve_band<B>(a_.data(), n_, coupled_.data(), y); \
+    solve_band<B>(a_.data(), n_, B, coupled_.data(), y); \
     break;
     ROTORDYN_BAND_CASES(ROTORDYN_BAND_SOLVE)
 #undef ROTORDYN_BAND_SOLVE
     default:
-      solve_band_any(a_.data(), n_, b_, coupled_.data(), y);
+      solve_band<0>(a_.data(), n_, b_, coupled_.data(), y);
   }
   for (int i = 0; i < n_; ++i) {
     int c = i - shift_;

@@ -24,6 +24,45 @@ JournalBearingGeometry geom(double D, double L) {
   g.viscosity_pa_s = 0.02;
   return g;
 }
+
+// Periodic 5-point operator (N rings of M unknowns, ring-major, random conductances), as the
+// film's: diagonally dominant, structurally symmetric.
+Eigen::SparseMatrix<double> periodic_operator(int N, int M, std::mt19937& rng) {
+  const int n = N * M;
+  std::vector<Eigen::Triplet<double>> t;
+  auto id = [&](int j, int k) { return ((j + N) % N) * M + k; };
+  std::uniform_real_distribution<double> U(0.2, 2.0);
+  for (int j = 0; j < N; ++j)
+    for (int k = 0; k < M; ++k) {
+      const double a = U(rng), b = U(rng);
+      t.emplace_back(id(j, k), id(j, k), 4.0 + U(rng));
+      t.emplace_back(id(j, k), id(j + 1, k), -a);
+      t.emplace_back(id(j + 1, k), id(j, k), -a);
+      if (k + 1 < M) {
+        t.emplace_back(id(j, k), id(j, k + 1), -b);
+        t.emplace_back(id(j, k + 1), id(j, k), -b);
+      }
+    }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  return A;
+}
+
+// A with the masked unknowns decoupled (identity row and column), as the active set does.
+Eigen::SparseMatrix<double> masked(const Eigen::SparseMatrix<double>& A,
+                                   const std::vector<char>& mask) {
+  Eigen::SparseMatrix<double> B = A;
+  for (int c = 0; c < B.cols(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(B, c); it; ++it) {
+      if (it.row() == c) {
+        if (mask[c]) it.valueRef() = 1.0;
+      } else if (mask[c] || mask[it.row()]) {
+        it.valueRef() = 0.0;
+      }
+    }
+  return B;
+}
 }  // namespace
 
 TEST_CASE("reynolds: concentric journal without grooves carries no load; Petroff torque") {
@@ -155,38 +194,14 @@ TEST_CASE("reynolds: StaticLDLT (LDLT and static LU) solves masked 5-point syste
   // (identity rows/columns, as the Swift-Stieber active set does), refactorised and solved
   // repeatedly with the same analysis: residual at round-off every time.
   const int N = 16, M = 5, n = N * M;
-  std::vector<Eigen::Triplet<double>> t;
-  auto id = [&](int j, int k) { return ((j + N) % N) * M + k; };
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> U(0.2, 2.0);
-  for (int j = 0; j < N; ++j)
-    for (int k = 0; k < M; ++k) {
-      const double a = U(rng), b = U(rng);
-      t.emplace_back(id(j, k), id(j, k), 4.0 + U(rng));
-      t.emplace_back(id(j, k), id(j + 1, k), -a);
-      t.emplace_back(id(j + 1, k), id(j, k), -a);
-      if (k + 1 < M) {
-        t.emplace_back(id(j, k), id(j, k + 1), -b);
-        t.emplace_back(id(j, k + 1), id(j, k), -b);
-      }
-    }
-  Eigen::SparseMatrix<double> A(n, n);
-  A.setFromTriplets(t.begin(), t.end());
-  A.makeCompressed();
+  const Eigen::SparseMatrix<double> A = periodic_operator(N, M, rng);
   StaticLDLT s;
   s.analyze(A);
   for (int trial = 0; trial < 8; ++trial) {
     std::vector<char> mask(n);
     for (auto& m : mask) m = trial > 0 && rng() % 3 == 0;
-    Eigen::SparseMatrix<double> B = A;
-    for (int c = 0; c < n; ++c)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(B, c); it; ++it) {
-        if (it.row() == c) {
-          if (mask[c]) it.valueRef() = 1.0;
-        } else if (mask[c] || mask[it.row()]) {
-          it.valueRef() = 0.0;
-        }
-      }
+    const Eigen::SparseMatrix<double> B = masked(A, mask);
     CHECK(s.factorize(B.valuePtr()));
     Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0), x(n);
     s.solve(b.data(), x.data());
@@ -207,24 +222,9 @@ TEST_CASE("reynolds: BandLDLT opens the circle at a decoupled ring; equals Stati
   // every unknown of ring `cut` decoupled (plus random others) the banded factor solves it to
   // round-off and agrees with the sparse one; a nonzero coupling across the opening is refused.
   const int N = 24, M = 6, n = N * M;
-  std::vector<Eigen::Triplet<double>> t;
   auto id = [&](int j, int k) { return ((j + N) % N) * M + k; };
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> U(0.2, 2.0);
-  for (int j = 0; j < N; ++j)
-    for (int k = 0; k < M; ++k) {
-      const double a = U(rng), b = U(rng);
-      t.emplace_back(id(j, k), id(j, k), 4.0 + U(rng));
-      t.emplace_back(id(j, k), id(j + 1, k), -a);
-      t.emplace_back(id(j + 1, k), id(j, k), -a);
-      if (k + 1 < M) {
-        t.emplace_back(id(j, k), id(j, k + 1), -b);
-        t.emplace_back(id(j, k + 1), id(j, k), -b);
-      }
-    }
-  Eigen::SparseMatrix<double> A(n, n);
-  A.setFromTriplets(t.begin(), t.end());
-  A.makeCompressed();
+  const Eigen::SparseMatrix<double> A = periodic_operator(N, M, rng);
   std::vector<int> ring_first(N + 1);
   for (int j = 0; j <= N; ++j) ring_first[j] = j * M;
   StaticLDLT sparse;
@@ -232,23 +232,11 @@ TEST_CASE("reynolds: BandLDLT opens the circle at a decoupled ring; equals Stati
   BandLDLT band;
   CHECK(band.analyze(A, ring_first));
   CHECK(band.bandwidth() == M);
-  auto masked = [&](const std::vector<char>& mask) {
-    Eigen::SparseMatrix<double> B = A;
-    for (int c = 0; c < n; ++c)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(B, c); it; ++it) {
-        if (it.row() == c) {
-          if (mask[c]) it.valueRef() = 1.0;
-        } else if (mask[c] || mask[it.row()]) {
-          it.valueRef() = 0.0;
-        }
-      }
-    return B;
-  };
   for (int cut : {0, 1, 7, N - 1}) {
     std::vector<char> mask(n);
     for (auto& m : mask) m = rng() % 4 == 0;
     for (int k = 0; k < M; ++k) mask[id(cut, k)] = 1;
-    const Eigen::SparseMatrix<double> B = masked(mask);
+    const Eigen::SparseMatrix<double> B = masked(A, mask);
     CHECK(band.factorize(B.valuePtr(), cut));
     CHECK(sparse.factorize(B.valuePtr()));
     Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0), x(n), y(n);
@@ -261,7 +249,7 @@ TEST_CASE("reynolds: BandLDLT opens the circle at a decoupled ring; equals Stati
   }
   // ring 3 not decoupled: the couplings between rings 2 and 3 cross the opening
   std::vector<char> none(n, 0);
-  const Eigen::SparseMatrix<double> B = masked(none);
+  const Eigen::SparseMatrix<double> B = masked(A, none);
   CHECK(!band.factorize(B.valuePtr(), 3));
 }
 
