@@ -74,3 +74,47 @@ def test_film_h_min_includes_the_bearing_geometry():
         h = (base.min(axis=1) if base.shape[1] > 1 else base[:, 0]) + np.asarray(f.shape) @ r[
             np.asarray(f.coords)]
         assert g == pytest.approx(h.min(), rel=1e-14)
+
+
+WATERFALL = """
+schema = "rotordyn/sweep/1"
+name = "t-rub"
+model = "paper-rig"
+analysis = "waterfall"
+chunk_size = 1
+
+[grid]
+speed_hz = [20.0, 38.6]
+chamber_pressure_pa = 0.5e6
+config_ay_m = 0.0
+
+[options]
+unbalances = [[6, 2.0e-3, 0.0]]
+revolutions = 8
+{extra}
+"""
+
+
+def test_a_waterfall_point_that_rubs_is_a_rub_row(tmp_path):
+    """At the first critical speed the 2e-3 kg m unbalance drives the journal to the bush: that
+    point is one 'rub' row with its message (before: spectrum rows of NaN called 'contact',
+    counted as converged); the point below the critical speed is unaffected."""
+    from rotordyn.sweep import run_sweep
+    spec = tmp_path / "w.toml"
+    spec.write_text(WATERFALL.format(extra=""))
+    res = run_sweep(spec, tmp_path / "o", threads=1)
+    df = res.to_frame()
+    rub = df[df["speed_hz"] == 38.6]
+    assert len(rub) == 1 and rub["status"].iloc[0] == "rub"
+    assert "reached the bush" in rub["message"].iloc[0]
+    ok = df[df["speed_hz"] == 20.0]
+    assert len(ok) > 1 and (ok["status"] == "ok").all()
+    assert np.all(np.isfinite(ok["amplitude_x_m"]))
+
+
+def test_rub_fraction_option_is_checked(tmp_path):
+    from rotordyn.sweep.spec import SweepSpec
+    spec = tmp_path / "w.toml"
+    spec.write_text(WATERFALL.format(extra="rub_fraction = 1.5"))
+    with pytest.raises(rd.InputError, match=r"options\.rub_fraction"):
+        SweepSpec.from_toml(spec)

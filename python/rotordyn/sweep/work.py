@@ -458,7 +458,8 @@ def _wf_rows(job, variants, chunk_id, lo, hi, rows):
             ub = [tuple(u) for u in opts.get("unbalances", [])]
             tr = rd.transient(asm.system, revs / f, f, pc, p.get("config_ay_m"), r0=r0,
                               unbalances=ub, n_out=revs * spr + 1,
-                              rtol=float(opts.get("rtol", 1e-6)))
+                              rtol=float(opts.get("rtol", 1e-6)),
+                              rub_fraction=float(opts.get("rub_fraction", 1e-3)))
         except (RotordynError, ArithmeticError, ValueError) as exc:
             rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
             continue
@@ -514,7 +515,8 @@ def _runup_rows(job, variants, chunk_id, lo, hi, rows):
             tr = rd.transient(asm.system, T, chamber_pressure_pa=pc,
                               config_ay_m=p.get("config_ay_m"), speed=prof, r0=r0,
                               unbalances=[tuple(u) for u in opts["unbalances"]],
-                              n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)))
+                              n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)),
+                              rub_fraction=float(opts.get("rub_fraction", 1e-3)))
         except (RotordynError, ArithmeticError, ValueError) as exc:
             rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
             continue
