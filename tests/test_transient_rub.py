@@ -118,3 +118,21 @@ def test_rub_fraction_option_is_checked(tmp_path):
     spec.write_text(WATERFALL.format(extra="rub_fraction = 1.5"))
     with pytest.raises(rd.InputError, match=r"options\.rub_fraction"):
         SweepSpec.from_toml(spec)
+
+
+def test_a_run_up_that_rubs_keeps_the_revolutions_reached(tmp_path):
+    """A run-up through the first critical speed with a 2e-3 kg m unbalance rubs near 38.7 Hz:
+    the revolutions before are rows with status 'rub' and finite values (the NaN angles of
+    the stopped rows used to become garbage revolution numbers)."""
+    from rotordyn.sweep import run_sweep
+    spec = tmp_path / "r.toml"
+    spec.write_text(WATERFALL.replace('analysis = "waterfall"', 'analysis = "run-up"')
+                    .replace("speed_hz = [20.0, 38.6]\n", "")
+                    .replace("revolutions = 8\n{extra}",
+                             "start_hz = 30.0\nstop_hz = 45.0\nrate_hz_per_s = 15.0"))
+    df = run_sweep(spec, tmp_path / "o", threads=1).to_frame()
+    assert (df["status"] == "rub").all() and len(df) > 10
+    assert df["revolution"].min() == 0 and df["revolution"].is_monotonic_increasing
+    assert df["revolution"].max() == len(df) - 1
+    assert 35.0 < df["speed_hz"].max() < 45.0
+    assert np.all(np.isfinite(df[["amplitude_x_m", "amplitude_y_m", "h_min_m"]].to_numpy()))
