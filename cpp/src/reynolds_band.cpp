@@ -7,7 +7,7 @@
 
 namespace rotordyn {
 
-bool BandLDLT::analyze(const SpMat& A, const std::vector<int>& ring_first) {
+bool BandLDLT::analyze(const SpMat& A, const std::vector<int>& ring_first, double max_flops) {
   usable_ = false;
   n_ = static_cast<int>(A.cols());
   const int n_rings = static_cast<int>(ring_first.size()) - 1;
@@ -33,8 +33,10 @@ bool BandLDLT::analyze(const SpMat& A, const std::vector<int>& ring_first) {
         dist_[q] = -1;
       }
     }
-  // A band of about half the matrix is no band (tiny grids): keep the sparse factor.
+  // A band of about half the matrix is no band (tiny grids), and a band wider than the sparse
+  // factor's work (many nodes along z) is no gain: keep the sparse factor.
   if (4 * b >= n_) return false;
+  if (static_cast<double>(n_) * b * (b + 1) / 2.0 > max_flops) return false;
   b_ = b;
   // b_ zero columns of padding: every column updates exactly b_ columns and rows.
   a_.assign(static_cast<std::size_t>(n_ + b_) * (b_ + 1), 0.0);

@@ -19,8 +19,10 @@ class BandLDLT {
   using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
   /// Pattern of A (structurally symmetric, both triangles) with its unknowns numbered ring
   /// by ring: ring_first[j] is the first unknown of ring j (size n_rings + 1, last = n).
-  /// Returns false (band path unavailable) when fewer than 3 rings or no narrow band exists.
-  bool analyze(const SpMat& A, const std::vector<int>& ring_first);
+  /// Returns false (band path unavailable, nothing allocated) when fewer than 3 rings, no
+  /// narrow band exists, or a band factorisation (n·b(b+1)/2 multiply-adds) would cost more
+  /// than max_flops — the sparse factor's, so long thin grids keep the sparse path.
+  bool analyze(const SpMat& A, const std::vector<int>& ring_first, double max_flops = 1e300);
   bool usable() const { return usable_; }
   int bandwidth() const { return b_; }
   /// Numeric factorisation with the circle opened before ring `cut` (every coupling of that

@@ -267,7 +267,7 @@ void ReynoldsSolver::Impl::build_system(LinearSystem& S, bool half) {
   for (int n = 0; n < n_nodes; ++n)
     if (S.unk[n] >= 0) ++S.ring_first[n / K1 + 1];
   for (int j = 0; j < N; ++j) S.ring_first[j + 1] += S.ring_first[j];
-  S.use_band = S.band.analyze(S.A, S.ring_first);
+  S.use_band = S.band.analyze(S.A, S.ring_first, S.ldlt.flops());
   S.active.assign(S.n_unk, 0);
   S.rhs.resize(S.n_unk);
   S.sol.resize(S.n_unk);
