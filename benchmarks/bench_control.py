@@ -250,6 +250,10 @@ def main():
                 cpu_rd, sol, cpu = paired(lambda: scipy_closed_loop(
                     rig, k, act, T, rtol=rt, atol_scale=rt / RTOL, analytic_jacobian=analytic,
                     python_film=pyfilm))
+                if sol.status != 0 or sol.t.size != N_ERR:
+                    print(f"SciPy solve_ivp(BDF), {label}, rtol {rt:.1e}: failed "
+                          f"(status {sol.status}: {sol.message}); no equal-accuracy point")
+                    break
                 err = np.abs(sol.y[:n].T - ref.r).max()
                 cpu_rds.append(cpu_rd)
                 points.append((err, cpu))
@@ -263,6 +267,8 @@ def main():
                 elif (err > err_rd) != (step < 1):
                     break  # the error crossed rotordyn's
                 rt *= step
+            if ratio_eq is None:
+                continue  # SciPy failed at rotordyn's tolerance: no ratio
             cpu_eq = equal_accuracy_cost(points, err_rd)
             cpu_rd = statistics.median(cpu_rds)
             print(f"  => rotordyn vs SciPy BDF with {label}: at equal tolerances "

@@ -136,3 +136,14 @@ def test_a_run_up_that_rubs_keeps_the_revolutions_reached(tmp_path):
     assert df["revolution"].max() == len(df) - 1
     assert 35.0 < df["speed_hz"].max() < 45.0
     assert np.all(np.isfinite(df[["amplitude_x_m", "amplitude_y_m", "h_min_m"]].to_numpy()))
+
+
+def test_a_discrete_controller_run_that_rubs_says_rub(rig):
+    """The rub check runs after every CVODE step in a run with a discrete controller too (it
+    steps one at a time between its sample instants)."""
+    from rotordyn.control import Controller
+    k = Controller.static([[0.0, 0.0]], [("journal", 0)], sample_time_s=1e-3)
+    tr = rd.transient(rig, 0.2, 38.6, 0.5e6, 0.0, unbalances=[(6, 2e-3, 0.0)], n_out=201,
+                      controller=k)
+    assert tr.status == "rub" and "reached the bush" in tr.message
+    assert 0 < np.all(np.isfinite(tr.r), axis=1).sum() < 201

@@ -26,7 +26,7 @@ bool BandLDLT::analyze(const SpMat& A, const std::vector<int>& ring_first, doubl
     for (int q = Ap[c]; q < Ap[c + 1]; ++q) {
       const int d = ((Ai[q] - c) % n_ + n_) % n_;
       col_of_[q] = c;
-      if (d == 0 || 2 * d < n_) {
+      if (d == 0 || 2 * d <= n_) {  // d = n/2: lower, and rejected below as no band
         dist_[q] = d;
         b = std::max(b, d);
       } else {
@@ -141,6 +141,8 @@ bool BandLDLT::factorize(const double* values, int cut) {
 
 void BandLDLT::solve(const double* bvec, double* x) const {
   double* y = ys_.data();
+  // the padding receives 0·y updates: cleared, so a non-finite right-hand side cannot linger
+  std::fill(ys_.begin() + n_, ys_.end(), 0.0);
   for (int i = 0; i < n_; ++i) {
     int c = i - shift_;
     if (c < 0) c += n_;

@@ -469,6 +469,29 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     }
     return false;
   };
+  // Discrete controller: CVODE steps one at a time to the stop time tstop (where it lands
+  // exactly, as CV_NORMAL would), with the rub check after every step and at most max_steps.
+  // A successful step clears the contact flag: a closed film that CVODE stepped around is no
+  // rub; only one met by the failing call is.
+  auto step_to = [&](double tstop, double& tt) {
+    check(CVodeSetStopTime(mem, tstop), "CVodeSetStopTime");
+    long s0 = 0, s = 0;
+    CVodeGetNumSteps(mem, &s0);
+    int f = CV_SUCCESS;
+    while (tt < tstop) {
+      CVodeGetNumSteps(mem, &s);
+      if (s - s0 >= opt.max_steps) {
+        c.cvode_message = "max_steps = " + std::to_string(opt.max_steps) +
+                          " steps taken before reaching t = " + std::to_string(tstop) + " s";
+        return static_cast<int>(CV_TOO_MUCH_WORK);
+      }
+      f = CVode(mem, tstop, y, &tt, CV_ONE_STEP);
+      if (f < 0) return f;
+      c.contact = false;
+      if (rubbed(tt)) return static_cast<int>(CV_RHSFUNC_FAIL);
+    }
+    return f;
+  };
   long k_next = 1;
   auto t_sample = [&](long k) { return static_cast<double>(k) * K.sample_time; };
   double t = 0.0;   // time of the state in Yo (the last output)
@@ -481,13 +504,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     while (flag >= 0 && c.kdisc && t_sample(k_next) <= target) {
       const double ts = t_sample(k_next);
       if (ts > t) {
-        check(CVodeSetStopTime(mem, ts), "CVodeSetStopTime");
-        flag = CVode(mem, ts, y, &t, CV_NORMAL);
+        flag = step_to(ts, t);
         if (flag < 0) break;
-        if (rubbed(ts)) {
-          flag = CV_RHSFUNC_FAIL;
-          break;
-        }
         t = ts;
       }
       sample(ts);
@@ -496,9 +514,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       check(CVodeReInit(mem, t, y), "CVodeReInit");
     }
     if (flag >= 0 && target > t && c.kdisc) {
-      check(CVodeSetStopTime(mem, target), "CVodeSetStopTime");
-      flag = CVode(mem, target, y, &t, CV_NORMAL);
-      if (flag >= 0 && rubbed(target)) flag = CV_RHSFUNC_FAIL;
+      flag = step_to(target, t);
       if (flag >= 0) t = target;
     } else if (flag >= 0 && target > t) {
       // Continuous run: CVODE steps toward t_end (its first step is sized from t_end, so the
@@ -517,6 +533,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
           break;
         }
         flag = CVode(mem, t_end, y, &tn, CV_ONE_STEP);
+        if (flag >= 0) c.contact = false;  // as in step_to
         if (flag >= 0 && rubbed(tn)) flag = CV_RHSFUNC_FAIL;
       }
       if (flag >= 0) {
@@ -534,6 +551,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
         out.message = "the journal reached the bush: " + c.rub;
         break;
       }
+      // a closed film met by the failing call (contact is cleared by every successful step)
       out.status = c.contact ? "rub" : "not_converged";
       const double t_fail = c.kdisc ? t : tn;
       out.message = cvode_flag_name(flag) + " at t = " + std::to_string(t_fail) + " s" +
