@@ -119,3 +119,17 @@ def test_contact_rows_are_linearised_like_the_system():
     K, C = jb.coefficients(x_m=t.x_m[0], y_m=t.y_m[0], speed_hz=1.0)
     assert np.allclose(t.K[0], K, rtol=1e-9, atol=1e-9 * np.abs(K).max())
     assert np.allclose(t.C[0], C, rtol=1e-9, atol=1e-9 * np.abs(C).max())
+
+
+@pytest.mark.parametrize("bad, message", [
+    ({"a": 1}, r"cxx_n_s_per_m: expected a sequence of numbers"),   # make fuzz: ValueError
+    ({1.0}, r"cxx_n_s_per_m: expected a sequence of numbers"),
+    (["1"], r"cxx_n_s_per_m\[0\]: expected a number"),
+    ([None], r"cxx_n_s_per_m\[0\]: expected a number"),
+    ([True], r"cxx_n_s_per_m\[0\]: expected a number"),
+    ([10**400], r"cxx_n_s_per_m\[0\]: expected a finite number"),
+])
+def test_table_entries_that_are_not_numbers_are_named(bad, message):
+    with pytest.raises(InputError, match=message):
+        TableBearing(station=0, speeds_hz=(1.0,), kxx_n_per_m=(0.0,), kyy_n_per_m=(0.0,),
+                     cxx_n_s_per_m=bad)

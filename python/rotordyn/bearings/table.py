@@ -31,6 +31,17 @@ C_FIELDS = ("cxx_n_s_per_m", "cxy_n_s_per_m", "cyx_n_s_per_m", "cyy_n_s_per_m")
 M_FIELDS = ("mxx_kg", "mxy_kg", "myx_kg", "myy_kg")
 
 
+def _entry(field: str, i: int, x) -> float:
+    """One table entry: a real number (non-finite ones are refused by check() by field)."""
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, float, np.integer, np.floating)):
+        raise InputError(f"{field}[{i}]: expected a number, got {x!r:.80}")
+    try:
+        return float(x)
+    except OverflowError:
+        raise InputError(f"{field}[{i}]: expected a finite number, got an integer of "
+                         f"{len(str(abs(x)))} digits") from None
+
+
 @dataclass(frozen=True, slots=True)
 class TableBearing:
     """Linear bearing at ``station`` whose 2×2 stiffness (N/m) and damping (N·s/m) are
@@ -60,9 +71,10 @@ class TableBearing:
     def __post_init__(self):
         for f in ("speeds_hz",) + K_FIELDS + C_FIELDS + M_FIELDS:
             val = getattr(self, f)
-            if isinstance(val, (str, bytes)) or not hasattr(val, "__iter__"):
-                raise InputError(f"{f}: expected a sequence of numbers, got {val!r}")
-            object.__setattr__(self, f, tuple(float(x) for x in val))
+            # a mapping or a set iterates over keys / in no order: not a column of a table
+            if isinstance(val, (str, bytes, dict, set, frozenset)) or not hasattr(val, "__iter__"):
+                raise InputError(f"{f}: expected a sequence of numbers, got {val!r:.80}")
+            object.__setattr__(self, f, tuple(_entry(f, i, x) for i, x in enumerate(val)))
         self.check("table_bearing", None)
 
     def check(self, where: str, n_stations: int | None) -> None:
