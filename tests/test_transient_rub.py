@@ -122,8 +122,9 @@ def test_rub_fraction_option_is_checked(tmp_path):
 
 def test_a_run_up_that_rubs_keeps_the_revolutions_reached(tmp_path):
     """A run-up through the first critical speed with a 2e-3 kg m unbalance rubs near 38.7 Hz:
-    the revolutions before are rows with status 'rub' and finite values (the NaN angles of
-    the stopped rows used to become garbage revolution numbers)."""
+    the whole revolutions before are rows with status 'rub' and finite values (the NaN angles
+    of the stopped rows used to become garbage revolution numbers; the last, partial
+    revolution is left out)."""
     from rotordyn.sweep import run_sweep
     spec = tmp_path / "r.toml"
     spec.write_text(WATERFALL.replace('analysis = "waterfall"', 'analysis = "run-up"')
@@ -135,6 +136,14 @@ def test_a_run_up_that_rubs_keeps_the_revolutions_reached(tmp_path):
     assert df["revolution"].min() == 0 and df["revolution"].is_monotonic_increasing
     assert df["revolution"].max() == len(df) - 1
     assert 35.0 < df["speed_hz"].max() < 45.0
+    # the same run on its own: the rows stop one revolution short of where it rubbed
+    tr = rd.transient(rd.models.paper_rig(), 1.0, chamber_pressure_pa=0.5e6, config_ay_m=0.0,
+                      speed=__import__("rotordyn.control", fromlist=["SpeedProfile"])
+                      .SpeedProfile.ramp(30.0, 45.0, 15.0),
+                      unbalances=[(6, 2e-3, 0.0)], n_out=int(37.5 * 32) + 1)
+    done = np.isfinite(tr.angle_rad)
+    last = int(np.floor(tr.angle_rad[done][-1] / (2 * np.pi)))
+    assert tr.status == "rub" and df["revolution"].max() == last - 1
     assert np.all(np.isfinite(df[["amplitude_x_m", "amplitude_y_m", "h_min_m"]].to_numpy()))
 
 

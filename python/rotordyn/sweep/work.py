@@ -528,7 +528,11 @@ def _runup_rows(job, variants, chunk_id, lo, hi, rows):
         x, y = np.asarray(tr.journal_x_m)[done, k], np.asarray(tr.journal_y_m)[done, k]
         h = np.asarray(tr.h_min_m)[done, k]
         sp, t = np.asarray(tr.speed_hz_t)[done], np.asarray(tr.t)[done]
-        for n_rev in np.unique(rev):
+        n_rows = len(rows)
+        revs_reached = np.unique(rev)
+        if tr.status not in ("ok", "contact") and revs_reached.size:
+            revs_reached = revs_reached[:-1]  # a stopped run's last revolution is partial
+        for n_rev in revs_reached:
             m = rev == n_rev
             if m.sum() < 2:
                 continue
@@ -538,7 +542,7 @@ def _runup_rows(job, variants, chunk_id, lo, hi, rows):
                          "amplitude_y_m": float(np.ptp(y[m]) / 2), "h_min_m": float(h[m].min()),
                          "status": tr.status if tr.status in STATUS else "error",
                          "message": tr.message})
-        if tr.status != "ok" and not len(rev):
+        if tr.status != "ok" and len(rows) == n_rows:  # stopped before one whole revolution
             rows.append(_fail(row, tr.status if tr.status in STATUS else "error", tr.message))
 
 
