@@ -21,10 +21,9 @@ from rotordyn.control.closedloop import closed_loop
 from rotordyn.control.hinf import hinf, lower_lft_response
 from rotordyn.control.plant import plant
 from rotordyn.control.reduction import balanced_truncation, modal_truncation
-from rotordyn.control.threshold import closed_loop_threshold
 
 # the same operating point and measure as the PD/LQG script beside this one
-from control_stabilisation import AY, PC, C, F, amplitude  # noqa: E402
+from control_stabilisation import AY, PC, C, F, amplitude, thresholds  # noqa: E402
 
 
 def main():
@@ -57,17 +56,7 @@ def main():
           f"{amplitude(tr, 1.8) / C:.2e} c; p_c within "
           f"[{tr.chamber_pressure_actual_pa.min() / 1e6:.4f}, "
           f"{tr.chamber_pressure_actual_pa.max() / 1e6:.4f}] MPa")
-    roots, scan = closed_loop_threshold(rig, k, "chamber_pressure_pa", bounds=(0, 0.3e6),
-                                        speed_hz=F, config_ay_m=AY, actuator=act, n_scan=31)
-    print(f"controlled p_c at 50 Hz: crossings {roots}; max Re λ over 0–0.3 MPa in "
-          f"[{scan.max_real_1_per_s.min():.2f}, {scan.max_real_1_per_s.max():.2f}] 1/s")
-    ths = rd.threshold(rig, "speed_hz", bounds=(20, 150), chamber_pressure_pa=0.1e6,
-                       config_ay_m=AY, n_scan=27)
-    rs, _ = closed_loop_threshold(rig, k, "speed_hz", bounds=(20, 150),
-                                  chamber_pressure_pa=0.1e6, config_ay_m=AY, actuator=act,
-                                  n_scan=27)
-    print(f"threshold speed at p_c = 0.1 MPa: passive {ths.crossings[0]:.2f} Hz, H∞ "
-          f"{rs[0] if len(rs) else 'none in 20–150'} Hz")
+    thresholds(rig, k, act, "H∞")
 
     def maxre(fn):
         a = Actuator(natural_frequency_hz=fn)

@@ -40,6 +40,22 @@ def amplitude(tr, t0):
                           tr.journal_y_m[m, 0] - tr.equilibrium_r[3]).max())
 
 
+def thresholds(rig, k, act, label):
+    """Print the controlled p_c crossings at 50 Hz and the threshold speed at p_c = 0.1 MPa,
+    passive and with the fixed law ``k`` (labelled ``label``)."""
+    roots, scan = closed_loop_threshold(rig, k, "chamber_pressure_pa", bounds=(0, 0.3e6),
+                                        speed_hz=F, config_ay_m=AY, actuator=act, n_scan=31)
+    print(f"controlled p_c at 50 Hz: crossings {roots}; max Re λ over 0–0.3 MPa in "
+          f"[{scan.max_real_1_per_s.min():.2f}, {scan.max_real_1_per_s.max():.2f}] 1/s")
+    ths = rd.threshold(rig, "speed_hz", bounds=(20, 150), chamber_pressure_pa=0.1e6,
+                       config_ay_m=AY, n_scan=27)
+    rs, _ = closed_loop_threshold(rig, k, "speed_hz", bounds=(20, 150), chamber_pressure_pa=0.1e6,
+                                  config_ay_m=AY, actuator=act, n_scan=27)
+    th = ths.crossings[0]
+    print(f"threshold speed at p_c = 0.1 MPa: passive {th:.2f} Hz, {label} "
+          + (f"{rs[0]:.2f} Hz (+{rs[0] - th:.2f} Hz)" if len(rs) else "none in 20–150 Hz"))
+
+
 def main():
     rig = rd.models.paper_rig()
     st = rd.stability(rig, F, PC, AY)
@@ -91,16 +107,7 @@ def main():
           f"{clq_nl.chamber_pressure_actual_pa.max() / 1e6:.4f}] MPa")
 
     # Thresholds with the fixed PD law
-    roots, scan = closed_loop_threshold(rig, k, "chamber_pressure_pa", bounds=(0, 0.3e6),
-                                        speed_hz=F, config_ay_m=AY, actuator=act, n_scan=31)
-    print(f"controlled p_c at 50 Hz: crossings {roots}; max Re λ over 0–0.3 MPa in "
-          f"[{scan.max_real_1_per_s.min():.2f}, {scan.max_real_1_per_s.max():.2f}] 1/s")
-    ths = rd.threshold(rig, "speed_hz", bounds=(20, 150), chamber_pressure_pa=0.1e6,
-                       config_ay_m=AY, n_scan=27)
-    rs, _ = closed_loop_threshold(rig, k, "speed_hz", bounds=(20, 150), chamber_pressure_pa=0.1e6,
-                                  config_ay_m=AY, actuator=act, n_scan=27)
-    print(f"threshold speed at p_c = 0.1 MPa: passive {ths.crossings[0]:.2f} Hz, controlled "
-          f"{rs[0]:.2f} Hz (+{rs[0] - ths.crossings[0]:.2f} Hz)")
+    thresholds(rig, k, act, "controlled")
 
     # Linear vs nonlinear decay: 0.01 c, projection on the closed-loop left eigenvectors
     d = 0.01 * C
