@@ -53,6 +53,21 @@ class ScheduleResult:
                 f"..{np.nanmax(self.pressures_pa):.4g} Pa, best constant {self.best_constant_pa:.4g} Pa)")
 
 
+def linear_model_grid(system, sp, pp, config_ay_m):
+    """The linear models of a (speed × p_c) grid: equilibria continued in speed at each
+    pressure, K_H and D_H by perturbation. Yields (i, j, status, model, ω rad/s, least damping
+    ratio of all modes); model and ω are None and the ratio NaN unless the status is ok.
+    Shared by the open-loop schedule and the synchronous bound."""
+    for j, p in enumerate(pp):
+        for i, stt, lm in continued_linear_models(system, sp, float(p), config_ay_m,
+                                                  "perturbation", continue_on=("ok",)):
+            if stt != "ok":
+                yield i, j, stt, None, None, np.nan
+                continue
+            zmin = damping_ratio(np.linalg.eigvals(lm.state_matrix())).min()
+            yield i, j, stt, lm, hz_to_rad_s(sp[i]), zmin
+
+
 def pressure_schedule(system, unbalances, speeds_hz, pressures_pa, *, stations=None,
                       config_ay_m: float | None = None, min_damping: float = 0.0,
                       p_min_pa: float = 0.0, p_max_pa: float = 1e6,
@@ -72,25 +87,23 @@ def pressure_schedule(system, unbalances, speeds_hz, pressures_pa, *, stations=N
         raise InputError("pressures_pa: expected a 1-D array of pressures >= 0")
     v.in_range("min_damping", min_damping, -1.0, 1.0)
     asm = assembled(system)
-    ub = [(int(s), float(me), float(ph)) for s, me, ph in unbalances]
+    ub = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
     outs = tuple(stations) if stations is not None else tuple(dict.fromkeys(s for s, _, _ in ub))
     Cout = [asm.station_output_matrix(s) for s in outs]
     F1 = asm.unbalance_load(ub)
     amp = np.full((sp.size, pp.size, len(outs)), np.nan)
     zmin = np.full((sp.size, pp.size), np.nan)
     status = np.full((sp.size, pp.size), "error", dtype=object)
-    for j, p in enumerate(pp):
-        for i, stt, lm in continued_linear_models(system, sp, float(p), config_ay_m,
-                                                  "perturbation", continue_on=("ok",)):
-            status[i, j] = stt
-            if stt != "ok":
-                continue
-            w = hz_to_rad_s(sp[i])
-            q = np.linalg.solve(lm.K - w**2 * lm.M + 1j * w * lm.D, w**2 * F1)
-            for k, Co in enumerate(Cout):
-                x, y = Co @ q
-                amp[i, j, k] = np.hypot(abs(x), abs(y))
-            zmin[i, j] = damping_ratio(np.linalg.eigvals(lm.state_matrix())).min()
+    for i, j, stt, lm, w, zm in linear_model_grid(system, sp, pp, config_ay_m):
+        status[i, j], zmin[i, j] = stt, zm
+        if lm is None:
+            continue
+        q = np.linalg.solve(lm.K - w**2 * lm.M + 1j * w * lm.D, w**2 * F1)
+        for k, Co in enumerate(Cout):
+            x, y = Co @ q
+            amp[i, j, k] = np.hypot(abs(x), abs(y))
+        if not (np.all(np.isfinite(amp[i, j])) and np.isfinite(zm)):
+            status[i, j] = "error"  # never an ok point with a non-finite response
     obj = amp.max(axis=2)
     feas = (status == "ok") & (zmin >= min_damping) & (pp >= p_min_pa)[None, :] \
         & (pp <= p_max_pa)[None, :] & np.isfinite(obj)

@@ -28,10 +28,8 @@ import pandas as pd
 
 from rotordyn import _validate as v
 from rotordyn.analysis.assembly import assembled
-from rotordyn.analysis.linear import continued_linear_models
 from rotordyn.errors import InputError
-from rotordyn.results.modes import damping_ratio
-from rotordyn.units import hz_to_rad_s
+from rotordyn.control.schedule import linear_model_grid
 
 _GOLD = (np.sqrt(5.0) - 1.0) / 2.0
 
@@ -228,23 +226,19 @@ def synchronous_bound(system, unbalances, speeds_hz, pressures_pa, *, stations,
     b = np.full((ns, npp, nst, 2), np.nan, dtype=complex)
     zmin = np.full((ns, npp), np.nan)
     status = np.full((ns, npp), "error", dtype=object)
-    for j, p0 in enumerate(pp):
-        for i, stt, lm in continued_linear_models(system, sp, float(p0), config_ay_m,
-                                                  "perturbation", continue_on=("ok",)):
-            status[i, j] = stt
-            if stt != "ok":
-                continue
-            w = hz_to_rad_s(sp[i])
-            H = np.polyval(num, 1j * w) / np.polyval(den, 1j * w)
-            Z = lm.K - w**2 * lm.M + 1j * w * lm.D
-            q = np.linalg.solve(Z, np.column_stack([w**2 * F1, H * np.asarray(lm.chamber)]))
-            for k, Co in enumerate(Cout):
-                a[i, j, k] = Co @ q[:, 0]
-                b[i, j, k] = Co @ q[:, 1]
-            zmin[i, j] = damping_ratio(np.linalg.eigvals(lm.state_matrix())).min()
-            if not (np.all(np.isfinite(a[i, j])) and np.all(np.isfinite(b[i, j]))
-                    and np.isfinite(zmin[i, j])):
-                status[i, j] = "error"  # never an ok point with a non-finite response
+    for i, j, stt, lm, w, zm in linear_model_grid(system, sp, pp, config_ay_m):
+        status[i, j], zmin[i, j] = stt, zm
+        if lm is None:
+            continue
+        H = np.polyval(num, 1j * w) / np.polyval(den, 1j * w)
+        Z = lm.K - w**2 * lm.M + 1j * w * lm.D
+        q = np.linalg.solve(Z, np.column_stack([w**2 * F1, H * np.asarray(lm.chamber)]))
+        for k, Co in enumerate(Cout):
+            a[i, j, k] = Co @ q[:, 0]
+            b[i, j, k] = Co @ q[:, 1]
+        if not (np.all(np.isfinite(a[i, j])) and np.all(np.isfinite(b[i, j]))
+                and np.isfinite(zm)):
+            status[i, j] = "error"  # never an ok point with a non-finite response
     ref = _references(references_m, ns, nst)
     lim = np.minimum(pp - act.p_min_pa, act.p_max_pa - pp)
     lim = np.broadcast_to(lim[None, :], (ns, npp)).copy()
