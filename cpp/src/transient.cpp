@@ -12,11 +12,13 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <sstream>
+#include <utility>
 #include <algorithm>
 #include <limits>
 #include <memory>
 #include <random>
 #include <sstream>
+#include <utility>
 
 #include "rotordyn/errors.hpp"
 
@@ -433,23 +435,21 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   // jumps). Samples and output times are merged in time order.
   // CVodeReInit resets CVODE's counters: they are harvested before each restart.
   auto harvest = [&]() {
-    long v = 0;
-    CVodeGetNumSteps(mem, &v);
-    out.steps += v;
-    CVodeGetNumRhsEvals(mem, &v);
-    out.rhs_evals += v;
-    CVodeGetNumJacEvals(mem, &v);
-    out.jac_evals += v;
-    CVodeGetNumNonlinSolvConvFails(mem, &v);
-    out.newton_fails += v;
-    CVodeGetNumErrTestFails(mem, &v);
-    out.error_test_fails += v;
-    CVodeGetNumLinSolvSetups(mem, &v);
-    out.linear_setups += v;
-    CVodeGetNumNonlinSolvIters(mem, &v);
-    out.newton_iters += v;
-    CVodeGetNumStabLimOrderReds(mem, &v);
-    out.stab_lim_order_reductions += v;
+    using Getter = int (*)(void*, long*);
+    const std::pair<Getter, long TransientResult::*> counters[] = {
+        {CVodeGetNumSteps, &TransientResult::steps},
+        {CVodeGetNumRhsEvals, &TransientResult::rhs_evals},
+        {CVodeGetNumJacEvals, &TransientResult::jac_evals},
+        {CVodeGetNumNonlinSolvConvFails, &TransientResult::newton_fails},
+        {CVodeGetNumErrTestFails, &TransientResult::error_test_fails},
+        {CVodeGetNumLinSolvSetups, &TransientResult::linear_setups},
+        {CVodeGetNumNonlinSolvIters, &TransientResult::newton_iters},
+        {CVodeGetNumStabLimOrderReds, &TransientResult::stab_lim_order_reductions}};
+    for (const auto& [get, member] : counters) {
+      long v = 0;
+      get(mem, &v);
+      out.*member += v;
+    }
   };
   // Rub check after every step: a film below rub_fraction of its clearance stops the run.
   const auto& films = solver.model().films;
