@@ -11,6 +11,7 @@ import pytest
 
 import rotordyn as rd
 from rotordyn.analysis.assembly import assembled
+from rotordyn.control import SpeedProfile
 from rotordyn.results.equilibrium import CONVERGED
 
 
@@ -138,8 +139,7 @@ def test_a_run_up_that_rubs_keeps_the_revolutions_reached(tmp_path):
     assert 35.0 < df["speed_hz"].max() < 45.0
     # the same run on its own: the rows stop one revolution short of where it rubbed
     tr = rd.transient(rd.models.paper_rig(), 1.0, chamber_pressure_pa=0.5e6, config_ay_m=0.0,
-                      speed=__import__("rotordyn.control", fromlist=["SpeedProfile"])
-                      .SpeedProfile.ramp(30.0, 45.0, 15.0),
+                      speed=SpeedProfile.ramp(30.0, 45.0, 15.0),
                       unbalances=[(6, 2e-3, 0.0)], n_out=int(37.5 * 32) + 1)
     done = np.isfinite(tr.angle_rad)
     last = int(np.floor(tr.angle_rad[done][-1] / (2 * np.pi)))

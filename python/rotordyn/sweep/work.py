@@ -530,7 +530,7 @@ def _runup_rows(job, variants, chunk_id, lo, hi, rows):
         sp, t = np.asarray(tr.speed_hz_t)[done], np.asarray(tr.t)[done]
         n_rows = len(rows)
         revs_reached = np.unique(rev)
-        if tr.status not in ("ok", "contact") and revs_reached.size:
+        if tr.status not in LINEARISABLE and revs_reached.size:
             revs_reached = revs_reached[:-1]  # a stopped run's last revolution is partial
         for n_rev in revs_reached:
             m = rev == n_rev
