@@ -45,7 +45,7 @@ sys.path.insert(0, os.path.dirname(__file__))
 import rotordyn as rd  # noqa: E402
 from rotordyn.analysis.assembly import assembled  # noqa: E402
 from rotordyn.control import Actuator, SpeedProfile  # noqa: E402
-from rotordyn.control.measurement import measurement_matrix  # noqa: E402
+from rotordyn.analysis.measurement import measurement_matrix  # noqa: E402
 from rotordyn.control.pid import tune_pd  # noqa: E402
 from rotordyn.control.plant import plant  # noqa: E402
 from python_film import PythonFilmForces, check_against_core  # noqa: E402

@@ -120,7 +120,7 @@ def bookkeeping(d, n_chunks: int):
     compaction), timed per decile."""
     import pyarrow as pa
 
-    from rotordyn.sweep.runner import group_size
+    from rotordyn.sweep.execution import group_size
     from rotordyn.sweep.store import Store
 
     hdr = {"sweep_id": "bk", "spec_hash": "x", "model_hash": "y"}

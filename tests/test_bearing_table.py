@@ -18,7 +18,7 @@ import pytest
 import rotordyn
 from rotordyn.bearings import TableBearing
 from rotordyn.errors import InputError
-from rotordyn.model.bearings import FluidFilmBearing
+from rotordyn.bearings import FluidFilmBearing
 
 from test_bearing_elements_system import ROTOR_TOML
 

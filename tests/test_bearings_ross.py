@@ -17,7 +17,8 @@ import numpy as np
 import pytest
 
 import rotordyn
-from rotordyn.bearings import TiltingPadBearing, system_from_ross, to_ross_bearing
+from rotordyn.bearings import TiltingPadBearing, to_ross_bearing
+from rotordyn.model import system_from_ross
 
 pytestmark = pytest.mark.ross
 

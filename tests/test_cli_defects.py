@@ -128,7 +128,7 @@ def test_plot_campbell_from_a_speed_sweep(datasets, tmp_path):
 
 
 def test_json_has_null_not_nan():
-    from rotordyn.cli_common import json_text
+    from rotordyn.cli.common import json_text
 
     out = json_text({"a": np.nan, "b": [1.0, np.inf], "c": np.array([np.nan, 2.0])})
     assert _strict(out) == {"a": None, "b": [1.0, None], "c": [None, 2.0]}

@@ -272,7 +272,7 @@ def test_fuzz_system_analyses(worker, p):
 def _base_toml():
     from importlib import resources
 
-    return resources.files("rotordyn.data").joinpath("paper_rig.toml").read_text()
+    return resources.files("rotordyn.model.data").joinpath("paper_rig.toml").read_text()
 
 
 TOML_VALUES = st.sampled_from([

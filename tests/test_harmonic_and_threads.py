@@ -19,7 +19,7 @@ from threadpoolctl import threadpool_info
 
 import rotordyn as rd
 from rotordyn import _core
-from rotordyn._threads import limited_blas
+from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled
 
 
@@ -122,7 +122,7 @@ def test_concurrent_analyses_do_not_leave_the_limit_behind():
     back by the last one out (a naive save/restore per call could leave 1 thread behind, or
     undo the other call's limit). What a worker thread itself reads back from OpenBLAS is not
     checked: recent OpenBLAS keeps part of its thread setting per calling thread."""
-    import rotordyn._threads as T
+    import rotordyn._common.threads as T
 
     before = blas_threads()
     gate = threading.Barrier(2)

@@ -11,7 +11,7 @@ import pytest
 import rotordyn as rd
 from rotordyn.cli import main as cli_main
 
-BASE = resources.files("rotordyn.data").joinpath("paper_rig.toml").read_text()
+BASE = resources.files("rotordyn.model.data").joinpath("paper_rig.toml").read_text()
 
 
 @pytest.fixture(scope="module")

@@ -21,7 +21,7 @@ from scipy.integrate import quad
 
 import rotordyn
 from rotordyn import _core
-from rotordyn.sleeve import FlexibleSleeve, paper_rig_sleeve
+from rotordyn.bearings.sleeve import FlexibleSleeve, paper_rig_sleeve
 
 PAPER_HZ = np.array([490.2, 1754.2, 6175.8])
 

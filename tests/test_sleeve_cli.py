@@ -1,4 +1,4 @@
-"""Guards ``rotordyn modes MODEL --part sleeve`` (rotordyn.cli_sleeve.modes): the table and the
+"""Guards ``rotordyn modes MODEL --part sleeve`` (rotordyn.cli.sleeve.modes): the table and the
 JSON carry the full and condensed frequencies and the paper's, a TOML ``[sleeve]`` table is
 read with unknown keys rejected, and unsupported reductions are an InputError."""
 
@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 import rotordyn
-from rotordyn import cli_sleeve
-from rotordyn.sleeve import paper_rig_sleeve
+from rotordyn.cli import sleeve as cli_sleeve
+from rotordyn.bearings.sleeve import paper_rig_sleeve
 
 
 def _args(**kw):

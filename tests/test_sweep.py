@@ -296,7 +296,7 @@ def test_shipped_specs_parse():
 def test_progress_line_counts_and_eta():
     import io
 
-    from rotordyn.sweep.runner import Progress
+    from rotordyn.sweep.execution import Progress
 
     s = io.StringIO()
     p = Progress(4, 1, {"ok": 3, "failed": 0, "unstable": 1}, stream=s, enabled=True)

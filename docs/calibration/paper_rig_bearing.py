@@ -39,7 +39,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 import rotordyn as rd
-from rotordyn.bearing import Groove
+from rotordyn.bearings.journal import Groove
 
 PC_PA = np.array([0.10e6, 0.15e6, 0.20e6, 0.25e6])
 PAPER_X = np.array([0.1583, 0.2915, 0.4096, 0.4988])  # paper's x/c (mirrored frame)
@@ -154,7 +154,7 @@ def cavitation_comparison(groove_deg=90.0):
 def hs_model(groove_deg=90.0):
     """The built-in ``paper-rig-hs``: the half-Sommerfeld (`gumbel`) film with E, rho and the
     chamber arc fitted to Table 1, the sleeve frequencies and the threshold 0.098 MPa together;
-    prints the fitted and the rounded values written into python/rotordyn/data/paper_rig_hs.toml
+    prints the fitted and the rounded values written into python/rotordyn/model/data/paper_rig_hs.toml
     and the rounded model's Table 1, frequencies and threshold (a few minutes)."""
     r = least_squares(residual_joint, (43.5, 4130.0, 272.0, 334.0),
                       args=(groove_deg, "gumbel", True),
@@ -231,7 +231,7 @@ def main():
     print(f"\nbest: groove {g} deg, E = {e:.2f} GPa, rho = {rho:.0f} kg/m3 (E/rho = "
           f"{e * 1e9 / rho:.4g} m2/s2), chamber {a:.2f}-{b:.2f} deg")
 
-    # Rounded values, as written into python/rotordyn/data/paper_rig.toml.
+    # Rounded values, as written into python/rotordyn/model/data/paper_rig.toml.
     # ρ keeps the fitted E/ρ (the sleeve frequencies) with the rounded E.
     e_r, g_r = round(e), g
     rho_r = round(e_r * rho / e, -1)

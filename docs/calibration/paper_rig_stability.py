@@ -54,7 +54,7 @@ def provenance() -> str:
         commit = subprocess.run(["git", "-C", here, "rev-parse", "--short", "HEAD"],
                                 capture_output=True, text=True, check=True).stdout.strip()
         dirty = subprocess.run(["git", "-C", here, "status", "--porcelain", "--",
-                                "../../python/rotordyn/data/paper_rig.toml"],
+                                "../../python/rotordyn/model/data/paper_rig.toml"],
                                capture_output=True, text=True).stdout.strip()
     except (OSError, subprocess.CalledProcessError):
         commit, dirty = "unknown", ""

@@ -1,30 +1,27 @@
 """rotordyn: vibration analysis and control-law synthesis of multi-bearing rotors on
-fluid-film and active journal bearings (C++ core, Python API)."""
+fluid-film and active journal bearings (C++ core, Python API).
+
+The package root is a table of contents: every name below is defined in one room and only
+re-exported here; no module of the package imports the root (docs/architecture.md).
+
+* :mod:`rotordyn.bearings` every bearing element (plain, active with its sleeve,
+  fixed-geometry, tilting-pad, squeeze-film, tables)
+* :mod:`rotordyn.model` rotor, system, TOML model files, built-in models
+* :mod:`rotordyn.operation` speed profiles, pressure schedules, actuator, controllers in the loop
+* :mod:`rotordyn.analysis` equilibrium, linearisation, stability, Campbell, unbalance,
+  state space, transient
+* :mod:`rotordyn.results` the result objects (``to_frame()``, ``plot()``)
+* :mod:`rotordyn.plot` figures
+* :mod:`rotordyn.control` control-law synthesis
+* :mod:`rotordyn.sweep` sweeps on dask into parquet
+* :mod:`rotordyn.report`, :mod:`rotordyn.cli` the report and the ``rotordyn`` command
+* :mod:`rotordyn.errors`, :mod:`rotordyn.units`
+"""
 
 from __future__ import annotations
 
-from rotordyn import _core
-from rotordyn.errors import (
-    ContactError,
-    ConvergenceError,
-    InputError,
-    RotordynError,
-    SundialsError,
-)
-from rotordyn.bearing import BearingEquilibrium, FilmResult, Groove, JournalBearing, PressureField
-from rotordyn.sleeve import FlexibleSleeve, SleeveResult, paper_rig_sleeve
-from rotordyn.model import (
-    STEEL,
-    ActiveJournalBearing,
-    Disk,
-    FluidFilmBearing,
-    Material,
-    Reduction,
-    Rotor,
-    ShaftSection,
-    Support,
-    System,
-)
+from rotordyn._common.info import __version__, build_info
+from rotordyn._common.threads import get_blas_threads, set_blas_threads
 from rotordyn.analysis import (
     campbell,
     equilibrium,
@@ -38,6 +35,37 @@ from rotordyn.analysis import (
     transient,
     unbalance_response,
 )
+from rotordyn.bearings import (
+    ActiveJournalBearing,
+    BearingEquilibrium,
+    FilmResult,
+    FlexibleSleeve,
+    FluidFilmBearing,
+    Groove,
+    JournalBearing,
+    PressureField,
+    SleeveResult,
+    paper_rig_sleeve,
+)
+from rotordyn.errors import (
+    ContactError,
+    ConvergenceError,
+    InputError,
+    RotordynError,
+    SundialsError,
+)
+from rotordyn.model import (
+    STEEL,
+    Disk,
+    Material,
+    Reduction,
+    Rotor,
+    ShaftSection,
+    Support,
+    System,
+    system_from_ross,
+)
+from rotordyn.model import builtin as models
 from rotordyn.results import (
     CampbellResult,
     EquilibriumResult,
@@ -45,18 +73,6 @@ from rotordyn.results import (
     ModesResult,
     StabilityResult,
 )
-from rotordyn import models
-from rotordyn._threads import get_blas_threads, set_blas_threads
-
-__version__ = "0.1.0"
-
-
-def build_info() -> dict[str, str]:
-    """Versions of rotordyn and of the Eigen, SUNDIALS and SuiteSparse it was built with."""
-    info = dict(_core.build_info())
-    info["python_package"] = __version__
-    return info
-
 
 __all__ = [
     "__version__",
@@ -83,6 +99,7 @@ __all__ = [
     "FlexibleSleeve",
     "paper_rig_sleeve",
     "models",
+    "system_from_ross",
     # journal bearing (standalone film model)
     "JournalBearing",
     "Groove",

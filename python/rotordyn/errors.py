@@ -23,7 +23,7 @@ class RotordynWarning(UserWarning):
 class UnitWarning(RotordynWarning):
     """A value far outside its physical range, most likely a unit slip (millimetres typed as
     metres, GPa as Pa, mPa·s as Pa·s, g/cm³ as kg/m³). The message names the field and the
-    likely slip. See :mod:`rotordyn.plausibility`."""
+    likely slip. See :mod:`rotordyn._common.plausibility`."""
 
 
 __all__ += ["RotordynWarning", "UnitWarning"]

@@ -17,7 +17,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn.analysis.modes import RotorMatrices
 from rotordyn.errors import InputError
-from rotordyn.model.bearings import ActiveJournalBearing
+from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.model.system import System
 
 

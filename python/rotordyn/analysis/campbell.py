@@ -3,7 +3,7 @@ from speed to speed, and critical speeds from the 1× (or n×) crossings (paper 
 
 from __future__ import annotations
 
-from rotordyn._threads import limited_blas
+from rotordyn._common.threads import limited_blas
 
 import numpy as np
 
@@ -11,7 +11,7 @@ from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import _stability_from, continued_linear_models
 from rotordyn.analysis.tracking import track_modes
 from rotordyn.errors import InputError, RotordynError
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.model.system import System
 from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.equilibrium import CONVERGED

@@ -3,14 +3,14 @@ paper's successive substitution with the relaxation coefficient P_m (eq. 16)."""
 
 from __future__ import annotations
 
-from rotordyn._threads import limited_blas
+from rotordyn._common.threads import limited_blas
 
 import numpy as np
 
 from rotordyn import _core
 from rotordyn.analysis.assembly import assembled
 from rotordyn.errors import InputError
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.model.system import System
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.units import hz_to_rad_s

@@ -6,14 +6,14 @@ steps scaled to c and c·ω)."""
 
 from __future__ import annotations
 
-from rotordyn._threads import limited_blas
+from rotordyn._common.threads import limited_blas
 
 import numpy as np
 
 from rotordyn import _core
 from rotordyn.analysis.assembly import Assembled, assembled
 from rotordyn.analysis.equilibrium import equilibrium
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.model.system import System
 from rotordyn.errors import ConvergenceError
 from rotordyn.results.equilibrium import CONVERGED, EquilibriumResult

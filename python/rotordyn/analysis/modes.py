@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from rotordyn._threads import limited_blas
+from rotordyn._common.threads import limited_blas
 
 import numpy as np
 
 from rotordyn import _core
 from rotordyn.errors import InputError
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.model.system import REDUCTION_METHODS, System
 from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.modes import WHIRL_NAMES, ModesResult

@@ -3,7 +3,7 @@ chamber-pressure fluctuation ΔC and excitation forces F as inputs)."""
 
 from __future__ import annotations
 
-from rotordyn._threads import limited_blas
+from rotordyn._common.threads import limited_blas
 
 import numpy as np
 

@@ -3,7 +3,7 @@ part of the eigenvalues of eq. 19), and boundary tracing by continuation (paper 
 
 from __future__ import annotations
 
-from rotordyn._threads import limited_blas
+from rotordyn._common.threads import limited_blas
 
 import math
 
@@ -12,7 +12,7 @@ import pandas as pd
 from scipy.optimize import brentq
 
 from rotordyn.errors import InputError, RotordynError
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.model.system import System
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 

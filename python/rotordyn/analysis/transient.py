@@ -4,16 +4,18 @@ waterfall of Fig. 13 is a set of these at increasing speeds)."""
 
 from __future__ import annotations
 
-from rotordyn._threads import limited_blas
+from rotordyn._common.threads import limited_blas
 
 import numpy as np
 
 from rotordyn import _core
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.equilibrium import equilibrium
+from rotordyn.analysis.measurement import measurement_matrix
 from rotordyn.errors import ConvergenceError, InputError
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.model.system import System
+from rotordyn.operation import Actuator, Controller, PressureSchedule, SpeedProfile
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.results.transient import TransientResult
 from rotordyn.units import hz_to_rad_s, rad_s_to_hz
@@ -53,10 +55,6 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     (default: their value at the starting equilibrium). ``atol_pa``: absolute tolerance of the actuator
     pressure state.
     """
-    from rotordyn.control.controller import Controller
-    from rotordyn.control.measurement import measurement_matrix
-    from rotordyn.control.operation import Actuator, PressureSchedule, SpeedProfile
-
     if speed is not None:
         if not isinstance(speed, SpeedProfile):
             raise InputError(f"speed: expected a rotordyn.control.SpeedProfile, got "

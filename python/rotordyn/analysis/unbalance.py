@@ -3,7 +3,7 @@ centrifugal forces of imbalance), with speed-dependent bearing coefficients."""
 
 from __future__ import annotations
 
-from rotordyn._threads import limited_blas
+from rotordyn._common.threads import limited_blas
 
 import numpy as np
 
@@ -12,7 +12,7 @@ from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import continued_linear_models
 from rotordyn.errors import InputError
 from rotordyn.results.equilibrium import CONVERGED
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.model.system import System
 from rotordyn.results.unbalance import UnbalanceResult
 from rotordyn.units import hz_to_rad_s

@@ -1,19 +1,39 @@
-"""Bearing elements beyond the plain and active journal bearings (issue 12), one module per
-element: speed-dependent coefficient tables (:class:`TableBearing`), fixed-geometry
-multi-lobe / partial-arc bearings (:class:`FixedGeometryBearing`), tilting-pad bearings
-(:class:`TiltingPadBearing`) and squeeze-film dampers (:class:`SqueezeFilmDamper`). Each can
-be placed in a :class:`rotordyn.System` (``bearings=...``, TOML ``[[bearing]] type = ...``)
-and also used standalone (forces, coefficient tables over speed)."""
+"""Every bearing element, one module each, on one shared film code (:mod:`._film`):
 
-from rotordyn.bearings._element import CoefficientTable
+* :mod:`.journal` the plain journal bearing: the standalone finite-length film
+  (:class:`JournalBearing`, issue 3) and the bearing placed in a system
+  (:class:`FluidFilmBearing`);
+* :mod:`.active` the active journal bearing (:class:`ActiveJournalBearing`, paper §2-3) and
+  :mod:`.sleeve` its flexible sleeve (:class:`FlexibleSleeve`, three-step condensation);
+* :mod:`.fixed_geometry` multi-lobe / partial-arc bearings, :mod:`.tilting_pad` tilting-pad
+  bearings, :mod:`.squeeze_film` squeeze-film dampers, :mod:`.table` speed-dependent
+  coefficient tables (issue 12);
+* :mod:`.coefficients` the standalone coefficient table over speed of any film element,
+  :mod:`.ross_io` a bearing element as a ROSS ``BearingElement``.
+
+Each can be placed in a :class:`rotordyn.System` (``bearings=...``, TOML ``[[bearing]] type =
+...``, the names of :data:`BEARING_TYPES`) and also used standalone (forces, coefficient tables
+over speed)."""
+
+from rotordyn.bearings.active import ActiveJournalBearing
+from rotordyn.bearings.coefficients import CoefficientTable
 from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
-from rotordyn.bearings.ross_io import system_from_ross, to_ross_bearing
+from rotordyn.bearings.journal import (BearingEquilibrium, FilmResult, FluidFilmBearing, Groove,
+                                       JournalBearing, PressureField)
+from rotordyn.bearings.ross_io import to_ross_bearing
+from rotordyn.bearings.sleeve import FlexibleSleeve, SleeveResult, paper_rig_sleeve
 from rotordyn.bearings.squeeze_film import (SqueezeFilmDamper, end_plate_seal_conductance,
                                             long_damper_orbit_forces, short_damper_orbit_forces)
 from rotordyn.bearings.table import TableBearing
 from rotordyn.bearings.tilting_pad import TiltingPadBearing
 
-__all__ = ["CoefficientTable", "FixedGeometryBearing", "SqueezeFilmDamper", "TableBearing",
+BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBearing,
+                 "fixed_geometry": FixedGeometryBearing, "tilting_pad": TiltingPadBearing,
+                 "squeeze_film_damper": SqueezeFilmDamper, "table": TableBearing}
+"""The element of each TOML ``[[bearing]] type``."""
+
+__all__ = ["ActiveJournalBearing", "BEARING_TYPES", "BearingEquilibrium", "CoefficientTable",
+           "FilmResult", "FixedGeometryBearing", "FlexibleSleeve", "FluidFilmBearing", "Groove",
+           "JournalBearing", "PressureField", "SleeveResult", "SqueezeFilmDamper", "TableBearing",
            "TiltingPadBearing", "end_plate_seal_conductance", "long_damper_orbit_forces",
-           "short_damper_orbit_forces", "system_from_ross",
-           "to_ross_bearing"]
+           "paper_rig_sleeve", "short_damper_orbit_forces", "to_ross_bearing"]

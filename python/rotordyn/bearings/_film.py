@@ -1,4 +1,6 @@
-"""Film geometry shared by the fixed-geometry, tilting-pad and squeeze-film elements.
+"""The film code every bearing element shares: the cavitation models, the checks of the fields
+every film element has, and the film geometry of the fixed-geometry, tilting-pad and
+squeeze-film elements.
 
 One general film: a bearing is a set of *pads* (arcs of the bush), each with its own centre
 of curvature (preload m and offset α), separated by grooves held at the supply pressure.
@@ -28,9 +30,50 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn.errors import InputError
+
+CAVITATION_MODELS = ("none", "gumbel", "reynolds", "jfo")
 
 TWO_PI = 2.0 * math.pi
 GAP_FACTOR = 4.0  # film thickness put on the (pressure-prescribed) gap nodes, × C_p
+
+
+def check_film_fields(b, where: str, n_stations: int | None) -> None:
+    """The fields every film element has (station, D, L, c, μ, cavitation, grid,
+    configuration); ``n_stations`` None skips the station range (a standalone element)."""
+    if n_stations is not None:
+        v.integer(f"{where}.station", b.station, lo=0, hi=n_stations - 1)
+    v.positive(f"{where}.diameter_m", b.diameter_m)
+    v.positive(f"{where}.length_m", b.length_m)
+    c = v.positive(f"{where}.clearance_m", b.clearance_m)
+    if c >= 0.1 * b.diameter_m:
+        raise InputError(f"{where}.clearance_m: expected a value in (0, 0.1 × diameter_m), "
+                         f"got {b.clearance_m!r}")
+    v.positive(f"{where}.viscosity_pa_s", b.viscosity_pa_s)
+    v.choice(f"{where}.cavitation", b.cavitation, CAVITATION_MODELS)
+    v.integer(f"{where}.n_circ", b.n_circ, lo=12, hi=4096)
+    v.integer(f"{where}.n_axial", b.n_axial, lo=2, hi=1024)
+    v.finite(f"{where}.config_ax_m", b.config_ax_m)
+    v.finite(f"{where}.config_ay_m", b.config_ay_m)
+
+
+def check_speeds(speeds_hz) -> np.ndarray:
+    s = np.atleast_1d(np.asarray(speeds_hz, dtype=float))
+    if s.ndim != 1 or s.size == 0 or not np.all(np.isfinite(s)) or np.any(s == 0):
+        raise InputError(f"speeds_hz: expected a 1-D array of finite nonzero speeds, got {speeds_hz!r}")
+    return s
+
+
+def check_load(load_n) -> np.ndarray:
+    try:
+        ld = np.asarray([float(x) for x in load_n])
+    except (TypeError, ValueError):
+        raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}") from None
+    if ld.shape != (2,) or not np.all(np.isfinite(ld)) or not np.hypot(*ld) > 0:
+        raise InputError(f"load_n: expected a finite nonzero load (Fx, Fy) in N, got {load_n!r}")
+    return ld
+
 
 
 @dataclass

@@ -31,9 +31,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from rotordyn import _core
-from rotordyn import _validate as v
-from rotordyn.bearings._element import check_common, coefficient_table
-from rotordyn.bearings._film import SystemParts, pad_film
+from rotordyn._common import validate as v
+from rotordyn.bearings._film import SystemParts, check_film_fields, pad_film
+from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.errors import InputError
 
 KINDS = {  # n lobes, orientation deg, preload, offset
@@ -95,7 +95,7 @@ class FixedGeometryBearing:
         return 360.0 / self.n_lobes - self.groove_width_deg
 
     def check(self, where: str, n_stations: int | None) -> None:
-        check_common(self, where, n_stations)
+        check_film_fields(self, where, n_stations)
         v.choice(f"{where}.kind", self.kind, tuple(KINDS))
         if self.preload is not None:
             v.in_range(f"{where}.preload", self.preload, 0.0, 1.0, hi_open=True)

@@ -68,9 +68,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from rotordyn import _core
-from rotordyn import _validate as v
-from rotordyn.bearings._element import check_common
-from rotordyn.bearings._film import SystemParts, pad_film
+from rotordyn._common import validate as v
+from rotordyn.bearings._film import SystemParts, check_film_fields, pad_film
 from rotordyn.errors import InputError
 
 
@@ -140,7 +139,7 @@ class SqueezeFilmDamper:
         self.check("squeeze_film_damper", None)
 
     def check(self, where: str, n_stations: int | None) -> None:
-        check_common(self, where, n_stations)
+        check_film_fields(self, where, n_stations)
         if self.cavitation == "jfo":
             raise InputError(f"{where}.cavitation: 'jfo' needs a supply groove; use 'none' (full "
                              "film), 'gumbel' (π film) or 'reynolds'")

@@ -22,9 +22,10 @@ from pathlib import Path
 import numpy as np
 
 from rotordyn import _core
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
+from rotordyn._common.status import CONVERGED
+from rotordyn.bearings._film import SystemParts
 from rotordyn.errors import InputError
-from rotordyn.results.equilibrium import CONVERGED
 
 K_FIELDS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m")
 C_FIELDS = ("cxx_n_s_per_m", "cxy_n_s_per_m", "cyx_n_s_per_m", "cyy_n_s_per_m")
@@ -154,8 +155,6 @@ class TableBearing:
         return np.asarray(self.to_core(0, 1, self.name).mass_at(2 * math.pi * f))
 
     def system_parts(self, jx: int, jy: int, first_extra: int, name: str):
-        from rotordyn.bearings._film import SystemParts
-
         return SystemParts(films=[], tables=[self.to_core(jx, jy, name)])
 
     # -- CSV ------------------------------------------------------------------------------

@@ -25,10 +25,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotordyn import _core
-from rotordyn import _validate as v
-from rotordyn.bearings._element import check_common, coefficient_table
-from rotordyn.bearings._film import SystemParts, pad_film
+from rotordyn._common import validate as v
+from rotordyn._common.status import CONVERGED
+from rotordyn.bearings._film import (SystemParts, check_film_fields, check_load, check_speeds,
+                                     operating_table, pad_film)
+from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.errors import InputError
 
 
@@ -63,7 +64,7 @@ class TiltingPadBearing:
         self.check("tilting_pad_bearing", None)
 
     def check(self, where: str, n_stations: int | None) -> None:
-        check_common(self, where, n_stations)
+        check_film_fields(self, where, n_stations)
         v.integer(f"{where}.n_pads", self.n_pads, lo=1, hi=32)
         v.in_range(f"{where}.pad_arc_deg", self.pad_arc_deg, 0.0, 360.0 / self.n_pads,
                    lo_open=True, hi_open=True)
@@ -187,13 +188,9 @@ class TiltingPadBearing:
         """The unreduced coefficients at one speed: (r, K, C, M) with r the equilibrium
         (journal x, y then the pad coordinates η_k [, u_k], see :meth:`system_parts`;
         :meth:`pad_tilts_rad` gives the tilts) and K, C, M (2 + n_pad_dofs square)."""
-        from rotordyn.bearings._element import check_load, check_speeds
-        from rotordyn.bearings._film import operating_table
-
         parts = self.system_parts(0, 1, 2, self.name or "bearing")
         r, K, C, status, message, M = operating_table(parts, check_load(load_n),
                                                       check_speeds(speed_hz))
-        from rotordyn.results.equilibrium import CONVERGED
 
         if status[0] not in CONVERGED:  # ok, or contact (converged with a thin film)
             from rotordyn.errors import ConvergenceError

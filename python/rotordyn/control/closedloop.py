@@ -121,7 +121,7 @@ def closed_loop(p, k, *, freqs_hz=None) -> ClosedLoopResult:
     below Nyquist). Margins from L on a log grid
     (default 0.1 Hz – 5 kHz, 4000 points): gain margin = 1/|L| where arg L crosses −180°
     (the smallest, inf if none), phase margin at |L| = 1 (the smallest)."""
-    from rotordyn.control.controller import Controller
+    from rotordyn.operation.controller import Controller
     from rotordyn.errors import InputError
 
     if not isinstance(k, Controller):  # a python-control system reading the plant's outputs

@@ -25,8 +25,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from rotordyn import _validate as v
-from rotordyn.control.controller import Controller
+from rotordyn._common import validate as v
+from rotordyn.operation.controller import Controller
 from rotordyn.errors import InputError
 
 SLYCOT_HINT = ("H∞ synthesis needs the optional package slycot (SLICOT's SB10AD): install "

@@ -8,8 +8,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.linalg import solve_continuous_are
 
-from rotordyn import _validate as v
-from rotordyn.control.controller import Controller
+from rotordyn._common import validate as v
+from rotordyn.operation.controller import Controller
 from rotordyn.errors import InputError
 
 

@@ -9,8 +9,8 @@ import math
 import numpy as np
 from scipy.optimize import minimize
 
-from rotordyn import _validate as v
-from rotordyn.control.controller import Controller
+from rotordyn._common import validate as v
+from rotordyn.operation.controller import Controller
 
 
 def pid(kp: float, kd: float, ki: float = 0.0, *, tau_d_s: float = 2e-4,

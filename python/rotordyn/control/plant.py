@@ -10,8 +10,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rotordyn.analysis.statespace import statespace
-from rotordyn.control.measurement import measurement_matrix, parse_measurements
-from rotordyn.control.operation import Actuator
+from rotordyn.analysis.measurement import measurement_matrix
+from rotordyn.operation.measurement import parse_measurements
+from rotordyn.operation.actuator import Actuator
 
 
 @dataclass(frozen=True)

@@ -9,7 +9,7 @@ from dataclasses import replace
 import numpy as np
 from scipy.linalg import eig
 
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 
 
 def _freqresp(A, B, C, w):

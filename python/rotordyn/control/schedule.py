@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import continued_linear_models
 from rotordyn.errors import InputError
@@ -41,7 +41,7 @@ class ScheduleResult:
 
     def schedule(self):
         """The :class:`~rotordyn.control.PressureSchedule` p_c(Ω) (NaN speeds dropped)."""
-        from rotordyn.control.operation import PressureSchedule
+        from rotordyn.operation.profiles import PressureSchedule
 
         ok = np.isfinite(self.pressures_pa)
         if not ok.any():

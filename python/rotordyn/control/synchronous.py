@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import assembled
 from rotordyn.errors import InputError
 from rotordyn.control.schedule import linear_model_grid
@@ -196,7 +196,7 @@ def synchronous_bound(system, unbalances, speeds_hz, pressures_pa, *, stations,
     :class:`~rotordyn.control.Actuator`, 100 Hz): its lag H(iΩ) is in the map and its limits
     bound the command, |p̂| ≤ min(p₀ − p_min, p_max − p₀). Equilibria are continued in speed at
     each pressure (as :func:`rotordyn.control.schedule.pressure_schedule`)."""
-    from rotordyn.control.operation import Actuator
+    from rotordyn.operation.actuator import Actuator
 
     act = Actuator() if actuator is None else actuator
     sp = np.asarray(speeds_hz, dtype=float)

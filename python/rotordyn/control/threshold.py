@@ -10,7 +10,7 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import brentq
 
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.errors import InputError, RotordynError
 
 

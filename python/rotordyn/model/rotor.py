@@ -1,4 +1,5 @@
-"""Rotor description: materials, shaft sections (Timoshenko elements), disks and supports.
+"""Rotor description: materials, shaft sections (Timoshenko elements), disks, supports and the
+reduction (condensation) of the rotor model.
 
 Stations are the section boundaries, numbered 0 … n_sections from the left end; a section with
 ``n_elements > 1`` is subdivided into equal Timoshenko elements whose inner nodes are not
@@ -14,8 +15,8 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn.errors import InputError
-from rotordyn import _validate as v
-from rotordyn import plausibility
+from rotordyn._common import validate as v
+from rotordyn._common import plausibility
 
 
 @dataclass(frozen=True, slots=True)
@@ -237,3 +238,38 @@ class Rotor:
     @property
     def length_m(self) -> float:
         return float(sum(s.length_m for s in self.sections))
+
+
+REDUCTION_METHODS = ("none", "guyan", "irs", "craig-bampton")
+
+
+@dataclass(frozen=True, slots=True)
+class Reduction:
+    """Condensation of the rotor to translations (x, y) at master stations (paper §4, §6).
+
+    ``method``: ``"guyan"`` (the paper's), ``"irs"`` (improved reduced system) or
+    ``"craig-bampton"`` (masters plus ``n_modes`` fixed-interface modes); ``"none"`` keeps the
+    full model. Default: ``"guyan"`` when master stations are given, else ``"none"`` (a
+    reduction without masters is refused, so every written model file can be analysed)."""
+
+    master_stations: tuple[int, ...] = ()
+    method: str | None = None
+    n_modes: int = 0
+
+    def __post_init__(self):
+        object.__setattr__(self, "master_stations", tuple(
+            v.sequence("reduction.master_stations", self.master_stations)))
+        if self.method is None:
+            object.__setattr__(self, "method", "guyan" if self.master_stations else "none")
+        v.choice("reduction.method", self.method, REDUCTION_METHODS)
+        if self.method != "none" and not self.master_stations:
+            raise InputError(
+                f"reduction.master_stations: method {self.method!r} needs at least one master "
+                "station (or set method = \"none\" for the full model)")
+        v.integer("reduction.n_modes", self.n_modes, lo=0, hi=1000)
+        seen = set()
+        for i, s in enumerate(self.master_stations):
+            v.integer(f"reduction.master_stations[{i}]", s, lo=0)
+            if s in seen:
+                raise InputError(f"reduction.master_stations[{i}]: station {s} is listed twice")
+            seen.add(s)

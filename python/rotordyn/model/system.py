@@ -13,44 +13,11 @@ import scipy.sparse as sp
 
 from rotordyn import _core
 from rotordyn.errors import InputError
-from rotordyn import _validate as v
-from rotordyn.model.bearings import BEARING_TYPES, ActiveJournalBearing, FluidFilmBearing
-from rotordyn.model.rotor import STEEL, Material, Rotor, Support
-
-REDUCTION_METHODS = ("none", "guyan", "irs", "craig-bampton")
-
-
-@dataclass(frozen=True, slots=True)
-class Reduction:
-    """Condensation of the rotor to translations (x, y) at master stations (paper §4, §6).
-
-    ``method``: ``"guyan"`` (the paper's), ``"irs"`` (improved reduced system) or
-    ``"craig-bampton"`` (masters plus ``n_modes`` fixed-interface modes); ``"none"`` keeps the
-    full model. Default: ``"guyan"`` when master stations are given, else ``"none"`` (a
-    reduction without masters is refused, so every written model file can be analysed)."""
-
-    master_stations: tuple[int, ...] = ()
-    method: str | None = None
-    n_modes: int = 0
-
-    def __post_init__(self):
-        object.__setattr__(self, "master_stations", tuple(
-            v.sequence("reduction.master_stations", self.master_stations)))
-        if self.method is None:
-            object.__setattr__(self, "method", "guyan" if self.master_stations else "none")
-        v.choice("reduction.method", self.method, REDUCTION_METHODS)
-        if self.method != "none" and not self.master_stations:
-            raise InputError(
-                f"reduction.master_stations: method {self.method!r} needs at least one master "
-                "station (or set method = \"none\" for the full model)")
-        v.integer("reduction.n_modes", self.n_modes, lo=0, hi=1000)
-        seen = set()
-        for i, s in enumerate(self.master_stations):
-            v.integer(f"reduction.master_stations[{i}]", s, lo=0)
-            if s in seen:
-                raise InputError(f"reduction.master_stations[{i}]: station {s} is listed twice")
-            seen.add(s)
-
+from rotordyn._common import validate as v
+from rotordyn.bearings import BEARING_TYPES
+from rotordyn.model.rotor import (REDUCTION_METHODS, STEEL, Material,  # noqa: F401
+                                 Reduction, Rotor, Support)
+from rotordyn.model.toml_io import system_fields_from_toml, system_to_toml
 
 @dataclass(frozen=True, slots=True)
 class System:
@@ -205,14 +172,10 @@ class System:
     @classmethod
     def from_toml(cls, path_or_text, *, is_text: bool = False) -> "System":
         """Read a model file (``schema = "rotordyn/model/1"``); unknown keys are errors."""
-        from rotordyn.model.toml_io import system_from_toml
-
-        return system_from_toml(path_or_text, is_text=is_text)
+        return cls(**system_fields_from_toml(path_or_text, is_text=is_text))
 
     def to_toml(self, path=None) -> str:
         """The model as TOML text (written to ``path`` when given); round-trips losslessly."""
-        from rotordyn.model.toml_io import system_to_toml
-
         text = system_to_toml(self)
         if path is not None:
             with open(path, "w", encoding="utf-8") as fh:

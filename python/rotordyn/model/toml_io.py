@@ -13,7 +13,9 @@ import tomllib
 import numpy as np
 from pathlib import Path
 
+from rotordyn.bearings import BEARING_TYPES, FlexibleSleeve, Groove
 from rotordyn.errors import InputError
+from rotordyn.model.rotor import Disk, Material, Reduction, Rotor, ShaftSection, Support
 
 SCHEMA = "rotordyn/model/1"
 
@@ -67,11 +69,9 @@ def parse_toml(text: str, src: str, field: str = "model") -> dict:
         raise InputError(f"{field}: {src} is not valid TOML: {exc}") from None
 
 
-def system_from_toml(path_or_text, *, is_text: bool = False):
-    """Parse a model (path or, with ``is_text=True``, the TOML text) into a ``System``."""
-    from rotordyn.model.rotor import Disk, Material, Rotor, ShaftSection, Support
-    from rotordyn.model.system import Reduction, System
-
+def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
+    """Parse a model (path or, with ``is_text=True``, the TOML text) into the keyword arguments
+    of ``System`` (which builds and validates itself: :meth:`rotordyn.System.from_toml`)."""
     if is_text:
         if not isinstance(path_or_text, str):
             raise InputError(f"model: expected TOML text, got {type(path_or_text).__name__}")
@@ -120,16 +120,12 @@ def system_from_toml(path_or_text, *, is_text: bool = False):
         kwargs["gravity_m_s2"] = doc["gravity_m_s2"]
     if mats:
         kwargs["materials"] = tuple(mats)
-    return System(rotor=Rotor(tuple(sections), tuple(disks)), supports=tuple(supports),
-                  reduction=reduction, bearings=tuple(bearings), name=doc.get("name", ""),
-                  description=doc.get("description", ""), **kwargs)
+    return dict(rotor=Rotor(tuple(sections), tuple(disks)), supports=tuple(supports),
+                reduction=reduction, bearings=tuple(bearings), name=doc.get("name", ""),
+                description=doc.get("description", ""), **kwargs)
 
 
 def _bearing_from_table(where: str, t: dict):
-    from rotordyn.bearing import Groove
-    from rotordyn.model.bearings import BEARING_TYPES
-    from rotordyn.sleeve import FlexibleSleeve
-
     t = dict(t)
     kind = t.pop("type", None)
     if not isinstance(kind, str) or kind not in BEARING_TYPES:
@@ -191,7 +187,7 @@ def _table_lines(obj, skip=(), defaults_too=False) -> list[str]:
 
 
 def system_to_toml(system) -> str:
-    """TOML text of a ``System`` in the layout :func:`system_from_toml` reads."""
+    """TOML text of a ``System`` in the layout :func:`system_fields_from_toml` reads."""
     lines = [f'schema = "{SCHEMA}"']
     if system.name:
         lines.append(f"name = {_val(system.name)}")
@@ -207,8 +203,6 @@ def system_to_toml(system) -> str:
     for s in system.supports:
         lines += ["", "[[support]]"] + _table_lines(s)
     lines += ["", "[reduction]"] + _table_lines(system.reduction, defaults_too=True)
-    from rotordyn.model.bearings import BEARING_TYPES
-
     kinds = {cls: name for name, cls in BEARING_TYPES.items()}
     for b in system.bearings:
         lines += ["", "[[bearing]]", f"type = {_val(kinds[type(b)])}"]

@@ -20,7 +20,7 @@ KIND_LABEL = {"rigid": "ball bearing (rigid in x, y)", "linear": "linear support
 
 def support_items(system):
     """[(station, label, kind)] of the supports and fluid-film bearings."""
-    from rotordyn.model.bearings import ActiveJournalBearing
+    from rotordyn.bearings import ActiveJournalBearing
 
     out = []
     for s in system.supports:

@@ -1,7 +1,7 @@
 """Mode shapes and deflected shapes in 3-D: the whirl orbit of every node along the rotor
 (both planes: x horizontal, y vertical), the instantaneous shape, the rotor outline, disks and
 bearings; forward / backward / planar orbits told apart by colour (same rule as the tables,
-:data:`rotordyn.results.modes.WHIRL_PLANAR_TOL`), the start of each orbit marked so the sense
+:data:`rotordyn._common.whirl.WHIRL_PLANAR_TOL`), the start of each orbit marked so the sense
 of rotation can be read."""
 
 from __future__ import annotations
@@ -41,7 +41,7 @@ def orbits_3d(z_m, X, Y, *, ax=None, system=None, title=None, normalise=True,
     displacements are drawn in µm (``unit="µm"``)."""
     from matplotlib.lines import Line2D
 
-    from rotordyn.results.modes import whirl_index, whirl_label
+    from rotordyn._common.whirl import whirl_index, whirl_label
 
     z = np.asarray(z_m, dtype=float)
     X = np.asarray(X, dtype=complex)

@@ -8,11 +8,7 @@ import numpy as np
 import pandas as pd
 
 
-STATUSES = ("ok", "no_equilibrium", "contact", "not_converged", "error")
-# Converged equilibria ("contact": converged with a film thinner than contact_fraction c);
-# only these are linearised, classified or integrated from. The others are failures.
-CONVERGED = ("ok", "contact")
-FAILED = ("no_equilibrium", "not_converged", "error")
+from rotordyn._common.status import CONVERGED, FAILED, STATUSES  # noqa: F401
 
 
 @dataclass(frozen=True)

@@ -22,38 +22,14 @@ from pathlib import Path
 
 import numpy as np
 
-from rotordyn.errors import InputError
-from rotordyn.sweep.spec import _axis
+from rotordyn._common.info import __version__
+from rotordyn.sweep.execution import (Dask, Progress, SweepInterrupted, SweepResult, Threads,
+                                      group_size)
+from rotordyn.sweep.spec import fine_axes
 from rotordyn.sweep.store import Store
 from rotordyn.sweep.work import Job
 
 BOUNDARY = "_boundary.parquet"
-
-
-def fine_axes(spec) -> tuple[dict, dict]:
-    """(ordered fine axes: fixed axes first, then x, then y; per-axis coarse step in fine
-    index units)."""
-    x, y, res = spec.options["x"], spec.options["y"], spec.options["resolution"]
-    fixed = {k: val for k, val in spec.axes.items() if k not in (x, y)}
-    for k, val in fixed.items():
-        if len(val) != 1:
-            raise InputError(f"grid.{k}: a boundary sweep takes one value for every axis but "
-                             f"{x} and {y}, got {len(val)}")
-    ax = dict(fixed)
-    step = {}
-    for a in (x, y):
-        c = spec.axes[a]
-        ratio = (res - 1) // (len(c) - 1)
-        if ratio & (ratio - 1):
-            raise InputError(f"options.resolution: ({res} - 1) / ({len(c)} - 1) = {ratio} "
-                             f"must be a power of two for grid.{a}")
-        f = _axis(a, {"start": c[0], "stop": c[-1], "num": res})
-        if any(abs(f[i * ratio] - c[i]) > 1e-12 * max(1.0, abs(c[i])) for i in range(len(c))):
-            raise InputError(f"grid.{a}: the boundary's coarse grid must be a "
-                             "{start, stop, num} range (evenly spaced)")
-        ax[a] = f
-        step[a] = ratio
-    return ax, step
 
 
 def _classify(table) -> dict[int, tuple[int, float, float]]:
@@ -85,10 +61,6 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     import pyarrow as pa
     import pyarrow.parquet as pq
 
-    import rotordyn
-    from rotordyn.sweep.runner import (Progress, SweepInterrupted, SweepResult, _Dask,
-                                       _Threads, group_size)
-
     ax, step = fine_axes(spec)
     x, y = spec.options["x"], spec.options["y"]
     nx, ny = len(ax[x]), len(ax[y])
@@ -97,7 +69,7 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     job = Job(spec.name, model_toml, spec.analysis, spec.options, ax)
     job.key = header["spec_hash"]
     job.meta = {"sweep_id": spec.name, "spec_hash": header["spec_hash"],
-                "model_hash": header["model_hash"], "rotordyn": rotordyn.__version__,
+                "model_hash": header["model_hash"], "rotordyn": __version__,
                 "units": header["units"]}
     base = int(np.ravel_multi_index(tuple(0 for _ in ax), tuple(len(v) for v in ax.values())))
 
@@ -131,8 +103,8 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
             if todo:
                 job.level = level
                 if ex is None:
-                    ex = (_Threads(threads) if threads is not None else
-                          _Dask(scheduler, workers or min(len(todo), os.cpu_count() or 1),
+                    ex = (Threads(threads) if threads is not None else
+                          Dask(scheduler, workers or min(len(todo), os.cpu_count() or 1),
                                 worker_timeout, bar))
                 for c, (table, cnt) in ex.map(job, todo):
                     store.add(c, table, cnt, 0)

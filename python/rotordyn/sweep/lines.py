@@ -11,16 +11,18 @@ import math
 import numpy as np
 
 from rotordyn.errors import RotordynError
-from rotordyn.sweep import work as w
+from rotordyn.results.unbalance import UnbalanceResult
+from rotordyn.sweep import points as pt
+from rotordyn.units import hz_to_rad_s
 
 
-def _max_real(job, asm, p, r0, opts, exclude_sleeve):
+def max_real(job, asm, p, r0, opts, exclude_sleeve):
     """(max Re λ, its frequency Hz, status, equilibrium r or None) at point ``p``."""
-    f, pc, a = w._operating(asm, p)
-    e = w._equilibrium(asm, f, pc, a, r0, opts)
-    if e.status not in w.LINEARISABLE:
+    f, pc, a = pt.operating(asm, p)
+    e = pt.solve_equilibrium(asm, f, pc, a, r0, opts)
+    if e.status not in pt.CONVERGED:
         return math.nan, math.nan, e.status, None
-    lam, _, _, kind = w._eigen(asm, e, f, opts, None)
+    lam, _, _, kind = pt.eigen(asm, e, f, opts, None)
     if exclude_sleeve:
         lam = lam[kind == "rotor"]
     i = int(np.argmax(lam.real))
@@ -38,18 +40,18 @@ def threshold_line(job, variants, chunk_id, lo, hi, rows):
     try:
         asm = variants.get(p0)
     except RotordynError as exc:
-        rows.append(w._fail(w._common(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
+        rows.append(pt.fail_row(pt.common_row(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
         return
-    row = w._common(job, lo, chunk_id, idx0, p0, asm)
+    row = pt.common_row(job, lo, chunk_id, idx0, p0, asm)
     row[f"i_{vary}"] = None
-    opts = w._options(job, p0)
+    opts = pt.point_options(job, p0)
     xs, ys, fs, rs = [], [], [], []
     r0 = None
     evals = 0
     for pid in range(lo, hi):
         _, p = job.point(pid)
         try:
-            y, fr, st, r = _max_real(job, asm, p, r0, opts, excl)
+            y, fr, st, r = max_real(job, asm, p, r0, opts, excl)
         except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError):
             y, fr, r = math.nan, math.nan, None
         evals += 1
@@ -71,7 +73,7 @@ def threshold_line(job, variants, chunk_id, lo, hi, rows):
             evals += 1
             q = dict(pbase)
             q[vary] = float(x)
-            y, _, _, _ = _max_real(job, asm, q, start, opts, excl)
+            y, _, _, _ = max_real(job, asm, q, start, opts, excl)
             if not math.isfinite(y):
                 raise ArithmeticError("no equilibrium inside the bracket")
             return y
@@ -82,7 +84,7 @@ def threshold_line(job, variants, chunk_id, lo, hi, rows):
                        rtol=4 * np.finfo(float).eps, maxiter=100)
             q = dict(pbase)
             q[vary] = x
-            _, fr, _, _ = _max_real(job, asm, q, start, opts, excl)
+            _, fr, _, _ = max_real(job, asm, q, start, opts, excl)
             status, msg = "ok", ""
         except (RotordynError, ArithmeticError, ValueError, RuntimeError) as exc:
             x, fr, status, msg = math.nan, math.nan, "error", f"{type(exc).__name__}: {exc}"
@@ -104,16 +106,13 @@ def threshold_line(job, variants, chunk_id, lo, hi, rows):
 def unbalance_line(job, variants, chunk_id, lo, hi, rows):
     """Unbalance response along the speed line [lo, hi): one row per (speed, station), with
     ``peak`` rows carrying the amplification factor and separation margin (API 684)."""
-    from rotordyn.results.unbalance import UnbalanceResult
-    from rotordyn.units import hz_to_rad_s
-
     idx0, p0 = job.point(lo)
     try:
         asm = variants.get(p0)
     except RotordynError as exc:
-        rows.append(w._fail(w._common(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
+        rows.append(pt.fail_row(pt.common_row(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
         return
-    opts = w._options(job, p0)
+    opts = pt.point_options(job, p0)
     ub = opts["unbalances"]
     stations = tuple(opts.get("stations") or dict.fromkeys(int(u[0]) for u in ub))
     Cout = [asm.station_output_matrix(s) for s in stations]
@@ -127,14 +126,14 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
     M, C0, G, K0 = (np.asarray(x) for x in (m.M, m.C, m.G, m.K))
     for k, pid in enumerate(range(lo, hi)):
         idx, p = job.point(pid)
-        base.append(w._common(job, pid, chunk_id, idx, p, asm))
+        base.append(pt.common_row(job, pid, chunk_id, idx, p, asm))
         speeds.append(p.get("speed_hz", 50.0))
         try:
-            f, pc, a = w._operating(asm, p)
-            e = w._equilibrium(asm, f, pc, a, r0, opts)
-            status.append(e.status if e.status in w.STATUS else "error")
+            f, pc, a = pt.operating(asm, p)
+            e = pt.solve_equilibrium(asm, f, pc, a, r0, opts)
+            status.append(e.status if e.status in pt.STATUS else "error")
             msg.append(e.message)
-            if e.status not in w.LINEARISABLE:
+            if e.status not in pt.CONVERGED:
                 r0 = None
                 continue
             r0 = np.asarray(e.r)

@@ -31,7 +31,7 @@ def _select(seq: tuple, key: str, where: str) -> list[int]:
             raise InputError(f"{where}: index {i} out of range (0..{len(seq) - 1})")
         return [i]
     if key == "active":
-        from rotordyn.model.bearings import ActiveJournalBearing
+        from rotordyn.bearings import ActiveJournalBearing
 
         idx = [i for i, b in enumerate(seq) if isinstance(b, ActiveJournalBearing)]
         if idx:

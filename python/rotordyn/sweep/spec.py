@@ -23,7 +23,8 @@ from decimal import Decimal, localcontext
 from pathlib import Path
 
 from rotordyn.errors import InputError
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
+from rotordyn.model import builtin as models
 
 SCHEMA = "rotordyn/sweep/1"
 OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
@@ -154,6 +155,32 @@ def _axis(name: str, val) -> list[float]:
     raise InputError(f"{where}: expected a number, a non-empty list or {{start, stop, num}}")
 
 
+def fine_axes(spec) -> tuple[dict, dict]:
+    """(ordered fine axes: fixed axes first, then x, then y; per-axis coarse step in fine
+    index units)."""
+    x, y, res = spec.options["x"], spec.options["y"], spec.options["resolution"]
+    fixed = {k: val for k, val in spec.axes.items() if k not in (x, y)}
+    for k, val in fixed.items():
+        if len(val) != 1:
+            raise InputError(f"grid.{k}: a boundary sweep takes one value for every axis but "
+                             f"{x} and {y}, got {len(val)}")
+    ax = dict(fixed)
+    step = {}
+    for a in (x, y):
+        c = spec.axes[a]
+        ratio = (res - 1) // (len(c) - 1)
+        if ratio & (ratio - 1):
+            raise InputError(f"options.resolution: ({res} - 1) / ({len(c)} - 1) = {ratio} "
+                             f"must be a power of two for grid.{a}")
+        f = _axis(a, {"start": c[0], "stop": c[-1], "num": res})
+        if any(abs(f[i * ratio] - c[i]) > 1e-12 * max(1.0, abs(c[i])) for i in range(len(c))):
+            raise InputError(f"grid.{a}: the boundary's coarse grid must be a "
+                             "{start, stop, num} range (evenly spaced)")
+        ax[a] = f
+        step[a] = ratio
+    return ax, step
+
+
 def _flatten(grid: dict, prefix: str = "") -> dict:
     """``[grid]`` with TOML sub-tables (``bearings.active.clearance_m = ...`` unquoted) turned
     back into dotted names; a table of only start/stop/num/scale keys is a range."""
@@ -236,9 +263,7 @@ class SweepSpec:
         return spec
 
     def load_model(self):
-        import rotordyn
-
-        return rotordyn.models.load(self.model)
+        return models.load(self.model)
 
     def _check_shape(self) -> None:
         n = math.prod(len(x) for x in self.axes.values())
@@ -261,8 +286,6 @@ class SweepSpec:
                                      "values (the coarse grid)")
             if x == y:
                 raise InputError("options.y: must differ from options.x")
-            from rotordyn.sweep.boundary import fine_axes
-
             fine_axes(self)
             res = self.options["resolution"]
             for k, ax in (("x", x), ("y", y)):
@@ -307,7 +330,7 @@ class SweepSpec:
         for name, vals in self.axes.items():
             if name in OPERATING:
                 if name in ("config_ay_m", "config_ax_m"):
-                    from rotordyn.model.bearings import ActiveJournalBearing
+                    from rotordyn.bearings import ActiveJournalBearing
 
                     act = [b for b in system.bearings if isinstance(b, ActiveJournalBearing)]
                     if len(act) != 1 and len(system.bearings) != 1:

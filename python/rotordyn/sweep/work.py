@@ -15,11 +15,19 @@ import math
 import numpy as np
 import pyarrow as pa
 
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn._common.whirl import WHIRL_NAMES
+from rotordyn.analysis.linear import FD_REL_STEP
+from rotordyn.analysis.transient import transient
+from rotordyn.operation import SpeedProfile
+from rotordyn.sweep.lines import max_real, threshold_line, unbalance_line
 from rotordyn.errors import RotordynError
-from rotordyn import _validate as v
+from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, equilibrium_options, fail_row, operating, points, ref_bearing,
+                                   solve_equilibrium, stable_modes)
+from rotordyn.sweep.tracking import track_line
+from rotordyn.units import hz_to_rad_s
 
-STATUS = ["ok", "no_equilibrium", "contact", "not_converged", "no_crossing", "error", "rub"]
-LINEARISABLE = ("ok", "contact")  # statuses of a converged equilibrium
 WHIRL = ["forward", "backward", "planar"]
 KIND = ["rotor", "sleeve"]
 F64, I64, I32, BOOL, STR = pa.float64(), pa.int64(), pa.int32(), pa.bool_(), pa.string()
@@ -99,170 +107,12 @@ class Job:
                                             zip(self.axes.items(), idx)}
 
 
-_BASE: dict = {}
-
-
-def _base_system(model_toml: str):
-    import rotordyn as rd
-
-    sysm = _BASE.get(model_toml)
-    if sysm is None:
-        _BASE.clear()
-        sysm = _BASE[model_toml] = rd.System.from_toml(model_toml, is_text=True)
-    return sysm
-
-
-_ASM: dict = {}  # (model text, model-axis values) -> Assembled (stateless parts reused)
-
-
-class _Variants:
-    """The model for each combination of model-field axes met in this chunk, each with a
-    solver built fresh for this chunk (the reduction and sleeve condensation are cached per
-    process; the solver, which keeps warm starts, is not shared between chunks)."""
-
-    def __init__(self, base, model_toml: str):
-        self.base = base
-        self.model_toml = model_toml
-        self.cache = {}
-
-    def get(self, p: dict):
-        import copy
-
-        from rotordyn import _core
-        from rotordyn.analysis.assembly import Assembled
-        from rotordyn.sweep.paths import set_field
-
-        key = tuple((k, val) for k, val in p.items() if "." in k and not k.startswith("options.")
-                    or k == "gravity_m_s2")
-        hit = self.cache.get(key)
-        if hit is None:
-            proto = _ASM.get((self.model_toml, key))
-            if proto is None:
-                s = self.base
-                for k, val in key:
-                    s = set_field(s, k, val)
-                if len(_ASM) > 8:
-                    _ASM.clear()
-                proto = _ASM[(self.model_toml, key)] = Assembled(s)
-            hit = copy.copy(proto)
-            hit.solver = _core.SystemSolver(proto.model)
-            hit.last_r = None
-            m = proto.model
-            hit.mats = tuple(np.asarray(x) for x in (m.M, m.C, m.G, m.K))
-            if len(self.cache) > 4:
-                self.cache.clear()
-            self.cache[key] = hit
-        return hit
-
-
-def _options(job: Job, p: dict) -> dict:
-    import copy
-
-    opts = job.options
-    keys = [k for k in p if k.startswith("options.")]
-    if not keys:
-        return opts
-    opts = copy.deepcopy(opts)
-    for k in keys:
-        parts = k.split(".")[1:]
-        if len(parts) == 1:
-            opts[parts[0]] = p[k]
-            continue
-        cur = opts[parts[0]]
-        for q in parts[1:-1]:
-            cur = cur[int(q)]
-        cur[int(parts[-1])] = p[k]
-    return opts
-
-
-def _operating(asm, p: dict):
-    """speed (Hz), p_c (Pa), configuration vector; InputError on a bad value."""
-    f = v.finite("speed_hz", p.get("speed_hz", 50.0))
-    pc = v.non_negative("chamber_pressure_pa", p.get("chamber_pressure_pa", 0.0))
-    ay, ax = p.get("config_ay_m"), p.get("config_ax_m")
-    a = asm.config_vector(ay, ax)
-    return f, pc, a
-
-
-def _ref_bearing(asm):
-    act = [bc for bc in asm.bearings if bc.active]
-    return (act or asm.bearings)[0] if asm.bearings else None
-
-
-def _equilibrium_options(opts):
-    """The C++ equilibrium options of a sweep's analysis options (automatic P_m, thin-film
-    contact at 2 % of c)."""
-    from rotordyn import _core
-
-    o = _core.EquilibriumOptions()
-    o.method = opts.get("method", "newton")
-    o.tol = float(opts.get("tol", 1e-10))
-    o.max_iter = int(opts.get("max_iter", 100))
-    o.pm = -1.0
-    o.contact_fraction = 0.02
-    return o
-
-
-def _equilibrium(asm, f, pc, a, r0, opts):
-    from rotordyn.units import hz_to_rad_s
-
-    o = _equilibrium_options(opts)
-    return asm.solver.equilibrium(hz_to_rad_s(f), pc, a, np.zeros(0) if r0 is None else r0, o)
-
-
-def _eigen(asm, e, f, opts, n_modes):
-    """Eigenvalues, modes (n, k), whirl, kind of eq. 19 at equilibrium ``e``."""
-    from rotordyn import _core
-    from rotordyn.units import hz_to_rad_s
-
-    w = hz_to_rad_s(f)
-    r = np.asarray(e.r)
-    if opts.get("linearization", "perturbation") == "perturbation":
-        lin = asm.solver.linearize(r, np.zeros(asm.n), w)
-    else:
-        from rotordyn.analysis.linear import FD_REL_STEP
-
-        lin = asm.solver.linearize_fd(r, w, FD_REL_STEP)
-    M, C0, G, K0 = asm.mats
-    if asm.model.has_table_mass():  # bearing tables' mass coefficients: M(Ω)
-        M = np.asarray(asm.model.mass_at(w))
-    D = C0 + w * G + np.asarray(lin.DH)
-    K = K0 + np.asarray(lin.KH)
-    if not (np.all(np.isfinite(K)) and np.all(np.isfinite(D))):
-        raise ArithmeticError("non-finite bearing coefficients")
-    res = _core.modal(M, D, K, asm.rotor.xy_pairs(), int(n_modes or asm.n), True,
-                      asm.rotor.rot_pairs())
-    lam = np.asarray(res.eigenvalues)
-    phi = np.asarray(res.modes)
-    if not np.all(np.isfinite(lam)):  # never a non-finite eigenvalue with status ok
-        raise ArithmeticError("non-finite eigenvalues")
-    sl = [i for bc in asm.bearings for i in bc.sleeve]
-    kin = np.real(np.einsum("ik,ij,jk->k", phi.conj(), M, phi))
-    kin_s = (np.real(np.einsum("ik,ij,jk->k", phi[sl].conj(), M[np.ix_(sl, sl)], phi[sl]))
-             if sl else np.zeros(len(lam)))
-    kind = np.where(kin_s > 0.5 * kin, "sleeve", "rotor")
-    from rotordyn.results.modes import WHIRL_NAMES
-
-    whirl = np.array([WHIRL_NAMES[int(x)] for x in res.whirl])
-    return lam, phi, whirl, kind
-
-
-def _stable(lam) -> np.ndarray:
-    """Per mode: Re λ below the round-off band (as StabilityResult.stable)."""
-    return lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)
-
-
-def _same_line(prev, idx, pos) -> bool:
-    """Consecutive points that differ only along the innermost varying axis."""
-    return prev is not None and prev[:pos] == idx[:pos] and prev[pos + 1:] == idx[pos + 1:]
-
-
 def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     """Rows of points [lo, hi) (or of the listed point ids ``pids``, for the adaptive
     boundary) as a table with :func:`schema`."""
     rows: list[dict] = []
-    base = _base_system(job.model_toml)
-    variants = _Variants(base, job.model_toml)
+    base = base_system(job.model_toml)
+    variants = Variants(base, job.model_toml)
     if pids is not None:
         _boundary_rows(job, variants, chunk_id, pids, rows)
     else:
@@ -270,54 +120,17 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     return to_table(job, rows)
 
 
-def _common(job, pid, chunk_id, idx, p, asm):
-    row = {"point_id": pid, "chunk_id": chunk_id}
-    for (a, _), i in zip(job.axes.items(), idx):
-        row[f"i_{a}"] = i
-    row.update(p)
-    row.setdefault("speed_hz", 50.0)
-    row.setdefault("chamber_pressure_pa", 0.0)
-    if "config_ay_m" not in row:
-        bc = _ref_bearing(asm) if asm is not None else None
-        row["config_ay_m"] = (job_model_ay(asm, bc) if bc is not None else math.nan)
-    return row
-
-
-def job_model_ay(asm, bc):
-    return float(asm.system.bearings[bc.index].config_ay_m)
-
-
-def _fail(row, status, message):
-    return {**row, "status": status, "message": message}
-
-
-def _points(job, variants, chunk_id, lo, hi, pids=None):
-    """Yield (row, p, asm, opts, same_line, error) per point; a model-variant error is
-    yielded as asm=None with its message."""
-    prev = None
-    for pid in (range(lo, hi) if pids is None else pids):
-        idx, p = job.point(pid)
-        try:
-            asm = variants.get(p)
-            err = None
-        except RotordynError as exc:
-            asm, err = None, str(exc)
-        row = _common(job, pid, chunk_id, idx, p, asm)
-        yield row, p, asm, _options(job, p), _same_line(prev, idx, job.line_pos), err
-        prev = idx
-
-
 def _eq_rows(job, variants, chunk_id, lo, hi, rows):
     r_prev = None
-    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
         if err:
-            rows.append(_fail(row, "error", err))
+            rows.append(fail_row(row, "error", err))
             continue
         try:
-            f, pc, a = _operating(asm, p)
-            e = _equilibrium(asm, f, pc, a, r_prev if line else None, opts)
+            f, pc, a = operating(asm, p)
+            e = solve_equilibrium(asm, f, pc, a, r_prev if line else None, opts)
         except (RotordynError, ArithmeticError, ValueError) as exc:
-            rows.append(_fail(row, "error", str(exc)))
+            rows.append(fail_row(row, "error", str(exc)))
             r_prev = None
             continue
         r = np.asarray(e.r)
@@ -325,7 +138,7 @@ def _eq_rows(job, variants, chunk_id, lo, hi, rows):
         # per bearing (a tilting pad has a film per pad, a table bearing none: NaN)
         hmin = asm.bearing_h_min(np.asarray(e.h_min))
         for k, bc in enumerate(asm.bearings):
-            ok = e.status in LINEARISABLE
+            ok = e.status in CONVERGED
             x = r[bc.jx] if ok else math.nan
             y = r[bc.jy] if ok else math.nan
             c = bc.clearance_m if bc.clearance_m > 0 else math.nan  # a table: no clearance
@@ -340,14 +153,13 @@ def _eq_rows(job, variants, chunk_id, lo, hi, rows):
 def _stab_rows(job, variants, chunk_id, lo, hi, rows):
     """Stability points of a chunk through the C++ batch (one call per run of points sharing
     a model and options): equilibrium continued along the line, K_H/D_H, eigen-analysis."""
-    from rotordyn.sweep.tracking import track_line
 
     items = []  # (row, asm, opts, line, (f, pc, a) or None, error)
-    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
         op = None
         if not err:
             try:
-                op = _operating(asm, p)
+                op = operating(asm, p)
             except RotordynError as exc:
                 err = f"{type(exc).__name__}: {exc}"
         items.append([row, asm, opts, line, op, err])
@@ -356,7 +168,7 @@ def _stab_rows(job, variants, chunk_id, lo, hi, rows):
     i = 0
     while i < len(items):
         if items[i][5]:
-            out[i] = (_fail(items[i][0], "error", items[i][5]), None, None)
+            out[i] = (fail_row(items[i][0], "error", items[i][5]), None, None)
             i += 1
             continue
         j = i
@@ -386,13 +198,10 @@ def _stab_rows(job, variants, chunk_id, lo, hi, rows):
 
 
 def _stab_batch(job, seg, out, at, restart_first):
-    from rotordyn import _core
-    from rotordyn.analysis.linear import FD_REL_STEP
-    from rotordyn.units import hz_to_rad_s
 
     asm, opts = seg[0][1], seg[0][2]
     n_modes = job.options.get("n_modes") or 0
-    o = _equilibrium_options(opts)
+    o = equilibrium_options(opts)
     restart = [1 if (k == 0 and restart_first) or not it[3] else 0 for k, it in enumerate(seg)]
     res = _core.stability_batch(
         asm.solver, np.array([hz_to_rad_s(it[4][0]) for it in seg]),
@@ -400,9 +209,8 @@ def _stab_batch(job, seg, out, at, restart_first):
         int(n_modes), opts.get("linearization", "perturbation") == "finite_difference",
         FD_REL_STEP, asm.rotor.xy_pairs(), asm.rotor.rot_pairs(),
         [i for bc in asm.bearings for i in bc.sleeve])
-    from rotordyn.results.modes import WHIRL_NAMES
 
-    bc = _ref_bearing(asm)
+    bc = ref_bearing(asm)
     status, message = res.status, res.message
     n_eig = np.asarray(res.n_eig)
     R = np.asarray(res.r)
@@ -417,11 +225,11 @@ def _stab_batch(job, seg, out, at, restart_first):
         row = it[0]
         st = status[k] if status[k] in STATUS else "error"
         ke = int(n_eig[k])
-        if st not in LINEARISABLE or ke == 0:
-            out[at + k] = (_fail(row, st, message[k] or "no equilibrium"), None, None)
+        if st not in CONVERGED or ke == 0:
+            out[at + k] = (fail_row(row, st, message[k] or "no equilibrium"), None, None)
             continue
         lam = EV[k, :ke]
-        ms = _stable(lam)
+        ms = stable_modes(lam)
         with np.errstate(divide="ignore", invalid="ignore"):
             dr = np.where(np.abs(lam) > 0, -lam.real / np.abs(lam), np.nan)
             ld = np.where(lam.imag != 0, -2 * np.pi * lam.real / lam.imag, np.nan)
@@ -440,31 +248,29 @@ def _stab_batch(job, seg, out, at, restart_first):
 
 
 def _wf_rows(job, variants, chunk_id, lo, hi, rows):
-    import rotordyn as rd
-
-    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
         if err:
-            rows.append(_fail(row, "error", err))
+            rows.append(fail_row(row, "error", err))
             continue
         try:
-            f, pc, a = _operating(asm, p)
+            f, pc, a = operating(asm, p)
             v.positive("speed_hz", f)
             r0 = _start(asm, f, pc, a)
             if isinstance(r0, tuple):
-                rows.append(_fail(row, *r0))
+                rows.append(fail_row(row, *r0))
                 continue
             revs = int(opts.get("revolutions", 60))
             spr = int(opts.get("samples_per_revolution", 64))
             ub = [tuple(u) for u in opts.get("unbalances", [])]
-            tr = rd.transient(asm.system, revs / f, f, pc, p.get("config_ay_m"), r0=r0,
+            tr = transient(asm.system, revs / f, f, pc, p.get("config_ay_m"), r0=r0,
                               unbalances=ub, n_out=revs * spr + 1,
                               rtol=float(opts.get("rtol", 1e-6)),
                               rub_fraction=float(opts.get("rub_fraction", 1e-3)))
         except (RotordynError, ArithmeticError, ValueError) as exc:
-            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
+            rows.append(fail_row(row, "error", f"{type(exc).__name__}: {exc}"))
             continue
-        if tr.status not in LINEARISABLE:  # "contact": integrated from a contact equilibrium
-            rows.append(_fail(row, tr.status if tr.status in STATUS else "error", tr.message))
+        if tr.status not in CONVERGED:  # "contact": integrated from a contact equilibrium
+            rows.append(fail_row(row, tr.status if tr.status in STATUS else "error", tr.message))
             continue
         freq, ax = tr.spectrum(last_fraction=0.5, axis="x")
         _, ay_ = tr.spectrum(last_fraction=0.5, axis="y")
@@ -482,8 +288,8 @@ def _wf_rows(job, variants, chunk_id, lo, hi, rows):
 def _start(asm, f, pc, a):
     """The cold-started equilibrium a transient point starts from (not the thread's last
     one: the rows must not depend on what ran before), or (status, message)."""
-    e = _equilibrium(asm, f, pc, a, None, {})
-    if e.status not in LINEARISABLE:
+    e = solve_equilibrium(asm, f, pc, a, None, {})
+    if e.status not in CONVERGED:
         return (e.status if e.status in STATUS else "error",
                 f"no equilibrium to start from: {e.message}")
     return np.asarray(e.r)
@@ -494,33 +300,30 @@ def _runup_rows(job, variants, chunk_id, lo, hi, rows):
     rate_hz_per_s (rotordyn.control.SpeedProfile); one row per revolution with its mean
     speed (in ``speed_hz``), the half peak-to-peak journal motion of the active (or first)
     bearing and the smallest film over that revolution."""
-    import rotordyn as rd
-    from rotordyn.control import SpeedProfile
-
-    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, lo, hi):
+    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
         if err:
-            rows.append(_fail(row, "error", err))
+            rows.append(fail_row(row, "error", err))
             continue
         try:
-            _, pc, a = _operating(asm, {**p, "speed_hz": opts["start_hz"]})
+            _, pc, a = operating(asm, {**p, "speed_hz": opts["start_hz"]})
             f0, f1, rate = opts["start_hz"], opts["stop_hz"], opts["rate_hz_per_s"]
             r0 = _start(asm, f0, pc, a)
             if isinstance(r0, tuple):
-                rows.append(_fail(row, *r0))
+                rows.append(fail_row(row, *r0))
                 continue
             prof = SpeedProfile.ramp(f0, f1, rate)
             T = abs(f1 - f0) / rate
             spr = int(opts.get("samples_per_revolution", 32))
             revs = (f0 + f1) / 2 * T
-            tr = rd.transient(asm.system, T, chamber_pressure_pa=pc,
+            tr = transient(asm.system, T, chamber_pressure_pa=pc,
                               config_ay_m=p.get("config_ay_m"), speed=prof, r0=r0,
                               unbalances=[tuple(u) for u in opts["unbalances"]],
                               n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)),
                               rub_fraction=float(opts.get("rub_fraction", 1e-3)))
         except (RotordynError, ArithmeticError, ValueError) as exc:
-            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
+            rows.append(fail_row(row, "error", f"{type(exc).__name__}: {exc}"))
             continue
-        bc = _ref_bearing(asm)
+        bc = ref_bearing(asm)
         k = bc.index if bc else 0
         # the rows reached (a failed run, e.g. "rub", leaves NaN rows after it stopped)
         done = np.isfinite(np.asarray(tr.angle_rad)) & np.all(np.isfinite(tr.r), axis=1)
@@ -530,7 +333,7 @@ def _runup_rows(job, variants, chunk_id, lo, hi, rows):
         sp, t = np.asarray(tr.speed_hz_t)[done], np.asarray(tr.t)[done]
         n_rows = len(rows)
         revs_reached = np.unique(rev)
-        if tr.status not in LINEARISABLE and revs_reached.size:
+        if tr.status not in CONVERGED and revs_reached.size:
             revs_reached = revs_reached[:-1]  # a stopped run's last revolution is partial
         for n_rev in revs_reached:
             m = rev == n_rev
@@ -543,7 +346,7 @@ def _runup_rows(job, variants, chunk_id, lo, hi, rows):
                          "status": tr.status if tr.status in STATUS else "error",
                          "message": tr.message})
         if tr.status != "ok" and len(rows) == n_rows:  # stopped before one whole revolution
-            rows.append(_fail(row, tr.status if tr.status in STATUS else "error", tr.message))
+            rows.append(fail_row(row, tr.status if tr.status in STATUS else "error", tr.message))
 
 
 def _lines(job, lo, hi):
@@ -554,14 +357,12 @@ def _lines(job, lo, hi):
 
 
 def _threshold_rows(job, variants, chunk_id, lo, hi, rows):
-    from rotordyn.sweep.lines import threshold_line
 
     for s, e in _lines(job, lo, hi):
         threshold_line(job, variants, chunk_id, s, e, rows)
 
 
 def _unbalance_rows(job, variants, chunk_id, lo, hi, rows):
-    from rotordyn.sweep.lines import unbalance_line
 
     for s, e in _lines(job, lo, hi):
         unbalance_line(job, variants, chunk_id, s, e, rows)
@@ -570,23 +371,22 @@ def _unbalance_rows(job, variants, chunk_id, lo, hi, rows):
 def _boundary_rows(job, variants, chunk_id, pids, rows):
     """One row per listed point: max Re λ (rotor modes only with exclude_sleeve_modes), its
     frequency, point_stable; ``level`` is set by the driver."""
-    from rotordyn.sweep.lines import _max_real
 
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     r_prev = None
-    for row, p, asm, opts, line, err in _points(job, variants, chunk_id, 0, 0, pids):
+    for row, p, asm, opts, line, err in points(job, variants, chunk_id, 0, 0, pids):
         if err:
-            rows.append(_fail(row, "error", err))
+            rows.append(fail_row(row, "error", err))
             continue
         try:
-            y, fr, st, r = _max_real(job, asm, p, r_prev if line else None, opts, excl)
+            y, fr, st, r = max_real(job, asm, p, r_prev if line else None, opts, excl)
         except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
-            rows.append(_fail(row, "error", f"{type(exc).__name__}: {exc}"))
+            rows.append(fail_row(row, "error", f"{type(exc).__name__}: {exc}"))
             r_prev = None
             continue
         r_prev = r
         if r is None:
-            rows.append(_fail(row, st if st in STATUS else "error", "no equilibrium"))
+            rows.append(fail_row(row, st if st in STATUS else "error", "no equilibrium"))
             continue
         rows.append({**row, "max_real_1_per_s": y, "freq_hz": fr, "point_stable": y < 0,
                      "level": job.level, "status": st, "message": ""})

@@ -11,6 +11,9 @@ import re
 
 import numpy as np
 
+import sys
+from pathlib import Path
+
 from rotordyn.errors import InputError
 
 MAX_SPEEDS = 100_000  # speeds of one Campbell/unbalance/table run (more is not a diagram)
@@ -95,3 +98,69 @@ def speeds(text: str) -> np.ndarray:
         raise InputError(
             f"--speeds-hz: expected at most {MAX_SPEEDS} speeds, {text!r} gives {count:.3g}")
     return np.arange(a, b + 0.5 * st, st)
+
+
+MODEL_HELP = ("model: a TOML file or a built-in name (paper-rig, paper-rig-hs, friswell-5.9.1); "
+              "see `rotordyn validate`")
+JSON_HELP = "print one JSON record on stdout (NaN written as null) instead of a table"
+
+
+def add_operating_point(s, speed=True):
+    if speed:
+        s.add_argument("--speed-hz", type=float, default=50.0, metavar="HZ",
+                       help="spin speed W, Hz")
+    s.add_argument("--chamber-pressure-pa", type=float, default=0.0, metavar="PA",
+                   help="active bearing chamber pressure p_c, Pa gauge (0.15 MPa = 1.5e5)")
+    s.add_argument("--config-ay-m", type=float, default=None, metavar="M",
+                   help="housing offset a_y of the active bearing, m, > 0 above the line "
+                        "(-1.85 mm = -1.85e-3; default: the model's own)")
+
+
+def figure_path(flag: str, path: str) -> str:
+    """An output figure: its folder must exist and its suffix be a format matplotlib writes
+    (issue 13: a missing folder or an unknown suffix gave a traceback after the solve)."""
+    from matplotlib.figure import Figure
+
+    p = Path(path)
+    kinds = Figure().canvas.get_supported_filetypes()
+    if p.suffix.lstrip(".").lower() not in kinds:
+        raise InputError(f"{flag}: expected a file name ending in one of "
+                                  f"{', '.join('.' + k for k in sorted(kinds))}, got {path!r}")
+    folder = p.parent if str(p.parent) else Path(".")
+    if not folder.is_dir():
+        raise InputError(f"{flag}: folder {str(folder)!r} does not exist")
+    if p.is_dir():
+        raise InputError(f"{flag}: {path!r} is a directory")
+    return path
+
+
+def out_dir(flag: str, path: str) -> str:
+    """An output directory, created (with its parents) if missing; InputError naming the
+    flag when it is a file or cannot be created."""
+    p = Path(path)
+    if p.exists() and not p.is_dir():
+        raise InputError(f"{flag}: {path!r} exists and is not a directory")
+    try:
+        p.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"{flag}: cannot create {path!r}: {exc.strerror}") from None
+    return path
+
+
+def save_figure(ax, path: str) -> None:
+    """Save the figure of ``ax`` (or of the first of a tuple of Axes) to PNG/SVG/PDF."""
+    import matplotlib.pyplot as plt
+
+    fig = (ax[0] if isinstance(ax, tuple) else ax).figure
+    fig.savefig(path)
+    plt.close(fig)
+    print(f"wrote {path}", file=sys.stderr)
+
+
+def check_figure(path) -> None:
+    """Check a --plot file before any solve (folder, format) and select the Agg backend."""
+    if path is not None:
+        figure_path("--plot", path)
+    import matplotlib
+
+    matplotlib.use("Agg")

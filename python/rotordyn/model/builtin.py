@@ -1,6 +1,6 @@
 """Built-in models: the reference paper's three-bearing test rig and textbook rotors.
 
-Each is a TOML file under ``rotordyn/data/`` (read with :meth:`System.from_toml`), so the
+Each is a TOML file under ``rotordyn/model/data/`` (read with :meth:`System.from_toml`), so the
 values and their sources are in one hand-readable place.
 """
 
@@ -19,7 +19,7 @@ BUILTIN = {
 
 
 def _load(filename: str) -> System:
-    text = resources.files("rotordyn.data").joinpath(filename).read_text(encoding="utf-8")
+    text = resources.files("rotordyn.model.data").joinpath(filename).read_text(encoding="utf-8")
     return System.from_toml(text, is_text=True)
 
 

@@ -13,9 +13,9 @@ import math
 
 import numpy as np
 
-from rotordyn.bearing import CAVITATION_MODELS, Groove, JournalBearing
-from rotordyn.cli_common import json_text
-from rotordyn.cli_common import speeds as _speeds
+from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
+from rotordyn.cli.common import json_text
+from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
 from rotordyn.results.equilibrium import CONVERGED
 
@@ -81,7 +81,7 @@ def _finite_or_none(value: float):
 
 
 def run(args: argparse.Namespace) -> int:
-    from rotordyn import plausibility
+    from rotordyn._common import plausibility
 
     grooves = [_groove(g) for g in args.groove]
     if args.diameter_m > 0 and args.clearance_m > 0:

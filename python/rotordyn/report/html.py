@@ -25,8 +25,10 @@ from pathlib import Path
 
 import numpy as np
 
-import rotordyn
-from rotordyn.model.bearings import ActiveJournalBearing
+from rotordyn import analysis
+from rotordyn._common.info import __version__
+from rotordyn.model import builtin as models
+from rotordyn.bearings import ActiveJournalBearing
 
 API_LOG_DEC_MIN = 0.1          # API 617 level I screening: every mode's log dec > 0.1
 API_UNBALANCE_G_MM = 6350.0    # API 684: U = 6350 W / N g·mm (W journal static load kg, N rpm)
@@ -92,7 +94,7 @@ def critical_speed_map(system, k_range=(1e5, 1e10), n_k=21, n_modes=4, op=None):
                            for st in stations)
         s = dataclasses.replace(system, supports=sup, bearings=(),
                                 reduction=Reduction(method="none"))
-        m = rotordyn.modes(s, 0.0, reduction="none", n_modes=2 * n_modes)
+        m = analysis.modes(s, 0.0, reduction="none", n_modes=2 * n_modes)
         fr = np.unique(np.round(m.frequencies_hz, 6))[:n_modes]  # x/y pairs coincide at rest
         f[i, :fr.size] = fr
     return ks, f, stations
@@ -177,7 +179,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     from rotordyn.plot import bode, rotor_drawing, stability_map_grid
     from rotordyn.plot.frequency import campbell_diagram
 
-    s = rotordyn.models.load(model)
+    s = models.load(model)
     paper = s.name == "paper-rig"
     active = [b for b in s.bearings if isinstance(b, ActiveJournalBearing)]
     pc = (0.4e6 if active else 0.0) if chamber_pressure_pa is None else chamber_pressure_pa
@@ -213,15 +215,15 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
 
     # campbell (used by 2, 3, 5)
     if s.bearings:
-        c = rotordyn.campbell(s, sp, pc, ay)
+        c = analysis.campbell(s, sp, pc, ay)
     else:
-        c = rotordyn.rotor_campbell(s, sp)
+        c = analysis.rotor_campbell(s, sp)
     crit = c.critical_speeds()
 
     # 2. undamped critical speed map
     op_k = []
     if s.bearings and operating_speed_hz:
-        lm = rotordyn.linearize(s, float(np.mean(operating_speed_hz)), pc, ay)
+        lm = analysis.linearize(s, float(np.mean(operating_speed_hz)), pc, ay)
         lab = list(lm.labels)
         b = s.bearings[0]
         ix = lab.index(f"station{b.station}.x") if f"station{b.station}.x" in lab else None
@@ -253,7 +255,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     u_kgm = API_UNBALANCE_G_MM * w_kg / nmax_rpm * 1e-6
     probe = s.bearings[0].station if s.bearings else st_ub
     outs = sorted({st_ub, probe})
-    u = rotordyn.unbalance_response(s, [(st_ub, u_kgm, 0.0)], sp, stations=outs,
+    u = analysis.unbalance_response(s, [(st_ub, u_kgm, 0.0)], sp, stations=outs,
                                     chamber_pressure_pa=pc, config_ay_m=ay,
                                     operating_speed_hz=operating_speed_hz)
     parts.append(f"<h2>4. Unbalance response</h2><p>API 684 unbalance U = 6350 W/N g·mm = "
@@ -317,7 +319,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
         failed = []
         for i, a in enumerate(ays):
             for j, p in enumerate(pcs):
-                st = rotordyn.stability(s, speed, p, a)
+                st = analysis.stability(s, speed, p, a)
                 if st.status in ("ok",) and len(st.eigenvalues):
                     Z[i, j] = np.max(st.eigenvalues.real[st.kind == "rotor"])
                 else:
@@ -327,7 +329,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                                 title=f"active bearing: stability map at {speed:g} Hz")
         parts.append("<h2>6. Active bearing: stability map in p_c</h2><figure>" + svg(ax.figure)
                      + "</figure>")
-        t = rotordyn.threshold(s, "chamber_pressure_pa", bounds=(0.02e6, 0.3e6),
+        t = analysis.threshold(s, "chamber_pressure_pa", bounds=(0.02e6, 0.3e6),
                                speed_hz=speed, config_ay_m=-1.85e-3, n_scan=8)
         checks.add(f"threshold of instability at a_y = −1.85 mm, {speed:g} Hz",
                    "stable operation needs p_c on the stable side of the threshold",
@@ -339,7 +341,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                      + html.escape("\n".join(text_lines)) + "</pre>")
     doc = (f"<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>{title}"
            f"</title><style>{CSS}</style></head><body><h1>{title}</h1>"
-           f"<p>rotordyn {rotordyn.__version__}. Checks and criteria:</p>{checks.html()}"
+           f"<p>rotordyn {__version__}. Checks and criteria:</p>{checks.html()}"
            + "".join(parts) + "</body></html>\n")
     doc = re.sub(r"\n\s*\n", "\n", doc)
     out = Path(path)

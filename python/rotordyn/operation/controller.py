@@ -10,8 +10,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rotordyn import _core
-from rotordyn import _validate as v
-from rotordyn.control.measurement import parse_measurements
+from rotordyn._common import validate as v
+from rotordyn.operation.measurement import parse_measurements
 from rotordyn.errors import InputError
 
 
@@ -30,7 +30,7 @@ class Controller:
     """ẋ = A x + B y, u = C x + D y (continuous, ``sample_time_s`` None) or
     x⁺ = A x + B y_k, u_k = C x_k + D y_k held for one sample (discrete).
 
-    y: the measurements (see :func:`rotordyn.control.measurement.measurement_matrix`) minus
+    y: the measurements (see :func:`rotordyn.analysis.measurement.measurement_matrix`) minus
     their value at the operating point; u: chamber-pressure command increment, Pa.
     Shapes: A (n_k, n_k), B (n_k, n_y), C (1, n_k), D (1, n_y).
     ``noise_std``: sensor noise standard deviation(s) (m or m/s; scalar or one per signal);

@@ -11,8 +11,9 @@ from pathlib import Path
 
 import numpy as np
 
-import rotordyn
-from rotordyn.model.bearings import ActiveJournalBearing
+from rotordyn import analysis
+from rotordyn.model import builtin as models
+from rotordyn.bearings import ActiveJournalBearing
 
 PAPER_ROTOR_HZ = (10.43, 43.04, 106.38)
 PAPER_SLEEVE_HZ = (490.2, 1754.2, 6175.8)
@@ -55,7 +56,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) 
     import matplotlib
 
     matplotlib.use("Agg")
-    s = rotordyn.models.load(model)
+    s = models.load(model)
     paper = s.name in CALIBRATIONS
     outdir = Path(out)
     outdir.mkdir(parents=True, exist_ok=True)
@@ -67,7 +68,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) 
 
     # 1. rotor modes, full vs condensed
     method = s.reduction.method
-    r = rotordyn.modes(s, 0.0, reduction=method, n_modes=None if method != "none" else 6)
+    r = analysis.modes(s, 0.0, reduction=method, n_modes=None if method != "none" else 6)
     full = r.full if r.full is not None else r
     say(f"{s.name or model}: rotor {s.rotor.length_m:.3f} m, {s.mass_kg:.3f} kg, "
         f"{s.rotor.n_elements} elements, "
@@ -112,7 +113,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) 
                       "check (|x|/c, y/c)" if paper else ""], w3))
         rows = []
         for pc in sorted(PAPER_TABLE1):
-            e = rotordyn.equilibrium(s, 50.0, pc, -1.85e-3)
+            e = analysis.equilibrium(s, 50.0, pc, -1.85e-3)
             px, py = PAPER_TABLE1[pc] if paper else (np.nan, np.nan)
             chk = ""
             if paper:
@@ -126,7 +127,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) 
         pd.concat(rows, ignore_index=True).to_csv(outdir / "table1_equilibrium.csv", index=False)
 
         # 4. threshold
-        t = rotordyn.threshold(s, "chamber_pressure_pa", bounds=(0.02e6, 0.3e6),
+        t = analysis.threshold(s, "chamber_pressure_pa", bounds=(0.02e6, 0.3e6),
                                speed_hz=50.0, config_ay_m=-1.85e-3, n_scan=8)
         say()
         say(f"threshold of instability at a_y = -1.85 mm, 50 Hz: p_c = "
@@ -137,7 +138,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) 
         t.to_frame().to_csv(outdir / "threshold.csv", index=False)
 
         # 5. Campbell and critical speeds at p_c = 0.4 MPa, a_y = 0
-        c = rotordyn.campbell(s, np.arange(5.0, 121.0, 1.0), 0.4e6, 0.0)
+        c = analysis.campbell(s, np.arange(5.0, 121.0, 1.0), 0.4e6, 0.0)
         crit = c.critical_speeds()
         cs = crit["speed_hz"].to_numpy()
         line = "critical speeds at p_c = 0.4 MPa: " + ", ".join(f"{x:.1f} Hz" for x in cs)
@@ -158,7 +159,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) 
 
     (outdir / "report.txt").write_text("\n".join(lines) + "\n")
     if html:
-        from rotordyn.report_html import write_html
+        from rotordyn.report.html import write_html
 
         write_html(model, html, text_lines=lines, operating_speed_hz=operating_speed_hz)
         print(f"wrote {html}", file=sys.stderr)
@@ -170,7 +171,7 @@ def _calibrations_side_by_side(say, outdir: Path) -> None:
     """Table 1 and the threshold of both built-in calibrations of the paper's rig beside the
     paper's values, so a user can pick the calibration for the number to reproduce."""
     names = list(CALIBRATIONS)
-    systems = {n: rotordyn.models.load(n) for n in names}
+    systems = {n: models.load(n) for n in names}
     say("the two calibrations of the paper's rig side by side (a_y = -1.85 mm, 50 Hz):")
     for n in names:
         say(f"  {n}: {CALIBRATIONS[n]}")
@@ -179,7 +180,7 @@ def _calibrations_side_by_side(say, outdir: Path) -> None:
     rows = []
     for pc in sorted(PAPER_TABLE1):
         px, py = PAPER_TABLE1[pc]
-        es = {n: rotordyn.equilibrium(systems[n], 50.0, pc, -1.85e-3) for n in names}
+        es = {n: analysis.equilibrium(systems[n], 50.0, pc, -1.85e-3) for n in names}
         for lab, ref, get in ((f"|x|/c at {pc / 1e6:.2f} MPa", px, lambda e: abs(e.x_over_c[0])),
                               (f"y/c at {pc / 1e6:.2f} MPa", py, lambda e: e.y_over_c[0])):
             vals = {n: float(get(es[n])) for n in names}
@@ -187,7 +188,7 @@ def _calibrations_side_by_side(say, outdir: Path) -> None:
             rows.append({"quantity": lab, "paper": ref, **vals})
     th = {}
     for n in names:
-        t = rotordyn.threshold(systems[n], "chamber_pressure_pa", bounds=(0.02e6, 0.3e6),
+        t = analysis.threshold(systems[n], "chamber_pressure_pa", bounds=(0.02e6, 0.3e6),
                                speed_hz=50.0, config_ay_m=-1.85e-3, n_scan=8)
         th[n] = t.value / 1e6 if t.status == "ok" else float("nan")
     say(_fmt_row(["threshold p_c (MPa)", f"{PAPER_THRESHOLD_PA / 1e6:.4f}"]

@@ -23,16 +23,18 @@ from __future__ import annotations
 
 import math
 import threading
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Iterable, Sequence
 
 import numpy as np
 
 from rotordyn import _core
-from rotordyn import _validate as v
+from rotordyn._common import plausibility
+from rotordyn._common import validate as v
+from rotordyn.bearings._film import CAVITATION_MODELS, SystemParts, check_film_fields
+from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.errors import InputError
 
-CAVITATION_MODELS = ("none", "gumbel", "reynolds", "jfo")
 TWO_PI = 2.0 * math.pi
 
 
@@ -47,7 +49,7 @@ MAX_THREADS = 1024
 
 def _finite(value, name: str) -> float:
     """A finite real number: int/float/numpy scalar; text, None and bools are rejected (the
-    rule of the model classes, rotordyn._validate)."""
+    rule of the model classes, rotordyn._common.validate)."""
     return v.finite(name, value)
 
 
@@ -445,9 +447,6 @@ class JournalBearing:
         ``speeds_hz`` (Hz), in one C++ call parallel over speeds (``n_threads``, 0: all
         cores): a :class:`rotordyn.bearings.CoefficientTable` (``.to_frame()``,
         ``.to_csv()``; a failing speed is a NaN row with its status)."""
-        from rotordyn.bearings._element import coefficient_table
-        from rotordyn.bearings._film import SystemParts
-
         g, grid = self.to_core()
         f = _core.FilmCoupling()
         f.name, f.geometry, f.grid, f.cavitation = "bearing", g, grid, self.cavitation
@@ -541,6 +540,60 @@ class JournalBearing:
         }
 
 
+
+
+# -- the plain journal bearing placed in a system -------------------------------------------
+
+def check_placed_film(b, where: str, n_stations: int) -> None:
+    """The checks of a plain or active journal bearing placed at a rotor station."""
+    v.text(f"{where}.name", b.name)
+    check_film_fields(b, where, n_stations)
+    plausibility.length(f"{where}.diameter_m", b.diameter_m)
+    plausibility.clearance(f"{where}.clearance_m", b.clearance_m, b.diameter_m)
+    plausibility.viscosity(f"{where}.viscosity_pa_s", b.viscosity_pa_s)
+    plausibility.housing_offset(f"{where}.config_ax_m", b.config_ax_m, b.clearance_m)
+    plausibility.housing_offset(f"{where}.config_ay_m", b.config_ay_m, b.clearance_m)
+    for i, g in enumerate(b.grooves):
+        if not isinstance(g, Groove):
+            raise InputError(f"{where}.grooves[{i}]: expected a Groove, got {type(g).__name__}")
+
+
+def film_model(b) -> JournalBearing:
+    return JournalBearing(diameter_m=b.diameter_m, length_m=b.length_m,
+                          clearance_m=b.clearance_m, viscosity_pa_s=b.viscosity_pa_s,
+                          n_circ=b.n_circ, n_axial=b.n_axial, cavitation=b.cavitation,
+                          grooves=b.grooves)
+
+
+
+@dataclass(frozen=True, slots=True)
+class FluidFilmBearing:
+    """Plain 360° journal bearing at ``station`` (film model: :class:`rotordyn.JournalBearing`)."""
+
+    station: int
+    diameter_m: float
+    length_m: float
+    clearance_m: float
+    viscosity_pa_s: float
+    cavitation: str = "reynolds"
+    n_circ: int = 72
+    n_axial: int = 16
+    grooves: tuple[Groove, ...] = ()
+    config_ax_m: float = 0.0
+    config_ay_m: float = 0.0
+    name: str = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "grooves", tuple(self.grooves))
+
+    def check(self, where: str, n_stations: int) -> None:
+        check_placed_film(self, where, n_stations)
+
+    def journal_bearing(self) -> JournalBearing:
+        """The standalone film model (forces, coefficients) of this bearing."""
+        return film_model(self)
+
+
 __all__ = [
     "CAVITATION_MODELS",
     "Groove",
@@ -548,4 +601,5 @@ __all__ = [
     "FilmResult",
     "PressureField",
     "BearingEquilibrium",
+    "FluidFilmBearing",
 ]

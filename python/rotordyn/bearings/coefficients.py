@@ -1,5 +1,5 @@
-"""Behaviour shared by the film bearing elements: validation of the common fields, the
-standalone coefficient table over speeds and the ``CoefficientTable`` result."""
+"""Bearing coefficients over speed, standalone (no rotor): the ``CoefficientTable`` result and
+the one C++ batch that makes it for every film element."""
 
 from __future__ import annotations
 
@@ -8,36 +8,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotordyn import _validate as v
-from rotordyn.bearing import CAVITATION_MODELS
+from rotordyn.bearings._film import check_load, check_speeds, operating_table, reduce_coefficients
 from rotordyn.errors import InputError
-from rotordyn.results.equilibrium import CONVERGED
+from rotordyn._common.status import CONVERGED
 
 COEFF_NAMES = ("kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy")
-
-
-def check_common(b, where: str, n_stations: int | None) -> None:
-    """Fields every film element has (station, D, L, c, μ, cavitation, grid, configuration)."""
-    from rotordyn.model.bearings import check_film_fields  # (import here: no cycle at load)
-
-    check_film_fields(b, where, n_stations)
-
-
-def check_speeds(speeds_hz) -> np.ndarray:
-    s = np.atleast_1d(np.asarray(speeds_hz, dtype=float))
-    if s.ndim != 1 or s.size == 0 or not np.all(np.isfinite(s)) or np.any(s == 0):
-        raise InputError(f"speeds_hz: expected a 1-D array of finite nonzero speeds, got {speeds_hz!r}")
-    return s
-
-
-def check_load(load_n) -> np.ndarray:
-    try:
-        ld = np.asarray([float(x) for x in load_n])
-    except (TypeError, ValueError):
-        raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}") from None
-    if ld.shape != (2,) or not np.all(np.isfinite(ld)) or not np.hypot(*ld) > 0:
-        raise InputError(f"load_n: expected a finite nonzero load (Fx, Fy) in N, got {load_n!r}")
-    return ld
 
 
 @dataclass(frozen=True)
@@ -95,8 +70,6 @@ def coefficient_table(parts, load_n, speeds_hz, clearance_m: float, *, n_threads
                       whirl_ratio: float | None = 1.0, tol: float = 1e-10) -> CoefficientTable:
     """Standalone table: equilibrium under ``load_n`` and the 2×2 coefficients at each speed;
     extra coordinates condensed at the whirl frequency ``whirl_ratio``·Ω (None: static)."""
-    from rotordyn.bearings._film import operating_table, reduce_coefficients
-
     s = check_speeds(speeds_hz)
     ld = check_load(load_n)
     if isinstance(n_threads, bool) or not isinstance(n_threads, (int, np.integer)) or n_threads < 0:

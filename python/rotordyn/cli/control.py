@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -103,7 +102,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _load(model):
-    from rotordyn import models
+    from rotordyn.model import builtin as models
 
     return models.load(model)
 
@@ -162,7 +161,7 @@ def run_closed_loop(args) -> int:
     import matplotlib.pyplot as plt
     import pandas as pd
 
-    import rotordyn as rd
+    from rotordyn.analysis import transient
     from rotordyn.analysis.assembly import assembled
     from rotordyn.control import SpeedProfile
     from rotordyn.control.closedloop import closed_loop
@@ -209,8 +208,8 @@ def run_closed_loop(args) -> int:
     else:
         kw["disturbance_m"] = (0.0, args.disturbance_c * c)
         speed0 = args.speed_hz
-    ol = rd.transient(system, t_end, speed0, args.chamber_pressure_pa, args.config_ay_m, **kw)
-    cln = rd.transient(system, t_end, speed0, args.chamber_pressure_pa, args.config_ay_m,
+    ol = transient(system, t_end, speed0, args.chamber_pressure_pa, args.config_ay_m, **kw)
+    cln = transient(system, t_end, speed0, args.chamber_pressure_pa, args.config_ay_m,
                        controller=k, **kw)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -263,9 +262,3 @@ def run_closed_loop(args) -> int:
               f"{summary['open_loop_final_amplitude_m']:.3g} m open, "
               f"{summary['closed_loop_final_amplitude_m']:.3g} m closed; wrote {out}")
     return 0 if ol.status == "ok" and cln.status == "ok" else 1
-
-
-if __name__ == "__main__":  # pragma: no cover
-    from rotordyn.cli import main
-
-    sys.exit(main(["control", *sys.argv[1:]]))

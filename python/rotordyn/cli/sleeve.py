@@ -1,7 +1,7 @@
 """``rotordyn modes MODEL --part sleeve``: the flexible sleeve's full and condensed frequencies.
 
 MODEL is ``paper-rig`` (the calibrated rig sleeve, docs/sleeve.md) or a TOML file with a
-``[sleeve]`` table whose keys are :class:`rotordyn.sleeve.FlexibleSleeve`'s fields
+``[sleeve]`` table whose keys are :class:`rotordyn.bearings.sleeve.FlexibleSleeve`'s fields
 (``radius_m``, ``thickness_m``, ``width_m``, ``arc_deg``, ``clamp_deg``, ``young_pa``,
 ``density_kg_m3``, ``poisson``, optional ``n_elements``, ``master_stations``, ...).
 Reductions: ``guyan`` (the paper's three-step condensation, the default) or ``none``.
@@ -14,9 +14,9 @@ from pathlib import Path
 
 import numpy as np
 
-from rotordyn.cli_common import json_text
+from rotordyn.cli.common import json_text
 from rotordyn.errors import InputError
-from rotordyn.sleeve import FlexibleSleeve, paper_rig_sleeve
+from rotordyn.bearings.sleeve import FlexibleSleeve, paper_rig_sleeve
 
 PAPER_SLEEVE_HZ = (490.2, 1754.2, 6175.8)
 
@@ -25,8 +25,8 @@ def load_sleeve(model: str) -> FlexibleSleeve:
     """The sleeve of the model's active journal bearing (a built-in name such as
     ``paper-rig``, or a model TOML with an ``active_journal`` bearing), or the ``[sleeve]``
     table of a TOML file."""
-    from rotordyn import models
-    from rotordyn.model.bearings import ActiveJournalBearing
+    from rotordyn.model import builtin as models
+    from rotordyn.bearings import ActiveJournalBearing
 
     from rotordyn.model.toml_io import parse_toml, read_text
 

@@ -7,26 +7,7 @@ import numpy as np
 
 from rotordyn.analysis.assembly import assembled
 from rotordyn.errors import InputError
-
-KINDS = ("journal", "journal_velocity", "displacement", "velocity")
-
-
-def parse_measurements(measurements) -> tuple:
-    """Normalise ``[("journal", 0), ("displacement", 6), ...]`` (a single tuple is one item)."""
-    if isinstance(measurements, tuple) and measurements and isinstance(measurements[0], str):
-        measurements = [measurements]
-    try:
-        items = [tuple(m) for m in measurements]
-    except TypeError:
-        raise InputError(f"measurements: expected a list of (kind, station or bearing), got "
-                         f"{measurements!r}") from None
-    if not items:
-        raise InputError("measurements: expected at least one (kind, station or bearing)")
-    for it in items:
-        if len(it) != 2 or it[0] not in KINDS:
-            raise InputError(f"measurements: expected (kind, index) with kind in {KINDS}, "
-                             f"got {it!r}")
-    return tuple(items)
+from rotordyn.operation.measurement import parse_measurements
 
 
 def measurement_matrix(system, measurements) -> tuple[np.ndarray, tuple]:

@@ -19,7 +19,7 @@ journal: the film thickness is ``h = c − x cos φ − y sin φ − w(φ)`` wit
 
 Example
 -------
->>> from rotordyn.sleeve import paper_rig_sleeve
+>>> from rotordyn.bearings.sleeve import paper_rig_sleeve
 >>> res = paper_rig_sleeve().condense()
 >>> res.mass_matrix.shape, res.interpolation_matrix([4.0, 5.0]).shape
 ((3, 3), (2, 3))
@@ -35,7 +35,7 @@ import numpy as np
 import pandas as pd
 
 from rotordyn import _core
-from rotordyn import _validate as v
+from rotordyn._common import validate as v
 from rotordyn.errors import InputError
 
 __all__ = ["FlexibleSleeve", "SleeveResult", "paper_rig_sleeve"]

@@ -1,0 +1,102 @@
+"""Command-line interface: ``rotordyn <command> ...``, one module per command family
+(:mod:`.analyses` single operating points, :mod:`.bearing` one bearing, :mod:`.sleeve` the
+active bearing's sleeve, :mod:`.sweeps` sweeps and their figures, :mod:`.report` the report,
+:mod:`.control` control-law synthesis), registered here on one parser; shared helpers in
+:mod:`.common`.
+
+Exit codes: 0 success, 2 bad input (the message names the field), 1 runtime failure.
+Machine-readable output goes to stdout with ``--json``; logs go to stderr.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+from rotordyn._common import plausibility
+from rotordyn._common.info import DESCRIPTION
+from rotordyn.bearings import ActiveJournalBearing
+from rotordyn.cli import analyses, bearing, control, report, sweeps
+from rotordyn.cli.common import ArgumentParser
+from rotordyn.errors import InputError, RotordynError, RotordynWarning
+from rotordyn.model import builtin as models
+
+COMMANDS = (analyses, sweeps, report, bearing, control)
+"""The command families, in the order of ``rotordyn --help``."""
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = ArgumentParser(prog="rotordyn", description=DESCRIPTION,
+                       epilog="Exit codes: 0 success, 2 bad input (one line naming the field), "
+                              "1 runtime failure. Units: SI, flags carry the unit suffix.")
+    sub = p.add_subparsers(dest="command", required=True, parser_class=ArgumentParser,
+                           metavar="COMMAND")
+    for family in COMMANDS:
+        family.register(sub)
+    return p
+
+
+def _check_offset(s, args) -> None:
+    """Unit plausibility of --config-ay-m against the active bearing's clearance."""
+    ay = getattr(args, "config_ay_m", None)
+    for b in s.bearings:
+        if isinstance(b, ActiveJournalBearing):
+            plausibility.housing_offset("--config-ay-m", ay, b.clearance_m)
+            return
+
+
+def _warning_printer(default):
+    """rotordyn's own warnings as one line on stderr (``rotordyn: warning: <field> = ...``);
+    other libraries' warnings as usual."""
+
+    def show(message, category, filename, lineno, file=None, line=None):
+        if issubclass(category, RotordynWarning):
+            print(f"rotordyn: warning: {message}", file=sys.stderr)
+        else:
+            default(message, category, filename, lineno, file, line)
+
+    return show
+
+
+def main(argv: list[str] | None = None) -> int:
+    import warnings
+
+    argv = list(sys.argv[1:] if argv is None else argv)
+    shown = warnings.showwarning
+    warnings.showwarning = _warning_printer(shown)
+    try:
+        args = build_parser().parse_args(argv)
+        if getattr(args, "model", None) is not None and hasattr(args, "config_ay_m"):
+            _check_offset(models.load(args.model), args)
+        return int(args.func(args) or 0)
+    except KeyboardInterrupt:
+        print("rotordyn: interrupted", file=sys.stderr)
+        return 130
+    except InputError as exc:
+        print(f"rotordyn: error: {exc}", file=sys.stderr)
+        return 2
+    except RotordynError as exc:
+        print(f"rotordyn: failed: {exc}", file=sys.stderr)
+        return 1
+    except BrokenPipeError:  # output piped into e.g. `head`
+        return 0
+    except MemoryError:
+        print("rotordyn: failed: out of memory (reduce the grid, the number of points or "
+              "n_out)", file=sys.stderr)
+        return 1
+    except OSError as exc:  # a file system failure while writing results
+        print(f"rotordyn: failed: {exc}", file=sys.stderr)
+        return 1
+    except Exception as exc:  # a bug: one line, not a traceback (ROTORDYN_DEBUG=1 re-raises)
+        if os.environ.get("ROTORDYN_DEBUG"):
+            raise
+        print(f"rotordyn: internal error: {type(exc).__name__}: {exc} (please report; "
+              "ROTORDYN_DEBUG=1 shows the traceback)", file=sys.stderr)
+        return 1
+    finally:
+        warnings.showwarning = shown
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,275 @@
+"""The single-point analyses on the command line: ``info``, ``validate``, ``modes``,
+``equilibrium``, ``stability``, ``campbell``, ``threshold``, ``unbalance``."""
+
+from __future__ import annotations
+
+import sys
+
+import numpy as np
+
+from rotordyn import analysis
+from rotordyn._common.info import __version__, build_info
+from rotordyn._common.status import CONVERGED
+from rotordyn.cli import sleeve
+from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_operating_point, check_figure,
+                                 json_text, save_figure)
+from rotordyn.cli.common import speeds as parse_speeds
+from rotordyn.errors import InputError
+from rotordyn.model import builtin as models
+
+
+def register(sub) -> None:
+    """The subcommands of this module on the ``rotordyn`` parser's subparsers ``sub``."""
+    s = sub.add_parser("info", help="package and library versions")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    s.set_defaults(func=_cmd_info)
+
+    s = sub.add_parser("validate", help="check a model file")
+    s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also draw the rotor (sections, disks, bearings) to FIG.png/.svg")
+    s.set_defaults(func=_cmd_validate)
+
+    s = sub.add_parser("modes", help="natural frequencies of the rotor (full or reduced)")
+    s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--speed-hz", type=float, default=0.0, metavar="HZ",
+                   help="spin speed for the gyroscopic coupling, Hz")
+    s.add_argument("--reduction", choices=["none", "guyan", "irs", "craig-bampton"], default=None,
+                   help="model reduction (default: the model's [reduction] method)")
+    s.add_argument("--n-modes", type=int, default=None, metavar="N",
+                   help="number of modes (default: all of a reduced model, 12 of a full one)")
+    s.add_argument("--part", choices=["rotor", "sleeve"], default="rotor",
+                   help="rotor, or the active bearing's flexible sleeve")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also write the mode shapes (full FE model) to FIG.png/.svg")
+    s.add_argument("--mode", type=int, default=None, metavar="K",
+                   help="with --plot: the 3-D whirl orbits of mode K (1-based) along the rotor "
+                        "(default: all modes' shapes in the x plane)")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    s.set_defaults(func=_cmd_modes)
+
+    s = sub.add_parser("equilibrium", help="static equilibrium of the system (eq. 14)")
+    s.add_argument("model", help=MODEL_HELP)
+    add_operating_point(s)
+    s.add_argument("--method", choices=["newton", "successive"], default="newton",
+                   help="equilibrium iteration")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    s.set_defaults(func=_cmd_equilibrium)
+
+    s = sub.add_parser("stability", help="eigenvalues of the linearised system (eq. 19)")
+    s.add_argument("model", help=MODEL_HELP)
+    add_operating_point(s)
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    s.set_defaults(func=_cmd_stability)
+
+    s = sub.add_parser("campbell", help="natural frequencies against speed; critical speeds")
+    s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--speeds-hz", default="5:120:1", metavar="SPEC",
+                   help="speeds, Hz: start:stop:step (inclusive) or a comma-separated list")
+    add_operating_point(s, speed=False)
+    s.add_argument("--harmonic", type=float, default=1.0, metavar="N",
+                   help="excitation order: critical speeds where f = N x speed")
+    s.add_argument("--all-whirl", action="store_true",
+                   help="report backward-whirl crossings too (default: forward only)")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also write the Campbell diagram to FIG.png or FIG.svg")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    s.set_defaults(func=_cmd_campbell)
+
+    s = sub.add_parser("threshold", help="threshold of instability (max Re λ = 0)")
+    s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--vary", choices=["chamber_pressure_pa", "config_ay_m", "speed_hz"],
+                   default="chamber_pressure_pa", help="the input scanned for the threshold")
+    s.add_argument("--bounds", type=float, nargs=2, default=(0.0, 0.5e6), metavar=("LO", "HI"),
+                   help="scan interval of --vary, in its unit (Pa, m or Hz)")
+    s.add_argument("--n-scan", type=int, default=11, metavar="N",
+                   help="points of the bracketing scan")
+    add_operating_point(s)
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    s.set_defaults(func=_cmd_threshold)
+
+    s = sub.add_parser("unbalance", help="unbalance response, critical speeds, API 684 margins")
+    s.add_argument("model", help=MODEL_HELP)
+    s.add_argument("--unbalance", action="append", required=True,
+                   metavar="STATION,MASS_KG_M,PHASE_DEG",
+                   help="unbalance m·e (kg m) at a station with its phase (deg); repeatable")
+    s.add_argument("--speeds-hz", default="5:120:1", metavar="SPEC",
+                   help="speeds, Hz: start:stop:step or a list; refined near each peak")
+    s.add_argument("--station", type=int, action="append", default=None, metavar="K",
+                   help="output station, repeatable (default: the unbalanced stations)")
+    s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
+                   metavar=("MIN", "MAX"),
+                   help="operating speed range, Hz, for the API 684 separation margins")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also write the response figure to FIG.png/.svg")
+    s.add_argument("--plot-kind", choices=["bode", "polar"], default="bode",
+                   help="figure for --plot: Bode (amplitude/phase, AF, margins) or polar")
+    add_operating_point(s, speed=False)
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    s.set_defaults(func=_cmd_unbalance)
+
+
+def _cmd_info(args) -> int:
+    info = build_info()
+    if args.json:
+        print(json_text(info))
+    else:
+        print(f"rotordyn {__version__}")
+        for key in ("eigen", "sundials", "suitesparse", "compiler"):
+            if key in info:
+                print(f"  {key}: {info[key]}")
+    return 0
+
+
+def _cmd_validate(args) -> int:
+    check_figure(args.plot)
+    s = models.load(args.model)
+    print(f"{args.model}: ok ({s.rotor.n_elements} elements, {s.rotor.n_stations} stations, "
+          f"{s.mass_kg:.4f} kg)")
+    if args.plot:
+        from rotordyn.plot import rotor_drawing
+
+        save_figure(rotor_drawing(s), args.plot)
+    return 0
+
+
+# -- modes ------------------------------------------------------------------------------
+def _modes_payload(r) -> dict:
+    out = {
+        "model": r.model,
+        "speed_hz": r.speed_hz,
+        "frequencies_hz": r.frequencies_hz,
+        "damping_ratio": r.damping_ratio,
+        "whirl": list(r.whirl),
+    }
+    if r.full is not None:
+        out["full_frequencies_hz"] = r.full.frequencies_hz
+        out["frequency_errors"] = r.frequency_errors()
+    return out
+
+
+def _cmd_modes(args) -> int:
+    if args.part == "sleeve":
+        return sleeve.modes(args)
+    check_figure(args.plot)
+    s = models.load(args.model)
+    r = analysis.modes(s, args.speed_hz, reduction=args.reduction, n_modes=args.n_modes)
+    if args.json:
+        print(json_text(_modes_payload(r)))
+    else:
+        print(r.to_frame().to_string(index=False))
+    if args.plot:
+        shown = r.full if r.full is not None else r  # shapes of the full FE model
+        if args.mode is not None:
+            if not 1 <= args.mode <= len(shown.eigenvalues):
+                raise InputError(f"--mode: expected 1..{len(shown.eigenvalues)}, got "
+                                          f"{args.mode}")
+            save_figure(shown.plot(args.mode - 1, system=s), args.plot)
+        else:
+            save_figure(shown.plot(), args.plot)
+    return 0
+
+
+# -- equilibrium ------------------------------------------------------------------------
+def _cmd_equilibrium(args) -> int:
+    s = models.load(args.model)
+    e = analysis.equilibrium(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
+                             method=args.method, warm_start=False)
+    if args.json:
+        print(json_text({
+            "status": e.status, "message": e.message, "method": e.method,
+            "speed_hz": e.speed_hz, "chamber_pressure_pa": e.chamber_pressure_pa,
+            "bearings": [
+                {"name": e.bearing_names[i], "config_ax_m": e.config_ax_m[i],
+                 "config_ay_m": e.config_ay_m[i], "journal_x_m": e.journal_x_m[i],
+                 "journal_y_m": e.journal_y_m[i], "x_over_c": e.x_over_c[i],
+                 "y_over_c": e.y_over_c[i], "h_min_m": e.h_min_m[i],
+                 "sleeve_m": e.sleeve_m.get(i, np.zeros(0))}
+                for i in range(len(e.bearing_names))],
+            "iterations": e.iterations, "reynolds_solves": e.reynolds_solves,
+            "residual": e.residual,
+        }))
+    else:
+        print(e.to_frame().to_string(index=False))
+    return 0 if e.converged else 1
+
+
+def _cmd_stability(args) -> int:
+    s = models.load(args.model)
+    st = analysis.stability(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m)
+    if args.json:
+        print(json_text({"status": st.status, "message": st.message, "stable": st.stable,
+                     "speed_hz": st.speed_hz, "max_real_1_per_s": st.max_real_1_per_s,
+                     "modes": st.to_frame()[["mode", "freq_hz", "eig_real_1_per_s",
+                                             "damping_ratio", "log_dec"]].to_dict("list")
+                     | {"whirl": list(st.whirl), "kind": list(st.kind)}}))
+    else:
+        print(st.to_frame().to_string(index=False))
+    if st.status not in CONVERGED:  # a failed equilibrium: no eigenvalues, exit 1
+        print(f"rotordyn: failed: {st.status}: {st.message}", file=sys.stderr)
+        return 1
+    return 0
+
+
+def _cmd_campbell(args) -> int:
+    check_figure(args.plot)
+    speeds = parse_speeds(args.speeds_hz)
+    s = models.load(args.model)
+    if s.bearings:
+        c = analysis.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m)
+    else:
+        c = analysis.rotor_campbell(s, speeds)
+    crit = c.critical_speeds(harmonic=args.harmonic, whirl=None if args.all_whirl else "forward")
+    if args.json:
+        print(json_text({"critical_speeds_hz": crit["speed_hz"].to_numpy(),
+                     "critical_speeds": crit.to_dict("records"),
+                     "speeds_hz": c.speeds_hz, "frequencies_hz": c.frequencies_hz,
+                     "point_status": list(c.point_status) if c.point_status is not None
+                     else None}))
+    else:
+        print(crit.to_string(index=False))
+    if args.plot:
+        save_figure(c.plot(), args.plot)
+    return 0
+
+
+def _cmd_threshold(args) -> int:
+    s = models.load(args.model)
+    lo, hi = args.bounds
+    t = analysis.threshold(s, args.vary, bounds=(lo, hi), speed_hz=args.speed_hz,
+                           chamber_pressure_pa=args.chamber_pressure_pa,
+                           config_ay_m=args.config_ay_m, n_scan=args.n_scan)
+    payload = {args.vary: t.value, "whirl_frequency_hz": t.whirl_frequency_hz,
+               "whirl_ratio": t.whirl_ratio, "stable_side": t.stable_side,
+               "crossings": list(t.crossings), "status": t.status, "message": t.message,
+               "evaluations": t.evaluations}
+    print(json_text(payload) if args.json else t.to_frame().to_string(index=False))
+    return 0
+
+
+def _cmd_unbalance(args) -> int:
+    check_figure(args.plot)
+    s = models.load(args.model)
+    ub = []
+    for text in args.unbalance:
+        try:
+            st, me, ph = text.split(",")
+            ub.append((int(st), float(me), float(ph)))
+        except ValueError:
+            raise InputError(
+                f"--unbalance: expected STATION,MASS_KG_M,PHASE_DEG, got {text!r}") from None
+    u = analysis.unbalance_response(s, ub, parse_speeds(args.speeds_hz), stations=args.station,
+                                    chamber_pressure_pa=args.chamber_pressure_pa,
+                                    config_ay_m=args.config_ay_m,
+                                    operating_speed_hz=args.operating_speed_hz)
+    peaks = {int(st): u.peaks(st).to_dict("records") for st in u.stations}
+    if args.json:
+        print(json_text({"stations": list(u.stations), "peaks": peaks,
+                     "response": u.to_frame().to_dict("list")}))
+    else:
+        for st in u.stations:
+            print(f"station {st}:")
+            print(u.peaks(st).to_string(index=False))
+    if args.plot:
+        save_figure(u.plot(kind=args.plot_kind), args.plot)
+    return 0

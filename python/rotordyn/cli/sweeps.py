@@ -1,0 +1,73 @@
+"""Sweeps on the command line: ``rotordyn sweep SPEC --out DIR`` and ``rotordyn plot DIR``."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from rotordyn.cli.common import figure_path
+
+
+def register(sub) -> None:
+    """``sweep`` and ``plot`` on the ``rotordyn`` parser's subparsers ``sub``."""
+    s = sub.add_parser("sweep", help="run a sweep spec on dask into a parquet dataset")
+    s.add_argument("spec", help="sweep specification, sweeps/<name>.toml")
+    s.add_argument("--out", required=True, metavar="DIR", help="output dataset directory")
+    s.add_argument("--scheduler", default=None, metavar="ADDR",
+                   help="tcp://host:port of an existing dask cluster (default: a LocalCluster)")
+    s.add_argument("--workers", type=int, default=None, metavar="N",
+                   help="LocalCluster worker processes (default: dask's choice)")
+    s.add_argument("--threads", type=int, default=None, metavar="N",
+                   help="compute on N threads in this process, no dask (default: off)")
+    s.add_argument("--resume", action=argparse.BooleanOptionalAction, default=True,
+                   help="continue an interrupted sweep in --out; --no-resume restarts the "
+                        "same sweep from scratch")
+    s.add_argument("--json", action="store_true", help="one JSON summary line, no progress")
+    s.set_defaults(func=_cmd_sweep)
+
+    s = sub.add_parser("plot", help="figure from a sweep directory")
+    s.add_argument("dir", help="sweep dataset directory (written by `rotordyn sweep`)")
+    s.add_argument("--kind", required=True,
+                   choices=["stability-map", "equilibrium", "campbell", "waterfall"],
+                   help="figure kind; it must match the sweep's analysis")
+    s.add_argument("--out", required=True, metavar="FIG", help="FIG.png or FIG.svg")
+    s.add_argument("--style", choices=["cascade", "map"], default="cascade",
+                   help="waterfall: 3-D cascade or colour map (speed × frequency)")
+    s.add_argument("--scale", choices=["linear", "log"], default="linear",
+                   help="waterfall: amplitude scale")
+    s.add_argument("--axis", choices=["x", "y"], default="x",
+                   help="waterfall: journal motion component")
+    s.set_defaults(func=_cmd_plot)
+
+
+def _cmd_sweep(args) -> int:
+    from rotordyn.sweep import SweepInterrupted, run_sweep  # (dask, pyarrow: only when used)
+    from rotordyn.sweep.runner import manifest_json
+
+    try:
+        res = run_sweep(args.spec, args.out, scheduler=args.scheduler, workers=args.workers,
+                        threads=args.threads, resume=args.resume,
+                        progress=False if args.json else None)
+    except SweepInterrupted as exc:
+        print(f"rotordyn: {exc}", file=sys.stderr)
+        return 130
+    if args.json:
+        print(manifest_json(res))
+    else:
+        c = res.counts
+        print(f"{res.manifest['sweep_id']}: {res.done}/{res.n_chunks} chunks, "
+              f"{res.manifest['n_points']} points (ok {c['ok']}, failed {c['failed']}, "
+              f"unstable {c['unstable']}) -> {args.out}")
+    return 0 if res.complete else 1
+
+
+def _cmd_plot(args) -> int:
+    from rotordyn.plot import plot_dataset
+    from rotordyn.sweep import read_dataset
+
+    figure_path("--out", args.out)
+    kw = ({"style": args.style, "scale": args.scale, "axis": args.axis}
+          if args.kind == "waterfall" else {})
+    plot_dataset(read_dataset(args.dir), args.kind, args.out, **kw)
+    print(f"wrote {args.out}", file=sys.stderr)
+    return 0

@@ -1,0 +1,275 @@
+"""How a sweep's chunks are executed and reported, shared by the grid runner
+(:mod:`.runner`) and the adaptive boundary (:mod:`.boundary`): the executors (threads of this
+process, or dask — a LocalCluster or an existing cluster, whose workers are checked to run this
+very build), the progress line, the interruption and the finished-sweep result."""
+
+from __future__ import annotations
+
+import math
+import os
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from rotordyn.errors import InputError
+from rotordyn.sweep.dataset import open_dataset
+from rotordyn.sweep.work import Job, run_chunk
+
+
+class SweepInterrupted(Exception):
+    """Ctrl-C: the chunks written so far are kept; running again resumes."""
+
+
+@dataclass(frozen=True)
+class SweepResult:
+    """A finished (or partly finished) sweep directory."""
+
+    out: Path
+    manifest: dict
+    done: int
+    n_chunks: int
+    counts: dict
+
+    @property
+    def complete(self) -> bool:
+        return self.done == self.n_chunks
+
+    def to_frame(self):
+        """The whole dataset (as :func:`rotordyn.sweep.open`)."""
+        return open_dataset(self.out).frame
+
+
+# -- worker check -------------------------------------------------------------------------
+_PROBE_SRC = '''
+def probe():
+    try:
+        import hashlib, rotordyn
+        from rotordyn import _core
+        with open(_core.__file__, "rb") as fh:
+            core = hashlib.sha256(fh.read()).hexdigest()[:16]
+        return {"version": rotordyn.__version__, "build": _core.build_info(), "core": core}
+    except BaseException as exc:
+        return {"error": type(exc).__name__ + ": " + str(exc)}
+'''
+
+
+def _probe_function():
+    """A probe defined outside any importable module, so that cloudpickle ships it by value
+    and a worker without rotordyn can still run it (and say so)."""
+    ns: dict = {"__name__": "__rotordyn_probe__"}
+    exec(compile(_PROBE_SRC, "<rotordyn-probe>", "exec"), ns)
+    return ns["probe"]
+
+
+def local_identity() -> dict:
+    """This process's identity, by the same probe the workers run."""
+    return _probe_function()()
+
+
+def check_workers(client, timeout: float = 30.0) -> int:
+    """Every worker of ``client`` has this rotordyn (version, build, core library); returns
+    the number of workers. InputError naming the worker otherwise, within ``timeout`` s."""
+    t0 = time.monotonic()
+    try:
+        client.wait_for_workers(1, timeout=timeout)
+    except Exception:  # noqa: BLE001 - dask raises TimeoutError subclasses
+        raise InputError(f"scheduler: no dask worker joined within {timeout:g} s") from None
+    me = local_identity()
+    import concurrent.futures as cf
+
+    with cf.ThreadPoolExecutor(1) as ex:
+        fut = ex.submit(client.run, _probe_function(), on_error="return")
+        try:
+            info = fut.result(timeout=max(1.0, timeout - (time.monotonic() - t0)))
+        except cf.TimeoutError:
+            raise InputError(f"scheduler: the workers did not answer the rotordyn check "
+                             f"within {timeout:g} s") from None
+    for addr, got in sorted(info.items()):
+        if isinstance(got, BaseException):
+            got = {"error": f"{type(got).__name__}: {got}"}
+        if "error" in got:
+            raise InputError(f"worker {addr}: cannot run rotordyn ({got['error']}); install "
+                             f"rotordyn {me['version']} in the worker's environment")
+        for k in ("version", "build", "core"):
+            if got.get(k) != me[k]:
+                raise InputError(f"worker {addr}: rotordyn {k} differs from this driver's "
+                                 f"({got.get(k)!r} != {me[k]!r}); install the same build")
+    return len(info)
+
+
+# -- progress -----------------------------------------------------------------------------
+class Progress:
+    """One status line on a terminal: bar, chunks, points ok/failed/unstable, ETA."""
+
+    def __init__(self, n_chunks: int, n_done: int, counts: dict, stream=None, enabled=None):
+        self.stream = stream or sys.stderr
+        self.enabled = self.stream.isatty() if enabled is None else enabled
+        self.n, self.done0, self.done = n_chunks, n_done, n_done
+        self.counts = dict(counts)
+        self.t0 = time.monotonic()
+        self.last = 0.0
+        self.msg = ""
+
+    def status(self, msg: str) -> None:
+        self.msg = msg
+        self._draw(force=True)
+
+    def update(self, counts: dict) -> None:
+        self.done += 1
+        for k, val in counts.items():
+            self.counts[k] = self.counts.get(k, 0) + val
+        self._draw()
+
+    def _draw(self, force=False) -> None:
+        if not self.enabled:
+            return
+        now = time.monotonic()
+        if not force and now - self.last < 0.2 and self.done < self.n:
+            return
+        self.last = now
+        frac = self.done / self.n if self.n else 1.0
+        bar = "#" * int(24 * frac) + "." * (24 - int(24 * frac))
+        new = self.done - self.done0
+        eta = ""
+        if new > 0 and self.done < self.n:
+            s = (now - self.t0) / new * (self.n - self.done)
+            eta = f" ETA {int(s // 60)}m{int(s % 60):02d}s"
+        c = self.counts
+        line = (f"[{bar}] {self.done}/{self.n} chunks  ok {c.get('ok', 0)} failed "
+                f"{c.get('failed', 0)} unstable {c.get('unstable', 0)}{eta}")
+        if self.msg and self.done == self.done0:
+            line = f"{self.msg} ... {line}"
+        self.stream.write("\r" + line[:150].ljust(100))
+        self.stream.flush()
+
+    def close(self) -> None:
+        if self.enabled:
+            self._draw(force=True)
+            self.stream.write("\n")
+            self.stream.flush()
+
+
+# -- executors ----------------------------------------------------------------------------
+def _task(job: Job, chunk_id: int, lo: int, hi: int, pids=None):
+    t = run_chunk(job, chunk_id, lo, hi, pids)
+    return t, counts_of(t)
+
+
+def counts_of(table) -> dict:
+    """Points ok / failed / unstable in one chunk's table."""
+    import numpy as np
+    import pyarrow.compute as pc
+
+    pid = table.column("point_id").to_numpy()
+    status = table.column("status").cast("string").to_numpy(zero_copy_only=False)
+    bad = status != "ok"
+    bad &= status != "contact"
+    bad &= status != "no_crossing"
+    pts = np.unique(pid)
+    failed = np.unique(pid[bad])
+    unstable = 0
+    if "point_stable" in table.column_names:
+        ps = pc.fill_null(table.column("point_stable"), True).to_numpy(zero_copy_only=False)
+        unstable = len(np.unique(pid[(~ps) & ~bad]))
+    return {"ok": int(len(pts) - len(failed)), "failed": int(len(failed)),
+            "unstable": int(unstable)}
+
+
+class Threads:
+    """Chunks on a thread pool of this process (the C++ core releases the GIL)."""
+
+    def __init__(self, n: int):
+        import concurrent.futures as cf
+
+        self.ex = cf.ThreadPoolExecutor(max_workers=n, thread_name_prefix="rotordyn-sweep")
+
+    def map(self, job, tasks):
+        import concurrent.futures as cf
+
+        futs = {self.ex.submit(_task, job, *t): t[0] for t in tasks}
+        try:
+            for f in cf.as_completed(futs):
+                yield futs[f], f.result()
+        finally:
+            for f in futs:
+                f.cancel()
+
+    def close(self):
+        self.ex.shutdown(wait=True, cancel_futures=True)
+
+
+class Dask:
+    """Chunks on dask: a LocalCluster of worker processes, or the cluster at ``scheduler``."""
+
+    def __init__(self, scheduler, workers, timeout, progress):
+        import logging
+
+        from dask.distributed import Client
+
+        # The driver reports failures itself; dask's own logging (tracebacks of closed
+        # connections when the sweep is interrupted) is silenced while the sweep runs.
+        self._log = logging.getLogger("distributed")
+        self._level = self._log.level
+        self._log.setLevel(logging.CRITICAL + 10)
+        self.cluster = None
+        if scheduler:
+            progress.status(f"connecting to {scheduler}")
+            try:
+                self.client = Client(scheduler, timeout=f"{timeout}s")
+            except (OSError, TimeoutError) as exc:
+                raise InputError(f"scheduler: cannot connect to {scheduler!r} ({exc})") from None
+        else:
+            from dask.distributed import LocalCluster
+
+            import signal
+            import threading
+
+            progress.status(f"starting {workers} worker processes")
+            os.environ.setdefault("OMP_NUM_THREADS", "1")
+            # Worker processes inherit an ignored SIGINT: Ctrl-C on the terminal reaches the
+            # whole process group, and only the driver should act on it (it stops the
+            # workers itself); otherwise each worker dies printing its own tracebacks.
+            main = threading.current_thread() is threading.main_thread()
+            old = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+            try:
+                self.cluster = LocalCluster(n_workers=workers, threads_per_worker=1,
+                                            processes=True, dashboard_address=None,
+                                            silence_logs=logging.CRITICAL)
+            finally:
+                if main:
+                    signal.signal(signal.SIGINT, old)
+            self.client = Client(self.cluster)
+        try:
+            progress.status("checking workers")
+            check_workers(self.client, timeout)
+        except BaseException:
+            self.close()
+            raise
+
+    def map(self, job, tasks):
+        from dask.distributed import as_completed
+
+        jf = self.client.scatter(job, broadcast=True, hash=False)
+        futs = {self.client.submit(_task, jf, *t, key=f"rotordyn-chunk-{job.key}-{t[0]}",
+                                   pure=False): t[0] for t in tasks}
+        try:
+            for f in as_completed(futs):
+                yield futs[f], f.result()
+        finally:
+            self.client.cancel(list(futs))
+
+    def close(self):
+        import contextlib
+
+        with contextlib.suppress(Exception):
+            self.client.close(timeout=5)
+        if self.cluster is not None:
+            with contextlib.suppress(Exception):
+                self.cluster.close(timeout=5)
+        self._log.setLevel(self._level)
+
+
+def group_size(n_chunks: int, max_files: int = 128) -> int:
+    """Chunks per compacted file: at most ``max_files`` files whatever the size."""
+    return max(1, math.ceil(n_chunks / max_files))

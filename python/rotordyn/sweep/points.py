@@ -1,0 +1,202 @@
+"""One point of a sweep inside a chunk: the model variant of its model-field axes (a fresh
+solver per chunk), its options and operating values, its equilibrium and eigen-analysis, and the
+identity columns and failure rows every analysis's rows start from (used by :mod:`.work` and
+:mod:`.lines`)."""
+
+from __future__ import annotations
+
+import copy
+import math
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn._common.status import CONVERGED  # noqa: F401 - statuses of a converged equilibrium
+from rotordyn._common.whirl import WHIRL_NAMES
+from rotordyn.analysis.assembly import Assembled
+from rotordyn.analysis.linear import FD_REL_STEP
+from rotordyn.errors import RotordynError
+from rotordyn.model.system import System
+from rotordyn.sweep.paths import set_field
+from rotordyn.units import hz_to_rad_s
+
+
+STATUS = ["ok", "no_equilibrium", "contact", "not_converged", "no_crossing", "error", "rub"]
+
+_BASE: dict = {}
+
+
+def base_system(model_toml: str):
+    """The model of a sweep (parsed once per process and model text)."""
+    sysm = _BASE.get(model_toml)
+    if sysm is None:
+        _BASE.clear()
+        sysm = _BASE[model_toml] = System.from_toml(model_toml, is_text=True)
+    return sysm
+
+
+_ASM: dict = {}  # (model text, model-axis values) -> Assembled (stateless parts reused)
+
+
+class Variants:
+    """The model for each combination of model-field axes met in this chunk, each with a
+    solver built fresh for this chunk (the reduction and sleeve condensation are cached per
+    process; the solver, which keeps warm starts, is not shared between chunks)."""
+
+    def __init__(self, base, model_toml: str):
+        self.base = base
+        self.model_toml = model_toml
+        self.cache = {}
+
+    def get(self, p: dict):
+        key = tuple((k, val) for k, val in p.items() if "." in k and not k.startswith("options.")
+                    or k == "gravity_m_s2")
+        hit = self.cache.get(key)
+        if hit is None:
+            proto = _ASM.get((self.model_toml, key))
+            if proto is None:
+                s = self.base
+                for k, val in key:
+                    s = set_field(s, k, val)
+                if len(_ASM) > 8:
+                    _ASM.clear()
+                proto = _ASM[(self.model_toml, key)] = Assembled(s)
+            hit = copy.copy(proto)
+            hit.solver = _core.SystemSolver(proto.model)
+            hit.last_r = None
+            m = proto.model
+            hit.mats = tuple(np.asarray(x) for x in (m.M, m.C, m.G, m.K))
+            if len(self.cache) > 4:
+                self.cache.clear()
+            self.cache[key] = hit
+        return hit
+
+
+def point_options(job, p: dict) -> dict:
+    opts = job.options
+    keys = [k for k in p if k.startswith("options.")]
+    if not keys:
+        return opts
+    opts = copy.deepcopy(opts)
+    for k in keys:
+        parts = k.split(".")[1:]
+        if len(parts) == 1:
+            opts[parts[0]] = p[k]
+            continue
+        cur = opts[parts[0]]
+        for q in parts[1:-1]:
+            cur = cur[int(q)]
+        cur[int(parts[-1])] = p[k]
+    return opts
+
+
+def operating(asm, p: dict):
+    """speed (Hz), p_c (Pa), configuration vector; InputError on a bad value."""
+    f = v.finite("speed_hz", p.get("speed_hz", 50.0))
+    pc = v.non_negative("chamber_pressure_pa", p.get("chamber_pressure_pa", 0.0))
+    ay, ax = p.get("config_ay_m"), p.get("config_ax_m")
+    a = asm.config_vector(ay, ax)
+    return f, pc, a
+
+
+def ref_bearing(asm):
+    act = [bc for bc in asm.bearings if bc.active]
+    return (act or asm.bearings)[0] if asm.bearings else None
+
+
+def equilibrium_options(opts):
+    """The C++ equilibrium options of a sweep's analysis options (automatic P_m, thin-film
+    contact at 2 % of c)."""
+
+    o = _core.EquilibriumOptions()
+    o.method = opts.get("method", "newton")
+    o.tol = float(opts.get("tol", 1e-10))
+    o.max_iter = int(opts.get("max_iter", 100))
+    o.pm = -1.0
+    o.contact_fraction = 0.02
+    return o
+
+
+def solve_equilibrium(asm, f, pc, a, r0, opts):
+    o = equilibrium_options(opts)
+    return asm.solver.equilibrium(hz_to_rad_s(f), pc, a, np.zeros(0) if r0 is None else r0, o)
+
+
+def eigen(asm, e, f, opts, n_modes):
+    """Eigenvalues, modes (n, k), whirl, kind of eq. 19 at equilibrium ``e``."""
+
+    w = hz_to_rad_s(f)
+    r = np.asarray(e.r)
+    if opts.get("linearization", "perturbation") == "perturbation":
+        lin = asm.solver.linearize(r, np.zeros(asm.n), w)
+    else:
+        lin = asm.solver.linearize_fd(r, w, FD_REL_STEP)
+    M, C0, G, K0 = asm.mats
+    if asm.model.has_table_mass():  # bearing tables' mass coefficients: M(Ω)
+        M = np.asarray(asm.model.mass_at(w))
+    D = C0 + w * G + np.asarray(lin.DH)
+    K = K0 + np.asarray(lin.KH)
+    if not (np.all(np.isfinite(K)) and np.all(np.isfinite(D))):
+        raise ArithmeticError("non-finite bearing coefficients")
+    res = _core.modal(M, D, K, asm.rotor.xy_pairs(), int(n_modes or asm.n), True,
+                      asm.rotor.rot_pairs())
+    lam = np.asarray(res.eigenvalues)
+    phi = np.asarray(res.modes)
+    if not np.all(np.isfinite(lam)):  # never a non-finite eigenvalue with status ok
+        raise ArithmeticError("non-finite eigenvalues")
+    sl = [i for bc in asm.bearings for i in bc.sleeve]
+    kin = np.real(np.einsum("ik,ij,jk->k", phi.conj(), M, phi))
+    kin_s = (np.real(np.einsum("ik,ij,jk->k", phi[sl].conj(), M[np.ix_(sl, sl)], phi[sl]))
+             if sl else np.zeros(len(lam)))
+    kind = np.where(kin_s > 0.5 * kin, "sleeve", "rotor")
+    whirl = np.array([WHIRL_NAMES[int(x)] for x in res.whirl])
+    return lam, phi, whirl, kind
+
+
+def stable_modes(lam) -> np.ndarray:
+    """Per mode: Re λ below the round-off band (as StabilityResult.stable)."""
+    return lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)
+
+
+def same_line(prev, idx, pos) -> bool:
+    """Consecutive points that differ only along the innermost varying axis."""
+    return prev is not None and prev[:pos] == idx[:pos] and prev[pos + 1:] == idx[pos + 1:]
+
+
+def common_row(job, pid, chunk_id, idx, p, asm):
+    row = {"point_id": pid, "chunk_id": chunk_id}
+    for (a, _), i in zip(job.axes.items(), idx):
+        row[f"i_{a}"] = i
+    row.update(p)
+    row.setdefault("speed_hz", 50.0)
+    row.setdefault("chamber_pressure_pa", 0.0)
+    if "config_ay_m" not in row:
+        bc = ref_bearing(asm) if asm is not None else None
+        row["config_ay_m"] = (job_model_ay(asm, bc) if bc is not None else math.nan)
+    return row
+
+
+def job_model_ay(asm, bc):
+    return float(asm.system.bearings[bc.index].config_ay_m)
+
+
+def fail_row(row, status, message):
+    return {**row, "status": status, "message": message}
+
+
+def points(job, variants, chunk_id, lo, hi, pids=None):
+    """Yield (row, p, asm, opts, same_line, error) per point; a model-variant error is
+    yielded as asm=None with its message."""
+    prev = None
+    for pid in (range(lo, hi) if pids is None else pids):
+        idx, p = job.point(pid)
+        try:
+            asm = variants.get(p)
+            err = None
+        except RotordynError as exc:
+            asm, err = None, str(exc)
+        row = common_row(job, pid, chunk_id, idx, p, asm)
+        yield row, p, asm, point_options(job, p), same_line(prev, idx, job.line_pos), err
+        prev = idx
+
