@@ -111,10 +111,19 @@ def boolean(field: str, value) -> bool:
 
 def vector(field: str, value, n: int | None = None) -> np.ndarray:
     """A 1-D float64 array of finite numbers (of length ``n`` when given); a copy."""
-    if value is None or isinstance(value, (str, bytes, dict)):
+    if value is None or isinstance(value, (str, bytes, dict, set, frozenset)):
         raise InputError(f"{field}: expected a sequence of numbers, got {_show(value)}")
     try:
-        arr = np.array(value, dtype=float)
+        raw = np.asarray(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{field}: expected a sequence of numbers, got {_show(value)}") \
+            from None
+    # text or bools are not numbers, though numpy would convert "50" or True to a float
+    if raw.dtype.kind in "USb" or (raw.dtype.kind == "O" and any(
+            isinstance(x, (str, bytes, bool, np.bool_)) for x in raw.ravel())):
+        raise InputError(f"{field}: expected numbers, got {_show(value)}")
+    try:
+        arr = np.array(raw, dtype=float)
     except (TypeError, ValueError, OverflowError):
         raise InputError(f"{field}: expected a sequence of numbers, got {_show(value)}") \
             from None

@@ -41,7 +41,9 @@ GAP_FACTOR = 4.0  # film thickness put on the (pressure-prescribed) gap nodes, �
 
 def check_film_fields(b, where: str, n_stations: int | None) -> None:
     """The fields every film element has (station, D, L, c, μ, cavitation, grid,
-    configuration); ``n_stations`` None skips the station range (a standalone element)."""
+    configuration, name); ``n_stations`` None skips the station range (a standalone
+    element)."""
+    v.text(f"{where}.name", b.name)
     if n_stations is not None:
         v.integer(f"{where}.station", b.station, lo=0, hi=n_stations - 1)
     v.positive(f"{where}.diameter_m", b.diameter_m)
@@ -58,19 +60,24 @@ def check_film_fields(b, where: str, n_stations: int | None) -> None:
     v.finite(f"{where}.config_ay_m", b.config_ay_m)
 
 
-def check_speeds(speeds_hz) -> np.ndarray:
-    s = np.atleast_1d(np.asarray(speeds_hz, dtype=float))
-    if s.ndim != 1 or s.size == 0 or not np.all(np.isfinite(s)) or np.any(s == 0):
-        raise InputError(f"speeds_hz: expected a 1-D array of finite nonzero speeds, got {speeds_hz!r}")
+def check_speeds(speeds_hz, max_hz: float = v.MAX_SPEED_HZ, why: str = "") -> np.ndarray:
+    """Speeds of a standalone coefficient table (Hz): numbers, finite, nonzero, |f| ≤
+    ``max_hz`` (an element whose film is solved on a mapped grid has a lower limit: ``why``)."""
+    s = v.vector("speeds_hz", [speeds_hz] if np.ndim(speeds_hz) == 0 else speeds_hz)
+    if s.size == 0 or np.any(s == 0):
+        raise InputError(f"speeds_hz: expected a 1-D array of finite nonzero speeds, got "
+                         f"{speeds_hz!r}")
+    if np.any(np.abs(s) > max_hz):
+        raise InputError(f"speeds_hz: expected |speed| <= {max_hz:.4g} Hz{why}, got "
+                         f"{float(s[np.argmax(np.abs(s))])!r}")
     return s
 
 
 def check_load(load_n) -> np.ndarray:
-    try:
-        ld = np.asarray([float(x) for x in load_n])
-    except (TypeError, ValueError):
-        raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}") from None
-    if ld.shape != (2,) or not np.all(np.isfinite(ld)) or not np.hypot(*ld) > 0:
+    if np.ndim(load_n) != 1 or np.size(load_n) != 2:
+        raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}")
+    ld = v.vector("load_n", load_n, 2)
+    if not np.hypot(*ld) > 0:
         raise InputError(f"load_n: expected a finite nonzero load (Fx, Fy) in N, got {load_n!r}")
     return ld
 
@@ -85,6 +92,37 @@ class PadFilm:
     on_pad: np.ndarray       # (N,) bool
     scale: float             # s
     extra_labels: list = field(default_factory=list)
+
+
+def arc_scale(arc_rad: float, n_circ: int) -> float:
+    """s = β N / (2π m) of a pad of arc β mapped onto m intervals of an N = m + 2 node core
+    grid (1 for a 360° film): the core solves the pad with diameter s·D at speed ω/s."""
+    if abs(arc_rad - TWO_PI) < 1e-12:
+        return 1.0
+    m = max(10, int(round(n_circ * arc_rad / TWO_PI)))
+    return arc_rad * (m + 2) / (TWO_PI * m)
+
+
+def check_arc(field: str, arc_deg: float, b) -> None:
+    """A pad or lobe arc long enough for its film: the mapped grid's diameter s·D must exceed
+    twice the clearance (the core's film-geometry rule), i.e. the arc length must exceed
+    about 4π·c (a shorter "pad" is a slit of the clearance's size, not a bearing pad)."""
+    s = arc_scale(math.radians(arc_deg), b.n_circ)
+    if not b.clearance_m < 0.5 * s * b.diameter_m:
+        need = math.degrees(4 * math.pi * b.clearance_m / b.diameter_m / 1.2)
+        raise InputError(f"{field}: expected an arc of more than about {need:.3g} deg for "
+                         f"clearance_m = {b.clearance_m:g} and diameter_m = {b.diameter_m:g}, "
+                         f"got {arc_deg!r}")
+
+
+def speed_limit(films) -> tuple[float, str]:
+    """The largest |speed| (Hz) of a table over ``films`` (PadFilm or couplings) and why it is
+    below the solver's 1e5 Hz: a pad's film is solved at ω/s on its mapped grid."""
+    s = min([p.scale for p in films if isinstance(p, PadFilm)] or [1.0])
+    if s >= 1.0:
+        return v.MAX_SPEED_HZ, ""
+    return v.MAX_SPEED_HZ * s, (f" (the film solver's {v.MAX_SPEED_HZ:g} Hz on the pads' mapped "
+                                f"grids, s = {s:.3g})")
 
 
 def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: float,
@@ -106,17 +144,16 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
     Cb = clearance_m
     Cp = Cb / (1.0 - preload)
     full = abs(arc_rad - TWO_PI) < 1e-12
+    s = arc_scale(arc_rad, n_circ)
     if full:
         N = int(n_circ)
         m = N
-        s = 1.0
         phi = start_rad + TWO_PI * np.arange(N) / N
         on = np.ones(N, dtype=bool)
         grooves = []
     else:
         m = max(10, int(round(n_circ * arc_rad / TWO_PI)))  # core grids need N >= 12
         N = m + 2
-        s = arc_rad * N / (TWO_PI * m)
         j = np.arange(N)
         on = j <= m
         phi = np.where(on, start_rad + s * TWO_PI * j / N, np.nan)

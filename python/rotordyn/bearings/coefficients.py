@@ -8,7 +8,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rotordyn.bearings._film import check_load, check_speeds, operating_table, reduce_coefficients
+from rotordyn.bearings._film import (check_load, check_speeds, operating_table,
+                                     reduce_coefficients, speed_limit)
 from rotordyn.errors import InputError
 from rotordyn._common.status import CONVERGED
 
@@ -70,7 +71,7 @@ def coefficient_table(parts, load_n, speeds_hz, clearance_m: float, *, n_threads
                       whirl_ratio: float | None = 1.0, tol: float = 1e-10) -> CoefficientTable:
     """Standalone table: equilibrium under ``load_n`` and the 2×2 coefficients at each speed;
     extra coordinates condensed at the whirl frequency ``whirl_ratio``·Ω (None: static)."""
-    s = check_speeds(speeds_hz)
+    s = check_speeds(speeds_hz, *speed_limit(parts.films))
     ld = check_load(load_n)
     if isinstance(n_threads, bool) or not isinstance(n_threads, (int, np.integer)) or n_threads < 0:
         raise InputError(f"n_threads: expected an integer >= 0 (0: all cores), got {n_threads!r}")

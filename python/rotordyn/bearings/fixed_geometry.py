@@ -32,7 +32,7 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
-from rotordyn.bearings._film import SystemParts, check_film_fields, pad_film
+from rotordyn.bearings._film import SystemParts, check_arc, check_film_fields, pad_film
 from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.errors import InputError
 
@@ -108,6 +108,8 @@ class FixedGeometryBearing:
         if self.kind != "partial_arc":
             v.in_range(f"{where}.groove_width_deg", self.groove_width_deg, 0.0,
                        360.0 / self.n_lobes, lo_open=True, hi_open=True)
+        check_arc(f"{where}.{'arc_deg' if self.kind == 'partial_arc' else 'groove_width_deg'}",
+                  self.lobe_arc_deg(), self)
         v.non_negative(f"{where}.dam_depth_m", self.dam_depth_m)
         if self.kind == "pressure_dam":
             v.in_range(f"{where}.dam_arc_deg", self.dam_arc_deg, 0.0, self.lobe_arc_deg(),

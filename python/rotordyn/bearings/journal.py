@@ -546,7 +546,6 @@ class JournalBearing:
 
 def check_placed_film(b, where: str, n_stations: int) -> None:
     """The checks of a plain or active journal bearing placed at a rotor station."""
-    v.text(f"{where}.name", b.name)
     check_film_fields(b, where, n_stations)
     plausibility.length(f"{where}.diameter_m", b.diameter_m)
     plausibility.clearance(f"{where}.clearance_m", b.clearance_m, b.diameter_m)

@@ -210,8 +210,9 @@ class SqueezeFilmDamper:
         """Equivalent linear coefficients of a circular centred orbit (radius εc, whirl ν):
         radial and tangential forces F_r, F_t (N), K_eq = −F_r/e (N/m) and C_eq = −F_t/(eν)
         (N·s/m), the usual way to linearise a cavitated damper for linear analyses."""
-        eps = v.in_range("eccentricity_ratio", eccentricity_ratio, 0.0, 1.0, lo_open=True,
-                         hi_open=True)
+        # below 1e-6 the orbit is the linear limit (and e = εc underflows): use K, C at the
+        # centre (coefficient_table) instead
+        eps = v.in_range("eccentricity_ratio", eccentricity_ratio, 1e-6, 1.0, hi_open=True)
         nu = 2 * math.pi * v.finite("whirl_hz", whirl_hz)
         if nu == 0:
             raise InputError("whirl_hz: expected a nonzero whirl frequency")

@@ -79,6 +79,7 @@ class TableBearing:
         self.check("table_bearing", None)
 
     def check(self, where: str, n_stations: int | None) -> None:
+        v.text(f"{where}.name", self.name)
         if n_stations is not None:
             v.integer(f"{where}.station", self.station, lo=0, hi=n_stations - 1)
         s = np.asarray(self.speeds_hz)
@@ -164,12 +165,24 @@ class TableBearing:
         """Read a table: a header row with ``speed_hz`` and any of ``kxx_n_per_m`` …
         ``cyy_n_s_per_m`` (and the mass columns ``mxx_kg`` … ``myy_kg``: all four or none;
         other columns, e.g. ``status`` from :meth:`CoefficientTable.to_csv`,
-        are ignored; rows whose status is not ``ok`` are an error)."""
+        are ignored; a row whose status is not converged (``ok`` or ``contact``) is an error;
+        the file is UTF-8 and names each column once)."""
         p = Path(path)
         if not p.is_file():
             raise InputError(f"csv: no such file {str(p)!r}")
-        with p.open(newline="", encoding="utf-8") as fh:
-            rows = list(csv.DictReader(fh))
+        try:
+            with p.open(newline="", encoding="utf-8") as fh:
+                lines = list(csv.reader(fh))
+        except UnicodeDecodeError as exc:
+            raise InputError(f"csv: {str(p)!r} is not UTF-8 text (byte {exc.start}); save it "
+                             "as UTF-8") from None
+        except OSError as exc:
+            raise InputError(f"csv: cannot read {str(p)!r}: {exc.strerror}") from None
+        header = [h.strip() for h in lines[0]] if lines else []
+        twice = sorted({h for h in header if header.count(h) > 1})
+        if twice:  # DictReader would keep the last column of each name silently
+            raise InputError(f"csv: {str(p)!r} has the column {twice[0]!r} more than once")
+        rows = [dict(zip(header, r)) for r in lines[1:] if r]
         if not rows or "speed_hz" not in rows[0]:
             raise InputError(f"csv: {str(p)!r} needs a header row with a speed_hz column")
         cols = {}
@@ -179,8 +192,8 @@ class TableBearing:
                     cols[f] = tuple(float(r[f]) for r in rows)
                 except (TypeError, ValueError):
                     raise InputError(f"csv: column {f} of {str(p)!r} holds a non-number") from None
-        for i, r in enumerate(rows):
-            if r.get("status", "ok") not in ("ok", ""):
+        for i, r in enumerate(rows):  # converged rows: ok, or contact (a thin film)
+            if r.get("status", "ok") not in CONVERGED + ("",):
                 raise InputError(f"csv: row {i + 1} of {str(p)!r} has status {r['status']!r}")
         speeds = cols.pop("speed_hz")
         return cls(station=station, speeds_hz=speeds, extrapolate=extrapolate, name=name,

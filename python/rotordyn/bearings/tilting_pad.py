@@ -27,8 +27,8 @@ import numpy as np
 
 from rotordyn._common import validate as v
 from rotordyn._common.status import CONVERGED
-from rotordyn.bearings._film import (SystemParts, check_film_fields, check_load, check_speeds,
-                                     operating_table, pad_film)
+from rotordyn.bearings._film import (SystemParts, check_arc, check_film_fields, check_load,
+                                     check_speeds, operating_table, pad_film, speed_limit)
 from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.errors import InputError
 
@@ -68,6 +68,7 @@ class TiltingPadBearing:
         v.integer(f"{where}.n_pads", self.n_pads, lo=1, hi=32)
         v.in_range(f"{where}.pad_arc_deg", self.pad_arc_deg, 0.0, 360.0 / self.n_pads,
                    lo_open=True, hi_open=True)
+        check_arc(f"{where}.pad_arc_deg", self.pad_arc_deg, self)
         v.in_range(f"{where}.pivot_offset", self.pivot_offset, 0.0, 1.0, lo_open=True,
                    hi_open=True)
         v.in_range(f"{where}.preload", self.preload, 0.0, 1.0, hi_open=True)
@@ -189,8 +190,8 @@ class TiltingPadBearing:
         (journal x, y then the pad coordinates η_k [, u_k], see :meth:`system_parts`;
         :meth:`pad_tilts_rad` gives the tilts) and K, C, M (2 + n_pad_dofs square)."""
         parts = self.system_parts(0, 1, 2, self.name or "bearing")
-        r, K, C, status, message, M = operating_table(parts, check_load(load_n),
-                                                      check_speeds(speed_hz))
+        r, K, C, status, message, M = operating_table(
+            parts, check_load(load_n), check_speeds(speed_hz, *speed_limit(parts.films)))
 
         if status[0] not in CONVERGED:  # ok, or contact (converged with a thin film)
             from rotordyn.errors import ConvergenceError
