@@ -34,8 +34,8 @@ def main() -> int:
     rd.campbell(rig, [20.0, 40.0], 0.4e6, n_modes=6)
     rd.unbalance_response(rig, [(3, 1e-5, 0.0)], [30.0, 40.0], chamber_pressure_pa=0.4e6)
     rd.statespace(rig, speed_hz=50, chamber_pressure_pa=0.15e6, config_ay_m=-1.85e-3)
-    rd.modes(rig)
-    rd.rotor_campbell(rig, [0.0, 50.0], n_modes=4)
+    rd.modes(rig, without_bearings=True)
+    rd.rotor_campbell(rig, [0.0, 50.0], n_modes=4, without_bearings=True)
     tr = rd.transient(rig, 0.02, 50, 0.15e6, -1.85e-3, disturbance_m=(1e-5, 0.0), n_out=21)
     assert np.all(np.isfinite(tr.r)), tr.message
     for cav in ("gumbel", "reynolds", "jfo"):

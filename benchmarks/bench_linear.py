@@ -195,7 +195,7 @@ def bench_campbell(rig, repeat, use_ross):
     print(f"   same-size linear rotor ({n_dof} free-free DOF, 6 modes, no film), interleaved:")
 
     def rd_camp():
-        return rd.rotor_campbell(like, sp, reduction="none", n_modes=6)
+        return rd.rotor_campbell(like, sp, reduction="none", n_modes=6, without_bearings=True)
 
     fns = {"rd": rd_camp}
     if ross is not None:

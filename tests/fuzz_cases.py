@@ -168,7 +168,7 @@ def toml(p: dict) -> list:
     if back != s:
         v.append("to_toml round trip changed the model")
     if p.get("modes"):
-        m = rd.modes(s, n_modes=min(4, 2 * len(s.reduction.master_stations) or 4))
+        m = rd.modes(s, n_modes=min(4, 2 * len(s.reduction.master_stations) or 4), without_bearings=True)
         _finite("frequencies", m.frequencies_hz, v)
     return v
 

@@ -8,6 +8,9 @@ or a NaN with status ok)."""
 
 from __future__ import annotations
 
+import dataclasses
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -15,6 +18,7 @@ import rotordyn as rd
 from rotordyn.bearings import (FixedGeometryBearing, SqueezeFilmDamper, TableBearing,
                                TiltingPadBearing)
 
+MODELS = Path(__file__).parent / "data" / "models"
 BASE = dict(station=0, diameter_m=0.1, length_m=0.05, clearance_m=1e-4, viscosity_pa_s=0.02)
 
 ROTOR = """schema = "rotordyn/model/1"
@@ -134,3 +138,26 @@ def test_damper_orbit_too_small_is_an_input_error():
         sfd.orbit_coefficients(eccentricity_ratio=5e-324, whirl_hz=50.0)
     r = sfd.orbit_coefficients(eccentricity_ratio=1e-6, whirl_hz=50.0)
     assert all(np.isfinite(x) for x in r.values())
+
+
+# -- issue 18: ``modes`` on a model with bearing elements ---------------------------------------
+def test_modes_refuses_a_system_with_bearings_and_points_to_stability():
+    """ROSS's run_modal includes the bearings; ``rd.modes`` used to show the rotor without them,
+    silently (345, 741 Hz … on a compressor on plain bearings). Now it refuses unless asked for
+    the rotor alone, and says where the system's modes are."""
+    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
+    for call in (lambda: rd.modes(s, 100.0), lambda: rd.rotor_campbell(s, [10.0, 20.0])):
+        with pytest.raises(rd.InputError, match="without_bearings: .*rotordyn.stability"):
+            call()
+    free = rd.modes(s, 100.0, without_bearings=True)
+    bare = rd.modes(dataclasses.replace(s, bearings=()), 100.0)
+    np.testing.assert_array_equal(free.eigenvalues, bare.eigenvalues)
+
+
+def test_cli_modes_without_bearings_flag(capsys):
+    from rotordyn.cli import main
+
+    path = str(MODELS / "compressor_plain.toml")
+    assert main(["modes", path]) == 2
+    assert "without_bearings" in capsys.readouterr().err
+    assert main(["modes", path, "--without-bearings", "--json"]) == 0

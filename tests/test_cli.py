@@ -13,7 +13,7 @@ def run(*args):
 
 
 def test_modes_paper_rig_json_has_full_and_condensed():
-    p = run("modes", "paper-rig", "--reduction", "guyan", "--json")
+    p = run("modes", "paper-rig", "--reduction", "guyan", "--json", "--without-bearings")
     assert p.returncode == 0, p.stderr
     d = json.loads(p.stdout)
     f, g = d["frequencies_hz"], d["full_frequencies_hz"]
@@ -32,7 +32,7 @@ def test_modes_full_model_json():
     [
         (("modes", "no-such-model"), "model"),
         (("modes", "paper-rig", "--speed-hz", "fast"), "--speed-hz"),
-        (("modes", "paper-rig", "--n-modes", "0"), "n_modes"),
+        (("modes", "paper-rig", "--n-modes", "0", "--without-bearings"), "n_modes"),
         (("modes", "paper-rig", "--reduction", "magic"), "--reduction"),
     ],
 )
@@ -47,7 +47,7 @@ def test_toml_path_model(tmp_path):
 
     path = tmp_path / "rig.toml"
     rd.models.paper_rig().to_toml(path)
-    p = run("modes", str(path), "--json")
+    p = run("modes", str(path), "--json", "--without-bearings")
     assert p.returncode == 0
     bad = tmp_path / "bad.toml"
     bad.write_text(path.read_text().replace("mass_kg = ", "mass_kg = -", 1))  # disk[0]

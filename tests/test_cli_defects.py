@@ -47,7 +47,7 @@ def test_written_model_round_trips_and_every_command_accepts_it(readme_rotor, tm
     assert 'method = "none"' in path.read_text()
     back = rd.System.from_toml(path)
     assert back == s
-    assert len(rd.modes(back).eigenvalues) > 0
+    assert len(rd.modes(back, without_bearings=True).eigenvalues) > 0
     assert run("modes", str(path), "--speed-hz", "66.7").returncode == 0
     assert run("validate", str(path)).returncode == 0
     p = run("report", str(path), "--out", str(tmp_path / "rep"))
@@ -197,14 +197,14 @@ def test_cli_unit_slip_warnings_are_one_line_naming_the_flag():
 
 def test_reprs_are_short_and_informative():
     rig = rd.models.paper_rig()
-    res = [rd.modes(rig, 0.0, reduction="guyan"),
+    res = [rd.modes(rig, 0.0, reduction="guyan", without_bearings=True),
            rd.equilibrium(rig, 50.0, 0.15e6, -1.85e-3),
            rd.stability(rig, 50.0, 0.15e6, -1.85e-3),
            rd.statespace(rig, inputs=["chamber_pressure"], outputs=[("journal", 0)],
                          speed_hz=50.0, chamber_pressure_pa=0.15e6, config_ay_m=-1.85e-3),
            rd.campbell(rig, [30.0, 40.0], 0.4e6, 0.0),
            rd.unbalance_response(rig, [(4, 1e-4, 0.0)], [30.0, 40.0], chamber_pressure_pa=4e5),
-           rd.rotor_campbell(rig, [0.0, 10.0], n_modes=4)]
+           rd.rotor_campbell(rig, [0.0, 10.0], n_modes=4, without_bearings=True)]
     res.append(res[2].linear)
     for r in res:
         text = repr(r)
@@ -219,12 +219,12 @@ def test_one_whirl_rule_planar_at_rest():
     legend and the JSON all say planar (tolerance WHIRL_PLANAR_TOL = 0.05)."""
     from rotordyn.results.modes import WHIRL_PLANAR_TOL, whirl_index, whirl_label
 
-    r = rd.modes(rd.models.paper_rig(), 0.0, reduction="guyan")
+    r = rd.modes(rd.models.paper_rig(), 0.0, reduction="guyan", without_bearings=True)
     assert set(r.whirl) == {"planar"} and set(r.full.whirl) == {"planar"}
     idx = whirl_index(r.full.shapes[:, 0, :], r.full.shapes[:, 1, :], axis=0)
     assert list(whirl_label(idx)) == list(r.full.whirl)
     assert WHIRL_PLANAR_TOL == 0.05
     assert list(whirl_label([0.049, -0.049, 0.051, -0.051])) == \
         ["planar", "planar", "forward", "backward"]
-    p = run("modes", "paper-rig", "--json")
+    p = run("modes", "paper-rig", "--json", "--without-bearings")
     assert set(_strict(p.stdout)["whirl"]) == {"planar"}

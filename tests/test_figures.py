@@ -79,7 +79,7 @@ def test_campbell_unstable_region_visible():
 
 
 def test_rotor_campbell_plot():
-    r = rd.rotor_campbell(rd.models.load("friswell-5.9.1"), np.linspace(0, 100, 11), n_modes=4)
+    r = rd.rotor_campbell(rd.models.load("friswell-5.9.1"), np.linspace(0, 100, 11), n_modes=4, without_bearings=True)
     ax = r.plot(color_by="damping_ratio")
     assert colorbar_labels(ax.figure) == ["damping ratio ζ (–)"]
 
@@ -127,7 +127,7 @@ def test_unbalance_grid_refined_at_peaks():
 
 
 def test_mode_shape_3d_and_2d(rig):
-    m = rd.modes(rig, 30.0, reduction="none", n_modes=6)
+    m = rd.modes(rig, 30.0, reduction="none", n_modes=6, without_bearings=True)
     ax = m.plot(1, system=rig)
     assert ax.name == "3d"
     assert ax.get_xlabel() == "axial position (m)"

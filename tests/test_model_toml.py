@@ -93,7 +93,7 @@ def test_free_free_guyan_needs_enough_masters():
     rotor = rd.Rotor((rd.ShaftSection(1.0, 0.02, n_elements=4),))
     s = rd.System(rotor=rotor, reduction=rd.Reduction(master_stations=(0,)))
     with pytest.raises(rd.InputError, match="singular"):
-        rd.modes(s, reduction="guyan")
+        rd.modes(s, reduction="guyan", without_bearings=True)
 
 
 def test_sparse_matrices_have_rotordynamic_structure():

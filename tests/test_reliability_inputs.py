@@ -63,7 +63,7 @@ API_CASES = [
     ("stability n_modes 2**31", lambda s: rd.stability(s, 50, n_modes=2**31), "n_modes"),
     ("stability n_modes 0", lambda s: rd.stability(s, 50, n_modes=0), "n_modes"),
     ("stability n_modes text", lambda s: rd.stability(s, 50, n_modes="x"), "n_modes"),
-    ("modes n_modes 2**31", lambda s: rd.modes(s, n_modes=2**31), "n_modes"),
+    ("modes n_modes 2**31", lambda s: rd.modes(s, n_modes=2**31, without_bearings=True), "n_modes"),
     ("statespace inputs None", lambda s: rd.statespace(s, inputs=None), "inputs"),
     ("boundary values text", lambda s: rd.stability_boundary(s, values="ab", bounds=(0, 1e5)),
      "values"),
@@ -77,7 +77,7 @@ API_CASES = [
 def test_meaningless_mode_counts_are_capped(rig):
     """Issue 13: ``rotor_campbell(n_modes=10**6)`` returned a 10^6-column NaN array; more
     modes than coordinates are capped at the model's size (6 for the Guyan-reduced rig)."""
-    c = rd.rotor_campbell(rig, [0, 10], n_modes=10**6)
+    c = rd.rotor_campbell(rig, [0, 10], n_modes=10**6, without_bearings=True)
     assert c.eigenvalues.shape == (2, 6) and np.all(np.isfinite(c.eigenvalues))
     st = rd.stability(rig, 50.0, 0.15e6, -1.85e-3, n_modes=10**6)
     assert len(st.eigenvalues) <= 9
@@ -117,7 +117,7 @@ def test_too_many_elements_refused_with_an_estimate():
     """Issue 13: ``n_elements = 10000`` ended in std::bad_alloc (dense 40004² matrices)."""
     s = rd.System.from_toml(_sub(r"^n_elements = \d+", "n_elements = 10000"), is_text=True)
     with pytest.raises(rd.InputError, match=r"rotor.n_elements.*GiB"):
-        rd.modes(s)
+        rd.modes(s, without_bearings=True)
 
 
 # -- model (Python and TOML) ----------------------------------------------------------------
@@ -210,7 +210,7 @@ def test_speeds_beyond_any_rotor_are_refused(capsys):
     with pytest.raises(rd.InputError, match=r"speed_hz: expected a speed in \[-100000, 100000\]"):
         rd.transient(rig, 0.01, 9223372036854775808, 0.15e6, -1.85e-3, n_out=2)
     for call in (lambda: rd.equilibrium(rig, 2e5, 0.15e6, -1.85e-3),
-                 lambda: rd.modes(rig, speed_hz=-1e6),
+                 lambda: rd.modes(rig, speed_hz=-1e6, without_bearings=True),
                  lambda: rd.campbell(rig, [10.0, 1e6])):
         with pytest.raises(rd.InputError, match="speed"):
             call()

@@ -357,7 +357,7 @@ def main(argv=None):
         print(f"   rotor modes at {sp:5.1f} Hz: {desc}   [Hz, whirl, Re λ 1/s]")
     sl = np.where(~c.rotor_mask(), c.frequencies_hz, np.nan)
     print(f"   sleeve modes: {np.nanmin(sl):.0f}-{np.nanmax(sl):.0f} Hz over the speeds")
-    m0 = rd.modes(system, 0.0)
+    m0 = rd.modes(system, 0.0, without_bearings=True)
     print("   rotor alone on its ball bearings (condensed, 0 Hz): "
           + ", ".join(f"{x:.2f}" for x in m0.eigenvalues.imag[::2] / (2 * np.pi)) + " Hz")
     # The rotor with its journal pinned (a rigid support at the bearing station, no film):
@@ -367,8 +367,8 @@ def main(argv=None):
         system, bearings=(), supports=system.supports + (rd.Support(st4),),
         reduction=rd.Reduction(tuple(m for m in system.reduction.master_stations if m != st4),
                                system.reduction.method))
-    pg = rd.modes(pinned, 0.0)
-    pf = rd.modes(pinned, 0.0, reduction="none", n_modes=4)
+    pg = rd.modes(pinned, 0.0, without_bearings=True)
+    pf = rd.modes(pinned, 0.0, reduction="none", n_modes=4, without_bearings=True)
     print("   rotor pinned at the journal (no film, 0 Hz): condensed "
           + ", ".join(f"{x:.2f}" for x in pg.eigenvalues.imag[::2] / (2 * np.pi))
           + " Hz; full " + ", ".join(f"{x:.2f}" for x in pf.eigenvalues.imag[::2] / (2 * np.pi))

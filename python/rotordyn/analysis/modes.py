@@ -89,10 +89,29 @@ def _result(rm: RotorMatrices, speed_hz: float, n_modes: int, model_name: str) -
     )
 
 
+def _check_no_bearings(system: System, what: str, without_bearings) -> None:
+    """The rotor-alone analyses refuse a system with bearing elements unless asked to leave
+    them out: their films' stiffness and damping depend on the equilibrium at each speed, so
+    the rotor's modes without them are not the system's (issue 18: ``modes`` silently showed
+    the rotor on its supports only, where ROSS's ``run_modal`` includes the bearings)."""
+    v.boolean("without_bearings", without_bearings)
+    if system.bearings and not without_bearings:
+        names = ", ".join(b.name or f"{type(b).__name__} at station {b.station}"
+                          for b in system.bearings)
+        raise InputError(
+            f"without_bearings: the system has {len(system.bearings)} bearing element(s) "
+            f"({names}) whose films depend on the equilibrium at each speed; {what} is the "
+            "rotor on its supports alone. For the modes with the bearings use "
+            "rotordyn.stability(system, speed_hz, ...) (CLI: rotordyn stability; Campbell: "
+            "rotordyn.campbell); for the rotor without them pass without_bearings=True "
+            "(CLI: --without-bearings)")
+
+
 @limited_blas
 def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None,
-          n_modes: int | None = None) -> ModesResult:
-    """Damped natural frequencies, damping, whirl and mode shapes of the rotor on its supports.
+          n_modes: int | None = None, without_bearings: bool = False) -> ModesResult:
+    """Damped natural frequencies, damping, whirl and mode shapes of the rotor on its supports
+    (rigid and linear), without any bearing element.
 
     Parameters
     ----------
@@ -102,7 +121,11 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
     n_modes : number of modes (lowest damped frequencies) kept; default all of a reduced
         model, 12 of a full one. A reduced result carries the full model's ``full`` result
         with the same number of modes (for the frequency error).
+    without_bearings : a system with bearing elements (fluid films, tables) is refused unless
+        this is True: their coefficients depend on the equilibrium, so use
+        :func:`rotordyn.stability` for the system's modes; True gives the rotor without them.
     """
+    _check_no_bearings(system, "modes", without_bearings)
     v.speed("speed_hz", speed_hz)
     if n_modes is not None:
         v.integer("n_modes", n_modes, lo=1)
@@ -125,12 +148,14 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
 
 @limited_blas
 def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
-                   n_modes: int = 8) -> CampbellResult:
+                   n_modes: int = 8, without_bearings: bool = False) -> CampbellResult:
     """Campbell diagram of the rotor on its linear/rigid supports (no fluid film): the
     ``n_modes`` lowest damped frequencies at each speed, computed in one C++ call.
 
-    speeds_hz: (n_speeds,) increasing, Hz.
+    speeds_hz: (n_speeds,) increasing, Hz. A system with bearing elements is refused unless
+    ``without_bearings`` (see :func:`modes`; :func:`rotordyn.campbell` includes them).
     """
+    _check_no_bearings(system, "rotor_campbell", without_bearings)
     sp = v.speeds("speeds_hz", speeds_hz)
     v.integer("n_modes", n_modes, lo=1)
     if reduction is not None:

@@ -43,14 +43,17 @@ def _merge(a: UnbalanceResult, b: UnbalanceResult) -> UnbalanceResult:
     return UnbalanceResult(sp[o], a.stations, np.concatenate([a.x, b.x])[o],
                            np.concatenate([a.y, b.y])[o],
                            np.concatenate([a.point_status, b.point_status])[o], a.unbalances,
-                           a.operating_speed_hz)
+                           a.operating_speed_hz,
+                           None if a.max_real_1_per_s is None else
+                           np.concatenate([a.max_real_1_per_s, b.max_real_1_per_s])[o])
 
 
 @limited_blas
 def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
                        chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None,
                        operating_speed_hz=None, method: str = "perturbation",
-                       refine: bool = True) -> UnbalanceResult:
+                       refine: bool = True, check_stability: bool | None = None
+                       ) -> UnbalanceResult:
     """Response to rotating unbalances ``[(station, mass_kg_m, phase_deg), ...]`` (m·e in
     kg·m; the force at station is m e Ω² (cos(Ωt + φ), sin(Ωt + φ)), turning with the rotor).
 
@@ -61,11 +64,15 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     peak until both neighbours of the peak lie above its half-power level (at most
     ``REFINE_LEVELS`` quarterings of the spacing), so that neither the peak nor its AF is
     missed between the given speeds (the returned ``speeds_hz`` include the added ones).
+    ``check_stability``: also the largest real part of the linear system's eigenvalues at every
+    speed (``max_real_1_per_s``; above the threshold of instability there is no steady
+    unbalance response, and ``stable`` says so); default: when the system has bearing
+    elements (a rotor on symmetric supports cannot lose stability).
     """
     if refine:
         kw = dict(stations=stations, chamber_pressure_pa=chamber_pressure_pa,
                   config_ay_m=config_ay_m, operating_speed_hz=operating_speed_hz,
-                  method=method, refine=False)
+                  method=method, refine=False, check_stability=check_stability)
         u = unbalance_response(system, unbalances, speeds_hz, **kw)
         for _ in range(REFINE_LEVELS):
             sp = u.speeds_hz
@@ -92,6 +99,8 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
         if not 0 < lo:
             raise InputError("operating_speed_hz: expected (min, max) with 0 < min <= max")
         operating_speed_hz = (lo, hi)
+    check = bool(system.bearings) if check_stability is None else \
+        v.boolean("check_stability", check_stability)
     asm = assembled(system)
     outs = tuple(stations) if stations is not None else tuple(dict.fromkeys(s for s, _, _ in ub))
     Cout = [asm.station_output_matrix(s) for s in outs]
@@ -99,6 +108,7 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     X = np.full((sp.size, len(outs)), np.nan + 0j)
     Y = np.full((sp.size, len(outs)), np.nan + 0j)
     status = np.empty(sp.size, dtype=object)
+    max_real = np.full(sp.size, np.nan) if check else None
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
                                               method, continue_on=CONVERGED):
         status[i] = stt
@@ -109,4 +119,9 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
         q = np.asarray(_core.harmonic_response(lm.M, lm.D, lm.K, w, (w**2 * F1)[:, None]))[:, 0]
         for k, Co in enumerate(Cout):
             X[i, k], Y[i, k] = Co @ q
-    return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub), operating_speed_hz)
+        if check:
+            lam = np.asarray(_core.modal(lm.M, lm.D, lm.K, asm.rotor.xy_pairs(), 0, False,
+                                         asm.rotor.rot_pairs()).eigenvalues)
+            max_real[i] = float(np.max(lam.real)) if lam.size else np.nan
+    return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub), operating_speed_hz,
+                           max_real)

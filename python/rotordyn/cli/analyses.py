@@ -40,6 +40,9 @@ def register(sub) -> None:
                    help="number of modes (default: all of a reduced model, 12 of a full one)")
     s.add_argument("--part", choices=["rotor", "sleeve"], default="rotor",
                    help="rotor, or the active bearing's flexible sleeve")
+    s.add_argument("--without-bearings", action="store_true",
+                   help="the rotor on its supports without the model's bearing elements (a model "
+                        "with bearings is refused otherwise: use `rotordyn stability` for its modes)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="also write the mode shapes (full FE model) to FIG.png/.svg")
     s.add_argument("--mode", type=int, default=None, metavar="K",
@@ -153,7 +156,8 @@ def _cmd_modes(args) -> int:
         return sleeve.modes(args)
     check_figure(args.plot)
     s = models.load(args.model)
-    r = analysis.modes(s, args.speed_hz, reduction=args.reduction, n_modes=args.n_modes)
+    r = analysis.modes(s, args.speed_hz, reduction=args.reduction, n_modes=args.n_modes,
+                       without_bearings=args.without_bearings)
     if args.json:
         print(json_text(_modes_payload(r)))
     else:

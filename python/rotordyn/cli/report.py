@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from rotordyn.cli.common import MODEL_HELP, out_dir
+from rotordyn.cli.common import speeds as parse_speeds
 
 
 def register(sub) -> None:
@@ -16,12 +17,17 @@ def register(sub) -> None:
     s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
                    metavar=("MIN", "MAX"),
                    help="operating speed range, Hz, for the API margins in the HTML report "
-                        "(default: 45 55 for paper-rig, none otherwise)")
+                        "(default: 45 55 for paper-rig, none otherwise); the analysed speeds "
+                        "then run to 125 %% of MAX (API 684)")
+    s.add_argument("--speeds-hz", default=None, metavar="SPEC",
+                   help="analysed speeds of the HTML report, Hz: start:stop:step or a list "
+                        "(default: from the operating speeds, see docs)")
     s.set_defaults(func=_cmd_report)
 
 
 def _cmd_report(args) -> int:
     from rotordyn import report  # (matplotlib: only when used)
 
+    speeds = None if args.speeds_hz is None else parse_speeds(args.speeds_hz)
     return report.run(args.model, out_dir("--out", args.out), html=args.html,
-                      operating_speed_hz=args.operating_speed_hz)
+                      operating_speed_hz=args.operating_speed_hz, speeds_hz=speeds)

@@ -15,28 +15,43 @@ def disk_radius_m(disk) -> float:
 
 
 KIND_LABEL = {"rigid": "ball bearing (rigid in x, y)", "linear": "linear support (spring)",
-              "journal": "journal bearing", "active": "active journal bearing"}
+              "journal": "journal bearing", "active_journal": "active journal bearing",
+              "fixed_geometry": "fixed-geometry bearing", "tilting_pad": "tilting-pad bearing",
+              "squeeze_film_damper": "squeeze-film damper", "table": "bearing coefficient table"}
+
+
+def _bearing_label(kind: str, b) -> str:
+    """What the drawing says of a bearing element: its kind and its main dimensions."""
+    lab = KIND_LABEL[kind]
+    if kind == "table":
+        return f"{lab} ({len(b.speeds_hz)} speeds)"
+    extra = f", {b.n_pads} pads" if kind == "tilting_pad" else (
+        f", {b.kind.replace('_', ' ')}" if kind == "fixed_geometry" else "")
+    return f"{lab} (D = {b.diameter_m * 1e3:g} mm, c = {b.clearance_m * 1e6:g} µm{extra})"
 
 
 def support_items(system):
-    """[(station, label, kind)] of the supports and fluid-film bearings."""
-    from rotordyn.bearings import ActiveJournalBearing
+    """[(station, label, kind)] of the supports and bearings, kind a support type or a TOML
+    ``[[bearing]] type``."""
+    from rotordyn.bearings import BEARING_TYPES
 
+    kinds = {cls: name for name, cls in BEARING_TYPES.items()}
     out = []
     for s in system.supports:
         lab = "ball bearing (rigid in x, y)" if s.type == "rigid" else \
             f"linear support (k = {max(s.kxx_n_per_m, s.kyy_n_per_m):.3g} N/m)"
         out.append((s.station, s.name or lab, s.type))
     for b in system.bearings:
-        kind = "active" if isinstance(b, ActiveJournalBearing) else "journal"
-        lab = ("active journal bearing" if kind == "active" else "journal bearing") + \
-            f" (D = {b.diameter_m * 1e3:g} mm, c = {b.clearance_m * 1e6:g} µm)"
-        out.append((b.station, b.name or lab, kind))
+        kind = kinds[type(b)]
+        lab = _bearing_label(kind, b)
+        out.append((b.station, f"{b.name}: {lab}" if b.name else lab, kind))
     return out
 
 
 SUPPORT_STYLE = {"rigid": ("^", "tab:blue"), "linear": ("^", "tab:green"),
-                 "journal": ("s", "tab:orange"), "active": ("D", "tab:red")}
+                 "journal": ("s", "tab:orange"), "active_journal": ("D", "tab:red"),
+                 "fixed_geometry": ("s", "tab:brown"), "tilting_pad": ("p", "tab:purple"),
+                 "squeeze_film_damper": ("o", "tab:cyan"), "table": ("X", "tab:olive")}
 
 
 @paper_style

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from rotordyn._common.api import af_text
 from rotordyn.plot._style import COLUMN_IN, PAGE_IN, hz_rpm_axis, paper_style, require
 
 
@@ -49,12 +50,13 @@ def bode(result, station=None, axes=None, annotate: bool = True):
             a1.axvline(nc, color="0.3", lw=0.6, ls=":")
             if np.isfinite(row["n1_hz"]) and np.isfinite(row["n2_hz"]):
                 a1.axvspan(row["n1_hz"], row["n2_hz"], color="tab:purple", alpha=0.15, lw=0)
-            txt = f"N_c = {nc:.1f} Hz, " + (f"AF = {af:.2g}" if np.isfinite(af) else
-                                            "AF: no half-power points")
+            txt = f"N_c = {nc:.1f} Hz, " + af_text(af, row["af_kind"])
             if "separation_margin_pct" in row and np.isfinite(row.get("required_margin_pct",
                                                                       np.nan)):
                 sm, req = row["separation_margin_pct"], row["required_margin_pct"]
-                txt += f"\nSM = {sm:.0f} % (API ≥ {req:.0f} %: {'pass' if sm >= req else 'FAIL'})"
+                txt += (f"\nSM = {sm:.0f} % (API ≥ {req:.0f} %: "
+                        f"{'pass' if sm >= req else 'FAIL'})" if req > 0 else
+                        "\nno margin required (AF < 2.5)")
             # boxes stacked in the free band above the curves, arrows to the peaks
             ty = top * (1.55 - 0.2 * (n % 3))
             tx = min(max(nc + 0.02 * xr, sp[0]), sp[-1] - 0.3 * xr)

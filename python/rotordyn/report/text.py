@@ -52,7 +52,8 @@ def _fmt_row(cells, widths):
     return " ".join(f"{c:>{w}}" for c, w in zip(cells, widths))
 
 
-def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) -> int:
+def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
+        speeds_hz=None) -> int:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -68,12 +69,16 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) 
 
     # 1. rotor modes, full vs condensed
     method = s.reduction.method
-    r = analysis.modes(s, 0.0, reduction=method, n_modes=None if method != "none" else 6)
+    r = analysis.modes(s, 0.0, reduction=method, n_modes=None if method != "none" else 6,
+                       without_bearings=True)
     full = r.full if r.full is not None else r
     say(f"{s.name or model}: rotor {s.rotor.length_m:.3f} m, {s.mass_kg:.3f} kg, "
         f"{s.rotor.n_elements} elements, "
         + (f"masters at stations {list(s.reduction.master_stations)} ({r.model})"
            if method != "none" else "full model (no reduction)"))
+    say("rotor modes at rest on its supports" + (", without the bearing elements (their films "
+                                                  "depend on the operating point)"
+                                                  if s.bearings else ""))
     w = (4, 11, 15, 8, 11, 18)
     say(_fmt_row(["mode", "full (Hz)", "condensed (Hz)", "error",
                   "paper (Hz)" if paper else "", "check" if paper else ""], w))
@@ -161,7 +166,8 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None) 
     if html:
         from rotordyn.report.html import write_html
 
-        write_html(model, html, text_lines=lines, operating_speed_hz=operating_speed_hz)
+        write_html(model, html, text_lines=lines, operating_speed_hz=operating_speed_hz,
+                   speeds_hz=speeds_hz)
         print(f"wrote {html}", file=sys.stderr)
     print(f"wrote {outdir}/report.txt and tables/figures", file=sys.stderr)
     return 0

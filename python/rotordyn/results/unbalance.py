@@ -9,21 +9,20 @@ import numpy as np
 import pandas as pd
 
 
-def api_required_margin(af: float, below_operating: bool) -> float:
-    """Separation margin required by API 617/684 for a critical speed with amplification factor
-    ``af``: none below AF 2.5 (or for an unknown, NaN, AF); otherwise 17 (1 − 1/(AF − 1.5)) %
-    below the operating range (at most 16 %) and 10 + 17 (1 − 1/(AF − 1.5)) % above it (at
-    most 26 %); an infinite AF (half-power points not found) gets the largest margins."""
-    if np.isnan(af) or af < 2.5:  # an unresolved (infinite) AF needs the largest margin
-        return 0.0
-    base = 17.0 * (1.0 - 1.0 / (af - 1.5))
-    return min(16.0, base) if below_operating else min(26.0, 10.0 + base)
+from rotordyn._common.api import (  # noqa: F401 - the criteria of the peaks
+    API_CRITICALLY_DAMPED_AF, af_text, amplification_factor, api_required_margin)
+
+PEAK_COLUMNS = ("station", "critical_speed_hz", "peak_m", "n1_hz", "n2_hz",
+                "amplification_factor", "af_kind", "critically_damped")
+"""The columns of :meth:`UnbalanceResult.peaks` (plus ``separation_margin_pct`` and
+``required_margin_pct`` when operating speeds are known), also when there is no peak."""
 
 
 @dataclass(frozen=True)
 class UnbalanceResult:
     """x, y: (n_speeds, n_stations) complex amplitudes (m) of x = Re(X e^{iΩt}) at the output
-    stations; speeds_hz (n_speeds,); point_status (n_speeds,)."""
+    stations; speeds_hz (n_speeds,); point_status (n_speeds,); max_real_1_per_s (n_speeds,)
+    the linear system's largest Re λ at each speed, or None when not checked (``stable``)."""
 
     speeds_hz: np.ndarray
     stations: tuple
@@ -32,6 +31,17 @@ class UnbalanceResult:
     point_status: np.ndarray
     unbalances: tuple
     operating_speed_hz: tuple | None = None
+    max_real_1_per_s: np.ndarray | None = None
+
+    @property
+    def stable(self) -> np.ndarray:
+        """(n_speeds,) bool: the equilibrium is linearly stable (Re λ below the round-off band
+        of 1e-9 |λ|), so the unbalance response is a steady orbit; all True when not checked.
+        Above the threshold of instability the computed response is the forced part of a
+        motion that grows: it is not what the machine shows."""
+        if self.max_real_1_per_s is None:
+            return np.ones(len(self.speeds_hz), dtype=bool)
+        return ~(self.max_real_1_per_s > 1e-9)
 
     def __repr__(self) -> str:
         a = self.major_m
@@ -41,9 +51,12 @@ class UnbalanceResult:
             pk = (f"; largest orbit {a[i, k] * 1e6:.4g} µm at station {self.stations[k]}, "
                   f"{self.speeds_hz[i]:.4g} Hz")
         bad = int(np.sum(self.point_status != "ok"))
+        uns = int(np.sum(~self.stable))
         return (f"<UnbalanceResult {len(self.speeds_hz)} speeds {self.speeds_hz[0]:g}–"
                 f"{self.speeds_hz[-1]:g} Hz, stations {list(self.stations)}{pk}"
-                + (f"; {bad} speeds not ok" if bad else "") + ">")
+                + (f"; {bad} speeds not ok" if bad else "")
+                + (f"; {uns} speeds above the threshold of instability (no steady response)"
+                   if uns else "") + ">")
 
     @property
     def forward_m(self) -> np.ndarray:
@@ -80,14 +93,17 @@ class UnbalanceResult:
             "minor_m": self.minor_m.ravel(),
             "whirl": pd.Categorical(whirl.ravel(),
                                     categories=["forward", "backward", "planar"]),
+            "point_stable": np.repeat(self.stable, nk),
             "status": pd.Categorical(np.repeat(self.point_status, nk)),
         })
 
     def peaks(self, station: int | None = None, *, amplitude: str = "major") -> pd.DataFrame:
         """Resonance peaks of the response at ``station`` (default: the first output station):
         critical speed (parabolic peak), amplification factor AF = N_c / (N_2 − N_1) by the
-        half-power method (API 684), and, when operating speeds are known, the separation
-        margin and the margin API 617/684 requires."""
+        half-power method (API 684; :func:`amplification_factor` for ``af_kind``), whether it is
+        critically damped (AF < 2.5), and, when operating speeds are known, the separation
+        margin and the margin API 617/684 requires (NaN: the AF is not resolved, so the margin
+        cannot be judged). Columns :data:`PEAK_COLUMNS` even when there is no peak."""
         k = 0 if station is None else list(self.stations).index(station)
         a = {"major": self.major_m, "x": np.abs(self.x), "y": np.abs(self.y)}[amplitude][:, k]
         s = self.speeds_hz
@@ -111,9 +127,10 @@ class UnbalanceResult:
             while j < len(s) - 1 and a[j] > half:
                 j += 1
             n2 = np.nan if a[j] > half else s[j - 1] + (a[j - 1] - half) * (s[j] - s[j - 1]) / (a[j - 1] - a[j])
-            af = nc / (n2 - n1) if np.isfinite(n1) and np.isfinite(n2) and n2 > n1 else np.inf
+            af, kind = amplification_factor(nc, n1, n2, s[0], s[-1])
             row = {"station": int(self.stations[k]), "critical_speed_hz": nc, "peak_m": peak,
-                   "n1_hz": n1, "n2_hz": n2, "amplification_factor": af}
+                   "n1_hz": n1, "n2_hz": n2, "amplification_factor": af, "af_kind": kind,
+                   "critically_damped": bool(af < API_CRITICALLY_DAMPED_AF)}
             if self.operating_speed_hz is not None:
                 lo, hi = self.operating_speed_hz
                 below = nc < lo
@@ -122,7 +139,9 @@ class UnbalanceResult:
                                                 if not lo <= nc <= hi else 0.0)
                 row["required_margin_pct"] = api_required_margin(af, below)
             rows.append(row)
-        return pd.DataFrame(rows)
+        cols = list(PEAK_COLUMNS) + (["separation_margin_pct", "required_margin_pct"]
+                                     if self.operating_speed_hz is not None else [])
+        return pd.DataFrame(rows, columns=cols)
 
     def plot(self, station: int | None = None, axes=None, kind: str = "bode", *,
              speed_hz: float | None = None, system=None):

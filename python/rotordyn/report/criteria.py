@@ -1,0 +1,231 @@
+"""What the report computes for any model, apart from its layout: the speed range (API 684:
+0 to at least 125 % of the maximum continuous speed), the API unbalance and where it is placed,
+the undamped critical speed map, and the checks with their criteria and verdicts (PASS/FAIL only
+where a criterion applies, "not resolved" where a value cannot be computed).
+
+Sources: API 684 2nd ed. (2005) §2.8 (speed range, unbalance U = 6350 W/N g·mm, AF and the
+separation margins: :mod:`rotordyn._common.api`), API 617 8th ed. (2014) §4.8.2.11–12 (the
+amplitude limit and the 75 % of clearance check)."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from rotordyn import analysis
+from rotordyn._common.api import API_CRITICALLY_DAMPED_AF, af_text
+from rotordyn.model.rotor import Reduction, Support
+
+API_SPEED_FACTOR = 1.25        # API 684: analyse from 0 to at least 125 % of N_mc
+API_UNBALANCE_G_MM = 6350.0    # API 684/617: U = 6350 W / N g·mm (W kg, N rpm)
+API_CLEARANCE_FRACTION = 0.75  # API 617: peak-to-peak ≤ 75 % of the diametral clearance
+SCREEN_LOG_DEC = 0.1           # screening: forward rotor modes in the window δ > 0.1
+LOG_DEC_ROUND_OFF = 1e-6       # |δ| below this is round-off of an undamped mode, not a sign
+N_SPEEDS = 121                 # grid of the Campbell diagram and the unbalance response
+
+NOT_RESOLVED = "not resolved"
+
+
+def amplitude_limit_um(n_mc_rpm: float) -> float:
+    """API 617 unbalance response amplitude limit, peak-to-peak µm: 25.4 √(12000/N_mc), and
+    not more than 25.4 µm (the formula is capped below 12000 rpm)."""
+    return float(min(25.4, 25.4 * np.sqrt(12000.0 / n_mc_rpm)))
+
+
+def critical_speed_map(system, k_range=(1e5, 1e10), n_k=21, n_modes=4):
+    """Undamped natural frequencies (Hz, at rest) against an isotropic stiffness k (N/m) put
+    in place of each bearing element (or of each linear support when there are none), x/y
+    duplicates removed. Returns (k (n_k,), f (n_k, n_modes), stations)."""
+    stations = [b.station for b in system.bearings] or [s.station for s in system.supports
+                                                        if s.type == "linear"]
+    base = tuple(s for s in system.supports if s.station not in stations)
+    ks = np.geomspace(*k_range, n_k)
+    f = np.full((n_k, n_modes), np.nan)
+    for i, k in enumerate(ks):
+        sup = base + tuple(Support(st, "linear", kxx_n_per_m=k, kyy_n_per_m=k)
+                           for st in stations)
+        s = dataclasses.replace(system, supports=sup, bearings=(),
+                                reduction=Reduction(method="none"))
+        m = analysis.modes(s, 0.0, reduction="none", n_modes=2 * n_modes)
+        fr = _distinct(m.frequencies_hz)[:n_modes]
+        f[i, :fr.size] = fr
+    return ks, f, stations
+
+
+def _distinct(freqs, rtol: float = 1e-6) -> np.ndarray:
+    """Frequencies with the (x, y) pairs of an axisymmetric rotor at rest counted once."""
+    out: list[float] = []
+    for x in np.sort(np.asarray(freqs, dtype=float)):
+        if np.isfinite(x) and x > 0 and (not out or x > out[-1] * (1 + rtol)):
+            out.append(float(x))
+    return np.asarray(out)
+
+
+@dataclasses.dataclass(frozen=True)
+class SpeedRange:
+    """speeds_hz (n,), the maximum continuous speed N_mc (Hz) the API checks use, and how
+    both were chosen (stated in the report)."""
+
+    speeds_hz: np.ndarray
+    n_mc_hz: float
+    why: str
+
+
+def speed_range(system, operating_speed_hz=None, speeds_hz=None, rigid_map=None,
+                paper: bool = False) -> SpeedRange:
+    """The report's speeds: ``speeds_hz`` when given; else 2 %…125 % of the maximum operating
+    speed (API 684); else, for the paper's rig, its 5–120 Hz; else up to 125 % of the second
+    undamped critical speed on stiff bearings (``rigid_map`` from :func:`critical_speed_map`),
+    so the first two criticals are in range."""
+    if speeds_hz is not None:
+        sp = np.asarray(speeds_hz, dtype=float)
+        top = float(operating_speed_hz[1]) if operating_speed_hz else float(sp[-1]) / 1.25
+        return SpeedRange(sp, top, "as given (--speeds-hz)")
+    if operating_speed_hz:
+        top = float(operating_speed_hz[1])
+        hi = API_SPEED_FACTOR * top
+        return SpeedRange(np.linspace(0.02 * hi, hi, N_SPEEDS), top,
+                          f"2 %…125 % of the maximum operating speed {top:g} Hz (API 684)")
+    if paper:
+        return SpeedRange(np.arange(5.0, 121.0, 1.0), 55.0, "the paper's 5–120 Hz")
+    ks, f, _ = rigid_map if rigid_map is not None else critical_speed_map(system)
+    second = f[-1, min(1, f.shape[1] - 1)]
+    top = float(second) if np.isfinite(second) else float(np.nanmax(f))
+    hi = API_SPEED_FACTOR * top
+    return SpeedRange(np.linspace(0.02 * hi, hi, N_SPEEDS), top,
+                      f"no operating speed given: up to 125 % of the second undamped critical "
+                      f"speed on stiff bearings ({top:.4g} Hz); margins not assessed")
+
+
+def api_unbalance(system, n_mc_hz: float, speed_hz: float, pc: float, ay):
+    """(station, U kg·m, why): the API unbalance U = 6350 W/N g·mm for the first forward rotor
+    mode, W the rotor's whole static load (the journals' loads summed, as API 684 takes for a
+    mode with its largest deflection between the bearings), placed at the station of that
+    mode's largest deflection at ``speed_hz``; the largest disk when no mode is found."""
+    u_kgm = API_UNBALANCE_G_MM * system.mass_kg / (60.0 * n_mc_hz) * 1e-6
+    try:
+        st = analysis.stability(system, speed_hz, pc, ay)
+    except Exception:  # noqa: BLE001 - the placement falls back to the largest disk
+        st = None
+    if st is not None and st.rotor_shapes is not None and len(st.eigenvalues):
+        fwd = [j for j in range(len(st.eigenvalues)) if st.whirl[j] == "forward"
+               and st.kind[j] == "rotor" and st.eigenvalues[j].imag > 0]
+        if fwd:
+            j = fwd[0]
+            nodes = system.rotor.station_nodes()
+            amp = np.abs(st.rotor_shapes[nodes, 0, j]) + np.abs(st.rotor_shapes[nodes, 1, j])
+            k = int(np.argmax(amp))
+            return k, u_kgm, (f"at station {k}, the largest deflection of the first forward "
+                              f"mode ({st.frequencies_hz[j]:.4g} Hz at {speed_hz:.4g} Hz)")
+    disk = max(system.rotor.disks, key=lambda d: d.mass_kg) if system.rotor.disks else None
+    k = disk.station if disk else system.rotor.n_stations // 2
+    return k, u_kgm, f"at station {k} (the largest disk)"
+
+
+class Checks:
+    """The checks: name, criterion, value, verdict (True PASS, False FAIL, None no criterion
+    applies, NOT_RESOLVED a value that cannot be computed)."""
+
+    def __init__(self):
+        self.rows: list[tuple[str, str, str, object]] = []
+
+    def add(self, name: str, criterion: str, value: str, verdict) -> None:
+        self.rows.append((name, criterion, value, verdict))
+
+    def overall(self) -> str:
+        """FAIL if any check fails, else NOT RESOLVED if any is, else PASS."""
+        vs = [r[3] for r in self.rows]
+        if any(x is False for x in vs):
+            return "FAIL"
+        if any(x == NOT_RESOLVED for x in vs):
+            return "NOT RESOLVED"
+        return "PASS"
+
+
+def separation_checks(checks: Checks, u, station: int) -> list[tuple]:
+    """Rows of the peaks table at ``station`` and their separation-margin checks."""
+    rows = []
+    for r in u.peaks(station).to_dict("records"):
+        af, kind = r["amplification_factor"], r["af_kind"]
+        req = r.get("required_margin_pct", np.nan)
+        sm = r.get("separation_margin_pct", np.nan)
+        if u.operating_speed_hz is None:
+            verdict = None
+        elif kind == "unresolved":
+            verdict = NOT_RESOLVED
+        else:
+            verdict = bool(sm >= req)
+        rows.append((r["critical_speed_hz"], r["peak_m"], af_text(af, kind), sm, req, verdict))
+        if u.operating_speed_hz is not None:
+            crit = ("API 684: AF < 2.5 critically damped, no margin; else SM ≥ 17(1 − 1/(AF − "
+                    "1.5)) % (≤ 16 %) below / 10 + that (≤ 26 %) above the operating range")
+            val = (f"{af_text(af, kind)}, SM {sm:.1f} %, required "
+                   + ("none" if req == 0 else f"{req:.1f} %" if np.isfinite(req) else
+                      "not known (extend the speed range)"))
+            checks.add(f"separation margin, N_c = {r['critical_speed_hz']:.4g} Hz (station "
+                       f"{station})", crit, val, verdict)
+    return rows
+
+
+def amplitude_checks(checks: Checks, u, station: int, n_mc_hz: float, clearance_m=None):
+    """The API 617 amplitude limit in the operating range and, at a bearing (``clearance_m``),
+    the peak-to-peak orbit against 75 % of the diametral clearance over the whole range."""
+    k = list(u.stations).index(station)
+    a = 2 * u.major_m[:, k]  # peak-to-peak of the orbit's major axis, m
+    ok_pts = np.isfinite(a) & u.stable
+    if u.operating_speed_hz is not None:
+        lo, hi = u.operating_speed_hz
+        inr = (u.speeds_hz >= lo) & (u.speeds_hz <= hi) & ok_pts
+        lim = amplitude_limit_um(60.0 * n_mc_hz)
+        if inr.any():
+            pp = float(np.max(a[inr])) * 1e6
+            checks.add(f"vibration amplitude in the operating range (station {station})",
+                       "API 617: peak-to-peak ≤ 25.4 √(12000/N_mc) µm, at most 25.4 µm",
+                       f"{pp:.3g} µm (limit {lim:.3g} µm)", bool(pp <= lim))
+        else:
+            checks.add(f"vibration amplitude in the operating range (station {station})",
+                       "API 617 amplitude limit", "no stable, converged speed in the range",
+                       NOT_RESOLVED)
+    if clearance_m:
+        if ok_pts.any():
+            pp = float(np.max(a[ok_pts]))
+            lim = API_CLEARANCE_FRACTION * 2 * clearance_m
+            checks.add(f"orbit against the bearing clearance (station {station})",
+                       "API 617: peak-to-peak ≤ 75 % of the diametral clearance at any speed",
+                       f"{pp * 1e6:.3g} µm (limit {lim * 1e6:.3g} µm)", bool(pp <= lim))
+
+
+def stability_screen(checks: Checks, c, window_hz: float, op_range) -> np.ndarray:
+    """Forward rotor modes below ``window_hz``: their log decrement (round-off of undamped
+    modes set to 0). Checks: δ > 0.1 in the operating range (a screening; API 617 Level I also
+    applies the anticipated cross-coupling Q_A, not computed here) and no growing forward mode
+    over the whole range. Returns the screened δ (n_speeds, n_modes), NaN elsewhere."""
+    ld = np.where(c.rotor_mask() & (c.whirl == 1) & (c.frequencies_hz < window_hz)
+                  & (c.frequencies_hz > 0), c.log_dec, np.nan)
+    ld = np.where(np.abs(ld) < LOG_DEC_ROUND_OFF, 0.0, ld)
+    if op_range is not None:
+        inr = (c.speeds_hz >= op_range[0]) & (c.speeds_hz <= op_range[1])
+        sub = ld[inr]
+        if np.isfinite(sub).any():
+            m = float(np.nanmin(sub))
+            checks.add("stability screening in the operating range", f"forward rotor modes "
+                       f"below {window_hz:.4g} Hz: δ > {SCREEN_LOG_DEC} (API 617 Level I also "
+                       "applies the anticipated cross-coupling Q_A: not computed here)",
+                       f"minimum δ = {m:.3g}", bool(m > SCREEN_LOG_DEC))
+        else:
+            checks.add("stability screening in the operating range", "forward rotor modes "
+                       f"δ > {SCREEN_LOG_DEC}", "no converged point in the range", NOT_RESOLVED)
+    if np.isfinite(ld).any():
+        m = float(np.nanmin(ld))
+        checks.add("no growing forward mode over the speed range", f"forward rotor modes below "
+                   f"{window_hz:.4g} Hz: δ ≥ 0", f"minimum δ = {m:.3g}", bool(m >= 0))
+    else:
+        checks.add("no growing forward mode over the speed range", "δ ≥ 0",
+                   "no converged point", NOT_RESOLVED)
+    return ld
+
+
+__all__ = ["API_CRITICALLY_DAMPED_AF", "Checks", "NOT_RESOLVED", "SpeedRange", "amplitude_checks",
+           "amplitude_limit_um", "api_unbalance", "critical_speed_map", "separation_checks",
+           "speed_range", "stability_screen"]
