@@ -62,6 +62,7 @@ def register(sub) -> None:
     s = sub.add_parser("stability", help="eigenvalues of the linearised system (eq. 19)")
     s.add_argument("model", help=MODEL_HELP)
     add_operating_point(s)
+    _add_mode_window(s)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_stability)
 
@@ -76,6 +77,7 @@ def register(sub) -> None:
                    help="report backward-whirl crossings too (default: forward only)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="also write the Campbell diagram to FIG.png or FIG.svg")
+    _add_mode_window(s, n_default=None)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_campbell)
 
@@ -198,17 +200,50 @@ def _cmd_equilibrium(args) -> int:
     return 0 if e.converged else 1
 
 
+MODE_TABLE_ROWS = 12  # modes a table shows without --n-modes / --max-freq-hz
+
+
+def _add_mode_window(s, n_default: int | None = None) -> None:
+    s.add_argument("--n-modes", type=int, default=n_default, metavar="N",
+                   help="the N lowest modes (table default: the first 12 shown, all in --json)")
+    s.add_argument("--max-freq-hz", type=float, default=None, metavar="HZ",
+                   help="only modes whose damped frequency is at most HZ (a frequency window)")
+
+
+def _window(freqs, args, table: bool) -> np.ndarray:
+    """Indices of the modes in the window of --n-modes / --max-freq-hz (a table without
+    either shows the first MODE_TABLE_ROWS)."""
+    keep = np.arange(len(freqs))
+    if args.max_freq_hz is not None:
+        if not args.max_freq_hz > 0:
+            raise InputError(f"--max-freq-hz: expected a frequency > 0 Hz, got "
+                             f"{args.max_freq_hz!r}")
+        keep = keep[np.asarray(freqs)[keep] <= args.max_freq_hz]
+    if args.n_modes is None and args.max_freq_hz is None and table:
+        keep = keep[:MODE_TABLE_ROWS]
+    return keep
+
+
 def _cmd_stability(args) -> int:
     s = models.load(args.model)
-    st = analysis.stability(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m)
+    st = analysis.stability(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
+                            n_modes=args.n_modes)
+    df = st.to_frame()
+    keep = _window(st.frequencies_hz, args, table=not args.json)
     if args.json:
+        cols = ["mode", "freq_hz", "eig_real_1_per_s", "damping_ratio", "log_dec",
+                "mode_stable"]
         print(json_text({"status": st.status, "message": st.message, "stable": st.stable,
-                     "speed_hz": st.speed_hz, "max_real_1_per_s": st.max_real_1_per_s,
-                     "modes": st.to_frame()[["mode", "freq_hz", "eig_real_1_per_s",
-                                             "damping_ratio", "log_dec"]].to_dict("list")
-                     | {"whirl": list(st.whirl), "kind": list(st.kind)}}))
+                         "speed_hz": st.speed_hz, "max_real_1_per_s": st.max_real_1_per_s,
+                         "modes": df.iloc[keep][cols].to_dict("list")
+                         | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])}}))
     else:
-        print(st.to_frame().to_string(index=False))
+        print(df.iloc[keep].to_string(index=False))
+        if len(keep) < len(df):
+            print(f"({len(keep)} of {len(df)} modes shown; --n-modes N or --max-freq-hz HZ for "
+                  "others; the least damped mode and the verdict cover all)", file=sys.stderr)
+        print(f"{'stable' if st.stable else 'UNSTABLE'}: largest Re λ = "
+              f"{st.max_real_1_per_s:.4g} 1/s", file=sys.stderr)
     if st.status not in CONVERGED:  # a failed equilibrium: no eigenvalues, exit 1
         print(f"rotordyn: failed: {st.status}: {st.message}", file=sys.stderr)
         return 1
@@ -220,9 +255,11 @@ def _cmd_campbell(args) -> int:
     speeds = parse_speeds(args.speeds_hz)
     s = models.load(args.model)
     if s.bearings:
-        c = analysis.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m)
+        c = analysis.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m,
+                              n_modes=args.n_modes)
     else:
-        c = analysis.rotor_campbell(s, speeds)
+        c = analysis.rotor_campbell(s, speeds, **({} if args.n_modes is None
+                                                  else {"n_modes": args.n_modes}))
     crit = c.critical_speeds(harmonic=args.harmonic, whirl=None if args.all_whirl else "forward")
     if args.json:
         print(json_text({"critical_speeds_hz": crit["speed_hz"].to_numpy(),
@@ -233,7 +270,10 @@ def _cmd_campbell(args) -> int:
     else:
         print(crit.to_string(index=False))
     if args.plot:
-        save_figure(c.plot(), args.plot)
+        ax = c.plot()
+        if args.max_freq_hz is not None:
+            ax.set_ylim(0, args.max_freq_hz)
+        save_figure(ax, args.plot)
     return 0
 
 

@@ -6,6 +6,7 @@ import argparse
 import sys
 
 from rotordyn.cli.common import figure_path
+from rotordyn.errors import InputError
 
 
 def register(sub) -> None:
@@ -37,6 +38,10 @@ def register(sub) -> None:
                    help="waterfall: amplitude scale")
     s.add_argument("--axis", choices=["x", "y"], default="x",
                    help="waterfall: journal motion component")
+    s.add_argument("--where", action="append", default=[], metavar="AXIS=VALUE",
+                   help="fix an axis of the sweep at its grid value nearest VALUE (SI), e.g. "
+                        "--where bearing[0].clearance_m=1e-4; repeatable (a third varying axis "
+                        "is refused, never averaged)")
     s.set_defaults(func=_cmd_plot)
 
 
@@ -68,6 +73,21 @@ def _cmd_plot(args) -> int:
     figure_path("--out", args.out)
     kw = ({"style": args.style, "scale": args.scale, "axis": args.axis}
           if args.kind == "waterfall" else {})
+    kw["where"] = _where(args.where)
     plot_dataset(read_dataset(args.dir), args.kind, args.out, **kw)
     print(f"wrote {args.out}", file=sys.stderr)
     return 0
+
+
+def _where(items) -> dict:
+    """``["AXIS=VALUE", ...]`` → {axis: value}; InputError naming the flag otherwise."""
+    out = {}
+    for text in items:
+        axis, sep, val = text.partition("=")
+        try:
+            out[axis.strip()] = float(val)
+        except ValueError:
+            sep = ""
+        if not sep or not axis.strip():
+            raise InputError(f"--where: expected AXIS=VALUE (a number, SI), got {text!r}")
+    return out

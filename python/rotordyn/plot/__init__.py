@@ -16,12 +16,12 @@ from rotordyn.plot.cascade import runup_spectra, waterfall
 from rotordyn.plot.dataset import KINDS, campbell, plot_dataset
 from rotordyn.plot.drawing import rotor_drawing
 from rotordyn.plot.frequency import campbell_arrays, campbell_diagram
-from rotordyn.plot.maps import (AXIS_LABEL, AXIS_SCALE, boundary_curve, equilibrium_loci,
+from rotordyn.plot.maps import (AXIS_LABEL, AXIS_SCALE, axis_label, boundary_curve, equilibrium_loci,
                                 stability_map, stability_map_grid)
 from rotordyn.plot.response import bode, polar
 from rotordyn.plot.shapes import deflected_shape, mode_shape, mode_shapes_2d, orbits_3d
 
-__all__ = ["KINDS", "AXIS_LABEL", "AXIS_SCALE", "COLUMN_IN", "PAGE_IN", "RC", "plot_dataset",
+__all__ = ["KINDS", "AXIS_LABEL", "AXIS_SCALE", "axis_label", "COLUMN_IN", "PAGE_IN", "RC", "plot_dataset",
            "stability_map", "stability_map_grid", "equilibrium_loci", "boundary_curve",
            "campbell", "campbell_arrays", "campbell_diagram", "waterfall", "runup_spectra",
            "bode", "polar", "rotor_drawing", "mode_shape", "mode_shapes_2d", "orbits_3d",

@@ -9,27 +9,29 @@ import pandas as pd
 from rotordyn.plot._style import require
 from rotordyn.plot.cascade import waterfall
 from rotordyn.plot.frequency import campbell_arrays
-from rotordyn.plot.maps import equilibrium_loci, stability_map
+from rotordyn.plot.maps import equilibrium_loci, select, stability_map, varying
 
 KINDS = ("stability-map", "equilibrium", "campbell", "waterfall")
 WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
 
 
-def campbell(df: pd.DataFrame, ax=None, rotor_only: bool = True):
+def campbell(df: pd.DataFrame, ax=None, rotor_only: bool = True, where=None):
     """Campbell diagram from a stability sweep over speed (modes by their ``mode_id`` when
-    tracked, else by their slot), coloured by log decrement."""
+    tracked, else by their slot), coloured by log decrement. Any other varying axis must be
+    fixed with ``where`` = {axis: value}: it is never averaged over."""
     require({"freq_hz", "log_dec", "whirl"} <= set(df.columns),
             "campbell: the dataset has no modes (freq_hz, log_dec, whirl); run a stability "
             "sweep over speed_hz")
+    df = select(df, where, "campbell")
+    others = [c for c in varying(df) if c != "speed_hz"]
+    require(not others, f"campbell: expected speed_hz as the only varying axis, also varying: "
+                        f"{others}; fix them with where={{axis: value}} (CLI: --where AXIS=VALUE)")
     d = df[df["status"] == "ok"]
     if rotor_only and "kind" in d:
         d = d[d["kind"] == "rotor"]
     speeds = np.sort(d["speed_hz"].unique())
     require(speeds.size >= 2, f"campbell: needs a sweep over 2 or more speeds, got "
                               f"{speeds.size} (a one-speed sweep has no Campbell diagram)")
-    others = [c for c in ("chamber_pressure_pa", "config_ay_m") if c in d and d[c].nunique() > 1]
-    require(not others, f"campbell: expected speed_hz as the only varying input, also varying: "
-                        f"{others}")
     key = "mode_id" if "mode_id" in d else "mode"
     d = d.assign(_w=d["whirl"].astype(str).map(WHIRL_CODE).astype(float))
     piv = {c: d.pivot_table(index="speed_hz", columns=key, values=c).reindex(speeds)
@@ -50,6 +52,11 @@ def plot_dataset(df: pd.DataFrame, kind: str, out: str, **kwargs) -> str:
             f"--out: expected a .png, .svg or .pdf file name, got {out!r}")
     fn = {"stability-map": stability_map, "equilibrium": equilibrium_loci,
           "campbell": campbell, "waterfall": waterfall}[kind]
+    where = kwargs.pop("where", None)
+    if kind == "waterfall":  # its speed axis is the only one drawn: the others fixed first
+        df = select(df, where, "waterfall")
+    else:
+        kwargs["where"] = where
     ax = fn(df, **kwargs)
     ax.figure.savefig(out)
     plt.close(ax.figure)

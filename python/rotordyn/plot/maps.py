@@ -9,18 +9,68 @@ import numpy as np
 import pandas as pd
 
 from rotordyn.plot._style import COLUMN_IN, new_axes, paper_style, require
+from rotordyn.units import SUFFIX_UNITS, unit_of
 
 AXIS_LABEL = {"speed_hz": "rotor speed W (Hz)", "chamber_pressure_pa": "chamber pressure p_c (MPa)",
-              "config_ay_m": "housing offset a_y (mm)"}
-AXIS_SCALE = {"speed_hz": 1.0, "chamber_pressure_pa": 1e-6, "config_ay_m": 1e3}
+              "config_ay_m": "housing offset a_y (mm)", "config_ax_m": "housing offset a_x (mm)"}
+AXIS_SCALE = {"speed_hz": 1.0, "chamber_pressure_pa": 1e-6, "config_ay_m": 1e3,
+              "config_ax_m": 1e3}
 AXIS_SHORT = {"speed_hz": ("W", "Hz"), "chamber_pressure_pa": ("p_c", "MPa"),
-              "config_ay_m": ("a_y", "mm")}
+              "config_ay_m": ("a_y", "mm"), "config_ax_m": ("a_x", "mm")}
+OPERATING = ("config_ay_m", "config_ax_m", "speed_hz", "chamber_pressure_pa")
+# Other axes (model fields such as ``bearing[0].clearance_m``) are drawn in the unit of their
+# suffix, lengths in mm and pressures in MPa as above.
+_DISPLAY = {"m": ("mm", 1e3), "Pa": ("MPa", 1e-6)}
+
+
+def axis_short(name: str) -> tuple[str, str]:
+    """(symbol, unit) of an axis as the figures write it."""
+    if name in AXIS_SHORT:
+        return AXIS_SHORT[name]
+    unit = unit_of(name)
+    stem = name[: -len(next(s for s, u in SUFFIX_UNITS if u == unit))] if unit != "1" else name
+    return stem, _DISPLAY.get(unit, (unit, 1.0))[0]
+
+
+def axis_scale(name: str) -> float:
+    """Factor from the column's SI value to the figure's unit."""
+    if name in AXIS_SCALE:
+        return AXIS_SCALE[name]
+    return _DISPLAY.get(unit_of(name), (None, 1.0))[1]
+
+
+def axis_label(name: str) -> str:
+    """Axis label: the operating variables by name, any other axis by its path and unit."""
+    if name in AXIS_LABEL:
+        return AXIS_LABEL[name]
+    sym, unit = axis_short(name)
+    return f"{sym} ({unit})" if unit != "1" else sym
+
+
+def sweep_axes(df: pd.DataFrame) -> list[str]:
+    """The grid axes of a sweep dataset, outermost first: every ``i_<axis>`` index column (a
+    frame without them: the operating variables present)."""
+    axes = [c[2:] for c in df.columns if c.startswith("i_") and c[2:] in df.columns]
+    return axes or [c for c in OPERATING if c in df]
 
 
 def varying(df: pd.DataFrame) -> list[str]:
-    """The input columns that take more than one value."""
-    return [c for c in ("config_ay_m", "speed_hz", "chamber_pressure_pa")
-            if c in df and df[c].nunique() > 1]
+    """The grid axes that take more than one value."""
+    return [c for c in sweep_axes(df) if df[c].nunique() > 1]
+
+
+def select(df: pd.DataFrame, where: dict | None, what: str) -> pd.DataFrame:
+    """The rows at ``where`` = {axis: value} (the grid value nearest each given value); an
+    InputError names an axis that is not in the dataset."""
+    if not where:
+        return df
+    axes = sweep_axes(df)
+    for a, val in where.items():
+        require(a in axes, f"{what}: --where {a}: not an axis of the dataset (axes: {axes})")
+        vals = np.sort(df[a].unique())
+        near = vals[int(np.argmin(np.abs(vals - float(val))))]
+        df = df[df[a] == near]
+    return df
 
 
 @paper_style
@@ -37,7 +87,7 @@ def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, ti
     require(Z.ndim == 2 and min(Z.shape) >= 2,
             f"stability-map: needs at least 2 values of each varying input, got grid {Z.shape}")
     ax = new_axes(ax, width=COLUMN_IN * 1.25, aspect=0.8)
-    X, Y = np.meshgrid(np.asarray(x) * AXIS_SCALE[xname], np.asarray(y) * AXIS_SCALE[yname],
+    X, Y = np.meshgrid(np.asarray(x) * axis_scale(xname), np.asarray(y) * axis_scale(yname),
                        indexing="ij")
     lo, hi = np.nanmin(Z), np.nanmax(Z)
     lo = min(lo, -1e-9)
@@ -59,12 +109,12 @@ def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, ti
                              label="stable everywhere" if hi <= 1e-9 else "unstable everywhere"))
     if failed is not None and len(failed):
         fp = np.asarray(failed, dtype=float)
-        ax.plot(fp[:, 0] * AXIS_SCALE[xname], fp[:, 1] * AXIS_SCALE[yname], "x", color="0.2",
+        ax.plot(fp[:, 0] * axis_scale(xname), fp[:, 1] * axis_scale(yname), "x", color="0.2",
                 ms=4)
         handles.append(Line2D([], [], ls="", marker="x", color="0.2",
                               label="no equilibrium / contact"))
-    ax.set_xlabel(AXIS_LABEL[xname])
-    ax.set_ylabel(AXIS_LABEL[yname])
+    ax.set_xlabel(axis_label(xname))
+    ax.set_ylabel(axis_label(yname))
     ax.legend(handles=handles, loc="best")
     ax.grid(False)
     if title:
@@ -72,11 +122,16 @@ def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, ti
     return ax
 
 
-def stability_map(df: pd.DataFrame, ax=None, rotor_only: bool = True):
-    """Stability map from a stability sweep dataset (two varying inputs)."""
+def stability_map(df: pd.DataFrame, ax=None, rotor_only: bool = True, where=None):
+    """Stability map from a stability sweep dataset over any two of its axes (operating
+    variables or model fields); a third varying axis must be fixed with ``where`` = {axis:
+    value} (the nearest grid value), never averaged over."""
+    df = select(df, where, "stability-map")
     axes = varying(df)
-    require(len(axes) == 2, f"stability-map: expected a stability sweep with exactly two "
-                            f"varying inputs, got {axes or 'none'}")
+    require(len(axes) == 2, f"stability-map: expected exactly two varying axes, got "
+                            f"{axes or 'none'}" + ("; fix the others with where={axis: value} "
+                                                   "(CLI: --where AXIS=VALUE)"
+                                                   if len(axes) > 2 else ""))
     require("eig_real_1_per_s" in df, "stability-map: the dataset has no eigenvalues "
                                       "(eig_real_1_per_s); run a stability sweep")
     d = df[df["status"] == "ok"]
@@ -90,15 +145,18 @@ def stability_map(df: pd.DataFrame, ax=None, rotor_only: bool = True):
 
 
 @paper_style
-def equilibrium_loci(df: pd.DataFrame, ax=None, bearing: str | None = None):
+def equilibrium_loci(df: pd.DataFrame, ax=None, bearing: str | None = None, where=None):
     """Journal centre x/c against y/c (one curve per value of the outer varying input), with
     the clearance circle; arrows show the direction of the inner input."""
     from matplotlib.lines import Line2D
 
     require("x_over_c" in df, "equilibrium: the dataset has no journal positions (x_over_c); "
                               "run an equilibrium sweep")
+    df = select(df, where, "equilibrium")
     axes = varying(df)
     require(bool(axes), "equilibrium: expected at least one varying input")
+    require(len(axes) <= 2, f"equilibrium: expected one or two varying axes, got {axes}; fix "
+                            "the others with where={axis: value} (CLI: --where AXIS=VALUE)")
     if bearing is None and "bearing" in df:
         bearing = df["bearing"].iloc[0]
     if bearing is not None and "bearing" in df:
@@ -117,8 +175,8 @@ def equilibrium_loci(df: pd.DataFrame, ax=None, bearing: str | None = None):
         col = cmap(i / max(1, len(groups) - 1) * 0.92)
         ok = g[g["status"] == "ok"].sort_values(inner)
         if outer:
-            sym, unit = AXIS_SHORT[outer]
-            lab = f"{sym} = {key * AXIS_SCALE[outer]:g} {unit}"
+            sym, unit = axis_short(outer)
+            lab = f"{sym} = {key * axis_scale(outer):g} {unit}"
         else:
             lab = "equilibrium locus"
         ln, = ax.plot(ok["x_over_c"], ok["y_over_c"], "-", marker=".", ms=3, color=col,
@@ -134,8 +192,8 @@ def equilibrium_loci(df: pd.DataFrame, ax=None, bearing: str | None = None):
         bad = g[g["status"] != "ok"]
         if len(bad):
             ax.plot(bad["x_over_c"], bad["y_over_c"], "x", color=col, ms=4)
-    sym, unit = AXIS_SHORT[inner]
-    lo_in = df[inner].min() * AXIS_SCALE[inner]
+    sym, unit = axis_short(inner)
+    lo_in = df[inner].min() * axis_scale(inner)
     handles.append(Line2D([], [], ls="", marker="o", mfc="white", mec="k", ms=4,
                           label=f"{sym} = {lo_in:g} {unit} (start)"))
     handles.append(Line2D([], [], ls="", marker=r"$\rightarrow$", color="k", ms=8,
@@ -163,8 +221,8 @@ def boundary_curve(result, ax=None):
 
     ax = new_axes(ax, width=COLUMN_IN * 1.2)
     t = result.table[result.table["status"] == "ok"].sort_values(result.along)
-    xs = AXIS_SCALE.get(result.along, 1.0)
-    ys = AXIS_SCALE.get(result.vary, 1.0)
+    xs = axis_scale(result.along)
+    ys = axis_scale(result.vary)
     x, y = t[result.along].to_numpy() * xs, t[result.vary].to_numpy() * ys
     ax.plot(x, y, "ko-", ms=3)
     handles = [Line2D([], [], color="k", marker="o", ms=3, label="threshold of instability")]
@@ -176,7 +234,7 @@ def boundary_curve(result, ax=None):
         ax.set_ylim(y0, y1)
         handles.append(Patch(facecolor="none", edgecolor="k", hatch="////",
                              label=f"unstable (stable {side})"))
-    ax.set_xlabel(AXIS_LABEL.get(result.along, result.along))
-    ax.set_ylabel(AXIS_LABEL.get(result.vary, result.vary))
+    ax.set_xlabel(axis_label(result.along))
+    ax.set_ylabel(axis_label(result.vary))
     ax.legend(handles=handles, loc="best")
     return ax

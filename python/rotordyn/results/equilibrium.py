@@ -99,12 +99,12 @@ class EquilibriumResult:
         return draw(ax)
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per bearing: inputs, journal position (m and /c), film, status."""
+        """One row per bearing: inputs (``chamber_pressure_pa`` with an active bearing only),
+        journal position (m and /c), film, status."""
         nb = len(self.bearing_names)
         df = pd.DataFrame({
             "bearing": self.bearing_names,
             "speed_hz": np.full(nb, self.speed_hz),
-            "chamber_pressure_pa": np.full(nb, self.chamber_pressure_pa),
             "config_ax_m": self.config_ax_m,
             "config_ay_m": self.config_ay_m,
             "journal_x_m": self.journal_x_m,
@@ -120,6 +120,8 @@ class EquilibriumResult:
             "status": pd.Categorical([self.status] * nb, categories=list(STATUSES)),
             "message": [self.message] * nb,
         })
+        if self.sleeve_m:  # an active bearing: the chamber pressure is an input
+            df.insert(2, "chamber_pressure_pa", np.full(nb, self.chamber_pressure_pa))
         for bi, s in self.sleeve_m.items():
             for j, val in enumerate(s):
                 col = f"sleeve_{j + 1}_m"

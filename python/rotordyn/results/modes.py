@@ -17,16 +17,37 @@ def _freq_list(f, whirl=None, n: int = 6) -> str:
     return ", ".join(items) + (", …" if len(f) > n else "")
 
 
+ROUND_OFF_REL = 1e-9
+"""Real parts within ±1e-9 max(|λ|, 1) of zero are round-off of an undamped mode: they count as
+zero damping (log dec 0, ζ 0) and as stable, never as a sign (issue 18: δ = −4e-12 read as
+unstable by a filter on the sign). The C++ sweeps and ``StabilityResult.stable`` use the same
+band."""
+
+
+def settled_real(eigenvalues: np.ndarray) -> np.ndarray:
+    """Re λ with the round-off band (:data:`ROUND_OFF_REL`) set to exactly 0."""
+    lam = np.asarray(eigenvalues)
+    re = lam.real
+    return np.where(np.abs(re) < ROUND_OFF_REL * np.maximum(np.abs(lam), 1.0), 0.0, re)
+
+
+def mode_stable(eigenvalues: np.ndarray) -> np.ndarray:
+    """Per mode: Re λ below the round-off band (an undamped mode is marginally stable)."""
+    return settled_real(eigenvalues) <= 0.0
+
+
 def damping_ratio(eigenvalues: np.ndarray) -> np.ndarray:
-    """ζ = −Re λ / |λ| (0 for λ = 0)."""
+    """ζ = −Re λ / |λ| (0 for λ = 0 and within the round-off band of Re λ = 0)."""
     mag = np.abs(eigenvalues)
-    return np.where(mag > 0, -eigenvalues.real / np.where(mag > 0, mag, 1.0), 0.0)
+    return np.where(mag > 0, -settled_real(eigenvalues) / np.where(mag > 0, mag, 1.0), 0.0)
 
 
 def log_dec(eigenvalues: np.ndarray) -> np.ndarray:
-    """Logarithmic decrement δ = −2π Re λ / Im λ (inf for a non-oscillating root)."""
-    im = eigenvalues.imag
-    return np.where(im > 0, -2 * np.pi * eigenvalues.real / np.where(im > 0, im, 1.0), np.inf)
+    """Logarithmic decrement δ = −2π Re λ / Im λ (inf for a non-oscillating root; 0 within the
+    round-off band of Re λ = 0)."""
+    im = np.asarray(eigenvalues).imag
+    return np.where(im > 0, -2 * np.pi * settled_real(eigenvalues) / np.where(im > 0, im, 1.0),
+                    np.inf)
 
 
 @dataclass(frozen=True)

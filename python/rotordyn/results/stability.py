@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 
 from rotordyn.results.equilibrium import CONVERGED, STATUSES, EquilibriumResult
-from rotordyn.results.modes import damping_ratio, log_dec
+from rotordyn.results.modes import damping_ratio, log_dec, mode_stable
 
 
 @dataclass(frozen=True)
@@ -120,8 +120,7 @@ class StabilityResult:
         round-off band of zero (an undamped rotor) count as marginally stable, not unstable."""
         if self.status not in CONVERGED or len(self.eigenvalues) == 0:
             return False
-        lam = self.eigenvalues
-        return bool(np.all(lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)))
+        return bool(np.all(mode_stable(self.eigenvalues)))
 
     def plot(self, mode: int | None = None, ax=None, system=None):
         """3-D whirl orbits of ``mode`` (0-based; default: the least damped rotor mode) along
@@ -134,14 +133,18 @@ class StabilityResult:
         return mode_shape(self, mode, ax=ax, system=system)
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per mode: operating point, eigenvalue, frequency, damping, whirl, kind."""
+        """One row per mode: operating point (speed; with an active bearing also its p_c and
+        a_y), eigenvalue, frequency, damping, whirl, kind,
+        ``mode_stable`` (this mode: Re λ ≤ 0 beyond round-off) and ``point_stable`` (the
+        operating point: every mode stable), as in the sweep tables."""
         n = len(self.eigenvalues)
         e = self.linear.equilibrium
-        ay = float(e.config_ay_m[0]) if len(e.config_ay_m) else np.nan
+        point = {"speed_hz": np.full(n, self.speed_hz)}
+        if e.sleeve_m:  # an active bearing: its chamber pressure and housing offset a_y
+            point["chamber_pressure_pa"] = np.full(n, e.chamber_pressure_pa)
+            point["config_ay_m"] = np.full(n, float(e.config_ay_m[min(e.sleeve_m)]))
         return pd.DataFrame({
-            "speed_hz": np.full(n, self.speed_hz),
-            "chamber_pressure_pa": np.full(n, e.chamber_pressure_pa),
-            "config_ay_m": np.full(n, ay),
+            **point,
             "mode": np.arange(1, n + 1, dtype=np.int64),
             "freq_hz": self.frequencies_hz,
             "eig_real_1_per_s": self.eigenvalues.real,
@@ -149,7 +152,8 @@ class StabilityResult:
             "log_dec": self.log_dec,
             "whirl": pd.Categorical(self.whirl, categories=["forward", "backward", "planar"]),
             "kind": pd.Categorical(self.kind, categories=["rotor", "sleeve"]),
-            "stable": np.full(n, self.stable),
+            "mode_stable": mode_stable(self.eigenvalues) if n else np.zeros(0, dtype=bool),
+            "point_stable": np.full(n, self.stable),
             "status": pd.Categorical([self.status] * n, categories=list(STATUSES)),
             "message": [self.message] * n,
         })

@@ -53,12 +53,12 @@ class ThresholdResult:
         from matplotlib.patches import Patch
 
         from rotordyn.plot._style import COLUMN_IN, new_axes, paper_style
-        from rotordyn.plot.maps import AXIS_LABEL, AXIS_SCALE
+        from rotordyn.plot.maps import axis_label, axis_scale
 
         @paper_style
         def draw(ax):
             ax = new_axes(ax, width=COLUMN_IN * 1.2)
-            k = AXIS_SCALE.get(self.vary, 1.0)
+            k = axis_scale(self.vary)
             sc = self.scan[np.isfinite(self.scan["max_real_1_per_s"])]
             x, y = sc[self.vary].to_numpy() * k, sc["max_real_1_per_s"].to_numpy()
             ax.plot(x, y, "o-", color="tab:blue", ms=3)
@@ -74,7 +74,7 @@ class ThresholdResult:
             if self.crossings:
                 h.append(Line2D([], [], color="k", ls="--", lw=0.8,
                                 label=f"threshold {self.value * k:.4g}"))
-            ax.set_xlabel(AXIS_LABEL.get(self.vary, self.vary))
+            ax.set_xlabel(axis_label(self.vary))
             ax.set_ylabel("max Re λ (1/s)")
             ax.legend(handles=h, loc="best")
             return ax

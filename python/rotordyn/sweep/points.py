@@ -17,6 +17,7 @@ from rotordyn._common.whirl import WHIRL_NAMES
 from rotordyn.analysis.assembly import Assembled
 from rotordyn.analysis.linear import FD_REL_STEP
 from rotordyn.errors import RotordynError
+from rotordyn.results.modes import mode_stable
 from rotordyn.model.system import System
 from rotordyn.sweep.paths import set_field
 from rotordyn.units import hz_to_rad_s
@@ -155,8 +156,8 @@ def eigen(asm, e, f, opts, n_modes):
 
 
 def stable_modes(lam) -> np.ndarray:
-    """Per mode: Re λ below the round-off band (as StabilityResult.stable)."""
-    return lam.real < 1e-9 * np.maximum(np.abs(lam), 1.0)
+    """Per mode: Re λ below the round-off band (the rule of StabilityResult.stable)."""
+    return mode_stable(lam)
 
 
 def same_line(prev, idx, pos) -> bool:

@@ -25,6 +25,7 @@ from rotordyn.sweep.dataset import open_dataset
 from rotordyn.sweep.execution import (Dask, Progress, SweepInterrupted, SweepResult, Threads,
                                       group_size)
 from rotordyn.sweep.work import Job
+from rotordyn.units import unit_of
 
 UNITS = {
     "speed_hz": ("Hz", "spin speed"), "chamber_pressure_pa": ("Pa", "chamber pressure p_c"),
@@ -56,7 +57,9 @@ def _header(spec: SweepSpec, model_toml: str) -> dict:
             "n_chunks": len(bounds), "chunk_size": spec.chunk_size,
             "group": group_size(len(bounds), spec.max_files), "spec": spec.source,
             "model": model_toml,
-            "units": {k: {"units": u, "long_name": n} for k, (u, n) in UNITS.items()}}
+            "units": {**{a: {"units": unit_of(a), "long_name": f"sweep axis {a}"}
+                         for a in spec.ordered_axes},
+                      **{k: {"units": u, "long_name": n} for k, (u, n) in UNITS.items()}}}
 
 
 def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | None = None,

@@ -21,6 +21,7 @@ from rotordyn._common.whirl import WHIRL_NAMES
 from rotordyn.analysis.linear import FD_REL_STEP
 from rotordyn.analysis.transient import transient
 from rotordyn.operation import SpeedProfile
+from rotordyn.results.modes import settled_real
 from rotordyn.sweep.lines import max_real, threshold_line, unbalance_line
 from rotordyn.errors import RotordynError
 from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, equilibrium_options, fail_row, operating, points, ref_bearing,
@@ -230,9 +231,10 @@ def _stab_batch(job, seg, out, at, restart_first):
             continue
         lam = EV[k, :ke]
         ms = stable_modes(lam)
+        re = settled_real(lam)  # round-off of an undamped mode is 0, not a sign
         with np.errstate(divide="ignore", invalid="ignore"):
-            dr = np.where(np.abs(lam) > 0, -lam.real / np.abs(lam), np.nan)
-            ld = np.where(lam.imag != 0, -2 * np.pi * lam.real / lam.imag, np.nan)
+            dr = np.where(np.abs(lam) > 0, -re / np.abs(lam), np.nan)
+            ld = np.where(lam.imag != 0, -2 * np.pi * re / lam.imag, np.nan)
         hm = H[k]
         out[at + k] = ({**row, "_n": ke, "journal_x_m": float(R[k, bc.jx]) if bc else math.nan,
                         "journal_y_m": float(R[k, bc.jy]) if bc else math.nan,

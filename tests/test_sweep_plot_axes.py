@@ -1,0 +1,71 @@
+"""Guards issue 18's sweep-plot defects on a model that is not the paper rig: a stability sweep
+over speed × a bearing's clearance (a model-field axis) draws as a stability map (it was refused:
+"exactly two varying inputs … ['speed_hz']"), ``stability_map_grid`` takes a dotted axis
+(KeyError before), the Campbell refuses to average over a second axis (it averaged silently)
+unless that axis is fixed with ``--where``, and the dataset's ``units`` metadata has every axis.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rotordyn as rd
+from rotordyn.cli import main
+from rotordyn.plot.maps import axis_label, axis_scale, stability_map_grid
+
+MODELS = Path(__file__).parent / "data" / "models"
+
+
+@pytest.fixture(scope="module")
+def sweep(tmp_path_factory):
+    d = tmp_path_factory.mktemp("sw")
+    spec = d / "s.toml"
+    spec.write_text(f'''schema = "rotordyn/sweep/1"
+name = "speed-clearance"
+model = "{(MODELS / 'compressor_plain.toml').as_posix()}"
+analysis = "stability"
+chunk_size = 4
+
+[grid]
+"bearings.*.clearance_m" = [8.0e-5, 1.0e-4, 1.2e-4]
+speed_hz = [60.0, 100.0, 140.0]
+''')
+    out = d / "out"
+    assert main(["sweep", str(spec), "--out", str(out), "--threads", "1", "--json"]) == 0
+    return d, out
+
+
+def test_stability_map_over_a_model_field_axis(sweep):
+    d, out = sweep
+    assert main(["plot", str(out), "--kind", "stability-map", "--out", str(d / "m.png")]) == 0
+
+
+def test_campbell_refuses_to_average_over_a_second_axis(sweep, capsys):
+    d, out = sweep
+    assert main(["plot", str(out), "--kind", "campbell", "--out", str(d / "c.png")]) == 2
+    assert "bearings.*.clearance_m" in capsys.readouterr().err
+    assert main(["plot", str(out), "--kind", "campbell", "--out", str(d / "c.png"),
+                 "--where", "bearings.*.clearance_m=1e-4"]) == 0
+    assert main(["plot", str(out), "--kind", "campbell", "--out", str(d / "c.png"),
+                 "--where", "nosuchaxis=1"]) == 2
+    assert main(["plot", str(out), "--kind", "campbell", "--out", str(d / "c.png"),
+                 "--where", "speed_hz"]) == 2
+
+
+def test_units_metadata_has_every_axis(sweep):
+    _, out = sweep
+    ds = rd.sweep.open(out)
+    units = ds.manifest["units"]
+    assert units["bearings.*.clearance_m"]["units"] == "m"
+    assert units["speed_hz"]["units"] == "Hz"
+
+
+def test_stability_map_grid_dotted_axis_and_labels():
+    ax = stability_map_grid([1e-4, 2e-4], [50.0, 60.0, 70.0], np.array([[-1, -1, 1], [-2, 1, 2]]),
+                            xname="bearings.0.clearance_m", yname="speed_hz")
+    assert ax.get_xlabel() == "bearings.0.clearance (mm)" and axis_scale("x_m") == 1e3
+    assert axis_label("bearings.0.viscosity_pa_s") == "bearings.0.viscosity (Pa·s)"
+    assert axis_label("rotor.disks.1.mass_kg") == "rotor.disks.1.mass (kg)"
