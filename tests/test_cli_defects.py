@@ -110,7 +110,7 @@ def datasets(tmp_path_factory):
 @pytest.mark.parametrize(("which", "kind", "needle"), [
     ("two", "waterfall", "waterfall: the dataset has no spectra"),
     ("one", "campbell", "campbell: needs a sweep over 2 or more speeds"),
-    ("one", "stability-map", "stability-map: expected a stability sweep with exactly two"),
+    ("one", "stability-map", "stability-map: expected exactly two varying axes"),
     ("two", "equilibrium", "equilibrium: the dataset has no journal positions"),
 ])
 def test_plot_kind_mismatch_is_one_line_exit_2(datasets, tmp_path, which, kind, needle):

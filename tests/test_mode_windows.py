@@ -74,3 +74,25 @@ def test_cli_campbell_window(tmp_path):
     path = str(MODELS / "compressor_tilting_pad.toml")
     assert main(["campbell", path, "--speeds-hz", "50:150:50", "--n-modes", "6",
                  "--max-freq-hz", "400", "--plot", str(tmp_path / "c.png")]) == 0
+
+
+def test_output_labels_and_units(capsys, tmp_path):
+    """Coordinates of a full model are named by station (they were dof8, dof56); CLI tables show
+    small lengths in µm with 6 significant digits (0.000069 m before); a mode's figure title
+    gives its table number and the index it was asked for."""
+    import dataclasses
+
+    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
+    full = dataclasses.replace(s, reduction=rd.Reduction(method="none"))
+    bc = rd.linearize(full, 100.0).bearing_coefficients()
+    assert set(bc["row"]) == {"station1.x", "station1.y", "station5.x", "station5.y"}
+    assert len(bc) == 8  # 2 × 2 per bearing; the zeros between the bearings left out
+    assert main(["unbalance", str(MODELS / "compressor_linear.toml"), "--unbalance", "3,1e-4,0",
+                 "--speeds-hz", "100:200:5", "--station", "3"]) == 0
+    out = capsys.readouterr().out
+    assert "peak_um" in out and "0.0000" not in out
+    st = rd.stability(rd.models.paper_rig(), 50.0, 0.15e6, -1.85e-3)
+    assert st.plot(mode=5).get_title().startswith("mode 6 (index 5):")
+    r = rd.modes(rd.models.friswell_5_9_1(), 0.0, reduction="none", n_modes=4)
+    with pytest.raises(rd.InputError, match="frequency_errors"):
+        r.frequency_errors()

@@ -30,11 +30,15 @@ FD_REL_STEP = 1e-6
 
 
 def coordinate_labels(asm: Assembled) -> tuple:
-    """Names of the system coordinates: ``station<k>.x``/``.y`` (or ``dof<i>``), then
-    ``<bearing>.sleeve<j>``."""
+    """Names of the system coordinates: ``station<k>.x``/``.y`` (a full model: also
+    ``.rot_x``/``.rot_y``, and ``node<i>.…`` for FE nodes that are not stations), then
+    ``<bearing>.sleeve<j>`` and the elements' own coordinates (pad tilts)."""
     s = asm.system
     if asm.rotor.reduction is None:
-        names = [f"dof{d}" for d in asm.rotor.full.dofs]
+        station_of = {int(nd): st for st, nd in enumerate(s.rotor.station_nodes())}
+        comp = ("x", "y", "rot_x", "rot_y")  # the FE node's DOF order
+        names = [(f"station{station_of[d // 4]}" if d // 4 in station_of else f"node{d // 4}")
+                 + f".{comp[d % 4]}" for d in (int(x) for x in asm.rotor.full.dofs)]
     else:
         names = [f"station{st}.{c}" for st in s.reduction.master_stations for c in "xy"]
         names += [f"cb_mode{j + 1}" for j in range(asm.n_rotor - len(names))]

@@ -12,7 +12,7 @@ from rotordyn._common.info import __version__, build_info
 from rotordyn._common.status import CONVERGED
 from rotordyn.cli import sleeve
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_operating_point, check_figure,
-                                 json_text, save_figure)
+                                 json_text, save_figure, table_text)
 from rotordyn.cli.common import speeds as parse_speeds
 from rotordyn.errors import InputError
 from rotordyn.model import builtin as models
@@ -163,7 +163,7 @@ def _cmd_modes(args) -> int:
     if args.json:
         print(json_text(_modes_payload(r)))
     else:
-        print(r.to_frame().to_string(index=False))
+        print(table_text(r.to_frame()))
     if args.plot:
         shown = r.full if r.full is not None else r  # shapes of the full FE model
         if args.mode is not None:
@@ -196,7 +196,7 @@ def _cmd_equilibrium(args) -> int:
             "residual": e.residual,
         }))
     else:
-        print(e.to_frame().to_string(index=False))
+        print(table_text(e.to_frame()))
     return 0 if e.converged else 1
 
 
@@ -238,7 +238,7 @@ def _cmd_stability(args) -> int:
                          "modes": df.iloc[keep][cols].to_dict("list")
                          | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])}}))
     else:
-        print(df.iloc[keep].to_string(index=False))
+        print(table_text(df.iloc[keep]))
         if len(keep) < len(df):
             print(f"({len(keep)} of {len(df)} modes shown; --n-modes N or --max-freq-hz HZ for "
                   "others; the least damped mode and the verdict cover all)", file=sys.stderr)
@@ -268,7 +268,7 @@ def _cmd_campbell(args) -> int:
                      "point_status": list(c.point_status) if c.point_status is not None
                      else None}))
     else:
-        print(crit.to_string(index=False))
+        print(table_text(crit))
     if args.plot:
         ax = c.plot()
         if args.max_freq_hz is not None:
@@ -287,7 +287,7 @@ def _cmd_threshold(args) -> int:
                "whirl_ratio": t.whirl_ratio, "stable_side": t.stable_side,
                "crossings": list(t.crossings), "status": t.status, "message": t.message,
                "evaluations": t.evaluations}
-    print(json_text(payload) if args.json else t.to_frame().to_string(index=False))
+    print(json_text(payload) if args.json else table_text(t.to_frame()))
     return 0
 
 
@@ -313,7 +313,7 @@ def _cmd_unbalance(args) -> int:
     else:
         for st in u.stations:
             print(f"station {st}:")
-            print(u.peaks(st).to_string(index=False))
+            print(table_text(u.peaks(st)))
     if args.plot:
         save_figure(u.plot(kind=args.plot_kind), args.plot)
     return 0

@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
-from rotordyn.cli.common import json_text
+from rotordyn.cli.common import json_text, table_text
 from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
 from rotordyn.results.equilibrium import CONVERGED
@@ -152,5 +152,5 @@ def _table(b: JournalBearing, args: argparse.Namespace) -> int:
     elif args.json:
         print(t.to_frame().to_json(orient="records", indent=2))
     else:
-        print(t.to_frame().to_string(index=False))
+        print(table_text(t.to_frame()))
     return 0 if all(s in CONVERGED for s in t.status) else 1

@@ -164,3 +164,21 @@ def check_figure(path) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
+
+
+def table_text(df) -> str:
+    """A result table as the terminal shows it: 6 significant digits (not pandas' fixed 6
+    decimals, which printed 69 µm as 0.000069), and small lengths — a ``*_m`` column whose
+    values are all below 1 cm: amplitudes, positions, films — in µm with the column renamed
+    ``*_um``. ``--json`` keeps SI."""
+    import numpy as np
+
+    out = df.copy()
+    for c in list(out.columns):
+        if not (isinstance(c, str) and c.endswith("_m")) or out[c].dtype.kind != "f":
+            continue
+        vals = out[c].to_numpy(dtype=float)
+        if np.isfinite(vals).any() and np.nanmax(np.abs(vals)) < 0.01:
+            out[c] = vals * 1e6
+            out = out.rename(columns={c: c[:-2] + "_um"})
+    return out.to_string(index=False, float_format=lambda x: f"{x:.6g}")

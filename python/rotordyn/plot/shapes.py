@@ -109,7 +109,9 @@ def mode_shape(result, mode: int = 0, *, ax=None, system=None):
     ld = result.log_dec[mode]
     ld = 0.0 if abs(ld) < 1e-6 else ld  # round-off of an undamped rotor
     wh = result.whirl[mode]
-    title = (f"mode {mode + 1}: {f:.2f} Hz, {wh} whirl, log dec {ld:.3g}, at "
+    # the table's mode number (1-based, as to_frame()["mode"] and the CLI's --mode) and the
+    # 0-based index the plot was asked for, so neither reading is wrong
+    title = (f"mode {mode + 1} (index {mode}): {f:.2f} Hz, {wh} whirl, log dec {ld:.3g}, at "
              f"{result.speed_hz:g} Hz")
     return orbits_3d(z, shapes[:, 0, mode], shapes[:, 1, mode], ax=ax, system=system,
                      title=title)

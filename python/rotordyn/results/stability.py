@@ -50,11 +50,14 @@ class LinearModel:
         return np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ self.K, -Minv @ self.D]])
 
     def bearing_coefficients(self) -> pd.DataFrame:
-        """K_H and D_H entries between film-coupled coordinates, tidy (row, col, value)."""
+        """K_H and D_H entries between film-coupled coordinates, tidy (row, col, k, c), the
+        coordinates named by station (``station1.x``); pairs no film couples are left out."""
         rows = []
         idx = np.where((np.abs(self.KH).sum(0) + np.abs(self.DH).sum(0)) > 0)[0]
         for i in idx:
             for j in idx:
+                if self.KH[i, j] == 0 and self.DH[i, j] == 0:  # e.g. between two bearings
+                    continue
                 rows.append({"row": self.labels[i], "col": self.labels[j],
                              "k_n_per_m": self.KH[i, j], "c_n_s_per_m": self.DH[i, j]})
         return pd.DataFrame(rows)
