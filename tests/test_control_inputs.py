@@ -451,3 +451,35 @@ def test_cli_schedule_json_writes_null_not_nan(tmp_path, capsys):
     s = json.loads(out)
     assert s["best_constant_pa"] is None and s["peak_schedule_m"] is None
     assert s["speeds_without_feasible_pressure"] == 2
+
+
+# -- discrete controller: sample instants meeting output times ------------------------------
+@pytest.mark.parametrize(("sample_time_s", "t_end_s", "n_out"),
+                         [(3e-5, 0.002, 401), (7e-5, 0.002, 401), (3e-6, 0.002, 401),
+                          (1.0 / 33e3, 0.01, 2001)])
+def test_discrete_controller_survives_sample_instants_on_output_times(fx, sample_time_s,
+                                                                      t_end_s, n_out):
+    """Issue: a sample instant k·T within round-off of an output time stopped the run with
+    ``not_converged`` ("CV_TOO_CLOSE … tout too close to t0"): 3e-5, 7e-5 and 3e-6 s with the
+    default output spacing (5 µs), and realistic 33 kHz sampling at t = 9 ms. The output
+    times are moved onto the instants (by at most 1e-12 of the run) before the core runs."""
+    k = Controller.static(fx.k.D, [("journal", 0)], sample_time_s=sample_time_s)
+    tr = rd.transient(fx.rig, t_end_s, 50.0, PC, AY, controller=k, disturbance_m=(0.0, 3e-5),
+                      n_out=n_out)
+    assert tr.status == "ok", tr.message
+    assert np.abs(tr.t - np.linspace(0.0, t_end_s, n_out)).max() <= 2e-12 * t_end_s
+    assert np.all(np.isfinite(tr.journal_y_m))
+
+
+def test_sample_aligned_outputs_meets_the_cores_instants_exactly():
+    from rotordyn.analysis.transient import sample_aligned_outputs
+
+    T = 3e-5
+    t = np.linspace(0.0, 0.01, 2001)
+    s = sample_aligned_outputs(t, T)
+    k = np.rint(t / T)
+    hit = np.isclose(t, k * T, rtol=0, atol=1e-15) & (k >= 1)
+    assert hit.sum() == 333
+    assert np.array_equal(s[hit], k[hit] * T)  # double(k) * T, as cpp/src/transient.cpp
+    assert np.array_equal(s[~hit], t[~hit]) and np.all(np.diff(s) > 0)
+    assert np.abs(s - t).max() <= 1e-12 * 0.01 + 1e-9 * T
