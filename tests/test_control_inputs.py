@@ -483,3 +483,18 @@ def test_sample_aligned_outputs_meets_the_cores_instants_exactly():
     assert np.array_equal(s[hit], k[hit] * T)  # double(k) * T, as cpp/src/transient.cpp
     assert np.array_equal(s[~hit], t[~hit]) and np.all(np.diff(s) > 0)
     assert np.abs(s - t).max() <= 1e-12 * 0.01 + 1e-9 * T
+
+
+def test_remaining_options_are_checked(fx):
+    """Options passed through ``**kw`` and ignored arguments: an InputError naming them
+    (a TypeError from the dataclass, or silently ignored, before)."""
+    with pytest.raises(rd.InputError, match="sampletime"):
+        Controller.static([[1.0, 0.0]], [("journal", 0)], sampletime=1e-4)
+    import control
+
+    with pytest.raises(rd.InputError, match="noise"):
+        Controller.from_lti(control.ss([], [], [], [[1.0, 0.0]]), [("journal", 0)], noise=1.0)
+    b = _sync(fx)
+    with pytest.raises(rd.InputError, match="speeds_hz"):
+        b.harmonic_schedule(0.5e6, speeds_hz=[38.5])
+    assert plant(fx.rig, 50.0, PC, AY, disturbance_stations=np.array([], int)).Bd.shape[1] == 0

@@ -62,8 +62,9 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
     act = chk.actuator(actuator)
     meas = parse_measurements(measurements)
     measurement_matrix(system, meas)  # a measurement that does not exist: before the solve
-    dist = () if isinstance(disturbance_stations, (list, tuple)) and not disturbance_stations \
-        else chk.stations(system, disturbance_stations, "disturbance_stations")
+    empty = not isinstance(disturbance_stations, (str, bytes, dict, int, np.integer)) \
+        and hasattr(disturbance_stations, "__len__") and len(disturbance_stations) == 0
+    dist = () if empty else chk.stations(system, disturbance_stations, "disturbance_stations")
     inputs = [("chamber_pressure",)] + [("force", s) for s in dist]
     ss = statespace(system, inputs=inputs, speed_hz=speed_hz,
                     chamber_pressure_pa=chamber_pressure_pa, config_ay_m=config_ay_m)

@@ -59,6 +59,10 @@ def linear_model_grid(system, sp, pp, config_ay_m):
     pressure, K_H and D_H by perturbation. Yields (i, j, status, model, ω rad/s, least damping
     ratio of all modes); model and ω are None and the ratio NaN unless the status is ok.
     Shared by the open-loop schedule and the synchronous bound."""
+    chk.system(system)
+    sp = chk.speeds("speeds_hz", sp)
+    pp = chk.pressures("pressures_pa", pp)
+    config_ay_m = chk.config_ay(system, config_ay_m)
     for j, p in enumerate(pp):
         for i, stt, lm in continued_linear_models(system, sp, float(p), config_ay_m,
                                                   "perturbation", continue_on=("ok",)):

@@ -197,7 +197,11 @@ class SynchronousBound:
     def harmonic_schedule(self, pressure_pa, speeds_hz=None):
         """Amplitude (Pa) and unwrapped phase (deg) tables of the optimal 1× command over the
         speeds, at the mean pressure ``pressure_pa`` (a grid value, or an array of grid values
-        per speed — e.g. a static schedule). Returns (speeds_hz, amplitude_pa, phase_deg)."""
+        per speed — e.g. a static schedule). Returns (speeds_hz, amplitude_pa, phase_deg).
+        ``speeds_hz``: must be None (the tables are on the bound's own speeds)."""
+        if speeds_hz is not None:
+            raise InputError("speeds_hz: expected None (the tables are on the bound's own "
+                             "speeds; interpolate them or compute the bound on other speeds)")
         if np.ndim(pressure_pa) == 0:
             pp = np.full(self.speeds_hz.shape, v.finite("pressure_pa", pressure_pa))
         else:

@@ -33,6 +33,16 @@ def _noise_std(value, ny):
     return arr
 
 
+_OPTIONS = ("sample_time_s", "noise_std", "noise_dt_s", "seed", "name", "info")
+
+
+def _options(kw):
+    bad = sorted(set(kw) - set(_OPTIONS))
+    if bad:
+        raise InputError(f"controller: unknown option(s) {', '.join(bad)}; expected any of "
+                         f"{', '.join(_OPTIONS)}")
+
+
 @dataclass(frozen=True)
 class Controller:
     """ẋ = A x + B y, u = C x + D y (continuous, ``sample_time_s`` None) or
@@ -112,6 +122,7 @@ class Controller:
     @classmethod
     def static(cls, gains, measurements, **kw) -> "Controller":
         """u = gains · y (no states), e.g. a PD law on journal displacement and velocity."""
+        _options(kw)
         g = v.matrix("controller.gains", gains)
         return cls(np.zeros((0, 0)), np.zeros((0, g.shape[1])), np.zeros((1, 0)), g,
                    measurements, **kw)
@@ -123,6 +134,7 @@ class Controller:
         time; ``dt=True`` (unspecified) is rejected."""
         import control
 
+        _options(kw)
         if isinstance(sys, control.TransferFunction):
             sys = control.ss(sys)
         if not isinstance(sys, control.StateSpace):
