@@ -113,20 +113,7 @@ def vector(field: str, value, n: int | None = None) -> np.ndarray:
     """A 1-D float64 array of finite numbers (of length ``n`` when given); a copy."""
     if value is None or isinstance(value, (str, bytes, dict, set, frozenset)):
         raise InputError(f"{field}: expected a sequence of numbers, got {_show(value)}")
-    try:
-        raw = np.asarray(value)
-    except (TypeError, ValueError):
-        raise InputError(f"{field}: expected a sequence of numbers, got {_show(value)}") \
-            from None
-    # text or bools are not numbers, though numpy would convert "50" or True to a float
-    if raw.dtype.kind in "USb" or (raw.dtype.kind == "O" and any(
-            isinstance(x, (str, bytes, bool, np.bool_)) for x in raw.ravel())):
-        raise InputError(f"{field}: expected numbers, got {_show(value)}")
-    try:
-        arr = np.array(raw, dtype=float)
-    except (TypeError, ValueError, OverflowError):
-        raise InputError(f"{field}: expected a sequence of numbers, got {_show(value)}") \
-            from None
+    arr = _float_array(field, value, "a sequence of numbers")
     if arr.ndim != 1 or (n is not None and arr.shape[0] != n):
         want = f"({n},)" if n is not None else "a 1-D array"
         raise InputError(f"{field}: expected shape {want}, got {arr.shape}")
@@ -135,6 +122,72 @@ def vector(field: str, value, n: int | None = None) -> np.ndarray:
         i = int(np.argmax(bad))
         raise InputError(f"{field}[{i}]: expected a finite number, got {arr[i]!r}")
     return arr
+
+
+def _float_array(field: str, value, what: str) -> np.ndarray:
+    """float64 copy of ``value``; strings and bools (numpy converts "1e6" and True silently)
+    are refused."""
+    try:
+        kind = np.asarray(value).dtype.kind
+        arr = np.array(value, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise InputError(f"{field}: expected {what}, got {_show(value)}") from None
+    if kind in "USOb" and not (kind == "O" and _all_numbers(value)):
+        raise InputError(f"{field}: expected {what}, got {_show(value)}")
+    return arr
+
+
+def _all_numbers(value) -> bool:
+    flat = np.asarray(value, dtype=object).ravel()
+    return all(isinstance(x, (int, float, np.integer, np.floating))
+               and not isinstance(x, (bool, np.bool_)) for x in flat)
+
+
+def matrix(field: str, value, shape: tuple | None = None) -> np.ndarray:
+    """A 2-D float64 array of finite numbers (of ``shape`` when given; a scalar is 1 x 1);
+    a copy."""
+    if value is None or isinstance(value, (str, bytes, dict)):
+        raise InputError(f"{field}: expected a matrix of numbers, got {_show(value)}")
+    arr = _float_array(field, value, "a matrix of numbers")
+    if arr.ndim < 2:
+        arr = np.atleast_2d(arr)
+    want = f"({shape[0]}, {shape[1]})" if shape is not None else "a 2-D matrix"
+    if arr.ndim != 2 or (shape is not None and arr.shape != tuple(shape)):
+        raise InputError(f"{field}: expected {want}, got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        i, j = np.argwhere(~np.isfinite(arr))[0]
+        raise InputError(f"{field}: expected a finite {want} matrix, got {float(arr[i, j])!r} at "
+                         f"[{i}, {j}]")
+    return arr
+
+
+def psd_matrix(field: str, value, n: int, *, definite: bool = False) -> np.ndarray:
+    """A finite symmetric positive semi-definite (``definite``: positive definite) (n, n)
+    matrix; symmetry and the eigenvalues are checked to 1e-10 of the largest entry."""
+    what = "positive definite" if definite else "positive semi-definite"
+    msg = f"{field}: expected a finite symmetric {what} ({n}, {n}) matrix, got "
+    if value is None or isinstance(value, (str, bytes, dict)):
+        raise InputError(msg + _show(value))
+    try:
+        M = np.atleast_2d(_float_array(field, value, "a matrix of numbers"))
+    except InputError:
+        raise InputError(msg + _show(value)) from None
+    if M.shape != (n, n):
+        raise InputError(msg + f"shape {M.shape}")
+    if not np.all(np.isfinite(M)):
+        i, j = np.argwhere(~np.isfinite(M))[0]
+        raise InputError(msg + f"{float(M[i, j])!r} at [{i}, {j}]")
+    scale = float(np.abs(M).max()) if M.size else 0.0
+    if scale > 1e300:
+        raise InputError(msg + f"entries up to {scale:.3g} (at most 1e300)")
+    if np.abs(M - M.T).max(initial=0.0) > 1e-10 * scale:
+        raise InputError(msg + "a non-symmetric matrix")
+    M = 0.5 * (M + M.T)
+    lam = np.linalg.eigvalsh(M) if M.size else np.zeros(0)
+    low = lam.min(initial=np.inf)
+    if (definite and not low > 1e-10 * scale) or (not definite and low < -1e-10 * scale):
+        raise InputError(msg + f"a matrix with eigenvalue {low:.3g}")
+    return M
 
 
 def bounds(field: str, value) -> tuple[float, float]:

@@ -21,6 +21,31 @@ from rotordyn.results.transient import TransientResult
 from rotordyn.units import hz_to_rad_s, rad_s_to_hz
 
 
+# Output times this close to a discrete controller's sample instant k·T are moved onto it:
+# CVODE refuses to step across a gap of a few ulps ("CV_TOO_CLOSE: tout too close to t0"),
+# and a gap just above that is meaningless. The tolerance is far above the round-off of
+# linspace and of k·T (≈ 1e-16 t) and far below any sample period (≥ 1e-7 s).
+SAMPLE_SNAP_REL = 1e-12   # of the run's length
+SAMPLE_SNAP_PERIOD = 1e-9  # of the sample time
+
+
+def sample_aligned_outputs(t_out: np.ndarray, sample_time_s: float) -> np.ndarray:
+    """``t_out`` with every time within ``SAMPLE_SNAP_REL·t_end + SAMPLE_SNAP_PERIOD·T`` of a
+    sample instant k·T (k ≥ 1) replaced by that instant, computed as the C++ core does
+    (``double(k) * T``, bit for bit), so the core meets the two at exactly the same time
+    and never steps across a round-off gap. Times stay strictly increasing (else unchanged).
+    """
+    T = float(sample_time_s)
+    t_out = np.asarray(t_out, dtype=float)
+    k = np.rint(t_out / T)
+    ts = k * T
+    tol = SAMPLE_SNAP_REL * float(t_out[-1]) + SAMPLE_SNAP_PERIOD * T
+    snapped = np.where((k >= 1) & (np.abs(t_out - ts) <= tol), ts, t_out)
+    if snapped.size > 1 and np.any(np.diff(snapped) <= 0):
+        return t_out
+    return snapped
+
+
 @limited_blas
 def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None, *,
@@ -37,7 +62,8 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     ``unbalances``: [(station, mass_kg_m, phase_deg)] rotating with the rotor; with a
     varying speed the force is m e (Ω² e_r − Ω̇ e_t) at the rotor angle θ = ∫Ω dt (radial
     and tangential, the tangential one from the angular acceleration). Output at ``n_out``
-    uniformly spaced times. A failure returns the rows reached (NaN after) with a ``status``:
+    uniformly spaced times (with a discrete controller, a time within round-off of a sample
+    instant k·T is that instant: :func:`sample_aligned_outputs`). A failure returns the rows reached (NaN after) with a ``status``:
     ``"rub"`` when the journal reached the bush — a film thinner than ``rub_fraction`` of its
     clearance (default 1e-3: below any real surface finish; checked after every step), or a
     closed film CVODE could not step past — ``"not_converged"`` when CVODE gave up (its flag
@@ -149,6 +175,8 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     inp.unbalance_cos, inp.unbalance_sin = (uc, us) if ub_list else (np.zeros(0), np.zeros(0))
     inp.r0, inp.v0 = r_init, v_init
     inp.t_out = np.linspace(0.0, float(t_end_s), int(n_out))
+    if controller is not None and controller.discrete:
+        inp.t_out = sample_aligned_outputs(inp.t_out, controller.sample_time_s)
     opt = _core.CvodeOptions()
     opt.rtol, opt.atol_position = float(rtol), float(atol_m)
     opt.atol_velocity = float(atol_m) * max(hz_to_rad_s(abs(float(speed_hz))), 1.0)

@@ -15,18 +15,25 @@ Exit 2 on bad input (the message names the field), 1 on a failed run.
 from __future__ import annotations
 
 import argparse
-import json
+import math
 from pathlib import Path
 
 import numpy as np
 
+from rotordyn.cli.common import json_text, out_dir
 from rotordyn.errors import InputError
+
+MAX_AXIS = 10_000  # points of one --speed-hz or --pressure-pa axis
 
 
 def _axis(name, vals):
     lo, hi, step = vals
-    if not (step > 0 and hi >= lo):
-        raise InputError(f"{name}: expected START STOP STEP with STEP > 0 and STOP >= START")
+    if not (np.isfinite([lo, hi, step]).all() and step > 0 and hi >= lo):
+        raise InputError(f"{name}: expected finite START STOP STEP with STEP > 0 and "
+                         f"STOP >= START, got {lo:g} {hi:g} {step:g}")
+    count = math.floor((hi - lo) / step + 0.5) + 1  # counted before allocating
+    if count > MAX_AXIS:
+        raise InputError(f"{name}: expected at most {MAX_AXIS} grid points, got {count:.3g}")
     return np.arange(lo, hi + 0.5 * step, step)
 
 
@@ -101,6 +108,19 @@ def register(sub: argparse._SubParsersAction) -> None:
     c.set_defaults(func=run_closed_loop)
 
 
+def _station(flag, value) -> int:
+    """A station read as a float by argparse: a whole number, else an InputError."""
+    if not (math.isfinite(value) and value == int(value)):
+        raise InputError(f"{flag}: expected a whole station number, got {value:g}")
+    return int(value)
+
+
+def _peak(values) -> float:
+    """Largest finite value, NaN (JSON null) when there is none."""
+    finite = np.asarray(values, float)[np.isfinite(values)]
+    return float(finite.max()) if finite.size else math.nan
+
+
 def _load(model):
     from rotordyn.model import builtin as models
 
@@ -115,16 +135,15 @@ def run_schedule(args) -> int:
 
     from rotordyn.control.schedule import pressure_schedule
 
+    out = Path(out_dir("--out", args.out))  # before the grid is solved
     system = _load(args.model)
     act = _actuator(args)
-    ub = [(int(s), m, p) for s, m, p in args.unbalance]
+    ub = [(_station("--unbalance", s), m, p) for s, m, p in args.unbalance]
     res = pressure_schedule(system, ub, _axis("--speed-hz", args.speed_hz),
                             _axis("--pressure-pa", args.pressure_pa), stations=args.stations,
                             config_ay_m=args.config_ay_m, min_damping=args.min_damping,
                             p_min_pa=act.p_min_pa, p_max_pa=act.p_max_pa,
                             smooth_pa_per_hz=args.smooth_pa_per_hz)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     res.grid.to_csv(out / "grid.csv", index=False)
     res.to_frame().to_csv(out / "schedule.csv", index=False)
     fig, ax = plt.subplots(1, 2, figsize=(11, 4))
@@ -143,11 +162,11 @@ def run_schedule(args) -> int:
     fig.savefig(out / "schedule.png", dpi=110)
     plt.close(fig)
     summary = {"best_constant_pa": res.best_constant_pa,
-               "peak_schedule_m": float(np.nanmax(res.objective_m)),
-               "peak_best_constant_m": float(np.nanmax(res.best_constant_objective_m)),
+               "peak_schedule_m": _peak(res.objective_m),
+               "peak_best_constant_m": _peak(res.best_constant_objective_m),
                "speeds_without_feasible_pressure": int(np.sum(~np.isfinite(res.pressures_pa))),
                "files": ["grid.csv", "schedule.csv", "schedule.png"]}
-    print(json.dumps(summary, indent=1) if args.json else
+    print(json_text(summary) if args.json else
           f"best constant p_c = {res.best_constant_pa:g} Pa; largest amplitude "
           f"{summary['peak_best_constant_m']:.4g} m -> {summary['peak_schedule_m']:.4g} m with "
           f"the schedule; wrote {out}/grid.csv, schedule.csv, schedule.png")
@@ -161,17 +180,24 @@ def run_closed_loop(args) -> int:
     import matplotlib.pyplot as plt
     import pandas as pd
 
+    from rotordyn._common import validate as v
     from rotordyn.analysis import transient
     from rotordyn.analysis.assembly import assembled
     from rotordyn.control import SpeedProfile
+    from rotordyn.control import _checks as chk
     from rotordyn.control.closedloop import closed_loop
     from rotordyn.control.lqr import lqg
     from rotordyn.control.pid import tune_pd
     from rotordyn.control.plant import plant
     from rotordyn.control.reduction import modal_truncation
 
-    if args.t_end_s <= 0:
-        raise InputError(f"--t-end-s: expected > 0 s, got {args.t_end_s}")
+    if not args.t_end_s > 0 or not math.isfinite(args.t_end_s):
+        raise InputError(f"--t-end-s: expected a finite time > 0 s, got {args.t_end_s}")
+    if not math.isfinite(args.disturbance_c):
+        raise InputError(f"--disturbance-c: expected a finite displacement (clearances), got "
+                         f"{args.disturbance_c}")
+    v.integer("--n-out (n_out)", args.n_out, lo=2)
+    out = Path(out_dir("--out", args.out))  # before the design and the transients
     if args.law == "hinf":
         from rotordyn.control.hinf import _slycot
 
@@ -181,6 +207,14 @@ def run_closed_loop(args) -> int:
             raise InputError(f"--law hinf: {exc}") from None
     system = _load(args.model)
     act = _actuator(args)
+    chk.operating_point(system, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m)
+    unbalances = [(_station("--unbalance", s), m, ph) for s, m, ph in args.unbalance]
+    if unbalances:
+        try:
+            chk.unbalances(system, unbalances)
+        except InputError as exc:
+            raise InputError(f"--unbalance: {exc}") from None
+    profile = SpeedProfile.ramp(*args.run_up_hz) if args.run_up_hz else None
     p = plant(system, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
               measurements=[("journal", 0)], actuator=act)
     if args.law == "pd":
@@ -197,12 +231,11 @@ def run_closed_loop(args) -> int:
     ol_lam = p.poles
     asm = assembled(system)
     c = asm.bearings[0].clearance_m if asm.bearings else 1.0
-    kw = dict(n_out=args.n_out, actuator=act,
-              unbalances=[(int(s), m, ph) for s, m, ph in args.unbalance])
+    kw = dict(n_out=args.n_out, actuator=act, unbalances=unbalances)
     t_end = args.t_end_s
-    if args.run_up_hz:
+    if profile is not None:
         f0, f1, rate = args.run_up_hz
-        kw["speed"] = SpeedProfile.ramp(f0, f1, rate)
+        kw["speed"] = profile
         t_end = abs(f1 - f0) / rate
         speed0 = f0
     else:
@@ -211,8 +244,6 @@ def run_closed_loop(args) -> int:
     ol = transient(system, t_end, speed0, args.chamber_pressure_pa, args.config_ay_m, **kw)
     cln = transient(system, t_end, speed0, args.chamber_pressure_pa, args.config_ay_m,
                        controller=k, **kw)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
 
     def dev(tr):
         return np.hypot(tr.journal_x_m[:, 0] - tr.equilibrium_r[asm.bearings[0].jx],
@@ -235,12 +266,12 @@ def run_closed_loop(args) -> int:
                "closed_loop_min_damping": cl.min_damping, "gain_margin": cl.gain_margin,
                "phase_margin_deg": cl.phase_margin_deg, "peak_sensitivity": cl.peak_sensitivity,
                "open_loop_status": ol.status, "closed_loop_status": cln.status,
-               "open_loop_final_amplitude_m": float(np.nanmax(dev(ol)[last])),
-               "closed_loop_final_amplitude_m": float(np.nanmax(dev(cln)[last])),
-               "chamber_pressure_range_pa": [float(np.nanmin(cln.chamber_pressure_actual_pa)),
-                                             float(np.nanmax(cln.chamber_pressure_actual_pa))],
+               "open_loop_final_amplitude_m": _peak(dev(ol)[last]),
+               "closed_loop_final_amplitude_m": _peak(dev(cln)[last]),
+               "chamber_pressure_range_pa": [-_peak(-cln.chamber_pressure_actual_pa),
+                                             _peak(cln.chamber_pressure_actual_pa)],
                "files": ["summary.json", "timeseries.csv", "closed_loop.png"]}
-    (out / "summary.json").write_text(json.dumps(summary, indent=1))
+    (out / "summary.json").write_text(json_text(summary))
     fig, ax = plt.subplots(1, 2, figsize=(11, 4))
     ax[0].semilogy(ol.t, dev(ol) / c, lw=0.6, label="open loop")
     ax[0].semilogy(cln.t, dev(cln) / c, lw=0.6, label=f"closed loop ({args.law})")
@@ -254,7 +285,7 @@ def run_closed_loop(args) -> int:
     fig.savefig(out / "closed_loop.png", dpi=110)
     plt.close(fig)
     if args.json:
-        print(json.dumps(summary, indent=1))
+        print(json_text(summary))
     else:
         print(f"{args.law}: open loop max Re λ = {summary['open_loop_max_real_1_per_s']:.3f} 1/s, "
               f"closed loop {cl.max_real:.3f} 1/s (min ζ {cl.min_damping:.4f}, GM "

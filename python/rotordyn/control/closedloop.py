@@ -8,6 +8,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rotordyn._common import validate as v
+from rotordyn.control import _checks as chk
+from rotordyn.control.plant import as_plant
+from rotordyn.errors import InputError
+from rotordyn.operation.controller import Controller
+from rotordyn.operation.profiles import PressureSchedule
 from rotordyn.results.modes import damping_ratio
 
 
@@ -48,8 +54,6 @@ def _discrete_loop(p, k, freqs_hz):
     with the frequencies limited to below Nyquist."""
     from scipy.linalg import expm
 
-    from rotordyn.errors import InputError
-
     T = k.sample_time_s
     Dr = p.info.get("feedthrough")
     if Dr is not None and np.any(Dr):
@@ -76,13 +80,24 @@ def _discrete_loop(p, k, freqs_hz):
     return Ad, lam, L
 
 
+def _pair(p, k) -> None:
+    """A plant and a controller that reads exactly the plant's measurements."""
+    as_plant(p)
+    chk.controller(k)
+    if k.n_inputs != p.C.shape[0]:
+        raise InputError(f"controller: expected {p.C.shape[0]} inputs (the plant's "
+                         f"measurements), got {k.n_inputs}")
+    if tuple(k.measurements) != tuple(p.measurements):
+        raise InputError(f"controller.measurements: expected the plant's measurements "
+                         f"{list(p.measurements)}, got {list(k.measurements)}")
+
+
 def closed_loop_matrix(p, k) -> np.ndarray:
     """State matrix of [x; x_k] for ẋ = A x + B u, y = C x, u = C_k x_k + D_k y,
     ẋ_k = A_k x_k + B_k y (continuous controllers; a discrete one via its ZOH continuous
     equivalent is not formed here)."""
+    _pair(p, k)
     if k.discrete:
-        from rotordyn.errors import InputError
-
         raise InputError("controller.sample_time_s: a continuous closed-loop matrix needs a "
                          "continuous controller (closed_loop() handles discrete ones)")
     A, B, C = p.A, p.B, p.C
@@ -101,7 +116,8 @@ def closed_loop_matrix(p, k) -> np.ndarray:
 
 def loop_response(p, k, freqs_hz) -> np.ndarray:
     """L(iω) = −K(iω) G(iω), (n_f,) complex (negative-feedback convention)."""
-    w = 2 * np.pi * np.asarray(freqs_hz, dtype=float)
+    _pair(p, k)
+    w = 2 * np.pi * chk.frequencies("freqs_hz", freqs_hz)
     n, nk = p.A.shape[0], k.n_states
     Dr = p.info.get("feedthrough")
     out = np.empty(w.size, dtype=complex)
@@ -121,15 +137,15 @@ def closed_loop(p, k, *, freqs_hz=None) -> ClosedLoopResult:
     below Nyquist). Margins from L on a log grid
     (default 0.1 Hz – 5 kHz, 4000 points): gain margin = 1/|L| where arg L crosses −180°
     (the smallest, inf if none), phase margin at |L| = 1 (the smallest)."""
-    from rotordyn.operation.controller import Controller
-    from rotordyn.errors import InputError
-
+    as_plant(p)
     if not isinstance(k, Controller):  # a python-control system reading the plant's outputs
         k = Controller.from_lti(k, p.measurements)
-    if k.n_inputs != p.C.shape[0]:
-        raise InputError(f"controller: expected {p.C.shape[0]} inputs (the plant's "
-                         f"measurements), got {k.n_inputs}")
-    f = np.logspace(-1, np.log10(5000.0), 4000) if freqs_hz is None else np.asarray(freqs_hz)
+    _pair(p, k)
+    f = np.logspace(-1, np.log10(5000.0), 4000) if freqs_hz is None \
+        else chk.frequencies("freqs_hz", freqs_hz)
+    if k.discrete and not np.any(f < 0.5 / k.sample_time_s):
+        raise InputError(f"freqs_hz: expected frequencies below the controller's Nyquist "
+                         f"frequency {0.5 / k.sample_time_s:g} Hz, got {f[0]:g} .. {f[-1]:g}")
     if k.discrete:
         Acl, lam, L = _discrete_loop(p, k, f)
     else:
@@ -168,14 +184,30 @@ def closed_loop_unbalance(system, controller, unbalances, speeds_hz, *, chamber_
     from rotordyn.control.plant import plant as make_plant
     from rotordyn.units import hz_to_rad_s
 
+    chk.system(system)
+    chk.controller(controller, continuous=True)
+    chk.measured_by(system, controller)
+    ub = chk.unbalances(system, unbalances)
+    sp = chk.speeds("speeds_hz", speeds_hz)
+    if isinstance(chamber_pressure_pa, PressureSchedule):
+        sched = chamber_pressure_pa
+        if sched.kind == "time_table":
+            raise InputError("chamber_pressure_pa: expected a number, a constant or a speed "
+                             "schedule (a linear steady response has no time), got a time table")
+        pcs = np.interp(sp, sched.x, sched.p_pa) if sched.kind == "speed_table" \
+            else np.full(sp.size, sched.value_pa)
+        if np.any(pcs < 0):
+            raise InputError(f"chamber_pressure_pa: expected pressures >= 0 Pa over the speeds, "
+                             f"got {float(pcs.min())!r}")
+    else:
+        pcs = np.full(sp.size, v.non_negative("chamber_pressure_pa", chamber_pressure_pa))
+    config_ay_m = chk.config_ay(system, config_ay_m)
+    actuator = chk.actuator(actuator)
+    outs = chk.stations(system, stations) if stations is not None \
+        else tuple(dict.fromkeys(s for s, _, _ in ub))
     asm = assembled(system)
-    ub = [(int(s), float(me), float(ph)) for s, me, ph in unbalances]
-    outs = tuple(stations) if stations is not None else tuple(dict.fromkeys(s for s, _, _ in ub))
     rows = []
-    for f in np.asarray(speeds_hz, dtype=float):
-        pc = chamber_pressure_pa
-        if hasattr(pc, "kind"):
-            pc = float(np.interp(f, pc.x, pc.p_pa)) if pc.kind == "speed_table" else pc.value_pa
+    for f, pc in zip(sp, pcs):
         p = make_plant(system, f, float(pc), config_ay_m, measurements=controller.measurements,
                        actuator=actuator)
         n = p.n_mech

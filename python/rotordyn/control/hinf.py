@@ -26,8 +26,11 @@ from __future__ import annotations
 import numpy as np
 
 from rotordyn._common import validate as v
-from rotordyn.operation.controller import Controller
+from rotordyn.control._checks import frequencies
+from rotordyn.control.lqr import scale, state_scales
+from rotordyn.control.plant import as_plant
 from rotordyn.errors import InputError
+from rotordyn.operation.controller import Controller
 
 SLYCOT_HINT = ("H∞ synthesis needs the optional package slycot (SLICOT's SB10AD): install "
                "the extra with pip install 'rotordyn[hinf]' (or pip install slycot)")
@@ -47,13 +50,12 @@ def generalized_plant(p, *, disturbance_force_n: float = 1.0, measurement_noise_
     """The scaled generalized plant of the module docstring: (A, B, C, D, sizes, scales) with
     B = [B₁ | B₂], C = [C₁; C₂], D = [[D₁₁, D₁₂], [D₂₁, D₂₂]]; sizes = (n_w, n_u=1, n_z,
     n_y); scales = (S (state scales), c, p_s)."""
-    from rotordyn.control.lqr import state_scales
-
-    v.positive("disturbance_force_n", disturbance_force_n)
-    v.positive("measurement_noise_m", measurement_noise_m)
-    v.positive("pressure_scale_pa", pressure_scale_pa)
-    v.positive("clearance_m", clearance_m)
-    v.positive("performance_weight", performance_weight)
+    as_plant(p)
+    for field, val in (("disturbance_force_n", disturbance_force_n),
+                       ("measurement_noise_m", measurement_noise_m),
+                       ("pressure_scale_pa", pressure_scale_pa), ("clearance_m", clearance_m),
+                       ("performance_weight", performance_weight)):
+        scale(field, val)
     S = state_scales(p, clearance_m=clearance_m)
     c, ps = clearance_m, pressure_scale_pa
     A = p.A / S[:, None] * S[None, :]
@@ -84,8 +86,9 @@ def lower_lft_response(A, B, C, D, sizes, K, freqs_hz) -> np.ndarray:
     nw, nu, nz, ny = sizes
     Ak, Bk, Ck, Dk = K
     n, nk = A.shape[0], Ak.shape[0]
+    freqs_hz = frequencies("freqs_hz", freqs_hz)
     out = np.empty(len(freqs_hz))
-    for i, f in enumerate(np.asarray(freqs_hz, float)):
+    for i, f in enumerate(freqs_hz):
         s = 2j * np.pi * f
         P = C @ np.linalg.solve(s * np.eye(n) - A, B) + D
         Kw = Dk + (Ck @ np.linalg.solve(s * np.eye(nk) - Ak, Bk) if nk else 0)
@@ -107,8 +110,10 @@ def hinf(p, *, disturbance_force_n: float = 1.0, measurement_noise_m: float = 1e
     has ``gamma`` (the achieved bound on the scaled closed loop's H∞ norm), the generalized
     plant (``generalized_plant``) and the scaled controller (``controller_scaled``). Raises ImportError naming the ``hinf`` extra without slycot,
     InputError on bad weights or when SB10AD finds no admissible controller."""
+    as_plant(p)
+    v.in_range("gamma_tol", gamma_tol, 1e-12, 0.5)
+    v.text("name", name)
     sl = _slycot()
-    v.positive("gamma_tol", gamma_tol)
     A, B, C, D, sizes, (S, c, ps) = generalized_plant(
         p, disturbance_force_n=disturbance_force_n, measurement_noise_m=measurement_noise_m,
         pressure_scale_pa=pressure_scale_pa, clearance_m=clearance_m,

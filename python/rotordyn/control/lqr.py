@@ -9,8 +9,40 @@ import numpy as np
 from scipy.linalg import solve_continuous_are
 
 from rotordyn._common import validate as v
+from rotordyn.control._checks import keywords
+from rotordyn.control.plant import as_plant
+from rotordyn.errors import ConvergenceError
 from rotordyn.operation.controller import Controller
-from rotordyn.errors import InputError
+
+# Ranges of the design scales: beyond them the squares and inverses the Riccati equations are
+# built from leave float64 (1/p_s² of 1e-300 Pa is a division by zero, d₀² of 1e300 N an
+# overflow), and none is a physical size for this rig class (clearances 0.1 µm .. 1 m,
+# command scales 1 Pa .. 1 GPa, forces 1 nN .. 1 GN, sensor noise 1 fm .. 1 m).
+SCALE_RANGES = {"clearance_m": (1e-7, 1.0), "pressure_scale_pa": (1.0, 1e9),
+                "frequency_hz": (1e-3, 1e6), "state_weight": (0.0, 1e12),
+                "regularisation": (0.0, 1e6), "disturbance_force_n": (1e-9, 1e9),
+                "measurement_noise_m": (1e-15, 1.0), "process_noise": (1e-12, 1e12),
+                "performance_weight": (1e-9, 1e9)}
+WEIGHT_OPTIONS = ("clearance_m", "pressure_scale_pa", "state_weight", "regularisation")
+
+
+def scale(field: str, value) -> float:
+    """A design scale or weight within :data:`SCALE_RANGES` (zero excluded for scales)."""
+    lo, hi = SCALE_RANGES[field]
+    return v.in_range(field, value, lo, hi)
+
+
+def _riccati(where, *args):
+    """scipy's CARE solution, a failure (no stabilising solution, a singular pencil) or a
+    non-finite one as a ConvergenceError (a numerical failure, not an input error)."""
+    try:
+        X = solve_continuous_are(*args)
+    except (np.linalg.LinAlgError, ValueError) as exc:
+        raise ConvergenceError(f"{where}: the Riccati equation has no stabilising solution "
+                               f"for these weights ({exc})") from None
+    if not np.all(np.isfinite(X)):
+        raise ConvergenceError(f"{where}: the Riccati solution is not finite for these weights")
+    return X
 
 
 def state_scales(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 1e5,
@@ -19,6 +51,10 @@ def state_scales(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 1e5
     ``pressure_scale_pa`` for the actuator pressure (× its bandwidth for its rate); for a
     reduced plant (x_full = T x_r) the size of a modal coordinate that keeps every physical
     state within its typical size."""
+    as_plant(p)
+    scale("clearance_m", clearance_m)
+    scale("pressure_scale_pa", pressure_scale_pa)
+    scale("frequency_hz", frequency_hz)
     n = p.n_mech
     w = 2 * np.pi * frequency_hz
     s = np.concatenate([np.full(n, clearance_m), np.full(n, w * clearance_m)])
@@ -37,6 +73,8 @@ def default_weights(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 
     weighted by its typical size and the Riccati equation stays well posed),
     R = 1/p_s²: one clearance of journal motion costs as much as ``pressure_scale_pa`` of
     command."""
+    scale("state_weight", state_weight)
+    scale("regularisation", regularisation)
     Q = state_weight * (p.C_perf.T @ p.C_perf) / clearance_m**2
     s = state_scales(p, clearance_m=clearance_m, pressure_scale_pa=pressure_scale_pa)
     Q = Q + regularisation * np.diag(1.0 / s**2)
@@ -47,23 +85,25 @@ def default_weights(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 
 def lqr(p, Q=None, R=None, **kw):
     """Continuous LQR: K = R⁻¹ Bᵀ X with X the stabilising solution of the Riccati
     equation; u = −K x. Returns (K (1, n_x), closed-loop eigenvalues of A − B K)."""
-    if Q is None or R is None:
-        Q0, R0 = default_weights(p, **kw)
-        Q = Q0 if Q is None else Q
-        R = R0 if R is None else R
-    Q, R = np.atleast_2d(np.asarray(Q, float)), np.atleast_2d(np.asarray(R, float))
+    as_plant(p)
+    keywords("lqr", kw, WEIGHT_OPTIONS)
     n = p.A.shape[0]
-    if Q.shape != (n, n):
-        raise InputError(f"Q: expected shape ({n}, {n}), got {Q.shape}")
-    if R.shape != (1, 1) or not R[0, 0] > 0:
-        raise InputError("R: expected a positive 1x1 weight")
+    Q0, R0 = default_weights(p, **kw)  # checks the scales even when Q and R are given
+    Q = Q0 if Q is None else v.psd_matrix("Q", Q, n)
+    if R is None:
+        R = R0
+    else:
+        R = np.atleast_2d(R) if np.ndim(R) == 0 else R
+        R = v.psd_matrix("R", R, 1, definite=True)
     # Solved in scaled states x = S x̃ (S: typical state sizes) for conditioning.
     S = state_scales(p)
     As = p.A * (1 / S)[:, None] * S[None, :]
     Bs = p.B / S[:, None]
     Qs = Q * S[:, None] * S[None, :]
-    Xs = solve_continuous_are(As, Bs, Qs, R)
+    Xs = _riccati("lqr", As, Bs, Qs, R)
     K = np.linalg.solve(R, Bs.T @ Xs) / S[None, :]
+    if not np.all(np.isfinite(K)):
+        raise ConvergenceError("lqr: the gain is not finite for these weights")
     return K, np.linalg.eigvals(p.A - p.B @ K)
 
 
@@ -74,8 +114,11 @@ def lqg(p, Q=None, R=None, *, process_noise: float = 1.0, measurement_noise_m: f
     ``disturbance_force_n``² on the plant's disturbance inputs (or the command input when
     there are none) scaled by ``process_noise``, white measurement noise of intensity
     ``measurement_noise_m``² per signal. Returns a Controller (n_k = plant order)."""
-    v.positive("process_noise", process_noise)
-    v.positive("measurement_noise_m", measurement_noise_m)
+    as_plant(p)
+    scale("process_noise", process_noise)
+    scale("measurement_noise_m", measurement_noise_m)
+    scale("disturbance_force_n", disturbance_force_n)
+    v.text("name", name)
     K, _ = lqr(p, Q, R, **kw)
     G = p.Bd if p.Bd.shape[1] else p.B * 1e4  # 1e4 Pa of command noise as a stand-in
     Wn = process_noise * disturbance_force_n**2 * np.eye(G.shape[1])
@@ -83,8 +126,10 @@ def lqg(p, Q=None, R=None, *, process_noise: float = 1.0, measurement_noise_m: f
     S = state_scales(p)
     As = p.A * (1 / S)[:, None] * S[None, :]
     Gs, Cs = G / S[:, None], p.C * S[None, :]
-    Ys = solve_continuous_are(As.T, Cs.T, Gs @ Wn @ Gs.T, Vn)
+    Ys = _riccati("lqg (Kalman filter)", As.T, Cs.T, Gs @ Wn @ Gs.T, Vn)
     L = S[:, None] * (Ys @ Cs.T @ np.linalg.inv(Vn))
+    if not np.all(np.isfinite(L)):
+        raise ConvergenceError("lqg: the Kalman gain is not finite for these noise intensities")
     Ak = p.A - p.B @ K - L @ p.C
     return Controller(Ak, L, -K, np.zeros((1, p.C.shape[0])), p.measurements, name=name,
                       info={"K": K, "L": L, "plant_order": p.A.shape[0]})

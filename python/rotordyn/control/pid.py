@@ -10,15 +10,25 @@ import numpy as np
 from scipy.optimize import minimize
 
 from rotordyn._common import validate as v
+from rotordyn.control.plant import as_plant
+from rotordyn.errors import InputError
 from rotordyn.operation.controller import Controller
+
+# |gain| bound, Pa/m (Pa·s/m, Pa/(m·s)): 1e15 Pa/m is 1 GPa of command per micron, far beyond
+# any valve; with τ_d ≥ 0.1 µs every entry of the law (k_d / τ_d ≤ 1e22) stays finite.
+MAX_GAIN = 1e15
 
 
 def pid(kp: float, kd: float, ki: float = 0.0, *, tau_d_s: float = 2e-4,
         direction_deg: float = 90.0, bearing: int = 0, name: str = "pid") -> Controller:
     """The controller from the gains (Pa/m, Pa·s/m, Pa/(m·s)) on ("journal", bearing)."""
     for f, val in (("kp", kp), ("kd", kd), ("ki", ki)):
-        v.finite(f, val)
-    v.positive("tau_d_s", tau_d_s)
+        v.in_range(f, val, -MAX_GAIN, MAX_GAIN)
+    v.in_range("tau_d_s", tau_d_s, 1e-7, 1.0)
+    v.in_range("direction_deg", direction_deg, -360.0, 360.0)
+    v.integer("bearing", bearing, lo=0)
+    v.text("name", name)
+    kp, kd, ki, tau_d_s = float(kp), float(kd), float(ki), float(tau_d_s)
     c, s = math.cos(math.radians(direction_deg)), math.sin(math.radians(direction_deg))
     d = np.array([[c, s]])
     # states: derivative filter x_f (ẋ_f = (y_d − x_f)/τ, derivative = (y_d − x_f)/τ),
@@ -44,10 +54,32 @@ def tune_pd(p, *, kp0: float = 1e9, kd0: float = 1e6, ki: float = 0.0, tau_d_s: 
     from rotordyn.control.closedloop import closed_loop_matrix
     from rotordyn.results.modes import damping_ratio
 
+    as_plant(p)
+    if p.measurements != (("journal", 0),):
+        raise InputError(f"plant.measurements: tune_pd tunes a law on ('journal', 0); expected "
+                         f"a plant measuring [('journal', 0)], got {list(p.measurements)}")
+    for f, val in (("kp0", kp0), ("kd0", kd0)):
+        val = v.in_range(f, val, -MAX_GAIN, MAX_GAIN)
+        if abs(val) < 1e-3:
+            raise InputError(f"{f}: expected a starting gain with |{f}| in [1e-3, {MAX_GAIN:g}] "
+                             f"(the search scales it; its sign is tried both ways), got {val!r}")
+    v.in_range("ki", ki, -MAX_GAIN, MAX_GAIN)
+    v.in_range("tau_d_s", tau_d_s, 1e-7, 1.0)
+    v.in_range("direction_deg", direction_deg, -360.0, 360.0)
+    v.integer("max_iter", max_iter, lo=1, hi=100_000)
+    kp0, kd0 = float(kp0), float(kd0)
+
     def cost(z):
+        if not np.all(np.abs(z) <= MAX_GAIN):
+            return np.inf  # the search left the gains' range: not a candidate
         k = pid(z[0], z[1], ki, tau_d_s=tau_d_s, direction_deg=direction_deg)
-        lam = np.linalg.eigvals(closed_loop_matrix(p, k))
+        Acl = closed_loop_matrix(p, k)
+        if not np.all(np.isfinite(Acl)):
+            return np.inf
+        lam = np.linalg.eigvals(Acl)
         lam = lam[np.abs(lam) < 2 * np.pi * 2000]  # modes the law is meant to shape
+        if lam.size == 0:
+            return np.inf
         return -damping_ratio(lam).min()
 
     best = None

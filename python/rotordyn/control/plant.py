@@ -9,10 +9,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from rotordyn.analysis.statespace import statespace
 from rotordyn.analysis.measurement import measurement_matrix
-from rotordyn.operation.measurement import parse_measurements
+from rotordyn.analysis.statespace import statespace
+from rotordyn.control import _checks as chk
+from rotordyn.errors import InputError
 from rotordyn.operation.actuator import Actuator
+from rotordyn.operation.measurement import parse_measurements
 
 
 @dataclass(frozen=True)
@@ -55,9 +57,15 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
           actuator: Actuator | None = None, disturbance_stations=()) -> Plant:
     """Linear plant about the equilibrium at (speed, p_c, a_y) with the actuator's lag
     (Actuator(): a 100 Hz second-order valve; ``Actuator.ideal()`` for none)."""
-    act = Actuator() if actuator is None else actuator
+    speed_hz, chamber_pressure_pa, config_ay_m = chk.operating_point(
+        system, speed_hz, chamber_pressure_pa, config_ay_m)
+    act = chk.actuator(actuator)
     meas = parse_measurements(measurements)
-    inputs = [("chamber_pressure",)] + [("force", s) for s in disturbance_stations]
+    measurement_matrix(system, meas)  # a measurement that does not exist: before the solve
+    empty = not isinstance(disturbance_stations, (str, bytes, dict, int, np.integer)) \
+        and hasattr(disturbance_stations, "__len__") and len(disturbance_stations) == 0
+    dist = () if empty else chk.stations(system, disturbance_stations, "disturbance_stations")
+    inputs = [("chamber_pressure",)] + [("force", s) for s in dist]
     ss = statespace(system, inputs=inputs, speed_hz=speed_hz,
                     chamber_pressure_pa=chamber_pressure_pa, config_ay_m=config_ay_m)
     n2 = ss.A.shape[0]
@@ -80,3 +88,11 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
     states = tuple(ss.state_names) + tuple(f"actuator_{i}" for i in range(na))
     return Plant(A, B, C, Bd, Cp, meas, names, states, act, float(speed_hz),
                  float(chamber_pressure_pa), config_ay_m, n2 // 2)
+
+
+def as_plant(value, field: str = "plant") -> Plant:
+    """``value`` if it is a :class:`Plant` (from :func:`plant` or a reduction of one)."""
+    if not isinstance(value, Plant):
+        raise InputError(f"{field}: expected a rotordyn.control.plant.Plant (from "
+                         f"rotordyn.control.plant.plant()), got {type(value).__name__}")
+    return value

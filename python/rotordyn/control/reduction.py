@@ -10,6 +10,16 @@ import numpy as np
 from scipy.linalg import eig
 
 from rotordyn._common import validate as v
+from rotordyn.control.plant import as_plant
+from rotordyn.errors import InputError
+
+
+def _check_grid(check_hz, n_check):
+    """The error grid: (low, high) Hz with 0 < low < high, 2 .. 100000 points."""
+    lo, hi = v.bounds("check_hz", check_hz)
+    if not lo > 0:
+        raise InputError(f"check_hz: expected 0 < low < high (Hz), got {check_hz!r}")
+    return (lo, hi), v.integer("n_check", n_check, lo=2, hi=100_000)
 
 
 def _freqresp(A, B, C, w):
@@ -25,7 +35,10 @@ def modal_truncation(p, max_frequency_hz: float = 500.0, *, keep_actuator: bool 
     their DC gain, so the low-frequency response is exact). Returns (plant_r, info) with
     info["hinf_error"], info["hinf_full"] (max over a log grid in ``check_hz``) and the kept
     eigenvalues."""
-    v.positive("max_frequency_hz", max_frequency_hz)
+    as_plant(p)
+    v.in_range("max_frequency_hz", max_frequency_hz, 0.0, 1e7, lo_open=True)
+    v.boolean("keep_actuator", keep_actuator)
+    check_hz, n_check = _check_grid(check_hz, n_check)
     A, B, C, Bd = p.A, p.B, p.C, p.Bd
     lam, V = eig(A)
     W = np.linalg.inv(V)
@@ -86,8 +99,9 @@ def balanced_truncation(p, order: int, *, check_hz=(1.0, 2000.0), n_check: int =
     from scipy.linalg import cholesky, schur, solve_continuous_lyapunov, solve_sylvester, svd
 
     from rotordyn.control.lqr import state_scales
-    from rotordyn.errors import InputError
 
+    as_plant(p)
+    check_hz, n_check = _check_grid(check_hz, n_check)
     S = state_scales(p)
     A = p.A * (1 / S)[:, None] * S[None, :]
     Ball = np.hstack([p.B, p.Bd]) / S[:, None]

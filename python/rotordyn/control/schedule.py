@@ -13,6 +13,7 @@ import pandas as pd
 from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.linear import continued_linear_models
+from rotordyn.control import _checks as chk
 from rotordyn.errors import InputError
 from rotordyn.results.modes import damping_ratio
 from rotordyn.units import hz_to_rad_s
@@ -58,6 +59,10 @@ def linear_model_grid(system, sp, pp, config_ay_m):
     pressure, K_H and D_H by perturbation. Yields (i, j, status, model, ω rad/s, least damping
     ratio of all modes); model and ω are None and the ratio NaN unless the status is ok.
     Shared by the open-loop schedule and the synchronous bound."""
+    chk.system(system)
+    sp = chk.speeds("speeds_hz", sp)
+    pp = chk.pressures("pressures_pa", pp)
+    config_ay_m = chk.config_ay(system, config_ay_m)
     for j, p in enumerate(pp):
         for i, stt, lm in continued_linear_models(system, sp, float(p), config_ay_m,
                                                   "perturbation", continue_on=("ok",)):
@@ -79,16 +84,26 @@ def pressure_schedule(system, unbalances, speeds_hz, pressures_pa, *, stations=N
     p_min_pa ≤ p_c ≤ p_max_pa. ``smooth_pa_per_hz``: optional limit on the schedule's slope
     (a dynamic-programming pass over the grid; None: pointwise choice).
     ``unbalances`` as in :func:`rotordyn.unbalance_response`."""
-    sp = np.asarray(speeds_hz, dtype=float)
-    pp = np.asarray(pressures_pa, dtype=float)
-    if sp.ndim != 1 or sp.size < 1 or np.any(np.diff(sp) <= 0) or np.any(sp <= 0):
-        raise InputError("speeds_hz: expected increasing positive speeds")
-    if pp.ndim != 1 or pp.size < 1 or not np.all(np.isfinite(pp)) or np.any(pp < 0):
-        raise InputError("pressures_pa: expected a 1-D array of pressures >= 0")
+    chk.system(system)
+    ub = chk.unbalances(system, unbalances)
+    sp = chk.speeds("speeds_hz", speeds_hz)
+    pp = chk.pressures("pressures_pa", pressures_pa)
+    outs = chk.stations(system, stations) if stations is not None \
+        else tuple(dict.fromkeys(s for s, _, _ in ub))
+    config_ay_m = chk.config_ay(system, config_ay_m)
     v.in_range("min_damping", min_damping, -1.0, 1.0)
+    p_min_pa = v.non_negative("p_min_pa", p_min_pa)
+    p_max_pa = v.positive("p_max_pa", p_max_pa)
+    if not p_min_pa < p_max_pa:
+        raise InputError(f"p_min_pa/p_max_pa: expected p_min_pa < p_max_pa, got {p_min_pa!r} "
+                         f"and {p_max_pa!r}")
+    if not np.any((pp >= p_min_pa) & (pp <= p_max_pa)):
+        raise InputError(f"pressures_pa: expected at least one grid pressure inside "
+                         f"[p_min_pa, p_max_pa] = [{p_min_pa:g}, {p_max_pa:g}] Pa, got "
+                         f"{pp.min():g} .. {pp.max():g}")
+    if smooth_pa_per_hz is not None:
+        v.positive("smooth_pa_per_hz", smooth_pa_per_hz)
     asm = assembled(system)
-    ub = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
-    outs = tuple(stations) if stations is not None else tuple(dict.fromkeys(s for s, _, _ in ub))
     Cout = [asm.station_output_matrix(s) for s in outs]
     F1 = asm.unbalance_load(ub)
     amp = np.full((sp.size, pp.size, len(outs)), np.nan)
@@ -111,7 +126,6 @@ def pressure_schedule(system, unbalances, speeds_hz, pressures_pa, *, stations=N
     if smooth_pa_per_hz is None:
         jbest = np.argmin(cost, axis=1)
     else:
-        v.positive("smooth_pa_per_hz", smooth_pa_per_hz)
         # Minimise the largest amplitude along the path (min-max DP) under the slope limit.
         ok_move = np.abs(pp[:, None] - pp[None, :])
         acc = cost[0].copy()

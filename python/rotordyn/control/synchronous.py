@@ -28,8 +28,9 @@ import pandas as pd
 
 from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import assembled
-from rotordyn.errors import InputError
+from rotordyn.control import _checks as chk
 from rotordyn.control.schedule import linear_model_grid
+from rotordyn.errors import InputError
 
 _GOLD = (np.sqrt(5.0) - 1.0) / 2.0
 
@@ -65,9 +66,21 @@ def minimise_semi_major(a, b, limit, *, iters: int = 40):
     Re p (outer) and Im p (inner) on the box |Re p|, |Im p| ≤ limit, with the exact penalty
     L·max(0, |p| − limit) (L = 2 × the objective's Lipschitz constant), so the minimiser
     is the constrained one."""
-    a = np.asarray(a, complex)
-    b = np.asarray(b, complex)
-    lim = np.asarray(limit, float)
+    v.integer("iters", iters, lo=1, hi=200)
+    try:
+        a = np.asarray(a, complex)
+        b = np.asarray(b, complex)
+    except (TypeError, ValueError):
+        raise InputError("a, b: expected complex arrays of shape (N, n_st, 2)") from None
+    if a.ndim != 3 or a.shape[2] != 2 or b.shape != a.shape or a.shape[1] < 1:
+        raise InputError(f"a, b: expected complex arrays of the same shape (N, n_st, 2), got "
+                         f"{a.shape} and {b.shape}")
+    if not (np.all(np.isfinite(a)) and np.all(np.isfinite(b))):
+        raise InputError("a, b: expected finite amplitudes")
+    lim = v.vector("limit", np.ravel(limit) if np.ndim(limit) else [limit] * a.shape[0],
+                   a.shape[0])
+    if np.any(lim < 0):
+        raise InputError(f"limit: expected amplitude limits >= 0 Pa, got {float(lim.min())!r}")
     L = 2.0 * (np.abs(b[..., 0]) + np.abs(b[..., 1])).max(axis=1) + 1e-300
 
     def F(u, w):
@@ -86,7 +99,14 @@ def minimise_semi_major(a, b, limit, *, iters: int = 40):
 
 
 def _references(references_m, ns, nst):
-    ref = np.ones(nst) if references_m is None else np.asarray(references_m, float)
+    if references_m is None:
+        ref = np.ones(nst)
+    elif np.ndim(references_m) == 0:
+        ref = np.array([v.positive("references_m", references_m)])
+    elif np.ndim(references_m) == 1:
+        ref = v.vector("references_m", references_m)
+    else:
+        ref = v.matrix("references_m", references_m)
     try:
         ref = np.broadcast_to(ref, (ns, nst)).copy()
     except ValueError:
@@ -145,6 +165,7 @@ class SynchronousBound:
         return np.degrees(np.angle(p_hat)) + 90.0
 
     def column(self, pressure_pa: float) -> int:
+        pressure_pa = v.finite("pressure_pa", pressure_pa)
         j = int(np.argmin(np.abs(self.pressures_pa - pressure_pa)))
         if not np.isclose(self.pressures_pa[j], pressure_pa, rtol=0, atol=1e-6):
             raise InputError(f"pressure_pa: {pressure_pa} is not on the grid "
@@ -157,6 +178,7 @@ class SynchronousBound:
         needed for stability). Returns (p₀ (n_s,), objective (n_s,), index (n_s,))."""
         obj = np.where(self.status == "ok", self.objective, np.inf)
         if min_damping is not None:
+            v.in_range("min_damping", min_damping, -1.0, 1.0)
             obj = np.where(self.min_damping_ratio >= min_damping, obj, np.inf)
         j = np.argmin(obj, axis=1)
         val = obj[np.arange(obj.shape[0]), j]
@@ -168,14 +190,22 @@ class SynchronousBound:
         ((n_st,) or (n_s, n_st), m; e.g. (1e-6, 1) to minimise the first station alone)."""
         ns, nst = self.speeds_hz.size, len(self.stations)
         ref = _references(references_m, ns, nst)
+        v.integer("iters", iters, lo=10, hi=200)
         return _optimise(self.speeds_hz, self.pressures_pa, self.stations, self.a, self.b,
                          self.limit_pa, self.min_damping_ratio, self.status, ref, iters)
 
     def harmonic_schedule(self, pressure_pa, speeds_hz=None):
         """Amplitude (Pa) and unwrapped phase (deg) tables of the optimal 1× command over the
         speeds, at the mean pressure ``pressure_pa`` (a grid value, or an array of grid values
-        per speed — e.g. a static schedule). Returns (speeds_hz, amplitude_pa, phase_deg)."""
-        pp = np.broadcast_to(np.asarray(pressure_pa, float), self.speeds_hz.shape)
+        per speed — e.g. a static schedule). Returns (speeds_hz, amplitude_pa, phase_deg).
+        ``speeds_hz``: must be None (the tables are on the bound's own speeds)."""
+        if speeds_hz is not None:
+            raise InputError("speeds_hz: expected None (the tables are on the bound's own "
+                             "speeds; interpolate them or compute the bound on other speeds)")
+        if np.ndim(pressure_pa) == 0:
+            pp = np.full(self.speeds_hz.shape, v.finite("pressure_pa", pressure_pa))
+        else:
+            pp = v.vector("pressure_pa", pressure_pa, self.speeds_hz.size)
         j = np.array([self.column(p) for p in pp])
         ph = self.p_hat_pa[np.arange(self.speeds_hz.size), j]
         ok = np.isfinite(ph)
@@ -196,29 +226,20 @@ def synchronous_bound(system, unbalances, speeds_hz, pressures_pa, *, stations,
     :class:`~rotordyn.control.Actuator`, 100 Hz): its lag H(iΩ) is in the map and its limits
     bound the command, |p̂| ≤ min(p₀ − p_min, p_max − p₀). Equilibria are continued in speed at
     each pressure (as :func:`rotordyn.control.schedule.pressure_schedule`)."""
-    from rotordyn.operation.actuator import Actuator
-
-    act = Actuator() if actuator is None else actuator
-    sp = np.asarray(speeds_hz, dtype=float)
-    pp = np.asarray(pressures_pa, dtype=float)
-    if sp.ndim != 1 or sp.size < 1 or np.any(np.diff(sp) <= 0) or np.any(sp <= 0):
-        raise InputError("speeds_hz: expected increasing positive speeds")
-    if pp.ndim != 1 or pp.size < 1 or not np.all(np.isfinite(pp)):
-        raise InputError("pressures_pa: expected a 1-D array of finite pressures")
+    chk.system(system)
+    act = chk.actuator(actuator)
+    ub = chk.unbalances(system, unbalances)
+    sp = chk.speeds("speeds_hz", speeds_hz)
+    pp = chk.pressures("pressures_pa", pressures_pa)
     if np.any(pp < act.p_min_pa) or np.any(pp > act.p_max_pa):
         raise InputError(f"pressures_pa: expected mean pressures inside the valve's limits "
                          f"[{act.p_min_pa}, {act.p_max_pa}] Pa")
+    st = chk.stations(system, stations)
+    config_ay_m = chk.config_ay(system, config_ay_m)
     v.integer("iters", iters, lo=10, hi=200)
+    ref = _references(references_m, sp.size, len(st))
     asm = assembled(system)
-    try:
-        Cout = [asm.station_output_matrix(s) for s in stations]
-    except InputError as exc:
-        raise InputError(f"stations: {exc}") from None
-    if not Cout:
-        raise InputError("stations: expected at least one station")
-    ub = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
-    if not ub:
-        raise InputError("unbalances: expected at least one (station, mass_kg_m, phase_deg)")
+    Cout = [asm.station_output_matrix(s) for s in st]
     F1 = asm.unbalance_load(ub)
     num, den = act.transfer_function()
     ns, npp, nst = sp.size, pp.size, len(Cout)
@@ -239,10 +260,9 @@ def synchronous_bound(system, unbalances, speeds_hz, pressures_pa, *, stations,
         if not (np.all(np.isfinite(a[i, j])) and np.all(np.isfinite(b[i, j]))
                 and np.isfinite(zm)):
             status[i, j] = "error"  # never an ok point with a non-finite response
-    ref = _references(references_m, ns, nst)
     lim = np.minimum(pp - act.p_min_pa, act.p_max_pa - pp)
     lim = np.broadcast_to(lim[None, :], (ns, npp)).copy()
-    return _optimise(sp, pp, tuple(stations), a, b, lim, zmin, status, ref, iters)
+    return _optimise(sp, pp, st, a, b, lim, zmin, status, ref, iters)
 
 
 def _optimise(sp, pp, stations, a, b, lim, zmin, status, ref, iters):

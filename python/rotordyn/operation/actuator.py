@@ -24,7 +24,6 @@ from rotordyn._common import validate as v
 from rotordyn.errors import InputError
 from rotordyn.units import hz_to_rad_s
 
-
 DEFAULT_P_MIN_PA = 0.0
 DEFAULT_P_MAX_PA = 1.0e6
 
@@ -49,20 +48,25 @@ class Actuator:
 
     def __post_init__(self):
         v.integer("actuator.order", self.order, lo=0, hi=2)
-        if self.order == 1:
-            v.positive("actuator.time_constant_s", self.time_constant_s)
-        if self.order == 2:
-            v.positive("actuator.natural_frequency_hz", self.natural_frequency_hz)
-            v.positive("actuator.damping", self.damping)
+        # Every field by its range, whatever the order (an unused one is still a number):
+        # 0.1 µs .. 1000 s lag, (0, 1 MHz] valve, damping (0, 100] — beyond these ω² or 1/τ
+        # leave the range where the closed loop's matrices stay finite.
+        v.in_range("actuator.time_constant_s", self.time_constant_s, 1e-7, 1e3)
+        v.in_range("actuator.natural_frequency_hz", self.natural_frequency_hz, 0.0, 1e6,
+                   lo_open=True)
+        v.in_range("actuator.damping", self.damping, 0.0, 100.0, lo_open=True)
         for name in ("p_min_pa", "p_max_pa"):
             val = getattr(self, name)
-            if not isinstance(val, (int, float, np.floating, np.integer)) or math.isnan(val):
-                raise InputError(f"actuator.{name}: expected a number, got {val!r}")
+            if isinstance(val, (bool, np.bool_)) or not isinstance(
+                    val, (int, float, np.floating, np.integer)) or math.isnan(val):
+                raise InputError(f"actuator.{name}: expected a number (Pa; ±inf: no limit), "
+                                 f"got {val!r}")
         if not self.p_min_pa < self.p_max_pa:
             raise InputError(f"actuator.p_min_pa/p_max_pa: expected p_min_pa < p_max_pa, got "
                              f"{self.p_min_pa!r} and {self.p_max_pa!r}")
         r = self.rate_limit_pa_s
-        if not isinstance(r, (int, float, np.floating, np.integer)) or not r > 0:
+        if isinstance(r, (bool, np.bool_)) or not isinstance(
+                r, (int, float, np.floating, np.integer)) or not r > 0:
             raise InputError(f"actuator.rate_limit_pa_s: expected > 0 Pa/s (inf: none), got {r!r}")
         if self.order == 0 and math.isfinite(r):
             raise InputError("actuator.rate_limit_pa_s: a rate limit needs actuator dynamics "

@@ -11,18 +11,36 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
-from rotordyn.operation.measurement import parse_measurements
 from rotordyn.errors import InputError
+from rotordyn.operation.measurement import parse_measurements
 
 
 def _mat(name, M):
-    try:
-        M = np.atleast_2d(np.asarray(M, dtype=float))
-    except (TypeError, ValueError):
-        raise InputError(f"controller.{name}: expected a numeric matrix") from None
-    if M.ndim != 2 or not np.all(np.isfinite(M)):
-        raise InputError(f"controller.{name}: expected a finite 2-D matrix")
-    return M
+    return v.matrix(f"controller.{name}", M)
+
+
+MIN_SAMPLE_TIME_S = 1e-7  # 10 MHz: a sample time (or noise grid) below it is not physical
+MAX_SAMPLE_TIME_S = 1.0
+
+
+def _noise_std(value, ny):
+    """A scalar or ``ny`` standard deviations >= 0 (m or m/s)."""
+    if np.ndim(value) == 0:
+        return v.non_negative("controller.noise_std", value)
+    arr = v.vector("controller.noise_std", value, ny)
+    if np.any(arr < 0):
+        raise InputError(f"controller.noise_std: expected values >= 0, got {float(arr.min())!r}")
+    return arr
+
+
+_OPTIONS = ("sample_time_s", "noise_std", "noise_dt_s", "seed", "name", "info")
+
+
+def _options(kw):
+    bad = sorted(set(kw) - set(_OPTIONS))
+    if bad:
+        raise InputError(f"controller: unknown option(s) {', '.join(bad)}; expected any of "
+                         f"{', '.join(_OPTIONS)}")
 
 
 @dataclass(frozen=True)
@@ -70,13 +88,24 @@ class Controller:
             object.__setattr__(self, k, M)
         st = self.sample_time_s
         if st is not None:
-            if isinstance(st, bool) or not isinstance(st, (int, float, np.floating, np.integer)) \
-                    or not np.isfinite(st) or st <= 0:
-                raise InputError(f"controller.sample_time_s: expected > 0 s for a discrete "
-                                 f"controller (None: continuous), got {st!r}")
-            object.__setattr__(self, "sample_time_s", float(st))
-        v.positive("controller.noise_dt_s", self.noise_dt_s)
+            # Bounded by something physical: 10 MHz sampling at the fastest (beyond it the
+            # ZOH map e^{AT} is the identity to round-off and ln z / T blows up), 1 Hz at the
+            # slowest (slower than any rotor mode of interest; e^{AT} overflows long before
+            # T = 1e300).
+            try:
+                st = v.in_range("controller.sample_time_s", st, MIN_SAMPLE_TIME_S,
+                                MAX_SAMPLE_TIME_S)
+            except InputError as exc:
+                raise InputError(f"{exc} (a discrete controller's sample time, s; None: "
+                                 f"continuous)") from None
+            object.__setattr__(self, "sample_time_s", st)
+        object.__setattr__(self, "noise_dt_s", v.in_range(
+            "controller.noise_dt_s", self.noise_dt_s, MIN_SAMPLE_TIME_S, MAX_SAMPLE_TIME_S))
+        object.__setattr__(self, "noise_std", _noise_std(self.noise_std, ny))
         v.integer("controller.seed", self.seed, lo=0)
+        v.text("controller.name", self.name)
+        if not isinstance(self.info, dict):
+            raise InputError(f"controller.info: expected a dict, got {type(self.info).__name__}")
 
     @property
     def n_inputs(self) -> int:
@@ -93,7 +122,8 @@ class Controller:
     @classmethod
     def static(cls, gains, measurements, **kw) -> "Controller":
         """u = gains · y (no states), e.g. a PD law on journal displacement and velocity."""
-        g = np.atleast_2d(np.asarray(gains, dtype=float))
+        _options(kw)
+        g = v.matrix("controller.gains", gains)
         return cls(np.zeros((0, 0)), np.zeros((0, g.shape[1])), np.zeros((1, 0)), g,
                    measurements, **kw)
 
@@ -104,6 +134,7 @@ class Controller:
         time; ``dt=True`` (unspecified) is rejected."""
         import control
 
+        _options(kw)
         if isinstance(sys, control.TransferFunction):
             sys = control.ss(sys)
         if not isinstance(sys, control.StateSpace):
@@ -127,6 +158,7 @@ class Controller:
 
     def scaled(self, gain: float) -> "Controller":
         """The same controller with its output multiplied by ``gain``."""
+        v.finite("gain", gain)
         return Controller(self.A, self.B, gain * self.C, gain * self.D, self.measurements,
                           self.sample_time_s, self.noise_std, self.noise_dt_s, self.seed,
                           self.name, dict(self.info))
@@ -135,6 +167,10 @@ class Controller:
         d = dict(A=self.A, B=self.B, C=self.C, D=self.D, measurements=self.measurements,
                  sample_time_s=self.sample_time_s, noise_std=self.noise_std,
                  noise_dt_s=self.noise_dt_s, seed=self.seed, name=self.name, info=self.info)
+        bad = sorted(set(kw) - set(d))
+        if bad:
+            raise InputError(f"controller: unknown option(s) {', '.join(bad)}; expected any "
+                             f"of {', '.join(d)}")
         d.update(kw)
         return Controller(**d)
 
@@ -142,7 +178,7 @@ class Controller:
         """The controller behind a first-order high-pass s/(s + a), a = 2π·corner_hz, on every
         measurement: slow drifts (the equilibrium moving during a run-up) no longer feed
         the law. States [x_w (n_y); x_k]."""
-        v.positive("corner_hz", corner_hz)
+        v.in_range("corner_hz", corner_hz, 0.0, 1e6, lo_open=True)
         a = 2 * np.pi * corner_hz
         ny, nk = self.n_inputs, self.n_states
         A = np.block([[-a * np.eye(ny), np.zeros((ny, nk))], [-a * self.B, self.A]])
@@ -163,10 +199,7 @@ class Controller:
         k.measurement = Cm
         k.offset = offset
         k.sample_time = float(self.sample_time_s or 0.0)
-        ns = np.broadcast_to(np.asarray(self.noise_std, dtype=float), (ny,)).copy() \
-            if np.ndim(self.noise_std) == 0 else np.asarray(self.noise_std, dtype=float)
-        if ns.shape != (ny,) or not np.all(np.isfinite(ns)) or np.any(ns < 0):
-            raise InputError(f"controller.noise_std: expected a scalar or {ny} values >= 0")
+        ns = np.broadcast_to(np.asarray(self.noise_std, dtype=float), (ny,)).copy()
         if np.any(ns > 0):
             k.noise_std = ns
             k.noise_dt = float(self.noise_dt_s)

@@ -16,11 +16,8 @@ from rotordyn.units import hz_to_rad_s
 
 
 def _table(name, x, y, *, x_positive=False):
-    try:
-        x = np.asarray(x, dtype=float).ravel()
-        y = np.asarray(y, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InputError(f"{name}: expected two numeric arrays") from None
+    x = v.vector(f"{name} abscissae", np.ravel(x) if isinstance(x, np.ndarray) else x)
+    y = v.vector(f"{name} values", np.ravel(y) if isinstance(y, np.ndarray) else y)
     if x.size == 0 or x.size != y.size:
         raise InputError(f"{name}: expected arrays of the same non-zero length, got "
                          f"{x.size} and {y.size}")
@@ -43,26 +40,30 @@ class SpeedProfile:
 
     @classmethod
     def constant(cls, speed_hz: float) -> "SpeedProfile":
-        v.finite("speed_hz", speed_hz)
-        return cls(np.zeros(1), np.array([float(speed_hz)]))
+        return cls(np.zeros(1), np.array([v.speed("speed_hz", speed_hz)]))
 
     @classmethod
     def ramp(cls, start_hz: float, stop_hz: float, rate_hz_per_s: float,
              t_start_s: float = 0.0) -> "SpeedProfile":
         """Run-up (stop > start) or coast-down at |rate| Hz/s from ``t_start_s``; constant
         before and after."""
-        v.finite("start_hz", start_hz)
-        v.finite("stop_hz", stop_hz)
-        v.positive("rate_hz_per_s", rate_hz_per_s)
-        v.non_negative("t_start_s", t_start_s)
+        start_hz, stop_hz = v.speed("start_hz", start_hz), v.speed("stop_hz", stop_hz)
+        rate_hz_per_s = v.positive("rate_hz_per_s", rate_hz_per_s)
+        t_start_s = v.non_negative("t_start_s", t_start_s)
         if stop_hz == start_hz:
             raise InputError("stop_hz: expected a speed different from start_hz")
         t1 = t_start_s + abs(stop_hz - start_hz) / rate_hz_per_s
+        if not math.isfinite(t1) or t1 <= t_start_s:
+            raise InputError(f"rate_hz_per_s: the ramp from {start_hz:g} to {stop_hz:g} Hz at "
+                             f"{rate_hz_per_s!r} Hz/s has no finite, resolvable duration")
         return cls(np.array([t_start_s, t1]), np.array([float(start_hz), float(stop_hz)]))
 
     @classmethod
     def table(cls, t_s, speed_hz) -> "SpeedProfile":
         t, s = _table("speed_profile", t_s, speed_hz, x_positive=True)
+        if np.any(np.abs(s) > v.MAX_SPEED_HZ):
+            raise InputError(f"speed_profile values: expected speeds in [-{v.MAX_SPEED_HZ:g}, "
+                             f"{v.MAX_SPEED_HZ:g}] Hz")
         return cls(t, s)
 
     def speed_at(self, t_s) -> np.ndarray:
