@@ -16,7 +16,7 @@ PY_DEPS  := numpy scipy pandas pyarrow "dask[distributed]" matplotlib threadpool
 # wheels only (no Fortran build from source): a machine without a wheel still builds and
 # tests, the H∞ tests skip with the reason.
 PY_OPT_DEPS := "slycot>=0.6"
-SOURCES := $(shell find cpp python cmake -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.py' -o -name '*.txt' -o -name '*.toml' -o -name '*.cmake' -o -name '*.pyi' -o -name 'py.typed' \) 2>/dev/null) CMakeLists.txt pyproject.toml
+SOURCES := $(shell find cpp python cmake sweeps -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.py' -o -name '*.txt' -o -name '*.toml' -o -name '*.cmake' -o -name '*.pyi' -o -name 'py.typed' \) 2>/dev/null) CMakeLists.txt pyproject.toml
 OUT ?= out
 
 .PHONY: run test test-cpp test-py install sysdeps bench clean distclean sanitize fuzz

@@ -69,3 +69,21 @@ def test_stability_map_grid_dotted_axis_and_labels():
     assert ax.get_xlabel() == "bearings.0.clearance (mm)" and axis_scale("x_m") == 1e3
     assert axis_label("bearings.0.viscosity_pa_s") == "bearings.0.viscosity (Pa·s)"
     assert axis_label("rotor.disks.1.mass_kg") == "rotor.disks.1.mass (kg)"
+
+
+def test_builtin_specs_load_from_any_directory(tmp_path, monkeypatch):
+    """``rotordyn sweep fig9_stability_map`` (and the repository path ``sweeps/…toml``) from a
+    directory outside the clone: the specs ship with the package (it worked only from the
+    repository root)."""
+    from rotordyn.sweep.spec import SweepSpec, builtin_specs
+
+    monkeypatch.chdir(tmp_path)
+    assert "fig9_stability_map" in builtin_specs()
+    a = SweepSpec.from_toml("fig9_stability_map", check_model=False)
+    b = SweepSpec.from_toml("sweeps/fig9_stability_map.toml", check_model=False)
+    c = SweepSpec.from_toml("fig9-stability-map", check_model=False)
+    assert a.source == b.source == c.source and a.analysis == "stability"
+    with pytest.raises(rd.InputError, match="nor a built-in spec .*fig9_stability_map"):
+        SweepSpec.from_toml("no_such_spec")
+    with pytest.raises(rd.InputError, match="nor a built-in spec"):
+        SweepSpec.from_toml("elsewhere/fig9_stability_map.toml")

@@ -195,6 +195,32 @@ def _flatten(grid: dict, prefix: str = "") -> dict:
     return out
 
 
+def _spec_dirs() -> list[Path]:
+    """Where built-in specs are: installed beside this module (CMake installs the
+    repository's ``sweeps/`` there), else the source tree's ``sweeps/``."""
+    here = Path(__file__).resolve().parent
+    return [d for d in (here / "specs", here.parents[2] / "sweeps") if d.is_dir()]
+
+
+def builtin_specs() -> list[str]:
+    """Names of the built-in sweep specs (file stems, e.g. ``fig9_stability_map``)."""
+    return sorted({f.stem for d in _spec_dirs() for f in d.glob("*.toml")})
+
+
+def builtin_spec_path(name: str) -> Path:
+    """The file of built-in spec ``name`` (``fig9_stability_map``, ``fig9-stability-map``, or
+    the repository path ``sweeps/fig9_stability_map.toml`` given from another directory);
+    InputError naming the spec and the built-in names otherwise."""
+    q = Path(name)
+    if str(q.parent) in (".", "sweeps"):
+        stem = q.name.removesuffix(".toml").replace("-", "_")
+        for d in _spec_dirs():
+            if (d / f"{stem}.toml").is_file():
+                return d / f"{stem}.toml"
+    raise InputError(f"spec: no such file {name!r}, nor a built-in spec (built-in: "
+                     f"{', '.join(builtin_specs()) or 'none installed'})")
+
+
 @dataclass(frozen=True)
 class SweepSpec:
     """A parsed sweep: ``axes`` maps each axis name to its values (first axis outermost)."""
@@ -211,9 +237,12 @@ class SweepSpec:
     # -- loading -----------------------------------------------------------------------
     @classmethod
     def from_toml(cls, path, *, check_model: bool = True) -> "SweepSpec":
+        """A spec file, or a built-in spec by name (:func:`builtin_specs`: the repository's
+        ``sweeps/*.toml``, shipped with the package, so ``rotordyn sweep fig9_stability_map``
+        runs from any directory)."""
         p = Path(path)
         if not p.is_file():
-            raise InputError(f"spec: no such file {str(p)!r}")
+            p = builtin_spec_path(str(path))
         try:
             text = p.read_text(encoding="utf-8")
             doc = tomllib.loads(text)
