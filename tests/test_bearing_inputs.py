@@ -161,3 +161,27 @@ def test_cli_modes_without_bearings_flag(capsys):
     assert main(["modes", path]) == 2
     assert "without_bearings" in capsys.readouterr().err
     assert main(["modes", path, "--without-bearings", "--json"]) == 0
+
+
+# -- issue 18: the model file keeps a disk's geometry ---------------------------------------
+def test_disk_geometry_round_trips_and_a_toml_disk_may_give_only_geometry(tmp_path):
+    steel = rd.STEEL
+    d = rd.Disk.from_geometry(2, steel, width_m=0.07, outer_diameter_m=0.28,
+                              inner_diameter_m=0.05, name="impeller 1")
+    assert (d.outer_diameter_m, d.inner_diameter_m, d.width_m, d.material) == \
+        (0.28, 0.05, 0.07, "steel")
+    s = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    s2 = dataclasses.replace(s, rotor=rd.Rotor(s.rotor.sections, (d,)))
+    text = s2.to_toml()
+    assert "outer_diameter_m = 0.28" in text and 'name = "impeller 1"' in text
+    assert rd.System.from_toml(text, is_text=True) == s2  # to_toml dropped the geometry
+    only = text.replace(f"mass_kg = {d.mass_kg!r}\n", "").replace(
+        f"ip_kg_m2 = {d.ip_kg_m2!r}\n", "").replace(f"id_kg_m2 = {d.id_kg_m2!r}\n", "")
+    assert "mass_kg" not in only.split("[[disk]]")[1].split("[")[0]
+    back = rd.System.from_toml(only, is_text=True).rotor.disks[0]
+    assert back.mass_kg == pytest.approx(d.mass_kg, rel=1e-12)
+    with pytest.raises(rd.InputError, match=r"disk\[0\]: expected mass_kg.*missing"):
+        rd.System.from_toml(only.replace("width_m = 0.07\n", ""), is_text=True)
+    with pytest.raises(rd.InputError, match="inner_diameter_m: expected a value below"):
+        rd.Disk.from_geometry(2, steel, width_m=0.07, outer_diameter_m=0.2,
+                              inner_diameter_m=0.3)

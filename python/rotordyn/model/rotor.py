@@ -128,30 +128,57 @@ class ShaftSection:
 
 @dataclass(frozen=True, slots=True)
 class Disk:
-    """Rigid disk at a station: mass, polar (ip) and diametral (id) moments of inertia."""
+    """Rigid disk at a station: mass, polar (ip) and diametral (id) moments of inertia.
+
+    The geometry it was made from (:meth:`from_geometry`: ``outer_diameter_m``,
+    ``inner_diameter_m``, ``width_m``, ``material``) is kept when known, for the drawing and the
+    model file (the TOML writes it beside the inertias; a TOML disk may give only the geometry
+    and its material, the inertias are then computed)."""
 
     station: int
     mass_kg: float
     ip_kg_m2: float
     id_kg_m2: float
+    outer_diameter_m: float | None = None
+    inner_diameter_m: float | None = None
+    width_m: float | None = None
+    material: str = ""
+    name: str = ""
 
     def check(self, where: str, n_stations: int) -> None:
         v.integer(f"{where}.station", self.station, lo=0, hi=n_stations - 1)
         v.non_negative(f"{where}.mass_kg", self.mass_kg)
         v.non_negative(f"{where}.ip_kg_m2", self.ip_kg_m2)
         v.non_negative(f"{where}.id_kg_m2", self.id_kg_m2)
+        v.text(f"{where}.material", self.material)
+        v.text(f"{where}.name", self.name)
+        if self.outer_diameter_m is not None:
+            do = v.positive(f"{where}.outer_diameter_m", self.outer_diameter_m)
+            plausibility.length(f"{where}.outer_diameter_m", do)
+            if self.inner_diameter_m is not None:
+                di = v.non_negative(f"{where}.inner_diameter_m", self.inner_diameter_m)
+                if di >= do:
+                    raise InputError(f"{where}.inner_diameter_m: expected a value below "
+                                     f"outer_diameter_m = {do!r}, got {di!r}")
+        if self.width_m is not None:
+            v.positive(f"{where}.width_m", self.width_m)
 
     @classmethod
     def from_geometry(cls, station: int, material: Material, width_m: float,
-                      outer_diameter_m: float, inner_diameter_m: float = 0.0) -> "Disk":
+                      outer_diameter_m: float, inner_diameter_m: float = 0.0,
+                      name: str = "") -> "Disk":
         """Solid-of-revolution disk: m = ρ π/4 (do² − di²) w, Ip = m (do² + di²)/8,
-        Id = Ip/2 + m w²/12."""
+        Id = Ip/2 + m w²/12. The geometry and the material's name are kept."""
         v.positive("disk.width_m", width_m)
         v.positive("disk.outer_diameter_m", outer_diameter_m)
         v.non_negative("disk.inner_diameter_m", inner_diameter_m)
+        if inner_diameter_m >= outer_diameter_m:
+            raise InputError(f"disk.inner_diameter_m: expected a value below outer_diameter_m "
+                             f"= {outer_diameter_m!r}, got {inner_diameter_m!r}")
         m = material.density_kg_m3 * math.pi / 4 * (outer_diameter_m**2 - inner_diameter_m**2) * width_m
         ip = m * (outer_diameter_m**2 + inner_diameter_m**2) / 8.0
-        return cls(station, m, ip, ip / 2.0 + m * width_m**2 / 12.0)
+        return cls(station, m, ip, ip / 2.0 + m * width_m**2 / 12.0, float(outer_diameter_m),
+                   float(inner_diameter_m), float(width_m), material.name, name)
 
 
 _SUPPORT_COEFS = ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m",

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from rotordyn.bearings import BEARING_TYPES, FlexibleSleeve, Groove
 from rotordyn.errors import InputError
-from rotordyn.model.rotor import Disk, Material, Reduction, Rotor, ShaftSection, Support
+from rotordyn.model.rotor import STEEL, Disk, Material, Reduction, Rotor, ShaftSection, Support
 
 SCHEMA = "rotordyn/model/1"
 
@@ -103,7 +103,7 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
     disks = []
     for i, t in enumerate(_array_of_tables("disk", doc.get("disk", []))):
         _check_keys(f"disk[{i}]", t, _fields(Disk))
-        disks.append(_build(Disk, f"disk[{i}]", t))
+        disks.append(_disk_from_table(f"disk[{i}]", t, mats))
     supports = []
     for i, t in enumerate(_array_of_tables("support", doc.get("support", []))):
         _check_keys(f"support[{i}]", t, _fields(Support))
@@ -123,6 +123,24 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
     return dict(rotor=Rotor(tuple(sections), tuple(disks)), supports=tuple(supports),
                 reduction=reduction, bearings=tuple(bearings), name=doc.get("name", ""),
                 description=doc.get("description", ""), **kwargs)
+
+
+def _disk_from_table(where: str, t: dict, mats: list):
+    """A disk by its inertias, or by its geometry and material (inertias computed)."""
+    inertia = {"mass_kg", "ip_kg_m2", "id_kg_m2"}
+    if inertia & set(t):
+        return _build(Disk, where, t)
+    need = {"outer_diameter_m", "width_m", "material"} - set(t)
+    if need:
+        raise InputError(f"{where}: expected mass_kg, ip_kg_m2, id_kg_m2, or the geometry "
+                         f"(outer_diameter_m, width_m, material; missing {sorted(need)})")
+    known = {m.name: m for m in mats} or {STEEL.name: STEEL}
+    mat = known.get(t["material"])
+    if mat is None:
+        raise InputError(f"{where}.material: expected one of {sorted(known)}, got "
+                         f"{t['material']!r}")
+    return Disk.from_geometry(t["station"], mat, t["width_m"], t["outer_diameter_m"],
+                              t.get("inner_diameter_m", 0.0), t.get("name", ""))
 
 
 def _bearing_from_table(where: str, t: dict):

@@ -10,7 +10,10 @@ from rotordyn.plot._style import PAGE_IN, new_axes, paper_style
 
 
 def disk_radius_m(disk) -> float:
-    """Equivalent solid-disk outer radius from the polar inertia: r = sqrt(2 I_p / m)."""
+    """The disk's outer radius when its geometry is known, else the equivalent solid disk's
+    from the polar inertia: r = sqrt(2 I_p / m)."""
+    if getattr(disk, "outer_diameter_m", None):
+        return 0.5 * float(disk.outer_diameter_m)
     return float(np.sqrt(2 * disk.ip_kg_m2 / disk.mass_kg)) if disk.mass_kg > 0 else 0.0
 
 
