@@ -84,21 +84,62 @@ class SweepDataset:
         return pd.read_parquet(p)
 
 
-def open_dataset(out) -> SweepDataset:
-    """Open a sweep directory written by :func:`rotordyn.sweep.run_sweep`."""
-    out = Path(out)
-    manifest, entries = read_manifest(out)
-    files = [out / e["file"] for e in entries]
-    if not files:
-        raise InputError(f"dir: {str(out)!r} holds no finished chunk yet")
+def open_dataset(out, *, verify: bool = True) -> SweepDataset:
+    """Open a sweep directory written by :func:`rotordyn.sweep.run_sweep`.
+
+    Every file the log lists is read once, without following a symlink, and (``verify``,
+    the default) checked against the size, SHA-256 and row count the log holds for it: a
+    file that differs is an InputError naming it as damaged (a resume recomputes it).
+    ``verify=False`` skips the size, hash and row checks (the fast path: a flipped bit is
+    then read as data); the names are still checked and symlinks still refused.
+    ``pandas.read_parquet(OUT)`` checks nothing of this.
+    """
+    import hashlib
+
     import pyarrow as pa
     import pyarrow.parquet as pq
 
+    from rotordyn.sweep.safedir import NotRegular, SafeDir
+
+    out = Path(out)
+    manifest, entries = read_manifest(out)
+    if not entries:
+        raise InputError(f"dir: {str(out)!r} holds no finished chunk yet")
+
+    def damaged(name, why):
+        return InputError(f"dir: part {name!r} of {str(out)!r} is damaged ({why}); run the "
+                          "sweep again to verify and recompute it")
+
+    tables = []
+    d = SafeDir(out)
     try:
-        table = pa.concat_tables([pq.read_table(f) for f in files])
+        for e in entries:
+            name = e["file"]
+            try:
+                data = d.read(name, expect_size=e["bytes"] if verify else None)
+            except FileNotFoundError:
+                raise damaged(name, "missing") from None
+            except NotRegular as exc:
+                raise damaged(name, exc.strerror) from None
+            except OSError as exc:
+                raise damaged(name, exc.strerror or exc) from None
+            if verify and (len(data) != e["bytes"]
+                           or hashlib.sha256(data).hexdigest() != e["sha256"]):
+                raise damaged(name, "its SHA-256 differs from the log's")
+            try:
+                t = pq.read_table(pa.BufferReader(data))
+            except (OSError, pa.ArrowException) as exc:
+                raise damaged(name, exc) from None
+            if verify and t.num_rows != e["rows"]:
+                raise damaged(name, f"{t.num_rows} rows, the log says {e['rows']}")
+            tables.append(t)
+    finally:
+        d.close()
+    try:
+        table = pa.concat_tables(tables)
     except (OSError, pa.ArrowException) as exc:
-        raise InputError(f"dir: {str(out)!r} has a damaged part ({exc}); run the sweep "
-                         "again to verify and recompute it") from None
+        raise InputError(f"dir: {str(out)!r} has parts of different schemas ({exc}); run "
+                         "the sweep again to verify and recompute them") from None
     return SweepDataset(out, table.to_pandas(), manifest)
 
 
