@@ -439,3 +439,117 @@ def test_big_model_field_axis_loads_fast(tmp_path):
                         "[1, 2, 3, 2.5]")
     with pytest.raises(rd.InputError, match=r"grid\.rotor\.disks\.0\.station\[3\]"):
         SweepSpec.from_toml(_spec(tmp_path, text, "st.toml"))
+
+
+# -- 8. the scheduler --------------------------------------------------------------------------
+def test_scheduler_address_checked_at_once(done, tmp_path):
+    spec = done[0]
+    t0 = time.monotonic()
+    r = _cli("sweep", spec, "--out", tmp_path / "o", "--scheduler", "not-an-address")
+    assert r.returncode == 2 and "scheduler" in r.stderr and "not-an-address" in r.stderr, \
+        r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1 and "internal error" not in r.stderr
+    import socket
+
+    with socket.socket() as s:  # a port that was free a moment ago: closed
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    t0 = time.monotonic()
+    with pytest.raises(rd.InputError, match=f"scheduler: cannot connect to 'tcp://127.0.0.1:"
+                                            f"{port}'"):
+        run_sweep(spec, tmp_path / "o2", scheduler=f"tcp://127.0.0.1:{port}")
+    assert time.monotonic() - t0 < 10
+    assert not (tmp_path / "o2" / store_mod.LOCK).exists()
+    with pytest.raises(rd.InputError, match="tls_ca_file"):
+        run_sweep(spec, tmp_path / "o3", scheduler=f"tls://127.0.0.1:{port}")
+
+
+def _self_signed(d: Path):
+    """(cert, key) of a self-signed certificate for 127.0.0.1 (its own CA), made with the
+    ``cryptography`` package if importable, else with the openssl command."""
+    cert, key = d / "cert.pem", d / "key.pem"
+    try:
+        import datetime
+
+        from cryptography import x509
+        from cryptography.hazmat.primitives import hashes, serialization
+        from cryptography.hazmat.primitives.asymmetric import ec
+        from cryptography.x509.oid import NameOID
+    except ImportError:
+        if not shutil.which("openssl"):
+            pytest.skip("neither the cryptography package nor openssl to make a certificate")
+        subprocess.run(["openssl", "req", "-x509", "-newkey", "rsa:2048", "-nodes",
+                        "-keyout", str(key), "-out", str(cert), "-days", "1",
+                        "-subj", "/CN=127.0.0.1", "-addext", "subjectAltName=IP:127.0.0.1",
+                        "-addext", "basicConstraints=critical,CA:TRUE"],
+                       check=True, capture_output=True)
+        return cert, key
+    import ipaddress
+
+    k = ec.generate_private_key(ec.SECP256R1())
+    name = x509.Name([x509.NameAttribute(NameOID.COMMON_NAME, "127.0.0.1")])
+    now = datetime.datetime.now(datetime.timezone.utc)
+    c = (x509.CertificateBuilder().subject_name(name).issuer_name(name)
+         .public_key(k.public_key()).serial_number(x509.random_serial_number())
+         .not_valid_before(now - datetime.timedelta(minutes=5))
+         .not_valid_after(now + datetime.timedelta(days=1))
+         .add_extension(x509.SubjectAlternativeName(
+             [x509.IPAddress(ipaddress.ip_address("127.0.0.1"))]), critical=False)
+         .add_extension(x509.BasicConstraints(ca=True, path_length=None), critical=True)
+         .sign(k, hashes.SHA256()))
+    cert.write_bytes(c.public_bytes(serialization.Encoding.PEM))
+    key.write_bytes(k.private_bytes(serialization.Encoding.PEM,
+                                    serialization.PrivateFormat.PKCS8,
+                                    serialization.NoEncryption()))
+    return cert, key
+
+
+def test_tls_cluster_on_loopback(done, tmp_path):
+    """A dask scheduler and worker on 127.0.0.1 speaking TLS only (self-signed certificate):
+    ``run_sweep(..., scheduler="tls://...", tls_ca_file=, tls_cert=, tls_key=)`` and the CLI
+    flags give the same dataset as the threaded run; without the options it is refused at
+    once."""
+    import signal
+
+    dask = str(Path(sys.executable).with_name("dask"))
+    cert, key = _self_signed(tmp_path)
+    tls = ["--tls-ca-file", str(cert), "--tls-cert", str(cert), "--tls-key", str(key)]
+    sfile = tmp_path / "scheduler.json"
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    procs = [subprocess.Popen([dask, "scheduler", "--protocol", "tls", "--host", "127.0.0.1",
+                               "--port", "0", "--no-dashboard", "--scheduler-file",
+                               str(sfile), *tls], env=env, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.DEVNULL, cwd=tmp_path)]
+    try:
+        t0 = time.monotonic()
+        while not sfile.exists() and time.monotonic() - t0 < 60:
+            time.sleep(0.1)
+        time.sleep(0.2)
+        addr = json.loads(sfile.read_text())["address"]
+        assert addr.startswith("tls://127.0.0.1:")
+        procs.append(subprocess.Popen([dask, "worker", addr, "--nthreads", "1", "--no-nanny",
+                                       "--host", "127.0.0.1", "--no-dashboard", *tls],
+                                      env=env, stdout=subprocess.DEVNULL,
+                                      stderr=subprocess.DEVNULL, cwd=tmp_path))
+        t0 = time.monotonic()
+        with pytest.raises(rd.InputError, match="tls_ca_file: a tls:// scheduler needs"):
+            run_sweep(done[0], tmp_path / "no", scheduler=addr)
+        assert time.monotonic() - t0 < 5 and not (tmp_path / "no").exists()
+        res = run_sweep(done[0], tmp_path / "o", scheduler=addr, tls_ca_file=cert,
+                        tls_cert=cert, tls_key=key, progress=False)
+        assert res.complete
+        assert sw.open(tmp_path / "o").frame.equals(sw.open(done[1]).frame)
+        r = _cli("sweep", done[0], "--out", tmp_path / "c", "--scheduler", addr, *tls,
+                 "--json")
+        assert r.returncode == 0, r.stderr
+        assert sw.open(tmp_path / "c").frame.equals(sw.open(done[1]).frame)
+    finally:
+        for p in reversed(procs):
+            if p.poll() is None:
+                p.send_signal(signal.SIGTERM)
+        for p in procs:
+            try:
+                p.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                p.kill()
+                p.wait(timeout=30)
