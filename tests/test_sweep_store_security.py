@@ -190,6 +190,47 @@ def test_plot_refuses_a_damaged_part(done, tmp_path):
     assert not (tmp_path / "m.png").exists()
 
 
+BOUNDARY_SPEC = """
+schema = "rotordyn/sweep/1"
+name = "t-boundary"
+model = "paper-rig"
+analysis = "boundary"
+chunk_size = 20
+
+[grid]
+config_ay_m = {start = -2.5e-3, stop = 0.0, num = 3}
+chamber_pressure_pa = {start = 0.0, stop = 0.2e6, num = 3}
+speed_hz = 50.0
+
+[options]
+x = "config_ay_m"
+y = "chamber_pressure_pa"
+resolution = 5
+"""
+
+
+def test_boundary_file_is_verified(tmp_path):
+    """``_boundary.parquet`` is logged with its SHA-256: a flipped bit, or a symlink in its
+    place, is refused by ``.boundary()``; a run again rewrites it."""
+    spec = _spec(tmp_path, BOUNDARY_SPEC, "b.toml")
+    out = tmp_path / "b"
+    assert run_sweep(spec, out, threads=1, progress=False).complete
+    good = sw.open(out).boundary()
+    p = out / store_mod.BOUNDARY
+    data = bytearray(p.read_bytes())
+    data[len(data) // 3] ^= 0x04
+    p.write_bytes(bytes(data))
+    with pytest.raises(rd.InputError, match="_boundary.parquet.*damaged"):
+        sw.open(out).boundary()
+    outside = tmp_path / "outside.parquet"
+    p.rename(outside)
+    p.symlink_to(outside)
+    with pytest.raises(rd.InputError, match="_boundary.parquet.*damaged"):
+        sw.open(out).boundary()
+    assert run_sweep(spec, out, threads=1, progress=False).complete
+    assert sw.open(out).boundary().equals(good)
+
+
 # -- 4. the lock ------------------------------------------------------------------------------
 def _header(spec_path):
     from rotordyn.sweep.runner import _header

@@ -11,9 +11,7 @@ import numpy as np
 import pandas as pd
 
 from rotordyn.errors import InputError
-from rotordyn.sweep.store import read_manifest
-
-BOUNDARY = "_boundary.parquet"
+from rotordyn.sweep.store import BOUNDARY, read_aux, read_manifest
 
 
 @dataclass
@@ -28,6 +26,7 @@ class SweepDataset:
     out: Path
     frame: pd.DataFrame
     manifest: dict
+    verify: bool = True
 
     @property
     def axes(self) -> dict:
@@ -77,11 +76,35 @@ class SweepDataset:
         return m.reindex(index=self.axes[x], columns=self.axes[y])
 
     def boundary(self) -> pd.DataFrame:
-        """Boundary polylines of a ``boundary`` sweep: (line, vertex, x, y)."""
-        p = self.out / BOUNDARY
-        if not p.is_file():
-            raise InputError(f"boundary: {str(self.out)!r} is not a boundary sweep")
-        return pd.read_parquet(p)
+        """Boundary polylines of a ``boundary`` sweep: (line, vertex, x, y), checked against
+        the size and SHA-256 the log holds for ``_boundary.parquet`` (unless opened with
+        ``verify=False``)."""
+        import hashlib
+
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        from rotordyn.sweep.safedir import SafeDir
+
+        e = read_aux(self.out, BOUNDARY) if self.verify else None
+        d = SafeDir(self.out)
+        try:
+            if d.lstat(BOUNDARY) is None or self.verify and e is None:
+                raise InputError(f"boundary: {str(self.out)!r} holds no finished boundary "
+                                 "(not a boundary sweep, or it stopped before the end: run it "
+                                 "again)")
+            try:
+                data = d.read(BOUNDARY)
+            except OSError as exc:
+                raise InputError(f"boundary: {str(self.out / BOUNDARY)!r} is damaged "
+                                 f"({exc.strerror or exc})") from None
+        finally:
+            d.close()
+        if e is not None and (len(data) != e["bytes"]
+                              or hashlib.sha256(data).hexdigest() != e["sha256"]):
+            raise InputError(f"boundary: {str(self.out / BOUNDARY)!r} is damaged (its SHA-256 "
+                             "differs from the log's); run the sweep again to rewrite it")
+        return pq.read_table(pa.BufferReader(data)).to_pandas()
 
 
 def open_dataset(out, *, verify: bool = True) -> SweepDataset:
@@ -140,7 +163,7 @@ def open_dataset(out, *, verify: bool = True) -> SweepDataset:
     except (OSError, pa.ArrowException) as exc:
         raise InputError(f"dir: {str(out)!r} has parts of different schemas ({exc}); run "
                          "the sweep again to verify and recompute them") from None
-    return SweepDataset(out, table.to_pandas(), manifest)
+    return SweepDataset(out, table.to_pandas(), manifest, verify)
 
 
 def _np(x):

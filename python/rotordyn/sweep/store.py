@@ -38,6 +38,8 @@ from rotordyn.sweep.safedir import TMP, NotRegular, SafeDir, write_all
 MANIFEST = "_rotordyn_sweep.json"
 LOG = "_chunks.jsonl"
 LOCK = "_lock"
+BOUNDARY = "_boundary.parquet"
+AUX = (BOUNDARY,)  # derived files logged with their hash (op "aux"), outside the dataset
 FORMAT = "rotordyn/sweep-dataset/2"
 _PART = re.compile(r"part-(\d{6,})-(\d{6,})\.parquet\Z")
 _SHA = re.compile(r"[0-9a-f]{64}\Z")
@@ -83,9 +85,16 @@ def _int(x) -> bool:
 
 def _entry_problem(e) -> str | None:
     """Why a parsed log line is not a well-formed entry (None if it is)."""
-    if not isinstance(e, dict) or e.get("op") not in ("file", "remove"):
+    if not isinstance(e, dict) or e.get("op") not in ("file", "remove", "aux"):
         return "not a log entry"
     f = e.get("file")
+    if e["op"] == "aux":
+        if f not in AUX:
+            return f"file {f!r} is not a file of this store"
+        if not _int(e.get("bytes")) or not isinstance(e.get("sha256"), str) or \
+                not _SHA.match(e["sha256"]):
+            return f"{f}: bytes and sha256 must be a size and a SHA-256 digest"
+        return None
     if not isinstance(f, str) or not _PART.match(f):
         return f"file {f!r} is not a part name of this store"
     if e["op"] == "remove":
@@ -131,9 +140,20 @@ def live_entries(entries: list[dict]) -> dict[str, dict]:
     for e in entries:
         if e["op"] == "file":
             live[e["file"]] = e
-        else:
+        elif e["op"] == "remove":
             live.pop(e["file"], None)
     return live
+
+
+def read_aux(out, name: str) -> dict | None:
+    """The last log entry of derived file ``name`` (AUX), or None if it is not logged."""
+    d = SafeDir(out)
+    try:
+        entries = parse_log(_bookkeeping(d, LOG, "dir") or b"", Path(out) / LOG)
+    finally:
+        d.close()
+    got = [e for e in entries if e["op"] == "aux" and e["file"] == name]
+    return got[-1] if got else None
 
 
 def _bookkeeping(d: SafeDir, name: str, field: str) -> bytes | None:
@@ -343,6 +363,12 @@ class Store:
             self.dir.write_atomic(name, data, durable=self.durable)
         except OSError as exc:
             raise _io(self.out / name, exc) from None
+
+    def add_aux(self, name: str, data: bytes) -> None:
+        """Write a derived file (AUX) and log its size and SHA-256."""
+        self._atomic(name, data)
+        self._append({"op": "aux", "file": name, "bytes": len(data),
+                      "sha256": hashlib.sha256(data).hexdigest()})
 
     def _append(self, entry: dict) -> None:
         line = (json.dumps(entry, sort_keys=True) + "\n").encode()
