@@ -23,7 +23,6 @@ from pathlib import Path
 def synthetic(d: Path, rows: int) -> Path:
     import numpy as np
     import pyarrow as pa
-
     from rotordyn.sweep.execution import group_size
     from rotordyn.sweep.store import Store
 
@@ -68,7 +67,6 @@ def main() -> None:
     import os
 
     import pandas as pd
-
     import rotordyn.sweep as sw
 
     with tempfile.TemporaryDirectory() as tmp:

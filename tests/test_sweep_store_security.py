@@ -28,7 +28,6 @@ import time
 from pathlib import Path
 
 import pytest
-
 import rotordyn as rd
 import rotordyn.sweep as sw
 from rotordyn.sweep import SweepSpec, run_sweep
@@ -59,7 +58,7 @@ def _spec(tmp_path, text=SPEC, name="spec.toml"):
 
 def _cli(*args, timeout=300):
     return subprocess.run([sys.executable, "-m", "rotordyn.cli", *map(str, args)],
-                          capture_output=True, text=True, timeout=timeout)
+                          capture_output=True, text=True, timeout=timeout, check=False)
 
 
 @pytest.fixture(scope="module")
@@ -325,7 +324,7 @@ def _mount_tmpfs(d: Path, size: str) -> bool:
         return False
     d.mkdir(parents=True, exist_ok=True)
     r = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", str(d)],
-                       capture_output=True)
+                       capture_output=True, check=False)
     return r.returncode == 0
 
 
@@ -349,7 +348,7 @@ def test_full_disk_on_a_small_tmpfs(done, tmp_path):
         assert r.returncode == 0, r.stderr
         assert sw.open(out).frame.equals(sw.open(done[1]).frame)
     finally:
-        subprocess.run(["umount", "-l", str(mnt)], capture_output=True)
+        subprocess.run(["umount", "-l", str(mnt)], capture_output=True, check=False)
 
 
 def test_full_disk_at_log_append_simulated(done, tmp_path, monkeypatch):

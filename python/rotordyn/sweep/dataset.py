@@ -11,7 +11,7 @@ import numpy as np
 import pandas as pd
 
 from rotordyn.errors import InputError
-from rotordyn.sweep.store import BOUNDARY, read_aux, read_manifest
+from rotordyn.sweep.store import BOUNDARY, open_dir, read_aux, read_manifest
 
 
 @dataclass
@@ -117,45 +117,15 @@ def open_dataset(out, *, verify: bool = True) -> SweepDataset:
     then read as data); the names are still checked and symlinks still refused.
     ``pandas.read_parquet(OUT)`` checks nothing of this.
     """
-    import hashlib
-
     import pyarrow as pa
-    import pyarrow.parquet as pq
-
-    from rotordyn.sweep.safedir import NotRegular, SafeDir
 
     out = Path(out)
-    manifest, entries = read_manifest(out)
-    if not entries:
-        raise InputError(f"dir: {str(out)!r} holds no finished chunk yet")
-
-    def damaged(name, why):
-        return InputError(f"dir: part {name!r} of {str(out)!r} is damaged ({why}); run the "
-                          "sweep again to verify and recompute it")
-
-    tables = []
-    d = SafeDir(out)
+    d = open_dir(out)  # one descriptor for the manifest, the log and every part
     try:
-        for e in entries:
-            name = e["file"]
-            try:
-                data = d.read(name, expect_size=e["bytes"] if verify else None)
-            except FileNotFoundError:
-                raise damaged(name, "missing") from None
-            except NotRegular as exc:
-                raise damaged(name, exc.strerror) from None
-            except OSError as exc:
-                raise damaged(name, exc.strerror or exc) from None
-            if verify and (len(data) != e["bytes"]
-                           or hashlib.sha256(data).hexdigest() != e["sha256"]):
-                raise damaged(name, "its SHA-256 differs from the log's")
-            try:
-                t = pq.read_table(pa.BufferReader(data))
-            except (OSError, pa.ArrowException) as exc:
-                raise damaged(name, exc) from None
-            if verify and t.num_rows != e["rows"]:
-                raise damaged(name, f"{t.num_rows} rows, the log says {e['rows']}")
-            tables.append(t)
+        manifest, entries = read_manifest(out, d)
+        if not entries:
+            raise InputError(f"dir: {str(out)!r} holds no finished chunk yet")
+        tables = _read_parts(out, d, entries, verify)
     finally:
         d.close()
     try:
@@ -164,6 +134,42 @@ def open_dataset(out, *, verify: bool = True) -> SweepDataset:
         raise InputError(f"dir: {str(out)!r} has parts of different schemas ({exc}); run "
                          "the sweep again to verify and recompute them") from None
     return SweepDataset(out, table.to_pandas(), manifest, verify)
+
+
+def _read_parts(out, d, entries, verify):
+    import hashlib
+
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    from rotordyn.sweep.safedir import NotRegular
+
+    def damaged(name, why):
+        return InputError(f"dir: part {name!r} of {str(out)!r} is damaged ({why}); run the "
+                          "sweep again to verify and recompute it")
+
+    tables = []
+    for e in entries:
+        name = e["file"]
+        try:
+            data = d.read(name, expect_size=e["bytes"] if verify else None)
+        except FileNotFoundError:
+            raise damaged(name, "missing") from None
+        except NotRegular as exc:
+            raise damaged(name, exc.strerror) from None
+        except OSError as exc:
+            raise damaged(name, exc.strerror or exc) from None
+        if verify and (len(data) != e["bytes"]
+                       or hashlib.sha256(data).hexdigest() != e["sha256"]):
+            raise damaged(name, "its SHA-256 differs from the log's")
+        try:
+            t = pq.read_table(pa.BufferReader(data))
+        except (OSError, pa.ArrowException) as exc:
+            raise damaged(name, exc) from None
+        if verify and t.num_rows != e["rows"]:
+            raise damaged(name, f"{t.num_rows} rows, the log says {e['rows']}")
+        tables.append(t)
+    return tables
 
 
 def _np(x):

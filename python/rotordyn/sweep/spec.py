@@ -191,8 +191,7 @@ def _check_model_axis(system, name: str, vals: list) -> None:
         try:
             set_field(system, name, vals[i])
         except InputError as exc:
-            msg = str(exc)
-            msg = msg[len(head):] if msg.startswith(head) else msg
+            msg = str(exc).removeprefix(head)
             raise InputError(f"grid.{name}[{i}]: {msg}") from None
 
 
@@ -377,8 +376,6 @@ class SweepSpec:
     def check_against(self, system) -> None:
         """Every axis exists (model fields by dotted path) and every value builds a valid
         model; option stations exist. InputError names the axis."""
-        from rotordyn.sweep.paths import set_field
-
         for name, vals in self.axes.items():
             if name in OPERATING:
                 if name in ("config_ay_m", "config_ax_m"):

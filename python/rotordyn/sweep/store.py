@@ -8,12 +8,17 @@ Layout::
     OUT/_rotordyn_sweep.json         manifest: spec, model, versions, schema (written once)
     OUT/_chunks.jsonl                append-only log: one line per file written, with its
                                      chunk range, row count, size and SHA-256
-    OUT/_lock                        the running driver (pid, host); refused to a second one
+    OUT/_lock                        flock of the running driver (pid, host); refused to a
+                                     second one
+    OUT/_boundary.parquet            derived file of a boundary sweep (logged as "aux")
 
-Every file is written to a ``_tmp-`` name, flushed, renamed, then logged: the log is the truth.
-On resume every logged file is verified (size, row count, SHA-256); a file that fails, and
-any ``part-*.parquet`` the log does not list (a crash between rename and log), is removed and
-its chunks are recomputed. Chunks are compacted in fixed groups (``group`` chunks per file) as
+Every file is written to a fresh ``_tmp-`` name (O_EXCL|O_NOFOLLOW, :mod:`.safedir`), renamed,
+then logged: the log is the truth, and nothing of the directory is trusted that the log does
+not vouch for. Log entries must name the store's own part files (:func:`part_name`); on
+resume every logged file is verified (regular file, size, row count, SHA-256); a file that
+fails, and any ``part-*.parquet`` the log does not list (a crash between rename and log), is
+removed and its chunks are recomputed. Readers (:mod:`.dataset`) verify the same way and
+refuse instead. See docs/reliability.md, "The sweep store". Chunks are compacted in fixed groups (``group`` chunks per file) as
 soon as a group is complete, so the final files do not depend on the order chunks finished
 or on how often the sweep was resumed.
 """
@@ -466,15 +471,22 @@ class Store:
         raise KeyError(chunk_id)
 
 
-def read_manifest(out) -> tuple[dict, list[dict]]:
-    """(manifest, live log entries) of a sweep directory, without locking it. Names in the
-    log are checked (the store's own part names, nothing outside the directory)."""
-    out = Path(out)
+def open_dir(out) -> SafeDir:
+    """The sweep directory ``out`` opened for reading (InputError if it is not one)."""
     try:
-        d = SafeDir(out)
+        return SafeDir(out)
     except OSError:
         raise InputError(f"dir: {str(out)!r} is not a sweep directory (no {MANIFEST})") \
             from None
+
+
+def read_manifest(out, d: SafeDir | None = None) -> tuple[dict, list[dict]]:
+    """(manifest, live log entries) of a sweep directory, without locking it (``d``: the
+    directory already opened, to read everything through one descriptor). Names in the log
+    are checked (the store's own part names, nothing outside the directory)."""
+    out = Path(out)
+    mine = d is None
+    d = open_dir(out) if mine else d
     try:
         raw = _bookkeeping(d, MANIFEST, "dir")
         if raw is None:
@@ -487,5 +499,6 @@ def read_manifest(out) -> tuple[dict, list[dict]]:
             raise InputError(f"dir: {str(out / MANIFEST)!r} is corrupt ({exc})") from None
         live = live_entries(parse_log(_bookkeeping(d, LOG, "dir") or b"", out / LOG))
     finally:
-        d.close()
+        if mine:
+            d.close()
     return manifest, [live[k] for k in sorted(live)]
