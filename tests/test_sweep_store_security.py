@@ -593,3 +593,44 @@ def test_tls_cluster_on_loopback(done, tmp_path):
             except subprocess.TimeoutExpired:
                 p.kill()
                 p.wait(timeout=30)
+
+
+def test_open_while_a_sweep_compacts(done, tmp_path, monkeypatch):
+    """A reader that read the log just before a running sweep compacted its parts (the
+    logged single-chunk parts are gone) reads the log again instead of calling the
+    directory damaged; a part that stays missing is named."""
+    from rotordyn.sweep import dataset as ds_mod
+
+    out = _copy(done, tmp_path)
+    real = ds_mod.read_manifest
+    calls = {"n": 0}
+
+    def stale_first(o, d=None):
+        m, entries = real(o, d)
+        calls["n"] += 1
+        if calls["n"] == 1:  # as before a compaction: a part that is no longer there
+            entries = [dict(entries[0], file="part-000000-000001.parquet", hi=1,
+                            counts=entries[0]["counts"] * 2)] + entries[2:]
+        return m, entries
+
+    monkeypatch.setattr(ds_mod, "read_manifest", stale_first)
+    assert sw.open(out).frame.equals(sw.open(done[1]).frame) and calls["n"] >= 2
+    monkeypatch.setattr(ds_mod, "read_manifest", real)
+    gone = sorted(out.glob("part-*.parquet"))[0]
+    gone.unlink()
+    with pytest.raises(rd.InputError, match=f"{gone.name}.*damaged \\(missing\\)"):
+        sw.open(out)
+
+
+def test_full_disk_while_taking_the_lock(done, tmp_path, monkeypatch):
+    """ENOSPC writing the holder's name into a new ``_lock``: the ``out:`` error (exit 1
+    class), and no ``_lock`` file is left behind."""
+    import errno
+
+    def full(fd, data, off):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(os, "pwrite", full)
+    with pytest.raises(rd.errors.OutputError, match="out: .*No space left on device"):
+        run_sweep(done[0], tmp_path / "o", threads=1, progress=False)
+    assert not (tmp_path / "o" / store_mod.LOCK).exists()

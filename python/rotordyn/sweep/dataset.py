@@ -120,20 +120,30 @@ def open_dataset(out, *, verify: bool = True) -> SweepDataset:
     import pyarrow as pa
 
     out = Path(out)
-    d = open_dir(out)  # one descriptor for the manifest, the log and every part
-    try:
-        manifest, entries = read_manifest(out, d)
-        if not entries:
-            raise InputError(f"dir: {str(out)!r} holds no finished chunk yet")
-        tables = _read_parts(out, d, entries, verify)
-    finally:
-        d.close()
+    for attempt in range(3):
+        d = open_dir(out)  # one descriptor for the manifest, the log and every part
+        try:
+            manifest, entries = read_manifest(out, d)
+            if not entries:
+                raise InputError(f"dir: {str(out)!r} holds no finished chunk yet")
+            tables = _read_parts(out, d, entries, verify)
+            break
+        except _Missing:
+            # a running sweep compacted parts after we read its log: read the log again
+            if attempt == 2:
+                raise
+        finally:
+            d.close()
     try:
         table = pa.concat_tables(tables)
     except (OSError, pa.ArrowException) as exc:
         raise InputError(f"dir: {str(out)!r} has parts of different schemas ({exc}); run "
                          "the sweep again to verify and recompute them") from None
     return SweepDataset(out, table.to_pandas(), manifest, verify)
+
+
+class _Missing(InputError):
+    """A logged part is gone (deleted, or compacted by a running sweep)."""
 
 
 def _read_parts(out, d, entries, verify):
@@ -144,9 +154,9 @@ def _read_parts(out, d, entries, verify):
 
     from rotordyn.sweep.safedir import NotRegular
 
-    def damaged(name, why):
-        return InputError(f"dir: part {name!r} of {str(out)!r} is damaged ({why}); run the "
-                          "sweep again to verify and recompute it")
+    def damaged(name, why, cls=InputError):
+        return cls(f"dir: part {name!r} of {str(out)!r} is damaged ({why}); run the "
+                   "sweep again to verify and recompute it")
 
     tables = []
     for e in entries:
@@ -154,7 +164,7 @@ def _read_parts(out, d, entries, verify):
         try:
             data = d.read(name, expect_size=e["bytes"] if verify else None)
         except FileNotFoundError:
-            raise damaged(name, "missing") from None
+            raise damaged(name, "missing", _Missing) from None
         except NotRegular as exc:
             raise damaged(name, exc.strerror) from None
         except OSError as exc:

@@ -22,6 +22,7 @@ import json
 import os
 import secrets
 import stat
+import time
 
 TMP = "_tmp-"
 _RD = os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC
@@ -184,8 +185,12 @@ class SafeDir:
                     fcntl.flock(fd, fcntl.LOCK_UN)
                     return None, old
                 _step("write")
-                os.ftruncate(fd, 0)
-                os.pwrite(fd, json.dumps({**me, "flock": True}).encode(), 0)
+                try:
+                    os.ftruncate(fd, 0)
+                    os.pwrite(fd, json.dumps({**me, "flock": True}).encode(), 0)
+                except OSError:
+                    self.unlink(name)  # (still held: nobody else has it) no lock left
+                    raise
                 held, fd = fd, None
                 return held, None
             finally:
@@ -197,8 +202,6 @@ class SafeDir:
     def _holder(fd: int) -> dict:
         """The holder's identity; it writes it right after taking the lock, so wait a
         moment for it."""
-        import time
-
         t0 = time.monotonic()
         while True:
             c = _content(fd)
