@@ -231,10 +231,15 @@ class Store:
             raise cls(f"out: {str(self.out)!r} is not writable: {exc.strerror or exc}") \
                 from None
         if fd is None:
-            raise InputError(
-                f"out: {str(self.out)!r} is in use by another sweep (pid "
-                f"{holder.get('pid', '?')} on {holder.get('host', '?')}); wait for it to "
-                f"finish, or remove {str(path)!r} if that process is gone")
+            who = (f"out: {str(self.out)!r} is in use by another sweep (pid "
+                   f"{holder.get('pid', '?')} on {holder.get('host', '?')}); wait for it to "
+                   "finish")
+            if holder.get("flock") or not holder:
+                # held by flock: its process is alive (the kernel drops the lock when it
+                # exits); removing the file would let a second driver in
+                raise InputError(f"{who} (the lock is released when that process exits)")
+            raise InputError(f"{who}, or remove {str(path)!r} if that process is gone "
+                             "(a lock of an older rotordyn)")
         self._lockfd = fd
 
     def close(self) -> None:
