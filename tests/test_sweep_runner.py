@@ -155,14 +155,15 @@ def test_full_disk_and_unwritable(reference, tmp_path, monkeypatch):
     assert run_sweep(spec, out, threads=1).complete
     assert _digest(out) == _digest(ref)
 
-    real_write = store_mod.Path.write_text
+    # (root ignores permissions, so the refusal is injected where the lock file is created)
+    real_open = os.open
 
-    def deny(self, *a, **k):
-        if "_tmp-lock" in self.name:
+    def deny(path, flags, *a, **k):
+        if path == store_mod.LOCK and flags & os.O_CREAT:
             raise PermissionError(errno.EACCES, os.strerror(errno.EACCES))
-        return real_write(self, *a, **k)
+        return real_open(path, flags, *a, **k)
 
-    monkeypatch.setattr(store_mod.Path, "write_text", deny)
+    monkeypatch.setattr(os, "open", deny)
     with pytest.raises(rd.InputError, match="out: .* is not writable: Permission denied"):
         run_sweep(spec, tmp_path / "ro", threads=1)
 

@@ -51,6 +51,7 @@ from rotordyn.errors import (
     ContactError,
     ConvergenceError,
     InputError,
+    OutputError,
     RotordynError,
     SundialsError,
 )
@@ -82,6 +83,7 @@ __all__ = [
     # errors
     "RotordynError",
     "InputError",
+    "OutputError",
     "ConvergenceError",
     "ContactError",
     "SundialsError",

@@ -26,4 +26,11 @@ class UnitWarning(RotordynWarning):
     likely slip. See :mod:`rotordyn._common.plausibility`."""
 
 
-__all__ += ["RotordynWarning", "UnitWarning"]
+class OutputError(InputError):
+    """A result could not be written although the destination was fine when the run
+    started: a full disk, a quota, an I/O error (the message starts with ``out:``). A
+    runtime failure (the CLI exits 1, not 2); an :class:`InputError` too, as such ``out:``
+    errors were before issue 21, so code catching InputError still catches it."""
+
+
+__all__ += ["RotordynWarning", "UnitWarning", "OutputError"]

@@ -19,7 +19,7 @@ from rotordyn._common.info import DESCRIPTION
 from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.cli import analyses, bearing, control, report, sweeps
 from rotordyn.cli.common import ArgumentParser
-from rotordyn.errors import InputError, RotordynError, RotordynWarning
+from rotordyn.errors import InputError, OutputError, RotordynError, RotordynWarning
 from rotordyn.model import builtin as models
 
 COMMANDS = (analyses, sweeps, report, bearing, control)
@@ -73,6 +73,9 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("rotordyn: interrupted", file=sys.stderr)
         return 130
+    except OutputError as exc:  # a full disk while writing: a runtime failure
+        print(f"rotordyn: failed: {exc}", file=sys.stderr)
+        return 1
     except InputError as exc:
         print(f"rotordyn: error: {exc}", file=sys.stderr)
         return 2

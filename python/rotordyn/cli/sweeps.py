@@ -15,7 +15,14 @@ def register(sub) -> None:
     s.add_argument("spec", help="sweep specification, sweeps/<name>.toml")
     s.add_argument("--out", required=True, metavar="DIR", help="output dataset directory")
     s.add_argument("--scheduler", default=None, metavar="ADDR",
-                   help="tcp://host:port of an existing dask cluster (default: a LocalCluster)")
+                   help="tcp://host:port or tls://host:port of an existing dask cluster "
+                        "(default: a LocalCluster); the cluster is trusted completely")
+    s.add_argument("--tls-ca-file", default=None, metavar="PEM",
+                   help="tls:// scheduler: the CA certificate that signed the cluster's")
+    s.add_argument("--tls-cert", default=None, metavar="PEM",
+                   help="tls:// scheduler: this client's certificate")
+    s.add_argument("--tls-key", default=None, metavar="PEM",
+                   help="tls:// scheduler: this client's private key")
     s.add_argument("--workers", type=int, default=None, metavar="N",
                    help="LocalCluster worker processes (default: dask's choice)")
     s.add_argument("--threads", type=int, default=None, metavar="N",
@@ -52,6 +59,8 @@ def _cmd_sweep(args) -> int:
     try:
         res = run_sweep(args.spec, args.out, scheduler=args.scheduler, workers=args.workers,
                         threads=args.threads, resume=args.resume,
+                        tls_ca_file=args.tls_ca_file, tls_cert=args.tls_cert,
+                        tls_key=args.tls_key,
                         progress=False if args.json else None)
     except SweepInterrupted as exc:
         print(f"rotordyn: {exc}", file=sys.stderr)

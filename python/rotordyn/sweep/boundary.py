@@ -26,10 +26,8 @@ from rotordyn._common.info import __version__
 from rotordyn.sweep.execution import (Dask, Progress, SweepInterrupted, SweepResult, Threads,
                                       group_size)
 from rotordyn.sweep.spec import fine_axes
-from rotordyn.sweep.store import Store
+from rotordyn.sweep.store import BOUNDARY, Store
 from rotordyn.sweep.work import Job
-
-BOUNDARY = "_boundary.parquet"
 
 
 def _classify(table) -> dict[int, tuple[int, float, float]]:
@@ -157,7 +155,7 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                       x: pa.array(rows[x], pa.float64()), y: pa.array(rows[y], pa.float64())})
         buf = pa.BufferOutputStream()
         pq.write_table(t, buf)
-        store._atomic(BOUNDARY, buf.getvalue().to_pybytes())
+        store.add_aux(BOUNDARY, buf.getvalue().to_pybytes())
         entries = store.chunk_entries()
         counts = {k: sum(c.get(k, 0) for c in entries.values())
                   for k in ("ok", "failed", "unstable")}

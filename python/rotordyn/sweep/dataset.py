@@ -11,9 +11,7 @@ import numpy as np
 import pandas as pd
 
 from rotordyn.errors import InputError
-from rotordyn.sweep.store import read_manifest
-
-BOUNDARY = "_boundary.parquet"
+from rotordyn.sweep.store import BOUNDARY, open_dir, read_aux, read_manifest
 
 
 @dataclass
@@ -28,6 +26,7 @@ class SweepDataset:
     out: Path
     frame: pd.DataFrame
     manifest: dict
+    verify: bool = True
 
     @property
     def axes(self) -> dict:
@@ -77,29 +76,110 @@ class SweepDataset:
         return m.reindex(index=self.axes[x], columns=self.axes[y])
 
     def boundary(self) -> pd.DataFrame:
-        """Boundary polylines of a ``boundary`` sweep: (line, vertex, x, y)."""
-        p = self.out / BOUNDARY
-        if not p.is_file():
-            raise InputError(f"boundary: {str(self.out)!r} is not a boundary sweep")
-        return pd.read_parquet(p)
+        """Boundary polylines of a ``boundary`` sweep: (line, vertex, x, y), checked against
+        the size and SHA-256 the log holds for ``_boundary.parquet`` (unless opened with
+        ``verify=False``)."""
+        import hashlib
+
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        from rotordyn.sweep.safedir import SafeDir
+
+        e = read_aux(self.out, BOUNDARY) if self.verify else None
+        d = SafeDir(self.out)
+        try:
+            if d.lstat(BOUNDARY) is None or self.verify and e is None:
+                raise InputError(f"boundary: {str(self.out)!r} holds no finished boundary "
+                                 "(not a boundary sweep, or it stopped before the end: run it "
+                                 "again)")
+            try:
+                data = d.read(BOUNDARY)
+            except OSError as exc:
+                raise InputError(f"boundary: {str(self.out / BOUNDARY)!r} is damaged "
+                                 f"({exc.strerror or exc})") from None
+        finally:
+            d.close()
+        if e is not None and (len(data) != e["bytes"]
+                              or hashlib.sha256(data).hexdigest() != e["sha256"]):
+            raise InputError(f"boundary: {str(self.out / BOUNDARY)!r} is damaged (its SHA-256 "
+                             "differs from the log's); run the sweep again to rewrite it")
+        return pq.read_table(pa.BufferReader(data)).to_pandas()
 
 
-def open_dataset(out) -> SweepDataset:
-    """Open a sweep directory written by :func:`rotordyn.sweep.run_sweep`."""
+def open_dataset(out, *, verify: bool = True) -> SweepDataset:
+    """Open a sweep directory written by :func:`rotordyn.sweep.run_sweep`.
+
+    Every file the log lists is read once, without following a symlink, and (``verify``,
+    the default) checked against the size, SHA-256 and row count the log holds for it: a
+    file that differs is an InputError naming it as damaged (a resume recomputes it).
+    ``verify=False`` skips the size, hash and row checks (the fast path: a flipped bit is
+    then read as data); the names are still checked and symlinks still refused.
+    ``pandas.read_parquet(OUT)`` checks nothing of this.
+    """
+    import pyarrow as pa
+
     out = Path(out)
-    manifest, entries = read_manifest(out)
-    files = [out / e["file"] for e in entries]
-    if not files:
-        raise InputError(f"dir: {str(out)!r} holds no finished chunk yet")
+    for attempt in range(3):
+        d = open_dir(out)  # one descriptor for the manifest, the log and every part
+        try:
+            manifest, entries = read_manifest(out, d)
+            if not entries:
+                raise InputError(f"dir: {str(out)!r} holds no finished chunk yet")
+            tables = _read_parts(out, d, entries, verify)
+            break
+        except _Missing:
+            # a running sweep compacted parts after we read its log: read the log again
+            if attempt == 2:
+                raise
+        finally:
+            d.close()
+    try:
+        table = pa.concat_tables(tables)
+    except (OSError, pa.ArrowException) as exc:
+        raise InputError(f"dir: {str(out)!r} has parts of different schemas ({exc}); run "
+                         "the sweep again to verify and recompute them") from None
+    return SweepDataset(out, table.to_pandas(), manifest, verify)
+
+
+class _Missing(InputError):
+    """A logged part is gone (deleted, or compacted by a running sweep)."""
+
+
+def _read_parts(out, d, entries, verify):
+    import hashlib
+
     import pyarrow as pa
     import pyarrow.parquet as pq
 
-    try:
-        table = pa.concat_tables([pq.read_table(f) for f in files])
-    except (OSError, pa.ArrowException) as exc:
-        raise InputError(f"dir: {str(out)!r} has a damaged part ({exc}); run the sweep "
-                         "again to verify and recompute it") from None
-    return SweepDataset(out, table.to_pandas(), manifest)
+    from rotordyn.sweep.safedir import NotRegular
+
+    def damaged(name, why, cls=InputError):
+        return cls(f"dir: part {name!r} of {str(out)!r} is damaged ({why}); run the "
+                   "sweep again to verify and recompute it")
+
+    tables = []
+    for e in entries:
+        name = e["file"]
+        try:
+            data = d.read(name, expect_size=e["bytes"] if verify else None)
+        except FileNotFoundError:
+            raise damaged(name, "missing", _Missing) from None
+        except NotRegular as exc:
+            raise damaged(name, exc.strerror) from None
+        except OSError as exc:
+            raise damaged(name, exc.strerror or exc) from None
+        if verify and (len(data) != e["bytes"]
+                       or hashlib.sha256(data).hexdigest() != e["sha256"]):
+            raise damaged(name, "its SHA-256 differs from the log's")
+        try:
+            t = pq.read_table(pa.BufferReader(data))
+        except (OSError, pa.ArrowException) as exc:
+            raise damaged(name, exc) from None
+        if verify and t.num_rows != e["rows"]:
+            raise damaged(name, f"{t.num_rows} rows, the log says {e['rows']}")
+        tables.append(t)
+    return tables
 
 
 def _np(x):

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import sys
 import time
 from dataclasses import dataclass
@@ -96,6 +97,78 @@ def check_workers(client, timeout: float = 30.0) -> int:
                 raise InputError(f"worker {addr}: rotordyn {k} differs from this driver's "
                                  f"({got.get(k)!r} != {me[k]!r}); install the same build")
     return len(info)
+
+
+# -- the scheduler's address -----------------------------------------------------------
+CONNECT_TIMEOUT = 5.0   # s for the TCP connection to a scheduler (a refused port fails at once)
+HANDSHAKE_TIMEOUT = 10.0  # s for dask's own connection once the port answers
+_ADDR = re.compile(r"(?:(?P<proto>[a-z]+)://)?(?P<host>\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+)"
+                   r":(?P<port>[0-9]{1,5})\Z")
+
+
+@dataclass(frozen=True)
+class Scheduler:
+    """A checked scheduler address, with dask's TLS security for ``tls://``."""
+
+    address: str
+    host: str
+    port: int
+    security: object = None
+
+
+def check_scheduler(address, tls_ca_file=None, tls_cert=None, tls_key=None):
+    """The ``--scheduler`` address checked before anything starts: ``tcp://HOST:PORT``,
+    ``tls://HOST:PORT`` or ``HOST:PORT`` (tcp); ``tls://`` needs the CA file, the client
+    certificate and its key (dask's mutual TLS, :class:`distributed.security.Security`).
+    Returns a :class:`Scheduler`, or None for no address (a LocalCluster)."""
+    tls = {"tls_ca_file": tls_ca_file, "tls_cert": tls_cert, "tls_key": tls_key}
+    if address is None:
+        given = [k for k, val in tls.items() if val is not None]
+        if given:
+            raise InputError(f"{given[0]}: TLS options need a tls:// scheduler address")
+        return None
+    m = _ADDR.match(address) if isinstance(address, str) else None
+    if m is None or not 0 < int(m["port"]) < 65536 or (m["proto"] or "tcp") not in ("tcp",
+                                                                                    "tls"):
+        raise InputError(f"scheduler: expected tcp://HOST:PORT or tls://HOST:PORT (port "
+                         f"1..65535), got {address!r}")
+    proto, host, port = m["proto"] or "tcp", m["host"].strip("[]"), int(m["port"])
+    security = None
+    if proto == "tls":
+        for k, val in tls.items():
+            if val is None:
+                raise InputError(f"{k}: a tls:// scheduler needs tls_ca_file, tls_cert and "
+                                 "tls_key (CLI: --tls-ca-file, --tls-cert, --tls-key)")
+            if not Path(val).is_file():
+                raise InputError(f"{k}: no such file {str(val)!r}")
+        from distributed.security import Security
+
+        security = Security(tls_ca_file=str(tls_ca_file), tls_client_cert=str(tls_cert),
+                            tls_client_key=str(tls_key), require_encryption=True)
+    else:
+        given = [k for k, val in tls.items() if val is not None]
+        if given:
+            raise InputError(f"{given[0]}: TLS options need a tls:// scheduler address, got "
+                             f"{address!r}")
+    return Scheduler(f"{proto}://{m['host']}:{port}", host, port, security)
+
+
+def _reachable(s: Scheduler) -> None:
+    """A plain TCP connection first: a closed port fails at once, a silent one within
+    CONNECT_TIMEOUT, instead of dask retrying for its whole timeout."""
+    import socket
+
+    try:
+        socket.create_connection((s.host, s.port), timeout=CONNECT_TIMEOUT).close()
+    except socket.gaierror as exc:
+        raise InputError(f"scheduler: cannot connect to {s.address!r} (unknown host: "
+                         f"{exc.strerror or exc})") from None
+    except TimeoutError:
+        raise InputError(f"scheduler: cannot connect to {s.address!r} (no answer within "
+                         f"{CONNECT_TIMEOUT:g} s)") from None
+    except OSError as exc:
+        raise InputError(f"scheduler: cannot connect to {s.address!r} "
+                         f"({exc.strerror or exc})") from None
 
 
 # -- progress -----------------------------------------------------------------------------
@@ -214,11 +287,16 @@ class Dask:
         self._log.setLevel(logging.CRITICAL + 10)
         self.cluster = None
         if scheduler:
-            progress.status(f"connecting to {scheduler}")
+            if not isinstance(scheduler, Scheduler):
+                scheduler = check_scheduler(scheduler)
+            progress.status(f"connecting to {scheduler.address}")
+            _reachable(scheduler)
             try:
-                self.client = Client(scheduler, timeout=f"{timeout}s")
+                self.client = Client(scheduler.address, timeout=f"{HANDSHAKE_TIMEOUT}s",
+                                     security=scheduler.security)
             except (OSError, TimeoutError) as exc:
-                raise InputError(f"scheduler: cannot connect to {scheduler!r} ({exc})") from None
+                raise InputError(f"scheduler: cannot connect to {scheduler.address!r} "
+                                 f"({exc})") from None
         else:
             from dask.distributed import LocalCluster
 

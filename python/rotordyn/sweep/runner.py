@@ -23,7 +23,7 @@ from rotordyn.sweep.store import Store, read_manifest
 from rotordyn.sweep.boundary import run_boundary
 from rotordyn.sweep.dataset import open_dataset
 from rotordyn.sweep.execution import (Dask, Progress, SweepInterrupted, SweepResult, Threads,
-                                      group_size)
+                                      check_scheduler, group_size)
 from rotordyn.sweep.work import Job
 from rotordyn.units import unit_of
 
@@ -64,17 +64,23 @@ def _header(spec: SweepSpec, model_toml: str) -> dict:
 
 def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | None = None,
               threads: int | None = None, resume: bool = True, progress=None,
-              worker_timeout: float = 30.0) -> SweepResult:
+              worker_timeout: float = 30.0, tls_ca_file=None, tls_cert=None,
+              tls_key=None) -> SweepResult:
     """Run (or resume) the sweep of ``spec_path`` into directory ``out``.
 
     threads : compute on this many threads in this process (no dask); else ``workers`` dask
-        worker processes on this machine, or the cluster at ``scheduler``.
+        worker processes on this machine, or the cluster at ``scheduler``
+        (``tcp://HOST:PORT``, or ``tls://HOST:PORT`` with ``tls_ca_file``, ``tls_cert`` and
+        ``tls_key``: the CA that signed the cluster's certificates, and this client's
+        certificate and key). The cluster is trusted completely: dask deserialises (runs)
+        what it receives; see docs/reliability.md.
     progress : True for a progress line on stderr, None for one only on a terminal, False
         for none.
     KeyboardInterrupt becomes :class:`SweepInterrupted` after the directory is left
     consistent (running again resumes).
     """
     spec = SweepSpec.from_toml(spec_path)
+    scheduler = check_scheduler(scheduler, tls_ca_file, tls_cert, tls_key)
     if threads is not None:
         v.integer("threads", threads, lo=1, hi=1024)
     if workers is not None:

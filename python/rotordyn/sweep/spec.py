@@ -22,6 +22,8 @@ from dataclasses import dataclass, field
 from decimal import Decimal, localcontext
 from pathlib import Path
 
+import numpy as np
+
 from rotordyn.errors import InputError
 from rotordyn._common import validate as v
 from rotordyn.model import builtin as models
@@ -153,6 +155,44 @@ def _axis(name: str, val) -> list[float]:
     if isinstance(val, list) and val:
         return [v.finite(f"{where}[{i}]", x) for i, x in enumerate(val)]
     raise InputError(f"{where}: expected a number, a non-empty list or {{start, stop, num}}")
+
+
+CHECK_ALL = 4096  # distinct values of a model-field axis each rebuilt into a model
+
+
+def _check_model_axis(system, name: str, vals: list) -> None:
+    """The values of a model-field axis against the model, fast for any length: a cheap
+    check of every value (an integer field takes integers), then the model rebuilt with
+    each distinct value once when there are at most CHECK_ALL of them, else with the
+    smallest, the largest and CHECK_ALL evenly spaced distinct values between (the model's
+    checks bound one field at a time; a value they would still reject becomes that point's
+    ``error`` row, never a crash). The error names ``grid.<name>[i]``, i the first index
+    holding the rejected value."""
+    from rotordyn.sweep.paths import get_field, set_field
+
+    arr = np.asarray(vals, dtype=float)
+    try:
+        old = get_field(system, name)
+    except (AttributeError, IndexError, KeyError, TypeError, InputError):
+        old = []
+    if any(isinstance(o, int) and not isinstance(o, bool) for o in old):
+        bad = np.flatnonzero(arr != np.round(arr))
+        if bad.size:
+            raise InputError(f"grid.{name}[{bad[0]}]: expected an integer (the field holds "
+                             f"one), got {vals[bad[0]]!r}")
+    uniq, first = np.unique(arr, return_index=True)
+    if len(uniq) <= CHECK_ALL:
+        pick = range(len(uniq))
+    else:
+        pick = np.unique(np.linspace(0, len(uniq) - 1, CHECK_ALL).round().astype(int))
+    head = f"grid.{name}: "
+    for k in pick:
+        i = int(first[k])
+        try:
+            set_field(system, name, vals[i])
+        except InputError as exc:
+            msg = str(exc).removeprefix(head)
+            raise InputError(f"grid.{name}[{i}]: {msg}") from None
 
 
 def fine_axes(spec) -> tuple[dict, dict]:
@@ -346,16 +386,25 @@ class SweepSpec:
             if any(b <= a_ for a_, b in zip(sp, sp[1:])) or sp[0] <= 0:
                 raise InputError("grid.speed_hz: expected positive, strictly increasing "
                                  "speeds")
-        if "chamber_pressure_pa" in self.axes:
-            for i, p in enumerate(self.axes["chamber_pressure_pa"]):
-                if p < 0 and a in ("threshold", "boundary"):
-                    raise InputError(f"grid.chamber_pressure_pa[{i}]: expected >= 0, got {p}")
+        self._check_operating()
+
+    def _check_operating(self) -> None:
+        """Every value of an operating axis within the range the analyses accept (the same
+        checks as ``rotordyn.equilibrium`` & co.), so that a bad value is one InputError
+        naming ``grid.<axis>[i]`` at load, not a sweep of error rows."""
+        checks = {"speed_hz": v.positive if self.analysis == "waterfall" else v.speed,
+                  "chamber_pressure_pa": v.non_negative, "config_ay_m": v.finite,
+                  "config_ax_m": v.finite}
+        for name, check in checks.items():
+            for i, val in enumerate(self.axes.get(name, ())):
+                check(f"grid.{name}[{i}]", val)
+        if self.analysis == "waterfall":
+            for i, val in enumerate(self.axes.get("speed_hz", ())):
+                v.speed(f"grid.speed_hz[{i}]", val)
 
     def check_against(self, system) -> None:
         """Every axis exists (model fields by dotted path) and every value builds a valid
         model; option stations exist. InputError names the axis."""
-        from rotordyn.sweep.paths import set_field
-
         for name, vals in self.axes.items():
             if name in OPERATING:
                 if name in ("config_ay_m", "config_ax_m"):
@@ -373,8 +422,7 @@ class SweepSpec:
                 raise InputError(f"grid.{name}: unknown axis (allowed: "
                                  f"{', '.join(OPERATING)}, a dotted model field such as "
                                  "bearings.active.clearance_m, or options.<name>)")
-            for val in vals:
-                set_field(system, name, val)
+            _check_model_axis(system, name, vals)
         n_st = system.rotor.n_stations
         for key in ("unbalances", "stations"):
             for i, u in enumerate(self.options.get(key, ())):

@@ -8,22 +8,28 @@ Layout::
     OUT/_rotordyn_sweep.json         manifest: spec, model, versions, schema (written once)
     OUT/_chunks.jsonl                append-only log: one line per file written, with its
                                      chunk range, row count, size and SHA-256
-    OUT/_lock                        the running driver (pid, host); refused to a second one
+    OUT/_lock                        flock of the running driver (pid, host); refused to a
+                                     second one
+    OUT/_boundary.parquet            derived file of a boundary sweep (logged as "aux")
 
-Every file is written to a ``_tmp-`` name, flushed, renamed, then logged: the log is the truth.
-On resume every logged file is verified (size, row count, SHA-256); a file that fails, and
-any ``part-*.parquet`` the log does not list (a crash between rename and log), is removed and
-its chunks are recomputed. Chunks are compacted in fixed groups (``group`` chunks per file) as
+Every file is written to a fresh ``_tmp-`` name (O_EXCL|O_NOFOLLOW, :mod:`.safedir`), renamed,
+then logged: the log is the truth, and nothing of the directory is trusted that the log does
+not vouch for. Log entries must name the store's own part files (:func:`part_name`); on
+resume every logged file is verified (regular file, size, row count, SHA-256); a file that
+fails, and any ``part-*.parquet`` the log does not list (a crash between rename and log), is
+removed and its chunks are recomputed. Readers (:mod:`.dataset`) verify the same way and
+refuse instead. See docs/reliability.md, "The sweep store". Chunks are compacted in fixed groups (``group`` chunks per file) as
 soon as a group is complete, so the final files do not depend on the order chunks finished
 or on how often the sweep was resumed.
 """
 
 from __future__ import annotations
 
+import errno
 import hashlib
-import io
 import json
 import os
+import re
 import socket
 import time
 from pathlib import Path
@@ -31,13 +37,20 @@ from pathlib import Path
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from rotordyn.errors import InputError
+from rotordyn.errors import InputError, OutputError
+from rotordyn.sweep.safedir import TMP, NotRegular, SafeDir, write_all
 
 MANIFEST = "_rotordyn_sweep.json"
 LOG = "_chunks.jsonl"
 LOCK = "_lock"
-TMP = "_tmp-"
+BOUNDARY = "_boundary.parquet"
+AUX = (BOUNDARY,)  # derived files logged with their hash (op "aux"), outside the dataset
 FORMAT = "rotordyn/sweep-dataset/2"
+_PART = re.compile(r"part-(\d{6,})-(\d{6,})\.parquet\Z")
+_SHA = re.compile(r"[0-9a-f]{64}\Z")
+# the disk failed us (a runtime failure, CLI exit 1), as opposed to a directory the user
+# cannot write to (bad input, exit 2)
+_RUNTIME = {errno.ENOSPC, errno.EDQUOT, errno.EIO, errno.EFBIG}
 
 
 def part_name(lo: int, hi: int) -> str:
@@ -46,7 +59,8 @@ def part_name(lo: int, hi: int) -> str:
 
 
 def _io(path, exc: OSError) -> InputError:
-    return InputError(f"out: cannot write {str(path)!r}: {exc.strerror or exc}")
+    cls = OutputError if exc.errno in _RUNTIME else InputError
+    return cls(f"out: cannot write {str(path)!r}: {exc.strerror or exc}")
 
 
 def _pid_alive(pid: int) -> bool:
@@ -61,6 +75,107 @@ def _pid_alive(pid: int) -> bool:
     return True
 
 
+# -- the log -------------------------------------------------------------------------------
+def log_corrupt(path, line: int, why: str) -> InputError:
+    """The one message for a log that cannot be trusted (from a resume and from ``open``)."""
+    return InputError(f"{LOG}: {str(path)!r} is corrupt at line {line} ({why}); the sweep "
+                      "can neither be resumed nor read from it: run it again with "
+                      "--no-resume (resume=False; every chunk is recomputed) or remove the "
+                      "directory")
+
+
+def _int(x) -> bool:
+    return isinstance(x, int) and not isinstance(x, bool) and x >= 0
+
+
+def _entry_problem(e) -> str | None:
+    """Why a parsed log line is not a well-formed entry (None if it is)."""
+    if not isinstance(e, dict) or e.get("op") not in ("file", "remove", "aux"):
+        return "not a log entry"
+    f = e.get("file")
+    if e["op"] == "aux":
+        if f not in AUX:
+            return f"file {f!r} is not a file of this store"
+        if not _int(e.get("bytes")) or not isinstance(e.get("sha256"), str) or \
+                not _SHA.match(e["sha256"]):
+            return f"{f}: bytes and sha256 must be a size and a SHA-256 digest"
+        return None
+    if not isinstance(f, str) or not _PART.match(f):
+        return f"file {f!r} is not a part name of this store"
+    if e["op"] == "remove":
+        return None
+    lo, hi = e.get("lo"), e.get("hi")
+    if not (_int(lo) and _int(hi) and lo <= hi) or f != part_name(lo, hi):
+        return f"file {f!r} does not match its chunk range"
+    if not (_int(e.get("rows")) and _int(e.get("bytes"))):
+        return f"{f}: rows and bytes must be non-negative integers"
+    if not isinstance(e.get("sha256"), str) or not _SHA.match(e["sha256"]):
+        return f"{f}: sha256 is not a SHA-256 digest"
+    c = e.get("counts")
+    if not isinstance(c, list) or len(c) != hi - lo + 1 or not all(
+            isinstance(x, dict) and all(_int(x.get(k)) for k in ("ok", "failed", "unstable"))
+            for x in c):
+        return f"{f}: counts must be one {{ok, failed, unstable}} per chunk"
+    return None
+
+
+def parse_log(data: bytes, path) -> list[dict]:
+    """The entries of a log; a torn last line (a driver killed mid-append) is dropped, any
+    other bad line is :func:`log_corrupt`."""
+    out = []
+    lines = data.split(b"\n")
+    for i, ln in enumerate(lines):
+        if not ln.strip():
+            continue
+        try:
+            e = json.loads(ln)
+        except ValueError:
+            if i >= len(lines) - 2 and not data.endswith(b"\n"):  # torn last line
+                break
+            raise log_corrupt(path, i + 1, "not JSON") from None
+        why = _entry_problem(e)
+        if why:
+            raise log_corrupt(path, i + 1, why)
+        out.append(e)
+    return out
+
+
+def live_entries(entries: list[dict]) -> dict[str, dict]:
+    live: dict[str, dict] = {}
+    for e in entries:
+        if e["op"] == "file":
+            live[e["file"]] = e
+        elif e["op"] == "remove":
+            live.pop(e["file"], None)
+    return live
+
+
+def read_aux(out, name: str) -> dict | None:
+    """The last log entry of derived file ``name`` (AUX), or None if it is not logged."""
+    d = SafeDir(out)
+    try:
+        entries = parse_log(_bookkeeping(d, LOG, "dir") or b"", Path(out) / LOG)
+    finally:
+        d.close()
+    got = [e for e in entries if e["op"] == "aux" and e["file"] == name]
+    return got[-1] if got else None
+
+
+def _bookkeeping(d: SafeDir, name: str, field: str) -> bytes | None:
+    """A bookkeeping file's bytes (None if missing); a symlink or a non-regular file is
+    refused, never followed."""
+    try:
+        return d.read(name)
+    except FileNotFoundError:
+        return None
+    except NotRegular as exc:
+        raise InputError(f"{field}: {str(Path(d.path) / name)!r} is a symlink or not a "
+                         f"regular file ({exc.strerror}); refusing to use it") from None
+    except OSError as exc:
+        raise InputError(f"{field}: cannot read {str(Path(d.path) / name)!r}: "
+                         f"{exc.strerror or exc}") from None
+
+
 class Store:
     """An open sweep directory, locked for this process."""
 
@@ -69,8 +184,9 @@ class Store:
         self.header = header
         self.group = max(1, int(group))
         self.files: dict[str, dict] = {}   # file name -> log entry (live files only)
-        self._locked = False
-        self._log = None
+        self._lockfd = None
+        self._log = None                   # descriptor of the log, open for appending
+        self.dir = None
         # fsync after every file: only needed to survive a power loss (a killed process
         # loses nothing the OS has been given); off by default, a resume verifies anyway
         self.durable = os.environ.get("ROTORDYN_SWEEP_FSYNC", "") == "1"
@@ -79,10 +195,11 @@ class Store:
             raise InputError(f"out: {str(out)!r} is a file, expected a directory")
         try:
             out.mkdir(parents=True, exist_ok=True)
+            self.dir = SafeDir(out)
         except OSError as exc:
             raise InputError(f"out: cannot create {str(out)!r}: {exc.strerror or exc}") from None
-        self._lock()
         try:
+            self._lock()
             self._open(resume)
         except BaseException:
             self.close()
@@ -92,71 +209,85 @@ class Store:
     def _lock(self) -> None:
         path = self.out / LOCK
         me = {"pid": os.getpid(), "host": socket.gethostname(), "started": time.time()}
-        # The lock is created with its content in one step (a hard link to a written
-        # temporary file), so a driver killed at any moment never leaves an empty lock.
-        tmp = self.out / f"{TMP}lock-{me['pid']}"
+
+        def stale(old: dict) -> bool:
+            # a lock file of an older driver (link lock, no flock): its process may run
+            try:
+                pid, host = int(old["pid"]), str(old["host"])
+            except (KeyError, TypeError, ValueError):
+                return True
+            return host == me["host"] and not _pid_alive(pid)
+
         try:
-            tmp.write_text(json.dumps(me))
+            fd, holder = self.dir.lock(LOCK, me, stale)
+        except NotRegular as exc:
+            raise InputError(f"out: {str(path)!r} is a symlink or not a regular file "
+                             f"({exc.strerror}); refusing to use it") from None
         except OSError as exc:
-            raise InputError(f"out: {str(self.out)!r} is not writable: "
-                             f"{exc.strerror or exc}") from None
-        try:
-            for _ in range(2):
-                try:
-                    os.link(tmp, path)
-                except FileExistsError:
-                    try:
-                        other = json.loads(path.read_text())
-                        pid, host = int(other["pid"]), str(other["host"])
-                    except (OSError, ValueError, KeyError, TypeError):
-                        pid, host = -1, "?"
-                    if host == me["host"] and not _pid_alive(pid) or host == "?":
-                        path.unlink(missing_ok=True)  # stale: its driver is gone
-                        continue
-                    raise InputError(
-                        f"out: {str(self.out)!r} is in use by another sweep (pid {pid} on "
-                        f"{host}); wait for it to finish, or remove {str(path)!r} if that "
-                        "process is gone") from None
-                except OSError as exc:
-                    raise InputError(f"out: {str(self.out)!r} is not writable: "
-                                     f"{exc.strerror or exc}") from None
-                self._locked = True
-                return
-        finally:
-            tmp.unlink(missing_ok=True)
-        raise InputError(f"out: could not lock {str(self.out)!r}")
+            if exc.errno == errno.ELOOP:
+                raise InputError(f"out: {str(path)!r} is a symlink; refusing to use it") \
+                    from None
+            cls = OutputError if exc.errno in _RUNTIME else InputError
+            raise cls(f"out: {str(self.out)!r} is not writable: {exc.strerror or exc}") \
+                from None
+        if fd is None:
+            who = (f"out: {str(self.out)!r} is in use by another sweep (pid "
+                   f"{holder.get('pid', '?')} on {holder.get('host', '?')}); wait for it to "
+                   "finish")
+            if holder.get("flock") or not holder:
+                # held by flock: its process is alive (the kernel drops the lock when it
+                # exits); removing the file would let a second driver in
+                raise InputError(f"{who} (the lock is released when that process exits)")
+            raise InputError(f"{who}, or remove {str(path)!r} if that process is gone "
+                             "(a lock of an older rotordyn)")
+        self._lockfd = fd
 
     def close(self) -> None:
+        """Release the directory; never raises (a failure here must not hide the error that
+        made the sweep stop)."""
         if self._log is not None:
-            self._log.close()
+            try:
+                os.close(self._log)
+            except OSError:
+                pass
             self._log = None
-        if self._locked:
-            (self.out / LOCK).unlink(missing_ok=True)
-            self._locked = False
+        if self._lockfd is not None:
+            try:
+                self.dir.unlock(LOCK, self._lockfd)
+            except OSError:
+                pass
+            self._lockfd = None
+        if self.dir is not None:
+            try:
+                self.dir.close()
+            except OSError:
+                pass
 
     # -- opening -------------------------------------------------------------------------
     def _ours(self, name: str) -> bool:
-        return name.startswith("part-") and name.endswith(".parquet")
+        return bool(_PART.match(name))
 
     def _open(self, resume: bool) -> None:
         out = self.out
         mpath = out / MANIFEST
         manifest = None
-        if mpath.exists():
+        raw = _bookkeeping(self.dir, MANIFEST, "out")
+        if raw is not None:
             try:
-                manifest = json.loads(mpath.read_text(encoding="utf-8"))
+                manifest = json.loads(raw.decode("utf-8"))
                 if not isinstance(manifest, dict) or manifest.get("format") != FORMAT:
                     raise ValueError("not a rotordyn sweep manifest")
             except (ValueError, UnicodeDecodeError) as exc:
                 raise InputError(f"out: {str(mpath)!r} is corrupt ({exc}); remove the "
                                  "directory or choose another --out") from None
-        stray = sorted(p.name for p in out.iterdir() if p.suffix == ".parquet"
-                       and not p.name.startswith(("_", ".")))
+        stray = sorted(n for n in self.dir.names() if n.endswith(".parquet")
+                       and not n.startswith(("_", ".")))
         if manifest is None:
-            if stray or (out / LOG).exists():
+            if stray or self.dir.lstat(LOG) is not None:
                 raise InputError(f"out: {str(out)!r} holds parquet files but no sweep manifest "
                                  f"({stray[0] if stray else LOG}); they may belong to another "
                                  "sweep: choose an empty directory")
+            self._clean_tmp()
             self._write_manifest()
             self._rewrite_log([])
             return
@@ -172,7 +303,7 @@ class Store:
                     f"out: {str(out)!r} holds sweep {manifest.get('sweep_id')!r}, not "
                     f"{self.header['sweep_id']!r}; --no-resume only restarts the same sweep")
             for n in stray:
-                (out / n).unlink()
+                self.dir.unlink(n)
             self._clean_tmp()
             self._write_manifest()
             self._rewrite_log([])
@@ -182,13 +313,8 @@ class Store:
                              f"({manifest.get('sweep_id')!r}: spec or model changed); use "
                              "another directory or --no-resume")
         self._clean_tmp()
-        entries = self._read_log()
-        live = {}
-        for e in entries:
-            if e.get("op") == "file":
-                live[e["file"]] = e
-            elif e.get("op") == "remove":
-                live.pop(e["file"], None)
+        raw = _bookkeeping(self.dir, LOG, "out")
+        live = live_entries(parse_log(raw or b"", out / LOG))
         good = [e for e in live.values() if self._verify(e)]
         # a crash between logging a compacted file and logging the removal of its parts
         # leaves both: keep the widest file covering each chunk
@@ -198,74 +324,77 @@ class Store:
         keep = {e["file"] for e in good}
         for n in stray:
             if n not in keep:
-                (out / n).unlink()
+                self.dir.unlink(n)  # a symlink of a part's name goes too (not its target)
         self._rewrite_log(good)
 
     def _clean_tmp(self) -> None:
-        for p in self.out.glob(TMP + "*"):
-            p.unlink(missing_ok=True)
+        # only the lock holder writes temporaries, so every one here is a dead driver's
+        for n in self.dir.names():
+            if n.startswith(TMP):
+                try:
+                    self.dir.unlink(n)
+                except OSError:
+                    pass
 
     def _write_manifest(self) -> None:
         self._atomic(MANIFEST, json.dumps({"format": FORMAT, **self.header}, indent=1).encode())
 
-    def _read_log(self) -> list[dict]:
-        path = self.out / LOG
-        if not path.exists():
-            return []
-        out = []
-        lines = path.read_bytes().split(b"\n")
-        for i, ln in enumerate(lines):
-            if not ln.strip():
-                continue
-            try:
-                out.append(json.loads(ln))
-            except ValueError:
-                if i >= len(lines) - 2:  # a torn last line (killed mid-append)
-                    break
-                raise InputError(f"out: {str(path)!r} is corrupt at line {i + 1}; remove the "
-                                 "directory or use --no-resume") from None
-        return out
+    def _read_part(self, e: dict) -> bytes:
+        """The bytes of a logged file, checked against the log (size, SHA-256); NotRegular
+        or OSError otherwise."""
+        data = self.dir.read(e["file"], expect_size=e["bytes"])
+        if len(data) != e["bytes"] or hashlib.sha256(data).hexdigest() != e["sha256"]:
+            raise NotRegular(errno.EINVAL, f"{e['file']} does not match its SHA-256")
+        return data
 
     def _verify(self, e: dict) -> bool:
-        p = self.out / e["file"]
         try:
-            if p.stat().st_size != e["bytes"]:
-                return False
-            data = p.read_bytes()
-            if hashlib.sha256(data).hexdigest() != e["sha256"]:
-                return False
-            return pq.ParquetFile(io.BytesIO(data)).metadata.num_rows == e["rows"]
-        except (OSError, KeyError, pa.ArrowException):
+            data = self._read_part(e)
+            return pq.ParquetFile(pa.BufferReader(data)).metadata.num_rows == e["rows"]
+        except (OSError, pa.ArrowException):
             return False
 
     def _rewrite_log(self, entries: list[dict]) -> None:
         if self._log is not None:
-            self._log.close()
+            os.close(self._log)
+            self._log = None
         text = "".join(json.dumps(e, sort_keys=True) + "\n" for e in entries)
-        self._atomic(LOG, text.encode())
+        # the descriptor that wrote the new log stays open for the appends: the log is
+        # never reopened by name
+        try:
+            self._log = self.dir.write_atomic(LOG, text.encode(), durable=self.durable,
+                                              keep_open=True)
+        except OSError as exc:
+            raise _io(self.out / LOG, exc) from None
         self.files = {e["file"]: e for e in entries}
-        self._log = open(self.out / LOG, "ab")
 
     def _atomic(self, name: str, data: bytes) -> None:
-        tmp = self.out / (TMP + name)
         try:
-            with open(tmp, "wb") as fh:
-                fh.write(data)
-                if self.durable:
-                    fh.flush()
-                    os.fsync(fh.fileno())
-            os.replace(tmp, self.out / name)
+            self.dir.write_atomic(name, data, durable=self.durable)
         except OSError as exc:
-            tmp.unlink(missing_ok=True)
             raise _io(self.out / name, exc) from None
 
+    def add_aux(self, name: str, data: bytes) -> None:
+        """Write a derived file (AUX) and log its size and SHA-256."""
+        self._atomic(name, data)
+        self._append({"op": "aux", "file": name, "bytes": len(data),
+                      "sha256": hashlib.sha256(data).hexdigest()})
+
     def _append(self, entry: dict) -> None:
+        line = (json.dumps(entry, sort_keys=True) + "\n").encode()
         try:
-            self._log.write((json.dumps(entry, sort_keys=True) + "\n").encode())
-            self._log.flush()
-            if self.durable:
-                os.fsync(self._log.fileno())
+            end = os.lseek(self._log, 0, os.SEEK_END)
         except OSError as exc:
+            raise _io(self.out / LOG, exc) from None
+        try:
+            write_all(self._log, line)
+            if self.durable:
+                os.fsync(self._log)
+        except OSError as exc:
+            try:  # no torn line left behind (a resume would drop it anyway)
+                os.ftruncate(self._log, end)
+            except OSError:
+                pass
             raise _io(self.out / LOG, exc) from None
 
     # -- chunks ------------------------------------------------------------------------
@@ -320,49 +449,61 @@ class Store:
             if g1 > g0 and all(n in self.files for n in names):
                 self._compact(g0, g1, names)
 
+    def _table(self, e: dict) -> pa.Table | pq.ParquetFile:
+        """A logged file, re-checked against its SHA-256 (a part replaced since the resume
+        verified it must not be laundered into a compacted file with a fresh hash)."""
+        try:
+            return pq.ParquetFile(pa.BufferReader(self._read_part(e)))
+        except (OSError, pa.ArrowException) as exc:
+            raise InputError(f"out: {str(self.out / e['file'])!r} changed while the sweep "
+                             f"ran ({getattr(exc, 'strerror', None) or exc}); run the sweep "
+                             "again to verify and recompute it") from None
+
     def _compact(self, lo: int, hi: int, names: list[str]) -> None:
-        tables = [pq.read_table(self.out / n) for n in names]
+        tables = [self._table(self.files[n]).read() for n in names]
         counts = [self.files[n]["counts"][0] for n in names]
         self._write_file(part_name(lo, hi), tables, lo, hi, counts)
         for n in names:
             self._append({"op": "remove", "file": n})
             self.files.pop(n, None)
-            (self.out / n).unlink(missing_ok=True)
-
-    def ordered_files(self) -> list[Path]:
-        return [self.out / n for n in sorted(self.files)]
+            self.dir.unlink(n)
 
     def table(self, chunk_id: int) -> pa.Table:
         """The rows of one done chunk (for driver-side analyses that build on results)."""
         for e in self.files.values():
             if e["lo"] <= chunk_id <= e["hi"]:
-                f = pq.ParquetFile(self.out / e["file"])
-                return f.read_row_group(chunk_id - e["lo"])
+                return self._table(e).read_row_group(chunk_id - e["lo"])
         raise KeyError(chunk_id)
 
 
-def read_manifest(out) -> tuple[dict, list[dict]]:
-    """(manifest, live log entries) of a sweep directory, without locking it."""
-    out = Path(out)
-    mpath = out / MANIFEST
-    if not mpath.is_file():
-        raise InputError(f"dir: {str(out)!r} is not a sweep directory (no {MANIFEST})")
+def open_dir(out) -> SafeDir:
+    """The sweep directory ``out`` opened for reading (InputError if it is not one)."""
     try:
-        manifest = json.loads(mpath.read_text(encoding="utf-8"))
-    except (ValueError, UnicodeDecodeError) as exc:
-        raise InputError(f"dir: {str(mpath)!r} is corrupt ({exc})") from None
-    live: dict = {}
-    path = out / LOG
-    if path.exists():
-        for ln in path.read_bytes().split(b"\n"):
-            try:
-                e = json.loads(ln) if ln.strip() else None
-            except ValueError:
-                break
-            if e is None:
-                continue
-            if e.get("op") == "file":
-                live[e["file"]] = e
-            elif e.get("op") == "remove":
-                live.pop(e["file"], None)
+        return SafeDir(out)
+    except OSError:
+        raise InputError(f"dir: {str(out)!r} is not a sweep directory (no {MANIFEST})") \
+            from None
+
+
+def read_manifest(out, d: SafeDir | None = None) -> tuple[dict, list[dict]]:
+    """(manifest, live log entries) of a sweep directory, without locking it (``d``: the
+    directory already opened, to read everything through one descriptor). Names in the log
+    are checked (the store's own part names, nothing outside the directory)."""
+    out = Path(out)
+    mine = d is None
+    d = open_dir(out) if mine else d
+    try:
+        raw = _bookkeeping(d, MANIFEST, "dir")
+        if raw is None:
+            raise InputError(f"dir: {str(out)!r} is not a sweep directory (no {MANIFEST})")
+        try:
+            manifest = json.loads(raw.decode("utf-8"))
+            if not isinstance(manifest, dict) or manifest.get("format") != FORMAT:
+                raise ValueError("not a rotordyn sweep manifest")
+        except (ValueError, UnicodeDecodeError) as exc:
+            raise InputError(f"dir: {str(out / MANIFEST)!r} is corrupt ({exc})") from None
+        live = live_entries(parse_log(_bookkeeping(d, LOG, "dir") or b"", out / LOG))
+    finally:
+        if mine:
+            d.close()
     return manifest, [live[k] for k in sorted(live)]
