@@ -30,6 +30,7 @@ from rotordyn.analysis import (
     rotor_campbell,
     stability,
     stability_boundary,
+    static,
     statespace,
     threshold,
     transient,
@@ -73,6 +74,7 @@ from rotordyn.results import (
     LinearModel,
     ModesResult,
     StabilityResult,
+    StaticResult,
 )
 
 __all__ = [
@@ -117,12 +119,14 @@ __all__ = [
     "stability",
     "threshold",
     "stability_boundary",
+    "static",
     "unbalance_response",
     "statespace",
     "transient",
     "ModesResult",
     "LinearModel",
     "StabilityResult",
+    "StaticResult",
     "CampbellResult",
     "EquilibriumResult",
     "SleeveResult",

@@ -35,6 +35,14 @@ class BearingCoords:
     extra: tuple[int, ...] = ()  # the element's own coordinates (pad tilts, pivots)
 
 
+def gravity_load(system: System) -> np.ndarray:
+    """(4 n_nodes,) consistent gravity load −g M e_y of the free-free rotor FE model (N, N·m),
+    e_y = 1 at every node's y translation (gravity along −y)."""
+    n_nodes = system.rotor.n_elements + 1
+    return -system.gravity_m_s2 * np.asarray(system.M() @ np.tile([0.0, 1.0, 0.0, 0.0],
+                                                                   n_nodes))
+
+
 class Assembled:
     """The C++ ``SystemModel`` and ``SystemSolver`` of a System, with the index maps."""
 
@@ -45,12 +53,12 @@ class Assembled:
         n_r = M.shape[0]
         nodes = system.rotor.station_nodes()
 
-        # Gravity: consistent nodal loads −g M e_y on the constrained full model, condensed.
+        # Gravity: consistent nodal loads −g M e_y, e_y the rigid vertical translation of every
+        # node (the fixed ones too: an element beside a rigid support loads its free node with
+        # its whole shape-function integral), on the free DOFs, condensed.
         full = self.rotor.full
-        ey = np.zeros(len(full.dofs))
         dofs = np.asarray(full.dofs)
-        ey[(dofs % 4) == 1] = 1.0
-        q_full = -system.gravity_m_s2 * (np.asarray(full.M) @ ey)
+        q_full = gravity_load(system)[dofs]
         Q_r = q_full if self.rotor.reduction is None else np.asarray(self.rotor.reduction.T).T @ q_full
 
         def journal_index(station: int) -> tuple[int, int]:

@@ -59,6 +59,15 @@ def register(sub) -> None:
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_equilibrium)
 
+    s = sub.add_parser("static", help="static deflection, shear, bending moment and the "
+                                      "reactions at the equilibrium")
+    s.add_argument("model", help=MODEL_HELP)
+    add_operating_point(s)
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="also write the deflection, shear and moment diagrams to FIG.png/.svg")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    s.set_defaults(func=_cmd_static)
+
     s = sub.add_parser("stability", help="eigenvalues of the linearised system (eq. 19)")
     s.add_argument("model", help=MODEL_HELP)
     add_operating_point(s)
@@ -222,6 +231,25 @@ def _window(freqs, args, table: bool) -> np.ndarray:
     if args.n_modes is None and args.max_freq_hz is None and table:
         keep = keep[:MODE_TABLE_ROWS]
     return keep
+
+
+def _cmd_static(args) -> int:
+    check_figure(args.plot)
+    s = models.load(args.model)
+    r = analysis.static(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m)
+    if args.json:
+        print(json_text({"status": r.status, "message": r.message, "speed_hz": r.speed_hz,
+                         "weight_n": r.weight_n, "reactions": r.reactions.to_dict("records"),
+                         "along": r.to_frame().drop(columns="status").to_dict("list")}))
+    else:
+        print(table_text(r.reactions))
+        print(repr(r), file=sys.stderr)
+    if args.plot and r.status in CONVERGED:
+        save_figure(r.plot(system=s), args.plot)
+    if r.status not in CONVERGED:
+        print(f"rotordyn: failed: {r.status}: {r.message}", file=sys.stderr)
+        return 1
+    return 0
 
 
 def _cmd_stability(args) -> int:

@@ -239,6 +239,25 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                  "to scale (radial scale exaggerated), disks, bearings, stations."
                  "</figcaption></figure>")
 
+    # static: how the weight is shared, deflection and bending at N_mc
+    _progress(progress, "static analysis")
+    stat = analysis.static(s, rng.n_mc_hz, pc, ay)
+    if stat.converged:
+        parts.append("<h2>1b. Static load sharing</h2><figure>"
+                     + svg(stat.plot(system=s)[0].figure)
+                     + f"<figcaption>At {rng.n_mc_hz:.4g} Hz: deflection, shear force and "
+                     "bending moment along the rotor.</figcaption></figure>"
+                     + _table(["support / bearing", "station", "kind", "F_x (N)", "F_y (N)"],
+                              [(html.escape(str(r.name or "")), r.station, r.kind,
+                                f"{r.force_x_n:.4g}", f"{r.force_y_n:.4g}")
+                               for r in stat.reactions.itertuples()])
+                     + f"<p>Weight {stat.weight_n:.4g} N; the reactions' vertical sum "
+                     f"{stat.reactions['force_y_n'].sum():.4g} N.</p>")
+    else:
+        parts.append(f"<h2>1b. Static load sharing</h2><p class=\"nr\">No equilibrium at "
+                     f"{rng.n_mc_hz:.4g} Hz ({html.escape(stat.status)}): "
+                     f"{html.escape(stat.message)}</p>")
+
     # 2. undamped critical speed map with the bearings' K(Ω)
     _progress(progress, "bearing stiffness over speed")
     curves = _bearing_stiffness_curves(s, np.linspace(sp[0], sp[-1], 9), pc, ay)

@@ -6,8 +6,9 @@ from rotordyn.results.modes import ModesResult
 from rotordyn.results.stability import LinearModel, StabilityResult
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 from rotordyn.results.statespace import StateSpaceResult
+from rotordyn.results.static import StaticResult
 from rotordyn.results.transient import TransientResult
 from rotordyn.results.unbalance import UnbalanceResult
 
 __all__ = ["ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel", "StabilityResult",
-           "ThresholdResult", "BoundaryResult", "UnbalanceResult", "StateSpaceResult", "TransientResult"]
+           "ThresholdResult", "BoundaryResult", "UnbalanceResult", "StateSpaceResult", "TransientResult", "StaticResult"]
