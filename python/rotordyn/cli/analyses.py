@@ -11,7 +11,7 @@ from rotordyn import analysis
 from rotordyn._common.info import __version__, build_info
 from rotordyn._common.status import CONVERGED
 from rotordyn.cli import sleeve
-from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_operating_point, check_figure,
+from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point, check_figure,
                                  json_text, save_figure, table_text)
 from rotordyn.cli.common import speeds as parse_speeds
 from rotordyn.errors import InputError
@@ -20,6 +20,12 @@ from rotordyn.model import builtin as models
 
 def register(sub) -> None:
     """The subcommands of this module on the ``rotordyn`` parser's subparsers ``sub``."""
+    _register(sub)
+    for name in ("validate", "modes", "static", "campbell", "unbalance"):
+        add_dpi(sub.choices[name])
+
+
+def _register(sub) -> None:
     s = sub.add_parser("info", help="package and library versions")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_info)
@@ -143,7 +149,7 @@ def _cmd_validate(args) -> int:
     if args.plot:
         from rotordyn.plot import rotor_drawing
 
-        save_figure(rotor_drawing(s), args.plot)
+        save_figure(rotor_drawing(s), args.plot, args.dpi)
     return 0
 
 
@@ -179,9 +185,9 @@ def _cmd_modes(args) -> int:
             if not 1 <= args.mode <= len(shown.eigenvalues):
                 raise InputError(f"--mode: expected 1..{len(shown.eigenvalues)}, got "
                                           f"{args.mode}")
-            save_figure(shown.plot(args.mode - 1, system=s), args.plot)
+            save_figure(shown.plot(args.mode - 1, system=s), args.plot, args.dpi)
         else:
-            save_figure(shown.plot(), args.plot)
+            save_figure(shown.plot(), args.plot, args.dpi)
     return 0
 
 
@@ -245,7 +251,7 @@ def _cmd_static(args) -> int:
         print(table_text(r.reactions))
         print(repr(r), file=sys.stderr)
     if args.plot and r.status in CONVERGED:
-        save_figure(r.plot(system=s), args.plot)
+        save_figure(r.plot(system=s), args.plot, args.dpi)
     if r.status not in CONVERGED:
         print(f"rotordyn: failed: {r.status}: {r.message}", file=sys.stderr)
         return 1
@@ -301,7 +307,7 @@ def _cmd_campbell(args) -> int:
         ax = c.plot()
         if args.max_freq_hz is not None:
             ax.set_ylim(0, args.max_freq_hz)
-        save_figure(ax, args.plot)
+        save_figure(ax, args.plot, args.dpi)
     return 0
 
 
@@ -342,6 +348,12 @@ def _cmd_unbalance(args) -> int:
         for st in u.stations:
             print(f"station {st}:")
             print(table_text(u.peaks(st)))
-    if args.plot:
-        save_figure(u.plot(kind=args.plot_kind), args.plot)
+    if args.plot:  # one figure per output station (FIG_station<k>.png when several)
+        from pathlib import Path
+
+        for st in u.stations:
+            path = args.plot if len(u.stations) == 1 else str(
+                Path(args.plot).with_name(f"{Path(args.plot).stem}_station{st}"
+                                          f"{Path(args.plot).suffix}"))
+            save_figure(u.plot(station=st, kind=args.plot_kind), path, args.dpi)
     return 0

@@ -147,12 +147,29 @@ def out_dir(flag: str, path: str) -> str:
     return path
 
 
-def save_figure(ax, path: str) -> None:
-    """Save the figure of ``ax`` (or of the first of a tuple of Axes) to PNG/SVG/PDF."""
+FIGURE_DPI = 200  # the figure style's resolution (rotordyn.plot._style.RC, savefig.dpi)
+
+
+def add_dpi(s) -> None:
+    """``--dpi`` on a command that writes a figure."""
+    s.add_argument("--dpi", type=int, default=FIGURE_DPI, metavar="N",
+                   help=f"resolution of a PNG figure, dots per inch (default {FIGURE_DPI})")
+
+
+def check_dpi(dpi) -> int:
+    if isinstance(dpi, bool) or not isinstance(dpi, int) or not 50 <= dpi <= 2400:
+        raise InputError(f"--dpi: expected an integer in [50, 2400], got {dpi!r}")
+    return dpi
+
+
+def save_figure(ax, path: str, dpi: int = FIGURE_DPI) -> None:
+    """Save the figure of ``ax`` (or of the first of a tuple of Axes) to PNG/SVG/PDF at
+    ``dpi`` (the style's 200 by default; the rc context the figure was drawn in is gone by
+    now, so the resolution is given explicitly)."""
     import matplotlib.pyplot as plt
 
     fig = (ax[0] if isinstance(ax, tuple) else ax).figure
-    fig.savefig(path)
+    fig.savefig(path, dpi=check_dpi(dpi))
     plt.close(fig)
     print(f"wrote {path}", file=sys.stderr)
 

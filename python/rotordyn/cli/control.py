@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from rotordyn.cli.common import json_text, out_dir
+from rotordyn.cli.common import FIGURE_DPI, json_text, out_dir
 from rotordyn.errors import InputError
 
 MAX_AXIS = 10_000  # points of one --speed-hz or --pressure-pa axis
@@ -159,7 +159,7 @@ def run_schedule(args) -> int:
     ax[1].set_ylabel("largest amplitude (µm)")
     ax[1].legend()
     fig.tight_layout()
-    fig.savefig(out / "schedule.png", dpi=110)
+    fig.savefig(out / "schedule.png", dpi=FIGURE_DPI)
     plt.close(fig)
     summary = {"best_constant_pa": res.best_constant_pa,
                "peak_schedule_m": _peak(res.objective_m),
@@ -282,7 +282,7 @@ def run_closed_loop(args) -> int:
     ax[1].set_xlabel("t (s)")
     ax[1].set_ylabel("p_c (MPa)")
     fig.tight_layout()
-    fig.savefig(out / "closed_loop.png", dpi=110)
+    fig.savefig(out / "closed_loop.png", dpi=FIGURE_DPI)
     plt.close(fig)
     if args.json:
         print(json_text(summary))

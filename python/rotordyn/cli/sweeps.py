@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from rotordyn.cli.common import figure_path
+from rotordyn.cli.common import add_dpi, check_dpi, figure_path
 from rotordyn.errors import InputError
 
 
@@ -49,6 +49,7 @@ def register(sub) -> None:
                    help="fix an axis of the sweep at its grid value nearest VALUE (SI), e.g. "
                         "--where bearing[0].clearance_m=1e-4; repeatable (a third varying axis "
                         "is refused, never averaged)")
+    add_dpi(s)
     s.set_defaults(func=_cmd_plot)
 
 
@@ -83,6 +84,7 @@ def _cmd_plot(args) -> int:
     kw = ({"style": args.style, "scale": args.scale, "axis": args.axis}
           if args.kind == "waterfall" else {})
     kw["where"] = _where(args.where)
+    kw["dpi"] = check_dpi(args.dpi)
     plot_dataset(read_dataset(args.dir), args.kind, args.out, **kw)
     print(f"wrote {args.out}", file=sys.stderr)
     return 0

@@ -40,8 +40,8 @@ def campbell(df: pd.DataFrame, ax=None, rotor_only: bool = True, where=None):
                            piv["_w"].to_numpy(), ax=ax, critical=None)
 
 
-def plot_dataset(df: pd.DataFrame, kind: str, out: str, **kwargs) -> str:
-    """Draw ``kind`` from a sweep dataset and save it to ``out`` (PNG or SVG)."""
+def plot_dataset(df: pd.DataFrame, kind: str, out: str, dpi: int = 200, **kwargs) -> str:
+    """Draw ``kind`` from a sweep dataset and save it to ``out`` (PNG or SVG, ``dpi``)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -58,6 +58,6 @@ def plot_dataset(df: pd.DataFrame, kind: str, out: str, **kwargs) -> str:
     else:
         kwargs["where"] = where
     ax = fn(df, **kwargs)
-    ax.figure.savefig(out)
+    ax.figure.savefig(out, dpi=dpi)
     plt.close(ax.figure)
     return out

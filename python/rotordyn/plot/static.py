@@ -3,7 +3,6 @@ the vertical and horizontal planes, with the reactions of the supports and beari
 
 from __future__ import annotations
 
-import numpy as np
 
 from rotordyn.plot._style import PAGE_IN, paper_style
 
