@@ -70,3 +70,34 @@ def require(cond: bool, message: str) -> None:
 def finite_range(*arrays) -> tuple[float, float]:
     vals = np.concatenate([np.ravel(a)[np.isfinite(np.ravel(a))] for a in arrays])
     return (float(vals.min()), float(vals.max())) if vals.size else (0.0, 1.0)
+
+
+def declutter(texts, fig=None) -> int:
+    """Hide each text (annotation) whose box overlaps one kept before it (``texts`` in order of
+    priority), so that labels never pile up; returns how many were hidden."""
+    texts = [t for t in texts if t.get_visible()]
+    if not texts:
+        return 0
+    fig = fig or texts[0].figure
+    fig.canvas.draw()
+    r = fig.canvas.get_renderer()
+    kept, hidden = [], 0
+    for t in texts:
+        box = t.get_window_extent(r).padded(1.0)
+        if any(box.overlaps(k) for k in kept):
+            t.set_visible(False)
+            hidden += 1
+        else:
+            kept.append(box)
+    return hidden
+
+
+def legend_below(ax, handles, ncol: int = 3, **kw):
+    """The legend under the figure's axes, outside them (a constrained-layout figure makes
+    room for it, so it never covers the x label); inside the axes otherwise."""
+    fig = ax.figure
+    if fig.get_layout_engine() is not None and type(fig.get_layout_engine()).__name__ == \
+            "ConstrainedLayoutEngine":
+        return fig.legend(handles=handles, loc="outside lower center", ncol=ncol,
+                          fontsize=kw.pop("fontsize", 6), **kw)
+    return ax.legend(handles=handles, loc="best", fontsize=kw.pop("fontsize", 6), **kw)

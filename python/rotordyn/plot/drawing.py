@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rotordyn.plot._style import PAGE_IN, new_axes, paper_style
+from rotordyn.plot._style import PAGE_IN, declutter, new_axes, paper_style
 
 
 def disk_radius_m(disk) -> float:
@@ -47,7 +47,7 @@ def support_items(system):
     for b in system.bearings:
         kind = kinds[type(b)]
         lab = _bearing_label(kind, b)
-        out.append((b.station, f"{b.name}: {lab}" if b.name else lab, kind))
+        out.append((b.station, f"{b.name}\n{lab}" if b.name else lab, kind))
     return out
 
 
@@ -55,6 +55,23 @@ SUPPORT_STYLE = {"rigid": ("^", "tab:blue"), "linear": ("^", "tab:green"),
                  "journal": ("s", "tab:orange"), "active_journal": ("D", "tab:red"),
                  "fixed_geometry": ("s", "tab:brown"), "tilting_pad": ("p", "tab:purple"),
                  "squeeze_film_damper": ("o", "tab:cyan"), "table": ("X", "tab:olive")}
+
+
+def _stagger(labels, levels: int = 6) -> None:
+    """Move each support label down a line until it clears the labels before it."""
+    if not labels:
+        return
+    fig = labels[0].figure
+    fig.canvas.draw()
+    r = fig.canvas.get_renderer()
+    kept = []
+    for t in labels:
+        for level in range(levels):
+            t.xyann = (0, -7 - 9 * level)
+            box = t.get_window_extent(r).padded(1.0)
+            if not any(box.overlaps(k) for k in kept):
+                break
+        kept.append(t.get_window_extent(r))
 
 
 @paper_style
@@ -89,26 +106,30 @@ def rotor_drawing(system, ax=None, title: str | None = None, stations: bool = Tr
     if rotor.disks:
         handles.append(Patch(fc="tab:gray", ec="k", label="disk (equivalent solid radius)"))
     seen = set()
-    for st, lab, kind in support_items(system):
+    labels = []
+    for n, (st, lab, kind) in enumerate(support_items(system)):
         mk, col = SUPPORT_STYLE[kind]
         y = -top * 1.25
         ax.plot([zs[st]], [y], marker=mk, color=col, ms=7, ls="")
         ax.plot([zs[st], zs[st]], [y, -rmax], color=col, lw=0.8)
-        ax.annotate(lab, (zs[st], y), xytext=(0, -7), textcoords="offset points", ha="center",
-                    va="top", fontsize=5.5, color=col)
+        labels.append(ax.annotate(lab, (zs[st], y), xytext=(0, -7), textcoords="offset points",
+                                  ha="center", va="top", fontsize=5.5, color=col))
         if kind not in seen:
             handles.append(Line2D([], [], marker=mk, color=col, ls="", ms=6,
                                   label=KIND_LABEL[kind]))
             seen.add(kind)
+    nums = []
     if stations:
-        for k, z in enumerate(zs):
-            ax.annotate(str(k), (z, top * 1.12), ha="center", va="bottom", fontsize=6,
-                        color="0.3")
+        nums = [ax.annotate(str(k), (z, top * 1.12), ha="center", va="bottom", fontsize=6,
+                            color="0.3") for k, z in enumerate(zs)]
         ax.plot(zs, np.full(zs.size, top * 1.08), "|", color="0.3", ms=4)
         handles.append(Line2D([], [], marker="|", color="0.3", ls="", label="station (number)"))
     ax.axhline(0.0, color="0.5", lw=0.5, ls="-.")
     ax.set_xlim(zs[0] - 0.03 * zs[-1], zs[-1] * 1.03)
     ax.set_ylim(-top * 1.85, top * 1.45)
+    _stagger(labels)  # after the limits: the boxes are measured where they will be drawn
+    if nums:  # close stations keep their ticks; numbers that would touch are left out
+        declutter([nums[0], nums[-1]] + nums[1:-1])
     ax.set_xlabel("axial position (mm)")
     ax.set_ylabel("radius (mm)")
     ax.grid(False)

@@ -9,7 +9,8 @@ from __future__ import annotations
 import numpy as np
 
 from rotordyn.plot._style import (ORDER_STYLE, PAGE_IN, WHIRL_STYLE, WHIRL_TEXT, hz_rpm_axis,
-                                  new_axes, order_label, paper_style, require)
+                                  declutter, legend_below, new_axes, order_label, paper_style,
+                                  require)
 
 COLOR_BY = {"log_dec": "logarithmic decrement δ (–)", "damping_ratio": "damping ratio ζ (–)"}
 
@@ -48,7 +49,10 @@ def campbell_arrays(speeds_hz, freq_hz, damping, whirl, *, ax=None, color_by="lo
     cap = 1.0 if color_by == "log_dec" else 0.16
     vmax = damping_max or (min(cap, float(np.percentile(dpos, 95))) if dpos.size else cap)
     norm = Normalize(0.0, vmax)
-    cmap = plt.get_cmap("viridis")
+    # viridis without its last, pale-yellow fifth: a well-damped mode stays visible on white
+    from matplotlib.colors import ListedColormap
+
+    cmap = ListedColormap(plt.get_cmap("viridis")(np.linspace(0.0, 0.8, 256)))
     any_unstable = False
     for j in range(f.shape[1]):
         ok = np.isfinite(f[:, j])
@@ -85,23 +89,26 @@ def campbell_arrays(speeds_hz, freq_hz, damping, whirl, *, ax=None, color_by="lo
     if critical is not None and len(critical):
         ax.plot(critical["speed_hz"], critical["freq_hz"], "o", mfc="white", mec="k", ms=5,
                 zorder=5)
+        notes = []
         for _, row in critical.iterrows():
-            ax.annotate(f"{row['speed_hz']:.1f} Hz\n({60 * row['speed_hz']:.0f} rpm)",
-                        (row["speed_hz"], row["freq_hz"]), xytext=(4, -14),
-                        textcoords="offset points", fontsize=6.5,
-                        bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
+            notes.append(ax.annotate(
+                f"{row['speed_hz']:.1f} Hz\n({60 * row['speed_hz']:.0f} rpm)",
+                (row["speed_hz"], row["freq_hz"]), xytext=(4, -14), textcoords="offset points",
+                fontsize=6.5, bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none",
+                                        alpha=0.8)))
         handles.append(Line2D([], [], ls="", marker="o", mfc="white", mec="k",
                               label="critical speed (forward, 1×)"))
     ax.set_xlim(sp.min(), sp.max())
     ax.set_ylim(0, 1.05 * max(fmax, sp.max() * (min(max(harmonics), 1.0) if harmonics else 1)))
+    if critical is not None and len(critical):
+        declutter(notes)  # close critical speeds: the first keeps its label
     ax.set_xlabel("rotor speed (Hz)")
     ax.set_ylabel("damped natural frequency (Hz)")
     hz_rpm_axis(ax)
     sm = plt.cm.ScalarMappable(norm=norm, cmap=cmap)
     cb = ax.figure.colorbar(sm, ax=ax, pad=0.02, extend="max")
     cb.set_label(COLOR_BY[color_by])
-    ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=3,
-              fontsize=6)
+    legend_below(ax, handles, ncol=3)
     if title:
         ax.set_title(title)
     return ax

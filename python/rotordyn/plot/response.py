@@ -7,7 +7,8 @@ from __future__ import annotations
 import numpy as np
 
 from rotordyn._common.api import af_text
-from rotordyn.plot._style import COLUMN_IN, PAGE_IN, hz_rpm_axis, paper_style, require
+from rotordyn.plot._style import (COLUMN_IN, PAGE_IN, declutter, hz_rpm_axis, legend_below,
+                                  paper_style, require)
 
 
 def _station_index(result, station):
@@ -102,19 +103,18 @@ def polar(result, station=None, ax=None, component: str = "y", n_labels: int = 6
     ax.plot([np.angle(z[ok][0])], [np.abs(z[ok][0])], "o", color="tab:green", ms=4)
     idx = np.linspace(0, ok.sum() - 1, n_labels).astype(int)
     sp = result.speeds_hz[ok]
-    for i in idx:
-        ax.annotate(f"{sp[i]:.0f} Hz", (np.angle(z[ok][i]), np.abs(z[ok][i])), fontsize=6,
-                    xytext=(3, 3), textcoords="offset points")
+    labels = [ax.annotate(f"{sp[i]:.0f} Hz", (np.angle(z[ok][i]), np.abs(z[ok][i])),
+                          fontsize=6, xytext=(3, 3), textcoords="offset points") for i in idx]
     j = int(np.nanargmax(np.abs(z)))
     ax.plot([np.angle(z[j])], [np.abs(z[j])], "s", color="tab:red", ms=4)
     ax.set_rlabel_position(100)
     ax.set_xlabel("phase (deg, counter-clockwise from +x); radius: amplitude (µm)")
-    ax.legend(handles=[Line2D([], [], color="tab:blue", label=f"{component} response vector"),
-                       Line2D([], [], marker="o", ls="", color="tab:green",
-                              label=f"lowest speed ({sp[0]:.0f} Hz)"),
-                       Line2D([], [], marker="s", ls="", color="tab:red",
-                              label=f"largest amplitude ({np.abs(z[j]):.3g} µm at "
-                                    f"{result.speeds_hz[j]:.1f} Hz)")],
-              loc="lower left", bbox_to_anchor=(-0.15, -0.22), fontsize=6)
+    legend_below(ax, [Line2D([], [], color="tab:blue", label=f"{component} response vector"),
+                      Line2D([], [], marker="o", ls="", color="tab:green",
+                             label=f"lowest speed ({sp[0]:.0f} Hz)"),
+                      Line2D([], [], marker="s", ls="", color="tab:red",
+                             label=f"largest amplitude ({np.abs(z[j]):.3g} µm at "
+                                   f"{result.speeds_hz[j]:.1f} Hz)")], ncol=1)
     ax.set_title(f"polar plot, station {result.stations[k]} ({component})", fontsize=8)
+    declutter(labels)  # speeds where the curve doubles back would pile up
     return ax
