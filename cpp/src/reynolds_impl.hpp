@@ -181,6 +181,7 @@ struct ReynoldsSolver::Impl {
   void factor_solve_jfo(LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   void solve_factored(const LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   void postprocess();
+  void flows();  // out.inlet_flow_m3_s, out.side_flow_m3_s (postprocess)
   bool pressure_only = false;  // solve() fills p_pa and h_min only (postprocess_pressure)
   void postprocess_pressure();
 

@@ -97,8 +97,14 @@ struct FilmSolution {
   RowMatrixXd h_m;           ///< film thickness, m
   Eigen::Vector2d force_n;   ///< film force on the journal (Fx, Fy), N
   double friction_torque_nm = 0.0;  ///< viscous torque resisting the rotation, N·m (> 0 for ω > 0)
-  double inlet_flow_m3_s = 0.0;     ///< flow supplied by the grooves into the film, m³/s
-  double side_flow_m3_s = 0.0;      ///< flow leaving through both ends, m³/s
+  /// Flow the grooves deliver into the film, m³/s: the net flux out of the groove nodes, a
+  /// Swift–Stieber (or clipped) cavitated cell returning nothing; with a supply line at the
+  /// maximum film this is the flow just downstream of it (Raimondi & Boyd's Q). Mass-
+  /// conserving films (jfo, full films): supply = side flow + storage.
+  double inlet_flow_m3_s = 0.0;
+  /// Flow leaving through both ends, m³/s (open ends: the end half cells included; seals: the
+  /// seal flux), second-order accurate.
+  double side_flow_m3_s = 0.0;
   double h_min_m = 0.0;             ///< minimum film thickness over the nodes, m
   double h_min_angle_deg = 0.0;     ///< its angle φ, deg, in [0, 360)
   int iterations = 0;               ///< active-set iterations (1 for none/gumbel)
