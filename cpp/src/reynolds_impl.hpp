@@ -103,6 +103,39 @@ struct ReynoldsSolver::Impl {
   double gseal = 0.0;
   bool end_row(int n) const { return sealed && (n % K1 == 0 || n % K1 == K1 - 1); }
 
+  // Pockets (geo.pockets, reynolds_pockets.cpp). The solver's node film h is the caller's
+  // h_smooth plus the pocket depth averaged over the node's cell (dnode). A face whose strip
+  // between its nodes (or whose nodes' cells) a pocket edge crosses is a PocketFace: its
+  // values come from the piecewise film over the strip, hf + d on each piece (hf the mean of
+  // h_smooth at its nodes): strips across the face (widths w, in parallel) of pieces along it
+  // (lengths t, in series). Every other face is uniform: the mean of its nodes' h is exact.
+  struct PocketPiece {
+    double t, d;  // fraction of the strip (or of the cell), depth
+  };
+  struct PocketStrip {
+    double w;  // fraction of the face
+    int p0, p1;
+  };
+  struct PocketFace {
+    int n;       // the face (j+1/2, k) of node n = (j, k), or (j, k+1/2) when north
+    bool north;
+    int s0, s1;  // its strips
+  };
+  bool has_pockets = false;
+  bool pockets_symmetric = true;  // mirror-symmetric about z = 0 (half system allowed)
+  std::vector<double> dnode, h_smooth;
+  std::vector<PocketPiece> pk_pieces;
+  std::vector<PocketStrip> pk_strips;
+  std::vector<PocketFace> pk_faces;
+  std::vector<int> pk_east, pk_north;  // node -> PocketFace of face (j+1/2, k) / (j, k+1/2), -1
+  std::vector<int> pk_cell;            // node -> first piece of its cell (non-uniform), -1
+  std::vector<int> pk_cell_end;
+  void setup_pockets();
+  // Face value for the smooth film hf: G3 = effective h³ (conductance / (h³ factor)),
+  // Gc = effective h of the Couette flux, and their derivatives with respect to hf.
+  void pocket_face(int f, double hf, double& G3, double& Gc, double& dG3, double& dGc) const;
+  double pocket_inv_h(int n) const;  // the cell average of 1/h (friction)
+
   LinearSystem full, halfsys;
   bool halfsys_built = false;
   bool use_symmetry = true;

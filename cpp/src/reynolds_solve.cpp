@@ -95,7 +95,7 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
             const double a1 = f[j1 * K1 + k0] + fk * (f[j1 * K1 + k1] - f[j1 * K1 + k0]);
             return a0 + fj * (a1 - a0);
           };
-          hc(jc, kc) = lerp(h);
+          hc(jc, kc) = lerp(has_pockets ? h_smooth : h);  // the coarse film adds its own
           hdc(jc, kc) = lerp(hdot);
         }
       }
@@ -264,7 +264,10 @@ void ReynoldsSolver::Impl::postprocess() {
     fx -= wk * p[n] * cosphi[j];
     fy -= wk * p[n] * sinphi[j];
     const double dpdphi = (p[east(n)] - p[west(n)]) / (2.0 * dphi);
-    const double tau = mu * omega * R * theta[n] / h[n] + h[n] / (2.0 * R) * dpdphi;
+    double couette = mu * omega * R * theta[n] / h[n];
+    if (has_pockets && pk_cell[n] >= 0)  // a cell a pocket edge crosses: its mean of 1/h
+      couette = mu * omega * R * theta[n] * pocket_inv_h(n);
+    const double tau = couette + h[n] / (2.0 * R) * dpdphi;
     torque += wk * tau;
     if (h[n] < hmin) {
       hmin = h[n];
@@ -417,6 +420,15 @@ void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const doub
   const double fs = R * dphi * dz;
   const bool fwd = omega >= 0.0;
   outv.resize(S.n_unk);
+  // A face a pocket edge crosses: d(conductance)/dh and d(Couette h)/dh of the stepped film,
+  // in place of fE h_f² (the factor 3 is in fE, fN) and 1 (reynolds_pockets.cpp).
+  auto pocket = [&](int face, int a, int b, double f3, double& g, double& bq) {
+    if (face < 0) return;
+    double G3, Gc, dG3, dGc;
+    pocket_face(face, 0.5 * (h_smooth[a] + h_smooth[b]), G3, Gc, dG3, dGc);
+    g = f3 / 3.0 * dG3;
+    bq = dGc;
+  };
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
     const int e = east(n), w = west(n);
@@ -426,25 +438,41 @@ void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const doub
       const double hi = 0.5 * (h[n] + h[in]);
       const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
       const double dhi = 0.5 * (dh[n] + dh[in]);
-      double r = fE * he * he * dhe * (P[n] - P[e]) + fE * hw * hw * dhw * (P[n] - P[w]);
+      double ge = fE * he * he, gw = fE * hw * hw, gi = fN * hi * hi, be = 1.0, bw = 1.0;
+      if (has_pockets) {
+        double unused = 1.0;
+        pocket(pk_east[n], n, e, fE, ge, be);
+        pocket(pk_east[w], w, n, fE, gw, bw);
+        pocket(pk_north[k == 0 ? n : in], k == 0 ? n : in, k == 0 ? in : n, fN, gi, unused);
+      }
+      double r = ge * dhe * (P[n] - P[e]) + gw * dhw * (P[n] - P[w]);
       if (fwd)
-        r += fq * (dhe * theta[n] - dhw * theta[w]);
+        r += fq * (be * dhe * theta[n] - bw * dhw * theta[w]);
       else
-        r += fq * (dhe * theta[e] - dhw * theta[n]);
+        r += fq * (be * dhe * theta[e] - bw * dhw * theta[n]);
       r += fs * dhdot[n] * theta[n];
-      outv[i] = 0.5 * r + fN * hi * hi * dhi * (P[n] - P[in]);
+      outv[i] = 0.5 * r + gi * dhi * (P[n] - P[in]);
       continue;
     }
     const double he = 0.5 * (h[n] + h[e]), hw = 0.5 * (h[w] + h[n]);
     const double hn = 0.5 * (h[n] + h[n + 1]), hs = 0.5 * (h[n - 1] + h[n]);
     const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
     const double dhn = 0.5 * (dh[n] + dh[n + 1]), dhs = 0.5 * (dh[n - 1] + dh[n]);
-    double r = fE * he * he * dhe * (P[n] - P[e]) + fE * hw * hw * dhw * (P[n] - P[w]) +
-               fN * hn * hn * dhn * (P[n] - P[n + 1]) + fN * hs * hs * dhs * (P[n] - P[n - 1]);
+    double ge = fE * he * he, gw = fE * hw * hw, gn = fN * hn * hn, gs = fN * hs * hs;
+    double be = 1.0, bw = 1.0;
+    if (has_pockets) {
+      double unused = 1.0;
+      pocket(pk_east[n], n, e, fE, ge, be);
+      pocket(pk_east[w], w, n, fE, gw, bw);
+      pocket(pk_north[n], n, n + 1, fN, gn, unused);
+      pocket(pk_north[n - 1], n - 1, n, fN, gs, unused);
+    }
+    double r = ge * dhe * (P[n] - P[e]) + gw * dhw * (P[n] - P[w]) +
+               gn * dhn * (P[n] - P[n + 1]) + gs * dhs * (P[n] - P[n - 1]);
     if (fwd)
-      r += fq * (dhe * theta[n] - dhw * theta[w]);
+      r += fq * (be * dhe * theta[n] - bw * dhw * theta[w]);
     else
-      r += fq * (dhe * theta[e] - dhw * theta[n]);
+      r += fq * (be * dhe * theta[e] - bw * dhw * theta[n]);
     r += fs * dhdot[n] * theta[n];
     outv[i] = S.wphi[i] * r;  // a half cell carries half of the full cell's balance
   }
@@ -467,7 +495,7 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
     s.solved = true;
     return s.out;
   }
-  const bool half = s.use_symmetry && s.symmetric(h.data()) &&
+  const bool half = s.use_symmetry && s.pockets_symmetric && s.symmetric(h.data()) &&
                     s.symmetric(dhdt.data());
   if (half && !s.halfsys_built) {
     s.build_system(s.halfsys, true);
