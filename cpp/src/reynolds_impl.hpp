@@ -96,6 +96,7 @@ struct ReynoldsSolver::Impl {
   std::vector<char> fixed;       // node -> prescribed pressure (ends, grooves)
   std::vector<double> p_fixed;   // node -> prescribed pressure (0 if unknown)
   std::vector<char> groove;      // node -> 1 on a groove (interior rows)
+  std::vector<int> groove_nodes; // the groove nodes
   // End seals (geo.end_sealed()): the end rows k = 0 and K1-1 are unknowns on half cells
   // (φ-fluxes and sources weighted 1/2) whose outer face is the seal, a conductance
   // gseal = G_s R Δφ to the ambient pressure 0. Off: the end rows are Dirichlet p = 0.
@@ -130,10 +131,12 @@ struct ReynoldsSolver::Impl {
   std::vector<int> pk_east, pk_north;  // node -> PocketFace of face (j+1/2, k) / (j, k+1/2), -1
   std::vector<int> pk_cell;            // node -> first piece of its cell (non-uniform), -1
   std::vector<int> pk_cell_end;
+  std::vector<int> pk_cells;           // the nodes whose cell is not uniform
   void setup_pockets();
   // Face value for the smooth film hf: G3 = effective h³ (conductance / (h³ factor)),
   // Gc = effective h of the Couette flux, and their derivatives with respect to hf.
-  void pocket_face(int f, double hf, double& G3, double& Gc, double& dG3, double& dGc) const;
+  void pocket_face(int f, double hf, double& G3, double& Gc, double* dG3 = nullptr,
+                   double* dGc = nullptr) const;
   double pocket_inv_h(int n) const;  // the cell average of 1/h (friction)
 
   LinearSystem full, halfsys;
@@ -221,6 +224,9 @@ struct ReynoldsSolver::Impl {
   // d(residual)/d(h, hdot) at the frozen state, S's unknown ordering and row weights.
   void residual_derivative(const LinearSystem& S, const double* dh, const double* dhdot,
                            Eigen::VectorXd& out) const;
+  template <bool kPockets>  // with pocket faces, or the plain film's code unchanged
+  void residual_derivative_t(const LinearSystem& S, const double* dh, const double* dhdot,
+                             Eigen::VectorXd& out) const;
 };
 
 }  // namespace rotordyn

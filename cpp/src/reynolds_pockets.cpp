@@ -131,6 +131,7 @@ void ReynoldsSolver::Impl::setup_pockets() {
         dnode[n] += t * d;
       }
     pk_cell_end[n] = static_cast<int>(pk_pieces.size());
+    pk_cells.push_back(n);
   }
 
   // Faces: strips across (parallel) of pieces along the normal (series), merged by depth.
@@ -173,12 +174,21 @@ void ReynoldsSolver::Impl::setup_pockets() {
   }
 }
 
-void ReynoldsSolver::Impl::pocket_face(int f, double hf, double& G3, double& Gc, double& dG3,
-                                       double& dGc) const {
-  G3 = Gc = dG3 = dGc = 0.0;
+void ReynoldsSolver::Impl::pocket_face(int f, double hf, double& G3, double& Gc, double* dG3,
+                                       double* dGc) const {
+  G3 = Gc = 0.0;
+  double d3 = 0.0, dc = 0.0;
   const PocketFace& pf = pk_faces[f];
   for (int s = pf.s0; s < pf.s1; ++s) {
     const PocketStrip& st = pk_strips[s];
+    if (st.p1 - st.p0 == 1) {  // uniform along the normal: h³ and h
+      const double h1 = hf + pk_pieces[st.p0].d;
+      G3 += st.w * h1 * h1 * h1;
+      Gc += st.w * h1;
+      d3 += st.w * 3.0 * h1 * h1;
+      dc += st.w;
+      continue;
+    }
     double S2 = 0.0, S3 = 0.0, S4 = 0.0;
     for (int i = st.p0; i < st.p1; ++i) {
       const double ih = 1.0 / (hf + pk_pieces[i].d), t = pk_pieces[i].t;
@@ -187,12 +197,14 @@ void ReynoldsSolver::Impl::pocket_face(int f, double hf, double& G3, double& Gc,
       S3 += t * ih3;
       S4 += t * ih3 * ih;
     }
-    const double H = 1.0 / S3;  // the strip's effective h³ (series)
+    const double H = 1.0 / S3;  // the strip's effective h³ (pieces in series)
     G3 += st.w * H;
     Gc += st.w * S2 * H;
-    dG3 += st.w * 3.0 * S4 * H * H;
-    dGc += st.w * (3.0 * S2 * S4 - 2.0 * S3 * S3) * H * H;
+    d3 += st.w * 3.0 * S4 * H * H;
+    dc += st.w * (3.0 * S2 * S4 - 2.0 * S3 * S3) * H * H;
   }
+  if (dG3) *dG3 = d3;
+  if (dGc) *dGc = dc;
 }
 
 double ReynoldsSolver::Impl::pocket_inv_h(int n) const {

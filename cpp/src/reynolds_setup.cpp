@@ -190,6 +190,8 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
         p_fixed[n] = gv.pressure_pa;  // a later groove overrides an overlapping earlier one
       }
   }
+  for (int n = 0; n < n_nodes; ++n)
+    if (groove[n]) groove_nodes.push_back(n);
   if (geo.short_bearing && cav == Cavitation::jfo)
     throw InputError("short_bearing: not with cavitation='jfo' (use 'none', 'gumbel' or "
                      "'reynolds')");
@@ -373,8 +375,8 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
   for (std::size_t f = 0; f < pk_faces.size(); ++f) {
     const PocketFace& pf = pk_faces[f];
     const int q = pf.n, o = pf.north ? q + 1 : east(q);
-    double G3, Gc, dG3, dGc;
-    pocket_face(static_cast<int>(f), 0.5 * (h_smooth[q] + h_smooth[o]), G3, Gc, dG3, dGc);
+    double G3, Gc;
+    pocket_face(static_cast<int>(f), 0.5 * (h_smooth[q] + h_smooth[o]), G3, Gc);
     if (pf.north) {
       cN[q] = fN * G3;
     } else {

@@ -264,15 +264,17 @@ void ReynoldsSolver::Impl::postprocess() {
     fx -= wk * p[n] * cosphi[j];
     fy -= wk * p[n] * sinphi[j];
     const double dpdphi = (p[east(n)] - p[west(n)]) / (2.0 * dphi);
-    double couette = mu * omega * R * theta[n] / h[n];
-    if (has_pockets && pk_cell[n] >= 0)  // a cell a pocket edge crosses: its mean of 1/h
-      couette = mu * omega * R * theta[n] * pocket_inv_h(n);
-    const double tau = couette + h[n] / (2.0 * R) * dpdphi;
+    const double tau = mu * omega * R * theta[n] / h[n] + h[n] / (2.0 * R) * dpdphi;
     torque += wk * tau;
     if (h[n] < hmin) {
       hmin = h[n];
       nmin = n;
     }
+  }
+  for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
+    const int k = n % K1;
+    const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
+    torque += wk * mu * omega * R * theta[n] * (pocket_inv_h(n) - 1.0 / h[n]);
   }
   out.force_n = Eigen::Vector2d(fx * area, fy * area);
   out.friction_torque_nm = torque * area * R;
@@ -330,24 +332,27 @@ void ReynoldsSolver::Impl::flows() {
     return u >= 0 && S.active[u] && !biactive[n];
   };
   double qin = 0.0, qside = 0.0;
-  for (int n = 0; n < n_nodes; ++n) {
-    if (fixed[n]) continue;
-    const int e = east(n), w = west(n);
-    const int k = n % K1;
-    const double wq = end_row(n) ? 0.5 : 1.0;  // a sealed end's half cell
-    const bool groove_nb = groove[w] || groove[e] || (k < Kl && groove[n + 1]) ||
-                           (k > 0 && groove[n - 1]);
-    if (groove_nb && !no_flow(n)) {
-      if (groove[w]) qin += wq * (cE[w] * (p[w] - p[n]) + qE[w] * (fwd ? theta[w] : theta[n]));
-      if (groove[e]) qin += wq * (cE[n] * (p[e] - p[n]) - qE[n] * (fwd ? theta[n] : theta[e]));
-      if (k < Kl && groove[n + 1]) qin += cN[n] * (p[n + 1] - p[n]);
-      if (k > 0 && groove[n - 1]) qin += cN[n - 1] * (p[n - 1] - p[n]);
-    }
-    if (sealed) {
-      if (k == 0 || k == Kl) qside += gseal * p[n];  // through the seal to the ambient 0
-    } else {
-      if (k == 1) qside += cN[n - 1] * (p[n] - p[n - 1]);
-      if (k == Kl - 1) qside += cN[n] * (p[n] - p[n + 1]);
+  // faces from groove nodes (interior rows) into film cells; a sealed end's half cell takes
+  // half a φ-face
+  for (const int g : groove_nodes) {
+    const int e = east(g), w = west(g), k = g % K1;
+    if (!fixed[e] && !no_flow(e))
+      qin += (end_row(e) ? 0.5 : 1.0) *
+             (cE[g] * (p[g] - p[e]) + qE[g] * (fwd ? theta[g] : theta[e]));
+    if (!fixed[w] && !no_flow(w))
+      qin += (end_row(w) ? 0.5 : 1.0) *
+             (cE[w] * (p[g] - p[w]) - qE[w] * (fwd ? theta[w] : theta[g]));
+    if (k == 1 && !fixed[g - 1] && !no_flow(g - 1)) qin += cN[g - 1] * (p[g] - p[g - 1]);
+    if (k == Kl - 1 && !fixed[g + 1] && !no_flow(g + 1)) qin += cN[g] * (p[g] - p[g + 1]);
+  }
+  for (int j = 0; j < N; ++j) {
+    const int n0 = j * K1, nl = n0 + Kl;
+    if (sealed) {  // through the seals to the ambient 0
+      qside += gseal * p[n0];
+      qside += gseal * p[nl];
+    } else {  // through the faces half a cell inside the ends
+      if (!fixed[n0 + 1]) qside += cN[n0] * (p[n0 + 1] - p[n0]);
+      if (!fixed[nl - 1]) qside += cN[nl - 1] * (p[nl - 1] - p[nl]);
     }
   }
   if (!sealed) {
@@ -411,6 +416,16 @@ void ReynoldsSolver::Impl::postprocess_pressure() {
 
 void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const double* dh,
                                                const double* dhdot, Eigen::VectorXd& outv) const {
+  if (has_pockets)
+    residual_derivative_t<true>(S, dh, dhdot, outv);
+  else
+    residual_derivative_t<false>(S, dh, dhdot, outv);
+}
+
+template <bool kPockets>
+void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const double* dh,
+                                                 const double* dhdot,
+                                                 Eigen::VectorXd& outv) const {
   // Pressure at which the operator is linearised: the unclipped solution for none/gumbel.
   const std::vector<double>& P =
       (cav == Cavitation::none || cav == Cavitation::gumbel) ? pfull : p;
@@ -422,10 +437,11 @@ void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const doub
   outv.resize(S.n_unk);
   // A face a pocket edge crosses: d(conductance)/dh and d(Couette h)/dh of the stepped film,
   // in place of fE h_f² (the factor 3 is in fE, fN) and 1 (reynolds_pockets.cpp).
-  auto pocket = [&](int face, int a, int b, double f3, double& g, double& bq) {
+  [[maybe_unused]] auto pocket = [&](int face, int a, int b, double f3, double& g,
+                                     double& bq) {
     if (face < 0) return;
     double G3, Gc, dG3, dGc;
-    pocket_face(face, 0.5 * (h_smooth[a] + h_smooth[b]), G3, Gc, dG3, dGc);
+    pocket_face(face, 0.5 * (h_smooth[a] + h_smooth[b]), G3, Gc, &dG3, &dGc);
     g = f3 / 3.0 * dG3;
     bq = dGc;
   };
@@ -438,18 +454,21 @@ void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const doub
       const double hi = 0.5 * (h[n] + h[in]);
       const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
       const double dhi = 0.5 * (dh[n] + dh[in]);
-      double ge = fE * he * he, gw = fE * hw * hw, gi = fN * hi * hi, be = 1.0, bw = 1.0;
-      if (has_pockets) {
-        double unused = 1.0;
+      double ge = fE * he * he, gw = fE * hw * hw, gi = fN * hi * hi;
+      double qe = dhe, qw = dhw;  // Couette-thickness changes of the two φ-faces
+      if constexpr (kPockets) {
+        double be = 1.0, bw = 1.0, unused = 1.0;
         pocket(pk_east[n], n, e, fE, ge, be);
         pocket(pk_east[w], w, n, fE, gw, bw);
         pocket(pk_north[k == 0 ? n : in], k == 0 ? n : in, k == 0 ? in : n, fN, gi, unused);
+        qe = be * dhe;
+        qw = bw * dhw;
       }
       double r = ge * dhe * (P[n] - P[e]) + gw * dhw * (P[n] - P[w]);
       if (fwd)
-        r += fq * (be * dhe * theta[n] - bw * dhw * theta[w]);
+        r += fq * (qe * theta[n] - qw * theta[w]);
       else
-        r += fq * (be * dhe * theta[e] - bw * dhw * theta[n]);
+        r += fq * (qe * theta[e] - qw * theta[n]);
       r += fs * dhdot[n] * theta[n];
       outv[i] = 0.5 * r + gi * dhi * (P[n] - P[in]);
       continue;
@@ -459,20 +478,22 @@ void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const doub
     const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
     const double dhn = 0.5 * (dh[n] + dh[n + 1]), dhs = 0.5 * (dh[n - 1] + dh[n]);
     double ge = fE * he * he, gw = fE * hw * hw, gn = fN * hn * hn, gs = fN * hs * hs;
-    double be = 1.0, bw = 1.0;
-    if (has_pockets) {
-      double unused = 1.0;
+    double qe = dhe, qw = dhw;
+    if constexpr (kPockets) {
+      double be = 1.0, bw = 1.0, unused = 1.0;
       pocket(pk_east[n], n, e, fE, ge, be);
       pocket(pk_east[w], w, n, fE, gw, bw);
       pocket(pk_north[n], n, n + 1, fN, gn, unused);
       pocket(pk_north[n - 1], n - 1, n, fN, gs, unused);
+      qe = be * dhe;
+      qw = bw * dhw;
     }
     double r = ge * dhe * (P[n] - P[e]) + gw * dhw * (P[n] - P[w]) +
                gn * dhn * (P[n] - P[n + 1]) + gs * dhs * (P[n] - P[n - 1]);
     if (fwd)
-      r += fq * (be * dhe * theta[n] - bw * dhw * theta[w]);
+      r += fq * (qe * theta[n] - qw * theta[w]);
     else
-      r += fq * (be * dhe * theta[e] - bw * dhw * theta[n]);
+      r += fq * (qe * theta[e] - qw * theta[n]);
     r += fs * dhdot[n] * theta[n];
     outv[i] = S.wphi[i] * r;  // a half cell carries half of the full cell's balance
   }
