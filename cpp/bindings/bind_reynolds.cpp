@@ -18,6 +18,22 @@ void bind_reynolds(py::module_& m) {
       .def_readwrite("width_deg", &Groove::width_deg)
       .def_readwrite("pressure_pa", &Groove::pressure_pa);
 
+  py::class_<Pocket>(m, "Pocket",
+                     "Recess of depth_m over phi in [start_deg, start_deg + arc_deg] (the grid's "
+                     "angle, periodic) and z in [z_min_m, z_max_m] (0 the mid-plane): a step in "
+                     "the film thickness at its edges.")
+      .def(py::init<>())
+      .def(py::init([](double s, double a, double z0, double z1, double d) {
+             return Pocket{s, a, z0, z1, d};
+           }),
+           py::arg("start_deg"), py::arg("arc_deg"), py::arg("z_min_m"), py::arg("z_max_m"),
+           py::arg("depth_m"))
+      .def_readwrite("start_deg", &Pocket::start_deg)
+      .def_readwrite("arc_deg", &Pocket::arc_deg)
+      .def_readwrite("z_min_m", &Pocket::z_min_m)
+      .def_readwrite("z_max_m", &Pocket::z_max_m)
+      .def_readwrite("depth_m", &Pocket::depth_m);
+
   py::class_<JournalBearingGeometry>(m, "JournalBearingGeometry", "360° bush, SI units.")
       .def(py::init<>())
       .def_readwrite("diameter_m", &JournalBearingGeometry::diameter_m)
@@ -25,6 +41,8 @@ void bind_reynolds(py::module_& m) {
       .def_readwrite("clearance_m", &JournalBearingGeometry::clearance_m)
       .def_readwrite("viscosity_pa_s", &JournalBearingGeometry::viscosity_pa_s)
       .def_readwrite("grooves", &JournalBearingGeometry::grooves)
+      .def_readwrite("pockets", &JournalBearingGeometry::pockets,
+                     "Recesses (Pocket): the film passed to solve() is without them.")
       .def_readwrite("short_bearing", &JournalBearingGeometry::short_bearing,
                      "Short-bearing (Ocvirk) approximation: no circumferential pressure flow.")
       .def_readwrite("end_seal_conductance", &JournalBearingGeometry::end_seal_conductance,

@@ -96,12 +96,48 @@ struct ReynoldsSolver::Impl {
   std::vector<char> fixed;       // node -> prescribed pressure (ends, grooves)
   std::vector<double> p_fixed;   // node -> prescribed pressure (0 if unknown)
   std::vector<char> groove;      // node -> 1 on a groove (interior rows)
+  std::vector<int> groove_nodes; // the groove nodes
   // End seals (geo.end_sealed()): the end rows k = 0 and K1-1 are unknowns on half cells
   // (φ-fluxes and sources weighted 1/2) whose outer face is the seal, a conductance
   // gseal = G_s R Δφ to the ambient pressure 0. Off: the end rows are Dirichlet p = 0.
   bool sealed = false;
   double gseal = 0.0;
   bool end_row(int n) const { return sealed && (n % K1 == 0 || n % K1 == K1 - 1); }
+
+  // Pockets (geo.pockets, reynolds_pockets.cpp). The solver's node film h is the caller's
+  // h_smooth plus the pocket depth averaged over the node's cell (dnode). A face whose strip
+  // between its nodes (or whose nodes' cells) a pocket edge crosses is a PocketFace: its
+  // values come from the piecewise film over the strip, hf + d on each piece (hf the mean of
+  // h_smooth at its nodes): strips across the face (widths w, in parallel) of pieces along it
+  // (lengths t, in series). Every other face is uniform: the mean of its nodes' h is exact.
+  struct PocketPiece {
+    double t, d;  // fraction of the strip (or of the cell), depth
+  };
+  struct PocketStrip {
+    double w;  // fraction of the face
+    int p0, p1;
+  };
+  struct PocketFace {
+    int n;       // the face (j+1/2, k) of node n = (j, k), or (j, k+1/2) when north
+    bool north;
+    int s0, s1;  // its strips
+  };
+  bool has_pockets = false;
+  bool pockets_symmetric = true;  // mirror-symmetric about z = 0 (half system allowed)
+  std::vector<double> dnode, h_smooth;
+  std::vector<PocketPiece> pk_pieces;
+  std::vector<PocketStrip> pk_strips;
+  std::vector<PocketFace> pk_faces;
+  std::vector<int> pk_east, pk_north;  // node -> PocketFace of face (j+1/2, k) / (j, k+1/2), -1
+  std::vector<int> pk_cell;            // node -> first piece of its cell (non-uniform), -1
+  std::vector<int> pk_cell_end;
+  std::vector<int> pk_cells;           // the nodes whose cell is not uniform
+  void setup_pockets();
+  // Face value for the smooth film hf: G3 = effective h³ (conductance / (h³ factor)),
+  // Gc = effective h of the Couette flux, and their derivatives with respect to hf.
+  void pocket_face(int f, double hf, double& G3, double& Gc, double* dG3 = nullptr,
+                   double* dGc = nullptr) const;
+  double pocket_inv_h(int n) const;  // the cell average of 1/h (friction)
 
   LinearSystem full, halfsys;
   bool halfsys_built = false;
@@ -181,12 +217,16 @@ struct ReynoldsSolver::Impl {
   void factor_solve_jfo(LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   void solve_factored(const LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   void postprocess();
+  void flows();  // out.inlet_flow_m3_s, out.side_flow_m3_s (postprocess)
   bool pressure_only = false;  // solve() fills p_pa and h_min only (postprocess_pressure)
   void postprocess_pressure();
 
   // d(residual)/d(h, hdot) at the frozen state, S's unknown ordering and row weights.
   void residual_derivative(const LinearSystem& S, const double* dh, const double* dhdot,
                            Eigen::VectorXd& out) const;
+  template <bool kPockets>  // with pocket faces, or the plain film's code unchanged
+  void residual_derivative_t(const LinearSystem& S, const double* dh, const double* dhdot,
+                             Eigen::VectorXd& out) const;
 };
 
 }  // namespace rotordyn

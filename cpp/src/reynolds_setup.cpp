@@ -70,6 +70,25 @@ void JournalBearingGeometry::validate() const {
   if (short_bearing && (end_sealed() || !grooves.empty()))
     throw InputError("short_bearing: the short-bearing approximation has open ends and no "
                      "grooves (end_seal_conductance must be inf, grooves empty)");
+  if (short_bearing && !pockets.empty())
+    throw InputError("short_bearing: the short-bearing approximation takes no pockets (its "
+                     "film thickness is smooth along the circumference)");
+  for (std::size_t i = 0; i < pockets.size(); ++i) {
+    const Pocket& pk = pockets[i];
+    const std::string f = "pockets[" + std::to_string(i) + "].";
+    if (!std::isfinite(pk.start_deg))
+      throw InputError(f + "start_deg: expected a finite angle, got " + num(pk.start_deg));
+    if (!(pk.arc_deg > 0.0 && pk.arc_deg <= 360.0))
+      throw InputError(f + "arc_deg: expected 0 < arc_deg <= 360, got " + num(pk.arc_deg));
+    if (!(pk.z_min_m >= -0.5 * length_m && pk.z_min_m < pk.z_max_m &&
+          pk.z_max_m <= 0.5 * length_m))
+      throw InputError(f + "z_min_m, z_max_m: expected -length_m/2 <= z_min_m < z_max_m <= "
+                       "length_m/2 = " + num(0.5 * length_m) + ", got " + num(pk.z_min_m) +
+                       ", " + num(pk.z_max_m));
+    if (!(std::isfinite(pk.depth_m) && pk.depth_m > 0.0 && pk.depth_m <= 1e3 * clearance_m))
+      throw InputError(f + "depth_m: expected 0 < depth_m <= 1000 clearance_m, got " +
+                       num(pk.depth_m));
+  }
   for (std::size_t i = 0; i < grooves.size(); ++i) {
     const Groove& g = grooves[i];
     const std::string f = "grooves[" + std::to_string(i) + "].";
@@ -171,12 +190,15 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
         p_fixed[n] = gv.pressure_pa;  // a later groove overrides an overlapping earlier one
       }
   }
+  for (int n = 0; n < n_nodes; ++n)
+    if (groove[n]) groove_nodes.push_back(n);
   if (geo.short_bearing && cav == Cavitation::jfo)
     throw InputError("short_bearing: not with cavitation='jfo' (use 'none', 'gumbel' or "
                      "'reynolds')");
   if (cav == Cavitation::jfo && geo.grooves.empty())
     throw InputError("grooves: cavitation='jfo' needs at least one supply groove (without a "
                      "supply the steady mass-conserving film content is undetermined)");
+  setup_pockets();
   build_system(full, false);
   if (full.n_unk == 0)
     throw InputError("grooves: the grooves cover the whole bearing (no film left)");
@@ -322,7 +344,12 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
                        num((nmin / K1) * dphi * 180.0 / kPi) + " deg: journal touches the bush");
   }
   omega = omega_in;
-  std::copy(h_in, h_in + n_nodes, h.begin());
+  if (has_pockets) {
+    std::copy(h_in, h_in + n_nodes, h_smooth.begin());
+    for (int q = 0; q < n_nodes; ++q) h[q] = h_in[q] + dnode[q];
+  } else {
+    std::copy(h_in, h_in + n_nodes, h.begin());
+  }
   std::copy(hdot_in, hdot_in + n_nodes, hdot.begin());
   const double fE = dz / (12.0 * mu * R * dphi);
   const double fN = R * dphi / (12.0 * mu * dz);
@@ -343,6 +370,19 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
       cN[q] = fN * hn * hn * hn;
     }
     cN[row + K1 - 1] = 0.0;
+  }
+  // Faces a pocket edge crosses: the exact value of the stepped film (reynolds_pockets.cpp).
+  for (std::size_t f = 0; f < pk_faces.size(); ++f) {
+    const PocketFace& pf = pk_faces[f];
+    const int q = pf.n, o = pf.north ? q + 1 : east(q);
+    double G3, Gc;
+    pocket_face(static_cast<int>(f), 0.5 * (h_smooth[q] + h_smooth[o]), G3, Gc);
+    if (pf.north) {
+      cN[q] = fN * G3;
+    } else {
+      cE[q] = fE * G3;
+      qE[q] = fq * Gc;
+    }
   }
 }
 

@@ -95,7 +95,7 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
             const double a1 = f[j1 * K1 + k0] + fk * (f[j1 * K1 + k1] - f[j1 * K1 + k0]);
             return a0 + fj * (a1 - a0);
           };
-          hc(jc, kc) = lerp(h);
+          hc(jc, kc) = lerp(has_pockets ? h_smooth : h);  // the coarse film adds its own
           hdc(jc, kc) = lerp(hdot);
         }
       }
@@ -271,6 +271,11 @@ void ReynoldsSolver::Impl::postprocess() {
       nmin = n;
     }
   }
+  for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
+    const int k = n % K1;
+    const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
+    torque += wk * mu * omega * R * theta[n] * (pocket_inv_h(n) - 1.0 / h[n]);
+  }
   out.force_n = Eigen::Vector2d(fx * area, fy * area);
   out.friction_torque_nm = torque * area * R;
   if (!(out.force_n.allFinite() && std::isfinite(out.friction_torque_nm)))
@@ -282,27 +287,7 @@ void ReynoldsSolver::Impl::postprocess() {
   out.h_min_m = hmin;
   out.h_min_angle_deg = (nmin / K1) * dphi * 180.0 / kPi;
 
-  // Flows: supply through faces groove node -> film node, leakage through faces film -> end.
-  double qin = 0.0, qside = 0.0;
-  const bool fwd = omega >= 0.0;
-  for (int n = 0; n < n_nodes; ++n) {
-    if (fixed[n]) continue;
-    const int e = east(n), w = west(n);
-    const int k = n % K1;
-    const double wq = end_row(n) ? 0.5 : 1.0;  // a sealed end's half cell
-    if (groove[w]) qin += wq * (cE[w] * (p[w] - p[n]) + qE[w] * (fwd ? theta[w] : theta[n]));
-    if (groove[e]) qin += wq * (cE[n] * (p[e] - p[n]) - qE[n] * (fwd ? theta[n] : theta[e]));
-    if (k < Kl && groove[n + 1]) qin += cN[n] * (p[n + 1] - p[n]);
-    if (k > 0 && groove[n - 1]) qin += cN[n - 1] * (p[n - 1] - p[n]);
-    if (sealed) {
-      if (k == 0 || k == Kl) qside += gseal * p[n];  // through the seal to the ambient 0
-    } else {
-      if (k == 1) qside += cN[n - 1] * (p[n] - p[n - 1]);
-      if (k == Kl - 1) qside += cN[n] * (p[n] - p[n + 1]);
-    }
-  }
-  out.inlet_flow_m3_s = qin;
-  out.side_flow_m3_s = qside;
+  flows();
 
   out.p_pa.resize(N, K1);
   out.theta.resize(N, K1);
@@ -310,6 +295,87 @@ void ReynoldsSolver::Impl::postprocess() {
   std::copy(p.begin(), p.end(), out.p_pa.data());
   std::copy(theta.begin(), theta.end(), out.theta.data());
   std::copy(h.begin(), h.end(), out.h_m.data());
+}
+
+// Supply and side flows from the finite-volume fluxes of the solution (the cell balances of
+// the solve itself, so a mass-conserving film balances them to round-off).
+//
+// Supply: the flux through every face from a groove node into a film cell. A cell of a
+// Swift–Stieber cavitated zone (strictly active: the multiplier is the mass the model creates
+// there; gumbel: the clipped nodes) carries no defined flow, so its faces to a groove count
+// nothing. With a supply line at the maximum film this is the flow into the film just
+// downstream of the line (Raimondi & Boyd's Q); before, the full Couette flux of the
+// cavitated cell upstream was subtracted (about -0.04 R c N L instead of +4.99 at L/D = 1/4,
+// ε = 0.6). jfo and full films count every face (a partly filled film entering a groove from
+// upstream is the flow that recirculates).
+//
+// Side flow with open ends: the flux through the faces half a cell inside the ends plus the
+// balance of the end half cells between those faces and the ends (their Couette inflow minus
+// outflow and storage; their Poiseuille flux around is 0 with p = 0 on the end rows, to
+// second order the true one). Without the half cells the side flow was the flow at
+// z = ±(L/2 − Δz/2), first-order (−6.8 % at 72 x 16 against Raimondi & Boyd). End half cells
+// of groove columns belong to the supply (their fluxes into film half cells are supply); the
+// half cell of a film column whose inner node is cavitated (as above) carries nothing; its
+// fill θ is the inner node's. Every face is counted once on each side of a balance, so
+// supply − side = storage for jfo and full films (exactly, to round-off).
+void ReynoldsSolver::Impl::flows() {
+  const int Kl = K1 - 1;
+  const bool fwd = omega >= 0.0;
+  const bool clipped = cav == Cavitation::gumbel ||
+                       (geo.short_bearing && cav == Cavitation::reynolds);
+  auto no_flow = [&](int n) {  // n: a film node; cavitated in a Swift–Stieber / clipped film
+    if (clipped) return pfull[n] < 0.0;
+    if (cav != Cavitation::reynolds) return false;
+    const LinearSystem& S = *sys;
+    const int m = (S.half && n % K1 > Kh) ? mirror(n) : n;
+    const int u = S.unk[m];
+    return u >= 0 && S.active[u] && !biactive[n];
+  };
+  double qin = 0.0, qside = 0.0;
+  // faces from groove nodes (interior rows) into film cells; a sealed end's half cell takes
+  // half a φ-face
+  for (const int g : groove_nodes) {
+    const int e = east(g), w = west(g), k = g % K1;
+    if (!fixed[e] && !no_flow(e))
+      qin += (end_row(e) ? 0.5 : 1.0) *
+             (cE[g] * (p[g] - p[e]) + qE[g] * (fwd ? theta[g] : theta[e]));
+    if (!fixed[w] && !no_flow(w))
+      qin += (end_row(w) ? 0.5 : 1.0) *
+             (cE[w] * (p[g] - p[w]) - qE[w] * (fwd ? theta[w] : theta[g]));
+    if (k == 1 && !fixed[g - 1] && !no_flow(g - 1)) qin += cN[g - 1] * (p[g] - p[g - 1]);
+    if (k == Kl - 1 && !fixed[g + 1] && !no_flow(g + 1)) qin += cN[g] * (p[g] - p[g + 1]);
+  }
+  for (int j = 0; j < N; ++j) {
+    const int n0 = j * K1, nl = n0 + Kl;
+    if (sealed) {  // through the seals to the ambient 0
+      qside += gseal * p[n0];
+      qside += gseal * p[nl];
+    } else {  // through the faces half a cell inside the ends
+      if (!fixed[n0 + 1]) qside += cN[n0] * (p[n0 + 1] - p[n0]);
+      if (!fixed[nl - 1]) qside += cN[nl - 1] * (p[nl - 1] - p[nl]);
+    }
+  }
+  if (!sealed) {
+    for (const int k : {0, Kl}) {
+      const int kin = k == 0 ? 1 : Kl - 1;  // the inner row
+      // φ-flux from end node a to its east neighbour b (fills from the inner rows)
+      auto flux = [&](int a, int b) {
+        return cE[a] * (p[a] - p[b]) +
+               qE[a] * (fwd ? theta[a - k + kin] : theta[b - k + kin]);
+      };
+      for (int j = 0; j < N; ++j) {
+        const int n = j * K1 + k, e = east(n), w = west(n);
+        if (groove[n - k + kin]) continue;         // a groove column: supply
+        if (no_flow(n - k + kin)) continue;        // a cavitated column: no flow
+        const double in = flux(w, n), outf = flux(n, e);
+        qside += 0.5 * (in - outf - src[n] * theta[n - k + kin]);
+        if (groove[w - k + kin]) qin += 0.5 * in;
+        if (groove[e - k + kin]) qin -= 0.5 * outf;
+      }
+    }
+  }
+  out.inlet_flow_m3_s = qin;
+  out.side_flow_m3_s = qside;
 }
 
 // The part of postprocess() a caller integrating p itself needs: p and h_min (the same
@@ -350,6 +416,16 @@ void ReynoldsSolver::Impl::postprocess_pressure() {
 
 void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const double* dh,
                                                const double* dhdot, Eigen::VectorXd& outv) const {
+  if (has_pockets)
+    residual_derivative_t<true>(S, dh, dhdot, outv);
+  else
+    residual_derivative_t<false>(S, dh, dhdot, outv);
+}
+
+template <bool kPockets>
+void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const double* dh,
+                                                 const double* dhdot,
+                                                 Eigen::VectorXd& outv) const {
   // Pressure at which the operator is linearised: the unclipped solution for none/gumbel.
   const std::vector<double>& P =
       (cav == Cavitation::none || cav == Cavitation::gumbel) ? pfull : p;
@@ -359,6 +435,16 @@ void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const doub
   const double fs = R * dphi * dz;
   const bool fwd = omega >= 0.0;
   outv.resize(S.n_unk);
+  // A face a pocket edge crosses: d(conductance)/dh and d(Couette h)/dh of the stepped film,
+  // in place of fE h_f² (the factor 3 is in fE, fN) and 1 (reynolds_pockets.cpp).
+  [[maybe_unused]] auto pocket = [&](int face, int a, int b, double f3, double& g,
+                                     double& bq) {
+    if (face < 0) return;
+    double G3, Gc, dG3, dGc;
+    pocket_face(face, 0.5 * (h_smooth[a] + h_smooth[b]), G3, Gc, &dG3, &dGc);
+    g = f3 / 3.0 * dG3;
+    bq = dGc;
+  };
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
     const int e = east(n), w = west(n);
@@ -368,25 +454,46 @@ void ReynoldsSolver::Impl::residual_derivative(const LinearSystem& S, const doub
       const double hi = 0.5 * (h[n] + h[in]);
       const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
       const double dhi = 0.5 * (dh[n] + dh[in]);
-      double r = fE * he * he * dhe * (P[n] - P[e]) + fE * hw * hw * dhw * (P[n] - P[w]);
+      double ge = fE * he * he, gw = fE * hw * hw, gi = fN * hi * hi;
+      double qe = dhe, qw = dhw;  // Couette-thickness changes of the two φ-faces
+      if constexpr (kPockets) {
+        double be = 1.0, bw = 1.0, unused = 1.0;
+        pocket(pk_east[n], n, e, fE, ge, be);
+        pocket(pk_east[w], w, n, fE, gw, bw);
+        pocket(pk_north[k == 0 ? n : in], k == 0 ? n : in, k == 0 ? in : n, fN, gi, unused);
+        qe = be * dhe;
+        qw = bw * dhw;
+      }
+      double r = ge * dhe * (P[n] - P[e]) + gw * dhw * (P[n] - P[w]);
       if (fwd)
-        r += fq * (dhe * theta[n] - dhw * theta[w]);
+        r += fq * (qe * theta[n] - qw * theta[w]);
       else
-        r += fq * (dhe * theta[e] - dhw * theta[n]);
+        r += fq * (qe * theta[e] - qw * theta[n]);
       r += fs * dhdot[n] * theta[n];
-      outv[i] = 0.5 * r + fN * hi * hi * dhi * (P[n] - P[in]);
+      outv[i] = 0.5 * r + gi * dhi * (P[n] - P[in]);
       continue;
     }
     const double he = 0.5 * (h[n] + h[e]), hw = 0.5 * (h[w] + h[n]);
     const double hn = 0.5 * (h[n] + h[n + 1]), hs = 0.5 * (h[n - 1] + h[n]);
     const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
     const double dhn = 0.5 * (dh[n] + dh[n + 1]), dhs = 0.5 * (dh[n - 1] + dh[n]);
-    double r = fE * he * he * dhe * (P[n] - P[e]) + fE * hw * hw * dhw * (P[n] - P[w]) +
-               fN * hn * hn * dhn * (P[n] - P[n + 1]) + fN * hs * hs * dhs * (P[n] - P[n - 1]);
+    double ge = fE * he * he, gw = fE * hw * hw, gn = fN * hn * hn, gs = fN * hs * hs;
+    double qe = dhe, qw = dhw;
+    if constexpr (kPockets) {
+      double be = 1.0, bw = 1.0, unused = 1.0;
+      pocket(pk_east[n], n, e, fE, ge, be);
+      pocket(pk_east[w], w, n, fE, gw, bw);
+      pocket(pk_north[n], n, n + 1, fN, gn, unused);
+      pocket(pk_north[n - 1], n - 1, n, fN, gs, unused);
+      qe = be * dhe;
+      qw = bw * dhw;
+    }
+    double r = ge * dhe * (P[n] - P[e]) + gw * dhw * (P[n] - P[w]) +
+               gn * dhn * (P[n] - P[n + 1]) + gs * dhs * (P[n] - P[n - 1]);
     if (fwd)
-      r += fq * (dhe * theta[n] - dhw * theta[w]);
+      r += fq * (qe * theta[n] - qw * theta[w]);
     else
-      r += fq * (dhe * theta[e] - dhw * theta[n]);
+      r += fq * (qe * theta[e] - qw * theta[n]);
     r += fs * dhdot[n] * theta[n];
     outv[i] = S.wphi[i] * r;  // a half cell carries half of the full cell's balance
   }
@@ -409,7 +516,7 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
     s.solved = true;
     return s.out;
   }
-  const bool half = s.use_symmetry && s.symmetric(h.data()) &&
+  const bool half = s.use_symmetry && s.pockets_symmetric && s.symmetric(h.data()) &&
                     s.symmetric(dhdt.data());
   if (half && !s.halfsys_built) {
     s.build_system(s.halfsys, true);

@@ -15,8 +15,10 @@
 // Discretisation: node-centred finite volumes. Nodes φ_j = j·2π/n_circ (j = 0..n_circ-1) and
 // z_k = −L/2 + k·L/n_axial (k = 0..n_axial; k = 0 and n_axial are the bearing ends). Face
 // values of h are the averages of the two nodes, the Poiseuille conductance is h_f³/(12μ),
-// the Couette flux through a φ-face is (ωR/2)·h_f·θ_upwind. The scheme is conservative and
-// second-order accurate; forces are integrated with the trapezoidal rule.
+// the Couette flux through a φ-face is (ωR/2)·h_f·θ_upwind; faces that a pocket's edge (a
+// step in h) crosses take the exact values of the stepped film instead (Pocket). The scheme
+// is conservative and second-order accurate; forces are integrated with the trapezoidal
+// rule.
 //
 // A ReynoldsSolver is built once per (geometry, grid, cavitation model): it analyses the
 // sparse pattern once and refactors numerically per call; it keeps the last solution and
@@ -56,6 +58,22 @@ struct Groove {
   double pressure_pa = 0.0;
 };
 
+/// Recess in the bush (a pressure dam's relief pocket, a step bearing's deep inlet region):
+/// the film is deeper by depth_m over φ ∈ [start_deg, start_deg + arc_deg] (periodic, the
+/// grid's angle φ) and z ∈ [z_min_m, z_max_m] (z = 0 the mid-plane). The film thickness
+/// passed to solve() is the one without recesses; the solver adds them. The thickness steps
+/// at the recess edges wherever they fall on the grid: every face whose strip between its
+/// two nodes an edge crosses takes the exact value of the piecewise film (h³ in series
+/// across an edge, in parallel along it; the Couette flux the flux-continuous one), so a
+/// stepped film converges at second order. Recesses that overlap add their depths.
+struct Pocket {
+  double start_deg = 0.0;
+  double arc_deg = 0.0;    ///< (0, 360]
+  double z_min_m = 0.0;    ///< −L/2 <= z_min_m < z_max_m <= L/2
+  double z_max_m = 0.0;
+  double depth_m = 0.0;    ///< > 0
+};
+
 /// 360° bush (rigid, or with a sleeve deformation supplied through the film thickness).
 struct JournalBearingGeometry {
   double diameter_m = 0.05;
@@ -63,6 +81,7 @@ struct JournalBearingGeometry {
   double clearance_m = 3e-4;
   double viscosity_pa_s = 0.04;
   std::vector<Groove> grooves;
+  std::vector<Pocket> pockets;  ///< recesses (steps in the film thickness); not short_bearing
   /// End-seal conductance G_s, m²/(Pa·s) (= m³/s of axial leakage per Pa and per metre of
   /// circumference), the same at both ends: q_z = G_s (p − 0) leaves the film through each
   /// end. +∞ (default): open ends, p = 0 at z = ±L/2. Must be ≥ 1e-8 c³/(12μL) (a fully
@@ -97,8 +116,14 @@ struct FilmSolution {
   RowMatrixXd h_m;           ///< film thickness, m
   Eigen::Vector2d force_n;   ///< film force on the journal (Fx, Fy), N
   double friction_torque_nm = 0.0;  ///< viscous torque resisting the rotation, N·m (> 0 for ω > 0)
-  double inlet_flow_m3_s = 0.0;     ///< flow supplied by the grooves into the film, m³/s
-  double side_flow_m3_s = 0.0;      ///< flow leaving through both ends, m³/s
+  /// Flow the grooves deliver into the film, m³/s: the net flux out of the groove nodes, a
+  /// Swift–Stieber (or clipped) cavitated cell returning nothing; with a supply line at the
+  /// maximum film this is the flow just downstream of it (Raimondi & Boyd's Q). Mass-
+  /// conserving films (jfo, full films): supply = side flow + storage.
+  double inlet_flow_m3_s = 0.0;
+  /// Flow leaving through both ends, m³/s (open ends: the end half cells included; seals: the
+  /// seal flux), second-order accurate.
+  double side_flow_m3_s = 0.0;
   double h_min_m = 0.0;             ///< minimum film thickness over the nodes, m
   double h_min_angle_deg = 0.0;     ///< its angle φ, deg, in [0, 360)
   int iterations = 0;               ///< active-set iterations (1 for none/gumbel)

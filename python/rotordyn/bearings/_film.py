@@ -130,12 +130,14 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
              pivot_rad: float, preload: float, n_circ: int, n_axial: int, coords: list[int],
              extra_shapes=(), supply_pressure_pa: float = 0.0, spin: float = 1.0,
              base_extra=None, end_seal_conductance: float | None = None,
-             short_bearing: bool = False) -> PadFilm:
+             short_bearing: bool = False, pockets=()) -> PadFilm:
     """Film coupling of one pad (or of a full 360° bush when ``arc_rad`` is 2π).
 
     ``extra_shapes``: callables φ (rad, pad nodes) → ∂h/∂r_k for coordinates beyond the
     journal's x, y (pad tilt, pivot displacement), in the order of ``coords[2:]``.
-    ``base_extra(phi, z)``: optional (N_pad, n_axial+1) addition to the base film (dam pocket).
+    ``base_extra(phi, z)``: optional (N_pad, n_axial+1) addition to the base film (smooth).
+    ``pockets``: recesses (offset from the pad start rad, arc rad, z_min m, z_max m, depth m):
+    steps in the film, passed to the core as exact edges (``_core.Pocket``), not sampled.
     ``n_circ``: nodes per 360° (the pad gets round(n_circ·β/2π) intervals, at least 10).
     ``end_seal_conductance``: G_s, m²/(Pa·s), of seals at both ends (Robin condition in the
     Reynolds core); None: open ends (p = 0 at z = ±L/2). ``short_bearing``: the core's
@@ -174,6 +176,8 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
     if end_seal_conductance is not None:
         g.end_seal_conductance = float(end_seal_conductance)
     g.short_bearing = bool(short_bearing)
+    g.pockets = [_core.Pocket(math.degrees(a / s), math.degrees(arc / s), z0, z1, d)
+                 for a, arc, z0, z1, d in pockets]  # core angle = (φ − start) / s
     f = _core.FilmCoupling()
     f.name = name
     f.geometry = g

@@ -129,22 +129,17 @@ class FixedGeometryBearing:
             start = centre - 0.5 * arc
             if abs(arc - 2 * math.pi) < 1e-12:
                 start = 0.0  # the plain bearing's grid (φ_0 = 0)
-            extra = None
+            pockets = ()
             if self.kind == "pressure_dam" and self.dam_depth_m > 0 and k == 1:
-                d, dam, w = self.dam_depth_m, math.radians(self.dam_arc_deg), self.dam_width_fraction
-                L = self.length_m
-
-                def extra(phi, z, start=start, d=d, dam=dam, w=w, L=L):
-                    inside = ((phi - start) <= dam * (1 + 1e-12))[:, None] & \
-                        (np.abs(z) <= 0.5 * w * L * (1 + 1e-12))[None, :]
-                    return np.where(inside, d, 0.0)
+                zw = 0.5 * self.dam_width_fraction * self.length_m
+                pockets = ((0.0, math.radians(self.dam_arc_deg), -zw, zw, self.dam_depth_m),)
             out.append(pad_film(
                 name=f"{name}.lobe{k}" if self.n_lobes > 1 else name,
                 diameter_m=self.diameter_m, length_m=self.length_m, clearance_m=self.clearance_m,
                 viscosity_pa_s=self.viscosity_pa_s, cavitation=self.cavitation, start_rad=start,
                 arc_rad=arc, pivot_rad=start + alpha * arc, preload=m, n_circ=self.n_circ,
                 n_axial=self.n_axial, coords=[jx, jy], supply_pressure_pa=self.supply_pressure_pa,
-                spin=spin, base_extra=extra))
+                spin=spin, pockets=pockets))
         return out
 
     def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:
