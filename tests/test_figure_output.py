@@ -44,3 +44,30 @@ def test_unbalance_plot_per_station(tmp_path):
     assert (tmp_path / "u_station1.png").stat().st_size > 10000
     assert (tmp_path / "u_station3.png").stat().st_size > 10000
     assert not fig.exists()
+
+
+def test_bode_phase_is_an_unwrapped_lag():
+    """A single-degree-of-freedom response: the lag rises from 0 through 90° at resonance to
+    180°, continuously (the wrapped phase jumped by 360°, read as a resonance)."""
+    import numpy as np
+
+    from rotordyn.plot.response import phase_lag_deg
+
+    r = np.linspace(0.1, 3.0, 200)
+    z = 1.0 / (1 - r**2 + 2j * 0.05 * r)
+    sdof = np.degrees(np.arctan2(2 * 0.05 * r, 1 - r**2))  # 0 → 90° at r = 1 → 180°
+    lag = phase_lag_deg(z * np.exp(-3j))  # 172° more: the wrapped phase jumps by 360°
+    np.testing.assert_allclose(lag, sdof + np.degrees(3.0), atol=1e-9)
+    assert np.all(np.abs(np.diff(lag)) < 60)
+    gap = np.array([1 + 0j, np.nan, -1 + 0j])
+    assert np.isnan(phase_lag_deg(gap)[1])
+
+
+def test_results_display_in_jupyter():
+    import rotordyn as rd
+
+    s = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    for r in (rd.stability(s, 100.0), rd.static(s), rd.equilibrium(rd.models.paper_rig(), 50.0,
+                                                                   0.15e6, -1.85e-3)):
+        h = r._repr_html_()
+        assert h.startswith("<pre>&lt;") and "<table" in h

@@ -20,9 +20,25 @@ def _station_index(result, station):
 
 
 @paper_style
+def phase_lag_deg(z) -> np.ndarray:
+    """Phase lag of the response behind the unbalance force, deg: −arg(z), unwrapped along speed
+    (a lag grows by ~180° through each critical, never jumps by 360°), each finite run on its
+    own and started in (−180°, 180°]."""
+    z = np.asarray(z)
+    out = np.full(z.shape, np.nan)
+    ok = np.isfinite(z)
+    idx = np.flatnonzero(ok)
+    if idx.size:
+        runs = np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1)
+        for r in runs:
+            out[r] = -np.degrees(np.unwrap(np.angle(z[r])))
+    return out
+
+
 def bode(result, station=None, axes=None, annotate: bool = True):
     """Bode plot at ``station``: amplitude of x, y and the orbit's semi-major axis (µm), phase
-    of x and y (deg), peaks annotated with N_c and AF, operating range and margins."""
+    lag of x and y behind the unbalance (deg, unwrapped: :func:`phase_lag_deg`), peaks
+    annotated with N_c and AF, operating range and margins."""
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
@@ -39,8 +55,8 @@ def bode(result, station=None, axes=None, annotate: bool = True):
     a1.plot(sp, np.abs(y) * 1e6, color="tab:orange", label="y amplitude (vertical)")
     a1.plot(sp, result.major_m[:, k] * 1e6, color="k", lw=0.8, ls="--",
             label="orbit semi-major axis")
-    a2.plot(sp, np.degrees(np.angle(x)), color="tab:blue")
-    a2.plot(sp, np.degrees(np.angle(y)), color="tab:orange")
+    a2.plot(sp, phase_lag_deg(x), color="tab:blue")
+    a2.plot(sp, phase_lag_deg(y), color="tab:orange")
     handles, _ = a1.get_legend_handles_labels()
     if annotate:
         pk = result.peaks(result.stations[k])
@@ -76,8 +92,12 @@ def bode(result, station=None, axes=None, annotate: bool = True):
             a.axvspan(lo, hi, color="tab:green", alpha=0.12, lw=0)
         handles.append(Patch(color="tab:green", alpha=0.12, label="operating speed range"))
     a1.set_ylabel("amplitude (µm, 0-peak)")
-    a2.set_ylabel("phase (deg)")
-    a2.set_yticks([-180, -90, 0, 90, 180])
+    a2.set_ylabel("phase lag (deg)")
+    lags = np.concatenate([phase_lag_deg(x), phase_lag_deg(y)])
+    if np.isfinite(lags).any():  # ticks every 90° over the unwrapped range
+        lo = 90 * np.floor(np.nanmin(lags) / 90)
+        hi = 90 * np.ceil(np.nanmax(lags) / 90)
+        a2.set_yticks(np.arange(lo, hi + 1, 90 if hi - lo <= 540 else 180))
     a2.set_xlabel("rotor speed (Hz)")
     hz_rpm_axis(a1)
     a2.figure.legend(handles=handles, loc="outside lower center", ncol=2, fontsize=6)

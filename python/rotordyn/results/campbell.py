@@ -8,11 +8,13 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from rotordyn.results._display import Display
+
 from rotordyn.results.modes import WHIRL_NAMES, log_dec
 
 
 @dataclass(frozen=True)
-class CampbellResult:
+class CampbellResult(Display):
     """speeds_hz: (n_speeds,). eigenvalues: (n_speeds, n_modes) complex, 1/s, modes sorted by
     damped frequency at each speed. whirl: (n_speeds, n_modes) int (+1 forward, −1 backward,
     0 planar). mode_id: (n_speeds, n_modes) int64 tracked id of each slot (eigenvector

@@ -7,12 +7,14 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from rotordyn.results._display import Display
+
 
 from rotordyn._common.status import CONVERGED, FAILED, STATUSES  # noqa: F401
 
 
 @dataclass(frozen=True)
-class EquilibriumResult:
+class EquilibriumResult(Display):
     """Equilibrium at one operating point.
 
     r: (n,) all coordinates (rotor masters relative to the housings, then sleeve masters, m).

@@ -7,6 +7,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from rotordyn.results._display import Display
+
 from rotordyn._common.whirl import (  # noqa: F401 - the modal results' vocabulary
     WHIRL_NAMES, WHIRL_PLANAR_TOL, whirl_index, whirl_label)
 
@@ -51,7 +53,7 @@ def log_dec(eigenvalues: np.ndarray) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class ModesResult:
+class ModesResult(Display):
     """Eigen-analysis of the rotor at one speed (paper eq. 19 without excitation).
 
     eigenvalues: (n_modes,) complex, 1/s, λ = σ + iω_d with ω_d ≥ 0, ascending in ω_d.

@@ -7,6 +7,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from rotordyn.results._display import Display
+
 from rotordyn.results.equilibrium import CONVERGED, STATUSES, EquilibriumResult
 from rotordyn.results.modes import damping_ratio, log_dec, mode_stable
 
@@ -64,7 +66,7 @@ class LinearModel:
 
 
 @dataclass(frozen=True)
-class StabilityResult:
+class StabilityResult(Display):
     """Eigenvalues of the linearised system at one operating point.
 
     eigenvalues: (n_modes,) complex 1/s, ascending damped frequency; whirl: (n_modes,) str;

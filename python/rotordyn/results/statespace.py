@@ -7,11 +7,13 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from rotordyn.results._display import Display
+
 from rotordyn.results.stability import LinearModel
 
 
 @dataclass(frozen=True)
-class StateSpaceResult:
+class StateSpaceResult(Display):
     """ẋ = A x + B u, y = C x + D u with x = [Δr; Δṙ] about the equilibrium.
 
     A (2n, 2n), B (2n, n_u), C (n_y, 2n), D (n_y, n_u), SI units: inputs in Pa (chamber

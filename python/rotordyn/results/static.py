@@ -10,11 +10,13 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from rotordyn.results._display import Display
+
 from rotordyn._common.status import CONVERGED
 
 
 @dataclass(frozen=True)
-class StaticResult:
+class StaticResult(Display):
     """Static state of the rotor (DESIGN frame: x horizontal, y up, gravity along −y).
 
     node_positions_m (n_nodes,); deflection_x_m, deflection_y_m (n_nodes,): absolute

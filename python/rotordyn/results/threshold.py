@@ -8,9 +8,11 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from rotordyn.results._display import Display
+
 
 @dataclass(frozen=True)
-class ThresholdResult:
+class ThresholdResult(Display):
     """``value`` of ``vary`` at which max Re λ = 0 (to ``xtol``), with the whirl frequency
     of the crossing mode. ``stable_side``: "above" or "below" the threshold. ``status``:
     "ok", "no_crossing" (no sign change in ``bounds``: ``value`` is NaN) or "error".
@@ -83,7 +85,7 @@ class ThresholdResult:
 
 
 @dataclass(frozen=True)
-class BoundaryResult:
+class BoundaryResult(Display):
     """A stability boundary: the threshold of ``vary`` at each value of ``along``."""
 
     vary: str

@@ -7,9 +7,11 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from rotordyn.results._display import Display
+
 
 @dataclass(frozen=True)
-class TransientResult:
+class TransientResult(Display):
     """t: (n_t,) s; r, v: (n_t, n) coordinates and velocities (m, m/s); journal_x_m,
     journal_y_m: (n_t, n_bearings) relative to each housing; h_min_m: (n_t, n_bearings);
     speed_hz_t, angle_rad: (n_t,) speed and rotor angle; chamber_pressure_command_pa,

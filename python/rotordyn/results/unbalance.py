@@ -8,6 +8,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from rotordyn.results._display import Display
+
 
 from rotordyn._common.api import (  # noqa: F401 - the criteria of the peaks
     API_CRITICALLY_DAMPED_AF, af_text, amplification_factor, api_required_margin)
@@ -19,7 +21,7 @@ PEAK_COLUMNS = ("station", "critical_speed_hz", "peak_m", "n1_hz", "n2_hz",
 
 
 @dataclass(frozen=True)
-class UnbalanceResult:
+class UnbalanceResult(Display):
     """x, y: (n_speeds, n_stations) complex amplitudes (m) of x = Re(X e^{iΩt}) at the output
     stations; speeds_hz (n_speeds,); point_status (n_speeds,); max_real_1_per_s (n_speeds,)
     the linear system's largest Re λ at each speed, or None when not checked (``stable``)."""
