@@ -10,6 +10,8 @@ PY     := $(VENV)/bin/python
 PIP    := $(PY) -m pip --disable-pip-version-check -q
 STAMPS := $(VENV)/.stamps
 APT_PKGS := libeigen3-dev libsuitesparse-dev libsundials-dev liblapack-dev libblas-dev g++ make
+# `make test` only: a headless browser for the HTML report's test (tests/test_report_browser.py)
+APT_TEST_PKGS := chromium
 PY_BUILD := scikit-build-core pybind11 cmake ninja
 PY_DEPS  := numpy scipy pandas pyarrow "dask[distributed]" matplotlib threadpoolctl pytest hypothesis control
 # Optional (the `hinf` extra): H∞ synthesis (python-control's hinfsyn/mixsyn need slycot);
@@ -19,7 +21,7 @@ PY_OPT_DEPS := "slycot>=0.6"
 SOURCES := $(shell find cpp python cmake sweeps -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.py' -o -name '*.txt' -o -name '*.toml' -o -name '*.cmake' -o -name '*.pyi' -o -name 'py.typed' \) 2>/dev/null) CMakeLists.txt pyproject.toml
 OUT ?= out
 
-.PHONY: run test test-cpp test-py install sysdeps bench clean distclean sanitize fuzz
+.PHONY: run test test-cpp test-py install sysdeps testdeps bench clean distclean sanitize fuzz
 
 sysdeps: $(STAMPS)/sysdeps
 $(STAMPS)/sysdeps:
@@ -52,7 +54,17 @@ run: $(STAMPS)/install
 test-cpp: $(STAMPS)/install
 	$(VENV)/bin/ctest --test-dir build/py --output-on-failure
 
-test-py: $(STAMPS)/install
+testdeps: $(STAMPS)/testdeps
+$(STAMPS)/testdeps: | $(STAMPS)/sysdeps
+	@if ! dpkg -s $(APT_TEST_PKGS) >/dev/null 2>&1; then \
+	  SUDO=""; if [ "$$(id -u)" -ne 0 ]; then SUDO="sudo"; fi; \
+	  echo "make: installing Debian packages for the tests: $(APT_TEST_PKGS)"; \
+	  $$SUDO apt-get update -qq && \
+	  $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(APT_TEST_PKGS) >/dev/null; \
+	fi
+	@touch $@
+
+test-py: $(STAMPS)/install $(STAMPS)/testdeps
 	$(PY) -m pytest -q
 
 test: test-cpp test-py

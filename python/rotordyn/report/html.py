@@ -51,7 +51,9 @@ def svg(fig) -> str:
 def _table(header, rows) -> str:
     h = "".join(f"<th>{html.escape(str(c))}</th>" for c in header)
     body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in r) + "</tr>" for r in rows)
-    return f"<table><thead><tr>{h}</tr></thead><tbody>{body}</tbody></table>"
+    # in a box of its own that scrolls sideways on a narrow screen (the page never does)
+    return (f"<div class=\"tbl\"><table><thead><tr>{h}</tr></thead><tbody>{body}</tbody>"
+            "</table></div>")
 
 
 def _verdict(ok) -> str:
@@ -131,7 +133,9 @@ def _log_dec_figure(c, ld, op_range):
     return fig
 
 
-CSS = """body{font-family:sans-serif;max-width:60em;margin:2em auto;line-height:1.4;color:#222}
+CSS = """body{font-family:sans-serif;max-width:60em;margin:2em auto;padding:0 .5em;
+line-height:1.4;color:#222;overflow-wrap:break-word}
+.tbl{overflow-x:auto;max-width:100%}
 h1{font-size:1.5em}h2{font-size:1.2em;border-bottom:1px solid #ccc;margin-top:2em}
 table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #bbb;padding:.2em .5em;
 text-align:left;vertical-align:top}th{background:#eee}
