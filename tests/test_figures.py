@@ -89,7 +89,7 @@ def test_unbalance_bode_and_polar(rig):
                               chamber_pressure_pa=4e5, config_ay_m=0.0,
                               operating_speed_hz=(50.0, 60.0))
     a1, a2 = u.plot()
-    assert a1.get_ylabel() == "amplitude (µm, 0-peak)" and a2.get_ylabel() == "phase (deg)"
+    assert a1.get_ylabel() == "amplitude (µm, 0-peak)" and a2.get_ylabel() == "phase lag (deg)"
     assert a2.get_xlabel() == "rotor speed (Hz)"
     leg = [t.get_text() for t in a1.figure.legends[0].get_texts()]
     assert "operating speed range" in leg and "critical speed N_c (peak)" in leg

@@ -20,21 +20,52 @@ from rotordyn.units import hz_to_rad_s
 
 REFINE_LEVELS = 6    # at most 6 refinements of a peak: 1 Hz grid → 1/4⁶ Hz ≈ 0.25 mHz
 REFINE_POINTS = 3    # new speeds on each side of a peak per refinement (spacing / 4)
+BAND_TOL_REL = 2e-3  # half-power speeds bracketed to 0.2 % of N_c (AF converged to ~1 %)
 
 
 def _unresolved_peaks(u: UnbalanceResult) -> list[int]:
     """Indices of local maxima (of |x|, |y| or the orbit's major axis at any station) whose
-    neighbours are not both above the half-power level a/√2: the peak lies between grid points
-    and its height and half-power band (AF) are not resolved yet."""
+    neighbours are not both above the half-power level a/√2, or farther apart than
+    2 BAND_TOL_REL × N_c: the peak lies between grid points and its height, speed and
+    half-power band (AF) are not resolved yet."""
     out = set()
+    s = u.speeds_hz
     for a in (np.abs(u.x), np.abs(u.y), u.major_m):
         for k in range(a.shape[1]):
             v = a[:, k]
             for i in range(1, len(v) - 1):
-                if v[i] > v[i - 1] and v[i] >= v[i + 1] and \
-                        min(v[i - 1], v[i + 1]) < v[i] / np.sqrt(2):
+                if v[i] > v[i - 1] and v[i] >= v[i + 1] and (
+                        min(v[i - 1], v[i + 1]) < v[i] / np.sqrt(2)
+                        or s[i + 1] - s[i - 1] > 2 * BAND_TOL_REL * s[i]):
                     out.add(i)
     return sorted(out)
+
+
+def _unresolved_bands(u: UnbalanceResult) -> list[tuple[float, float]]:
+    """Grid intervals holding a half-power speed N₁ or N₂ of a peak of the orbit's major axis
+    (what :meth:`UnbalanceResult.peaks` reads), at any station, wider than BAND_TOL_REL × N_c:
+    the AF interpolated across them is not converged, so a station's AF depended on which
+    other stations refined the grid (issue 18)."""
+    s = u.speeds_hz
+    out = []
+    for k in range(u.major_m.shape[1]):
+        v = u.major_m[:, k]
+        for i in range(1, len(v) - 1):
+            if not (v[i] > v[i - 1] and v[i] >= v[i + 1]):
+                continue
+            half = v[i] / np.sqrt(2)
+            tol = BAND_TOL_REL * s[i]
+            j = i
+            while j > 0 and v[j] > half:
+                j -= 1
+            if v[j] <= half and s[j + 1] - s[j] > tol:
+                out.append((s[j], s[j + 1]))
+            j = i
+            while j < len(v) - 1 and v[j] > half:
+                j += 1
+            if v[j] <= half and s[j] - s[j - 1] > tol:
+                out.append((s[j - 1], s[j]))
+    return out
 
 
 def _merge(a: UnbalanceResult, b: UnbalanceResult) -> UnbalanceResult:
@@ -62,8 +93,10 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     ones). ``operating_speed_hz``: (min, max) operating speeds for the API 684 separation
     margins of :meth:`UnbalanceResult.peaks`. ``refine``: add speeds around every resonance
     peak until both neighbours of the peak lie above its half-power level (at most
-    ``REFINE_LEVELS`` quarterings of the spacing), so that neither the peak nor its AF is
-    missed between the given speeds (the returned ``speeds_hz`` include the added ones).
+    ``REFINE_LEVELS`` quarterings of the spacing) and the half-power speeds are bracketed to
+    ``BAND_TOL_REL`` of the critical speed, so that neither the peak nor its AF is missed
+    between the given speeds and a station's peaks do not depend (beyond that) on which other
+    stations are asked for (the returned ``speeds_hz`` include the added ones).
     ``check_stability``: also the largest real part of the linear system's eigenvalues at every
     speed (``max_real_1_per_s``; above the threshold of instability there is no steady
     unbalance response, and ``stable`` says so); default: when the system has bearing
@@ -77,10 +110,11 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
         for _ in range(REFINE_LEVELS):
             sp = u.speeds_hz
             new = []
-            for i in _unresolved_peaks(u):
-                for lo, hi in ((sp[i - 1], sp[i]), (sp[i], sp[i + 1])):
-                    new.extend(lo + (hi - lo) * np.arange(1, REFINE_POINTS + 1)
-                               / (REFINE_POINTS + 1))
+            gaps = [(sp[i - 1], sp[i]) for i in _unresolved_peaks(u)]
+            gaps += [(sp[i], sp[i + 1]) for i in _unresolved_peaks(u)]
+            for lo, hi in gaps + _unresolved_bands(u):
+                new.extend(lo + (hi - lo) * np.arange(1, REFINE_POINTS + 1)
+                           / (REFINE_POINTS + 1))
             new = np.unique(np.asarray(new))
             new = new[~np.isin(new, sp)]
             if new.size == 0:
