@@ -185,3 +185,9 @@ def test_disk_geometry_round_trips_and_a_toml_disk_may_give_only_geometry(tmp_pa
     with pytest.raises(rd.InputError, match="inner_diameter_m: expected a value below"):
         rd.Disk.from_geometry(2, steel, width_m=0.07, outer_diameter_m=0.2,
                               inner_diameter_m=0.3)
+
+
+def test_table_speeds_in_the_analyses_range():
+    with pytest.raises(rd.InputError, match=r"speeds_hz: expected speeds in \[-100000, 100000\]"):
+        TableBearing(station=0, speeds_hz=(-1e7, 0.0), kxx_n_per_m=(1e7, 1e7),
+                     kyy_n_per_m=(1e7, 1e7))

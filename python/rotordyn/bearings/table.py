@@ -87,6 +87,9 @@ class TableBearing:
             raise InputError(f"{where}.speeds_hz: expected at least one speed")
         if not np.all(np.isfinite(s)):
             raise InputError(f"{where}.speeds_hz: expected finite speeds, got {self.speeds_hz}")
+        if np.any(np.abs(s) > v.MAX_SPEED_HZ):  # the analyses' own speed range
+            raise InputError(f"{where}.speeds_hz: expected speeds in [-{v.MAX_SPEED_HZ:g}, "
+                             f"{v.MAX_SPEED_HZ:g}] Hz, got {float(s[np.argmax(np.abs(s))])!r}")
         bad = np.flatnonzero(np.diff(s) <= 0)
         if bad.size:
             i = int(bad[0]) + 1
