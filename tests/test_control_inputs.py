@@ -92,6 +92,9 @@ CASES = [
     ("modal_truncation check_hz from 0",
      lambda f: modal_truncation(f.p, check_hz=(0.0, 10.0)), "check_hz"),
     ("modal_truncation n_check 1", lambda f: modal_truncation(f.p, n_check=1), "n_check"),
+    # issue 21 (fuzzing): no mode kept was a numpy ValueError
+    ("modal_truncation keeps nothing",
+     lambda f: modal_truncation(f.p, 1.0, keep_actuator=False), "max_frequency_hz"),
     ("balanced_truncation order 2.5", lambda f: balanced_truncation(f.p, 2.5), "order"),
     ("balanced_truncation check_hz text",
      lambda f: balanced_truncation(f.p, 8, check_hz="ab"), "check_hz"),
