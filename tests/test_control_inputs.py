@@ -92,6 +92,10 @@ CASES = [
     ("modal_truncation check_hz from 0",
      lambda f: modal_truncation(f.p, check_hz=(0.0, 10.0)), "check_hz"),
     ("modal_truncation n_check 1", lambda f: modal_truncation(f.p, n_check=1), "n_check"),
+    # issue 21 (fuzzing): c² of 1e300 was an OverflowError
+    ("lqr clearance 1e300", lambda f: lqr(f.p, clearance_m=1e300), "clearance_m"),
+    ("lqr pressure scale 1e-300", lambda f: lqr(f.p, pressure_scale_pa=1e-300),
+     "pressure_scale_pa"),
     # issue 21 (fuzzing): no mode kept was a numpy ValueError
     ("modal_truncation keeps nothing",
      lambda f: modal_truncation(f.p, 1.0, keep_actuator=False), "max_frequency_hz"),

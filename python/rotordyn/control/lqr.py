@@ -75,6 +75,9 @@ def default_weights(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 
     command."""
     scale("state_weight", state_weight)
     scale("regularisation", regularisation)
+    # before c² and 1/p_s² (issue 21, fuzzing: clearance_m = 1e300 was an OverflowError)
+    scale("clearance_m", clearance_m)
+    scale("pressure_scale_pa", pressure_scale_pa)
     Q = state_weight * (p.C_perf.T @ p.C_perf) / clearance_m**2
     s = state_scales(p, clearance_m=clearance_m, pressure_scale_pa=pressure_scale_pa)
     Q = Q + regularisation * np.diag(1.0 / s**2)
