@@ -80,6 +80,33 @@ def control(p: dict) -> list:
             PressureSchedule.constant(a["values"][0]).with_harmonic(
                 a["values"][1], **a["harmonic"])
         return v
+    if call == "transient":  # the operation pieces in the nonlinear loop
+        act = Actuator(**a["actuator"])
+        sched = PressureSchedule.constant(a["pressure_pa"]).with_harmonic(
+            a["amplitude_pa"], frequency_hz=a["frequency_hz"])
+        k = None
+        if a["law"] == "pid":
+            k = pid.pid(3.7e8, -5.9e5)
+        elif a["law"] == "discrete":
+            k = Controller.static([[-3.7e8, 0.0]], [("journal", 0)],
+                                  sample_time_s=a["sample_time_s"], noise_std=a["noise_std"])
+        tr = rd.transient(rd.models.paper_rig(), a["t_end_s"], 50.0, 0.05e6, AY,
+                          disturbance_m=(0.0, 3e-5), actuator=act, pressure=sched,
+                          controller=k, n_out=41)
+        if tr.status in ("ok", "contact"):
+            _finite("r", tr.r, v)
+            pc = tr.chamber_pressure_actual_pa
+            _finite("p_c", pc, v)
+            if np.any(pc < act.p_min_pa) or np.any(pc > act.p_max_pa):
+                v.append(f"p_c outside [{act.p_min_pa}, {act.p_max_pa}]: "
+                         f"{pc.min()}..{pc.max()}")
+            if act.order and math.isfinite(act.rate_limit_pa_s):
+                over = np.abs(np.diff(pc)) - act.rate_limit_pa_s * np.diff(tr.t)
+                if over.max() > 1e-3 + 1e-9 * np.abs(pc).max():
+                    v.append(f"rate limit exceeded by {over.max()} Pa")
+        elif not tr.message:
+            v.append(f"transient status {tr.status} without a message")
+        return v
     pl = _plant()
     if call == "lqr":
         k, eig = lqr.lqr(pl, a.get("Q"), a.get("R"), **a["kw"])

@@ -303,6 +303,10 @@ CASES = [
     ("Actuator p_min True", lambda f: Actuator(p_min_pa=True), "actuator.p_min_pa"),
     ("Actuator rate limit True", lambda f: Actuator(rate_limit_pa_s=True),
      "actuator.rate_limit_pa_s"),
+    # issue 21 (fuzzing): integers beyond float64 were accepted, then an OverflowError
+    ("Actuator p_max 10**400", lambda f: Actuator(p_max_pa=10**400), "actuator.p_max_pa"),
+    ("Actuator rate limit 10**400", lambda f: Actuator(rate_limit_pa_s=10**400),
+     "actuator.rate_limit_pa_s"),
     ("Controller sample time inf",
      lambda f: Controller.static([[1.0, 0.0]], [("journal", 0)], sample_time_s=INF),
      "controller.sample_time_s"),

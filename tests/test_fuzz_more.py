@@ -32,6 +32,7 @@ SQUARE2 = st.one_of(st.lists(st.lists(st.floats(-1e6, 1e6), min_size=2, max_size
 @st.composite
 def control_payload(draw):
     call = draw(st.sampled_from(["plant", "actuator", "actuator", "profiles", "profiles",
+                                 "transient", "transient",
                                  "lqr", "lqr", "lqg", "pid", "pid", "pid", "controller",
                                  "controller", "modal", "balanced"]))
     if call == "plant":
@@ -47,6 +48,22 @@ def control_payload(draw):
         return {"call": call, "args": args}
     if call == "actuator":
         return {"call": call, "args": draw(hostile(draw(ACTUATOR), share=3))}
+    if call == "transient":
+        act = draw(ACTUATOR)
+        act["p_min_pa"] = draw(st.sampled_from([0.0, 0.03e6, -math.inf]))
+        act["p_max_pa"] = draw(st.sampled_from([1e6, 0.08e6, math.inf]))
+        act["rate_limit_pa_s"] = draw(st.sampled_from([math.inf, 1e7, 1e5, 1e-300]))
+        if act["order"] == 0:
+            act["rate_limit_pa_s"] = math.inf
+        args = {"actuator": draw(hostile(act, share=8)),
+                "pressure_pa": draw(st.floats(0.0, 0.2e6)),
+                "amplitude_pa": draw(st.sampled_from([0.0, 1e3, 0.05e6, 1e6])),
+                "frequency_hz": draw(st.floats(1.0, 2e3)),
+                "law": draw(st.sampled_from(["none", "pid", "discrete"])),
+                "sample_time_s": draw(st.sampled_from([1e-4, 2.5e-5, 1e-3])),
+                "noise_std": draw(st.sampled_from([0.0, 1e-7])),
+                "t_end_s": draw(st.floats(1e-3, 0.01))}
+        return {"call": call, "args": args}
     if call == "profiles":
         kind = draw(st.sampled_from(["ramp", "table", "time_table", "harmonic"]))
         vals = [draw(number(-1e3, 1e3)) for _ in range(3)]
@@ -87,12 +104,12 @@ def control_payload(draw):
         n = draw(st.integers(0, 2))
         mat = lambda r, c: st.lists(st.lists(st.floats(-1e8, 1e8), min_size=c, max_size=c),  # noqa: E731
                                     min_size=r, max_size=r)
-        args = {"A": draw(mat(n, n)), "B": draw(mat(n, 2)), "C": draw(mat(1, n)),
-                "D": draw(mat(1, 2)),
-                "kw": draw(hostile({"sample_time_s": draw(st.sampled_from(
-                    [None, 1e-4, 2.5e-5, 1e-3])),
-                    "noise_std": draw(st.sampled_from([0.0, 1e-7, -1.0]))}, share=4))}
-        return {"call": call, "args": draw(hostile(args, share=6))}
+        args = draw(hostile({"A": draw(mat(n, n)), "B": draw(mat(n, 2)),
+                             "C": draw(mat(1, n)), "D": draw(mat(1, 2))}, share=6))
+        args["kw"] = draw(hostile({"sample_time_s": draw(st.sampled_from(
+            [None, 1e-4, 2.5e-5, 1e-3])), "noise_std": draw(st.sampled_from([0.0, 1e-7, -1.0]))},
+            share=4))
+        return {"call": call, "args": args}
     if call == "modal":
         return {"call": call, "args": {
             "max_frequency_hz": draw(number(1.0, 5e3)),
