@@ -509,3 +509,12 @@ def test_remaining_options_are_checked(fx):
     with pytest.raises(rd.InputError, match="speeds_hz"):
         b.harmonic_schedule(0.5e6, speeds_hz=[38.5])
     assert plant(fx.rig, 50.0, PC, AY, disturbance_stations=np.array([], int)).Bd.shape[1] == 0
+
+
+def test_lqr_never_returns_an_unstable_design(fx):
+    """Issue 21 (fuzzing): R = 1e-300 is positive definite, but the Riccati solution is lost
+    to round-off and the 'optimal' closed loop had max Re λ = 8e268: a ConvergenceError now."""
+    with pytest.raises(rd.ConvergenceError, match="lqr: the closed loop"):
+        lqr(fx.p, R=1e-300)
+    K, eig = lqr(fx.p)
+    assert np.all(eig.real < 0)

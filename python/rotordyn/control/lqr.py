@@ -107,7 +107,16 @@ def lqr(p, Q=None, R=None, **kw):
     K = np.linalg.solve(R, Bs.T @ Xs) / S[None, :]
     if not np.all(np.isfinite(K)):
         raise ConvergenceError("lqr: the gain is not finite for these weights")
-    return K, np.linalg.eigvals(p.A - p.B @ K)
+    eig = np.linalg.eigvals(p.A - p.B @ K)
+    # The Riccati solution is stabilising by definition: a closed loop that is not stable is
+    # a solution float64 did not resolve (issue 21, fuzzing: R = 1e-300 gave max Re λ = 8e268
+    # and was returned as a design).
+    if not (np.all(np.isfinite(eig)) and np.all(eig.real < 0)):
+        raise ConvergenceError(f"lqr: the closed loop A − B K is not stable (max Re λ = "
+                               f"{np.max(eig.real):.3g} 1/s): the weights (R = "
+                               f"{float(R[0, 0]):.3g}) are beyond what the Riccati solution "
+                               f"resolves in float64")
+    return K, eig
 
 
 def lqg(p, Q=None, R=None, *, process_noise: float = 1.0, measurement_noise_m: float = 1e-7,
