@@ -114,7 +114,6 @@ Eigen::VectorXd measure(const Ctx& c, const double* y, double t) {
 
 double clip(double x, double lo, double hi) { return std::min(std::max(x, lo), hi); }
 
-
 double base_command(const Ctx& c, double t, double omega, double theta) {
   const PressureCommand& p = c.in->pressure;
   double cmd = c.in->chamber_pressure;
