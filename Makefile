@@ -101,7 +101,7 @@ sanitize: $(STAMPS)/venv
 FUZZ_SCALE ?= 20
 fuzz: $(STAMPS)/install
 	ROTORDYN_FUZZ_SCALE=$(FUZZ_SCALE) ROTORDYN_FUZZ_EXPLORE=1 \
-	  $(PY) -m pytest -q tests/test_fuzz.py --hypothesis-show-statistics
+	  $(PY) -m pytest -q tests/test_fuzz.py tests/test_fuzz_more.py --hypothesis-show-statistics
 
 bench: $(STAMPS)/install
 	for b in benchmarks/bench_*.py; do $(PY) $$b || exit 1; done

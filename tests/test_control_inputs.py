@@ -92,6 +92,13 @@ CASES = [
     ("modal_truncation check_hz from 0",
      lambda f: modal_truncation(f.p, check_hz=(0.0, 10.0)), "check_hz"),
     ("modal_truncation n_check 1", lambda f: modal_truncation(f.p, n_check=1), "n_check"),
+    # issue 21 (fuzzing): c² of 1e300 was an OverflowError
+    ("lqr clearance 1e300", lambda f: lqr(f.p, clearance_m=1e300), "clearance_m"),
+    ("lqr pressure scale 1e-300", lambda f: lqr(f.p, pressure_scale_pa=1e-300),
+     "pressure_scale_pa"),
+    # issue 21 (fuzzing): no mode kept was a numpy ValueError
+    ("modal_truncation keeps nothing",
+     lambda f: modal_truncation(f.p, 1.0, keep_actuator=False), "max_frequency_hz"),
     ("balanced_truncation order 2.5", lambda f: balanced_truncation(f.p, 2.5), "order"),
     ("balanced_truncation check_hz text",
      lambda f: balanced_truncation(f.p, 8, check_hz="ab"), "check_hz"),
@@ -296,6 +303,10 @@ CASES = [
     ("Actuator p_min True", lambda f: Actuator(p_min_pa=True), "actuator.p_min_pa"),
     ("Actuator rate limit True", lambda f: Actuator(rate_limit_pa_s=True),
      "actuator.rate_limit_pa_s"),
+    # issue 21 (fuzzing): integers beyond float64 were accepted, then an OverflowError
+    ("Actuator p_max 10**400", lambda f: Actuator(p_max_pa=10**400), "actuator.p_max_pa"),
+    ("Actuator rate limit 10**400", lambda f: Actuator(rate_limit_pa_s=10**400),
+     "actuator.rate_limit_pa_s"),
     ("Controller sample time inf",
      lambda f: Controller.static([[1.0, 0.0]], [("journal", 0)], sample_time_s=INF),
      "controller.sample_time_s"),
@@ -498,3 +509,12 @@ def test_remaining_options_are_checked(fx):
     with pytest.raises(rd.InputError, match="speeds_hz"):
         b.harmonic_schedule(0.5e6, speeds_hz=[38.5])
     assert plant(fx.rig, 50.0, PC, AY, disturbance_stations=np.array([], int)).Bd.shape[1] == 0
+
+
+def test_lqr_never_returns_an_unstable_design(fx):
+    """Issue 21 (fuzzing): R = 1e-300 is positive definite, but the Riccati solution is lost
+    to round-off and the 'optimal' closed loop had max Re λ = 8e268: a ConvergenceError now."""
+    with pytest.raises(rd.ConvergenceError, match="lqr: the closed loop"):
+        lqr(fx.p, R=1e-300)
+    K, eig = lqr(fx.p)
+    assert np.all(eig.real < 0)

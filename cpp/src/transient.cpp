@@ -74,6 +74,13 @@ struct Ctx {
   bool contact = false;
   std::string cvode_message;
   std::string rub;  // why the run stopped at a thin film (empty: it did not)
+  // Rate limit as a switched system (exact while active): 0 free (ṗ = the valve's own rate,
+  // still clipped as a fallback), ±1 limited (ṗ = ±rate_limit exactly, p linear in t). CVODE
+  // root-finding on the switching surfaces (unlimited rate ∓ rate_limit) stops the
+  // integration at each switch, the mode flips and CVODE restarts, so the right-hand side is
+  // smooth inside every step.
+  bool rate_switched = false;
+  int rate_mode = 0;
 };
 
 // Everything the right-hand side and the Jacobian share at (t, y).
@@ -145,6 +152,50 @@ Point evaluate(const Ctx& c, double t, const double* y) {
   return P;
 }
 
+// The valve's own pressure rate before the rate limit (order 1: (clip(cmd) − p)/τ, order 2:
+// its rate state).
+double unlimited_rate(const Ctx& c, const Point& P, const double* y) {
+  const Actuator& a = c.in->actuator;
+  const Eigen::Index ia = 2 * c.n;
+  return a.order == 1 ? (P.csat - y[ia]) / a.time_constant : y[ia + 1];
+}
+
+// The limited pressure rate in the current mode.
+double limited_rate(const Ctx& c, double unlimited) {
+  const double R = c.in->actuator.rate_limit;
+  return c.rate_mode != 0 ? c.rate_mode * R : clip(unlimited, -R, R);
+}
+
+// The mode for a state, from the value of the unlimited rate (at the start and after a
+// discrete controller's sample, where the held command jumps).
+int rate_mode_of(double unlimited, double R) {
+  return unlimited >= R ? 1 : (unlimited <= -R ? -1 : 0);
+}
+
+// Switching surfaces: g0 = ṗ_u − R, g1 = ṗ_u + R (ṗ_u the unlimited rate).
+int rate_roots(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
+  const Ctx& c = *static_cast<const Ctx*>(user);
+  try {
+    const double* yp = N_VGetArrayPointer(y);
+    const double ru = unlimited_rate(c, evaluate(c, t, yp), yp);
+    const double R = c.in->actuator.rate_limit;
+    g[0] = ru - R;
+    g[1] = ru + R;
+    return 0;
+  } catch (...) {
+    return -1;
+  }
+}
+
+// The mode after a root: the direction in which each surface was crossed (CVODE returns the
+// state just past the crossing).
+int rate_mode_after(int mode, const int found[2]) {
+  if (found[1] < 0) return -1;  // ṗ_u fell through −R
+  if (found[0] > 0) return 1;   // ṗ_u rose through +R
+  if (found[0] < 0 || found[1] > 0) return 0;
+  return mode;
+}
+
 // With table mass coefficients the mass matrix is M(Ω) at the current speed: refactor it (and
 // g = M⁻¹ c_s) whenever Ω changes — a function of Ω only, whatever the call order.
 void mass_at_speed(Ctx& c, double omega) {
@@ -183,11 +234,9 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     Yd.segment(n, n) = c.Mllt.solve(rhs_f);
     const Actuator& a = in.actuator;
     const Eigen::Index ia = 2 * n;
-    if (a.order == 1) {
-      Yd(ia) = clip((P.csat - Y(ia)) / a.time_constant, -a.rate_limit, a.rate_limit);
-    } else if (a.order == 2) {
+    if (a.order >= 1) Yd(ia) = limited_rate(c, unlimited_rate(c, P, yp));
+    if (a.order == 2) {
       const double w = a.natural_frequency;
-      Yd(ia) = clip(Y(ia + 1), -a.rate_limit, a.rate_limit);
       Yd(ia + 1) = w * w * (P.csat - Y(ia)) - 2 * a.damping * w * Y(ia + 1);
     }
     if (c.kcont) {
@@ -241,13 +290,13 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
       Jm.block(n, ia, n, 1) += s_p * c.g;
       if (a.order == 1) {
         const double rate = (P.csat - Y(ia)) / a.time_constant;
-        if (std::abs(rate) < a.rate_limit) {
+        if (c.rate_mode == 0 && std::abs(rate) < a.rate_limit) {
           Jm.row(ia) = s_c * dcmd / a.time_constant;
           Jm(ia, ia) -= 1.0 / a.time_constant;
         }
       } else {
         const double w = a.natural_frequency;
-        if (std::abs(Y(ia + 1)) < a.rate_limit) Jm(ia, ia + 1) = 1.0;
+        if (c.rate_mode == 0 && std::abs(Y(ia + 1)) < a.rate_limit) Jm(ia, ia + 1) = 1.0;
         Jm.row(ia + 1) = w * w * s_c * dcmd;
         Jm(ia + 1, ia) -= w * w;
         Jm(ia + 1, ia + 1) -= 2 * a.damping * w;
@@ -417,6 +466,10 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       Y(2 * n + 1) = 0.0;
       AT(2 * n + 1) = opt.atol_pressure * in.actuator.natural_frequency;
     }
+    c.rate_switched = std::isfinite(in.actuator.rate_limit);
+    if (c.rate_switched)
+      c.rate_mode = rate_mode_of(unlimited_rate(c, evaluate(c, 0.0, Y.data()), Y.data()),
+                                 in.actuator.rate_limit);
   }
 
   check(CVodeSetErrHandlerFn(mem, err_handler, &c), "CVodeSetErrHandlerFn");
@@ -430,6 +483,10 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   if (opt.stability_limit_detection)
     check(CVodeSetStabLimDet(mem, SUNTRUE), "CVodeSetStabLimDet");
   check(CVodeSetStopTime(mem, t_end), "CVodeSetStopTime");
+  if (c.rate_switched) {
+    check(CVodeRootInit(mem, 2, rate_roots), "CVodeRootInit");
+    check(CVodeSetNoInactiveRootWarn(mem), "CVodeSetNoInactiveRootWarn");
+  }
 
   // Discrete controller: sample k at k·T; CVODE stops there and restarts (the held output
   // jumps). Samples and output times are merged in time order.
@@ -450,6 +507,16 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       get(mem, &v);
       out.*member += v;
     }
+  };
+  // After a root (a rate-limit switch): the new mode, then a restart from the state at the
+  // switch (the Jacobian and the step history belong to one mode).
+  auto switch_mode = [&](double at, double tstop) {
+    int found[2] = {0, 0};
+    check(CVodeGetRootInfo(mem, found), "CVodeGetRootInfo");
+    c.rate_mode = rate_mode_after(c.rate_mode, found);
+    harvest();
+    check(CVodeReInit(mem, at, y), "CVodeReInit");
+    check(CVodeSetStopTime(mem, tstop), "CVodeSetStopTime");
   };
   // Rub check after every step: a film below rub_fraction of its clearance stops the run.
   const auto& films = solver.model().films;
@@ -475,12 +542,10 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   // rub; only one met by the failing call is.
   auto step_to = [&](double tstop, double& tt) {
     check(CVodeSetStopTime(mem, tstop), "CVodeSetStopTime");
-    long s0 = 0, s = 0;
-    CVodeGetNumSteps(mem, &s0);
+    long s = 0;  // steps taken (counted here: a restart resets CVODE's counters)
     int f = CV_SUCCESS;
     while (tt < tstop) {
-      CVodeGetNumSteps(mem, &s);
-      if (s - s0 >= opt.max_steps) {
+      if (s++ >= opt.max_steps) {
         c.cvode_message = "max_steps = " + std::to_string(opt.max_steps) +
                           " steps taken before reaching t = " + std::to_string(tstop) + " s";
         return static_cast<int>(CV_TOO_MUCH_WORK);
@@ -489,6 +554,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       if (f < 0) return f;
       c.contact = false;
       if (rubbed(tt)) return static_cast<int>(CV_RHSFUNC_FAIL);
+      if (f == CV_ROOT_RETURN && tt < tstop) switch_mode(tt, tstop);
     }
     return f;
   };
@@ -496,6 +562,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   auto t_sample = [&](long k) { return static_cast<double>(k) * K.sample_time; };
   double t = 0.0;   // time of the state in Yo (the last output)
   double tn = 0.0;  // time CVODE has reached (continuous runs, one step at a time)
+  bool pending_switch = false;  // a rate-limit switch at tn, restart before the next step
   Eigen::Map<Eigen::VectorXd> Yo(N_VGetArrayPointer(yo), N);
   Yo = Y;
   for (Eigen::Index i = 0; i < nt; ++i) {
@@ -510,6 +577,9 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       }
       sample(ts);
       ++k_next;
+      if (c.rate_switched)  // the held command jumped
+        c.rate_mode = rate_mode_of(unlimited_rate(c, evaluate(c, t, Y.data()), Y.data()),
+                                   in.actuator.rate_limit);
       harvest();
       check(CVodeReInit(mem, t, y), "CVodeReInit");
     }
@@ -521,11 +591,13 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       // path does not depend on the output times) and each output is interpolated from the
       // step that passed it (what CV_NORMAL does too).
       // max_steps bounds the steps between two outputs, as CVODE's mxstep does in CV_NORMAL.
-      long steps0 = 0, steps = 0;
-      CVodeGetNumSteps(mem, &steps0);
+      long steps = 0;  // counted here: a restart resets CVODE's counters
       while (flag >= 0 && tn < target) {
-        CVodeGetNumSteps(mem, &steps);
-        if (steps - steps0 >= opt.max_steps) {
+        if (pending_switch) {
+          switch_mode(tn, t_end);
+          pending_switch = false;
+        }
+        if (steps++ >= opt.max_steps) {
           flag = CV_TOO_MUCH_WORK;
           c.cvode_message = "max_steps = " + std::to_string(opt.max_steps) +
                             " steps taken before reaching the output time " +
@@ -535,6 +607,9 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
         flag = CVode(mem, t_end, y, &tn, CV_ONE_STEP);
         if (flag >= 0) c.contact = false;  // as in step_to
         if (flag >= 0 && rubbed(tn)) flag = CV_RHSFUNC_FAIL;
+        // A switch: outputs up to the root are interpolated from the step that found it
+        // (before the restart, which therefore waits for the next step).
+        if (flag == CV_ROOT_RETURN && tn < t_end) pending_switch = true;
       }
       if (flag >= 0) {
         check(CVodeGetDky(mem, target, 0, yo), "CVodeGetDky");

@@ -4,6 +4,8 @@ waterfall of Fig. 13 is a set of these at increasing speeds)."""
 
 from __future__ import annotations
 
+import math
+
 from rotordyn._common.threads import limited_blas
 
 import numpy as np
@@ -46,6 +48,46 @@ def sample_aligned_outputs(t_out: np.ndarray, sample_time_s: float) -> np.ndarra
     return snapped
 
 
+# A discrete controller stops CVODE at every sample and restarts it (CVodeReInit: order 1, a
+# fresh step size, a new Jacobian): the run costs about this much per sample whatever the
+# rotor does. Measured on the paper rig (issue 21; docs/control.md §1, "Budget of a run") on
+# the shared 2-core development machine at load ≈ 5: 0.43 ms per sample at T = 1e-4 s and
+# 1e-5 s, 0.67-0.68 ms at 1e-6 s and 1e-7 s (two CVODE steps per sample).
+DISCRETE_SAMPLE_COST_S = 5e-4
+MAX_COST_S = 600.0  # default budget of an estimated run cost (10 min); math.inf: no limit
+
+
+def _duration(s: float) -> str:
+    return f"{s / 3600:.3g} h" if s >= 3600 else (f"{s / 60:.3g} min" if s >= 60 else f"{s:.3g} s")
+
+
+def controller_budget(controller: Controller, t_end_s: float, max_cost_s: float) -> None:
+    """Refuse, before anything is allocated or solved, a controller whose sensor-noise table
+    (samples × signals × 8 B, built in C++ before the first step) exceeds the shared memory
+    limit, or a discrete one whose estimated cost (samples × ``DISCRETE_SAMPLE_COST_S``)
+    exceeds ``max_cost_s``; each error names the field and gives the estimate."""
+    T = controller.sample_time_s
+    noise = np.asarray(controller.noise_std, dtype=float)
+    if np.any(noise > 0):
+        dt, name = (T, "sample_time_s") if controller.discrete else \
+            (controller.noise_dt_s, "noise_dt_s")
+        rows = math.ceil(t_end_s / dt) + 2
+        ny = controller.n_inputs
+        v.memory(f"controller.{name} (the sensor-noise table, {rows:.3g} samples of "
+                 f"t_end_s / {name} = {t_end_s:g} s / {dt:g} s × {ny} signals × 8 B)",
+                 8.0 * rows * ny)
+    if controller.discrete:
+        n = t_end_s / T
+        est = n * DISCRETE_SAMPLE_COST_S
+        if est > max_cost_s:
+            raise InputError(
+                f"controller.sample_time_s: t_end_s / sample_time_s = {t_end_s:g} s / {T:g} s "
+                f"= {n:.3g} samples, each a CVODE restart (about "
+                f"{DISCRETE_SAMPLE_COST_S * 1e3:.2g} ms): an estimated {_duration(est)}, above "
+                f"max_cost_s = {max_cost_s:g} s; use a longer sample time or a shorter run, or "
+                "pass max_cost_s=math.inf to run it anyway")
+
+
 @limited_blas
 def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None, *,
@@ -54,7 +96,8 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               max_steps: int = 500000, speed=None, pressure=None, actuator=None,
               controller=None, measurements=None, measurement_offset=None,
               atol_pa: float = 1.0,
-              max_step_s: float = 0.0, rub_fraction: float = 1e-3) -> TransientResult:
+              max_step_s: float = 0.0, rub_fraction: float = 1e-3,
+              max_cost_s: float = MAX_COST_S) -> TransientResult:
     """Integrate eq. 12 from t = 0 to ``t_end_s``.
 
     The start is the static equilibrium (eq. 14) with the journal of the active (or only)
@@ -80,6 +123,11 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     added to the command; the measurements are taken relative to ``measurement_offset``
     (default: their value at the starting equilibrium). ``atol_pa``: absolute tolerance of the actuator
     pressure state.
+
+    Budget (checked before anything is solved): a discrete controller restarts CVODE at each
+    sample; a run estimated above ``max_cost_s`` (default 600 s; ``math.inf``: no limit) is an
+    ``InputError`` naming ``controller.sample_time_s`` and ``t_end_s`` with the estimate. The
+    sensor-noise table is under the shared memory limit.
     """
     if speed is not None:
         if not isinstance(speed, SpeedProfile):
@@ -121,6 +169,10 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     v.integer("max_steps", max_steps, lo=1)
     if config_ay_m is not None:
         v.finite("config_ay_m", config_ay_m)
+    if not (isinstance(max_cost_s, (float, np.floating)) and max_cost_s == math.inf):
+        max_cost_s = v.positive("max_cost_s", max_cost_s)
+    if controller is not None:
+        controller_budget(controller, float(t_end_s), float(max_cost_s))
     asm = assembled(system)
     n = asm.n
     # Output arrays t, r, v, h_min in C++ and their numpy copies: refuse before allocating

@@ -75,6 +75,9 @@ def default_weights(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 
     command."""
     scale("state_weight", state_weight)
     scale("regularisation", regularisation)
+    # before c² and 1/p_s² (issue 21, fuzzing: clearance_m = 1e300 was an OverflowError)
+    scale("clearance_m", clearance_m)
+    scale("pressure_scale_pa", pressure_scale_pa)
     Q = state_weight * (p.C_perf.T @ p.C_perf) / clearance_m**2
     s = state_scales(p, clearance_m=clearance_m, pressure_scale_pa=pressure_scale_pa)
     Q = Q + regularisation * np.diag(1.0 / s**2)
@@ -104,7 +107,16 @@ def lqr(p, Q=None, R=None, **kw):
     K = np.linalg.solve(R, Bs.T @ Xs) / S[None, :]
     if not np.all(np.isfinite(K)):
         raise ConvergenceError("lqr: the gain is not finite for these weights")
-    return K, np.linalg.eigvals(p.A - p.B @ K)
+    eig = np.linalg.eigvals(p.A - p.B @ K)
+    # The Riccati solution is stabilising by definition: a closed loop that is not stable is
+    # a solution float64 did not resolve (issue 21, fuzzing: R = 1e-300 gave max Re λ = 8e268
+    # and was returned as a design).
+    if not (np.all(np.isfinite(eig)) and np.all(eig.real < 0)):
+        raise ConvergenceError(f"lqr: the closed loop A − B K is not stable (max Re λ = "
+                               f"{np.max(eig.real):.3g} 1/s): the weights (R = "
+                               f"{float(R[0, 0]):.3g}) are beyond what the Riccati solution "
+                               f"resolves in float64")
+    return K, eig
 
 
 def lqg(p, Q=None, R=None, *, process_noise: float = 1.0, measurement_noise_m: float = 1e-7,

@@ -48,6 +48,11 @@ def modal_truncation(p, max_frequency_hz: float = 500.0, *, keep_actuator: bool 
         wa = (2 * np.pi * p.actuator.natural_frequency_hz if p.actuator.order == 2
               else 1.0 / p.actuator.time_constant_s)
         keep |= np.isclose(np.abs(lam), wa, rtol=0.2)
+    if not keep.any():  # issue 21 (fuzzing): an empty basis was a numpy ValueError
+        raise InputError(f"max_frequency_hz: no mode of the plant at or below "
+                         f"{max_frequency_hz:g} Hz (the slowest is at "
+                         f"{np.abs(lam.imag).min() / (2 * np.pi):.4g} Hz, |λ| = "
+                         f"{np.abs(lam).min():.4g} 1/s); raise it, or keep_actuator=True")
     # Real basis for the kept invariant subspace.
     cols, seen = [], set()
     for i in np.where(keep)[0]:

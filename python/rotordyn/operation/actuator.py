@@ -28,6 +28,11 @@ DEFAULT_P_MIN_PA = 0.0
 DEFAULT_P_MAX_PA = 1.0e6
 
 
+def _show(val) -> str:
+    text = repr(val)
+    return text if len(text) <= 40 else text[:20] + "…" + text[-8:]
+
+
 @dataclass(frozen=True)
 class Actuator:
     """Servo valve + chamber from the pressure command to p_c (module docstring for the
@@ -55,18 +60,25 @@ class Actuator:
         v.in_range("actuator.natural_frequency_hz", self.natural_frequency_hz, 0.0, 1e6,
                    lo_open=True)
         v.in_range("actuator.damping", self.damping, 0.0, 100.0, lo_open=True)
-        for name in ("p_min_pa", "p_max_pa"):
+        for name in ("p_min_pa", "p_max_pa", "rate_limit_pa_s"):
+            # as float64 (issue 21, fuzzing: an integer beyond float64, 10**400, was accepted
+            # and became an OverflowError in the transient)
             val = getattr(self, name)
-            if isinstance(val, (bool, np.bool_)) or not isinstance(
-                    val, (int, float, np.floating, np.integer)) or math.isnan(val):
-                raise InputError(f"actuator.{name}: expected a number (Pa; ±inf: no limit), "
-                                 f"got {val!r}")
+            try:
+                ok = not isinstance(val, (bool, np.bool_)) and isinstance(
+                    val, (int, float, np.floating, np.integer)) and not math.isnan(float(val))
+            except OverflowError:
+                ok = False
+            if not ok:
+                unit = "Pa/s; inf: none" if name == "rate_limit_pa_s" else "Pa; ±inf: no limit"
+                raise InputError(f"actuator.{name}: expected a float64 number ({unit}), "
+                                 f"got {_show(val)}")
+            object.__setattr__(self, name, float(val))
         if not self.p_min_pa < self.p_max_pa:
             raise InputError(f"actuator.p_min_pa/p_max_pa: expected p_min_pa < p_max_pa, got "
                              f"{self.p_min_pa!r} and {self.p_max_pa!r}")
         r = self.rate_limit_pa_s
-        if isinstance(r, (bool, np.bool_)) or not isinstance(
-                r, (int, float, np.floating, np.integer)) or not r > 0:
+        if not r > 0:
             raise InputError(f"actuator.rate_limit_pa_s: expected > 0 Pa/s (inf: none), got {r!r}")
         if self.order == 0 and math.isfinite(r):
             raise InputError("actuator.rate_limit_pa_s: a rate limit needs actuator dynamics "
