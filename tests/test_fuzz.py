@@ -275,6 +275,24 @@ def _base_toml():
     return resources.files("rotordyn.model.data").joinpath("paper_rig.toml").read_text()
 
 
+def edit_line(draw, line: str, key: str, val: str, op: str, lo: float = 0.1) -> str:
+    """One fuzzed edit of a ``key = val`` TOML line: ``scale`` (a number scaled by [lo, 10], an
+    integer shifted by ±3), ``value`` (a hostile value), ``delete``, ``unknown`` (a key added)."""
+    if op == "scale":  # a plausible edit: a number scaled, an integer shifted
+        try:
+            return f"{key} = {int(val) + draw(st.integers(-3, 3))}"
+        except ValueError:
+            try:
+                return f"{key} = {float(val) * draw(st.floats(lo, 10.0))!r}"
+            except ValueError:
+                return f"{key} = {draw(TOML_VALUES)}"
+    if op == "value":
+        return f"{key} = {draw(TOML_VALUES)}"
+    if op == "delete":
+        return ""
+    return line + f"\n{key}_x = 1"
+
+
 TOML_VALUES = st.sampled_from([
     "0", "-1", "1e-300", "1e300", "nan", "inf", "-inf", "2147483648", "9223372036854775807",
     "true", '"x"', '""', "[]", "[1]", '["a", 2]', "{}", "{a = 1}", "[[1, 2], [3]]",
@@ -291,23 +309,10 @@ def toml_payload(draw):
                                    "unknown", "bytes"]))
         i = draw(st.sampled_from(keyed))
         key, val = (x.strip() for x in lines[i].split("#")[0].split("=", 1))
-        if op == "scale":  # a plausible edit: a number scaled, an integer shifted
-            try:
-                num = int(val)
-                lines[i] = f"{key} = {num + draw(st.integers(-3, 3))}"
-            except ValueError:
-                try:
-                    lines[i] = f"{key} = {float(val) * draw(st.floats(0.1, 10.0))!r}"
-                except ValueError:
-                    lines[i] = f"{key} = {draw(TOML_VALUES)}"
-        elif op == "value":
-            lines[i] = f"{key} = {draw(TOML_VALUES)}"
-        elif op == "delete":
-            lines[i] = ""
-        elif op == "unknown":
-            lines[i] += f"\n{key}_x = 1"
-        else:
+        if op == "bytes":
             lines[i] = draw(st.sampled_from([f"{key} = ", "[[", "= 1", f"{key} = [1,"]))
+        else:
+            lines[i] = edit_line(draw, lines[i], key, val, op)
     return {"text": "\n".join(lines) + "\n", "modes": draw(st.booleans())}
 
 

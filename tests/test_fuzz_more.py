@@ -14,7 +14,7 @@ import math
 from hypothesis import given
 from hypothesis import strategies as st
 
-from test_fuzz import (SPECIAL, TOML_VALUES, _base_toml, budget, check, hostile, integer,  # noqa: F401
+from test_fuzz import (SPECIAL, TOML_VALUES, _base_toml, budget, check, edit_line, hostile, integer,  # noqa: F401
                        number, worker)
 
 # -- control-law synthesis (issue 21) ---------------------------------------------------------
@@ -244,20 +244,7 @@ def element_file_payload(draw):
         i = draw(st.sampled_from(keyed))
         key, val = (x.strip() for x in lines[i].split("\n")[0].split("=", 1))
         op = draw(st.sampled_from(["scale", "value", "delete", "unknown"]))
-        if op == "scale":
-            try:
-                lines[i] = f"{key} = {int(val) + draw(st.integers(-3, 3))}"
-            except ValueError:
-                try:
-                    lines[i] = f"{key} = {float(val) * draw(st.floats(0.0, 10.0))!r}"
-                except ValueError:
-                    lines[i] = f"{key} = {draw(TOML_VALUES)}"
-        elif op == "value":
-            lines[i] = f"{key} = {draw(TOML_VALUES)}"
-        elif op == "delete":
-            lines[i] = ""
-        else:
-            lines[i] += f"\n{key}_x = 1"
+        lines[i] = edit_line(draw, lines[i], key, val, op, lo=0.0)
     text = _base_toml() + "\n[[bearing]]\n" + "\n".join(lines) + "\n"
     return {"path": "toml", "text": text, "solve": draw(st.integers(0, 3)) == 0,
             "speed_hz": draw(st.floats(5.0, 100.0))}
