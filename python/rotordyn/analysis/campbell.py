@@ -26,7 +26,9 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     """Eigenvalues of eq. 19 at each speed in ``speeds_hz`` (strictly increasing, Hz): the
     equilibrium is solved at each speed, warm-started from the previous one, then K_H(Ω),
     D_H(Ω) and the eigenvalues. A speed whose equilibrium fails is a NaN row with its status
-    in ``point_status``; the diagram goes on. ``n_modes`` default: every mode of the system."""
+    in ``point_status``; the diagram goes on. ``n_modes`` default: every mode of the system; it
+    counts rotor (and sleeve) modes, never a tilting pad's own (those below the cut are kept
+    besides, kind "pad")."""
     sp = v.speeds("speeds_hz", speeds_hz)
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
     if config_ay_m is not None:  # a NaN here made every point "error" (issue 13)
@@ -34,22 +36,26 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     v.choice("method", method, ("perturbation", "finite_difference"))
     asm = assembled(system)
     k = asm.n if n_modes is None else min(v.integer("n_modes", n_modes, lo=1), asm.n)
-    lam = np.full((sp.size, k), np.nan + 1j * np.nan)
-    whirl = np.zeros((sp.size, k), dtype=np.int64)
-    kind = np.full((sp.size, k), "rotor", dtype=object)
+    # ``n_modes`` counts the system's modes; tilting pads' own modes below the cut are listed
+    # besides them (issue 18), so the width has room for them.
+    n_pad = sum(len(getattr(bc, "extra", ())) for bc in asm.bearings)
+    width = k if n_modes is None else min(k + n_pad, asm.n)
+    lam = np.full((sp.size, width), np.nan + 1j * np.nan)
+    whirl = np.zeros((sp.size, width), dtype=np.int64)
+    kind = np.full((sp.size, width), "rotor", dtype=object)
     status = np.empty(sp.size, dtype=object)
-    shapes = np.full((sp.size, asm.n, k), np.nan + 0j)
+    shapes = np.full((sp.size, asm.n, width), np.nan + 0j)
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
                                               method):
         status[i] = stt
         if lm is None or stt not in CONVERGED:  # a failed point stays a NaN row
             continue
         try:
-            st = _stability_from(asm, lm, k)
+            st = _stability_from(asm, lm, None if n_modes is None else k)
         except RotordynError:
             status[i] = "error"
             continue
-        m = min(k, len(st.eigenvalues))
+        m = min(width, len(st.eigenvalues))
         lam[i, :m] = st.eigenvalues[:m]
         whirl[i, :m] = [WHIRL_CODE[w] for w in st.whirl[:m]]
         kind[i, :m] = st.kind[:m]

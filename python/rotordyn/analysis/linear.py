@@ -91,6 +91,17 @@ def linearize(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float
     return _linear_from(assembled(system), e, speed_hz, method, rel_step)
 
 
+def mode_window(kind, n_modes: int) -> np.ndarray:
+    """Indices of the modes kept by a cut to ``n_modes`` (modes in ascending damped frequency,
+    ``kind`` (k,) "rotor"/"sleeve"/"pad"): the lowest ``n_modes`` modes that are not a tilting
+    pad's own, plus the pad modes below the highest of them (they are listed, never counted)."""
+    kind = np.asarray(kind)
+    own = np.flatnonzero(kind != "pad")[:n_modes]
+    top = own[-1] if own.size else -1
+    return np.flatnonzero((kind != "pad") & (np.arange(kind.size) <= top)
+                          | (kind == "pad") & (np.arange(kind.size) < top))
+
+
 def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> StabilityResult:
     n = asm.n
     xy = asm.rotor.xy_pairs()
@@ -99,9 +110,15 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
         return StabilityResult(lm, empty, np.zeros(0, dtype=object), np.zeros(0, dtype=object),
                                np.zeros((0, 4, 0), dtype=complex), status=lm.status,
                                message=lm.equilibrium.message or "no equilibrium")
-    r = _core.modal(lm.M, lm.D, lm.K, xy, int(n_modes or n), True, asm.rotor.rot_pairs())
+    pads = [i for bc in asm.bearings for i in getattr(bc, "extra", ())]
+    # With tilting pads the cut to the lowest ``n_modes`` is taken over the system's modes, not
+    # the pads' own (issue 18: pad modes took slots and rotor branches vanished from a
+    # Campbell): every mode is computed, classified, then cut below.
+    ask = n if (pads or n_modes is None) else int(n_modes)
+    r = _core.modal(lm.M, lm.D, lm.K, xy, ask, True, asm.rotor.rot_pairs())
     lam = np.asarray(r.eigenvalues)
     phi = np.asarray(r.modes)  # (n, k)
+    whirl_code = np.asarray(r.whirl)
     if not (np.all(np.isfinite(lam)) and np.all(np.isfinite(phi))):
         raise ConvergenceError(f"stability: non-finite eigenvalues at {lm.speed_hz:g} Hz")
     # Which part carries the mode: kinetic-energy share of the sleeve coordinates.
@@ -113,16 +130,19 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
     else:
         kin_s = np.zeros(len(lam))
     kind = np.where(kin_s > 0.5 * kin_total, "sleeve", "rotor").astype(object)
-    pads = [i for bc in asm.bearings for i in getattr(bc, "extra", ())]
     if pads:  # tilting-pad coordinates: modes carried by the pads
         Mp = lm.M[np.ix_(pads, pads)]
         kin_p = np.real(np.einsum("ik,ij,jk->k", phi[pads].conj(), Mp, phi[pads]))
         kind[kin_p > 0.5 * kin_total] = "pad"
+        if n_modes is not None:
+            sel = mode_window(kind, n_modes)
+            lam, phi, whirl_code, kind = lam[sel], phi[:, sel], whirl_code[sel], kind[sel]
     rotor = asm.rotor.expand(phi[:asm.n_rotor])
     n_nodes = rotor.shape[0] // 4
     sleeves = {bc.index: asm.sleeves[bc.index].transformation @ phi[list(bc.sleeve)]
                for bc in asm.bearings if bc.sleeve}
-    return StabilityResult(lm, lam, np.array([WHIRL_NAMES[int(x)] for x in r.whirl], dtype=object),
+    return StabilityResult(lm, lam, np.array([WHIRL_NAMES[int(x)] for x in whirl_code],
+                                             dtype=object),
                            kind, rotor.reshape(n_nodes, 4, -1), sleeves, status=lm.status,
                            message=lm.equilibrium.message, modes=phi)
 
@@ -133,7 +153,9 @@ def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float
               method: str = "perturbation", **equilibrium_kw) -> StabilityResult:
     """Eigenvalues of eq. 19 at the equilibrium: damped natural frequencies, damping ratios,
     logarithmic decrements, whirl, mode shapes (full rotor and full sleeve); ``.stable`` when
-    every real part is negative. ``n_modes``: lowest damped frequencies kept (default all)."""
+    every real part is negative. ``n_modes``: lowest damped frequencies kept (default all),
+    counted over the rotor's (and sleeves') modes: a tilting pad's own modes (kind "pad") below
+    the cut are kept besides them, never counted (:func:`mode_window`)."""
     if n_modes is not None:
         n_modes = min(v.integer("n_modes", n_modes, lo=1), assembled(system).n)
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, method=method,

@@ -123,7 +123,7 @@ class CampbellResult(Display):
             "message": [self.message] * (ns * nm),
         })
         if self.kind is not None:
-            df.insert(4, "kind", pd.Categorical(self.kind.ravel(), categories=["rotor", "sleeve"]))
+            df.insert(4, "kind", pd.Categorical(self.kind.ravel(), categories=["rotor", "sleeve", "pad"]))
         return df
 
     def plot(self, ax=None, harmonics=(0.5, 1.0, 2.0), color_by: str = "log_dec",

@@ -70,7 +70,7 @@ class StabilityResult(Display):
     """Eigenvalues of the linearised system at one operating point.
 
     eigenvalues: (n_modes,) complex 1/s, ascending damped frequency; whirl: (n_modes,) str;
-    kind: (n_modes,) "rotor" or "sleeve" (where the mode's kinetic energy lies);
+    kind: (n_modes,) "rotor", "sleeve" or "pad" (where the mode's kinetic energy lies);
     rotor_shapes: (n_nodes, 4, n_modes) complex, expanded to every rotor FE node;
     sleeve_shapes: {bearing index: (n_sleeve_dof, n_modes)} expanded to the full sleeve FEM;
     modes: (n, n_modes) complex shapes on the system coordinates (for mode tracking), or None.
@@ -156,7 +156,7 @@ class StabilityResult(Display):
             "damping_ratio": self.damping_ratio,
             "log_dec": self.log_dec,
             "whirl": pd.Categorical(self.whirl, categories=["forward", "backward", "planar"]),
-            "kind": pd.Categorical(self.kind, categories=["rotor", "sleeve"]),
+            "kind": pd.Categorical(self.kind, categories=["rotor", "sleeve", "pad"]),
             "mode_stable": mode_stable(self.eigenvalues) if n else np.zeros(0, dtype=bool),
             "point_stable": np.full(n, self.stable),
             "status": pd.Categorical([self.status] * n, categories=list(STATUSES)),
