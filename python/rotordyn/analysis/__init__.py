@@ -2,6 +2,7 @@
 
 from rotordyn.analysis.campbell import campbell
 from rotordyn.analysis.equilibrium import equilibrium
+from rotordyn.analysis.level1 import level1
 from rotordyn.analysis.linear import linearize, stability
 from rotordyn.analysis.statespace import statespace
 from rotordyn.analysis.static import static
@@ -10,4 +11,4 @@ from rotordyn.analysis.unbalance import unbalance_response
 from rotordyn.analysis.threshold import stability_boundary, threshold
 from rotordyn.analysis.modes import RotorMatrices, modes, rotor_campbell
 
-__all__ = ["static", "campbell", "modes", "rotor_campbell", "equilibrium", "linearize", "stability", "threshold", "stability_boundary", "unbalance_response", "statespace", "transient", "RotorMatrices"]
+__all__ = ["level1", "static", "campbell", "modes", "rotor_campbell", "equilibrium", "linearize", "stability", "threshold", "stability_boundary", "unbalance_response", "statespace", "transient", "RotorMatrices"]

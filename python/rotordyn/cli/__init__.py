@@ -1,5 +1,5 @@
 """Command-line interface: ``rotordyn <command> ...``, one module per command family
-(:mod:`.analyses` single operating points, :mod:`.bearing` one bearing, :mod:`.sleeve` the
+(:mod:`.analyses` single operating points, :mod:`.level1` API 617 Level I, :mod:`.bearing` one bearing, :mod:`.sleeve` the
 active bearing's sleeve, :mod:`.sweeps` sweeps and their figures, :mod:`.report` the report,
 :mod:`.control` control-law synthesis), registered here on one parser; shared helpers in
 :mod:`.common`.
@@ -17,12 +17,12 @@ import sys
 from rotordyn._common import plausibility
 from rotordyn._common.info import DESCRIPTION
 from rotordyn.bearings import ActiveJournalBearing
-from rotordyn.cli import analyses, bearing, control, report, sweeps
+from rotordyn.cli import analyses, bearing, control, level1, report, sweeps
 from rotordyn.cli.common import ArgumentParser
 from rotordyn.errors import InputError, OutputError, RotordynError, RotordynWarning
 from rotordyn.model import builtin as models
 
-COMMANDS = (analyses, sweeps, report, bearing, control)
+COMMANDS = (analyses, level1, sweeps, report, bearing, control)
 """The command families, in the order of ``rotordyn --help``."""
 
 

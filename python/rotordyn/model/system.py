@@ -17,6 +17,7 @@ from rotordyn._common import validate as v
 from rotordyn.bearings import BEARING_TYPES
 from rotordyn.model.rotor import (REDUCTION_METHODS, STEEL, Material,  # noqa: F401
                                  Reduction, Rotor, Support)
+from rotordyn.model.stage import Stage
 from rotordyn.model.toml_io import system_fields_from_toml, system_to_toml
 
 @dataclass(frozen=True, slots=True)
@@ -31,9 +32,11 @@ class System:
     gravity_m_s2: float = 9.81
     name: str = ""
     description: str = ""
+    stages: tuple[Stage, ...] = ()  # aerodynamic stages for API 617 Level I (``[[stage]]``)
 
     def __post_init__(self):
         object.__setattr__(self, "materials", tuple(self.materials))
+        object.__setattr__(self, "stages", tuple(self.stages))
         object.__setattr__(self, "supports", tuple(self.supports))
         object.__setattr__(self, "bearings", tuple(self.bearings))
         v.non_negative("gravity_m_s2", self.gravity_m_s2)
@@ -79,6 +82,10 @@ class System:
                 raise InputError(
                     f"reduction.master_stations[{i}]: station {st} has a rigid support; "
                     "its translations are fixed and cannot be masters")
+        for i, st in enumerate(self.stages):
+            if not isinstance(st, Stage):
+                raise InputError(f"stage[{i}]: expected a Stage, got {type(st).__name__}")
+            st.check(f"stage[{i}]", n)
         seen = set()
         for i, b in enumerate(self.bearings):
             where = f"bearing[{i}]"

@@ -16,6 +16,7 @@ from pathlib import Path
 from rotordyn.bearings import BEARING_TYPES, FlexibleSleeve, Groove
 from rotordyn.errors import InputError
 from rotordyn.model.rotor import STEEL, Disk, Material, Reduction, Rotor, ShaftSection, Support
+from rotordyn.model.stage import Stage
 
 SCHEMA = "rotordyn/model/1"
 
@@ -80,7 +81,7 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
         doc = parse_toml(read_text(path_or_text), str(path_or_text))
 
     top = {"schema", "name", "description", "material", "rotor", "disk", "support", "reduction",
-           "bearing", "gravity_m_s2"}
+           "bearing", "gravity_m_s2", "stage"}
     _check_keys("model", doc, top)
     if doc.get("schema") != SCHEMA:
         raise InputError(f"schema: expected {SCHEMA!r}, got {doc.get('schema')!r}")
@@ -115,7 +116,14 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
     bearings = [_bearing_from_table(f"bearing[{i}]", t)
                 for i, t in enumerate(_array_of_tables("bearing", doc.get("bearing", [])))]
 
+    stages = []
+    for i, t in enumerate(_array_of_tables("stage", doc.get("stage", []))):
+        _check_keys(f"stage[{i}]", t, _fields(Stage))
+        stages.append(_build(Stage, f"stage[{i}]", t))
+
     kwargs = {}
+    if stages:
+        kwargs["stages"] = tuple(stages)
     if "gravity_m_s2" in doc:
         kwargs["gravity_m_s2"] = doc["gravity_m_s2"]
     if mats:
@@ -232,6 +240,8 @@ def system_to_toml(system) -> str:
             lines.append(f"grooves = [{gs}]")
         if getattr(b, "sleeve", None) is not None:
             lines += ["", "[bearing.sleeve]"] + _table_lines(b.sleeve, defaults_too=True)
+    for st in getattr(system, "stages", ()):
+        lines += ["", "[[stage]]"] + _table_lines(st)
     if system.gravity_m_s2 != 9.81:
         lines.insert(1, f"gravity_m_s2 = {_val(system.gravity_m_s2)}")
     return "\n".join(lines) + "\n"

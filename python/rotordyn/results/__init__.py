@@ -2,6 +2,7 @@
 
 from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.equilibrium import EquilibriumResult
+from rotordyn.results.level1 import Level1Result
 from rotordyn.results.modes import ModesResult
 from rotordyn.results.stability import LinearModel, StabilityResult
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
@@ -10,5 +11,5 @@ from rotordyn.results.static import StaticResult
 from rotordyn.results.transient import TransientResult
 from rotordyn.results.unbalance import UnbalanceResult
 
-__all__ = ["ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel", "StabilityResult",
+__all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel", "StabilityResult",
            "ThresholdResult", "BoundaryResult", "UnbalanceResult", "StateSpaceResult", "TransientResult", "StaticResult"]
