@@ -181,3 +181,29 @@ def test_stage_data_in_the_model_file_round_trip(tmp_path, capsys):
     assert main(["level1", str(MODELS / "compressor_linear.toml"), "--speed-hz", "150"]) == 0
     assert "not evaluated (no stage data)" in capsys.readouterr().err
     assert main(["level1", str(path), "--speed-hz", "150", "--at", "nowhere"]) == 2
+
+
+def test_report_level1_section_echoes_the_inputs(tmp_path):
+    """The text and HTML reports of the compressor on linear supports with three stages: the
+    Level I section with the stage table (inputs echoed), Q_0, Q_A and PASS/FAIL on the two
+    criteria that apply (Q_0/Q_A ≈ 21 ≥ 10: the screening figure does not apply)."""
+    import html
+    import re
+
+    s = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    text = s.to_toml() + "".join(
+        f"\n[[stage]]\nstation = {k}\npower_w = 1.5e6\ndiameter_m = 0.4\nheight_m = 0.02\n"
+        "density_ratio = 1.3\n" for k in (2, 3, 4))
+    path = tmp_path / "c.toml"
+    path.write_text(text)
+    page = tmp_path / "r.html"
+    assert main(["report", str(path), "--out", str(tmp_path), "--html", str(page),
+                 "--operating-speed-hz", "140", "170"]) == 0
+    doc = html.unescape(re.sub("<.*?>", " ", page.read_text(encoding="utf-8")))
+    assert "5b. API 617 Level I" in doc and "q_A (MN/m)" in doc and "not evaluated" not in doc
+    assert re.search(r"API 617 Level I: Q_0/Q_A\s+Q_0/Q_A ≥ 2\s+Q_0 = [0-9.e+]+ N/m.*?PASS", doc)
+    assert re.search(r"API 617 Level I: δ_A\s+δ at Q_A ≥ 0.1\s+δ_A = [0-9.]+.*?PASS", doc)
+    assert "API 617 Level I: screening" not in doc  # Q_0/Q_A ≥ 10: the figure does not apply
+    txt = (tmp_path / "report.txt").read_text()
+    assert "API 617 Level I stability analysis" in txt and "verdict: PASS" in txt
+    assert (tmp_path / "level1.csv").exists()

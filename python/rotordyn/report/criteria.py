@@ -134,7 +134,8 @@ class Checks:
         self.rows.append((name, criterion, value, verdict))
 
     def overall(self) -> str:
-        """FAIL if any check fails, else NOT RESOLVED if any is, else PASS."""
+        """FAIL if any check fails, else NOT RESOLVED if any is, else PASS (a check that was not
+        evaluated, e.g. "not evaluated (no stage data)", neither passes nor fails)."""
         vs = [r[3] for r in self.rows]
         if any(x is False for x in vs):
             return "FAIL"
@@ -198,8 +199,8 @@ def amplitude_checks(checks: Checks, u, station: int, n_mc_hz: float, clearance_
 
 def stability_screen(checks: Checks, c, window_hz: float, op_range) -> np.ndarray:
     """Forward rotor modes below ``window_hz``: their log decrement (round-off of undamped
-    modes set to 0). Checks: δ > 0.1 in the operating range (a screening; API 617 Level I also
-    applies the anticipated cross-coupling Q_A, not computed here) and no growing forward mode
+    modes set to 0). Checks: δ > 0.1 in the operating range (a screening without cross-coupling;
+    API 617 Level I with Q_A is :mod:`rotordyn.report.level1`) and no growing forward mode
     over the whole range. Returns the screened δ (n_speeds, n_modes), NaN elsewhere."""
     ld = np.where(c.rotor_mask() & (c.whirl == 1) & (c.frequencies_hz < window_hz)
                   & (c.frequencies_hz > 0), c.log_dec, np.nan)
@@ -210,8 +211,8 @@ def stability_screen(checks: Checks, c, window_hz: float, op_range) -> np.ndarra
         if np.isfinite(sub).any():
             m = float(np.nanmin(sub))
             checks.add("stability screening in the operating range", f"forward rotor modes "
-                       f"below {window_hz:.4g} Hz: δ > {SCREEN_LOG_DEC} (API 617 Level I also "
-                       "applies the anticipated cross-coupling Q_A: not computed here)",
+                       f"below {window_hz:.4g} Hz: δ > {SCREEN_LOG_DEC} without cross-coupling "
+                       "(API 617 Level I with Q_A: its own checks)",
                        f"minimum δ = {m:.3g}", bool(m > SCREEN_LOG_DEC))
         else:
             checks.add("stability screening in the operating range", "forward rotor modes "

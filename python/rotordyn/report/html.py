@@ -8,8 +8,8 @@ SVG, no external resources) in the spirit of an API 684 lateral analysis:
 4. unbalance response (API 684 unbalance U = 6350 W/N g·mm) with amplification factors,
    separation margins and the API 617 amplitude limit;
 5. stability: the logarithmic decrement of the forward rotor modes in the frequency window,
-   screened against δ > 0.1 (API 617 Level I also applies the anticipated cross-coupling Q_A,
-   which the report does not compute yet);
+   screened against δ > 0.1; 5b. API 617 Level I with the anticipated cross-coupling Q_A of
+   the model's stages (:mod:`rotordyn.report.level1`; "not evaluated (no stage data)" without);
 6. for an active journal bearing, the stability map over (a_y, p_c);
 7. the text report (the paper's checks with their stated tolerances).
 
@@ -31,6 +31,7 @@ from rotordyn import analysis
 from rotordyn._common.info import __version__
 from rotordyn.model import builtin as models
 from rotordyn.bearings import ActiveJournalBearing
+from rotordyn.report import level1 as level1_report
 from rotordyn.report.criteria import (NOT_RESOLVED, SCREEN_LOG_DEC, Checks, amplitude_checks,
                                       api_unbalance, critical_speed_map, separation_checks,
                                       speed_range, stability_screen)
@@ -61,6 +62,8 @@ def _verdict(ok) -> str:
         return '<span class="na">n/a</span>'
     if ok == NOT_RESOLVED:
         return '<span class="nr">not resolved</span>'
+    if isinstance(ok, str):  # e.g. "not evaluated (no stage data)": no criterion was applied
+        return f'<span class="na">{html.escape(ok)}</span>'
     return '<span class="pass">PASS</span>' if ok else '<span class="fail">FAIL</span>'
 
 
@@ -334,6 +337,11 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                  + f"<figcaption>Forward rotor modes below {window_hz:.4g} Hz (backward modes "
                  "and the undamped shaft modes far above the speed range are left out; |δ| < "
                  "1e-6 is round-off).</figcaption></figure>")
+
+    # 5b. API 617 Level I with the stages' anticipated cross-coupling
+    _progress(progress, "API 617 Level I")
+    l1, why = level1_report.evaluate(s, operating_speed_hz, pc, ay)
+    parts.append(level1_report.html_section(l1, why, checks, svg, _table))
 
     # 6. active bearing: stability map in p_c
     if active:

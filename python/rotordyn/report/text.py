@@ -96,6 +96,17 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
     ax.figure.savefig(outdir / "rotor_mode_shapes.png", dpi=120, bbox_inches="tight")
 
     active = [b for b in s.bearings if isinstance(b, ActiveJournalBearing)]
+    # API 617 Level I (with the model's stages, at the top of the operating range)
+    from rotordyn.report import level1 as level1_report
+
+    l1, why = level1_report.evaluate(s, operating_speed_hz, 0.4e6 if active else 0.0,
+                                     0.0 if active else None)
+    say()
+    for line in level1_report.text_lines(l1, why):
+        say(line)
+    if l1 is not None:
+        l1.to_frame().to_csv(outdir / "level1.csv", index=False)
+
     if active:
         # 2. sleeve
         sr = active[0].sleeve.condense()

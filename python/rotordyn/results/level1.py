@@ -23,6 +23,8 @@ LEVEL1_LOG_DEC = 0.1    # API 617: δ_A ≥ 0.1
 LEVEL1_CSR_RATIO = 10.0  # API 617: for 2 ≤ Q_0/Q_A < 10 the screening figure decides
 NOT_RESOLVED = "not resolved"
 NO_STAGE_DATA = "not evaluated (no stage data)"
+MODE_TEXT = {"first_forward": "first forward rotor mode", "least_damped":
+             "least damped forward rotor mode"}
 
 
 @dataclass(frozen=True)
@@ -138,7 +140,7 @@ class Level1Result(Display):
         qa = (f"Q_A = {self.q_a_n_per_m:.4g} N/m, Q_0/Q_A = {self.ratio:.3g}, δ_A = "
               f"{self.log_dec_a:.3g}" if self.has_stage_data else "no stage data")
         return (f"<Level1Result {self.verdict()} at {self.speed_hz:g} Hz: {q0}, {qa}; δ(Q=0) = "
-                f"{self.log_dec_0:.3g} ({self.mode} forward rotor mode, {self.freq_0_hz:.4g} Hz)>")
+                f"{self.log_dec_0:.3g} ({MODE_TEXT[self.mode]}, {self.freq_0_hz:.4g} Hz)>")
 
     def to_frame(self) -> pd.DataFrame:
         """One row per applied Q: ``applied_q_n_per_m``, ``log_dec``, ``freq_hz``, and flags
