@@ -97,6 +97,9 @@ def check_written(s: rd.System, doc: dict) -> None:
         same(s.supports[i], t, f"support[{i}]")
     if "reduction" in doc:
         same(s.reduction, doc["reduction"], "reduction")
+    assert len(s.stages) == len(doc.get("stage", []))
+    for i, t in enumerate(doc.get("stage", [])):
+        same(s.stages[i], t, f"stage[{i}]")
     assert len(s.bearings) == len(doc.get("bearing", []))
     for i, t in enumerate(doc.get("bearing", [])):
         b = s.bearings[i]
@@ -143,10 +146,12 @@ def test_every_reduction_method_and_support_type_has_an_example():
     assert types == {"rigid", "linear"}
     disks = [t for d in docs for t in d.get("disk", [])]
     assert any("mass_kg" in t for t in disks) and any("mass_kg" not in t for t in disks)
+    stages = {t.get("type", "centrifugal") for d in docs for t in d.get("stage", [])}
+    assert stages == {"centrifugal", "axial"}
 
 
 def test_every_field_is_named_on_the_page():
-    classes = [rd.Material, rd.ShaftSection, rd.Disk, rd.Support, rd.Reduction, Groove,
+    classes = [rd.Material, rd.ShaftSection, rd.Disk, rd.Support, rd.Stage, rd.Reduction, Groove,
                FlexibleSleeve, *BEARING_TYPES.values()]
     # Material.name is the table's key ([material.<name>]), not a key of its own
     missing = [f"{c.__name__}.{f.name}" for c in classes for f in dataclasses.fields(c)
