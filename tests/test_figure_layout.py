@@ -33,7 +33,7 @@ def systems():
 NAMES = ["campbell rig", "campbell tilting pad", "bode rig", "polar rig", "bode compressor",
          "polar compressor", "mode shape rig", "mode shapes compressor", "rotor drawing rig",
          "rotor drawing tp", "rotor drawing table", "static compressor", "equilibrium rig",
-         "stability map"]
+         "stability map", "level1 compressor"]
 
 
 @pytest.fixture(scope="module")
@@ -62,6 +62,9 @@ def figures(systems):
             [8e-5, 1e-4, 1.2e-4], [60.0, 100.0, 140.0],
             np.array([[-3.0, -1.0, 2.0], [-2.0, 1.0, 3.0], [-1.0, 2.0, 4.0]]),
             xname="bearings.*.clearance_m", yname="speed_hz"),
+        "level1 compressor": lambda: rd.level1(tp, 150.0, stages=[
+            rd.Stage(station=k, power_w=1.5e6, diameter_m=0.4, height_m=0.02,
+                     density_ratio=1.3) for k in (2, 3, 4)]).plot(),
     }
 
 

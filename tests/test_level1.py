@@ -181,6 +181,15 @@ def test_stage_data_in_the_model_file_round_trip(tmp_path, capsys):
     assert main(["level1", str(MODELS / "compressor_linear.toml"), "--speed-hz", "150"]) == 0
     assert "not evaluated (no stage data)" in capsys.readouterr().err
     assert main(["level1", str(path), "--speed-hz", "150", "--at", "nowhere"]) == 2
+    assert main(["level1", str(path), "--speed-hz", "150", "--stage", "2,1e6,0.4"]) == 2
+    assert "--stage: expected" in capsys.readouterr().err
+    assert main(["level1", str(path), "--speed-hz", "150", "--stage", "2,1e6,0.4,0.02,1.3",
+                 "--stage", "4,1e6,0.4,0.02,1.3", "--at", "stages", "--json"]) == 0
+    import json
+
+    rec = json.loads(capsys.readouterr().out)
+    assert [p[0] for p in rec["placement"]] == ["station 2", "station 4"]
+    assert rec["q_a_n_per_m"] == pytest.approx(2 * 3 * 9.55 * 1e6 * 1.3 / (0.4 * 0.02 * 9000))
 
 
 def test_report_level1_section_echoes_the_inputs(tmp_path):

@@ -10,7 +10,7 @@ pass the boundary CSR read from it (``csr_limit``) to have that criterion judged
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
@@ -63,7 +63,6 @@ class Level1Result(Display):
     message: str = ""
     log_dec_0: float = float("nan")
     freq_0_hz: float = float("nan")
-    extra: dict = field(default_factory=dict)
 
     @property
     def has_stage_data(self) -> bool:
