@@ -35,7 +35,7 @@ from rotordyn.results.level1 import Level1Result
 
 MODES = ("first_forward", "least_damped")
 PLACEMENTS = ("auto", "midspan", "centroid", "stages")
-N_POINTS = 41       # points of the δ(Q) curve (the frame and the figure; Q_0 is not read off it)
+N_POINTS = 25       # points of the δ(Q) curve (the frame and the figure; Q_0 is not read off it)
 Q_MAX_FACTOR = 100.0  # search Q up to 100 × the largest rotor diagonal stiffness
 
 
