@@ -135,6 +135,8 @@ def test_overhung_stage_centroid_and_each_stage():
     over = [dict(station=0, power_w=1e6, diameter_m=0.4, height_m=0.02, density_ratio=1.2)]
     r = rd.level1(s, 150.0, stages=over)
     assert r.placement[0][0] == "station 0" and "centroid" in r.placement_why
+    both = rd.level1(s, 150.0, stages=over + [dict(over[0], station=6)])  # double overhung
+    assert [p[0] for p in both.placement] == ["station 0", "station 6"]
     each = rd.level1(s, 150.0, stages=_stages(), at="stages")
     assert [p[0] for p in each.placement] == ["station 2", "station 3", "station 4"]
     assert sum(p[2] for p in each.placement) == pytest.approx(1.0)

@@ -75,9 +75,12 @@ def _placement(system: System, stages, q_stage: np.ndarray, at) -> tuple[list, s
         return [(f"station {k}", int(st_nodes[k]), 1.0, float(pos[k]))], f"at station {k} (as given)"
     v.choice("at", at, PLACEMENTS)
     if at == "auto":
-        inside = (len(brg) >= 2 and any(pos[brg[0]] <= pos[s.station] <= pos[brg[-1]]
-                                        for s in stages))
-        at = "midspan" if (inside or not stages) else "centroid"
+        lo, hi = (pos[brg[0]], pos[brg[-1]]) if brg else (np.inf, -np.inf)
+        zs = [pos[s.station] for s in stages]
+        inside = len(brg) >= 2 and any(lo <= z <= hi for z in zs)
+        both = any(z < lo for z in zs) and any(z > hi for z in zs)
+        at = ("midspan" if (inside or not stages) else "stages" if both  # double overhung
+              else "centroid")
     if at == "midspan":
         if len(brg) < 2:
             raise InputError("at: 'midspan' needs two bearings or supports (the span); give a "
@@ -200,8 +203,9 @@ def level1(system: System, speed_hz: float, chamber_pressure_pa: float = 0.0,
     stages : the stage data (:class:`rotordyn.model.stage.Stage` or dicts of its fields);
         default the model's ``[[stage]]`` tables. Without any, Q_0 and the curve are computed
         and the criteria are "not evaluated (no stage data)".
-    at : where Q acts: ``"auto"`` (mid-span between the outermost bearings/supports, or the
-        stages' centroid when every stage overhangs), ``"midspan"``, ``"centroid"``,
+    at : where Q acts: ``"auto"`` (mid-span between the outermost bearings/supports; the
+        stages' centroid when every stage overhangs on one side; each stage when they overhang
+        on both sides), ``"midspan"``, ``"centroid"``,
         ``"stages"`` (shared in proportion to q_A) or a station number.
     mode : the judged mode: ``"first_forward"`` (default, the standard's wording): the
         lowest-frequency rotor mode at Q = 0 whose orbits turn forward (however elliptic) and
