@@ -8,8 +8,8 @@ the ends, at 500 rad/s; ROSS's rotor is imported with ``system_from_ross``. ROSS
 ``at="auto"`` puts it) for each Q of ``linspace(*stiffness_range, num)`` and returns the log
 decrement of the first mode that is not backward. rotordyn follows the first forward mode by
 its shape; on this rotor both are the 18.5 Hz cylindrical mode. The log decrements agree to
-rounding (5e-12 seen; ROSS's elements also carry axial and torsional DOFs, uncoupled here), and ROSS's log
-decrement at rotordyn's Q_0 (found by root finding; ROSS has none) is zero.
+rounding (5e-12 seen; ROSS's elements also carry axial and torsional DOFs, uncoupled here),
+and ROSS's log decrement at rotordyn's Q_0 (found by root finding; ROSS has none) is zero.
 """
 
 from __future__ import annotations

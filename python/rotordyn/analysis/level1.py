@@ -72,7 +72,8 @@ def _placement(system: System, stages, q_stage: np.ndarray, at) -> tuple[list, s
 
     if isinstance(at, (int, np.integer)) and not isinstance(at, bool):
         k = v.integer("at", at, lo=0, hi=rotor.n_stations - 1)
-        return [(f"station {k}", int(st_nodes[k]), 1.0, float(pos[k]))], f"at station {k} (as given)"
+        return ([(f"station {k}", int(st_nodes[k]), 1.0, float(pos[k]))],
+                f"at station {k} (as given)")
     v.choice("at", at, PLACEMENTS)
     if at == "auto":
         lo, hi = (pos[brg[0]], pos[brg[-1]]) if brg else (np.inf, -np.inf)
@@ -205,13 +206,14 @@ def level1(system: System, speed_hz: float, chamber_pressure_pa: float = 0.0,
         and the criteria are "not evaluated (no stage data)".
     at : where Q acts: ``"auto"`` (mid-span between the outermost bearings/supports; the
         stages' centroid when every stage overhangs on one side; each stage when they overhang
-        on both sides), ``"midspan"``, ``"centroid"``,
-        ``"stages"`` (shared in proportion to q_A) or a station number.
+        on both sides), ``"midspan"``, ``"centroid"``, ``"stages"`` (shared in proportion to
+        q_A) or a station number.
     mode : the judged mode: ``"first_forward"`` (default, the standard's wording): the
         lowest-frequency rotor mode at Q = 0 whose orbits turn forward (however elliptic) and
-        that has a resonance (damping ratio below 1/√2), followed along Q by its shape; or ``"least_damped"``: the smallest log decrement
-        of all forward rotor modes (up to ``max_freq_hz``) at each Q, so Q_0 is where the
-        system first loses stability (conservative: lightly damped high modes count).
+        that has a resonance (damping ratio below 1/√2), followed along Q by its shape; or
+        ``"least_damped"``: the smallest log decrement of all forward rotor modes (up to
+        ``max_freq_hz``) at each Q, so Q_0 is where the system first loses stability
+        (conservative: lightly damped high modes count).
     max_freq_hz : judge only forward modes at most this frequency (Hz).
     gas_density_kg_m3 : average gas density (first-stage suction and last-stage discharge),
         echoed for the screening figure. csr_limit : the Region B boundary CSR read from the
@@ -287,8 +289,8 @@ def level1(system: System, speed_hz: float, chamber_pressure_pa: float = 0.0,
         cache[q] = (float(st.log_dec[j]), float(st.frequencies_hz[j]))
         return cache[q]
 
-    n_tr = [i for i in range(asm.n_rotor)]
-    k_ref = float(np.max(np.abs(np.diag(lm.K)[n_tr]))) if n_tr else 1.0
+    # the stiffness scale: the largest diagonal entry of K on the rotor's coordinates
+    k_ref = float(np.max(np.abs(np.diag(lm.K)[:asm.n_rotor]))) if asm.n_rotor else 1.0
     q_scale = q_a if np.isfinite(q_a) and q_a > 0 else 1e-3 * k_ref
     if mode == "first_forward":
         # The mode is picked at a Q small enough not to change it (1e-4 Q_A) but large enough
@@ -325,6 +327,16 @@ def level1(system: System, speed_hz: float, chamber_pressure_pa: float = 0.0,
     qs |= {x for x in (q0, q_a) if np.isfinite(x)} | set(extra_q.tolist())
     qs = np.array(sorted(qs))
     vals = np.array([at_q(q) for q in qs])
+    # A δ(Q) that dips below zero and recovers between two doublings of the bracket: the
+    # curve shows it, and Q_0 is the first crossing.
+    below = np.flatnonzero((vals[:, 0] < 0.0) & (qs < q0))
+    if q0 > 0.0 and below.size and below[0] > 0:
+        k = below[0]
+        q0 = float(brentq(lambda q: at_q(q)[0], qs[k - 1], qs[k], xtol=1e-12 * qs[k],
+                          rtol=1e-10))
+        message = "δ(Q) crosses zero more than once; Q_0 is the first crossing"
+        qs = np.array(sorted(set(qs.tolist()) | {q0}))
+        vals = np.array([at_q(q) for q in qs])
     d_a = at_q(q_a)[0] if np.isfinite(q_a) else nan
     return Level1Result(float(speed_hz), qs, vals[:, 0], vals[:, 1], q_a, q0, d_a, q_max,
                         status=lm.status, message=message, log_dec_0=d0, freq_0_hz=f0, **common)

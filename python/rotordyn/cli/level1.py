@@ -55,8 +55,8 @@ def _stage(text: str, axial: bool) -> dict:
     except ValueError:
         vals = []
     if len(vals) != want or not float(vals[0]).is_integer():
-        raise InputError(f"--stage: expected {'STATION,POWER_W,DIAMETER_M,HEIGHT_M' if axial else 'STATION,POWER_W,DIAMETER_M,HEIGHT_M,DENSITY_RATIO'}"
-                         f", got {text!r}")
+        form = "STATION,POWER_W,DIAMETER_M,HEIGHT_M" + ("" if axial else ",DENSITY_RATIO")
+        raise InputError(f"--stage: expected {form}, got {text!r}")
     d = dict(station=int(vals[0]), power_w=vals[1], diameter_m=vals[2], height_m=vals[3],
              type="axial" if axial else "centrifugal")
     if not axial:

@@ -15,7 +15,7 @@ def level1_curve(result, ax=None):
     ax = new_axes(ax, width=COLUMN_IN * 1.3)
     q = np.asarray(result.q_n_per_m) / 1e6
     ax.plot(q, result.log_dec, color="tab:blue", marker=".", ms=3,
-            label=f"δ of the {'first forward' if result.mode == 'first_forward' else 'least damped forward'} rotor mode")
+            label=f"δ of the {result.mode_text}")
     ax.axhline(0.0, color="0.4", lw=0.6)
     ax.axhline(0.1, color="tab:red", lw=0.7, ls=":", label="δ = 0.1 (API 617)")
     if np.isfinite(result.q0_n_per_m):

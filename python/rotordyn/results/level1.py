@@ -23,8 +23,8 @@ LEVEL1_LOG_DEC = 0.1    # API 617: δ_A ≥ 0.1
 LEVEL1_CSR_RATIO = 10.0  # API 617: for 2 ≤ Q_0/Q_A < 10 the screening figure decides
 NOT_RESOLVED = "not resolved"
 NO_STAGE_DATA = "not evaluated (no stage data)"
-MODE_TEXT = {"first_forward": "first forward rotor mode", "least_damped":
-             "least damped forward rotor mode"}
+MODE_TEXT = {"first_forward": "first forward rotor mode",
+             "least_damped": "least damped forward rotor mode"}
 
 
 @dataclass(frozen=True)
@@ -65,6 +65,11 @@ class Level1Result(Display):
     freq_0_hz: float = float("nan")
 
     @property
+    def mode_text(self) -> str:
+        """The judged mode in words ("first forward rotor mode")."""
+        return MODE_TEXT[self.mode]
+
+    @property
     def has_stage_data(self) -> bool:
         return bool(np.isfinite(self.q_a_n_per_m))
 
@@ -89,7 +94,8 @@ class Level1Result(Display):
               f"δ > 0 up to Q = {self.q_max_n_per_m:.4g} N/m")
         out = [(f"{name}: Q_0/Q_A", f"Q_0/Q_A ≥ {LEVEL1_RATIO:g}",
                 f"{q0}, Q_A = {self.q_a_n_per_m:.4g} N/m, ratio "
-                + (f"{r:.3g}" if np.isfinite(r) else f"> {self.q_max_n_per_m / self.q_a_n_per_m:.3g}"),
+                + (f"{r:.3g}" if np.isfinite(r)
+                   else f"> {self.q_max_n_per_m / self.q_a_n_per_m:.3g}"),
                 bool(r >= LEVEL1_RATIO)),
                (f"{name}: δ_A", f"δ at Q_A ≥ {LEVEL1_LOG_DEC:g}",
                 f"δ_A = {self.log_dec_a:.3g} (mode at {self._freq_at_a():.4g} Hz)",
