@@ -215,6 +215,15 @@ def test_report_level1_section_echoes_the_inputs(tmp_path):
     assert re.search(r"API 617 Level I: Q_0/Q_A\s+Q_0/Q_A ≥ 2\s+Q_0 = [0-9.e+]+ N/m.*?PASS", doc)
     assert re.search(r"API 617 Level I: δ_A\s+δ at Q_A ≥ 0.1\s+δ_A = [0-9.]+.*?PASS", doc)
     assert "API 617 Level I: screening" not in doc  # Q_0/Q_A ≥ 10: the figure does not apply
+    assert "Region B boundary CSR" in doc and "not given" in doc
     txt = (tmp_path / "report.txt").read_text()
     assert "API 617 Level I stability analysis" in txt and "verdict: PASS" in txt
     assert (tmp_path / "level1.csv").exists()
+    # ten times the power: 2 ≤ Q_0/Q_A < 10, the screening figure decides; with its boundary
+    # given on the command line it is judged (here CSR below it: Region A, PASS)
+    path.write_text(text.replace("power_w = 1.5e6", "power_w = 4.0e6"))
+    assert main(["report", str(path), "--out", str(tmp_path), "--operating-speed-hz", "140",
+                 "170", "--gas-density-kg-m3", "40", "--csr-limit", "5"]) == 0
+    txt = (tmp_path / "report.txt").read_text()
+    assert re.search(r"API 617 Level I: screening: CSR = [0-9.]+, average gas density 40 kg/m³, "
+                     r"Region B above CSR 5 \(as given\) .*PASS", txt)

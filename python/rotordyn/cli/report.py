@@ -22,6 +22,13 @@ def register(sub) -> None:
     s.add_argument("--speeds-hz", default=None, metavar="SPEC",
                    help="analysed speeds of the HTML report, Hz: start:stop:step or a list "
                         "(default: from the operating speeds, see docs)")
+    s.add_argument("--gas-density-kg-m3", type=float, default=None, metavar="RHO",
+                   help="API 617 Level I: average gas density (first-stage suction, last-stage "
+                        "discharge), kg/m³, echoed for the screening figure")
+    s.add_argument("--csr-limit", type=float, default=None, metavar="CSR",
+                   help="API 617 Level I: the Region B boundary CSR of the standard's screening "
+                        "figure at that density (without it that criterion is not resolved "
+                        "where it applies)")
     s.set_defaults(func=_cmd_report)
 
 
@@ -29,5 +36,8 @@ def _cmd_report(args) -> int:
     from rotordyn import report  # (matplotlib: only when used)
 
     speeds = None if args.speeds_hz is None else parse_speeds(args.speeds_hz)
+    l1 = {k: v for k, v in (("gas_density_kg_m3", args.gas_density_kg_m3),
+                            ("csr_limit", args.csr_limit)) if v is not None}
     return report.run(args.model, out_dir("--out", args.out), html=args.html,
-                      operating_speed_hz=args.operating_speed_hz, speeds_hz=speeds)
+                      operating_speed_hz=args.operating_speed_hz, speeds_hz=speeds,
+                      level1_options=l1)

@@ -183,13 +183,14 @@ def _bearing_stiffness_curves(s, speeds, pc, ay):
 
 def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                speeds_hz=None, chamber_pressure_pa: float | None = None,
-               progress: bool = True) -> Path:
+               progress: bool = True, level1_options: dict | None = None) -> Path:
     """Write the HTML report of ``model`` (a built-in name or TOML path) to ``path``.
 
     ``operating_speed_hz`` (min, max) Hz: the operating range of the separation margins and
     amplitude checks (none given: no margins are assessed). ``speeds_hz``: the analysed speeds
     (default :func:`rotordyn.report.criteria.speed_range`). ``progress``: a line on stderr per
-    section."""
+    section. ``level1_options``: keywords of :func:`rotordyn.level1` for the Level I section
+    (``gas_density_kg_m3``, ``csr_limit``)."""
     import datetime
     import hashlib
 
@@ -340,7 +341,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
 
     # 5b. API 617 Level I with the stages' anticipated cross-coupling
     _progress(progress, "API 617 Level I")
-    l1, why = level1_report.evaluate(s, operating_speed_hz, pc, ay)
+    l1, why = level1_report.evaluate(s, operating_speed_hz, pc, ay, **(level1_options or {}))
     parts.append(level1_report.html_section(l1, why, checks, svg, _table))
 
     # 6. active bearing: stability map in p_c

@@ -18,14 +18,16 @@ CRITERIA = ("API 617 (8th ed., Part 1 §4.8.5) / API 684 (2nd ed., §2.9) Level 
             "speed ratio in Region B of the standard's screening figure.")
 
 
-def evaluate(system, operating_speed_hz, chamber_pressure_pa: float = 0.0, config_ay_m=None):
-    """(Level1Result or None, why-not text): Level I at the top of the operating range."""
+def evaluate(system, operating_speed_hz, chamber_pressure_pa: float = 0.0, config_ay_m=None,
+             **options):
+    """(Level1Result or None, why-not text): Level I at the top of the operating range;
+    ``options`` go to :func:`rotordyn.level1` (``gas_density_kg_m3``, ``csr_limit``)."""
     if not system.stages:
         return None, NO_STAGE_DATA
     if not operating_speed_hz:
         return None, NO_SPEED
     return analysis.level1(system, float(operating_speed_hz[1]), chamber_pressure_pa,
-                           config_ay_m), ""
+                           config_ay_m, **options), ""
 
 
 def _stage_rows(r) -> list[tuple]:
@@ -79,6 +81,10 @@ def html_section(r, why: str, checks, svg, table) -> str:
             ("Q_0/Q_A", f"{r.ratio:.3g}"), ("δ_A (δ at Q_A)", f"{r.log_dec_a:.3g}"),
             ("critical speed ratio CSR", f"{r.csr:.3g} (first critical on rigid supports "
                                          f"{r.first_critical_hz:.4g} Hz)"),
+            ("average gas density", "not given" if not np.isfinite(r.gas_density_kg_m3)
+             else f"{r.gas_density_kg_m3:.4g} kg/m³"),
+            ("Region B boundary CSR (from the standard's figure)",
+             "not given" if not np.isfinite(r.csr_limit) else f"{r.csr_limit:.3g}"),
             ("verdict", r.verdict())]
     return (head + f"<p>{html.escape(CRITERIA)} q_A = B·C·P·(ρ_d/ρ_s)/(D·H·N), B_c = 3 "
             "(axial B_t = 1.5, no density ratio), C = 9.55 (P in W, D and H in m, N in rpm, "

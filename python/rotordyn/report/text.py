@@ -53,7 +53,7 @@ def _fmt_row(cells, widths):
 
 
 def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
-        speeds_hz=None) -> int:
+        speeds_hz=None, level1_options: dict | None = None) -> int:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -100,7 +100,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
     from rotordyn.report import level1 as level1_report
 
     l1, why = level1_report.evaluate(s, operating_speed_hz, 0.4e6 if active else 0.0,
-                                     0.0 if active else None)
+                                     0.0 if active else None, **(level1_options or {}))
     say()
     for line in level1_report.text_lines(l1, why):
         say(line)
@@ -178,7 +178,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         from rotordyn.report.html import write_html
 
         write_html(model, html, text_lines=lines, operating_speed_hz=operating_speed_hz,
-                   speeds_hz=speeds_hz)
+                   speeds_hz=speeds_hz, level1_options=level1_options)
         print(f"wrote {html}", file=sys.stderr)
     print(f"wrote {outdir}/report.txt and tables/figures", file=sys.stderr)
     return 0
