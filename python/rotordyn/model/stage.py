@@ -12,7 +12,8 @@ with C = 9.55 = 60/(2π) (rev/min per rad/s: C·P/N is the stage torque P/Ω). U
 diameter D_t) in m, H_c the smaller of the diffuser width and the impeller discharge width
 (axial: effective blade height H_t) in m, N the speed in rev/min, ρ_d/ρ_s the stage's discharge
 over suction gas density; q_A in N/m. (The standard's US-unit form takes C = 63, P in hp, D and
-H in inches and gives klbf/in; the same torque over D·H.) Q_A is the sum over the stages.
+H in inches and gives klbf/in; the same torque over D·H.) Q_A is the sum over the stages. (The formulas are the published ones; the clause
+numbers are as recalled, not checked against the standards' text: docs/api-criteria.md.)
 """
 
 from __future__ import annotations
