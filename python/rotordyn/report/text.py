@@ -167,7 +167,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         from rotordyn.report.html import write_html
 
         write_html(model, html, text_lines=lines, operating_speed_hz=operating_speed_hz,
-                   speeds_hz=speeds_hz)
+                   speeds_hz=speeds_hz, figure_dir=outdir)
         print(f"wrote {html}", file=sys.stderr)
     print(f"wrote {outdir}/report.txt and tables/figures", file=sys.stderr)
     return 0
