@@ -75,6 +75,7 @@ from rotordyn.results import (
     ModesResult,
     StabilityResult,
     StaticResult,
+    load_result,
 )
 
 __all__ = [
@@ -123,6 +124,7 @@ __all__ = [
     "unbalance_response",
     "statespace",
     "transient",
+    "load_result",
     "ModesResult",
     "LinearModel",
     "StabilityResult",
