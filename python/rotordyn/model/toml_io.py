@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 import tomllib
 
 import numpy as np
@@ -43,6 +44,28 @@ def _build(cls, where: str, table: dict, **extra):
         return cls(**table, **extra)
     except TypeError as exc:  # missing required key
         raise InputError(f"{where}: {exc}") from None
+    except InputError as exc:  # a self-checking element: name the file's path, not its kind
+        raise type(exc)(at_path(where, str(exc), table)) from None
+
+
+_HEAD = re.compile(r"^([A-Za-z_]\w*)(\[\d+\])?(?=[.:\[ ])")
+
+
+def at_path(where: str, message: str, table: dict) -> str:
+    """``message`` of an element's own check with its field path rewritten to the model
+    file's (``tilting_pad_bearing.n_pads: …`` → ``bearing[0].n_pads: …``, ``speeds_hz: …``
+    → ``bearing[1].speeds_hz: …``, ``sleeve.x`` → ``bearing[0].sleeve.x``)."""
+    if message.startswith(where):
+        return message
+    m = _HEAD.match(message)
+    if m is None:
+        return f"{where}: {message}"
+    head = m.group(1)
+    if head in table:  # a field of this table (or a nested one) named without the element
+        return f"{where}.{message}"
+    if message[m.end():].startswith("."):  # the element's kind in place of its path
+        return where + message[m.end():]
+    return f"{where}: {message}"
 
 
 def read_text(path, field: str = "model") -> str:
