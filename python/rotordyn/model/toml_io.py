@@ -10,15 +10,19 @@ import dataclasses
 import math
 import re
 import tomllib
+import warnings
 
 import numpy as np
 from pathlib import Path
 
 from rotordyn.bearings import BEARING_TYPES, FlexibleSleeve, Groove
-from rotordyn.errors import InputError
+from rotordyn.errors import InputError, RotordynDeprecationWarning
 from rotordyn.model.rotor import STEEL, Disk, Material, Reduction, Rotor, ShaftSection, Support
 
 SCHEMA = "rotordyn/model/1"
+RENAMED_KEYS = {"tilt_stiffness_nm_per_rad": "tilt_stiffness_n_m_per_rad"}
+"""Keys of ``[[bearing]]`` tables that were renamed: still read (with a
+:class:`~rotordyn.errors.RotordynDeprecationWarning` naming the path), written new."""
 
 
 def _fields(cls) -> list[str]:
@@ -134,6 +138,12 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
     red_t = doc.get("reduction", {})
     _check_keys("reduction", red_t, _fields(Reduction))
     reduction = _build(Reduction, "reduction", red_t)
+    if reduction.n_modes and reduction.method != "craig-bampton":
+        # (the Python API keeps n_modes for modes(..., reduction="craig-bampton"); a file
+        # that sets it for another method would have it silently ignored)
+        raise InputError(f"reduction.n_modes: only method \"craig-bampton\" adds fixed-"
+                         f"interface modes; got n_modes = {reduction.n_modes} with method "
+                         f"{reduction.method!r} (set method = \"craig-bampton\" or drop n_modes)")
 
     bearings = [_bearing_from_table(f"bearing[{i}]", t)
                 for i, t in enumerate(_array_of_tables("bearing", doc.get("bearing", [])))]
@@ -151,7 +161,13 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
 def _disk_from_table(where: str, t: dict, mats: list):
     """A disk by its inertias, or by its geometry and material (inertias computed)."""
     inertia = {"mass_kg", "ip_kg_m2", "id_kg_m2"}
+    if "station" not in t:
+        raise InputError(f"{where}.station: missing (the station the disk sits at)")
     if inertia & set(t):
+        if inertia - set(t):
+            raise InputError(f"{where}: the inertias come as all of mass_kg, ip_kg_m2, "
+                             f"id_kg_m2 (missing {sorted(inertia - set(t))}), or give the "
+                             "geometry (outer_diameter_m, width_m, material) instead")
         return _build(Disk, where, t)
     need = {"outer_diameter_m", "width_m", "material"} - set(t)
     if need:
@@ -162,8 +178,11 @@ def _disk_from_table(where: str, t: dict, mats: list):
     if mat is None:
         raise InputError(f"{where}.material: expected one of {sorted(known)}, got "
                          f"{t['material']!r}")
-    return Disk.from_geometry(t["station"], mat, t["width_m"], t["outer_diameter_m"],
-                              t.get("inner_diameter_m", 0.0), t.get("name", ""))
+    try:
+        return Disk.from_geometry(t["station"], mat, t["width_m"], t["outer_diameter_m"],
+                                  t.get("inner_diameter_m", 0.0), t.get("name", ""))
+    except InputError as exc:  # "disk.width_m: …" → "disk[2].width_m: …"
+        raise type(exc)(at_path(where, str(exc), t)) from None
 
 
 def _bearing_from_table(where: str, t: dict):
@@ -173,6 +192,14 @@ def _bearing_from_table(where: str, t: dict):
         raise InputError(f"{where}.type: expected one of {sorted(BEARING_TYPES)}, got {kind!r}")
     cls = BEARING_TYPES[kind]
     _check_keys(where, t, _fields(cls))
+    for old, new in RENAMED_KEYS.items():
+        if old in t:
+            if new in t:
+                raise InputError(f"{where}.{old}: the old name of {new}; give one of them")
+            warnings.warn(f"{where}.{old} is renamed {new} (N·m/rad; 'nm' reads as "
+                          "nanometres); the old key is read for now", RotordynDeprecationWarning,
+                          stacklevel=2)
+            t[new] = t.pop(old)
     grooves = []
     for j, g in enumerate(_array_of_tables(f"{where}.grooves", t.pop("grooves", []))):
         _check_keys(f"{where}.grooves[{j}]", g, _fields(Groove))
@@ -243,7 +270,10 @@ def system_to_toml(system) -> str:
         lines += ["", "[[disk]]"] + _table_lines(d)
     for s in system.supports:
         lines += ["", "[[support]]"] + _table_lines(s)
-    lines += ["", "[reduction]"] + _table_lines(system.reduction, defaults_too=True)
+    # n_modes only where the file's method uses it (the reader refuses it elsewhere)
+    lines += ["", "[reduction]"] + _table_lines(
+        system.reduction, defaults_too=True,
+        skip=() if system.reduction.method == "craig-bampton" else ("n_modes",))
     kinds = {cls: name for name, cls in BEARING_TYPES.items()}
     for b in system.bearings:
         lines += ["", "[[bearing]]", f"type = {_val(kinds[type(b)])}"]
