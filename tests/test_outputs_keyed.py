@@ -76,3 +76,25 @@ def test_frames_carry_units_and_only_inputs_that_apply():
         assert "chamber_pressure_pa" not in df, name
         # (the equilibrium lists each bearing's own housing offset a, which any bearing has)
         assert name == "equilibrium" or "config_ay_m" not in df, name
+
+
+def test_state_space_frame_has_the_unit_of_every_entry():
+    """The state-space table mixes units in its value column: each row says its own."""
+    s = rd.System.from_toml(PLAIN)
+    ss = rd.statespace(s, inputs=[("force", 3)], outputs=[("journal", 0), ("velocity", 3)],
+                       speed_hz=100.0)
+    df = ss.to_frame()
+    assert "unit" in df
+
+    def one(m, r, c):
+        row = df[(df["matrix"] == m) & (df["row"] == r) & (df["col"] == c)]
+        assert len(row) == 1
+        return row.iloc[0]
+
+    a = one("A", "station3.x", "d(station3.x)/dt")
+    assert a["unit"] == "(m/s)/(m/s)" and a["value"] == 1.0
+    assert one("A", "d(station3.x)/dt", "station3.x")["unit"] == "(m/s/s)/(m)"
+    assert one("B", "d(station3.y)/dt", "force_y_n[3]")["unit"] == "(m/s/s)/(N)"
+    assert one("C", "journal_x_m[0]", "station1.x")["unit"] == "(m)/(m)"
+    assert one("C", "velocity_x_m_s[3]", "d(station3.x)/dt")["unit"] == "(m/s)/(m/s)"
+    assert one("D", "journal_y_m[0]", "force_x_n[3]")["unit"] == "(m)/(N)"

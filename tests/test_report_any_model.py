@@ -16,7 +16,9 @@ two linear supports):
 
 from __future__ import annotations
 
+import contextlib
 import html
+import io
 import re
 from pathlib import Path
 
@@ -48,9 +50,11 @@ def reports(tmp_path_factory):
     for name in NAMES:
         d = tmp_path_factory.mktemp(name)
         page = d / "r.html"
-        code = main(["report", str(MODELS / f"{name}.toml"), "--out", str(d), "--html",
-                     str(page), "--operating-speed-hz", "140", "170"])
-        out[name] = (code, page.read_text(encoding="utf-8"), d)
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err):
+            code = main(["report", str(MODELS / f"{name}.toml"), "--out", str(d), "--html",
+                         str(page), "--operating-speed-hz", "140", "170"])
+        out[name] = (code, page.read_text(encoding="utf-8"), d, err.getvalue())
     return out
 
 
@@ -242,17 +246,17 @@ def test_bearing_coefficients_in_the_system_equal_the_standalone_bearing():
         bearing_coefficients(t, [-1.0])
 
 
-def test_report_progress_line_says_which_step_and_how_far(tmp_path, capsys):
+@pytest.mark.parametrize("name", ["compressor_table", "compressor_linear"])
+def test_report_progress_line_says_which_step_and_how_far(reports, name):
     """A progress line on stderr for the report: each step as [k/n] with the time so far, the
     count never above n, and a closing line."""
-    assert main(["report", str(MODELS / "compressor_table.toml"), "--out", str(tmp_path),
-                 "--html", str(tmp_path / "r.html"), "--speeds-hz", "20:240:20"]) == 0
-    err = capsys.readouterr().err
+    err = reports[name][3]
     steps = re.findall(r"rotordyn report: \[(\d+)/(\d+)\] (.+) \((\d+) s\)", err)
     assert len(steps) >= 6
     assert [int(k) for k, _, _, _ in steps] == list(range(1, len(steps) + 1))
     assert all(int(k) <= int(n) for k, n, _, _ in steps)
-    assert any("Campbell diagram, 12 speeds" in s for _, _, s, _ in steps)
+    assert any("Campbell diagram, 121 speeds" in s for _, _, s, _ in steps)
+    assert any("mode shapes at the critical speeds" in s for _, _, s, _ in steps)
     assert re.search(r"rotordyn report: done, \d+ steps", err)
 
 

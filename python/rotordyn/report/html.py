@@ -4,7 +4,9 @@ SVG, no external resources) in the spirit of an API 684 lateral analysis:
 1. model summary and rotor drawing;
 2. undamped critical speed map (natural frequencies against bearing stiffness, with the
    bearings' own stiffness at the operating point);
-3. Campbell diagram with the critical speeds;
+2b. each bearing's stiffness and damping kxx … cyy over the analysed speeds (table, figure;
+   :mod:`rotordyn.report.sections`);
+3. Campbell diagram with the critical speeds, and (3b) the mode shape at each critical speed;
 4. unbalance response (API 684 unbalance U = 6350 W/N g·mm) with amplification factors,
    separation margins and the API 617 amplitude limit;
 5. stability: the logarithmic decrement of the forward rotor modes in the frequency window,
