@@ -182,7 +182,7 @@ def test_report_draws_the_mode_shape_at_each_critical_speed(reports):
     CLI's output directory. The compressor on linear supports has forward critical speeds in
     its range; the figure count follows the Campbell's critical speeds."""
     s = rd.System.from_toml(MODELS / "compressor_linear.toml")
-    code, page, d = reports["compressor_linear"]
+    code, page, d = reports["compressor_linear"][:3]
     crit = rd.rotor_campbell(s, speed_range(s, (140.0, 170.0)).speeds_hz,
                              n_modes=12).critical_speeds()
     n = min(len(crit), 6)
@@ -203,7 +203,7 @@ def test_report_tabulates_bearing_coefficients_over_speed(reports, name):
     none for a rotor on linear supports."""
     import pandas as pd
 
-    code, page, d = reports[name]
+    code, page, d = reports[name][:3]
     assert "2b. Bearing coefficients over speed" in page
     assert "kxx (MN/m)" in page and "cyy (kN·s/m)" in page
     df = pd.read_csv(Path(d) / "bearing_coefficients.csv")
