@@ -191,6 +191,11 @@ def test_report_draws_the_mode_shape_at_each_critical_speed(reports):
     assert page.count("<figcaption>Critical speed ") == n
     pngs = sorted(Path(d).glob("critical_mode_*.png"))
     assert len(pngs) == n and all(p.stat().st_size > 20000 for p in pngs)
+    from PIL import Image
+
+    for p in Path(d).glob("*.png"):  # every figure of the output directory at 200 dpi
+        with Image.open(p) as im:
+            assert round(im.info["dpi"][0]) == 200, p.name
     nc = float(crit["speed_hz"].iloc[0])
     assert f"Critical speed 1: {nc:.4g} Hz" in page
 
@@ -272,4 +277,6 @@ def test_long_cli_work_says_it_is_running(monkeypatch, capsys):
     assert main(args) == 0
     err = capsys.readouterr().err
     assert "rotordyn campbell over speeds 20:200:20 Hz: running" in err
-    assert re.search(r"rotordyn campbell over speeds 20:200:20 Hz: done in [0-9.]+ s", err)
+    assert re.search(r"rotordyn campbell over speeds 20:200:20 Hz: done after [0-9.]+ s", err)
+    assert main(args[:2] + ["--speeds-hz", "-5:10:5"]) == 2  # bad input: no "done" claimed
+    assert "done after" not in capsys.readouterr().err

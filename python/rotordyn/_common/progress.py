@@ -63,7 +63,8 @@ class Steps:
 @contextlib.contextmanager
 def long_work(what: str, *, delay_s: float | None = None, stream=None, enabled: bool = True):
     """Around one long call: ``rotordyn <what>: running…`` on stderr if it is still running
-    after ``delay_s`` (default :data:`DELAY_S`), then ``… done in 12.3 s``."""
+    after ``delay_s`` (default :data:`DELAY_S`), then ``… done after 12.3 s`` (``stopped
+    after`` when it raised: the error follows)."""
     delay = DELAY_S if delay_s is None else delay_s
     t0 = time.monotonic()
     said = threading.Event()
@@ -83,8 +84,10 @@ def long_work(what: str, *, delay_s: float | None = None, stream=None, enabled: 
     if timer is not None:
         timer.daemon = True
         timer.start()
+    ok = False
     try:
         yield
+        ok = True
     finally:
         with lock:
             finished = True
@@ -92,7 +95,8 @@ def long_work(what: str, *, delay_s: float | None = None, stream=None, enabled: 
             timer.cancel()
         if said.is_set():
             s = stream or sys.stderr
-            s.write(f"rotordyn {what}: done in {time.monotonic() - t0:.1f} s\n")
+            s.write(f"rotordyn {what}: {'done' if ok else 'stopped'} after "
+                    f"{time.monotonic() - t0:.1f} s\n")
             s.flush()
 
 

@@ -93,7 +93,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         "frequencies_hz": r.frequencies_hz.tolist(),
         "full_frequencies_hz": full.frequencies_hz.tolist()}, indent=2) + "\n")
     ax = full.plot(modes=range(0, min(6, len(full.eigenvalues)), 2))
-    ax.figure.savefig(outdir / "rotor_mode_shapes.png", dpi=120, bbox_inches="tight")
+    ax.figure.savefig(outdir / "rotor_mode_shapes.png", dpi=200, bbox_inches="tight")
 
     active = [b for b in s.bearings if isinstance(b, ActiveJournalBearing)]
     if active:
@@ -156,7 +156,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         c.to_frame().to_csv(outdir / "campbell.csv", index=False)
         ax = c.plot()
         ax.set_title("natural frequencies at p_c = 0.4 MPa (paper Fig. 12)")
-        ax.figure.savefig(outdir / "campbell.png", dpi=120, bbox_inches="tight")
+        ax.figure.savefig(outdir / "campbell.png", dpi=200, bbox_inches="tight")
 
         if paper:
             say()
