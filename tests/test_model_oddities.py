@@ -66,6 +66,15 @@ def test_unit_slip_warnings_on_every_film_element(kind):
         _load((text[:i] + first + text[j:]).replace("VISC", "0.018"))
 
 
+def test_gravity_in_mm_per_s2_warns():
+    with pytest.warns(UnitWarning, match=r"gravity_m_s2 = 9810 m/s² .* mm/s²"):
+        _load("gravity_m_s2 = 9810.0\n" + LIN)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        _load("gravity_m_s2 = 9.81\n" + LIN)
+        _load("gravity_m_s2 = 0.0\n" + LIN)  # weightless: deliberate, silent
+
+
 def test_journal_bearing_warns_once():
     with pytest.warns(UnitWarning) as rec:
         _load(PLAIN.replace("viscosity_pa_s = 0.018", "viscosity_pa_s = 18.0", 1))
