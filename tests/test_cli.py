@@ -61,7 +61,8 @@ def test_equilibrium_cli_json_and_negative_config():
     assert p.returncode == 0, p.stderr
     d = json.loads(p.stdout)
     assert d["status"] == "ok" and d["residual"] < 1e-8
-    b = d["bearings"][0]
+    assert isinstance(d["bearings"], dict) and len(d["bearings"]) == 1
+    b = next(iter(d["bearings"].values()))
     assert b["config_ay_m"] == -1.85e-3 and abs(b["x_over_c"]) < 1 and len(b["sleeve_m"]) == 3
 
 

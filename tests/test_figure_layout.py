@@ -33,7 +33,8 @@ def systems():
 NAMES = ["campbell rig", "campbell tilting pad", "bode rig", "polar rig", "bode compressor",
          "polar compressor", "mode shape rig", "mode shapes compressor", "rotor drawing rig",
          "rotor drawing tp", "rotor drawing table", "static compressor", "equilibrium rig",
-         "stability map", "level1 compressor"]
+         "stability map", "level1 compressor", "bearing coefficients tp",
+         "critical mode shape compressor"]
 
 
 @pytest.fixture(scope="module")
@@ -44,7 +45,15 @@ def figures(systems):
                                   operating_speed_hz=(45, 55))
     u_lin = rd.unbalance_response(lin, [(3, 1e-4, 0)], np.linspace(20, 250, 60), stations=[3],
                                   operating_speed_hz=(140, 170))
+    from rotordyn.analysis.bearing_coefficients import bearing_coefficients
+    from rotordyn.plot.coefficients import bearing_coefficients as coefficient_figure
+    from rotordyn.report.sections import critical_mode_shapes
+
     return {
+        "bearing coefficients tp": lambda: coefficient_figure(
+            bearing_coefficients(tp, np.linspace(20, 200, 5))).axes[0],
+        "critical mode shape compressor": lambda: critical_mode_shapes(
+            lin, [157.9], 0.0, None)[0].figure.axes[0],
         "campbell rig": lambda: rd.campbell(rig, np.arange(5, 121, 5.0), 0.4e6, 0.0).plot(),
         "campbell tilting pad": lambda: rd.campbell(tp, np.linspace(20, 200, 10)).plot(),
         "bode rig": lambda: u_rig.plot()[0],

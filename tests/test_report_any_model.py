@@ -16,7 +16,9 @@ two linear supports):
 
 from __future__ import annotations
 
+import contextlib
 import html
+import io
 import re
 from pathlib import Path
 
@@ -48,15 +50,17 @@ def reports(tmp_path_factory):
     for name in NAMES:
         d = tmp_path_factory.mktemp(name)
         page = d / "r.html"
-        code = main(["report", str(MODELS / f"{name}.toml"), "--out", str(d), "--html",
-                     str(page), "--operating-speed-hz", "140", "170"])
-        out[name] = (code, page.read_text(encoding="utf-8"))
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err):
+            code = main(["report", str(MODELS / f"{name}.toml"), "--out", str(d), "--html",
+                         str(page), "--operating-speed-hz", "140", "170"])
+        out[name] = (code, page.read_text(encoding="utf-8"), d, err.getvalue())
     return out
 
 
 @pytest.mark.parametrize("name", NAMES)
 def test_report_completes_on_any_model(reports, name):
-    code, page = reports[name]
+    code, page = reports[name][:2]
     assert code == 0
     assert re.search(r"Overall: <span class=\"\w+\">(PASS|FAIL|NOT RESOLVED)</span>", page)
     assert page.count("<svg") >= 5  # drawing, map, Campbell, Bode per station, log dec
@@ -174,3 +178,108 @@ def test_peaks_of_a_station_do_not_depend_on_the_others(model, ub, stations, spe
     assert len(a) == len(b) and len(a) > 0
     np.testing.assert_allclose(a["critical_speed_hz"], b["critical_speed_hz"], rtol=2e-3)
     np.testing.assert_allclose(a["amplification_factor"], b["amplification_factor"], rtol=2e-2)
+
+
+def test_report_draws_the_mode_shape_at_each_critical_speed(reports):
+    """Issue 18: the mode shape at each critical speed, in the HTML report and as a PNG in the
+    CLI's output directory. The compressor on linear supports has forward critical speeds in
+    its range; the figure count follows the Campbell's critical speeds."""
+    s = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    code, page, d = reports["compressor_linear"][:3]
+    crit = rd.rotor_campbell(s, speed_range(s, (140.0, 170.0)).speeds_hz,
+                             n_modes=12).critical_speeds()
+    n = min(len(crit), 6)
+    assert n >= 1
+    assert "3b. Mode shapes at the critical speeds" in page
+    assert page.count("<figcaption>Critical speed ") == n
+    pngs = sorted(Path(d).glob("critical_mode_*.png"))
+    assert len(pngs) == n and all(p.stat().st_size > 20000 for p in pngs)
+    from PIL import Image
+
+    for p in Path(d).glob("*.png"):  # every figure of the output directory at 200 dpi
+        with Image.open(p) as im:
+            assert round(im.info["dpi"][0]) == 200, p.name
+    nc = float(crit["speed_hz"].iloc[0])
+    assert f"Critical speed 1: {nc:.4g} Hz" in page
+
+
+@pytest.mark.parametrize("name", ["compressor_plain", "compressor_tilting_pad",
+                                  "compressor_table"])
+def test_report_tabulates_bearing_coefficients_over_speed(reports, name):
+    """Each fluid-film (or table) bearing's kxx … cyy over the report's speeds: a table with
+    units in the page, a figure, and a CSV with unit-suffixed columns in the output directory;
+    none for a rotor on linear supports."""
+    import pandas as pd
+
+    code, page, d = reports[name][:3]
+    assert "2b. Bearing coefficients over speed" in page
+    assert "kxx (MN/m)" in page and "cyy (kN·s/m)" in page
+    df = pd.read_csv(Path(d) / "bearing_coefficients.csv")
+    assert set(df["bearing"]) == {"NDE bearing", "DE bearing"}
+    for c in df.columns:
+        if c[0] in "kc" and c[1:3] in ("xx", "xy", "yx", "yy"):
+            assert c.endswith("_n_per_m") or c.endswith("_n_s_per_m")
+    ok = df[df["status"] == "ok"]
+    assert len(ok) > 10 and (ok["kxx_n_per_m"] > 0).all() and (ok["cyy_n_s_per_m"] > 0).all()
+    assert (Path(d) / "bearing_coefficients.png").stat().st_size > 20000
+    assert "Bearing coefficients" not in reports["compressor_linear"][1]
+
+
+def test_bearing_coefficients_in_the_system_equal_the_standalone_bearing():
+    """The system's tilting-pad coefficients at a speed (pads condensed at synchronous whirl)
+    equal the standalone bearing's coefficient table under the static load the system puts on
+    it (its reaction): the same equilibrium and the same condensation, to round-off; a table
+    bearing gives its table's interpolated coefficients."""
+    from rotordyn.analysis.bearing_coefficients import bearing_coefficients
+
+    s = rd.System.from_toml(MODELS / "compressor_tilting_pad.toml")
+    df = bearing_coefficients(s, [150.0, 90.0])
+    assert list(df["speed_hz"][:2]) == [90.0, 150.0] and list(df["bearing"][:2]) == [
+        "NDE bearing"] * 2
+    fy = rd.static(s, 150.0).reactions["force_y_n"].iloc[0]
+    ref = s.bearings[0].coefficient_table([150.0], (0.0, -fy)).to_frame().iloc[0]
+    row = df[(df["bearing"] == "NDE bearing") & (df["speed_hz"] == 150.0)].iloc[0]
+    for c in ("kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m", "cxx_n_s_per_m",
+              "cxy_n_s_per_m", "cyx_n_s_per_m", "cyy_n_s_per_m"):
+        assert row[c] == pytest.approx(ref[c], rel=1e-6, abs=1e-6 * abs(ref["kxx_n_per_m"])
+                                       if c[0] == "k" else 1e-6 * abs(ref["cxx_n_s_per_m"]))
+    t = rd.System.from_toml(MODELS / "compressor_table.toml")
+    K, C = t.bearings[0].coefficients(100.0)
+    r = bearing_coefficients(t, [100.0]).iloc[0]
+    np.testing.assert_allclose([r["kxx_n_per_m"], r["kxy_n_per_m"], r["kyx_n_per_m"],
+                                r["kyy_n_per_m"]], K.ravel(), rtol=1e-12)
+    np.testing.assert_allclose([r["cxx_n_s_per_m"], r["cyy_n_s_per_m"]], C.ravel()[[0, 3]],
+                               rtol=1e-12)
+    with pytest.raises(rd.InputError, match="speeds_hz"):
+        bearing_coefficients(t, [-1.0])
+
+
+@pytest.mark.parametrize("name", ["compressor_table", "compressor_linear"])
+def test_report_progress_line_says_which_step_and_how_far(reports, name):
+    """A progress line on stderr for the report: each step as [k/n] with the time so far, the
+    count never above n, and a closing line."""
+    err = reports[name][3]
+    steps = re.findall(r"rotordyn report: \[(\d+)/(\d+)\] (.+) \((\d+) s\)", err)
+    assert len(steps) >= 6
+    assert [int(k) for k, _, _, _ in steps] == list(range(1, len(steps) + 1))
+    assert all(int(k) <= int(n) for k, n, _, _ in steps)
+    assert any("Campbell diagram, 121 speeds" in s for _, _, s, _ in steps)
+    assert any("mode shapes at the critical speeds" in s for _, _, s, _ in steps)
+    assert re.search(r"rotordyn report: done, \d+ steps", err)
+
+
+def test_long_cli_work_says_it_is_running(monkeypatch, capsys):
+    """Other commands: a line once the work has run longer than the delay (here 0 s), and its
+    time at the end; nothing for short work under the default delay."""
+    from rotordyn._common import progress
+
+    args = ["campbell", str(MODELS / "compressor_plain.toml"), "--speeds-hz", "20:200:20"]
+    assert main(args) == 0
+    assert "running" not in capsys.readouterr().err  # under a second: silent
+    monkeypatch.setattr(progress, "DELAY_S", 0.0)
+    assert main(args) == 0
+    err = capsys.readouterr().err
+    assert "rotordyn campbell over speeds 20:200:20 Hz: running" in err
+    assert re.search(r"rotordyn campbell over speeds 20:200:20 Hz: done after [0-9.]+ s", err)
+    assert main(args[:2] + ["--speeds-hz", "-5:10:5"]) == 2  # bad input: no "done" claimed
+    assert "done after" not in capsys.readouterr().err

@@ -85,7 +85,10 @@ def test_report_in_a_browser(page, width):
 
     overflow = json.loads(h.unescape(attrs["data-overflow"]))
     assert overflow == [], overflow
-    assert int(attrs["data-figures"]) == n_svg >= 6
+    # drawing, static, critical speed map, bearing coefficients, Campbell, Bode per station,
+    # log dec: every one of them in the page and visible
+    assert int(attrs["data-figures"]) == n_svg >= 7
+    assert "2b. Bearing coefficients over speed" in text
     assert attrs["data-small"] == "0"
     shot = d / f"shot_{width}.png"
     p = _chromium(f"--window-size={width},2000", f"--screenshot={shot}", html.as_uri())

@@ -11,8 +11,8 @@ TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 set -x
 $RD validate paper-rig --plot $FIG/paper_rig_rotor.png
-$RD modes paper-rig --reduction none --n-modes 6 --speed-hz 50 --plot $FIG/paper_rig_mode_shapes.png
-$RD modes paper-rig --reduction none --n-modes 6 --speed-hz 50 --mode 3 --plot $FIG/paper_rig_mode3_orbits.png
+$RD modes paper-rig --without-bearings --reduction none --n-modes 6 --speed-hz 50 --plot $FIG/paper_rig_mode_shapes.png
+$RD modes paper-rig --without-bearings --reduction none --n-modes 6 --speed-hz 50 --mode 3 --plot $FIG/paper_rig_mode3_orbits.png
 $RD campbell paper-rig --chamber-pressure-pa 4e5 --config-ay-m 0 --speeds-hz 5:120:1 \
     --plot $FIG/paper_rig_fig12_campbell.png
 $RD unbalance paper-rig --unbalance 6,1e-4,0 --station 4 --chamber-pressure-pa 4e5 \
@@ -31,3 +31,29 @@ $RD sweep sweeps/fig13_waterfall.toml --out "$TMP/fig13_waterfall" --workers 2  
 $RD plot "$TMP/fig13_waterfall" --kind waterfall --style map --scale log \
     --out $FIG/fig13_waterfall_map.png
 $RD report paper-rig --out "$TMP/report" --html "$TMP/report.html"
+# A machine of the user's own (tests/data/models: the three-impeller compressor rotor): the
+# report's mode shape at a critical speed (on linear supports, which have one in range), the
+# bearing coefficients over speed (tilting pads condensed at synchronous whirl), and a
+# three-axis stability sweep drawn as small multiples (--facet).
+M=tests/data/models
+$RD report $M/compressor_linear.toml --out "$TMP/r_lin" --html "$TMP/r_lin.html" \
+    --operating-speed-hz 140 170
+cp "$TMP/r_lin/critical_mode_1.png" $FIG/compressor_critical_mode_1.png
+$RD report $M/compressor_tilting_pad.toml --out "$TMP/r_tp" --html "$TMP/r_tp.html" \
+    --operating-speed-hz 140 170
+cp "$TMP/r_tp/bearing_coefficients.png" $FIG/compressor_tp_bearing_coefficients.png
+cat > "$TMP/facets.toml" <<EOF
+schema = "rotordyn/sweep/1"
+name = "compressor-speed-clearance-viscosity"
+model = "$PWD/$M/compressor_plain.toml"
+analysis = "stability"
+chunk_size = 35
+
+[grid]
+"bearings.*.viscosity_pa_s" = [0.012, 0.018, 0.028]
+"bearings.*.clearance_m" = [7.0e-5, 8.5e-5, 1.0e-4, 1.15e-4, 1.3e-4]
+speed_hz = [60.0, 80.0, 100.0, 120.0, 140.0, 160.0, 180.0]
+EOF
+$RD sweep "$TMP/facets.toml" --out "$TMP/facets" --workers 2
+$RD plot "$TMP/facets" --kind stability-map --facet "bearings.*.viscosity_pa_s" \
+    --out $FIG/compressor_stability_facets.png

@@ -78,6 +78,7 @@ from rotordyn.results import (
     ModesResult,
     StabilityResult,
     StaticResult,
+    load_result,
 )
 
 __all__ = [
@@ -128,6 +129,7 @@ __all__ = [
     "unbalance_response",
     "statespace",
     "transient",
+    "load_result",
     "ModesResult",
     "LinearModel",
     "StabilityResult",

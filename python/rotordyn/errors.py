@@ -26,6 +26,12 @@ class UnitWarning(RotordynWarning):
     likely slip. See :mod:`rotordyn._common.plausibility`."""
 
 
+class RotordynDeprecationWarning(RotordynWarning, FutureWarning):
+    """A model-file key or keyword that was renamed: still read, under its new name; the
+    message names both. A FutureWarning, so it is shown by default (Python hides a
+    DeprecationWarning outside __main__), as the user who wrote the file must see it."""
+
+
 class OutputError(InputError):
     """A result could not be written although the destination was fine when the run
     started: a full disk, a quota, an I/O error (the message starts with ``out:``). A
@@ -33,4 +39,4 @@ class OutputError(InputError):
     errors were before issue 21, so code catching InputError still catches it."""
 
 
-__all__ += ["RotordynWarning", "UnitWarning", "OutputError"]
+__all__ += ["RotordynWarning", "UnitWarning", "RotordynDeprecationWarning", "OutputError"]

@@ -28,7 +28,7 @@ def rad_s_to_rpm(w_rad_s):
 
 
 # The suffix vocabulary of column names and fields (longest first): the unit each names.
-SUFFIX_UNITS = (("_n_s_per_m", "N·s/m"), ("_n_per_m", "N/m"), ("_nm_per_rad", "N·m/rad"),
+SUFFIX_UNITS = (("_n_s_per_m", "N·s/m"), ("_n_per_m", "N/m"), ("_n_m_per_rad", "N·m/rad"), ("_nm_per_rad", "N·m/rad"),
                 ("_kg_m3", "kg/m³"), ("_kg_m2", "kg·m²"), ("_1_per_s", "1/s"),
                 ("_pa_s", "Pa·s"), ("_m3_s", "m³/s"), ("_rad_s", "rad/s"), ("_hz", "Hz"),
                 ("_pa", "Pa"), ("_kg", "kg"), ("_deg", "deg"), ("_rad", "rad"), ("_nm", "N·m"),

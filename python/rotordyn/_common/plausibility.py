@@ -15,6 +15,7 @@ with E = 1e15 Pa or a near-massless one with ρ = 1e-3 kg/m³ pass silently):
 * Radial clearance below 1e-4 or above 0.02 of the journal radius (plain bearings: about
   1e-3 … 3e-3 of R).
 * Viscosity above 5 Pa·s (mPa·s typed as Pa·s: ISO VG 32 oil at 40 °C ≈ 28 mPa·s).
+* Gravity above 100 m/s² (10 g): mm/s² typed as m/s² (9810 for 9.81).
 * A housing offset ``config_a*_m`` larger than 50 clearances (the paper's rig: a_y = −1.85 mm
   = 6.2 c): millimetres typed as metres.
 """
@@ -31,6 +32,7 @@ MAX_SECTION_LENGTH_M = 20.0
 CLEARANCE_RATIO = (1e-4, 0.02)
 MAX_VISCOSITY_PA_S = 5.0
 MAX_OFFSET_CLEARANCES = 50.0
+MAX_GRAVITY_M_S2 = 100.0  # 10 g; the Earth's 9.81 m/s² typed in mm/s² is 9810
 
 
 def _warn(message: str) -> None:
@@ -82,6 +84,13 @@ def viscosity(field: str, value: float) -> None:
     if value > MAX_VISCOSITY_PA_S:
         _warn(f"{field} = {value:g} Pa·s is above {MAX_VISCOSITY_PA_S:g} Pa·s (ISO VG 32 oil "
               f"at 40 °C: 0.028 Pa·s): given in mPa·s? ({value:g} mPa·s = {value * 1e-3:g} Pa·s)")
+
+
+def gravity(field: str, value: float) -> None:
+    """Warn when the gravitational acceleration (m/s²) looks like mm/s² typed as m/s²."""
+    if value > MAX_GRAVITY_M_S2:
+        _warn(f"{field} = {value:g} m/s² is above {MAX_GRAVITY_M_S2:g} m/s² (10 g; the Earth's "
+              f"9.81 m/s²): given in mm/s²? ({value:g} mm/s² = {value * 1e-3:g} m/s²)")
 
 
 def housing_offset(field: str, value, clearance_m: float) -> None:

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rotordyn import _core
+from rotordyn._common import plausibility
 from rotordyn._common import validate as v
 from rotordyn.errors import InputError
 
@@ -42,7 +43,9 @@ GAP_FACTOR = 4.0  # film thickness put on the (pressure-prescribed) gap nodes, �
 def check_film_fields(b, where: str, n_stations: int | None) -> None:
     """The fields every film element has (station, D, L, c, μ, cavitation, grid,
     configuration, name); ``n_stations`` None skips the station range (a standalone
-    element)."""
+    element). Placed in a system (``n_stations`` given), every film element — plain, active,
+    fixed-geometry, tilting-pad, squeeze-film — gets the unit-slip warnings of its
+    diameter, clearance, viscosity and housing offsets (:mod:`rotordyn._common.plausibility`)."""
     v.text(f"{where}.name", b.name)
     if n_stations is not None:
         v.integer(f"{where}.station", b.station, lo=0, hi=n_stations - 1)
@@ -58,6 +61,12 @@ def check_film_fields(b, where: str, n_stations: int | None) -> None:
     v.integer(f"{where}.n_axial", b.n_axial, lo=2, hi=1024)
     v.finite(f"{where}.config_ax_m", b.config_ax_m)
     v.finite(f"{where}.config_ay_m", b.config_ay_m)
+    if n_stations is not None:  # placed in a system: unit-slip warnings, once, by its path
+        plausibility.length(f"{where}.diameter_m", b.diameter_m)
+        plausibility.clearance(f"{where}.clearance_m", b.clearance_m, b.diameter_m)
+        plausibility.viscosity(f"{where}.viscosity_pa_s", b.viscosity_pa_s)
+        plausibility.housing_offset(f"{where}.config_ax_m", b.config_ax_m, b.clearance_m)
+        plausibility.housing_offset(f"{where}.config_ay_m", b.config_ay_m, b.clearance_m)
 
 
 def check_speeds(speeds_hz, max_hz: float = v.MAX_SPEED_HZ, why: str = "") -> np.ndarray:

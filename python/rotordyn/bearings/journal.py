@@ -546,12 +546,7 @@ class JournalBearing:
 
 def check_placed_film(b, where: str, n_stations: int) -> None:
     """The checks of a plain or active journal bearing placed at a rotor station."""
-    check_film_fields(b, where, n_stations)
-    plausibility.length(f"{where}.diameter_m", b.diameter_m)
-    plausibility.clearance(f"{where}.clearance_m", b.clearance_m, b.diameter_m)
-    plausibility.viscosity(f"{where}.viscosity_pa_s", b.viscosity_pa_s)
-    plausibility.housing_offset(f"{where}.config_ax_m", b.config_ax_m, b.clearance_m)
-    plausibility.housing_offset(f"{where}.config_ay_m", b.config_ay_m, b.clearance_m)
+    check_film_fields(b, where, n_stations)  # with the unit-slip warnings
     for i, g in enumerate(b.grooves):
         if not isinstance(g, Groove):
             raise InputError(f"{where}.grooves[{i}]: expected a Groove, got {type(g).__name__}")

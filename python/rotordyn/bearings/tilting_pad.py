@@ -15,7 +15,9 @@ displacement u_k (outward along ψ_k):
 
 The film moment about the pivot and the radial pivot force follow by virtual work from the
 shape columns (−(R + t) sin(φ − ψ), cos(φ − ψ)). A pad is in equilibrium when its film
-moment is zero (plus ``tilt_stiffness_nm_per_rad``·δ if the pivot resists tilt).
+moment is zero (plus ``tilt_stiffness_n_m_per_rad``·δ if the pivot resists tilt; the key was
+``tilt_stiffness_nm_per_rad`` before, still read with a deprecation warning: "nm" reads as
+nanometres against the suffix vocabulary's ``_n_per_m``).
 """
 
 from __future__ import annotations
@@ -50,7 +52,7 @@ class TiltingPadBearing:
     orientation_deg: float | None = None
     pad_inertia_kg_m2: float = 1e-4
     pad_thickness_m: float = 0.0
-    tilt_stiffness_nm_per_rad: float = 0.0
+    tilt_stiffness_n_m_per_rad: float = 0.0
     pivot_stiffness_n_per_m: float = 0.0
     pad_mass_kg: float = 0.0
     cavitation: str = "reynolds"
@@ -59,8 +61,24 @@ class TiltingPadBearing:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
+    # deprecated spelling of tilt_stiffness_n_m_per_rad (read, moved there, then None)
+    tilt_stiffness_nm_per_rad: float | None = None
 
     def __post_init__(self):
+        old = self.tilt_stiffness_nm_per_rad
+        if old is not None:
+            import warnings
+
+            from rotordyn.errors import RotordynDeprecationWarning
+
+            if self.tilt_stiffness_n_m_per_rad != 0.0:
+                raise InputError("tilt_stiffness_nm_per_rad: the old name of "
+                                 "tilt_stiffness_n_m_per_rad; give one of them, not both")
+            warnings.warn("tilt_stiffness_nm_per_rad is renamed tilt_stiffness_n_m_per_rad "
+                          "(N·m/rad; 'nm' read as nanometres); the old key is read for now",
+                          RotordynDeprecationWarning, stacklevel=3)
+            object.__setattr__(self, "tilt_stiffness_n_m_per_rad", old)
+            object.__setattr__(self, "tilt_stiffness_nm_per_rad", None)
         self.check("tilting_pad_bearing", None)
 
     def check(self, where: str, n_stations: int | None) -> None:
@@ -77,7 +95,7 @@ class TiltingPadBearing:
             v.finite(f"{where}.orientation_deg", self.orientation_deg)
         v.positive(f"{where}.pad_inertia_kg_m2", self.pad_inertia_kg_m2)
         v.non_negative(f"{where}.pad_thickness_m", self.pad_thickness_m)
-        v.non_negative(f"{where}.tilt_stiffness_nm_per_rad", self.tilt_stiffness_nm_per_rad)
+        v.non_negative(f"{where}.tilt_stiffness_n_m_per_rad", self.tilt_stiffness_n_m_per_rad)
         v.non_negative(f"{where}.pivot_stiffness_n_per_m", self.pivot_stiffness_n_per_m)
         v.non_negative(f"{where}.pad_mass_kg", self.pad_mass_kg)
         if self.pivot_stiffness_n_per_m > 0 and not self.pad_mass_kg > 0:
@@ -137,7 +155,7 @@ class TiltingPadBearing:
             a = np.zeros(2 + n)  # δ_k = a · [qx, qy, extras]
             a[0], a[1], a[ik] = sp / lever, -cp / lever, 1.0 / lever
             M += self.pad_inertia_kg_m2 * np.outer(a, a)
-            K += self.tilt_stiffness_nm_per_rad * np.outer(a, a)
+            K += self.tilt_stiffness_n_m_per_rad * np.outer(a, a)
             P += np.outer(a, a)  # fallback equilibrium homotopy: tilts held at 0 first
             groups.append([ik] + ([ik + 1] if self.flexible_pivot else []))
             if self.flexible_pivot:

@@ -16,6 +16,7 @@ import sys
 
 from rotordyn._common import plausibility
 from rotordyn._common.info import DESCRIPTION
+from rotordyn._common.progress import long_work
 from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.cli import analyses, bearing, control, level1, report, sweeps
 from rotordyn.cli.common import ArgumentParser
@@ -24,6 +25,21 @@ from rotordyn.model import builtin as models
 
 COMMANDS = (analyses, level1, sweeps, report, bearing, control)
 """The command families, in the order of ``rotordyn --help``."""
+
+OWN_PROGRESS = ("report", "sweep")
+"""Commands with their own progress line (steps, chunks); every other command says on stderr
+that it is still running after a few seconds (:func:`rotordyn._common.progress.long_work`)."""
+
+
+def _work_text(args) -> str:
+    """``campbell`` and what it runs over (``campbell over speeds 5:120:1 Hz``)."""
+    text = str(args.command)
+    if getattr(args, "control_command", None):
+        text += f" {args.control_command}"
+    spec = getattr(args, "speeds_hz", None)
+    if isinstance(spec, str):
+        text += f" over speeds {spec} Hz"
+    return text
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -69,7 +85,8 @@ def main(argv: list[str] | None = None) -> int:
         args = build_parser().parse_args(argv)
         if getattr(args, "model", None) is not None and hasattr(args, "config_ay_m"):
             _check_offset(models.load(args.model), args)
-        return int(args.func(args) or 0)
+        with long_work(_work_text(args), enabled=args.command not in OWN_PROGRESS):
+            return int(args.func(args) or 0)
     except KeyboardInterrupt:
         print("rotordyn: interrupted", file=sys.stderr)
         return 130

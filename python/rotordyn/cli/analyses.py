@@ -200,13 +200,7 @@ def _cmd_equilibrium(args) -> int:
         print(json_text({
             "status": e.status, "message": e.message, "method": e.method,
             "speed_hz": e.speed_hz, "chamber_pressure_pa": e.chamber_pressure_pa,
-            "bearings": [
-                {"name": e.bearing_names[i], "config_ax_m": e.config_ax_m[i],
-                 "config_ay_m": e.config_ay_m[i], "journal_x_m": e.journal_x_m[i],
-                 "journal_y_m": e.journal_y_m[i], "x_over_c": e.x_over_c[i],
-                 "y_over_c": e.y_over_c[i], "h_min_m": e.h_min_m[i],
-                 "sleeve_m": e.sleeve_m.get(i, np.zeros(0))}
-                for i in range(len(e.bearing_names))],
+            "bearings": e.per_bearing(),  # keyed by bearing name, numbers not arrays
             "iterations": e.iterations, "reynolds_solves": e.reynolds_solves,
             "residual": e.residual,
         }))
@@ -245,7 +239,7 @@ def _cmd_static(args) -> int:
     r = analysis.static(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m)
     if args.json:
         print(json_text({"status": r.status, "message": r.message, "speed_hz": r.speed_hz,
-                         "weight_n": r.weight_n, "reactions": r.reactions.to_dict("records"),
+                         "weight_n": r.weight_n, "reactions": _by_name(r.reactions),
                          "along": r.to_frame().drop(columns="status").to_dict("list")}))
     else:
         print(table_text(r.reactions))
@@ -256,6 +250,16 @@ def _cmd_static(args) -> int:
         print(f"rotordyn: failed: {r.status}: {r.message}", file=sys.stderr)
         return 1
     return 0
+
+
+def _by_name(frame) -> dict:
+    """Rows of a (name, station, …) table keyed by name (``station <k>`` for an unnamed
+    support), the other columns as plain values."""
+    out = {}
+    for rec in frame.to_dict("records"):
+        name = rec.pop("name") or f"station {rec['station']}"
+        out[name if name not in out else f"{name} (station {rec['station']})"] = rec
+    return out
 
 
 def _cmd_stability(args) -> int:

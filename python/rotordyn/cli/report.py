@@ -11,7 +11,9 @@ def register(sub) -> None:
     s = sub.add_parser("report", help="the main job: analyses of a model written under --out")
     s.add_argument("model", help=MODEL_HELP)
     s.add_argument("--out", default="out", metavar="DIR",
-                   help="directory for report.txt, tables and figures")
+                   help="directory for report.txt, tables and figures (with --html also the "
+                        "mode shape at each critical speed, critical_mode_<k>.png, and the "
+                        "bearing coefficients over speed, bearing_coefficients.csv/.png)")
     s.add_argument("--html", default=None, metavar="FILE",
                    help="also write one self-contained HTML report (figures as SVG)")
     s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,

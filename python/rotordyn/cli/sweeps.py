@@ -49,6 +49,9 @@ def register(sub) -> None:
                    help="fix an axis of the sweep at its grid value nearest VALUE (SI), e.g. "
                         "--where bearing[0].clearance_m=1e-4; repeatable (a third varying axis "
                         "is refused, never averaged)")
+    s.add_argument("--facet", default=None, metavar="AXIS",
+                   help="stability-map: one map per value of this third varying axis (small "
+                        "multiples sharing the colour scale), instead of fixing it with --where")
     add_dpi(s)
     s.set_defaults(func=_cmd_plot)
 
@@ -84,6 +87,11 @@ def _cmd_plot(args) -> int:
     kw = ({"style": args.style, "scale": args.scale, "axis": args.axis}
           if args.kind == "waterfall" else {})
     kw["where"] = _where(args.where)
+    if args.facet is not None:
+        if args.kind != "stability-map":
+            raise InputError(f"--facet: only --kind stability-map draws small multiples, got "
+                             f"--kind {args.kind}")
+        kw["facet"] = args.facet
     kw["dpi"] = check_dpi(args.dpi)
     plot_dataset(read_dataset(args.dir), args.kind, args.out, **kw)
     print(f"wrote {args.out}", file=sys.stderr)

@@ -13,6 +13,7 @@ import scipy.sparse as sp
 
 from rotordyn import _core
 from rotordyn.errors import InputError
+from rotordyn._common import plausibility
 from rotordyn._common import validate as v
 from rotordyn.bearings import BEARING_TYPES
 from rotordyn.model.rotor import (REDUCTION_METHODS, STEEL, Material,  # noqa: F401
@@ -40,6 +41,7 @@ class System:
         object.__setattr__(self, "supports", tuple(self.supports))
         object.__setattr__(self, "bearings", tuple(self.bearings))
         v.non_negative("gravity_m_s2", self.gravity_m_s2)
+        plausibility.gravity("gravity_m_s2", self.gravity_m_s2)
         v.text("name", self.name)
         v.text("description", self.description)
         if not isinstance(self.rotor, Rotor):

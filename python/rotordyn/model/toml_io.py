@@ -8,17 +8,22 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 import tomllib
+import warnings
 
 import numpy as np
 from pathlib import Path
 
 from rotordyn.bearings import BEARING_TYPES, FlexibleSleeve, Groove
-from rotordyn.errors import InputError
+from rotordyn.errors import InputError, RotordynDeprecationWarning
 from rotordyn.model.rotor import STEEL, Disk, Material, Reduction, Rotor, ShaftSection, Support
 from rotordyn.model.stage import Stage
 
 SCHEMA = "rotordyn/model/1"
+RENAMED_KEYS = {"tilt_stiffness_nm_per_rad": "tilt_stiffness_n_m_per_rad"}
+"""Keys of ``[[bearing]]`` tables that were renamed: still read (with a
+:class:`~rotordyn.errors.RotordynDeprecationWarning` naming the path), written new."""
 
 
 def _fields(cls) -> list[str]:
@@ -44,6 +49,28 @@ def _build(cls, where: str, table: dict, **extra):
         return cls(**table, **extra)
     except TypeError as exc:  # missing required key
         raise InputError(f"{where}: {exc}") from None
+    except InputError as exc:  # a self-checking element: name the file's path, not its kind
+        raise type(exc)(at_path(where, str(exc), table)) from None
+
+
+_HEAD = re.compile(r"^([A-Za-z_]\w*)(\[\d+\])?(?=[.:\[ ])")
+
+
+def at_path(where: str, message: str, table: dict) -> str:
+    """``message`` of an element's own check with its field path rewritten to the model
+    file's (``tilting_pad_bearing.n_pads: …`` → ``bearing[0].n_pads: …``, ``speeds_hz: …``
+    → ``bearing[1].speeds_hz: …``, ``sleeve.x`` → ``bearing[0].sleeve.x``)."""
+    if message.startswith(where):
+        return message
+    m = _HEAD.match(message)
+    if m is None:
+        return f"{where}: {message}"
+    head = m.group(1)
+    if head in table:  # a field of this table (or a nested one) named without the element
+        return f"{where}.{message}"
+    if message[m.end():].startswith("."):  # the element's kind in place of its path
+        return where + message[m.end():]
+    return f"{where}: {message}"
 
 
 def read_text(path, field: str = "model") -> str:
@@ -112,6 +139,12 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
     red_t = doc.get("reduction", {})
     _check_keys("reduction", red_t, _fields(Reduction))
     reduction = _build(Reduction, "reduction", red_t)
+    if reduction.n_modes and reduction.method != "craig-bampton":
+        # (the Python API keeps n_modes for modes(..., reduction="craig-bampton"); a file
+        # that sets it for another method would have it silently ignored)
+        raise InputError(f"reduction.n_modes: only method \"craig-bampton\" adds fixed-"
+                         f"interface modes; got n_modes = {reduction.n_modes} with method "
+                         f"{reduction.method!r} (set method = \"craig-bampton\" or drop n_modes)")
 
     bearings = [_bearing_from_table(f"bearing[{i}]", t)
                 for i, t in enumerate(_array_of_tables("bearing", doc.get("bearing", [])))]
@@ -136,7 +169,13 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
 def _disk_from_table(where: str, t: dict, mats: list):
     """A disk by its inertias, or by its geometry and material (inertias computed)."""
     inertia = {"mass_kg", "ip_kg_m2", "id_kg_m2"}
+    if "station" not in t:
+        raise InputError(f"{where}.station: missing (the station the disk sits at)")
     if inertia & set(t):
+        if inertia - set(t):
+            raise InputError(f"{where}: the inertias come as all of mass_kg, ip_kg_m2, "
+                             f"id_kg_m2 (missing {sorted(inertia - set(t))}), or give the "
+                             "geometry (outer_diameter_m, width_m, material) instead")
         return _build(Disk, where, t)
     need = {"outer_diameter_m", "width_m", "material"} - set(t)
     if need:
@@ -147,8 +186,11 @@ def _disk_from_table(where: str, t: dict, mats: list):
     if mat is None:
         raise InputError(f"{where}.material: expected one of {sorted(known)}, got "
                          f"{t['material']!r}")
-    return Disk.from_geometry(t["station"], mat, t["width_m"], t["outer_diameter_m"],
-                              t.get("inner_diameter_m", 0.0), t.get("name", ""))
+    try:
+        return Disk.from_geometry(t["station"], mat, t["width_m"], t["outer_diameter_m"],
+                                  t.get("inner_diameter_m", 0.0), t.get("name", ""))
+    except InputError as exc:  # "disk.width_m: …" → "disk[2].width_m: …"
+        raise type(exc)(at_path(where, str(exc), t)) from None
 
 
 def _bearing_from_table(where: str, t: dict):
@@ -158,6 +200,14 @@ def _bearing_from_table(where: str, t: dict):
         raise InputError(f"{where}.type: expected one of {sorted(BEARING_TYPES)}, got {kind!r}")
     cls = BEARING_TYPES[kind]
     _check_keys(where, t, _fields(cls))
+    for old, new in RENAMED_KEYS.items():
+        if old in t:
+            if new in t:
+                raise InputError(f"{where}.{old}: the old name of {new}; give one of them")
+            warnings.warn(f"{where}.{old} is renamed {new} (N·m/rad; 'nm' reads as "
+                          "nanometres); the old key is read for now", RotordynDeprecationWarning,
+                          stacklevel=2)
+            t[new] = t.pop(old)
     grooves = []
     for j, g in enumerate(_array_of_tables(f"{where}.grooves", t.pop("grooves", []))):
         _check_keys(f"{where}.grooves[{j}]", g, _fields(Groove))
@@ -228,7 +278,10 @@ def system_to_toml(system) -> str:
         lines += ["", "[[disk]]"] + _table_lines(d)
     for s in system.supports:
         lines += ["", "[[support]]"] + _table_lines(s)
-    lines += ["", "[reduction]"] + _table_lines(system.reduction, defaults_too=True)
+    # n_modes only where the file's method uses it (the reader refuses it elsewhere)
+    lines += ["", "[reduction]"] + _table_lines(
+        system.reduction, defaults_too=True,
+        skip=() if system.reduction.method == "craig-bampton" else ("n_modes",))
     kinds = {cls: name for name, cls in BEARING_TYPES.items()}
     for b in system.bearings:
         lines += ["", "[[bearing]]", f"type = {_val(kinds[type(b)])}"]

@@ -74,10 +74,14 @@ def select(df: pd.DataFrame, where: dict | None, what: str) -> pd.DataFrame:
 
 
 @paper_style
-def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, title=None):
+def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, title=None,
+                       limits=None, colorbar=True, legend=True):
     """Map of max Re λ (1/s) on the grid ``x`` (n_x,) × ``y`` (n_y,), ``max_real`` (n_x, n_y),
     in the inputs' own units (``xname``/``yname`` are column names such as
-    ``chamber_pressure_pa``). ``failed``: (k, 2) points without a result (marked ×)."""
+    ``chamber_pressure_pa``). ``failed``: (k, 2) points without a result (marked ×).
+    ``limits`` (lo, hi) 1/s: the colour scale (default: this map's range), so that small
+    multiples share one; ``colorbar``/``legend`` False leave them to the caller (who gets the
+    mappable as ``ax._rotordyn_mesh`` and the legend entries as ``ax._rotordyn_handles``)."""
     import matplotlib.pyplot as plt
     from matplotlib.colors import TwoSlopeNorm
     from matplotlib.lines import Line2D
@@ -89,13 +93,18 @@ def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, ti
     ax = new_axes(ax, width=COLUMN_IN * 1.25, aspect=0.8)
     X, Y = np.meshgrid(np.asarray(x) * axis_scale(xname), np.asarray(y) * axis_scale(yname),
                        indexing="ij")
-    lo, hi = np.nanmin(Z), np.nanmax(Z)
+    require(np.isfinite(Z).any() or limits is not None,
+            "stability-map: no converged point to draw")
+    lo, hi = (np.nanmin(Z), np.nanmax(Z)) if limits is None else limits
     lo = min(lo, -1e-9)
     hi = max(hi, 1e-9)
     norm = TwoSlopeNorm(vcenter=0.0, vmin=lo, vmax=hi)
     m = ax.pcolormesh(X, Y, Z, cmap="RdBu_r", norm=norm, shading="nearest")
-    cb = ax.figure.colorbar(m, ax=ax, pad=0.02)
-    cb.set_label("largest real part of the eigenvalues, max Re λ (1/s)")
+    if colorbar:
+        cb = ax.figure.colorbar(m, ax=ax, pad=0.02)
+        cb.set_label(COLOR_LABEL)
+    # this map's own range decides its boundary
+    lo, hi = (np.nanmin(Z), np.nanmax(Z)) if np.isfinite(Z).any() else (0.0, 0.0)
     handles = []
     if lo < 0 < hi and np.isfinite(Z).sum() > 3:
         ax.contourf(X, Y, np.nan_to_num(Z, nan=-np.inf), levels=[0.0, np.inf], colors="none",
@@ -104,7 +113,7 @@ def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, ti
         handles.append(Line2D([], [], color="k", lw=1.8, label="stability boundary, Re λ = 0"))
         handles.append(Patch(facecolor="none", edgecolor="k", hatch="////",
                              label="unstable side (Re λ > 0)"))
-    else:
+    elif np.isfinite(Z).any():
         handles.append(Patch(facecolor="none", edgecolor="none",
                              label="stable everywhere" if hi <= 1e-9 else "unstable everywhere"))
     if failed is not None and len(failed):
@@ -115,33 +124,113 @@ def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, ti
                               label="no equilibrium / contact"))
     ax.set_xlabel(axis_label(xname))
     ax.set_ylabel(axis_label(yname))
-    ax.legend(handles=handles, loc="best")
+    if legend:
+        ax.legend(handles=handles, loc="best")
+    ax._rotordyn_mesh, ax._rotordyn_handles = m, handles
     ax.grid(False)
     if title:
         ax.set_title(title)
     return ax
 
 
-def stability_map(df: pd.DataFrame, ax=None, rotor_only: bool = True, where=None):
+COLOR_LABEL = "largest real part of the eigenvalues, max Re λ (1/s)"
+
+
+def _map_arrays(df: pd.DataFrame, axes: list[str], rotor_only: bool):
+    """(x, y, max Re λ (n_x, n_y), failed points (k, 2)) of a stability dataset over two axes."""
+    d = df[df["status"] == "ok"]
+    if rotor_only and "kind" in d:
+        d = d[d["kind"] == "rotor"]
+    xs, ys = np.sort(df[axes[0]].unique()), np.sort(df[axes[1]].unique())
+    g = d.groupby(axes)["eig_real_1_per_s"].max().unstack().reindex(index=xs, columns=ys)
+    pts = df.groupby(axes)["status"].apply(lambda s: (s != "ok").all())
+    failed = np.array([k for k, bad in pts.items() if bad], dtype=float).reshape(-1, 2)
+    return xs, ys, g.to_numpy(dtype=float), failed
+
+
+def stability_map(df: pd.DataFrame, ax=None, rotor_only: bool = True, where=None,
+                  facet: str | None = None):
     """Stability map from a stability sweep dataset over any two of its axes (operating
-    variables or model fields); a third varying axis must be fixed with ``where`` = {axis:
-    value} (the nearest grid value), never averaged over."""
+    variables or model fields); a third varying axis is either fixed with ``where`` = {axis:
+    value} (the nearest grid value) or drawn as small multiples with ``facet`` = that axis
+    (:func:`stability_map_facets`), never averaged over."""
+    if facet is not None:
+        require(ax is None, "stability-map: facet draws a figure of its own (no ax)")
+        return stability_map_facets(df, facet, rotor_only=rotor_only, where=where)
     df = select(df, where, "stability-map")
     axes = varying(df)
     require(len(axes) == 2, f"stability-map: expected exactly two varying axes, got "
                             f"{axes or 'none'}" + ("; fix the others with where={axis: value} "
-                                                   "(CLI: --where AXIS=VALUE)"
-                                                   if len(axes) > 2 else ""))
+                                                   "(CLI: --where AXIS=VALUE) or draw one map "
+                                                   "per value of one with facet=AXIS (CLI: "
+                                                   "--facet AXIS)" if len(axes) > 2 else ""))
     require("eig_real_1_per_s" in df, "stability-map: the dataset has no eigenvalues "
                                       "(eig_real_1_per_s); run a stability sweep")
-    d = df[df["status"] == "ok"]
-    if rotor_only and "kind" in d:
-        d = d[d["kind"] == "rotor"]
-    g = d.groupby(axes)["eig_real_1_per_s"].max().unstack()
-    pts = df.groupby(axes)["status"].apply(lambda s: (s != "ok").all())
-    failed = np.array([k for k, bad in pts.items() if bad], dtype=float).reshape(-1, 2)
-    return stability_map_grid(g.index.to_numpy(), g.columns.to_numpy(), g.to_numpy(),
-                              xname=axes[0], yname=axes[1], ax=ax, failed=failed)
+    x, y, z, failed = _map_arrays(df, axes, rotor_only)
+    return stability_map_grid(x, y, z, xname=axes[0], yname=axes[1], ax=ax, failed=failed)
+
+
+@paper_style
+def stability_map_facets(df: pd.DataFrame, facet: str, rotor_only: bool = True, where=None):
+    """Small multiples: one stability map over the two other varying axes per value of
+    ``facet`` (a third axis of the sweep), panels titled with that value, one colour scale
+    (max Re λ, 1/s) shared by all, one legend. Returns the first panel's Axes."""
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import TwoSlopeNorm
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    require("eig_real_1_per_s" in df, "stability-map: the dataset has no eigenvalues "
+                                      "(eig_real_1_per_s); run a stability sweep")
+    df = select(df, where, "stability-map")
+    axes = varying(df)
+    require(facet in axes, f"stability-map: --facet {facet}: not a varying axis of the dataset "
+                           f"(varying: {axes or 'none'})")
+    rest = [a for a in axes if a != facet]
+    require(len(rest) == 2, f"stability-map: --facet {facet} needs exactly two other varying "
+                            f"axes, got {rest or 'none'}" + ("; fix the others with --where "
+                                                             "AXIS=VALUE" if len(rest) > 2
+                                                             else ""))
+    values = np.sort(df[facet].unique())
+    panels = [(v, *_map_arrays(df[df[facet] == v], rest, rotor_only)) for v in values]
+    allz = np.concatenate([p[3].ravel() for p in panels])
+    require(np.isfinite(allz).any(), "stability-map: no converged point in the dataset")
+    lo, hi = float(np.nanmin(allz)), float(np.nanmax(allz))
+    n = len(panels)
+    ncols = min(n, 3)
+    nrows = -(-n // ncols)
+    fig, grid = plt.subplots(nrows, ncols, squeeze=False, layout="constrained",
+                             figsize=(COLUMN_IN * 0.95 * ncols + 0.9,
+                                      COLUMN_IN * 0.8 * nrows + 0.6))
+    sym, unit = axis_short(facet)
+    k = axis_scale(facet)
+    kinds = set()
+    for a, (v, x, y, z, failed) in zip(grid.flat, panels):
+        stability_map_grid(x, y, z, xname=rest[0], yname=rest[1], ax=a, failed=failed,
+                           limits=(lo, hi), colorbar=False, legend=False,
+                           title=f"{sym} = {v * k:.4g}" + (f" {unit}" if unit != "1" else ""))
+        kinds |= {h.get_label() for h in a._rotordyn_handles}
+    for a in grid.flat[n:]:
+        a.set_visible(False)
+    norm = TwoSlopeNorm(vcenter=0.0, vmin=min(lo, -1e-9), vmax=max(hi, 1e-9))
+    sm = plt.cm.ScalarMappable(norm=norm, cmap="RdBu_r")
+    cb = fig.colorbar(sm, ax=[a for a in grid.flat[:n]], pad=0.02, shrink=0.9)
+    cb.set_label(COLOR_LABEL)
+    handles = [Line2D([], [], color="k", lw=1.8, label="stability boundary, Re λ = 0"),
+               Patch(facecolor="none", edgecolor="k", hatch="////",
+                     label="unstable side (Re λ > 0)")]
+    handles = [h for h in handles if h.get_label() in kinds]
+    if "no equilibrium / contact" in kinds:
+        handles.append(Line2D([], [], ls="", marker="x", color="0.2",
+                              label="no equilibrium / contact"))
+    for label in ("stable everywhere", "unstable everywhere"):
+        if label in kinds:
+            handles.append(Patch(facecolor="none", edgecolor="none",
+                                 label=f"some panels {label}"))
+    fig.legend(handles=handles, loc="outside lower center", ncols=min(len(handles), 3),
+               fontsize=6)
+    fig.suptitle(f"stability maps, one per {axis_label(facet)} (shared colour scale)")
+    return grid.flat[0]
 
 
 @paper_style

@@ -4,7 +4,9 @@ SVG, no external resources) in the spirit of an API 684 lateral analysis:
 1. model summary and rotor drawing;
 2. undamped critical speed map (natural frequencies against bearing stiffness, with the
    bearings' own stiffness at the operating point);
-3. Campbell diagram with the critical speeds;
+2b. each bearing's stiffness and damping kxx … cyy over the analysed speeds (table, figure;
+   :mod:`rotordyn.report.sections`);
+3. Campbell diagram with the critical speeds, and (3b) the mode shape at each critical speed;
 4. unbalance response (API 684 unbalance U = 6350 W/N g·mm) with amplification factors,
    separation margins and the API 617 amplitude limit;
 5. stability: the logarithmic decrement of the forward rotor modes in the frequency window,
@@ -32,6 +34,11 @@ from rotordyn._common.info import __version__
 from rotordyn.model import builtin as models
 from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.report import level1 as level1_report
+from rotordyn._common.progress import Steps
+from rotordyn.plot.coefficients import bearing_coefficients as coefficient_figure
+from rotordyn.report.sections import (COEFFICIENT_HEADER,
+                                      bearing_coefficient_frame, coefficient_rows,
+                                      critical_mode_shapes)
 from rotordyn.report.criteria import (NOT_RESOLVED, SCREEN_LOG_DEC, Checks, amplitude_checks,
                                       api_unbalance, critical_speed_map, separation_checks,
                                       speed_range, stability_screen)
@@ -150,47 +157,44 @@ pre{background:#f6f6f6;padding:.5em;overflow-x:auto;font-size:.85em}"""
 
 
 
-def _progress(enabled: bool, text: str) -> None:
-    if enabled:
-        import sys
-
-        print(f"report: {text}", file=sys.stderr, flush=True)
+def _progress(steps, text: str) -> None:
+    """Start the next step of the report's progress line (:class:`Steps`)."""
+    steps.step(text)
 
 
-def _bearing_stiffness_curves(s, speeds, pc, ay):
+def _bearing_stiffness_curves(s, coeffs):
     """[(label, k (n,), speed (n,), ls)]: the direct stiffness k_xx, k_yy of the first bearing
-    element over ``speeds`` (its equilibrium at each speed), for the critical speed map."""
-    from rotordyn.bearings import BEARING_TYPES
-
-    if not s.bearings:
+    element over speed (``coeffs``: :func:`rotordyn.report.sections.bearing_coefficient_frame`,
+    pads condensed at synchronous whirl), for the critical speed map."""
+    if not s.bearings or coeffs.empty:
         return []
-    b = s.bearings[0]
-    kxx = np.full(len(speeds), np.nan)
-    kyy = np.full(len(speeds), np.nan)
-    for i, f in enumerate(speeds):
-        try:
-            lm = analysis.linearize(s, float(f), pc, ay)
-        except Exception:  # noqa: BLE001 - a failed point is a gap in the curve
-            continue
-        lab = list(lm.labels)
-        if lm.status in ("ok", "contact") and f"station{b.station}.x" in lab:
-            ix = lab.index(f"station{b.station}.x")
-            kxx[i], kyy[i] = lm.KH[ix, ix], lm.KH[ix + 1, ix + 1]
-    name = b.name or {c: n for n, c in BEARING_TYPES.items()}[type(b)]
-    return [(f"{name}: k_xx(Ω)", kxx, np.asarray(speeds), "--"),
-            (f"{name}: k_yy(Ω)", kyy, np.asarray(speeds), ":")]
+    name = coeffs["bearing"].iloc[0]
+    g = coeffs[coeffs["bearing"] == name]
+    sp = g["speed_hz"].to_numpy()
+    return [(f"{name}: k_xx(Ω)", g["kxx_n_per_m"].to_numpy(), sp, "--"),
+            (f"{name}: k_yy(Ω)", g["kyy_n_per_m"].to_numpy(), sp, ":")]
+
+
+def _save_png(fig, figure_dir, name: str) -> None:
+    """``fig`` as ``figure_dir/name`` at the style's 200 dpi (no-op without a directory)."""
+    if figure_dir is not None:
+        fig.savefig(Path(figure_dir) / name, dpi=200, bbox_inches="tight")
 
 
 def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                speeds_hz=None, chamber_pressure_pa: float | None = None,
-               progress: bool = True, level1_options: dict | None = None) -> Path:
+               progress: bool = True, level1_options: dict | None = None,
+               figure_dir=None) -> Path:
     """Write the HTML report of ``model`` (a built-in name or TOML path) to ``path``.
 
     ``operating_speed_hz`` (min, max) Hz: the operating range of the separation margins and
     amplitude checks (none given: no margins are assessed). ``speeds_hz``: the analysed speeds
     (default :func:`rotordyn.report.criteria.speed_range`). ``progress``: a line on stderr per
-    section. ``level1_options``: keywords of :func:`rotordyn.level1` for the Level I section
-    (``gas_density_kg_m3``, ``csr_limit``)."""
+    section, "which step, how far" (:class:`rotordyn._common.progress.Steps`).
+    ``level1_options``: keywords of :func:`rotordyn.level1` for the Level I section
+    (``gas_density_kg_m3``, ``csr_limit``). ``figure_dir``: also write the mode shape at each
+    critical speed and the bearing coefficient figure there as PNG, and the coefficients as
+    ``bearing_coefficients.csv``."""
     import datetime
     import hashlib
 
@@ -207,6 +211,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     ay = 0.0 if active else None
     if operating_speed_hz is None and paper:
         operating_speed_hz = (45.0, 55.0)
+    progress = Steps("report", 6 + bool(active), enabled=bool(progress))
     checks = Checks()
     parts: list[str] = []
     title = f"Lateral analysis of {html.escape(s.name or str(model))}"
@@ -267,14 +272,29 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                      f"{html.escape(stat.message)}</p>")
 
     # 2. undamped critical speed map with the bearings' K(Ω)
-    _progress(progress, "bearing stiffness over speed")
-    curves = _bearing_stiffness_curves(s, np.linspace(sp[0], sp[-1], 9), pc, ay)
+    _progress(progress, "bearing coefficients over speed")
+    coeffs = bearing_coefficient_frame(s, sp, pc, ay, progress=progress.item)
+    curves = _bearing_stiffness_curves(s, coeffs)
     parts.append("<h2>2. Undamped critical speed map</h2><figure>"
                  + svg(_critical_map_figure(ks, fmap, stations, curves))
                  + "<figcaption>Natural frequencies at rest with an isotropic spring k in place "
                  "of the bearing(s), each mode once; dashed/dotted: the first bearing's direct "
                  "stiffness against running speed (where a curve meets a mode: an undamped "
                  "critical speed).</figcaption></figure>")
+    if not coeffs.empty:
+        if figure_dir is not None:
+            coeffs.to_csv(Path(figure_dir) / "bearing_coefficients.csv", index=False)
+        fig = coefficient_figure(coeffs)
+        _save_png(fig, figure_dir, "bearing_coefficients.png")
+        parts.append("<h2>2b. Bearing coefficients over speed</h2><figure>" + svg(fig)
+                     + "<figcaption>Each bearing's stiffness and damping at its equilibrium in "
+                     "the system (dF = −K dq − C dq̇; x horizontal, y up)"
+                     + (", pads/sleeve condensed at synchronous whirl" if any(
+                         hasattr(b, "pad_films") or isinstance(b, ActiveJournalBearing)
+                         for b in s.bearings) else "")
+                     + ".</figcaption></figure>"
+                     + _table(COEFFICIENT_HEADER, [tuple(html.escape(str(c)) for c in r)
+                                                   for r in coefficient_rows(coeffs)]))
 
     # 3. Campbell
     _progress(progress, f"Campbell diagram, {sp.size} speeds")
@@ -292,6 +312,26 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                  "</figcaption></figure>"
                  + (_table(["critical speed (Hz)", "(rpm)", "whirl"], ctab) if ctab else
                     "<p>No forward critical speed (1× crossing) in the speed range.</p>"))
+
+    # 3b. the mode shape at each critical speed
+    _progress(progress, f"mode shapes at the critical speeds ({len(crit)} in range)")
+    shapes = critical_mode_shapes(s, crit["speed_hz"].to_numpy(), pc, ay,
+                                  progress=progress.item)
+    if shapes:
+        sec = ["<h2>3b. Mode shapes at the critical speeds</h2>"]
+        for k, m in enumerate(shapes, start=1):
+            if m.figure is None:
+                sec.append(f"<p class=\"nr\">Critical speed {k} ({m.speed_hz:.4g} Hz): mode "
+                           f"shape not resolved ({html.escape(m.why)}).</p>")
+                continue
+            _save_png(m.figure, figure_dir, f"critical_mode_{k}.png")
+            sec.append(f"<figure>{svg(m.figure)}<figcaption>Critical speed {k}: "
+                       f"{m.speed_hz:.4g} Hz ({60 * m.speed_hz:.0f} rpm), {m.whirl} mode at "
+                       f"{m.freq_hz:.4g} Hz, log dec {m.log_dec:.3g}: whirl orbits along the "
+                       "rotor, normalised to the largest.</figcaption></figure>")
+        if len(crit) > len(shapes):
+            sec.append(f"<p>The first {len(shapes)} of {len(crit)} critical speeds shown.</p>")
+        parts.append("".join(sec))
 
     # 4. unbalance response
     _progress(progress, "unbalance response")
@@ -359,6 +399,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                     Z[i, j] = np.max(st.eigenvalues.real[st.kind == "rotor"])
                 else:
                     failed.append((a, p))
+                progress.item(i * pcs.size + j + 1, ays.size * pcs.size)
         ax = stability_map_grid(ays, pcs, Z, xname="config_ay_m", yname="chamber_pressure_pa",
                                 failed=failed,
                                 title=f"active bearing: stability map at {speed:g} Hz")
@@ -385,4 +426,5 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     out = Path(path)
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(doc, encoding="utf-8")
+    progress.done()
     return out

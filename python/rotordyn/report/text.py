@@ -93,7 +93,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         "frequencies_hz": r.frequencies_hz.tolist(),
         "full_frequencies_hz": full.frequencies_hz.tolist()}, indent=2) + "\n")
     ax = full.plot(modes=range(0, min(6, len(full.eigenvalues)), 2))
-    ax.figure.savefig(outdir / "rotor_mode_shapes.png", dpi=120, bbox_inches="tight")
+    ax.figure.savefig(outdir / "rotor_mode_shapes.png", dpi=200, bbox_inches="tight")
 
     active = [b for b in s.bearings if isinstance(b, ActiveJournalBearing)]
     # API 617 Level I (with the model's stages, at the top of the operating range)
@@ -167,7 +167,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         c.to_frame().to_csv(outdir / "campbell.csv", index=False)
         ax = c.plot()
         ax.set_title("natural frequencies at p_c = 0.4 MPa (paper Fig. 12)")
-        ax.figure.savefig(outdir / "campbell.png", dpi=120, bbox_inches="tight")
+        ax.figure.savefig(outdir / "campbell.png", dpi=200, bbox_inches="tight")
 
         if paper:
             say()
@@ -178,7 +178,8 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         from rotordyn.report.html import write_html
 
         write_html(model, html, text_lines=lines, operating_speed_hz=operating_speed_hz,
-                   speeds_hz=speeds_hz, level1_options=level1_options)
+                   speeds_hz=speeds_hz, level1_options=level1_options,
+                   figure_dir=outdir)
         print(f"wrote {html}", file=sys.stderr)
     print(f"wrote {outdir}/report.txt and tables/figures", file=sys.stderr)
     return 0

@@ -8,8 +8,10 @@ from rotordyn.results.stability import LinearModel, StabilityResult
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 from rotordyn.results.statespace import StateSpaceResult
 from rotordyn.results.static import StaticResult
+from rotordyn.results.store import load_result, save_result
 from rotordyn.results.transient import TransientResult
 from rotordyn.results.unbalance import UnbalanceResult
 
-__all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel", "StabilityResult",
-           "ThresholdResult", "BoundaryResult", "UnbalanceResult", "StateSpaceResult", "TransientResult", "StaticResult"]
+__all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel",
+           "StabilityResult", "ThresholdResult", "BoundaryResult", "UnbalanceResult",
+           "StateSpaceResult", "TransientResult", "StaticResult", "load_result", "save_result"]

@@ -9,7 +9,22 @@ ROWS = 12
 
 
 class Display:
-    """Mixin of the result dataclasses: ``_repr_html_`` from ``repr`` and ``to_frame()``."""
+    """Mixin of the result dataclasses: ``_repr_html_`` from ``repr`` and ``to_frame()``;
+    ``save(path)`` and ``load(path)`` (:mod:`rotordyn.results.store`)."""
+
+    def save(self, path):
+        """Write this result to ``path`` (a ``.npz`` archive with JSON metadata); read it back
+        with ``type(result).load(path)`` or :func:`rotordyn.load_result`. Returns the path."""
+        from rotordyn.results.store import save_result
+
+        return save_result(self, path)
+
+    @classmethod
+    def load(cls, path):
+        """The result of this class saved in ``path`` (another kind: InputError)."""
+        from rotordyn.results.store import load_result
+
+        return load_result(path, kind=cls)
 
     def _repr_html_(self) -> str:
         head = f"<pre>{html.escape(repr(self))}</pre>"

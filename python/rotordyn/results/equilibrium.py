@@ -60,6 +60,30 @@ class EquilibriumResult(Display):
         """True for a converged equilibrium (status ``"ok"`` or ``"contact"``)."""
         return self.status in CONVERGED
 
+    def per_bearing(self) -> dict[str, dict]:
+        """Each bearing's values keyed by its name (``bearing[i]`` when it has none), as plain
+        numbers rather than arrays over the bearings: ``{name: {"config_ax_m", "config_ay_m",
+        "journal_x_m", "journal_y_m", "x_over_c", "y_over_c", "eccentricity_ratio",
+        "h_min_m", "h_min_angle_deg", "clearance_m"[, "sleeve_m" (list, m)]}}``."""
+        out = {}
+        for i, n in enumerate(self.bearing_names):
+            d = {k: float(getattr(self, k)[i]) for k in (
+                "config_ax_m", "config_ay_m", "journal_x_m", "journal_y_m", "x_over_c",
+                "y_over_c", "eccentricity_ratio", "h_min_m", "h_min_angle_deg", "clearance_m")}
+            if i in self.sleeve_m:
+                d["sleeve_m"] = [float(x) for x in self.sleeve_m[i]]
+            out[str(n or f"bearing[{i}]")] = d
+        return out
+
+    def bearing(self, name: str) -> dict:
+        """One bearing's values (:meth:`per_bearing`) by name."""
+        d = self.per_bearing()
+        if name not in d:
+            from rotordyn.errors import InputError
+
+            raise InputError(f"bearing: expected one of {list(d)}, got {name!r}")
+        return d[name]
+
     @property
     def x_over_c(self) -> np.ndarray:
         return self.journal_x_m / self.clearance_m

@@ -10,6 +10,7 @@ import pandas as pd
 from rotordyn.results._display import Display
 
 from rotordyn.results.stability import LinearModel
+from rotordyn.units import unit_of
 
 
 @dataclass(frozen=True)
@@ -85,13 +86,37 @@ class StateSpaceResult(Display):
                           outputs=list(self.output_names), states=list(self.state_names))
 
     def to_frame(self) -> pd.DataFrame:
-        """The matrices as a tidy table (matrix, row, col, value)."""
+        """The matrices as a tidy table (matrix, row, col, value, unit): ``unit`` is the
+        entry's own (the value column mixes them): A and B map to the derivative of the row's
+        state (its unit per second), C and D to the row's output, per unit of the column's
+        state or input, e.g. ``(m/s)/(N)``."""
         rows = []
         for name, M, rn, cn in (("A", self.A, self.state_names, self.state_names),
                                 ("B", self.B, self.state_names, self.input_names),
                                 ("C", self.C, self.output_names, self.state_names),
                                 ("D", self.D, self.output_names, self.input_names)):
+            ru = [coordinate_unit(r) + ("/s" if name in "AB" else "") for r in rn]
+            cu = [coordinate_unit(c) for c in cn]
             for i in range(M.shape[0]):
                 for j in range(M.shape[1]):
-                    rows.append((name, rn[i], cn[j], M[i, j]))
-        return pd.DataFrame(rows, columns=["matrix", "row", "col", "value"])
+                    rows.append((name, rn[i], cn[j], M[i, j], f"({ru[i]})/({cu[j]})"))
+        return pd.DataFrame(rows, columns=["matrix", "row", "col", "value", "unit"])
+
+
+def coordinate_unit(name: str) -> str:
+    """The unit of a state, input or output name: a coordinate label (``station2.x`` m,
+    ``station2.rot_x`` rad, ``<bearing>.sleeve1`` m, ``<bearing>.pad0.eta`` m, ``cb_mode1``
+    modal, 1), its rate ``d(…)/dt`` (that unit per second), or a suffixed name
+    (``force_x_n[4]`` N, ``velocity_x_m_s[4]`` m/s)."""
+    if name.startswith("d(") and name.endswith(")/dt"):
+        inner = coordinate_unit(name[2:-4])
+        return "1/s" if inner == "1" else f"{inner}/s"
+    base = name.split("[")[0]
+    if unit_of(base) != "1":
+        return unit_of(base)
+    last = name.rsplit(".", 1)[-1]
+    if last.startswith("rot_"):
+        return "rad"
+    if last in ("x", "y", "eta", "pivot") or last.startswith("sleeve"):
+        return "m"
+    return "1"

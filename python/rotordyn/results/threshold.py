@@ -40,7 +40,10 @@ class ThresholdResult(Display):
                 f"{tuple(self.bounds)}, {self.evaluations} evaluations>")
 
     def to_frame(self) -> pd.DataFrame:
-        row = dict(self.fixed)
+        # fixed inputs that apply: config_ay_m is None (and p_c moot) without an active bearing
+        row = {k: val for k, val in self.fixed.items() if val is not None}
+        if self.fixed.get("config_ay_m", 0.0) is None:
+            row.pop("chamber_pressure_pa", None)
         row.update({"vary": self.vary, self.vary: self.value,
                     "whirl_frequency_hz": self.whirl_frequency_hz,
                     "whirl_ratio": self.whirl_ratio, "stable_side": self.stable_side,
