@@ -3,6 +3,7 @@
 from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.results.modes import ModesResult
+from rotordyn.results.periodic import PeriodicOrbitResult
 from rotordyn.results.stability import LinearModel, StabilityResult
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 from rotordyn.results.statespace import StateSpaceResult
@@ -11,4 +12,5 @@ from rotordyn.results.transient import TransientResult
 from rotordyn.results.unbalance import UnbalanceResult
 
 __all__ = ["ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel", "StabilityResult",
-           "ThresholdResult", "BoundaryResult", "UnbalanceResult", "StateSpaceResult", "TransientResult", "StaticResult"]
+           "ThresholdResult", "BoundaryResult", "UnbalanceResult", "StateSpaceResult", "TransientResult", "StaticResult",
+           "PeriodicOrbitResult"]
