@@ -9,6 +9,7 @@ References:
   transient started off the orbit shrinks per period by the critical Floquet multiplier.
 """
 
+import dataclasses
 from pathlib import Path
 
 import numpy as np
@@ -98,12 +99,12 @@ def test_floquet_multiplier_equals_the_decay_of_a_transient_off_the_orbit(plain_
     """Started off the forced orbit along the (real part of the) eigenvector of the critical
     multiplier μ_c (a complex pair here), a transient's deviation from the orbit, sampled once
     per period and expressed in the eigenvector basis of the monodromy matrix, shrinks by
-    |μ_c| per period along that eigenvector: the ratio over periods 2..4 (after the faster
-    modes died) within 2 %. The transient (CVODE, rtol 1e-10) knows nothing of the
+    |μ_c| per period along that eigenvector (1 % of the clearance: the linear regime): the
+    ratio over two periods within 2 %. The transient (CVODE, rtol 1e-10) knows nothing of the
     sensitivities."""
     f = 50.0
     ub = [(3, 2e-4, 0.0)]
-    res = periodic_orbit(plain_system, f, kind="forced", unbalances=ub)
+    res = periodic_orbit(plain_system, f, kind="forced", unbalances=ub, rtol=1e-9, tol=1e-7)
     assert res.status == "ok", res.message
     mu_c = res.critical_multiplier
     w, V = np.linalg.eig(res.monodromy)
@@ -111,15 +112,15 @@ def test_floquet_multiplier_equals_the_decay_of_a_transient_off_the_orbit(plain_
     n = res.r.shape[1]
     x0 = np.concatenate([res.r[0], res.v[0]])
     dvec = np.real(V[:, k])
-    dvec = dvec / np.abs(dvec[:n]).max() * 1e-3 * res.length_scale_m
+    dvec = dvec / np.abs(dvec[:n]).max() * 1e-2 * res.length_scale_m
     per = 40
-    tr = rd.transient(plain_system, 5 / f, f, unbalances=ub, r0=x0[:n] + dvec[:n],
-                      v0=x0[n:] + dvec[n:], n_out=5 * per + 1, rtol=1e-10, atol_m=1e-14)
+    tr = rd.transient(plain_system, 3 / f, f, unbalances=ub, r0=x0[:n] + dvec[:n],
+                      v0=x0[n:] + dvec[n:], n_out=3 * per + 1, rtol=1e-10, atol_m=1e-14)
     assert tr.status == "ok"
     Vi = np.linalg.inv(V)
     z = [abs((Vi @ (np.concatenate([tr.r[i * per], tr.v[i * per]]) - x0))[k])
-         for i in range(5)]
-    ratio = (z[4] / z[2]) ** 0.5
+         for i in range(3)]
+    ratio = (z[2] / z[0]) ** 0.5
     assert ratio == pytest.approx(abs(mu_c), rel=0.02)
 
 
@@ -159,3 +160,31 @@ def test_period_from_transient_needs_an_oscillation(plain_system):
     tr = rd.transient(plain_system, 0.02, 50.0, n_out=41)
     with pytest.raises(rd.InputError, match="start"):
         period_from_transient(tr)
+
+
+def test_trivial_multiplier_of_a_limit_cycle_is_one():
+    """The paper rig at a_y = −1.85 mm, 50 Hz, p_c = 0.05 MPa with a full (uncavitated) film
+    on a coarse grid (36 × 6, for speed):
+    a smooth vector field, whose stable self-excited cycle (found from a transient's last
+    part) has the trivial Floquet multiplier 1 (the flow direction: Φ f(x0) = f(x0)) to 1e-8
+    with the sensitivities in the error test (the final pass) at rtol 1e-9 (measured 4.6e-9,
+    5.7e-10 at rtol 1e-10).
+    With cavitation (Swift–Stieber active set, or Gumbel's clip) the film force has kinks and
+    the same check plateaus near 1e-7 (docs/nonlinear.md)."""
+    rig = rd.models.paper_rig()
+    b = rig.bearings[0]
+    rig = dataclasses.replace(rig, bearings=(dataclasses.replace(
+        b, cavitation="none", n_circ=36, n_axial=6),) + tuple(rig.bearings[1:]))
+    tr = rd.transient(rig, 1.5, 50.0, 0.05e6, -1.85e-3, disturbance_m=(0.0, 3e-5),
+                      n_out=7501)
+    assert tr.status == "ok"
+    res = rd.periodic_orbit(rig, 50.0, 0.05e6, -1.85e-3, start=tr, rtol=1e-9, atol_m=1e-12,
+                            tol=1e-8)
+    assert res.status == "ok", res.message
+    assert res.kind == "autonomous" and res.trivial_index >= 0
+    assert abs(res.trivial_multiplier - 1) < 1e-8
+    assert res.stable and res.critical_type == "neimark_sacker"
+    assert 1 / res.period_s / 50.0 == pytest.approx(0.49, abs=0.02)  # half-frequency whirl
+    df = res.to_frame()
+    assert {"t_s", "journal_x_m", "journal_y_m", "period_s", "stable"} <= set(df.columns)
+    assert len(res.multipliers_frame()) == 18

@@ -49,6 +49,12 @@ struct ShootingOptions {
   double tol = 1e-7;           ///< converged when ‖D⁻¹(φ_T(x0) − x0)‖∞ < tol
   double length_scale = 0.0;   ///< L, m; 0: the smallest film clearance (1e-3 m if no film)
   int max_iter = 30;           ///< Newton iterations (each one period with sensitivities)
+  /// Sensitivities in CVODES's local error test (CVodeSetSensErrCon) during the Newton
+  /// iterations. Off: the steps are chosen for the orbit alone and the sensitivities follow
+  /// them (staggered corrector) — a cheaper, less accurate Newton matrix. The converged
+  /// orbit is always integrated once more with the sensitivities in the error test: the
+  /// monodromy reported is error-controlled either way.
+  bool sensitivity_error_control = false;
 };
 
 /// Floquet multipliers of a monodromy matrix and the type of the critical one.

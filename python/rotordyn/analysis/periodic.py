@@ -51,8 +51,9 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                    config_ay_m: float | None = None, *, kind: str = "autonomous",
                    start=None, period_s: float | None = None, subharmonic: int = 1,
                    unbalances=(), n_out: int = 201, rtol: float = 1e-8,
-                   atol_m: float = 1e-12, tol: float = 1e-7, max_iter: int = 30,
-                   max_steps: int = 200000) -> PeriodicOrbitResult:
+                   atol_m: float = 1e-12, tol: float = 1e-6, max_iter: int = 30,
+                   max_steps: int = 200000,
+                   sensitivity_error_control: bool = False) -> PeriodicOrbitResult:
     """Periodic orbit of eq. 12 by single shooting, with its Floquet multipliers.
 
     Unknowns: the state x0 = (r, ṙ) (2n) at t0, and for ``kind="autonomous"`` the period T
@@ -193,6 +194,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     opt.cvode = c
     opt.tol = float(tol)
     opt.max_iter = int(max_iter)
+    opt.sensitivity_error_control = v.boolean("sensitivity_error_control",
+                                              sensitivity_error_control)
     res = _core.periodic_orbit(asm.solver, inp, opt)
     status, message = res.status, res.message
     bcs = asm.bearings
