@@ -188,3 +188,12 @@ def test_trivial_multiplier_of_a_limit_cycle_is_one():
     df = res.to_frame()
     assert {"t_s", "journal_x_m", "journal_y_m", "period_s", "stable"} <= set(df.columns)
     assert len(res.multipliers_frame()) == 18
+    assert "stable" in repr(res) and "neimark_sacker" in repr(res)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ax, axm = res.plot()
+    assert len(axm.lines) >= 3  # unit circle, multipliers, trivial, critical
+    plt.close("all")

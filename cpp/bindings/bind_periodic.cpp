@@ -32,7 +32,8 @@ void bind_periodic(py::module_& m) {
       .def_readwrite("tol", &ShootingOptions::tol)
       .def_readwrite("length_scale", &ShootingOptions::length_scale)
       .def_readwrite("max_iter", &ShootingOptions::max_iter)
-      .def_readwrite("sensitivity_error_control", &ShootingOptions::sensitivity_error_control);
+      .def_readwrite("sensitivity_error_control", &ShootingOptions::sensitivity_error_control)
+      .def_readwrite("sensitivity_rtol", &ShootingOptions::sensitivity_rtol);
   py::class_<Floquet>(m, "Floquet")
       .def_readonly("multipliers", &Floquet::multipliers)
       .def_readonly("trivial", &Floquet::trivial)

@@ -169,7 +169,7 @@ struct FlowRun {
 
 // Integrate x0 over [t0, t0 + T] (with the monodromy when `sens`), sampling n_out points.
 FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool sens, int n_out,
-                 const CvodeOptions& opt, bool sens_errcon) {
+                 const CvodeOptions& opt, bool sens_errcon, double sens_rtol) {
   FlowRun out;
   const Eigen::Index N = F.N, n = F.n;
   // Each flow starts the films' cavitation sets afresh (a function of its inputs only).
@@ -235,9 +235,9 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
     N_Vector* atolS = N_VCloneVectorArray(static_cast<int>(N), y);
     for (Eigen::Index j = 0; j < N; ++j) {
       Eigen::Map<Eigen::VectorXd> s(N_VGetArrayPointer(atolS[j]), N);
-      s = opt.rtol * AT / AT(j);
+      s = sens_rtol * AT / AT(j);
     }
-    const int f = CVodeSensSVtolerances(mem, opt.rtol, atolS);
+    const int f = CVodeSensSVtolerances(mem, sens_rtol, atolS);
     N_VDestroyVectorArray(atolS, static_cast<int>(N));
     check(f, "CVodeSensSVtolerances");
     check(CVodeSetSensErrCon(mem, sens_errcon ? SUNTRUE : SUNFALSE), "CVodeSetSensErrCon");
@@ -315,6 +315,8 @@ void validate(const SystemSolver& solver, const PeriodicInput& in, const Shootin
   require(c.max_steps > 0, "cvode options: max_steps must be positive");
   require(opt.tol > 0 && std::isfinite(opt.tol), "tol: expected a value > 0");
   require(opt.max_iter >= 1, "max_iter: expected at least 1");
+  require(opt.sensitivity_rtol >= 0 && opt.sensitivity_rtol < 1,
+          "sensitivity_rtol: expected a value in [0, 1)");
   require(opt.length_scale >= 0 && std::isfinite(opt.length_scale),
           "length_scale: expected a value >= 0 m");
 }
@@ -372,7 +374,7 @@ void flow_map(SystemSolver& solver, const PeriodicInput& in, const CvodeOptions&
   setup_flow(F, solver, in);
   Eigen::VectorXd x0(F.N);
   x0 << in.r0, in.v0;
-  FlowRun run = run_flow(F, x0, in.t0, in.period, true, 2, opt, true);
+  FlowRun run = run_flow(F, x0, in.t0, in.period, true, 2, opt, true, opt.rtol);
   if (run.flag < 0) throw SundialsError(run.flag, "CVode", run.why);
   xT = run.xT;
   monodromy = run.Phi;
@@ -415,7 +417,8 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
   // it, so the monodromy and the multipliers reported have CVODES's error control.
   bool errcon = opt.sensitivity_error_control;
   for (int it = 0; it <= opt.max_iter + 1; ++it) {
-    run = run_flow(F, x, in.t0, T, true, in.n_out, opt.cvode, errcon);
+    run = run_flow(F, x, in.t0, T, true, in.n_out, opt.cvode, errcon,
+                   opt.sensitivity_rtol > 0 ? opt.sensitivity_rtol : opt.cvode.rtol);
     out.iterations = it + 1;
     out.steps += run.steps;
     out.rhs_evals += run.rhs_evals;

@@ -55,6 +55,9 @@ struct ShootingOptions {
   /// orbit is always integrated once more with the sensitivities in the error test: the
   /// monodromy reported is error-controlled either way.
   bool sensitivity_error_control = false;
+  /// Relative tolerance of the sensitivities in the error test (their absolute tolerances:
+  /// this × atol_i / atol_j for ∂x_i/∂x0_j); 0: cvode.rtol.
+  double sensitivity_rtol = 0.0;
 };
 
 /// Floquet multipliers of a monodromy matrix and the type of the critical one.

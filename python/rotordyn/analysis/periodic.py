@@ -53,7 +53,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                    unbalances=(), n_out: int = 201, rtol: float = 1e-8,
                    atol_m: float = 1e-12, tol: float = 1e-6, max_iter: int = 30,
                    max_steps: int = 200000,
-                   sensitivity_error_control: bool = False) -> PeriodicOrbitResult:
+                   sensitivity_error_control: bool = False,
+                   sensitivity_rtol: float | None = None) -> PeriodicOrbitResult:
     """Periodic orbit of eq. 12 by single shooting, with its Floquet multipliers.
 
     Unknowns: the state x0 = (r, ṙ) (2n) at t0, and for ``kind="autonomous"`` the period T
@@ -89,6 +90,13 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         film clearance; velocities: × max(Ω, 2π/T)).
     max_iter, max_steps
         Newton iterations; CVODES steps per period.
+    sensitivity_error_control
+        Keep the sensitivities in CVODES's error test during the Newton iterations too
+        (default: only in the final pass over the converged orbit, which gives the reported
+        monodromy and multipliers).
+    sensitivity_rtol
+        Relative tolerance of the sensitivities in the error test (default ``rtol``): the
+        accuracy of the monodromy matrix and the multipliers; looser is cheaper.
 
     Returns
     -------
@@ -194,6 +202,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     opt.cvode = c
     opt.tol = float(tol)
     opt.max_iter = int(max_iter)
+    if sensitivity_rtol is not None:
+        opt.sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
     opt.sensitivity_error_control = v.boolean("sensitivity_error_control",
                                               sensitivity_error_control)
     res = _core.periodic_orbit(asm.solver, inp, opt)
