@@ -261,3 +261,19 @@ def test_nonlinear_forced_orbit_equals_harmonic_balance():
     amp = np.abs(rs - rs.mean(0)).max()
     assert np.hypot(a[1], b[1]).max() > 0.02 * np.hypot(a[0], b[0]).max()  # nonlinear
     assert np.abs(r_hb - rs).max() < 1e-6 * amp
+
+
+def test_cli_periodic_orbit(capsys):
+    """``rotordyn periodic-orbit``: a forced orbit of the linear compressor (JSON), and bad
+    input (a forced orbit without unbalance) exits 2 naming the flag's field."""
+    import json
+
+    from rotordyn.cli import main
+
+    model = str(MODELS / "compressor_linear.toml")
+    assert main(["periodic-orbit", model, "--kind", "forced", "--speed-hz", "60",
+                 "--unbalance", "3,1e-3,30", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["status"] == "ok" and out["stable"] and out["period_s"] == pytest.approx(1 / 60)
+    assert main(["periodic-orbit", model, "--kind", "forced"]) == 2
+    assert "unbalances" in capsys.readouterr().err
