@@ -349,3 +349,16 @@ def test_subharmonic_and_transient_start_of_a_forced_orbit(plain_system):
     assert late.status == "ok"
     assert late.t[0] == pytest.approx(12.25 / f)
     assert np.abs(late.r[0] - one.r[50]).max() < err
+
+
+def test_same_inputs_same_orbit_whatever_ran_before(plain_system):
+    """Each flow starts the films' cavitation sets afresh and the forced start is the
+    equilibrium from the concentric start: a repeated call, after other analyses on the
+    same system, gives the same orbit and multipliers bit for bit."""
+    kw = dict(kind="forced", unbalances=[(3, 2e-4, 0.0)], rtol=1e-6, atol_m=1e-10, tol=1e-4)
+    a = periodic_orbit(plain_system, 50.0, **kw)
+    rd.stability(plain_system, 70.0)
+    rd.transient(plain_system, 0.01, 30.0, n_out=11)
+    b = periodic_orbit(plain_system, 50.0, **kw)
+    assert a.status == b.status == "ok"
+    assert np.array_equal(a.r, b.r) and np.array_equal(a.multipliers, b.multipliers)
