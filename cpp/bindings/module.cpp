@@ -13,6 +13,7 @@ PYBIND11_MODULE(_core, m) {
   bind_system(m);
   bind_bearings(m);
   bind_transient(m);
+  bind_periodic(m);
   bind_sleeve(m);
   bind_batch(m);
 }

@@ -2,7 +2,7 @@
 // dense linear solver per call: nothing global, so threads and processes can run it at once.
 #include "rotordyn/transient.hpp"
 
-#include <cvode/cvode.h>
+#include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>

@@ -1,7 +1,7 @@
 """Command-line interface: ``rotordyn <command> ...``, one module per command family
 (:mod:`.analyses` single operating points, :mod:`.level1` API 617 Level I, :mod:`.bearing` one bearing, :mod:`.sleeve` the
 active bearing's sleeve, :mod:`.sweeps` sweeps and their figures, :mod:`.report` the report,
-:mod:`.control` control-law synthesis), registered here on one parser; shared helpers in
+:mod:`.control` control-law synthesis, :mod:`.nonlinear` periodic orbits), registered here on one parser; shared helpers in
 :mod:`.common`.
 
 Exit codes: 0 success, 2 bad input (the message names the field), 1 runtime failure.
@@ -18,12 +18,12 @@ from rotordyn._common import plausibility
 from rotordyn._common.info import DESCRIPTION
 from rotordyn._common.progress import long_work
 from rotordyn.bearings import ActiveJournalBearing
-from rotordyn.cli import analyses, bearing, control, level1, report, sweeps
+from rotordyn.cli import analyses, bearing, control, level1, nonlinear, report, sweeps
 from rotordyn.cli.common import ArgumentParser
 from rotordyn.errors import InputError, OutputError, RotordynError, RotordynWarning
 from rotordyn.model import builtin as models
 
-COMMANDS = (analyses, level1, sweeps, report, bearing, control)
+COMMANDS = (analyses, level1, nonlinear, sweeps, report, bearing, control)
 """The command families, in the order of ``rotordyn --help``."""
 
 OWN_PROGRESS = ("report", "sweep")

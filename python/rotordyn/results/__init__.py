@@ -4,6 +4,7 @@ from rotordyn.results.campbell import CampbellResult
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.results.level1 import Level1Result
 from rotordyn.results.modes import ModesResult
+from rotordyn.results.periodic import PeriodicOrbitResult
 from rotordyn.results.stability import LinearModel, StabilityResult
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 from rotordyn.results.statespace import StateSpaceResult
@@ -14,4 +15,5 @@ from rotordyn.results.unbalance import UnbalanceResult
 
 __all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel",
            "StabilityResult", "ThresholdResult", "BoundaryResult", "UnbalanceResult",
-           "StateSpaceResult", "TransientResult", "StaticResult", "load_result", "save_result"]
+           "StateSpaceResult", "TransientResult", "StaticResult", "PeriodicOrbitResult",
+           "load_result", "save_result"]

@@ -1,0 +1,145 @@
+"""Limit cycle of the paper rig by shooting beside the same orbit reached by transient
+integration (issue 19; docs/nonlinear.md prints these numbers).
+
+Rig (``rd.models.paper_rig()``) at 50 Hz, a_y = −1.85 mm, p_c = 0.05 MPa (paper Fig. 11: a
+stable limit cycle). Both routes start from the static equilibrium with the journal disturbed
+by 0.1 c upwards:
+
+* transient: CVODE (rtol 1e-6, the transient's default) for ``--t-end`` s; the settled orbit
+  is the last period (period from the crossings of the journal's mean position);
+* shooting: the same transient for ``--t-start`` s only, then :func:`rotordyn.periodic_orbit`
+  (kind ``"autonomous"``, rtol 1e-6, tol 1e-4 of the clearance), Floquet multipliers included
+  (monodromy to ``--sensitivity-rtol``, default 1e-3).
+
+Accuracy of each against a reference cycle (shooting at rtol 1e-9, tol 1e-7): amplitude
+(largest distance of the journal from the orbit's mean), period, and shape (largest distance
+of the orbit's points from the reference curve, relative to the amplitude). Timing: median
+of ``--repeat`` interleaved repeats, wall and CPU, one thread, load printed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).parent))
+from _common import footer, header, interleaved, pin_threads  # noqa: E402
+
+import rotordyn as rd  # noqa: E402
+from rotordyn.analysis.periodic import period_from_transient  # noqa: E402
+
+SPEED_HZ, PC_PA, AY_M, C_M = 50.0, 0.05e6, -1.85e-3, 3e-4
+OUT_PER_S = 10_000  # transient output rate (200 per revolution, 400 per whirl period)
+
+
+def start_transient(rig, t_end):
+    return rd.transient(rig, t_end, SPEED_HZ, PC_PA, AY_M, disturbance_m=(0.0, 0.1 * C_M),
+                        n_out=int(round(t_end * OUT_PER_S)) + 1)
+
+
+def last_period(tr):
+    """(x, y) of the journal over the transient's last period, and that period."""
+    T = period_from_transient(tr)
+    sel = tr.t >= tr.t[-1] - T
+    return tr.journal_x_m[sel, 0], tr.journal_y_m[sel, 0], T
+
+
+def amplitude(x, y):
+    return float(np.max(np.hypot(x - x.mean(), y - y.mean())))
+
+
+def shape_error(x, y, xr, yr):
+    """Largest distance of the points (x, y) from the closed polyline (xr, yr), m."""
+    P = np.column_stack([x, y])
+    A = np.column_stack([xr, yr])
+    B = np.roll(A, -1, axis=0)
+    AB = B - A
+    L2 = np.maximum((AB ** 2).sum(1), 1e-300)
+    d = np.empty(len(P))
+    for i, p in enumerate(P):
+        s = np.clip(((p - A) * AB).sum(1) / L2, 0.0, 1.0)
+        d[i] = np.sqrt((((A + s[:, None] * AB) - p) ** 2).sum(1).min())
+    return float(d.max())
+
+
+def compare(name, x, y, T, ref):
+    xr, yr = ref.journal_x_m[:, 0], ref.journal_y_m[:, 0]
+    a, ar = amplitude(x, y), amplitude(xr, yr)
+    e_a = abs(a - ar) / ar
+    e_T = abs(T - ref.period_s) / ref.period_s
+    e_s = shape_error(x, y, xr, yr) / ar
+    print(f"  {name:<34s} amplitude {a * 1e6:9.4f} µm ({e_a:8.1e}), period {T * 1e3:8.5f} ms "
+          f"({e_T:8.1e}), shape {e_s:8.1e}")
+    return max(e_a, e_T, e_s)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--t-end", type=float, default=2.0, help="transient route: simulated s")
+    ap.add_argument("--t-start", type=float, default=0.6,
+                    help="shooting route: simulated s of transient before shooting")
+    ap.add_argument("--sensitivity-rtol", type=float, default=1e-3,
+                    help="shooting route: relative tolerance of the monodromy (sensitivities)")
+    args = ap.parse_args(argv)
+    print(pin_threads(1))
+    header("bench_nonlinear: paper rig limit cycle, 50 Hz, a_y = -1.85 mm, p_c = 0.05 MPa")
+    rig = rd.models.paper_rig()
+
+    ref_start = start_transient(rig, args.t_end)
+    ref = rd.periodic_orbit(rig, SPEED_HZ, PC_PA, AY_M, start=ref_start, rtol=1e-9,
+                            atol_m=1e-12, tol=1e-7, n_out=4001)
+    assert ref.status == "ok", ref.message
+    print(f"reference: {ref!r}")
+    print(f"  residuals {np.array2string(ref.residuals, precision=2)}, trivial multiplier "
+          f"{ref.trivial_multiplier:.9f}")
+    print("  multipliers (largest 6): " + ", ".join(
+        f"{m.real:+.5f}{m.imag:+.5f}j" for m in ref.multipliers[:6]))
+
+    last = {}
+
+    def transient_route():
+        last["tr"] = start_transient(rig, args.t_end)
+
+    def shooting_route():
+        tr = start_transient(rig, args.t_start)
+        last["po"] = rd.periodic_orbit(rig, SPEED_HZ, PC_PA, AY_M, start=tr, rtol=1e-6,
+                                       atol_m=1e-9, tol=1e-4, n_out=2001,
+                                       sensitivity_rtol=args.sensitivity_rtol)
+
+    def shooting_only():
+        rd.periodic_orbit(rig, SPEED_HZ, PC_PA, AY_M, start=last["start"], rtol=1e-6,
+                          atol_m=1e-9, tol=1e-4, n_out=2001,
+                          sensitivity_rtol=args.sensitivity_rtol)
+
+    last["start"] = start_transient(rig, args.t_start)
+    t = interleaved({"transient": transient_route, "shooting": shooting_route,
+                     "shooting_only": shooting_only}, repeat=args.repeat)
+    po = last["po"]
+    assert po.status == "ok", po.message
+    x, y, T = last_period(last["tr"])
+    print(f"\naccuracy against the reference (relative):")
+    e_tr = compare(f"transient {args.t_end:g} s, last period", x, y, T, ref)
+    e_po = compare(f"transient {args.t_start:g} s + shooting", po.journal_x_m[:, 0],
+                   po.journal_y_m[:, 0], po.period_s, ref)
+    print(f"  shooting: {po.stats['iterations']} flows ({po.stats['steps']} steps), residuals "
+          f"{np.array2string(po.residuals, precision=2)}; critical multiplier "
+          f"{abs(po.critical_multiplier):.5f} (reference {abs(ref.critical_multiplier):.5f}), "
+          f"trivial {po.trivial_multiplier.real:.6f}")
+    st = last["tr"].stats
+    print(f"  transient: {st['steps']} steps")
+    print(f"\ntiming (median of {args.repeat}):")
+    print(f"  transient route  {t['transient']}  [baseline]")
+    print(f"  shooting route   {t['shooting']}")
+    print(f"    of which shooting (from the {args.t_start:g} s transient) {t['shooting_only']}")
+    print(f"  speed-up: {t['transient'].wall / t['shooting'].wall:.2f}x wall, "
+          f"{t['transient'].cpu / t['shooting'].cpu:.2f}x CPU; worst relative error "
+          f"transient {e_tr:.1e}, shooting {e_po:.1e}")
+    footer()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,108 @@
+// Periodic orbits of the nonlinear system (paper eq. 12, every film by the Reynolds equation,
+// sleeve and pad coordinates included) by single shooting, and their Floquet multipliers.
+//
+// State x = (r, ṙ) (2n). The flow φ_T(x0) is eq. 12 integrated by CVODES (BDF, dense Newton
+// with the analytic perturbation-method Jacobian, as the transient) from t0 to t0 + T; the
+// monodromy matrix Φ = ∂φ_T/∂x0 comes from CVODES forward sensitivities in the same run
+// (staggered corrector, sensitivity right-hand side Ṡ = A(x(t)) S with the same analytic
+// Jacobian A, sensitivities inside the local error test).
+//
+//   forced (unbalance, period T = k·2π/Ω fixed):   R(x0) = φ_T(x0) − x0 = 0,
+//                                                  Newton matrix Φ − I;
+//   autonomous (no unbalance, T unknown):          R(x0, T) = φ_T(x0) − x0 = 0 and the phase
+//                                                  condition f(x̂)ᵀ D⁻² (x0 − x̂) = 0 (x̂ the
+//                                                  previous iterate: the new start lies on the
+//                                                  hyperplane through x̂ normal to the flow),
+//                                                  Newton matrix [Φ − I, f(φ_T); f(x̂)ᵀ D⁻², 0].
+//
+// The Newton iteration works in scaled coordinates (positions / L, velocities / (L ω), L the
+// smallest film clearance, ω the larger of Ω and 2π/T), with the step capped at 0.25 L.
+#pragma once
+#include <Eigen/Core>
+
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "rotordyn/system.hpp"
+#include "rotordyn/transient.hpp"
+
+namespace rotordyn {
+
+enum class OrbitKind { autonomous, forced };
+
+struct PeriodicInput {
+  OrbitKind kind = OrbitKind::autonomous;
+  double omega = 0.0;             ///< rad/s, constant
+  double chamber_pressure = 0.0;  ///< Pa, constant
+  Eigen::VectorXd a;              ///< (n,) configuration
+  Eigen::VectorXd unbalance_cos;  ///< (n,) u_c (forced orbits), may be empty (autonomous)
+  Eigen::VectorXd unbalance_sin;  ///< (n,) u_s
+  Eigen::VectorXd r0, v0;         ///< (n,) start: positions and velocities at t0
+  double t0 = 0.0;                ///< s; the rotor angle is θ = Ω t (forced orbits)
+  double period = 0.0;            ///< s; forced: the period; autonomous: the first guess
+  int n_out = 201;                ///< samples of the converged orbit over [t0, t0 + T]
+};
+
+struct ShootingOptions {
+  CvodeOptions cvode;          ///< rtol, atol_position, atol_velocity, max_steps, max_step
+  double tol = 1e-7;           ///< converged when ‖D⁻¹(φ_T(x0) − x0)‖∞ < tol
+  double length_scale = 0.0;   ///< L, m; 0: the smallest film clearance (1e-3 m if no film)
+  int max_iter = 30;           ///< Newton iterations (each one period with sensitivities)
+  /// Sensitivities in CVODES's local error test (CVodeSetSensErrCon) during the Newton
+  /// iterations. Off: the steps are chosen for the orbit alone and the sensitivities follow
+  /// them (staggered corrector) — a cheaper, less accurate Newton matrix. The converged
+  /// orbit is always integrated once more with the sensitivities in the error test: the
+  /// monodromy reported is error-controlled either way.
+  bool sensitivity_error_control = false;
+  /// Relative tolerance of the sensitivities in the error test (their absolute tolerances:
+  /// this × atol_i / atol_j for ∂x_i/∂x0_j); 0: cvode.rtol.
+  double sensitivity_rtol = 0.0;
+};
+
+/// Floquet multipliers of a monodromy matrix and the type of the critical one.
+struct Floquet {
+  Eigen::VectorXcd multipliers;  ///< (2n,) sorted by modulus, largest first
+  int trivial = -1;              ///< index of the trivial multiplier (autonomous), else −1
+  double critical_modulus = 0.0; ///< largest modulus of the non-trivial multipliers
+  int critical = -1;             ///< its index
+  bool stable = false;           ///< critical_modulus < 1
+  /// Type of the critical multiplier: "fold" (real > 0, crosses +1), "period_doubling"
+  /// (real < 0, crosses −1), "neimark_sacker" (complex pair).
+  std::string critical_type;
+};
+
+/// Eigenvalues of Φ and their classification; `autonomous`: the multiplier nearest 1 is the
+/// trivial one (the flow direction) and is left out of the stability test.
+Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous);
+
+struct PeriodicOrbitResult {
+  Eigen::VectorXd r0, v0;          ///< (n,) converged start at t0
+  double period = 0.0;             ///< s
+  double t0 = 0.0;                 ///< s
+  Eigen::VectorXd t;               ///< (n_out,) s, t0 … t0 + T
+  Eigen::MatrixXd r, v;            ///< (n_out, n) the orbit
+  Eigen::MatrixXd monodromy;       ///< (2n, 2n) ∂x(t0 + T)/∂x(t0) at the converged orbit
+  Floquet floquet;
+  double residual = 0.0;           ///< final ‖D⁻¹(φ_T(x0) − x0)‖∞
+  std::vector<double> residuals;   ///< per Newton iteration
+  int iterations = 0;              ///< flows integrated (Newton iterations + 1)
+  double length_scale = 0.0;       ///< L used in D, m
+  std::string status = "ok";       ///< ok | not_converged | rub | error
+  std::string message;
+  long steps = 0, rhs_evals = 0, sens_rhs_evals = 0, jac_evals = 0, reynolds_solves = 0;
+};
+
+/// Shooting Newton from (r0, v0, period). A failure (no convergence, the journal reaching the
+/// bush, CVODES giving up) is a status with a message; monodromy and multipliers are then
+/// empty. InputError for shapes, non-finite values, period ≤ 0, unbalance in an autonomous
+/// orbit, no unbalance in a forced one.
+PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in,
+                                   const ShootingOptions& opt);
+
+/// One flow map with its monodromy: x(t0 + T) (2n) and Φ (2n × 2n) from x0 = (r0, v0); a
+/// CVODES failure throws SundialsError. For tests and for the continuation built on top.
+void flow_map(SystemSolver& solver, const PeriodicInput& in, const CvodeOptions& opt,
+              Eigen::VectorXd& xT, Eigen::MatrixXd& monodromy);
+
+}  // namespace rotordyn

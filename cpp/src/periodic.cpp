@@ -1,0 +1,530 @@
+// Periodic orbits by single shooting over CVODES with forward sensitivities (periodic.hpp).
+// One SUNContext and CVODES memory per flow: nothing global, one SystemSolver per thread.
+#include "rotordyn/periodic.hpp"
+
+#include <cvodes/cvodes.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+#include "rotordyn/errors.hpp"
+
+namespace rotordyn {
+
+namespace {
+
+// Everything the right-hand sides share: eq. 12 at constant Ω and p_c, first-order form.
+struct Flow {
+  SystemSolver* solver = nullptr;
+  const PeriodicInput* in = nullptr;
+  Eigen::Index n = 0, N = 0;
+  Eigen::LLT<Eigen::MatrixXd> Mllt;
+  Eigen::VectorXd F0;     // Q − K a + p_c c_s
+  Eigen::MatrixXd Cd;     // C + Ω G
+  // The system Jacobian A(x) (N × N) at the state y_A: the sensitivity right-hand side and
+  // CVODES's Newton matrix at the same state share one linearisation.
+  Eigen::VectorXd y_A;
+  Eigen::MatrixXd A;
+  bool have_A = false;
+  std::string last_error, cvode_message;
+  bool contact = false;
+  long sens_evals = 0;
+};
+
+Eigen::VectorXd vector_field(Flow& F, double t, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  const SystemModel& m = F.solver->model();
+  const PeriodicInput& in = *F.in;
+  const Eigen::Index n = F.n;
+  const Eigen::VectorXd r = y.head(n), v = y.segment(n, n);
+  const Eigen::VectorXd H = F.solver->film_forces(r, v, in.omega);
+  Eigen::VectorXd f = F.F0;
+  if (in.unbalance_cos.size()) {
+    const double th = in.omega * t;
+    f += in.omega * in.omega * (std::cos(th) * in.unbalance_cos + std::sin(th) * in.unbalance_sin);
+  }
+  Eigen::VectorXd out(F.N);
+  out.head(n) = v;
+  out.tail(n) = F.Mllt.solve(H + f - m.K * r - F.Cd * v);
+  return out;
+}
+
+// A(x) = [[0, I], [−M⁻¹(K + K_H), −M⁻¹(C + ΩG + D_H)]] (perturbation method, as the
+// transient's Jacobian); independent of t (the unbalance force does not depend on x).
+const Eigen::MatrixXd& jacobian_at(Flow& F, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  if (F.have_A && F.y_A == y) return F.A;
+  const SystemModel& m = F.solver->model();
+  const Eigen::Index n = F.n;
+  const Linearization lin = F.solver->linearize(y.head(n), y.segment(n, n), F.in->omega);
+  F.A.setZero(F.N, F.N);
+  F.A.block(0, n, n, n).setIdentity();
+  F.A.block(n, 0, n, n) = -F.Mllt.solve(m.K + lin.KH);
+  F.A.block(n, n, n, n) = -F.Mllt.solve(F.Cd + lin.DH);
+  F.y_A = y;
+  F.have_A = true;
+  return F.A;
+}
+
+int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
+  Flow& F = *static_cast<Flow*>(user);
+  try {
+    Eigen::Map<const Eigen::VectorXd> Y(N_VGetArrayPointer(y), F.N);
+    Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(ydot), F.N) = vector_field(F, t, Y);
+    return 0;
+  } catch (const ContactError& e) {
+    F.contact = true;
+    F.last_error = e.what();
+    return 1;  // recoverable: CVODES retries with a smaller step
+  } catch (const std::exception& e) {
+    F.last_error = e.what();
+    return -1;
+  }
+}
+
+int jac(sunrealtype, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, N_Vector,
+        N_Vector) {
+  Flow& F = *static_cast<Flow*>(user);
+  try {
+    Eigen::Map<const Eigen::VectorXd> Y(N_VGetArrayPointer(y), F.N);
+    Eigen::Map<Eigen::MatrixXd>(SUNDenseMatrix_Data(J), F.N, F.N) = jacobian_at(F, Y);
+    return 0;
+  } catch (const ContactError& e) {
+    F.contact = true;
+    F.last_error = e.what();
+    return 1;
+  } catch (const std::exception& e) {
+    F.last_error = e.what();
+    return -1;
+  }
+}
+
+// Ṡ_j = A(x(t)) S_j for every column j of the monodromy (all at once, one linearisation).
+int sens_rhs(int Ns, sunrealtype, N_Vector y, N_Vector, N_Vector* yS, N_Vector* ySdot,
+             void* user, N_Vector, N_Vector) {
+  Flow& F = *static_cast<Flow*>(user);
+  try {
+    Eigen::Map<const Eigen::VectorXd> Y(N_VGetArrayPointer(y), F.N);
+    const Eigen::MatrixXd& A = jacobian_at(F, Y);
+    for (int j = 0; j < Ns; ++j) {
+      Eigen::Map<const Eigen::VectorXd> s(N_VGetArrayPointer(yS[j]), F.N);
+      Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(ySdot[j]), F.N).noalias() = A * s;
+    }
+    ++F.sens_evals;
+    return 0;
+  } catch (const ContactError& e) {
+    F.contact = true;
+    F.last_error = e.what();
+    return 1;
+  } catch (const std::exception& e) {
+    F.last_error = e.what();
+    return -1;
+  }
+}
+
+void err_handler(int error_code, const char* module, const char* function, char* msg,
+                 void* user) {
+  Flow& F = *static_cast<Flow*>(user);
+  std::ostringstream os;
+  os << module << "." << function << " (" << cvode_flag_name(error_code) << "): " << msg;
+  F.cvode_message = os.str();  // stored, never printed or aborted
+}
+
+struct SunDeleter {
+  void operator()(SUNContext* p) const {
+    if (p && *p) SUNContext_Free(p);
+    delete p;
+  }
+};
+
+void setup_flow(Flow& F, SystemSolver& solver, const PeriodicInput& in) {
+  const SystemModel& m = solver.model();
+  F.solver = &solver;
+  F.in = &in;
+  F.n = m.n();
+  F.N = 2 * F.n;
+  F.Mllt.compute(m.mass_at(in.omega));
+  require(F.Mllt.info() == Eigen::Success, "M: the mass matrix must be positive definite");
+  F.F0 = m.Q - m.K * in.a + in.chamber_pressure * m.chamber;
+  F.Cd = m.C + in.omega * m.G;
+}
+
+struct FlowRun {
+  Eigen::VectorXd xT;
+  Eigen::MatrixXd Phi;       // empty without sensitivities
+  Eigen::VectorXd t;         // samples
+  Eigen::MatrixXd X;         // (n_out, N)
+  int flag = 0;              // < 0: CVODES failure
+  std::string why;
+  long steps = 0, rhs_evals = 0, jac_evals = 0;
+};
+
+// Integrate x0 over [t0, t0 + T] (with the monodromy when `sens`), sampling n_out points.
+FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool sens, int n_out,
+                 const CvodeOptions& opt, bool sens_errcon, double sens_rtol) {
+  FlowRun out;
+  const Eigen::Index N = F.N, n = F.n;
+  // Each flow starts the films' cavitation sets afresh (a function of its inputs only).
+  F.solver->set_film_continuation(true);
+  F.have_A = false;
+  F.contact = false;
+  F.last_error.clear();
+  F.cvode_message.clear();
+  std::unique_ptr<SUNContext, SunDeleter> sunctx(new SUNContext(nullptr));
+  if (SUNContext_Create(nullptr, sunctx.get()) != 0)
+    throw SundialsError(-1, "SUNContext_Create", "could not create a SUNDIALS context");
+  SUNContext ctx = *sunctx;
+  const sunindextype NN = static_cast<sunindextype>(N);
+  N_Vector y = N_VNew_Serial(NN, ctx);
+  N_Vector abstol = N_VNew_Serial(NN, ctx);
+  SUNMatrix Jm = SUNDenseMatrix(NN, NN, ctx);
+  SUNLinearSolver LS = SUNLinSol_Dense(y, Jm, ctx);
+  void* mem = CVodeCreate(CV_BDF, ctx);
+  N_Vector* yS = sens ? N_VCloneVectorArray(static_cast<int>(N), y) : nullptr;
+  std::vector<sunrealtype> atolS_data;
+  auto cleanup = [&]() {
+    if (yS) N_VDestroyVectorArray(yS, static_cast<int>(N));
+    CVodeFree(&mem);
+    SUNLinSolFree(LS);
+    SUNMatDestroy(Jm);
+    N_VDestroy(abstol);
+    N_VDestroy(y);
+    F.solver->set_film_continuation(false);
+  };
+  auto check = [&](int flag, const char* where) {
+    if (flag < 0) {
+      const std::string msg =
+          cvode_flag_name(flag) + (F.cvode_message.empty() ? "" : ": " + F.cvode_message);
+      cleanup();
+      throw SundialsError(flag, where, msg);
+    }
+  };
+  Eigen::Map<Eigen::VectorXd> Y(N_VGetArrayPointer(y), N);
+  Y = x0;
+  Eigen::Map<Eigen::VectorXd> AT(N_VGetArrayPointer(abstol), N);
+  AT.head(n).setConstant(opt.atol_position);
+  AT.tail(n).setConstant(opt.atol_velocity);
+  check(CVodeSetErrHandlerFn(mem, err_handler, &F), "CVodeSetErrHandlerFn");
+  check(CVodeInit(mem, rhs, t0, y), "CVodeInit");
+  check(CVodeSetUserData(mem, &F), "CVodeSetUserData");
+  check(CVodeSVtolerances(mem, opt.rtol, abstol), "CVodeSVtolerances");
+  check(CVodeSetLinearSolver(mem, LS, Jm), "CVodeSetLinearSolver");
+  check(CVodeSetJacFn(mem, jac), "CVodeSetJacFn");
+  check(CVodeSetMaxNumSteps(mem, opt.max_steps), "CVodeSetMaxNumSteps");
+  if (opt.max_step > 0) check(CVodeSetMaxStep(mem, opt.max_step), "CVodeSetMaxStep");
+  if (opt.stability_limit_detection) check(CVodeSetStabLimDet(mem, SUNTRUE), "CVodeSetStabLimDet");
+  const double t_end = t0 + T;
+  check(CVodeSetStopTime(mem, t_end), "CVodeSetStopTime");
+  if (sens) {
+    // S(t0) = I. Column j is ∂x/∂x0_j: its absolute tolerance is rtol·atol_i/atol_j, i.e.
+    // rtol in the units where each coordinate is measured by its own absolute tolerance.
+    for (Eigen::Index j = 0; j < N; ++j) {
+      Eigen::Map<Eigen::VectorXd> s(N_VGetArrayPointer(yS[j]), N);
+      s.setZero();
+      s(j) = 1.0;
+    }
+    check(CVodeSensInit(mem, static_cast<int>(N), CV_STAGGERED, sens_rhs, yS), "CVodeSensInit");
+    N_Vector* atolS = N_VCloneVectorArray(static_cast<int>(N), y);
+    for (Eigen::Index j = 0; j < N; ++j) {
+      Eigen::Map<Eigen::VectorXd> s(N_VGetArrayPointer(atolS[j]), N);
+      s = sens_rtol * AT / AT(j);
+    }
+    const int f = CVodeSensSVtolerances(mem, sens_rtol, atolS);
+    N_VDestroyVectorArray(atolS, static_cast<int>(N));
+    check(f, "CVodeSensSVtolerances");
+    check(CVodeSetSensErrCon(mem, sens_errcon ? SUNTRUE : SUNFALSE), "CVodeSetSensErrCon");
+  }
+  const int ns = std::max(n_out, 2);
+  out.t.resize(ns);
+  out.X.resize(ns, N);
+  out.t(0) = t0;
+  out.X.row(0) = x0.transpose();
+  double tret = t0;
+  int flag = CV_SUCCESS;
+  for (int i = 1; i < ns; ++i) {
+    const double target = i == ns - 1 ? t_end : t0 + T * static_cast<double>(i) / (ns - 1);
+    flag = CVode(mem, target, y, &tret, CV_NORMAL);
+    if (flag < 0) break;
+    out.t(i) = target;
+    out.X.row(i) = Y.transpose();
+  }
+  long v = 0;
+  CVodeGetNumSteps(mem, &v);
+  out.steps = v;
+  CVodeGetNumRhsEvals(mem, &v);
+  out.rhs_evals = v;
+  CVodeGetNumJacEvals(mem, &v);
+  out.jac_evals = v;
+  out.flag = flag;
+  if (flag < 0) {
+    out.why = cvode_flag_name(flag) + " at t = " + std::to_string(tret) + " s" +
+              (F.last_error.empty() ? "" : ": " + F.last_error) +
+              (F.cvode_message.empty() ? "" : " [" + F.cvode_message + "]");
+    cleanup();
+    return out;
+  }
+  out.xT = Y;
+  if (sens) {
+    check(CVodeGetSens(mem, &tret, yS), "CVodeGetSens");
+    out.Phi.resize(N, N);
+    for (Eigen::Index j = 0; j < N; ++j)
+      out.Phi.col(j) = Eigen::Map<const Eigen::VectorXd>(N_VGetArrayPointer(yS[j]), N);
+  }
+  cleanup();
+  return out;
+}
+
+void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt) {
+  const Eigen::Index n = solver.model().n();
+  auto vec_ok = [&](const Eigen::VectorXd& v, const char* name, bool allow_empty) {
+    require((allow_empty && v.size() == 0) || v.size() == n, shape_msg(name, n, 1, v.size(), 1));
+    require(v.allFinite(), std::string(name) + ": expected finite values");
+  };
+  vec_ok(in.a, "a", false);
+  vec_ok(in.r0, "r0", false);
+  vec_ok(in.v0, "v0", false);
+  vec_ok(in.unbalance_cos, "unbalance_cos", true);
+  require(in.unbalance_sin.size() == in.unbalance_cos.size(),
+          "unbalance_sin: expected the size of unbalance_cos");
+  vec_ok(in.unbalance_sin, "unbalance_sin", true);
+  require(std::isfinite(in.period) && in.period > 0,
+          "period: expected a finite period > 0 s, got " + std::to_string(in.period));
+  require(std::isfinite(in.t0), "t0: expected a finite time");
+  require(std::isfinite(in.omega) && std::isfinite(in.chamber_pressure),
+          "omega, chamber_pressure: expected finite values");
+  require(in.n_out >= 2, "n_out: expected at least 2 samples");
+  const bool forcing = in.unbalance_cos.size() > 0 &&
+                       ((in.unbalance_cos.array() != 0).any() || (in.unbalance_sin.array() != 0).any());
+  if (in.kind == OrbitKind::autonomous)
+    require(!forcing, "unbalance: an autonomous orbit has no unbalance forcing (use the forced "
+                      "kind)");
+  else
+    require(forcing && in.omega != 0.0,
+            "unbalance: a forced orbit needs an unbalance and a speed != 0");
+  const CvodeOptions& c = opt.cvode;
+  require(c.rtol > 0 && c.rtol < 1 && c.atol_position > 0 && c.atol_velocity > 0,
+          "cvode options: tolerances must be positive");
+  require(c.max_steps > 0, "cvode options: max_steps must be positive");
+  require(opt.tol > 0 && std::isfinite(opt.tol), "tol: expected a value > 0");
+  require(opt.max_iter >= 1, "max_iter: expected at least 1");
+  require(opt.sensitivity_rtol >= 0 && opt.sensitivity_rtol < 1,
+          "sensitivity_rtol: expected a value in [0, 1)");
+  require(opt.length_scale >= 0 && std::isfinite(opt.length_scale),
+          "length_scale: expected a value >= 0 m");
+}
+
+}  // namespace
+
+Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous) {
+  require(monodromy.rows() == monodromy.cols() && monodromy.size() > 0,
+          "monodromy: expected a non-empty square matrix");
+  require(monodromy.allFinite(), "monodromy: expected finite values");
+  Floquet out;
+  Eigen::EigenSolver<Eigen::MatrixXd> es(monodromy, false);
+  if (es.info() != Eigen::Success) throw ConvergenceError("monodromy: eigenvalues did not converge");
+  Eigen::VectorXcd mu = es.eigenvalues();
+  std::vector<Eigen::Index> idx(static_cast<std::size_t>(mu.size()));
+  std::iota(idx.begin(), idx.end(), 0);
+  std::stable_sort(idx.begin(), idx.end(), [&](Eigen::Index a, Eigen::Index b) {
+    return std::abs(mu(a)) > std::abs(mu(b));
+  });
+  out.multipliers.resize(mu.size());
+  for (Eigen::Index i = 0; i < mu.size(); ++i) out.multipliers(i) = mu(idx[static_cast<std::size_t>(i)]);
+  if (autonomous) {
+    double best = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < mu.size(); ++i) {
+      const double d = std::abs(out.multipliers(i) - 1.0);
+      if (d < best) {
+        best = d;
+        out.trivial = static_cast<int>(i);
+      }
+    }
+  }
+  for (Eigen::Index i = 0; i < mu.size(); ++i) {
+    if (static_cast<int>(i) == out.trivial) continue;
+    out.critical = static_cast<int>(i);
+    out.critical_modulus = std::abs(out.multipliers(i));
+    break;
+  }
+  if (out.critical < 0) {  // a one-dimensional autonomous system: nothing but the trivial one
+    out.stable = true;
+    return out;
+  }
+  const std::complex<double> c = out.multipliers(out.critical);
+  out.stable = out.critical_modulus < 1.0;
+  // Eigen returns exactly real eigenvalues of a real matrix with zero imaginary parts; a
+  // complex pair has |Im| well above round-off.
+  const bool real = std::abs(c.imag()) <= 1e-9 * std::max(std::abs(c), 1e-300);
+  out.critical_type = !real ? "neimark_sacker" : (c.real() > 0 ? "fold" : "period_doubling");
+  return out;
+}
+
+void flow_map(SystemSolver& solver, const PeriodicInput& in, const CvodeOptions& opt,
+              Eigen::VectorXd& xT, Eigen::MatrixXd& monodromy) {
+  validate(solver, in, ShootingOptions{opt});
+  Flow F;
+  setup_flow(F, solver, in);
+  Eigen::VectorXd x0(F.N);
+  x0 << in.r0, in.v0;
+  FlowRun run = run_flow(F, x0, in.t0, in.period, true, 2, opt, true, opt.rtol);
+  if (run.flag < 0) throw SundialsError(run.flag, "CVode", run.why);
+  xT = run.xT;
+  monodromy = run.Phi;
+}
+
+PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in,
+                                   const ShootingOptions& opt) {
+  validate(solver, in, opt);
+  const SystemModel& m = solver.model();
+  Flow F;
+  setup_flow(F, solver, in);
+  const Eigen::Index n = F.n, N = F.N;
+  const bool autonomous = in.kind == OrbitKind::autonomous;
+  PeriodicOrbitResult out;
+  out.t0 = in.t0;
+  const long solves0 = solver.reynolds_solves();
+
+  double L = opt.length_scale;
+  if (!(L > 0)) {
+    L = std::numeric_limits<double>::infinity();
+    for (const FilmCoupling& fc : m.films) L = std::min(L, fc.geometry.clearance_m);
+    if (!std::isfinite(L)) L = 1e-3;
+  }
+  out.length_scale = L;
+  Eigen::VectorXd x(N);
+  x << in.r0, in.v0;
+  double T = in.period;
+  auto scale = [&](double period) {
+    const double w = std::max(std::abs(in.omega), 2 * M_PI / period);
+    Eigen::VectorXd d(N);
+    d.head(n).setConstant(L);
+    d.tail(n).setConstant(L * w);
+    return d;
+  };
+  const double max_step = 0.25;  // scaled units: a quarter of the length scale
+  FlowRun run;
+  bool converged = false;
+  // The Newton iterations may run with the sensitivities outside the error test (cheap: the
+  // steps are the orbit's); the converged orbit is always integrated once more with them in
+  // it, so the monodromy and the multipliers reported have CVODES's error control.
+  bool errcon = opt.sensitivity_error_control;
+  for (int it = 0; it <= opt.max_iter + 1; ++it) {
+    run = run_flow(F, x, in.t0, T, true, in.n_out, opt.cvode, errcon,
+                   opt.sensitivity_rtol > 0 ? opt.sensitivity_rtol : opt.cvode.rtol);
+    out.iterations = it + 1;
+    out.steps += run.steps;
+    out.rhs_evals += run.rhs_evals;
+    out.jac_evals += run.jac_evals;
+    if (run.flag < 0) {
+      out.status = F.contact ? "rub" : "not_converged";
+      out.message = "shooting iteration " + std::to_string(it) + ": " + run.why;
+      break;
+    }
+    const Eigen::VectorXd D = scale(T);
+    const Eigen::VectorXd R = (run.xT - x).cwiseQuotient(D);
+    const double res = R.cwiseAbs().maxCoeff();
+    out.residuals.push_back(res);
+    out.residual = res;
+    if (!std::isfinite(res)) {
+      out.status = "error";
+      out.message = "non-finite state after one period";
+      break;
+    }
+    if (res < opt.tol && errcon) {
+      converged = true;
+      break;
+    }
+    if (res < opt.tol) {
+      errcon = true;  // the final pass at the same start
+      continue;
+    }
+    // Without error control the sensitivities (and the orbit's end point, on other steps)
+    // are noisier: once a Newton step stops halving the residual, continue with it.
+    if (!errcon && out.residuals.size() > 1 &&
+        res > 0.5 * out.residuals[out.residuals.size() - 2])
+      errcon = true;
+    if (it >= opt.max_iter) break;
+    // Newton step in scaled coordinates z = D⁻¹ x, τ = ΔT / T.
+    const Eigen::MatrixXd Phi_z = D.cwiseInverse().asDiagonal() * run.Phi * D.asDiagonal();
+    const Eigen::Index K = autonomous ? N + 1 : N;
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(K, K);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(K);
+    J.topLeftCorner(N, N) = Phi_z - Eigen::MatrixXd::Identity(N, N);
+    b.head(N) = -R;
+    if (autonomous) {
+      const Eigen::VectorXd fT = vector_field(F, in.t0 + T, run.xT).cwiseQuotient(D);
+      const Eigen::VectorXd f0 = vector_field(F, in.t0, x).cwiseQuotient(D);
+      J.block(0, N, N, 1) = T * fT;
+      J.block(N, 0, 1, N) = f0.transpose() / std::max(f0.norm(), 1e-300);
+    }
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
+    if (lu.rank() < K) {
+      out.status = "not_converged";
+      out.message = "shooting iteration " + std::to_string(it) +
+                    ": singular Newton matrix (a Floquet multiplier at 1, or the start is an "
+                    "equilibrium)";
+      break;
+    }
+    Eigen::VectorXd dz = lu.solve(b);
+    const double big = dz.head(N).cwiseAbs().maxCoeff() / max_step;
+    const double big_t = autonomous ? std::abs(dz(N)) / 0.2 : 0.0;
+    const double cap = std::max({1.0, big, big_t});
+    dz /= cap;
+    x += dz.head(N).cwiseProduct(D);
+    if (autonomous) T *= 1.0 + dz(N);
+  }
+  out.reynolds_solves = solver.reynolds_solves() - solves0;
+  out.sens_rhs_evals = F.sens_evals;
+  out.period = T;
+  out.r0 = x.head(n);
+  out.v0 = x.tail(n);
+  if (!converged) {
+    if (out.status == "ok") {
+      out.status = "not_converged";
+      std::ostringstream os;
+      os << "shooting did not converge in " << opt.max_iter << " Newton iterations: residual "
+         << out.residual << " (tol " << opt.tol << "); the start may not be near a periodic "
+         << "orbit";
+      out.message = os.str();
+    }
+    return out;
+  }
+  if (autonomous) {
+    // An equilibrium is a "periodic orbit" of any period: the Newton iteration can fall onto
+    // one from a start off any cycle. Refused: the orbit must move by more than 100 tol.
+    const Eigen::VectorXd D = scale(T);
+    double extent = 0.0;
+    for (Eigen::Index i = 0; i < run.X.rows(); ++i)
+      extent = std::max(extent, (run.X.row(i).transpose() - x).cwiseQuotient(D).cwiseAbs().maxCoeff());
+    if (extent < 100 * opt.tol) {
+      std::ostringstream os;
+      os << "shooting converged to an equilibrium (the orbit's extent is " << extent
+         << " of the length scale), not a limit cycle: start on or near a cycle";
+      out.status = "not_converged";
+      out.message = os.str();
+      return out;
+    }
+  }
+  out.t = run.t;
+  out.r = run.X.leftCols(n);
+  out.v = run.X.rightCols(n);
+  out.monodromy = run.Phi;
+  if (!out.monodromy.allFinite()) {
+    out.status = "error";
+    out.message = "non-finite monodromy matrix";
+    out.monodromy.resize(0, 0);
+    return out;
+  }
+  out.floquet = floquet(out.monodromy, autonomous);
+  return out;
+}
+
+}  // namespace rotordyn

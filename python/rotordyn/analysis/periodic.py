@@ -1,0 +1,234 @@
+"""Periodic orbits of the nonlinear system (paper eq. 12, every film by the Reynolds equation,
+sleeve and pad coordinates included) by single shooting, with their Floquet multipliers
+(docs/nonlinear.md): self-excited limit cycles (the oil whirl of paper Fig. 11) and orbits
+forced by unbalance (period k·2π/Ω)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn._common.threads import limited_blas
+from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.equilibrium import equilibrium
+from rotordyn.errors import ConvergenceError, InputError
+from rotordyn.model.system import System
+from rotordyn.results.equilibrium import CONVERGED
+from rotordyn.results.periodic import PeriodicOrbitResult
+from rotordyn.results.transient import TransientResult
+from rotordyn.units import hz_to_rad_s
+
+KINDS = ("autonomous", "forced")
+
+
+def period_from_transient(result: TransientResult, bearing: int = 0,
+                          last_fraction: float = 0.5) -> float:
+    """Period of the motion at the end of a transient, s: the mean spacing of the upward
+    crossings of the journal's horizontal displacement through its mean over the last
+    ``last_fraction`` of the run (crossing times interpolated linearly between samples).
+    InputError when fewer than three crossings (the run has not settled on an oscillation,
+    or is sampled too coarsely)."""
+    n = max(8, int(len(result.t) * last_fraction))
+    t = np.asarray(result.t[-n:], dtype=float)
+    x = np.asarray(result.journal_x_m[-n:, bearing], dtype=float)
+    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(x))):
+        raise InputError("start: the transient has non-finite samples in its last part "
+                         f"(status {result.status!r})")
+    z = x - x.mean()
+    k = np.nonzero((z[:-1] < 0) & (z[1:] >= 0))[0]
+    if k.size < 3:
+        raise InputError(f"start: the last {last_fraction:g} of the transient has {k.size} "
+                         "upward crossings of the journal's mean position (at least 3 needed "
+                         "to estimate a period): it has not settled on an oscillation, or its "
+                         "output is too coarse (raise n_out)")
+    tc = t[k] - z[k] * (t[k + 1] - t[k]) / (z[k + 1] - z[k])
+    return float(np.mean(np.diff(tc)))
+
+
+@limited_blas
+def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
+                   config_ay_m: float | None = None, *, kind: str = "autonomous",
+                   start=None, period_s: float | None = None, subharmonic: int = 1,
+                   unbalances=(), n_out: int = 201, rtol: float = 1e-8,
+                   atol_m: float = 1e-12, tol: float = 1e-6, max_iter: int = 30,
+                   max_steps: int = 200000,
+                   sensitivity_error_control: bool = False,
+                   sensitivity_rtol: float | None = None) -> PeriodicOrbitResult:
+    """Periodic orbit of eq. 12 by single shooting, with its Floquet multipliers.
+
+    Unknowns: the state x0 = (r, ṙ) (2n) at t0, and for ``kind="autonomous"`` the period T
+    (with the phase condition that the new start lies on the hyperplane through the previous
+    one normal to the flow). Newton on R = x(t0 + T) − x0, with the monodromy matrix
+    Φ = ∂x(t0 + T)/∂x0 from CVODES forward sensitivities integrated with the orbit
+    (docs/nonlinear.md: method and accuracy). The Floquet multipliers are the eigenvalues
+    of Φ.
+
+    Parameters
+    ----------
+    speed_hz, chamber_pressure_pa, config_ay_m
+        The operating point, as for :func:`rotordyn.transient` (constant speed and pressure).
+    kind
+        ``"autonomous"``: a self-excited limit cycle (no unbalance; period unknown);
+        ``"forced"``: the orbit forced by ``unbalances`` [(station, mass_kg_m, phase_deg)]
+        with period ``subharmonic``/``speed_hz`` (``period_s``, if given, must equal it).
+    start
+        A :class:`~rotordyn.results.TransientResult` (its last sample is the start, at its
+        time t0 for a forced orbit, and for an autonomous one the period is estimated from
+        its last half unless ``period_s`` is given), or a state: an array (2n,) = (r, ṙ) or a
+        pair (r (n,), ṙ (n,)) in m and m/s. None: the static equilibrium (forced orbits
+        only: an autonomous cycle needs a start on or near it).
+    period_s
+        s; autonomous: the first guess (required with a state start); forced: optional.
+    n_out
+        Samples of the converged orbit over one period.
+    rtol, atol_m
+        CVODES tolerances (positions atol_m, velocities atol_m·max(Ω, 2π/T)); the
+        sensitivities are in the error test with the same relative tolerance.
+    tol
+        Convergence: the largest component of x(t0 + T) − x0 below tol × (the smallest
+        film clearance; velocities: × max(Ω, 2π/T)).
+    max_iter, max_steps
+        Newton iterations; CVODES steps per period.
+    sensitivity_error_control
+        Keep the sensitivities in CVODES's error test during the Newton iterations too
+        (default: only in the final pass over the converged orbit, which gives the reported
+        monodromy and multipliers).
+    sensitivity_rtol
+        Relative tolerance of the sensitivities in the error test (default ``rtol``): the
+        accuracy of the monodromy matrix and the multipliers; looser is cheaper.
+
+    Returns
+    -------
+    PeriodicOrbitResult
+        status ``"ok"``, or ``"not_converged"`` (Newton did not converge: the start is not
+        near a periodic orbit), ``"rub"`` (a film closed) with a message; multipliers only
+        for ``"ok"``.
+    """
+    kind = v.choice("kind", kind, KINDS)
+    v.speed("speed_hz", speed_hz)
+    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    if config_ay_m is not None:
+        v.finite("config_ay_m", config_ay_m)
+    v.integer("n_out", n_out, lo=2, hi=1_000_000)
+    v.integer("subharmonic", subharmonic, lo=1, hi=1000)
+    v.in_range("rtol", rtol, 1e-14, 1e-3)
+    v.positive("atol_m", atol_m)
+    v.positive("tol", tol)
+    v.integer("max_iter", max_iter, lo=1, hi=1000)
+    v.integer("max_steps", max_steps, lo=1)
+    if period_s is not None:
+        period_s = v.positive("period_s", period_s)
+    asm = assembled(system)
+    n = asm.n
+    ub_list = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
+    if kind == "autonomous" and ub_list:
+        raise InputError("unbalances: an autonomous limit cycle has no unbalance forcing; use "
+                         "kind='forced' for the unbalance response")
+    if kind == "forced":
+        if not ub_list:
+            raise InputError("unbalances: kind='forced' needs at least one unbalance "
+                             "(station, mass_kg_m, phase_deg)")
+        if speed_hz == 0:
+            raise InputError("speed_hz: a forced orbit needs a speed != 0 Hz")
+        t_rev = subharmonic / abs(float(speed_hz))
+        if period_s is not None and abs(period_s - t_rev) > 1e-9 * t_rev:
+            raise InputError(f"period_s: a forced orbit has the period subharmonic/speed_hz = "
+                             f"{t_rev:.9g} s, got {period_s:.9g} s (set subharmonic for "
+                             "k-fold periods)")
+        period_s = t_rev
+    a = asm.config_vector(config_ay_m)
+
+    t0 = 0.0
+    if isinstance(start, TransientResult):
+        if start.status not in ("ok", "contact") or len(start.t) < 2:
+            raise InputError(f"start: the transient did not finish (status {start.status!r}: "
+                             f"{start.message})")
+        if start.r.shape[1] != n:
+            raise InputError(f"start: the transient has {start.r.shape[1]} coordinates, the "
+                             f"system {n}")
+        r0, v0 = np.array(start.r[-1], dtype=float), np.array(start.v[-1], dtype=float)
+        t0 = float(start.t[-1]) if kind == "forced" else 0.0
+        if period_s is None:
+            period_s = period_from_transient(start)
+    elif start is None:
+        if kind == "autonomous":
+            raise InputError("start: an autonomous limit cycle needs a start on or near it: a "
+                             "TransientResult that settled on the cycle, or a state (r, v) "
+                             "with period_s")
+        e = equilibrium(system, speed_hz, chamber_pressure_pa, config_ay_m, warm_start=False)
+        if e.status not in CONVERGED:
+            raise ConvergenceError(f"periodic_orbit: no equilibrium to start from "
+                                   f"({e.status}: {e.message}); give start")
+        r0, v0 = np.array(e.r, dtype=float), np.zeros(n)
+    else:
+        if isinstance(start, (tuple, list)) and len(start) == 2:
+            r0, v0 = v.vector("start[0]", start[0], n), v.vector("start[1]", start[1], n)
+        else:
+            x = v.vector("start", start, 2 * n)
+            r0, v0 = x[:n].copy(), x[n:].copy()
+        if period_s is None:
+            raise InputError("period_s: an autonomous orbit from a state start needs a first "
+                             "guess of the period (s, > 0)")
+    h0 = np.asarray(asm.solver.film_h_min(r0), dtype=float)
+    if np.any(h0 <= 0):
+        k = int(np.argmin(h0))
+        raise InputError(f"start: the start closes film '{asm.model.films[k].name}' (minimum "
+                         f"film thickness {h0[k]:.3g} m)")
+
+    uc, us = np.zeros(n), np.zeros(n)
+    for st, me, ph in ub_list:
+        L = asm.station_load_matrix(st)
+        p = np.radians(ph)
+        uc += me * (L[:, 0] * np.cos(p) + L[:, 1] * np.sin(p))
+        us += me * (-L[:, 0] * np.sin(p) + L[:, 1] * np.cos(p))
+
+    omega = hz_to_rad_s(float(speed_hz))
+    inp = _core.PeriodicInput()
+    inp.kind = _core.OrbitKind.autonomous if kind == "autonomous" else _core.OrbitKind.forced
+    inp.omega = omega
+    inp.chamber_pressure = float(chamber_pressure_pa)
+    inp.a = a
+    inp.unbalance_cos, inp.unbalance_sin = (uc, us) if ub_list else (np.zeros(0), np.zeros(0))
+    inp.r0, inp.v0 = r0, v0
+    inp.t0 = t0
+    inp.period = float(period_s)
+    inp.n_out = int(n_out)
+    opt = _core.ShootingOptions()
+    c = _core.CvodeOptions()
+    c.rtol, c.atol_position = float(rtol), float(atol_m)
+    c.atol_velocity = float(atol_m) * max(abs(omega), 2 * np.pi / float(period_s), 1.0)
+    c.max_steps = int(max_steps)
+    opt.cvode = c
+    opt.tol = float(tol)
+    opt.max_iter = int(max_iter)
+    if sensitivity_rtol is not None:
+        opt.sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
+    opt.sensitivity_error_control = v.boolean("sensitivity_error_control",
+                                              sensitivity_error_control)
+    res = _core.periodic_orbit(asm.solver, inp, opt)
+    status, message = res.status, res.message
+    bcs = asm.bearings
+    ok = status == "ok"
+    r = np.asarray(res.r) if ok else np.zeros((0, n))
+    vv = np.asarray(res.v) if ok else np.zeros((0, n))
+    fl = res.floquet
+    mu = np.asarray(fl.multipliers, dtype=complex) if ok else np.zeros(0, dtype=complex)
+    if ok and not (np.all(np.isfinite(r)) and np.all(np.isfinite(mu))):
+        status, message, ok = "error", "non-finite orbit or multipliers reported as ok", False
+    return PeriodicOrbitResult(
+        kind=kind, speed_hz=float(speed_hz), chamber_pressure_pa=float(chamber_pressure_pa),
+        config_ay_m=float(a[bcs[0].jy]) if bcs else 0.0,
+        period_s=float(res.period), t=np.asarray(res.t) if ok else np.zeros(0), r=r, v=vv,
+        journal_x_m=r[:, [bc.jx for bc in bcs]], journal_y_m=r[:, [bc.jy for bc in bcs]],
+        clearance_m=np.array([bc.clearance_m for bc in bcs]),
+        bearing_names=tuple(bc.name for bc in bcs),
+        monodromy=np.asarray(res.monodromy) if ok else np.zeros((0, 0)),
+        multipliers=mu, trivial_index=int(fl.trivial) if ok else -1,
+        critical_index=int(fl.critical) if ok else -1, stable=bool(fl.stable) and ok,
+        critical_type=fl.critical_type if ok else "",
+        residuals=np.asarray(res.residuals, dtype=float), length_scale_m=float(res.length_scale),
+        stats={"iterations": res.iterations, "steps": res.steps, "rhs_evals": res.rhs_evals,
+               "sens_rhs_evals": res.sens_rhs_evals, "jac_evals": res.jac_evals,
+               "reynolds_solves": res.reynolds_solves},
+        status=status, message=message)

@@ -1,0 +1,102 @@
+"""Nonlinear dynamics on the command line: ``periodic-orbit`` (a limit cycle or an
+unbalance-forced orbit by shooting, with its Floquet multipliers; docs/nonlinear.md)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotordyn import analysis
+from rotordyn._common import validate as v
+from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
+                                 check_figure, json_text, save_figure, table_text)
+from rotordyn.errors import InputError
+from rotordyn.model import builtin as models
+
+
+def register(sub) -> None:
+    """The subcommands of this module on the ``rotordyn`` parser's subparsers ``sub``."""
+    s = sub.add_parser("periodic-orbit",
+                       help="limit cycle or unbalance-forced orbit by shooting, with its "
+                            "Floquet multipliers")
+    s.add_argument("model", help=MODEL_HELP)
+    add_operating_point(s)
+    s.add_argument("--kind", choices=["autonomous", "forced"], default="autonomous",
+                   help="autonomous: self-excited limit cycle (period unknown); forced: the "
+                        "orbit forced by --unbalance (period --subharmonic / speed)")
+    s.add_argument("--unbalance", action="append", default=None,
+                   metavar="STATION,MASS_KG_M,PHASE_DEG",
+                   help="unbalance m·e (kg m) at a station with its phase (deg); repeatable "
+                        "(forced orbits)")
+    s.add_argument("--subharmonic", type=int, default=1, metavar="K",
+                   help="forced orbits: period K revolutions (default 1)")
+    s.add_argument("--settle-s", type=float, default=None, metavar="S",
+                   help="simulated seconds of transient before shooting, from the "
+                        "equilibrium disturbed by --disturbance-c (default: 1.0 s for a limit "
+                        "cycle, 0 for a forced orbit: start at the equilibrium)")
+    s.add_argument("--disturbance-c", type=float, default=0.1, metavar="F",
+                   help="vertical disturbance of the active journal, fraction of its "
+                        "clearance (default 0.1)")
+    s.add_argument("--rtol", type=float, default=1e-8, help="CVODES relative tolerance")
+    s.add_argument("--tol", type=float, default=1e-6,
+                   help="shooting residual tolerance, fraction of the smallest clearance")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="write the orbit and the multipliers in the unit circle")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    add_dpi(s)
+    s.set_defaults(func=_cmd_periodic_orbit)
+
+
+def _unbalances(texts) -> list:
+    ub = []
+    for text in texts or ():
+        try:
+            st, me, ph = text.split(",")
+            ub.append((int(st), float(me), float(ph)))
+        except ValueError:
+            raise InputError(
+                f"--unbalance: expected STATION,MASS_KG_M,PHASE_DEG, got {text!r}") from None
+    return ub
+
+
+def _cmd_periodic_orbit(args) -> int:
+    check_figure(args.plot)
+    s = models.load(args.model)
+    ub = _unbalances(args.unbalance)
+    settle = args.settle_s if args.settle_s is not None else (
+        1.0 if args.kind == "autonomous" else 0.0)
+    v.non_negative("--settle-s", settle)
+    v.finite("--disturbance-c", args.disturbance_c)
+    start = None
+    if settle > 0:
+        bs = list(s.bearings)
+        c = min((b.clearance_m for b in bs if hasattr(b, "clearance_m")), default=1e-3)
+        start = analysis.transient(s, settle, args.speed_hz, args.chamber_pressure_pa,
+                                   args.config_ay_m, unbalances=ub,
+                                   disturbance_m=(0.0, args.disturbance_c * c),
+                                   n_out=int(round(settle * 10_000)) + 1)
+        if start.status not in ("ok", "contact"):
+            print(f"rotordyn: the settling transient ended with status {start.status}: "
+                  f"{start.message}")
+            return 1
+    res = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
+                                  kind=args.kind, start=start, unbalances=ub,
+                                  subharmonic=args.subharmonic, rtol=args.rtol, tol=args.tol)
+    if args.json:
+        mu = np.asarray(res.multipliers, dtype=complex)
+        print(json_text({
+            "status": res.status, "message": res.message, "kind": res.kind,
+            "speed_hz": res.speed_hz, "chamber_pressure_pa": res.chamber_pressure_pa,
+            "period_s": res.period_s if res.ok else None,
+            "amplitude_m": res.amplitude() if res.ok and res.journal_x_m.shape[1] else None,
+            "stable": res.stable, "critical_type": res.critical_type,
+            "multipliers_real": mu.real, "multipliers_imag": mu.imag,
+            "trivial_index": res.trivial_index, "critical_index": res.critical_index,
+            "residuals": res.residuals, "stats": res.stats,
+        }))
+    else:
+        print(repr(res))
+        if res.ok:
+            print(table_text(res.multipliers_frame().head(8)))
+    if args.plot and res.ok:
+        save_figure(res.plot(), args.plot, args.dpi)
+    return 0 if res.ok else 1
