@@ -121,6 +121,20 @@ def _peak(values) -> float:
     return float(finite.max()) if finite.size else math.nan
 
 
+def _margins_text(cl) -> str:
+    """The margins of the linear closed loop in one line (or why there are none)."""
+    if cl.margins is None:
+        return f"margins {cl.margins_message}"
+    m = cl.margins.input
+    lo_db, hi_db = m.disk.gain_db
+    return (f"gain margins {m.gain_margin_lower:.4g} ({m.gain_margin_lower_hz:.4g} Hz) and "
+            f"{m.gain_margin_upper:.4g} ({m.gain_margin_upper_hz:.4g} Hz), phase margin "
+            f"{m.phase_margin_deg:.2f}° ({m.phase_margin_hz:.4g} Hz), delay margin "
+            f"{m.delay_margin_s * 1e3:.4g} ms, peak |S| {m.peak_sensitivity:.4g} "
+            f"({m.peak_sensitivity_hz:.4g} Hz), disk margin {m.disk.alpha:.4g} "
+            f"([{lo_db:.2f}, {hi_db:.2f}] dB, ±{m.disk.phase_deg:.2f}°)")
+
+
 def _load(model):
     from rotordyn.model import builtin as models
 
@@ -263,8 +277,9 @@ def run_closed_loop(args) -> int:
                "hinf_gamma": k.info.get("gamma") if args.law == "hinf" else None,
                "open_loop_max_real_1_per_s": float(ol_lam.real.max()),
                "closed_loop_max_real_1_per_s": cl.max_real,
-               "closed_loop_min_damping": cl.min_damping, "gain_margin": cl.gain_margin,
-               "phase_margin_deg": cl.phase_margin_deg, "peak_sensitivity": cl.peak_sensitivity,
+               "closed_loop_min_damping": cl.min_damping,
+               "margins": cl.margins.summary() if cl.margins is not None else None,
+               "margins_message": cl.margins_message,
                "open_loop_status": ol.status, "closed_loop_status": cln.status,
                "open_loop_final_amplitude_m": _peak(dev(ol)[last]),
                "closed_loop_final_amplitude_m": _peak(dev(cln)[last]),
@@ -288,8 +303,8 @@ def run_closed_loop(args) -> int:
         print(json_text(summary))
     else:
         print(f"{args.law}: open loop max Re λ = {summary['open_loop_max_real_1_per_s']:.3f} 1/s, "
-              f"closed loop {cl.max_real:.3f} 1/s (min ζ {cl.min_damping:.4f}, GM "
-              f"{cl.gain_margin:.3g}, PM {cl.phase_margin_deg:.1f}°); nonlinear final amplitude "
+              f"closed loop {cl.max_real:.3f} 1/s (min ζ {cl.min_damping:.4f}); "
+              f"{_margins_text(cl)}; nonlinear final amplitude "
               f"{summary['open_loop_final_amplitude_m']:.3g} m open, "
               f"{summary['closed_loop_final_amplitude_m']:.3g} m closed; wrote {out}")
     return 0 if ol.status == "ok" and cln.status == "ok" else 1

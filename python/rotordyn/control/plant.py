@@ -96,3 +96,20 @@ def as_plant(value, field: str = "plant") -> Plant:
         raise InputError(f"{field}: expected a rotordyn.control.plant.Plant (from "
                          f"rotordyn.control.plant.plant()), got {type(value).__name__}")
     return value
+
+
+def paired(p, k) -> None:
+    """A plant and a controller that reads exactly the plant's measurements (InputError
+    naming ``controller`` otherwise)."""
+    from rotordyn.operation.controller import Controller
+
+    as_plant(p)
+    chk.controller(k)
+    if not isinstance(k, Controller):  # pragma: no cover - chk.controller refuses it
+        raise InputError("controller: expected a rotordyn.control.Controller")
+    if k.n_inputs != p.C.shape[0]:
+        raise InputError(f"controller: expected {p.C.shape[0]} inputs (the plant's "
+                         f"measurements), got {k.n_inputs}")
+    if tuple(k.measurements) != tuple(p.measurements):
+        raise InputError(f"controller.measurements: expected the plant's measurements "
+                         f"{list(p.measurements)}, got {list(k.measurements)}")
