@@ -9,10 +9,11 @@
 - the paper rig's tuned PD, LQG and H∞ laws: the gain margins equal the loop gains α at which
   the closed loop u = α K y has an eigenvalue on the imaginary axis (Brent on the closed-loop
   matrix's largest Re λ, 1e-4 as the issue asks; observed ~1e-9); the delay margin equals the
-  delay at which the closed loop with a 6th-order Padé delay turns unstable (1e-6); peak |S|
-  and the balanced disk margin equal python-control's L∞ norms (SLICOT AB13DD, a different
-  algorithm: Bruinsma–Steinbuch level sets) of S and (S − T)/2 built by python-control from
-  the test's own state scaling (1e-6).
+  delay at which the closed loop with a 6th-order Padé delay turns unstable (1e-6) and the
+  exact delay puts 1 + L e^{−iωτ} at 0 (1e-9); peak |S| and the balanced disk margin equal
+  the test's own dense evaluation (numpy solves on the unscaled matrices, its own grid and a
+  bounded scalar search, 1e-9) and, to its accuracy on these sharp peaks (2e-3),
+  python-control's L∞ norm (SLICOT AB13DD: Hamiltonian level sets, another algorithm).
 - a loop that is not closed-loop stable is refused (InputError naming the controller), and
   closed_loop() then reports no margins, with the reason.
 - several measurements: loop-at-a-time gain margins equal the eigenvalue scan with only that
@@ -26,7 +27,7 @@ import math
 
 import numpy as np
 import pytest
-from scipy.optimize import brentq
+from scipy.optimize import brentq, minimize_scalar
 
 import rotordyn as rd
 from rotordyn.control import lti
@@ -165,14 +166,30 @@ def test_rig_margins_against_independent_computations(rig_laws, law):
     wc = 2 * np.pi * m.delay_margin_hz
     Lc = -(_numpy_response(k, 1j * wc) @ _scaled_plant(p)(1j * wc))[0, 0]
     assert abs(1 + Lc * np.exp(-1j * wc * tau)) < 1e-9
-    # peak |S| and disk margin: python-control's L∞ norm (SLICOT AB13DD)
+    # peak |S| and disk margin: the test's own dense evaluation (numpy solves on the unscaled
+    # matrices) on its own grid, refined by a bounded scalar search
+    def dense_L(f):
+        s = 2j * np.pi * f
+        G = p.C @ np.linalg.solve(s * np.eye(p.A.shape[0]) - p.A, p.B)
+        return -(_numpy_response(k, s) @ G)[0, 0]
+
+    lam = np.linalg.eigvals(closed_loop_matrix(p, k))  # sharp peaks sit at lightly damped poles
+    fd = np.abs(lam.imag[lam.imag > 0]) / (2 * np.pi)
+    grid = np.unique(np.concatenate([np.geomspace(0.1, 5000.0, 1200),
+                                     (fd[:, None] * (1 + np.linspace(-2e-3, 2e-3, 9))).ravel()]))
+    for fun, mine in ((lambda L: abs(1 / (1 + L)), m.peak_sensitivity),
+                      (lambda L: abs(1 / (1 + L) - 0.5), 1 / m.disk.alpha)):
+        vals = np.array([fun(dense_L(f)) for f in grid])
+        i = int(np.argmax(vals))
+        r = minimize_scalar(lambda lf: -fun(dense_L(np.exp(lf))), method="bounded",
+                            bounds=(np.log(grid[max(i - 1, 0)]), np.log(grid[i + 1])),
+                            options={"xatol": 1e-13})
+        assert mine >= -r.fun * (1 - 1e-12) and mine == pytest.approx(-r.fun, rel=1e-9)
+    # python-control's L∞ norm (SLICOT AB13DD, Hamiltonian level sets) agrees to its own
+    # accuracy on this sharp peak (observed 6e-6 .. 6e-4 depending on the realisation)
     L = -(k.to_control() * _scaled_plant(p))
-    S = control.feedback(control.ss([], [], [], [[1.0]]), L)
-    ns, fs = control.linfnorm(S)
-    assert m.peak_sensitivity == pytest.approx(ns, rel=1e-6)
-    assert m.peak_sensitivity_hz == pytest.approx(fs / (2 * np.pi), rel=1e-3)
-    nd, _ = control.linfnorm(S - 0.5)
-    assert m.disk.alpha == pytest.approx(1 / nd, rel=1e-6)
+    ns, _ = control.linfnorm(control.feedback(control.ss([], [], [], [[1.0]]), L))
+    assert m.peak_sensitivity == pytest.approx(ns, rel=2e-3)
 
 
 def test_rig_pd_values_of_the_issue(rig_laws):

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rotordyn._common import validate as v
+from rotordyn._common.balance import scaled, state_scaling
 from rotordyn.errors import InputError
 
 BATCH = 256  # frequencies per batched solve
@@ -85,22 +86,13 @@ def as_ss(field: str, value, dt=None) -> SS:
 
 
 def balanced(ss: SS) -> SS:
-    """The same system with states scaled x = T x̃ by LAPACK's balancing of the square
-    [[A, B, 0], [0, 0, 0], [C, 0, 0]] (no permutation; input and output rows/columns are zero
-    on one side, so gebal leaves them alone): T is diagonal with powers of two, so Ã = T⁻¹AT,
-    B̃ = T⁻¹B, C̃ = CT are exact in floating point and the transfer function is unchanged."""
-    from scipy.linalg import matrix_balance
-
-    n, (ny, nu) = ss.n, ss.shape
-    if n == 0:
-        return SS(ss.A, ss.B, ss.C, ss.D, ss.dt, np.ones(0))
-    M = np.zeros((n + nu + ny, n + nu + ny))
-    M[:n, :n], M[:n, n:n + nu], M[n + nu:, :n] = ss.A, ss.B, ss.C
-    _, (t, _) = matrix_balance(M, permute=False, separate=True)
-    t = t[:n]
-    base = ss.scale if ss.scale is not None else np.ones(n)
-    return SS(ss.A * (1 / t)[:, None] * t[None, :], ss.B / t[:, None], ss.C * t[None, :],
-              ss.D.copy(), ss.dt, base * t)
+    """The same system with states scaled x = T x̃ (:func:`rotordyn._common.balance.state_scaling`:
+    T diagonal powers of two, so Ã = T⁻¹AT, B̃ = T⁻¹B, C̃ = CT are exact in floating point and
+    the transfer function is unchanged)."""
+    t = state_scaling(ss.A, ss.B, ss.C)
+    A, B, C = scaled(ss.A, ss.B, ss.C, t)
+    base = ss.scale if ss.scale is not None else np.ones(ss.n)
+    return SS(A, B, C, ss.D.copy(), ss.dt, base * t)
 
 
 def points(w: np.ndarray, dt) -> tuple[np.ndarray, np.ndarray]:
@@ -210,3 +202,42 @@ def loop_at_output(P: SS, K: SS, i: int) -> SS:
     C = e.T @ (np.hstack([P.C, np.zeros((ny, K.n))]) + P.D @ Ux)
     D = e.T @ P.D @ Uv
     return SS(A, B, -C, -D, P.dt)
+
+
+def zpk(ss: SS, ref_hz: float | None = None):
+    """(zeros, poles, gain) of a SISO system, for tools that evaluate a transfer function
+    from its factors (SciPy's ``freqresp`` converts a state space to polynomial coefficients,
+    which for the rig's 20-odd states loses every digit). Poles: eig(Ã); zeros: the finite
+    generalized eigenvalues of the Rosenbrock pencil ([[Ã, b̃], [c̃, d]], diag(I, 0)), both on
+    the balanced realisation; gain matched to G at ``ref_hz`` (default: the geometric mean
+    of the poles' magnitudes, off any pole), real for a real system. Continuous: s-plane
+    factors; discrete: z-plane."""
+    from scipy.linalg import eig
+
+    if ss.shape != (1, 1):
+        raise InputError(f"system: zpk() needs one input and one output, got {ss.shape}")
+    b = balanced(ss)
+    n = b.n
+    poles = np.linalg.eigvals(b.A).astype(complex) if n else np.zeros(0, complex)
+    if n:
+        M = np.block([[b.A, b.B], [b.C, b.D]])
+        N = np.zeros_like(M)
+        N[:n, :n] = np.eye(n)
+        al, be = eig(M, N, right=False, homogeneous_eigvals=True)
+        big = 1e8 * max(1.0, float(np.abs(poles).max()))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            z = al / be
+        zeros = z[np.isfinite(z) & (np.abs(z) < big)]
+    else:
+        zeros = np.zeros(0, complex)
+    if ref_hz is None:
+        mags = np.abs(poles[np.abs(poles) > 0])
+        w0 = float(np.exp(np.log(mags).mean())) * 1.0123 if mags.size else 1.0
+        if ss.dt is not None:
+            w0 = min(w0, 0.5 * np.pi / ss.dt)
+    else:
+        w0 = 2 * np.pi * v.positive("ref_hz", ref_hz)
+    s0 = points(np.array([w0]), ss.dt)[0][0]
+    g0 = freqresp(b, [w0])[0, 0, 0]
+    k = g0 * np.prod(s0 - poles) / np.prod(s0 - zeros)
+    return zeros, poles, float(k.real)

@@ -150,11 +150,27 @@ class Controller:
         return cls(np.asarray(sys.A), np.asarray(sys.B), np.asarray(sys.C), np.asarray(sys.D),
                    measurements, sample_time_s=dt, **kw)
 
-    def to_control(self):
-        """The python-control system (dt = sample time, or 0)."""
+    def to_control(self, *, balanced: bool = True):
+        """The python-control system (dt = sample time, or 0), input names ``y[i]``, output
+        ``chamber_pressure_command_pa``. ``balanced`` (default): states scaled by powers of
+        two (exact, :mod:`rotordyn._common.balance`; each state's name carries its ``·2^-e``)
+        so python-control evaluates it to round-off with or without slycot (an LQG law's
+        unscaled states made SLICOT's TB05AD 29 % wrong: issue 24); same transfer function."""
         import control
 
-        return control.ss(self.A, self.B, self.C, self.D, dt=self.sample_time_s or 0)
+        from rotordyn._common.balance import scaled, scaled_state_names, state_scaling
+
+        v.boolean("balanced", balanced)
+        A, B, C = self.A, self.B, self.C
+        names = [f"x[{i}]" for i in range(self.n_states)]
+        if balanced and self.n_states:
+            t = state_scaling(A, B, C)
+            A, B, C = scaled(A, B, C, t)
+            names = scaled_state_names(names, t)
+        return control.ss(A, B, C, self.D, dt=self.sample_time_s or 0,
+                          inputs=[f"y[{i}]" for i in range(self.n_inputs)],
+                          outputs=["chamber_pressure_command_pa"], states=names or None,
+                          name=self.name)
 
     def scaled(self, gain: float) -> "Controller":
         """The same controller with its output multiplied by ``gain``."""
