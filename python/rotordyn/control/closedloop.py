@@ -90,36 +90,27 @@ class ClosedLoopResult:
                 f"±{m.disk.phase_deg:.3g}°)")
 
 
-def _discrete_loop(p, k, freqs_hz):
+def _discrete_loop(p, k, freqs_hz, delay_s=0.0):
     """Sampled-data loop of a discrete controller: the plant discretised exactly with a
-    zero-order hold (Φ = e^{AT}, Γ = ∫e^{Aτ}dτ B) and sampled at the controller's instants;
-    closed-loop z-eigenvalues mapped to s = ln z / T. Returns (A_cl (discrete), λ_s, L(e^{iωT}))
-    with the frequencies limited to below Nyquist."""
-    from scipy.linalg import expm
+    zero-order hold (Φ = e^{AT}, Γ = ∫e^{Aτ}dτ B; with a computation delay the exact
+    delayed hold of :mod:`rotordyn.control.delay`) and sampled at the controller's instants;
+    closed-loop z-eigenvalues mapped to s = ln z / T. Returns (A_cl (discrete), λ_s,
+    L(e^{iωT})) with the frequencies limited to below Nyquist."""
+    from rotordyn.control import lti
+    from rotordyn.control.margins import controller_ss, plant_ss
 
     T = k.sample_time_s
-    Dr = p.info.get("feedthrough")
-    if Dr is not None and np.any(Dr):
-        raise InputError("controller.sample_time_s: a discrete controller on a reduced plant "
-                         "with feedthrough is not supported; use the full plant")
-    n, m = p.A.shape[0], 1
-    E = expm(np.block([[p.A, p.B], [np.zeros((m, n + m))]]) * T)
-    Phi, Gam = E[:n, :n], E[:n, n:]
-    C = p.C
-    nk = k.n_states
-    top = np.hstack([Phi + Gam @ k.D @ C, Gam @ k.C])
-    bot = np.hstack([k.B @ C, k.A])
-    Ad = np.vstack([top, bot]) if nk else Phi + Gam @ k.D @ C
+    P = plant_ss(p, T, delay_s)
+    K = controller_ss(k)
+    Ad = lti.feedback_A(P, K)
     z = np.linalg.eigvals(Ad).astype(complex)
+    # a dead-beat mode (z = 0, e.g. the held command of a one-sample computation delay) is
+    # reported at |z| = 1e-300, i.e. Re λ = −690/T: finite, faster than any sampled mode
+    z = np.where(np.abs(z) < 1e-300, 1e-300, z)
     lam = np.log(z) / T
     f = np.asarray(freqs_hz, dtype=float)
     f = f[f < 0.5 / T]
-    L = np.empty(f.size, dtype=complex)
-    for i, fi in enumerate(f):
-        zi = np.exp(2j * np.pi * fi * T)
-        G = C @ np.linalg.solve(zi * np.eye(n) - Phi, Gam)
-        K = k.D + (k.C @ np.linalg.solve(zi * np.eye(nk) - k.A, k.B) if nk else 0)
-        L[i] = -(K @ G)[0, 0]
+    L = lti.freqresp(lti.balanced(lti.loop_at_input(P, K)), 2 * np.pi * f)[:, 0, 0]
     return Ad, lam, L
 
 
@@ -158,33 +149,44 @@ def loop_response(p, k, freqs_hz) -> np.ndarray:
     return lti.freqresp(loop, w)[:, 0, 0]
 
 
-def closed_loop(p, k, *, freqs_hz=None) -> ClosedLoopResult:
+def closed_loop(p, k, *, freqs_hz=None, computation_delay_s: float = 0.0,
+                pade_order: int = 6) -> ClosedLoopResult:
     """Closed loop of plant ``p`` (:func:`rotordyn.control.plant`) and controller ``k``
     (:class:`rotordyn.control.Controller`; a discrete one closes a sampled-data loop with the
     plant discretised exactly under ZOH, eigenvalues mapped back by s = ln z / T, margins
     below Nyquist). Margins: :func:`rotordyn.control.margins.margins` (exact; None with the
     reason when the closed loop is unstable). ``freqs_hz``: the grid of the returned loop
-    response (default 0.1 Hz – 5 kHz, 4000 points; a discrete law: below Nyquist)."""
+    response (default 0.1 Hz – 5 kHz, 4000 points; a discrete law: below Nyquist).
+    ``computation_delay_s`` (s, ≥ 0; :mod:`rotordyn.control.delay`): the command reaches the
+    valve that much later — a continuous law through the Padé approximant of ``pade_order``
+    (1..20; its phase error: :func:`rotordyn.control.delay.pade_phase_error`), a discrete law
+    exactly (at most its sample time)."""
+    from rotordyn.control.delay import check_order, computation_delay_for, with_pade_delay
     from rotordyn.control.margins import margins
 
     as_plant(p)
     if not isinstance(k, Controller):  # a python-control system reading the plant's outputs
         k = Controller.from_lti(k, p.measurements)
     paired(p, k)
+    tau = computation_delay_for(k, computation_delay_s)
+    check_order(pade_order)
     f = np.logspace(-1, np.log10(5000.0), 4000) if freqs_hz is None \
         else chk.frequencies("freqs_hz", freqs_hz)
     if k.discrete and not np.any(f < 0.5 / k.sample_time_s):
         raise InputError(f"freqs_hz: expected frequencies below the controller's Nyquist "
                          f"frequency {0.5 / k.sample_time_s:g} Hz, got {f[0]:g} .. {f[-1]:g}")
+    k0 = k
+    if tau and not k.discrete:
+        k = with_pade_delay(k, tau, pade_order)
     if k.discrete:
-        Acl, lam, L = _discrete_loop(p, k, f)
+        Acl, lam, L = _discrete_loop(p, k, f, tau)
         f = f[f < 0.5 / k.sample_time_s]
     else:
         Acl = closed_loop_matrix(p, k)
         lam = np.linalg.eigvals(Acl)
         L = loop_response(p, k, f)
     if np.all(np.isfinite(lam)) and lam.real.max() < 0:
-        m, msg = margins(p, k), "ok"
+        m, msg = margins(p, k0, computation_delay_s=tau, pade_order=pade_order), "ok"
     else:
         m = None
         msg = (f"not computed: the closed loop is not stable (largest Re λ = "

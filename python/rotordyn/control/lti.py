@@ -48,7 +48,7 @@ class SS:
         lam = np.linalg.eigvals(self.A).astype(complex) if self.n else np.zeros(0, complex)
         if self.dt is None:
             return lam
-        with np.errstate(divide="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore"):
             return np.log(lam) / self.dt
 
 

@@ -536,11 +536,13 @@ class Margins:
         return out
 
 
-def plant_ss(p, dt=None) -> lti.SS:
+def plant_ss(p, dt=None, delay_s: float = 0.0) -> lti.SS:
     """A :class:`~rotordyn.control.plant.Plant` (command → measurements, a reduced plant's
     feedthrough kept) as an :class:`lti.SS`; with ``dt`` discretised exactly under a
-    zero-order hold (no feedthrough allowed then)."""
-    from scipy.linalg import expm
+    zero-order hold (no feedthrough allowed then), and with a computation delay
+    ``delay_s`` ∈ (0, dt] the exact sampled plant of :mod:`rotordyn.control.delay` (the
+    previous command u[k−1] as an extra state)."""
+    from rotordyn.control.delay import delayed_zoh
 
     Dr = p.info.get("feedthrough")
     D = np.asarray(Dr, float) if Dr is not None else np.zeros((p.C.shape[0], 1))
@@ -550,23 +552,34 @@ def plant_ss(p, dt=None) -> lti.SS:
         raise InputError("controller.sample_time_s: a discrete controller on a reduced plant "
                          "with feedthrough is not supported; use the full plant")
     n = p.A.shape[0]
-    E = expm(np.block([[p.A, p.B], [np.zeros((1, n + 1))]]) * dt)
-    return lti.SS(E[:n, :n], E[:n, n:], p.C, D, dt)
+    Phi, G0, G1 = delayed_zoh(p.A, p.B, dt, delay_s)
+    if delay_s == 0:
+        return lti.SS(Phi, G0, p.C, D, dt)
+    A = np.block([[Phi, G1], [np.zeros((1, n + 1))]])
+    B = np.vstack([G0, [[1.0]]])
+    return lti.SS(A, B, np.hstack([p.C, np.zeros((p.C.shape[0], 1))]), D, dt)
 
 
 def controller_ss(k) -> lti.SS:
     return lti.SS(k.A, k.B, k.C, k.D, k.sample_time_s)
 
 
-def margins(p, k) -> Margins:
+def margins(p, k, *, computation_delay_s: float = 0.0, pade_order: int = 6) -> Margins:
     """Every margin of plant ``p`` (:func:`rotordyn.control.plant.plant`, full or reduced)
     closed by controller ``k`` (continuous, or discrete: sampled-data loop with the plant
-    discretised exactly under a zero-order hold, frequencies up to Nyquist). InputError
-    naming ``controller`` when the closed loop is not stable."""
+    discretised exactly under a zero-order hold, frequencies up to Nyquist). A computation
+    delay (:mod:`rotordyn.control.delay`): a continuous law through its Padé approximant of
+    ``pade_order``, a discrete law exactly (delay ≤ its sample time). InputError naming
+    ``controller`` when the closed loop is not stable."""
+    from rotordyn.control.delay import check_order, computation_delay_for, with_pade_delay
     from rotordyn.control.plant import paired
 
     paired(p, k)
-    P = plant_ss(p, k.sample_time_s)
+    tau = computation_delay_for(k, computation_delay_s)
+    check_order(pade_order)
+    if tau and not k.discrete:
+        k = with_pade_delay(k, tau, pade_order)
+    P = plant_ss(p, k.sample_time_s, tau if k.discrete else 0.0)
     K = controller_ss(k)
     Acl = lti.feedback_A(lti.balanced(P), lti.balanced(K))
     ok, mr = lti.stable(Acl, P.dt)

@@ -1,0 +1,144 @@
+"""Computation delay in the linear loop (rotordyn.control.delay, issue 24):
+
+- the Padé approximant's realisation equals python-control's ``pade`` polynomials (1e-10),
+  is all-pass (|P| = 1 to 1e-13), and its stated phase error equals the angle of
+  P(iω) e^{iωτ} computed directly (1e-12), shrinking with the order;
+- a generic loop k/(s+1)³ (closed-form delay margin τ_m = PM/ω_c) delayed by τ₁ through an
+  8th-order Padé keeps a delay margin τ_m − τ₁ (to the Padé phase error at ω_c, 1e-7);
+- the rig's PD law, continuous: the closed loop with a delay turns unstable at the delay
+  margin (1e-6, order 6); discrete (sample-and-hold of the computation): a delay of one full
+  sample equals the law followed by z⁻¹ (the closed-loop eigenvalues, 1e-9), a fractional
+  delay equals the sampled plant propagated piecewise by the test (u[k−1] for τ, then u[k])
+  (1e-12), no delay is the plain ZOH loop;
+- bad input: a negative or non-finite delay, a delay beyond the sample time, a Padé order
+  outside 1..20 raise an InputError naming the field.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from scipy.linalg import expm
+from scipy.optimize import brentq
+
+import rotordyn as rd
+from rotordyn.control import Controller, lti
+from rotordyn.control import margins as mg
+from rotordyn.control.closedloop import closed_loop, closed_loop_matrix
+from rotordyn.control.delay import pade, pade_phase_error, with_pade_delay
+from rotordyn.control.plant import plant
+from rotordyn.errors import InputError
+
+control = pytest.importorskip("control")
+AY, PC = -1.85e-3, 0.05e6
+
+
+@pytest.mark.parametrize("order", [1, 3, 6, 10])
+def test_pade_realisation_and_its_error(order):
+    tau = 2.5e-3
+    P = pade(tau, order)
+    num, den = control.pade(tau, order)
+    f = np.geomspace(1.0, 400.0, 30)
+    s = 2j * np.pi * f
+    ref = np.polyval(num, s) / np.polyval(den, s)
+    G = lti.freqresp(P, 2 * np.pi * f)[:, 0, 0]
+    assert np.max(np.abs(G - ref)) < 1e-10
+    assert np.max(np.abs(np.abs(G) - 1)) < 1e-13
+    err = pade_phase_error(tau, order, f)
+    assert np.max(np.abs(err - np.angle(G * np.exp(s * tau)))) < 1e-12
+    if order > 1:
+        assert np.all(np.abs(err) <= np.abs(pade_phase_error(tau, order - 1, f)) + 1e-13)
+
+
+def test_delay_margin_of_a_delayed_generic_loop():
+    k = 2.0
+    wc = math.sqrt(k ** (2 / 3) - 1)
+    tau_m = (math.pi - 3 * math.atan(wc)) / wc
+    L = lti.as_ss("loop", control.ss(control.tf([k], [1, 3, 3, 1])))
+    tau1 = 0.4
+    P = pade(tau1, 8)
+    Ld = lti.SS(np.block([[L.A, np.zeros((3, 8))], [P.B @ L.C, P.A]]),
+                np.vstack([L.B, np.zeros((8, 1))]), np.hstack([P.D @ L.C, P.C]), P.D @ L.D)
+    m = mg.loop_margins(Ld)
+    eps = abs(pade_phase_error(tau1, 8, wc / (2 * math.pi))[0])
+    assert eps < 1e-6
+    assert m.delay_margin_s == pytest.approx(tau_m - tau1, abs=2 * eps / wc + 1e-12)
+
+
+@pytest.fixture(scope="module")
+def pd_law():
+    from rotordyn.control.pid import tune_pd
+
+    p = plant(rd.models.paper_rig(), 50.0, PC, AY, measurements=[("journal", 0)])
+    return p, tune_pd(p)[0]
+
+
+def test_continuous_law_with_delay_turns_unstable_at_its_delay_margin(pd_law):
+    p, k = pd_law
+    dm = closed_loop(p, k).delay_margin_s
+    mr = lambda tau: closed_loop_matrix(p, with_pade_delay(k, tau, 6))  # noqa: E731
+    root = brentq(lambda t: np.linalg.eigvals(mr(t)).real.max(), 0.8 * dm, 1.2 * dm,
+                  xtol=1e-15)
+    assert root == pytest.approx(dm, rel=1e-6)
+    cl = closed_loop(p, k, computation_delay_s=0.5 * dm)
+    assert cl.stable and cl.delay_margin_s == pytest.approx(0.5 * dm, rel=1e-6)
+    assert not closed_loop(p, k, computation_delay_s=1.1 * dm).stable
+
+
+def test_discrete_law_with_computation_delay(pd_law):
+    from rotordyn.control.export import discretise
+
+    p, k = pd_law
+    T = 2e-4
+    kd = discretise(k, T)
+    # one full sample: the same as the law followed by z^-1 (the test's own augmentation)
+    nk = kd.n_states
+    A = np.block([[kd.A, np.zeros((nk, 1))], [kd.C, np.zeros((1, 1))]])
+    kz = kd.with_options(A=A, B=np.vstack([kd.B, kd.D]), C=np.hstack([np.zeros((1, nk)),
+                                                                        [[1.0]]]),
+                         D=np.zeros_like(kd.D))
+    a = np.sort_complex(closed_loop(p, kd, computation_delay_s=T).eigenvalues)
+    b = np.sort_complex(closed_loop(p, kz).eigenvalues)
+    assert a.size == b.size
+    assert np.max(np.abs(a - b) / np.abs(b)) < 1e-9
+    # a fractional delay: propagate the sampled plant piecewise
+    tau = 0.3 * T
+    Ps = mg.plant_ss(p, T, tau)
+    n = p.A.shape[0]
+
+    def step(x, up, u):
+        Eh = expm(np.block([[p.A, p.B], [np.zeros((1, n + 1))]]) * tau)
+        x1 = Eh[:n, :n] @ x + Eh[:n, n:] @ up
+        Er = expm(np.block([[p.A, p.B], [np.zeros((1, n + 1))]]) * (T - tau))
+        return Er[:n, :n] @ x1 + Er[:n, n:] @ u
+    rng = np.random.default_rng(2)
+    x, up, u = rng.normal(size=n) * 1e-5, rng.normal(size=1) * 1e3, rng.normal(size=1) * 1e3
+    xa = Ps.A @ np.concatenate([x, up]) + Ps.B @ u
+    ref = step(x, up, u)
+    assert np.max(np.abs(xa[:n] - ref)) <= 1e-12 * np.max(np.abs(ref))
+    assert xa[n] == u[0]
+    cl = closed_loop(p, kd, computation_delay_s=tau)
+    assert cl.stable and cl.margins is not None
+    assert cl.delay_margin_s < closed_loop(p, kd).delay_margin_s
+    # no delay: the plain ZOH loop
+    assert np.array_equal(closed_loop(p, kd, computation_delay_s=0.0).eigenvalues,
+                          closed_loop(p, kd).eigenvalues)
+
+
+def test_delay_bad_input(pd_law):
+    p, k = pd_law
+    with pytest.raises(InputError, match="computation_delay_s"):
+        closed_loop(p, k, computation_delay_s=-1e-3)
+    with pytest.raises(InputError, match="computation_delay_s"):
+        closed_loop(p, k, computation_delay_s=math.nan)
+    with pytest.raises(InputError, match="computation_delay_s"):
+        closed_loop(p, k.with_options(sample_time_s=1e-4), computation_delay_s=2e-4)
+    with pytest.raises(InputError, match="pade_order"):
+        closed_loop(p, k, computation_delay_s=1e-3, pade_order=0)
+    with pytest.raises(InputError, match="delay_s"):
+        pade(-1.0)
+    with pytest.raises(InputError, match="pade_order"):
+        pade(1e-3, 30)
+    with pytest.raises(InputError, match="controller"):
+        with_pade_delay(Controller.static([[1.0, 0.0]], [("journal", 0)],
+                                          sample_time_s=1e-3), 1e-3)
