@@ -14,6 +14,11 @@
   x[k+1] = Φ x[k] + Γ₁ u[k−1] + Γ₀ u[k], Φ = e^{AT}, Γ₀ = ∫₀^{T−τ} e^{As} ds B,
   Γ₁ = e^{A(T−τ)} ∫₀^{τ} e^{As} ds B (Franklin, Powell & Workman, *Digital Control of Dynamic
   Systems*, 3rd ed., 1998, §4.3.4), with u[k−1] a state of the sampled plant.
+
+In the nonlinear transient: a continuous law with its Padé delay (:func:`with_pade_delay`) and
+a discrete law delayed by one whole sample (:func:`with_sample_delay`) are ordinary
+controllers and run as they are; a fractional delay of a discrete law is analysed linearly
+only (the transient applies a discrete law's command at its sample instants).
 """
 
 from __future__ import annotations
@@ -138,3 +143,26 @@ def computation_delay_for(k, value) -> float:
         raise InputError(f"computation_delay_s: expected a delay in [0, {k.sample_time_s:g}] s "
                          f"(the discrete law's sample time), got {value!r}")
     return tau
+
+
+def with_sample_delay(k):
+    """The discrete law ``k`` whose command is applied one full sample late (a computation
+    that takes the whole sample time: u applied at (k+1)T is the one computed from y[k]),
+    exactly, as a discrete :class:`Controller` with one more state (the command waiting to
+    be applied): x' = [A 0; C 0] x + [B; D] y, u = [0 1] x. It runs in the nonlinear
+    transient like any discrete law; its linear loop equals ``closed_loop(p, k,
+    computation_delay_s=k.sample_time_s)``."""
+    from rotordyn.control._checks import controller
+
+    controller(k)
+    if not k.discrete:
+        raise InputError("controller.sample_time_s: expected a discrete law (a one-sample "
+                         "delay needs a sample time); for a continuous law use "
+                         "with_pade_delay()")
+    nk, ny = k.n_states, k.n_inputs
+    A = np.block([[k.A, np.zeros((nk, 1))], [k.C, np.zeros((1, 1))]])
+    B = np.vstack([k.B, k.D])
+    C = np.hstack([np.zeros((1, nk)), [[1.0]]])
+    return k.with_options(A=A, B=B, C=C, D=np.zeros((1, ny)), name=f"{k.name}+1 sample",
+                          info=dict(k.info, computation_delay={
+                              "delay_s": k.sample_time_s, "samples": 1}))
