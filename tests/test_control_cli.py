@@ -60,6 +60,12 @@ def test_schedule_cli(tmp_path):
 
 
 def test_control_cli_bad_input_exit_2(tmp_path, capsys):
+    rc = main(["control", "closed-loop", "paper-rig", "--computation-delay-s", "-1e-3",
+               "--out", str(tmp_path)])
+    assert rc == 2 and "--computation-delay-s" in capsys.readouterr().err
+    rc = main(["control", "closed-loop", "paper-rig", "--computation-delay-s", "1e-3",
+               "--pade-order", "0", "--out", str(tmp_path)])
+    assert rc == 2 and "--pade-order" in capsys.readouterr().err
     rc = main(["control", "closed-loop", "paper-rig", "--valve-hz", "-3", "--out", str(tmp_path)])
     assert rc == 2
     assert "--valve-hz" in capsys.readouterr().err

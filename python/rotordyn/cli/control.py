@@ -105,6 +105,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                    metavar=("START", "STOP", "RATE_HZ_S"),
                    help="run up instead of a constant speed (design at --speed-hz)")
     c.add_argument("--n-out", type=int, default=4001, help="stored time samples")
+    c.add_argument("--computation-delay-s", type=float, default=0.0,
+                   help="delay between measurement and command, s (linear loop and transient "
+                        "through its Padé approximant)")
+    c.add_argument("--pade-order", type=int, default=6,
+                   help="order of the Padé approximant of --computation-delay-s (1..20)")
     c.set_defaults(func=run_closed_loop)
 
 
@@ -211,6 +216,10 @@ def run_closed_loop(args) -> int:
         raise InputError(f"--disturbance-c: expected a finite displacement (clearances), got "
                          f"{args.disturbance_c}")
     v.integer("--n-out (n_out)", args.n_out, lo=2)
+    from rotordyn.control.delay import MAX_DELAY_S, MAX_ORDER
+
+    v.in_range("--computation-delay-s", args.computation_delay_s, 0.0, MAX_DELAY_S)
+    v.integer("--pade-order", args.pade_order, lo=1, hi=MAX_ORDER)
     out = Path(out_dir("--out", args.out))  # before the design and the transients
     if args.law == "hinf":
         from rotordyn.control.hinf import _slycot
@@ -233,6 +242,9 @@ def run_closed_loop(args) -> int:
               measurements=[("journal", 0)], actuator=act)
     if args.law == "pd":
         k, cl = tune_pd(p)
+        if args.computation_delay_s:
+            cl = closed_loop(p, k, computation_delay_s=args.computation_delay_s,
+                             pade_order=args.pade_order)
     else:
         pr, _ = modal_truncation(p, 500.0)
         if args.law == "hinf":
@@ -241,7 +253,12 @@ def run_closed_loop(args) -> int:
             k = hinf(pr)
         else:
             k = lqg(pr)
-        cl = closed_loop(p, k)
+        cl = closed_loop(p, k, computation_delay_s=args.computation_delay_s,
+                         pade_order=args.pade_order)
+    if args.computation_delay_s:  # the transient runs the same delayed law
+        from rotordyn.control.delay import with_pade_delay
+
+        k = with_pade_delay(k, args.computation_delay_s, args.pade_order)
     ol_lam = p.poles
     asm = assembled(system)
     c = asm.bearings[0].clearance_m if asm.bearings else 1.0
@@ -274,6 +291,8 @@ def run_closed_loop(args) -> int:
         out / "timeseries.csv", index=False)
     last = cln.t >= 0.8 * t_end
     summary = {"law": args.law, "controller_states": k.n_states,
+               "computation_delay_s": args.computation_delay_s,
+               "pade_order": args.pade_order if args.computation_delay_s else None,
                "hinf_gamma": k.info.get("gamma") if args.law == "hinf" else None,
                "open_loop_max_real_1_per_s": float(ol_lam.real.max()),
                "closed_loop_max_real_1_per_s": cl.max_real,
