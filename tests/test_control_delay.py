@@ -9,7 +9,8 @@
   margin (1e-6, order 6); discrete (sample-and-hold of the computation): a delay of one full
   sample equals the law followed by z⁻¹ (the closed-loop eigenvalues, 1e-9), a fractional
   delay equals the sampled plant propagated piecewise by the test (u[k−1] for τ, then u[k])
-  (1e-12), no delay is the plain ZOH loop;
+  (1e-12), no delay is the plain ZOH loop; the sampled loop's gain margins equal the scan of
+  the spectral radius of the closed loop with α K (1e-6);
 - bad input: a negative or non-finite delay, a delay beyond the sample time, a Padé order
   outside 1..20 raise an InputError naming the field.
 """
@@ -122,6 +123,15 @@ def test_discrete_law_with_computation_delay(pd_law):
     assert xa[n] == u[0]
     cl = closed_loop(p, kd, computation_delay_s=tau)
     assert cl.stable and cl.margins is not None
+    # the sampled-data gain margins: |z| = 1 crossings of the loop with α K (the test's scan)
+    K = lti.SS(kd.A, kd.B, kd.C, kd.D, T)
+
+    def log_rho(a):
+        Ka = lti.SS(K.A, K.B, a * K.C, a * K.D, T)
+        return np.log(np.abs(np.linalg.eigvals(lti.feedback_A(Ps, Ka)))).max()
+    for alpha in (cl.gain_margin_lower, cl.gain_margin_upper):
+        assert brentq(log_rho, 0.95 * alpha, 1.05 * alpha, xtol=1e-15) == pytest.approx(
+            alpha, rel=1e-6)
     assert cl.delay_margin_s < closed_loop(p, kd).delay_margin_s
     # no delay: the plain ZOH loop
     assert np.array_equal(closed_loop(p, kd, computation_delay_s=0.0).eigenvalues,
