@@ -179,3 +179,48 @@ def test_delayed_laws_in_the_nonlinear_transient(pd_law):
     assert a_stable < 0.5 * 0.01 * 3e-4 < 0.01 * 3e-4 < a_unst
     with pytest.raises(InputError, match="controller.sample_time_s"):
         with_sample_delay(k)
+
+
+def test_discrete_computation_delay_in_the_transient(pd_law):
+    """The C++ loop applies a discrete law's command at kT + τ: with a static law and outputs
+    every T/2, the recorded command at each output time is D·y(kT) of the last sample whose
+    application time has passed (0 before the first), to round-off; τ = T runs the same as
+    the law with the one-sample delay as a state (with_sample_delay)."""
+    from rotordyn.control.export import discretise
+
+    rig = rd.models.paper_rig()
+    T = 1e-4
+    kw = dict(disturbance_m=(0.0, 3e-6), rtol=1e-8, atol_m=1e-12)
+    gain = -1e8
+    for tau in (0.5 * T, 0.3 * T):
+        k = Controller.static([[0.0, gain]], [("journal", 0)], sample_time_s=T,
+                              computation_delay_s=tau)
+        n_out = 201 if tau == 0.5 * T else 101
+        tr = rd.transient(rig, 0.01, 50.0, PC, AY, controller=k, n_out=n_out, **kw)
+        assert tr.status == "ok", tr.message
+        y = tr.journal_y_m[:, 0] - tr.equilibrium_r[3]
+        t = tr.t
+        on_sample = np.isclose(t / T, np.rint(t / T), rtol=0, atol=1e-6)
+        ys = dict(zip(np.rint(t[on_sample] / T).astype(int), y[on_sample]))
+        kk = np.floor((t - tau) / T + 1e-6).astype(int)
+        for ti, ki, ui in zip(t, kk, tr.controller_output_pa):
+            if ki < 0:
+                assert ui == 0.0
+            elif ki in ys:
+                assert ui == pytest.approx(gain * ys[ki], rel=1e-12, abs=1e-9)
+    p, kc = pd_law
+    kd = discretise(kc, T)
+    a = rd.transient(rig, 0.02, 50.0, PC, AY, n_out=41,
+                     controller=kd.with_options(computation_delay_s=T), **kw)
+    b = rd.transient(rig, 0.02, 50.0, PC, AY, n_out=41, controller=with_sample_delay(kd), **kw)
+    c = rd.transient(rig, 0.02, 50.0, PC, AY, n_out=41, controller=kd, **kw)
+    assert a.status == b.status == c.status == "ok"
+    amp = np.max(np.abs(a.r - a.equilibrium_r))
+    assert np.max(np.abs(a.r - b.r)) <= 1e-12 * amp  # observed: bit for bit
+    assert np.max(np.abs(a.r - c.r)) > 1e-2 * amp    # the delay matters (observed 8 %)
+    with pytest.raises(InputError, match="controller.computation_delay_s"):
+        kd.with_options(computation_delay_s=2 * T)
+    with pytest.raises(InputError, match="controller.computation_delay_s"):
+        kc.with_options(computation_delay_s=1e-4)
+    with pytest.raises(InputError, match="computation_delay_s"):
+        closed_loop(p, kd.with_options(computation_delay_s=0.5 * T), computation_delay_s=T)

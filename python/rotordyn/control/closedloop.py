@@ -149,7 +149,7 @@ def loop_response(p, k, freqs_hz) -> np.ndarray:
     return lti.freqresp(loop, w)[:, 0, 0]
 
 
-def closed_loop(p, k, *, freqs_hz=None, computation_delay_s: float = 0.0,
+def closed_loop(p, k, *, freqs_hz=None, computation_delay_s: float | None = None,
                 pade_order: int = 6) -> ClosedLoopResult:
     """Closed loop of plant ``p`` (:func:`rotordyn.control.plant`) and controller ``k``
     (:class:`rotordyn.control.Controller`; a discrete one closes a sampled-data loop with the
@@ -157,10 +157,11 @@ def closed_loop(p, k, *, freqs_hz=None, computation_delay_s: float = 0.0,
     below Nyquist). Margins: :func:`rotordyn.control.margins.margins` (exact; None with the
     reason when the closed loop is unstable). ``freqs_hz``: the grid of the returned loop
     response (default 0.1 Hz – 5 kHz, 4000 points; a discrete law: below Nyquist).
-    ``computation_delay_s`` (s, ≥ 0; :mod:`rotordyn.control.delay`): the command reaches the
-    valve that much later — a continuous law through the Padé approximant of ``pade_order``
-    (1..20; its phase error: :func:`rotordyn.control.delay.pade_phase_error`), a discrete law
-    exactly (at most its sample time)."""
+    ``computation_delay_s`` (s, ≥ 0; None: the law's own; :mod:`rotordyn.control.delay`): the
+    command reaches the valve that much later — a continuous law through the Padé
+    approximant of ``pade_order`` (1..20; its phase error:
+    :func:`rotordyn.control.delay.pade_phase_error`), a discrete law exactly (at most its
+    sample time)."""
     from rotordyn.control.delay import check_order, computation_delay_for, with_pade_delay
     from rotordyn.control.margins import margins
 

@@ -15,10 +15,11 @@
   Γ₁ = e^{A(T−τ)} ∫₀^{τ} e^{As} ds B (Franklin, Powell & Workman, *Digital Control of Dynamic
   Systems*, 3rd ed., 1998, §4.3.4), with u[k−1] a state of the sampled plant.
 
-In the nonlinear transient: a continuous law with its Padé delay (:func:`with_pade_delay`) and
-a discrete law delayed by one whole sample (:func:`with_sample_delay`) are ordinary
-controllers and run as they are; a fractional delay of a discrete law is analysed linearly
-only (the transient applies a discrete law's command at its sample instants).
+In the nonlinear transient: a continuous law with its Padé delay (:func:`with_pade_delay`) is
+an ordinary controller and runs as it is; a discrete law with ``computation_delay_s`` (a field
+of :class:`~rotordyn.operation.controller.Controller`) has its command applied at kT + τ by
+the C++ loop (a second restart per sample), exactly as in the linear loop;
+:func:`with_sample_delay` is the one-sample delay as extra law state.
 """
 
 from __future__ import annotations
@@ -136,12 +137,18 @@ def delayed_zoh(A: np.ndarray, B: np.ndarray, T: float, delay_s: float):
 
 
 def computation_delay_for(k, value) -> float:
-    """``computation_delay_s`` for controller ``k``: in [0, 1] s; for a discrete law at most
-    its sample time (a longer computation is a different sample time)."""
+    """``computation_delay_s`` for controller ``k``: None takes the law's own
+    (``k.computation_delay_s``); else in [0, 1] s, for a discrete law at most its sample time
+    (a longer computation is a different sample time), and not contradicting the law's own."""
+    if value is None:
+        return float(k.computation_delay_s)
     tau = check_delay("computation_delay_s", value)
     if k.discrete and tau > k.sample_time_s:
         raise InputError(f"computation_delay_s: expected a delay in [0, {k.sample_time_s:g}] s "
                          f"(the discrete law's sample time), got {value!r}")
+    if k.computation_delay_s and tau != k.computation_delay_s:
+        raise InputError(f"computation_delay_s: the controller has its own computation delay "
+                         f"{k.computation_delay_s!r} s; got {value!r} (give None)")
     return tau
 
 

@@ -80,8 +80,10 @@ def coefficients(k: Controller) -> dict:
                          f"{list(k.measurements)} ({len(sig)} signals)")
     return {"format": FORMAT, "rotordyn_version": __version__, "name": k.name,
             "sample_time_s": k.sample_time_s,
-            "equations": "u[k] = C x[k] + D y[k]; x[k+1] = A x[k] + B y[k]; u held for one "
-                         "sample (zero-order hold)",
+            "computation_delay_s": k.computation_delay_s,
+            "equations": "u[k] = C x[k] + D y[k]; x[k+1] = A x[k] + B y[k]; u applied "
+                         "computation_delay_s after sample k and held for one sample "
+                         "(zero-order hold)",
             "inputs": sig,
             "output": {"name": "chamber_pressure_command_pa", "unit": "Pa",
                        "meaning": "command increment added to the operating point's chamber "
@@ -133,6 +135,7 @@ def to_c_header(k: Controller, path=None, *, prefix: str = "rotordyn_law") -> st
 #define {P}_NX {nx}
 #define {P}_NY {ny}
 #define {P}_SAMPLE_TIME_S {k.sample_time_s!r}
+#define {P}_COMPUTATION_DELAY_S {k.computation_delay_s!r}
 
 {arrays}
 /* Returns u[k] for the measurements y[k]; advances the state x[k] -> x[k+1]. */

@@ -564,12 +564,14 @@ def controller_ss(k) -> lti.SS:
     return lti.SS(k.A, k.B, k.C, k.D, k.sample_time_s)
 
 
-def margins(p, k, *, computation_delay_s: float = 0.0, pade_order: int = 6) -> Margins:
+def margins(p, k, *, computation_delay_s: float | None = None,
+            pade_order: int = 6) -> Margins:
     """Every margin of plant ``p`` (:func:`rotordyn.control.plant.plant`, full or reduced)
     closed by controller ``k`` (continuous, or discrete: sampled-data loop with the plant
     discretised exactly under a zero-order hold, frequencies up to Nyquist). A computation
-    delay (:mod:`rotordyn.control.delay`): a continuous law through its Padé approximant of
-    ``pade_order``, a discrete law exactly (delay ≤ its sample time). InputError naming
+    delay (:mod:`rotordyn.control.delay`; None: the law's own ``computation_delay_s``): a
+    continuous law through its Padé approximant of ``pade_order``, a discrete law exactly
+    (delay ≤ its sample time). InputError naming
     ``controller`` when the closed loop is not stable."""
     from rotordyn.control.delay import check_order, computation_delay_for, with_pade_delay
     from rotordyn.control.plant import paired
