@@ -296,3 +296,12 @@ def test_compressor_pd_force_feedback_margins():
     assert 0 < ml.disk.alpha <= min(o.disk.alpha for o in outs)
     with pytest.raises(InputError, match="controller"):
         mg.multiloop_disk_margin(P, lti.SS(Ks.A, Ks.B, 30 * Ks.C, 30 * Ks.D))
+
+
+def test_closed_loop_without_margins(rig_laws):
+    p, laws = rig_laws
+    cl = closed_loop(p, laws["pd"], with_margins=False)
+    assert cl.margins is None and "with_margins=False" in cl.margins_message
+    assert cl.max_real == closed_loop(p, laws["pd"]).max_real
+    with pytest.raises(InputError, match="with_margins"):
+        closed_loop(p, laws["pd"], with_margins="no")

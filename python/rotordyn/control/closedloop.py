@@ -150,7 +150,7 @@ def loop_response(p, k, freqs_hz) -> np.ndarray:
 
 
 def closed_loop(p, k, *, freqs_hz=None, computation_delay_s: float | None = None,
-                pade_order: int = 6) -> ClosedLoopResult:
+                pade_order: int = 6, with_margins: bool = True) -> ClosedLoopResult:
     """Closed loop of plant ``p`` (:func:`rotordyn.control.plant`) and controller ``k``
     (:class:`rotordyn.control.Controller`; a discrete one closes a sampled-data loop with the
     plant discretised exactly under ZOH, eigenvalues mapped back by s = ln z / T, margins
@@ -161,7 +161,8 @@ def closed_loop(p, k, *, freqs_hz=None, computation_delay_s: float | None = None
     command reaches the valve that much later — a continuous law through the Padé
     approximant of ``pade_order`` (1..20; its phase error:
     :func:`rotordyn.control.delay.pade_phase_error`), a discrete law exactly (at most its
-    sample time)."""
+    sample time). ``with_margins=False`` skips the margins (0.3–3 s on the rig; e.g. inside a
+    root search on the eigenvalues): ``margins`` None, ``margins_message`` says so."""
     from rotordyn.control.delay import check_order, computation_delay_for, with_pade_delay
     from rotordyn.control.margins import margins
 
@@ -186,7 +187,10 @@ def closed_loop(p, k, *, freqs_hz=None, computation_delay_s: float | None = None
         Acl = closed_loop_matrix(p, k)
         lam = np.linalg.eigvals(Acl)
         L = loop_response(p, k, f)
-    if np.all(np.isfinite(lam)) and lam.real.max() < 0:
+    v.boolean("with_margins", with_margins)
+    if not with_margins:
+        m, msg = None, "not computed (with_margins=False)"
+    elif np.all(np.isfinite(lam)) and lam.real.max() < 0:
         m, msg = margins(p, k0, computation_delay_s=tau, pade_order=pade_order), "ok"
     else:
         m = None
