@@ -121,8 +121,8 @@ class LoopMargins:
     loop: lti.SS = field(repr=False)
 
     def disk_margin(self, sigma: float = 0.0) -> DiskMargin:
-        """Disk margin with skew σ ∈ [−1e6, 1e6] (σ = 0 balanced, 1: gain increase only
-        ... i.e. 1/‖S‖∞, −1: 1/‖T‖∞)."""
+        """Disk margin with skew σ ∈ [−1e6, 1e6]: σ = 0 balanced (= ``disk``), σ = 1:
+        1/‖S‖∞ (disks biased to gain increase), σ = −1: 1/‖T‖∞ (biased to decrease)."""
         sigma = v.in_range("sigma", sigma, -1e6, 1e6)
         return _disk(self.loop, _grid(self.loop), sigma)
 
