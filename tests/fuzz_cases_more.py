@@ -39,10 +39,14 @@ def _check_closed_loop(cl, v):
     _finite("eigenvalues", cl.eigenvalues, v)
     if cl.stable != bool(np.all(cl.eigenvalues.real < 0)):
         v.append(f"stable={cl.stable} disagrees with the eigenvalues")
-    for name in ("gain_margin", "phase_margin_deg", "peak_sensitivity"):
+    if cl.stable != (cl.margins is not None):
+        v.append(f"margins {'missing' if cl.stable else 'given'} for a "
+                 f"{'stable' if cl.stable else 'unstable'} loop ({cl.margins_message})")
+    for name in ("gain_margin_lower", "gain_margin_upper", "phase_margin_deg",
+                 "peak_sensitivity", "delay_margin_s", "disk_margin"):
         x = getattr(cl, name)
-        if math.isnan(x):
-            v.append(f"{name} is NaN")
+        if cl.stable and math.isnan(x):
+            v.append(f"{name} is NaN for a stable loop")
 
 
 def control(p: dict) -> list:

@@ -19,6 +19,12 @@ def test_closed_loop_cli_writes_summary_and_series(tmp_path, capsys):
     s = json.loads((out / "summary.json").read_text())
     assert s["open_loop_max_real_1_per_s"] > 0 > s["closed_loop_max_real_1_per_s"]
     assert s["closed_loop_final_amplitude_m"] < 0.1 * s["open_loop_final_amplitude_m"]
+    # the margins of the tuned PD (docs/control.md §3.1): both gain margins, with frequencies
+    m = s["margins"]
+    assert 0 < m["gain_margin_lower"] < 1 < m["gain_margin_upper"] < 10
+    assert m["gain_margin_lower_hz"] > 0 and m["gain_margin_upper_hz"] > 0
+    assert 0 < m["delay_margin_s"] < 1 and 0 < m["disk_margin"] < 2
+    assert s["margins_message"] == "ok"
     ts = pd.read_csv(out / "timeseries.csv")
     assert len(ts) == 601 and (ts.chamber_pressure_pa >= 0).all()
     assert (out / "closed_loop.png").stat().st_size > 0
@@ -54,6 +60,12 @@ def test_schedule_cli(tmp_path):
 
 
 def test_control_cli_bad_input_exit_2(tmp_path, capsys):
+    rc = main(["control", "closed-loop", "paper-rig", "--computation-delay-s", "-1e-3",
+               "--out", str(tmp_path)])
+    assert rc == 2 and "--computation-delay-s" in capsys.readouterr().err
+    rc = main(["control", "closed-loop", "paper-rig", "--computation-delay-s", "1e-3",
+               "--pade-order", "0", "--out", str(tmp_path)])
+    assert rc == 2 and "--pade-order" in capsys.readouterr().err
     rc = main(["control", "closed-loop", "paper-rig", "--valve-hz", "-3", "--out", str(tmp_path)])
     assert rc == 2
     assert "--valve-hz" in capsys.readouterr().err

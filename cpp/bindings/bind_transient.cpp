@@ -61,6 +61,7 @@ void bind_transient(py::module_& m) {
       .def_readwrite("offset", &Controller::offset)
       .def_readwrite("x0", &Controller::x0)
       .def_readwrite("sample_time", &Controller::sample_time)
+      .def_readwrite("delay", &Controller::delay)
       .def_readwrite("noise_std", &Controller::noise_std)
       .def_readwrite("noise_dt", &Controller::noise_dt)
       .def_readwrite("seed", &Controller::seed);

@@ -124,6 +124,9 @@ void validate_operation(const SpeedProfile& s, const PressureCommand& p, const A
           "controller: matrices must be finite");
   require(std::isfinite(c.sample_time) && c.sample_time >= 0,
           "controller.sample_time: expected >= 0 s (0: continuous)");
+  require(std::isfinite(c.delay) && c.delay >= 0 && c.delay <= c.sample_time,
+          "controller.delay: expected a computation delay in [0, sample_time] s (a continuous "
+          "controller: 0)");
   if (c.noise_std.size()) {
     require(c.noise_std.size() == ny && c.noise_std.allFinite() && (c.noise_std.array() >= 0).all(),
             "controller.noise_std: expected one standard deviation >= 0 per measurement");

@@ -63,6 +63,8 @@ struct Ctx {
   bool kdisc = false;     // discrete controller (states here)
   Eigen::VectorXd xk;     // discrete controller states
   double u_hold = 0.0;    // discrete controller output (ZOH)
+  double u_next = 0.0;    // computed, waiting for its application (a computation delay)
+  bool pending = false;   // u_next not applied yet
   Eigen::MatrixXd noise;  // (n_samples, n_y) noise table, empty: none
   double noise_dt = 0.0;
   Eigen::LLT<Eigen::MatrixXd> Mllt;
@@ -450,10 +452,18 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     c.xk = K.x0.size() ? K.x0 : Eigen::VectorXd::Zero(K.n_states());
   }
   // Discrete controller: the first sample at t = 0 (before the actuator starts at rest).
+  // With a computation delay the command waits (u_next) until t_k + delay.
+  const bool delayed = c.kdisc && K.delay > 0.0;
   auto sample = [&](double ts) {
     const Eigen::VectorXd ym = measure(c, Y.data(), ts);
-    c.u_hold = (K.C * c.xk + K.D * ym)(0);
+    const double u = (K.C * c.xk + K.D * ym)(0);
     c.xk = K.A * c.xk + K.B * ym;
+    if (delayed) {
+      c.u_next = u;
+      c.pending = true;
+    } else {
+      c.u_hold = u;
+    }
   };
   if (c.kdisc) sample(0.0);
   if (c.na) {
@@ -568,15 +578,34 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   for (Eigen::Index i = 0; i < nt; ++i) {
     int flag = CV_SUCCESS;
     const double target = in.t_out(i);
-    while (flag >= 0 && c.kdisc && t_sample(k_next) <= target) {
-      const double ts = t_sample(k_next);
+    // Events in time order: samples k·T and, with a computation delay, the application of
+    // the last sample's command at (k−1)·T + delay (one restart each; an application within
+    // round-off of the next sample is done at that sample, before it).
+    auto t_apply = [&]() {
+      const double ta = t_sample(k_next - 1) + K.delay;
+      const double tn = t_sample(k_next);
+      return tn - ta <= 1e-9 * K.sample_time ? tn : ta;
+    };
+    while (flag >= 0 && c.kdisc &&
+           (c.pending ? t_apply() : t_sample(k_next)) <= target) {
+      const bool apply = c.pending;
+      const double ts = apply ? t_apply() : t_sample(k_next);
       if (ts > t) {
         flag = step_to(ts, t);
         if (flag < 0) break;
         t = ts;
       }
-      sample(ts);
-      ++k_next;
+      if (apply) {
+        c.u_hold = c.u_next;
+        c.pending = false;
+        if (ts == t_sample(k_next)) {  // the next sample at the same instant
+          sample(ts);
+          ++k_next;
+        }
+      } else {
+        sample(ts);
+        ++k_next;
+      }
       if (c.rate_switched)  // the held command jumped
         c.rate_mode = rate_mode_of(unlimited_rate(c, evaluate(c, t, Y.data()), Y.data()),
                                    in.actuator.rate_limit);

@@ -69,6 +69,10 @@ struct Controller {
   Eigen::VectorXd offset;        ///< (n_y,) subtracted from C_m [r; ṙ]
   Eigen::VectorXd x0;            ///< (n_k,) initial controller states (empty: zeros)
   double sample_time = 0.0;      ///< s; 0: continuous
+  /// s, in [0, sample_time] (discrete only): the command computed at t_k is applied at
+  /// t_k + delay (the controller's computation time); 0 is applied at t_k. Before the first
+  /// application the command increment is 0.
+  double delay = 0.0;
   Eigen::VectorXd noise_std;     ///< (n_y,) or empty: no noise
   double noise_dt = 0.0;         ///< s (continuous controller with noise)
   std::uint64_t seed = 0;

@@ -31,18 +31,28 @@ SAMPLE_SNAP_REL = 1e-12   # of the run's length
 SAMPLE_SNAP_PERIOD = 1e-9  # of the sample time
 
 
-def sample_aligned_outputs(t_out: np.ndarray, sample_time_s: float) -> np.ndarray:
+def sample_aligned_outputs(t_out: np.ndarray, sample_time_s: float,
+                           delay_s: float = 0.0) -> np.ndarray:
     """``t_out`` with every time within ``SAMPLE_SNAP_REL·t_end + SAMPLE_SNAP_PERIOD·T`` of a
     sample instant k·T (k ≥ 1) replaced by that instant, computed as the C++ core does
     (``double(k) * T``, bit for bit), so the core meets the two at exactly the same time
-    and never steps across a round-off gap. Times stay strictly increasing (else unchanged).
-    """
+    and never steps across a round-off gap; with a computation delay τ > 0 the same for the
+    instants k·T + τ where the commands are applied (``double(k) * T + τ``, or the next
+    sample when within 1e-9 T of it, as the core does). Times stay strictly increasing (else
+    unchanged)."""
     T = float(sample_time_s)
     t_out = np.asarray(t_out, dtype=float)
     k = np.rint(t_out / T)
     ts = k * T
     tol = SAMPLE_SNAP_REL * float(t_out[-1]) + SAMPLE_SNAP_PERIOD * T
     snapped = np.where((k >= 1) & (np.abs(t_out - ts) <= tol), ts, t_out)
+    tau = float(delay_s)
+    if tau > 0:
+        ka = np.floor((snapped - tau) / T + 0.5)
+        ta = ka * T + tau
+        nxt = (ka + 1) * T
+        ta = np.where(nxt - ta <= 1e-9 * T, nxt, ta)
+        snapped = np.where((ka >= 0) & (np.abs(snapped - ta) <= tol), ta, snapped)
     if snapped.size > 1 and np.any(np.diff(snapped) <= 0):
         return t_out
     return snapped
@@ -78,7 +88,8 @@ def controller_budget(controller: Controller, t_end_s: float, max_cost_s: float)
                  8.0 * rows * ny)
     if controller.discrete:
         n = t_end_s / T
-        est = n * DISCRETE_SAMPLE_COST_S
+        # a computation delay applies each command at kT + τ: a second restart per sample
+        est = n * DISCRETE_SAMPLE_COST_S * (2 if controller.computation_delay_s else 1)
         if est > max_cost_s:
             raise InputError(
                 f"controller.sample_time_s: t_end_s / sample_time_s = {t_end_s:g} s / {T:g} s "
@@ -228,7 +239,8 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     inp.r0, inp.v0 = r_init, v_init
     inp.t_out = np.linspace(0.0, float(t_end_s), int(n_out))
     if controller is not None and controller.discrete:
-        inp.t_out = sample_aligned_outputs(inp.t_out, controller.sample_time_s)
+        inp.t_out = sample_aligned_outputs(inp.t_out, controller.sample_time_s,
+                                           controller.computation_delay_s)
     opt = _core.CvodeOptions()
     opt.rtol, opt.atol_position = float(rtol), float(atol_m)
     opt.atol_velocity = float(atol_m) * max(hz_to_rad_s(abs(float(speed_hz))), 1.0)

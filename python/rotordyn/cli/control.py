@@ -105,6 +105,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                    metavar=("START", "STOP", "RATE_HZ_S"),
                    help="run up instead of a constant speed (design at --speed-hz)")
     c.add_argument("--n-out", type=int, default=4001, help="stored time samples")
+    c.add_argument("--computation-delay-s", type=float, default=0.0,
+                   help="delay between measurement and command, s (linear loop and transient "
+                        "through its Padé approximant)")
+    c.add_argument("--pade-order", type=int, default=6,
+                   help="order of the Padé approximant of --computation-delay-s (1..20)")
     c.set_defaults(func=run_closed_loop)
 
 
@@ -119,6 +124,20 @@ def _peak(values) -> float:
     """Largest finite value, NaN (JSON null) when there is none."""
     finite = np.asarray(values, float)[np.isfinite(values)]
     return float(finite.max()) if finite.size else math.nan
+
+
+def _margins_text(cl) -> str:
+    """The margins of the linear closed loop in one line (or why there are none)."""
+    if cl.margins is None:
+        return f"margins {cl.margins_message}"
+    m = cl.margins.input
+    lo_db, hi_db = m.disk.gain_db
+    return (f"gain margins {m.gain_margin_lower:.4g} ({m.gain_margin_lower_hz:.4g} Hz) and "
+            f"{m.gain_margin_upper:.4g} ({m.gain_margin_upper_hz:.4g} Hz), phase margin "
+            f"{m.phase_margin_deg:.2f}° ({m.phase_margin_hz:.4g} Hz), delay margin "
+            f"{m.delay_margin_s * 1e3:.4g} ms, peak |S| {m.peak_sensitivity:.4g} "
+            f"({m.peak_sensitivity_hz:.4g} Hz), disk margin {m.disk.alpha:.4g} "
+            f"([{lo_db:.2f}, {hi_db:.2f}] dB, ±{m.disk.phase_deg:.2f}°)")
 
 
 def _load(model):
@@ -197,6 +216,10 @@ def run_closed_loop(args) -> int:
         raise InputError(f"--disturbance-c: expected a finite displacement (clearances), got "
                          f"{args.disturbance_c}")
     v.integer("--n-out (n_out)", args.n_out, lo=2)
+    from rotordyn.control.delay import MAX_DELAY_S, MAX_ORDER
+
+    v.in_range("--computation-delay-s", args.computation_delay_s, 0.0, MAX_DELAY_S)
+    v.integer("--pade-order", args.pade_order, lo=1, hi=MAX_ORDER)
     out = Path(out_dir("--out", args.out))  # before the design and the transients
     if args.law == "hinf":
         from rotordyn.control.hinf import _slycot
@@ -219,6 +242,9 @@ def run_closed_loop(args) -> int:
               measurements=[("journal", 0)], actuator=act)
     if args.law == "pd":
         k, cl = tune_pd(p)
+        if args.computation_delay_s:
+            cl = closed_loop(p, k, computation_delay_s=args.computation_delay_s,
+                             pade_order=args.pade_order)
     else:
         pr, _ = modal_truncation(p, 500.0)
         if args.law == "hinf":
@@ -227,7 +253,12 @@ def run_closed_loop(args) -> int:
             k = hinf(pr)
         else:
             k = lqg(pr)
-        cl = closed_loop(p, k)
+        cl = closed_loop(p, k, computation_delay_s=args.computation_delay_s,
+                         pade_order=args.pade_order)
+    if args.computation_delay_s:  # the transient runs the same delayed law
+        from rotordyn.control.delay import with_pade_delay
+
+        k = with_pade_delay(k, args.computation_delay_s, args.pade_order)
     ol_lam = p.poles
     asm = assembled(system)
     c = asm.bearings[0].clearance_m if asm.bearings else 1.0
@@ -260,11 +291,14 @@ def run_closed_loop(args) -> int:
         out / "timeseries.csv", index=False)
     last = cln.t >= 0.8 * t_end
     summary = {"law": args.law, "controller_states": k.n_states,
+               "computation_delay_s": args.computation_delay_s,
+               "pade_order": args.pade_order if args.computation_delay_s else None,
                "hinf_gamma": k.info.get("gamma") if args.law == "hinf" else None,
                "open_loop_max_real_1_per_s": float(ol_lam.real.max()),
                "closed_loop_max_real_1_per_s": cl.max_real,
-               "closed_loop_min_damping": cl.min_damping, "gain_margin": cl.gain_margin,
-               "phase_margin_deg": cl.phase_margin_deg, "peak_sensitivity": cl.peak_sensitivity,
+               "closed_loop_min_damping": cl.min_damping,
+               "margins": cl.margins.summary() if cl.margins is not None else None,
+               "margins_message": cl.margins_message,
                "open_loop_status": ol.status, "closed_loop_status": cln.status,
                "open_loop_final_amplitude_m": _peak(dev(ol)[last]),
                "closed_loop_final_amplitude_m": _peak(dev(cln)[last]),
@@ -288,8 +322,8 @@ def run_closed_loop(args) -> int:
         print(json_text(summary))
     else:
         print(f"{args.law}: open loop max Re λ = {summary['open_loop_max_real_1_per_s']:.3f} 1/s, "
-              f"closed loop {cl.max_real:.3f} 1/s (min ζ {cl.min_damping:.4f}, GM "
-              f"{cl.gain_margin:.3g}, PM {cl.phase_margin_deg:.1f}°); nonlinear final amplitude "
+              f"closed loop {cl.max_real:.3f} 1/s (min ζ {cl.min_damping:.4f}); "
+              f"{_margins_text(cl)}; nonlinear final amplitude "
               f"{summary['open_loop_final_amplitude_m']:.3g} m open, "
               f"{summary['closed_loop_final_amplitude_m']:.3g} m closed; wrote {out}")
     return 0 if ol.status == "ok" and cln.status == "ok" else 1

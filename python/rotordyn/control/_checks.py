@@ -116,6 +116,18 @@ def frequencies(field: str, value) -> np.ndarray:
     return arr
 
 
+def frequencies_any(field: str, value) -> np.ndarray:
+    """A non-empty array of at most MAX_FREQS finite frequencies >= 0 Hz (any order)."""
+    arr = np.atleast_1d(v.vector(field, np.atleast_1d(value)) if np.ndim(value) else
+                        np.array([v.finite(field, value)]))
+    if arr.size == 0 or arr.size > MAX_FREQS:
+        raise InputError(f"{field}: expected between 1 and {MAX_FREQS} frequencies (Hz), "
+                         f"got {arr.size}")
+    if np.any(arr < 0):
+        raise InputError(f"{field}: expected frequencies >= 0 Hz, got {float(arr.min())!r}")
+    return arr
+
+
 def measured_by(sys_, k: Controller, field: str = "controller") -> None:
     """The controller's measurements exist on the system and give its number of inputs."""
     from rotordyn.analysis.measurement import measurement_matrix

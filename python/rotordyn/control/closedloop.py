@@ -1,16 +1,19 @@
 """The linear closed loop of a plant and a controller: eigenvalues, stability margin (least
-damping ratio, largest real part), loop gain/phase margins and the peak sensitivity at the
-actuator input (loop broken at u)."""
+damping ratio, largest real part), and every loop margin (:mod:`rotordyn.control.margins`:
+gain margins below and above 1, phase, delay and disk margins, peak sensitivity, located
+exactly; loop-at-a-time and multivariable disk margins when several measurements are fed
+back)."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from rotordyn._common import validate as v
 from rotordyn.control import _checks as chk
-from rotordyn.control.plant import as_plant
+from rotordyn.control.plant import as_plant, paired
 from rotordyn.errors import InputError
 from rotordyn.operation.controller import Controller
 from rotordyn.operation.profiles import PressureSchedule
@@ -19,15 +22,20 @@ from rotordyn.results.modes import damping_ratio
 
 @dataclass(frozen=True)
 class ClosedLoopResult:
-    """A (closed-loop state matrix), eigenvalues (1/s), damping ratios; gain_margin (factor),
-    phase_margin_deg and peak_sensitivity of L(s) = −K(s) G(s) at the actuator input."""
+    """A (closed-loop state matrix; a discrete controller: the sampled-data loop's),
+    eigenvalues (1/s), damping ratios; ``margins`` (:class:`~rotordyn.control.margins.Margins`:
+    every gain margin, phase, delay and disk margin, peak sensitivities, located exactly) or
+    None with ``margins_message`` saying why (the closed loop is not stable: margins are not
+    defined); ``frequency_hz`` and ``loop`` = L(iω) = −K G at the actuator input on the
+    requested grid (for Bode and Nyquist plots)."""
 
     A: np.ndarray
     eigenvalues: np.ndarray
     damping_ratio: np.ndarray
-    gain_margin: float
-    phase_margin_deg: float
-    peak_sensitivity: float
+    margins: object
+    margins_message: str
+    frequency_hz: np.ndarray
+    loop: np.ndarray
 
     @property
     def max_real(self) -> float:
@@ -41,62 +49,76 @@ class ClosedLoopResult:
     def stable(self) -> bool:
         return self.max_real < 0
 
+    def _m(self, name):
+        return getattr(self.margins.input, name) if self.margins is not None else math.nan
+
+    @property
+    def gain_margin_lower(self) -> float:
+        """Lowest loop-gain factor < 1 keeping the loop stable (0: none; NaN: unstable)."""
+        return self._m("gain_margin_lower")
+
+    @property
+    def gain_margin_upper(self) -> float:
+        """Largest loop-gain factor > 1 keeping the loop stable (inf: none; NaN: unstable)."""
+        return self._m("gain_margin_upper")
+
+    @property
+    def phase_margin_deg(self) -> float:
+        return self._m("phase_margin_deg")
+
+    @property
+    def delay_margin_s(self) -> float:
+        return self._m("delay_margin_s")
+
+    @property
+    def peak_sensitivity(self) -> float:
+        return self._m("peak_sensitivity")
+
+    @property
+    def disk_margin(self) -> float:
+        return self.margins.input.disk.alpha if self.margins is not None else math.nan
+
     def __repr__(self):
-        return (f"ClosedLoopResult(stable={self.stable}, max Re λ={self.max_real:.4g} 1/s, "
-                f"min ζ={self.min_damping:.4g}, GM={self.gain_margin:.3g}, "
-                f"PM={self.phase_margin_deg:.3g}°, |S|max={self.peak_sensitivity:.3g})")
+        head = (f"ClosedLoopResult(stable={self.stable}, max Re λ={self.max_real:.4g} 1/s, "
+                f"min ζ={self.min_damping:.4g}")
+        if self.margins is None:
+            return head + f", margins: {self.margins_message})"
+        m = self.margins.input
+        return (head + f", GM=({m.gain_margin_lower:.4g}, {m.gain_margin_upper:.4g}), "
+                f"PM={m.phase_margin_deg:.4g}°, DM={m.delay_margin_s * 1e3:.4g} ms, "
+                f"|S|max={m.peak_sensitivity:.4g}, disk ±{m.disk.gain_db[1]:.3g} dB/"
+                f"±{m.disk.phase_deg:.3g}°)")
 
 
-def _discrete_loop(p, k, freqs_hz):
+def _discrete_loop(p, k, freqs_hz, delay_s=0.0):
     """Sampled-data loop of a discrete controller: the plant discretised exactly with a
-    zero-order hold (Φ = e^{AT}, Γ = ∫e^{Aτ}dτ B) and sampled at the controller's instants;
-    closed-loop z-eigenvalues mapped to s = ln z / T. Returns (A_cl (discrete), λ_s, L(e^{iωT}))
-    with the frequencies limited to below Nyquist."""
-    from scipy.linalg import expm
+    zero-order hold (Φ = e^{AT}, Γ = ∫e^{Aτ}dτ B; with a computation delay the exact
+    delayed hold of :mod:`rotordyn.control.delay`) and sampled at the controller's instants;
+    closed-loop z-eigenvalues mapped to s = ln z / T. Returns (A_cl (discrete), λ_s,
+    L(e^{iωT})) with the frequencies limited to below Nyquist."""
+    from rotordyn.control import lti
+    from rotordyn.control.margins import controller_ss, plant_ss
 
     T = k.sample_time_s
-    Dr = p.info.get("feedthrough")
-    if Dr is not None and np.any(Dr):
-        raise InputError("controller.sample_time_s: a discrete controller on a reduced plant "
-                         "with feedthrough is not supported; use the full plant")
-    n, m = p.A.shape[0], 1
-    E = expm(np.block([[p.A, p.B], [np.zeros((m, n + m))]]) * T)
-    Phi, Gam = E[:n, :n], E[:n, n:]
-    C = p.C
-    nk = k.n_states
-    top = np.hstack([Phi + Gam @ k.D @ C, Gam @ k.C])
-    bot = np.hstack([k.B @ C, k.A])
-    Ad = np.vstack([top, bot]) if nk else Phi + Gam @ k.D @ C
+    P = plant_ss(p, T, delay_s)
+    K = controller_ss(k)
+    Ad = lti.feedback_A(P, K)
     z = np.linalg.eigvals(Ad).astype(complex)
+    # a dead-beat mode (z = 0, e.g. the held command of a one-sample computation delay) is
+    # reported at |z| = 1e-300, i.e. Re λ = −690/T: finite, faster than any sampled mode
+    z = np.where(np.abs(z) < 1e-300, 1e-300, z)
     lam = np.log(z) / T
     f = np.asarray(freqs_hz, dtype=float)
     f = f[f < 0.5 / T]
-    L = np.empty(f.size, dtype=complex)
-    for i, fi in enumerate(f):
-        zi = np.exp(2j * np.pi * fi * T)
-        G = C @ np.linalg.solve(zi * np.eye(n) - Phi, Gam)
-        K = k.D + (k.C @ np.linalg.solve(zi * np.eye(nk) - k.A, k.B) if nk else 0)
-        L[i] = -(K @ G)[0, 0]
+    L = lti.freqresp(lti.balanced(lti.loop_at_input(P, K)), 2 * np.pi * f)[:, 0, 0]
     return Ad, lam, L
-
-
-def _pair(p, k) -> None:
-    """A plant and a controller that reads exactly the plant's measurements."""
-    as_plant(p)
-    chk.controller(k)
-    if k.n_inputs != p.C.shape[0]:
-        raise InputError(f"controller: expected {p.C.shape[0]} inputs (the plant's "
-                         f"measurements), got {k.n_inputs}")
-    if tuple(k.measurements) != tuple(p.measurements):
-        raise InputError(f"controller.measurements: expected the plant's measurements "
-                         f"{list(p.measurements)}, got {list(k.measurements)}")
 
 
 def closed_loop_matrix(p, k) -> np.ndarray:
     """State matrix of [x; x_k] for ẋ = A x + B u, y = C x, u = C_k x_k + D_k y,
     ẋ_k = A_k x_k + B_k y (continuous controllers; a discrete one via its ZOH continuous
     equivalent is not formed here)."""
-    _pair(p, k)
+    paired(p, k)
     if k.discrete:
         raise InputError("controller.sample_time_s: a continuous closed-loop matrix needs a "
                          "continuous controller (closed_loop() handles discrete ones)")
@@ -115,60 +137,66 @@ def closed_loop_matrix(p, k) -> np.ndarray:
 
 
 def loop_response(p, k, freqs_hz) -> np.ndarray:
-    """L(iω) = −K(iω) G(iω), (n_f,) complex (negative-feedback convention)."""
-    _pair(p, k)
+    """L(iω) = −K(iω) G(iω), (n_f,) complex (negative-feedback convention; a discrete law: the
+    ZOH-sampled loop at z = e^{iωT}), evaluated on the
+    balanced realisation of the loop (:func:`rotordyn.control.lti.balanced`)."""
+    from rotordyn.control import lti
+    from rotordyn.control.margins import controller_ss, plant_ss
+
+    paired(p, k)
     w = 2 * np.pi * chk.frequencies("freqs_hz", freqs_hz)
-    n, nk = p.A.shape[0], k.n_states
-    Dr = p.info.get("feedthrough")
-    out = np.empty(w.size, dtype=complex)
-    for i, wi in enumerate(w):
-        G = p.C @ np.linalg.solve(1j * wi * np.eye(n) - p.A, p.B)
-        if Dr is not None:
-            G = G + Dr
-        K = k.D + (k.C @ np.linalg.solve(1j * wi * np.eye(nk) - k.A, k.B) if nk else 0)
-        out[i] = -(K @ G)[0, 0]
-    return out
+    loop = lti.balanced(lti.loop_at_input(plant_ss(p, k.sample_time_s), controller_ss(k)))
+    return lti.freqresp(loop, w)[:, 0, 0]
 
 
-def closed_loop(p, k, *, freqs_hz=None) -> ClosedLoopResult:
+def closed_loop(p, k, *, freqs_hz=None, computation_delay_s: float | None = None,
+                pade_order: int = 6, with_margins: bool = True) -> ClosedLoopResult:
     """Closed loop of plant ``p`` (:func:`rotordyn.control.plant`) and controller ``k``
     (:class:`rotordyn.control.Controller`; a discrete one closes a sampled-data loop with the
     plant discretised exactly under ZOH, eigenvalues mapped back by s = ln z / T, margins
-    below Nyquist). Margins from L on a log grid
-    (default 0.1 Hz – 5 kHz, 4000 points): gain margin = 1/|L| where arg L crosses −180°
-    (the smallest, inf if none), phase margin at |L| = 1 (the smallest)."""
+    below Nyquist). Margins: :func:`rotordyn.control.margins.margins` (exact; None with the
+    reason when the closed loop is unstable). ``freqs_hz``: the grid of the returned loop
+    response (default 0.1 Hz – 5 kHz, 4000 points; a discrete law: below Nyquist).
+    ``computation_delay_s`` (s, ≥ 0; None: the law's own; :mod:`rotordyn.control.delay`): the
+    command reaches the valve that much later — a continuous law through the Padé
+    approximant of ``pade_order`` (1..20; its phase error:
+    :func:`rotordyn.control.delay.pade_phase_error`), a discrete law exactly (at most its
+    sample time). ``with_margins=False`` skips the margins (0.3–3 s on the rig; e.g. inside a
+    root search on the eigenvalues): ``margins`` None, ``margins_message`` says so."""
+    from rotordyn.control.delay import check_order, computation_delay_for, with_pade_delay
+    from rotordyn.control.margins import margins
+
     as_plant(p)
     if not isinstance(k, Controller):  # a python-control system reading the plant's outputs
         k = Controller.from_lti(k, p.measurements)
-    _pair(p, k)
+    paired(p, k)
+    tau = computation_delay_for(k, computation_delay_s)
+    check_order(pade_order)
     f = np.logspace(-1, np.log10(5000.0), 4000) if freqs_hz is None \
         else chk.frequencies("freqs_hz", freqs_hz)
     if k.discrete and not np.any(f < 0.5 / k.sample_time_s):
         raise InputError(f"freqs_hz: expected frequencies below the controller's Nyquist "
                          f"frequency {0.5 / k.sample_time_s:g} Hz, got {f[0]:g} .. {f[-1]:g}")
+    k0 = k
+    if tau and not k.discrete:
+        k = with_pade_delay(k, tau, pade_order)
     if k.discrete:
-        Acl, lam, L = _discrete_loop(p, k, f)
+        Acl, lam, L = _discrete_loop(p, k, f, tau)
+        f = f[f < 0.5 / k.sample_time_s]
     else:
         Acl = closed_loop_matrix(p, k)
         lam = np.linalg.eigvals(Acl)
         L = loop_response(p, k, f)
-    if k.discrete:
-        f = f[f < 0.5 / k.sample_time_s]
-    ph = np.unwrap(np.angle(L))
-    mag = np.abs(L)
-    gm = np.inf
-    for i in range(len(f) - 1):
-        for m in range(-5, 6):
-            target = (2 * m + 1) * np.pi
-            if (ph[i] - target) * (ph[i + 1] - target) < 0:
-                gm = min(gm, 1.0 / mag[i])
-    pm = np.inf
-    for i in range(len(f) - 1):
-        if (mag[i] - 1) * (mag[i + 1] - 1) < 0:
-            d = np.degrees(np.angle(L[i])) % 360.0
-            pm = min(pm, abs(d - 180.0))
-    S = 1.0 / np.abs(1 + L)
-    return ClosedLoopResult(Acl, lam, damping_ratio(lam), float(gm), float(pm), float(S.max()))
+    v.boolean("with_margins", with_margins)
+    if not with_margins:
+        m, msg = None, "not computed (with_margins=False)"
+    elif np.all(np.isfinite(lam)) and lam.real.max() < 0:
+        m, msg = margins(p, k0, computation_delay_s=tau, pade_order=pade_order), "ok"
+    else:
+        m = None
+        msg = (f"not computed: the closed loop is not stable (largest Re λ = "
+               f"{float(np.nanmax(lam.real)):.6g} 1/s)")
+    return ClosedLoopResult(Acl, lam, damping_ratio(lam), m, msg, f, L)
 
 
 def closed_loop_unbalance(system, controller, unbalances, speeds_hz, *, chamber_pressure_pa=0.0,

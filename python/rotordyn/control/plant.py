@@ -11,6 +11,7 @@ import numpy as np
 
 from rotordyn.analysis.measurement import measurement_matrix
 from rotordyn.analysis.statespace import statespace
+from rotordyn._common import validate as v
 from rotordyn.control import _checks as chk
 from rotordyn.errors import InputError
 from rotordyn.operation.actuator import Actuator
@@ -40,16 +41,87 @@ class Plant:
     config_ay_m: float | None
     n_mech: int
     info: dict = field(default_factory=dict)
+    disturbance_names: tuple = ()
 
     @property
     def poles(self) -> np.ndarray:
         return np.linalg.eigvals(self.A)
 
-    def to_control(self):
-        """python-control StateSpace from u to y."""
+    @property
+    def input_names(self) -> tuple:
+        """The command (Pa), then the disturbance forces (N), as :meth:`to_control` names them."""
+        return ("chamber_pressure_command_pa",) + tuple(self.disturbance_names)
+
+    @property
+    def performance_names(self) -> tuple:
+        return tuple(f"performance_{n}" for n in
+                     ("journal_x_m[0]", "journal_y_m[0]")[:self.C_perf.shape[0]])
+
+    def matrices(self):
+        """(A, B, C, D) of the whole plant: inputs [u; d], outputs [y; z] (measurements, then
+        the performance output), D with a reduced plant's feedthrough (every input to every
+        output where the reduction kept it: ``info["feedthrough_all"]``, else its command →
+        measurement part ``info["feedthrough"]``)."""
+        B = np.hstack([self.B, self.Bd])
+        C = np.vstack([self.C, self.C_perf])
+        D = np.zeros((C.shape[0], B.shape[1]))
+        Dall = self.info.get("feedthrough_all")
+        Dr = self.info.get("feedthrough")
+        if Dall is not None:
+            D[:] = Dall
+        elif Dr is not None:
+            D[:self.C.shape[0], :1] = Dr
+        return self.A, B, C, D
+
+    def frequency_response(self, freqs_hz) -> np.ndarray:
+        """G(i2πf) of :meth:`matrices`, (n_f, n_y + n_z, 1 + n_d) complex (outputs' unit per
+        input's unit: m/Pa, m/N, ...), evaluated on the balanced realisation
+        (:mod:`rotordyn._common.balance`)."""
+        from rotordyn.control import lti
+
+        f = chk.frequencies_any("freqs_hz", freqs_hz)
+        A, B, C, D = self.matrices()
+        return lti.freqresp(lti.balanced(lti.SS(A, B, C, D)), 2 * np.pi * f)
+
+    def to_control(self, *, balanced: bool = True):
+        """python-control ``StateSpace`` of the whole plant (:meth:`matrices`): every input
+        and output named (:attr:`input_names`; the measurements' names, then
+        :attr:`performance_names`), a reduced plant's feedthrough kept. ``balanced`` (default):
+        states scaled by powers of two (x̃ = x / 2^e, exact; each state's name carries its
+        ``·2^-e``) so that python-control evaluates it to round-off with or without slycot
+        (unscaled, SLICOT's TB05AD Hessenberg reduction loses up to every digit: issue 24);
+        the transfer function is the same either way."""
         import control
 
-        return control.ss(self.A, self.B, self.C, np.zeros((self.C.shape[0], 1)))
+        from rotordyn._common.balance import scaled, scaled_state_names, state_scaling
+
+        v.boolean("balanced", balanced)
+        A, B, C, D = self.matrices()
+        names = list(self.state_names)
+        if balanced:
+            t = state_scaling(A, B, C)
+            A, B, C = scaled(A, B, C, t)
+            names = scaled_state_names(names, t)
+        return control.ss(A, B, C, D, inputs=list(self.input_names),
+                          outputs=[str(n) for n in self.output_names] + list(
+                              self.performance_names),
+                          states=names, name=f"plant_{self.speed_hz:g}Hz")
+
+
+    def to_scipy(self, output: int = 0, input: int = 0):
+        """``scipy.signal.ZerosPolesGain`` from input ``input`` to output ``output`` of
+        :meth:`matrices` (SciPy's frequency responses are SISO and convert a state space to
+        polynomials; the factors here come from the balanced model:
+        :func:`rotordyn.control.lti.zpk`)."""
+        import scipy.signal as sig
+
+        from rotordyn.control import lti
+
+        A, B, C, D = self.matrices()
+        i = v.integer("output", output, lo=0, hi=C.shape[0] - 1)
+        j = v.integer("input", input, lo=0, hi=B.shape[1] - 1)
+        z, p_, k = lti.zpk(lti.SS(A, B[:, j:j + 1], C[i:i + 1], D[i:i + 1, j:j + 1]))
+        return sig.ZerosPolesGain(z, p_, k)
 
 
 def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
@@ -87,7 +159,8 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
     Cp = np.hstack([Cj, np.zeros((2, na))])
     states = tuple(ss.state_names) + tuple(f"actuator_{i}" for i in range(na))
     return Plant(A, B, C, Bd, Cp, meas, names, states, act, float(speed_hz),
-                 float(chamber_pressure_pa), config_ay_m, n2 // 2)
+                 float(chamber_pressure_pa), config_ay_m, n2 // 2,
+                 disturbance_names=tuple(str(x) for x in ss.input_names[1:]))
 
 
 def as_plant(value, field: str = "plant") -> Plant:
@@ -96,3 +169,20 @@ def as_plant(value, field: str = "plant") -> Plant:
         raise InputError(f"{field}: expected a rotordyn.control.plant.Plant (from "
                          f"rotordyn.control.plant.plant()), got {type(value).__name__}")
     return value
+
+
+def paired(p, k) -> None:
+    """A plant and a controller that reads exactly the plant's measurements (InputError
+    naming ``controller`` otherwise)."""
+    from rotordyn.operation.controller import Controller
+
+    as_plant(p)
+    chk.controller(k)
+    if not isinstance(k, Controller):  # pragma: no cover - chk.controller refuses it
+        raise InputError("controller: expected a rotordyn.control.Controller")
+    if k.n_inputs != p.C.shape[0]:
+        raise InputError(f"controller: expected {p.C.shape[0]} inputs (the plant's "
+                         f"measurements), got {k.n_inputs}")
+    if tuple(k.measurements) != tuple(p.measurements):
+        raise InputError(f"controller.measurements: expected the plant's measurements "
+                         f"{list(p.measurements)}, got {list(k.measurements)}")

@@ -78,10 +78,16 @@ def modal_truncation(p, max_frequency_hz: float = 500.0, *, keep_actuator: bool 
     # DC correction of the dropped modes: D_r = C_d (−A_d)⁻¹ B_d (static residual).
     Vd, Wd, ld = V[:, drop], W[drop], lam[drop]
     Dr = np.real(C @ Vd @ np.diag(-1.0 / ld) @ Wd @ B) if drop.any() else np.zeros((C.shape[0], 1))
+    # the same static residual for every input (command, disturbances) to every output
+    # (measurements, performance): Plant.matrices() / to_control() keep it
+    Call, Ball = np.vstack([C, p.C_perf]), np.hstack([B, Bd])
+    Dall = (np.real(Call @ Vd @ np.diag(-1.0 / ld) @ Wd @ Ball) if drop.any()
+            else np.zeros((Call.shape[0], Ball.shape[1])))
     Cp = p.C_perf @ T
     red = replace(p, A=Ar, B=Br, C=Cr, Bd=Bdr, C_perf=Cp,
                   state_names=tuple(f"modal_{i}" for i in range(Ar.shape[0])),
-                  info=dict(p.info, reduced_from=A.shape[0], feedthrough=Dr, T=T))
+                  info=dict(p.info, reduced_from=A.shape[0], feedthrough=Dr, feedthrough_all=Dall,
+                            T=T))
     w = 2 * np.pi * np.logspace(np.log10(check_hz[0]), np.log10(check_hz[1]), n_check)
     G = _freqresp(A, B, C, w)
     Gr = _freqresp(Ar, Br, Cr, w) + Dr
@@ -151,7 +157,8 @@ def balanced_truncation(p, order: int, *, check_hz=(1.0, 2000.0), n_check: int =
     ny, nb = p.C.shape[0], p.B.shape[1]
     red = replace(p, A=Ar, B=Br[:, :nb], Bd=Br[:, nb:], C=Cr[:ny], C_perf=Cr[ny:],
                   state_names=tuple(f"balanced_{i}" for i in range(order)),
-                  info=dict(p.info, reduced_from=n, T=Tmap, feedthrough=None))
+                  info=dict(p.info, reduced_from=n, T=Tmap, feedthrough=None,
+                            feedthrough_all=None))
     w = 2 * np.pi * np.logspace(np.log10(check_hz[0]), np.log10(check_hz[1]), n_check)
     # errors in the original units, command -> measurements
     G = _freqresp(p.A, p.B, p.C, w)

@@ -33,7 +33,8 @@ def _noise_std(value, ny):
     return arr
 
 
-_OPTIONS = ("sample_time_s", "noise_std", "noise_dt_s", "seed", "name", "info")
+_OPTIONS = ("sample_time_s", "noise_std", "noise_dt_s", "seed", "name", "info",
+            "computation_delay_s")
 
 
 def _options(kw):
@@ -46,7 +47,9 @@ def _options(kw):
 @dataclass(frozen=True)
 class Controller:
     """ẋ = A x + B y, u = C x + D y (continuous, ``sample_time_s`` None) or
-    x⁺ = A x + B y_k, u_k = C x_k + D y_k held for one sample (discrete).
+    x⁺ = A x + B y_k, u_k = C x_k + D y_k held for one sample (discrete), applied
+    ``computation_delay_s`` ∈ [0, T] after the sample it was computed from (the controller's
+    computation time; exact in the linear loop and in the transient).
 
     y: the measurements (see :func:`rotordyn.analysis.measurement.measurement_matrix`) minus
     their value at the operating point; u: chamber-pressure command increment, Pa.
@@ -66,6 +69,7 @@ class Controller:
     seed: int = 0
     name: str = "controller"
     info: dict = field(default_factory=dict, compare=False)
+    computation_delay_s: float = 0.0
 
     def __post_init__(self):
         object.__setattr__(self, "measurements", parse_measurements(self.measurements))
@@ -99,6 +103,16 @@ class Controller:
                 raise InputError(f"{exc} (a discrete controller's sample time, s; None: "
                                  f"continuous)") from None
             object.__setattr__(self, "sample_time_s", st)
+        delay = v.in_range("controller.computation_delay_s", self.computation_delay_s, 0.0,
+                           MAX_SAMPLE_TIME_S)
+        if delay and st is None:
+            raise InputError(f"controller.computation_delay_s: a continuous controller takes no "
+                             f"computation delay here (got {delay!r} s); use "
+                             f"rotordyn.control.delay.with_pade_delay(), or a discrete law")
+        if st is not None and delay > st:
+            raise InputError(f"controller.computation_delay_s: expected a delay in [0, {st:g}] s "
+                             f"(the sample time), got {delay!r}")
+        object.__setattr__(self, "computation_delay_s", delay)
         object.__setattr__(self, "noise_dt_s", v.in_range(
             "controller.noise_dt_s", self.noise_dt_s, MIN_SAMPLE_TIME_S, MAX_SAMPLE_TIME_S))
         object.__setattr__(self, "noise_std", _noise_std(self.noise_std, ny))
@@ -150,23 +164,40 @@ class Controller:
         return cls(np.asarray(sys.A), np.asarray(sys.B), np.asarray(sys.C), np.asarray(sys.D),
                    measurements, sample_time_s=dt, **kw)
 
-    def to_control(self):
-        """The python-control system (dt = sample time, or 0)."""
+    def to_control(self, *, balanced: bool = True):
+        """The python-control system (dt = sample time, or 0), input names ``y[i]``, output
+        ``chamber_pressure_command_pa``. ``balanced`` (default): states scaled by powers of
+        two (exact, :mod:`rotordyn._common.balance`; each state's name carries its ``·2^-e``)
+        so python-control evaluates it to round-off with or without slycot (an LQG law's
+        unscaled states made SLICOT's TB05AD 29 % wrong: issue 24); same transfer function."""
         import control
 
-        return control.ss(self.A, self.B, self.C, self.D, dt=self.sample_time_s or 0)
+        from rotordyn._common.balance import scaled, scaled_state_names, state_scaling
+
+        v.boolean("balanced", balanced)
+        A, B, C = self.A, self.B, self.C
+        names = [f"x[{i}]" for i in range(self.n_states)]
+        if balanced and self.n_states:
+            t = state_scaling(A, B, C)
+            A, B, C = scaled(A, B, C, t)
+            names = scaled_state_names(names, t)
+        return control.ss(A, B, C, self.D, dt=self.sample_time_s or 0,
+                          inputs=[f"y[{i}]" for i in range(self.n_inputs)],
+                          outputs=["chamber_pressure_command_pa"], states=names or None,
+                          name=self.name)
 
     def scaled(self, gain: float) -> "Controller":
         """The same controller with its output multiplied by ``gain``."""
         v.finite("gain", gain)
         return Controller(self.A, self.B, gain * self.C, gain * self.D, self.measurements,
                           self.sample_time_s, self.noise_std, self.noise_dt_s, self.seed,
-                          self.name, dict(self.info))
+                          self.name, dict(self.info), self.computation_delay_s)
 
     def with_options(self, **kw) -> "Controller":
         d = dict(A=self.A, B=self.B, C=self.C, D=self.D, measurements=self.measurements,
                  sample_time_s=self.sample_time_s, noise_std=self.noise_std,
-                 noise_dt_s=self.noise_dt_s, seed=self.seed, name=self.name, info=self.info)
+                 noise_dt_s=self.noise_dt_s, seed=self.seed, name=self.name, info=self.info,
+                 computation_delay_s=self.computation_delay_s)
         bad = sorted(set(kw) - set(d))
         if bad:
             raise InputError(f"controller: unknown option(s) {', '.join(bad)}; expected any "
@@ -199,6 +230,7 @@ class Controller:
         k.measurement = Cm
         k.offset = offset
         k.sample_time = float(self.sample_time_s or 0.0)
+        k.delay = float(self.computation_delay_s)
         ns = np.broadcast_to(np.asarray(self.noise_std, dtype=float), (ny,)).copy()
         if np.any(ns > 0):
             k.noise_std = ns

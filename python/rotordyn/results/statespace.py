@@ -76,14 +76,26 @@ class StateSpaceResult(Display):
 
         return draw(ax)
 
-    def to_control(self):
-        """A python-control ``StateSpace`` (needs the optional ``control`` package)."""
+    def to_control(self, *, balanced: bool = True):
+        """A python-control ``StateSpace`` (needs the optional ``control`` package).
+        ``balanced`` (default): states scaled by powers of two (exact; each state's name
+        carries its ``·2^-e``, :mod:`rotordyn._common.balance`), so python-control evaluates
+        it to round-off with or without slycot; the transfer function is the same."""
         try:
             import control
         except ImportError as exc:  # pragma: no cover - depends on the environment
             raise ImportError("to_control() needs python-control: pip install control") from exc
-        return control.ss(self.A, self.B, self.C, self.D, inputs=list(self.input_names),
-                          outputs=list(self.output_names), states=list(self.state_names))
+        from rotordyn._common import validate as v
+        from rotordyn._common.balance import scaled, scaled_state_names, state_scaling
+
+        v.boolean("balanced", balanced)
+        A, B, C, names = self.A, self.B, self.C, list(self.state_names)
+        if balanced:
+            t = state_scaling(A, B, C)
+            A, B, C = scaled(A, B, C, t)
+            names = scaled_state_names(names, t)
+        return control.ss(A, B, C, self.D, inputs=list(self.input_names),
+                          outputs=list(self.output_names), states=names)
 
     def to_frame(self) -> pd.DataFrame:
         """The matrices as a tidy table (matrix, row, col, value, unit): ``unit`` is the
