@@ -31,7 +31,8 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import plausibility
 from rotordyn._common import validate as v
-from rotordyn.bearings._film import CAVITATION_MODELS, SystemParts, check_film_fields
+from rotordyn.bearings._film import (CAVITATION_MODELS, SystemParts, check_film_fields,
+                                     check_turbulence, set_turbulence)
 from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.errors import InputError
 
@@ -211,6 +212,10 @@ class JournalBearing:
     cavitation : "reynolds" (Swift–Stieber, default), "gumbel" (half-Sommerfeld), "jfo"
         (mass-conserving Elrod–Adams, steady) or "none" (full Sommerfeld).
     grooves : sequence of :class:`Groove`.
+    turbulence : "laminar" (default) or "ng_pan": turbulent lubrication (Ng–Pan–Elrod
+        coefficients, switched on by the local film Reynolds number ρ|ω|R h/μ;
+        docs/film-physics.md).
+    density_kg_m3 : oil density ρ, kg/m³ (needed by ``turbulence = "ng_pan"``).
     """
 
     def __init__(
@@ -224,6 +229,8 @@ class JournalBearing:
         n_axial: int = 16,
         cavitation: str = "reynolds",
         grooves: Iterable[Groove] = (),
+        turbulence: str = "laminar",
+        density_kg_m3: float | None = None,
     ) -> None:
         self.diameter_m = _positive(diameter_m, "diameter_m")
         self.length_m = _positive(length_m, "length_m")
@@ -258,6 +265,9 @@ class JournalBearing:
                 " the steady mass-conserving film content is undetermined)"
             )
         self.grooves = gs
+        check_turbulence("JournalBearing", turbulence, density_kg_m3)
+        self.turbulence = turbulence
+        self.density_kg_m3 = None if density_kg_m3 is None else float(density_kg_m3)
         self._local = threading.local()
 
     # -- plumbing ------------------------------------------------------------------------
@@ -271,6 +281,8 @@ class JournalBearing:
             n_axial=self.n_axial,
             cavitation=self.cavitation,
             grooves=self.grooves,
+            turbulence=self.turbulence,
+            density_kg_m3=self.density_kg_m3,
         )
 
     def __getstate__(self) -> dict:
@@ -297,6 +309,7 @@ class JournalBearing:
         g.clearance_m = self.clearance_m
         g.viscosity_pa_s = self.viscosity_pa_s
         g.grooves = [gr.to_core() for gr in self.grooves]
+        set_turbulence(g, self.turbulence, self.density_kg_m3)
         return g, _core.FilmGrid(self.n_circ, self.n_axial)
 
     def solver(self) -> _core.ReynoldsSolver:
@@ -561,7 +574,8 @@ def film_model(b) -> JournalBearing:
     return JournalBearing(diameter_m=b.diameter_m, length_m=b.length_m,
                           clearance_m=b.clearance_m, viscosity_pa_s=b.viscosity_pa_s,
                           n_circ=b.n_circ, n_axial=b.n_axial, cavitation=b.cavitation,
-                          grooves=b.grooves)
+                          grooves=b.grooves, turbulence=b.turbulence,
+                          density_kg_m3=b.density_kg_m3)
 
 
 
@@ -578,6 +592,8 @@ class FluidFilmBearing:
     n_circ: int = 72
     n_axial: int = 16
     grooves: tuple[Groove, ...] = ()
+    turbulence: str = "laminar"
+    density_kg_m3: float | None = None
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
