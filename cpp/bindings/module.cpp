@@ -15,4 +15,5 @@ PYBIND11_MODULE(_core, m) {
   bind_transient(m);
   bind_sleeve(m);
   bind_batch(m);
+  bind_thermal(m);
 }

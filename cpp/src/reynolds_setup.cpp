@@ -552,6 +552,14 @@ RowMatrixXd ReynoldsSolver::dirichlet_mask() const {
   return m;
 }
 
+void ReynoldsSolver::set_viscosity(double viscosity_pa_s) {
+  require_positive(viscosity_pa_s, "viscosity_pa_s");
+  impl_->geo.viscosity_pa_s = viscosity_pa_s;
+  impl_->mu = viscosity_pa_s;
+  if (impl_->coarse) impl_->coarse->set_viscosity(viscosity_pa_s);
+  impl_->solved = false;
+}
+
 void ReynoldsSolver::reset() {
   // Solves do not depend on earlier calls (each starts from its own prediction); this only
   // drops the last solution, so linearize() needs a new solve first.

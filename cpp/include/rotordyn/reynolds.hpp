@@ -236,6 +236,10 @@ class ReynoldsSolver {
   BatchResult batch_coefficients(const RowMatrixXd& positions, const Eigen::VectorXd& omegas,
                                  int n_threads = 1);
 
+  /// Change the film's viscosity (Pa·s, finite > 0) without rebuilding the solver (the
+  /// effective-temperature model's iteration): every later solve uses it.
+  void set_viscosity(double viscosity_pa_s);
+
   /// Drop the last solution (linearize() then needs a new solve). Solves never depend on
   /// earlier calls: each starts its cavitation set from a prediction of its own inputs.
   void reset();
