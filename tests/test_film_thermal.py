@@ -163,3 +163,36 @@ def test_bad_input_names_the_field():
     with pytest.raises(InputError, match="carry_over"):
         b.thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=VG32,
                               supply_temperature_c=40.0, carry_over=1.5)
+
+
+def test_cli_thermal_and_turbulent_output(capsys):
+    """``rotordyn bearing`` with the thermal model prints (and --json records) the effective
+    and maximum temperatures, the power loss, flows and K, C of the thermal equilibrium, equal
+    to the Python API's; a viscosity law rising with temperature exits 2 naming the field."""
+    import json
+
+    from rotordyn.cli import main
+
+    base = ["bearing", "--diameter-m", "0.1", "--length-m", "0.05", "--clearance-m", "1e-4",
+            "--n-circ", "36", "--n-axial", "8", "--speed-hz", "100", "--load-n", "0", "-5000"]
+    assert main(base + ["--supply-temperature-c", "45", "--oil-walther", "40", "32", "100",
+                        "5.4", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    r = _bearing().thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=VG32,
+                                       supply_temperature_c=45.0)
+    assert rec["thermal"]["effective_temperature_c"] == pytest.approx(r.effective_temperature_c,
+                                                                       rel=1e-12)
+    assert rec["thermal"]["power_loss_w"] == pytest.approx(r.power_loss_w, rel=1e-12)
+    np.testing.assert_allclose(rec["k_n_per_m"], r.K, rtol=1e-12)
+    assert main(base + ["--supply-temperature-c", "45", "--oil-walther", "40", "5", "100",
+                        "30"]) == 2
+    assert "nu2_mm2_s" in capsys.readouterr().err
+    assert main(base + ["--viscosity-pa-s", "0.003", "--turbulence", "ng_pan",
+                        "--density-kg-m3", "870", "--json"]) == 0
+    t = json.loads(capsys.readouterr().out)
+    assert t["bearing"]["turbulence"] == "ng_pan"
+    tb = rotordyn.JournalBearing(diameter_m=0.1, length_m=0.05, clearance_m=1e-4,
+                                 viscosity_pa_s=0.003, n_circ=36, n_axial=8, turbulence="ng_pan",
+                                 density_kg_m3=870.0)
+    e = tb.static_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0)
+    assert t["equilibrium"]["eccentricity_ratio"] == pytest.approx(e.eccentricity_ratio, rel=1e-12)

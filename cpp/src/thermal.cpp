@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -139,6 +140,7 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
   const double Ts = opt.supply_temperature_c, lam = opt.carry_over, kf = opt.effective_factor;
   ThermalEquilibrium out;
   double T = Ts, x = 0.0, y = 0.0;
+  double T_prev = Ts, f_prev = std::numeric_limits<double>::quiet_NaN();
   for (int it = 1; it <= opt.max_iter; ++it) {
     const double mu = oil.viscosity_pa_s(T);
     solver.set_viscosity(mu);
@@ -207,7 +209,19 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
                                "law's range (t_max_c = " + num(oil.t_max_c) + " degC)");
       return out;
     }
-    T = Tn;
+    // Next temperature: the fixed-point map T -> G(T) = Tn, accelerated by the secant step on
+    // f(T) = G(T) - T once two iterates exist (safeguarded: inside the law's range and
+    // between the supply temperature and twice the last step; else the plain map).
+    const double f = Tn - T;
+    double Tnext = Tn;
+    if (it > 1 && std::isfinite(f_prev) && f != f_prev) {
+      const double ts = T - f * (T - T_prev) / (f - f_prev);
+      if (std::isfinite(ts) && ts > Ts && ts < oil.t_max_c && std::abs(ts - T) <= 4.0 * std::abs(f))
+        Tnext = ts;
+    }
+    T_prev = T;
+    f_prev = f;
+    T = Tnext;
   }
   throw ConvergenceError("thermal equilibrium: the effective temperature did not settle to " +
                          num(opt.tol_k) + " K in " + std::to_string(opt.max_iter) +
