@@ -196,3 +196,44 @@ def test_cli_thermal_and_turbulent_output(capsys):
                                  density_kg_m3=870.0)
     e = tb.static_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0)
     assert t["equilibrium"]["eccentricity_ratio"] == pytest.approx(e.eccentricity_ratio, rel=1e-12)
+
+
+@pytest.mark.parametrize("l_over_d, eps, q_rb", [(0.25, 0.6, 4.99), (0.25, 0.9, 5.91),
+                                                 (0.5, 0.6, 4.85)])
+def test_heat_balance_flow_against_raimondi_boyd(l_over_d, eps, q_rb):
+    """The heat balance's film flow Q of a grooveless film (the flux into the film just
+    downstream of its maximum thickness) against Raimondi & Boyd's flow variable Q/(R c N L)
+    (ASLE Trans. 1 (1958) 159–209, full bearing; the supply line at the maximum film): within
+    0.5 % at L/D = 1/4 and 2 % at L/D = 1/2 (144 × 32; the grooveless Swift–Stieber film
+    draws slightly more than one with a p = 0 supply line: +5 % at L/D = 1, documented)."""
+    D, C, N = 0.05, 1e-4, 20.0
+    b = rotordyn.JournalBearing(diameter_m=D, length_m=l_over_d * D, clearance_m=C,
+                                viscosity_pa_s=0.02, n_circ=144, n_axial=32)
+    s = b.solver()
+    sol = s.rigid(0.0, -eps * C, 0.0, 0.0, 2 * math.pi * N)
+    q = _core.max_film_flow(s, sol, 2 * math.pi * N) / (0.5 * D * C * N * l_over_d * D)
+    assert q == pytest.approx(q_rb, rel=0.005 if l_over_d == 0.25 else 0.02)
+    assert q >= q_rb * 0.999
+
+
+def test_grooved_bearing_draws_the_groove_flow():
+    """With a supply groove (at 150°, near the maximum film of this load, whose attitude is
+    ~50°) the heat balance takes the flow the groove delivers into the film
+    (FilmResult.inlet_flow_m3_s at the thermal equilibrium), and the fresh flow a given supply
+    (below the film's demand, with carry-over) mixes hotter oil in: T_in > T_s."""
+    b = rotordyn.JournalBearing(diameter_m=0.1, length_m=0.05, clearance_m=1e-4,
+                                viscosity_pa_s=0.02, n_circ=36, n_axial=8,
+                                grooves=[rotordyn.Groove(center_deg=150.0, width_deg=20.0)])
+    r = b.thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=VG32,
+                              supply_temperature_c=45.0)
+    hot = rotordyn.JournalBearing(diameter_m=0.1, length_m=0.05, clearance_m=1e-4,
+                                  viscosity_pa_s=r.viscosity_pa_s, n_circ=36, n_axial=8,
+                                  grooves=[rotordyn.Groove(center_deg=150.0, width_deg=20.0)])
+    f = hot.solve(x_m=r.x_m, y_m=r.y_m, speed_hz=100.0)
+    assert r.film_flow_m3_s == pytest.approx(f.inlet_flow_m3_s, rel=1e-9)
+    assert r.inlet_temperature_c == 45.0
+    r2 = b.thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=VG32,
+                               supply_temperature_c=45.0, carry_over=0.5,
+                               supply_flow_m3_s=0.5 * r.film_flow_m3_s)
+    assert r2.inlet_temperature_c > 45.0 + 1.0
+    assert r2.effective_temperature_c > r.effective_temperature_c

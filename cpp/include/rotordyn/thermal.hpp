@@ -7,8 +7,8 @@
 //               40 °C and 100 °C viscosities); μ = ρ ν.
 //   exponential μ = mu_ref exp(−beta (T − t_ref_c)).
 // Heat balance (the Raimondi–Boyd/Shigley assumptions, with hot-oil carry-over): the film draws
-// Q across its line of maximum thickness (the flow entering the loaded film) and leaks Q_s at
-// its ends; the leakage leaves at the mean rise ΔT/2, the rest Q − Q_s at ΔT, all the friction
+// Q (with supply grooves: the flow they deliver into the film; without: the flow into the film
+// just downstream of its line of maximum thickness, max_film_flow) and leaks Q_s at its ends; the leakage leaves at the mean rise ΔT/2, the rest Q − Q_s at ΔT, all the friction
 // power P = torque·|ω| goes into the oil:  P = ρ c_p ΔT (Q − Q_s/2).
 // At the supply, the fraction λ (carry_over) of the recirculating hot flow Q_r = Q − Q_s mixes
 // with the supply flow Q_f at T_s (supply_flow_m3_s; 0: the film's own demand Q − λ Q_r):
@@ -54,7 +54,7 @@ struct ThermalEquilibrium {
   double temperature_rise_k = 0.0;   ///< ΔT
   double viscosity_pa_s = 0.0;       ///< μ(T_eff)
   double power_loss_w = 0.0;
-  double film_flow_m3_s = 0.0;       ///< Q (across the line of maximum film)
+  double film_flow_m3_s = 0.0;       ///< Q (groove inflow, or downstream of the maximum film)
   double side_flow_m3_s = 0.0;       ///< Q_s
   double supply_flow_m3_s = 0.0;     ///< Q_f (fresh oil)
   int iterations = 0;                ///< outer (equilibrium) iterations
@@ -72,10 +72,12 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
                                        const ThermalOptions& opt, double load_x_n,
                                        double load_y_n, double omega);
 
-/// Flow across the film's line of maximum thickness (mid-plane row), m³/s, from a solution of
-/// `solver` at ω: Σ_k [(ωR/2) h θ − h³/(k_x μ R) ∂p/∂φ] Δz (trapezoidal along z; ∂p/∂φ by
-/// central differences; without the pressure term for the short-bearing model, which
-/// neglects the circumferential pressure flow).
+/// Flow into the film just downstream of its line of maximum thickness (mid-plane row), m³/s
+/// (> 0 for either sense of rotation): the film's conservative flux through the face after
+/// the maximum-film node, Σ_k [(|ω|R/2) h_f θ − h_f³/(k_x μ R Δφ) Δp] Δz (trapezoidal along
+/// z; without the pressure term for the short-bearing model, which neglects the
+/// circumferential pressure flow). With the supply line at the maximum film this is Raimondi &
+/// Boyd's Q.
 double max_film_flow(const ReynoldsSolver& solver, const FilmSolution& sol, double omega);
 
 }  // namespace rotordyn
