@@ -116,22 +116,37 @@ double max_film_flow(const ReynoldsSolver& solver, const FilmSolution& sol, doub
   const double dz = g.length_m / (K1 - 1), mu = g.viscosity_pa_s;
   const double re_per_h = g.turbulence == Turbulence::laminar
                               ? 0.0 : g.density_kg_m3 * std::abs(omega) * R / mu;
-  // the flux through the face just downstream of the maximum film (the film's own
-  // conservative face flux: mean-of-nodes h, the upwind fill, the face's conductance)
-  const bool fwd = omega >= 0.0;
-  const int jd = fwd ? (jmax + 1) % N : (jmax + N - 1) % N;
-  double q = 0.0;
-  for (int k = 0; k < K1; ++k) {
-    const double wk = (k == 0 || k == K1 - 1) ? 0.5 : 1.0;
-    const double hf = 0.5 * (sol.h_m(jmax, k) + sol.h_m(jd, k));
-    double flux = 0.5 * std::abs(omega) * R * hf * sol.theta(jmax, k);
-    if (!g.short_bearing) {  // the short-bearing model has no circumferential pressure flow
-      const double kx = turbulence_factors(g.turbulence, re_per_h * hf).kx;
-      flux -= hf * hf * hf / (kx * mu * R * dphi) * (sol.p_pa(jd, k) - sol.p_pa(jmax, k));
+  // The film's conservative flux through the face from node j to its downstream neighbour
+  // (mean-of-nodes h, the upwind fill, the face's conductance), > 0 downstream.
+  const int sd = omega >= 0.0 ? 1 : N - 1;  // downstream index step (mod N)
+  auto face_flux = [&](int j) {
+    const int jd = (j + sd) % N;
+    double q = 0.0;
+    for (int k = 0; k < K1; ++k) {
+      const double wk = (k == 0 || k == K1 - 1) ? 0.5 : 1.0;
+      const double hf = 0.5 * (sol.h_m(j, k) + sol.h_m(jd, k));
+      double flux = 0.5 * std::abs(omega) * R * hf * sol.theta(j, k);
+      if (!g.short_bearing) {  // the short-bearing model has no circumferential pressure flow
+        const double kx = turbulence_factors(g.turbulence, re_per_h * hf).kx;
+        flux -= hf * hf * hf / (kx * mu * R * dphi) * (sol.p_pa(jd, k) - sol.p_pa(j, k));
+      }
+      q += wk * flux;
     }
-    q += wk * flux;
-  }
-  return q * dz;
+    return q * dz;
+  };
+  // The maximum film's position between nodes (parabola through the three mid-row nodes,
+  // offset d in [-1/2, 1/2] node spacings downstream) and the flux half a spacing downstream
+  // of it, interpolated linearly between the faces: a continuous function of the journal
+  // position (the node of the maximum jumps; a flux taken at that node's face jumps with it
+  // and made the thermal iteration cycle between two states on coarse grids).
+  const int jm = (jmax + N - 1) % N, jp = (jmax + 1) % N;
+  const double hm = sol.h_m(jm, kmid), h0 = sol.h_m(jmax, kmid), hp = sol.h_m(jp, kmid);
+  const double curv = hm - 2.0 * h0 + hp;
+  double d = curv < 0.0 ? 0.5 * (hm - hp) / curv : 0.0;  // + index direction
+  d = std::clamp(omega >= 0.0 ? d : -d, -0.5, 0.5);       // downstream
+  const int ju = (jmax + N - sd) % N;                     // upstream neighbour
+  return d < 0.0 ? face_flux(ju) + (d + 1.0) * (face_flux(jmax) - face_flux(ju))
+                 : face_flux(jmax) + d * (face_flux((jmax + sd) % N) - face_flux(jmax));
 }
 
 ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
