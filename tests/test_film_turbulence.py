@@ -243,3 +243,33 @@ def test_tilting_pad_compressor_with_turbulence():
     assert np.abs(np.asarray(et.r)[:2]).max() < np.abs(np.asarray(el.r)[:2]).max()
     assert np.all(np.isfinite(np.asarray(rotordyn.linearize(turb, speed_hz=250.0).K)))
     assert rotordyn.System.from_toml(turb.to_toml(), is_text=True).bearings == turb.bearings
+
+
+def test_compressor_with_turbulence_stability_campbell_transient_and_sweep_axis():
+    """Turbulent plain bearings in the compressor: stability and a Campbell diagram run, a
+    small-amplitude transient follows the linear model (3 % of the peak, as for the other
+    elements in tests/test_bearing_elements_system.py: the transient calls the same turbulent
+    film through the system's Reynolds solves), and the density is a sweep axis that moves
+    the operating point."""
+    import scipy.linalg
+
+    from rotordyn.sweep.paths import set_field
+
+    s, f = _compressor(True), 250.0
+    assert rotordyn.stability(s, speed_hz=f).status == "ok"
+    cb = rotordyn.campbell(s, [150.0, 250.0])
+    assert np.all(np.asarray(cb.point_status) == "ok")
+    lm = rotordyn.linearize(s, speed_hz=f)
+    n = lm.M.shape[0]
+    A = np.block([[np.zeros((n, n)), np.eye(n)],
+                  [-np.linalg.solve(lm.M, lm.K), -np.linalg.solve(lm.M, lm.D)]])
+    tr = rotordyn.transient(s, t_end_s=0.004, speed_hz=f, disturbance_m=(0.2e-6, 0.0), n_out=9)
+    assert tr.status == "ok", tr.message
+    x0 = np.concatenate([tr.r[0] - lm.equilibrium.r, np.zeros(n)])
+    lin = np.array([(scipy.linalg.expm(A * t) @ x0)[:n] for t in tr.t])
+    dev = tr.r - lm.equilibrium.r
+    assert np.max(np.abs(dev[:, 0] - lin[:, 0])) < 0.03 * np.max(np.abs(lin[:, 0]))
+    s2 = set_field(s, "bearings.*.density_kg_m3", 2000.0)
+    e1, e2 = rotordyn.equilibrium(s, speed_hz=f), rotordyn.equilibrium(s2, speed_hz=f)
+    assert e1.status == e2.status == "ok"
+    assert not np.allclose(e1.r[:4], e2.r[:4], rtol=1e-6, atol=0)
