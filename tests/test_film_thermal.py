@@ -269,3 +269,17 @@ def test_thermal_iteration_converges_on_a_coarse_grid():
         assert r.iterations <= 8
         temps.append(r.effective_temperature_c)
     assert np.all(np.diff(temps) > 0)  # more load, more heat
+
+
+def test_reverse_rotation_mirrors():
+    """Reverse rotation mirrors the thermal equilibrium (x → −x; temperatures, power and
+    flows equal to round-off): the power P = torque·ω and the flow downstream of the maximum
+    film follow the sense of rotation."""
+    b = _bearing()
+    args = dict(load_n=(0.0, -5000.0), oil=VG32, supply_temperature_c=45.0)
+    f, r = b.thermal_equilibrium(speed_hz=100.0, **args), b.thermal_equilibrium(speed_hz=-100.0,
+                                                                               **args)
+    assert r.effective_temperature_c == pytest.approx(f.effective_temperature_c, rel=1e-12)
+    assert r.power_loss_w == pytest.approx(f.power_loss_w, rel=1e-10)
+    assert r.film_flow_m3_s == pytest.approx(f.film_flow_m3_s, rel=1e-10)
+    assert (r.x_m, r.y_m) == pytest.approx((-f.x_m, f.y_m), rel=1e-9)
