@@ -172,7 +172,7 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
     const double P = sol.friction_torque_nm * omega;  // > 0 for either sense
     // Q: with supply grooves, the flow they deliver into the film (Raimondi & Boyd's Q when
     // the supply line sits at the maximum film); without, the flux just downstream of the
-    // maximum film (an upper bound: +0.2 % at L/D = 1/4, +5 % at L/D = 1, ε = 0.6)
+    // maximum film (above Raimondi & Boyd's Q: +0.2 % at L/D = 1/4, +5.5 % at L/D = 1, ε = 0.6)
     const double qg = sol.inlet_flow_m3_s;
     const double Q = solver.geometry().grooves.empty() || !(qg > 0.0)
                          ? max_film_flow(solver, sol, omega) : qg;
