@@ -60,6 +60,30 @@ void bind_thermal(py::module_& m) {
         py::call_guard<py::gil_scoped_release>(),
         "Effective-temperature equilibrium of a plain film (thermal.hpp); the solver's "
         "viscosity is left at mu(T_eff).");
+  py::class_<ThermalFilm>(m, "ThermalFilm")
+      .def(py::init<>())
+      .def_readwrite("film", &ThermalFilm::film)
+      .def_readwrite("oil", &ThermalFilm::oil)
+      .def_readwrite("options", &ThermalFilm::options);
+  py::class_<ThermalFilmState>(m, "ThermalFilmState")
+      .def_readonly("effective_temperature_c", &ThermalFilmState::effective_temperature_c)
+      .def_readonly("max_temperature_c", &ThermalFilmState::max_temperature_c)
+      .def_readonly("inlet_temperature_c", &ThermalFilmState::inlet_temperature_c)
+      .def_readonly("temperature_rise_k", &ThermalFilmState::temperature_rise_k)
+      .def_readonly("viscosity_pa_s", &ThermalFilmState::viscosity_pa_s)
+      .def_readonly("power_loss_w", &ThermalFilmState::power_loss_w)
+      .def_readonly("film_flow_m3_s", &ThermalFilmState::film_flow_m3_s)
+      .def_readonly("side_flow_m3_s", &ThermalFilmState::side_flow_m3_s)
+      .def_readonly("supply_flow_m3_s", &ThermalFilmState::supply_flow_m3_s);
+  py::class_<ThermalSystemResult>(m, "ThermalSystemResult")
+      .def_readonly("equilibrium", &ThermalSystemResult::equilibrium)
+      .def_readonly("films", &ThermalSystemResult::films)
+      .def_readonly("viscosities", &ThermalSystemResult::viscosities)
+      .def_readonly("iterations", &ThermalSystemResult::iterations);
+  m.def("thermal_system_equilibrium", &thermal_system_equilibrium, py::arg("model"),
+        py::arg("thermal"), py::arg("omega"), py::arg("chamber_pressure"), py::arg("a"),
+        py::arg("options"), py::call_guard<py::gil_scoped_release>(),
+        "System equilibrium iterated with the heat balance of the thermal films (thermal.hpp).");
   m.def("max_film_flow", &max_film_flow, py::arg("solver"), py::arg("solution"),
         py::arg("omega"), "Flow across the film's line of maximum thickness, m^3/s.");
 }

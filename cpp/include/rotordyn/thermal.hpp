@@ -16,6 +16,7 @@
 // 0.5: Shigley's average film temperature). The film is isoviscous at μ(T_eff).
 #pragma once
 #include "rotordyn/reynolds.hpp"
+#include "rotordyn/system.hpp"
 
 namespace rotordyn {
 
@@ -79,5 +80,38 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
 /// circumferential pressure flow). With the supply line at the maximum film this is Raimondi &
 /// Boyd's Q.
 double max_film_flow(const ReynoldsSolver& solver, const FilmSolution& sol, double omega);
+
+/// A film of a system (SystemModel::films[film]) under the effective-temperature model.
+struct ThermalFilm {
+  int film = 0;
+  OilModel oil;
+  ThermalOptions options;
+};
+
+/// The thermal state of one film at the system's thermal equilibrium (as ThermalEquilibrium).
+struct ThermalFilmState {
+  double effective_temperature_c = 0.0, max_temperature_c = 0.0, inlet_temperature_c = 0.0;
+  double temperature_rise_k = 0.0, viscosity_pa_s = 0.0, power_loss_w = 0.0;
+  double film_flow_m3_s = 0.0, side_flow_m3_s = 0.0, supply_flow_m3_s = 0.0;
+};
+
+struct ThermalSystemResult {
+  EquilibriumResult equilibrium;        ///< of the model at the films' μ(T_eff)
+  std::vector<ThermalFilmState> films;  ///< one per ThermalFilm, same order
+  std::vector<double> viscosities;      ///< per model film, Pa·s (the thermal ones changed)
+  int iterations = 0;                   ///< outer iterations (one system equilibrium each)
+};
+
+/// Thermal equilibrium of a system: the system equilibrium (SystemSolver::equilibrium, eq. 14)
+/// iterated with each thermal film's heat balance (each film's viscosity set to μ(T_eff); the
+/// heat balance of a film solved exactly for its temperature at the current position, as in
+/// thermal_equilibrium) until every |ΔT_eff| <= its tol_k. A system equilibrium that does not
+/// converge ends the iteration with its status (never a thermal answer from it). The
+/// dynamics at the thermal equilibrium are the model's with `viscosities` (temperature frozen).
+ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
+                                               const std::vector<ThermalFilm>& thermal,
+                                               double omega, double chamber_pressure,
+                                               const Eigen::VectorXd& a,
+                                               const EquilibriumOptions& options);
 
 }  // namespace rotordyn

@@ -9,5 +9,6 @@ from rotordyn.analysis.transient import transient
 from rotordyn.analysis.unbalance import unbalance_response
 from rotordyn.analysis.threshold import stability_boundary, threshold
 from rotordyn.analysis.modes import RotorMatrices, modes, rotor_campbell
+from rotordyn.analysis.thermal import system_thermal_equilibrium
 
-__all__ = ["static", "campbell", "modes", "rotor_campbell", "equilibrium", "linearize", "stability", "threshold", "stability_boundary", "unbalance_response", "statespace", "transient", "RotorMatrices"]
+__all__ = ["static", "campbell", "modes", "rotor_campbell", "equilibrium", "linearize", "stability", "threshold", "stability_boundary", "unbalance_response", "statespace", "transient", "RotorMatrices", "system_thermal_equilibrium"]

@@ -7,8 +7,10 @@ from rotordyn.results.stability import LinearModel, StabilityResult
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 from rotordyn.results.statespace import StateSpaceResult
 from rotordyn.results.static import StaticResult
+from rotordyn.results.thermal import SystemThermalResult
 from rotordyn.results.transient import TransientResult
 from rotordyn.results.unbalance import UnbalanceResult
 
 __all__ = ["ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel", "StabilityResult",
-           "ThresholdResult", "BoundaryResult", "UnbalanceResult", "StateSpaceResult", "TransientResult", "StaticResult"]
+           "ThresholdResult", "BoundaryResult", "UnbalanceResult", "StateSpaceResult", "TransientResult", "StaticResult",
+           "SystemThermalResult"]
