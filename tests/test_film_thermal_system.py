@@ -67,3 +67,23 @@ def test_system_thermal_bad_input():
     with pytest.raises(InputError, match="bearings"):
         rotordyn.system_thermal_equilibrium(tp, speed_hz=150.0, oil=VG32,
                                             supply_temperature_c=45.0)
+
+
+def test_cli_thermal_command(capsys):
+    """``rotordyn thermal MODEL`` prints one row per plain bearing (``--json``: records) equal
+    to the Python API's; a missing supply temperature exits 2 naming it."""
+    import json
+
+    from rotordyn.cli import main
+
+    path = str(MODELS / "compressor_plain.toml")
+    assert main(["thermal", path, "--speed-hz", "150", "--supply-temperature-c", "45",
+                 "--oil-walther", "40", "32", "100", "5.4", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    s = rotordyn.System.from_toml(MODELS / "compressor_plain.toml")
+    res = rotordyn.system_thermal_equilibrium(s, speed_hz=150.0, oil=VG32,
+                                              supply_temperature_c=45.0)
+    got = [b["effective_temperature_c"] for b in rec["bearings"]]
+    np.testing.assert_allclose(got, res.effective_temperature_c, rtol=1e-12)
+    assert main(["thermal", path, "--oil-walther", "40", "32", "100", "5.4"]) == 2
+    assert "supply-temperature-c" in capsys.readouterr().err

@@ -23,7 +23,7 @@ import numpy as np
 from rotordyn.bearings._film import TURBULENCE_MODELS
 from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.bearings.thermal import Oil
-from rotordyn.cli.common import json_text, table_text
+from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args, table_text
 from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
 from rotordyn.results.equilibrium import CONVERGED
@@ -58,23 +58,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="turbulent film model (ng_pan: Ng-Pan-Elrod, needs --density-kg-m3)")
     s.add_argument("--density-kg-m3", type=float, default=None, metavar="RHO",
                    help="oil density, kg/m3 (turbulence; the thermal oil's density)")
-    s.add_argument("--supply-temperature-c", type=float, default=None, metavar="T",
-                   help="effective-temperature thermal equilibrium with the oil supplied at T "
-                        "degC (with --load-n and an --oil-* law)")
-    s.add_argument("--oil-walther", type=float, nargs=4, default=None,
-                   metavar=("T1_C", "NU1_MM2_S", "T2_C", "NU2_MM2_S"),
-                   help="Walther (ASTM D341) viscosity law through two points")
-    s.add_argument("--oil-exponential", type=float, nargs=3, default=None,
-                   metavar=("MU_REF_PA_S", "T_REF_C", "BETA_1_PER_K"),
-                   help="exponential viscosity law mu_ref exp(-beta (T - T_ref))")
-    s.add_argument("--specific-heat-j-per-kg-k", type=float, default=2000.0, metavar="CP",
-                   help="oil specific heat, J/(kg K) (thermal model)")
-    s.add_argument("--supply-flow-m3-s", type=float, default=0.0, metavar="Q",
-                   help="fresh oil supply flow, m3/s (0: the film's own demand)")
-    s.add_argument("--carry-over", type=float, default=0.0, metavar="LAMBDA",
-                   help="hot-oil carry-over fraction of the recirculating flow, [0, 1]")
-    s.add_argument("--effective-factor", type=float, default=0.5, metavar="K",
-                   help="T_eff = T_in + K dT, K in [0.5, 1] (0.5: the average film temperature)")
+    add_thermal_arguments(s)
     s.add_argument("--n-circ", type=int, default=72, metavar="N",
                    help="film grid cells around the circumference")
     s.add_argument("--n-axial", type=int, default=16, metavar="N",
@@ -118,7 +102,7 @@ def run(args: argparse.Namespace) -> int:
     if args.diameter_m > 0 and args.clearance_m > 0:
         plausibility.length("--diameter-m", args.diameter_m)
         plausibility.clearance("--clearance-m", args.clearance_m, args.diameter_m)
-    oil = _oil(args)
+    oil = oil_from_args(args)
     if args.viscosity_pa_s is None:
         if oil is None:
             raise InputError("--viscosity-pa-s: required (or the thermal model: "
@@ -180,27 +164,6 @@ def run(args: argparse.Namespace) -> int:
         print("K [N/m] =", np.array2string(K, precision=5))
         print("C [N s/m] =", np.array2string(C, precision=5))
     return 0
-
-
-def _oil(args: argparse.Namespace) -> Oil | None:
-    """The thermal model's oil, or None (isothermal) when no supply temperature is given."""
-    if args.supply_temperature_c is None:
-        if args.oil_walther is not None or args.oil_exponential is not None:
-            raise InputError("--supply-temperature-c: an --oil-* law needs the supply "
-                             "temperature (the thermal model)")
-        return None
-    if (args.oil_walther is None) == (args.oil_exponential is None):
-        raise InputError("--oil-walther/--oil-exponential: the thermal model needs exactly one "
-                         "viscosity law")
-    rho = 870.0 if args.density_kg_m3 is None else args.density_kg_m3
-    common = dict(density_kg_m3=rho, specific_heat_j_per_kg_k=args.specific_heat_j_per_kg_k)
-    if args.oil_walther is not None:
-        t1, n1, t2, n2 = args.oil_walther
-        return Oil(viscosity_law="walther", t1_c=t1, nu1_mm2_s=n1, t2_c=t2, nu2_mm2_s=n2,
-                   **common)
-    mu, tr, beta = args.oil_exponential
-    return Oil(viscosity_law="exponential", mu_ref_pa_s=mu, t_ref_c=tr, beta_1_per_k=beta,
-               **common)
 
 
 def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
