@@ -63,6 +63,26 @@ def main(argv=None) -> int:
           f"{t['thermal'].cpu / t['isothermal'].cpu:.2f}x CPU (goal <= 5x; CPU is the figure "
           f"when the wall time shows a busy machine)")
 
+    # the compressor of tests/data/models (two plain bearings, 72x16) in a system: the
+    # thermal system equilibrium (one C++ call; a new SystemSolver per outer step) beside the
+    # isothermal system equilibrium at mu(supply) from a cold start
+    from pathlib import Path
+    sysm = rotordyn.System.from_toml(Path(__file__).parent.parent / "tests" / "data" / "models"
+                                     / "compressor_plain.toml")
+    res = rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
+                                              supply_temperature_c=TS)
+    print(f"compressor (150 Hz): T_eff = {', '.join(f'{t:.2f}' for t in res.effective_temperature_c)}"
+          f" degC, {res.iterations} outer iterations")
+    t3 = interleaved({
+        "isothermal": lambda: rotordyn.equilibrium(sysm, speed_hz=150.0, warm_start=False),
+        "thermal": lambda: rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
+                                                               supply_temperature_c=TS)},
+        repeat=max(3, args.repeat // 2))
+    print(f"system equilibrium, compressor: isothermal {t3['isothermal']}")
+    print(f"                                thermal    {t3['thermal']}")
+    print(f"  ratio thermal/isothermal: {t3['thermal'].wall / t3['isothermal'].wall:.2f}x wall, "
+          f"{t3['thermal'].cpu / t3['isothermal'].cpu:.2f}x CPU")
+
     # turbulence on vs off, per force (same position, Re_h at the clearance ~ 2.9e3)
     lam = rotordyn.JournalBearing(viscosity_pa_s=0.003, **geo)
     tur = rotordyn.JournalBearing(viscosity_pa_s=0.003, turbulence="ng_pan", density_kg_m3=870.0,

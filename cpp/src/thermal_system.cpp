@@ -2,6 +2,8 @@
 // heat balance of each thermal film.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -88,15 +90,30 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
     max_iter = std::max(max_iter, t.options.max_iter);
   }
   SystemModel m = model;
+  for (std::size_t i = 0; i < thermal.size(); ++i)  // start at the supply temperatures
+    m.films[thermal[i].film].geometry.viscosity_pa_s =
+        thermal[i].oil.viscosity_pa_s(thermal[i].options.supply_temperature_c);
+  SystemSolver solver(m);  // one solver; the films' viscosities change in place
+  // each thermal film's own full-output solver (the system's films solve pressures only)
+  std::vector<std::unique_ptr<ReynoldsSolver>> fsol;
+  for (const ThermalFilm& t : thermal)
+    fsol.push_back(std::make_unique<ReynoldsSolver>(m.films[t.film].geometry,
+                                                    m.films[t.film].grid,
+                                                    m.films[t.film].cavitation));
+  std::vector<double> T_prev(thermal.size()), f_prev(thermal.size(),
+                                                     std::numeric_limits<double>::quiet_NaN());
   ThermalSystemResult out;
   std::vector<double> T(thermal.size());
   for (std::size_t i = 0; i < thermal.size(); ++i) T[i] = thermal[i].options.supply_temperature_c;
   Eigen::VectorXd r0;  // empty: the solver's default start
   out.films.resize(thermal.size());
   for (int it = 1; it <= max_iter; ++it) {
-    for (std::size_t i = 0; i < thermal.size(); ++i)
-      m.films[thermal[i].film].geometry.viscosity_pa_s = thermal[i].oil.viscosity_pa_s(T[i]);
-    SystemSolver solver(m);
+    for (std::size_t i = 0; i < thermal.size(); ++i) {
+      const double mu = thermal[i].oil.viscosity_pa_s(T[i]);
+      m.films[thermal[i].film].geometry.viscosity_pa_s = mu;
+      solver.set_film_viscosity(thermal[i].film, mu);
+      fsol[i]->set_viscosity(mu);
+    }
     out.equilibrium = solver.equilibrium(omega, chamber_pressure, a, r0, options);
     out.iterations = it;
     out.viscosities.resize(nf);
@@ -118,7 +135,7 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
         h = (fc.base_h.col(0) + sphi).replicate(1, K1);
       else
         h = fc.base_h + sphi.replicate(1, K1);
-      ReynoldsSolver rs(fc.geometry, fc.grid, fc.cavitation);
+      ReynoldsSolver& rs = *fsol[i];
       const double wf = omega * fc.spin_factor;
       const FilmSolution& sol = rs.solve(h, RowMatrixXd::Zero(h.rows(), h.cols()), wf);
       const double P = sol.friction_torque_nm * wf;
@@ -132,7 +149,20 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
       st.effective_temperature_c = T[i];  // the state of this solve (μ = μ(T[i]))
       out.films[i] = st;
       if (std::abs(Tn - T[i]) > thermal[i].options.tol_k) done = false;
-      T[i] = Tn;
+      // next temperature: the map T -> Tn with a per-film secant step once two iterates
+      // exist (safeguarded as in thermal_equilibrium; the films couple only weakly, through
+      // the positions)
+      const double f = Tn - T[i];
+      double Tnext = Tn;
+      if (it > 1 && std::isfinite(f_prev[i]) && f != f_prev[i]) {
+        const double ts = T[i] - f * (T[i] - T_prev[i]) / (f - f_prev[i]);
+        if (std::isfinite(ts) && ts > thermal[i].options.supply_temperature_c &&
+            ts < thermal[i].oil.t_max_c && std::abs(ts - T[i]) <= 4.0 * std::abs(f))
+          Tnext = ts;
+      }
+      T_prev[i] = T[i];
+      f_prev[i] = f;
+      T[i] = Tnext;
     }
     if (done) {
       for (std::size_t i = 0; i < thermal.size(); ++i)
