@@ -92,3 +92,23 @@ TEST_CASE("thermal: the equilibrium satisfies its heat balance; bad oils are Inp
   cold.supply_temperature_c = -50.0;  // below the law's range
   CHECK_THROWS(thermal_equilibrium(s, oil, cold, 0.0, -5000.0, w), InputError);
 }
+
+TEST_CASE("thermal: set_viscosity equals a solver built with that viscosity, bit for bit") {
+  JournalBearingGeometry g;
+  g.diameter_m = 0.1;
+  g.length_m = 0.05;
+  g.clearance_m = 1e-4;
+  g.viscosity_pa_s = 0.02;
+  ReynoldsSolver a(g, FilmGrid{72, 16}, Cavitation::reynolds);
+  a.rigid(1e-5, -6e-5, 0.0, 0.0, 300.0);  // its coarse-grid solver exists now
+  a.set_viscosity(0.013);
+  g.viscosity_pa_s = 0.013;
+  ReynoldsSolver b(g, FilmGrid{72, 16}, Cavitation::reynolds);
+  const Eigen::Vector2d fa = a.rigid(2e-5, -5e-5, 0.0, 0.0, 300.0).force_n;
+  const Eigen::Vector2d fb = b.rigid(2e-5, -5e-5, 0.0, 0.0, 300.0).force_n;
+  CHECK(fa == fb);
+  const DynamicCoefficients ca = a.coefficients(2e-5, -5e-5, 300.0);
+  const DynamicCoefficients cb = b.coefficients(2e-5, -5e-5, 300.0);
+  CHECK(ca.K == cb.K && ca.C == cb.C);
+  CHECK_THROWS(a.set_viscosity(-1.0), InputError);
+}
