@@ -5,7 +5,10 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "rotordyn/errors.hpp"
 #include "rotordyn/reynolds.hpp"
+
+#include <cmath>
 
 namespace rotordyn::py_bind {
 
@@ -48,7 +51,27 @@ void bind_reynolds(py::module_& m) {
       .def_readwrite("end_seal_conductance", &JournalBearingGeometry::end_seal_conductance,
                      "End-seal conductance G_s, m^2/(Pa s): axial leakage q_z = G_s p per metre "
                      "of circumference at each end (Robin condition); inf (default): open ends.")
+      .def_property(
+          "turbulence",
+          [](const JournalBearingGeometry& g) { return std::string(turbulence_name(g.turbulence)); },
+          [](JournalBearingGeometry& g, const std::string& s) { g.turbulence = parse_turbulence(s); },
+          "Turbulent lubrication model: 'laminar' (default) or 'ng_pan' (Ng-Pan-Elrod, Taylor & "
+          "Dowson 1974 fits), switched on by the local Re_h = rho |omega| R h / mu.")
+      .def_readwrite("density_kg_m3", &JournalBearingGeometry::density_kg_m3,
+                     "Oil density, kg/m^3 (the film Reynolds number of a turbulent film).")
       .def("validate", &JournalBearingGeometry::validate);
+
+  m.def(
+      "turbulence_factors",
+      [](const std::string& model, double re) {
+        if (!(std::isfinite(re) && re >= 0.0))
+          throw InputError("reynolds_number: expected a finite value >= 0");
+        const TurbulenceFactors t = turbulence_factors(parse_turbulence(model), re);
+        return py::make_tuple(t.kx, t.kz, t.cf);
+      },
+      py::arg("model"), py::arg("reynolds_number"),
+      "(k_x, k_z, C_f) of the turbulent lubrication model at the film Reynolds number Re_h: "
+      "Poiseuille coefficients (12 laminar) and the Couette shear factor (1 laminar).");
 
   py::class_<FilmGrid>(m, "FilmGrid", "n_circ nodes around, n_axial intervals along.")
       .def(py::init<>())

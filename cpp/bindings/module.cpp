@@ -16,4 +16,5 @@ PYBIND11_MODULE(_core, m) {
   bind_periodic(m);
   bind_sleeve(m);
   bind_batch(m);
+  bind_thermal(m);
 }

@@ -92,6 +92,12 @@ struct ReynoldsSolver::Impl {
   bool mid_node = true;  // n_axial even: the mid-plane is a node row
   int n_nodes = 0;  // N * K1, node n = j * K1 + k
   double R = 0, L = 0, c = 0, mu = 0, dphi = 0, dz = 0;
+  // Turbulence (geo.turbulence != laminar, reynolds_turbulence.cpp): Re_h = re_per_h · h with
+  // re_per_h = ρ|ω|R/μ (set per solve). turb_face: the multipliers of a face's conductance
+  // (12/k) and of its h-derivative.
+  bool turb = false;
+  double re_per_h = 0.0;
+  void turb_face(double hf, bool axial, double& m, double& dm) const;
   std::vector<double> cosphi, sinphi;
   std::vector<char> fixed;       // node -> prescribed pressure (ends, grooves)
   std::vector<double> p_fixed;   // node -> prescribed pressure (0 if unknown)

@@ -73,6 +73,13 @@ void JournalBearingGeometry::validate() const {
   if (short_bearing && !pockets.empty())
     throw InputError("short_bearing: the short-bearing approximation takes no pockets (its "
                      "film thickness is smooth along the circumference)");
+  if (turbulence != Turbulence::laminar &&
+      !(std::isfinite(density_kg_m3) && density_kg_m3 > 0.0 && density_kg_m3 <= 1e5))
+    throw InputError("density_kg_m3: expected 0 < density_kg_m3 <= 1e5 with turbulence = '" +
+                     std::string(turbulence_name(turbulence)) + "' (the film Reynolds number "
+                     "rho |omega| R h / mu needs it), got " + num(density_kg_m3));
+  if (turbulence != Turbulence::laminar && turbulence != Turbulence::ng_pan)
+    throw InputError("turbulence: expected 'laminar' or 'ng_pan'");
   for (std::size_t i = 0; i < pockets.size(); ++i) {
     const Pocket& pk = pockets[i];
     const std::string f = "pockets[" + std::to_string(i) + "].";
@@ -141,6 +148,7 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   L = geo.length_m;
   c = geo.clearance_m;
   mu = geo.viscosity_pa_s;
+  turb = geo.turbulence != Turbulence::laminar;
   dphi = 2.0 * kPi / N;
   dz = L / grid.n_axial;
   cosphi.resize(N);
@@ -355,6 +363,7 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
   const double fN = R * dphi / (12.0 * mu * dz);
   const double fq = 0.5 * omega * R * dz;
   const double fs = R * dphi * dz;
+  re_per_h = turb ? geo.density_kg_m3 * std::abs(omega) * R / mu : 0.0;
   for (int j = 0; j < N; ++j) {
     const int row = j * K1, erow = (j + 1 == N) ? 0 : row + K1;
     for (int k = 0; k < K1; ++k) {
@@ -370,6 +379,20 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
       cN[q] = fN * hn * hn * hn;
     }
     cN[row + K1 - 1] = 0.0;
+    if (turb) {  // Poiseuille conductances h³/(k μ) at the face's Re_h (the laminar path above
+                 // is untouched: laminar films are the same bit for bit)
+      double m, dm;
+      for (int k = 0; k < K1; ++k) {
+        const int q = row + k;
+        turb_face(0.5 * (h[q] + h[erow + k]), false, m, dm);
+        cE[q] *= m;
+      }
+      for (int k = 0; k + 1 < K1; ++k) {
+        const int q = row + k;
+        turb_face(0.5 * (h[q] + h[q + 1]), true, m, dm);
+        cN[q] *= m;
+      }
+    }
   }
   // Faces a pocket edge crosses: the exact value of the stepped film (reynolds_pockets.cpp).
   for (std::size_t f = 0; f < pk_faces.size(); ++f) {
@@ -377,6 +400,11 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
     const int q = pf.n, o = pf.north ? q + 1 : east(q);
     double G3, Gc;
     pocket_face(static_cast<int>(f), 0.5 * (h_smooth[q] + h_smooth[o]), G3, Gc);
+    if (turb) {  // the stepped face's Re_h at its effective film cbrt(G3)
+      double m, dm;
+      turb_face(std::cbrt(G3), pf.north, m, dm);
+      G3 *= m;
+    }
     if (pf.north) {
       cN[q] = fN * G3;
     } else {
@@ -522,6 +550,14 @@ RowMatrixXd ReynoldsSolver::dirichlet_mask() const {
   RowMatrixXd m(impl_->N, impl_->K1);
   for (int n = 0; n < impl_->n_nodes; ++n) m.data()[n] = impl_->fixed[n] ? 1.0 : 0.0;
   return m;
+}
+
+void ReynoldsSolver::set_viscosity(double viscosity_pa_s) {
+  require_positive(viscosity_pa_s, "viscosity_pa_s");
+  impl_->geo.viscosity_pa_s = viscosity_pa_s;
+  impl_->mu = viscosity_pa_s;
+  if (impl_->coarse) impl_->coarse->set_viscosity(viscosity_pa_s);
+  impl_->solved = false;
 }
 
 void ReynoldsSolver::reset() {

@@ -30,6 +30,9 @@ double ReynoldsSolver::Impl::short_source(const double* hh, const double* hd, in
 
 double ReynoldsSolver::Impl::short_factor(int n) const {
   const double z = -0.5 * L + (n % K1) * dz;
+  if (turb)  // p = (k_z/2) μ s (z² − L²/4)/h³: the axial conductance h³/(k_z μ) at the node
+    return 0.5 * turbulence_factors(geo.turbulence, re_per_h * h[n]).kz * mu *
+           (z * z - 0.25 * L * L);
   return 6.0 * mu * (z * z - 0.25 * L * L);
 }
 
@@ -264,7 +267,9 @@ void ReynoldsSolver::Impl::postprocess() {
     fx -= wk * p[n] * cosphi[j];
     fy -= wk * p[n] * sinphi[j];
     const double dpdphi = (p[east(n)] - p[west(n)]) / (2.0 * dphi);
-    const double tau = mu * omega * R * theta[n] / h[n] + h[n] / (2.0 * R) * dpdphi;
+    double tau = mu * omega * R * theta[n] / h[n];
+    if (turb) tau *= turbulence_factors(geo.turbulence, re_per_h * h[n]).cf;  // Couette shear
+    tau += h[n] / (2.0 * R) * dpdphi;
     torque += wk * tau;
     if (h[n] < hmin) {
       hmin = h[n];
@@ -274,7 +279,8 @@ void ReynoldsSolver::Impl::postprocess() {
   for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
     const int k = n % K1;
     const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
-    torque += wk * mu * omega * R * theta[n] * (pocket_inv_h(n) - 1.0 / h[n]);
+    const double cf = turb ? turbulence_factors(geo.turbulence, re_per_h * h[n]).cf : 1.0;
+    torque += wk * cf * mu * omega * R * theta[n] * (pocket_inv_h(n) - 1.0 / h[n]);
   }
   out.force_n = Eigen::Vector2d(fx * area, fy * area);
   out.friction_torque_nm = torque * area * R;
@@ -443,7 +449,18 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
     double G3, Gc, dG3, dGc;
     pocket_face(face, 0.5 * (h_smooth[a] + h_smooth[b]), G3, Gc, &dG3, &dGc);
     g = f3 / 3.0 * dG3;
+    if (turb) {  // d(G3·12/k(cbrt G3))/dhf = dG3 · dm (reynolds_turbulence.cpp)
+      double m, dm;
+      turb_face(std::cbrt(G3), pk_faces[face].north, m, dm);
+      g *= dm;
+    }
     bq = dGc;
+  };
+  // turbulent films: each conductance derivative takes its face's multiplier dm
+  auto tmul = [&](double hf, bool axial) {
+    double m, dm;
+    turb_face(hf, axial, m, dm);
+    return dm;
   };
   for (int i = 0; i < S.n_unk; ++i) {
     const int n = S.node_of[i];
@@ -455,6 +472,11 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
       const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
       const double dhi = 0.5 * (dh[n] + dh[in]);
       double ge = fE * he * he, gw = fE * hw * hw, gi = fN * hi * hi;
+      if (turb) {
+        ge *= tmul(he, false);
+        gw *= tmul(hw, false);
+        gi *= tmul(hi, true);
+      }
       double qe = dhe, qw = dhw;  // Couette-thickness changes of the two φ-faces
       if constexpr (kPockets) {
         double be = 1.0, bw = 1.0, unused = 1.0;
@@ -478,6 +500,12 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
     const double dhe = 0.5 * (dh[n] + dh[e]), dhw = 0.5 * (dh[w] + dh[n]);
     const double dhn = 0.5 * (dh[n] + dh[n + 1]), dhs = 0.5 * (dh[n - 1] + dh[n]);
     double ge = fE * he * he, gw = fE * hw * hw, gn = fN * hn * hn, gs = fN * hs * hs;
+    if (turb) {
+      ge *= tmul(he, false);
+      gw *= tmul(hw, false);
+      gn *= tmul(hn, true);
+      gs *= tmul(hs, true);
+    }
     double qe = dhe, qw = dhw;
     if constexpr (kPockets) {
       double be = 1.0, bw = 1.0, unused = 1.0;
@@ -558,7 +586,13 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     for (int n = 0; n < s.n_nodes; ++n) {
       const double hv = s.h[n], src = s.short_source(s.h.data(), s.hdot.data(), n);
       const double dsrc = s.short_source(dh.data(), d_dhdt.data(), n);
-      const double v = s.short_factor(n) * (dsrc - 3.0 * src * dh.data()[n] / hv) /
+      // turbulent: the factor k_z(h)/2 also varies, d ln k_z/d ln h = Re dk_z/dRe / k_z
+      double q3 = 3.0;
+      if (s.turb) {
+        const TurbulenceFactors t = turbulence_factors(s.geo.turbulence, s.re_per_h * hv);
+        q3 -= t.re_dkz / t.kz;
+      }
+      const double v = s.short_factor(n) * (dsrc - q3 * src * dh.data()[n] / hv) /
                        (hv * hv * hv);
       double wgt = 1.0;
       if (s.cav != Cavitation::none)

@@ -378,4 +378,15 @@ Linearization SystemSolver::linearize_fd(const Eigen::VectorXd& r, double omega,
   return out;
 }
 
+void SystemSolver::set_film_viscosity(int film, double viscosity_pa_s) {
+  if (film < 0 || film >= static_cast<int>(films_.size()))
+    throw InputError("film: expected a film index in [0, " + std::to_string(films_.size()) +
+                     "), got " + std::to_string(film));
+  Film& f = *films_[static_cast<std::size_t>(film)];
+  f.solver.set_viscosity(viscosity_pa_s);  // InputError naming viscosity_pa_s
+  model_.films[static_cast<std::size_t>(film)].geometry.viscosity_pa_s = viscosity_pa_s;
+  f.valid = false;
+  solved_ = false;
+}
+
 }  // namespace rotordyn

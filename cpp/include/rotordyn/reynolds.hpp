@@ -49,6 +49,28 @@ enum class Cavitation { none = 0, gumbel = 1, reynolds = 2, jfo = 3 };
 Cavitation parse_cavitation(const std::string& name);
 const char* cavitation_name(Cavitation c);
 
+/// Turbulent lubrication model of the film (docs/film-physics.md). laminar: the Poiseuille
+/// conductance h³/(12μ) (today's film, bit for bit). ng_pan: the linearised turbulent theory
+/// of Ng & Pan (1965) with Elrod & Ng (1967), in the curve fits of Taylor & Dowson (1974):
+///   k_x = 12 + 0.0136 Re_h^0.90 (circumferential), k_z = 12 + 0.0043 Re_h^0.96 (axial),
+///   Couette shear factor C_f = 1 + 0.0012 Re_h^0.94,
+/// with the local film Reynolds number Re_h = ρ |ω| R h / μ (U = |ω| R, the journal surface
+/// speed; h the local film). The Poiseuille conductances become h³/(k_x μ), h³/(k_z μ); the
+/// Couette flux stays U h/2 (the linearised theory's mean Couette flow: the turbulent
+/// Couette profile is antisymmetric about mid-film), the wall shear of the Couette flow
+/// becomes C_f μ U/h (friction torque). Every coefficient → 12 (C_f → 1) as Re_h → 0.
+enum class Turbulence { laminar = 0, ng_pan = 1 };
+/// "laminar" | "ng_pan"; InputError naming `turbulence` otherwise.
+Turbulence parse_turbulence(const std::string& name);
+const char* turbulence_name(Turbulence t);
+/// The model's coefficients at a film Reynolds number Re_h >= 0: k_x, k_z (12 laminar), the
+/// Couette shear factor C_f (1 laminar), and Re dk/dRe for k_x and k_z (0 laminar).
+struct TurbulenceFactors {
+  double kx = 12.0, kz = 12.0, cf = 1.0;
+  double re_dkx = 0.0, re_dkz = 0.0;
+};
+TurbulenceFactors turbulence_factors(Turbulence model, double reynolds_number);
+
 /// Axial supply groove fixed in the bearing frame: nodes with φ in
 /// [center − width/2, center + width/2] (the nearest node for a zero width) are held at
 /// pressure_pa (gauge) over the whole interior length.
@@ -97,6 +119,11 @@ struct JournalBearingGeometry {
   /// "jfo". Forces integrate it with the same trapezoidal rule (along z: relative error
   /// 1/n_axial² on the parabola).
   bool short_bearing = false;
+  /// Turbulent lubrication (see Turbulence): laminar (default) or ng_pan, which needs the
+  /// oil density (kg/m³, in (0, 1e5]) for the film Reynolds number ρ|ω|R h/μ. On a mapped
+  /// pad grid (diameter s·D at speed ω/s) the surface speed |ω|R is the pad's own.
+  Turbulence turbulence = Turbulence::laminar;
+  double density_kg_m3 = 0.0;
   /// InputError naming the field and its allowed range.
   void validate() const;
 };
@@ -208,6 +235,10 @@ class ReynoldsSolver {
   /// Cxx, Cxy, Cyx, Cyy (perturbation method).
   BatchResult batch_coefficients(const RowMatrixXd& positions, const Eigen::VectorXd& omegas,
                                  int n_threads = 1);
+
+  /// Change the film's viscosity (Pa·s, finite > 0) without rebuilding the solver (the
+  /// effective-temperature model's iteration): every later solve uses it.
+  void set_viscosity(double viscosity_pa_s);
 
   /// Drop the last solution (linearize() then needs a new solve). Solves never depend on
   /// earlier calls: each starts its cavitation set from a prediction of its own inputs.

@@ -144,6 +144,11 @@ class SystemSolver {
   EquilibriumResult equilibrium(double omega, double chamber_pressure, const Eigen::VectorXd& a,
                                 const Eigen::VectorXd& r0, const EquilibriumOptions& opt);
 
+  /// Set film `film`'s viscosity (Pa·s, finite > 0) in place — the model's geometry and the
+  /// film's Reynolds solver — and forget the last solve (the thermal iteration,
+  /// thermal_system_equilibrium). InputError naming the film index or viscosity_pa_s.
+  void set_film_viscosity(int film, double viscosity_pa_s);
+
   int reynolds_solves() const { return solves_; }
   /// Active-set (or linear) iterations summed over those solves: sparse factorisations.
   long reynolds_iterations() const { return iterations_; }

@@ -11,7 +11,8 @@ from rotordyn.analysis.unbalance import unbalance_response
 from rotordyn.analysis.threshold import stability_boundary, threshold
 from rotordyn.analysis.periodic import periodic_orbit
 from rotordyn.analysis.modes import RotorMatrices, modes, rotor_campbell
+from rotordyn.analysis.thermal import system_thermal_equilibrium
 
 __all__ = ["level1", "static", "campbell", "modes", "rotor_campbell", "equilibrium", "linearize",
            "stability", "threshold", "stability_boundary", "unbalance_response", "statespace",
-           "transient", "periodic_orbit", "RotorMatrices"]
+           "transient", "periodic_orbit", "RotorMatrices", "system_thermal_equilibrium"]

@@ -9,7 +9,9 @@
   bearings, :mod:`.squeeze_film` squeeze-film dampers, :mod:`.table` speed-dependent
   coefficient tables (issue 12);
 * :mod:`.coefficients` the standalone coefficient table over speed of any film element,
-  :mod:`.ross_io` a bearing element as a ROSS ``BearingElement``.
+  :mod:`.ross_io` a bearing element as a ROSS ``BearingElement``;
+* :mod:`.thermal` the oil (:class:`Oil`, viscosity–temperature laws) and the
+  effective-temperature equilibrium of a plain film (:class:`ThermalEquilibriumResult`).
 
 Each can be placed in a :class:`rotordyn.System` (``bearings=...``, TOML ``[[bearing]] type =
 ...``, the names of :data:`BEARING_TYPES`) and also used standalone (forces, coefficient tables
@@ -25,6 +27,7 @@ from rotordyn.bearings.sleeve import FlexibleSleeve, SleeveResult, paper_rig_sle
 from rotordyn.bearings.squeeze_film import (SqueezeFilmDamper, end_plate_seal_conductance,
                                             long_damper_orbit_forces, short_damper_orbit_forces)
 from rotordyn.bearings.table import TableBearing
+from rotordyn.bearings.thermal import Oil, ThermalEquilibriumResult
 from rotordyn.bearings.tilting_pad import TiltingPadBearing
 
 BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBearing,
@@ -34,6 +37,6 @@ BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBea
 
 __all__ = ["ActiveJournalBearing", "BEARING_TYPES", "BearingEquilibrium", "CoefficientTable",
            "FilmResult", "FixedGeometryBearing", "FlexibleSleeve", "FluidFilmBearing", "Groove",
-           "JournalBearing", "PressureField", "SleeveResult", "SqueezeFilmDamper", "TableBearing",
-           "TiltingPadBearing", "end_plate_seal_conductance", "long_damper_orbit_forces",
+           "JournalBearing", "Oil", "PressureField", "SleeveResult", "SqueezeFilmDamper", "TableBearing",
+           "ThermalEquilibriumResult", "TiltingPadBearing", "end_plate_seal_conductance", "long_damper_orbit_forces",
            "paper_rig_sleeve", "short_damper_orbit_forces", "to_ross_bearing"]

@@ -35,6 +35,29 @@ from rotordyn._common import validate as v
 from rotordyn.errors import InputError
 
 CAVITATION_MODELS = ("none", "gumbel", "reynolds", "jfo")
+# Turbulent lubrication models (C++ core, docs/film-physics.md): "laminar" or "ng_pan"
+# (Ng & Pan 1965 / Elrod & Ng 1967 in the fits of Taylor & Dowson 1974).
+TURBULENCE_MODELS = ("laminar", "ng_pan")
+MAX_DENSITY_KG_M3 = 1e5
+
+
+def check_turbulence(where: str, turbulence, density_kg_m3) -> None:
+    """The turbulence model and the oil density it needs (kg/m³, None: not given)."""
+    v.choice(f"{where}.turbulence", turbulence, TURBULENCE_MODELS)
+    if density_kg_m3 is not None:
+        v.in_range(f"{where}.density_kg_m3", density_kg_m3, 0.0, MAX_DENSITY_KG_M3,
+                   lo_open=True)
+    elif turbulence != "laminar":
+        raise InputError(f"{where}.density_kg_m3: expected the oil density in (0, "
+                         f"{MAX_DENSITY_KG_M3:g}] kg/m^3 with turbulence = {turbulence!r} (the "
+                         f"film Reynolds number rho*U*h/mu needs it), got None")
+
+
+def set_turbulence(g, turbulence: str, density_kg_m3) -> None:
+    """Put the turbulence model on a core geometry (laminar leaves the default)."""
+    g.turbulence = turbulence
+    if density_kg_m3 is not None:
+        g.density_kg_m3 = float(density_kg_m3)
 
 TWO_PI = 2.0 * math.pi
 GAP_FACTOR = 4.0  # film thickness put on the (pressure-prescribed) gap nodes, × C_p
@@ -61,6 +84,7 @@ def check_film_fields(b, where: str, n_stations: int | None) -> None:
     v.integer(f"{where}.n_axial", b.n_axial, lo=2, hi=1024)
     v.finite(f"{where}.config_ax_m", b.config_ax_m)
     v.finite(f"{where}.config_ay_m", b.config_ay_m)
+    check_turbulence(where, getattr(b, "turbulence", "laminar"), getattr(b, "density_kg_m3", None))
     if n_stations is not None:  # placed in a system: unit-slip warnings, once, by its path
         plausibility.length(f"{where}.diameter_m", b.diameter_m)
         plausibility.clearance(f"{where}.clearance_m", b.clearance_m, b.diameter_m)
@@ -139,7 +163,8 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
              pivot_rad: float, preload: float, n_circ: int, n_axial: int, coords: list[int],
              extra_shapes=(), supply_pressure_pa: float = 0.0, spin: float = 1.0,
              base_extra=None, end_seal_conductance: float | None = None,
-             short_bearing: bool = False, pockets=()) -> PadFilm:
+             short_bearing: bool = False, pockets=(), turbulence: str = "laminar",
+             density_kg_m3: float | None = None) -> PadFilm:
     """Film coupling of one pad (or of a full 360° bush when ``arc_rad`` is 2π).
 
     ``extra_shapes``: callables φ (rad, pad nodes) → ∂h/∂r_k for coordinates beyond the
@@ -150,7 +175,9 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
     ``n_circ``: nodes per 360° (the pad gets round(n_circ·β/2π) intervals, at least 10).
     ``end_seal_conductance``: G_s, m²/(Pa·s), of seals at both ends (Robin condition in the
     Reynolds core); None: open ends (p = 0 at z = ±L/2). ``short_bearing``: the core's
-    short-bearing (Ocvirk) approximation (360° films only).
+    short-bearing (Ocvirk) approximation (360° films only). ``turbulence``,
+    ``density_kg_m3``: the turbulent lubrication model (``TURBULENCE_MODELS``) and the oil
+    density of its film Reynolds number (the mapped grid keeps the pad's surface speed ωR).
     """
     Cb = clearance_m
     Cp = Cb / (1.0 - preload)
@@ -185,6 +212,7 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
     if end_seal_conductance is not None:
         g.end_seal_conductance = float(end_seal_conductance)
     g.short_bearing = bool(short_bearing)
+    set_turbulence(g, turbulence, density_kg_m3)
     g.pockets = [_core.Pocket(math.degrees(a / s), math.degrees(arc / s), z0, z1, d)
                  for a, arc, z0, z1, d in pockets]  # core angle = (φ − start) / s
     f = _core.FilmCoupling()

@@ -32,6 +32,8 @@ class ActiveJournalBearing:
     n_circ: int = 72
     n_axial: int = 16
     grooves: tuple[Groove, ...] = ()
+    turbulence: str = "laminar"
+    density_kg_m3: float | None = None
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""

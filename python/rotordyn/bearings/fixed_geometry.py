@@ -70,6 +70,8 @@ class FixedGeometryBearing:
     cavitation: str = "reynolds"
     n_circ: int = 72
     n_axial: int = 16
+    turbulence: str = "laminar"
+    density_kg_m3: float | None = None
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
@@ -139,7 +141,8 @@ class FixedGeometryBearing:
                 viscosity_pa_s=self.viscosity_pa_s, cavitation=self.cavitation, start_rad=start,
                 arc_rad=arc, pivot_rad=start + alpha * arc, preload=m, n_circ=self.n_circ,
                 n_axial=self.n_axial, coords=[jx, jy], supply_pressure_pa=self.supply_pressure_pa,
-                spin=spin, pockets=pockets))
+                spin=spin, pockets=pockets, turbulence=self.turbulence,
+                density_kg_m3=self.density_kg_m3))
         return out
 
     def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:

@@ -31,8 +31,10 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import plausibility
 from rotordyn._common import validate as v
-from rotordyn.bearings._film import CAVITATION_MODELS, SystemParts, check_film_fields
+from rotordyn.bearings._film import (CAVITATION_MODELS, SystemParts, check_film_fields,
+                                     check_turbulence, set_turbulence)
 from rotordyn.bearings.coefficients import coefficient_table
+from rotordyn.bearings.thermal import Oil, run_thermal_equilibrium, thermal_options
 from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
@@ -211,6 +213,10 @@ class JournalBearing:
     cavitation : "reynolds" (Swift–Stieber, default), "gumbel" (half-Sommerfeld), "jfo"
         (mass-conserving Elrod–Adams, steady) or "none" (full Sommerfeld).
     grooves : sequence of :class:`Groove`.
+    turbulence : "laminar" (default) or "ng_pan": turbulent lubrication (Ng–Pan–Elrod
+        coefficients, switched on by the local film Reynolds number ρ|ω|R h/μ;
+        docs/film-physics.md).
+    density_kg_m3 : oil density ρ, kg/m³ (needed by ``turbulence = "ng_pan"``).
     """
 
     def __init__(
@@ -224,6 +230,8 @@ class JournalBearing:
         n_axial: int = 16,
         cavitation: str = "reynolds",
         grooves: Iterable[Groove] = (),
+        turbulence: str = "laminar",
+        density_kg_m3: float | None = None,
     ) -> None:
         self.diameter_m = _positive(diameter_m, "diameter_m")
         self.length_m = _positive(length_m, "length_m")
@@ -258,6 +266,9 @@ class JournalBearing:
                 " the steady mass-conserving film content is undetermined)"
             )
         self.grooves = gs
+        check_turbulence("JournalBearing", turbulence, density_kg_m3)
+        self.turbulence = turbulence
+        self.density_kg_m3 = None if density_kg_m3 is None else float(density_kg_m3)
         self._local = threading.local()
 
     # -- plumbing ------------------------------------------------------------------------
@@ -271,6 +282,8 @@ class JournalBearing:
             n_axial=self.n_axial,
             cavitation=self.cavitation,
             grooves=self.grooves,
+            turbulence=self.turbulence,
+            density_kg_m3=self.density_kg_m3,
         )
 
     def __getstate__(self) -> dict:
@@ -297,6 +310,7 @@ class JournalBearing:
         g.clearance_m = self.clearance_m
         g.viscosity_pa_s = self.viscosity_pa_s
         g.grooves = [gr.to_core() for gr in self.grooves]
+        set_turbulence(g, self.turbulence, self.density_kg_m3)
         return g, _core.FilmGrid(self.n_circ, self.n_axial)
 
     def solver(self) -> _core.ReynoldsSolver:
@@ -442,6 +456,43 @@ class JournalBearing:
             iterations=int(e.iterations),
         )
 
+    def thermal_equilibrium(self, *, load_n: Sequence[float], speed_hz: float, oil: Oil,
+                            supply_temperature_c: float, supply_flow_m3_s: float = 0.0,
+                            carry_over: float = 0.0, effective_factor: float = 0.5,
+                            tol_k: float = 1e-6):
+        """Effective-temperature (thermal) equilibrium under ``load_n`` (N) at ``speed_hz``:
+        the film is isoviscous at μ(T_eff) of ``oil`` (:class:`rotordyn.bearings.Oil`), T_eff
+        from a global heat balance with the supply at ``supply_temperature_c`` (°C), the fresh
+        ``supply_flow_m3_s`` (0: the film's own demand), the hot-oil ``carry_over`` fraction
+        λ ∈ [0, 1] and ``effective_factor`` k ∈ [0.5, 1] (T_eff = T_in + k ΔT); iterated with
+        the Reynolds equilibrium in one C++ call to |ΔT_eff| <= ``tol_k``. K, C at the thermal
+        equilibrium with the temperature frozen. Returns a
+        :class:`rotordyn.bearings.ThermalEquilibriumResult` (docs/film-physics.md).
+        ``viscosity_pa_s`` of this bearing is not used (the oil's law replaces it)."""
+        load = self._load(load_n)
+        f = _speed(speed_hz)
+        if f == 0.0:
+            raise InputError("speed_hz: the thermal equilibrium needs 0 < |speed_hz| <= 1e5, got 0")
+        opts = thermal_options(supply_temperature_c=supply_temperature_c,
+                               supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                               effective_factor=effective_factor, tol_k=tol_k)
+        s = getattr(self._local, "thermal_solver", None)
+        if s is None:  # its own solver: the thermal iteration changes its viscosity
+            g, grid = self.to_core()
+            s = _core.ReynoldsSolver(g, grid, self.cavitation)
+            self._local.thermal_solver = s
+        return run_thermal_equilibrium(s, oil, opts, load, f, self.clearance_m)
+
+    @staticmethod
+    def _load(load_n) -> tuple[float, float]:
+        if isinstance(load_n, (str, bytes)) or not isinstance(load_n, (Sequence, np.ndarray)) \
+                or len(load_n) != 2:
+            raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}")
+        lx, ly = _finite(load_n[0], "load_n[0]"), _finite(load_n[1], "load_n[1]")
+        if not math.hypot(lx, ly) > 0.0:
+            raise InputError(f"load_n: expected a nonzero load, got {load_n!r}")
+        return lx, ly
+
     def coefficient_table(self, speeds_hz, load_n, *, n_threads: int = 1):
         """Static equilibrium under ``load_n`` (N, on the journal) and K, C at each speed in
         ``speeds_hz`` (Hz), in one C++ call parallel over speeds (``n_threads``, 0: all
@@ -556,7 +607,8 @@ def film_model(b) -> JournalBearing:
     return JournalBearing(diameter_m=b.diameter_m, length_m=b.length_m,
                           clearance_m=b.clearance_m, viscosity_pa_s=b.viscosity_pa_s,
                           n_circ=b.n_circ, n_axial=b.n_axial, cavitation=b.cavitation,
-                          grooves=b.grooves)
+                          grooves=b.grooves, turbulence=b.turbulence,
+                          density_kg_m3=b.density_kg_m3)
 
 
 
@@ -573,6 +625,8 @@ class FluidFilmBearing:
     n_circ: int = 72
     n_axial: int = 16
     grooves: tuple[Groove, ...] = ()
+    turbulence: str = "laminar"
+    density_kg_m3: float | None = None
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""

@@ -58,6 +58,8 @@ class TiltingPadBearing:
     cavitation: str = "reynolds"
     n_circ: int = 72
     n_axial: int = 16
+    turbulence: str = "laminar"
+    density_kg_m3: float | None = None
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
@@ -170,7 +172,7 @@ class TiltingPadBearing:
                 clearance_m=self.clearance_m, viscosity_pa_s=self.viscosity_pa_s,
                 cavitation=self.cavitation, start_rad=start, arc_rad=arc, pivot_rad=psi,
                 preload=self.preload, n_circ=self.n_circ, n_axial=self.n_axial, coords=coords,
-                extra_shapes=shapes)
+                extra_shapes=shapes, turbulence=self.turbulence, density_kg_m3=self.density_kg_m3)
             # journal columns in (q, η): −cos θ n_k (the tangential part is carried by η)
             S = np.asarray(pf.coupling.shape).copy()
             on = pf.on_pad

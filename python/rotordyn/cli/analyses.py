@@ -1,5 +1,5 @@
 """The single-point analyses on the command line: ``info``, ``validate``, ``modes``,
-``equilibrium``, ``stability``, ``campbell``, ``threshold``, ``unbalance``."""
+``equilibrium``, ``thermal``, ``stability``, ``campbell``, ``threshold``, ``unbalance``."""
 
 from __future__ import annotations
 
@@ -11,8 +11,9 @@ from rotordyn import analysis
 from rotordyn._common.info import __version__, build_info
 from rotordyn._common.status import CONVERGED
 from rotordyn.cli import sleeve
-from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point, check_figure,
-                                 json_text, save_figure, table_text)
+from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
+                                 add_thermal_arguments, check_figure, json_text, oil_from_args,
+                                 save_figure, table_text)
 from rotordyn.cli.common import speeds as parse_speeds
 from rotordyn.errors import InputError
 from rotordyn.model import builtin as models
@@ -64,6 +65,16 @@ def _register(sub) -> None:
                    help="equilibrium iteration")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_equilibrium)
+
+    s = sub.add_parser("thermal", help="effective-temperature equilibrium of the plain "
+                       "journal bearings (docs/film-physics.md)")
+    s.add_argument("model", help=MODEL_HELP)
+    add_operating_point(s)
+    add_thermal_arguments(s)
+    s.add_argument("--density-kg-m3", type=float, default=None, metavar="RHO",
+                   help="oil density, kg/m3 (default 870)")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    s.set_defaults(func=_cmd_thermal)
 
     s = sub.add_parser("static", help="static deflection, shear, bending moment and the "
                                       "reactions at the equilibrium")
@@ -207,6 +218,27 @@ def _cmd_equilibrium(args) -> int:
     else:
         print(table_text(e.to_frame()))
     return 0 if e.converged else 1
+
+
+def _cmd_thermal(args) -> int:
+    s = models.load(args.model)
+    if args.config_ay_m is not None:
+        raise InputError("--config-ay-m: not available with the thermal model (set the "
+                         "housing offsets in the model)")
+    oil = oil_from_args(args)
+    if oil is None:
+        raise InputError("--supply-temperature-c: required (the oil's supply temperature, degC)")
+    r = analysis.system_thermal_equilibrium(
+        s, speed_hz=args.speed_hz, oil=oil, supply_temperature_c=args.supply_temperature_c,
+        carry_over=args.carry_over, effective_factor=args.effective_factor,
+        supply_flow_m3_s=args.supply_flow_m3_s, chamber_pressure_pa=args.chamber_pressure_pa)
+    df = r.to_frame()
+    if args.json:
+        print(json_text({"status": r.status, "message": r.message, "iterations": r.iterations,
+                         "bearings": df.to_dict(orient="records")}))
+    else:
+        print(table_text(df))
+    return 0 if r.status in CONVERGED else 1
 
 
 MODE_TABLE_ROWS = 12  # modes a table shows without --n-modes / --max-freq-hz

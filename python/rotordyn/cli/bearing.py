@@ -4,6 +4,13 @@ Either a journal position (``--x-m --y-m``, optional ``--vx-m-s --vy-m-s``) or a
 (``--load-n FX FY``, then the static equilibrium is solved first). Prints the film force,
 friction torque, flows, minimum film and the K, C coefficients; ``--json`` for a machine-
 readable record. Exit 2 on bad input (the message names the field).
+
+Film physics (docs/film-physics.md): ``--turbulence ng_pan --density-kg-m3 RHO`` for the
+turbulent film; ``--supply-temperature-c T`` with ``--load-n`` and an oil law
+(``--oil-walther T1 NU1 T2 NU2`` or ``--oil-exponential MU_REF T_REF BETA``) for the
+effective-temperature equilibrium (then ``--viscosity-pa-s`` may be omitted): it prints the
+effective and maximum temperatures, the power loss and flows, and K, C at the thermal
+equilibrium (temperature frozen).
 """
 
 from __future__ import annotations
@@ -13,8 +20,10 @@ import math
 
 import numpy as np
 
+from rotordyn.bearings._film import TURBULENCE_MODELS
 from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
-from rotordyn.cli.common import json_text, table_text
+from rotordyn.bearings.thermal import Oil
+from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args, table_text
 from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
 from rotordyn.results.equilibrium import CONVERGED
@@ -42,8 +51,14 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="bearing length L, m")
     s.add_argument("--clearance-m", type=float, required=True, metavar="M",
                    help="radial clearance c, m (0.3 mm = 3e-4)")
-    s.add_argument("--viscosity-pa-s", type=float, required=True, metavar="PA_S",
-                   help="dynamic viscosity of the lubricant, Pa s")
+    s.add_argument("--viscosity-pa-s", type=float, default=None, metavar="PA_S",
+                   help="dynamic viscosity of the lubricant, Pa s (required unless the "
+                        "thermal model gives it: --supply-temperature-c)")
+    s.add_argument("--turbulence", choices=TURBULENCE_MODELS, default="laminar",
+                   help="turbulent film model (ng_pan: Ng-Pan-Elrod, needs --density-kg-m3)")
+    s.add_argument("--density-kg-m3", type=float, default=None, metavar="RHO",
+                   help="oil density, kg/m3 (turbulence; the thermal oil's density)")
+    add_thermal_arguments(s)
     s.add_argument("--n-circ", type=int, default=72, metavar="N",
                    help="film grid cells around the circumference")
     s.add_argument("--n-axial", type=int, default=16, metavar="N",
@@ -87,13 +102,19 @@ def run(args: argparse.Namespace) -> int:
     if args.diameter_m > 0 and args.clearance_m > 0:
         plausibility.length("--diameter-m", args.diameter_m)
         plausibility.clearance("--clearance-m", args.clearance_m, args.diameter_m)
+    oil = oil_from_args(args)
+    if args.viscosity_pa_s is None:
+        if oil is None:
+            raise InputError("--viscosity-pa-s: required (or the thermal model: "
+                             "--supply-temperature-c with an --oil-* law)")
+        args.viscosity_pa_s = oil.viscosity_pa_s(args.supply_temperature_c)
     if args.viscosity_pa_s > 0:
         plausibility.viscosity("--viscosity-pa-s", args.viscosity_pa_s)
-    b = JournalBearing(
+    film = dict(
         diameter_m=args.diameter_m, length_m=args.length_m, clearance_m=args.clearance_m,
-        viscosity_pa_s=args.viscosity_pa_s, n_circ=args.n_circ, n_axial=args.n_axial,
-        cavitation=args.cavitation, grooves=grooves,
-    )
+        n_circ=args.n_circ, n_axial=args.n_axial, cavitation=args.cavitation, grooves=grooves,
+        turbulence=args.turbulence, density_kg_m3=args.density_kg_m3)
+    b = JournalBearing(viscosity_pa_s=args.viscosity_pa_s, **film)
     rec: dict = {"bearing": {k: v for k, v in b.__getstate__().items() if k != "grooves"}}
     rec["bearing"]["grooves"] = [[g.center_deg, g.width_deg, g.pressure_pa] for g in grooves]
     if args.speeds_hz is not None:
@@ -101,6 +122,8 @@ def run(args: argparse.Namespace) -> int:
     if args.speed_hz is None:
         raise InputError("--speed-hz: required (or --speeds-hz START:STOP:STEP for a table)")
     rec["speed_hz"] = args.speed_hz
+    if oil is not None:
+        return _thermal(b, oil, film, rec, args)
     if args.load_n is not None:
         if args.x_m is not None or args.y_m is not None:
             raise InputError("--load-n: give either --load-n or --x-m/--y-m, not both")
@@ -140,6 +163,40 @@ def run(args: argparse.Namespace) -> int:
         print(f"h_min = {r.h_min_m:.6g} m at {r.h_min_angle_deg:.2f} deg")
         print("K [N/m] =", np.array2string(K, precision=5))
         print("C [N s/m] =", np.array2string(C, precision=5))
+    return 0
+
+
+def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
+             args: argparse.Namespace) -> int:
+    """Effective-temperature equilibrium: temperatures, power, flows, K, C (frozen T)."""
+    if args.load_n is None or args.x_m is not None or args.y_m is not None:
+        raise InputError("--load-n: the thermal model solves the equilibrium under a load "
+                         "(give --load-n, not --x-m/--y-m)")
+    r = b.thermal_equilibrium(load_n=tuple(args.load_n), speed_hz=args.speed_hz, oil=oil,
+                              supply_temperature_c=args.supply_temperature_c,
+                              supply_flow_m3_s=args.supply_flow_m3_s,
+                              carry_over=args.carry_over, effective_factor=args.effective_factor)
+    hot = JournalBearing(viscosity_pa_s=r.viscosity_pa_s, **film)
+    f = hot.solve(x_m=r.x_m, y_m=r.y_m, speed_hz=args.speed_hz)
+    row = r.to_frame().iloc[0].to_dict()
+    rec["thermal"] = {k: (float(v) if isinstance(v, (int, float, np.floating)) else v)
+                      for k, v in row.items()}
+    rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, force_n=np.asarray(f.force_n).tolist(),
+               friction_torque_nm=f.friction_torque_nm, h_min_m=f.h_min_m,
+               h_min_angle_deg=f.h_min_angle_deg, k_n_per_m=r.K.tolist(),
+               c_n_s_per_m=r.C.tolist(), coefficient_method="perturbation")
+    if args.json:
+        print(json_text(rec))
+        return 0
+    print(f"thermal equilibrium: T_eff = {r.effective_temperature_c:.2f} degC, T_max = "
+          f"{r.max_temperature_c:.2f} degC, T_in = {r.inlet_temperature_c:.2f} degC "
+          f"(supply {args.supply_temperature_c:g} degC), mu = {r.viscosity_pa_s:.4g} Pa s")
+    print(f"power loss {r.power_loss_w:.5g} W; film flow {r.film_flow_m3_s:.5g} m3/s, side flow "
+          f"{r.side_flow_m3_s:.5g} m3/s, fresh supply {r.supply_flow_m3_s:.5g} m3/s")
+    print(f"equilibrium: x = {r.x_m:.6g} m, y = {r.y_m:.6g} m, eps = {r.eccentricity_ratio:.4g}; "
+          f"h_min = {f.h_min_m:.6g} m at {f.h_min_angle_deg:.2f} deg")
+    print("K [N/m] =", np.array2string(r.K, precision=5))
+    print("C [N s/m] =", np.array2string(r.C, precision=5))
     return 0
 
 

@@ -199,3 +199,48 @@ def table_text(df) -> str:
             out[c] = vals * 1e6
             out = out.rename(columns={c: c[:-2] + "_um"})
     return out.to_string(index=False, float_format=lambda x: f"{x:.6g}")
+
+
+def add_thermal_arguments(s) -> None:
+    """The effective-temperature model's options (docs/film-physics.md)."""
+    s.add_argument("--supply-temperature-c", type=float, default=None, metavar="T",
+                   help="effective-temperature thermal equilibrium with the oil supplied at T "
+                        "degC (with --load-n and an --oil-* law)")
+    s.add_argument("--oil-walther", type=float, nargs=4, default=None,
+                   metavar=("T1_C", "NU1_MM2_S", "T2_C", "NU2_MM2_S"),
+                   help="Walther (ASTM D341) viscosity law through two points")
+    s.add_argument("--oil-exponential", type=float, nargs=3, default=None,
+                   metavar=("MU_REF_PA_S", "T_REF_C", "BETA_1_PER_K"),
+                   help="exponential viscosity law mu_ref exp(-beta (T - T_ref))")
+    s.add_argument("--specific-heat-j-per-kg-k", type=float, default=2000.0, metavar="CP",
+                   help="oil specific heat, J/(kg K) (thermal model)")
+    s.add_argument("--supply-flow-m3-s", type=float, default=0.0, metavar="Q",
+                   help="fresh oil supply flow, m3/s (0: the film's own demand)")
+    s.add_argument("--carry-over", type=float, default=0.0, metavar="LAMBDA",
+                   help="hot-oil carry-over fraction of the recirculating flow, [0, 1]")
+    s.add_argument("--effective-factor", type=float, default=0.5, metavar="K",
+                   help="T_eff = T_in + K dT, K in [0.5, 1] (0.5: the average film temperature)")
+
+
+def oil_from_args(args) -> "Oil | None":
+    """The thermal model's oil from the options of :func:`add_thermal_arguments`, or None
+    (isothermal) when no supply temperature is given."""
+    from rotordyn.bearings.thermal import Oil
+
+    if args.supply_temperature_c is None:
+        if args.oil_walther is not None or args.oil_exponential is not None:
+            raise InputError("--supply-temperature-c: an --oil-* law needs the supply "
+                             "temperature (the thermal model)")
+        return None
+    if (args.oil_walther is None) == (args.oil_exponential is None):
+        raise InputError("--oil-walther/--oil-exponential: the thermal model needs exactly one "
+                         "viscosity law")
+    rho = 870.0 if args.density_kg_m3 is None else args.density_kg_m3
+    common = dict(density_kg_m3=rho, specific_heat_j_per_kg_k=args.specific_heat_j_per_kg_k)
+    if args.oil_walther is not None:
+        t1, n1, t2, n2 = args.oil_walther
+        return Oil(viscosity_law="walther", t1_c=t1, nu1_mm2_s=n1, t2_c=t2, nu2_mm2_s=n2,
+                   **common)
+    mu, tr, beta = args.oil_exponential
+    return Oil(viscosity_law="exponential", mu_ref_pa_s=mu, t_ref_c=tr, beta_1_per_k=beta,
+               **common)

@@ -10,10 +10,11 @@ from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 from rotordyn.results.statespace import StateSpaceResult
 from rotordyn.results.static import StaticResult
 from rotordyn.results.store import load_result, save_result
+from rotordyn.results.thermal import SystemThermalResult
 from rotordyn.results.transient import TransientResult
 from rotordyn.results.unbalance import UnbalanceResult
 
 __all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel",
            "StabilityResult", "ThresholdResult", "BoundaryResult", "UnbalanceResult",
            "StateSpaceResult", "TransientResult", "StaticResult", "PeriodicOrbitResult",
-           "load_result", "save_result"]
+           "SystemThermalResult", "load_result", "save_result"]

@@ -1,0 +1,104 @@
+"""Benchmark: film physics of issue 20 — the effective-temperature (thermal) equilibrium + K, C
+of the 72×16 plain bearing beside the isothermal equilibrium + K, C (goal <= 5x its cost), and
+the turbulent (Ng–Pan–Elrod) force beside the laminar one.
+
+Run ``python benchmarks/bench_thermal.py [--repeat 7]``. Protocol (benchmarks/_common.py): one
+BLAS/OpenMP thread, the two sides of each ratio timed in interleaved repeats, medians, wall
+and CPU time side by side, the machine load before and after.
+
+Bearing: D = 0.1 m, L = 0.05 m, c = 0.1 mm, Swift–Stieber film, 72×16 grid, 100 Hz, load
+5 kN downwards; oil ISO VG 32 (Walther through 32 mm²/s at 40 °C and 5.4 mm²/s at 100 °C,
+ρ = 870 kg/m³, c_p = 2000 J/(kg K)), supply at 45 °C. The isothermal side solves the same
+bearing at μ(45 °C) from a cold start, like the thermal side (each call builds nothing: both
+reuse their solver).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from _common import footer, header, interleaved  # noqa: E402
+
+import rotordyn  # noqa: E402
+from rotordyn.bearings import Oil  # noqa: E402
+
+LOAD, SPEED = (0.0, -5000.0), 100.0
+OIL = Oil(viscosity_law="walther", t1_c=40.0, nu1_mm2_s=32.0, t2_c=100.0, nu2_mm2_s=5.4,
+          density_kg_m3=870.0, specific_heat_j_per_kg_k=2000.0)
+TS = 45.0
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--repeat", type=int, default=7)
+    args = ap.parse_args(argv)
+    header("thermal and turbulent film (issue 20)")
+    geo = dict(diameter_m=0.1, length_m=0.05, clearance_m=1e-4, n_circ=72, n_axial=16)
+    mu_s = OIL.viscosity_pa_s(TS)
+    iso = rotordyn.JournalBearing(viscosity_pa_s=mu_s, **geo)
+    th = rotordyn.JournalBearing(viscosity_pa_s=mu_s, **geo)
+
+    def isothermal():
+        e = iso.static_equilibrium(load_n=LOAD, speed_hz=SPEED)
+        return iso.coefficients(x_m=e.x_m, y_m=e.y_m, speed_hz=SPEED)
+
+    def thermal():
+        return th.thermal_equilibrium(load_n=LOAD, speed_hz=SPEED, oil=OIL,
+                                      supply_temperature_c=TS)
+
+    r = thermal()
+    e = iso.static_equilibrium(load_n=LOAD, speed_hz=SPEED)
+    print(f"thermal: T_eff = {r.effective_temperature_c:.2f} degC (supply {TS} degC), "
+          f"T_max = {r.max_temperature_c:.2f} degC, mu = {r.viscosity_pa_s:.4g} Pa s "
+          f"(isothermal {mu_s:.4g}), P = {r.power_loss_w:.4g} W, eps = "
+          f"{r.eccentricity_ratio:.4f} (isothermal {e.eccentricity_ratio:.4f}), "
+          f"{r.iterations} outer iterations")
+    t = interleaved({"isothermal": isothermal, "thermal": thermal}, repeat=args.repeat)
+    print(f"equilibrium + K, C, 72x16: isothermal {t['isothermal']}")
+    print(f"                           thermal    {t['thermal']}")
+    print(f"  ratio thermal/isothermal: {t['thermal'].wall / t['isothermal'].wall:.2f}x wall, "
+          f"{t['thermal'].cpu / t['isothermal'].cpu:.2f}x CPU (goal <= 5x; CPU is the figure "
+          f"when the wall time shows a busy machine)")
+
+    # the compressor of tests/data/models (two plain bearings, 72x16) in a system: the
+    # thermal system equilibrium (one C++ call; a new SystemSolver per outer step) beside the
+    # isothermal system equilibrium at mu(supply) from a cold start
+    from pathlib import Path
+    sysm = rotordyn.System.from_toml(Path(__file__).parent.parent / "tests" / "data" / "models"
+                                     / "compressor_plain.toml")
+    res = rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
+                                              supply_temperature_c=TS)
+    print(f"compressor (150 Hz): T_eff = {', '.join(f'{t:.2f}' for t in res.effective_temperature_c)}"
+          f" degC, {res.iterations} outer iterations")
+    t3 = interleaved({
+        "isothermal": lambda: rotordyn.equilibrium(sysm, speed_hz=150.0, warm_start=False),
+        "thermal": lambda: rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
+                                                               supply_temperature_c=TS)},
+        repeat=max(3, args.repeat // 2))
+    print(f"system equilibrium, compressor: isothermal {t3['isothermal']}")
+    print(f"                                thermal    {t3['thermal']}")
+    print(f"  ratio thermal/isothermal: {t3['thermal'].wall / t3['isothermal'].wall:.2f}x wall, "
+          f"{t3['thermal'].cpu / t3['isothermal'].cpu:.2f}x CPU")
+
+    # turbulence on vs off, per force (same position, Re_h at the clearance ~ 2.9e3)
+    lam = rotordyn.JournalBearing(viscosity_pa_s=0.003, **geo)
+    tur = rotordyn.JournalBearing(viscosity_pa_s=0.003, turbulence="ng_pan", density_kg_m3=870.0,
+                                  **geo)
+    st = dict(x_m=2e-5, y_m=-5e-5, speed_hz=300.0)
+    t2 = interleaved({"laminar": lambda: lam.forces(**st), "ng_pan": lambda: tur.forces(**st)},
+                     repeat=args.repeat, number=20)
+    print(f"force, 72x16 (eps 0.54, 300 Hz): laminar {t2['laminar']}")
+    print(f"                                 ng_pan  {t2['ng_pan']}")
+    print(f"  ratio turbulent/laminar: {t2['ng_pan'].wall / t2['laminar'].wall:.2f}x wall, "
+          f"{t2['ng_pan'].cpu / t2['laminar'].cpu:.2f}x CPU; "
+          f"|F| turbulent/laminar = "
+          f"{abs(complex(*tur.forces(**st))) / abs(complex(*lam.forces(**st))):.3f}")
+    footer()
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,117 @@
+// Effective-temperature thermal model of a plain journal film (issue 20; docs/film-physics.md):
+// a global (adiabatic) heat balance iterated with the Reynolds equilibrium, one unit of work.
+//
+// Viscosity–temperature laws (OilModel):
+//   walther     ASTM D341 (Walther): log10 log10(ν + 0.7) = A − B log10(T + 273.15), ν in
+//               mm²/s, A and B from two points (t1_c, nu1), (t2_c, nu2) (e.g. an ISO VG grade's
+//               40 °C and 100 °C viscosities); μ = ρ ν.
+//   exponential μ = mu_ref exp(−beta (T − t_ref_c)).
+// Heat balance (the Raimondi–Boyd/Shigley assumptions, with hot-oil carry-over): the film draws
+// Q (with supply grooves: the flow they deliver into the film; without: the flow into the film
+// just downstream of its line of maximum thickness, max_film_flow) and leaks Q_s at its ends; the leakage leaves at the mean rise ΔT/2, the rest Q − Q_s at ΔT, all the friction
+// power P = torque·|ω| goes into the oil:  P = ρ c_p ΔT (Q − Q_s/2).
+// At the supply, the fraction λ (carry_over) of the recirculating hot flow Q_r = Q − Q_s mixes
+// with the supply flow Q_f at T_s (supply_flow_m3_s; 0: the film's own demand Q − λ Q_r):
+//   T_in = T_s + λ Q_r ΔT / Q_f,  T_max = T_in + ΔT,  T_eff = T_in + k ΔT (k = effective_factor,
+// 0.5: Shigley's average film temperature). The film is isoviscous at μ(T_eff).
+#pragma once
+#include "rotordyn/reynolds.hpp"
+#include "rotordyn/system.hpp"
+
+namespace rotordyn {
+
+enum class ViscosityLaw { walther = 0, exponential = 1 };
+ViscosityLaw parse_viscosity_law(const std::string& name);  // "walther" | "exponential"
+const char* viscosity_law_name(ViscosityLaw law);
+
+struct OilModel {
+  ViscosityLaw law = ViscosityLaw::walther;
+  double t1_c = 40.0, nu1_mm2_s = 32.0;    ///< walther: first point (ISO VG 32 at 40 °C)
+  double t2_c = 100.0, nu2_mm2_s = 5.4;    ///< walther: second point (t2_c > t1_c)
+  double mu_ref_pa_s = 0.03, t_ref_c = 40.0, beta_1_per_k = 0.03;  ///< exponential
+  double density_kg_m3 = 870.0;
+  double specific_heat_j_per_kg_k = 2000.0;
+  double t_min_c = -20.0, t_max_c = 200.0;  ///< range of the law (supply and film temperatures)
+  /// InputError naming the field: positive properties, a law that falls with temperature,
+  /// a valid range.
+  void validate() const;
+  double viscosity_pa_s(double t_c) const;  ///< μ(T), Pa·s
+};
+
+struct ThermalOptions {
+  double supply_temperature_c = 40.0;
+  double supply_flow_m3_s = 0.0;   ///< 0: the film's own demand
+  double carry_over = 0.0;         ///< λ in [0, 1]
+  double effective_factor = 0.5;   ///< k in [0.5, 1]
+  double tol_k = 1e-6;             ///< on the effective temperature, K
+  int max_iter = 60;
+  void validate(const OilModel& oil) const;
+};
+
+struct ThermalEquilibrium {
+  EquilibriumSolution equilibrium;   ///< at μ(T_eff)
+  DynamicCoefficients coefficients;  ///< K, C at it, temperature frozen
+  double effective_temperature_c = 0.0, max_temperature_c = 0.0, inlet_temperature_c = 0.0;
+  double temperature_rise_k = 0.0;   ///< ΔT
+  double viscosity_pa_s = 0.0;       ///< μ(T_eff)
+  double power_loss_w = 0.0;
+  double film_flow_m3_s = 0.0;       ///< Q (groove inflow, or downstream of the maximum film)
+  double side_flow_m3_s = 0.0;       ///< Q_s
+  double supply_flow_m3_s = 0.0;     ///< Q_f (fresh oil)
+  int iterations = 0;                ///< outer (equilibrium) iterations
+  int equilibrium_iterations = 0;    ///< Newton iterations summed
+};
+
+/// Thermal equilibrium of a rigid journal under the load (N, on the journal) at ω (rad/s):
+/// the film's viscosity is set to μ(T_eff) and the equilibrium, the heat balance and T_eff are
+/// iterated to |ΔT_eff| <= tol_k (each step solves the heat balance exactly for the
+/// temperature at the current journal position, where P ∝ μ and the flows do not depend on μ
+/// for a laminar film). K, C are the perturbation coefficients at the thermal equilibrium with
+/// the temperature (viscosity) frozen. The solver's viscosity is left at μ(T_eff).
+/// ConvergenceError when the iteration does not settle or T leaves the law's range.
+ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
+                                       const ThermalOptions& opt, double load_x_n,
+                                       double load_y_n, double omega);
+
+/// Flow into the film just downstream of its line of maximum thickness (mid-plane row), m³/s
+/// (> 0 for either sense of rotation): the film's conservative flux through the face after
+/// the maximum-film node, Σ_k [(|ω|R/2) h_f θ − h_f³/(k_x μ R Δφ) Δp] Δz (trapezoidal along
+/// z; without the pressure term for the short-bearing model, which neglects the
+/// circumferential pressure flow). With the supply line at the maximum film this is Raimondi &
+/// Boyd's Q.
+double max_film_flow(const ReynoldsSolver& solver, const FilmSolution& sol, double omega);
+
+/// A film of a system (SystemModel::films[film]) under the effective-temperature model.
+struct ThermalFilm {
+  int film = 0;
+  OilModel oil;
+  ThermalOptions options;
+};
+
+/// The thermal state of one film at the system's thermal equilibrium (as ThermalEquilibrium).
+struct ThermalFilmState {
+  double effective_temperature_c = 0.0, max_temperature_c = 0.0, inlet_temperature_c = 0.0;
+  double temperature_rise_k = 0.0, viscosity_pa_s = 0.0, power_loss_w = 0.0;
+  double film_flow_m3_s = 0.0, side_flow_m3_s = 0.0, supply_flow_m3_s = 0.0;
+};
+
+struct ThermalSystemResult {
+  EquilibriumResult equilibrium;        ///< of the model at the films' μ(T_eff)
+  std::vector<ThermalFilmState> films;  ///< one per ThermalFilm, same order
+  std::vector<double> viscosities;      ///< per model film, Pa·s (the thermal ones changed)
+  int iterations = 0;                   ///< outer iterations (one system equilibrium each)
+};
+
+/// Thermal equilibrium of a system: the system equilibrium (SystemSolver::equilibrium, eq. 14)
+/// iterated with each thermal film's heat balance (each film's viscosity set to μ(T_eff); the
+/// heat balance of a film solved exactly for its temperature at the current position, as in
+/// thermal_equilibrium) until every |ΔT_eff| <= its tol_k. A system equilibrium that does not
+/// converge ends the iteration with its status (never a thermal answer from it). The
+/// dynamics at the thermal equilibrium are the model's with `viscosities` (temperature frozen).
+ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
+                                               const std::vector<ThermalFilm>& thermal,
+                                               double omega, double chamber_pressure,
+                                               const Eigen::VectorXd& a,
+                                               const EquilibriumOptions& options);
+
+}  // namespace rotordyn

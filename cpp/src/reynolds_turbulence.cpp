@@ -1,0 +1,55 @@
+// Turbulent lubrication coefficients (Ng & Pan 1965; Elrod & Ng 1967; curve fits of Taylor &
+// Dowson 1974, J. Lubr. Technol. 96(1) 36-46) and the film's turbulent conductances.
+#include <cmath>
+
+#include "reynolds_impl.hpp"
+#include "rotordyn/errors.hpp"
+
+namespace rotordyn {
+
+Turbulence parse_turbulence(const std::string& name) {
+  if (name == "laminar") return Turbulence::laminar;
+  if (name == "ng_pan") return Turbulence::ng_pan;
+  throw InputError("turbulence: expected one of 'laminar', 'ng_pan', got '" + name + "'");
+}
+
+const char* turbulence_name(Turbulence t) {
+  switch (t) {
+    case Turbulence::laminar:
+      return "laminar";
+    case Turbulence::ng_pan:
+      return "ng_pan";
+  }
+  return "?";
+}
+
+TurbulenceFactors turbulence_factors(Turbulence model, double re) {
+  TurbulenceFactors f;
+  if (model == Turbulence::laminar || !(re > 0.0)) return f;  // Re = 0: exactly laminar
+  // k = 12 + a Re^b; Re dk/dRe = a b Re^b (the h-derivative of the conductance h³/k)
+  const double ax = 0.0136 * std::pow(re, 0.90), az = 0.0043 * std::pow(re, 0.96);
+  f.kx = 12.0 + ax;
+  f.kz = 12.0 + az;
+  f.cf = 1.0 + 0.0012 * std::pow(re, 0.94);
+  f.re_dkx = 0.90 * ax;
+  f.re_dkz = 0.96 * az;
+  return f;
+}
+
+// Conductance multipliers of a face with (effective) film h: m = 12/k (h³/(12μ) → h³/(kμ))
+// and dm = d(h³ m)/dh / (3 h² ) = m (1 − Re dk/dRe / (3k)), the factor of the conductance's
+// h-derivative (laminar: m = dm = 1).
+void ReynoldsSolver::Impl::turb_face(double hf, bool axial, double& m, double& dm) const {
+  // only the coefficient this face needs (one pow), the same values as turbulence_factors
+  const double re = re_per_h * hf;
+  double k = 12.0, rk = 0.0;
+  if (geo.turbulence == Turbulence::ng_pan && re > 0.0) {
+    const double a = axial ? 0.0043 * std::pow(re, 0.96) : 0.0136 * std::pow(re, 0.90);
+    k = 12.0 + a;
+    rk = (axial ? 0.96 : 0.90) * a;
+  }
+  m = 12.0 / k;
+  dm = m * (1.0 - rk / (3.0 * k));
+}
+
+}  // namespace rotordyn

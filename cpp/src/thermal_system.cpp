@@ -1,0 +1,182 @@
+// Thermal equilibrium of a system (thermal.hpp): the system equilibrium iterated with the
+// heat balance of each thermal film.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "rotordyn/errors.hpp"
+#include "rotordyn/thermal.hpp"
+
+namespace rotordyn {
+
+namespace {
+// The film's temperature at a fixed position (P ∝ μ, flows independent of μ): the root of
+// T − Ts − m a μ(T), a = P/(μ ρ c (Q − Q_s/2)), m = λ Q_r/Q_f + k (bracketed secant/bisection).
+ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, double mu,
+                              double P, double Q, double Qs, const std::string& name) {
+  const double rc = oil.density_kg_m3 * oil.specific_heat_j_per_kg_k;
+  const double denom = Q - 0.5 * Qs;
+  if (!(P > 0.0 && Q > 0.0 && Qs >= 0.0 && denom > 0.0)) {
+    std::ostringstream os;
+    os << "thermal equilibrium, film '" << name << "': power loss " << P << " W, flow " << Q
+       << " m^3/s and side flow " << Qs << " m^3/s give no heat balance";
+    throw ConvergenceError(os.str());
+  }
+  const double Ts = opt.supply_temperature_c;
+  const double Qr = std::max(Q - Qs, 0.0);
+  const double Qf = opt.supply_flow_m3_s > 0.0 ? opt.supply_flow_m3_s : Q - opt.carry_over * Qr;
+  const double m = opt.carry_over * Qr / Qf + opt.effective_factor;
+  const double a = P / (mu * rc * denom);
+  auto g = [&](double t) { return t - Ts - m * a * oil.viscosity_pa_s(t); };
+  double lo = Ts, hi = std::min(Ts + m * a * oil.viscosity_pa_s(Ts), oil.t_max_c);
+  double glo = g(lo), ghi = g(hi);
+  if (ghi < 0.0)
+    throw ConvergenceError("thermal equilibrium, film '" + name + "': the film temperature "
+                           "exceeds the viscosity law's range (t_max_c)");
+  for (int k = 0; k < 200 && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++k) {
+    double t = hi - ghi * (hi - lo) / (ghi - glo);
+    if (!(t > lo && t < hi) || k % 3 == 2) t = 0.5 * (lo + hi);
+    const double gt = g(t);
+    if (gt == 0.0) {
+      lo = hi = t;
+      break;
+    }
+    if (gt < 0.0) {
+      lo = t;
+      glo = gt;
+    } else {
+      hi = t;
+      ghi = gt;
+    }
+  }
+  ThermalFilmState st;
+  st.effective_temperature_c = 0.5 * (lo + hi);  // the new temperature
+  st.temperature_rise_k = P / (rc * denom);       // ΔT at μ
+  st.inlet_temperature_c = Ts + opt.carry_over * Qr * st.temperature_rise_k / Qf;
+  st.max_temperature_c = st.inlet_temperature_c + st.temperature_rise_k;
+  st.viscosity_pa_s = mu;
+  st.power_loss_w = P;
+  st.film_flow_m3_s = Q;
+  st.side_flow_m3_s = Qs;
+  st.supply_flow_m3_s = Qf;
+  return st;
+}
+}  // namespace
+
+ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
+                                               const std::vector<ThermalFilm>& thermal,
+                                               double omega, double chamber_pressure,
+                                               const Eigen::VectorXd& a,
+                                               const EquilibriumOptions& options) {
+  model.validate();
+  if (!(std::isfinite(omega) && omega != 0.0))
+    throw InputError("speed_hz: the thermal equilibrium needs a nonzero speed");
+  const int nf = static_cast<int>(model.films.size());
+  int max_iter = 1;
+  for (std::size_t i = 0; i < thermal.size(); ++i) {
+    const ThermalFilm& t = thermal[i];
+    if (t.film < 0 || t.film >= nf)
+      throw InputError("thermal[" + std::to_string(i) + "].film: expected a film index in [0, " +
+                       std::to_string(nf - 1) + "], got " + std::to_string(t.film));
+    for (std::size_t j = 0; j < i; ++j)
+      if (thermal[j].film == t.film)
+        throw InputError("thermal[" + std::to_string(i) + "].film: film " +
+                         std::to_string(t.film) + " is given twice");
+    t.oil.validate();
+    t.options.validate(t.oil);
+    max_iter = std::max(max_iter, t.options.max_iter);
+  }
+  SystemModel m = model;
+  for (std::size_t i = 0; i < thermal.size(); ++i)  // start at the supply temperatures
+    m.films[thermal[i].film].geometry.viscosity_pa_s =
+        thermal[i].oil.viscosity_pa_s(thermal[i].options.supply_temperature_c);
+  SystemSolver solver(m);  // one solver; the films' viscosities change in place
+  // each thermal film's own full-output solver (the system's films solve pressures only)
+  std::vector<std::unique_ptr<ReynoldsSolver>> fsol;
+  for (const ThermalFilm& t : thermal)
+    fsol.push_back(std::make_unique<ReynoldsSolver>(m.films[t.film].geometry,
+                                                    m.films[t.film].grid,
+                                                    m.films[t.film].cavitation));
+  std::vector<double> T_prev(thermal.size()), f_prev(thermal.size(),
+                                                     std::numeric_limits<double>::quiet_NaN());
+  ThermalSystemResult out;
+  std::vector<double> T(thermal.size());
+  for (std::size_t i = 0; i < thermal.size(); ++i) T[i] = thermal[i].options.supply_temperature_c;
+  Eigen::VectorXd r0;  // empty: the solver's default start
+  out.films.resize(thermal.size());
+  for (int it = 1; it <= max_iter; ++it) {
+    for (std::size_t i = 0; i < thermal.size(); ++i) {
+      const double mu = thermal[i].oil.viscosity_pa_s(T[i]);
+      m.films[thermal[i].film].geometry.viscosity_pa_s = mu;
+      solver.set_film_viscosity(thermal[i].film, mu);
+      fsol[i]->set_viscosity(mu);
+    }
+    out.equilibrium = solver.equilibrium(omega, chamber_pressure, a, r0, options);
+    out.iterations = it;
+    out.viscosities.resize(nf);
+    for (int f = 0; f < nf; ++f) out.viscosities[f] = m.films[f].geometry.viscosity_pa_s;
+    if (out.equilibrium.status != "ok" && out.equilibrium.status != "contact") return out;
+    const Eigen::VectorXd& r = out.equilibrium.r;
+    r0 = r;
+    bool done = true;
+    for (std::size_t i = 0; i < thermal.size(); ++i) {
+      const FilmCoupling& fc = m.films[thermal[i].film];
+      const int K1 = fc.grid.n_axial + 1;
+      Eigen::VectorXd rc(fc.coords.size());
+      for (std::size_t k = 0; k < fc.coords.size(); ++k) rc[k] = r[fc.coords[k]];
+      const Eigen::VectorXd sphi = fc.shape * rc;
+      RowMatrixXd h;
+      if (fc.base_h.size() == 0)
+        h = (sphi.array() + fc.geometry.clearance_m).matrix().replicate(1, K1);
+      else if (fc.base_h.cols() == 1)
+        h = (fc.base_h.col(0) + sphi).replicate(1, K1);
+      else
+        h = fc.base_h + sphi.replicate(1, K1);
+      ReynoldsSolver& rs = *fsol[i];
+      const double wf = omega * fc.spin_factor;
+      const FilmSolution& sol = rs.solve(h, RowMatrixXd::Zero(h.rows(), h.cols()), wf);
+      const double P = sol.friction_torque_nm * wf;
+      const double qg = sol.inlet_flow_m3_s;
+      const double Q = fc.geometry.grooves.empty() || !(qg > 0.0) ? max_film_flow(rs, sol, wf)
+                                                                   : qg;
+      const double mu = fc.geometry.viscosity_pa_s;
+      ThermalFilmState st = heat_balance(thermal[i].oil, thermal[i].options, mu, P, Q,
+                                         sol.side_flow_m3_s, fc.name);
+      const double Tn = st.effective_temperature_c;
+      st.effective_temperature_c = T[i];  // the state of this solve (μ = μ(T[i]))
+      out.films[i] = st;
+      if (std::abs(Tn - T[i]) > thermal[i].options.tol_k) done = false;
+      // next temperature: the map T -> Tn with a per-film secant step once two iterates
+      // exist (safeguarded as in thermal_equilibrium; the films couple only weakly, through
+      // the positions)
+      const double f = Tn - T[i];
+      double Tnext = Tn;
+      if (it > 1 && std::isfinite(f_prev[i]) && f != f_prev[i]) {
+        const double ts = T[i] - f * (T[i] - T_prev[i]) / (f - f_prev[i]);
+        if (std::isfinite(ts) && ts > thermal[i].options.supply_temperature_c &&
+            ts < thermal[i].oil.t_max_c && std::abs(ts - T[i]) <= 4.0 * std::abs(f))
+          Tnext = ts;
+      }
+      T_prev[i] = T[i];
+      f_prev[i] = f;
+      T[i] = Tnext;
+    }
+    if (done) {
+      for (std::size_t i = 0; i < thermal.size(); ++i)
+        if (!(out.films[i].max_temperature_c <= thermal[i].oil.t_max_c))
+          throw ConvergenceError("thermal equilibrium, film '" + m.films[thermal[i].film].name +
+                                 "': the maximum film temperature exceeds the viscosity law's "
+                                 "range (t_max_c)");
+      return out;
+    }
+  }
+  out.equilibrium.status = "not_converged";
+  out.equilibrium.message = "thermal equilibrium: the film temperatures did not settle in " +
+                            std::to_string(max_iter) + " iterations";
+  return out;
+}
+
+}  // namespace rotordyn

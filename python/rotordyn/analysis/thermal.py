@@ -1,0 +1,96 @@
+"""Effective-temperature thermal equilibrium of a system (issue 20; docs/film-physics.md): the
+system equilibrium (eq. 14) iterated with the heat balance of each plain journal bearing's
+film, in one C++ call (``_core.thermal_system_equilibrium``)."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn._common.threads import limited_blas
+from rotordyn.analysis.assembly import assembled
+from rotordyn.bearings import FluidFilmBearing, Oil
+from rotordyn.bearings.thermal import thermal_options
+from rotordyn.errors import InputError
+from rotordyn.results.thermal import SystemThermalResult
+from rotordyn.units import hz_to_rad_s
+
+
+@limited_blas
+def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil,
+                               supply_temperature_c: float, bearings=None,
+                               carry_over: float = 0.0, effective_factor: float = 0.5,
+                               supply_flow_m3_s: float = 0.0, chamber_pressure_pa: float = 0.0,
+                               tol_k: float = 1e-6) -> SystemThermalResult:
+    """Thermal equilibrium of ``system`` at ``speed_hz``: each plain journal bearing
+    (``type = "journal"``, :class:`rotordyn.FluidFilmBearing`) in ``bearings`` (indices into
+    ``system.bearings``; None: all of them) runs at μ(T_eff) of ``oil`` with its own heat
+    balance (supply at ``supply_temperature_c`` °C, ``carry_over`` λ, ``effective_factor`` k,
+    ``supply_flow_m3_s``; :meth:`rotordyn.JournalBearing.thermal_equilibrium` for the model),
+    iterated with the system equilibrium to |ΔT_eff| <= ``tol_k`` for every bearing. The
+    result's ``system`` carries the viscosities μ(T_eff): pass it to ``linearize``,
+    ``stability`` or ``campbell`` for the dynamics with the temperature frozen."""
+    v.speed("speed_hz", speed_hz)
+    if float(speed_hz) == 0.0:
+        raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
+    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    if not isinstance(oil, Oil):
+        raise InputError(f"oil: expected a rotordyn.bearings.Oil, got {oil!r}")
+    plain = [i for i, b in enumerate(system.bearings) if isinstance(b, FluidFilmBearing)]
+    if bearings is None:
+        idx = plain
+    else:
+        idx = [v.integer("bearings[]", i, lo=0, hi=len(system.bearings) - 1) for i in bearings]
+        for i in idx:
+            if i not in plain:
+                raise InputError(f"bearings: bearing {i} is a "
+                                 f"{type(system.bearings[i]).__name__}; the thermal model is "
+                                 "available for plain journal bearings (type = 'journal')")
+    if not idx:
+        raise InputError("bearings: the system has no plain journal bearing for the thermal "
+                         "model")
+    opts = thermal_options(supply_temperature_c=supply_temperature_c,
+                           supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                           effective_factor=effective_factor, tol_k=tol_k)
+    asm = assembled(system)
+    if asm.pad_penalty is not None:
+        raise InputError("bearings: the system thermal model is not available with tilting-pad "
+                         "bearings in the system")
+    films = []
+    for i in idx:
+        tf = _core.ThermalFilm()
+        tf.film = asm.film_owner.index(i)
+        tf.oil = oil.to_core()
+        tf.options = opts
+        films.append(tf)
+    opt = _core.EquilibriumOptions()
+    opt.polish = True
+    a = asm.config_vector(None, None)
+    res = _core.thermal_system_equilibrium(asm.model, films, hz_to_rad_s(float(speed_hz)),
+                                           float(chamber_pressure_pa), a, opt)
+    eq = res.equilibrium
+    r = np.asarray(eq.r)
+    st = list(res.films)
+    mus = {i: s.viscosity_pa_s for i, s in zip(idx, st)}
+    hot = dataclasses.replace(system, bearings=tuple(
+        dataclasses.replace(b, viscosity_pa_s=mus[i]) if i in mus else b
+        for i, b in enumerate(system.bearings)))
+    bcs = {bc.index: bc for bc in asm.bearings}
+    names = tuple(bcs[i].name for i in idx)
+
+    def col(name):
+        return np.array([getattr(s, name) for s in st])
+
+    return SystemThermalResult(
+        speed_hz=float(speed_hz), supply_temperature_c=float(supply_temperature_c),
+        bearing_names=names, effective_temperature_c=col("effective_temperature_c"),
+        max_temperature_c=col("max_temperature_c"), inlet_temperature_c=col("inlet_temperature_c"),
+        temperature_rise_k=col("temperature_rise_k"), viscosity_pa_s=col("viscosity_pa_s"),
+        power_loss_w=col("power_loss_w"), film_flow_m3_s=col("film_flow_m3_s"),
+        side_flow_m3_s=col("side_flow_m3_s"), supply_flow_m3_s=col("supply_flow_m3_s"),
+        journal_x_m=np.array([r[bcs[i].jx] for i in idx]),
+        journal_y_m=np.array([r[bcs[i].jy] for i in idx]),
+        r=r, iterations=int(res.iterations), system=hot, status=eq.status, message=eq.message)

@@ -1,0 +1,170 @@
+"""Effective-temperature thermal model of a plain journal film (issue 20; docs/film-physics.md).
+
+The oil (:class:`Oil`): a viscosity–temperature law — Walther/ASTM D341 through two points
+(e.g. an ISO VG grade's kinematic viscosities at 40 °C and 100 °C), or an exponential law
+μ = μ_ref exp(−β (T − T_ref)) — with density and specific heat. The heat balance (global,
+adiabatic: all friction power into the oil; Raimondi–Boyd/Shigley assumptions with hot-oil
+carry-over) and its iteration with the Reynolds equilibrium run in C++ as one unit of work
+(``_core.thermal_equilibrium``); :meth:`rotordyn.JournalBearing.thermal_equilibrium` is the
+entry point and returns a :class:`ThermalEquilibriumResult`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+
+VISCOSITY_LAWS = ("walther", "exponential")
+
+
+@dataclass(frozen=True, slots=True)
+class Oil:
+    """Lubricant: viscosity law and properties (SI; temperatures in °C).
+
+    Parameters
+    ----------
+    viscosity_law : "walther" (ASTM D341 through (t1_c, nu1_mm2_s), (t2_c, nu2_mm2_s), μ = ρν)
+        or "exponential" (μ = mu_ref_pa_s · exp(−beta_1_per_k (T − t_ref_c))).
+    density_kg_m3, specific_heat_j_per_kg_k : ρ, c_p (constant).
+    t_min_c, t_max_c : range of the law; supply and film temperatures must lie in it.
+    """
+
+    viscosity_law: str = "walther"
+    t1_c: float = 40.0
+    nu1_mm2_s: float = 32.0
+    t2_c: float = 100.0
+    nu2_mm2_s: float = 5.4
+    mu_ref_pa_s: float = 0.03
+    t_ref_c: float = 40.0
+    beta_1_per_k: float = 0.03
+    density_kg_m3: float = 870.0
+    specific_heat_j_per_kg_k: float = 2000.0
+    t_min_c: float = -20.0
+    t_max_c: float = 200.0
+
+    def __post_init__(self) -> None:
+        v.choice("oil.viscosity_law", self.viscosity_law, VISCOSITY_LAWS)
+        for f in ("t1_c", "nu1_mm2_s", "t2_c", "nu2_mm2_s", "mu_ref_pa_s", "t_ref_c",
+                  "beta_1_per_k", "density_kg_m3", "specific_heat_j_per_kg_k", "t_min_c",
+                  "t_max_c"):
+            object.__setattr__(self, f, v.finite(f"oil.{f}", getattr(self, f)))
+        self.to_core().validate()  # InputError naming the field (and its range)
+
+    def to_core(self) -> _core.OilModel:
+        o = _core.OilModel()
+        o.law = self.viscosity_law
+        for f in ("t1_c", "nu1_mm2_s", "t2_c", "nu2_mm2_s", "mu_ref_pa_s", "t_ref_c",
+                  "beta_1_per_k", "density_kg_m3", "specific_heat_j_per_kg_k", "t_min_c",
+                  "t_max_c"):
+            setattr(o, f, float(getattr(self, f)))
+        return o
+
+    def viscosity_pa_s(self, t_c) -> np.ndarray | float:
+        """μ(T), Pa·s, at temperatures ``t_c`` (°C, scalar or array)."""
+        o = self.to_core()
+        f = np.vectorize(lambda t: o.viscosity_pa_s(float(t)))
+        out = f(np.asarray(t_c, dtype=float))
+        return float(out) if np.ndim(out) == 0 else out
+
+
+@dataclass(frozen=True, slots=True)
+class ThermalEquilibriumResult:
+    """Effective-temperature equilibrium of a plain film and its K, C (temperature frozen).
+
+    Temperatures °C; ``temperature_rise_k`` ΔT (K); flows m³/s (``film_flow_m3_s`` Q across
+    the line of maximum film, ``side_flow_m3_s`` Q_s, ``supply_flow_m3_s`` the fresh oil);
+    ``power_loss_w`` the friction power; K (N/m), C (N·s/m) 2×2 with dF = −K dq − C dq̇.
+    """
+
+    speed_hz: float
+    load_n: tuple[float, float]
+    supply_temperature_c: float
+    effective_temperature_c: float
+    max_temperature_c: float
+    inlet_temperature_c: float
+    temperature_rise_k: float
+    viscosity_pa_s: float
+    power_loss_w: float
+    film_flow_m3_s: float
+    side_flow_m3_s: float
+    supply_flow_m3_s: float
+    x_m: float
+    y_m: float
+    eccentricity_ratio: float
+    K: np.ndarray
+    C: np.ndarray
+    iterations: int
+    status: str = "ok"
+    message: str = ""
+
+    def __repr__(self) -> str:
+        return (f"ThermalEquilibriumResult(T_eff={self.effective_temperature_c:.2f} degC, "
+                f"T_max={self.max_temperature_c:.2f} degC, mu={self.viscosity_pa_s:.4g} Pa s, "
+                f"P={self.power_loss_w:.4g} W, eps={self.eccentricity_ratio:.4f}, "
+                f"status={self.status!r})")
+
+    def to_frame(self):
+        """One row: inputs, temperatures, viscosity, power, flows, journal position, K, C."""
+        import pandas as pd
+
+        row = {
+            "speed_hz": self.speed_hz, "load_x_n": self.load_n[0], "load_y_n": self.load_n[1],
+            "supply_temperature_c": self.supply_temperature_c,
+            "effective_temperature_c": self.effective_temperature_c,
+            "max_temperature_c": self.max_temperature_c,
+            "inlet_temperature_c": self.inlet_temperature_c,
+            "temperature_rise_k": self.temperature_rise_k,
+            "viscosity_pa_s": self.viscosity_pa_s, "power_loss_w": self.power_loss_w,
+            "film_flow_m3_s": self.film_flow_m3_s, "side_flow_m3_s": self.side_flow_m3_s,
+            "supply_flow_m3_s": self.supply_flow_m3_s,
+            "journal_x_m": self.x_m, "journal_y_m": self.y_m,
+            "eccentricity_ratio": self.eccentricity_ratio,
+        }
+        for name, A, unit in (("k", self.K, "n_per_m"), ("c", self.C, "n_s_per_m")):
+            for i, a in enumerate("xy"):
+                for j, b in enumerate("xy"):
+                    row[f"{name}{a}{b}_{unit}"] = float(A[i, j])
+        row.update(iterations=self.iterations, status=self.status, message=self.message)
+        return pd.DataFrame([row])
+
+
+def thermal_options(*, supply_temperature_c, supply_flow_m3_s=0.0, carry_over=0.0,
+                    effective_factor=0.5, tol_k=1e-6) -> _core.ThermalOptions:
+    """The core's options (numbers checked here; ranges by the core, naming the field)."""
+    o = _core.ThermalOptions()
+    o.supply_temperature_c = v.finite("supply_temperature_c", supply_temperature_c)
+    o.supply_flow_m3_s = v.finite("supply_flow_m3_s", supply_flow_m3_s)
+    o.carry_over = v.finite("carry_over", carry_over)
+    o.effective_factor = v.finite("effective_factor", effective_factor)
+    o.tol_k = v.finite("tol_k", tol_k)
+    return o
+
+
+def run_thermal_equilibrium(solver, oil: Oil, opts, load_n, speed_hz: float,
+                            clearance_m: float) -> ThermalEquilibriumResult:
+    """One C++ call (GIL released) on ``solver`` (its viscosity is changed)."""
+    if not isinstance(oil, Oil):
+        from rotordyn.errors import InputError
+
+        raise InputError(f"oil: expected a rotordyn.bearings.Oil, got {oil!r}")
+    r = _core.thermal_equilibrium(solver, oil.to_core(), opts, float(load_n[0]),
+                                  float(load_n[1]), 2.0 * math.pi * float(speed_hz))
+    e, dc = r.equilibrium, r.coefficients
+    return ThermalEquilibriumResult(
+        speed_hz=float(speed_hz), load_n=(float(load_n[0]), float(load_n[1])),
+        supply_temperature_c=float(opts.supply_temperature_c),
+        effective_temperature_c=r.effective_temperature_c, max_temperature_c=r.max_temperature_c,
+        inlet_temperature_c=r.inlet_temperature_c, temperature_rise_k=r.temperature_rise_k,
+        viscosity_pa_s=r.viscosity_pa_s, power_loss_w=r.power_loss_w,
+        film_flow_m3_s=r.film_flow_m3_s, side_flow_m3_s=r.side_flow_m3_s,
+        supply_flow_m3_s=r.supply_flow_m3_s, x_m=float(e.x_m), y_m=float(e.y_m),
+        eccentricity_ratio=math.hypot(e.x_m, e.y_m) / clearance_m,
+        K=np.array(dc.K), C=np.array(dc.C), iterations=int(r.iterations))
+
+
+__all__ = ["Oil", "ThermalEquilibriumResult", "VISCOSITY_LAWS"]
