@@ -41,6 +41,8 @@ def test_every_element_field_is_a_model_path(kind):
     s = dataclasses.replace(_base(), bearings=tuple(_bearings(kind)))
     b = s.bearings[0]
     for f in dataclasses.fields(b):
+        if f.name == "tilt_stiffness_nm_per_rad":
+            continue  # the deprecated spelling (moved to tilt_stiffness_n_m_per_rad on construction)
         path = f"bearings.0.{f.name}"
         cur = getattr(b, f.name)
         if isinstance(cur, (str, bool)):
