@@ -1,12 +1,13 @@
 """Adaptive stability boundary (paper Fig. 9/10 at the resolution of a fine grid for a few
 percent of its points).
 
-The coarse grid of the spec's two axes ``x``, ``y`` is evaluated first (max Re λ at each
-point). A cell whose four corners do not all share one state (stable, unstable, failed) holds
-the boundary: it is split in two along each axis whose step is still above the fine grid's,
-and the new corners are evaluated; this repeats until the mixed cells are one fine step wide.
-The fine grid has ``resolution`` points per axis and nests the coarse one (the ratio of steps
-is a power of two). The boundary is the zero contour of max Re λ over the evaluated fine
+The fine grid has ``resolution`` points per axis over the range of the spec's two axes ``x``,
+``y``; the coarse grid (the spec's values, each on its nearest fine node, so any resolution
+fits) is evaluated first (max Re λ at each point). A cell whose four corners do not all share
+one state (stable, unstable, failed) holds the boundary: it is split at its middle fine node
+along each axis where it is wider than one fine step (halves differ by one step when the width
+is odd), and the new corners are evaluated; this repeats until the mixed cells are one fine
+step wide (:class:`Refinement`). The boundary is the zero contour of max Re λ over the evaluated fine
 points (linear interpolation on each cell edge), stored as polylines in ``_boundary.parquet``;
 the evaluated points are the dataset's rows, with the ``level`` that asked for them.
 
@@ -44,6 +45,44 @@ def _classify(table) -> dict[int, tuple[int, float, float]]:
     return out
 
 
+def _halves(a: int, b: int) -> tuple[tuple[int, int], ...]:
+    """The fine-index interval [a, b] split at its middle node, or itself if one step wide."""
+    if b - a <= 1:
+        return ((a, b),)
+    m = (a + b) // 2
+    return ((a, m), (m, b))
+
+
+class Refinement:
+    """The refinement's plan in fine indices, independent of how points are evaluated.
+
+    ``points`` holds the (i, j) fine nodes the current ``level`` needs (some may be known
+    already); :meth:`advance` takes the states of all nodes evaluated so far (dict
+    (i, j) -> 0 stable, 1 unstable, 2 failed) and moves to the next level. Cells are
+    (i0, i1, j0, j1) with i0 < i1, j0 < j1, of any widths."""
+
+    def __init__(self, xi, yi):
+        xi, yi = sorted(xi), sorted(yi)
+        self.cells = [(a, b, c, d) for a, b in zip(xi, xi[1:]) for c, d in zip(yi, yi[1:])]
+        self.points = {(i, j) for i in xi for j in yi}
+        self.level = 0
+
+    def advance(self, state) -> bool:
+        """Split the mixed cells; False (and no points) when none is left to split."""
+        cells, pts = [], set()
+        for a, b, c, d in self.cells:
+            if (b - a <= 1 and d - c <= 1) or len(
+                    {state[a, c], state[a, d], state[b, c], state[b, d]}) == 1:
+                continue
+            for p, q in _halves(a, b):
+                for r, t in _halves(c, d):
+                    cells.append((p, q, r, t))
+                    pts.update(((p, r), (p, t), (q, r), (q, t)))
+        self.cells, self.points = cells, pts
+        self.level += 1
+        return bool(cells)
+
+
 def polylines(xs, ys, z) -> list[np.ndarray]:
     """Zero contour of ``z`` (nx, ny; NaN = not evaluated) as (k, 2) polylines."""
     import contourpy
@@ -54,12 +93,22 @@ def polylines(xs, ys, z) -> list[np.ndarray]:
     return [ln[:, ::-1] for ln in gen.lines(0.0) if len(ln) >= 2]
 
 
+class _States:
+    """(i, j) -> state view of the point_id-keyed results."""
+
+    def __init__(self, state, pid):
+        self.state, self.pid = state, pid
+
+    def __getitem__(self, ij):
+        return self.state[self.pid(*ij)][0]
+
+
 def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None, threads=None,
                  resume=True, progress=None, worker_timeout=30.0):
     import pyarrow as pa
     import pyarrow.parquet as pq
 
-    ax, step = fine_axes(spec)
+    ax, nodes = fine_axes(spec)
     x, y = spec.options["x"], spec.options["y"]
     nx, ny = len(ax[x]), len(ax[y])
     header = {**header, "axes": ax, "n_points": None, "n_chunks": None, "group": None}
@@ -74,17 +123,14 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     def pid(i, j):
         return base + i * ny + j
 
-    sx, sy = step[x], step[y]
-    pts = {(i, j) for i in range(0, nx, sx) for j in range(0, ny, sy)}
-    cells = [(i, j) for i in range(0, nx - 1, sx) for j in range(0, ny - 1, sy)]
+    plan = Refinement(nodes[x], nodes[y])
     state: dict[int, tuple] = {}
     cid = 0
     ex = None
     bar = Progress(1, 0, {}, enabled=None if progress is None else bool(progress))
     try:
-        level = 0
         while True:
-            new = sorted(pid(i, j) for i, j in pts if pid(i, j) not in state)
+            new = sorted(pid(i, j) for i, j in plan.points if pid(i, j) not in state)
             chunks = [(cid + k, new[a:a + spec.chunk_size])
                       for k, a in enumerate(range(0, len(new), spec.chunk_size))]
             cid += len(chunks)
@@ -99,7 +145,7 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                 else:
                     todo.append((c, 0, 0, pl))
             if todo:
-                job.level = level
+                job.level = plan.level
                 if ex is None:
                     ex = (Threads(threads) if threads is not None else
                           Dask(scheduler, workers or min(len(todo), os.cpu_count() or 1),
@@ -108,24 +154,7 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                     store.add(c, table, cnt, 0)
                     state.update(_classify(table))
                     bar.update(cnt)
-            if sx == 1 and sy == 1:
-                break
-            mixed = []
-            for i, j in cells:
-                cs = {state[pid(a, b)][0] for a in (i, min(i + sx, nx - 1))
-                      for b in (j, min(j + sy, ny - 1))}
-                if len(cs) > 1:
-                    mixed.append((i, j))
-            hx, hy = max(1, sx // 2), max(1, sy // 2)
-            cells, pts = [], set()
-            for i, j in mixed:
-                for a in range(i, i + sx, hx):
-                    for b in range(j, j + sy, hy):
-                        cells.append((a, b))
-                        pts.update({(a, b), (a + hx, b), (a, b + hy), (a + hx, b + hy)})
-            sx, sy = hx, hy
-            level += 1
-            if not cells:
+            if not plan.advance(_States(state, pid)):
                 break
     except KeyboardInterrupt:
         bar.close()
