@@ -167,3 +167,84 @@ def test_resolution_below_coarse_count_is_rejected(tmp_path):
     rigid_rotor(1.0, 0.125).to_toml(rig)
     with pytest.raises(rd.InputError, match=r"options.resolution: expected >= 5"):
         SweepSpec.from_toml(_spec(tmp_path, rig, 4))
+
+
+@pytest.mark.parametrize("n", [65, 61])
+def test_surface_refinement_crossings_equal_dense_grid(n):
+    """The refinement in three dimensions (a boundary surface over x, y, z) from a 9³ coarse
+    grid: along every fine line of each axis the crossings equal the dense grid's (a wavy
+    threshold surface whose height varies with z, and a failed region)."""
+    g = np.linspace(0.0, 1.0, n)
+    X, Y, Z = np.meshgrid(g, g, g, indexing="ij")
+    z = Y - 0.5 - 0.2 * np.sin(3 * np.pi * X) * np.cos(2 * Z) - 0.15 * Z
+    st = _states(z, (X > 0.8) & (Y < 0.15) & (Z > 0.5))
+    nodes = sorted({(2 * k * (n - 1) + 8) // 16 for k in range(9)})
+    plan = Refinement(nodes, nodes, nodes)
+    seen = np.zeros(st.shape, bool)
+    view = {}
+    while True:
+        for idx in plan.points:
+            seen[idx] = True
+            view[idx] = int(st[idx])
+        if not plan.advance(view):
+            break
+    for axis in range(3):
+        s = np.moveaxis(st, axis, -1)
+        m = np.moveaxis(seen, axis, -1)
+        dense = s[..., 1:] != s[..., :-1]
+        got = dense & m[..., 1:] & m[..., :-1]
+        np.testing.assert_array_equal(got, dense)
+    assert dense.any() and seen.sum() < 0.25 * n**3
+
+
+SURFACE = """
+schema = "rotordyn/sweep/1"
+name = "lund-surface"
+model = "{model}"
+analysis = "boundary"
+chunk_size = 16
+
+[grid]
+"rotor.disks.0.mass_kg" = {{start = 0.2, stop = 1.4, num = 5}}
+speed_hz = {{start = 110.0, stop = 150.0, num = 5}}
+gravity_m_s2 = {{start = 6.0, stop = 12.0, num = 3}}
+
+[options]
+x = "rotor.disks.0.mass_kg"
+y = "speed_hz"
+z = "gravity_m_s2"
+resolution = 9
+"""
+
+
+def test_boundary_surface_sweep(tmp_path):
+    """A boundary surface over (mass, speed, gravity) of the rigid rotor (the load sets the
+    eccentricity, hence the threshold) from a 5 x 5 x 3 coarse grid: a contour on every
+    gravity slice whose evaluated points change sign, cutting the slice's dense column of the
+    same model where the dense evaluation changes sign (same nodes, 1e-9 relative)."""
+    model = tmp_path / "rigid.toml"
+    rigid_rotor(1.0, 0.125).to_toml(model)
+    p = tmp_path / "s.toml"
+    p.write_text(SURFACE.format(model=model))
+    res = run_sweep(p, tmp_path / "o", threads=2, progress=False)
+    assert res.manifest["fine_points"] == 729 and res.manifest["n_points"] < 729
+    ds = sw.open(tmp_path / "o")
+    b = ds.boundary()
+    # a contour on exactly the gravity slices whose evaluated points change sign
+    mixed = ds.frame.groupby("gravity_m_s2")["point_stable"].nunique()
+    assert set(b["gravity_m_s2"]) == set(mixed[mixed > 1].index)
+    assert len(set(b["gravity_m_s2"])) >= 5
+    spec = SweepSpec.from_toml(p)
+    ax, _ = fine_axes(spec)
+    job = Job(spec.name, model.read_text(), spec.analysis, spec.options, ax)
+    ys = np.asarray(ax["speed_hz"])
+    for i, kz in ((4, 4), (2, 8)):  # a mass column at two gravities
+        pid = [(i * 9 + j) * 9 + kz for j in range(9)]
+        t = run_chunk(job, 0, 0, 0, pid)
+        col = np.asarray(t.column("max_real_1_per_s").to_pylist())
+        k = np.flatnonzero(np.sign(col[1:]) != np.sign(col[:-1]))
+        assert len(k) == 1
+        want = ys[k] + (ys[k + 1] - ys[k]) * col[k] / (col[k] - col[k + 1])
+        sl = b[(b["gravity_m_s2"] == ax["gravity_m_s2"][kz])
+               & (np.abs(b["rotor.disks.0.mass_kg"] - ax["rotor.disks.0.mass_kg"][i]) <= 1e-12)]
+        np.testing.assert_allclose(np.unique(sl["speed_hz"]), want, rtol=1e-9)

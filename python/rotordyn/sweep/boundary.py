@@ -7,9 +7,15 @@ fits) is evaluated first (max Re λ at each point). A cell whose four corners do
 one state (stable, unstable, failed) holds the boundary: it is split at its middle fine node
 along each axis where it is wider than one fine step (halves differ by one step when the width
 is odd), and the new corners are evaluated; this repeats until the mixed cells are one fine
-step wide (:class:`Refinement`). The boundary is the zero contour of max Re λ over the evaluated fine
-points (linear interpolation on each cell edge), stored as polylines in ``_boundary.parquet``;
-the evaluated points are the dataset's rows, with the ``level`` that asked for them.
+step wide (:class:`Refinement`). The boundary is the zero contour of max Re λ over the
+evaluated fine points (linear interpolation on each cell edge), stored as polylines in
+``_boundary.parquet``; the evaluated points are the dataset's rows, with the ``level`` that
+asked for them.
+
+With ``z`` (a third axis, e.g. speed) the same refinement runs over boxes of eight corners and
+finds the boundary surface over (x, y, z); it is stored as the zero contour of every z slice
+of the fine grid that holds a sign change (a ``z`` column beside ``line``, ``vertex``, ``x``,
+``y``).
 
 Limitation (as any marching refinement): a stable or unstable island smaller than a coarse
 cell, whose corners all share one state, is not seen; choose the coarse grid accordingly.
@@ -17,6 +23,7 @@ cell, whose corners all share one state, is not seen; choose the coarse grid acc
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 from pathlib import Path
@@ -26,7 +33,7 @@ import numpy as np
 from rotordyn._common.info import __version__
 from rotordyn.sweep.execution import (Dask, Progress, SweepInterrupted, SweepResult, Threads,
                                       group_size)
-from rotordyn.sweep.spec import fine_axes
+from rotordyn.sweep.spec import boundary_axes, fine_axes
 from rotordyn.sweep.store import BOUNDARY, Store
 from rotordyn.sweep.work import Job
 
@@ -54,30 +61,30 @@ def _halves(a: int, b: int) -> tuple[tuple[int, int], ...]:
 
 
 class Refinement:
-    """The refinement's plan in fine indices, independent of how points are evaluated.
+    """The refinement's plan in fine indices, independent of how points are evaluated, in
+    two or three dimensions (a boundary curve or surface).
 
-    ``points`` holds the (i, j) fine nodes the current ``level`` needs (some may be known
-    already); :meth:`advance` takes the states of all nodes evaluated so far (dict
-    (i, j) -> 0 stable, 1 unstable, 2 failed) and moves to the next level. Cells are
-    (i0, i1, j0, j1) with i0 < i1, j0 < j1, of any widths."""
+    ``points`` holds the fine nodes (index tuples) the current ``level`` needs (some may be
+    known already); :meth:`advance` takes the states of all nodes evaluated so far (mapping
+    index tuple -> 0 stable, 1 unstable, 2 failed) and moves to the next level. A cell is a
+    tuple of (lo, hi) fine-index intervals, one per axis, of any widths."""
 
-    def __init__(self, xi, yi):
-        xi, yi = sorted(xi), sorted(yi)
-        self.cells = [(a, b, c, d) for a, b in zip(xi, xi[1:]) for c, d in zip(yi, yi[1:])]
-        self.points = {(i, j) for i in xi for j in yi}
+    def __init__(self, *nodes):
+        grids = [sorted(n) for n in nodes]
+        self.cells = list(itertools.product(*[list(zip(g, g[1:])) for g in grids]))
+        self.points = set(itertools.product(*grids))
         self.level = 0
 
     def advance(self, state) -> bool:
         """Split the mixed cells; False (and no points) when none is left to split."""
         cells, pts = [], set()
-        for a, b, c, d in self.cells:
-            if (b - a <= 1 and d - c <= 1) or len(
-                    {state[a, c], state[a, d], state[b, c], state[b, d]}) == 1:
+        for cell in self.cells:
+            if all(b - a <= 1 for a, b in cell) or len(
+                    {state[c] for c in itertools.product(*cell)}) == 1:
                 continue
-            for p, q in _halves(a, b):
-                for r, t in _halves(c, d):
-                    cells.append((p, q, r, t))
-                    pts.update(((p, r), (p, t), (q, r), (q, t)))
+            for sub in itertools.product(*[_halves(a, b) for a, b in cell]):
+                cells.append(sub)
+                pts.update(itertools.product(*sub))
         self.cells, self.points = cells, pts
         self.level += 1
         return bool(cells)
@@ -99,8 +106,8 @@ class _States:
     def __init__(self, state, pid):
         self.state, self.pid = state, pid
 
-    def __getitem__(self, ij):
-        return self.state[self.pid(*ij)][0]
+    def __getitem__(self, idx):
+        return self.state[self.pid(*idx)][0]
 
 
 def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None, threads=None,
@@ -109,8 +116,10 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     import pyarrow.parquet as pq
 
     ax, nodes = fine_axes(spec)
-    x, y = spec.options["x"], spec.options["y"]
-    nx, ny = len(ax[x]), len(ax[y])
+    refined = boundary_axes(spec)
+    x, y = refined[:2]
+    z = refined[2] if len(refined) == 3 else None
+    shape = tuple(len(ax[a]) for a in refined)
     header = {**header, "axes": ax, "n_points": None, "n_chunks": None, "group": None}
     store = Store(out, header, resume=resume, group=1)
     job = Job(spec.name, model_toml, spec.analysis, spec.options, ax)
@@ -120,17 +129,19 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                 "units": header["units"]}
     base = int(np.ravel_multi_index(tuple(0 for _ in ax), tuple(len(v) for v in ax.values())))
 
-    def pid(i, j):
-        return base + i * ny + j
+    strides = [int(np.prod(shape[d + 1:])) for d in range(len(shape))]
 
-    plan = Refinement(nodes[x], nodes[y])
+    def pid(*idx):
+        return base + sum(i * st for i, st in zip(idx, strides))
+
+    plan = Refinement(*[nodes[a] for a in refined])
     state: dict[int, tuple] = {}
     cid = 0
     ex = None
     bar = Progress(1, 0, {}, enabled=None if progress is None else bool(progress))
     try:
         while True:
-            new = sorted(pid(i, j) for i, j in plan.points if pid(i, j) not in state)
+            new = sorted(q for q in (pid(*idx) for idx in plan.points) if q not in state)
             chunks = [(cid + k, new[a:a + spec.chunk_size])
                       for k, a in enumerate(range(0, len(new), spec.chunk_size))]
             cid += len(chunks)
@@ -168,27 +179,37 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
         bar.close()
         store.group = group_size(cid, spec.max_files)
         store.compact_complete(cid)
-        z = np.full((nx, ny), np.nan)
-        for p, (s, v, _) in state.items():
-            i, j = divmod(p - base, ny)
-            z[i, j] = v
-        lines = polylines(ax[x], ax[y], z)
+        vals = np.full(shape, np.nan)
+        for p, (_, v, _) in state.items():
+            vals[np.unravel_index(p - base, shape)] = v
         rows = {"line": [], "vertex": [], x: [], y: []}
-        for k, ln in enumerate(lines):
-            rows["line"] += [k] * len(ln)
-            rows["vertex"] += list(range(len(ln)))
-            rows[x] += ln[:, 0].tolist()
-            rows[y] += ln[:, 1].tolist()
+        if z is not None:
+            rows[z] = []
+        slices = [(None, vals)] if z is None else [(k, vals[:, :, k]) for k in range(shape[2])]
+        n_line = 0
+        for k, zk in slices:
+            fin = zk[np.isfinite(zk)]
+            if z is not None and (fin.size == 0 or (fin < 0).all() or (fin >= 0).all()):
+                continue  # nothing evaluated on this slice changes sign
+            for ln in polylines(ax[x], ax[y], zk):
+                rows["line"] += [n_line] * len(ln)
+                rows["vertex"] += list(range(len(ln)))
+                rows[x] += ln[:, 0].tolist()
+                rows[y] += ln[:, 1].tolist()
+                if z is not None:
+                    rows[z] += [ax[z][k]] * len(ln)
+                n_line += 1
         t = pa.table({"line": pa.array(rows["line"], pa.int64()),
                       "vertex": pa.array(rows["vertex"], pa.int64()),
-                      x: pa.array(rows[x], pa.float64()), y: pa.array(rows[y], pa.float64())})
+                      **{a: pa.array(rows[a], pa.float64()) for a in refined}})
         buf = pa.BufferOutputStream()
         pq.write_table(t, buf)
         store.add_aux(BOUNDARY, buf.getvalue().to_pybytes())
         entries = store.chunk_entries()
         counts = {k: sum(c.get(k, 0) for c in entries.values())
                   for k in ("ok", "failed", "unstable")}
-        man = {**header, "n_chunks": cid, "n_points": len(state), "fine_points": nx * ny}
+        man = {**header, "n_chunks": cid, "n_points": len(state),
+               "fine_points": int(np.prod(shape))}
         return SweepResult(Path(out), man, len(entries), cid, counts)
     finally:
         store.close()

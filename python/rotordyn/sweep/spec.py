@@ -97,7 +97,8 @@ OPTIONS = {
     "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000)},
     "threshold": {"vary": _opt_axis, "exclude_sleeve_modes": _opt_bool,
                   "xtol": _opt_range(0.0, math.inf)},
-    "boundary": {"x": _opt_axis, "y": _opt_axis, "resolution": _opt_int(3, 100001),
+    "boundary": {"x": _opt_axis, "y": _opt_axis, "z": _opt_axis,
+                 "resolution": _opt_int(3, 100001),
                  "exclude_sleeve_modes": _opt_bool},
     "unbalance": {**_LIN, "unbalances": _opt_unbalances, "stations": _opt_stations,
                   "operating_speed_hz": _opt_operating},
@@ -195,23 +196,30 @@ def _check_model_axis(system, name: str, vals: list) -> None:
             raise InputError(f"grid.{name}[{i}]: {msg}") from None
 
 
+def boundary_axes(spec) -> tuple[str, ...]:
+    """The refined axes of a boundary sweep: (x, y), or (x, y, z) for a boundary surface."""
+    o = spec.options
+    return (o["x"], o["y"]) + ((o["z"],) if o.get("z") else ())
+
+
 def fine_axes(spec) -> tuple[dict, dict]:
-    """(ordered fine axes: fixed axes first, then x, then y; per-axis coarse nodes as sorted
+    """(ordered fine axes: fixed axes first, then x, y (and z); per-axis coarse nodes as sorted
     fine indices, both ends included).
 
     The fine axis has ``resolution`` evenly spaced values from the coarse axis' first to its
     last value; each coarse value is placed on the nearest fine node (index
     ``k (resolution - 1) / (n0 - 1)`` rounded), so any resolution >= the coarse count fits:
     the coarse cells are then ``(resolution - 1) / (n0 - 1)`` fine steps wide, rounded."""
-    x, y, res = spec.options["x"], spec.options["y"], spec.options["resolution"]
-    fixed = {k: val for k, val in spec.axes.items() if k not in (x, y)}
+    res = spec.options["resolution"]
+    refined = boundary_axes(spec)
+    fixed = {k: val for k, val in spec.axes.items() if k not in refined}
     for k, val in fixed.items():
         if len(val) != 1:
             raise InputError(f"grid.{k}: a boundary sweep takes one value for every axis but "
-                             f"{x} and {y}, got {len(val)}")
+                             f"{', '.join(refined)}, got {len(val)}")
     ax = dict(fixed)
     nodes = {}
-    for a in (x, y):
+    for a in refined:
         c = spec.axes[a]
         n0 = len(c)
         if res < n0:
@@ -355,12 +363,15 @@ class SweepSpec:
                                  f"chamber_pressure_pa, config_ay_m, got {ax!r}")
         if a == "boundary":
             x, y = self.options["x"], self.options["y"]
-            for k, ax in (("x", x), ("y", y)):
+            z = self.options.get("z")
+            for k, ax in (("x", x), ("y", y)) + ((("z", z),) if z else ()):
                 if ax not in self.axes or len(self.axes[ax]) < 2:
                     raise InputError(f"options.{k}: {ax!r} must be a grid axis with >= 2 "
                                      "values (the coarse grid)")
             if x == y:
                 raise InputError("options.y: must differ from options.x")
+            if z and z in (x, y):
+                raise InputError("options.z: must differ from options.x and options.y")
             fine_axes(self)
         if a == "run-up":
             if "speed_hz" in self.axes:
