@@ -44,13 +44,13 @@ chunk_size = 50
 [grid]
 config_ay_m = {{start = -2.5e-3, stop = 2.5e-3, num = {n0}}}
 chamber_pressure_pa = {{start = 0.0, stop = 0.3e6, num = {n0}}}
-speed_hz = 50.0
+speed_hz = {speed}
 
 [options]
 x = "config_ay_m"
 y = "chamber_pressure_pa"
 resolution = {res}
-"""
+{zopt}"""
 
 
 def main(argv=None):
@@ -59,12 +59,18 @@ def main(argv=None):
     ap.add_argument("--coarse", type=int, default=26)
     ap.add_argument("--columns", type=int, default=3, help="dense columns checked")
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--surface", action="store_true",
+                    help="the 3-D boundary over a_y x p_c x speed (30-70 Hz, --coarse-z values)")
+    ap.add_argument("--coarse-z", type=int, default=9)
     args = ap.parse_args(argv)
-    header(f"bench_boundary: Fig. 9 boundary at {args.resolution}^2", threads=1)
+    dim = 3 if args.surface else 2
+    header(f"bench_boundary: Fig. 9 boundary at {args.resolution}^{dim}", threads=1)
     res, n0 = args.resolution, args.coarse
+    if args.surface:
+        return surface(args)
     with tempfile.TemporaryDirectory() as d:
         p = Path(d) / "s.toml"
-        p.write_text(SPEC.format(n0=n0, res=res))
+        p.write_text(SPEC.format(n0=n0, res=res, speed="50.0", zopt=""))
         w0, c0 = time.perf_counter(), time.process_time()
         r = run_sweep(p, Path(d) / "o", threads=args.threads, progress=False)
         w, c = time.perf_counter() - w0, time.process_time() - c0
@@ -116,6 +122,29 @@ def main(argv=None):
         print(f"dense columns: {len(cols)} x {ny} points, {time.perf_counter() - w0:.1f} s wall, "
               f"{time.process_time() - c0:.1f} s CPU; largest contour difference "
               f"{worst:.3g} Pa")
+    footer()
+
+
+def surface(args):
+    """The boundary surface over a_y x p_c x speed: points, time, contours per slice."""
+    res, n0 = args.resolution, args.coarse
+    with tempfile.TemporaryDirectory() as d:
+        p = Path(d) / "s.toml"
+        p.write_text(SPEC.format(n0=n0, res=res,
+                                 speed=f"{{start = 30.0, stop = 70.0, num = {args.coarse_z}}}",
+                                 zopt='z = "speed_hz"\n'))
+        w0, c0 = time.perf_counter(), time.process_time()
+        r = run_sweep(p, Path(d) / "o", threads=args.threads, progress=False)
+        w, c = time.perf_counter() - w0, time.process_time() - c0
+        n = r.manifest["n_points"]
+        ds = sw.open(Path(d) / "o")
+        b = ds.boundary()
+        levels = ds.frame.groupby("level")["point_id"].nunique().to_dict()
+        print(f"boundary surface at {res}^3 from {n0}x{n0}x{args.coarse_z}: {n:,} points "
+              f"evaluated vs {res**3:,} for the full grid ({res**3 / n:.0f}x fewer); {w:.1f} s "
+              f"wall, {c:.1f} s CPU on {args.threads} threads (goal at 257^3: <= 60 s on 2 "
+              f"cores); {b['speed_hz'].nunique()} speed slices with a contour; counts "
+              f"{r.counts}; points per level {levels}")
     footer()
 
 

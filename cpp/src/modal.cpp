@@ -141,7 +141,8 @@ std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero)
 }  // namespace
 
 namespace detail {
-ModalResult modal_impl(const Eigen::MatrixXd& M, const std::function<const Eigen::MatrixXd&()>& dense_D,
+ModalResult modal_impl(const Eigen::MatrixXd& M,
+                       const std::function<const Eigen::MatrixXd&()>& dense_D,
                        const Eigen::MatrixXd& K, const std::vector<std::pair<int, int>>& xy_pairs,
                        int n_modes, bool with_modes,
                        const std::vector<std::pair<int, int>>& rot_pairs, Eigen::VectorXd* start,
@@ -217,8 +218,9 @@ ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eige
   require(M.cols() == n, shape_msg("M", n, n, M.rows(), M.cols()));
   require(D.rows() == n && D.cols() == n, shape_msg("D", n, n, D.rows(), D.cols()));
   require(K.rows() == n && K.cols() == n, shape_msg("K", n, n, K.rows(), K.cols()));
-  return detail::modal_impl(M, [&D]() -> const Eigen::MatrixXd& { return D; }, K, xy_pairs, n_modes,
-                            with_modes, rot_pairs, nullptr, nullptr);
+  auto dense_D = [&D]() -> const Eigen::MatrixXd& { return D; };
+  return detail::modal_impl(M, dense_D, K, xy_pairs, n_modes, with_modes, rot_pairs, nullptr,
+                            nullptr);
 }
 
 CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
@@ -243,9 +245,9 @@ CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
     for (Eigen::Index s = 0; s < speeds.size(); ++s) {
       try {
         const Eigen::MatrixXd D = C + speeds(s) * G;
-        const ModalResult r = detail::modal_impl(M, [&D]() -> const Eigen::MatrixXd& { return D; }, K,
-                                                 xy_pairs, n_modes,
-                                                 false, rot_pairs, &start, nullptr);
+        auto dense_D = [&D]() -> const Eigen::MatrixXd& { return D; };
+        const ModalResult r = detail::modal_impl(M, dense_D, K, xy_pairs, n_modes, false,
+                                                 rot_pairs, &start, nullptr);
         for (Eigen::Index j = 0; j < r.eigenvalues.size(); ++j) {
           out.eigenvalues(s, j) = r.eigenvalues(j);
           out.whirl(s, j) = static_cast<int>(r.whirl[static_cast<std::size_t>(j)]);

@@ -42,7 +42,8 @@ bool factor_at_zero(const SpMat& K, SpLU& lu);
 /// The modal analysis behind rotordyn::modal: M, K dense; D dense made on demand (only the
 /// dense path needs it); pre: the sparse pencil to use in place of one made from the dense
 /// matrices (same numbers, so the same answer).
-ModalResult modal_impl(const Eigen::MatrixXd& M, const std::function<const Eigen::MatrixXd&()>& dense_D,
+ModalResult modal_impl(const Eigen::MatrixXd& M,
+                       const std::function<const Eigen::MatrixXd&()>& dense_D,
                        const Eigen::MatrixXd& K, const std::vector<std::pair<int, int>>& xy_pairs,
                        int n_modes, bool with_modes,
                        const std::vector<std::pair<int, int>>& rot_pairs, Eigen::VectorXd* start,
