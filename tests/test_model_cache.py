@@ -150,3 +150,18 @@ def test_unbalance_one_call_equals_per_speed_loop(make):
     assert c.speeds_hz.size > sp[::4].size  # peaks refined
     X, _ = _loop(s, ub, c.speeds_hz, [st])
     assert np.max(np.abs(c.x - X)) <= 1e-12 * np.max(np.abs(X))
+
+
+def test_shared_operator_from_threads():
+    """Threads share one cached model (the GIL is released in the modal call): each thread's
+    answers equal the serial ones bit for bit (the kept LU is only read)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    s = _beam()
+    speeds = [0.0, 20.0, 55.0, 90.0] * 3
+    serial = [rd.modes(s, f, reduction="none", n_modes=6).eigenvalues for f in speeds]
+    with ThreadPoolExecutor(4) as ex:
+        par = list(ex.map(lambda f: rd.modes(s, f, reduction="none", n_modes=6).eigenvalues,
+                          speeds))
+    for a, b in zip(serial, par):
+        np.testing.assert_array_equal(a, b)
