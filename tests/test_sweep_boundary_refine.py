@@ -248,3 +248,17 @@ def test_boundary_surface_sweep(tmp_path):
         sl = b[(b["gravity_m_s2"] == ax["gravity_m_s2"][kz])
                & (np.abs(b["rotor.disks.0.mass_kg"] - ax["rotor.disks.0.mass_kg"][i]) <= 1e-12)]
         np.testing.assert_allclose(np.unique(sl["speed_hz"]), want, rtol=1e-9)
+
+
+@pytest.mark.parametrize("zline, msg", [
+    ('z = "speed_hz"', r"options.z: must differ from options.x and options.y"),
+    ('z = "gravity_m_s2"', r"options.z: 'gravity_m_s2' must be a grid axis with >= 2 values"),
+])
+def test_surface_options_are_checked(tmp_path, zline, msg):
+    """A third refined axis must be another grid axis with a range (error names the field)."""
+    rig = tmp_path / "rigid.toml"
+    rigid_rotor(1.0, 0.125).to_toml(rig)
+    p = _spec(tmp_path, rig, 9)
+    p.write_text(p.read_text() + zline + "\n")
+    with pytest.raises(rd.InputError, match=msg):
+        SweepSpec.from_toml(p)
