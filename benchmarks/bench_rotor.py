@@ -2,7 +2,7 @@
 Campbell diagram of Friswell et al. (2010) Example 5.9.1, and the unbalance response of the
 100-element rotor at 50 frequencies.
 
-    .venv/bin/python benchmarks/bench_rotor.py [--repeat 5] [--no-ross]
+    .venv/bin/python benchmarks/bench_rotor.py [--repeat 5] [--no-ross] [--only repeat]
 
 Protocol (benchmarks/_common.py): every side on one BLAS/OpenMP thread (threadpoolctl) unless
 a row says otherwise, the sides of each ratio timed in interleaved repeats, medians of wall and
@@ -84,6 +84,113 @@ def ross_friswell(ross):
              ross.DiskElement.from_geometry(n=4, material=steel, width=0.07, i_d=0.05, o_d=0.35)]
     brgs = [ross.BearingElement(n=n, kxx=1e6, kyy=1e6, cxx=0, cyy=0) for n in (0, 6)]
     return ross.Rotor(shaft, disks, brgs)
+
+
+# Issue 22: the 100-element rotor with three disks (stations 25, 50, 75), the same on both
+# sides; a repeated analysis of one model (a design loop, a sweep of speeds).
+DISKS = ((25, 12.0, 0.040, 0.022), (50, 20.0, 0.080, 0.045), (75, 12.0, 0.040, 0.022))
+UB_500_HZ = np.linspace(5.0, 400.0, 500)
+
+
+def rd_system_3disks():
+    s = rd_system()
+    disks = tuple(rd.Disk(st, m, ip_kg_m2=ip, id_kg_m2=i_d) for st, m, ip, i_d in DISKS)
+    return rd.System(rotor=rd.Rotor(s.rotor.sections, disks=disks), materials=s.materials,
+                     supports=s.supports, reduction=s.reduction, gravity_m_s2=0.0)
+
+
+def ross_rotor_3disks(ross):
+    steel = ross.Material(name="bench_steel3", rho=7810, E=211e9, G_s=81.2e9)
+    shaft = [ross.ShaftElement(L=L_EL, idl=0.0, odl=D_SHAFT, material=steel, shear_effects=True,
+                               rotary_inertia=True, gyroscopic=True) for _ in range(N_EL)]
+    disks = [ross.DiskElement(n=st, m=m, Id=i_d, Ip=ip) for st, m, ip, i_d in DISKS]
+    brgs = [ross.BearingElement(n=n, kxx=K_BRG, kyy=K_BRG, cxx=C_BRG, cyy=C_BRG)
+            for n in (0, N_EL)]
+    return ross.Rotor(shaft, disks, brgs)
+
+
+def section_repeat(ross, repeat, n_ub, ross_ub_repeat):
+    """Repeated modal calls (6 and 12 frequencies) and one unbalance response of n_ub
+    frequencies on one model, against ROSS on the same model object with its caches cleared
+    before every call (ROSS's run_modal(num_modes=2k) returns k frequencies)."""
+    from rotordyn.analysis.modes import clear_cache
+
+    s = rd_system_3disks()
+    w = SPEED / (2 * np.pi)
+    rr = ross_rotor_3disks(ross) if ross else None
+    print(f"\n5) {N_EL}-element rotor with 3 disks ({4 * (N_EL + 1)} DOF), repeated calls on one "
+          f"model at {SPEED:g} rad/s (issue 22)")
+    for k in (6, 12):
+        warm = rd.modes(s, w, reduction="none", n_modes=k)
+
+        def cold(k=k):  # the set-up included: cache dropped, a new System object
+            clear_cache()
+            return rd.modes(rd_system_3disks(), w, reduction="none", n_modes=k)
+
+        c = cold()
+        fresh = np.asarray(c.eigenvalues)
+        same = np.array_equal(fresh, warm.eigenvalues)
+        fns = {"warm": lambda k=k: rd.modes(s, w, reduction="none", n_modes=k), "cold": cold}
+        if rr is not None:
+            def ross_modal(k=k):
+                clear_ross_caches(rr)
+                return rr.run_modal(speed=SPEED, num_modes=2 * k)
+            m = ross_modal()
+            nf = len(m.wd)
+            fns["ross"] = ross_modal
+        t = interleaved(fns, repeat=repeat)
+        print(f"   {k} frequencies: cached and fresh call identical: {same}")
+        row(f"rd.modes, {k} freq., model cached", t["warm"])
+        row(f"rd.modes, {k} freq., set-up included", t["cold"], t["warm"])
+        if rr is not None:
+            rd_w = np.sort(warm.eigenvalues.imag)
+            ro_w = np.sort(np.asarray(m.wd))
+            # ROSS 2.3's nodes have 6 DOF (axial, torsion): its lowest k may hold modes a
+            # lateral model has not; match each ROSS frequency to the nearest of ours
+            rel = np.array([np.min(np.abs(rd_w - x)) / x for x in ro_w])
+            print(f"   ROSS run_modal(num_modes={2 * k}) returned {nf} frequencies "
+                  f"({rr.ndof} DOF); {int(np.sum(rel < 1e-6))} equal ours within 1e-6 "
+                  f"(largest difference among them {np.max(rel[rel < 1e-6]):.1e}), the others "
+                  f"are ROSS's axial/torsional modes: {np.round(ro_w[rel >= 1e-6], 1).tolist()} "
+                  "rad/s")
+            row(f"ROSS run_modal({2 * k}), caches cleared", t["ross"], t["warm"])
+            print(f"   ratio ROSS/rotordyn CPU: {t['ross'].cpu / t['warm'].cpu:.1f}x cached, "
+                  f"{t['ross'].cpu / t['cold'].cpu:.1f}x set-up included (goal >= 50x)")
+    sp = UB_500_HZ if n_ub == 500 else np.linspace(5.0, 400.0, n_ub)
+    ub = [(UB_STATION, UB_ME, 0.0)]
+
+    def rd_ub():
+        return rd.unbalance_response(s, ub, sp, stations=[UB_STATION], refine=False)
+
+    from rotordyn.analysis.assembly import assembled
+    asm = assembled(s)
+    F1 = asm.unbalance_load(ub)
+    O = asm.station_output_matrix(UB_STATION)
+
+    def rd_ub_loop():  # the former per-speed path: linearise, then one sparse solve per speed
+        out = []
+        for f in sp:
+            lm = rd.linearize(s, f)
+            w = 2 * np.pi * f
+            q = core.harmonic_response(lm.M, lm.D, lm.K, w, (w**2 * F1)[:, None])
+            out.append(O @ np.asarray(q)[:, 0])
+        return np.array(out)
+
+    a, b = rd_ub(), rd_ub_loop()
+    d = np.max(np.abs(a.x[:, 0] - b[:, 0])) / np.max(np.abs(b[:, 0]))
+    t = interleaved({"rd": rd_ub, "loop": rd_ub_loop}, repeat=repeat)
+    print(f"   unbalance, {len(sp)} frequencies {sp[0]:g}-{sp[-1]:g} Hz (refine=False): one C++ "
+          f"call vs the per-speed loop: largest difference {d:.1e} of the peak")
+    row(f"rd.unbalance_response, {len(sp)} freq.", t["rd"])
+    row("per-speed loop (linearize + sparse LU)", t["loop"], t["rd"])
+    if rr is not None:
+        def ross_ub():
+            clear_ross_caches(rr)
+            return rr.run_unbalance_response(UB_STATION, UB_ME, 0.0, 2 * np.pi * sp)
+        tr = interleaved({"ross": ross_ub, "rd": rd_ub}, repeat=ross_ub_repeat, warmup=0)
+        row(f"ROSS run_unbalance_response, {len(sp)} freq.", tr["ross"], tr["rd"])
+        print(f"   ratio ROSS/rotordyn CPU: {tr['ross'].cpu / tr['rd'].cpu:.1f}x (goal >= 50x; "
+              f"{ross_ub_repeat} ROSS repeat(s), no warm-up)")
 
 
 def row(name, t, ref=None):
@@ -225,7 +332,11 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--no-ross", action="store_true")
-    ap.add_argument("--only", choices=("modal", "campbell", "unbalance", "large-campbell"))
+    ap.add_argument("--only", choices=("modal", "campbell", "unbalance", "large-campbell",
+                                       "repeat"))
+    ap.add_argument("--ub-freqs", type=int, default=500, help="section 5's unbalance frequencies")
+    ap.add_argument("--ross-ub-repeat", type=int, default=1,
+                    help="ROSS repeats of section 5's unbalance (each ~1 min, GBs of memory)")
     args = ap.parse_args(argv)
     header("bench_rotor: 100-element rotor and Friswell 5.9.1")
     ross = None if args.no_ross else import_ross()
@@ -242,6 +353,8 @@ def main(argv=None):
         section_unbalance(ross, args.repeat)
     if args.only in (None, "large-campbell"):
         section_large_campbell(ross, args.repeat)
+    if args.only in (None, "repeat"):
+        section_repeat(ross, args.repeat, args.ub_freqs, args.ross_ub_repeat)
     footer()
 
 

@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "rotordyn/modal.hpp"
+#include "rotordyn/modal_operator.hpp"
 #include "rotordyn/reduction.hpp"
 
 namespace rotordyn::py_bind {
@@ -32,6 +33,20 @@ void bind_modal(py::module_& m) {
         py::arg("rot_pairs") = std::vector<std::pair<int, int>>{},
         py::call_guard<py::gil_scoped_release>(),
         "Eigenvalues (n_speeds, n_modes) with D = C + Ω G at each speed.");
+
+  py::class_<ModalOperator>(m, "ModalOperator",
+                            "The sparse pencil and K's factorisation of one model, kept between "
+                            "modal calls (same answers as modal(M, C + omega G, K, ...)).")
+      .def(py::init<const Eigen::MatrixXd&, const Eigen::MatrixXd&, const Eigen::MatrixXd&,
+                    const Eigen::MatrixXd&>(),
+           py::arg("M"), py::arg("C"), py::arg("G"), py::arg("K"),
+           py::call_guard<py::gil_scoped_release>())
+      .def("modal", &ModalOperator::modal, py::arg("omega"), py::arg("xy_pairs"),
+           py::arg("n_modes"), py::arg("with_modes") = true,
+           py::arg("rot_pairs") = std::vector<std::pair<int, int>>{},
+           py::call_guard<py::gil_scoped_release>())
+      .def_property_readonly("size", &ModalOperator::size)
+      .def_property_readonly("factored", &ModalOperator::factored);
 
   py::class_<Reduction>(m, "Reduction")
       .def_readonly("masters", &Reduction::masters)

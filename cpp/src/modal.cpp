@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <exception>
+#include <functional>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -139,12 +140,13 @@ std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero)
 }
 }  // namespace
 
-namespace {
-ModalResult modal_impl(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
+namespace detail {
+ModalResult modal_impl(const Eigen::MatrixXd& M,
+                       const std::function<const Eigen::MatrixXd&()>& dense_D,
                        const Eigen::MatrixXd& K, const std::vector<std::pair<int, int>>& xy_pairs,
                        int n_modes, bool with_modes,
-                       const std::vector<std::pair<int, int>>& rot_pairs,
-                       Eigen::VectorXd* start) {
+                       const std::vector<std::pair<int, int>>& rot_pairs, Eigen::VectorXd* start,
+                       const SparsePencil* pre) {
   const Eigen::Index n = M.rows();
   Eigen::VectorXcd w;
   Eigen::MatrixXcd V;
@@ -157,7 +159,10 @@ ModalResult modal_impl(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
   // while rigid-body or overdamped roots crowd out the oscillating ones.
   for (int extra = 0; n > kDenseLimit && n_modes > 0 && extra <= 16; extra += 8) {
     if (2 * (n_modes + extra) + 30 >= n) break;
-    if (!detail::modal_shift_invert(M, D, K, n_modes + extra, w, V, start)) break;
+    const bool conv =
+        pre ? modal_shift_invert(*pre, n_modes + extra, w, V, start)
+            : modal_shift_invert(M, dense_D(), K, n_modes + extra, w, V, start);
+    if (!conv) break;
     idx = pick_modes(w, n_modes, zero);
     if (static_cast<int>(idx.size()) >= n_modes) {
       done = true;
@@ -167,6 +172,7 @@ ModalResult modal_impl(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
   if (!done) {
     // Dense path: eigenvalues only (LAPACK dgeev without vectors is ~3x cheaper), then one
     // inverse-iteration step on the quadratic pencil for each kept root.
+    const Eigen::MatrixXd& D = dense_D();
     const Eigen::MatrixXd A = state_matrix(M, D, K);
     eig_general(A, w, nullptr);
     idx = pick_modes(w, n_modes, zero);
@@ -203,12 +209,18 @@ ModalResult modal_impl(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
   }
   return out;
 }
-}  // namespace
+}  // namespace detail
 
 ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K,
                   const std::vector<std::pair<int, int>>& xy_pairs, int n_modes,
                   bool with_modes, const std::vector<std::pair<int, int>>& rot_pairs) {
-  return modal_impl(M, D, K, xy_pairs, n_modes, with_modes, rot_pairs, nullptr);
+  const Eigen::Index n = M.rows();
+  require(M.cols() == n, shape_msg("M", n, n, M.rows(), M.cols()));
+  require(D.rows() == n && D.cols() == n, shape_msg("D", n, n, D.rows(), D.cols()));
+  require(K.rows() == n && K.cols() == n, shape_msg("K", n, n, K.rows(), K.cols()));
+  auto dense_D = [&D]() -> const Eigen::MatrixXd& { return D; };
+  return detail::modal_impl(M, dense_D, K, xy_pairs, n_modes, with_modes, rot_pairs, nullptr,
+                            nullptr);
 }
 
 CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
@@ -232,8 +244,10 @@ CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
 #pragma omp for schedule(static)
     for (Eigen::Index s = 0; s < speeds.size(); ++s) {
       try {
-        const ModalResult r = modal_impl(M, C + speeds(s) * G, K, xy_pairs, n_modes, false,
-                                         rot_pairs, &start);
+        const Eigen::MatrixXd D = C + speeds(s) * G;
+        auto dense_D = [&D]() -> const Eigen::MatrixXd& { return D; };
+        const ModalResult r = detail::modal_impl(M, dense_D, K, xy_pairs, n_modes, false,
+                                                 rot_pairs, &start, nullptr);
         for (Eigen::Index j = 0; j < r.eigenvalues.size(); ++j) {
           out.eigenvalues(s, j) = r.eigenvalues(j);
           out.whirl(s, j) = static_cast<int>(r.whirl[static_cast<std::size_t>(j)]);

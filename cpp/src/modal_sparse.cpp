@@ -11,38 +11,61 @@
 
 #include "modal_detail.hpp"
 #include "rotordyn/errors.hpp"
-#include "rotordyn/modal.hpp"
 
 namespace rotordyn::detail {
 
 namespace {
-Eigen::SparseMatrix<double> to_sparse(const Eigen::MatrixXd& X) {
-  return X.sparseView(0.0, 0.0);
+SpMat to_sparse(const Eigen::MatrixXd& X) { return X.sparseView(0.0, 0.0); }
+
+double frequency_scale(const Eigen::VectorXd& kd, const Eigen::VectorXd& md) {
+  return std::sqrt(kd.cwiseAbs().maxCoeff() / std::max(1e-300, md.cwiseAbs().maxCoeff()));
 }
 }  // namespace
+
+bool factor_at_zero(const SpMat& K, SpLU& lu) {
+  SpMat P = K;
+  P.makeCompressed();
+  lu.compute(P);
+  return lu.info() == Eigen::Success && std::isfinite(lu.logAbsDeterminant());
+}
 
 bool modal_shift_invert(const Eigen::MatrixXd& Md, const Eigen::MatrixXd& Dd,
                         const Eigen::MatrixXd& Kd, int n_modes, Eigen::VectorXcd& lambda,
                         Eigen::MatrixXcd& shapes, Eigen::VectorXd* start) {
-  const Eigen::Index n = Md.rows(), N = 2 * n;
-  const Eigen::SparseMatrix<double> M = to_sparse(Md), D = to_sparse(Dd), K = to_sparse(Kd);
+  const SpMat M = to_sparse(Md), D = to_sparse(Dd), K = to_sparse(Kd);
+  SparsePencil p;
+  p.M = &M;
+  p.D = &D;
+  p.K = &K;
+  p.scale = frequency_scale(Kd.diagonal(), Md.diagonal());
+  return modal_shift_invert(p, n_modes, lambda, shapes, start);
+}
+
+bool modal_shift_invert(const SparsePencil& p, int n_modes, Eigen::VectorXcd& lambda,
+                        Eigen::MatrixXcd& shapes, Eigen::VectorXd* start) {
+  const SpMat &M = *p.M, &D = *p.D, &K = *p.K;
+  const Eigen::Index n = M.rows(), N = 2 * n;
   // Shift: σ = 0 unless K is singular (free-free rotor); then a small negative real shift.
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  // A factorisation of K made beforehand (p.lu0) is the σ = 0 attempt that succeeded.
+  SpLU local;
+  const SpLU* lu_ptr = p.lu0;
   double sigma = 0.0;
-  const double scale = std::sqrt(Kd.diagonal().cwiseAbs().maxCoeff() /
-                                 std::max(1e-300, Md.diagonal().cwiseAbs().maxCoeff()));
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    Eigen::SparseMatrix<double> P = K + sigma * D + (sigma * sigma) * M;
-    P.makeCompressed();
-    lu.compute(P);
-    if (lu.info() == Eigen::Success) {
-      // SparseLU may "succeed" on a numerically singular matrix: check the pivots.
-      const double ld = lu.logAbsDeterminant();
-      if (std::isfinite(ld)) break;
+  if (!lu_ptr) {
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      SpMat P = K + sigma * D + (sigma * sigma) * M;
+      P.makeCompressed();
+      local.compute(P);
+      if (local.info() == Eigen::Success) {
+        // SparseLU may "succeed" on a numerically singular matrix: check the pivots.
+        const double ld = local.logAbsDeterminant();
+        if (std::isfinite(ld)) break;
+      }
+      sigma = -1e-3 * p.scale * (attempt + 1);
     }
-    sigma = -1e-3 * scale * (attempt + 1);
+    if (local.info() != Eigen::Success) return false;
+    lu_ptr = &local;
   }
-  if (lu.info() != Eigen::Success) return false;
+  const SpLU& lu = *lu_ptr;
 
   auto op = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {
     const auto a = x.head(n), b = x.tail(n);

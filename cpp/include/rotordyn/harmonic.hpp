@@ -14,4 +14,15 @@ Eigen::MatrixXcd harmonic_response(const Eigen::MatrixXd& M, const Eigen::Matrix
                                    const Eigen::MatrixXd& K, double omega,
                                    const Eigen::MatrixXcd& F);
 
+/// The response of a speed-independent model M, C, G, K (D = C + ω G: a rotor on linear
+/// supports, the unbalance turning with it) at every angular frequency omegas (n_freq,) rad/s
+/// to the forcing ω² F (F: (n,) complex, per ω²), seen through the outputs O (r, n):
+/// Y (n_freq, r) = O X(ω). One symbolic analysis of the pencil's pattern (the union of
+/// M, C, G, K), then one numeric LU and solve per frequency: each frequency's numbers are those
+/// harmonic_response(M, C + ω G, K, ω, ω² F) factorises. Errors as harmonic_response.
+Eigen::MatrixXcd harmonic_sweep(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
+                                const Eigen::MatrixXd& G, const Eigen::MatrixXd& K,
+                                const Eigen::VectorXd& omegas, const Eigen::VectorXcd& F,
+                                const Eigen::MatrixXd& O);
+
 }  // namespace rotordyn

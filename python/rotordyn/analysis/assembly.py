@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rotordyn import _core
-from rotordyn.analysis.modes import RotorMatrices
+from rotordyn.analysis.modes import rotor_matrices
 from rotordyn.errors import InputError
 from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.model.system import System
@@ -48,7 +48,7 @@ class Assembled:
 
     def __init__(self, system: System):
         self.system = system
-        self.rotor = RotorMatrices(system)
+        self.rotor = rotor_matrices(system)
         M, K, C, G = self.rotor.matrices()
         n_r = M.shape[0]
         nodes = system.rotor.station_nodes()

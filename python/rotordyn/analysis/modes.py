@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import threading
+from collections import OrderedDict
+
 from rotordyn._common.threads import limited_blas
 
 import numpy as np
@@ -36,6 +39,9 @@ class RotorMatrices:
         self.method = method
         self.full = _core.constrain(system.to_core())
         self.reduction = None
+        self._mats = None
+        self._op = None
+        self._xy = self._rot = None
         if method != "none":
             if not system.reduction.master_stations:
                 raise InputError(
@@ -47,21 +53,41 @@ class RotorMatrices:
 
     def matrices(self):
         """(M, K, C, G) of the analysed model (reduced when a reduction is in use)."""
-        f = self.full
-        if self.reduction is None:
-            return f.M, f.K, f.C, f.G
-        r = self.reduction
-        return r.M, r.K, r.reduce(f.C), r.reduce(f.G)
+        if self._mats is None:
+            f = self.full
+            if self.reduction is None:
+                mats = (f.M, f.K, f.C, f.G)
+            else:
+                r = self.reduction
+                mats = (r.M, r.K, np.asarray(r.reduce(f.C)), np.asarray(r.reduce(f.G)))
+                for a in mats[2:]:
+                    a.flags.writeable = False  # shared through the cache: never altered
+            self._mats = mats
+        return self._mats
+
+    def operator(self):
+        """The C++ ``ModalOperator`` of :meth:`matrices` (sparse pencil and K's factorisation,
+        made on first use and kept with this object): a modal call on it costs its Arnoldi
+        iteration, with the answer of ``_core.modal(M, C + ΩG, K, ...)`` to round-off."""
+        if self._op is None:
+            M, K, C, G = self.matrices()
+            self._op = _core.ModalOperator(M, C, G, K)
+        return self._op
 
     def xy_pairs(self):
-        if self.reduction is None:
-            return list(self.full.xy)
-        n_m = len(self.system.reduction.master_stations)
-        return [(2 * i, 2 * i + 1) for i in range(n_m)]
+        if self._xy is None:
+            if self.reduction is None:
+                self._xy = list(self.full.xy)
+            else:
+                n_m = len(self.system.reduction.master_stations)
+                self._xy = [(2 * i, 2 * i + 1) for i in range(n_m)]
+        return list(self._xy)  # a copy: the cached list is shared
 
     def rot_pairs(self):
         """(iθx, iθy) pairs in the analysed coordinates (none for a reduced model)."""
-        return list(self.full.rot) if self.reduction is None else []
+        if self._rot is None:
+            self._rot = list(self.full.rot) if self.reduction is None else []
+        return list(self._rot)
 
     def expand(self, q: np.ndarray) -> np.ndarray:
         """Analysed coordinates (n, k) → full free-free FE DOFs (4 n_nodes, k), zeros at the
@@ -73,10 +99,67 @@ class RotorMatrices:
         return out
 
 
+# Cache of the constrained (and reduced) matrices per (System, method), keyed by value: a System
+# is a frozen dataclass of frozen parts, so an equal System has the same matrices, and a changed
+# model (dataclasses.replace) is a different key. The entries are read-only (the C++ object's
+# arrays are exposed as read-only views), so a caller cannot alter a cached matrix; nothing
+# else is kept, so a call's answer does not depend on what ran before it. Bounded by bytes:
+# the 404-DOF rotor of benchmarks/bench_rotor.py takes 5.2 MB; a model above the budget is
+# never cached (its assembly is small next to its eigen-analysis anyway).
+CACHE_BYTES = 256 * 2**20
+_cache: OrderedDict = OrderedDict()
+_cache_bytes = 0
+_cache_lock = threading.Lock()
+
+
+def _nbytes(rm: RotorMatrices) -> int:
+    n = rm.full.M.shape[0]
+    b = 2 * 4 * 8 * n * n  # the matrices, and the modal operator's dense copies
+    if rm.reduction is not None:
+        b += 8 * rm.reduction.T.size + 4 * 8 * rm.reduction.M.size
+    return b
+
+
+def rotor_matrices(system: System, method: str | None = None) -> RotorMatrices:
+    """The :class:`RotorMatrices` of ``system`` (``method``: the reduction, default the
+    model's), built once per value of (system, method) and then shared (least recently used
+    entries dropped beyond ``CACHE_BYTES``). An unhashable system is built every time."""
+    global _cache_bytes
+    method = system.reduction.method if method is None else method
+    try:
+        key = (system, method)
+        hash(key)
+    except TypeError:
+        return RotorMatrices(system, method)
+    with _cache_lock:
+        hit = _cache.get(key)
+        if hit is not None:
+            _cache.move_to_end(key)
+            return hit
+    rm = RotorMatrices(system, method)  # outside the lock: other threads go on
+    nb = _nbytes(rm)
+    if nb <= CACHE_BYTES:
+        with _cache_lock:
+            if key not in _cache:
+                _cache[key] = rm
+                _cache_bytes += nb
+                while _cache_bytes > CACHE_BYTES:
+                    _, old = _cache.popitem(last=False)
+                    _cache_bytes -= _nbytes(old)
+    return rm
+
+
+def clear_cache() -> None:
+    """Drop every cached :class:`RotorMatrices` (benchmarks time cold calls with it)."""
+    global _cache_bytes
+    with _cache_lock:
+        _cache.clear()
+        _cache_bytes = 0
+
+
 def _result(rm: RotorMatrices, speed_hz: float, n_modes: int, model_name: str) -> ModesResult:
-    M, K, C, G = rm.matrices()
     w = hz_to_rad_s(speed_hz)
-    r = _core.modal(M, C + w * G, K, rm.xy_pairs(), n_modes, True, rm.rot_pairs())
+    r = rm.operator().modal(w, rm.xy_pairs(), n_modes, True, rm.rot_pairs())
     shapes = rm.expand(np.asarray(r.modes))  # (4 n_nodes, n_modes)
     n_nodes = shapes.shape[0] // 4
     return ModesResult(
@@ -131,13 +214,13 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
         v.integer("n_modes", n_modes, lo=1)
     method = system.reduction.method if reduction is None else reduction
     v.choice("reduction", method, REDUCTION_METHODS)
-    full_rm = RotorMatrices(system, "none")
+    full_rm = rotor_matrices(system, "none")
     n_full = full_rm.full.M.shape[0]
     if n_modes is not None:  # no more modes than coordinates (issue 13)
         n_modes = min(v.integer("n_modes", n_modes, lo=1), n_full)
     if method == "none":
         return _result(full_rm, speed_hz, n_modes or min(12, n_full), "full")
-    rm = RotorMatrices(system, method)
+    rm = rotor_matrices(system, method)
     n_red = rm.reduction.M.shape[0]
     k = min(n_modes or n_red, n_red)
     red = _result(rm, speed_hz, k, method)
@@ -160,7 +243,7 @@ def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
     v.integer("n_modes", n_modes, lo=1)
     if reduction is not None:
         v.choice("reduction", reduction, REDUCTION_METHODS)
-    rm = RotorMatrices(system, reduction)
+    rm = rotor_matrices(system, reduction)
     M, K, C, G = rm.matrices()
     # More modes than coordinates is not meaningful: capped at the model's size (issue 13:
     # n_modes=10**6 gave a 10^6-column NaN array).

@@ -20,7 +20,7 @@ from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled, gravity_load
 from rotordyn.analysis.equilibrium import equilibrium
-from rotordyn.analysis.modes import RotorMatrices
+from rotordyn.analysis.modes import rotor_matrices
 from rotordyn.bearings import BEARING_TYPES
 from rotordyn.errors import InputError
 from rotordyn.model.system import System
@@ -62,7 +62,7 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
     fields, never a deflection. See :class:`rotordyn.results.StaticResult` for the sign
     conventions."""
     g = float(system.gravity_m_s2)
-    rm = RotorMatrices(system, "none")
+    rm = rotor_matrices(system, "none")
     full = rm.full
     dofs = np.asarray(full.dofs)
     n_full = 4 * (system.rotor.n_elements + 1)

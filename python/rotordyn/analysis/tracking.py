@@ -84,9 +84,15 @@ def track_modes(eigenvalues: np.ndarray, shapes=None, *, weight: np.ndarray | No
 
     ids = np.full((n_pts, k), -1, dtype=np.int64)
     next_id = 0
-    # Last seen eigenvalue and shape of every id.
-    last_lam: dict[int, complex] = {}
-    last_phi: dict[int, np.ndarray] = {}
+    # Where every id was last seen: (point, slot), in id order (ids are 0, 1, ... in order of
+    # creation). The weighted shapes W φ and the norms φ^H W φ of every point are formed once
+    # (one batched product) instead of at every comparison; the MAC is then the same quotient.
+    last_pt: list[int] = []
+    last_slot: list[int] = []
+    if phi is not None:
+        wphi = phi if weight is None else np.matmul(np.asarray(weight), phi)
+        with np.errstate(invalid="ignore"):
+            nrm = np.real(np.einsum("pik,pik->pk", phi.conj(), wphi))
     for i in range(n_pts):
         present = np.isfinite(lam[i])
         if phi is not None:
@@ -94,16 +100,15 @@ def track_modes(eigenvalues: np.ndarray, shapes=None, *, weight: np.ndarray | No
         slots = np.flatnonzero(present)
         if slots.size == 0:
             continue
-        known = sorted(last_lam)
         assigned = {}
-        if known:
-            lk = np.array([last_lam[j] for j in known])
+        if last_pt:
+            kp, ks = np.asarray(last_pt), np.asarray(last_slot)
+            lk = lam[kp, ks]
             li = lam[i, slots]
             scale = max(np.max(np.abs(lk)), np.max(np.abs(li)), 1e-300)
             dist = np.abs(li[:, None] - lk[None, :]) / scale
             if phi is not None:
-                pk = np.stack([last_phi[j] for j in known], axis=1)
-                m = mac(phi[i][:, slots], pk, weight)
+                m = _mac_known(phi[i][:, slots], nrm[i, slots], wphi[kp, :, ks].T, nrm[kp, ks])
             else:
                 m = np.ones_like(dist)
             cost = (1.0 - m) + eig_weight * dist
@@ -111,14 +116,24 @@ def track_modes(eigenvalues: np.ndarray, shapes=None, *, weight: np.ndarray | No
             for r, c in zip(rows, cols):
                 if (m[r, c] < min_mac) if phi is not None else (dist[r, c] > 0.1):
                     continue
-                assigned[slots[r]] = known[c]
+                assigned[slots[r]] = int(c)
         for s in slots:
             if s not in assigned:
                 assigned[s] = next_id
                 next_id += 1
+                last_pt.append(i)
+                last_slot.append(int(s))
             j = assigned[s]
             ids[i, s] = j
-            last_lam[j] = lam[i, s]
-            if phi is not None:
-                last_phi[j] = phi[i][:, s]
+            last_pt[j], last_slot[j] = i, int(s)
     return ids
+
+
+def _mac_known(a: np.ndarray, na: np.ndarray, wb: np.ndarray, nb: np.ndarray) -> np.ndarray:
+    """:func:`mac` from precomputed parts: shapes ``a`` (n, ka) with norms ``na`` (ka,), the
+    weighted shapes W b (n, kb) with norms ``nb`` (kb,)."""
+    cross = np.abs(a.conj().T @ wb) ** 2
+    den = np.outer(na, nb)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out = np.where(den > 0, cross / np.where(den > 0, den, 1.0), 0.0)
+    return np.clip(out, 0.0, 1.0)

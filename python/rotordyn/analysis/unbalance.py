@@ -79,6 +79,30 @@ def _merge(a: UnbalanceResult, b: UnbalanceResult) -> UnbalanceResult:
                            np.concatenate([a.max_real_1_per_s, b.max_real_1_per_s])[o])
 
 
+def _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X, Y, status):
+    """A system without bearing elements: its linear model is M, C + ΩG, K at every speed
+    and its equilibrium does not depend on the speed, so the equilibrium is solved once (its
+    status is every speed's) and all speeds are one C++ call (one symbolic analysis of the
+    pencil, a numeric LU per speed): the numbers each speed factorises are those of the
+    per-speed loop (K_H = D_H = 0). Fills X, Y, status in place."""
+    from rotordyn.analysis.equilibrium import equilibrium
+    from rotordyn.errors import RotordynError
+
+    try:
+        e = equilibrium(system, float(sp[0]), chamber_pressure_pa, config_ay_m)
+    except RotordynError:
+        status[:] = "error"
+        return
+    status[:] = e.status
+    if e.status not in CONVERGED:
+        return
+    m = asm.model
+    O = np.concatenate(Cout, axis=0)  # (2 n_out, n): x, y of each output station
+    Z = np.asarray(_core.harmonic_sweep(m.M, m.C, m.G, m.K, hz_to_rad_s(sp), F1, O))
+    X[:] = Z[:, 0::2]
+    Y[:] = Z[:, 1::2]
+
+
 @limited_blas
 def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
                        chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None,
@@ -143,6 +167,11 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     Y = np.full((sp.size, len(outs)), np.nan + 0j)
     status = np.empty(sp.size, dtype=object)
     max_real = np.full(sp.size, np.nan) if check else None
+    if not system.bearings and not check:
+        _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X, Y,
+                      status)
+        return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub),
+                               operating_speed_hz, max_real)
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
                                               method, continue_on=CONVERGED):
         status[i] = stt

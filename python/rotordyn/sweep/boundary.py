@@ -1,14 +1,21 @@
 """Adaptive stability boundary (paper Fig. 9/10 at the resolution of a fine grid for a few
 percent of its points).
 
-The coarse grid of the spec's two axes ``x``, ``y`` is evaluated first (max Re λ at each
-point). A cell whose four corners do not all share one state (stable, unstable, failed) holds
-the boundary: it is split in two along each axis whose step is still above the fine grid's,
-and the new corners are evaluated; this repeats until the mixed cells are one fine step wide.
-The fine grid has ``resolution`` points per axis and nests the coarse one (the ratio of steps
-is a power of two). The boundary is the zero contour of max Re λ over the evaluated fine
-points (linear interpolation on each cell edge), stored as polylines in ``_boundary.parquet``;
-the evaluated points are the dataset's rows, with the ``level`` that asked for them.
+The fine grid has ``resolution`` points per axis over the range of the spec's two axes ``x``,
+``y``; the coarse grid (the spec's values, each on its nearest fine node, so any resolution
+fits) is evaluated first (max Re λ at each point). A cell whose four corners do not all share
+one state (stable, unstable, failed) holds the boundary: it is split at its middle fine node
+along each axis where it is wider than one fine step (halves differ by one step when the width
+is odd), and the new corners are evaluated; this repeats until the mixed cells are one fine
+step wide (:class:`Refinement`). The boundary is the zero contour of max Re λ over the
+evaluated fine points (linear interpolation on each cell edge), stored as polylines in
+``_boundary.parquet``; the evaluated points are the dataset's rows, with the ``level`` that
+asked for them.
+
+With ``z`` (a third axis, e.g. speed) the same refinement runs over boxes of eight corners and
+finds the boundary surface over (x, y, z); it is stored as the zero contour of every z slice
+of the fine grid that holds a sign change (a ``z`` column beside ``line``, ``vertex``, ``x``,
+``y``).
 
 Limitation (as any marching refinement): a stable or unstable island smaller than a coarse
 cell, whose corners all share one state, is not seen; choose the coarse grid accordingly.
@@ -16,6 +23,7 @@ cell, whose corners all share one state, is not seen; choose the coarse grid acc
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 from pathlib import Path
@@ -25,7 +33,7 @@ import numpy as np
 from rotordyn._common.info import __version__
 from rotordyn.sweep.execution import (Dask, Progress, SweepInterrupted, SweepResult, Threads,
                                       group_size)
-from rotordyn.sweep.spec import fine_axes
+from rotordyn.sweep.spec import boundary_axes, fine_axes
 from rotordyn.sweep.store import BOUNDARY, Store
 from rotordyn.sweep.work import Job
 
@@ -44,6 +52,44 @@ def _classify(table) -> dict[int, tuple[int, float, float]]:
     return out
 
 
+def _halves(a: int, b: int) -> tuple[tuple[int, int], ...]:
+    """The fine-index interval [a, b] split at its middle node, or itself if one step wide."""
+    if b - a <= 1:
+        return ((a, b),)
+    m = (a + b) // 2
+    return ((a, m), (m, b))
+
+
+class Refinement:
+    """The refinement's plan in fine indices, independent of how points are evaluated, in
+    two or three dimensions (a boundary curve or surface).
+
+    ``points`` holds the fine nodes (index tuples) the current ``level`` needs (some may be
+    known already); :meth:`advance` takes the states of all nodes evaluated so far (mapping
+    index tuple -> 0 stable, 1 unstable, 2 failed) and moves to the next level. A cell is a
+    tuple of (lo, hi) fine-index intervals, one per axis, of any widths."""
+
+    def __init__(self, *nodes):
+        grids = [sorted(n) for n in nodes]
+        self.cells = list(itertools.product(*[list(zip(g, g[1:])) for g in grids]))
+        self.points = set(itertools.product(*grids))
+        self.level = 0
+
+    def advance(self, state) -> bool:
+        """Split the mixed cells; False (and no points) when none is left to split."""
+        cells, pts = [], set()
+        for cell in self.cells:
+            if all(b - a <= 1 for a, b in cell) or len(
+                    {state[c] for c in itertools.product(*cell)}) == 1:
+                continue
+            for sub in itertools.product(*[_halves(a, b) for a, b in cell]):
+                cells.append(sub)
+                pts.update(itertools.product(*sub))
+        self.cells, self.points = cells, pts
+        self.level += 1
+        return bool(cells)
+
+
 def polylines(xs, ys, z) -> list[np.ndarray]:
     """Zero contour of ``z`` (nx, ny; NaN = not evaluated) as (k, 2) polylines."""
     import contourpy
@@ -54,14 +100,26 @@ def polylines(xs, ys, z) -> list[np.ndarray]:
     return [ln[:, ::-1] for ln in gen.lines(0.0) if len(ln) >= 2]
 
 
+class _States:
+    """(i, j) -> state view of the point_id-keyed results."""
+
+    def __init__(self, state, pid):
+        self.state, self.pid = state, pid
+
+    def __getitem__(self, idx):
+        return self.state[self.pid(*idx)][0]
+
+
 def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None, threads=None,
                  resume=True, progress=None, worker_timeout=30.0):
     import pyarrow as pa
     import pyarrow.parquet as pq
 
-    ax, step = fine_axes(spec)
-    x, y = spec.options["x"], spec.options["y"]
-    nx, ny = len(ax[x]), len(ax[y])
+    ax, nodes = fine_axes(spec)
+    refined = boundary_axes(spec)
+    x, y = refined[:2]
+    z = refined[2] if len(refined) == 3 else None
+    shape = tuple(len(ax[a]) for a in refined)
     header = {**header, "axes": ax, "n_points": None, "n_chunks": None, "group": None}
     store = Store(out, header, resume=resume, group=1)
     job = Job(spec.name, model_toml, spec.analysis, spec.options, ax)
@@ -71,20 +129,19 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                 "units": header["units"]}
     base = int(np.ravel_multi_index(tuple(0 for _ in ax), tuple(len(v) for v in ax.values())))
 
-    def pid(i, j):
-        return base + i * ny + j
+    strides = [int(np.prod(shape[d + 1:])) for d in range(len(shape))]
 
-    sx, sy = step[x], step[y]
-    pts = {(i, j) for i in range(0, nx, sx) for j in range(0, ny, sy)}
-    cells = [(i, j) for i in range(0, nx - 1, sx) for j in range(0, ny - 1, sy)]
+    def pid(*idx):
+        return base + sum(i * st for i, st in zip(idx, strides))
+
+    plan = Refinement(*[nodes[a] for a in refined])
     state: dict[int, tuple] = {}
     cid = 0
     ex = None
     bar = Progress(1, 0, {}, enabled=None if progress is None else bool(progress))
     try:
-        level = 0
         while True:
-            new = sorted(pid(i, j) for i, j in pts if pid(i, j) not in state)
+            new = sorted(q for q in (pid(*idx) for idx in plan.points) if q not in state)
             chunks = [(cid + k, new[a:a + spec.chunk_size])
                       for k, a in enumerate(range(0, len(new), spec.chunk_size))]
             cid += len(chunks)
@@ -99,7 +156,7 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                 else:
                     todo.append((c, 0, 0, pl))
             if todo:
-                job.level = level
+                job.level = plan.level
                 if ex is None:
                     ex = (Threads(threads) if threads is not None else
                           Dask(scheduler, workers or min(len(todo), os.cpu_count() or 1),
@@ -108,24 +165,7 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                     store.add(c, table, cnt, 0)
                     state.update(_classify(table))
                     bar.update(cnt)
-            if sx == 1 and sy == 1:
-                break
-            mixed = []
-            for i, j in cells:
-                cs = {state[pid(a, b)][0] for a in (i, min(i + sx, nx - 1))
-                      for b in (j, min(j + sy, ny - 1))}
-                if len(cs) > 1:
-                    mixed.append((i, j))
-            hx, hy = max(1, sx // 2), max(1, sy // 2)
-            cells, pts = [], set()
-            for i, j in mixed:
-                for a in range(i, i + sx, hx):
-                    for b in range(j, j + sy, hy):
-                        cells.append((a, b))
-                        pts.update({(a, b), (a + hx, b), (a, b + hy), (a + hx, b + hy)})
-            sx, sy = hx, hy
-            level += 1
-            if not cells:
+            if not plan.advance(_States(state, pid)):
                 break
     except KeyboardInterrupt:
         bar.close()
@@ -139,27 +179,37 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
         bar.close()
         store.group = group_size(cid, spec.max_files)
         store.compact_complete(cid)
-        z = np.full((nx, ny), np.nan)
-        for p, (s, v, _) in state.items():
-            i, j = divmod(p - base, ny)
-            z[i, j] = v
-        lines = polylines(ax[x], ax[y], z)
+        vals = np.full(shape, np.nan)
+        for p, (_, v, _) in state.items():
+            vals[np.unravel_index(p - base, shape)] = v
         rows = {"line": [], "vertex": [], x: [], y: []}
-        for k, ln in enumerate(lines):
-            rows["line"] += [k] * len(ln)
-            rows["vertex"] += list(range(len(ln)))
-            rows[x] += ln[:, 0].tolist()
-            rows[y] += ln[:, 1].tolist()
+        if z is not None:
+            rows[z] = []
+        slices = [(None, vals)] if z is None else [(k, vals[:, :, k]) for k in range(shape[2])]
+        n_line = 0
+        for k, zk in slices:
+            fin = zk[np.isfinite(zk)]
+            if z is not None and (fin.size == 0 or (fin < 0).all() or (fin >= 0).all()):
+                continue  # nothing evaluated on this slice changes sign
+            for ln in polylines(ax[x], ax[y], zk):
+                rows["line"] += [n_line] * len(ln)
+                rows["vertex"] += list(range(len(ln)))
+                rows[x] += ln[:, 0].tolist()
+                rows[y] += ln[:, 1].tolist()
+                if z is not None:
+                    rows[z] += [ax[z][k]] * len(ln)
+                n_line += 1
         t = pa.table({"line": pa.array(rows["line"], pa.int64()),
                       "vertex": pa.array(rows["vertex"], pa.int64()),
-                      x: pa.array(rows[x], pa.float64()), y: pa.array(rows[y], pa.float64())})
+                      **{a: pa.array(rows[a], pa.float64()) for a in refined}})
         buf = pa.BufferOutputStream()
         pq.write_table(t, buf)
         store.add_aux(BOUNDARY, buf.getvalue().to_pybytes())
         entries = store.chunk_entries()
         counts = {k: sum(c.get(k, 0) for c in entries.values())
                   for k in ("ok", "failed", "unstable")}
-        man = {**header, "n_chunks": cid, "n_points": len(state), "fine_points": nx * ny}
+        man = {**header, "n_chunks": cid, "n_points": len(state),
+               "fine_points": int(np.prod(shape))}
         return SweepResult(Path(out), man, len(entries), cid, counts)
     finally:
         store.close()

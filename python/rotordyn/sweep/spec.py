@@ -97,7 +97,8 @@ OPTIONS = {
     "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000)},
     "threshold": {"vary": _opt_axis, "exclude_sleeve_modes": _opt_bool,
                   "xtol": _opt_range(0.0, math.inf)},
-    "boundary": {"x": _opt_axis, "y": _opt_axis, "resolution": _opt_int(3, 100001),
+    "boundary": {"x": _opt_axis, "y": _opt_axis, "z": _opt_axis,
+                 "resolution": _opt_int(3, 100001),
                  "exclude_sleeve_modes": _opt_bool},
     "unbalance": {**_LIN, "unbalances": _opt_unbalances, "stations": _opt_stations,
                   "operating_speed_hz": _opt_operating},
@@ -195,30 +196,43 @@ def _check_model_axis(system, name: str, vals: list) -> None:
             raise InputError(f"grid.{name}[{i}]: {msg}") from None
 
 
+def boundary_axes(spec) -> tuple[str, ...]:
+    """The refined axes of a boundary sweep: (x, y), or (x, y, z) for a boundary surface."""
+    o = spec.options
+    return (o["x"], o["y"]) + ((o["z"],) if o.get("z") else ())
+
+
 def fine_axes(spec) -> tuple[dict, dict]:
-    """(ordered fine axes: fixed axes first, then x, then y; per-axis coarse step in fine
-    index units)."""
-    x, y, res = spec.options["x"], spec.options["y"], spec.options["resolution"]
-    fixed = {k: val for k, val in spec.axes.items() if k not in (x, y)}
+    """(ordered fine axes: fixed axes first, then x, y (and z); per-axis coarse nodes as sorted
+    fine indices, both ends included).
+
+    The fine axis has ``resolution`` evenly spaced values from the coarse axis' first to its
+    last value; each coarse value is placed on the nearest fine node (index
+    ``k (resolution - 1) / (n0 - 1)`` rounded), so any resolution >= the coarse count fits:
+    the coarse cells are then ``(resolution - 1) / (n0 - 1)`` fine steps wide, rounded."""
+    res = spec.options["resolution"]
+    refined = boundary_axes(spec)
+    fixed = {k: val for k, val in spec.axes.items() if k not in refined}
     for k, val in fixed.items():
         if len(val) != 1:
             raise InputError(f"grid.{k}: a boundary sweep takes one value for every axis but "
-                             f"{x} and {y}, got {len(val)}")
+                             f"{', '.join(refined)}, got {len(val)}")
     ax = dict(fixed)
-    step = {}
-    for a in (x, y):
+    nodes = {}
+    for a in refined:
         c = spec.axes[a]
-        ratio = (res - 1) // (len(c) - 1)
-        if ratio & (ratio - 1):
-            raise InputError(f"options.resolution: ({res} - 1) / ({len(c)} - 1) = {ratio} "
-                             f"must be a power of two for grid.{a}")
-        f = _axis(a, {"start": c[0], "stop": c[-1], "num": res})
-        if any(abs(f[i * ratio] - c[i]) > 1e-12 * max(1.0, abs(c[i])) for i in range(len(c))):
+        n0 = len(c)
+        if res < n0:
+            raise InputError(f"options.resolution: expected >= {n0} (the number of values "
+                             f"of grid.{a}, the coarse grid), got {res}")
+        even = _axis(a, {"start": c[0], "stop": c[-1], "num": n0})
+        if any(abs(e - v) > 1e-12 * max(1.0, abs(v)) for e, v in zip(even, c)):
             raise InputError(f"grid.{a}: the boundary's coarse grid must be a "
                              "{start, stop, num} range (evenly spaced)")
-        ax[a] = f
-        step[a] = ratio
-    return ax, step
+        ax[a] = _axis(a, {"start": c[0], "stop": c[-1], "num": res})
+        # nearest fine node, in integers (halves round up): exact for any sizes
+        nodes[a] = sorted({(2 * k * (res - 1) + n0 - 1) // (2 * (n0 - 1)) for k in range(n0)})
+    return ax, nodes
 
 
 def _flatten(grid: dict, prefix: str = "") -> dict:
@@ -349,21 +363,16 @@ class SweepSpec:
                                  f"chamber_pressure_pa, config_ay_m, got {ax!r}")
         if a == "boundary":
             x, y = self.options["x"], self.options["y"]
-            for k, ax in (("x", x), ("y", y)):
+            z = self.options.get("z")
+            for k, ax in (("x", x), ("y", y)) + ((("z", z),) if z else ()):
                 if ax not in self.axes or len(self.axes[ax]) < 2:
                     raise InputError(f"options.{k}: {ax!r} must be a grid axis with >= 2 "
                                      "values (the coarse grid)")
             if x == y:
                 raise InputError("options.y: must differ from options.x")
+            if z and z in (x, y):
+                raise InputError("options.z: must differ from options.x and options.y")
             fine_axes(self)
-            res = self.options["resolution"]
-            for k, ax in (("x", x), ("y", y)):
-                n0 = len(self.axes[ax])
-                if (res - 1) % (n0 - 1):
-                    raise InputError(
-                        f"options.resolution: {res} - 1 must be a multiple of the coarse "
-                        f"grid's {n0} - 1 intervals of grid.{ax} (the refined grid nests "
-                        "the coarse one)")
         if a == "run-up":
             if "speed_hz" in self.axes:
                 raise InputError("grid.speed_hz: a run-up takes its speeds from options "

@@ -222,6 +222,19 @@ def _stab_batch(job, seg, out, at, restart_first):
     IT = np.asarray(res.iterations)
     modes = res.modes
     names = np.array([WHIRL_NAMES[-1], WHIRL_NAMES[0], WHIRL_NAMES[1]])
+    # Every per-mode column for the whole batch at once (elementwise: the same numbers as
+    # point by point; slots past a point's n_eig are padding, never read).
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        MS = stable_modes(EV)
+        RE = settled_real(EV)  # round-off of an undamped mode is 0, not a sign
+        AB = np.abs(EV)
+        DR = np.where(AB > 0, -RE / AB, np.nan)
+        LD = np.where(EV.imag != 0, -2 * np.pi * RE / EV.imag, np.nan)
+        FR = EV.imag / (2 * np.pi)
+    WN = names[np.clip(WH, -1, 1) + 1]
+    KIND = np.where(SS > 0.5, "sleeve", "rotor")
+    jx = R[:, bc.jx] if bc else None
+    jy = R[:, bc.jy] if bc else None
     for k, it in enumerate(seg):
         row = it[0]
         st = status[k] if status[k] in STATUS else "error"
@@ -230,21 +243,16 @@ def _stab_batch(job, seg, out, at, restart_first):
             out[at + k] = (fail_row(row, st, message[k] or "no equilibrium"), None, None)
             continue
         lam = EV[k, :ke]
-        ms = stable_modes(lam)
-        re = settled_real(lam)  # round-off of an undamped mode is 0, not a sign
-        with np.errstate(divide="ignore", invalid="ignore"):
-            dr = np.where(np.abs(lam) > 0, -re / np.abs(lam), np.nan)
-            ld = np.where(lam.imag != 0, -2 * np.pi * re / lam.imag, np.nan)
+        ms = MS[k, :ke]
         hm = H[k]
-        out[at + k] = ({**row, "_n": ke, "journal_x_m": float(R[k, bc.jx]) if bc else math.nan,
-                        "journal_y_m": float(R[k, bc.jy]) if bc else math.nan,
+        out[at + k] = ({**row, "_n": ke, "journal_x_m": float(jx[k]) if bc else math.nan,
+                        "journal_y_m": float(jy[k]) if bc else math.nan,
                         "h_min_m": float(np.nanmin(hm)) if hm.size else math.nan,
                         "iterations": int(IT[k]), "point_stable": bool(ms.all()),
                         "max_real_1_per_s": float(lam.real.max()), "mode_id": np.arange(ke),
-                        "mode": np.arange(1, ke + 1), "freq_hz": lam.imag / (2 * np.pi),
-                        "eig_real_1_per_s": lam.real, "damping_ratio": dr, "log_dec": ld,
-                        "whirl": names[WH[k, :ke] + 1],
-                        "kind": np.where(SS[k, :ke] > 0.5, "sleeve", "rotor"),
+                        "mode": np.arange(1, ke + 1), "freq_hz": FR[k, :ke],
+                        "eig_real_1_per_s": lam.real, "damping_ratio": DR[k, :ke],
+                        "log_dec": LD[k, :ke], "whirl": WN[k, :ke], "kind": KIND[k, :ke],
                         "mode_stable": ms, "status": st, "message": message[k]},
                        lam, modes[k])
 

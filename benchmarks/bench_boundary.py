@@ -1,0 +1,152 @@
+"""The adaptive Fig. 9 boundary at any resolution (issue 22): points evaluated and time for
+the boundary of the rig at 50 Hz over (a_y, p_c) from a 26 x 26 coarse grid, against the full
+grid of the same resolution, and its crossings on sampled columns against the same columns
+evaluated densely (every fine node, through the same chunk function).
+
+    .venv/bin/python benchmarks/bench_boundary.py [--resolution 1001] [--coarse 26]
+        [--columns 3] [--threads 2]
+
+Wall and CPU time of the process side by side (the sweep runs in threads of this process, so
+the CPU time counts both), the load average before and after. One BLAS/OpenMP thread per
+thread.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import sys  # noqa: E402
+import tempfile  # noqa: E402
+import time  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(__file__))
+from _common import footer, header  # noqa: E402
+
+import rotordyn.sweep as sw  # noqa: E402
+from rotordyn.sweep import run_sweep  # noqa: E402
+from rotordyn.sweep.spec import SweepSpec, fine_axes  # noqa: E402
+from rotordyn.sweep.work import Job, run_chunk  # noqa: E402
+
+SPEC = """
+schema = "rotordyn/sweep/1"
+name = "fig9-boundary-bench"
+model = "paper-rig"
+analysis = "boundary"
+chunk_size = 50
+
+[grid]
+config_ay_m = {{start = -2.5e-3, stop = 2.5e-3, num = {n0}}}
+chamber_pressure_pa = {{start = 0.0, stop = 0.3e6, num = {n0}}}
+speed_hz = {speed}
+
+[options]
+x = "config_ay_m"
+y = "chamber_pressure_pa"
+resolution = {res}
+{zopt}"""
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--resolution", type=int, default=1001)
+    ap.add_argument("--coarse", type=int, default=26)
+    ap.add_argument("--columns", type=int, default=3, help="dense columns checked")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--surface", action="store_true",
+                    help="the 3-D boundary over a_y x p_c x speed (30-70 Hz, --coarse-z values)")
+    ap.add_argument("--coarse-z", type=int, default=9)
+    args = ap.parse_args(argv)
+    dim = 3 if args.surface else 2
+    header(f"bench_boundary: Fig. 9 boundary at {args.resolution}^{dim}", threads=1)
+    res, n0 = args.resolution, args.coarse
+    if args.surface:
+        return surface(args)
+    with tempfile.TemporaryDirectory() as d:
+        p = Path(d) / "s.toml"
+        p.write_text(SPEC.format(n0=n0, res=res, speed="50.0", zopt=""))
+        w0, c0 = time.perf_counter(), time.process_time()
+        r = run_sweep(p, Path(d) / "o", threads=args.threads, progress=False)
+        w, c = time.perf_counter() - w0, time.process_time() - c0
+        n = r.manifest["n_points"]
+        print(f"boundary at {res}x{res} from {n0}x{n0}: {n} points evaluated (goal <= 4,000 "
+              f"at 1001^2) vs {res * res:,} for the full grid: {res * res / n:.0f}x fewer; "
+              f"{w:.1f} s wall, {c:.1f} s CPU on {args.threads} threads; counts {r.counts}")
+        ds = sw.open(Path(d) / "o")
+        levels = ds.frame.groupby("level")["point_id"].nunique().to_dict()
+        print(f"points per refinement level: {levels}")
+        b = ds.boundary()
+        spec = SweepSpec.from_toml(p)
+        ax, _ = fine_axes(spec)
+        job = Job(spec.name, spec.load_model().to_toml(), spec.analysis, spec.options, ax)
+        xs, ys = np.asarray(ax["config_ay_m"]), np.asarray(ax["chamber_pressure_pa"])
+        ny = len(ys)
+        fr = ds.frame
+        # columns the boundary crosses (both states among its evaluated nodes), evenly spread
+        mixed = fr.groupby("config_ay_m")["point_stable"].nunique()
+        cand = np.searchsorted(xs, mixed[mixed > 1].index.to_numpy())
+        cols = cand[np.linspace(0, len(cand) - 1, args.columns).round().astype(int)]
+        w0, c0 = time.perf_counter(), time.process_time()
+        worst = 0.0
+        for i in cols:
+            t = run_chunk(job, 0, 0, 0, [i * ny + j for j in range(ny)])
+            z = np.asarray(t.column("max_real_1_per_s").to_pylist(), dtype=float)
+            st = np.where(np.isfinite(z), (z >= 0).astype(int), 2)
+            k = np.flatnonzero(st[1:] != st[:-1])
+            # the boundary's evaluated nodes on this column and their states
+            sub = fr[np.abs(fr["config_ay_m"] - xs[i]) <= 1e-15]
+            jj = np.searchsorted(ys, sub["chamber_pressure_pa"].to_numpy())
+            seen = np.zeros(ny, bool)
+            seen[jj] = True
+            zz = np.full(ny, np.nan)
+            zz[jj] = sub["max_real_1_per_s"].to_numpy()
+            stb = np.where(np.isfinite(zz), (zz >= 0).astype(int), 2)
+            kb = np.flatnonzero((stb[1:] != stb[:-1]) & seen[1:] & seen[:-1])
+            zc = [k_ for k_ in k if st[k_] != 2 and st[k_ + 1] != 2]
+            want = np.array([ys[k_] + (ys[k_ + 1] - ys[k_]) * z[k_] / (z[k_] - z[k_ + 1])
+                             for k_ in zc])
+            got = np.unique(b[np.abs(b["config_ay_m"] - xs[i]) <= 1e-15]["chamber_pressure_pa"])
+            if len(want) and len(got) == len(want):
+                worst = max(worst, float(np.max(np.abs(np.sort(got) - np.sort(want)))))
+            print(f"column a_y = {xs[i] * 1e3:+.4f} mm: dense crossings between nodes "
+                  f"{k.tolist()}, boundary's {kb.tolist()} -> "
+                  f"{'identical' if list(k) == list(kb) else 'DIFFERENT'}; contour p_c "
+                  f"{np.round(np.sort(got) / 1e3, 3).tolist()} kPa vs dense "
+                  f"{np.round(np.sort(want) / 1e3, 3).tolist()} kPa")
+        print(f"dense columns: {len(cols)} x {ny} points, {time.perf_counter() - w0:.1f} s wall, "
+              f"{time.process_time() - c0:.1f} s CPU; largest contour difference "
+              f"{worst:.3g} Pa")
+    footer()
+
+
+def surface(args):
+    """The boundary surface over a_y x p_c x speed: points, time, contours per slice."""
+    res, n0 = args.resolution, args.coarse
+    with tempfile.TemporaryDirectory() as d:
+        p = Path(d) / "s.toml"
+        p.write_text(SPEC.format(n0=n0, res=res,
+                                 speed=f"{{start = 30.0, stop = 70.0, num = {args.coarse_z}}}",
+                                 zopt='z = "speed_hz"\n'))
+        w0, c0 = time.perf_counter(), time.process_time()
+        r = run_sweep(p, Path(d) / "o", threads=args.threads, progress=False)
+        w, c = time.perf_counter() - w0, time.process_time() - c0
+        n = r.manifest["n_points"]
+        ds = sw.open(Path(d) / "o")
+        b = ds.boundary()
+        levels = ds.frame.groupby("level")["point_id"].nunique().to_dict()
+        print(f"boundary surface at {res}^3 from {n0}x{n0}x{args.coarse_z}: {n:,} points "
+              f"evaluated vs {res**3:,} for the full grid ({res**3 / n:.0f}x fewer); {w:.1f} s "
+              f"wall, {c:.1f} s CPU on {args.threads} threads (goal at 257^3: <= 60 s on 2 "
+              f"cores); {b['speed_hz'].nunique()} speed slices with a contour; counts "
+              f"{r.counts}; points per level {levels}")
+    footer()
+
+
+if __name__ == "__main__":
+    main()
