@@ -336,3 +336,17 @@ def test_long_cli_work_says_it_is_running(monkeypatch, capsys):
     assert re.search(r"rotordyn campbell over speeds 20:200:20 Hz: done after [0-9.]+ s", err)
     assert main(args[:2] + ["--speeds-hz", "-5:10:5"]) == 2  # bad input: no "done" claimed
     assert "done after" not in capsys.readouterr().err
+
+
+def test_report_figures_of_the_docs_are_shown_in_a_doc():
+    """Every figure docs/figures/regenerate.sh draws from a compressor model's report or sweep
+    is shown (as an image) on a docs page: compressor_critical_mode_1.png was generated and
+    shown nowhere (issue 18)."""
+    root = Path(__file__).resolve().parents[1]
+    names = re.findall(r"\$FIG/(compressor_\w+\.png)",
+                       (root / "docs" / "figures" / "regenerate.sh").read_text())
+    pages = " ".join(p.read_text(encoding="utf-8") for p in (root / "docs").glob("*.md"))
+    assert "compressor_critical_mode_1.png" in names
+    for n in names:
+        assert f"](figures/{n})" in pages, n
+        assert (root / "docs" / "figures" / n).stat().st_size > 20000
