@@ -125,4 +125,7 @@ def test_html_report_lists_both_critical_speeds_of_the_rig(report):
     assert page.count("<figcaption>Critical speed ") == 2
     assert "Critical speed 2: 85.8 Hz" in page and "the mode crossing 1×" in page
     assert "5–120 Hz" in page
+    # the journal's bump between the two (no damped mode in its half-power band) is named,
+    # not counted
+    assert "Response peaks not counted as critical speeds" in page
     assert "critical_mode_2.png: mode shape at critical speed 2, 85.8 Hz" in stdout

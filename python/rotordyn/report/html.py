@@ -323,12 +323,15 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                  + (_table(CRITICAL_HEADER, [tuple(html.escape(str(x)) for x in r)
                                              for r in critical_rows(crit)])
                     + "<p>Each critical speed with its source: a forward mode crossing the 1× "
-                    "line of the damped Campbell diagram, a peak of the unbalance response "
-                    f"(section 4, stable speeds only), or both (within {100 * MERGE_RTOL:g} %). "
-                    "A heavily damped mode may never cross 1× and still give a response peak."
-                    f" {html.escape(not_resonance_note(crit))}</p>" if len(crit) else
+                    "line of the damped Campbell diagram, a resonance peak of the unbalance "
+                    "response (section 4; AF < 1 is none), or both (the crossing inside the "
+                    f"peak's half-power band or within {100 * MERGE_RTOL:g} % of it). A heavily "
+                    "damped mode may never cross 1× and still give a response peak "
+                    "(docs/api-criteria.md).</p>" if len(crit) else
                     "<p>No critical speed in the speed range: no forward 1× crossing in the "
-                    "Campbell diagram and no peak in the unbalance response.</p>"))
+                    "Campbell diagram and no resonance peak in the unbalance response.</p>")
+                 + (f"<p>{html.escape(not_resonance_note(crit))}</p>"
+                    if not_resonance_note(crit) else ""))
 
     # 3b. the mode shape at each critical speed
     _progress(progress, f"mode shapes at the critical speeds ({len(crit)} in range)")
