@@ -129,3 +129,7 @@ def test_html_report_lists_both_critical_speeds_of_the_rig(report):
     # not counted
     assert "Response peaks not counted as critical speeds" in page
     assert "critical_mode_2.png: mode shape at critical speed 2, 85.8 Hz" in stdout
+    # δ at each crossing (interpolated along the tracked mode) is the drawn mode's own δ
+    drawn = [float(x) for x in re.findall(r"critical_mode_\d\.png: .*?log dec ([-\d.e+]+)",
+                                          stdout)]
+    np.testing.assert_allclose(t["log_dec"], drawn, rtol=0.05)

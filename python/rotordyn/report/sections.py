@@ -49,7 +49,7 @@ SOURCE_LEAST_DAMPED = ("no critical speed in range: the least damped forward mod
                        "maximum continuous speed")
 UNSTABLE_NOTE = "(at a linearly unstable speed: not a steady orbit)"
 MERGE_RTOL = 0.05  # a crossing and a peak (or peaks at two stations) this close are one critical
-CRITICAL_COLUMNS = ("speed_hz", "source", "campbell_hz", "peak_hz", "stations",
+CRITICAL_COLUMNS = ("speed_hz", "source", "campbell_hz", "log_dec", "peak_hz", "stations",
                     "amplification_factor", "af_kind")
 
 
@@ -106,11 +106,11 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
 
     Columns :data:`CRITICAL_COLUMNS`: ``speed_hz`` (Hz: the crossing's where there is one, else
     the peak's), ``source`` (:data:`SOURCE_CAMPBELL`, :data:`SOURCE_PEAK` or both joined by
-    " + "; a peak at a linearly unstable speed says so), ``campbell_hz``, ``peak_hz`` (NaN
+    " + "; a peak at a linearly unstable speed says so), ``campbell_hz``, ``log_dec`` (the
+    crossing mode's δ there: δ ≳ 1.3, AF ≈ π/δ < 2.5, is critically damped), ``peak_hz`` (NaN
     where absent), ``stations`` (the stations whose response peaks there, text),
     ``amplification_factor`` and ``af_kind`` of the largest peak."""
-    cross = (campbell.critical_speeds()["speed_hz"].to_numpy(dtype=float)
-             if campbell is not None else np.empty(0))
+    cross, cross_ld = _crossings(campbell)
     peaks = _peak_groups(unbalance, rtol) if unbalance is not None else []
     used: set[int] = set()
     rows, dropped = [], []
@@ -126,6 +126,7 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
         rows.append({"speed_hz": cross[i] if i is not None else g["peak_hz"],
                      "source": (SOURCE_CAMPBELL + " + " if i is not None else "") + peak,
                      "campbell_hz": cross[i] if i is not None else np.nan,
+                     "log_dec": cross_ld[i] if i is not None else np.nan,
                      "peak_hz": g["peak_hz"],
                      "stations": ", ".join(str(x) for x in g["stations"]),
                      "amplification_factor": g["amplification_factor"],
@@ -133,13 +134,29 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
     for i in range(cross.size):
         if i not in used:
             rows.append({"speed_hz": cross[i], "source": SOURCE_CAMPBELL, "campbell_hz": cross[i],
-                         "peak_hz": np.nan, "stations": "", "amplification_factor": np.nan,
+                         "log_dec": cross_ld[i], "peak_hz": np.nan, "stations": "", "amplification_factor": np.nan,
                          "af_kind": ""})
     df = pd.DataFrame(rows, columns=list(CRITICAL_COLUMNS)).sort_values("speed_hz",
                                                                        ignore_index=True)
     df.attrs["not_resonances"] = [(g["peak_hz"], ", ".join(str(x) for x in g["stations"]))
                                   for g in dropped]
     return df
+
+
+def _crossings(campbell) -> tuple[np.ndarray, np.ndarray]:
+    """The forward 1× crossings (Hz) and the crossing mode's log decrement there (interpolated
+    along the tracked mode)."""
+    if campbell is None:
+        return np.empty(0), np.empty(0)
+    cs = campbell.critical_speeds()
+    ld = campbell.tracked(np.where(np.isfinite(campbell.log_dec), campbell.log_dec, np.nan))
+    sp = campbell.speeds_hz
+    out = []
+    for m, x in zip(cs["mode"], cs["speed_hz"]):
+        col = ld[:, int(m) - 1]
+        ok = np.isfinite(col)
+        out.append(float(np.interp(x, sp[ok], col[ok])) if ok.sum() >= 1 else np.nan)
+    return cs["speed_hz"].to_numpy(dtype=float), np.asarray(out, dtype=float)
 
 
 def _mode_in_band(campbell, group: dict) -> bool:
@@ -165,7 +182,7 @@ def not_resonance_note(table) -> str:
 
 
 CRITICAL_HEADER = ("critical speed (Hz)", "(rpm)", "source", "1× crossing (Hz)",
-                   "response peak (Hz)", "peak at stations", "AF")
+                   "δ at the crossing", "response peak (Hz)", "peak at stations", "AF")
 
 
 def critical_rows(table) -> list[tuple]:
@@ -174,6 +191,7 @@ def critical_rows(table) -> list[tuple]:
     for r in table.itertuples(index=False):
         out.append((f"{r.speed_hz:.4g}", f"{60 * r.speed_hz:.0f}", r.source,
                     f"{r.campbell_hz:.4g}" if np.isfinite(r.campbell_hz) else "–",
+                    f"{r.log_dec + 0.0:.3g}" if np.isfinite(r.log_dec) else "–",
                     f"{r.peak_hz:.4g}" if np.isfinite(r.peak_hz) else "–", r.stations or "–",
                     af_text(r.amplification_factor, r.af_kind) if r.af_kind else "–"))
     return out
