@@ -74,6 +74,7 @@ def test_negative_scientific_numbers_are_values():
             "--viscosity-pa-s", "0.04", "--speed-hz", "50", "--load-n", "0", "-5e2", "--json")
     assert p.returncode == 0, p.stderr
     assert _strict(p.stdout)["equilibrium"]["load_n"] == [0.0, -500.0]
+    assert _strict(p.stdout)["friction_torque_n_m"] > 0  # N·m spelt _n_m (issue 18)
     a = build_parser().parse_args(["threshold", "paper-rig", "--bounds", "-2E-3", "-1.5e-3",
                                    "--config-ay-m", "-.5e-3"])
     assert a.bounds == [-2e-3, -1.5e-3] and a.config_ay_m == -0.5e-3

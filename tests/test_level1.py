@@ -179,6 +179,7 @@ def test_stage_data_in_the_model_file_round_trip(tmp_path, capsys):
                  str(tmp_path / "l1.png")]) == 0
     out = capsys.readouterr()
     assert "applied_q_mn_per_m" in out.out and "Q_0/Q_A" in out.err
+    assert "-0" not in out.out.split()  # δ at Q_0 (round-off band) printed 0, never "-0"
     assert (tmp_path / "l1.png").stat().st_size > 0
     assert main(["level1", str(MODELS / "compressor_linear.toml"), "--speed-hz", "150"]) == 0
     assert "not evaluated (no stage data)" in capsys.readouterr().err
@@ -227,3 +228,16 @@ def test_report_level1_section_echoes_the_inputs(tmp_path):
     txt = (tmp_path / "report.txt").read_text()
     assert re.search(r"API 617 Level I: screening: CSR = [0-9.]+, average gas density 40 kg/m³, "
                      r"Region B above CSR 5 \(as given\) .*PASS", txt)
+
+
+def test_log_dec_at_round_off_is_plus_zero():
+    """δ = −2π Re λ/Im λ of an undamped root (Re λ in the round-off band, set to 0) is +0, not
+    −0: the Level I table printed δ at Q_0 as "-0" (issue 18)."""
+    from rotordyn.cli.common import table_text
+    from rotordyn.results.modes import log_dec
+
+    d = log_dec(np.array([1e-13 + 300j, -1e-13 + 300j, 0j]))
+    assert d[0] == 0.0 and not np.signbit(d[0]) and not np.signbit(d[1]) and np.isinf(d[2])
+    import pandas as pd
+
+    assert table_text(pd.DataFrame({"log_dec": [-0.0, 0.5]})).split()[1] == "0"

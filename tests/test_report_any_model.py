@@ -182,14 +182,19 @@ def test_peaks_of_a_station_do_not_depend_on_the_others(model, ub, stations, spe
 
 def test_report_draws_the_mode_shape_at_each_critical_speed(reports):
     """Issue 18: the mode shape at each critical speed, in the HTML report and as a PNG in the
-    CLI's output directory. The compressor on linear supports has forward critical speeds in
-    its range; the figure count follows the Campbell's critical speeds."""
+    CLI's output directory. The compressor on linear supports has a forward critical speed in
+    its range; its response peak (168.7 Hz, AF 2.4) has the crossing inside its half-power
+    band, so the two are one critical, listed once with both sources."""
+    import pandas as pd
+
     s = rd.System.from_toml(MODELS / "compressor_linear.toml")
     code, page, d = reports["compressor_linear"][:3]
     crit = rd.rotor_campbell(s, speed_range(s, (140.0, 170.0)).speeds_hz,
                              n_modes=12).critical_speeds()
-    n = min(len(crit), 6)
-    assert n >= 1
+    t = pd.read_csv(Path(d) / "critical_speeds.csv")
+    assert len(crit) >= 1 and len(t) == len(crit)
+    np.testing.assert_allclose(t["campbell_hz"], crit["speed_hz"], rtol=1e-12)
+    n = min(len(t), 6)
     assert "3b. Mode shapes at the critical speeds" in page
     assert page.count("<figcaption>Critical speed ") == n
     pngs = sorted(Path(d).glob("critical_mode_*.png"))
@@ -201,6 +206,54 @@ def test_report_draws_the_mode_shape_at_each_critical_speed(reports):
             assert round(im.info["dpi"][0]) == 200, p.name
     nc = float(crit["speed_hz"].iloc[0])
     assert f"Critical speed 1: {nc:.4g} Hz" in page
+    assert t["source"].iloc[0] == ("damped Campbell crossing (1×, forward) + unbalance "
+                                   "response peak")
+
+
+def test_heavily_damped_compressors_get_mode_shapes(reports):
+    """Issue 18: on plain and tilting-pad bearings no mode crosses 1× (heavily damped), so the
+    report drew no mode shape. Plain bearings: the response peaks (above the whip threshold,
+    flagged so) are the critical speeds, each with the damped mode nearest its frequency
+    drawn; tilting pads: no 1× crossing and no resonance peak (the response rises to the top
+    speed; a wiggle with AF < 1 is no resonance), so the least damped forward mode at N_mc is
+    drawn and the page says there is no critical speed."""
+    import pandas as pd
+
+    code, page, d = reports["compressor_plain"][:3]
+    t = pd.read_csv(Path(d) / "critical_speeds.csv")
+    assert len(t) >= 1 and t["campbell_hz"].isna().all()
+    assert t["source"].str.startswith("unbalance response peak").all()
+    assert t["source"].str.contains("linearly unstable").all()
+    assert page.count("<figcaption>Critical speed ") == min(len(t), 6)
+    assert "the damped forward mode nearest the unbalance response peak" in page
+    code, page, d = reports["compressor_tilting_pad"][:3]
+    assert pd.read_csv(Path(d) / "critical_speeds.csv").empty
+    assert "No critical speed in the speed range" in page
+    assert page.count("<figcaption>No critical speed: 170 Hz") == 1
+    assert "the least damped forward mode" in page
+    assert (Path(d) / "critical_mode_1.png").stat().st_size > 20000
+
+
+def test_text_report_writes_critical_speeds_mode_shapes_and_coefficients(tmp_path):
+    """Issue 18: without --html the output directory had neither the mode shapes nor the
+    bearing coefficients; now report.txt lists the critical speeds with their sources, each
+    mode shape's file, and the coefficient table, and the files are there."""
+    import pandas as pd
+
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+        assert main(["report", str(MODELS / "compressor_table.toml"), "--out", str(tmp_path),
+                     "--operating-speed-hz", "140", "170"]) == 0
+    text = (tmp_path / "report.txt").read_text(encoding="utf-8")
+    t = pd.read_csv(tmp_path / "critical_speeds.csv")
+    assert len(t) >= 2 and set(t["source"]) >= {"damped Campbell crossing (1×, forward)"}
+    assert "critical speeds over" in text and "source" in text
+    n = min(len(t), 6)
+    assert len(list(tmp_path.glob("critical_mode_*.png"))) == n
+    assert text.count(".png: mode shape at critical speed") == n
+    df = pd.read_csv(tmp_path / "bearing_coefficients.csv")
+    assert set(df["bearing"]) == {"NDE bearing", "DE bearing"}
+    assert "kxx (MN/m)" in text and (tmp_path / "bearing_coefficients.png").exists()
 
 
 @pytest.mark.parametrize("name", ["compressor_plain", "compressor_tilting_pad",
@@ -283,3 +336,17 @@ def test_long_cli_work_says_it_is_running(monkeypatch, capsys):
     assert re.search(r"rotordyn campbell over speeds 20:200:20 Hz: done after [0-9.]+ s", err)
     assert main(args[:2] + ["--speeds-hz", "-5:10:5"]) == 2  # bad input: no "done" claimed
     assert "done after" not in capsys.readouterr().err
+
+
+def test_report_figures_of_the_docs_are_shown_in_a_doc():
+    """Every figure docs/figures/regenerate.sh draws from a compressor model's report or sweep
+    is shown (as an image) on a docs page: compressor_critical_mode_1.png was generated and
+    shown nowhere (issue 18)."""
+    root = Path(__file__).resolve().parents[1]
+    names = re.findall(r"\$FIG/(compressor_\w+\.png)",
+                       (root / "docs" / "figures" / "regenerate.sh").read_text())
+    pages = " ".join(p.read_text(encoding="utf-8") for p in (root / "docs").glob("*.md"))
+    assert "compressor_critical_mode_1.png" in names
+    for n in names:
+        assert f"](figures/{n})" in pages, n
+        assert (root / "docs" / "figures" / n).stat().st_size > 20000

@@ -137,5 +137,5 @@ def test_petroff_torque_concentric():
     b = rotordyn.JournalBearing(diameter_m=D, length_m=D, clearance_m=C_RAD, viscosity_pa_s=MU,
                                 n_circ=36, n_axial=8)
     r = b.solve(x_m=0.0, y_m=0.0, speed_hz=N_HZ)
-    assert r.friction_torque_nm == pytest.approx(2 * PI * MU * OMEGA * R**3 * D / C_RAD, rel=1e-12)
+    assert r.friction_torque_n_m == pytest.approx(2 * PI * MU * OMEGA * R**3 * D / C_RAD, rel=1e-12)
     assert np.linalg.norm(r.force_n) < 1e-9

@@ -39,11 +39,11 @@ def test_two_supports_closed_form():
     span = 2 * 0.5
     np.testing.assert_allclose(r.reactions["force_y_n"], w * span / 2, rtol=1e-9)
     j = int(np.argmin(abs(r.section_positions_m - span / 2)))
-    assert r.moment_yz_nm[j] == pytest.approx(w * span**2 / 8, rel=1e-6)
+    assert r.moment_yz_n_m[j] == pytest.approx(w * span**2 / 8, rel=1e-6)
     assert r.deflection_y_m.min() == pytest.approx(-5 * w * span**4 / (384 * EI), rel=3e-3)
     assert r.shear_y_n[0] == pytest.approx(w * span / 2, rel=1e-9)
     assert r.shear_y_n[-1] == pytest.approx(-w * span / 2, rel=1e-9)
-    assert np.allclose(r.deflection_x_m, 0) and np.allclose(r.moment_xz_nm, 0, atol=1e-9)
+    assert np.allclose(r.deflection_x_m, 0) and np.allclose(r.moment_xz_n_m, 0, atol=1e-9)
 
 
 @pytest.mark.parametrize("delta", [0.0, 1e-3, -5e-4])
@@ -63,7 +63,7 @@ def test_three_supports_one_offset_closed_form(delta):
     assert R[0] == pytest.approx(3 * w * L / 8 - P / 2, rel=3e-3, abs=1e-3 * w * L)
     assert R[2] == pytest.approx(R[0], rel=1e-6)
     j = int(np.argmin(abs(r.section_positions_m - L)))
-    assert r.moment_yz_nm[j] == pytest.approx(-w * L**2 / 8 - P * L / 2, rel=3e-3)
+    assert r.moment_yz_n_m[j] == pytest.approx(-w * L**2 / 8 - P * L / 2, rel=3e-3)
     assert R.sum() == pytest.approx(r.weight_n, rel=1e-9)
     k = int(np.argmin(abs(r.node_positions_m - L)))
     assert r.deflection_y_m[k] == pytest.approx(delta, abs=1e-8)
@@ -93,9 +93,14 @@ def test_compressor_on_plain_bearings_and_the_cli(tmp_path, capsys):
     r = rd.static(s, 100.0)
     assert set(r.reactions["kind"]) == {"journal"}
     assert r.reactions["force_y_n"].sum() == pytest.approx(r.weight_n, rel=1e-9)
-    assert r.moment_yz_nm.max() > 0  # sagging between the bearings
+    assert r.moment_yz_n_m.max() > 0  # sagging between the bearings
     df = r.to_frame()
-    assert {"z_m", "shear_y_n", "moment_yz_nm", "deflection_y_m"} <= set(df)
+    assert {"z_m", "shear_y_n", "moment_yz_n_m", "deflection_y_m"} <= set(df)
+    # N·m is spelt _n_m, as tilt_stiffness_n_m_per_rad (never _nm: nanometres)
+    from rotordyn.units import unit_of
+
+    assert not [c for c in df if c.endswith("_nm")]
+    assert unit_of("moment_yz_n_m") == unit_of("friction_torque_n_m") == "N·m"
     r.plot(system=s)[0].figure.savefig(tmp_path / "s.png")
     from rotordyn.cli import main
 
@@ -105,6 +110,12 @@ def test_compressor_on_plain_bearings_and_the_cli(tmp_path, capsys):
 
     rec = json.loads(capsys.readouterr().out)
     assert rec["status"] == "ok" and len(rec["reactions"]) == 2
+    assert "moment_yz_n_m" in rec["along"] and "moment_yz_nm" not in rec["along"]
+    # a N·m column is no length: the table never converts it to µm as "moment_yz_n_um"
+    from rotordyn.cli.common import table_text
+
+    assert "moment_yz_n_m" in table_text(r.to_frame().head(3).assign(
+        moment_yz_n_m=lambda d: d["moment_yz_n_m"] * 1e-6))
 
 
 def test_failed_equilibrium_is_a_status_never_a_deflection():
@@ -112,7 +123,7 @@ def test_failed_equilibrium_is_a_status_never_a_deflection():
     r = rd.static(s, 1e-4)  # no film pressure to carry the rotor
     if r.status in ("ok", "contact"):
         pytest.skip("the film carried the rotor at 0.1 mHz")
-    assert np.isnan(r.deflection_y_m).all() and np.isnan(r.moment_yz_nm).all()
+    assert np.isnan(r.deflection_y_m).all() and np.isnan(r.moment_yz_n_m).all()
     assert r.reactions.empty
 
 

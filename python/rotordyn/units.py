@@ -31,7 +31,7 @@ def rad_s_to_rpm(w_rad_s):
 SUFFIX_UNITS = (("_n_s_per_m", "N·s/m"), ("_n_per_m", "N/m"), ("_n_m_per_rad", "N·m/rad"), ("_nm_per_rad", "N·m/rad"),
                 ("_kg_m3", "kg/m³"), ("_kg_m2", "kg·m²"), ("_1_per_s", "1/s"),
                 ("_pa_s", "Pa·s"), ("_m3_s", "m³/s"), ("_rad_s", "rad/s"), ("_hz", "Hz"),
-                ("_pa", "Pa"), ("_kg", "kg"), ("_deg", "deg"), ("_rad", "rad"), ("_nm", "N·m"),
+                ("_pa", "Pa"), ("_kg", "kg"), ("_deg", "deg"), ("_rad", "rad"), ("_n_m", "N·m"),
                 ("_m_s", "m/s"), ("_m", "m"), ("_s", "s"), ("_n", "N"), ("_w", "W"))
 
 

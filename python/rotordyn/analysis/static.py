@@ -141,7 +141,7 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
         speed_hz=float(speed_hz), node_positions_m=system.rotor.node_positions_m(),
         deflection_x_m=u_full[0::4], deflection_y_m=u_full[1::4], section_positions_m=z,
         shear_x_n=sgn * F[:, 0], shear_y_n=sgn * F[:, 1],
-        moment_xz_nm=-sgn * F[:, 3], moment_yz_nm=sgn * F[:, 2],
+        moment_xz_n_m=-sgn * F[:, 3], moment_yz_n_m=sgn * F[:, 2],
         reactions=pd.DataFrame(reactions, columns=["name", "station", "kind", "force_x_n",
                                                    "force_y_n"]),
         weight_n=weight, status=status, message=message)

@@ -124,7 +124,7 @@ class FilmResult:
     """Outputs of one Reynolds solve (SI units)."""
 
     force_n: np.ndarray
-    friction_torque_nm: float
+    friction_torque_n_m: float
     inlet_flow_m3_s: float
     side_flow_m3_s: float
     h_min_m: float
@@ -351,7 +351,7 @@ class JournalBearing:
         r = self.solver().rigid(x, y, _velocity(vx_m_s, "vx_m_s"), _velocity(vy_m_s, "vy_m_s"), w)
         return FilmResult(
             force_n=np.asarray(r.force_n, dtype=float),
-            friction_torque_nm=float(r.friction_torque_nm),
+            friction_torque_n_m=float(r.friction_torque_nm),
             inlet_flow_m3_s=float(r.inlet_flow_m3_s),
             side_flow_m3_s=float(r.side_flow_m3_s),
             h_min_m=float(r.h_min_m),

@@ -145,7 +145,7 @@ def run(args: argparse.Namespace) -> int:
     K, C = b.coefficients(x_m=x, y_m=y, speed_hz=args.speed_hz, method=args.method)
     rec.update(
         journal_x_m=x, journal_y_m=y, journal_vx_m_s=vx, journal_vy_m_s=vy,
-        force_n=np.asarray(r.force_n).tolist(), friction_torque_nm=r.friction_torque_nm,
+        force_n=np.asarray(r.force_n).tolist(), friction_torque_n_m=r.friction_torque_n_m,
         inlet_flow_m3_s=r.inlet_flow_m3_s, side_flow_m3_s=r.side_flow_m3_s,
         h_min_m=r.h_min_m, h_min_angle_deg=r.h_min_angle_deg,
         k_n_per_m=K.tolist(), c_n_s_per_m=C.tolist(), coefficient_method=args.method,
@@ -158,7 +158,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"equilibrium: x = {x:.6g} m, y = {y:.6g} m, eps = {e['eccentricity_ratio']:.4g},"
                   f" attitude = {eq.attitude_angle_deg:.2f} deg, S = {eq.sommerfeld:.4g}")
         print(f"force on journal: Fx = {r.force_n[0]:.6g} N, Fy = {r.force_n[1]:.6g} N")
-        print(f"friction torque: {r.friction_torque_nm:.6g} N m; inlet flow {r.inlet_flow_m3_s:.6g}"
+        print(f"friction torque: {r.friction_torque_n_m:.6g} N m; inlet flow {r.inlet_flow_m3_s:.6g}"
               f" m3/s, side flow {r.side_flow_m3_s:.6g} m3/s")
         print(f"h_min = {r.h_min_m:.6g} m at {r.h_min_angle_deg:.2f} deg")
         print("K [N/m] =", np.array2string(K, precision=5))
@@ -182,7 +182,7 @@ def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
     rec["thermal"] = {k: (float(v) if isinstance(v, (int, float, np.floating)) else v)
                       for k, v in row.items()}
     rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, force_n=np.asarray(f.force_n).tolist(),
-               friction_torque_nm=f.friction_torque_nm, h_min_m=f.h_min_m,
+               friction_torque_n_m=f.friction_torque_n_m, h_min_m=f.h_min_m,
                h_min_angle_deg=f.h_min_angle_deg, k_n_per_m=r.K.tolist(),
                c_n_s_per_m=r.C.tolist(), coefficient_method="perturbation")
     if args.json:

@@ -190,15 +190,19 @@ def table_text(df) -> str:
     ``*_um``. ``--json`` keeps SI."""
     import numpy as np
 
+    from rotordyn.units import unit_of
+
     out = df.copy()
     for c in list(out.columns):
-        if not (isinstance(c, str) and c.endswith("_m")) or out[c].dtype.kind != "f":
+        # a length (suffix _m alone: not _n_m, N·m)
+        if not (isinstance(c, str) and unit_of(c) == "m") or out[c].dtype.kind != "f":
             continue
         vals = out[c].to_numpy(dtype=float)
         if np.isfinite(vals).any() and np.nanmax(np.abs(vals)) < 0.01:
             out[c] = vals * 1e6
             out = out.rename(columns={c: c[:-2] + "_um"})
-    return out.to_string(index=False, float_format=lambda x: f"{x:.6g}")
+    # +0.0 turns a −0.0 (a zero reached from below) into 0: never "-0" in a table
+    return out.to_string(index=False, float_format=lambda x: f"{x + 0.0:.6g}")
 
 
 def add_thermal_arguments(s) -> None:

@@ -11,18 +11,19 @@ def register(sub) -> None:
     s = sub.add_parser("report", help="the main job: analyses of a model written under --out")
     s.add_argument("model", help=MODEL_HELP)
     s.add_argument("--out", default="out", metavar="DIR",
-                   help="directory for report.txt, tables and figures (with --html also the "
-                        "mode shape at each critical speed, critical_mode_<k>.png, and the "
-                        "bearing coefficients over speed, bearing_coefficients.csv/.png)")
+                   help="directory for report.txt, tables and figures: among them the "
+                        "critical speeds with their source (1× crossing or response peak), "
+                        "critical_speeds.csv, the mode shape at each, critical_mode_<k>.png, "
+                        "and the bearing coefficients over speed, bearing_coefficients.csv/.png")
     s.add_argument("--html", default=None, metavar="FILE",
                    help="also write one self-contained HTML report (figures as SVG)")
     s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
                    metavar=("MIN", "MAX"),
                    help="operating speed range, Hz, for the API margins in the HTML report "
                         "(default: 45 55 for paper-rig, none otherwise); the analysed speeds "
-                        "then run to 125 %% of MAX (API 684)")
+                        "then run to 125 %% of MAX (API 684; the paper's rig: 5-120 Hz)")
     s.add_argument("--speeds-hz", default=None, metavar="SPEC",
-                   help="analysed speeds of the HTML report, Hz: start:stop:step or a list "
+                   help="analysed speeds of the report, Hz: start:stop:step or a list "
                         "(default: from the operating speeds, see docs)")
     s.add_argument("--gas-density-kg-m3", type=float, default=None, metavar="RHO",
                    help="API 617 Level I: average gas density (first-stage suction, last-stage "

@@ -23,8 +23,8 @@ def static_diagram(result, axes=None, system=None):
     zs = result.section_positions_m
     a2.plot(zs, result.shear_y_n, color="tab:blue", label="vertical (y)")
     a2.plot(zs, result.shear_x_n, color="tab:orange", ls="--", label="horizontal (x)")
-    a3.plot(zs, result.moment_yz_nm, color="tab:blue", label="vertical plane (y–z)")
-    a3.plot(zs, result.moment_xz_nm, color="tab:orange", ls="--",
+    a3.plot(zs, result.moment_yz_n_m, color="tab:blue", label="vertical plane (y–z)")
+    a3.plot(zs, result.moment_xz_n_m, color="tab:orange", ls="--",
             label="horizontal plane (x–z)")
     if system is not None and len(result.reactions):
         zst = system.rotor.station_positions_m()

@@ -23,6 +23,7 @@ API_CLEARANCE_FRACTION = 0.75  # API 617: peak-to-peak ≤ 75 % of the diametral
 SCREEN_LOG_DEC = 0.1           # screening: forward rotor modes in the window δ > 0.1
 LOG_DEC_ROUND_OFF = 1e-6       # |δ| below this is round-off of an undamped mode, not a sign
 N_SPEEDS = 121                 # grid of the Campbell diagram and the unbalance response
+PAPER_SPEEDS_HZ = np.arange(5.0, 121.0, 1.0)  # the paper's Fig. 12/13 speeds (§6.3)
 
 NOT_RESOLVED = "not resolved"
 
@@ -75,7 +76,8 @@ class SpeedRange:
 def speed_range(system, operating_speed_hz=None, speeds_hz=None, rigid_map=None,
                 paper: bool = False) -> SpeedRange:
     """The report's speeds: ``speeds_hz`` when given; else 2 %…125 % of the maximum operating
-    speed (API 684); else, for the paper's rig, its 5–120 Hz; else up to 125 % of the second
+    speed (API 684), for the paper's rig its 5–120 Hz when that reaches further; else, for the
+    paper's rig, its 5–120 Hz; else up to 125 % of the second
     undamped critical speed on stiff bearings (``rigid_map`` from :func:`critical_speed_map`),
     so the first two criticals are in range."""
     if speeds_hz is not None:
@@ -85,10 +87,17 @@ def speed_range(system, operating_speed_hz=None, speeds_hz=None, rigid_map=None,
     if operating_speed_hz:
         top = float(operating_speed_hz[1])
         hi = API_SPEED_FACTOR * top
+        if paper and hi <= PAPER_SPEEDS_HZ[-1]:
+            # The paper's own range holds both of its critical speeds (39, 90 Hz); 125 % of
+            # the rig's 55 Hz (69 Hz) would cut the second off.
+            return SpeedRange(PAPER_SPEEDS_HZ.copy(), top,
+                              f"the paper's 5–120 Hz (beyond 125 % of the maximum operating "
+                              f"speed {top:g} Hz, API 684; it holds both critical speeds of "
+                              "the paper)")
         return SpeedRange(np.linspace(0.02 * hi, hi, N_SPEEDS), top,
                           f"2 %…125 % of the maximum operating speed {top:g} Hz (API 684)")
     if paper:
-        return SpeedRange(np.arange(5.0, 121.0, 1.0), 55.0, "the paper's 5–120 Hz")
+        return SpeedRange(PAPER_SPEEDS_HZ.copy(), 55.0, "the paper's 5–120 Hz")
     ks, f, _ = rigid_map if rigid_map is not None else critical_speed_map(system)
     second = f[-1, min(1, f.shape[1] - 1)]
     top = float(second) if np.isfinite(second) else float(np.nanmax(f))

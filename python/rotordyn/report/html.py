@@ -36,11 +36,14 @@ from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.report import level1 as level1_report
 from rotordyn._common.progress import Steps
 from rotordyn.plot.coefficients import bearing_coefficients as coefficient_figure
-from rotordyn.report.sections import (COEFFICIENT_HEADER,
-                                      bearing_coefficient_frame, coefficient_rows,
-                                      critical_mode_shapes)
+from rotordyn.report.sections import (COEFFICIENT_HEADER, CRITICAL_HEADER, MERGE_RTOL,
+                                      api_response, bearing_coefficient_frame,
+                                      coefficient_rows, coefficient_text_lines,
+                                      SOURCE_LEAST_DAMPED, critical_rows,
+                                      critical_speed_table, critical_text_lines,
+                                      not_resonance_note, shape_source, shapes_for)
 from rotordyn.report.criteria import (NOT_RESOLVED, SCREEN_LOG_DEC, Checks, amplitude_checks,
-                                      api_unbalance, critical_speed_map, separation_checks,
+                                      critical_speed_map, separation_checks,
                                       speed_range, stability_screen)
 
 
@@ -184,7 +187,7 @@ def _save_png(fig, figure_dir, name: str) -> None:
 def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                speeds_hz=None, chamber_pressure_pa: float | None = None,
                progress: bool = True, level1_options: dict | None = None,
-               figure_dir=None) -> Path:
+               figure_dir=None, text_sink: list | None = None) -> Path:
     """Write the HTML report of ``model`` (a built-in name or TOML path) to ``path``.
 
     ``operating_speed_hz`` (min, max) Hz: the operating range of the separation margins and
@@ -193,8 +196,10 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     section, "which step, how far" (:class:`rotordyn._common.progress.Steps`).
     ``level1_options``: keywords of :func:`rotordyn.level1` for the Level I section
     (``gas_density_kg_m3``, ``csr_limit``). ``figure_dir``: also write the mode shape at each
-    critical speed and the bearing coefficient figure there as PNG, and the coefficients as
-    ``bearing_coefficients.csv``."""
+    critical speed and the bearing coefficient figure there as PNG, and the coefficients and
+    the critical speeds as ``bearing_coefficients.csv``, ``critical_speeds.csv``.
+    ``text_sink``: a list that gets the text report's lines of the critical speeds, their mode
+    shapes and the bearing coefficients (:mod:`rotordyn.report.sections`)."""
     import datetime
     import hashlib
 
@@ -205,7 +210,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     from rotordyn.plot.frequency import campbell_diagram
 
     s = models.load(model)
-    paper = s.name == "paper-rig"
+    paper = s.name in ("paper-rig", "paper-rig-hs")
     active = [b for b in s.bearings if isinstance(b, ActiveJournalBearing)]
     pc = (0.4e6 if active else 0.0) if chamber_pressure_pa is None else chamber_pressure_pa
     ay = 0.0 if active else None
@@ -296,51 +301,66 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                      + _table(COEFFICIENT_HEADER, [tuple(html.escape(str(c)) for c in r)
                                                    for r in coefficient_rows(coeffs)]))
 
-    # 3. Campbell
+    # 3. Campbell; the unbalance response is computed here too, for its peaks are critical
+    # speeds as well (the only ones of a heavily damped mode that never crosses 1×)
     _progress(progress, f"Campbell diagram, {sp.size} speeds")
     if s.bearings:
         c = analysis.campbell(s, sp, pc, ay)
     else:
         c = analysis.rotor_campbell(s, sp, n_modes=12)
-    crit = c.critical_speeds()
+    _progress(progress, "unbalance response")
+    u, st_ub, u_kgm, where = api_response(s, sp, rng.n_mc_hz, pc, ay, operating_speed_hz)
+    outs = list(u.stations)
+    crit = critical_speed_table(c, u)
+    if figure_dir is not None:
+        crit.to_csv(Path(figure_dir) / "critical_speeds.csv", index=False)
     ax = campbell_diagram(c, title=(f"Campbell diagram, p_c = {pc / 1e6:g} MPa" if active
                                     else "Campbell diagram"))
     ax.set_ylim(0, window_hz)
-    ctab = [(f"{r.speed_hz:.2f}", f"{60 * r.speed_hz:.0f}", r.whirl) for r in crit.itertuples()]
     parts.append("<h2>3. Campbell diagram and critical speeds</h2><figure>" + svg(ax.figure)
                  + f"<figcaption>Modes up to {window_hz:.4g} Hz (1.5 × the top speed)."
                  "</figcaption></figure>"
-                 + (_table(["critical speed (Hz)", "(rpm)", "whirl"], ctab) if ctab else
-                    "<p>No forward critical speed (1× crossing) in the speed range.</p>"))
+                 + (_table(CRITICAL_HEADER, [tuple(html.escape(str(x)) for x in r)
+                                             for r in critical_rows(crit)])
+                    + "<p>Each critical speed with its source: a forward mode crossing the 1× "
+                    "line of the damped Campbell diagram, a resonance peak of the unbalance "
+                    "response (section 4; AF < 1 is none), or both (the crossing inside the "
+                    f"peak's half-power band or within {100 * MERGE_RTOL:g} % of it). A heavily "
+                    "damped mode may never cross 1× and still give a response peak "
+                    "(docs/api-criteria.md).</p>" if len(crit) else
+                    "<p>No critical speed in the speed range: no forward 1× crossing in the "
+                    "Campbell diagram and no resonance peak in the unbalance response.</p>")
+                 + (f"<p>{html.escape(not_resonance_note(crit))}</p>"
+                    if not_resonance_note(crit) else ""))
 
     # 3b. the mode shape at each critical speed
     _progress(progress, f"mode shapes at the critical speeds ({len(crit)} in range)")
-    shapes = critical_mode_shapes(s, crit["speed_hz"].to_numpy(), pc, ay,
-                                  progress=progress.item)
+    shapes = shapes_for(s, crit, rng.n_mc_hz, window_hz, pc, ay, progress=progress.item)
     if shapes:
         sec = ["<h2>3b. Mode shapes at the critical speeds</h2>"]
         for k, m in enumerate(shapes, start=1):
+            what = ("No critical speed" if m.source == SOURCE_LEAST_DAMPED
+                    else f"Critical speed {k}")
             if m.figure is None:
-                sec.append(f"<p class=\"nr\">Critical speed {k} ({m.speed_hz:.4g} Hz): mode "
+                sec.append(f"<p class=\"nr\">{what} ({m.speed_hz:.4g} Hz): mode "
                            f"shape not resolved ({html.escape(m.why)}).</p>")
                 continue
             _save_png(m.figure, figure_dir, f"critical_mode_{k}.png")
-            sec.append(f"<figure>{svg(m.figure)}<figcaption>Critical speed {k}: "
-                       f"{m.speed_hz:.4g} Hz ({60 * m.speed_hz:.0f} rpm), {m.whirl} mode at "
-                       f"{m.freq_hz:.4g} Hz, log dec {m.log_dec:.3g}: whirl orbits along the "
-                       "rotor, normalised to the largest.</figcaption></figure>")
+            sec.append(f"<figure>{svg(m.figure)}<figcaption>{what}: "
+                       f"{m.speed_hz:.4g} Hz ({60 * m.speed_hz:.0f} rpm, "
+                       f"{html.escape(m.source)}), {m.whirl} mode at {m.freq_hz:.4g} Hz, log "
+                       f"dec {m.log_dec:.3g} ({html.escape(shape_source(m.source))}): whirl "
+                       "orbits along the rotor, normalised to the largest.</figcaption>"
+                       "</figure>")
         if len(crit) > len(shapes):
             sec.append(f"<p>The first {len(shapes)} of {len(crit)} critical speeds shown.</p>")
         parts.append("".join(sec))
+    if text_sink is not None:
+        text_sink += critical_text_lines(crit, shapes, rng, pc, bool(active),
+                                         files=figure_dir is not None)
+        text_sink += coefficient_text_lines(coeffs)
 
     # 4. unbalance response
-    _progress(progress, "unbalance response")
-    st_ub, u_kgm, where = api_unbalance(s, rng.n_mc_hz, rng.n_mc_hz, pc, ay)
-    probes = sorted({b.station for b in s.bearings} or {x.station for x in s.supports})
-    outs = sorted({st_ub, *probes})
-    u = analysis.unbalance_response(s, [(st_ub, u_kgm, 0.0)], sp, stations=outs,
-                                    chamber_pressure_pa=pc, config_ay_m=ay,
-                                    operating_speed_hz=operating_speed_hz)
     parts.append(f"<h2>4. Unbalance response</h2><p>API 684 unbalance U = 6350 W/N g·mm = "
                  f"{u_kgm * 1e6:.4g} g·mm {html.escape(where)} (W = {s.mass_kg:.4g} kg, the "
                  f"rotor's static load; N = N_mc = {60 * rng.n_mc_hz:.0f} rpm); the speed grid "

@@ -1,8 +1,13 @@
-"""Two sections of the report that an API 684 lateral analysis carries beside the Campbell
+"""Sections of the report that an API 684 lateral analysis carries beside the Campbell
 diagram and the unbalance response:
 
+* the critical speeds, each with where it comes from (:func:`critical_speed_table`): a damped
+  Campbell crossing of the 1× line by a forward rotor mode, a peak of the unbalance response
+  (API 684's definition, and the only one a heavily damped mode that never reaches 1× has),
+  or both;
 * the mode shape at each critical speed (the system's eigenvector at that speed whose damped
-  frequency is the crossing's, forward whirl, drawn as whirl orbits along the rotor);
+  frequency is nearest the critical's — the crossing's or the peak's, i.e. the speed itself —
+  forward whirl, drawn as whirl orbits along the rotor);
 * each bearing's stiffness and damping coefficients kxx … cyy over the analysed speeds
   (:func:`rotordyn.analysis.bearing_coefficients.bearing_coefficients`, pads and sleeve
   condensed at the synchronous whirl frequency), as a table and a figure.
@@ -15,8 +20,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import pandas as pd
 
 from rotordyn import analysis
+from rotordyn._common.api import af_text
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
 
 MAX_CRITICAL_SHAPES = 6  # the lowest forward critical speeds drawn (a report's usual few)
@@ -33,6 +40,171 @@ class CriticalShape:
     log_dec: float
     figure: object
     why: str = ""
+    source: str = ""  # where the critical speed comes from (critical_speed_table's source)
+
+
+SOURCE_CAMPBELL = "damped Campbell crossing (1×, forward)"
+SOURCE_PEAK = "unbalance response peak"
+SOURCE_LEAST_DAMPED = ("no critical speed in range: the least damped forward mode at the "
+                       "maximum continuous speed")
+UNSTABLE_NOTE = "(at a linearly unstable speed: not a steady orbit)"
+MERGE_RTOL = 0.05  # a crossing and a peak (or peaks at two stations) this close are one critical
+CRITICAL_COLUMNS = ("speed_hz", "source", "campbell_hz", "log_dec", "peak_hz", "stations",
+                    "amplification_factor", "af_kind")
+
+
+def _peak_groups(unbalance, rtol: float) -> list[dict]:
+    """The resonance peaks of every output station, peaks within ``rtol`` of each other counted
+    once (the largest one's speed, AF and half-power speeds, every station that shows it). A
+    peak whose half-power band is wider than its speed (AF < 1: a wiggle on a rising curve, no
+    resonance) is left out; one at a linearly unstable speed is kept and flagged."""
+    rows = []
+    stable = unbalance.stable
+    for st in unbalance.stations:
+        for r in unbalance.peaks(int(st)).to_dict("records"):
+            if r["af_kind"] != "unresolved" and r["amplification_factor"] < 1.0:
+                continue
+            i = int(np.argmin(np.abs(unbalance.speeds_hz - r["critical_speed_hz"])))
+            r["stable"] = bool(stable[i])
+            rows.append(r)
+    rows.sort(key=lambda r: r["critical_speed_hz"])
+    groups: list[list[dict]] = []
+    for r in rows:
+        if groups and r["critical_speed_hz"] <= groups[-1][0]["critical_speed_hz"] * (1 + rtol):
+            groups[-1].append(r)
+        else:
+            groups.append([r])
+    out = []
+    for g in groups:
+        top = max(g, key=lambda r: r["peak_m"])
+        out.append({"peak_hz": float(top["critical_speed_hz"]),
+                    "band_hz": (float(top["n1_hz"]), float(top["n2_hz"])),
+                    "stations": sorted({int(r["station"]) for r in g}),
+                    "amplification_factor": float(top["amplification_factor"]),
+                    "af_kind": str(top["af_kind"]), "stable": bool(top["stable"])})
+    return out
+
+
+def _near(crossing: float, group: dict, rtol: float) -> bool:
+    """A Campbell crossing belongs to a response peak when it lies in the peak's half-power band
+    or within ``rtol`` of the peak."""
+    lo, hi = group["band_hz"]
+    return (abs(crossing - group["peak_hz"]) <= rtol * group["peak_hz"]
+            or (np.isfinite(lo) and np.isfinite(hi) and lo <= crossing <= hi))
+
+
+def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) -> pd.DataFrame:
+    """The critical speeds an engineer reads off a lateral analysis, each once, with its source:
+    the forward 1× crossings of the damped Campbell diagram (``campbell``:
+    :class:`~rotordyn.results.campbell.CampbellResult`) and the resonance peaks of the unbalance
+    response (``unbalance``: :class:`~rotordyn.results.unbalance.UnbalanceResult`, every output
+    station; AF < 1 is no resonance and left out); a crossing inside a peak's half-power band
+    or within ``rtol`` (relative) of it is the same critical. A peak without a crossing and
+    without any damped forward mode of ``campbell`` inside its half-power band at that speed
+    is two modes' responses interfering, not a resonance: it is left out and listed in
+    ``attrs["not_resonances"]`` ((speed Hz, stations) pairs, :func:`not_resonance_note`).
+
+    Columns :data:`CRITICAL_COLUMNS`: ``speed_hz`` (Hz: the crossing's where there is one, else
+    the peak's), ``source`` (:data:`SOURCE_CAMPBELL`, :data:`SOURCE_PEAK` or both joined by
+    " + "; a peak at a linearly unstable speed says so), ``campbell_hz``, ``log_dec`` (the
+    crossing mode's δ there: δ ≳ 1.3, AF ≈ π/δ < 2.5, is critically damped), ``peak_hz`` (NaN
+    where absent), ``stations`` (the stations whose response peaks there, text),
+    ``amplification_factor`` and ``af_kind`` of the largest peak."""
+    cross, cross_ld = _crossings(campbell)
+    peaks = _peak_groups(unbalance, rtol) if unbalance is not None else []
+    used: set[int] = set()
+    rows, dropped = [], []
+    for g in peaks:
+        near = [i for i in range(cross.size) if i not in used and _near(cross[i], g, rtol)]
+        i = min(near, key=lambda i: abs(cross[i] - g["peak_hz"])) if near else None
+        if i is not None:
+            used.add(i)
+        elif campbell is not None and not _mode_in_band(campbell, g):
+            dropped.append(g)  # two modes' responses interfering, no resonance of its own
+            continue
+        peak = SOURCE_PEAK + ("" if g["stable"] else " " + UNSTABLE_NOTE)
+        rows.append({"speed_hz": cross[i] if i is not None else g["peak_hz"],
+                     "source": (SOURCE_CAMPBELL + " + " if i is not None else "") + peak,
+                     "campbell_hz": cross[i] if i is not None else np.nan,
+                     "log_dec": cross_ld[i] if i is not None else np.nan,
+                     "peak_hz": g["peak_hz"],
+                     "stations": ", ".join(str(x) for x in g["stations"]),
+                     "amplification_factor": g["amplification_factor"],
+                     "af_kind": g["af_kind"]})
+    for i in range(cross.size):
+        if i not in used:
+            rows.append({"speed_hz": cross[i], "source": SOURCE_CAMPBELL, "campbell_hz": cross[i],
+                         "log_dec": cross_ld[i], "peak_hz": np.nan, "stations": "", "amplification_factor": np.nan,
+                         "af_kind": ""})
+    df = pd.DataFrame(rows, columns=list(CRITICAL_COLUMNS)).sort_values("speed_hz",
+                                                                       ignore_index=True)
+    df.attrs["not_resonances"] = [(g["peak_hz"], ", ".join(str(x) for x in g["stations"]))
+                                  for g in dropped]
+    return df
+
+
+def _crossings(campbell) -> tuple[np.ndarray, np.ndarray]:
+    """The forward 1× crossings (Hz) and the crossing mode's log decrement there (interpolated
+    along the tracked mode)."""
+    if campbell is None:
+        return np.empty(0), np.empty(0)
+    cs = campbell.critical_speeds()
+    ld = campbell.tracked(np.where(np.isfinite(campbell.log_dec), campbell.log_dec, np.nan))
+    sp = campbell.speeds_hz
+    out = []
+    for m, x in zip(cs["mode"], cs["speed_hz"]):
+        col = ld[:, int(m) - 1]
+        ok = np.isfinite(col)
+        out.append(float(np.interp(x, sp[ok], col[ok])) if ok.sum() >= 1 else np.nan)
+    return cs["speed_hz"].to_numpy(dtype=float), np.asarray(out, dtype=float)
+
+
+def _mode_in_band(campbell, group: dict) -> bool:
+    """Whether a forward rotor mode of ``campbell`` at the speed nearest the peak has its damped
+    frequency inside the peak's half-power band (an open side: unbounded there)."""
+    i = int(np.argmin(np.abs(campbell.speeds_hz - group["peak_hz"])))
+    f = campbell.frequencies_hz[i]
+    ok = campbell.rotor_mask()[i] & (campbell.whirl[i] == 1) & (f > 0) & np.isfinite(f)
+    lo, hi = group["band_hz"]
+    lo = lo if np.isfinite(lo) else -np.inf
+    hi = hi if np.isfinite(hi) else np.inf
+    return bool(np.any(ok & (f >= lo) & (f <= hi)))
+
+
+def not_resonance_note(table) -> str:
+    """The response peaks :func:`critical_speed_table` did not count (empty when none)."""
+    gone = table.attrs.get("not_resonances", [])
+    if not gone:
+        return ""
+    return ("Response peaks not counted as critical speeds (no damped forward mode within "
+            "their half-power band at that speed: two modes' responses interfering): "
+            + "; ".join(f"{f:.4g} Hz at station(s) {st}" for f, st in gone) + ".")
+
+
+CRITICAL_HEADER = ("critical speed (Hz)", "(rpm)", "source", "1× crossing (Hz)",
+                   "δ at the crossing", "response peak (Hz)", "peak at stations", "AF")
+
+
+def critical_rows(table) -> list[tuple]:
+    """Rows of :data:`CRITICAL_HEADER` from :func:`critical_speed_table`."""
+    out = []
+    for r in table.itertuples(index=False):
+        out.append((f"{r.speed_hz:.4g}", f"{60 * r.speed_hz:.0f}", r.source,
+                    f"{r.campbell_hz:.4g}" if np.isfinite(r.campbell_hz) else "–",
+                    f"{r.log_dec + 0.0:.3g}" if np.isfinite(r.log_dec) else "–",
+                    f"{r.peak_hz:.4g}" if np.isfinite(r.peak_hz) else "–", r.stations or "–",
+                    af_text(r.amplification_factor, r.af_kind) if r.af_kind else "–"))
+    return out
+
+
+def shape_source(source: str) -> str:
+    """How the mode of a critical was picked, for the figure's caption."""
+    if source == SOURCE_LEAST_DAMPED:
+        return "no 1× crossing and no resonance peak in range: the least damped forward mode"
+    if source.startswith(SOURCE_CAMPBELL):
+        return "the mode crossing 1× in the damped Campbell diagram"
+    return ("the damped forward mode nearest the unbalance response peak's frequency at that "
+            "speed")
 
 
 def _pick(freqs, whirl, kind, target_hz) -> int | None:
@@ -44,16 +216,45 @@ def _pick(freqs, whirl, kind, target_hz) -> int | None:
     return min(ok, key=lambda j: abs(freqs[j] - target_hz))
 
 
+def _least_damped(r, kind, below_hz) -> int | None:
+    """The forward rotor mode below ``below_hz`` (Hz) with the smallest log decrement."""
+    ok = [j for j in range(len(r.frequencies_hz)) if r.whirl[j] == "forward"
+          and 0 < r.frequencies_hz[j] < below_hz and (kind is None or kind[j] == "rotor")]
+    return min(ok, key=lambda j: r.log_dec[j]) if ok else None
+
+
+def shapes_for(system, crit, n_mc_hz: float, window_hz: float, chamber_pressure_pa: float,
+               config_ay_m, progress=None) -> list[CriticalShape]:
+    """The report's mode shapes: one at each critical speed of ``crit``
+    (:func:`critical_speed_table`); with none in range, the least damped forward rotor mode
+    below ``window_hz`` at the maximum continuous speed ``n_mc_hz`` (what a heavily damped
+    machine whose modes give no resonance shows), so a report always draws one."""
+    if len(crit):
+        return critical_mode_shapes(system, crit["speed_hz"].to_numpy(), chamber_pressure_pa,
+                                    config_ay_m, progress=progress,
+                                    sources=list(crit["source"]))
+    return critical_mode_shapes(system, [n_mc_hz], chamber_pressure_pa, config_ay_m,
+                                progress=progress, sources=[SOURCE_LEAST_DAMPED],
+                                least_damped_below_hz=window_hz)
+
+
 def critical_mode_shapes(system, critical_speeds_hz, chamber_pressure_pa: float,
                          config_ay_m, *, max_n: int = MAX_CRITICAL_SHAPES,
-                         progress=None) -> list[CriticalShape]:
-    """The mode shape at each of the first ``max_n`` forward critical speeds (Hz): with bearing
+                         progress=None, sources=None,
+                         least_damped_below_hz: float = np.inf) -> list[CriticalShape]:
+    """The mode shape at each of the first ``max_n`` critical speeds (Hz): with bearing
     elements the system's stability eigenvectors at that speed (equilibrium there), else the
     rotor's modes on its supports; the mode picked is the forward rotor mode whose damped
-    frequency is nearest the crossing's (1×: the speed itself)."""
+    frequency is nearest the critical's frequency (1× at a Campbell crossing and at an unbalance
+    response peak alike: the speed itself). ``sources``: each critical's source (the
+    ``source`` column of :func:`critical_speed_table`; default: Campbell crossings), named in
+    the figure's title; a source :data:`SOURCE_LEAST_DAMPED` draws instead the least damped
+    forward rotor mode below ``least_damped_below_hz`` at that speed (a model without any
+    critical speed in range, :func:`shapes_for`)."""
     out: list[CriticalShape] = []
     crit = [float(x) for x in critical_speeds_hz][:max_n]
-    for n, nc in enumerate(crit):
+    srcs = list(sources)[:max_n] if sources is not None else [SOURCE_CAMPBELL] * len(crit)
+    for n, (nc, src) in enumerate(zip(crit, srcs)):
         try:
             if system.bearings:
                 r = analysis.stability(system, nc, chamber_pressure_pa, config_ay_m)
@@ -63,24 +264,134 @@ def critical_mode_shapes(system, critical_speeds_hz, chamber_pressure_pa: float,
                 r = analysis.modes(system, nc, reduction="none", n_modes=16)
                 ok, kind = r.status == "ok", None
         except Exception as exc:  # noqa: BLE001 - a failed point is reported, not raised
-            out.append(CriticalShape(nc, np.nan, "", np.nan, None, f"{exc}"))
+            out.append(CriticalShape(nc, np.nan, "", np.nan, None, f"{exc}", src))
             continue
-        j = _pick(r.frequencies_hz, r.whirl, kind, nc) if ok else None
+        if ok and src == SOURCE_LEAST_DAMPED:
+            j = _least_damped(r, kind, least_damped_below_hz)
+        else:
+            j = _pick(r.frequencies_hz, r.whirl, kind, nc) if ok else None
         if j is None:
             why = (f"no forward rotor mode at {nc:.4g} Hz" if ok
                    else f"{r.status}: {r.message}")
-            out.append(CriticalShape(nc, np.nan, "", np.nan, None, why))
+            out.append(CriticalShape(nc, np.nan, "", np.nan, None, why, src))
             continue
         ax = r.plot(j, system=system)
         ld = float(r.log_dec[j])
         ld = 0.0 if abs(ld) < 1e-6 else ld
-        ax.set_title(f"critical speed {n + 1}: {nc:.4g} Hz ({60 * nc:.0f} rpm)\nmode "
-                     f"{r.frequencies_hz[j]:.4g} Hz, {r.whirl[j]}, δ = {ld:.3g}")
+        if src == SOURCE_LEAST_DAMPED:
+            head = f"no critical speed; least damped forward mode at {nc:.4g} Hz"
+        else:
+            how = "1× crossing" if src.startswith(SOURCE_CAMPBELL) else "response peak"
+            head = f"critical speed {n + 1} ({how}): {nc:.4g} Hz ({60 * nc:.0f} rpm)"
+        ax.set_title(f"{head}\nmode {r.frequencies_hz[j]:.4g} Hz, {r.whirl[j]}, δ = {ld:.3g}")
         out.append(CriticalShape(nc, float(r.frequencies_hz[j]), str(r.whirl[j]), ld,
-                                 ax.figure))
+                                 ax.figure, source=src))
         if progress is not None:
             progress(n + 1, len(crit))
     return out
+
+
+def api_response(system, speeds_hz, n_mc_hz: float, chamber_pressure_pa: float, config_ay_m,
+                 operating_speed_hz=None):
+    """The report's unbalance response: the API 684 unbalance
+    (:func:`rotordyn.report.criteria.api_unbalance`) over ``speeds_hz`` (Hz) at its own station
+    and every bearing (or support) station. Returns (UnbalanceResult, station, U kg·m, where)."""
+    from rotordyn.report.criteria import api_unbalance
+
+    st_ub, u_kgm, where = api_unbalance(system, n_mc_hz, n_mc_hz, chamber_pressure_pa,
+                                        config_ay_m)
+    probes = sorted({b.station for b in system.bearings}
+                    or {x.station for x in system.supports})
+    outs = sorted({st_ub, *probes})
+    u = analysis.unbalance_response(system, [(st_ub, u_kgm, 0.0)], speeds_hz, stations=outs,
+                                    chamber_pressure_pa=chamber_pressure_pa,
+                                    config_ay_m=config_ay_m,
+                                    operating_speed_hz=operating_speed_hz)
+    return u, st_ub, u_kgm, where
+
+
+def _text_table(header, rows) -> list[str]:
+    w = [max(len(str(h)), *(len(str(r[i])) for r in rows)) for i, h in enumerate(header)]
+    return ["  " + "  ".join(f"{str(c):<{w[i]}}" for i, c in enumerate(r))
+            for r in [tuple(header), *rows]]
+
+
+def critical_text_lines(crit, shapes, rng, chamber_pressure_pa: float, active: bool,
+                        files: bool = True) -> list[str]:
+    """The text report's lines: the critical speeds ``crit`` (:func:`critical_speed_table`)
+    with their sources, then each mode shape of ``shapes`` (:func:`critical_mode_shapes`) and
+    its file ``critical_mode_<k>.png`` (``files``)."""
+    sp = rng.speeds_hz
+    lines = ["", f"critical speeds over {sp[0]:.4g}–{sp[-1]:.4g} Hz ({rng.why})"
+             + (f", p_c = {chamber_pressure_pa / 1e6:g} MPa" if active else "")
+             + ": each with its source (1× crossing of the damped Campbell diagram, peak of the"
+             " API unbalance response, or both)"]
+    if len(crit):
+        lines += _text_table(CRITICAL_HEADER, critical_rows(crit))
+    else:
+        lines.append("  none: no forward 1× crossing and no response peak in the range")
+    if not_resonance_note(crit):
+        lines.append("  " + not_resonance_note(crit))
+    for k, m in enumerate(shapes, start=1):
+        if m.figure is None:
+            lines.append(f"  mode shape at critical speed {k} ({m.speed_hz:.4g} Hz): not "
+                         f"resolved ({m.why})")
+            continue
+        what = ("mode shape" if m.source == SOURCE_LEAST_DAMPED
+                else f"mode shape at critical speed {k}")
+        lines.append(f"  {f'critical_mode_{k}.png: ' if files else ''}{what}, "
+                     f"{m.speed_hz:.4g} Hz ({m.source}): {m.whirl} mode at "
+                     f"{m.freq_hz:.4g} Hz, log dec {m.log_dec:.3g} ({shape_source(m.source)})")
+    if len(crit) > len(shapes):
+        lines.append(f"  mode shapes of the first {len(shapes)} of {len(crit)} drawn")
+    return lines
+
+
+def coefficient_text_lines(coeffs) -> list[str]:
+    """The text report's table of the bearings' coefficients (none without bearings)."""
+    if coeffs.empty:
+        return []
+    return (["", "bearing coefficients over speed (dF = −K dq − C dq̇; x horizontal, y up; "
+             "bearing_coefficients.csv/.png)"]
+            + _text_table(COEFFICIENT_HEADER, coefficient_rows(coeffs)))
+
+
+def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, outdir,
+                        operating_speed_hz=None, campbell=None) -> list[str]:
+    """The text report's critical speeds (with their sources), the mode shape at each one
+    (``critical_mode_<k>.png``, ``critical_speeds.csv``) and the bearings' coefficients over
+    speed (``bearing_coefficients.csv``/``.png``) under ``outdir``, as the HTML report has
+    them. ``rng``: :class:`rotordyn.report.criteria.SpeedRange`; ``campbell``: a Campbell
+    diagram over ``rng.speeds_hz`` already computed (else computed here). Returns the lines."""
+    from pathlib import Path
+
+    import matplotlib.pyplot as plt
+
+    from rotordyn.plot.coefficients import bearing_coefficients as coefficient_figure
+
+    outdir = Path(outdir)
+    sp = rng.speeds_hz
+    pc, ay = chamber_pressure_pa, config_ay_m
+    c = campbell
+    if c is None:
+        c = (analysis.campbell(system, sp, pc, ay) if system.bearings
+             else analysis.rotor_campbell(system, sp, n_modes=12))
+    u, *_ = api_response(system, sp, rng.n_mc_hz, pc, ay, operating_speed_hz)
+    crit = critical_speed_table(c, u)
+    crit.to_csv(outdir / "critical_speeds.csv", index=False)
+    shapes = shapes_for(system, crit, rng.n_mc_hz, 1.5 * float(sp[-1]), pc, ay)
+    for k, m in enumerate(shapes, start=1):
+        if m.figure is not None:
+            m.figure.savefig(outdir / f"critical_mode_{k}.png", dpi=200, bbox_inches="tight")
+            plt.close(m.figure)
+    lines = critical_text_lines(crit, shapes, rng, pc, ay is not None)
+    coeffs = bearing_coefficient_frame(system, sp, pc, ay)
+    if not coeffs.empty:
+        coeffs.to_csv(outdir / "bearing_coefficients.csv", index=False)
+        fig = coefficient_figure(coeffs)
+        fig.savefig(outdir / "bearing_coefficients.png", dpi=200, bbox_inches="tight")
+        plt.close(fig)
+    return lines + coefficient_text_lines(coeffs)
 
 
 def coefficient_speeds(speeds_hz, n: int = 11) -> np.ndarray:
@@ -113,6 +424,8 @@ COEFFICIENT_HEADER = ("bearing", "speed (Hz)", "kxx (MN/m)", "kxy (MN/m)", "kyx 
                       "kyy (MN/m)", "cxx (kN·s/m)", "cxy (kN·s/m)", "cyx (kN·s/m)",
                       "cyy (kN·s/m)", "status")
 
-__all__ = ["COEFFICIENT_HEADER", "CriticalShape", "MAX_CRITICAL_SHAPES",
-           "bearing_coefficient_frame", "coefficient_rows", "coefficient_speeds",
-           "critical_mode_shapes"]
+__all__ = ["COEFFICIENT_HEADER", "CRITICAL_COLUMNS", "CRITICAL_HEADER", "CriticalShape",
+           "MAX_CRITICAL_SHAPES", "SOURCE_CAMPBELL", "SOURCE_LEAST_DAMPED", "SOURCE_PEAK", "bearing_coefficient_frame",
+           "api_response", "coefficient_rows", "coefficient_speeds", "critical_mode_shapes",
+           "coefficient_text_lines", "critical_rows", "critical_speed_table",
+           "critical_text_lines", "not_resonance_note", "shape_source", "shapes_for", "write_text_sections"]

@@ -96,6 +96,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
     ax.figure.savefig(outdir / "rotor_mode_shapes.png", dpi=200, bbox_inches="tight")
 
     active = [b for b in s.bearings if isinstance(b, ActiveJournalBearing)]
+    campbell_04 = None  # the Campbell at p_c = 0.4 MPa of the paper's checks, reused below
     # API 617 Level I (with the model's stages, at the top of the operating range)
     from rotordyn.report import level1 as level1_report
 
@@ -154,7 +155,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         t.to_frame().to_csv(outdir / "threshold.csv", index=False)
 
         # 5. Campbell and critical speeds at p_c = 0.4 MPa, a_y = 0
-        c = analysis.campbell(s, np.arange(5.0, 121.0, 1.0), 0.4e6, 0.0)
+        c = campbell_04 = analysis.campbell(s, np.arange(5.0, 121.0, 1.0), 0.4e6, 0.0)
         crit = c.critical_speeds()
         cs = crit["speed_hz"].to_numpy()
         line = "critical speeds at p_c = 0.4 MPa: " + ", ".join(f"{x:.1f} Hz" for x in cs)
@@ -173,14 +174,30 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
             say()
             _calibrations_side_by_side(say, outdir)
 
-    (outdir / "report.txt").write_text("\n".join(lines) + "\n")
     if html:
         from rotordyn.report.html import write_html
 
+        extra: list[str] = []
         write_html(model, html, text_lines=lines, operating_speed_hz=operating_speed_hz,
                    speeds_hz=speeds_hz, level1_options=level1_options,
-                   figure_dir=outdir)
+                   figure_dir=outdir, text_sink=extra)
+        for text in extra:
+            say(text)
         print(f"wrote {html}", file=sys.stderr)
+    else:
+        # the critical speeds with their sources, their mode shapes and the bearings'
+        # coefficients, as the HTML report has them (same speeds, p_c and a_y)
+        from rotordyn.report import sections
+        from rotordyn.report.criteria import speed_range
+
+        rng = speed_range(s, operating_speed_hz or ((45.0, 55.0) if paper else None),
+                          speeds_hz, None, paper)
+        same = campbell_04 is not None and np.array_equal(campbell_04.speeds_hz, rng.speeds_hz)
+        for text in sections.write_text_sections(
+                s, rng, 0.4e6 if active else 0.0, 0.0 if active else None, outdir,
+                operating_speed_hz, campbell=campbell_04 if same else None):
+            say(text)
+    (outdir / "report.txt").write_text("\n".join(lines) + "\n")
     print(f"wrote {outdir}/report.txt and tables/figures", file=sys.stderr)
     return 0
 

@@ -46,10 +46,10 @@ def damping_ratio(eigenvalues: np.ndarray) -> np.ndarray:
 
 def log_dec(eigenvalues: np.ndarray) -> np.ndarray:
     """Logarithmic decrement δ = −2π Re λ / Im λ (inf for a non-oscillating root; 0 within the
-    round-off band of Re λ = 0)."""
+    round-off band of Re λ = 0, +0 never −0: tables printed "-0")."""
     im = np.asarray(eigenvalues).imag
     return np.where(im > 0, -2 * np.pi * settled_real(eigenvalues) / np.where(im > 0, im, 1.0),
-                    np.inf)
+                    np.inf) + 0.0
 
 
 @dataclass(frozen=True)

@@ -24,9 +24,9 @@ class StaticResult(Display):
     the housing offset a). Internal forces at both ends of every element, at
     ``section_positions_m`` (2 n_elements,) = (z_left, z_right) per element:
     ``shear_x_n``/``shear_y_n`` the resultant of all external forces (gravity, reactions)
-    acting on the rotor left of the section; ``moment_yz_nm`` the bending moment in the vertical
+    acting on the rotor left of the section; ``moment_yz_n_m`` the bending moment in the vertical
     (y–z) plane of those forces about the section, sagging positive (a beam on two supports
-    under its weight has M > 0), ``moment_xz_nm`` likewise in the horizontal plane.
+    under its weight has M > 0), ``moment_xz_n_m`` likewise in the horizontal plane.
     reactions: one row per support and bearing element (``name``, ``station``, ``kind``,
     ``force_x_n``, ``force_y_n``: the force it exerts on the rotor, N). ``weight_n``: the
     rotor's weight; the reactions' y-sum balances it.
@@ -39,8 +39,8 @@ class StaticResult(Display):
     section_positions_m: np.ndarray
     shear_x_n: np.ndarray
     shear_y_n: np.ndarray
-    moment_xz_nm: np.ndarray
-    moment_yz_nm: np.ndarray
+    moment_xz_n_m: np.ndarray
+    moment_yz_n_m: np.ndarray
     reactions: pd.DataFrame
     weight_n: float
     status: str = "ok"
@@ -54,12 +54,12 @@ class StaticResult(Display):
         if not self.converged:
             return f"<StaticResult {self.status}: {self.message}>"
         k = int(np.argmax(np.abs(self.deflection_y_m)))
-        j = int(np.argmax(np.abs(self.moment_yz_nm)))
+        j = int(np.argmax(np.abs(self.moment_yz_n_m)))
         share = ", ".join(f"{r.name or r.kind} {r.force_y_n:.4g} N"
                           for r in self.reactions.itertuples())
         return (f"<StaticResult at {self.speed_hz:g} Hz: weight {self.weight_n:.4g} N carried by "
                 f"{share}; largest deflection {self.deflection_y_m[k] * 1e6:.4g} µm at z = "
-                f"{self.node_positions_m[k]:.4g} m, largest moment {self.moment_yz_nm[j]:.4g} "
+                f"{self.node_positions_m[k]:.4g} m, largest moment {self.moment_yz_n_m[j]:.4g} "
                 f"N·m at z = {self.section_positions_m[j]:.4g} m>")
 
     def to_frame(self) -> pd.DataFrame:
@@ -72,7 +72,7 @@ class StaticResult(Display):
             "z_m": z, "side": np.tile(["left", "right"], n // 2),
             "deflection_x_m": defl_x, "deflection_y_m": defl_y,
             "shear_x_n": self.shear_x_n, "shear_y_n": self.shear_y_n,
-            "moment_xz_nm": self.moment_xz_nm, "moment_yz_nm": self.moment_yz_nm,
+            "moment_xz_n_m": self.moment_xz_n_m, "moment_yz_n_m": self.moment_yz_n_m,
             "status": [self.status] * n,
         })
 
