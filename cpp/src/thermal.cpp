@@ -9,6 +9,7 @@
 #include <string>
 
 #include "rotordyn/errors.hpp"
+#include "thermal_detail.hpp"
 
 namespace rotordyn {
 
@@ -149,6 +150,60 @@ double max_film_flow(const ReynoldsSolver& solver, const FilmSolution& sol, doub
                  : face_flux(jmax) + d * (face_flux((jmax + sd) % N) - face_flux(jmax));
 }
 
+// The film's temperature at a fixed position (P ∝ μ, flows independent of μ): the root of
+// T − Ts − m a μ(T), a = P/(μ ρ c (Q − Q_s/2)), m = λ Q_r/Q_f + k (bracketed secant/bisection).
+ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, double mu,
+                              double P, double Q, double Qs, const std::string& name) {
+  const double rc = oil.density_kg_m3 * oil.specific_heat_j_per_kg_k;
+  const double denom = Q - 0.5 * Qs;
+  if (!(P > 0.0 && Q > 0.0 && Qs >= 0.0 && denom > 0.0)) {
+    std::ostringstream os;
+    os << "thermal equilibrium" << (name.empty() ? "" : ", film '" + name + "'")
+       << ": power loss " << P << " W, flow " << Q
+       << " m^3/s and side flow " << Qs << " m^3/s give no heat balance";
+    throw ConvergenceError(os.str());
+  }
+  const double Ts = opt.supply_temperature_c;
+  const double Qr = std::max(Q - Qs, 0.0);
+  const double Qf = opt.supply_flow_m3_s > 0.0 ? opt.supply_flow_m3_s : Q - opt.carry_over * Qr;
+  const double m = opt.carry_over * Qr / Qf + opt.effective_factor;
+  const double a = P / (mu * rc * denom);
+  auto g = [&](double t) { return t - Ts - m * a * oil.viscosity_pa_s(t); };
+  double lo = Ts, hi = std::min(Ts + m * a * oil.viscosity_pa_s(Ts), oil.t_max_c);
+  double glo = g(lo), ghi = g(hi);
+  if (ghi < 0.0)
+    throw ConvergenceError("thermal equilibrium" + (name.empty() ? "" : ", film '" + name + "'") +
+                           ": the film temperature exceeds the viscosity law's range (t_max_c = " +
+                           num(oil.t_max_c) + " degC)");
+  for (int k = 0; k < 200 && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++k) {
+    double t = hi - ghi * (hi - lo) / (ghi - glo);
+    if (!(t > lo && t < hi) || k % 3 == 2) t = 0.5 * (lo + hi);
+    const double gt = g(t);
+    if (gt == 0.0) {
+      lo = hi = t;
+      break;
+    }
+    if (gt < 0.0) {
+      lo = t;
+      glo = gt;
+    } else {
+      hi = t;
+      ghi = gt;
+    }
+  }
+  ThermalFilmState st;
+  st.effective_temperature_c = 0.5 * (lo + hi);  // the new temperature
+  st.temperature_rise_k = P / (rc * denom);       // ΔT at μ
+  st.inlet_temperature_c = Ts + opt.carry_over * Qr * st.temperature_rise_k / Qf;
+  st.max_temperature_c = st.inlet_temperature_c + st.temperature_rise_k;
+  st.viscosity_pa_s = mu;
+  st.power_loss_w = P;
+  st.film_flow_m3_s = Q;
+  st.side_flow_m3_s = Qs;
+  st.supply_flow_m3_s = Qf;
+  return st;
+}
+
 ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
                                        const ThermalOptions& opt, double lx, double ly,
                                        double omega) {
@@ -156,8 +211,7 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
   opt.validate(oil);
   if (!(std::isfinite(omega) && omega != 0.0))
     throw InputError("speed_hz: the thermal equilibrium needs a nonzero speed");
-  const double rc = oil.density_kg_m3 * oil.specific_heat_j_per_kg_k;
-  const double Ts = opt.supply_temperature_c, lam = opt.carry_over, kf = opt.effective_factor;
+  const double Ts = opt.supply_temperature_c;
   ThermalEquilibrium out;
   double T = Ts, x = 0.0, y = 0.0;
   double T_prev = Ts, f_prev = std::numeric_limits<double>::quiet_NaN();
@@ -177,57 +231,21 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
     const double Q = solver.geometry().grooves.empty() || !(qg > 0.0)
                          ? max_film_flow(solver, sol, omega) : qg;
     const double Qs = sol.side_flow_m3_s;
-    const double denom = Q - 0.5 * Qs;
-    if (!(P > 0.0 && Q > 0.0 && Qs >= 0.0 && denom > 0.0))
-      throw ConvergenceError("thermal equilibrium: the film's power loss " + num(P) +
-                             " W, flow " + num(Q) + " m^3/s and side flow " + num(Qs) +
-                             " m^3/s give no heat balance (Q - Q_s/2 must be > 0)");
-    const double Qr = std::max(Q - Qs, 0.0);
-    const double Qf = opt.supply_flow_m3_s > 0.0 ? opt.supply_flow_m3_s : Q - lam * Qr;
-    const double m = lam * Qr / Qf + kf;  // T_eff = Ts + m ΔT
-    // At this position P ∝ μ: T_eff solves g(T) = T − Ts − m a μ(T) = 0, a = P/(μ ρ c (Q − Q_s/2)),
-    // g increasing (μ falls with T): bracket [Ts, Ts + m a μ(Ts)], bisection + secant.
-    const double a = P / (mu * rc * denom);
-    auto gfun = [&](double t) { return t - Ts - m * a * oil.viscosity_pa_s(t); };
-    double lo = Ts, hi = Ts + m * a * oil.viscosity_pa_s(Ts);
-    if (!(hi < oil.t_max_c))
-      hi = std::min(hi, oil.t_max_c);
-    double glo = gfun(lo), ghi = gfun(hi);
-    if (ghi < 0.0)
-      throw ConvergenceError("thermal equilibrium: the film temperature exceeds the viscosity "
-                             "law's range (t_max_c = " + num(oil.t_max_c) + " degC)");
-    double Tn = hi;
-    for (int k = 0; k < 200 && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++k) {
-      double t = hi - ghi * (hi - lo) / (ghi - glo);  // secant in the bracket
-      if (!(t > lo && t < hi) || k % 3 == 2) t = 0.5 * (lo + hi);
-      const double gt = gfun(t);
-      if (gt == 0.0) {
-        lo = hi = t;
-        break;
-      }
-      if (gt < 0.0) {
-        lo = t;
-        glo = gt;
-      } else {
-        hi = t;
-        ghi = gt;
-      }
-    }
-    Tn = 0.5 * (lo + hi);
-    const double dT_rise = P / (rc * denom);  // ΔT at the current μ
+    const ThermalFilmState st = heat_balance(oil, opt, mu, P, Q, Qs, "");
+    const double Tn = st.effective_temperature_c;  // the heat balance's temperature at this position
     out.iterations = it;
     if (std::abs(Tn - T) <= opt.tol_k) {
       out.equilibrium = eq;
       out.coefficients = solver.coefficients(x, y, omega);
       out.viscosity_pa_s = mu;
       out.effective_temperature_c = T;
-      out.temperature_rise_k = dT_rise;
-      out.inlet_temperature_c = Ts + lam * Qr * dT_rise / Qf;
-      out.max_temperature_c = out.inlet_temperature_c + dT_rise;
+      out.temperature_rise_k = st.temperature_rise_k;
+      out.inlet_temperature_c = st.inlet_temperature_c;
+      out.max_temperature_c = st.max_temperature_c;
       out.power_loss_w = P;
       out.film_flow_m3_s = Q;
       out.side_flow_m3_s = Qs;
-      out.supply_flow_m3_s = Qf;
+      out.supply_flow_m3_s = st.supply_flow_m3_s;
       if (!(out.max_temperature_c <= oil.t_max_c))
         throw ConvergenceError("thermal equilibrium: the maximum film temperature " +
                                num(out.max_temperature_c) + " degC exceeds the viscosity "

@@ -9,62 +9,10 @@
 
 #include "rotordyn/errors.hpp"
 #include "rotordyn/thermal.hpp"
+#include "thermal_detail.hpp"
 
 namespace rotordyn {
 
-namespace {
-// The film's temperature at a fixed position (P ∝ μ, flows independent of μ): the root of
-// T − Ts − m a μ(T), a = P/(μ ρ c (Q − Q_s/2)), m = λ Q_r/Q_f + k (bracketed secant/bisection).
-ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, double mu,
-                              double P, double Q, double Qs, const std::string& name) {
-  const double rc = oil.density_kg_m3 * oil.specific_heat_j_per_kg_k;
-  const double denom = Q - 0.5 * Qs;
-  if (!(P > 0.0 && Q > 0.0 && Qs >= 0.0 && denom > 0.0)) {
-    std::ostringstream os;
-    os << "thermal equilibrium, film '" << name << "': power loss " << P << " W, flow " << Q
-       << " m^3/s and side flow " << Qs << " m^3/s give no heat balance";
-    throw ConvergenceError(os.str());
-  }
-  const double Ts = opt.supply_temperature_c;
-  const double Qr = std::max(Q - Qs, 0.0);
-  const double Qf = opt.supply_flow_m3_s > 0.0 ? opt.supply_flow_m3_s : Q - opt.carry_over * Qr;
-  const double m = opt.carry_over * Qr / Qf + opt.effective_factor;
-  const double a = P / (mu * rc * denom);
-  auto g = [&](double t) { return t - Ts - m * a * oil.viscosity_pa_s(t); };
-  double lo = Ts, hi = std::min(Ts + m * a * oil.viscosity_pa_s(Ts), oil.t_max_c);
-  double glo = g(lo), ghi = g(hi);
-  if (ghi < 0.0)
-    throw ConvergenceError("thermal equilibrium, film '" + name + "': the film temperature "
-                           "exceeds the viscosity law's range (t_max_c)");
-  for (int k = 0; k < 200 && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++k) {
-    double t = hi - ghi * (hi - lo) / (ghi - glo);
-    if (!(t > lo && t < hi) || k % 3 == 2) t = 0.5 * (lo + hi);
-    const double gt = g(t);
-    if (gt == 0.0) {
-      lo = hi = t;
-      break;
-    }
-    if (gt < 0.0) {
-      lo = t;
-      glo = gt;
-    } else {
-      hi = t;
-      ghi = gt;
-    }
-  }
-  ThermalFilmState st;
-  st.effective_temperature_c = 0.5 * (lo + hi);  // the new temperature
-  st.temperature_rise_k = P / (rc * denom);       // ΔT at μ
-  st.inlet_temperature_c = Ts + opt.carry_over * Qr * st.temperature_rise_k / Qf;
-  st.max_temperature_c = st.inlet_temperature_c + st.temperature_rise_k;
-  st.viscosity_pa_s = mu;
-  st.power_loss_w = P;
-  st.film_flow_m3_s = Q;
-  st.side_flow_m3_s = Qs;
-  st.supply_flow_m3_s = Qf;
-  return st;
-}
-}  // namespace
 
 ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
                                                const std::vector<ThermalFilm>& thermal,
