@@ -20,4 +20,5 @@ void bind_sleeve(py::module_& m);
 void bind_bearings(py::module_& m);
 void bind_batch(py::module_& m);
 void bind_periodic(py::module_& m);
+void bind_continuation(py::module_& m);
 }  // namespace rotordyn::py_bind

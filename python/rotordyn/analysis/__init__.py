@@ -10,8 +10,9 @@ from rotordyn.analysis.transient import transient
 from rotordyn.analysis.unbalance import unbalance_response
 from rotordyn.analysis.threshold import stability_boundary, threshold
 from rotordyn.analysis.periodic import periodic_orbit
+from rotordyn.analysis.continuation import continuation
 from rotordyn.analysis.modes import RotorMatrices, modes, rotor_campbell
 
 __all__ = ["level1", "static", "campbell", "modes", "rotor_campbell", "equilibrium", "linearize",
            "stability", "threshold", "stability_boundary", "unbalance_response", "statespace",
-           "transient", "periodic_orbit", "RotorMatrices"]
+           "transient", "periodic_orbit", "continuation", "RotorMatrices"]

@@ -1,6 +1,7 @@
 """Result objects (frozen dataclasses of numpy arrays with ``.to_frame()`` and ``.plot()``)."""
 
 from rotordyn.results.campbell import CampbellResult
+from rotordyn.results.continuation import BranchResult
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.results.level1 import Level1Result
 from rotordyn.results.modes import ModesResult
@@ -15,5 +16,5 @@ from rotordyn.results.unbalance import UnbalanceResult
 
 __all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel",
            "StabilityResult", "ThresholdResult", "BoundaryResult", "UnbalanceResult",
-           "StateSpaceResult", "TransientResult", "StaticResult", "PeriodicOrbitResult",
+           "StateSpaceResult", "TransientResult", "StaticResult", "PeriodicOrbitResult", "BranchResult",
            "load_result", "save_result"]
