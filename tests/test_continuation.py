@@ -1,0 +1,103 @@
+"""Pseudo-arclength continuation of periodic orbits (issue 19, docs/nonlinear.md).
+
+References:
+* closed form: a rotor on linear supports forced by unbalance has the periodic orbit
+  r(t) = K⁻¹(Q − K a) + Re(X e^{iΩt}), (K − Ω² M + iΩ(C + ΩG)) X = Ω² (u_c − i u_s), at every
+  speed of the branch;
+* the linear threshold (the equilibrium's least-damped eigenvalue through zero, Brent on the
+  scan of ``rotordyn.threshold``): a branch of limit cycles ends where it meets it (Hopf).
+"""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rotordyn as rd
+from rotordyn.analysis.assembly import assembled
+
+MODELS = Path(__file__).parent / "data" / "models"
+UB = [(3, 1e-3, 30.0)]
+
+
+@pytest.fixture(scope="module")
+def linear_system():
+    return rd.System.from_toml(MODELS / "compressor_linear.toml")
+
+
+@pytest.fixture(scope="module")
+def linear_orbit(linear_system):
+    res = rd.periodic_orbit(linear_system, 60.0, kind="forced", unbalances=UB, rtol=1e-9,
+                            atol_m=1e-13)
+    assert res.ok, res.message
+    return res
+
+
+def closed_form(system, f, t):
+    asm = assembled(system)
+    m = asm.model
+    w = 2 * np.pi * f
+    M, K, C, G = (np.asarray(x) for x in (m.M, m.K, m.C, m.G))
+    n = M.shape[0]
+    uc, us = np.zeros(n), np.zeros(n)
+    for st, me, ph in UB:
+        L = asm.station_load_matrix(st)
+        p = np.radians(ph)
+        uc += me * (L[:, 0] * np.cos(p) + L[:, 1] * np.sin(p))
+        us += me * (-L[:, 0] * np.sin(p) + L[:, 1] * np.cos(p))
+    rs = np.linalg.solve(K, np.asarray(m.Q) - K @ asm.config_vector(None))
+    X = np.linalg.solve(K - w**2 * M + 1j * w * (C + w * G), w**2 * (uc - 1j * us))
+    return rs[None, :] + np.real(X[None, :] * np.exp(1j * w * t[:, None])), np.abs(X).max()
+
+
+def test_forced_branch_over_speed_equals_the_closed_form_at_every_point(linear_system,
+                                                                         linear_orbit):
+    """Every corrected point of a speed branch (60 Hz upwards, 5 points) is the closed-form
+    orbit at the speed the corrector chose, to 1e-6 of the largest displacement (static sag
+    plus whirl; CVODES at rtol 1e-9, shooting tol 1e-7); the period follows
+    1/speed; the arclength grows and the speeds increase (no turning point on a linear
+    rotor)."""
+    br = rd.continuation(linear_system, "speed_hz", (50.0, 200.0), linear_orbit,
+                         unbalances=UB, ds=0.05, max_points=5, rtol=1e-9, atol_m=1e-13,
+                         tol=1e-7)
+    assert br.ok and len(br) == 5, br.message
+    assert np.all(np.diff(br.parameter) > 0) and br.parameter[-1] > 61.0
+    assert np.all(np.diff(br.arclength) > 0)
+    assert br.period_s == pytest.approx(1 / br.parameter, rel=1e-12)
+    for o in br.orbits:
+        r_exact, amp = closed_form(linear_system, o.speed_hz, o.t)
+        assert np.abs(o.r - r_exact).max() < 1e-6 * np.abs(r_exact).max()
+    assert np.all(br.stable) and br.bifurcations == ()
+    df = br.to_frame()
+    assert {"speed_hz", "amplitude_m", "period_s", "max_multiplier", "stable",
+            "bifurcation"} <= set(df.columns)
+    assert len(df) == 5 * len(br.bearing_names)
+    assert "BranchResult ok" in repr(br) and "speed" in repr(br)
+
+
+def test_direction_minus_one_walks_down(linear_system, linear_orbit):
+    """direction=-1 leaves the start towards lower speeds; the branch stops at the bound."""
+    br = rd.continuation(linear_system, "speed_hz", (58.0, 200.0), linear_orbit,
+                         unbalances=UB, ds=0.1, ds_max=0.2, max_points=30, direction=-1,
+                         tol=1e-6)
+    assert br.ok and br.stop == "bound"
+    assert np.all(np.diff(br.parameter) < 0) and br.parameter.min() >= 58.0
+
+
+@pytest.mark.parametrize("kw, field", [
+    ({"vary": "clearance"}, "vary"),
+    ({"bounds": (70.0, 80.0)}, "bounds"),
+    ({"bounds": (80.0, 70.0)}, "bounds"),
+    ({"ds": 0.0}, "ds"),
+    ({"ds": -0.1}, "ds"),
+    ({"unbalances": ()}, "unbalances"),
+    ({"start": "orbit"}, "start"),
+    ({"direction": 0}, "direction"),
+])
+def test_bad_input_names_the_field(linear_system, linear_orbit, kw, field):
+    args = {"vary": "speed_hz", "bounds": (50.0, 80.0), "start": linear_orbit,
+            "unbalances": UB}
+    args.update(kw)
+    with pytest.raises(rd.InputError, match=field):
+        rd.continuation(linear_system, args.pop("vary"), args.pop("bounds"), args.pop("start"),
+                        **args)
