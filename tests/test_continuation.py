@@ -101,3 +101,22 @@ def test_bad_input_names_the_field(linear_system, linear_orbit, kw, field):
     with pytest.raises(rd.InputError, match=field):
         rd.continuation(linear_system, args.pop("vary"), args.pop("bounds"), args.pop("start"),
                         **args)
+
+
+def test_cli_continuation(capsys, tmp_path):
+    """``rotordyn continuation`` prints the branch table (exit 0); a bad --vary is refused by
+    the parser and a start outside --bounds is an InputError (exit 2)."""
+    from rotordyn.cli import main
+
+    model = str(MODELS / "compressor_linear.toml")
+    fig = tmp_path / "branch.png"
+    assert main(["continuation", model, "--kind", "forced", "--speed-hz", "60",
+                 "--unbalance", "3,1e-3,30", "--vary", "speed_hz", "--bounds", "55", "80",
+                 "--max-points", "3", "--plot", str(fig)]) == 0
+    out = capsys.readouterr().out
+    assert "BranchResult ok" in out and "speed_hz" in out and "max_multiplier" in out
+    assert fig.stat().st_size > 0
+    assert main(["continuation", model, "--kind", "forced", "--speed-hz", "60",
+                 "--unbalance", "3,1e-3,30", "--vary", "speed_hz", "--bounds", "70",
+                 "80"]) == 2
+    assert "bounds" in capsys.readouterr().err

@@ -31,7 +31,19 @@ _PARAM = {"chamber_pressure_pa": "chamber_pressure", "speed_hz": "speed",
 
 
 def _amplitude(o: PeriodicOrbitResult) -> np.ndarray:
+    """(n_bearings,) the journals' amplitudes; a system without bearings: (1,) the largest
+    distance of any coordinate from its mean over the orbit."""
+    if o.journal_x_m.shape[1] == 0:
+        return np.array([float(np.max(np.abs(o.r - o.r.mean(axis=0))))])
     return np.array([o.amplitude(b) for b in range(o.journal_x_m.shape[1])])
+
+
+def _names(bcs) -> tuple:
+    return tuple(bc.name for bc in bcs) if bcs else ("largest coordinate",)
+
+
+def _clearances(bcs) -> np.ndarray:
+    return np.array([bc.clearance_m for bc in bcs]) if bcs else np.array([np.nan])
 
 
 @limited_blas
@@ -198,11 +210,11 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
              "fd_flows": first.fd_flows}
     if first.orbit.status != "ok":
         return BranchResult(
-            vary=vary, kind=kind, parameter=np.zeros(0), amplitude_m=np.zeros((0, len(bcs))),
+            vary=vary, kind=kind, parameter=np.zeros(0),
+            amplitude_m=np.zeros((0, len(_names(bcs)))),
             period_s=np.zeros(0), max_multiplier=np.zeros(0), stable=np.zeros(0, bool),
             critical_type=(), arclength=np.zeros(0), tangent_p=np.zeros(0),
-            bearing_names=tuple(bc.name for bc in bcs),
-            clearance_m=np.array([bc.clearance_m for bc in bcs]), bifurcations=(),
+            bearing_names=_names(bcs), clearance_m=_clearances(bcs), bifurcations=(),
             bounds=(lo, hi), stop="start", message=first.orbit.message, stats=stats,
             status="not_converged")
 
@@ -289,7 +301,7 @@ def _hopf_estimate(orbits, beyond: PeriodicOrbitResult, vary: str) -> dict:
     key = {"chamber_pressure_pa": "chamber_pressure_pa", "speed_hz": "speed_hz",
            "config_ay_m": "config_ay_m"}[vary]
     p = np.array([getattr(o, key) for o in pts])
-    A = np.array([o.amplitude(0) for o in pts])
+    A = np.array([_amplitude(o)[0] for o in pts])
     A[-1] = -A[-1]
     if len(pts) == 3:
         coef = np.polyfit(A, p, 2)
@@ -297,7 +309,7 @@ def _hopf_estimate(orbits, beyond: PeriodicOrbitResult, vary: str) -> dict:
     else:
         w = A[0] / (A[0] - A[1])
         p_h, curv = float(p[0] + w * (p[1] - p[0])), float("nan")
-    nb = beyond.journal_x_m.shape[1]
+    nb = max(beyond.journal_x_m.shape[1], 1)
     return {"kind": "hopf", "index": len(orbits) - 1, "parameter": p_h,
             "amplitude_m": np.zeros(nb), "multiplier": complex(1.0), "curvature": curv,
             "period_s": float(beyond.period_s)}
@@ -307,7 +319,7 @@ def _branch(vary, kind, orbits, tangents, arcl, to_core, bcs, bounds, stop, mess
     n_pts = len(orbits)
     p = np.array([{"chamber_pressure_pa": o.chamber_pressure_pa, "speed_hz": o.speed_hz,
                    "config_ay_m": o.config_ay_m}[vary] for o in orbits])
-    amp = np.array([_amplitude(o) for o in orbits]).reshape(n_pts, len(bcs))
+    amp = np.array([_amplitude(o) for o in orbits]).reshape(n_pts, len(_names(bcs)))
     mm = np.array([abs(o.critical_multiplier) if o.critical_multiplier is not None else 0.0
                    for o in orbits])
     stable = np.array([o.stable for o in orbits], dtype=bool)
@@ -336,7 +348,6 @@ def _branch(vary, kind, orbits, tangents, arcl, to_core, bcs, bounds, stop, mess
         vary=vary, kind=kind, parameter=p, amplitude_m=amp,
         period_s=np.array([o.period_s for o in orbits]), max_multiplier=mm, stable=stable,
         critical_type=ctype, arclength=np.array(arcl, dtype=float), tangent_p=tp,
-        bearing_names=tuple(bc.name for bc in bcs),
-        clearance_m=np.array([bc.clearance_m for bc in bcs]), bifurcations=tuple(bif),
+        bearing_names=_names(bcs), clearance_m=_clearances(bcs), bifurcations=tuple(bif),
         orbits=tuple(orbits), bounds=bounds, stop=stop, message=message, stats=stats,
         status="ok")

@@ -22,7 +22,9 @@ class BranchResult(Display):
     """A branch of periodic orbits over the parameter ``vary``.
 
     parameter: (n_points,) in the unit of ``vary`` (Pa, Hz or m); amplitude_m:
-    (n_points, n_bearings) the largest distance of each journal from its orbit's mean position;
+    (n_points, n_bearings) the largest distance of each journal from its orbit's mean position
+    (a system without bearings: one column, "largest coordinate", the largest distance of any
+    coordinate from its mean, clearance NaN);
     period_s: (n_points,); max_multiplier: (n_points,) the modulus of the critical
     (non-trivial, largest) Floquet multiplier; stable: (n_points,) bool (max_multiplier < 1);
     critical_type: (n_points,) how the critical multiplier sits (``fold``: real > 0,
@@ -79,12 +81,12 @@ class BranchResult(Display):
         if not len(self):
             return head + f", no points: {self.message}>"
         p = self.parameter * f
-        a = self.amplitude_m[:, 0] * 1e6 if self.amplitude_m.shape[1] else np.zeros(len(self))
+        a = self.amplitude_m[:, 0] * 1e6
         bif = ", ".join(f"{b['kind']} at {sym} = {b['parameter'] * f:.5g} {disp}"
                         for b in self.bifurcations) or "no bifurcation"
         return (f"{head}, {len(self)} points, {sym} {p[0]:.5g} → {p[-1]:.5g} {disp} (range "
                 f"{p.min():.5g}…{p.max():.5g}), amplitude {a[0]:.4g} → {a[-1]:.4g} µm, "
-                f"{int(np.sum(self.stable))} stable; {bif}; stop: {self.stop}>")
+                f"{int(np.sum(self.stable))} stable ({self.bearing_names[0]}); {bif}; stop: {self.stop}>")
 
     def to_frame(self) -> pd.DataFrame:
         """One row per (branch point, bearing): the parameter in its unit (column named by
