@@ -312,7 +312,8 @@ def _hopf_estimate(orbits, beyond: PeriodicOrbitResult, vary: str) -> dict:
     nb = max(beyond.journal_x_m.shape[1], 1)
     return {"kind": "hopf", "index": len(orbits) - 1, "parameter": p_h,
             "amplitude_m": np.zeros(nb), "multiplier": complex(1.0), "curvature": curv,
-            "period_s": float(beyond.period_s)}
+            "period_s": float(beyond.period_s), "beyond_parameter": float(p[-1]),
+            "beyond_amplitude_m": float(-A[-1])}
 
 
 def _branch(vary, kind, orbits, tangents, arcl, to_core, bcs, bounds, stop, message, stats):

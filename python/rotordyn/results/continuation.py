@@ -36,7 +36,9 @@ class BranchResult(Display):
     ``period_doubling`` — through −1 —, ``neimark_sacker`` — a complex pair through the unit
     circle —, ``stability_change`` — a real multiplier through +1 without a turn, e.g. a
     branch point —, or ``hopf`` — the cycles shrink onto the equilibrium: the branch ends,
-    with ``curvature`` c of p = p_H + b·A + c·A² and the period there), ``index`` (the point after it), ``parameter`` and ``amplitude_m`` (linear
+    with ``curvature`` c of p = p_H + b·A + c·A², the period there, and
+    ``beyond_parameter``/``beyond_amplitude_m`` of the corrected point past the turn, not on
+    the branch), ``index`` (the point after it), ``parameter`` and ``amplitude_m`` (linear
     interpolation at the crossing), ``multiplier`` (the critical multiplier after it).
     orbits: the PeriodicOrbitResult of every point. stop: why the branch ended (``bound``,
     ``max_points``, ``step_min``, ``hopf`` — the branch passed through the

@@ -1,0 +1,82 @@
+"""Limit-cycle branch of the paper rig over the chamber pressure by pseudo-arclength
+continuation (issue 19; docs/nonlinear.md prints these numbers).
+
+Rig (``rd.models.paper_rig()``) at 50 Hz, a_y = −1.85 mm. Start: the stable cycle at
+p_c = 0.05 MPa (paper Fig. 11) from a 0.6 s transient (journal disturbed by 0.1 c upwards)
+and :func:`rotordyn.periodic_orbit` (rtol 1e-6, tol 1e-4). Then
+:func:`rotordyn.continuation` over p_c upwards (bounds 0.04–0.12 MPa, ds 0.05, rtol 1e-6,
+tol 1e-4), and downwards with ``--down``. Printed: every branch point (p_c, amplitude,
+period, |μ_c|, stable), the bifurcations (the Hopf point where the cycle shrinks onto the
+equilibrium: p_H by a parabola p(A) through the last points), the linear threshold of the
+equilibrium (:func:`rotordyn.threshold`, Brent) and its whirl frequency for comparison, and
+the least-damped eigenvalue at 0.1 MPa. Timing: the branch (one run; wall and CPU, one
+thread) beside one shooting solve from the same transient (the baseline, median of 3), load
+printed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).parent))
+from _common import footer, header, measure, pin_threads  # noqa: E402
+
+import rotordyn as rd  # noqa: E402
+
+SPEED_HZ, PC_PA, AY_M, C_M = 50.0, 0.05e6, -1.85e-3, 3e-4
+KW = {"rtol": 1e-6, "tol": 1e-4}
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--ds", type=float, default=0.05)
+    ap.add_argument("--max-points", type=int, default=50)
+    ap.add_argument("--down", action="store_true", help="also continue towards lower p_c")
+    args = ap.parse_args()
+    print(pin_threads(1))
+    header("bench_continuation: paper rig limit-cycle branch over p_c, 50 Hz, a_y = -1.85 mm")
+    rig = rd.models.paper_rig()
+    tr = rd.transient(rig, 0.6, SPEED_HZ, PC_PA, AY_M, disturbance_m=(0.0, 0.1 * C_M),
+                      n_out=6001)
+    cyc = rd.periodic_orbit(rig, SPEED_HZ, PC_PA, AY_M, start=tr, **KW)
+    print("start:", cyc)
+    base = measure(lambda: rd.periodic_orbit(rig, SPEED_HZ, PC_PA, AY_M, start=tr, **KW),
+                   repeat=3, warmup=0)
+    runs = [("up", 1)] + ([("down", -1)] if args.down else [])
+    for name, d in runs:
+        w0, c0 = time.perf_counter(), time.process_time()
+        br = rd.continuation(rig, "chamber_pressure_pa", (0.0, 0.12e6), cyc, ds=args.ds,
+                             max_points=args.max_points, direction=d, **KW)
+        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+        print(f"\nbranch {name}: {br}")
+        print(f"{'p_c MPa':>10} {'amplitude µm':>13} {'A/c':>6} {'period ms':>10} "
+              f"{'|mu_c|':>8} {'type':>15} stable")
+        for i in range(len(br)):
+            print(f"{br.parameter[i] / 1e6:10.6f} {br.amplitude_m[i, 0] * 1e6:13.2f} "
+                  f"{br.amplitude_m[i, 0] / br.clearance_m[0]:6.3f} "
+                  f"{br.period_s[i] * 1e3:10.4f} {br.max_multiplier[i]:8.4f} "
+                  f"{br.critical_type[i]:>15} {bool(br.stable[i])}")
+        for b in br.bifurcations:
+            extra = (f", period {b['period_s'] * 1e3:.4f} ms ({1 / b['period_s']:.4f} Hz), "
+                     f"p = p_H + b·A + c·A² with c = {b['curvature']:.4g} Pa/m²"
+                     if b["kind"] == "hopf" else "")
+            print(f"bifurcation: {b['kind']} at p_c = {b['parameter'] / 1e6:.6f} MPa{extra}")
+        print(f"stop: {br.stop} {br.message}; {br.stats}")
+        print(f"branch {name}: {len(br)} points in {wall:.2f} s wall, {cpu:.2f} s CPU "
+              f"({cpu / max(len(br), 1):.2f} s CPU per point); baseline one shooting solve: "
+              f"{base}")
+    th = rd.threshold(rig, bounds=(0.04e6, 0.08e6), speed_hz=SPEED_HZ, config_ay_m=AY_M)
+    print(f"\nlinear threshold: {th}")
+    st = rd.stability(rig, SPEED_HZ, 0.1e6, AY_M)
+    print(f"at 0.1 MPa: {st}")
+    footer()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
