@@ -37,6 +37,9 @@ def main() -> int:
     ap.add_argument("--ds", type=float, default=0.05)
     ap.add_argument("--max-points", type=int, default=50)
     ap.add_argument("--down", action="store_true", help="also continue towards lower p_c")
+    ap.add_argument("--others", action="store_true",
+                    help="also continue the start over a_y (-3…0 mm) and the speed (20…120 Hz) "
+                         "both ways, 15 points each (several minutes)")
     args = ap.parse_args()
     print(pin_threads(1))
     header("bench_continuation: paper rig limit-cycle branch over p_c, 50 Hz, a_y = -1.85 mm")
@@ -70,6 +73,15 @@ def main() -> int:
         print(f"branch {name}: {len(br)} points in {wall:.2f} s wall, {cpu:.2f} s CPU "
               f"({cpu / max(len(br), 1):.2f} s CPU per point); baseline one shooting solve: "
               f"{base}")
+    if args.others:
+        for vary, bounds, d in [("config_ay_m", (-3e-3, 0.0), 1), ("config_ay_m", (-3e-3, 0.0), -1),
+                                ("speed_hz", (20.0, 120.0), 1), ("speed_hz", (20.0, 120.0), -1)]:
+            w0 = time.perf_counter()
+            br = rd.continuation(rig, vary, bounds, cyc, ds=args.ds, max_points=15,
+                                 direction=d, **KW)
+            print(f"\n{vary} direction {d:+d}: {br} ({time.perf_counter() - w0:.1f} s wall)")
+            print(f"  last point: {br.parameter[-1]:.6g}, amplitude "
+                  f"{br.amplitude_m[-1, 0] * 1e6:.1f} µm, |mu_c| {br.max_multiplier[-1]:.4f}")
     th = rd.threshold(rig, bounds=(0.04e6, 0.08e6), speed_hz=SPEED_HZ, config_ay_m=AY_M)
     print(f"\nlinear threshold: {th}")
     st = rd.stability(rig, SPEED_HZ, 0.1e6, AY_M)
