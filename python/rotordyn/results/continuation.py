@@ -88,7 +88,8 @@ class BranchResult(Display):
                         for b in self.bifurcations) or "no bifurcation"
         return (f"{head}, {len(self)} points, {sym} {p[0]:.5g} → {p[-1]:.5g} {disp} (range "
                 f"{p.min():.5g}…{p.max():.5g}), amplitude {a[0]:.4g} → {a[-1]:.4g} µm, "
-                f"{int(np.sum(self.stable))} stable ({self.bearing_names[0]}); {bif}; stop: {self.stop}>")
+                f"{int(np.sum(self.stable))} stable ({self.bearing_names[0]}); {bif}; "
+                f"stop: {self.stop}>")
 
     def to_frame(self) -> pd.DataFrame:
         """One row per (branch point, bearing): the parameter in its unit (column named by
