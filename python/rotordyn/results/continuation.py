@@ -156,6 +156,9 @@ class BranchResult(Display):
             seen = set()
             for b in self.bifurcations:
                 mk, col = marks[b["kind"]]
+                if b["kind"] == "hopf" and len(self):  # the branch's last stretch to it
+                    ax.plot([p[-1], b["parameter"] * f], [a[-1], 0.0], ":", color="tab:blue",
+                            lw=1.0)
                 ax.plot([b["parameter"] * f], [b["amplitude_m"][bearing] * 1e6], mk, color=col,
                         mfc="none", ms=7)
                 if b["kind"] not in seen:
