@@ -32,16 +32,59 @@ SPEED_HZ, PC_PA, AY_M, C_M = 50.0, 0.05e6, -1.85e-3, 3e-4
 KW = {"rtol": 1e-6, "tol": 1e-4}
 
 
+def print_branch(br) -> None:
+    print(f"{br.vary:>20} {'amplitude µm':>13} {'period ms':>10} {'|mu_c|':>8} "
+          f"{'dp/ds':>8} stable")
+    for i in range(len(br)):
+        print(f"{br.parameter[i]:20.6g} {br.amplitude_m[i, 0] * 1e6:13.2f} "
+              f"{br.period_s[i] * 1e3:10.4f} {br.max_multiplier[i]:8.4f} "
+              f"{br.tangent_p[i]:8.4f} {bool(br.stable[i])}")
+    for b in br.bifurcations:
+        print(f"bifurcation: {b['kind']} at {b['parameter']:.6g} (after point {b['index']})")
+
+
+def whip(args) -> int:
+    import dataclasses
+
+    header("bench_continuation --whip: compressor on plain bearings, oil-whip cycles over "
+           "the speed")
+    s = rd.System.from_toml(Path(__file__).parent.parent / "tests" / "data" / "models"
+                            / "compressor_plain.toml")
+    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
+                                              for b in s.bearings))
+    th = rd.threshold(s, "speed_hz", bounds=(60.0, 300.0))
+    print(f"linear threshold: {th}")
+    w0, c0 = time.perf_counter(), time.process_time()
+    tr = rd.transient(s, 0.4, 130.0, disturbance_m=(0.0, 6e-5), n_out=4001)
+    cyc = rd.periodic_orbit(s, 130.0, start=tr, **KW)
+    print("start:", cyc)
+    br = rd.continuation(s, "speed_hz", (100.0, 140.0), cyc, ds=0.1, ds_max=0.3,
+                         max_points=12, direction=-1, **KW)
+    wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+    print(br)
+    print_branch(br)
+    print(f"stop: {br.stop} {br.message}; {br.stats}")
+    print(f"transient + shooting + {len(br)}-point branch: {wall:.2f} s wall, {cpu:.2f} s CPU")
+    footer()
+    return 0
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--ds", type=float, default=0.05)
     ap.add_argument("--max-points", type=int, default=50)
     ap.add_argument("--down", action="store_true", help="also continue towards lower p_c")
+    ap.add_argument("--whip", action="store_true",
+                    help="only the oil-whip branch of the compressor on plain bearings "
+                         "(tests/data/models/compressor_plain.toml, 36 x 6 film grid) from "
+                         "130 Hz down in speed, 12 points: its folds")
     ap.add_argument("--others", action="store_true",
                     help="also continue the start over a_y (-3…0 mm) and the speed (20…120 Hz) "
                          "both ways, 15 points each (several minutes)")
     args = ap.parse_args()
     print(pin_threads(1))
+    if args.whip:
+        return whip(args)
     header("bench_continuation: paper rig limit-cycle branch over p_c, 50 Hz, a_y = -1.85 mm")
     rig = rd.models.paper_rig()
     tr = rd.transient(rig, 0.6, SPEED_HZ, PC_PA, AY_M, disturbance_m=(0.0, 0.1 * C_M),
