@@ -51,7 +51,8 @@ def closed_form(system, f, t):
 
 
 def test_forced_branch_over_speed_equals_the_closed_form_at_every_point(linear_system,
-                                                                         linear_orbit):
+                                                                         linear_orbit,
+                                                                         tmp_path):
     """Every corrected point of a speed branch (60 Hz upwards, 5 points) is the closed-form
     orbit at the speed the corrector chose, to 1e-6 of the largest displacement (static sag
     plus whirl; CVODES at rtol 1e-9, shooting tol 1e-7); the period follows
@@ -73,6 +74,9 @@ def test_forced_branch_over_speed_equals_the_closed_form_at_every_point(linear_s
             "bifurcation"} <= set(df.columns)
     assert len(df) == 5 * len(br.bearing_names)
     assert "BranchResult ok" in repr(br) and "speed" in repr(br)
+    back = rd.BranchResult.load(br.save(tmp_path / "branch.npz"))
+    assert np.array_equal(back.parameter, br.parameter) and len(back.orbits) == 5
+    assert np.array_equal(back.orbits[2].r, br.orbits[2].r)
 
 
 def test_direction_minus_one_walks_down(linear_system, linear_orbit):
