@@ -74,6 +74,8 @@ def main() -> int:
     ap.add_argument("--ds", type=float, default=0.05)
     ap.add_argument("--max-points", type=int, default=50)
     ap.add_argument("--down", action="store_true", help="also continue towards lower p_c")
+    ap.add_argument("--sensitivity-rtol", type=float, default=None,
+                    help="monodromy tolerance of the branch (default: rtol = 1e-6)")
     ap.add_argument("--whip", action="store_true",
                     help="only the oil-whip branch of the compressor on plain bearings "
                          "(tests/data/models/compressor_plain.toml, 36 x 6 film grid) from "
@@ -97,7 +99,8 @@ def main() -> int:
     for name, d in runs:
         w0, c0 = time.perf_counter(), time.process_time()
         br = rd.continuation(rig, "chamber_pressure_pa", (0.0, 0.12e6), cyc, ds=args.ds,
-                             max_points=args.max_points, direction=d, **KW)
+                             max_points=args.max_points, direction=d,
+                             sensitivity_rtol=args.sensitivity_rtol, **KW)
         wall, cpu = time.perf_counter() - w0, time.process_time() - c0
         print(f"\nbranch {name}: {br}")
         print(f"{'p_c MPa':>10} {'amplitude µm':>13} {'A/c':>6} {'period ms':>10} "

@@ -52,7 +52,8 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
                  max_points: int = 50, direction: int = 1, param_scale: float | None = None,
                  rtol: float = 1e-8, atol_m: float = 1e-12, tol: float = 1e-6,
                  max_iter: int = 8, max_steps: int = 200000, fd_step: float = 1e-4,
-                 n_out: int = 101, progress=None) -> BranchResult:
+                 n_out: int = 101, sensitivity_rtol: float | None = None,
+                 progress=None) -> BranchResult:
     """Continue the periodic orbit ``start`` over ``vary`` within ``bounds``.
 
     Parameters
@@ -81,6 +82,10 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
         As for :func:`rotordyn.periodic_orbit` (tol also bounds the arclength residual).
     fd_step
         h / param_scale of the central difference ∂R/∂p.
+    sensitivity_rtol
+        Relative tolerance of the monodromy in the final (error-controlled) pass at each
+        point (default ``rtol``): the accuracy of the multipliers and the tangent; looser is
+        cheaper (as for :func:`rotordyn.periodic_orbit`).
     progress
         None, or a callable(point_index, BranchResult-so-far message) for progress lines.
 
@@ -185,6 +190,8 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
     c.atol_velocity = float(atol_m) * max(w, 1.0)
     c.max_steps = int(max_steps)
     opt.cvode, opt.tol, opt.max_iter = c, float(tol), int(max_iter)
+    if sensitivity_rtol is not None:
+        opt.sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
 
     def point_result(step, p_core):
         p = p_core / to_core
