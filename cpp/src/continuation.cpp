@@ -131,6 +131,11 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
       o.message = "non-finite state after one period";
       break;
     }
+    const bool done = res < opt.tol;
+    if (done && !errcon) {  // converged without the sensitivities' error test: one more pass
+      errcon = true;        // at the same point with it (no ∂R/∂p needed for this one)
+      continue;
+    }
     // ∂R/∂p by a central difference (also needed for the tangent at the converged point).
     const Eigen::VectorXd Rp1 = residual(solver, c, x, T, p + h, opt.cvode);
     const Eigen::VectorXd Rm1 = residual(solver, c, x, T, p - h, opt.cvode);
@@ -152,14 +157,9 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
       J.block(N, 0, 1, N) = f0.transpose() / std::max(f0.norm(), 1e-300);
     }
     Jrp = J.topRows(Rrows);
-    const bool done = res < opt.tol;
-    if (done && errcon) {
+    if (done) {
       converged = true;
       break;
-    }
-    if (done) {
-      errcon = true;
-      continue;
     }
     if (!errcon && o.residuals.size() > 1 && res > 0.5 * o.residuals[o.residuals.size() - 2])
       errcon = true;
