@@ -221,3 +221,11 @@ def test_continuation_past_a_fold_of_whip_cycles(whip_branch):
     assert outer.stable and not inner.stable
     assert outer.amplitude(0) > inner.amplitude(0) + 2e-6
     assert inner.amplitude(0) == pytest.approx(br.amplitude_m[j, 0], rel=1e-3)
+
+
+def test_config_branch_needs_an_active_bearing(linear_system, linear_orbit):
+    """vary="config_ay_m" on a system without an active bearing: InputError naming
+    config_ay_m (the configuration addresses the active bearing)."""
+    with pytest.raises(rd.InputError, match="config_ay_m"):
+        rd.continuation(linear_system, "config_ay_m", (-1e-3, 1e-3), linear_orbit,
+                        unbalances=UB)

@@ -197,8 +197,12 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
         p = p_core / to_core
         spd = p if vary == "speed_hz" else start.speed_hz
         pc = p if vary == "chamber_pressure_pa" else start.chamber_pressure_pa
-        a = base.a + p * np.asarray(inp.config_direction) if vary == "config_ay_m" else a0
-        return orbit_result(asm, step.orbit, kind, float(spd), float(pc), np.asarray(a))
+        if vary != "config_ay_m":
+            return orbit_result(asm, step.orbit, kind, float(spd), float(pc), a0)
+        a = base.a + p * np.asarray(inp.config_direction)
+        o = orbit_result(asm, step.orbit, kind, float(spd), float(pc), np.asarray(a))
+        # the result's config_ay_m is the first bearing's; the parameter is the active one's
+        return dataclasses.replace(o, config_ay_m=float(p))
 
     def correct(x, T, p_core, y_prev, tangent, step_ds):
         base.r0, base.v0, base.period = x[:n], x[n:], float(T)
