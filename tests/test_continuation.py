@@ -126,16 +126,10 @@ def test_cli_continuation(capsys, tmp_path):
     assert "bounds" in capsys.readouterr().err
 
 
-def test_cycle_branch_turns_at_the_hopf_point_of_the_linear_threshold():
-    """Past a turning point: the paper rig's limit cycle (a_y = −1.85 mm, 50 Hz; a coarse
-    36 × 6 film grid for speed) continued upwards in p_c from 0.05 MPa shrinks onto the
-    equilibrium. Along the branch of starts x0 the parameter turns back there (p = p_H + c·A²
-    with the signed amplitude A through 0): the corrector converges on the point beyond the
-    turn (its p_c below the turn), and the turning point p_H estimated from the branch
-    equals the linear threshold of the same model (an independent solve: the equilibrium's
-    eigenvalue through zero, Brent) within 1 % (measured 0.46 % with ds = 0.1), the period
-    there the linear whirl period within 1 %. Every cycle is stable and the amplitude falls
-    monotonically: a supercritical Hopf point."""
+@pytest.fixture(scope="module")
+def coarse_rig_cycle():
+    """The paper rig (36 × 6 film grid for speed) and its stable cycle at a_y = −1.85 mm,
+    50 Hz, 0.05 MPa from a 0.6 s transient."""
     import dataclasses
 
     rig = rd.models.paper_rig()
@@ -145,6 +139,40 @@ def test_cycle_branch_turns_at_the_hopf_point_of_the_linear_threshold():
     tr = rd.transient(rig, 0.6, 50.0, 0.05e6, -1.85e-3, disturbance_m=(0.0, 3e-5), n_out=6001)
     cyc = rd.periodic_orbit(rig, 50.0, 0.05e6, -1.85e-3, start=tr, rtol=1e-6, tol=1e-4)
     assert cyc.ok, cyc.message
+    return rig, cyc
+
+
+def test_cycle_branch_over_ay_is_made_of_cycles(coarse_rig_cycle):
+    """vary="config_ay_m" (the active bearing's a_y, m): 3 points from −1.85 mm upwards; each
+    point, solved again independently by shooting at its own a_y from its own start,
+    converges at once (residual below tol on the first flow) to the same period (1e-6) —
+    the corrector's points are cycles of eq. 12 at the a_y it reports; the amplitude falls
+    as a_y rises towards the Hopf point (bench_continuation --others)."""
+    rig, cyc = coarse_rig_cycle
+    br = rd.continuation(rig, "config_ay_m", (-3e-3, 0.0), cyc, rtol=1e-6, tol=1e-4,
+                         ds=0.05, max_points=3)
+    assert br.ok and len(br) == 3, br.message
+    assert np.all(np.diff(br.parameter) > 0) and br.parameter[0] == pytest.approx(-1.85e-3)
+    assert np.all(np.diff(br.amplitude_m[:, 0]) < 0)
+    o = br.orbits[-1]
+    again = rd.periodic_orbit(rig, 50.0, 0.05e6, float(br.parameter[-1]),
+                              start=(o.r[0], o.v[0]), period_s=o.period_s, rtol=1e-6,
+                              tol=1e-4)
+    assert again.ok and again.residuals[0] < 1e-4
+    assert again.period_s == pytest.approx(o.period_s, rel=1e-6)
+
+
+def test_cycle_branch_turns_at_the_hopf_point_of_the_linear_threshold(coarse_rig_cycle):
+    """Past a turning point: the paper rig's limit cycle (a_y = −1.85 mm, 50 Hz; a coarse
+    36 × 6 film grid for speed) continued upwards in p_c from 0.05 MPa shrinks onto the
+    equilibrium. Along the branch of starts x0 the parameter turns back there (p = p_H + c·A²
+    with the signed amplitude A through 0): the corrector converges on the point beyond the
+    turn (its p_c below the turn), and the turning point p_H estimated from the branch
+    equals the linear threshold of the same model (an independent solve: the equilibrium's
+    eigenvalue through zero, Brent) within 1 % (measured 0.46 % with ds = 0.1), the period
+    there the linear whirl period within 1 %. Every cycle is stable and the amplitude falls
+    monotonically: a supercritical Hopf point."""
+    rig, cyc = coarse_rig_cycle
     br = rd.continuation(rig, "chamber_pressure_pa", (0.04e6, 0.08e6), cyc, rtol=1e-6,
                          tol=1e-4, ds=0.1, ds_max=0.4, max_points=12)
     assert br.ok and br.stop == "hopf", (br.stop, br.message)
