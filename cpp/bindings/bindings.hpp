@@ -21,4 +21,5 @@ void bind_bearings(py::module_& m);
 void bind_batch(py::module_& m);
 void bind_periodic(py::module_& m);
 void bind_thermal(py::module_& m);
+void bind_continuation(py::module_& m);
 }  // namespace rotordyn::py_bind

@@ -18,28 +18,11 @@
 #include <sstream>
 
 #include "rotordyn/errors.hpp"
+#include "shooting_detail.hpp"
 
 namespace rotordyn {
 
-namespace {
-
-// Everything the right-hand sides share: eq. 12 at constant Ω and p_c, first-order form.
-struct Flow {
-  SystemSolver* solver = nullptr;
-  const PeriodicInput* in = nullptr;
-  Eigen::Index n = 0, N = 0;
-  Eigen::LLT<Eigen::MatrixXd> Mllt;
-  Eigen::VectorXd F0;     // Q − K a + p_c c_s
-  Eigen::MatrixXd Cd;     // C + Ω G
-  // The system Jacobian A(x) (N × N) at the state y_A: the sensitivity right-hand side and
-  // CVODES's Newton matrix at the same state share one linearisation.
-  Eigen::VectorXd y_A;
-  Eigen::MatrixXd A;
-  bool have_A = false;
-  std::string last_error, cvode_message;
-  bool contact = false;
-  long sens_evals = 0;
-};
+namespace shooting_detail {
 
 Eigen::VectorXd vector_field(Flow& F, double t, const Eigen::Ref<const Eigen::VectorXd>& y) {
   const SystemModel& m = F.solver->model();
@@ -157,17 +140,7 @@ void setup_flow(Flow& F, SystemSolver& solver, const PeriodicInput& in) {
   F.Cd = m.C + in.omega * m.G;
 }
 
-struct FlowRun {
-  Eigen::VectorXd xT;
-  Eigen::MatrixXd Phi;       // empty without sensitivities
-  Eigen::VectorXd t;         // samples
-  Eigen::MatrixXd X;         // (n_out, N)
-  int flag = 0;              // < 0: CVODES failure
-  std::string why;
-  long steps = 0, rhs_evals = 0, jac_evals = 0;
-};
 
-// Integrate x0 over [t0, t0 + T] (with the monodromy when `sens`), sampling n_out points.
 FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool sens, int n_out,
                  const CvodeOptions& opt, bool sens_errcon, double sens_rtol) {
   FlowRun out;
@@ -321,7 +294,9 @@ void validate(const SystemSolver& solver, const PeriodicInput& in, const Shootin
           "length_scale: expected a value >= 0 m");
 }
 
-}  // namespace
+}  // namespace shooting_detail
+
+using namespace shooting_detail;
 
 Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous) {
   require(monodromy.rows() == monodromy.cols() && monodromy.size() > 0,

@@ -24,6 +24,7 @@ from rotordyn._common.info import __version__, build_info
 from rotordyn._common.threads import get_blas_threads, set_blas_threads
 from rotordyn.analysis import (
     campbell,
+    continuation,
     equilibrium,
     level1,
     linearize,
@@ -73,6 +74,7 @@ from rotordyn.model import (
 )
 from rotordyn.model import builtin as models
 from rotordyn.results import (
+    BranchResult,
     CampbellResult,
     EquilibriumResult,
     Level1Result,
@@ -136,6 +138,8 @@ __all__ = [
     "periodic_orbit",
     "PeriodicOrbitResult",
     "system_thermal_equilibrium",
+    "continuation",
+    "BranchResult",
     "ModesResult",
     "LinearModel",
     "StabilityResult",

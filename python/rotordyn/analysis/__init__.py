@@ -10,9 +10,11 @@ from rotordyn.analysis.transient import transient
 from rotordyn.analysis.unbalance import unbalance_response
 from rotordyn.analysis.threshold import stability_boundary, threshold
 from rotordyn.analysis.periodic import periodic_orbit
+from rotordyn.analysis.continuation import continuation
 from rotordyn.analysis.modes import RotorMatrices, modes, rotor_campbell
 from rotordyn.analysis.thermal import system_thermal_equilibrium
 
 __all__ = ["level1", "static", "campbell", "modes", "rotor_campbell", "equilibrium", "linearize",
            "stability", "threshold", "stability_boundary", "unbalance_response", "statespace",
-           "transient", "periodic_orbit", "RotorMatrices", "system_thermal_equilibrium"]
+           "transient", "periodic_orbit", "continuation", "RotorMatrices",
+           "system_thermal_equilibrium"]

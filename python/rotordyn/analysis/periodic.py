@@ -207,6 +207,14 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     opt.sensitivity_error_control = v.boolean("sensitivity_error_control",
                                               sensitivity_error_control)
     res = _core.periodic_orbit(asm.solver, inp, opt)
+    return orbit_result(asm, res, kind, float(speed_hz), float(chamber_pressure_pa), a)
+
+
+def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: float,
+                 a: np.ndarray) -> PeriodicOrbitResult:
+    """The :class:`PeriodicOrbitResult` of a C++ shooting (or corrector) result ``res`` at
+    the operating point (speed_hz, chamber_pressure_pa, configuration a (n,))."""
+    n = asm.n
     status, message = res.status, res.message
     bcs = asm.bearings
     ok = status == "ok"

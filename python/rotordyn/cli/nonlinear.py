@@ -1,5 +1,6 @@
 """Nonlinear dynamics on the command line: ``periodic-orbit`` (a limit cycle or an
-unbalance-forced orbit by shooting, with its Floquet multipliers; docs/nonlinear.md)."""
+unbalance-forced orbit by shooting, with its Floquet multipliers) and ``continuation`` (its
+branch over p_c, speed or a_y by pseudo-arclength continuation; docs/nonlinear.md)."""
 
 from __future__ import annotations
 
@@ -18,6 +19,36 @@ def register(sub) -> None:
     s = sub.add_parser("periodic-orbit",
                        help="limit cycle or unbalance-forced orbit by shooting, with its "
                             "Floquet multipliers")
+    _orbit_arguments(s)
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="write the orbit and the multipliers in the unit circle")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    add_dpi(s)
+    s.set_defaults(func=_cmd_periodic_orbit)
+
+    c = sub.add_parser("continuation",
+                       help="branch of limit cycles or forced orbits over p_c, speed or a_y "
+                            "by pseudo-arclength continuation, with stability and "
+                            "bifurcations")
+    _orbit_arguments(c)
+    c.add_argument("--vary", required=True,
+                   choices=["chamber_pressure_pa", "speed_hz", "config_ay_m"],
+                   help="the continued parameter (Pa, Hz, m)")
+    c.add_argument("--bounds", type=float, nargs=2, required=True, metavar=("LO", "HI"),
+                   help="parameter range (unit of --vary); must contain the start's value")
+    c.add_argument("--ds", type=float, default=0.05,
+                   help="first arclength step (scaled: clearance, period, bounds' span)")
+    c.add_argument("--max-points", type=int, default=50, help="points on the branch")
+    c.add_argument("--direction", type=int, choices=[1, -1], default=1,
+                   help="leave the start towards growing (1) or falling (-1) parameter")
+    c.add_argument("--plot", default=None, metavar="FIG",
+                   help="write the bifurcation diagram (amplitude against the parameter)")
+    c.add_argument("--json", action="store_true", help=JSON_HELP)
+    add_dpi(c)
+    c.set_defaults(func=_cmd_continuation)
+
+
+def _orbit_arguments(s) -> None:
     s.add_argument("model", help=MODEL_HELP)
     add_operating_point(s)
     s.add_argument("--kind", choices=["autonomous", "forced"], default="autonomous",
@@ -39,11 +70,6 @@ def register(sub) -> None:
     s.add_argument("--rtol", type=float, default=1e-8, help="CVODES relative tolerance")
     s.add_argument("--tol", type=float, default=1e-6,
                    help="shooting residual tolerance, fraction of the smallest clearance")
-    s.add_argument("--plot", default=None, metavar="FIG",
-                   help="write the orbit and the multipliers in the unit circle")
-    s.add_argument("--json", action="store_true", help=JSON_HELP)
-    add_dpi(s)
-    s.set_defaults(func=_cmd_periodic_orbit)
 
 
 def _unbalances(texts) -> list:
@@ -58,10 +84,9 @@ def _unbalances(texts) -> list:
     return ub
 
 
-def _cmd_periodic_orbit(args) -> int:
-    check_figure(args.plot)
-    s = models.load(args.model)
-    ub = _unbalances(args.unbalance)
+def _settled_start(args, s, ub):
+    """The settling transient of --settle-s (None: start at the equilibrium), or False when it
+    failed (printed)."""
     settle = args.settle_s if args.settle_s is not None else (
         1.0 if args.kind == "autonomous" else 0.0)
     v.non_negative("--settle-s", settle)
@@ -77,7 +102,17 @@ def _cmd_periodic_orbit(args) -> int:
         if start.status not in ("ok", "contact"):
             print(f"rotordyn: the settling transient ended with status {start.status}: "
                   f"{start.message}")
-            return 1
+            return False
+    return start
+
+
+def _cmd_periodic_orbit(args) -> int:
+    check_figure(args.plot)
+    s = models.load(args.model)
+    ub = _unbalances(args.unbalance)
+    start = _settled_start(args, s, ub)
+    if start is False:
+        return 1
     res = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
                                   kind=args.kind, start=start, unbalances=ub,
                                   subharmonic=args.subharmonic, rtol=args.rtol, tol=args.tol)
@@ -100,3 +135,42 @@ def _cmd_periodic_orbit(args) -> int:
     if args.plot and res.ok:
         save_figure(res.plot(), args.plot, args.dpi)
     return 0 if res.ok else 1
+
+
+def _cmd_continuation(args) -> int:
+    check_figure(args.plot)
+    s = models.load(args.model)
+    ub = _unbalances(args.unbalance)
+    v.bounds("--bounds", args.bounds)
+    v.positive("--ds", args.ds)
+    start = _settled_start(args, s, ub)
+    if start is False:
+        return 1
+    orbit = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa,
+                                    args.config_ay_m, kind=args.kind, start=start,
+                                    unbalances=ub, subharmonic=args.subharmonic,
+                                    rtol=args.rtol, tol=args.tol)
+    if not orbit.ok:
+        print(f"rotordyn: no start orbit: {orbit!r}")
+        return 1
+    br = analysis.continuation(s, args.vary, tuple(args.bounds), orbit, unbalances=ub,
+                               ds=args.ds, ds_max=max(0.2, args.ds), max_points=args.max_points,
+                               direction=args.direction, rtol=args.rtol, tol=args.tol)
+    if args.json:
+        print(json_text({
+            "status": br.status, "stop": br.stop, "message": br.message, "vary": br.vary,
+            "kind": br.kind, "parameter": br.parameter, "amplitude_m": br.amplitude_m,
+            "period_s": br.period_s, "max_multiplier": br.max_multiplier,
+            "stable": br.stable, "critical_type": list(br.critical_type),
+            "bifurcations": [{"kind": b["kind"], "index": b["index"],
+                              "parameter": b["parameter"]} for b in br.bifurcations],
+            "stats": br.stats,
+        }))
+    else:
+        print(repr(br))
+        cols = [br.vary, "amplitude_m", "period_s", "max_multiplier", "stable",
+                "critical_type", "bifurcation"]
+        print(table_text(br.to_frame()[cols]))
+    if args.plot and len(br):
+        save_figure(br.plot(), args.plot, args.dpi)
+    return 0 if br.ok else 1

@@ -1,6 +1,7 @@
 """Result objects (frozen dataclasses of numpy arrays with ``.to_frame()`` and ``.plot()``)."""
 
 from rotordyn.results.campbell import CampbellResult
+from rotordyn.results.continuation import BranchResult
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.results.level1 import Level1Result
 from rotordyn.results.modes import ModesResult
@@ -17,4 +18,4 @@ from rotordyn.results.unbalance import UnbalanceResult
 __all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel",
            "StabilityResult", "ThresholdResult", "BoundaryResult", "UnbalanceResult",
            "StateSpaceResult", "TransientResult", "StaticResult", "PeriodicOrbitResult",
-           "SystemThermalResult", "load_result", "save_result"]
+           "BranchResult", "SystemThermalResult", "load_result", "save_result"]

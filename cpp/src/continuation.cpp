@@ -1,0 +1,259 @@
+// Pseudo-arclength corrector for periodic orbits (continuation.hpp).
+#include "rotordyn/continuation.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "rotordyn/errors.hpp"
+#include "shooting_detail.hpp"
+
+namespace rotordyn {
+
+using namespace shooting_detail;
+
+namespace {
+
+PeriodicInput at_parameter(const ContinuationInput& c, double p) {
+  PeriodicInput in = c.base;
+  switch (c.parameter) {
+    case ContinuationParameter::chamber_pressure:
+      in.chamber_pressure = p;
+      break;
+    case ContinuationParameter::speed:
+      in.omega = p;
+      break;
+    case ContinuationParameter::config:
+      in.a = c.base.a + p * c.config_direction;
+      break;
+  }
+  if (in.kind == OrbitKind::forced) in.period = c.subharmonic * 2 * M_PI / std::abs(in.omega);
+  return in;
+}
+
+// One flow without sensitivities: φ_T(x; p) − x, or an empty vector when CVODES fails.
+Eigen::VectorXd residual(SystemSolver& solver, const ContinuationInput& c, const Eigen::VectorXd& x,
+                         double T, double p, const CvodeOptions& opt) {
+  const PeriodicInput in = at_parameter(c, p);
+  Flow F;
+  setup_flow(F, solver, in);
+  const double TT = in.kind == OrbitKind::forced ? in.period : T;
+  FlowRun run = run_flow(F, x, in.t0, TT, false, 2, opt, false, opt.rtol);
+  if (run.flag < 0) return Eigen::VectorXd();
+  return run.xT - x;
+}
+
+}  // namespace
+
+ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput& c,
+                                   const ShootingOptions& opt) {
+  const Eigen::Index n = solver.model().n(), N = 2 * n;
+  const bool autonomous = c.base.kind == OrbitKind::autonomous;
+  require(c.scale.size() == N + 2 && c.scale.allFinite() && (c.scale.array() > 0).all(),
+          shape_msg("scale", N + 2, 1, c.scale.size(), 1) + " with finite values > 0");
+  require(c.y_prev.size() == N + 2 && c.y_prev.allFinite(),
+          shape_msg("y_prev", N + 2, 1, c.y_prev.size(), 1) + " with finite values");
+  require(c.tangent.size() == 0 || (c.tangent.size() == N + 2 && c.tangent.allFinite()),
+          shape_msg("tangent", N + 2, 1, c.tangent.size(), 1) + " (or empty)");
+  require(std::isfinite(c.p) && std::isfinite(c.ds), "p, ds: expected finite values");
+  require(c.fd_step > 0 && c.fd_step < 1, "fd_step: expected a value in (0, 1)");
+  require(c.subharmonic >= 1, "subharmonic: expected at least 1");
+  require(c.parameter != ContinuationParameter::config || c.config_direction.size() == n,
+          shape_msg("config_direction", n, 1, c.config_direction.size(), 1));
+  require(c.parameter != ContinuationParameter::speed || c.p != 0.0,
+          "speed: the continuation parameter Ω must not be 0");
+  validate(solver, at_parameter(c, c.p), opt);
+
+  ContinuationStep out;
+  PeriodicOrbitResult& o = out.orbit;
+  o.t0 = c.base.t0;
+  const long solves0 = solver.reynolds_solves();
+  const Eigen::VectorXd Dx = c.scale.head(N);
+  const double DT = c.scale(N), Dp = c.scale(N + 1);
+  o.length_scale = Dx(0);
+  const bool first = c.tangent.size() == 0;
+  const Eigen::Index K = N + 2;  // (x, T, p); for forced orbits T is not an unknown
+  Eigen::VectorXd x(N);
+  x << c.base.r0, c.base.v0;
+  double T = c.base.period, p = c.p;
+  // The scaled point; its T entry is held at y_prev's for forced orbits (not an unknown).
+  auto scaled = [&](const Eigen::VectorXd& xx, double TT, double pp) {
+    Eigen::VectorXd y(K);
+    y.head(N) = xx.cwiseQuotient(Dx);
+    y(N) = (autonomous ? TT : c.y_prev(N)) / DT;
+    y(N + 1) = pp / Dp;
+    return y;
+  };
+  const Eigen::VectorXd yprev_s = c.y_prev.cwiseQuotient(c.scale);
+  Eigen::VectorXd t_prev = c.tangent;
+  if (!autonomous && !first) t_prev(N) = 0.0;
+
+  // The bordered matrix (rows: R, [phase], condition row) in scaled unknowns; the columns of
+  // the unknowns only (forced: x, p; autonomous: x, T, p).
+  const double h = c.fd_step * Dp;
+  const double max_step = 0.25;
+  FlowRun run;
+  PeriodicInput in_p;
+  bool converged = false, errcon = opt.sensitivity_error_control;
+  const double srtol = opt.sensitivity_rtol > 0 ? opt.sensitivity_rtol : opt.cvode.rtol;
+  Eigen::MatrixXd Jrp;  // the rows without the condition row, at the last iterate
+  std::vector<Eigen::Index> cols;
+  for (Eigen::Index j = 0; j < N; ++j) cols.push_back(j);
+  if (autonomous) cols.push_back(N);
+  cols.push_back(N + 1);
+  const Eigen::Index U = static_cast<Eigen::Index>(cols.size());  // unknowns
+  const Eigen::Index Rrows = U - 1;
+  for (int it = 0; it <= opt.max_iter + 1; ++it) {
+    in_p = at_parameter(c, p);
+    Flow F;
+    setup_flow(F, solver, in_p);
+    const double TT = autonomous ? T : in_p.period;
+    run = run_flow(F, x, in_p.t0, TT, true, in_p.n_out, opt.cvode, errcon, srtol);
+    o.iterations = it + 1;
+    o.steps += run.steps;
+    o.rhs_evals += run.rhs_evals;
+    o.jac_evals += run.jac_evals;
+    o.sens_rhs_evals += F.sens_evals;
+    if (run.flag < 0) {
+      o.status = F.contact ? "rub" : "not_converged";
+      o.message = "corrector iteration " + std::to_string(it) + ": " + run.why;
+      break;
+    }
+    const Eigen::VectorXd Rz = (run.xT - x).cwiseQuotient(Dx);
+    const Eigen::VectorXd ys = scaled(x, T, p);
+    const double g = first ? 0.0 : t_prev.dot(ys - yprev_s) - c.ds;
+    const double res = std::max(Rz.cwiseAbs().maxCoeff(), std::abs(g));
+    o.residuals.push_back(res);
+    o.residual = res;
+    if (!std::isfinite(res)) {
+      o.status = "error";
+      o.message = "non-finite state after one period";
+      break;
+    }
+    const bool done = res < opt.tol;
+    if (done && !errcon) {  // converged without the sensitivities' error test: one more pass
+      errcon = true;        // at the same point with it (no ∂R/∂p needed for this one)
+      continue;
+    }
+    // ∂R/∂p by a central difference (also needed for the tangent at the converged point).
+    const Eigen::VectorXd Rp1 = residual(solver, c, x, T, p + h, opt.cvode);
+    const Eigen::VectorXd Rm1 = residual(solver, c, x, T, p - h, opt.cvode);
+    out.fd_flows += 2;
+    if (Rp1.size() == 0 || Rm1.size() == 0) {
+      o.status = "not_converged";
+      o.message = "corrector iteration " + std::to_string(it) +
+                  ": a flow at p ± h for the parameter derivative failed";
+      break;
+    }
+    const Eigen::VectorXd Rp_z = ((Rp1 - Rm1) / (2 * c.fd_step)).cwiseQuotient(Dx);
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(U, U);
+    J.topLeftCorner(N, N) = Dx.cwiseInverse().asDiagonal() * run.Phi * Dx.asDiagonal() -
+                            Eigen::MatrixXd::Identity(N, N);
+    J.block(0, U - 1, N, 1) = Rp_z;
+    if (autonomous) {
+      J.block(0, N, N, 1) = DT * vector_field(F, in_p.t0 + T, run.xT).cwiseQuotient(Dx);
+      const Eigen::VectorXd f0 = vector_field(F, in_p.t0, x).cwiseQuotient(Dx);
+      J.block(N, 0, 1, N) = f0.transpose() / std::max(f0.norm(), 1e-300);
+    }
+    Jrp = J.topRows(Rrows);
+    if (done) {
+      converged = true;
+      break;
+    }
+    if (!errcon && o.residuals.size() > 1 && res > 0.5 * o.residuals[o.residuals.size() - 2])
+      errcon = true;
+    if (it >= opt.max_iter) break;
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(U);
+    b.head(N) = -Rz;
+    if (first) {
+      J(U - 1, U - 1) = 1.0;  // the parameter held
+    } else {
+      for (Eigen::Index k = 0; k < U; ++k) J(U - 1, k) = t_prev(cols[static_cast<std::size_t>(k)]);
+      b(U - 1) = -g;
+    }
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
+    if (lu.rank() < U) {
+      o.status = "not_converged";
+      o.message = "corrector iteration " + std::to_string(it) +
+                  ": singular bordered Newton matrix (a branch point, or a step too long)";
+      break;
+    }
+    Eigen::VectorXd dz = lu.solve(b);
+    const double big = dz.head(N).cwiseAbs().maxCoeff() / max_step;
+    const double big_t = autonomous ? std::abs(dz(N)) * DT / (0.2 * T) : 0.0;
+    const double cap = std::max({1.0, big, big_t});
+    dz /= cap;
+    x += dz.head(N).cwiseProduct(Dx);
+    if (autonomous) T += dz(N) * DT;
+    p += dz(U - 1) * Dp;
+    if (autonomous && !(T > 0)) {
+      o.status = "not_converged";
+      o.message = "corrector iteration " + std::to_string(it) + ": the period fell to ≤ 0";
+      break;
+    }
+  }
+  o.reynolds_solves = solver.reynolds_solves() - solves0;
+  o.period = autonomous ? T : at_parameter(c, p).period;
+  o.r0 = x.head(n);
+  o.v0 = x.tail(n);
+  out.p = p;
+  if (!converged) {
+    if (o.status == "ok") {
+      std::ostringstream os;
+      os << "corrector did not converge in " << opt.max_iter << " Newton iterations: residual "
+         << o.residual << " (tol " << opt.tol << "); shorten the step";
+      o.status = "not_converged";
+      o.message = os.str();
+    }
+    return out;
+  }
+  if (autonomous) {
+    double extent = 0.0;
+    for (Eigen::Index i = 0; i < run.X.rows(); ++i)
+      extent = std::max(extent, (run.X.row(i).transpose() - x).cwiseQuotient(Dx).cwiseAbs().maxCoeff());
+    if (extent < 100 * opt.tol) {
+      std::ostringstream os;
+      os << "the branch reached an equilibrium (the orbit's extent is " << extent
+         << " of the length scale): the cycle has shrunk to a Hopf point";
+      o.status = "not_converged";
+      o.message = os.str();
+      return out;
+    }
+  }
+  if (!run.Phi.allFinite()) {
+    o.status = "error";
+    o.message = "non-finite monodromy matrix";
+    return out;
+  }
+  o.t = run.t;
+  o.r = run.X.leftCols(n);
+  o.v = run.X.rightCols(n);
+  o.monodromy = run.Phi;
+  o.floquet = floquet(o.monodromy, autonomous);
+  // Tangent: null vector of the rows R (and phase) in the unknowns, bordered by the previous
+  // tangent (first point: by e_p), oriented along it (first point: p growing with direction).
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(U, U);
+  B.topRows(Rrows) = Jrp;
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(U);
+  e(U - 1) = 1.0;
+  if (first) {
+    B(U - 1, U - 1) = 1.0;
+  } else {
+    for (Eigen::Index k = 0; k < U; ++k) B(U - 1, k) = t_prev(cols[static_cast<std::size_t>(k)]);
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(B);
+  Eigen::VectorXd tz = lu.solve(e);
+  if (lu.rank() < U || !tz.allFinite() || tz.norm() == 0) {
+    o.status = "not_converged";
+    o.message = "no tangent at the corrected point (singular bordered matrix: a branch point)";
+    return out;
+  }
+  tz /= tz.norm();
+  if (first && tz(U - 1) * c.direction < 0) tz = -tz;
+  out.tangent = Eigen::VectorXd::Zero(K);
+  for (Eigen::Index k = 0; k < U; ++k) out.tangent(cols[static_cast<std::size_t>(k)]) = tz(k);
+  return out;
+}
+
+}  // namespace rotordyn

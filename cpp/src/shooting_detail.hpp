@@ -1,0 +1,52 @@
+// Internal to the shooting code (periodic.cpp, continuation.cpp): the flow of eq. 12 at a
+// constant operating point, integrated by CVODES with or without forward sensitivities.
+// Not installed, not part of the public headers.
+#pragma once
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <string>
+
+#include "rotordyn/periodic.hpp"
+
+namespace rotordyn::shooting_detail {
+
+// Everything the right-hand sides share: eq. 12 at constant Ω and p_c, first-order form.
+struct Flow {
+  SystemSolver* solver = nullptr;
+  const PeriodicInput* in = nullptr;
+  Eigen::Index n = 0, N = 0;
+  Eigen::LLT<Eigen::MatrixXd> Mllt;
+  Eigen::VectorXd F0;     // Q − K a + p_c c_s
+  Eigen::MatrixXd Cd;     // C + Ω G
+  // The system Jacobian A(x) (N × N) at the state y_A: the sensitivity right-hand side and
+  // CVODES's Newton matrix at the same state share one linearisation.
+  Eigen::VectorXd y_A;
+  Eigen::MatrixXd A;
+  bool have_A = false;
+  std::string last_error, cvode_message;
+  bool contact = false;
+  long sens_evals = 0;
+};
+
+struct FlowRun {
+  Eigen::VectorXd xT;
+  Eigen::MatrixXd Phi;       // empty without sensitivities
+  Eigen::VectorXd t;         // samples
+  Eigen::MatrixXd X;         // (n_out, N)
+  int flag = 0;              // < 0: CVODES failure
+  std::string why;
+  long steps = 0, rhs_evals = 0, jac_evals = 0;
+};
+
+/// ẋ = f(t, x) of eq. 12 (first-order form) at the flow's operating point.
+Eigen::VectorXd vector_field(Flow& F, double t, const Eigen::Ref<const Eigen::VectorXd>& y);
+/// Binds F to solver and `in` (which must outlive F): M(Ω), the constant forces, C + ΩG.
+void setup_flow(Flow& F, SystemSolver& solver, const PeriodicInput& in);
+/// Integrate x0 over [t0, t0 + T] (with the monodromy when `sens`), sampling n_out points.
+FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool sens, int n_out,
+                 const CvodeOptions& opt, bool sens_errcon, double sens_rtol);
+/// InputError for shapes, non-finite values, period ≤ 0, forcing inconsistent with the kind.
+void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt);
+
+}  // namespace rotordyn::shooting_detail
