@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "rotordyn/errors.hpp"
+#include "cvode_detail.hpp"
 #include "shooting_detail.hpp"
 
 namespace rotordyn {
@@ -59,42 +60,26 @@ const Eigen::MatrixXd& jacobian_at(Flow& F, const Eigen::Ref<const Eigen::Vector
 
 int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
   Flow& F = *static_cast<Flow*>(user);
-  try {
+  return cvode_detail::guarded(F, [&] {
     Eigen::Map<const Eigen::VectorXd> Y(N_VGetArrayPointer(y), F.N);
     Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(ydot), F.N) = vector_field(F, t, Y);
-    return 0;
-  } catch (const ContactError& e) {
-    F.contact = true;
-    F.last_error = e.what();
-    return 1;  // recoverable: CVODES retries with a smaller step
-  } catch (const std::exception& e) {
-    F.last_error = e.what();
-    return -1;
-  }
+  });
 }
 
 int jac(sunrealtype, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, N_Vector,
         N_Vector) {
   Flow& F = *static_cast<Flow*>(user);
-  try {
+  return cvode_detail::guarded(F, [&] {
     Eigen::Map<const Eigen::VectorXd> Y(N_VGetArrayPointer(y), F.N);
     Eigen::Map<Eigen::MatrixXd>(SUNDenseMatrix_Data(J), F.N, F.N) = jacobian_at(F, Y);
-    return 0;
-  } catch (const ContactError& e) {
-    F.contact = true;
-    F.last_error = e.what();
-    return 1;
-  } catch (const std::exception& e) {
-    F.last_error = e.what();
-    return -1;
-  }
+  });
 }
 
 // Ṡ_j = A(x(t)) S_j for every column j of the monodromy (all at once, one linearisation).
 int sens_rhs(int Ns, sunrealtype, N_Vector y, N_Vector, N_Vector* yS, N_Vector* ySdot,
              void* user, N_Vector, N_Vector) {
   Flow& F = *static_cast<Flow*>(user);
-  try {
+  return cvode_detail::guarded(F, [&] {
     Eigen::Map<const Eigen::VectorXd> Y(N_VGetArrayPointer(y), F.N);
     const Eigen::MatrixXd& A = jacobian_at(F, Y);
     for (int j = 0; j < Ns; ++j) {
@@ -102,31 +87,8 @@ int sens_rhs(int Ns, sunrealtype, N_Vector y, N_Vector, N_Vector* yS, N_Vector* 
       Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(ySdot[j]), F.N).noalias() = A * s;
     }
     ++F.sens_evals;
-    return 0;
-  } catch (const ContactError& e) {
-    F.contact = true;
-    F.last_error = e.what();
-    return 1;
-  } catch (const std::exception& e) {
-    F.last_error = e.what();
-    return -1;
-  }
+  });
 }
-
-void err_handler(int error_code, const char* module, const char* function, char* msg,
-                 void* user) {
-  Flow& F = *static_cast<Flow*>(user);
-  std::ostringstream os;
-  os << module << "." << function << " (" << cvode_flag_name(error_code) << "): " << msg;
-  F.cvode_message = os.str();  // stored, never printed or aborted
-}
-
-struct SunDeleter {
-  void operator()(SUNContext* p) const {
-    if (p && *p) SUNContext_Free(p);
-    delete p;
-  }
-};
 
 void setup_flow(Flow& F, SystemSolver& solver, const PeriodicInput& in) {
   const SystemModel& m = solver.model();
@@ -151,7 +113,7 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
   F.contact = false;
   F.last_error.clear();
   F.cvode_message.clear();
-  std::unique_ptr<SUNContext, SunDeleter> sunctx(new SUNContext(nullptr));
+  std::unique_ptr<SUNContext, cvode_detail::SunContextDeleter> sunctx(new SUNContext(nullptr));
   if (SUNContext_Create(nullptr, sunctx.get()) != 0)
     throw SundialsError(-1, "SUNContext_Create", "could not create a SUNDIALS context");
   SUNContext ctx = *sunctx;
@@ -185,7 +147,7 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
   Eigen::Map<Eigen::VectorXd> AT(N_VGetArrayPointer(abstol), N);
   AT.head(n).setConstant(opt.atol_position);
   AT.tail(n).setConstant(opt.atol_velocity);
-  check(CVodeSetErrHandlerFn(mem, err_handler, &F), "CVodeSetErrHandlerFn");
+  check(CVodeSetErrHandlerFn(mem, cvode_detail::store_error<Flow>, &F), "CVodeSetErrHandlerFn");
   check(CVodeInit(mem, rhs, t0, y), "CVodeInit");
   check(CVodeSetUserData(mem, &F), "CVodeSetUserData");
   check(CVodeSVtolerances(mem, opt.rtol, abstol), "CVodeSVtolerances");

@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "rotordyn/errors.hpp"
+#include "cvode_detail.hpp"
 
 namespace rotordyn {
 
@@ -217,7 +218,7 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
   const double* yp = N_VGetArrayPointer(y);
   Eigen::Map<const Eigen::VectorXd> Y(yp, c.N);
   Eigen::Map<Eigen::VectorXd> Yd(N_VGetArrayPointer(ydot), c.N);
-  try {
+  return cvode_detail::guarded(c, [&] {
     const TransientInput& in = *c.in;
     const SystemModel& m = c.solver->model();
     const Point P = evaluate(c, t, yp);
@@ -245,15 +246,7 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
       const Controller& k = in.controller;
       Yd.tail(c.nk) = k.A * Y.tail(c.nk) + k.B * P.ym;
     }
-    return 0;
-  } catch (const ContactError& e) {
-    c.contact = true;
-    c.last_error = e.what();
-    return 1;  // recoverable: CVODE retries with a smaller step
-  } catch (const std::exception& e) {
-    c.last_error = e.what();
-    return -1;
-  }
+  });
 }
 
 int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, N_Vector,
@@ -262,7 +255,7 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
   const Eigen::Index n = c.n, N = c.N;
   const double* yp = N_VGetArrayPointer(y);
   Eigen::Map<const Eigen::VectorXd> Y(yp, N);
-  try {
+  return cvode_detail::guarded(c, [&] {
     const TransientInput& in = *c.in;
     const SystemModel& m = c.solver->model();
     const Point P = evaluate(c, t, yp);
@@ -274,7 +267,7 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
     Jm.block(0, n, n, n).setIdentity();
     Jm.block(n, 0, n, n) = -c.Mllt.solve(m.K + lin.KH);
     Jm.block(n, n, n, n) = -c.Mllt.solve(m.C + P.omega * m.G + lin.DH);
-    if (c.na == 0 && !c.kcont) return 0;
+    if (c.na == 0 && !c.kcont) return;
     const Actuator& a = in.actuator;
     // d(command)/dy: only a continuous controller makes it depend on the state.
     Eigen::RowVectorXd dcmd = Eigen::RowVectorXd::Zero(N);
@@ -310,31 +303,8 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
       Jm.block(ik, 0, c.nk, 2 * n) = k.B * k.measurement;
       Jm.block(ik, ik, c.nk, c.nk) = k.A;
     }
-    return 0;
-  } catch (const ContactError& e) {
-    c.contact = true;
-    c.last_error = e.what();
-    return 1;
-  } catch (const std::exception& e) {
-    c.last_error = e.what();
-    return -1;
-  }
+  });
 }
-
-void err_handler(int error_code, const char* module, const char* function, char* msg,
-                 void* user) {
-  Ctx& c = *static_cast<Ctx*>(user);
-  std::ostringstream os;
-  os << module << "." << function << " (" << cvode_flag_name(error_code) << "): " << msg;
-  c.cvode_message = os.str();  // stored, never printed or aborted
-}
-
-struct SunDeleter {
-  void operator()(SUNContext* p) const {
-    if (p && *p) SUNContext_Free(p);
-    delete p;
-  }
-};
 
 }  // namespace
 
@@ -412,7 +382,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   const Eigen::Index nks = K.enabled ? K.n_states() : 0;
   out.controller_states = Eigen::MatrixXd::Constant(nt, nks, NAN);
 
-  std::unique_ptr<SUNContext, SunDeleter> sunctx(new SUNContext(nullptr));
+  std::unique_ptr<SUNContext, cvode_detail::SunContextDeleter> sunctx(new SUNContext(nullptr));
   if (SUNContext_Create(nullptr, sunctx.get()) != 0)
     throw SundialsError(-1, "SUNContext_Create", "could not create a SUNDIALS context");
   SUNContext ctx = *sunctx;
@@ -482,7 +452,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
                                  in.actuator.rate_limit);
   }
 
-  check(CVodeSetErrHandlerFn(mem, err_handler, &c), "CVodeSetErrHandlerFn");
+  check(CVodeSetErrHandlerFn(mem, cvode_detail::store_error<Ctx>, &c), "CVodeSetErrHandlerFn");
   check(CVodeInit(mem, rhs, 0.0, y), "CVodeInit");
   check(CVodeSetUserData(mem, &c), "CVodeSetUserData");
   check(CVodeSVtolerances(mem, opt.rtol, abstol), "CVodeSVtolerances");
