@@ -135,6 +135,13 @@ def test_sweep_over_supply_temperature_and_carry_over_equals_direct_calls(tmp_pa
         teff.append(r.effective_temperature_c[0])
     assert np.ptp(teff) > 5.0  # the supply temperature really moves the film (K)
     # a configuration axis is refused for the thermal analysis
-    spec.write_text(spec.read_text() + "config_ay_m = [0.0, 1e-5]\n")
+    text = spec.read_text()
+    spec.write_text(text + "config_ay_m = [0.0, 1e-5]\n")
     with pytest.raises(InputError, match="grid.config_ay_m: not available"):
+        sw.SweepSpec.from_toml(spec)
+    # ... and a model without [thermal] at load, before any point runs
+    dataclasses.replace(s, thermal=None).to_toml(tmp_path / "m.toml")
+    spec.write_text(text.replace('"thermal.films.DE_bearing.carry_over" = [0.2, 0.7]\n', "")
+                    .replace('"thermal.supply_temperature_c" = [35.0, 50.0, 65.0]\n', ""))
+    with pytest.raises(InputError, match="^analysis: 'thermal' needs the model's oil system"):
         sw.SweepSpec.from_toml(spec)

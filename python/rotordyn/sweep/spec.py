@@ -420,6 +420,9 @@ class SweepSpec:
     def check_against(self, system) -> None:
         """Every axis exists (model fields by dotted path) and every value builds a valid
         model; option stations exist. InputError names the axis."""
+        if self.analysis == "thermal" and getattr(system, "thermal", None) is None:
+            raise InputError("analysis: 'thermal' needs the model's oil system (a [thermal] "
+                             "table in the model file, docs/model-file.md)")
         for name, vals in self.axes.items():
             if name in OPERATING:
                 if name in ("config_ay_m", "config_ax_m"):
