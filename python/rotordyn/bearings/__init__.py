@@ -38,5 +38,6 @@ BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBea
 __all__ = ["ActiveJournalBearing", "BEARING_TYPES", "BearingEquilibrium", "CoefficientTable",
            "FilmResult", "FixedGeometryBearing", "FlexibleSleeve", "FluidFilmBearing", "Groove",
            "JournalBearing", "Oil", "PressureField", "SleeveResult", "SqueezeFilmDamper", "TableBearing",
-           "ThermalEquilibriumResult", "ThermalFilm", "ThermalModel", "TiltingPadBearing", "end_plate_seal_conductance", "long_damper_orbit_forces",
+           "ThermalEquilibriumResult", "ThermalFilm", "ThermalModel", "TiltingPadBearing",
+           "end_plate_seal_conductance", "long_damper_orbit_forces",
            "paper_rig_sleeve", "short_damper_orbit_forces", "to_ross_bearing"]

@@ -433,7 +433,8 @@ def _boundary_rows(job, variants, chunk_id, pids, rows):
                      "level": job.level, "status": st, "message": ""})
 
 
-_ANALYSIS = {"equilibrium": _eq_rows, "thermal": _thermal_rows, "stability": _stab_rows, "campbell": _stab_rows,
+_ANALYSIS = {"equilibrium": _eq_rows, "thermal": _thermal_rows, "stability": _stab_rows,
+             "campbell": _stab_rows,
              "waterfall": _wf_rows, "threshold": _threshold_rows,
              "unbalance": _unbalance_rows, "run-up": _runup_rows}
 
