@@ -147,3 +147,20 @@ def test_sweep_over_supply_temperature_and_carry_over_equals_direct_calls(tmp_pa
                     .replace('"thermal.supply_temperature_c" = [35.0, 50.0, 65.0]\n', ""))
     with pytest.raises(InputError, match="^analysis: 'thermal' needs the model's oil system"):
         sw.SweepSpec.from_toml(spec)
+
+
+def test_every_thermal_number_is_a_model_path():
+    s = _model()
+    for path, val in (("thermal.supply_temperature_c", 50.0), ("thermal.carry_over", 0.3),
+                      ("thermal.effective_factor", 0.7), ("thermal.supply_flow_m3_s", 1e-5),
+                      ("thermal.oil.nu1_mm2_s", 46.0), ("thermal.oil.density_kg_m3", 880.0),
+                      ("thermal.films.DE_bearing.supply_flow_m3_s", 3e-5),
+                      ("thermal.films.0.effective_factor", 0.8)):
+        s2 = set_field(s, path, val)
+        assert s2 != s and rotordyn.System.from_toml(s2.to_toml(), is_text=True) == s2
+    with pytest.raises(InputError, match=r"grid\.thermal\.carry_over: .*carry_over: expected 0"):
+        set_field(s, "thermal.carry_over", 2.0)
+    with pytest.raises(InputError, match=r"grid\.thermal\.oil\.viscosity_law: .*not a numeric"):
+        set_field(s, "thermal.oil.viscosity_law", 1.0)
+    with pytest.raises(InputError, match=r"thermal\.films\.NDE: no element 'NDE'.*'DE bearing'"):
+        set_field(s, "thermal.films.NDE.carry_over", 0.1)
