@@ -22,7 +22,7 @@ from pathlib import Path
 import pytest
 import rotordyn as rd
 import tomllib
-from rotordyn.bearings import BEARING_TYPES, FlexibleSleeve, Groove
+from rotordyn.bearings import BEARING_TYPES, FlexibleSleeve, Groove, Oil, ThermalFilm, ThermalModel
 from rotordyn.bearings.fixed_geometry import KINDS
 from rotordyn.model.rotor import REDUCTION_METHODS
 
@@ -105,6 +105,13 @@ def check_written(s: rd.System, doc: dict) -> None:
         b = s.bearings[i]
         assert type(b) is BEARING_TYPES[t["type"]], f"bearing[{i}].type"
         same(b, {k: val for k, val in t.items() if k != "type"}, f"bearing[{i}]")
+    if "thermal" in doc:
+        t = dict(doc["thermal"])
+        films = t.pop("film", [])
+        same(s.thermal, t, "thermal")
+        same(s.thermal.films, films, "thermal.film")
+    else:
+        assert s.thermal is None
 
 
 def test_the_page_has_examples():
@@ -148,11 +155,12 @@ def test_every_reduction_method_and_support_type_has_an_example():
     assert any("mass_kg" in t for t in disks) and any("mass_kg" not in t for t in disks)
     stages = {t.get("type", "centrifugal") for d in docs for t in d.get("stage", [])}
     assert stages == {"centrifugal", "axial"}
+    assert any("thermal" in d and d["thermal"].get("film") for d in docs)
 
 
 def test_every_field_is_named_on_the_page():
     classes = [rd.Material, rd.ShaftSection, rd.Disk, rd.Support, rd.Stage, rd.Reduction, Groove,
-               FlexibleSleeve, *BEARING_TYPES.values()]
+               FlexibleSleeve, Oil, ThermalModel, ThermalFilm, *BEARING_TYPES.values()]
     # Material.name is the table's key ([material.<name>]), not a key of its own
     missing = [f"{c.__name__}.{f.name}" for c in classes for f in dataclasses.fields(c)
                if f"`{f.name}`" not in TEXT and f"`[bearing.{f.name}]`" not in TEXT

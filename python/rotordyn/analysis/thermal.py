@@ -20,10 +20,12 @@ from rotordyn.units import hz_to_rad_s
 
 
 @limited_blas
-def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil,
-                               supply_temperature_c: float, bearings=None,
-                               carry_over: float = 0.0, effective_factor: float = 0.5,
-                               supply_flow_m3_s: float = 0.0, chamber_pressure_pa: float = 0.0,
+def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = None,
+                               supply_temperature_c: float | None = None, bearings=None,
+                               carry_over: float | None = None,
+                               effective_factor: float | None = None,
+                               supply_flow_m3_s: float | None = None,
+                               chamber_pressure_pa: float = 0.0,
                                tol_k: float = 1e-6) -> SystemThermalResult:
     """Thermal equilibrium of ``system`` at ``speed_hz``: each plain journal bearing
     (``type = "journal"``, :class:`rotordyn.FluidFilmBearing`) in ``bearings`` (indices into
@@ -32,13 +34,29 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil,
     ``supply_flow_m3_s``; :meth:`rotordyn.JournalBearing.thermal_equilibrium` for the model),
     iterated with the system equilibrium to |ΔT_eff| <= ``tol_k`` for every bearing. The
     result's ``system`` carries the viscosities μ(T_eff): pass it to ``linearize``,
-    ``stability`` or ``campbell`` for the dynamics with the temperature frozen."""
+    ``stability`` or ``campbell`` for the dynamics with the temperature frozen.
+
+    Every thermal argument left None comes from the model's oil system (``system.thermal``,
+    the model file's ``[thermal]`` table, per bearing from its ``[[thermal.film]]`` entry);
+    one given applies to every bearing. Without ``system.thermal``, ``oil`` and
+    ``supply_temperature_c`` are required (λ = 0, k = 0.5, the film's own demand)."""
     v.speed("speed_hz", speed_hz)
     if float(speed_hz) == 0.0:
         raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    model = system.thermal
+    if oil is None:
+        if model is None:
+            raise InputError("oil: the model has no [thermal] table; give oil= and "
+                             "supply_temperature_c= (or add [thermal] to the model file)")
+        oil = model.oil
     if not isinstance(oil, Oil):
         raise InputError(f"oil: expected a rotordyn.bearings.Oil, got {oil!r}")
+    if supply_temperature_c is None:
+        if model is None:
+            raise InputError("supply_temperature_c: required (the oil's supply temperature, "
+                             "degC) when the model has no [thermal] table")
+        supply_temperature_c = model.supply_temperature_c
     plain = [i for i, b in enumerate(system.bearings) if isinstance(b, FluidFilmBearing)]
     if bearings is None:
         idx = plain
@@ -52,9 +70,19 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil,
     if not idx:
         raise InputError("bearings: the system has no plain journal bearing for the thermal "
                          "model")
-    opts = thermal_options(supply_temperature_c=supply_temperature_c,
-                           supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
-                           effective_factor=effective_factor, tol_k=tol_k)
+    def options(i):
+        own = model.film(system.bearings[i].name) if model is not None else None
+
+        def pick(given, field, default):
+            if given is not None:
+                return given
+            return getattr(own, field) if own is not None else default
+        return thermal_options(supply_temperature_c=supply_temperature_c,
+                               supply_flow_m3_s=pick(supply_flow_m3_s, "supply_flow_m3_s", 0.0),
+                               carry_over=pick(carry_over, "carry_over", 0.0),
+                               effective_factor=pick(effective_factor, "effective_factor", 0.5),
+                               tol_k=tol_k)
+    opts = {i: options(i) for i in idx}
     asm = assembled(system)
     if asm.pad_penalty is not None:
         raise InputError("bearings: the system thermal model is not available with tilting-pad "
@@ -64,7 +92,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil,
         tf = _core.ThermalFilm()
         tf.film = asm.film_owner.index(i)
         tf.oil = oil.to_core()
-        tf.options = opts
+        tf.options = opts[i]
         films.append(tf)
     opt = _core.EquilibriumOptions()
     opt.polish = True

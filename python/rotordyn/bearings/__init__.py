@@ -27,7 +27,7 @@ from rotordyn.bearings.sleeve import FlexibleSleeve, SleeveResult, paper_rig_sle
 from rotordyn.bearings.squeeze_film import (SqueezeFilmDamper, end_plate_seal_conductance,
                                             long_damper_orbit_forces, short_damper_orbit_forces)
 from rotordyn.bearings.table import TableBearing
-from rotordyn.bearings.thermal import Oil, ThermalEquilibriumResult
+from rotordyn.bearings.thermal import Oil, ThermalEquilibriumResult, ThermalFilm, ThermalModel
 from rotordyn.bearings.tilting_pad import TiltingPadBearing
 
 BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBearing,
@@ -38,5 +38,6 @@ BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBea
 __all__ = ["ActiveJournalBearing", "BEARING_TYPES", "BearingEquilibrium", "CoefficientTable",
            "FilmResult", "FixedGeometryBearing", "FlexibleSleeve", "FluidFilmBearing", "Groove",
            "JournalBearing", "Oil", "PressureField", "SleeveResult", "SqueezeFilmDamper", "TableBearing",
-           "ThermalEquilibriumResult", "TiltingPadBearing", "end_plate_seal_conductance", "long_damper_orbit_forces",
+           "ThermalEquilibriumResult", "ThermalFilm", "ThermalModel", "TiltingPadBearing",
+           "end_plate_seal_conductance", "long_damper_orbit_forces",
            "paper_rig_sleeve", "short_damper_orbit_forces", "to_ross_bearing"]

@@ -18,6 +18,7 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
+from rotordyn.errors import InputError
 
 VISCOSITY_LAWS = ("walther", "exponential")
 
@@ -167,4 +168,97 @@ def run_thermal_equilibrium(solver, oil: Oil, opts, load_n, speed_hz: float,
         K=np.array(dc.K), C=np.array(dc.C), iterations=int(r.iterations))
 
 
-__all__ = ["Oil", "ThermalEquilibriumResult", "VISCOSITY_LAWS"]
+def _check_settings(obj) -> None:
+    """The heat-balance settings' ranges (those of the core's check, named by field)."""
+    for f in ("carry_over", "effective_factor", "supply_flow_m3_s"):
+        object.__setattr__(obj, f, v.finite(f, getattr(obj, f)))
+    if not 0.0 <= obj.carry_over <= 1.0:
+        raise InputError(f"carry_over: expected 0 <= carry_over <= 1, got {obj.carry_over}")
+    if not 0.5 <= obj.effective_factor <= 1.0:
+        raise InputError(f"effective_factor: expected 0.5 <= effective_factor <= 1, got "
+                         f"{obj.effective_factor}")
+    if obj.supply_flow_m3_s < 0.0:
+        raise InputError(f"supply_flow_m3_s: expected >= 0 (0: the film's own demand), got "
+                         f"{obj.supply_flow_m3_s}")
+
+
+@dataclass(frozen=True, slots=True)
+class ThermalFilm:
+    """One bearing's own heat-balance settings in a :class:`ThermalModel` (``[[thermal.film]]``).
+
+    ``bearing`` is the bearing's name in the model; ``carry_over`` λ (0..1, hot oil carried
+    over the supply groove), ``effective_factor`` k (0..1, T_eff = T_in + k ΔT) and
+    ``supply_flow_m3_s`` (m³/s, 0: the film's own demand) as in
+    :meth:`rotordyn.JournalBearing.thermal_equilibrium`.
+    """
+
+    bearing: str
+    carry_over: float = 0.0
+    effective_factor: float = 0.5
+    supply_flow_m3_s: float = 0.0
+
+    def __post_init__(self) -> None:
+        v.text("bearing", self.bearing)
+        if not self.bearing:
+            raise InputError("bearing: the name of a bearing of the model, got ''")
+        _check_settings(self)
+
+    @property
+    def name(self) -> str:  # sweep paths address films by bearing name (thermal.films.DE...)
+        return self.bearing
+
+
+@dataclass(frozen=True, slots=True)
+class ThermalModel:
+    """The model file's ``[thermal]`` table: one oil system feeding every plain journal bearing.
+
+    ``oil`` the lubricant (:class:`Oil`), ``supply_temperature_c`` its supply temperature (°C);
+    ``carry_over``, ``effective_factor``, ``supply_flow_m3_s`` the heat-balance settings of
+    every bearing that has no entry of its own in ``films`` (:class:`ThermalFilm`, by bearing
+    name). Used by :func:`rotordyn.analysis.system_thermal_equilibrium` and ``rotordyn
+    thermal`` when they are given no oil of their own.
+    """
+
+    supply_temperature_c: float
+    oil: Oil = Oil()
+    carry_over: float = 0.0
+    effective_factor: float = 0.5
+    supply_flow_m3_s: float = 0.0
+    films: tuple[ThermalFilm, ...] = ()
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.oil, Oil):
+            raise InputError(f"oil: expected a rotordyn.bearings.Oil, got {self.oil!r}")
+        object.__setattr__(self, "films", tuple(self.films))
+        for i, f in enumerate(self.films):
+            if not isinstance(f, ThermalFilm):
+                raise InputError(f"films[{i}]: expected a ThermalFilm, got {type(f).__name__}")
+        names = [f.bearing for f in self.films]
+        if len(set(names)) != len(names):
+            raise InputError(f"films: one entry per bearing, got {names}")
+        object.__setattr__(self, "supply_temperature_c",
+                           v.finite("supply_temperature_c", self.supply_temperature_c))
+        _check_settings(self)
+        if not self.oil.t_min_c <= self.supply_temperature_c < self.oil.t_max_c:
+            raise InputError(f"supply_temperature_c: expected a temperature in the oil's range "
+                             f"[{self.oil.t_min_c}, {self.oil.t_max_c}) degC, got "
+                             f"{self.supply_temperature_c}")
+
+    def film(self, bearing_name: str) -> ThermalFilm:
+        """The settings of the bearing named ``bearing_name`` (its entry or the defaults)."""
+        for f in self.films:
+            if f.bearing == bearing_name:
+                return f
+        return ThermalFilm(bearing=bearing_name or "-", carry_over=self.carry_over,
+                           effective_factor=self.effective_factor,
+                           supply_flow_m3_s=self.supply_flow_m3_s)
+
+    def options(self, bearing_name: str | None = None, tol_k: float = 1e-6):
+        """The core's options for the bearing named ``bearing_name`` (None: the defaults)."""
+        f = self.film(bearing_name) if bearing_name is not None else self
+        return thermal_options(supply_temperature_c=self.supply_temperature_c,
+                               supply_flow_m3_s=f.supply_flow_m3_s, carry_over=f.carry_over,
+                               effective_factor=f.effective_factor, tol_k=tol_k)
+
+
+__all__ = ["Oil", "ThermalEquilibriumResult", "ThermalFilm", "ThermalModel", "VISCOSITY_LAWS"]

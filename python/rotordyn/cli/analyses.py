@@ -225,9 +225,13 @@ def _cmd_thermal(args) -> int:
     if args.config_ay_m is not None:
         raise InputError("--config-ay-m: not available with the thermal model (set the "
                          "housing offsets in the model)")
-    oil = oil_from_args(args)
-    if oil is None:
-        raise InputError("--supply-temperature-c: required (the oil's supply temperature, degC)")
+    if s.thermal is not None and args.oil_walther is None and args.oil_exponential is None:
+        oil = None  # the model's [thermal] oil (--supply-temperature-c may still override)
+    else:
+        oil = oil_from_args(args)
+    if oil is None and s.thermal is None:
+        raise InputError("--supply-temperature-c: required (the oil's supply temperature, "
+                         "degC) when the model has no [thermal] table")
     r = analysis.system_thermal_equilibrium(
         s, speed_hz=args.speed_hz, oil=oil, supply_temperature_c=args.supply_temperature_c,
         carry_over=args.carry_over, effective_factor=args.effective_factor,

@@ -174,8 +174,9 @@ def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
                          "(give --load-n, not --x-m/--y-m)")
     r = b.thermal_equilibrium(load_n=tuple(args.load_n), speed_hz=args.speed_hz, oil=oil,
                               supply_temperature_c=args.supply_temperature_c,
-                              supply_flow_m3_s=args.supply_flow_m3_s,
-                              carry_over=args.carry_over, effective_factor=args.effective_factor)
+                              supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),
+                              carry_over=_or(args.carry_over, 0.0),
+                              effective_factor=_or(args.effective_factor, 0.5))
     hot = JournalBearing(viscosity_pa_s=r.viscosity_pa_s, **film)
     f = hot.solve(x_m=r.x_m, y_m=r.y_m, speed_hz=args.speed_hz)
     row = r.to_frame().iloc[0].to_dict()
@@ -211,3 +212,8 @@ def _table(b: JournalBearing, args: argparse.Namespace) -> int:
     else:
         print(table_text(t.to_frame()))
     return 0 if all(s in CONVERGED for s in t.status) else 1
+
+
+def _or(value, default):
+    """``value`` unless None (an option not given: the film model's default)."""
+    return default if value is None else value

@@ -218,12 +218,15 @@ def add_thermal_arguments(s) -> None:
                    help="exponential viscosity law mu_ref exp(-beta (T - T_ref))")
     s.add_argument("--specific-heat-j-per-kg-k", type=float, default=2000.0, metavar="CP",
                    help="oil specific heat, J/(kg K) (thermal model)")
-    s.add_argument("--supply-flow-m3-s", type=float, default=0.0, metavar="Q",
-                   help="fresh oil supply flow, m3/s (0: the film's own demand)")
-    s.add_argument("--carry-over", type=float, default=0.0, metavar="LAMBDA",
-                   help="hot-oil carry-over fraction of the recirculating flow, [0, 1]")
-    s.add_argument("--effective-factor", type=float, default=0.5, metavar="K",
-                   help="T_eff = T_in + K dT, K in [0.5, 1] (0.5: the average film temperature)")
+    s.add_argument("--supply-flow-m3-s", type=float, default=None, metavar="Q",
+                   help="fresh oil supply flow, m3/s (default: the model's [thermal], else 0: "
+                        "the film's own demand)")
+    s.add_argument("--carry-over", type=float, default=None, metavar="LAMBDA",
+                   help="hot-oil carry-over fraction of the recirculating flow, [0, 1] "
+                        "(default: the model's [thermal], else 0)")
+    s.add_argument("--effective-factor", type=float, default=None, metavar="K",
+                   help="T_eff = T_in + K dT, K in [0.5, 1] (0.5: the average film "
+                        "temperature; default: the model's [thermal], else 0.5)")
 
 
 def oil_from_args(args) -> "Oil | None":

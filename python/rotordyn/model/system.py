@@ -15,7 +15,7 @@ from rotordyn import _core
 from rotordyn.errors import InputError
 from rotordyn._common import plausibility
 from rotordyn._common import validate as v
-from rotordyn.bearings import BEARING_TYPES
+from rotordyn.bearings import BEARING_TYPES, FluidFilmBearing, ThermalModel
 from rotordyn.model.rotor import (REDUCTION_METHODS, STEEL, Material,  # noqa: F401
                                  Reduction, Rotor, Support)
 from rotordyn.model.stage import Stage
@@ -34,6 +34,7 @@ class System:
     name: str = ""
     description: str = ""
     stages: tuple[Stage, ...] = ()  # aerodynamic stages for API 617 Level I (``[[stage]]``)
+    thermal: ThermalModel | None = None  # the oil system (``[thermal]``; docs/film-physics.md)
 
     def __post_init__(self):
         object.__setattr__(self, "materials", tuple(self.materials))
@@ -107,6 +108,16 @@ class System:
                     f"{where}.station: station {b.station} must be one of "
                     f"reduction.master_stations {list(self.reduction.master_stations)} "
                     "(the film acts on the journal's x and y)")
+        if self.thermal is not None:
+            if not isinstance(self.thermal, ThermalModel):
+                raise InputError(f"thermal: expected a ThermalModel, got "
+                                 f"{type(self.thermal).__name__}")
+            plain = {b.name for b in self.bearings if isinstance(b, FluidFilmBearing) and b.name}
+            for i, f in enumerate(self.thermal.films):
+                if f.bearing not in plain:
+                    raise InputError(f"thermal.film[{i}].bearing: expected the name of a plain "
+                                     f"journal bearing (type = \"journal\") of the model "
+                                     f"{sorted(plain)}, got {f.bearing!r}")
 
 
     # -- lookups -----------------------------------------------------------------------

@@ -15,7 +15,7 @@ import warnings
 import numpy as np
 from pathlib import Path
 
-from rotordyn.bearings import BEARING_TYPES, FlexibleSleeve, Groove
+from rotordyn.bearings import BEARING_TYPES, FlexibleSleeve, Groove, Oil, ThermalFilm, ThermalModel
 from rotordyn.errors import InputError, RotordynDeprecationWarning
 from rotordyn.model.rotor import STEEL, Disk, Material, Reduction, Rotor, ShaftSection, Support
 from rotordyn.model.stage import Stage
@@ -108,7 +108,7 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
         doc = parse_toml(read_text(path_or_text), str(path_or_text))
 
     top = {"schema", "name", "description", "material", "rotor", "disk", "support", "reduction",
-           "bearing", "gravity_m_s2", "stage"}
+           "bearing", "gravity_m_s2", "stage", "thermal"}
     _check_keys("model", doc, top)
     if doc.get("schema") != SCHEMA:
         raise InputError(f"schema: expected {SCHEMA!r}, got {doc.get('schema')!r}")
@@ -155,6 +155,8 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
         stages.append(_build(Stage, f"stage[{i}]", t))
 
     kwargs = {}
+    if "thermal" in doc:
+        kwargs["thermal"] = _thermal_from_table(doc["thermal"])
     if stages:
         kwargs["stages"] = tuple(stages)
     if "gravity_m_s2" in doc:
@@ -191,6 +193,23 @@ def _disk_from_table(where: str, t: dict, mats: list):
                                   t.get("inner_diameter_m", 0.0), t.get("name", ""))
     except InputError as exc:  # "disk.width_m: …" → "disk[2].width_m: …"
         raise type(exc)(at_path(where, str(exc), t)) from None
+
+
+def _thermal_from_table(t: dict) -> ThermalModel:
+    """``[thermal]`` (the oil system), ``[thermal.oil]`` and ``[[thermal.film]]`` entries."""
+    _check_keys("thermal", t, (set(_fields(ThermalModel)) - {"films"}) | {"film"})
+    t = dict(t)
+    if "supply_temperature_c" not in t:
+        raise InputError("thermal.supply_temperature_c: missing (the oil's supply "
+                         "temperature, degC)")
+    if "oil" in t:
+        _check_keys("thermal.oil", t["oil"], _fields(Oil))
+        t["oil"] = _build(Oil, "thermal.oil", t["oil"])
+    films = []
+    for i, f in enumerate(_array_of_tables("thermal.film", t.pop("film", []))):
+        _check_keys(f"thermal.film[{i}]", f, _fields(ThermalFilm))
+        films.append(_build(ThermalFilm, f"thermal.film[{i}]", f))
+    return _build(ThermalModel, "thermal", t, films=tuple(films))
 
 
 def _bearing_from_table(where: str, t: dict):
@@ -295,6 +314,12 @@ def system_to_toml(system) -> str:
             lines += ["", "[bearing.sleeve]"] + _table_lines(b.sleeve, defaults_too=True)
     for st in getattr(system, "stages", ()):
         lines += ["", "[[stage]]"] + _table_lines(st)
+    th = getattr(system, "thermal", None)
+    if th is not None:
+        lines += ["", "[thermal]"] + _table_lines(th, skip=("oil", "films"), defaults_too=True)
+        lines += ["", "[thermal.oil]"] + _table_lines(th.oil, defaults_too=True)
+        for f in th.films:
+            lines += ["", "[[thermal.film]]"] + _table_lines(f, defaults_too=True)
     if system.gravity_m_s2 != 9.81:
         lines.insert(1, f"gravity_m_s2 = {_val(system.gravity_m_s2)}")
     return "\n".join(lines) + "\n"

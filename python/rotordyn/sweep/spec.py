@@ -31,8 +31,8 @@ from rotordyn.model import builtin as models
 SCHEMA = "rotordyn/sweep/1"
 OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
 DEFAULTS = {"speed_hz": 50.0, "chamber_pressure_pa": 0.0}
-ANALYSES = ("equilibrium", "stability", "campbell", "threshold", "boundary", "unbalance",
-            "waterfall", "run-up")
+ANALYSES = ("equilibrium", "thermal", "stability", "campbell", "threshold", "boundary",
+            "unbalance", "waterfall", "run-up")
 MAX_POINTS = 10_000_000
 
 
@@ -92,6 +92,7 @@ _EQ = {"method": _opt_choice("newton", "successive"), "tol": _opt_range(0.0, 1e-
 _LIN = {"linearization": _opt_choice("perturbation", "finite_difference")}
 OPTIONS = {
     "equilibrium": dict(_EQ),
+    "thermal": {"tol_k": _opt_range(0.0, 1.0)},
     "stability": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "track": _opt_bool,
                   "line": _opt_axis},
     "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000)},
@@ -385,6 +386,11 @@ class SweepSpec:
                 raise InputError(f"options.rate_hz_per_s: the run-up lasts {revs:.3g} "
                                  "revolutions; at most 2e6 samples per run (raise the rate "
                                  "or lower samples_per_revolution)")
+        if a == "thermal":
+            for ax in ("config_ay_m", "config_ax_m"):
+                if ax in self.axes:
+                    raise InputError(f"grid.{ax}: not available with the thermal model (sweep "
+                                     "the bearings' own config_ay_m/config_ax_m fields)")
         if "line" in self.options and self.options["line"] not in self.axes:
             raise InputError(f"options.line: {self.options['line']!r} is not a grid axis")
         if a in ("campbell", "unbalance") and len(self.axes.get("speed_hz", ())) < 2:
@@ -414,6 +420,9 @@ class SweepSpec:
     def check_against(self, system) -> None:
         """Every axis exists (model fields by dotted path) and every value builds a valid
         model; option stations exist. InputError names the axis."""
+        if self.analysis == "thermal" and getattr(system, "thermal", None) is None:
+            raise InputError("analysis: 'thermal' needs the model's oil system (a [thermal] "
+                             "table in the model file, docs/model-file.md)")
         for name, vals in self.axes.items():
             if name in OPERATING:
                 if name in ("config_ay_m", "config_ax_m"):

@@ -19,6 +19,7 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.whirl import WHIRL_NAMES
 from rotordyn.analysis.linear import FD_REL_STEP
+from rotordyn.analysis.thermal import system_thermal_equilibrium
 from rotordyn.analysis.transient import transient
 from rotordyn.operation import SpeedProfile
 from rotordyn.results.modes import settled_real
@@ -43,6 +44,11 @@ def _cat(values):
 OUTPUTS = {
     "equilibrium": {"bearing": STR, "journal_x_m": F64, "journal_y_m": F64, "x_over_c": F64,
                     "y_over_c": F64, "h_min_m": F64, "iterations": I64, "residual": F64},
+    "thermal": {"bearing": STR, "effective_temperature_c": F64, "max_temperature_c": F64,
+                "inlet_temperature_c": F64, "temperature_rise_k": F64, "viscosity_pa_s": F64,
+                "power_loss_w": F64, "film_flow_m3_s": F64, "side_flow_m3_s": F64,
+                "supply_flow_m3_s": F64, "journal_x_m": F64, "journal_y_m": F64,
+                "iterations": I64},
     "stability": {"mode_id": I64, "mode": I64, "freq_hz": F64, "eig_real_1_per_s": F64,
                   "damping_ratio": F64, "log_dec": F64, "whirl": _cat(WHIRL),
                   "kind": _cat(KIND), "mode_stable": BOOL, "point_stable": BOOL,
@@ -149,6 +155,31 @@ def _eq_rows(job, variants, chunk_id, lo, hi, rows):
                          "iterations": int(e.iterations), "residual": float(e.residual),
                          "status": e.status if e.status in STATUS else "error",
                          "message": e.message})
+
+
+def _thermal_rows(job, variants, chunk_id, lo, hi, rows):
+    """Effective-temperature system equilibria (the model's ``[thermal]``, every field of
+    which is an axis: ``thermal.supply_temperature_c``, ``thermal.oil.nu1_mm2_s``,
+    ``thermal.films.<bearing>.carry_over``...), one row per plain journal bearing; each point
+    starts cold (same answer as a direct call)."""
+    cols = [k for k in OUTPUTS["thermal"] if k not in ("bearing", "iterations")]
+    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
+        if err:
+            rows.append(fail_row(row, "error", err))
+            continue
+        try:
+            f, pc, _ = operating(asm, p)
+            r = system_thermal_equilibrium(asm.system, speed_hz=f, chamber_pressure_pa=pc,
+                                           tol_k=opts.get("tol_k", 1e-6))
+        except (RotordynError, ArithmeticError, ValueError) as exc:
+            rows.append(fail_row(row, "error", str(exc)))
+            continue
+        ok = r.status in CONVERGED
+        for k, name in enumerate(r.bearing_names):
+            vals = {c: float(getattr(r, c)[k]) if ok else math.nan for c in cols}
+            rows.append({**row, "bearing": name, **vals, "iterations": int(r.iterations),
+                         "status": r.status if r.status in STATUS else "error",
+                         "message": r.message})
 
 
 def _stab_rows(job, variants, chunk_id, lo, hi, rows):
@@ -402,7 +433,8 @@ def _boundary_rows(job, variants, chunk_id, pids, rows):
                      "level": job.level, "status": st, "message": ""})
 
 
-_ANALYSIS = {"equilibrium": _eq_rows, "stability": _stab_rows, "campbell": _stab_rows,
+_ANALYSIS = {"equilibrium": _eq_rows, "thermal": _thermal_rows, "stability": _stab_rows,
+             "campbell": _stab_rows,
              "waterfall": _wf_rows, "threshold": _threshold_rows,
              "unbalance": _unbalance_rows, "run-up": _runup_rows}
 
