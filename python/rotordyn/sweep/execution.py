@@ -390,10 +390,14 @@ class StartingCluster:
         finally:
             self.ready.set()
 
+    def _started(self) -> bool:
+        """The workers are up and checked (the driver stops taking chunks)."""
+        return self.ready.is_set()
+
     def map(self, job, tasks):
         tasks = list(tasks)
         i = 0
-        while i < len(tasks) and not self.ready.is_set():
+        while i < len(tasks) and not self._started():
             t = tasks[i]
             i += 1
             self.local += 1
