@@ -348,68 +348,73 @@ class Dask:
         self._log.setLevel(self._level)
 
 
-class _Silent:
-    """A progress line that draws nothing (the start thread must not draw)."""
-
-    def status(self, msg: str) -> None:
-        pass
-
-
 class StartingCluster:
-    """A LocalCluster started on a background thread while this process computes the first
-    chunks itself, one at a time; once the workers are up and checked, the chunks not yet
-    begun go to them (the driver finishes the chunk it holds). The LocalCluster's start
-    (worker processes importing rotordyn, the build check: ~3 s) thus overlaps work instead
-    of preceding it, so ``--workers N`` is not slower than ``--threads 1`` on a map that is
-    done in a few seconds. A chunk's rows do not depend on where it ran, so the dataset is
-    the same as on the workers alone. ``local`` counts the chunks the driver computed."""
+    """A LocalCluster whose start overlaps the driver's own work: at the first ``map`` a
+    thread of this process computes chunks, one at a time, while the main thread starts the
+    cluster (SIGINT ignored while the worker processes are spawned, as in :class:`Dask`:
+    Ctrl-C reaches only the driver, which stops the workers itself). Once the workers are up
+    and checked, the thread finishes the chunk it holds and the chunks not yet begun go to
+    the workers. The start (~2-4 s: processes importing rotordyn, the build check) thus no
+    longer precedes all work, so ``--workers N`` is not slower than ``--threads 1`` on a map
+    done in a few seconds. A chunk's rows do not depend on where it ran: the dataset is the
+    same as on the workers alone. ``local`` counts the chunks the driver computed."""
 
     def __init__(self, workers: int, timeout: float, progress):
-        import threading
-
+        self.workers, self.timeout, self.progress = workers, timeout, progress
         self.dask = None
-        self.error: BaseException | None = None
         self.local = 0
-        self.ready = threading.Event()
-        progress.status(f"computing here while {workers} worker processes start")
-        self.thread = threading.Thread(target=self._start, args=(workers, timeout),
-                                       name="rotordyn-cluster-start", daemon=True)
-        self.thread.start()
-
-    def _start(self, workers: int, timeout: float) -> None:
-        import signal
-
-        # The worker processes (and the cluster's loop thread, which spawns them) inherit
-        # this thread's signal mask: with SIGINT blocked, Ctrl-C on the terminal reaches only
-        # the driver, which stops the workers itself (as the ignored SIGINT does in Dask).
-        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
-        try:
-            self.dask = Dask(None, workers, timeout, _Silent())
-        except BaseException as exc:  # noqa: BLE001 - re-raised in the driver by map()
-            self.error = exc
-        finally:
-            self.ready.set()
 
     def _started(self) -> bool:
-        """The workers are up and checked (the driver stops taking chunks)."""
-        return self.ready.is_set()
+        """The workers are up and checked (the driver's thread stops taking chunks)."""
+        return self.dask is not None
+
+    def _overlap(self, job, tasks):
+        """Start the cluster while a thread computes tasks; returns (results, next index)."""
+        import threading
+
+        lock = threading.Lock()
+        state = {"next": 0, "error": None}
+        out = []
+
+        def work():
+            while True:
+                with lock:
+                    if self._started() or state["next"] >= len(tasks):
+                        return
+                    t = tasks[state["next"]]
+                    state["next"] += 1
+                try:
+                    out.append((t[0], _task(job, *t)))
+                except BaseException as exc:  # noqa: BLE001 - re-raised in the driver
+                    state["error"] = exc
+                    return
+                self.local += 1
+
+        th = threading.Thread(target=work, name="rotordyn-sweep-driver", daemon=True)
+        self.progress.status(f"computing here while {self.workers} worker processes start")
+        th.start()
+        try:
+            dask = Dask(None, self.workers, self.timeout, self.progress)
+            with lock:
+                self.dask = dask
+        finally:
+            with lock:
+                state["next"] = len(tasks) if self.dask is None else state["next"]
+            th.join()
+        if state["error"] is not None:
+            raise state["error"]
+        return out, state["next"]
 
     def map(self, job, tasks):
         tasks = list(tasks)
         i = 0
-        while i < len(tasks) and not self._started():
-            t = tasks[i]
-            i += 1
-            self.local += 1
-            yield t[0], _task(job, *t)
+        if not self._started() and tasks:
+            out, i = self._overlap(job, tasks)
+            yield from out
         if i < len(tasks):
-            self.ready.wait()
-            if self.error is not None:
-                raise self.error
             yield from self.dask.map(job, tasks[i:])
 
     def close(self):
-        self.thread.join()
         if self.dask is not None:
             self.dask.close()
 
