@@ -76,6 +76,29 @@ def test_threads_processes_identical(reference, tmp_path):
                                   check_exact=True)
 
 
+def test_driver_then_workers_identical(reference, tmp_path, monkeypatch):
+    """--workers: the driver computes chunks while the LocalCluster starts, then hands the
+    chunks not yet begun to the workers. Forced here to exactly 2 chunks in the driver and 7
+    on the workers: the dataset equals the one-thread reference bit for bit."""
+    from rotordyn.sweep import execution
+
+    seen = []
+
+    class TwoFirst(execution.StartingCluster):
+        def _started(self):  # the driver's thread stops after 2 chunks, whatever the start
+            return self.local >= 2
+
+        def close(self):
+            seen.append(self.local)
+            super().close()
+
+    monkeypatch.setattr(execution, "StartingCluster", TwoFirst)
+    spec, ref = reference
+    assert run_sweep(spec, tmp_path / "h", workers=2, progress=False).complete
+    assert seen == [2]
+    assert _digest(tmp_path / "h") == _digest(ref)
+
+
 def test_resume_identical(reference, tmp_path):
     """Same dataset after a resume from any subset of chunks (parts removed, a compacted
     file damaged, a torn last log line)."""

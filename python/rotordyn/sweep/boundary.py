@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from rotordyn._common.info import __version__
-from rotordyn.sweep.execution import (Dask, Progress, SweepInterrupted, SweepResult, Threads,
+from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, executor,
                                       group_size)
 from rotordyn.sweep.spec import boundary_axes, fine_axes
 from rotordyn.sweep.store import BOUNDARY, Store
@@ -158,9 +158,8 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
             if todo:
                 job.level = plan.level
                 if ex is None:
-                    ex = (Threads(threads) if threads is not None else
-                          Dask(scheduler, workers or min(len(todo), os.cpu_count() or 1),
-                                worker_timeout, bar))
+                    ex = executor(scheduler, workers or min(len(todo), os.cpu_count() or 1),
+                                  threads, worker_timeout, bar)
                 for c, (table, cnt) in ex.map(job, todo):
                     store.add(c, table, cnt, 0)
                     state.update(_classify(table))

@@ -22,8 +22,8 @@ from rotordyn.sweep.spec import SweepSpec
 from rotordyn.sweep.store import Store, read_manifest
 from rotordyn.sweep.boundary import run_boundary
 from rotordyn.sweep.dataset import open_dataset
-from rotordyn.sweep.execution import (Dask, Progress, SweepInterrupted, SweepResult, Threads,
-                                      check_scheduler, group_size)
+from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, check_scheduler,
+                                      executor, group_size)
 from rotordyn.sweep.work import Job
 from rotordyn.units import unit_of
 
@@ -111,11 +111,8 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
                         "units": header["units"]}
             ex = None
             try:
-                if threads is not None:
-                    ex = Threads(threads)
-                else:
-                    n = workers or min(len(todo), os.cpu_count() or 1)
-                    ex = Dask(scheduler, n, worker_timeout, bar)
+                n = workers or min(len(todo), os.cpu_count() or 1)
+                ex = executor(scheduler, n, threads, worker_timeout, bar)
                 for cid, (table, cnt) in ex.map(job, todo):
                     store.add(cid, table, cnt, n_chunks)
                     bar.update(cnt)
