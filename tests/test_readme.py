@@ -58,6 +58,10 @@ def test_readme_runs_as_written(tmp_path, monkeypatch):
     assert (tmp_path / "my_rotor.toml").exists()
     assert ns["e"].status == "ok" and ns["t"].status == "ok" and ns["tr"].status == "ok"
     assert len(ns["c"].critical_speeds()) >= 2 and ns["ss"].A.shape[0] == 2 * len(ns["e"].r)
+    # the Level I / limit cycle / thermal block: the values its comments state
+    assert ns["l1"].verdict() == "FAIL (Level II required)"
+    assert ns["cyc"].ok and abs(ns["cyc"].period_s - 39.9e-3) < 0.2e-3
+    assert abs(ns["vg32"].viscosity_pa_s(40.0) / 870.0 * 1e6 - 32.0) < 1e-6
 
     cmds = shell_commands(text)
     run = [c for c in cmds if c[0] != "make"]
