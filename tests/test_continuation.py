@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 import rotordyn as rd
-from rotordyn.analysis.assembly import assembled
+
+from orbit_forms import forced_orbit
 
 MODELS = Path(__file__).parent / "data" / "models"
 UB = [(3, 1e-3, 30.0)]
@@ -33,23 +34,6 @@ def linear_orbit(linear_system):
     return res
 
 
-def closed_form(system, f, t):
-    asm = assembled(system)
-    m = asm.model
-    w = 2 * np.pi * f
-    M, K, C, G = (np.asarray(x) for x in (m.M, m.K, m.C, m.G))
-    n = M.shape[0]
-    uc, us = np.zeros(n), np.zeros(n)
-    for st, me, ph in UB:
-        L = asm.station_load_matrix(st)
-        p = np.radians(ph)
-        uc += me * (L[:, 0] * np.cos(p) + L[:, 1] * np.sin(p))
-        us += me * (-L[:, 0] * np.sin(p) + L[:, 1] * np.cos(p))
-    rs = np.linalg.solve(K, np.asarray(m.Q) - K @ asm.config_vector(None))
-    X = np.linalg.solve(K - w**2 * M + 1j * w * (C + w * G), w**2 * (uc - 1j * us))
-    return rs[None, :] + np.real(X[None, :] * np.exp(1j * w * t[:, None])), np.abs(X).max()
-
-
 def test_forced_branch_over_speed_equals_the_closed_form_at_every_point(linear_system,
                                                                          linear_orbit,
                                                                          tmp_path):
@@ -66,7 +50,7 @@ def test_forced_branch_over_speed_equals_the_closed_form_at_every_point(linear_s
     assert np.all(np.diff(br.arclength) > 0)
     assert br.period_s == pytest.approx(1 / br.parameter, rel=1e-12)
     for o in br.orbits:
-        r_exact, amp = closed_form(linear_system, o.speed_hz, o.t)
+        r_exact, amp = forced_orbit(linear_system, o.speed_hz, o.t, UB)
         assert np.abs(o.r - r_exact).max() < 1e-6 * np.abs(r_exact).max()
     assert np.all(br.stable) and br.bifurcations == ()
     df = br.to_frame()
