@@ -117,7 +117,7 @@ def _dec(x, arrays, where: str):
             a = arrays[x["$array"]]
             return a.astype(object) if x.get("object") else a
         if "$frame" in x:
-            return pd.read_parquet(io.BytesIO(arrays[x["$frame"]].tobytes()))
+            return pd.read_parquet(io.BytesIO(arrays[x["$frame"]].tobytes()), use_threads=False)
         if "$int" in x:
             return np.int64(x["$int"])
         if "$float" in x:

@@ -104,7 +104,10 @@ class SweepDataset:
                               or hashlib.sha256(data).hexdigest() != e["sha256"]):
             raise InputError(f"boundary: {str(self.out / BOUNDARY)!r} is damaged (its SHA-256 "
                              "differs from the log's); run the sweep again to rewrite it")
-        return pq.read_table(pa.BufferReader(data)).to_pandas()
+        # no Arrow thread pool: pyarrow 26 can abort the interpreter at exit ('terminate called
+        # without an active exception') when its CPU pool was started (seen in 4-15 of 20 runs)
+        t = pq.read_table(pa.BufferReader(data), use_threads=False)
+        return t.to_pandas(use_threads=False)
 
 
 def open_dataset(out, *, verify: bool = True) -> SweepDataset:
@@ -139,7 +142,7 @@ def open_dataset(out, *, verify: bool = True) -> SweepDataset:
     except (OSError, pa.ArrowException) as exc:
         raise InputError(f"dir: {str(out)!r} has parts of different schemas ({exc}); run "
                          "the sweep again to verify and recompute them") from None
-    return SweepDataset(out, table.to_pandas(), manifest, verify)
+    return SweepDataset(out, table.to_pandas(use_threads=False), manifest, verify)
 
 
 class _Missing(InputError):
@@ -173,7 +176,7 @@ def _read_parts(out, d, entries, verify):
                        or hashlib.sha256(data).hexdigest() != e["sha256"]):
             raise damaged(name, "its SHA-256 differs from the log's")
         try:
-            t = pq.read_table(pa.BufferReader(data))
+            t = pq.read_table(pa.BufferReader(data), use_threads=False)
         except (OSError, pa.ArrowException) as exc:
             raise damaged(name, exc) from None
         if verify and t.num_rows != e["rows"]:

@@ -460,7 +460,7 @@ class Store:
                              "again to verify and recompute it") from None
 
     def _compact(self, lo: int, hi: int, names: list[str]) -> None:
-        tables = [self._table(self.files[n]).read() for n in names]
+        tables = [self._table(self.files[n]).read(use_threads=False) for n in names]
         counts = [self.files[n]["counts"][0] for n in names]
         self._write_file(part_name(lo, hi), tables, lo, hi, counts)
         for n in names:
@@ -472,7 +472,7 @@ class Store:
         """The rows of one done chunk (for driver-side analyses that build on results)."""
         for e in self.files.values():
             if e["lo"] <= chunk_id <= e["hi"]:
-                return self._table(e).read_row_group(chunk_id - e["lo"])
+                return self._table(e).read_row_group(chunk_id - e["lo"], use_threads=False)
         raise KeyError(chunk_id)
 
 
