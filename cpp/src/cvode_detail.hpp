@@ -5,6 +5,8 @@
 
 #include <sundials/sundials_context.h>
 
+#include <Eigen/Core>
+
 #include <exception>
 #include <sstream>
 #include <string>
@@ -45,6 +47,14 @@ void store_error(int error_code, const char* module, const char* function, char*
   std::ostringstream os;
   os << module << "." << function << " (" << cvode_flag_name(error_code) << "): " << msg;
   s.cvode_message = os.str();
+}
+
+/// An input vector of the state's size n (or empty when ``allow_empty``), finite: else an
+/// InputError naming ``name`` ("expected X, got Y").
+inline void check_state_vector(const Eigen::VectorXd& v, const char* name, Eigen::Index n,
+                               bool allow_empty) {
+  require((allow_empty && v.size() == 0) || v.size() == n, shape_msg(name, n, 1, v.size(), 1));
+  require(v.allFinite(), std::string(name) + ": expected finite values");
 }
 
 /// Owner of a heap-allocated SUNContext (freed if created).

@@ -220,8 +220,7 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
 void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt) {
   const Eigen::Index n = solver.model().n();
   auto vec_ok = [&](const Eigen::VectorXd& v, const char* name, bool allow_empty) {
-    require((allow_empty && v.size() == 0) || v.size() == n, shape_msg(name, n, 1, v.size(), 1));
-    require(v.allFinite(), std::string(name) + ": expected finite values");
+    cvode_detail::check_state_vector(v, name, n, allow_empty);
   };
   vec_ok(in.a, "a", false);
   vec_ok(in.r0, "r0", false);
