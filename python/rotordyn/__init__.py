@@ -85,6 +85,8 @@ from rotordyn.results import (
     StaticResult,
     load_result,
 )
+from rotordyn.analysis import hopf
+from rotordyn.results import HopfResult
 
 __all__ = [
     "__version__",
@@ -148,4 +150,6 @@ __all__ = [
     "CampbellResult",
     "EquilibriumResult",
     "SleeveResult",
+    "hopf",
+    "HopfResult",
 ]

@@ -13,8 +13,10 @@ from rotordyn.analysis.periodic import periodic_orbit
 from rotordyn.analysis.continuation import continuation
 from rotordyn.analysis.modes import RotorMatrices, modes, rotor_campbell
 from rotordyn.analysis.thermal import system_thermal_equilibrium
+from rotordyn.analysis.hopf import hopf
 
 __all__ = ["level1", "static", "campbell", "modes", "rotor_campbell", "equilibrium", "linearize",
            "stability", "threshold", "stability_boundary", "unbalance_response", "statespace",
            "transient", "periodic_orbit", "continuation", "RotorMatrices",
            "system_thermal_equilibrium"]
+__all__ += ["hopf"]

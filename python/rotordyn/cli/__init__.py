@@ -19,11 +19,13 @@ from rotordyn._common.info import DESCRIPTION
 from rotordyn._common.progress import long_work
 from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.cli import analyses, bearing, control, level1, nonlinear, report, sweeps
+from rotordyn.cli import hopf as hopf_cli
 from rotordyn.cli.common import ArgumentParser
 from rotordyn.errors import InputError, OutputError, RotordynError, RotordynWarning
 from rotordyn.model import builtin as models
 
 COMMANDS = (analyses, level1, nonlinear, sweeps, report, bearing, control)
+COMMANDS += (hopf_cli,)
 """The command families, in the order of ``rotordyn --help``."""
 
 OWN_PROGRESS = ("report", "sweep")

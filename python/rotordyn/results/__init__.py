@@ -14,8 +14,10 @@ from rotordyn.results.store import load_result, save_result
 from rotordyn.results.thermal import SystemThermalResult
 from rotordyn.results.transient import TransientResult
 from rotordyn.results.unbalance import UnbalanceResult
+from rotordyn.results.hopf import HopfResult
 
 __all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel",
            "StabilityResult", "ThresholdResult", "BoundaryResult", "UnbalanceResult",
            "StateSpaceResult", "TransientResult", "StaticResult", "PeriodicOrbitResult",
            "BranchResult", "SystemThermalResult", "load_result", "save_result"]
+__all__ += ["HopfResult"]

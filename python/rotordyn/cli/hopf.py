@@ -1,0 +1,56 @@
+"""``rotordyn hopf``: the Hopf point on the stability boundary, its first Lyapunov
+coefficient and type (docs/nonlinear.md)."""
+
+from __future__ import annotations
+
+from rotordyn import analysis
+from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
+                                 check_figure, json_text, save_figure, table_text)
+from rotordyn.model import builtin as models
+
+
+def register(sub) -> None:
+    """The ``hopf`` subcommand on the ``rotordyn`` parser's subparsers ``sub``."""
+    s = sub.add_parser("hopf", help="Hopf point of the stability threshold: first Lyapunov "
+                                    "coefficient, sub/supercritical, leading-order cycle")
+    s.add_argument("model", help=MODEL_HELP)
+    add_operating_point(s)
+    s.add_argument("--vary", default="chamber_pressure_pa",
+                   choices=["chamber_pressure_pa", "speed_hz", "config_ay_m"],
+                   help="the parameter whose threshold is the Hopf point (Pa, Hz, m)")
+    s.add_argument("--bounds", type=float, nargs=2, default=None, metavar=("LO", "HI"),
+                   help="search the threshold in this range (unit of --vary)")
+    s.add_argument("--at", type=float, default=None,
+                   help="the threshold value itself (instead of --bounds)")
+    s.add_argument("--n-scan", type=int, default=25, help="threshold scan points")
+    s.add_argument("--fd-step", type=float, default=1e-2,
+                   help="step of the film-force differences (fraction of the clearance)")
+    s.add_argument("--plot", default=None, metavar="FIG",
+                   help="write the leading-order bifurcation diagram")
+    s.add_argument("--json", action="store_true", help=JSON_HELP)
+    add_dpi(s)
+    s.set_defaults(func=_cmd_hopf)
+
+
+def _cmd_hopf(args) -> int:
+    check_figure(args.plot)
+    s = models.load(args.model)
+    res = analysis.hopf(s, args.vary, bounds=None if args.bounds is None else
+                        tuple(args.bounds), at=args.at, speed_hz=args.speed_hz,
+                        chamber_pressure_pa=args.chamber_pressure_pa,
+                        config_ay_m=args.config_ay_m, n_scan=args.n_scan,
+                        fd_step=args.fd_step)
+    if args.json:
+        print(json_text({"status": res.status, "message": res.message, "vary": res.vary,
+                         "value": res.value, "whirl_frequency_hz": res.whirl_frequency_hz,
+                         "l1": res.l1, "l1_error": res.l1_error, "type": res.type,
+                         "alpha_prime": res.alpha_prime, "stable_side": res.stable_side,
+                         "cycle_side": res.cycle_side,
+                         "amplitude_coefficient_m2": res.amplitude_coefficient}))
+    else:
+        print(repr(res))
+        if res.ok:
+            print(table_text(res.to_frame()))
+    if args.plot and res.ok:
+        save_figure(res.plot(), args.plot, args.dpi)
+    return 0 if res.ok else 1
