@@ -73,9 +73,10 @@ def hopf(system: System, vary: str = "chamber_pressure_pa", *, bounds=None, at=N
     crossing: the equilibrium, the Jacobian A of eq. 12 in first-order form (perturbation-
     method K_H, D_H) in scaled coordinates x̃ = (r/L, ṙ/(L ω_s)) (L the smallest film
     clearance, ω_s = max(Ω, ω)), the pair ±iω, and l1 by Kuznetsov's formula with the
-    second and third derivatives of the film forces H(r, ṙ) along real directions by
-    central differences with step ``fd_step`` (scaled; error O(h²)); l1 is also computed
-    with 2·fd_step, and the difference is ``l1_error`` (Richardson estimate of the error).
+    second and third derivatives of the film forces H(r, ṙ) along real directions
+    (:func:`lyapunov_at`: ``fd_method="fit"``, a degree-6 least-squares polynomial over
+    ±``fd_step`` (scaled), or ``"central"`` differences with step ``fd_step``); l1 is also
+    computed with 2·fd_step, and a third of the difference is ``l1_error``.
     α' = dRe λ/d(vary) by a central difference of the eigenvalue with step ``param_step``
     (default 1e-4 of max(|value|, the span of bounds, 1 unit·1e-3)).
 
@@ -130,6 +131,56 @@ def _derivatives(method, field, z0, f0, h):
     return fitted_derivatives(field, z0, h)
 
 
+def hopf_type(l1: float, l1_error: float) -> str:
+    """supercritical (l1 < 0), subcritical (l1 > 0), degenerate (|l1| < 3 l1_error)."""
+    if not math.isfinite(l1) or l1 == 0 or abs(l1) < 3 * l1_error:
+        return "degenerate"
+    return "supercritical" if l1 < 0 else "subcritical"
+
+
+def lyapunov_at(asm, r, speed_hz: float, M, A, omega: float, fd_step: float = FD_STEP,
+                fd_method: str = "fit") -> dict:
+    """l1 at the equilibrium r (n,) of ``asm`` (an assembled system) at ``speed_hz`` with
+    the first-order Jacobian A (2n × 2n, SI) and mass matrix M, for the pair ±iω (1/s).
+    Scaled coordinates x̃ = (r/L, ṙ/(L ω_s)), L the smallest film clearance,
+    ω_s = max(Ω, ω); the second and third derivatives of the film forces H(r, ṙ) along
+    real directions by ``fd_method`` (``fit``: a degree-6 least-squares polynomial over
+    ±fd_step on 17 points; ``central``: 3-/4-point differences with step fd_step); l1 also
+    with 2·fd_step, ``l1_error`` = |difference|/3. Returns l1, l1_error, q (2n,) in SI,
+    x0 (2n,), semi_major2_per_z2 (n_bearings,): each journal's largest squared distance
+    from its mean per |z|² of the normal form, length_scale_m, velocity_scale."""
+    n = asm.n
+    L = float(min(bc.clearance_m for bc in asm.bearings))
+    w = hz_to_rad_s(speed_hz)
+    ws = max(abs(w), omega)
+    d = np.concatenate([np.full(n, L), np.full(n, L * ws)])
+    As = A * d[None, :] / d[:, None]
+    Minv = np.linalg.inv(M)
+    x0 = np.concatenate([np.asarray(r, float), np.zeros(n)])
+    solver = asm.solver
+
+    def field(xs):  # the nonlinear part of the scaled field: (0, M⁻¹ H) / d
+        x = x0 + d * xs
+        H = np.asarray(solver.film_forces(x[:n], x[n:], w), dtype=float)
+        out = np.zeros(2 * n)
+        out[n:] = Minv @ H / d[n:]
+        return out
+
+    z0 = np.zeros(2 * n)
+    f0 = field(z0)
+    q, p = hopf_vectors(As, omega)
+    res = [first_lyapunov(As, omega, *_derivatives(fd_method, field, z0, f0, h), q, p)
+           for h in (fd_step, 2 * fd_step)]
+    q_phys = q * d
+    amp = np.zeros(len(asm.bearings))
+    for i, bc in enumerate(asm.bearings):
+        wv = q_phys[[bc.jx, bc.jy]]
+        amp[i] = 2 * (np.vdot(wv, wv).real + abs(wv @ wv))  # semi-major² per |z|²
+    return {"l1": res[0]["l1"], "l1_error": abs(res[1]["l1"] - res[0]["l1"]) / 3.0,
+            "q": q_phys, "x0": x0, "semi_major2_per_z2": amp, "length_scale_m": L,
+            "velocity_scale": float(ws)}
+
+
 def _hopf_at(system, asm, vary, value, whirl, span, stable_side, fixed, fd_step, fd_method,
              param_step, base):
     spd, pc, ay = _operating(vary, value, fixed)
@@ -164,42 +215,15 @@ def _hopf_at(system, asm, vary, value, whirl, span, stable_side, fixed, fd_step,
         re.append((p2, _eig_near(_jacobian(lm2), lam0).real))
     alpha_p = (re[0][1] - re[1][1]) / (re[0][0] - re[1][0])
 
-    # scaled coordinates and the film-force derivatives
-    n = asm.n
-    L = float(min(bc.clearance_m for bc in asm.bearings))
-    w = hz_to_rad_s(spd)
-    ws = max(abs(w), omega)
-    d = np.concatenate([np.full(n, L), np.full(n, L * ws)])
-    As = A * d[None, :] / d[:, None]
-    Minv = np.linalg.inv(lm.M)
-    x0 = np.concatenate([np.asarray(e.r, float), np.zeros(n)])
-    solver = asm.solver
-
-    def field(xs):  # the nonlinear part of the scaled field: (0, M⁻¹ H) / d
-        x = x0 + d * xs
-        H = np.asarray(solver.film_forces(x[:n], x[n:], w), dtype=float)
-        out = np.zeros(2 * n)
-        out[n:] = Minv @ H / d[n:]
-        return out
-
-    z0 = np.zeros(2 * n)
-    f0 = field(z0)
-    q, p = hopf_vectors(As, omega)
-    res = [first_lyapunov(As, omega, *_derivatives(fd_method, field, z0, f0, h), q, p)
-           for h in (fd_step, 2 * fd_step)]
-    l1, l1_2h = res[0]["l1"], res[1]["l1"]
-    if not (math.isfinite(l1) and math.isfinite(alpha_p)):
+    core = lyapunov_at(asm, np.asarray(e.r, float), spd, lm.M, A, omega, fd_step, fd_method)
+    if not (math.isfinite(core["l1"]) and math.isfinite(alpha_p)):
         return HopfResult.failed("error", "non-finite l1 or dRe λ/dp", value=value, **base)
-    l1_err = abs(l1_2h - l1) / 3.0
-    kind = ("degenerate" if abs(l1) < 3 * l1_err or l1 == 0 else
-            "supercritical" if l1 < 0 else "subcritical")
-    q_phys = q * d
-    amp_coef = np.zeros(len(asm.bearings))
-    for i, bc in enumerate(asm.bearings):
-        wv = q_phys[[bc.jx, bc.jy]]
-        amp_coef[i] = 2 * (np.vdot(wv, wv).real + abs(wv @ wv))  # semi-major² per |z|²
+    l1, l1_err = core["l1"], core["l1_error"]
+    kind = hopf_type(l1, l1_err)
     z2_per = abs(alpha_p / (omega * l1)) if l1 != 0 else math.inf
     cycle_side = "above" if -alpha_p / l1 > 0 else "below"
+    amp_coef = core["semi_major2_per_z2"]
+    q_phys, x0, L, ws = core["q"], core["x0"], core["length_scale_m"], core["velocity_scale"]
     return HopfResult(value=float(value), whirl_frequency_hz=float(omega / (2 * np.pi)),
                       speed_hz=float(spd), l1=l1, l1_error=float(l1_err), type=kind,
                       alpha_prime=float(alpha_p), real_part=float(lam0.real),
