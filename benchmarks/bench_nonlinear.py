@@ -84,7 +84,14 @@ def main(argv=None):
                     help="shooting route: simulated s of transient before shooting")
     ap.add_argument("--sensitivity-rtol", type=float, default=1e-3,
                     help="shooting route: relative tolerance of the monodromy (sensitivities)")
+    ap.add_argument("--hopf", action="store_true",
+                    help="instead: the first Lyapunov coefficient at one boundary point and "
+                         "the projection for every vertex of the 401² Fig. 9 boundary")
+    ap.add_argument("--sample", type=int, default=40,
+                    help="--hopf: boundary vertices timed for the projection")
     args = ap.parse_args(argv)
+    if args.hopf:
+        return hopf_bench(args)
     print(pin_threads(1))
     header("bench_nonlinear: paper rig limit cycle, 50 Hz, a_y = -1.85 mm, p_c = 0.05 MPa")
     rig = rd.models.paper_rig()
@@ -138,6 +145,57 @@ def main(argv=None):
     print(f"  speed-up: {t['transient'].wall / t['shooting'].wall:.2f}x wall, "
           f"{t['transient'].cpu / t['shooting'].cpu:.2f}x CPU; worst relative error "
           f"transient {e_tr:.1e}, shooting {e_po:.1e}")
+    footer()
+
+
+def hopf_bench(args):
+    """l1 at one Fig. 9 boundary point (rd.hopf at the threshold) beside the threshold
+    search itself (baseline, same run), and the Hopf type at a sample of the vertices of the
+    adaptive 401² Fig. 9 boundary (sweeps/fig9_boundary.toml), projected to every vertex on
+    2 cores."""
+    import tempfile
+    import time
+
+    from rotordyn.sweep.dataset import open_dataset
+    from rotordyn.sweep.runner import run_sweep
+
+    header("bench_nonlinear --hopf: first Lyapunov coefficient on the Fig. 9 boundary")
+    rig = rd.models.paper_rig()
+    bounds = (0.04e6, 0.08e6)
+    th = rd.threshold(rig, bounds=bounds, speed_hz=SPEED_HZ, config_ay_m=AY_M)
+    h = rd.hopf(rig, at=th.value, speed_hz=SPEED_HZ, config_ay_m=AY_M)
+    print(f"threshold: {th!r}\nhopf: {h!r}")
+    t = interleaved({
+        "threshold": lambda: rd.threshold(rig, bounds=bounds, speed_hz=SPEED_HZ,
+                                          config_ay_m=AY_M),
+        "hopf_at": lambda: rd.hopf(rig, at=th.value, speed_hz=SPEED_HZ, config_ay_m=AY_M),
+    }, repeat=args.repeat)
+    print(f"  threshold search (25-point scan + Brent) {t['threshold']}  [baseline]")
+    print(f"  hopf at the threshold (l1, dRe λ/dp)     {t['hopf_at']}")
+    root = Path(__file__).resolve().parents[1]
+    with tempfile.TemporaryDirectory() as tmp:
+        w0, c0 = time.perf_counter(), time.process_time()
+        run_sweep(root / "sweeps" / "fig9_boundary.toml", Path(tmp) / "fig9b", workers=1,
+                  threads=1)
+        w1, c1 = time.perf_counter(), time.process_time()
+        bnd = open_dataset(Path(tmp) / "fig9b").boundary()
+    nv = len(bnd)
+    print(f"Fig. 9 boundary sweep (401², 1 worker): {w1 - w0:.2f} s wall, {c1 - c0:.2f} s "
+          f"CPU (this process); {nv} vertices on {bnd['line'].nunique()} polylines")
+    idx = np.unique(np.linspace(0, nv - 1, min(args.sample, nv)).astype(int))
+    cpu, types = [], {}
+    for i in idx:
+        ay, pc = float(bnd["config_ay_m"].iloc[i]), float(bnd["chamber_pressure_pa"].iloc[i])
+        c0 = time.process_time()
+        r = rd.hopf(rig, at=pc, speed_hz=SPEED_HZ, config_ay_m=ay)
+        cpu.append(time.process_time() - c0)
+        key = r.type if r.ok else r.status
+        types[key] = types.get(key, 0) + 1
+    med = float(np.median(cpu))
+    print(f"hopf at {len(idx)} sampled vertices: CPU per vertex median {med * 1e3:.1f} ms "
+          f"(max {max(cpu) * 1e3:.1f} ms); types {types}")
+    print(f"projection for all {nv} vertices: {med * nv:.1f} s CPU, {med * nv / 2:.1f} s on "
+          "2 cores (goal <= 120 s)")
     footer()
 
 

