@@ -170,3 +170,51 @@ def test_hopf_of_the_compressor_over_speed_and_bad_input(capsys):
     out = capsys.readouterr().out
     assert '"type"' in out and '"l1"' in out
     assert main(["hopf", model, "--vary", "speed_hz"]) == 2
+
+
+SWEEP = """schema = "rotordyn/sweep/1"
+name = "hopf-small"
+model = "paper-rig"
+analysis = "hopf"
+chunk_size = 1
+
+[grid]
+config_ay_m = [-2.0e-3, -1.85e-3, -1.5e-3]
+chamber_pressure_pa = {start = 0.0, stop = 0.12e6, num = 13}
+speed_hz = 50.0
+
+[options]
+vary = "chamber_pressure_pa"
+"""
+
+
+def test_hopf_sweep_rows_are_deterministic_and_equal_rotordyn_hopf(tmp_path):
+    """The ``hopf`` sweep analysis (a threshold line per a_y with l1 at every crossing):
+    one row per crossing; the same rows bit for bit with 1 thread and with 2 worker processes;
+    each crossing's l1, dRe λ/dp and type equal rotordyn.hopf at that value (1e-6); the line
+    without a crossing is a ``no_crossing`` row; ``rotordyn plot --kind hopf-map`` draws it."""
+    import pandas as pd
+
+    import rotordyn.sweep as sw
+    from rotordyn.cli import main
+    from rotordyn.sweep import run_sweep
+
+    spec = tmp_path / "h.toml"
+    spec.write_text(SWEEP)
+    assert run_sweep(spec, tmp_path / "a", threads=1, progress=False).complete
+    assert run_sweep(spec, tmp_path / "b", workers=2, progress=False).complete
+    fa, fb = sw.open(tmp_path / "a").frame, sw.open(tmp_path / "b").frame
+    pd.testing.assert_frame_equal(fa, fb, check_exact=True)
+    assert len(fa) >= 3 and fa["status"].iloc[-1] == "no_crossing"
+    assert (fa["status"].iloc[:-1] == "ok").all()
+    rig = rd.models.paper_rig()
+    for _, row in fa[fa["status"] == "ok"].iterrows():
+        h = rd.hopf(rig, at=row["value"], speed_hz=50.0, config_ay_m=row["config_ay_m"])
+        assert row["l1"] == pytest.approx(h.l1, rel=1e-6)
+        assert row["alpha_prime"] == pytest.approx(h.alpha_prime, rel=1e-3)
+        assert row["hopf_type"] == h.type
+        assert row["amplitude_coefficient_m2"] == pytest.approx(h.amplitude_coefficient[0],
+                                                                rel=1e-3)
+    fig = tmp_path / "map.png"
+    assert main(["plot", str(tmp_path / "a"), "--kind", "hopf-map", "--out", str(fig)]) == 0
+    assert fig.stat().st_size > 0

@@ -36,7 +36,8 @@ def register(sub) -> None:
     s = sub.add_parser("plot", help="figure from a sweep directory")
     s.add_argument("dir", help="sweep dataset directory (written by `rotordyn sweep`)")
     s.add_argument("--kind", required=True,
-                   choices=["stability-map", "equilibrium", "campbell", "waterfall"],
+                   choices=["stability-map", "equilibrium", "campbell", "waterfall",
+                            "hopf-map"],
                    help="figure kind; it must match the sweep's analysis")
     s.add_argument("--out", required=True, metavar="FIG", help="FIG.png or FIG.svg")
     s.add_argument("--style", choices=["cascade", "map"], default="cascade",

@@ -12,6 +12,7 @@ from rotordyn.plot.frequency import campbell_arrays
 from rotordyn.plot.maps import equilibrium_loci, select, stability_map, varying
 
 KINDS = ("stability-map", "equilibrium", "campbell", "waterfall")
+KINDS += ("hopf-map",)
 WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
 
 
@@ -50,8 +51,10 @@ def plot_dataset(df: pd.DataFrame, kind: str, out: str, dpi: int = 200, **kwargs
     require(kind in KINDS, f"--kind: expected one of {KINDS}, got {kind!r}")
     require(str(out).lower().endswith((".png", ".svg", ".pdf")),
             f"--out: expected a .png, .svg or .pdf file name, got {out!r}")
+    from rotordyn.plot.hopf_map import hopf_map
+
     fn = {"stability-map": stability_map, "equilibrium": equilibrium_loci,
-          "campbell": campbell, "waterfall": waterfall}[kind]
+          "campbell": campbell, "waterfall": waterfall, "hopf-map": hopf_map}[kind]
     where = kwargs.pop("where", None)
     if kind == "waterfall":  # its speed axis is the only one drawn: the others fixed first
         df = select(df, where, "waterfall")

@@ -33,6 +33,7 @@ OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
 DEFAULTS = {"speed_hz": 50.0, "chamber_pressure_pa": 0.0}
 ANALYSES = ("equilibrium", "thermal", "stability", "campbell", "threshold", "boundary",
             "unbalance", "waterfall", "run-up")
+ANALYSES += ("hopf",)
 MAX_POINTS = 10_000_000
 
 
@@ -113,7 +114,8 @@ OPTIONS = {
                "samples_per_revolution": _opt_int(8, 4096), "rtol": _opt_range(0.0, 1e-2),
                "rub_fraction": _opt_range(0.0, 0.999, lo_open=False)},
 }
-REQUIRED = {"threshold": ("vary",), "boundary": ("x", "y", "resolution"),
+OPTIONS["hopf"] = {**OPTIONS["threshold"], "fd_step": _opt_range(0.0, 0.5)}
+REQUIRED = {"threshold": ("vary",), "hopf": ("vary",), "boundary": ("x", "y", "resolution"),
             "unbalance": ("unbalances",), "waterfall": ("unbalances",),
             "run-up": ("unbalances", "start_hz", "stop_hz", "rate_hz_per_s")}
 
@@ -354,7 +356,7 @@ class SweepSpec:
         if n > MAX_POINTS:
             raise InputError(f"grid: {n} points, more than the limit of {MAX_POINTS}")
         a = self.analysis
-        if a == "threshold":
+        if a in ("threshold", "hopf"):
             ax = self.options["vary"]
             if ax not in self.axes or len(self.axes[ax]) < 2:
                 raise InputError(f"options.vary: {ax!r} must be a grid axis with >= 2 values "
@@ -467,7 +469,7 @@ class SweepSpec:
     def line_axis(self) -> str | None:
         """The axis a task keeps whole (continuation and tracking along it): speed for
         campbell/unbalance/tracked stability, the varied axis for threshold."""
-        if self.analysis == "threshold":
+        if self.analysis in ("threshold", "hopf"):
             return self.options["vary"]
         if self.analysis in ("campbell", "unbalance"):
             return "speed_hz"
@@ -505,7 +507,7 @@ class SweepSpec:
         """Contiguous point-id ranges [lo, hi) of each chunk; with a line axis, chunks hold
         whole lines (the chunk size is rounded up to a multiple of the line length)."""
         n = self.n_points
-        if self.analysis == "threshold":
+        if self.analysis in ("threshold", "hopf"):
             # one task unit = one line; chunk_size counts lines
             line = len(self.axes[self.options["vary"]])
             size = self.chunk_size * line

@@ -66,6 +66,8 @@ OUTPUTS = {
                "h_min_m": F64},
 }
 OUTPUTS["campbell"] = OUTPUTS["stability"]
+OUTPUTS["hopf"] = {**OUTPUTS["threshold"], "l1": F64, "l1_error": F64, "hopf_type": STR,
+                   "alpha_prime": F64, "amplitude_coefficient_m2": F64}
 
 
 def schema(analysis: str, axes: list[str]) -> pa.Schema:
@@ -437,6 +439,16 @@ _ANALYSIS = {"equilibrium": _eq_rows, "thermal": _thermal_rows, "stability": _st
              "campbell": _stab_rows,
              "waterfall": _wf_rows, "threshold": _threshold_rows,
              "unbalance": _unbalance_rows, "run-up": _runup_rows}
+
+
+def _hopf_rows(job, variants, chunk_id, lo, hi, rows):
+    from rotordyn.sweep.hopf_rows import hopf_line
+
+    for s, e in _lines(job, lo, hi):
+        hopf_line(job, variants, chunk_id, s, e, rows)
+
+
+_ANALYSIS["hopf"] = _hopf_rows
 
 
 def to_table(job: Job, rows: list[dict]) -> pa.Table:

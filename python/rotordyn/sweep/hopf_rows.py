@@ -1,0 +1,89 @@
+"""The ``hopf`` sweep analysis: every threshold crossing of a ``threshold`` line
+(:func:`rotordyn.sweep.lines.threshold_line`), with the first Lyapunov coefficient there
+(:func:`rotordyn.analysis.hopf.lyapunov_at`), dRe λ/d(vary), the Hopf type and the
+leading-order cycle amplitude coefficient at the reference bearing (docs/nonlinear.md).
+Each crossing's equilibrium is solved cold (no warm start), so its row does not depend on
+the chunking."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from rotordyn.analysis.hopf import FD_STEP, _critical_eigenvalue, hopf_type, lyapunov_at
+from rotordyn.errors import RotordynError
+from rotordyn.sweep import points as pt
+from rotordyn.sweep.lines import max_real, threshold_line
+from rotordyn.units import hz_to_rad_s
+
+#: output columns beyond the threshold's
+HOPF_COLUMNS = ("l1", "l1_error", "hopf_type", "alpha_prime", "amplitude_coefficient_m2")
+
+
+def _jacobian(asm, r, f):
+    w = hz_to_rad_s(f)
+    lin = asm.solver.linearize(np.asarray(r), np.zeros(asm.n), w)
+    M, C0, G, K0 = asm.mats
+    if asm.model.has_table_mass():
+        M = np.asarray(asm.model.mass_at(w))
+    M = np.asarray(M)
+    D = C0 + w * G + np.asarray(lin.DH)
+    K = K0 + np.asarray(lin.KH)
+    Minv = np.linalg.inv(M)
+    n = asm.n
+    return M, np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ K, -Minv @ D]])
+
+
+def _one(job, asm, p, vary, whirl, span, opts, excl, fd_step):
+    f, pc, a = pt.operating(asm, p)
+    e = pt.solve_equilibrium(asm, f, pc, a, None, opts)
+    if e.status not in pt.CONVERGED:
+        raise ArithmeticError(f"no equilibrium at the crossing ({e.status})")
+    M, A = _jacobian(asm, e.r, f)
+    lam0 = _critical_eigenvalue(A, whirl)
+    if lam0 is None:
+        raise ArithmeticError("no complex eigenvalue pair at the crossing")
+    x = p[vary]
+    dp = 1e-4 * max(abs(x), span)
+    ys = []
+    for s in (1, -1):
+        q = dict(p)
+        q[vary] = x + s * dp
+        y, _, _, _ = max_real(job, asm, q, np.asarray(e.r), opts, excl)
+        ys.append(y)
+    alpha = (ys[0] - ys[1]) / (2 * dp)
+    core = lyapunov_at(asm, e.r, f, M, A, lam0.imag, fd_step)
+    l1, err = core["l1"], core["l1_error"]
+    bc = pt.ref_bearing(asm)
+    k = asm.bearings.index(bc) if bc is not None else 0
+    coef = core["semi_major2_per_z2"][k] * abs(alpha / (lam0.imag * l1)) if l1 else math.inf
+    return {"l1": l1, "l1_error": err, "hopf_type": hopf_type(l1, err),
+            "alpha_prime": alpha, "amplitude_coefficient_m2": coef}
+
+
+def hopf_line(job, variants, chunk_id, lo, hi, rows):
+    """The threshold rows of the line [lo, hi), each crossing with its Hopf columns; a
+    failed l1 keeps the crossing and gets status ``error`` with the message."""
+    vary = job.options["vary"]
+    excl = bool(job.options.get("exclude_sleeve_modes", False))
+    fd_step = float(job.options.get("fd_step", FD_STEP))
+    line = []
+    threshold_line(job, variants, chunk_id, lo, hi, line)
+    _, p0 = job.point(lo)
+    _, p1 = job.point(hi - 1)
+    span = abs(p1[vary] - p0[vary])
+    for row in line:
+        out = {**row, **{c: (math.nan if c != "hopf_type" else "") for c in HOPF_COLUMNS}}
+        if row.get("status") == "ok":
+            _, p = job.point(row["point_id"])
+            p = dict(p)
+            p[vary] = row["value"]
+            try:
+                asm = variants.get(p)
+                out.update(_one(job, asm, p, vary, row["whirl_frequency_hz"], span,
+                                pt.point_options(job, p), excl, fd_step))
+            except (RotordynError, ArithmeticError, ValueError,
+                    np.linalg.LinAlgError) as exc:
+                out.update(status="error", message=f"l1: {type(exc).__name__}: {exc}")
+        rows.append(out)
