@@ -35,7 +35,9 @@ def hopf_map(df: pd.DataFrame, ax=None, where=None):
         _, ax = plt.subplots(figsize=(6.4, 4.6))
     sx, sy = axis_scale(along), axis_scale(vary)
     ok = df[df["status"] == "ok"]
-    for crossing, g in ok.groupby("crossing"):
+    # one polyline per side of the boundary (stable above / below: the upper and lower
+    # boundaries of an unstable band), not per crossing number
+    for side, g in ok.groupby("stable_side"):
         g = g.sort_values(along)
         ax.plot(g[along] * sx, g["value"] * sy, "-", color="0.75", lw=0.8, zorder=1)
     for kind, colour in COLOURS.items():
