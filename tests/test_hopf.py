@@ -158,6 +158,18 @@ def test_hopf_of_the_compressor_over_speed_and_bad_input(capsys):
     assert h.alpha_prime > 0 and h.stable_side == "below"
     at = rd.hopf(s, "speed_hz", at=h.value)
     assert at.l1 == pytest.approx(h.l1, rel=1e-6)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ax = h.plot()
+    assert len(ax.lines) == 4  # cycle, stable and unstable equilibrium, the Hopf point
+    plt.close("all")
+    x, period = h.cycle_state(h.value + (1.0 if h.cycle_side == "above" else -1.0))
+    assert x.shape == h.x_equilibrium.shape and period == pytest.approx(
+        1 / h.whirl_frequency_hz)
+    assert np.isnan(h.amplitude(h.value + (-1.0 if h.cycle_side == "above" else 1.0)))
     with pytest.raises(rd.InputError, match="bounds, at"):
         rd.hopf(s, "speed_hz")
     with pytest.raises(rd.InputError, match="vary"):
