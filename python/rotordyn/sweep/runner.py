@@ -39,6 +39,9 @@ UNITS = {
     "amplitude_x_m": ("m", "amplitude of x"), "amplitude_y_m": ("m", "amplitude of y"),
     "value": ("axis units", "threshold value of the varied axis"),
     "whirl_frequency_hz": ("Hz", "whirl frequency at the threshold"),
+    "journal_theta_x_rad": ("rad", "journal rotation about x relative to the housing"),
+    "journal_theta_y_rad": ("rad", "journal rotation about y relative to the housing"),
+    "h_min_z_m": ("m", "axial position of the minimum film (0: mid-plane)"),
 }
 
 
