@@ -229,3 +229,29 @@ def test_bad_tilt_raises_input_error_naming_the_field(kw, field):
     if "x_m" not in kw:
         with pytest.raises(rotordyn.InputError, match=field):
             misaligned_equilibrium(b, load_n=(0.0, -10.0), **args)
+
+
+def test_core_refuses_bad_axial_weights():
+    """The core's own checks (SystemModel.validate): the weight's shape, finite values, and no
+    weights on a film whose coordinates are a tilting pad's."""
+    b = bearing(n_circ=24, n_axial=4)
+
+    def model(weight, pads=()):
+        f = tilt_coupling(b, [0, 1, 2, 3])
+        f.axial_weight = weight
+        m = _core.SystemModel()
+        z = np.zeros((4, 4))
+        m.M, m.K, m.C, m.G = z, z, z, z
+        m.Q, m.chamber = np.zeros(4), np.zeros(4)
+        m.films = [f]
+        m.pad_coords = [list(p) for p in pads]
+        return m
+
+    with pytest.raises(rotordyn.InputError, match=r"films\[0\]\.axial_weight: expected"):
+        _core.SystemSolver(model(np.ones((4, 3))))
+    w = np.ones((4, 5))
+    w[2, 1] = np.nan
+    with pytest.raises(rotordyn.InputError, match=r"films\[0\]\.axial_weight: expected finite"):
+        _core.SystemSolver(model(w))
+    with pytest.raises(rotordyn.InputError, match=r"pad_coords\[0\]: a pad's film cannot"):
+        _core.SystemSolver(model(np.ones((4, 5)), pads=[(2,)]))
