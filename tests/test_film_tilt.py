@@ -255,3 +255,58 @@ def test_core_refuses_bad_axial_weights():
         _core.SystemSolver(model(w))
     with pytest.raises(rotordyn.InputError, match=r"pad_coords\[0\]: a pad's film cannot"):
         _core.SystemSolver(model(np.ones((4, 5)), pads=[(2,)]))
+
+
+def short_bearing_tilted(length_m, x, y, tx, ty, omega, nphi=720, nz=2001):
+    """Forces and moments (Fx, Fy, Mx, My) of the full-film short bearing with the tilted
+    thickness h(φ, z) = c − (x + θy z) cos φ − (y − θx z) sin φ, by independent quadrature:
+    on each φ line ∂z(h³ ∂z p) = 6μω ∂h/∂φ, so h³ p_z = G(z) + A with G = ∫ 6μω h_φ dz and
+    p = ∫ (G + A)/h³ dz, A from p(±L/2) = 0 (trapezoidal cumulative integrals on nz points;
+    the φ sums of smooth periodic integrands on nphi points)."""
+    from scipy.integrate import cumulative_trapezoid
+
+    R = 0.5 * D
+    phi = 2 * np.pi * np.arange(nphi) / nphi
+    z = np.linspace(-0.5 * length_m, 0.5 * length_m, nz)
+    P, Z = np.meshgrid(phi, z, indexing="ij")
+    h = C - (x + ty * Z) * np.cos(P) - (y - tx * Z) * np.sin(P)
+    h_phi = (x + ty * Z) * np.sin(P) - (y - tx * Z) * np.cos(P)
+    G = cumulative_trapezoid(6 * MU * omega * h_phi, z, axis=1, initial=0)
+    I1 = cumulative_trapezoid(G / h ** 3, z, axis=1, initial=0)
+    I2 = cumulative_trapezoid(1 / h ** 3, z, axis=1, initial=0)
+    p = I1 - (I1[:, -1] / I2[:, -1])[:, None] * I2
+
+    def integ(g):
+        return 2 * np.pi / nphi * R * np.trapezoid(np.sum(p * g, axis=0), z)
+
+    return np.array([-integ(np.cos(P)), -integ(np.sin(P)), integ(Z * np.sin(P)),
+                     -integ(Z * np.cos(P))])
+
+
+def test_tilted_film_tends_to_the_short_bearing_at_second_order_in_l_over_d():
+    """Nonlinear check at a finite tilt and eccentricity (ε = 0.5 at mid-plane, edge
+    eccentricity ≈ 0.68), full film: the finite-length film (n_axial → ∞ by Richardson
+    extrapolation of 64 and 128 intervals; the axial error is second order) against the
+    short-bearing quadrature above. The finite-length correction is O((L/D)²): the relative
+    differences of the moments fall by 4 per halving of L/D (observed 3.9-4.1; forces
+    3.2-3.7 with the circumferential grid's floor ~1e-4), to < 0.5 % at L/D = 1/64."""
+    w = 2 * math.pi * F_HZ
+    errs = []
+    for ld in (1 / 16, 1 / 32, 1 / 64):
+        Lb = ld * D
+        st = dict(x_m=0.3 * C, y_m=-0.4 * C, theta_x_rad=0.2 * C / Lb, theta_y_rad=-0.3 * C / Lb)
+        ref = short_bearing_tilted(Lb, st["x_m"], st["y_m"], st["theta_x_rad"],
+                                   st["theta_y_rad"], w)
+        got = []
+        for na in (64, 128):
+            t = tilted_forces(bearing(n_circ=288, n_axial=na, cavitation="none", length_m=Lb),
+                              speed_hz=F_HZ, **st)
+            got.append(np.concatenate([t.force_n, t.moment_n_m]))
+        rich = got[1] + (got[1] - got[0]) / 3
+        errs.append(rich / ref - 1)
+    e = np.array(errs)
+    assert np.all(np.abs(e[-1]) < 5e-3), e
+    ratio = np.abs(e[:-1, 2:] / e[1:, 2:])
+    assert np.all((ratio > 3.5) & (ratio < 4.5)), ratio
+    rf = np.abs(e[:-1, :2] / e[1:, :2])
+    assert np.all(rf > 2.8), rf
