@@ -19,7 +19,12 @@ void bind_system(py::module_& m) {
       .def_readwrite("coords", &FilmCoupling::coords)
       .def_readwrite("shape", &FilmCoupling::shape)
       .def_readwrite("base_h", &FilmCoupling::base_h)
-      .def_readwrite("spin_factor", &FilmCoupling::spin_factor);
+      .def_readwrite("spin_factor", &FilmCoupling::spin_factor)
+      .def_readwrite("axial_weight", &FilmCoupling::axial_weight,
+                     "(n_coords, n_axial + 1): dh/dr_k(phi, z) = shape(phi, k) * "
+                     "axial_weight(k, z); empty: 1 (journal tilt: z on the rotations).")
+      .def("thickness", &FilmCoupling::thickness, py::arg("rc"),
+           "Film thickness (n_circ, n_axial + 1), m, at the film's coordinates rc (n_coords,).");
 
   py::class_<SystemModel>(m, "SystemModel", "M, K, C, G, loads and films of eq. 12 (SI).")
       .def(py::init<>())
@@ -56,6 +61,7 @@ void bind_system(py::module_& m) {
       .def_readonly("film_force", &EquilibriumResult::film_force)
       .def_readonly("h_min", &EquilibriumResult::h_min)
       .def_readonly("h_min_angle_deg", &EquilibriumResult::h_min_angle_deg)
+      .def_readonly("h_min_z_m", &EquilibriumResult::h_min_z_m)
       .def_readonly("iterations", &EquilibriumResult::iterations)
       .def_readonly("reynolds_solves", &EquilibriumResult::reynolds_solves)
       .def_readonly("residual", &EquilibriumResult::residual)
@@ -90,7 +96,11 @@ void bind_system(py::module_& m) {
       .def("film_h_min", &SystemSolver::film_h_min, py::arg("r"),
            "Minimum film thickness of each film at positions r (n,), m, from the geometry "
            "alone (no Reynolds solve).")
-      .def("last_pressure", &SystemSolver::last_pressure, py::arg("film"));
+      .def("last_pressure", &SystemSolver::last_pressure, py::arg("film"))
+      .def_property_readonly("last_h_min_angle_deg", &SystemSolver::last_h_min_angle_deg)
+      .def_property_readonly("last_h_min_z_m", &SystemSolver::last_h_min_z_m,
+                             "Axial position of each film's minimum at the last call, m "
+                             "(0 where the film is uniform along z there).");
 }
 
 }  // namespace rotordyn::py_bind

@@ -110,6 +110,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     out.residual = res;
     out.h_min = h_min_;
     out.h_min_angle_deg = h_min_angle_;
+    out.h_min_z_m = h_min_z_;
     out.reynolds_solves = solves_ - solves0;
     // Statuses (issue 13): "ok" and "contact" are converged equilibria (contact: a film is
     // thinner than contact_fraction c there); "not_converged" and "no_equilibrium" (the

@@ -29,12 +29,60 @@ struct SystemSolver::Film {
     wz(0) *= 0.5;
     wz(K1 - 1) *= 0.5;
   }
-  /// ∫∫ p S(·, k) dA for every column k of S: (n_coords,).
-  Eigen::VectorXd integrate(const RowMatrixXd& pr, const RowMatrixXd& S) const {
+  /// ∫∫ p ∂h/∂r_k dA for every coordinate k of the film (n_coords,): S(·, k) with the
+  /// axial weights W (n_coords, n_axial + 1; empty: 1). Coordinates whose weight is 1
+  /// everywhere take the unweighted integral (the untilted film's arithmetic, bit for bit).
+  Eigen::VectorXd integrate(const RowMatrixXd& pr, const RowMatrixXd& S,
+                            const RowMatrixXd& W) const {
     const Eigen::VectorXd g = pr * wz;  // (n_circ,)
-    return S.transpose() * g;
+    Eigen::VectorXd out = S.transpose() * g;
+    for (Eigen::Index k = 0; k < W.rows(); ++k) {
+      if ((W.row(k).array() == 1.0).all()) continue;
+      const Eigen::VectorXd gk = pr * W.row(k).transpose().cwiseProduct(wz);
+      out(k) = S.col(k).dot(gk);
+    }
+    return out;
   }
 };
+
+namespace {
+
+/// base + Σ_k ∂h/∂r_k rc_k on the grid (base: base_h or the clearance when with_base, else
+/// 0). Coordinates of weight 1 first, as the untilted film sums them; then the weighted ones
+/// (zero tilt adds exact zeros: the untilted film bit for bit).
+RowMatrixXd affine_field(const FilmCoupling& fc, const Eigen::VectorXd& rc, bool with_base) {
+  const int K1 = fc.grid.n_axial + 1;
+  const RowMatrixXd& W = fc.axial_weight;
+  Eigen::VectorXd ru = rc;
+  for (Eigen::Index k = 0; k < W.rows(); ++k)
+    if (!(W.row(k).array() == 1.0).all()) ru(k) = 0.0;
+  const Eigen::VectorXd sphi = fc.shape * ru;
+  RowMatrixXd h;
+  if (!with_base)
+    h = sphi.replicate(1, K1);
+  else if (fc.base_h.size() == 0)
+    h = (sphi.array() + fc.geometry.clearance_m).matrix().replicate(1, K1);
+  else if (fc.base_h.cols() == 1)
+    h = (fc.base_h.col(0) + sphi).replicate(1, K1);
+  else
+    h = fc.base_h + sphi.replicate(1, K1);
+  for (Eigen::Index k = 0; k < W.rows(); ++k)
+    if (!(W.row(k).array() == 1.0).all())
+      h.noalias() += fc.shape.col(k) * (rc(k) * W.row(k));
+  return h;
+}
+
+}  // namespace
+
+RowMatrixXd FilmCoupling::thickness(const Eigen::VectorXd& rc) const {
+  return affine_field(*this, rc, true);
+}
+
+RowMatrixXd FilmCoupling::thickness_derivative(Eigen::Index k) const {
+  const int K1 = grid.n_axial + 1;
+  if (axial_weight.size() == 0) return shape.col(k).replicate(1, K1);
+  return shape.col(k) * axial_weight.row(k);
+}
 
 bool SystemModel::has_table_mass() const {
   for (const TableCoupling& t : tables)
@@ -82,6 +130,12 @@ void SystemModel::validate() const {
             w + ".base_h: expected (n_circ, 1) or (n_circ, n_axial + 1) finite values > 0, "
                 "or empty");
     require(std::isfinite(f.spin_factor), w + ".spin_factor: expected a finite value");
+    require(f.axial_weight.size() == 0 ||
+                (f.axial_weight.rows() == static_cast<long>(f.coords.size()) &&
+                 f.axial_weight.cols() == f.grid.n_axial + 1),
+            shape_msg(w + ".axial_weight", static_cast<long>(f.coords.size()),
+                      f.grid.n_axial + 1, f.axial_weight.rows(), f.axial_weight.cols()));
+    require(f.axial_weight.allFinite(), w + ".axial_weight: expected finite values");
   }
   for (std::size_t i = 0; i < tables.size(); ++i)
     tables[i].validate("tables[" + std::to_string(i) + "]", nn);
@@ -111,6 +165,8 @@ void SystemModel::validate() const {
                 w + ": coordinate " + std::to_string(c) + " enters a table bearing");
     }
     require(owner >= 0, w + ": the pad's coordinates enter no film");
+    require(films[static_cast<std::size_t>(owner)].axial_weight.size() == 0,
+            w + ": a pad's film cannot have axial weights (journal tilt) yet");
     if (pc.size() == 2)
       require(K(pc[1], pc[1]) > 0, w + ": the pivot coordinate needs K(u, u) > 0");
   }
@@ -127,6 +183,7 @@ SystemSolver::SystemSolver(SystemModel model) : model_(std::move(model)) {
   for (const auto& f : model_.films) films_.push_back(std::make_unique<Film>(f));
   h_min_.assign(films_.size(), 0.0);
   h_min_angle_.assign(films_.size(), 0.0);
+  h_min_z_.assign(films_.size(), 0.0);
   for (const auto& pc : model_.pad_coords) {
     PadGroup g;
     g.coords = pc;
@@ -184,28 +241,36 @@ void SystemSolver::solve_one(std::size_t i, const Eigen::VectorXd& rc,
   Film& f = *films_[i];
   if (f.valid && omega == f.last_w && rc == f.last_rc && vc == f.last_vc) return;
   f.valid = false;
-  const int K1 = fc.grid.n_axial + 1;
-  const Eigen::VectorXd sphi = fc.shape * rc;
-  const Eigen::VectorXd vphi = fc.shape * vc;
-  if (fc.base_h.size() == 0)
-    f.h = (sphi.array() + fc.geometry.clearance_m).matrix().replicate(1, K1);
-  else if (fc.base_h.cols() == 1)
-    f.h = (fc.base_h.col(0) + sphi).replicate(1, K1);
-  else
-    f.h = fc.base_h + sphi.replicate(1, K1);
+  f.h = fc.thickness(rc);
   if (!(f.h.minCoeff() > 0.0) || !f.h.allFinite()) {
     std::ostringstream os;
     os << "film '" << fc.name << "': contact, the film thickness reaches " << f.h.minCoeff()
        << " m (clearance " << fc.geometry.clearance_m << " m)";
     throw ContactError(os.str());
   }
-  f.dhdt = vphi.replicate(1, K1);
+  f.dhdt = affine_field(fc, vc, false);  // ∂h/∂t = Σ_k ∂h/∂r_k ṙ_k
   const FilmSolution& s = f.solver.solve(f.h, f.dhdt, fc.spin_factor * omega);
   ++solves_;
   iterations_ += s.iterations;
   f.p = s.p_pa;
   h_min_[i] = s.h_min_m;
   h_min_angle_[i] = s.h_min_angle_deg;
+  {  // the axial position of the minimum: the first minimum node in row-major order (the
+     // one whose angle the solver reports); 0 where h is uniform along z at that angle
+    Eigen::Index jm = 0, km = 0;
+    double best = f.h(0, 0);
+    for (Eigen::Index j = 0; j < f.h.rows(); ++j)
+      for (Eigen::Index k = 0; k < f.h.cols(); ++k)
+        if (f.h(j, k) < best) {
+          best = f.h(j, k);
+          jm = j;
+          km = k;
+        }
+    const double L = fc.geometry.length_m;
+    h_min_z_[i] = f.h.row(jm).maxCoeff() == f.h.row(jm).minCoeff()
+                      ? 0.0
+                      : -0.5 * L + static_cast<double>(km) * L / fc.grid.n_axial;
+  }
   f.valid = true;
   f.last_rc = rc;
   f.last_vc = vc;
@@ -216,7 +281,8 @@ Eigen::VectorXd SystemSolver::solve_film(std::size_t i, const Eigen::VectorXd& r
                                          double omega) {
   solved_ = false;  // the films no longer all sit at last_r_
   solve_one(i, rc, Eigen::VectorXd::Zero(rc.size()), omega);
-  return films_[i]->integrate(films_[i]->p, model_.films[i].shape);
+  const FilmCoupling& fc = model_.films[i];
+  return films_[i]->integrate(films_[i]->p, fc.shape, fc.axial_weight);
 }
 
 Eigen::MatrixXd SystemSolver::film_stiffness(std::size_t i, const std::vector<int>& cols) {
@@ -227,8 +293,8 @@ Eigen::MatrixXd SystemSolver::film_stiffness(std::size_t i, const std::vector<in
   const RowMatrixXd zero = RowMatrixXd::Zero(fc.grid.n_circ, K1);
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(nc, nc);
   for (const int j : cols) {
-    const RowMatrixXd dh = fc.shape.col(j).replicate(1, K1);
-    out.col(j) = -f.integrate(f.solver.linearize(dh, zero), fc.shape);
+    const RowMatrixXd dh = fc.thickness_derivative(j);
+    out.col(j) = -f.integrate(f.solver.linearize(dh, zero), fc.shape, fc.axial_weight);
   }
   return out;
 }
@@ -247,6 +313,12 @@ std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
   for (std::size_t i = 0; i < model_.films.size(); ++i) {
     const FilmCoupling& fc = model_.films[i];
     double hmin = INFINITY;
+    if (fc.axial_weight.size() != 0) {  // h varies along z with the coordinates
+      Eigen::VectorXd rc(fc.coords.size());
+      for (std::size_t k = 0; k < fc.coords.size(); ++k) rc(k) = r(fc.coords[k]);
+      out[i] = fc.thickness(rc).minCoeff();
+      continue;
+    }
     for (Eigen::Index j = 0; j < fc.shape.rows(); ++j) {
       // h = base_h + S r, as solve_one builds it (base_h: lobes, preload, pads, dam step)
       double base = fc.geometry.clearance_m;
@@ -267,7 +339,7 @@ Eigen::VectorXd SystemSolver::film_forces(const Eigen::VectorXd& r, const Eigen:
   Eigen::VectorXd H = Eigen::VectorXd::Zero(model_.n());
   for (std::size_t i = 0; i < films_.size(); ++i) {
     const FilmCoupling& fc = model_.films[i];
-    const Eigen::VectorXd hk = films_[i]->integrate(films_[i]->p, fc.shape);
+    const Eigen::VectorXd hk = films_[i]->integrate(films_[i]->p, fc.shape, fc.axial_weight);
     for (std::size_t k = 0; k < fc.coords.size(); ++k) H(fc.coords[k]) += hk(k);
   }
   add_table_forces(r, rdot, omega, H);
@@ -285,11 +357,13 @@ void SystemSolver::linearize_last_solve(bool damping, Eigen::MatrixXd& KH,
     const int K1 = fc.grid.n_axial + 1;
     const RowMatrixXd zero = RowMatrixXd::Zero(fc.grid.n_circ, K1);
     for (std::size_t j = 0; j < fc.coords.size(); ++j) {
-      const RowMatrixXd dh = fc.shape.col(static_cast<Eigen::Index>(j)).replicate(1, K1);
-      const Eigen::VectorXd dk = -f.integrate(f.solver.linearize(dh, zero), fc.shape);
+      const RowMatrixXd dh = fc.thickness_derivative(static_cast<Eigen::Index>(j));
+      const Eigen::VectorXd dk =
+          -f.integrate(f.solver.linearize(dh, zero), fc.shape, fc.axial_weight);
       for (std::size_t k = 0; k < fc.coords.size(); ++k) KH(fc.coords[k], fc.coords[j]) += dk(k);
       if (!damping) continue;
-      const Eigen::VectorXd dd = -f.integrate(f.solver.linearize(zero, dh), fc.shape);
+      const Eigen::VectorXd dd =
+          -f.integrate(f.solver.linearize(zero, dh), fc.shape, fc.axial_weight);
       for (std::size_t k = 0; k < fc.coords.size(); ++k)
         (*DH)(fc.coords[k], fc.coords[j]) += dd(k);
     }

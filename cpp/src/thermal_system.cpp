@@ -72,17 +72,9 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
     bool done = true;
     for (std::size_t i = 0; i < thermal.size(); ++i) {
       const FilmCoupling& fc = m.films[thermal[i].film];
-      const int K1 = fc.grid.n_axial + 1;
       Eigen::VectorXd rc(fc.coords.size());
       for (std::size_t k = 0; k < fc.coords.size(); ++k) rc[k] = r[fc.coords[k]];
-      const Eigen::VectorXd sphi = fc.shape * rc;
-      RowMatrixXd h;
-      if (fc.base_h.size() == 0)
-        h = (sphi.array() + fc.geometry.clearance_m).matrix().replicate(1, K1);
-      else if (fc.base_h.cols() == 1)
-        h = (fc.base_h.col(0) + sphi).replicate(1, K1);
-      else
-        h = fc.base_h + sphi.replicate(1, K1);
+      const RowMatrixXd h = fc.thickness(rc);
       ReynoldsSolver& rs = *fsol[i];
       const double wf = omega * fc.spin_factor;
       const FilmSolution& sol = rs.solve(h, RowMatrixXd::Zero(h.rows(), h.cols()), wf);

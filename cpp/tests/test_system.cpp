@@ -98,3 +98,66 @@ TEST_CASE("system: failed and contact equilibria are told apart, bad shapes rais
   CHECK_THROWS(s.film_forces(Eigen::Vector2d(0, -4e-4), Eigen::Vector2d::Zero(), 1.0),
                ContactError);
 }
+
+namespace {
+/// one_film with the journal's rotations as coordinates 2, 3 (shape sin φ, −cos φ; axial
+/// weight z): h = c − (x + θy z) cos φ − (y − θx z) sin φ.
+SystemModel tilting_film() {
+  SystemModel m = one_film(0.0);
+  FilmCoupling& f = m.films[0];
+  const int K1 = f.grid.n_axial + 1;
+  f.coords = {0, 1, 2, 3};
+  RowMatrixXd S(f.grid.n_circ, 4);
+  for (int j = 0; j < f.grid.n_circ; ++j) {
+    const double phi = 2 * M_PI * j / f.grid.n_circ;
+    S.row(j) << -std::cos(phi), -std::sin(phi), std::sin(phi), -std::cos(phi);
+  }
+  f.shape = S;
+  f.axial_weight = RowMatrixXd::Ones(4, K1);
+  for (int k = 0; k < K1; ++k) {
+    const double z = -0.5 * f.geometry.length_m + k * f.geometry.length_m / f.grid.n_axial;
+    f.axial_weight(2, k) = f.axial_weight(3, k) = z;
+  }
+  m.M = Eigen::Matrix4d::Identity();
+  m.K = m.C = m.G = Eigen::Matrix4d::Zero();
+  m.Q = m.chamber = Eigen::Vector4d::Zero();
+  return m;
+}
+}  // namespace
+
+TEST_CASE("system: a tilting film at zero tilt is the untilted film bit for bit") {
+  SystemSolver a(one_film(0.0)), b(tilting_film());
+  const double w = 2 * M_PI * 50;
+  const Eigen::Vector2d r(1e-4, -1.2e-4), v(1e-3, 2e-3);
+  const Eigen::Vector4d r4(1e-4, -1.2e-4, 0, 0), v4(1e-3, 2e-3, 0, 0);
+  const Linearization la = a.linearize(r, v, w);
+  const Linearization lb = b.linearize(r4, v4, w);
+  CHECK(la.film_force == lb.film_force.head<2>());
+  CHECK(la.KH == lb.KH.topLeftCorner<2, 2>());
+  CHECK(la.DH == lb.DH.topLeftCorner<2, 2>());
+  CHECK(a.last_pressure(0) == b.last_pressure(0));
+}
+
+TEST_CASE("system: opposite tilts mirror each other; tilt K_H equals differences") {
+  SystemSolver s(tilting_film());
+  const double w = 2 * M_PI * 50, c = 3e-4, L = 0.04;
+  const Eigen::Vector4d rp(1e-4, -1.2e-4, 0.1 * c / L, -0.2 * c / L);
+  Eigen::Vector4d rm = rp;
+  rm.tail<2>() *= -1.0;
+  const Eigen::Vector4d z = Eigen::Vector4d::Zero();
+  const Eigen::VectorXd hp = s.film_forces(rp, z, w);
+  const double zp = s.last_h_min_z_m()[0];
+  const Eigen::VectorXd hm = s.film_forces(rm, z, w);
+  const double zm = s.last_h_min_z_m()[0];
+  const double fs = hp.head<2>().norm(), ms = hp.tail<2>().norm();
+  CHECK(ms > 0);
+  CHECK((hp.head<2>() - hm.head<2>()).norm() < 1e-11 * fs);
+  CHECK((hp.tail<2>() + hm.tail<2>()).norm() < 1e-11 * ms);
+  CHECK(std::abs(zp) == 0.5 * L && zm == -zp);  // the edge film at opposite edges
+  const Linearization a = s.linearize(rp, z, w);
+  const Linearization b = s.linearize_fd(rp, w, 1e-6);
+  CHECK((a.KH - b.KH).bottomRightCorner<2, 2>().norm() <
+        1e-4 * b.KH.bottomRightCorner<2, 2>().norm());
+  CHECK((a.DH - b.DH).bottomRightCorner<2, 2>().norm() <
+        1e-4 * b.DH.bottomRightCorner<2, 2>().norm());
+}

@@ -34,6 +34,19 @@ struct FilmCoupling {
   /// The film's surface speed is spin_factor·Ω: 1 for a journal bearing, 0 for a
   /// squeeze-film damper (the damper journal does not spin).
   double spin_factor = 1.0;
+  /// Axial weight of each coordinate, (n_coords, n_axial + 1): ∂h/∂r_k(φ_j, z_m) =
+  /// shape(j, k)·axial_weight(k, m). Journal tilt: the rotations θx, θy of the bearing
+  /// station move the journal centre to (x + θy z, y − θx z) (rotor.hpp: dx/dz = θy,
+  /// dy/dz = −θx), so their columns are shape = (sin φ, −cos φ) with weight z_m, and the
+  /// virtual work H_k = ∫∫ p ∂h/∂r_k dA is the film moment about x (resp. y) at the bearing
+  /// centre. Empty (default): 1 everywhere (h varies along z only through base_h), the
+  /// untilted film bit for bit.
+  RowMatrixXd axial_weight;
+  /// Film thickness h = base_h + Σ_k shape(·, k)·axial_weight(k, ·)·rc_k on the grid,
+  /// (n_circ, n_axial + 1), for the film's coordinates rc (n_coords,).
+  RowMatrixXd thickness(const Eigen::VectorXd& rc) const;
+  /// ∂h/∂r_k on the grid, (n_circ, n_axial + 1).
+  RowMatrixXd thickness_derivative(Eigen::Index k) const;
 };
 
 /// Linear bearing with speed-dependent coefficients (bearing tables): force on the two
@@ -98,6 +111,9 @@ struct EquilibriumResult {
   Eigen::VectorXd film_force;  ///< (n,) H at the equilibrium
   std::vector<double> h_min;   ///< per film, m
   std::vector<double> h_min_angle_deg;
+  /// Axial position z of each film's minimum (m, z = 0 mid-plane; 0 where the film is
+  /// uniform along z at that angle): a tilted or misaligned journal's edge film.
+  std::vector<double> h_min_z_m;
   int iterations = 0;
   int reynolds_solves = 0;
   double residual = 0.0;       ///< ‖K(r + a) − H − Q − p_c c_s‖∞ / load scale
@@ -163,6 +179,8 @@ class SystemSolver {
   /// Minimum film thickness of each film at the last film_forces/linearize call.
   const std::vector<double>& last_h_min() const { return h_min_; }
   const std::vector<double>& last_h_min_angle_deg() const { return h_min_angle_; }
+  /// Axial position of each film's minimum at the last call, m (see EquilibriumResult).
+  const std::vector<double>& last_h_min_z_m() const { return h_min_z_; }
   /// Pressure field of film i at the last call, (n_circ, n_axial + 1).
   const RowMatrixXd& last_pressure(int film) const;
 
@@ -170,7 +188,7 @@ class SystemSolver {
   struct Film;
   SystemModel model_;
   std::vector<std::unique_ptr<Film>> films_;
-  std::vector<double> h_min_, h_min_angle_;
+  std::vector<double> h_min_, h_min_angle_, h_min_z_;
   int solves_ = 0;
   long iterations_ = 0;
   // The state of the films' last solve: a call at the same (r, ṙ, Ω) — an equilibrium's

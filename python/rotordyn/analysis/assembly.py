@@ -33,6 +33,7 @@ class BearingCoords:
     clearance_m: float
     active: bool
     extra: tuple[int, ...] = ()  # the element's own coordinates (pad tilts, pivots)
+    rot: tuple[int, ...] = ()    # the station's θx, θy when the film couples to them (tilt)
 
 
 def gravity_load(system: System) -> np.ndarray:
@@ -66,6 +67,19 @@ class Assembled:
                 return full.local(int(4 * nodes[station])), full.local(int(4 * nodes[station] + 1))
             i = list(system.reduction.master_stations).index(station)
             return 2 * i, 2 * i + 1
+
+        def rotation_index(station: int, where: str) -> tuple[int, int]:
+            """θx, θy of a station in r (masters after the translations when reduced)."""
+            if self.rotor.reduction is None:
+                out = (full.local(int(4 * nodes[station] + 2)),
+                       full.local(int(4 * nodes[station] + 3)))
+                if min(out) < 0:
+                    raise InputError(f"{where}.tilt: the rotations of station {station} are "
+                                     "fixed; a tilting film needs them free")
+                return out
+            k = 2 * len(system.reduction.master_stations) + 2 * system.tilt_stations().index(
+                station)
+            return k, k + 1
 
         blocks_M, blocks_K, blocks_C, chambers = [], [], [], []
         self.bearings: list[BearingCoords] = []
@@ -122,16 +136,29 @@ class Assembled:
                 blocks_C.append(np.zeros_like(res.mass_matrix))
                 chambers.append((sleeve_idx, res.chamber_load(start, end)))
                 n += nm
+            rot: tuple[int, ...] = ()
+            weight = None
+            if getattr(b, "tilt", False):
+                # h = c − (x + θy z) cos φ − (y − θx z) sin φ (rotor.hpp: dx/dz = θy,
+                # dy/dz = −θx): the rotations' shapes sin φ, −cos φ with axial weight z
+                rot = rotation_index(b.station, f"bearings[{bi}]")
+                coords += list(rot)
+                shape += [np.sin(phi), -np.cos(phi)]
+                z = np.linspace(-0.5 * b.length_m, 0.5 * b.length_m, b.n_axial + 1)
+                weight = np.ones((len(coords), b.n_axial + 1))
+                weight[-2:] = z
             f = _core.FilmCoupling()
             f.name = b.name or f"bearing[{bi}]"
             f.geometry, f.grid, f.cavitation = g, grid, b.cavitation
             f.coords = [int(c) for c in coords]
             f.shape = np.column_stack(shape)
+            if weight is not None:
+                f.axial_weight = weight
             films.append(f)
             self.film_owner.append(bi)
             self.film_phi.append(None)
             self.bearings.append(BearingCoords(bi, f.name, jx, jy, sleeve_idx, b.clearance_m,
-                                               isinstance(b, ActiveJournalBearing)))
+                                               isinstance(b, ActiveJournalBearing), rot=rot))
 
         def block(A_r, blocks):
             out = np.zeros((n, n))
@@ -245,6 +272,8 @@ class Assembled:
         for bc in self.bearings:
             b = self.system.bearings[bc.index]
             a[bc.jx], a[bc.jy] = b.config_ax_m, b.config_ay_m
+            if bc.rot:  # the housing's angular misalignment at the station's rotations
+                a[bc.rot[0]], a[bc.rot[1]] = b.config_theta_x_rad, b.config_theta_y_rad
         for val, name, idx in ((config_ay_m, "config_ay_m", "jy"), (config_ax_m, "config_ax_m", "jx")):
             if val is None:
                 continue

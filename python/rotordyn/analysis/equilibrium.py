@@ -102,4 +102,21 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         iterations=int(res.iterations), reynolds_solves=int(res.reynolds_solves),
         residual=float(res.residual), status=res.status, message=res.message,
         pm=float(res.pm) if method == "successive" else float("nan"), path=path,
+        tilt=tilt_outputs(asm, r, a, np.asarray(res.h_min_z_m)),
     )
+
+
+def tilt_outputs(asm, r, a, h_min_z_films) -> dict:
+    """Per tilting-film bearing: its journal rotations relative to the housing, the housing
+    misalignment and the axial position of its minimum film (EquilibriumResult.tilt)."""
+    out = {}
+    for bc in asm.bearings:
+        if not bc.rot:
+            continue
+        i = asm.film_owner.index(bc.index)
+        out[bc.index] = {"journal_theta_x_rad": float(r[bc.rot[0]]),
+                         "journal_theta_y_rad": float(r[bc.rot[1]]),
+                         "config_theta_x_rad": float(a[bc.rot[0]]),
+                         "config_theta_y_rad": float(a[bc.rot[1]]),
+                         "h_min_z_m": float(h_min_z_films[i])}
+    return out

@@ -11,7 +11,9 @@
 * :mod:`.coefficients` the standalone coefficient table over speed of any film element,
   :mod:`.ross_io` a bearing element as a ROSS ``BearingElement``;
 * :mod:`.thermal` the oil (:class:`Oil`, viscosity–temperature laws) and the
-  effective-temperature equilibrium of a plain film (:class:`ThermalEquilibriumResult`).
+  effective-temperature equilibrium of a plain film (:class:`ThermalEquilibriumResult`);
+* :mod:`.tilt` a tilted or misaligned journal in a plain film: forces and moments
+  (:func:`tilted_forces`), 4×4 K, C over (x, y, θx, θy), the equilibrium at an imposed tilt.
 
 Each can be placed in a :class:`rotordyn.System` (``bearings=...``, TOML ``[[bearing]] type =
 ...``, the names of :data:`BEARING_TYPES`) and also used standalone (forces, coefficient tables
@@ -29,6 +31,8 @@ from rotordyn.bearings.squeeze_film import (SqueezeFilmDamper, end_plate_seal_co
 from rotordyn.bearings.table import TableBearing
 from rotordyn.bearings.thermal import Oil, ThermalEquilibriumResult, ThermalFilm, ThermalModel
 from rotordyn.bearings.tilting_pad import TiltingPadBearing
+from rotordyn.bearings.tilt import (MisalignedEquilibrium, TiltedFilm, misaligned_equilibrium,
+                                    tilted_coefficients, tilted_forces)
 
 BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBearing,
                  "fixed_geometry": FixedGeometryBearing, "tilting_pad": TiltingPadBearing,
@@ -41,3 +45,5 @@ __all__ = ["ActiveJournalBearing", "BEARING_TYPES", "BearingEquilibrium", "Coeff
            "ThermalEquilibriumResult", "ThermalFilm", "ThermalModel", "TiltingPadBearing",
            "end_plate_seal_conductance", "long_damper_orbit_forces",
            "paper_rig_sleeve", "short_damper_orbit_forces", "to_ross_bearing"]
+__all__ += ["MisalignedEquilibrium", "TiltedFilm", "misaligned_equilibrium",
+            "tilted_coefficients", "tilted_forces"]

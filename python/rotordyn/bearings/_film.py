@@ -93,6 +93,24 @@ def check_film_fields(b, where: str, n_stations: int | None) -> None:
         plausibility.housing_offset(f"{where}.config_ay_m", b.config_ay_m, b.clearance_m)
 
 
+def check_tilt_fields(b, where: str) -> None:
+    """``tilt`` (bool) and the housing misalignment (config_theta_x_rad, config_theta_y_rad:
+    finite, only with tilt, and not closing the film at an edge for a journal on the shaft
+    line: sqrt(θx² + θy²)·L/2 < c)."""
+    v.boolean(f"{where}.tilt", b.tilt)
+    tx = v.finite(f"{where}.config_theta_x_rad", b.config_theta_x_rad)
+    ty = v.finite(f"{where}.config_theta_y_rad", b.config_theta_y_rad)
+    if (tx or ty) and not b.tilt:
+        raise InputError(f"{where}.config_theta_x_rad, config_theta_y_rad: a misalignment "
+                         "needs the film coupled to the journal's rotations (tilt = true)")
+    edge = math.hypot(tx, ty) * 0.5 * b.length_m
+    if not edge < b.clearance_m:
+        raise InputError(
+            f"{where}.config_theta_x_rad, config_theta_y_rad: the misalignment closes the film"
+            f" at an edge (|theta|·L/2 = {edge:g} m); expected sqrt(theta_x² + theta_y²)·"
+            f"length_m/2 < clearance_m = {b.clearance_m:g} m")
+
+
 def check_speeds(speeds_hz, max_hz: float = v.MAX_SPEED_HZ, why: str = "") -> np.ndarray:
     """Speeds of a standalone coefficient table (Hz): numbers, finite, nonzero, |f| ≤
     ``max_hz`` (an element whose film is solved on a mapped grid has a lower limit: ``why``)."""

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from rotordyn._common import validate as v
+from rotordyn.bearings._film import check_tilt_fields
 from rotordyn.bearings.journal import Groove, JournalBearing, check_placed_film, film_model
 from rotordyn.bearings.sleeve import FlexibleSleeve
 from rotordyn.errors import InputError
@@ -37,12 +38,18 @@ class ActiveJournalBearing:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
+    # journal tilt: the film (and its sleeve) couples to the station's rotations; housing
+    # misalignment (rad) at those rotations (as FluidFilmBearing, docs/film-physics.md)
+    tilt: bool = False
+    config_theta_x_rad: float = 0.0
+    config_theta_y_rad: float = 0.0
 
     def __post_init__(self):
         object.__setattr__(self, "grooves", tuple(self.grooves))
 
     def check(self, where: str, n_stations: int) -> None:
         check_placed_film(self, where, n_stations)
+        check_tilt_fields(self, where)
         if not isinstance(self.sleeve, FlexibleSleeve):
             raise InputError(f"{where}.sleeve: expected a FlexibleSleeve, got {self.sleeve!r}")
         inner = self.sleeve.radius_m - 0.5 * self.sleeve.thickness_m

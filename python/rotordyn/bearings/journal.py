@@ -32,7 +32,7 @@ from rotordyn import _core
 from rotordyn._common import plausibility
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import (CAVITATION_MODELS, SystemParts, check_film_fields,
-                                     check_turbulence, set_turbulence)
+                                     check_tilt_fields, check_turbulence, set_turbulence)
 from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.bearings.thermal import Oil, run_thermal_equilibrium, thermal_options
 from rotordyn.errors import InputError
@@ -630,12 +630,19 @@ class FluidFilmBearing:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
+    # journal tilt (docs/film-physics.md): the film couples to the station's rotations too;
+    # the housing's angular misalignment (rad, right-hand rule about x, y) is the
+    # configuration a at those rotations
+    tilt: bool = False
+    config_theta_x_rad: float = 0.0
+    config_theta_y_rad: float = 0.0
 
     def __post_init__(self):
         object.__setattr__(self, "grooves", tuple(self.grooves))
 
     def check(self, where: str, n_stations: int) -> None:
         check_placed_film(self, where, n_stations)
+        check_tilt_fields(self, where)
 
     def journal_bearing(self) -> JournalBearing:
         """The standalone film model (forces, coefficients) of this bearing."""

@@ -182,11 +182,22 @@ class System:
         return self._sparse("G")
 
     def master_dofs(self) -> np.ndarray:
-        """Full-model DOF indices of the master translations, (2 n_masters,) ordered x, y per
-        station."""
+        """Full-model DOF indices of the masters: the translations x, y per master station
+        (2 n_masters), then the rotations θx, θy of each station whose film couples to them
+        (a bearing with ``tilt = true``; :meth:`tilt_stations` order)."""
         nodes = self.rotor.station_nodes()
-        return np.array([4 * nodes[s] + k for s in self.reduction.master_stations for k in (0, 1)],
+        return np.array([4 * nodes[s] + k for s in self.reduction.master_stations for k in (0, 1)]
+                        + [4 * nodes[s] + k for s in self.tilt_stations() for k in (2, 3)],
                         dtype=np.int64)
+
+    def tilt_stations(self) -> list[int]:
+        """Stations whose rotations a film couples to (bearings with ``tilt = true``), in the
+        order of the bearings, each once: their θx, θy stay masters of a reduction."""
+        out: list[int] = []
+        for b in self.bearings:
+            if getattr(b, "tilt", False) is True and b.station not in out:
+                out.append(int(b.station))
+        return out
 
     # -- TOML ----------------------------------------------------------------------------
     @classmethod

@@ -46,6 +46,11 @@ class EquilibriumResult(Display):
     # how the Newton start was reached: "newton", "pad_assembly" (tilting pads), "homotopy"
     # (tilting pads, fallback), "load_continuation", "successive"
     path: str = ""
+    # bearings whose film couples to the journal's rotations (tilt = true): {bearing index:
+    # {"journal_theta_x_rad", "journal_theta_y_rad" (relative to the housing),
+    # "config_theta_x_rad", "config_theta_y_rad" (housing misalignment), "h_min_z_m"
+    # (axial position of the minimum film, z = 0 mid-plane)}}
+    tilt: dict = field(default_factory=dict)
 
     def __repr__(self) -> str:
         pos = "; ".join(f"{n or i}: x/c = {x:.4f}, y/c = {y:.4f}"
@@ -151,6 +156,11 @@ class EquilibriumResult(Display):
         for bi, s in self.sleeve_m.items():
             for j, val in enumerate(s):
                 col = f"sleeve_{j + 1}_m"
+                if col not in df:
+                    df[col] = np.nan
+                df.loc[bi, col] = val
+        for bi, d in self.tilt.items():  # tilting films: rotations, misalignment, edge film
+            for col, val in d.items():
                 if col not in df:
                     df[col] = np.nan
                 df.loc[bi, col] = val

@@ -43,6 +43,9 @@ UNITS = {
     "alpha_prime": ("1/s per axis unit", "dRe λ/d(vary) at the crossing"),
     "amplitude_coefficient_m2": ("m² per axis unit",
                                  "leading-order cycle amplitude² per distance from the crossing"),
+    "journal_theta_x_rad": ("rad", "journal rotation about x relative to the housing"),
+    "journal_theta_y_rad": ("rad", "journal rotation about y relative to the housing"),
+    "h_min_z_m": ("m", "axial position of the minimum film (0: mid-plane)"),
 }
 
 

@@ -43,7 +43,10 @@ def _cat(values):
 # (dictionary type, categories) pair for categoricals).
 OUTPUTS = {
     "equilibrium": {"bearing": STR, "journal_x_m": F64, "journal_y_m": F64, "x_over_c": F64,
-                    "y_over_c": F64, "h_min_m": F64, "iterations": I64, "residual": F64},
+                    "y_over_c": F64, "h_min_m": F64, "iterations": I64, "residual": F64,
+                    # tilting films (tilt = true; NaN elsewhere): the journal's rotations
+                    # relative to the housing and the axial position of the minimum film
+                    "journal_theta_x_rad": F64, "journal_theta_y_rad": F64, "h_min_z_m": F64},
     "thermal": {"bearing": STR, "effective_temperature_c": F64, "max_temperature_c": F64,
                 "inlet_temperature_c": F64, "temperature_rise_k": F64, "viscosity_pa_s": F64,
                 "power_loss_w": F64, "film_flow_m3_s": F64, "side_flow_m3_s": F64,
@@ -146,15 +149,21 @@ def _eq_rows(job, variants, chunk_id, lo, hi, rows):
         r_prev = r if e.status == "ok" else None
         # per bearing (a tilting pad has a film per pad, a table bearing none: NaN)
         hmin = asm.bearing_h_min(np.asarray(e.h_min))
+        hz = np.asarray(e.h_min_z_m)
         for k, bc in enumerate(asm.bearings):
             ok = e.status in CONVERGED
             x = r[bc.jx] if ok else math.nan
             y = r[bc.jy] if ok else math.nan
             c = bc.clearance_m if bc.clearance_m > 0 else math.nan  # a table: no clearance
+            tilt = ok and bool(bc.rot)
             rows.append({**row, "bearing": bc.name, "journal_x_m": x, "journal_y_m": y,
                          "x_over_c": x / c, "y_over_c": y / c,
                          "h_min_m": float(hmin[k]) if ok else math.nan,
                          "iterations": int(e.iterations), "residual": float(e.residual),
+                         "journal_theta_x_rad": float(r[bc.rot[0]]) if tilt else math.nan,
+                         "journal_theta_y_rad": float(r[bc.rot[1]]) if tilt else math.nan,
+                         "h_min_z_m": float(hz[asm.film_owner.index(bc.index)]) if tilt
+                         else math.nan,
                          "status": e.status if e.status in STATUS else "error",
                          "message": e.message})
 

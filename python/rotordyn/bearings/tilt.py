@@ -1,0 +1,271 @@
+"""Journal tilt and bearing misalignment of a plain journal bearing (issue 20).
+
+Coordinates of the journal at the bearing centre: translations (x, y) and rotations (θx, θy)
+about the bearing frame's x and y axes, right-hand rule, z along the shaft axis (the rotor
+FEM's convention, ``rotor.hpp``: dx/dz = θy, dy/dz = −θx). At the axial position z
+(z = 0 the bearing's mid-plane, −L/2 ≤ z ≤ L/2) the journal centre sits at
+(x + θy z, y − θx z), so the film thickness is
+
+    h(φ, z) = c − (x + θy z) cos φ − (y − θx z) sin φ.
+
+By virtual work the generalised film forces on the four coordinates are
+H_k = ∫∫ p ∂h/∂r_k dA: the forces (Fx, Fy) = −∫∫ p (cos φ, sin φ) dA and the moments about
+the bearing centre Mx = ∫∫ p z sin φ dA, My = −∫∫ p z cos φ dA (= (r × dF) with dF the
+pressure force on the journal surface). Linear coefficients over (x, y, θx, θy) are
+defined by ΔH = −K Δr − C Δṙ (4×4; units N/m, N/rad, N·m/m, N·m/rad and the same per
+second for C). A bearing's own angular misalignment (housing rotated by (αx, αy)) is the
+same film seen by a journal at rotation θ − α relative to the housing.
+
+The numerical work is the system film of the C++ core (``_core.SystemSolver``: one Reynolds
+solve on the full (φ, z) grid, the perturbation linearisation reusing its factorisation).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn.bearings.journal import MAX_SPEED_HZ, JournalBearing
+from rotordyn.errors import InputError
+
+TWO_PI = 2.0 * math.pi
+COORDINATES = ("x", "y", "theta_x", "theta_y")
+MAX_ANGULAR_VELOCITY_RAD_S = 1e5
+
+
+def axial_positions(bearing: JournalBearing) -> np.ndarray:
+    """z of the grid's node rows, m, (n_axial + 1,), z = 0 the bearing's mid-plane."""
+    return np.linspace(-0.5 * bearing.length_m, 0.5 * bearing.length_m, bearing.n_axial + 1)
+
+
+def tilt_coupling(bearing: JournalBearing, coords: Sequence[int], name: str = "",
+                  base_h: np.ndarray | None = None) -> _core.FilmCoupling:
+    """The film of ``bearing`` on four system coordinates (x, y, θx, θy) = ``coords``:
+    shape (n_circ, 4) = (−cos φ, −sin φ, sin φ, −cos φ), axial weights (4, n_axial + 1) =
+    (1, 1, z, z). ``base_h`` (n_circ, n_axial + 1) replaces the clearance (misalignment
+    imposed through the thickness)."""
+    g, grid = bearing.to_core()
+    f = _core.FilmCoupling()
+    f.name = name or "bearing"
+    f.geometry, f.grid, f.cavitation = g, grid, bearing.cavitation
+    f.coords = [int(c) for c in coords]
+    phi = TWO_PI * np.arange(bearing.n_circ) / bearing.n_circ
+    c, s = np.cos(phi), np.sin(phi)
+    f.shape = np.ascontiguousarray(np.column_stack([-c, -s, s, -c]))
+    z = axial_positions(bearing)
+    f.axial_weight = np.ascontiguousarray(np.vstack([np.ones_like(z), np.ones_like(z), z, z]))
+    if base_h is not None:
+        f.base_h = np.ascontiguousarray(base_h, dtype=float)
+    return f
+
+
+def edge_eccentricity(bearing: JournalBearing, x: float, y: float, theta_x: float,
+                      theta_y: float) -> float:
+    """Largest eccentricity ratio of the journal axis over the bearing length (at an edge:
+    the axis is straight, so the largest one is at z = ±L/2)."""
+    hl = 0.5 * bearing.length_m
+    return max(math.hypot(x + theta_y * z, y - theta_x * z) for z in (-hl, hl)) \
+        / bearing.clearance_m
+
+
+def check_pose(bearing: JournalBearing, x_m, y_m, theta_x_rad, theta_y_rad,
+               names=("x_m", "y_m", "theta_x_rad", "theta_y_rad")) -> tuple[float, ...]:
+    """Finite coordinates whose journal axis stays inside the clearance at both edges;
+    InputError naming the field otherwise."""
+    vals = tuple(v.finite(n, val) for n, val in zip(names, (x_m, y_m, theta_x_rad, theta_y_rad)))
+    x, y, tx, ty = vals
+    hl = 0.5 * bearing.length_m
+    for z in (-hl, hl):
+        e = math.hypot(x + ty * z, y - tx * z) / bearing.clearance_m
+        if not e < 1.0:
+            raise InputError(
+                f"{names[2]}, {names[3]}: the tilted journal closes the film at the edge "
+                f"z = {z:+g} m (edge eccentricity ratio {e:.6g}); expected an edge eccentricity"
+                f" ratio < 1, i.e. |(x + theta_y z, y - theta_x z)| < clearance_m ="
+                f" {bearing.clearance_m:g} m at z = ±L/2")
+    return vals
+
+
+def _speed(speed_hz) -> float:
+    f = v.finite("speed_hz", speed_hz)
+    if abs(f) > MAX_SPEED_HZ:
+        raise InputError(f"speed_hz: expected |speed_hz| <= {MAX_SPEED_HZ:g}, got {f!r}")
+    return f
+
+
+def _solver(bearing: JournalBearing) -> _core.SystemSolver:
+    """This thread's four-coordinate film of ``bearing`` (built on first use)."""
+    s = getattr(bearing._local, "tilt_solver", None)
+    if s is None:
+        model = _core.SystemModel()
+        z = np.zeros((4, 4))
+        model.M, model.K, model.C, model.G = z, z, z, z
+        model.Q, model.chamber = np.zeros(4), np.zeros(4)
+        model.films = [tilt_coupling(bearing, [0, 1, 2, 3])]
+        s = _core.SystemSolver(model)
+        bearing._local.tilt_solver = s
+    return s
+
+
+@dataclass(frozen=True)
+class TiltedFilm:
+    """Film of a tilted journal: forces (Fx, Fy) N and moments (Mx, My) N·m on the journal
+    about the bearing centre; minimum film (m) and where it is (φ deg from +x, z m)."""
+
+    force_n: np.ndarray
+    moment_n_m: np.ndarray
+    h_min_m: float
+    h_min_angle_deg: float
+    h_min_z_m: float
+
+    def to_frame(self):
+        import pandas as pd
+
+        return pd.DataFrame([{
+            "force_x_n": self.force_n[0], "force_y_n": self.force_n[1],
+            "moment_x_n_m": self.moment_n_m[0], "moment_y_n_m": self.moment_n_m[1],
+            "h_min_m": self.h_min_m, "h_min_angle_deg": self.h_min_angle_deg,
+            "h_min_z_m": self.h_min_z_m}])
+
+
+def tilted_forces(bearing: JournalBearing, *, x_m: float, y_m: float, speed_hz: float,
+                  theta_x_rad: float = 0.0, theta_y_rad: float = 0.0, vx_m_s: float = 0.0,
+                  vy_m_s: float = 0.0, wx_rad_s: float = 0.0, wy_rad_s: float = 0.0
+                  ) -> TiltedFilm:
+    """Forces and moments on a rigid journal at (x, y) tilted by (θx, θy) rad, moving at
+    (vx, vy) m/s and (ωx, ωy) rad/s (the squeeze term ∂h/∂t of the same thickness)."""
+    r = np.array(check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad))
+    rd = np.array([v.in_range("vx_m_s", vx_m_s, -1e3, 1e3),
+                   v.in_range("vy_m_s", vy_m_s, -1e3, 1e3),
+                   v.in_range("wx_rad_s", wx_rad_s, -MAX_ANGULAR_VELOCITY_RAD_S,
+                              MAX_ANGULAR_VELOCITY_RAD_S),
+                   v.in_range("wy_rad_s", wy_rad_s, -MAX_ANGULAR_VELOCITY_RAD_S,
+                              MAX_ANGULAR_VELOCITY_RAD_S)])
+    s = _solver(bearing)
+    H = np.asarray(s.film_forces(r, rd, TWO_PI * _speed(speed_hz)))
+    return TiltedFilm(force_n=H[:2].copy(), moment_n_m=H[2:].copy(),
+                      h_min_m=float(s.last_h_min[0]),
+                      h_min_angle_deg=float(s.last_h_min_angle_deg[0]),
+                      h_min_z_m=float(s.last_h_min_z_m[0]))
+
+
+def tilted_coefficients(bearing: JournalBearing, *, x_m: float, y_m: float, speed_hz: float,
+                        theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
+                        method: str = "perturbation", rel_step: float = 1e-6
+                        ) -> tuple[np.ndarray, np.ndarray]:
+    """K, C (4×4 over x, y, θx, θy) with ΔH = −K Δr − C Δṙ at a tilted journal.
+
+    ``method="perturbation"``: the linearised Reynolds solves on the film's factorisation;
+    ``"finite_difference"``: central differences of (F, M), steps rel_step·c on x, y and
+    rel_step·c (rad) on the rotations, rel_step·c·|ω| on the velocities."""
+    r = np.array(check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad))
+    w = TWO_PI * _speed(speed_hz)
+    s = _solver(bearing)
+    if method == "perturbation":
+        lin = s.linearize(r, np.zeros(4), w)
+    elif method == "finite_difference":
+        lin = s.linearize_fd(r, w, v.in_range("rel_step", rel_step, 1e-10, 0.1, hi_open=True))
+    else:
+        raise InputError(f"method: expected 'perturbation' or 'finite_difference', got {method!r}")
+    return np.array(lin.KH), np.array(lin.DH)
+
+
+@dataclass(frozen=True)
+class MisalignedEquilibrium:
+    """Journal position under a static load at an imposed tilt (θx, θy) relative to the
+    bearing (the bearing's misalignment seen by a journal held parallel to the shaft line):
+    position (m), eccentricity ratio and attitude at the mid-plane, the film's forces (N) and
+    moments (N·m) on the journal, the minimum film and where it is."""
+
+    x_m: float
+    y_m: float
+    theta_x_rad: float
+    theta_y_rad: float
+    eccentricity_ratio: float
+    attitude_angle_deg: float
+    force_n: np.ndarray
+    moment_n_m: np.ndarray
+    h_min_m: float
+    h_min_angle_deg: float
+    h_min_z_m: float
+    status: str
+    message: str
+    iterations: int
+
+    def to_frame(self):
+        import pandas as pd
+
+        return pd.DataFrame([{
+            "x_m": self.x_m, "y_m": self.y_m, "theta_x_rad": self.theta_x_rad,
+            "theta_y_rad": self.theta_y_rad, "eccentricity_ratio": self.eccentricity_ratio,
+            "attitude_angle_deg": self.attitude_angle_deg,
+            "force_x_n": self.force_n[0], "force_y_n": self.force_n[1],
+            "moment_x_n_m": self.moment_n_m[0], "moment_y_n_m": self.moment_n_m[1],
+            "h_min_m": self.h_min_m, "h_min_angle_deg": self.h_min_angle_deg,
+            "h_min_z_m": self.h_min_z_m, "status": self.status, "message": self.message}])
+
+
+def misaligned_equilibrium(bearing: JournalBearing, *, load_n: Sequence[float],
+                           speed_hz: float, theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
+                           tol: float = 1e-10) -> MisalignedEquilibrium:
+    """(x, y) where the film force balances ``load_n`` (N, on the journal) with the journal
+    tilted by (θx, θy) rad: the C++ Newton equilibrium of the film on (x, y) whose thickness
+    at zero (x, y) is c + θx z sin φ − θy z cos φ; then the moments at that point."""
+    if isinstance(load_n, (str, bytes)) or len(np.atleast_1d(load_n)) != 2:
+        raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}")
+    lx, ly = v.finite("load_n[0]", load_n[0]), v.finite("load_n[1]", load_n[1])
+    _, _, tx, ty = check_pose(bearing, 0.0, 0.0, theta_x_rad, theta_y_rad)
+    f = _speed(speed_hz)
+    if f == 0.0:
+        raise InputError("speed_hz: a static equilibrium needs 0 < |speed_hz|, got 0")
+    phi = TWO_PI * np.arange(bearing.n_circ) / bearing.n_circ
+    z = axial_positions(bearing)
+    base = bearing.clearance_m + np.outer(np.sin(phi), tx * z) - np.outer(np.cos(phi), ty * z)
+    film = tilt_coupling(bearing, [0, 1], base_h=base)
+    film.shape = np.ascontiguousarray(film.shape[:, :2])
+    film.axial_weight = np.zeros((0, 0))
+    model = _core.SystemModel()
+    z2 = np.zeros((2, 2))
+    model.M, model.K, model.C, model.G = z2, z2, z2, z2
+    model.Q, model.chamber = np.array([lx, ly]), np.zeros(2)
+    model.films = [film]
+    opt = _core.EquilibriumOptions()
+    opt.tol = v.in_range("tol", tol, 1e-14, 1e-2)
+    opt.polish = True
+    e = _core.SystemSolver(model).equilibrium(TWO_PI * f, 0.0, np.zeros(2), np.zeros(0), opt)
+    x, y = (float(q) for q in e.r)
+    status, message = str(e.status), str(e.message)
+    nan2 = np.full(2, np.nan)
+    if status not in ("ok", "contact"):
+        return MisalignedEquilibrium(x, y, tx, ty, math.nan, math.nan, nan2, nan2, math.nan,
+                                     math.nan, math.nan, status, message, int(e.iterations))
+    film_at = tilted_forces(bearing, x_m=x, y_m=y, speed_hz=f, theta_x_rad=tx,
+                            theta_y_rad=ty)
+    W = math.hypot(lx, ly)
+    if W > 0.0 and (x != 0.0 or y != 0.0):
+        dx, dy = lx / W, ly / W
+        att = math.degrees(math.atan2(dx * y - dy * x, dx * x + dy * y))
+        att = -att if f < 0 else att
+    else:
+        att = math.nan
+    return MisalignedEquilibrium(
+        x_m=x, y_m=y, theta_x_rad=tx, theta_y_rad=ty,
+        eccentricity_ratio=math.hypot(x, y) / bearing.clearance_m, attitude_angle_deg=att,
+        force_n=film_at.force_n, moment_n_m=film_at.moment_n_m, h_min_m=film_at.h_min_m,
+        h_min_angle_deg=film_at.h_min_angle_deg, h_min_z_m=film_at.h_min_z_m, status=status,
+        message=message, iterations=int(e.iterations))
+
+
+__all__ = [
+    "TiltedFilm",
+    "MisalignedEquilibrium",
+    "tilted_forces",
+    "tilted_coefficients",
+    "misaligned_equilibrium",
+    "tilt_coupling",
+]
