@@ -56,10 +56,10 @@ def case(name, system, ub, sp, stations, pc, repeat):
     asm = assembled(system)
     out = {}
 
-    def cold(fn):
+    def cold(key, fn):
         def run():
             asm.last_r = None
-            out[fn.__name__] = fn()
+            out[key] = fn()
         return run
 
     def old():
@@ -75,7 +75,8 @@ def case(name, system, ub, sp, stations, pc, repeat):
                                   refine=False, threads=2)
         return u.x, u.y, u.max_real_1_per_s
 
-    t = interleaved({"old": cold(old), "one": cold(one_call), "two": cold(two_threads)},
+    t = interleaved({"old": cold("old", old), "one": cold("one", one_call),
+                     "two": cold("two", two_threads)},
                     repeat=repeat)
     X0, Y0, m0 = out["old"]
     scale = max(np.nanmax(np.abs(X0)), np.nanmax(np.abs(Y0)))
