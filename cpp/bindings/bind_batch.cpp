@@ -47,6 +47,31 @@ void bind_batch(py::module_& m) {
       py::arg("finite_difference"), py::arg("fd_step"), py::arg("xy_pairs"),
       py::arg("rot_pairs"), py::arg("sleeve"),
       "Equilibrium (continued), K_H/D_H and eigen-analysis of each point of a sweep chunk.");
+
+  py::class_<EquilibriumBatchResult>(m, "EquilibriumBatchResult")
+      .def_readonly("status", &EquilibriumBatchResult::status)
+      .def_readonly("message", &EquilibriumBatchResult::message)
+      .def_readonly("iterations", &EquilibriumBatchResult::iterations)
+      .def_readonly("residual", &EquilibriumBatchResult::residual)
+      .def_readonly("r", &EquilibriumBatchResult::r)
+      .def_readonly("h_min", &EquilibriumBatchResult::h_min)
+      .def_readonly("h_min_z_m", &EquilibriumBatchResult::h_min_z_m);
+  m.def(
+      "equilibrium_batch",
+      [](SystemSolver& solver, const Eigen::VectorXd& omega, const Eigen::VectorXd& pressure,
+         const RowMatrixXd& a, const std::vector<int>& restart, const EquilibriumOptions& opt) {
+        StabilityBatchInput in;
+        in.omega = omega;
+        in.pressure = pressure;
+        in.a = a;
+        in.restart = restart;
+        in.options = opt;
+        py::gil_scoped_release release;
+        return equilibrium_batch(solver, in);
+      },
+      py::arg("solver"), py::arg("omega"), py::arg("pressure"), py::arg("a"),
+      py::arg("restart"), py::arg("options"),
+      "Equilibrium of each point of a sweep chunk (continued along lines from ok points).");
 }
 
 }  // namespace rotordyn::py_bind

@@ -22,4 +22,6 @@ void bind_batch(py::module_& m);
 void bind_periodic(py::module_& m);
 void bind_thermal(py::module_& m);
 void bind_continuation(py::module_& m);
+void bind_unbalance(py::module_& m);
+void bind_threshold(py::module_& m);
 }  // namespace rotordyn::py_bind

@@ -18,4 +18,6 @@ PYBIND11_MODULE(_core, m) {
   bind_sleeve(m);
   bind_batch(m);
   bind_thermal(m);
+  bind_unbalance(m);
+  bind_threshold(m);
 }

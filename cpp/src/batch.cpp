@@ -83,4 +83,49 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
   return out;
 }
 
+EquilibriumBatchResult equilibrium_batch(SystemSolver& solver, const StabilityBatchInput& in) {
+  const Eigen::Index np = in.omega.size();
+  const Eigen::Index n = solver.model().n();
+  if (in.pressure.size() != np || in.a.rows() != np || in.a.cols() != n ||
+      static_cast<Eigen::Index>(in.restart.size()) != np) {
+    throw InputError("equilibrium_batch: expected omega, pressure, restart of length n_pts "
+                     "and a of shape (n_pts, n)");
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto nf = static_cast<Eigen::Index>(solver.model().films.size());
+  EquilibriumBatchResult out;
+  out.status.assign(np, "error");
+  out.message.assign(np, "");
+  out.iterations = Eigen::VectorXi::Zero(np);
+  out.residual = Eigen::VectorXd::Constant(np, nan);
+  out.r = RowMatrixXd::Constant(np, n, nan);
+  out.h_min = RowMatrixXd::Constant(np, nf, nan);
+  out.h_min_z_m = RowMatrixXd::Constant(np, nf, nan);
+  Eigen::VectorXd prev;
+  bool have_prev = false;
+  for (Eigen::Index i = 0; i < np; ++i) {
+    try {
+      const Eigen::VectorXd a = in.a.row(i).transpose();
+      const Eigen::VectorXd r0 = (in.restart[i] == 0 && have_prev) ? prev : Eigen::VectorXd();
+      EquilibriumResult e = solver.equilibrium(in.omega[i], in.pressure[i], a, r0, in.options);
+      out.status[i] = e.status;
+      out.message[i] = e.message;
+      out.iterations[i] = e.iterations;
+      out.residual[i] = e.residual;
+      out.r.row(i) = e.r.transpose();
+      for (std::size_t f = 0; f < e.h_min.size() && static_cast<Eigen::Index>(f) < nf; ++f)
+        out.h_min(i, static_cast<Eigen::Index>(f)) = e.h_min[f];
+      for (std::size_t f = 0; f < e.h_min_z_m.size() && static_cast<Eigen::Index>(f) < nf; ++f)
+        out.h_min_z_m(i, static_cast<Eigen::Index>(f)) = e.h_min_z_m[f];
+      have_prev = e.status == "ok";
+      if (have_prev) prev = e.r;
+    } catch (const std::exception& ex) {
+      out.status[i] = "error";
+      out.message[i] = ex.what();
+      have_prev = false;
+    }
+  }
+  return out;
+}
+
 }  // namespace rotordyn

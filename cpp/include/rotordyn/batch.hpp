@@ -42,4 +42,20 @@ struct StabilityBatchResult {
 /// from the previous point's equilibrium when that one converged ("ok").
 StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchInput& in);
 
+/// The equilibria of a sweep chunk's points (omega, pressure, a, restart, options as in
+/// StabilityBatchInput; n_modes and the linearisation fields unused).
+struct EquilibriumBatchResult {
+  std::vector<std::string> status, message;  ///< (n_pts,) "error": the solve raised
+  Eigen::VectorXi iterations;                ///< (n_pts,)
+  Eigen::VectorXd residual;                  ///< (n_pts,)
+  RowMatrixXd r;                             ///< (n_pts, n) equilibrium (NaN on "error")
+  RowMatrixXd h_min;                         ///< (n_pts, n_films)
+  RowMatrixXd h_min_z_m;                     ///< (n_pts, n_films) axial position of h_min, m
+};
+
+/// Points in order on one solver, exactly as a Python loop of solver.equilibrium calls
+/// would: a point with restart = 0 starts from the previous point's equilibrium when that
+/// one's status was "ok", else (and after a point that raised) from the concentric state.
+EquilibriumBatchResult equilibrium_batch(SystemSolver& solver, const StabilityBatchInput& in);
+
 }  // namespace rotordyn

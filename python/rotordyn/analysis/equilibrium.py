@@ -16,6 +16,18 @@ from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.units import hz_to_rad_s
 
 
+def equilibrium_options(method: str = "newton", pm: float | str = "auto", tol: float = 1e-10,
+                        max_iter: int = 100, contact_fraction: float = 0.02):
+    """The core's options of :func:`equilibrium` (arguments already validated); also the
+    options of the analyses that solve their equilibria in one C++ call."""
+    opt = _core.EquilibriumOptions()
+    opt.method, opt.tol, opt.max_iter = method, float(tol), int(max_iter)
+    opt.pm = -1.0 if pm == "auto" else float(pm)
+    opt.contact_fraction = float(contact_fraction)
+    opt.polish = True  # the answer is the root to round-off, not the first iterate within tol
+    return opt
+
+
 @limited_blas
 def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
                 config_ay_m: float | None = None, *, config_ax_m: float | None = None,
@@ -67,11 +79,7 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         r_init = asm.last_r
     else:
         r_init = np.zeros(0)
-    opt = _core.EquilibriumOptions()
-    opt.method, opt.tol, opt.max_iter = method, float(tol), int(max_iter)
-    opt.pm = -1.0 if pm == "auto" else float(pm)
-    opt.contact_fraction = float(contact_fraction)
-    opt.polish = True  # the answer is the root to round-off, not the first iterate within tol
+    opt = equilibrium_options(method, pm, tol, max_iter, contact_fraction)
     omega = hz_to_rad_s(float(speed_hz))
     if asm.pad_penalty is None:
         res = asm.solver.equilibrium(omega, float(chamber_pressure_pa), a, r_init, opt)

@@ -169,7 +169,8 @@ def continued_linear_models(system: System, speeds_hz, chamber_pressure_pa: floa
     """Yield ``(index, status, LinearModel | None)`` along increasing ``speeds_hz``: each
     equilibrium starts from the last one whose status is in ``continue_on`` (continuation),
     then K_H(Ω), D_H(Ω). A point whose solve raises is ``(i, "error", None)``; the sequence
-    goes on. Shared by the Campbell diagram and the unbalance response."""
+    goes on. Used by the Campbell diagram, gain schedules and bearing coefficients (the
+    unbalance response runs the same sequence in one C++ call, ``_core.unbalance_sweep``)."""
     from rotordyn.errors import RotordynError
 
     asm = assembled(system)

@@ -9,8 +9,9 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn.analysis.assembly import assembled
-from rotordyn.analysis.linear import continued_linear_models
-from rotordyn.errors import InputError
+from rotordyn.analysis.equilibrium import equilibrium_options
+from rotordyn.analysis.linear import FD_REL_STEP, LINEARIZATION_METHODS
+from rotordyn.errors import ConvergenceError, InputError
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn._common import validate as v
 from rotordyn.model.system import System
@@ -103,12 +104,44 @@ def _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X
     Y[:] = Z[:, 1::2]
 
 
+def _with_bearings(system, asm, sp, chamber_pressure_pa, config_ay_m, method, check, threads,
+                   F1, Cout, X, Y, status, max_real):
+    """All speeds in one C++ call (``_core.unbalance_sweep``): per speed the equilibrium
+    continued from the last converged one (the first from this system's last equilibrium, as
+    :func:`rotordyn.equilibrium` warm-starts), K_H(Ω), D_H(Ω) (eq. 18), then
+    (K + K_H − Ω² M + iΩ (C + ΩG + D_H)) q = Ω² F₁ and, with ``check``, the largest real part
+    of eq. 19's eigenvalues: the numbers the per-speed path (equilibrium, linearize,
+    harmonic_response, modal) computed. Fills X, Y, status, max_real in place;
+    ConvergenceError where the dynamic stiffness is singular (as the per-speed solve raised)."""
+    a = np.tile(asm.config_vector(config_ay_m, None), (sp.size, 1))
+    r0 = asm.last_r if asm.last_r is not None else np.zeros(0)
+    pen = asm.pad_penalty if asm.pad_penalty is not None else np.zeros((0, 0))
+    O = np.concatenate(Cout, axis=0)  # (2 n_out, n): x, y of each output station
+    res = _core.unbalance_sweep(
+        asm.model, hz_to_rad_s(sp), np.full(sp.size, float(chamber_pressure_pa)), a, r0, equilibrium_options(),
+        pen, F1, O, method == "finite_difference", FD_REL_STEP, bool(asm.bearings), check,
+        asm.rotor.xy_pairs(), asm.rotor.rot_pairs(), int(threads))
+    st = list(res.status)
+    ok = [i for i, s in enumerate(st) if s == "ok"]
+    if ok:  # the warm start of the next equilibrium of this system, as equilibrium() keeps it
+        asm.last_r = np.array(np.asarray(res.r)[ok[-1]])
+    for i, msg in enumerate(res.solve_error):
+        if msg:
+            raise ConvergenceError(f"unbalance response at {sp[i]:g} Hz: {msg}")
+    status[:] = st
+    Z = np.asarray(res.Y)
+    X[:] = Z[:, 0::2]
+    Y[:] = Z[:, 1::2]
+    if check:
+        max_real[:] = np.asarray(res.max_real)
+
+
 @limited_blas
 def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
                        chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None,
                        operating_speed_hz=None, method: str = "perturbation",
-                       refine: bool = True, check_stability: bool | None = None
-                       ) -> UnbalanceResult:
+                       refine: bool = True, check_stability: bool | None = None,
+                       threads: int = 1) -> UnbalanceResult:
     """Response to rotating unbalances ``[(station, mass_kg_m, phase_deg), ...]`` (m·e in
     kg·m; the force at station is m e Ω² (cos(Ωt + φ), sin(Ωt + φ)), turning with the rotor).
 
@@ -125,11 +158,15 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     speed (``max_real_1_per_s``; above the threshold of instability there is no steady
     unbalance response, and ``stable`` says so); default: when the system has bearing
     elements (a rotor on symmetric supports cannot lose stability).
+    ``threads``: the speeds of a system with bearing elements are solved in one C++ call
+    (GIL released); 1 (default) continues the equilibrium over all speeds in order, k > 1
+    splits them into k contiguous blocks on k threads, each continued from the same start.
     """
     if refine:
         kw = dict(stations=stations, chamber_pressure_pa=chamber_pressure_pa,
                   config_ay_m=config_ay_m, operating_speed_hz=operating_speed_hz,
-                  method=method, refine=False, check_stability=check_stability)
+                  method=method, refine=False, check_stability=check_stability,
+                  threads=threads)
         u = unbalance_response(system, unbalances, speeds_hz, **kw)
         for _ in range(REFINE_LEVELS):
             sp = u.speeds_hz
@@ -157,6 +194,8 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
         if not 0 < lo:
             raise InputError("operating_speed_hz: expected (min, max) with 0 < min <= max")
         operating_speed_hz = (lo, hi)
+    v.choice("method", method, LINEARIZATION_METHODS)
+    threads = v.integer("threads", threads, lo=1, hi=1024)
     check = bool(system.bearings) if check_stability is None else \
         v.boolean("check_stability", check_stability)
     asm = assembled(system)
@@ -172,19 +211,7 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
                       status)
         return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub),
                                operating_speed_hz, max_real)
-    for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
-                                              method, continue_on=CONVERGED):
-        status[i] = stt
-        if stt not in CONVERGED:
-            continue
-        w = hz_to_rad_s(float(sp[i]))
-        # (K − Ω² M + iΩ D) q = Ω² F1: sparse LU in the core (FE rotors are banded).
-        q = np.asarray(_core.harmonic_response(lm.M, lm.D, lm.K, w, (w**2 * F1)[:, None]))[:, 0]
-        for k, Co in enumerate(Cout):
-            X[i, k], Y[i, k] = Co @ q
-        if check:
-            lam = np.asarray(_core.modal(lm.M, lm.D, lm.K, asm.rotor.xy_pairs(), 0, False,
-                                         asm.rotor.rot_pairs()).eigenvalues)
-            max_real[i] = float(np.max(lam.real)) if lam.size else np.nan
+    _with_bearings(system, asm, sp, chamber_pressure_pa, config_ay_m, method, check, threads,
+                   F1, Cout, X, Y, status, max_real)
     return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub), operating_speed_hz,
                            max_real)

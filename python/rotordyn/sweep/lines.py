@@ -10,6 +10,7 @@ import math
 
 import numpy as np
 
+from rotordyn import _core
 from rotordyn.errors import RotordynError
 from rotordyn.results.unbalance import UnbalanceResult
 from rotordyn.sweep import points as pt
@@ -29,11 +30,14 @@ def max_real(job, asm, p, r0, opts, exclude_sleeve):
     return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), e.status, np.asarray(e.r)
 
 
+_AXIS = {"speed_hz": _core.ThresholdAxis.speed,
+         "chamber_pressure_pa": _core.ThresholdAxis.chamber_pressure,
+         "config_ay_m": _core.ThresholdAxis.config}
+
+
 def threshold_line(job, variants, chunk_id, lo, hi, rows):
     """One row per crossing of max Re λ = 0 along the line [lo, hi) (the varied axis is
     innermost); a line without one is a ``no_crossing`` row."""
-    from scipy.optimize import brentq
-
     vary = job.options["vary"]
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     idx0, p0 = job.point(lo)
@@ -45,57 +49,50 @@ def threshold_line(job, variants, chunk_id, lo, hi, rows):
     row = pt.common_row(job, lo, chunk_id, idx0, p0, asm)
     row[f"i_{vary}"] = None
     opts = pt.point_options(job, p0)
-    xs, ys, fs, rs = [], [], [], []
-    r0 = None
-    evals = 0
+    xs, om, pcs, avs, valid = [], [], [], [], []
     for pid in range(lo, hi):
         _, p = job.point(pid)
-        try:
-            y, fr, st, r = max_real(job, asm, p, r0, opts, excl)
-        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError):
-            y, fr, r = math.nan, math.nan, None
-        evals += 1
-        r0 = r if r is not None else None
         xs.append(p[vary])
-        ys.append(y)
-        fs.append(fr)
-        rs.append(r)
-    found = 0
-    for i in range(len(xs) - 1):
-        y0, y1 = ys[i], ys[i + 1]
-        if not (math.isfinite(y0) and math.isfinite(y1)) or y0 * y1 >= 0:
-            continue
-        start = rs[i]
-        _, pbase = job.point(lo + i)
-
-        def g(x, pbase=pbase, start=start):
-            nonlocal evals
-            evals += 1
-            q = dict(pbase)
-            q[vary] = float(x)
-            y, _, _, _ = max_real(job, asm, q, start, opts, excl)
-            if not math.isfinite(y):
-                raise ArithmeticError("no equilibrium inside the bracket")
-            return y
-
-        span = abs(xs[i + 1] - xs[i])
         try:
-            x = brentq(g, xs[i], xs[i + 1], xtol=job.options.get("xtol", span * 1e-8),
-                       rtol=4 * np.finfo(float).eps, maxiter=100)
-            q = dict(pbase)
-            q[vary] = x
-            _, fr, _, _ = max_real(job, asm, q, start, opts, excl)
-            status, msg = "ok", ""
-        except (RotordynError, ArithmeticError, ValueError, RuntimeError) as exc:
-            x, fr, status, msg = math.nan, math.nan, "error", f"{type(exc).__name__}: {exc}"
+            f, pc, a = pt.operating(asm, p)
+            om.append(hz_to_rad_s(f))
+            pcs.append(pc)
+            avs.append(a)
+            valid.append(1)
+        except (RotordynError, ArithmeticError, ValueError):
+            om.append(math.nan)
+            pcs.append(math.nan)
+            avs.append(np.zeros(asm.n))
+            valid.append(0)
+    inp = _core.ThresholdLineInput()
+    inp.x, inp.omega, inp.pressure, inp.a, inp.valid = xs, om, pcs, np.array(avs), valid
+    inp.axis = _AXIS[vary]
+    if vary == "config_ay_m":
+        d = np.flatnonzero(asm.config_vector(1.0) != asm.config_vector(2.0))
+        inp.config_index = int(d[0]) if d.size == 1 else -1
+    inp.options = pt.equilibrium_options(opts)
+    inp.exclude_sleeve = excl
+    if "xtol" in job.options:
+        inp.xtol, inp.xtol_given = float(job.options["xtol"]), True
+    inp.xy_pairs, inp.rot_pairs = asm.rotor.xy_pairs(), asm.rotor.rot_pairs()
+    inp.sleeve = [i for bc in asm.bearings for i in bc.sleeve]
+    # one C++ call: the scan (equilibria continued along the line, eigen-analysis) and every
+    # sign change refined by Brent's method (SciPy's brentq, step for step)
+    res = _core.threshold_line(asm.solver, inp)
+    ys = np.asarray(res.y)
+    evals = len(xs)
+    found = 0
+    for i, x, fr, status, msg, evals in zip(res.bracket, res.root, res.root_freq, res.status,
+                                            res.message, res.evaluations):
+        y0 = ys[i]
         found += 1
-        speed = q["speed_hz"] if "speed_hz" in q else row["speed_hz"]
+        speed = x if vary == "speed_hz" else row["speed_hz"]
         rows.append({**row, vary: x, "crossing": found, "value": x,
                      "whirl_frequency_hz": fr, "whirl_ratio": fr / speed if speed else math.nan,
                      "stable_side": "below" if y0 < 0 else "above", "evaluations": evals,
                      "status": status, "message": msg})
     if not found:
-        good = [y for y in ys if math.isfinite(y)]
+        good = [y for y in ys.tolist() if math.isfinite(y)]
         what = ("no point of the line has an equilibrium" if not good else
                 f"{'unstable' if min(good) > 0 else 'stable'} at all {len(good)} points")
         rows.append({**row, vary: math.nan, "crossing": 0, "value": math.nan,
@@ -120,35 +117,39 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
     n = hi - lo
     X = np.full((n, len(stations)), np.nan + 0j)
     Y = np.full((n, len(stations)), np.nan + 0j)
-    base, status, msg, speeds = [], [], [], []
-    r0 = None
-    m = asm.model
-    M, C0, G, K0 = (np.asarray(x) for x in (m.M, m.C, m.G, m.K))
+    base, speeds, ops = [], [], []
+    status, msg = [None] * n, [None] * n
     for k, pid in enumerate(range(lo, hi)):
         idx, p = job.point(pid)
         base.append(pt.common_row(job, pid, chunk_id, idx, p, asm))
         speeds.append(p.get("speed_hz", 50.0))
         try:
-            f, pc, a = pt.operating(asm, p)
-            e = pt.solve_equilibrium(asm, f, pc, a, r0, opts)
-            status.append(e.status if e.status in pt.STATUS else "error")
-            msg.append(e.message)
-            if e.status not in pt.CONVERGED:
-                r0 = None
-                continue
-            r0 = np.asarray(e.r)
-            om = hz_to_rad_s(f)
-            lin = asm.solver.linearize(r0, np.zeros(asm.n), om)
-            Mw = np.asarray(m.mass_at(om)) if m.has_table_mass() else M  # table masses
-            Z = (K0 + np.asarray(lin.KH)) - om**2 * Mw + 1j * om * (C0 + om * G
-                                                                    + np.asarray(lin.DH))
-            q = np.linalg.solve(Z, om**2 * F1)
-            for j, Co in enumerate(Cout):
-                X[k, j], Y[k, j] = Co @ q
-        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
-            status.append("error")
-            msg.append(f"{type(exc).__name__}: {exc}")
-            r0 = None
+            ops.append(pt.operating(asm, p))
+        except (RotordynError, ArithmeticError, ValueError) as exc:
+            ops.append(None)
+            status[k], msg[k] = "error", f"{type(exc).__name__}: {exc}"
+    # runs of valid points: one C++ call each (equilibrium continued along the run, cold
+    # after a failure, K_H/D_H, the harmonic solve at each speed)
+    O = np.concatenate(Cout, axis=0)  # (2 n_out, n): x, y of each output station
+    k = 0
+    while k < n:
+        if ops[k] is None:
+            k += 1
+            continue
+        j = k
+        while j + 1 < n and ops[j + 1] is not None:
+            j += 1
+        run = ops[k:j + 1]
+        res = _core.unbalance_sweep(
+            asm.model, hz_to_rad_s(np.array([o[0] for o in run])),
+            np.array([o[1] for o in run]), np.array([o[2] for o in run]), np.zeros(0),
+            pt.equilibrium_options(opts), np.zeros((0, 0)), F1, O, False, 0.0, False, False,
+            [], [], 1, True)
+        Z = np.asarray(res.Y)
+        X[k:j + 1], Y[k:j + 1] = Z[:, 0::2], Z[:, 1::2]
+        for i, (st, m) in enumerate(zip(res.status, res.message)):
+            status[k + i], msg[k + i] = (st if st in pt.STATUS else "error"), m
+        k = j + 1
     res = UnbalanceResult(np.asarray(speeds), stations, X, Y, np.asarray(status),
                           tuple(map(tuple, ub)),
                           tuple(opts["operating_speed_hz"]) if "operating_speed_hz" in opts

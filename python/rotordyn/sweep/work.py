@@ -133,39 +133,63 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
 
 
 def _eq_rows(job, variants, chunk_id, lo, hi, rows):
-    r_prev = None
+    """Equilibria of a chunk through the C++ batch (one call per run of points sharing a
+    model and options, continued along the line from "ok" points, cold after a failure):
+    one row per bearing, or one error row for a point that raised."""
+    items = []  # [row, asm, opts, line, (f, pc, a) or None, error]
     for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
-        if err:
-            rows.append(fail_row(row, "error", err))
+        op = None
+        if not err:
+            try:
+                op = operating(asm, p)
+            except (RotordynError, ArithmeticError, ValueError) as exc:
+                err = str(exc)
+        items.append([row, asm, opts, line, op, err])
+    i = 0
+    while i < len(items):
+        if items[i][5]:
+            rows.append(fail_row(items[i][0], "error", items[i][5]))
+            i += 1
             continue
-        try:
-            f, pc, a = operating(asm, p)
-            e = solve_equilibrium(asm, f, pc, a, r_prev if line else None, opts)
-        except (RotordynError, ArithmeticError, ValueError) as exc:
-            rows.append(fail_row(row, "error", str(exc)))
-            r_prev = None
+        j = i
+        while j + 1 < len(items) and not items[j + 1][5] and items[j + 1][1] is items[i][1] \
+                and items[j + 1][2] == items[i][2]:
+            j += 1
+        _eq_batch(items[i:j + 1], rows)
+        i = j + 1
+
+
+def _eq_batch(seg, rows):
+    asm, opts = seg[0][1], seg[0][2]
+    restart = [1 if k == 0 or not it[3] else 0 for k, it in enumerate(seg)]
+    res = _core.equilibrium_batch(
+        asm.solver, np.array([hz_to_rad_s(it[4][0]) for it in seg]),
+        np.array([it[4][1] for it in seg]), np.array([it[4][2] for it in seg]), restart,
+        equilibrium_options(opts))
+    R, IT, RES = np.asarray(res.r), np.asarray(res.iterations), np.asarray(res.residual)
+    # per bearing (a tilting pad has a film per pad, a table bearing none: NaN)
+    HM = asm.bearing_h_min(np.asarray(res.h_min))
+    HZ = np.asarray(res.h_min_z_m)
+    for k, it in enumerate(seg):
+        st, msg = res.status[k], res.message[k]
+        if st == "error":  # the solve raised
+            rows.append(fail_row(it[0], "error", msg))
             continue
-        r = np.asarray(e.r)
-        r_prev = r if e.status == "ok" else None
-        # per bearing (a tilting pad has a film per pad, a table bearing none: NaN)
-        hmin = asm.bearing_h_min(np.asarray(e.h_min))
-        hz = np.asarray(e.h_min_z_m)
-        for k, bc in enumerate(asm.bearings):
-            ok = e.status in CONVERGED
-            x = r[bc.jx] if ok else math.nan
-            y = r[bc.jy] if ok else math.nan
+        ok = st in CONVERGED
+        for b, bc in enumerate(asm.bearings):
+            x = float(R[k, bc.jx]) if ok else math.nan
+            y = float(R[k, bc.jy]) if ok else math.nan
             c = bc.clearance_m if bc.clearance_m > 0 else math.nan  # a table: no clearance
             tilt = ok and bool(bc.rot)
-            rows.append({**row, "bearing": bc.name, "journal_x_m": x, "journal_y_m": y,
+            rows.append({**it[0], "bearing": bc.name, "journal_x_m": x, "journal_y_m": y,
                          "x_over_c": x / c, "y_over_c": y / c,
-                         "h_min_m": float(hmin[k]) if ok else math.nan,
-                         "iterations": int(e.iterations), "residual": float(e.residual),
-                         "journal_theta_x_rad": float(r[bc.rot[0]]) if tilt else math.nan,
-                         "journal_theta_y_rad": float(r[bc.rot[1]]) if tilt else math.nan,
-                         "h_min_z_m": float(hz[asm.film_owner.index(bc.index)]) if tilt
+                         "h_min_m": float(HM[k, b]) if ok else math.nan,
+                         "iterations": int(IT[k]), "residual": float(RES[k]),
+                         "journal_theta_x_rad": float(R[k, bc.rot[0]]) if tilt else math.nan,
+                         "journal_theta_y_rad": float(R[k, bc.rot[1]]) if tilt else math.nan,
+                         "h_min_z_m": float(HZ[k, asm.film_owner.index(bc.index)]) if tilt
                          else math.nan,
-                         "status": e.status if e.status in STATUS else "error",
-                         "message": e.message})
+                         "status": st if st in STATUS else "error", "message": msg})
 
 
 def _thermal_rows(job, variants, chunk_id, lo, hi, rows):

@@ -1,0 +1,47 @@
+// The threshold of instability along one sweep line (scan + Brent in one call, GIL released).
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "rotordyn/threshold.hpp"
+
+namespace rotordyn::py_bind {
+
+void bind_threshold(py::module_& m) {
+  py::enum_<ThresholdAxis>(m, "ThresholdAxis")
+      .value("speed", ThresholdAxis::Speed)
+      .value("chamber_pressure", ThresholdAxis::ChamberPressure)
+      .value("config", ThresholdAxis::Config);
+  py::class_<ThresholdLineInput>(m, "ThresholdLineInput")
+      .def(py::init<>())
+      .def_readwrite("x", &ThresholdLineInput::x)
+      .def_readwrite("omega", &ThresholdLineInput::omega)
+      .def_readwrite("pressure", &ThresholdLineInput::pressure)
+      .def_readwrite("a", &ThresholdLineInput::a)
+      .def_readwrite("axis", &ThresholdLineInput::axis)
+      .def_readwrite("config_index", &ThresholdLineInput::config_index)
+      .def_readwrite("options", &ThresholdLineInput::options)
+      .def_readwrite("exclude_sleeve", &ThresholdLineInput::exclude_sleeve)
+      .def_readwrite("xtol", &ThresholdLineInput::xtol)
+      .def_readwrite("xtol_given", &ThresholdLineInput::xtol_given)
+      .def_readwrite("max_iter", &ThresholdLineInput::max_iter)
+      .def_readwrite("xy_pairs", &ThresholdLineInput::xy_pairs)
+      .def_readwrite("rot_pairs", &ThresholdLineInput::rot_pairs)
+      .def_readwrite("sleeve", &ThresholdLineInput::sleeve)
+      .def_readwrite("valid", &ThresholdLineInput::valid);
+  py::class_<ThresholdLineResult>(m, "ThresholdLineResult")
+      .def_readonly("y", &ThresholdLineResult::y)
+      .def_readonly("freq", &ThresholdLineResult::freq)
+      .def_readonly("bracket", &ThresholdLineResult::bracket)
+      .def_readonly("root", &ThresholdLineResult::root)
+      .def_readonly("root_freq", &ThresholdLineResult::root_freq)
+      .def_readonly("status", &ThresholdLineResult::status)
+      .def_readonly("message", &ThresholdLineResult::message)
+      .def_readonly("evaluations", &ThresholdLineResult::evaluations);
+  m.def("threshold_line", &threshold_line, py::arg("solver"), py::arg("input"),
+        py::call_guard<py::gil_scoped_release>(),
+        "max Re lambda along a sweep line (equilibria continued) and every sign change "
+        "refined by Brent's method (SciPy's brentq steps).");
+}
+
+}  // namespace rotordyn::py_bind

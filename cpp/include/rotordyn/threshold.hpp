@@ -1,0 +1,51 @@
+// The threshold of instability along one line of a sweep in one call (issue 22): the scan of
+// max Re λ over the line's points (equilibrium continued along the line, K_H/D_H, the
+// eigen-analysis of eq. 19), then every sign change refined by Brent's method (the algorithm
+// of SciPy's brentq, step for step, so that the roots are those the Python loop found).
+#pragma once
+#include <Eigen/Core>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rotordyn/system.hpp"
+
+namespace rotordyn {
+
+/// The quantity varied along the line.
+enum class ThresholdAxis { Speed = 0, ChamberPressure = 1, Config = 2 };
+
+struct ThresholdLineInput {
+  Eigen::VectorXd x;            ///< (n_pts,) values of the varied axis (Hz, Pa or m)
+  Eigen::VectorXd omega;        ///< (n_pts,) spin speed of each point, rad/s
+  Eigen::VectorXd pressure;     ///< (n_pts,) chamber pressure, Pa
+  RowMatrixXd a;                ///< (n_pts, n) configuration vector
+  ThresholdAxis axis = ThresholdAxis::Speed;
+  int config_index = -1;        ///< Config: the entry of a set to x
+  EquilibriumOptions options;
+  bool exclude_sleeve = false;  ///< max Re λ over the rotor modes only
+  /// Brent's absolute tolerance; <= 0 with xtol_given false: 1e-8 × the bracket's width.
+  double xtol = 0.0;
+  bool xtol_given = false;
+  int max_iter = 100;
+  std::vector<std::pair<int, int>> xy_pairs, rot_pairs;
+  std::vector<int> sleeve;      ///< sleeve coordinates (mode kind by kinetic-energy share)
+  std::vector<int> valid;       ///< (n_pts,) 0: the point's operating values were refused (a failed point)
+};
+
+struct ThresholdLineResult {
+  Eigen::VectorXd y, freq;      ///< (n_pts,) max Re λ (1/s) and its frequency (Hz); NaN: failed
+  std::vector<int> bracket;     ///< per crossing: i of the bracket [x_i, x_{i+1}]
+  std::vector<double> root, root_freq;  ///< per crossing (NaN on error)
+  std::vector<std::string> status, message;  ///< per crossing: "ok" | "error", "<Error>: what"
+  std::vector<int> evaluations; ///< per crossing: evaluations of max Re λ so far on the line
+};
+
+/// Scan then refine, on `solver` (its state carried through, as the per-point loop did).
+/// Scan: each point starts from the previous point's equilibrium when that one converged
+/// (ok or contact) and was analysed, else cold. Brent: every evaluation in [x_i, x_{i+1}]
+/// starts from point i's equilibrium; no equilibrium there is an error of that crossing.
+ThresholdLineResult threshold_line(SystemSolver& solver, const ThresholdLineInput& in);
+
+}  // namespace rotordyn

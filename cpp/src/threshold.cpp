@@ -1,0 +1,229 @@
+// Threshold of instability along one sweep line in one call (see threshold.hpp).
+#include "rotordyn/threshold.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <exception>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "rotordyn/errors.hpp"
+#include "rotordyn/modal.hpp"
+
+namespace rotordyn {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The Python loop's exception classes, named in the crossing's message.
+struct ArithmeticFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+struct ValueFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::string named(const std::exception& ex) {
+  const char* cls = dynamic_cast<const ArithmeticFailure*>(&ex)  ? "ArithmeticError"
+                    : dynamic_cast<const ValueFailure*>(&ex)     ? "ValueError"
+                    : dynamic_cast<const InputError*>(&ex)       ? "InputError"
+                    : dynamic_cast<const ConvergenceError*>(&ex) ? "ConvergenceError"
+                    : dynamic_cast<const ContactError*>(&ex)     ? "ContactError"
+                    : dynamic_cast<const SundialsError*>(&ex)    ? "SundialsError"
+                                                                 : "RuntimeError";
+  return std::string(cls) + ": " + ex.what();
+}
+
+struct Point {
+  double y = kNaN, f = kNaN;
+  Eigen::VectorXd r;  ///< empty: no converged equilibrium
+};
+
+// max Re λ of eq. 19 at one operating point (the sweep's rule: every mode, the sleeve's own
+// left out with exclude_sleeve), from r0.
+Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, double pc,
+               const Eigen::VectorXd& a, const Eigen::VectorXd& r0) {
+  const SystemModel& m = s.model();
+  const Eigen::Index n = m.n();
+  const EquilibriumResult e = s.equilibrium(omega, pc, a, r0, in.options);
+  Point p;
+  if (e.status != "ok" && e.status != "contact") return p;
+  const Linearization lin = s.linearize(e.r, Eigen::VectorXd::Zero(n), omega);
+  const Eigen::MatrixXd M = m.has_table_mass() ? m.mass_at(omega) : m.M;
+  const Eigen::MatrixXd D = m.C + omega * m.G + lin.DH;
+  const Eigen::MatrixXd K = m.K + lin.KH;
+  if (!K.allFinite() || !D.allFinite())
+    throw ArithmeticFailure("non-finite bearing coefficients");
+  const ModalResult mr = modal(M, D, K, in.xy_pairs, static_cast<int>(n), true, in.rot_pairs);
+  if (!mr.eigenvalues.allFinite()) throw ArithmeticFailure("non-finite eigenvalues");
+  Eigen::Index best = -1;
+  for (Eigen::Index j = 0; j < mr.eigenvalues.size(); ++j) {
+    if (in.exclude_sleeve && !in.sleeve.empty()) {
+      const Eigen::VectorXcd phi = mr.modes.col(j);
+      const double kin = (phi.adjoint() * M * phi).real()(0, 0);
+      double ks = 0.0;
+      for (int i : in.sleeve)
+        for (int k : in.sleeve) ks += (std::conj(phi[i]) * M(i, k) * phi[k]).real();
+      if (ks > 0.5 * kin) continue;  // a sleeve mode
+    }
+    if (best < 0 || mr.eigenvalues[j].real() > mr.eigenvalues[best].real()) best = j;
+  }
+  if (best < 0) throw ValueFailure("attempt to get argmax of an empty sequence");
+  p.y = mr.eigenvalues[best].real();
+  p.f = mr.eigenvalues[best].imag() / (2.0 * M_PI);
+  p.r = e.r;
+  return p;
+}
+
+// Brent's method as SciPy's brentq (xtol, rtol, maxiter; the same steps): the root of g in
+// [xa, xb]; ValueFailure on a bad tolerance or no sign change, std::runtime_error when
+// maxiter is exhausted.
+template <class G>
+double brent(G&& g, double xa, double xb, double xtol, double rtol, int maxiter) {
+  if (!(xtol > 0)) {
+    std::ostringstream os;
+    os << "xtol too small (" << xtol << " <= 0)";
+    throw ValueFailure(os.str());
+  }
+  double xpre = xa, xcur = xb, xblk = 0.0, fblk = 0.0, spre = 0.0, scur = 0.0;
+  double fpre = g(xpre), fcur = g(xcur);
+  if (fpre == 0) return xpre;
+  if (fcur == 0) return xcur;
+  if (std::signbit(fpre) == std::signbit(fcur))
+    throw ValueFailure("f(a) and f(b) must have different signs");
+  for (int i = 0; i < maxiter; ++i) {
+    if (fpre != 0 && fcur != 0 && std::signbit(fpre) != std::signbit(fcur)) {
+      xblk = xpre;
+      fblk = fpre;
+      spre = scur = xcur - xpre;
+    }
+    if (std::abs(fblk) < std::abs(fcur)) {
+      xpre = xcur;
+      xcur = xblk;
+      xblk = xpre;
+      fpre = fcur;
+      fcur = fblk;
+      fblk = fpre;
+    }
+    const double delta = (xtol + rtol * std::abs(xcur)) / 2;
+    const double sbis = (xblk - xcur) / 2;
+    if (fcur == 0 || std::abs(sbis) < delta) return xcur;
+    if (std::abs(spre) > delta && std::abs(fcur) < std::abs(fpre)) {
+      double stry;
+      if (xpre == xblk) {
+        stry = -fcur * (xcur - xpre) / (fcur - fpre);  // secant
+      } else {  // inverse quadratic
+        const double dpre = (fpre - fcur) / (xpre - xcur);
+        const double dblk = (fblk - fcur) / (xblk - xcur);
+        stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre));
+      }
+      if (2 * std::abs(stry) < std::min(std::abs(spre), 3 * std::abs(sbis) - delta)) {
+        spre = scur;
+        scur = stry;
+      } else {
+        spre = sbis;
+        scur = sbis;
+      }
+    } else {
+      spre = sbis;
+      scur = sbis;
+    }
+    xpre = xcur;
+    fpre = fcur;
+    xcur += std::abs(scur) > delta ? scur : (sbis > 0 ? delta : -delta);
+    fcur = g(xcur);
+  }
+  std::ostringstream os;
+  os.precision(6);
+  os << std::fixed << "Failed to converge after " << maxiter << " iterations, value is " << xcur;
+  throw std::runtime_error(os.str());
+}
+
+}  // namespace
+
+ThresholdLineResult threshold_line(SystemSolver& solver, const ThresholdLineInput& in) {
+  const Eigen::Index np = in.x.size();
+  const Eigen::Index n = solver.model().n();
+  if (in.omega.size() != np || in.pressure.size() != np || in.a.rows() != np ||
+      in.a.cols() != n || static_cast<Eigen::Index>(in.valid.size()) != np)
+    throw InputError("threshold_line: expected x, omega, pressure, valid of length n_pts and "
+                     "a of shape (n_pts, n)");
+  if (in.axis == ThresholdAxis::Config && (in.config_index < 0 || in.config_index >= n))
+    throw InputError("threshold_line: config_index out of range");
+  ThresholdLineResult out;
+  out.y = Eigen::VectorXd::Constant(np, kNaN);
+  out.freq = Eigen::VectorXd::Constant(np, kNaN);
+  std::vector<Eigen::VectorXd> rs(static_cast<std::size_t>(np));
+  Eigen::VectorXd r0;
+  int evals = 0;
+  for (Eigen::Index i = 0; i < np; ++i) {
+    Point p;
+    if (in.valid[static_cast<std::size_t>(i)]) {
+      try {
+        p = max_real(solver, in, in.omega[i], in.pressure[i], in.a.row(i).transpose(), r0);
+      } catch (const std::exception&) {
+        p = Point();
+      }
+    }
+    ++evals;
+    r0 = p.r;
+    out.y[i] = p.y;
+    out.freq[i] = p.f;
+    rs[static_cast<std::size_t>(i)] = p.r;
+  }
+  const double rtol = 4 * std::numeric_limits<double>::epsilon();
+  for (Eigen::Index i = 0; i + 1 < np; ++i) {
+    const double y0 = out.y[i], y1 = out.y[i + 1];
+    if (!(std::isfinite(y0) && std::isfinite(y1)) || y0 * y1 >= 0) continue;
+    const Eigen::VectorXd& start = rs[static_cast<std::size_t>(i)];
+    // the operating point of x in this bracket: point i with the varied value replaced
+    auto at = [&](double x, double& omega, double& pc, Eigen::VectorXd& a) {
+      omega = in.omega[i];
+      pc = in.pressure[i];
+      a = in.a.row(i).transpose();
+      if (in.axis == ThresholdAxis::Speed) omega = x * (2.0 * M_PI);
+      else if (in.axis == ThresholdAxis::ChamberPressure) {
+        if (!(x >= 0) || !std::isfinite(x))
+          throw InputError("chamber_pressure_pa: expected a finite value >= 0");
+        pc = x;
+      } else a(in.config_index) = x;
+    };
+    auto g = [&](double x) {
+      ++evals;
+      double omega, pc;
+      Eigen::VectorXd a;
+      at(x, omega, pc, a);
+      const Point p = max_real(solver, in, omega, pc, a, start);
+      if (!std::isfinite(p.y)) throw ArithmeticFailure("no equilibrium inside the bracket");
+      return p.y;
+    };
+    const double span = std::abs(in.x[i + 1] - in.x[i]);
+    double x = kNaN, fr = kNaN;
+    std::string status = "ok", msg;
+    try {
+      x = brent(g, in.x[i], in.x[i + 1], in.xtol_given ? in.xtol : span * 1e-8, rtol,
+                in.max_iter);
+      double omega, pc;
+      Eigen::VectorXd a;
+      at(x, omega, pc, a);
+      fr = max_real(solver, in, omega, pc, a, start).f;
+    } catch (const std::exception& ex) {
+      x = kNaN;
+      fr = kNaN;
+      status = "error";
+      msg = named(ex);
+    }
+    out.bracket.push_back(static_cast<int>(i));
+    out.root.push_back(x);
+    out.root_freq.push_back(fr);
+    out.status.push_back(status);
+    out.message.push_back(msg);
+    out.evaluations.push_back(evals);
+  }
+  return out;
+}
+
+}  // namespace rotordyn
