@@ -3,7 +3,7 @@ through both critical speeds, and the adaptive 1× unbalance rejection in the no
 run-up, each beside its reference.
 
 Run:  .venv/bin/python docs/calibration/control_round2.py [--part aw|schedule|adaptive|all]
-      [--rate-hz-s 10] [--gamma 20]
+      [--rate-hz-s 10] [--gamma 20] [--washout-hz 0] [--refine-rounds 0] [--no-runup]
 Prints every number quoted in docs/control.md §2.4–2.6.
 """
 
@@ -127,17 +127,17 @@ def show(lab, tr, wall):
     return pk
 
 
-def design(rig, f, act, kw):
+def design(rig, f, act, kw, washout_hz):
     k, cl = tune_pd(plant(rig, f, 0.5e6, 0.0, actuator=act), **kw)
     print(f"[schedule] PD at {f:6.2f} Hz: k_p {k.info['kp']:.4g} Pa/m, k_d "
           f"{k.info['kd']:.4g} Pa s/m, min ζ {cl.min_damping:.4f}")
-    return k.with_washout(WASHOUT_HZ)
+    return k.with_washout(washout_hz) if washout_hz else k
 
 
-WASHOUT_HZ = 2.0  # as the feedback of §3.2: the equilibrium drifting in the run-up is no error
-
-
-def part_schedule(rate):
+def part_schedule(rate, washout_hz=0.0, rounds=0, runups=True):
+    """PD designs by tune_pd on a speed grid, scheduled; the dense stability check; designs
+    added where it fails (``rounds`` times); run-ups passive / fixed (38 Hz) / scheduled.
+    ``washout_hz`` > 0: each design behind a washout (as the feedback of §3.2)."""
     global tr_sys
     rig = rd.models.paper_rig()
     tr_sys = rig
@@ -146,24 +146,24 @@ def part_schedule(rate):
     t0 = time.perf_counter()
     designs, kw = {}, {}
     for f in grid:
-        designs[f] = design(rig, f, act, kw)
+        designs[f] = design(rig, f, act, kw, washout_hz)
         kw = dict(kp0=designs[f].info["kp"], kd0=designs[f].info["kd"])
     # the dense check between the designs; a design added where it fails (twice at most)
-    for rnd in range(3):
+    for rnd in range(rounds + 1):
         sp = np.array(sorted(designs))
         law = gain_schedule([designs[f] for f in sp], sp)
         st = schedule_stability(rig, law, chamber_pressure_pa=0.5e6, config_ay_m=0.0,
                                 actuator=act, n_between=4)
         f, w = st.worst
-        print(f"[schedule] round {rnd}: {sp.size} designs (washout {WASHOUT_HZ} Hz); dense "
+        print(f"[schedule] round {rnd}: {sp.size} designs (washout {washout_hz} Hz); dense "
               f"check over {st.speed_hz.size} speeds: stable {st.stable}; worst max Re λ "
               f"{w:.3f} 1/s at {f:.2f} Hz; least ζ {np.nanmin(st.min_damping):.4f} "
               f"({time.perf_counter() - t0:.0f} s so far)")
-        if st.stable or rnd == 2:
+        if st.stable or rnd == rounds:
             break
         bad = st.speed_hz[(st.max_real_1_per_s >= 0) & ~st.design]
         for f in bad:
-            designs[float(f)] = design(rig, float(f), act, {})
+            designs[float(f)] = design(rig, float(f), act, {}, washout_hz)
     fixed = designs[38.0]
     mr = np.array([closed_loop(plant(rig, f, 0.5e6, 0.0, actuator=act), fixed,
                                with_margins=False).max_real for f in st.speed_hz])
@@ -171,6 +171,8 @@ def part_schedule(rate):
           f"{mr.max():.3f} 1/s at {st.speed_hz[int(np.argmax(mr))]:.2f} Hz; unstable at "
           f"{int(np.sum(mr >= 0))} of {mr.size} speeds")
     res = {}
+    if not runups:
+        return res
     for lab, kk in (("passive 0.5 MPa", None), ("fixed PD (38 Hz)", fixed),
                     ("scheduled PD", law)):
         tr, wall = runup(rig, rate, controller=kk)
@@ -201,12 +203,15 @@ def main():
     ap.add_argument("--part", default="all", choices=["aw", "schedule", "adaptive", "all"])
     ap.add_argument("--rate-hz-s", type=float, default=10.0)
     ap.add_argument("--gamma", type=float, default=20.0)
+    ap.add_argument("--washout-hz", type=float, default=0.0)
+    ap.add_argument("--refine-rounds", type=int, default=0)
+    ap.add_argument("--no-runup", action="store_true")
     a = ap.parse_args()
     print(f"load at start: {load()}")
     if a.part in ("aw", "all"):
         part_aw()
     if a.part in ("schedule", "all"):
-        part_schedule(a.rate_hz_s)
+        part_schedule(a.rate_hz_s, a.washout_hz, a.refine_rounds, not a.no_runup)
     if a.part in ("adaptive", "all"):
         part_adaptive(a.rate_hz_s, a.gamma)
 
