@@ -9,10 +9,14 @@ References and tolerances:
   Y_u are identified from two runs with fixed commands (P = 0 and P = P*_lin, γ = 0); the
   adaptive law with that T̂ must land on P*_sim = −T⁺ Y_u within 4 % after 8 time constants
   (e^{-8} = 3e-4 of the start error; P averaged over 10 revolutions against its 2Ω ripple;
-  measured 2.9 % on the rig: the changing command rings the rig's lightly damped 38 Hz
+  measured 2.9 % on the rig at γ = 20 1/s: the changing command rings the rig's lightly damped 38 Hz
   modes, Re λ ≈ −0.3 1/s, which leak into the 1× fits of the identification), with the residual 1× journal orbit at the least-squares
   residual (+5 %). The linear model's own optimum (frequency responses of the plant) is
-  within 15 % of it (its model error: 4 % in Y_u on the rig).
+  within 15 % of it (its model error: 4 % in Y_u on the rig). On both the rig and the
+  compressor with an active bearing (not the rig) the converged P satisfies the first-order
+  optimality of the simulated plant: |T̂⁺ Y| < 1 % of |P|. The compressor's 1× response is
+  not affine in P (5–10 %: the cavitation set moves), so there only the optimality is
+  checked. γ = 5 1/s (the 2Ω ripple of P is γ/(2Ω) ≈ 1 %).
 - Bad adaptation gains (NaN, inf, < 0) raise an InputError naming adaptive.gain_1_per_s.
 """
 
@@ -30,6 +34,7 @@ from rotordyn.errors import InputError
 
 AY = 0.0
 MODELS = Path(__file__).parent / "data" / "models"
+GAMMA = 5.0
 
 
 @pytest.fixture(scope="module")
@@ -66,7 +71,7 @@ def linear_optimum(system, station, me, phase_deg, speed_hz, pc, act):
     return T, Yu, P, x[:n].real, (1j * w * x[:n]).real
 
 
-@pytest.mark.parametrize("case", ["rig"])
+@pytest.mark.parametrize("case", ["rig", "compressor"])
 def test_converges_to_the_least_squares_optimum(rig, case):
     if case == "rig":
         system, station, speed, pc, act = rig, 6, 50.0, 0.5e6, Actuator()
@@ -79,13 +84,14 @@ def test_converges_to_the_least_squares_optimum(rig, case):
                              chamber_pressure_pa=pc, config_ay_m=AY, actuator=act)
     assert np.allclose(law.influence[0], T, rtol=1e-12)
     eq = rd.equilibrium(system, speed, pc, AY)
-    from rotordyn.analysis.assembly import assembled
+    from rotordyn.analysis.measurement import measurement_matrix
 
-    bc = [b for b in assembled(system).bearings if b.active][0]
+    Cm, _ = measurement_matrix(system, [("journal", 0)])  # what the law measures
     kw = dict(unbalances=[(station, me, ph)], actuator=act, r0=eq.r + dr0, v0=v0)
 
     def measured(tr, t0):
-        return one_x(tr, t0, tr.r[:, bc.jx] - eq.r[bc.jx], tr.r[:, bc.jy] - eq.r[bc.jy])
+        y = np.hstack([tr.r - eq.r, tr.v]) @ Cm.T
+        return one_x(tr, t0, y[:, 0], y[:, 1])
 
     # The simulated plant's own influence coefficients and 1x response (gamma = 0, two fixed
     # commands): its least-squares optimum P*_sim (the linear model's differs by its error)
@@ -97,19 +103,28 @@ def test_converges_to_the_least_squares_optimum(rig, case):
         [("journal", 0)], [speed], [T], 0.0, p0_pa=P1), n_out=2001, **kw), t_id / 2)
     Tsim = (Y1 - Y0) / P1
     Psim = -(Tsim.conj() @ Y0) / np.vdot(Tsim, Tsim).real
-    gamma = 20.0
+    gamma = GAMMA
     adapt = AdaptiveRejection([("journal", 0)], [speed], [Tsim], gamma)
-    tr = rd.transient(system, 8.0 / gamma, speed, pc, AY, adaptive=adapt, n_out=4001, **kw)
+    tr = rd.transient(system, 8.0 / gamma, speed, pc, AY, adaptive=adapt, n_out=int(8000 / gamma) + 1, **kw)
     assert tr.status == "ok", tr.message
     # P ripples at 2Ω with relative amplitude ~ γ/(2Ω) (the instantaneous gradient):
     # averaged over the last 10 revolutions
     last = tr.t >= tr.t[-1] - 10 / speed
     P = complex(*tr.adaptive_states[last][:-1].mean(axis=0))
+    # first-order optimality on the simulated plant itself (holds whether or not its 1×
+    # response is exactly affine in P): the measured residual is orthogonal to T̂
+    Y = measured(tr, tr.t[-1] - 10 / speed)
+    grad = (Tsim.conj() @ Y) / np.vdot(Tsim, Tsim).real
+    assert abs(grad) < 0.01 * abs(P), (grad, P)
+    if case == "compressor":
+        # its 1× response is not affine in P to better than ~10 % (Y(P*/2) − (Y(0) + Y(P*))/2
+        # is 5–10 % of Y: the film's cavitation set moves), so P*_sim from two points is not
+        # its optimum; optimality above is the check
+        return
     assert abs(P - Psim) < 0.04 * abs(Psim), (P, Psim)
     # the linear model's optimum is close (its model error), and the residual 1x orbit is
     # the least-squares one
     assert abs(Pstar - Psim) < 0.15 * abs(Psim)
-    Y = measured(tr, tr.t[-1] - 10 / speed)
     res_ls = np.linalg.norm(Y0 + Tsim * Psim)
     assert np.linalg.norm(Y) < 1.05 * res_ls + 0.01 * np.linalg.norm(Y0)
 
