@@ -15,7 +15,7 @@ References and tolerances:
   within 15 % of it (its model error: 4 % in Y_u on the rig). On both the rig and the
   compressor with an active bearing (not the rig) the converged P satisfies the first-order
   optimality of the simulated plant: |T̂⁺ Y| < 1 % of |P|. The compressor's 1× response is
-  not affine in P (5–10 %: the cavitation set moves), so there only the optimality is
+  not affine in P (5–10 %; presumably the cavitation set moving), so there only the optimality is
   checked. γ = 5 1/s (the 2Ω ripple of P is γ/(2Ω) ≈ 1 %).
 - Bad adaptation gains (NaN, inf, < 0) raise an InputError naming adaptive.gain_1_per_s.
 """
@@ -118,7 +118,7 @@ def test_converges_to_the_least_squares_optimum(rig, case):
     assert abs(grad) < 0.01 * abs(P), (grad, P)
     if case == "compressor":
         # its 1× response is not affine in P to better than ~10 % (Y(P*/2) − (Y(0) + Y(P*))/2
-        # is 5–10 % of Y: the film's cavitation set moves), so P*_sim from two points is not
+        # is 5–10 % of Y; presumably the cavitation set moving), so P*_sim from two points is not
         # its optimum; optimality above is the check
         return
     assert abs(P - Psim) < 0.04 * abs(Psim), (P, Psim)

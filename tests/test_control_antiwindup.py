@@ -111,3 +111,24 @@ def test_recovers_faster_after_saturation(rig, rate_limit):
     assert res["plain"][0] > 0.13  # saturated beyond the episode: wound up
     assert res["aw"][0] < res["plain"][0] - 0.05, res
     assert res["aw"][1] < 0.5 * res["plain"][1], res
+
+
+def test_not_the_rig_compressor_with_an_active_bearing():
+    """The compressor with an active DE bearing: inside the limits bit for bit; with a
+    ±200 Pa valve (saturated) the anti-windup run differs and stays finite (the recovery
+    comparison is on the rig only)."""
+    s = rd.System.from_toml(MODELS / "compressor_active.toml")
+    k = pid(2e9, 2e5, 2e9 / 0.02)
+    aw = with_anti_windup(k)
+    kw = dict(disturbance_m=(0.0, 5e-6), n_out=101)
+    wide = Actuator(p_min_pa=0.0, p_max_pa=1e6)
+    a = rd.transient(s, 0.05, 60.0, 0.2e6, controller=k, actuator=wide, **kw)
+    b = rd.transient(s, 0.05, 60.0, 0.2e6, controller=aw, actuator=wide, **kw)
+    assert a.status == b.status == "ok"
+    assert np.array_equal(a.r, b.r) and np.array_equal(a.controller_states, b.controller_states)
+    narrow = Actuator(p_min_pa=0.2e6 - 200, p_max_pa=0.2e6 + 200)
+    c = rd.transient(s, 0.05, 60.0, 0.2e6, controller=k, actuator=narrow, **kw)
+    d = rd.transient(s, 0.05, 60.0, 0.2e6, controller=aw, actuator=narrow, **kw)
+    assert c.status == d.status == "ok"
+    assert not np.array_equal(c.controller_states, d.controller_states)
+    assert np.all(np.isfinite(d.r))
