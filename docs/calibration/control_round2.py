@@ -4,6 +4,7 @@ run-up, each beside its reference.
 
 Run:  .venv/bin/python docs/calibration/control_round2.py [--part aw|schedule|adaptive|all]
       [--rate-hz-s 10] [--gamma 20] [--washout-hz 0] [--refine-rounds 0] [--no-runup]
+      [--unbalance ST ME PH] [--passive]
 Prints every number quoted in docs/control.md §2.4–2.6.
 """
 
@@ -229,15 +230,20 @@ def part_schedule(rate, washout_hz=0.0, rounds=0, runups=True):
     return res
 
 
-def part_adaptive(rate, gamma):
+def part_adaptive(rate, gamma, passive=False, measure="both"):
     global tr_sys
     rig = rd.models.paper_rig()
     tr_sys = rig
     act = Actuator()
+    if passive:
+        tr, wall = runup(rig, rate)
+        show("passive 0.5 MPa", tr, wall)
     grid = np.arange(10.0, 120.01, 1.0)
     grid = np.unique(np.concatenate([grid, np.arange(35.0, 42.0, 0.1),
                                      np.arange(84.0, 94.0, 0.1)]))
     for lab, meas in (("disk B", [("displacement", DISK)]), ("journal", [("journal", 0)])):
+        if measure not in ("both", lab.split()[0]):
+            continue
         t0 = time.perf_counter()
         law = adaptive_rejection(rig, grid, meas, gamma, chamber_pressure_pa=0.5e6,
                                  config_ay_m=0.0, actuator=act)
@@ -256,7 +262,16 @@ def main():
     ap.add_argument("--washout-hz", type=float, default=0.0)
     ap.add_argument("--refine-rounds", type=int, default=0)
     ap.add_argument("--no-runup", action="store_true")
+    ap.add_argument("--unbalance", nargs=3, type=float, metavar=("ST", "ME", "PH"),
+                    help="station, kg m, deg (default: 2e-5 kg m at disk B, 0 deg)")
+    ap.add_argument("--measure", default="both", choices=["both", "disk", "journal"])
+    ap.add_argument("--passive", action="store_true",
+                    help="with --part adaptive: also the passive run-up at 0.5 MPa")
     a = ap.parse_args()
+    global UB
+    if a.unbalance:
+        UB = [(int(a.unbalance[0]), a.unbalance[1], a.unbalance[2])]
+    print(f"unbalance {UB}")
     print(f"load at start: {load()}")
     if a.part in ("aw", "all"):
         part_aw()
@@ -265,7 +280,7 @@ def main():
     if a.part in ("schedule-grid", "all"):
         part_schedule_grid(a.rate_hz_s, a.washout_hz or 2.0)
     if a.part in ("adaptive", "all"):
-        part_adaptive(a.rate_hz_s, a.gamma)
+        part_adaptive(a.rate_hz_s, a.gamma, a.passive, a.measure)
 
 
 if __name__ == "__main__":
