@@ -253,10 +253,34 @@ def part_adaptive(rate, gamma, passive=False, measure="both"):
         show(f"adaptive 1× on {lab}", tr, wall)
 
 
+def part_bound():
+    """The synchronous bound (§3.2) for the unbalance UB with the mean pressure held at
+    0.5 MPa (each station alone): the steady 1× orbit any 1× command on 0.5 MPa can reach."""
+    from rotordyn.control.synchronous import synchronous_bound
+
+    rig = rd.models.paper_rig()
+    sp = np.unique(np.concatenate([np.arange(10.0, 120.01, 1.0), np.arange(35.0, 42.0, 0.1),
+                                   np.arange(84.0, 94.0, 0.1)]))
+    for name, st in (("journal", JOURNAL), ("disk B", DISK)):
+        t0 = time.perf_counter()
+        sb = synchronous_bound(rig, UB, sp, [0.5e6], stations=[st], config_ay_m=0.0,
+                               actuator=Actuator())
+        pas, opt = sb.passive_m[:, 0, 0] * 1e6, sb.optimal_m[:, 0, 0] * 1e6
+        lo, hi = sp < SPLIT, sp >= SPLIT
+        out = []
+        for m in (lo, hi):
+            i = int(np.nanargmax(np.where(m, pas, -1)))
+            j = int(np.nanargmax(np.where(m, opt, -1)))
+            out.append(f"passive {pas[i]:.2f} µm ({sp[i]:.1f} Hz), 1× on 0.5 MPa "
+                       f"{opt[j]:.2f} µm ({sp[j]:.1f} Hz)")
+        print(f"[bound] {UB} {name}: < 65 Hz: {out[0]}; >= 65 Hz: {out[1]} "
+              f"({time.perf_counter() - t0:.1f} s)")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--part", default="all",
-                    choices=["aw", "schedule", "schedule-grid", "adaptive", "all"])
+                    choices=["aw", "schedule", "schedule-grid", "adaptive", "bound", "all"])
     ap.add_argument("--rate-hz-s", type=float, default=10.0)
     ap.add_argument("--gamma", type=float, default=20.0)
     ap.add_argument("--washout-hz", type=float, default=0.0)
@@ -279,6 +303,8 @@ def main():
         part_schedule(a.rate_hz_s, a.washout_hz, a.refine_rounds, not a.no_runup)
     if a.part in ("schedule-grid", "all"):
         part_schedule_grid(a.rate_hz_s, a.washout_hz or 2.0)
+    if a.part in ("bound", "all"):
+        part_bound()
     if a.part in ("adaptive", "all"):
         part_adaptive(a.rate_hz_s, a.gamma, a.passive, a.measure)
 
