@@ -1,6 +1,10 @@
 """Benchmark: the nonlinear rig with the active bearing under feedback (issue 8).
 
-Run ``python benchmarks/bench_control.py [--repeat 3] [--t-sim 0.2] [--no-scipy] [--no-runup]``.
+Run ``python benchmarks/bench_control.py [--repeat 3] [--t-sim 0.2] [--no-scipy] [--no-runup]
+[--laws-only | --no-laws]``.
+
+* **laws** (issue 24) — cost per right-hand side of the gain-scheduled PD and of the adaptive
+  1× command against the fixed PD on one run-up segment (goal: ≤ 20 % extra);
 
 * **closed loop** — paper rig, a_y = −1.85 mm, 50 Hz, p_c = 0.05 MPa (linearly unstable
   without control), 0.1 c disturbance, the tuned PD law + 100 Hz second-order valve, one CVODE
@@ -147,6 +151,49 @@ def equal_accuracy_cost(points, err_target):
     return None
 
 
+def laws(rig, act, repeat):
+    """Issue 24: cost per right-hand side of the gain-scheduled PD and of the adaptive 1×
+    command against the fixed PD, on one run-up segment (30 → 60 Hz in 0.3 s, a_y = 0,
+    0.5 MPa, the valve, 2e-5 kg m at disk B). Interleaved repeats, medians of CPU time."""
+    from rotordyn.control.adaptive import adaptive_rejection
+    from rotordyn.control.gain_schedule import gain_schedule
+    from rotordyn.control.pid import pid
+
+    fixed = pid(1.0e9, 2.5e6)
+    sched = gain_schedule([pid(0.8e9, 2.0e6), pid(1.0e9, 2.5e6), pid(1.2e9, 3.0e6),
+                           pid(1.0e9, 2.0e6)], [25.0, 40.0, 50.0, 65.0])
+    ad = adaptive_rejection(rig, [25.0, 40.0, 50.0, 65.0], [("displacement", 6)], 20.0,
+                            chamber_pressure_pa=0.5e6, config_ay_m=0.0, actuator=act)
+    prof = SpeedProfile.ramp(30.0, 60.0, 100.0)
+    kw = dict(chamber_pressure_pa=0.5e6, config_ay_m=0.0, speed=prof, actuator=act,
+              unbalances=[(6, 2e-5, 0.0)], n_out=301, rtol=RTOL, atol_m=ATOL)
+    cases = {"fixed PD": dict(controller=fixed), "scheduled PD": dict(controller=sched),
+             "adaptive 1x": dict(adaptive=ad), "fixed PD + adaptive 1x":
+             dict(controller=fixed, adaptive=ad)}
+    res = {name: [] for name in cases}
+    kw0 = dict(kw, n_out=2)
+    for _ in range(repeat):
+        for name, extra in cases.items():
+            tr, wall, cpu = timed(lambda: rd.transient(rig, 0.3, **kw, **extra))
+            assert tr.status == "ok", tr.message
+            # the call's fixed costs (equilibrium, set-up): the same call over 1 ms
+            tr0, _, cpu0 = timed(lambda: rd.transient(rig, 1e-3, **kw0, **extra))
+            res[name].append((wall, cpu, tr.stats["rhs_evals"], cpu0, tr0.stats["rhs_evals"]))
+    base = base2 = None
+    for name, rows in res.items():
+        wall = statistics.median(r[0] for r in rows)
+        cpu = statistics.median(r[1] for r in rows)
+        per = statistics.median(r[1] / r[2] for r in rows)
+        per2 = statistics.median((r[1] - r[3]) / (r[2] - r[4]) for r in rows)
+        base = per if base is None else base
+        base2 = per2 if base2 is None else base2
+        print(f"[laws] {name:24s}: wall {wall:.3f} s, CPU {cpu:.3f} s, {rows[0][2]} RHS, "
+              f"{1e6 * per:.1f} µs CPU per RHS ({100 * (per / base - 1):+.1f} % vs the fixed "
+              f"PD); without the call's fixed costs {1e6 * per2:.1f} µs "
+              f"({100 * (per2 / base2 - 1):+.1f} %; goal <= +20 %)")
+    print(f"[laws] load: {load()}")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--repeat", type=int, default=3)
@@ -156,10 +203,18 @@ def main():
     ap.add_argument("--no-runup", action="store_true")
     ap.add_argument("--no-python-film", action="store_true",
                     help="skip the SciPy row whose film is NumPy/SciPy too (~1 min)")
+    ap.add_argument("--laws-only", action="store_true",
+                    help="only the fixed / scheduled / adaptive law comparison (issue 24)")
+    ap.add_argument("--no-laws", action="store_true")
     args = ap.parse_args()
     print(f"load before: {load()}  (2 shared cores: figures are noisy)")
     rig = rd.models.paper_rig()
     act = Actuator()
+    if not args.no_laws:
+        laws(rig, act, args.repeat)
+        if args.laws_only:
+            print(f"load after: {load()}")
+            return
     k, cl = tune_pd(plant(rig, F, PC, AY, measurements=[("journal", 0)], actuator=act))
     print(f"PD: closed-loop max Re λ = {cl.max_real:.2f} 1/s; t_sim = {args.t_sim} s")
     kw = dict(disturbance_m=(0.0, 0.1 * C), n_out=201, rtol=RTOL, atol_m=ATOL)

@@ -65,6 +65,25 @@ double profile_angle(const SpeedProfile& s, double omega_const, double t) {
   return integral_to(t) - integral_to(0.0);
 }
 
+void validate_adaptive(const AdaptiveHarmonic& h, Eigen::Index n) {
+  if (!h.enabled) return;
+  const Eigen::Index ny = h.measurement.rows(), ng = h.table_omega.size();
+  require(std::isfinite(h.gain) && h.gain >= 0,
+          "adaptive.gain: expected a finite adaptation gain >= 0 1/s");
+  require(std::isfinite(h.order) && h.order > 0, "adaptive.order: expected > 0");
+  require(ny >= 1 && h.measurement.cols() == 2 * n,
+          shape_msg("adaptive.measurement", ny, 2 * n, h.measurement.rows(),
+                    h.measurement.cols()));
+  require(h.offset.size() == ny, shape_msg("adaptive.offset", ny, 1, h.offset.size(), 1));
+  require(ng >= 1 && h.table_re.rows() == ng && h.table_re.cols() == ny &&
+              h.table_im.rows() == ng && h.table_im.cols() == ny,
+          shape_msg("adaptive.table_re/table_im", ng, ny, h.table_re.rows(), h.table_re.cols()));
+  require(h.table_omega.allFinite() && increasing(h.table_omega) && h.table_re.allFinite() &&
+              h.table_im.allFinite() && h.measurement.allFinite() && h.offset.allFinite() &&
+              std::isfinite(h.p0_re) && std::isfinite(h.p0_im),
+          "adaptive: expected strictly increasing finite speeds and finite tables");
+}
+
 void validate_operation(const SpeedProfile& s, const PressureCommand& p, const Actuator& a,
                         const Controller& c, Eigen::Index n, double t_end) {
   require(s.t.size() == s.omega.size(), "speed_profile: t and omega must have the same length");
@@ -122,6 +141,21 @@ void validate_operation(const SpeedProfile& s, const PressureCommand& p, const A
   require(c.A.allFinite() && c.B.allFinite() && c.C.allFinite() && c.D.allFinite() &&
               c.measurement.allFinite() && c.offset.allFinite() && c.x0.allFinite(),
           "controller: matrices must be finite");
+  require(c.tracking.size() == 0 || c.tracking.size() == nk,
+          shape_msg("controller.tracking", nk, 1, c.tracking.size(), 1));
+  require(c.tracking.allFinite(), "controller.tracking: expected a finite anti-windup gain");
+  require(c.tracking.size() == 0 || c.sample_time == 0,
+          "controller.tracking: anti-windup is built for a continuous controller only");
+  if (c.scheduled()) {
+    const Eigen::Index ng = c.schedule_omega.size(), w = nk * nk + nk * ny + nk + ny;
+    require(c.schedule_law.rows() == ng && c.schedule_law.cols() == w,
+            shape_msg("controller.schedule_law", ng, w, c.schedule_law.rows(),
+                      c.schedule_law.cols()));
+    require(c.schedule_omega.allFinite() && increasing(c.schedule_omega) &&
+                c.schedule_law.allFinite(),
+            "controller.schedule_omega: expected strictly increasing finite speeds and a "
+            "finite law at each");
+  }
   require(std::isfinite(c.sample_time) && c.sample_time >= 0,
           "controller.sample_time: expected >= 0 s (0: continuous)");
   require(std::isfinite(c.delay) && c.delay >= 0 && c.delay <= c.sample_time,

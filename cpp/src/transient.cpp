@@ -84,7 +84,46 @@ struct Ctx {
   // smooth inside every step.
   bool rate_switched = false;
   int rate_mode = 0;
+  bool aw = false;  // back-calculation anti-windup on the continuous controller's states
+  bool ad = false;         // adaptive 1× command: states [P_r, P_i] at index iad
+  Eigen::Index iad = 0;
+  // Gain schedule: the law's matrices at law_omega (interpolated once per new speed).
+  mutable Eigen::MatrixXd Ak, Bk, Ck, Dk;
+  mutable double law_omega = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The controller's matrices at the speed Ω: the fixed law's own, or the schedule's
+// interpolation y_i + (y_{i+1} − y_i) s (as interp_table; constant outside the grid).
+struct Law {
+  const Eigen::MatrixXd &A, &B, &C, &D;
+};
+
+Law law_at(const Ctx& c, double omega) {
+  const Controller& k = c.in->controller;
+  if (!k.scheduled()) return {k.A, k.B, k.C, k.D};
+  if (omega != c.law_omega) {
+    const Eigen::VectorXd& x = k.schedule_omega;
+    const Eigen::Index ng = x.size();
+    Eigen::VectorXd row;
+    if (omega <= x(0)) row = k.schedule_law.row(0).transpose();
+    else if (omega >= x(ng - 1)) row = k.schedule_law.row(ng - 1).transpose();
+    else {
+      const Eigen::Index i =
+          static_cast<Eigen::Index>(std::upper_bound(x.data(), x.data() + ng, omega) - x.data()) - 1;
+      const double s = (omega - x(i)) / (x(i + 1) - x(i));
+      row = (k.schedule_law.row(i) + (k.schedule_law.row(i + 1) - k.schedule_law.row(i)) * s)
+                .transpose();
+    }
+    const Eigen::Index nk = k.A.rows(), ny = k.D.cols();
+    Eigen::Index o = 0;
+    c.Ak = Eigen::Map<const Eigen::MatrixXd>(row.data() + o, nk, nk); o += nk * nk;
+    c.Bk = Eigen::Map<const Eigen::MatrixXd>(row.data() + o, nk, ny); o += nk * ny;
+    c.Ck = Eigen::Map<const Eigen::MatrixXd>(row.data() + o, 1, nk); o += nk;
+    c.Dk = Eigen::Map<const Eigen::MatrixXd>(row.data() + o, 1, ny);
+    c.law_omega = omega;
+  }
+  return {c.Ak, c.Bk, c.Ck, c.Dk};
+}
 
 // Everything the right-hand side and the Jacobian share at (t, y).
 struct Point {
@@ -94,6 +133,7 @@ struct Point {
   double cmd = 0.0;       // command before saturation
   double csat = 0.0;      // saturated command
   double pc = 0.0;        // actual chamber pressure
+  double ck = 1.0, sk = 0.0;  // cos kθ, sin kθ of the adaptive command
 };
 
 Eigen::VectorXd noise_at(const Ctx& c, double t) {
@@ -144,12 +184,19 @@ Point evaluate(const Ctx& c, double t, const double* y) {
   if (c.kcont) {
     P.ym = measure(c, y, t);
     Eigen::Map<const Eigen::VectorXd> xk(y + 2 * c.n + c.na, c.nk);
-    P.u = (in.controller.C * xk + in.controller.D * P.ym)(0);
+    const Law L = law_at(c, P.omega);
+    P.u = (L.C * xk + L.D * P.ym)(0);
   } else if (c.kdisc) {
     P.u = c.u_hold;
   }
   const Actuator& a = in.actuator;
   P.cmd = base_command(c, t, P.omega, P.theta) + P.u;
+  if (c.ad) {
+    const double arg = in.adaptive.order * P.theta;
+    P.ck = std::cos(arg);
+    P.sk = std::sin(arg);
+    P.cmd += y[c.iad] * P.ck - y[c.iad + 1] * P.sk;
+  }
   P.csat = clip(P.cmd, a.p_min, a.p_max);
   P.pc = a.order == 0 ? P.csat : clip(y[2 * c.n], a.p_min, a.p_max);
   return P;
@@ -173,6 +220,19 @@ double limited_rate(const Ctx& c, double unlimited) {
 // discrete controller's sample, where the held command jumps).
 int rate_mode_of(double unlimited, double R) {
   return unlimited >= R ? 1 : (unlimited <= -R ? -1 : 0);
+}
+
+// Back-calculation anti-windup: û − u, the command the valve follows minus the requested one.
+// Magnitude: clip(cmd) − cmd, exactly 0 inside [p_min, p_max]. While the rate is limited
+// (ṗ = ṗ_lim ≠ ṗ_u) the valve follows the command whose unlimited lag moves p at ṗ_lim:
+// order 1 p + τ ṗ_lim, order 2 (a steady ramp) p + 2ζ/ω_n ṗ_lim; at the switch (ṗ_u = ±R) the
+// first-order value equals clip(cmd), so the correction is continuous there.
+double windup_excess(const Ctx& c, const Point& P, const double* y, double rate_u,
+                     double rate_lim) {
+  const Actuator& a = c.in->actuator;
+  if (a.order == 0 || rate_lim == rate_u) return P.csat - P.cmd;
+  const double lag = a.order == 1 ? a.time_constant : 2 * a.damping / a.natural_frequency;
+  return y[2 * c.n] + lag * rate_lim - P.cmd;
 }
 
 // Switching surfaces: g0 = ṗ_u − R, g1 = ṗ_u + R (ṗ_u the unlimited rate).
@@ -212,6 +272,36 @@ void mass_at_speed(Ctx& c, double omega) {
   c.mass_omega = omega;
 }
 
+// The adaptive law's update row G(Ω) (interpolated as interp_table) and the measured
+// signals y; returns z = Σ_j G_j y_j e^{−ikθ} as (re, im) and, for the Jacobian, the rows
+// dre/dy and dim/dy over the measurements.
+struct AdaptiveTerms {
+  double re = 0.0, im = 0.0;
+  Eigen::RowVectorXd wre, wim;  // (n_y) so that re = wre · y, im = wim · y
+};
+
+AdaptiveTerms adaptive_terms(const Ctx& c, const Point& P, const double* y, bool want_y) {
+  const AdaptiveHarmonic& h = c.in->adaptive;
+  const Eigen::Index ny = h.measurement.rows();
+  AdaptiveTerms T;
+  T.wre.resize(ny);
+  T.wim.resize(ny);
+  for (Eigen::Index j = 0; j < ny; ++j) {
+    const double gr = interp_table(h.table_omega, h.table_re.col(j), P.omega);
+    const double gi = interp_table(h.table_omega, h.table_im.col(j), P.omega);
+    // (gr + i gi)(cos − i sin)
+    T.wre(j) = gr * P.ck + gi * P.sk;
+    T.wim(j) = gi * P.ck - gr * P.sk;
+  }
+  if (want_y) {
+    Eigen::Map<const Eigen::VectorXd> rv(y, 2 * c.n);
+    const Eigen::VectorXd ym = h.measurement * rv - h.offset;
+    T.re = T.wre.dot(ym);
+    T.im = T.wim.dot(ym);
+  }
+  return T;
+}
+
 int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
   Ctx& c = *static_cast<Ctx*>(user);
   const Eigen::Index n = c.n;
@@ -237,14 +327,30 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     Yd.segment(n, n) = c.Mllt.solve(rhs_f);
     const Actuator& a = in.actuator;
     const Eigen::Index ia = 2 * n;
-    if (a.order >= 1) Yd(ia) = limited_rate(c, unlimited_rate(c, P, yp));
+    double rate_u = 0.0, rate_lim = 0.0;
+    if (a.order >= 1) {
+      rate_u = unlimited_rate(c, P, yp);
+      rate_lim = limited_rate(c, rate_u);
+      Yd(ia) = rate_lim;
+    }
     if (a.order == 2) {
       const double w = a.natural_frequency;
       Yd(ia + 1) = w * w * (P.csat - Y(ia)) - 2 * a.damping * w * Y(ia + 1);
     }
     if (c.kcont) {
       const Controller& k = in.controller;
-      Yd.tail(c.nk) = k.A * Y.tail(c.nk) + k.B * P.ym;
+      const Law L = law_at(c, P.omega);
+      Yd.segment(2 * n + c.na, c.nk) = L.A * Y.segment(2 * n + c.na, c.nk) + L.B * P.ym;
+      if (c.aw) {
+        const double d = windup_excess(c, P, yp, rate_u, rate_lim);
+        if (d != 0.0) Yd.segment(2 * n + c.na, c.nk) += k.tracking * d;  // inside: untouched
+      }
+    }
+    if (c.ad) {
+      const AdaptiveTerms T = adaptive_terms(c, P, yp, true);
+      const double g2 = 2.0 * in.adaptive.gain;
+      Yd(c.iad) = -g2 * T.re;
+      Yd(c.iad + 1) = -g2 * T.im;
     }
   });
 }
@@ -267,14 +373,19 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
     Jm.block(0, n, n, n).setIdentity();
     Jm.block(n, 0, n, n) = -c.Mllt.solve(m.K + lin.KH);
     Jm.block(n, n, n, n) = -c.Mllt.solve(m.C + P.omega * m.G + lin.DH);
-    if (c.na == 0 && !c.kcont) return;
+    if (c.na == 0 && !c.kcont && !c.ad) return;
     const Actuator& a = in.actuator;
     // d(command)/dy: only a continuous controller makes it depend on the state.
     Eigen::RowVectorXd dcmd = Eigen::RowVectorXd::Zero(N);
     if (c.kcont) {
       const Controller& k = in.controller;
-      dcmd.head(2 * n) = k.D * k.measurement;
-      dcmd.tail(c.nk) = k.C;
+      const Law L = law_at(c, P.omega);
+      dcmd.head(2 * n) = L.D * k.measurement;
+      dcmd.segment(2 * n + c.na, c.nk) = L.C;
+    }
+    if (c.ad) {
+      dcmd(c.iad) = P.ck;
+      dcmd(c.iad + 1) = -P.sk;
     }
     const double s_c = (P.cmd > a.p_min && P.cmd < a.p_max) ? 1.0 : 0.0;
     const Eigen::Index ia = 2 * n;
@@ -300,8 +411,29 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
     if (c.kcont) {
       const Controller& k = in.controller;
       const Eigen::Index ik = 2 * n + c.na;
-      Jm.block(ik, 0, c.nk, 2 * n) = k.B * k.measurement;
-      Jm.block(ik, ik, c.nk, c.nk) = k.A;
+      const Law L = law_at(c, P.omega);
+      Jm.block(ik, 0, c.nk, 2 * n) = L.B * k.measurement;
+      Jm.block(ik, ik, c.nk, c.nk) = L.A;
+      if (c.aw) {
+        // d(û − u)/dy: −dcmd while saturated or rate limited (+ e_p in the rate-limited form)
+        bool limited = false;
+        if (a.order >= 1) {
+          const double ru = unlimited_rate(c, P, yp);
+          limited = limited_rate(c, ru) != ru;
+        }
+        if (limited || s_c == 0.0) {
+          Eigen::RowVectorXd dd = -dcmd;
+          if (limited) dd(ia) += 1.0;
+          Jm.block(ik, 0, c.nk, N) += k.tracking * dd;
+        }
+      }
+    }
+    if (c.ad) {
+      const AdaptiveTerms T = adaptive_terms(c, P, yp, false);
+      const double g2 = 2.0 * in.adaptive.gain;
+      const Eigen::MatrixXd& Cm = in.adaptive.measurement;
+      Jm.block(c.iad, 0, 1, 2 * n) = -g2 * T.wre * Cm;
+      Jm.block(c.iad + 1, 0, 1, 2 * n) = -g2 * T.wim * Cm;
     }
   });
 }
@@ -354,7 +486,11 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   c.kcont = K.enabled && K.sample_time == 0.0;
   c.kdisc = K.enabled && K.sample_time > 0.0;
   c.nk = c.kcont ? K.n_states() : 0;
-  c.N = 2 * n + c.na + c.nk;
+  c.aw = c.kcont && c.nk > 0 && K.tracking.size() == c.nk;
+  validate_adaptive(in.adaptive, n);
+  c.ad = in.adaptive.enabled;
+  c.iad = 2 * n + c.na + c.nk;
+  c.N = 2 * n + c.na + c.nk + (c.ad ? 2 : 0);
   c.Mllt.compute(m.M);
   require(c.Mllt.info() == Eigen::Success, "M: the mass matrix must be positive definite");
   c.F0 = m.Q - m.K * in.a;
@@ -380,6 +516,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   out.actuator_states = Eigen::MatrixXd::Constant(nt, c.na, NAN);
   const Eigen::Index nks = K.enabled ? K.n_states() : 0;
   out.controller_states = Eigen::MatrixXd::Constant(nt, nks, NAN);
+  out.adaptive_states = Eigen::MatrixXd::Constant(nt, c.ad ? 2 : 0, NAN);
 
   std::unique_ptr<SUNContext, cvode_detail::SunContextDeleter> sunctx(new SUNContext(nullptr));
   if (SUNContext_Create(nullptr, sunctx.get()) != 0)
@@ -414,8 +551,13 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   AT.head(n).setConstant(opt.atol_position);
   AT.segment(n, n).setConstant(opt.atol_velocity);
   if (c.kcont) {
-    Y.tail(c.nk) = K.x0.size() ? K.x0 : Eigen::VectorXd::Zero(c.nk);
-    AT.tail(c.nk).setConstant(opt.atol_controller);
+    Y.segment(2 * n + c.na, c.nk) = K.x0.size() ? K.x0 : Eigen::VectorXd::Zero(c.nk);
+    AT.segment(2 * n + c.na, c.nk).setConstant(opt.atol_controller);
+  }
+  if (c.ad) {
+    Y(c.iad) = in.adaptive.p0_re;
+    Y(c.iad + 1) = in.adaptive.p0_im;
+    AT(c.iad) = AT(c.iad + 1) = opt.atol_pressure;
   }
   if (c.kdisc) {
     c.xk = K.x0.size() ? K.x0 : Eigen::VectorXd::Zero(K.n_states());
@@ -425,8 +567,9 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   const bool delayed = c.kdisc && K.delay > 0.0;
   auto sample = [&](double ts) {
     const Eigen::VectorXd ym = measure(c, Y.data(), ts);
-    const double u = (K.C * c.xk + K.D * ym)(0);
-    c.xk = K.A * c.xk + K.B * ym;
+    const Law L = law_at(c, profile_speed(in.speed, in.omega, ts));
+    const double u = (L.C * c.xk + L.D * ym)(0);
+    c.xk = L.A * c.xk + L.B * ym;
     if (delayed) {
       c.u_next = u;
       c.pending = true;
@@ -642,7 +785,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     out.pc(i) = P.pc;
     out.controller_output(i) = P.u;
     if (c.na) out.actuator_states.row(i) = Yo.segment(2 * n, c.na).transpose();
-    if (c.kcont) out.controller_states.row(i) = Yo.tail(c.nk).transpose();
+    if (c.kcont) out.controller_states.row(i) = Yo.segment(2 * n + c.na, c.nk).transpose();
+    if (c.ad) out.adaptive_states.row(i) = Yo.segment(c.iad, 2).transpose();
     if (c.kdisc) out.controller_states.row(i) = c.xk.transpose();
     // The film thickness needs no pressure: from the geometry, not a Reynolds solve.
     const std::vector<double> hm = solver.film_h_min(Yo.head(n));

@@ -73,10 +73,43 @@ struct Controller {
   /// t_k + delay (the controller's computation time); 0 is applied at t_k. Before the first
   /// application the command increment is 0.
   double delay = 0.0;
+  /// (n_k,) back-calculation anti-windup gain L (continuous only; empty: none):
+  /// ẋ = A x + B y_m + L (û − u), û − u the part of the command the valve does not follow
+  /// (the saturated minus the requested command; while rate limited, the command the valve
+  /// follows at ±rate_limit minus the requested one). Exactly 0 inside the limits.
+  Eigen::VectorXd tracking;
+  /// Gain schedule over the speed (empty: the fixed law A, B, C, D): at Ω(t) the law's
+  /// matrices are interpolated piecewise linearly, element by element, between grid points
+  /// (constant outside; the caller refuses a run leaving the grid). Row g of schedule_law
+  /// holds [vec A, vec B, vec C, vec D] (each column-major) of the design at schedule_omega(g).
+  Eigen::VectorXd schedule_omega;  ///< (n_g,) rad/s, strictly increasing
+  Eigen::MatrixXd schedule_law;    ///< (n_g, n_k² + n_k n_y + n_k + n_y)
+  bool scheduled() const { return schedule_omega.size() > 0; }
   Eigen::VectorXd noise_std;     ///< (n_y,) or empty: no noise
   double noise_dt = 0.0;         ///< s (continuous controller with noise)
   std::uint64_t seed = 0;
   Eigen::Index n_states() const { return A.rows(); }
+};
+
+/// Adaptive harmonic (1×) command for unbalance rejection: p_ad = Re(P e^{i k θ}) =
+/// P_r cos kθ − P_i sin kθ (k = order, θ the rotor angle) added to the command, the complex
+/// coefficient P = P_r + i P_i two CVODE states adapted by the normalised LMS /
+/// influence-coefficient law
+///   Ṗ = −γ Σ_j G_j(Ω) · 2 y_j e^{−i kθ},   y = C_m [r; ṙ] − offset (n_y),
+/// G(Ω) (1 × n_y complex) the pseudo-inverse of the influence coefficients T(Ω) (the measured
+/// k× response to P = 1), interpolated piecewise linearly over Ω (constant outside). With
+/// T exact and the speed constant, the average of Ṗ is −γ (P − P*), P* = −T⁺ Y_u the
+/// least-squares optimum of the 1× response Y_u + T P.
+struct AdaptiveHarmonic {
+  bool enabled = false;
+  double order = 1.0;
+  double gain = 0.0;            ///< γ, 1/s (≥ 0)
+  Eigen::MatrixXd measurement;  ///< C_m (n_y, 2n)
+  Eigen::VectorXd offset;       ///< (n_y,)
+  Eigen::VectorXd table_omega;  ///< (n_g,) rad/s, strictly increasing
+  Eigen::MatrixXd table_re;     ///< (n_g, n_y) Re G
+  Eigen::MatrixXd table_im;     ///< (n_g, n_y) Im G
+  double p0_re = 0.0, p0_im = 0.0;  ///< Pa, P at t = 0
 };
 
 /// Evaluators of the profiles (validated once by `validate_operation`).
@@ -85,6 +118,9 @@ double profile_speed_rate(const SpeedProfile& s, double t);
 double profile_angle(const SpeedProfile& s, double omega_const, double t);
 /// Piecewise-linear interpolation, constant outside [x_0, x_last].
 double interp_table(const Eigen::VectorXd& x, const Eigen::VectorXd& y, double xi);
+
+/// Shape and range checks of the adaptive command; throws InputError naming the field.
+void validate_adaptive(const AdaptiveHarmonic& h, Eigen::Index n_coords);
 
 /// Shape and range checks; throws InputError naming the field.
 void validate_operation(const SpeedProfile& s, const PressureCommand& p, const Actuator& a,

@@ -50,6 +50,7 @@ struct TransientInput {
   PressureCommand pressure;        ///< p_cmd(t) (base = chamber_pressure when constant)
   Actuator actuator;               ///< command -> p_c
   Controller controller;           ///< optional LTI feedback added to the command
+  AdaptiveHarmonic adaptive;       ///< optional adaptive 1× command added to the command
 };
 
 struct TransientResult {
@@ -63,6 +64,7 @@ struct TransientResult {
   Eigen::VectorXd controller_output;  ///< (n_t,) u, Pa (0 without a controller)
   Eigen::MatrixXd actuator_states;    ///< (n_t, order)
   Eigen::MatrixXd controller_states;  ///< (n_t, n_k)
+  Eigen::MatrixXd adaptive_states;    ///< (n_t, 2) [P_r, P_i] Pa, or (n_t, 0)
   std::string status = "ok";       ///< ok | contact | not_converged | error
   std::string message;
   long steps = 0, rhs_evals = 0, jac_evals = 0, newton_fails = 0, error_test_fails = 0;

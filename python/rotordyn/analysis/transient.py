@@ -108,7 +108,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               controller=None, measurements=None, measurement_offset=None,
               atol_pa: float = 1.0,
               max_step_s: float = 0.0, rub_fraction: float = 1e-3,
-              max_cost_s: float = MAX_COST_S) -> TransientResult:
+              max_cost_s: float = MAX_COST_S, adaptive=None) -> TransientResult:
     """Integrate eq. 12 from t = 0 to ``t_end_s``.
 
     The start is the static equilibrium (eq. 14) with the journal of the active (or only)
@@ -134,6 +134,11 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     added to the command; the measurements are taken relative to ``measurement_offset``
     (default: their value at the starting equilibrium). ``atol_pa``: absolute tolerance of the actuator
     pressure state.
+
+    ``adaptive``: an :class:`~rotordyn.control.adaptive.AdaptiveRejection` — an adaptive 1×
+    command (two more CVODE states, the coefficient P of Re(P e^{iθ})) added to the command;
+    its measurements relative to their value at the starting equilibrium. Its speed grid
+    must cover the run (InputError naming ``adaptive.speeds_hz``).
 
     Budget (checked before anything is solved): a discrete controller restarts CVODE at each
     sample; a run estimated above ``max_cost_s`` (default 600 s; ``math.inf``: no limit) is an
@@ -182,8 +187,22 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
         v.finite("config_ay_m", config_ay_m)
     if not (isinstance(max_cost_s, (float, np.floating)) and max_cost_s == math.inf):
         max_cost_s = v.positive("max_cost_s", max_cost_s)
+    sp_run = (np.concatenate([speed.speed_at(np.array([0.0, float(t_end_s)])),
+                              speed.speed_hz[(speed.t_s > 0) & (speed.t_s < float(t_end_s))]])
+              if speed is not None else np.array([float(speed_hz)]))
+    if adaptive is not None:
+        from rotordyn.control.adaptive import AdaptiveRejection
+
+        if not isinstance(adaptive, AdaptiveRejection):
+            raise InputError(f"adaptive: expected a rotordyn.control.adaptive."
+                             f"AdaptiveRejection, got {type(adaptive).__name__}")
+        adaptive.check_covers(float(sp_run.min()), float(sp_run.max()))
     if controller is not None:
         controller_budget(controller, float(t_end_s), float(max_cost_s))
+        if controller.schedule_law is not None:
+            from rotordyn.control.gain_schedule import check_covers
+
+            check_covers(controller, float(sp_run.min()), float(sp_run.max()))
     asm = assembled(system)
     n = asm.n
     # Output arrays t, r, v, h_min in C++ and their numpy copies: refuse before allocating
@@ -264,6 +283,9 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
             if off.shape != (Cm.shape[0],) or not np.all(np.isfinite(off)):
                 raise InputError(f"measurement_offset: expected {Cm.shape[0]} finite values")
         inp.controller = controller.to_core(Cm, off)
+    if adaptive is not None:
+        Cm, _ = measurement_matrix(system, adaptive.measurements)
+        inp.adaptive = adaptive.to_core(Cm, Cm @ np.concatenate([r_eq, np.zeros(n)]))
     res = _core.integrate(asm.solver, inp, opt)
     r = np.asarray(res.r)
     status, message = res.status, res.message
@@ -284,6 +306,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
         controller_output_pa=np.asarray(res.controller_output),
         actuator_states=np.asarray(res.actuator_states),
         controller_states=np.asarray(res.controller_states),
+        adaptive_states=np.asarray(res.adaptive_states),
         equilibrium_r=r_eq,
         stats={"steps": res.steps, "rhs_evals": res.rhs_evals, "jac_evals": res.jac_evals,
                "newton_fails": res.newton_fails, "error_test_fails": res.error_test_fails,

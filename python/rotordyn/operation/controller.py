@@ -34,7 +34,7 @@ def _noise_std(value, ny):
 
 
 _OPTIONS = ("sample_time_s", "noise_std", "noise_dt_s", "seed", "name", "info",
-            "computation_delay_s")
+            "computation_delay_s", "anti_windup_gain", "schedule_speed_hz", "schedule_law")
 
 
 def _options(kw):
@@ -70,6 +70,9 @@ class Controller:
     name: str = "controller"
     info: dict = field(default_factory=dict, compare=False)
     computation_delay_s: float = 0.0
+    anti_windup_gain: object = None
+    schedule_speed_hz: object = None
+    schedule_law: object = None
 
     def __post_init__(self):
         object.__setattr__(self, "measurements", parse_measurements(self.measurements))
@@ -113,6 +116,28 @@ class Controller:
             raise InputError(f"controller.computation_delay_s: expected a delay in [0, {st:g}] s "
                              f"(the sample time), got {delay!r}")
         object.__setattr__(self, "computation_delay_s", delay)
+        if self.anti_windup_gain is not None:
+            L = v.vector("controller.anti_windup_gain", self.anti_windup_gain, nk)
+            if st is not None:
+                raise InputError("controller.anti_windup_gain: anti-windup is built for a "
+                                 "continuous law only (sample_time_s None)")
+            object.__setattr__(self, "anti_windup_gain", L)
+        if (self.schedule_speed_hz is None) != (self.schedule_law is None):
+            raise InputError("controller.schedule_speed_hz/schedule_law: give both (a gain "
+                             "schedule, rotordyn.control.gain_schedule) or neither")
+        if self.schedule_speed_hz is not None:
+            sp = v.vector("controller.schedule_speed_hz", self.schedule_speed_hz)
+            if sp.size < 1 or np.any(np.diff(sp) <= 0) or np.any(sp < 0):
+                raise InputError(f"controller.schedule_speed_hz: expected strictly increasing "
+                                 f"speeds >= 0 Hz, got {sp!r}")
+            law = v.matrix("controller.schedule_law", self.schedule_law)
+            w = nk * nk + nk * ny + nk + ny
+            if law.shape != (sp.size, w):
+                raise InputError(f"controller.schedule_law: expected shape ({sp.size}, {w}) "
+                                 f"(one [vec A, vec B, C, D] row per grid speed), got "
+                                 f"{law.shape}")
+            object.__setattr__(self, "schedule_speed_hz", sp)
+            object.__setattr__(self, "schedule_law", law)
         object.__setattr__(self, "noise_dt_s", v.in_range(
             "controller.noise_dt_s", self.noise_dt_s, MIN_SAMPLE_TIME_S, MAX_SAMPLE_TIME_S))
         object.__setattr__(self, "noise_std", _noise_std(self.noise_std, ny))
@@ -189,15 +214,28 @@ class Controller:
     def scaled(self, gain: float) -> "Controller":
         """The same controller with its output multiplied by ``gain``."""
         v.finite("gain", gain)
+        L = self.anti_windup_gain
+        # the same tracking rate C L: L / gain (a zero gain has no output to track)
+        L = None if L is None or gain == 0 else L / gain
         return Controller(self.A, self.B, gain * self.C, gain * self.D, self.measurements,
                           self.sample_time_s, self.noise_std, self.noise_dt_s, self.seed,
-                          self.name, dict(self.info), self.computation_delay_s)
+                          self.name, dict(self.info), self.computation_delay_s, L,
+                          self.schedule_speed_hz,
+                          None if self.schedule_law is None else self._scaled_law(gain))
+
+    def _scaled_law(self, gain):
+        nk, ny = self.n_states, self.n_inputs
+        law = self.schedule_law.copy()
+        law[:, nk * nk + nk * ny:] *= gain  # C and D
+        return law
 
     def with_options(self, **kw) -> "Controller":
         d = dict(A=self.A, B=self.B, C=self.C, D=self.D, measurements=self.measurements,
                  sample_time_s=self.sample_time_s, noise_std=self.noise_std,
                  noise_dt_s=self.noise_dt_s, seed=self.seed, name=self.name, info=self.info,
-                 computation_delay_s=self.computation_delay_s)
+                 computation_delay_s=self.computation_delay_s,
+                 anti_windup_gain=self.anti_windup_gain,
+                 schedule_speed_hz=self.schedule_speed_hz, schedule_law=self.schedule_law)
         bad = sorted(set(kw) - set(d))
         if bad:
             raise InputError(f"controller: unknown option(s) {', '.join(bad)}; expected any "
@@ -210,6 +248,9 @@ class Controller:
         measurement: slow drifts (the equilibrium moving during a run-up) no longer feed
         the law. States [x_w (n_y); x_k]."""
         v.in_range("corner_hz", corner_hz, 0.0, 1e6, lo_open=True)
+        if self.schedule_law is not None:
+            raise InputError("controller.schedule_law: add the washout to each design before "
+                             "scheduling them (rotordyn.control.gain_schedule)")
         a = 2 * np.pi * corner_hz
         ny, nk = self.n_inputs, self.n_states
         A = np.block([[-a * np.eye(ny), np.zeros((ny, nk))], [-a * self.B, self.A]])
@@ -217,7 +258,8 @@ class Controller:
         C = np.hstack([-a * self.D, self.C])
         info = dict(self.info, washout_hz=corner_hz)
         return self.with_options(A=A, B=B, C=C, D=self.D.copy(), info=info,
-                                 name=self.name + "+washout")
+                                 name=self.name + "+washout", anti_windup_gain=None,
+                                 schedule_speed_hz=None, schedule_law=None)
 
     def to_core(self, Cm: np.ndarray, offset: np.ndarray):
         ny = Cm.shape[0]
@@ -231,6 +273,11 @@ class Controller:
         k.offset = offset
         k.sample_time = float(self.sample_time_s or 0.0)
         k.delay = float(self.computation_delay_s)
+        if self.anti_windup_gain is not None:
+            k.tracking = self.anti_windup_gain
+        if self.schedule_speed_hz is not None:
+            k.schedule_omega = 2 * np.pi * self.schedule_speed_hz
+            k.schedule_law = self.schedule_law
         ns = np.broadcast_to(np.asarray(self.noise_std, dtype=float), (ny,)).copy()
         if np.any(ns > 0):
             k.noise_std = ns

@@ -41,6 +41,7 @@ class TransientResult(Display):
     controller_output_pa: np.ndarray | None = None
     actuator_states: np.ndarray | None = None
     controller_states: np.ndarray | None = None
+    adaptive_states: np.ndarray | None = None  # (n_t, 2) [Re P, Im P] Pa of the adaptive 1×
 
     def __repr__(self) -> str:
         amp = ""

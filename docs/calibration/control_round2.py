@@ -1,0 +1,313 @@
+"""Control round 2 (issue 24, docs/control.md §2.4–2.6): anti-windup, a gain-scheduled PD
+through both critical speeds, and the adaptive 1× unbalance rejection in the nonlinear
+run-up, each beside its reference.
+
+Run:  .venv/bin/python docs/calibration/control_round2.py [--part aw|schedule|adaptive|all]
+      [--rate-hz-s 10] [--gamma 20] [--washout-hz 0] [--refine-rounds 0] [--no-runup]
+      [--unbalance ST ME PH] [--passive]
+Prints every number quoted in docs/control.md §2.4–2.6.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import time
+
+import numpy as np
+
+import rotordyn as rd
+from rotordyn.analysis.assembly import assembled
+from rotordyn.control import Actuator, PressureSchedule, SpeedProfile
+from rotordyn.control.adaptive import adaptive_rejection
+from rotordyn.control.antiwindup import with_anti_windup
+from rotordyn.control.closedloop import closed_loop
+from rotordyn.control.gain_schedule import gain_schedule, schedule_stability
+from rotordyn.control.pid import pid, tune_pd
+from rotordyn.control.plant import plant
+
+C = 3e-4
+JOURNAL, DISK = 4, 6
+UB = [(6, 2e-5, 0.0)]  # disk B, as docs/control.md §3.2
+SPLIT = 65.0
+
+
+def load():
+    return " ".join(f"{x:.2f}" for x in os.getloadavg())
+
+
+def part_aw():
+    rig = rd.models.paper_rig()
+    AY, F, PC = -1.85e-3, 50.0, 0.15e6
+    bc = [b for b in assembled(rig).bearings if b.active][0]
+    k = pid(1.0e9, 2.5e6, 1.0e9 / 0.02)
+    aw = with_anti_windup(k)
+    cl = closed_loop(plant(rig, F, PC, AY, actuator=Actuator()), k, with_margins=False)
+    print(f"[aw] PID k_p 1e9 Pa/m, k_d 2.5e6 Pa s/m, T_i 0.02 s at a_y {AY} m, {F} Hz, "
+          f"{PC / 1e6} MPa: linear max Re λ {cl.max_real:.3f} 1/s; tracking rate "
+          f"{aw.info['tracking_rate_hz']:.2f} Hz (√(k_i/k_d)/2π = "
+          f"{np.sqrt(5e10 / 2.5e6) / (2 * np.pi):.2f} Hz), L = {aw.anti_windup_gain}, "
+          f"max Re λ(A − L C) {aw.info['tracking_max_real_1_per_s']:.1f} 1/s")
+    prof = SpeedProfile.table([0, 0.02, 0.03, 0.12, 0.13], [50, 50, 30, 30, 50])
+    for half, rate in ((1e3, np.inf), (1e3, 1e5), (0.5e3, np.inf)):
+        act = Actuator(p_min_pa=PC - half, p_max_pa=PC + half, rate_limit_pa_s=rate)
+        for lab, law in (("without", k), ("with", aw)):
+            t0 = time.perf_counter()
+            tr = rd.transient(rig, 0.5, chamber_pressure_pa=PC, config_ay_m=AY, speed=prof,
+                              controller=law, actuator=act, n_out=1001, max_step_s=5e-4)
+            m = tr.t >= 0.13
+            e = np.hypot(tr.r[m, bc.jx] - tr.equilibrium_r[bc.jx],
+                         tr.r[m, bc.jy] - tr.equilibrium_r[bc.jy])
+            ise = float(np.sum(0.5 * (e[1:] ** 2 + e[:-1] ** 2) * np.diff(tr.t[m])))
+            cmd = tr.chamber_pressure_command_pa
+            sat = (cmd <= act.p_min_pa) | (cmd >= act.p_max_pa)
+            print(f"[aw] valve ±{half:g} Pa, rate limit {rate:g} Pa/s, {lab} anti-windup: "
+                  f"{tr.status}, command saturated until {tr.t[sat].max():.4f} s "
+                  f"({100 * sat.mean():.0f} % of the run), largest error after the dip "
+                  f"{e.max() / C:.4f} c, ∫e² dt after it {ise:.3e} m² s "
+                  f"({time.perf_counter() - t0:.1f} s wall, load {load()})")
+
+
+def peaks(tr, bcs):
+    """1× semi-major axes (µm) at the journal and disk B, peaks below and above SPLIT."""
+    from rotordyn.control.synchronous import semi_major
+
+    out = {}
+    asm = assembled(tr_sys)
+    for name, st in (("journal", JOURNAL), ("disk", DISK)):
+        L = asm.station_output_matrix(st)
+        xy = (tr.r - tr.equilibrium_r) @ L.T
+        sp, X, Y = one_x_track(tr, xy[:, 0], xy[:, 1])
+        a = semi_major(X, Y) * 1e6
+        lo, hi = sp < SPLIT, sp >= SPLIT
+        i = np.nanargmax(np.where(lo, a, -1))
+        j = np.nanargmax(np.where(hi, a, -1))
+        out[name] = ((sp[i], a[i]), (sp[j], a[j]))
+    return out
+
+
+def one_x_track(tr, x, y, revs=4):
+    """Least squares on [1, t, cos θ, sin θ] over ±revs revolutions at every 50th sample."""
+    sp, X, Y = [], [], []
+    th = tr.angle_rad
+    for i in range(0, tr.t.size, 50):
+        m = np.abs(th - th[i]) <= 2 * np.pi * revs
+        if m.sum() < 16:
+            continue
+        A = np.column_stack([np.ones(m.sum()), tr.t[m] - tr.t[i], np.cos(th[m]), np.sin(th[m])])
+        cx = np.linalg.lstsq(A, x[m], rcond=None)[0]
+        cy = np.linalg.lstsq(A, y[m], rcond=None)[0]
+        sp.append(tr.speed_hz_t[i])
+        X.append(cx[2] - 1j * cx[3])
+        Y.append(cy[2] - 1j * cy[3])
+    return np.array(sp), np.array(X), np.array(Y)
+
+
+tr_sys = None
+
+
+def runup(rig, rate, **kw):
+    prof = SpeedProfile.ramp(10.0, 120.0, rate)
+    t_end = 110.0 / rate
+    t0 = time.perf_counter()
+    tr = rd.transient(rig, t_end, chamber_pressure_pa=0.5e6, config_ay_m=0.0, speed=prof,
+                      unbalances=UB, actuator=Actuator(), n_out=int(t_end * 2000) + 1,
+                      max_steps=2_000_000, **kw)
+    return tr, time.perf_counter() - t0
+
+
+def show(lab, tr, wall):
+    pk = peaks(tr, None)
+    (fj1, j1), (fj2, j2) = pk["journal"]
+    (fd1, d1), (fd2, d2) = pk["disk"]
+    print(f"[run-up] {lab}: {tr.status}; journal {j1:.2f} µm ({fj1:.1f} Hz) | {j2:.2f} "
+          f"({fj2:.1f}); disk B {d1:.2f} ({fd1:.1f}) | {d2:.2f} ({fd2:.1f}); p_c "
+          f"[{tr.chamber_pressure_actual_pa.min() / 1e6:.3f}, "
+          f"{tr.chamber_pressure_actual_pa.max() / 1e6:.3f}] MPa; {tr.stats['rhs_evals']} RHS, "
+          f"{wall:.1f} s wall, load {load()}")
+    return pk
+
+
+def design(rig, f, act, kw, washout_hz):
+    k, cl = tune_pd(plant(rig, f, 0.5e6, 0.0, actuator=act), **kw)
+    print(f"[schedule] PD at {f:6.2f} Hz: k_p {k.info['kp']:.4g} Pa/m, k_d "
+          f"{k.info['kd']:.4g} Pa s/m, min ζ {cl.min_damping:.4f}")
+    return k.with_washout(washout_hz) if washout_hz else k
+
+
+KP_SET = (-3e9, -1e9, -3e8, 0.0, 3e8, 1e9, 3e9)  # Pa/m
+KD_SET = (-3e6, -1e6, -3e5, 0.0, 3e5, 1e6, 3e6)  # Pa s/m
+
+
+def grid_design(rig, f, act, washout_hz):
+    """The PD (gains from KP_SET × KD_SET: bounded) with the largest least damping ratio of
+    the closed loop at ``f`` — a design that cannot run away to the huge gains of tune_pd."""
+    from rotordyn.control.closedloop import closed_loop_matrix
+    from rotordyn.results.modes import damping_ratio
+
+    p = plant(rig, f, 0.5e6, 0.0, actuator=act)
+    best = None
+    for kp in KP_SET:
+        for kd in KD_SET:
+            k = pid(kp, kd)
+            k = k.with_washout(washout_hz) if washout_hz else k
+            z = damping_ratio(np.linalg.eigvals(closed_loop_matrix(p, k))).min()
+            if best is None or z > best[0]:
+                best = (z, kp, kd, k)
+    print(f"[schedule] grid PD at {f:6.2f} Hz: k_p {best[1]:.3g} Pa/m, k_d {best[2]:.3g} "
+          f"Pa s/m, min ζ {best[0]:.4f}")
+    return best[3]
+
+
+def part_schedule_grid(rate, washout_hz=2.0):
+    """Bounded grid-search PD designs at 12 speeds, scheduled; the dense check; run-ups."""
+    global tr_sys
+    rig = rd.models.paper_rig()
+    tr_sys = rig
+    act = Actuator()
+    sp = np.array([10.0, 20.0, 30.0, 38.0, 45.0, 55.0, 65.0, 80.0, 88.0, 95.0, 105.0, 120.0])
+    designs = [grid_design(rig, f, act, washout_hz) for f in sp]
+    law = gain_schedule(designs, sp)
+    st = schedule_stability(rig, law, chamber_pressure_pa=0.5e6, config_ay_m=0.0,
+                            actuator=act, n_between=4)
+    f, w = st.worst
+    print(f"[schedule] grid designs (washout {washout_hz} Hz): dense check over "
+          f"{st.speed_hz.size} speeds: stable {st.stable}; worst max Re λ {w:.4f} 1/s at "
+          f"{f:.2f} Hz; least ζ {np.nanmin(st.min_damping):.5f}")
+    fixed = designs[3]
+    mr = np.array([closed_loop(plant(rig, f, 0.5e6, 0.0, actuator=act), fixed,
+                               with_margins=False).max_real for f in st.speed_hz])
+    print(f"[schedule] fixed grid PD (38 Hz design) over the same speeds: worst max Re λ "
+          f"{mr.max():.4f} 1/s at {st.speed_hz[int(np.argmax(mr))]:.2f} Hz")
+    for lab, kk in (("fixed grid PD (38 Hz)", fixed), ("scheduled grid PD", law)):
+        tr, wall = runup(rig, rate, controller=kk)
+        show(lab, tr, wall)
+
+
+def part_schedule(rate, washout_hz=0.0, rounds=0, runups=True):
+    """PD designs by tune_pd on a speed grid, scheduled; the dense stability check; designs
+    added where it fails (``rounds`` times); run-ups passive / fixed (38 Hz) / scheduled.
+    ``washout_hz`` > 0: each design behind a washout (as the feedback of §3.2)."""
+    global tr_sys
+    rig = rd.models.paper_rig()
+    tr_sys = rig
+    act = Actuator()
+    grid = [10.0, 20.0, 30.0, 35.0, 38.0, 42.0, 50.0, 65.0, 80.0, 88.0, 95.0, 105.0, 120.0]
+    t0 = time.perf_counter()
+    designs, kw = {}, {}
+    for f in grid:
+        designs[f] = design(rig, f, act, kw, washout_hz)
+        kw = dict(kp0=designs[f].info["kp"], kd0=designs[f].info["kd"])
+    # the dense check between the designs; a design added where it fails (twice at most)
+    for rnd in range(rounds + 1):
+        sp = np.array(sorted(designs))
+        law = gain_schedule([designs[f] for f in sp], sp)
+        st = schedule_stability(rig, law, chamber_pressure_pa=0.5e6, config_ay_m=0.0,
+                                actuator=act, n_between=4)
+        f, w = st.worst
+        print(f"[schedule] round {rnd}: {sp.size} designs (washout {washout_hz} Hz); dense "
+              f"check over {st.speed_hz.size} speeds: stable {st.stable}; worst max Re λ "
+              f"{w:.3f} 1/s at {f:.2f} Hz; least ζ {np.nanmin(st.min_damping):.4f} "
+              f"({time.perf_counter() - t0:.0f} s so far)")
+        if st.stable or rnd == rounds:
+            break
+        bad = st.speed_hz[(st.max_real_1_per_s >= 0) & ~st.design]
+        for f in bad:
+            designs[float(f)] = design(rig, float(f), act, {}, washout_hz)
+    fixed = designs[38.0]
+    mr = np.array([closed_loop(plant(rig, f, 0.5e6, 0.0, actuator=act), fixed,
+                               with_margins=False).max_real for f in st.speed_hz])
+    print(f"[schedule] fixed PD (38 Hz design, washout) over the same speeds: worst max Re λ "
+          f"{mr.max():.3f} 1/s at {st.speed_hz[int(np.argmax(mr))]:.2f} Hz; unstable at "
+          f"{int(np.sum(mr >= 0))} of {mr.size} speeds")
+    res = {}
+    if not runups:
+        return res
+    for lab, kk in (("passive 0.5 MPa", None), ("fixed PD (38 Hz)", fixed),
+                    ("scheduled PD", law)):
+        tr, wall = runup(rig, rate, controller=kk)
+        res[lab] = show(lab, tr, wall)
+    return res
+
+
+def part_adaptive(rate, gamma, passive=False, measure="both"):
+    global tr_sys
+    rig = rd.models.paper_rig()
+    tr_sys = rig
+    act = Actuator()
+    if passive:
+        tr, wall = runup(rig, rate)
+        show("passive 0.5 MPa", tr, wall)
+    grid = np.arange(10.0, 120.01, 1.0)
+    grid = np.unique(np.concatenate([grid, np.arange(35.0, 42.0, 0.1),
+                                     np.arange(84.0, 94.0, 0.1)]))
+    for lab, meas in (("disk B", [("displacement", DISK)]), ("journal", [("journal", 0)])):
+        if measure not in ("both", lab.split()[0]):
+            continue
+        t0 = time.perf_counter()
+        law = adaptive_rejection(rig, grid, meas, gamma, chamber_pressure_pa=0.5e6,
+                                 config_ay_m=0.0, actuator=act)
+        print(f"[adaptive] {lab}: influence coefficients at {grid.size} speeds in "
+              f"{time.perf_counter() - t0:.1f} s; γ = {gamma} 1/s")
+        tr, wall = runup(rig, rate, adaptive=law)
+        show(f"adaptive 1× on {lab}", tr, wall)
+
+
+def part_bound():
+    """The synchronous bound (§3.2) for the unbalance UB with the mean pressure held at
+    0.5 MPa (each station alone): the steady 1× orbit any 1× command on 0.5 MPa can reach."""
+    from rotordyn.control.synchronous import synchronous_bound
+
+    rig = rd.models.paper_rig()
+    sp = np.unique(np.concatenate([np.arange(10.0, 120.01, 1.0), np.arange(35.0, 42.0, 0.1),
+                                   np.arange(84.0, 94.0, 0.1)]))
+    for name, st in (("journal", JOURNAL), ("disk B", DISK)):
+        t0 = time.perf_counter()
+        sb = synchronous_bound(rig, UB, sp, [0.5e6], stations=[st], config_ay_m=0.0,
+                               actuator=Actuator())
+        pas, opt = sb.passive_m[:, 0, 0] * 1e6, sb.optimal_m[:, 0, 0] * 1e6
+        lo, hi = sp < SPLIT, sp >= SPLIT
+        out = []
+        for m in (lo, hi):
+            i = int(np.nanargmax(np.where(m, pas, -1)))
+            j = int(np.nanargmax(np.where(m, opt, -1)))
+            out.append(f"passive {pas[i]:.2f} µm ({sp[i]:.1f} Hz), 1× on 0.5 MPa "
+                       f"{opt[j]:.2f} µm ({sp[j]:.1f} Hz)")
+        print(f"[bound] {UB} {name}: < 65 Hz: {out[0]}; >= 65 Hz: {out[1]} "
+              f"({time.perf_counter() - t0:.1f} s)")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--part", default="all",
+                    choices=["aw", "schedule", "schedule-grid", "adaptive", "bound", "all"])
+    ap.add_argument("--rate-hz-s", type=float, default=10.0)
+    ap.add_argument("--gamma", type=float, default=20.0)
+    ap.add_argument("--washout-hz", type=float, default=0.0)
+    ap.add_argument("--refine-rounds", type=int, default=0)
+    ap.add_argument("--no-runup", action="store_true")
+    ap.add_argument("--unbalance", nargs=3, type=float, metavar=("ST", "ME", "PH"),
+                    help="station, kg m, deg (default: 2e-5 kg m at disk B, 0 deg)")
+    ap.add_argument("--measure", default="both", choices=["both", "disk", "journal"])
+    ap.add_argument("--passive", action="store_true",
+                    help="with --part adaptive: also the passive run-up at 0.5 MPa")
+    a = ap.parse_args()
+    global UB
+    if a.unbalance:
+        UB = [(int(a.unbalance[0]), a.unbalance[1], a.unbalance[2])]
+    print(f"unbalance {UB}")
+    print(f"load at start: {load()}")
+    if a.part in ("aw", "all"):
+        part_aw()
+    if a.part in ("schedule", "all"):
+        part_schedule(a.rate_hz_s, a.washout_hz, a.refine_rounds, not a.no_runup)
+    if a.part in ("schedule-grid", "all"):
+        part_schedule_grid(a.rate_hz_s, a.washout_hz or 2.0)
+    if a.part in ("bound", "all"):
+        part_bound()
+    if a.part in ("adaptive", "all"):
+        part_adaptive(a.rate_hz_s, a.gamma, a.passive, a.measure)
+
+
+if __name__ == "__main__":
+    main()
