@@ -27,12 +27,13 @@ import numpy as np
 from rotordyn.errors import InputError
 from rotordyn._common import validate as v
 from rotordyn.model import builtin as models
+from rotordyn.sweep import robust_rows as rr
 
 SCHEMA = "rotordyn/sweep/1"
 OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
 DEFAULTS = {"speed_hz": 50.0, "chamber_pressure_pa": 0.0}
 ANALYSES = ("equilibrium", "thermal", "stability", "campbell", "threshold", "boundary",
-            "unbalance", "waterfall", "run-up")
+            "unbalance", "waterfall", "run-up", "robust")
 MAX_POINTS = 10_000_000
 
 
@@ -116,6 +117,11 @@ OPTIONS = {
 REQUIRED = {"threshold": ("vary",), "boundary": ("x", "y", "resolution"),
             "unbalance": ("unbalances",), "waterfall": ("unbalances",),
             "run-up": ("unbalances", "start_hz", "stop_hz", "rate_hz_per_s")}
+# a fixed law closed around the plant re-linearised at each point (rotordyn.control.robust)
+OPTIONS["robust"] = {**_EQ, "controller": rr.controller_option,
+                     "actuator": rr.actuator_option, "margins": _opt_bool,
+                     "pade_order": _opt_int(1, 20)}
+REQUIRED["robust"] = ("controller",)
 
 
 def _dec(x) -> Decimal:
@@ -391,6 +397,9 @@ class SweepSpec:
                 if ax in self.axes:
                     raise InputError(f"grid.{ax}: not available with the thermal model (sweep "
                                      "the bearings' own config_ay_m/config_ax_m fields)")
+        if a == "robust" and "config_ax_m" in self.axes:
+            raise InputError("grid.config_ax_m: the control plant takes a_y only (sweep the "
+                             "bearing's own field bearings.<name>.config_ax_m)")
         if "line" in self.options and self.options["line"] not in self.axes:
             raise InputError(f"options.line: {self.options['line']!r} is not a grid axis")
         if a in ("campbell", "unbalance") and len(self.axes.get("speed_hz", ())) < 2:
@@ -441,6 +450,8 @@ class SweepSpec:
                                  f"{', '.join(OPERATING)}, a dotted model field such as "
                                  "bearings.active.clearance_m, or options.<name>)")
             _check_model_axis(system, name, vals)
+        if self.analysis == "robust":
+            rr.check_model(system, self.options)
         n_st = system.rotor.n_stations
         for key in ("unbalances", "stations"):
             for i, u in enumerate(self.options.get(key, ())):
