@@ -167,7 +167,8 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
     states = tuple(ss.state_names) + tuple(f"actuator_{i}" for i in range(na))
     return Plant(A, B, C, Bd, Cp, meas, names, states, act, float(speed_hz),
                  float(chamber_pressure_pa), config_ay_m, n2 // 2,
-                 info={"equilibrium_r": np.asarray(ss.linear.equilibrium.r, float)},
+                 info={"equilibrium_r": np.asarray(ss.linear.equilibrium.r, float),
+                       "equilibrium_status": str(ss.linear.equilibrium.status)},
                  disturbance_names=tuple(str(x) for x in ss.input_names[1:]))
 
 

@@ -14,11 +14,11 @@ whose equilibrium fails is a row with that status and no verdict (``point_stable
 Sensitivity zones after ISO 14839-3:2006 (Mechanical vibration — Vibration of rotating
 machinery equipped with active magnetic bearings — Part 3: Evaluation of stability margin),
 peak |S| = max_ω |1/(1 + L(iω))|: zone A ≤ 3 (9.5 dB), B ≤ 4 (12 dB), C ≤ 5 (14 dB), D
-above. The limits are those the standard's evaluation table gives as quoted in the AMB literature; we
-did not hold the standard's text. ROSS (petrobras/ross, ``Rotor.run_amb_sensitivity`` and
-``SensitivityResults``, checked at commit 631a249) computes the peak sensitivity "according to
-ISO 14839-3" per bearing axis (``max_abs_sensitivities``) but implements no zone limits, so
-there was nothing there to check these numbers against.
+above. The limits are those of the standard's evaluation table as quoted in the AMB
+literature; we did not hold the standard's text. ROSS (petrobras/ross,
+``Rotor.run_amb_sensitivity`` and ``SensitivityResults``, read at commit 631a249) computes the
+peak sensitivity "according to ISO 14839-3" per bearing axis (``max_abs_sensitivities``) but
+implements no zone limits, so there was nothing there to check these numbers against.
 """
 
 from __future__ import annotations
@@ -254,7 +254,8 @@ def robust_rows(job, variants, chunk_id, lo, hi, rows):
         jx = float(r[bc.jx]) if bc is not None and r is not None else math.nan
         jy = float(r[bc.jy]) if bc is not None and r is not None else math.nan
         rows.append({**row, "journal_x_m": jx, "journal_y_m": jy, **eigen_columns(lam),
-                     **margin_columns(m), "status": "ok", "message": msg})
+                     **margin_columns(m),
+                     "status": pl.info.get("equilibrium_status", "ok"), "message": msg})
 
 
 def check_model(system, options) -> None:
