@@ -16,6 +16,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -29,6 +30,7 @@ from rotordyn.sweep.paths import set_field
 from rotordyn.sweep.robust_rows import iso_zone
 
 PC, AY = 0.05e6, -1.85e-3
+MODELS = Path(__file__).parent / "data" / "models"
 COLD = {"warm_start": False}
 
 
@@ -194,3 +196,33 @@ def test_bad_input_names_the_field(rig_laws):
         build_spec(rig, k, {"speed_hz": 50.0}, equilibrium={"max_iter": 0})
     with pytest.raises(InputError, match="system"):
         build_spec("paper-rig", k, {"speed_hz": 50.0})
+
+
+def test_not_the_rig_compressor_with_an_active_bearing():
+    """The compressor (1.2 m, 210 kg) with the rig's active bearing scaled to its 100 mm DE
+    journal (tests/data/models/compressor_active.toml): a PD tuned at 150 Hz, 0.5 MPa (open
+    loop unstable there) over speed × p_c. Verdicts against the numpy closed loop; p_c = 0
+    leaves the sleeve without support (no equilibrium: rows without verdict)."""
+    from rotordyn.control.pid import tune_pd
+
+    s = rd.System.from_toml(f"{MODELS}/compressor_active.toml")
+    p = plant(s, 150.0, 0.5e6, measurements=[("journal", 0)])
+    assert p.poles.real.max() > 0
+    k = tune_pd(p)[0]
+    r = robust(s, k, {"speed_hz": [100.0, 150.0, 200.0],
+                      "chamber_pressure_pa": [0.0, 0.5e6, 1e6]}, threads=2)
+    f = r.frame
+    failed = f[f.point_stable.isna()]
+    assert len(failed) >= 1 and set(failed.status) <= {"no_equilibrium", "not_converged"}
+    have = f[f.point_stable.notna()]
+    assert {True, False} <= set(have.point_stable.astype(bool))
+    for _, row in have.iterrows():
+        ref = numpy_max_real(s, k, row.speed_hz, row.chamber_pressure_pa, None)
+        assert row.max_real_1_per_s == pytest.approx(ref, rel=1e-9, abs=1e-9)
+        assert bool(row.point_stable) == (ref < 0)
+    design = have[(have.speed_hz == 150.0) & (have.chamber_pressure_pa == 0.5e6)].iloc[0]
+    assert bool(design.point_stable)
+    m = mg.margins(plant(s, 150.0, 0.5e6, equilibrium=COLD), k).input
+    assert design.gain_margin_upper == pytest.approx(m.gain_margin_upper, rel=1e-9)
+    assert design.peak_sensitivity == pytest.approx(m.peak_sensitivity, rel=1e-9)
+    assert design.iso_zone == iso_zone(m.peak_sensitivity)
