@@ -161,7 +161,7 @@ def robust_rows(rig, k, n_side: int, workers: int) -> None:
 
     from rotordyn.control import margins as mg
     from rotordyn.control.closedloop import closed_loop
-    from rotordyn.control.robust import robust
+    from rotordyn.sweep.robust import robust
 
     speeds = np.linspace(30.0, 70.0, n_side)
     pcs = np.linspace(0.02e6, 0.2e6, n_side)

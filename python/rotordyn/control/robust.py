@@ -1,27 +1,31 @@
 """Robust stability and performance of a fixed feedback law over a grid of operating points
-and model uncertainties, in one call: :func:`robust`.
+and model uncertainties: the closed loop at one point (:func:`closed_loop_point`) and the rows
+of a grid with their worst cases (:class:`RobustResult`). The grid itself runs as the
+``robust`` analysis of the sweep machinery, in one call: :func:`rotordyn.sweep.robust.robust`
+(the sweep room sits above this one, docs/architecture.md).
 
-The law K (a :class:`~rotordyn.control.Controller`) stays fixed; at every grid point — any
-combination of ``speed_hz``, ``chamber_pressure_pa``, ``config_ay_m`` and numeric model fields
-by dotted path (``bearings.active.clearance_m``, ``bearings.active.viscosity_pa_s``,
-``rotor.disks.1.mass_kg``, ...) — the plant is re-linearised about that point's own equilibrium
-(solved cold, so a row does not depend on the order the points ran in) and the loop closed:
+The law K (a :class:`~rotordyn.control.Controller`) stays fixed; at every point — speed, p_c,
+a_y and any numeric model field (``bearings.active.clearance_m``,
+``bearings.active.viscosity_pa_s``, ...) — the plant is re-linearised about that point's own
+equilibrium, solved cold (``warm_start=False``, so a row does not depend on what ran before):
 
 * stability: the closed-loop eigenvalues λ of [A + B D_k C, B C_k; B_k C, A_k] (a discrete law:
-  the exact sampled-data loop, λ = ln z / T), their spectral abscissa max Re λ and the least
+  the exact sampled-data loop, λ = ln z / T; a computation delay as in
+  :func:`rotordyn.control.closedloop.closed_loop`), the spectral abscissa max Re λ and the least
   damping ratio min ζ, ζ = −Re λ / |λ|;
-* performance: the margins of the loop broken at the valve command, L = −K G
-  (:func:`rotordyn.control.margins.loop_margins`, located exactly): gain margins below and
-  above 1, phase and delay margins, balanced disk margin, peak sensitivity max |1/(1 + L)|
-  with its zone after ISO 14839-3 (A ≤ 3, B ≤ 4, C ≤ 5, D above;
-  :mod:`rotordyn.sweep.robust_rows` for the source);
-* the worst case over the grid of each quantity, with its point.
+* performance, at a stable point: the margins of the loop broken at the valve command,
+  L = −K G (:func:`rotordyn.control.margins.loop_margins`, located exactly): gain margins below
+  and above 1, phase and delay margins, balanced disk margin, peak |S| = max_ω |1/(1 + L)|
+  and its zone after ISO 14839-3.
 
-It runs as the ``robust`` analysis of the sweep machinery (:mod:`rotordyn.sweep`): parquet
-rows, deterministic, resumable when ``out`` is given (the same call again computes only the
-missing chunks), on threads or worker processes. A point whose equilibrium fails is a row
-with that status (``no_equilibrium``, ``not_converged``, ``error``) and no verdict:
-``point_stable`` and every margin are null. An unstable point has a verdict and no margins.
+Sensitivity zones after ISO 14839-3:2006 (Mechanical vibration — Vibration of rotating
+machinery equipped with active magnetic bearings — Part 3: Evaluation of stability margin):
+zone A ≤ 3 (9.5 dB), B ≤ 4 (12 dB), C ≤ 5 (14 dB), D above. The limits are those of the
+standard's evaluation table as quoted in the AMB literature; we did not hold the standard's
+text. ROSS (petrobras/ross, ``Rotor.run_amb_sensitivity`` and ``SensitivityResults``, read at
+commit 631a249) computes the peak sensitivity "according to ISO 14839-3" per bearing axis
+(``max_abs_sensitivities``) but implements no zone limits, so there was nothing there to check
+these numbers against.
 
 Not built: the structured singular value μ over the physical parameters. SLICOT's AB13MD
 (slycot, the optional ``hinf`` extra) bounds μ of a given M(iω) for a block structure, but
@@ -34,183 +38,134 @@ perturbation of the measurement channels.
 
 from __future__ import annotations
 
-import hashlib
-import json
 import math
-import os
-import shutil
-import tempfile
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from rotordyn._common import validate as v
 from rotordyn.errors import InputError
-from rotordyn.sweep import robust_rows as rr
-from rotordyn.sweep.spec import SweepSpec, _axis
+
+# zone upper limits of the peak sensitivity (ISO 14839-3, module docstring)
+ISO_ZONES = (("A", 3.0), ("B", 4.0), ("C", 5.0))
+ZONES = ["A", "B", "C", "D"]
+ACTUATOR_KEYS = ("order", "time_constant_s", "natural_frequency_hz", "damping", "p_min_pa",
+                 "p_max_pa", "rate_limit_pa_s")
+
+
+def iso_zone(peak_sensitivity: float) -> str | None:
+    """Zone A/B/C/D of a peak sensitivity (a number ≥ 1 for a stable loop; None if NaN)."""
+    if not math.isfinite(peak_sensitivity):
+        return None if math.isnan(peak_sensitivity) else "D"
+    for zone, hi in ISO_ZONES:
+        if peak_sensitivity <= hi:
+            return zone
+    return "D"
+
+
+def build_controller(d: dict):
+    """The :class:`~rotordyn.control.Controller` of an ``options.controller`` table."""
+    from rotordyn.operation.controller import Controller
+
+    D = np.asarray(d["D"], float).reshape(1, -1) if d["D"] else np.zeros((1, 0))
+    ny = D.shape[1]
+    nk = len(d["A"])
+    A = np.asarray(d["A"], float).reshape(nk, nk) if nk else np.zeros((0, 0))
+    B = np.asarray(d["B"], float).reshape(nk, ny) if nk else np.zeros((0, ny))
+    C = np.asarray(d["C"], float).reshape(1, nk) if nk else np.zeros((1, 0))
+    return Controller(A, B, C, D, [tuple(m) for m in d["measurements"]],
+                      sample_time_s=d.get("sample_time_s"),
+                      computation_delay_s=d.get("computation_delay_s") or 0.0,
+                      name=d.get("name", "controller"))
+
+
+def controller_table(k) -> dict:
+    """A Controller as an ``options.controller`` table (plain floats: TOML/JSON-ready)."""
+    d = {"A": k.A.tolist(), "B": k.B.tolist(), "C": k.C.tolist(), "D": k.D.tolist(),
+         "measurements": [list(m) for m in k.measurements], "name": k.name}
+    if k.sample_time_s is not None:
+        d["sample_time_s"] = float(k.sample_time_s)
+    if k.computation_delay_s:
+        d["computation_delay_s"] = float(k.computation_delay_s)
+    return d
+
+
+def actuator_table(a) -> dict:
+    return {k: (float(getattr(a, k)) if k != "order" else int(a.order)) for k in ACTUATOR_KEYS}
+
+
+MARGIN_COLS = ("gain_margin_lower", "gain_margin_lower_hz", "gain_margin_upper",
+                "gain_margin_upper_hz", "phase_margin_deg", "phase_margin_hz",
+                "delay_margin_s", "delay_margin_hz", "peak_sensitivity",
+                "peak_sensitivity_hz", "disk_margin", "disk_margin_hz")
+
+
+def closed_loop_point(system, k, speed_hz, pc, ay, *, actuator=None, equilibrium=None,
+                      with_margins=True, pade_order=6):
+    """(plant, closed-loop eigenvalues λ (1/s), loop margins or None, message) of the law
+    ``k`` at one operating point (module docstring). Raises what the plant raises (a
+    ConvergenceError when the equilibrium fails)."""
+    from rotordyn.control import lti
+    from rotordyn.control.closedloop import closed_loop
+    from rotordyn.control.delay import with_pade_delay
+    from rotordyn.control.margins import controller_ss, loop_margins, plant_ss
+    from rotordyn.control.plant import plant
+
+    p = plant(system, speed_hz, pc, ay, measurements=k.measurements, actuator=actuator,
+              equilibrium={"warm_start": False, **(equilibrium or {})})
+    cl = closed_loop(p, k, freqs_hz=[1.0, 2.0], pade_order=pade_order, with_margins=False)
+    lam = cl.eigenvalues
+    if not np.all(np.isfinite(lam)):
+        raise ArithmeticError("non-finite closed-loop eigenvalues")
+    if not (with_margins and lam.real.max() < 0):
+        msg = "margins not computed" if lam.real.max() < 0 else \
+            f"unstable closed loop (largest Re λ = {lam.real.max():.6g} 1/s): no margins"
+        return p, lam, None, msg
+    tau = k.computation_delay_s
+    kk = with_pade_delay(k, tau, pade_order) if tau and not k.discrete else k
+    P = plant_ss(p, kk.sample_time_s, tau if kk.discrete else 0.0)
+    m = loop_margins(lti.loop_at_input(P, controller_ss(kk)), name="input (valve command)")
+    return p, lam, m, ""
+
+
+def margin_columns(m) -> dict:
+    """The margin columns of a row from :class:`~rotordyn.control.margins.LoopMargins`."""
+    if m is None:
+        return {}
+    d = m.disk
+    ps = float(m.peak_sensitivity)
+    return {"gain_margin_lower": m.gain_margin_lower,
+            "gain_margin_lower_hz": m.gain_margin_lower_hz,
+            "gain_margin_upper": m.gain_margin_upper,
+            "gain_margin_upper_hz": m.gain_margin_upper_hz,
+            "phase_margin_deg": m.phase_margin_deg, "phase_margin_hz": m.phase_margin_hz,
+            "delay_margin_s": m.delay_margin_s, "delay_margin_hz": m.delay_margin_hz,
+            "peak_sensitivity": ps, "peak_sensitivity_hz": m.peak_sensitivity_hz,
+            "peak_sensitivity_db": 20 * math.log10(ps) if ps > 0 else math.nan,
+            "disk_margin": d.alpha, "disk_margin_hz": d.frequency_hz,
+            "disk_gain_db": d.gain_db[1], "disk_phase_deg": d.phase_deg,
+            "iso_zone": iso_zone(ps)}
+
+
+def eigen_columns(lam) -> dict:
+    from rotordyn.results.modes import damping_ratio
+
+    z = damping_ratio(lam)
+    i, j = int(np.argmax(lam.real)), int(np.argmin(z))
+    return {"point_stable": bool(lam.real.max() < 0),
+            "max_real_1_per_s": float(lam.real[i]),
+            "max_real_freq_hz": float(abs(lam.imag[i]) / (2 * np.pi)),
+            "min_damping_ratio": float(z[j]),
+            "min_damping_freq_hz": float(abs(lam.imag[j]) / (2 * np.pi))}
+
+
+
 
 # worst case of each column: "max" or "min" over the points that have it
 WORST = {"max_real_1_per_s": "max", "min_damping_ratio": "min",
          "gain_margin_lower": "max", "gain_margin_upper": "min", "phase_margin_deg": "min",
          "delay_margin_s": "min", "disk_margin": "min", "peak_sensitivity": "max"}
 VERDICT = ["point_stable"] + list(WORST)
-
-
-@dataclass(frozen=True)
-class _SystemSpec(SweepSpec):
-    """A sweep spec whose model is an in-memory :class:`~rotordyn.System` (its hash names it
-    by the SHA-256 of its TOML, so a rerun with the same model resumes)."""
-
-    system: object = field(default=None, compare=False, repr=False)
-
-    def load_model(self):
-        return self.system
-
-
-def _toml_value(x) -> str:
-    if isinstance(x, bool):
-        return "true" if x else "false"
-    if isinstance(x, (int, np.integer)):
-        return str(int(x))
-    if isinstance(x, (float, np.floating)):
-        x = float(x)
-        return repr(x) if math.isfinite(x) else ("nan" if math.isnan(x) else
-                                                  ("inf" if x > 0 else "-inf"))
-    if isinstance(x, str):
-        return json.dumps(x)
-    if isinstance(x, dict):
-        return "{ " + ", ".join(f"{json.dumps(k)} = {_toml_value(val)}"
-                                for k, val in x.items()) + " }"
-    return "[" + ", ".join(_toml_value(e) for e in x) + "]"
-
-
-def spec_toml(name: str, axes: dict, options: dict, chunk_size: int, model: str) -> str:
-    """The spec as TOML text (stored in the dataset's manifest; ``rotordyn sweep`` runs it
-    with the model file saved as ``model``)."""
-    lines = ['schema = "rotordyn/sweep/1"', f"name = {json.dumps(name)}",
-             f"model = {json.dumps(model)}", 'analysis = "robust"',
-             f"chunk_size = {chunk_size}", "", "[grid]"]
-    lines += [f"{json.dumps(k)} = {_toml_value(val)}" for k, val in axes.items()]
-    lines += ["", "[options]"]
-    lines += [f"{k} = {_toml_value(val)}" for k, val in options.items()]
-    return "\n".join(lines) + "\n"
-
-
-def _grid(grid) -> dict:
-    if not isinstance(grid, dict):
-        raise InputError(f"grid: expected a dict {{axis: values}}, got {type(grid).__name__}")
-    if not grid:
-        raise InputError("grid: expected at least one axis (e.g. {'speed_hz': [40, 50, 60]})")
-    axes = {}
-    for k, val in grid.items():
-        if not isinstance(k, str) or not k:
-            raise InputError(f"grid: expected axis names as strings, got {k!r}")
-        if isinstance(val, np.ndarray):
-            val = val.tolist()
-        elif isinstance(val, tuple):
-            val = list(val)
-        elif isinstance(val, (np.floating, np.integer)):
-            val = float(val)
-        if isinstance(val, list) and any(isinstance(e, (np.floating, np.integer)) for e in val):
-            val = [float(e) for e in val]
-        axes[k] = _axis(k, val)
-    return axes
-
-
-def build_spec(system, controller, grid, *, actuator=None, margins: bool = True,
-               pade_order: int = 6, chunk_size: int | None = None, name: str = "robust",
-               equilibrium: dict | None = None) -> SweepSpec:
-    """The ``robust`` sweep spec of :func:`robust` (checked: axes against the model, the
-    law's measurements, the options), without running it."""
-    from rotordyn.control import _checks as chk
-    from rotordyn.model.system import System
-    from rotordyn.operation.controller import Controller
-
-    if not isinstance(system, System):
-        raise InputError(f"system: expected a rotordyn.System, got {type(system).__name__}")
-    if not isinstance(controller, Controller):
-        raise InputError(f"controller: expected a rotordyn.control.Controller, got "
-                         f"{type(controller).__name__}")
-    axes = _grid(grid)
-    opts = {"controller": rr.controller_table(controller)}
-    if actuator is not None:
-        opts["actuator"] = rr.actuator_table(chk.actuator(actuator))
-    opts["margins"] = v.boolean("margins", margins)
-    opts["pade_order"] = v.integer("pade_order", pade_order, lo=1, hi=20)
-    if equilibrium is not None:
-        if not isinstance(equilibrium, dict):
-            raise InputError(f"equilibrium: expected a dict (method, tol, max_iter), got "
-                             f"{type(equilibrium).__name__}")
-        from rotordyn.sweep.spec import OPTIONS
-
-        for k, val in equilibrium.items():
-            if k not in ("method", "tol", "max_iter"):
-                raise InputError(f"equilibrium.{k}: unknown key (allowed: method, tol, "
-                                 f"max_iter)")
-            opts[k] = OPTIONS["robust"][k](f"equilibrium.{k}", val)
-    for k in ("controller", "actuator"):
-        if k in opts:
-            opts[k] = OPTIONS_CHECK[k](f"options.{k}", opts[k])
-    n = math.prod(len(x) for x in axes.values())
-    chunk = v.integer("chunk_size", chunk_size, lo=1, hi=100000) if chunk_size is not None \
-        else max(1, min(50, -(-n // 8)))
-    v.text("name", name)
-    text = system.to_toml()
-    model = "model-sha256:" + hashlib.sha256(text.encode()).hexdigest()[:16]
-    spec = _SystemSpec(name=name, model=model, analysis="robust", axes=axes,
-                       chunk_size=chunk, options=opts,
-                       source=spec_toml(name, axes, opts, chunk, "model.toml"),
-                       system=system)
-    spec._check_shape()
-    spec.check_against(system)
-    return spec
-
-
-OPTIONS_CHECK = {"controller": rr.controller_option, "actuator": rr.actuator_option}
-
-
-def robust(system, controller, grid, *, actuator=None, margins: bool = True,
-           pade_order: int = 6, out=None, threads: int | None = None,
-           workers: int | None = None, chunk_size: int | None = None, resume: bool = True,
-           progress: bool = False, name: str = "robust",
-           equilibrium: dict | None = None) -> "RobustResult":
-    """The fixed law ``controller`` closed around ``system`` re-linearised at every point of
-    ``grid`` (module docstring).
-
-    grid : {axis: values}; axes ``speed_hz``, ``chamber_pressure_pa``, ``config_ay_m`` and
-        dotted model fields (the sweep spec's axes, docs/sweeps.md); values a number, a list
-        or array, or ``{"start", "stop", "num"}``. The first axis is outermost.
-    actuator : the valve (default ``Actuator()``, the 100 Hz second-order valve).
-    margins : compute the loop margins at every stable point (0.2–1 s each on the rig);
-        False: stability only (a few ms per point).
-    out : a directory for the parquet rows (kept; the same call resumes). None: a temporary
-        one, removed after reading.
-    threads / workers : as :func:`rotordyn.sweep.run_sweep` (default: one thread per core).
-    equilibrium : {method, tol, max_iter} of the equilibrium at each point.
-    """
-    spec = build_spec(system, controller, grid, actuator=actuator, margins=margins,
-                      pade_order=pade_order, chunk_size=chunk_size, name=name,
-                      equilibrium=equilibrium)
-    from rotordyn.sweep import open_dataset, run_sweep
-
-    if threads is None and workers is None:
-        threads = os.cpu_count() or 1
-    tmp = None
-    if out is None:
-        tmp = tempfile.mkdtemp(prefix="rotordyn-robust-")
-        target = Path(tmp) / "sweep"
-    else:
-        target = Path(out)
-    try:
-        run_sweep(spec, target, threads=threads, workers=workers, resume=resume,
-                  progress=progress)
-        frame = open_dataset(target).frame
-    finally:
-        if tmp is not None:
-            shutil.rmtree(tmp, ignore_errors=True)
-    return RobustResult(frame, dict(spec.ordered_axes), controller.name,
-                        None if out is None else Path(out))
 
 
 @dataclass(frozen=True)
@@ -271,7 +226,7 @@ class RobustResult:
                 "unstable": int((~st).sum()), "failed": int((~have).sum()),
                 "all_stable": self.all_stable,
                 "worst_iso_zone": max(zones) if len(zones) else None,
-                "zones": {z: int((zones == z).sum()) for z in rr.ZONES},
+                "zones": {z: int((zones == z).sum()) for z in ZONES},
                 "worst": self.worst()}
 
     def __repr__(self):
@@ -323,7 +278,7 @@ class RobustResult:
             if value == "max_real_1_per_s":
                 ax.axhline(0.0, color="k", lw=0.6)
             if value == "peak_sensitivity":
-                for z, hi in rr.ISO_ZONES:
+                for z, hi in ISO_ZONES:
                     ax.axhline(hi, color="0.6", lw=0.6, ls="--")
                     ax.text(ax.get_xlim()[1], hi, f" {z}/{chr(ord(z) + 1)}", fontsize=7,
                             va="center")
