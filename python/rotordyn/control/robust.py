@@ -163,9 +163,8 @@ def eigen_columns(lam) -> dict:
 
 # worst case of each column: "max" or "min" over the points that have it
 WORST = {"max_real_1_per_s": "max", "min_damping_ratio": "min",
-         "gain_margin_lower": "max", "gain_margin_upper": "min", "phase_margin_deg": "min",
+         "gain_margin_lower": "max", "gain_margin_upper": "min", "phase_margin_deg": "min_abs",
          "delay_margin_s": "min", "disk_margin": "min", "peak_sensitivity": "max"}
-VERDICT = ["point_stable"] + list(WORST)
 
 
 @dataclass(frozen=True)
@@ -200,15 +199,17 @@ class RobustResult:
 
     def worst(self) -> dict:
         """{quantity: {"value", "point_id", axis values...}} — max Re λ and peak |S| at their
-        largest, gain_margin_lower at its largest, the others at their smallest, over the
-        points that have the quantity (margins: the stable points)."""
+        largest, gain_margin_lower at its largest, the phase margin at its smallest magnitude
+        (a stable loop of an unstable plant can have a negative one), the others at their
+        smallest, over the points that have the quantity (margins: the stable points)."""
         out = {}
         for col, how in WORST.items():
             s = self.frame[col].astype(float)
             ok = s.notna()
             if not ok.any():
                 continue
-            i = s[ok].idxmax() if how == "max" else s[ok].idxmin()
+            i = s[ok].idxmax() if how == "max" else (s[ok].abs() if how == "min_abs"
+                                                     else s[ok]).idxmin()
             row = self.frame.loc[i]
             out[col] = {"value": float(row[col]), "point_id": int(row["point_id"]),
                         **{a: float(row[a]) for a in self.axes}}
@@ -278,6 +279,7 @@ class RobustResult:
             if value == "max_real_1_per_s":
                 ax.axhline(0.0, color="k", lw=0.6)
             if value == "peak_sensitivity":
+                ax.set_yscale("log")
                 for z, hi in ISO_ZONES:
                     ax.axhline(hi, color="0.6", lw=0.6, ls="--")
                     ax.text(ax.get_xlim()[1], hi, f" {z}/{chr(ord(z) + 1)}", fontsize=7,

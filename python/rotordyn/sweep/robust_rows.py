@@ -21,7 +21,6 @@ from rotordyn.errors import InputError, RotordynError
 
 CONTROLLER_KEYS = ("A", "B", "C", "D", "measurements", "sample_time_s", "computation_delay_s",
                    "name")
-OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m")
 
 
 # ----------------------------------------------------------------------------- options
