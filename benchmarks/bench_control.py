@@ -29,7 +29,8 @@ Run ``python benchmarks/bench_control.py [--repeat 3] [--t-sim 0.2] [--no-scipy]
   one by one in a Python loop (``plant`` + ``closed_loop(with_margins=False)``); then with the
   margins at every stable point on 10 × 10 (speed × p_c) points, beside the loop doing the
   same (``closed_loop`` + ``margins.loop_margins`` of the input loop) (goal: 10³ points ≤ 30 s
-  on 2 cores).
+  on 2 cores); medians of ``--repeat`` interleaved repeats (sweep on 2 threads, sweep on
+  ``--robust-workers`` processes, loop).
 
 Medians of interleaved repeats; wall and CPU (process) time; the machine load before and
 after (the machine is shared: figures are noisy). One BLAS/OpenMP thread.
@@ -155,7 +156,7 @@ def equal_accuracy_cost(points, err_target):
     return None
 
 
-def robust_rows(rig, k, n_side: int, workers: int) -> None:
+def robust_rows(rig, k, n_side: int, workers: int, repeat: int) -> None:
     """The robust sweep against a Python loop over the same points (module docstring)."""
     import tempfile
 
@@ -190,23 +191,34 @@ def robust_rows(rig, k, n_side: int, workers: int) -> None:
     for label, grid, with_m in cases:
         pts = [(f, pc, ay) for f in grid["speed_hz"] for pc in grid["chamber_pressure_pa"]
                for ay in np.atleast_1d(grid["config_ay_m"])]
-        print(f"robust sweep, {label}: {len(pts)} points; {load_line('load')}")
-        for kw in ({"threads": 2}, {"workers": workers}):
-            with tempfile.TemporaryDirectory() as d:
-                r, wall, cpu = timed(lambda: robust(rig, k, grid, margins=with_m,
-                                                    out=os.path.join(d, "r"), **kw))
-            s = r.summary()
-            print(f"  robust({', '.join(f'{a}={b}' for a, b in kw.items())}): wall {wall:.1f} s, "
-                  f"CPU of this process {cpu:.1f} s; {s['stable']} stable, {s['unstable']} "
-                  f"unstable, {s['failed']} without verdict; worst max Re λ "
-                  f"{s['worst']['max_real_1_per_s']['value']:.3f} 1/s")
-        res, wall, cpu = timed(lambda: loop(pts, with_m))
-        print(f"  the same points in a Python loop (1 thread): wall {wall:.1f} s, CPU {cpu:.1f} s "
-              f"({1e3 * cpu / len(pts):.1f} ms CPU per point)")
+        print(f"robust sweep, {label}: {len(pts)} points, medians of {repeat} interleaved "
+              f"repeats; {load_line('load')}")
+        runs = {"threads=2": [], f"workers={workers}": [], "loop": []}
+        for _ in range(repeat):
+            for kw in ({"threads": 2}, {"workers": workers}):
+                with tempfile.TemporaryDirectory() as d:
+                    r, wall, cpu = timed(lambda: robust(rig, k, grid, margins=with_m,
+                                                        out=os.path.join(d, "r"), **kw))
+                runs[", ".join(f"{a}={b}" for a, b in kw.items())].append((wall, cpu))
+            res, wall, cpu = timed(lambda: loop(pts, with_m))
+            runs["loop"].append((wall, cpu))
+        s = r.summary()
+        print(f"  {s['stable']} stable, {s['unstable']} unstable, {s['failed']} without verdict; "
+              f"worst max Re λ {s['worst']['max_real_1_per_s']['value']:.3f} 1/s")
+        for name, v in runs.items():
+            wall = statistics.median(x[0] for x in v)
+            cpu = statistics.median(x[1] for x in v)
+            what = ("the same points in a Python loop (1 thread)" if name == "loop"
+                    else f"robust({name})")
+            note = (" (the workers' CPU not counted)" if name.startswith("workers") else
+                    f" ({1e3 * cpu / len(pts):.1f} ms CPU per point)")
+            print(f"  {what}: wall {wall:.1f} s, CPU of this process {cpu:.1f} s{note}; "
+                  f"walls {', '.join(f'{x[0]:.1f}' for x in v)}")
         got = r.frame.max_real_1_per_s.to_numpy()
         ref = np.array([np.nan if x is None else x[0] for x in res])
         print(f"  rows vs loop: largest |Δ max Re λ| {np.nanmax(np.abs(got - ref)):.1e} 1/s, "
-              f"same failures: {bool(np.array_equal(np.isnan(got), np.isnan(ref)))}")
+              f"same failures: {bool(np.array_equal(np.isnan(got), np.isnan(ref)))}; "
+              f"{load_line('load')}")
 
 
 def main():
@@ -231,7 +243,8 @@ def main():
     k, cl = tune_pd(plant(rig, F, PC, AY, measurements=[("journal", 0)], actuator=act))
     print(f"PD: closed-loop max Re λ = {cl.max_real:.2f} 1/s; t_sim = {args.t_sim} s")
     if args.robust_only:
-        robust_rows(rig, k, round(args.robust_points ** (1 / 3)), args.robust_workers)
+        robust_rows(rig, k, round(args.robust_points ** (1 / 3)), args.robust_workers,
+                    args.repeat)
         print(f"load after: {load()}")
         return
     kw = dict(disturbance_m=(0.0, 0.1 * C), n_out=201, rtol=RTOL, atol_m=ATOL)
@@ -357,7 +370,8 @@ def main():
         print(f"run-up 10 -> 120 Hz in 10 s (valve, unbalance): {tr.status}, "
               f"{tr.stats['steps']} steps, wall {wall:.1f} s, CPU {cpu:.1f} s (goal < 60 s)")
     if not args.no_robust:
-        robust_rows(rig, k, round(args.robust_points ** (1 / 3)), args.robust_workers)
+        robust_rows(rig, k, round(args.robust_points ** (1 / 3)), args.robust_workers,
+                    args.repeat)
     print(f"load after: {load()}")
 
 
