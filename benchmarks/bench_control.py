@@ -23,7 +23,7 @@ Run ``python benchmarks/bench_control.py [--repeat 3] [--t-sim 0.2] [--no-scipy]
   second);
 * **run-up** — 10 → 120 Hz in 10 s with a 2e-5 kg m unbalance at disk B, p_c = 0.5 MPa and
   the valve (goal: < 60 s wall on one core).
-* **robust sweep** (``--robust-points``, default 1000) — ``rotordyn.control.robust`` of the
+* **robust sweep** (``--robust-points``, default 1000) — ``rotordyn.sweep.robust.robust`` of the
   tuned PD over speed × p_c × a_y (10 × 10 × 10 around the design point), stability only
   (plant re-linearised cold at each point, closed-loop eigenvalues), beside the same points
   one by one in a Python loop (``plant`` + ``closed_loop(with_margins=False)``); then with the
