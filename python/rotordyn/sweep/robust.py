@@ -91,7 +91,7 @@ def _grid(grid) -> dict:
 
 def build_spec(system, controller, grid, *, actuator=None, margins: bool = True,
                pade_order: int = 6, chunk_size: int | None = None, name: str = "robust",
-               equilibrium: dict | None = None) -> SweepSpec:
+               equilibrium: dict | None = None, continuation: bool = True) -> SweepSpec:
     """The ``robust`` sweep spec of :func:`robust` (checked: axes against the model, the
     law's measurements, the options), without running it."""
     from rotordyn.control import _checks as chk
@@ -109,6 +109,7 @@ def build_spec(system, controller, grid, *, actuator=None, margins: bool = True,
         opts["actuator"] = actuator_table(chk.actuator(actuator))
     opts["margins"] = v.boolean("margins", margins)
     opts["pade_order"] = v.integer("pade_order", pade_order, lo=1, hi=20)
+    opts["continuation"] = v.boolean("continuation", continuation)
     if equilibrium is not None:
         if not isinstance(equilibrium, dict):
             raise InputError(f"equilibrium: expected a dict (method, tol, max_iter), got "
@@ -143,7 +144,7 @@ def robust(system, controller, grid, *, actuator=None, margins: bool = True,
            pade_order: int = 6, out=None, threads: int | None = None,
            workers: int | None = None, chunk_size: int | None = None, resume: bool = True,
            progress: bool = False, name: str = "robust",
-           equilibrium: dict | None = None) -> "RobustResult":
+           equilibrium: dict | None = None, continuation: bool = True) -> "RobustResult":
     """The fixed law ``controller`` closed around ``system`` re-linearised at every point of
     ``grid`` (module docstring).
 
@@ -157,10 +158,14 @@ def robust(system, controller, grid, *, actuator=None, margins: bool = True,
         one, removed after reading.
     threads / workers : as :func:`rotordyn.sweep.run_sweep` (default: one thread per core).
     equilibrium : {method, tol, max_iter} of the equilibrium at each point.
+    continuation : start each point's equilibrium from the previous point's along the last
+        varying axis (chunks hold whole lines, so the rows stay deterministic; a failed
+        continued solve is retried cold); False: every point cold, as a direct call with
+        ``warm_start=False`` (about 2× the cost).
     """
     spec = build_spec(system, controller, grid, actuator=actuator, margins=margins,
                       pade_order=pade_order, chunk_size=chunk_size, name=name,
-                      equilibrium=equilibrium)
+                      equilibrium=equilibrium, continuation=continuation)
     from rotordyn.sweep.dataset import open_dataset
     from rotordyn.sweep.runner import run_sweep
 

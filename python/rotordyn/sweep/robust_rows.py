@@ -107,25 +107,42 @@ def robust_rows(job, variants, chunk_id, lo, hi, rows):
     eq = {key: opts[key] for key in ("method", "tol", "max_iter") if key in opts}
     with_m = bool(opts.get("margins", True))
     pade = int(opts.get("pade_order", 6))
-    for row, p, asm, _, _, err in points(job, variants, chunk_id, lo, hi):
+    cont = bool(opts.get("continuation", True))
+    r_prev = None
+    for row, p, asm, _, line, err in points(job, variants, chunk_id, lo, hi):
         if err:
             rows.append(fail_row(row, "error", err))
+            r_prev = None
             continue
         f = p.get("speed_hz", 50.0)
         pc = p.get("chamber_pressure_pa", 0.0)
         ay = p.get("config_ay_m")
-        try:
-            pl, lam, m, msg = closed_loop_point(asm.system, k, f, pc, ay, actuator=act,
-                                                equilibrium=eq, with_margins=with_m,
-                                                pade_order=pade)
-        except ConvergenceError as exc:
+        # along a line (chunks hold whole lines: deterministic) the equilibrium starts from the
+        # previous point's; cold otherwise, and again cold when the continued solve fails
+        starts = ([{"r0": r_prev}] if cont and line and r_prev is not None else []) + [{}]
+        r_prev = None
+        for start in starts:
+            try:
+                pl, lam, m, msg = closed_loop_point(asm.system, k, f, pc, ay, actuator=act,
+                                                    equilibrium={**eq, **start},
+                                                    with_margins=with_m, pade_order=pade)
+                failure = None
+                break
+            except ConvergenceError as exc:
+                failure = exc
+            except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
+                failure = exc
+                break
+        if isinstance(failure, ConvergenceError):
             e = equilibrium(asm.system, f, pc, ay, warm_start=False, **eq)
             st = e.status if e.status in STATUS and e.status not in CONVERGED else "error"
-            rows.append(fail_row(row, st, f"no closed-loop verdict: {exc}"))
+            rows.append(fail_row(row, st, f"no closed-loop verdict: {failure}"))
             continue
-        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
-            rows.append(fail_row(row, "error", f"{type(exc).__name__}: {exc}"))
+        if failure is not None:
+            rows.append(fail_row(row, "error", f"{type(failure).__name__}: {failure}"))
             continue
+        if pl.info.get("equilibrium_status") == "ok":
+            r_prev = pl.info.get("equilibrium_r")
         bc = ref_bearing(asm)
         r = pl.info.get("equilibrium_r")
         jx = float(r[bc.jx]) if bc is not None and r is not None else math.nan

@@ -120,7 +120,7 @@ REQUIRED = {"threshold": ("vary",), "boundary": ("x", "y", "resolution"),
 # a fixed law closed around the plant re-linearised at each point (rotordyn.control.robust)
 OPTIONS["robust"] = {**_EQ, "controller": rr.controller_option,
                      "actuator": rr.actuator_option, "margins": _opt_bool,
-                     "pade_order": _opt_int(1, 20)}
+                     "pade_order": _opt_int(1, 20), "continuation": _opt_bool}
 REQUIRED["robust"] = ("controller",)
 
 
@@ -482,6 +482,9 @@ class SweepSpec:
             return self.options["vary"]
         if self.analysis in ("campbell", "unbalance"):
             return "speed_hz"
+        if self.analysis == "robust" and self.options.get("continuation", True):
+            varying = [a for a, vals in self.axes.items() if len(vals) > 1]
+            return varying[-1] if varying else None  # equilibria continued along the last
         if self.analysis == "stability" and "line" in self.options:
             return self.options["line"]
         if self.analysis == "stability" and self.options.get("track", True):
