@@ -23,12 +23,13 @@ Run ``python benchmarks/bench_control.py [--repeat 3] [--t-sim 0.2] [--no-scipy]
   second);
 * **run-up** — 10 → 120 Hz in 10 s with a 2e-5 kg m unbalance at disk B, p_c = 0.5 MPa and
   the valve (goal: < 60 s wall on one core).
-* **robust sweep** (``--robust-points``, default 1000) — ``rotordyn.sweep.robust.robust`` of the
-  tuned PD over speed × p_c × a_y (10 × 10 × 10 around the design point), stability only
-  (plant re-linearised cold at each point, closed-loop eigenvalues), beside the same points
-  one by one in a Python loop (``plant`` + ``closed_loop(with_margins=False)``); then with the
-  margins at every stable point on 10 × 10 (speed × p_c) points, beside the loop doing the
-  same (``closed_loop`` + ``margins.loop_margins`` of the input loop) (goal: 10³ points ≤ 30 s
+* **robust sweep** (``--robust-points``, default 1000) — ``rotordyn.sweep.robust.robust`` of
+  the tuned PD over speed × p_c × a_y (10 × 10 × 10 around the design point), stability only
+  (plant re-linearised at each point, equilibria continued along the innermost axis,
+  closed-loop eigenvalues), beside the same points one by one in a Python loop (``plant``
+  with its default warm start + ``closed_loop(with_margins=False)``); then with the margins at
+  every stable point on 10 × 10 (speed × p_c) points, beside the loop doing the same
+  (``closed_loop`` + ``margins.loop_margins`` of the input loop) (goal: 10³ points ≤ 30 s
   on 2 cores); medians of ``--repeat`` interleaved repeats (sweep on 2 threads, sweep on
   ``--robust-workers`` processes, loop).
 
@@ -167,13 +168,13 @@ def robust_rows(rig, k, n_side: int, workers: int, repeat: int) -> None:
     speeds = np.linspace(30.0, 70.0, n_side)
     pcs = np.linspace(0.02e6, 0.2e6, n_side)
     ays = np.linspace(-2.2e-3, -1.5e-3, n_side)
-    cold = {"warm_start": False}
 
     def loop(points, with_margins):
         out = []
         for f, pc, ay in points:
             try:
-                p = plant(rig, f, pc, ay, measurements=k.measurements, equilibrium=cold)
+                # the default warm start: from this thread's previous equilibrium
+                p = plant(rig, f, pc, ay, measurements=k.measurements)
             except rd.ConvergenceError:
                 out.append(None)
                 continue

@@ -7,7 +7,8 @@ of a grid with their worst cases (:class:`RobustResult`). The grid itself runs a
 The law K (a :class:`~rotordyn.control.Controller`) stays fixed; at every point — speed, p_c,
 a_y and any numeric model field (``bearings.active.clearance_m``,
 ``bearings.active.viscosity_pa_s``, ...) — the plant is re-linearised about that point's own
-equilibrium, solved cold (``warm_start=False``, so a row does not depend on what ran before):
+equilibrium (solved cold, ``warm_start=False``, or from a given ``r0``; never from whatever
+this thread solved before):
 
 * stability: the closed-loop eigenvalues λ of [A + B D_k C, B C_k; B_k C, A_k] (a discrete law:
   the exact sampled-data loop, λ = ln z / T; a computation delay as in

@@ -3,9 +3,10 @@ runs the ``robust`` analysis (:mod:`rotordyn.sweep.robust_rows`) through the swe
 and returns a :class:`rotordyn.control.robust.RobustResult` (rows, worst cases, zones, plots;
 the physics and its sources are in :mod:`rotordyn.control.robust`, docs/control.md §2.4).
 
-Parquet rows, deterministic (each point's equilibrium solved cold), resumable when ``out`` is
-given (the same call again computes only the missing chunks), on threads or worker processes;
-a point whose equilibrium fails is a row with that status and no verdict.
+Parquet rows, deterministic (equilibria continued only along whole lines inside a chunk),
+resumable when ``out`` is given (the same call again computes only the missing chunks), on
+threads or worker processes; a point whose equilibrium fails is a row with that status and no
+verdict.
 """
 
 from __future__ import annotations
