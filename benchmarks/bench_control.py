@@ -27,6 +27,15 @@ Run ``python benchmarks/bench_control.py [--repeat 3] [--t-sim 0.2] [--no-scipy]
   second);
 * **run-up** — 10 → 120 Hz in 10 s with a 2e-5 kg m unbalance at disk B, p_c = 0.5 MPa and
   the valve (goal: < 60 s wall on one core).
+* **robust sweep** (``--robust-points``, default 1000) — ``rotordyn.sweep.robust.robust`` of
+  the tuned PD over speed × p_c × a_y (10 × 10 × 10 around the design point), stability only
+  (plant re-linearised at each point, equilibria continued along the innermost axis,
+  closed-loop eigenvalues), beside the same points one by one in a Python loop (``plant``
+  with its default warm start + ``closed_loop(with_margins=False)``); then with the margins at
+  every stable point on 10 × 10 (speed × p_c) points, beside the loop doing the same
+  (``closed_loop`` + ``margins.loop_margins`` of the input loop) (goal: 10³ points ≤ 30 s
+  on 2 cores); medians of ``--repeat`` interleaved repeats (sweep on 2 threads, sweep on
+  ``--robust-workers`` processes, loop).
 
 Medians of interleaved repeats; wall and CPU (process) time; the machine load before and
 after (the machine is shared: figures are noisy). One BLAS/OpenMP thread.
@@ -53,6 +62,7 @@ from rotordyn.analysis.measurement import measurement_matrix  # noqa: E402
 from rotordyn.control.pid import tune_pd  # noqa: E402
 from rotordyn.control.plant import plant  # noqa: E402
 from python_film import PythonFilmForces, check_against_core  # noqa: E402
+from _common import load_line  # noqa: E402
 
 C, AY, F, PC = 3e-4, -1.85e-3, 50.0, 0.05e6
 RTOL, ATOL = 1e-6, 1e-9
@@ -192,6 +202,69 @@ def laws(rig, act, repeat):
               f"PD); without the call's fixed costs {1e6 * per2:.1f} µs "
               f"({100 * (per2 / base2 - 1):+.1f} %; goal <= +20 %)")
     print(f"[laws] load: {load()}")
+def robust_rows(rig, k, n_side: int, workers: int, repeat: int) -> None:
+    """The robust sweep against a Python loop over the same points (module docstring)."""
+    import tempfile
+
+    from rotordyn.control import margins as mg
+    from rotordyn.control.closedloop import closed_loop
+    from rotordyn.sweep.robust import robust
+
+    speeds = np.linspace(30.0, 70.0, n_side)
+    pcs = np.linspace(0.02e6, 0.2e6, n_side)
+    ays = np.linspace(-2.2e-3, -1.5e-3, n_side)
+
+    def loop(points, with_margins):
+        out = []
+        for f, pc, ay in points:
+            try:
+                # the default warm start: from this thread's previous equilibrium
+                p = plant(rig, f, pc, ay, measurements=k.measurements)
+            except rd.ConvergenceError:
+                out.append(None)
+                continue
+            cl = closed_loop(p, k, freqs_hz=[1.0, 2.0], with_margins=False)
+            m = None
+            if with_margins and cl.stable:
+                m = mg.loop_margins(mg.lti.loop_at_input(mg.plant_ss(p), mg.controller_ss(k)))
+            out.append((cl.max_real, m))
+        return out
+
+    cases = [("stability only", {"speed_hz": speeds.tolist(), "chamber_pressure_pa": pcs.tolist(),
+                                 "config_ay_m": ays.tolist()}, False),
+             ("with margins", {"speed_hz": speeds.tolist(), "chamber_pressure_pa": pcs.tolist(),
+                               "config_ay_m": AY}, True)]
+    for label, grid, with_m in cases:
+        pts = [(f, pc, ay) for f in grid["speed_hz"] for pc in grid["chamber_pressure_pa"]
+               for ay in np.atleast_1d(grid["config_ay_m"])]
+        print(f"robust sweep, {label}: {len(pts)} points, medians of {repeat} interleaved "
+              f"repeats; {load_line('load')}")
+        runs = {"threads=2": [], f"workers={workers}": [], "loop": []}
+        for _ in range(repeat):
+            for kw in ({"threads": 2}, {"workers": workers}):
+                with tempfile.TemporaryDirectory() as d:
+                    r, wall, cpu = timed(lambda: robust(rig, k, grid, margins=with_m,
+                                                        out=os.path.join(d, "r"), **kw))
+                runs[", ".join(f"{a}={b}" for a, b in kw.items())].append((wall, cpu))
+            res, wall, cpu = timed(lambda: loop(pts, with_m))
+            runs["loop"].append((wall, cpu))
+        s = r.summary()
+        print(f"  {s['stable']} stable, {s['unstable']} unstable, {s['failed']} without verdict; "
+              f"worst max Re λ {s['worst']['max_real_1_per_s']['value']:.3f} 1/s")
+        for name, v in runs.items():
+            wall = statistics.median(x[0] for x in v)
+            cpu = statistics.median(x[1] for x in v)
+            what = ("the same points in a Python loop (1 thread)" if name == "loop"
+                    else f"robust({name})")
+            note = (" (the workers' CPU not counted)" if name.startswith("workers") else
+                    f" ({1e3 * cpu / len(pts):.1f} ms CPU per point)")
+            print(f"  {what}: wall {wall:.1f} s, CPU of this process {cpu:.1f} s{note}; "
+                  f"walls {', '.join(f'{x[0]:.1f}' for x in v)}")
+        got = r.frame.max_real_1_per_s.to_numpy()
+        ref = np.array([np.nan if x is None else x[0] for x in res])
+        print(f"  rows vs loop: largest |Δ max Re λ| {np.nanmax(np.abs(got - ref)):.1e} 1/s, "
+              f"same failures: {bool(np.array_equal(np.isnan(got), np.isnan(ref)))}; "
+              f"{load_line('load')}")
 
 
 def main():
@@ -206,17 +279,28 @@ def main():
     ap.add_argument("--laws-only", action="store_true",
                     help="only the fixed / scheduled / adaptive law comparison (issue 24)")
     ap.add_argument("--no-laws", action="store_true")
+    ap.add_argument("--no-robust", action="store_true")
+    ap.add_argument("--robust-only", action="store_true",
+                    help="only the robust-sweep rows")
+    ap.add_argument("--robust-points", type=int, default=1000,
+                    help="points of the stability-only robust sweep (a cube: 10 per axis)")
+    ap.add_argument("--robust-workers", type=int, default=2)
     args = ap.parse_args()
     print(f"load before: {load()}  (2 shared cores: figures are noisy)")
     rig = rd.models.paper_rig()
     act = Actuator()
-    if not args.no_laws:
+    if not (args.no_laws or args.robust_only):
         laws(rig, act, args.repeat)
         if args.laws_only:
             print(f"load after: {load()}")
             return
     k, cl = tune_pd(plant(rig, F, PC, AY, measurements=[("journal", 0)], actuator=act))
     print(f"PD: closed-loop max Re λ = {cl.max_real:.2f} 1/s; t_sim = {args.t_sim} s")
+    if args.robust_only:
+        robust_rows(rig, k, round(args.robust_points ** (1 / 3)), args.robust_workers,
+                    args.repeat)
+        print(f"load after: {load()}")
+        return
     kw = dict(disturbance_m=(0.0, 0.1 * C), n_out=201, rtol=RTOL, atol_m=ATOL)
 
     def ol():
@@ -339,6 +423,9 @@ def main():
             actuator=act, n_out=10 * 120 * 32 + 1))
         print(f"run-up 10 -> 120 Hz in 10 s (valve, unbalance): {tr.status}, "
               f"{tr.stats['steps']} steps, wall {wall:.1f} s, CPU {cpu:.1f} s (goal < 60 s)")
+    if not args.no_robust:
+        robust_rows(rig, k, round(args.robust_points ** (1 / 3)), args.robust_workers,
+                    args.repeat)
     print(f"load after: {load()}")
 
 

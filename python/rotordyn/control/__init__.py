@@ -8,3 +8,8 @@ from rotordyn.analysis.measurement import measurement_matrix
 from rotordyn.operation import Actuator, Controller, PressureSchedule, SpeedProfile
 
 __all__ = ["Actuator", "Controller", "PressureSchedule", "SpeedProfile", "measurement_matrix"]
+
+# the rows of a robust sweep and their worst cases (the sweep itself: rotordyn.sweep.robust)
+from rotordyn.control.robust import RobustResult  # noqa: E402
+
+__all__ += ["RobustResult"]

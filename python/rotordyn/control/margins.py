@@ -267,9 +267,10 @@ def _roots(fun, w, vals) -> list:
     return out
 
 
-def _peak(loop, w, p: float, q: float) -> tuple[float, float]:
-    """sup_ω |(p + q L)/(1 + L)| and its ω (rad/s; 0 or inf at the ends)."""
-    L, dL = _L(loop, w, True)
+def _peak(loop, w, p: float, q: float, grid=None) -> tuple[float, float]:
+    """sup_ω |(p + q L)/(1 + L)| and its ω (rad/s; 0 or inf at the ends). ``grid``: (L, dL/dω)
+    on ``w`` when the caller has them (the same values: one evaluation for every peak)."""
+    L, dL = _L(loop, w, True) if grid is None else grid
 
     def m_and_slope(L, dL):
         M = (p + q * L) / (1 + L)
@@ -314,8 +315,8 @@ def _peak(loop, w, p: float, q: float) -> tuple[float, float]:
     return best
 
 
-def _disk(loop, w, sigma) -> DiskMargin:
-    peak, wp = _peak(loop, w, (1 + sigma) / 2, (sigma - 1) / 2)
+def _disk(loop, w, sigma, grid=None) -> DiskMargin:
+    peak, wp = _peak(loop, w, (1 + sigma) / 2, (sigma - 1) / 2, grid)
     alpha = 1.0 / peak if peak > 0 else math.inf
     return disk_from_alpha(alpha, sigma, wp / (2 * math.pi))
 
@@ -337,7 +338,7 @@ def loop_margins(loop, *, name: str = "loop", dt=None) -> LoopMargins:
         raise InputError(f"{name}: the closed loop is not stable (largest Re λ = {mr:.6g} "
                          f"1/s); margins are defined for a stable closed loop only")
     w = _grid(ss)
-    L = _L(ss, w)
+    L, dL = _L(ss, w, True)  # once for the crossings and all three peaks
     two_pi = 2 * math.pi
 
     # gain margins: L real negative
@@ -388,9 +389,9 @@ def loop_margins(loop, *, name: str = "loop", dt=None) -> LoopMargins:
     if ss.dt is None and abs(Linf) >= 1:
         dm, dmf = 0.0, math.inf
 
-    s_pk, s_w = _peak(ss, w, 1.0, 0.0)
-    t_pk, t_w = _peak(ss, w, 0.0, 1.0)
-    disk = _disk(ss, w, 0.0)
+    s_pk, s_w = _peak(ss, w, 1.0, 0.0, (L, dL))
+    t_pk, t_w = _peak(ss, w, 0.0, 1.0, (L, dL))
+    disk = _disk(ss, w, 0.0, (L, dL))
     return LoopMargins(name, gms, gmw, float(glo[0]), float(glo[1]), float(ghi[0]),
                        float(ghi[1]), pms, cf, dms, pm, pmf, dm, dmf, float(s_pk),
                        s_w / two_pi, float(t_pk), t_w / two_pi, disk, mr, ss)

@@ -126,9 +126,12 @@ class Plant:
 
 def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
           config_ay_m: float | None = None, *, measurements=(("journal", 0),),
-          actuator: Actuator | None = None, disturbance_stations=()) -> Plant:
+          actuator: Actuator | None = None, disturbance_stations=(),
+          equilibrium: dict | None = None) -> Plant:
     """Linear plant about the equilibrium at (speed, p_c, a_y) with the actuator's lag
-    (Actuator(): a 100 Hz second-order valve; ``Actuator.ideal()`` for none)."""
+    (Actuator(): a 100 Hz second-order valve; ``Actuator.ideal()`` for none).
+    ``equilibrium``: keywords of :func:`rotordyn.equilibrium` (e.g. ``{"warm_start": False}``
+    for a result that does not depend on what this thread solved before)."""
     speed_hz, chamber_pressure_pa, config_ay_m = chk.operating_point(
         system, speed_hz, chamber_pressure_pa, config_ay_m)
     act = chk.actuator(actuator)
@@ -138,8 +141,12 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
         and hasattr(disturbance_stations, "__len__") and len(disturbance_stations) == 0
     dist = () if empty else chk.stations(system, disturbance_stations, "disturbance_stations")
     inputs = [("chamber_pressure",)] + [("force", s) for s in dist]
+    if equilibrium is not None and not isinstance(equilibrium, dict):
+        raise InputError(f"equilibrium: expected a dict of equilibrium keywords, got "
+                         f"{type(equilibrium).__name__}")
     ss = statespace(system, inputs=inputs, speed_hz=speed_hz,
-                    chamber_pressure_pa=chamber_pressure_pa, config_ay_m=config_ay_m)
+                    chamber_pressure_pa=chamber_pressure_pa, config_ay_m=config_ay_m,
+                    **(equilibrium or {}))
     n2 = ss.A.shape[0]
     Aa, Ba, Ca = act.statespace()
     na = Aa.shape[0]
@@ -160,6 +167,8 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
     states = tuple(ss.state_names) + tuple(f"actuator_{i}" for i in range(na))
     return Plant(A, B, C, Bd, Cp, meas, names, states, act, float(speed_hz),
                  float(chamber_pressure_pa), config_ay_m, n2 // 2,
+                 info={"equilibrium_r": np.asarray(ss.linear.equilibrium.r, float),
+                       "equilibrium_status": str(ss.linear.equilibrium.status)},
                  disturbance_names=tuple(str(x) for x in ss.input_names[1:]))
 
 

@@ -86,7 +86,8 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
     KeyboardInterrupt becomes :class:`SweepInterrupted` after the directory is left
     consistent (running again resumes).
     """
-    spec = SweepSpec.from_toml(spec_path)
+    # a spec file or built-in name; or a checked SweepSpec (rotordyn.control.robust)
+    spec = spec_path if isinstance(spec_path, SweepSpec) else SweepSpec.from_toml(spec_path)
     scheduler = check_scheduler(scheduler, tls_ca_file, tls_cert, tls_key)
     if threads is not None:
         v.integer("threads", threads, lo=1, hi=1024)

@@ -27,12 +27,13 @@ import numpy as np
 from rotordyn.errors import InputError
 from rotordyn._common import validate as v
 from rotordyn.model import builtin as models
+from rotordyn.sweep import robust_rows as rr
 
 SCHEMA = "rotordyn/sweep/1"
 OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
 DEFAULTS = {"speed_hz": 50.0, "chamber_pressure_pa": 0.0}
 ANALYSES = ("equilibrium", "thermal", "stability", "campbell", "threshold", "boundary",
-            "unbalance", "waterfall", "run-up")
+            "unbalance", "waterfall", "run-up", "robust")
 ANALYSES += ("hopf",)
 MAX_POINTS = 10_000_000
 
@@ -118,6 +119,11 @@ OPTIONS["hopf"] = {**OPTIONS["threshold"], "fd_step": _opt_range(0.0, 0.5)}
 REQUIRED = {"threshold": ("vary",), "hopf": ("vary",), "boundary": ("x", "y", "resolution"),
             "unbalance": ("unbalances",), "waterfall": ("unbalances",),
             "run-up": ("unbalances", "start_hz", "stop_hz", "rate_hz_per_s")}
+# a fixed law closed around the plant re-linearised at each point (rotordyn.control.robust)
+OPTIONS["robust"] = {**_EQ, "controller": rr.controller_option,
+                     "actuator": rr.actuator_option, "margins": _opt_bool,
+                     "pade_order": _opt_int(1, 20), "continuation": _opt_bool}
+REQUIRED["robust"] = ("controller",)
 
 
 def _dec(x) -> Decimal:
@@ -393,6 +399,9 @@ class SweepSpec:
                 if ax in self.axes:
                     raise InputError(f"grid.{ax}: not available with the thermal model (sweep "
                                      "the bearings' own config_ay_m/config_ax_m fields)")
+        if a == "robust" and "config_ax_m" in self.axes:
+            raise InputError("grid.config_ax_m: the control plant takes a_y only (sweep the "
+                             "bearing's own field bearings.<name>.config_ax_m)")
         if "line" in self.options and self.options["line"] not in self.axes:
             raise InputError(f"options.line: {self.options['line']!r} is not a grid axis")
         if a in ("campbell", "unbalance") and len(self.axes.get("speed_hz", ())) < 2:
@@ -443,6 +452,8 @@ class SweepSpec:
                                  f"{', '.join(OPERATING)}, a dotted model field such as "
                                  "bearings.active.clearance_m, or options.<name>)")
             _check_model_axis(system, name, vals)
+        if self.analysis == "robust":
+            rr.check_model(system, self.options)
         n_st = system.rotor.n_stations
         for key in ("unbalances", "stations"):
             for i, u in enumerate(self.options.get(key, ())):
@@ -473,6 +484,9 @@ class SweepSpec:
             return self.options["vary"]
         if self.analysis in ("campbell", "unbalance"):
             return "speed_hz"
+        if self.analysis == "robust" and self.options.get("continuation", True):
+            varying = [a for a, vals in self.axes.items() if len(vals) > 1]
+            return varying[-1] if varying else None  # equilibria continued along the last
         if self.analysis == "stability" and "line" in self.options:
             return self.options["line"]
         if self.analysis == "stability" and self.options.get("track", True):

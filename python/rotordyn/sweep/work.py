@@ -28,6 +28,7 @@ from rotordyn.errors import RotordynError
 from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, equilibrium_options, fail_row, operating, points, ref_bearing,
                                    solve_equilibrium, stable_modes)
 from rotordyn.sweep.tracking import track_line
+from rotordyn.sweep.robust_rows import outputs as robust_outputs, robust_rows
 from rotordyn.units import hz_to_rad_s
 
 WHIRL = ["forward", "backward", "planar"]
@@ -71,6 +72,7 @@ OUTPUTS = {
 OUTPUTS["campbell"] = OUTPUTS["stability"]
 OUTPUTS["hopf"] = {**OUTPUTS["threshold"], "l1": F64, "l1_error": F64, "hopf_type": STR,
                    "alpha_prime": F64, "amplitude_coefficient_m2": F64}
+OUTPUTS["robust"] = robust_outputs(F64, BOOL, _cat)
 
 
 def schema(analysis: str, axes: list[str]) -> pa.Schema:
@@ -471,7 +473,7 @@ def _boundary_rows(job, variants, chunk_id, pids, rows):
 _ANALYSIS = {"equilibrium": _eq_rows, "thermal": _thermal_rows, "stability": _stab_rows,
              "campbell": _stab_rows,
              "waterfall": _wf_rows, "threshold": _threshold_rows,
-             "unbalance": _unbalance_rows, "run-up": _runup_rows}
+             "unbalance": _unbalance_rows, "run-up": _runup_rows, "robust": robust_rows}
 
 
 def _hopf_rows(job, variants, chunk_id, lo, hi, rows):
