@@ -19,7 +19,8 @@ void bind_system(py::module_& m) {
       .def_readwrite("coords", &FilmCoupling::coords)
       .def_readwrite("shape", &FilmCoupling::shape)
       .def_readwrite("base_h", &FilmCoupling::base_h)
-      .def_readwrite("spin_factor", &FilmCoupling::spin_factor);
+      .def_readwrite("spin_factor", &FilmCoupling::spin_factor)
+      .def_readwrite("viscosity_field", &FilmCoupling::viscosity_field);
 
   py::class_<SystemModel>(m, "SystemModel", "M, K, C, G, loads and films of eq. 12 (SI).")
       .def(py::init<>())

@@ -22,4 +22,5 @@ void bind_batch(py::module_& m);
 void bind_periodic(py::module_& m);
 void bind_thermal(py::module_& m);
 void bind_continuation(py::module_& m);
+void bind_thd(py::module_& m);
 }  // namespace rotordyn::py_bind

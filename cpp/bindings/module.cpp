@@ -18,4 +18,5 @@ PYBIND11_MODULE(_core, m) {
   bind_sleeve(m);
   bind_batch(m);
   bind_thermal(m);
+  bind_thd(m);
 }

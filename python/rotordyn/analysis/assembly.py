@@ -127,6 +127,9 @@ class Assembled:
             f.geometry, f.grid, f.cavitation = g, grid, b.cavitation
             f.coords = [int(c) for c in coords]
             f.shape = np.column_stack(shape)
+            vf = getattr(b, "viscosity_field_pa_s", None)
+            if vf is not None:  # a THD film's frozen temperature field
+                f.viscosity_field = np.asarray(vf, dtype=float)
             films.append(f)
             self.film_owner.append(bi)
             self.film_phi.append(None)
