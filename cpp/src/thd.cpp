@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -307,16 +308,52 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
       mu.data()[n] = oil.viscosity_pa_s(std::max(T[n], oil.t_min_c));
     }
     solver.set_viscosity_field(mu);
-    const EquilibriumSolution eq = solver.equilibrium(lx, ly, omega, x, y);
-    out.equilibrium_iterations += eq.iterations;
-    x = eq.x_m;
-    y = eq.y_m;
-    const FilmSolution& sol = solver.rigid(x, y, 0.0, 0.0, omega);
-    ThdFilmState st = thd_energy(solver, sol, oil, opt, omega);
+    // the position: the full equilibrium on the first iteration (cold start), then one Newton
+    // step per iteration (F + W = 0, dF/dq = −K: q += K⁻¹(F + W)) — the position converges
+    // with the temperature; the final equilibrium is polished to 1e-10 below
+    EquilibriumSolution eq;
+    eq.force_n.setZero();
+    double rtol = 1e-10;
+    bool stepped = false;
+    if (it > 1) {
+      const DynamicCoefficients dc = solver.coefficients(x, y, omega);
+      const Eigen::Vector2d r = dc.force_n + Eigen::Vector2d(lx, ly);
+      const Eigen::Vector2d dq = dc.K.fullPivLu().solve(r);
+      const double c = solver.geometry().clearance_m;
+      if (dq.allFinite() && std::hypot(x + dq[0], y + dq[1]) < 0.98 * c) {
+        x += dq[0];
+        y += dq[1];
+        stepped = true;
+        rtol = 1.0;  // not an equilibrium yet: polish at the end
+      }
+    }
+    if (!stepped) {
+      eq = solver.equilibrium(lx, ly, omega, x, y, 1e-6);
+      out.equilibrium_iterations += eq.iterations;
+      x = eq.x_m;
+      y = eq.y_m;
+      rtol = 1e-6;
+    }
+    const FilmSolution* sol = &solver.rigid(x, y, 0.0, 0.0, omega);
+    ThdFilmState st = thd_energy(solver, *sol, oil, opt, omega);
     const Eigen::VectorXd G = Eigen::Map<const Eigen::VectorXd>(st.temperature_c.data(), nn);
     const double res = (G - T).cwiseAbs().maxCoeff();
     out.iterations = it;
     if (res <= opt.tol_k) {
+      if (rtol > 1e-10) {  // polish the equilibrium with the field frozen, and its state
+        eq = solver.equilibrium(lx, ly, omega, x, y, 1e-10);
+        out.equilibrium_iterations += eq.iterations;
+        x = eq.x_m;
+        y = eq.y_m;
+        sol = &solver.rigid(x, y, 0.0, 0.0, omega);
+        st = thd_energy(solver, *sol, oil, opt, omega);
+        const Eigen::VectorXd G2 =
+            Eigen::Map<const Eigen::VectorXd>(st.temperature_c.data(), nn);
+        if ((G2 - T).cwiseAbs().maxCoeff() > opt.tol_k) {  // the position had not settled
+          T = G2;
+          continue;
+        }
+      }
       out.equilibrium = eq;
       out.coefficients = solver.coefficients(x, y, omega);
       out.film = std::move(st);
@@ -328,7 +365,7 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
     }
     Eigen::VectorXd Tn = mixer.next(T, G);
     for (int n = 0; n < nn; ++n) Tn[n] = std::clamp(Tn[n], oil.t_min_c, oil.t_max_c);
-    if (mirror_symmetric(sol.h_m)) symmetrize(Tn.data(), N, K1);
+    if (mirror_symmetric(sol->h_m)) symmetrize(Tn.data(), N, K1);
     T = Tn;
   }
   throw ConvergenceError("THD equilibrium: the film temperature did not settle to " +
