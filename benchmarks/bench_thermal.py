@@ -88,15 +88,25 @@ def main(argv=None) -> int:
                                               supply_temperature_c=TS)
     print(f"compressor (150 Hz): T_eff = {', '.join(f'{t:.2f}' for t in res.effective_temperature_c)}"
           f" degC, {res.iterations} outer iterations")
+    rs = rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
+                                             supply_temperature_c=TS, model="thd")
+    print(f"compressor THD (150 Hz): T_max = {', '.join(f'{t:.2f}' for t in rs.max_temperature_c)}"
+          f" degC, {rs.iterations} outer iterations")
     t3 = interleaved({
         "isothermal": lambda: rotordyn.equilibrium(sysm, speed_hz=150.0, warm_start=False),
         "thermal": lambda: rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
-                                                               supply_temperature_c=TS)},
+                                                               supply_temperature_c=TS),
+        "thd": lambda: rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
+                                                           supply_temperature_c=TS,
+                                                           model="thd")},
         repeat=max(3, args.repeat // 2))
     print(f"system equilibrium, compressor: isothermal {t3['isothermal']}")
     print(f"                                thermal    {t3['thermal']}")
+    print(f"                                THD        {t3['thd']}")
     print(f"  ratio thermal/isothermal: {t3['thermal'].wall / t3['isothermal'].wall:.2f}x wall, "
           f"{t3['thermal'].cpu / t3['isothermal'].cpu:.2f}x CPU")
+    print(f"  ratio THD/isothermal:     {t3['thd'].wall / t3['isothermal'].wall:.2f}x wall, "
+          f"{t3['thd'].cpu / t3['isothermal'].cpu:.2f}x CPU")
 
     # turbulence on vs off, per force (same position, Re_h at the clearance ~ 2.9e3)
     lam = rotordyn.JournalBearing(viscosity_pa_s=0.003, **geo)
