@@ -6,8 +6,8 @@ weight whatever its temperature field, so the system's THD equilibrium must equa
 bearing, the standalone THD equilibrium (JournalBearing.thermal_equilibrium(model="thd"),
 checked in tests/test_film_thd.py) under the load its film carries: temperatures to 1e-4 K,
 positions to 1e-6 of the clearance. The returned system carries each film's frozen viscosity
-field: its equilibrium reproduces the thermal one, its stability and Campbell diagram run; the
-model file's ``[thermal] model = "thd"`` round-trips and selects the THD film.
+field: its equilibrium reproduces the thermal one, its stability and Campbell diagram run, its
+transient follows the linear model at small amplitude; the model file's ``[thermal] model = "thd"`` round-trips and selects the THD film.
 """
 
 import dataclasses
@@ -106,3 +106,27 @@ def test_thermal_sweep_with_the_thd_film_equals_direct_calls(tmp_path):
             np.testing.assert_allclose(g[c].to_numpy(), getattr(r, c), rtol=1e-9, atol=1e-15)
         tmax.append(r.max_temperature_c[0])
     assert tmax[0] > tmax[1]  # heat to the bush cools the film
+
+
+def test_thd_system_transient_follows_the_linear_model_at_small_amplitude():
+    """The frozen fields reach the transient: a 0.2 µm disturbance of the THD equilibrium
+    decays as the linear model at the same fields predicts (3 % of the amplitude), and the
+    run starts from the THD equilibrium."""
+    import scipy.linalg
+
+    s = _compressor()
+    res = rotordyn.system_thermal_equilibrium(s, speed_hz=150.0, oil=VG32,
+                                              supply_temperature_c=45.0, model="thd")
+    hot = res.system
+    lm = rotordyn.linearize(hot, speed_hz=150.0)
+    np.testing.assert_allclose(lm.equilibrium.r, res.r, atol=1e-6 * s.bearings[0].clearance_m)
+    n = lm.M.shape[0]
+    A = np.block([[np.zeros((n, n)), np.eye(n)],
+                  [-np.linalg.solve(lm.M, lm.K), -np.linalg.solve(lm.M, lm.D)]])
+    tr = rotordyn.transient(hot, t_end_s=0.004, speed_hz=150.0, disturbance_m=(0.2e-6, 0.0),
+                            n_out=9)
+    assert tr.status == "ok", tr.message
+    x0 = np.concatenate([tr.r[0] - lm.equilibrium.r, np.zeros(n)])
+    lin = np.array([(scipy.linalg.expm(A * t) @ x0)[:n] for t in tr.t])
+    dev = tr.r - lm.equilibrium.r
+    assert np.max(np.abs(dev[:, 0] - lin[:, 0])) < 0.03 * np.max(np.abs(lin[:, 0]))
