@@ -1,5 +1,6 @@
-"""Benchmark: film physics of issue 20 — the effective-temperature (thermal) equilibrium + K, C
-of the 72×16 plain bearing beside the isothermal equilibrium + K, C (goal <= 5x its cost), and
+"""Benchmark: film physics of issue 20 — the effective-temperature (thermal) and the
+thermo-hydrodynamic (THD) equilibrium + K, C of the 72×16 plain bearing beside the isothermal
+equilibrium + K, C (goal <= 5x its cost), and
 the turbulent (Ng–Pan–Elrod) force beside the laminar one.
 
 Run ``python benchmarks/bench_thermal.py [--repeat 7]``. Protocol (benchmarks/_common.py): one
@@ -49,6 +50,12 @@ def main(argv=None) -> int:
         return th.thermal_equilibrium(load_n=LOAD, speed_hz=SPEED, oil=OIL,
                                       supply_temperature_c=TS)
 
+    thd_b = rotordyn.JournalBearing(viscosity_pa_s=mu_s, **geo)
+
+    def thd():  # the thermo-hydrodynamic film: energy equation, mu(T) per node
+        return thd_b.thermal_equilibrium(load_n=LOAD, speed_hz=SPEED, oil=OIL,
+                                         supply_temperature_c=TS, model="thd")
+
     r = thermal()
     e = iso.static_equilibrium(load_n=LOAD, speed_hz=SPEED)
     print(f"thermal: T_eff = {r.effective_temperature_c:.2f} degC (supply {TS} degC), "
@@ -56,12 +63,20 @@ def main(argv=None) -> int:
           f"(isothermal {mu_s:.4g}), P = {r.power_loss_w:.4g} W, eps = "
           f"{r.eccentricity_ratio:.4f} (isothermal {e.eccentricity_ratio:.4f}), "
           f"{r.iterations} outer iterations")
-    t = interleaved({"isothermal": isothermal, "thermal": thermal}, repeat=args.repeat)
+    rt = thd()
+    print(f"THD: T_max = {rt.max_temperature_c:.2f} degC, T_mean = {rt.mean_temperature_c:.2f} "
+          f"degC, P = {rt.power_loss_w:.4g} W, eps = {rt.eccentricity_ratio:.4f}, "
+          f"{rt.iterations} outer iterations")
+    t = interleaved({"isothermal": isothermal, "thermal": thermal, "thd": thd},
+                    repeat=args.repeat)
     print(f"equilibrium + K, C, 72x16: isothermal {t['isothermal']}")
     print(f"                           thermal    {t['thermal']}")
+    print(f"                           THD        {t['thd']}")
     print(f"  ratio thermal/isothermal: {t['thermal'].wall / t['isothermal'].wall:.2f}x wall, "
           f"{t['thermal'].cpu / t['isothermal'].cpu:.2f}x CPU (goal <= 5x; CPU is the figure "
           f"when the wall time shows a busy machine)")
+    print(f"  ratio THD/isothermal:     {t['thd'].wall / t['isothermal'].wall:.2f}x wall, "
+          f"{t['thd'].cpu / t['isothermal'].cpu:.2f}x CPU (goal <= 5x)")
 
     # the compressor of tests/data/models (two plain bearings, 72x16) in a system: the
     # thermal system equilibrium (one C++ call; a new SystemSolver per outer step) beside the
@@ -73,15 +88,25 @@ def main(argv=None) -> int:
                                               supply_temperature_c=TS)
     print(f"compressor (150 Hz): T_eff = {', '.join(f'{t:.2f}' for t in res.effective_temperature_c)}"
           f" degC, {res.iterations} outer iterations")
+    rs = rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
+                                             supply_temperature_c=TS, model="thd")
+    print(f"compressor THD (150 Hz): T_max = {', '.join(f'{t:.2f}' for t in rs.max_temperature_c)}"
+          f" degC, {rs.iterations} outer iterations")
     t3 = interleaved({
         "isothermal": lambda: rotordyn.equilibrium(sysm, speed_hz=150.0, warm_start=False),
         "thermal": lambda: rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
-                                                               supply_temperature_c=TS)},
+                                                               supply_temperature_c=TS),
+        "thd": lambda: rotordyn.system_thermal_equilibrium(sysm, speed_hz=150.0, oil=OIL,
+                                                           supply_temperature_c=TS,
+                                                           model="thd")},
         repeat=max(3, args.repeat // 2))
     print(f"system equilibrium, compressor: isothermal {t3['isothermal']}")
     print(f"                                thermal    {t3['thermal']}")
+    print(f"                                THD        {t3['thd']}")
     print(f"  ratio thermal/isothermal: {t3['thermal'].wall / t3['isothermal'].wall:.2f}x wall, "
           f"{t3['thermal'].cpu / t3['isothermal'].cpu:.2f}x CPU")
+    print(f"  ratio THD/isothermal:     {t3['thd'].wall / t3['isothermal'].wall:.2f}x wall, "
+          f"{t3['thd'].cpu / t3['isothermal'].cpu:.2f}x CPU")
 
     # turbulence on vs off, per force (same position, Re_h at the clearance ~ 2.9e3)
     lam = rotordyn.JournalBearing(viscosity_pa_s=0.003, **geo)

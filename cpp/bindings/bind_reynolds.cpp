@@ -182,7 +182,23 @@ void bind_reynolds(py::module_& m) {
                     "The pressures agree to round-off.")
       .def_property_readonly("band_factor_used", &RS::band_factor_used,
                              "Whether the last solve's final factorisation was banded.")
-      .def("reset", &RS::reset, "Drop the last solution (solves never depend on earlier calls).");
+      .def("reset", &RS::reset, "Drop the last solution (solves never depend on earlier calls).")
+      .def("set_viscosity", &RS::set_viscosity, py::arg("viscosity_pa_s"),
+           "Uniform viscosity, Pa s (drops a viscosity field).")
+      .def("set_viscosity_field", &RS::set_viscosity_field, py::arg("viscosity_pa_s"),
+           "Viscosity per node (n_circ, n_axial + 1), Pa s: faces take the mean of their "
+           "nodes' (the thermo-hydrodynamic film).")
+      .def("film_flows", &RS::film_flows,
+           "Face flows, fill, dissipation and cell areas of the last solve (FilmFlows).");
+  py::class_<FilmFlows>(m, "FilmFlows",
+                        "Finite-volume flows (m^3/s) through faces (j+1/2, k) and (j, k+1/2), "
+                        "fill, dissipation per cell (W), cell areas (m^2), node viscosities.")
+      .def_readonly("q_phi_m3_s", &FilmFlows::q_phi_m3_s)
+      .def_readonly("q_z_m3_s", &FilmFlows::q_z_m3_s)
+      .def_readonly("fill", &FilmFlows::fill)
+      .def_readonly("dissipation_w", &FilmFlows::dissipation_w)
+      .def_readonly("area_m2", &FilmFlows::area_m2)
+      .def_readonly("viscosity_pa_s", &FilmFlows::viscosity_pa_s);
 }
 
 }  // namespace rotordyn::py_bind

@@ -24,7 +24,8 @@ void bind_system(py::module_& m) {
                      "(n_coords, n_axial + 1): dh/dr_k(phi, z) = shape(phi, k) * "
                      "axial_weight(k, z); empty: 1 (journal tilt: z on the rotations).")
       .def("thickness", &FilmCoupling::thickness, py::arg("rc"),
-           "Film thickness (n_circ, n_axial + 1), m, at the film's coordinates rc (n_coords,).");
+           "Film thickness (n_circ, n_axial + 1), m, at the film's coordinates rc (n_coords,).")
+      .def_readwrite("viscosity_field", &FilmCoupling::viscosity_field);
 
   py::class_<SystemModel>(m, "SystemModel", "M, K, C, G, loads and films of eq. 12 (SI).")
       .def(py::init<>())

@@ -64,7 +64,9 @@ void bind_thermal(py::module_& m) {
       .def(py::init<>())
       .def_readwrite("film", &ThermalFilm::film)
       .def_readwrite("oil", &ThermalFilm::oil)
-      .def_readwrite("options", &ThermalFilm::options);
+      .def_readwrite("options", &ThermalFilm::options)
+      .def_readwrite("thd", &ThermalFilm::thd)
+      .def_readwrite("thd_options", &ThermalFilm::thd_options);
   py::class_<ThermalFilmState>(m, "ThermalFilmState")
       .def_readonly("effective_temperature_c", &ThermalFilmState::effective_temperature_c)
       .def_readonly("max_temperature_c", &ThermalFilmState::max_temperature_c)
@@ -74,7 +76,10 @@ void bind_thermal(py::module_& m) {
       .def_readonly("power_loss_w", &ThermalFilmState::power_loss_w)
       .def_readonly("film_flow_m3_s", &ThermalFilmState::film_flow_m3_s)
       .def_readonly("side_flow_m3_s", &ThermalFilmState::side_flow_m3_s)
-      .def_readonly("supply_flow_m3_s", &ThermalFilmState::supply_flow_m3_s);
+      .def_readonly("supply_flow_m3_s", &ThermalFilmState::supply_flow_m3_s)
+      .def_readonly("mean_temperature_c", &ThermalFilmState::mean_temperature_c)
+      .def_readonly("temperature_c", &ThermalFilmState::temperature_c)
+      .def_readonly("viscosity_field", &ThermalFilmState::viscosity_field);
   py::class_<ThermalSystemResult>(m, "ThermalSystemResult")
       .def_readonly("equilibrium", &ThermalSystemResult::equilibrium)
       .def_readonly("films", &ThermalSystemResult::films)

@@ -24,4 +24,5 @@ void bind_thermal(py::module_& m);
 void bind_continuation(py::module_& m);
 void bind_unbalance(py::module_& m);
 void bind_threshold(py::module_& m);
+void bind_thd(py::module_& m);
 }  // namespace rotordyn::py_bind

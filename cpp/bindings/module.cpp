@@ -20,4 +20,5 @@ PYBIND11_MODULE(_core, m) {
   bind_thermal(m);
   bind_unbalance(m);
   bind_threshold(m);
+  bind_thd(m);
 }

@@ -98,6 +98,15 @@ struct ReynoldsSolver::Impl {
   bool turb = false;
   double re_per_h = 0.0;
   void turb_face(double hf, bool axial, double& m, double& dm) const;
+  // Viscosity field (set_viscosity_field, the thermo-hydrodynamic film; reynolds_viscosity.cpp):
+  // node viscosities and the multipliers mu/mu_face of the faces' conductances (the face
+  // viscosity the mean of its two nodes'), applied after the uniform film's conductances, so
+  // an unset field leaves the isoviscous path untouched.
+  bool visc_field = false;
+  bool visc_symmetric = true;      // the field is mirror-symmetric about z = 0 (bitwise)
+  std::vector<double> mu_node, vmE, vmN;
+  double node_mu(int n) const { return visc_field ? mu_node[n] : mu; }
+  void film_flows(FilmFlows& f) const;
   std::vector<double> cosphi, sinphi;
   std::vector<char> fixed;       // node -> prescribed pressure (ends, grooves)
   std::vector<double> p_fixed;   // node -> prescribed pressure (0 if unknown)

@@ -412,6 +412,11 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
       qE[q] = fq * Gc;
     }
   }
+  if (visc_field)  // h³/(12 μ_face): the uniform film's conductance times μ/μ_face
+    for (int q = 0; q < n_nodes; ++q) {
+      cE[q] *= vmE[q];
+      cN[q] *= vmN[q];
+    }
 }
 
 void ReynoldsSolver::Impl::base_rhs(const LinearSystem& S, Eigen::VectorXd& b) const {
@@ -556,6 +561,8 @@ void ReynoldsSolver::set_viscosity(double viscosity_pa_s) {
   require_positive(viscosity_pa_s, "viscosity_pa_s");
   impl_->geo.viscosity_pa_s = viscosity_pa_s;
   impl_->mu = viscosity_pa_s;
+  impl_->visc_field = false;  // uniform again
+  impl_->visc_symmetric = true;
   if (impl_->coarse) impl_->coarse->set_viscosity(viscosity_pa_s);
   impl_->solved = false;
 }

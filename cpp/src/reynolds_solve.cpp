@@ -267,7 +267,7 @@ void ReynoldsSolver::Impl::postprocess() {
     fx -= wk * p[n] * cosphi[j];
     fy -= wk * p[n] * sinphi[j];
     const double dpdphi = (p[east(n)] - p[west(n)]) / (2.0 * dphi);
-    double tau = mu * omega * R * theta[n] / h[n];
+    double tau = node_mu(n) * omega * R * theta[n] / h[n];
     if (turb) tau *= turbulence_factors(geo.turbulence, re_per_h * h[n]).cf;  // Couette shear
     tau += h[n] / (2.0 * R) * dpdphi;
     torque += wk * tau;
@@ -280,7 +280,7 @@ void ReynoldsSolver::Impl::postprocess() {
     const int k = n % K1;
     const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
     const double cf = turb ? turbulence_factors(geo.turbulence, re_per_h * h[n]).cf : 1.0;
-    torque += wk * cf * mu * omega * R * theta[n] * (pocket_inv_h(n) - 1.0 / h[n]);
+    torque += wk * cf * node_mu(n) * omega * R * theta[n] * (pocket_inv_h(n) - 1.0 / h[n]);
   }
   out.force_n = Eigen::Vector2d(fx * area, fy * area);
   out.friction_torque_nm = torque * area * R;
@@ -486,6 +486,11 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
         qe = be * dhe;
         qw = bw * dhw;
       }
+      if (visc_field) {  // the faces' μ/μ_face (set_film)
+        ge *= vmE[n];
+        gw *= vmE[w];
+        gi *= vmN[k == 0 ? n : in];
+      }
       double r = ge * dhe * (P[n] - P[e]) + gw * dhw * (P[n] - P[w]);
       if (fwd)
         r += fq * (qe * theta[n] - qw * theta[w]);
@@ -516,6 +521,12 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
       qe = be * dhe;
       qw = bw * dhw;
     }
+    if (visc_field) {
+      ge *= vmE[n];
+      gw *= vmE[w];
+      gn *= vmN[n];
+      gs *= vmN[n - 1];
+    }
     double r = ge * dhe * (P[n] - P[e]) + gw * dhw * (P[n] - P[w]) +
                gn * dhn * (P[n] - P[n + 1]) + gs * dhs * (P[n] - P[n - 1]);
     if (fwd)
@@ -544,8 +555,8 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
     s.solved = true;
     return s.out;
   }
-  const bool half = s.use_symmetry && s.pockets_symmetric && s.symmetric(h.data()) &&
-                    s.symmetric(dhdt.data());
+  const bool half = s.use_symmetry && s.pockets_symmetric && s.visc_symmetric &&
+                    s.symmetric(h.data()) && s.symmetric(dhdt.data());
   if (half && !s.halfsys_built) {
     s.build_system(s.halfsys, true);
     s.halfsys_built = true;

@@ -22,6 +22,7 @@ struct SystemSolver::Film {
         h(f.grid.n_circ, f.grid.n_axial + 1),
         dhdt(f.grid.n_circ, f.grid.n_axial + 1) {
     solver.set_pressure_only(true);  // the forces are ∫∫ p S dA here (integrate), not force_n
+    if (f.viscosity_field.size()) solver.set_viscosity_field(f.viscosity_field);
     const int K1 = f.grid.n_axial + 1;
     const double R = 0.5 * f.geometry.diameter_m;
     const double dphi = 2.0 * M_PI / f.grid.n_circ, dz = f.geometry.length_m / f.grid.n_axial;
@@ -459,6 +460,18 @@ void SystemSolver::set_film_viscosity(int film, double viscosity_pa_s) {
   Film& f = *films_[static_cast<std::size_t>(film)];
   f.solver.set_viscosity(viscosity_pa_s);  // InputError naming viscosity_pa_s
   model_.films[static_cast<std::size_t>(film)].geometry.viscosity_pa_s = viscosity_pa_s;
+  model_.films[static_cast<std::size_t>(film)].viscosity_field.resize(0, 0);  // uniform
+  f.valid = false;
+  solved_ = false;
+}
+
+void SystemSolver::set_film_viscosity_field(int film, const RowMatrixXd& viscosity_pa_s) {
+  if (film < 0 || film >= static_cast<int>(films_.size()))
+    throw InputError("film: expected a film index in [0, " + std::to_string(films_.size()) +
+                     "), got " + std::to_string(film));
+  Film& f = *films_[static_cast<std::size_t>(film)];
+  f.solver.set_viscosity_field(viscosity_pa_s);  // InputError naming viscosity_pa_s
+  model_.films[static_cast<std::size_t>(film)].viscosity_field = viscosity_pa_s;
   f.valid = false;
   solved_ = false;
 }

@@ -1,7 +1,10 @@
 // Internal to the thermal model (thermal.cpp, thermal_system.cpp): the heat balance of one film.
 #pragma once
 
+#include <Eigen/Dense>
+
 #include <string>
+#include <vector>
 
 #include "rotordyn/thermal.hpp"
 
@@ -15,5 +18,43 @@ namespace rotordyn {
 /// flows give no heat balance or the temperature leaves the viscosity law's range.
 ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, double mu,
                               double P, double Q, double Qs, const std::string& name);
+
+/// Anderson acceleration (depth 3) of a fixed point x = G(x) (the THD node temperatures):
+/// next(x, G(x)) returns the next iterate; the history restarts when the residual grows.
+class AndersonMixer {
+ public:
+  Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& g) {
+    const Eigen::VectorXd f = g - x;
+    const double res = f.cwiseAbs().maxCoeff();
+    if (res > 2.0 * res_prev_) {
+      dF_.clear();
+      dG_.clear();
+    } else if (f_prev_.size() == f.size()) {
+      dF_.push_back(f - f_prev_);
+      dG_.push_back(g - g_prev_);
+      if (dF_.size() > 3) {
+        dF_.erase(dF_.begin());
+        dG_.erase(dG_.begin());
+      }
+    }
+    f_prev_ = f;
+    g_prev_ = g;
+    res_prev_ = res;
+    if (dF_.empty()) return g;
+    const int m = static_cast<int>(dF_.size());
+    Eigen::MatrixXd Fm(f.size(), m), Gm(f.size(), m);
+    for (int i = 0; i < m; ++i) {
+      Fm.col(i) = dF_[static_cast<std::size_t>(i)];
+      Gm.col(i) = dG_[static_cast<std::size_t>(i)];
+    }
+    const Eigen::VectorXd gam = Fm.colPivHouseholderQr().solve(f);
+    return gam.allFinite() ? Eigen::VectorXd(g - Gm * gam) : g;
+  }
+
+ private:
+  std::vector<Eigen::VectorXd> dF_, dG_;
+  Eigen::VectorXd f_prev_, g_prev_;
+  double res_prev_ = 1e300;
+};
 
 }  // namespace rotordyn

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "rotordyn/errors.hpp"
+#include "rotordyn/thd.hpp"
 #include "rotordyn/thermal.hpp"
 #include "thermal_detail.hpp"
 
@@ -34,13 +35,33 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
         throw InputError("thermal[" + std::to_string(i) + "].film: film " +
                          std::to_string(t.film) + " is given twice");
     t.oil.validate();
-    t.options.validate(t.oil);
-    max_iter = std::max(max_iter, t.options.max_iter);
+    if (t.thd) {
+      t.thd_options.validate(t.oil);
+      max_iter = std::max(max_iter, t.thd_options.max_iter);
+    } else {
+      t.options.validate(t.oil);
+      max_iter = std::max(max_iter, t.options.max_iter);
+    }
   }
+  auto supply_t = [&](std::size_t i) {
+    return thermal[i].thd ? thermal[i].thd_options.supply_temperature_c
+                          : thermal[i].options.supply_temperature_c;
+  };
   SystemModel m = model;
-  for (std::size_t i = 0; i < thermal.size(); ++i)  // start at the supply temperatures
-    m.films[thermal[i].film].geometry.viscosity_pa_s =
-        thermal[i].oil.viscosity_pa_s(thermal[i].options.supply_temperature_c);
+  for (std::size_t i = 0; i < thermal.size(); ++i) {  // start at the supply temperatures
+    m.films[thermal[i].film].geometry.viscosity_pa_s = thermal[i].oil.viscosity_pa_s(supply_t(i));
+    m.films[thermal[i].film].viscosity_field.resize(0, 0);  // the THD field's reference
+  }
+  // THD films: their node temperatures, one vector (offsets), Anderson-accelerated together
+  std::vector<int> off(thermal.size() + 1, 0);
+  for (std::size_t i = 0; i < thermal.size(); ++i) {
+    const FilmGrid& g = m.films[thermal[i].film].grid;
+    off[i + 1] = off[i] + (thermal[i].thd ? g.n_circ * (g.n_axial + 1) : 0);
+  }
+  Eigen::VectorXd X(off.back()), GX(off.back());
+  for (std::size_t i = 0; i < thermal.size(); ++i)
+    X.segment(off[i], off[i + 1] - off[i]).setConstant(supply_t(i));
+  AndersonMixer mixer;
   SystemSolver solver(m);  // one solver; the films' viscosities change in place
   // each thermal film's own full-output solver (the system's films solve pressures only)
   std::vector<std::unique_ptr<ReynoldsSolver>> fsol;
@@ -52,11 +73,22 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
                                                      std::numeric_limits<double>::quiet_NaN());
   ThermalSystemResult out;
   std::vector<double> T(thermal.size());
-  for (std::size_t i = 0; i < thermal.size(); ++i) T[i] = thermal[i].options.supply_temperature_c;
+  for (std::size_t i = 0; i < thermal.size(); ++i) T[i] = supply_t(i);
   Eigen::VectorXd r0;  // empty: the solver's default start
   out.films.resize(thermal.size());
   for (int it = 1; it <= max_iter; ++it) {
     for (std::size_t i = 0; i < thermal.size(); ++i) {
+      if (thermal[i].thd) {  // μ(T) per node
+        const FilmGrid& g = m.films[thermal[i].film].grid;
+        const OilModel& oil = thermal[i].oil;
+        RowMatrixXd mu(g.n_circ, g.n_axial + 1);
+        for (Eigen::Index n = 0; n < mu.size(); ++n)
+          mu.data()[n] = oil.viscosity_pa_s(std::clamp(X[off[i] + n], oil.t_min_c, oil.t_max_c));
+        solver.set_film_viscosity_field(thermal[i].film, mu);
+        fsol[i]->set_viscosity_field(mu);
+        m.films[thermal[i].film].viscosity_field = mu;
+        continue;
+      }
       const double mu = thermal[i].oil.viscosity_pa_s(T[i]);
       m.films[thermal[i].film].geometry.viscosity_pa_s = mu;
       solver.set_film_viscosity(thermal[i].film, mu);
@@ -78,6 +110,26 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
       ReynoldsSolver& rs = *fsol[i];
       const double wf = omega * fc.spin_factor;
       const FilmSolution& sol = rs.solve(h, RowMatrixXd::Zero(h.rows(), h.cols()), wf);
+      if (thermal[i].thd) {
+        const ThdFilmState ts = thd_energy(rs, sol, thermal[i].oil, thermal[i].thd_options, wf);
+        const int nn = off[i + 1] - off[i];
+        GX.segment(off[i], nn) = Eigen::Map<const Eigen::VectorXd>(ts.temperature_c.data(), nn);
+        const double res = (GX.segment(off[i], nn) - X.segment(off[i], nn)).cwiseAbs().maxCoeff();
+        if (res > thermal[i].thd_options.tol_k) done = false;
+        ThermalFilmState& st = out.films[i];
+        st.mean_temperature_c = st.effective_temperature_c = ts.mean_temperature_c;
+        st.max_temperature_c = ts.max_temperature_c;
+        st.inlet_temperature_c = ts.inlet_temperature_c;
+        st.temperature_rise_k = ts.max_temperature_c - ts.inlet_temperature_c;
+        st.viscosity_pa_s = thermal[i].oil.viscosity_pa_s(ts.mean_temperature_c);
+        st.power_loss_w = ts.power_loss_w;
+        st.film_flow_m3_s = ts.film_flow_m3_s;
+        st.side_flow_m3_s = ts.side_flow_m3_s;
+        st.supply_flow_m3_s = ts.supply_flow_m3_s;
+        st.temperature_c = ts.temperature_c;
+        st.viscosity_field = ts.flows.viscosity_pa_s;  // the field of this equilibrium
+        continue;
+      }
       const double P = sol.friction_torque_nm * wf;
       const double qg = sol.inlet_flow_m3_s;
       const double Q = fc.geometry.grooves.empty() || !(qg > 0.0) ? max_film_flow(rs, sol, wf)
@@ -103,6 +155,12 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
       T_prev[i] = T[i];
       f_prev[i] = f;
       T[i] = Tnext;
+    }
+    if (off.back() > 0 && !done) {  // the THD films' next temperatures
+      X = mixer.next(X, GX);
+      for (std::size_t i = 0; i < thermal.size(); ++i)
+        for (int n = off[i]; n < off[i + 1]; ++n)
+          X[n] = std::clamp(X[n], thermal[i].oil.t_min_c, thermal[i].oil.t_max_c);
     }
     if (done) {
       for (std::size_t i = 0; i < thermal.size(); ++i)

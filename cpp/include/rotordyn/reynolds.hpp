@@ -156,6 +156,21 @@ struct FilmSolution {
   int iterations = 0;               ///< active-set iterations (1 for none/gumbel)
 };
 
+/// The finite-volume flows and the viscous dissipation of the last solve (the transport terms
+/// of the thermo-hydrodynamic energy equation, thd.hpp). Arrays (n_circ, n_axial + 1), node
+/// n = (j, k). End rows (open ends) are half cells (their φ-faces carry half a face).
+struct FilmFlows {
+  RowMatrixXd q_phi_m3_s;     ///< flow through face (j+1/2, k), + in the +φ direction, m³/s
+  RowMatrixXd q_z_m3_s;       ///< flow through face (j, k+1/2), + towards +z (last column 0)
+  RowMatrixXd fill;           ///< fill θ of the flows: 1 in the full film; in a Swift–Stieber
+                              ///< (or clipped) cavitated zone the Couette streamers' θ carried
+                              ///< from the rupture (θ h conserved along φ); jfo: the solver's θ
+  RowMatrixXd dissipation_w;  ///< viscous dissipation in the node's cell, W: μU²θ/h·A (Couette)
+                              ///< + half of c Δp² of each of its faces (Poiseuille)
+  RowMatrixXd area_m2;        ///< the node's cell area (half on the end rows), m²
+  RowMatrixXd viscosity_pa_s; ///< the node viscosities the solve used
+};
+
 /// Linear coefficients at an operating point: film force change = −K dq − C dq̇ (DESIGN frame).
 struct DynamicCoefficients {
   Eigen::Matrix2d K;        ///< N/m
@@ -239,6 +254,14 @@ class ReynoldsSolver {
   /// Change the film's viscosity (Pa·s, finite > 0) without rebuilding the solver (the
   /// effective-temperature model's iteration): every later solve uses it.
   void set_viscosity(double viscosity_pa_s);
+  /// A viscosity per node, (n_circ, n_axial + 1), Pa·s, finite > 0 (the thermo-hydrodynamic
+  /// film): each face's conductance is h³/(12 μ_f) with μ_f the mean of its two nodes', the
+  /// Couette shear μ_n U/h at the nodes (friction torque, dissipation). A uniform field equal
+  /// to the solver's viscosity gives the isoviscous film bit for bit; set_viscosity() returns
+  /// to a uniform film. Not with the short-bearing model, turbulence or end seals (InputError).
+  void set_viscosity_field(const RowMatrixXd& viscosity_pa_s);
+  /// Flows and dissipation of the last solve (full postprocess; ConvergenceError if none).
+  FilmFlows film_flows() const;
 
   /// Drop the last solution (linearize() then needs a new solve). Solves never depend on
   /// earlier calls: each starts its cavitation set from a prediction of its own inputs.

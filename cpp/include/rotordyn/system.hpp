@@ -47,6 +47,9 @@ struct FilmCoupling {
   RowMatrixXd thickness(const Eigen::VectorXd& rc) const;
   /// ∂h/∂r_k on the grid, (n_circ, n_axial + 1).
   RowMatrixXd thickness_derivative(Eigen::Index k) const;
+  /// Viscosity per node (n_circ, n_axial + 1), Pa·s (a thermo-hydrodynamic film's frozen
+  /// temperature field, thd.hpp); empty: geometry.viscosity_pa_s everywhere.
+  RowMatrixXd viscosity_field;
 };
 
 /// Linear bearing with speed-dependent coefficients (bearing tables): force on the two
@@ -164,6 +167,9 @@ class SystemSolver {
   /// film's Reynolds solver — and forget the last solve (the thermal iteration,
   /// thermal_system_equilibrium). InputError naming the film index or viscosity_pa_s.
   void set_film_viscosity(int film, double viscosity_pa_s);
+  /// Set film `film`'s viscosity per node ((n_circ, n_axial + 1), Pa·s; the THD iteration) in
+  /// place, as set_film_viscosity; the film's reference viscosity stays.
+  void set_film_viscosity_field(int film, const RowMatrixXd& viscosity_pa_s);
 
   int reynolds_solves() const { return solves_; }
   /// Active-set (or linear) iterations summed over those solves: sparse factorisations.

@@ -15,6 +15,8 @@
 //   T_in = T_s + λ Q_r ΔT / Q_f,  T_max = T_in + ΔT,  T_eff = T_in + k ΔT (k = effective_factor,
 // 0.5: Shigley's average film temperature). The film is isoviscous at μ(T_eff).
 #pragma once
+#include <limits>
+
 #include "rotordyn/reynolds.hpp"
 #include "rotordyn/system.hpp"
 
@@ -81,11 +83,30 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
 /// Boyd's Q.
 double max_film_flow(const ReynoldsSolver& solver, const FilmSolution& sol, double omega);
 
-/// A film of a system (SystemModel::films[film]) under the effective-temperature model.
+/// Options of the thermo-hydrodynamic film (thd.hpp): supply, carry-over, heat transfer.
+struct ThdOptions {
+  double supply_temperature_c = 40.0;
+  double supply_flow_m3_s = 0.0;   ///< 0: the film's own demand
+  double carry_over = 0.0;         ///< λ in [0, 1]
+  double journal_htc_w_m2k = 0.0;  ///< h_J >= 0 (0: adiabatic journal)
+  double bush_htc_w_m2k = 0.0;     ///< h_B >= 0 (0: adiabatic bush)
+  /// T_J, T_B, degC; NaN: the supply temperature.
+  double journal_temperature_c = std::numeric_limits<double>::quiet_NaN();
+  double bush_temperature_c = std::numeric_limits<double>::quiet_NaN();
+  double tol_k = 1e-6;             ///< on max |ΔT| over the nodes between iterations, K
+  int max_iter = 200;
+  void validate(const OilModel& oil) const;  ///< InputError naming the field
+};
+
+
+/// A film of a system (SystemModel::films[film]) under the effective-temperature model
+/// (thd = false; options) or the thermo-hydrodynamic film (thd = true; thd_options, thd.hpp).
 struct ThermalFilm {
   int film = 0;
   OilModel oil;
   ThermalOptions options;
+  bool thd = false;
+  ThdOptions thd_options;  ///< used when thd
 };
 
 /// The thermal state of one film at the system's thermal equilibrium (as ThermalEquilibrium).
@@ -93,6 +114,11 @@ struct ThermalFilmState {
   double effective_temperature_c = 0.0, max_temperature_c = 0.0, inlet_temperature_c = 0.0;
   double temperature_rise_k = 0.0, viscosity_pa_s = 0.0, power_loss_w = 0.0;
   double film_flow_m3_s = 0.0, side_flow_m3_s = 0.0, supply_flow_m3_s = 0.0;
+  /// THD films: the area-weighted mean temperature (also in effective_temperature_c), the
+  /// temperature and viscosity fields (n_circ, n_axial + 1); temperature_rise_k = T_max − T_in,
+  /// viscosity_pa_s = μ(mean). Empty fields for effective-temperature films.
+  double mean_temperature_c = 0.0;
+  RowMatrixXd temperature_c, viscosity_field;
 };
 
 struct ThermalSystemResult {

@@ -154,6 +154,9 @@ class Assembled:
             f.shape = np.column_stack(shape)
             if weight is not None:
                 f.axial_weight = weight
+            vf = getattr(b, "viscosity_field_pa_s", None)
+            if vf is not None:  # a THD film's frozen temperature field
+                f.viscosity_field = np.asarray(vf, dtype=float)
             films.append(f)
             self.film_owner.append(bi)
             self.film_phi.append(None)

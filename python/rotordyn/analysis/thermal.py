@@ -13,6 +13,7 @@ from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled
 from rotordyn.bearings import FluidFilmBearing, Oil
+from rotordyn.bearings.thd import THERMAL_MODELS, thd_options
 from rotordyn.bearings.thermal import thermal_options
 from rotordyn.errors import InputError
 from rotordyn.results.thermal import SystemThermalResult
@@ -26,7 +27,9 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
                                effective_factor: float | None = None,
                                supply_flow_m3_s: float | None = None,
                                chamber_pressure_pa: float = 0.0,
-                               tol_k: float = 1e-6) -> SystemThermalResult:
+                               tol_k: float = 1e-6, model: str | None = None,
+                               journal_htc_w_m2k: float | None = None,
+                               bush_htc_w_m2k: float | None = None) -> SystemThermalResult:
     """Thermal equilibrium of ``system`` at ``speed_hz``: each plain journal bearing
     (``type = "journal"``, :class:`rotordyn.FluidFilmBearing`) in ``bearings`` (indices into
     ``system.bearings``; None: all of them) runs at μ(T_eff) of ``oil`` with its own heat
@@ -39,24 +42,32 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     Every thermal argument left None comes from the model's oil system (``system.thermal``,
     the model file's ``[thermal]`` table, per bearing from its ``[[thermal.film]]`` entry);
     one given applies to every bearing. Without ``system.thermal``, ``oil`` and
-    ``supply_temperature_c`` are required (λ = 0, k = 0.5, the film's own demand)."""
+    ``supply_temperature_c`` are required (λ = 0, k = 0.5, the film's own demand).
+
+    ``model``: ``"effective"`` (the effective-temperature heat balance above) or ``"thd"``
+    (the thermo-hydrodynamic film of every thermal bearing: the energy equation over its grid,
+    μ(T) per node, :mod:`rotordyn.bearings.thd`; ``effective_factor`` unused; heat-transfer
+    coefficients ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` W/(m² K), 0 adiabatic, walls at the
+    supply temperature); None: the model's ``[thermal] model`` (default "effective"). With
+    "thd" the result's ``system`` carries each bearing's frozen viscosity field
+    (``viscosity_field_pa_s``) and ``temperature_c`` the fields."""
     v.speed("speed_hz", speed_hz)
     if float(speed_hz) == 0.0:
         raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
-    model = system.thermal
+    thermal_model = model_ = system.thermal
     if oil is None:
-        if model is None:
+        if model_ is None:
             raise InputError("oil: the model has no [thermal] table; give oil= and "
                              "supply_temperature_c= (or add [thermal] to the model file)")
-        oil = model.oil
+        oil = model_.oil
     if not isinstance(oil, Oil):
         raise InputError(f"oil: expected a rotordyn.bearings.Oil, got {oil!r}")
     if supply_temperature_c is None:
-        if model is None:
+        if model_ is None:
             raise InputError("supply_temperature_c: required (the oil's supply temperature, "
                              "degC) when the model has no [thermal] table")
-        supply_temperature_c = model.supply_temperature_c
+        supply_temperature_c = model_.supply_temperature_c
     plain = [i for i, b in enumerate(system.bearings) if isinstance(b, FluidFilmBearing)]
     if bearings is None:
         idx = plain
@@ -71,7 +82,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         raise InputError("bearings: the system has no plain journal bearing for the thermal "
                          "model")
     def options(i):
-        own = model.film(system.bearings[i].name) if model is not None else None
+        own = model_.film(system.bearings[i].name) if model_ is not None else None
 
         def pick(given, field, default):
             if given is not None:
@@ -82,7 +93,22 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
                                carry_over=pick(carry_over, "carry_over", 0.0),
                                effective_factor=pick(effective_factor, "effective_factor", 0.5),
                                tol_k=tol_k)
+    if model is None:
+        model = getattr(thermal_model, "model", "effective") if thermal_model is not None \
+            else "effective"
+    v.choice("model", model, THERMAL_MODELS)
+    thd = model == "thd"
+
+    def wall(given, field):
+        if given is not None:
+            return given
+        return getattr(thermal_model, field) if thermal_model is not None else 0.0
+    hj, hb = wall(journal_htc_w_m2k, "journal_htc_w_m2k"), wall(bush_htc_w_m2k, "bush_htc_w_m2k")
     opts = {i: options(i) for i in idx}
+    thd_opts = {i: thd_options(supply_temperature_c=supply_temperature_c,
+                               supply_flow_m3_s=opts[i].supply_flow_m3_s,
+                               carry_over=opts[i].carry_over, journal_htc_w_m2k=hj,
+                               bush_htc_w_m2k=hb, tol_k=tol_k) for i in idx} if thd else {}
     asm = assembled(system)
     if asm.pad_penalty is not None:
         raise InputError("bearings: the system thermal model is not available with tilting-pad "
@@ -93,6 +119,9 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         tf.film = asm.film_owner.index(i)
         tf.oil = oil.to_core()
         tf.options = opts[i]
+        if thd:
+            tf.thd = True
+            tf.thd_options = thd_opts[i]
         films.append(tf)
     opt = _core.EquilibriumOptions()
     opt.polish = True
@@ -103,9 +132,10 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     r = np.asarray(eq.r)
     st = list(res.films)
     mus = {i: s.viscosity_pa_s for i, s in zip(idx, st)}
+    fields = {i: np.array(s.viscosity_field) for i, s in zip(idx, st)} if thd else {}
     hot = dataclasses.replace(system, bearings=tuple(
-        dataclasses.replace(b, viscosity_pa_s=mus[i]) if i in mus else b
-        for i, b in enumerate(system.bearings)))
+        dataclasses.replace(b, viscosity_pa_s=mus[i], viscosity_field_pa_s=fields.get(i))
+        if i in mus else b for i, b in enumerate(system.bearings)))
     bcs = {bc.index: bc for bc in asm.bearings}
     names = tuple(bcs[i].name for i in idx)
 
@@ -121,4 +151,6 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         side_flow_m3_s=col("side_flow_m3_s"), supply_flow_m3_s=col("supply_flow_m3_s"),
         journal_x_m=np.array([r[bcs[i].jx] for i in idx]),
         journal_y_m=np.array([r[bcs[i].jy] for i in idx]),
-        r=r, iterations=int(res.iterations), system=hot, status=eq.status, message=eq.message)
+        r=r, iterations=int(res.iterations), system=hot, status=eq.status, message=eq.message,
+        thermal_model=model,
+        temperature_c=tuple(np.array(s.temperature_c) for s in st) if thd else ())

@@ -33,6 +33,7 @@ from rotordyn.bearings.thermal import Oil, ThermalEquilibriumResult, ThermalFilm
 from rotordyn.bearings.tilting_pad import TiltingPadBearing
 from rotordyn.bearings.tilt import (MisalignedEquilibrium, TiltedFilm, misaligned_equilibrium,
                                     tilted_coefficients, tilted_forces)
+from rotordyn.bearings.thd import THERMAL_MODELS, ThdEquilibriumResult
 
 BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBearing,
                  "fixed_geometry": FixedGeometryBearing, "tilting_pad": TiltingPadBearing,
@@ -44,6 +45,7 @@ __all__ = ["ActiveJournalBearing", "BEARING_TYPES", "BearingEquilibrium", "Coeff
            "JournalBearing", "Oil", "PressureField", "SleeveResult", "SqueezeFilmDamper", "TableBearing",
            "ThermalEquilibriumResult", "ThermalFilm", "ThermalModel", "TiltingPadBearing",
            "end_plate_seal_conductance", "long_damper_orbit_forces",
-           "paper_rig_sleeve", "short_damper_orbit_forces", "to_ross_bearing"]
+           "paper_rig_sleeve", "short_damper_orbit_forces", "to_ross_bearing",
+           "THERMAL_MODELS", "ThdEquilibriumResult"]
 __all__ += ["MisalignedEquilibrium", "TiltedFilm", "misaligned_equilibrium",
             "tilted_coefficients", "tilted_forces"]

@@ -35,6 +35,7 @@ from rotordyn.bearings._film import (CAVITATION_MODELS, SystemParts, check_film_
                                      check_tilt_fields, check_turbulence, set_turbulence)
 from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.bearings.thermal import Oil, run_thermal_equilibrium, thermal_options
+from rotordyn.bearings.thd import THERMAL_MODELS, run_thd_equilibrium, thd_options
 from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
@@ -459,7 +460,7 @@ class JournalBearing:
     def thermal_equilibrium(self, *, load_n: Sequence[float], speed_hz: float, oil: Oil,
                             supply_temperature_c: float, supply_flow_m3_s: float = 0.0,
                             carry_over: float = 0.0, effective_factor: float = 0.5,
-                            tol_k: float = 1e-6):
+                            tol_k: float = 1e-6, model: str = "effective", **thd):
         """Effective-temperature (thermal) equilibrium under ``load_n`` (N) at ``speed_hz``:
         the film is isoviscous at μ(T_eff) of ``oil`` (:class:`rotordyn.bearings.Oil`), T_eff
         from a global heat balance with the supply at ``supply_temperature_c`` (°C), the fresh
@@ -468,19 +469,39 @@ class JournalBearing:
         the Reynolds equilibrium in one C++ call to |ΔT_eff| <= ``tol_k``. K, C at the thermal
         equilibrium with the temperature frozen. Returns a
         :class:`rotordyn.bearings.ThermalEquilibriumResult` (docs/film-physics.md).
-        ``viscosity_pa_s`` of this bearing is not used (the oil's law replaces it)."""
+        ``viscosity_pa_s`` of this bearing is not used (the oil's law replaces it).
+
+        ``model="thd"``: the thermo-hydrodynamic film instead (:mod:`rotordyn.bearings.thd`):
+        the temperature field from the energy equation, μ(T) per node; ``effective_factor`` is
+        not used; keyword options ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` (W/(m² K), 0:
+        adiabatic), ``journal_temperature_c``, ``bush_temperature_c`` (None: the supply
+        temperature). Returns a :class:`rotordyn.bearings.thd.ThdEquilibriumResult`."""
+        v.choice("model", model, THERMAL_MODELS)
+        if model == "effective" and thd:
+            raise InputError(f"{sorted(thd)[0]}: an option of model='thd' only")
         load = self._load(load_n)
         f = _speed(speed_hz)
         if f == 0.0:
             raise InputError("speed_hz: the thermal equilibrium needs 0 < |speed_hz| <= 1e5, got 0")
-        opts = thermal_options(supply_temperature_c=supply_temperature_c,
+        if model == "thd":
+            unknown = set(thd) - {"journal_htc_w_m2k", "bush_htc_w_m2k",
+                                  "journal_temperature_c", "bush_temperature_c"}
+            if unknown:
+                raise InputError(f"{sorted(unknown)[0]}: not an option of the THD film")
+            opts = thd_options(supply_temperature_c=supply_temperature_c,
                                supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
-                               effective_factor=effective_factor, tol_k=tol_k)
+                               tol_k=tol_k, **thd)
+        else:
+            opts = thermal_options(supply_temperature_c=supply_temperature_c,
+                                   supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                                   effective_factor=effective_factor, tol_k=tol_k)
         s = getattr(self._local, "thermal_solver", None)
         if s is None:  # its own solver: the thermal iteration changes its viscosity
             g, grid = self.to_core()
             s = _core.ReynoldsSolver(g, grid, self.cavitation)
             self._local.thermal_solver = s
+        if model == "thd":
+            return run_thd_equilibrium(s, oil, opts, load, f, self.clearance_m)
         return run_thermal_equilibrium(s, oil, opts, load, f, self.clearance_m)
 
     @staticmethod
@@ -636,9 +657,19 @@ class FluidFilmBearing:
     tilt: bool = False
     config_theta_x_rad: float = 0.0
     config_theta_y_rad: float = 0.0
+    # a frozen viscosity per node, Pa·s, (n_circ, n_axial + 1) as a tuple of rows (the THD
+    # film's temperature field at its thermal equilibrium); None: viscosity_pa_s everywhere
+    viscosity_field_pa_s: tuple | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "grooves", tuple(self.grooves))
+        if self.viscosity_field_pa_s is not None:
+            a = np.asarray(self.viscosity_field_pa_s, dtype=float)
+            if a.shape != (self.n_circ, self.n_axial + 1) or not np.all(np.isfinite(a)) \
+                    or not np.all(a > 0.0):
+                raise InputError(f"viscosity_field_pa_s: expected finite values > 0 of shape "
+                                 f"({self.n_circ}, {self.n_axial + 1}), got shape {a.shape}")
+            object.__setattr__(self, "viscosity_field_pa_s", tuple(map(tuple, a.tolist())))
 
     def check(self, where: str, n_stations: int) -> None:
         check_placed_film(self, where, n_stations)

@@ -216,7 +216,10 @@ class ThermalModel:
     ``carry_over``, ``effective_factor``, ``supply_flow_m3_s`` the heat-balance settings of
     every bearing that has no entry of its own in ``films`` (:class:`ThermalFilm`, by bearing
     name). Used by :func:`rotordyn.analysis.system_thermal_equilibrium` and ``rotordyn
-    thermal`` when they are given no oil of their own.
+    thermal`` when they are given no oil of their own. ``model``: "effective" (the
+    effective-temperature heat balance) or "thd" (the thermo-hydrodynamic film, with the
+    heat-transfer coefficients ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` W/(m² K), 0:
+    adiabatic).
     """
 
     supply_temperature_c: float
@@ -225,8 +228,17 @@ class ThermalModel:
     effective_factor: float = 0.5
     supply_flow_m3_s: float = 0.0
     films: tuple[ThermalFilm, ...] = ()
+    model: str = "effective"
+    journal_htc_w_m2k: float = 0.0
+    bush_htc_w_m2k: float = 0.0
 
     def __post_init__(self) -> None:
+        v.choice("thermal.model", self.model, ("effective", "thd"))
+        for f in ("journal_htc_w_m2k", "bush_htc_w_m2k"):
+            val = v.finite(f, getattr(self, f))
+            if val < 0.0:
+                raise InputError(f"{f}: expected >= 0 W/(m^2 K) (0: adiabatic), got {val}")
+            object.__setattr__(self, f, val)
         if not isinstance(self.oil, Oil):
             raise InputError(f"oil: expected a rotordyn.bearings.Oil, got {self.oil!r}")
         object.__setattr__(self, "films", tuple(self.films))

@@ -39,6 +39,8 @@ class SystemThermalResult:
     system: object
     status: str = "ok"
     message: str = ""
+    thermal_model: str = "effective"  # "thd": effective_temperature_c is the film's mean
+    temperature_c: tuple = ()         # "thd": each bearing's field (n_circ, n_axial + 1), degC
 
     def __repr__(self) -> str:
         t = ", ".join(f"{n}: {x:.2f} degC" for n, x in zip(self.bearing_names,
@@ -55,6 +57,7 @@ class SystemThermalResult:
             "speed_hz": np.full(n, self.speed_hz),
             "supply_temperature_c": np.full(n, self.supply_temperature_c),
             "bearing": list(self.bearing_names),
+            "thermal_model": [self.thermal_model] * n,
             "effective_temperature_c": self.effective_temperature_c,
             "max_temperature_c": self.max_temperature_c,
             "inlet_temperature_c": self.inlet_temperature_c,

@@ -1,0 +1,57 @@
+// Thermo-hydrodynamic film (thd.hpp): options, the film's thermal state, the THD equilibrium of
+// a plain film (GIL released: one Reynolds equilibrium and one energy solve per iteration).
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "rotordyn/thd.hpp"
+
+namespace rotordyn::py_bind {
+
+void bind_thd(py::module_& m) {
+  py::class_<ThdOptions>(m, "ThdOptions")
+      .def(py::init<>())
+      .def_readwrite("supply_temperature_c", &ThdOptions::supply_temperature_c)
+      .def_readwrite("supply_flow_m3_s", &ThdOptions::supply_flow_m3_s)
+      .def_readwrite("carry_over", &ThdOptions::carry_over)
+      .def_readwrite("journal_htc_w_m2k", &ThdOptions::journal_htc_w_m2k)
+      .def_readwrite("bush_htc_w_m2k", &ThdOptions::bush_htc_w_m2k)
+      .def_readwrite("journal_temperature_c", &ThdOptions::journal_temperature_c)
+      .def_readwrite("bush_temperature_c", &ThdOptions::bush_temperature_c)
+      .def_readwrite("tol_k", &ThdOptions::tol_k)
+      .def_readwrite("max_iter", &ThdOptions::max_iter)
+      .def("validate", &ThdOptions::validate, py::arg("oil"));
+  py::class_<ThdFilmState>(m, "ThdFilmState")
+      .def_readonly("temperature_c", &ThdFilmState::temperature_c)
+      .def_readonly("inlet_mask", &ThdFilmState::inlet_mask)
+      .def_readonly("flows", &ThdFilmState::flows)
+      .def_readonly("max_temperature_c", &ThdFilmState::max_temperature_c)
+      .def_readonly("mean_temperature_c", &ThdFilmState::mean_temperature_c)
+      .def_readonly("inlet_temperature_c", &ThdFilmState::inlet_temperature_c)
+      .def_readonly("recirculation_temperature_c", &ThdFilmState::recirculation_temperature_c)
+      .def_readonly("side_temperature_c", &ThdFilmState::side_temperature_c)
+      .def_readonly("power_loss_w", &ThdFilmState::power_loss_w)
+      .def_readonly("friction_power_w", &ThdFilmState::friction_power_w)
+      .def_readonly("film_flow_m3_s", &ThdFilmState::film_flow_m3_s)
+      .def_readonly("recirculation_flow_m3_s", &ThdFilmState::recirculation_flow_m3_s)
+      .def_readonly("side_flow_m3_s", &ThdFilmState::side_flow_m3_s)
+      .def_readonly("supply_flow_m3_s", &ThdFilmState::supply_flow_m3_s)
+      .def_readonly("heat_to_journal_w", &ThdFilmState::heat_to_journal_w)
+      .def_readonly("heat_to_bush_w", &ThdFilmState::heat_to_bush_w);
+  py::class_<ThdEquilibrium>(m, "ThdEquilibrium")
+      .def_readonly("equilibrium", &ThdEquilibrium::equilibrium)
+      .def_readonly("coefficients", &ThdEquilibrium::coefficients)
+      .def_readonly("film", &ThdEquilibrium::film)
+      .def_readonly("iterations", &ThdEquilibrium::iterations)
+      .def_readonly("equilibrium_iterations", &ThdEquilibrium::equilibrium_iterations);
+  m.def("thd_equilibrium", &thd_equilibrium, py::arg("solver"), py::arg("oil"),
+        py::arg("options"), py::arg("load_x_n"), py::arg("load_y_n"), py::arg("omega"),
+        py::call_guard<py::gil_scoped_release>(),
+        "Thermo-hydrodynamic equilibrium of a plain film (thd.hpp); the solver keeps the "
+        "final viscosity field.");
+  m.def("thd_energy", &thd_energy, py::arg("solver"), py::arg("solution"), py::arg("oil"),
+        py::arg("options"), py::arg("omega"), py::call_guard<py::gil_scoped_release>(),
+        "The THD energy equation at the solver's last full solve.");
+}
+
+}  // namespace rotordyn::py_bind

@@ -1,0 +1,67 @@
+// Thermo-hydrodynamic (THD) film of a plain journal bearing (issue 20; docs/film-physics.md
+// §"Thermo-hydrodynamic film"): an energy equation for the film temperature T(φ, z) (averaged
+// across the film thickness) on the Reynolds grid, the viscosity μ(T) at every node, iterated
+// with the Reynolds equilibrium in one call.
+//
+// Energy equation (steady, per node cell P of area A_P, finite volumes on the Reynolds cells):
+//   ρ c_p Σ_{faces f into P} |F_f| (T_P − T_f,up) + (h_J + h_B) A_P T_P
+//       = Φ_P + A_P (h_J T_J + h_B T_B),
+// F_f the Reynolds solution's volume flows through the cell faces (circumferential Couette +
+// Poiseuille, axial Poiseuille; in a cavitated zone only the Couette streamers, FilmFlows),
+// T_f,up the upwind node's temperature, Φ_P = ∫ (μU²θ/h + h³|∇p|²/(12μ)) dA the viscous
+// dissipation, h_J, h_B heat-transfer coefficients to journal and bush (0: adiabatic) at
+// temperatures T_J, T_B. Conduction within the film plane is neglected (convection-dominated,
+// Péclet ≫ 1). An end cell whose internal faces give a net inflow (side inflow) draws ambient
+// oil at the supply temperature.
+// Inlet: the supply-groove nodes (with a groove) or the column of maximum film (without one)
+// hold the mixing temperature T_in = (Q_f T_s + λ Q_r T_r)/(Q_f + λ Q_r): the fresh flow Q_f
+// (supply_flow_m3_s; 0: the film's demand Q − λ Q_r) at T_s mixed with the carried-over part λ
+// (carry_over) of the flow Q_r reaching the inlet from the film at its mixing-cup temperature
+// T_r (solved exactly: T is affine in T_in). The same mixing as the effective model.
+#pragma once
+#include "rotordyn/thermal.hpp"
+
+namespace rotordyn {
+
+// ThdOptions (supply, carry-over, heat-transfer coefficients): thermal.hpp.
+
+
+/// The film's thermal state at one Reynolds solution.
+struct ThdFilmState {
+  RowMatrixXd temperature_c;    ///< (n_circ, n_axial + 1), degC
+  RowMatrixXd inlet_mask;       ///< 1 on the nodes held at the inlet temperature
+  FilmFlows flows;              ///< the flows and dissipation of the energy equation
+  double max_temperature_c = 0.0, mean_temperature_c = 0.0;  ///< mean: area-weighted
+  double inlet_temperature_c = 0.0;
+  double recirculation_temperature_c = 0.0;  ///< T_r, mixing-cup of the flow reaching the inlet
+  double side_temperature_c = 0.0;           ///< mixing-cup of the side leakage
+  double power_loss_w = 0.0;       ///< Σ Φ (the energy equation's dissipation)
+  double friction_power_w = 0.0;   ///< torque·|ω| (the Reynolds solution's friction)
+  double film_flow_m3_s = 0.0;     ///< Q, from the inlet nodes into the film
+  double recirculation_flow_m3_s = 0.0;  ///< Q_r, from the film into the inlet nodes
+  double side_flow_m3_s = 0.0;     ///< through the ends from the film's end cells
+  double supply_flow_m3_s = 0.0;   ///< Q_f (fresh oil)
+  double heat_to_journal_w = 0.0, heat_to_bush_w = 0.0;
+};
+
+/// The energy equation at the solver's last (full-output) solution `sol` at ω (rad/s).
+ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
+                        const OilModel& oil, const ThdOptions& opt, double omega);
+
+struct ThdEquilibrium {
+  EquilibriumSolution equilibrium;   ///< under the load with the viscosity field μ(T)
+  DynamicCoefficients coefficients;  ///< K, C at it, the temperature (viscosity) field frozen
+  ThdFilmState film;
+  int iterations = 0;                ///< outer iterations (one warm-started equilibrium each)
+  int equilibrium_iterations = 0;
+};
+
+/// THD equilibrium of a rigid journal under the load (N) at ω: the viscosity field μ(T) and
+/// the equilibrium iterated (Anderson-accelerated fixed point on the node temperatures) to
+/// max |ΔT| <= tol_k. The solver keeps the final viscosity field. ConvergenceError when the
+/// iteration does not settle or a temperature leaves the law's range.
+ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
+                               const ThdOptions& opt, double load_x_n, double load_y_n,
+                               double omega);
+
+}  // namespace rotordyn

@@ -1,0 +1,141 @@
+// A viscosity per node (the thermo-hydrodynamic film, thd.hpp) and the film's finite-volume
+// flows and viscous dissipation, the transport terms of the energy equation.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "reynolds_impl.hpp"
+#include "rotordyn/errors.hpp"
+
+namespace rotordyn {
+
+using reynolds_detail::num;
+
+void ReynoldsSolver::set_viscosity_field(const RowMatrixXd& v) {
+  Impl& s = *impl_;
+  if (v.rows() != s.N || v.cols() != s.K1)
+    throw InputError("viscosity_pa_s: expected a (" + std::to_string(s.N) + ", " +
+                     std::to_string(s.K1) + ") node field, got (" + std::to_string(v.rows()) +
+                     ", " + std::to_string(v.cols()) + ")");
+  if (s.geo.short_bearing)
+    throw InputError("short_bearing: a viscosity field needs the finite film (the short-bearing "
+                     "model has no circumferential flow), got short_bearing = true");
+  if (s.turb)
+    throw InputError("turbulence: a viscosity field is available for the laminar film only, got '" +
+                     std::string(turbulence_name(s.geo.turbulence)) + "'");
+  if (s.sealed)
+    throw InputError("end_seal: a viscosity field needs open ends (the seal's flow carries no "
+                     "temperature model), got sealed ends");
+  for (int n = 0; n < s.n_nodes; ++n) {
+    const double m = v.data()[n];
+    if (!(std::isfinite(m) && m > 0.0))
+      throw InputError("viscosity_pa_s: expected finite values > 0 at every node, got " + num(m) +
+                       " at node (" + std::to_string(n / s.K1) + ", " + std::to_string(n % s.K1) +
+                       ")");
+  }
+  s.mu_node.assign(v.data(), v.data() + s.n_nodes);
+  s.vmE.assign(s.n_nodes, 1.0);
+  s.vmN.assign(s.n_nodes, 1.0);
+  for (int n = 0; n < s.n_nodes; ++n) {
+    s.vmE[n] = s.mu / (0.5 * (s.mu_node[n] + s.mu_node[s.east(n)]));
+    if (n % s.K1 + 1 < s.K1) s.vmN[n] = s.mu / (0.5 * (s.mu_node[n] + s.mu_node[n + 1]));
+  }
+  s.visc_field = true;
+  s.visc_symmetric = s.symmetric(s.mu_node.data());
+  s.solved = false;
+}
+
+FilmFlows ReynoldsSolver::film_flows() const {
+  const Impl& s = *impl_;
+  if (!s.solved || s.pressure_only || s.sys == nullptr)
+    throw ConvergenceError("film_flows: no solve with full output to take the flows from");
+  FilmFlows f;
+  s.film_flows(f);
+  return f;
+}
+
+void ReynoldsSolver::Impl::film_flows(FilmFlows& f) const {
+  const int Kl = K1 - 1;
+  const bool fwd = omega >= 0.0;
+  const bool clipped = cav == Cavitation::gumbel;
+  auto cavitated = [&](int n) {  // a Swift–Stieber (strictly active) or clipped node
+    if (fixed[n]) return false;
+    if (clipped) return pfull[n] < 0.0;
+    if (cav != Cavitation::reynolds) return false;
+    const LinearSystem& S = *sys;
+    const int m = (S.half && n % K1 > Kh) ? mirror(n) : n;
+    const int u = S.unk[m];
+    return u >= 0 && S.active[u] && !biactive[n];
+  };
+  std::vector<double> th(theta);
+  if (cav == Cavitation::reynolds || clipped) {
+    // Couette streamers: from each rupture, the flow through the upstream face fills the
+    // fraction θ = F/(U h_f Δz/2) of the cell's downstream face (p = 0 in the zone)
+    const int dir = fwd ? 1 : N - 1;
+    for (int k = 1; k < Kl; ++k) {
+      int j0 = -1;
+      for (int j = 0; j < N && j0 < 0; ++j)
+        if (!cavitated(j * K1 + k)) j0 = j;
+      if (j0 < 0) continue;  // a wholly cavitated row (degenerate): θ stays 1
+      for (int step = 1; step < N; ++step) {
+        const int j = (j0 + step * dir) % N, n = j * K1 + k;
+        if (!cavitated(n)) continue;
+        const int up = fwd ? west(n) : east(n);
+        double F, cap;
+        if (fwd) {
+          F = cE[up] * (p[up] - p[n]) + qE[up] * th[up];
+          cap = qE[n];
+        } else {
+          F = -(cE[n] * (p[n] - p[up]) + qE[n] * th[up]);
+          cap = -qE[west(n)];
+        }
+        th[n] = cap > 0.0 ? std::clamp(F / cap, 0.0, 1.0) : 1.0;
+      }
+    }
+  }
+  if (!sealed && K1 > 2)
+    for (int j = 0; j < N; ++j) {  // open ends: the fill of their inner rows (as flows())
+      th[j * K1] = th[j * K1 + 1];
+      th[j * K1 + Kl] = th[j * K1 + Kl - 1];
+    }
+  f.q_phi_m3_s.resize(N, K1);
+  f.q_z_m3_s.resize(N, K1);
+  f.fill.resize(N, K1);
+  f.dissipation_w.setZero(N, K1);
+  f.area_m2.resize(N, K1);
+  f.viscosity_pa_s.resize(N, K1);
+  double* qp = f.q_phi_m3_s.data();
+  double* qz = f.q_z_m3_s.data();
+  double* ds = f.dissipation_w.data();
+  const double U = omega * R, a0 = R * dphi * dz;
+  for (int n = 0; n < n_nodes; ++n) {
+    const int k = n % K1, e = east(n);
+    const double half = (k == 0 || k == Kl) ? 0.5 : 1.0;
+    const double ce = half * cE[n], dpe = p[n] - p[e];
+    qp[n] = ce * dpe + half * qE[n] * (fwd ? th[n] : th[e]);
+    const double pe = 0.5 * ce * dpe * dpe;  // Poiseuille dissipation c Δp², half per side
+    ds[n] += pe;
+    ds[e] += pe;
+    if (k < Kl) {
+      const double dpn = p[n] - p[n + 1];
+      qz[n] = cN[n] * dpn;
+      const double pn = 0.5 * cN[n] * dpn * dpn;
+      ds[n] += pn;
+      ds[n + 1] += pn;
+    } else {
+      qz[n] = 0.0;
+    }
+    const double area = half * a0;
+    f.area_m2.data()[n] = area;
+    f.fill.data()[n] = th[n];
+    f.viscosity_pa_s.data()[n] = node_mu(n);
+    ds[n] += node_mu(n) * U * U * th[n] / h[n] * area;  // Couette μU²θ/h
+  }
+  for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
+    const int k = n % K1;
+    const double area = ((k == 0 || k == Kl) ? 0.5 : 1.0) * a0;
+    ds[n] += node_mu(n) * U * U * th[n] * (pocket_inv_h(n) - 1.0 / h[n]) * area;
+  }
+}
+
+}  // namespace rotordyn

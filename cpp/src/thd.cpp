@@ -1,0 +1,376 @@
+// Thermo-hydrodynamic film (thd.hpp): the energy equation on the Reynolds grid and its
+// iteration with the equilibrium.
+#include "rotordyn/thd.hpp"
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rotordyn/errors.hpp"
+#include "thermal_detail.hpp"
+
+namespace rotordyn {
+
+namespace {
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+void nonneg(double v, const char* field) {
+  if (!(std::isfinite(v) && v >= 0.0))
+    throw InputError(std::string(field) + ": expected a finite value >= 0 W/(m^2 K) (0: "
+                     "adiabatic), got " + num(v));
+}
+
+// a field symmetric about z = 0 when the film is (bitwise: the half-grid solve needs it)
+bool mirror_symmetric(const RowMatrixXd& f) {
+  const int K1 = static_cast<int>(f.cols());
+  for (int j = 0; j < f.rows(); ++j)
+    for (int k = 0; k < K1 / 2; ++k)
+      if (f(j, k) != f(j, K1 - 1 - k)) return false;
+  return true;
+}
+
+void symmetrize(double* t, int N, int K1) {
+  for (int j = 0; j < N; ++j)
+    for (int k = 0; k < K1 / 2; ++k) {
+      double& a = t[j * K1 + k];
+      double& b = t[j * K1 + K1 - 1 - k];
+      a = b = 0.5 * (a + b);
+    }
+}
+}  // namespace
+
+void ThdOptions::validate(const OilModel& oil) const {
+  if (!(std::isfinite(supply_temperature_c) && supply_temperature_c >= oil.t_min_c &&
+        supply_temperature_c < oil.t_max_c))
+    throw InputError("supply_temperature_c: expected a temperature in the viscosity law's "
+                     "range [t_min_c, t_max_c) = [" + num(oil.t_min_c) + ", " +
+                     num(oil.t_max_c) + ") degC, got " + num(supply_temperature_c));
+  if (!(std::isfinite(supply_flow_m3_s) && supply_flow_m3_s >= 0.0))
+    throw InputError("supply_flow_m3_s: expected >= 0 (0: the film's own demand), got " +
+                     num(supply_flow_m3_s));
+  if (!(carry_over >= 0.0 && carry_over <= 1.0))
+    throw InputError("carry_over: expected 0 <= carry_over <= 1, got " + num(carry_over));
+  nonneg(journal_htc_w_m2k, "journal_htc_w_m2k");
+  nonneg(bush_htc_w_m2k, "bush_htc_w_m2k");
+  for (auto [v, f] : {std::pair{journal_temperature_c, "journal_temperature_c"},
+                      std::pair{bush_temperature_c, "bush_temperature_c"}})
+    if (!std::isnan(v) && !(std::isfinite(v) && v > -273.15))
+      throw InputError(std::string(f) + ": expected a temperature > -273.15 degC (NaN: the "
+                       "supply temperature), got " + num(v));
+  if (!(tol_k >= 1e-12 && tol_k <= 1.0))
+    throw InputError("tol_k: expected 1e-12 <= tol_k <= 1 K, got " + num(tol_k));
+  if (!(max_iter >= 1 && max_iter <= 1000))
+    throw InputError("max_iter: expected 1 <= max_iter <= 1000, got " + std::to_string(max_iter));
+}
+
+ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
+                        const OilModel& oil, const ThdOptions& opt, double omega) {
+  ThdFilmState st;
+  st.flows = solver.film_flows();
+  const FilmFlows& fl = st.flows;
+  const int N = static_cast<int>(sol.h_m.rows()), K1 = static_cast<int>(sol.h_m.cols());
+  const int nn = N * K1, Kl = K1 - 1;
+  const double Ts = opt.supply_temperature_c;
+  const double TJ = std::isnan(opt.journal_temperature_c) ? Ts : opt.journal_temperature_c;
+  const double TB = std::isnan(opt.bush_temperature_c) ? Ts : opt.bush_temperature_c;
+  const double hJ = opt.journal_htc_w_m2k, hB = opt.bush_htc_w_m2k;
+  const double rc = oil.density_kg_m3 * oil.specific_heat_j_per_kg_k;
+  // inlet nodes: the groove nodes and the end half cells of groove columns (their flows are
+  // the supply's, as FilmSolution::inlet_flow_m3_s), or the column of maximum film
+  std::vector<char> D(nn, 0);
+  const RowMatrixXd dm = solver.dirichlet_mask();
+  bool any = false;
+  for (int n = 0; n < nn; ++n) {
+    const int k = n % K1;
+    if (k > 0 && k < Kl && dm.data()[n] != 0.0) D[n] = any = true;
+  }
+  for (int n = 0; n < nn && any; ++n) {
+    const int k = n % K1;
+    if ((k == 0 && D[n + 1]) || (k == Kl && D[n - 1])) D[n] = 1;
+  }
+  if (!any) {
+    const int kmid = Kl / 2;
+    int jmax = 0;
+    for (int j = 1; j < N; ++j)
+      if (sol.h_m(j, kmid) > sol.h_m(jmax, kmid)) jmax = j;
+    for (int k = 0; k < K1; ++k) D[jmax * K1 + k] = 1;
+  }
+  const double* qp = fl.q_phi_m3_s.data();
+  const double* qz = fl.q_z_m3_s.data();
+  std::vector<double> diag(nn, 0.0), in(nn, 0.0), out(nn, 0.0);
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(4 * nn);
+  auto link = [&](int a, int b, double F) {  // flow F from a to b
+    if (F < 0.0) {
+      std::swap(a, b);
+      F = -F;
+    }
+    if (!(F > 0.0)) return;
+    in[b] += F;
+    out[a] += F;
+    if (!D[b]) {
+      diag[b] += rc * F;
+      trip.emplace_back(b, a, -rc * F);
+    }
+  };
+  for (int n = 0; n < nn; ++n) {
+    const int e = n + K1 >= nn ? n + K1 - nn : n + K1;
+    link(n, e, qp[n]);
+    if (n % K1 < Kl) link(n, n + 1, qz[n]);
+  }
+  Eigen::VectorXd b0 = Eigen::VectorXd::Zero(nn), b1 = Eigen::VectorXd::Zero(nn);
+  std::vector<double> side_out(nn, 0.0);
+  const double* A = fl.area_m2.data();
+  const double* phi = fl.dissipation_w.data();
+  for (int n = 0; n < nn; ++n) {
+    if (D[n]) {
+      trip.emplace_back(n, n, 1.0);
+      b1[n] = 1.0;
+      continue;
+    }
+    const int k = n % K1;
+    if (k == 0 || k == Kl) {  // open end: what the internal faces bring leaves through it
+      const double B = in[n] - out[n];
+      if (B >= 0.0) {
+        side_out[n] = B;
+      } else {  // side inflow of ambient oil at the supply temperature
+        diag[n] -= rc * B;
+        b0[n] -= rc * B * Ts;
+      }
+    }
+    diag[n] += (hJ + hB) * A[n];
+    b0[n] += phi[n] + A[n] * (hJ * TJ + hB * TB);
+    if (!(diag[n] > 0.0)) {  // no inflow at all: the cell's outflow enters at T_s
+      diag[n] = out[n] > 0.0 ? rc * out[n] : 1.0;
+      b0[n] = out[n] > 0.0 ? b0[n] + rc * out[n] * Ts : Ts;
+    }
+    trip.emplace_back(n, n, diag[n]);
+  }
+  // Solve M X = [b0 b1]. Upwind convection makes M lower triangular in the flow's order when
+  // the flow graph (the inlet cutting the circle) has no cycle: one sweep in topological order
+  // (Kahn); a recirculation cycle (e.g. a backflow eddy) falls back to the sparse LU.
+  Eigen::VectorXd X0(nn), X1(nn);
+  {
+    std::vector<int> indeg(nn, 0), dstart(nn + 1, 0), dnode;
+    for (const auto& t : trip)
+      if (t.row() != t.col()) {
+        ++indeg[t.row()];
+        ++dstart[t.col() + 1];
+      }
+    for (int n = 0; n < nn; ++n) dstart[n + 1] += dstart[n];
+    dnode.resize(dstart[nn]);
+    std::vector<int> fill(dstart.begin(), dstart.end() - 1);
+    // upstream lists in CSR (row = downstream node)
+    std::vector<int> ustart(nn + 1, 0), unode;
+    std::vector<double> uw;
+    for (const auto& t : trip)
+      if (t.row() != t.col()) ++ustart[t.row() + 1];
+    for (int n = 0; n < nn; ++n) ustart[n + 1] += ustart[n];
+    unode.resize(ustart[nn]);
+    uw.resize(ustart[nn]);
+    std::vector<int> ufill(ustart.begin(), ustart.end() - 1);
+    for (const auto& t : trip)
+      if (t.row() != t.col()) {
+        dnode[fill[t.col()]++] = t.row();
+        unode[ufill[t.row()]] = t.col();
+        uw[ufill[t.row()]++] = -t.value();
+      }
+    std::vector<int> order;
+    order.reserve(nn);
+    for (int n = 0; n < nn; ++n)
+      if (indeg[n] == 0) order.push_back(n);
+    for (std::size_t q = 0; q < order.size(); ++q) {
+      const int n = order[q];
+      if (D[n]) {
+        X0[n] = 0.0;
+        X1[n] = 1.0;
+      } else {
+        double s0 = b0[n], s1 = 0.0;
+        for (int i = ustart[n]; i < ustart[n + 1]; ++i) {
+          s0 += uw[i] * X0[unode[i]];
+          s1 += uw[i] * X1[unode[i]];
+        }
+        X0[n] = s0 / diag[n];
+        X1[n] = s1 / diag[n];
+      }
+      for (int i = dstart[n]; i < dstart[n + 1]; ++i)
+        if (--indeg[dnode[i]] == 0) order.push_back(dnode[i]);
+    }
+    if (static_cast<int>(order.size()) < nn) {  // a cycle: the sparse LU
+      Eigen::SparseMatrix<double> M(nn, nn);
+      M.setFromTriplets(trip.begin(), trip.end());
+      M.makeCompressed();
+      Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+      lu.compute(M);
+      if (lu.info() != Eigen::Success)
+        throw ConvergenceError("THD energy equation: the convection operator is singular");
+      X0 = lu.solve(b0);
+      X1 = lu.solve(b1);
+    }
+  }
+  // the flows into and out of the inlet: Q (inlet -> film), Q_r and its mixing-cup T (affine
+  // in T_in: T_r = a + b T_in)
+  double Q = 0.0, Qr = 0.0, ta = 0.0, tb = 0.0;
+  auto inlet = [&](int a, int b, double F) {
+    if (F < 0.0) {
+      std::swap(a, b);
+      F = -F;
+    }
+    if (D[a] && !D[b]) Q += F;
+    if (!D[a] && D[b]) {
+      Qr += F;
+      ta += F * X0[a];
+      tb += F * X1[a];
+    }
+  };
+  for (int n = 0; n < nn; ++n) {
+    const int e = n + K1 >= nn ? n + K1 - nn : n + K1;
+    inlet(n, e, qp[n]);
+    if (n % K1 < Kl) inlet(n, n + 1, qz[n]);
+  }
+  const double lam = opt.carry_over;
+  const double Qf = opt.supply_flow_m3_s > 0.0 ? opt.supply_flow_m3_s : Q - lam * Qr;
+  if (!(Q > 0.0 && Qf > 0.0))
+    throw ConvergenceError("THD energy equation: the film draws no fresh oil (flow from the "
+                           "inlet " + num(Q) + " m^3/s, carried over " + num(lam * Qr) +
+                           " m^3/s)");
+  double Tin = Ts;
+  if (Qr > 0.0) {
+    const double a = ta / Qr, b = tb / Qr;
+    Tin = (Qf * Ts + lam * Qr * a) / (Qf + lam * Qr * (1.0 - b));
+  }
+  Eigen::VectorXd T = X0 + Tin * X1;
+  if (mirror_symmetric(sol.h_m)) symmetrize(T.data(), N, K1);
+  if (!T.allFinite())
+    throw ConvergenceError("THD energy equation: non-finite film temperature");
+  st.temperature_c = Eigen::Map<const RowMatrixXd>(T.data(), N, K1);
+  st.inlet_mask.resize(N, K1);
+  double area = 0.0, tmean = 0.0, qs = 0.0, ts = 0.0, P = 0.0, qj = 0.0, qb = 0.0;
+  for (int n = 0; n < nn; ++n) {
+    st.inlet_mask.data()[n] = D[n] ? 1.0 : 0.0;
+    area += A[n];
+    tmean += A[n] * T[n];
+    qs += side_out[n];
+    ts += side_out[n] * T[n];
+    P += phi[n];
+    if (!D[n]) {
+      qj += hJ * A[n] * (T[n] - TJ);
+      qb += hB * A[n] * (T[n] - TB);
+    }
+  }
+  st.max_temperature_c = T.maxCoeff();
+  st.mean_temperature_c = tmean / area;
+  st.inlet_temperature_c = Tin;
+  st.recirculation_temperature_c = Qr > 0.0 ? (ta + Tin * tb) / Qr : Tin;
+  st.side_temperature_c = qs > 0.0 ? ts / qs : Tin;
+  st.power_loss_w = P;
+  st.friction_power_w = sol.friction_torque_nm * omega;
+  st.film_flow_m3_s = Q;
+  st.recirculation_flow_m3_s = Qr;
+  st.side_flow_m3_s = qs;
+  st.supply_flow_m3_s = Qf;
+  st.heat_to_journal_w = qj;
+  st.heat_to_bush_w = qb;
+  return st;
+}
+
+ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
+                               const ThdOptions& opt, double lx, double ly, double omega) {
+  oil.validate();
+  opt.validate(oil);
+  if (!(std::isfinite(omega) && omega != 0.0))
+    throw InputError("speed_hz: the thermal equilibrium needs a nonzero speed");
+  const int N = solver.grid().n_circ, K1 = solver.grid().n_axial + 1, nn = N * K1;
+  const double Ts = opt.supply_temperature_c;
+  solver.set_viscosity(oil.viscosity_pa_s(Ts));  // the reference of the field's faces
+  ThdEquilibrium out;
+  Eigen::VectorXd T = Eigen::VectorXd::Constant(nn, Ts);
+  RowMatrixXd mu(N, K1);
+  double x = 0.0, y = 0.0;
+  AndersonMixer mixer;  // T -> G(T) accelerated
+  for (int it = 1; it <= opt.max_iter; ++it) {
+    for (int n = 0; n < nn; ++n) {
+      if (!(T[n] <= oil.t_max_c))
+        throw ConvergenceError("THD equilibrium: the film temperature " + num(T[n]) +
+                               " degC exceeds the viscosity law's range (t_max_c = " +
+                               num(oil.t_max_c) + " degC)");
+      mu.data()[n] = oil.viscosity_pa_s(std::max(T[n], oil.t_min_c));
+    }
+    solver.set_viscosity_field(mu);
+    // the position: the full equilibrium on the first iteration (cold start), then one Newton
+    // step per iteration (F + W = 0, dF/dq = −K: q += K⁻¹(F + W)) — the position converges
+    // with the temperature; the final equilibrium is polished to 1e-10 below
+    EquilibriumSolution eq;
+    eq.force_n.setZero();
+    double rtol = 1e-10;
+    bool stepped = false;
+    if (it > 1) {
+      const DynamicCoefficients dc = solver.coefficients(x, y, omega);
+      const Eigen::Vector2d r = dc.force_n + Eigen::Vector2d(lx, ly);
+      const Eigen::Vector2d dq = dc.K.fullPivLu().solve(r);
+      const double c = solver.geometry().clearance_m;
+      if (dq.allFinite() && std::hypot(x + dq[0], y + dq[1]) < 0.98 * c) {
+        x += dq[0];
+        y += dq[1];
+        stepped = true;
+        rtol = 1.0;  // not an equilibrium yet: polish at the end
+      }
+    }
+    if (!stepped) {
+      eq = solver.equilibrium(lx, ly, omega, x, y, 1e-6);
+      out.equilibrium_iterations += eq.iterations;
+      x = eq.x_m;
+      y = eq.y_m;
+      rtol = 1e-6;
+    }
+    const FilmSolution* sol = &solver.rigid(x, y, 0.0, 0.0, omega);
+    ThdFilmState st = thd_energy(solver, *sol, oil, opt, omega);
+    const Eigen::VectorXd G = Eigen::Map<const Eigen::VectorXd>(st.temperature_c.data(), nn);
+    const double res = (G - T).cwiseAbs().maxCoeff();
+    out.iterations = it;
+    if (res <= opt.tol_k) {
+      if (rtol > 1e-10) {  // polish the equilibrium with the field frozen, and its state
+        eq = solver.equilibrium(lx, ly, omega, x, y, 1e-10);
+        out.equilibrium_iterations += eq.iterations;
+        x = eq.x_m;
+        y = eq.y_m;
+        sol = &solver.rigid(x, y, 0.0, 0.0, omega);
+        st = thd_energy(solver, *sol, oil, opt, omega);
+        const Eigen::VectorXd G2 =
+            Eigen::Map<const Eigen::VectorXd>(st.temperature_c.data(), nn);
+        if ((G2 - T).cwiseAbs().maxCoeff() > opt.tol_k) {  // the position had not settled
+          T = G2;
+          continue;
+        }
+      }
+      out.equilibrium = eq;
+      out.coefficients = solver.coefficients(x, y, omega);
+      out.film = std::move(st);
+      if (!(out.film.max_temperature_c <= oil.t_max_c))
+        throw ConvergenceError("THD equilibrium: the maximum film temperature " +
+                               num(out.film.max_temperature_c) + " degC exceeds the viscosity "
+                               "law's range (t_max_c = " + num(oil.t_max_c) + " degC)");
+      return out;
+    }
+    Eigen::VectorXd Tn = mixer.next(T, G);
+    for (int n = 0; n < nn; ++n) Tn[n] = std::clamp(Tn[n], oil.t_min_c, oil.t_max_c);
+    if (mirror_symmetric(sol->h_m)) symmetrize(Tn.data(), N, K1);
+    T = Tn;
+  }
+  throw ConvergenceError("THD equilibrium: the film temperature did not settle to " +
+                         num(opt.tol_k) + " K in " + std::to_string(opt.max_iter) +
+                         " iterations");
+}
+
+}  // namespace rotordyn
