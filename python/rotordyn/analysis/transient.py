@@ -191,7 +191,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
                               speed.speed_hz[(speed.t_s > 0) & (speed.t_s < float(t_end_s))]])
               if speed is not None else np.array([float(speed_hz)]))
     if adaptive is not None:
-        from rotordyn.control.adaptive import AdaptiveRejection
+        from rotordyn.operation.adaptive import AdaptiveRejection
 
         if not isinstance(adaptive, AdaptiveRejection):
             raise InputError(f"adaptive: expected a rotordyn.control.adaptive."
@@ -200,7 +200,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     if controller is not None:
         controller_budget(controller, float(t_end_s), float(max_cost_s))
         if controller.schedule_law is not None:
-            from rotordyn.control.gain_schedule import check_covers
+            from rotordyn.operation.controller import check_schedule_covers as check_covers
 
             check_covers(controller, float(sp_run.min()), float(sp_run.max()))
     asm = assembled(system)

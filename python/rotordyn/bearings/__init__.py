@@ -22,8 +22,9 @@ over speed)."""
 from rotordyn.bearings.active import ActiveJournalBearing
 from rotordyn.bearings.coefficients import CoefficientTable
 from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
-from rotordyn.bearings.journal import (BearingEquilibrium, FilmResult, FluidFilmBearing, Groove,
-                                       JournalBearing, PressureField)
+from rotordyn.bearings.fluid_film import FluidFilmBearing
+from rotordyn.bearings.journal import (BearingEquilibrium, FilmResult, Groove, JournalBearing,
+                                       PressureField)
 from rotordyn.bearings.ross_io import to_ross_bearing
 from rotordyn.bearings.sleeve import FlexibleSleeve, SleeveResult, paper_rig_sleeve
 from rotordyn.bearings.squeeze_film import (SqueezeFilmDamper, end_plate_seal_conductance,

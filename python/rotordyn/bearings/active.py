@@ -9,7 +9,8 @@ from dataclasses import dataclass
 
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import check_tilt_fields
-from rotordyn.bearings.journal import Groove, JournalBearing, check_placed_film, film_model
+from rotordyn.bearings.fluid_film import check_placed_film, film_model
+from rotordyn.bearings.journal import Groove, JournalBearing
 from rotordyn.bearings.sleeve import FlexibleSleeve
 from rotordyn.errors import InputError
 

@@ -29,13 +29,11 @@ from typing import Iterable, Sequence
 import numpy as np
 
 from rotordyn import _core
-from rotordyn._common import plausibility
 from rotordyn._common import validate as v
-from rotordyn.bearings._film import (CAVITATION_MODELS, SystemParts, check_film_fields,
-                                     check_tilt_fields, check_turbulence, set_turbulence)
+from rotordyn.bearings._film import CAVITATION_MODELS, SystemParts, check_turbulence, set_turbulence
 from rotordyn.bearings.coefficients import coefficient_table
-from rotordyn.bearings.thermal import Oil, run_thermal_equilibrium, thermal_options
-from rotordyn.bearings.thd import THERMAL_MODELS, run_thd_equilibrium, thd_options
+from rotordyn.bearings.thermal import Oil, run_thermal_equilibrium
+from rotordyn.bearings.thd import film_thermal_options, run_thd_equilibrium
 from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
@@ -476,25 +474,13 @@ class JournalBearing:
         not used; keyword options ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` (W/(m² K), 0:
         adiabatic), ``journal_temperature_c``, ``bush_temperature_c`` (None: the supply
         temperature). Returns a :class:`rotordyn.bearings.thd.ThdEquilibriumResult`."""
-        v.choice("model", model, THERMAL_MODELS)
-        if model == "effective" and thd:
-            raise InputError(f"{sorted(thd)[0]}: an option of model='thd' only")
+        opts = film_thermal_options(model, thd, supply_temperature_c=supply_temperature_c,
+                                    supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                                    effective_factor=effective_factor, tol_k=tol_k)
         load = self._load(load_n)
         f = _speed(speed_hz)
         if f == 0.0:
             raise InputError("speed_hz: the thermal equilibrium needs 0 < |speed_hz| <= 1e5, got 0")
-        if model == "thd":
-            unknown = set(thd) - {"journal_htc_w_m2k", "bush_htc_w_m2k",
-                                  "journal_temperature_c", "bush_temperature_c"}
-            if unknown:
-                raise InputError(f"{sorted(unknown)[0]}: not an option of the THD film")
-            opts = thd_options(supply_temperature_c=supply_temperature_c,
-                               supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
-                               tol_k=tol_k, **thd)
-        else:
-            opts = thermal_options(supply_temperature_c=supply_temperature_c,
-                                   supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
-                                   effective_factor=effective_factor, tol_k=tol_k)
         s = getattr(self._local, "thermal_solver", None)
         if s is None:  # its own solver: the thermal iteration changes its viscosity
             g, grid = self.to_core()
@@ -614,72 +600,6 @@ class JournalBearing:
 
 
 
-# -- the plain journal bearing placed in a system -------------------------------------------
-
-def check_placed_film(b, where: str, n_stations: int) -> None:
-    """The checks of a plain or active journal bearing placed at a rotor station."""
-    check_film_fields(b, where, n_stations)  # with the unit-slip warnings
-    for i, g in enumerate(b.grooves):
-        if not isinstance(g, Groove):
-            raise InputError(f"{where}.grooves[{i}]: expected a Groove, got {type(g).__name__}")
-
-
-def film_model(b) -> JournalBearing:
-    return JournalBearing(diameter_m=b.diameter_m, length_m=b.length_m,
-                          clearance_m=b.clearance_m, viscosity_pa_s=b.viscosity_pa_s,
-                          n_circ=b.n_circ, n_axial=b.n_axial, cavitation=b.cavitation,
-                          grooves=b.grooves, turbulence=b.turbulence,
-                          density_kg_m3=b.density_kg_m3)
-
-
-
-@dataclass(frozen=True, slots=True)
-class FluidFilmBearing:
-    """Plain 360° journal bearing at ``station`` (film model: :class:`rotordyn.JournalBearing`)."""
-
-    station: int
-    diameter_m: float
-    length_m: float
-    clearance_m: float
-    viscosity_pa_s: float
-    cavitation: str = "reynolds"
-    n_circ: int = 72
-    n_axial: int = 16
-    grooves: tuple[Groove, ...] = ()
-    turbulence: str = "laminar"
-    density_kg_m3: float | None = None
-    config_ax_m: float = 0.0
-    config_ay_m: float = 0.0
-    name: str = ""
-    # journal tilt (docs/film-physics.md): the film couples to the station's rotations too;
-    # the housing's angular misalignment (rad, right-hand rule about x, y) is the
-    # configuration a at those rotations
-    tilt: bool = False
-    config_theta_x_rad: float = 0.0
-    config_theta_y_rad: float = 0.0
-    # a frozen viscosity per node, Pa·s, (n_circ, n_axial + 1) as a tuple of rows (the THD
-    # film's temperature field at its thermal equilibrium); None: viscosity_pa_s everywhere
-    viscosity_field_pa_s: tuple | None = None
-
-    def __post_init__(self):
-        object.__setattr__(self, "grooves", tuple(self.grooves))
-        if self.viscosity_field_pa_s is not None:
-            a = np.asarray(self.viscosity_field_pa_s, dtype=float)
-            if a.shape != (self.n_circ, self.n_axial + 1) or not np.all(np.isfinite(a)) \
-                    or not np.all(a > 0.0):
-                raise InputError(f"viscosity_field_pa_s: expected finite values > 0 of shape "
-                                 f"({self.n_circ}, {self.n_axial + 1}), got shape {a.shape}")
-            object.__setattr__(self, "viscosity_field_pa_s", tuple(map(tuple, a.tolist())))
-
-    def check(self, where: str, n_stations: int) -> None:
-        check_placed_film(self, where, n_stations)
-        check_tilt_fields(self, where)
-
-    def journal_bearing(self) -> JournalBearing:
-        """The standalone film model (forces, coefficients) of this bearing."""
-        return film_model(self)
-
-
 __all__ = [
     "CAVITATION_MODELS",
     "Groove",
@@ -687,5 +607,4 @@ __all__ = [
     "FilmResult",
     "PressureField",
     "BearingEquilibrium",
-    "FluidFilmBearing",
 ]

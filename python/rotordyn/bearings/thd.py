@@ -19,6 +19,7 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
+from rotordyn.bearings.thermal import thermal_options
 from rotordyn.errors import InputError
 
 THERMAL_MODELS = ("effective", "thd")
@@ -168,4 +169,28 @@ def run_thd_equilibrium(solver, oil, opts, load_n, speed_hz: float,
         inlet_mask=np.array(st.inlet_mask), flows=flows)
 
 
-__all__ = ["THERMAL_MODELS", "ThdEquilibriumResult", "thd_options"]
+def film_thermal_options(model: str, thd: dict, *, supply_temperature_c: float,
+                         supply_flow_m3_s: float, carry_over: float, effective_factor: float,
+                         tol_k: float):
+    """The checked options of a standalone film's thermal equilibrium: ``model`` "effective"
+    (:func:`rotordyn.bearings.thermal.thermal_options`) or "thd" (:func:`thd_options`, with
+    the keyword options ``thd``: heat-transfer coefficients W/(m² K), wall temperatures °C).
+    InputError naming the model or the option."""
+    v.choice("model", model, THERMAL_MODELS)
+    if model == "effective":
+        if thd:
+            raise InputError(f"{sorted(thd)[0]}: an option of model='thd' only")
+        return thermal_options(supply_temperature_c=supply_temperature_c,
+                               supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                               effective_factor=effective_factor, tol_k=tol_k)
+    unknown = set(thd) - {"journal_htc_w_m2k", "bush_htc_w_m2k",
+                          "journal_temperature_c", "bush_temperature_c"}
+    if unknown:
+        raise InputError(f"{sorted(unknown)[0]}: not an option of the THD film")
+    return thd_options(supply_temperature_c=supply_temperature_c,
+                       supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                       tol_k=tol_k, **thd)
+
+
+__all__ = ["THERMAL_MODELS", "ThdEquilibriumResult", "film_thermal_options", "thd_options"]
+

@@ -30,6 +30,7 @@ import numpy as np
 from rotordyn._common import validate as v
 from rotordyn.errors import InputError
 from rotordyn.operation.controller import Controller
+from rotordyn.operation.controller import check_schedule_covers as check_covers
 
 
 def _pack(k: Controller) -> np.ndarray:
@@ -103,18 +104,6 @@ def law_at_speed(controller: Controller, speed_hz: float) -> Controller:
     D = row[o[3]:o[4]].reshape((1, ny), order="F")
     return controller.with_options(A=A, B=B, C=C, D=D, schedule_speed_hz=None,
                                    schedule_law=None, anti_windup_gain=None)
-
-
-def check_covers(controller: Controller, lo_hz: float, hi_hz: float) -> None:
-    """InputError naming ``controller.schedule_speed_hz`` when the speeds [lo_hz, hi_hz] of a
-    run leave the schedule's grid (the law would be held constant beyond its designs)."""
-    if controller.schedule_law is None:
-        return
-    x = controller.schedule_speed_hz
-    tol = 1e-9 * max(abs(x[-1]), 1.0)
-    if lo_hz < x[0] - tol or hi_hz > x[-1] + tol:
-        raise InputError(f"controller.schedule_speed_hz: the schedule's grid {x[0]:g}–"
-                         f"{x[-1]:g} Hz does not cover the run's speeds {lo_hz:g}–{hi_hz:g} Hz")
 
 
 @dataclass(frozen=True)

@@ -284,3 +284,17 @@ class Controller:
             k.noise_dt = float(self.noise_dt_s)
         k.seed = int(self.seed)
         return k
+
+
+def check_schedule_covers(controller: Controller, lo_hz: float, hi_hz: float) -> None:
+    """InputError naming ``controller.schedule_speed_hz`` when the speeds [lo_hz, hi_hz] of a
+    run leave the schedule's grid (the law would be held constant beyond its designs)."""
+    if controller.schedule_law is None:
+        return
+    x = controller.schedule_speed_hz
+    tol = 1e-9 * max(abs(x[-1]), 1.0)
+    if lo_hz < x[0] - tol or hi_hz > x[-1] + tol:
+        raise InputError(f"controller.schedule_speed_hz: the schedule's grid {x[0]:g}–"
+                         f"{x[-1]:g} Hz does not cover the run's speeds {lo_hz:g}–{hi_hz:g} Hz")
+
+

@@ -1,0 +1,79 @@
+"""The plain journal bearing placed at a rotor station (:class:`FluidFilmBearing`): its fields,
+checks and standalone film model (:class:`rotordyn.bearings.journal.JournalBearing`)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from rotordyn.bearings._film import check_film_fields, check_tilt_fields
+from rotordyn.bearings.journal import Groove, JournalBearing
+from rotordyn.errors import InputError
+
+
+def check_placed_film(b, where: str, n_stations: int) -> None:
+    """The checks of a plain or active journal bearing placed at a rotor station."""
+    check_film_fields(b, where, n_stations)  # with the unit-slip warnings
+    for i, g in enumerate(b.grooves):
+        if not isinstance(g, Groove):
+            raise InputError(f"{where}.grooves[{i}]: expected a Groove, got {type(g).__name__}")
+
+
+def film_model(b) -> JournalBearing:
+    return JournalBearing(diameter_m=b.diameter_m, length_m=b.length_m,
+                          clearance_m=b.clearance_m, viscosity_pa_s=b.viscosity_pa_s,
+                          n_circ=b.n_circ, n_axial=b.n_axial, cavitation=b.cavitation,
+                          grooves=b.grooves, turbulence=b.turbulence,
+                          density_kg_m3=b.density_kg_m3)
+
+
+
+@dataclass(frozen=True, slots=True)
+class FluidFilmBearing:
+    """Plain 360° journal bearing at ``station`` (film model: :class:`rotordyn.JournalBearing`)."""
+
+    station: int
+    diameter_m: float
+    length_m: float
+    clearance_m: float
+    viscosity_pa_s: float
+    cavitation: str = "reynolds"
+    n_circ: int = 72
+    n_axial: int = 16
+    grooves: tuple[Groove, ...] = ()
+    turbulence: str = "laminar"
+    density_kg_m3: float | None = None
+    config_ax_m: float = 0.0
+    config_ay_m: float = 0.0
+    name: str = ""
+    # journal tilt (docs/film-physics.md): the film couples to the station's rotations too;
+    # the housing's angular misalignment (rad, right-hand rule about x, y) is the
+    # configuration a at those rotations
+    tilt: bool = False
+    config_theta_x_rad: float = 0.0
+    config_theta_y_rad: float = 0.0
+    # a frozen viscosity per node, Pa·s, (n_circ, n_axial + 1) as a tuple of rows (the THD
+    # film's temperature field at its thermal equilibrium); None: viscosity_pa_s everywhere
+    viscosity_field_pa_s: tuple | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "grooves", tuple(self.grooves))
+        if self.viscosity_field_pa_s is not None:
+            a = np.asarray(self.viscosity_field_pa_s, dtype=float)
+            if a.shape != (self.n_circ, self.n_axial + 1) or not np.all(np.isfinite(a)) \
+                    or not np.all(a > 0.0):
+                raise InputError(f"viscosity_field_pa_s: expected finite values > 0 of shape "
+                                 f"({self.n_circ}, {self.n_axial + 1}), got shape {a.shape}")
+            object.__setattr__(self, "viscosity_field_pa_s", tuple(map(tuple, a.tolist())))
+
+    def check(self, where: str, n_stations: int) -> None:
+        check_placed_film(self, where, n_stations)
+        check_tilt_fields(self, where)
+
+    def journal_bearing(self) -> JournalBearing:
+        """The standalone film model (forces, coefficients) of this bearing."""
+        return film_model(self)
+
+
+__all__ = ["FluidFilmBearing", "check_placed_film", "film_model"]

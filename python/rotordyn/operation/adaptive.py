@@ -1,0 +1,113 @@
+"""The adaptive 1× unbalance-rejection law as it runs in the transient's CVODE loop
+(:class:`AdaptiveRejection`): its influence-coefficient table over speed, gain and the C++
+description. The law, its sources and its design: :mod:`rotordyn.control.adaptive`."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn.errors import InputError
+from rotordyn.operation.measurement import parse_measurements
+
+MAX_GAIN_1_PER_S = 1e4
+
+
+def _gain(value) -> float:
+    """The adaptation gain γ: finite, in [0, 1e4] 1/s."""
+    try:
+        return v.in_range("adaptive.gain_1_per_s", value, 0.0, MAX_GAIN_1_PER_S)
+    except InputError as exc:
+        raise InputError(f"{exc} (the adaptation rate γ of the 1× coefficients, 1/s; "
+                         f"0: frozen)") from None
+
+
+@dataclass(frozen=True)
+class AdaptiveRejection:
+    """The adaptive 1× command (module docstring). ``speeds_hz`` (n_g,) strictly increasing;
+    ``influence`` (n_g, n_y) complex T(Ω) (m/Pa or m/s/Pa per measurement); ``gain_1_per_s``
+    γ; ``p0_pa`` the complex coefficient at t = 0; ``order`` the harmonic (1: 1×)."""
+
+    measurements: tuple
+    speeds_hz: np.ndarray
+    influence: np.ndarray
+    gain_1_per_s: float
+    p0_pa: complex = 0j
+    order: float = 1.0
+
+    def __post_init__(self):
+        object.__setattr__(self, "measurements", parse_measurements(self.measurements))
+        sp = v.vector("adaptive.speeds_hz", self.speeds_hz)
+        if sp.size < 1 or np.any(np.diff(sp) <= 0) or np.any(sp < 0):
+            raise InputError(f"adaptive.speeds_hz: expected strictly increasing speeds >= 0 "
+                             f"Hz, got {sp!r}")
+        T = np.asarray(self.influence, dtype=complex)
+        if T.ndim == 1:
+            T = T[:, None] if sp.size > 1 or T.size == 1 else T[None, :]
+        if T.shape[0] != sp.size or T.ndim != 2:
+            raise InputError(f"adaptive.influence: expected shape ({sp.size}, n_y), got "
+                             f"{np.shape(self.influence)}")
+        if not np.all(np.isfinite(T)) or np.any(np.sum(np.abs(T) ** 2, axis=1) == 0):
+            raise InputError("adaptive.influence: expected finite coefficients, not all 0 at "
+                             "any speed")
+        object.__setattr__(self, "speeds_hz", sp)
+        object.__setattr__(self, "influence", T)
+        object.__setattr__(self, "gain_1_per_s", _gain(self.gain_1_per_s))
+        p0 = complex(self.p0_pa)
+        if not (math.isfinite(p0.real) and math.isfinite(p0.imag)):
+            raise InputError(f"adaptive.p0_pa: expected a finite complex Pa, got {p0!r}")
+        object.__setattr__(self, "p0_pa", p0)
+        object.__setattr__(self, "order", v.in_range("adaptive.order", self.order, 0.0, 100.0,
+                                                     lo_open=True))
+
+    @property
+    def update(self) -> np.ndarray:
+        """T⁺ = Tᴴ/(Tᴴ T) per speed, (n_g, n_y) complex."""
+        T = self.influence
+        return T.conj() / np.sum(np.abs(T) ** 2, axis=1, keepdims=True)
+
+    def optimum(self, response_m) -> complex:
+        """P* = −T⁺ Y_u at one grid speed: ``response_m`` (n_y,) complex 1× response without
+        the command (single grid speed only)."""
+        if self.speeds_hz.size != 1:
+            raise InputError("adaptive: optimum() needs a single-speed law")
+        Y = np.asarray(response_m, dtype=complex).ravel()
+        return complex(-(self.update[0] @ Y))
+
+    def check_covers(self, lo_hz: float, hi_hz: float) -> None:
+        x = self.speeds_hz
+        tol = 1e-9 * max(abs(x[-1]), 1.0)
+        if x.size > 1 and (lo_hz < x[0] - tol or hi_hz > x[-1] + tol):
+            raise InputError(f"adaptive.speeds_hz: the grid {x[0]:g}–{x[-1]:g} Hz does not "
+                             f"cover the run's speeds {lo_hz:g}–{hi_hz:g} Hz")
+        if x.size == 1 and (abs(lo_hz - x[0]) > tol or abs(hi_hz - x[0]) > tol):
+            raise InputError(f"adaptive.speeds_hz: a single-speed law ({x[0]:g} Hz) runs at "
+                             f"that speed only, got {lo_hz:g}–{hi_hz:g} Hz")
+
+    def with_gain(self, gain_1_per_s: float) -> "AdaptiveRejection":
+        return AdaptiveRejection(self.measurements, self.speeds_hz, self.influence,
+                                 gain_1_per_s, self.p0_pa, self.order)
+
+    def to_core(self, Cm: np.ndarray, offset: np.ndarray):
+        ny = Cm.shape[0]
+        if ny != self.influence.shape[1]:
+            raise InputError(f"adaptive.influence: expected {ny} columns (the measurements "
+                             f"{list(self.measurements)}), got {self.influence.shape[1]}")
+        h = _core.AdaptiveHarmonic()
+        h.enabled = True
+        h.order = float(self.order)
+        h.gain = float(self.gain_1_per_s)
+        h.measurement = Cm
+        h.offset = np.asarray(offset, dtype=float)
+        h.table_omega = 2 * np.pi * self.speeds_hz
+        G = self.update
+        h.table_re, h.table_im = np.ascontiguousarray(G.real), np.ascontiguousarray(G.imag)
+        h.p0_re, h.p0_im = self.p0_pa.real, self.p0_pa.imag
+        return h
+
+
+__all__ = ["AdaptiveRejection", "MAX_GAIN_1_PER_S"]
