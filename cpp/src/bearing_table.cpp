@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "rotordyn/errors.hpp"
+#include "parallel_detail.hpp"
 
 namespace rotordyn {
 
@@ -190,27 +191,7 @@ OperatingPointTable operating_points(const SystemModel& model, const Eigen::Vect
       }
     }
   };
-  if (n_threads == 1) {
-    work(0, ns);
-    return out;
-  }
-  std::vector<std::thread> pool;
-  std::vector<std::exception_ptr> errs(static_cast<std::size_t>(n_threads));
-  const Eigen::Index chunk = (ns + n_threads - 1) / n_threads;
-  for (int t = 0; t < n_threads; ++t) {
-    const Eigen::Index b = t * chunk, e = std::min(ns, b + chunk);
-    if (b >= e) break;
-    pool.emplace_back([&, b, e, t] {
-      try {
-        work(b, e);
-      } catch (...) {
-        errs[static_cast<std::size_t>(t)] = std::current_exception();
-      }
-    });
-  }
-  for (auto& th : pool) th.join();
-  for (auto& ep : errs)
-    if (ep) std::rethrow_exception(ep);
+  detail::run_blocks(ns, n_threads, work);
   return out;
 }
 

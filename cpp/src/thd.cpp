@@ -51,16 +51,7 @@ void symmetrize(double* t, int N, int K1) {
 }  // namespace
 
 void ThdOptions::validate(const OilModel& oil) const {
-  if (!(std::isfinite(supply_temperature_c) && supply_temperature_c >= oil.t_min_c &&
-        supply_temperature_c < oil.t_max_c))
-    throw InputError("supply_temperature_c: expected a temperature in the viscosity law's "
-                     "range [t_min_c, t_max_c) = [" + num(oil.t_min_c) + ", " +
-                     num(oil.t_max_c) + ") degC, got " + num(supply_temperature_c));
-  if (!(std::isfinite(supply_flow_m3_s) && supply_flow_m3_s >= 0.0))
-    throw InputError("supply_flow_m3_s: expected >= 0 (0: the film's own demand), got " +
-                     num(supply_flow_m3_s));
-  if (!(carry_over >= 0.0 && carry_over <= 1.0))
-    throw InputError("carry_over: expected 0 <= carry_over <= 1, got " + num(carry_over));
+  validate_supply(oil, supply_temperature_c, supply_flow_m3_s, carry_over);
   nonneg(journal_htc_w_m2k, "journal_htc_w_m2k");
   nonneg(bush_htc_w_m2k, "bush_htc_w_m2k");
   for (auto [v, f] : {std::pair{journal_temperature_c, "journal_temperature_c"},

@@ -85,7 +85,8 @@ double OilModel::viscosity_pa_s(double t_c) const {
   return density_kg_m3 * nu * 1e-6;
 }
 
-void ThermalOptions::validate(const OilModel& oil) const {
+void validate_supply(const OilModel& oil, double supply_temperature_c, double supply_flow_m3_s,
+                     double carry_over) {
   if (!(std::isfinite(supply_temperature_c) && supply_temperature_c >= oil.t_min_c &&
         supply_temperature_c < oil.t_max_c))
     throw InputError("supply_temperature_c: expected a temperature in the viscosity law's "
@@ -96,6 +97,10 @@ void ThermalOptions::validate(const OilModel& oil) const {
                      num(supply_flow_m3_s));
   if (!(carry_over >= 0.0 && carry_over <= 1.0))
     throw InputError("carry_over: expected 0 <= carry_over <= 1, got " + num(carry_over));
+}
+
+void ThermalOptions::validate(const OilModel& oil) const {
+  validate_supply(oil, supply_temperature_c, supply_flow_m3_s, carry_over);
   if (!(effective_factor >= 0.5 && effective_factor <= 1.0))
     throw InputError("effective_factor: expected 0.5 <= effective_factor <= 1, got " +
                      num(effective_factor));

@@ -10,6 +10,12 @@
 
 namespace rotordyn {
 
+/// The supply's checks shared by the effective-temperature and THD options: the supply
+/// temperature inside the viscosity law's range, a fresh flow >= 0, 0 <= carry_over <= 1.
+/// InputError naming the field.
+void validate_supply(const OilModel& oil, double supply_temperature_c, double supply_flow_m3_s,
+                     double carry_over);
+
 /// The film's effective temperature at a fixed journal position (P ∝ μ, flows independent of
 /// μ): the root of T − Ts − m a μ(T), a = P/(μ ρ c (Q − Q_s/2)), m = λ Q_r/Q_f + k, with the
 /// temperature rise, inlet and maximum temperatures and the fresh supply flow. ``mu`` (Pa·s)

@@ -12,6 +12,7 @@
 #include "rotordyn/errors.hpp"
 #include "rotordyn/harmonic.hpp"
 #include "rotordyn/modal.hpp"
+#include "parallel_detail.hpp"
 
 namespace rotordyn {
 
@@ -119,27 +120,9 @@ UnbalanceSweepResult unbalance_sweep(const SystemModel& model, const UnbalanceSw
   int k = in.n_threads <= 0 ? static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))
                             : in.n_threads;
   k = static_cast<int>(std::min<Eigen::Index>(k, std::max<Eigen::Index>(ns, 1)));
-  if (k == 1) {
-    sweep_block(model, in, 0, ns, out);
-    return out;
-  }
-  std::vector<std::thread> pool;
-  std::vector<std::exception_ptr> errs(static_cast<std::size_t>(k));
-  const Eigen::Index chunk = (ns + k - 1) / k;
-  for (int t = 0; t < k; ++t) {
-    const Eigen::Index b = t * chunk, e = std::min(ns, b + chunk);
-    if (b >= e) break;
-    pool.emplace_back([&, b, e, t] {
-      try {
-        sweep_block(model, in, b, e, out);
-      } catch (...) {
-        errs[static_cast<std::size_t>(t)] = std::current_exception();
-      }
-    });
-  }
-  for (auto& th : pool) th.join();
-  for (auto& ep : errs)
-    if (ep) std::rethrow_exception(ep);
+  detail::run_blocks(ns, k, [&](Eigen::Index b, Eigen::Index e) {
+    sweep_block(model, in, b, e, out);
+  });
   return out;
 }
 
