@@ -92,6 +92,47 @@ def main() -> int:
     assert r.status == "ok"
     rd.system_thermal_equilibrium(rd.System.from_toml(models / "compressor_plain_thermal.toml"),
                                   speed_hz=150.0)
+    # issues 19, 20, 22, 24 (second wave): the THD film, journal tilt (standalone and in a
+    # system), the one-call unbalance sweep with bearing elements and sweep chunks
+    # (equilibrium batch, threshold line), Hopf, the adaptive law in the transient
+    import dataclasses
+
+    from rotordyn.bearings import tilted_coefficients, tilted_forces
+    from rotordyn.sweep.work import Job, run_chunk
+
+    r = th.thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=vg32,
+                               supply_temperature_c=45.0, carry_over=0.3, model="thd")
+    assert r.status == "ok", r.message
+    tilted_forces(th, x_m=1e-5, y_m=-2e-5, speed_hz=100.0, theta_x_rad=1e-4, theta_y_rad=-5e-5,
+                  vx_m_s=1e-4, wy_rad_s=1e-2)
+    tilted_coefficients(th, x_m=1e-5, y_m=-2e-5, speed_hz=100.0, theta_x_rad=1e-4)
+    plain = rd.System.from_toml(models / "compressor_plain.toml")
+    tilted = dataclasses.replace(plain, bearings=tuple(
+        dataclasses.replace(b, tilt=True, n_circ=36, n_axial=8, config_theta_x_rad=1e-4)
+        for b in plain.bearings))
+    assert rd.equilibrium(tilted, 150.0).status == "ok"
+    rd.stability(tilted, 150.0)
+    rd.unbalance_response(plain, ub, [60.0, 90.0, 120.0], threads=2)
+    run_chunk(Job("s", rig.to_toml(), "equilibrium", {},
+                  {"config_ay_m": [-1.85e-3], "chamber_pressure_pa": [0.0, 0.1e6],
+                   "speed_hz": [50.0]}), 0, 0, 2)
+    run_chunk(Job("s", rig.to_toml(), "threshold", {"vary": "chamber_pressure_pa"},
+                  {"config_ay_m": [-1.85e-3], "speed_hz": [50.0],
+                   "chamber_pressure_pa": [0.0, 0.1e6, 0.2e6]}), 0, 0, 3)
+    from rotordyn.control import Actuator
+    from rotordyn.control.adaptive import AdaptiveRejection
+    from rotordyn.control.antiwindup import with_anti_windup
+    from rotordyn.control.gain_schedule import gain_schedule
+    from rotordyn.control.pid import pid
+
+    law = gain_schedule([pid(1.2e9, 2.0e6), pid(0.6e9, 3.5e6)], np.array([45.0, 55.0]))
+    rd.transient(rig, 0.01, 50.0, 0.05e6, -1.85e-3, controller=law, n_out=11)
+    aw = with_anti_windup(pid(1.0e9, 2.5e6, 1.0e9 / 0.05))
+    rd.transient(rig, 0.01, 50.0, 0.15e6, -1.85e-3, controller=aw, n_out=11,
+                 actuator=Actuator(order=1, p_min_pa=0.149e6, p_max_pa=0.151e6))
+    ad = AdaptiveRejection([("journal", 0)], [50.0], [[1e-9 + 1e-9j, 1e-9]], 1.0, p0_pa=2e4)
+    rd.transient(rig, 0.01, 50.0, 0.5e6, -1.85e-3, adaptive=ad, unbalances=[(6, 2e-5, 0.0)],
+                 n_out=11)
     print("sanitize_smoke: ok")
     return 0
 
