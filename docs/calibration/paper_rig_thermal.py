@@ -8,9 +8,9 @@ printed below). So the estimate takes a proxy film: a rigid-bush plain journal b
 active bearing's geometry (D = 50 mm, L = 40 mm, c = 0.3 mm, supply line at 90°, Reynolds
 cavitation, 72 × 16) under the film force the active bearing carries at the isothermal
 threshold's equilibrium, at 50 Hz, and runs its effective-temperature (λ = 0, k = 0.5; and
-λ = 0.8, k = 1 as a hot bound) and adiabatic THD equilibria. The rig is then rerun isothermally with the active bearing's
-viscosity at μ(T_eff) and at μ(T_mean) of the THD film (one viscosity: the active bearing
-stays isoviscous, its sleeve and chambers untouched).
+λ = 0.8, k = 1 as a hot bound) and adiabatic THD equilibria. The rig is then rerun
+isothermally with the active bearing's viscosity at μ(T_eff) and at μ(T_mean) of the THD film
+(one viscosity: the active bearing stays isoviscous, its sleeve and chambers untouched).
 
 Oil (an assumption: the paper gives only η = 0.04 Pa·s): ISO VG 46 (Walther through 46 mm²/s
 at 40 °C and 6.8 mm²/s at 100 °C, ρ = 870 kg/m³, c_p = 2000 J/(kg K)) supplied at 40 °C, where
