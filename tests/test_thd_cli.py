@@ -50,6 +50,8 @@ def test_wall_temperatures_round_trip_and_equal_the_arguments(tmp_path):
     # the wall temperatures reach the film: the supply-temperature walls give another answer
     c = system_thermal_equilibrium(base, speed_hz=SPEED)
     assert np.all(np.abs(a.effective_temperature_c - c.effective_temperature_c) > 0.1)
+    # the dynamics at the frozen fields of the model file's walls run
+    assert rotordyn.stability(a.system, speed_hz=SPEED).status == "ok"
     # a model without the keys writes none of them (None: the supply temperature)
     assert "bush_temperature_c" not in _thd_model().to_toml()
 
