@@ -29,7 +29,9 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
                                chamber_pressure_pa: float = 0.0,
                                tol_k: float = 1e-6, model: str | None = None,
                                journal_htc_w_m2k: float | None = None,
-                               bush_htc_w_m2k: float | None = None) -> SystemThermalResult:
+                               bush_htc_w_m2k: float | None = None,
+                               journal_temperature_c: float | None = None,
+                               bush_temperature_c: float | None = None) -> SystemThermalResult:
     """Thermal equilibrium of ``system`` at ``speed_hz``: each plain journal bearing
     (``type = "journal"``, :class:`rotordyn.FluidFilmBearing`) in ``bearings`` (indices into
     ``system.bearings``; None: all of them) runs at μ(T_eff) of ``oil`` with its own heat
@@ -47,8 +49,9 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     ``model``: ``"effective"`` (the effective-temperature heat balance above) or ``"thd"``
     (the thermo-hydrodynamic film of every thermal bearing: the energy equation over its grid,
     μ(T) per node, :mod:`rotordyn.bearings.thd`; ``effective_factor`` unused; heat-transfer
-    coefficients ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` W/(m² K), 0 adiabatic, walls at the
-    supply temperature); None: the model's ``[thermal] model`` (default "effective"). With
+    coefficients ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` W/(m² K), 0 adiabatic, walls at
+    ``journal_temperature_c``, ``bush_temperature_c`` °C, None: the model's, else the supply
+    temperature); None: the model's ``[thermal] model`` (default "effective"). With
     "thd" the result's ``system`` carries each bearing's frozen viscosity field
     (``viscosity_field_pa_s``) and ``temperature_c`` the fields."""
     v.speed("speed_hz", speed_hz)
@@ -104,11 +107,16 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
             return given
         return getattr(thermal_model, field) if thermal_model is not None else 0.0
     hj, hb = wall(journal_htc_w_m2k, "journal_htc_w_m2k"), wall(bush_htc_w_m2k, "bush_htc_w_m2k")
+    tj = journal_temperature_c if journal_temperature_c is not None else \
+        getattr(thermal_model, "journal_temperature_c", None)
+    tb = bush_temperature_c if bush_temperature_c is not None else \
+        getattr(thermal_model, "bush_temperature_c", None)
     opts = {i: options(i) for i in idx}
     thd_opts = {i: thd_options(supply_temperature_c=supply_temperature_c,
                                supply_flow_m3_s=opts[i].supply_flow_m3_s,
                                carry_over=opts[i].carry_over, journal_htc_w_m2k=hj,
-                               bush_htc_w_m2k=hb, tol_k=tol_k) for i in idx} if thd else {}
+                               bush_htc_w_m2k=hb, journal_temperature_c=tj,
+                               bush_temperature_c=tb, tol_k=tol_k) for i in idx} if thd else {}
     asm = assembled(system)
     if asm.pad_penalty is not None:
         raise InputError("bearings: the system thermal model is not available with tilting-pad "

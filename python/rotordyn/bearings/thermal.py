@@ -219,7 +219,8 @@ class ThermalModel:
     thermal`` when they are given no oil of their own. ``model``: "effective" (the
     effective-temperature heat balance) or "thd" (the thermo-hydrodynamic film, with the
     heat-transfer coefficients ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` W/(m² K), 0:
-    adiabatic).
+    adiabatic, to walls at ``journal_temperature_c``, ``bush_temperature_c`` °C, None: the
+    supply temperature).
     """
 
     supply_temperature_c: float
@@ -231,9 +232,14 @@ class ThermalModel:
     model: str = "effective"
     journal_htc_w_m2k: float = 0.0
     bush_htc_w_m2k: float = 0.0
+    journal_temperature_c: float | None = None
+    bush_temperature_c: float | None = None
 
     def __post_init__(self) -> None:
         v.choice("thermal.model", self.model, ("effective", "thd"))
+        for f in ("journal_temperature_c", "bush_temperature_c"):
+            if getattr(self, f) is not None:
+                object.__setattr__(self, f, v.finite(f, getattr(self, f)))
         for f in ("journal_htc_w_m2k", "bush_htc_w_m2k"):
             val = v.finite(f, getattr(self, f))
             if val < 0.0:

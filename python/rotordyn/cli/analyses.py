@@ -14,6 +14,7 @@ from rotordyn.cli import sleeve
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
                                  add_thermal_arguments, check_figure, json_text, oil_from_args,
                                  save_figure, table_text)
+from rotordyn.cli.common import add_thd_arguments
 from rotordyn.cli.common import speeds as parse_speeds
 from rotordyn.errors import InputError
 from rotordyn.model import builtin as models
@@ -66,11 +67,12 @@ def _register(sub) -> None:
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_equilibrium)
 
-    s = sub.add_parser("thermal", help="effective-temperature equilibrium of the plain "
-                       "journal bearings (docs/film-physics.md)")
+    s = sub.add_parser("thermal", help="thermal equilibrium of the plain journal bearings: "
+                       "effective-temperature or THD film (docs/film-physics.md)")
     s.add_argument("model", help=MODEL_HELP)
     add_operating_point(s)
     add_thermal_arguments(s)
+    add_thd_arguments(s)
     s.add_argument("--density-kg-m3", type=float, default=None, metavar="RHO",
                    help="oil density, kg/m3 (default 870)")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -235,12 +237,24 @@ def _cmd_thermal(args) -> int:
     r = analysis.system_thermal_equilibrium(
         s, speed_hz=args.speed_hz, oil=oil, supply_temperature_c=args.supply_temperature_c,
         carry_over=args.carry_over, effective_factor=args.effective_factor,
-        supply_flow_m3_s=args.supply_flow_m3_s, chamber_pressure_pa=args.chamber_pressure_pa)
+        supply_flow_m3_s=args.supply_flow_m3_s, chamber_pressure_pa=args.chamber_pressure_pa,
+        model=args.thermal_model, journal_htc_w_m2k=args.journal_htc_w_m2k,
+        bush_htc_w_m2k=args.bush_htc_w_m2k, journal_temperature_c=args.journal_temperature_c,
+        bush_temperature_c=args.bush_temperature_c)
     df = r.to_frame()
     if args.json:
         print(json_text({"status": r.status, "message": r.message, "iterations": r.iterations,
+                         "thermal_model": r.thermal_model,
                          "bearings": df.to_dict(orient="records")}))
     else:
+        mean = "T_mean" if r.thermal_model == "thd" else "T_eff"
+        print(f"thermal model {r.thermal_model}: {r.status} after {r.iterations} iterations")
+        for k, name in enumerate(r.bearing_names):
+            print(f"{name}: T_max = {r.max_temperature_c[k]:.2f} degC, {mean} = "
+                  f"{r.effective_temperature_c[k]:.2f} degC, power loss "
+                  f"{r.power_loss_w[k]:.5g} W, film flow {r.film_flow_m3_s[k]:.5g} m3/s, "
+                  f"side flow {r.side_flow_m3_s[k]:.5g} m3/s, supply flow "
+                  f"{r.supply_flow_m3_s[k]:.5g} m3/s")
         print(table_text(df))
     return 0 if r.status in CONVERGED else 1
 

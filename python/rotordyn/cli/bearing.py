@@ -24,6 +24,7 @@ from rotordyn.bearings._film import TURBULENCE_MODELS
 from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.bearings.thermal import Oil
 from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args, table_text
+from rotordyn.cli.common import add_thd_arguments
 from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
 from rotordyn.results.equilibrium import CONVERGED
@@ -59,6 +60,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     s.add_argument("--density-kg-m3", type=float, default=None, metavar="RHO",
                    help="oil density, kg/m3 (turbulence; the thermal oil's density)")
     add_thermal_arguments(s)
+    add_thd_arguments(s)
     s.add_argument("--n-circ", type=int, default=72, metavar="N",
                    help="film grid cells around the circumference")
     s.add_argument("--n-axial", type=int, default=16, metavar="N",
@@ -103,6 +105,9 @@ def run(args: argparse.Namespace) -> int:
         plausibility.length("--diameter-m", args.diameter_m)
         plausibility.clearance("--clearance-m", args.clearance_m, args.diameter_m)
     oil = oil_from_args(args)
+    if oil is None and args.thermal_model is not None:
+        raise InputError("--model: the thermal model needs --supply-temperature-c, --load-n "
+                         "and an --oil-* law")
     if args.viscosity_pa_s is None:
         if oil is None:
             raise InputError("--viscosity-pa-s: required (or the thermal model: "
@@ -172,6 +177,12 @@ def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
     if args.load_n is None or args.x_m is not None or args.y_m is not None:
         raise InputError("--load-n: the thermal model solves the equilibrium under a load "
                          "(give --load-n, not --x-m/--y-m)")
+    if args.thermal_model == "thd":
+        return _thd(b, oil, rec, args)
+    for opt in ("journal_htc_w_m2k", "bush_htc_w_m2k", "journal_temperature_c",
+                "bush_temperature_c"):
+        if getattr(args, opt) is not None:
+            raise InputError(f"--{opt.replace('_', '-')}: an option of --model thd only")
     r = b.thermal_equilibrium(load_n=tuple(args.load_n), speed_hz=args.speed_hz, oil=oil,
                               supply_temperature_c=args.supply_temperature_c,
                               supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),
@@ -199,6 +210,39 @@ def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
     print("K [N/m] =", np.array2string(r.K, precision=5))
     print("C [N s/m] =", np.array2string(r.C, precision=5))
     return 0
+
+
+def _thd(b: JournalBearing, oil: Oil, rec: dict, args: argparse.Namespace) -> int:
+    """THD equilibrium: T_max, T_mean, power loss, flows, K, C (temperature field frozen)."""
+    thd = {k: getattr(args, k) for k in ("journal_htc_w_m2k", "bush_htc_w_m2k",
+                                         "journal_temperature_c", "bush_temperature_c")
+           if getattr(args, k) is not None}
+    if args.effective_factor is not None:
+        raise InputError("--effective-factor: an option of the effective-temperature model "
+                         "(not --model thd)")
+    r = b.thermal_equilibrium(load_n=tuple(args.load_n), speed_hz=args.speed_hz, oil=oil,
+                              supply_temperature_c=args.supply_temperature_c,
+                              supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),
+                              carry_over=_or(args.carry_over, 0.0), model="thd", **thd)
+    row = r.to_frame().iloc[0].to_dict()
+    rec["thermal"] = {k: (float(v) if isinstance(v, (int, float, np.floating)) else v)
+                      for k, v in row.items()}
+    rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, k_n_per_m=r.K.tolist(),
+               c_n_s_per_m=r.C.tolist(), coefficient_method="perturbation")
+    if args.json:
+        print(json_text(rec))
+        return 0 if r.status in CONVERGED else 1
+    print(f"THD equilibrium ({r.status}): T_max = {r.max_temperature_c:.2f} degC, T_mean = "
+          f"{r.mean_temperature_c:.2f} degC, T_in = {r.inlet_temperature_c:.2f} degC "
+          f"(supply {args.supply_temperature_c:g} degC)")
+    print(f"power loss {r.power_loss_w:.5g} W; film flow {r.film_flow_m3_s:.5g} m3/s, side flow "
+          f"{r.side_flow_m3_s:.5g} m3/s, recirculation {r.recirculation_flow_m3_s:.5g} m3/s, "
+          f"fresh supply {r.supply_flow_m3_s:.5g} m3/s; heat to journal "
+          f"{r.heat_to_journal_w:.4g} W, to bush {r.heat_to_bush_w:.4g} W")
+    print(f"equilibrium: x = {r.x_m:.6g} m, y = {r.y_m:.6g} m, eps = {r.eccentricity_ratio:.4g}")
+    print("K [N/m] =", np.array2string(r.K, precision=5))
+    print("C [N s/m] =", np.array2string(r.C, precision=5))
+    return 0 if r.status in CONVERGED else 1
 
 
 def _table(b: JournalBearing, args: argparse.Namespace) -> int:

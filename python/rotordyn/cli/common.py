@@ -229,6 +229,23 @@ def add_thermal_arguments(s) -> None:
                         "temperature; default: the model's [thermal], else 0.5)")
 
 
+def add_thd_arguments(s) -> None:
+    """The thermal model selector and the THD film's wall options (docs/film-physics.md);
+    each left out: the model's ``[thermal]`` value (standalone bearing: the default)."""
+    s.add_argument("--model", dest="thermal_model", choices=["effective", "thd"], default=None,
+                   help="thermal film model: effective (global heat balance) or thd (energy "
+                        "equation over the grid; default: the model's [thermal] model, else "
+                        "effective)")
+    s.add_argument("--journal-htc-w-m2k", type=float, default=None, metavar="H",
+                   help="thd: heat-transfer coefficient to the journal, W/(m2 K) (0 adiabatic)")
+    s.add_argument("--bush-htc-w-m2k", type=float, default=None, metavar="H",
+                   help="thd: heat-transfer coefficient to the bush, W/(m2 K) (0 adiabatic)")
+    s.add_argument("--journal-temperature-c", type=float, default=None, metavar="T",
+                   help="thd: journal wall temperature, degC (default: the supply temperature)")
+    s.add_argument("--bush-temperature-c", type=float, default=None, metavar="T",
+                   help="thd: bush wall temperature, degC (default: the supply temperature)")
+
+
 def oil_from_args(args) -> "Oil | None":
     """The thermal model's oil from the options of :func:`add_thermal_arguments`, or None
     (isothermal) when no supply temperature is given."""
