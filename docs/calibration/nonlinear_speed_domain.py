@@ -52,7 +52,7 @@ def branch(rig, lo, hi, start_hz, ds, max_points):
                           tol=1e-5)
     print(f"(b) start: {o!r}")
     br = rd.continuation(rig, "speed_hz", (lo, hi), o, unbalances=UB, rtol=1e-7, tol=1e-5,
-                         ds=ds, ds_max=max(ds, 0.05), max_points=max_points,
+                         ds=ds, ds_max=max(ds, 0.3), max_points=max_points,
                          param_scale=hi - lo)
     print(f"    branch: {br!r} [{time.process_time() - t:.1f} s CPU]")
     return br
@@ -76,7 +76,7 @@ def runup(rig, lo, hi, rate):
     prof = SpeedProfile.ramp(lo, hi, rate)
     t_end = (hi - lo) / rate
     tr = rd.transient(rig, t_end, chamber_pressure_pa=PC, config_ay_m=0.0, unbalances=UB,
-                      speed=prof, n_out=int(t_end * 64 * hi) + 1)
+                      speed=prof, n_out=int(t_end * 32 * hi) + 1)
     print(f"(c) run-up {lo:g}->{hi:g} Hz at {rate:g} Hz/s: {tr.status}, "
           f"{time.process_time() - t:.1f} s CPU")
     return tr, prof
@@ -99,7 +99,7 @@ def runup_envelope(tr, prof, speeds):
 def settled(rig, speed, revs):
     t = time.process_time()
     tr = rd.transient(rig, revs / speed, speed, PC, 0.0, unbalances=UB,
-                      n_out=int(revs * 200) + 1)
+                      n_out=int(revs * 100) + 1, rtol=1e-8, atol_m=1e-12)
     o = rd.periodic_orbit(rig, speed, PC, 0.0, kind="forced", unbalances=UB, rtol=1e-8,
                           tol=1e-6)
     a_tr = tr.amplitude(last_fraction=1.0 / revs)
@@ -116,8 +116,8 @@ def main():
     ap.add_argument("--lo", type=float, default=20.0)
     ap.add_argument("--hi", type=float, default=110.0)
     ap.add_argument("--ds", type=float, default=0.03)
-    ap.add_argument("--max-points", type=int, default=40)
-    ap.add_argument("--rate", type=float, default=10.0, help="run-up rate, Hz/s")
+    ap.add_argument("--max-points", type=int, default=150)
+    ap.add_argument("--rate", type=float, default=1.0, help="run-up rate, Hz/s")
     ap.add_argument("--no-runup", action="store_true")
     ap.add_argument("--no-hopf", action="store_true")
     a = ap.parse_args()
@@ -149,7 +149,7 @@ def main():
     print("folds (dp/ds sign changes):", int(np.sum(br.tangent_p[1:] * br.tangent_p[:-1] < 0)))
     k = int(np.argmax(amp))
     print(f"branch peak: {amp[k] * 1e6:.4f} um at {sp[k]:.3f} Hz")
-    settled(rig, float(sp[k]), 60)
+    settled(rig, float(sp[k]), 600)
 
 
 if __name__ == "__main__":
