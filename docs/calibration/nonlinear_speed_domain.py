@@ -142,7 +142,7 @@ def main():
     br = branch(rig, a.lo, a.hi, a.lo, a.ds, a.max_points)
     sp = br.parameter
     lin = linear(rig, sp)
-    amp = br.amplitude_m[:, 0]
+    amp = np.array([_amp(o.journal_x_m[:-1, 0], o.journal_y_m[:-1, 0]) for o in br.orbits])
     env = None
     if not a.no_runup:
         tr, prof = runup(rig, a.lo, a.hi, a.rate)
