@@ -70,10 +70,13 @@ class PeriodicOrbitResult(Display):
             else None
 
     def amplitude(self, bearing: int = 0) -> float:
-        """Largest distance of the journal from the orbit's mean position, m."""
+        """Largest distance of the journal from the orbit's mean position, m. The samples
+        close the period (the last repeats the first), so the mean is taken over one period
+        without the repeated endpoint."""
         x = self.journal_x_m[:, bearing]
         y = self.journal_y_m[:, bearing]
-        return float(np.max(np.hypot(x - x.mean(), y - y.mean())))
+        xm, ym = (x[:-1].mean(), y[:-1].mean()) if len(x) > 2 else (x.mean(), y.mean())
+        return float(np.max(np.hypot(x - xm, y - ym)))
 
     def __repr__(self) -> str:
         head = (f"<PeriodicOrbitResult {self.status}: {self.kind}, {self.speed_hz:g} Hz, p_c = "
