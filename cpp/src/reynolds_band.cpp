@@ -128,6 +128,16 @@ bool BandLDLT::factorize(const double* values, int cut) {
     if (c + d >= n_) return false;
     a_[static_cast<std::size_t>(c) * w + d] = v;
   }
+  return factorize_assembled();
+}
+
+void BandLDLT::begin(int cut) {
+  shift_ = ring_first_[cut];
+  std::fill(a_.begin(), a_.end(), 0.0);
+}
+
+bool BandLDLT::factorize_assembled() {
+  if (!usable_) return false;
   switch (b_) {
 #define ROTORDYN_BAND_FACTOR(B) \
   case B:                      \
@@ -143,11 +153,9 @@ void BandLDLT::solve(const double* bvec, double* x) const {
   double* y = ys_.data();
   // the padding receives 0·y updates: cleared, so a non-finite right-hand side cannot linger
   std::fill(ys_.begin() + n_, ys_.end(), 0.0);
-  for (int i = 0; i < n_; ++i) {
-    int c = i - shift_;
-    if (c < 0) c += n_;
-    y[c] = bvec[i];
-  }
+  // y[c] = b[i] for c = i − shift (mod n): two contiguous pieces
+  std::copy(bvec + shift_, bvec + n_, y);
+  std::copy(bvec, bvec + shift_, y + (n_ - shift_));
   switch (b_) {
 #define ROTORDYN_BAND_SOLVE(B) \
   case B:                     \
@@ -158,11 +166,8 @@ void BandLDLT::solve(const double* bvec, double* x) const {
     default:
       solve_band<0>(a_.data(), n_, b_, coupled_.data(), y);
   }
-  for (int i = 0; i < n_; ++i) {
-    int c = i - shift_;
-    if (c < 0) c += n_;
-    x[i] = y[c];
-  }
+  std::copy(y, y + (n_ - shift_), x + shift_);
+  std::copy(y + (n_ - shift_), y + n_, x);
 }
 
 }  // namespace rotordyn

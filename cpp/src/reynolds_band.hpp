@@ -10,6 +10,7 @@
 #pragma once
 #include <Eigen/SparseCore>
 
+#include <utility>
 #include <vector>
 
 namespace rotordyn {
@@ -31,6 +32,22 @@ class BandLDLT {
   bool factorize(const double* values, int cut);
   /// x = A⁻¹ b (x may alias b).
   void solve(const double* b, double* x) const;
+  /// Direct assembly, the same factor as factorize() without a sparse value array: begin()
+  /// clears the band for the circle opened before ring `cut`; set(i, j, v) stores
+  /// A(i, j) = A(j, i) = v (i == j: the diagonal), false when the pair lies outside the band
+  /// or across the opening; factorize_assembled() then factorises (false as factorize()).
+  void begin(int cut);
+  bool set(int i, int j, double v) {
+    if (v == 0.0) return true;
+    int ci = i - shift_, cj = j - shift_;
+    if (ci < 0) ci += n_;
+    if (cj < 0) cj += n_;
+    if (ci > cj) std::swap(ci, cj);
+    if (cj - ci > b_) return false;
+    a_[static_cast<std::size_t>(ci) * (b_ + 1) + (cj - ci)] = v;
+    return true;
+  }
+  bool factorize_assembled();
 
  private:
   bool usable_ = false;

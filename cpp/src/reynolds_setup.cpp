@@ -316,7 +316,7 @@ void ReynoldsSolver::Impl::mirror_fields() {
   const int kend = mirror_end();
   for (int j = 0; j < N; ++j)
     for (int k = Kh + 1; k < kend; ++k) {
-      const int n = j * K1 + k, m = mirror(n);
+      const int n = j * K1 + k, m = j * K1 + K1 - 1 - k;  // mirror(n)
       p[n] = p[m];
       pfull[n] = pfull[m];
       theta[n] = theta[m];
@@ -474,15 +474,46 @@ void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* 
         all = mask && (*mask)[i];
       if (all) cut = j;
     }
-    if (cut >= 0 && S.band.factorize(S.A.valuePtr(), cut)) {
+    if (cut >= 0 && fill_band(S, mask ? mask->data() : nullptr, cut) &&
+        S.band.factorize_assembled()) {
       S.factor = LinearSystem::Factor::band;
       return;
     }
   }
+  fill_spd(S, mask);
   // Decoupled (cavitated) unknowns have zero couplings: StaticLDLT skips their work.
   if (!S.ldlt.factorize(S.A.valuePtr()))
     throw ConvergenceError("Reynolds operator: sparse LDLT factorisation failed (zero pivot)");
   S.factor = LinearSystem::Factor::ldlt;
+}
+
+// The values of fill_spd(S, mask) written straight into the band: each coupling once, from
+// its east or north end (equal values from both ends), a masked unknown an identity row.
+bool ReynoldsSolver::Impl::fill_band(LinearSystem& S, const char* mk, int cut) {
+  BandLDLT& B = S.band;
+  B.begin(cut);
+  bool ok = true;
+  for (int i = 0; i < S.n_unk; ++i) {
+    if (mk && mk[i]) {
+      B.set(i, i, 1.0);
+      continue;
+    }
+    const int n = S.node_of[i];
+    const int w = west(n);
+    const double wp = S.wphi[i];
+    double d;
+    if (S.has_s[i])
+      d = wp * (cE[n] + cE[w]) + (S.has_n[i] ? cN[n] : 0.0) + cN[n - 1];
+    else
+      d = wp * (cE[n] + cE[w]) + cN[n];
+    if (end_row(n)) d += gseal;
+    B.set(i, i, d);
+    const LinearSystem::ColPos& q = S.pos[i];
+    const LinearSystem::Nbr& u = S.nbr[i];
+    if (q.e >= 0 && !(mk && mk[u.e])) ok &= B.set(i, u.e, -(wp * cE[n]));
+    if (q.n >= 0 && !(mk && mk[u.n])) ok &= B.set(i, u.n, -cN[n]);
+  }
+  return ok;
 }
 
 double ReynoldsSolver::Impl::cell_residual(int n, const std::vector<double>& pp) const {
