@@ -10,6 +10,7 @@
 #pragma once
 #include <Eigen/SparseCore>
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -48,6 +49,16 @@ class BandLDLT {
     return true;
   }
   bool factorize_assembled();
+  /// Column-wise assembly (what begin()/set() do, without clearing the whole band):
+  /// begin_columns(cut) opens the circle and clears the padding only; the caller then writes
+  /// every column column(opened(i)) in full — b + 1 values, the diagonal and A(i + d, i) for
+  /// the unknown i + d, d places later in the opened order.
+  void begin_columns(int cut) {
+    shift_ = ring_first_[cut];
+    std::fill(a_.begin() + static_cast<std::size_t>(n_) * (b_ + 1), a_.end(), 0.0);
+  }
+  int opened(int i) const { return i - shift_ < 0 ? i - shift_ + n_ : i - shift_; }
+  double* column(int c) { return a_.data() + static_cast<std::size_t>(c) * (b_ + 1); }
 
  private:
   bool usable_ = false;

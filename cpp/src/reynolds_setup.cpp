@@ -487,33 +487,46 @@ void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* 
   S.factor = LinearSystem::Factor::ldlt;
 }
 
-// The values of fill_spd(S, mask) written straight into the band: each coupling once, from
-// its east or north end (equal values from both ends), a masked unknown an identity row.
+// The values of fill_spd(S, mask) written straight into the band, column by column: each
+// coupling once, in the column of its west or south end (the earlier one in the opened order;
+// equal values from both ends), a masked unknown an identity column. False when a coupling
+// falls outside the band or across the opening (the caller then uses the sparse factor).
 bool ReynoldsSolver::Impl::fill_band(LinearSystem& S, const char* mk, int cut) {
   BandLDLT& B = S.band;
-  B.begin(cut);
-  bool ok = true;
+  B.begin_columns(cut);
+  const int w = B.bandwidth() + 1;
   for (int i = 0; i < S.n_unk; ++i) {
+    const int ci = B.opened(i);
+    double* col = B.column(ci);
+    std::fill(col, col + w, 0.0);
     if (mk && mk[i]) {
-      B.set(i, i, 1.0);
+      col[0] = 1.0;
       continue;
     }
     const int n = S.node_of[i];
-    const int w = west(n);
+    const int wn = west(n);
     const double wp = S.wphi[i];
     double d;
     if (S.has_s[i])
-      d = wp * (cE[n] + cE[w]) + (S.has_n[i] ? cN[n] : 0.0) + cN[n - 1];
+      d = wp * (cE[n] + cE[wn]) + (S.has_n[i] ? cN[n] : 0.0) + cN[n - 1];
     else
-      d = wp * (cE[n] + cE[w]) + cN[n];
+      d = wp * (cE[n] + cE[wn]) + cN[n];
     if (end_row(n)) d += gseal;
-    B.set(i, i, d);
+    col[0] = d;
     const LinearSystem::ColPos& q = S.pos[i];
     const LinearSystem::Nbr& u = S.nbr[i];
-    if (q.e >= 0 && !(mk && mk[u.e])) ok &= B.set(i, u.e, -(wp * cE[n]));
-    if (q.n >= 0 && !(mk && mk[u.n])) ok &= B.set(i, u.n, -cN[n]);
+    if (q.n >= 0 && !(mk && mk[u.n])) {
+      const int dn = B.opened(u.n) - ci;
+      if (dn <= 0 || dn >= w) return false;
+      col[dn] = -cN[n];
+    }
+    if (q.e >= 0 && !(mk && mk[u.e])) {
+      const int de = B.opened(u.e) - ci;
+      if (de <= 0 || de >= w) return false;
+      col[de] = -(wp * cE[n]);
+    }
   }
-  return ok;
+  return true;
 }
 
 double ReynoldsSolver::Impl::cell_residual(int n, const std::vector<double>& pp) const {
