@@ -95,12 +95,14 @@ void solve_band(const double* a, int n, int b_run, const char* coupled, double* 
     for (int t = 1; t <= b; ++t) y[c + t] -= col[t] * yc;
   }
   for (int c = 0; c < n; ++c) y[c] /= a[static_cast<std::size_t>(c) * w];
+  // Back substitution: the far terms first, the one that needs the unknown just found last,
+  // so that a column waits for its predecessor by one multiply-subtract, not b of them.
   for (int c = n - 1; c >= 0; --c) {
     if (!coupled[c]) continue;
     const double* col = a + static_cast<std::size_t>(c) * w;
-    double s = y[c];
-    for (int t = 1; t <= b; ++t) s -= col[t] * y[c + t];
-    y[c] = s;
+    double far = 0.0;
+    for (int t = b; t >= 2; --t) far += col[t] * y[c + t];
+    y[c] = (y[c] - far) - col[1] * y[c + 1];
   }
 }
 
