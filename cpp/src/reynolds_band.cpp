@@ -95,12 +95,14 @@ void solve_band(const double* a, int n, int b_run, const char* coupled, double* 
     for (int t = 1; t <= b; ++t) y[c + t] -= col[t] * yc;
   }
   for (int c = 0; c < n; ++c) y[c] /= a[static_cast<std::size_t>(c) * w];
+  // Back substitution: the far terms first, the one that needs the unknown just found last,
+  // so that a column waits for its predecessor by one multiply-subtract, not b of them.
   for (int c = n - 1; c >= 0; --c) {
     if (!coupled[c]) continue;
     const double* col = a + static_cast<std::size_t>(c) * w;
-    double s = y[c];
-    for (int t = 1; t <= b; ++t) s -= col[t] * y[c + t];
-    y[c] = s;
+    double far = 0.0;
+    for (int t = b; t >= 2; --t) far += col[t] * y[c + t];
+    y[c] = (y[c] - far) - col[1] * y[c + 1];
   }
 }
 
@@ -128,6 +130,16 @@ bool BandLDLT::factorize(const double* values, int cut) {
     if (c + d >= n_) return false;
     a_[static_cast<std::size_t>(c) * w + d] = v;
   }
+  return factorize_assembled();
+}
+
+void BandLDLT::begin(int cut) {
+  shift_ = ring_first_[cut];
+  std::fill(a_.begin(), a_.end(), 0.0);
+}
+
+bool BandLDLT::factorize_assembled() {
+  if (!usable_) return false;
   switch (b_) {
 #define ROTORDYN_BAND_FACTOR(B) \
   case B:                      \
@@ -143,11 +155,9 @@ void BandLDLT::solve(const double* bvec, double* x) const {
   double* y = ys_.data();
   // the padding receives 0·y updates: cleared, so a non-finite right-hand side cannot linger
   std::fill(ys_.begin() + n_, ys_.end(), 0.0);
-  for (int i = 0; i < n_; ++i) {
-    int c = i - shift_;
-    if (c < 0) c += n_;
-    y[c] = bvec[i];
-  }
+  // y[c] = b[i] for c = i − shift (mod n): two contiguous pieces
+  std::copy(bvec + shift_, bvec + n_, y);
+  std::copy(bvec, bvec + shift_, y + (n_ - shift_));
   switch (b_) {
 #define ROTORDYN_BAND_SOLVE(B) \
   case B:                     \
@@ -158,11 +168,8 @@ void BandLDLT::solve(const double* bvec, double* x) const {
     default:
       solve_band<0>(a_.data(), n_, b_, coupled_.data(), y);
   }
-  for (int i = 0; i < n_; ++i) {
-    int c = i - shift_;
-    if (c < 0) c += n_;
-    x[i] = y[c];
-  }
+  std::copy(y, y + (n_ - shift_), x + shift_);
+  std::copy(y + (n_ - shift_), y + n_, x);
 }
 
 }  // namespace rotordyn

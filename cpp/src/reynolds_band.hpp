@@ -10,6 +10,8 @@
 #pragma once
 #include <Eigen/SparseCore>
 
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace rotordyn {
@@ -31,6 +33,32 @@ class BandLDLT {
   bool factorize(const double* values, int cut);
   /// x = A⁻¹ b (x may alias b).
   void solve(const double* b, double* x) const;
+  /// Direct assembly, the same factor as factorize() without a sparse value array: begin()
+  /// clears the band for the circle opened before ring `cut`; set(i, j, v) stores
+  /// A(i, j) = A(j, i) = v (i == j: the diagonal), false when the pair lies outside the band
+  /// or across the opening; factorize_assembled() then factorises (false as factorize()).
+  void begin(int cut);
+  bool set(int i, int j, double v) {
+    if (v == 0.0) return true;
+    int ci = i - shift_, cj = j - shift_;
+    if (ci < 0) ci += n_;
+    if (cj < 0) cj += n_;
+    if (ci > cj) std::swap(ci, cj);
+    if (cj - ci > b_) return false;
+    a_[static_cast<std::size_t>(ci) * (b_ + 1) + (cj - ci)] = v;
+    return true;
+  }
+  bool factorize_assembled();
+  /// Column-wise assembly (what begin()/set() do, without clearing the whole band):
+  /// begin_columns(cut) opens the circle and clears the padding only; the caller then writes
+  /// every column column(opened(i)) in full — b + 1 values, the diagonal and A(i + d, i) for
+  /// the unknown i + d, d places later in the opened order.
+  void begin_columns(int cut) {
+    shift_ = ring_first_[cut];
+    std::fill(a_.begin() + static_cast<std::size_t>(n_) * (b_ + 1), a_.end(), 0.0);
+  }
+  int opened(int i) const { return i - shift_ < 0 ? i - shift_ + n_ : i - shift_; }
+  double* column(int c) { return a_.data() + static_cast<std::size_t>(c) * (b_ + 1); }
 
  private:
   bool usable_ = false;

@@ -3,6 +3,7 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
+#include <array>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -69,6 +70,8 @@ struct LinearSystem {
   std::vector<char> last_set;  // the last converged Swift–Stieber set (continuation only)
   enum class Factor { none, ldlt, band, lu, static_lu } factor = Factor::none;
   /// x = A⁻¹ b with the symmetric factor of the last factor_spd (ldlt or band).
+  // predict_active: the four coarse nodes (flat p_pa indices) around each unknown
+  std::vector<std::array<int, 4>> coarse_around;
   void solve_spd(const double* b, double* x) const {
     if (factor == Factor::band)
       band.solve(b, x);
@@ -195,9 +198,12 @@ struct ReynoldsSolver::Impl {
   void base_rhs(const LinearSystem& S, Eigen::VectorXd& b) const;
   // A's values; mask (unknown-indexed, may be null) decouples masked unknowns (identity rows).
   void fill_spd(LinearSystem& S, const std::vector<char>* mask);
-  // Factorise the values of fill_spd(S, mask): banded when a ring is wholly masked (or has
-  // no unknowns), which opens the circle there; the static sparse LDLᵀ otherwise.
+  // Assemble and factorise A with the masked unknowns decoupled: banded when a ring is wholly
+  // masked (or has no unknowns), which opens the circle there — the band filled directly from
+  // the conductances, one pass, no sparse values; otherwise fill_spd and the static sparse
+  // LDLᵀ. Both factor the same values as fill_spd(S, mask).
   void factor_spd(LinearSystem& S, const std::vector<char>* mask);
+  bool fill_band(LinearSystem& S, const char* mask, int cut);
   bool band_factor = true;  // the banded path on (off: always the sparse factor; tests)
   // Residual (outflow + storage) of node n's full cell for node pressures pp and fill theta.
   double cell_residual(int n, const std::vector<double>& pp) const;
@@ -219,6 +225,11 @@ struct ReynoldsSolver::Impl {
   bool continuation = false;  // start from the last converged set of this system (in a run)
   int coarse_n_circ = 0, coarse_n_axial = 0;
   RowMatrixXd hc, hdc;                     // film sampled on the coarse nodes
+  struct CoarseLerp {
+    int n00, n01, n10, n11;  // fine nodes (j0,k0), (j0,k1), (j1,k0), (j1,k1)
+    double fj, fk;
+  };
+  std::vector<CoarseLerp> coarse_lerp;     // per coarse node (row-major), built once
   void solve_reynolds(LinearSystem& S);  // Swift–Stieber LCP by primal–dual active set
   // Directional derivative dp of the Swift–Stieber solution for a residual change dr at a
   // degenerate set: the LCP on the biactive unknowns, dp = 0 on the strongly active ones.

@@ -152,6 +152,16 @@ EquilibriumSolution ReynoldsSolver::equilibrium(double lx, double ly, double ome
   if (!(max_iter >= 1 && max_iter <= 10000))
     throw InputError("max_iter: expected 1 <= max_iter <= 10000, got " +
                      std::to_string(max_iter));
+  // The solves of this call (Newton steps, line searches, the load continuation) start from
+  // the last converged cavitation set of this call — the same unique Swift–Stieber solution in
+  // fewer active-set steps. The set is cleared on entry and on exit, so the call's result
+  // never depends on what the solver ran before it (or runs after).
+  struct WithinCall {
+    ReynoldsSolver& rs;
+    bool was;
+    ~WithinCall() { rs.set_continuation(was); }
+  } within_call{*this, continuation()};
+  set_continuation(true);
   const double emax = 0.9999 * s.c;
   const Eigen::Vector2d load(lx, ly);
   Eigen::Vector2d q(x0, y0);

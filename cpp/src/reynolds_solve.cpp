@@ -1,6 +1,7 @@
 // ReynoldsSolver: the film solves (full/half Sommerfeld, Swift–Stieber LCP), outputs, and the
 // linearised solve that shares the last factorisation.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -47,7 +48,6 @@ void ReynoldsSolver::Impl::solve_short() {
 }
 
 void ReynoldsSolver::Impl::solve_linear(LinearSystem& S) {
-  fill_spd(S, nullptr);
   factor_spd(S, nullptr);
   base_rhs(S, S.rhs);
   S.solve_spd(S.rhs.data(), S.sol.data());
@@ -85,34 +85,82 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
         hdc.resize(Nc, K1c);
       }
       coarse->set_use_axial_symmetry(use_symmetry);
-      for (int jc = 0; jc < Nc; ++jc) {
-        const long sj = static_cast<long>(jc) * N;
-        const int j0 = static_cast<int>(sj / Nc), j1 = (j0 + 1) % N;
-        const double fj = static_cast<double>(sj % Nc) / Nc;
-        for (int kc = 0; kc < K1c; ++kc) {
-          const long sk = static_cast<long>(kc) * na;
-          const int k0 = static_cast<int>(sk / nac), k1 = std::min(k0 + 1, na);
-          const double fk = static_cast<double>(sk % nac) / nac;
-          auto lerp = [&](const std::vector<double>& f) {
-            const double a0 = f[j0 * K1 + k0] + fk * (f[j0 * K1 + k1] - f[j0 * K1 + k0]);
-            const double a1 = f[j1 * K1 + k0] + fk * (f[j1 * K1 + k1] - f[j1 * K1 + k0]);
-            return a0 + fj * (a1 - a0);
-          };
-          hc(jc, kc) = lerp(has_pockets ? h_smooth : h);  // the coarse film adds its own
-          hdc(jc, kc) = lerp(hdot);
+      if (coarse_lerp.empty()) {  // sampling positions of the coarse nodes, once per solver
+        coarse_lerp.resize(static_cast<std::size_t>(Nc) * K1c);
+        for (int jc = 0; jc < Nc; ++jc) {
+          const long sj = static_cast<long>(jc) * N;
+          const int j0 = static_cast<int>(sj / Nc), j1 = (j0 + 1) % N;
+          const double fj = static_cast<double>(sj % Nc) / Nc;
+          for (int kc = 0; kc < K1c; ++kc) {
+            const long sk = static_cast<long>(kc) * na;
+            const int k0 = static_cast<int>(sk / nac), k1 = std::min(k0 + 1, na);
+            const double fk = static_cast<double>(sk % nac) / nac;
+            coarse_lerp[static_cast<std::size_t>(jc) * K1c + kc] =
+                CoarseLerp{j0 * K1 + k0, j0 * K1 + k1, j1 * K1 + k0, j1 * K1 + k1, fj, fk};
+          }
         }
+      }
+      const std::vector<double>& hs = has_pockets ? h_smooth : h;  // the coarse film adds its own
+      double* hcd = hc.data();
+      double* hdcd = hdc.data();
+      for (std::size_t q = 0; q < coarse_lerp.size(); ++q) {
+        const CoarseLerp& t = coarse_lerp[q];
+        auto lerp = [&](const std::vector<double>& f) {
+          const double a0 = f[t.n00] + t.fk * (f[t.n01] - f[t.n00]);
+          const double a1 = f[t.n10] + t.fk * (f[t.n11] - f[t.n10]);
+          return a0 + t.fj * (a1 - a0);
+        };
+        hcd[q] = lerp(hs);
+        hdcd[q] = lerp(hdot);
       }
       const RowMatrixXd& pc = coarse->solve(hc, hdc, omega).p_pa;
       // A fine node is predicted cavitated when every coarse node around it is (p == 0).
+      if (S.coarse_around.size() != static_cast<std::size_t>(S.n_unk)) {
+        S.coarse_around.resize(S.n_unk);
+        for (int i = 0; i < S.n_unk; ++i) {
+          const int n = S.node_of[i];
+          const long sj = static_cast<long>(n / K1) * Nc, sk = static_cast<long>(n % K1) * nac;
+          const int j0 = static_cast<int>(sj / N), j1 = (sj % N) ? (j0 + 1) % Nc : j0;
+          const int k0 = static_cast<int>(sk / na), k1 = (sk % na) ? k0 + 1 : k0;
+          S.coarse_around[i] = {j0 * K1c + k0, j1 * K1c + k0, j0 * K1c + k1, j1 * K1c + k1};
+        }
+      }
+      const double* pcd = pc.data();
       for (int i = 0; i < S.n_unk; ++i) {
-        const int n = S.node_of[i];
-        const long sj = static_cast<long>(n / K1) * Nc, sk = static_cast<long>(n % K1) * nac;
-        const int j0 = static_cast<int>(sj / N), j1 = (sj % N) ? (j0 + 1) % Nc : j0;
-        const int k0 = static_cast<int>(sk / na), k1 = (sk % na) ? k0 + 1 : k0;
-        S.active[i] = (pc(j0, k0) <= 0.0 && pc(j1, k0) <= 0.0 && pc(j0, k1) <= 0.0 &&
-                       pc(j1, k1) <= 0.0)
+        const std::array<int, 4>& a = S.coarse_around[i];
+        S.active[i] = (pcd[a[0]] <= 0.0 && pcd[a[1]] <= 0.0 && pcd[a[2]] <= 0.0 &&
+                       pcd[a[3]] <= 0.0)
                           ? 1
                           : 0;
+        // Between two coarse columns of which the downstream one is cavitated (a rupture
+        // boundary; Swift–Stieber: p and ∂p/∂φ vanish there, so √p is linear in φ near it):
+        // cavitated when the zero of √p extrapolated from the two upstream coarse nodes lies
+        // before the fine node. Only the start changes (the LCP has one solution).
+        if (S.active[i] || a[0] == a[1]) continue;
+        const int n = S.node_of[i];
+        const long sj = static_cast<long>(n / K1) * Nc;
+        const int j0 = static_cast<int>(sj / N), j1 = (j0 + 1) % Nc;
+        const double t = static_cast<double>(sj % N) / N;
+        auto row_cav = [&](int o0, int o1) {  // o0, o1: flat indices of (j0, k), (j1, k)
+          const double p0 = pcd[o0], p1 = pcd[o1];
+          if (p0 <= 0.0 && p1 <= 0.0) return true;
+          const int kk = o0 - j0 * K1c;
+          double pP, pPP, u;
+          if (omega >= 0.0) {
+            if (!(p1 <= 0.0)) return false;
+            pP = p0;
+            pPP = pcd[((j0 - 1 + Nc) % Nc) * K1c + kk];
+            u = t;
+          } else {
+            if (!(p0 <= 0.0)) return false;
+            pP = p1;
+            pPP = pcd[((j1 + 1) % Nc) * K1c + kk];
+            u = 1.0 - t;
+          }
+          const double r = std::sqrt(pP), rr = std::sqrt(std::max(pPP, 0.0));
+          return rr > r && u * (rr - r) >= r;
+        };
+        if (row_cav(a[0], a[1]) && row_cav(a[2], a[3])) S.active[i] = 1;
       }
       return;
     } catch (const ConvergenceError&) {
@@ -138,7 +186,6 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   for (int n = 0; n < n_nodes; ++n)
     if (fixed[n]) pscale_fixed = std::max(pscale_fixed, std::abs(p[n]));
   for (int it = 1; it <= max_iter; ++it) {
-    fill_spd(S, &S.active);
     factor_spd(S, &S.active);
     for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
     S.solve_spd(b.data(), S.sol.data());
@@ -149,13 +196,12 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
     const double pscale = std::max(pscale_fixed, max_abs(S.sol.data(), S.n_unk));
     // The half system's mirrored rows: only p is read below (the fill stays 1 with this
     // model, pfull is set from p on convergence).
-    if (S.half) {
+    if (S.half) {  // p[n] = p[mirror(n)], row by row (no division per node)
       const int kend = mirror_end();
-      for (int j = 0; j < N; ++j)
-        for (int k = Kh + 1; k < kend; ++k) {
-          const int n = j * K1 + k;
-          p[n] = p[mirror(n)];
-        }
+      for (int j = 0; j < N; ++j) {
+        double* row = p.data() + static_cast<std::size_t>(j) * K1;
+        for (int k = Kh + 1; k < kend; ++k) row[k] = row[K1 - 1 - k];
+      }
     }
     const double tol_p = 1e-13 * pscale;
     const double tol_mu = 1e-13 * bscale;
@@ -229,7 +275,6 @@ void ReynoldsSolver::Impl::solve_derivative_lcp(LinearSystem& S, const Eigen::Ve
   const int max_iter = 100 + S.n_unk / 4;
   bool converged = false;
   for (int it = 1; it <= max_iter && !converged; ++it) {
-    fill_spd(S, &mask);
     factor_spd(S, &mask);
     for (int i = 0; i < S.n_unk; ++i) b[i] = mask[i] ? 0.0 : -dr[i];
     S.solve_spd(b.data(), x.data());
@@ -248,7 +293,6 @@ void ReynoldsSolver::Impl::solve_derivative_lcp(LinearSystem& S, const Eigen::Ve
     }
     mask.swap(next);
   }
-  fill_spd(S, &S.active);
   factor_spd(S, &S.active);
   if (!converged)
     throw ConvergenceError("reynolds cavitation: the directional derivative at a degenerate "
@@ -261,8 +305,7 @@ void ReynoldsSolver::Impl::postprocess() {
   double fx = 0.0, fy = 0.0, torque = 0.0;
   double hmin = h[0];
   int nmin = 0;
-  for (int n = 0; n < n_nodes; ++n) {
-    const int j = n / K1, k = n % K1;
+  for (int n = 0, j = 0, k = 0; n < n_nodes; ++n, k = (k == Kl ? 0 : k + 1), j += (k == 0)) {
     const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
     fx -= wk * p[n] * cosphi[j];
     fy -= wk * p[n] * sinphi[j];
@@ -630,7 +673,6 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
       s.factor_solve_jfo(F, b0, x0);
     } else {
       const bool masked = s.cav == Cavitation::reynolds;
-      s.fill_spd(F, masked ? &F.active : nullptr);
       s.factor_spd(F, masked ? &F.active : nullptr);
     }
     s.sys = S = &F;
@@ -653,8 +695,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
       if (S->half)
         for (int j = 0; j < s.N; ++j)
           for (int k = s.Kh + 1; k < s.mirror_end(); ++k) {
-            const int n = j * s.K1 + k;
-            dpd[n] = dpd[s.mirror(n)];
+            dpd[j * s.K1 + k] = dpd[j * s.K1 + s.K1 - 1 - k];  // the mirror node
           }
       return dp;
     }
@@ -686,8 +727,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
   if (S->half)
     for (int j = 0; j < s.N; ++j)
       for (int k = s.Kh + 1; k < s.mirror_end(); ++k) {
-        const int n = j * s.K1 + k;
-        dpd[n] = dpd[s.mirror(n)];
+        dpd[j * s.K1 + k] = dpd[j * s.K1 + s.K1 - 1 - k];  // the mirror node
       }
   return dp;
 }
@@ -699,11 +739,11 @@ double ReynoldsSolver::integrate(const RowMatrixXd& pr, const RowMatrixXd& g) co
   if (g.rows() != s.N || g.cols() != s.K1)
     throw InputError(shape_msg("g", s.N, s.K1, g.rows(), g.cols()));
   double acc = 0.0;
-  for (int n = 0; n < s.n_nodes; ++n) {
-    const int k = n % s.K1;
-    const double wk = (k == 0 || k == s.K1 - 1) ? 0.5 : 1.0;
-    acc += wk * pr.data()[n] * g.data()[n];
-  }
+  for (int j = 0, n = 0; j < s.N; ++j)  // node n = j·K1 + k, in node order (no division)
+    for (int k = 0; k < s.K1; ++k, ++n) {
+      const double wk = (k == 0 || k == s.K1 - 1) ? 0.5 : 1.0;
+      acc += wk * pr.data()[n] * g.data()[n];
+    }
   return acc * s.R * s.dphi * s.dz;
 }
 
@@ -712,12 +752,12 @@ Eigen::Vector2d ReynoldsSolver::integrate_force(const RowMatrixXd& pr) const {
   if (pr.rows() != s.N || pr.cols() != s.K1)
     throw InputError(shape_msg("p", s.N, s.K1, pr.rows(), pr.cols()));
   double fx = 0.0, fy = 0.0;
-  for (int n = 0; n < s.n_nodes; ++n) {
-    const int j = n / s.K1, k = n % s.K1;
-    const double wk = (k == 0 || k == s.K1 - 1) ? 0.5 : 1.0;
-    fx -= wk * pr.data()[n] * s.cosphi[j];
-    fy -= wk * pr.data()[n] * s.sinphi[j];
-  }
+  for (int j = 0, n = 0; j < s.N; ++j)  // node order, as before (no division per node)
+    for (int k = 0; k < s.K1; ++k, ++n) {
+      const double wk = (k == 0 || k == s.K1 - 1) ? 0.5 : 1.0;
+      fx -= wk * pr.data()[n] * s.cosphi[j];
+      fy -= wk * pr.data()[n] * s.sinphi[j];
+    }
   const double area = s.R * s.dphi * s.dz;
   return Eigen::Vector2d(fx * area, fy * area);
 }
