@@ -87,3 +87,34 @@ def test_short_film_model_needs_the_plain_360_bearing():
         FixedGeometryBearing(kind="two_axial_groove", film_model="short", **kw)
     with pytest.raises(InputError, match="film_model"):
         FixedGeometryBearing(kind="partial_arc", arc_deg=360.0, film_model="long", **kw)
+
+
+def test_grid_check_leaves_l1_of_a_smooth_film_unchanged():
+    """cavitation = "none" (the full short film: no cavitation boundary, the force analytic):
+    grid_check keeps l1 (1e-6) and its type, and l1 on the refined grid (180 × 64) equals it
+    within 1e-3 (the z-rule's 1/n_axial² changes the force by 1e-4)."""
+    s = rotordyn_model(0.02, n_circ=90, n_axial=32, cavitation="none")
+    h0 = rd.hopf(s, "speed_hz", at=186.86)
+    h = rd.hopf(s, "speed_hz", at=186.86, grid_check=True)
+    assert h.l1 == pytest.approx(h0.l1, rel=1e-6)
+    assert h.l1_refined == pytest.approx(h0.l1, rel=1e-3)
+    assert h.type == h0.type != "degenerate"
+    assert math.isnan(h0.l1_refined)
+
+
+def test_grid_check_bounds_the_error_of_l1_on_a_cavitated_film():
+    """The node-wise clipped π film on 720 nodes, fits over ±5 %: the default estimate (fits
+    over ±5 % and ±2.5 %) says supercritical, l1 −0.0615 ± 0.015 while the exact value (the
+    reference's κ in rotordyn's normalisation) is −0.052; l1 on the 1440-node grid is −0.040,
+    so grid_check widens the error to 0.021, which covers the true error, and calls the type
+    degenerate (not resolved on this grid) — it flags, it does not correct."""
+    ref = reference(0.02, N_AXIAL)
+    s_h = ref.hopf_speed(*BOUNDS)
+    L = ref.lyapunov(s_h)
+    s = rotordyn_model(0.02, n_circ=720, n_axial=N_AXIAL)
+    h0 = rd.hopf(s, "speed_hz", at=s_h, fd_step=0.05)
+    h = rd.hopf(s, "speed_hz", at=s_h, fd_step=0.05, grid_check=True)
+    exact = h.l1 * h.amplitude_coefficient[0] / L["kappa"]
+    assert h0.type == "supercritical"
+    assert abs(h.l1 - exact) <= h.l1_error
+    assert h.type == "degenerate"
