@@ -75,6 +75,9 @@ class FixedGeometryBearing:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
+    # "finite" (the finite-length Reynolds film) or "short": the core's short-bearing (Ocvirk)
+    # film, p = 6μG/h³·(z² − L²/4) node by node (plain 360° bearing only: partial_arc, 360°)
+    film_model: str = "finite"
 
     def __post_init__(self):
         self.check("fixed_geometry_bearing", None)
@@ -120,6 +123,12 @@ class FixedGeometryBearing:
                        lo_open=True)
         if self.cavitation == "jfo" and self.kind == "partial_arc" and self.arc_deg == 360.0:
             raise InputError(f"{where}.cavitation: 'jfo' needs a supply groove; a 360° arc has none")
+        v.choice(f"{where}.film_model", self.film_model, ("finite", "short"))
+        if self.film_model == "short" and not (self.kind == "partial_arc"
+                                               and self.arc_deg == 360.0):
+            raise InputError(f"{where}.film_model: 'short' (the short-bearing film: open ends, "
+                             f"no grooves) needs kind = 'partial_arc' with arc_deg = 360, got "
+                             f"kind = {self.kind!r}, arc_deg = {self.arc_deg!r}")
 
     # -- films ----------------------------------------------------------------------------
     def films(self, jx: int, jy: int, name: str, spin: float = 1.0) -> list:
@@ -142,7 +151,7 @@ class FixedGeometryBearing:
                 arc_rad=arc, pivot_rad=start + alpha * arc, preload=m, n_circ=self.n_circ,
                 n_axial=self.n_axial, coords=[jx, jy], supply_pressure_pa=self.supply_pressure_pa,
                 spin=spin, pockets=pockets, turbulence=self.turbulence,
-                density_kg_m3=self.density_kg_m3))
+                density_kg_m3=self.density_kg_m3, short_bearing=self.film_model == "short"))
         return out
 
     def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:

@@ -27,7 +27,9 @@ class HopfResult(Display):
     the stable side for subcritical); ``amplitude_coefficient`` (n_bearings,): m² per unit
     of vary, A_j² = coefficient·|p − p_H| to leading order (A_j the largest distance of
     journal j from its mean); ``q`` (2n,) the critical eigenvector in SI state coordinates
-    (r, ṙ) with ``z2_per_unit``: |z|² per unit |p − p_H|; ``x_equilibrium`` (2n,)."""
+    (r, ṙ) with ``z2_per_unit``: |z|² per unit |p − p_H|; ``x_equilibrium`` (2n,);
+    ``l1_refined``: l1 on the films' grids refined twice (``grid_check``; then ``l1_error``
+    includes |l1_refined − l1|)."""
 
     vary: str
     fixed: dict
@@ -52,6 +54,8 @@ class HopfResult(Display):
     velocity_scale: float = math.nan
     status: str = "ok"
     message: str = ""
+    # grid_check: l1 on every film grid refined twice in both directions (NaN: not checked)
+    l1_refined: float = math.nan
 
     @classmethod
     def failed(cls, status: str, message: str, **kw) -> "HopfResult":
