@@ -202,7 +202,8 @@ def laws(rig, act, repeat):
               f"PD); without the call's fixed costs {1e6 * per2:.1f} µs "
               f"({100 * (per2 / base2 - 1):+.1f} %; goal <= +20 %)")
     print(f"[laws] load: {load()}")
-def robust_rows(rig, k, n_side: int, workers: int, repeat: int) -> None:
+def robust_rows(rig, k, n_side: int, workers: int, repeat: int, cube_margins: bool = False,
+                threads_only: bool = False) -> None:
     """The robust sweep against a Python loop over the same points (module docstring)."""
     import tempfile
 
@@ -233,19 +234,23 @@ def robust_rows(rig, k, n_side: int, workers: int, repeat: int) -> None:
     cases = [("stability only", {"speed_hz": speeds.tolist(), "chamber_pressure_pa": pcs.tolist(),
                                  "config_ay_m": ays.tolist()}, False),
              ("with margins", {"speed_hz": speeds.tolist(), "chamber_pressure_pa": pcs.tolist(),
-                               "config_ay_m": AY}, True)]
+                               "config_ay_m": ays.tolist() if cube_margins else AY}, True)]
     for label, grid, with_m in cases:
         pts = [(f, pc, ay) for f in grid["speed_hz"] for pc in grid["chamber_pressure_pa"]
                for ay in np.atleast_1d(grid["config_ay_m"])]
         print(f"robust sweep, {label}: {len(pts)} points, medians of {repeat} interleaved "
               f"repeats; {load_line('load')}")
-        runs = {"threads=2": [], f"workers={workers}": [], "loop": []}
+        runs = {"threads=2": []} if threads_only else \
+            {"threads=2": [], f"workers={workers}": [], "loop": []}
         for _ in range(repeat):
-            for kw in ({"threads": 2}, {"workers": workers}):
+            for kw in ({"threads": 2},) if threads_only else ({"threads": 2},
+                                                              {"workers": workers}):
                 with tempfile.TemporaryDirectory() as d:
                     r, wall, cpu = timed(lambda: robust(rig, k, grid, margins=with_m,
                                                         out=os.path.join(d, "r"), **kw))
                 runs[", ".join(f"{a}={b}" for a, b in kw.items())].append((wall, cpu))
+            if threads_only:
+                continue
             res, wall, cpu = timed(lambda: loop(pts, with_m))
             runs["loop"].append((wall, cpu))
         s = r.summary()
@@ -260,6 +265,9 @@ def robust_rows(rig, k, n_side: int, workers: int, repeat: int) -> None:
                     f" ({1e3 * cpu / len(pts):.1f} ms CPU per point)")
             print(f"  {what}: wall {wall:.1f} s, CPU of this process {cpu:.1f} s{note}; "
                   f"walls {', '.join(f'{x[0]:.1f}' for x in v)}")
+        if threads_only:
+            print(f"  {load_line('load')}")
+            continue
         got = r.frame.max_real_1_per_s.to_numpy()
         ref = np.array([np.nan if x is None else x[0] for x in res])
         print(f"  rows vs loop: largest |Δ max Re λ| {np.nanmax(np.abs(got - ref)):.1e} 1/s, "
@@ -285,6 +293,10 @@ def main():
     ap.add_argument("--robust-points", type=int, default=1000,
                     help="points of the stability-only robust sweep (a cube: 10 per axis)")
     ap.add_argument("--robust-workers", type=int, default=2)
+    ap.add_argument("--robust-cube-margins", action="store_true",
+                    help="the margins case on the same 10x10x10 cube as stability only")
+    ap.add_argument("--robust-threads-only", action="store_true",
+                    help="only robust(threads=2) (no worker processes, no Python loop)")
     args = ap.parse_args()
     print(f"load before: {load()}  (2 shared cores: figures are noisy)")
     rig = rd.models.paper_rig()
@@ -298,7 +310,7 @@ def main():
     print(f"PD: closed-loop max Re λ = {cl.max_real:.2f} 1/s; t_sim = {args.t_sim} s")
     if args.robust_only:
         robust_rows(rig, k, round(args.robust_points ** (1 / 3)), args.robust_workers,
-                    args.repeat)
+                    args.repeat, args.robust_cube_margins, args.robust_threads_only)
         print(f"load after: {load()}")
         return
     kw = dict(disturbance_m=(0.0, 0.1 * C), n_out=201, rtol=RTOL, atol_m=ATOL)

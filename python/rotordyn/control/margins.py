@@ -46,16 +46,14 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import brentq, minimize, minimize_scalar
+from scipy.optimize import minimize, minimize_scalar
 
 from rotordyn._common import validate as v
 from rotordyn.control import lti
+from rotordyn.control import loop_response as lr
 from rotordyn.errors import InputError
 
-PER_DECADE = 60
-MAX_POINTS = 200_000
 TINY = 1e-12  # |L| below it at a phase crossover: a round-off crossing (gain factor > 1e12)
-XTOL = 1e-14  # Brent's tolerance on ln ω (rtol is 4 eps): round-off in ω
 
 
 @dataclass(frozen=True)
@@ -119,12 +117,13 @@ class LoopMargins:
     disk: DiskMargin
     closed_loop_max_real: float
     loop: lti.SS = field(repr=False)
+    response: str = field(default="direct solves", repr=False, compare=False)
 
     def disk_margin(self, sigma: float = 0.0) -> DiskMargin:
         """Disk margin with skew σ ∈ [−1e6, 1e6]: σ = 0 balanced (= ``disk``), σ = 1:
         1/‖S‖∞ (disks biased to gain increase), σ = −1: 1/‖T‖∞ (biased to decrease)."""
         sigma = v.in_range("sigma", sigma, -1e6, 1e6)
-        return _disk(self.loop, _grid(self.loop), sigma)
+        return _disk_of(self.loop, sigma, self.response == "partial fractions")
 
     def rows(self) -> list[dict]:
         """One row per margin: (loop, kind, value, unit, frequency_hz)."""
@@ -174,186 +173,74 @@ class LoopMargins:
                 f"disk α {d.alpha:.4g}: [{lo_db:.2f}, {hi_db:.2f}] dB, ±{d.phase_deg:.2f}°)")
 
 
-# ---------------------------------------------------------------------------- frequency grid
+# ----------------------------------------------------------------------------- SISO margins
 
-def _grid(loop: lti.SS) -> np.ndarray:
-    """Angular frequencies (rad/s): a log grid over the poles' range (open and closed loop)
-    with points clustered around each pole's damped frequency; discrete: up to Nyquist."""
-    Acl = _closed_A(loop)
-    return _grid_from([loop.poles_s(), _poles(Acl, loop.dt)], loop.dt)
-
-
-def _poles(A, dt):
-    return lti.SS(A, np.zeros((A.shape[0], 0)), np.zeros((0, A.shape[0])), np.zeros((0, 0)),
-                  dt).poles_s()
-
-
-def _grid_from(poles, dt) -> np.ndarray:
-    lam = np.concatenate(poles)
-    lam = lam[np.isfinite(lam)]
-    mags = np.abs(lam)
-    mags = mags[mags > 0]
-    if dt is None:
-        lo = (mags.min() if mags.size else 1.0) * 1e-3
-        hi = (mags.max() if mags.size else 1.0) * 1e3
-    else:
-        hi = math.pi / dt
-        lo = min(mags.min() if mags.size else hi, hi) * 1e-3
-    ndec = math.log10(hi / lo)
-    base = np.logspace(math.log10(lo), math.log10(hi), max(int(PER_DECADE * ndec), 200))
-    extra = []
-    for lm in lam:
-        wd, sg = abs(lm.imag), abs(lm.real)
-        if wd <= 0:
-            continue
-        width = max(sg, 1e-6 * wd)
-        extra.append(wd + width * np.linspace(-8, 8, 33))
-        extra.append(wd * np.array([0.9, 0.95, 0.98, 1.02, 1.05, 1.1]))
-    w = np.concatenate([base] + extra)
-    w = np.unique(w[(w >= lo) & (w <= hi)])
-    if w.size > MAX_POINTS:
-        raise InputError(f"loop: its frequency grid would need {w.size} points (> {MAX_POINTS})")
-    return w
-
-
-def _closed_A(loop: lti.SS) -> np.ndarray:
-    d = 1.0 + float(loop.D[0, 0])
-    if abs(d) < 1e-12:
-        raise InputError("loop: 1 + L(∞) = 0, the closed loop is ill-posed")
-    return loop.A - loop.B @ loop.C / d
-
-
-def _L(loop, w, derivative=False):
-    if derivative:
-        G, dG = lti.freqresp(loop, w, True)
-        return G[:, 0, 0], dG[:, 0, 0]
-    return lti.freqresp(loop, w)[:, 0, 0]
-
-
-def _ends(loop) -> tuple:
-    """(L at ω = 0 or None, L at the top end: ∞ (D) or Nyquist, top frequency rad/s)."""
-    L0 = lti.dc_value(loop)
-    L0 = None if L0 is None else complex(L0[0, 0])
-    if loop.dt is None:
-        return L0, complex(loop.D[0, 0]), math.inf
-    wn = math.pi / loop.dt
-    return L0, complex(_L(loop, [wn])[0]), wn
-
-
-def _brent(fun, a, b):
-    """Brent's root of ``fun`` on [a, b] to round-off, or None when the re-evaluated ends do
-    not bracket one (a flat function at round-off level)."""
-    try:
-        return brentq(fun, a, b, xtol=XTOL, rtol=1e-15)
-    except ValueError:
-        return None
-
-
-def _roots(fun, w, vals) -> list:
-    """Refined roots of ``fun`` (a function of ln ω) where ``vals`` changes sign on ``w``."""
-    out = []
-    x = np.log(w)
-    for i in np.nonzero(np.signbit(vals[:-1]) != np.signbit(vals[1:]))[0]:
-        if not (np.isfinite(vals[i]) and np.isfinite(vals[i + 1])):
-            continue
-        if vals[i] == 0:
-            out.append(w[i])
-            continue
-        r = _brent(fun, x[i], x[i + 1])
-        if r is not None:
-            out.append(math.exp(r))
-    if vals.size and vals[-1] == 0:
-        out.append(w[-1])
-    return out
-
-
-def _peak(loop, w, p: float, q: float, grid=None) -> tuple[float, float]:
-    """sup_ω |(p + q L)/(1 + L)| and its ω (rad/s; 0 or inf at the ends). ``grid``: (L, dL/dω)
-    on ``w`` when the caller has them (the same values: one evaluation for every peak)."""
-    L, dL = _L(loop, w, True) if grid is None else grid
-
-    def m_and_slope(L, dL):
-        M = (p + q * L) / (1 + L)
-        dM = (q - p) / (1 + L) ** 2 * dL
-        return np.abs(M), 2 * np.real(np.conj(M) * dM)
-
-    mag, slope = m_and_slope(L, dL)
-    best = (float(mag.max()), float(w[np.argmax(mag)]))
-    i_loc = [i for i in range(1, w.size - 1) if mag[i] >= mag[i - 1] and mag[i] >= mag[i + 1]]
-    top = mag.max()
-    x = np.log(w)
-
-    def f(lw):
-        Li, dLi = _L(loop, [math.exp(lw)], True)
-        return float(m_and_slope(Li, dLi)[1][0])
-
-    for i in i_loc:
-        if mag[i] < 0.8 * top:
-            continue
-        a, b = i - 1, i + 1
-        if slope[a] > 0 > slope[i]:
-            lw = _brent(f, x[a], x[i])
-        elif slope[i] > 0 > slope[b]:
-            lw = _brent(f, x[i], x[b])
-        elif slope[a] > 0 > slope[b]:
-            lw = _brent(f, x[a], x[b])
-        else:
-            continue
-        if lw is None:
-            continue
-        wi = math.exp(lw)
-        Li = _L(loop, [wi])[0]
-        val = abs((p + q * Li) / (1 + Li))
-        if val > best[0]:
-            best = (val, wi)
-    L0, Linf, wtop = _ends(loop)
-    for Le, we in ((L0, 0.0), (Linf, wtop)):
-        if Le is not None:
-            val = abs((p + q * Le) / (1 + Le))
-            if val > best[0]:
-                best = (val, we)
-    return best
-
-
-def _disk(loop, w, sigma, grid=None) -> DiskMargin:
-    peak, wp = _peak(loop, w, (1 + sigma) / 2, (sigma - 1) / 2, grid)
+def _disk(resp: lr.Response, w, sigma, grid) -> DiskMargin:
+    peak, wp = lr.peak(resp, resp.ss, w, (1 + sigma) / 2, (sigma - 1) / 2, grid)
     alpha = 1.0 / peak if peak > 0 else math.inf
     return disk_from_alpha(alpha, sigma, wp / (2 * math.pi))
 
 
-# ----------------------------------------------------------------------------- SISO margins
+def _open_poles(resp: lr.Response) -> np.ndarray:
+    return lr.s_plane(resp.lam, resp.dt) if resp.modal else resp.ss.poles_s()
 
-def loop_margins(loop, *, name: str = "loop", dt=None) -> LoopMargins:
+
+def _on_grid(ss: lti.SS, lam_cl: np.ndarray, modal: bool):
+    """(response, grid ω, (L, dL/dω) on it): partial fractions checked against direct solves
+    (:mod:`rotordyn.control.loop_response`), or direct solves with ``modal`` False."""
+    resp = lr.Response(ss, modal)
+    w = lr.grid_from([_open_poles(resp), lam_cl], ss.dt)
+    return resp, w, resp.on_grid(w)
+
+
+def _disk_of(ss: lti.SS, sigma: float, modal: bool = True) -> DiskMargin:
+    lam_cl = lr.poles(lr.closed_A(ss), ss.dt)
+    resp, w, grid = _on_grid(ss, lam_cl, modal)
+    return _disk(resp, w, sigma, grid)
+
+
+def loop_margins(loop, *, name: str = "loop", dt=None, modal: bool = True) -> LoopMargins:
     """Every margin of the SISO loop ``loop`` (negative-feedback convention, closed loop
     1 + L): an (A, B, C, D) tuple, a python-control system or an :class:`lti.SS`; ``dt`` a
-    sample time for a discrete tuple. Refuses a loop whose closed loop is not stable."""
+    sample time for a discrete tuple. Refuses a loop whose closed loop is not stable.
+    ``modal``: bracket on the grid with L by partial fractions from one eigen-decomposition
+    where they pass their check against the direct solve (:mod:`rotordyn.control.loop_response`;
+    the refinements and values are direct solves: the same margins to round-off, less CPU);
+    False: one dense solve per grid frequency."""
     v.text("name", name)
+    v.boolean("modal", modal)
     ss = lti.as_ss("loop", loop, dt)
     if ss.shape != (1, 1):
         raise InputError(f"loop: expected a SISO loop (1 input, 1 output), got {ss.shape[1]} "
                          f"inputs and {ss.shape[0]} outputs")
     ss = lti.balanced(ss)
-    ok, mr = lti.stable(_closed_A(ss), ss.dt)
-    if not ok:
+    lam_cl = lr.poles(lr.closed_A(ss), ss.dt)
+    mr = lr.max_real(lam_cl)
+    if not mr < 0:
         raise InputError(f"{name}: the closed loop is not stable (largest Re λ = {mr:.6g} "
                          f"1/s); margins are defined for a stable closed loop only")
-    w = _grid(ss)
-    L, dL = _L(ss, w, True)  # once for the crossings and all three peaks
+    return _loop_margins(ss, name, lam_cl, mr, modal)
+
+
+def _loop_margins(ss: lti.SS, name: str, lam_cl, mr: float, modal: bool) -> LoopMargins:
+    resp, w, (L, dL) = _on_grid(ss, lam_cl, modal)  # once for the crossings and every peak
     two_pi = 2 * math.pi
 
     # gain margins: L real negative
     def im_phase(lw):
-        Li = _L(ss, [math.exp(lw)])[0]
+        Li = resp.at(math.exp(lw))
         return Li.imag / abs(Li)
-    roots = _roots(im_phase, w, L.imag / np.abs(L))
+    with np.errstate(divide="ignore", invalid="ignore"):  # L = 0: no sign, skipped
+        phase_sign = L.imag / np.abs(L)
+    roots = lr.roots(im_phase, w, phase_sign)
     gm = []
     for wr in roots:
-        Li = _L(ss, [wr])[0]
+        Li = resp.exact(wr)
         if -TINY < Li.real < 0:  # |L| at round-off level (a channel the law ignores)
             continue
         if Li.real < 0:
             gm.append((-1.0 / Li.real, wr))
-    L0, Linf, wtop = _ends(ss)
+    L0, Linf, wtop = lr.ends(ss, resp)
     if L0 is not None and L0.real < -TINY and abs(L0.imag) <= 1e-12 * abs(L0):
         gm.insert(0, (-1.0 / L0.real, 0.0))
     if Linf.real < -TINY and abs(Linf.imag) <= 1e-12 * max(abs(Linf), 1e-300):
@@ -367,12 +254,12 @@ def loop_margins(loop, *, name: str = "loop", dt=None) -> LoopMargins:
 
     # phase and delay margins at |L| = 1
     def logmag(lw):
-        return math.log(abs(_L(ss, [math.exp(lw)])[0]))
+        return math.log(abs(resp.at(math.exp(lw))))
     with np.errstate(divide="ignore"):
-        cross = _roots(logmag, w, np.log(np.abs(L)))
+        cross = lr.roots(logmag, w, np.log(np.abs(L)))
     pms, dms = [], []
     for wc in cross:
-        Lc = _L(ss, [wc])[0]
+        Lc = resp.exact(wc)
         ph = math.atan2(Lc.imag, Lc.real) + math.pi  # (0, 2π]
         pm = (ph + math.pi) % two_pi - math.pi       # (−π, π]
         pms.append(math.degrees(pm))
@@ -389,12 +276,13 @@ def loop_margins(loop, *, name: str = "loop", dt=None) -> LoopMargins:
     if ss.dt is None and abs(Linf) >= 1:
         dm, dmf = 0.0, math.inf
 
-    s_pk, s_w = _peak(ss, w, 1.0, 0.0, (L, dL))
-    t_pk, t_w = _peak(ss, w, 0.0, 1.0, (L, dL))
-    disk = _disk(ss, w, 0.0, (L, dL))
+    s_pk, s_w = lr.peak(resp, ss, w, 1.0, 0.0, (L, dL))
+    t_pk, t_w = lr.peak(resp, ss, w, 0.0, 1.0, (L, dL))
+    disk = _disk(resp, w, 0.0, (L, dL))
     return LoopMargins(name, gms, gmw, float(glo[0]), float(glo[1]), float(ghi[0]),
                        float(ghi[1]), pms, cf, dms, pm, pmf, dm, dmf, float(s_pk),
-                       s_w / two_pi, float(t_pk), t_w / two_pi, disk, mr, ss)
+                       s_w / two_pi, float(t_pk), t_w / two_pi, disk, mr, ss,
+                       "partial fractions" if resp.modal else "direct solves")
 
 
 # --------------------------------------------------------------------- multivariable margins
@@ -454,7 +342,7 @@ def multiloop_disk_margin(P, K, *, sigma: float = 0.0) -> MultiLoopDisk:
         Mo = np.linalg.inv(eye + Lo) + c * eye
         return np.array([mu_diag(m) for m in Mo])
 
-    w = _grid_from([_poles(Acl, P.dt), P.poles_s(), K.poles_s()], P.dt)
+    w = lr.grid_from([lr.poles(Acl, P.dt), P.poles_s(), K.poles_s()], P.dt)
     mus = mu_at(w)
     i = int(np.argmax(mus))
     best = (float(mus[i]), float(w[i]))
