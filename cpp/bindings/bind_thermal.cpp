@@ -66,7 +66,8 @@ void bind_thermal(py::module_& m) {
       .def_readwrite("oil", &ThermalFilm::oil)
       .def_readwrite("options", &ThermalFilm::options)
       .def_readwrite("thd", &ThermalFilm::thd)
-      .def_readwrite("thd_options", &ThermalFilm::thd_options);
+      .def_readwrite("thd_options", &ThermalFilm::thd_options)
+      .def_readwrite("upstream", &ThermalFilm::upstream);
   py::class_<ThermalFilmState>(m, "ThermalFilmState")
       .def_readonly("effective_temperature_c", &ThermalFilmState::effective_temperature_c)
       .def_readonly("max_temperature_c", &ThermalFilmState::max_temperature_c)
@@ -79,7 +80,12 @@ void bind_thermal(py::module_& m) {
       .def_readonly("supply_flow_m3_s", &ThermalFilmState::supply_flow_m3_s)
       .def_readonly("mean_temperature_c", &ThermalFilmState::mean_temperature_c)
       .def_readonly("temperature_c", &ThermalFilmState::temperature_c)
-      .def_readonly("viscosity_field", &ThermalFilmState::viscosity_field);
+      .def_readonly("viscosity_field", &ThermalFilmState::viscosity_field)
+      .def_readonly("recirculation_flow_m3_s", &ThermalFilmState::recirculation_flow_m3_s)
+      .def_readonly("recirculation_temperature_c",
+                    &ThermalFilmState::recirculation_temperature_c)
+      .def_readonly("inlet_mask", &ThermalFilmState::inlet_mask)
+      .def_readonly("flows", &ThermalFilmState::flows);
   py::class_<ThermalSystemResult>(m, "ThermalSystemResult")
       .def_readonly("equilibrium", &ThermalSystemResult::equilibrium)
       .def_readonly("films", &ThermalSystemResult::films)

@@ -65,11 +65,12 @@ void ThdOptions::validate(const OilModel& oil) const {
     throw InputError("max_iter: expected 1 <= max_iter <= 1000, got " + std::to_string(max_iter));
 }
 
-ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
-                        const OilModel& oil, const ThdOptions& opt, double omega) {
-  ThdFilmState st;
-  st.flows = solver.film_flows();
-  const FilmFlows& fl = st.flows;
+ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
+                        const OilModel& oil, const ThdOptions& opt, double omega, bool pad) {
+  ThdFieldParts parts;
+  parts.pad = pad;
+  parts.flows = solver.film_flows();
+  const FilmFlows& fl = parts.flows;
   const int N = static_cast<int>(sol.h_m.rows()), K1 = static_cast<int>(sol.h_m.cols());
   const int nn = N * K1, Kl = K1 - 1;
   const double Ts = opt.supply_temperature_c;
@@ -89,6 +90,23 @@ ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
   for (int n = 0; n < nn && any; ++n) {
     const int k = n % K1;
     if ((k == 0 && D[n + 1]) || (k == Kl && D[n - 1])) D[n] = 1;
+  }
+  if (pad && any) {
+    // a pad film (tilting pad, lobe): the prescribed-pressure gap between the pad's trailing
+    // and leading edges is the inlet, but not the trailing-edge column, whose circumferential
+    // upstream neighbour is on the pad: that cell is the pad's last, and what leaves it into
+    // the gap is the hot oil the pad passes on (to the next pad's inlet, ThermalFilm::upstream)
+    const std::vector<char> D0 = D;
+    auto col_in = [&](int j) {
+      for (int k = 1; k < Kl; ++k)
+        if (D0[j * K1 + k]) return true;
+      return false;
+    };
+    for (int j = 0; j < N; ++j) {
+      const int up = omega > 0.0 ? (j + N - 1) % N : (j + 1) % N;
+      if (col_in(j) && !col_in(up))
+        for (int k = 0; k < K1; ++k) D[j * K1 + k] = 0;
+    }
   }
   if (!any) {
     const int kmid = Kl / 2;
@@ -230,6 +248,21 @@ ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
     inlet(n, e, qp[n]);
     if (n % K1 < Kl) inlet(n, n + 1, qz[n]);
   }
+  parts.inlet = std::move(D);
+  parts.side_out = std::move(side_out);
+  parts.X0 = std::move(X0);
+  parts.X1 = std::move(X1);
+  parts.Q = Q;
+  parts.Qr = Qr;
+  parts.ta = ta;
+  parts.tb = tb;
+  return parts;
+}
+
+ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
+                        const OilModel& oil, const ThdOptions& opt, double omega) {
+  ThdFieldParts parts = thd_field(solver, sol, oil, opt, omega, false);
+  const double Q = parts.Q, Qr = parts.Qr, Ts = opt.supply_temperature_c;
   const double lam = opt.carry_over;
   const double Qf = opt.supply_flow_m3_s > 0.0 ? opt.supply_flow_m3_s : Q - lam * Qr;
   if (!(Q > 0.0 && Qf > 0.0))
@@ -238,29 +271,53 @@ ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
                            " m^3/s)");
   double Tin = Ts;
   if (Qr > 0.0) {
-    const double a = ta / Qr, b = tb / Qr;
+    const double a = parts.ta / Qr, b = parts.tb / Qr;
     Tin = (Qf * Ts + lam * Qr * a) / (Qf + lam * Qr * (1.0 - b));
   }
-  Eigen::VectorXd T = X0 + Tin * X1;
+  return thd_state(std::move(parts), sol, opt, omega, Tin, Qf);
+}
+
+ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const ThdOptions& opt,
+                       double omega, double Tin, double Qf) {
+  ThdFilmState st;
+  st.flows = std::move(parts.flows);
+  const FilmFlows& fl = st.flows;
+  const int N = static_cast<int>(sol.h_m.rows()), K1 = static_cast<int>(sol.h_m.cols());
+  const int nn = N * K1;
+  const double Ts = opt.supply_temperature_c;
+  const double TJ = std::isnan(opt.journal_temperature_c) ? Ts : opt.journal_temperature_c;
+  const double TB = std::isnan(opt.bush_temperature_c) ? Ts : opt.bush_temperature_c;
+  const double hJ = opt.journal_htc_w_m2k, hB = opt.bush_htc_w_m2k;
+  const std::vector<char>& D = parts.inlet;
+  const std::vector<double>& side_out = parts.side_out;
+  const double* A = fl.area_m2.data();
+  const double* phi = fl.dissipation_w.data();
+  const double Q = parts.Q, Qr = parts.Qr, ta = parts.ta, tb = parts.tb;
+  Eigen::VectorXd T = parts.X0 + Tin * parts.X1;
   if (mirror_symmetric(sol.h_m)) symmetrize(T.data(), N, K1);
   if (!T.allFinite())
     throw ConvergenceError("THD energy equation: non-finite film temperature");
   st.temperature_c = Eigen::Map<const RowMatrixXd>(T.data(), N, K1);
   st.inlet_mask.resize(N, K1);
   double area = 0.0, tmean = 0.0, qs = 0.0, ts = 0.0, P = 0.0, qj = 0.0, qb = 0.0;
+  // a pad film: the mean, the maximum and the power over the pad's cells only (the gap nodes
+  // are not film: they hold the inlet temperature and their shear is not the pad's)
+  double tmax = -std::numeric_limits<double>::infinity();
   for (int n = 0; n < nn; ++n) {
     st.inlet_mask.data()[n] = D[n] ? 1.0 : 0.0;
-    area += A[n];
-    tmean += A[n] * T[n];
     qs += side_out[n];
     ts += side_out[n] * T[n];
+    if (parts.pad && D[n]) continue;
+    area += A[n];
+    tmean += A[n] * T[n];
     P += phi[n];
+    tmax = std::max(tmax, T[n]);
     if (!D[n]) {
       qj += hJ * A[n] * (T[n] - TJ);
       qb += hB * A[n] * (T[n] - TB);
     }
   }
-  st.max_temperature_c = T.maxCoeff();
+  st.max_temperature_c = parts.pad ? std::max(tmax, Tin) : T.maxCoeff();
   st.mean_temperature_c = tmean / area;
   st.inlet_temperature_c = Tin;
   st.recirculation_temperature_c = Qr > 0.0 ? (ta + Tin * tb) / Qr : Tin;

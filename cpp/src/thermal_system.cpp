@@ -1,5 +1,7 @@
 // Thermal equilibrium of a system (thermal.hpp): the system equilibrium iterated with the
 // heat balance of each thermal film.
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,6 +15,92 @@
 #include "thermal_detail.hpp"
 
 namespace rotordyn {
+
+namespace {
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+/// The THD pad films' inlet temperatures (Ettles' hot-oil carry-over from the upstream pad,
+/// ThermalFilm::upstream), solved together — each pad's field is affine in its inlet
+/// temperature, so the ring is one small linear system — then their states and next fields.
+void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldParts>& parts,
+                const std::vector<const FilmSolution*>& sols, const std::vector<double>& wfs,
+                const std::vector<int>& off, const Eigen::VectorXd& X, Eigen::VectorXd& GX,
+                std::vector<ThermalFilmState>& films, bool& done, const SystemModel& m) {
+  std::vector<int> ring, pos(thermal.size(), -1);
+  for (std::size_t i = 0; i < thermal.size(); ++i)
+    if (sols[i] != nullptr) {
+      pos[i] = static_cast<int>(ring.size());
+      ring.push_back(static_cast<int>(i));
+    }
+  if (ring.empty()) return;
+  const int nr = static_cast<int>(ring.size());
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(nr, nr);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(nr);
+  std::vector<double> Qf(thermal.size(), 0.0);
+  for (int r = 0; r < nr; ++r) {
+    const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
+    const std::size_t u = static_cast<std::size_t>(thermal[i].upstream);
+    const ThdOptions& o = thermal[i].thd_options;
+    const ThdFieldParts& pi = parts[i];
+    const std::string& name = m.films[thermal[i].film].name;
+    if (pos[u] < 0)
+      throw InputError("thermal[" + std::to_string(i) + "].upstream: film '" +
+                       m.films[thermal[u].film].name + "' is not a pad film");
+    const ThdFieldParts& pu = parts[u];
+    double carried = pu.Qr > 0.0 ? o.carry_over * pu.Qr : 0.0;
+    double qf = o.supply_flow_m3_s > 0.0 ? o.supply_flow_m3_s : pi.Q - carried;
+    if (!(o.supply_flow_m3_s > 0.0) && qf < 0.0) {  // more hot oil than the pad draws
+      carried = pi.Q;
+      qf = 0.0;
+    }
+    if (!(pi.Q > 0.0 && qf + carried > 0.0))
+      throw ConvergenceError("THD energy equation, film '" + name + "': the pad draws no oil "
+                             "(flow from the inlet " + num(pi.Q) + " m^3/s)");
+    Qf[i] = qf;
+    // (Q_f + c) T_in,i − c (tb_u/Q_r,u) T_in,u = Q_f T_s + c ta_u/Q_r,u
+    A(r, r) += qf + carried;
+    if (carried > 0.0) {
+      A(r, pos[u]) -= carried * pu.tb / pu.Qr;
+      b[r] += carried * pu.ta / pu.Qr;
+    }
+    b[r] += qf * o.supply_temperature_c;
+  }
+  const Eigen::VectorXd tin = A.fullPivLu().solve(b);
+  if (!tin.allFinite())
+    throw ConvergenceError("THD energy equation: the pads' inlet temperatures are singular "
+                           "(no fresh oil reaches the ring)");
+  for (int r = 0; r < nr; ++r) {
+    const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
+    ThdFilmState ts = thd_state(std::move(parts[i]), *sols[i], thermal[i].thd_options, wfs[i],
+                                tin[r], Qf[i]);
+    const int nn = off[i + 1] - off[i];
+    GX.segment(off[i], nn) = Eigen::Map<const Eigen::VectorXd>(ts.temperature_c.data(), nn);
+    const double res = (GX.segment(off[i], nn) - X.segment(off[i], nn)).cwiseAbs().maxCoeff();
+    if (res > thermal[i].thd_options.tol_k) done = false;
+    ThermalFilmState& st = films[i];
+    st.mean_temperature_c = st.effective_temperature_c = ts.mean_temperature_c;
+    st.max_temperature_c = ts.max_temperature_c;
+    st.inlet_temperature_c = ts.inlet_temperature_c;
+    st.temperature_rise_k = ts.max_temperature_c - ts.inlet_temperature_c;
+    st.viscosity_pa_s = thermal[i].oil.viscosity_pa_s(ts.mean_temperature_c);
+    st.power_loss_w = ts.power_loss_w;
+    st.film_flow_m3_s = ts.film_flow_m3_s;
+    st.side_flow_m3_s = ts.side_flow_m3_s;
+    st.supply_flow_m3_s = ts.supply_flow_m3_s;
+    st.recirculation_flow_m3_s = ts.recirculation_flow_m3_s;
+    st.recirculation_temperature_c = ts.recirculation_temperature_c;
+    st.temperature_c = ts.temperature_c;
+    st.viscosity_field = ts.flows.viscosity_pa_s;
+    st.inlet_mask = ts.inlet_mask;
+    st.flows = ts.flows;
+  }
+}
+}  // namespace
 
 
 ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
@@ -35,6 +123,11 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
         throw InputError("thermal[" + std::to_string(i) + "].film: film " +
                          std::to_string(t.film) + " is given twice");
     t.oil.validate();
+    if (t.upstream >= 0 && !(t.thd && t.upstream < static_cast<int>(thermal.size()) &&
+                             thermal[static_cast<std::size_t>(t.upstream)].thd))
+      throw InputError("thermal[" + std::to_string(i) + "].upstream: expected the index of a "
+                       "THD film in [0, " + std::to_string(thermal.size() - 1) + "] on a THD "
+                       "film (or -1), got " + std::to_string(t.upstream));
     if (t.thd) {
       t.thd_options.validate(t.oil);
       max_iter = std::max(max_iter, t.thd_options.max_iter);
@@ -102,6 +195,9 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
     const Eigen::VectorXd& r = out.equilibrium.r;
     r0 = r;
     bool done = true;
+    std::vector<ThdFieldParts> parts(thermal.size());
+    std::vector<const FilmSolution*> sols(thermal.size(), nullptr);
+    std::vector<double> wfs(thermal.size(), 0.0);
     for (std::size_t i = 0; i < thermal.size(); ++i) {
       const FilmCoupling& fc = m.films[thermal[i].film];
       Eigen::VectorXd rc(fc.coords.size());
@@ -110,6 +206,12 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
       ReynoldsSolver& rs = *fsol[i];
       const double wf = omega * fc.spin_factor;
       const FilmSolution& sol = rs.solve(h, RowMatrixXd::Zero(h.rows(), h.cols()), wf);
+      if (thermal[i].thd && thermal[i].upstream >= 0) {  // a pad: after the loop (its ring)
+        parts[i] = thd_field(rs, sol, thermal[i].oil, thermal[i].thd_options, wf, true);
+        sols[i] = &sol;
+        wfs[i] = wf;
+        continue;
+      }
       if (thermal[i].thd) {
         const ThdFilmState ts = thd_energy(rs, sol, thermal[i].oil, thermal[i].thd_options, wf);
         const int nn = off[i + 1] - off[i];
@@ -128,6 +230,10 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
         st.supply_flow_m3_s = ts.supply_flow_m3_s;
         st.temperature_c = ts.temperature_c;
         st.viscosity_field = ts.flows.viscosity_pa_s;  // the field of this equilibrium
+        st.recirculation_flow_m3_s = ts.recirculation_flow_m3_s;
+        st.recirculation_temperature_c = ts.recirculation_temperature_c;
+        st.inlet_mask = ts.inlet_mask;
+        st.flows = ts.flows;
         continue;
       }
       const double P = sol.friction_torque_nm * wf;
@@ -156,6 +262,7 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
       f_prev[i] = f;
       T[i] = Tnext;
     }
+    pad_states(thermal, parts, sols, wfs, off, X, GX, out.films, done, m);
     if (off.back() > 0 && !done) {  // the THD films' next temperatures
       X = mixer.next(X, GX);
       for (std::size_t i = 0; i < thermal.size(); ++i)

@@ -19,6 +19,8 @@
 // (carry_over) of the flow Q_r reaching the inlet from the film at its mixing-cup temperature
 // T_r (solved exactly: T is affine in T_in). The same mixing as the effective model.
 #pragma once
+#include <vector>
+
 #include "rotordyn/thermal.hpp"
 
 namespace rotordyn {
@@ -47,6 +49,29 @@ struct ThdFilmState {
 /// The energy equation at the solver's last (full-output) solution `sol` at ω (rad/s).
 ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
                         const OilModel& oil, const ThdOptions& opt, double omega);
+
+/// The energy equation's solution before the inlet temperature is known: the field is affine
+/// in it, T = X0 + T_in X1, and so is the mixing-cup temperature of the flow Q_r that leaves
+/// the film into the inlet nodes, Q_r T_r = ta + T_in tb. `pad`: a pad film (tilting pad,
+/// lobe of a fixed-geometry bearing; the pressure-prescribed gap between its trailing and
+/// leading edges is the inlet): the trailing-edge column is the pad's last cell, not inlet,
+/// and Q_r is the hot oil the pad passes on to the next pad's inlet.
+struct ThdFieldParts {
+  FilmFlows flows;
+  std::vector<char> inlet;       ///< (n_nodes,) 1 on the inlet nodes
+  std::vector<double> side_out;  ///< (n_nodes,) flow leaving through the ends, m³/s
+  Eigen::VectorXd X0, X1;        ///< (n_nodes,) degC, degC/degC
+  double Q = 0.0;                ///< from the inlet into the film, m³/s
+  double Qr = 0.0;               ///< from the film into the inlet, m³/s
+  double ta = 0.0, tb = 0.0;     ///< Q_r T_r = ta + T_in tb
+  bool pad = false;
+};
+ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
+                        const OilModel& oil, const ThdOptions& opt, double omega, bool pad);
+/// The film's state at the inlet temperature T_in (degC) with the fresh flow Q_f (m³/s).
+/// A pad film's mean, maximum and power loss cover the pad's cells only (not the gap).
+ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const ThdOptions& opt,
+                       double omega, double t_in_c, double supply_flow_m3_s);
 
 struct ThdEquilibrium {
   EquilibriumSolution equilibrium;   ///< under the load with the viscosity field μ(T)

@@ -107,6 +107,17 @@ struct ThermalFilm {
   ThermalOptions options;
   bool thd = false;
   ThdOptions thd_options;  ///< used when thd
+  /// THD pad films (tilting pads, lobes): the index into the thermal list of the film whose
+  /// trailing-edge hot oil reaches this film's inlet (the upstream pad in the direction of
+  /// rotation), with the film marked as a pad (thd_field). The inlet temperature mixes the
+  /// fresh flow Q_f at T_s with the carried-over part λ (thd_options.carry_over) of the
+  /// upstream pad's outflow Q_r,u at its mixing-cup temperature T_r,u (Ettles' hot-oil
+  /// carry-over): T_in = (Q_f T_s + λ Q_r,u T_r,u)/(Q_f + λ Q_r,u), Q_f the pad's demand
+  /// Q − λ Q_r,u (or thd_options.supply_flow_m3_s when > 0); when λ Q_r,u exceeds the demand
+  /// the pad draws Q of the carried-over oil alone. The ring's inlet temperatures are solved
+  /// together (a small linear system: each field is affine in its T_in). −1: a plain film
+  /// mixing its own recirculation.
+  int upstream = -1;
 };
 
 /// The thermal state of one film at the system's thermal equilibrium (as ThermalEquilibrium).
@@ -119,6 +130,12 @@ struct ThermalFilmState {
   /// viscosity_pa_s = μ(mean). Empty fields for effective-temperature films.
   double mean_temperature_c = 0.0;
   RowMatrixXd temperature_c, viscosity_field;
+  /// THD films: the flow into the inlet nodes (plain: back to the groove; pad: the hot oil
+  /// passed on to the next pad) and its mixing-cup temperature; the inlet nodes; the film's
+  /// face flows and cell dissipation (the energy balance's terms).
+  double recirculation_flow_m3_s = 0.0, recirculation_temperature_c = 0.0;
+  RowMatrixXd inlet_mask;
+  FilmFlows flows;
 };
 
 struct ThermalSystemResult {

@@ -12,7 +12,8 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled
-from rotordyn.bearings import FluidFilmBearing, Oil
+from rotordyn.bearings import FixedGeometryBearing, FluidFilmBearing, Oil, TiltingPadBearing
+from rotordyn.bearings.pad_thd import check_carry_over, pad_options, pad_thermal_films
 from rotordyn.bearings.thd import THERMAL_MODELS, thd_options
 from rotordyn.bearings.thermal import thermal_options
 from rotordyn.errors import InputError
@@ -71,19 +72,30 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
             raise InputError("supply_temperature_c: required (the oil's supply temperature, "
                              "degC) when the model has no [thermal] table")
         supply_temperature_c = model_.supply_temperature_c
+    if model is None:
+        model = getattr(thermal_model, "model", "effective") if thermal_model is not None \
+            else "effective"
+    v.choice("model", model, THERMAL_MODELS)
     plain = [i for i, b in enumerate(system.bearings) if isinstance(b, FluidFilmBearing)]
+    pads = [i for i, b in enumerate(system.bearings)
+            if isinstance(b, (TiltingPadBearing, FixedGeometryBearing))]
     if bearings is None:
-        idx = plain
+        idx = plain + (pads if model == "thd" else [])
     else:
         idx = [v.integer("bearings[]", i, lo=0, hi=len(system.bearings) - 1) for i in bearings]
         for i in idx:
-            if i not in plain:
+            if i in pads and model != "thd":
+                raise InputError(f"model: bearing {i} is a {type(system.bearings[i]).__name__};"
+                                 " its thermal film is the THD model (model = 'thd'); the "
+                                 "effective-temperature model is for plain journal bearings")
+            if i not in plain and i not in pads:
                 raise InputError(f"bearings: bearing {i} is a "
                                  f"{type(system.bearings[i]).__name__}; the thermal model is "
-                                 "available for plain journal bearings (type = 'journal')")
+                                 "available for plain journal bearings (type = 'journal') and, "
+                                 "with model = 'thd', tilting-pad and fixed-geometry bearings")
     if not idx:
         raise InputError("bearings: the system has no plain journal bearing for the thermal "
-                         "model")
+                         "model (pad bearings: model = 'thd')")
     def options(i):
         own = model_.film(system.bearings[i].name) if model_ is not None else None
 
@@ -96,10 +108,6 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
                                carry_over=pick(carry_over, "carry_over", 0.0),
                                effective_factor=pick(effective_factor, "effective_factor", 0.5),
                                tol_k=tol_k)
-    if model is None:
-        model = getattr(thermal_model, "model", "effective") if thermal_model is not None \
-            else "effective"
-    v.choice("model", model, THERMAL_MODELS)
     thd = model == "thd"
 
     def wall(given, field):
@@ -118,13 +126,21 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
                                bush_htc_w_m2k=hb, journal_temperature_c=tj,
                                bush_temperature_c=tb, tol_k=tol_k) for i in idx} if thd else {}
     asm = assembled(system)
-    if asm.pad_penalty is not None:
-        raise InputError("bearings: the system thermal model is not available with tilting-pad "
-                         "bearings in the system")
+    omega = hz_to_rad_s(float(speed_hz))
     films = []
+    rows = []  # per thermal film: (bearing index, film index)
     for i in idx:
+        if i in pads:  # every pad (lobe) film, its inlet fed by the upstream pad
+            own = [j for j, o in enumerate(asm.film_owner) if o == i]
+            check_carry_over(opts[i].carry_over, f"thermal.films.{system.bearings[i].name or i}"
+                             ".carry_over")
+            films += pad_thermal_films(own[0], len(own), len(films), oil.to_core(),
+                                       pad_options(thd_opts[i], len(own)), omega)
+            rows += [(i, j) for j in own]
+            continue
+        rows.append((i, asm.film_owner.index(i)))
         tf = _core.ThermalFilm()
-        tf.film = asm.film_owner.index(i)
+        tf.film = rows[-1][1]
         tf.oil = oil.to_core()
         tf.options = opts[i]
         if thd:
@@ -134,18 +150,26 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     opt = _core.EquilibriumOptions()
     opt.polish = True
     a = asm.config_vector(None, None)
-    res = _core.thermal_system_equilibrium(asm.model, films, hz_to_rad_s(float(speed_hz)),
+    res = _core.thermal_system_equilibrium(asm.model, films, omega,
                                            float(chamber_pressure_pa), a, opt)
     eq = res.equilibrium
     r = np.asarray(eq.r)
     st = list(res.films)
-    mus = {i: s.viscosity_pa_s for i, s in zip(idx, st)}
-    fields = {i: np.array(s.viscosity_field) for i, s in zip(idx, st)} if thd else {}
+    mus, fields = {}, {}
+    for i in idx:
+        own = [s for (b, _), s in zip(rows, st) if b == i]
+        if i in pads:  # μ(mean over the pads) as the reference; the frozen field per pad
+            mus[i] = oil.viscosity_pa_s(float(np.mean([s.mean_temperature_c for s in own])))
+            fields[i] = tuple(np.array(s.viscosity_field) for s in own)
+        else:
+            mus[i] = own[0].viscosity_pa_s
+            if thd:
+                fields[i] = np.array(own[0].viscosity_field)
     hot = dataclasses.replace(system, bearings=tuple(
-        dataclasses.replace(b, viscosity_pa_s=mus[i], viscosity_field_pa_s=fields.get(i))
+        dataclasses.replace(b, viscosity_pa_s=float(mus[i]), viscosity_field_pa_s=fields.get(i))
         if i in mus else b for i, b in enumerate(system.bearings)))
     bcs = {bc.index: bc for bc in asm.bearings}
-    names = tuple(bcs[i].name for i in idx)
+    names = tuple(asm.model.films[j].name if i in pads else bcs[i].name for i, j in rows)
 
     def col(name):
         return np.array([getattr(s, name) for s in st])
@@ -157,8 +181,8 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         temperature_rise_k=col("temperature_rise_k"), viscosity_pa_s=col("viscosity_pa_s"),
         power_loss_w=col("power_loss_w"), film_flow_m3_s=col("film_flow_m3_s"),
         side_flow_m3_s=col("side_flow_m3_s"), supply_flow_m3_s=col("supply_flow_m3_s"),
-        journal_x_m=np.array([r[bcs[i].jx] for i in idx]),
-        journal_y_m=np.array([r[bcs[i].jy] for i in idx]),
+        journal_x_m=np.array([r[bcs[i].jx] for i, _ in rows]),
+        journal_y_m=np.array([r[bcs[i].jy] for i, _ in rows]),
         r=r, iterations=int(res.iterations), system=hot, status=eq.status, message=eq.message,
         thermal_model=model,
         temperature_c=tuple(np.array(s.temperature_c) for s in st) if thd else ())

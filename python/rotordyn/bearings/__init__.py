@@ -35,6 +35,7 @@ from rotordyn.bearings.tilting_pad import TiltingPadBearing
 from rotordyn.bearings.tilt import (MisalignedEquilibrium, TiltedFilm, misaligned_equilibrium,
                                     tilted_coefficients, tilted_forces)
 from rotordyn.bearings.thd import THERMAL_MODELS, ThdEquilibriumResult
+from rotordyn.bearings.pad_thd import PadThdResult
 
 BEARING_TYPES = {"journal": FluidFilmBearing, "active_journal": ActiveJournalBearing,
                  "fixed_geometry": FixedGeometryBearing, "tilting_pad": TiltingPadBearing,
@@ -50,3 +51,4 @@ __all__ = ["ActiveJournalBearing", "BEARING_TYPES", "BearingEquilibrium", "Coeff
            "THERMAL_MODELS", "ThdEquilibriumResult"]
 __all__ += ["MisalignedEquilibrium", "TiltedFilm", "misaligned_equilibrium",
             "tilted_coefficients", "tilted_forces"]
+__all__ += ["PadThdResult"]

@@ -34,6 +34,7 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import SystemParts, check_arc, check_film_fields, pad_film
 from rotordyn.bearings.coefficients import coefficient_table
+from rotordyn.bearings.pad_thd import freeze_fields, pad_fields, pad_thd_equilibrium
 from rotordyn.errors import InputError
 
 KINDS = {  # n lobes, orientation deg, preload, offset
@@ -78,8 +79,14 @@ class FixedGeometryBearing:
     # "finite" (the finite-length Reynolds film) or "short": the core's short-bearing (Ocvirk)
     # film, p = 6μG/h³·(z² − L²/4) node by node (plain 360° bearing only: partial_arc, 360°)
     film_model: str = "finite"
+    # a frozen viscosity per node and lobe, Pa·s (the THD lobes' fields, pad_thd.py); None:
+    # viscosity_pa_s everywhere
+    viscosity_field_pa_s: tuple | None = None
 
     def __post_init__(self):
+        if self.viscosity_field_pa_s is not None:
+            object.__setattr__(self, "viscosity_field_pa_s",
+                               freeze_fields(self.viscosity_field_pa_s))
         self.check("fixed_geometry_bearing", None)
 
     # -- resolved geometry ----------------------------------------------------------------
@@ -152,6 +159,7 @@ class FixedGeometryBearing:
                 n_axial=self.n_axial, coords=[jx, jy], supply_pressure_pa=self.supply_pressure_pa,
                 spin=spin, pockets=pockets, turbulence=self.turbulence,
                 density_kg_m3=self.density_kg_m3, short_bearing=self.film_model == "short"))
+        pad_fields(self.viscosity_field_pa_s, out, f"{name}.viscosity_field_pa_s")
         return out
 
     def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:
@@ -190,3 +198,24 @@ class FixedGeometryBearing:
         parallel over speeds (``n_threads``, 0: all cores): a :class:`CoefficientTable`."""
         parts = SystemParts(films=self.films(0, 1, self.name or "bearing"), tables=[])
         return coefficient_table(parts, load_n, speeds_hz, self.clearance_m, n_threads=n_threads)
+
+    def thermal_equilibrium(self, *, load_n, speed_hz: float, oil, supply_temperature_c: float,
+                            carry_over: float = 0.0, supply_flow_m3_s: float = 0.0,
+                            journal_htc_w_m2k: float = 0.0, bush_htc_w_m2k: float = 0.0,
+                            journal_temperature_c: float | None = None,
+                            bush_temperature_c: float | None = None, tol_k: float = 1e-6):
+        """Thermo-hydrodynamic equilibrium of the lobes under ``load_n`` (N) at ``speed_hz``
+        (as :meth:`rotordyn.bearings.TiltingPadBearing.thermal_equilibrium`: per lobe the
+        energy equation, each lobe's inlet groove mixing supply oil with the part
+        ``carry_over`` of the upstream lobe's hot oil) and K, C with the field frozen: a
+        :class:`rotordyn.bearings.pad_thd.PadThdResult` (no pad tilts)."""
+        from rotordyn.bearings.thd import thd_options
+
+        opts = thd_options(supply_temperature_c=supply_temperature_c,
+                           supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                           journal_htc_w_m2k=journal_htc_w_m2k, bush_htc_w_m2k=bush_htc_w_m2k,
+                           journal_temperature_c=journal_temperature_c,
+                           bush_temperature_c=bush_temperature_c, tol_k=tol_k)
+        parts = SystemParts(films=self.films(0, 1, self.name or "bearing"), tables=[])
+        return pad_thd_equilibrium(parts, oil=oil, opts=opts, load_n=load_n, speed_hz=speed_hz,
+                                   clearance_m=self.clearance_m, whirl_ratio=None)

@@ -32,6 +32,7 @@ from rotordyn._common.status import CONVERGED
 from rotordyn.bearings._film import (SystemParts, check_arc, check_film_fields, check_load,
                                      check_speeds, operating_table, pad_film, speed_limit)
 from rotordyn.bearings.coefficients import coefficient_table
+from rotordyn.bearings.pad_thd import freeze_fields, pad_fields, pad_thd_equilibrium
 from rotordyn.errors import InputError
 
 
@@ -63,6 +64,10 @@ class TiltingPadBearing:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
+    # a frozen viscosity per node and pad, Pa·s: per pad (N_pad, n_axial + 1) as nested tuples
+    # (the THD pads' temperature fields at their thermal equilibrium, pad_thd.py); None:
+    # viscosity_pa_s everywhere
+    viscosity_field_pa_s: tuple | None = None
     # deprecated spelling of tilt_stiffness_n_m_per_rad (read, moved there, then None)
     tilt_stiffness_nm_per_rad: float | None = None
 
@@ -81,6 +86,9 @@ class TiltingPadBearing:
                           RotordynDeprecationWarning, stacklevel=3)
             object.__setattr__(self, "tilt_stiffness_n_m_per_rad", old)
             object.__setattr__(self, "tilt_stiffness_nm_per_rad", None)
+        if self.viscosity_field_pa_s is not None:
+            object.__setattr__(self, "viscosity_field_pa_s",
+                               freeze_fields(self.viscosity_field_pa_s))
         self.check("tilting_pad_bearing", None)
 
     def check(self, where: str, n_stations: int | None) -> None:
@@ -181,6 +189,7 @@ class TiltingPadBearing:
             S[on, 1] = -np.cos(th) * sp
             pf.coupling.shape = S
             films.append(pf)
+        pad_fields(self.viscosity_field_pa_s, films, f"{name}.viscosity_field_pa_s")
         return SystemParts(films=films, tables=[], n_extra=n, M=M, K=K,
                            C=np.zeros((2 + n, 2 + n)), labels=tuple(labels), penalty=P,
                            pad_groups=groups)
@@ -218,6 +227,37 @@ class TiltingPadBearing:
 
             raise ConvergenceError(f"tilting-pad equilibrium: {status[0]}: {message[0]}")
         return r[0], K[0], C[0], M
+
+    def thermal_equilibrium(self, *, load_n, speed_hz: float, oil, supply_temperature_c: float,
+                            carry_over: float = 0.0, supply_flow_m3_s: float = 0.0,
+                            journal_htc_w_m2k: float = 0.0, bush_htc_w_m2k: float = 0.0,
+                            journal_temperature_c: float | None = None,
+                            bush_temperature_c: float | None = None, tol_k: float = 1e-6,
+                            whirl_ratio: float | None = 1.0):
+        """Thermo-hydrodynamic equilibrium under ``load_n`` (N) at ``speed_hz``: per pad the
+        energy equation, μ(T) per node of ``oil`` (:class:`rotordyn.bearings.Oil`), the
+        inlet of each pad mixing supply oil at ``supply_temperature_c`` °C with the part
+        ``carry_over`` λ of the hot oil leaving the upstream pad (Ettles' carry-over),
+        ``supply_flow_m3_s`` the bearing's fresh oil (0: each pad's demand), heat-transfer
+        coefficients W/(m² K) to journal and pads (0: adiabatic) at the wall temperatures °C
+        (None: the supply temperature) — iterated with the pad equilibrium (journal and tilts)
+        in one C++ call, to max |ΔT| <= ``tol_k`` K. K, C (2×2, reduced over the pads at
+        ``whirl_ratio``·Ω; None: static condensation) with the temperature field frozen:
+        a :class:`rotordyn.bearings.pad_thd.PadThdResult` (module ``pad_thd`` for the
+        model)."""
+        from rotordyn.bearings.thd import thd_options
+
+        if whirl_ratio is not None:
+            v.finite("whirl_ratio", whirl_ratio)
+        opts = thd_options(supply_temperature_c=supply_temperature_c,
+                           supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                           journal_htc_w_m2k=journal_htc_w_m2k, bush_htc_w_m2k=bush_htc_w_m2k,
+                           journal_temperature_c=journal_temperature_c,
+                           bush_temperature_c=bush_temperature_c, tol_k=tol_k)
+        parts = self.system_parts(0, 1, 2, self.name or "bearing")
+        return pad_thd_equilibrium(parts, oil=oil, opts=opts, load_n=load_n, speed_hz=speed_hz,
+                                   clearance_m=self.clearance_m, whirl_ratio=whirl_ratio,
+                                   tilts=self.pad_tilts_rad)
 
     def pad_films(self):
         """The pads' C++ film couplings on the standalone coordinates (x, y, pad dofs)."""

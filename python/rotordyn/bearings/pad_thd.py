@@ -1,0 +1,286 @@
+"""Thermo-hydrodynamic (THD) films of pad bearings: tilting pads and the lobes of
+fixed-geometry bearings (issue 20; docs/film-physics.md §"THD pad bearings").
+
+Each pad (lobe) has the plain film's energy equation on its own grid (upwind convection by the
+Reynolds flows, viscous dissipation, adiabatic or heat transfer to journal and pad), the
+viscosity μ(T) per node; the gap between the pads is the inlet. The inlet temperature of pad k
+mixes fresh oil at the supply temperature with the hot oil the upstream pad k − 1 (in the
+direction of rotation) passes on at its trailing edge — Ettles' hot-oil carry-over
+(C. M. McC. Ettles, "Hot oil carry-over in thrust bearings", Proc. IMechE 184 (3L), 1969–70,
+75–81; the same mixing balance as in Ettles' tilting-pad journal analyses):
+
+    T_in,k = (Q_f,k T_s + λ Q_out,k−1 T_out,k−1) / (Q_f,k + λ Q_out,k−1),
+    Q_f,k = Q_in,k − λ Q_out,k−1   (the pad's own demand; or the given supply flow / n_pads),
+
+λ the carry-over (mixing) coefficient in [0, 1] (``carry_over``), Q_out, T_out the flow and
+mixing-cup temperature leaving the pad's trailing-edge cells. Each field is affine in its
+inlet temperature, so the ring of inlet temperatures is solved exactly (a small linear system)
+at every outer step. The energy equations, the pad equilibrium (tilts and journal, the
+pad-assembly Newton of ``pad_equilibrium.cpp``) and μ(T) are iterated in one C++ call
+(``_core.thermal_system_equilibrium``). K and C are the perturbation coefficients at the
+thermal equilibrium with the **temperature (viscosity) field frozen**, reduced over the pads'
+coordinates at the whirl frequency as for the isothermal bearing.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn.errors import ConvergenceError, InputError
+
+
+def pad_fields(fields, films, where: str):
+    """Check a frozen per-pad viscosity field ((n_pads,) arrays (N_pad, n_axial + 1), Pa·s)
+    against the pad films and put it on their couplings. InputError naming ``where``."""
+    if fields is None:
+        return
+    if len(fields) != len(films):
+        raise InputError(f"{where}: expected {len(films)} pad fields, got {len(fields)}")
+    for k, (f, pf) in enumerate(zip(fields, films)):
+        a = np.asarray(f, dtype=float)
+        shape = (pf.coupling.grid.n_circ, pf.coupling.grid.n_axial + 1)
+        if a.shape != shape or not np.all(np.isfinite(a)) or not np.all(a > 0.0):
+            raise InputError(f"{where}[{k}]: expected finite values > 0 of shape {shape}, got "
+                             f"shape {a.shape}")
+        pf.coupling.viscosity_field = a
+
+
+def freeze_fields(fields) -> tuple:
+    """A per-pad field as nested tuples (hashable, for the frozen bearing dataclasses)."""
+    return tuple(tuple(map(tuple, np.asarray(f, dtype=float).tolist())) for f in fields)
+
+
+def pad_thermal_films(first_film: int, n_pads: int, first: int, oil, opts, omega: float):
+    """The core's thermal films of one pad bearing's ``n_pads`` films (model indices
+    ``first_film``…), placed at ``first``… in the thermal list, each pad's upstream the pad
+    before it in the direction of rotation (sign of ``omega``)."""
+    out = []
+    for k in range(n_pads):
+        tf = _core.ThermalFilm()
+        tf.film = first_film + k
+        tf.oil = oil
+        tf.thd = True
+        tf.thd_options = opts
+        tf.upstream = first + ((k - 1) % n_pads if omega > 0 else (k + 1) % n_pads)
+        out.append(tf)
+    return out
+
+
+def pad_options(opts, n_pads: int):
+    """Per-pad THD options: a given total supply flow is shared equally by the pads."""
+    if opts.supply_flow_m3_s > 0.0:
+        o = _core.ThdOptions()
+        for f in ("supply_temperature_c", "carry_over", "journal_htc_w_m2k", "bush_htc_w_m2k",
+                  "journal_temperature_c", "bush_temperature_c", "tol_k", "max_iter"):
+            setattr(o, f, getattr(opts, f))
+        o.supply_flow_m3_s = opts.supply_flow_m3_s / n_pads
+        return o
+    return opts
+
+
+def check_carry_over(value, field: str = "carry_over") -> float:
+    """The carry-over (mixing) coefficient λ in [0, 1] (InputError naming ``field``)."""
+    x = v.finite(field, value)
+    if not 0.0 <= x <= 1.0:
+        raise InputError(f"{field}: expected 0 <= {field.rsplit('.', 1)[-1]} <= 1 (the hot-oil "
+                         f"carry-over, mixing coefficient), got {x}")
+    return x
+
+
+@dataclass(frozen=True, slots=True)
+class PadThdResult:
+    """THD equilibrium of a pad bearing (tilting pads or fixed-geometry lobes) and its K, C
+    with the temperature field frozen.
+
+    Per pad (arrays (n_pads,)): temperatures °C ``max_temperature_c``, ``mean_temperature_c``
+    (area mean over the pad), ``inlet_temperature_c`` (after mixing), ``outlet_temperature_c``
+    (mixing-cup of the hot oil leaving the trailing edge); ``power_loss_w`` (dissipation of the
+    pad's cells); flows m³/s ``film_flow_m3_s`` (into the pad at its leading edge),
+    ``outlet_flow_m3_s`` (out at its trailing edge), ``side_flow_m3_s``, ``supply_flow_m3_s``
+    (fresh oil). Totals: the properties ``max_temperature_c_total`` … and
+    :meth:`to_frame`'s ``total`` row. Journal position (m), pad tilts (rad; tilting pads),
+    K (N/m), C (N·s/m) 2×2 reduced over the pad coordinates at the whirl frequency (dF =
+    −K dq − C dq̇), ``K_full``, ``C_full``, ``M_full`` unreduced over [x, y, pad coordinates].
+    Fields per pad (N_pad, n_axial + 1): ``temperature_c``, ``viscosity_pa_s`` (the frozen
+    field), ``inlet_mask``, ``flows`` (face flows, cell dissipation and area)."""
+
+    speed_hz: float
+    load_n: tuple
+    supply_temperature_c: float
+    max_temperature_c: np.ndarray
+    mean_temperature_c: np.ndarray
+    inlet_temperature_c: np.ndarray
+    outlet_temperature_c: np.ndarray
+    power_loss_w: np.ndarray
+    film_flow_m3_s: np.ndarray
+    outlet_flow_m3_s: np.ndarray
+    side_flow_m3_s: np.ndarray
+    supply_flow_m3_s: np.ndarray
+    x_m: float
+    y_m: float
+    eccentricity_ratio: float
+    pad_tilts_rad: np.ndarray
+    K: np.ndarray
+    C: np.ndarray
+    K_full: np.ndarray = field(repr=False)
+    C_full: np.ndarray = field(repr=False)
+    M_full: np.ndarray = field(repr=False)
+    r: np.ndarray = field(repr=False)
+    iterations: int = 0
+    temperature_c: tuple = field(default=(), repr=False)
+    viscosity_pa_s: tuple = field(default=(), repr=False)
+    inlet_mask: tuple = field(default=(), repr=False)
+    flows: tuple = field(default=(), repr=False)
+    status: str = "ok"
+    message: str = ""
+
+    @property
+    def max_temperature_c_total(self) -> float:
+        return float(np.max(self.max_temperature_c))
+
+    @property
+    def mean_temperature_c_total(self) -> float:
+        """Mean over all pads' areas (pads of equal area: the mean of the pad means)."""
+        return float(np.mean(self.mean_temperature_c))
+
+    @property
+    def power_loss_w_total(self) -> float:
+        return float(np.sum(self.power_loss_w))
+
+    @property
+    def supply_flow_m3_s_total(self) -> float:
+        return float(np.sum(self.supply_flow_m3_s))
+
+    @property
+    def side_flow_m3_s_total(self) -> float:
+        return float(np.sum(self.side_flow_m3_s))
+
+    def __repr__(self) -> str:
+        return (f"PadThdResult(T_max={self.max_temperature_c_total:.2f} degC, "
+                f"P={self.power_loss_w_total:.4g} W, eps={self.eccentricity_ratio:.4f}, "
+                f"status={self.status!r})")
+
+    def to_frame(self):
+        """One row per pad and a ``total`` row (max of T_max, mean of T_mean, sums of power
+        and flows, the inlet and outlet temperatures as flow-weighted means), with the journal
+        position and the reduced K, C on every row."""
+        import pandas as pd
+
+        n = len(self.max_temperature_c)
+        cols = {"pad": [str(k) for k in range(n)] + ["total"]}
+
+        def wmean(x, w):
+            return float(np.sum(x * w) / np.sum(w)) if np.sum(w) > 0 else float(np.mean(x))
+        cols["max_temperature_c"] = [*self.max_temperature_c, self.max_temperature_c_total]
+        cols["mean_temperature_c"] = [*self.mean_temperature_c, self.mean_temperature_c_total]
+        cols["inlet_temperature_c"] = [*self.inlet_temperature_c,
+                                       wmean(self.inlet_temperature_c, self.film_flow_m3_s)]
+        cols["outlet_temperature_c"] = [*self.outlet_temperature_c,
+                                        wmean(self.outlet_temperature_c, self.outlet_flow_m3_s)]
+        for f in ("power_loss_w", "film_flow_m3_s", "outlet_flow_m3_s", "side_flow_m3_s",
+                  "supply_flow_m3_s"):
+            a = getattr(self, f)
+            cols[f] = [*a, float(np.sum(a))]
+        cols["pad_tilt_rad"] = [*self.pad_tilts_rad, np.nan] if len(self.pad_tilts_rad) \
+            else [np.nan] * (n + 1)
+        df = pd.DataFrame(cols)
+        df.insert(0, "speed_hz", self.speed_hz)
+        df.insert(1, "supply_temperature_c", self.supply_temperature_c)
+        df["journal_x_m"] = self.x_m
+        df["journal_y_m"] = self.y_m
+        df["eccentricity_ratio"] = self.eccentricity_ratio
+        for name, A, unit in (("k", self.K, "n_per_m"), ("c", self.C, "n_s_per_m")):
+            for i, a in enumerate("xy"):
+                for j, b in enumerate("xy"):
+                    df[f"{name}{a}{b}_{unit}"] = float(A[i, j])
+        df["status"] = self.status
+        df["message"] = self.message
+        return df
+
+
+def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_m: float,
+                        whirl_ratio: float | None, tilts=None) -> PadThdResult:
+    """THD equilibrium of a standalone pad bearing from its ``parts``
+    (:class:`rotordyn.bearings._film.SystemParts`, journal x, y = coordinates 0, 1): one C++
+    call for the equilibrium (journal, pads) with the pads' energy equations and inlet mixing,
+    then K, C at it with the field frozen. ``tilts(r)`` (optional) gives the pad tilts."""
+    from rotordyn.bearings._film import PadFilm, reduce_coefficients
+    from rotordyn.bearings.thermal import Oil
+
+    if not isinstance(oil, Oil):
+        raise InputError(f"oil: expected a rotordyn.bearings.Oil, got {oil!r}")
+    load = np.asarray(load_n, dtype=float)
+    if load.shape != (2,) or not np.all(np.isfinite(load)):
+        raise InputError(f"load_n: expected two finite numbers (Fx, Fy) N, got {load_n!r}")
+    v.speed("speed_hz", speed_hz)
+    if float(speed_hz) == 0.0:
+        raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
+    check_carry_over(opts.carry_over)
+    n = 2 + parts.n_extra
+    M = np.zeros((n, n))
+    K = np.zeros((n, n))
+    C = np.zeros((n, n))
+    if parts.n_extra:
+        M += parts.M
+        K += parts.K
+        C += parts.C
+    model = _core.SystemModel()
+    model.M, model.K, model.C, model.G = M, K, C, np.zeros((n, n))
+    Q = np.zeros(n)
+    Q[:2] = load
+    model.Q = Q
+    model.chamber = np.zeros(n)
+    films = [p.coupling if isinstance(p, PadFilm) else p for p in parts.films]
+    model.films = films
+    model.tables = parts.tables
+    model.pad_coords = [list(g) for g in parts.pad_groups]
+    omega = 2.0 * math.pi * float(speed_hz)
+    npad = len(films)
+    tf = pad_thermal_films(0, npad, 0, oil.to_core(), pad_options(opts, npad), omega)
+    eopt = _core.EquilibriumOptions()
+    eopt.polish = True
+    res = _core.thermal_system_equilibrium(model, tf, omega, 0.0, np.zeros(n), eopt)
+    eq = res.equilibrium
+    if eq.status not in ("ok", "contact"):
+        raise ConvergenceError(f"pad THD equilibrium: {eq.status}: {eq.message}")
+    st = list(res.films)
+    r = np.asarray(eq.r)
+    for f, s in zip(films, st):  # freeze the field of the equilibrium
+        f.viscosity_field = np.array(s.viscosity_field)
+    model.films = films
+    lin = _core.SystemSolver(model).linearize(r, np.zeros(n), omega)
+    Kf = np.asarray(lin.KH) + K
+    Cf = np.asarray(lin.DH) + C
+    nu = 0.0 if whirl_ratio is None else float(whirl_ratio) * omega
+    Kr, Cr = reduce_coefficients(Kf, Cf, M, nu)
+
+    def col(name):
+        return np.array([getattr(s, name) for s in st])
+    return PadThdResult(
+        speed_hz=float(speed_hz), load_n=(float(load[0]), float(load[1])),
+        supply_temperature_c=float(opts.supply_temperature_c),
+        max_temperature_c=col("max_temperature_c"), mean_temperature_c=col("mean_temperature_c"),
+        inlet_temperature_c=col("inlet_temperature_c"),
+        outlet_temperature_c=col("recirculation_temperature_c"),
+        power_loss_w=col("power_loss_w"), film_flow_m3_s=col("film_flow_m3_s"),
+        outlet_flow_m3_s=col("recirculation_flow_m3_s"), side_flow_m3_s=col("side_flow_m3_s"),
+        supply_flow_m3_s=col("supply_flow_m3_s"), x_m=float(r[0]), y_m=float(r[1]),
+        eccentricity_ratio=math.hypot(r[0], r[1]) / clearance_m,
+        pad_tilts_rad=np.asarray(tilts(r)) if tilts is not None else np.zeros(0),
+        K=Kr, C=Cr, K_full=Kf, C_full=Cf, M_full=M, r=r, iterations=int(res.iterations),
+        temperature_c=tuple(np.array(s.temperature_c) for s in st),
+        viscosity_pa_s=tuple(np.array(s.viscosity_field) for s in st),
+        inlet_mask=tuple(np.array(s.inlet_mask) for s in st),
+        flows=tuple({k: np.array(getattr(s.flows, k)) for k in
+                     ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2")}
+                    for s in st),
+        status=eq.status, message=eq.message)
+
+
+__all__ = ["PadThdResult", "check_carry_over", "freeze_fields", "pad_fields",
+           "pad_options", "pad_thd_equilibrium", "pad_thermal_films"]
