@@ -1,6 +1,6 @@
-"""Equilibrium and stability/Campbell chunks as columnar blocks (issue 22): one C++ call per
-run of points on one model with one set of options (``equilibrium_batch``,
-``stability_batch``), whose flat result arrays
+"""Equilibrium, stability/Campbell and boundary-refinement chunks as columnar blocks (issue
+22): one C++ call per run of points on one model with one set of options
+(``equilibrium_batch``, ``stability_batch``, ``max_real_batch``), whose flat result arrays
 become the rows' columns at once (:mod:`.columns`), with no dict per row or per point.
 
 The rows are those of the former per-point loops (same calls on the same solver in the same
@@ -214,3 +214,68 @@ def _stab_block(S, a, b, at, ids):
         "damping_ratio": S["DR"][a:b][V], "log_dec": S["LD"][a:b][V],
         "whirl": S["WN"][a:b][V], "kind": S["KIND"][a:b][V], "mode_stable": S["MS"][a:b][V],
         "status": np.repeat(S["st"][a:b], ke), "message": np.repeat(S["msg"][a:b], ke)})
+
+
+# -- boundary refinement --------------------------------------------------------------------
+def boundary_blocks(job, variants, chunk_id, pids, asms):
+    """One row per listed point: max Re λ (rotor modes only with exclude_sleeve_modes), its
+    frequency, point_stable; one ``max_real_batch`` call per run of points on one model (the
+    equilibrium continued along lines as the per-point loop did, across runs too)."""
+    excl = bool(job.options.get("exclude_sleeve_modes", False))
+    items = point_list(job, variants, pids, asms)
+    n = len(items)
+    st = np.empty(n, dtype=object)
+    msg = np.empty(n, dtype=object)
+    y, fr = np.full(n, math.nan), np.full(n, math.nan)
+    carry = None  # the last evaluated point's equilibrium (None: failed)
+    errs = [it[4] for it in items]
+    for i, j, good in segments(items, errs):
+        if not good:  # a model-variant error leaves the continuation as it was
+            st[i], msg[i] = "error", errs[i]
+            continue
+        seg = items[i:j]
+        asm, opts = seg[0][1], seg[0][2]
+        valid, om, pcs, A = [], [], [], []
+        for k, it in enumerate(seg):
+            try:
+                f, pc, a = operating(asm, it[0])
+                valid.append(1)
+            except (RotordynError, ArithmeticError, ValueError) as exc:
+                st[i + k], msg[i + k] = "error", f"{type(exc).__name__}: {exc}"
+                f, pc, a = math.nan, math.nan, np.zeros(asm.n)
+                valid.append(0)
+            om.append(hz_to_rad_s(f))
+            pcs.append(pc)
+            A.append(a)
+        inp = _core.MaxRealBatchInput()
+        inp.omega, inp.pressure, inp.a, inp.valid = om, pcs, np.array(A), valid
+        inp.restart = [0 if it[3] else 1 for it in seg]
+        inp.r0 = carry if (seg[0][3] and carry is not None) else np.zeros(0)
+        inp.options = equilibrium_options(opts)
+        inp.exclude_sleeve = excl
+        inp.xy_pairs, inp.rot_pairs = asm.rotor.xy_pairs(), asm.rotor.rot_pairs()
+        inp.sleeve = [q for bc in asm.bearings for q in bc.sleeve]
+        res = _core.max_real_batch(asm.solver, inp)
+        r_last = np.asarray(res.r_last)
+        carry = r_last if r_last.size else None
+        for k, (s, m) in enumerate(zip(res.status, res.message)):
+            if s == "invalid":
+                continue
+            if s == "error":
+                st[i + k], msg[i + k] = "error", m
+            elif s in CONVERGED:
+                st[i + k], msg[i + k] = s, ""
+            else:
+                st[i + k], msg[i + k] = _status(s), "no equilibrium"
+        y[i:j], fr[i:j] = np.asarray(res.y), np.asarray(res.freq)
+    good = np.array([s in CONVERGED for s in st], dtype=bool)
+    blocks = []
+    for a, b, g in runs(good):
+        k = np.arange(a, b)
+        if g:
+            blocks.append((k, {"max_real_1_per_s": y[a:b], "freq_hz": fr[a:b],
+                               "point_stable": y[a:b] < 0, "level": job.level,
+                               "status": st[a:b], "message": ""}))
+        else:
+            blocks.append((k, {"status": st[a:b], "message": msg[a:b]}))
+    return blocks

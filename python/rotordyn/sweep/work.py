@@ -19,9 +19,9 @@ from rotordyn._common import validate as v
 from rotordyn.analysis.thermal import system_thermal_equilibrium
 from rotordyn.analysis.transient import transient
 from rotordyn.operation import SpeedProfile
-from rotordyn.sweep.blocks import eq_blocks, stab_blocks
+from rotordyn.sweep.blocks import boundary_blocks, eq_blocks, stab_blocks
 from rotordyn.sweep.columns import block_table, identity
-from rotordyn.sweep.lines import max_real, threshold_line, unbalance_line
+from rotordyn.sweep.lines import threshold_line, unbalance_line
 from rotordyn.errors import RotordynError
 from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, fail_row, operating,
                                    points, ref_bearing, solve_equilibrium)
@@ -122,14 +122,11 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     boundary) as a table with :func:`schema`."""
     base = base_system(job.model_toml)
     variants = Variants(base, job.model_toml)
-    if pids is not None:
-        rows: list[dict] = []
-        _boundary_rows(job, variants, chunk_id, pids, rows)
-        return to_table(job, rows)
-    if job.analysis in _BLOCKS:
-        pl = list(range(lo, hi))
+    if pids is not None or job.analysis in _BLOCKS:
+        pl = list(range(lo, hi)) if pids is None else list(pids)
         asms: list = [None] * len(pl)
-        blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
+        fn = boundary_blocks if pids is not None else _BLOCKS[job.analysis]
+        blocks = fn(job, variants, chunk_id, pl, asms)
         return block_table(job, schema(job.analysis, list(job.axes)), categories(job.analysis),
                            identity(job, chunk_id, pl, asms), blocks)
     rows: list[dict] = []
@@ -269,30 +266,6 @@ def _lines(job, lo, hi):
     n = job.shape[-1]
     for s in range(lo, hi, n):
         yield s, min(s + n, hi)
-
-
-def _boundary_rows(job, variants, chunk_id, pids, rows):
-    """One row per listed point: max Re λ (rotor modes only with exclude_sleeve_modes), its
-    frequency, point_stable; ``level`` is set by the driver."""
-
-    excl = bool(job.options.get("exclude_sleeve_modes", False))
-    r_prev = None
-    for row, p, asm, opts, line, err in points(job, variants, chunk_id, 0, 0, pids):
-        if err:
-            rows.append(fail_row(row, "error", err))
-            continue
-        try:
-            y, fr, st, r = max_real(job, asm, p, r_prev if line else None, opts, excl)
-        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
-            rows.append(fail_row(row, "error", f"{type(exc).__name__}: {exc}"))
-            r_prev = None
-            continue
-        r_prev = r
-        if r is None:
-            rows.append(fail_row(row, st if st in STATUS else "error", "no equilibrium"))
-            continue
-        rows.append({**row, "max_real_1_per_s": y, "freq_hz": fr, "point_stable": y < 0,
-                     "level": job.level, "status": st, "message": ""})
 
 
 _ANALYSIS = {"thermal": _thermal_rows, "waterfall": _wf_rows, "run-up": _runup_rows,
