@@ -119,6 +119,11 @@ def main() -> int:
     run_chunk(Job("s", rig.to_toml(), "threshold", {"vary": "chamber_pressure_pa"},
                   {"config_ay_m": [-1.85e-3], "speed_hz": [50.0],
                    "chamber_pressure_pa": [0.0, 0.1e6, 0.2e6]}), 0, 0, 3)
+    # a boundary-refinement chunk (max_real_batch): a refused point, a gap, a new line
+    run_chunk(Job("s", rig.to_toml(), "boundary", {"exclude_sleeve_modes": True},
+                  {"config_ay_m": [-1.85e-3, 0.0], "chamber_pressure_pa": [-1.0, 0.0, 0.1e6,
+                                                                           0.2e6]}),
+              0, 0, 0, [0, 1, 3, 4, 5])
     from rotordyn.control import Actuator
     from rotordyn.control.adaptive import AdaptiveRejection
     from rotordyn.control.antiwindup import with_anti_windup

@@ -42,6 +42,29 @@ void bind_threshold(py::module_& m) {
         py::call_guard<py::gil_scoped_release>(),
         "max Re lambda along a sweep line (equilibria continued) and every sign change "
         "refined by Brent's method (SciPy's brentq steps).");
+  py::class_<MaxRealBatchInput>(m, "MaxRealBatchInput")
+      .def(py::init<>())
+      .def_readwrite("omega", &MaxRealBatchInput::omega)
+      .def_readwrite("pressure", &MaxRealBatchInput::pressure)
+      .def_readwrite("a", &MaxRealBatchInput::a)
+      .def_readwrite("restart", &MaxRealBatchInput::restart)
+      .def_readwrite("valid", &MaxRealBatchInput::valid)
+      .def_readwrite("r0", &MaxRealBatchInput::r0)
+      .def_readwrite("options", &MaxRealBatchInput::options)
+      .def_readwrite("exclude_sleeve", &MaxRealBatchInput::exclude_sleeve)
+      .def_readwrite("xy_pairs", &MaxRealBatchInput::xy_pairs)
+      .def_readwrite("rot_pairs", &MaxRealBatchInput::rot_pairs)
+      .def_readwrite("sleeve", &MaxRealBatchInput::sleeve);
+  py::class_<MaxRealBatchResult>(m, "MaxRealBatchResult")
+      .def_readonly("y", &MaxRealBatchResult::y)
+      .def_readonly("freq", &MaxRealBatchResult::freq)
+      .def_readonly("status", &MaxRealBatchResult::status)
+      .def_readonly("message", &MaxRealBatchResult::message)
+      .def_readonly("r_last", &MaxRealBatchResult::r_last);
+  m.def("max_real_batch", &max_real_batch, py::arg("solver"), py::arg("input"),
+        py::call_guard<py::gil_scoped_release>(),
+        "max Re lambda (and its frequency) at each listed point of a boundary-refinement "
+        "chunk, equilibria continued along lines, in one call.");
 }
 
 }  // namespace rotordyn::py_bind

@@ -39,6 +39,7 @@ std::string named(const std::exception& ex) {
 
 struct Point {
   double y = kNaN, f = kNaN;
+  std::string status;  ///< the equilibrium's
   Eigen::VectorXd r;  ///< empty: no converged equilibrium
 };
 
@@ -50,6 +51,7 @@ Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, doub
   const Eigen::Index n = m.n();
   const EquilibriumResult e = s.equilibrium(omega, pc, a, r0, in.options);
   Point p;
+  p.status = e.status;
   if (e.status != "ok" && e.status != "contact") return p;
   const Linearization lin = s.linearize(e.r, Eigen::VectorXd::Zero(n), omega);
   const Eigen::MatrixXd M = m.has_table_mass() ? m.mass_at(omega) : m.M;
@@ -223,6 +225,52 @@ ThresholdLineResult threshold_line(SystemSolver& solver, const ThresholdLineInpu
     out.message.push_back(msg);
     out.evaluations.push_back(evals);
   }
+  return out;
+}
+
+MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput& in) {
+  const Eigen::Index np = in.omega.size();
+  const Eigen::Index n = solver.model().n();
+  if (in.pressure.size() != np || in.a.rows() != np || in.a.cols() != n ||
+      static_cast<Eigen::Index>(in.restart.size()) != np ||
+      static_cast<Eigen::Index>(in.valid.size()) != np)
+    throw InputError("max_real_batch: expected omega, pressure, restart, valid of length "
+                     "n_pts and a of shape (n_pts, n)");
+  if (in.r0.size() != 0 && in.r0.size() != n)
+    throw InputError("max_real_batch: expected r0 of length 0 or n");
+  ThresholdLineInput rule;  // the scan's rule of max Re λ
+  rule.options = in.options;
+  rule.exclude_sleeve = in.exclude_sleeve;
+  rule.xy_pairs = in.xy_pairs;
+  rule.rot_pairs = in.rot_pairs;
+  rule.sleeve = in.sleeve;
+  MaxRealBatchResult out;
+  out.y = Eigen::VectorXd::Constant(np, kNaN);
+  out.freq = Eigen::VectorXd::Constant(np, kNaN);
+  out.status.assign(static_cast<std::size_t>(np), "invalid");
+  out.message.assign(static_cast<std::size_t>(np), "");
+  Eigen::VectorXd prev = in.r0;
+  for (Eigen::Index i = 0; i < np; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (!in.valid[k]) {
+      prev.resize(0);
+      continue;
+    }
+    const Eigen::VectorXd start = in.restart[k] ? Eigen::VectorXd() : prev;
+    try {
+      const Point p = max_real(solver, rule, in.omega[i], in.pressure[i],
+                               in.a.row(i).transpose(), start);
+      out.status[k] = p.status;
+      out.y[i] = p.y;
+      out.freq[i] = p.f;
+      prev = p.r;
+    } catch (const std::exception& ex) {
+      out.status[k] = "error";
+      out.message[k] = named(ex);
+      prev.resize(0);
+    }
+  }
+  out.r_last = prev;
   return out;
 }
 

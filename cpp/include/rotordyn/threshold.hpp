@@ -48,4 +48,32 @@ struct ThresholdLineResult {
 /// starts from point i's equilibrium; no equilibrium there is an error of that crossing.
 ThresholdLineResult threshold_line(SystemSolver& solver, const ThresholdLineInput& in);
 
+/// The listed points of one boundary-refinement chunk (issue 22): max Re λ of eq. 19 at each,
+/// by the threshold scan's rule (every mode, the sleeve's own left out with exclude_sleeve).
+struct MaxRealBatchInput {
+  Eigen::VectorXd omega;        ///< (n_pts,) spin speed, rad/s
+  Eigen::VectorXd pressure;     ///< (n_pts,) chamber pressure, Pa
+  RowMatrixXd a;                ///< (n_pts, n) configuration vector
+  std::vector<int> restart;     ///< (n_pts,) 1: start cold, 0: continue along the line
+  std::vector<int> valid;       ///< (n_pts,) 0: operating values refused (no evaluation)
+  Eigen::VectorXd r0;           ///< start of a first point with restart 0 (empty: cold)
+  EquilibriumOptions options;
+  bool exclude_sleeve = false;
+  std::vector<std::pair<int, int>> xy_pairs, rot_pairs;
+  std::vector<int> sleeve;      ///< sleeve coordinates (mode kind by kinetic-energy share)
+};
+
+struct MaxRealBatchResult {
+  Eigen::VectorXd y, freq;      ///< (n_pts,) max Re λ (1/s), its frequency (Hz); NaN: failed
+  /// (n_pts,) the equilibrium's status ("ok", "contact", a failure), "error" when a stage
+  /// raised (message "<Error>: what"), "invalid" for valid = 0
+  std::vector<std::string> status, message;
+  Eigen::VectorXd r_last;       ///< the last point's equilibrium if it was analysed, else empty
+};
+
+/// Points in order on `solver`, as the per-point loop: a point with restart 0 starts from the
+/// previous point's equilibrium when that one converged (ok or contact) and was analysed,
+/// else cold; a failed or invalid point makes the next one start cold.
+MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput& in);
+
 }  // namespace rotordyn

@@ -93,47 +93,50 @@ def track_modes(eigenvalues: np.ndarray, shapes=None, *, weight: np.ndarray | No
         wphi = phi if weight is None else np.matmul(np.asarray(weight), phi)
         with np.errstate(invalid="ignore"):
             nrm = np.real(np.einsum("pik,pik->pk", phi.conj(), wphi))
-    for i in range(n_pts):
-        present = np.isfinite(lam[i])
-        if phi is not None:
-            present &= np.all(np.isfinite(phi[i]), axis=0)
-        slots = np.flatnonzero(present)
-        if slots.size == 0:
-            continue
-        assigned = {}
-        if last_pt:
-            kp, ks = np.asarray(last_pt), np.asarray(last_slot)
-            lk = lam[kp, ks]
-            li = lam[i, slots]
-            scale = max(np.max(np.abs(lk)), np.max(np.abs(li)), 1e-300)
-            dist = np.abs(li[:, None] - lk[None, :]) / scale
-            if phi is not None:
-                m = _mac_known(phi[i][:, slots], nrm[i, slots], wphi[kp, :, ks].T, nrm[kp, ks])
-            else:
-                m = np.ones_like(dist)
-            cost = (1.0 - m) + eig_weight * dist
-            rows, cols = linear_sum_assignment(cost)
-            for r, c in zip(rows, cols):
-                if (m[r, c] < min_mac) if phi is not None else (dist[r, c] > 0.1):
-                    continue
-                assigned[slots[r]] = int(c)
-        for s in slots:
-            if s not in assigned:
-                assigned[s] = next_id
-                next_id += 1
-                last_pt.append(i)
-                last_slot.append(int(s))
-            j = assigned[s]
-            ids[i, s] = j
-            last_pt[j], last_slot[j] = i, int(s)
+    # which slots hold a mode, every point at once (no arithmetic: the same booleans)
+    present_all = np.isfinite(lam)
+    if phi is not None:
+        present_all &= np.all(np.isfinite(phi), axis=1)
+    # one errstate for the whole line (entering it per point cost as much as the MAC)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        for i in range(n_pts):
+            slots = np.nonzero(present_all[i])[0]
+            if slots.size == 0:
+                continue
+            assigned = {}
+            if last_pt:
+                kp, ks = np.asarray(last_pt), np.asarray(last_slot)
+                lk = lam[kp, ks]
+                li = lam[i, slots]
+                scale = max(np.abs(lk).max(), np.abs(li).max(), 1e-300)
+                dist = np.abs(li[:, None] - lk[None, :]) / scale
+                if phi is not None:
+                    m = _mac_known(phi[i][:, slots], nrm[i, slots], wphi[kp, :, ks].T,
+                                   nrm[kp, ks])
+                else:
+                    m = np.ones_like(dist)
+                cost = (1.0 - m) + eig_weight * dist
+                rows, cols = linear_sum_assignment(cost)
+                for r, c in zip(rows.tolist(), cols.tolist()):
+                    if (m[r, c] < min_mac) if phi is not None else (dist[r, c] > 0.1):
+                        continue
+                    assigned[int(slots[r])] = c
+            for s in slots.tolist():
+                if s not in assigned:
+                    assigned[s] = next_id
+                    next_id += 1
+                    last_pt.append(i)
+                    last_slot.append(s)
+                j = assigned[s]
+                ids[i, s] = j
+                last_pt[j], last_slot[j] = i, s
     return ids
 
 
 def _mac_known(a: np.ndarray, na: np.ndarray, wb: np.ndarray, nb: np.ndarray) -> np.ndarray:
-    """:func:`mac` from precomputed parts: shapes ``a`` (n, ka) with norms ``na`` (ka,), the
-    weighted shapes W b (n, kb) with norms ``nb`` (kb,)."""
+    """:func:`mac` from precomputed parts (inside the caller's errstate): shapes ``a`` (n, ka)
+    with norms ``na`` (ka,), the weighted shapes W b (n, kb) with norms ``nb`` (kb,)."""
     cross = np.abs(a.conj().T @ wb) ** 2
-    den = np.outer(na, nb)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        out = np.where(den > 0, cross / np.where(den > 0, den, 1.0), 0.0)
-    return np.clip(out, 0.0, 1.0)
+    den = na[:, None] * nb[None, :]
+    ok = den > 0
+    return np.clip(np.where(ok, cross / np.where(ok, den, 1.0), 0.0), 0.0, 1.0)

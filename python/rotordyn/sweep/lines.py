@@ -35,19 +35,19 @@ _AXIS = {"speed_hz": _core.ThresholdAxis.speed,
          "config_ay_m": _core.ThresholdAxis.config}
 
 
-def threshold_line(job, variants, chunk_id, lo, hi, rows):
-    """One row per crossing of max Re λ = 0 along the line [lo, hi) (the varied axis is
-    innermost); a line without one is a ``no_crossing`` row."""
+def threshold_line(job, variants, lo, hi, at, asms):
+    """Blocks of one row per crossing of max Re λ = 0 along the line [lo, hi) (the varied axis
+    is innermost; the line's rows carry the identity of its first point, chunk-local index
+    ``at``); a line without one is a ``no_crossing`` row."""
     vary = job.options["vary"]
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     idx0, p0 = job.point(lo)
     try:
         asm = variants.get(p0)
     except RotordynError as exc:
-        rows.append(pt.fail_row(pt.common_row(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
-        return
-    row = pt.common_row(job, lo, chunk_id, idx0, p0, asm)
-    row[f"i_{vary}"] = None
+        return [(np.array([at]), {"status": "error", "message": str(exc)})]
+    asms[at:at + hi - lo] = [asm] * (hi - lo)
+    speed0 = p0.get("speed_hz", 50.0)
     opts = pt.point_options(job, p0)
     xs, om, pcs, avs, valid = [], [], [], [], []
     for pid in range(lo, hi):
@@ -80,48 +80,48 @@ def threshold_line(job, variants, chunk_id, lo, hi, rows):
     # sign change refined by Brent's method (SciPy's brentq, step for step)
     res = _core.threshold_line(asm.solver, inp)
     ys = np.asarray(res.y)
-    evals = len(xs)
-    found = 0
-    for i, x, fr, status, msg, evals in zip(res.bracket, res.root, res.root_freq, res.status,
-                                            res.message, res.evaluations):
-        y0 = ys[i]
-        found += 1
-        speed = x if vary == "speed_hz" else row["speed_hz"]
-        rows.append({**row, vary: x, "crossing": found, "value": x,
-                     "whirl_frequency_hz": fr, "whirl_ratio": fr / speed if speed else math.nan,
-                     "stable_side": "below" if y0 < 0 else "above", "evaluations": evals,
-                     "status": status, "message": msg})
-    if not found:
-        good = [y for y in ys.tolist() if math.isfinite(y)]
-        what = ("no point of the line has an equilibrium" if not good else
-                f"{'unstable' if min(good) > 0 else 'stable'} at all {len(good)} points")
-        rows.append({**row, vary: math.nan, "crossing": 0, "value": math.nan,
-                     "evaluations": evals, "status": "no_crossing",
-                     "message": f"max Re λ does not change sign along {vary}: {what}"})
+    roots, freqs = list(res.root), list(res.root_freq)
+    k = len(roots)
+    if k:
+        speeds = roots if vary == "speed_hz" else [speed0] * k
+        return [(np.full(k, at), {
+            f"i_{vary}": None, vary: roots, "crossing": np.arange(1, k + 1),
+            "value": roots, "whirl_frequency_hz": freqs,
+            "whirl_ratio": [fr / sp if sp else math.nan for fr, sp in zip(freqs, speeds)],
+            "stable_side": ["below" if ys[i] < 0 else "above" for i in res.bracket],
+            "evaluations": list(res.evaluations), "status": list(res.status),
+            "message": list(res.message)})]
+    good = [y for y in ys.tolist() if math.isfinite(y)]
+    what = ("no point of the line has an equilibrium" if not good else
+            f"{'unstable' if min(good) > 0 else 'stable'} at all {len(good)} points")
+    return [(np.array([at]), {f"i_{vary}": None, vary: math.nan, "crossing": 0,
+                              "value": math.nan, "evaluations": len(xs),
+                              "status": "no_crossing",
+                              "message": f"max Re λ does not change sign along {vary}: {what}"})]
 
 
-def unbalance_line(job, variants, chunk_id, lo, hi, rows):
-    """Unbalance response along the speed line [lo, hi): one row per (speed, station), with
-    ``peak`` rows carrying the amplification factor and separation margin (API 684)."""
+def unbalance_line(job, variants, lo, hi, at, asms):
+    """Blocks of the unbalance response along the speed line [lo, hi) (its first point at
+    chunk-local index ``at``): one row per (speed, station), with ``peak`` rows carrying the
+    amplification factor and separation margin (API 684)."""
     idx0, p0 = job.point(lo)
     try:
         asm = variants.get(p0)
     except RotordynError as exc:
-        rows.append(pt.fail_row(pt.common_row(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
-        return
+        return [(np.array([at]), {"status": "error", "message": str(exc)})]
+    n = hi - lo
+    asms[at:at + n] = [asm] * n
     opts = pt.point_options(job, p0)
     ub = opts["unbalances"]
     stations = tuple(opts.get("stations") or dict.fromkeys(int(u[0]) for u in ub))
     Cout = [asm.station_output_matrix(s) for s in stations]
     F1 = asm.unbalance_load(ub)
-    n = hi - lo
     X = np.full((n, len(stations)), np.nan + 0j)
     Y = np.full((n, len(stations)), np.nan + 0j)
-    base, speeds, ops = [], [], []
+    speeds, ops = [], []
     status, msg = [None] * n, [None] * n
     for k, pid in enumerate(range(lo, hi)):
-        idx, p = job.point(pid)
-        base.append(pt.common_row(job, pid, chunk_id, idx, p, asm))
+        _, p = job.point(pid)
         speeds.append(p.get("speed_hz", 50.0))
         try:
             ops.append(pt.operating(asm, p))
@@ -155,26 +155,28 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
                           tuple(opts["operating_speed_hz"]) if "operating_speed_hz" in opts
                           else None)
     major, minor = res.major_m, res.minor_m
-    peaks = {}
+    ns = len(stations)
+    peak = np.zeros((n, ns), bool)
+    crit, amp, sep = (np.full((n, ns), math.nan) for _ in range(3))
     for j, st in enumerate(stations):
         pk = res.peaks(st)
         for _, r in pk.iterrows():
             i = int(np.argmin(np.abs(np.asarray(speeds) - r["critical_speed_hz"])))
-            peaks[(i, j)] = r
-    for k in range(n):
-        for j, st in enumerate(stations):
-            pk = peaks.get((k, j))
-            rows.append({**base[k], "station": int(st),
-                         "amplitude_x_m": float(abs(X[k, j])), "amplitude_y_m": float(abs(Y[k, j])),
-                         "phase_x_deg": float(np.degrees(np.angle(X[k, j]))),
-                         "phase_y_deg": float(np.degrees(np.angle(Y[k, j]))),
-                         "major_m": float(major[k, j]), "minor_m": float(minor[k, j]),
-                         "peak": pk is not None,
-                         "critical_speed_hz": float(pk["critical_speed_hz"])
-                         if pk is not None else math.nan,
-                         "amplification_factor": float(pk["amplification_factor"])
-                         if pk is not None else math.nan,
-                         "separation_margin_pct": float(pk.get("separation_margin_pct",
-                                                               math.nan))
-                         if pk is not None else math.nan,
-                         "status": status[k], "message": msg[k]})
+            peak[i, j] = True
+            crit[i, j] = float(r["critical_speed_hz"])
+            amp[i, j] = float(r["amplification_factor"])
+            sep[i, j] = float(r.get("separation_margin_pct", math.nan))
+    return [(np.repeat(at + np.arange(n), ns), {
+        "station": np.tile(np.array(stations, dtype=np.int64), n),
+        # |z| by hypot (the scalar abs of each entry: numpy's vectorised complex abs can
+        # differ from it in the last bit)
+        "amplitude_x_m": np.hypot(X.real, X.imag).ravel(),
+        "amplitude_y_m": np.hypot(Y.real, Y.imag).ravel(),
+        "phase_x_deg": np.degrees(np.angle(X)).ravel(),
+        "phase_y_deg": np.degrees(np.angle(Y)).ravel(),
+        "major_m": np.asarray(major, dtype=float).ravel(),
+        "minor_m": np.asarray(minor, dtype=float).ravel(), "peak": peak.ravel(),
+        "critical_speed_hz": crit.ravel(), "amplification_factor": amp.ravel(),
+        "separation_margin_pct": sep.ravel(),
+        "status": np.repeat(np.array(status, dtype=object), ns),
+        "message": np.repeat(np.array(msg, dtype=object), ns)})]

@@ -201,3 +201,58 @@ def points(job, variants, chunk_id, lo, hi, pids=None):
         yield row, p, asm, point_options(job, p), same_line(prev, idx, job.line_pos), err
         prev = idx
 
+
+
+def _model_key(k: str) -> bool:
+    return "." in k and not k.startswith("options.") or k == "gravity_m_s2"
+
+
+def point_list(job, variants, pids, asms: list) -> list:
+    """Per point of ``pids``: [p, asm, opts, same_line, error] (as :func:`points`, without
+    the row dict: the columnar chunks build their identity columns at once); ``asms[k]``
+    is set to the point's model (None for a model-variant error). The indices and line flags
+    are computed for all points at once; without model-field or option axes every point
+    shares the chunk's one model and the analysis's options."""
+    n = len(pids)
+    if n == 0:
+        return []
+    idx = np.unravel_index(np.asarray(pids, dtype=np.int64), job.shape)
+    names, vals = list(job.axes), list(job.axes.values())
+    cols = [ix.tolist() for ix in idx]
+    line = np.zeros(n, bool)
+    line[1:] = True
+    for d, ix in enumerate(idx):
+        if d != job.line_pos:
+            line[1:] &= ix[1:] == ix[:-1]
+    line = line.tolist()
+    ps = [{a: v[c[k]] for a, v, c in zip(names, vals, cols)} for k in range(n)]
+    shared = not any(_model_key(a) or a.startswith("options.") for a in names)
+    out = []
+    for k, p in enumerate(ps):
+        if shared and k > 0:
+            asm, err = out[0][1], out[0][4]
+        else:
+            try:
+                asm, err = variants.get(p), None
+            except RotordynError as exc:
+                asm, err = None, str(exc)
+        asms[k] = asm
+        out.append([p, asm, job.options if shared else point_options(job, p), line[k], err])
+    return out
+
+
+def segments(items, errs):
+    """Runs [i, j) of consecutive points without an error sharing one model and one set of
+    options (one C++ call each), with the error points between them as (i, i + 1, False)."""
+    i, n = 0, len(items)
+    while i < n:
+        if errs[i]:
+            yield i, i + 1, False
+            i += 1
+            continue
+        j = i + 1
+        while j < n and not errs[j] and items[j][1] is items[i][1] and \
+                items[j][2] == items[i][2]:
+            j += 1
+        yield i, j, True
+        i = j

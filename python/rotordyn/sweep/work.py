@@ -15,21 +15,17 @@ import math
 import numpy as np
 import pyarrow as pa
 
-from rotordyn import _core
 from rotordyn._common import validate as v
-from rotordyn._common.whirl import WHIRL_NAMES
-from rotordyn.analysis.linear import FD_REL_STEP
 from rotordyn.analysis.thermal import system_thermal_equilibrium
 from rotordyn.analysis.transient import transient
 from rotordyn.operation import SpeedProfile
-from rotordyn.results.modes import settled_real
-from rotordyn.sweep.lines import max_real, threshold_line, unbalance_line
+from rotordyn.sweep.blocks import boundary_blocks, eq_blocks, stab_blocks
+from rotordyn.sweep.columns import block_table, identity
+from rotordyn.sweep.lines import threshold_line, unbalance_line
 from rotordyn.errors import RotordynError
-from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, equilibrium_options, fail_row, operating, points, ref_bearing,
-                                   solve_equilibrium, stable_modes)
-from rotordyn.sweep.tracking import track_line
+from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, fail_row, operating,
+                                   points, ref_bearing, solve_equilibrium)
 from rotordyn.sweep.robust_rows import outputs as robust_outputs, robust_rows
-from rotordyn.units import hz_to_rad_s
 
 WHIRL = ["forward", "backward", "planar"]
 KIND = ["rotor", "sleeve"]
@@ -124,74 +120,18 @@ class Job:
 def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     """Rows of points [lo, hi) (or of the listed point ids ``pids``, for the adaptive
     boundary) as a table with :func:`schema`."""
-    rows: list[dict] = []
     base = base_system(job.model_toml)
     variants = Variants(base, job.model_toml)
-    if pids is not None:
-        _boundary_rows(job, variants, chunk_id, pids, rows)
-    else:
-        _ANALYSIS[job.analysis](job, variants, chunk_id, lo, hi, rows)
+    if pids is not None or job.analysis in _BLOCKS:
+        pl = list(range(lo, hi)) if pids is None else list(pids)
+        asms: list = [None] * len(pl)
+        fn = boundary_blocks if pids is not None else _BLOCKS[job.analysis]
+        blocks = fn(job, variants, chunk_id, pl, asms)
+        return block_table(job, schema(job.analysis, list(job.axes)), categories(job.analysis),
+                           identity(job, chunk_id, pl, asms), blocks)
+    rows: list[dict] = []
+    _ANALYSIS[job.analysis](job, variants, chunk_id, lo, hi, rows)
     return to_table(job, rows)
-
-
-def _eq_rows(job, variants, chunk_id, lo, hi, rows):
-    """Equilibria of a chunk through the C++ batch (one call per run of points sharing a
-    model and options, continued along the line from "ok" points, cold after a failure):
-    one row per bearing, or one error row for a point that raised."""
-    items = []  # [row, asm, opts, line, (f, pc, a) or None, error]
-    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
-        op = None
-        if not err:
-            try:
-                op = operating(asm, p)
-            except (RotordynError, ArithmeticError, ValueError) as exc:
-                err = str(exc)
-        items.append([row, asm, opts, line, op, err])
-    i = 0
-    while i < len(items):
-        if items[i][5]:
-            rows.append(fail_row(items[i][0], "error", items[i][5]))
-            i += 1
-            continue
-        j = i
-        while j + 1 < len(items) and not items[j + 1][5] and items[j + 1][1] is items[i][1] \
-                and items[j + 1][2] == items[i][2]:
-            j += 1
-        _eq_batch(items[i:j + 1], rows)
-        i = j + 1
-
-
-def _eq_batch(seg, rows):
-    asm, opts = seg[0][1], seg[0][2]
-    restart = [1 if k == 0 or not it[3] else 0 for k, it in enumerate(seg)]
-    res = _core.equilibrium_batch(
-        asm.solver, np.array([hz_to_rad_s(it[4][0]) for it in seg]),
-        np.array([it[4][1] for it in seg]), np.array([it[4][2] for it in seg]), restart,
-        equilibrium_options(opts))
-    R, IT, RES = np.asarray(res.r), np.asarray(res.iterations), np.asarray(res.residual)
-    # per bearing (a tilting pad has a film per pad, a table bearing none: NaN)
-    HM = asm.bearing_h_min(np.asarray(res.h_min))
-    HZ = np.asarray(res.h_min_z_m)
-    for k, it in enumerate(seg):
-        st, msg = res.status[k], res.message[k]
-        if st == "error":  # the solve raised
-            rows.append(fail_row(it[0], "error", msg))
-            continue
-        ok = st in CONVERGED
-        for b, bc in enumerate(asm.bearings):
-            x = float(R[k, bc.jx]) if ok else math.nan
-            y = float(R[k, bc.jy]) if ok else math.nan
-            c = bc.clearance_m if bc.clearance_m > 0 else math.nan  # a table: no clearance
-            tilt = ok and bool(bc.rot)
-            rows.append({**it[0], "bearing": bc.name, "journal_x_m": x, "journal_y_m": y,
-                         "x_over_c": x / c, "y_over_c": y / c,
-                         "h_min_m": float(HM[k, b]) if ok else math.nan,
-                         "iterations": int(IT[k]), "residual": float(RES[k]),
-                         "journal_theta_x_rad": float(R[k, bc.rot[0]]) if tilt else math.nan,
-                         "journal_theta_y_rad": float(R[k, bc.rot[1]]) if tilt else math.nan,
-                         "h_min_z_m": float(HZ[k, asm.film_owner.index(bc.index)]) if tilt
-                         else math.nan,
-                         "status": st if st in STATUS else "error", "message": msg})
 
 
 def _thermal_rows(job, variants, chunk_id, lo, hi, rows):
@@ -217,112 +157,6 @@ def _thermal_rows(job, variants, chunk_id, lo, hi, rows):
             rows.append({**row, "bearing": name, **vals, "iterations": int(r.iterations),
                          "status": r.status if r.status in STATUS else "error",
                          "message": r.message})
-
-
-def _stab_rows(job, variants, chunk_id, lo, hi, rows):
-    """Stability points of a chunk through the C++ batch (one call per run of points sharing
-    a model and options): equilibrium continued along the line, K_H/D_H, eigen-analysis."""
-
-    items = []  # (row, asm, opts, line, (f, pc, a) or None, error)
-    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
-        op = None
-        if not err:
-            try:
-                op = operating(asm, p)
-            except RotordynError as exc:
-                err = f"{type(exc).__name__}: {exc}"
-        items.append([row, asm, opts, line, op, err])
-    # runs of consecutive valid points on one model with one set of options
-    out: list = [None] * len(items)
-    i = 0
-    while i < len(items):
-        if items[i][5]:
-            out[i] = (fail_row(items[i][0], "error", items[i][5]), None, None)
-            i += 1
-            continue
-        j = i
-        while j + 1 < len(items) and not items[j + 1][5] and items[j + 1][1] is items[i][1] \
-                and items[j + 1][2] == items[i][2]:
-            j += 1
-        _stab_batch(job, items[i:j + 1], out, i, restart_first=True)
-        i = j + 1
-    # tracking along lines, rows in point order
-    weight = None
-    line_buf: list = []
-
-    def flush():
-        if job.options.get("track", True) and line_buf:
-            track_line(rows, line_buf, weight)
-        line_buf.clear()
-
-    for it, o in zip(items, out):
-        if not it[3]:
-            flush()
-        r, lam, phi = o
-        if lam is not None:
-            line_buf.append((len(rows), lam, phi))
-            weight = it[1].mats[0]
-        rows.append(r)
-    flush()
-
-
-def _stab_batch(job, seg, out, at, restart_first):
-
-    asm, opts = seg[0][1], seg[0][2]
-    n_modes = job.options.get("n_modes") or 0
-    o = equilibrium_options(opts)
-    restart = [1 if (k == 0 and restart_first) or not it[3] else 0 for k, it in enumerate(seg)]
-    res = _core.stability_batch(
-        asm.solver, np.array([hz_to_rad_s(it[4][0]) for it in seg]),
-        np.array([it[4][1] for it in seg]), np.array([it[4][2] for it in seg]), restart, o,
-        int(n_modes), opts.get("linearization", "perturbation") == "finite_difference",
-        FD_REL_STEP, asm.rotor.xy_pairs(), asm.rotor.rot_pairs(),
-        [i for bc in asm.bearings for i in bc.sleeve])
-
-    bc = ref_bearing(asm)
-    status, message = res.status, res.message
-    n_eig = np.asarray(res.n_eig)
-    R = np.asarray(res.r)
-    H = np.asarray(res.h_min)
-    EV = np.asarray(res.eigenvalues)
-    WH = np.asarray(res.whirl)
-    SS = np.asarray(res.sleeve_share)
-    IT = np.asarray(res.iterations)
-    modes = res.modes
-    names = np.array([WHIRL_NAMES[-1], WHIRL_NAMES[0], WHIRL_NAMES[1]])
-    # Every per-mode column for the whole batch at once (elementwise: the same numbers as
-    # point by point; slots past a point's n_eig are padding, never read).
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        MS = stable_modes(EV)
-        RE = settled_real(EV)  # round-off of an undamped mode is 0, not a sign
-        AB = np.abs(EV)
-        DR = np.where(AB > 0, -RE / AB, np.nan)
-        LD = np.where(EV.imag != 0, -2 * np.pi * RE / EV.imag, np.nan)
-        FR = EV.imag / (2 * np.pi)
-    WN = names[np.clip(WH, -1, 1) + 1]
-    KIND = np.where(SS > 0.5, "sleeve", "rotor")
-    jx = R[:, bc.jx] if bc else None
-    jy = R[:, bc.jy] if bc else None
-    for k, it in enumerate(seg):
-        row = it[0]
-        st = status[k] if status[k] in STATUS else "error"
-        ke = int(n_eig[k])
-        if st not in CONVERGED or ke == 0:
-            out[at + k] = (fail_row(row, st, message[k] or "no equilibrium"), None, None)
-            continue
-        lam = EV[k, :ke]
-        ms = MS[k, :ke]
-        hm = H[k]
-        out[at + k] = ({**row, "_n": ke, "journal_x_m": float(jx[k]) if bc else math.nan,
-                        "journal_y_m": float(jy[k]) if bc else math.nan,
-                        "h_min_m": float(np.nanmin(hm)) if hm.size else math.nan,
-                        "iterations": int(IT[k]), "point_stable": bool(ms.all()),
-                        "max_real_1_per_s": float(lam.real.max()), "mode_id": np.arange(ke),
-                        "mode": np.arange(1, ke + 1), "freq_hz": FR[k, :ke],
-                        "eig_real_1_per_s": lam.real, "damping_ratio": DR[k, :ke],
-                        "log_dec": LD[k, :ke], "whirl": WN[k, :ke], "kind": KIND[k, :ke],
-                        "mode_stable": ms, "status": st, "message": message[k]},
-                       lam, modes[k])
 
 
 def _wf_rows(job, variants, chunk_id, lo, hi, rows):
@@ -434,46 +268,25 @@ def _lines(job, lo, hi):
         yield s, min(s + n, hi)
 
 
-def _threshold_rows(job, variants, chunk_id, lo, hi, rows):
-
-    for s, e in _lines(job, lo, hi):
-        threshold_line(job, variants, chunk_id, s, e, rows)
+_ANALYSIS = {"thermal": _thermal_rows, "waterfall": _wf_rows, "run-up": _runup_rows,
+             "robust": robust_rows}
 
 
-def _unbalance_rows(job, variants, chunk_id, lo, hi, rows):
-
-    for s, e in _lines(job, lo, hi):
-        unbalance_line(job, variants, chunk_id, s, e, rows)
-
-
-def _boundary_rows(job, variants, chunk_id, pids, rows):
-    """One row per listed point: max Re λ (rotor modes only with exclude_sleeve_modes), its
-    frequency, point_stable; ``level`` is set by the driver."""
-
-    excl = bool(job.options.get("exclude_sleeve_modes", False))
-    r_prev = None
-    for row, p, asm, opts, line, err in points(job, variants, chunk_id, 0, 0, pids):
-        if err:
-            rows.append(fail_row(row, "error", err))
-            continue
-        try:
-            y, fr, st, r = max_real(job, asm, p, r_prev if line else None, opts, excl)
-        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
-            rows.append(fail_row(row, "error", f"{type(exc).__name__}: {exc}"))
-            r_prev = None
-            continue
-        r_prev = r
-        if r is None:
-            rows.append(fail_row(row, st if st in STATUS else "error", "no equilibrium"))
-            continue
-        rows.append({**row, "max_real_1_per_s": y, "freq_hz": fr, "point_stable": y < 0,
-                     "level": job.level, "status": st, "message": ""})
+def _threshold_blocks(job, variants, chunk_id, pids, asms):
+    lo = pids[0] if len(pids) else 0
+    return [b for s, e in _lines(job, lo, lo + len(pids))
+            for b in threshold_line(job, variants, s, e, s - lo, asms)]
 
 
-_ANALYSIS = {"equilibrium": _eq_rows, "thermal": _thermal_rows, "stability": _stab_rows,
-             "campbell": _stab_rows,
-             "waterfall": _wf_rows, "threshold": _threshold_rows,
-             "unbalance": _unbalance_rows, "run-up": _runup_rows, "robust": robust_rows}
+def _unbalance_blocks(job, variants, chunk_id, pids, asms):
+    lo = pids[0] if len(pids) else 0
+    return [b for s, e in _lines(job, lo, lo + len(pids))
+            for b in unbalance_line(job, variants, s, e, s - lo, asms)]
+
+
+# Analyses whose chunk is built as columnar blocks (:mod:`.columns`, :mod:`.blocks`).
+_BLOCKS = {"equilibrium": eq_blocks, "stability": stab_blocks, "campbell": stab_blocks,
+           "threshold": _threshold_blocks, "unbalance": _unbalance_blocks}
 
 
 def _hopf_rows(job, variants, chunk_id, lo, hi, rows):
