@@ -174,12 +174,17 @@ def laws(rig, act, repeat):
                            pid(1.0e9, 2.0e6)], [25.0, 40.0, 50.0, 65.0])
     ad = adaptive_rejection(rig, [25.0, 40.0, 50.0, 65.0], [("displacement", 6)], 20.0,
                             chamber_pressure_pa=0.5e6, config_ay_m=0.0, actuator=act)
+    # γ(Ω) scheduled on its own grid, a leak and freezing at the valve's limits (§2.6)
+    ad2 = ad.with_gain(([25.0, 40.0, 50.0, 65.0], [20.0, 2.0, 10.0, 20.0]))
+    ad2 = type(ad2)(ad2.measurements, ad2.speeds_hz, ad2.influence, ad2.gain_1_per_s,
+                    leak_1_per_s=0.5, freeze_at_limits=True)
     prof = SpeedProfile.ramp(30.0, 60.0, 100.0)
     kw = dict(chamber_pressure_pa=0.5e6, config_ay_m=0.0, speed=prof, actuator=act,
               unbalances=[(6, 2e-5, 0.0)], n_out=301, rtol=RTOL, atol_m=ATOL)
     cases = {"fixed PD": dict(controller=fixed), "scheduled PD": dict(controller=sched),
              "adaptive 1x": dict(adaptive=ad), "fixed PD + adaptive 1x":
-             dict(controller=fixed, adaptive=ad)}
+             dict(controller=fixed, adaptive=ad),
+             "adaptive 1x γ(Ω)+σ+freeze": dict(adaptive=ad2)}
     res = {name: [] for name in cases}
     kw0 = dict(kw, n_out=2)
     for _ in range(repeat):

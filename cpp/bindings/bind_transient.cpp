@@ -79,7 +79,11 @@ void bind_transient(py::module_& m) {
       .def_readwrite("table_re", &AdaptiveHarmonic::table_re)
       .def_readwrite("table_im", &AdaptiveHarmonic::table_im)
       .def_readwrite("p0_re", &AdaptiveHarmonic::p0_re)
-      .def_readwrite("p0_im", &AdaptiveHarmonic::p0_im);
+      .def_readwrite("p0_im", &AdaptiveHarmonic::p0_im)
+      .def_readwrite("leak", &AdaptiveHarmonic::leak)
+      .def_readwrite("gain_omega", &AdaptiveHarmonic::gain_omega)
+      .def_readwrite("gain_table", &AdaptiveHarmonic::gain_table)
+      .def_readwrite("freeze_saturated", &AdaptiveHarmonic::freeze_saturated);
   py::class_<TransientInput>(m, "TransientInput")
       .def(py::init<>())
       .def_readwrite("omega", &TransientInput::omega)

@@ -82,6 +82,15 @@ void validate_adaptive(const AdaptiveHarmonic& h, Eigen::Index n) {
               h.table_im.allFinite() && h.measurement.allFinite() && h.offset.allFinite() &&
               std::isfinite(h.p0_re) && std::isfinite(h.p0_im),
           "adaptive: expected strictly increasing finite speeds and finite tables");
+  require(std::isfinite(h.leak) && h.leak >= 0,
+          "adaptive.leak: expected a finite leak rate >= 0 1/s");
+  require(h.gain_table.size() == h.gain_omega.size(),
+          shape_msg("adaptive.gain_table", h.gain_omega.size(), 1, h.gain_table.size(), 1));
+  if (h.scheduled_gain())
+    require(h.gain_omega.allFinite() && increasing(h.gain_omega) && h.gain_table.allFinite() &&
+                (h.gain_table.array() >= 0).all(),
+            "adaptive.gain_table: expected strictly increasing finite speeds and finite "
+            "gains >= 0 1/s");
 }
 
 void validate_operation(const SpeedProfile& s, const PressureCommand& p, const Actuator& a,

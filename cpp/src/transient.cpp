@@ -302,6 +302,17 @@ AdaptiveTerms adaptive_terms(const Ctx& c, const Point& P, const double* y, bool
   return T;
 }
 
+// The adaptation gain at this point: the constant γ or γ(Ω) of the schedule (interpolated as
+// interp_table); 0 while the command is saturated and the law freezes there (the leak stays).
+double adaptive_gain(const Ctx& c, const Point& P) {
+  const AdaptiveHarmonic& h = c.in->adaptive;
+  if (h.freeze_saturated) {
+    const Actuator& a = c.in->actuator;
+    if (!(P.cmd > a.p_min && P.cmd < a.p_max)) return 0.0;
+  }
+  return h.scheduled_gain() ? interp_table(h.gain_omega, h.gain_table, P.omega) : h.gain;
+}
+
 int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
   Ctx& c = *static_cast<Ctx*>(user);
   const Eigen::Index n = c.n;
@@ -347,10 +358,15 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
       }
     }
     if (c.ad) {
+      const AdaptiveHarmonic& h = in.adaptive;
+      const double g2 = 2.0 * adaptive_gain(c, P);
       const AdaptiveTerms T = adaptive_terms(c, P, yp, true);
-      const double g2 = 2.0 * in.adaptive.gain;
       Yd(c.iad) = -g2 * T.re;
       Yd(c.iad + 1) = -g2 * T.im;
+      if (h.leak != 0.0) {
+        Yd(c.iad) -= h.leak * Y(c.iad);
+        Yd(c.iad + 1) -= h.leak * Y(c.iad + 1);
+      }
     }
   });
 }
@@ -429,11 +445,14 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
       }
     }
     if (c.ad) {
+      const AdaptiveHarmonic& h = in.adaptive;
       const AdaptiveTerms T = adaptive_terms(c, P, yp, false);
-      const double g2 = 2.0 * in.adaptive.gain;
-      const Eigen::MatrixXd& Cm = in.adaptive.measurement;
+      const double g2 = 2.0 * adaptive_gain(c, P);
+      const Eigen::MatrixXd& Cm = h.measurement;
       Jm.block(c.iad, 0, 1, 2 * n) = -g2 * T.wre * Cm;
       Jm.block(c.iad + 1, 0, 1, 2 * n) = -g2 * T.wim * Cm;
+      Jm(c.iad, c.iad) -= h.leak;
+      Jm(c.iad + 1, c.iad + 1) -= h.leak;
     }
   });
 }

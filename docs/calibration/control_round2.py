@@ -4,7 +4,8 @@ run-up, each beside its reference.
 
 Run:  .venv/bin/python docs/calibration/control_round2.py [--part aw|schedule|adaptive|all]
       [--rate-hz-s 10] [--gamma 20] [--washout-hz 0] [--refine-rounds 0] [--no-runup]
-      [--unbalance ST ME PH] [--passive]
+      [--unbalance ST ME PH] [--passive] [--measure both|disk|journal] [--schedule]
+      [--fraction 0.5] [--leak 0] [--freeze] [--check]
 Prints every number quoted in docs/control.md §2.4–2.6.
 """
 
@@ -230,7 +231,19 @@ def part_schedule(rate, washout_hz=0.0, rounds=0, runups=True):
     return res
 
 
-def part_adaptive(rate, gamma, passive=False, measure="both"):
+def adaptive_grid():
+    grid = np.arange(10.0, 120.01, 1.0)
+    return np.unique(np.concatenate([grid, np.arange(35.0, 42.0, 0.1),
+                                     np.arange(84.0, 94.0, 0.1)]))
+
+
+def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fraction=0.5,
+                  gamma_max=20.0, leak=0.0, freeze=False, check=False):
+    """The adaptive 1× law in the run-up: a constant γ, or (``schedule``) γ(Ω) of the share
+    rule (rotordyn.control.adaptive_design) with γ ≤ gamma_max; optional leak σ and freezing
+    at the valve's limits; ``check``: the averaged loop's max Re of a constant-γ law too."""
+    from rotordyn.control.adaptive_design import adaptive_design, averaged_stability
+
     global tr_sys
     rig = rd.models.paper_rig()
     tr_sys = rig
@@ -238,19 +251,44 @@ def part_adaptive(rate, gamma, passive=False, measure="both"):
     if passive:
         tr, wall = runup(rig, rate)
         show("passive 0.5 MPa", tr, wall)
-    grid = np.arange(10.0, 120.01, 1.0)
-    grid = np.unique(np.concatenate([grid, np.arange(35.0, 42.0, 0.1),
-                                     np.arange(84.0, 94.0, 0.1)]))
+    grid = adaptive_grid()
     for lab, meas in (("disk B", [("displacement", DISK)]), ("journal", [("journal", 0)])):
         if measure not in ("both", lab.split()[0]):
             continue
         t0 = time.perf_counter()
-        law = adaptive_rejection(rig, grid, meas, gamma, chamber_pressure_pa=0.5e6,
-                                 config_ay_m=0.0, actuator=act)
-        print(f"[adaptive] {lab}: influence coefficients at {grid.size} speeds in "
-              f"{time.perf_counter() - t0:.1f} s; γ = {gamma} 1/s")
+        des = adaptive_design(rig, grid, meas, fraction=fraction, gain_max_1_per_s=gamma_max,
+                              leak_1_per_s=leak, freeze_at_limits=freeze,
+                              chamber_pressure_pa=0.5e6, config_ay_m=0.0, actuator=act)
+        g = des.gain_1_per_s
+        print(f"[adaptive] {lab}: influence coefficients and share-rule design at {grid.size} "
+              f"speeds in {time.perf_counter() - t0:.1f} s; |Σw + T̂⁺D − 1| ≤ "
+              f"{np.abs(des.share_sum - 1).max():.1e}")
+        for lo, hi in ((10, 30), (30, 36), (36, 42), (42, 60), (60, 84), (84, 95), (95, 120.1)):
+            m = (grid >= lo) & (grid < hi)
+            i = np.flatnonzero(m)[np.argmin(g[m])]
+            print(f"[adaptive]   {lo}–{hi:g} Hz: γ(Ω) {g[m].min():.3g}–{g[m].max():.3g} 1/s "
+                  f"(least at {grid[i]:.1f} Hz, set by the {des.limit_hz[i]:.2f} Hz mode); "
+                  f"averaged loop max Re {des.averaged_max_real_1_per_s[m].max():+.3f} 1/s "
+                  f"(plant {des.passive_max_real_1_per_s[m].max():+.3f})")
+        if check:
+            for gc in (gamma, 2.0):
+                am = averaged_stability(rig, des.law.with_gain(gc), chamber_pressure_pa=0.5e6,
+                                        config_ay_m=0.0, actuator=act)
+                bad = grid[am > 0]
+                print(f"[adaptive]   constant γ = {gc} 1/s, σ = {leak}: averaged loop max Re "
+                      f"{am.max():+.3f} 1/s at {grid[np.argmax(am)]:.1f} Hz; unstable at "
+                      f"{bad.size} of {grid.size} speeds"
+                      + (f" ({bad.min():.1f}–{bad.max():.1f} Hz)" if bad.size else ""))
+        law = des.law if schedule else des.law.with_gain(gamma)
+        tag = (f"γ(Ω) share rule κ = {fraction}, ≤ {gamma_max}" if schedule else f"γ = {gamma}")
+        tag += f", σ = {leak}" + (", frozen at the limits" if freeze else "")
         tr, wall = runup(rig, rate, adaptive=law)
-        show(f"adaptive 1× on {lab}", tr, wall)
+        show(f"adaptive 1× on {lab} ({tag})", tr, wall)
+        P = tr.adaptive_states
+        print(f"[adaptive]   |P| max {np.abs(P[:, 0] + 1j * P[:, 1]).max() / 1e6:.3f} MPa; "
+              f"command outside [0, 1] MPa in "
+              f"{100 * np.mean((tr.chamber_pressure_command_pa <= 0) | (tr.chamber_pressure_command_pa >= 1e6)):.1f} % "
+              f"of the samples; ended at {tr.speed_hz_t[np.isfinite(tr.t)].max():.1f} Hz")
 
 
 def part_bound():
@@ -291,6 +329,13 @@ def main():
     ap.add_argument("--measure", default="both", choices=["both", "disk", "journal"])
     ap.add_argument("--passive", action="store_true",
                     help="with --part adaptive: also the passive run-up at 0.5 MPa")
+    ap.add_argument("--schedule", action="store_true",
+                    help="with --part adaptive: γ(Ω) by the share rule (≤ --gamma)")
+    ap.add_argument("--fraction", type=float, default=0.5, help="κ of the share rule")
+    ap.add_argument("--leak", type=float, default=0.0, help="σ, 1/s")
+    ap.add_argument("--freeze", action="store_true", help="freeze at the valve's limits")
+    ap.add_argument("--check", action="store_true",
+                    help="averaged-loop check of constant γ (--gamma and 2)")
     a = ap.parse_args()
     global UB
     if a.unbalance:
@@ -306,7 +351,8 @@ def main():
     if a.part in ("bound", "all"):
         part_bound()
     if a.part in ("adaptive", "all"):
-        part_adaptive(a.rate_hz_s, a.gamma, a.passive, a.measure)
+        part_adaptive(a.rate_hz_s, a.gamma, a.passive, a.measure, a.schedule, a.fraction,
+                      a.gamma, a.leak, a.freeze, a.check)
 
 
 if __name__ == "__main__":

@@ -100,10 +100,20 @@ struct Controller {
 /// k× response to P = 1), interpolated piecewise linearly over Ω (constant outside). With
 /// T exact and the speed constant, the average of Ṗ is −γ (P − P*), P* = −T⁺ Y_u the
 /// least-squares optimum of the 1× response Y_u + T P.
+/// Extensions (each off by default, the law above bit for bit): a leak −σ P (σ = leak, 1/s;
+/// fixed point −(T̂⁺T + σ/γ)⁻¹ T̂⁺ Y_u); a gain scheduled over the speed, γ(Ω) interpolated
+/// piecewise linearly on its own grid (constant outside) in place of the constant gain; and
+/// freezing: while the command is outside the valve's [p_min, p_max] the gradient term is
+/// switched off (the leak stays), so P does not wind up against a saturated valve.
 struct AdaptiveHarmonic {
   bool enabled = false;
   double order = 1.0;
-  double gain = 0.0;            ///< γ, 1/s (≥ 0)
+  double gain = 0.0;            ///< γ, 1/s (≥ 0); used when gain_omega is empty
+  double leak = 0.0;            ///< σ, 1/s (≥ 0)
+  Eigen::VectorXd gain_omega;   ///< (n_γ,) rad/s, strictly increasing; empty: constant gain
+  Eigen::VectorXd gain_table;   ///< (n_γ,) γ(Ω) 1/s (≥ 0)
+  bool freeze_saturated = false;  ///< gradient off while the command is saturated
+  bool scheduled_gain() const { return gain_omega.size() > 0; }
   Eigen::MatrixXd measurement;  ///< C_m (n_y, 2n)
   Eigen::VectorXd offset;       ///< (n_y,)
   Eigen::VectorXd table_omega;  ///< (n_g,) rad/s, strictly increasing

@@ -20,6 +20,15 @@ rate γ (1/s): with T̂ = T and a constant speed the revolution-average is Ṗ =
 first-order convergence with time constant 1/γ, whatever the plant's phase; γ well below
 the speed (γ ≪ Ω) keeps the averaging valid. T̂⁺(Ω) is tabulated over a speed grid and
 interpolated piecewise linearly at Ω(t) in the C++ right-hand side.
+
+Extensions for a run-up (docs/control.md §2.6; each off by default, the law above bit for bit):
+
+    Ṗ = −γ(Ω) T̂⁺(Ω) · 2 y(t) e^{−iθ} − σ P,
+
+a leak σ (``leak_1_per_s``: revolution-averaged fixed point P = −(T̂⁺T + σ/γ)⁻¹ T̂⁺ Y_u, P
+bounded by γ|T̂⁺Y|/σ), γ(Ω) a schedule over the speed (designed on the plant by
+:func:`rotordyn.control.adaptive_design.adaptive_design`), and ``freeze_at_limits`` (no
+gradient while the command is outside the valve's limits).
 """
 
 from __future__ import annotations
@@ -27,7 +36,8 @@ from __future__ import annotations
 import numpy as np
 
 from rotordyn._common import validate as v
-from rotordyn.operation.adaptive import MAX_GAIN_1_PER_S, AdaptiveRejection, _gain
+from rotordyn.operation.adaptive import (MAX_GAIN_1_PER_S, MAX_LEAK_1_PER_S, AdaptiveRejection,
+                                         _gain, _gain_schedule, _is_scalar, _leak)
 from rotordyn.operation.measurement import parse_measurements
 
 
@@ -52,14 +62,22 @@ def influence_coefficients(system, speeds_hz, measurements, *, chamber_pressure_
 
 def adaptive_rejection(system, speeds_hz, measurements, gain_1_per_s, *,
                        chamber_pressure_pa=0.0, config_ay_m=None, actuator=None,
-                       p0_pa: complex = 0j) -> AdaptiveRejection:
+                       p0_pa: complex = 0j, leak_1_per_s: float = 0.0,
+                       freeze_at_limits: bool = False) -> AdaptiveRejection:
     """The adaptive 1× law with influence coefficients from the linear model
-    (:func:`influence_coefficients`) on the grid ``speeds_hz``."""
-    g = _gain(gain_1_per_s)
+    (:func:`influence_coefficients`) on the grid ``speeds_hz``; ``gain_1_per_s`` a number or a
+    schedule γ(Ω) (:class:`AdaptiveRejection`; designed on the plant:
+    :func:`rotordyn.control.adaptive_design.adaptive_design`), ``leak_1_per_s`` σ,
+    ``freeze_at_limits`` the gradient off while the command is saturated."""
+    sp = v.vector("speeds_hz", speeds_hz)
+    g = _gain(gain_1_per_s) if _is_scalar(gain_1_per_s) else _gain_schedule(gain_1_per_s, sp)
+    _leak(leak_1_per_s)
     T = influence_coefficients(system, speeds_hz, measurements,
                                chamber_pressure_pa=chamber_pressure_pa,
                                config_ay_m=config_ay_m, actuator=actuator)
-    return AdaptiveRejection(measurements, speeds_hz, T, g, p0_pa)
+    return AdaptiveRejection(measurements, speeds_hz, T, g, p0_pa, 1.0, leak_1_per_s,
+                             freeze_at_limits)
 
 
-__all__ = ["AdaptiveRejection", "MAX_GAIN_1_PER_S", "adaptive_rejection", "influence_coefficients"]
+__all__ = ["AdaptiveRejection", "MAX_GAIN_1_PER_S", "adaptive_rejection", "influence_coefficients",
+           "MAX_LEAK_1_PER_S"]
