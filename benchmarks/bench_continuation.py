@@ -59,7 +59,7 @@ def whip(args) -> int:
     cyc = rd.periodic_orbit(s, 130.0, start=tr, **KW)
     print("start:", cyc)
     br = rd.continuation(s, "speed_hz", (100.0, 140.0), cyc, ds=0.1, ds_max=0.3,
-                         max_points=12, direction=-1, **KW)
+                         max_points=12, direction=-1, newton=args.newton, **KW)
     wall, cpu = time.perf_counter() - w0, time.process_time() - c0
     print(br)
     print_branch(br)
@@ -76,6 +76,9 @@ def main() -> int:
     ap.add_argument("--down", action="store_true", help="also continue towards lower p_c")
     ap.add_argument("--sensitivity-rtol", type=float, default=None,
                     help="monodromy tolerance of the branch (default: rtol = 1e-6)")
+    ap.add_argument("--newton", choices=("broyden", "sensitivities"), default="broyden",
+                    help="the correctors' Newton matrix (default: Broyden updates from the "
+                         "previous point's)")
     ap.add_argument("--whip", action="store_true",
                     help="only the oil-whip branch of the compressor on plain bearings "
                          "(tests/data/models/compressor_plain.toml, 36 x 6 film grid) from "
@@ -100,7 +103,8 @@ def main() -> int:
         w0, c0 = time.perf_counter(), time.process_time()
         br = rd.continuation(rig, "chamber_pressure_pa", (0.0, 0.12e6), cyc, ds=args.ds,
                              max_points=args.max_points, direction=d,
-                             sensitivity_rtol=args.sensitivity_rtol, **KW)
+                             sensitivity_rtol=args.sensitivity_rtol, newton=args.newton,
+                             **KW)
         wall, cpu = time.perf_counter() - w0, time.process_time() - c0
         print(f"\nbranch {name}: {br}")
         print(f"{'p_c MPa':>10} {'amplitude µm':>13} {'A/c':>6} {'period ms':>10} "

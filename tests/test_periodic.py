@@ -351,3 +351,26 @@ def test_same_inputs_same_orbit_whatever_ran_before(plain_system):
     b = periodic_orbit(plain_system, 50.0, **kw)
     assert a.status == b.status == "ok"
     assert np.array_equal(a.r, b.r) and np.array_equal(a.multipliers, b.multipliers)
+
+
+def test_broyden_newton_finds_the_same_orbit_with_fewer_sensitivity_flows(plain_system):
+    """Newton with Broyden's secant updates between flows without sensitivities
+    (newton="broyden") against Newton with the monodromy from sensitivities in every
+    iteration (the default), from the same
+    start (the static equilibrium) on plain journal bearings with cavitation: the same orbit
+    within the convergence tolerance, the same multipliers (both from the final pass with the
+    sensitivities in the error test, at nearly the same start), and no more flows with
+    sensitivities (here as many: the refresh rule — a step that does not halve the residual
+    — fires on this start). An unknown ``newton`` is an InputError naming it."""
+    f, ub = 50.0, [(3, 2e-4, 0.0)]
+    kw = dict(kind="forced", unbalances=ub, rtol=1e-9, tol=1e-7)
+    a = periodic_orbit(plain_system, f, newton="broyden", **kw)
+    b = periodic_orbit(plain_system, f, **kw)
+    assert a.status == "ok" and b.status == "ok", (a.message, b.message)
+    L = a.length_scale_m
+    assert np.abs(a.r - b.r).max() < 10 * 1e-7 * L
+    assert np.abs(a.multipliers - b.multipliers).max() < 1e-5
+    assert a.stats["sensitivity_flows"] <= b.stats["sensitivity_flows"]
+    assert b.stats["sensitivity_flows"] == b.stats["iterations"]
+    with pytest.raises(rd.InputError, match="newton"):
+        periodic_orbit(plain_system, f, newton="chord", **kw)

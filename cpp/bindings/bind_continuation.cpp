@@ -25,12 +25,14 @@ void bind_continuation(py::module_& m) {
       .def_readwrite("tangent", &ContinuationInput::tangent)
       .def_readwrite("ds", &ContinuationInput::ds)
       .def_readwrite("direction", &ContinuationInput::direction)
-      .def_readwrite("fd_step", &ContinuationInput::fd_step);
+      .def_readwrite("fd_step", &ContinuationInput::fd_step)
+      .def_readwrite("jacobian", &ContinuationInput::jacobian);
   py::class_<ContinuationStep>(m, "ContinuationStep")
       .def_readonly("orbit", &ContinuationStep::orbit)
       .def_readonly("p", &ContinuationStep::p)
       .def_readonly("tangent", &ContinuationStep::tangent)
-      .def_readonly("fd_flows", &ContinuationStep::fd_flows);
+      .def_readonly("fd_flows", &ContinuationStep::fd_flows)
+      .def_readonly("jacobian", &ContinuationStep::jacobian);
   m.def("continuation_step", &continuation_step, py::arg("solver"), py::arg("input"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>(),
         "One pseudo-arclength corrector step of a periodic-orbit branch (shooting Newton "

@@ -33,7 +33,8 @@ void bind_periodic(py::module_& m) {
       .def_readwrite("length_scale", &ShootingOptions::length_scale)
       .def_readwrite("max_iter", &ShootingOptions::max_iter)
       .def_readwrite("sensitivity_error_control", &ShootingOptions::sensitivity_error_control)
-      .def_readwrite("sensitivity_rtol", &ShootingOptions::sensitivity_rtol);
+      .def_readwrite("sensitivity_rtol", &ShootingOptions::sensitivity_rtol)
+      .def_readwrite("broyden", &ShootingOptions::broyden);
   py::class_<Floquet>(m, "Floquet")
       .def_readonly("multipliers", &Floquet::multipliers)
       .def_readonly("trivial", &Floquet::trivial)
@@ -61,7 +62,8 @@ void bind_periodic(py::module_& m) {
       .def_readonly("rhs_evals", &PeriodicOrbitResult::rhs_evals)
       .def_readonly("sens_rhs_evals", &PeriodicOrbitResult::sens_rhs_evals)
       .def_readonly("jac_evals", &PeriodicOrbitResult::jac_evals)
-      .def_readonly("reynolds_solves", &PeriodicOrbitResult::reynolds_solves);
+      .def_readonly("reynolds_solves", &PeriodicOrbitResult::reynolds_solves)
+      .def_readonly("sensitivity_flows", &PeriodicOrbitResult::sensitivity_flows);
   m.def("periodic_orbit", &periodic_orbit, py::arg("solver"), py::arg("input"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>(),
         "Periodic orbit of eq. 12 by single shooting (CVODES forward sensitivities for the "

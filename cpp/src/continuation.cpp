@@ -104,13 +104,27 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
   cols.push_back(N + 1);
   const Eigen::Index U = static_cast<Eigen::Index>(cols.size());  // unknowns
   const Eigen::Index Rrows = U - 1;
+  // The rows R of the bordered matrix (N × U, scaled): Φ − I, the period column, ∂R/∂p.
+  // With opt.broyden the corrector starts from the previous point's (c.jacobian) and flows
+  // without sensitivities, updating the x and p columns by Broyden; the period column is
+  // recomputed from f(φ_T) at every iterate. Φ (with the sensitivities) and ∂R/∂p (two flows)
+  // are computed afresh only when the matrix needs it: no usable previous matrix, a step
+  // that did not halve the residual, and the final pass at the converged point (error test).
+  Eigen::MatrixXd JR;
+  bool fresh = !(opt.broyden && c.jacobian.rows() == N && c.jacobian.cols() == U &&
+                 c.jacobian.allFinite());
+  if (!fresh) JR = c.jacobian;
+  bool refreshed = false;
+  Eigen::VectorXd R_prev, tcol_prev, dz_prev;
   for (int it = 0; it <= opt.max_iter + 1; ++it) {
     in_p = at_parameter(c, p);
     Flow F;
     setup_flow(F, solver, in_p);
     const double TT = autonomous ? T : in_p.period;
-    run = run_flow(F, x, in_p.t0, TT, true, in_p.n_out, opt.cvode, errcon, srtol);
+    const bool sens = errcon || fresh || !opt.broyden;
+    run = run_flow(F, x, in_p.t0, TT, sens, in_p.n_out, opt.cvode, errcon, srtol);
     o.iterations = it + 1;
+    if (sens) ++o.sensitivity_flows;
     o.steps += run.steps;
     o.rhs_evals += run.rhs_evals;
     o.jac_evals += run.jac_evals;
@@ -136,23 +150,49 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
       errcon = true;        // at the same point with it (no ∂R/∂p needed for this one)
       continue;
     }
-    // ∂R/∂p by a central difference (also needed for the tangent at the converged point).
-    const Eigen::VectorXd Rp1 = residual(solver, c, x, T, p + h, opt.cvode);
-    const Eigen::VectorXd Rm1 = residual(solver, c, x, T, p - h, opt.cvode);
-    out.fd_flows += 2;
-    if (Rp1.size() == 0 || Rm1.size() == 0) {
-      o.status = "not_converged";
-      o.message = "corrector iteration " + std::to_string(it) +
-                  ": a flow at p ± h for the parameter derivative failed";
-      break;
+    const bool stalled = !done && !refreshed && o.residuals.size() > 1 &&
+                         res > 0.5 * o.residuals[o.residuals.size() - 2];
+    refreshed = false;
+    if (stalled && !sens) {  // the secant matrix no longer halves the residual: refresh it
+      fresh = true;          // at the same point
+      refreshed = true;
+      continue;
     }
-    const Eigen::VectorXd Rp_z = ((Rp1 - Rm1) / (2 * c.fd_step)).cwiseQuotient(Dx);
+    Eigen::VectorXd tcol;
+    if (autonomous) tcol = DT * vector_field(F, in_p.t0 + T, run.xT).cwiseQuotient(Dx);
+    if (sens) {
+      // ∂R/∂p by a central difference (also needed for the tangent at the converged point).
+      const Eigen::VectorXd Rp1 = residual(solver, c, x, T, p + h, opt.cvode);
+      const Eigen::VectorXd Rm1 = residual(solver, c, x, T, p - h, opt.cvode);
+      out.fd_flows += 2;
+      if (Rp1.size() == 0 || Rm1.size() == 0) {
+        o.status = "not_converged";
+        o.message = "corrector iteration " + std::to_string(it) +
+                    ": a flow at p ± h for the parameter derivative failed";
+        break;
+      }
+      JR = Eigen::MatrixXd::Zero(N, U);
+      JR.leftCols(N) = Dx.cwiseInverse().asDiagonal() * run.Phi * Dx.asDiagonal() -
+                       Eigen::MatrixXd::Identity(N, N);
+      JR.col(U - 1) = ((Rp1 - Rm1) / (2 * c.fd_step)).cwiseQuotient(Dx);
+      fresh = false;
+    } else if (dz_prev.size() == U) {
+      // Broyden on the x and p columns: JR += (y − JR s) sᵀ / sᵀs, s the last step without
+      // its period component, y the change of R less the period column's share.
+      Eigen::VectorXd s_xp = dz_prev;
+      Eigen::VectorXd y = Rz - R_prev;
+      if (autonomous) {
+        y -= tcol_prev * dz_prev(N);
+        s_xp(N) = 0.0;
+      }
+      const double ss = s_xp.squaredNorm();
+      if (ss > 0) JR += (y - JR * s_xp) * (s_xp.transpose() / ss);
+    }
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(U, U);
-    J.topLeftCorner(N, N) = Dx.cwiseInverse().asDiagonal() * run.Phi * Dx.asDiagonal() -
-                            Eigen::MatrixXd::Identity(N, N);
-    J.block(0, U - 1, N, 1) = Rp_z;
+    J.topRows(N) = JR;
     if (autonomous) {
-      J.block(0, N, N, 1) = DT * vector_field(F, in_p.t0 + T, run.xT).cwiseQuotient(Dx);
+      J.block(0, N, N, 1) = tcol;
+      JR.col(N) = tcol;
       const Eigen::VectorXd f0 = vector_field(F, in_p.t0, x).cwiseQuotient(Dx);
       J.block(N, 0, 1, N) = f0.transpose() / std::max(f0.norm(), 1e-300);
     }
@@ -161,8 +201,7 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
       converged = true;
       break;
     }
-    if (!errcon && o.residuals.size() > 1 && res > 0.5 * o.residuals[o.residuals.size() - 2])
-      errcon = true;
+    if (stalled && !errcon) errcon = true;
     if (it >= opt.max_iter) break;
     Eigen::VectorXd b = Eigen::VectorXd::Zero(U);
     b.head(N) = -Rz;
@@ -174,6 +213,11 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
     }
     Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
     if (lu.rank() < U) {
+      if (!sens) {  // a degenerate secant matrix: refresh it at the same point
+        fresh = true;
+        refreshed = true;
+        continue;
+      }
       o.status = "not_converged";
       o.message = "corrector iteration " + std::to_string(it) +
                   ": singular bordered Newton matrix (a branch point, or a step too long)";
@@ -192,6 +236,9 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
       o.message = "corrector iteration " + std::to_string(it) + ": the period fell to ≤ 0";
       break;
     }
+    R_prev = Rz;
+    tcol_prev = tcol;
+    dz_prev = dz;
   }
   o.reynolds_solves = solver.reynolds_solves() - solves0;
   o.period = autonomous ? T : at_parameter(c, p).period;
@@ -253,6 +300,7 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
   if (first && tz(U - 1) * c.direction < 0) tz = -tz;
   out.tangent = Eigen::VectorXd::Zero(K);
   for (Eigen::Index k = 0; k < U; ++k) out.tangent(cols[static_cast<std::size_t>(k)]) = tz(k);
+  out.jacobian = JR;
   return out;
 }
 

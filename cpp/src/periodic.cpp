@@ -348,14 +348,23 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
   const double max_step = 0.25;  // scaled units: a quarter of the length scale
   FlowRun run;
   bool converged = false;
-  // The Newton iterations may run with the sensitivities outside the error test (cheap: the
-  // steps are the orbit's); the converged orbit is always integrated once more with them in
-  // it, so the monodromy and the multipliers reported have CVODES's error control.
+  // The Newton iterations run with the sensitivities outside the error test (cheap: the steps
+  // are the orbit's), and with opt.broyden only when the matrix needs refreshing: in between,
+  // flows without sensitivities and Broyden's rank-one secant update of Φ − I. The converged
+  // orbit is always integrated once more with the sensitivities in the error test, so the
+  // monodromy and the multipliers reported have CVODES's error control.
   bool errcon = opt.sensitivity_error_control;
+  bool fresh = true;        // the next flow integrates the sensitivities (a new matrix)
+  bool refreshed = false;   // that flow repeats the last point (no stall test against it)
+  const Eigen::Index K = autonomous ? N + 1 : N;
+  Eigen::MatrixXd Jx;       // scaled Φ − I (N × N), exact or Broyden-updated
+  Eigen::VectorXd R_prev, tcol_prev, dz_prev;
   for (int it = 0; it <= opt.max_iter + 1; ++it) {
-    run = run_flow(F, x, in.t0, T, true, in.n_out, opt.cvode, errcon,
+    const bool sens = errcon || fresh || !opt.broyden;
+    run = run_flow(F, x, in.t0, T, sens, in.n_out, opt.cvode, errcon,
                    opt.sensitivity_rtol > 0 ? opt.sensitivity_rtol : opt.cvode.rtol);
     out.iterations = it + 1;
+    if (sens) ++out.sensitivity_flows;
     out.steps += run.steps;
     out.rhs_evals += run.rhs_evals;
     out.jac_evals += run.jac_evals;
@@ -382,27 +391,53 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
       errcon = true;  // the final pass at the same start
       continue;
     }
+    const bool stalled = !refreshed && out.residuals.size() > 1 &&
+                         res > 0.5 * out.residuals[out.residuals.size() - 2];
+    refreshed = false;
+    if (stalled && !sens) {
+      // A secant matrix that no longer halves the residual: the same start once more, with
+      // the sensitivities (the flow is the same; the matrix is new).
+      fresh = true;
+      refreshed = true;
+      continue;
+    }
     // Without error control the sensitivities (and the orbit's end point, on other steps)
-    // are noisier: once a Newton step stops halving the residual, continue with it.
-    if (!errcon && out.residuals.size() > 1 &&
-        res > 0.5 * out.residuals[out.residuals.size() - 2])
-      errcon = true;
+    // are noisier: once a Newton step with fresh sensitivities stops halving the residual,
+    // continue with them in the error test.
+    if (stalled && !errcon) errcon = true;
     if (it >= opt.max_iter) break;
+    Eigen::VectorXd tcol;
+    if (autonomous) tcol = T * vector_field(F, in.t0 + T, run.xT).cwiseQuotient(D);
+    if (sens) {
+      Jx = D.cwiseInverse().asDiagonal() * run.Phi * D.asDiagonal() -
+           Eigen::MatrixXd::Identity(N, N);
+      fresh = false;
+    } else {
+      // Broyden: Jx += (y − Jx s) sᵀ / sᵀs with s the last step in x and y the change of R
+      // less the period column's share.
+      const Eigen::VectorXd s_x = dz_prev.head(N);
+      Eigen::VectorXd y = R - R_prev;
+      if (autonomous) y -= tcol_prev * dz_prev(N);
+      const double ss = s_x.squaredNorm();
+      if (ss > 0) Jx += (y - Jx * s_x) * (s_x.transpose() / ss);
+    }
     // Newton step in scaled coordinates z = D⁻¹ x, τ = ΔT / T.
-    const Eigen::MatrixXd Phi_z = D.cwiseInverse().asDiagonal() * run.Phi * D.asDiagonal();
-    const Eigen::Index K = autonomous ? N + 1 : N;
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(K, K);
     Eigen::VectorXd b = Eigen::VectorXd::Zero(K);
-    J.topLeftCorner(N, N) = Phi_z - Eigen::MatrixXd::Identity(N, N);
+    J.topLeftCorner(N, N) = Jx;
     b.head(N) = -R;
     if (autonomous) {
-      const Eigen::VectorXd fT = vector_field(F, in.t0 + T, run.xT).cwiseQuotient(D);
       const Eigen::VectorXd f0 = vector_field(F, in.t0, x).cwiseQuotient(D);
-      J.block(0, N, N, 1) = T * fT;
+      J.block(0, N, N, 1) = tcol;
       J.block(N, 0, 1, N) = f0.transpose() / std::max(f0.norm(), 1e-300);
     }
     Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
     if (lu.rank() < K) {
+      if (!sens) {  // a degenerate secant matrix: start again from sensitivities
+        fresh = true;
+        refreshed = true;
+        continue;
+      }
       out.status = "not_converged";
       out.message = "shooting iteration " + std::to_string(it) +
                     ": singular Newton matrix (a Floquet multiplier at 1, or the start is an "
@@ -416,6 +451,9 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
     dz /= cap;
     x += dz.head(N).cwiseProduct(D);
     if (autonomous) T *= 1.0 + dz(N);
+    R_prev = R;
+    tcol_prev = tcol;
+    dz_prev = dz;
   }
   out.reynolds_solves = solver.reynolds_solves() - solves0;
   out.sens_rhs_evals = F.sens_evals;

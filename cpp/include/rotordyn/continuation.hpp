@@ -13,8 +13,11 @@
 //
 // by Newton with the matrix [[Φ − I, D_T f(φ_T), ∂R/∂p]; [f(x̂)ᵀ, 0, 0]; tᵀ] (scaled):
 // Φ from CVODES forward sensitivities, ∂R/∂p by a central finite difference of two flows
-// without sensitivities at p ± h (h = fd_step · D_p). The new tangent is the null vector of
-// the first N (+1) rows, oriented along the previous tangent.
+// without sensitivities at p ± h (h = fd_step · D_p); with ShootingOptions::broyden the
+// iterations start from the previous point's matrix and update it by Broyden from flows
+// without sensitivities, and only the converged point gets Φ (error-controlled) and ∂R/∂p.
+// The new tangent is the null vector of the first N (+1) rows, oriented along the previous
+// tangent.
 #pragma once
 #include <Eigen/Core>
 
@@ -41,6 +44,11 @@ struct ContinuationInput {
   double ds = 0.0;                 ///< scaled arclength from y_prev
   int direction = 1;               ///< first point: orient the new tangent to increase p (+1)
   double fd_step = 1e-4;           ///< h / D_p of the central difference ∂R/∂p
+  /// (2n, U) the scaled rows R of the bordered matrix at the previous point
+  /// (ContinuationStep::jacobian; U = 2n + 2 autonomous, 2n + 1 forced): with
+  /// ShootingOptions::broyden the corrector starts from it without sensitivities and updates
+  /// it by Broyden; empty: the first iteration integrates the sensitivities.
+  Eigen::MatrixXd jacobian;
 };
 
 struct ContinuationStep {
@@ -48,6 +56,9 @@ struct ContinuationStep {
   double p = 0.0;                  ///< its parameter
   Eigen::VectorXd tangent;         ///< (2n + 2) unit tangent there (scaled), empty on failure
   long fd_flows = 0;               ///< flows without sensitivities for ∂R/∂p
+  /// (2n, U) the scaled rows R of the bordered matrix at the corrected point (error-controlled
+  /// Φ − I, D_T f(φ_T), ∂R/∂p): the next corrector's starting matrix. Empty on failure.
+  Eigen::MatrixXd jacobian;
 };
 
 /// One pseudo-arclength corrector step. Failures are statuses of `orbit`; InputError for

@@ -16,7 +16,10 @@
 //                                                  Newton matrix [Φ − I, f(φ_T); f(x̂)ᵀ D⁻², 0].
 //
 // The Newton iteration works in scaled coordinates (positions / L, velocities / (L ω), L the
-// smallest film clearance, ω the larger of Ω and 2π/T), with the step capped at 0.25 L.
+// smallest film clearance, ω the larger of Ω and 2π/T), with the step capped at 0.25 L. Its
+// matrix: Φ from one flow with sensitivities, then Broyden updates from flows without them
+// (ShootingOptions::broyden); the converged orbit is integrated once more with the
+// sensitivities in the error test for the reported monodromy.
 #pragma once
 #include <Eigen/Core>
 
@@ -58,6 +61,12 @@ struct ShootingOptions {
   /// Relative tolerance of the sensitivities in the error test (their absolute tolerances:
   /// this × atol_i / atol_j for ∂x_i/∂x0_j); 0: cvode.rtol.
   double sensitivity_rtol = 0.0;
+  /// Newton matrix of the iterations before the final pass. true: the monodromy of one flow
+  /// with sensitivities (outside the error test), then Broyden rank-one secant updates from
+  /// flows without sensitivities (each as cheap as one transient period); refreshed by a flow
+  /// with sensitivities when a step does not halve the residual. false: sensitivities in
+  /// every iteration (Newton). The final pass is the same either way.
+  bool broyden = true;
 };
 
 /// Floquet multipliers of a monodromy matrix and the type of the critical one.
@@ -91,6 +100,7 @@ struct PeriodicOrbitResult {
   std::string status = "ok";       ///< ok | not_converged | rub | error
   std::string message;
   long steps = 0, rhs_evals = 0, sens_rhs_evals = 0, jac_evals = 0, reynolds_solves = 0;
+  long sensitivity_flows = 0;      ///< flows with sensitivities among the `iterations`
 };
 
 /// Shooting Newton from (r0, v0, period). A failure (no convergence, the journal reaching the

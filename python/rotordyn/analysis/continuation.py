@@ -4,9 +4,10 @@ configuration a_y, with Floquet stability, folds continued past, and the bifurca
 multiplier crosses the unit circle.
 
 The loop (predictor along the tangent, step-size control, bounds, detection) runs here; each
-corrector is one C++ call (``_core.continuation_step``: the shooting Newton over CVODES with
-forward sensitivities, bordered by ∂R/∂p — a central finite difference of two flows — and the
-arclength condition)."""
+corrector is one C++ call (``_core.continuation_step``: the shooting Newton over CVODES,
+bordered by ∂R/∂p and the arclength condition; its matrix starts from the previous point's
+and is updated by Broyden from flows without sensitivities; Φ from forward sensitivities and
+∂R/∂p — a central finite difference of two flows — are recomputed at the converged point)."""
 
 from __future__ import annotations
 
@@ -18,7 +19,7 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled
-from rotordyn.analysis.periodic import orbit_result
+from rotordyn.analysis.periodic import NEWTON, orbit_result
 from rotordyn.errors import InputError
 from rotordyn.model.system import System
 from rotordyn.results.continuation import BranchResult
@@ -53,7 +54,7 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
                  rtol: float = 1e-8, atol_m: float = 1e-12, tol: float = 1e-6,
                  max_iter: int = 8, max_steps: int = 200000, fd_step: float = 1e-4,
                  n_out: int = 101, sensitivity_rtol: float | None = None,
-                 progress=None) -> BranchResult:
+                 newton: str = "sensitivities", progress=None) -> BranchResult:
     """Continue the periodic orbit ``start`` over ``vary`` within ``bounds``.
 
     Parameters
@@ -70,8 +71,9 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
     ds, ds_min, ds_max
         Pseudo-arclength step in scaled units: positions / L (L the smallest film clearance),
         velocities / (L ω), the period / T_start, the parameter / ``param_scale``. The step
-        grows ×1.5 after a corrector converging in ≤ 3 iterations, halves after a failure or a
-        turn of the tangent by more than 30°; the branch stops below ``ds_min``.
+        grows ×1.5 after a corrector converging in ≤ 3 flows (≤ 4 with Broyden), halves after
+        a failure or a turn of the tangent by more than 30°; the branch stops below
+        ``ds_min``.
     max_points
         Points on the branch, the start included.
     direction
@@ -86,6 +88,11 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
         Relative tolerance of the monodromy in the final (error-controlled) pass at each
         point (default ``rtol``): the accuracy of the multipliers and the tangent; looser is
         cheaper (as for :func:`rotordyn.periodic_orbit`).
+    newton
+        ``"sensitivities"`` (default): Φ and ∂R/∂p at every iteration. ``"broyden"``: each
+        corrector starts from the previous point's bordered matrix and updates it by Broyden
+        from flows without sensitivities; Φ and ∂R/∂p are recomputed at the converged point
+        (and when a step does not halve the residual). Both converge within tol.
     progress
         None, or a callable(point_index, BranchResult-so-far message) for progress lines.
 
@@ -192,6 +199,7 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
     opt.cvode, opt.tol, opt.max_iter = c, float(tol), int(max_iter)
     if sensitivity_rtol is not None:
         opt.sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
+    opt.broyden = v.choice("newton", newton, NEWTON) == "broyden"
 
     def point_result(step, p_core):
         p = p_core / to_core
@@ -204,8 +212,9 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
         # the result's config_ay_m is the first bearing's; the parameter is the active one's
         return dataclasses.replace(o, config_ay_m=float(p))
 
-    def correct(x, T, p_core, y_prev, tangent, step_ds):
+    def correct(x, T, p_core, y_prev, tangent, step_ds, jacobian=np.zeros((0, 0))):
         base.r0, base.v0, base.period = x[:n], x[n:], float(T)
+        inp.jacobian = jacobian
         inp.base = base
         inp.p = float(p_core)
         inp.y_prev = y_prev
@@ -216,9 +225,9 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
     x0 = np.concatenate([start.r[0], start.v[0]])
     y_start = np.concatenate([x0, [start.period_s, p_start * to_core]])
     first = correct(x0, start.period_s, p_start * to_core, y_start, np.zeros(0), 0.0)
-    orbits, ys, tangents, arcl = [], [], [], []
+    orbits, ys, tangents, arcl, jacobians = [], [], [], [], []
     stats = {"correctors": 1, "failed_correctors": 0, "flows": first.orbit.iterations,
-             "fd_flows": first.fd_flows}
+             "sensitivity_flows": first.orbit.sensitivity_flows, "fd_flows": first.fd_flows}
     if first.orbit.status != "ok":
         return BranchResult(
             vary=vary, kind=kind, parameter=np.zeros(0),
@@ -234,6 +243,7 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
         orbits.append(o)
         ys.append(np.concatenate([o.r[0], o.v[0], [o.period_s, step.p]]))
         tangents.append(np.asarray(step.tangent, dtype=float))
+        jacobians.append(np.asarray(step.jacobian, dtype=float))
         if progress is not None:
             progress(len(orbits) - 1, repr(o))
 
@@ -245,9 +255,10 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
     while len(orbits) < max_points:
         y, t = ys[-1], tangents[-1]
         yp = y + h * t * scale
-        step = correct(yp[:2 * n], yp[2 * n], yp[2 * n + 1], y, t, h)
+        step = correct(yp[:2 * n], yp[2 * n], yp[2 * n + 1], y, t, h, jacobians[-1])
         stats["correctors"] += 1
         stats["flows"] += step.orbit.iterations
+        stats["sensitivity_flows"] += step.orbit.sensitivity_flows
         stats["fd_flows"] += step.fd_flows
         o = step.orbit
         bad = o.status != "ok"
@@ -283,7 +294,9 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
             break
         accept(step)
         arcl.append(arcl[-1] + h)
-        if o.iterations <= 3:
+        # a quick corrector (Broyden: its flows are cheaper and converge superlinearly, one
+        # more is allowed) lets the step grow
+        if o.iterations <= (3 if newton == "sensitivities" else 4):
             h = min(h * 1.5, ds_max)
 
     br = _branch(vary, kind, orbits, tangents, arcl, to_core, bcs, (lo, hi), stop, message,

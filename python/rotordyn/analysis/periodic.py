@@ -20,6 +20,7 @@ from rotordyn.results.transient import TransientResult
 from rotordyn.units import hz_to_rad_s
 
 KINDS = ("autonomous", "forced")
+NEWTON = ("broyden", "sensitivities")
 
 
 def period_from_transient(result: TransientResult, bearing: int = 0,
@@ -54,7 +55,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                    atol_m: float = 1e-12, tol: float = 1e-6, max_iter: int = 30,
                    max_steps: int = 200000,
                    sensitivity_error_control: bool = False,
-                   sensitivity_rtol: float | None = None) -> PeriodicOrbitResult:
+                   sensitivity_rtol: float | None = None,
+                   newton: str = "sensitivities") -> PeriodicOrbitResult:
     """Periodic orbit of eq. 12 by single shooting, with its Floquet multipliers.
 
     Unknowns: the state x0 = (r, ṙ) (2n) at t0, and for ``kind="autonomous"`` the period T
@@ -97,6 +99,13 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     sensitivity_rtol
         Relative tolerance of the sensitivities in the error test (default ``rtol``): the
         accuracy of the monodromy matrix and the multipliers; looser is cheaper.
+    newton
+        The matrix of the Newton iterations before the final pass: ``"sensitivities"``
+        (default) Φ from sensitivities in every iteration; ``"broyden"`` Φ from one flow with
+        sensitivities, then Broyden's rank-one secant updates from flows without them (each
+        as cheap as a transient period), refreshed by sensitivities when a step does not
+        halve the residual. Both converge to the orbit within tol; Broyden stops just under
+        tol where Newton overshoots far below it (docs/nonlinear.md).
 
     Returns
     -------
@@ -206,6 +215,7 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         opt.sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
     opt.sensitivity_error_control = v.boolean("sensitivity_error_control",
                                               sensitivity_error_control)
+    opt.broyden = v.choice("newton", newton, NEWTON) == "broyden"
     res = _core.periodic_orbit(asm.solver, inp, opt)
     return orbit_result(asm, res, kind, float(speed_hz), float(chamber_pressure_pa), a)
 
@@ -238,5 +248,6 @@ def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: floa
         residuals=np.asarray(res.residuals, dtype=float), length_scale_m=float(res.length_scale),
         stats={"iterations": res.iterations, "steps": res.steps, "rhs_evals": res.rhs_evals,
                "sens_rhs_evals": res.sens_rhs_evals, "jac_evals": res.jac_evals,
-               "reynolds_solves": res.reynolds_solves},
+               "reynolds_solves": res.reynolds_solves,
+               "sensitivity_flows": res.sensitivity_flows},
         status=status, message=message)
