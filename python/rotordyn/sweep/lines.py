@@ -35,9 +35,10 @@ _AXIS = {"speed_hz": _core.ThresholdAxis.speed,
          "config_ay_m": _core.ThresholdAxis.config}
 
 
-def threshold_line(job, variants, chunk_id, lo, hi, rows):
+def threshold_line(job, variants, chunk_id, lo, hi, rows, scan=None):
     """One row per crossing of max Re λ = 0 along the line [lo, hi) (the varied axis is
-    innermost); a line without one is a ``no_crossing`` row."""
+    innermost); a line without one is a ``no_crossing`` row. ``scan``: a dict that receives
+    ``y`` (hi − lo,), max Re λ (1/s) at each grid point of the line (NaN: no equilibrium)."""
     vary = job.options["vary"]
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     idx0, p0 = job.point(lo)
@@ -80,6 +81,8 @@ def threshold_line(job, variants, chunk_id, lo, hi, rows):
     # sign change refined by Brent's method (SciPy's brentq, step for step)
     res = _core.threshold_line(asm.solver, inp)
     ys = np.asarray(res.y)
+    if scan is not None:
+        scan["y"] = ys.copy()
     evals = len(xs)
     found = 0
     for i, x, fr, status, msg, evals in zip(res.bracket, res.root, res.root_freq, res.status,
