@@ -39,6 +39,7 @@ from rotordyn.analysis.assembly import pin_assembled
 from rotordyn.analysis.continuation import continuation
 from rotordyn.analysis.hopf import FD_STEP, hopf, hopf_cycle
 from rotordyn.analysis.periodic import periodic_orbit
+from rotordyn.analysis.transient import transient
 from rotordyn.errors import RotordynError
 from rotordyn.sweep import points as pt
 from rotordyn.sweep.hopf_rows import HOPF_COLUMNS, hopf_line
@@ -124,14 +125,17 @@ class _Line:
                               sensitivity_rtol=self.srtol)
 
 
-def _branch(job, line, hrow, span):
+def _branch(job, line, hrow, span, ys):
     """(HopfResult, [branches], failure message) of the cycles born at the crossing
     ``hrow``. The first cycle is shot from the leading-order cycle at the distance from the
     Hopf point where its amplitude is ``start_amplitude`` of the clearance (at most 5 % of
     the line's span; ``distance`` × span if given), on the Hopf result's cycle side, else on
     the other; it is continued away from the Hopf point within the line's range widened by
     5 % (so that the line's end values are bracketed by branch points) and back towards the
-    Hopf point (folds close to it: the local normal form holds only for small cycles)."""
+    Hopf point (folds close to it: the local normal form holds only for small cycles). When
+    no leading-order start converges (the normal form fails at once on a cavitated film),
+    the cycle a transient settles on at the unstable grid value nearest the Hopf point,
+    continued both ways."""
     o = job.options
     f, pc, ay = line.operating(hrow["value"])
     h = hopf(line.system, line.vary, at=hrow["value"], speed_hz=f, chamber_pressure_pa=pc,
@@ -151,18 +155,26 @@ def _branch(job, line, hrow, span):
                 0.05 * span)
     first_side = 1 if h.cycle_side == "above" else -1
     msgs = []
-    for sgn in (first_side, -first_side):
-        hs = h if sgn == first_side else dataclasses.replace(
-            h, cycle_side="below" if h.cycle_side == "above" else "above")
-        value = h.value + sgn * d
-        try:
-            c0 = hopf_cycle(line.system, hs, value, rtol=line.rtol, tol=line.tol)
-        except (RotordynError, ArithmeticError, ValueError) as exc:
-            msgs.append(f"{type(exc).__name__}: {exc}")
-            continue
-        if not c0.ok:
-            msgs.append(f"at {value:.6g}: {c0.status}: {c0.message}")
-            continue
+    for sgn in (first_side, -first_side, 0):
+        settled = sgn == 0
+        if settled:  # the cycle a transient settles on, on the line's unstable side
+            c0, sgn = _settled_cycle(line, h, ys)
+            if not c0.ok:
+                msgs.append(c0.message)
+                continue
+        else:
+            hs = h if sgn == first_side else dataclasses.replace(
+                h, cycle_side="below" if h.cycle_side == "above" else "above")
+            value = h.value + sgn * d
+            try:
+                c0 = hopf_cycle(line.system, hs, value, rtol=line.rtol, tol=line.tol,
+                                max_iter=12)
+            except (RotordynError, ArithmeticError, ValueError) as exc:
+                msgs.append(f"{type(exc).__name__}: {exc}")
+                continue
+            if not c0.ok:
+                msgs.append(f"at {value:.6g}: {c0.status}: {c0.message}")
+                continue
         # the first step no longer than half the first cycle (scaled by the clearance): a
         # longer predictor jumps across the equilibrium onto the same family half a period
         # on, which reads as the Hopf end; the step then grows ×1.5 per easy corrector
@@ -174,7 +186,7 @@ def _branch(job, line, hrow, span):
                   rtol=line.rtol, tol=line.tol, sensitivity_rtol=line.srtol, n_out=101)
         mp = int(o.get("max_points", DEFAULTS["max_points"]))
         out = []
-        for direction, m in ((sgn, mp), (-sgn, max(2, mp // 4))):
+        for direction, m in ((sgn, mp), (-sgn, mp if settled else max(2, mp // 4))):
             br = continuation(line.system, line.vary, (lo, hi), c0, direction=direction,
                               max_points=m, **kw)
             if not br.ok:
@@ -184,7 +196,40 @@ def _branch(job, line, hrow, span):
         else:
             return h, out, ""
     return h, [], ("no cycle started from the leading-order cycle at "
-                   f"{d:.3g} either side of the Hopf point {h.value:.6g}: " + "; ".join(msgs))
+                   f"{d:.3g} either side of the Hopf point {h.value:.6g}, nor from a "
+                   "transient: " + "; ".join(msgs))
+
+
+class _NoCycle:
+    ok = False
+
+    def __init__(self, message):
+        self.message = message
+
+
+def _settled_cycle(line, h, ys):
+    """(cycle, direction towards the Hopf point) from a transient at the grid value of the
+    line's unstable side nearest the Hopf point: 60 whirl periods from the equilibrium
+    disturbed by 0.1 c, then shooting from its last period (the attracting cycle, the one a
+    disturbance throws the journal onto)."""
+    xs = np.asarray(line.xs, float)
+    unst = np.flatnonzero(np.asarray(ys) > 0)
+    if unst.size == 0:
+        return _NoCycle("transient: no grid value of the line has an unstable equilibrium"), 0
+    k = int(unst[np.argmin(np.abs(xs[unst] - h.value))])
+    f, pc, ay = line.operating(xs[k])
+    period = 1.0 / h.whirl_frequency_hz
+    try:
+        tr = transient(line.system, 60 * period, f, pc, ay,
+                       disturbance_m=(0.0, 0.1 * h.length_scale_m), n_out=60 * 50 + 1)
+        o = periodic_orbit(line.system, f, pc, ay, start=tr, rtol=line.rtol, tol=line.tol,
+                           sensitivity_rtol=line.srtol)
+    except (RotordynError, ArithmeticError, ValueError) as exc:
+        return _NoCycle(f"transient at {xs[k]:.6g}: {type(exc).__name__}: {exc}"), 0
+    if not o.ok:
+        return _NoCycle(f"transient at {xs[k]:.6g}, then shooting: {o.status}: "
+                        f"{o.message}"), 0
+    return o, (1 if h.value > xs[k] else -1)
 
 
 def _starts(h, br, g, n):
@@ -254,7 +299,7 @@ def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
                and abs(b[1].value - hr["value"]) > 1e-2 * span for b in branches):
             continue  # this crossing ends a branch already continued from another one
         try:
-            h, brs, msg = _branch(job, line, hr, span)
+            h, brs, msg = _branch(job, line, hr, span, ys)
         except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
             h, brs, msg = None, [], f"{type(exc).__name__}: {exc}"
         if not brs:
