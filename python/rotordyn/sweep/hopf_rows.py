@@ -14,7 +14,7 @@ import numpy as np
 from rotordyn.analysis.hopf import FD_STEP, _critical_eigenvalue, hopf_type, lyapunov_at
 from rotordyn.errors import RotordynError
 from rotordyn.sweep import points as pt
-from rotordyn.sweep.lines import max_real, threshold_line
+from rotordyn.sweep.lines import max_real, threshold_line_rows
 from rotordyn.units import hz_to_rad_s
 
 #: output columns beyond the threshold's
@@ -62,14 +62,15 @@ def _one(job, asm, p, vary, whirl, span, opts, excl, fd_step):
             "alpha_prime": alpha, "amplitude_coefficient_m2": coef}
 
 
-def hopf_line(job, variants, chunk_id, lo, hi, rows):
+def hopf_line(job, variants, chunk_id, lo, hi, rows, scan=None):
     """The threshold rows of the line [lo, hi), each crossing with its Hopf columns; a
-    failed l1 keeps the crossing and gets status ``error`` with the message."""
+    failed l1 keeps the crossing and gets status ``error`` with the message. ``scan``: as
+    for :func:`~rotordyn.sweep.lines.threshold_line`."""
     vary = job.options["vary"]
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     fd_step = float(job.options.get("fd_step", FD_STEP))
     line = []
-    threshold_line(job, variants, chunk_id, lo, hi, line)
+    threshold_line_rows(job, variants, chunk_id, lo, hi, line, scan)
     _, p0 = job.point(lo)
     _, p1 = job.point(hi - 1)
     span = abs(p1[vary] - p0[vary])

@@ -35,10 +35,11 @@ _AXIS = {"speed_hz": _core.ThresholdAxis.speed,
          "config_ay_m": _core.ThresholdAxis.config}
 
 
-def threshold_line(job, variants, lo, hi, at, asms):
+def threshold_line(job, variants, lo, hi, at, asms, scan=None):
     """Blocks of one row per crossing of max Re λ = 0 along the line [lo, hi) (the varied axis
     is innermost; the line's rows carry the identity of its first point, chunk-local index
-    ``at``); a line without one is a ``no_crossing`` row."""
+    ``at``); a line without one is a ``no_crossing`` row. ``scan``: a dict that receives
+    ``y`` (hi − lo,), max Re λ (1/s) at each grid point of the line (NaN: no equilibrium)."""
     vary = job.options["vary"]
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     idx0, p0 = job.point(lo)
@@ -80,6 +81,8 @@ def threshold_line(job, variants, lo, hi, at, asms):
     # sign change refined by Brent's method (SciPy's brentq, step for step)
     res = _core.threshold_line(asm.solver, inp)
     ys = np.asarray(res.y)
+    if scan is not None:
+        scan["y"] = ys.copy()
     roots, freqs = list(res.root), list(res.root_freq)
     k = len(roots)
     if k:
@@ -180,3 +183,22 @@ def unbalance_line(job, variants, lo, hi, at, asms):
         "separation_margin_pct": sep.ravel(),
         "status": np.repeat(np.array(status, dtype=object), ns),
         "message": np.repeat(np.array(msg, dtype=object), ns)})]
+
+
+def threshold_line_rows(job, variants, chunk_id, lo, hi, rows, scan=None):
+    """:func:`threshold_line` as one dict per row appended to ``rows`` (each with its point's
+    identity columns), for analyses that build on the crossings row by row (``hopf``,
+    ``limit_cycle``)."""
+    from rotordyn.sweep.columns import identity
+
+    asms = [None] * (hi - lo)
+    blocks = threshold_line(job, variants, lo, hi, 0, asms, scan=scan)
+    ident = identity(job, chunk_id, np.arange(lo, hi), asms)
+    for pts, cols in blocks:
+        for j, k in enumerate(pts):
+            row = {name: v[k].item() if hasattr(v[k], "item") else v[k]
+                   for name, v in ident.items()}
+            for name, v in cols.items():
+                x = v if np.isscalar(v) or v is None else v[j]
+                row[name] = x.item() if hasattr(x, "item") else x
+            rows.append(row)
