@@ -65,7 +65,7 @@ $(STAMPS)/testdeps: | $(STAMPS)/sysdeps
 	@touch $@
 
 test-py: $(STAMPS)/install $(STAMPS)/testdeps
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q --durations=25
 
 test: test-cpp test-py
 
