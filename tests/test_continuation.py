@@ -230,7 +230,7 @@ def test_continuation_past_a_fold_of_whip_cycles(whip_branch):
       bordered corrector, ∂R/∂p by finite differences) changes sign between the same two
       points where the critical Floquet multiplier (CVODES sensitivities) crosses +1, and the
       fold located by each (linear interpolation in the arclength) agrees within 0.1 Hz
-      (measured 121.69 Hz from the tangent);
+      (measured 121.86 Hz from the tangent; 121.69 Hz at fd973e0, before a merge changed the step sizes);
     * two independent shooting solves at one speed between the fold and the start, from
       a point on each side of the fold, converge on two different cycles: the outer one
       stable, the inner one unstable (the hysteresis of a fold)."""
@@ -250,8 +250,11 @@ def test_continuation_past_a_fold_of_whip_cycles(whip_branch):
     # beyond the fold the branch comes back: two cycles at one speed
     j = int(np.argmax(br.parameter[k:])) + k
     f = float(br.parameter[j])
-    i = int(np.argmin(np.abs(br.parameter[:k] - f)))
-    assert br.parameter[i] > f  # a stable point above that speed, before the fold
+    # the stable point before the fold nearest above that speed (the branch's step sizes
+    # decide which points exist; any of them on the outer branch starts the outer cycle)
+    above = [m for m in range(k) if br.parameter[m] > f]
+    assert above and all(br.stable[m] for m in above)
+    i = min(above, key=lambda m: br.parameter[m] - f)
     outer = rd.periodic_orbit(s, f, start=(br.orbits[i].r[0], br.orbits[i].v[0]),
                               period_s=br.period_s[i], rtol=1e-6, tol=1e-4)
     inner = rd.periodic_orbit(s, f, start=(br.orbits[j].r[0], br.orbits[j].v[0]),
