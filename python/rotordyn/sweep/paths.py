@@ -45,8 +45,17 @@ def _select(seq: tuple, key: str, where: str) -> list[int]:
     return idx
 
 
+# Fields that hold an array when set (None by default) and are never a sweep axis.
+_ARRAY_FIELDS = {"viscosity_field_pa_s": "a frozen viscosity per film node, set by a thermal "
+                                         "equilibrium"}
+
+
 def _coerce(old, value, where: str):
     """The new value in the type of the field it replaces (ints stay ints)."""
+    name = where.rsplit(".", 1)[-1]
+    if name in _ARRAY_FIELDS:
+        raise InputError(f"{where}: not a numeric field ({_ARRAY_FIELDS[name]}); "
+                         "only numbers can be swept")
     if isinstance(old, bool) or not isinstance(old, (int, float)) and old is not None:
         raise InputError(f"{where}: not a numeric field (holds {type(old).__name__}); "
                          "only numbers can be swept")
