@@ -127,9 +127,12 @@ def test_warm_and_cold_starts_agree_in_a_system(pivot):
     sys_ = dataclasses.replace(base, bearings=tuple(
         TiltingPadBearing(station=s, n_pads=5, pad_arc_deg=60.0, preload=0.5,
                           pad_inertia_kg_m2=2e-5, **FILM, **pivot) for s in (0, 2)))
-    cold = rotordyn.equilibrium(sys_, 40.0, warm_start=False)
-    rotordyn.equilibrium(sys_, 70.0)  # leaves a different warm start behind
-    warm = rotordyn.equilibrium(sys_, 40.0, warm_start=True)
+    # on soft pivots the upper pads' tilts are fixed only loosely by the residual: solve
+    # tighter than the default 1e-10 so that the two starts agree within the bound below
+    kw = {"tol": 1e-12} if pivot else {}
+    cold = rotordyn.equilibrium(sys_, 40.0, warm_start=False, **kw)
+    rotordyn.equilibrium(sys_, 70.0, **kw)  # leaves a different warm start behind
+    warm = rotordyn.equilibrium(sys_, 40.0, warm_start=True, **kw)
     assert cold.status == warm.status == "ok"
     assert cold.path == warm.path == "pad_assembly"
     scale = np.abs(cold.r).max()
@@ -141,9 +144,9 @@ def test_warm_and_cold_starts_agree_in_a_system(pivot):
     else:
         # the journals sink ~6 clearances onto the soft pivots: the upper pads' films are then
         # thick and their tilt stiffness almost zero, so a residual at 1e-14 of the load fixes
-        # their tilts only to ~1e-9 of the clearance (1.3e-9 c measured after the banded back
-        # substitution changed the force's rounding by ~1e-16)
-        assert d.max() <= 3e-9 * FILM["clearance_m"], d.max()
+        # their tilts only to ~1e-9 of the clearance at the default tol (1.3e-9 c measured),
+        # 6.7e-10 c at tol 1e-12
+        assert d.max() <= 1e-9 * FILM["clearance_m"], d.max()
 
 
 def test_soft_pivot_tends_to_the_pivot_springs():
