@@ -24,6 +24,30 @@ std::string num(double v) {
   return os.str();
 }
 
+// A THD film's solution as the film's state and its slice [o, o + nn) of the fixed-point map
+// GX; true when the slice moved by at most the film's tol_k from the iterate X.
+bool take_thd_state(const ThdFilmState& ts, const ThermalFilm& tf, const Eigen::VectorXd& X,
+                    int o, int nn, Eigen::VectorXd& GX, ThermalFilmState& st) {
+  GX.segment(o, nn) = Eigen::Map<const Eigen::VectorXd>(ts.temperature_c.data(), nn);
+  const double res = (GX.segment(o, nn) - X.segment(o, nn)).cwiseAbs().maxCoeff();
+  st.mean_temperature_c = st.effective_temperature_c = ts.mean_temperature_c;
+  st.max_temperature_c = ts.max_temperature_c;
+  st.inlet_temperature_c = ts.inlet_temperature_c;
+  st.temperature_rise_k = ts.max_temperature_c - ts.inlet_temperature_c;
+  st.viscosity_pa_s = tf.oil.viscosity_pa_s(ts.mean_temperature_c);
+  st.power_loss_w = ts.power_loss_w;
+  st.film_flow_m3_s = ts.film_flow_m3_s;
+  st.side_flow_m3_s = ts.side_flow_m3_s;
+  st.supply_flow_m3_s = ts.supply_flow_m3_s;
+  st.recirculation_flow_m3_s = ts.recirculation_flow_m3_s;
+  st.recirculation_temperature_c = ts.recirculation_temperature_c;
+  st.temperature_c = ts.temperature_c;
+  st.viscosity_field = ts.flows.viscosity_pa_s;  // the field of this equilibrium
+  st.inlet_mask = ts.inlet_mask;
+  st.flows = ts.flows;
+  return !(res > tf.thd_options.tol_k);
+}
+
 /// The THD pad films' inlet temperatures (Ettles' hot-oil carry-over from the upstream pad,
 /// ThermalFilm::upstream), solved together — each pad's field is affine in its inlet
 /// temperature, so the ring is one small linear system — then their states and next fields.
@@ -78,26 +102,8 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
     const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
     ThdFilmState ts = thd_state(std::move(parts[i]), *sols[i], thermal[i].thd_options, wfs[i],
                                 tin[r], Qf[i]);
-    const int nn = off[i + 1] - off[i];
-    GX.segment(off[i], nn) = Eigen::Map<const Eigen::VectorXd>(ts.temperature_c.data(), nn);
-    const double res = (GX.segment(off[i], nn) - X.segment(off[i], nn)).cwiseAbs().maxCoeff();
-    if (res > thermal[i].thd_options.tol_k) done = false;
-    ThermalFilmState& st = films[i];
-    st.mean_temperature_c = st.effective_temperature_c = ts.mean_temperature_c;
-    st.max_temperature_c = ts.max_temperature_c;
-    st.inlet_temperature_c = ts.inlet_temperature_c;
-    st.temperature_rise_k = ts.max_temperature_c - ts.inlet_temperature_c;
-    st.viscosity_pa_s = thermal[i].oil.viscosity_pa_s(ts.mean_temperature_c);
-    st.power_loss_w = ts.power_loss_w;
-    st.film_flow_m3_s = ts.film_flow_m3_s;
-    st.side_flow_m3_s = ts.side_flow_m3_s;
-    st.supply_flow_m3_s = ts.supply_flow_m3_s;
-    st.recirculation_flow_m3_s = ts.recirculation_flow_m3_s;
-    st.recirculation_temperature_c = ts.recirculation_temperature_c;
-    st.temperature_c = ts.temperature_c;
-    st.viscosity_field = ts.flows.viscosity_pa_s;
-    st.inlet_mask = ts.inlet_mask;
-    st.flows = ts.flows;
+    if (!take_thd_state(ts, thermal[i], X, off[i], off[i + 1] - off[i], GX, films[i]))
+      done = false;
   }
 }
 }  // namespace
@@ -214,26 +220,8 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
       }
       if (thermal[i].thd) {
         const ThdFilmState ts = thd_energy(rs, sol, thermal[i].oil, thermal[i].thd_options, wf);
-        const int nn = off[i + 1] - off[i];
-        GX.segment(off[i], nn) = Eigen::Map<const Eigen::VectorXd>(ts.temperature_c.data(), nn);
-        const double res = (GX.segment(off[i], nn) - X.segment(off[i], nn)).cwiseAbs().maxCoeff();
-        if (res > thermal[i].thd_options.tol_k) done = false;
-        ThermalFilmState& st = out.films[i];
-        st.mean_temperature_c = st.effective_temperature_c = ts.mean_temperature_c;
-        st.max_temperature_c = ts.max_temperature_c;
-        st.inlet_temperature_c = ts.inlet_temperature_c;
-        st.temperature_rise_k = ts.max_temperature_c - ts.inlet_temperature_c;
-        st.viscosity_pa_s = thermal[i].oil.viscosity_pa_s(ts.mean_temperature_c);
-        st.power_loss_w = ts.power_loss_w;
-        st.film_flow_m3_s = ts.film_flow_m3_s;
-        st.side_flow_m3_s = ts.side_flow_m3_s;
-        st.supply_flow_m3_s = ts.supply_flow_m3_s;
-        st.temperature_c = ts.temperature_c;
-        st.viscosity_field = ts.flows.viscosity_pa_s;  // the field of this equilibrium
-        st.recirculation_flow_m3_s = ts.recirculation_flow_m3_s;
-        st.recirculation_temperature_c = ts.recirculation_temperature_c;
-        st.inlet_mask = ts.inlet_mask;
-        st.flows = ts.flows;
+        if (!take_thd_state(ts, thermal[i], X, off[i], off[i + 1] - off[i], GX, out.films[i]))
+          done = false;
         continue;
       }
       const double P = sol.friction_torque_nm * wf;

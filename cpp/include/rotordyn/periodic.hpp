@@ -66,7 +66,7 @@ struct ShootingOptions {
   /// flows without sensitivities (each as cheap as one transient period); refreshed by a flow
   /// with sensitivities when a step does not halve the residual. false: sensitivities in
   /// every iteration (Newton). The final pass is the same either way.
-  bool broyden = true;
+  bool broyden = false;
 };
 
 /// Floquet multipliers of a monodromy matrix and the type of the critical one.

@@ -270,17 +270,13 @@ class SystemParts:
     pad_groups: list = field(default_factory=list)
 
 
-def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1,
-                    tol: float = 1e-10, info: dict | None = None):
-    """Equilibrium + linearisation of a standalone bearing (journal x, y = coordinates 0, 1,
-    extras after) at each speed: r (n_s, n); K, C (n_s, n, n) = film K_H, D_H plus the extra
-    coordinates' structural K, C (pivot stiffness); status, message; M (n, n). ``info``
-    (optional dict) receives ``path`` and ``reynolds_solves`` per speed (tuples)."""
+def standalone_model(parts: SystemParts, load_n) -> "_core.SystemModel":
+    """The core model of a standalone bearing: the journal's x, y (coordinates 0, 1, loaded by
+    ``load_n`` (Fx, Fy) N) and the extras after them with their structural M, K, C; the films
+    (pads' couplings), tables and pad coordinate groups of ``parts``."""
     n = 2 + parts.n_extra
     model = _core.SystemModel()
-    M = np.zeros((n, n))
-    K = np.zeros((n, n))
-    C = np.zeros((n, n))
+    M, K, C = np.zeros((n, n)), np.zeros((n, n)), np.zeros((n, n))
     if parts.n_extra:
         M += parts.M
         K += parts.K
@@ -293,6 +289,18 @@ def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1
     model.films = [p.coupling if isinstance(p, PadFilm) else p for p in parts.films]
     model.tables = parts.tables
     model.pad_coords = [list(g) for g in parts.pad_groups]
+    return model
+
+
+def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1,
+                    tol: float = 1e-10, info: dict | None = None):
+    """Equilibrium + linearisation of a standalone bearing (journal x, y = coordinates 0, 1,
+    extras after) at each speed: r (n_s, n); K, C (n_s, n, n) = film K_H, D_H plus the extra
+    coordinates' structural K, C (pivot stiffness); status, message; M (n, n). ``info``
+    (optional dict) receives ``path`` and ``reynolds_solves`` per speed (tuples)."""
+    model = standalone_model(parts, load_n)
+    n = 2 + parts.n_extra
+    M, K, C = (np.array(a, dtype=float) for a in (model.M, model.K, model.C))  # structural
     opt = _core.EquilibriumOptions()
     opt.tol = tol
     w = np.ascontiguousarray(np.asarray(speeds_hz, dtype=float) * TWO_PI)

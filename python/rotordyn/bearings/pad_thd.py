@@ -209,7 +209,7 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
     (:class:`rotordyn.bearings._film.SystemParts`, journal x, y = coordinates 0, 1): one C++
     call for the equilibrium (journal, pads) with the pads' energy equations and inlet mixing,
     then K, C at it with the field frozen. ``tilts(r)`` (optional) gives the pad tilts."""
-    from rotordyn.bearings._film import PadFilm, reduce_coefficients
+    from rotordyn.bearings._film import reduce_coefficients, standalone_model
     from rotordyn.bearings.thermal import Oil
 
     if not isinstance(oil, Oil):
@@ -222,23 +222,9 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
         raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
     check_carry_over(opts.carry_over)
     n = 2 + parts.n_extra
-    M = np.zeros((n, n))
-    K = np.zeros((n, n))
-    C = np.zeros((n, n))
-    if parts.n_extra:
-        M += parts.M
-        K += parts.K
-        C += parts.C
-    model = _core.SystemModel()
-    model.M, model.K, model.C, model.G = M, K, C, np.zeros((n, n))
-    Q = np.zeros(n)
-    Q[:2] = load
-    model.Q = Q
-    model.chamber = np.zeros(n)
-    films = [p.coupling if isinstance(p, PadFilm) else p for p in parts.films]
-    model.films = films
-    model.tables = parts.tables
-    model.pad_coords = [list(g) for g in parts.pad_groups]
+    model = standalone_model(parts, load)
+    M, K, C = (np.array(a, dtype=float) for a in (model.M, model.K, model.C))  # structural
+    films = model.films
     omega = 2.0 * math.pi * float(speed_hz)
     npad = len(films)
     tf = pad_thermal_films(0, npad, 0, oil.to_core(), pad_options(opts, npad), omega)

@@ -18,22 +18,24 @@ MAX_GAIN_1_PER_S = 1e4
 MAX_LEAK_1_PER_S = 1e4
 
 
+def _rate(name: str, value, hi: float, meaning: str) -> float:
+    """An adaptation rate ``adaptive.<name>``: finite, in [0, hi] 1/s."""
+    try:
+        return v.in_range(f"adaptive.{name}", value, 0.0, hi)
+    except InputError as exc:
+        raise InputError(f"{exc} ({meaning})") from None
+
+
 def _gain(value) -> float:
     """The adaptation gain γ: finite, in [0, 1e4] 1/s."""
-    try:
-        return v.in_range("adaptive.gain_1_per_s", value, 0.0, MAX_GAIN_1_PER_S)
-    except InputError as exc:
-        raise InputError(f"{exc} (the adaptation rate γ of the 1× coefficients, 1/s; "
-                         f"0: frozen)") from None
+    return _rate("gain_1_per_s", value, MAX_GAIN_1_PER_S,
+                 "the adaptation rate γ of the 1× coefficients, 1/s; 0: frozen")
 
 
 def _leak(value) -> float:
     """The leak σ: finite, in [0, 1e4] 1/s."""
-    try:
-        return v.in_range("adaptive.leak_1_per_s", value, 0.0, MAX_LEAK_1_PER_S)
-    except InputError as exc:
-        raise InputError(f"{exc} (the leak rate σ of Ṗ = −γ T̂⁺ 2y e^{{−iθ}} − σ P, 1/s; "
-                         f"0: no leak)") from None
+    return _rate("leak_1_per_s", value, MAX_LEAK_1_PER_S,
+                 "the leak rate σ of Ṗ = −γ T̂⁺ 2y e^{−iθ} − σ P, 1/s; 0: no leak")
 
 
 def _is_scalar(value) -> bool:
