@@ -1,0 +1,194 @@
+"""Thermo-hydrodynamic film of the active journal bearing in a system (issue 20; docs/film-physics.md
+§"THD active bearing"): the paper rig (rotordyn.models.paper_rig(), coarse 36 × 8 film) with
+``system_thermal_equilibrium(model="thd")`` at a_y = −1.85 mm, 50 Hz.
+
+The active bearing's film thickness includes the sleeve's inward deformation w(φ) = W r_s
+(eq. 3); the sleeve coordinates r_s are part of the equilibrium the energy equation is
+iterated with. Checks:
+* a temperature-independent viscosity (exponential law, β = 1e-300: μ(T) = μ_ref exactly)
+  gives the isothermal rig bit for bit: the equilibrium (rotor and sleeve coordinates) and
+  K_H, D_H (``array_equal``) while the film heats;
+* the field is the energy equation's fixed point on the deformed film: a standalone Reynolds
+  solve built here from the bearing's geometry, with h = c − x cos φ − y sin φ − W r_s computed
+  here from the sleeve's interpolation matrix and the returned field's viscosities, and the
+  energy equation on it, give the returned temperature field (1e-5 K; the iteration's tolerance
+  is 1e-6 K); the rigid-bush film (w = 0) at the same journal position gives a field that
+  differs by more than 0.1 K, so the check sees the sleeve;
+* energy balance on the mass-conserving (Elrod–Adams) active film, recomputed from the
+  returned face flows and temperatures: heat carried out = dissipation (1e-9) adiabatic with
+  carry-over, and with heat transfer to the bush (flows + wall = dissipation, 1e-9);
+* K_H with the field frozen (perturbation method) equals central finite differences of the
+  film forces of the returned system (1e-5 of the largest entry) and differs from the
+  isothermal K_H at the supply viscosity by more than that;
+* the returned system reproduces the equilibrium (rotor and sleeve, 1e-9 c), its stability
+  runs, the model file round-trips ([thermal] model = "thd"; the frozen field of the returned
+  system as ``viscosity_field_pa_s``) and gives the same answers;
+* bad input names the field.
+"""
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+import rotordyn as rd
+from rotordyn import _core
+from rotordyn.analysis.assembly import assembled
+from rotordyn.bearings import Oil, ThermalModel
+from rotordyn.errors import InputError
+from thd_balance import balance
+
+VG46 = Oil(viscosity_law="walther", t1_c=40.0, nu1_mm2_s=46.0, t2_c=100.0, nu2_mm2_s=6.8,
+           density_kg_m3=870.0, specific_heat_j_per_kg_k=2000.0)
+AY, SPEED, PC, TS = -1.85e-3, 50.0, 0.2e6, 40.0
+
+
+def _rig(cavitation="reynolds"):
+    s = rd.models.paper_rig()
+    return dataclasses.replace(s, bearings=tuple(
+        dataclasses.replace(b, n_circ=36, n_axial=8, cavitation=cavitation)
+        if isinstance(b, rd.ActiveJournalBearing) else b for b in s.bearings))
+
+
+def _active(s):
+    return next(i for i, b in enumerate(s.bearings) if isinstance(b, rd.ActiveJournalBearing))
+
+
+def _thd(s, **kw):
+    kw = {"oil": VG46, "supply_temperature_c": TS, "chamber_pressure_pa": PC,
+          "config_ay_m": AY, "model": "thd", **kw}
+    return rd.system_thermal_equilibrium(s, speed_hz=SPEED, **kw)
+
+
+def test_temperature_independent_viscosity_is_the_isothermal_active_bearing_bit_for_bit():
+    flat = Oil(viscosity_law="exponential", mu_ref_pa_s=0.04, t_ref_c=40.0, beta_1_per_k=1e-300)
+    s = _rig()
+    assert s.bearings[_active(s)].viscosity_pa_s == 0.04
+    r = _thd(s, oil=flat)
+    assert r.status == "ok" and r.max_temperature_c[0] > TS + 0.5  # the film heats, μ stays
+    assert np.all(r.flows[0]["viscosity_pa_s"] == 0.04)
+    iso = rd.equilibrium(s, speed_hz=SPEED, chamber_pressure_pa=PC, config_ay_m=AY,
+                         warm_start=False)
+    assert np.array_equal(r.r, iso.r)  # rotor and sleeve coordinates
+    hot = rd.equilibrium(r.system, speed_hz=SPEED, chamber_pressure_pa=PC, warm_start=False)
+    assert np.array_equal(hot.r, iso.r)
+    l0 = rd.linearize(s, speed_hz=SPEED, chamber_pressure_pa=PC, config_ay_m=AY)
+    l1 = rd.linearize(r.system, speed_hz=SPEED, chamber_pressure_pa=PC)
+    assert np.array_equal(l0.KH, l1.KH) and np.array_equal(l0.DH, l1.DH)
+
+
+def _standalone_field(s, r, field, with_sleeve):
+    """The energy equation's field on a Reynolds solve of the active film built here: its
+    geometry, the returned viscosity field and h from the returned coordinates."""
+    i = _active(s)
+    b = s.bearings[i]
+    asm = assembled(s)
+    bc = next(c for c in asm.bearings if c.index == i)
+    g, grid = b.journal_bearing().to_core()
+    sol = _core.ReynoldsSolver(g, grid, b.cavitation)
+    sol.set_viscosity_field(field)
+    phi = 2 * np.pi * np.arange(b.n_circ) / b.n_circ
+    w = asm.sleeves[i].interpolation_matrix(phi) @ r.r[list(bc.sleeve)]
+    h = b.clearance_m - r.r[bc.jx] * np.cos(phi) - r.r[bc.jy] * np.sin(phi)
+    if with_sleeve:
+        h = h - w
+    h = np.repeat(h[:, None], b.n_axial + 1, axis=1)
+    omega = 2 * math.pi * SPEED
+    fs = sol.solve(h, np.zeros_like(h), omega)
+    opt = _core.ThdOptions()
+    opt.supply_temperature_c = TS
+    return np.array(_core.thd_energy(sol, fs, VG46.to_core(), opt, omega).temperature_c), w
+
+
+def test_the_field_is_the_energy_equation_on_the_deformed_film():
+    s = _rig()
+    r = _thd(s)
+    assert r.status == "ok", r.message
+    field = r.flows[0]["viscosity_pa_s"]
+    np.testing.assert_allclose(field, VG46.viscosity_pa_s(r.temperature_c[0]), rtol=1e-6)
+    T, w = _standalone_field(s, r, field, True)
+    assert np.max(np.abs(w)) > 0.3 * s.bearings[_active(s)].clearance_m  # a deformed sleeve
+    np.testing.assert_allclose(T, r.temperature_c[0], atol=1e-5)
+    T_rigid, _ = _standalone_field(s, r, field, False)
+    assert np.max(np.abs(T_rigid - r.temperature_c[0])) > 0.1
+
+
+@pytest.mark.parametrize("bush_htc", [0.0, 2000.0])
+def test_energy_balance_of_the_active_film(bush_htc):
+    s = _rig("jfo")
+    r = _thd(s, carry_over=0.5, bush_htc_w_m2k=bush_htc)
+    assert r.status == "ok", r.message
+    out, diss, wall, mass = balance(r.temperature_c[0], r.inlet_mask[0], r.flows[0],
+                                    VG46.density_kg_m3 * VG46.specific_heat_j_per_kg_k, TS,
+                                    bush_htc, TS)
+    assert mass < 1e-8  # the Elrod–Adams film's cells conserve mass
+    assert diss > 10.0 and r.inlet_temperature_c[0] > TS  # heated; hot oil carried over
+    assert out + wall == pytest.approx(diss, rel=1e-9)
+    assert (wall > 0.05 * diss) == (bush_htc > 0)
+
+
+def test_stiffness_with_the_field_frozen_and_the_returned_system():
+    s = _rig()
+    r = _thd(s)
+    hot = r.system
+    assert hot.bearings[_active(s)].config_ay_m == AY  # the offsets used travel with it
+    e = rd.equilibrium(hot, speed_hz=SPEED, chamber_pressure_pa=PC, warm_start=False)
+    assert e.status == "ok"
+    np.testing.assert_allclose(e.r, r.r, atol=1e-9 * s.bearings[_active(s)].clearance_m)
+    lp = rd.linearize(hot, speed_hz=SPEED, chamber_pressure_pa=PC)
+    lf = rd.linearize(hot, speed_hz=SPEED, chamber_pressure_pa=PC, method="finite_difference")
+    li = rd.linearize(s, speed_hz=SPEED, chamber_pressure_pa=PC, config_ay_m=AY)
+    scale = np.max(np.abs(lp.KH))
+    assert np.max(np.abs(lp.KH - lf.KH)) < 1e-5 * scale
+    assert np.max(np.abs(lp.KH - li.KH)) > 1e-3 * scale  # the warm film is softer
+    st = rd.stability(hot, speed_hz=SPEED, chamber_pressure_pa=PC)
+    assert st.status == "ok" and np.all(np.isfinite(st.eigenvalues))
+
+
+def test_model_file_round_trip_with_the_thd_active_bearing(tmp_path):
+    s = _rig()
+    i = _active(s)
+    s = dataclasses.replace(
+        s, thermal=ThermalModel(supply_temperature_c=TS, oil=VG46, model="thd"),
+        bearings=tuple(dataclasses.replace(b, config_ay_m=AY) if k == i else b
+                       for k, b in enumerate(s.bearings)))
+    p = tmp_path / "rig.toml"
+    s.to_toml(p)
+    back = rd.System.from_toml(p)
+    assert back.thermal == s.thermal and back.bearings == s.bearings
+    a = rd.system_thermal_equilibrium(back, speed_hz=SPEED, chamber_pressure_pa=PC)
+    b = _thd(s, config_ay_m=None)
+    assert a.thermal_model == "thd" and a.status == "ok"
+    np.testing.assert_array_equal(a.temperature_c[0], b.temperature_c[0])
+    np.testing.assert_array_equal(a.r, b.r)
+    p2 = tmp_path / "hot.toml"
+    a.system.to_toml(p2)
+    hot = rd.System.from_toml(p2)
+    assert hot.bearings[i].viscosity_field_pa_s == a.system.bearings[i].viscosity_field_pa_s
+    e0 = rd.equilibrium(a.system, speed_hz=SPEED, chamber_pressure_pa=PC, warm_start=False)
+    e1 = rd.equilibrium(hot, speed_hz=SPEED, chamber_pressure_pa=PC, warm_start=False)
+    np.testing.assert_array_equal(e0.r, e1.r)
+    fr = a.to_frame()
+    assert list(fr["bearing"]) == [s.bearings[i].name or f"bearing[{i}]"]
+    for c in ("max_temperature_c", "effective_temperature_c", "power_loss_w",
+              "film_flow_m3_s", "side_flow_m3_s"):
+        assert np.isfinite(fr[c]).all() and (fr[c] > 0).all()
+
+
+def test_bad_input_names_the_field():
+    s = _rig()
+    i = _active(s)
+    b = s.bearings[i]
+    with pytest.raises(InputError, match="viscosity_field_pa_s"):
+        dataclasses.replace(b, viscosity_field_pa_s=np.full((b.n_circ, b.n_axial), 0.04))
+    with pytest.raises(InputError, match="viscosity_field_pa_s"):
+        dataclasses.replace(b, viscosity_field_pa_s=np.full((b.n_circ, b.n_axial + 1), -1.0))
+    with pytest.raises(InputError, match="chamber_pressure_pa"):
+        _thd(s, chamber_pressure_pa=-1.0)
+    with pytest.raises(InputError, match="config_ay_m"):
+        _thd(s, config_ay_m=float("nan"))
+    with pytest.raises(InputError, match="bush_htc_w_m2k"):
+        _thd(s, bush_htc_w_m2k=-1.0)
+    with pytest.raises(InputError, match="bearings"):
+        _thd(s, bearings=[len(s.bearings)])
