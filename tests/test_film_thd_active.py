@@ -218,3 +218,26 @@ def test_bad_input_names_the_field():
         _thd(s, bush_htc_w_m2k=-1.0)
     with pytest.raises(InputError, match="bearings"):
         _thd(s, bearings=[len(s.bearings)])
+
+
+def test_cli_thermal_on_the_rig_with_the_housing_offset(tmp_path, capsys):
+    """``rotordyn thermal`` with ``--config-ay-m`` (refused before) prints the Python call's
+    numbers (1e-9) on the rig's file."""
+    import json
+
+    from rotordyn.cli import main
+
+    s = _rig()
+    p = tmp_path / "rig.toml"
+    s.to_toml(p)
+    assert main(["thermal", str(p), "--speed-hz", str(SPEED), "--chamber-pressure-pa",
+                 str(PC), "--config-ay-m", str(AY), "--supply-temperature-c", str(TS),
+                 "--oil-walther", "40", "46", "100", "6.8", "--density-kg-m3", "870",
+                 "--specific-heat-j-per-kg-k", "2000", "--model", "thd", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    r = _thd(s)
+    assert out["thermal_model"] == "thd" and out["status"] == "ok"
+    for col in ("max_temperature_c", "effective_temperature_c", "power_loss_w",
+                "film_flow_m3_s", "side_flow_m3_s"):
+        np.testing.assert_allclose([row[col] for row in out["bearings"]], getattr(r, col),
+                                   rtol=1e-9)
