@@ -23,6 +23,8 @@ iterated with. Checks:
 * the returned system reproduces the equilibrium (rotor and sleeve, 1e-9 c), its stability
   runs, its transient follows its linear model at small amplitude (1 %), the model file round-trips ([thermal] model = "thd"; the frozen field of the returned
   system as ``viscosity_field_pa_s``) and gives the same answers;
+* the effective-temperature model likewise: the power loss and flows of the deformed film at
+  μ(T_eff) recomputed here (1e-6) close its heat balance (1e-9);
 * bad input names the field.
 """
 
@@ -112,6 +114,48 @@ def test_the_field_is_the_energy_equation_on_the_deformed_film():
     np.testing.assert_allclose(T, r.temperature_c[0], atol=1e-5)
     T_rigid, _ = _standalone_field(s, r, field, False)
     assert np.max(np.abs(T_rigid - r.temperature_c[0])) > 0.1
+
+
+def test_effective_temperature_film_of_the_active_bearing():
+    """The effective-temperature model on the active bearing: the returned system's active
+    bearing is isoviscous at μ(T_eff); a Reynolds solve built here at that viscosity on the
+    deformed film (h from the returned coordinates, w = W r_s) gives the returned power loss
+    (torque·ω), film (groove) flow and side flow (1e-6), which close the heat balance
+    P = ρ c_p ΔT (Q − Q_s/2) (1e-9); the rigid-bush film at the same journal position gives a
+    power loss more than 1 % away."""
+    s = _rig()
+    i = _active(s)
+    r = _thd(s, model="effective")
+    assert r.status == "ok", r.message
+    mu = r.viscosity_pa_s[0]
+    assert mu == pytest.approx(VG46.viscosity_pa_s(r.effective_temperature_c[0]), rel=1e-12)
+    b = r.system.bearings[i]
+    assert b.viscosity_pa_s == mu and b.viscosity_field_pa_s is None
+    rc = VG46.density_kg_m3 * VG46.specific_heat_j_per_kg_k
+    assert r.power_loss_w[0] == pytest.approx(
+        rc * r.temperature_rise_k[0] * (r.film_flow_m3_s[0] - 0.5 * r.side_flow_m3_s[0]),
+        rel=1e-9)
+    assert r.effective_temperature_c[0] == pytest.approx(TS + 0.5 * r.temperature_rise_k[0],
+                                                         abs=1e-6)
+    asm = assembled(s)
+    bc = next(c for c in asm.bearings if c.index == i)
+    g, grid = b.journal_bearing().to_core()
+    phi = 2 * np.pi * np.arange(b.n_circ) / b.n_circ
+    w = asm.sleeves[i].interpolation_matrix(phi) @ r.r[list(bc.sleeve)]
+    omega = 2 * math.pi * SPEED
+    out = []
+    for ww in (w, 0.0 * w):
+        sol = _core.ReynoldsSolver(g, grid, b.cavitation)
+        h = b.clearance_m - r.r[bc.jx] * np.cos(phi) - r.r[bc.jy] * np.sin(phi) - ww
+        h = np.repeat(h[:, None], b.n_axial + 1, axis=1)
+        fs = sol.solve(h, np.zeros_like(h), omega)
+        # Q: the groove's inflow, or (a groove the film flows into, as here where the sleeve
+        # lifts the journal towards the top groove) the flow after the maximum film
+        q = fs.inlet_flow_m3_s if fs.inlet_flow_m3_s > 0 else _core.max_film_flow(sol, fs, omega)
+        out.append((fs.friction_torque_nm * omega, q, fs.side_flow_m3_s))
+    assert out[0] == pytest.approx((r.power_loss_w[0], r.film_flow_m3_s[0],
+                                    r.side_flow_m3_s[0]), rel=1e-6)
+    assert abs(out[1][0] / out[0][0] - 1.0) > 0.01
 
 
 @pytest.mark.parametrize("bush_htc", [0.0, 2000.0])
