@@ -23,6 +23,9 @@ iterated with. Checks:
 * the returned system reproduces the equilibrium (rotor and sleeve, 1e-9 c), its stability
   runs, its transient follows its linear model at small amplitude (1 %), the model file round-trips ([thermal] model = "thd"; the frozen field of the returned
   system as ``viscosity_field_pa_s``) and gives the same answers;
+* ``threshold(..., thermal=...)`` (each evaluation at its own thermal equilibrium): a flat oil
+  gives the isothermal threshold bit for bit; with VG 46 max Re λ of the thermal film is zero
+  at its threshold and positive at the isothermal one;
 * the effective-temperature model likewise: the power loss and flows of the deformed film at
   μ(T_eff) recomputed here (1e-6) close its heat balance (1e-9);
 * bad input names the field.
@@ -214,6 +217,36 @@ def test_transient_of_the_returned_system_follows_its_linear_model():
     assert np.max(np.abs(dev[:, jx] - lin[:, jx])) < 0.01 * np.max(np.abs(lin[:, jx]))
     iso = rd.equilibrium(s, speed_hz=SPEED, chamber_pressure_pa=PC, config_ay_m=AY)
     assert np.max(np.abs(iso.r - r.r)) > 0.2e-6
+
+
+def test_threshold_with_the_thd_film():
+    """``threshold(..., thermal=...)``: each evaluation at its own thermal equilibrium. With a
+    temperature-independent oil it is the isothermal threshold bit for bit; with VG 46 the
+    rig is still unstable (thermal film) at the isothermal threshold, the thermal film's max
+    Re λ is zero at its own threshold (1e-4 1/s; the slope is ~1.4e-4 1/s per Pa) and changes
+    sign 100 Pa either side of it."""
+    flat = Oil(viscosity_law="exponential", mu_ref_pa_s=0.04, t_ref_c=40.0, beta_1_per_k=1e-300)
+    s = _rig()
+    kw = dict(bounds=(0.03e6, 0.09e6), speed_hz=SPEED, config_ay_m=AY, n_scan=4)
+    iso = rd.threshold(s, **kw)
+    assert iso.status == "ok" and len(iso.crossings) == 1
+    f = rd.threshold(s, **kw, thermal=dict(oil=flat, supply_temperature_c=TS, model="thd"))
+    assert f.crossings == iso.crossings
+    th = dict(oil=VG46, supply_temperature_c=TS, model="thd")
+    h = rd.threshold(s, **kw, thermal=th)
+    assert h.status == "ok" and h.stable_side == "above"
+
+    def growth(pc):
+        t = _thd(s, chamber_pressure_pa=pc)
+        st = rd.stability(t.system, speed_hz=SPEED, chamber_pressure_pa=pc)
+        return float(np.max(st.eigenvalues.real))
+    assert growth(iso.value) > 0.0
+    assert abs(growth(h.value)) < 1e-4
+    assert growth(h.value - 100.0) > 0.0 > growth(h.value + 100.0)
+    with pytest.raises(InputError, match="thermal.chamber_pressure_pa"):
+        rd.threshold(s, **kw, thermal=dict(th, chamber_pressure_pa=1e5))
+    with pytest.raises(InputError, match="thermal.oli"):
+        rd.threshold(s, **kw, thermal=dict(oli=VG46))
 
 
 def test_model_file_round_trip_with_the_thd_active_bearing(tmp_path):
