@@ -318,3 +318,35 @@ def test_cli_thermal_on_the_rig_with_the_housing_offset(tmp_path, capsys):
                 "film_flow_m3_s", "side_flow_m3_s"):
         np.testing.assert_allclose([row[col] for row in out["bearings"]], getattr(r, col),
                                    rtol=1e-9)
+
+
+def test_thermal_sweep_on_the_rig_equals_direct_calls(tmp_path):
+    """The ``thermal`` sweep analysis on the rig with ``[thermal] model = "thd"``, over p_c
+    and the active bearing's own housing offset: every row equals the direct call (1e-9)."""
+    import rotordyn.sweep as sw
+    from rotordyn.sweep import run_sweep
+    from rotordyn.sweep.paths import set_field
+
+    s = _rig()
+    i = _active(s)
+    s = dataclasses.replace(s, thermal=ThermalModel(supply_temperature_c=TS, oil=VG46,
+                                                    model="thd"))
+    s.to_toml(tmp_path / "m.toml")
+    ay = f"bearings.{s.bearings[i].name.replace(' ', '_')}.config_ay_m"
+    spec = tmp_path / "s.toml"
+    spec.write_text('schema = "rotordyn/sweep/1"\nname = "thd"\nmodel = "m.toml"\n'
+                    'analysis = "thermal"\nchunk_size = 2\n[grid]\n'
+                    f'chamber_pressure_pa = [1e5, 2e5]\n"{ay}" = [-1.85e-3, -1.7e-3]\n'
+                    f'speed_hz = {SPEED}\n')
+    res = run_sweep(spec, tmp_path / "o", threads=1)
+    assert res.complete and res.counts["failed"] == 0
+    fr = sw.open(tmp_path / "o").frame
+    assert len(fr) == 4 and (fr["status"] == "ok").all()
+    for _, row in fr.iterrows():
+        m = set_field(s, ay, float(row[ay]))
+        r = rd.system_thermal_equilibrium(m, speed_hz=SPEED,
+                                          chamber_pressure_pa=float(row["chamber_pressure_pa"]))
+        for c in ("max_temperature_c", "effective_temperature_c", "power_loss_w",
+                  "journal_x_m", "journal_y_m"):
+            assert row[c] == pytest.approx(getattr(r, c)[0], rel=1e-9, abs=1e-15)
+    assert fr["max_temperature_c"].nunique() == 4
