@@ -5,9 +5,10 @@ the turbulent (Ng–Pan–Elrod) force beside the laminar one; the same for syst
 compressor of tests/data/models (two plain bearings) and the paper rig (its active bearing,
 sleeve deformation in the film; a_y = −1.85 mm, 50 Hz, p_c = 0.1 MPa).
 
-Run ``python benchmarks/bench_thermal.py [--repeat 7] [--rig-only]``. Protocol (benchmarks/_common.py): one
-BLAS/OpenMP thread, the two sides of each ratio timed in interleaved repeats, medians, wall
-and CPU time side by side, the machine load before and after.
+Run ``python benchmarks/bench_thermal.py [--repeat 7] [--rig-only]``. Protocol
+(benchmarks/_common.py): one BLAS/OpenMP thread, the two sides of each ratio timed in
+interleaved repeats, medians, wall and CPU time side by side, the machine load before and
+after.
 
 Bearing: D = 0.1 m, L = 0.05 m, c = 0.1 mm, Swift–Stieber film, 72×16 grid, 100 Hz, load
 5 kN downwards; oil ISO VG 32 (Walther through 32 mm²/s at 40 °C and 5.4 mm²/s at 100 °C,

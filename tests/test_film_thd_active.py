@@ -1,6 +1,6 @@
-"""Thermo-hydrodynamic film of the active journal bearing in a system (issue 20; docs/film-physics.md
-§"THD active bearing"): the paper rig (rotordyn.models.paper_rig(), coarse 36 × 8 film) with
-``system_thermal_equilibrium(model="thd")`` at a_y = −1.85 mm, 50 Hz.
+"""Thermo-hydrodynamic film of the active journal bearing in a system (issue 20;
+docs/film-physics.md §"THD active bearing"): the paper rig (rotordyn.models.paper_rig(),
+coarse 36 × 8 film) with ``system_thermal_equilibrium(model="thd")`` at a_y = −1.85 mm, 50 Hz.
 
 The active bearing's film thickness includes the sleeve's inward deformation w(φ) = W r_s
 (eq. 3); the sleeve coordinates r_s are part of the equilibrium the energy equation is
@@ -9,11 +9,11 @@ iterated with. Checks:
   gives the isothermal rig bit for bit: the equilibrium (rotor and sleeve coordinates) and
   K_H, D_H (``array_equal``) while the film heats;
 * the field is the energy equation's fixed point on the deformed film: a standalone Reynolds
-  solve built here from the bearing's geometry, with h = c − x cos φ − y sin φ − W r_s computed
-  here from the sleeve's interpolation matrix and the returned field's viscosities, and the
-  energy equation on it, give the returned temperature field (1e-5 K; the iteration's tolerance
-  is 1e-6 K); the rigid-bush film (w = 0) at the same journal position gives a field that
-  differs by more than 0.1 K, so the check sees the sleeve;
+  solve built here from the bearing's geometry, with h = c − x cos φ − y sin φ − W r_s
+  computed here from the sleeve's interpolation matrix and the returned field's viscosities,
+  and the energy equation on it, give the returned temperature field (1e-5 K; the
+  iteration's tolerance is 1e-6 K); the rigid-bush film (w = 0) at the same journal position
+  gives a field that differs by more than 0.1 K, so the check sees the sleeve;
 * energy balance on the mass-conserving (Elrod–Adams) active film, recomputed from the
   returned face flows and temperatures: heat carried out = dissipation (1e-9) adiabatic with
   carry-over, and with heat transfer to the bush (flows + wall = dissipation, 1e-9);
@@ -21,8 +21,10 @@ iterated with. Checks:
   film forces of the returned system (1e-5 of the largest entry) and differs from the
   isothermal K_H at the supply viscosity by more than that;
 * the returned system reproduces the equilibrium (rotor and sleeve, 1e-9 c), its stability
-  runs, its transient follows its linear model at small amplitude (1 %), the model file round-trips ([thermal] model = "thd"; the frozen field of the returned
-  system as ``viscosity_field_pa_s``) and gives the same answers;
+  runs, its transient follows its linear model at small amplitude (1 %), the model file
+  round-trips ([thermal] model = "thd"; the frozen field of the returned system as
+  ``viscosity_field_pa_s``) and gives the same answers; the thermal sweep and the CLI equal
+  the direct call;
 * ``threshold(..., thermal=...)`` (each evaluation at its own thermal equilibrium): a flat oil
   gives the isothermal threshold bit for bit; with VG 46 max Re λ of the thermal film is zero
   at its threshold and positive at the isothermal one;

@@ -30,8 +30,8 @@ def freeze_viscosity_field(b) -> None:
         a = np.asarray(b.viscosity_field_pa_s, dtype=float)
     except (TypeError, ValueError):
         raise InputError(f"viscosity_field_pa_s: expected finite values > 0 of shape "
-                         f"({b.n_circ}, {b.n_axial + 1}), got {type(b.viscosity_field_pa_s).__name__}"
-                         ) from None
+                         f"({b.n_circ}, {b.n_axial + 1}), got "
+                         f"{type(b.viscosity_field_pa_s).__name__}") from None
     if a.shape != (b.n_circ, b.n_axial + 1) or not np.all(np.isfinite(a)) \
             or not np.all(a > 0.0):
         raise InputError(f"viscosity_field_pa_s: expected finite values > 0 of shape "
