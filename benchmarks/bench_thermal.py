@@ -1,11 +1,14 @@
 """Benchmark: film physics of issue 20 — the effective-temperature (thermal) and the
 thermo-hydrodynamic (THD) equilibrium + K, C of the 72×16 plain bearing beside the isothermal
 equilibrium + K, C (goal <= 5x its cost), and
-the turbulent (Ng–Pan–Elrod) force beside the laminar one.
+the turbulent (Ng–Pan–Elrod) force beside the laminar one; the same for systems: the
+compressor of tests/data/models (two plain bearings) and the paper rig (its active bearing,
+sleeve deformation in the film; a_y = −1.85 mm, 50 Hz, p_c = 0.1 MPa).
 
-Run ``python benchmarks/bench_thermal.py [--repeat 7]``. Protocol (benchmarks/_common.py): one
-BLAS/OpenMP thread, the two sides of each ratio timed in interleaved repeats, medians, wall
-and CPU time side by side, the machine load before and after.
+Run ``python benchmarks/bench_thermal.py [--repeat 7] [--rig-only]``. Protocol
+(benchmarks/_common.py): one BLAS/OpenMP thread, the two sides of each ratio timed in
+interleaved repeats, medians, wall and CPU time side by side, the machine load before and
+after.
 
 Bearing: D = 0.1 m, L = 0.05 m, c = 0.1 mm, Swift–Stieber film, 72×16 grid, 100 Hz, load
 5 kN downwards; oil ISO VG 32 (Walther through 32 mm²/s at 40 °C and 5.4 mm²/s at 100 °C,
@@ -35,8 +38,14 @@ TS = 45.0
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--repeat", type=int, default=7)
+    ap.add_argument("--rig-only", action="store_true",
+                    help="only the paper rig's active bearing (isothermal vs thermal vs THD)")
     args = ap.parse_args(argv)
     header("thermal and turbulent film (issue 20)")
+    if args.rig_only:
+        rig_section(args.repeat)
+        footer()
+        return 0
     geo = dict(diameter_m=0.1, length_m=0.05, clearance_m=1e-4, n_circ=72, n_axial=16)
     mu_s = OIL.viscosity_pa_s(TS)
     iso = rotordyn.JournalBearing(viscosity_pa_s=mu_s, **geo)
@@ -108,6 +117,8 @@ def main(argv=None) -> int:
     print(f"  ratio THD/isothermal:     {t3['thd'].wall / t3['isothermal'].wall:.2f}x wall, "
           f"{t3['thd'].cpu / t3['isothermal'].cpu:.2f}x CPU")
 
+    rig_section(args.repeat)
+
     # turbulence on vs off, per force (same position, Re_h at the clearance ~ 2.9e3)
     lam = rotordyn.JournalBearing(viscosity_pa_s=0.003, **geo)
     tur = rotordyn.JournalBearing(viscosity_pa_s=0.003, turbulence="ng_pan", density_kg_m3=870.0,
@@ -123,6 +134,38 @@ def main(argv=None) -> int:
           f"{abs(complex(*tur.forces(**st))) / abs(complex(*lam.forces(**st))):.3f}")
     footer()
     return 0
+
+
+def rig_section(repeat: int) -> None:
+    """The paper rig (active bearing, 72x16, Swift-Stieber) at a_y = -1.85 mm, 50 Hz,
+    p_c = 0.1 MPa: the isothermal system equilibrium from a cold start beside the
+    effective-temperature and THD system equilibria of its active bearing (one C++ call each;
+    oil ISO VG 46 supplied at 40 degC, mu = 0.040 Pa s = the rig's)."""
+    rig = rotordyn.models.paper_rig()
+    vg46 = Oil(viscosity_law="walther", t1_c=40.0, nu1_mm2_s=46.0, t2_c=100.0, nu2_mm2_s=6.8,
+               density_kg_m3=870.0, specific_heat_j_per_kg_k=2000.0)
+    op = dict(speed_hz=50.0, chamber_pressure_pa=0.1e6, config_ay_m=-1.85e-3)
+
+    def therm(model):
+        return rotordyn.system_thermal_equilibrium(rig, oil=vg46, supply_temperature_c=40.0,
+                                                   model=model, **op)
+    for model in ("effective", "thd"):
+        r = therm(model)
+        print(f"paper rig {model} (0.1 MPa, 50 Hz): {r.status}, T_max = "
+              f"{r.max_temperature_c[0]:.2f} degC, T_mean/T_eff = "
+              f"{r.effective_temperature_c[0]:.2f} degC, P = {r.power_loss_w[0]:.1f} W, "
+              f"{r.iterations} outer iterations")
+    t4 = interleaved({
+        "isothermal": lambda: rotordyn.equilibrium(rig, warm_start=False, **op),
+        "thermal": lambda: therm("effective"),
+        "thd": lambda: therm("thd")}, repeat=max(3, repeat // 2))
+    print(f"system equilibrium, paper rig:  isothermal {t4['isothermal']}")
+    print(f"                                thermal    {t4['thermal']}")
+    print(f"                                THD        {t4['thd']}")
+    print(f"  ratio thermal/isothermal: {t4['thermal'].wall / t4['isothermal'].wall:.2f}x wall, "
+          f"{t4['thermal'].cpu / t4['isothermal'].cpu:.2f}x CPU")
+    print(f"  ratio THD/isothermal:     {t4['thd'].wall / t4['isothermal'].wall:.2f}x wall, "
+          f"{t4['thd'].cpu / t4['isothermal'].cpu:.2f}x CPU")
 
 
 if __name__ == "__main__":

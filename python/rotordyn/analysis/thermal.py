@@ -1,6 +1,9 @@
-"""Effective-temperature thermal equilibrium of a system (issue 20; docs/film-physics.md): the
-system equilibrium (eq. 14) iterated with the heat balance of each plain journal bearing's
-film, in one C++ call (``_core.thermal_system_equilibrium``)."""
+"""Thermal equilibrium of a system (issue 20; docs/film-physics.md): the system equilibrium
+(eq. 14) iterated with the heat balance (effective temperature) or the energy equation (THD)
+of each thermal bearing's film — plain and active journal bearings (the active bearing's
+sleeve deformation w(φ) in its film thickness, eq. 3, and its sleeve coordinates in the
+equilibrium), tilting-pad and fixed-geometry bearings (THD) — in one C++ call
+(``_core.thermal_system_equilibrium``)."""
 
 from __future__ import annotations
 
@@ -12,13 +15,17 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled
-from rotordyn.bearings import FixedGeometryBearing, FluidFilmBearing, Oil, TiltingPadBearing
+from rotordyn.bearings import (ActiveJournalBearing, FixedGeometryBearing, FluidFilmBearing,
+                               Oil, TiltingPadBearing)
 from rotordyn.bearings.pad_thd import check_carry_over, pad_options, pad_thermal_films
 from rotordyn.bearings.thd import THERMAL_MODELS, thd_options
 from rotordyn.bearings.thermal import thermal_options
 from rotordyn.errors import InputError
 from rotordyn.results.thermal import SystemThermalResult
 from rotordyn.units import hz_to_rad_s
+
+# the energy equation's terms of a THD film (FilmFlows), per node (n_circ, n_axial + 1)
+FLOW_FIELDS = ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2", "viscosity_pa_s")
 
 
 @limited_blas
@@ -28,19 +35,29 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
                                effective_factor: float | None = None,
                                supply_flow_m3_s: float | None = None,
                                chamber_pressure_pa: float = 0.0,
+                               config_ay_m: float | None = None,
+                               config_ax_m: float | None = None,
                                tol_k: float = 1e-6, model: str | None = None,
                                journal_htc_w_m2k: float | None = None,
                                bush_htc_w_m2k: float | None = None,
                                journal_temperature_c: float | None = None,
                                bush_temperature_c: float | None = None) -> SystemThermalResult:
-    """Thermal equilibrium of ``system`` at ``speed_hz``: each plain journal bearing
-    (``type = "journal"``, :class:`rotordyn.FluidFilmBearing`) in ``bearings`` (indices into
+    """Thermal equilibrium of ``system`` at ``speed_hz``: each plain or active journal bearing
+    (``type = "journal"``, :class:`rotordyn.FluidFilmBearing`; ``type = "active_journal"``,
+    :class:`rotordyn.ActiveJournalBearing`, whose film thickness includes the sleeve's
+    deformation at the equilibrium, eq. 3) in ``bearings`` (indices into
     ``system.bearings``; None: all of them) runs at μ(T_eff) of ``oil`` with its own heat
     balance (supply at ``supply_temperature_c`` °C, ``carry_over`` λ, ``effective_factor`` k,
     ``supply_flow_m3_s``; :meth:`rotordyn.JournalBearing.thermal_equilibrium` for the model),
     iterated with the system equilibrium to |ΔT_eff| <= ``tol_k`` for every bearing. The
     result's ``system`` carries the viscosities μ(T_eff): pass it to ``linearize``,
     ``stability`` or ``campbell`` for the dynamics with the temperature frozen.
+
+    ``chamber_pressure_pa`` (Pa) is every active bearing's p_c; ``config_ay_m``,
+    ``config_ax_m`` (m) override the active bearing's housing offsets as in
+    :func:`rotordyn.equilibrium` (None: the model's). The returned ``system`` carries the
+    offsets used, so ``equilibrium(result.system, speed_hz, chamber_pressure_pa)`` is the
+    thermal equilibrium; its frozen temperature field belongs to this (speed, p_c, a) only.
 
     Every thermal argument left None comes from the model's oil system (``system.thermal``,
     the model file's ``[thermal]`` table, per bearing from its ``[[thermal.film]]`` entry);
@@ -59,6 +76,9 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     if float(speed_hz) == 0.0:
         raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    for name, val in (("config_ay_m", config_ay_m), ("config_ax_m", config_ax_m)):
+        if val is not None:
+            v.finite(name, val)
     thermal_model = model_ = system.thermal
     if oil is None:
         if model_ is None:
@@ -76,7 +96,8 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         model = getattr(thermal_model, "model", "effective") if thermal_model is not None \
             else "effective"
     v.choice("model", model, THERMAL_MODELS)
-    plain = [i for i, b in enumerate(system.bearings) if isinstance(b, FluidFilmBearing)]
+    plain = [i for i, b in enumerate(system.bearings)
+             if isinstance(b, (FluidFilmBearing, ActiveJournalBearing))]
     pads = [i for i, b in enumerate(system.bearings)
             if isinstance(b, (TiltingPadBearing, FixedGeometryBearing))]
     if bearings is None:
@@ -91,11 +112,12 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
             if i not in plain and i not in pads:
                 raise InputError(f"bearings: bearing {i} is a "
                                  f"{type(system.bearings[i]).__name__}; the thermal model is "
-                                 "available for plain journal bearings (type = 'journal') and, "
-                                 "with model = 'thd', tilting-pad and fixed-geometry bearings")
+                                 "available for plain and active journal bearings (type = "
+                                 "'journal', 'active_journal') and, with model = 'thd', "
+                                 "tilting-pad and fixed-geometry bearings")
     if not idx:
-        raise InputError("bearings: the system has no plain journal bearing for the thermal "
-                         "model (pad bearings: model = 'thd')")
+        raise InputError("bearings: the system has no plain or active journal bearing for the "
+                         "thermal model (pad bearings: model = 'thd')")
     def options(i):
         own = model_.film(system.bearings[i].name) if model_ is not None else None
 
@@ -149,7 +171,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         films.append(tf)
     opt = _core.EquilibriumOptions()
     opt.polish = True
-    a = asm.config_vector(None, None)
+    a = asm.config_vector(config_ay_m, config_ax_m)
     res = _core.thermal_system_equilibrium(asm.model, films, omega,
                                            float(chamber_pressure_pa), a, opt)
     eq = res.equilibrium
@@ -165,10 +187,17 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
             mus[i] = own[0].viscosity_pa_s
             if thd:
                 fields[i] = np.array(own[0].viscosity_field)
-    hot = dataclasses.replace(system, bearings=tuple(
-        dataclasses.replace(b, viscosity_pa_s=float(mus[i]), viscosity_field_pa_s=fields.get(i))
-        if i in mus else b for i, b in enumerate(system.bearings)))
     bcs = {bc.index: bc for bc in asm.bearings}
+    # the housing offsets this equilibrium used (config_ay_m/config_ax_m overrides included)
+    cfg = {i: dict(config_ax_m=float(a[bc.jx]), config_ay_m=float(a[bc.jy]))
+           for i, bc in bcs.items() if hasattr(system.bearings[i], "config_ay_m")
+           and (float(a[bc.jx]), float(a[bc.jy])) != (system.bearings[i].config_ax_m,
+                                                      system.bearings[i].config_ay_m)}
+    hot = dataclasses.replace(system, bearings=tuple(
+        dataclasses.replace(b, viscosity_pa_s=float(mus[i]), viscosity_field_pa_s=fields.get(i),
+                            **cfg.get(i, {}))
+        if i in mus else dataclasses.replace(b, **cfg[i]) if i in cfg else b
+        for i, b in enumerate(system.bearings)))
     names = tuple(asm.model.films[j].name if i in pads else bcs[i].name for i, j in rows)
 
     def col(name):
@@ -185,4 +214,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         journal_y_m=np.array([r[bcs[i].jy] for i, _ in rows]),
         r=r, iterations=int(res.iterations), system=hot, status=eq.status, message=eq.message,
         thermal_model=model,
-        temperature_c=tuple(np.array(s.temperature_c) for s in st) if thd else ())
+        temperature_c=tuple(np.array(s.temperature_c) for s in st) if thd else (),
+        inlet_mask=tuple(np.array(s.inlet_mask) for s in st) if thd else (),
+        flows=tuple({k: np.array(getattr(s.flows, k)) for k in FLOW_FIELDS} for s in st)
+        if thd else ())

@@ -19,9 +19,18 @@ from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 PARAMETERS = ("chamber_pressure_pa", "config_ay_m", "speed_hz")
 
 
-def _point(system, params, exclude_sleeve_modes):
+def _point(system, params, exclude_sleeve_modes, thermal=None):
     from rotordyn.analysis.linear import stability
 
+    if thermal is not None:  # the thermal equilibrium at this point, its field frozen
+        from rotordyn.analysis.thermal import system_thermal_equilibrium
+
+        t = system_thermal_equilibrium(system, speed_hz=params["speed_hz"],
+                                       chamber_pressure_pa=params["chamber_pressure_pa"],
+                                       config_ay_m=params["config_ay_m"], **thermal)
+        if t.status not in ("ok", "contact"):
+            return math.nan, math.nan, f"thermal {t.status}"
+        system = t.system
     st = stability(system, params["speed_hz"], params["chamber_pressure_pa"],
                    params["config_ay_m"])
     if st.status not in ("ok", "contact") or len(st.eigenvalues) == 0:
@@ -33,11 +42,37 @@ def _point(system, params, exclude_sleeve_modes):
     return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), st.status
 
 
+def _thermal_keywords(thermal):
+    """``thermal`` checked: None, or a dict of system_thermal_equilibrium's keywords other
+    than the operating point's (InputError naming the key)."""
+    if thermal is None:
+        return None
+    import inspect
+
+    from rotordyn.analysis.thermal import system_thermal_equilibrium
+
+    if not isinstance(thermal, dict):
+        raise InputError(f"thermal: expected None or a dict of system_thermal_equilibrium "
+                         f"keywords, got {type(thermal).__name__}")
+    own = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
+    allowed = [k for k in inspect.signature(system_thermal_equilibrium).parameters
+               if k not in own and k != "system"]
+    for k in thermal:
+        if k in own:
+            raise InputError(f"thermal.{k}: set by the threshold's point (vary and the fixed "
+                             "parameters), not by the thermal keywords")
+        if k not in allowed:
+            raise InputError(f"thermal.{k}: not a keyword of system_thermal_equilibrium; "
+                             f"expected one of {allowed}")
+    return dict(thermal)
+
+
 @limited_blas
 def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
               speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, n_scan: int = 25, xtol: float | None = None,
-              exclude_sleeve_modes: bool = False) -> ThresholdResult:
+              exclude_sleeve_modes: bool = False, thermal: dict | None = None
+              ) -> ThresholdResult:
     """The value of ``vary`` (``"chamber_pressure_pa"``, ``"config_ay_m"`` or ``"speed_hz"``)
     in ``bounds`` where the least-damped eigenvalue's real part crosses zero.
 
@@ -48,6 +83,14 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     ``crossings``; ``value`` is the first. No sign change gives status ``"no_crossing"`` and
     ``value`` NaN — never an invented number. A band narrower than the scan spacing that
     leaves no trace in the scanned values can still be missed: raise ``n_scan``.
+
+    ``thermal``: None (the isothermal films) or the keywords of
+    :func:`rotordyn.system_thermal_equilibrium` (``oil``, ``supply_temperature_c``,
+    ``model="thd"``, ``carry_over``...; not the operating point, which the threshold sets):
+    every evaluation then first solves the thermal equilibrium at its point (a cold start;
+    speed, p_c and a_y of the point) and takes the stability of the returned system, the
+    temperature (viscosity) field frozen there — the threshold of the thermal film, each
+    point at its own temperature.
     """
     v.choice("vary", vary, PARAMETERS)
     lo, hi = v.bounds("bounds", bounds)
@@ -62,6 +105,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
              "config_ay_m": None if config_ay_m is None else v.finite("config_ay_m",
                                                                        config_ay_m)}
     fixed.pop(vary)
+    thermal = _thermal_keywords(thermal)
     calls = [0]
 
     def g(x):
@@ -69,7 +113,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
         p = dict(fixed)
         p[vary] = float(x)
         try:
-            return _point(system, p, exclude_sleeve_modes)
+            return _point(system, p, exclude_sleeve_modes, thermal)
         except RotordynError as exc:  # a failed point is a NaN, the scan goes on
             return math.nan, math.nan, f"error: {exc}"
 

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import check_tilt_fields
-from rotordyn.bearings.fluid_film import check_placed_film, film_model
+from rotordyn.bearings.fluid_film import check_placed_film, film_model, freeze_viscosity_field
 from rotordyn.bearings.journal import Groove, JournalBearing
 from rotordyn.bearings.sleeve import FlexibleSleeve
 from rotordyn.errors import InputError
@@ -44,9 +44,14 @@ class ActiveJournalBearing:
     tilt: bool = False
     config_theta_x_rad: float = 0.0
     config_theta_y_rad: float = 0.0
+    # a frozen viscosity per node, Pa·s, (n_circ, n_axial + 1) as a tuple of rows (the THD
+    # film's temperature field at its thermal equilibrium, sleeve deformation included);
+    # None: viscosity_pa_s everywhere (as FluidFilmBearing)
+    viscosity_field_pa_s: tuple | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "grooves", tuple(self.grooves))
+        freeze_viscosity_field(self)
 
     def check(self, where: str, n_stations: int) -> None:
         check_placed_film(self, where, n_stations)

@@ -20,6 +20,25 @@ def check_placed_film(b, where: str, n_stations: int) -> None:
             raise InputError(f"{where}.grooves[{i}]: expected a Groove, got {type(g).__name__}")
 
 
+def freeze_viscosity_field(b) -> None:
+    """Check and freeze ``b.viscosity_field_pa_s`` (a plain or active journal bearing's frozen
+    viscosity per node, Pa·s, (n_circ, n_axial + 1); None: ``viscosity_pa_s`` everywhere) as
+    a tuple of rows. InputError naming the field: finite values > 0 of the grid's shape."""
+    if b.viscosity_field_pa_s is None:
+        return
+    try:
+        a = np.asarray(b.viscosity_field_pa_s, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"viscosity_field_pa_s: expected finite values > 0 of shape "
+                         f"({b.n_circ}, {b.n_axial + 1}), got "
+                         f"{type(b.viscosity_field_pa_s).__name__}") from None
+    if a.shape != (b.n_circ, b.n_axial + 1) or not np.all(np.isfinite(a)) \
+            or not np.all(a > 0.0):
+        raise InputError(f"viscosity_field_pa_s: expected finite values > 0 of shape "
+                         f"({b.n_circ}, {b.n_axial + 1}), got shape {a.shape}")
+    object.__setattr__(b, "viscosity_field_pa_s", tuple(map(tuple, a.tolist())))
+
+
 def film_model(b) -> JournalBearing:
     return JournalBearing(diameter_m=b.diameter_m, length_m=b.length_m,
                           clearance_m=b.clearance_m, viscosity_pa_s=b.viscosity_pa_s,
@@ -59,13 +78,7 @@ class FluidFilmBearing:
 
     def __post_init__(self):
         object.__setattr__(self, "grooves", tuple(self.grooves))
-        if self.viscosity_field_pa_s is not None:
-            a = np.asarray(self.viscosity_field_pa_s, dtype=float)
-            if a.shape != (self.n_circ, self.n_axial + 1) or not np.all(np.isfinite(a)) \
-                    or not np.all(a > 0.0):
-                raise InputError(f"viscosity_field_pa_s: expected finite values > 0 of shape "
-                                 f"({self.n_circ}, {self.n_axial + 1}), got shape {a.shape}")
-            object.__setattr__(self, "viscosity_field_pa_s", tuple(map(tuple, a.tolist())))
+        freeze_viscosity_field(self)
 
     def check(self, where: str, n_stations: int) -> None:
         check_placed_film(self, where, n_stations)
@@ -76,4 +89,4 @@ class FluidFilmBearing:
         return film_model(self)
 
 
-__all__ = ["FluidFilmBearing", "check_placed_film", "film_model"]
+__all__ = ["FluidFilmBearing", "check_placed_film", "film_model", "freeze_viscosity_field"]

@@ -224,9 +224,6 @@ def _cmd_equilibrium(args) -> int:
 
 def _cmd_thermal(args) -> int:
     s = models.load(args.model)
-    if args.config_ay_m is not None:
-        raise InputError("--config-ay-m: not available with the thermal model (set the "
-                         "housing offsets in the model)")
     if s.thermal is not None and args.oil_walther is None and args.oil_exponential is None:
         oil = None  # the model's [thermal] oil (--supply-temperature-c may still override)
     else:
@@ -238,7 +235,7 @@ def _cmd_thermal(args) -> int:
         s, speed_hz=args.speed_hz, oil=oil, supply_temperature_c=args.supply_temperature_c,
         carry_over=args.carry_over, effective_factor=args.effective_factor,
         supply_flow_m3_s=args.supply_flow_m3_s, chamber_pressure_pa=args.chamber_pressure_pa,
-        model=args.thermal_model, journal_htc_w_m2k=args.journal_htc_w_m2k,
+        config_ay_m=args.config_ay_m, model=args.thermal_model, journal_htc_w_m2k=args.journal_htc_w_m2k,
         bush_htc_w_m2k=args.bush_htc_w_m2k, journal_temperature_c=args.journal_temperature_c,
         bush_temperature_c=args.bush_temperature_c)
     df = r.to_frame()

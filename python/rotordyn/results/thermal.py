@@ -1,5 +1,5 @@
-"""Result of the effective-temperature thermal equilibrium of a system
-(:func:`rotordyn.system_thermal_equilibrium`): one row per thermal bearing."""
+"""Result of the thermal equilibrium of a system (effective temperature or THD film,
+:func:`rotordyn.system_thermal_equilibrium`): one row per thermal film."""
 
 from __future__ import annotations
 
@@ -41,6 +41,12 @@ class SystemThermalResult:
     message: str = ""
     thermal_model: str = "effective"  # "thd": effective_temperature_c is the film's mean
     temperature_c: tuple = ()         # "thd": each bearing's field (n_circ, n_axial + 1), degC
+    # "thd": per film, the nodes held at the inlet temperature (1) and the energy equation's
+    # terms, a dict of (n_circ, n_axial + 1) arrays: face flows q_phi_m3_s (through j+1/2,
+    # + with φ) and q_z_m3_s (through k+1/2, + towards +z), fill, cell dissipation_w,
+    # area_m2, the node viscosity_pa_s
+    inlet_mask: tuple = ()
+    flows: tuple = ()
 
     def __repr__(self) -> str:
         t = ", ".join(f"{n}: {x:.2f} degC" for n, x in zip(self.bearing_names,

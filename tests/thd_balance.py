@@ -1,0 +1,49 @@
+"""Energy balance of a THD film recomputed from its returned fields (used by the THD tests):
+the heat the face flows carry out of the film (upwind face temperatures), the heat the walls
+take, the dissipation of the film's cells and the worst relative mass defect of an inner cell.
+(The same bookkeeping as test_film_thd.py's, on bare arrays, with the wall term.)"""
+
+import numpy as np
+
+
+def balance(T, inlet_mask, flows, rho_c, ts, h_wall=0.0, t_wall=0.0):
+    """``T``, ``inlet_mask``: (n_circ, n_axial + 1); ``flows``: dict with ``q_phi_m3_s``
+    (face j+1/2, + with φ), ``q_z_m3_s`` (face k+1/2), ``dissipation_w``, ``area_m2``;
+    ``rho_c`` = ρ c_p (J/(m³ K)); ``ts`` the supply temperature of ambient side inflow (°C);
+    ``h_wall`` the summed wall heat-transfer coefficient (W/(m² K)) to walls at ``t_wall``.
+    Returns (heat out by the flows W, dissipation W, heat to the walls W, mass defect)."""
+    qp, qz = np.asarray(flows["q_phi_m3_s"]), np.asarray(flows["q_z_m3_s"])
+    T = np.asarray(T)
+    D = np.asarray(inlet_mask) > 0
+    n, k1 = T.shape
+    inflow = np.zeros_like(T)
+    outflow = np.zeros_like(T)
+    heat = 0.0
+    faces = []
+    for j in range(n):
+        for k in range(k1):
+            faces.append(((j, k), ((j + 1) % n, k), qp[j, k]))
+            if k < k1 - 1:
+                faces.append(((j, k), (j, k + 1), qz[j, k]))
+    for a, b, F in faces:
+        if F < 0:
+            a, b, F = b, a, -F
+        inflow[b] += F
+        outflow[a] += F
+        if D[b] and not D[a]:
+            heat += F * T[a]          # back to the inlet
+        elif D[a] and not D[b]:
+            heat -= F * T[a]          # from the inlet into the film
+    mass = 0.0
+    for j in range(n):
+        for k in range(k1):
+            if D[j, k]:
+                continue
+            B = inflow[j, k] - outflow[j, k]
+            if k in (0, k1 - 1):      # open end: leaves (or ambient oil enters at T_s)
+                heat += B * (T[j, k] if B > 0 else ts)
+            else:
+                mass = max(mass, abs(B) / max(inflow[j, k], 1e-300))
+    diss = float(np.asarray(flows["dissipation_w"])[~D].sum())
+    wall = float((h_wall * np.asarray(flows["area_m2"]) * (T - t_wall))[~D].sum())
+    return rho_c * heat, diss, wall, mass
