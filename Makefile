@@ -13,7 +13,7 @@ APT_PKGS := libeigen3-dev libsuitesparse-dev libsundials-dev liblapack-dev libbl
 # `make test` only: a headless browser for the HTML report's test (tests/test_report_browser.py)
 APT_TEST_PKGS := chromium
 PY_BUILD := scikit-build-core pybind11 cmake ninja
-PY_DEPS  := numpy scipy pandas pyarrow "dask[distributed]" matplotlib threadpoolctl pytest hypothesis control
+PY_DEPS  := numpy scipy pandas pyarrow "dask[distributed]" matplotlib threadpoolctl pytest pytest-xdist hypothesis control
 # Optional (the `hinf` extra): H∞ synthesis (python-control's hinfsyn/mixsyn need slycot);
 # wheels only (no Fortran build from source): a machine without a wheel still builds and
 # tests, the H∞ tests skip with the reason.
@@ -64,8 +64,11 @@ $(STAMPS)/testdeps: | $(STAMPS)/sysdeps
 	fi
 	@touch $@
 
+# The suite runs in PYTEST_WORKERS processes (pytest-xdist), whole files per process
+# (`--dist loadfile`: a module's fixtures are built once); PYTEST_WORKERS=0 runs it serially.
+PYTEST_WORKERS ?= 2
 test-py: $(STAMPS)/install $(STAMPS)/testdeps
-	$(PY) -m pytest -q --durations=25
+	$(PY) -m pytest -q --durations=25 $(if $(filter 0,$(PYTEST_WORKERS)),,-n $(PYTEST_WORKERS) --dist loadfile)
 
 test: test-cpp test-py
 
