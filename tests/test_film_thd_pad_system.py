@@ -207,3 +207,55 @@ def test_thermal_sweep_over_a_thermal_field_equals_direct_calls(tmp_path, make, 
     # the axis reaches the film: hotter supply oil, or more hot oil carried over on the DE
     # bearing, runs its film hotter
     assert np.all(tmax[1][n_films // 2:] > tmax[0][n_films // 2:])
+
+
+@pytest.mark.parametrize("make", [compressor_tilting_pad, compressor_fixed],
+                         ids=["tilting_pad", "three_lobe"])
+def test_cli_thermal_on_pad_and_lobe_bearings_equals_the_python_call(tmp_path, capsys, make):
+    """``rotordyn thermal MODEL --speed-hz F`` on a model whose ``[thermal] model = "thd"``
+    (and with the wall option given on the command line): one record per pad or lobe, the
+    numbers of :func:`rotordyn.system_thermal_equilibrium` on the same inputs (1e-9)."""
+    import json
+
+    from rotordyn.cli import main
+
+    s = make()
+    path = tmp_path / "m.toml"
+    s.to_toml(path)
+    r = rotordyn.system_thermal_equilibrium(s, speed_hz=SPEED, bush_htc_w_m2k=500.0,
+                                            supply_temperature_c=50.0)
+    assert main(["thermal", str(path), "--speed-hz", str(SPEED), "--bush-htc-w-m2k", "500",
+                 "--supply-temperature-c", "50", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["status"] == "ok" and out["thermal_model"] == "thd"
+    assert [row["bearing"] for row in out["bearings"]] == list(r.bearing_names)
+    for col in ("max_temperature_c", "effective_temperature_c", "inlet_temperature_c",
+                "power_loss_w", "film_flow_m3_s", "supply_flow_m3_s", "journal_y_m"):
+        np.testing.assert_allclose([row[col] for row in out["bearings"]], getattr(r, col),
+                                   rtol=1e-9)
+    assert main(["thermal", str(path), "--speed-hz", str(SPEED)]) == 0
+    text = capsys.readouterr().out
+    assert "thermal model thd: ok" in text
+    assert f"{r.bearing_names[0]}: T_max = " in text and "power loss" in text
+
+
+@pytest.mark.parametrize("extra,option", [
+    (["--model", "effective"], "--model"),                   # pads: the THD film only
+    (["--effective-factor", "0.7"], "--effective-factor"),   # THD: no effective temperature
+    (["--carry-over", "1.5"], "carry_over"),
+    (["--bush-htc-w-m2k", "-1"], "bush_htc_w_m2k"),
+])
+def test_cli_thermal_on_pads_bad_input_exits_2_naming_the_option(tmp_path, capsys, extra,
+                                                                 option):
+    from rotordyn.cli import main
+
+    path = tmp_path / "m.toml"
+    compressor_tilting_pad().to_toml(path)
+    assert main(["thermal", str(path), "--speed-hz", str(SPEED), *extra]) == 2
+    assert option in capsys.readouterr().err
+    # a pad model whose [thermal] keeps the default (effective) model: named, with the fix
+    s = compressor_tilting_pad()
+    dataclasses.replace(s, thermal=dataclasses.replace(s.thermal, model="effective")).to_toml(
+        path)
+    assert main(["thermal", str(path), "--speed-hz", str(SPEED)]) == 2
+    assert "--model thd" in capsys.readouterr().err
