@@ -363,7 +363,8 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
     speed (``bearing_coefficients.csv``/``.png``) under ``outdir``, as the HTML report has
     them; with an oil system (``[thermal]``) the bearing temperatures, power loss and K, C at
     the thermal equilibrium (:mod:`rotordyn.report.thermal`). ``rng``:
-    :class:`rotordyn.report.criteria.SpeedRange`; ``campbell``: a Campbell diagram over ``rng.speeds_hz`` already computed (else computed here). Returns the lines."""
+    :class:`rotordyn.report.criteria.SpeedRange`; ``campbell``: a Campbell diagram over
+    ``rng.speeds_hz`` already computed (else computed here). Returns the lines."""
     from pathlib import Path
 
     import matplotlib.pyplot as plt
