@@ -64,7 +64,7 @@ def test_system_thermal_bad_input():
         rotordyn.system_thermal_equilibrium(s, speed_hz=150.0, oil=VG32,
                                             supply_temperature_c=-60.0)
     tp = rotordyn.System.from_toml(MODELS / "compressor_tilting_pad.toml")
-    with pytest.raises(InputError, match="bearings"):
+    with pytest.raises(InputError, match="^model: .*'thd'"):  # pads: the THD film only
         rotordyn.system_thermal_equilibrium(tp, speed_hz=150.0, oil=VG32,
                                             supply_temperature_c=45.0)
 

@@ -105,6 +105,7 @@ def test_cli_thermal_selects_the_thd_film(capsys):
 @pytest.mark.parametrize("extra,field", [
     (["--model", "thd", "--bush-htc-w-m2k", "-1"], "bush_htc_w_m2k"),
     (["--model", "thd", "--journal-temperature-c", "nan"], "journal_temperature_c"),
+    (["--model", "thd", "--effective-factor", "0.7"], "--effective-factor"),  # no T_eff
 ])
 def test_cli_thermal_bad_input_names_the_field(capsys, extra, field):
     assert main(["thermal", str(THERMAL), "--speed-hz", str(SPEED), *extra]) == 2

@@ -180,7 +180,8 @@ def rigid_support_critical_hz(system: System) -> float:
     if len(stations) < 2:
         return float("nan")
     s = dataclasses.replace(system, supports=tuple(Support(k, "rigid") for k in stations),
-                            bearings=(), reduction=Reduction(method="none"))
+                            bearings=(), thermal=None,  # (no films: no oil system)
+                            reduction=Reduction(method="none"))
     try:
         f = modes(s, 0.0, reduction="none", n_modes=4).frequencies_hz
     except RotordynError:

@@ -115,6 +115,10 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
                                  "available for plain and active journal bearings (type = "
                                  "'journal', 'active_journal') and, with model = 'thd', "
                                  "tilting-pad and fixed-geometry bearings")
+    if not idx and pads:
+        raise InputError(f"model: the system's fluid-film bearings are tilting-pad or "
+                         f"fixed-geometry bearings; their thermal film is the THD model "
+                         f"(model = 'thd', [thermal] model = \"thd\"), got {model!r}")
     if not idx:
         raise InputError("bearings: the system has no plain or active journal bearing for the "
                          "thermal model (pad bearings: model = 'thd')")

@@ -67,8 +67,10 @@ def _register(sub) -> None:
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_equilibrium)
 
-    s = sub.add_parser("thermal", help="thermal equilibrium of the plain journal bearings: "
-                       "effective-temperature or THD film (docs/film-physics.md)")
+    s = sub.add_parser("thermal", help="thermal equilibrium of the fluid-film bearings: "
+                       "effective-temperature or THD film of plain and active journal "
+                       "bearings, THD film of tilting-pad and fixed-geometry bearings (one row "
+                       "per pad or lobe; docs/film-physics.md)")
     s.add_argument("model", help=MODEL_HELP)
     add_operating_point(s)
     add_thermal_arguments(s)
@@ -231,11 +233,13 @@ def _cmd_thermal(args) -> int:
     if oil is None and s.thermal is None:
         raise InputError("--supply-temperature-c: required (the oil's supply temperature, "
                          "degC) when the model has no [thermal] table")
+    _check_thermal_model(s, args)
     r = analysis.system_thermal_equilibrium(
         s, speed_hz=args.speed_hz, oil=oil, supply_temperature_c=args.supply_temperature_c,
         carry_over=args.carry_over, effective_factor=args.effective_factor,
         supply_flow_m3_s=args.supply_flow_m3_s, chamber_pressure_pa=args.chamber_pressure_pa,
-        config_ay_m=args.config_ay_m, model=args.thermal_model, journal_htc_w_m2k=args.journal_htc_w_m2k,
+        config_ay_m=args.config_ay_m, model=args.thermal_model,
+        journal_htc_w_m2k=args.journal_htc_w_m2k,
         bush_htc_w_m2k=args.bush_htc_w_m2k, journal_temperature_c=args.journal_temperature_c,
         bush_temperature_c=args.bush_temperature_c)
     df = r.to_frame()
@@ -254,6 +258,27 @@ def _cmd_thermal(args) -> int:
                   f"{r.supply_flow_m3_s[k]:.5g} m3/s")
         print(table_text(df))
     return 0 if r.status in CONVERGED else 1
+
+
+def _check_thermal_model(s, args) -> None:
+    """The options that contradict the thermal model chosen (``--model``, else the model
+    file's ``[thermal] model``), named before any solve: the effective model on a system whose
+    only films are pads or lobes (their thermal film is the THD one), ``--effective-factor``
+    with the THD film (it has no effective temperature to weight)."""
+    from rotordyn.bearings import (ActiveJournalBearing, FixedGeometryBearing,
+                                   FluidFilmBearing, TiltingPadBearing)
+
+    chosen = args.thermal_model or getattr(s.thermal, "model", None) or "effective"
+    plain = any(isinstance(b, (FluidFilmBearing, ActiveJournalBearing)) for b in s.bearings)
+    pads = [b for b in s.bearings if isinstance(b, (TiltingPadBearing, FixedGeometryBearing))]
+    if chosen != "thd" and pads and not plain:
+        where = "--model" if args.thermal_model else "--model (the model's [thermal] model)"
+        raise InputError(f"{where}: {chosen!r}; the bearings are tilting-pad or fixed-geometry "
+                         f"bearings ({', '.join(b.name or type(b).__name__ for b in pads)}), "
+                         "whose thermal film is the THD model: --model thd")
+    if chosen == "thd" and args.effective_factor is not None:
+        raise InputError("--effective-factor: the THD film has no effective temperature (the "
+                         "energy equation gives the field); leave it out, or --model effective")
 
 
 MODE_TABLE_ROWS = 12  # modes a table shows without --n-modes / --max-freq-hz

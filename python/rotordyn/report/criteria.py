@@ -46,8 +46,8 @@ def critical_speed_map(system, k_range=(1e5, 1e10), n_k=21, n_modes=4):
     for i, k in enumerate(ks):
         sup = base + tuple(Support(st, "linear", kxx_n_per_m=k, kyy_n_per_m=k)
                            for st in stations)
-        s = dataclasses.replace(system, supports=sup, bearings=(),
-                                reduction=Reduction(method="none"))
+        s = dataclasses.replace(system, supports=sup, bearings=(), thermal=None,
+                                reduction=Reduction(method="none"))  # (no films: no oil)
         m = analysis.modes(s, 0.0, reduction="none", n_modes=2 * n_modes)
         fr = _distinct(m.frequencies_hz)[:n_modes]
         f[i, :fr.size] = fr

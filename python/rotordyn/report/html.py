@@ -216,7 +216,8 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     ay = 0.0 if active else None
     if operating_speed_hz is None and paper:
         operating_speed_hz = (45.0, 55.0)
-    progress = Steps("report", 6 + bool(active), enabled=bool(progress))
+    progress = Steps("report", 6 + bool(active) + (s.thermal is not None),
+                     enabled=bool(progress))
     checks = Checks()
     parts: list[str] = []
     title = f"Lateral analysis of {html.escape(s.name or str(model))}"
@@ -301,6 +302,17 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                      + _table(COEFFICIENT_HEADER, [tuple(html.escape(str(c)) for c in r)
                                                    for r in coefficient_rows(coeffs)]))
 
+    # 2c. the bearings' temperatures and K, C at the thermal equilibrium (an oil system)
+    from rotordyn.report.thermal import (thermal_frames, thermal_html, thermal_text_lines,
+                                         write_thermal)
+
+    if s.thermal is not None:
+        _progress(progress, "bearing temperatures at the thermal equilibrium")
+    th, th_coeffs, th_note = thermal_frames(s, sp, pc, ay)
+    if figure_dir is not None:
+        write_thermal(th, th_coeffs, figure_dir)
+    parts.append(thermal_html(th, th_coeffs, th_note, svg, _table))
+
     # 3. Campbell; the unbalance response is computed here too, for its peaks are critical
     # speeds as well (the only ones of a heavily damped mode that never crosses 1×)
     _progress(progress, f"Campbell diagram, {sp.size} speeds")
@@ -359,6 +371,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
         text_sink += critical_text_lines(crit, shapes, rng, pc, bool(active),
                                          files=figure_dir is not None)
         text_sink += coefficient_text_lines(coeffs)
+        text_sink += thermal_text_lines(th, th_coeffs, th_note)
 
     # 4. unbalance response
     parts.append(f"<h2>4. Unbalance response</h2><p>API 684 unbalance U = 6350 W/N g·mm = "

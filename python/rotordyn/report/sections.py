@@ -361,8 +361,10 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
     """The text report's critical speeds (with their sources), the mode shape at each one
     (``critical_mode_<k>.png``, ``critical_speeds.csv``) and the bearings' coefficients over
     speed (``bearing_coefficients.csv``/``.png``) under ``outdir``, as the HTML report has
-    them. ``rng``: :class:`rotordyn.report.criteria.SpeedRange`; ``campbell``: a Campbell
-    diagram over ``rng.speeds_hz`` already computed (else computed here). Returns the lines."""
+    them; with an oil system (``[thermal]``) the bearing temperatures, power loss and K, C at
+    the thermal equilibrium (:mod:`rotordyn.report.thermal`). ``rng``:
+    :class:`rotordyn.report.criteria.SpeedRange`; ``campbell``: a Campbell diagram over
+    ``rng.speeds_hz`` already computed (else computed here). Returns the lines."""
     from pathlib import Path
 
     import matplotlib.pyplot as plt
@@ -391,7 +393,11 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
         fig = coefficient_figure(coeffs)
         fig.savefig(outdir / "bearing_coefficients.png", dpi=200, bbox_inches="tight")
         plt.close(fig)
-    return lines + coefficient_text_lines(coeffs)
+    from rotordyn.report.thermal import thermal_frames, thermal_text_lines, write_thermal
+
+    th, th_coeffs, note = thermal_frames(system, sp, pc, ay)
+    write_thermal(th, th_coeffs, outdir)
+    return lines + coefficient_text_lines(coeffs) + thermal_text_lines(th, th_coeffs, note)
 
 
 def coefficient_speeds(speeds_hz, n: int = 11) -> np.ndarray:
