@@ -25,6 +25,7 @@ import pandas as pd
 from rotordyn import analysis
 from rotordyn._common.api import af_text
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
+from rotordyn.report.tables import COEFFICIENT_HEADER, _text_table, coefficient_rows
 
 MAX_CRITICAL_SHAPES = 6  # the lowest forward critical speeds drawn (a report's usual few)
 
@@ -310,12 +311,6 @@ def api_response(system, speeds_hz, n_mc_hz: float, chamber_pressure_pa: float, 
     return u, st_ub, u_kgm, where
 
 
-def _text_table(header, rows) -> list[str]:
-    w = [max(len(str(h)), *(len(str(r[i])) for r in rows)) for i, h in enumerate(header)]
-    return ["  " + "  ".join(f"{str(c):<{w[i]}}" for i, c in enumerate(r))
-            for r in [tuple(header), *rows]]
-
-
 def critical_text_lines(crit, shapes, rng, chamber_pressure_pa: float, active: bool,
                         files: bool = True) -> list[str]:
     """The text report's lines: the critical speeds ``crit`` (:func:`critical_speed_table`)
@@ -413,22 +408,6 @@ def bearing_coefficient_frame(system, speeds_hz, chamber_pressure_pa: float, con
     return bearing_coefficients(system, coefficient_speeds(speeds_hz), chamber_pressure_pa,
                                 config_ay_m, progress=progress)
 
-
-def coefficient_rows(frame) -> list[tuple]:
-    """Table rows: bearing, speed (Hz), kxx … kyy (MN/m), cxx … cyy (kN·s/m), status."""
-    rows = []
-    for r in frame.itertuples(index=False):
-        d = r._asdict()
-        ks = [d[f"k{p}_n_per_m"] / 1e6 for p in ("xx", "xy", "yx", "yy")]
-        cs = [d[f"c{p}_n_s_per_m"] / 1e3 for p in ("xx", "xy", "yx", "yy")]
-        rows.append((d["bearing"], f"{d['speed_hz']:.4g}",
-                     *(f"{x:.4g}" if np.isfinite(x) else "n/a" for x in ks + cs), d["status"]))
-    return rows
-
-
-COEFFICIENT_HEADER = ("bearing", "speed (Hz)", "kxx (MN/m)", "kxy (MN/m)", "kyx (MN/m)",
-                      "kyy (MN/m)", "cxx (kN·s/m)", "cxy (kN·s/m)", "cyx (kN·s/m)",
-                      "cyy (kN·s/m)", "status")
 
 __all__ = ["COEFFICIENT_HEADER", "CRITICAL_COLUMNS", "CRITICAL_HEADER", "CriticalShape",
            "MAX_CRITICAL_SHAPES", "SOURCE_CAMPBELL", "SOURCE_LEAST_DAMPED", "SOURCE_PEAK", "bearing_coefficient_frame",

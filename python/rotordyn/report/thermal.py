@@ -104,7 +104,7 @@ def bearing_totals(frame) -> pd.DataFrame:
 
 def thermal_text_lines(frame, coeffs, note: str) -> list[str]:
     """The text report's thermal section (nothing without an oil system)."""
-    from rotordyn.report.sections import COEFFICIENT_HEADER, _text_table, coefficient_rows
+    from rotordyn.report.tables import COEFFICIENT_HEADER, _text_table, coefficient_rows
 
     if frame is None:
         return ["", f"bearing temperatures: {note}"] if note else []
@@ -126,7 +126,7 @@ def thermal_html(frame, coeffs, note: str, svg, table) -> str:
     inline SVG; ``table(header, rows)``: an HTML table (rotordyn.report.html's helpers)."""
     import html
 
-    from rotordyn.report.sections import COEFFICIENT_HEADER, coefficient_rows
+    from rotordyn.report.tables import COEFFICIENT_HEADER, coefficient_rows
 
     def tab(header, rows):
         return table(header, [tuple(html.escape(str(c)) for c in r) for r in rows])
