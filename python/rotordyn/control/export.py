@@ -39,6 +39,11 @@ def discretise(k: Controller, sample_time_s: float, method: str = "zoh") -> Cont
     from scipy.signal import cont2discrete
 
     check_controller(k, "controller", continuous=True)
+    if k.anti_windup_gain is not None:
+        # the continuous gain does not carry over (other states, a per-sample correction)
+        raise InputError("controller.anti_windup_gain: discretise the law without anti-windup, "
+                         "then add it to the discrete law (rotordyn.control.antiwindup."
+                         "with_anti_windup)")
     T = v.in_range("sample_time_s", sample_time_s, MIN_SAMPLE_TIME_S, MAX_SAMPLE_TIME_S)
     method = v.choice("method", method, METHODS)
     A, B, C = k.A, k.B, k.C
