@@ -173,8 +173,9 @@ def with_anti_windup(controller: Controller, tracking_rate_hz: float | None = No
     or "conditioning" (the schedule realised first, clip(ff) + u: only the law's own share
     fed back). ``gain``: L (n_k,) directly, or "hanus" (L = B D⁺); otherwise L on the law's
     slow modes with C L = ω_t (discrete 1 − e^{−ω_t T}), ω_t = 2π·``tracking_rate_hz``
-    (default :func:`law_bandwidth_hz`). The tracking rate used and the largest real part of
-    A − L C (1/s; discrete: its spectral radius) are stated in ``info``. Refused (InputError
+    (default :func:`law_bandwidth_hz`). ``info`` states the mode, the gain's origin, the
+    tracking rate (a given or Hanus gain: the slowest mode of A − L C, Hz) and the largest real
+    part of A − L C (1/s; discrete: its spectral radius). Refused (InputError
     naming the field): a stateless law (nothing winds up), C = 0, a tracking rate outside
     [1e-3, 1e6] Hz or not finite, an unknown mode or gain name, or A − L C not stable."""
     if not isinstance(controller, Controller):
@@ -210,11 +211,14 @@ def with_anti_windup(controller: Controller, tracking_rate_hz: float | None = No
                                  MAX_TRACKING_HZ)
         L = _slow_mode_gain(controller, 2 * math.pi * rate_hz)
         gain_kind = "slow modes"
-    cl = float(controller.C[0] @ L)
-    if gain is not None:  # the rate the given gain tracks at
-        rate_hz = (-math.log1p(-cl) / controller.sample_time_s if disc and cl < 1 else
-                   (math.inf if disc else cl)) / (2 * math.pi)
     lam = np.linalg.eigvals(tracking_matrix(controller, L))
+    if gain is not None:
+        # the slowest mode of A − L C, Hz (discrete |ln z|/T): how fast the law's states
+        # settle on the delivered command while limited
+        with np.errstate(divide="ignore"):
+            mags = (np.abs(np.log(lam.astype(complex))) / controller.sample_time_s if disc
+                    else np.abs(lam))
+        rate_hz = float(mags.min()) / (2 * math.pi)
     worst = float(np.abs(lam).max()) if disc else float(lam.real.max())
     if not (worst < 1 if disc else worst < 0):
         field = "gain" if gain is not None else "tracking_rate_hz"
