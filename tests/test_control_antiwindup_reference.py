@@ -3,13 +3,15 @@
 A linear plant — a 2-DOF Jeffcott rotor m r̈ + c ṙ + k r = b p_c e_y with no film, the chamber
 pressure p_c = clip(cmd) of a valve without dynamics (order 0) — closed by a PID on y, once
 with the continuous law and once with its ZOH discretisation (sample-and-hold). The reference
-is SciPy: solve_ivp (Radau, rtol 1e-10) of the same equations written here from the module
+is SciPy: solve_ivp (DOP853, rtol 1e-10) of the same equations written here from the module
 docstring of rotordyn.control.antiwindup —
 
     cmd = ff(t) + u           (back-calculation, and no anti-windup)
     cmd = clip(ff(t)) + u     (conditioning: the schedule realised first)
     ẋ = A x + B y + L (clip(cmd) − cmd)
-    x_{k+1} = A x_k + B y_k + L (clip(cmd_k) − cmd_k)   (discrete, cmd_k at the sample)
+    x_{k+1} = A x_k + B y_k + L (clip(cmd_k) − cmd_k)   (discrete, cmd_k when u_k is
+                                                        applied: at t_k, or t_k + 0.4 T
+                                                        with a computation delay)
 
 for two episodes: the law's own saturation (a 0.8 mm initial displacement against a
 ±20 kPa valve) and the schedule's (a pressure pulse to 4 p_0 on a valve that stops at 1.5 p_0).
@@ -111,43 +113,53 @@ def _reference(law, episode, t_out):
 
         atol = np.concatenate([tol["atol"], np.full(law.n_states, 1e-13)])
         sol = solve_ivp(f, (0.0, t_out[-1]), np.concatenate([y0, np.zeros(law.n_states)]),
-                        method="Radau", t_eval=t_out, rtol=1e-10, atol=atol, max_step=1e-3)
+                        method="DOP853", t_eval=t_out, rtol=1e-10, atol=atol, max_step=1e-3)
         assert sol.success, sol.message
         return sol.y[:2].T
     T = law.sample_time_s
+    tau = law.computation_delay_s  # u_k applied at t_k + tau, the correction made then
+    base = (lambda t: min(max(float(np.interp(t, tt, pp)), lo), hi)) if cond else \
+        (lambda t: float(np.interp(t, tt, pp)))
     xk = np.zeros(law.n_states)
     y = y0.copy()
     out = np.empty((t_out.size, 2))
     n = int(round(t_out[-1] / T))
-    for k in range(n):
-        t0 = k * T
-        ff0 = float(np.interp(t0, tt, pp))
-        cmd, sat, ym = command(t0, y, xk)
-        u = cmd - (min(max(ff0, lo), hi) if cond else ff0)  # held until t0 + T
-        xn = A @ xk + B @ ym
-        if L is not None:
-            xn = xn + L * (sat - cmd)
+    u_old = 0.0  # before the first application: no increment
 
-        def held(t, z):
-            ff = float(np.interp(t, tt, pp))
-            return plant(z, min(max((min(max(ff, lo), hi) if cond else ff) + u, lo), hi))
-
-        sol = solve_ivp(held, (t0, t0 + T), y, method="DOP853", dense_output=True, **tol)
+    def piece(ta, tb, y, u):
+        sol = solve_ivp(lambda t, z: plant(z, min(max(base(t) + u, lo), hi)), (ta, tb), y,
+                        method="DOP853", dense_output=True, **tol)
         assert sol.success, sol.message
-        sel = (t_out >= t0) & ((t_out < t0 + T) if k < n - 1 else (t_out <= t0 + T))
+        sel = (t_out >= ta) & ((t_out < tb) if tb < t_out[-1] else (t_out <= tb))
         if sel.any():
             out[sel] = sol.sol(t_out[sel])[:2].T
-        y, xk = sol.y[:, -1], xn
+        return sol.y[:, -1]
+
+    for k in range(n):
+        t0 = k * T
+        ym = CM @ y[:4] - OFFSET
+        u = float(C @ xk + D @ ym)
+        xn = A @ xk + B @ ym
+        if tau > 0:
+            y = piece(t0, t0 + tau, y, u_old)
+        cmd = base(t0 + tau) + u  # at the application
+        if L is not None:
+            xn = xn + L * (min(max(cmd, lo), hi) - cmd)
+        y = piece(t0 + tau, t0 + T, y, u)
+        xk, u_old = xn, u
     return out
 
 
 def _laws(discrete):
     k = discretise(LAW, T_SAMPLE) if discrete else LAW
+    if discrete == "delayed":
+        k = k.with_options(computation_delay_s=0.4 * T_SAMPLE)
     return {"none": k, "back-calculation": with_anti_windup(k),
             "conditioning": with_anti_windup(k, mode="conditioning")}
 
 
-@pytest.mark.parametrize("discrete", [False, True], ids=["continuous", "discrete"])
+@pytest.mark.parametrize("discrete", [False, True, "delayed"],
+                         ids=["continuous", "discrete", "discrete-delayed"])
 @pytest.mark.parametrize("episode", list(EPISODES))
 def test_transient_matches_an_independent_integration(episode, discrete):
     t_out = np.arange(0.0, T_END + T_SAMPLE / 2, 5 * T_SAMPLE)
