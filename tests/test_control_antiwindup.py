@@ -88,6 +88,15 @@ def test_default_gain_and_refusals():
         with_anti_windup(pid(0.0, 0.0, 1e9), gain="hanus")  # D = 0: no realisable input
     with pytest.raises(InputError, match="controller.anti_windup_gain"):
         discretise(aw, 1e-4)  # the continuous gain does not carry over
+    # the mode travels with the gain: kept by scaled(), dropped with it by with_washout()
+    cond = with_anti_windup(k, mode="conditioning")
+    assert cond.to_core(np.zeros((2, 2)), np.zeros(2)).realise_schedule
+    assert not aw.to_core(np.zeros((2, 2)), np.zeros(2)).realise_schedule
+    assert cond.scaled(2.0).anti_windup_mode == "conditioning"
+    assert float(cond.scaled(2.0).C[0] @ cond.scaled(2.0).anti_windup_gain) == pytest.approx(
+        float(k.C[0] @ cond.anti_windup_gain), rel=1e-15)
+    w = cond.with_washout(1.0)
+    assert w.anti_windup_gain is None and w.anti_windup_mode == "back-calculation"
     with pytest.raises(InputError, match="gain"):
         with_anti_windup(k, gain=[0.0, 1.0])  # A − L C: ẋ_i gains +k_i x_i, unstable
 
