@@ -63,6 +63,9 @@ class Controller:
     Shapes: A (n_k, n_k), B (n_k, n_y), C (1, n_k), D (1, n_y).
     ``noise_std``: sensor noise standard deviation(s) (m or m/s; scalar or one per signal);
     ``noise_dt_s``: the noise grid of a continuous controller (linearly interpolated).
+    ``anti_windup_gain`` (n_k,) and ``anti_windup_mode`` ("back-calculation" or
+    "conditioning"): anti-windup in the transient, continuous or discrete
+    (:func:`rotordyn.control.antiwindup.with_anti_windup`).
     """
 
     A: np.ndarray
