@@ -62,7 +62,10 @@ def show(tag, lab, law, tr, act, jx, jy, t_after, wall, clearance):
 
 def laws(sample_time):
     k = pid(1.0e9, 2.5e6, 1.0e9 / 0.02)
-    return {"continuous": k, f"discrete T = {sample_time:g} s": discretise(k, sample_time)}
+    # Tustin: the ZOH law of this PID closes an unstable loop at T ≥ 0.5 ms (max Re λ +27.6
+    # 1/s at 0.5 ms, +215 at 1 ms; Tustin −1.53 and −1.49, the continuous loop −1.56)
+    return {"continuous": k,
+            f"discrete (Tustin) T = {sample_time:g} s": discretise(k, sample_time, "tustin")}
 
 
 def part_dip(sample_time):
