@@ -135,6 +135,16 @@ def main() -> int:
     aw = with_anti_windup(pid(1.0e9, 2.5e6, 1.0e9 / 0.05))
     rd.transient(rig, 0.01, 50.0, 0.15e6, -1.85e-3, controller=aw, n_out=11,
                  actuator=Actuator(order=1, p_min_pa=0.149e6, p_max_pa=0.151e6))
+    # conditioning with the schedule beyond the valve, and a sample-and-hold law's correction
+    from rotordyn.control import PressureSchedule
+    from rotordyn.control.export import discretise
+
+    k = pid(1.0e9, 2.5e6, 1.0e9 / 0.05)
+    sched = PressureSchedule.time_table([0.0, 0.005], [0.15e6, 0.3e6])
+    for law in (with_anti_windup(k, mode="conditioning"),
+                with_anti_windup(discretise(k, 5e-4).with_options(computation_delay_s=2e-4))):
+        rd.transient(rig, 0.01, 50.0, config_ay_m=-1.85e-3, pressure=sched, controller=law,
+                     n_out=11, actuator=Actuator(order=1, p_min_pa=0.0, p_max_pa=0.2e6))
     ad = AdaptiveRejection([("journal", 0)], [50.0], [[1e-9 + 1e-9j, 1e-9]], 1.0, p0_pa=2e4)
     rd.transient(rig, 0.01, 50.0, 0.5e6, -1.85e-3, adaptive=ad, unbalances=[(6, 2e-5, 0.0)],
                  n_out=11)

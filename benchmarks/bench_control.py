@@ -4,7 +4,8 @@ Run ``python benchmarks/bench_control.py [--repeat 3] [--t-sim 0.2] [--no-scipy]
 [--laws-only | --no-laws]``.
 
 * **laws** (issue 24) — cost per right-hand side of the gain-scheduled PD and of the adaptive
-  1× command against the fixed PD on one run-up segment (goal: ≤ 20 % extra);
+  1× command against the fixed PD, and of the PID with anti-windup (back-calculation,
+  conditioning) against the same PID, on one run-up segment (goal: ≤ 20 % extra);
 
 * **closed loop** — paper rig, a_y = −1.85 mm, 50 Hz, p_c = 0.05 MPa (linearly unstable
   without control), 0.1 c disturbance, the tuned PD law + 100 Hz second-order valve, one CVODE
@@ -44,6 +45,7 @@ after (the machine is shared: figures are noisy). One BLAS/OpenMP thread.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import os
 import statistics
 import sys
@@ -166,6 +168,7 @@ def laws(rig, act, repeat):
     command against the fixed PD, on one run-up segment (30 → 60 Hz in 0.3 s, a_y = 0,
     0.5 MPa, the valve, 2e-5 kg m at disk B). Interleaved repeats, medians of CPU time."""
     from rotordyn.control.adaptive import adaptive_rejection
+    from rotordyn.control.antiwindup import with_anti_windup
     from rotordyn.control.gain_schedule import gain_schedule
     from rotordyn.control.pid import pid
 
@@ -181,30 +184,44 @@ def laws(rig, act, repeat):
     prof = SpeedProfile.ramp(30.0, 60.0, 100.0)
     kw = dict(chamber_pressure_pa=0.5e6, config_ay_m=0.0, speed=prof, actuator=act,
               unbalances=[(6, 2e-5, 0.0)], n_out=301, rtol=RTOL, atol_m=ATOL)
+    # anti-windup (§2.4): the PID with back-calculation / conditioning against the same PID
+    fpid = pid(1.0e9, 2.5e6, 1.0e9 / 0.02)
     cases = {"fixed PD": dict(controller=fixed), "scheduled PD": dict(controller=sched),
              "adaptive 1x": dict(adaptive=ad), "fixed PD + adaptive 1x":
              dict(controller=fixed, adaptive=ad),
-             "adaptive 1x γ(Ω)+σ+freeze": dict(adaptive=ad2)}
+             "adaptive 1x γ(Ω)+σ+freeze": dict(adaptive=ad2),
+             "fixed PID": dict(controller=fpid),
+             "PID + back-calculation": dict(controller=with_anti_windup(fpid)),
+             "PID + conditioning": dict(controller=with_anti_windup(fpid, mode="conditioning"))}
+    # the same with a ±2 kPa valve: saturated for most of the segment (the correction active)
+    narrow = dict(actuator=dataclasses.replace(act, p_min_pa=0.5e6 - 2e3, p_max_pa=0.5e6 + 2e3))
+    cases.update({"PID, ±2 kPa": dict(narrow, controller=fpid),
+                  "PID + back-calc., ±2 kPa": dict(narrow, controller=with_anti_windup(fpid)),
+                  "PID + cond., ±2 kPa": dict(narrow, controller=with_anti_windup(
+                      fpid, mode="conditioning"))})
+    ref = {"PID + back-calculation": "fixed PID", "PID + conditioning": "fixed PID",
+           "PID + back-calc., ±2 kPa": "PID, ±2 kPa", "PID + cond., ±2 kPa": "PID, ±2 kPa"}
     res = {name: [] for name in cases}
     kw0 = dict(kw, n_out=2)
     for _ in range(repeat):
         for name, extra in cases.items():
-            tr, wall, cpu = timed(lambda: rd.transient(rig, 0.3, **kw, **extra))
+            tr, wall, cpu = timed(lambda: rd.transient(rig, 0.3, **dict(kw, **extra)))
             assert tr.status == "ok", tr.message
             # the call's fixed costs (equilibrium, set-up): the same call over 1 ms
-            tr0, _, cpu0 = timed(lambda: rd.transient(rig, 1e-3, **kw0, **extra))
+            tr0, _, cpu0 = timed(lambda: rd.transient(rig, 1e-3, **dict(kw0, **extra)))
             res[name].append((wall, cpu, tr.stats["rhs_evals"], cpu0, tr0.stats["rhs_evals"]))
-    base = base2 = None
+    per_rhs = {}
     for name, rows in res.items():
         wall = statistics.median(r[0] for r in rows)
         cpu = statistics.median(r[1] for r in rows)
         per = statistics.median(r[1] / r[2] for r in rows)
         per2 = statistics.median((r[1] - r[3]) / (r[2] - r[4]) for r in rows)
-        base = per if base is None else base
-        base2 = per2 if base2 is None else base2
+        per_rhs[name] = (per, per2)
+        b = ref.get(name, "fixed PD")
+        base, base2 = per_rhs[b]
         print(f"[laws] {name:24s}: wall {wall:.3f} s, CPU {cpu:.3f} s, {rows[0][2]} RHS, "
-              f"{1e6 * per:.1f} µs CPU per RHS ({100 * (per / base - 1):+.1f} % vs the fixed "
-              f"PD); without the call's fixed costs {1e6 * per2:.1f} µs "
+              f"{1e6 * per:.1f} µs CPU per RHS ({100 * (per / base - 1):+.1f} % vs the {b}); "
+              f"without the call's fixed costs {1e6 * per2:.1f} µs "
               f"({100 * (per2 / base2 - 1):+.1f} %; goal <= +20 %)")
     print(f"[laws] load: {load()}")
 def robust_rows(rig, k, n_side: int, workers: int, repeat: int, cube_margins: bool = False,

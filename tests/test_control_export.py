@@ -217,3 +217,52 @@ def test_export_bad_input(lqg_law):
         export.to_c_header(export.discretise(lqg_law, 1e-4), prefix="1law")
     with pytest.raises(InputError, match="balanced"):
         lqg_law.to_control(balanced="yes")
+
+
+def test_discrete_law_with_anti_windup_json_and_c_header(tmp_path):
+    """A sample-and-hold PID with anti-windup (issue 24): the JSON carries L and the mode, the
+    C header an <prefix>_anti_windup(x, excess) to call once u[k] is applied; stepping the
+    JSON in numpy and the compiled header with the valve's clip reproduces simulate() with
+    u_range (1e-12), and the correction acts (the saturated run differs from the plain law)."""
+    from rotordyn.control.antiwindup import with_anti_windup
+    from rotordyn.control.pid import pid
+
+    kd = with_anti_windup(export.discretise(pid(1e9, 2.5e6, 5e10), 5e-4), mode="conditioning")
+    y = np.random.default_rng(3).normal(scale=2e-6, size=(300, kd.n_inputs)) + 3e-6
+    lo, hi = -1e3, 1e3
+    u = export.simulate(kd, y, (lo, hi))
+    assert np.abs(u).max() > hi  # saturated
+    plain = export.simulate(kd.with_options(anti_windup_gain=None,
+                                            anti_windup_mode="back-calculation"), y, (lo, hi))
+    assert np.abs(plain - u).max() > 0.1 * hi
+    export.to_json(kd, tmp_path / "law.json")
+    c = json.loads((tmp_path / "law.json").read_text())
+    assert c["anti_windup"]["mode"] == "conditioning"
+    A, B, C, D = (np.array(c[x]) for x in "ABCD")
+    L = np.array(c["anti_windup"]["L"])
+    assert np.array_equal(L, kd.anti_windup_gain)
+    x, uj = np.zeros(A.shape[0]), []
+    for yi in y:
+        uk = float((C @ x + D @ yi)[0])
+        uj.append(uk)
+        x = A @ x + B @ yi + L * (min(max(uk, lo), hi) - uk)
+    assert np.array_equal(np.array(uj), u)
+    cc = shutil.which("cc") or shutil.which("gcc")
+    if cc is None:
+        pytest.skip("no C compiler")
+    export.to_c_header(kd, tmp_path / "law.h", prefix="pid")
+    (tmp_path / "main.c").write_text(
+        '#include <stdio.h>\n#include "law.h"\nint main(void){double x[PID_NX]={0};'
+        'double y[PID_NY],u,d;int j;for(;;){for(j=0;j<PID_NY;++j)'
+        'if(scanf("%lf",&y[j])!=1)return 0;u=pid_step(x,y);'
+        f'd=(u<{lo!r}?{lo!r}:(u>{hi!r}?{hi!r}:u))-u;pid_anti_windup(x,d);'
+        'printf("%.17g\\n",u);}}\n')
+    exe = tmp_path / "law"
+    subprocess.run([cc, "-std=c99", "-O2", "-Wall", "-Werror", "-o", str(exe),
+                    str(tmp_path / "main.c")], check=True, capture_output=True)
+    text = "\n".join(" ".join(f"{v:.17g}" for v in r) for r in y)
+    out = subprocess.run([str(exe)], input=text, capture_output=True, text=True,
+                         check=True).stdout.split()
+    uc = np.array([float(s) for s in out])
+    assert uc.size == len(y)
+    assert np.max(np.abs(uc - u)) <= 1e-12 * np.abs(u).max()

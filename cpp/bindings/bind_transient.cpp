@@ -63,6 +63,7 @@ void bind_transient(py::module_& m) {
       .def_readwrite("sample_time", &Controller::sample_time)
       .def_readwrite("delay", &Controller::delay)
       .def_readwrite("tracking", &Controller::tracking)
+      .def_readwrite("realise_schedule", &Controller::realise_schedule)
       .def_readwrite("schedule_omega", &Controller::schedule_omega)
       .def_readwrite("schedule_law", &Controller::schedule_law)
       .def_readwrite("noise_std", &Controller::noise_std)

@@ -153,8 +153,6 @@ void validate_operation(const SpeedProfile& s, const PressureCommand& p, const A
   require(c.tracking.size() == 0 || c.tracking.size() == nk,
           shape_msg("controller.tracking", nk, 1, c.tracking.size(), 1));
   require(c.tracking.allFinite(), "controller.tracking: expected a finite anti-windup gain");
-  require(c.tracking.size() == 0 || c.sample_time == 0,
-          "controller.tracking: anti-windup is built for a continuous controller only");
   if (c.scheduled()) {
     const Eigen::Index ng = c.schedule_omega.size(), w = nk * nk + nk * ny + nk + ny;
     require(c.schedule_law.rows() == ng && c.schedule_law.cols() == w,

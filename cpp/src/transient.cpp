@@ -85,6 +85,7 @@ struct Ctx {
   bool rate_switched = false;
   int rate_mode = 0;
   bool aw = false;  // back-calculation anti-windup on the continuous controller's states
+  bool awd = false;  // the same on the discrete controller's states, at each application
   bool ad = false;         // adaptive 1× command: states [P_r, P_i] at index iad
   Eigen::Index iad = 0;
   // Gain schedule: the law's matrices at law_omega (interpolated once per new speed).
@@ -190,7 +191,9 @@ Point evaluate(const Ctx& c, double t, const double* y) {
     P.u = c.u_hold;
   }
   const Actuator& a = in.actuator;
-  P.cmd = base_command(c, t, P.omega, P.theta) + P.u;
+  const double base = base_command(c, t, P.omega, P.theta);
+  // Conditioning: the open-loop part realised first (clip(base) == base inside the limits)
+  P.cmd = (in.controller.realise_schedule ? clip(base, a.p_min, a.p_max) : base) + P.u;
   if (c.ad) {
     const double arg = in.adaptive.order * P.theta;
     P.ck = std::cos(arg);
@@ -506,6 +509,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   c.kdisc = K.enabled && K.sample_time > 0.0;
   c.nk = c.kcont ? K.n_states() : 0;
   c.aw = c.kcont && c.nk > 0 && K.tracking.size() == c.nk;
+  c.awd = c.kdisc && K.n_states() > 0 && K.tracking.size() == K.n_states();
   validate_adaptive(in.adaptive, n);
   c.ad = in.adaptive.enabled;
   c.iad = 2 * n + c.na + c.nk;
@@ -596,6 +600,21 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       c.u_hold = u;
     }
   };
+  // Discrete anti-windup: once u_k is applied at ta (the actuator state Y there), the part of
+  // the command the valve does not follow, û_k − u_k (windup_excess with the rate mode the
+  // new command gives), corrects the next state: x_{k+1} += L (û_k − u_k), untouched at 0.
+  auto condition_sample = [&](double ta) {
+    if (!c.awd) return;
+    const Point P = evaluate(c, ta, Y.data());
+    double ru = 0.0, rl = 0.0;
+    if (c.na) {
+      ru = unlimited_rate(c, P, Y.data());
+      rl = std::isfinite(in.actuator.rate_limit)
+               ? clip(ru, -in.actuator.rate_limit, in.actuator.rate_limit) : ru;
+    }
+    const double d = windup_excess(c, P, Y.data(), ru, rl);
+    if (d != 0.0) c.xk += K.tracking * d;
+  };
   if (c.kdisc) sample(0.0);
   if (c.na) {
     // Actuator at rest at the saturated initial command.
@@ -612,6 +631,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       c.rate_mode = rate_mode_of(unlimited_rate(c, evaluate(c, 0.0, Y.data()), Y.data()),
                                  in.actuator.rate_limit);
   }
+  if (c.kdisc && !delayed) condition_sample(0.0);  // u_0 applied at t = 0
 
   check(CVodeSetErrHandlerFn(mem, cvode_detail::store_error<Ctx>, &c), "CVodeSetErrHandlerFn");
   check(CVodeInit(mem, rhs, 0.0, y), "CVodeInit");
@@ -729,12 +749,14 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
       if (apply) {
         c.u_hold = c.u_next;
         c.pending = false;
+        condition_sample(ts);  // before the next sample reads x_{k+1}
         if (ts == t_sample(k_next)) {  // the next sample at the same instant
           sample(ts);
           ++k_next;
         }
       } else {
         sample(ts);
+        if (!delayed) condition_sample(ts);  // delayed: at its application
         ++k_next;
       }
       if (c.rate_switched)  // the held command jumped

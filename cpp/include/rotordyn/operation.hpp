@@ -73,11 +73,19 @@ struct Controller {
   /// t_k + delay (the controller's computation time); 0 is applied at t_k. Before the first
   /// application the command increment is 0.
   double delay = 0.0;
-  /// (n_k,) back-calculation anti-windup gain L (continuous only; empty: none):
-  /// ẋ = A x + B y_m + L (û − u), û − u the part of the command the valve does not follow
-  /// (the saturated minus the requested command; while rate limited, the command the valve
-  /// follows at ±rate_limit minus the requested one). Exactly 0 inside the limits.
+  /// (n_k,) back-calculation anti-windup gain L (empty: none): continuous
+  /// ẋ = A x + B y_m + L (û − u), discrete x_{k+1} = A x_k + B y_k + L (û_k − u_k) with
+  /// û_k − u_k taken when u_k is applied (at t_k + delay); û − u the part of the command
+  /// the valve does not follow (the saturated minus the requested command; while rate
+  /// limited, the command the valve follows at ±rate_limit minus the requested one).
+  /// Exactly 0 inside the limits.
   Eigen::VectorXd tracking;
+  /// Conditioning (the realisable reference, Hanus): the open-loop part of the command (the
+  /// base p_c, its table and harmonic) is clipped to [p_min, p_max] before the controller
+  /// output is added, cmd = clip(base) + u (+ adaptive), so the saturation û − u fed back
+  /// through `tracking` is the controller's own share only. Inside the limits clip(base) =
+  /// base exactly: the command is unchanged bit for bit.
+  bool realise_schedule = false;
   /// Gain schedule over the speed (empty: the fixed law A, B, C, D): at Ω(t) the law's
   /// matrices are interpolated piecewise linearly, element by element, between grid points
   /// (constant outside; the caller refuses a run leaving the grid). Row g of schedule_law

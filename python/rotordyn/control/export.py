@@ -39,6 +39,11 @@ def discretise(k: Controller, sample_time_s: float, method: str = "zoh") -> Cont
     from scipy.signal import cont2discrete
 
     check_controller(k, "controller", continuous=True)
+    if k.anti_windup_gain is not None:
+        # the continuous gain does not carry over (other states, a per-sample correction)
+        raise InputError("controller.anti_windup_gain: discretise the law without anti-windup, "
+                         "then add it to the discrete law (rotordyn.control.antiwindup."
+                         "with_anti_windup)")
     T = v.in_range("sample_time_s", sample_time_s, MIN_SAMPLE_TIME_S, MAX_SAMPLE_TIME_S)
     method = v.choice("method", method, METHODS)
     A, B, C = k.A, k.B, k.C
@@ -89,7 +94,20 @@ def coefficients(k: Controller) -> dict:
                        "meaning": "command increment added to the operating point's chamber "
                                   "pressure"},
             "n_states": k.n_states, "n_inputs": k.n_inputs,
-            "A": k.A.tolist(), "B": k.B.tolist(), "C": k.C.tolist(), "D": k.D.tolist()}
+            "A": k.A.tolist(), "B": k.B.tolist(), "C": k.C.tolist(), "D": k.D.tolist(),
+            **_anti_windup(k)}
+
+
+def _anti_windup(k: Controller) -> dict:
+    """The law's anti-windup (rotordyn.control.antiwindup), if any, as JSON-ready fields."""
+    if k.anti_windup_gain is None:
+        return {}
+    return {"anti_windup": {
+        "mode": k.anti_windup_mode, "L": k.anti_windup_gain.tolist(),
+        "equations": "once u[k] is applied: x[k+1] += L (u_delivered[k] - u[k]), u_delivered "
+                     "- u the part of the command the valve does not follow (0 inside its "
+                     "limits)" + ("; the command is formed as clip(schedule, p_min, p_max) + "
+                                  "u[k]" if k.anti_windup_mode == "conditioning" else "")}}
 
 
 def to_json(k: Controller, path=None) -> str:
@@ -121,6 +139,21 @@ def to_c_header(k: Controller, path=None, *, prefix: str = "rotordyn_law") -> st
     inputs = "\n".join(f" *   y[{i}] = {s['name']} ({s['unit']})"
                        for i, s in enumerate(c["inputs"]))
     arrays = "".join(_c_array(f"{prefix}_{m}", getattr(k, m)) for m in "ABCD")
+    aw = ""
+    if k.anti_windup_gain is not None:
+        cond = (" The command is formed as clip(schedule, p_min, p_max) + u[k] (conditioning)."
+                if k.anti_windup_mode == "conditioning" else "")
+        aw = (_c_array(f"{prefix}_L", k.anti_windup_gain) + f"""
+/* Anti-windup ({k.anti_windup_mode}): once u[k] is applied, call with the part of the
+ * command the valve does not follow, excess = u_delivered[k] - u[k] (0 inside its limits;
+ * e.g. clip(cmd, p_min, p_max) - cmd): x[k+1] += L excess.{cond} */
+static inline void {prefix}_anti_windup(double x[], double excess)
+{{
+    int i;
+    if (excess == 0.0) return;
+    for (i = 0; i < {P}_NX; ++i) x[i] += {prefix}_L[i] * excess;
+}}
+""")
     text = f"""/* Discrete control law "{k.name}" exported by rotordyn {__version__} ({FORMAT}).
  * Sample time {k.sample_time_s!r} s. Every sample:
  *   u[k] = C x[k] + D y[k]   (chamber-pressure command increment, Pa; hold for one sample)
@@ -137,7 +170,7 @@ def to_c_header(k: Controller, path=None, *, prefix: str = "rotordyn_law") -> st
 #define {P}_SAMPLE_TIME_S {k.sample_time_s!r}
 #define {P}_COMPUTATION_DELAY_S {k.computation_delay_s!r}
 
-{arrays}
+{arrays}{aw}
 /* Returns u[k] for the measurements y[k]; advances the state x[k] -> x[k+1]. */
 static inline double {prefix}_step(double x[], const double y[])
 {{
@@ -164,10 +197,14 @@ static inline double {prefix}_step(double x[], const double y[])
     return text
 
 
-def simulate(k: Controller, y: np.ndarray) -> np.ndarray:
+def simulate(k: Controller, y: np.ndarray, u_range=None) -> np.ndarray:
     """u[k] of the discrete law for measurements ``y`` (n_k, n_y) from x = 0 (reference for
-    the exported coefficients)."""
+    the exported coefficients). ``u_range`` (lo, hi), Pa: the increment the valve delivers
+    around a constant operating point, clip(u, lo, hi); with the law's anti-windup the state
+    takes x[k+1] += L (clip(u[k]) − u[k]). The requested u[k] is returned."""
     check_controller(k)
+    lo, hi = (-np.inf, np.inf) if u_range is None else v.bounds("u_range", u_range)
+    L = k.anti_windup_gain
     if not k.discrete:
         raise InputError("controller.sample_time_s: expected a discrete law")
     y = v.matrix("y", y)
@@ -178,6 +215,9 @@ def simulate(k: Controller, y: np.ndarray) -> np.ndarray:
     for i, yi in enumerate(y):
         u[i] = (k.C @ x + k.D @ yi)[0]
         x = k.A @ x + k.B @ yi
+        d = min(max(u[i], lo), hi) - u[i]
+        if L is not None and d != 0.0:
+            x = x + L * d
     if not np.all(np.isfinite(u)):
         raise InputError("y: the law's output is not finite (an unstable law or huge inputs)")
     return u

@@ -103,7 +103,8 @@ def law_at_speed(controller: Controller, speed_hz: float) -> Controller:
     C = row[o[2]:o[3]].reshape((1, nk), order="F")
     D = row[o[3]:o[4]].reshape((1, ny), order="F")
     return controller.with_options(A=A, B=B, C=C, D=D, schedule_speed_hz=None,
-                                   schedule_law=None, anti_windup_gain=None)
+                                   schedule_law=None, anti_windup_gain=None,
+                                   anti_windup_mode="back-calculation")
 
 
 @dataclass(frozen=True)

@@ -34,7 +34,14 @@ def _noise_std(value, ny):
 
 
 _OPTIONS = ("sample_time_s", "noise_std", "noise_dt_s", "seed", "name", "info",
-            "computation_delay_s", "anti_windup_gain", "schedule_speed_hz", "schedule_law")
+            "computation_delay_s", "anti_windup_gain", "anti_windup_mode", "schedule_speed_hz",
+            "schedule_law")
+
+# How the valve's saturation reaches the law's states (rotordyn.control.antiwindup):
+# "back-calculation" feeds the whole undelivered command back; "conditioning" first clips the
+# open-loop part of the command (the schedule) to the valve's range, so only the law's own
+# share of the saturation is fed back.
+ANTI_WINDUP_MODES = ("back-calculation", "conditioning")
 
 
 def _options(kw):
@@ -56,6 +63,9 @@ class Controller:
     Shapes: A (n_k, n_k), B (n_k, n_y), C (1, n_k), D (1, n_y).
     ``noise_std``: sensor noise standard deviation(s) (m or m/s; scalar or one per signal);
     ``noise_dt_s``: the noise grid of a continuous controller (linearly interpolated).
+    ``anti_windup_gain`` (n_k,) and ``anti_windup_mode`` ("back-calculation" or
+    "conditioning"): anti-windup in the transient, continuous or discrete
+    (:func:`rotordyn.control.antiwindup.with_anti_windup`).
     """
 
     A: np.ndarray
@@ -71,6 +81,7 @@ class Controller:
     info: dict = field(default_factory=dict, compare=False)
     computation_delay_s: float = 0.0
     anti_windup_gain: object = None
+    anti_windup_mode: str = "back-calculation"
     schedule_speed_hz: object = None
     schedule_law: object = None
 
@@ -118,10 +129,12 @@ class Controller:
         object.__setattr__(self, "computation_delay_s", delay)
         if self.anti_windup_gain is not None:
             L = v.vector("controller.anti_windup_gain", self.anti_windup_gain, nk)
-            if st is not None:
-                raise InputError("controller.anti_windup_gain: anti-windup is built for a "
-                                 "continuous law only (sample_time_s None)")
             object.__setattr__(self, "anti_windup_gain", L)
+        mode = v.choice("controller.anti_windup_mode", self.anti_windup_mode, ANTI_WINDUP_MODES)
+        if mode != "back-calculation" and self.anti_windup_gain is None:
+            raise InputError(f"controller.anti_windup_mode: {mode!r} needs an anti-windup gain "
+                             f"(controller.anti_windup_gain; rotordyn.control.antiwindup."
+                             f"with_anti_windup)")
         if (self.schedule_speed_hz is None) != (self.schedule_law is None):
             raise InputError("controller.schedule_speed_hz/schedule_law: give both (a gain "
                              "schedule, rotordyn.control.gain_schedule) or neither")
@@ -220,6 +233,7 @@ class Controller:
         return Controller(self.A, self.B, gain * self.C, gain * self.D, self.measurements,
                           self.sample_time_s, self.noise_std, self.noise_dt_s, self.seed,
                           self.name, dict(self.info), self.computation_delay_s, L,
+                          self.anti_windup_mode if L is not None else "back-calculation",
                           self.schedule_speed_hz,
                           None if self.schedule_law is None else self._scaled_law(gain))
 
@@ -235,6 +249,7 @@ class Controller:
                  noise_dt_s=self.noise_dt_s, seed=self.seed, name=self.name, info=self.info,
                  computation_delay_s=self.computation_delay_s,
                  anti_windup_gain=self.anti_windup_gain,
+                 anti_windup_mode=self.anti_windup_mode,
                  schedule_speed_hz=self.schedule_speed_hz, schedule_law=self.schedule_law)
         bad = sorted(set(kw) - set(d))
         if bad:
@@ -259,6 +274,7 @@ class Controller:
         info = dict(self.info, washout_hz=corner_hz)
         return self.with_options(A=A, B=B, C=C, D=self.D.copy(), info=info,
                                  name=self.name + "+washout", anti_windup_gain=None,
+                                 anti_windup_mode="back-calculation",
                                  schedule_speed_hz=None, schedule_law=None)
 
     def to_core(self, Cm: np.ndarray, offset: np.ndarray):
@@ -275,6 +291,7 @@ class Controller:
         k.delay = float(self.computation_delay_s)
         if self.anti_windup_gain is not None:
             k.tracking = self.anti_windup_gain
+            k.realise_schedule = self.anti_windup_mode == "conditioning"
         if self.schedule_speed_hz is not None:
             k.schedule_omega = 2 * np.pi * self.schedule_speed_hz
             k.schedule_law = self.schedule_law
