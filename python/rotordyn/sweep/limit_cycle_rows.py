@@ -22,14 +22,23 @@ Rows (one schema, ``record`` tells them apart):
   point's equilibrium, from the threshold scan), ``coexists_with_stable_equilibrium``,
   ``bistable`` (the point's equilibrium is stable and a stable cycle exists there). A point
   without a cycle is one row with status ``no_cycle`` (every branch of the line ended at a
-  bound, a Hopf point or a rub, or the line has no Hopf point) or ``failed`` (a branch did
-  not start or stopped early, or the shooting at the point failed; message says which).
+  bound beyond the grid, a Hopf point or a rub, or the line has no Hopf point) or
+  ``failed`` (a branch did not start, stopped early or left its bounds short of the grid's
+  end value, or the shooting at the point failed; message says which).
+
+Options (docs/nonlinear.md): the ``hopf`` analysis's, and the shooting's ``rtol``, ``tol``,
+``sensitivity_rtol``, ``n_out``; the continuation's ``ds``, ``ds_max``, ``max_points``,
+``newton`` (its correctors only; the cycle at each grid value is shot by Newton with
+sensitivities); ``start_amplitude``, ``distance``, ``station``. ``tol`` is the shooting's:
+the threshold scan, crossings and l1 of the hopf rows keep the equilibrium's default
+tolerance, so they equal a ``hopf`` sweep's rows.
 
 Each line pins the chunk's fresh solver for the analyses it calls (no state from earlier
 chunks), so rows do not depend on the worker."""
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import math
 
@@ -55,7 +64,7 @@ CYCLE_COLUMNS = ("cycle", "bearing", "amplitude_m", "amplitude_c", "period_s",
 NATURAL_ENDS = ("bound", "hopf", "rub", "equilibrium")
 #: defaults of the options (docs/nonlinear.md)
 DEFAULTS = {"rtol": 1e-7, "tol": 1e-6, "ds": 0.05, "ds_max": 0.2, "max_points": 60,
-            "n_out": 1001, "start_amplitude": 0.08}
+            "n_out": 1001, "start_amplitude": 0.08, "newton": "sensitivities"}
 
 
 def semi_major_axis(x, y) -> float:
@@ -111,6 +120,7 @@ class _Line:
         self.tol = float(o.get("tol", DEFAULTS["tol"]))
         self.srtol = o.get("sensitivity_rtol")
         self.n_out = int(o.get("n_out", DEFAULTS["n_out"]))
+        self.newton = str(o.get("newton", DEFAULTS["newton"]))
 
     def operating(self, value):
         p = dict(self.p0)
@@ -130,19 +140,27 @@ def _branch(job, line, hrow, span, ys):
     ``hrow``. The first cycle is shot from the leading-order cycle at the distance from the
     Hopf point where its amplitude is ``start_amplitude`` of the clearance (at most 5 % of
     the line's span; ``distance`` × span if given), on the Hopf result's cycle side, else on
-    the other; it is continued away from the Hopf point within the line's range widened by
-    5 % (so that the line's end values are bracketed by branch points) and back towards the
-    Hopf point (folds close to it: the local normal form holds only for small cycles). When
-    no leading-order start converges (the normal form fails at once on a cavitated film),
-    the cycle a transient settles on at the unstable grid value nearest the Hopf point,
-    continued both ways."""
+    the other; it is continued both ways (each with ``max_points``: on a cavitated film
+    the parameter does not tell which way the cycles grow) within the line's range widened
+    by max(5 %, 1.5 ds_max) of its span (the continuation's param_scale is the span, so the
+    step out of the bounds starts beyond the end value and the end values are bracketed
+    by branch points). When no leading-order start converges (the normal form fails at
+    once on a cavitated film), the cycle a transient settles on at the unstable grid value
+    nearest the Hopf point, continued both ways."""
     o = job.options
     f, pc, ay = line.operating(hrow["value"])
     h = hopf(line.system, line.vary, at=hrow["value"], speed_hz=f, chamber_pressure_pa=pc,
              config_ay_m=ay, fd_step=float(o.get("fd_step", FD_STEP)))
     if not h.ok:
         return h, [], f"the Hopf point at {hrow['value']:.6g}: {h.status}: {h.message}"
-    lo, hi = min(line.xs) - 0.05 * span, max(line.xs) + 0.05 * span
+    ds = float(o.get("ds", DEFAULTS["ds"]))
+    ds_max = max(float(o.get("ds_max", DEFAULTS["ds_max"])), ds)
+    # the continuation drops the first point outside its bounds, and one step moves the
+    # parameter by up to ds_max × param_scale (the tangent has unit length in the scaled
+    # units; param_scale = the line's span): bounds wider than the grid by 1.5 such steps
+    # keep a branch point beyond each end value, so the end values are bracketed
+    margin = max(0.05, 1.5 * ds_max) * span
+    lo, hi = min(line.xs) - margin, max(line.xs) + margin
     if line.vary == "speed_hz" and min(line.xs) > 0:
         lo = max(lo, 0.5 * min(line.xs))
     if "distance" in o:
@@ -178,17 +196,16 @@ def _branch(job, line, hrow, span, ys):
         # the first step no longer than half the first cycle (scaled by the clearance): a
         # longer predictor jumps across the equilibrium onto the same family half a period
         # on, which reads as the Hopf end; the step then grows ×1.5 per easy corrector
-        ds = float(o.get("ds", DEFAULTS["ds"]))
         a0 = max(c0.amplitude(b) for b in range(c0.journal_x_m.shape[1])) / c0.length_scale_m
         ds0 = min(ds, max(0.5 * a0, 2e-3))
         kw = dict(ds=ds0, ds_min=min(1e-3, 0.5 * ds0),
-                  ds_max=max(float(o.get("ds_max", DEFAULTS["ds_max"])), ds),
-                  rtol=line.rtol, tol=line.tol, sensitivity_rtol=line.srtol, n_out=101)
+                  ds_max=ds_max, param_scale=span, rtol=line.rtol, tol=line.tol,
+                  sensitivity_rtol=line.srtol, n_out=101, newton=line.newton)
         mp = int(o.get("max_points", DEFAULTS["max_points"]))
         out = []
-        for direction, m in ((sgn, mp), (-sgn, mp if settled else max(2, mp // 4))):
+        for direction in (sgn, -sgn):
             br = continuation(line.system, line.vary, (lo, hi), c0, direction=direction,
-                              max_points=m, **kw)
+                              max_points=mp, **kw)
             if not br.ok:
                 msgs.append(f"continuation: {br.status}: {br.message}")
                 break
@@ -256,10 +273,22 @@ def _starts(h, br, g, n):
     return out
 
 
+def _short_of_the_end(br, xs) -> bool:
+    """Whether the branch, stopped at a bound, has its last point inside the grid's range
+    on the side it was heading to (the grid values beyond it then are not bracketed)."""
+    p = float(br.parameter[-1])
+    up = br.tangent_p[-1] > 0 if len(br) < 2 else br.parameter[-1] > br.parameter[-2]
+    return p < max(xs) if up else p > min(xs)
+
+
 def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
     """The rows of the line [lo, hi) (module docstring)."""
     hrows, scan = [], {}
-    hopf_line(job, variants, chunk_id, lo, hi, hrows, scan)
+    # the hopf rows without the shooting's ``tol``: the threshold scan, the crossings and
+    # l1 read ``tol`` as the equilibrium's tolerance (default 1e-10, as in a hopf sweep)
+    hjob = copy.copy(job)
+    hjob.options = {k: x for k, x in job.options.items() if k != "tol"}
+    hopf_line(hjob, variants, chunk_id, lo, hi, hrows, scan)
     nan_cols = {c: math.nan for c in CYCLE_COLUMNS}
     nan_cols.update(cycle=None, bearing=None, critical_type=None, stable=None,
                     equilibrium_stable=None, coexists_with_stable_equilibrium=None,
@@ -312,6 +341,10 @@ def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
                 problems.append(f"crossing {hr['crossing']}: the branch stopped early "
                                 f"({br.stop}: {br.message}) at {vary} = "
                                 f"{br.parameter[-1]:.6g}")
+            elif br.stop == "bound" and len(br) and _short_of_the_end(br, xs):
+                problems.append(f"crossing {hr['crossing']}: the branch left its bounds "
+                                f"after {vary} = {br.parameter[-1]:.6g}, short of the "
+                                "grid's end value (not bracketed)")
             branches.append((hcols, h, br))
 
     n = asm.n

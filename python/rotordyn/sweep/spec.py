@@ -133,7 +133,8 @@ OPTIONS["limit_cycle"] = {**OPTIONS["hopf"], "station": _opt_int(0, 100000),
                           "ds": _opt_range(0.0, 10.0), "ds_max": _opt_range(0.0, 10.0),
                           "max_points": _opt_int(2, 10000), "n_out": _opt_int(8, 100000),
                           "distance": _opt_range(0.0, 0.5),
-                          "start_amplitude": _opt_range(0.0, 0.9)}
+                          "start_amplitude": _opt_range(0.0, 0.9),
+                          "newton": _opt_choice("sensitivities", "broyden")}
 REQUIRED["limit_cycle"] = ("vary",)
 
 
