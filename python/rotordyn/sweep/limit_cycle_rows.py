@@ -251,8 +251,10 @@ def _settled_cycle(line, h, ys):
 
 def _starts(h, br, g, n):
     """Starts for the cycle at grid value g from every segment of the branch ``br`` whose
-    ends bracket g: ("branch", (r, v, period)) interpolated linearly between the two points,
-    or ("hopf", None) between the last point and the Hopf point the branch ended at."""
+    ends bracket g: ("branch", [(r, v, period), …]) interpolated linearly between the two
+    points, then the nearer point itself (the interpolation of two large orbits can close
+    the film), or ("hopf", None) between the last point and the Hopf point the branch
+    ended at."""
     P = list(br.parameter)
     X = [(np.concatenate([o.r[0], o.v[0]]), o.period_s) for o in br.orbits]
     if br.stop in ("hopf", "equilibrium") and P:
@@ -269,8 +271,43 @@ def _starts(h, br, g, n):
         w = (g - a) / (b - a)
         x = (1 - w) * X[i][0] + w * X[i + 1][0]
         T = (1 - w) * X[i][1] + w * X[i + 1][1]
-        out.append(("branch", (x[:n], x[n:], T)))
+        near = X[i] if w <= 0.5 else X[i + 1]
+        out.append(("branch", [(x[:n], x[n:], T), (near[0][:n], near[0][n:], near[1])]))
     return out
+
+
+def _shoot(line, h, g, how, starts):
+    """(the converged cycle at g or None, failure messages) from the starts of one
+    segment, tried in order."""
+    if how == "hopf":
+        starts = [None]
+    msgs = []
+    for k, st in enumerate(starts):
+        what = ("the leading-order cycle" if how == "hopf" else
+                "the branch interpolated" if k == 0 else "the nearer branch point")
+        try:
+            o = hopf_cycle(line.system, h, g, rtol=line.rtol, tol=line.tol,
+                           n_out=line.n_out, sensitivity_rtol=line.srtol) \
+                if how == "hopf" else line.shoot(g, *st)
+        except (RotordynError, ArithmeticError, ValueError) as exc:
+            msgs.append(f"shooting from {what}: {type(exc).__name__}: {exc}")
+            continue
+        if o.ok:
+            return o, msgs
+        msgs.append(f"shooting from {what}: {o.status}: {o.message}")
+    return None, msgs
+
+
+def _same(a, b, tol, clearance) -> bool:
+    """Whether two cycles at one grid value are one (reached from two segments): amplitude
+    within max(1e-4 relative, 10 tol × clearance) and period within max(1e-5, 10 tol)
+    relative (tol the shooting's): one cycle converged from two starts differs by about the
+    tolerance (measured on the rig at tol 1e-4: 1.1e-4 c in amplitude, 2.5e-5 in the
+    period), two cycles of a fold by far more except right at the fold."""
+    da = abs(a["amplitude_m"] - b["amplitude_m"])
+    dT = abs(a["period_s"] - b["period_s"])
+    return (da <= max(1e-4 * b["amplitude_m"], 10 * tol * clearance) and
+            dT <= max(1e-5, 10 * tol) * b["period_s"])
 
 
 def _short_of_the_end(br, xs) -> bool:
@@ -358,22 +395,13 @@ def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
         f = line.operating(g)[0]
         found, failed = [], []
         for hcols, h, br in branches:
-            for how, st in _starts(h, br, g, n):
-                try:
-                    o = hopf_cycle(line.system, h, g, rtol=line.rtol, tol=line.tol,
-                                   n_out=line.n_out, sensitivity_rtol=line.srtol) \
-                        if how == "hopf" else line.shoot(g, *st)
-                except (RotordynError, ArithmeticError, ValueError) as exc:
-                    failed.append((hcols, f"{type(exc).__name__}: {exc}"))
-                    continue
-                if not o.ok:
-                    failed.append((hcols, f"shooting from the branch: {o.status}: "
-                                          f"{o.message}"))
+            for how, starts in _starts(h, br, g, n):
+                o, msgs = _shoot(line, h, g, how, starts)
+                if o is None:
+                    failed.append((hcols, "; ".join(msgs)))
                     continue
                 cols = _cycle_columns(o, C, clearance, f)
-                if any(abs(c["period_s"] - cols["period_s"]) <= 1e-5 * cols["period_s"] and
-                       abs(c["amplitude_m"] - cols["amplitude_m"]) <= 1e-4 *
-                       max(cols["amplitude_m"], 1e-3 * clearance) for _, c in found):
+                if any(_same(c, cols, line.tol, clearance) for _, c in found):
                     continue  # the same cycle reached from two segments
                 found.append((hcols, cols))
         found.sort(key=lambda t: t[1]["amplitude_m"])
