@@ -232,3 +232,41 @@ def test_bad_limit_cycle_specs_name_the_field(tmp_path):
         SweepSpec.from_toml(_spec(tmp_path, [121.0, 127.0], extra='newton = "secant"'))
     spec = SweepSpec.from_toml(_spec(tmp_path, [121.0, 127.0], extra="station = 3"))
     assert spec.line_axis == "speed_hz" and spec.chunk_bounds() == [(0, 2)]
+
+
+def test_starts_beyond_a_branch_end_at_another_hopf_point():
+    """Which start a grid value beyond a branch's last point gets (measured case: the rig at
+    a_y = −2.0 mm, whose branch born at the Hopf point 59.5 kPa grows to 0.93 c and shrinks
+    again onto the equilibrium near −4 kPa; the first version shot 0–15 kPa from the leading
+    order of the 59.5 kPa point, which closes the film, and wrote failed rows). A branch
+    back at its own Hopf point: the leading order there, on the cycle side only; a branch
+    ending at another Hopf point: the last point's cycle, only between it and that end."""
+    from types import SimpleNamespace as NS
+
+    import numpy as np
+
+    from rotordyn.sweep.limit_cycle_rows import _starts
+
+    n = 2
+    orbit = [NS(r=np.full((3, n), float(k)), v=np.zeros((3, n)), period_s=0.04 + k)
+             for k in range(3)]
+    h = NS(value=60.0, cycle_side="below")
+
+    def branch(p, stop, end):
+        return NS(parameter=np.array(p), orbits=orbit, stop=stop,
+                  bifurcations=({"kind": "hopf", "parameter": end},))
+
+    far = branch([59.0, 30.0, -3.0], "hopf", -4.0)   # span 80: the end 64 from h
+    assert [k for k, _ in _starts(h, far, 10.0, n, 80.0)] == ["branch"]  # one segment
+    assert _starts(h, far, -3.5, n, 80.0)[0][0] == "branch"   # beyond the last point
+    (how, st), = _starts(h, far, -3.5, n, 80.0)
+    assert len(st) == 1 and st[0][2] == orbit[-1].period_s     # the last point's cycle
+    assert _starts(h, far, -5.0, n, 80.0) == []               # beyond the end: none
+    back = branch([50.0, 55.0, 59.0], "hopf", 59.9)           # back at its own point
+    assert [k for k, _ in _starts(h, back, 59.5, n, 80.0)] == ["hopf"]
+    assert _starts(h, back, 60.5, n, 80.0) == []    # beyond the Hopf point
+    assert _starts(NS(value=60.0, cycle_side="above"), back, 59.5, n, 80.0) == []  # side
+    assert [k for k, _ in _starts(h, back, 52.0, n, 80.0)] == ["branch"]
+    (how, st), = _starts(h, back, 52.0, n, 80.0)
+    assert len(st) == 2  # interpolated, then the nearer point
+    assert np.allclose(st[0][0], 0.4) and np.allclose(st[1][0], 0.0)  # w = 2/5; point 0

@@ -249,30 +249,39 @@ def _settled_cycle(line, h, ys):
     return o, (1 if h.value > xs[k] else -1)
 
 
-def _starts(h, br, g, n):
+def _starts(h, br, g, n, span):
     """Starts for the cycle at grid value g from every segment of the branch ``br`` whose
     ends bracket g: ("branch", [(r, v, period), …]) interpolated linearly between the two
     points, then the nearer point itself (the interpolation of two large orbits can close
-    the film), or ("hopf", None) between the last point and the Hopf point the branch
-    ended at."""
+    the film). Beyond the last point of a branch that ended on an equilibrium (``hopf``: the
+    end estimated by the continuation; ``equilibrium``: the last point, a cycle below 1 % of
+    the clearance), when the end is the branch's own Hopf point ``h`` (within 5 % of the
+    line's span): ("hopf", None), the leading-order cycle of ``h`` on its cycle side; when
+    the branch ended at another Hopf point of the line: the last point's cycle (the
+    leading order of ``h`` does not hold there: on the rig it closes the film)."""
     P = list(br.parameter)
     X = [(np.concatenate([o.r[0], o.v[0]]), o.period_s) for o in br.orbits]
-    if br.stop in ("hopf", "equilibrium") and P:
-        P.append(h.value)
     out = []
     for i in range(len(P) - 1):
         a, b = P[i], P[i + 1]
         if not (min(a, b) <= g <= max(a, b)) or a == b or (g == b and i + 2 < len(P)):
-            continue
-        if i + 1 == len(X):
-            if (g - h.value > 0) == (h.cycle_side == "above") and g != h.value:
-                out.append(("hopf", None))
             continue
         w = (g - a) / (b - a)
         x = (1 - w) * X[i][0] + w * X[i + 1][0]
         T = (1 - w) * X[i][1] + w * X[i + 1][1]
         near = X[i] if w <= 0.5 else X[i + 1]
         out.append(("branch", [(x[:n], x[n:], T), (near[0][:n], near[0][n:], near[1])]))
+    if not P or br.stop not in ("hopf", "equilibrium"):
+        return out
+    bif = br.bifurcations[-1] if br.bifurcations else {}
+    end = float(bif["parameter"]) if br.stop == "hopf" and bif.get("kind") == "hopf" \
+        else P[-1]
+    if abs(end - h.value) <= 0.05 * span:  # back at its own Hopf point
+        if min(P[-1], h.value) <= g <= max(P[-1], h.value) and g not in (P[-1], h.value) \
+                and (g > h.value) == (h.cycle_side == "above"):
+            out.append(("hopf", None))
+    elif min(P[-1], end) <= g <= max(P[-1], end) and g != P[-1]:
+        out.append(("branch", [(X[-1][0][:n], X[-1][0][n:], X[-1][1])]))
     return out
 
 
@@ -395,7 +404,7 @@ def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
         f = line.operating(g)[0]
         found, failed = [], []
         for hcols, h, br in branches:
-            for how, starts in _starts(h, br, g, n):
+            for how, starts in _starts(h, br, g, n, span):
                 o, msgs = _shoot(line, h, g, how, starts)
                 if o is None:
                     failed.append((hcols, "; ".join(msgs)))
