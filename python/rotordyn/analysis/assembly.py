@@ -302,3 +302,16 @@ def assembled(system: System) -> Assembled:
             cache.pop(next(iter(cache)))
         hit = cache[key] = Assembled(system)
     return hit
+
+
+def pin_assembled(asm: Assembled) -> None:
+    """Make ``asm`` this thread's cached ``Assembled`` for ``asm.system`` (sweeps: the
+    analyses called by a chunk then use the chunk's own fresh solver, so their warm starts
+    never depend on what the thread solved for an earlier chunk)."""
+    cache = getattr(_local, "cache", None)
+    if cache is None:
+        cache = _local.cache = {}
+    cache.pop(asm.system, None)
+    if len(cache) >= 8:
+        cache.pop(next(iter(cache)))
+    cache[asm.system] = asm

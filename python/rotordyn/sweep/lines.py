@@ -187,7 +187,8 @@ def unbalance_line(job, variants, lo, hi, at, asms):
 
 def threshold_line_rows(job, variants, chunk_id, lo, hi, rows, scan=None):
     """:func:`threshold_line` as one dict per row appended to ``rows`` (each with its point's
-    identity columns), for analyses that build on the crossings row by row (``hopf``)."""
+    identity columns), for analyses that build on the crossings row by row (``hopf``,
+    ``limit_cycle``)."""
     from rotordyn.sweep.columns import identity
 
     asms = [None] * (hi - lo)

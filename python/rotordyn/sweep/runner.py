@@ -47,6 +47,12 @@ UNITS = {
     "journal_theta_y_rad": ("rad", "journal rotation about y relative to the housing"),
     "h_min_z_m": ("m", "axial position of the minimum film (0: mid-plane)"),
 }
+UNITS.update({  # the limit_cycle analysis
+    "amplitude_m": ("m", "limit cycle's semi-major axis (largest distance from its mean)"),
+    "amplitude_c": ("1", "limit cycle's semi-major axis / clearance"),
+    "period_s": ("s", "limit cycle's period"),
+    "max_multiplier": ("1", "modulus of the largest non-trivial Floquet multiplier"),
+})
 
 
 def read_dataset(out):

@@ -35,6 +35,7 @@ DEFAULTS = {"speed_hz": 50.0, "chamber_pressure_pa": 0.0}
 ANALYSES = ("equilibrium", "thermal", "stability", "campbell", "threshold", "boundary",
             "unbalance", "waterfall", "run-up", "robust")
 ANALYSES += ("hopf",)
+ANALYSES += ("limit_cycle",)
 MAX_POINTS = 10_000_000
 
 
@@ -124,6 +125,17 @@ OPTIONS["robust"] = {**_EQ, "controller": rr.controller_option,
                      "actuator": rr.actuator_option, "margins": _opt_bool,
                      "pade_order": _opt_int(1, 20), "continuation": _opt_bool}
 REQUIRED["robust"] = ("controller",)
+# cycle branches born at each line's Hopf points, continued along the line
+# (rotordyn.sweep.limit_cycle_rows; docs/nonlinear.md)
+OPTIONS["limit_cycle"] = {**OPTIONS["hopf"], "station": _opt_int(0, 100000),
+                          "rtol": _opt_range(1e-14, 1e-3), "tol": _opt_range(0.0, 1e-2),
+                          "sensitivity_rtol": _opt_range(1e-14, 0.1),
+                          "ds": _opt_range(0.0, 10.0), "ds_max": _opt_range(0.0, 10.0),
+                          "max_points": _opt_int(2, 10000), "n_out": _opt_int(8, 100000),
+                          "distance": _opt_range(0.0, 0.5),
+                          "start_amplitude": _opt_range(0.0, 0.9),
+                          "newton": _opt_choice("sensitivities", "broyden")}
+REQUIRED["limit_cycle"] = ("vary",)
 
 
 def _dec(x) -> Decimal:
@@ -362,11 +374,12 @@ class SweepSpec:
         if n > MAX_POINTS:
             raise InputError(f"grid: {n} points, more than the limit of {MAX_POINTS}")
         a = self.analysis
-        if a in ("threshold", "hopf"):
+        if a in ("threshold", "hopf", "limit_cycle"):
             ax = self.options["vary"]
             if ax not in self.axes or len(self.axes[ax]) < 2:
                 raise InputError(f"options.vary: {ax!r} must be a grid axis with >= 2 values "
-                                 "(its range is scanned)")
+                                 "(its range is scanned; its first and last values are the "
+                                 "bounds)")
             if ax not in OPERATING[:3]:
                 raise InputError(f"options.vary: expected one of speed_hz, "
                                  f"chamber_pressure_pa, config_ay_m, got {ax!r}")
@@ -455,6 +468,9 @@ class SweepSpec:
         if self.analysis == "robust":
             rr.check_model(system, self.options)
         n_st = system.rotor.n_stations
+        if "station" in self.options and self.options["station"] >= n_st:
+            raise InputError(f"options.station: station {self.options['station']} out of "
+                             f"range (0..{n_st - 1})")
         for key in ("unbalances", "stations"):
             for i, u in enumerate(self.options.get(key, ())):
                 st = u[0] if key == "unbalances" else u
@@ -480,7 +496,7 @@ class SweepSpec:
     def line_axis(self) -> str | None:
         """The axis a task keeps whole (continuation and tracking along it): speed for
         campbell/unbalance/tracked stability, the varied axis for threshold."""
-        if self.analysis in ("threshold", "hopf"):
+        if self.analysis in ("threshold", "hopf", "limit_cycle"):
             return self.options["vary"]
         if self.analysis in ("campbell", "unbalance"):
             return "speed_hz"
@@ -521,7 +537,7 @@ class SweepSpec:
         """Contiguous point-id ranges [lo, hi) of each chunk; with a line axis, chunks hold
         whole lines (the chunk size is rounded up to a multiple of the line length)."""
         n = self.n_points
-        if self.analysis in ("threshold", "hopf"):
+        if self.analysis in ("threshold", "hopf", "limit_cycle"):
             # one task unit = one line; chunk_size counts lines
             line = len(self.axes[self.options["vary"]])
             size = self.chunk_size * line

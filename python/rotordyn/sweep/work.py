@@ -69,6 +69,12 @@ OUTPUTS["campbell"] = OUTPUTS["stability"]
 OUTPUTS["hopf"] = {**OUTPUTS["threshold"], "l1": F64, "l1_error": F64, "hopf_type": STR,
                    "alpha_prime": F64, "amplitude_coefficient_m2": F64}
 OUTPUTS["robust"] = robust_outputs(F64, BOOL, _cat)
+OUTPUTS["limit_cycle"] = {"record": _cat(["hopf", "cycle"]), **OUTPUTS["hopf"],
+                          "cycle": I64, "bearing": STR, "amplitude_m": F64, "amplitude_c": F64,
+                          "period_s": F64, "max_multiplier": F64, "critical_type": STR,
+                          "stable": BOOL, "equilibrium_stable": BOOL, "max_real_1_per_s": F64,
+                          "coexists_with_stable_equilibrium": BOOL, "bistable": BOOL,
+                          "newton_iterations": I64}
 
 
 def schema(analysis: str, axes: list[str]) -> pa.Schema:
@@ -88,6 +94,10 @@ def schema(analysis: str, axes: list[str]) -> pa.Schema:
 
 def categories(analysis: str) -> dict:
     cats = {"status": STATUS}
+    if analysis == "limit_cycle":
+        from rotordyn.sweep.limit_cycle_rows import CYCLE_STATUS
+
+        cats["status"] = STATUS + CYCLE_STATUS
     for k, t in OUTPUTS[analysis].items():
         if isinstance(t, tuple):
             cats[k] = t[1]
@@ -297,6 +307,16 @@ def _hopf_rows(job, variants, chunk_id, lo, hi, rows):
 
 
 _ANALYSIS["hopf"] = _hopf_rows
+
+
+def _limit_cycle_rows(job, variants, chunk_id, lo, hi, rows):
+    from rotordyn.sweep.limit_cycle_rows import limit_cycle_line
+
+    for s, e in _lines(job, lo, hi):
+        limit_cycle_line(job, variants, chunk_id, s, e, rows)
+
+
+_ANALYSIS["limit_cycle"] = _limit_cycle_rows
 
 
 def to_table(job: Job, rows: list[dict]) -> pa.Table:
