@@ -35,7 +35,8 @@ from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, e
                                       group_size)
 from rotordyn.sweep.spec import boundary_axes, fine_axes
 from rotordyn.sweep.store import BOUNDARY, Store
-from rotordyn.sweep.work import Job
+from rotordyn.sweep.surface import ColumnPlan, column_field
+from rotordyn.sweep.work import Job, pop_equilibria
 
 
 def _classify(table) -> dict[int, tuple[int, float, float]]:
@@ -134,16 +135,33 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     def pid(*idx):
         return base + sum(i * st for i, st in zip(idx, strides))
 
-    plan = Refinement(*[nodes[a] for a in refined])
+    by_cols = spec.options.get("refine", "columns" if z is not None else "cells") == "columns"
+    if by_cols:  # the surface (or curve) by columns along y: plan indices (i, j, k)
+        plan = ColumnPlan(nodes[x], nodes[y], nodes[z] if z else [0],
+                          shape if z else shape + (1,))
+        ix = (lambda p: p) if z else (lambda p: p[:2])
+    else:
+        plan = Refinement(*[nodes[a] for a in refined])
     state: dict[int, tuple] = {}
+    eqs: dict[int, np.ndarray] = {}  # point_id -> equilibrium (columns: starts of the next)
     cid = 0
     ex = None
     bar = Progress(1, 0, {}, enabled=None if progress is None else bool(progress))
     try:
         while True:
-            new = sorted(q for q in (pid(*idx) for idx in plan.points) if q not in state)
-            chunks = [(cid + k, new[a:a + spec.chunk_size])
-                      for k, a in enumerate(range(0, len(new), spec.chunk_size))]
+            idxs = sorted(plan.points)
+            new = sorted(q for q in (pid(*(ix(i) if by_cols else i)) for i in idxs)
+                         if q not in state)
+            size = spec.chunk_size
+            if by_cols:  # independent points (own starts): few large chunks per level
+                size = max(size, min(1000, -(-len(new) // 8)))
+                job.starts = {}
+                for p, src in plan.source.items():
+                    r0 = eqs.get(pid(*ix(src))) if src is not None else None
+                    if r0 is not None:
+                        job.starts[pid(*ix(p))] = r0
+            chunks = [(cid + k, new[a:a + size])
+                      for k, a in enumerate(range(0, len(new), size))]
             cid += len(chunks)
             bar.n += len(chunks)
             todo = []
@@ -160,11 +178,21 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                 if ex is None:
                     ex = executor(scheduler, workers or min(len(todo), os.cpu_count() or 1),
                                   threads, worker_timeout, bar)
+                pls = {t[0]: t[3] for t in todo}
                 for c, (table, cnt) in ex.map(job, todo):
+                    table, R = pop_equilibria(table)
+                    if by_cols and R is not None and R.shape[1]:
+                        for q, r in zip(pls[c], R):
+                            if np.isfinite(r).all():
+                                eqs[int(q)] = r
                     store.add(c, table, cnt, 0)
                     state.update(_classify(table))
                     bar.update(cnt)
-            if not plan.advance(_States(state, pid)):
+            if by_cols:
+                more = plan.advance({i: state[pid(*ix(i))][:2] for i in idxs})
+            else:
+                more = plan.advance(_States(state, pid))
+            if not more:
                 break
     except KeyboardInterrupt:
         bar.close()
@@ -190,6 +218,9 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
             fin = zk[np.isfinite(zk)]
             if z is not None and (fin.size == 0 or (fin < 0).all() or (fin >= 0).all()):
                 continue  # nothing evaluated on this slice changes sign
+            if by_cols:
+                kk = 0 if k is None else k
+                zk = column_field(plan.states[:, :, kk], plan.evaluated[:, :, kk], zk)
             for ln in polylines(ax[x], ax[y], zk):
                 rows["line"] += [n_line] * len(ln)
                 rows["vertex"] += list(range(len(ln)))
