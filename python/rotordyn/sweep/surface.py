@@ -67,7 +67,7 @@ class ColumnPlan:
         zi = list(zip(self.zn, self.zn[1:])) or [(self.zn[0], self.zn[0])]
         self.cells = [(a, b, c, d) for a, b in zip(self.xn, self.xn[1:]) for c, d in zi]
         self._centres: list = []
-        self._check: set = set()  # coarse columns to check against their neighbours
+        self._check: set = set()  # resolved columns to check against their neighbours
         self._before: dict = {}
         self.points = {(i, j, k) for i in self.xn for j in self.yn for k in self.zn}
         self._phase = "coarse"
@@ -88,7 +88,6 @@ class ColumnPlan:
                     self._open[(i, k)] = [{j: int(self.states[i, j, k]) for j in self.yn},
                                           set(), np.ones(self.shape[1], bool), []]
             self._phase = "resolve"
-            self._check = set(self._open)
         else:
             for (i, j, k) in results:
                 col = self._open.get((i, k))
@@ -101,7 +100,10 @@ class ColumnPlan:
                 self.points = pts
                 return True
             self._close()
-            if self._check and self._recheck():
+            opened = False
+            while self._check and not opened:
+                opened = self._recheck()
+            if opened:
                 continue
             if not self._next_columns():
                 self.points = set()
@@ -186,42 +188,60 @@ class ColumnPlan:
         idx = np.where(idx < 0, first[:, None], idx)
         out = np.take_along_axis(out, idx, axis=1)
         before = self._before
-        if before:  # rechecked coarse columns: their neighbours again where they changed
-            xs, zs = self.xn, self.zn
-            for r, c in enumerate(self._open):
-                if c in before and (before[c] != out[r]).any():
-                    a, b = xs.index(c[0]), zs.index(c[1])
-                    for da, db in ((-1, 0), (1, 0), (0, -1), (0, 1)):
-                        if 0 <= a + da < len(xs) and 0 <= b + db < len(zs):
-                            self._check.add((xs[a + da], zs[b + db]))
-            self._before = {}
+        for r, c in enumerate(self._open):  # check new columns; recheck around changed ones
+            if c not in before:
+                self._check.add(c)
+            elif (before[c] != out[r]).any():
+                self._check.update(self._neighbours(c))
+        self._before = {}
         self.states[ii, :, kk] = out
         self._uni[ii, kk] = np.where((out == out[:, :1]).all(axis=1), out[:, 0], UNKNOWN - 1)
         self._open.clear()
         self._parents.clear()
 
+    def _neighbours(self, c):
+        """The nearest resolved columns of ``c`` along -x, +x, -z, +z (those that exist)."""
+        i, k = c
+        out = []
+        for line, at, mk in ((self.states[:, 0, k], i, lambda q: (q, k)),
+                             (self.states[i, 0, :], k, lambda q: (i, q))):
+            r = np.flatnonzero(line != UNKNOWN)
+            m = np.searchsorted(r, at)
+            if m > 0:
+                out.append(mk(int(r[m - 1])))
+            if m < len(r) and r[m] == at:
+                m += 1
+            if m < len(r):
+                out.append(mk(int(r[m])))
+        return out
+
     def _recheck(self) -> bool:
-        """Coarse columns against their coarse neighbours: where a neighbour has a crossing
-        between two nodes this column only inferred (between evaluated nodes of one state,
-        up to a coarse cell apart), evaluate them, and the middle of every run of inferred
-        nodes where the neighbour's state differs, so a pocket seen beside it is not missed;
-        repeated on the neighbours of every column whose states changed."""
-        xs, zs = self.xn, self.zn
-        pos = {(i, k): (a, b) for a, i in enumerate(xs) for b, k in enumerate(zs)}
+        """Resolved columns against their nearest resolved neighbours along x and z: where a
+        neighbour's sequence of state changes differs from the column's (a crossing there
+        that this column lacks, or the reverse), evaluate the column's inferred nodes at the
+        neighbour's crossings and the middle of every run of inferred nodes where the two
+        differ, so a pocket or sliver seen beside it is not missed; repeated on the
+        neighbours of every column whose states change."""
         check, self._check = self._check, set()
         for c in sorted(check):
-            a, b = pos[c]
             col = self.states[c[0], :, c[1]]
+            if (col == UNKNOWN).any():
+                continue
             ev = self.evaluated[c[0], :, c[1]]
+            cc = np.flatnonzero(col[1:] != col[:-1])
             seeds = set()
-            for da, db in ((-1, 0), (1, 0), (0, -1), (0, 1)):
-                if not (0 <= a + da < len(xs) and 0 <= b + db < len(zs)):
-                    continue
-                p = self.states[xs[a + da], :, zs[b + db]]
-                for j in np.flatnonzero(p[1:] != p[:-1]):
+            for q in self._neighbours(c):
+                p = self.states[q[0], :, q[1]]
+                pc = np.flatnonzero(p[1:] != p[:-1])
+                if len(pc) == len(cc) and (p[pc] == col[cc]).all() and \
+                        (p[pc + 1] == col[cc + 1]).all() and p[0] == col[0]:
+                    continue  # the same sequence of changes: explained by the column's own
+                eq = self.evaluated[q[0], :, q[1]]
+                if any(p[j] == p[j + 1] and not (eq[j] and eq[j + 1]) for j in cc):
+                    self._check.add(q)  # the neighbour lacks one of this column's changes
+                for j in pc:
                     if col[j] == col[j + 1] and not (ev[j] and ev[j + 1]):
-                        seeds.update(q for q in (int(j), int(j) + 1) if not ev[q])
-                # and the middle of every run of inferred nodes where the neighbour differs
+                        seeds.update(int(u) for u in (j, j + 1) if not ev[u])
                 d = np.concatenate(([0], ((p != col) & ~ev).astype(np.int8), [0]))
                 e = np.flatnonzero(np.diff(d))
                 seeds.update(int((u + w - 1) // 2) for u, w in zip(e[::2], e[1::2]))
@@ -303,6 +323,7 @@ class ColumnPlan:
         nb &= ~unc
         self.states[ci, :, ck] = np.where(unc, UNKNOWN, A)
         done = ~unc.any(axis=1)
+        self._check.update(cs[r] for r in np.flatnonzero(done))
         self._uni[ci[done], ck[done]] = np.where((A[done] == A[done, :1]).all(axis=1),
                                                  A[done, 0], UNKNOWN - 1)
         na, nb_ = chA.sum(axis=1), chB.sum(axis=1)
