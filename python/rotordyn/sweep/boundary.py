@@ -157,9 +157,11 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                 size = max(size, min(1000, -(-len(new) // 8)))
                 job.starts = {}
                 for p, src in plan.source.items():
-                    r0 = eqs.get(pid(*ix(src))) if src is not None else None
-                    if r0 is not None:
-                        job.starts[pid(*ix(p))] = r0
+                    rs = [eqs.get(pid(*ix(q))) for q, _ in src]
+                    if src and all(r is not None for r in rs):
+                        job.starts[pid(*ix(p))] = sum(w * r for (_, w), r in zip(src, rs))
+                    elif any(r is not None for r in rs):  # the nearest one solved
+                        job.starts[pid(*ix(p))] = next(r for r in rs if r is not None)
             chunks = [(cid + k, new[a:a + size])
                       for k, a in enumerate(range(0, len(new), size))]
             cid += len(chunks)

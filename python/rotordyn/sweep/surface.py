@@ -26,8 +26,11 @@ surface is resolved by the coarse grid and does not fold between two neighbourin
 columns; the crossings then equal those of the dense column (tests/test_sweep_surface.py,
 against dense grids of analytic fields and dense columns of a model).
 
-Each requested point also has a *source* (:attr:`ColumnPlan.source`): the nearest evaluated
-node (same column, else a parent's), whose equilibrium starts its Newton iteration.
+Each requested point also has a *source* (:attr:`ColumnPlan.source`): evaluated nodes and
+weights whose combined equilibria start its Newton iteration (interpolated between the
+column's nodes or the two parents', else the nearest), so a point costs about two Reynolds
+solves of the equilibrium; the equilibrium is polished to round-off, so the start changes the
+cost, not the answer.
 """
 
 from __future__ import annotations
@@ -161,19 +164,46 @@ class ColumnPlan:
         return (u + w) // 2
 
     def _nearest(self, p):
-        """The nearest evaluated node of the point's column or its parents (fine steps)."""
+        """The start of point ``p``: [(node, weight), ...] of evaluated nodes whose
+        equilibria, so weighted, approximate its own to second order where it can: linear
+        interpolation between the column's nearest nodes below and above (when close), the
+        mean of the two parents' nodes beside it, extrapolation from the column's two
+        nearest nodes on one side; else the nearest evaluated node of the column or its
+        parents (fine steps)."""
         i, j, k = p
+        own = self._ev.get((i, k)) or []
+        m = bisect_left(own, j)
+        lo = own[m - 1] if m > 0 else None
+        hi = own[m] if m < len(own) else None
+        if lo is not None and hi is not None and (j - lo) * (hi - j) <= 4:
+            return [((i, lo, k), (hi - j) / (hi - lo)), ((i, hi, k), (j - lo) / (hi - lo))]
+        par = self._parents.get((i, k), ((), None))[0]
+        if par:
+            near = []
+            for ci, ck in par:
+                ev = self._ev.get((ci, ck))
+                q = ev[min(range(len(ev)), key=lambda t: abs(ev[t] - j))] if ev else None
+                near.append(None if q is None or abs(q - j) > 1 else (ci, q, ck))
+            if None not in near:
+                return [(near[0], 0.5), (near[1], 0.5)]
+        if lo is not None and hi is not None:
+            return [((i, lo, k), (hi - j) / (hi - lo)), ((i, hi, k), (j - lo) / (hi - lo))]
+        side = own[max(m - 2, 0):m] if lo is not None else own[m:m + 2]
+        if len(side) == 2 and max(abs(q - j) for q in side) <= 3:
+            a, b = sorted(side, key=lambda q: abs(q - j))  # a nearer: r_a + t (r_a - r_b)
+            t = (j - a) / (a - b)
+            return [((i, a, k), 1 + t), ((i, b, k), -t)]
         best, dist = None, None
-        for ci, ck in [(i, k), *self._parents.get((i, k), ((), None))[0]]:
+        for ci, ck in [(i, k), *par]:
             ev = self._ev.get((ci, ck))
             if not ev:
                 continue
-            m = bisect_left(ev, j)
-            for q in ev[max(m - 1, 0):m + 1]:
+            n = bisect_left(ev, j)
+            for q in ev[max(n - 1, 0):n + 1]:
                 d = abs(q - j) + abs(ci - i) + abs(ck - k)
                 if dist is None or d < dist:
                     best, dist = (ci, q, ck), d
-        return best
+        return [(best, 1.0)] if best is not None else []
 
     def _close(self):
         """Every open column resolved: its states from the known nodes (evaluated or agreed by
