@@ -178,6 +178,8 @@ def surface(args):
             ds = sw.open(Path(d) / "o")
             b = ds.boundary()
             levels = ds.frame.groupby("level")["point_id"].nunique().to_dict()
+            if method == "columns":  # rounds, not levels: the points by reason instead
+                levels = r.manifest.get("points_by_reason", levels)
             print(f"[{method}] boundary surface at {res}^3 from {n0}x{n0}x{args.coarse_z}: "
                   f"{n:,} points evaluated vs {res**3:,} for the full grid ({res**3 / n:.0f}x "
                   f"fewer); {w:.1f} s wall, {c:.1f} s CPU on {args.threads} threads (load "

@@ -209,3 +209,53 @@ def test_refine_option_is_checked(tmp_path):
     p.write_text(SURFACE.format(model=model, res=9, refine='refine = "octree"'))
     with pytest.raises(rd.InputError, match=r"options.refine"):
         SweepSpec.from_toml(p)
+
+
+CURVE = """
+schema = "rotordyn/sweep/1"
+name = "lund-curve"
+model = "{model}"
+analysis = "boundary"
+chunk_size = 16
+
+[grid]
+"rotor.disks.0.mass_kg" = {{start = 0.2, stop = 1.4, num = 5}}
+speed_hz = {{start = 110.0, stop = 150.0, num = 5}}
+
+[options]
+x = "rotor.disks.0.mass_kg"
+y = "speed_hz"
+resolution = 30
+refine = "columns"
+"""
+
+
+def test_curve_sweep_by_columns_matches_dense_columns(tmp_path):
+    """A boundary curve (no z) by columns, at resolution 30 from 5 x 5 (cells of 7.25 fine
+    steps), on the rigid rotor: on every third column, evaluated densely, the crossing lies
+    between the same two fine speeds, both evaluated, and the contour's speed is the dense
+    column's interpolation (1e-9 relative)."""
+    model = tmp_path / "rigid.toml"
+    rigid_rotor(1.0, 0.125, n_circ=72).to_toml(model)
+    p = tmp_path / "s.toml"
+    p.write_text(CURVE.format(model=model))
+    res = run_sweep(p, tmp_path / "o", threads=2, progress=False)
+    assert res.manifest["n_points"] < 200  # of 900
+    ds = sw.open(tmp_path / "o")
+    fr, b = ds.frame, ds.boundary()
+    spec = SweepSpec.from_toml(p)
+    ax, _ = fine_axes(spec)
+    job = Job(spec.name, model.read_text(), spec.analysis, spec.options, ax)
+    x = "rotor.disks.0.mass_kg"
+    ys = np.asarray(ax["speed_hz"])
+    for i in range(0, 30, 3):
+        t = run_chunk(job, 0, 0, 0, [i * 30 + j for j in range(30)])
+        col = np.asarray(t.column("max_real_1_per_s").to_pylist())
+        k = np.flatnonzero(np.sign(col[1:]) != np.sign(col[:-1]))
+        assert len(k) == 1
+        sub = fr[fr[x] == ax[x][i]].set_index("speed_hz")["max_real_1_per_s"]
+        assert ys[k[0]] in sub.index and ys[k[0] + 1] in sub.index
+        assert (sub.loc[ys[k[0]]] >= 0) != (sub.loc[ys[k[0] + 1]] >= 0)
+        want = ys[k] + (ys[k + 1] - ys[k]) * col[k] / (col[k] - col[k + 1])
+        got = b[np.abs(b[x] - ax[x][i]) <= 1e-12]["speed_hz"].to_numpy()
+        np.testing.assert_allclose(np.unique(got), want, rtol=1e-9)

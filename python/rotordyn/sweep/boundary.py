@@ -242,6 +242,8 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                   for k in ("ok", "failed", "unstable")}
         man = {**header, "n_chunks": cid, "n_points": len(state),
                "fine_points": int(np.prod(shape))}
+        if by_cols:  # the points this run asked for, by reason (resumed chunks included)
+            man["points_by_reason"] = dict(plan.stats)
         return SweepResult(Path(out), man, len(entries), cid, counts)
     finally:
         store.close()

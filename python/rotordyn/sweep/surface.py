@@ -36,6 +36,7 @@ cost, not the answer.
 from __future__ import annotations
 
 from bisect import bisect_left
+from collections import Counter
 
 import numpy as np
 
@@ -72,8 +73,13 @@ class ColumnPlan:
         self._centres: list = []
         self._check: set = set()  # resolved columns to check against their neighbours
         self._before: dict = {}
+        self._kind: dict = {}
+        # points requested by reason: coarse grid, seed (a new column's predicted interval or
+        # its first bisection), bisect, confirm (an inferred node next to a change), check
+        self.stats = Counter()
         self.points = {(i, j, k) for i in self.xn for j in self.yn for k in self.zn}
         self._phase = "coarse"
+        self.stats["coarse"] = len(self.points)
 
     # -- results --------------------------------------------------------------------------
     def advance(self, results) -> bool:
@@ -136,7 +142,9 @@ class ColumnPlan:
         for c, col in self._open.items():
             known, assumed, _, seeds = col
             if seeds:
-                pts.update((c[0], j, c[1]) for j in seeds)
+                new = {(c[0], j, c[1]) for j in seeds} - pts
+                self.stats[self._kind.pop(c, "seed")] += len(new)
+                pts |= new
                 col[3] = []
                 continue
             js = sorted(known)
@@ -144,11 +152,12 @@ class ColumnPlan:
                 if known[u] == known[w]:
                     continue
                 if w - u > 1:
-                    q = self._mid(c, u, w)
+                    q, why = self._mid(c, u, w), "bisect"
                 else:
-                    q = u if u in assumed else (w if w in assumed else None)
-                if q is not None:
+                    q, why = u if u in assumed else (w if w in assumed else None), "confirm"
+                if q is not None and (c[0], q, c[1]) not in pts:
                     pts.add((c[0], q, c[1]))
+                    self.stats[why] += 1
         self.source = {p: self._nearest(p) for p in pts}
         return pts
 
@@ -212,6 +221,9 @@ class ColumnPlan:
             return
         ii, kk = (np.array(v) for v in zip(*self._open))
         out = self.states[ii, :, kk]
+        for r, c in enumerate(self._open):  # a rechecked column: again from its evaluations
+            if c in self._before:
+                out[r, ~self.evaluated[c[0], :, c[1]]] = UNKNOWN
         idx = np.where(out != UNKNOWN, np.arange(out.shape[1])[None, :], -1)
         np.maximum.accumulate(idx, axis=1, out=idx)
         first = np.argmax(out != UNKNOWN, axis=1)
@@ -246,12 +258,13 @@ class ColumnPlan:
         return out
 
     def _recheck(self) -> bool:
-        """Resolved columns against their nearest resolved neighbours along x and z: where a
-        neighbour's sequence of state changes differs from the column's (a crossing there
-        that this column lacks, or the reverse), evaluate the column's inferred nodes at the
-        neighbour's crossings and the middle of every run of inferred nodes where the two
-        differ, so a pocket or sliver seen beside it is not missed; repeated on the
-        neighbours of every column whose states change."""
+        """Resolved columns against their nearest resolved neighbours along x and z: a
+        neighbour's change that the column does not match (no change of the same kind within
+        three times their distance, at least two steps) is a pocket or sliver beside it, so
+        the column's inferred nodes there are evaluated, and the middle of the runs of
+        inferred nodes beside it where the two differ (a pocket narrowing towards the
+        column); repeated on the neighbours of every column whose states change, and on a
+        neighbour that does not match one of the column's changes."""
         check, self._check = self._check, set()
         for c in sorted(check):
             col = self.states[c[0], :, c[1]]
@@ -266,18 +279,28 @@ class ColumnPlan:
                 if len(pc) == len(cc) and (p[pc] == col[cc]).all() and \
                         (p[pc + 1] == col[cc + 1]).all() and p[0] == col[0]:
                     continue  # the same sequence of changes: explained by the column's own
+                dmax = max(2, 3 * (abs(q[0] - c[0]) + abs(q[1] - c[1])))
+                lone_p = _unmatched(p, pc, col, cc, dmax)
                 eq = self.evaluated[q[0], :, q[1]]
-                if any(p[j] == p[j + 1] and not (eq[j] and eq[j + 1]) for j in cc):
+                if any(p[j] == p[j + 1] and not (eq[j] and eq[j + 1])
+                       for j in _unmatched(col, cc, p, pc, dmax)):
                     self._check.add(q)  # the neighbour lacks one of this column's changes
-                for j in pc:
+                if not lone_p:
+                    continue
+                for j in lone_p:
                     if col[j] == col[j + 1] and not (ev[j] and ev[j + 1]):
                         seeds.update(int(u) for u in (j, j + 1) if not ev[u])
-                d = np.concatenate(([0], ((p != col) & ~ev).astype(np.int8), [0]))
+                d = np.concatenate(([0], (p != col).astype(np.int8), [0]))
                 e = np.flatnonzero(np.diff(d))
-                seeds.update(int((u + w - 1) // 2) for u, w in zip(e[::2], e[1::2]))
+                for u, w in zip(e[::2], e[1::2]):  # runs [u, w) touching a lone change
+                    if any(u - 1 <= j < w for j in lone_p):
+                        free = np.flatnonzero(~ev[u:w]) + u  # its inferred node nearest
+                        if free.size:                      # the middle
+                            seeds.add(int(free[np.argmin(np.abs(free - 0.5 * (u + w - 1)))]))
             if seeds:
                 known = {int(j): int(col[j]) for j in np.flatnonzero(ev)}
                 self._open[c] = [known, set(), np.ones(len(col), bool), sorted(seeds)]
+                self._kind[c] = "check"
                 self._before[c] = col.copy()
         return bool(self._open)
 
@@ -376,6 +399,9 @@ class ColumnPlan:
             if not seeds:  # no prediction: start at the middle of each uncertain run
                 runs = np.flatnonzero(np.diff(np.concatenate(([0], ur.astype(np.int8), [0]))))
                 seeds = [int((a + e - 1) // 2) for a, e in zip(runs[::2], runs[1::2])]
+            # an uncertain run at an end of the column has no inferred node beyond it to
+            # bound it: its end node is evaluated too
+            seeds = sorted(set(seeds) | {j for j in (0, n - 1) if ur[j]})
             self._open[c] = [known, set(known), ur, seeds]
             self._parents[c] = (par, pred)
         return bool(self._open)
@@ -388,6 +414,25 @@ class ColumnPlan:
         if np.isfinite(v0) and np.isfinite(v1) and v0 != v1:
             return j + min(max(v0 / (v0 - v1), 0.0), 1.0 - 1e-9)
         return j + 0.5
+
+
+def _unmatched(p, pc, col, cc, dmax) -> list:
+    """The changes of profile ``p`` (lower nodes ``pc``) with no change of the same kind
+    (states below and above) in ``col`` (lower nodes ``cc``) within ``dmax`` nodes, each of
+    ``col``'s changes matching one of ``p``'s at most (nearest first)."""
+    free = [int(j) for j in cc]
+    out = []
+    for j in pc:
+        best = None
+        for t, jc in enumerate(free):
+            if abs(jc - j) <= dmax and col[jc] == p[j] and col[jc + 1] == p[j + 1] and \
+                    (best is None or abs(jc - j) < abs(free[best] - j)):
+                best = t
+        if best is None:
+            out.append(int(j))
+        else:
+            free.pop(best)
+    return out
 
 
 def column_field(states, evaluated, values) -> np.ndarray:
