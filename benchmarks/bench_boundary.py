@@ -69,6 +69,8 @@ def main(argv=None):
     ap.add_argument("--surface", action="store_true",
                     help="the 3-D boundary over a_y x p_c x speed (30-70 Hz, --coarse-z values)")
     ap.add_argument("--coarse-z", type=int, default=9)
+    ap.add_argument("--dense-grid", action="store_true",
+                    help="surface: also every fine node, and every column compared (small R)")
     ap.add_argument("--refine", choices=["both", "columns", "cells"], default="both",
                     help="surface: the refinement(s) run (both: cells first, the baseline)")
     args = ap.parse_args(argv)
@@ -155,13 +157,31 @@ class _Timed:
         return r
 
 
+def _timed_advance(cls, acc):
+    """``cls.advance`` timed (CPU of the driver thread) into ``acc``; returns the original."""
+    orig = cls.advance
+
+    def advance(self, *a):
+        t = time.thread_time()
+        try:
+            return orig(self, *a)
+        finally:
+            acc[0] += time.thread_time() - t
+
+    cls.advance = advance
+    return orig
+
+
 def surface(args):
     """The boundary surface over a_y x p_c x speed: points, time (C++ share), dense columns;
     the cell refinement (the former default) first as the baseline of the same run."""
     import rotordyn.sweep.blocks as blocks
+    from rotordyn.sweep.boundary import Refinement
+    from rotordyn.sweep.surface import ColumnPlan
 
     res, n0 = args.resolution, args.coarse
     methods = ["cells", "columns"] if args.refine == "both" else [args.refine]
+    dense = dense_grid(args) if args.dense_grid else None
     for method in methods:
         with tempfile.TemporaryDirectory() as d:
             p = Path(d) / "s.toml"
@@ -169,11 +189,14 @@ def surface(args):
                                      speed=f"{{start = 30.0, stop = 70.0, num = {args.coarse_z}}}",
                                      zopt=f'z = "speed_hz"\nrefine = "{method}"\n'))
             timed = blocks._core = _Timed(blocks._core)
+            plan_cpu = [0.0]
+            o1, o2 = (_timed_advance(k, plan_cpu) for k in (Refinement, ColumnPlan))
             load0 = os.getloadavg()[0]
             w0, c0 = time.perf_counter(), time.process_time()
             r = run_sweep(p, Path(d) / "o", threads=args.threads, progress=False)
             w, c = time.perf_counter() - w0, time.process_time() - c0
             blocks._core = timed.core
+            Refinement.advance, ColumnPlan.advance = o1, o2
             n = r.manifest["n_points"]
             ds = sw.open(Path(d) / "o")
             b = ds.boundary()
@@ -186,12 +209,65 @@ def surface(args):
                   f"{load0:.1f} -> {os.getloadavg()[0]:.1f}; goal at 257^3: <= 60 s on 2 "
                   f"cores); C++ max_real_batch {timed.cpu:.1f} s CPU in {timed.calls} calls "
                   f"({1e3 * timed.cpu / max(timed.points, 1):.2f} ms/point), the rest "
-                  f"{c - timed.cpu:.1f} s (Python: plan, tables, store); "
+                  f"{c - timed.cpu:.1f} s (Python: the plan {plan_cpu[0]:.1f} s, tables, "
+                  f"store); "
                   f"{b['speed_hz'].nunique()} speed slices with a contour; counts {r.counts}; "
                   f"points per level {levels}")
             if args.columns:
                 dense_columns(args, p, ds, b)
+            if dense is not None:
+                compare_grid(ds, dense)
     footer()
+
+
+def dense_grid(args):
+    """max Re λ at every fine node of the surface's grid (lines along speed, one chunk per
+    a_y slab, on --threads threads)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    res = args.resolution
+    with tempfile.TemporaryDirectory() as d:
+        p = Path(d) / "s.toml"
+        p.write_text(SPEC.format(n0=args.coarse, res=res,
+                                 speed=f"{{start = 30.0, stop = 70.0, num = {args.coarse_z}}}",
+                                 zopt='z = "speed_hz"\n'))
+        spec = SweepSpec.from_toml(p)
+    ax, _ = fine_axes(spec)
+    job = Job(spec.name, spec.load_model().to_toml(), spec.analysis, spec.options, ax)
+    V = np.full((res, res, res), np.nan)
+
+    def slab(i):
+        t = run_chunk(job, 0, 0, 0, list(range(i * res * res, (i + 1) * res * res)))
+        return i, np.asarray(t.column("max_real_1_per_s").to_pylist(), dtype=float)
+
+    w0, c0 = time.perf_counter(), time.process_time()
+    with ThreadPoolExecutor(args.threads) as ex:
+        for i, v in ex.map(slab, range(res)):
+            V[i] = v.reshape(res, res)
+    print(f"dense grid {res}^3: {res**3:,} points, {time.perf_counter() - w0:.1f} s wall, "
+          f"{time.process_time() - c0:.1f} s CPU, {int(np.isnan(V).sum())} failed")
+    return V
+
+
+def compare_grid(ds, V):
+    """Every (a_y, speed) column's crossings (neighbouring p_c nodes in different states, both
+    evaluated) against the dense grid's."""
+    st = np.where(np.isfinite(V), (V >= 0).astype(int), 2)
+    fr = ds.frame
+    i, j, k = (fr[f"i_{a}"].to_numpy() for a in ("config_ay_m", "chamber_pressure_pa",
+                                                  "speed_hz"))
+    seen = np.zeros(st.shape, bool)
+    seen[i, j, k] = True
+    got = np.full(st.shape, -1)
+    ok = fr["status"].isin(["ok", "contact"]).to_numpy()
+    got[i, j, k] = np.where(ok, (fr["max_real_1_per_s"].to_numpy() >= 0).astype(int), 2)
+    dense = st[:, 1:, :] != st[:, :-1, :]
+    found = (got[:, 1:, :] != got[:, :-1, :]) & seen[:, 1:, :] & seen[:, :-1, :]
+    same = (dense == found).all(axis=1)
+    print(f"  every column against the dense grid: {int(same.sum()):,} of {same.size:,} "
+          f"identical ({int(dense.sum()):,} crossings, {int((dense & ~found).sum())} missed, "
+          f"{int((found & ~dense).sum())} extra; evaluated values equal the dense ones to "
+          f"{np.nanmax(np.abs(fr['max_real_1_per_s'].to_numpy() - V[i, j, k])):.2g} 1/s)")
 
 
 def dense_columns(args, p, ds, b):

@@ -159,20 +159,17 @@ resolution = {res}
 
 def test_surface_sweep_by_columns_matches_dense_columns(tmp_path):
     """A boundary surface of the rigid rotor on two short bearings over (mass, speed,
-    gravity) at 17³ from 5 x 5 x 3, by columns (the surface default): on every fourth
-    column of three gravity slices, evaluated densely through the same chunk function, the
-    crossing lies between the same two fine speeds, both evaluated, and the contour's
-    speed there is the dense column's interpolation (1e-9 relative: the equilibria start
-    from other guesses); fewer points than the cell refinement of the same surface."""
+    gravity) at 17³ from 5 x 5 x 3, by columns (the surface default), from under a fifth of
+    the fine points: on three mass columns of three gravity slices, evaluated densely
+    through the same chunk function, the crossing lies between the same two fine speeds,
+    both evaluated, and the contour's speed there is the dense column's interpolation (1e-9
+    relative: the equilibria start from other guesses)."""
     model = tmp_path / "rigid.toml"
     rigid_rotor(1.0, 0.125, n_circ=72).to_toml(model)
     p = tmp_path / "s.toml"
     p.write_text(SURFACE.format(model=model, res=17, refine=""))
     res = run_sweep(p, tmp_path / "o", threads=2, progress=False)
-    q = tmp_path / "c.toml"
-    q.write_text(SURFACE.format(model=model, res=17, refine='refine = "cells"'))
-    cells = run_sweep(q, tmp_path / "c", threads=2, progress=False)
-    assert res.manifest["n_points"] < 0.7 * cells.manifest["n_points"]
+    assert res.manifest["n_points"] < 0.2 * 17**3
     ds = sw.open(tmp_path / "o")
     fr, b = ds.frame, ds.boundary()
     spec = SweepSpec.from_toml(p)
@@ -183,7 +180,7 @@ def test_surface_sweep_by_columns_matches_dense_columns(tmp_path):
     checked = 0
     for kz in (0, 8, 16):
         g = ax["gravity_m_s2"][kz]
-        for i in range(0, 17, 4):
+        for i in (2, 8, 14):
             t = run_chunk(job, 0, 0, 0, [(i * 17 + j) * 17 + kz for j in range(17)])
             col = np.asarray(t.column("max_real_1_per_s").to_pylist())
             k = np.flatnonzero(np.sign(col[1:]) != np.sign(col[:-1]))
@@ -198,7 +195,7 @@ def test_surface_sweep_by_columns_matches_dense_columns(tmp_path):
                 sl = b[(b["gravity_m_s2"] == g) & (np.abs(b[x] - ax[x][i]) <= 1e-12)]
                 np.testing.assert_allclose(np.unique(sl["speed_hz"]), want, rtol=1e-9)
                 checked += 1
-    assert checked >= 8
+    assert checked >= 6
 
 
 def test_refine_option_is_checked(tmp_path):

@@ -139,7 +139,10 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     if by_cols:  # the surface (or curve) by columns along y: plan indices (i, j, k)
         plan = ColumnPlan(nodes[x], nodes[y], nodes[z] if z else [0],
                           shape if z else shape + (1,))
-        ix = (lambda p: p) if z else (lambda p: p[:2])
+        s0, s1, s2 = (strides + [0])[:3]
+
+        def pid3(p):  # point_id of plan index (i, j, k) (k = 0 for a curve)
+            return base + p[0] * s0 + p[1] * s1 + p[2] * s2
     else:
         plan = Refinement(*[nodes[a] for a in refined])
     state: dict[int, tuple] = {}
@@ -150,18 +153,19 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     try:
         while True:
             idxs = sorted(plan.points)
-            new = sorted(q for q in (pid(*(ix(i) if by_cols else i)) for i in idxs)
-                         if q not in state)
             size = spec.chunk_size
             if by_cols:  # independent points (own starts): few large chunks per level
-                size = max(size, min(1000, -(-len(new) // 8)))
+                new = sorted(q for q in map(pid3, idxs) if q not in state)
+                size = max(size, 100, min(2000, -(-len(new) // 8)))
                 job.starts = {}
                 for p, src in plan.source.items():
-                    rs = [eqs.get(pid(*ix(q))) for q, _ in src]
+                    rs = [eqs.get(pid3(q)) for q, _ in src]
                     if src and all(r is not None for r in rs):
-                        job.starts[pid(*ix(p))] = sum(w * r for (_, w), r in zip(src, rs))
+                        job.starts[pid3(p)] = sum(w * r for (_, w), r in zip(src, rs))
                     elif any(r is not None for r in rs):  # the nearest one solved
-                        job.starts[pid(*ix(p))] = next(r for r in rs if r is not None)
+                        job.starts[pid3(p)] = next(r for r in rs if r is not None)
+            else:
+                new = sorted(q for q in (pid(*i) for i in idxs) if q not in state)
             chunks = [(cid + k, new[a:a + size])
                       for k, a in enumerate(range(0, len(new), size))]
             cid += len(chunks)
@@ -191,7 +195,7 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                     state.update(_classify(table))
                     bar.update(cnt)
             if by_cols:
-                more = plan.advance({i: state[pid(*ix(i))][:2] for i in idxs})
+                more = plan.advance({i: state[pid3(i)][:2] for i in idxs})
             else:
                 more = plan.advance(_States(state, pid))
             if not more:

@@ -74,6 +74,7 @@ class ColumnPlan:
         self._check: set = set()  # resolved columns to check against their neighbours
         self._before: dict = {}
         self._kind: dict = {}
+        self._sig: dict = {}  # (i, k) -> a resolved column's states run by run
         # points requested by reason: coarse grid, seed (a new column's predicted interval or
         # its first bisection), bisect, confirm (an inferred node next to a change), check
         self.stats = Counter()
@@ -238,8 +239,18 @@ class ColumnPlan:
         self._before = {}
         self.states[ii, :, kk] = out
         self._uni[ii, kk] = np.where((out == out[:, :1]).all(axis=1), out[:, 0], UNKNOWN - 1)
+        self._sig.update(zip(self._open, _signatures(out)))
         self._open.clear()
         self._parents.clear()
+
+    def _signature(self, c):
+        u = int(self._uni[c])
+        if u >= 0:
+            return (u,)
+        sig = self._sig.get(c)
+        if sig is None:
+            sig = self._sig[c] = _signatures(self.states[c[0], :, c[1]][None, :])[0]
+        return sig
 
     def _neighbours(self, c):
         """The nearest resolved columns of ``c`` along -x, +x, -z, +z (those that exist)."""
@@ -271,9 +282,14 @@ class ColumnPlan:
             if (col == UNKNOWN).any():
                 continue
             ev = self.evaluated[c[0], :, c[1]]
-            cc = np.flatnonzero(col[1:] != col[:-1])
+            sc = self._signature(c)
+            cc = None
             seeds = set()
             for q in self._neighbours(c):
+                if self._signature(q) == sc:
+                    continue  # the same sequence of states: explained by the column's own
+                if cc is None:
+                    cc = np.flatnonzero(col[1:] != col[:-1])
                 p = self.states[q[0], :, q[1]]
                 pc = np.flatnonzero(p[1:] != p[:-1])
                 if len(pc) == len(cc) and (p[pc] == col[cc]).all() and \
@@ -376,7 +392,9 @@ class ColumnPlan:
         nb &= ~unc
         self.states[ci, :, ck] = np.where(unc, UNKNOWN, A)
         done = ~unc.any(axis=1)
-        self._check.update(cs[r] for r in np.flatnonzero(done))
+        rd = np.flatnonzero(done)
+        self._check.update(cs[r] for r in rd)
+        self._sig.update(zip((cs[r] for r in rd), _signatures(A[done])))
         self._uni[ci[done], ck[done]] = np.where((A[done] == A[done, :1]).all(axis=1),
                                                  A[done, 0], UNKNOWN - 1)
         na, nb_ = chA.sum(axis=1), chB.sum(axis=1)
@@ -414,6 +432,16 @@ class ColumnPlan:
         if np.isfinite(v0) and np.isfinite(v1) and v0 != v1:
             return j + min(max(v0 / (v0 - v1), 0.0), 1.0 - 1e-9)
         return j + 0.5
+
+
+def _signatures(rows) -> list:
+    """Per profile (a row of states): its states run by run, a tuple."""
+    rows = np.asarray(rows)
+    r, j = np.nonzero(rows[:, 1:] != rows[:, :-1])
+    after = rows[r, j + 1].tolist()
+    cuts = np.searchsorted(r, np.arange(len(rows) + 1)).tolist()
+    first = rows[:, 0].tolist()
+    return [(first[t], *after[cuts[t]:cuts[t + 1]]) for t in range(len(rows))]
 
 
 def _unmatched(p, pc, col, cc, dmax) -> list:
