@@ -256,3 +256,76 @@ def test_curve_sweep_by_columns_matches_dense_columns(tmp_path):
         want = ys[k] + (ys[k + 1] - ys[k]) * col[k] / (col[k] - col[k + 1])
         got = b[np.abs(b[x] - ax[x][i]) <= 1e-12]["speed_hz"].to_numpy()
         np.testing.assert_allclose(np.unique(got), want, rtol=1e-9)
+
+
+def test_surface_by_columns_resumes_without_recomputing(tmp_path, monkeypatch):
+    """A finished surface run again finds every chunk of the same plan in its store (the
+    chunking depends on the plan only), evaluates nothing and writes the same boundary."""
+    import rotordyn.sweep.boundary as bd
+
+    model = tmp_path / "rigid.toml"
+    rigid_rotor(1.0, 0.125, n_circ=72).to_toml(model)
+    p = tmp_path / "s.toml"
+    p.write_text(SURFACE.format(model=model, res=9, refine=""))
+    first = run_sweep(p, tmp_path / "o", threads=2, progress=False)
+    b0 = sw.open(tmp_path / "o").boundary()
+
+    def no_executor(*a, **k):
+        raise AssertionError("a done chunk was computed again")
+
+    monkeypatch.setattr(bd, "executor", no_executor)
+    again = run_sweep(p, tmp_path / "o", threads=2, progress=False)
+    assert again.manifest["n_points"] == first.manifest["n_points"]
+    assert again.manifest["points_by_reason"] == first.manifest["points_by_reason"]
+    assert sw.open(tmp_path / "o").boundary().equals(b0)
+
+
+def test_max_real_batch_own_starts_change_cost_not_answer():
+    """``MaxRealBatchInput.starts``: a point started from another point's equilibrium (or a
+    blend of two) gets the max Re λ of its cold start to round-off (the equilibrium is
+    polished), the start is used (from the roots: under half the Reynolds solves of the
+    cold starts), every equilibrium comes back in ``r``, and a start of the wrong shape is
+    refused naming the field."""
+    from rotordyn import _core
+    from rotordyn.analysis.assembly import Assembled
+    from rotordyn.model.builtin import paper_rig
+    from rotordyn.sweep.points import equilibrium_options
+
+    asm = Assembled(paper_rig())
+    sol = _core.SystemSolver(asm.model)
+
+    def batch(pcs, restart, starts=None, max_iter=100):
+        inp = _core.MaxRealBatchInput()
+        n = len(pcs)
+        inp.omega = [2 * np.pi * 50.0] * n
+        inp.pressure = pcs
+        inp.a = np.array([asm.config_vector(-1.85e-3, None)] * n)
+        inp.valid, inp.restart = [1] * n, restart
+        inp.r0 = np.zeros(0)
+        inp.options = equilibrium_options({"max_iter": max_iter})
+        inp.xy_pairs, inp.rot_pairs = asm.rotor.xy_pairs(), asm.rotor.rot_pairs()
+        inp.sleeve = [q for bc in asm.bearings for q in bc.sleeve]
+        if starts is not None:
+            inp.starts = starts
+        return _core.max_real_batch(sol, inp)
+
+    pcs = [0.05e6, 0.15e6, 0.3e6]
+    cold = batch(pcs, [1, 1, 1])
+    R = np.asarray(cold.r)
+    assert R.shape == (3, asm.n) and np.isfinite(R).all()
+    S = np.full((3, asm.n), np.nan)
+    S[0], S[2] = R[1], 0.5 * (R[0] + R[1])  # other points' equilibria; row 1: cold
+    own = batch(pcs, [1, 1, 1], S)
+    np.testing.assert_allclose(np.asarray(own.y), np.asarray(cold.y), rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(np.asarray(own.r), R, rtol=1e-9, atol=1e-15)
+    # the start is used: from the roots themselves far fewer Reynolds solves than cold
+    n0 = sol.reynolds_solves
+    batch(pcs, [1, 1, 1])
+    n_cold = sol.reynolds_solves - n0
+    n0 = sol.reynolds_solves
+    warm = batch(pcs, [1, 1, 1], R.copy())
+    n_warm = sol.reynolds_solves - n0
+    assert n_warm < 0.5 * n_cold, (n_warm, n_cold)
+    np.testing.assert_allclose(np.asarray(warm.y), np.asarray(cold.y), rtol=1e-9, atol=1e-9)
+    with pytest.raises(rd.InputError, match="starts"):
+        batch(pcs, [1, 1, 1], np.zeros((2, asm.n)))

@@ -140,6 +140,7 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
         plan = ColumnPlan(nodes[x], nodes[y], nodes[z] if z else [0],
                           shape if z else shape + (1,))
         s0, s1, s2 = (strides + [0])[:3]
+        job.return_equilibria = True
 
         def pid3(p):  # point_id of plan index (i, j, k) (k = 0 for a curve)
             return base + p[0] * s0 + p[1] * s1 + p[2] * s2

@@ -109,6 +109,7 @@ class Job:
         self.key = ""     # spec hash (task names)
         self.level = 0    # refinement level (boundary)
         self.starts = {}  # point_id -> starting equilibrium (a boundary surface's level)
+        self.return_equilibria = False  # boundary chunks: the equilibria in the metadata
         self.meta = {}    # provenance and units, stored in every part's schema metadata
 
     def point(self, pid: int):
@@ -147,7 +148,8 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
         asms: list = [None] * len(pl)
         eqs: list = []
         if pids is not None:
-            blocks = boundary_blocks(job, variants, chunk_id, pl, asms, equilibria=eqs)
+            blocks = boundary_blocks(job, variants, chunk_id, pl, asms,
+                                     equilibria=eqs if job.return_equilibria else None)
         else:
             blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
         t = block_table(job, schema(job.analysis, list(job.axes)), categories(job.analysis),
