@@ -12,10 +12,13 @@ evaluated fine points (linear interpolation on each cell edge), stored as polyli
 ``_boundary.parquet``; the evaluated points are the dataset's rows, with the ``level`` that
 asked for them.
 
-With ``z`` (a third axis, e.g. speed) the same refinement runs over boxes of eight corners and
-finds the boundary surface over (x, y, z); it is stored as the zero contour of every z slice
-of the fine grid that holds a sign change (a ``z`` column beside ``line``, ``vertex``, ``x``,
-``y``).
+With ``z`` (a third axis, e.g. speed) the boundary surface over (x, y, z) is found by
+columns along y by default (``refine = "columns"``, :mod:`rotordyn.sweep.surface`: each
+column's crossings certified by their two fine nodes, about two points per crossing, each
+point started from its neighbours' equilibria), or with ``refine = "cells"`` by the same
+refinement over boxes of eight corners; it is stored as the zero contour of every z slice of
+the fine grid that holds a sign change (a ``z`` column beside ``line``, ``vertex``, ``x``,
+``y``; by columns, drawn on :func:`rotordyn.sweep.surface.column_field`).
 
 Limitation (as any marching refinement): a stable or unstable island smaller than a coarse
 cell, whose corners all share one state, is not seen; choose the coarse grid accordingly.
