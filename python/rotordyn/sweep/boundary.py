@@ -192,9 +192,8 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                 for c, (table, cnt) in ex.map(job, todo):
                     table, R = pop_equilibria(table)
                     if by_cols and R is not None and R.shape[1]:
-                        for q, r in zip(pls[c], R):
-                            if np.isfinite(r).all():
-                                eqs[int(q)] = r
+                        good = np.isfinite(R).all(axis=1)
+                        eqs.update(zip(np.asarray(pls[c])[good].tolist(), R[good]))
                     store.add(c, table, cnt, 0)
                     state.update(_classify(table))
                     bar.update(cnt)
