@@ -50,6 +50,7 @@ void bind_threshold(py::module_& m) {
       .def_readwrite("restart", &MaxRealBatchInput::restart)
       .def_readwrite("valid", &MaxRealBatchInput::valid)
       .def_readwrite("r0", &MaxRealBatchInput::r0)
+      .def_readwrite("starts", &MaxRealBatchInput::starts)
       .def_readwrite("options", &MaxRealBatchInput::options)
       .def_readwrite("exclude_sleeve", &MaxRealBatchInput::exclude_sleeve)
       .def_readwrite("xy_pairs", &MaxRealBatchInput::xy_pairs)
@@ -60,7 +61,8 @@ void bind_threshold(py::module_& m) {
       .def_readonly("freq", &MaxRealBatchResult::freq)
       .def_readonly("status", &MaxRealBatchResult::status)
       .def_readonly("message", &MaxRealBatchResult::message)
-      .def_readonly("r_last", &MaxRealBatchResult::r_last);
+      .def_readonly("r_last", &MaxRealBatchResult::r_last)
+      .def_readonly("r", &MaxRealBatchResult::r);
   m.def("max_real_batch", &max_real_batch, py::arg("solver"), py::arg("input"),
         py::call_guard<py::gil_scoped_release>(),
         "max Re lambda (and its frequency) at each listed point of a boundary-refinement "

@@ -238,6 +238,9 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
                      "n_pts and a of shape (n_pts, n)");
   if (in.r0.size() != 0 && in.r0.size() != n)
     throw InputError("max_real_batch: expected r0 of length 0 or n");
+  const bool own = in.starts.rows() != 0 || in.starts.cols() != 0;
+  if (own && (in.starts.rows() != np || in.starts.cols() != n))
+    throw InputError("max_real_batch: expected starts of shape (0, 0) or (n_pts, n)");
   ThresholdLineInput rule;  // the scan's rule of max Re λ
   rule.options = in.options;
   rule.exclude_sleeve = in.exclude_sleeve;
@@ -249,6 +252,7 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
   out.freq = Eigen::VectorXd::Constant(np, kNaN);
   out.status.assign(static_cast<std::size_t>(np), "invalid");
   out.message.assign(static_cast<std::size_t>(np), "");
+  out.r = RowMatrixXd::Constant(np, n, kNaN);
   Eigen::VectorXd prev = in.r0;
   for (Eigen::Index i = 0; i < np; ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -256,7 +260,8 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
       prev.resize(0);
       continue;
     }
-    const Eigen::VectorXd start = in.restart[k] ? Eigen::VectorXd() : prev;
+    Eigen::VectorXd start = in.restart[k] ? Eigen::VectorXd() : prev;
+    if (own && in.starts.row(i).allFinite()) start = in.starts.row(i).transpose();
     try {
       const Point p = max_real(solver, rule, in.omega[i], in.pressure[i],
                                in.a.row(i).transpose(), start);
@@ -264,6 +269,7 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
       out.y[i] = p.y;
       out.freq[i] = p.f;
       prev = p.r;
+      if (p.r.size() == n) out.r.row(i) = p.r.transpose();
     } catch (const std::exception& ex) {
       out.status[k] = "error";
       out.message[k] = named(ex);

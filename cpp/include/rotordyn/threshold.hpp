@@ -57,6 +57,9 @@ struct MaxRealBatchInput {
   std::vector<int> restart;     ///< (n_pts,) 1: start cold, 0: continue along the line
   std::vector<int> valid;       ///< (n_pts,) 0: operating values refused (no evaluation)
   Eigen::VectorXd r0;           ///< start of a first point with restart 0 (empty: cold)
+  /// (n_pts, n) or empty: a point's own start (e.g. a solved neighbour's equilibrium) where
+  /// its row is finite, overriding restart and the continuation; NaN rows follow restart
+  RowMatrixXd starts;
   EquilibriumOptions options;
   bool exclude_sleeve = false;
   std::vector<std::pair<int, int>> xy_pairs, rot_pairs;
@@ -69,11 +72,14 @@ struct MaxRealBatchResult {
   /// raised (message "<Error>: what"), "invalid" for valid = 0
   std::vector<std::string> status, message;
   Eigen::VectorXd r_last;       ///< the last point's equilibrium if it was analysed, else empty
+  RowMatrixXd r;                ///< (n_pts, n) each point's equilibrium if analysed, else NaN
 };
 
 /// Points in order on `solver`, as the per-point loop: a point with restart 0 starts from the
 /// previous point's equilibrium when that one converged (ok or contact) and was analysed,
-/// else cold; a failed or invalid point makes the next one start cold.
+/// else cold; a failed or invalid point makes the next one start cold. A finite row of
+/// `starts` is that point's start instead (the equilibrium is polished to round-off, so the
+/// start changes the cost, not the answer beyond round-off).
 MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput& in);
 
 }  // namespace rotordyn

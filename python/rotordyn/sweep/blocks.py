@@ -217,10 +217,13 @@ def _stab_block(S, a, b, at, ids):
 
 
 # -- boundary refinement --------------------------------------------------------------------
-def boundary_blocks(job, variants, chunk_id, pids, asms):
+def boundary_blocks(job, variants, chunk_id, pids, asms, equilibria=None):
     """One row per listed point: max Re λ (rotor modes only with exclude_sleeve_modes), its
     frequency, point_stable; one ``max_real_batch`` call per run of points on one model (the
-    equilibrium continued along lines as the per-point loop did, across runs too)."""
+    equilibrium continued along lines as the per-point loop did, across runs too). A point
+    with a start in ``job.starts`` (point_id -> equilibrium, e.g. a solved neighbour's)
+    starts there instead. ``equilibria`` (a list) receives the (n_pts, n) equilibria (NaN
+    rows: none) when given."""
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     items = point_list(job, variants, pids, asms)
     n = len(items)
@@ -229,6 +232,8 @@ def boundary_blocks(job, variants, chunk_id, pids, asms):
     y, fr = np.full(n, math.nan), np.full(n, math.nan)
     carry = None  # the last evaluated point's equilibrium (None: failed)
     errs = [it[4] for it in items]
+    starts = getattr(job, "starts", None) or {}
+    R = None
     for i, j, good in segments(items, errs):
         if not good:  # a model-variant error leaves the continuation as it was
             st[i], msg[i] = "error", errs[i]
@@ -255,7 +260,19 @@ def boundary_blocks(job, variants, chunk_id, pids, asms):
         inp.exclude_sleeve = excl
         inp.xy_pairs, inp.rot_pairs = asm.rotor.xy_pairs(), asm.rotor.rot_pairs()
         inp.sleeve = [q for bc in asm.bearings for q in bc.sleeve]
+        if starts:
+            S = np.full((j - i, asm.n), math.nan)
+            for k in range(i, j):
+                r0 = starts.get(int(pids[k]))
+                if r0 is not None and len(r0) == asm.n:
+                    S[k - i] = r0
+            inp.starts = S
         res = _core.max_real_batch(asm.solver, inp)
+        if equilibria is not None:
+            if R is None:
+                R = np.full((n, asm.n), math.nan)
+            if R.shape[1] == asm.n:
+                R[i:j] = np.asarray(res.r)
         r_last = np.asarray(res.r_last)
         carry = r_last if r_last.size else None
         for k, (s, m) in enumerate(zip(res.status, res.message)):
@@ -278,4 +295,6 @@ def boundary_blocks(job, variants, chunk_id, pids, asms):
                                "status": st[a:b], "message": ""}))
         else:
             blocks.append((k, {"status": st[a:b], "message": msg[a:b]}))
+    if equilibria is not None:
+        equilibria.append(np.full((n, 0), math.nan) if R is None else R)
     return blocks

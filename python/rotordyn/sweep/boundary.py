@@ -12,10 +12,13 @@ evaluated fine points (linear interpolation on each cell edge), stored as polyli
 ``_boundary.parquet``; the evaluated points are the dataset's rows, with the ``level`` that
 asked for them.
 
-With ``z`` (a third axis, e.g. speed) the same refinement runs over boxes of eight corners and
-finds the boundary surface over (x, y, z); it is stored as the zero contour of every z slice
-of the fine grid that holds a sign change (a ``z`` column beside ``line``, ``vertex``, ``x``,
-``y``).
+With ``z`` (a third axis, e.g. speed) the boundary surface over (x, y, z) is found by
+columns along y by default (``refine = "columns"``, :mod:`rotordyn.sweep.surface`: each
+column's crossings certified by their two fine nodes, about two points per crossing, each
+point started from its neighbours' equilibria), or with ``refine = "cells"`` by the same
+refinement over boxes of eight corners; it is stored as the zero contour of every z slice of
+the fine grid that holds a sign change (a ``z`` column beside ``line``, ``vertex``, ``x``,
+``y``; by columns, drawn on :func:`rotordyn.sweep.surface.column_field`).
 
 Limitation (as any marching refinement): a stable or unstable island smaller than a coarse
 cell, whose corners all share one state, is not seen; choose the coarse grid accordingly.
@@ -35,7 +38,8 @@ from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, e
                                       group_size)
 from rotordyn.sweep.spec import boundary_axes, fine_axes
 from rotordyn.sweep.store import BOUNDARY, Store
-from rotordyn.sweep.work import Job
+from rotordyn.sweep.surface import ColumnPlan, column_field
+from rotordyn.sweep.work import Job, pop_equilibria
 
 
 def _classify(table) -> dict[int, tuple[int, float, float]]:
@@ -134,16 +138,40 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     def pid(*idx):
         return base + sum(i * st for i, st in zip(idx, strides))
 
-    plan = Refinement(*[nodes[a] for a in refined])
+    by_cols = spec.options.get("refine", "columns" if z is not None else "cells") == "columns"
+    if by_cols:  # the surface (or curve) by columns along y: plan indices (i, j, k)
+        plan = ColumnPlan(nodes[x], nodes[y], nodes[z] if z else [0],
+                          shape if z else shape + (1,))
+        s0, s1, s2 = (strides + [0])[:3]
+        job.return_equilibria = True
+
+        def pid3(p):  # point_id of plan index (i, j, k) (k = 0 for a curve)
+            return base + p[0] * s0 + p[1] * s1 + p[2] * s2
+    else:
+        plan = Refinement(*[nodes[a] for a in refined])
     state: dict[int, tuple] = {}
+    eqs: dict[int, np.ndarray] = {}  # point_id -> equilibrium (columns: starts of the next)
     cid = 0
     ex = None
     bar = Progress(1, 0, {}, enabled=None if progress is None else bool(progress))
     try:
         while True:
-            new = sorted(q for q in (pid(*idx) for idx in plan.points) if q not in state)
-            chunks = [(cid + k, new[a:a + spec.chunk_size])
-                      for k, a in enumerate(range(0, len(new), spec.chunk_size))]
+            idxs = sorted(plan.points)
+            size = spec.chunk_size
+            if by_cols:  # independent points (own starts): few large chunks per level
+                new = sorted(q for q in map(pid3, idxs) if q not in state)
+                size = max(size, 100, min(2000, -(-len(new) // 8)))
+                job.starts = {}
+                for p, src in plan.source.items():
+                    rs = [eqs.get(pid3(q)) for q, _ in src]
+                    if src and all(r is not None for r in rs):
+                        job.starts[pid3(p)] = sum(w * r for (_, w), r in zip(src, rs))
+                    elif any(r is not None for r in rs):  # the nearest one solved
+                        job.starts[pid3(p)] = next(r for r in rs if r is not None)
+            else:
+                new = sorted(q for q in (pid(*i) for i in idxs) if q not in state)
+            chunks = [(cid + k, new[a:a + size])
+                      for k, a in enumerate(range(0, len(new), size))]
             cid += len(chunks)
             bar.n += len(chunks)
             todo = []
@@ -160,11 +188,20 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                 if ex is None:
                     ex = executor(scheduler, workers or min(len(todo), os.cpu_count() or 1),
                                   threads, worker_timeout, bar)
+                pls = {t[0]: t[3] for t in todo}
                 for c, (table, cnt) in ex.map(job, todo):
+                    table, R = pop_equilibria(table)
+                    if by_cols and R is not None and R.shape[1]:
+                        good = np.isfinite(R).all(axis=1)
+                        eqs.update(zip(np.asarray(pls[c])[good].tolist(), R[good]))
                     store.add(c, table, cnt, 0)
                     state.update(_classify(table))
                     bar.update(cnt)
-            if not plan.advance(_States(state, pid)):
+            if by_cols:
+                more = plan.advance({i: state[pid3(i)][:2] for i in idxs})
+            else:
+                more = plan.advance(_States(state, pid))
+            if not more:
                 break
     except KeyboardInterrupt:
         bar.close()
@@ -190,6 +227,9 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
             fin = zk[np.isfinite(zk)]
             if z is not None and (fin.size == 0 or (fin < 0).all() or (fin >= 0).all()):
                 continue  # nothing evaluated on this slice changes sign
+            if by_cols:
+                kk = 0 if k is None else k
+                zk = column_field(plan.states[:, :, kk], plan.evaluated[:, :, kk], zk)
             for ln in polylines(ax[x], ax[y], zk):
                 rows["line"] += [n_line] * len(ln)
                 rows["vertex"] += list(range(len(ln)))
@@ -209,6 +249,8 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                   for k in ("ok", "failed", "unstable")}
         man = {**header, "n_chunks": cid, "n_points": len(state),
                "fine_points": int(np.prod(shape))}
+        if by_cols:  # the points this run asked for, by reason (resumed chunks included)
+            man["points_by_reason"] = dict(plan.stats)
         return SweepResult(Path(out), man, len(entries), cid, counts)
     finally:
         store.close()

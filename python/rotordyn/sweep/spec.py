@@ -102,7 +102,7 @@ OPTIONS = {
     "threshold": {"vary": _opt_axis, "exclude_sleeve_modes": _opt_bool,
                   "xtol": _opt_range(0.0, math.inf)},
     "boundary": {"x": _opt_axis, "y": _opt_axis, "z": _opt_axis,
-                 "resolution": _opt_int(3, 100001),
+                 "resolution": _opt_int(3, 100001), "refine": _opt_choice("columns", "cells"),
                  "exclude_sleeve_modes": _opt_bool},
     "unbalance": {**_LIN, "unbalances": _opt_unbalances, "stations": _opt_stations,
                   "operating_speed_hz": _opt_operating},

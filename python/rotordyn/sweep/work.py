@@ -118,6 +118,8 @@ class Job:
         self.line_pos = varying[-1] if varying else 0  # continuation runs along this axis
         self.key = ""     # spec hash (task names)
         self.level = 0    # refinement level (boundary)
+        self.starts = {}  # point_id -> starting equilibrium (a boundary surface's level)
+        self.return_equilibria = False  # boundary chunks: the equilibria in the metadata
         self.meta = {}    # provenance and units, stored in every part's schema metadata
 
     def point(self, pid: int):
@@ -125,6 +127,25 @@ class Job:
         idx = np.unravel_index(pid, self.shape)
         return tuple(int(i) for i in idx), {a: vals[i] for (a, vals), i in
                                             zip(self.axes.items(), idx)}
+
+
+EQUILIBRIA = b"rotordyn:equilibria"  # schema metadata of a boundary chunk (not stored)
+
+
+def pack_equilibria(R) -> bytes:
+    R = np.ascontiguousarray(R, dtype="<f8")
+    return np.array(R.shape, dtype="<i8").tobytes() + R.tobytes()
+
+
+def pop_equilibria(table: pa.Table):
+    """(table without the equilibria, (n_pts, n) equilibria or None)."""
+    md = dict(table.schema.metadata or {})
+    raw = md.pop(EQUILIBRIA, None)
+    if raw is None:
+        return table, None
+    shape = tuple(np.frombuffer(raw[:16], dtype="<i8"))
+    R = np.frombuffer(raw[16:], dtype="<f8").reshape(shape)
+    return table.replace_schema_metadata(md or None), R
 
 
 def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
@@ -135,10 +156,18 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     if pids is not None or job.analysis in _BLOCKS:
         pl = list(range(lo, hi)) if pids is None else list(pids)
         asms: list = [None] * len(pl)
-        fn = boundary_blocks if pids is not None else _BLOCKS[job.analysis]
-        blocks = fn(job, variants, chunk_id, pl, asms)
-        return block_table(job, schema(job.analysis, list(job.axes)), categories(job.analysis),
-                           identity(job, chunk_id, pl, asms), blocks)
+        eqs: list = []
+        if pids is not None:
+            blocks = boundary_blocks(job, variants, chunk_id, pl, asms,
+                                     equilibria=eqs if job.return_equilibria else None)
+        else:
+            blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
+        t = block_table(job, schema(job.analysis, list(job.axes)), categories(job.analysis),
+                        identity(job, chunk_id, pl, asms), blocks)
+        if eqs:  # the points' equilibria, for the next refinement level's starts
+            t = t.replace_schema_metadata({**(t.schema.metadata or {}),
+                                           EQUILIBRIA: pack_equilibria(eqs[0])})
+        return t
     rows: list[dict] = []
     _ANALYSIS[job.analysis](job, variants, chunk_id, lo, hi, rows)
     return to_table(job, rows)
