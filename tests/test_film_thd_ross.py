@@ -5,7 +5,8 @@ and the comparison are benchmarks/ross_plain_journal.py (shared with bench_thd_p
 a two-axial-groove bearing (two 150° pads), 20 Hz, 2 kN, ROSS's ISO VG 68 at 40 °C, adiabatic,
 fresh oil at each pad, Gümbel cavitation (ROSS clips the full-film pressure), ROSS's laminar
 range; both sides solve the equilibrium from the load. Coarse equal grid: ROSS 15 × 8 volumes
-per pad, ours 36 × 8 intervals (≈ 6 s, most of it numba compiling ROSS's kernels).
+per pad, ours 36 × 8 intervals (≈ 13 s CPU, 26 s wall on the loaded machine, nearly all of it
+importing ROSS and numba compiling its kernels; ROSS's solve itself 0.7 s, ours 3 ms).
 """
 
 import importlib.util
@@ -44,18 +45,19 @@ def test_thd_plain_journal_against_ross():
     its temperature iteration at a 1 % relative change and Nelder–Mead at tol 0.8, integrates
     its force by the trapezoid rule across the grooves, and places unknowns at volume centres
     (ours at nodes); our law differs from its by ≤ 1.2 %.
-    * eccentricity within 0.002 (measured +0.0002 here, +0.0003 at 72 × 16; the isothermal
-      film's is 0.036 lower), attitude within 1.5° (measured +0.24°, −0.73°);
-    * the temperature field at ROSS's volume centres within 15 % of ROSS's rise (measured 7.4 %,
-      10 %: the end rows above), within 0.7 K away from the end rows (measured 0.35 K, 0.10 K)
-      and on the loaded pad (measured 0.18 K, 0.10 K), the pads' outlet temperatures within
+    * eccentricity within 0.001 (measured +0.0002 here, +0.0003 at 72 × 16; ROSS's Nelder–Mead
+      stops within ~0.8 N, 2e-4 in ε; the isothermal film's is 0.036 lower), attitude within
+      1.5° (measured +0.24°, −0.73°);
+    * the temperature field at ROSS's volume centres within 20 % of ROSS's rise (measured 7.4 %,
+      10 %: the end rows above), within 0.7 K away from the end rows (measured 0.35 K, 0.09 K)
+      and on the loaded pad (measured 0.18 K, 0.09 K), the pads' outlet temperatures within
       0.3 K (measured 0.15, 0.11 K) of a 9.1 K rise;
     * K with our temperature following the journal (ROSS's definition: the temperature
       re-solved at each perturbed position; ours from our THD equilibrium under loads ± 1 %)
-      within 6 % of the largest entry (measured 3.1 %, 1.0 %); with our field frozen (the
-      dynamic K the package returns) kyy is larger (+5.6 %, +8.5 %): asserted within 12 %;
-    * C (ROSS re-solves the temperature with the squeeze terms; ours frozen) within 6 % of the
-      largest (measured 3.1 %, 2.6 %).
+      within 6.5 % of the largest entry (measured 3.1 %, 1.0 %); with our field frozen (the
+      dynamic K the package returns) kyy is larger (+5.6 %, +8.5 %): asserted within 17 %;
+    * C (ROSS re-solves the temperature with the squeeze terms; ours frozen) within 6.5 % of the
+      largest (measured 3.2 %, 2.4 %).
     """
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -76,15 +78,16 @@ def test_thd_plain_journal_against_ross():
     assert res.status == "ok"
     k_ff = case.field_following_stiffness(jb, oil)
     d = case.compare(res, ro, k_ff)
-    assert abs(d["d_eps"]) < 0.002
+    tol_eps = 1e-3
+    assert abs(d["d_eps"]) < tol_eps
     assert abs(d["d_attitude_deg"]) < 1.5
-    assert d["d_field_rel"] < 0.15
+    assert d["d_field_rel"] < 0.20
     assert d["d_field_inner_max_k"] < 0.7
-    assert d["d_field_pad_max_k"][1] < 0.7
+    assert d["d_field_pad_max_k"][1] < 0.4
     assert np.max(np.abs(d["outlet_ours_c"] - d["outlet_ross_c"])) < 0.3
-    assert np.max(np.abs(d["dK_following"])) < 0.06
-    assert np.max(np.abs(d["dK_frozen"])) < 0.12
-    assert np.max(np.abs(d["dC"])) < 0.06
+    assert np.max(np.abs(d["dK_following"])) < 0.065
+    assert np.max(np.abs(d["dK_frozen"])) < 0.17
+    assert np.max(np.abs(d["dC"])) < 0.065
     # the THD film, not an isothermal one, is what agrees: the isothermal equilibrium is off
     e = jb.static_equilibrium(load_n=case.LOAD_N, speed_hz=case.SPEED_HZ)
-    assert ro["eps"] - e.eccentricity_ratio > 10 * 0.002
+    assert ro["eps"] - e.eccentricity_ratio > 10 * tol_eps
