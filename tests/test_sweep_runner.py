@@ -76,6 +76,28 @@ def test_threads_processes_identical(reference, tmp_path):
                                   check_exact=True)
 
 
+def test_workers_while_port_8787_is_taken(reference, tmp_path):
+    """A --workers sweep while another program (e.g. a second sweep, or a dask dashboard)
+    holds port 8787: the LocalCluster's HTTP endpoints go to a free port, with no warning
+    (warnings are errors in this suite) and the same rows. Before: dask bound them to 8787
+    even without a dashboard, warned 'port 8787 is already in use' and retried."""
+    import socket
+
+    spec, ref = reference
+    holder = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    try:
+        holder.bind(("0.0.0.0", 8787))
+    except OSError:
+        holder.close()
+        pytest.skip("port 8787 is in use by another program")
+    try:
+        holder.listen(1)
+        assert run_sweep(spec, tmp_path / "p", workers=1, progress=False).complete
+    finally:
+        holder.close()
+    assert _digest(tmp_path / "p") == _digest(ref)
+
+
 def test_driver_then_workers_identical(reference, tmp_path, monkeypatch):
     """--workers: the driver computes chunks while the LocalCluster starts, then hands the
     chunks not yet begun to the workers. Forced here to exactly 2 chunks in the driver and 7

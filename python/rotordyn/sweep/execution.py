@@ -311,8 +311,14 @@ class Dask:
             main = threading.current_thread() is threading.main_thread()
             old = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
             try:
+                # No dashboard, and the scheduler's HTTP endpoints on a free loopback port:
+                # with dashboard_address=None dask still binds them to port 8787, so a
+                # second sweep running at the same time on the machine met "port 8787 is
+                # already in use" (a warning, then a retry on another port).
                 self.cluster = LocalCluster(n_workers=workers, threads_per_worker=1,
                                             processes=True, dashboard_address=None,
+                                            scheduler_kwargs={"dashboard_address":
+                                                              "127.0.0.1:0"},
                                             silence_logs=logging.CRITICAL)
             finally:
                 if main:
