@@ -78,6 +78,13 @@ struct LinearSystem {
     else
       ldlt.solve(b, x);
   }
+  /// x_v = A⁻¹ x_v in place for four vectors (the same values as four solve_spd calls).
+  void solve_spd4(double* const x[4]) const {
+    if (factor == Factor::band)
+      band.solve4(x);
+    else
+      for (int v = 0; v < 4; ++v) ldlt.solve(x[v], x[v]);
+  }
   Eigen::VectorXd rhs, sol;
 };
 
@@ -246,6 +253,16 @@ struct ReynoldsSolver::Impl {
   void flows();  // out.inlet_flow_m3_s, out.side_flow_m3_s (postprocess)
   bool pressure_only = false;  // solve() fills p_pa and h_min only (postprocess_pressure)
   void postprocess_pressure();
+
+  // The four frozen-set linearised solves of coefficients() at once (dh = -cos φ, -sin φ with
+  // d_dhdt = 0, then the same as d_dhdt with dh = 0; all mirror-symmetric): dp_v as
+  // ReynoldsSolver::linearize gives them, bit for bit, with one four-vector triangular solve.
+  // False (nothing done) where linearize takes another branch (short bearing, jfo or a
+  // pivoting LU, a degenerate Swift–Stieber set).
+  bool linearize_trig4(RowMatrixXd (&dp)[4]);
+  RowMatrixXd trig_c, trig_s, trig_zero;  // -cos φ_j, -sin φ_j, 0 on the nodes (lazily)
+  void make_trig_fields();
+  std::array<Eigen::VectorXd, 4> lin_r;  // linearize_trig4's right-hand sides / solutions
 
   // d(residual)/d(h, hdot) at the frozen state, S's unknown ordering and row weights.
   void residual_derivative(const LinearSystem& S, const double* dh, const double* dhdot,

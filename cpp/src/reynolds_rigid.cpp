@@ -56,16 +56,20 @@ DynamicCoefficients ReynoldsSolver::coefficients(double x, double y, double omeg
   Impl& s = *impl_;
   DynamicCoefficients dc;
   dc.force_n = rigid(x, y, 0.0, 0.0, omega).force_n;
-  RowMatrixXd zero = RowMatrixXd::Zero(s.N, s.K1);
-  RowMatrixXd mc(s.N, s.K1), ms(s.N, s.K1);
-  for (int j = 0; j < s.N; ++j) {
-    mc.row(j).setConstant(-s.cosphi[j]);
-    ms.row(j).setConstant(-s.sinphi[j]);
+  s.make_trig_fields();
+  const RowMatrixXd &mc = s.trig_c, &ms = s.trig_s, &zero = s.trig_zero;
+  RowMatrixXd dp[4];
+  if (s.linearize_trig4(dp)) {  // the four solves below at once, the same values
+    dc.K.col(0) = -integrate_force(dp[0]);
+    dc.K.col(1) = -integrate_force(dp[1]);
+    dc.C.col(0) = -integrate_force(dp[2]);
+    dc.C.col(1) = -integrate_force(dp[3]);
+  } else {
+    dc.K.col(0) = -integrate_force(linearize(mc, zero));
+    dc.K.col(1) = -integrate_force(linearize(ms, zero));
+    dc.C.col(0) = -integrate_force(linearize(zero, mc));
+    dc.C.col(1) = -integrate_force(linearize(zero, ms));
   }
-  dc.K.col(0) = -integrate_force(linearize(mc, zero));
-  dc.K.col(1) = -integrate_force(linearize(ms, zero));
-  dc.C.col(0) = -integrate_force(linearize(zero, mc));
-  dc.C.col(1) = -integrate_force(linearize(zero, ms));
   check_finite(dc);
   return dc;
 }

@@ -732,6 +732,59 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
   return dp;
 }
 
+void ReynoldsSolver::Impl::make_trig_fields() {
+  if (trig_c.rows() == N) return;
+  trig_c.resize(N, K1);
+  trig_s.resize(N, K1);
+  trig_zero = RowMatrixXd::Zero(N, K1);
+  for (int j = 0; j < N; ++j) {
+    trig_c.row(j).setConstant(-cosphi[j]);
+    trig_s.row(j).setConstant(-sinphi[j]);
+  }
+}
+
+bool ReynoldsSolver::Impl::linearize_trig4(RowMatrixXd (&dpo)[4]) {
+  if (!solved || geo.short_bearing || cav == Cavitation::jfo) return false;
+  LinearSystem& S = *sys;
+  if (S.factor != LinearSystem::Factor::ldlt && S.factor != LinearSystem::Factor::band)
+    return false;
+  if (cav == Cavitation::reynolds && n_biactive > 0) return false;
+  // the fields are constant along z: mirror-symmetric, so a half system stays the system
+  const double* dh[4] = {trig_c.data(), trig_s.data(), trig_zero.data(), trig_zero.data()};
+  const double* dhd[4] = {trig_zero.data(), trig_zero.data(), trig_c.data(), trig_s.data()};
+  double* x[4];
+  for (int v = 0; v < 4; ++v) {
+    Eigen::VectorXd& r = lin_r[v];
+    residual_derivative(S, dh[v], dhd[v], r);
+    if (cav == Cavitation::reynolds)
+      for (int i = 0; i < S.n_unk; ++i)
+        if (S.active[i]) r[i] = 0.0;
+    r = -r;
+    x[v] = r.data();
+  }
+  S.solve_spd4(x);
+  // as linearize(): gumbel's one-sided mean where p_full vanishes to round-off
+  double pmax = 0.0;
+  for (int n = 0; n < n_nodes; ++n) pmax = std::max(pmax, std::abs(pfull[n]));
+  const double ptol = 1e-10 * pmax;
+  for (int v = 0; v < 4; ++v) {
+    dpo[v] = RowMatrixXd::Zero(N, K1);
+    double* dpd = dpo[v].data();
+    for (int i = 0; i < S.n_unk; ++i) {
+      const int n = S.node_of[i];
+      double wgt = 1.0;
+      if (cav == Cavitation::gumbel)
+        wgt = pfull[n] > ptol ? 1.0 : (pfull[n] < -ptol ? 0.0 : 0.5);
+      if (cav == Cavitation::reynolds && S.active[i]) wgt = 0.0;
+      dpd[n] = wgt * x[v][i];
+    }
+    if (S.half)
+      for (int j = 0; j < N; ++j)
+        for (int k = Kh + 1; k < mirror_end(); ++k) dpd[j * K1 + k] = dpd[j * K1 + K1 - 1 - k];
+  }
+  return true;
+}
+
 double ReynoldsSolver::integrate(const RowMatrixXd& pr, const RowMatrixXd& g) const {
   const Impl& s = *impl_;
   if (pr.rows() != s.N || pr.cols() != s.K1)
