@@ -35,12 +35,11 @@ void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* 
 // falls outside the band or across the opening (the caller then uses the sparse factor).
 bool ReynoldsSolver::Impl::fill_band(LinearSystem& S, const char* mk, int cut) {
   BandLDLT& B = S.band;
-  B.begin_columns(cut);
+  B.begin(cut);  // the whole band cleared in one pass (not b + 1 values per column)
   const int w = B.bandwidth() + 1;
   for (int i = 0; i < S.n_unk; ++i) {
     const int ci = B.opened(i);
     double* col = B.column(ci);
-    std::fill(col, col + w, 0.0);
     if (mk && mk[i]) {
       col[0] = 1.0;
       continue;

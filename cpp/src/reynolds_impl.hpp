@@ -250,6 +250,7 @@ struct ReynoldsSolver::Impl {
   void factor_solve_jfo(LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   void solve_factored(const LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   void postprocess();
+  std::vector<double> tau_ring;  // postprocess: the shear of one ring's nodes
   void flows();  // out.inlet_flow_m3_s, out.side_flow_m3_s (postprocess)
   bool pressure_only = false;  // solve() fills p_pa and h_min only (postprocess_pressure)
   void postprocess_pressure();
@@ -271,5 +272,30 @@ struct ReynoldsSolver::Impl {
   void residual_derivative_t(const LinearSystem& S, const double* dh, const double* dhdot,
                              Eigen::VectorXd& out) const;
 };
+
+// (inline: the active-set loop calls it once per held node and iteration)
+inline double ReynoldsSolver::Impl::cell_residual(int n, const std::vector<double>& pp) const {
+  const int e = east(n), w = west(n);
+  const double pn = pp[n];
+  if (end_row(n)) {  // a sealed end's half cell: half the φ-balance, its inner face, the seal
+    double r = cE[n] * (pn - pp[e]) + cE[w] * (pn - pp[w]);
+    if (omega >= 0.0)
+      r += qE[n] * theta[n] - qE[w] * theta[w];
+    else
+      r += qE[n] * theta[e] - qE[w] * theta[n];
+    r += src[n] * theta[n];
+    const int k = n % K1;
+    return 0.5 * r + (k == 0 ? cN[n] * (pn - pp[n + 1]) : cN[n - 1] * (pn - pp[n - 1])) +
+           gseal * pn;
+  }
+  double r = cE[n] * (pn - pp[e]) + cE[w] * (pn - pp[w]) + cN[n] * (pn - pp[n + 1]) +
+             cN[n - 1] * (pn - pp[n - 1]);
+  if (omega >= 0.0)
+    r += qE[n] * theta[n] - qE[w] * theta[w];
+  else
+    r += qE[n] * theta[e] - qE[w] * theta[n];
+  r += src[n] * theta[n];
+  return r;
+}
 
 }  // namespace rotordyn

@@ -464,30 +464,6 @@ void ReynoldsSolver::Impl::fill_spd(LinearSystem& S, const std::vector<char>* ma
   }
 }
 
-double ReynoldsSolver::Impl::cell_residual(int n, const std::vector<double>& pp) const {
-  const int e = east(n), w = west(n);
-  const double pn = pp[n];
-  if (end_row(n)) {  // a sealed end's half cell: half the φ-balance, its inner face, the seal
-    double r = cE[n] * (pn - pp[e]) + cE[w] * (pn - pp[w]);
-    if (omega >= 0.0)
-      r += qE[n] * theta[n] - qE[w] * theta[w];
-    else
-      r += qE[n] * theta[e] - qE[w] * theta[n];
-    r += src[n] * theta[n];
-    const int k = n % K1;
-    return 0.5 * r + (k == 0 ? cN[n] * (pn - pp[n + 1]) : cN[n - 1] * (pn - pp[n - 1])) +
-           gseal * pn;
-  }
-  double r = cE[n] * (pn - pp[e]) + cE[w] * (pn - pp[w]) + cN[n] * (pn - pp[n + 1]) +
-             cN[n - 1] * (pn - pp[n - 1]);
-  if (omega >= 0.0)
-    r += qE[n] * theta[n] - qE[w] * theta[w];
-  else
-    r += qE[n] * theta[e] - qE[w] * theta[n];
-  r += src[n] * theta[n];
-  return r;
-}
-
 // ---- public plumbing -------------------------------------------------------------------
 
 ReynoldsSolver::ReynoldsSolver(const JournalBearingGeometry& geometry, const FilmGrid& grid,
