@@ -64,6 +64,15 @@ struct LinearSystem {
   BandLDLT band;               // when a decoupled ring opens the circle (reynolds_band.hpp)
   std::vector<int> ring_first; // ring j's unknowns are ring_first[j] .. ring_first[j+1]-1
   bool use_band = true;
+  // fill_band's per-unknown table (built on its first use): node, west node, flags, weight,
+  // north/east neighbour unknowns where a slot exists (-1 none) and their distances mod n.
+  struct FillEntry {
+    int n, wn, un, ue, dn, de;
+    bool has_s, has_n, seal;
+    double wp;
+  };
+  std::vector<FillEntry> fill_tab;
+  bool fill_tab_ok = false;
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
   bool lu_analysed = false;
   std::vector<char> active;    // unknown: 1 = p held at 0 (reynolds) / cavitated (jfo)
