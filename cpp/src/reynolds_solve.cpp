@@ -781,9 +781,21 @@ bool ReynoldsSolver::Impl::linearize_trig4(RowMatrixXd (&dpo)[4]) {
   const double* dh[4] = {trig_c.data(), trig_s.data(), trig_zero.data(), trig_zero.data()};
   const double* dhd[4] = {trig_zero.data(), trig_zero.data(), trig_c.data(), trig_s.data()};
   double* x[4];
+  const double fs = R * dphi * dz;  // as residual_derivative_t
   for (int v = 0; v < 4; ++v) {
     Eigen::VectorXd& r = lin_r[v];
-    residual_derivative(S, dh[v], dhd[v], r);
+    if (v < 2) {
+      residual_derivative(S, dh[v], dhd[v], r);
+    } else {
+      // dh = 0: every term of residual_derivative but the squeeze one is a product with a
+      // face's dh (±0), so its value is the squeeze term alone (the same bits, up to the sign
+      // of a zero)
+      r.resize(S.n_unk);
+      for (int i = 0; i < S.n_unk; ++i) {
+        const int n = S.node_of[i];
+        r[i] = S.wphi[i] * (fs * dhd[v][n] * theta[n]);
+      }
+    }
     if (cav == Cavitation::reynolds)
       for (int i = 0; i < S.n_unk; ++i)
         if (S.active[i]) r[i] = 0.0;
