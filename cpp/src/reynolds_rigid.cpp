@@ -37,7 +37,10 @@ const FilmSolution& ReynoldsSolver::rigid(double x, double y, double vx, double 
   if (!(e < s.c))
     throw InputError("eccentricity ratio: expected sqrt(x_m^2 + y_m^2)/clearance_m < 1, got " +
                      num(e / s.c));
-  RowMatrixXd h(s.N, s.K1), hd(s.N, s.K1);
+  RowMatrixXd& h = s.rigid_h;  // kept between calls: no allocation per solve
+  RowMatrixXd& hd = s.rigid_hd;
+  h.resize(s.N, s.K1);
+  hd.resize(s.N, s.K1);
   for (int j = 0; j < s.N; ++j) {
     const double hv = s.c - x * s.cosphi[j] - y * s.sinphi[j];
     const double hdv = -vx * s.cosphi[j] - vy * s.sinphi[j];
