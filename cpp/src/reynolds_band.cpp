@@ -114,7 +114,8 @@ ROTORDYN_UNROLL
     if (!nzmask) continue;
     const double inv = 1.0 / d;
     auto at = [&](int t) {  // col[t] from the registers
-      return (t % 2 == 0) ? _mm_cvtsd_f64(cp[t / 2]) : _mm_cvtsd_f64(_mm_unpackhi_pd(cp[t / 2], cp[t / 2]));
+      return (t % 2 == 0) ? _mm_cvtsd_f64(cp[t / 2])
+                          : _mm_cvtsd_f64(_mm_unpackhi_pd(cp[t / 2], cp[t / 2]));
     };
     auto pair = [&](int t) {  // (col[t], col[t + 1]), t + 1 <= B
       return (t % 2 == 0) ? cp[t / 2] : _mm_shuffle_pd(cp[t / 2], cp[t / 2 + 1], 1);
