@@ -126,3 +126,25 @@ def test_coefficients_four_solves_at_once_equal_four_linearize_calls(cav, band):
                 (n_circ, n_axial, sym, x, y)
             if band and cav == "reynolds":
                 assert used_band
+
+
+def test_rigid_symmetry_promise_does_not_outlive_its_call():
+    """rigid() tells its solve() that the film is constant along z (no symmetry scan). A rigid()
+    that fails inside that solve (speed out of range) must not leave the promise for a later
+    solve() of a non-symmetric film (a tilted journal): that one equals a fresh solver's."""
+    def mk():
+        return rotordyn.JournalBearing(diameter_m=D, length_m=L, clearance_m=C_RAD,
+                                       viscosity_pa_s=MU, n_circ=36, n_axial=8,
+                                       cavitation="reynolds",
+                                       grooves=list(GROOVES["line"])).solver()
+    s, fresh = mk(), mk()
+    phi, z = np.asarray(s.phi_rad), np.asarray(s.z_m)
+    h = C_RAD - 0.4e-4 * np.cos(phi)[:, None] - 0.3e-4 * np.sin(phi)[:, None] \
+        - 0.6e-4 * (z / L)[None, :] * np.cos(phi)[:, None]  # tilted: h(φ, z) != h(φ, -z)
+    zero = np.zeros_like(h)
+    with pytest.raises(rotordyn.errors.InputError):
+        s.rigid(0.3e-4, -0.2e-4, 0.0, 0.0, 1e9)
+    p = np.array(s.solve(h, zero, W).p_pa)
+    p_fresh = np.array(fresh.solve(h, zero, W).p_pa)
+    assert np.array_equal(p, p_fresh)
+    assert not np.allclose(p, p[:, ::-1])  # really not mirror-symmetric

@@ -270,6 +270,8 @@ struct ReynoldsSolver::Impl {
   // False (nothing done) where linearize takes another branch (short bearing, jfo or a
   // pivoting LU, a degenerate Swift–Stieber set).
   bool linearize_trig4(RowMatrixXd (&dp)[4]);
+  // set by rigid() for the one solve() it calls (h, ∂h/∂t depend on φ only); solve() clears it
+  bool film_z_constant = false;
   RowMatrixXd rigid_h, rigid_hd;  // ReynoldsSolver::rigid's film (written fully every call)
   RowMatrixXd trig_c, trig_s, trig_zero;  // -cos φ_j, -sin φ_j, 0 on the nodes (lazily)
   void make_trig_fields();

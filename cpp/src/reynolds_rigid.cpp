@@ -47,6 +47,7 @@ const FilmSolution& ReynoldsSolver::rigid(double x, double y, double vx, double 
     h.row(j).setConstant(hv);
     hd.row(j).setConstant(hdv);
   }
+  s.film_z_constant = true;  // solve() then skips its symmetry scan (and clears the flag)
   solve(h, hd, omega);
   s.out.h_min_m = s.c - e;
   double ang = e > 0.0 ? std::atan2(y, x) * 180.0 / kPi : 0.0;

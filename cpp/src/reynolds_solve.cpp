@@ -614,6 +614,9 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
 const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixXd& dhdt,
                                           double omega) {
   Impl& s = *impl_;
+  // rigid()'s promise holds for this call only: taken (and cleared) before anything can throw
+  const bool z_constant = s.film_z_constant;
+  s.film_z_constant = false;
   if (h.rows() != s.N || h.cols() != s.K1)
     throw InputError(shape_msg("h", s.N, s.K1, h.rows(), h.cols()));
   if (dhdt.rows() != s.N || dhdt.cols() != s.K1)
@@ -626,8 +629,9 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
     s.solved = true;
     return s.out;
   }
+  // rigid() passes films constant along z (mirror-symmetric by construction)
   const bool half = s.use_symmetry && s.pockets_symmetric && s.visc_symmetric &&
-                    s.symmetric(h.data()) && s.symmetric(dhdt.data());
+                    (z_constant || (s.symmetric(h.data()) && s.symmetric(dhdt.data())));
   if (half && !s.halfsys_built) {
     s.build_system(s.halfsys, true);
     s.halfsys_built = true;
