@@ -2,7 +2,8 @@
 cavitation-set prediction, a SciPy implementation of the same discretisation, and ROSS's
 fluid-film bearing when a Python with ``ross`` is available.
 
-Run ``python benchmarks/bench_reynolds.py [--repeat 5] [--points 32] [--ross-python PATH]``.
+Run ``python benchmarks/bench_reynolds.py [--repeat 5] [--points 32] [--ross-python PATH]
+[--baseline-path DIR]``.
 Protocol (benchmarks/_common.py): one BLAS/OpenMP thread per side, the sides of each ratio
 timed in interleaved repeats, medians of the repeats, **wall time and CPU time of the same
 calls side by side** (ratios use wall time on both sides), the machine load before and after.
@@ -17,6 +18,13 @@ For every grid (36×8, 72×16, 144×32, 144×31) and cavitation model it prints,
 * the cycled force with the exact axial-symmetry reduction off (full grid);
 * the SciPy baseline (scipy.sparse + SuperLU, the same primal–dual active set / p–θ iteration,
   checked against the C++ forces) on a quarter of the points.
+
+``--baseline-path DIR`` adds the same-run comparison with another build of rotordyn (``DIR``
+holds its ``rotordyn`` package with its compiled ``_core``, e.g. the previous commit's
+``python/`` with that build's ``_core`` copied in): the cycled force and (K, C) of every grid and
+model, each side timed in its own interpreter (ours in this one, the other in a worker started
+with ``PYTHONPATH=DIR``), rounds interleaved, medians, wall and CPU, and the largest relative
+difference of the two builds' forces, K and C on the same positions.
 
 ROSS rows: ``FluidFlow`` (ROSS 2.x, finite differences, solve-then-clip film, no groove) builds
 a new object per point; ours is given both reusing its solver and building a new bearing per
@@ -275,6 +283,125 @@ def bench_ross(n_circ, n_axial, repeat, ross_python=None):
     return json.loads(r.stdout.strip().splitlines()[-1])
 
 
+BASELINE_WORKER = r"""
+import json, sys, time
+import rotordyn
+D, L, C_RAD, MU = (float(a) for a in sys.argv[1:5])
+print(json.dumps({"file": rotordyn.__file__, "version": rotordyn.__version__}), flush=True)
+solvers = {}
+for line in sys.stdin:
+    cmd = json.loads(line)
+    key = (tuple(cmd["grid"]), cmd["cav"])
+    if key not in solvers:
+        solvers[key] = rotordyn.JournalBearing(
+            diameter_m=D, length_m=L, clearance_m=C_RAD, viscosity_pa_s=MU, n_circ=key[0][0],
+            n_axial=key[0][1], cavitation=key[1],
+            grooves=[rotordyn.Groove(*g) for g in cmd["grooves"]]).solver()
+    s, pts, om = solvers[key], cmd["pts"], cmd["omega"]
+    if cmd["what"] == "force":
+        fn = lambda: [s.force(p, q, 0.0, 0.0, om) for p, q in pts]
+        val = lambda r: [list(map(float, f)) for f in r]
+    else:
+        fn = lambda: [s.coefficients(p, q, om) for p, q in pts]
+        val = lambda r: [[float(v) for v in (*k.K.ravel(), *k.C.ravel())] for k in r]
+    if cmd.get("values"):
+        print(json.dumps({"values": val(fn())}), flush=True)
+        continue
+    w0, c0 = time.perf_counter(), time.process_time()
+    fn()
+    print(json.dumps({"wall": time.perf_counter() - w0, "cpu": time.process_time() - c0}),
+          flush=True)
+"""
+
+
+class BaselineBuild:
+    """Another build of rotordyn in its own interpreter (``PYTHONPATH=path``), driven over a
+    pipe: one timed round (or the values) per request."""
+
+    def __init__(self, path):
+        import subprocess
+
+        env = dict(os.environ, PYTHONPATH=os.path.abspath(path), OMP_NUM_THREADS="1",
+                   OPENBLAS_NUM_THREADS="1", MKL_NUM_THREADS="1")
+        self.proc = subprocess.Popen(
+            [sys.executable, "-c", BASELINE_WORKER, *(str(v) for v in (D, L, C_RAD, MU))],
+            stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, env=env)
+        import json
+
+        self.info = json.loads(self.proc.stdout.readline())
+
+    def ask(self, **cmd):
+        import json
+
+        self.proc.stdin.write(json.dumps(cmd) + "\n")
+        self.proc.stdin.flush()
+        line = self.proc.stdout.readline()
+        if not line:
+            raise RuntimeError("baseline worker failed (see its stderr above)")
+        return json.loads(line)
+
+    def close(self):
+        self.proc.stdin.close()
+        self.proc.wait(timeout=60)
+
+
+def bench_baseline(path, grids, models, pts, omega, repeat):
+    """This build against the build at ``path``: cycled force and (K, C) per call, rounds
+    interleaved (one of ours, one of theirs), medians of ``repeat``; prints one row per grid and
+    model with both builds' wall/CPU µs, the CPU and wall ratios (this / baseline), and the
+    largest difference of forces, K and C relative to each quantity's largest magnitude."""
+    med = statistics.median
+    base = BaselineBuild(path)
+    print(f"\nthis build ({rotordyn.__file__}) vs the build at {path} "
+          f"({base.info['file']}; same run; rounds interleaved, medians of "
+          f"{repeat}; per call over {len(pts)} cycled positions; 'wall/CPU' in µs; "
+          f"ratio = this / baseline):")
+    print(f"  {'grid':>8} {'model':>8} | {'F base':>12} {'F this':>12} {'CPU':>6} {'wall':>6} | "
+          f"{'KC base':>12} {'KC this':>12} {'CPU':>6} {'wall':>6} | {'dF':>7} {'dK,C':>7}")
+    grooves = [(g.center_deg, g.width_deg, g.pressure_pa) for g in GROOVES]
+    try:
+        for grid in grids:
+            for cav in models:
+                s = rotordyn.JournalBearing(
+                    diameter_m=D, length_m=L, clearance_m=C_RAD, viscosity_pa_s=MU,
+                    n_circ=grid[0], n_axial=grid[1], cavitation=cav, grooves=GROOVES).solver()
+                fns = {"force": lambda: [s.force(p, q, 0.0, 0.0, omega) for p, q in pts],
+                       "kc": lambda: [s.coefficients(p, q, omega) for p, q in pts]}
+                req = dict(grid=list(grid), cav=cav, grooves=grooves, pts=pts, omega=omega)
+                ours = {k: ([], []) for k in fns}
+                theirs = {k: ([], []) for k in fns}
+                for k, fn in fns.items():  # warm-up (first solves build the coarse solvers)
+                    fn()
+                    base.ask(what=k, **req)
+                for _ in range(repeat):
+                    for k, fn in fns.items():
+                        w0, c0 = time.perf_counter(), time.process_time()
+                        fn()
+                        ours[k][0].append(time.perf_counter() - w0)
+                        ours[k][1].append(time.process_time() - c0)
+                        r = base.ask(what=k, **req)
+                        theirs[k][0].append(r["wall"])
+                        theirs[k][1].append(r["cpu"])
+                f_this = np.array([s.force(p, q, 0.0, 0.0, omega) for p, q in pts])
+                f_base = np.array(base.ask(what="force", values=True, **req)["values"])
+                k_this = np.array([[*k.K.ravel(), *k.C.ravel()]
+                                   for k in (s.coefficients(p, q, omega) for p, q in pts)])
+                k_base = np.array(base.ask(what="kc", values=True, **req)["values"])
+                d_f = np.abs(f_this - f_base).max() / np.abs(f_base).max()
+                d_k = max(np.abs(k_this[:, c] - k_base[:, c]).max() / np.abs(k_base[:, c]).max()
+                          for c in (slice(0, 4), slice(4, 8)))
+                n = len(pts)
+                row = [f"  {grid[0]:>4}x{grid[1]:<3} {cav:>8} |"]
+                for k in fns:
+                    bw, bc = med(theirs[k][0]) / n, med(theirs[k][1]) / n
+                    tw, tc = med(ours[k][0]) / n, med(ours[k][1]) / n
+                    row.append(f" {bw * 1e6:6.0f}/{bc * 1e6:<5.0f} {tw * 1e6:6.0f}/{tc * 1e6:<5.0f}"
+                               f" {tc / bc:6.2f} {tw / bw:6.2f} |")
+                print("".join(row) + f" {d_f:7.1e} {d_k:7.1e}", flush=True)
+    finally:
+        base.close()
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
@@ -284,6 +411,11 @@ def main(argv=None):
     ap.add_argument("--no-scipy", action="store_true")
     ap.add_argument("--ross-python", default=None,
                     help="python of a venv with ross-rotordynamics (used if ross is not importable)")
+    ap.add_argument("--baseline-path", default=None,
+                    help="directory holding another build's rotordyn package: same-run "
+                         "comparison of the cycled force and (K, C) with that build")
+    ap.add_argument("--baseline-only", action="store_true",
+                    help="with --baseline-path: only that comparison (and the load)")
     args = ap.parse_args(argv)
     header("bench_reynolds: Reynolds film force and (K, C)")
     omega = 2 * math.pi * SPEED_HZ
@@ -296,6 +428,11 @@ def main(argv=None):
     hdr = (f"{'grid':>8} {'model':>8} | {'F same':>12} | {'F cycled before':>15} "
            f"{'after':>12} {'its':>9} | {'KC before':>12} {'after':>12} | {'F full grid':>12} | "
            f"{'scipy F':>8} {'x F':>5} | {'dev':>7}")
+    if args.baseline_path:
+        bench_baseline(args.baseline_path, grids, models, pts, omega, args.repeat)
+        if args.baseline_only:
+            footer()
+            return 0
     print(hdr)
     print("-" * len(hdr))
     for grid in grids:

@@ -92,3 +92,59 @@ def test_equilibrium_within_call_continuation_is_history_free(grooves):
     f = fast.force(0.2e-4, -0.4e-4, 0.0, 0.0, W)
     g = solvers("reynolds", grooves)[0].force(0.2e-4, -0.4e-4, 0.0, 0.0, W)
     assert np.array_equal(f, g)
+
+
+def _kc_by_linearize(s, x, y):
+    """(K, C) from four separate linearize() solves about rigid(x, y) (the definition)."""
+    s.rigid(x, y, 0.0, 0.0, W)
+    K1 = len(s.z_m)
+    mc = np.repeat(-np.cos(s.phi_rad)[:, None], K1, 1)
+    ms = np.repeat(-np.sin(s.phi_rad)[:, None], K1, 1)
+    z = np.zeros_like(mc)
+    cols = [-np.asarray(s.integrate_force(s.linearize(dh, dd)))
+            for dh, dd in ((mc, z), (ms, z), (z, mc), (z, ms))]
+    return np.column_stack(cols[:2]), np.column_stack(cols[2:])
+
+
+@pytest.mark.parametrize("band", [True, False])
+@pytest.mark.parametrize("cav", ["reynolds", "gumbel", "none"])
+def test_coefficients_four_solves_at_once_equal_four_linearize_calls(cav, band):
+    """coefficients() solves its four perturbations with one four-vector triangular solve; each
+    lane gets the operations of a single solve in the same order, so K and C equal those of four
+    linearize() calls bit for bit (banded and sparse factor, half and full grid, 72x16)."""
+    for n_circ, n_axial, sym in ((36, 8, True), (36, 8, False), (72, 16, True)):
+        s = rotordyn.JournalBearing(diameter_m=D, length_m=L, clearance_m=C_RAD,
+                                    viscosity_pa_s=MU, n_circ=n_circ, n_axial=n_axial,
+                                    cavitation=cav, grooves=list(GROOVES["line"])).solver()
+        s.band_factor = band
+        s.use_axial_symmetry = sym
+        for x, y, _, _ in POINTS:
+            k = s.coefficients(x, y, W)
+            used_band = s.band_factor_used
+            K, C = _kc_by_linearize(s, x, y)
+            assert np.array_equal(np.asarray(k.K), K) and np.array_equal(np.asarray(k.C), C), \
+                (n_circ, n_axial, sym, x, y)
+            if band and cav == "reynolds":
+                assert used_band
+
+
+def test_rigid_symmetry_promise_does_not_outlive_its_call():
+    """rigid() tells its solve() that the film is constant along z (no symmetry scan). A rigid()
+    that fails inside that solve (speed out of range) must not leave the promise for a later
+    solve() of a non-symmetric film (a tilted journal): that one equals a fresh solver's."""
+    def mk():
+        return rotordyn.JournalBearing(diameter_m=D, length_m=L, clearance_m=C_RAD,
+                                       viscosity_pa_s=MU, n_circ=36, n_axial=8,
+                                       cavitation="reynolds",
+                                       grooves=list(GROOVES["line"])).solver()
+    s, fresh = mk(), mk()
+    phi, z = np.asarray(s.phi_rad), np.asarray(s.z_m)
+    h = C_RAD - 0.4e-4 * np.cos(phi)[:, None] - 0.3e-4 * np.sin(phi)[:, None] \
+        - 0.6e-4 * (z / L)[None, :] * np.cos(phi)[:, None]  # tilted: h(φ, z) != h(φ, -z)
+    zero = np.zeros_like(h)
+    with pytest.raises(rotordyn.errors.InputError):
+        s.rigid(0.3e-4, -0.2e-4, 0.0, 0.0, 1e9)
+    p = np.array(s.solve(h, zero, W).p_pa)
+    p_fresh = np.array(fresh.solve(h, zero, W).p_pa)
+    assert np.array_equal(p, p_fresh)
+    assert not np.allclose(p, p[:, ::-1])  # really not mirror-symmetric

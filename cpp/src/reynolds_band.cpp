@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace rotordyn {
 
@@ -42,6 +45,7 @@ bool BandLDLT::analyze(const SpMat& A, const std::vector<int>& ring_first, doubl
   a_.assign(static_cast<std::size_t>(n_ + b_) * (b_ + 1), 0.0);
   coupled_.assign(n_, 0);
   ys_.assign(n_ + b_, 0.0);
+  y4s_.assign(static_cast<std::size_t>(n_ + b_) * 4, 0.0);
   usable_ = true;
   return true;
 }
@@ -83,6 +87,66 @@ ROTORDYN_UNROLL
   return true;
 }
 
+#if defined(__SSE2__)
+// factor_band<B> with the updates two lanes at a time (SSE2, baseline x86-64): every entry
+// gets the same multiply and subtract, in the same order, as in the scalar loop, so the factor
+// is the same bit for bit. The pivot column is read once into registers in the pairs its
+// column was last written in (offsets 0-1, 2-3, ...; store forwarding), the shifted pairs an
+// odd t1 needs are shuffles of them; every target column is written in those same pairs.
+template <int B>
+bool factor_band_sse2(double* a, int n, char* coupled) {
+  constexpr int w = B + 1;
+  constexpr int P = B / 2 + 1;  // pairs covering offsets 0..B (the last a single when B even)
+  const __m128d zero = _mm_setzero_pd();
+  for (int c = 0; c < n; ++c) {
+    double* col = a + static_cast<std::size_t>(c) * w;
+    __m128d cp[P];
+ROTORDYN_UNROLL
+    for (int m = 0; m < P; ++m)
+      cp[m] = (2 * m + 1 <= B) ? _mm_loadu_pd(col + 2 * m) : _mm_load_sd(col + 2 * m);
+    const double d = _mm_cvtsd_f64(cp[0]);
+    if (!(d != 0.0 && std::isfinite(d))) return false;
+    // any nonzero below the diagonal (lane 0 of pair 0 is the diagonal)
+    int nzmask = _mm_movemask_pd(_mm_cmpneq_pd(cp[0], zero)) & 2;
+ROTORDYN_UNROLL
+    for (int m = 1; m < P; ++m) nzmask |= _mm_movemask_pd(_mm_cmpneq_pd(cp[m], zero));
+    coupled[c] = nzmask ? 1 : 0;
+    if (!nzmask) continue;
+    const double inv = 1.0 / d;
+    auto at = [&](int t) {  // col[t] from the registers
+      return (t % 2 == 0) ? _mm_cvtsd_f64(cp[t / 2])
+                          : _mm_cvtsd_f64(_mm_unpackhi_pd(cp[t / 2], cp[t / 2]));
+    };
+    auto pair = [&](int t) {  // (col[t], col[t + 1]), t + 1 <= B
+      return (t % 2 == 0) ? cp[t / 2] : _mm_shuffle_pd(cp[t / 2], cp[t / 2 + 1], 1);
+    };
+ROTORDYN_UNROLL
+    for (int t1 = 1; t1 <= B; ++t1) {
+      const double g = at(t1) * inv;
+      const __m128d gv = _mm_set1_pd(g);
+      double* tgt = a + static_cast<std::size_t>(c + t1) * w;  // offsets 0..B-t1
+      int o = 0;
+ROTORDYN_UNROLL
+      for (; o + 1 <= B - t1; o += 2)
+        _mm_storeu_pd(tgt + o, _mm_sub_pd(_mm_loadu_pd(tgt + o), _mm_mul_pd(gv, pair(t1 + o))));
+      if (o == B - t1) tgt[o] -= g * at(t1 + o);
+    }
+    // L(c + t, c) = A(c + t, c) / d; the diagonal stays (1·d = d)
+    cp[0] = _mm_mul_pd(cp[0], _mm_set_pd(inv, 1.0));
+ROTORDYN_UNROLL
+    for (int m = 1; m < P; ++m) cp[m] = _mm_mul_pd(cp[m], _mm_set1_pd(inv));
+ROTORDYN_UNROLL
+    for (int m = 0; m < P; ++m) {
+      if (2 * m + 1 <= B)
+        _mm_storeu_pd(col + 2 * m, cp[m]);
+      else
+        _mm_store_sd(col + 2 * m, cp[m]);
+    }
+  }
+  return true;
+}
+#endif
+
 // y = A⁻¹ y with the factor of factor_band<B> (same B / b_run convention).
 template <int B>
 void solve_band(const double* a, int n, int b_run, const char* coupled, double* y) {
@@ -105,6 +169,94 @@ void solve_band(const double* a, int n, int b_run, const char* coupled, double* 
     y[c] = (y[c] - far) - col[1] * y[c + 1];
   }
 }
+
+#if defined(__SSE2__)
+// solve_band<B> with the forward updates two lanes at a time, in pairs of y at even indices
+// (every step writes y in the same pairs: store forwarding), and the diagonal scaling of y[c]
+// done as soon as it is final; every value gets the same operations in the same order as in
+// solve_band<B> (the back substitution is that loop), so the solution is the same bit for bit.
+template <int B, int kOdd>
+inline void forward_step_sse2(const double* col, double* yp, double yc) {
+  // yp = y + c + 1, odd absolute index when kOdd: y[c + t] -= col[t] yc, t = 1..B
+  const __m128d yv = _mm_set1_pd(yc);
+  int t = 1;
+  if (kOdd) {
+    yp[0] -= col[1] * yc;
+    t = 2;
+  }
+ROTORDYN_UNROLL
+  for (; t + 1 <= B; t += 2)
+    _mm_storeu_pd(yp + t - 1, _mm_sub_pd(_mm_loadu_pd(yp + t - 1),
+                                         _mm_mul_pd(_mm_loadu_pd(col + t), yv)));
+  if (t == B) yp[t - 1] -= col[t] * yc;
+}
+
+template <int B>
+void solve_band_sse2(const double* a, int n, const char* coupled, double* y) {
+  constexpr int w = B + 1;
+  for (int c = 0; c < n; ++c) {
+    const double* col = a + static_cast<std::size_t>(c) * w;
+    const double yc = y[c];
+    if (coupled[c] && yc != 0.0) {
+      if ((c + 1) & 1)
+        forward_step_sse2<B, 1>(col, y + c + 1, yc);
+      else
+        forward_step_sse2<B, 0>(col, y + c + 1, yc);
+    }
+    y[c] = yc / col[0];
+  }
+  for (int c = n - 1; c >= 0; --c) {
+    if (!coupled[c]) continue;
+    const double* col = a + static_cast<std::size_t>(c) * w;
+    double far = 0.0;
+ROTORDYN_UNROLL
+    for (int t = B; t >= 2; --t) far += col[t] * y[c + t];
+    y[c] = (y[c] - far) - col[1] * y[c + 1];
+  }
+}
+
+// Four right-hand sides at once, y4[c·4 + v] (v = 0..3): for each of them the operations of
+// solve_band<B> in its order (a zero y[c] updates by ±0 instead of skipping: the same values),
+// two lanes per instruction.
+template <int B>
+void solve_band4_sse2(const double* a, int n, const char* coupled, double* y4) {
+  constexpr int w = B + 1;
+  for (int c = 0; c < n; ++c) {
+    const double* col = a + static_cast<std::size_t>(c) * w;
+    double* yc = y4 + static_cast<std::size_t>(c) * 4;
+    const __m128d y01 = _mm_loadu_pd(yc), y23 = _mm_loadu_pd(yc + 2);
+    if (coupled[c]) {
+ROTORDYN_UNROLL
+      for (int t = 1; t <= B; ++t) {
+        const __m128d l = _mm_set1_pd(col[t]);
+        double* yt = yc + 4 * t;
+        _mm_storeu_pd(yt, _mm_sub_pd(_mm_loadu_pd(yt), _mm_mul_pd(l, y01)));
+        _mm_storeu_pd(yt + 2, _mm_sub_pd(_mm_loadu_pd(yt + 2), _mm_mul_pd(l, y23)));
+      }
+    }
+    const __m128d d = _mm_set1_pd(col[0]);
+    _mm_storeu_pd(yc, _mm_div_pd(y01, d));
+    _mm_storeu_pd(yc + 2, _mm_div_pd(y23, d));
+  }
+  for (int c = n - 1; c >= 0; --c) {
+    if (!coupled[c]) continue;
+    const double* col = a + static_cast<std::size_t>(c) * w;
+    double* yc = y4 + static_cast<std::size_t>(c) * 4;
+    __m128d f01 = _mm_setzero_pd(), f23 = _mm_setzero_pd();
+ROTORDYN_UNROLL
+    for (int t = B; t >= 2; --t) {
+      const __m128d l = _mm_set1_pd(col[t]);
+      f01 = _mm_add_pd(f01, _mm_mul_pd(l, _mm_loadu_pd(yc + 4 * t)));
+      f23 = _mm_add_pd(f23, _mm_mul_pd(l, _mm_loadu_pd(yc + 4 * t + 2)));
+    }
+    const __m128d l1 = _mm_set1_pd(col[1]);
+    _mm_storeu_pd(yc, _mm_sub_pd(_mm_sub_pd(_mm_loadu_pd(yc), f01),
+                                 _mm_mul_pd(l1, _mm_loadu_pd(yc + 4))));
+    _mm_storeu_pd(yc + 2, _mm_sub_pd(_mm_sub_pd(_mm_loadu_pd(yc + 2), f23),
+                                     _mm_mul_pd(l1, _mm_loadu_pd(yc + 6))));
+  }
+}
+#endif
 
 // The bandwidths of the grids met in practice (unknowns per ring of a half or full film)
 // get unrolled kernels; others the generic loop.
@@ -141,9 +293,15 @@ void BandLDLT::begin(int cut) {
 bool BandLDLT::factorize_assembled() {
   if (!usable_) return false;
   switch (b_) {
+#if defined(__SSE2__)
+#define ROTORDYN_BAND_FACTOR(B) \
+  case B:                      \
+    return factor_band_sse2<B>(a_.data(), n_, coupled_.data());
+#else
 #define ROTORDYN_BAND_FACTOR(B) \
   case B:                      \
     return factor_band<B>(a_.data(), n_, B, coupled_.data());
+#endif
     ROTORDYN_BAND_CASES(ROTORDYN_BAND_FACTOR)
 #undef ROTORDYN_BAND_FACTOR
     default:
@@ -159,10 +317,17 @@ void BandLDLT::solve(const double* bvec, double* x) const {
   std::copy(bvec + shift_, bvec + n_, y);
   std::copy(bvec, bvec + shift_, y + (n_ - shift_));
   switch (b_) {
+#if defined(__SSE2__)
+#define ROTORDYN_BAND_SOLVE(B) \
+  case B:                     \
+    solve_band_sse2<B>(a_.data(), n_, coupled_.data(), y); \
+    break;
+#else
 #define ROTORDYN_BAND_SOLVE(B) \
   case B:                     \
     solve_band<B>(a_.data(), n_, B, coupled_.data(), y); \
     break;
+#endif
     ROTORDYN_BAND_CASES(ROTORDYN_BAND_SOLVE)
 #undef ROTORDYN_BAND_SOLVE
     default:
@@ -170,6 +335,40 @@ void BandLDLT::solve(const double* bvec, double* x) const {
   }
   std::copy(y, y + (n_ - shift_), x + shift_);
   std::copy(y + (n_ - shift_), y + n_, x);
+}
+
+void BandLDLT::solve4(double* const x[4]) const {
+#if defined(__SSE2__)
+  switch (b_) {
+#define ROTORDYN_BAND_SOLVE4(B) case B:
+    ROTORDYN_BAND_CASES(ROTORDYN_BAND_SOLVE4)
+#undef ROTORDYN_BAND_SOLVE4
+    {
+      double* y4 = y4s_.data();
+      std::fill(y4s_.begin() + static_cast<std::size_t>(n_) * 4, y4s_.end(), 0.0);
+      for (int i = 0; i < n_; ++i) {  // y4[opened(i)·4 + v] = x_v[i]
+        double* yc = y4 + static_cast<std::size_t>(opened(i)) * 4;
+        for (int v = 0; v < 4; ++v) yc[v] = x[v][i];
+      }
+      switch (b_) {
+#define ROTORDYN_BAND_SOLVE4(B) \
+  case B:                      \
+    solve_band4_sse2<B>(a_.data(), n_, coupled_.data(), y4); \
+    break;
+        ROTORDYN_BAND_CASES(ROTORDYN_BAND_SOLVE4)
+#undef ROTORDYN_BAND_SOLVE4
+      }
+      for (int i = 0; i < n_; ++i) {
+        const double* yc = y4 + static_cast<std::size_t>(opened(i)) * 4;
+        for (int v = 0; v < 4; ++v) x[v][i] = yc[v];
+      }
+      return;
+    }
+    default:
+      break;
+  }
+#endif
+  for (int v = 0; v < 4; ++v) solve(x[v], x[v]);
 }
 
 }  // namespace rotordyn

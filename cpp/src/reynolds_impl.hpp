@@ -64,6 +64,15 @@ struct LinearSystem {
   BandLDLT band;               // when a decoupled ring opens the circle (reynolds_band.hpp)
   std::vector<int> ring_first; // ring j's unknowns are ring_first[j] .. ring_first[j+1]-1
   bool use_band = true;
+  // fill_band's per-unknown table (built on its first use): node, west node, flags, weight,
+  // north/east neighbour unknowns where a slot exists (-1 none) and their distances mod n.
+  struct FillEntry {
+    int n, wn, un, ue, dn, de;
+    bool has_s, has_n, seal;
+    double wp;
+  };
+  std::vector<FillEntry> fill_tab;
+  bool fill_tab_ok = false;
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
   bool lu_analysed = false;
   std::vector<char> active;    // unknown: 1 = p held at 0 (reynolds) / cavitated (jfo)
@@ -77,6 +86,13 @@ struct LinearSystem {
       band.solve(b, x);
     else
       ldlt.solve(b, x);
+  }
+  /// x_v = A⁻¹ x_v in place for four vectors (the same values as four solve_spd calls).
+  void solve_spd4(double* const x[4]) const {
+    if (factor == Factor::band)
+      band.solve4(x);
+    else
+      for (int v = 0; v < 4; ++v) ldlt.solve(x[v], x[v]);
   }
   Eigen::VectorXd rhs, sol;
 };
@@ -243,9 +259,23 @@ struct ReynoldsSolver::Impl {
   void factor_solve_jfo(LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   void solve_factored(const LinearSystem& S, const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   void postprocess();
+  std::vector<double> tau_ring;  // postprocess: the shear of one ring's nodes
   void flows();  // out.inlet_flow_m3_s, out.side_flow_m3_s (postprocess)
   bool pressure_only = false;  // solve() fills p_pa and h_min only (postprocess_pressure)
   void postprocess_pressure();
+
+  // The four frozen-set linearised solves of coefficients() at once (dh = -cos φ, -sin φ with
+  // d_dhdt = 0, then the same as d_dhdt with dh = 0; all mirror-symmetric): dp_v as
+  // ReynoldsSolver::linearize gives them, bit for bit, with one four-vector triangular solve.
+  // False (nothing done) where linearize takes another branch (short bearing, jfo or a
+  // pivoting LU, a degenerate Swift–Stieber set).
+  bool linearize_trig4(RowMatrixXd (&dp)[4]);
+  // set by rigid() for the one solve() it calls (h, ∂h/∂t depend on φ only); solve() clears it
+  bool film_z_constant = false;
+  RowMatrixXd rigid_h, rigid_hd;  // ReynoldsSolver::rigid's film (written fully every call)
+  RowMatrixXd trig_c, trig_s, trig_zero;  // -cos φ_j, -sin φ_j, 0 on the nodes (lazily)
+  void make_trig_fields();
+  std::array<Eigen::VectorXd, 4> lin_r;  // linearize_trig4's right-hand sides / solutions
 
   // d(residual)/d(h, hdot) at the frozen state, S's unknown ordering and row weights.
   void residual_derivative(const LinearSystem& S, const double* dh, const double* dhdot,
@@ -254,5 +284,30 @@ struct ReynoldsSolver::Impl {
   void residual_derivative_t(const LinearSystem& S, const double* dh, const double* dhdot,
                              Eigen::VectorXd& out) const;
 };
+
+// (inline: the active-set loop calls it once per held node and iteration)
+inline double ReynoldsSolver::Impl::cell_residual(int n, const std::vector<double>& pp) const {
+  const int e = east(n), w = west(n);
+  const double pn = pp[n];
+  if (end_row(n)) {  // a sealed end's half cell: half the φ-balance, its inner face, the seal
+    double r = cE[n] * (pn - pp[e]) + cE[w] * (pn - pp[w]);
+    if (omega >= 0.0)
+      r += qE[n] * theta[n] - qE[w] * theta[w];
+    else
+      r += qE[n] * theta[e] - qE[w] * theta[n];
+    r += src[n] * theta[n];
+    const int k = n % K1;
+    return 0.5 * r + (k == 0 ? cN[n] * (pn - pp[n + 1]) : cN[n - 1] * (pn - pp[n - 1])) +
+           gseal * pn;
+  }
+  double r = cE[n] * (pn - pp[e]) + cE[w] * (pn - pp[w]) + cN[n] * (pn - pp[n + 1]) +
+             cN[n - 1] * (pn - pp[n - 1]);
+  if (omega >= 0.0)
+    r += qE[n] * theta[n] - qE[w] * theta[w];
+  else
+    r += qE[n] * theta[e] - qE[w] * theta[n];
+  r += src[n] * theta[n];
+  return r;
+}
 
 }  // namespace rotordyn

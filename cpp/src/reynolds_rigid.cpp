@@ -37,13 +37,17 @@ const FilmSolution& ReynoldsSolver::rigid(double x, double y, double vx, double 
   if (!(e < s.c))
     throw InputError("eccentricity ratio: expected sqrt(x_m^2 + y_m^2)/clearance_m < 1, got " +
                      num(e / s.c));
-  RowMatrixXd h(s.N, s.K1), hd(s.N, s.K1);
+  RowMatrixXd& h = s.rigid_h;  // kept between calls: no allocation per solve
+  RowMatrixXd& hd = s.rigid_hd;
+  h.resize(s.N, s.K1);
+  hd.resize(s.N, s.K1);
   for (int j = 0; j < s.N; ++j) {
     const double hv = s.c - x * s.cosphi[j] - y * s.sinphi[j];
     const double hdv = -vx * s.cosphi[j] - vy * s.sinphi[j];
     h.row(j).setConstant(hv);
     hd.row(j).setConstant(hdv);
   }
+  s.film_z_constant = true;  // solve() then skips its symmetry scan (and clears the flag)
   solve(h, hd, omega);
   s.out.h_min_m = s.c - e;
   double ang = e > 0.0 ? std::atan2(y, x) * 180.0 / kPi : 0.0;
@@ -56,16 +60,32 @@ DynamicCoefficients ReynoldsSolver::coefficients(double x, double y, double omeg
   Impl& s = *impl_;
   DynamicCoefficients dc;
   dc.force_n = rigid(x, y, 0.0, 0.0, omega).force_n;
-  RowMatrixXd zero = RowMatrixXd::Zero(s.N, s.K1);
-  RowMatrixXd mc(s.N, s.K1), ms(s.N, s.K1);
-  for (int j = 0; j < s.N; ++j) {
-    mc.row(j).setConstant(-s.cosphi[j]);
-    ms.row(j).setConstant(-s.sinphi[j]);
+  s.make_trig_fields();
+  const RowMatrixXd &mc = s.trig_c, &ms = s.trig_s, &zero = s.trig_zero;
+  RowMatrixXd dp[4];
+  if (s.linearize_trig4(dp)) {  // the four solves below at once, the same values
+    // integrate_force of each, in one pass (each sum in its own order: the same bits)
+    double fx[4] = {0.0, 0.0, 0.0, 0.0}, fy[4] = {0.0, 0.0, 0.0, 0.0};
+    const double* d[4] = {dp[0].data(), dp[1].data(), dp[2].data(), dp[3].data()};
+    for (int j = 0, n = 0; j < s.N; ++j)
+      for (int k = 0; k < s.K1; ++k, ++n) {
+        const double wk = (k == 0 || k == s.K1 - 1) ? 0.5 : 1.0;
+        for (int v = 0; v < 4; ++v) {
+          fx[v] -= wk * d[v][n] * s.cosphi[j];
+          fy[v] -= wk * d[v][n] * s.sinphi[j];
+        }
+      }
+    const double area = s.R * s.dphi * s.dz;
+    for (int v = 0; v < 4; ++v) {
+      const Eigen::Vector2d f(fx[v] * area, fy[v] * area);
+      (v < 2 ? dc.K : dc.C).col(v % 2) = -f;
+    }
+  } else {
+    dc.K.col(0) = -integrate_force(linearize(mc, zero));
+    dc.K.col(1) = -integrate_force(linearize(ms, zero));
+    dc.C.col(0) = -integrate_force(linearize(zero, mc));
+    dc.C.col(1) = -integrate_force(linearize(zero, ms));
   }
-  dc.K.col(0) = -integrate_force(linearize(mc, zero));
-  dc.K.col(1) = -integrate_force(linearize(ms, zero));
-  dc.C.col(0) = -integrate_force(linearize(zero, mc));
-  dc.C.col(1) = -integrate_force(linearize(zero, ms));
   check_finite(dc);
   return dc;
 }

@@ -145,20 +145,26 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
           const double p0 = pcd[o0], p1 = pcd[o1];
           if (p0 <= 0.0 && p1 <= 0.0) return true;
           const int kk = o0 - j0 * K1c;
+          // up: the coarse node upstream of the fine one is the film one (a rupture
+          // boundary); otherwise the downstream one is (a reformation boundary)
+          const bool fwd = omega >= 0.0;
+          const bool up = fwd ? p1 <= 0.0 : p0 <= 0.0;
           double pP, pPP, u;
-          if (omega >= 0.0) {
-            if (!(p1 <= 0.0)) return false;
+          if (up == fwd) {  // film at j0: extrapolate from j0 and the node before it
             pP = p0;
             pPP = pcd[((j0 - 1 + Nc) % Nc) * K1c + kk];
             u = t;
-          } else {
-            if (!(p0 <= 0.0)) return false;
+          } else {  // film at j1: from j1 and the node after it
             pP = p1;
             pPP = pcd[((j1 + 1) % Nc) * K1c + kk];
             u = 1.0 - t;
           }
-          const double r = std::sqrt(pP), rr = std::sqrt(std::max(pPP, 0.0));
-          return rr > r && u * (rr - r) >= r;
+          if (up) {
+            const double r = std::sqrt(pP), rr = std::sqrt(std::max(pPP, 0.0));
+            return rr > r && u * (rr - r) >= r;
+          }
+          // Reformation: p rises from 0 with a nonzero slope, so p itself is linear there.
+          return pPP > pP && u * (pPP - pP) >= pP;
         };
         if (row_cav(a[0], a[1]) && row_cav(a[2], a[3])) S.active[i] = 1;
       }
@@ -305,18 +311,40 @@ void ReynoldsSolver::Impl::postprocess() {
   double fx = 0.0, fy = 0.0, torque = 0.0;
   double hmin = h[0];
   int nmin = 0;
-  for (int n = 0, j = 0, k = 0; n < n_nodes; ++n, k = (k == Kl ? 0 : k + 1), j += (k == 0)) {
-    const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
-    fx -= wk * p[n] * cosphi[j];
-    fy -= wk * p[n] * sinphi[j];
-    const double dpdphi = (p[east(n)] - p[west(n)]) / (2.0 * dphi);
-    double tau = node_mu(n) * omega * R * theta[n] / h[n];
-    if (turb) tau *= turbulence_factors(geo.turbulence, re_per_h * h[n]).cf;  // Couette shear
-    tau += h[n] / (2.0 * R) * dpdphi;
-    torque += wk * tau;
-    if (h[n] < hmin) {
-      hmin = h[n];
-      nmin = n;
+  // Ring by ring: the shear of each node first (no reduction: its divisions run two lanes
+  // at a time), then the sums in node order — the same operations and order as one loop.
+  tau_ring.resize(K1);
+  double* tr = tau_ring.data();
+  const double mur = mu * omega * R;
+  for (int j = 0; j < N; ++j) {
+    const int row = j * K1;
+    const double* pr = p.data() + row;
+    const double* pe = p.data() + (j + 1 == N ? 0 : row + K1);
+    const double* pw = p.data() + (j == 0 ? (N - 1) * K1 : row - K1);
+    const double* hr = h.data() + row;
+    const double* thr = theta.data() + row;
+    if (!turb && !visc_field) {
+      for (int k = 0; k < K1; ++k)
+        tr[k] = mur * thr[k] / hr[k] + hr[k] / (2.0 * R) * ((pe[k] - pw[k]) / (2.0 * dphi));
+    } else {
+      for (int k = 0; k < K1; ++k) {
+        const int n = row + k;
+        const double dpdphi = (pe[k] - pw[k]) / (2.0 * dphi);
+        double tau = node_mu(n) * omega * R * thr[k] / hr[k];
+        if (turb) tau *= turbulence_factors(geo.turbulence, re_per_h * hr[k]).cf;  // Couette shear
+        tr[k] = tau + hr[k] / (2.0 * R) * dpdphi;
+      }
+    }
+    const double cj = cosphi[j], sj = sinphi[j];
+    for (int k = 0; k < K1; ++k) {
+      const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
+      fx -= wk * pr[k] * cj;
+      fy -= wk * pr[k] * sj;
+      torque += wk * tr[k];
+      if (hr[k] < hmin) {
+        hmin = hr[k];
+        nmin = row + k;
+      }
     }
   }
   for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
@@ -586,6 +614,9 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
 const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixXd& dhdt,
                                           double omega) {
   Impl& s = *impl_;
+  // rigid()'s promise holds for this call only: taken (and cleared) before anything can throw
+  const bool z_constant = s.film_z_constant;
+  s.film_z_constant = false;
   if (h.rows() != s.N || h.cols() != s.K1)
     throw InputError(shape_msg("h", s.N, s.K1, h.rows(), h.cols()));
   if (dhdt.rows() != s.N || dhdt.cols() != s.K1)
@@ -598,8 +629,9 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
     s.solved = true;
     return s.out;
   }
+  // rigid() passes films constant along z (mirror-symmetric by construction)
   const bool half = s.use_symmetry && s.pockets_symmetric && s.visc_symmetric &&
-                    s.symmetric(h.data()) && s.symmetric(dhdt.data());
+                    (z_constant || (s.symmetric(h.data()) && s.symmetric(dhdt.data())));
   if (half && !s.halfsys_built) {
     s.build_system(s.halfsys, true);
     s.halfsys_built = true;
@@ -730,6 +762,71 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
         dpd[j * s.K1 + k] = dpd[j * s.K1 + s.K1 - 1 - k];  // the mirror node
       }
   return dp;
+}
+
+void ReynoldsSolver::Impl::make_trig_fields() {
+  if (trig_c.rows() == N) return;
+  trig_c.resize(N, K1);
+  trig_s.resize(N, K1);
+  trig_zero = RowMatrixXd::Zero(N, K1);
+  for (int j = 0; j < N; ++j) {
+    trig_c.row(j).setConstant(-cosphi[j]);
+    trig_s.row(j).setConstant(-sinphi[j]);
+  }
+}
+
+bool ReynoldsSolver::Impl::linearize_trig4(RowMatrixXd (&dpo)[4]) {
+  if (!solved || geo.short_bearing || cav == Cavitation::jfo) return false;
+  LinearSystem& S = *sys;
+  if (S.factor != LinearSystem::Factor::ldlt && S.factor != LinearSystem::Factor::band)
+    return false;
+  if (cav == Cavitation::reynolds && n_biactive > 0) return false;
+  // the fields are constant along z: mirror-symmetric, so a half system stays the system
+  const double* dh[4] = {trig_c.data(), trig_s.data(), trig_zero.data(), trig_zero.data()};
+  const double* dhd[4] = {trig_zero.data(), trig_zero.data(), trig_c.data(), trig_s.data()};
+  double* x[4];
+  const double fs = R * dphi * dz;  // as residual_derivative_t
+  for (int v = 0; v < 4; ++v) {
+    Eigen::VectorXd& r = lin_r[v];
+    if (v < 2) {
+      residual_derivative(S, dh[v], dhd[v], r);
+    } else {
+      // dh = 0: every term of residual_derivative but the squeeze one is a product with a
+      // face's dh (±0), so its value is the squeeze term alone (the same bits, up to the sign
+      // of a zero)
+      r.resize(S.n_unk);
+      for (int i = 0; i < S.n_unk; ++i) {
+        const int n = S.node_of[i];
+        r[i] = S.wphi[i] * (fs * dhd[v][n] * theta[n]);
+      }
+    }
+    if (cav == Cavitation::reynolds)
+      for (int i = 0; i < S.n_unk; ++i)
+        if (S.active[i]) r[i] = 0.0;
+    r = -r;
+    x[v] = r.data();
+  }
+  S.solve_spd4(x);
+  // as linearize(): gumbel's one-sided mean where p_full vanishes to round-off
+  double pmax = 0.0;
+  for (int n = 0; n < n_nodes; ++n) pmax = std::max(pmax, std::abs(pfull[n]));
+  const double ptol = 1e-10 * pmax;
+  for (int v = 0; v < 4; ++v) {
+    dpo[v] = RowMatrixXd::Zero(N, K1);
+    double* dpd = dpo[v].data();
+    for (int i = 0; i < S.n_unk; ++i) {
+      const int n = S.node_of[i];
+      double wgt = 1.0;
+      if (cav == Cavitation::gumbel)
+        wgt = pfull[n] > ptol ? 1.0 : (pfull[n] < -ptol ? 0.0 : 0.5);
+      if (cav == Cavitation::reynolds && S.active[i]) wgt = 0.0;
+      dpd[n] = wgt * x[v][i];
+    }
+    if (S.half)
+      for (int j = 0; j < N; ++j)
+        for (int k = Kh + 1; k < mirror_end(); ++k) dpd[j * K1 + k] = dpd[j * K1 + K1 - 1 - k];
+  }
+  return true;
 }
 
 double ReynoldsSolver::integrate(const RowMatrixXd& pr, const RowMatrixXd& g) const {
