@@ -70,41 +70,13 @@ def test_temperature_independent_viscosity_is_the_isothermal_film_bit_for_bit():
 
 
 def _balance(r, rho_c, ts):
-    """Heat carried out of the film by the flows (W) and the dissipation of its cells (W),
-    recomputed from the face flows and the temperature field (upwind face temperatures)."""
-    qp, qz = r.flows["q_phi_m3_s"], r.flows["q_z_m3_s"]
-    T, D = r.temperature_c, r.inlet_mask > 0
-    n, k1 = T.shape
-    inflow = np.zeros_like(T)
-    outflow = np.zeros_like(T)
-    heat = 0.0
-    faces = []
-    for j in range(n):
-        for k in range(k1):
-            faces.append(((j, k), ((j + 1) % n, k), qp[j, k]))
-            if k < k1 - 1:
-                faces.append(((j, k), (j, k + 1), qz[j, k]))
-    for a, b, F in faces:
-        if F < 0:
-            a, b, F = b, a, -F
-        inflow[b] += F
-        outflow[a] += F
-        if D[b] and not D[a]:
-            heat += F * T[a]          # back to the inlet
-        elif D[a] and not D[b]:
-            heat -= F * T[a]          # from the inlet into the film
-    mass = 0.0
-    for j in range(n):
-        for k in range(k1):
-            if D[j, k]:
-                continue
-            B = inflow[j, k] - outflow[j, k]
-            if k in (0, k1 - 1):      # open end: leaves (or ambient oil enters at T_s)
-                heat += B * (T[j, k] if B > 0 else ts)
-            else:
-                mass = max(mass, abs(B) / max(inflow[j, k], 1e-300))
-    diss = r.flows["dissipation_w"][~D].sum()
-    return rho_c * heat, diss, mass
+    """Heat carried out of the film by the flows (W), the dissipation of its cells (W) and
+    the worst relative mass defect of an inner cell, recomputed from the face flows and the
+    temperature field (upwind face temperatures; tests/thd_balance.py)."""
+    from thd_balance import balance
+
+    heat, diss, _, mass = balance(r.temperature_c, r.inlet_mask, r.flows, rho_c, ts)
+    return heat, diss, mass
 
 
 def test_energy_balance_adiabatic_and_with_walls():

@@ -1,7 +1,7 @@
 """Energy balance of a THD film recomputed from its returned fields (used by the THD tests):
 the heat the face flows carry out of the film (upwind face temperatures), the heat the walls
 take, the dissipation of the film's cells and the worst relative mass defect of an inner cell.
-(The same bookkeeping as test_film_thd.py's, on bare arrays, with the wall term.)"""
+(On bare arrays, with the wall term; test_film_thd.py and test_film_thd_active.py use it.)"""
 
 import numpy as np
 
