@@ -1,6 +1,6 @@
-"""Options of docs/calibration/control_round2.py used in docs/control.md §2.6: the DC-command
-prediction of the adaptive law (``dc_command``) and the step limit of its run-ups
-(``--max-steps``)."""
+"""Options of docs/calibration/control_round2.py used in docs/control.md §2.6: the adaptive
+law's frozen-speed loop without averaging (``exact_loop_matrix``), its DC-command prediction
+(``dc_command``) and the step limit of the run-ups (``--max-steps``)."""
 
 from __future__ import annotations
 
@@ -36,16 +36,10 @@ def test_dc_command_is_the_steady_state_of_the_full_loop(script, leak):
     G = T.conj() / np.vdot(T, T).real
     drift = np.array([12e-6, -40e-6])
     om, g = 2 * np.pi * f, 20.0
-    A, B, C, D = ss.A, ss.B[:, 0], ss.C, ss.D[:, 0]
-    n = A.shape[0]
+    n = ss.A.shape[0]
     W = 2 * g * G
     # z = [x, q1, q2]: x' = A x + B q1; y = C x + D q1 + drift; Q' = (iΩ − σ)Q − W y
-    M = np.zeros((n + 2, n + 2))
-    M[:n, :n], M[:n, n] = A, B
-    M[n, :n], M[n + 1, :n] = -(W.real @ C), -(W.imag @ C)
-    M[n, n] = -(W.real @ D) - leak
-    M[n + 1, n] = -(W.imag @ D) + om
-    M[n, n + 1], M[n + 1, n + 1] = -om, -leak
+    M = script.exact_loop_matrix(ss, om, G, g, leak)
     rhs = np.zeros(n + 2)
     rhs[n], rhs[n + 1] = (W @ drift).real, (W @ drift).imag
     z = np.linalg.solve(M, rhs)
@@ -62,3 +56,26 @@ def test_max_steps_reaches_the_integrator(script, monkeypatch):
     assert tr.status != "ok"
     ok = np.isfinite(tr.t)
     assert tr.t[ok].max() < 0.01
+
+
+def test_exact_loop_matrix_closed_forms(script):
+    """The frozen-speed loop without averaging: at γ = 0 its eigenvalues are the plant's and
+    −σ ± iΩ (10⁻⁹); its rows reproduce x' = A x + B Re Q and Q' = (iΩ − σ)Q − 2γT̂⁺y on a
+    random state (10⁻¹²), the 2 × 2 real form of the complex law written out independently."""
+    rig = rd.models.paper_rig()
+    f = 60.0
+    (ss, T), = _linear_plants(rig, [f], [("journal", 0)], 0.5e6, 0.0, Actuator())
+    G = T.conj() / np.vdot(T, T).real
+    om, sig = 2 * np.pi * f, 0.7
+    ev = np.sort_complex(np.linalg.eigvals(script.exact_loop_matrix(ss, om, G, 0.0, sig)))
+    ref = np.sort_complex(np.concatenate([np.linalg.eigvals(ss.A), [-sig + 1j * om, -sig - 1j * om]]))
+    assert np.allclose(ev, ref, rtol=0, atol=1e-9 * np.abs(ref).max())
+    rng = np.random.default_rng(3)
+    n = ss.A.shape[0]
+    z = rng.standard_normal(n + 2)
+    x, Q = z[:n], z[n] + 1j * z[n + 1]
+    y = ss.C @ x + ss.D[:, 0] * Q.real
+    Qd = (1j * om - sig) * Q - 2 * 15.0 * (G @ y)
+    want = np.concatenate([ss.A @ x + ss.B[:, 0] * Q.real, [Qd.real, Qd.imag]])
+    got = script.exact_loop_matrix(ss, om, G, 15.0, sig) @ z
+    assert np.allclose(got, want, rtol=0, atol=1e-12 * np.abs(want).max())
