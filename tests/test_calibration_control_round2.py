@@ -79,3 +79,23 @@ def test_exact_loop_matrix_closed_forms(script):
     want = np.concatenate([ss.A @ x + ss.B[:, 0] * Q.real, [Qd.real, Qd.imag]])
     got = script.exact_loop_matrix(ss, om, G, 15.0, sig) @ z
     assert np.allclose(got, want, rtol=0, atol=1e-12 * np.abs(want).max())
+
+
+def test_command_mean_over_whole_revolutions(script):
+    """The mean of 0.5 MPa + 0.1 MPa cos θ + a 2 kPa/Hz ramp over ±4 revolutions of a 10 Hz/s
+    run is the ramp's value where the speed is reached (the 1× part cancels over whole
+    revolutions; the window is symmetric in angle, so the ramp's mean is off by its change over
+    the window's time asymmetry, < 0.5 kPa here); NaN rows of a stopped run are ignored and a
+    speed the run never reached gives NaN."""
+    from types import SimpleNamespace
+
+    t = np.linspace(0.0, 4.0, 80001)
+    f = 10.0 + 10.0 * t
+    th = 2 * np.pi * (10.0 * t + 5.0 * t ** 2)
+    cmd = 0.5e6 + 0.1e6 * np.cos(th) + 2e3 * (f - 30.0)
+    t[-100:] = np.nan
+    tr = SimpleNamespace(t=t, speed_hz_t=f, chamber_pressure_command_pa=cmd, angle_rad=th)
+    m = script.command_mean(tr, [20.0, 40.0, 60.0])
+    assert m[0] == pytest.approx(0.5e6 - 2e4, abs=500.0)
+    assert m[1] == pytest.approx(0.5e6 + 2e4, abs=500.0)
+    assert np.isnan(m[2])

@@ -254,6 +254,26 @@ def dc_command(ss, omega_rad_s, update, gain_1_per_s, drift, leak_1_per_s=0.0):
     return float(np.linalg.solve(M, [b.real, b.imag])[0])
 
 
+DC_SPEEDS = (20.0, 40.0, 60.0, 80.0, 88.0, 90.0, 90.2, 90.4, 91.0, 92.0, 95.0, 110.0)
+
+
+def command_mean(tr, speeds_hz, revs=4):
+    """Mean (Pa) of the run's command over ±``revs`` whole revolutions about the sample where
+    the speed reaches each of ``speeds_hz`` (NaN where the run never did): its DC part, the 1×
+    part cancelling over whole revolutions."""
+    ok = np.isfinite(tr.t)
+    f, c, th = tr.speed_hz_t[ok], tr.chamber_pressure_command_pa[ok], tr.angle_rad[ok]
+    out = []
+    for s in speeds_hz:
+        i = int(np.searchsorted(f, s))
+        if i >= f.size:
+            out.append(np.nan)
+            continue
+        m = np.abs(th - th[i]) <= 2 * np.pi * revs
+        out.append(c[m].mean())
+    return np.array(out)
+
+
 def exact_loop_matrix(ss, omega_rad_s, update, gain_1_per_s, leak_1_per_s=0.0):
     """The frozen-speed loop of the linear plant ``ss`` (command → measurements) and the
     adaptive law without averaging: in the stationary frame Q = P e^{iθ}, z = [x, Re Q, Im Q],
@@ -303,7 +323,7 @@ def dc_check(rig, des, meas, leak, act):
           f"{out[i, 0] * 1e6:.2f} µm); " + ", ".join(
               f"{grid[k]:.1f} Hz {out[k, 1] / 1e6:+.4f}"
               for k in np.unique(np.round(grid, 1), return_index=True)[1]
-              if round(grid[k], 1) in (20, 40, 60, 80, 88, 90, 90.4, 91, 95, 110)))
+              if round(grid[k], 1) in DC_SPEEDS))
 
 
 def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fraction=0.5,
@@ -354,6 +374,9 @@ def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fr
         tag += f", σ = {leak}" + (", frozen at the limits" if freeze else "")
         tr, wall = runup(rig, rate, adaptive=law)
         show(f"adaptive 1× on {lab} ({tag})", tr, wall)
+        cm = command_mean(tr, DC_SPEEDS)
+        print("[adaptive]   command mean over ±4 revolutions: " + ", ".join(
+            f"{f:g} Hz {c / 1e6:.3f}" for f, c in zip(DC_SPEEDS, cm)) + " MPa")
         ok = np.isfinite(tr.t)  # a run that stopped early has NaN rows after its end
         P = tr.adaptive_states[ok]
         cmd = tr.chamber_pressure_command_pa[ok]
