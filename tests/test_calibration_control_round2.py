@@ -68,7 +68,8 @@ def test_exact_loop_matrix_closed_forms(script):
     G = T.conj() / np.vdot(T, T).real
     om, sig = 2 * np.pi * f, 0.7
     ev = np.sort_complex(np.linalg.eigvals(script.exact_loop_matrix(ss, om, G, 0.0, sig)))
-    ref = np.sort_complex(np.concatenate([np.linalg.eigvals(ss.A), [-sig + 1j * om, -sig - 1j * om]]))
+    ref = np.sort_complex(np.concatenate([np.linalg.eigvals(ss.A),
+                                          [-sig + 1j * om, -sig - 1j * om]]))
     assert np.allclose(ev, ref, rtol=0, atol=1e-9 * np.abs(ref).max())
     rng = np.random.default_rng(3)
     n = ss.A.shape[0]

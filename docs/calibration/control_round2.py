@@ -125,7 +125,8 @@ def show(lab, tr, wall):
     print(f"[run-up] {lab}: {tr.status}; journal {j1:.2f} µm ({fj1:.1f} Hz) | {j2:.2f} "
           f"({fj2:.1f}); disk B {d1:.2f} ({fd1:.1f}) | {d2:.2f} ({fd2:.1f}); p_c "
           f"[{np.nanmin(tr.chamber_pressure_actual_pa) / 1e6:.3f}, "
-          f"{np.nanmax(tr.chamber_pressure_actual_pa) / 1e6:.3f}] MPa; {tr.stats['rhs_evals']} RHS, "
+          f"{np.nanmax(tr.chamber_pressure_actual_pa) / 1e6:.3f}] MPa; "
+          f"{tr.stats['rhs_evals']} RHS, "
           f"{wall:.1f} s wall, load {load()}")
     return pk
 
