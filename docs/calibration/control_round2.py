@@ -432,7 +432,8 @@ def main():
     ap.add_argument("--leak", type=float, default=0.0, help="σ, 1/s")
     ap.add_argument("--freeze", action="store_true", help="freeze at the valve's limits")
     ap.add_argument("--check", action="store_true",
-                    help="averaged-loop check of constant γ (--gamma and 2)")
+                    help="averaged-loop check of constant γ (--gamma and 2); the design's "
+                    "exact frozen-speed loop and DC command from the equilibrium drift")
     ap.add_argument("--max-steps", type=int, default=MAX_STEPS,
                     help="CVODE steps per output interval (a stalled run returns not_converged)")
     a = ap.parse_args()
