@@ -5,7 +5,7 @@ run-up, each beside its reference.
 Run:  .venv/bin/python docs/calibration/control_round2.py [--part aw|schedule|adaptive|all]
       [--rate-hz-s 10] [--gamma 20] [--washout-hz 0] [--refine-rounds 0] [--no-runup]
       [--unbalance ST ME PH] [--passive] [--measure both|disk|journal] [--schedule]
-      [--fraction 0.5] [--leak 0] [--freeze] [--check]
+      [--fraction 0.5] [--leak 0] [--freeze] [--check] [--max-steps 2000000]
 Prints every number quoted in docs/control.md §2.4–2.6.
 """
 
@@ -31,6 +31,7 @@ C = 3e-4
 JOURNAL, DISK = 4, 6
 UB = [(6, 2e-5, 0.0)]  # disk B, as docs/control.md §3.2
 SPLIT = 65.0
+MAX_STEPS = 2_000_000  # CVODE steps per output interval (--max-steps)
 
 
 def load():
@@ -113,7 +114,7 @@ def runup(rig, rate, **kw):
     t0 = time.perf_counter()
     tr = rd.transient(rig, t_end, chamber_pressure_pa=0.5e6, config_ay_m=0.0, speed=prof,
                       unbalances=UB, actuator=Actuator(), n_out=int(t_end * 2000) + 1,
-                      max_steps=2_000_000, **kw)
+                      max_steps=MAX_STEPS, **kw)
     return tr, time.perf_counter() - t0
 
 
@@ -123,8 +124,9 @@ def show(lab, tr, wall):
     (fd1, d1), (fd2, d2) = pk["disk"]
     print(f"[run-up] {lab}: {tr.status}; journal {j1:.2f} µm ({fj1:.1f} Hz) | {j2:.2f} "
           f"({fj2:.1f}); disk B {d1:.2f} ({fd1:.1f}) | {d2:.2f} ({fd2:.1f}); p_c "
-          f"[{tr.chamber_pressure_actual_pa.min() / 1e6:.3f}, "
-          f"{tr.chamber_pressure_actual_pa.max() / 1e6:.3f}] MPa; {tr.stats['rhs_evals']} RHS, "
+          f"[{np.nanmin(tr.chamber_pressure_actual_pa) / 1e6:.3f}, "
+          f"{np.nanmax(tr.chamber_pressure_actual_pa) / 1e6:.3f}] MPa; "
+          f"{tr.stats['rhs_evals']} RHS, "
           f"{wall:.1f} s wall, load {load()}")
     return pk
 
@@ -237,6 +239,94 @@ def adaptive_grid():
                                      np.arange(84.0, 94.0, 0.1)]))
 
 
+def dc_command(ss, omega_rad_s, update, gain_1_per_s, drift, leak_1_per_s=0.0):
+    """Quasi-static DC command (Pa) the adaptive law makes from a constant drift ``drift``
+    (n_y,) of its measurements (their offset is the starting equilibrium; the equilibrium
+    moves with the speed). In the stationary frame Q = P e^{iθ} the law is exactly
+    Q' = (iΩ − σ) Q − 2γ T̂⁺ y, command Re Q; with y = drift + T(0) Re Q (the plant ``ss``
+    quasi-static) the steady Q solves a real 2 × 2 system; returns Re Q. The averaged loop
+    (rotordyn.control.adaptive_design) drops this channel: it is a 2Ω term there."""
+    A, B, C, D = ss.A, ss.B[:, 0], ss.C, ss.D[:, 0]
+    W = 2 * gain_1_per_s * np.asarray(update, dtype=complex)
+    a = complex(W @ (C @ np.linalg.solve(-A, B) + D))
+    b = complex(W @ np.asarray(drift, dtype=float))
+    M = np.array([[-leak_1_per_s - a.real, -omega_rad_s],
+                  [omega_rad_s - a.imag, -leak_1_per_s]])
+    return float(np.linalg.solve(M, [b.real, b.imag])[0])
+
+
+DC_SPEEDS = (20.0, 40.0, 60.0, 80.0, 88.0, 90.0, 90.2, 90.4, 91.0, 92.0, 95.0, 110.0)
+
+
+def command_mean(tr, speeds_hz, revs=4):
+    """Mean (Pa) of the run's command over ±``revs`` whole revolutions about the sample where
+    the speed reaches each of ``speeds_hz`` (NaN where the run never did): its DC part, the 1×
+    part cancelling over whole revolutions."""
+    ok = np.isfinite(tr.t)
+    f, c, th = tr.speed_hz_t[ok], tr.chamber_pressure_command_pa[ok], tr.angle_rad[ok]
+    out = []
+    for s in speeds_hz:
+        i = int(np.searchsorted(f, s))
+        if i >= f.size:
+            out.append(np.nan)
+            continue
+        m = np.abs(th - th[i]) <= 2 * np.pi * revs
+        out.append(c[m].mean())
+    return np.array(out)
+
+
+def exact_loop_matrix(ss, omega_rad_s, update, gain_1_per_s, leak_1_per_s=0.0):
+    """The frozen-speed loop of the linear plant ``ss`` (command → measurements) and the
+    adaptive law without averaging: in the stationary frame Q = P e^{iθ}, z = [x, Re Q, Im Q],
+    x' = A x + B Re Q, Q' = (iΩ − σ) Q − 2γ T̂⁺ (C x + D Re Q) — time invariant at constant Ω.
+    Returns its (n + 2, n + 2) real matrix (the averaged loop drops the conjugate coupling)."""
+    A, B, C, D = ss.A, ss.B[:, 0], ss.C, ss.D[:, 0]
+    W = 2 * gain_1_per_s * np.asarray(update, dtype=complex)
+    n = A.shape[0]
+    M = np.zeros((n + 2, n + 2))
+    M[:n, :n], M[:n, n] = A, B
+    M[n, :n], M[n + 1, :n] = -(W.real @ C), -(W.imag @ C)
+    M[n, n] = -(W.real @ D) - leak_1_per_s
+    M[n + 1, n] = -(W.imag @ D) + omega_rad_s
+    M[n, n + 1], M[n + 1, n + 1] = -omega_rad_s, -leak_1_per_s
+    return M
+
+
+def dc_check(rig, des, meas, leak, act):
+    """dc_command over the design grid with the equilibrium drift from 10 Hz (0.5 MPa)."""
+    from rotordyn.analysis.measurement import measurement_matrix
+    from rotordyn.control.adaptive_design import _linear_plants
+
+    Cm, _ = measurement_matrix(rig, meas)
+    grid = des.speeds_hz
+
+    def yeq(f):
+        e = rd.equilibrium(rig, float(f), 0.5e6, 0.0, warm_start=False)
+        return Cm @ np.concatenate([e.r, np.zeros(e.r.size)])
+
+    y0 = yeq(grid[0])
+    out, ex = [], []
+    for f, g, T, (ss, _) in zip(grid, des.gain_1_per_s, des.influence,
+                                _linear_plants(rig, grid, meas, 0.5e6, 0.0, act)):
+        T = np.asarray(T, dtype=complex)
+        G = T.conj() / np.vdot(T, T).real
+        dy = yeq(f) - y0
+        out.append((np.linalg.norm(dy), dc_command(ss, 2 * np.pi * f, G, g, dy, leak)))
+        ex.append(np.linalg.eigvals(exact_loop_matrix(ss, 2 * np.pi * f, G, g, leak)).real.max())
+    out, ex = np.array(out), np.array(ex)
+    j = int(np.argmax(ex))
+    print(f"[adaptive]   exact frozen-speed loop (no averaging) at γ(Ω): unstable at "
+          f"{int(np.sum(ex >= 0))} of {grid.size} speeds; worst max Re {ex[j]:+.4f} 1/s at "
+          f"{grid[j]:.1f} Hz")
+    i = int(np.argmax(np.abs(out[:, 1])))
+    print(f"[adaptive]   DC command from the equilibrium drift (quasi-static, γ(Ω) of the "
+          f"design): largest {out[i, 1] / 1e6:+.4f} MPa at {grid[i]:.1f} Hz (drift "
+          f"{out[i, 0] * 1e6:.2f} µm); " + ", ".join(
+              f"{grid[k]:.1f} Hz {out[k, 1] / 1e6:+.4f}"
+              for k in np.unique(np.round(grid, 1), return_index=True)[1]
+              if round(grid[k], 1) in DC_SPEEDS))
+
+
 def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fraction=0.5,
                   gamma_max=20.0, leak=0.0, freeze=False, check=False):
     """The adaptive 1× law in the run-up: a constant γ, or (``schedule``) γ(Ω) of the share
@@ -271,6 +361,7 @@ def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fr
                   f"averaged loop max Re {des.averaged_max_real_1_per_s[m].max():+.3f} 1/s "
                   f"(plant {des.passive_max_real_1_per_s[m].max():+.3f})")
         if check:
+            dc_check(rig, des, meas, leak, act)
             for gc in (gamma, 2.0):
                 am = averaged_stability(rig, des.law.with_gain(gc), chamber_pressure_pa=0.5e6,
                                         config_ay_m=0.0, actuator=act)
@@ -284,11 +375,16 @@ def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fr
         tag += f", σ = {leak}" + (", frozen at the limits" if freeze else "")
         tr, wall = runup(rig, rate, adaptive=law)
         show(f"adaptive 1× on {lab} ({tag})", tr, wall)
-        P = tr.adaptive_states
+        cm = command_mean(tr, DC_SPEEDS)
+        print("[adaptive]   command mean over ±4 revolutions: " + ", ".join(
+            f"{f:g} Hz {c / 1e6:.3f}" for f, c in zip(DC_SPEEDS, cm)) + " MPa")
+        ok = np.isfinite(tr.t)  # a run that stopped early has NaN rows after its end
+        P = tr.adaptive_states[ok]
+        cmd = tr.chamber_pressure_command_pa[ok]
         print(f"[adaptive]   |P| max {np.abs(P[:, 0] + 1j * P[:, 1]).max() / 1e6:.3f} MPa; "
-              f"command outside [0, 1] MPa in "
-              f"{100 * np.mean((tr.chamber_pressure_command_pa <= 0) | (tr.chamber_pressure_command_pa >= 1e6)):.1f} % "
-              f"of the samples; ended at {tr.speed_hz_t[np.isfinite(tr.t)].max():.1f} Hz")
+              f"command outside [0, 1] MPa in {100 * np.mean((cmd <= 0) | (cmd >= 1e6)):.1f} % "
+              f"of the samples; ended at {tr.speed_hz_t[ok].max():.2f} Hz ({tr.status}"
+              + (f": {tr.message}" if tr.status != "ok" else "") + ")")
 
 
 def part_bound():
@@ -316,6 +412,7 @@ def part_bound():
 
 
 def main():
+    global UB, MAX_STEPS
     ap = argparse.ArgumentParser()
     ap.add_argument("--part", default="all",
                     choices=["aw", "schedule", "schedule-grid", "adaptive", "bound", "all"])
@@ -335,9 +432,12 @@ def main():
     ap.add_argument("--leak", type=float, default=0.0, help="σ, 1/s")
     ap.add_argument("--freeze", action="store_true", help="freeze at the valve's limits")
     ap.add_argument("--check", action="store_true",
-                    help="averaged-loop check of constant γ (--gamma and 2)")
+                    help="averaged-loop check of constant γ (--gamma and 2); the design's "
+                    "exact frozen-speed loop and DC command from the equilibrium drift")
+    ap.add_argument("--max-steps", type=int, default=MAX_STEPS,
+                    help="CVODE steps per output interval (a stalled run returns not_converged)")
     a = ap.parse_args()
-    global UB
+    MAX_STEPS = a.max_steps
     if a.unbalance:
         UB = [(int(a.unbalance[0]), a.unbalance[1], a.unbalance[2])]
     print(f"unbalance {UB}")
