@@ -84,7 +84,8 @@ void bind_transient(py::module_& m) {
       .def_readwrite("leak", &AdaptiveHarmonic::leak)
       .def_readwrite("gain_omega", &AdaptiveHarmonic::gain_omega)
       .def_readwrite("gain_table", &AdaptiveHarmonic::gain_table)
-      .def_readwrite("freeze_saturated", &AdaptiveHarmonic::freeze_saturated);
+      .def_readwrite("freeze_saturated", &AdaptiveHarmonic::freeze_saturated)
+      .def_readwrite("washout", &AdaptiveHarmonic::washout);
   py::class_<TransientInput>(m, "TransientInput")
       .def(py::init<>())
       .def_readwrite("omega", &TransientInput::omega)

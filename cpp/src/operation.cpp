@@ -84,6 +84,8 @@ void validate_adaptive(const AdaptiveHarmonic& h, Eigen::Index n) {
           "adaptive: expected strictly increasing finite speeds and finite tables");
   require(std::isfinite(h.leak) && h.leak >= 0,
           "adaptive.leak: expected a finite leak rate >= 0 1/s");
+  require(std::isfinite(h.washout) && h.washout >= 0,
+          "adaptive.washout: expected a finite washout corner >= 0 rad/s");
   require(h.gain_table.size() == h.gain_omega.size(),
           shape_msg("adaptive.gain_table", h.gain_omega.size(), 1, h.gain_table.size(), 1));
   if (h.scheduled_gain())

@@ -88,6 +88,7 @@ struct Ctx {
   bool awd = false;  // the same on the discrete controller's states, at each application
   bool ad = false;         // adaptive 1× command: states [P_r, P_i] at index iad
   Eigen::Index iad = 0;
+  Eigen::Index nw = 0;     // washout states z (n_y) at iad + 2, or none
   // Gain schedule: the law's matrices at law_omega (interpolated once per new speed).
   mutable Eigen::MatrixXd Ak, Bk, Ck, Dk;
   mutable double law_omega = std::numeric_limits<double>::quiet_NaN();
@@ -289,16 +290,26 @@ AdaptiveTerms adaptive_terms(const Ctx& c, const Point& P, const double* y, bool
   AdaptiveTerms T;
   T.wre.resize(ny);
   T.wim.resize(ny);
+  // With the washout H(s) = s/(s + ω_w) the 1× of y − z is H(ikΩ) Y, and the update row
+  // is G/H(ikΩ) = G (1 − i a), a = ω_w/(kΩ): the same revolution-averaged law.
+  const double kw = h.order * P.omega;
+  const double a = (c.nw && kw > 0.0) ? h.washout / kw : 0.0;
   for (Eigen::Index j = 0; j < ny; ++j) {
-    const double gr = interp_table(h.table_omega, h.table_re.col(j), P.omega);
-    const double gi = interp_table(h.table_omega, h.table_im.col(j), P.omega);
+    double gr = interp_table(h.table_omega, h.table_re.col(j), P.omega);
+    double gi = interp_table(h.table_omega, h.table_im.col(j), P.omega);
+    if (c.nw) {
+      const double r0 = gr;
+      gr = gr + gi * a;
+      gi = gi - r0 * a;
+    }
     // (gr + i gi)(cos − i sin)
     T.wre(j) = gr * P.ck + gi * P.sk;
     T.wim(j) = gi * P.ck - gr * P.sk;
   }
   if (want_y) {
     Eigen::Map<const Eigen::VectorXd> rv(y, 2 * c.n);
-    const Eigen::VectorXd ym = h.measurement * rv - h.offset;
+    Eigen::VectorXd ym = h.measurement * rv - h.offset;
+    if (c.nw) ym -= Eigen::Map<const Eigen::VectorXd>(y + c.iad + 2, c.nw);
     T.re = T.wre.dot(ym);
     T.im = T.wim.dot(ym);
   }
@@ -369,6 +380,10 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
       if (h.leak != 0.0) {
         Yd(c.iad) -= h.leak * Y(c.iad);
         Yd(c.iad + 1) -= h.leak * Y(c.iad + 1);
+      }
+      if (c.nw) {  // ż = ω_w (C_m r − offset − z)
+        Yd.segment(c.iad + 2, c.nw) =
+            h.washout * (h.measurement * Y.head(2 * n) - h.offset - Y.segment(c.iad + 2, c.nw));
       }
     }
   });
@@ -456,6 +471,13 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
       Jm.block(c.iad + 1, 0, 1, 2 * n) = -g2 * T.wim * Cm;
       Jm(c.iad, c.iad) -= h.leak;
       Jm(c.iad + 1, c.iad + 1) -= h.leak;
+      if (c.nw) {
+        const Eigen::Index iz = c.iad + 2;
+        Jm.block(c.iad, iz, 1, c.nw) = g2 * T.wre;
+        Jm.block(c.iad + 1, iz, 1, c.nw) = g2 * T.wim;
+        Jm.block(iz, 0, c.nw, 2 * n) = h.washout * Cm;
+        for (Eigen::Index j = 0; j < c.nw; ++j) Jm(iz + j, iz + j) = -h.washout;
+      }
     }
   });
 }
@@ -513,7 +535,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   validate_adaptive(in.adaptive, n);
   c.ad = in.adaptive.enabled;
   c.iad = 2 * n + c.na + c.nk;
-  c.N = 2 * n + c.na + c.nk + (c.ad ? 2 : 0);
+  c.nw = (c.ad && in.adaptive.washout > 0.0) ? in.adaptive.measurement.rows() : 0;
+  c.N = 2 * n + c.na + c.nk + (c.ad ? 2 + c.nw : 0);
   c.Mllt.compute(m.M);
   require(c.Mllt.info() == Eigen::Success, "M: the mass matrix must be positive definite");
   c.F0 = m.Q - m.K * in.a;
@@ -581,6 +604,11 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
     Y(c.iad) = in.adaptive.p0_re;
     Y(c.iad + 1) = in.adaptive.p0_im;
     AT(c.iad) = AT(c.iad + 1) = opt.atol_pressure;
+    if (c.nw) {  // the washout starts at rest on the initial measurement (y − z = 0)
+      const AdaptiveHarmonic& h = in.adaptive;
+      Y.segment(c.iad + 2, c.nw) = h.measurement * Y.head(2 * n) - h.offset;
+      AT.segment(c.iad + 2, c.nw).setConstant(opt.atol_position);
+    }
   }
   if (c.kdisc) {
     c.xk = K.x0.size() ? K.x0 : Eigen::VectorXd::Zero(K.n_states());

@@ -239,17 +239,26 @@ def adaptive_grid():
                                      np.arange(84.0, 94.0, 0.1)]))
 
 
-def dc_command(ss, omega_rad_s, update, gain_1_per_s, drift, leak_1_per_s=0.0):
+def dc_command(ss, omega_rad_s, update, gain_1_per_s, drift, leak_1_per_s=0.0,
+               washout_rad_s=0.0, drift_rate=None):
     """Quasi-static DC command (Pa) the adaptive law makes from a constant drift ``drift``
     (n_y,) of its measurements (their offset is the starting equilibrium; the equilibrium
     moves with the speed). In the stationary frame Q = P e^{iθ} the law is exactly
     Q' = (iΩ − σ) Q − 2γ T̂⁺ y, command Re Q; with y = drift + T(0) Re Q (the plant ``ss``
     quasi-static) the steady Q solves a real 2 × 2 system; returns Re Q. The averaged loop
-    (rotordyn.control.adaptive_design) drops this channel: it is a 2Ω term there."""
+    (rotordyn.control.adaptive_design) drops this channel: it is a 2Ω term there.
+    With the law's washout ω_w (rad/s) a drift ramping at ``drift_rate`` (n_y,) per s leaves
+    drift_rate/ω_w at the demodulation, the quasi-static plant response is washed out (a = 0)
+    and the update is T̂⁺(1 − iω_w/Ω)."""
     A, B, C, D = ss.A, ss.B[:, 0], ss.C, ss.D[:, 0]
     W = 2 * gain_1_per_s * np.asarray(update, dtype=complex)
-    a = complex(W @ (C @ np.linalg.solve(-A, B) + D))
-    b = complex(W @ np.asarray(drift, dtype=float))
+    if washout_rad_s > 0:
+        W = W * (1 - 1j * washout_rad_s / omega_rad_s)
+        a = 0j
+        b = complex(W @ (np.asarray(drift_rate, dtype=float) / washout_rad_s))
+    else:
+        a = complex(W @ (C @ np.linalg.solve(-A, B) + D))
+        b = complex(W @ np.asarray(drift, dtype=float))
     M = np.array([[-leak_1_per_s - a.real, -omega_rad_s],
                   [omega_rad_s - a.imag, -leak_1_per_s]])
     return float(np.linalg.solve(M, [b.real, b.imag])[0])
@@ -292,8 +301,9 @@ def exact_loop_matrix(ss, omega_rad_s, update, gain_1_per_s, leak_1_per_s=0.0):
     return M
 
 
-def dc_check(rig, des, meas, leak, act):
-    """dc_command over the design grid with the equilibrium drift from 10 Hz (0.5 MPa)."""
+def dc_check(rig, des, meas, leak, act, rate=10.0, washout_hz=0.0):
+    """dc_command over the design grid with the equilibrium drift from 10 Hz (0.5 MPa); with
+    the washout, the drift's rate at the run-up ``rate`` (Hz/s) instead."""
     from rotordyn.analysis.measurement import measurement_matrix
     from rotordyn.control.adaptive_design import _linear_plants
 
@@ -304,14 +314,17 @@ def dc_check(rig, des, meas, leak, act):
         e = rd.equilibrium(rig, float(f), 0.5e6, 0.0, warm_start=False)
         return Cm @ np.concatenate([e.r, np.zeros(e.r.size)])
 
-    y0 = yeq(grid[0])
+    ys = np.array([yeq(f) for f in grid])
+    rates = np.gradient(ys, grid, axis=0) * rate  # drift per second in the run-up
+    ww = 2 * np.pi * washout_hz
     out, ex = [], []
-    for f, g, T, (ss, _) in zip(grid, des.gain_1_per_s, des.influence,
-                                _linear_plants(rig, grid, meas, 0.5e6, 0.0, act)):
+    for f, g, T, (ss, _), y, yr in zip(grid, des.gain_1_per_s, des.influence,
+                                       _linear_plants(rig, grid, meas, 0.5e6, 0.0, act), ys,
+                                       rates):
         T = np.asarray(T, dtype=complex)
         G = T.conj() / np.vdot(T, T).real
-        dy = yeq(f) - y0
-        out.append((np.linalg.norm(dy), dc_command(ss, 2 * np.pi * f, G, g, dy, leak)))
+        dy = y - ys[0]
+        out.append((np.linalg.norm(dy), dc_command(ss, 2 * np.pi * f, G, g, dy, leak, ww, yr)))
         ex.append(np.linalg.eigvals(exact_loop_matrix(ss, 2 * np.pi * f, G, g, leak)).real.max())
     out, ex = np.array(out), np.array(ex)
     j = int(np.argmax(ex))
@@ -320,7 +333,8 @@ def dc_check(rig, des, meas, leak, act):
           f"{grid[j]:.1f} Hz")
     i = int(np.argmax(np.abs(out[:, 1])))
     print(f"[adaptive]   DC command from the equilibrium drift (quasi-static, γ(Ω) of the "
-          f"design): largest {out[i, 1] / 1e6:+.4f} MPa at {grid[i]:.1f} Hz (drift "
+          f"design" + (f", washout {washout_hz:g} Hz" if washout_hz else "")
+          + f"): largest {out[i, 1] / 1e6:+.4f} MPa at {grid[i]:.1f} Hz (drift "
           f"{out[i, 0] * 1e6:.2f} µm); " + ", ".join(
               f"{grid[k]:.1f} Hz {out[k, 1] / 1e6:+.4f}"
               for k in np.unique(np.round(grid, 1), return_index=True)[1]
@@ -328,10 +342,11 @@ def dc_check(rig, des, meas, leak, act):
 
 
 def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fraction=0.5,
-                  gamma_max=20.0, leak=0.0, freeze=False, check=False):
+                  gamma_max=20.0, leak=0.0, freeze=False, check=False, washout_hz=0.0):
     """The adaptive 1× law in the run-up: a constant γ, or (``schedule``) γ(Ω) of the share
     rule (rotordyn.control.adaptive_design) with γ ≤ gamma_max; optional leak σ and freezing
-    at the valve's limits; ``check``: the averaged loop's max Re of a constant-γ law too."""
+    at the valve's limits; ``check``: the averaged loop's max Re of a constant-γ law too;
+    ``washout_hz``: the law's measurement washout corner (0: none)."""
     from rotordyn.control.adaptive_design import adaptive_design, averaged_stability
 
     global tr_sys
@@ -348,7 +363,8 @@ def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fr
         t0 = time.perf_counter()
         des = adaptive_design(rig, grid, meas, fraction=fraction, gain_max_1_per_s=gamma_max,
                               leak_1_per_s=leak, freeze_at_limits=freeze,
-                              chamber_pressure_pa=0.5e6, config_ay_m=0.0, actuator=act)
+                              chamber_pressure_pa=0.5e6, config_ay_m=0.0, actuator=act,
+                              washout_hz=washout_hz)
         g = des.gain_1_per_s
         print(f"[adaptive] {lab}: influence coefficients and share-rule design at {grid.size} "
               f"speeds in {time.perf_counter() - t0:.1f} s; |Σw + T̂⁺D − 1| ≤ "
@@ -361,7 +377,7 @@ def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fr
                   f"averaged loop max Re {des.averaged_max_real_1_per_s[m].max():+.3f} 1/s "
                   f"(plant {des.passive_max_real_1_per_s[m].max():+.3f})")
         if check:
-            dc_check(rig, des, meas, leak, act)
+            dc_check(rig, des, meas, leak, act, rate, washout_hz)
             for gc in (gamma, 2.0):
                 am = averaged_stability(rig, des.law.with_gain(gc), chamber_pressure_pa=0.5e6,
                                         config_ay_m=0.0, actuator=act)
@@ -373,6 +389,7 @@ def part_adaptive(rate, gamma, passive=False, measure="both", schedule=False, fr
         law = des.law if schedule else des.law.with_gain(gamma)
         tag = (f"γ(Ω) share rule κ = {fraction}, ≤ {gamma_max}" if schedule else f"γ = {gamma}")
         tag += f", σ = {leak}" + (", frozen at the limits" if freeze else "")
+        tag += f", washout {washout_hz} Hz" if washout_hz else ""
         tr, wall = runup(rig, rate, adaptive=law)
         show(f"adaptive 1× on {lab} ({tag})", tr, wall)
         cm = command_mean(tr, DC_SPEEDS)
@@ -434,6 +451,8 @@ def main():
     ap.add_argument("--check", action="store_true",
                     help="averaged-loop check of constant γ (--gamma and 2); the design's "
                     "exact frozen-speed loop and DC command from the equilibrium drift")
+    ap.add_argument("--adaptive-washout-hz", type=float, default=0.0,
+                    help="with --part adaptive: the law's measurement washout corner, Hz")
     ap.add_argument("--max-steps", type=int, default=MAX_STEPS,
                     help="CVODE steps per output interval (a stalled run returns not_converged)")
     a = ap.parse_args()
@@ -452,7 +471,7 @@ def main():
         part_bound()
     if a.part in ("adaptive", "all"):
         part_adaptive(a.rate_hz_s, a.gamma, a.passive, a.measure, a.schedule, a.fraction,
-                      a.gamma, a.leak, a.freeze, a.check)
+                      a.gamma, a.leak, a.freeze, a.check, a.adaptive_washout_hz)
 
 
 if __name__ == "__main__":

@@ -121,6 +121,10 @@ struct AdaptiveHarmonic {
   Eigen::VectorXd gain_omega;   ///< (n_γ,) rad/s, strictly increasing; empty: constant gain
   Eigen::VectorXd gain_table;   ///< (n_γ,) γ(Ω) 1/s (≥ 0)
   bool freeze_saturated = false;  ///< gradient off while the command is saturated
+  /// ω_w, rad/s (≥ 0): first-order washout s/(s + ω_w) on each measurement before the
+  /// demodulation (n_y extra states z, ż = ω_w (y − z)), the update row compensated by
+  /// 1/H(ikΩ) = 1 − i ω_w/(kΩ); 0: none (the law without washout, bit for bit)
+  double washout = 0.0;
   bool scheduled_gain() const { return gain_omega.size() > 0; }
   Eigen::MatrixXd measurement;  ///< C_m (n_y, 2n)
   Eigen::VectorXd offset;       ///< (n_y,)

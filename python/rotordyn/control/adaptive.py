@@ -29,6 +29,19 @@ a leak σ (``leak_1_per_s``: revolution-averaged fixed point P = −(T̂⁺T + �
 bounded by γ|T̂⁺Y|/σ), γ(Ω) a schedule over the speed (designed on the plant by
 :func:`rotordyn.control.adaptive_design.adaptive_design`), and ``freeze_at_limits`` (no
 gradient while the command is outside the valve's limits).
+
+Washout (``washout_hz`` f_w, off by default): the law measures y relative to the starting
+equilibrium, and during a run-up the equilibrium drifts with the speed; demodulated, a slow
+drift d(t) gives Ṗ ≈ −2γ T̂⁺ d e^{−iθ}, a 1× ripple of P and so a steady (DC) part of the
+command p_ad = Re(P e^{iθ}) ≈ Re(2γ i T̂⁺ d / (kΩ)) (docs/control.md §2.6). The washout
+H(s) = s/(s + ω_w), ω_w = 2π f_w, on each measurement (states z, ż = ω_w (y − z), started at
+z(0) = y(0)) passes y − z to the demodulation: a constant d decays as e^{−ω_w t}, a ramp
+d = ρ t leaves ρ/ω_w instead of ρ t. At the 1× the washout multiplies the response by
+H(ikΩ), and the update uses T̂⁺/H(ikΩ) = T̂⁺ (1 − i ω_w/(kΩ)) (the plant's T̂ times H): the
+revolution-averaged law, its fixed point P* and its rate γ are unchanged. The condition
+ω_w ≪ kΩ (checked: f_w ≤ 0.25 k f_min over the run) keeps the 1× clear of the corner and
+the compensation near 1; ω_w above the drift's rate (1/time scale) makes the removal
+effective.
 """
 
 from __future__ import annotations
@@ -63,12 +76,14 @@ def influence_coefficients(system, speeds_hz, measurements, *, chamber_pressure_
 def adaptive_rejection(system, speeds_hz, measurements, gain_1_per_s, *,
                        chamber_pressure_pa=0.0, config_ay_m=None, actuator=None,
                        p0_pa: complex = 0j, leak_1_per_s: float = 0.0,
-                       freeze_at_limits: bool = False) -> AdaptiveRejection:
+                       freeze_at_limits: bool = False,
+                       washout_hz: float = 0.0) -> AdaptiveRejection:
     """The adaptive 1× law with influence coefficients from the linear model
     (:func:`influence_coefficients`) on the grid ``speeds_hz``; ``gain_1_per_s`` a number or a
     schedule γ(Ω) (:class:`AdaptiveRejection`; designed on the plant:
     :func:`rotordyn.control.adaptive_design.adaptive_design`), ``leak_1_per_s`` σ,
-    ``freeze_at_limits`` the gradient off while the command is saturated."""
+    ``freeze_at_limits`` the gradient off while the command is saturated, ``washout_hz`` the
+    washout's corner f_w (Hz; 0: none)."""
     sp = v.vector("speeds_hz", speeds_hz)
     g = _gain(gain_1_per_s) if _is_scalar(gain_1_per_s) else _gain_schedule(gain_1_per_s, sp)
     _leak(leak_1_per_s)
@@ -76,7 +91,7 @@ def adaptive_rejection(system, speeds_hz, measurements, gain_1_per_s, *,
                                chamber_pressure_pa=chamber_pressure_pa,
                                config_ay_m=config_ay_m, actuator=actuator)
     return AdaptiveRejection(measurements, speeds_hz, T, g, p0_pa, 1.0, leak_1_per_s,
-                             freeze_at_limits)
+                             freeze_at_limits, washout_hz)
 
 
 __all__ = ["AdaptiveRejection", "MAX_GAIN_1_PER_S", "adaptive_rejection", "influence_coefficients",

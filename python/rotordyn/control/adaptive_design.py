@@ -138,11 +138,13 @@ def share_rule_gain(lam, w, fraction: float, gain_max: float) -> tuple[float, fl
 def adaptive_design(system, speeds_hz, measurements, *, fraction: float = 0.5,
                     gain_max_1_per_s: float = 20.0, leak_1_per_s: float = 0.0,
                     freeze_at_limits: bool = False, chamber_pressure_pa=0.0,
-                    config_ay_m=None, actuator=None) -> AdaptiveDesign:
+                    config_ay_m=None, actuator=None,
+                    washout_hz: float = 0.0) -> AdaptiveDesign:
     """Influence coefficients and the scheduled gain γ(Ω) = min(γ_max, κ min_k a_k/Re w_k)
     on the grid ``speeds_hz`` (κ = ``fraction`` ∈ (0, 1]: the share of each mode's decay rate
     the adaptation may take, to first order), with the exact averaged loop's max Re at that
-    gain as the check."""
+    gain as the check; ``washout_hz`` the law's measurement washout (Hz; 0: none, see
+    :mod:`rotordyn.control.adaptive`; the averaged loop is the same with it)."""
     sp = v.speeds("speeds_hz", speeds_hz)
     meas = parse_measurements(measurements)
     kappa = v.in_range("fraction", fraction, 0.0, 1.0, lo_open=True)
@@ -164,7 +166,7 @@ def adaptive_design(system, speeds_hz, measurements, *, fraction: float = 0.5,
         pmax[i] = lam.real.max()
         amax[i] = averaged_poles(ss, w0, upd[i], gam[i], sigma).real.max()
     law = AdaptiveRejection(meas, sp, T, (sp, gam), leak_1_per_s=sigma,
-                            freeze_at_limits=freeze_at_limits)
+                            freeze_at_limits=freeze_at_limits, washout_hz=washout_hz)
     return AdaptiveDesign(sp, T, gam, at, ssum, amax, pmax, law, kappa)
 
 

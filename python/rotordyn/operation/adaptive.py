@@ -16,6 +16,8 @@ from rotordyn.operation.measurement import parse_measurements
 
 MAX_GAIN_1_PER_S = 1e4
 MAX_LEAK_1_PER_S = 1e4
+#: the washout corner's largest ratio to the lowest 1× frequency of a run (k Ω_min / 2π)
+MAX_WASHOUT_RATIO = 0.25
 
 
 def _rate(name: str, value, hi: float, meaning: str) -> float:
@@ -36,6 +38,20 @@ def _leak(value) -> float:
     """The leak σ: finite, in [0, 1e4] 1/s."""
     return _rate("leak_1_per_s", value, MAX_LEAK_1_PER_S,
                  "the leak rate σ of Ṗ = −γ T̂⁺ 2y e^{−iθ} − σ P, 1/s; 0: no leak")
+
+
+def _washout(value) -> float:
+    """The washout corner f_w = ω_w/2π: finite, >= 0 Hz (0: no washout)."""
+    f = "adaptive.washout_hz"
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{f}: expected a finite corner frequency >= 0 Hz (0: no washout), "
+                         f"got {value!r}") from None
+    if not (math.isfinite(x) and x >= 0.0):
+        raise InputError(f"{f}: expected a finite corner frequency >= 0 Hz (0: no washout), "
+                         f"got {value!r}")
+    return x
 
 
 def _is_scalar(value) -> bool:
@@ -86,7 +102,10 @@ class AdaptiveRejection:
     interpolated piecewise linearly at Ω(t) in the right-hand side; ``p0_pa`` the complex
     coefficient at t = 0; ``order`` the harmonic (1: 1×); ``leak_1_per_s`` σ of the leak −σ P;
     ``freeze_at_limits``: the gradient term off while the command is outside the valve's
-    limits (the leak stays)."""
+    limits (the leak stays); ``washout_hz`` f_w (Hz, >= 0; 0: none): a first-order washout
+    H(s) = s/(s + ω_w), ω_w = 2π f_w, on each measurement before the demodulation, the
+    update compensated by 1/H(ikΩ) (:mod:`rotordyn.control.adaptive`); a run needs
+    f_w <= ``MAX_WASHOUT_RATIO`` · k · f_min (the corner well below the 1×)."""
 
     measurements: tuple
     speeds_hz: np.ndarray
@@ -96,6 +115,7 @@ class AdaptiveRejection:
     order: float = 1.0
     leak_1_per_s: float = 0.0
     freeze_at_limits: bool = False
+    washout_hz: float = 0.0
 
     def __post_init__(self):
         object.__setattr__(self, "measurements", parse_measurements(self.measurements))
@@ -118,6 +138,7 @@ class AdaptiveRejection:
         object.__setattr__(self, "leak_1_per_s", _leak(self.leak_1_per_s))
         object.__setattr__(self, "freeze_at_limits",
                            v.boolean("adaptive.freeze_at_limits", self.freeze_at_limits))
+        object.__setattr__(self, "washout_hz", _washout(self.washout_hz))
         p0 = complex(self.p0_pa)
         if not (math.isfinite(p0.real) and math.isfinite(p0.imag)):
             raise InputError(f"adaptive.p0_pa: expected a finite complex Pa, got {p0!r}")
@@ -161,6 +182,11 @@ class AdaptiveRejection:
         if x.size == 1 and (abs(lo_hz - x[0]) > tol or abs(hi_hz - x[0]) > tol):
             raise InputError(f"adaptive.speeds_hz: a single-speed law ({x[0]:g} Hz) runs at "
                              f"that speed only, got {lo_hz:g}–{hi_hz:g} Hz")
+        kf = self.order * max(lo_hz, 0.0)
+        if self.washout_hz > MAX_WASHOUT_RATIO * kf:
+            raise InputError(f"adaptive.washout_hz: expected a corner <= {MAX_WASHOUT_RATIO:g} "
+                             f"x the lowest {self.order:g}x frequency of the run "
+                             f"({kf:g} Hz), got {self.washout_hz:g} Hz")
         if self.scheduled:
             g = self.gain_1_per_s[0]
             tol = 1e-9 * max(abs(g[-1]), 1.0)
@@ -172,7 +198,7 @@ class AdaptiveRejection:
     def with_gain(self, gain_1_per_s) -> "AdaptiveRejection":
         return AdaptiveRejection(self.measurements, self.speeds_hz, self.influence,
                                  gain_1_per_s, self.p0_pa, self.order, self.leak_1_per_s,
-                                 self.freeze_at_limits)
+                                 self.freeze_at_limits, self.washout_hz)
 
     def to_core(self, Cm: np.ndarray, offset: np.ndarray):
         ny = Cm.shape[0]
@@ -193,6 +219,8 @@ class AdaptiveRejection:
             h.leak = float(self.leak_1_per_s)
         if self.freeze_at_limits:
             h.freeze_saturated = True
+        if self.washout_hz != 0.0:
+            h.washout = 2 * np.pi * self.washout_hz
         h.measurement = Cm
         h.offset = np.asarray(offset, dtype=float)
         h.table_omega = 2 * np.pi * self.speeds_hz
@@ -202,4 +230,4 @@ class AdaptiveRejection:
         return h
 
 
-__all__ = ["AdaptiveRejection", "MAX_GAIN_1_PER_S", "MAX_LEAK_1_PER_S"]
+__all__ = ["AdaptiveRejection", "MAX_GAIN_1_PER_S", "MAX_LEAK_1_PER_S", "MAX_WASHOUT_RATIO"]
