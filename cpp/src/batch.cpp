@@ -1,6 +1,7 @@
 // Stability batch of a sweep chunk (see batch.hpp).
 #include "rotordyn/batch.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -9,6 +10,59 @@
 #include "rotordyn/modal.hpp"
 
 namespace rotordyn {
+
+namespace {
+
+/// The ratio s of the step of the inputs (omega, pressure, a) from point i1 to i2 to their
+/// step from i0 to i1 when the three points lie on one straight line through the inputs (every
+/// moving input steps by the same ratio, the others stay): true and s, else false.
+bool step_ratio(const StabilityBatchInput& in, Eigen::Index i0, Eigen::Index i1,
+                Eigen::Index i2, double& s) {
+  bool have = false, line = true;
+  auto step = [&](double x0, double x1, double x2) {
+    const double d0 = x1 - x0, d1 = x2 - x1;
+    const double scale = std::max({std::abs(x0), std::abs(x1), std::abs(x2), 1e-300});
+    if (std::abs(d0) <= 1e-12 * scale) {
+      if (std::abs(d1) > 1e-12 * scale) line = false;  // a kink: this input starts moving
+      return;
+    }
+    const double si = d1 / d0;
+    if (!have) {
+      s = si;
+      have = true;
+    } else if (std::abs(si - s) > 1e-9 * std::max(std::abs(s), 1.0)) {
+      line = false;
+    }
+  };
+  step(in.omega[i0], in.omega[i1], in.omega[i2]);
+  step(in.pressure[i0], in.pressure[i1], in.pressure[i2]);
+  for (Eigen::Index j = 0; j < in.a.cols() && line; ++j)
+    step(in.a(i0, j), in.a(i1, j), in.a(i2, j));
+  return line && have && s > 0.0 && s <= 2.0;
+}
+
+/// The start of point i continued along a line from the equilibria of its predecessors on
+/// it, hist = {r(i-1), r(i-2), r(i-3)} (as many as converged in a row, 1 to 3): the
+/// polynomial through them in the line's parameter (quadratic from three, linear from two),
+/// evaluated at point i, when the points lie on one straight line through the inputs with
+/// steps of ratio in (0, 2] (a grid axis, uniform or not); else r(i-1) itself. The Newton
+/// iteration is polished to the discrete root where the Jacobian is well conditioned, so the
+/// start changes the cost, and otherwise the answer within the equilibrium tolerance only.
+Eigen::VectorXd line_start(const StabilityBatchInput& in, Eigen::Index i,
+                           const std::vector<Eigen::VectorXd>& hist) {
+  double s = 0.0, q = 0.0;
+  if (hist.size() < 2 || !step_ratio(in, i - 2, i - 1, i, s)) return hist[0];
+  if (hist.size() < 3 || !step_ratio(in, i - 3, i - 2, i - 1, q))
+    return hist[0] + s * (hist[0] - hist[1]);
+  // Lagrange through t = -1/q (i-3), 0 (i-2), 1 (i-1), evaluated at T = 1 + s (i).
+  const double t0 = -1.0 / q, T = 1.0 + s;
+  const double l3 = T * (T - 1.0) / (t0 * (t0 - 1.0));
+  const double l2 = (T - t0) * (T - 1.0) / t0;
+  const double l1 = (T - t0) * T / (1.0 - t0);
+  return l1 * hist[0] + l2 * hist[1] + l3 * hist[2];
+}
+
+}  // namespace
 
 StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchInput& in) {
   const Eigen::Index np = in.omega.size();
@@ -32,20 +86,34 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
   out.whirl = Eigen::MatrixXi::Zero(np, k);
   out.sleeve_share = RowMatrixXd::Constant(np, k, nan);
   out.modes.resize(np);
-  Eigen::VectorXd prev;
-  bool have_prev = false;
+  // Continuation along a line: hist holds the equilibria of the points before i on its line
+  // that converged ("ok") in a row, newest first (at most 3), for an extrapolated start
+  // (line_start); an extrapolated start that fails is retried from hist[0] itself, so
+  // extrapolation never loses an equilibrium the plain continuation finds.
+  std::vector<Eigen::VectorXd> hist;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   for (Eigen::Index i = 0; i < np; ++i) {
     const double w = in.omega[i];
     try {
       const Eigen::VectorXd a = in.a.row(i).transpose();
-      const Eigen::VectorXd r0 = (in.restart[i] == 0 && have_prev) ? prev : Eigen::VectorXd();
+      if (in.restart[i] != 0) hist.clear();
+      const Eigen::VectorXd r0 = hist.empty() ? Eigen::VectorXd() : line_start(in, i, hist);
+      const bool extrapolated = hist.size() >= 2 && (r0.array() != hist[0].array()).any();
       EquilibriumResult e = solver.equilibrium(w, in.pressure[i], a, r0, in.options);
+      int extra = 0;
+      if (extrapolated && e.status != "ok" && e.status != "contact") {
+        extra = e.iterations;
+        e = solver.equilibrium(w, in.pressure[i], a, hist[0], in.options);
+      }
       out.status[i] = e.status;
       out.message[i] = e.message;
-      out.iterations[i] = e.iterations;
-      have_prev = e.status == "ok";
-      if (have_prev) prev = e.r;
+      out.iterations[i] = e.iterations + extra;
+      if (e.status == "ok") {
+        hist.insert(hist.begin(), e.r);
+        if (hist.size() > 3) hist.pop_back();
+      } else {
+        hist.clear();
+      }
       for (std::size_t f = 0; f < e.h_min.size() && f < m.films.size(); ++f)
         out.h_min(i, static_cast<Eigen::Index>(f)) = e.h_min[f];
       if (e.status != "ok" && e.status != "contact") continue;
@@ -77,7 +145,7 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
     } catch (const std::exception& ex) {
       out.status[i] = "error";
       out.message[i] = ex.what();
-      have_prev = false;
+      hist.clear();
     }
   }
   return out;

@@ -39,7 +39,9 @@ struct StabilityBatchResult {
 
 /// Points in order on one solver; a point failing at any stage gets status "error" (or the
 /// equilibrium's status) and the batch goes on. Continuation: a point with restart = 0 starts
-/// from the previous point's equilibrium when that one converged ("ok").
+/// from the previous point's equilibrium when that one converged ("ok"), extrapolated along
+/// the line (quadratic through up to three converged predecessors whose inputs lie on one
+/// straight line; retried from the previous equilibrium itself if that start fails).
 StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchInput& in);
 
 /// The equilibria of a sweep chunk's points (omega, pressure, a, restart, options as in
