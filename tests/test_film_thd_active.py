@@ -352,3 +352,36 @@ def test_thermal_sweep_on_the_rig_equals_direct_calls(tmp_path):
                   "journal_x_m", "journal_y_m"):
             assert row[c] == pytest.approx(getattr(r, c)[0], rel=1e-9, abs=1e-15)
     assert fr["max_temperature_c"].nunique() == 4
+
+
+def test_not_the_rig_compressor_with_an_active_bearing():
+    """The THD film on a rotor that is not the rig: tests/data/models/compressor_active.toml
+    (a plain NDE bearing beside an active DE bearing, 150 Hz, 0.3 MPa, no a_y offset). A
+    temperature-independent oil gives the isothermal system bit for bit (both films, rotor and
+    sleeve coordinates, K_H, D_H); ISO VG 46 heats both films, the returned system reproduces
+    the thermal equilibrium (its frozen fields) and linearises to finite K_H, D_H."""
+    from pathlib import Path
+
+    s = rd.System.from_toml(Path(__file__).parent / "data" / "models" / "compressor_active.toml")
+    speed, pc = 150.0, 0.3e6
+    mu = {b.viscosity_pa_s for b in s.bearings if hasattr(b, "viscosity_pa_s")}
+    assert len(mu) == 1
+    flat = Oil(viscosity_law="exponential", mu_ref_pa_s=mu.pop(), t_ref_c=40.0,
+               beta_1_per_k=1e-300)
+    kw = {"speed_hz": speed, "chamber_pressure_pa": pc, "model": "thd",
+          "supply_temperature_c": TS}
+    r = rd.system_thermal_equilibrium(s, oil=flat, **kw)
+    assert r.status == "ok"
+    iso = rd.equilibrium(s, speed_hz=speed, chamber_pressure_pa=pc, warm_start=False)
+    assert np.array_equal(r.r, iso.r)
+    l0 = rd.linearize(s, speed_hz=speed, chamber_pressure_pa=pc)
+    l1 = rd.linearize(r.system, speed_hz=speed, chamber_pressure_pa=pc)
+    assert np.array_equal(l0.KH, l1.KH) and np.array_equal(l0.DH, l1.DH)
+    hot = rd.system_thermal_equilibrium(s, oil=VG46, **kw)
+    assert hot.status == "ok" and len(hot.max_temperature_c) == 2
+    assert all(t > TS + 1.0 for t in hot.max_temperature_c)
+    again = rd.equilibrium(hot.system, speed_hz=speed, chamber_pressure_pa=pc, warm_start=False)
+    assert np.max(np.abs(again.r - hot.r)) < 1e-9 * s.bearings[_active(s)].clearance_m
+    lin = rd.linearize(hot.system, speed_hz=speed, chamber_pressure_pa=pc)
+    assert np.isfinite(lin.KH).all() and np.isfinite(lin.DH).all()
+    assert not np.array_equal(lin.KH, l0.KH)
