@@ -133,9 +133,9 @@ def main(argv=None) -> int:
     print("comparison on equal inputs (ROSS's force differences = -dF/dq of its own _forces at "
           "its perturbed positions):")
     print(f"  ROSS's largest Reynolds number {ro['re_max']:.0f} (< 500: its eddy viscosity off); "
-          f"our exponential law within {100 * dev:.2f} % of its power law over "
-          f"{case.SUPPLY_C:g}..{ro['temperature_c'].max():.2f} degC (mu_s {mu_s:.5g} Pa s, "
-          f"beta {oil.beta_1_per_k:.5g} 1/K)")
+          f"our law ({oil.viscosity_law}) within {dev:.1e} of its power law a T^b (a "
+          f"{ro['mu_a']:.5g}, b {ro['mu_b']:.4f}) over {case.SUPPLY_C:g}.."
+          f"{ro['temperature_c'].max():.2f} degC (mu_s {mu_s:.5g} Pa s)")
     print(f"  eccentricity: ROSS {ro['eps']:.4f}, ours {res.eccentricity_ratio:.4f} "
           f"(isothermal {e_iso.eccentricity_ratio:.4f}); attitude ROSS "
           f"{ro['attitude_deg']:.2f} deg, ours {cmp_['attitude_deg']:.2f} deg")

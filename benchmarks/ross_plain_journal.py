@@ -10,9 +10,9 @@ every pad fed with fresh oil only (ROSS ``groove_factor = 1``; ours ``carry_over
 
 Equal physics where both models allow it:
 
-* viscosity: ROSS fits μ = a T^b (T in °C) through its lubricant's two points; ours has no
-  power law, so the exponential law through ROSS's μ at the supply temperature and at ROSS's
-  maximum film temperature (:func:`ours`; the two laws then differ by ~1 % in between, printed);
+* viscosity: ROSS fits μ = a T^b (T in °C) through its lubricant's two points; ours is the same
+  power law (``viscosity_law = "power"`` through two points of ROSS's fit, :func:`ours`; equal
+  to round-off, printed);
 * density, specific heat: ROSS's lubricant's; adiabatic walls on both sides;
 * cavitation: ROSS clips the full-film pressure (p < 0 → 0) = ours ``cavitation="gumbel"``;
 * laminar: ROSS switches its eddy-viscosity model on where its Reynolds number
@@ -133,16 +133,17 @@ def ross_outputs(rb) -> dict:
 
 def ours(ross_out: dict, n_circ: int, n_axial: int):
     """Our bearing and oil for the case: (JournalBearing, Oil, largest relative difference of
-    our exponential law from ROSS's power law between the supply and ROSS's T_max)."""
+    our law from ROSS's power law between the supply and ROSS's T_max: round-off)."""
     import rotordyn
     from rotordyn.bearings import Groove, Oil
 
     a, b = ross_out["mu_a"], ross_out["mu_b"]
     t_hi = float(ross_out["temperature_c"].max())
     mu_s = a * SUPPLY_C ** b
-    beta = -b * math.log(t_hi / SUPPLY_C) / (t_hi - SUPPLY_C)  # secant in ln μ
-    oil = Oil(viscosity_law="exponential", mu_ref_pa_s=mu_s, t_ref_c=SUPPLY_C, beta_1_per_k=beta,
-              density_kg_m3=ross_out["density"],
+    # ROSS's own law, exactly: the power law through two of its points (ours is μ1 (T/T1)^b,
+    # a T^b to round-off)
+    oil = Oil(viscosity_law="power", t1_c=SUPPLY_C, mu1_pa_s=mu_s, t2_c=100.0,
+              mu2_pa_s=a * 100.0 ** b, t_min_c=1.0, density_kg_m3=ross_out["density"],
               specific_heat_j_per_kg_k=ross_out["specific_heat"])
     tg = np.linspace(SUPPLY_C, t_hi, 101)
     dev = float(np.max(np.abs(oil.viscosity_pa_s(tg) / (a * tg ** b) - 1.0)))

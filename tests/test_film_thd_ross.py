@@ -26,8 +26,8 @@ _spec.loader.exec_module(case)
 @pytest.mark.ross
 def test_thd_plain_journal_against_ross():
     """Equal inputs: geometry, grooves/pads, speed, load, ROSS's lubricant (density, specific
-    heat; its power law μ = a T^b replaced by our exponential law through μ(40 °C) and μ at
-    ROSS's maximum film temperature: within 1.2 % of it over the film, asserted), supply
+    heat; its power law μ = a T^b, ours the same law, ``viscosity_law = "power"``: equal to
+    round-off, asserted), supply
     temperature, no carry-over, grid. Preconditions asserted: ROSS's Reynolds number stays below
     its eddy-viscosity threshold (500), so both films are laminar.
 
@@ -44,21 +44,21 @@ def test_thd_plain_journal_against_ross():
     that oil from the ambient at the supply temperature — the largest field difference), stops
     its temperature iteration at a 1 % relative change and Nelder–Mead at tol 0.8, integrates
     its force by the trapezoid rule across the grooves, and places unknowns at volume centres
-    (ours at nodes); our law differs from ROSS's by ≤ 1.2 %.
-    * eccentricity within 0.001 (measured +0.0002 here, +0.0003 at 72 × 16; ROSS's Nelder–Mead
-      stops within ~0.8 N, 2e-4 in ε; anchoring our law at the middle of the rise instead moves
-      ours by +0.0018: the case fixes the anchor; the isothermal film's is 0.036 lower), attitude
-      within 1.5° (measured +0.24°, −0.73°);
-    * the temperature field at ROSS's volume centres within 20 % of ROSS's rise (measured 7.4 %,
-      10 %: the end rows above), within 0.7 K away from the end rows (measured 0.35 K, 0.09 K)
-      and on the loaded pad (measured 0.18 K, 0.09 K), the pads' outlet temperatures within
-      0.3 K (measured 0.15, 0.11 K) of a 9.1 K rise;
+    (ours at nodes).
+    * eccentricity within 0.003 (measured +0.0021 here, +0.0022 at 72 × 16 with ROSS's exact
+      law — with the exponential substitute of the earlier case, +0.0002 / +0.0003: part of that
+      agreement was the substitute law's; ROSS's Nelder–Mead stops within ~0.8 N, 2e-4 in ε; the
+      isothermal film's is 0.036 lower), attitude within 1.5° (measured +0.19°, −0.77°);
+    * the temperature field at ROSS's volume centres within 20 % of ROSS's rise (measured 7.7 %,
+      10 %: the end rows above), within 0.7 K away from the end rows (measured 0.32 K, 0.11 K)
+      and on the loaded pad (measured 0.19 K, 0.11 K), the pads' outlet temperatures within
+      0.3 K (measured 0.16, 0.14 K) of a 9.1 K rise;
     * K with our temperature following the journal (ROSS's definition: the temperature
       re-solved at each perturbed position; ours from our THD equilibrium under loads ± 1 %)
-      within 6.5 % of the largest entry (measured 3.1 %, 1.0 %); with our field frozen (the
-      dynamic K the package returns) kyy is larger (+5.6 %, +8.5 %): asserted within 17 %;
+      within 6.5 % of the largest entry (measured 3.0 %, 0.9 %); with our field frozen (the
+      dynamic K the package returns) kyy is larger (+5.7 %, +8.6 %): asserted within 17 %;
     * C (ROSS re-solves the temperature with the squeeze terms; ours frozen) within 6.5 % of the
-      largest (measured 3.2 %, 2.4 %).
+      largest (measured 3.3 %, 2.3 %).
     """
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -74,13 +74,12 @@ def test_thd_plain_journal_against_ross():
     assert ro["K_ross_scale"][1] == pytest.approx(1 / math.sqrt(2), rel=5e-3)
 
     jb, oil, dev = case.ours(ro, n_circ, n_axial)
-    assert dev < 0.012
+    assert dev < 1e-12  # ROSS's own law
     res = case.thd(jb, oil)
     assert res.status == "ok"
     k_ff = case.field_following_stiffness(jb, oil)
     d = case.compare(res, ro, k_ff)
-    tol_eps = 1e-3
-    assert abs(d["d_eps"]) < tol_eps
+    assert abs(d["d_eps"]) < 3e-3
     assert abs(d["d_attitude_deg"]) < 1.5
     assert d["d_field_rel"] < 0.20
     assert d["d_field_inner_max_k"] < 0.7
@@ -91,4 +90,4 @@ def test_thd_plain_journal_against_ross():
     assert np.max(np.abs(d["dC"])) < 0.065
     # the THD film, not an isothermal one, is what agrees: the isothermal equilibrium is off
     e = jb.static_equilibrium(load_n=case.LOAD_N, speed_hz=case.SPEED_HZ)
-    assert ro["eps"] - e.eccentricity_ratio > 10 * tol_eps
+    assert ro["eps"] - e.eccentricity_ratio > 0.03

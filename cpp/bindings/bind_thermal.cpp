@@ -11,7 +11,8 @@ namespace rotordyn::py_bind {
 void bind_thermal(py::module_& m) {
   py::class_<OilModel>(m, "OilModel",
                        "Oil: viscosity-temperature law (walther: two points (t1_c, nu1_mm2_s), "
-                       "(t2_c, nu2_mm2_s); exponential: mu_ref_pa_s, t_ref_c, beta_1_per_k), "
+                       "(t2_c, nu2_mm2_s); exponential: mu_ref_pa_s, t_ref_c, beta_1_per_k; power: "
+                       "mu = a T^b (T in degC) through (t1_c, mu1_pa_s), (t2_c, mu2_pa_s)), "
                        "density, specific heat, the law's range [t_min_c, t_max_c].")
       .def(py::init<>())
       .def_property(
@@ -24,6 +25,8 @@ void bind_thermal(py::module_& m) {
       .def_readwrite("mu_ref_pa_s", &OilModel::mu_ref_pa_s)
       .def_readwrite("t_ref_c", &OilModel::t_ref_c)
       .def_readwrite("beta_1_per_k", &OilModel::beta_1_per_k)
+      .def_readwrite("mu1_pa_s", &OilModel::mu1_pa_s)
+      .def_readwrite("mu2_pa_s", &OilModel::mu2_pa_s)
       .def_readwrite("density_kg_m3", &OilModel::density_kg_m3)
       .def_readwrite("specific_heat_j_per_kg_k", &OilModel::specific_heat_j_per_kg_k)
       .def_readwrite("t_min_c", &OilModel::t_min_c)

@@ -34,11 +34,18 @@ double walther_w(double nu) { return std::log10(std::log10(nu + 0.7)); }
 ViscosityLaw parse_viscosity_law(const std::string& name) {
   if (name == "walther") return ViscosityLaw::walther;
   if (name == "exponential") return ViscosityLaw::exponential;
-  throw InputError("viscosity_law: expected 'walther' or 'exponential', got '" + name + "'");
+  if (name == "power") return ViscosityLaw::power;
+  throw InputError("viscosity_law: expected 'walther', 'exponential' or 'power', got '" + name +
+                   "'");
 }
 
 const char* viscosity_law_name(ViscosityLaw law) {
-  return law == ViscosityLaw::walther ? "walther" : "exponential";
+  switch (law) {
+    case ViscosityLaw::walther: return "walther";
+    case ViscosityLaw::exponential: return "exponential";
+    case ViscosityLaw::power: return "power";
+  }
+  return "walther";
 }
 
 void OilModel::validate() const {
@@ -65,6 +72,23 @@ void OilModel::validate() const {
       throw InputError("nu2_mm2_s: expected a viscosity below nu1_mm2_s = " + num(nu1_mm2_s) +
                        " mm^2/s (the viscosity must fall with temperature: t2_c > t1_c), got " +
                        num(nu2_mm2_s));
+  } else if (law == ViscosityLaw::power) {
+    // μ = a T^b with T in degC: both points and the whole range above 0 degC
+    if (!(std::isfinite(t1_c) && t1_c > 0.0))
+      throw InputError("t1_c: expected a temperature > 0 degC (the power law mu = a T^b takes T "
+                       "in degC), got " + num(t1_c));
+    if (!(std::isfinite(t2_c) && t2_c > t1_c))
+      throw InputError("t2_c: expected a temperature > t1_c = " + num(t1_c) + " degC, got " +
+                       num(t2_c));
+    positive(mu1_pa_s, "mu1_pa_s");
+    positive(mu2_pa_s, "mu2_pa_s");
+    if (!(mu2_pa_s < mu1_pa_s))
+      throw InputError("mu2_pa_s: expected a viscosity below mu1_pa_s = " + num(mu1_pa_s) +
+                       " Pa s (the viscosity must fall with temperature: t2_c > t1_c), got " +
+                       num(mu2_pa_s));
+    if (!(t_min_c > 0.0))
+      throw InputError("t_min_c: expected > 0 degC for the power law (mu = a T^b, T in degC), "
+                       "got " + num(t_min_c));
   } else {
     positive(mu_ref_pa_s, "mu_ref_pa_s");
     if (!std::isfinite(t_ref_c))
@@ -77,6 +101,10 @@ void OilModel::validate() const {
 
 double OilModel::viscosity_pa_s(double t_c) const {
   if (law == ViscosityLaw::exponential) return mu_ref_pa_s * std::exp(-beta_1_per_k * (t_c - t_ref_c));
+  if (law == ViscosityLaw::power) {
+    const double b = std::log(mu2_pa_s / mu1_pa_s) / std::log(t2_c / t1_c);
+    return mu1_pa_s * std::pow(t_c / t1_c, b);
+  }
   const double l1 = std::log10(t1_c + kKelvin), l2 = std::log10(t2_c + kKelvin);
   const double B = (walther_w(nu1_mm2_s) - walther_w(nu2_mm2_s)) / (l2 - l1);
   const double A = walther_w(nu1_mm2_s) + B * l1;

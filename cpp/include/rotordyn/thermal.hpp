@@ -6,6 +6,8 @@
 //               mm²/s, A and B from two points (t1_c, nu1), (t2_c, nu2) (e.g. an ISO VG grade's
 //               40 °C and 100 °C viscosities); μ = ρ ν.
 //   exponential μ = mu_ref exp(−beta (T − t_ref_c)).
+//   power       μ = a T^b with T in °C (the law of ROSS's thermal bearings), a and b through
+//               two points (t1_c, mu1_pa_s), (t2_c, mu2_pa_s); needs T > 0 °C (t_min_c > 0).
 // Heat balance (the Raimondi–Boyd/Shigley assumptions, with hot-oil carry-over): the film draws
 // Q (with supply grooves: the flow they deliver into the film; without: the flow into the film
 // just downstream of its line of maximum thickness, max_film_flow) and leaks Q_s at its ends; the leakage leaves at the mean rise ΔT/2, the rest Q − Q_s at ΔT, all the friction
@@ -22,8 +24,8 @@
 
 namespace rotordyn {
 
-enum class ViscosityLaw { walther = 0, exponential = 1 };
-ViscosityLaw parse_viscosity_law(const std::string& name);  // "walther" | "exponential"
+enum class ViscosityLaw { walther = 0, exponential = 1, power = 2 };
+ViscosityLaw parse_viscosity_law(const std::string& name);  // "walther" | "exponential" | "power"
 const char* viscosity_law_name(ViscosityLaw law);
 
 struct OilModel {
@@ -31,6 +33,7 @@ struct OilModel {
   double t1_c = 40.0, nu1_mm2_s = 32.0;    ///< walther: first point (ISO VG 32 at 40 °C)
   double t2_c = 100.0, nu2_mm2_s = 5.4;    ///< walther: second point (t2_c > t1_c)
   double mu_ref_pa_s = 0.03, t_ref_c = 40.0, beta_1_per_k = 0.03;  ///< exponential
+  double mu1_pa_s = 0.0278, mu2_pa_s = 0.0047;  ///< power: μ at t1_c, t2_c (VG 32: ρν)
   double density_kg_m3 = 870.0;
   double specific_heat_j_per_kg_k = 2000.0;
   double t_min_c = -20.0, t_max_c = 200.0;  ///< range of the law (supply and film temperatures)

@@ -20,7 +20,10 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.errors import InputError
 
-VISCOSITY_LAWS = ("walther", "exponential")
+VISCOSITY_LAWS = ("walther", "exponential", "power")
+_OIL_NUMBERS = ("t1_c", "nu1_mm2_s", "t2_c", "nu2_mm2_s", "mu_ref_pa_s", "t_ref_c",
+                "beta_1_per_k", "mu1_pa_s", "mu2_pa_s", "density_kg_m3",
+                "specific_heat_j_per_kg_k", "t_min_c", "t_max_c")
 
 
 @dataclass(frozen=True, slots=True)
@@ -30,7 +33,9 @@ class Oil:
     Parameters
     ----------
     viscosity_law : "walther" (ASTM D341 through (t1_c, nu1_mm2_s), (t2_c, nu2_mm2_s), μ = ρν)
-        or "exponential" (μ = mu_ref_pa_s · exp(−beta_1_per_k (T − t_ref_c))).
+        or "exponential" (μ = mu_ref_pa_s · exp(−beta_1_per_k (T − t_ref_c)))
+        or "power" (μ = a T^b with T in °C, the law of ROSS's thermal bearings, through
+        (t1_c, mu1_pa_s), (t2_c, mu2_pa_s); needs t_min_c > 0 °C).
     density_kg_m3, specific_heat_j_per_kg_k : ρ, c_p (constant).
     t_min_c, t_max_c : range of the law; supply and film temperatures must lie in it.
     """
@@ -43,6 +48,8 @@ class Oil:
     mu_ref_pa_s: float = 0.03
     t_ref_c: float = 40.0
     beta_1_per_k: float = 0.03
+    mu1_pa_s: float = 0.0278
+    mu2_pa_s: float = 0.0047
     density_kg_m3: float = 870.0
     specific_heat_j_per_kg_k: float = 2000.0
     t_min_c: float = -20.0
@@ -50,18 +57,14 @@ class Oil:
 
     def __post_init__(self) -> None:
         v.choice("oil.viscosity_law", self.viscosity_law, VISCOSITY_LAWS)
-        for f in ("t1_c", "nu1_mm2_s", "t2_c", "nu2_mm2_s", "mu_ref_pa_s", "t_ref_c",
-                  "beta_1_per_k", "density_kg_m3", "specific_heat_j_per_kg_k", "t_min_c",
-                  "t_max_c"):
+        for f in _OIL_NUMBERS:
             object.__setattr__(self, f, v.finite(f"oil.{f}", getattr(self, f)))
         self.to_core().validate()  # InputError naming the field (and its range)
 
     def to_core(self) -> _core.OilModel:
         o = _core.OilModel()
         o.law = self.viscosity_law
-        for f in ("t1_c", "nu1_mm2_s", "t2_c", "nu2_mm2_s", "mu_ref_pa_s", "t_ref_c",
-                  "beta_1_per_k", "density_kg_m3", "specific_heat_j_per_kg_k", "t_min_c",
-                  "t_max_c"):
+        for f in _OIL_NUMBERS:
             setattr(o, f, float(getattr(self, f)))
         return o
 

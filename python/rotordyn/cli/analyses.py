@@ -226,7 +226,8 @@ def _cmd_equilibrium(args) -> int:
 
 def _cmd_thermal(args) -> int:
     s = models.load(args.model)
-    if s.thermal is not None and args.oil_walther is None and args.oil_exponential is None:
+    if s.thermal is not None and all(x is None for x in (args.oil_walther, args.oil_exponential,
+                                                       args.oil_power)):
         oil = None  # the model's [thermal] oil (--supply-temperature-c may still override)
     else:
         oil = oil_from_args(args)

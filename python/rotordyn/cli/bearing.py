@@ -7,7 +7,8 @@ readable record. Exit 2 on bad input (the message names the field).
 
 Film physics (docs/film-physics.md): ``--turbulence ng_pan --density-kg-m3 RHO`` for the
 turbulent film; ``--supply-temperature-c T`` with ``--load-n`` and an oil law
-(``--oil-walther T1 NU1 T2 NU2`` or ``--oil-exponential MU_REF T_REF BETA``) for the
+(``--oil-walther T1 NU1 T2 NU2``, ``--oil-exponential MU_REF T_REF BETA`` or
+``--oil-power T1 MU1 T2 MU2``) for the
 effective-temperature equilibrium (then ``--viscosity-pa-s`` may be omitted): it prints the
 effective and maximum temperatures, the power loss and flows, and K, C at the thermal
 equilibrium (temperature frozen).

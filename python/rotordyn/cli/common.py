@@ -216,6 +216,10 @@ def add_thermal_arguments(s) -> None:
     s.add_argument("--oil-exponential", type=float, nargs=3, default=None,
                    metavar=("MU_REF_PA_S", "T_REF_C", "BETA_1_PER_K"),
                    help="exponential viscosity law mu_ref exp(-beta (T - T_ref))")
+    s.add_argument("--oil-power", type=float, nargs=4, default=None,
+                   metavar=("T1_C", "MU1_PA_S", "T2_C", "MU2_PA_S"),
+                   help="power viscosity law mu = a T^b (T in degC; ROSS's law) through two "
+                        "points (its range is then [1, 200] degC)")
     s.add_argument("--specific-heat-j-per-kg-k", type=float, default=2000.0, metavar="CP",
                    help="oil specific heat, J/(kg K) (thermal model)")
     s.add_argument("--supply-flow-m3-s", type=float, default=None, metavar="Q",
@@ -252,19 +256,23 @@ def oil_from_args(args) -> "Oil | None":
     from rotordyn.bearings.thermal import Oil
 
     if args.supply_temperature_c is None:
-        if args.oil_walther is not None or args.oil_exponential is not None:
+        if any(x is not None for x in (args.oil_walther, args.oil_exponential, args.oil_power)):
             raise InputError("--supply-temperature-c: an --oil-* law needs the supply "
                              "temperature (the thermal model)")
         return None
-    if (args.oil_walther is None) == (args.oil_exponential is None):
-        raise InputError("--oil-walther/--oil-exponential: the thermal model needs exactly one "
-                         "viscosity law")
+    if sum(x is not None for x in (args.oil_walther, args.oil_exponential, args.oil_power)) != 1:
+        raise InputError("--oil-walther/--oil-exponential/--oil-power: the thermal model needs "
+                         "exactly one viscosity law")
     rho = 870.0 if args.density_kg_m3 is None else args.density_kg_m3
     common = dict(density_kg_m3=rho, specific_heat_j_per_kg_k=args.specific_heat_j_per_kg_k)
     if args.oil_walther is not None:
         t1, n1, t2, n2 = args.oil_walther
         return Oil(viscosity_law="walther", t1_c=t1, nu1_mm2_s=n1, t2_c=t2, nu2_mm2_s=n2,
                    **common)
+    if args.oil_power is not None:
+        t1, m1, t2, m2 = args.oil_power
+        return Oil(viscosity_law="power", t1_c=t1, mu1_pa_s=m1, t2_c=t2, mu2_pa_s=m2,
+                   t_min_c=1.0, **common)
     mu, tr, beta = args.oil_exponential
     return Oil(viscosity_law="exponential", mu_ref_pa_s=mu, t_ref_c=tr, beta_1_per_k=beta,
                **common)
