@@ -1,6 +1,7 @@
-"""The dict-per-row sweep chunks of the thermal, waterfall, run-up, robust and hopf analyses
-as they were before their columnar blocks (issue 22), kept verbatim (from
-python/rotordyn/sweep/work.py, robust_rows.py and hopf_rows.py at 6ea1047) as the reference of
+"""The dict-per-row sweep chunks of the thermal, waterfall, run-up, robust, hopf and
+limit_cycle analyses as they were before their columnar blocks (issue 22), kept verbatim (from
+python/rotordyn/sweep/work.py, robust_rows.py, hopf_rows.py and
+limit_cycle_rows.py at 6ea1047) as the reference of
 tests/test_sweep_columns_points.py: one dict per row, then the generic
 ``rotordyn.sweep.work.to_table``."""
 # flake8: noqa
@@ -18,6 +19,11 @@ from rotordyn.errors import RotordynError
 from rotordyn.operation import SpeedProfile
 from rotordyn.sweep import points as pt
 from rotordyn.sweep.hopf_rows import HOPF_COLUMNS, _one
+from rotordyn.sweep.limit_cycle_rows import (CYCLE_COLUMNS, NATURAL_ENDS, _Line,
+                                            _branch, _cycle_columns, _same, _shoot,
+                                            _short_of_the_end, _starts, _where)
+from rotordyn.analysis.assembly import pin_assembled
+import copy
 from rotordyn.sweep.lines import threshold_line_rows
 from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, fail_row, operating,
                                    points, ref_bearing, solve_equilibrium)
@@ -27,9 +33,10 @@ from rotordyn.sweep.work import OUTPUTS, Job, to_table
 def run_chunk(job: Job, chunk_id: int, lo: int, hi: int) -> pa.Table:
     rows: list[dict] = []
     variants = Variants(base_system(job.model_toml), job.model_toml)
-    if job.analysis == "hopf":
+    if job.analysis in ("hopf", "limit_cycle"):
+        line = hopf_line if job.analysis == "hopf" else limit_cycle_line
         for s, e in _lines(job, lo, hi):
-            hopf_line(job, variants, chunk_id, s, e, rows)
+            line(job, variants, chunk_id, s, e, rows)
     else:
         {"thermal": _thermal_rows, "waterfall": _wf_rows, "run-up": _runup_rows,
          "robust": robust_rows}[job.analysis](job, variants, chunk_id, lo, hi, rows)
@@ -258,3 +265,109 @@ def hopf_line(job, variants, chunk_id, lo, hi, rows, scan=None):
                     np.linalg.LinAlgError) as exc:
                 out.update(status="error", message=f"l1: {type(exc).__name__}: {exc}")
         rows.append(out)
+
+
+def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
+    """The rows of the line [lo, hi) (module docstring)."""
+    hrows, scan = [], {}
+    # the hopf rows without the shooting's ``tol``: the threshold scan, the crossings and
+    # l1 read ``tol`` as the equilibrium's tolerance (default 1e-10, as in a hopf sweep)
+    hjob = copy.copy(job)
+    hjob.options = {k: x for k, x in job.options.items() if k != "tol"}
+    hopf_line(hjob, variants, chunk_id, lo, hi, hrows, scan)
+    nan_cols = {c: math.nan for c in CYCLE_COLUMNS}
+    nan_cols.update(cycle=None, bearing=None, critical_type=None, stable=None,
+                    equilibrium_stable=None, coexists_with_stable_equilibrium=None,
+                    bistable=None, newton_iterations=None)
+    for r in hrows:
+        rows.append({**nan_cols, **r, "record": "hopf"})
+    vary = job.options["vary"]
+    idx0, p0 = job.point(lo)
+    try:
+        asm = variants.get(p0)
+    except RotordynError as exc:
+        for pid in range(lo, hi):
+            idx, p = job.point(pid)
+            rows.append(pt.fail_row({**nan_cols, **pt.common_row(job, pid, chunk_id, idx, p,
+                                                                  None), "record": "cycle"},
+                                    "failed", str(exc)))
+        return
+    pin_assembled(asm)
+    pts = [job.point(pid) for pid in range(lo, hi)]
+    xs = [p[vary] for _, p in pts]
+    span = max(xs) - min(xs)
+    line = _Line(job, asm, p0, xs)
+    ys = scan.get("y", np.full(len(xs), np.nan))
+    name, C = _where(asm, job.options.get("station"))
+    bc = pt.ref_bearing(asm)
+    clearance = bc.clearance_m if (bc is not None and job.options.get("station") is None) \
+        else min(b.clearance_m for b in asm.bearings)
+
+    branches, problems = [], []
+    for hr in hrows:
+        if hr.get("status") != "ok" or not math.isfinite(hr.get("value", math.nan)):
+            if hr.get("status") == "error":
+                problems.append(f"crossing {hr['crossing']}: {hr['message']}")
+            continue
+        if any(b[2].stop == "hopf" and abs(b[2].bifurcations[-1]["parameter"] -
+                                           hr["value"]) < 1e-2 * span
+               and abs(b[1].value - hr["value"]) > 1e-2 * span for b in branches):
+            continue  # this crossing ends a branch already continued from another one
+        try:
+            h, brs, msg = _branch(job, line, hr, span, ys)
+        except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
+            h, brs, msg = None, [], f"{type(exc).__name__}: {exc}"
+        if not brs:
+            problems.append(f"crossing {hr['crossing']}: {msg}")
+            continue
+        hcols = {c: hr[c] for c in ("crossing", "value", "stable_side", "evaluations",
+                                    *HOPF_COLUMNS)}
+        for br in brs:
+            if br.stop not in NATURAL_ENDS:
+                problems.append(f"crossing {hr['crossing']}: the branch stopped early "
+                                f"({br.stop}: {br.message}) at {vary} = "
+                                f"{br.parameter[-1]:.6g}")
+            elif br.stop == "bound" and len(br) and _short_of_the_end(br, xs):
+                problems.append(f"crossing {hr['crossing']}: the branch left its bounds "
+                                f"after {vary} = {br.parameter[-1]:.6g}, short of the "
+                                "grid's end value (not bracketed)")
+            branches.append((hcols, h, br))
+
+    n = asm.n
+    for k, (idx, p) in enumerate(pts):
+        row = {**nan_cols, **pt.common_row(job, lo + k, chunk_id, idx, p, asm),
+               "record": "cycle"}
+        y = float(ys[k])
+        eq_st = bool(y < 0) if math.isfinite(y) else None
+        row.update(max_real_1_per_s=y, equilibrium_stable=eq_st, bearing=name)
+        g = p[vary]
+        f = line.operating(g)[0]
+        found, failed = [], []
+        for hcols, h, br in branches:
+            for how, starts in _starts(h, br, g, n, span):
+                o, msgs = _shoot(line, h, g, how, starts)
+                if o is None:
+                    failed.append((hcols, "; ".join(msgs)))
+                    continue
+                cols = _cycle_columns(o, C, clearance, f)
+                if any(_same(c, cols, line.tol, clearance) for _, c in found):
+                    continue  # the same cycle reached from two segments
+                found.append((hcols, cols))
+        found.sort(key=lambda t: t[1]["amplitude_m"])
+        bistable = bool(eq_st) and any(c["stable"] for _, c in found)
+        for j, (hcols, cols) in enumerate(found):
+            rows.append({**row, **hcols, **cols, "cycle": j + 1,
+                         "coexists_with_stable_equilibrium": bool(eq_st),
+                         "bistable": bistable, "status": "ok", "message": ""})
+        for hcols, msg in failed:
+            rows.append({**row, **hcols, "cycle": 0, "bistable": bistable,
+                         "status": "failed", "message": msg})
+        if not found and not failed:
+            if problems:
+                st, msg = "failed", "; ".join(problems)
+            elif not branches:
+                st, msg = "no_cycle", "no Hopf point on the line: no cycle branch"
+            else:
+                st, msg = "no_cycle", "no cycle branch passes this value"
+            rows.append({**row, "cycle": 0, "bistable": False,
+                         "status": st, "message": msg})

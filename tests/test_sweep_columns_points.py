@@ -88,3 +88,23 @@ def test_robust_chunk_equals_the_former_per_row_code(pd_law, margins):
     st = new.column("status").cast("string").to_pylist()
     assert "ok" in st and len(set(st)) > 1
     assert_identical(new, old)
+
+
+LC_OPTIONS = {"vary": "speed_hz", "rtol": 1e-6, "tol": 1e-4, "ds": 0.1, "ds_max": 0.3,
+              "sensitivity_rtol": 1e-4, "newton": "broyden"}
+LC_GRID = {"bearings.*.n_circ": [36], "bearings.*.n_axial": [4]}
+
+
+@pytest.mark.parametrize("speeds, max_points", [([125.0, 127.0], 2),
+                                                ([121.0, 125.0, 127.0], 40)])
+def test_limit_cycle_chunk_equals_the_former_per_row_code(speeds, max_points):
+    """The compressor's whip line of tests/test_limit_cycle_sweep.py: branches stopped
+    early (``failed`` rows), then the full line (a stable cycle beside the stable
+    equilibrium, ``no_cycle`` at 127 Hz), Hopf records and cycle records."""
+    job = Job("s", _model("plain"), "limit_cycle", {**LC_OPTIONS, "max_points": max_points},
+              {**LC_GRID, "speed_hz": speeds})
+    hi = int(np.prod(job.shape))
+    new, old = run_chunk(job, 2, 0, hi), ref.run_chunk(job, 2, 0, hi)
+    rec = new.column("record").cast("string").to_pylist()
+    assert "hopf" in rec and "cycle" in rec
+    assert_identical(new, old)

@@ -148,24 +148,20 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     boundary) as a table with :func:`schema`."""
     base = base_system(job.model_toml)
     variants = Variants(base, job.model_toml)
-    if pids is not None or job.analysis in _BLOCKS:
-        pl = list(range(lo, hi)) if pids is None else list(pids)
-        asms: list = [None] * len(pl)
-        eqs: list = []
-        if pids is not None:
-            blocks = boundary_blocks(job, variants, chunk_id, pl, asms,
-                                     equilibria=eqs if job.return_equilibria else None)
-        else:
-            blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
-        t = block_table(job, schema(job.analysis, list(job.axes)), categories(job.analysis),
-                        identity(job, chunk_id, pl, asms), blocks)
-        if eqs:  # the points' equilibria, for the next refinement level's starts
-            t = t.replace_schema_metadata({**(t.schema.metadata or {}),
-                                           EQUILIBRIA: pack_equilibria(eqs[0])})
-        return t
-    rows: list[dict] = []
-    _ANALYSIS[job.analysis](job, variants, chunk_id, lo, hi, rows)
-    return to_table(job, rows)
+    pl = list(range(lo, hi)) if pids is None else list(pids)
+    asms: list = [None] * len(pl)
+    eqs: list = []
+    if pids is not None:
+        blocks = boundary_blocks(job, variants, chunk_id, pl, asms,
+                                 equilibria=eqs if job.return_equilibria else None)
+    else:
+        blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
+    t = block_table(job, schema(job.analysis, list(job.axes)), categories(job.analysis),
+                    identity(job, chunk_id, pl, asms), blocks)
+    if eqs:  # the points' equilibria, for the next refinement level's starts
+        t = t.replace_schema_metadata({**(t.schema.metadata or {}),
+                                       EQUILIBRIA: pack_equilibria(eqs[0])})
+    return t
 
 
 def _lines(job, lo, hi):
@@ -173,8 +169,6 @@ def _lines(job, lo, hi):
     n = job.shape[-1]
     for s in range(lo, hi, n):
         yield s, min(s + n, hi)
-
-
 
 
 def _threshold_blocks(job, variants, chunk_id, pids, asms):
@@ -189,34 +183,35 @@ def _unbalance_blocks(job, variants, chunk_id, pids, asms):
             for b in unbalance_line(job, variants, s, e, s - lo, asms)]
 
 
-# Analyses whose chunk is built as columnar blocks (:mod:`.columns`, :mod:`.blocks`).
 def _hopf_blocks(job, variants, chunk_id, pids, asms):
     lo = pids[0] if len(pids) else 0
     return [b for s, e in _lines(job, lo, lo + len(pids))
             for b in hopf_line_blocks(job, variants, s, e, s - lo, asms)]
 
 
+# Every analysis's chunk as columnar blocks (:mod:`.columns`; docs/sweeps.md, the audit).
 _BLOCKS = {"equilibrium": eq_blocks, "stability": stab_blocks, "campbell": stab_blocks,
            "threshold": _threshold_blocks, "unbalance": _unbalance_blocks,
            "hopf": _hopf_blocks, "thermal": thermal_blocks, "waterfall": waterfall_blocks,
            "run-up": runup_blocks, "robust": robust_blocks}
 
 
-def _limit_cycle_rows(job, variants, chunk_id, lo, hi, rows):
+def _limit_cycle_blocks(job, variants, chunk_id, pids, asms):
     from rotordyn.sweep.limit_cycle_rows import limit_cycle_line
 
-    for s, e in _lines(job, lo, hi):
-        limit_cycle_line(job, variants, chunk_id, s, e, rows)
+    lo = pids[0] if len(pids) else 0
+    return [b for s, e in _lines(job, lo, lo + len(pids))
+            for b in limit_cycle_line(job, variants, s, e, s - lo, asms)]
 
 
-# Analyses whose chunk is still one dict per row: a limit-cycle row is a shooting solve
-# (seconds), after a continuation of the branch through it (docs/sweeps.md).
-_ANALYSIS = {"limit_cycle": _limit_cycle_rows}
+_BLOCKS["limit_cycle"] = _limit_cycle_blocks
 
 
 def to_table(job: Job, rows: list[dict]) -> pa.Table:
     """Rows (dicts) to the fixed schema: missing values are nulls, categoricals use the fixed
-    category lists so every part has the same dictionary."""
+    category lists so every part has the same dictionary. No chunk builds its rows this way
+    any more (every analysis is columnar, :func:`run_chunk`); kept as the reference of
+    tests/test_sweep_columns*.py and for row-wise callers."""
     sch = schema(job.analysis, list(job.axes))
     cats = categories(job.analysis)
     cols = []
