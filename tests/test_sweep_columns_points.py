@@ -5,8 +5,9 @@ Reference: tests/sweep_point_rows_reference.py, the chunk code as it was before 
 row, the generic ``to_table``), kept verbatim. Comparison: that of tests/test_sweep_columns.py
 (the same schema and metadata, the same null masks, every float column equal bit for bit,
 NaN included, every other column value for value). Tolerance: none. Samples: the paper rig
-and the compressor models of tests/data/models (plain and thermal films, a refused point in
-a line, a model field or thermal field axis, points whose equilibrium fails).
+and the compressor models of tests/data/models (plain and thermal films, the tilting-pad
+bearings with a THD film per pad and in a waterfall, a refused point in a line, a model field
+or thermal field axis, points whose equilibrium fails).
 """
 
 import sys
@@ -22,12 +23,31 @@ sys.path.insert(0, str(Path(__file__).parent))
 import sweep_point_rows_reference as ref  # noqa: E402
 from test_sweep_columns import _model, assert_identical  # noqa: E402
 
+# compressor_plain_thermal.toml's oil system with the THD film, for the tilting-pad bearings
+THD = """
+[thermal]
+supply_temperature_c = 45.0
+carry_over = 0.6
+model = "thd"
+
+[thermal.oil]
+viscosity_law = "walther"
+t1_c = 40.0
+nu1_mm2_s = 32.0
+t2_c = 100.0
+nu2_mm2_s = 5.4
+density_kg_m3 = 860.0
+specific_heat_j_per_kg_k = 2000.0
+"""
 UB_RIG = [[6, 2e-5, 0.0]]
 UB_PLAIN = [[3, 1e-5, 0.0]]
 CASES = {
     "thermal": ("plain_thermal", "thermal", {},
                 {"thermal.supply_temperature_c": [35.0, 50.0],
                  "chamber_pressure_pa": [0.0, -1.0], "speed_hz": [150.0]}),
+    "thermal-tilting-thd": ("tilting_pad+thd", "thermal", {},
+                            {"thermal.supply_temperature_c": [35.0, 50.0],
+                             "speed_hz": [100.0, 150.0]}),
     "thermal-no-model": ("plain", "thermal", {}, {"speed_hz": [100.0, 150.0]}),
     "waterfall-rig": ("rig", "waterfall", {"unbalances": UB_RIG, "revolutions": 6,
                                            "samples_per_revolution": 32},
@@ -36,6 +56,10 @@ CASES = {
                                                "samples_per_revolution": 32,
                                                "max_frequency_hz": 300.0},
                         {"bearings.0.clearance_m": [1e-4, 1.5e-4], "speed_hz": [100.0]}),
+    "waterfall-tilting": ("tilting_pad", "waterfall", {"unbalances": UB_PLAIN, "revolutions": 4,
+                                                       "samples_per_revolution": 32,
+                                                       "max_frequency_hz": 300.0},
+                          {"speed_hz": [100.0, -5.0, 150.0]}),
     "run-up-rig": ("rig", "run-up", {"unbalances": UB_RIG, "start_hz": 30.0, "stop_hz": 33.0,
                                      "rate_hz_per_s": 15.0},
                    {"chamber_pressure_pa": [0.2e6, -1.0], "config_ay_m": [0.0]}),
@@ -53,7 +77,8 @@ CASES = {
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_chunk_rows_equal_the_former_per_row_code(case):
     model, analysis, options, axes = CASES[case]
-    job = Job("s", _model(model), analysis, options, axes)
+    name, _, extra = model.partition("+")
+    job = Job("s", _model(name) + (THD if extra == "thd" else ""), analysis, options, axes)
     job.meta = {"sweep_id": "s", "units": {"speed_hz": {"units": "Hz"}}}
     hi = int(np.prod(job.shape))
     new, old = run_chunk(job, 3, 0, hi), ref.run_chunk(job, 3, 0, hi)
@@ -108,3 +133,29 @@ def test_limit_cycle_chunk_equals_the_former_per_row_code(speeds, max_points):
     rec = new.column("record").cast("string").to_pylist()
     assert "hopf" in rec and "cycle" in rec
     assert_identical(new, old)
+
+
+def test_schemas_equal_the_stored_ones_of_the_code_before():
+    """Column names, order and arrow types of a chunk's table against
+    tests/data/sweep_point_schemas.json, written by ``schema()`` of the code at 6ea1047 (before
+    the columnar blocks) for axes speed_hz × chamber_pressure_pa: a changed dtype fails here
+    even where both paths of the comparisons above would change together."""
+    import json
+
+    stored = json.loads((Path(__file__).parent / "data" / "sweep_point_schemas.json")
+                        .read_text())
+    axes = {"speed_hz": [150.0], "chamber_pressure_pa": [0.0, -1.0]}
+    for analysis, want in stored.items():
+        opts = {"vary": "chamber_pressure_pa"} if analysis in ("hopf", "limit_cycle") else {}
+        job = Job("s", _model("plain_thermal"), analysis, opts, axes)
+        if analysis in ("hopf", "limit_cycle", "robust", "waterfall", "run-up"):
+            from rotordyn.sweep.work import schema
+
+            got = schema(analysis, list(axes))  # the schema every chunk is built to
+        else:
+            got = run_chunk(job, 0, 0, 2).schema
+        assert [[f.name, str(f.type)] for f in got] == want, analysis
+    t = run_chunk(Job("s", _model("plain"), "waterfall", {"unbalances": UB_PLAIN,
+                                                            "revolutions": 4},
+                      axes), 0, 0, 2)
+    assert [[f.name, str(f.type)] for f in t.schema] == stored["waterfall"]
