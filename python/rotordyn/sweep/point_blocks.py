@@ -1,7 +1,8 @@
 """Thermal, waterfall and run-up chunks as columnar blocks (issue 22): the work of a point is
 one C++ call the core has no batch of (``thermal_system_equilibrium``: the effective-
-temperature fixed point; ``integrate``: a transient of tens of revolutions, after the one
-cold equilibrium it starts from), so the chunk loops over its points, and each point's
+temperature fixed point; ``integrate``: a transient of tens of revolutions), so the chunk
+loops over its points; the cold equilibria the transients start from are one
+``equilibrium_batch`` call per run of points on one model (:func:`_cold_starts`). Each point's
 outputs become whole arrays (one block per point: its bearings, its spectrum lines, its
 revolutions), joined into one block per run of points (:func:`rotordyn.sweep.columns.merge`)
 with no dict per row.
@@ -16,14 +17,16 @@ import math
 
 import numpy as np
 
+from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.analysis.thermal import system_thermal_equilibrium
 from rotordyn.analysis.transient import transient
 from rotordyn.errors import RotordynError
 from rotordyn.operation import SpeedProfile
 from rotordyn.sweep.columns import merge
-from rotordyn.sweep.points import (CONVERGED, STATUS, operating, point_list, ref_bearing,
-                                   solve_equilibrium)
+from rotordyn.sweep.points import (CONVERGED, STATUS, equilibrium_options, operating,
+                                   point_list, ref_bearing, segments, solve_equilibrium)
+from rotordyn.units import hz_to_rad_s
 
 THERMAL_COLUMNS = ("effective_temperature_c", "max_temperature_c", "inlet_temperature_c",
                    "temperature_rise_k", "viscosity_pa_s", "power_loss_w", "film_flow_m3_s",
@@ -66,13 +69,55 @@ def thermal_blocks(job, variants, chunk_id, pids, asms):
     return merge(blocks)
 
 
-def _start(asm, f, pc, a):
+def _start(asm, f, pc, a, e=None):
     """The cold-started equilibrium a transient point starts from (not the thread's last
-    one: the rows must not depend on what ran before), or (status, message)."""
-    e = solve_equilibrium(asm, f, pc, a, None, {})
+    one: the rows must not depend on what ran before), or (status, message); ``e``: that
+    equilibrium already solved (:func:`_cold_starts`)."""
+    if e is None:
+        e = solve_equilibrium(asm, f, pc, a, None, {})
     if e.status not in CONVERGED:
         return (_status(e.status), f"no equilibrium to start from: {e.message}")
     return np.asarray(e.r)
+
+
+class _Eq:
+    """One point of an ``EquilibriumBatchResult`` (what :func:`_start` reads)."""
+
+    __slots__ = ("status", "message", "r")
+
+    def __init__(self, status, message, r):
+        self.status, self.message, self.r = status, message, r
+
+
+def _cold_starts(items, op):
+    """The cold equilibria of a chunk's transient points as one ``equilibrium_batch`` per run
+    of points on one model (every point restarted: the same solves as one
+    ``solver.equilibrium`` call each with no start). ``op(asm, p, opts)`` gives (f, pc, a) or
+    raises; such points, and those the batch reports ``error`` for (a solve that raised:
+    the per-point path words its message), are left out and solved per point as before.
+    Returns {point index: _Eq}."""
+    errs = [it[4] for it in items]
+    ops = [None] * len(items)
+    for k, it in enumerate(items):
+        if not errs[k]:
+            try:
+                ops[k] = op(it[1], it[0], it[2])
+            except _CATCH:
+                errs[k] = "refused"
+    out = {}
+    for i, j, good in segments(items, errs):
+        if not good:
+            continue
+        o = ops[i:j]
+        res = _core.equilibrium_batch(
+            items[i][1].solver, np.array([hz_to_rad_s(x[0]) for x in o]),
+            np.array([x[1] for x in o]), np.array([x[2] for x in o]), [1] * (j - i),
+            equilibrium_options({}))
+        R = np.asarray(res.r)
+        for q in range(j - i):
+            if res.status[q] != "error":
+                out[i + q] = _Eq(res.status[q], res.message[q], R[q])
+    return out
 
 
 def waterfall_blocks(job, variants, chunk_id, pids, asms):
@@ -80,14 +125,21 @@ def waterfall_blocks(job, variants, chunk_id, pids, asms):
     unbalances) and the amplitude spectra of x and y over its second half: one row per
     spectral line up to ``max_frequency_hz`` (else ``max_harmonic`` × speed)."""
     blocks = []
-    for k, (p, asm, opts, _, err) in enumerate(point_list(job, variants, pids, asms)):
+    items = point_list(job, variants, pids, asms)
+
+    def op(asm, p, opts):
+        f, pc, a = operating(asm, p)
+        v.positive("speed_hz", f)
+        return f, pc, a
+
+    eqs = _cold_starts(items, op)
+    for k, (p, asm, opts, _, err) in enumerate(items):
         if err:
             blocks.append(_fail(k, "error", err))
             continue
         try:
-            f, pc, a = operating(asm, p)
-            v.positive("speed_hz", f)
-            r0 = _start(asm, f, pc, a)
+            f, pc, a = op(asm, p, opts)
+            r0 = _start(asm, f, pc, a, eqs.get(k))
             if isinstance(r0, tuple):
                 blocks.append(_fail(k, *r0))
                 continue
@@ -152,14 +204,20 @@ def runup_blocks(job, variants, chunk_id, pids, asms):
     speed (in ``speed_hz``), the half peak-to-peak journal motion of the active (or first)
     bearing and the smallest film over that revolution."""
     blocks = []
-    for k, (p, asm, opts, _, err) in enumerate(point_list(job, variants, pids, asms)):
+    items = point_list(job, variants, pids, asms)
+
+    def op(asm, p, opts):
+        return operating(asm, {**p, "speed_hz": opts["start_hz"]})
+
+    eqs = _cold_starts(items, op)
+    for k, (p, asm, opts, _, err) in enumerate(items):
         if err:
             blocks.append(_fail(k, "error", err))
             continue
         try:
-            _, pc, a = operating(asm, {**p, "speed_hz": opts["start_hz"]})
+            _, pc, a = op(asm, p, opts)
             f0, f1, rate = opts["start_hz"], opts["stop_hz"], opts["rate_hz_per_s"]
-            r0 = _start(asm, f0, pc, a)
+            r0 = _start(asm, f0, pc, a, eqs.get(k))
             if isinstance(r0, tuple):
                 blocks.append(_fail(k, *r0))
                 continue
