@@ -14,7 +14,7 @@ import numpy as np
 from rotordyn.analysis.hopf import FD_STEP, _critical_eigenvalue, hopf_type, lyapunov_at
 from rotordyn.errors import RotordynError
 from rotordyn.sweep import points as pt
-from rotordyn.sweep.lines import block_rows, max_real, threshold_line
+from rotordyn.sweep.lines import max_real, threshold_line
 from rotordyn.units import hz_to_rad_s
 
 #: output columns beyond the threshold's
@@ -108,11 +108,3 @@ def hopf_line_blocks(job, variants, lo, hi, at, asms, scan=None):
         out.append((pts, cols))
     return out
 
-
-def hopf_line(job, variants, chunk_id, lo, hi, rows, scan=None):
-    """:func:`hopf_line_blocks` as one dict per row appended to ``rows`` (each with its
-    point's identity columns), for the ``limit_cycle`` analysis, which builds on the
-    crossings row by row."""
-    asms = [None] * (hi - lo)
-    blocks = hopf_line_blocks(job, variants, lo, hi, 0, asms, scan)
-    block_rows(job, chunk_id, lo, hi, asms, blocks, rows)

@@ -1,13 +1,13 @@
 """The ``limit_cycle`` sweep analysis (issue 19): along each grid line of the varied axis
 (``options.vary``: p_c, speed or a_y; the other axes fixed), the Hopf points of the line
-(the ``hopf`` analysis's rows: :func:`rotordyn.sweep.hopf_rows.hopf_line`), the limit-cycle
-branch born at each one continued along the line by pseudo-arclength continuation through
-folds (:func:`rotordyn.analysis.hopf.hopf_cycle`, :func:`rotordyn.continuation`), and at
-every grid value the branch passes the cycle there by shooting (:func:`rotordyn.
-periodic_orbit`, started from the branch interpolated linearly between its two points that
-bracket the value): amplitude, period, whirl frequency, the critical Floquet multiplier and
-stability, and whether the cycle coexists with a linearly stable equilibrium (bistable:
-a stable cycle there).
+(the ``hopf`` analysis's blocks: :func:`rotordyn.sweep.hopf_rows.hopf_line_blocks`), the
+limit-cycle branch born at each one continued along the line by pseudo-arclength
+continuation through folds (:func:`rotordyn.analysis.hopf.hopf_cycle`,
+:func:`rotordyn.continuation`), and at every grid value the branch passes the cycle there
+by shooting (:func:`rotordyn.periodic_orbit`, started from the branch interpolated linearly
+between its two points that bracket the value): amplitude, period, whirl frequency, the
+critical Floquet multiplier and stability, and whether the cycle coexists with a linearly
+stable equilibrium (bistable: a stable cycle there).
 
 Rows (one schema, ``record`` tells them apart):
 
