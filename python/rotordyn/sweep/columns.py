@@ -153,3 +153,48 @@ def runs(ok) -> list[tuple[int, int, bool]]:
     cut = np.flatnonzero(ok[1:] != ok[:-1]) + 1
     edges = [0, *cut.tolist(), ok.size]
     return [(a, b, bool(ok[a])) for a, b in zip(edges, edges[1:])]
+
+
+def _expand(x, m):
+    if not _is_scalar(x):
+        return np.asarray(x, dtype=object) if isinstance(x, (list, tuple)) else x
+    if isinstance(x, str):
+        return np.full(m, x, dtype=object)
+    return np.full(m, x)
+
+
+def merge(blocks: list) -> list:
+    """Adjacent blocks with the same column names (and None, i.e. null, in the same columns)
+    joined into one: the per-point blocks of a run of points become one block whose columns
+    are whole arrays (the same rows, the same values, in the same order)."""
+    out: list = []
+    group: list = []
+
+    def key(cols):
+        return tuple(sorted((k, x is None) for k, x in cols.items()))
+
+    def flush():
+        if len(group) == 1:
+            out.append(group[0])
+        elif group:
+            pts = np.concatenate([np.asarray(p, dtype=np.int64) for p, _ in group])
+            cols = {}
+            for k, x0 in group[0][1].items():
+                xs = [c[k] for _, c in group]
+                if x0 is None:
+                    cols[k] = None
+                elif all(_is_scalar(x) for x in xs) and all(type(x) is type(x0) and x == x0
+                                                           for x in xs):
+                    cols[k] = x0
+                else:
+                    cols[k] = np.concatenate([_expand(x, len(p))
+                                              for (p, _), x in zip(group, xs)])
+            out.append((pts, cols))
+        group.clear()
+
+    for b in blocks:
+        if group and key(b[1]) != key(group[0][1]):
+            flush()
+        group.append(b)
+    flush()
+    return out
