@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -47,8 +46,6 @@ bool BandLDLT::analyze(const SpMat& A, const std::vector<int>& ring_first, doubl
   coupled_.assign(n_, 0);
   ys_.assign(n_ + b_, 0.0);
   y4s_.assign(static_cast<std::size_t>(n_ + b_) * 4, 0.0);
-  ckpt_.assign(static_cast<std::size_t>((n_ + b_ - 1) / b_) * b_ * (b_ + 1), 0.0);
-  ckpt_ok_ = false;
   usable_ = true;
   return true;
 }
@@ -60,25 +57,16 @@ namespace {
 #define ROTORDYN_UNROLL
 #endif
 
-// Checkpoint of a right-looking factorisation before column c (c a multiple of b): columns
-// c .. c+b-1 are the only ones that columns < c have updated, so with them the factorisation
-// can be resumed at c (refactorize_from).
-inline void save_block(double* ckpt, const double* col, int c, int b, int w) {
-  std::memcpy(ckpt + static_cast<std::size_t>(c / b) * b * w, col,
-              sizeof(double) * static_cast<std::size_t>(b) * w);
-}
-
 // Right-looking LDLᵀ in the band of width b: B = b as a compile-time constant (the update
 // loops unroll), or B = 0 for any b given at run time. Columns with no coupling below the
 // diagonal (decoupled unknowns) are skipped. a has n + b columns of b + 1 values, the last b
 // zero padding, so every column updates exactly b columns. False on a zero or non-finite pivot.
 template <int B>
-bool factor_band(double* a, int n, int b_run, char* coupled, int c_start, double* ckpt) {
+bool factor_band(double* a, int n, int b_run, char* coupled) {
   const int b = B > 0 ? B : b_run;
   const int w = b + 1;
-  for (int c = c_start; c < n; ++c) {
+  for (int c = 0; c < n; ++c) {
     double* col = a + static_cast<std::size_t>(c) * w;
-    if (ckpt && c % b == 0) save_block(ckpt, col, c, b, w);
     const double d = col[0];
     if (!(d != 0.0 && std::isfinite(d))) return false;
     bool nz = false;
@@ -106,13 +94,12 @@ ROTORDYN_UNROLL
 // column was last written in (offsets 0-1, 2-3, ...; store forwarding), the shifted pairs an
 // odd t1 needs are shuffles of them; every target column is written in those same pairs.
 template <int B>
-bool factor_band_sse2(double* a, int n, char* coupled, int c_start, double* ckpt) {
+bool factor_band_sse2(double* a, int n, char* coupled) {
   constexpr int w = B + 1;
   constexpr int P = B / 2 + 1;  // pairs covering offsets 0..B (the last a single when B even)
   const __m128d zero = _mm_setzero_pd();
-  for (int c = c_start; c < n; ++c) {
+  for (int c = 0; c < n; ++c) {
     double* col = a + static_cast<std::size_t>(c) * w;
-    if (ckpt && c % B == 0) save_block(ckpt, col, c, B, w);
     __m128d cp[P];
 ROTORDYN_UNROLL
     for (int m = 0; m < P; ++m)
@@ -299,45 +286,27 @@ bool BandLDLT::factorize(const double* values, int cut) {
 }
 
 void BandLDLT::begin(int cut) {
-  ckpt_ok_ = false;
   shift_ = ring_first_[cut];
   std::fill(a_.begin(), a_.end(), 0.0);
 }
 
-bool BandLDLT::factorize_assembled() { return factor_from(0); }
-
-bool BandLDLT::refactorize_from(int c0) {
-  if (!ckpt_ok_ || c0 < 0 || c0 % b_ != 0 || c0 >= n_) return factor_from(0);
-  std::memcpy(a_.data() + static_cast<std::size_t>(c0) * (b_ + 1),
-              ckpt_.data() + static_cast<std::size_t>(c0 / b_) * b_ * (b_ + 1),
-              sizeof(double) * static_cast<std::size_t>(b_) * (b_ + 1));
-  return factor_from(c0);
-}
-
-bool BandLDLT::factor_from(int c0) {
-  ckpt_ok_ = false;
+bool BandLDLT::factorize_assembled() {
   if (!usable_) return false;
-  double* ck = ckpt_.data();
-  bool ok;
   switch (b_) {
 #if defined(__SSE2__)
 #define ROTORDYN_BAND_FACTOR(B) \
   case B:                      \
-    ok = factor_band_sse2<B>(a_.data(), n_, coupled_.data(), c0, ck); \
-    break;
+    return factor_band_sse2<B>(a_.data(), n_, coupled_.data());
 #else
 #define ROTORDYN_BAND_FACTOR(B) \
   case B:                      \
-    ok = factor_band<B>(a_.data(), n_, B, coupled_.data(), c0, ck); \
-    break;
+    return factor_band<B>(a_.data(), n_, B, coupled_.data());
 #endif
     ROTORDYN_BAND_CASES(ROTORDYN_BAND_FACTOR)
 #undef ROTORDYN_BAND_FACTOR
     default:
-      ok = factor_band<0>(a_.data(), n_, b_, coupled_.data(), c0, ck);
+      return factor_band<0>(a_.data(), n_, b_, coupled_.data());
   }
-  ckpt_ok_ = ok;
-  return ok;
 }
 
 void BandLDLT::solve(const double* bvec, double* x) const {

@@ -52,24 +52,11 @@ class BandLDLT {
     return true;
   }
   bool factorize_assembled();
-  /// Resumes the last factorisation at column c0 (opened order, a multiple of bandwidth()):
-  /// valid when the assembled band of the new matrix equals the last one's in columns
-  /// 0 .. c0 + b − 1 (the same cut); the caller has rewritten columns c0 + b .. n + b − 1
-  /// (begin_from). The factor is the one factorize_assembled() gives, bit for bit (the same
-  /// operations from the state saved before column c0). A full factorisation when no such
-  /// state is saved (the last factorisation failed, or was not of this band).
-  bool refactorize_from(int c0);
-  /// Clears columns c .. n + b − 1 only (same cut as the last factorisation).
-  void begin_from(int c) {
-    std::fill(a_.begin() + static_cast<std::size_t>(c) * (b_ + 1), a_.end(), 0.0);
-  }
-  bool resumable(int cut) const { return ckpt_ok_ && shift_ == ring_first_[cut]; }
   /// Column-wise assembly (what begin()/set() do, without clearing the whole band):
   /// begin_columns(cut) opens the circle and clears the padding only; the caller then writes
   /// every column column(opened(i)) in full — b + 1 values, the diagonal and A(i + d, i) for
   /// the unknown i + d, d places later in the opened order.
   void begin_columns(int cut) {
-    ckpt_ok_ = false;
     shift_ = ring_first_[cut];
     std::fill(a_.begin() + static_cast<std::size_t>(n_) * (b_ + 1), a_.end(), 0.0);
   }
@@ -85,9 +72,6 @@ class BandLDLT {
   std::vector<double> a_;     // band, column c at a_[c*(b+1) + d] = L(c + d, c) (d = 0: D)
   std::vector<char> coupled_; // column c has a nonzero below the diagonal
   mutable std::vector<double> ys_;
-  std::vector<double> ckpt_;  // state of columns k·b .. k·b + b − 1 before column k·b
-  bool ckpt_ok_ = false;      // ckpt_ holds the last (successful) factorisation's states
-  bool factor_from(int c0);
   mutable std::vector<double> y4s_;  // solve4's interleaved workspace, (n + b) x 4
 };
 

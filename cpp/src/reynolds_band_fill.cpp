@@ -7,8 +7,7 @@
 
 namespace rotordyn {
 
-void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* mask,
-                                      const std::vector<char>* prev) {
+void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* mask) {
   if (band_factor && S.use_band) {
     // A ring whose unknowns are all decoupled (or that has none) opens the circle.
     const char* mk = mask ? mask->data() : nullptr;
@@ -17,19 +16,6 @@ void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* 
       bool all = true;
       for (int i = S.ring_first[j]; i < S.ring_first[j + 1] && all; ++i) all = mk && mk[i];
       if (all) cut = j;
-    }
-    // Same film, a changed mask, the same opening: the factor's columns before the first one
-    // the change touches stay (an unknown's couplings lie in its column and the b before
-    // it); resumed at the last saved state c0 with columns c0 .. c0 + b − 1 untouched.
-    BandLDLT& B = S.band;
-    if (cut >= 0 && prev && mk && S.factor == LinearSystem::Factor::band && B.resumable(cut)) {
-      const int b = B.bandwidth(), nu = S.n_unk;
-      int cmin = nu;
-      for (int i = 0; i < nu; ++i)
-        if ((*prev)[i] != mk[i]) cmin = std::min(cmin, B.opened(i));
-      if (cmin == nu) return;  // the same mask: the same factor
-      const int c0 = (cmin - 2 * b) >= 0 ? ((cmin - 2 * b) / b) * b : -1;
-      if (c0 > 0 && fill_band(S, mk, cut, c0 + b) && B.refactorize_from(c0)) return;
     }
     if (cut >= 0 && fill_band(S, mk, cut) && S.band.factorize_assembled()) {
       S.factor = LinearSystem::Factor::band;
@@ -50,7 +36,7 @@ void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* 
 // The neighbours' forward distances (mod n, the same in every opened order) are tabulated
 // once per system: a coupling to an unmasked neighbour at distance d lies in the band unless
 // it crosses the opening, i.e. unless its column is within d of the end.
-bool ReynoldsSolver::Impl::fill_band(LinearSystem& S, const char* mk, int cut, int c_from) {
+bool ReynoldsSolver::Impl::fill_band(LinearSystem& S, const char* mk, int cut) {
   BandLDLT& B = S.band;
   const int w = B.bandwidth() + 1, nu = S.n_unk;
   if (S.fill_tab.size() != static_cast<std::size_t>(nu)) {
@@ -76,12 +62,7 @@ bool ReynoldsSolver::Impl::fill_band(LinearSystem& S, const char* mk, int cut, i
     }
   }
   if (!S.fill_tab_ok) return false;  // a coupling outside the band in every opening
-  // the whole band cleared in one pass (not b + 1 values per column); c_from > 0: columns
-  // c_from .. only, the opening kept (a resumed factorisation)
-  if (c_from > 0)
-    B.begin_from(c_from);
-  else
-    B.begin(cut);
+  B.begin(cut);  // the whole band cleared in one pass (not b + 1 values per column)
   const LinearSystem::FillEntry* tab = S.fill_tab.data();
   const double* ce = cE.data();
   const double* cn = cN.data();
@@ -114,12 +95,8 @@ bool ReynoldsSolver::Impl::fill_band(LinearSystem& S, const char* mk, int cut, i
       }
     }
   };
-  if (c_from <= nu - shift) {
-    range(shift + c_from, nu, c_from);
-    range(0, shift, nu - shift);
-  } else {
-    range(c_from - (nu - shift), shift, c_from);
-  }
+  range(shift, nu, 0);
+  range(0, shift, nu - shift);
   return ok;
 }
 

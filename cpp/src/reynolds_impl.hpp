@@ -218,11 +218,8 @@ struct ReynoldsSolver::Impl {
   // masked (or has no unknowns), which opens the circle there — the band filled directly from
   // the conductances, one pass, no sparse values; otherwise fill_spd and the static sparse
   // LDLᵀ. Both factor the same values as fill_spd(S, mask).
-  /// prev: the mask of the last factor_spd of S when the film (its coefficients) is unchanged
-  /// since; the band factor then resumes after the first columns the mask change touches.
-  void factor_spd(LinearSystem& S, const std::vector<char>* mask,
-                  const std::vector<char>* prev = nullptr);
-  bool fill_band(LinearSystem& S, const char* mask, int cut, int c_from = 0);
+  void factor_spd(LinearSystem& S, const std::vector<char>* mask);
+  bool fill_band(LinearSystem& S, const char* mask, int cut);
   bool band_factor = true;  // the banded path on (off: always the sparse factor; tests)
   // Residual (outflow + storage) of node n's full cell for node pressures pp and fill theta.
   double cell_residual(int n, const std::vector<double>& pp) const;

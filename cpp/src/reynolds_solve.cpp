@@ -192,8 +192,7 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   for (int n = 0; n < n_nodes; ++n)
     if (fixed[n]) pscale_fixed = std::max(pscale_fixed, std::abs(p[n]));
   for (int it = 1; it <= max_iter; ++it) {
-    // from the second iteration on, `next` holds the last iteration's set (swapped below)
-    factor_spd(S, &S.active, it > 1 ? &next : nullptr);
+    factor_spd(S, &S.active);
     for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
     S.solve_spd(b.data(), S.sol.data());
     for (int i = 0; i < S.n_unk; ++i) {
