@@ -24,10 +24,10 @@ from rotordyn.sweep.limit_cycle_rows import (CYCLE_COLUMNS, NATURAL_ENDS, _Line,
                                             _short_of_the_end, _starts, _where)
 from rotordyn.analysis.assembly import pin_assembled
 import copy
-from rotordyn.sweep.lines import threshold_line_rows
-from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, fail_row, operating,
-                                   points, ref_bearing, solve_equilibrium)
-from rotordyn.sweep.work import OUTPUTS, Job, to_table
+from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, operating,
+                                   ref_bearing, solve_equilibrium)
+from rotordyn.sweep.work import OUTPUTS, Job
+from sweep_rows_reference import common_row, fail_row, points, threshold_line_rows, to_table
 
 
 def run_chunk(job: Job, chunk_id: int, lo: int, hi: int) -> pa.Table:
@@ -182,7 +182,7 @@ def robust_rows(job, variants, chunk_id, lo, hi, rows):
     from rotordyn._common.status import CONVERGED
     from rotordyn.analysis.equilibrium import equilibrium
     from rotordyn.errors import ConvergenceError
-    from rotordyn.sweep.points import STATUS, fail_row, points, ref_bearing
+    from rotordyn.sweep.points import STATUS, ref_bearing
 
     opts = job.options
     k = build_controller(opts["controller"])
@@ -288,7 +288,7 @@ def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
     except RotordynError as exc:
         for pid in range(lo, hi):
             idx, p = job.point(pid)
-            rows.append(pt.fail_row({**nan_cols, **pt.common_row(job, pid, chunk_id, idx, p,
+            rows.append(fail_row({**nan_cols, **common_row(job, pid, chunk_id, idx, p,
                                                                   None), "record": "cycle"},
                                     "failed", str(exc)))
         return
@@ -335,7 +335,7 @@ def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
 
     n = asm.n
     for k, (idx, p) in enumerate(pts):
-        row = {**nan_cols, **pt.common_row(job, lo + k, chunk_id, idx, p, asm),
+        row = {**nan_cols, **common_row(job, lo + k, chunk_id, idx, p, asm),
                "record": "cycle"}
         y = float(ys[k])
         eq_st = bool(y < 0) if math.isfinite(y) else None

@@ -5,8 +5,8 @@ points, and one arrow table built from them, with no dict per row.
 A block is ``(pt, cols)``: ``pt`` the chunk-local index of each of its rows' point (int array,
 length m), ``cols`` output name -> array of length m or one scalar for every row; a name
 absent from ``cols`` takes the point's identity value (:func:`identity`) or is null. The
-table is the one :func:`rotordyn.sweep.work.to_table` builds from per-row dicts, value for
-value (tests/test_sweep_columns.py).
+table is the one the former per-row dicts gave, value for value (their code is kept as the
+tests' reference, tests/sweep_rows_reference.py; tests/test_sweep_columns*.py).
 """
 
 from __future__ import annotations
@@ -25,8 +25,8 @@ _NP = {pa.float64(): np.float64, pa.int64(): np.int64, pa.int32(): np.int32,
 
 def identity(job, chunk_id: int, pids, asms) -> dict:
     """Per point of the chunk (``pids``, their models ``asms``, None for a failed variant):
-    ``point_id``, ``chunk_id``, each axis's value and index ``i_<axis>``, and the defaults of
-    :func:`rotordyn.sweep.points.common_row` (50 Hz, 0 Pa, the reference bearing's a_y)."""
+    ``point_id``, ``chunk_id``, each axis's value and index ``i_<axis>``, and the defaults
+    (50 Hz, 0 Pa, the reference bearing's a_y) the former per-row ``common_row`` set."""
     pids = np.asarray(pids, dtype=np.int64)
     n = len(pids)
     idx = np.unravel_index(pids, job.shape) if n else [np.zeros(0, np.int64)] * len(job.shape)

@@ -185,14 +185,6 @@ def unbalance_line(job, variants, lo, hi, at, asms):
         "message": np.repeat(np.array(msg, dtype=object), ns)})]
 
 
-def threshold_line_rows(job, variants, chunk_id, lo, hi, rows, scan=None):
-    """:func:`threshold_line` as one dict per row appended to ``rows`` (each with its point's
-    identity columns)."""
-    asms = [None] * (hi - lo)
-    blocks = threshold_line(job, variants, lo, hi, 0, asms, scan=scan)
-    block_rows(job, chunk_id, lo, hi, asms, blocks, rows)
-
-
 def block_rows(job, chunk_id, lo, hi, asms, blocks, rows):
     """The rows of ``blocks`` over the points [lo, hi) (chunk-local indices from 0, models
     ``asms``) as dicts appended to ``rows``, identity columns included (for the analyses

@@ -120,18 +120,12 @@ def _cold_starts(items, op):
     return out
 
 
-def waterfall_blocks(job, variants, chunk_id, pids, asms):
-    """A transient per point (cold equilibrium, then ``revolutions`` revolutions with the
-    unbalances) and the amplitude spectra of x and y over its second half: one row per
-    spectral line up to ``max_frequency_hz`` (else ``max_harmonic`` × speed)."""
-    blocks = []
-    items = point_list(job, variants, pids, asms)
-
-    def op(asm, p, opts):
-        f, pc, a = operating(asm, p)
-        v.positive("speed_hz", f)
-        return f, pc, a
-
+def _transients(items, op, integrate, blocks):
+    """The transient of each point of ``items`` (:func:`point_list`) from its cold
+    equilibrium (:func:`_cold_starts`): ``op(asm, p, opts)`` gives (f, pc, a) at the start,
+    ``integrate(asm, p, opts, f, pc, r0)`` runs the transient. Yields (k, asm, opts, f, tr)
+    per point that ran; a point that could not start or raised is a failed row appended to
+    ``blocks``."""
     eqs = _cold_starts(items, op)
     for k, (p, asm, opts, _, err) in enumerate(items):
         if err:
@@ -143,16 +137,35 @@ def waterfall_blocks(job, variants, chunk_id, pids, asms):
             if isinstance(r0, tuple):
                 blocks.append(_fail(k, *r0))
                 continue
-            revs = int(opts.get("revolutions", 60))
-            spr = int(opts.get("samples_per_revolution", 64))
-            ub = [tuple(u) for u in opts.get("unbalances", [])]
-            tr = transient(asm.system, revs / f, f, pc, p.get("config_ay_m"), r0=r0,
-                           unbalances=ub, n_out=revs * spr + 1,
-                           rtol=float(opts.get("rtol", 1e-6)),
-                           rub_fraction=float(opts.get("rub_fraction", 1e-3)))
+            tr = integrate(asm, p, opts, f, pc, r0)
         except _CATCH as exc:
             blocks.append(_fail(k, "error", f"{type(exc).__name__}: {exc}"))
             continue
+        yield k, asm, opts, f, tr
+
+
+def waterfall_blocks(job, variants, chunk_id, pids, asms):
+    """A transient per point (cold equilibrium, then ``revolutions`` revolutions with the
+    unbalances) and the amplitude spectra of x and y over its second half: one row per
+    spectral line up to ``max_frequency_hz`` (else ``max_harmonic`` × speed)."""
+    blocks = []
+
+    def op(asm, p, opts):
+        f, pc, a = operating(asm, p)
+        v.positive("speed_hz", f)
+        return f, pc, a
+
+    def integrate(asm, p, opts, f, pc, r0):
+        revs = int(opts.get("revolutions", 60))
+        spr = int(opts.get("samples_per_revolution", 64))
+        ub = [tuple(u) for u in opts.get("unbalances", [])]
+        return transient(asm.system, revs / f, f, pc, p.get("config_ay_m"), r0=r0,
+                         unbalances=ub, n_out=revs * spr + 1,
+                         rtol=float(opts.get("rtol", 1e-6)),
+                         rub_fraction=float(opts.get("rub_fraction", 1e-3)))
+
+    for k, asm, opts, f, tr in _transients(point_list(job, variants, pids, asms), op,
+                                           integrate, blocks):
         if tr.status not in CONVERGED:  # "contact": integrated from a contact equilibrium
             blocks.append(_fail(k, _status(tr.status), tr.message))
             continue
@@ -204,35 +217,24 @@ def runup_blocks(job, variants, chunk_id, pids, asms):
     speed (in ``speed_hz``), the half peak-to-peak journal motion of the active (or first)
     bearing and the smallest film over that revolution."""
     blocks = []
-    items = point_list(job, variants, pids, asms)
 
     def op(asm, p, opts):
         return operating(asm, {**p, "speed_hz": opts["start_hz"]})
 
-    eqs = _cold_starts(items, op)
-    for k, (p, asm, opts, _, err) in enumerate(items):
-        if err:
-            blocks.append(_fail(k, "error", err))
-            continue
-        try:
-            _, pc, a = op(asm, p, opts)
-            f0, f1, rate = opts["start_hz"], opts["stop_hz"], opts["rate_hz_per_s"]
-            r0 = _start(asm, f0, pc, a, eqs.get(k))
-            if isinstance(r0, tuple):
-                blocks.append(_fail(k, *r0))
-                continue
-            prof = SpeedProfile.ramp(f0, f1, rate)
-            T = abs(f1 - f0) / rate
-            spr = int(opts.get("samples_per_revolution", 32))
-            revs = (f0 + f1) / 2 * T
-            tr = transient(asm.system, T, chamber_pressure_pa=pc,
-                           config_ay_m=p.get("config_ay_m"), speed=prof, r0=r0,
-                           unbalances=[tuple(u) for u in opts["unbalances"]],
-                           n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)),
-                           rub_fraction=float(opts.get("rub_fraction", 1e-3)))
-        except _CATCH as exc:
-            blocks.append(_fail(k, "error", f"{type(exc).__name__}: {exc}"))
-            continue
+    def integrate(asm, p, opts, f0, pc, r0):
+        f1, rate = opts["stop_hz"], opts["rate_hz_per_s"]
+        T = abs(f1 - f0) / rate
+        spr = int(opts.get("samples_per_revolution", 32))
+        revs = (f0 + f1) / 2 * T
+        return transient(asm.system, T, chamber_pressure_pa=pc,
+                         config_ay_m=p.get("config_ay_m"),
+                         speed=SpeedProfile.ramp(f0, f1, rate), r0=r0,
+                         unbalances=[tuple(u) for u in opts["unbalances"]],
+                         n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)),
+                         rub_fraction=float(opts.get("rub_fraction", 1e-3)))
+
+    for k, asm, opts, _, tr in _transients(point_list(job, variants, pids, asms), op,
+                                           integrate, blocks):
         bc = ref_bearing(asm)
         j = bc.index if bc else 0
         # the rows reached (a failed run, e.g. "rub", leaves NaN rows after it stopped)
