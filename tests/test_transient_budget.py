@@ -73,11 +73,13 @@ def test_discrete_controller_cost_is_estimated_and_refused(rig):
 
 def test_the_per_sample_cost_estimate_is_not_optimistic(rig):
     """The stated cost per sample (measured on the 2-core development machine) is within a
-    factor of 4 of a run here: the refusal is about the right order of magnitude."""
+    factor of 4 of a run here: the refusal is about the right order of magnitude. Measured in
+    CPU time of this process (the transient runs on one thread), so that other jobs on the
+    machine do not count: at load 9 on 2 cores the wall clock gave 2.25 ms per sample."""
     k = Controller.static([[0.0, 0.0]], [("journal", 0)], sample_time_s=2e-5)
     rd.transient(rig, 0.002, 50.0, 0.15e6, AY, controller=k, n_out=3)  # warm-up
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     tr = rd.transient(rig, 0.02, 50.0, 0.15e6, AY, controller=k, n_out=3)
-    per = (time.perf_counter() - t0) / 1000
+    per = (time.process_time() - t0) / 1000
     assert tr.status == "ok", tr.message
     assert per < 4 * tmod.DISCRETE_SAMPLE_COST_S
