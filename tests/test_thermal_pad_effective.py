@@ -138,7 +138,7 @@ def _compressor(model="effective"):
         thermal=dataclasses.replace(th, model=model))
 
 
-def test_compressor_on_tilting_pads_equilibrium_and_stability(tmp_path):
+def test_compressor_on_tilting_pads_equilibrium_and_stability():
     s = _compressor()
     res = rotordyn.system_thermal_equilibrium(s, speed_hz=150.0)
     assert res.status == "ok" and res.thermal_model == "effective"
@@ -160,12 +160,44 @@ def test_compressor_on_tilting_pads_equilibrium_and_stability(tmp_path):
         return float(np.max(st.eigenvalues.real[st.kind == "rotor"]))
     assert least(hot) < 0 and abs(least(hot) - least(cold)) > 1e-2 * abs(least(cold))
     assert np.abs(eq.r - iso.r).max() > 1e-7  # the hot film sits elsewhere
-    # the CLI prints the same rows
-    from rotordyn.cli import main
 
+
+
+def test_cli_and_sweep_show_the_effective_pads(tmp_path, capsys):
+    """``rotordyn thermal`` (one record per pad) and the ``thermal`` sweep analysis over the
+    supply temperature give the Python call's numbers (1e-9)."""
+    import json
+
+    import rotordyn.sweep as sw
+    from rotordyn.cli import main
+    from rotordyn.sweep import run_sweep
+
+    s = _compressor()
     p = tmp_path / "m.toml"
     s.to_toml(p)
+    r = rotordyn.system_thermal_equilibrium(s, speed_hz=150.0)
     assert main(["thermal", str(p), "--speed-hz", "150", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["status"] == "ok" and out["thermal_model"] == "effective"
+    assert [row["bearing"] for row in out["bearings"]] == list(r.bearing_names)
+    cols = ("effective_temperature_c", "max_temperature_c", "inlet_temperature_c",
+            "power_loss_w", "film_flow_m3_s", "supply_flow_m3_s", "journal_y_m")
+    for c in cols:
+        np.testing.assert_allclose([row[c] for row in out["bearings"]], getattr(r, c),
+                                   rtol=1e-9)
+    spec = tmp_path / "s.toml"
+    spec.write_text('schema = "rotordyn/sweep/1"\nname = "eff-pads"\nmodel = "m.toml"\n'
+                    'analysis = "thermal"\nchunk_size = 2\n[grid]\n'
+                    '"thermal.supply_temperature_c" = [40.0, 50.0]\nspeed_hz = 150.0\n')
+    res = run_sweep(spec, tmp_path / "o", threads=1)
+    assert res.complete and res.counts["failed"] == 0
+    fr = sw.open(tmp_path / "o").frame
+    assert len(fr) == 20 and (fr["status"] == "ok").all()
+    for t, g in fr.groupby("thermal.supply_temperature_c"):
+        d = rotordyn.system_thermal_equilibrium(s, speed_hz=150.0, supply_temperature_c=t)
+        assert list(g["bearing"]) == list(d.bearing_names)
+        for c in cols:
+            np.testing.assert_allclose(g[c].to_numpy(), getattr(d, c), rtol=1e-9)
 
 
 def test_model_file_round_trip_selects_the_effective_pads(tmp_path):
