@@ -94,6 +94,17 @@ def test_heat_balance_closes_and_ring_follows_the_mixing_rule(kind, lam, supply,
         assert r.supply_flow_m3_s[j] == pytest.approx(qf, rel=1e-12, abs=1e-20)
     # carry-over heats the inlets above the supply
     assert np.all(r.inlet_temperature_c > 45.0 + 1e-3)
+    df = r.to_frame()
+    np.testing.assert_array_equal(df["effective_temperature_c"].to_numpy()[:n],
+                                  r.effective_temperature_c)
+    # the opposite sense of rotation: each pad fed by the pad after it; the mirror image of
+    # the bearing about the load line (pads symmetric about the vertical) reverses the ring
+    m = b.thermal_equilibrium(load_n=(0.0, -4000.0), speed_hz=-100.0, oil=VG32,
+                              supply_temperature_c=45.0, carry_over=lam,
+                              supply_flow_m3_s=supply, model="effective", effective_factor=k)
+    assert m.status == "ok"
+    np.testing.assert_allclose(np.sort(m.effective_temperature_c),
+                               np.sort(r.effective_temperature_c), rtol=1e-6)
 
 
 def test_huge_specific_heat_is_the_isothermal_bearing_bit_for_bit():

@@ -203,7 +203,8 @@ class PadThdResult:
     def to_frame(self):
         """One row per pad and a ``total`` row (max of T_max, mean of T_mean, sums of power
         and flows, the inlet and outlet temperatures as flow-weighted means), with the journal
-        position and the reduced K, C on every row."""
+        position and the reduced K, C on every row; the effective model adds
+        ``effective_temperature_c`` (= ``mean_temperature_c``)."""
         import pandas as pd
 
         n = len(self.max_temperature_c)
@@ -213,6 +214,8 @@ class PadThdResult:
             return float(np.sum(x * w) / np.sum(w)) if np.sum(w) > 0 else float(np.mean(x))
         cols["max_temperature_c"] = [*self.max_temperature_c, self.max_temperature_c_total]
         cols["mean_temperature_c"] = [*self.mean_temperature_c, self.mean_temperature_c_total]
+        if self.thermal_model == "effective":  # the same numbers under the model's own name
+            cols["effective_temperature_c"] = cols["mean_temperature_c"]
         cols["inlet_temperature_c"] = [*self.inlet_temperature_c,
                                        wmean(self.inlet_temperature_c, self.film_flow_m3_s)]
         cols["outlet_temperature_c"] = [*self.outlet_temperature_c,
