@@ -161,10 +161,11 @@ def test_fixed_geometry_thd_model_file_round_trip_and_bad_input(tmp_path):
     b = rotordyn.system_thermal_equilibrium(s, speed_hz=SPEED)
     np.testing.assert_array_equal(a.max_temperature_c, b.max_temperature_c)
     np.testing.assert_array_equal(a.r, b.r)
-    # the effective model on lobes names the model (and how to select the THD film)
+    # the effective model per lobe: its factor's range named
     for kw in ({}, {"bearings": [1]}):
-        with pytest.raises(InputError, match=r"^model: .*thd"):
-            rotordyn.system_thermal_equilibrium(s, speed_hz=SPEED, model="effective", **kw)
+        with pytest.raises(InputError, match=r"^effective_factor"):
+            rotordyn.system_thermal_equilibrium(s, speed_hz=SPEED, model="effective",
+                                                effective_factor=0.2, **kw)
     with pytest.raises(InputError, match="carry_over"):
         rotordyn.system_thermal_equilibrium(s, speed_hz=SPEED, carry_over=1.5)
 
@@ -240,7 +241,7 @@ def test_cli_thermal_on_pad_and_lobe_bearings_equals_the_python_call(tmp_path, c
 
 
 @pytest.mark.parametrize("extra,option", [
-    (["--model", "effective"], "--model"),                   # pads: the THD film only
+    (["--model", "effective", "--effective-factor", "2"], "effective_factor"),
     (["--effective-factor", "0.7"], "--effective-factor"),   # THD: no effective temperature
     (["--carry-over", "1.5"], "carry_over"),
     (["--bush-htc-w-m2k", "-1"], "bush_htc_w_m2k"),
@@ -253,9 +254,3 @@ def test_cli_thermal_on_pads_bad_input_exits_2_naming_the_option(tmp_path, capsy
     compressor_tilting_pad().to_toml(path)
     assert main(["thermal", str(path), "--speed-hz", str(SPEED), *extra]) == 2
     assert option in capsys.readouterr().err
-    # a pad model whose [thermal] keeps the default (effective) model: named, with the fix
-    s = compressor_tilting_pad()
-    dataclasses.replace(s, thermal=dataclasses.replace(s.thermal, model="effective")).to_toml(
-        path)
-    assert main(["thermal", str(path), "--speed-hz", str(SPEED)]) == 2
-    assert "--model thd" in capsys.readouterr().err

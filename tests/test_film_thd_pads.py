@@ -213,8 +213,9 @@ def test_pad_thd_bad_input_names_the_field():
     with pytest.raises(InputError, match="viscosity_field_pa_s"):
         dataclasses.replace(tp, viscosity_field_pa_s=[np.ones((3, 3))] * 5).pad_films()
     s = _compressor_tp()
-    with pytest.raises(InputError, match="model"):
-        rotordyn.system_thermal_equilibrium(s, speed_hz=150.0, model="effective", bearings=[0])
+    with pytest.raises(InputError, match="effective_factor"):  # the effective model per pad
+        rotordyn.system_thermal_equilibrium(s, speed_hz=150.0, model="effective", bearings=[0],
+                                            effective_factor=1.5)
     with pytest.raises(InputError, match="carry_over"):
         dataclasses.replace(s.thermal, carry_over=-0.1)
 

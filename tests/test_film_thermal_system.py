@@ -63,9 +63,10 @@ def test_system_thermal_bad_input():
     with pytest.raises(InputError, match="supply_temperature_c"):
         rotordyn.system_thermal_equilibrium(s, speed_hz=150.0, oil=VG32,
                                             supply_temperature_c=-60.0)
-    tp = rotordyn.System.from_toml(MODELS / "compressor_tilting_pad.toml")
-    with pytest.raises(InputError, match="^model: .*'thd'"):  # pads: the THD film only
-        rotordyn.system_thermal_equilibrium(tp, speed_hz=150.0, oil=VG32,
+    # no film bearing at all (pad bearings take either model: test_thermal_pad_effective.py)
+    lin = rotordyn.System.from_toml(MODELS / "compressor_linear.toml")
+    with pytest.raises(InputError, match="^bearings: "):
+        rotordyn.system_thermal_equilibrium(lin, speed_hz=150.0, oil=VG32,
                                             supply_temperature_c=45.0)
 
 

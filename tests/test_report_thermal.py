@@ -107,7 +107,9 @@ def test_thermal_section_notes_and_absence():
     s = compressor_tilting_pad()
     eff = dataclasses.replace(s, thermal=dataclasses.replace(s.thermal, model="effective"))
     th, kc, note = thermal_frames(eff, np.array(SPEEDS), 0.0, None)
-    assert th is None and kc is None
-    assert note.startswith("not evaluated: model: ") and "'thd'" in note
+    # the effective model per pad now applies: one row per pad film and speed, with K, C
+    assert note.startswith("thermal model effective") and kc is not None
+    assert set(th["thermal_model"]) == {"effective"} and len(th) % 10 == 0
+    assert th["bearing"].str.contains(r"\.pad\d").all() and (th["status"] == "ok").all()
     assert thermal_frames(dataclasses.replace(s, thermal=None), np.array(SPEEDS), 0.0,
                           None) == (None, None, "")

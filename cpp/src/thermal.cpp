@@ -204,6 +204,11 @@ ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, do
   auto g = [&](double t) { return t - Ts - m * a * oil.viscosity_pa_s(t); };
   double lo = Ts, hi = std::min(Ts + m * a * oil.viscosity_pa_s(Ts), oil.t_max_c);
   double glo = g(lo), ghi = g(hi);
+  if (ghi < 0.0 && hi < oil.t_max_c) {  // a rise near round-off (huge c_p): widen by ulps
+    hi = std::min(Ts + 2.0 * (hi - Ts) + 8.0 * std::numeric_limits<double>::epsilon() *
+                                             std::max(1.0, std::abs(Ts)), oil.t_max_c);
+    ghi = g(hi);
+  }
   if (ghi < 0.0)
     throw ConvergenceError("thermal equilibrium" + (name.empty() ? "" : ", film '" + name + "'") +
                            ": the film temperature exceeds the viscosity law's range (t_max_c = " +

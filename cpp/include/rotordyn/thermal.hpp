@@ -120,6 +120,13 @@ struct ThermalFilm {
   /// the pad draws Q of the carried-over oil alone. The ring's inlet temperatures are solved
   /// together (a small linear system: each field is affine in its T_in). −1: a plain film
   /// mixing its own recirculation.
+  /// Effective-temperature pad films (thd = false, upstream >= 0 an effective pad film): per
+  /// pad the plain heat balance P = ρ c ΔT (Q − Q_s/2) with the pad's dissipation P, the flow
+  /// Q into its leading edge and its side leakage Q_s (the THD pad film's flows and cells),
+  /// T_out = T_in + ΔT, T_eff = T_in + k ΔT, the pad isoviscous at μ(T_eff); the inlet mixes
+  /// λ (options.carry_over) of the upstream pad's outflow Q_out,u = Q_u − Q_s,u (its own mass
+  /// balance, as the plain model's Q_r) at T_out,u with fresh oil by the same rule (Q_f from options.supply_flow_m3_s). The ring is solved exactly at each
+  /// position (the heat balance of every pad, Gauss–Seidel around the ring).
   int upstream = -1;
 };
 

@@ -2,7 +2,8 @@
 (eq. 14) iterated with the heat balance (effective temperature) or the energy equation (THD)
 of each thermal bearing's film — plain and active journal bearings (the active bearing's
 sleeve deformation w(φ) in its film thickness, eq. 3, and its sleeve coordinates in the
-equilibrium), tilting-pad and fixed-geometry bearings (THD) — in one C++ call
+equilibrium), tilting-pad and fixed-geometry bearings (per pad or lobe, with hot-oil
+carry-over between pads; either model) — in one C++ call
 (``_core.thermal_system_equilibrium``)."""
 
 from __future__ import annotations
@@ -17,7 +18,8 @@ from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled
 from rotordyn.bearings import (ActiveJournalBearing, FixedGeometryBearing, FluidFilmBearing,
                                Oil, TiltingPadBearing)
-from rotordyn.bearings.pad_thd import check_carry_over, pad_options, pad_thermal_films
+from rotordyn.bearings.pad_thd import (check_carry_over, pad_options, pad_thermal_films,
+                                       uniform_fields)
 from rotordyn.bearings.thd import THERMAL_MODELS, thd_options
 from rotordyn.bearings.thermal import thermal_options
 from rotordyn.errors import InputError
@@ -51,7 +53,10 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     ``supply_flow_m3_s``; :meth:`rotordyn.JournalBearing.thermal_equilibrium` for the model),
     iterated with the system equilibrium to |ΔT_eff| <= ``tol_k`` for every bearing. The
     result's ``system`` carries the viscosities μ(T_eff): pass it to ``linearize``,
-    ``stability`` or ``campbell`` for the dynamics with the temperature frozen.
+    ``stability`` or ``campbell`` for the dynamics with the temperature frozen. Tilting-pad
+    and fixed-geometry bearings run either model per pad (lobe), each pad's inlet mixing the
+    upstream pad's hot oil (:mod:`rotordyn.bearings.pad_thd`); with the effective model the
+    returned bearing carries each pad's μ(T_eff) as a uniform frozen field.
 
     ``chamber_pressure_pa`` (Pa) is every active bearing's p_c; ``config_ay_m``,
     ``config_ax_m`` (m) override the active bearing's housing offsets as in
@@ -101,27 +106,19 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     pads = [i for i, b in enumerate(system.bearings)
             if isinstance(b, (TiltingPadBearing, FixedGeometryBearing))]
     if bearings is None:
-        idx = plain + (pads if model == "thd" else [])
+        idx = plain + pads
     else:
         idx = [v.integer("bearings[]", i, lo=0, hi=len(system.bearings) - 1) for i in bearings]
         for i in idx:
-            if i in pads and model != "thd":
-                raise InputError(f"model: bearing {i} is a {type(system.bearings[i]).__name__};"
-                                 " its thermal film is the THD model (model = 'thd'); the "
-                                 "effective-temperature model is for plain journal bearings")
             if i not in plain and i not in pads:
                 raise InputError(f"bearings: bearing {i} is a "
                                  f"{type(system.bearings[i]).__name__}; the thermal model is "
                                  "available for plain and active journal bearings (type = "
-                                 "'journal', 'active_journal') and, with model = 'thd', "
-                                 "tilting-pad and fixed-geometry bearings")
-    if not idx and pads:
-        raise InputError(f"model: the system's fluid-film bearings are tilting-pad or "
-                         f"fixed-geometry bearings; their thermal film is the THD model "
-                         f"(model = 'thd', [thermal] model = \"thd\"), got {model!r}")
+                                 "'journal', 'active_journal'), tilting-pad and fixed-geometry "
+                                 "bearings")
     if not idx:
-        raise InputError("bearings: the system has no plain or active journal bearing for the "
-                         "thermal model (pad bearings: model = 'thd')")
+        raise InputError("bearings: the system has no plain, active, tilting-pad or "
+                         "fixed-geometry journal bearing for the thermal model")
     def options(i):
         own = model_.film(system.bearings[i].name) if model_ is not None else None
 
@@ -161,7 +158,8 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
             check_carry_over(opts[i].carry_over, f"thermal.films.{system.bearings[i].name or i}"
                              ".carry_over")
             films += pad_thermal_films(own[0], len(own), len(films), oil.to_core(),
-                                       pad_options(thd_opts[i], len(own)), omega)
+                                       pad_options(thd_opts[i] if thd else opts[i], len(own)),
+                                       omega)
             rows += [(i, j) for j in own]
             continue
         rows.append((i, asm.film_owner.index(i)))
@@ -182,11 +180,13 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     r = np.asarray(eq.r)
     st = list(res.films)
     mus, fields = {}, {}
+    mfilms = asm.model.films
     for i in idx:
         own = [s for (b, _), s in zip(rows, st) if b == i]
         if i in pads:  # μ(mean over the pads) as the reference; the frozen field per pad
             mus[i] = oil.viscosity_pa_s(float(np.mean([s.mean_temperature_c for s in own])))
-            fields[i] = tuple(np.array(s.viscosity_field) for s in own)
+            fields[i] = tuple(np.array(s.viscosity_field) for s in own) if thd else \
+                uniform_fields([mfilms[j] for (b, j) in rows if b == i], own)
         else:
             mus[i] = own[0].viscosity_pa_s
             if thd:

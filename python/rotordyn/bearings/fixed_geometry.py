@@ -34,7 +34,8 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import SystemParts, check_arc, check_film_fields, pad_film
 from rotordyn.bearings.coefficients import coefficient_table
-from rotordyn.bearings.pad_thd import freeze_fields, pad_fields, pad_thd_equilibrium
+from rotordyn.bearings.pad_thd import (freeze_fields, pad_fields, pad_model_options,
+                                        pad_thd_equilibrium)
 from rotordyn.errors import InputError
 
 KINDS = {  # n lobes, orientation deg, preload, offset
@@ -203,19 +204,22 @@ class FixedGeometryBearing:
                             carry_over: float = 0.0, supply_flow_m3_s: float = 0.0,
                             journal_htc_w_m2k: float = 0.0, bush_htc_w_m2k: float = 0.0,
                             journal_temperature_c: float | None = None,
-                            bush_temperature_c: float | None = None, tol_k: float = 1e-6):
+                            bush_temperature_c: float | None = None, tol_k: float = 1e-6,
+                            model: str = "thd", effective_factor: float = 0.5):
         """Thermo-hydrodynamic equilibrium of the lobes under ``load_n`` (N) at ``speed_hz``
         (as :meth:`rotordyn.bearings.TiltingPadBearing.thermal_equilibrium`: per lobe the
         energy equation, each lobe's inlet groove mixing supply oil with the part
         ``carry_over`` of the upstream lobe's hot oil) and K, C with the field frozen: a
-        :class:`rotordyn.bearings.pad_thd.PadThdResult` (no pad tilts)."""
-        from rotordyn.bearings.thd import thd_options
-
-        opts = thd_options(supply_temperature_c=supply_temperature_c,
-                           supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
-                           journal_htc_w_m2k=journal_htc_w_m2k, bush_htc_w_m2k=bush_htc_w_m2k,
-                           journal_temperature_c=journal_temperature_c,
-                           bush_temperature_c=bush_temperature_c, tol_k=tol_k)
+        :class:`rotordyn.bearings.pad_thd.PadThdResult` (no pad tilts). ``model="effective"``:
+        the effective-temperature model per lobe (``effective_factor`` k), as for tilting
+        pads."""
+        opts = pad_model_options(model, supply_temperature_c=supply_temperature_c,
+                                 supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                                 effective_factor=effective_factor, tol_k=tol_k,
+                                 journal_htc_w_m2k=journal_htc_w_m2k,
+                                 bush_htc_w_m2k=bush_htc_w_m2k,
+                                 journal_temperature_c=journal_temperature_c,
+                                 bush_temperature_c=bush_temperature_c)
         parts = SystemParts(films=self.films(0, 1, self.name or "bearing"), tables=[])
         return pad_thd_equilibrium(parts, oil=oil, opts=opts, load_n=load_n, speed_hz=speed_hz,
                                    clearance_m=self.clearance_m, whirl_ratio=None)

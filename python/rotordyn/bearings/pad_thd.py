@@ -58,25 +58,33 @@ def freeze_fields(fields) -> tuple:
 def pad_thermal_films(first_film: int, n_pads: int, first: int, oil, opts, omega: float):
     """The core's thermal films of one pad bearing's ``n_pads`` films (model indices
     ``first_film``…), placed at ``first``… in the thermal list, each pad's upstream the pad
-    before it in the direction of rotation (sign of ``omega``)."""
+    before it in the direction of rotation (sign of ``omega``). ``opts``: ``_core.ThdOptions``
+    (the THD film) or ``_core.ThermalOptions`` (the effective-temperature model per pad)."""
+    thd = isinstance(opts, _core.ThdOptions)
     out = []
     for k in range(n_pads):
         tf = _core.ThermalFilm()
         tf.film = first_film + k
         tf.oil = oil
-        tf.thd = True
-        tf.thd_options = opts
+        tf.thd = thd
+        if thd:
+            tf.thd_options = opts
+        else:
+            tf.options = opts
         tf.upstream = first + ((k - 1) % n_pads if omega > 0 else (k + 1) % n_pads)
         out.append(tf)
     return out
 
 
 def pad_options(opts, n_pads: int):
-    """Per-pad THD options: a given total supply flow is shared equally by the pads."""
+    """Per-pad options (THD or effective): a given total supply flow is shared equally by the
+    pads."""
     if opts.supply_flow_m3_s > 0.0:
-        o = _core.ThdOptions()
-        for f in ("supply_temperature_c", "carry_over", "journal_htc_w_m2k", "bush_htc_w_m2k",
-                  "journal_temperature_c", "bush_temperature_c", "tol_k", "max_iter"):
+        thd = isinstance(opts, _core.ThdOptions)
+        o = _core.ThdOptions() if thd else _core.ThermalOptions()
+        for f in ("supply_temperature_c", "carry_over", "tol_k", "max_iter") + (
+                ("journal_htc_w_m2k", "bush_htc_w_m2k", "journal_temperature_c",
+                 "bush_temperature_c") if thd else ("effective_factor",)):
             setattr(o, f, getattr(opts, f))
         o.supply_flow_m3_s = opts.supply_flow_m3_s / n_pads
         return o
@@ -90,6 +98,21 @@ def check_carry_over(value, field: str = "carry_over") -> float:
         raise InputError(f"{field}: expected 0 <= {field.rsplit('.', 1)[-1]} <= 1 (the hot-oil "
                          f"carry-over, mixing coefficient), got {x}")
     return x
+
+
+def pad_model_options(model: str, *, supply_temperature_c, supply_flow_m3_s, carry_over,
+                      effective_factor, tol_k, **walls):
+    """The checked options of a standalone pad bearing's thermal equilibrium: ``model``
+    "thd" (``_core.ThdOptions`` with the wall options ``walls``) or "effective"
+    (``_core.ThermalOptions``; ``effective_factor`` k; a wall option other than its default
+    is an InputError naming it, as for the plain film)."""
+    from rotordyn.bearings.thd import film_thermal_options
+
+    given = {k: x for k, x in walls.items() if x is not None and not (
+        k.endswith("_htc_w_m2k") and x == 0.0)} if model == "effective" else walls
+    return film_thermal_options(model, given, supply_temperature_c=supply_temperature_c,
+                                supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                                effective_factor=effective_factor, tol_k=tol_k)
 
 
 @dataclass(frozen=True, slots=True)
@@ -107,7 +130,13 @@ class PadThdResult:
     K (N/m), C (N·s/m) 2×2 reduced over the pad coordinates at the whirl frequency (dF =
     −K dq − C dq̇), ``K_full``, ``C_full``, ``M_full`` unreduced over [x, y, pad coordinates].
     Fields per pad (N_pad, n_axial + 1): ``temperature_c``, ``viscosity_pa_s`` (the frozen
-    field), ``inlet_mask``, ``flows`` (face flows, cell dissipation and area)."""
+    field), ``inlet_mask``, ``flows`` (face flows, cell dissipation and area).
+
+    ``thermal_model = "effective"`` (the effective-temperature model per pad): each pad is
+    isoviscous at μ(T_eff); ``mean_temperature_c`` (also :attr:`effective_temperature_c`) is
+    T_eff = T_in + k ΔT, ``max_temperature_c`` = ``outlet_temperature_c`` = T_in + ΔT,
+    ``viscosity_pa_s`` the pads' uniform fields μ(T_eff) (frozen for K, C); no
+    ``temperature_c``, ``inlet_mask`` or ``flows`` fields."""
 
     speed_hz: float
     load_n: tuple
@@ -138,6 +167,12 @@ class PadThdResult:
     flows: tuple = field(default=(), repr=False)
     status: str = "ok"
     message: str = ""
+    thermal_model: str = "thd"
+
+    @property
+    def effective_temperature_c(self) -> np.ndarray:
+        """Per pad: T_eff (effective model), the area mean (THD), °C."""
+        return self.mean_temperature_c
 
     @property
     def max_temperature_c_total(self) -> float:
@@ -168,7 +203,8 @@ class PadThdResult:
     def to_frame(self):
         """One row per pad and a ``total`` row (max of T_max, mean of T_mean, sums of power
         and flows, the inlet and outlet temperatures as flow-weighted means), with the journal
-        position and the reduced K, C on every row."""
+        position and the reduced K, C on every row; the effective model adds
+        ``effective_temperature_c`` (= ``mean_temperature_c``)."""
         import pandas as pd
 
         n = len(self.max_temperature_c)
@@ -178,6 +214,8 @@ class PadThdResult:
             return float(np.sum(x * w) / np.sum(w)) if np.sum(w) > 0 else float(np.mean(x))
         cols["max_temperature_c"] = [*self.max_temperature_c, self.max_temperature_c_total]
         cols["mean_temperature_c"] = [*self.mean_temperature_c, self.mean_temperature_c_total]
+        if self.thermal_model == "effective":  # the same numbers under the model's own name
+            cols["effective_temperature_c"] = cols["mean_temperature_c"]
         cols["inlet_temperature_c"] = [*self.inlet_temperature_c,
                                        wmean(self.inlet_temperature_c, self.film_flow_m3_s)]
         cols["outlet_temperature_c"] = [*self.outlet_temperature_c,
@@ -236,8 +274,14 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
         raise ConvergenceError(f"pad THD equilibrium: {eq.status}: {eq.message}")
     st = list(res.films)
     r = np.asarray(eq.r)
-    for f, s in zip(films, st):  # freeze the field of the equilibrium
-        f.viscosity_field = np.array(s.viscosity_field)
+    thd = isinstance(opts, _core.ThdOptions)
+    for f, s in zip(films, st):  # freeze the field (THD) or the pad's μ(T_eff) (effective)
+        if thd:
+            f.viscosity_field = np.array(s.viscosity_field)
+        else:
+            g = f.geometry
+            g.viscosity_pa_s = s.viscosity_pa_s
+            f.geometry = g
     model.films = films
     lin = _core.SystemSolver(model).linearize(r, np.zeros(n), omega)
     Kf = np.asarray(lin.KH) + K
@@ -259,14 +303,22 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
         eccentricity_ratio=math.hypot(r[0], r[1]) / clearance_m,
         pad_tilts_rad=np.asarray(tilts(r)) if tilts is not None else np.zeros(0),
         K=Kr, C=Cr, K_full=Kf, C_full=Cf, M_full=M, r=r, iterations=int(res.iterations),
-        temperature_c=tuple(np.array(s.temperature_c) for s in st),
-        viscosity_pa_s=tuple(np.array(s.viscosity_field) for s in st),
-        inlet_mask=tuple(np.array(s.inlet_mask) for s in st),
+        temperature_c=tuple(np.array(s.temperature_c) for s in st) if thd else (),
+        viscosity_pa_s=tuple(np.array(s.viscosity_field) for s in st) if thd else
+        uniform_fields(films, st),
+        inlet_mask=tuple(np.array(s.inlet_mask) for s in st) if thd else (),
         flows=tuple({k: np.array(getattr(s.flows, k)) for k in
                      ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2")}
-                    for s in st),
-        status=eq.status, message=eq.message)
+                    for s in st) if thd else (),
+        status=eq.status, message=eq.message, thermal_model="thd" if thd else "effective")
+
+
+def uniform_fields(films, states) -> tuple:
+    """Each effective-temperature pad's frozen μ(T_eff) as a uniform field on its grid
+    ((N_pad, n_axial + 1) Pa·s per pad film)."""
+    return tuple(np.full((f.grid.n_circ, f.grid.n_axial + 1), float(s.viscosity_pa_s))
+                 for f, s in zip(films, states))
 
 
 __all__ = ["PadThdResult", "check_carry_over", "freeze_fields", "pad_fields",
-           "pad_options", "pad_thd_equilibrium", "pad_thermal_films"]
+           "pad_model_options", "pad_options", "pad_thd_equilibrium", "pad_thermal_films", "uniform_fields"]

@@ -32,7 +32,8 @@ from rotordyn._common.status import CONVERGED
 from rotordyn.bearings._film import (SystemParts, check_arc, check_film_fields, check_load,
                                      check_speeds, operating_table, pad_film, speed_limit)
 from rotordyn.bearings.coefficients import coefficient_table
-from rotordyn.bearings.pad_thd import freeze_fields, pad_fields, pad_thd_equilibrium
+from rotordyn.bearings.pad_thd import (freeze_fields, pad_fields, pad_model_options,
+                                        pad_thd_equilibrium)
 from rotordyn.errors import InputError
 
 
@@ -233,6 +234,7 @@ class TiltingPadBearing:
                             journal_htc_w_m2k: float = 0.0, bush_htc_w_m2k: float = 0.0,
                             journal_temperature_c: float | None = None,
                             bush_temperature_c: float | None = None, tol_k: float = 1e-6,
+                            model: str = "thd", effective_factor: float = 0.5,
                             whirl_ratio: float | None = 1.0):
         """Thermo-hydrodynamic equilibrium under ``load_n`` (N) at ``speed_hz``: per pad the
         energy equation, μ(T) per node of ``oil`` (:class:`rotordyn.bearings.Oil`), the
@@ -244,16 +246,21 @@ class TiltingPadBearing:
         in one C++ call, to max |ΔT| <= ``tol_k`` K. K, C (2×2, reduced over the pads at
         ``whirl_ratio``·Ω; None: static condensation) with the temperature field frozen:
         a :class:`rotordyn.bearings.pad_thd.PadThdResult` (module ``pad_thd`` for the
-        model)."""
-        from rotordyn.bearings.thd import thd_options
+        model).
 
+        ``model="effective"``: the effective-temperature model per pad instead (each pad
+        isoviscous at μ(T_eff), T_eff = T_in + ``effective_factor`` ΔT, ΔT from the pad's
+        power loss and flows, the same inlet mixing; the wall options are THD-only;
+        docs/film-physics.md §"Effective-temperature pad bearings")."""
         if whirl_ratio is not None:
             v.finite("whirl_ratio", whirl_ratio)
-        opts = thd_options(supply_temperature_c=supply_temperature_c,
-                           supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
-                           journal_htc_w_m2k=journal_htc_w_m2k, bush_htc_w_m2k=bush_htc_w_m2k,
-                           journal_temperature_c=journal_temperature_c,
-                           bush_temperature_c=bush_temperature_c, tol_k=tol_k)
+        opts = pad_model_options(model, supply_temperature_c=supply_temperature_c,
+                                 supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
+                                 effective_factor=effective_factor, tol_k=tol_k,
+                                 journal_htc_w_m2k=journal_htc_w_m2k,
+                                 bush_htc_w_m2k=bush_htc_w_m2k,
+                                 journal_temperature_c=journal_temperature_c,
+                                 bush_temperature_c=bush_temperature_c)
         parts = self.system_parts(0, 1, 2, self.name or "bearing")
         return pad_thd_equilibrium(parts, oil=oil, opts=opts, load_n=load_n, speed_hz=speed_hz,
                                    clearance_m=self.clearance_m, whirl_ratio=whirl_ratio,

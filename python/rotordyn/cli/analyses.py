@@ -262,21 +262,11 @@ def _cmd_thermal(args) -> int:
 
 
 def _check_thermal_model(s, args) -> None:
-    """The options that contradict the thermal model chosen (``--model``, else the model
-    file's ``[thermal] model``), named before any solve: the effective model on a system whose
-    only films are pads or lobes (their thermal film is the THD one), ``--effective-factor``
-    with the THD film (it has no effective temperature to weight)."""
-    from rotordyn.bearings import (ActiveJournalBearing, FixedGeometryBearing,
-                                   FluidFilmBearing, TiltingPadBearing)
-
+    """The option that contradicts the thermal model chosen (``--model``, else the model
+    file's ``[thermal] model``), named before any solve: ``--effective-factor`` with the THD
+    film (it has no effective temperature to weight). (Every thermal bearing, plain, active,
+    tilting-pad or fixed-geometry, takes either model.)"""
     chosen = args.thermal_model or getattr(s.thermal, "model", None) or "effective"
-    plain = any(isinstance(b, (FluidFilmBearing, ActiveJournalBearing)) for b in s.bearings)
-    pads = [b for b in s.bearings if isinstance(b, (TiltingPadBearing, FixedGeometryBearing))]
-    if chosen != "thd" and pads and not plain:
-        where = "--model" if args.thermal_model else "--model (the model's [thermal] model)"
-        raise InputError(f"{where}: {chosen!r}; the bearings are tilting-pad or fixed-geometry "
-                         f"bearings ({', '.join(b.name or type(b).__name__ for b in pads)}), "
-                         "whose thermal film is the THD model: --model thd")
     if chosen == "thd" and args.effective_factor is not None:
         raise InputError("--effective-factor: the THD film has no effective temperature (the "
                          "energy equation gives the field); leave it out, or --model effective")
