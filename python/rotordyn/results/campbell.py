@@ -30,6 +30,7 @@ class CampbellResult(Display):
     kind: np.ndarray | None = None  # (n_speeds, n_modes) "rotor"/"sleeve" (systems with films)
     point_status: np.ndarray | None = None  # (n_speeds,) equilibrium status per speed
     mode_id: np.ndarray | None = None  # (n_speeds, n_modes) tracked ids
+    thermal: tuple = ()  # (n_speeds,) SystemThermalResult per speed (``thermal=``), else ()
 
     def ids(self) -> np.ndarray:
         """(n_speeds, n_modes) int64 mode ids: the tracked ones, else the slot index."""

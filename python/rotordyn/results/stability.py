@@ -85,6 +85,8 @@ class StabilityResult(Display):
     status: str = "ok"
     message: str = ""
     modes: np.ndarray | None = None
+    # the thermal equilibrium whose frozen field the films ran at (``thermal=``), else None
+    thermal: object = None
 
     @property
     def speed_hz(self) -> float:

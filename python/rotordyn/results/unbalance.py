@@ -34,6 +34,7 @@ class UnbalanceResult(Display):
     unbalances: tuple
     operating_speed_hz: tuple | None = None
     max_real_1_per_s: np.ndarray | None = None
+    thermal: tuple = ()  # (n_speeds,) SystemThermalResult per speed (``thermal=``), else ()
 
     @property
     def stable(self) -> np.ndarray:

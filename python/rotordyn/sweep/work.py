@@ -77,8 +77,21 @@ OUTPUTS["limit_cycle"] = {"record": _cat(["hopf", "cycle"]), **OUTPUTS["hopf"],
                           "newton_iterations": I64}
 
 
-def schema(analysis: str, axes: list[str]) -> pa.Schema:
-    """The fixed arrow schema of a sweep's rows (every chunk is cast to it)."""
+# a stability / Campbell / unbalance sweep with ``options.thermal`` (:mod:`.thermal_rows`):
+# the point's thermal outputs, per film (lists in the order of ``film``) and summarised
+THERMAL_OUTPUTS = {"film": pa.list_(STR), "film_effective_temperature_c": pa.list_(F64),
+                   "film_max_temperature_c": pa.list_(F64), "film_power_loss_w": pa.list_(F64),
+                   "max_temperature_c": F64, "power_loss_w": F64, "thermal_iterations": I64}
+THERMAL_ANALYSES = ("stability", "campbell", "unbalance")
+
+
+def thermal_on(job) -> bool:
+    return job.analysis in THERMAL_ANALYSES and job.options.get("thermal") is not None
+
+
+def schema(analysis: str, axes: list[str], thermal: bool = False) -> pa.Schema:
+    """The fixed arrow schema of a sweep's rows (every chunk is cast to it); ``thermal``:
+    with the thermal outputs of ``options.thermal``."""
     fields = [pa.field("sweep_id", pa.dictionary(pa.int8(), STR)),
               pa.field("point_id", I64), pa.field("chunk_id", I64)]
     base = ["speed_hz", "chamber_pressure_pa", "config_ay_m"]
@@ -88,6 +101,8 @@ def schema(analysis: str, axes: list[str]) -> pa.Schema:
         fields.append(pa.field(f"i_{a}", I32))
     for k, t in OUTPUTS[analysis].items():
         fields.append(pa.field(k, t[0] if isinstance(t, tuple) else t))
+    if thermal:
+        fields += [pa.field(k, t) for k, t in THERMAL_OUTPUTS.items()]
     fields += [pa.field("status", pa.dictionary(pa.int8(), STR)), pa.field("message", STR)]
     return pa.schema(fields)
 
@@ -153,6 +168,13 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     boundary) as a table with :func:`schema`."""
     base = base_system(job.model_toml)
     variants = Variants(base, job.model_toml)
+    if pids is None and thermal_on(job):  # each point at its own thermal equilibrium
+        from rotordyn.sweep import thermal_rows
+
+        rows: list[dict] = []
+        (thermal_rows.unbalance_rows if job.analysis == "unbalance" else
+         thermal_rows.stab_rows)(job, variants, chunk_id, lo, hi, rows)
+        return to_table(job, rows)
     if pids is not None or job.analysis in _BLOCKS:
         pl = list(range(lo, hi)) if pids is None else list(pids)
         asms: list = [None] * len(pl)
@@ -351,7 +373,7 @@ _ANALYSIS["limit_cycle"] = _limit_cycle_rows
 def to_table(job: Job, rows: list[dict]) -> pa.Table:
     """Rows (dicts) to the fixed schema: missing values are nulls, categoricals use the fixed
     category lists so every part has the same dictionary."""
-    sch = schema(job.analysis, list(job.axes))
+    sch = schema(job.analysis, list(job.axes), thermal_on(job))
     cats = categories(job.analysis)
     cols = []
     sizes = [r.get("_n", 1) for r in rows]
