@@ -93,6 +93,7 @@ def _register(sub) -> None:
     s.add_argument("model", help=MODEL_HELP)
     add_operating_point(s)
     _add_mode_window(s)
+    _add_thermal_flag(s)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_stability)
 
@@ -108,6 +109,7 @@ def _register(sub) -> None:
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="also write the Campbell diagram to FIG.png or FIG.svg")
     _add_mode_window(s, n_default=None)
+    _add_thermal_flag(s)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_campbell)
 
@@ -125,6 +127,7 @@ def _register(sub) -> None:
 
     s = sub.add_parser("unbalance", help="unbalance response, critical speeds, API 684 margins")
     s.add_argument("model", help=MODEL_HELP)
+    _add_thermal_flag(s)
     s.add_argument("--unbalance", action="append", required=True,
                    metavar="STATION,MASS_KG_M,PHASE_DEG",
                    help="unbalance m·e (kg m) at a station with its phase (deg); repeatable")
@@ -335,10 +338,41 @@ def _by_name(frame) -> dict:
     return out
 
 
+def _add_thermal_flag(s) -> None:
+    s.add_argument("--thermal", action="store_true",
+                   help="each speed at its own thermal equilibrium of the model's [thermal] "
+                        "oil system, the temperature field frozen for K_H, D_H "
+                        "(docs/film-physics.md)")
+    s.add_argument("--thermal-model", choices=["effective", "thd"], default=None,
+                   help="with --thermal: the thermal film model (default: the model's "
+                        "[thermal] model)")
+
+
+def _thermal(args, s):
+    """The ``thermal=`` keyword of the analyses from --thermal/--thermal-model (None:
+    isothermal); InputError naming the option when the model has no oil system."""
+    if not args.thermal:
+        if args.thermal_model is not None:
+            raise InputError("--thermal-model: needs --thermal")
+        return None
+    if s.thermal is None:
+        raise InputError("--thermal: the model has no [thermal] table (its oil system, "
+                         "docs/model-file.md)")
+    return {} if args.thermal_model is None else {"model": args.thermal_model}
+
+
+def _thermal_json(t):
+    if t is None:
+        return None
+    return {"model": t.thermal_model, "status": t.status, "film": list(t.bearing_names),
+            "effective_temperature_c": t.effective_temperature_c,
+            "max_temperature_c": t.max_temperature_c, "power_loss_w": t.power_loss_w}
+
+
 def _cmd_stability(args) -> int:
     s = models.load(args.model)
     st = analysis.stability(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
-                            n_modes=args.n_modes)
+                            n_modes=args.n_modes, thermal=_thermal(args, s))
     df = st.to_frame()
     keep = _window(st.frequencies_hz, args, table=not args.json)
     if args.json:
@@ -347,7 +381,8 @@ def _cmd_stability(args) -> int:
         print(json_text({"status": st.status, "message": st.message, "stable": st.stable,
                          "speed_hz": st.speed_hz, "max_real_1_per_s": st.max_real_1_per_s,
                          "modes": df.iloc[keep][cols].to_dict("list")
-                         | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])}}))
+                         | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])},
+                         "thermal": _thermal_json(st.thermal)}))
     else:
         print(table_text(df.iloc[keep]))
         if len(keep) < len(df):
@@ -355,6 +390,13 @@ def _cmd_stability(args) -> int:
                   "others; the least damped mode and the verdict cover all)", file=sys.stderr)
         print(f"{'stable' if st.stable else 'UNSTABLE'}: largest Re λ = "
               f"{st.max_real_1_per_s:.4g} 1/s", file=sys.stderr)
+        if st.thermal is not None:
+            t = st.thermal
+            print(f"at the thermal equilibrium ({t.thermal_model} model, field frozen): "
+                  + "; ".join(f"{n}: T_eff {a:.4g} degC, T_max {b:.4g} degC, {p:.4g} W"
+                              for n, a, b, p in zip(t.bearing_names, t.effective_temperature_c,
+                                                    t.max_temperature_c, t.power_loss_w)),
+                  file=sys.stderr)
     if st.status not in CONVERGED:  # a failed equilibrium: no eigenvalues, exit 1
         print(f"rotordyn: failed: {st.status}: {st.message}", file=sys.stderr)
         return 1
@@ -365,9 +407,10 @@ def _cmd_campbell(args) -> int:
     check_figure(args.plot)
     speeds = parse_speeds(args.speeds_hz)
     s = models.load(args.model)
+    th = _thermal(args, s)
     if s.bearings:
         c = analysis.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m,
-                              n_modes=args.n_modes)
+                              n_modes=args.n_modes, thermal=th)
     else:
         c = analysis.rotor_campbell(s, speeds, **({} if args.n_modes is None
                                                   else {"n_modes": args.n_modes}))
@@ -416,7 +459,8 @@ def _cmd_unbalance(args) -> int:
     u = analysis.unbalance_response(s, ub, parse_speeds(args.speeds_hz), stations=args.station,
                                     chamber_pressure_pa=args.chamber_pressure_pa,
                                     config_ay_m=args.config_ay_m,
-                                    operating_speed_hz=args.operating_speed_hz)
+                                    operating_speed_hz=args.operating_speed_hz,
+                                    thermal=_thermal(args, s))
     peaks = {int(st): u.peaks(st).to_dict("records") for st in u.stations}
     if args.json:
         print(json_text({"stations": list(u.stations), "peaks": peaks,
