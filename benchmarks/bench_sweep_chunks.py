@@ -9,7 +9,12 @@ replaced (reproduced below: the same core calls one point at a time, SciPy's bre
 threshold; the bare loop without rows). Interleaved repeats, medians, wall and CPU, BLAS
 pinned to one thread, load printed.
 
-    python benchmarks/bench_sweep_chunks.py [--repeat 5]
+The chunks with no batch in the core (thermal, waterfall, run-up, robust, hopf: a per-point
+thermal fixed point, transient, closed-loop margin computation or l1 normal form) are timed
+the same way with ``--points``: the chunk, the bare per-point work (the same analysis calls,
+no rows) and the former dict-per-row chunk (tests/sweep_point_rows_reference.py).
+
+    python benchmarks/bench_sweep_chunks.py [--repeat 5] [--points] [--only-points]
 """
 
 from __future__ import annotations
@@ -160,11 +165,143 @@ def boundary_loop(job, pids):
             r_prev = None
 
 
+def show_points(label, n, t):
+    c, b, d = t["chunk"], t["bare"], t["dict"]
+    print(f"-- {label} ({n} points)")
+    print(f"   bare per-point work (baseline)  {b}  ({1e3 * b.cpu / n:.3f} ms CPU/point)")
+    print(f"   dict-per-row chunk (before)     {d}")
+    print(f"   columnar chunk (run_chunk)      {c}")
+    print(f"   chunk / bare: CPU {c.cpu / b.cpu:.3f}x, wall {c.wall / b.wall:.3f}x; "
+          f"dict / chunk CPU {d.cpu / c.cpu:.3f}x")
+
+
+def points_chunks(repeat):
+    """The chunks whose points each cost one unbatched analysis (module docstring)."""
+    import sys
+    from pathlib import Path
+
+    from rotordyn.analysis.thermal import system_thermal_equilibrium
+    from rotordyn.analysis.transient import transient
+    from rotordyn.control.pid import tune_pd
+    from rotordyn.control.plant import plant
+    from rotordyn.control.robust import build_controller, closed_loop_point
+    from rotordyn.operation import SpeedProfile
+    from rotordyn.analysis.hopf import FD_STEP
+    from rotordyn.sweep.hopf_rows import _one
+    from rotordyn.sweep.paths import set_field
+    from rotordyn.sweep.points import point_options, solve_equilibrium
+    from rotordyn.sweep.robust import build_spec
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+    import sweep_point_rows_reference as ref
+
+    def timed(label, job, bare, n):
+        show_points(label, n, interleaved(
+            {"bare": bare, "chunk": lambda: run_chunk(job, 0, 0, n),
+             "dict": lambda: ref.run_chunk(job, 0, 0, n)}, repeat=repeat))
+
+    models = Path(__file__).resolve().parents[1] / "tests" / "data" / "models"
+    th = rd.System.from_toml(str(models / "compressor_plain_thermal.toml"))
+    axes = {"thermal.supply_temperature_c": [40.0, 50.0], "speed_hz": [100.0, 125.0, 150.0]}
+    job = Job("b", th.to_toml(), "thermal", {}, axes)
+    var = {t: set_field(th, "thermal.supply_temperature_c", t) for t in axes[
+        "thermal.supply_temperature_c"]}
+    timed("thermal chunk, compressor on plain thermal films", job, lambda: [
+        system_thermal_equilibrium(var[t], speed_hz=f) for t in var for f in axes["speed_hz"]],
+        6)
+
+    s = rd.models.paper_rig()
+    ub = [(6, 2e-5, 0.0)]
+    speeds = [40.0, 45.0, 50.0]
+    job = Job("b", s.to_toml(), "waterfall", {"unbalances": [list(u) for u in ub],
+                                              "revolutions": 20, "samples_per_revolution": 32},
+              {"chamber_pressure_pa": [0.2e6], "speed_hz": speeds})
+
+    asm = Assembled(s)  # the assembly outside the timing (a chunk's is cached per process)
+
+    def bare_wf():
+        asm.solver = _core.SystemSolver(asm.model)  # a fresh solver, as a chunk's
+        for f in speeds:
+            e = solve_equilibrium(asm, f, 0.2e6, asm.config_vector(None), None, {})
+            tr = transient(asm.system, 20 / f, f, 0.2e6, None, r0=np.asarray(e.r),
+                           unbalances=ub, n_out=20 * 32 + 1, rtol=1e-6, rub_fraction=1e-3)
+            tr.spectrum(last_fraction=0.5, axis="x")
+            tr.spectrum(last_fraction=0.5, axis="y")
+
+    timed("waterfall chunk, rig, 20 revolutions per speed", job, bare_wf, len(speeds))
+
+    pcs = [0.2e6, 0.3e6]
+    job = Job("b", s.to_toml(), "run-up", {"unbalances": [list(u) for u in ub],
+                                           "start_hz": 30.0, "stop_hz": 36.0,
+                                           "rate_hz_per_s": 15.0},
+              {"chamber_pressure_pa": pcs})
+
+    def bare_runup():
+        asm.solver = _core.SystemSolver(asm.model)
+        for pc in pcs:
+            e = solve_equilibrium(asm, 30.0, pc, asm.config_vector(None), None, {})
+            T = 6.0 / 15.0
+            transient(asm.system, T, chamber_pressure_pa=pc, speed=SpeedProfile.ramp(
+                30.0, 36.0, 15.0), r0=np.asarray(e.r), unbalances=ub,
+                n_out=int(33.0 * T * 32) + 1, rtol=1e-6, rub_fraction=1e-3)
+
+    timed("run-up chunk, rig 30-36 Hz at 15 Hz/s", job, bare_runup, len(pcs))
+
+    p = plant(s, 50.0, 0.05e6, -1.85e-3, measurements=[("journal", 0)],
+              equilibrium={"warm_start": False})
+    law = tune_pd(p)[0]
+    rspeeds = [30.0, 40.0, 50.0, 60.0]
+    for margins in (False, True):
+        spec = build_spec(s, law, {"chamber_pressure_pa": 0.05e6, "config_ay_m": -1.85e-3,
+                                   "speed_hz": rspeeds}, margins=margins)
+        job = Job("b", s.to_toml(), "robust", spec.options, spec.axes)
+        k = build_controller(spec.options["controller"])
+
+        def bare_robust(margins=margins, k=k):
+            r0 = None
+            for f in rspeeds:
+                eq = {"r0": r0} if r0 is not None else {}
+                pl = closed_loop_point(s, k, f, 0.05e6, -1.85e-3, equilibrium=eq,
+                                       with_margins=margins, pade_order=6)[0]
+                r0 = pl.info.get("equilibrium_r")
+
+        timed(f"robust chunk, rig with the tuned PD, margins {margins}", job, bare_robust,
+              len(rspeeds))
+
+    hp = [0.0, 0.1e6, 0.2e6, 0.3e6, 0.4e6]
+    job = Job("b", s.to_toml(), "hopf", {"vary": "chamber_pressure_pa"},
+              {"speed_hz": [80.0], "config_ay_m": [1.5e-3], "chamber_pressure_pa": hp})
+    asm0 = Assembled(s)
+    tin = threshold_input(asm0, hp)
+    tin.omega = [hz_to_rad_s(80.0)] * len(hp)
+    tin.a = np.tile(asm0.config_vector(1.5e-3), (len(hp), 1))
+
+    def bare_hopf():
+        variants = Variants(base_system(job.model_toml), job.model_toml)
+        _, p0 = job.point(0)
+        asm = variants.get(p0)
+        res = _core.threshold_line(asm.solver, tin)
+        for x, fr in zip(res.root, res.root_freq):
+            q = {**p0, "chamber_pressure_pa": x}
+            _one(job, asm, q, "chamber_pressure_pa", fr, hp[-1] - hp[0],
+                 point_options(job, q), False, FD_STEP)
+
+    timed("hopf chunk, rig line over p_c at 80 Hz, a_y = 1.5 mm (two crossings)", job,
+          bare_hopf, len(hp))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--points", action="store_true",
+                    help="also the thermal, waterfall, run-up, robust and hopf chunks")
+    ap.add_argument("--only-points", action="store_true", help="only those")
     a = ap.parse_args()
     header("sweep chunks: one C++ call vs the per-point loops")
+    if a.only_points:
+        points_chunks(a.repeat)
+        footer()
+        return
     s = rd.models.paper_rig()
     toml = s.to_toml()
     asm = Assembled(s)
@@ -223,6 +360,8 @@ def main():
         {"loop": lambda: unbalance_loop(asm, [(6, 2e-5, 0.0)], speeds, 0.2e6, [6, 4]),
          "chunk": lambda: run_chunk(job, 0, 0, len(speeds)), "bare": bare_unbalance},
         repeat=a.repeat))
+    if a.points:
+        points_chunks(a.repeat)
     footer()
 
 

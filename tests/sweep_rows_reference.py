@@ -17,9 +17,11 @@ from rotordyn._common.whirl import WHIRL_NAMES
 from rotordyn.sweep import points as pt
 from rotordyn.sweep.lines import max_real
 from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, equilibrium_options,
-                                   fail_row, operating, points, ref_bearing, stable_modes)
+                                   job_model_ay, operating, point_options, ref_bearing,
+                                   stable_modes)
 from rotordyn.sweep.tracking import track_line
-from rotordyn.sweep.work import Job, to_table
+from rotordyn.sweep.lines import block_rows, threshold_line as threshold_line_blocks
+from rotordyn.sweep.work import STR, Job, categories, schema
 from rotordyn.units import hz_to_rad_s
 
 
@@ -262,9 +264,9 @@ def threshold_line(job, variants, chunk_id, lo, hi, rows):
     try:
         asm = variants.get(p0)
     except RotordynError as exc:
-        rows.append(pt.fail_row(pt.common_row(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
+        rows.append(fail_row(common_row(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
         return
-    row = pt.common_row(job, lo, chunk_id, idx0, p0, asm)
+    row = common_row(job, lo, chunk_id, idx0, p0, asm)
     row[f"i_{vary}"] = None
     opts = pt.point_options(job, p0)
     xs, om, pcs, avs, valid = [], [], [], [], []
@@ -325,7 +327,7 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
     try:
         asm = variants.get(p0)
     except RotordynError as exc:
-        rows.append(pt.fail_row(pt.common_row(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
+        rows.append(fail_row(common_row(job, lo, chunk_id, idx0, p0, None), "error", str(exc)))
         return
     opts = pt.point_options(job, p0)
     ub = opts["unbalances"]
@@ -339,7 +341,7 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
     status, msg = [None] * n, [None] * n
     for k, pid in enumerate(range(lo, hi)):
         idx, p = job.point(pid)
-        base.append(pt.common_row(job, pid, chunk_id, idx, p, asm))
+        base.append(common_row(job, pid, chunk_id, idx, p, asm))
         speeds.append(p.get("speed_hz", 50.0))
         try:
             ops.append(pt.operating(asm, p))
@@ -396,3 +398,93 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
                                                                math.nan))
                          if pk is not None else math.nan,
                          "status": status[k], "message": msg[k]})
+
+
+# --- the row-wise helpers the package had before its columnar chunks (moved here from
+# rotordyn.sweep.work, points and lines: no chunk of the package uses them any more) ---
+
+def same_line(prev, idx, pos) -> bool:
+    """Consecutive points that differ only along the innermost varying axis."""
+    return prev is not None and prev[:pos] == idx[:pos] and prev[pos + 1:] == idx[pos + 1:]
+
+
+def common_row(job, pid, chunk_id, idx, p, asm):
+    row = {"point_id": pid, "chunk_id": chunk_id}
+    for (a, _), i in zip(job.axes.items(), idx):
+        row[f"i_{a}"] = i
+    row.update(p)
+    row.setdefault("speed_hz", 50.0)
+    row.setdefault("chamber_pressure_pa", 0.0)
+    if "config_ay_m" not in row:
+        bc = ref_bearing(asm) if asm is not None else None
+        row["config_ay_m"] = (job_model_ay(asm, bc) if bc is not None else math.nan)
+    return row
+
+
+def fail_row(row, status, message):
+    return {**row, "status": status, "message": message}
+
+
+def points(job, variants, chunk_id, lo, hi, pids=None):
+    """Yield (row, p, asm, opts, same_line, error) per point; a model-variant error is
+    yielded as asm=None with its message."""
+    prev = None
+    for pid in (range(lo, hi) if pids is None else pids):
+        idx, p = job.point(pid)
+        try:
+            asm = variants.get(p)
+            err = None
+        except RotordynError as exc:
+            asm, err = None, str(exc)
+        row = common_row(job, pid, chunk_id, idx, p, asm)
+        yield row, p, asm, point_options(job, p), same_line(prev, idx, job.line_pos), err
+        prev = idx
+
+
+def threshold_line_rows(job, variants, chunk_id, lo, hi, rows, scan=None):
+    """:func:`threshold_line` as one dict per row appended to ``rows`` (each with its point's
+    identity columns)."""
+    asms = [None] * (hi - lo)
+    blocks = threshold_line_blocks(job, variants, lo, hi, 0, asms, scan=scan)
+    block_rows(job, chunk_id, lo, hi, asms, blocks, rows)
+
+
+def to_table(job: Job, rows: list[dict], sch: pa.Schema | None = None) -> pa.Table:
+    """Rows (dicts) to the fixed schema: missing values are nulls, categoricals use the fixed
+    category lists so every part has the same dictionary. No chunk builds its rows this way
+    any more (every analysis is columnar, :func:`rotordyn.sweep.work.run_chunk`): the
+    reference of tests/test_sweep_columns*.py. ``sch``: another schema (the thermal
+    columns of ``options.thermal``, tests/sweep_thermal_rows_reference.py)."""
+    sch = schema(job.analysis, list(job.axes)) if sch is None else sch
+    cats = categories(job.analysis)
+    cols = []
+    sizes = [r.get("_n", 1) for r in rows]
+    n = sum(sizes)
+    for fld in sch:
+        name = fld.name
+        if name == "sweep_id":
+            cols.append(pa.DictionaryArray.from_arrays(
+                pa.array(np.zeros(n, dtype=np.int8)), pa.array([job.sweep_id])))
+            continue
+        vals: list = []
+        for r, k in zip(rows, sizes):
+            x = r.get(name)
+            if isinstance(x, np.ndarray):
+                vals.extend(x.tolist())
+            elif k == 1:
+                vals.append(x)
+            else:
+                vals.extend([x] * k)
+        if name in cats:
+            code = {c: i for i, c in enumerate(cats[name])}
+            codes = pa.array([None if x is None else code[x] for x in vals], type=pa.int8())
+            cols.append(pa.DictionaryArray.from_arrays(codes, pa.array(cats[name])))
+        elif name == "message":
+            cols.append(pa.array(["" if x is None else str(x) for x in vals], type=STR))
+        else:
+            cols.append(pa.array(vals, type=fld.type, from_pandas=False))
+    if job.meta:
+        import json
+
+        sch = sch.with_metadata({b"rotordyn": json.dumps(job.meta, sort_keys=True).encode()})
+    return pa.Table.from_arrays(cols, schema=sch)

@@ -125,10 +125,14 @@ def test_whip_line_flags_the_stable_cycle_beside_the_stable_equilibrium(whip):
 def test_whip_rows_equal_cycles_shot_without_continuation(whip):
     """The stable whip rows at 127 and 125 Hz against rotordyn.periodic_orbit at tol 1e-6:
     at 127 Hz from a 0.4 s transient at 130 Hz (equilibrium disturbed by 0.6 c), at 125 Hz from
-    that 127 Hz cycle. Period within 1e-5, semi-major axis within 3e-5, |μ_c| within 3e-4
-    relative (the rows converge to tol 1e-4 of the clearance, the monodromy of both at
-    sensitivity_rtol 1e-4; measured: period 8.2e-7, 2.7e-7; axis 3.0e-6, 1.1e-6; |μ_c|
-    4.7e-5, 5.8e-5 at 127, 125 Hz)."""
+    that 127 Hz cycle. The rows converge to tol = 1e-4 (the residual in units of the clearance,
+    Broyden corrector), so a row's state may be off by up to tol/(1 − |μ_c|) ≈ 6.5e-4 c at
+    |μ_c| = 0.845 — 7e-4 of the 0.88 c axis; how much of that a run uses depends on the last
+    bits of the continuation's steps (they differ between machines and package builds).
+    Tolerances, from that bound: period 1e-4, semi-major axis 1e-3, |μ_c| 1e-3 relative (the
+    monodromy of both at sensitivity_rtol 1e-4). Measured at 127 / 125 Hz: period 8.6e-8 /
+    2.7e-5, axis 7.8e-6 / 2.2e-4, |μ_c| 2.1e-5 / 3.6e-4 (numpy 2.4, scipy 1.17; an earlier
+    machine: 8.2e-7 / 2.7e-7, 3.0e-6 / 1.1e-6, 4.7e-5 / 5.8e-5)."""
     from rotordyn.sweep.limit_cycle_rows import semi_major_axis
 
     _, f = whip
@@ -146,10 +150,10 @@ def test_whip_rows_equal_cycles_shot_without_continuation(whip):
         row = cyc[(cyc["speed_hz"] == spd) & cyc["stable"].astype(bool)]
         assert len(row) == 1
         row = row.iloc[0]
-        assert row["period_s"] == pytest.approx(d.period_s, rel=1e-5)
+        assert row["period_s"] == pytest.approx(d.period_s, rel=1e-4)
         A = semi_major_axis(d.journal_x_m[:, 0], d.journal_y_m[:, 0])
-        assert row["amplitude_m"] == pytest.approx(A, rel=3e-5)
-        assert row["max_multiplier"] == pytest.approx(abs(d.critical_multiplier), rel=3e-4)
+        assert row["amplitude_m"] == pytest.approx(A, rel=1e-3)
+        assert row["max_multiplier"] == pytest.approx(abs(d.critical_multiplier), rel=1e-3)
         assert row["bearing"] == "NDE bearing"
 
 
@@ -192,12 +196,14 @@ def test_rows_do_not_depend_on_threads_or_workers(tmp_path, whip):
     low = cyc[cyc["speed_hz"] == 125.0]
     assert list(low["status"]) == ["ok"] and not low["stable"].iloc[0]
     assert low["max_multiplier"].iloc[0] > 1 and not low["bistable"].iloc[0]
-    # the same unstable inner cycle as on the whip line (another branch, same cycle;
-    # measured 6.8e-5 in the axis, 5.5e-6 in the period)
+    # the same unstable inner cycle as on the whip line (another branch, same cycle). Each row
+    # is converged to tol = 1e-4 c, its state within tol/|1 − μ_c| = 7e-4 c at μ_c = 1.14 near
+    # the fold: two rows' axes (0.64 c) may differ by 2.2e-3, periods by ~1e-4. Measured:
+    # axis 1.26e-3, period 4.2e-5 (numpy 2.4, scipy 1.17); an earlier machine: 6.8e-5, 5.5e-6
     _, f = whip
     inner = f[(f["record"] == "cycle") & (f["speed_hz"] == 125.0) & (f["cycle"] == 1)]
-    assert low["amplitude_m"].iloc[0] == pytest.approx(inner["amplitude_m"].iloc[0], rel=2e-4)
-    assert low["period_s"].iloc[0] == pytest.approx(inner["period_s"].iloc[0], rel=2e-5)
+    assert low["amplitude_m"].iloc[0] == pytest.approx(inner["amplitude_m"].iloc[0], rel=3e-3)
+    assert low["period_s"].iloc[0] == pytest.approx(inner["period_s"].iloc[0], rel=2e-4)
     assert list(cyc[cyc["speed_hz"] == 127.0]["status"]) == ["no_cycle"]
 
 

@@ -69,20 +69,18 @@ def _bearing():
 
 
 def test_thd_film_uses_the_power_law_at_every_node():
-    """The THD film evaluates the power law at its nodes: an exponential law tangent to it (in
-    ln μ) at the supply temperature gives another field (the two laws part above 45 °C), so
-    the law reaching the core is the one asked for, not a default."""
-    oil = _power()
-    r = _bearing().thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=oil,
+    """The THD film's viscosity field against the closed form a T^b at each node's
+    temperature (a, b computed here): within 1e-8 relative — the field is the law at the
+    temperatures of the iteration's last step, which the reported field differs from by the
+    iteration's tolerance (|ΔT| ~ 1e-8 K, |b| ΔT/T ~ 1e-9; measured 9.8e-10)."""
+    r = _bearing().thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=_power(),
                                        supply_temperature_c=45.0, model="thd")
     assert r.status == "ok"
-    assert r.max_temperature_c > 50.0
+    T, mu = np.asarray(r.temperature_c), np.asarray(r.viscosity_pa_s)
+    assert T.shape == mu.shape and T.max() > 50.0  # a real rise above the 45 °C supply
     b = math.log(VG68["mu2_pa_s"] / VG68["mu1_pa_s"]) / math.log(100.0 / 40.0)
-    ex = Oil(viscosity_law="exponential", mu_ref_pa_s=oil.viscosity_pa_s(45.0), t_ref_c=45.0,
-             beta_1_per_k=-b / 45.0, density_kg_m3=870.0, specific_heat_j_per_kg_k=2000.0)
-    r2 = _bearing().thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=ex,
-                                        supply_temperature_c=45.0, model="thd")
-    assert abs(r.max_temperature_c - r2.max_temperature_c) > 1e-3
+    a = VG68["mu1_pa_s"] / 40.0 ** b
+    np.testing.assert_allclose(mu, a * T ** b, rtol=1e-8)
 
 
 def test_power_law_oil_round_trips_through_the_model_file():

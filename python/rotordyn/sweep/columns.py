@@ -5,8 +5,8 @@ points, and one arrow table built from them, with no dict per row.
 A block is ``(pt, cols)``: ``pt`` the chunk-local index of each of its rows' point (int array,
 length m), ``cols`` output name -> array of length m or one scalar for every row; a name
 absent from ``cols`` takes the point's identity value (:func:`identity`) or is null. The
-table is the one :func:`rotordyn.sweep.work.to_table` builds from per-row dicts, value for
-value (tests/test_sweep_columns.py).
+table is the one the former per-row dicts gave, value for value (their code is kept as the
+tests' reference, tests/sweep_rows_reference.py; tests/test_sweep_columns*.py).
 """
 
 from __future__ import annotations
@@ -25,8 +25,8 @@ _NP = {pa.float64(): np.float64, pa.int64(): np.int64, pa.int32(): np.int32,
 
 def identity(job, chunk_id: int, pids, asms) -> dict:
     """Per point of the chunk (``pids``, their models ``asms``, None for a failed variant):
-    ``point_id``, ``chunk_id``, each axis's value and index ``i_<axis>``, and the defaults of
-    :func:`rotordyn.sweep.points.common_row` (50 Hz, 0 Pa, the reference bearing's a_y)."""
+    ``point_id``, ``chunk_id``, each axis's value and index ``i_<axis>``, and the defaults
+    (50 Hz, 0 Pa, the reference bearing's a_y) the former per-row ``common_row`` set."""
     pids = np.asarray(pids, dtype=np.int64)
     n = len(pids)
     idx = np.unravel_index(pids, job.shape) if n else [np.zeros(0, np.int64)] * len(job.shape)
@@ -153,3 +153,48 @@ def runs(ok) -> list[tuple[int, int, bool]]:
     cut = np.flatnonzero(ok[1:] != ok[:-1]) + 1
     edges = [0, *cut.tolist(), ok.size]
     return [(a, b, bool(ok[a])) for a, b in zip(edges, edges[1:])]
+
+
+def _expand(x, m):
+    if not _is_scalar(x):
+        return np.asarray(x, dtype=object) if isinstance(x, (list, tuple)) else x
+    if isinstance(x, str):
+        return np.full(m, x, dtype=object)
+    return np.full(m, x)
+
+
+def merge(blocks: list) -> list:
+    """Adjacent blocks with the same column names (and None, i.e. null, in the same columns)
+    joined into one: the per-point blocks of a run of points become one block whose columns
+    are whole arrays (the same rows, the same values, in the same order)."""
+    out: list = []
+    group: list = []
+
+    def key(cols):
+        return tuple(sorted((k, x is None) for k, x in cols.items()))
+
+    def flush():
+        if len(group) == 1:
+            out.append(group[0])
+        elif group:
+            pts = np.concatenate([np.asarray(p, dtype=np.int64) for p, _ in group])
+            cols = {}
+            for k, x0 in group[0][1].items():
+                xs = [c[k] for _, c in group]
+                if x0 is None:
+                    cols[k] = None
+                elif all(_is_scalar(x) for x in xs) and all(type(x) is type(x0) and x == x0
+                                                           for x in xs):
+                    cols[k] = x0
+                else:
+                    cols[k] = np.concatenate([_expand(x, len(p))
+                                              for (p, _), x in zip(group, xs)])
+            out.append((pts, cols))
+        group.clear()
+
+    for b in blocks:
+        if group and key(b[1]) != key(group[0][1]):
+            flush()
+        group.append(b)
+    flush()
+    return out

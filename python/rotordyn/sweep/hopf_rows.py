@@ -14,7 +14,7 @@ import numpy as np
 from rotordyn.analysis.hopf import FD_STEP, _critical_eigenvalue, hopf_type, lyapunov_at
 from rotordyn.errors import RotordynError
 from rotordyn.sweep import points as pt
-from rotordyn.sweep.lines import max_real, threshold_line_rows
+from rotordyn.sweep.lines import max_real, threshold_line
 from rotordyn.units import hz_to_rad_s
 
 #: output columns beyond the threshold's
@@ -62,29 +62,49 @@ def _one(job, asm, p, vary, whirl, span, opts, excl, fd_step):
             "alpha_prime": alpha, "amplitude_coefficient_m2": coef}
 
 
-def hopf_line(job, variants, chunk_id, lo, hi, rows, scan=None):
-    """The threshold rows of the line [lo, hi), each crossing with its Hopf columns; a
-    failed l1 keeps the crossing and gets status ``error`` with the message. ``scan``: as
-    for :func:`~rotordyn.sweep.lines.threshold_line`."""
+def hopf_line_blocks(job, variants, lo, hi, at, asms, scan=None):
+    """The threshold blocks of the line [lo, hi) (:func:`~rotordyn.sweep.lines.
+    threshold_line`: one C++ call for the scan and every crossing), each crossing with its
+    Hopf columns; a failed l1 keeps the crossing and gets status ``error`` with the
+    message. The Hopf columns of a crossing are its own work (a cold equilibrium, the
+    Jacobian, two max Re λ for dRe λ/d(vary) and the l1 normal form), one per crossing.
+    ``scan``: as for :func:`~rotordyn.sweep.lines.threshold_line`."""
     vary = job.options["vary"]
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     fd_step = float(job.options.get("fd_step", FD_STEP))
-    line = []
-    threshold_line_rows(job, variants, chunk_id, lo, hi, line, scan)
+    blocks = threshold_line(job, variants, lo, hi, at, asms, scan)
     _, p0 = job.point(lo)
     _, p1 = job.point(hi - 1)
     span = abs(p1[vary] - p0[vary])
-    for row in line:
-        out = {**row, **{c: (math.nan if c != "hopf_type" else "") for c in HOPF_COLUMNS}}
-        if row.get("status") == "ok":
-            _, p = job.point(row["point_id"])
-            p = dict(p)
-            p[vary] = row["value"]
+    out = []
+    for pts, cols in blocks:
+        cols = dict(cols)
+        st = cols["status"]
+        if isinstance(st, str):  # no crossing, or the line's model failed: no Hopf columns
+            cols.update({c: (math.nan if c != "hopf_type" else "") for c in HOPF_COLUMNS})
+            out.append((pts, cols))
+            continue
+        m = len(pts)
+        st, msg = list(st), list(cols["message"])
+        H = {c: np.full(m, math.nan) for c in HOPF_COLUMNS if c != "hopf_type"}
+        H["hopf_type"] = np.full(m, "", dtype=object)
+        _, pb = job.point(lo)
+        for j in range(m):
+            if st[j] != "ok":
+                continue
+            p = dict(pb)
+            p[vary] = cols["value"][j]
             try:
                 asm = variants.get(p)
-                out.update(_one(job, asm, p, vary, row["whirl_frequency_hz"], span,
-                                pt.point_options(job, p), excl, fd_step))
+                one = _one(job, asm, p, vary, cols["whirl_frequency_hz"][j], span,
+                           pt.point_options(job, p), excl, fd_step)
             except (RotordynError, ArithmeticError, ValueError,
                     np.linalg.LinAlgError) as exc:
-                out.update(status="error", message=f"l1: {type(exc).__name__}: {exc}")
-        rows.append(out)
+                st[j], msg[j] = "error", f"l1: {type(exc).__name__}: {exc}"
+                continue
+            for c in HOPF_COLUMNS:
+                H[c][j] = one[c]
+        cols.update(H, status=np.array(st, dtype=object), message=np.array(msg, dtype=object))
+        out.append((pts, cols))
+    return out
+

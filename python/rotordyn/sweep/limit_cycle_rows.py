@@ -1,13 +1,13 @@
 """The ``limit_cycle`` sweep analysis (issue 19): along each grid line of the varied axis
 (``options.vary``: p_c, speed or a_y; the other axes fixed), the Hopf points of the line
-(the ``hopf`` analysis's rows: :func:`rotordyn.sweep.hopf_rows.hopf_line`), the limit-cycle
-branch born at each one continued along the line by pseudo-arclength continuation through
-folds (:func:`rotordyn.analysis.hopf.hopf_cycle`, :func:`rotordyn.continuation`), and at
-every grid value the branch passes the cycle there by shooting (:func:`rotordyn.
-periodic_orbit`, started from the branch interpolated linearly between its two points that
-bracket the value): amplitude, period, whirl frequency, the critical Floquet multiplier and
-stability, and whether the cycle coexists with a linearly stable equilibrium (bistable:
-a stable cycle there).
+(the ``hopf`` analysis's blocks: :func:`rotordyn.sweep.hopf_rows.hopf_line_blocks`), the
+limit-cycle branch born at each one continued along the line by pseudo-arclength
+continuation through folds (:func:`rotordyn.analysis.hopf.hopf_cycle`,
+:func:`rotordyn.continuation`), and at every grid value the branch passes the cycle there
+by shooting (:func:`rotordyn.periodic_orbit`, started from the branch interpolated linearly
+between its two points that bracket the value): amplitude, period, whirl frequency, the
+critical Floquet multiplier and stability, and whether the cycle coexists with a linearly
+stable equilibrium (bistable: a stable cycle there).
 
 Rows (one schema, ``record`` tells them apart):
 
@@ -51,7 +51,9 @@ from rotordyn.analysis.periodic import periodic_orbit
 from rotordyn.analysis.transient import transient
 from rotordyn.errors import RotordynError
 from rotordyn.sweep import points as pt
-from rotordyn.sweep.hopf_rows import HOPF_COLUMNS, hopf_line
+from rotordyn.sweep.columns import merge
+from rotordyn.sweep.hopf_rows import HOPF_COLUMNS, hopf_line_blocks
+from rotordyn.sweep.lines import block_rows
 
 #: statuses of limit-cycle rows beyond the common vocabulary
 CYCLE_STATUS = ["no_cycle", "failed"]
@@ -327,31 +329,36 @@ def _short_of_the_end(br, xs) -> bool:
     return p < max(xs) if up else p > min(xs)
 
 
-def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
-    """The rows of the line [lo, hi) (module docstring)."""
-    hrows, scan = [], {}
+def limit_cycle_line(job, variants, lo, hi, at, asms):
+    """The blocks of the line [lo, hi) (module docstring; its first point at chunk-local
+    index ``at``): the Hopf blocks of the line (:func:`~rotordyn.sweep.hopf_rows.
+    hopf_line_blocks`) with the cycle columns null, then one single-row block per cycle row
+    (each costs a shooting solve), joined per run of points (:func:`~rotordyn.sweep.columns.
+    merge`)."""
+    scan = {}
     # the hopf rows without the shooting's ``tol``: the threshold scan, the crossings and
     # l1 read ``tol`` as the equilibrium's tolerance (default 1e-10, as in a hopf sweep)
     hjob = copy.copy(job)
     hjob.options = {k: x for k, x in job.options.items() if k != "tol"}
-    hopf_line(hjob, variants, chunk_id, lo, hi, hrows, scan)
+    line_asms = [None] * (hi - lo)
+    hblocks = hopf_line_blocks(hjob, variants, lo, hi, 0, line_asms, scan)
+    asms[at:at + hi - lo] = line_asms
+    hrows: list = []
+    block_rows(job, 0, lo, hi, line_asms, hblocks, hrows)
     nan_cols = {c: math.nan for c in CYCLE_COLUMNS}
     nan_cols.update(cycle=None, bearing=None, critical_type=None, stable=None,
                     equilibrium_stable=None, coexists_with_stable_equilibrium=None,
                     bistable=None, newton_iterations=None)
-    for r in hrows:
-        rows.append({**nan_cols, **r, "record": "hopf"})
+    blocks = [(np.asarray(pts) + at, {**nan_cols, **cols, "record": "hopf"})
+              for pts, cols in hblocks]
     vary = job.options["vary"]
     idx0, p0 = job.point(lo)
     try:
         asm = variants.get(p0)
     except RotordynError as exc:
-        for pid in range(lo, hi):
-            idx, p = job.point(pid)
-            rows.append(pt.fail_row({**nan_cols, **pt.common_row(job, pid, chunk_id, idx, p,
-                                                                  None), "record": "cycle"},
-                                    "failed", str(exc)))
-        return
+        blocks.append((at + np.arange(hi - lo), {**nan_cols, "record": "cycle",
+                                                 "status": "failed", "message": str(exc)}))
+        return blocks
     pin_assembled(asm)
     pts = [job.point(pid) for pid in range(lo, hi)]
     xs = [p[vary] for _, p in pts]
@@ -394,9 +401,10 @@ def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
             branches.append((hcols, h, br))
 
     n = asm.n
+    asms[at:at + hi - lo] = [asm] * (hi - lo)
     for k, (idx, p) in enumerate(pts):
-        row = {**nan_cols, **pt.common_row(job, lo + k, chunk_id, idx, p, asm),
-               "record": "cycle"}
+        row = {**nan_cols, "record": "cycle"}
+        here = np.array([at + k])
         y = float(ys[k])
         eq_st = bool(y < 0) if math.isfinite(y) else None
         row.update(max_real_1_per_s=y, equilibrium_stable=eq_st, bearing=name)
@@ -416,12 +424,12 @@ def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
         found.sort(key=lambda t: t[1]["amplitude_m"])
         bistable = bool(eq_st) and any(c["stable"] for _, c in found)
         for j, (hcols, cols) in enumerate(found):
-            rows.append({**row, **hcols, **cols, "cycle": j + 1,
-                         "coexists_with_stable_equilibrium": bool(eq_st),
-                         "bistable": bistable, "status": "ok", "message": ""})
+            blocks.append((here, {**row, **hcols, **cols, "cycle": j + 1,
+                                  "coexists_with_stable_equilibrium": bool(eq_st),
+                                  "bistable": bistable, "status": "ok", "message": ""}))
         for hcols, msg in failed:
-            rows.append({**row, **hcols, "cycle": 0, "bistable": bistable,
-                         "status": "failed", "message": msg})
+            blocks.append((here, {**row, **hcols, "cycle": 0, "bistable": bistable,
+                                  "status": "failed", "message": msg}))
         if not found and not failed:
             if problems:
                 st, msg = "failed", "; ".join(problems)
@@ -429,5 +437,6 @@ def limit_cycle_line(job, variants, chunk_id, lo, hi, rows):
                 st, msg = "no_cycle", "no Hopf point on the line: no cycle branch"
             else:
                 st, msg = "no_cycle", "no cycle branch passes this value"
-            rows.append({**row, "cycle": 0, "bistable": False,
-                         "status": st, "message": msg})
+            blocks.append((here, {**row, "cycle": 0, "bistable": False,
+                                  "status": st, "message": msg}))
+    return merge(blocks)

@@ -195,14 +195,12 @@ def unbalance_columns(res, speeds, stations, status, msg) -> dict:
         "message": np.repeat(np.array(msg, dtype=object), ns)}
 
 
-def threshold_line_rows(job, variants, chunk_id, lo, hi, rows, scan=None):
-    """:func:`threshold_line` as one dict per row appended to ``rows`` (each with its point's
-    identity columns), for analyses that build on the crossings row by row (``hopf``,
-    ``limit_cycle``)."""
+def block_rows(job, chunk_id, lo, hi, asms, blocks, rows):
+    """The rows of ``blocks`` over the points [lo, hi) (chunk-local indices from 0, models
+    ``asms``) as dicts appended to ``rows``, identity columns included (for the analyses
+    that build on crossings row by row)."""
     from rotordyn.sweep.columns import identity
 
-    asms = [None] * (hi - lo)
-    blocks = threshold_line(job, variants, lo, hi, 0, asms, scan=scan)
     ident = identity(job, chunk_id, np.arange(lo, hi), asms)
     for pts, cols in blocks:
         for j, k in enumerate(pts):

@@ -6,7 +6,6 @@ identity columns and failure rows every analysis's rows start from (used by :mod
 from __future__ import annotations
 
 import copy
-import math
 
 import numpy as np
 
@@ -160,47 +159,9 @@ def stable_modes(lam) -> np.ndarray:
     return mode_stable(lam)
 
 
-def same_line(prev, idx, pos) -> bool:
-    """Consecutive points that differ only along the innermost varying axis."""
-    return prev is not None and prev[:pos] == idx[:pos] and prev[pos + 1:] == idx[pos + 1:]
-
-
-def common_row(job, pid, chunk_id, idx, p, asm):
-    row = {"point_id": pid, "chunk_id": chunk_id}
-    for (a, _), i in zip(job.axes.items(), idx):
-        row[f"i_{a}"] = i
-    row.update(p)
-    row.setdefault("speed_hz", 50.0)
-    row.setdefault("chamber_pressure_pa", 0.0)
-    if "config_ay_m" not in row:
-        bc = ref_bearing(asm) if asm is not None else None
-        row["config_ay_m"] = (job_model_ay(asm, bc) if bc is not None else math.nan)
-    return row
-
-
 def job_model_ay(asm, bc):
+    """The configuration a_y (m) of the model's bearing ``bc``."""
     return float(asm.system.bearings[bc.index].config_ay_m)
-
-
-def fail_row(row, status, message):
-    return {**row, "status": status, "message": message}
-
-
-def points(job, variants, chunk_id, lo, hi, pids=None):
-    """Yield (row, p, asm, opts, same_line, error) per point; a model-variant error is
-    yielded as asm=None with its message."""
-    prev = None
-    for pid in (range(lo, hi) if pids is None else pids):
-        idx, p = job.point(pid)
-        try:
-            asm = variants.get(p)
-            err = None
-        except RotordynError as exc:
-            asm, err = None, str(exc)
-        row = common_row(job, pid, chunk_id, idx, p, asm)
-        yield row, p, asm, point_options(job, p), same_line(prev, idx, job.line_pos), err
-        prev = idx
-
 
 
 def _model_key(k: str) -> bool:

@@ -90,12 +90,17 @@ def outputs(F64, BOOL, cat):
     return cols
 
 
-def robust_rows(job, variants, chunk_id, lo, hi, rows):
-    """One row per point (module docstring)."""
+def robust_blocks(job, variants, chunk_id, pids, asms):
+    """One row per point (module docstring), as columnar blocks: the closed-loop verdict and
+    margins of a point are a Python computation around per-point core calls (equilibrium,
+    linearisation, the closed loop's eigenvalues and frequency responses) with no batch in
+    the core, so the chunk loops over its points; each point's columns are one block, joined
+    into one block per run of points (:func:`rotordyn.sweep.columns.merge`)."""
     from rotordyn._common.status import CONVERGED
     from rotordyn.analysis.equilibrium import equilibrium
     from rotordyn.errors import ConvergenceError
-    from rotordyn.sweep.points import STATUS, fail_row, points, ref_bearing
+    from rotordyn.sweep.columns import merge
+    from rotordyn.sweep.points import STATUS, point_list, ref_bearing
 
     opts = job.options
     k = build_controller(opts["controller"])
@@ -109,9 +114,11 @@ def robust_rows(job, variants, chunk_id, lo, hi, rows):
     pade = int(opts.get("pade_order", 6))
     cont = bool(opts.get("continuation", True))
     r_prev = None
-    for row, p, asm, _, line, err in points(job, variants, chunk_id, lo, hi):
+    blocks = []
+    for n, (p, asm, _, line, err) in enumerate(point_list(job, variants, pids, asms)):
+        at = np.array([n])
         if err:
-            rows.append(fail_row(row, "error", err))
+            blocks.append((at, {"status": "error", "message": err}))
             r_prev = None
             continue
         f = p.get("speed_hz", 50.0)
@@ -136,10 +143,11 @@ def robust_rows(job, variants, chunk_id, lo, hi, rows):
         if isinstance(failure, ConvergenceError):
             e = equilibrium(asm.system, f, pc, ay, warm_start=False, **eq)
             st = e.status if e.status in STATUS and e.status not in CONVERGED else "error"
-            rows.append(fail_row(row, st, f"no closed-loop verdict: {failure}"))
+            blocks.append((at, {"status": st, "message": f"no closed-loop verdict: {failure}"}))
             continue
         if failure is not None:
-            rows.append(fail_row(row, "error", f"{type(failure).__name__}: {failure}"))
+            blocks.append((at, {"status": "error",
+                                "message": f"{type(failure).__name__}: {failure}"}))
             continue
         if pl.info.get("equilibrium_status") == "ok":
             r_prev = pl.info.get("equilibrium_r")
@@ -147,9 +155,11 @@ def robust_rows(job, variants, chunk_id, lo, hi, rows):
         r = pl.info.get("equilibrium_r")
         jx = float(r[bc.jx]) if bc is not None and r is not None else math.nan
         jy = float(r[bc.jy]) if bc is not None and r is not None else math.nan
-        rows.append({**row, "journal_x_m": jx, "journal_y_m": jy, **eigen_columns(lam),
-                     **margin_columns(m),
-                     "status": pl.info.get("equilibrium_status", "ok"), "message": msg})
+        blocks.append((at, {"journal_x_m": jx, "journal_y_m": jy, **eigen_columns(lam),
+                            **margin_columns(m),
+                            "status": pl.info.get("equilibrium_status", "ok"),
+                            "message": msg}))
+    return merge(blocks)
 
 
 def check_model(system, options) -> None:

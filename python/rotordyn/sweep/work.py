@@ -10,22 +10,19 @@ solver error) is a row with ``status``/``message``; the chunk goes on.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pyarrow as pa
 
-from rotordyn._common import validate as v
-from rotordyn.analysis.thermal import system_thermal_equilibrium
-from rotordyn.analysis.transient import transient
-from rotordyn.operation import SpeedProfile
 from rotordyn.sweep.blocks import boundary_blocks, eq_blocks, stab_blocks
 from rotordyn.sweep.columns import block_table, identity
+from rotordyn.sweep.hopf_rows import hopf_line_blocks
 from rotordyn.sweep.lines import threshold_line, unbalance_line
-from rotordyn.errors import RotordynError
-from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, fail_row, operating,
-                                   points, ref_bearing, solve_equilibrium)
-from rotordyn.sweep.robust_rows import outputs as robust_outputs, robust_rows
+from rotordyn.sweep.point_blocks import runup_blocks, thermal_blocks, waterfall_blocks
+from rotordyn.sweep.points import STATUS, Variants, base_system
+from rotordyn.sweep.robust_rows import outputs as robust_outputs, robust_blocks
+from rotordyn.sweep.thermal_rows import (stab_blocks as thermal_stab_blocks,
+                                         unbalance_blocks as thermal_unbalance_blocks)
+
 
 WHIRL = ["forward", "backward", "planar"]
 KIND = ["rotor", "sleeve"]
@@ -86,6 +83,7 @@ THERMAL_ANALYSES = ("stability", "campbell", "unbalance")
 
 
 def thermal_on(job) -> bool:
+    """Whether ``job`` runs each point at its own thermal equilibrium (``options.thermal``)."""
     return job.analysis in THERMAL_ANALYSES and job.options.get("thermal") is not None
 
 
@@ -168,158 +166,24 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     boundary) as a table with :func:`schema`."""
     base = base_system(job.model_toml)
     variants = Variants(base, job.model_toml)
-    if pids is None and thermal_on(job):  # each point at its own thermal equilibrium
-        from rotordyn.sweep import thermal_rows
-
-        rows: list[dict] = []
-        (thermal_rows.unbalance_rows if job.analysis == "unbalance" else
-         thermal_rows.stab_rows)(job, variants, chunk_id, lo, hi, rows)
-        return to_table(job, rows)
-    if pids is not None or job.analysis in _BLOCKS:
-        pl = list(range(lo, hi)) if pids is None else list(pids)
-        asms: list = [None] * len(pl)
-        eqs: list = []
-        if pids is not None:
-            blocks = boundary_blocks(job, variants, chunk_id, pl, asms,
-                                     equilibria=eqs if job.return_equilibria else None)
-        else:
-            blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
-        t = block_table(job, schema(job.analysis, list(job.axes)), categories(job.analysis),
-                        identity(job, chunk_id, pl, asms), blocks)
-        if eqs:  # the points' equilibria, for the next refinement level's starts
-            t = t.replace_schema_metadata({**(t.schema.metadata or {}),
-                                           EQUILIBRIA: pack_equilibria(eqs[0])})
-        return t
-    rows: list[dict] = []
-    _ANALYSIS[job.analysis](job, variants, chunk_id, lo, hi, rows)
-    return to_table(job, rows)
-
-
-def _thermal_rows(job, variants, chunk_id, lo, hi, rows):
-    """Effective-temperature system equilibria (the model's ``[thermal]``, every field of
-    which is an axis: ``thermal.supply_temperature_c``, ``thermal.oil.nu1_mm2_s``,
-    ``thermal.films.<bearing>.carry_over``...), one row per plain journal bearing; each point
-    starts cold (same answer as a direct call)."""
-    cols = [k for k in OUTPUTS["thermal"] if k not in ("bearing", "iterations")]
-    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
-        if err:
-            rows.append(fail_row(row, "error", err))
-            continue
-        try:
-            f, pc, _ = operating(asm, p)
-            r = system_thermal_equilibrium(asm.system, speed_hz=f, chamber_pressure_pa=pc,
-                                           tol_k=opts.get("tol_k", 1e-6))
-        except (RotordynError, ArithmeticError, ValueError) as exc:
-            rows.append(fail_row(row, "error", str(exc)))
-            continue
-        ok = r.status in CONVERGED
-        for k, name in enumerate(r.bearing_names):
-            vals = {c: float(getattr(r, c)[k]) if ok else math.nan for c in cols}
-            rows.append({**row, "bearing": name, **vals, "iterations": int(r.iterations),
-                         "status": r.status if r.status in STATUS else "error",
-                         "message": r.message})
-
-
-def _wf_rows(job, variants, chunk_id, lo, hi, rows):
-    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
-        if err:
-            rows.append(fail_row(row, "error", err))
-            continue
-        try:
-            f, pc, a = operating(asm, p)
-            v.positive("speed_hz", f)
-            r0 = _start(asm, f, pc, a)
-            if isinstance(r0, tuple):
-                rows.append(fail_row(row, *r0))
-                continue
-            revs = int(opts.get("revolutions", 60))
-            spr = int(opts.get("samples_per_revolution", 64))
-            ub = [tuple(u) for u in opts.get("unbalances", [])]
-            tr = transient(asm.system, revs / f, f, pc, p.get("config_ay_m"), r0=r0,
-                              unbalances=ub, n_out=revs * spr + 1,
-                              rtol=float(opts.get("rtol", 1e-6)),
-                              rub_fraction=float(opts.get("rub_fraction", 1e-3)))
-        except (RotordynError, ArithmeticError, ValueError) as exc:
-            rows.append(fail_row(row, "error", f"{type(exc).__name__}: {exc}"))
-            continue
-        if tr.status not in CONVERGED:  # "contact": integrated from a contact equilibrium
-            rows.append(fail_row(row, tr.status if tr.status in STATUS else "error", tr.message))
-            continue
-        freq, ax = tr.spectrum(last_fraction=0.5, axis="x")
-        _, ay_ = tr.spectrum(last_fraction=0.5, axis="y")
-        # max_frequency_hz: every speed's spectrum over the same span (a waterfall's traces
-        # then line up); else up to max_harmonic × speed
-        fmax = opts.get("max_frequency_hz")
-        keep = freq <= (float(fmax) if fmax is not None
-                        else float(opts.get("max_harmonic", 4.0)) * f)
-        for fr, a1, a2 in zip(freq[keep], ax[keep], ay_[keep]):
-            rows.append({**row, "freq_hz": float(fr), "amplitude_x_m": float(a1),
-                         "amplitude_y_m": float(a2), "order": float(fr / f),
-                         "status": tr.status, "message": tr.message})
-
-
-def _start(asm, f, pc, a):
-    """The cold-started equilibrium a transient point starts from (not the thread's last
-    one: the rows must not depend on what ran before), or (status, message)."""
-    e = solve_equilibrium(asm, f, pc, a, None, {})
-    if e.status not in CONVERGED:
-        return (e.status if e.status in STATUS else "error",
-                f"no equilibrium to start from: {e.message}")
-    return np.asarray(e.r)
-
-
-def _runup_rows(job, variants, chunk_id, lo, hi, rows):
-    """A nonlinear run-up (or coast-down) per point: Ω(t) ramps from start_hz to stop_hz at
-    rate_hz_per_s (rotordyn.control.SpeedProfile); one row per revolution with its mean
-    speed (in ``speed_hz``), the half peak-to-peak journal motion of the active (or first)
-    bearing and the smallest film over that revolution."""
-    for row, p, asm, opts, line, err in points(job, variants, chunk_id, lo, hi):
-        if err:
-            rows.append(fail_row(row, "error", err))
-            continue
-        try:
-            _, pc, a = operating(asm, {**p, "speed_hz": opts["start_hz"]})
-            f0, f1, rate = opts["start_hz"], opts["stop_hz"], opts["rate_hz_per_s"]
-            r0 = _start(asm, f0, pc, a)
-            if isinstance(r0, tuple):
-                rows.append(fail_row(row, *r0))
-                continue
-            prof = SpeedProfile.ramp(f0, f1, rate)
-            T = abs(f1 - f0) / rate
-            spr = int(opts.get("samples_per_revolution", 32))
-            revs = (f0 + f1) / 2 * T
-            tr = transient(asm.system, T, chamber_pressure_pa=pc,
-                              config_ay_m=p.get("config_ay_m"), speed=prof, r0=r0,
-                              unbalances=[tuple(u) for u in opts["unbalances"]],
-                              n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)),
-                              rub_fraction=float(opts.get("rub_fraction", 1e-3)))
-        except (RotordynError, ArithmeticError, ValueError) as exc:
-            rows.append(fail_row(row, "error", f"{type(exc).__name__}: {exc}"))
-            continue
-        bc = ref_bearing(asm)
-        k = bc.index if bc else 0
-        # the rows reached (a failed run, e.g. "rub", leaves NaN rows after it stopped)
-        done = np.isfinite(np.asarray(tr.angle_rad)) & np.all(np.isfinite(tr.r), axis=1)
-        rev = np.floor(np.asarray(tr.angle_rad)[done] / (2 * np.pi)).astype(np.int64)
-        x, y = np.asarray(tr.journal_x_m)[done, k], np.asarray(tr.journal_y_m)[done, k]
-        h = np.asarray(tr.h_min_m)[done, k]
-        sp, t = np.asarray(tr.speed_hz_t)[done], np.asarray(tr.t)[done]
-        n_rows = len(rows)
-        revs_reached = np.unique(rev)
-        if tr.status not in CONVERGED and revs_reached.size:
-            revs_reached = revs_reached[:-1]  # a stopped run's last revolution is partial
-        for n_rev in revs_reached:
-            m = rev == n_rev
-            if m.sum() < 2:
-                continue
-            rows.append({**row, "speed_hz": float(sp[m].mean()), "revolution": int(n_rev),
-                         "time_s": float(t[m].mean()),
-                         "amplitude_x_m": float(np.ptp(x[m]) / 2),
-                         "amplitude_y_m": float(np.ptp(y[m]) / 2), "h_min_m": float(h[m].min()),
-                         "status": tr.status if tr.status in STATUS else "error",
-                         "message": tr.message})
-        if tr.status != "ok" and len(rows) == n_rows:  # stopped before one whole revolution
-            rows.append(fail_row(row, tr.status if tr.status in STATUS else "error", tr.message))
+    pl = list(range(lo, hi)) if pids is None else list(pids)
+    asms: list = [None] * len(pl)
+    eqs: list = []
+    if pids is not None:
+        blocks = boundary_blocks(job, variants, chunk_id, pl, asms,
+                                 equilibria=eqs if job.return_equilibria else None)
+    elif thermal_on(job):  # each point at its own thermal equilibrium
+        blocks = (thermal_unbalance_blocks if job.analysis == "unbalance" else
+                  thermal_stab_blocks)(job, variants, chunk_id, pl, asms)
+    else:
+        blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
+    t = block_table(job, schema(job.analysis, list(job.axes), thermal_on(job)),
+                    categories(job.analysis),
+                    identity(job, chunk_id, pl, asms), blocks)
+    if eqs:  # the points' equilibria, for the next refinement level's starts
+        t = t.replace_schema_metadata({**(t.schema.metadata or {}),
+                                       EQUILIBRIA: pack_equilibria(eqs[0])})
+    return t
 
 
 def _lines(job, lo, hi):
@@ -327,10 +191,6 @@ def _lines(job, lo, hi):
     n = job.shape[-1]
     for s in range(lo, hi, n):
         yield s, min(s + n, hi)
-
-
-_ANALYSIS = {"thermal": _thermal_rows, "waterfall": _wf_rows, "run-up": _runup_rows,
-             "robust": robust_rows}
 
 
 def _threshold_blocks(job, variants, chunk_id, pids, asms):
@@ -345,64 +205,25 @@ def _unbalance_blocks(job, variants, chunk_id, pids, asms):
             for b in unbalance_line(job, variants, s, e, s - lo, asms)]
 
 
-# Analyses whose chunk is built as columnar blocks (:mod:`.columns`, :mod:`.blocks`).
+def _hopf_blocks(job, variants, chunk_id, pids, asms):
+    lo = pids[0] if len(pids) else 0
+    return [b for s, e in _lines(job, lo, lo + len(pids))
+            for b in hopf_line_blocks(job, variants, s, e, s - lo, asms)]
+
+
+# Every analysis's chunk as columnar blocks (:mod:`.columns`; docs/sweeps.md, the audit).
 _BLOCKS = {"equilibrium": eq_blocks, "stability": stab_blocks, "campbell": stab_blocks,
-           "threshold": _threshold_blocks, "unbalance": _unbalance_blocks}
+           "threshold": _threshold_blocks, "unbalance": _unbalance_blocks,
+           "hopf": _hopf_blocks, "thermal": thermal_blocks, "waterfall": waterfall_blocks,
+           "run-up": runup_blocks, "robust": robust_blocks}
 
 
-def _hopf_rows(job, variants, chunk_id, lo, hi, rows):
-    from rotordyn.sweep.hopf_rows import hopf_line
-
-    for s, e in _lines(job, lo, hi):
-        hopf_line(job, variants, chunk_id, s, e, rows)
-
-
-_ANALYSIS["hopf"] = _hopf_rows
-
-
-def _limit_cycle_rows(job, variants, chunk_id, lo, hi, rows):
+def _limit_cycle_blocks(job, variants, chunk_id, pids, asms):
     from rotordyn.sweep.limit_cycle_rows import limit_cycle_line
 
-    for s, e in _lines(job, lo, hi):
-        limit_cycle_line(job, variants, chunk_id, s, e, rows)
+    lo = pids[0] if len(pids) else 0
+    return [b for s, e in _lines(job, lo, lo + len(pids))
+            for b in limit_cycle_line(job, variants, s, e, s - lo, asms)]
 
 
-_ANALYSIS["limit_cycle"] = _limit_cycle_rows
-
-
-def to_table(job: Job, rows: list[dict]) -> pa.Table:
-    """Rows (dicts) to the fixed schema: missing values are nulls, categoricals use the fixed
-    category lists so every part has the same dictionary."""
-    sch = schema(job.analysis, list(job.axes), thermal_on(job))
-    cats = categories(job.analysis)
-    cols = []
-    sizes = [r.get("_n", 1) for r in rows]
-    n = sum(sizes)
-    for fld in sch:
-        name = fld.name
-        if name == "sweep_id":
-            cols.append(pa.DictionaryArray.from_arrays(
-                pa.array(np.zeros(n, dtype=np.int8)), pa.array([job.sweep_id])))
-            continue
-        vals: list = []
-        for r, k in zip(rows, sizes):
-            x = r.get(name)
-            if isinstance(x, np.ndarray):
-                vals.extend(x.tolist())
-            elif k == 1:
-                vals.append(x)
-            else:
-                vals.extend([x] * k)
-        if name in cats:
-            code = {c: i for i, c in enumerate(cats[name])}
-            codes = pa.array([None if x is None else code[x] for x in vals], type=pa.int8())
-            cols.append(pa.DictionaryArray.from_arrays(codes, pa.array(cats[name])))
-        elif name == "message":
-            cols.append(pa.array(["" if x is None else str(x) for x in vals], type=STR))
-        else:
-            cols.append(pa.array(vals, type=fld.type, from_pandas=False))
-    if job.meta:
-        import json
-
-        sch = sch.with_metadata({b"rotordyn": json.dumps(job.meta, sort_keys=True).encode()})
-    return pa.Table.from_arrays(cols, schema=sch)
+_BLOCKS["limit_cycle"] = _limit_cycle_blocks
