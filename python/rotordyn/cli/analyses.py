@@ -369,6 +369,21 @@ def _thermal_json(t):
             "max_temperature_c": t.max_temperature_c, "power_loss_w": t.power_loss_w}
 
 
+def _thermal_summary(speeds, thermal) -> None:
+    """Per speed at its own thermal equilibrium: the hottest film and the power loss
+    (stderr; nothing for isothermal films)."""
+    if not thermal:
+        return
+    print("each speed at its own thermal equilibrium (field frozen):", file=sys.stderr)
+    for f, t in zip(speeds, thermal):
+        if t is None or t.status not in CONVERGED:
+            print(f"  {f:g} Hz: thermal equilibrium failed"
+                  + (f" ({t.status}: {t.message})" if t is not None else ""), file=sys.stderr)
+            continue
+        print(f"  {f:g} Hz: T_max {float(np.max(t.max_temperature_c)):.4g} degC, "
+              f"{float(np.sum(t.power_loss_w)):.4g} W", file=sys.stderr)
+
+
 def _cmd_stability(args) -> int:
     s = models.load(args.model)
     st = analysis.stability(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
@@ -420,9 +435,12 @@ def _cmd_campbell(args) -> int:
                      "critical_speeds": crit.to_dict("records"),
                      "speeds_hz": c.speeds_hz, "frequencies_hz": c.frequencies_hz,
                      "point_status": list(c.point_status) if c.point_status is not None
-                     else None}))
+                     else None}
+                    | ({"thermal": [_thermal_json(t) for t in c.thermal]} if c.thermal
+                       else {})))
     else:
         print(table_text(crit))
+        _thermal_summary(c.speeds_hz, c.thermal)
     if args.plot:
         ax = c.plot()
         if args.max_freq_hz is not None:
@@ -464,11 +482,14 @@ def _cmd_unbalance(args) -> int:
     peaks = {int(st): u.peaks(st).to_dict("records") for st in u.stations}
     if args.json:
         print(json_text({"stations": list(u.stations), "peaks": peaks,
-                     "response": u.to_frame().to_dict("list")}))
+                     "response": u.to_frame().to_dict("list")}
+                    | ({"thermal": [_thermal_json(t) for t in u.thermal]} if u.thermal
+                       else {})))
     else:
         for st in u.stations:
             print(f"station {st}:")
             print(table_text(u.peaks(st)))
+        _thermal_summary(u.speeds_hz, u.thermal)
     if args.plot:  # one figure per output station (FIG_station<k>.png when several)
         from pathlib import Path
 

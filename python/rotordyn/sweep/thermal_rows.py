@@ -8,11 +8,12 @@ numbers of the direct calls ``rotordyn.stability(..., thermal=...)``,
 so there is no batch: one block per point (its modes or its stations), joined per run of
 points (:func:`rotordyn.sweep.columns.merge`), no dict per row.
 
-Each row carries the point's thermal outputs (:data:`THERMAL_COLUMNS`): per film (list
-columns, in the order of ``film``) the effective and maximum temperature and the power loss,
-and their summaries. A point whose thermal equilibrium fails is one row with that status and
-its thermal columns (NaN), never linearised. The rows are those of the former dict-per-row
-code (tests/sweep_thermal_rows_reference.py, tests/test_thermal_sweep.py).
+Each row carries the point's thermal outputs
+(:data:`rotordyn.results.thermal.THERMAL_POINT_COLUMNS`): per film (list columns, in the order
+of ``film``) the effective and maximum temperature and the power loss, and their summaries. A
+point whose thermal equilibrium fails is one row with that status and its thermal columns
+(NaN), never linearised. The rows are those of the former dict-per-row code
+(tests/sweep_thermal_rows_reference.py, tests/test_thermal_sweep.py).
 """
 
 from __future__ import annotations
@@ -25,36 +26,25 @@ from rotordyn.analysis.thermal_dynamics import thermal_point
 from rotordyn.errors import RotordynError
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.results.modes import settled_real
+from rotordyn.results.thermal import THERMAL_POINT_COLUMNS, thermal_point_values
 from rotordyn.sweep.columns import merge
 from rotordyn.sweep.points import STATUS, operating, point_list, ref_bearing, stable_modes
 from rotordyn.sweep.tracking import track_line
 
-# extra output columns of a thermal stability / Campbell / unbalance sweep
-THERMAL_COLUMNS = ("film", "film_effective_temperature_c", "film_max_temperature_c",
-                   "film_power_loss_w", "max_temperature_c", "power_loss_w",
-                   "thermal_iterations")
-_LISTS = THERMAL_COLUMNS[:4]
+_LISTS = THERMAL_POINT_COLUMNS[:4]
 _CATCH = (RotordynError, ArithmeticError, ValueError)
 
 
 def thermal_columns(t, m: int = 1) -> dict:
-    """The thermal outputs of one point (a SystemThermalResult; NaN where it failed) for a
-    block of ``m`` rows: the per-film lists as (m,) object arrays of that list, the summaries
-    as scalars."""
-    ok = t.status in CONVERGED
-    nan = [math.nan] * len(t.bearing_names)
-    te = [float(x) for x in t.effective_temperature_c] if ok else nan
-    tm = [float(x) for x in t.max_temperature_c] if ok else nan
-    pw = [float(x) for x in t.power_loss_w] if ok else nan
-    out = {}
-    for name, val in zip(_LISTS, (list(t.bearing_names), te, tm, pw)):
+    """The thermal outputs of one point (a SystemThermalResult; NaN where it failed;
+    :func:`rotordyn.results.thermal.thermal_point_values`) for a block of ``m`` rows: the
+    per-film lists as (m,) object arrays of that list, the summaries as scalars."""
+    out = thermal_point_values(t)
+    for name in _LISTS:
         col = np.empty(m, dtype=object)
         for i in range(m):  # one list per row (not a 2-D array)
-            col[i] = val
+            col[i] = out[name]
         out[name] = col
-    out.update(max_temperature_c=max(tm) if ok else math.nan,
-               power_loss_w=float(sum(pw)) if ok else math.nan,
-               thermal_iterations=int(t.iterations))
     return out
 
 

@@ -76,6 +76,7 @@ OUTPUTS["limit_cycle"] = {"record": _cat(["hopf", "cycle"]), **OUTPUTS["hopf"],
 
 # a stability / Campbell / unbalance sweep with ``options.thermal`` (:mod:`.thermal_rows`):
 # the point's thermal outputs, per film (lists in the order of ``film``) and summarised
+# (rotordyn.results.thermal.THERMAL_POINT_COLUMNS)
 THERMAL_OUTPUTS = {"film": pa.list_(STR), "film_effective_temperature_c": pa.list_(F64),
                    "film_max_temperature_c": pa.list_(F64), "film_power_loss_w": pa.list_(F64),
                    "max_temperature_c": F64, "power_loss_w": F64, "thermal_iterations": I64}
