@@ -6,8 +6,8 @@ compressor on two plain journal bearings (tests/data/models/compressor_plain_the
 Expectation: the films run hotter than the supply oil (T_eff 61-77 °C at 100-150 Hz), so
 μ(T_eff) lies below μ(45 °C) in both bearings. For this flexible rotor the isothermal
 threshold speed *rises* with μ (measured here as the premise: 122.7 Hz at 0.008 Pa s,
-124.5 Hz at 0.012 Pa s, 127.0 Hz at 0.0224 Pa s; the film's damping falls with μ faster than
-its growing eccentricity stabilises it), so the thermal threshold must lie *below* the
+124.5 Hz at 0.012 Pa s, 127.0 Hz at 0.0224 Pa s; docs/calibration/compressor_thermal_dynamics.py),
+so the thermal threshold must lie *below* the
 isothermal one at the supply temperature, and the stability margin near the threshold is
 smaller (a less negative max Re λ). That is not the rigid-rotor rule "thinner oil, more
 eccentric, more stable": the test checks the direction this rotor's own isothermal trend
