@@ -144,3 +144,22 @@ def test_failed_thermal_equilibrium_is_a_status_row():
     assert list(c.point_status) == ["error", "error"] and np.isnan(c.eigenvalues).all()
     with pytest.raises(rd.errors.ConvergenceError, match="viscosity law"):
         rd.stability(s, 150.0, thermal=dict(supply_temperature_c=195.0))
+
+
+def test_model_level_refusals_raise_not_rows():
+    """A thermal model that does not apply to the bearings (the effective model on tilting
+    pads) or a zero speed is bad input: InputError naming the field, not an ``error`` row per
+    speed (before: a Campbell diagram of NaN rows)."""
+    pads = _pads()
+    eff = dataclasses.replace(pads, thermal=dataclasses.replace(pads.thermal, model="effective"))
+    with pytest.raises(InputError, match="model"):
+        rd.campbell(eff, [100.0, 150.0], thermal=True)
+    with pytest.raises(InputError, match="model"):
+        rd.unbalance_response(eff, [(3, 1e-4, 0.0)], [100.0, 150.0], thermal=True)
+    with pytest.raises(InputError, match="model"):
+        rd.stability(eff, 100.0, thermal=True)
+    s = _plain()
+    with pytest.raises(InputError, match="speeds_hz"):
+        rd.campbell(s, [0.0, 100.0], thermal=True)
+    with pytest.raises(InputError, match="speeds_hz"):
+        rd.unbalance_response(s, [(3, 1e-4, 0.0)], [0.0, 100.0], thermal=True, refine=False)

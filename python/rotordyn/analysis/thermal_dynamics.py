@@ -9,7 +9,8 @@ coefficients are those of the isoviscous (THD: fixed-field) film at the thermal 
 temperature does not follow the vibration (the film's thermal time constant is taken as long
 against a whirl period). A point whose thermal equilibrium fails is never linearised: it keeps
 the thermal status (stability raises ConvergenceError; Campbell and unbalance: a NaN row with
-``point_status`` = the thermal status).
+``point_status`` = the thermal status). Bad input (a thermal model that does not apply to the
+bearings, a zero speed) is an InputError, not a row per speed.
 """
 
 from __future__ import annotations
@@ -48,6 +49,13 @@ def thermal_keywords(thermal, where: str = "thermal") -> dict | None:
             raise InputError(f"{where}.{k}: not a keyword of system_thermal_equilibrium; "
                              f"expected one of {allowed}")
     return dict(thermal)
+
+
+def _no_zero(sp) -> None:
+    """A thermal equilibrium needs a turning journal: InputError naming ``speeds_hz``."""
+    if np.any(np.asarray(sp) == 0.0):
+        raise InputError("speeds_hz: the thermal equilibrium needs a nonzero speed at every "
+                         "speed (thermal=), got 0 Hz among them")
 
 
 def thermal_point(system, speed_hz, chamber_pressure_pa=0.0, config_ay_m=None, kw=None):
@@ -96,9 +104,12 @@ def thermal_campbell(linearize, stability_from, system, sp, chamber_pressure_pa,
     status = np.empty(sp.size, dtype=object)
     shapes = np.full((sp.size, asm.n, width), np.nan + 0j)
     therm = []
+    _no_zero(sp)
     for i, s in enumerate(sp):
         try:
             t = thermal_point(system, s, chamber_pressure_pa, config_ay_m, thermal)
+        except InputError:  # the model's or the keywords' fault: every speed would refuse
+            raise
         except RotordynError:
             therm.append(None)
             status[i] = "error"
@@ -147,9 +158,12 @@ def thermal_unbalance(unbalance_response, system, ub, sp, kw: dict, thermal):
     check = bool(system.bearings) if check is None else bool(check)
     mr = np.full(sp.size, np.nan) if check else None
     therm = []
+    _no_zero(sp)
     for i, s in enumerate(sp):
         try:
             t = thermal_point(system, s, pc, ay, thermal)
+        except InputError:  # the model's or the keywords' fault: every speed would refuse
+            raise
         except RotordynError:
             therm.append(None)
             status[i] = "error"
