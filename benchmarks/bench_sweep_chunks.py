@@ -290,14 +290,54 @@ def points_chunks(repeat):
           bare_hopf, len(hp))
 
 
+def thermal_dynamics_chunks(repeat):
+    """The stability and unbalance chunks with ``options.thermal`` (each point at its own
+    thermal equilibrium, field frozen; no batch: every point's frozen system is another model)
+    against their bare per-point API calls and the former dict-per-row chunk."""
+    import sys
+    from pathlib import Path
+
+    from rotordyn.sweep.paths import set_field
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+    import sweep_thermal_rows_reference as ref
+
+    models = Path(__file__).resolve().parents[1] / "tests" / "data" / "models"
+    th = rd.System.from_toml(str(models / "compressor_plain_thermal.toml"))
+    axes = {"thermal.supply_temperature_c": [40.0, 50.0], "speed_hz": [100.0, 125.0, 150.0]}
+    var = {t: set_field(th, "thermal.supply_temperature_c", t) for t in axes[
+        "thermal.supply_temperature_c"]}
+    job = Job("b", th.to_toml(), "stability", {"thermal": {}, "n_modes": 6}, axes)
+    show_points("stability chunk with options.thermal, compressor on plain films", 6,
+                interleaved({"bare": lambda: [rd.stability(var[t], f, n_modes=6, thermal=True)
+                                              for t in var for f in axes["speed_hz"]],
+                             "chunk": lambda: run_chunk(job, 0, 0, 6),
+                             "dict": lambda: ref.run_chunk(job, 0, 0, 6)}, repeat=repeat))
+    ub = [(3, 1e-4, 0.0)]
+    job = Job("b", th.to_toml(), "unbalance", {"thermal": {}, "unbalances": [list(ub[0])]},
+              axes)
+    show_points("unbalance chunk with options.thermal, same", 6, interleaved(
+        {"bare": lambda: [rd.unbalance_response(var[t], ub, axes["speed_hz"], refine=False,
+                                                check_stability=False, thermal=True)
+                          for t in var],
+         "chunk": lambda: run_chunk(job, 0, 0, 6),
+         "dict": lambda: ref.run_chunk(job, 0, 0, 6)}, repeat=repeat))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--points", action="store_true",
                     help="also the thermal, waterfall, run-up, robust and hopf chunks")
     ap.add_argument("--only-points", action="store_true", help="only those")
+    ap.add_argument("--thermal-dynamics", action="store_true",
+                    help="only the stability and unbalance chunks with options.thermal")
     a = ap.parse_args()
     header("sweep chunks: one C++ call vs the per-point loops")
+    if a.thermal_dynamics:
+        thermal_dynamics_chunks(a.repeat)
+        footer()
+        return
     if a.only_points:
         points_chunks(a.repeat)
         footer()

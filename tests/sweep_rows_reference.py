@@ -449,12 +449,13 @@ def threshold_line_rows(job, variants, chunk_id, lo, hi, rows, scan=None):
     block_rows(job, chunk_id, lo, hi, asms, blocks, rows)
 
 
-def to_table(job: Job, rows: list[dict]) -> pa.Table:
+def to_table(job: Job, rows: list[dict], sch: pa.Schema | None = None) -> pa.Table:
     """Rows (dicts) to the fixed schema: missing values are nulls, categoricals use the fixed
     category lists so every part has the same dictionary. No chunk builds its rows this way
     any more (every analysis is columnar, :func:`rotordyn.sweep.work.run_chunk`): the
-    reference of tests/test_sweep_columns*.py."""
-    sch = schema(job.analysis, list(job.axes))
+    reference of tests/test_sweep_columns*.py. ``sch``: another schema (the thermal
+    columns of ``options.thermal``, tests/sweep_thermal_rows_reference.py)."""
+    sch = schema(job.analysis, list(job.axes)) if sch is None else sch
     cats = categories(job.analysis)
     cols = []
     sizes = [r.get("_n", 1) for r in rows]

@@ -113,3 +113,48 @@ def test_thermal_section_notes_and_absence():
     assert th["bearing"].str.contains(r"\.pad\d").all() and (th["status"] == "ok").all()
     assert thermal_frames(dataclasses.replace(s, thermal=None), np.array(SPEEDS), 0.0,
                           None) == (None, None, "")
+
+
+def test_critical_speeds_on_thermal_films(tmp_path):
+    """Section 3c / the text report's "critical speeds on thermal films": the Campbell diagram
+    and the API unbalance response with every speed at its own thermal equilibrium (field
+    frozen), on the compressor on plain bearings (36 x 8). critical_speeds_thermal.csv equals
+    critical_speed_table of the direct calls (rotordyn.campbell and the API response with
+    thermal=True: same calls, exact) and differs from the isothermal critical speeds; the
+    effective-model note on a pad bearing, and no section without an oil system."""
+    from pathlib import Path
+
+    from rotordyn.report.criteria import speed_range
+    from rotordyn.report.sections import (api_response, critical_speed_table,
+                                          thermal_critical_speeds)
+
+    s = rotordyn.System.from_toml(Path(__file__).parent / "data" / "models"
+                                  / "compressor_plain_thermal.toml")
+    s = dataclasses.replace(s, bearings=tuple(
+        dataclasses.replace(b, n_circ=36, n_axial=8) for b in s.bearings))
+    path = tmp_path / "m.toml"
+    s.to_toml(path)
+    out = tmp_path / "out"
+    text, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(text), contextlib.redirect_stderr(err):
+        assert main(["report", str(path), "--out", str(out), "--speeds-hz", "100:200:10"]) == 0
+    report = (out / "report.txt").read_text(encoding="utf-8")
+    assert "critical speeds on thermal films (thermal model effective" in report
+    got = pd.read_csv(out / "critical_speeds_thermal.csv")
+    from rotordyn.cli.common import speeds
+
+    rng = speed_range(s, None, speeds("100:200:10"), None, False)
+    sp = rng.speeds_hz
+    c = rotordyn.campbell(s, sp, 0.0, None, thermal=True)
+    u, *_ = api_response(s, sp, rng.n_mc_hz, 0.0, None, None, thermal=True)
+    want = critical_speed_table(c, u)
+    assert len(got) == len(want) > 0
+    np.testing.assert_array_equal(got["speed_hz"].to_numpy(), want["speed_hz"].to_numpy())
+    iso = pd.read_csv(out / "critical_speeds.csv")
+    assert not np.array_equal(iso["speed_hz"].to_numpy(), got["speed_hz"].to_numpy())
+    pads = compressor_tilting_pad()
+    eff = dataclasses.replace(pads, thermal=dataclasses.replace(pads.thermal, model="effective"))
+    crit, note, _ = thermal_critical_speeds(eff, rng, 0.0, None)
+    assert crit is None and note.startswith("not evaluated: model: ")
+    assert thermal_critical_speeds(dataclasses.replace(s, thermal=None), rng, 0.0, None) == \
+        (None, "", None)

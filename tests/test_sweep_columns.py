@@ -42,6 +42,10 @@ def _same_column(a, b) -> bool:
     if not np.array_equal(a.is_null().to_numpy(zero_copy_only=False),
                           b.is_null().to_numpy(zero_copy_only=False)):
         return False
+    if pa.types.is_list(a.type):  # per-film lists: the offsets, then the values as a column
+        return (np.array_equal(a.offsets.to_numpy(), b.offsets.to_numpy())
+                and _same_column(pa.chunked_array([a.flatten()]),
+                                 pa.chunked_array([b.flatten()])))
     if pa.types.is_floating(a.type):
         x = pc.fill_null(a, 0.0).to_numpy(zero_copy_only=False)
         y = pc.fill_null(b, 0.0).to_numpy(zero_copy_only=False)

@@ -8,7 +8,7 @@ from rotordyn._common.threads import limited_blas
 import numpy as np
 
 from rotordyn.analysis.assembly import assembled
-from rotordyn.analysis.linear import _stability_from, continued_linear_models
+from rotordyn.analysis.linear import _stability_from, continued_linear_models, linearize
 from rotordyn.analysis.tracking import track_modes
 from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
@@ -22,18 +22,28 @@ WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
 @limited_blas
 def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
              config_ay_m: float | None = None, *, n_modes: int | None = None,
-             method: str = "perturbation") -> CampbellResult:
+             method: str = "perturbation", thermal=None) -> CampbellResult:
     """Eigenvalues of eq. 19 at each speed in ``speeds_hz`` (strictly increasing, Hz): the
     equilibrium is solved at each speed, warm-started from the previous one, then K_H(Ω),
     D_H(Ω) and the eigenvalues. A speed whose equilibrium fails is a NaN row with its status
     in ``point_status``; the diagram goes on. ``n_modes`` default: every mode of the system; it
     counts rotor (and sleeve) modes, never a tilting pad's own (those below the cut are kept
-    besides, kind "pad")."""
+    besides, kind "pad"). ``thermal`` (None, True: the model's ``[thermal]``, or a dict of
+    :func:`rotordyn.system_thermal_equilibrium` keywords): every speed at its own thermal
+    equilibrium (cold start, field frozen for K_H, D_H; no continuation between speeds;
+    the result's ``thermal`` per speed; :mod:`.thermal_dynamics`)."""
     sp = v.speeds("speeds_hz", speeds_hz)
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
     if config_ay_m is not None:  # a NaN here made every point "error" (issue 13)
         v.finite("config_ay_m", config_ay_m)
     v.choice("method", method, ("perturbation", "finite_difference"))
+    if thermal is not None and thermal is not False:
+        from rotordyn.analysis.thermal_dynamics import thermal_campbell, thermal_keywords
+
+        kw = thermal_keywords(thermal)
+        nm = None if n_modes is None else v.integer("n_modes", n_modes, lo=1)
+        return thermal_campbell(linearize, _stability_from, system, sp, chamber_pressure_pa,
+                                config_ay_m, n_modes=nm, method=method, thermal=kw)
     asm = assembled(system)
     k = asm.n if n_modes is None else min(v.integer("n_modes", n_modes, lo=1), asm.n)
     # ``n_modes`` counts the system's modes; tilting pads' own modes below the cut are listed

@@ -150,14 +150,25 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
 @limited_blas
 def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, *, n_modes: int | None = None,
-              method: str = "perturbation", **equilibrium_kw) -> StabilityResult:
+              method: str = "perturbation", thermal=None, **equilibrium_kw) -> StabilityResult:
     """Eigenvalues of eq. 19 at the equilibrium: damped natural frequencies, damping ratios,
     logarithmic decrements, whirl, mode shapes (full rotor and full sleeve); ``.stable`` when
     every real part is negative. ``n_modes``: lowest damped frequencies kept (default all),
     counted over the rotor's (and sleeves') modes: a tilting pad's own modes (kind "pad") below
-    the cut are kept besides them, never counted (:func:`mode_window`)."""
+    the cut are kept besides them, never counted (:func:`mode_window`).
+
+    ``thermal``: None (isothermal films), True (the model's ``[thermal]``) or a dict of
+    :func:`rotordyn.system_thermal_equilibrium` keywords: the point's thermal equilibrium
+    first, then K_H, D_H with its temperature field frozen (the result's ``thermal``;
+    ConvergenceError when the thermal equilibrium fails; :mod:`.thermal_dynamics`)."""
     if n_modes is not None:
         n_modes = min(v.integer("n_modes", n_modes, lo=1), assembled(system).n)
+    if thermal is not None and thermal is not False:
+        from rotordyn.analysis.thermal_dynamics import thermal_keywords, thermal_stability
+
+        return thermal_stability(stability, system, speed_hz, chamber_pressure_pa, config_ay_m,
+                                 n_modes=n_modes, method=method,
+                                 thermal=thermal_keywords(thermal), **equilibrium_kw)
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, method=method,
                    **equilibrium_kw)
     return _stability_from(assembled(system), lm, n_modes)

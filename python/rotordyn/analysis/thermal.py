@@ -13,6 +13,7 @@ import dataclasses
 import numpy as np
 
 from rotordyn import _core
+from rotordyn._common.status import CONVERGED
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled
@@ -197,15 +198,19 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
            for i, bc in bcs.items() if hasattr(system.bearings[i], "config_ay_m")
            and (float(a[bc.jx]), float(a[bc.jy])) != (system.bearings[i].config_ax_m,
                                                       system.bearings[i].config_ay_m)}
+    # a failed system equilibrium (its status) leaves no film state to freeze: the films that
+    # never got one carry no viscosity (0), so the returned system is the model as given
+    # (never linearised: rotordyn.analysis.thermal_dynamics checks the status first)
     hot = dataclasses.replace(system, bearings=tuple(
         dataclasses.replace(b, viscosity_pa_s=float(mus[i]), viscosity_field_pa_s=fields.get(i),
                             **cfg.get(i, {}))
         if i in mus else dataclasses.replace(b, **cfg[i]) if i in cfg else b
-        for i, b in enumerate(system.bearings)))
+        for i, b in enumerate(system.bearings))) if eq.status in CONVERGED else system
     names = tuple(asm.model.films[j].name if i in pads else bcs[i].name for i, j in rows)
 
-    def col(name):
-        return np.array([getattr(s, name) for s in st])
+    def col(name):  # a failed equilibrium's film states are no thermal state: NaN
+        x = np.array([getattr(s, name) for s in st], dtype=np.float64)
+        return x if eq.status in CONVERGED else np.full_like(x, np.nan)
 
     return SystemThermalResult(
         speed_hz=float(speed_hz), supply_temperature_c=float(supply_temperature_c),

@@ -77,7 +77,9 @@ def _merge(a: UnbalanceResult, b: UnbalanceResult) -> UnbalanceResult:
                            np.concatenate([a.point_status, b.point_status])[o], a.unbalances,
                            a.operating_speed_hz,
                            None if a.max_real_1_per_s is None else
-                           np.concatenate([a.max_real_1_per_s, b.max_real_1_per_s])[o])
+                           np.concatenate([a.max_real_1_per_s, b.max_real_1_per_s])[o],
+                           thermal=tuple(np.array(a.thermal + b.thermal, dtype=object)[o])
+                           if a.thermal else ())
 
 
 def _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X, Y, status):
@@ -141,7 +143,7 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
                        chamber_pressure_pa: float = 0.0, config_ay_m: float | None = None,
                        operating_speed_hz=None, method: str = "perturbation",
                        refine: bool = True, check_stability: bool | None = None,
-                       threads: int = 1) -> UnbalanceResult:
+                       threads: int = 1, thermal=None) -> UnbalanceResult:
     """Response to rotating unbalances ``[(station, mass_kg_m, phase_deg), ...]`` (m·e in
     kg·m; the force at station is m e Ω² (cos(Ωt + φ), sin(Ωt + φ)), turning with the rotor).
 
@@ -161,12 +163,16 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     ``threads``: the speeds of a system with bearing elements are solved in one C++ call
     (GIL released); 1 (default) continues the equilibrium over all speeds in order, k > 1
     splits them into k contiguous blocks on k threads, each continued from the same start.
+    ``thermal`` (None, True: the model's ``[thermal]``, or a dict of
+    :func:`rotordyn.system_thermal_equilibrium` keywords): every speed at its own thermal
+    equilibrium (cold start, field frozen for K_H, D_H; the result's ``thermal`` per speed;
+    a failed thermal equilibrium is a NaN row with its status; :mod:`.thermal_dynamics`).
     """
     if refine:
         kw = dict(stations=stations, chamber_pressure_pa=chamber_pressure_pa,
                   config_ay_m=config_ay_m, operating_speed_hz=operating_speed_hz,
                   method=method, refine=False, check_stability=check_stability,
-                  threads=threads)
+                  threads=threads, thermal=thermal)
         u = unbalance_response(system, unbalances, speeds_hz, **kw)
         for _ in range(REFINE_LEVELS):
             sp = u.speeds_hz
@@ -198,6 +204,13 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     threads = v.integer("threads", threads, lo=1, hi=1024)
     check = bool(system.bearings) if check_stability is None else \
         v.boolean("check_stability", check_stability)
+    if thermal is not None and thermal is not False:
+        from rotordyn.analysis.thermal_dynamics import thermal_keywords, thermal_unbalance
+
+        return thermal_unbalance(unbalance_response, system, ub, sp, dict(
+            stations=stations, chamber_pressure_pa=chamber_pressure_pa,
+            config_ay_m=config_ay_m, operating_speed_hz=operating_speed_hz, method=method,
+            check_stability=check, threads=threads), thermal_keywords(thermal))
     asm = assembled(system)
     outs = tuple(stations) if stations is not None else tuple(dict.fromkeys(s for s, _, _ in ub))
     Cout = [asm.station_output_matrix(s) for s in outs]

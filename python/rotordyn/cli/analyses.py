@@ -93,6 +93,7 @@ def _register(sub) -> None:
     s.add_argument("model", help=MODEL_HELP)
     add_operating_point(s)
     _add_mode_window(s)
+    _add_thermal_flag(s)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_stability)
 
@@ -108,6 +109,7 @@ def _register(sub) -> None:
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="also write the Campbell diagram to FIG.png or FIG.svg")
     _add_mode_window(s, n_default=None)
+    _add_thermal_flag(s)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_campbell)
 
@@ -125,6 +127,7 @@ def _register(sub) -> None:
 
     s = sub.add_parser("unbalance", help="unbalance response, critical speeds, API 684 margins")
     s.add_argument("model", help=MODEL_HELP)
+    _add_thermal_flag(s)
     s.add_argument("--unbalance", action="append", required=True,
                    metavar="STATION,MASS_KG_M,PHASE_DEG",
                    help="unbalance m·e (kg m) at a station with its phase (deg); repeatable")
@@ -325,10 +328,56 @@ def _by_name(frame) -> dict:
     return out
 
 
+def _add_thermal_flag(s) -> None:
+    s.add_argument("--thermal", action="store_true",
+                   help="each speed at its own thermal equilibrium of the model's [thermal] "
+                        "oil system, the temperature field frozen for K_H, D_H "
+                        "(docs/film-physics.md)")
+    s.add_argument("--thermal-model", choices=["effective", "thd"], default=None,
+                   help="with --thermal: the thermal film model (default: the model's "
+                        "[thermal] model)")
+
+
+def _thermal(args, s):
+    """The ``thermal=`` keyword of the analyses from --thermal/--thermal-model (None:
+    isothermal); InputError naming the option when the model has no oil system."""
+    if not args.thermal:
+        if args.thermal_model is not None:
+            raise InputError("--thermal-model: needs --thermal")
+        return None
+    if s.thermal is None:
+        raise InputError("--thermal: the model has no [thermal] table (its oil system, "
+                         "docs/model-file.md)")
+    return {} if args.thermal_model is None else {"model": args.thermal_model}
+
+
+def _thermal_json(t):
+    if t is None:
+        return None
+    return {"model": t.thermal_model, "status": t.status, "film": list(t.bearing_names),
+            "effective_temperature_c": t.effective_temperature_c,
+            "max_temperature_c": t.max_temperature_c, "power_loss_w": t.power_loss_w}
+
+
+def _thermal_summary(speeds, thermal) -> None:
+    """Per speed at its own thermal equilibrium: the hottest film and the power loss
+    (stderr; nothing for isothermal films)."""
+    if not thermal:
+        return
+    print("each speed at its own thermal equilibrium (field frozen):", file=sys.stderr)
+    for f, t in zip(speeds, thermal):
+        if t is None or t.status not in CONVERGED:
+            print(f"  {f:g} Hz: thermal equilibrium failed"
+                  + (f" ({t.status}: {t.message})" if t is not None else ""), file=sys.stderr)
+            continue
+        print(f"  {f:g} Hz: T_max {float(np.max(t.max_temperature_c)):.4g} degC, "
+              f"{float(np.sum(t.power_loss_w)):.4g} W", file=sys.stderr)
+
+
 def _cmd_stability(args) -> int:
     s = models.load(args.model)
     st = analysis.stability(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
-                            n_modes=args.n_modes)
+                            n_modes=args.n_modes, thermal=_thermal(args, s))
     df = st.to_frame()
     keep = _window(st.frequencies_hz, args, table=not args.json)
     if args.json:
@@ -337,7 +386,8 @@ def _cmd_stability(args) -> int:
         print(json_text({"status": st.status, "message": st.message, "stable": st.stable,
                          "speed_hz": st.speed_hz, "max_real_1_per_s": st.max_real_1_per_s,
                          "modes": df.iloc[keep][cols].to_dict("list")
-                         | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])}}))
+                         | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])},
+                         "thermal": _thermal_json(st.thermal)}))
     else:
         print(table_text(df.iloc[keep]))
         if len(keep) < len(df):
@@ -345,6 +395,13 @@ def _cmd_stability(args) -> int:
                   "others; the least damped mode and the verdict cover all)", file=sys.stderr)
         print(f"{'stable' if st.stable else 'UNSTABLE'}: largest Re λ = "
               f"{st.max_real_1_per_s:.4g} 1/s", file=sys.stderr)
+        if st.thermal is not None:
+            t = st.thermal
+            print(f"at the thermal equilibrium ({t.thermal_model} model, field frozen): "
+                  + "; ".join(f"{n}: T_eff {a:.4g} degC, T_max {b:.4g} degC, {p:.4g} W"
+                              for n, a, b, p in zip(t.bearing_names, t.effective_temperature_c,
+                                                    t.max_temperature_c, t.power_loss_w)),
+                  file=sys.stderr)
     if st.status not in CONVERGED:  # a failed equilibrium: no eigenvalues, exit 1
         print(f"rotordyn: failed: {st.status}: {st.message}", file=sys.stderr)
         return 1
@@ -355,9 +412,10 @@ def _cmd_campbell(args) -> int:
     check_figure(args.plot)
     speeds = parse_speeds(args.speeds_hz)
     s = models.load(args.model)
+    th = _thermal(args, s)
     if s.bearings:
         c = analysis.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m,
-                              n_modes=args.n_modes)
+                              n_modes=args.n_modes, thermal=th)
     else:
         c = analysis.rotor_campbell(s, speeds, **({} if args.n_modes is None
                                                   else {"n_modes": args.n_modes}))
@@ -367,9 +425,12 @@ def _cmd_campbell(args) -> int:
                      "critical_speeds": crit.to_dict("records"),
                      "speeds_hz": c.speeds_hz, "frequencies_hz": c.frequencies_hz,
                      "point_status": list(c.point_status) if c.point_status is not None
-                     else None}))
+                     else None}
+                    | ({"thermal": [_thermal_json(t) for t in c.thermal]} if c.thermal
+                       else {})))
     else:
         print(table_text(crit))
+        _thermal_summary(c.speeds_hz, c.thermal)
     if args.plot:
         ax = c.plot()
         if args.max_freq_hz is not None:
@@ -406,15 +467,19 @@ def _cmd_unbalance(args) -> int:
     u = analysis.unbalance_response(s, ub, parse_speeds(args.speeds_hz), stations=args.station,
                                     chamber_pressure_pa=args.chamber_pressure_pa,
                                     config_ay_m=args.config_ay_m,
-                                    operating_speed_hz=args.operating_speed_hz)
+                                    operating_speed_hz=args.operating_speed_hz,
+                                    thermal=_thermal(args, s))
     peaks = {int(st): u.peaks(st).to_dict("records") for st in u.stations}
     if args.json:
         print(json_text({"stations": list(u.stations), "peaks": peaks,
-                     "response": u.to_frame().to_dict("list")}))
+                     "response": u.to_frame().to_dict("list")}
+                    | ({"thermal": [_thermal_json(t) for t in u.thermal]} if u.thermal
+                       else {})))
     else:
         for st in u.stations:
             print(f"station {st}:")
             print(table_text(u.peaks(st)))
+        _thermal_summary(u.speeds_hz, u.thermal)
     if args.plot:  # one figure per output station (FIG_station<k>.png when several)
         from pathlib import Path
 

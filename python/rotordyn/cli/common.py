@@ -63,9 +63,12 @@ def _finite_or_none(o):
 
 
 def json_text(obj) -> str:
-    """Strict JSON (RFC 8259): numpy values converted, NaN and ±inf written as null."""
+    """Strict JSON (RFC 8259): numpy values converted, NaN, ±inf and pandas' NA (a nullable
+    column's missing value) written as null."""
 
     def plain(o):
+        if type(o).__name__ == "NAType":  # pandas.NA, without importing pandas here
+            return None
         if isinstance(o, np.ndarray):
             return plain(o.tolist())
         if isinstance(o, (np.floating, np.integer, np.bool_)):

@@ -41,7 +41,8 @@ from rotordyn.report.sections import (COEFFICIENT_HEADER, CRITICAL_HEADER, MERGE
                                       coefficient_rows, coefficient_text_lines,
                                       SOURCE_LEAST_DAMPED, critical_rows,
                                       critical_speed_table, critical_text_lines,
-                                      not_resonance_note, shape_source, shapes_for)
+                                      not_resonance_note, shape_source, shapes_for,
+                                      thermal_critical_speeds, thermal_critical_text_lines)
 from rotordyn.report.criteria import (NOT_RESOLVED, SCREEN_LOG_DEC, Checks, amplitude_checks,
                                       critical_speed_map, separation_checks,
                                       speed_range, stability_screen)
@@ -216,7 +217,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     ay = 0.0 if active else None
     if operating_speed_hz is None and paper:
         operating_speed_hz = (45.0, 55.0)
-    progress = Steps("report", 6 + bool(active) + (s.thermal is not None),
+    progress = Steps("report", 6 + bool(active) + 2 * (s.thermal is not None),
                      enabled=bool(progress))
     checks = Checks()
     parts: list[str] = []
@@ -367,11 +368,19 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
         if len(crit) > len(shapes):
             sec.append(f"<p>The first {len(shapes)} of {len(crit)} critical speeds shown.</p>")
         parts.append("".join(sec))
+    # 3c. critical speeds with every speed at its own thermal equilibrium (an oil system)
+    if s.thermal is not None:
+        _progress(progress, "Campbell and unbalance response on thermal films")
+    tcrit, tnote, tc = thermal_critical_speeds(s, rng, pc, ay, operating_speed_hz)
+    if tcrit is not None and figure_dir is not None:
+        tcrit.to_csv(Path(figure_dir) / "critical_speeds_thermal.csv", index=False)
+    parts.append(_thermal_critical_html(tcrit, tnote, tc, window_hz))
     if text_sink is not None:
         text_sink += critical_text_lines(crit, shapes, rng, pc, bool(active),
                                          files=figure_dir is not None)
         text_sink += coefficient_text_lines(coeffs)
         text_sink += thermal_text_lines(th, th_coeffs, th_note)
+        text_sink += thermal_critical_text_lines(tcrit, tnote)
 
     # 4. unbalance response
     parts.append(f"<h2>4. Unbalance response</h2><p>API 684 unbalance U = 6350 W/N g·mm = "
@@ -461,3 +470,20 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     out.write_text(doc, encoding="utf-8")
     progress.done()
     return out
+
+
+def _thermal_critical_html(crit, note: str, campbell, window_hz: float) -> str:
+    """Section 3c: the Campbell diagram and the critical speeds with every speed at its own
+    thermal equilibrium ("" without an oil system)."""
+    from rotordyn.plot.frequency import campbell_diagram
+
+    head = "<h2>3c. Campbell diagram and critical speeds on thermal films</h2>"
+    if crit is None:
+        return head + f"<p class=\"nr\">{html.escape(note)}</p>" if note else ""
+    ax = campbell_diagram(campbell, title="Campbell diagram, thermal films")
+    ax.set_ylim(0, window_hz)
+    rows = [tuple(html.escape(str(x)) for x in r) for r in critical_rows(crit)]
+    return (head + f"<p>{html.escape(note)} (docs/film-physics.md); sections 3 and 4: the "
+            "model's isothermal films.</p><figure>" + svg(ax.figure) + "</figure>"
+            + (_table(CRITICAL_HEADER, rows) if rows else
+               "<p>No critical speed in the speed range on thermal films.</p>"))

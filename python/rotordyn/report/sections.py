@@ -293,10 +293,11 @@ def critical_mode_shapes(system, critical_speeds_hz, chamber_pressure_pa: float,
 
 
 def api_response(system, speeds_hz, n_mc_hz: float, chamber_pressure_pa: float, config_ay_m,
-                 operating_speed_hz=None):
+                 operating_speed_hz=None, thermal=None):
     """The report's unbalance response: the API 684 unbalance
     (:func:`rotordyn.report.criteria.api_unbalance`) over ``speeds_hz`` (Hz) at its own station
-    and every bearing (or support) station. Returns (UnbalanceResult, station, U kg·m, where)."""
+    and every bearing (or support) station (``thermal``: as :func:`rotordyn.
+    unbalance_response`'s). Returns (UnbalanceResult, station, U kg·m, where)."""
     from rotordyn.report.criteria import api_unbalance
 
     st_ub, u_kgm, where = api_unbalance(system, n_mc_hz, n_mc_hz, chamber_pressure_pa,
@@ -307,8 +308,49 @@ def api_response(system, speeds_hz, n_mc_hz: float, chamber_pressure_pa: float, 
     u = analysis.unbalance_response(system, [(st_ub, u_kgm, 0.0)], speeds_hz, stations=outs,
                                     chamber_pressure_pa=chamber_pressure_pa,
                                     config_ay_m=config_ay_m,
-                                    operating_speed_hz=operating_speed_hz)
+                                    operating_speed_hz=operating_speed_hz, thermal=thermal)
     return u, st_ub, u_kgm, where
+
+
+def thermal_critical_speeds(system, rng, chamber_pressure_pa: float, config_ay_m,
+                            operating_speed_hz=None):
+    """The critical speeds (:func:`critical_speed_table`) of the damped Campbell diagram and
+    the API unbalance response with every speed at its own thermal equilibrium of the model's
+    ``[thermal]`` (field frozen for K_H, D_H; docs/film-physics.md, "Dynamics at each point's
+    own thermal equilibrium"), over the positive analysed speeds. Returns (table, note, the
+    CampbellResult): (None, "", None) without an oil system or bearing elements, (None, why,
+    None) when the thermal model does not apply to the bearings."""
+    from rotordyn.errors import InputError
+
+    if getattr(system, "thermal", None) is None or not system.bearings:
+        return None, "", None
+    sp = np.asarray(rng.speeds_hz, dtype=float)
+    sp = sp[sp > 0]  # a thermal equilibrium needs a turning journal
+    if sp.size < 2:
+        return None, "not evaluated: fewer than two positive speeds in the analysed range", None
+    try:  # InputError: the model's thermal model does not apply to its bearings
+        c = analysis.campbell(system, sp, chamber_pressure_pa, config_ay_m, thermal=True)
+        u, *_ = api_response(system, sp, rng.n_mc_hz, chamber_pressure_pa, config_ay_m,
+                             operating_speed_hz, thermal=True)
+    except InputError as exc:
+        return None, f"not evaluated: {exc}", None
+    bad = int(np.sum([s not in ("ok", "contact") for s in c.point_status]))
+    note = (f"thermal model {system.thermal.model}, oil supplied at "
+            f"{system.thermal.supply_temperature_c:g} °C; each of {sp.size} speeds at its own "
+            "thermal equilibrium, the temperature field frozen"
+            + (f"; {bad} speed(s) without a thermal equilibrium (not linearised)" if bad
+               else ""))
+    return critical_speed_table(c, u), note, c
+
+
+def thermal_critical_text_lines(crit, note: str) -> list[str]:
+    """The text report's critical speeds on thermal films (nothing without an oil system)."""
+    if crit is None:
+        return ["", f"critical speeds on thermal films: {note}"] if note else []
+    lines = ["", f"critical speeds on thermal films ({note}; critical_speeds_thermal.csv)"]
+    if len(crit):
+        return lines + _text_table(CRITICAL_HEADER, critical_rows(crit))
+    return lines + ["  none: no forward 1× crossing and no response peak in the range"]
 
 
 def critical_text_lines(crit, shapes, rng, chamber_pressure_pa: float, active: bool,
@@ -392,7 +434,11 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
 
     th, th_coeffs, note = thermal_frames(system, sp, pc, ay)
     write_thermal(th, th_coeffs, outdir)
-    return lines + coefficient_text_lines(coeffs) + thermal_text_lines(th, th_coeffs, note)
+    tcrit, tnote, _ = thermal_critical_speeds(system, rng, pc, ay, operating_speed_hz)
+    if tcrit is not None:
+        tcrit.to_csv(outdir / "critical_speeds_thermal.csv", index=False)
+    return (lines + coefficient_text_lines(coeffs) + thermal_text_lines(th, th_coeffs, note)
+            + thermal_critical_text_lines(tcrit, tnote))
 
 
 def coefficient_speeds(speeds_hz, n: int = 11) -> np.ndarray:
@@ -413,4 +459,5 @@ __all__ = ["COEFFICIENT_HEADER", "CRITICAL_COLUMNS", "CRITICAL_HEADER", "Critica
            "MAX_CRITICAL_SHAPES", "SOURCE_CAMPBELL", "SOURCE_LEAST_DAMPED", "SOURCE_PEAK", "bearing_coefficient_frame",
            "api_response", "coefficient_rows", "coefficient_speeds", "critical_mode_shapes",
            "coefficient_text_lines", "critical_rows", "critical_speed_table",
-           "critical_text_lines", "not_resonance_note", "shape_source", "shapes_for", "write_text_sections"]
+           "critical_text_lines", "not_resonance_note", "shape_source", "shapes_for",
+           "thermal_critical_speeds", "thermal_critical_text_lines", "write_text_sections"]

@@ -30,6 +30,7 @@ class CampbellResult(Display):
     kind: np.ndarray | None = None  # (n_speeds, n_modes) "rotor"/"sleeve" (systems with films)
     point_status: np.ndarray | None = None  # (n_speeds,) equilibrium status per speed
     mode_id: np.ndarray | None = None  # (n_speeds, n_modes) tracked ids
+    thermal: tuple = ()  # (n_speeds,) SystemThermalResult per speed (``thermal=``), else ()
 
     def ids(self) -> np.ndarray:
         """(n_speeds, n_modes) int64 mode ids: the tracked ones, else the slot index."""
@@ -104,7 +105,9 @@ class CampbellResult(Display):
         return self.kind == "rotor"
 
     def to_frame(self) -> pd.DataFrame:
-        """Tidy: one row per (speed, mode)."""
+        """Tidy: one row per (speed, mode); with ``thermal`` (each speed at its own thermal
+        equilibrium) also the thermal columns of each speed
+        (:data:`rotordyn.results.thermal.THERMAL_POINT_COLUMNS`)."""
         ns, nm = self.eigenvalues.shape
         lam = self.eigenvalues.ravel()
         st = (np.repeat(self.point_status, nm) if self.point_status is not None
@@ -124,6 +127,11 @@ class CampbellResult(Display):
         })
         if self.kind is not None:
             df.insert(4, "kind", pd.Categorical(self.kind.ravel(), categories=["rotor", "sleeve", "pad"]))
+        if self.thermal:
+            from rotordyn.results.thermal import thermal_frame_columns
+
+            for k, col in thermal_frame_columns(self.thermal, nm).items():
+                df[k] = col
         return df
 
     def plot(self, ax=None, harmonics=(0.5, 1.0, 2.0), color_by: str = "log_dec",

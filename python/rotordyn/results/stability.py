@@ -85,6 +85,8 @@ class StabilityResult(Display):
     status: str = "ok"
     message: str = ""
     modes: np.ndarray | None = None
+    # the thermal equilibrium whose frozen field the films ran at (``thermal=``), else None
+    thermal: object = None
 
     @property
     def speed_hz(self) -> float:
@@ -141,14 +143,16 @@ class StabilityResult(Display):
         """One row per mode: operating point (speed; with an active bearing also its p_c and
         a_y), eigenvalue, frequency, damping, whirl, kind,
         ``mode_stable`` (this mode: Re λ ≤ 0 beyond round-off) and ``point_stable`` (the
-        operating point: every mode stable), as in the sweep tables."""
+        operating point: every mode stable), as in the sweep tables; at a thermal equilibrium
+        (``thermal=``) also its columns (:data:`rotordyn.results.thermal.THERMAL_POINT_COLUMNS`:
+        per-film temperatures and power loss, as in a sweep with ``options.thermal``)."""
         n = len(self.eigenvalues)
         e = self.linear.equilibrium
         point = {"speed_hz": np.full(n, self.speed_hz)}
         if e.sleeve_m:  # an active bearing: its chamber pressure and housing offset a_y
             point["chamber_pressure_pa"] = np.full(n, e.chamber_pressure_pa)
             point["config_ay_m"] = np.full(n, float(e.config_ay_m[min(e.sleeve_m)]))
-        return pd.DataFrame({
+        df = pd.DataFrame({
             **point,
             "mode": np.arange(1, n + 1, dtype=np.int64),
             "freq_hz": self.frequencies_hz,
@@ -162,3 +166,9 @@ class StabilityResult(Display):
             "status": pd.Categorical([self.status] * n, categories=list(STATUSES)),
             "message": [self.message] * n,
         })
+        if self.thermal is not None:
+            from rotordyn.results.thermal import thermal_frame_columns
+
+            for k, col in thermal_frame_columns([self.thermal], n).items():
+                df[k] = col
+        return df

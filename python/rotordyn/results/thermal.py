@@ -78,3 +78,50 @@ class SystemThermalResult:
             "status": [self.status] * n,
             "message": [self.message] * n,
         })
+
+
+# The thermal outputs a point at its own thermal equilibrium carries (``thermal=`` of
+# stability, Campbell, unbalance: their frames; ``options.thermal`` of those sweeps: their
+# rows): per film (lists in the order of ``film``) and summarised over the films.
+THERMAL_POINT_COLUMNS = ("film", "film_effective_temperature_c", "film_max_temperature_c",
+                         "film_power_loss_w", "max_temperature_c", "power_loss_w",
+                         "thermal_iterations")
+
+
+def thermal_point_values(t: SystemThermalResult) -> dict:
+    """The :data:`THERMAL_POINT_COLUMNS` of one point's thermal equilibrium (°C, W; NaN where
+    it failed): lists per film, the hottest film's maximum, the total power loss."""
+    from rotordyn._common.status import CONVERGED
+
+    ok = t.status in CONVERGED
+    nan = [float("nan")] * len(t.bearing_names)
+    te = [float(x) for x in t.effective_temperature_c] if ok else nan
+    tm = [float(x) for x in t.max_temperature_c] if ok else nan
+    pw = [float(x) for x in t.power_loss_w] if ok else nan
+    return {"film": list(t.bearing_names), "film_effective_temperature_c": te,
+            "film_max_temperature_c": tm, "film_power_loss_w": pw,
+            "max_temperature_c": max(tm) if ok else float("nan"),
+            "power_loss_w": float(sum(pw)) if ok else float("nan"),
+            "thermal_iterations": int(t.iterations)}
+
+
+def thermal_frame_columns(results, repeat: int) -> dict:
+    """Frame columns (:data:`THERMAL_POINT_COLUMNS`) of per-point thermal equilibria
+    ``results`` (SystemThermalResult, or None where it raised: nulls), each point's values
+    repeated ``repeat`` times (its modes or stations), points in order."""
+    import pandas as pd
+
+    vals = [thermal_point_values(t) if t is not None else None for t in results]
+    out = {}
+    for c in THERMAL_POINT_COLUMNS:
+        col = []
+        for v in vals:
+            x = None if v is None else v[c]
+            col += [x] * repeat
+        if c == "thermal_iterations":
+            out[c] = pd.array(col, dtype="Int64")
+        elif c in ("max_temperature_c", "power_loss_w"):
+            out[c] = np.array([np.nan if x is None else x for x in col], dtype=np.float64)
+        else:
+            out[c] = col
+    return out

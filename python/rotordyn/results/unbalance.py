@@ -34,6 +34,7 @@ class UnbalanceResult(Display):
     unbalances: tuple
     operating_speed_hz: tuple | None = None
     max_real_1_per_s: np.ndarray | None = None
+    thermal: tuple = ()  # (n_speeds,) SystemThermalResult per speed (``thermal=``), else ()
 
     @property
     def stable(self) -> np.ndarray:
@@ -79,12 +80,14 @@ class UnbalanceResult(Display):
         return np.abs(self.forward_m - self.backward_m)
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per (speed, station)."""
+        """One row per (speed, station); with ``thermal`` (each speed at its own thermal
+        equilibrium) also the thermal columns of each speed
+        (:data:`rotordyn.results.thermal.THERMAL_POINT_COLUMNS`)."""
         from rotordyn.results.modes import whirl_index, whirl_label
 
         ns, nk = self.x.shape
         whirl = whirl_label(whirl_index(self.x, self.y, axis=()))  # per speed and station
-        return pd.DataFrame({
+        df = pd.DataFrame({
             "speed_hz": np.repeat(self.speeds_hz, nk),
             "station": np.tile(np.asarray(self.stations, dtype=np.int64), ns),
             "amplitude_x_m": np.abs(self.x).ravel(),
@@ -98,6 +101,12 @@ class UnbalanceResult(Display):
             "point_stable": np.repeat(self.stable, nk),
             "status": pd.Categorical(np.repeat(self.point_status, nk)),
         })
+        if self.thermal:
+            from rotordyn.results.thermal import thermal_frame_columns
+
+            for k, col in thermal_frame_columns(self.thermal, nk).items():
+                df[k] = col
+        return df
 
     def peaks(self, station: int | None = None, *, amplitude: str = "major") -> pd.DataFrame:
         """Resonance peaks of the response at ``station`` (default: the first output station):

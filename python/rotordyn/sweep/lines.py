@@ -157,6 +157,16 @@ def unbalance_line(job, variants, lo, hi, at, asms):
                           tuple(map(tuple, ub)),
                           tuple(opts["operating_speed_hz"]) if "operating_speed_hz" in opts
                           else None)
+    return [(np.repeat(at + np.arange(n), len(stations)),
+             unbalance_columns(res, speeds, stations, status, msg))]
+
+
+def unbalance_columns(res, speeds, stations, status, msg) -> dict:
+    """The (speed, station) columns of an unbalance line (flat, speed-major) from its
+    :class:`UnbalanceResult`: amplitudes, phases, orbit axes, the peaks' critical speed, AF
+    and separation margin (API 684)."""
+    n = len(speeds)
+    X, Y = res.x, res.y
     major, minor = res.major_m, res.minor_m
     ns = len(stations)
     peak = np.zeros((n, ns), bool)
@@ -169,7 +179,7 @@ def unbalance_line(job, variants, lo, hi, at, asms):
             crit[i, j] = float(r["critical_speed_hz"])
             amp[i, j] = float(r["amplification_factor"])
             sep[i, j] = float(r.get("separation_margin_pct", math.nan))
-    return [(np.repeat(at + np.arange(n), ns), {
+    return {
         "station": np.tile(np.array(stations, dtype=np.int64), n),
         # |z| by hypot (the scalar abs of each entry: numpy's vectorised complex abs can
         # differ from it in the last bit)
@@ -182,7 +192,7 @@ def unbalance_line(job, variants, lo, hi, at, asms):
         "critical_speed_hz": crit.ravel(), "amplification_factor": amp.ravel(),
         "separation_margin_pct": sep.ravel(),
         "status": np.repeat(np.array(status, dtype=object), ns),
-        "message": np.repeat(np.array(msg, dtype=object), ns)})]
+        "message": np.repeat(np.array(msg, dtype=object), ns)}
 
 
 def block_rows(job, chunk_id, lo, hi, asms, blocks, rows):

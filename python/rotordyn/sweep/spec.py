@@ -90,6 +90,35 @@ def _opt_operating(f, x):
     return [lo, hi]
 
 
+# options.thermal: each point at its own thermal equilibrium (the model's [thermal]; these
+# scalar keywords of rotordyn.system_thermal_equilibrium override it for every film)
+_THERMAL_KEYS = {"model": _opt_choice("effective", "thd"), "tol_k": _opt_range(0.0, 1.0),
+                 "supply_temperature_c": lambda f, x: v.finite(f, x),
+                 "carry_over": lambda f, x: v.in_range(f, x, 0.0, 1.0, lo_open=False),
+                 "effective_factor": lambda f, x: v.in_range(f, x, 0.0, 1.0, lo_open=False),
+                 "supply_flow_m3_s": lambda f, x: v.non_negative(f, x),
+                 "journal_htc_w_m2k": lambda f, x: v.non_negative(f, x),
+                 "bush_htc_w_m2k": lambda f, x: v.non_negative(f, x),
+                 "journal_temperature_c": lambda f, x: v.finite(f, x),
+                 "bush_temperature_c": lambda f, x: v.finite(f, x)}
+
+
+def _opt_thermal(f, x):
+    if x is True:
+        return {}
+    if not isinstance(x, dict):
+        raise InputError(f"{f}: expected true or a table of thermal keywords "
+                         f"({', '.join(_THERMAL_KEYS)}), got {x!r}")
+    out = {}
+    for k, val in x.items():
+        if k not in _THERMAL_KEYS:
+            raise InputError(f"{f}.{k}: unknown thermal keyword (allowed: "
+                             f"{', '.join(_THERMAL_KEYS)}; the oil and per-film values come "
+                             "from the model's [thermal], axes thermal.<field>)")
+        out[k] = _THERMAL_KEYS[k](f"{f}.{k}", val)
+    return out
+
+
 _EQ = {"method": _opt_choice("newton", "successive"), "tol": _opt_range(0.0, 1e-2),
        "max_iter": _opt_int(1, 10000)}
 _LIN = {"linearization": _opt_choice("perturbation", "finite_difference")}
@@ -97,15 +126,15 @@ OPTIONS = {
     "equilibrium": dict(_EQ),
     "thermal": {"tol_k": _opt_range(0.0, 1.0)},
     "stability": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "track": _opt_bool,
-                  "line": _opt_axis},
-    "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000)},
+                  "line": _opt_axis, "thermal": _opt_thermal},
+    "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "thermal": _opt_thermal},
     "threshold": {"vary": _opt_axis, "exclude_sleeve_modes": _opt_bool,
                   "xtol": _opt_range(0.0, math.inf)},
     "boundary": {"x": _opt_axis, "y": _opt_axis, "z": _opt_axis,
                  "resolution": _opt_int(3, 100001), "refine": _opt_choice("columns", "cells"),
                  "exclude_sleeve_modes": _opt_bool},
     "unbalance": {**_LIN, "unbalances": _opt_unbalances, "stations": _opt_stations,
-                  "operating_speed_hz": _opt_operating},
+                  "operating_speed_hz": _opt_operating, "thermal": _opt_thermal},
     "waterfall": {"unbalances": _opt_unbalances, "revolutions": _opt_int(4, 10000),
                   "samples_per_revolution": _opt_int(8, 4096),
                   "max_harmonic": _opt_range(0.0, 100.0),
@@ -446,6 +475,9 @@ class SweepSpec:
         model; option stations exist. InputError names the axis."""
         if self.analysis == "thermal" and getattr(system, "thermal", None) is None:
             raise InputError("analysis: 'thermal' needs the model's oil system (a [thermal] "
+                             "table in the model file, docs/model-file.md)")
+        if "thermal" in self.options and getattr(system, "thermal", None) is None:
+            raise InputError("options.thermal: needs the model's oil system (a [thermal] "
                              "table in the model file, docs/model-file.md)")
         for name, vals in self.axes.items():
             if name in OPERATING:

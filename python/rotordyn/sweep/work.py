@@ -20,6 +20,8 @@ from rotordyn.sweep.lines import threshold_line, unbalance_line
 from rotordyn.sweep.point_blocks import runup_blocks, thermal_blocks, waterfall_blocks
 from rotordyn.sweep.points import STATUS, Variants, base_system
 from rotordyn.sweep.robust_rows import outputs as robust_outputs, robust_blocks
+from rotordyn.sweep.thermal_rows import (stab_blocks as thermal_stab_blocks,
+                                         unbalance_blocks as thermal_unbalance_blocks)
 
 
 WHIRL = ["forward", "backward", "planar"]
@@ -72,8 +74,23 @@ OUTPUTS["limit_cycle"] = {"record": _cat(["hopf", "cycle"]), **OUTPUTS["hopf"],
                           "newton_iterations": I64}
 
 
-def schema(analysis: str, axes: list[str]) -> pa.Schema:
-    """The fixed arrow schema of a sweep's rows (every chunk is cast to it)."""
+# a stability / Campbell / unbalance sweep with ``options.thermal`` (:mod:`.thermal_rows`):
+# the point's thermal outputs, per film (lists in the order of ``film``) and summarised
+# (rotordyn.results.thermal.THERMAL_POINT_COLUMNS)
+THERMAL_OUTPUTS = {"film": pa.list_(STR), "film_effective_temperature_c": pa.list_(F64),
+                   "film_max_temperature_c": pa.list_(F64), "film_power_loss_w": pa.list_(F64),
+                   "max_temperature_c": F64, "power_loss_w": F64, "thermal_iterations": I64}
+THERMAL_ANALYSES = ("stability", "campbell", "unbalance")
+
+
+def thermal_on(job) -> bool:
+    """Whether ``job`` runs each point at its own thermal equilibrium (``options.thermal``)."""
+    return job.analysis in THERMAL_ANALYSES and job.options.get("thermal") is not None
+
+
+def schema(analysis: str, axes: list[str], thermal: bool = False) -> pa.Schema:
+    """The fixed arrow schema of a sweep's rows (every chunk is cast to it); ``thermal``:
+    with the thermal outputs of ``options.thermal``."""
     fields = [pa.field("sweep_id", pa.dictionary(pa.int8(), STR)),
               pa.field("point_id", I64), pa.field("chunk_id", I64)]
     base = ["speed_hz", "chamber_pressure_pa", "config_ay_m"]
@@ -83,6 +100,8 @@ def schema(analysis: str, axes: list[str]) -> pa.Schema:
         fields.append(pa.field(f"i_{a}", I32))
     for k, t in OUTPUTS[analysis].items():
         fields.append(pa.field(k, t[0] if isinstance(t, tuple) else t))
+    if thermal:
+        fields += [pa.field(k, t) for k, t in THERMAL_OUTPUTS.items()]
     fields += [pa.field("status", pa.dictionary(pa.int8(), STR)), pa.field("message", STR)]
     return pa.schema(fields)
 
@@ -154,9 +173,13 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
     if pids is not None:
         blocks = boundary_blocks(job, variants, chunk_id, pl, asms,
                                  equilibria=eqs if job.return_equilibria else None)
+    elif thermal_on(job):  # each point at its own thermal equilibrium
+        blocks = (thermal_unbalance_blocks if job.analysis == "unbalance" else
+                  thermal_stab_blocks)(job, variants, chunk_id, pl, asms)
     else:
         blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
-    t = block_table(job, schema(job.analysis, list(job.axes)), categories(job.analysis),
+    t = block_table(job, schema(job.analysis, list(job.axes), thermal_on(job)),
+                    categories(job.analysis),
                     identity(job, chunk_id, pl, asms), blocks)
     if eqs:  # the points' equilibria, for the next refinement level's starts
         t = t.replace_schema_metadata({**(t.schema.metadata or {}),
