@@ -135,6 +135,12 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
   const bool screen = opt.screen_rtol > 0 && opt.screen_rtol > srtol;
   double pass_rtol = screen ? opt.screen_rtol : srtol;
   bool dxdp_ok = false;  // the last sensitivity flow gave ∂R/∂p
+  // Screening from the previous point's matrix: the first flow is already the screened final
+  // pass (on a short step the predictor is usually within tol: the flow without
+  // sensitivities that would only confirm it is saved). If it is not within tol, its
+  // error-controlled Φ and ∂R/∂p are the Newton matrix and the iterations go on without.
+  bool speculative = screen && !fresh && !errcon;
+  if (speculative) errcon = true;
   for (int it = 0; it <= opt.max_iter + 2; ++it) {
     in_p = at_parameter(c, p);
     Flow F;
@@ -171,6 +177,8 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
       break;
     }
     const bool done = res < opt.tol;
+    if (speculative && !done) errcon = opt.sensitivity_error_control;
+    speculative = false;
     if (done && !errcon) {  // converged without the sensitivities' error test: one more pass
       errcon = true;        // at the same point with it (no ∂R/∂p needed for this one)
       continue;
@@ -181,7 +189,7 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
       const double mu_t = fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
       if (opt.screen_margin > 0 &&
           (fq.critical < 0 || std::abs(fq.critical_modulus - 1.0) < opt.screen_margin ||
-           mu_t > 0.1 * opt.screen_margin)) {
+           mu_t > opt.screen_margin)) {
         pass_rtol = srtol;  // the same point again at the full tolerance
         continue;
       }

@@ -74,10 +74,11 @@ struct ShootingOptions {
   /// Continuation only: > 0 gives the final pass (sensitivities in the error test) first at
   /// this looser sensitivity tolerance; it is repeated at sensitivity_rtol only where the
   /// stability verdict is not safe at the screening tolerance: | |μ_c| − 1 | < screen_margin
-  /// or |μ_trivial − 1| > screen_margin / 10 (a poor monodromy). 0: off. screen_margin 0:
-  /// never repeated (every point keeps the screening tolerance; for measurements).
+  /// or |μ_trivial − 1| > screen_margin (a poor monodromy). 0: off. screen_margin 0: never
+  /// repeated (every point keeps the screening tolerance; for measurements). A corrector
+  /// starting from the previous point's matrix runs its first flow as the screened pass.
   double screen_rtol = 0.0;
-  double screen_margin = 0.05;
+  double screen_margin = 0.005;
 };
 
 /// Floquet multipliers of a monodromy matrix and the type of the critical one.

@@ -55,7 +55,7 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
                  max_iter: int = 8, max_steps: int = 200000, fd_step: float = 1e-4,
                  n_out: int = 101, sensitivity_rtol: float | None = None,
                  newton: str = "sensitivities", screen_rtol: float = 1e-4,
-                 screen_margin: float = 0.05, progress=None) -> BranchResult:
+                 screen_margin: float = 0.005, progress=None) -> BranchResult:
     """Continue the periodic orbit ``start`` over ``vary`` within ``bounds``.
 
     Parameters
@@ -101,7 +101,7 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
         ``newton="fast"`` only: each point's final pass (sensitivities in the error test)
         runs first at the sensitivity tolerance ``screen_rtol``, and again at
         ``sensitivity_rtol`` where the verdict is not safe at the looser one:
-        ||μ_c| − 1| < ``screen_margin`` or |μ_trivial − 1| > ``screen_margin``/10. Each
+        ||μ_c| − 1| < ``screen_margin`` or |μ_trivial − 1| > ``screen_margin``. Each
         point's ``stats["monodromy_rtol"]`` says which tolerance its multipliers have
         (``screen_margin`` 0: never repeated, for measurements).
     progress
