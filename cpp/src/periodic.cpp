@@ -173,7 +173,7 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
     N_Vector* atolS = N_VCloneVectorArray(Ns, y);
     for (int j = 0; j < Ns; ++j) {
       Eigen::Map<Eigen::VectorXd> s(N_VGetArrayPointer(atolS[j]), N);
-      s = j < N ? Eigen::VectorXd(sens_rtol * AT / AT(j)) : Eigen::VectorXd(sens_rtol * AT / F.p_unit);
+      s = sens_rtol * AT / (j < N ? AT(j) : F.p_unit);
     }
     const int f = CVodeSensSVtolerances(mem, sens_rtol, atolS);
     N_VDestroyVectorArray(atolS, Ns);
