@@ -34,7 +34,10 @@ void bind_periodic(py::module_& m) {
       .def_readwrite("max_iter", &ShootingOptions::max_iter)
       .def_readwrite("sensitivity_error_control", &ShootingOptions::sensitivity_error_control)
       .def_readwrite("sensitivity_rtol", &ShootingOptions::sensitivity_rtol)
-      .def_readwrite("broyden", &ShootingOptions::broyden);
+      .def_readwrite("broyden", &ShootingOptions::broyden)
+      .def_readwrite("parameter_sensitivity", &ShootingOptions::parameter_sensitivity)
+      .def_readwrite("screen_rtol", &ShootingOptions::screen_rtol)
+      .def_readwrite("screen_margin", &ShootingOptions::screen_margin);
   py::class_<Floquet>(m, "Floquet")
       .def_readonly("multipliers", &Floquet::multipliers)
       .def_readonly("trivial", &Floquet::trivial)
@@ -63,7 +66,8 @@ void bind_periodic(py::module_& m) {
       .def_readonly("sens_rhs_evals", &PeriodicOrbitResult::sens_rhs_evals)
       .def_readonly("jac_evals", &PeriodicOrbitResult::jac_evals)
       .def_readonly("reynolds_solves", &PeriodicOrbitResult::reynolds_solves)
-      .def_readonly("sensitivity_flows", &PeriodicOrbitResult::sensitivity_flows);
+      .def_readonly("sensitivity_flows", &PeriodicOrbitResult::sensitivity_flows)
+      .def_readonly("monodromy_rtol", &PeriodicOrbitResult::monodromy_rtol);
   m.def("periodic_orbit", &periodic_orbit, py::arg("solver"), py::arg("input"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>(),
         "Periodic orbit of eq. 12 by single shooting (CVODES forward sensitivities for the "

@@ -32,6 +32,20 @@ PeriodicInput at_parameter(const ContinuationInput& c, double p) {
   return in;
 }
 
+// ∂f/∂p of eq. 12's right-hand side where f is affine in p (first-order form, (N)): p_c
+// enters the constant force p_c c_s, a_y the spring force −K a(p); empty for the speed (M, G,
+// the films and the period depend on Ω: the central difference of two flows stays).
+Eigen::VectorXd parameter_rhs(const Flow& F, const SystemModel& m, const ContinuationInput& c) {
+  Eigen::VectorXd d;
+  if (c.parameter == ContinuationParameter::speed) return d;
+  d = Eigen::VectorXd::Zero(F.N);
+  if (c.parameter == ContinuationParameter::chamber_pressure)
+    d.tail(F.n) = F.Mllt.solve(m.chamber);
+  else
+    d.tail(F.n) = -F.Mllt.solve(m.K * c.config_direction);
+  return d;
+}
+
 // One flow without sensitivities: φ_T(x; p) − x, or an empty vector when CVODES fails.
 Eigen::VectorXd residual(SystemSolver& solver, const ContinuationInput& c, const Eigen::VectorXd& x,
                          double T, double p, const CvodeOptions& opt) {
@@ -116,13 +130,30 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
   if (!fresh) JR = c.jacobian;
   bool refreshed = false;
   Eigen::VectorXd R_prev, tcol_prev, dz_prev;
-  for (int it = 0; it <= opt.max_iter + 1; ++it) {
+  // The final pass's sensitivity tolerance: screen_rtol first when screening (repeated at
+  // srtol where the verdict is not safe), else srtol.
+  const bool screen = opt.screen_rtol > 0 && opt.screen_rtol > srtol;
+  double pass_rtol = screen ? opt.screen_rtol : srtol;
+  bool dxdp_ok = false;  // the last sensitivity flow gave ∂R/∂p
+  // Screening from the previous point's matrix: the first flow is already the screened final
+  // pass (on a short step the predictor is usually within tol: the flow without
+  // sensitivities that would only confirm it is saved). If it is not within tol, its
+  // error-controlled Φ and ∂R/∂p are the Newton matrix and the iterations go on without.
+  bool speculative = screen && !fresh && !errcon;
+  if (speculative) errcon = true;
+  for (int it = 0; it <= opt.max_iter + 2; ++it) {
     in_p = at_parameter(c, p);
     Flow F;
     setup_flow(F, solver, in_p);
+    if (opt.parameter_sensitivity) {
+      F.dfdp = parameter_rhs(F, solver.model(), c);
+      F.p_unit = Dp * opt.cvode.atol_position / Dx(0);
+    }
     const double TT = autonomous ? T : in_p.period;
     const bool sens = errcon || fresh || !opt.broyden;
-    run = run_flow(F, x, in_p.t0, TT, sens, in_p.n_out, opt.cvode, errcon, srtol);
+    run = run_flow(F, x, in_p.t0, TT, sens, in_p.n_out, opt.cvode, errcon,
+                   errcon ? pass_rtol : srtol);
+    dxdp_ok = sens && run.dxdp.size() == N;
     o.iterations = it + 1;
     if (sens) ++o.sensitivity_flows;
     o.steps += run.steps;
@@ -146,9 +177,22 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
       break;
     }
     const bool done = res < opt.tol;
+    if (speculative && !done) errcon = opt.sensitivity_error_control;
+    speculative = false;
     if (done && !errcon) {  // converged without the sensitivities' error test: one more pass
       errcon = true;        // at the same point with it (no ∂R/∂p needed for this one)
       continue;
+    }
+    if (done && screen && pass_rtol != srtol && run.Phi.allFinite()) {
+      // The screened final pass: keep it only where its stability verdict is safe.
+      const Floquet fq = floquet(run.Phi, autonomous);
+      const double mu_t = fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
+      if (opt.screen_margin > 0 &&
+          (fq.critical < 0 || std::abs(fq.critical_modulus - 1.0) < opt.screen_margin ||
+           mu_t > opt.screen_margin)) {
+        pass_rtol = srtol;  // the same point again at the full tolerance
+        continue;
+      }
     }
     const bool stalled = !done && !refreshed && o.residuals.size() > 1 &&
                          res > 0.5 * o.residuals[o.residuals.size() - 2];
@@ -161,20 +205,24 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
     Eigen::VectorXd tcol;
     if (autonomous) tcol = DT * vector_field(F, in_p.t0 + T, run.xT).cwiseQuotient(Dx);
     if (sens) {
-      // ∂R/∂p by a central difference (also needed for the tangent at the converged point).
-      const Eigen::VectorXd Rp1 = residual(solver, c, x, T, p + h, opt.cvode);
-      const Eigen::VectorXd Rm1 = residual(solver, c, x, T, p - h, opt.cvode);
-      out.fd_flows += 2;
-      if (Rp1.size() == 0 || Rm1.size() == 0) {
-        o.status = "not_converged";
-        o.message = "corrector iteration " + std::to_string(it) +
-                    ": a flow at p ± h for the parameter derivative failed";
-        break;
-      }
       JR = Eigen::MatrixXd::Zero(N, U);
       JR.leftCols(N) = Dx.cwiseInverse().asDiagonal() * run.Phi * Dx.asDiagonal() -
                        Eigen::MatrixXd::Identity(N, N);
-      JR.col(U - 1) = ((Rp1 - Rm1) / (2 * c.fd_step)).cwiseQuotient(Dx);
+      if (dxdp_ok) {  // ∂R/∂p = ∂x(t0 + T)/∂p from the parameter column (scaled)
+        JR.col(U - 1) = Dp * run.dxdp.cwiseQuotient(Dx);
+      } else {
+        // ∂R/∂p by a central difference (also needed for the tangent at the converged point).
+        const Eigen::VectorXd Rp1 = residual(solver, c, x, T, p + h, opt.cvode);
+        const Eigen::VectorXd Rm1 = residual(solver, c, x, T, p - h, opt.cvode);
+        out.fd_flows += 2;
+        if (Rp1.size() == 0 || Rm1.size() == 0) {
+          o.status = "not_converged";
+          o.message = "corrector iteration " + std::to_string(it) +
+                      ": a flow at p ± h for the parameter derivative failed";
+          break;
+        }
+        JR.col(U - 1) = ((Rp1 - Rm1) / (2 * c.fd_step)).cwiseQuotient(Dx);
+      }
       fresh = false;
     } else if (dz_prev.size() == U) {
       // Broyden on the x and p columns: JR += (y − JR s) sᵀ / sᵀs, s the last step without
@@ -278,6 +326,7 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
   o.v = run.X.rightCols(n);
   o.monodromy = run.Phi;
   o.floquet = floquet(o.monodromy, autonomous);
+  o.monodromy_rtol = pass_rtol;
   // Tangent: null vector of the rows R (and phase) in the unknowns, bordered by the previous
   // tangent (first point: by e_p), oriented along it (first point: p growing with direction).
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(U, U);

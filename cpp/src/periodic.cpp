@@ -84,7 +84,9 @@ int sens_rhs(int Ns, sunrealtype, N_Vector y, N_Vector, N_Vector* yS, N_Vector* 
     const Eigen::MatrixXd& A = jacobian_at(F, Y);
     for (int j = 0; j < Ns; ++j) {
       Eigen::Map<const Eigen::VectorXd> s(N_VGetArrayPointer(yS[j]), F.N);
-      Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(ySdot[j]), F.N).noalias() = A * s;
+      Eigen::Map<Eigen::VectorXd> sd(N_VGetArrayPointer(ySdot[j]), F.N);
+      sd.noalias() = A * s;
+      if (j == F.N) sd += F.dfdp;  // the parameter column
     }
     ++F.sens_evals;
   });
@@ -123,10 +125,11 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
   SUNMatrix Jm = SUNDenseMatrix(NN, NN, ctx);
   SUNLinearSolver LS = SUNLinSol_Dense(y, Jm, ctx);
   void* mem = CVodeCreate(CV_BDF, ctx);
-  N_Vector* yS = sens ? N_VCloneVectorArray(static_cast<int>(N), y) : nullptr;
+  const int Ns = static_cast<int>(N) + (F.dfdp.size() == N ? 1 : 0);
+  N_Vector* yS = sens ? N_VCloneVectorArray(Ns, y) : nullptr;
   std::vector<sunrealtype> atolS_data;
   auto cleanup = [&]() {
-    if (yS) N_VDestroyVectorArray(yS, static_cast<int>(N));
+    if (yS) N_VDestroyVectorArray(yS, Ns);
     CVodeFree(&mem);
     SUNLinSolFree(LS);
     SUNMatDestroy(Jm);
@@ -161,19 +164,19 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
   if (sens) {
     // S(t0) = I. Column j is ∂x/∂x0_j: its absolute tolerance is rtol·atol_i/atol_j, i.e.
     // rtol in the units where each coordinate is measured by its own absolute tolerance.
-    for (Eigen::Index j = 0; j < N; ++j) {
+    for (int j = 0; j < Ns; ++j) {
       Eigen::Map<Eigen::VectorXd> s(N_VGetArrayPointer(yS[j]), N);
       s.setZero();
-      s(j) = 1.0;
+      if (j < N) s(j) = 1.0;
     }
-    check(CVodeSensInit(mem, static_cast<int>(N), CV_STAGGERED, sens_rhs, yS), "CVodeSensInit");
-    N_Vector* atolS = N_VCloneVectorArray(static_cast<int>(N), y);
-    for (Eigen::Index j = 0; j < N; ++j) {
+    check(CVodeSensInit(mem, Ns, CV_STAGGERED, sens_rhs, yS), "CVodeSensInit");
+    N_Vector* atolS = N_VCloneVectorArray(Ns, y);
+    for (int j = 0; j < Ns; ++j) {
       Eigen::Map<Eigen::VectorXd> s(N_VGetArrayPointer(atolS[j]), N);
-      s = sens_rtol * AT / AT(j);
+      s = sens_rtol * AT / (j < N ? AT(j) : F.p_unit);
     }
     const int f = CVodeSensSVtolerances(mem, sens_rtol, atolS);
-    N_VDestroyVectorArray(atolS, static_cast<int>(N));
+    N_VDestroyVectorArray(atolS, Ns);
     check(f, "CVodeSensSVtolerances");
     check(CVodeSetSensErrCon(mem, sens_errcon ? SUNTRUE : SUNFALSE), "CVodeSetSensErrCon");
   }
@@ -212,6 +215,7 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
     out.Phi.resize(N, N);
     for (Eigen::Index j = 0; j < N; ++j)
       out.Phi.col(j) = Eigen::Map<const Eigen::VectorXd>(N_VGetArrayPointer(yS[j]), N);
+    if (Ns > N) out.dxdp = Eigen::Map<const Eigen::VectorXd>(N_VGetArrayPointer(yS[N]), N);
   }
   cleanup();
   return out;
@@ -498,6 +502,7 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
     return out;
   }
   out.floquet = floquet(out.monodromy, autonomous);
+  out.monodromy_rtol = opt.sensitivity_rtol > 0 ? opt.sensitivity_rtol : opt.cvode.rtol;
   return out;
 }
 

@@ -27,11 +27,18 @@ struct Flow {
   std::string last_error, cvode_message;
   bool contact = false;
   long sens_evals = 0;
+  // Optional parameter column: with dfdp (N) set, the flows with sensitivities integrate one
+  // more column s_p, ṡ_p = A s_p + dfdp, s_p(t0) = 0 (∂x/∂p for an f affine in p); its
+  // absolute tolerances are sens_rtol · atol_i / p_unit (p_unit: the change of p that counts
+  // as much as one absolute tolerance of the positions).
+  Eigen::VectorXd dfdp;
+  double p_unit = 1.0;
 };
 
 struct FlowRun {
   Eigen::VectorXd xT;
   Eigen::MatrixXd Phi;       // empty without sensitivities
+  Eigen::VectorXd dxdp;      // ∂x(t0 + T)/∂p with F.dfdp and sensitivities, else empty
   Eigen::VectorXd t;         // samples
   Eigen::MatrixXd X;         // (n_out, N)
   int flag = 0;              // < 0: CVODES failure

@@ -67,6 +67,18 @@ struct ShootingOptions {
   /// with sensitivities when a step does not halve the residual. false: sensitivities in
   /// every iteration (Newton). The final pass is the same either way.
   bool broyden = false;
+  /// Continuation only (continuation_step): ∂R/∂p from one more CVODES sensitivity column in
+  /// the flows with sensitivities (ṡ_p = A s_p + ∂f/∂p, exact for p_c and a_y, where f is
+  /// affine in p) instead of two flows at p ± h. The speed keeps the central difference.
+  bool parameter_sensitivity = false;
+  /// Continuation only: > 0 gives the final pass (sensitivities in the error test) first at
+  /// this looser sensitivity tolerance; it is repeated at sensitivity_rtol only where the
+  /// stability verdict is not safe at the screening tolerance: | |μ_c| − 1 | < screen_margin
+  /// or |μ_trivial − 1| > screen_margin (a poor monodromy). 0: off. screen_margin 0: never
+  /// repeated (every point keeps the screening tolerance; for measurements). A corrector
+  /// starting from the previous point's matrix runs its first flow as the screened pass.
+  double screen_rtol = 0.0;
+  double screen_margin = 0.005;
 };
 
 /// Floquet multipliers of a monodromy matrix and the type of the critical one.
@@ -101,6 +113,9 @@ struct PeriodicOrbitResult {
   std::string message;
   long steps = 0, rhs_evals = 0, sens_rhs_evals = 0, jac_evals = 0, reynolds_solves = 0;
   long sensitivity_flows = 0;      ///< flows with sensitivities among the `iterations`
+  /// The sensitivity tolerance of the pass that gave the reported monodromy (the error test's
+  /// relative tolerance: sensitivity_rtol, or screen_rtol for a screened continuation point).
+  double monodromy_rtol = 0.0;
 };
 
 /// Shooting Newton from (r0, v0, period). A failure (no convergence, the journal reaching the

@@ -54,7 +54,8 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
                  rtol: float = 1e-8, atol_m: float = 1e-12, tol: float = 1e-6,
                  max_iter: int = 8, max_steps: int = 200000, fd_step: float = 1e-4,
                  n_out: int = 101, sensitivity_rtol: float | None = None,
-                 newton: str = "sensitivities", progress=None) -> BranchResult:
+                 newton: str = "sensitivities", screen_rtol: float = 1e-4,
+                 screen_margin: float = 0.005, progress=None) -> BranchResult:
     """Continue the periodic orbit ``start`` over ``vary`` within ``bounds``.
 
     Parameters
@@ -93,6 +94,16 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
         corrector starts from the previous point's bordered matrix and updates it by Broyden
         from flows without sensitivities; Φ and ∂R/∂p are recomputed at the converged point
         (and when a step does not halve the residual). Both converge within tol.
+        ``"fast"`` (opt-in, issue 19's 50-point branch): Broyden as above, ∂R/∂p from one
+        more CVODES sensitivity column (p_c, a_y; the speed keeps the central difference),
+        and the final pass screened at ``screen_rtol`` (docs/nonlinear.md).
+    screen_rtol, screen_margin
+        ``newton="fast"`` only: each point's final pass (sensitivities in the error test)
+        runs first at the sensitivity tolerance ``screen_rtol``, and again at
+        ``sensitivity_rtol`` where the verdict is not safe at the looser one:
+        ||μ_c| − 1| < ``screen_margin`` or |μ_trivial − 1| > ``screen_margin``. Each
+        point's ``stats["monodromy_rtol"]`` says which tolerance its multipliers have
+        (``screen_margin`` 0: never repeated, for measurements).
     progress
         None, or a callable(point_index, BranchResult-so-far message) for progress lines.
 
@@ -199,7 +210,12 @@ def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
     opt.cvode, opt.tol, opt.max_iter = c, float(tol), int(max_iter)
     if sensitivity_rtol is not None:
         opt.sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
-    opt.broyden = v.choice("newton", newton, NEWTON) == "broyden"
+    newton = v.choice("newton", newton, NEWTON + ("fast",))
+    opt.broyden = newton in ("broyden", "fast")
+    if newton == "fast":
+        opt.parameter_sensitivity = True
+        opt.screen_rtol = v.in_range("screen_rtol", screen_rtol, 1e-14, 0.1)
+        opt.screen_margin = v.in_range("screen_margin", screen_margin, 0.0, 0.5)
 
     def point_result(step, p_core):
         p = p_core / to_core

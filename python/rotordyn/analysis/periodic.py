@@ -249,5 +249,6 @@ def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: floa
         stats={"iterations": res.iterations, "steps": res.steps, "rhs_evals": res.rhs_evals,
                "sens_rhs_evals": res.sens_rhs_evals, "jac_evals": res.jac_evals,
                "reynolds_solves": res.reynolds_solves,
-               "sensitivity_flows": res.sensitivity_flows},
+               "sensitivity_flows": res.sensitivity_flows,
+               "monodromy_rtol": float(res.monodromy_rtol)},
         status=status, message=message)

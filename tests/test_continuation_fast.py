@@ -1,0 +1,114 @@
+"""The fast corrector route of the continuation (``newton="fast"``, issue 19's 50-point branch;
+docs/nonlinear.md, "The 50-point branch"): Broyden correctors from the previous point's
+matrix, ∂R/∂p from a CVODES parameter-sensitivity column instead of two flows at p ± h, and
+each point's final pass screened at a looser sensitivity tolerance (repeated at the full one
+where the stability verdict is not safe there).
+
+Reference: the default route (``newton="sensitivities"``: Newton with the monodromy and the
+central-difference ∂R/∂p at every iteration, every final pass at the full tolerance) on the
+same model, start and constant step — an independent computation of the same branch. Both
+correctors stop below ``tol`` = 1e-4 in the scaled residual, so a point may move by about
+tol/(1 − |μ_c|) of the length scale (|μ_c| ≤ 0.998 on this branch) and its successors follow
+it along the branch: the tolerances below are that bound, not the round-off."""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+import rotordyn as rd
+
+TOL = 1e-4
+
+
+@pytest.fixture(scope="module")
+def rig_cycle():
+    """The paper rig (36 × 6 film grid for speed) and its stable cycle at a_y = −1.85 mm,
+    50 Hz, 0.05 MPa from a 0.6 s transient (as tests/test_continuation.py)."""
+    rig = rd.models.paper_rig()
+    b = rig.bearings[0]
+    rig = dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
+                              + tuple(rig.bearings[1:]))
+    tr = rd.transient(rig, 0.6, 50.0, 0.05e6, -1.85e-3, disturbance_m=(0.0, 3e-5), n_out=6001)
+    cyc = rd.periodic_orbit(rig, 50.0, 0.05e6, -1.85e-3, start=tr, rtol=1e-6, tol=TOL)
+    assert cyc.ok, cyc.message
+    return rig, cyc
+
+
+def _branch(rig, cyc, vary, bounds, newton, **kw):
+    return rd.continuation(rig, vary, bounds, cyc, rtol=1e-6, tol=TOL, ds=0.1, ds_max=0.1,
+                           max_points=12, newton=newton, **kw)
+
+
+def _same_branch(ref, fast, *, dp, damp_c):
+    assert fast.ok and ref.ok
+    assert len(fast) == len(ref) and fast.stop == ref.stop
+    np.testing.assert_array_equal(fast.stable, ref.stable)
+    # the type where |μ_c| < 0.99: nearer 1 the radial multiplier and the trivial one form a
+    # near-double eigenvalue that the eigen-solver may return as a pair 1 ± 0.002j (the
+    # default route calls it neimark_sacker at 0.99965 − 0.0023j, Broyden and fast fold)
+    far = ref.max_multiplier < 0.99
+    assert np.array(fast.critical_type)[far].tolist() == np.array(ref.critical_type)[far].tolist()
+    assert np.max(np.abs(fast.parameter - ref.parameter)) < dp
+    amp = np.abs(fast.amplitude_m[:, 0] - ref.amplitude_m[:, 0]) / ref.clearance_m[0]
+    assert np.max(amp) < damp_c
+    np.testing.assert_allclose(fast.period_s, ref.period_s, rtol=1e-4)
+    np.testing.assert_allclose(fast.max_multiplier, ref.max_multiplier, atol=5e-3)
+    assert [b["kind"] for b in fast.bifurcations] == [b["kind"] for b in ref.bifurcations]
+
+
+def test_fast_route_gives_the_default_branch_to_the_hopf_point(rig_cycle):
+    """p_c from 0.05 MPa up to the Hopf end (ds = 0.1 constant: 8 points, then the turn):
+    the fast route's points equal the default's — p_c within 100 Pa (0.17 %), amplitude
+    within 1e-3 c, period 1e-4 relative, |μ_c| within 5e-3 (measured: 73 Pa, 4.7e-4 c,
+    2.9e-3 at the 19 µm point, where |μ_c| = 0.997 makes a point uncertain by up to
+    tol/(1 − |μ_c|) ≈ 0.03 L along the branch and the branch rises by ~350 Pa per 20 µm;
+    |μ_c| differs by that shift times dμ/dp ≈ 6e-5 per Pa; elsewhere ≤ 25 Pa) —, the same
+    stability flags, the same critical types where |μ_c| < 0.99, the same bifurcation list
+    (the Hopf end) with p_H within 50 Pa (measured 27 Pa). Fewer flows with sensitivities
+    and no finite-difference flows (∂R/∂p from the parameter column). Every point whose
+    critical multiplier lies within the screening margin of the unit circle (or whose trivial
+    multiplier is off by more than a tenth of it) carries the full tolerance
+    (``stats["monodromy_rtol"]`` = rtol): the verdicts near 1 are error-controlled at
+    the full tolerance, and the others say they are not."""
+    rig, cyc = rig_cycle
+    bounds = (0.04e6, 0.08e6)
+    ref = _branch(rig, cyc, "chamber_pressure_pa", bounds, "sensitivities")
+    fast = _branch(rig, cyc, "chamber_pressure_pa", bounds, "fast")
+    assert ref.stop == "hopf" and len(ref) >= 6, (ref.stop, len(ref))
+    _same_branch(ref, fast, dp=100.0, damp_c=1e-3)
+    assert fast.bifurcations[-1]["parameter"] == pytest.approx(
+        ref.bifurcations[-1]["parameter"], abs=50.0)
+    assert fast.stats["fd_flows"] == 0 < ref.stats["fd_flows"]
+    assert fast.stats["sensitivity_flows"] < ref.stats["sensitivity_flows"]
+    for o in fast.orbits:
+        near = (abs(abs(o.critical_multiplier) - 1) < 5e-3
+                or abs(o.trivial_multiplier - 1) > 5e-3)
+        assert o.stats["monodromy_rtol"] == (1e-6 if near else 1e-4)
+    assert any(o.stats["monodromy_rtol"] == 1e-4 for o in fast.orbits)  # screening used
+    assert all(o.stats["monodromy_rtol"] == 1e-6 for o in ref.orbits)
+
+
+def test_fast_route_over_ay_uses_the_spring_force_derivative(rig_cycle):
+    """vary="config_ay_m": ∂f/∂a_y (−M⁻¹K times the configuration direction) in the
+    parameter column; 4 points upwards from −1.85 mm equal the default route's (a_y within
+    1e-7 m, amplitude 1e-3 c, same flags)."""
+    rig, cyc = rig_cycle
+    kw = {"max_points": 4}
+    ref = rd.continuation(rig, "config_ay_m", (-3e-3, 0.0), cyc, rtol=1e-6, tol=TOL, ds=0.05,
+                          ds_max=0.05, newton="sensitivities", **kw)
+    fast = rd.continuation(rig, "config_ay_m", (-3e-3, 0.0), cyc, rtol=1e-6, tol=TOL, ds=0.05,
+                           ds_max=0.05, newton="fast", **kw)
+    _same_branch(ref, fast, dp=1e-7, damp_c=1e-3)
+    assert np.all(np.diff(fast.parameter) > 0)
+    assert fast.stats["fd_flows"] == 0
+
+
+@pytest.mark.parametrize("kw, field", [({"screen_rtol": 0.5}, "screen_rtol"),
+                                       ({"screen_margin": -1.0}, "screen_margin"),
+                                       ({"newton": "secant"}, "newton")])
+def test_fast_route_bad_input_names_the_field(rig_cycle, kw, field):
+    rig, cyc = rig_cycle
+    args = {"newton": "fast", **kw}
+    with pytest.raises(rd.errors.InputError, match=field):
+        rd.continuation(rig, "chamber_pressure_pa", (0.04e6, 0.08e6), cyc, **args)
