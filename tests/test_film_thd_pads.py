@@ -16,6 +16,10 @@ What is compared, and why the tolerances:
   the dissipation of the pad's cells to 1e-9 (the discrete equations, solved directly);
 * the mixing: each pad's inlet temperature equals Ettles' balance with the upstream pad's
   outlet flow and temperature (1e-9);
+* the hot oil a pad passes on is its own mass balance: Q_out = Q_in − Q_s from the returned
+  face flows (1e-12 Q_in, round-off), equal to the trailing-edge cells' inflow where the film
+  conserves mass, at that flow's mixing-cup temperature (1e-9 K); with λ = 0.5 every pad draws
+  fresh oil and T_max lies near the effective-temperature pads' (a stated band);
 * the compressor of tests/data/models on two 5-pad tilting-pad bearings with the THD film in a
   system: equilibrium, stability, the frozen fields in the returned system (its equilibrium
   reproduces the thermal one), the model file's ``[thermal] model = "thd"`` round trip;
