@@ -77,7 +77,10 @@ def test_fixed_geometry_thd_system_equals_standalone_lobes_and_its_dynamics(kind
     n_lobes = {"two_axial_groove": 2, "three_lobe": 3, "pressure_dam": 2}[kind]
     assert res.bearing_names == tuple(f"{b.name}.lobe{k}" for b in s.bearings
                                       for k in range(n_lobes))
-    assert np.all(res.max_temperature_c > th.supply_temperature_c + 10.0)
+    # every lobe heats (the coolest three-lobe lobe rises 8.8 K since the hot oil passed on
+    # is the lobe's own mass balance Q − Q_s, 2026-12-03; it rose > 10 K with the overstated
+    # trailing-edge flux)
+    assert np.all(res.max_temperature_c > th.supply_temperature_c + 5.0)
     e = rotordyn.equilibrium(res.system, speed_hz=SPEED)
     assert e.status == "ok"
     c = s.bearings[0].clearance_m

@@ -16,6 +16,10 @@ What is compared, and why the tolerances:
   the dissipation of the pad's cells to 1e-9 (the discrete equations, solved directly);
 * the mixing: each pad's inlet temperature equals Ettles' balance with the upstream pad's
   outlet flow and temperature (1e-9);
+* the hot oil a pad passes on is its own mass balance: Q_out = Q_in − Q_s from the returned
+  face flows (1e-12 Q_in, round-off), equal to the trailing-edge cells' inflow where the film
+  conserves mass, at that flow's mixing-cup temperature (1e-9 K); with λ = 0.5 every pad draws
+  fresh oil and T_max lies near the effective-temperature pads' (a stated band);
 * the compressor of tests/data/models on two 5-pad tilting-pad bearings with the THD film in a
   system: equilibrium, stability, the frozen fields in the returned system (its equilibrium
   reproduces the thermal one), the model file's ``[thermal] model = "thd"`` round trip;
@@ -285,3 +289,90 @@ def test_thd_tilting_pad_against_ross():
     c_ross = np.array([[rb.cxx[0], rb.cxy[0]], [rb.cyx[0], rb.cyy[0]]], dtype=float)
     assert np.max(np.abs(res.K - k_ross)) < 0.25 * np.abs(k_ross).max()
     assert np.max(np.abs(res.C - c_ross)) < 0.25 * np.abs(c_ross).max()
+
+
+def _pad_flows(T, D, fl):
+    """From one pad's returned face flows (m³/s): the inflow Q_in from the inlet gap, the side
+    leakage Q_s (end cells' surplus), the flow the trailing-edge cells receive from the pad
+    (their energy equations' inflow) with its mixing-cup temperature, and the largest mass
+    imbalance of an interior non-inlet cell relative to Q_in (0 unless cavitated)."""
+    qp, qz = fl["q_phi_m3_s"], fl["q_z_m3_s"]
+    n, k1 = T.shape
+    inflow, outflow = np.zeros_like(T), np.zeros_like(T)
+    te = np.zeros(T.shape, bool)
+    q_in = 0.0
+    for j in range(n):
+        for k in range(k1):
+            faces = [((j, k), ((j + 1) % n, k), qp[j, k])]
+            if k < k1 - 1:
+                faces.append(((j, k), (j, k + 1), qz[j, k]))
+            for a, b, F in faces:
+                if F < 0:
+                    a, b, F = b, a, -F
+                inflow[b] += F
+                outflow[a] += F
+                if D[a] and not D[b]:
+                    q_in += F
+    for j in range(n):                        # trailing-edge cells: the gap downstream
+        te[j] = ~D[j] & D[(j + 1) % n]
+    B = inflow - outflow
+    ends = np.zeros(T.shape, bool)
+    ends[:, [0, k1 - 1]] = True
+    q_s = B[~D & ends & (B > 0)].sum()
+    q_te = inflow[te].sum()
+    t_te = (inflow[te] * T[te]).sum() / q_te
+    imb = np.abs(B[~D & ~ends & ~te]).max() / q_in
+    return q_in, q_s, q_te, t_te, imb
+
+
+def test_the_hot_oil_passed_on_is_the_pads_own_mass_balance():
+    """Q_out = Q_in − Q_s per pad (not the trailing-edge cells' flux into the gap, whose face
+    thickness averages in the gap: 2.3–5.8 Q_in before 2026-12-03). Recomputed here from the
+    returned face flows: Q_in and Q_s, Q_out ≤ Q_in, Q_in − Q_s − Q_out = 0 to 1e-12 Q_in
+    (round-off of the sums); where the film conserves mass (no cavitated cell: interior
+    imbalance ≤ 1e-12) the trailing-edge cells' inflow equals Q_out to 1e-12 too, so the pad's
+    cells balance exactly; T_out is that flow's mixing-cup temperature (1e-9 K)."""
+    tp = _tp()
+    res = tp.thermal_equilibrium(load_n=LOAD, speed_hz=SPEED, oil=VG32,
+                                 supply_temperature_c=TS, carry_over=0.5)
+    assert res.status == "ok"
+    conserving = 0
+    for k in range(tp.n_pads):
+        q_in, q_s, q_te, t_te, imb = _pad_flows(res.temperature_c[k], res.inlet_mask[k] > 0,
+                                                res.flows[k])
+        q_out = res.outlet_flow_m3_s[k]
+        assert res.film_flow_m3_s[k] == pytest.approx(q_in, rel=1e-12)
+        assert res.side_flow_m3_s[k] == pytest.approx(q_s, rel=1e-12, abs=1e-12 * q_in)
+        assert 0.0 < q_out <= q_in
+        assert abs(q_in - q_s - q_out) <= 1e-12 * q_in
+        assert res.outlet_temperature_c[k] == pytest.approx(t_te, abs=1e-9)
+        if imb <= 1e-12:
+            conserving += 1
+            assert abs(q_te - q_out) <= 1e-12 * q_in
+        else:   # the unloaded pad's cavitated cells: the excess the film does not conserve
+            assert abs(q_te - q_out) <= 0.05 * q_in
+    assert conserving >= 4
+
+
+def test_carry_over_half_every_pad_draws_fresh_oil_near_the_effective_pads():
+    """λ = 0.5 on the 5-pad bearing: each pad draws fresh oil (before 2026-12-03 none did:
+    T_max 86.0 °C, ε 0.750), and T_max is near the effective-temperature pads' (which pass on
+    the same Q − Q_s): the rises over the supply within 15 % (at λ = 0 the two models' rises
+    differ by 5 %, 10.8 vs 11.3 K — the effective pad's uniform T_eff — and the ring carries
+    that difference round once more), the THD rise raised by the carry-over at least half as
+    much as the effective one's, and ε within 0.06 with the effective pads more eccentric
+    (as at λ = 0, docs/film-physics.md: the THD pad's cooler leading part carries more)."""
+    tp = _tp()
+    kw = dict(load_n=LOAD, speed_hz=SPEED, oil=VG32, supply_temperature_c=TS)
+    h = tp.thermal_equilibrium(**kw, carry_over=0.5)
+    e = tp.thermal_equilibrium(**kw, carry_over=0.5, model="effective")
+    h0 = tp.thermal_equilibrium(**kw, carry_over=0.0)
+    e0 = tp.thermal_equilibrium(**kw, carry_over=0.0, model="effective")
+    assert h.status == e.status == "ok"
+    assert np.all(h.supply_flow_m3_s > 0.05 * h.film_flow_m3_s)
+    rise_h, rise_e = h.max_temperature_c_total - TS, e.max_temperature_c_total - TS
+    assert rise_h == pytest.approx(rise_e, rel=0.15)
+    gain_h = h.max_temperature_c_total - h0.max_temperature_c_total
+    gain_e = e.max_temperature_c_total - e0.max_temperature_c_total
+    assert 0.5 * gain_e < gain_h < 1.5 * gain_e
+    assert 0.0 < e.eccentricity_ratio - h.eccentricity_ratio < 0.06

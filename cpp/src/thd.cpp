@@ -248,6 +248,29 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
     inlet(n, e, qp[n]);
     if (n % K1 < Kl) inlet(n, n + 1, qz[n]);
   }
+  if (pad && any) {
+    // the hot oil a pad passes on (to the next pad's inlet): the pad's own mass balance,
+    // Q_out = Q_in − Q_s (inflow at the leading edge minus the side leakage over the pad's
+    // cells), not the flux from the trailing-edge cells into the gap, whose face thickness
+    // averages in the gap's clearance (2.4–4.3 × Q_in). Its mixing-cup temperature is that of
+    // the flow the trailing-edge cells receive from the pad (their energy equations' inflow,
+    // in_n: Σ in_n = Q_in − Q_s to round-off where the film conserves mass; a cavitated pad's
+    // excess is scaled out, so the temperature is the trailing edge's profile).
+    double qte = 0.0, sa = 0.0, sb = 0.0, qs = 0.0;
+    for (int n = 0; n < nn; ++n) {
+      qs += side_out[n];
+      if (D[n] || !(in[n] > 0.0)) continue;
+      const int k = n % K1, j = n / K1;
+      const int down = omega > 0.0 ? (j + 1) % N : (j + N - 1) % N;
+      if (!D[down * K1 + k]) continue;  // not a trailing-edge cell
+      qte += in[n];
+      sa += in[n] * X0[n];
+      sb += in[n] * X1[n];
+    }
+    Qr = qte > 0.0 ? std::max(Q - qs, 0.0) : 0.0;
+    ta = qte > 0.0 ? Qr * sa / qte : 0.0;
+    tb = qte > 0.0 ? Qr * sb / qte : 0.0;
+  }
   parts.inlet = std::move(D);
   parts.side_out = std::move(side_out);
   parts.X0 = std::move(X0);

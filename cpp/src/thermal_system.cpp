@@ -111,8 +111,7 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
 /// P of the pad's cells (not the gap), the flow Q into the pad at its leading edge and the
 /// side leakage Q_s (the same flows and cells as the THD pad film, thd_field), at the film's
 /// viscosity mu; the hot flow the pad passes on, Q_out = Q − Q_s (the plain model's
-/// recirculating flow Q_r; not the THD film's flux from the trailing-edge cell into the gap,
-/// whose face thickness averages in the gap's 4 C_p and overstates it several times).
+/// recirculating flow Q_r; the THD pad film's too, thd_field).
 struct PadBalance {
   double P = 0.0, Q = 0.0, Qout = 0.0, Qs = 0.0, mu = 0.0;
 };

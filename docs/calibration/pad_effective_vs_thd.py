@@ -8,8 +8,8 @@
    loss, ε, K; the CPU time of each (one thread, `--repeat` interleaved runs, medians).
 2. The 5-pad bearing of tests/test_film_thd_pads.py (D = 0.1 m, c = 0.1 mm, 4 kN, 100 Hz,
    supply 45 °C) with carry-over λ = 0 and 0.5: the two models side by side, and the flow
-   each passes on to the next pad (effective: Q − Q_s; THD: its trailing-edge cell's flux into
-   the gap).
+   each passes on to the next pad (both the pad's mass balance Q − Q_s; the THD pad's until
+   2026-12-03 was its trailing-edge cells' flux into the gap, 2.3–5.8 Q).
 
     python docs/calibration/pad_effective_vs_thd.py [--repeat 5]
 """

@@ -40,7 +40,7 @@ struct ThdFilmState {
   double power_loss_w = 0.0;       ///< Σ Φ (the energy equation's dissipation)
   double friction_power_w = 0.0;   ///< torque·|ω| (the Reynolds solution's friction)
   double film_flow_m3_s = 0.0;     ///< Q, from the inlet nodes into the film
-  double recirculation_flow_m3_s = 0.0;  ///< Q_r, from the film into the inlet nodes
+  double recirculation_flow_m3_s = 0.0;  ///< Q_r, from the film into the inlet nodes (a pad film: Q_in − Q_s, the pad's mass balance)
   double side_flow_m3_s = 0.0;     ///< through the ends from the film's end cells
   double supply_flow_m3_s = 0.0;   ///< Q_f (fresh oil)
   double heat_to_journal_w = 0.0, heat_to_bush_w = 0.0;
@@ -62,7 +62,7 @@ struct ThdFieldParts {
   std::vector<double> side_out;  ///< (n_nodes,) flow leaving through the ends, m³/s
   Eigen::VectorXd X0, X1;        ///< (n_nodes,) degC, degC/degC
   double Q = 0.0;                ///< from the inlet into the film, m³/s
-  double Qr = 0.0;               ///< from the film into the inlet, m³/s
+  double Qr = 0.0;               ///< from the film into the inlet (pad: Q − Σ side_out), m³/s
   double ta = 0.0, tb = 0.0;     ///< Q_r T_r = ta + T_in tb
   bool pad = false;
 };

@@ -12,8 +12,9 @@ direction of rotation) passes on at its trailing edge — Ettles' hot-oil carry-
     T_in,k = (Q_f,k T_s + λ Q_out,k−1 T_out,k−1) / (Q_f,k + λ Q_out,k−1),
     Q_f,k = Q_in,k − λ Q_out,k−1   (the pad's own demand; or the given supply flow / n_pads),
 
-λ the carry-over (mixing) coefficient in [0, 1] (``carry_over``), Q_out, T_out the flow and
-mixing-cup temperature leaving the pad's trailing-edge cells. Each field is affine in its
+λ the carry-over (mixing) coefficient in [0, 1] (``carry_over``), Q_out = Q_in − Q_s the pad's
+own mass balance (inflow at the leading edge minus side leakage) and T_out the mixing-cup
+temperature of the flow its trailing-edge cells receive. Each field is affine in its
 inlet temperature, so the ring of inlet temperatures is solved exactly (a small linear system)
 at every outer step. The energy equations, the pad equilibrium (tilts and journal, the
 pad-assembly Newton of ``pad_equilibrium.cpp``) and μ(T) are iterated in one C++ call
@@ -124,7 +125,7 @@ class PadThdResult:
     (area mean over the pad), ``inlet_temperature_c`` (after mixing), ``outlet_temperature_c``
     (mixing-cup of the hot oil leaving the trailing edge); ``power_loss_w`` (dissipation of the
     pad's cells); flows m³/s ``film_flow_m3_s`` (into the pad at its leading edge),
-    ``outlet_flow_m3_s`` (out at its trailing edge), ``side_flow_m3_s``, ``supply_flow_m3_s``
+    ``outlet_flow_m3_s`` (out at its trailing edge: Q_in − Q_s), ``side_flow_m3_s``, ``supply_flow_m3_s``
     (fresh oil). Totals: the properties ``max_temperature_c_total`` … and
     :meth:`to_frame`'s ``total`` row. Journal position (m), pad tilts (rad; tilting pads),
     K (N/m), C (N·s/m) 2×2 reduced over the pad coordinates at the whirl frequency (dF =
