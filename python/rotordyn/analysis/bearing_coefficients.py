@@ -13,8 +13,9 @@ gives its K_H, D_H block unchanged."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
 
 from rotordyn._common import validate as v
 from rotordyn._common.status import CONVERGED
@@ -23,6 +24,9 @@ from rotordyn.bearings._film import reduce_coefficients
 from rotordyn.bearings.coefficients import COEFF_NAMES
 from rotordyn.errors import InputError
 from rotordyn.units import hz_to_rad_s
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 COLUMNS = ("bearing", "station", "speed_hz") + tuple(
     f"{n}_n_per_m" for n in COEFF_NAMES[:4]) + tuple(
@@ -59,6 +63,7 @@ def bearing_coefficients(system, speeds_hz, chamber_pressure_pa: float = 0.0,
     horizontal, y up). ``whirl_ratio``: ν/Ω at which pads and sleeve are condensed (1:
     synchronous, as API 684 tabulates them; 0: static condensation). ``progress``: called as
     ``progress(i, n)`` after each speed."""
+    import pandas as pd
     sp = np.atleast_1d(np.asarray(speeds_hz, dtype=float))
     if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)) or np.any(sp < 0):
         raise InputError(f"speeds_hz: expected finite speeds ≥ 0 Hz, got {speeds_hz!r}")

@@ -20,7 +20,6 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
-from scipy.optimize import brentq
 
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
@@ -224,6 +223,7 @@ def level1(system: System, speed_hz: float, chamber_pressure_pa: float = 0.0,
         q_points_n_per_m : further Q values (N/m, ≥ 0) put on the curve (e.g. another tool's).
     Other keywords go to :func:`rotordyn.equilibrium`.
     """
+    from scipy.optimize import brentq
     v.positive("speed_hz", speed_hz)
     v.choice("mode", mode, MODES)
     if max_freq_hz is not None:

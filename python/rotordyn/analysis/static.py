@@ -14,7 +14,6 @@ the linear supports and the film (or table) forces of the bearings."""
 from __future__ import annotations
 
 import numpy as np
-import pandas as pd
 
 from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
@@ -61,6 +60,7 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
     :func:`rotordyn.equilibrium`. A failed equilibrium is a result with its status and NaN
     fields, never a deflection. See :class:`rotordyn.results.StaticResult` for the sign
     conventions."""
+    import pandas as pd
     g = float(system.gravity_m_s2)
     rm = rotor_matrices(system, "none")
     full = rm.full

@@ -8,8 +8,6 @@ from rotordyn._common.threads import limited_blas
 import math
 
 import numpy as np
-import pandas as pd
-from scipy.optimize import brentq
 
 from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
@@ -92,6 +90,8 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     temperature (viscosity) field frozen there — the threshold of the thermal film, each
     point at its own temperature.
     """
+    from scipy.optimize import brentq
+    import pandas as pd
     v.choice("vary", vary, PARAMETERS)
     lo, hi = v.bounds("bounds", bounds)
     if vary == "chamber_pressure_pa" and lo < 0:
@@ -203,6 +203,7 @@ def stability_boundary(system: System, vary: str = "chamber_pressure_pa",
     """Trace the threshold of ``vary`` across ``values`` of ``along`` (paper Fig. 9: p_c
     against a_y at 50 Hz; Fig. 10: p_c against speed at a_y = 0). Each point first searches a
     narrow bracket around the previous threshold (continuation), then the full ``bounds``."""
+    import pandas as pd
     v.choice("vary", vary, PARAMETERS)
     v.choice("along", along, PARAMETERS)
     if along == vary:

@@ -16,7 +16,6 @@ or a (mass) weighting matrix.
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
 
 from rotordyn.errors import InputError
 
@@ -60,6 +59,7 @@ def track_modes(eigenvalues: np.ndarray, shapes=None, *, weight: np.ndarray | No
     the scale (without shapes) is not matched: the slot starts a new id (a mode that leaves a
     truncated set and another that enters it are not joined).
     """
+    from scipy.optimize import linear_sum_assignment
     lam = np.asarray(eigenvalues, dtype=complex)
     if lam.ndim != 2:
         raise InputError(f"eigenvalues: expected shape (n_points, n_modes), got {lam.shape}")

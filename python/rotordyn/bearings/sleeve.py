@@ -29,14 +29,16 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import pandas as pd
 
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.errors import InputError
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 __all__ = ["FlexibleSleeve", "SleeveResult", "paper_rig_sleeve"]
 
@@ -288,6 +290,7 @@ class SleeveResult:
     def to_frame(self) -> pd.DataFrame:
         """Tidy table: one row per (stage, mode) with ``freq_hz``; stages ``full`` (3n DOF),
         ``rotations_eliminated`` (2n DOF, step 1) and ``condensed`` (n_m DOF)."""
+        import pandas as pd
         rows = []
         for stage, f in (("full", self.freq_full_hz), ("rotations_eliminated", self.freq_step1_hz),
                          ("condensed", self.freq_condensed_hz)):

@@ -11,6 +11,7 @@ Machine-readable output goes to stdout with ``--json``; logs go to stderr.
 from __future__ import annotations
 
 import argparse
+import importlib
 import os
 import sys
 
@@ -87,6 +88,8 @@ def main(argv: list[str] | None = None) -> int:
         args = build_parser().parse_args(argv)
         if getattr(args, "model", None) is not None and hasattr(args, "config_ay_m"):
             _check_offset(models.load(args.model), args)
+        for name in getattr(args, "preload", ()):  # the command's heavy libraries (plot)
+            importlib.import_module(name)
         with long_work(_work_text(args), enabled=args.command not in OWN_PROGRESS):
             return int(args.func(args) or 0)
     except KeyboardInterrupt:

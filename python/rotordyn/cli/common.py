@@ -178,9 +178,11 @@ def save_figure(ax, path: str, dpi: int = FIGURE_DPI) -> None:
 
 
 def check_figure(path) -> None:
-    """Check a --plot file before any solve (folder, format) and select the Agg backend."""
-    if path is not None:
-        figure_path("--plot", path)
+    """Check a --plot file before any solve (folder, format) and select the Agg backend
+    (matplotlib is imported only when there is a figure to draw: start-up cost)."""
+    if path is None:
+        return
+    figure_path("--plot", path)
     import matplotlib
 
     matplotlib.use("Agg")

@@ -24,9 +24,6 @@ import cmath
 import math
 
 import numpy as np
-from scipy.linalg.lapack import zgetrf as getrf
-from scipy.linalg.lapack import zgetrs as getrs
-from scipy.optimize import brentq
 
 from rotordyn.control import lti
 from rotordyn.errors import InputError
@@ -88,6 +85,7 @@ class Response:
 
     def at_d(self, w: float, derivative: bool = True) -> tuple[complex, complex]:
         """(L, dL/dω) at one angular frequency by the direct solve (one LU of sI − A)."""
+        from scipy.linalg.lapack import zgetrf as getrf, zgetrs as getrs
         if self.ss.n == 0:
             return self.D, 0j
         if self.dt is None:
@@ -227,6 +225,7 @@ def _ends(loop: lti.SS, resp: Response) -> tuple:
 def brent(fun, a, b):
     """Brent's root of ``fun`` on [a, b] to round-off, or None when the re-evaluated ends do
     not bracket one (a flat function at round-off level)."""
+    from scipy.optimize import brentq
     try:
         return brentq(fun, a, b, xtol=XTOL, rtol=1e-15)
     except ValueError:

@@ -6,7 +6,6 @@ transient."""
 from __future__ import annotations
 
 import numpy as np
-from scipy.linalg import solve_continuous_are
 
 from rotordyn._common import validate as v
 from rotordyn.control._checks import keywords
@@ -35,6 +34,7 @@ def scale(field: str, value) -> float:
 def _riccati(where, *args):
     """scipy's CARE solution, a failure (no stabilising solution, a singular pencil) or a
     non-finite one as a ConvergenceError (a numerical failure, not an input error)."""
+    from scipy.linalg import solve_continuous_are
     try:
         X = solve_continuous_are(*args)
     except (np.linalg.LinAlgError, ValueError) as exc:

@@ -46,7 +46,6 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import minimize, minimize_scalar
 
 from rotordyn._common import validate as v
 from rotordyn.control import lti
@@ -291,6 +290,7 @@ def mu_diag(M: np.ndarray) -> float:
     """Upper bound of μ for a diagonal complex perturbation: min_D σ̄(D M D⁻¹) (exact for
     n ≤ 3). n = 2 in closed form: ‖DMD⁻¹‖_F² is least at d² = |m₁₂|/|m₂₁| and σ̄² =
     (F² + √(F⁴ − 4|det M|²))/2 grows with F² at fixed det."""
+    from scipy.optimize import minimize
     n = M.shape[0]
     if n == 1:
         return float(abs(M[0, 0]))
@@ -323,6 +323,7 @@ def multiloop_disk_margin(P, K, *, sigma: float = 0.0) -> MultiLoopDisk:
     """Disk margin of the loops broken at every output of P at once (L_o = −P K, K a
     positive-feedback law u = K y). ``P``, ``K``: state spaces (A, B, C, D), python-control
     systems or :class:`lti.SS`, same sample time. Refuses an unstable closed loop."""
+    from scipy.optimize import minimize_scalar
     sigma = v.in_range("sigma", sigma, -1e6, 1e6)
     P = lti.balanced(lti.as_ss("plant", P))
     K = lti.balanced(lti.as_ss("controller", K, P.dt))

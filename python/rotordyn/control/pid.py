@@ -7,7 +7,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import minimize
 
 from rotordyn._common import validate as v
 from rotordyn.control.plant import as_plant
@@ -51,6 +50,7 @@ def tune_pd(p, *, kp0: float = 1e9, kd0: float = 1e6, ki: float = 0.0, tau_d_s: 
     """Maximise the least damping ratio of the linear closed loop over (k_p, k_d) by
     Nelder–Mead on log-gains with signs free (the start's signs); returns (controller,
     ClosedLoopResult)."""
+    from scipy.optimize import minimize
     from rotordyn.control.closedloop import closed_loop_matrix
     from rotordyn.results.modes import damping_ratio
 

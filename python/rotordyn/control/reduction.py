@@ -7,7 +7,6 @@ from __future__ import annotations
 from dataclasses import replace
 
 import numpy as np
-from scipy.linalg import eig
 
 from rotordyn._common import validate as v
 from rotordyn.control.plant import as_plant
@@ -35,6 +34,7 @@ def modal_truncation(p, max_frequency_hz: float = 500.0, *, keep_actuator: bool 
     their DC gain, so the low-frequency response is exact). Returns (plant_r, info) with
     info["hinf_error"], info["hinf_full"] (max over a log grid in ``check_hz``) and the kept
     eigenvalues."""
+    from scipy.linalg import eig
     as_plant(p)
     v.in_range("max_frequency_hz", max_frequency_hz, 0.0, 1e7, lo_open=True)
     v.boolean("keep_actuator", keep_actuator)

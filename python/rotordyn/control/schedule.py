@@ -6,9 +6,9 @@ subject to a stability margin (least damping ratio of every mode) and the actuat
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import assembled
@@ -17,6 +17,9 @@ from rotordyn.control import _checks as chk
 from rotordyn.errors import InputError
 from rotordyn.results.modes import damping_ratio
 from rotordyn.units import hz_to_rad_s
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)
@@ -36,6 +39,7 @@ class ScheduleResult:
     min_damping: float
 
     def to_frame(self) -> pd.DataFrame:
+        import pandas as pd
         return pd.DataFrame({"speed_hz": self.speeds_hz, "chamber_pressure_pa": self.pressures_pa,
                              "objective_m": self.objective_m,
                              "best_constant_objective_m": self.best_constant_objective_m})
@@ -84,6 +88,7 @@ def pressure_schedule(system, unbalances, speeds_hz, pressures_pa, *, stations=N
     p_min_pa ≤ p_c ≤ p_max_pa. ``smooth_pa_per_hz``: optional limit on the schedule's slope
     (a dynamic-programming pass over the grid; None: pointwise choice).
     ``unbalances`` as in :func:`rotordyn.unbalance_response`."""
+    import pandas as pd
     chk.system(system)
     ub = chk.unbalances(system, unbalances)
     sp = chk.speeds("speeds_hz", speeds_hz)

@@ -22,15 +22,18 @@ passive pressure it is what a 1× command added to that pressure can reach.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import assembled
 from rotordyn.control import _checks as chk
 from rotordyn.control.schedule import linear_model_grid
 from rotordyn.errors import InputError
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 _GOLD = (np.sqrt(5.0) - 1.0) / 2.0
 
@@ -144,6 +147,7 @@ class SynchronousBound:
     references_m: np.ndarray
 
     def to_frame(self) -> pd.DataFrame:
+        import pandas as pd
         ns, npp = self.objective.shape
         d = {"speed_hz": np.repeat(self.speeds_hz, npp),
              "chamber_pressure_pa": np.tile(self.pressures_pa, ns)}

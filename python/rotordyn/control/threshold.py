@@ -7,8 +7,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import pandas as pd
-from scipy.optimize import brentq
 
 from rotordyn._common import validate as v
 from rotordyn.control import _checks as chk
@@ -57,6 +55,8 @@ def closed_loop_threshold(system, controller, vary: str = "chamber_pressure_pa",
     """Scan ``vary`` (``"chamber_pressure_pa"`` or ``"speed_hz"``) over ``bounds`` at
     ``n_scan`` points and refine every sign change of the closed loop's max Re λ with
     Brent's method. Returns (crossings (list), scan DataFrame)."""
+    from scipy.optimize import brentq
+    import pandas as pd
     v.choice("vary", vary, ("chamber_pressure_pa", "speed_hz"))
     lo, hi = v.bounds("bounds", bounds)
     if vary == "chamber_pressure_pa" and lo < 0:

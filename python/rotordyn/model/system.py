@@ -7,9 +7,9 @@ every analysis takes. Frozen: build a changed copy with :func:`dataclasses.repla
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import scipy.sparse as sp
 
 from rotordyn import _core
 from rotordyn.errors import InputError
@@ -21,6 +21,10 @@ from rotordyn.model.rotor import (REDUCTION_METHODS, STEEL, Material,  # noqa: F
                                  Reduction, Rotor, Support)
 from rotordyn.model.stage import Stage
 from rotordyn.model.toml_io import system_fields_from_toml, system_to_toml
+
+if TYPE_CHECKING:
+    import scipy.sparse as sp
+
 
 @dataclass(frozen=True, slots=True)
 class System:
@@ -166,6 +170,7 @@ class System:
         return m
 
     def _sparse(self, key: str) -> sp.csc_matrix:
+        import scipy.sparse as sp
         data, indices, indptr, shape = _core.assemble(self.to_core())[key]
         return sp.csc_matrix((data, indices, indptr), shape=shape)
 

@@ -5,10 +5,14 @@ in µm, linear or logarithmic, as a 3-D cascade or as a colour map (speed × fre
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
 
 from rotordyn.plot._style import ORDER_STYLE, PAGE_IN, new_axes, order_label, paper_style, require
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 STYLES = ("cascade", "map")
 SCALES = ("linear", "log")
@@ -20,6 +24,7 @@ def runup_spectra(t_s, z_m, speed_hz, *, window_s: float, overlap: float = 0.5,
     the speed ``speed_hz`` (n_t,) changes. Hann windows of ``window_s`` seconds, ``overlap``
     fraction. Returns a tidy table (speed_hz = mean speed in the window, freq_hz,
     amplitude_m, status) that :func:`waterfall` draws (``axis=None``)."""
+    import pandas as pd
     t = np.asarray(t_s, dtype=float)
     z = np.asarray(z_m, dtype=float)
     sp = np.asarray(speed_hz, dtype=float)

@@ -3,13 +3,17 @@ dataset holds what it needs and says so in one line (InputError, exit 2) otherwi
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
 
 from rotordyn.plot._style import require
 from rotordyn.plot.cascade import waterfall
 from rotordyn.plot.frequency import campbell_arrays
 from rotordyn.plot.maps import equilibrium_loci, select, stability_map, varying
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 KINDS = ("stability-map", "equilibrium", "campbell", "waterfall")
 KINDS += ("hopf-map",)

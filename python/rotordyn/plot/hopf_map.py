@@ -6,10 +6,14 @@ single line, the bifurcation diagram of its cycles with the bistable interval sh
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
 
 from rotordyn.plot.maps import axis_label, axis_scale, select, sweep_axes
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 COLOURS = {"supercritical": "tab:blue", "subcritical": "tab:red", "degenerate": "tab:gray"}
 LABELS = {"supercritical": "supercritical (soft onset)",

@@ -5,11 +5,15 @@ failed points marked; equilibrium loci in units of the clearance with the cleara
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
 
 from rotordyn.plot._style import COLUMN_IN, new_axes, paper_style, require
 from rotordyn.units import SUFFIX_UNITS, unit_of
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 AXIS_LABEL = {"speed_hz": "rotor speed W (Hz)", "chamber_pressure_pa": "chamber pressure p_c (MPa)",
               "config_ay_m": "housing offset a_y (mm)", "config_ax_m": "housing offset a_x (mm)"}

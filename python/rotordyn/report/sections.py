@@ -18,14 +18,17 @@ gets them as PNG files."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn import analysis
 from rotordyn._common.api import af_text
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
 from rotordyn.report.tables import COEFFICIENT_HEADER, _text_table, coefficient_rows
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 MAX_CRITICAL_SHAPES = 6  # the lowest forward critical speeds drawn (a report's usual few)
 
@@ -111,6 +114,7 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
     crossing mode's δ there: δ ≳ 1.3, AF ≈ π/δ < 2.5, is critically damped), ``peak_hz`` (NaN
     where absent), ``stations`` (the stations whose response peaks there, text),
     ``amplification_factor`` and ``af_kind`` of the largest peak."""
+    import pandas as pd
     cross, cross_ld = _crossings(campbell)
     peaks = _peak_groups(unbalance, rtol) if unbalance is not None else []
     used: set[int] = set()

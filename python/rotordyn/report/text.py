@@ -54,10 +54,10 @@ def _fmt_row(cells, widths):
 
 def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         speeds_hz=None, level1_options: dict | None = None) -> int:
+    s = models.load(model)  # a bad model exits before matplotlib is imported
     import matplotlib
 
     matplotlib.use("Agg")
-    s = models.load(model)
     paper = s.name in CALIBRATIONS
     outdir = Path(out)
     outdir.mkdir(parents=True, exist_ok=True)

@@ -11,13 +11,17 @@ plots, per bearing, the hottest film temperature and the total power loss agains
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
 
 from rotordyn._common.status import CONVERGED
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
 from rotordyn.analysis.thermal import system_thermal_equilibrium
 from rotordyn.errors import InputError
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 N_SPEEDS = 5  # speeds of the thermal table, spread over the analysed range
 THERMAL_HEADER = ("film", "speed (Hz)", "T_max (°C)", "T_mean (°C)", "T_in (°C)",
@@ -45,6 +49,7 @@ def thermal_frames(system, speeds_hz, chamber_pressure_pa: float, config_ay_m,
     thermal film); the coefficients are :func:`rotordyn.analysis.bearing_coefficients.
     bearing_coefficients` of the returned system (frozen fields) at its own speed (NaN where
     the thermal equilibrium failed: nothing is linearised from a failed one)."""
+    import pandas as pd
     if getattr(system, "thermal", None) is None:
         return None, None, ""
     tables, coeffs = [], []

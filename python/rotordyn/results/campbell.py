@@ -4,13 +4,16 @@ frequency crosses a multiple of the running speed."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
 
 from rotordyn.results.modes import WHIRL_NAMES, log_dec
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)
@@ -79,6 +82,7 @@ class CampbellResult(Display):
         interpolation between the computed speeds along each tracked mode. ``whirl`` filters by
         the mode's whirl at the crossing (None: any). Columns: mode (tracked id + 1),
         speed_hz, freq_hz, whirl."""
+        import pandas as pd
         rows = []
         f = self.frequencies_hz
         if self.kind is not None:
@@ -108,6 +112,7 @@ class CampbellResult(Display):
         """Tidy: one row per (speed, mode); with ``thermal`` (each speed at its own thermal
         equilibrium) also the thermal columns of each speed
         (:data:`rotordyn.results.thermal.THERMAL_POINT_COLUMNS`)."""
+        import pandas as pd
         ns, nm = self.eigenvalues.shape
         lam = self.eigenvalues.ravel()
         st = (np.repeat(self.point_status, nm) if self.point_status is not None

@@ -4,11 +4,14 @@ with its Floquet stability and bifurcations: the data of a bifurcation diagram."
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 #: the continued variables, their units in the result and the factor from SI to that unit
 UNITS = {"chamber_pressure_pa": ("Pa", "p_c", 1e-6, "MPa"),
@@ -96,6 +99,7 @@ class BranchResult(Display):
         ``vary``), amplitude_m, period_s, max_multiplier, stable, critical_type, arclength,
         and ``bifurcation`` (the kind of a bifurcation detected just before this point, else
         "")."""
+        import pandas as pd
         npt = len(self)
         nb = self.amplitude_m.shape[1]
         bif = [""] * npt
@@ -118,6 +122,7 @@ class BranchResult(Display):
     def bifurcations_frame(self) -> pd.DataFrame:
         """One row per bifurcation: kind, index, parameter (unit of ``vary``), amplitude_m,
         multiplier modulus and argument."""
+        import pandas as pd
         rows = [{"kind": b["kind"], "index": b["index"], self.vary: b["parameter"],
                  "amplitude_m": b["amplitude_m"], "multiplier_modulus": abs(b["multiplier"]),
                  "multiplier_angle_rad": float(np.angle(b["multiplier"]))}

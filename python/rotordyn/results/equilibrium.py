@@ -3,14 +3,17 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
 
 
 from rotordyn._common.status import CONVERGED, FAILED, STATUSES  # noqa: F401
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)
@@ -132,6 +135,7 @@ class EquilibriumResult(Display):
     def to_frame(self) -> pd.DataFrame:
         """One row per bearing: inputs (``chamber_pressure_pa`` with an active bearing only),
         journal position (m and /c), film, status."""
+        import pandas as pd
         nb = len(self.bearing_names)
         df = pd.DataFrame({
             "bearing": self.bearing_names,

@@ -5,12 +5,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
 from rotordyn.results.continuation import UNITS
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 HOPF_TYPES = ("supercritical", "subcritical", "degenerate")
 
@@ -103,6 +106,7 @@ class HopfResult(Display):
                 + (f", amplitude at 1 % from the point: {amp}" if amp else "") + ">")
 
     def to_frame(self) -> pd.DataFrame:
+        import pandas as pd
         rows = []
         for i, name in enumerate(self.bearing_names):
             row = {self.vary: self.value, **{k: val for k, val in self.fixed.items()

@@ -11,12 +11,15 @@ pass the boundary CSR read from it (``csr_limit``) to have that criterion judged
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn._common.status import CONVERGED
 from rotordyn.results._display import Display
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 LEVEL1_RATIO = 2.0      # API 617: Q_0/Q_A ≥ 2
 LEVEL1_LOG_DEC = 0.1    # API 617: δ_A ≥ 0.1
@@ -150,6 +153,7 @@ class Level1Result(Display):
     def to_frame(self) -> pd.DataFrame:
         """One row per applied Q: ``applied_q_n_per_m``, ``log_dec``, ``freq_hz``, and flags
         ``is_q_a`` / ``is_q0`` for the rows at Q_A and Q_0; then ``speed_hz``, ``status``."""
+        import pandas as pd
         n = self.q_n_per_m.size
         return pd.DataFrame({
             "speed_hz": np.full(n, self.speed_hz),

@@ -3,14 +3,17 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
 
 from rotordyn._common.whirl import (  # noqa: F401 - the modal results' vocabulary
     WHIRL_NAMES, WHIRL_PLANAR_TOL, whirl_index, whirl_label)
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 def _freq_list(f, whirl=None, n: int = 6) -> str:
@@ -114,12 +117,14 @@ class ModesResult(Display):
 
     def to_frame(self) -> pd.DataFrame:
         """One row per mode (and per model when reduced): tidy, unit-suffixed columns."""
+        import pandas as pd
         frames = [self._frame()]
         if self.full is not None:
             frames.append(self.full._frame())
         return pd.concat(frames, ignore_index=True)
 
     def _frame(self) -> pd.DataFrame:
+        import pandas as pd
         n = len(self.eigenvalues)
         df = pd.DataFrame({
             "model": pd.Categorical([self.model] * n),

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 CRITICAL_TYPES = ("fold", "period_doubling", "neimark_sacker")
 
@@ -92,6 +95,7 @@ class PeriodicOrbitResult(Display):
 
     def to_frame(self) -> pd.DataFrame:
         """One row per (time, bearing) of the orbit, with the period and the stability."""
+        import pandas as pd
         nt, nb = self.journal_x_m.shape
         return pd.DataFrame({
             "t_s": np.repeat(self.t, nb),
@@ -110,6 +114,7 @@ class PeriodicOrbitResult(Display):
     def multipliers_frame(self) -> pd.DataFrame:
         """One row per Floquet multiplier: real and imaginary parts, modulus, argument (rad),
         whether it is the trivial or the critical one."""
+        import pandas as pd
         mu = np.asarray(self.multipliers, dtype=complex)
         i = np.arange(mu.size)
         return pd.DataFrame({

@@ -3,14 +3,17 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
 
 from rotordyn.results.equilibrium import CONVERGED, STATUSES, EquilibriumResult
 from rotordyn.results.modes import damping_ratio, log_dec, mode_stable
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)
@@ -54,6 +57,7 @@ class LinearModel:
     def bearing_coefficients(self) -> pd.DataFrame:
         """K_H and D_H entries between film-coupled coordinates, tidy (row, col, k, c), the
         coordinates named by station (``station1.x``); pairs no film couples are left out."""
+        import pandas as pd
         rows = []
         idx = np.where((np.abs(self.KH).sum(0) + np.abs(self.DH).sum(0)) > 0)[0]
         for i in idx:
@@ -146,6 +150,7 @@ class StabilityResult(Display):
         operating point: every mode stable), as in the sweep tables; at a thermal equilibrium
         (``thermal=``) also its columns (:data:`rotordyn.results.thermal.THERMAL_POINT_COLUMNS`:
         per-film temperatures and power loss, as in a sweep with ``options.thermal``)."""
+        import pandas as pd
         n = len(self.eigenvalues)
         e = self.linear.equilibrium
         point = {"speed_hz": np.full(n, self.speed_hz)}

@@ -3,14 +3,17 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
 
 from rotordyn.results.stability import LinearModel
 from rotordyn.units import unit_of
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)
@@ -102,6 +105,7 @@ class StateSpaceResult(Display):
         entry's own (the value column mixes them): A and B map to the derivative of the row's
         state (its unit per second), C and D to the row's output, per unit of the column's
         state or input, e.g. ``(m/s)/(N)``."""
+        import pandas as pd
         rows = []
         for name, M, rn, cn in (("A", self.A, self.state_names, self.state_names),
                                 ("B", self.B, self.state_names, self.input_names),

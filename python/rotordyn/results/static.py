@@ -6,13 +6,16 @@ given configuration vector a)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
 
 from rotordyn._common.status import CONVERGED
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)
@@ -64,6 +67,7 @@ class StaticResult(Display):
 
     def to_frame(self) -> pd.DataFrame:
         """One row per element end: z, side, the deflection there, shear and moment."""
+        import pandas as pd
         z = self.section_positions_m
         defl_x = np.interp(z, self.node_positions_m, self.deflection_x_m)
         defl_y = np.interp(z, self.node_positions_m, self.deflection_y_m)

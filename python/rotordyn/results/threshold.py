@@ -4,11 +4,14 @@ stability boundaries traced across a second parameter (paper Fig. 9, Fig. 10).""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)
@@ -41,6 +44,7 @@ class ThresholdResult(Display):
 
     def to_frame(self) -> pd.DataFrame:
         # fixed inputs that apply: config_ay_m is None (and p_c moot) without an active bearing
+        import pandas as pd
         row = {k: val for k, val in self.fixed.items() if val is not None}
         if self.fixed.get("config_ay_m", 0.0) is None:
             row.pop("chamber_pressure_pa", None)

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass(frozen=True)
@@ -53,6 +56,7 @@ class TransientResult(Display):
 
     def to_frame(self) -> pd.DataFrame:
         """One row per (time, bearing)."""
+        import pandas as pd
         nt, nb = self.journal_x_m.shape
 
         def col(a, default):

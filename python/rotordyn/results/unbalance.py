@@ -4,15 +4,18 @@ polar data), with API 684-style amplification factors and separation margins."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.results._display import Display
 
 
 from rotordyn._common.api import (  # noqa: F401 - the criteria of the peaks
     API_CRITICALLY_DAMPED_AF, af_text, amplification_factor, api_required_margin)
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 PEAK_COLUMNS = ("station", "critical_speed_hz", "peak_m", "n1_hz", "n2_hz",
                 "amplification_factor", "af_kind", "critically_damped")
@@ -83,6 +86,7 @@ class UnbalanceResult(Display):
         """One row per (speed, station); with ``thermal`` (each speed at its own thermal
         equilibrium) also the thermal columns of each speed
         (:data:`rotordyn.results.thermal.THERMAL_POINT_COLUMNS`)."""
+        import pandas as pd
         from rotordyn.results.modes import whirl_index, whirl_label
 
         ns, nk = self.x.shape
@@ -115,6 +119,7 @@ class UnbalanceResult(Display):
         critically damped (AF < 2.5), and, when operating speeds are known, the separation
         margin and the margin API 617/684 requires (NaN: the AF is not resolved, so the margin
         cannot be judged). Columns :data:`PEAK_COLUMNS` even when there is no peak."""
+        import pandas as pd
         k = 0 if station is None else list(self.stations).index(station)
         a = {"major": self.major_m, "x": np.abs(self.x), "y": np.abs(self.y)}[amplitude][:, k]
         s = self.speeds_hz

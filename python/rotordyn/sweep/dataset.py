@@ -6,12 +6,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from rotordyn.errors import InputError
 from rotordyn.sweep.store import BOUNDARY, open_dir, read_aux, read_manifest
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @dataclass
