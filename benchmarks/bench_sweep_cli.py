@@ -40,12 +40,13 @@ def load() -> str:
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
-def run(cmd: list[str]) -> tuple[float, float, dict]:
-    """Wall and CPU (user + system of the command and its reaped descendants) of one run."""
+def run(cmd: list[str], env: dict | None = None) -> tuple[float, float, dict]:
+    """Wall and CPU (user + system of the command and its reaped descendants) of one run;
+    env: variables set for the command on top of the current ones."""
     r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     w0 = time.perf_counter()
     p = subprocess.run(cmd, capture_output=True, text=True, check=True,
-                       env={**os.environ, "OMP_NUM_THREADS": "1"})
+                       env={**os.environ, "OMP_NUM_THREADS": "1", **(env or {})})
     w = time.perf_counter() - w0
     r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)

@@ -26,7 +26,8 @@ void bind_batch(py::module_& m) {
          const RowMatrixXd& a, const std::vector<int>& restart, const EquilibriumOptions& opt,
          int n_modes, bool finite_difference, double fd_step,
          const std::vector<std::pair<int, int>>& xy_pairs,
-         const std::vector<std::pair<int, int>>& rot_pairs, const std::vector<int>& sleeve) {
+         const std::vector<std::pair<int, int>>& rot_pairs, const std::vector<int>& sleeve,
+         bool carry_cavitation) {
         StabilityBatchInput in;
         in.omega = omega;
         in.pressure = pressure;
@@ -39,13 +40,14 @@ void bind_batch(py::module_& m) {
         in.xy_pairs = xy_pairs;
         in.rot_pairs = rot_pairs;
         in.sleeve = sleeve;
+        in.carry_cavitation = carry_cavitation;
         py::gil_scoped_release release;
         return stability_batch(solver, in);
       },
       py::arg("solver"), py::arg("omega"), py::arg("pressure"), py::arg("a"),
       py::arg("restart"), py::arg("options"), py::arg("n_modes"),
       py::arg("finite_difference"), py::arg("fd_step"), py::arg("xy_pairs"),
-      py::arg("rot_pairs"), py::arg("sleeve"),
+      py::arg("rot_pairs"), py::arg("sleeve"), py::arg("carry_cavitation") = true,
       "Equilibrium (continued), K_H/D_H and eigen-analysis of each point of a sweep chunk.");
 
   py::class_<EquilibriumBatchResult>(m, "EquilibriumBatchResult")

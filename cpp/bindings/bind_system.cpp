@@ -93,6 +93,8 @@ void bind_system(py::module_& m) {
       .def("equilibrium", &SystemSolver::equilibrium, py::arg("omega"),
            py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"), py::arg("options"), gil())
       .def_property_readonly("reynolds_solves", &SystemSolver::reynolds_solves)
+      .def_property_readonly("reynolds_iterations", &SystemSolver::reynolds_iterations,
+                             "Active-set (or linear) iterations summed over the solves.")
       .def_property_readonly("last_h_min", &SystemSolver::last_h_min)
       .def("film_h_min", &SystemSolver::film_h_min, py::arg("r"),
            "Minimum film thickness of each film at positions r (n,), m, from the geometry "

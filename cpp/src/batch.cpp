@@ -92,11 +92,24 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
   // extrapolation never loses an equilibrium the plain continuation finds.
   std::vector<Eigen::VectorXd> hist;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  // The films' cavitation sets carried along a line (in.carry_cavitation), forgotten at each
+  // line's start and when the call returns (also by an exception), so a line's results
+  // depend on its own points only.
+  struct Carry {
+    SystemSolver& s;
+    bool on;
+    ~Carry() {
+      if (on) s.set_film_carry(false);
+    }
+  } carry{solver, in.carry_cavitation && !solver.film_carry()};
   for (Eigen::Index i = 0; i < np; ++i) {
     const double w = in.omega[i];
     try {
       const Eigen::VectorXd a = in.a.row(i).transpose();
-      if (in.restart[i] != 0) hist.clear();
+      if (in.restart[i] != 0 || i == 0) {
+        hist.clear();
+        if (carry.on) solver.set_film_carry(true);  // forgets the previous line's sets
+      }
       const Eigen::VectorXd r0 = hist.empty() ? Eigen::VectorXd() : line_start(in, i, hist);
       const bool extrapolated = hist.size() >= 2 && (r0.array() != hist[0].array()).any();
       EquilibriumResult e = solver.equilibrium(w, in.pressure[i], a, r0, in.options);

@@ -81,6 +81,20 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   require(std::isfinite(opt.pm), "pm: expected P_m >= 0, or < 0 for automatic");
 
   const int solves0 = solves_;
+  // The solves of this call (Newton steps, line searches, the polish, the load continuation)
+  // start from the last converged cavitation set of this call, from the prediction at its
+  // start: the same unique Swift–Stieber solution in fewer active-set steps (and no coarse
+  // solve). Cleared on entry and on exit, so the result never depends on what the solver ran
+  // before; a caller that carries the sets over a sequence (set_film_carry: one sweep line)
+  // keeps its own.
+  struct WithinCall {
+    SystemSolver& s;
+    bool own;
+    ~WithinCall() {
+      if (own) s.carry_sets(false);
+    }
+  } within_call{*this, !carry_};
+  if (within_call.own) carry_sets(true);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   const Eigen::VectorXd Ka = model_.K * a;
   const Eigen::VectorXd F = model_.Q + pc * model_.chamber - Ka;  // eq. 14 right side less H

@@ -280,6 +280,13 @@ struct ReynoldsSolver::Impl {
   // d(residual)/d(h, hdot) at the frozen state, S's unknown ordering and row weights.
   void residual_derivative(const LinearSystem& S, const double* dh, const double* dhdot,
                            Eigen::VectorXd& out) const;
+  // residual_derivative for several dh (d_dhdt[v] each) of a film without pockets or seals:
+  // the face conductances and pressure differences formed once, each column then the same
+  // operations in the same order as residual_derivative_t<false> (the same values, bit for
+  // bit).
+  void residual_derivative_many(const LinearSystem& S, const std::vector<const double*>& dh,
+                                const std::vector<const double*>& dhdot,
+                                const std::vector<Eigen::VectorXd*>& out) const;
   template <bool kPockets>  // with pocket faces, or the plain film's code unchanged
   void residual_derivative_t(const LinearSystem& S, const double* dh, const double* dhdot,
                              Eigen::VectorXd& out) const;

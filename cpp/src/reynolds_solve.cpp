@@ -612,10 +612,10 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
 // ---- public ------------------------------------------------------------------------------
 
 const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixXd& dhdt,
-                                          double omega) {
+                                          double omega, bool z_constant_in) {
   Impl& s = *impl_;
   // rigid()'s promise holds for this call only: taken (and cleared) before anything can throw
-  const bool z_constant = s.film_z_constant;
+  const bool z_constant = s.film_z_constant || z_constant_in;
   s.film_z_constant = false;
   if (h.rows() != s.N || h.cols() != s.K1)
     throw InputError(shape_msg("h", s.N, s.K1, h.rows(), h.cols()));

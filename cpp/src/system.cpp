@@ -250,7 +250,9 @@ void SystemSolver::solve_one(std::size_t i, const Eigen::VectorXd& rc,
     throw ContactError(os.str());
   }
   f.dhdt = affine_field(fc, vc, false);  // ∂h/∂t = Σ_k ∂h/∂r_k ṙ_k
-  const FilmSolution& s = f.solver.solve(f.h, f.dhdt, fc.spin_factor * omega);
+  // constant along z: no axial weights and a base film that is one column (or none)
+  const bool z_const = fc.axial_weight.size() == 0 && fc.base_h.cols() <= 1;
+  const FilmSolution& s = f.solver.solve(f.h, f.dhdt, fc.spin_factor * omega, z_const);
   ++solves_;
   iterations_ += s.iterations;
   f.p = s.p_pa;
@@ -306,6 +308,16 @@ void SystemSolver::set_film_continuation(bool on) {
     f->valid = false;
   }
   solved_ = false;
+  carry_ = on;
+}
+
+void SystemSolver::carry_sets(bool on) {
+  for (auto& f : films_) f->solver.set_continuation(on);
+}
+
+void SystemSolver::set_film_carry(bool on) {
+  carry_sets(on);
+  carry_ = on;
 }
 
 std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
@@ -357,16 +369,26 @@ void SystemSolver::linearize_last_solve(bool damping, Eigen::MatrixXd& KH,
     Film& f = *films_[i];
     const int K1 = fc.grid.n_axial + 1;
     const RowMatrixXd zero = RowMatrixXd::Zero(fc.grid.n_circ, K1);
-    for (std::size_t j = 0; j < fc.coords.size(); ++j) {
-      const RowMatrixXd dh = fc.thickness_derivative(static_cast<Eigen::Index>(j));
-      const Eigen::VectorXd dk =
-          -f.integrate(f.solver.linearize(dh, zero), fc.shape, fc.axial_weight);
-      for (std::size_t k = 0; k < fc.coords.size(); ++k) KH(fc.coords[k], fc.coords[j]) += dk(k);
+    // every column's linearised solve at once (the values of one linearize() call each)
+    const std::size_t nc = fc.coords.size(), per = damping ? 2 : 1;
+    std::vector<RowMatrixXd> dh(nc);
+    std::vector<const RowMatrixXd*> a, b;
+    for (std::size_t j = 0; j < nc; ++j) {
+      dh[j] = fc.thickness_derivative(static_cast<Eigen::Index>(j));
+      a.push_back(&dh[j]);
+      b.push_back(&zero);
       if (!damping) continue;
-      const Eigen::VectorXd dd =
-          -f.integrate(f.solver.linearize(zero, dh), fc.shape, fc.axial_weight);
-      for (std::size_t k = 0; k < fc.coords.size(); ++k)
-        (*DH)(fc.coords[k], fc.coords[j]) += dd(k);
+      a.push_back(&zero);
+      b.push_back(&dh[j]);
+    }
+    std::vector<RowMatrixXd> dp;
+    f.solver.linearize_many(a, b, dp, fc.axial_weight.size() == 0);  // dh = S(φ) along z
+    for (std::size_t j = 0; j < nc; ++j) {
+      const Eigen::VectorXd dk = -f.integrate(dp[per * j], fc.shape, fc.axial_weight);
+      for (std::size_t k = 0; k < nc; ++k) KH(fc.coords[k], fc.coords[j]) += dk(k);
+      if (!damping) continue;
+      const Eigen::VectorXd dd = -f.integrate(dp[per * j + 1], fc.shape, fc.axial_weight);
+      for (std::size_t k = 0; k < nc; ++k) (*DH)(fc.coords[k], fc.coords[j]) += dd(k);
     }
   }
   add_table_coefficients(last_omega_, KH, DH);

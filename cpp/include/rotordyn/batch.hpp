@@ -23,6 +23,11 @@ struct StabilityBatchInput {
   double fd_step = 1e-6;
   std::vector<std::pair<int, int>> xy_pairs, rot_pairs;
   std::vector<int> sleeve;   ///< sleeve coordinates (mode kind by kinetic-energy share)
+  /// The films carry their cavitation sets from point to point along a line (forgotten at
+  /// every restart and at the end; SystemSolver::set_film_carry): fewer active-set steps, the
+  /// same answers (the Swift–Stieber solution is unique). Off: each equilibrium starts from
+  /// the coarse-grid prediction (the former cost; for tests and benchmarks).
+  bool carry_cavitation = true;
 };
 
 struct StabilityBatchResult {

@@ -215,12 +215,25 @@ class ReynoldsSolver {
 
   /// General film: h and ∂h/∂t on the nodes, (n_circ, n_axial + 1); ω in rad/s.
   /// ContactError if h ≤ 0 anywhere.
-  const FilmSolution& solve(const RowMatrixXd& h, const RowMatrixXd& dhdt, double omega);
+  /// z_constant: the caller's promise that h and dhdt are constant along z (the mirror-
+  /// symmetry check is then skipped; the same solution).
+  const FilmSolution& solve(const RowMatrixXd& h, const RowMatrixXd& dhdt, double omega,
+                            bool z_constant = false);
 
   /// Linearised solve about the last solve(): the pressure change (n_circ, n_axial + 1) for a
   /// film-thickness change dh and a change d_dhdt of ∂h/∂t, with the cavitation set frozen
   /// (exact derivative of the discrete map away from set switches). Reuses the factorisation.
   RowMatrixXd linearize(const RowMatrixXd& dh, const RowMatrixXd& d_dhdt);
+  /// linearize() for m perturbations at once: dp[v] for (*dh[v], *d_dhdt[v]), v < m, each
+  /// field (n_circ, n_axial + 1); the same values as m linearize() calls in that order (bit
+  /// for bit, up to the sign of a zero), the residual derivatives formed first and the
+  /// triangular solves done four at a time. Falls back to the m calls where linearize()
+  /// takes another branch (short bearing, jfo, a degenerate set, a non-symmetric perturbation
+  /// of a half-grid solve). z_constant: the caller's promise that every field is constant
+  /// along z (the symmetry checks are skipped).
+  void linearize_many(const std::vector<const RowMatrixXd*>& dh,
+                      const std::vector<const RowMatrixXd*>& d_dhdt,
+                      std::vector<RowMatrixXd>& dp, bool z_constant = false);
   /// Force change for a pressure change from linearize().
   Eigen::Vector2d integrate_force(const RowMatrixXd& p) const;
   /// ∫∫ p·g R dφ dz over the bush (trapezoidal rule on the nodes), e.g. the generalised

@@ -178,6 +178,15 @@ class SystemSolver {
   /// duration of one transient run (consecutive right-hand sides at nearby states), off
   /// otherwise. Each switch forgets the stored sets.
   void set_film_continuation(bool on);
+  /// Cavitation-set carry for a sequence of equilibria (the points of one sweep line): each
+  /// film's Swift–Stieber solve starts from its last converged set instead of the coarse-grid
+  /// prediction, from this call on, across equilibrium() calls, until switched off; every
+  /// switch (on or off) forgets the stored sets, so a line that switches it on at its start is
+  /// a function of its own inputs. Unlike set_film_continuation the last solve stays valid
+  /// (its pressures do not depend on the start set). Off: each equilibrium() carries the sets
+  /// between its own solves only, from the prediction at its start.
+  void set_film_carry(bool on);
+  bool film_carry() const { return carry_; }
   /// Minimum film thickness of each film at positions r (n,), m, from the geometry alone
   /// (h = c + S r over the grid angles, eq. 3): no Reynolds solve, no change to the solvers'
   /// state. Equals last_h_min() after a solve at the same r; ≤ 0 means contact.
@@ -201,6 +210,8 @@ class SystemSolver {
   // final point then its linearisation, a CVODE right-hand side then its Jacobian — reuses
   // the pressures and factorisations instead of solving again.
   bool solved_ = false;
+  bool carry_ = false;  ///< the films carry their cavitation sets (set_film_carry / continuation)
+  void carry_sets(bool on);  ///< each film's continuation on/off (sets forgotten), cache kept
   Eigen::VectorXd last_r_, last_rdot_;
   double last_omega_ = 0.0;
   void solve_films(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot, double omega);
