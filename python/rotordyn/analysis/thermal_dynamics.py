@@ -68,6 +68,30 @@ def thermal_point(system, speed_hz, chamber_pressure_pa=0.0, config_ay_m=None, k
                                       config_ay_m=config_ay_m, **(kw or {}))
 
 
+def _converged_points(system, sp, chamber_pressure_pa, config_ay_m, thermal, status, therm):
+    """(i, speed, thermal equilibrium) of every speed whose thermal equilibrium converged;
+    fills ``status`` (the thermal status, "error" where it raised) and ``therm`` (the
+    equilibria, None where it raised) for every speed. A failed point is never yielded (never
+    linearised); an InputError (the model's or the keywords' fault: every speed would refuse)
+    propagates."""
+    from rotordyn.errors import RotordynError
+
+    _no_zero(sp)
+    for i, s in enumerate(sp):
+        try:
+            t = thermal_point(system, s, chamber_pressure_pa, config_ay_m, thermal)
+        except InputError:
+            raise
+        except RotordynError:
+            therm.append(None)
+            status[i] = "error"
+            continue
+        therm.append(t)
+        status[i] = t.status
+        if t.status in CONVERGED:
+            yield i, s, t
+
+
 def thermal_stability(stability, system, speed_hz, chamber_pressure_pa, config_ay_m, *,
                       n_modes, method, thermal, **equilibrium_kw):
     """``stability`` (:func:`rotordyn.stability`, passed in: this module sits below the API)
@@ -103,21 +127,9 @@ def thermal_campbell(linearize, stability_from, system, sp, chamber_pressure_pa,
     kind = np.full((sp.size, width), "rotor", dtype=object)
     status = np.empty(sp.size, dtype=object)
     shapes = np.full((sp.size, asm.n, width), np.nan + 0j)
-    therm = []
-    _no_zero(sp)
-    for i, s in enumerate(sp):
-        try:
-            t = thermal_point(system, s, chamber_pressure_pa, config_ay_m, thermal)
-        except InputError:  # the model's or the keywords' fault: every speed would refuse
-            raise
-        except RotordynError:
-            therm.append(None)
-            status[i] = "error"
-            continue
-        therm.append(t)
-        status[i] = t.status
-        if t.status not in CONVERGED:  # never linearised
-            continue
+    therm: list = []
+    for i, s, t in _converged_points(system, sp, chamber_pressure_pa, config_ay_m, thermal,
+                                     status, therm):
         try:
             lm = linearize(t.system, float(s), chamber_pressure_pa, config_ay_m, method=method,
                            warm_start=False)
@@ -145,7 +157,6 @@ def thermal_unbalance(unbalance_response, system, ub, sp, kw: dict, thermal):
     frozen): per speed the isothermal response of the frozen system (``kw``: the keywords of
     ``unbalance_response`` (:func:`rotordyn.unbalance_response`, passed in) without
     ``refine``); NaN and the thermal status where the thermal equilibrium fails."""
-    from rotordyn.errors import RotordynError
     from rotordyn.results.unbalance import UnbalanceResult
 
     pc, ay = kw.get("chamber_pressure_pa", 0.0), kw.get("config_ay_m")
@@ -157,21 +168,8 @@ def thermal_unbalance(unbalance_response, system, ub, sp, kw: dict, thermal):
     check = kw.get("check_stability")
     check = bool(system.bearings) if check is None else bool(check)
     mr = np.full(sp.size, np.nan) if check else None
-    therm = []
-    _no_zero(sp)
-    for i, s in enumerate(sp):
-        try:
-            t = thermal_point(system, s, pc, ay, thermal)
-        except InputError:  # the model's or the keywords' fault: every speed would refuse
-            raise
-        except RotordynError:
-            therm.append(None)
-            status[i] = "error"
-            continue
-        therm.append(t)
-        status[i] = t.status
-        if t.status not in CONVERGED:
-            continue
+    therm: list = []
+    for i, s, t in _converged_points(system, sp, pc, ay, thermal, status, therm):
         u = unbalance_response(t.system, ub, [float(s)], **{**kw, "stations": outs},
                                refine=False)
         X[i], Y[i], status[i] = u.x[0], u.y[0], u.point_status[0]
