@@ -135,3 +135,33 @@ def test_point_alone_equals_the_point_inside_its_line():
         a = np.sort_complex(np.asarray(one.eigenvalues)[0, :k])
         b = np.sort_complex(np.asarray(line.eigenvalues)[i, :k])
         assert np.max(np.abs(a - b)) <= 1e-7 * np.max(np.abs(a))
+
+
+def test_carry_on_a_speed_line_of_a_compressor_on_plain_bearings():
+    """Not the paper rig: a compressor on two plain journal bearings (two films, no sleeve), a
+    line over the speed (the carried cavitation sets come from another speed, not another
+    p_c): carry on and off give the same bits, the second line the same as if alone."""
+    from pathlib import Path
+
+    asm = Assembled(rd.System.from_toml(Path(__file__).parent / "data" / "models"
+                                        / "compressor_plain.toml"))
+    speeds = np.linspace(40.0, 160.0, 30)
+    w = np.concatenate([hz_to_rad_s(speeds), hz_to_rad_s(speeds[::-1])])
+    p = np.zeros(len(w))
+    a = np.array([asm.config_vector(None)] * len(w))
+    restart = [1 if k in (0, len(speeds)) else 0 for k in range(len(w))]
+
+    def run(inp, carry):
+        solver = _core.SystemSolver(asm.model)
+        return _core.stability_batch(
+            solver, *inp, equilibrium_options({}), 0, False, FD_REL_STEP,
+            asm.rotor.xy_pairs(), asm.rotor.rot_pairs(),
+            [i for bc in asm.bearings for i in bc.sleeve], carry_cavitation=carry), solver
+
+    (on, s_on), (off, s_off) = run((w, p, a, restart), True), run((w, p, a, restart), False)
+    assert set(on.status) == {"ok"}
+    _same(on, off)
+    n = len(speeds)
+    alone, _ = run((w[n:], p[n:], a[n:], [1] + [0] * (n - 1)), True)
+    _same(on, alone, slice(n, None))
+    assert s_on.reynolds_iterations < s_off.reynolds_iterations
