@@ -8,6 +8,7 @@ film that cannot build pressure, so no equilibrium with an open film exists ther
 """
 
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -125,3 +126,34 @@ def test_successive_substitution_stops_when_too_slow(rig):
     assert e.status == "not_converged" and "too slow" in e.message and "P_m" in e.message
     assert e.iterations < 5000
     assert time.process_time() - t0 < 30  # a hang guard, not a timing test
+
+
+def test_campbell_frame_has_no_nan_row_with_status_ok():
+    """A Campbell diagram asked for more modes than a speed has (12 slots; the compressor on
+    plain bearings has 8 underdamped modes) used to give 24 rows of NaN frequency, log dec inf
+    and status "ok" per 12 speeds. The tidy frame leaves an empty slot out, as the sweep's
+    campbell rows do; the result's arrays keep the NaN slots (shape (n_speeds, n_modes))."""
+    s = rd.System.from_toml(Path(__file__).parent / "data" / "models" / "compressor_plain.toml")
+    c = rd.campbell(s, np.linspace(10.0, 200.0, 4), n_modes=12)
+    assert np.isnan(c.eigenvalues).any()  # the slots exist in the arrays
+    df = c.to_frame()
+    ok = df.status.isin(list(CONVERGED))
+    assert ok.all()
+    assert np.isfinite(df.freq_hz).all() and np.isfinite(df.log_dec).all()
+    assert len(df) == int(np.isfinite(c.eigenvalues).sum())
+
+
+def test_table_bearing_equilibrium_has_no_infinite_clearance_ratio():
+    """A table bearing has no clearance (0): x/c, y/c and ε were ±inf with a divide-by-zero
+    warning under status "ok". They are NaN ("not applicable"), as h_min is."""
+    import warnings
+
+    s = rd.System.from_toml(Path(__file__).parent / "data" / "models" / "compressor_table.toml")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        e = rd.equilibrium(s, 80.0)
+        df = e.to_frame()
+    assert e.status == "ok"
+    for col in ("x_over_c", "y_over_c", "eccentricity_ratio"):
+        assert not np.isinf(df[col]).any() and df[col].isna().all()
+    assert np.isfinite(df.journal_y_m).all()

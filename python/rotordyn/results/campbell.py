@@ -10,6 +10,7 @@ import numpy as np
 
 from rotordyn.results._display import Display
 
+from rotordyn._common.status import CONVERGED
 from rotordyn.results.modes import WHIRL_NAMES, log_dec
 
 if TYPE_CHECKING:
@@ -137,6 +138,12 @@ class CampbellResult(Display):
 
             for k, col in thermal_frame_columns(self.thermal, nm).items():
                 df[k] = col
+        # A slot with no mode at a solved speed (fewer underdamped modes there than slots) is
+        # not a row: a status-ok row never carries a NaN eigenvalue (the sweep's campbell rows
+        # leave them out too). A failed speed keeps its NaN rows with its failed status.
+        empty = ~np.isfinite(lam) & np.isin(np.asarray(st, dtype=str), list(CONVERGED))
+        if empty.any():
+            df = df[~empty].reset_index(drop=True)
         return df
 
     def plot(self, ax=None, harmonics=(0.5, 1.0, 2.0), color_by: str = "log_dec",

@@ -23,6 +23,8 @@ class EquilibriumResult(Display):
     r: (n,) all coordinates (rotor masters relative to the housings, then sleeve masters, m).
     journal_x_m, journal_y_m, clearance_m, h_min_m, h_min_angle_deg: (n_bearings,) per bearing;
     journal positions are relative to the bearing housing (q of eq. 7), in the DESIGN frame.
+    A bearing without a film (table or linear support: clearance 0) has NaN ("not
+    applicable") in clearance-scaled values, h_min and its angle.
     sleeve_m: {bearing index: (n_m,) inward sleeve master coordinates, m}.
     """
 
@@ -92,17 +94,25 @@ class EquilibriumResult(Display):
             raise InputError(f"bearing: expected one of {list(d)}, got {name!r}")
         return d[name]
 
+    def _over_c(self, value) -> np.ndarray:
+        # A bearing without a film (a table or linear support: clearance 0) has no
+        # eccentricity ratio: NaN ("not applicable"), never ±inf.
+        c = np.asarray(self.clearance_m, dtype=float)
+        out = np.full(np.shape(value), np.nan)
+        np.divide(value, c, out=out, where=c > 0)
+        return out
+
     @property
     def x_over_c(self) -> np.ndarray:
-        return self.journal_x_m / self.clearance_m
+        return self._over_c(self.journal_x_m)
 
     @property
     def y_over_c(self) -> np.ndarray:
-        return self.journal_y_m / self.clearance_m
+        return self._over_c(self.journal_y_m)
 
     @property
     def eccentricity_ratio(self) -> np.ndarray:
-        return np.hypot(self.journal_x_m, self.journal_y_m) / self.clearance_m
+        return self._over_c(np.hypot(self.journal_x_m, self.journal_y_m))
 
     def plot(self, ax=None):
         """Journal centre of every bearing in units of its clearance, in the clearance circle."""
