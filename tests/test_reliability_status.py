@@ -157,3 +157,13 @@ def test_table_bearing_equilibrium_has_no_infinite_clearance_ratio():
     for col in ("x_over_c", "y_over_c", "eccentricity_ratio"):
         assert not np.isinf(df[col]).any() and df[col].isna().all()
     assert np.isfinite(df.journal_y_m).all()
+
+
+def test_threshold_without_crossing_says_which_side_in_its_repr():
+    """The repr of a threshold search without a crossing said "stable ?"; it now carries the
+    scan's verdict (tilting-pad compressor: stable over the whole speed range)."""
+    s = rd.System.from_toml(Path(__file__).parent / "data" / "models"
+                            / "compressor_tilting_pad.toml")
+    th = rd.threshold(s, "speed_hz", bounds=(20.0, 250.0), n_scan=7)
+    assert th.status == "no_crossing"
+    assert "stable at all 7 scanned points" in repr(th) and "?" not in repr(th)

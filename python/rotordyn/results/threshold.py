@@ -37,6 +37,9 @@ class ThresholdResult(Display):
     message: str = ""
 
     def __repr__(self) -> str:
+        if self.status != "ok" and self.message:  # no crossing: say which side the scan saw
+            return (f"<ThresholdResult {self.status}: {self.message}; "
+                    f"{self.evaluations} evaluations>")
         return (f"<ThresholdResult {self.status}: {self.vary} = {self.value:.6g} (stable "
                 f"{self.stable_side or '?'}), whirl {self.whirl_frequency_hz:.4g} Hz "
                 f"(ratio {self.whirl_ratio:.3g}); {len(self.crossings)} crossings in "
