@@ -89,6 +89,8 @@ def main(argv=None):
                          "the projection for every vertex of the 401² Fig. 9 boundary")
     ap.add_argument("--sample", type=int, default=40,
                     help="--hopf: boundary vertices timed for the projection")
+    ap.add_argument("--procs", type=int, default=0,
+                    help="--hopf: also every vertex on this many processes (the measurement)")
     args = ap.parse_args(argv)
     if args.hopf:
         return hopf_bench(args)
@@ -193,10 +195,60 @@ def hopf_bench(args):
         types[key] = types.get(key, 0) + 1
     med = float(np.median(cpu))
     print(f"hopf at {len(idx)} sampled vertices: CPU per vertex median {med * 1e3:.1f} ms "
-          f"(max {max(cpu) * 1e3:.1f} ms); types {types}")
+          f"(max {max(cpu) * 1e3:.1f} ms, sum {sum(cpu):.1f} s); types {types}")
     print(f"projection for all {nv} vertices: {med * nv:.1f} s CPU, {med * nv / 2:.1f} s on "
           "2 cores (goal <= 120 s)")
+    if args.procs:
+        _hopf_all(bnd, args.procs)
     footer()
+
+
+def _hopf_vertex(v):
+    import time
+    c0 = time.process_time()
+    r = _RIG.hopf_at(v)
+    return r, time.process_time() - c0
+
+
+class _Rig:
+    def __init__(self):
+        self.rig = rd.models.paper_rig()
+
+    def hopf_at(self, v):
+        r = rd.hopf(self.rig, at=v[1], speed_hz=SPEED_HZ, config_ay_m=v[0])
+        return r.type if r.ok else r.status
+
+
+_RIG = None
+
+
+def _init():
+    global _RIG
+    pin_threads(1)  # the environment is inherited from the parent's pin_threads(1) too
+    _RIG = _Rig()
+
+
+def _hopf_all(bnd, procs):
+    """Every vertex of the boundary on ``procs`` processes (spawned, one BLAS thread each):
+    the measurement, start of the processes included."""
+    import multiprocessing as mp
+    import resource
+    import time
+
+    verts = [(float(a), float(p)) for a, p in zip(bnd["config_ay_m"], bnd["chamber_pressure_pa"])]
+    w0 = time.perf_counter()
+    ch0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with mp.get_context("spawn").Pool(procs, initializer=_init) as pool:
+        out = pool.map(_hopf_vertex, verts, chunksize=4)
+    wall = time.perf_counter() - w0
+    ch1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    child = (ch1.ru_utime + ch1.ru_stime) - (ch0.ru_utime + ch0.ru_stime)
+    types = {}
+    for t, _ in out:
+        types[t] = types.get(t, 0) + 1
+    print(f"hopf at all {len(verts)} vertices on {procs} processes (start included): "
+          f"{wall:.1f} s wall, {child:.1f} s CPU of the processes (hopf calls "
+          f"{sum(c for _, c in out):.1f} s); types {types} (goal <= 120 s on 2 cores)")
 
 
 if __name__ == "__main__":
