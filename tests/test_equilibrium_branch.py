@@ -52,6 +52,7 @@ def test_speed_branch_hopf_equals_threshold(compressor, speed_branch):
     h = rd.hopf(compressor, "speed_hz", bounds=(100.0, 150.0))
     assert h.ok
     assert hopfs[0]["parameter"] == pytest.approx(h.value, abs=5e-5)
+    assert hopfs[0]["smooth"]
     assert hopfs[0]["whirl_frequency_hz"] == pytest.approx(h.whirl_frequency_hz, abs=1e-3)
     assert abs(hopfs[0]["eigenvalue"].real) < 1e-6
     # stable below, unstable above; max Re λ changes sign at the same index
@@ -110,13 +111,19 @@ def test_model_field_branch_clearance(compressor):
     assert "clearance_m" in br.to_frame().columns[2]
 
 
-def test_rig_pressure_branch_two_crossings():
-    """The rig at a_y = −1.85 mm, 50 Hz (36 x 6 film): over p_c the equilibrium is unstable
-    between two Hopf points (the Fig. 9 lobe); both equal rd.threshold's crossings."""
+@pytest.fixture(scope="module")
+def coarse_rig():
     rig = rd.models.paper_rig()
     b = rig.bearings[0]
-    rig = dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
-                              + tuple(rig.bearings[1:]))
+    return dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
+                               + tuple(rig.bearings[1:]))
+
+
+def test_rig_pressure_branch_two_crossings(coarse_rig):
+    """The rig at a_y = −1.85 mm, 50 Hz (36 x 6 film): over p_c the equilibrium is unstable
+    between two Hopf points (the Fig. 9 lobe); both equal rd.threshold's crossings, and both
+    are smooth crossings."""
+    rig = coarse_rig
     br = rd.continuation(rig, "chamber_pressure_pa", (0.0, 0.1e6), speed_hz=50.0,
                          config_ay_m=-1.85e-3)
     th = rd.threshold(rig, bounds=(0.0, 0.1e6), speed_hz=50.0, config_ay_m=-1.85e-3)
@@ -124,6 +131,23 @@ def test_rig_pressure_branch_two_crossings():
     np.testing.assert_allclose(br.hopf_points(), th.crossings, atol=0.1)
     i, j = (b["index"] for b in br.bifurcations)
     assert br.stable[:i].all() and not br.stable[i:j].any() and br.stable[j:].all()
+    assert all(b["smooth"] for b in br.bifurcations)
+
+
+def test_rig_speed_branch_non_smooth_crossing(coarse_rig):
+    """The rig at a_y = 0, 0.4 MPa on the 36 x 6 film: max Re λ jumps from −0.006 to +0.33
+    1/s at 112.797 Hz (a node of the film changes its cavitation state; measured by
+    rd.stability at 112.79701 and 112.7971 Hz): the branch locates it where rd.threshold does
+    and reports it as a non-smooth Hopf crossing, with both sides' values."""
+    br = rd.continuation(coarse_rig, "speed_hz", (20.0, 150.0), chamber_pressure_pa=0.4e6,
+                         config_ay_m=0.0)
+    (b,) = br.bifurcations
+    assert b["kind"] == "hopf" and b["refined"] and not b["smooth"]
+    assert b["parameter"] == pytest.approx(112.797, abs=1e-3)
+    lo, hi = b["jump"]
+    assert -0.01 < lo < 0 and 0.3 < hi < 0.36
+    assert "non-smooth" in repr(br) and "non-smooth" in b["message"]
+    assert not br.bifurcations_frame()["smooth"].any()
 
 
 def test_failed_equilibrium_ends_the_branch(compressor, monkeypatch):

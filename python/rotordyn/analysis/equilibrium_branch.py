@@ -461,7 +461,7 @@ def _bifurcations(pts, n, correct, prob, L, D_p, refine, stats) -> tuple:
             events.append((kind, lambda lam, Jr: _signed_smin(Jr), 0))
         sig_b = float(a["t"] @ (b["y"] - a["y"]))
         for kind, f, k in events:
-            rec = {"kind": kind, "index": i, "refined": False, "message": ""}
+            rec = {"kind": kind, "index": i, "refined": False, "smooth": True, "message": ""}
             p_est, y_at, lam_at = None, None, None
             if refine and sig_b > 0:
                 def g(sig, f=f):
@@ -479,10 +479,23 @@ def _bifurcations(pts, n, correct, prob, L, D_p, refine, stats) -> tuple:
                     g0, g1 = f(a["lam"], a["Jr"]), f(b["lam"], b["Jr"])
                     if g0 * g1 < 0:
                         s = brentq(g, 0.0, sig_b, xtol=1e-12, rtol=1e-12, maxiter=100)
+                        # both sides of the root: a cavitated film is piecewise smooth, and
+                        # a change of its cavitated set can make the indicator jump through
+                        # zero instead of crossing it (no normal form there)
+                        d = 1e-9 * sig_b
+                        f_lo, f_hi = g(max(s - d, 0.0)), g(min(s + d, sig_b))
                         g(s)
                         y_at, lam_at = g.last
                         p_est = float(y_at[n] * D_p)
                         rec["refined"] = True
+                        ref = max(abs(g0), abs(g1))
+                        if min(abs(f_lo), abs(f_hi)) > 1e-6 * ref:
+                            rec["smooth"] = False
+                            rec["jump"] = (float(f_lo), float(f_hi))
+                            rec["message"] = (
+                                f"non-smooth: the indicator jumps from {f_lo:.4g} to "
+                                f"{f_hi:.4g} here (a change of a film's cavitated set; the "
+                                "linearisation on either side is not zero)")
                 except (RotordynError, ValueError) as exc:
                     rec["message"] = f"not refined: {exc}"
             if p_est is None:  # linear in the indicator between the two points

@@ -49,7 +49,9 @@ class EquilibriumBranchResult(Display):
     without a turn), ``index`` (the point after it), ``parameter``, ``r`` (n,) the state
     there, ``eigenvalue`` (the crossing one, 1/s), ``whirl_frequency_hz`` (Hopf),
     ``refined`` (located by Brent's method on the arclength; else linear interpolation of the
-    indicator) and ``message``. equilibria: every point's EquilibriumResult. stop: why the
+    indicator), ``smooth`` (False: the indicator — the crossing pair's Re λ, or the signed
+    smallest singular value of K + K_H — jumps through zero there instead of crossing it, a
+    change of a cavitated set; then ``jump`` = (value before, value after)) and ``message``. equilibria: every point's EquilibriumResult. stop: why the
     branch ended (``bound``, ``max_points``, ``step_min``, or a failed equilibrium's status);
     message: the last corrector failure, if any.
     """
@@ -137,7 +139,8 @@ class EquilibriumBranchResult(Display):
             return head + f", no points: {self.message}>"
         p = self.parameter * f
         e = self.eccentricity_ratio[:, 0]
-        bif = ", ".join(f"{b['kind']} at {sym} = {b['parameter'] * f:.6g} {disp}"
+        bif = ", ".join(f"{b['kind']}{'' if b.get('smooth', True) else ' (non-smooth)'} at "
+                        f"{sym} = {b['parameter'] * f:.6g} {disp}"
                         for b in self.bifurcations) or "no bifurcation"
         return (f"{head}, {len(self)} points, {sym} {p[0]:.5g} → {p[-1]:.5g} {disp}, "
                 f"e/c {e[0]:.4g} → {e[-1]:.4g} ({self.bearing_names[0]}), "
@@ -181,7 +184,7 @@ class EquilibriumBranchResult(Display):
         import pandas as pd
         cols = ["kind", "index", self.vary, "bearing", "eccentricity_ratio",
                 "eigenvalue_real_1_per_s", "eigenvalue_imag_1_per_s", "whirl_frequency_hz",
-                "refined", "message"]
+                "refined", "smooth", "message"]
         rows = []
         jx = self._journal_index()
         for b in self.bifurcations:
@@ -194,7 +197,8 @@ class EquilibriumBranchResult(Display):
                              "eigenvalue_real_1_per_s": b["eigenvalue"].real,
                              "eigenvalue_imag_1_per_s": b["eigenvalue"].imag,
                              "whirl_frequency_hz": b["whirl_frequency_hz"],
-                             "refined": b["refined"], "message": b["message"]})
+                             "refined": b["refined"], "smooth": b.get("smooth", True),
+                             "message": b["message"]})
         return pd.DataFrame(rows, columns=cols)
 
     def _journal_index(self) -> list:
