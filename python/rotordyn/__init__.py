@@ -87,6 +87,7 @@ from rotordyn.results import (
 )
 from rotordyn.analysis import hopf
 from rotordyn.results import HopfResult
+from rotordyn.results import EquilibriumBranchResult
 
 __all__ = [
     "__version__",
@@ -152,4 +153,5 @@ __all__ = [
     "SleeveResult",
     "hopf",
     "HopfResult",
+    "EquilibriumBranchResult",
 ]

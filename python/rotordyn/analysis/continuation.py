@@ -47,8 +47,45 @@ def _clearances(bcs) -> np.ndarray:
     return np.array([bc.clearance_m for bc in bcs]) if bcs else np.array([np.nan])
 
 
+def continuation(system: System, vary: str, bounds, start="equilibrium", **options):
+    """Pseudo-arclength continuation of a branch over ``vary`` within ``bounds``.
+
+    ``start`` a converged :class:`~rotordyn.results.PeriodicOrbitResult`: the branch of
+    periodic orbits (:func:`orbit_continuation`, ``vary`` p_c, speed or a_y) →
+    :class:`~rotordyn.results.BranchResult`. ``start="equilibrium"`` (the default) or a
+    converged :class:`~rotordyn.results.EquilibriumResult`: the branch of static equilibria
+    with their linear stability, Hopf points and folds
+    (:func:`rotordyn.analysis.equilibrium_branch.equilibrium_continuation`; ``vary`` also any
+    numeric model field path, e.g. ``"bearings.0.clearance_m"``; the operating point by
+    ``speed_hz``, ``chamber_pressure_pa``, ``config_ay_m``) →
+    :class:`~rotordyn.results.EquilibriumBranchResult`. ``options``: the keywords of the
+    function called (InputError naming an unknown one)."""
+    import inspect
+
+    from rotordyn.analysis.equilibrium_branch import equilibrium_continuation
+    from rotordyn.results.equilibrium import EquilibriumResult
+
+    if isinstance(start, PeriodicOrbitResult):
+        fn = orbit_continuation
+    elif isinstance(start, EquilibriumResult) or (isinstance(start, str)
+                                                  and start == "equilibrium"):
+        fn = equilibrium_continuation
+    else:
+        raise InputError("start: expected a PeriodicOrbitResult (a converged orbit from "
+                         "rotordyn.periodic_orbit), an EquilibriumResult or \"equilibrium\", "
+                         f"got {type(start).__name__ if not isinstance(start, str) else start!r}")
+    allowed = [k for k, prm in inspect.signature(fn).parameters.items()
+               if prm.kind == prm.KEYWORD_ONLY]
+    unknown = sorted(set(options) - set(allowed))
+    if unknown:
+        what = "an orbit" if fn is orbit_continuation else "an equilibrium"
+        raise InputError(f"{unknown[0]}: not an option of {what} branch (allowed: "
+                         f"{', '.join(allowed)})")
+    return fn(system, vary, bounds, start, **options)
+
+
 @limited_blas
-def continuation(system: System, vary: str, bounds, start, *, unbalances=(),
+def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(),
                  ds: float = 0.05, ds_min: float = 1e-3, ds_max: float = 0.2,
                  max_points: int = 50, direction: int = 1, param_scale: float | None = None,
                  rtol: float = 1e-8, atol_m: float = 1e-12, tol: float = 1e-6,

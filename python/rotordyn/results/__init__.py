@@ -20,4 +20,6 @@ __all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult",
            "StabilityResult", "ThresholdResult", "BoundaryResult", "UnbalanceResult",
            "StateSpaceResult", "TransientResult", "StaticResult", "PeriodicOrbitResult",
            "BranchResult", "SystemThermalResult", "load_result", "save_result"]
-__all__ += ["HopfResult"]
+from rotordyn.results.equilibrium_branch import EquilibriumBranchResult
+
+__all__ += ["HopfResult", "EquilibriumBranchResult"]

@@ -1,0 +1,119 @@
+"""Any model field as a sweep axis: a dotted path into the frozen :class:`System`, validated
+against the model when the spec loads, and applied by rebuilding the dataclasses along the
+path (:func:`dataclasses.replace`, so every ``__post_init__``/``check`` runs again).
+
+Path grammar: ``<field>(.<field> | .<index> | .<name> | .*)*``. Tuple fields (``bearings``,
+``rotor.disks``, ``rotor.sections``, ``supports``, ``materials``) take an integer index, an
+element's ``name`` (spaces may be written as ``_``), ``active`` for the active journal
+bearing(s), or ``*`` for every element. Examples: ``bearings.active.clearance_m``,
+``bearings.*.config_ay_m``, ``rotor.disks.1.mass_kg``, ``gravity_m_s2``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+from rotordyn.errors import InputError
+
+
+def _fields(obj) -> list[str]:
+    return [f.name for f in dataclasses.fields(obj)]
+
+
+def _select(seq: tuple, key: str, where: str) -> list[int]:
+    """Indices of the elements of tuple ``seq`` addressed by ``key``."""
+    if key == "*":
+        return list(range(len(seq)))
+    if key.lstrip("-").isdigit():
+        i = int(key)
+        if not 0 <= i < len(seq):
+            raise InputError(f"{where}: index {i} out of range (0..{len(seq) - 1})")
+        return [i]
+    if key == "active":
+        from rotordyn.bearings import ActiveJournalBearing
+
+        idx = [i for i, b in enumerate(seq) if isinstance(b, ActiveJournalBearing)]
+        if idx:
+            return idx
+    names = [getattr(e, "name", "") for e in seq]
+    idx = [i for i, n in enumerate(names) if n and (n == key or n.replace(" ", "_") == key)]
+    if not idx:
+        listed = ", ".join(repr(n) for n in names if n)
+        raise InputError(f"{where}: no element {key!r} (an index 0..{len(seq) - 1}, '*', "
+                         f"'active' or a name: {listed})")
+    return idx
+
+
+# Fields that hold an array when set (None by default) and are never a sweep axis.
+_ARRAY_FIELDS = {"viscosity_field_pa_s": "a frozen viscosity per film node, set by a thermal "
+                                         "equilibrium"}
+
+
+def _coerce(old, value, where: str):
+    """The new value in the type of the field it replaces (ints stay ints)."""
+    name = where.rsplit(".", 1)[-1]
+    if name in _ARRAY_FIELDS:
+        raise InputError(f"{where}: not a numeric field ({_ARRAY_FIELDS[name]}); "
+                         "only numbers can be swept")
+    if isinstance(old, bool) or not isinstance(old, (int, float)) and old is not None:
+        raise InputError(f"{where}: not a numeric field (holds {type(old).__name__}); "
+                         "only numbers can be swept")
+    if isinstance(old, int):
+        if not float(value).is_integer():
+            raise InputError(f"{where}: expected an integer, got {value!r}")
+        return int(value)
+    return float(value)
+
+
+def _set(obj, parts: list[str], value, where: str):
+    head, rest = parts[0], parts[1:]
+    here = f"{where}.{head}" if where else head
+    if not dataclasses.is_dataclass(obj):
+        raise InputError(f"{here}: {where or 'model'} has no fields")
+    if head not in _fields(obj):
+        raise InputError(f"unknown field {here!r} (allowed here: {', '.join(_fields(obj))})")
+    cur = getattr(obj, head)
+    if isinstance(cur, tuple):
+        if not rest:
+            raise InputError(f"{here}: a list; address one element (index, name or '*')")
+        idx = _select(cur, rest[0], f"{here}.{rest[0]}")
+        new = list(cur)
+        for i in idx:
+            if len(rest) == 1:
+                new[i] = _coerce(new[i], value, f"{here}.{i}")
+            else:
+                new[i] = _set(new[i], rest[1:], value, f"{here}.{rest[0]}")
+        return dataclasses.replace(obj, **{head: tuple(new)})
+    if rest:
+        return dataclasses.replace(obj, **{head: _set(cur, rest, value, here)})
+    return dataclasses.replace(obj, **{head: _coerce(cur, value, here)})
+
+
+def set_field(system, path: str, value, where: str = "grid"):
+    """A copy of ``system`` with the field at dotted ``path`` set to ``value`` (validated by
+    the model's own checks; an InputError names ``where``.path)."""
+    if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
+        raise InputError(f"{where}.{path}: expected a finite number, got {value!r}")
+    try:
+        return _set(system, path.split("."), value, "")
+    except InputError as exc:
+        raise InputError(f"{where}.{path}: {exc}") from None
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{where}.{path}: {exc}") from None
+
+
+def get_field(system, path: str):
+    """The current value(s) of dotted ``path`` (a list when ``*`` selects several)."""
+    def get(obj, parts):
+        if not parts:
+            return [obj]
+        head, rest = parts[0], parts[1:]
+        cur = getattr(obj, head)
+        if isinstance(cur, tuple):
+            out = []
+            for i in _select(cur, rest[0], head):
+                out += get(cur[i], rest[1:])
+            return out
+        return get(cur, rest)
+    return get(system, path.split("."))
