@@ -173,9 +173,14 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     roots = []
     for i in idx:
         a, b = float(ok[vary][i]), float(ok[vary][i + 1])
+        # The bracket's ends are the scan's own values (their signs found the crossing): a
+        # re-evaluation at a scan point that sits on the root can differ in the last bits
+        # (the equilibrium's tolerance) and flip the sign Brent's method checks.
+        ends = {a: float(re[i]), b: float(re[i + 1])}
         try:
-            roots.append((brentq(lambda x: g(x)[0], a, b, xtol=xtol,
-                                 rtol=4 * np.finfo(float).eps, maxiter=200), int(i)))
+            roots.append((brentq(lambda x, e=ends: e[x] if x in e else g(x)[0], a, b,
+                                 xtol=xtol, rtol=4 * np.finfo(float).eps, maxiter=200),
+                          int(i)))
         except ValueError as exc:  # NaN inside the bracket
             return ThresholdResult(value=math.nan, whirl_frequency_hz=math.nan,
                                    whirl_ratio=math.nan, stable_side="", evaluations=calls[0],
