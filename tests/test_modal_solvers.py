@@ -81,23 +81,36 @@ def test_campbell_rejects_decreasing_speeds():
         rd.rotor_campbell(rd.models.friswell_5_9_1(), [10.0, 5.0])
 
 
-@pytest.mark.parametrize("n_modes", [2, 6, 8, 12])
-def test_sparse_campbell_matches_dense_on_a_large_rotor(n_modes):
-    """rotor_campbell on a 244-DOF rotor (sparse shift-invert Arnoldi, each speed started from
-    the previous speed's Ritz vectors, the Krylov basis extended when its test fails) against
-    the dense LAPACK solver (``n_modes`` <= 0 selects it) at three of the twelve speeds, for
-    several requests (6 modes used to fail its first basis and restart from scratch). 1e-7
-    relative, as above: both backward stable, the Arnoldi residual held to 1e-9."""
+@pytest.fixture(scope="module")
+def large_rotor():
+    """The 244-DOF rotor of the test below, its twelve speeds and the dense LAPACK solver's
+    eigenvalues (``n_modes`` <= 0 selects it: all of them, whatever the sparse request) at
+    three of them: computed once for the module, as they do not depend on ``n_modes``."""
     secs = tuple(rd.ShaftSection(0.025, 0.05) for _ in range(60))
     sups = (rd.Support(0, "linear", kxx_n_per_m=1e7, kyy_n_per_m=2e7, cxx_n_s_per_m=200.0,
                        cyy_n_s_per_m=400.0),
             rd.Support(60, "linear", kxx_n_per_m=1e7, kyy_n_per_m=1e7))
     s = rd.System(rotor=rd.Rotor(secs), supports=sups, reduction=rd.Reduction(method="none"))
     c = core.constrain(s.to_core())
-    assert len(c.M) > 200
     speeds_hz = np.linspace(0.0, 300.0, 12)
-    camp = rd.rotor_campbell(s, speeds_hz, reduction="none", n_modes=n_modes)
+    dense = {}
     for i in (0, 6, 11):
         w = 2 * np.pi * speeds_hz[i]
-        dense = np.asarray(core.modal(c.M, c.C + w * c.G, c.K, list(c.xy), 0, False).eigenvalues)
-        np.testing.assert_allclose(camp.eigenvalues[i], dense[:n_modes], rtol=1e-7, atol=1e-9)
+        dense[i] = np.asarray(core.modal(c.M, c.C + w * c.G, c.K, list(c.xy), 0,
+                                         False).eigenvalues)
+    return s, c, speeds_hz, dense
+
+
+@pytest.mark.parametrize("n_modes", [2, 6, 8, 12])
+def test_sparse_campbell_matches_dense_on_a_large_rotor(large_rotor, n_modes):
+    """rotor_campbell on a 244-DOF rotor (sparse shift-invert Arnoldi, each speed started from
+    the previous speed's Ritz vectors, the Krylov basis extended when its test fails) against
+    the dense LAPACK solver at three of the twelve speeds (fixture ``large_rotor``), for
+    several requests (6 modes used to fail its first basis and restart from scratch). 1e-7
+    relative, as above: both backward stable, the Arnoldi residual held to 1e-9."""
+    s, c, speeds_hz, dense = large_rotor
+    assert len(c.M) > 200
+    camp = rd.rotor_campbell(s, speeds_hz, reduction="none", n_modes=n_modes)
+    for i in (0, 6, 11):
+        np.testing.assert_allclose(camp.eigenvalues[i], dense[i][:n_modes], rtol=1e-7,
+                                   atol=1e-9)
