@@ -1,6 +1,7 @@
-"""The 50-point limit-cycle branch of the paper rig: the corrector modes against the default in
-one run (issue 19's goal: a 50-point branch ≤ 30 s CPU on one core; docs/nonlinear.md prints
-these numbers).
+"""Limit-cycle branches by the corrector modes against the first (``exact``) in one run: the
+paper rig's 50-point branch (issue 19's goal: ≤ 30 s CPU on one core) and, ``--model
+compressor``, the oil-whip branch of the compressor on plain bearings through its folds
+(docs/nonlinear.md prints these numbers).
 
 Rig (``rd.models.paper_rig()``) at 50 Hz, a_y = −1.85 mm. Start: the stable cycle at
 p_c = 0.05 MPa (paper Fig. 11) from a 0.6 s transient (journal disturbed by 0.1 c upwards)
@@ -12,13 +13,25 @@ step control of the 6-point branch of bench_continuation.py would reach the Hopf
 6 points). A constant step gives every mode the same predictor sequence, so the points
 correspond one to one.
 
+Compressor (``--model compressor``: tests/data/models/compressor_plain.toml on a 36 × 6 film
+grid, as bench_continuation.py --whip): the stable whip cycle at 130 Hz from a 0.4 s transient
+(journal disturbed by 0.6 c), continued **down in speed** (bounds 100–140 Hz) at rtol 1e-6,
+tol 1e-4 with a constant step (default ds 0.1, 30 points): past the fold near 121.8 Hz onto
+the unstable cycles and back past the fold near 126.6 Hz. The speed has no parameter
+sensitivity: ``fast`` keeps the central-difference ∂R/∂p there (Broyden and the screening
+remain).
+
+``--repeat N`` runs the modes N times interleaved (exact, fast, exact, fast, …) and prints the
+median CPU and wall of each and the median CPU ratio of every mode to the first.
+
 Printed per mode: CPU and wall of the branch (one thread), the corrector statistics, and
-against the baseline (the first mode, ``sensitivities`` = today's default, in the same run):
+against the baseline (the first mode, ``exact`` = the default, in the same run):
 the largest point distance (state in the length scale, period relative, p_c in Pa), the
 largest difference of |μ_c|, equal stability flags and critical types, the same
 bifurcations (kinds, parameters). Load printed before and after each mode.
 
-    python benchmarks/bench_branch_fast.py                       # default, broyden, fast
+    python benchmarks/bench_branch_fast.py                       # exact, broyden, fast
+    python benchmarks/bench_branch_fast.py --model compressor --modes exact fast --repeat 3
     python benchmarks/bench_branch_fast.py --modes sensitivities fast --ds 0.05
     python benchmarks/bench_branch_fast.py --modes sensitivities fast:1e-4:0   # never re-run
 """
@@ -26,6 +39,7 @@ bifurcations (kinds, parameters). Load printed before and after each mode.
 from __future__ import annotations
 
 import argparse
+import statistics
 import sys
 import time
 from pathlib import Path
@@ -39,9 +53,31 @@ import rotordyn as rd  # noqa: E402
 
 SPEED_HZ, PC_PA, AY_M, C_M = 50.0, 0.05e6, -1.85e-3, 3e-4
 KW = {"rtol": 1e-6, "tol": 1e-4}
+MODELS = Path(__file__).parent.parent / "tests" / "data" / "models"
 
 
-def compare(base, br) -> str:
+def rig_case():
+    """(system, start cycle, continuation arguments, unit name, unit) of the rig's branch."""
+    rig = rd.models.paper_rig()
+    tr = rd.transient(rig, 0.6, SPEED_HZ, PC_PA, AY_M, disturbance_m=(0.0, 0.1 * C_M),
+                      n_out=6001)
+    cyc = rd.periodic_orbit(rig, SPEED_HZ, PC_PA, AY_M, start=tr, **KW)
+    return rig, cyc, dict(vary="chamber_pressure_pa", bounds=(0.0, 0.12e6)), "Pa", 1.0
+
+
+def compressor_case():
+    """The compressor's whip cycle at 130 Hz and its branch down in speed."""
+    import dataclasses
+
+    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
+    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
+                                              for b in s.bearings))
+    tr = rd.transient(s, 0.4, 130.0, disturbance_m=(0.0, 6e-5), n_out=4001)
+    cyc = rd.periodic_orbit(s, 130.0, start=tr, **KW)
+    return s, cyc, dict(vary="speed_hz", bounds=(100.0, 140.0), direction=-1), "Hz", 1.0
+
+
+def compare(base, br, unit: str) -> str:
     """Point-by-point comparison of two branches with the same predictor sequence."""
     n = min(len(base), len(br))
     lines = [f"points {len(br)} (baseline {len(base)})"]
@@ -51,73 +87,122 @@ def compare(base, br) -> str:
     for a, b in zip(base.orbits[:n], br.orbits[:n]):
         L = a.length_scale_m
         dx = max(dx, float(np.max(np.abs(a.r[0] - b.r[0]))) / L)
+    c = base.clearance_m[0]
     dT = float(np.max(np.abs(base.period_s[:n] - br.period_s[:n]) / base.period_s[:n]))
     dp = float(np.max(np.abs(base.parameter[:n] - br.parameter[:n])))
-    dA = float(np.max(np.abs(base.amplitude_m[:n, 0] - br.amplitude_m[:n, 0])) / C_M)
+    dA = float(np.max(np.abs(base.amplitude_m[:n, 0] - br.amplitude_m[:n, 0])) / c)
     dmu = float(np.max(np.abs(base.max_multiplier[:n] - br.max_multiplier[:n])))
     same_stab = bool(np.array_equal(base.stable[:n], br.stable[:n]))
     same_type = base.critical_type[:n] == br.critical_type[:n]
-    bk = [(b["kind"], round(b["parameter"], 1)) for b in base.bifurcations]
-    fk = [(b["kind"], round(b["parameter"], 1)) for b in br.bifurcations]
-    lines.append(f"max |dr0|/L {dx:.2e}, |dA|/c {dA:.2e}, |dT|/T {dT:.2e}, |dp_c| {dp:.3g} Pa, "
-                 f"max ||mu_c| diff| {dmu:.2e}")
+    bk = [(b["kind"], float(f"{b['parameter']:.6g}")) for b in base.bifurcations]
+    fk = [(b["kind"], float(f"{b['parameter']:.6g}")) for b in br.bifurcations]
+    lines.append(f"max |dr0|/L {dx:.2e}, |dA|/c {dA:.2e}, |dT|/T {dT:.2e}, |dp| {dp:.3g} "
+                 f"{unit}, max ||mu_c| diff| {dmu:.2e}")
     lines.append(f"stability flags equal: {same_stab}; critical types equal: {same_type}")
     lines.append(f"bifurcations: {fk} (baseline {bk})")
+    if [k for k, _ in bk] == [k for k, _ in fk]:
+        d = [abs(a[1] - b[1]) for a, b in zip(bk, fk)]
+        lines.append("bifurcation shifts: " + ", ".join(f"{x:.3g} {unit}" for x in d))
     return "\n  ".join(lines)
+
+
+def recheck(system, br, vary: str, band: float, rig: bool) -> None:
+    """|mu_c| of screened points near the unit circle at both tolerances, same state."""
+    print(f"\nrecheck: screened points with ||mu_c| - 1| < {band:g}, re-shot from their state")
+    for i, o in enumerate(br.orbits):
+        if o.stats["monodromy_rtol"] == KW["rtol"] or abs(br.max_multiplier[i] - 1) >= band:
+            continue
+        p = float(br.parameter[i])
+        op = {"speed_hz": o.speed_hz, "chamber_pressure_pa": o.chamber_pressure_pa,
+              "config_ay_m": AY_M if rig else None} | {vary: p}
+        mu = {}
+        for sr in (1e-4, KW["rtol"]):
+            r = rd.periodic_orbit(system, op["speed_hz"], op["chamber_pressure_pa"],
+                                  op["config_ay_m"], start=(o.r[0], o.v[0]),
+                                  period_s=o.period_s, sensitivity_rtol=sr, **KW)
+            mu[sr] = (abs(r.critical_multiplier) if r.ok else float("nan"), r.residuals[0])
+        print(f"  point {i} ({vary} {p:.6g}): branch |mu_c| {br.max_multiplier[i]:.5f} "
+              f"(screened); re-shot |mu_c| {mu[1e-4][0]:.5f} at 1e-4, {mu[KW['rtol']][0]:.5f} "
+              f"at {KW['rtol']:g} (first residual {mu[KW['rtol']][1]:.2e})")
 
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--ds", type=float, default=0.0125)
-    ap.add_argument("--max-points", type=int, default=50)
-    ap.add_argument("--modes", nargs="+", default=["sensitivities", "broyden", "fast"],
+    ap.add_argument("--model", choices=("rig", "compressor"), default="rig",
+                    help="rig: p_c branch at 50 Hz; compressor: the whip branch over the speed")
+    ap.add_argument("--ds", type=float, default=None,
+                    help="constant step ds = ds_max (default 0.0125 rig, 0.1 compressor)")
+    ap.add_argument("--max-points", type=int, default=None,
+                    help="points (default 50 rig, 30 compressor)")
+    ap.add_argument("--modes", nargs="+", default=["exact", "broyden", "fast"],
                     help="newton modes; fast:SCREEN_RTOL:SCREEN_MARGIN sets the screening")
+    ap.add_argument("--repeat", type=int, default=1, help="interleaved repeats of the modes")
     ap.add_argument("--quiet", action="store_true", help="no per-point table")
+    ap.add_argument("--recheck", type=float, default=None, metavar="BAND",
+                    help="after the runs: every point of the last branch with a screened "
+                         "monodromy and ||mu_c| - 1| < BAND re-shot from its own state by "
+                         "rd.periodic_orbit at sensitivity_rtol 1e-4 and at rtol (the "
+                         "screening's error at the same point)")
     args = ap.parse_args()
-    header("bench_branch_fast: rig limit-cycle branch over p_c, 50 Hz, a_y = -1.85 mm, "
-           f"ds = ds_max = {args.ds}, max_points {args.max_points}")
-    rig = rd.models.paper_rig()
+    rig = args.model == "rig"
+    ds = args.ds if args.ds is not None else (0.0125 if rig else 0.1)
+    npts = args.max_points if args.max_points is not None else (50 if rig else 30)
+    what = ("rig limit-cycle branch over p_c, 50 Hz, a_y = -1.85 mm" if rig else
+            "compressor on plain bearings (36 x 6), whip branch down in speed from 130 Hz")
+    header(f"bench_branch_fast: {what}, ds = ds_max = {ds}, max_points {npts}, "
+           f"repeat {args.repeat}")
     w0, c0 = time.perf_counter(), time.process_time()
-    tr = rd.transient(rig, 0.6, SPEED_HZ, PC_PA, AY_M, disturbance_m=(0.0, 0.1 * C_M),
-                      n_out=6001)
-    cyc = rd.periodic_orbit(rig, SPEED_HZ, PC_PA, AY_M, start=tr, **KW)
+    system, cyc, ckw, unit, to_unit = rig_case() if rig else compressor_case()
     print(f"start: {cyc} ({time.perf_counter() - w0:.1f} s wall, "
           f"{time.process_time() - c0:.1f} s CPU)")
     base = None
-    for mode in args.modes:
-        print_load(f"before {mode}")
-        w0, c0 = time.perf_counter(), time.process_time()
-        name, *extra = mode.split(":")  # fast:SCREEN_RTOL:SCREEN_MARGIN
-        sk = dict(zip(("screen_rtol", "screen_margin"), map(float, extra)))
-        br = rd.continuation(rig, "chamber_pressure_pa", (0.0, 0.12e6), cyc, ds=args.ds,
-                             ds_max=args.ds, max_points=args.max_points, newton=name, **sk,
-                             **KW)
-        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
-        print(f"\n[{mode}] {br}")
-        if not args.quiet:
-            print(f"{'p_c MPa':>10} {'amplitude µm':>13} {'period ms':>10} {'|mu_c|':>8} "
-                  f"{'type':>15} stable")
-            for i in range(len(br)):
-                print(f"{br.parameter[i] / 1e6:10.6f} {br.amplitude_m[i, 0] * 1e6:13.2f} "
-                      f"{br.period_s[i] * 1e3:10.4f} {br.max_multiplier[i]:8.4f} "
-                      f"{br.critical_type[i]:>15} {bool(br.stable[i])}")
-        for b in br.bifurcations:
-            print(f"bifurcation: {b['kind']} at p_c = {b['parameter'] / 1e6:.6f} MPa")
-        mr = [o.stats["monodromy_rtol"] for o in br.orbits]
-        print("monodromy tolerance per point: " + ", ".join(
-            f"{r:g} x {mr.count(r)}" for r in sorted(set(mr))))
-        print(f"stop: {br.stop} {br.message}; {br.stats}")
-        print(f"[{mode}] {len(br)} points: {wall:.2f} s wall, {cpu:.2f} s CPU "
-              f"({cpu / max(len(br), 1):.3f} s CPU per point)")
-        if base is None:
-            base = br
-        else:
-            print(f"[{mode}] against [{args.modes[0]}]:\n  {compare(base, br)}")
-            n = min(len(base), len(br))
-            d = np.abs(base.max_multiplier[:n] - br.max_multiplier[:n])
-            print(f"  ||mu_c| diff| per point (|mu_c| of the baseline): " + ", ".join(
-                f"{m:.4f}:{x:.1e}" for m, x in zip(base.max_multiplier[:n], d)))
-        print_load(f"after {mode}")
+    times = {m: ([], []) for m in args.modes}
+    for rep in range(args.repeat):
+        for mode in args.modes:
+            print_load(f"before {mode} (repeat {rep + 1})")
+            w0, c0 = time.perf_counter(), time.process_time()
+            name, *extra = mode.split(":")  # fast:SCREEN_RTOL:SCREEN_MARGIN
+            sk = dict(zip(("screen_rtol", "screen_margin"), map(float, extra)))
+            br = rd.continuation(system, start=cyc, ds=ds, ds_max=ds, max_points=npts,
+                                 newton=name, **ckw, **sk, **KW)
+            wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+            times[mode][0].append(cpu)
+            times[mode][1].append(wall)
+            print(f"\n[{mode}] {br}")
+            if not args.quiet and rep == 0:
+                print(f"{ckw['vary']:>20} {'amplitude µm':>13} {'period ms':>10} "
+                      f"{'|mu_c|':>8} {'dp/ds':>8} {'type':>15} stable monodromy_rtol")
+                for i in range(len(br)):
+                    print(f"{br.parameter[i] / to_unit:20.6f} "
+                          f"{br.amplitude_m[i, 0] * 1e6:13.3f} "
+                          f"{br.period_s[i] * 1e3:10.5f} {br.max_multiplier[i]:8.5f} "
+                          f"{br.tangent_p[i]:+8.4f} {br.critical_type[i]:>15} "
+                          f"{str(bool(br.stable[i])):>6} "
+                          f"{br.orbits[i].stats['monodromy_rtol']:g}")
+            for b in br.bifurcations:
+                print(f"bifurcation: {b['kind']} at {ckw['vary']} = {b['parameter']:.6g}")
+            print(f"stop: {br.stop} {br.message}; {br.stats}")
+            print(f"[{mode}] {len(br)} points: {wall:.2f} s wall, {cpu:.2f} s CPU "
+                  f"({cpu / max(len(br), 1):.3f} s CPU per point)")
+            if base is None:
+                base = br
+            else:
+                print(f"[{mode}] against [{args.modes[0]}]:\n  {compare(base, br, unit)}")
+                n = min(len(base), len(br))
+                d = np.abs(base.max_multiplier[:n] - br.max_multiplier[:n])
+                print("  ||mu_c| diff| per point (|mu_c| of the baseline): " + ", ".join(
+                    f"{m:.4f}:{x:.1e}" for m, x in zip(base.max_multiplier[:n], d)))
+            print_load(f"after {mode} (repeat {rep + 1})")
+    if args.recheck is not None:
+        recheck(system, br, ckw["vary"], args.recheck, rig)
+    print("\nsummary (median over the repeats, one thread):")
+    ref = times[args.modes[0]][0]
+    for mode, (cpus, walls) in times.items():
+        ratios = [c / r for c, r in zip(cpus, ref)]
+        print(f"  [{mode}] CPU {statistics.median(cpus):.2f} s {[round(c, 2) for c in cpus]}, "
+              f"wall {statistics.median(walls):.2f} s {[round(w, 2) for w in walls]}; CPU / "
+              f"[{args.modes[0]}] in the same repeat: median {statistics.median(ratios):.3f} "
+              f"{[round(x, 3) for x in ratios]}")
     footer()
     return 0
 

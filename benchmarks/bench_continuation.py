@@ -76,7 +76,8 @@ def main() -> int:
     ap.add_argument("--down", action="store_true", help="also continue towards lower p_c")
     ap.add_argument("--sensitivity-rtol", type=float, default=None,
                     help="monodromy tolerance of the branch (default: rtol = 1e-6)")
-    ap.add_argument("--newton", choices=("broyden", "sensitivities"), default="broyden",
+    ap.add_argument("--newton", choices=("broyden", "sensitivities", "exact", "fast"),
+                    default="broyden",
                     help="the correctors' Newton matrix (default: Broyden updates from the "
                          "previous point's)")
     ap.add_argument("--whip", action="store_true",

@@ -137,6 +137,64 @@ def test_cli_continuation(capsys, tmp_path):
     assert "bounds" in capsys.readouterr().err
 
 
+def test_cli_continuation_newton_fast_and_exact(capsys):
+    """``rotordyn continuation --newton fast|exact`` reaches the continuation's correctors:
+    the forced speed branch of the compressor on linear supports (3 points, rtol 1e-9, tol
+    1e-7) by each gives the same points — the closed-form orbits at their speeds, so the two
+    agree to the correctors' tol: parameter within 1e-6 Hz·(tol/1e-7), amplitude 1e-6
+    relative (measured ≤ 1e-9 Hz and ≤ 2e-10) — and the fast one spends fewer flows with
+    sensitivities; the JSON says which corrector ran. An unknown value is refused by the parser
+    (exit 2) with the option's name and the allowed values."""
+    import json
+
+    from rotordyn.cli import main
+
+    model = str(MODELS / "compressor_linear.toml")
+    base = ["continuation", model, "--kind", "forced", "--speed-hz", "60", "--unbalance",
+            "3,1e-3,30", "--vary", "speed_hz", "--bounds", "55", "80", "--max-points", "3",
+            "--rtol", "1e-9", "--tol", "1e-7", "--json"]
+    out = {}
+    for mode in ("exact", "fast"):
+        assert main(base + ["--newton", mode]) == 0
+        out[mode] = json.loads(capsys.readouterr().out)
+        assert out[mode]["newton"] == mode and out[mode]["status"] == "ok"
+    e, f = out["exact"], out["fast"]
+    assert len(e["parameter"]) == len(f["parameter"]) == 3
+    np.testing.assert_allclose(f["parameter"], e["parameter"], atol=1e-6)
+    np.testing.assert_allclose(f["amplitude_m"], e["amplitude_m"], rtol=1e-6)
+    assert f["stable"] == e["stable"]
+    assert f["stats"]["sensitivity_flows"] < e["stats"]["sensitivity_flows"]
+    assert main(base + ["--newton", "secant"]) == 2
+    err = capsys.readouterr().err
+    assert "--newton" in err and "'exact'" in err and "'fast'" in err
+
+
+def test_cli_continuation_help_says_what_each_newton_does(capsys):
+    from rotordyn.cli import main
+
+    with pytest.raises(SystemExit):
+        main(["continuation", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "--newton {exact,fast}" in text
+    assert "exact = Newton" in text and "fast = Broyden" in text
+
+
+def test_continuation_newton_names(linear_system, linear_orbit):
+    """``newton="exact"`` is the default ``"sensitivities"`` under the CLI's name (the same
+    flows and points bit for bit); an unknown name is an InputError listing the allowed."""
+    kw = dict(unbalances=UB, rtol=1e-9, tol=1e-7, max_points=2)
+    a = rd.continuation(linear_system, "speed_hz", (55.0, 80.0), linear_orbit,
+                        newton="exact", **kw)
+    b = rd.continuation(linear_system, "speed_hz", (55.0, 80.0), linear_orbit,
+                        newton="sensitivities", **kw)
+    np.testing.assert_array_equal(a.parameter, b.parameter)
+    np.testing.assert_array_equal(a.amplitude_m, b.amplitude_m)
+    assert a.stats == b.stats
+    with pytest.raises(rd.InputError, match="newton.*'exact', 'fast'"):
+        rd.continuation(linear_system, "speed_hz", (55.0, 80.0), linear_orbit,
+                        newton="secant", **kw)
+
+
 @pytest.fixture(scope="module")
 def coarse_rig_cycle():
     """The paper rig (36 × 6 film grid for speed) and its stable cycle at a_y = −1.85 mm,

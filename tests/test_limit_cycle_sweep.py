@@ -224,6 +224,35 @@ def test_a_branch_that_stops_early_gives_failed_rows(tmp_path):
     assert list(f[f["record"] == "hopf"]["status"]) == ["ok"]
 
 
+def test_newton_option_reaches_the_continuation(tmp_path, monkeypatch):
+    """``options.newton = "fast"`` / ``"exact"`` (docs/nonlinear.md) load from the spec file,
+    change the spec's hash (a dataset of one is not resumed by the other) and reach every
+    continuation of the line (a spy on rotordyn.sweep.limit_cycle_rows.continuation;
+    max_points = 2 keeps the run short: the rows are ``failed``, stopped early)."""
+    import rotordyn.sweep as sw
+    from rotordyn.sweep import limit_cycle_rows, run_sweep
+    from rotordyn.sweep.spec import SweepSpec
+
+    specs = {m: _spec(tmp_path, [125.0, 127.0], max_points=2, extra=f'newton = "{m}"',
+                      name=f"{m}.toml") for m in ("fast", "exact")}
+    loaded = {m: SweepSpec.from_toml(p) for m, p in specs.items()}
+    assert {m: s.options["newton"] for m, s in loaded.items()} == {"fast": "fast",
+                                                                   "exact": "exact"}
+    assert loaded["fast"].hash() != loaded["exact"].hash()
+    seen = []
+    real = limit_cycle_rows.continuation
+
+    def spy(*args, **kw):
+        seen.append(kw.get("newton"))
+        return real(*args, **kw)
+
+    monkeypatch.setattr(limit_cycle_rows, "continuation", spy)
+    assert run_sweep(specs["fast"], tmp_path / "o", threads=1, progress=False).complete
+    assert seen and set(seen) == {"fast"}
+    f = sw.open(tmp_path / "o").frame
+    assert list(f[f["record"] == "cycle"]["status"]) == ["failed", "failed"]
+
+
 def test_bad_limit_cycle_specs_name_the_field(tmp_path):
     """An unknown station, a varied axis without bounds (one value), a start amplitude beyond
     the clearance and an unknown Newton method are InputErrors naming the field, before any
@@ -236,7 +265,7 @@ def test_bad_limit_cycle_specs_name_the_field(tmp_path):
         SweepSpec.from_toml(_spec(tmp_path, [121.0]))
     with pytest.raises(rd.InputError, match="options.start_amplitude"):
         SweepSpec.from_toml(_spec(tmp_path, [121.0, 127.0], extra="start_amplitude = 2.0"))
-    with pytest.raises(rd.InputError, match="options.newton"):
+    with pytest.raises(rd.InputError, match="options.newton.*'exact', 'fast'"):
         SweepSpec.from_toml(_spec(tmp_path, [121.0, 127.0], extra='newton = "secant"'))
     spec = SweepSpec.from_toml(_spec(tmp_path, [121.0, 127.0], extra="station = 3"))
     assert spec.line_axis == "speed_hz" and spec.chunk_bounds() == [(0, 2)]

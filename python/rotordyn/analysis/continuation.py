@@ -27,6 +27,13 @@ from rotordyn.results.periodic import PeriodicOrbitResult
 from rotordyn.units import hz_to_rad_s
 
 VARIABLES = ("chamber_pressure_pa", "speed_hz", "config_ay_m")
+#: the correctors' names: "exact" is "sensitivities" (Newton with Φ and ∂R/∂p at every
+#: iteration) by the name the CLI and sweep specs use beside "fast"
+NEWTON_MODES = ("exact", "fast") + NEWTON
+#: the choices of ``rotordyn continuation --newton``
+CLI_NEWTON = ("exact", "fast")
+#: the correctors when none is asked for (docs/nonlinear.md, "fast on a second model")
+DEFAULT_NEWTON = "exact"
 _PARAM = {"chamber_pressure_pa": "chamber_pressure", "speed_hz": "speed",
           "config_ay_m": "config"}
 
@@ -91,7 +98,7 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
                  rtol: float = 1e-8, atol_m: float = 1e-12, tol: float = 1e-6,
                  max_iter: int = 8, max_steps: int = 200000, fd_step: float = 1e-4,
                  n_out: int = 101, sensitivity_rtol: float | None = None,
-                 newton: str = "sensitivities", screen_rtol: float = 1e-4,
+                 newton: str = DEFAULT_NEWTON, screen_rtol: float = 1e-4,
                  screen_margin: float = 0.005, progress=None) -> BranchResult:
     """Continue the periodic orbit ``start`` over ``vary`` within ``bounds``.
 
@@ -127,7 +134,8 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         point (default ``rtol``): the accuracy of the multipliers and the tangent; looser is
         cheaper (as for :func:`rotordyn.periodic_orbit`).
     newton
-        ``"sensitivities"`` (default): Φ and ∂R/∂p at every iteration. ``"broyden"``: each
+        ``"exact"`` (default; ``"sensitivities"`` is the same): Φ and ∂R/∂p at every
+        iteration. ``"broyden"``: each
         corrector starts from the previous point's bordered matrix and updates it by Broyden
         from flows without sensitivities; Φ and ∂R/∂p are recomputed at the converged point
         (and when a step does not halve the residual). Both converge within tol.
@@ -247,7 +255,9 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     opt.cvode, opt.tol, opt.max_iter = c, float(tol), int(max_iter)
     if sensitivity_rtol is not None:
         opt.sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
-    newton = v.choice("newton", newton, NEWTON + ("fast",))
+    newton = v.choice("newton", newton, NEWTON_MODES)
+    if newton == "exact":
+        newton = "sensitivities"
     opt.broyden = newton in ("broyden", "fast")
     if newton == "fast":
         opt.parameter_sensitivity = True

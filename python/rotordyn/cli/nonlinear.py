@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from rotordyn import analysis
+from rotordyn.analysis.continuation import CLI_NEWTON, DEFAULT_NEWTON
 from rotordyn._common import validate as v
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
                                  check_figure, json_text, save_figure, table_text)
@@ -41,6 +42,15 @@ def register(sub) -> None:
     c.add_argument("--max-points", type=int, default=50, help="points on the branch")
     c.add_argument("--direction", type=int, choices=[1, -1], default=1,
                    help="leave the start towards growing (1) or falling (-1) parameter")
+    c.add_argument("--newton", choices=list(CLI_NEWTON), default=DEFAULT_NEWTON,
+                   help="the correctors (default %(default)s): exact = Newton with the "
+                        "monodromy from CVODES sensitivities and dR/dp by central "
+                        "differences at every iteration, every point's multipliers at "
+                        "--rtol; fast = Broyden updates from the previous point's matrix, "
+                        "dR/dp from a CVODES parameter sensitivity (p_c, a_y; the speed "
+                        "keeps the central difference), each point's monodromy screened "
+                        "at 1e-4 and redone at --rtol where |mu_c| is within 0.005 of 1 "
+                        "(docs/nonlinear.md)")
     c.add_argument("--plot", default=None, metavar="FIG",
                    help="write the bifurcation diagram (amplitude against the parameter)")
     c.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -155,11 +165,12 @@ def _cmd_continuation(args) -> int:
         return 1
     br = analysis.continuation(s, args.vary, tuple(args.bounds), orbit, unbalances=ub,
                                ds=args.ds, ds_max=max(0.2, args.ds), max_points=args.max_points,
-                               direction=args.direction, rtol=args.rtol, tol=args.tol)
+                               direction=args.direction, rtol=args.rtol, tol=args.tol,
+                               newton=args.newton)
     if args.json:
         print(json_text({
             "status": br.status, "stop": br.stop, "message": br.message, "vary": br.vary,
-            "kind": br.kind, "parameter": br.parameter, "amplitude_m": br.amplitude_m,
+            "kind": br.kind, "newton": args.newton, "parameter": br.parameter, "amplitude_m": br.amplitude_m,
             "period_s": br.period_s, "max_multiplier": br.max_multiplier,
             "stable": br.stable, "critical_type": list(br.critical_type),
             "bifurcations": [{"kind": b["kind"], "index": b["index"],

@@ -28,8 +28,8 @@ Rows (one schema, ``record`` tells them apart):
 
 Options (docs/nonlinear.md): the ``hopf`` analysis's, and the shooting's ``rtol``, ``tol``,
 ``sensitivity_rtol``, ``n_out``; the continuation's ``ds``, ``ds_max``, ``max_points``,
-``newton`` (its correctors only; the cycle at each grid value is shot by Newton with
-sensitivities); ``start_amplitude``, ``distance``, ``station``. ``tol`` is the shooting's:
+``newton`` (``exact`` — the default, also ``sensitivities`` —, ``fast``, ``broyden``: its
+correctors only; the cycle at each grid value is shot by Newton with sensitivities); ``start_amplitude``, ``distance``, ``station``. ``tol`` is the shooting's:
 the threshold scan, crossings and l1 of the hopf rows keep the equilibrium's default
 tolerance, so they equal a ``hopf`` sweep's rows.
 
@@ -45,7 +45,7 @@ import math
 import numpy as np
 
 from rotordyn.analysis.assembly import pin_assembled
-from rotordyn.analysis.continuation import continuation
+from rotordyn.analysis.continuation import DEFAULT_NEWTON, continuation
 from rotordyn.analysis.hopf import FD_STEP, hopf, hopf_cycle
 from rotordyn.analysis.periodic import periodic_orbit
 from rotordyn.analysis.transient import transient
@@ -66,7 +66,7 @@ CYCLE_COLUMNS = ("cycle", "bearing", "amplitude_m", "amplitude_c", "period_s",
 NATURAL_ENDS = ("bound", "hopf", "rub", "equilibrium")
 #: defaults of the options (docs/nonlinear.md)
 DEFAULTS = {"rtol": 1e-7, "tol": 1e-6, "ds": 0.05, "ds_max": 0.2, "max_points": 60,
-            "n_out": 1001, "start_amplitude": 0.08, "newton": "sensitivities"}
+            "n_out": 1001, "start_amplitude": 0.08, "newton": DEFAULT_NEWTON}
 
 
 def semi_major_axis(x, y) -> float:

@@ -24,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+from rotordyn.analysis.continuation import NEWTON_MODES
 from rotordyn.errors import InputError
 from rotordyn._common import validate as v
 from rotordyn.model import builtin as models
@@ -163,7 +164,7 @@ OPTIONS["limit_cycle"] = {**OPTIONS["hopf"], "station": _opt_int(0, 100000),
                           "max_points": _opt_int(2, 10000), "n_out": _opt_int(8, 100000),
                           "distance": _opt_range(0.0, 0.5),
                           "start_amplitude": _opt_range(0.0, 0.9),
-                          "newton": _opt_choice("sensitivities", "broyden")}
+                          "newton": _opt_choice(*NEWTON_MODES)}
 REQUIRED["limit_cycle"] = ("vary",)
 
 
