@@ -6,7 +6,8 @@ and optionally a baseline package (``--baseline PYTHONPATH``, e.g. the main chec
 installed core: the code before the change). Each side runs in its own process (one BLAS
 thread), the sides alternate ``--repeat`` times, medians are printed with the load; the
 outputs of every side are compared with the first side's (statuses, equilibria, eigenvalues:
-bit for bit or the largest difference). Also printed: Reynolds solves and active-set
+bit for bit or the largest difference). A side ``jacobian="exact"`` forms the Newton Jacobian
+at every step (the former equilibrium, before the default modified Newton). Also printed: Reynolds solves and active-set
 iterations per solve (sides whose core exposes ``reynolds_iterations``).
 
     python benchmarks/bench_stability_batch.py [--lines 10] [--points 100] [--repeat 3]
@@ -40,7 +41,8 @@ om = np.full(nl * npl, hz_to_rad_s(50.0))
 pr = np.tile(pcs, nl)
 A = np.array([asm.config_vector(ay) for ay in ays for _ in pcs])
 rs = [1 if k == 0 else 0 for _ in ays for k in range(npl)]
-extra = {} if carry == "default" else {"carry_cavitation": carry == "on"}
+extra = ({} if carry == "default" else {"jacobian": carry[4:]} if carry.startswith("jac=")
+         else {"carry_cavitation": carry == "on"})
 def run():
     sol = _core.SystemSolver(asm.model)
     res = _core.stability_batch(sol, om, pr, A, rs, equilibrium_options({}), 0, False,
@@ -57,7 +59,8 @@ n = nl * npl
 np.savez(out, status=np.array(res.status), ev=np.asarray(res.eigenvalues), r=np.asarray(res.r))
 print(json.dumps({"cpu_ms": 1e3 * min(cpu) / n, "solves": sol.reynolds_solves / n,
                   "as_iters": (sol.reynolds_iterations / sol.reynolds_solves
-                               if hasattr(sol, "reynolds_iterations") else None)}))
+                               if hasattr(sol, "reynolds_iterations") else None),
+                  "lin": (sol.linearizations / n if hasattr(sol, "linearizations") else None)}))
 '''
 
 
@@ -91,7 +94,8 @@ def main():
     ap.add_argument("--baseline", default=None, help="PYTHONPATH of the baseline package")
     a = ap.parse_args()
     here = os.environ.get("PYTHONPATH", "")
-    sides = [("this tree, carry along the line", here, "on"),
+    sides = [("this tree (default)", here, "on"),
+             ("this tree, exact Newton Jacobian", here, "jac=exact"),
              ("this tree, no line carry", here, "off")]
     if a.baseline:
         sides.insert(0, ("baseline", a.baseline, "default"))
@@ -118,9 +122,10 @@ def main():
             med0 = med0 or med
             r0 = runs[0][0]
             it = f"{r0['as_iters']:.3f}" if r0["as_iters"] is not None else "n/a"
+            lin = f"{r0['lin']:.3f}" if r0.get("lin") is not None else "n/a"
             print(f"{name:34s} {med:.4f} ms CPU/point (median of {len(runs)}; each the best of "
                   f"{a.calls}), {med / med0:.3f}x the first; Reynolds solves/point "
-                  f"{r0['solves']:.3f}, active-set iterations/solve {it}; "
+                  f"{r0['solves']:.3f}, linearisations/point {lin}, active-set iterations/solve {it}; "
                   f"{compare(ref, np.load(runs[-1][1]))}")
     print(f"load after {load()}")
 

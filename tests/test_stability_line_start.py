@@ -11,7 +11,8 @@ References and tolerances:
   differ by orders more).
 - Cost: from the extrapolated start the line's Newton iterations (polish steps included)
   are fewer than from the copied start (observed 3.0 -> 1.8 per point on the paper rig); the
-  copied start gives the loop's count exactly, so this fails on the code before.
+  copied start gives the loop's count exactly, so this fails on the code before (the
+  chunk's Newton with the exact Jacobian at every step, ``jacobian="exact"``, as the loop's).
 - A failing extrapolated start is retried from the previous equilibrium: the statuses equal
   the loop's.
 Model: the paper rig, a Fig. 9 line over p_c at a_y = -1.5 mm, 50 Hz.
@@ -42,7 +43,7 @@ def test_extrapolated_start_same_roots_fewer_iterations():
     res = _core.stability_batch(
         _core.SystemSolver(asm.model), w, pcs, a, [1] + [0] * (len(pcs) - 1), o, 0, False,
         FD_REL_STEP, asm.rotor.xy_pairs(), asm.rotor.rot_pairs(),
-        [i for bc in asm.bearings for i in bc.sleeve])
+        [i for bc in asm.bearings for i in bc.sleeve], jacobian="exact")  # the loop's Newton
     solver = _core.SystemSolver(asm.model)
     m = asm.model
     prev, its = np.zeros(0), []

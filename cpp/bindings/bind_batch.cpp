@@ -27,7 +27,7 @@ void bind_batch(py::module_& m) {
          int n_modes, bool finite_difference, double fd_step,
          const std::vector<std::pair<int, int>>& xy_pairs,
          const std::vector<std::pair<int, int>>& rot_pairs, const std::vector<int>& sleeve,
-         bool carry_cavitation) {
+         bool carry_cavitation, const std::string& jacobian) {
         StabilityBatchInput in;
         in.omega = omega;
         in.pressure = pressure;
@@ -41,6 +41,7 @@ void bind_batch(py::module_& m) {
         in.rot_pairs = rot_pairs;
         in.sleeve = sleeve;
         in.carry_cavitation = carry_cavitation;
+        in.jacobian = jacobian;
         py::gil_scoped_release release;
         return stability_batch(solver, in);
       },
@@ -48,6 +49,7 @@ void bind_batch(py::module_& m) {
       py::arg("restart"), py::arg("options"), py::arg("n_modes"),
       py::arg("finite_difference"), py::arg("fd_step"), py::arg("xy_pairs"),
       py::arg("rot_pairs"), py::arg("sleeve"), py::arg("carry_cavitation") = true,
+      py::arg("jacobian") = "reuse",
       "Equilibrium (continued), K_H/D_H and eigen-analysis of each point of a sweep chunk.");
 
   py::class_<EquilibriumBatchResult>(m, "EquilibriumBatchResult")

@@ -55,7 +55,9 @@ void bind_system(py::module_& m) {
       .def_readwrite("max_iter", &EquilibriumOptions::max_iter)
       .def_readwrite("pm", &EquilibriumOptions::pm)
       .def_readwrite("contact_fraction", &EquilibriumOptions::contact_fraction)
-      .def_readwrite("polish", &EquilibriumOptions::polish);
+      .def_readwrite("polish", &EquilibriumOptions::polish)
+      .def_readwrite("reuse_jacobian", &EquilibriumOptions::reuse_jacobian)
+      .def_readwrite("reuse_contraction", &EquilibriumOptions::reuse_contraction);
 
   py::class_<EquilibriumResult>(m, "EquilibriumResult")
       .def_readonly("r", &EquilibriumResult::r)
@@ -90,11 +92,22 @@ void bind_system(py::module_& m) {
            gil())
       .def("linearize_fd", &SystemSolver::linearize_fd, py::arg("r"), py::arg("omega"),
            py::arg("rel_step") = 1e-6, gil())
-      .def("equilibrium", &SystemSolver::equilibrium, py::arg("omega"),
-           py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"), py::arg("options"), gil())
+      .def(
+          "equilibrium",
+          [](SystemSolver& s, double omega, double pc, const Eigen::VectorXd& a,
+             const Eigen::VectorXd& r0, const EquilibriumOptions& opt,
+             const std::optional<Eigen::MatrixXd>& kh_guess) {
+            return s.equilibrium(omega, pc, a, r0, opt, kh_guess ? &*kh_guess : nullptr);
+          },
+          py::arg("omega"), py::arg("chamber_pressure"), py::arg("a"), py::arg("r0"),
+          py::arg("options"), py::arg("kh_guess") = py::none(), gil(),
+          "Static equilibrium (eq. 14); kh_guess (n, n): the first Newton Jacobian's K_H "
+          "when options.reuse_jacobian.")
       .def_property_readonly("reynolds_solves", &SystemSolver::reynolds_solves)
       .def_property_readonly("reynolds_iterations", &SystemSolver::reynolds_iterations,
                              "Active-set (or linear) iterations summed over the solves.")
+      .def_property_readonly("linearizations", &SystemSolver::linearizations,
+                             "Linearisations (K_H, or K_H and D_H) about a solve.")
       .def_property_readonly("last_h_min", &SystemSolver::last_h_min)
       .def("film_h_min", &SystemSolver::film_h_min, py::arg("r"),
            "Minimum film thickness of each film at positions r (n,), m, from the geometry "

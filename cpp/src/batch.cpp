@@ -73,6 +73,11 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
     throw InputError("stability_batch: expected omega, pressure, restart of length n_pts and "
                      "a of shape (n_pts, n)");
   }
+  if (in.jacobian != "exact" && in.jacobian != "reuse" && in.jacobian != "line")
+    throw InputError("jacobian: expected 'exact', 'reuse' or 'line', got '" + in.jacobian + "'");
+  EquilibriumOptions opt = in.options;
+  if (in.jacobian != "exact") opt.reuse_jacobian = true;
+  const bool line_jacobian = in.jacobian == "line";
   const Eigen::Index k = in.n_modes > 0 ? std::min<Eigen::Index>(in.n_modes, n) : n;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   StabilityBatchResult out;
@@ -91,6 +96,9 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
   // (line_start); an extrapolated start that fails is retried from hist[0] itself, so
   // extrapolation never loses an equilibrium the plain continuation finds.
   std::vector<Eigen::VectorXd> hist;
+  // K_H of hist[0] (the previous point's, from its stability analysis): the first Newton
+  // Jacobian of the next point with jacobian "line"; empty when hist is.
+  Eigen::MatrixXd kh_prev;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   // The films' cavitation sets carried along a line (in.carry_cavitation), forgotten at each
   // line's start and when the call returns (also by an exception), so a line's results
@@ -112,7 +120,9 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
       }
       const Eigen::VectorXd r0 = hist.empty() ? Eigen::VectorXd() : line_start(in, i, hist);
       const bool extrapolated = hist.size() >= 2 && (r0.array() != hist[0].array()).any();
-      EquilibriumResult e = solver.equilibrium(w, in.pressure[i], a, r0, in.options);
+      if (hist.empty()) kh_prev.resize(0, 0);
+      EquilibriumResult e = solver.equilibrium(w, in.pressure[i], a, r0, opt,
+                                               line_jacobian ? &kh_prev : nullptr);
       int extra = 0;
       if (extrapolated && e.status != "ok" && e.status != "contact") {
         extra = e.iterations;
@@ -124,8 +134,10 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
       if (e.status == "ok") {
         hist.insert(hist.begin(), e.r);
         if (hist.size() > 3) hist.pop_back();
+        kh_prev.resize(0, 0);  // this point's K_H, once it is formed and finite
       } else {
         hist.clear();
+        kh_prev.resize(0, 0);
       }
       for (std::size_t f = 0; f < e.h_min.size() && f < m.films.size(); ++f)
         out.h_min(i, static_cast<Eigen::Index>(f)) = e.h_min[f];
@@ -140,6 +152,7 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
         out.message[i] = "non-finite bearing coefficients";
         continue;
       }
+      if (e.status == "ok" && line_jacobian) kh_prev = lin.KH;
       const Eigen::MatrixXd Mw = m.has_table_mass() ? m.mass_at(w) : m.M;  // table masses
       ModalResult mr = modal(Mw, D, K, in.xy_pairs, static_cast<int>(k), true, in.rot_pairs);
       const Eigen::Index ke = mr.eigenvalues.size();
@@ -159,6 +172,7 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
       out.status[i] = "error";
       out.message[i] = ex.what();
       hist.clear();
+      kh_prev.resize(0, 0);
     }
   }
   return out;

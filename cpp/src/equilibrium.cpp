@@ -69,7 +69,8 @@ Eigen::VectorXd newton_step(const Eigen::MatrixXd& J, const Eigen::VectorXd& R) 
 
 EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen::VectorXd& a,
                                             const Eigen::VectorXd& r0,
-                                            const EquilibriumOptions& opt) {
+                                            const EquilibriumOptions& opt,
+                                            const Eigen::MatrixXd* kh_guess) {
   const Eigen::Index n = model_.n();
   require(std::isfinite(omega), "speed: expected a finite value");
   require(std::isfinite(pc) && pc >= 0, "chamber_pressure_pa: expected a finite value >= 0");
@@ -79,6 +80,13 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   require(a.allFinite(), "a: expected finite values");
   require(opt.tol > 0 && opt.max_iter > 0, "options: tol and max_iter must be positive");
   require(std::isfinite(opt.pm), "pm: expected P_m >= 0, or < 0 for automatic");
+  require(!opt.reuse_jacobian || (opt.reuse_contraction > 0 && opt.reuse_contraction < 1),
+          "reuse_contraction: expected a value in (0, 1)");
+  const bool have_guess = opt.reuse_jacobian && kh_guess && kh_guess->size() > 0;
+  require(!have_guess || (kh_guess->rows() == n && kh_guess->cols() == n),
+          shape_msg("kh_guess", n, n, have_guess ? kh_guess->rows() : 0,
+                    have_guess ? kh_guess->cols() : 0));
+  require(!have_guess || kh_guess->allFinite(), "kh_guess: expected finite values");
 
   const int solves0 = solves_;
   // The solves of this call (Newton steps, line searches, the polish, the load continuation)
@@ -159,11 +167,13 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     // backtracking line search on ‖R‖∞ that also steps back from contact. Each trial point
     // costs one Reynolds solve per film; K_H (linearised solves on that solve's factorisation,
     // no D_H) is formed only at an accepted point that still needs a step, so the converged
-    // point and rejected trials cost no linearisation.
+    // point and rejected trials cost no linearisation. With opt.reuse_jacobian (`reuse`: the
+    // first Newton from the start only) the Jacobian J is kept and Broyden-updated between
+    // steps (EquilibriumOptions::reuse_jacobian).
     Eigen::VectorXd H = zero;
     Eigen::MatrixXd KH;
     auto newton = [&](const Eigen::VectorXd& Fs, Eigen::VectorXd& rs, int iters, double& res,
-                      std::string& why, bool polish) -> bool {
+                      std::string& why, bool polish, bool reuse) -> bool {
       auto resid = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& Hr) {
         return Eigen::VectorXd(model_.K * rr - Hr - Fs);
       };
@@ -225,13 +235,63 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       }
       R = resid(rs, H);
       res = inf_norm(R) / out.load_scale;
+      // J: the Jacobian of this iterate when have_J (exact_J: formed at rs by linearisation;
+      // else kept from earlier iterates with Broyden updates, or the caller's guess).
+      Eigen::MatrixXd J;
+      bool have_J = false, exact_J = false;
+      if (reuse && have_guess) {
+        J = model_.K + *kh_guess;
+        have_J = true;
+      }
+      // Broyden's rank-one update J += (y − J s) sᵀ / sᵀs from a step s and R's change y; a
+      // step that reduced ‖R‖ by less than reuse_contraction has J formed anew next time.
+      auto update_J = [&](const Eigen::VectorXd& s, const Eigen::VectorXd& y, double ratio) {
+        const double ss = s.squaredNorm();
+        have_J = reuse && ss > 0.0 && ratio <= opt.reuse_contraction;
+        if (!have_J) return;
+        J.noalias() += ((y - J * s) / ss) * s.transpose();
+        exact_J = false;
+      };
       for (int it = 0; it < iters; ++it, ++out.iterations) {
         if (res < opt.tol) {
           polish_root();
           return true;
         }
-        linearize_last_solve(false, KH, nullptr);  // the films' last solve is at rs
-        const Eigen::VectorXd dr = newton_step(model_.K + KH, R);
+        if (have_J && !exact_J) {
+          // A reused Jacobian: its full step, kept when it reduces the residual; else the
+          // films go back to rs and the exact Jacobian takes the (damped) step from there.
+          const Eigen::VectorXd dr = newton_step(J, R);
+          bool ok = dr.allFinite();
+          Eigen::VectorXd r_try, H_try, R_try;
+          double res_try = NAN;
+          if (ok) {
+            r_try = rs + dr;
+            try {
+              H_try = film_forces(r_try, zero, omega);
+              R_try = resid(r_try, H_try);
+              res_try = inf_norm(R_try) / out.load_scale;
+              ok = res_try <= (1.0 - 1e-4) * res || res_try < opt.tol;
+            } catch (const ContactError&) {
+              ok = false;
+            }
+          }
+          if (ok) {
+            update_J(dr, R_try - R, res_try / res);
+            rs = r_try;
+            H = H_try;
+            R = R_try;
+            res = res_try;
+            continue;
+          }
+          H = film_forces(rs, zero, omega);
+          have_J = false;
+        }
+        if (!have_J) {
+          linearize_last_solve(false, KH, nullptr);  // the films' last solve is at rs
+          J = model_.K + KH;
+          have_J = exact_J = true;
+        }
+        const Eigen::VectorXd dr = newton_step(J, R);
         if (!dr.allFinite()) {
           why = "Newton: singular Jacobian K + K_H";
           return false;
@@ -250,6 +310,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
           const Eigen::VectorXd R_try = resid(r_try, H_try);
           const double res_try = inf_norm(R_try) / out.load_scale;
           if (res_try <= (1.0 - 1e-4 * t) * res || res_try < opt.tol) {
+            update_J(t * dr, R_try - R, res_try / res);
             H = H_try;
             R = R_try;
             res = res_try;
@@ -290,7 +351,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       }
       out.iterations += it;
     }
-    if (newton(F, rn, opt.max_iter, res, why, true)) {
+    if (newton(F, rn, opt.max_iter, res, why, true, opt.reuse_jacobian)) {
       if (!why_pads.empty() && out.path != "pad_assembly")
         out.message = why_pads + "; plain Newton from the start converged";
       return finish(rn, H, res);
@@ -305,7 +366,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     while (lam < 1.0 && dlam > 1e-4 && out.iterations < 20 * opt.max_iter) {
       const double next = std::min(1.0, lam + dlam);
       Eigen::VectorXd rt = rc;
-      if (newton(next * F, rt, 40, res_c, why_c, next >= 1.0)) {
+      if (newton(next * F, rt, 40, res_c, why_c, next >= 1.0, false)) {
         rc = rt;
         lam = next;
         dlam *= 1.5;

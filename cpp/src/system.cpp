@@ -17,10 +17,17 @@ struct SystemSolver::Film {
   bool valid = false;
   Eigen::VectorXd last_rc, last_vc;
   double last_w = 0.0;
+  /// ∂h/∂r_k of each coordinate (constant: h is affine in r) and a zero field, for the
+  /// linearised solves.
+  std::vector<RowMatrixXd> dh;
+  RowMatrixXd zero;
   Film(const FilmCoupling& f)
       : solver(f.geometry, f.grid, f.cavitation),
         h(f.grid.n_circ, f.grid.n_axial + 1),
-        dhdt(f.grid.n_circ, f.grid.n_axial + 1) {
+        dhdt(f.grid.n_circ, f.grid.n_axial + 1),
+        zero(RowMatrixXd::Zero(f.grid.n_circ, f.grid.n_axial + 1)) {
+    for (std::size_t k = 0; k < f.coords.size(); ++k)
+      dh.push_back(f.thickness_derivative(static_cast<Eigen::Index>(k)));
     solver.set_pressure_only(true);  // the forces are ∫∫ p S dA here (integrate), not force_n
     if (f.viscosity_field.size()) solver.set_viscosity_field(f.viscosity_field);
     const int K1 = f.grid.n_axial + 1;
@@ -362,24 +369,21 @@ Eigen::VectorXd SystemSolver::film_forces(const Eigen::VectorXd& r, const Eigen:
 void SystemSolver::linearize_last_solve(bool damping, Eigen::MatrixXd& KH,
                                         Eigen::MatrixXd* DH) {
   const Eigen::Index n = model_.n();
+  ++linearizations_;
   KH = Eigen::MatrixXd::Zero(n, n);
   if (damping) *DH = Eigen::MatrixXd::Zero(n, n);
   for (std::size_t i = 0; i < films_.size(); ++i) {
     const FilmCoupling& fc = model_.films[i];
     Film& f = *films_[i];
-    const int K1 = fc.grid.n_axial + 1;
-    const RowMatrixXd zero = RowMatrixXd::Zero(fc.grid.n_circ, K1);
     // every column's linearised solve at once (the values of one linearize() call each)
     const std::size_t nc = fc.coords.size(), per = damping ? 2 : 1;
-    std::vector<RowMatrixXd> dh(nc);
     std::vector<const RowMatrixXd*> a, b;
     for (std::size_t j = 0; j < nc; ++j) {
-      dh[j] = fc.thickness_derivative(static_cast<Eigen::Index>(j));
-      a.push_back(&dh[j]);
-      b.push_back(&zero);
+      a.push_back(&f.dh[j]);
+      b.push_back(&f.zero);
       if (!damping) continue;
-      a.push_back(&zero);
-      b.push_back(&dh[j]);
+      a.push_back(&f.zero);
+      b.push_back(&f.dh[j]);
     }
     std::vector<RowMatrixXd> dp;
     f.solver.linearize_many(a, b, dp, fc.axial_weight.size() == 0);  // dh = S(φ) along z

@@ -28,6 +28,13 @@ struct StabilityBatchInput {
   /// same answers (the Swift–Stieber solution is unique). Off: each equilibrium starts from
   /// the coarse-grid prediction (the former cost; for tests and benchmarks).
   bool carry_cavitation = true;
+  /// The equilibrium's Newton Jacobian (EquilibriumOptions::reuse_jacobian): "exact" (formed
+  /// by linearisation at every iterate that steps), "reuse" (modified Newton: formed at the
+  /// first such iterate, then Broyden-updated, formed anew when a step does not contract),
+  /// "line" (as "reuse", the first one being K plus the previous point's K_H on the line, which
+  /// the stability analysis formed anyway). Not "exact": the answers change within the
+  /// equilibrium tolerance.
+  std::string jacobian = "reuse";
 };
 
 struct StabilityBatchResult {

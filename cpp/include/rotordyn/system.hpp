@@ -107,6 +107,16 @@ struct EquilibriumOptions {
   /// well conditioned, so that the answer does not depend on the starting point (warm start)
   /// beyond round-off. rotordyn.equilibrium sets it; bearing-element tables leave it off.
   bool polish = false;
+  /// Newton Jacobian (issue 22). false: K + K_H formed exactly (linearised Reynolds solves) at
+  /// every iterate that takes a step. true: modified Newton — the Jacobian is kept from step to
+  /// step and Broyden-updated (rank one, from the step and the residual change), so a step
+  /// costs a Reynolds solve and no linearisation; it is formed exactly again after a step that
+  /// reduced the residual by less than reuse_contraction, and a reused Jacobian whose full
+  /// step does not reduce the residual is replaced by the exact one at the same iterate
+  /// (which then takes the damped step). Converged to the same tolerance: the answer changes
+  /// within it, not beyond. The polish and the load continuation always use the exact one.
+  bool reuse_jacobian = false;
+  double reuse_contraction = 0.1;  ///< in (0, 1): a step reducing ‖R‖ less than this refreshes J
 };
 
 struct EquilibriumResult {
@@ -160,8 +170,12 @@ class SystemSolver {
   /// Static equilibrium (eq. 14): K (r + a) = H(Ω, r, 0) + Q + p_c c_s.
   /// a: (n,) configuration (housing offsets at the journal coordinates). r0: start (n,) or
   /// empty for the concentric, undeformed state.
+  /// kh_guess (with opt.reuse_jacobian): an approximation of K_H at r0 ((n, n); a sweep line's
+  /// previous point's K_H), taken as the first Newton Jacobian K + kh_guess; null or empty:
+  /// the exact one at the first iterate that needs a step.
   EquilibriumResult equilibrium(double omega, double chamber_pressure, const Eigen::VectorXd& a,
-                                const Eigen::VectorXd& r0, const EquilibriumOptions& opt);
+                                const Eigen::VectorXd& r0, const EquilibriumOptions& opt,
+                                const Eigen::MatrixXd* kh_guess = nullptr);
 
   /// Set film `film`'s viscosity (Pa·s, finite > 0) in place — the model's geometry and the
   /// film's Reynolds solver — and forget the last solve (the thermal iteration,
@@ -174,6 +188,9 @@ class SystemSolver {
   int reynolds_solves() const { return solves_; }
   /// Active-set (or linear) iterations summed over those solves: sparse factorisations.
   long reynolds_iterations() const { return iterations_; }
+  /// Linearisations about a solve (K_H, or K_H and D_H, by linearised Reynolds solves on its
+  /// factorisation): the Newton Jacobians, the polish and linearize().
+  long linearizations() const { return linearizations_; }
   /// Cavitation-set continuation in every film (ReynoldsSolver::set_continuation): on for the
   /// duration of one transient run (consecutive right-hand sides at nearby states), off
   /// otherwise. Each switch forgets the stored sets.
@@ -206,6 +223,7 @@ class SystemSolver {
   std::vector<double> h_min_, h_min_angle_, h_min_z_;
   int solves_ = 0;
   long iterations_ = 0;
+  long linearizations_ = 0;
   // The state of the films' last solve: a call at the same (r, ṙ, Ω) — an equilibrium's
   // final point then its linearisation, a CVODE right-hand side then its Jacobian — reuses
   // the pressures and factorisations instead of solving again.
