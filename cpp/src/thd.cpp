@@ -25,6 +25,11 @@ std::string num(double v) {
   return os.str();
 }
 
+// The width (cells of the grid, either side of the midpoint between two columns) over which
+// an ungrooved film's inlet passes from one column of maximum film to the next (thd_field).
+// Outside it the inlet is the one column, as before the hand-over existed.
+constexpr double kInletBand = 0.5;
+
 void nonneg(double v, const char* field) {
   if (!(std::isfinite(v) && v >= 0.0))
     throw InputError(std::string(field) + ": expected a finite value >= 0 W/(m^2 K) (0: "
@@ -108,177 +113,218 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
         for (int k = 0; k < K1; ++k) D[j * K1 + k] = 0;
     }
   }
+  // without grooves the inlet is the column of maximum film; where the peak of the film
+  // (parabola through the column of maximum film and its neighbours) lies within
+  // kInletBand of a cell of the midpoint between two columns, the inlet is handed over
+  // smoothly to the neighbour column: the field is the blend (1 − w) of the field with the
+  // inlet at the one column and w of the field with it at the other, w = 1/2 at the midpoint
+  // — so the map position -> temperature is continuous and the THD fixed point exists where
+  // a snapped inlet gives none (the compressor at 120 Hz: the inlet at column j moves the
+  // journal so that column j + 1 has the maximum film, and back)
+  int jb = -1;
+  double wb = 0.0;
   if (!any) {
     const int kmid = Kl / 2;
     int jmax = 0;
     for (int j = 1; j < N; ++j)
       if (sol.h_m(j, kmid) > sol.h_m(jmax, kmid)) jmax = j;
     for (int k = 0; k < K1; ++k) D[jmax * K1 + k] = 1;
+    const double hm = sol.h_m((jmax + N - 1) % N, kmid), h0 = sol.h_m(jmax, kmid),
+                 hp = sol.h_m((jmax + 1) % N, kmid);
+    const double den = hm - 2.0 * h0 + hp;
+    const double sp = den < 0.0 ? std::clamp(0.5 * (hm - hp) / den, -0.5, 0.5) : 0.0;
+    const double d = 0.5 - std::abs(sp);  // cells from the midpoint between two columns
+    if (sp != 0.0 && d < kInletBand) {
+      jb = sp > 0.0 ? (jmax + 1) % N : (jmax + N - 1) % N;
+      wb = 0.5 * (1.0 - d / kInletBand);  // linear: the peak's position between the columns
+    }
   }
-  const double* qp = fl.q_phi_m3_s.data();
-  const double* qz = fl.q_z_m3_s.data();
-  std::vector<double> diag(nn, 0.0), in(nn, 0.0), out(nn, 0.0);
-  std::vector<Eigen::Triplet<double>> trip;
-  trip.reserve(4 * nn);
-  auto link = [&](int a, int b, double F) {  // flow F from a to b
-    if (F < 0.0) {
-      std::swap(a, b);
-      F = -F;
-    }
-    if (!(F > 0.0)) return;
-    in[b] += F;
-    out[a] += F;
-    if (!D[b]) {
-      diag[b] += rc * F;
-      trip.emplace_back(b, a, -rc * F);
-    }
-  };
-  for (int n = 0; n < nn; ++n) {
-    const int e = n + K1 >= nn ? n + K1 - nn : n + K1;
-    link(n, e, qp[n]);
-    if (n % K1 < Kl) link(n, n + 1, qz[n]);
-  }
-  Eigen::VectorXd b0 = Eigen::VectorXd::Zero(nn), b1 = Eigen::VectorXd::Zero(nn);
-  std::vector<double> side_out(nn, 0.0);
-  const double* A = fl.area_m2.data();
-  const double* phi = fl.dissipation_w.data();
-  for (int n = 0; n < nn; ++n) {
-    if (D[n]) {
-      trip.emplace_back(n, n, 1.0);
-      b1[n] = 1.0;
-      continue;
-    }
-    const int k = n % K1;
-    if (k == 0 || k == Kl) {  // open end: what the internal faces bring leaves through it
-      const double B = in[n] - out[n];
-      if (B >= 0.0) {
-        side_out[n] = B;
-      } else {  // side inflow of ambient oil at the supply temperature
-        diag[n] -= rc * B;
-        b0[n] -= rc * B * Ts;
+  auto solve = [&](std::vector<char> D, ThdFieldParts& parts) {
+    const double* qp = fl.q_phi_m3_s.data();
+    const double* qz = fl.q_z_m3_s.data();
+    std::vector<double> diag(nn, 0.0), in(nn, 0.0), out(nn, 0.0);
+    std::vector<Eigen::Triplet<double>> trip;
+    trip.reserve(4 * nn);
+    auto link = [&](int a, int b, double F) {  // flow F from a to b
+      if (F < 0.0) {
+        std::swap(a, b);
+        F = -F;
       }
-    }
-    diag[n] += (hJ + hB) * A[n];
-    b0[n] += phi[n] + A[n] * (hJ * TJ + hB * TB);
-    if (!(diag[n] > 0.0)) {  // no inflow at all: the cell's outflow enters at T_s
-      diag[n] = out[n] > 0.0 ? rc * out[n] : 1.0;
-      b0[n] = out[n] > 0.0 ? b0[n] + rc * out[n] * Ts : Ts;
-    }
-    trip.emplace_back(n, n, diag[n]);
-  }
-  // Solve M X = [b0 b1]. Upwind convection makes M lower triangular in the flow's order when
-  // the flow graph (the inlet cutting the circle) has no cycle: one sweep in topological order
-  // (Kahn); a recirculation cycle (e.g. a backflow eddy) falls back to the sparse LU.
-  Eigen::VectorXd X0(nn), X1(nn);
-  {
-    std::vector<int> indeg(nn, 0), dstart(nn + 1, 0), dnode;
-    for (const auto& t : trip)
-      if (t.row() != t.col()) {
-        ++indeg[t.row()];
-        ++dstart[t.col() + 1];
+      if (!(F > 0.0)) return;
+      in[b] += F;
+      out[a] += F;
+      if (!D[b]) {
+        diag[b] += rc * F;
+        trip.emplace_back(b, a, -rc * F);
       }
-    for (int n = 0; n < nn; ++n) dstart[n + 1] += dstart[n];
-    dnode.resize(dstart[nn]);
-    std::vector<int> fill(dstart.begin(), dstart.end() - 1);
-    // upstream lists in CSR (row = downstream node)
-    std::vector<int> ustart(nn + 1, 0), unode;
-    std::vector<double> uw;
-    for (const auto& t : trip)
-      if (t.row() != t.col()) ++ustart[t.row() + 1];
-    for (int n = 0; n < nn; ++n) ustart[n + 1] += ustart[n];
-    unode.resize(ustart[nn]);
-    uw.resize(ustart[nn]);
-    std::vector<int> ufill(ustart.begin(), ustart.end() - 1);
-    for (const auto& t : trip)
-      if (t.row() != t.col()) {
-        dnode[fill[t.col()]++] = t.row();
-        unode[ufill[t.row()]] = t.col();
-        uw[ufill[t.row()]++] = -t.value();
-      }
-    std::vector<int> order;
-    order.reserve(nn);
-    for (int n = 0; n < nn; ++n)
-      if (indeg[n] == 0) order.push_back(n);
-    for (std::size_t q = 0; q < order.size(); ++q) {
-      const int n = order[q];
-      if (D[n]) {
-        X0[n] = 0.0;
-        X1[n] = 1.0;
-      } else {
-        double s0 = b0[n], s1 = 0.0;
-        for (int i = ustart[n]; i < ustart[n + 1]; ++i) {
-          s0 += uw[i] * X0[unode[i]];
-          s1 += uw[i] * X1[unode[i]];
-        }
-        X0[n] = s0 / diag[n];
-        X1[n] = s1 / diag[n];
-      }
-      for (int i = dstart[n]; i < dstart[n + 1]; ++i)
-        if (--indeg[dnode[i]] == 0) order.push_back(dnode[i]);
-    }
-    if (static_cast<int>(order.size()) < nn) {  // a cycle: the sparse LU
-      Eigen::SparseMatrix<double> M(nn, nn);
-      M.setFromTriplets(trip.begin(), trip.end());
-      M.makeCompressed();
-      Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-      lu.compute(M);
-      if (lu.info() != Eigen::Success)
-        throw ConvergenceError("THD energy equation: the convection operator is singular");
-      X0 = lu.solve(b0);
-      X1 = lu.solve(b1);
-    }
-  }
-  // the flows into and out of the inlet: Q (inlet -> film), Q_r and its mixing-cup T (affine
-  // in T_in: T_r = a + b T_in)
-  double Q = 0.0, Qr = 0.0, ta = 0.0, tb = 0.0;
-  auto inlet = [&](int a, int b, double F) {
-    if (F < 0.0) {
-      std::swap(a, b);
-      F = -F;
-    }
-    if (D[a] && !D[b]) Q += F;
-    if (!D[a] && D[b]) {
-      Qr += F;
-      ta += F * X0[a];
-      tb += F * X1[a];
-    }
-  };
-  for (int n = 0; n < nn; ++n) {
-    const int e = n + K1 >= nn ? n + K1 - nn : n + K1;
-    inlet(n, e, qp[n]);
-    if (n % K1 < Kl) inlet(n, n + 1, qz[n]);
-  }
-  if (pad && any) {
-    // the hot oil a pad passes on (to the next pad's inlet): the pad's own mass balance,
-    // Q_out = Q_in − Q_s (inflow at the leading edge minus the side leakage over the pad's
-    // cells), not the flux from the trailing-edge cells into the gap, whose face thickness
-    // averages in the gap's clearance (2.4–4.3 × Q_in). Its mixing-cup temperature is that of
-    // the flow the trailing-edge cells receive from the pad (their energy equations' inflow,
-    // in_n: Σ in_n = Q_in − Q_s to round-off where the film conserves mass; a cavitated pad's
-    // excess is scaled out, so the temperature is the trailing edge's profile).
-    double qte = 0.0, sa = 0.0, sb = 0.0, qs = 0.0;
+    };
     for (int n = 0; n < nn; ++n) {
-      qs += side_out[n];
-      if (D[n] || !(in[n] > 0.0)) continue;
-      const int k = n % K1, j = n / K1;
-      const int down = omega > 0.0 ? (j + 1) % N : (j + N - 1) % N;
-      if (!D[down * K1 + k]) continue;  // not a trailing-edge cell
-      qte += in[n];
-      sa += in[n] * X0[n];
-      sb += in[n] * X1[n];
+      const int e = n + K1 >= nn ? n + K1 - nn : n + K1;
+      link(n, e, qp[n]);
+      if (n % K1 < Kl) link(n, n + 1, qz[n]);
     }
-    Qr = qte > 0.0 ? std::max(Q - qs, 0.0) : 0.0;
-    ta = qte > 0.0 ? Qr * sa / qte : 0.0;
-    tb = qte > 0.0 ? Qr * sb / qte : 0.0;
+    Eigen::VectorXd b0 = Eigen::VectorXd::Zero(nn), b1 = Eigen::VectorXd::Zero(nn);
+    std::vector<double> side_out(nn, 0.0);
+    const double* A = fl.area_m2.data();
+    const double* phi = fl.dissipation_w.data();
+    for (int n = 0; n < nn; ++n) {
+      if (D[n]) {
+        trip.emplace_back(n, n, 1.0);
+        b1[n] = 1.0;
+        continue;
+      }
+      const int k = n % K1;
+      if (k == 0 || k == Kl) {  // open end: what the internal faces bring leaves through it
+        const double B = in[n] - out[n];
+        if (B >= 0.0) {
+          side_out[n] = B;
+        } else {  // side inflow of ambient oil at the supply temperature
+          diag[n] -= rc * B;
+          b0[n] -= rc * B * Ts;
+        }
+      }
+      diag[n] += (hJ + hB) * A[n];
+      b0[n] += phi[n] + A[n] * (hJ * TJ + hB * TB);
+      if (!(diag[n] > 0.0)) {  // no inflow at all: the cell's outflow enters at T_s
+        diag[n] = out[n] > 0.0 ? rc * out[n] : 1.0;
+        b0[n] = out[n] > 0.0 ? b0[n] + rc * out[n] * Ts : Ts;
+      }
+      trip.emplace_back(n, n, diag[n]);
+    }
+    // Solve M X = [b0 b1]. Upwind convection makes M lower triangular in the flow's order when
+    // the flow graph (the inlet cutting the circle) has no cycle: one sweep in topological order
+    // (Kahn); a recirculation cycle (e.g. a backflow eddy) falls back to the sparse LU.
+    Eigen::VectorXd X0(nn), X1(nn);
+    {
+      std::vector<int> indeg(nn, 0), dstart(nn + 1, 0), dnode;
+      for (const auto& t : trip)
+        if (t.row() != t.col()) {
+          ++indeg[t.row()];
+          ++dstart[t.col() + 1];
+        }
+      for (int n = 0; n < nn; ++n) dstart[n + 1] += dstart[n];
+      dnode.resize(dstart[nn]);
+      std::vector<int> fill(dstart.begin(), dstart.end() - 1);
+      // upstream lists in CSR (row = downstream node)
+      std::vector<int> ustart(nn + 1, 0), unode;
+      std::vector<double> uw;
+      for (const auto& t : trip)
+        if (t.row() != t.col()) ++ustart[t.row() + 1];
+      for (int n = 0; n < nn; ++n) ustart[n + 1] += ustart[n];
+      unode.resize(ustart[nn]);
+      uw.resize(ustart[nn]);
+      std::vector<int> ufill(ustart.begin(), ustart.end() - 1);
+      for (const auto& t : trip)
+        if (t.row() != t.col()) {
+          dnode[fill[t.col()]++] = t.row();
+          unode[ufill[t.row()]] = t.col();
+          uw[ufill[t.row()]++] = -t.value();
+        }
+      std::vector<int> order;
+      order.reserve(nn);
+      for (int n = 0; n < nn; ++n)
+        if (indeg[n] == 0) order.push_back(n);
+      for (std::size_t q = 0; q < order.size(); ++q) {
+        const int n = order[q];
+        if (D[n]) {
+          X0[n] = 0.0;
+          X1[n] = 1.0;
+        } else {
+          double s0 = b0[n], s1 = 0.0;
+          for (int i = ustart[n]; i < ustart[n + 1]; ++i) {
+            s0 += uw[i] * X0[unode[i]];
+            s1 += uw[i] * X1[unode[i]];
+          }
+          X0[n] = s0 / diag[n];
+          X1[n] = s1 / diag[n];
+        }
+        for (int i = dstart[n]; i < dstart[n + 1]; ++i)
+          if (--indeg[dnode[i]] == 0) order.push_back(dnode[i]);
+      }
+      if (static_cast<int>(order.size()) < nn) {  // a cycle: the sparse LU
+        Eigen::SparseMatrix<double> M(nn, nn);
+        M.setFromTriplets(trip.begin(), trip.end());
+        M.makeCompressed();
+        Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+        lu.compute(M);
+        if (lu.info() != Eigen::Success)
+          throw ConvergenceError("THD energy equation: the convection operator is singular");
+        X0 = lu.solve(b0);
+        X1 = lu.solve(b1);
+      }
+    }
+    // the flows into and out of the inlet: Q (inlet -> film), Q_r and its mixing-cup T (affine
+    // in T_in: T_r = a + b T_in)
+    double Q = 0.0, Qr = 0.0, ta = 0.0, tb = 0.0;
+    auto inlet = [&](int a, int b, double F) {
+      if (F < 0.0) {
+        std::swap(a, b);
+        F = -F;
+      }
+      if (D[a] && !D[b]) Q += F;
+      if (!D[a] && D[b]) {
+        Qr += F;
+        ta += F * X0[a];
+        tb += F * X1[a];
+      }
+    };
+    for (int n = 0; n < nn; ++n) {
+      const int e = n + K1 >= nn ? n + K1 - nn : n + K1;
+      inlet(n, e, qp[n]);
+      if (n % K1 < Kl) inlet(n, n + 1, qz[n]);
+    }
+    if (pad && any) {
+      // the hot oil a pad passes on (to the next pad's inlet): the pad's own mass balance,
+      // Q_out = Q_in − Q_s (inflow at the leading edge minus the side leakage over the pad's
+      // cells), not the flux from the trailing-edge cells into the gap, whose face thickness
+      // averages in the gap's clearance (2.4–4.3 × Q_in). Its mixing-cup temperature is that of
+      // the flow the trailing-edge cells receive from the pad (their energy equations' inflow,
+      // in_n: Σ in_n = Q_in − Q_s to round-off where the film conserves mass; a cavitated pad's
+      // excess is scaled out, so the temperature is the trailing edge's profile).
+      double qte = 0.0, sa = 0.0, sb = 0.0, qs = 0.0;
+      for (int n = 0; n < nn; ++n) {
+        qs += side_out[n];
+        if (D[n] || !(in[n] > 0.0)) continue;
+        const int k = n % K1, j = n / K1;
+        const int down = omega > 0.0 ? (j + 1) % N : (j + N - 1) % N;
+        if (!D[down * K1 + k]) continue;  // not a trailing-edge cell
+        qte += in[n];
+        sa += in[n] * X0[n];
+        sb += in[n] * X1[n];
+      }
+      Qr = qte > 0.0 ? std::max(Q - qs, 0.0) : 0.0;
+      ta = qte > 0.0 ? Qr * sa / qte : 0.0;
+      tb = qte > 0.0 ? Qr * sb / qte : 0.0;
+    }
+    parts.inlet = std::move(D);
+    parts.side_out = std::move(side_out);
+    parts.X0 = std::move(X0);
+    parts.X1 = std::move(X1);
+    parts.Q = Q;
+    parts.Qr = Qr;
+    parts.ta = ta;
+    parts.tb = tb;
+  };
+  solve(D, parts);
+  if (jb >= 0 && wb > 0.0) {
+    ThdFieldParts other;
+    std::vector<char> Db(nn, 0);
+    for (int k = 0; k < K1; ++k) Db[jb * K1 + k] = 1;
+    solve(std::move(Db), other);
+    const double wa = 1.0 - wb;  // every part is linear in the field: blend them all
+    parts.X0 = wa * parts.X0 + wb * other.X0;
+    parts.X1 = wa * parts.X1 + wb * other.X1;
+    for (int n = 0; n < nn; ++n)
+      parts.side_out[static_cast<std::size_t>(n)] =
+          wa * parts.side_out[static_cast<std::size_t>(n)] +
+          wb * other.side_out[static_cast<std::size_t>(n)];
+    parts.Q = wa * parts.Q + wb * other.Q;
+    parts.Qr = wa * parts.Qr + wb * other.Qr;
+    parts.ta = wa * parts.ta + wb * other.ta;
+    parts.tb = wa * parts.tb + wb * other.tb;
+    parts.blend_column = jb;
+    parts.blend_weight = wb;
   }
-  parts.inlet = std::move(D);
-  parts.side_out = std::move(side_out);
-  parts.X0 = std::move(X0);
-  parts.X1 = std::move(X1);
-  parts.Q = Q;
-  parts.Qr = Qr;
-  parts.ta = ta;
-  parts.tb = tb;
   return parts;
 }
 
@@ -326,8 +372,10 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
   // a pad film: the mean, the maximum and the power over the pad's cells only (the gap nodes
   // are not film: they hold the inlet temperature and their shear is not the pad's)
   double tmax = -std::numeric_limits<double>::infinity();
+  for (int n = 0; n < nn; ++n) st.inlet_mask.data()[n] = D[n] ? 1.0 - parts.blend_weight : 0.0;
+  if (parts.blend_column >= 0)  // an inlet handed over between two columns (thd_field)
+    for (int k = 0; k < K1; ++k) st.inlet_mask(parts.blend_column, k) = parts.blend_weight;
   for (int n = 0; n < nn; ++n) {
-    st.inlet_mask.data()[n] = D[n] ? 1.0 : 0.0;
     qs += side_out[n];
     ts += side_out[n] * T[n];
     if (parts.pad && D[n]) continue;
@@ -335,10 +383,10 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
     tmean += A[n] * T[n];
     P += phi[n];
     tmax = std::max(tmax, T[n]);
-    if (!D[n]) {
-      qj += hJ * A[n] * (T[n] - TJ);
-      qb += hB * A[n] * (T[n] - TB);
-    }
+    // the walls of the film's cells (an inlet handed over: the film's share of its columns)
+    const double wf = 1.0 - st.inlet_mask.data()[n];
+    qj += wf * hJ * A[n] * (T[n] - TJ);
+    qb += wf * hB * A[n] * (T[n] - TB);
   }
   st.max_temperature_c = parts.pad ? std::max(tmax, Tin) : T.maxCoeff();
   st.mean_temperature_c = tmean / area;

@@ -65,6 +65,11 @@ struct ThdFieldParts {
   double Qr = 0.0;               ///< from the film into the inlet (pad: Q − Σ side_out), m³/s
   double ta = 0.0, tb = 0.0;     ///< Q_r T_r = ta + T_in tb
   bool pad = false;
+  /// an ungrooved film's inlet handed over to a neighbour column (thd_field): that column
+  /// (-1: none) and its weight w in (0, 1/2]; the parts are the blend (1 − w) · inlet at
+  /// the `inlet` column + w · inlet at this one
+  int blend_column = -1;
+  double blend_weight = 0.0;
 };
 ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
                         const OilModel& oil, const ThdOptions& opt, double omega, bool pad);
