@@ -91,7 +91,13 @@ def main(argv=None):
                     help="--hopf: boundary vertices timed for the projection")
     ap.add_argument("--procs", type=int, default=0,
                     help="--hopf: also every vertex on this many processes (the measurement)")
+    ap.add_argument("--hb", action="store_true",
+                    help="instead: harmonic balance from the equilibrium start (H = --harmonics) "
+                         "against the transient route")
+    ap.add_argument("--harmonics", type=int, default=8)
     args = ap.parse_args(argv)
+    if args.hb:
+        return hb_bench(args)
     if args.hopf:
         return hopf_bench(args)
     print(pin_threads(1))
@@ -147,6 +153,51 @@ def main(argv=None):
     print(f"  speed-up: {t['transient'].wall / t['shooting'].wall:.2f}x wall, "
           f"{t['transient'].cpu / t['shooting'].cpu:.2f}x CPU; worst relative error "
           f"transient {e_tr:.1e}, shooting {e_po:.1e}")
+    footer()
+
+
+def hb_bench(args):
+    """Harmonic balance (from the equilibrium plus its whirl mode at 0.3 c: no transient)
+    beside the 2 s transient, both against the shooting reference; interleaved repeats."""
+    print(pin_threads(1))
+    header("bench_nonlinear --hb: paper rig limit cycle by harmonic balance vs transient")
+    rig = rd.models.paper_rig()
+    ref = rd.periodic_orbit(rig, SPEED_HZ, PC_PA, AY_M, start=start_transient(rig, args.t_end),
+                            rtol=1e-9, atol_m=1e-12, tol=1e-7, n_out=4001)
+    assert ref.status == "ok", ref.message
+    print(f"reference: {ref!r}")
+    last = {}
+
+    def hb(h):
+        return rd.periodic_orbit(rig, SPEED_HZ, PC_PA, AY_M, method="harmonic_balance",
+                                 harmonics=h, tol=1e-6, n_out=2001)
+
+    for h in (4, 8, 12, 16):
+        o = hb(h)
+        print(f"H = {h:2d}: {o.status}, {o.stats['evaluations']} evaluations, "
+              f"|mu_c| {abs(o.critical_multiplier) if o.ok else float('nan'):.5f}, trivial "
+              f"{abs(o.trivial_multiplier) if o.ok else float('nan'):.6f}")
+        compare(f"harmonic balance H = {h}", o.journal_x_m[:, 0], o.journal_y_m[:, 0],
+                o.period_s, ref)
+
+    def transient_route():
+        last["tr"] = start_transient(rig, args.t_end)
+
+    def hb_route():
+        last["hb"] = hb(args.harmonics)
+
+    t = interleaved({"transient": transient_route, "hb": hb_route}, repeat=args.repeat)
+    x, y, T = last_period(last["tr"])
+    e_tr = compare(f"transient {args.t_end:g} s, last period", x, y, T, ref)
+    o = last["hb"]
+    e_hb = compare(f"harmonic balance H = {args.harmonics}", o.journal_x_m[:, 0],
+                   o.journal_y_m[:, 0], o.period_s, ref)
+    print(f"\ntiming (median of {args.repeat}):")
+    print(f"  transient route  {t['transient']}  [baseline]")
+    print(f"  harmonic balance {t['hb']}")
+    print(f"  speed-up: {t['transient'].wall / t['hb'].wall:.2f}x wall, "
+          f"{t['transient'].cpu / t['hb'].cpu:.2f}x CPU; worst relative error transient "
+          f"{e_tr:.1e}, harmonic balance {e_hb:.1e}")
     footer()
 
 

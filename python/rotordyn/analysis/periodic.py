@@ -10,6 +10,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
+from rotordyn.analysis import harmonic_balance as hbal
 from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn.errors import ConvergenceError, InputError
@@ -20,6 +21,7 @@ from rotordyn.results.transient import TransientResult
 from rotordyn.units import hz_to_rad_s
 
 KINDS = ("autonomous", "forced")
+METHODS = ("shooting", "harmonic_balance")
 NEWTON = ("broyden", "sensitivities")
 
 
@@ -56,7 +58,10 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                    max_steps: int = 200000,
                    sensitivity_error_control: bool = False,
                    sensitivity_rtol: float | None = None,
-                   newton: str = "sensitivities") -> PeriodicOrbitResult:
+                   newton: str = "sensitivities", method: str = "shooting",
+                   harmonics: int = 8, time_points: int | None = None,
+                   floquet: str = "samples",
+                   start_amplitude_c: float = 0.3) -> PeriodicOrbitResult:
     """Periodic orbit of eq. 12 by single shooting, with its Floquet multipliers.
 
     Unknowns: the state x0 = (r, ṙ) (2n) at t0, and for ``kind="autonomous"`` the period T
@@ -106,6 +111,20 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         as cheap as a transient period), refreshed by sensitivities when a step does not
         halve the residual. Both converge to the orbit within tol; Broyden stops just under
         tol where Newton overshoots far below it (docs/nonlinear.md).
+    method
+        ``"shooting"`` (default, above) or ``"harmonic_balance"``: the Fourier coefficients
+        of the positions (``harmonics`` H, ``time_points`` M ≥ 2H + 1 samples per period,
+        default 4H) by Newton on the AFT residual of eq. 12 (film forces and K_H, D_H by
+        Reynolds at each sample); ``tol`` is then the scaled residual (units of the smallest
+        clearance), ``rtol``/``atol_m`` only matter for a state start (one flow) and for
+        ``floquet="flow"``; newton, sensitivity_error_control do not apply. Start: a
+        TransientResult (its last period resampled), a state with period_s (one flow), or
+        for an autonomous cycle None: the equilibrium plus its least-damped whirl mode with
+        the journal at ``start_amplitude_c`` of the clearance (docs/nonlinear.md).
+    floquet
+        harmonic balance only: ``"samples"`` (the monodromy from the converged orbit's M
+        linearisations, 4th-order Magnus, no film solve), ``"flow"`` (one CVODES
+        sensitivity flow at ``sensitivity_rtol``) or ``"none"``.
 
     Returns
     -------
@@ -115,6 +134,11 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         for ``"ok"``.
     """
     kind = v.choice("kind", kind, KINDS)
+    method = v.choice("method", method, METHODS)
+    hb = method == "harmonic_balance"
+    if hb:
+        m_hb = hbal.time_points_for(harmonics, time_points)
+        v.in_range("start_amplitude_c", start_amplitude_c, 1e-6, 0.99)
     v.speed("speed_hz", speed_hz)
     v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
     if config_ay_m is not None:
@@ -149,6 +173,7 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     a = asm.config_vector(config_ay_m)
 
     t0 = 0.0
+    samples = None
     if isinstance(start, TransientResult):
         if start.status not in ("ok", "contact") or len(start.t) < 2:
             raise InputError(f"start: the transient did not finish (status {start.status!r}: "
@@ -160,16 +185,35 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         t0 = float(start.t[-1]) if kind == "forced" else 0.0
         if period_s is None:
             period_s = period_from_transient(start)
+        if hb:
+            samples, t_first = hbal.samples_from_transient(start, float(period_s), m_hb)
+            r0, v0 = samples[0].copy(), np.zeros(n)
+            t0 = t_first if kind == "forced" else 0.0
     elif start is None:
-        if kind == "autonomous":
+        if hb and kind == "autonomous":
+            e = equilibrium(system, speed_hz, chamber_pressure_pa, config_ay_m, warm_start=False)
+            if e.status not in CONVERGED:
+                raise ConvergenceError(f"periodic_orbit: no equilibrium to start from "
+                                       f"({e.status}: {e.message}); give start")
+            samples, p_lin = hbal.samples_from_equilibrium(
+                asm, hz_to_rad_s(float(speed_hz)), np.array(e.r, dtype=float),
+                float(start_amplitude_c), m_hb)
+            r0, v0 = samples[0].copy(), np.zeros(n)
+            if period_s is None:
+                period_s = p_lin
+        elif kind == "autonomous":
             raise InputError("start: an autonomous limit cycle needs a start on or near it: a "
                              "TransientResult that settled on the cycle, or a state (r, v) "
                              "with period_s")
-        e = equilibrium(system, speed_hz, chamber_pressure_pa, config_ay_m, warm_start=False)
-        if e.status not in CONVERGED:
-            raise ConvergenceError(f"periodic_orbit: no equilibrium to start from "
-                                   f"({e.status}: {e.message}); give start")
-        r0, v0 = np.array(e.r, dtype=float), np.zeros(n)
+        else:
+            e = equilibrium(system, speed_hz, chamber_pressure_pa, config_ay_m,
+                            warm_start=False)
+            if e.status not in CONVERGED:
+                raise ConvergenceError(f"periodic_orbit: no equilibrium to start from "
+                                       f"({e.status}: {e.message}); give start")
+            r0, v0 = np.array(e.r, dtype=float), np.zeros(n)
+            if hb:
+                samples = np.repeat(r0[None, :], m_hb, axis=0)
     else:
         if isinstance(start, (tuple, list)) and len(start) == 2:
             r0, v0 = v.vector("start[0]", start[0], n), v.vector("start[1]", start[1], n)
@@ -203,11 +247,19 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     inp.t0 = t0
     inp.period = float(period_s)
     inp.n_out = int(n_out)
-    opt = _core.ShootingOptions()
     c = _core.CvodeOptions()
     c.rtol, c.atol_position = float(rtol), float(atol_m)
     c.atol_velocity = float(atol_m) * max(abs(omega), 2 * np.pi / float(period_s), 1.0)
     c.max_steps = int(max_steps)
+    if sensitivity_rtol is not None:
+        v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
+    if hb:
+        res = hbal.solve(asm, inp, samples, harmonics=harmonics, time_points=m_hb, tol=tol,
+                         max_iter=max_iter, floquet=floquet, cvode=c,
+                         sensitivity_rtol=sensitivity_rtol)
+        return orbit_result(asm, res.orbit, kind, float(speed_hz), float(chamber_pressure_pa),
+                            a, extra_stats=hbal.hb_stats(res))
+    opt = _core.ShootingOptions()
     opt.cvode = c
     opt.tol = float(tol)
     opt.max_iter = int(max_iter)
@@ -221,7 +273,7 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
 
 
 def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: float,
-                 a: np.ndarray) -> PeriodicOrbitResult:
+                 a: np.ndarray, extra_stats: dict | None = None) -> PeriodicOrbitResult:
     """The :class:`PeriodicOrbitResult` of a C++ shooting (or corrector) result ``res`` at
     the operating point (speed_hz, chamber_pressure_pa, configuration a (n,))."""
     n = asm.n
@@ -250,5 +302,5 @@ def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: floa
                "sens_rhs_evals": res.sens_rhs_evals, "jac_evals": res.jac_evals,
                "reynolds_solves": res.reynolds_solves,
                "sensitivity_flows": res.sensitivity_flows,
-               "monodromy_rtol": float(res.monodromy_rtol)},
+               "monodromy_rtol": float(res.monodromy_rtol), **(extra_stats or {})},
         status=status, message=message)

@@ -1,0 +1,78 @@
+// Periodic orbits of the nonlinear system (paper eq. 12, every film by the Reynolds equation,
+// sleeve and pad coordinates included) by harmonic balance with alternating frequency–time
+// (AFT): the same system right-hand side as the transient and the shooting.
+//
+// Unknowns: the Fourier coefficients of the positions, r(τ) = c0 + Σ_{k=1..H} a_k cos kτ +
+// b_k sin kτ (τ = ω (t − t0), ω = 2π/T), and for an autonomous cycle the frequency ω with the
+// phase condition b_1 = 0 in one coordinate (the one with the largest first harmonic of the
+// start). Residual: eq. 12 in second-order form,
+//   R(τ_j) = ω² M r''(τ_j) + ω (C + ΩG) r'(τ_j) + K r(τ_j) − H(r, ω r', Ω) − F0 − f_u(t_j),
+// at M ≥ 2H + 1 equally spaced samples τ_j (the film forces by Reynolds at each sample),
+// projected back on the 2H + 1 harmonics (a DFT: Galerkin with the trapezoidal rule, exact
+// for the linear terms). Newton matrix: the same projection of the time-domain linearisation
+// K + K_H(τ_j), ω (C + ΩG + D_H(τ_j)), ω² M (the perturbation-method K_H, D_H of the films,
+// the transient's Jacobian), the ω column exactly; damped (the step capped at 0.25 L per
+// coefficient and 10 % in ω, halved while the residual's 2-norm does not fall).
+#pragma once
+#include <Eigen/Core>
+
+#include <string>
+
+#include "rotordyn/periodic.hpp"
+
+namespace rotordyn {
+
+/// How the Floquet multipliers of a harmonic-balance orbit are computed.
+enum class HbFloquet {
+  none,     ///< not computed (monodromy and multipliers empty)
+  samples,  ///< Φ from the M linearisations of the converged orbit: A(τ) trigonometrically
+            ///< interpolated, 4th-order Magnus (Gauss points) with exponentials, no film solve
+  flow      ///< one CVODES flow with forward sensitivities from the HB orbit's start (as the
+            ///< shooting's final pass: error-controlled at sensitivity_rtol)
+};
+
+struct HarmonicBalanceOptions {
+  int harmonics = 8;           ///< H ≥ 1
+  int time_points = 0;         ///< M ≥ 2H + 1; 0: 4H (at least 2H + 1)
+  double tol = 1e-8;           ///< converged when ‖R̃‖∞ < tol (scaled residual, units of L)
+  int max_iter = 40;           ///< Newton iterations
+  double length_scale = 0.0;   ///< L, m; 0: the smallest film clearance (1e-3 m if no film)
+  /// Autonomous: deflate the equilibria (m(z) R, m = ‖z_h‖⁻² + 1) so that Newton does not
+  /// fall onto them from a start off the cycle.
+  bool deflation = true;
+  /// The films' cavitation-set continuation between consecutive samples (as in a transient).
+  bool film_continuation = true;
+  HbFloquet floquet = HbFloquet::samples;
+  int magnus_substeps = 4;     ///< floquet = samples: Magnus steps per sample interval
+  CvodeOptions cvode;          ///< the start flow (state start) and floquet = flow
+  double sensitivity_rtol = 0; ///< floquet = flow; 0: cvode.rtol
+};
+
+struct HarmonicBalanceResult {
+  /// The orbit as shooting reports it (samples over one period, start, period, monodromy,
+  /// multipliers, status); `iterations` are Newton iterations, `residuals` the scaled
+  /// ‖R̃‖∞ per iteration, `reynolds_solves` the film solves of the whole call.
+  PeriodicOrbitResult orbit;
+  /// (2H + 1, n): rows c0, a_1, b_1, a_2, b_2, …, m; r(t) = c0 + Σ a_k cos kω(t − t0) + …
+  Eigen::MatrixXd coefficients;
+  /// (H + 1,) max over the coordinates of |(a_k, b_k)| / L (k = 0: |c0| / L): the spectrum's
+  /// decay, the truncation check.
+  Eigen::VectorXd harmonic_amplitudes;
+  int harmonics = 0, time_points = 0;
+  double frequency = 0.0;      ///< ω = 2π/T, rad/s
+  long linearizations = 0;     ///< film linearisations (one per sample per evaluation)
+  long evaluations = 0;        ///< residual evaluations (M samples each)
+};
+
+/// Harmonic balance from a start given as position samples `start_samples` (M0, n) at
+/// τ_j = 2πj/M0 (j = 0 … M0 − 1, over one period from in.t0; M0 ≥ 2H + 1), or — if empty —
+/// from one flow of eq. 12 over in.period from (in.r0, in.v0) (no sensitivities). Forced:
+/// T = in.period fixed; autonomous: in.period is the first guess. Failures (no convergence,
+/// a film closing, the iteration falling onto an equilibrium) are a status with a message;
+/// bad input (H < 1, M < 2H + 1, period ≤ 0, shapes, forcing inconsistent with the kind) an
+/// InputError naming the field.
+HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput& in,
+                                       const Eigen::MatrixXd& start_samples,
+                                       const HarmonicBalanceOptions& opt);
+
+}  // namespace rotordyn

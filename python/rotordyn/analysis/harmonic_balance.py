@@ -1,0 +1,100 @@
+"""Periodic orbits of eq. 12 by harmonic balance with alternating frequency–time (the C++
+``_core.harmonic_balance``; docs/nonlinear.md "Harmonic balance"): the starts and the call.
+:func:`rotordyn.periodic_orbit` with ``method="harmonic_balance"`` is the public entry."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn.errors import InputError
+from rotordyn.results.transient import TransientResult
+
+FLOQUET = ("samples", "flow", "none")
+
+
+def time_points_for(harmonics: int, time_points: int | None) -> int:
+    """M for H harmonics: ``time_points`` checked (M ≥ 2H + 1), or 4H by default."""
+    h = v.integer("harmonics", harmonics, lo=1, hi=1000)
+    if time_points is None:
+        return max(4 * h, 2 * h + 1)
+    m = v.integer("time_points", time_points, lo=1, hi=100_000)
+    if m < 2 * h + 1:
+        raise InputError(f"time_points: expected M >= 2H + 1 = {2 * h + 1} for harmonics = "
+                         f"{h}, got {m}")
+    return m
+
+
+def samples_from_transient(tr: TransientResult, period_s: float, m: int) -> np.ndarray:
+    """(m, n) positions of the transient's last period resampled at τ_j = 2πj/m (linear
+    interpolation between its output samples), and the time of the first sample, s."""
+    t = np.asarray(tr.t, dtype=float)
+    t0 = float(t[-1]) - period_s
+    if t0 < t[0]:
+        raise InputError(f"start: the transient ({t[-1] - t[0]:.4g} s) is shorter than one "
+                         f"period ({period_s:.4g} s)")
+    ts = t0 + period_s * np.arange(m) / m
+    r = np.asarray(tr.r, dtype=float)
+    return np.column_stack([np.interp(ts, t, r[:, i]) for i in range(r.shape[1])]), t0
+
+
+def samples_from_equilibrium(asm, omega: float, r_e: np.ndarray, amplitude_c: float,
+                             m: int) -> tuple[np.ndarray, float]:
+    """The cheap start of a limit cycle: the equilibrium r_e (n,) plus the least-damped
+    whirl mode of its linearisation (first-order system matrix A = [[0, I], [−M⁻¹(K + K_H),
+    −M⁻¹(C + ΩG + D_H)]], the eigenvalue of largest real part with Im > 0), scaled so the
+    first bearing's journal moves ``amplitude_c`` of its clearance (the semi-major axis).
+    Returns the (m, n) position samples and the period guess 2π/Im λ, s."""
+    md = asm.model
+    n = asm.n
+    lin = asm.solver.linearize(r_e, np.zeros(n), omega)
+    M = np.asarray(md.mass_at(omega))
+    K, C, G = (np.asarray(x) for x in (md.K, md.C, md.G))
+    A = np.zeros((2 * n, 2 * n))
+    A[:n, n:] = np.eye(n)
+    A[n:, :n] = -np.linalg.solve(M, K + np.asarray(lin.KH))
+    A[n:, n:] = -np.linalg.solve(M, C + omega * G + np.asarray(lin.DH))
+    lam, vec = np.linalg.eig(A)
+    up = np.nonzero(lam.imag > 1e-9 * np.abs(lam).max())[0]
+    if up.size == 0:
+        raise InputError("start: the equilibrium's linearisation has no oscillating mode to "
+                         "start a limit cycle from")
+    k = up[np.argmax(lam.real[up])]
+    q = vec[:n, k]
+    bc = asm.bearings[0]
+    tau = 2 * np.pi * np.arange(m) / m
+    d = np.real(np.outer(np.exp(1j * tau), q))  # (m, n)
+    semi = np.hypot(d[:, bc.jx], d[:, bc.jy]).max()
+    if not semi > 0:
+        raise InputError("start: the least-damped mode does not move the first journal")
+    s = amplitude_c * bc.clearance_m / semi
+    return r_e[None, :] + s * d, float(2 * np.pi / lam.imag[k])
+
+
+def solve(asm, inp, samples: np.ndarray | None, *, harmonics: int, time_points: int,
+          tol: float, max_iter: int, floquet: str, cvode, sensitivity_rtol: float | None,
+          magnus_substeps: int = 4):
+    """The C++ harmonic balance on the prepared :class:`_core.PeriodicInput` ``inp`` from
+    position samples (m0, n) over one period (or None: one flow from inp.r0, inp.v0)."""
+    opt = _core.HarmonicBalanceOptions()
+    opt.harmonics = int(harmonics)
+    opt.time_points = int(time_points)
+    opt.tol = float(tol)
+    opt.max_iter = int(max_iter)
+    opt.floquet = getattr(_core.HbFloquet, v.choice("floquet", floquet, FLOQUET))
+    opt.magnus_substeps = v.integer("magnus_substeps", magnus_substeps, lo=1, hi=1000)
+    opt.cvode = cvode
+    if sensitivity_rtol is not None:
+        opt.sensitivity_rtol = float(sensitivity_rtol)
+    z = np.zeros((0, asm.n)) if samples is None else np.ascontiguousarray(samples, dtype=float)
+    return _core.harmonic_balance(asm.solver, inp, z, opt)
+
+
+def hb_stats(res) -> dict:
+    """The harmonic-balance entries of ``PeriodicOrbitResult.stats``."""
+    return {"method": "harmonic_balance", "harmonics": int(res.harmonics),
+            "time_points": int(res.time_points), "linearizations": int(res.linearizations),
+            "evaluations": int(res.evaluations),
+            "harmonic_amplitudes": tuple(float(x) for x in res.harmonic_amplitudes),
+            "coefficients": np.asarray(res.coefficients)}
