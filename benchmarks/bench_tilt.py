@@ -15,6 +15,11 @@ would reuse a solve at unchanged inputs). Sides (each reuses its solver; 20 call
 * ``untilted, full grid``: the standalone film with the half-grid shortcut off (what any film
   that is not symmetric in z costs);
 * ``tilted``: ``tilted_forces`` at θ = (0.2, −0.3) c/L (forces and moments; full grid).
+
+Then the same for an elliptical (two-lobe, preload 0.5) ``FixedGeometryBearing`` of the same
+size and grid (each lobe 36 × 16 on its mapped grid): ``untilted`` its two-coordinate lobe
+films (one cached solver, ``film_forces``), ``untilted, 4-coordinate`` ``tilted_forces`` at
+zero tilt, ``tilted`` at the same θ.
 """
 
 from __future__ import annotations
@@ -71,8 +76,46 @@ def main(argv=None) -> int:
     print(f"tilted film: F = ({f.force_n[0]:.4g}, {f.force_n[1]:.4g}) N, M = "
           f"({f.moment_n_m[0]:.4g}, {f.moment_n_m[1]:.4g}) N m, h_min = {f.h_min_m:.4g} m at "
           f"phi = {f.h_min_angle_deg:.1f} deg, z = {f.h_min_z_m:+.4g} m")
+    lobes(args.repeat, geo, st, th)
     footer()
     return 0
+
+
+def lobes(repeat, geo, st, th) -> None:
+    import math
+
+    import numpy as np
+
+    from rotordyn.bearings import FixedGeometryBearing
+
+    fb = FixedGeometryBearing(station=0, kind="elliptical", **geo)
+    s2 = fb._solver()  # the untilted lobes: two coordinates, one cached solver
+    w = 2 * math.pi * st["speed_hz"]
+    count = [0]
+
+    def pos():
+        count[0] += 1
+        return dict(st, x_m=st["x_m"] * (1.0 + 1e-4 * (count[0] % 1000)))
+
+    def untilted():
+        p = pos()
+        return s2.film_forces(np.array([p["x_m"], p["y_m"]]), np.zeros(2), w)
+
+    t = interleaved({
+        "untilted": untilted,
+        "untilted, 4-coordinate": lambda: tilted_forces(fb, **pos()),
+        "tilted": lambda: tilted_forces(fb, **pos(), **th),
+    }, repeat=repeat, number=20)
+    for k, v in t.items():
+        print(f"elliptical force, 72x16: {k:24s} {v}")
+    base = t["untilted"]
+    for k in ("untilted, 4-coordinate", "tilted"):
+        print(f"  ratio {k} / untilted: {t[k].wall / base.wall:.2f}x wall, "
+              f"{t[k].cpu / base.cpu:.2f}x CPU")
+    f = tilted_forces(fb, **st, **th)
+    print(f"tilted elliptical: F = ({f.force_n[0]:.4g}, {f.force_n[1]:.4g}) N, M = "
+          f"({f.moment_n_m[0]:.4g}, {f.moment_n_m[1]:.4g}) N m, h_min = {f.h_min_m:.4g} m at "
+          f"phi = {f.h_min_angle_deg:.1f} deg, z = {f.h_min_z_m:+.4g} m")
 
 
 if __name__ == "__main__":

@@ -95,7 +95,12 @@ class Assembled:
             jx, jy = journal_index(b.station)
             if hasattr(b, "system_parts"):  # rotordyn.bearings elements
                 name = b.name or f"bearing[{bi}]"
-                parts = b.system_parts(jx, jy, n, name)
+                rot: tuple[int, ...] = ()
+                if getattr(b, "tilt", False):  # fixed geometry: the lobes' films tilt too
+                    rot = rotation_index(b.station, f"bearings[{bi}]")
+                    parts = b.system_parts(jx, jy, n, name, rot=rot)
+                else:
+                    parts = b.system_parts(jx, jy, n, name)
                 films += [p.coupling for p in parts.films]
                 self.film_owner += [bi] * len(parts.films)
                 self.film_phi += [p.phi for p in parts.films]
@@ -113,7 +118,8 @@ class Assembled:
                     self.extra_labels += list(parts.labels)
                     n += parts.n_extra
                 self.bearings.append(BearingCoords(bi, name, jx, jy, (),
-                                                   getattr(b, "clearance_m", 0.0), False, extra))
+                                                   getattr(b, "clearance_m", 0.0), False, extra,
+                                                   rot=rot))
                 continue
             jb = b.journal_bearing()
             g, grid = jb.to_core()
@@ -227,6 +233,13 @@ class Assembled:
                     a = float(np.degrees(phi[j]) % 360.0) if np.isfinite(phi[j]) else float("nan")
                 ang[b] = a
         return out if angle_films is None else (out, ang)
+
+    def min_film_index(self, bearing: int, h_films) -> np.ndarray:
+        """Index of the film (of those of ``bearing``) with the least minimum film, per row
+        of ``h_films`` (…, n_films): a lobed bearing's edge film is its thinnest lobe's."""
+        idx = np.array([i for i, o in enumerate(self.film_owner) if o == bearing])
+        h = np.asarray(h_films, dtype=float)
+        return idx[np.argmin(h[..., idx], axis=-1)]
 
     def station_load_matrix(self, station: int) -> np.ndarray:
         """(n, 2) map from a force (Fx, Fy) at a rotor station (N) to generalised forces on r

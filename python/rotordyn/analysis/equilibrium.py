@@ -110,18 +110,20 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         iterations=int(res.iterations), reynolds_solves=int(res.reynolds_solves),
         residual=float(res.residual), status=res.status, message=res.message,
         pm=float(res.pm) if method == "successive" else float("nan"), path=path,
-        tilt=tilt_outputs(asm, r, a, np.asarray(res.h_min_z_m)),
+        tilt=tilt_outputs(asm, r, a, np.asarray(res.h_min_z_m), np.asarray(res.h_min)),
     )
 
 
-def tilt_outputs(asm, r, a, h_min_z_films) -> dict:
+def tilt_outputs(asm, r, a, h_min_z_films, h_min_films=None) -> dict:
     """Per tilting-film bearing: its journal rotations relative to the housing, the housing
-    misalignment and the axial position of its minimum film (EquilibriumResult.tilt)."""
+    misalignment and the axial position of its minimum film (EquilibriumResult.tilt; a lobed
+    bearing's: its thinnest lobe's, ``h_min_films`` the films' minimum films)."""
     out = {}
     for bc in asm.bearings:
         if not bc.rot:
             continue
-        i = asm.film_owner.index(bc.index)
+        i = asm.film_owner.index(bc.index) if h_min_films is None \
+            else int(asm.min_film_index(bc.index, h_min_films))
         out[bc.index] = {"journal_theta_x_rad": float(r[bc.rot[0]]),
                          "journal_theta_y_rad": float(r[bc.rot[1]]),
                          "config_theta_x_rad": float(a[bc.rot[0]]),

@@ -21,6 +21,15 @@ kinds (defaults: n lobes, orientation, preload, offset):
 * ``pressure_dam``: two-axial-groove with a relief pocket of depth ``dam_depth_m`` and axial
   width ``dam_width_fraction``·L in the upper lobe, from its leading edge over
   ``dam_arc_deg``, ending at the dam step.
+
+Journal tilt (``tilt = True``; docs/film-physics.md, "Journal tilt and bearing misalignment"):
+every lobe's film couples to the journal's rotations (θx, θy) too, with the plain bearing's
+convention: at the axial position z the journal centre is at (x + θy z, y − θx z), so a lobe's
+thickness is h(φ, z) = C_p − (C_p − C_b) cos(φ − φ_p) − (x + θy z) cos φ − (y − θx z) sin φ
+(shapes sin φ, −cos φ with axial weight z on the lobe's nodes), and the lobes' films carry
+the moments Mx = ∫∫ p z sin φ dA, My = −∫∫ p z cos φ dA. ``config_theta_x_rad``,
+``config_theta_y_rad``: the housing's angular misalignment (the configuration a at the
+station's rotations), as for the plain bearing.
 """
 
 from __future__ import annotations
@@ -77,6 +86,11 @@ class FixedGeometryBearing:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
+    # journal tilt: the lobes' films couple to the station's rotations too; the housing's
+    # angular misalignment (rad, right-hand rule about x, y) is the configuration a at them
+    tilt: bool = False
+    config_theta_x_rad: float = 0.0
+    config_theta_y_rad: float = 0.0
     # "finite" (the finite-length Reynolds film) or "short": the core's short-bearing (Ocvirk)
     # film, p = 6μG/h³·(z² − L²/4) node by node (plain 360° bearing only: partial_arc, 360°)
     film_model: str = "finite"
@@ -137,9 +151,60 @@ class FixedGeometryBearing:
             raise InputError(f"{where}.film_model: 'short' (the short-bearing film: open ends, "
                              f"no grooves) needs kind = 'partial_arc' with arc_deg = 360, got "
                              f"kind = {self.kind!r}, arc_deg = {self.arc_deg!r}")
+        self._check_tilt(where)
+
+    def _check_tilt(self, where: str) -> None:
+        """``tilt`` (bool), the misalignment (finite, only with tilt, and not closing any
+        lobe's film at an edge for a journal on the shaft line: :meth:`edge_film` > 0)."""
+        v.boolean(f"{where}.tilt", self.tilt)
+        tx = v.finite(f"{where}.config_theta_x_rad", self.config_theta_x_rad)
+        ty = v.finite(f"{where}.config_theta_y_rad", self.config_theta_y_rad)
+        if (tx or ty) and not self.tilt:
+            raise InputError(f"{where}.config_theta_x_rad, config_theta_y_rad: a misalignment "
+                             "needs the film coupled to the journal's rotations (tilt = true)")
+        if self.tilt and self.film_model != "finite":
+            raise InputError(f"{where}.film_model: tilt = true needs the finite-length film "
+                             f"(film_model = 'finite'), got {self.film_model!r}")
+        h, z = self.edge_film(0.0, 0.0, tx, ty)
+        if not h > 0.0:
+            raise InputError(
+                f"{where}.config_theta_x_rad, config_theta_y_rad: the misalignment closes a "
+                f"lobe's film at the edge z = {z:+g} m (minimum film {h:g} m); expected a "
+                f"misalignment whose edge film stays > 0 (for a 360° arc without preload: "
+                f"sqrt(theta_x² + theta_y²)·length_m/2 < clearance_m = {self.clearance_m:g} m)")
+
+    def edge_film(self, x: float, y: float, theta_x: float, theta_y: float
+                  ) -> tuple[float, float]:
+        """The smallest film thickness (m) of the continuous lobe geometry of a journal at
+        (x, y) (m, mid-plane) tilted by (θx, θy) rad, and the edge z (m) where it is: a lobe's
+        h(φ) = C_p − |A| cos(φ − arg A), A = (C_p − C_b) e^{iφ_p} + (x + θy z) + i(y − θx z),
+        is least at arg A if that lies on the arc, else at an arc end; the axis is straight,
+        so the least film over z is at an edge (z = ±L/2)."""
+        m, alpha, orient = self.resolved()
+        Cb = self.clearance_m
+        Cp = Cb / (1.0 - m)
+        arc = math.radians(self.lobe_arc_deg())
+        best, where = math.inf, 0.0
+        for z in (-0.5 * self.length_m, 0.5 * self.length_m):
+            ex, ey = x + theta_y * z, y - theta_x * z
+            for k in range(self.n_lobes):
+                start = math.radians(orient + k * 360.0 / self.n_lobes) - 0.5 * arc
+                piv = start + alpha * arc
+                ax, ay = (Cp - Cb) * math.cos(piv) + ex, (Cp - Cb) * math.sin(piv) + ey
+                a, psi = math.hypot(ax, ay), math.atan2(ay, ax)
+                if (psi - start) % (2 * math.pi) <= arc:
+                    h = Cp - a
+                else:
+                    h = Cp - a * max(math.cos(start - psi), math.cos(start + arc - psi))
+                if h < best:
+                    best, where = h, z
+        return best, where
 
     # -- films ----------------------------------------------------------------------------
-    def films(self, jx: int, jy: int, name: str, spin: float = 1.0) -> list:
+    def films(self, jx: int, jy: int, name: str, spin: float = 1.0, rot=()) -> list:
+        """One film per lobe on the journal's x, y (``jx``, ``jy``) and, with ``rot`` (two
+        indices: θx, θy), on its rotations: shapes (−cos φ, −sin φ, sin φ, −cos φ) on the
+        lobe's nodes, axial weights (1, 1, z, z) (module docstring)."""
         m, alpha, orient = self.resolved()
         arc = math.radians(self.lobe_arc_deg())
         out = []
@@ -157,14 +222,22 @@ class FixedGeometryBearing:
                 diameter_m=self.diameter_m, length_m=self.length_m, clearance_m=self.clearance_m,
                 viscosity_pa_s=self.viscosity_pa_s, cavitation=self.cavitation, start_rad=start,
                 arc_rad=arc, pivot_rad=start + alpha * arc, preload=m, n_circ=self.n_circ,
-                n_axial=self.n_axial, coords=[jx, jy], supply_pressure_pa=self.supply_pressure_pa,
+                n_axial=self.n_axial, coords=[jx, jy] + list(rot),
+                extra_shapes=(np.sin, lambda p: -np.cos(p)) if rot else (),
+                supply_pressure_pa=self.supply_pressure_pa,
                 spin=spin, pockets=pockets, turbulence=self.turbulence,
                 density_kg_m3=self.density_kg_m3, short_bearing=self.film_model == "short"))
+            if rot:  # rotations: ∂h/∂θ = S(φ)·z (the weight-1 coordinates first, as untilted)
+                z = np.linspace(-0.5 * self.length_m, 0.5 * self.length_m, self.n_axial + 1)
+                out[-1].coupling.axial_weight = np.ascontiguousarray(
+                    np.vstack([np.ones_like(z), np.ones_like(z), z, z]))
         pad_fields(self.viscosity_field_pa_s, out, f"{name}.viscosity_field_pa_s")
         return out
 
-    def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:
-        return SystemParts(films=self.films(jx, jy, name), tables=[])
+    def system_parts(self, jx: int, jy: int, first_extra: int, name: str,
+                     rot=()) -> SystemParts:
+        """The lobes' films on the journal (and, with ``rot``, the station's θx, θy)."""
+        return SystemParts(films=self.films(jx, jy, name, rot=rot), tables=[])
 
     # -- standalone -----------------------------------------------------------------------
     def _solver(self):

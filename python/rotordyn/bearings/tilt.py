@@ -16,6 +16,11 @@ defined by ΔH = −K Δr − C Δṙ (4×4; units N/m, N/rad, N·m/m, N·m/rad 
 second for C). A bearing's own angular misalignment (housing rotated by (αx, αy)) is the
 same film seen by a journal at rotation θ − α relative to the housing.
 
+A :class:`rotordyn.bearings.FixedGeometryBearing` (partial arc, lobed, offset halves,
+pressure dam) takes the same functions: its lobes' films with the rotations' shapes on their
+nodes (``FixedGeometryBearing.films(..., rot=...)``), the forces and moments summed over the
+lobes, the minimum film the thinnest lobe's.
+
 The numerical work is the system film of the C++ core (``_core.SystemSolver``: one Reynolds
 solve on the full (φ, z) grid, the perturbation linearisation reusing its factorisation).
 """
@@ -30,6 +35,9 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
+import threading
+
+from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
 from rotordyn.bearings.journal import MAX_SPEED_HZ, JournalBearing
 from rotordyn.errors import InputError
 
@@ -79,6 +87,14 @@ def check_pose(bearing: JournalBearing, x_m, y_m, theta_x_rad, theta_y_rad,
     InputError naming the field otherwise."""
     vals = tuple(v.finite(n, val) for n, val in zip(names, (x_m, y_m, theta_x_rad, theta_y_rad)))
     x, y, tx, ty = vals
+    if isinstance(bearing, FixedGeometryBearing):
+        h, z = bearing.edge_film(x, y, tx, ty)
+        if not h > 0.0:
+            raise InputError(
+                f"{names[2]}, {names[3]}: the tilted journal closes a lobe's film at the edge "
+                f"z = {z:+g} m (minimum film {h:.6g} m); expected a pose whose film stays > 0 "
+                f"over the lobes at z = ±L/2")
+        return vals
     hl = 0.5 * bearing.length_m
     for z in (-hl, hl):
         e = math.hypot(x + ty * z, y - tx * z) / bearing.clearance_m
@@ -98,8 +114,46 @@ def _speed(speed_hz) -> float:
     return f
 
 
-def _solver(bearing: JournalBearing) -> _core.SystemSolver:
+_lobes_local = threading.local()
+
+
+def _lobe_solver(bearing: FixedGeometryBearing):
+    """This thread's four-coordinate lobe films of ``bearing`` (a few bearings kept) and the
+    lobes' physical node angles (rad; NaN on the gap nodes)."""
+    cache = getattr(_lobes_local, "cache", None)
+    if cache is None:
+        cache = _lobes_local.cache = {}
+    hit = cache.get(bearing)
+    if hit is None:
+        pads = bearing.films(0, 1, bearing.name or "bearing", rot=(2, 3))
+        model = _core.SystemModel()
+        z = np.zeros((4, 4))
+        model.M, model.K, model.C, model.G = z, z, z, z
+        model.Q, model.chamber = np.zeros(4), np.zeros(4)
+        model.films = [p.coupling for p in pads]
+        if len(cache) >= 8:
+            cache.pop(next(iter(cache)))
+        hit = cache[bearing] = (_core.SystemSolver(model), [p.phi for p in pads])
+    return hit
+
+
+def _min_film(s, phis=None) -> tuple[float, float, float]:
+    """(h_min m, its angle deg, its z m) over the solver's films (the thinnest one's; a lobe's
+    core-grid angle mapped to its physical angle with ``phis``)."""
+    h = np.asarray(s.last_h_min, dtype=float)
+    i = int(np.argmin(h))
+    a = float(s.last_h_min_angle_deg[i])
+    if phis is not None:
+        phi = phis[i]
+        j = int(round(a / 360.0 * len(phi))) % len(phi)
+        a = float(np.degrees(phi[j]) % 360.0) if np.isfinite(phi[j]) else math.nan
+    return float(h[i]), a, float(s.last_h_min_z_m[i])
+
+
+def _solver(bearing) -> _core.SystemSolver:
     """This thread's four-coordinate film of ``bearing`` (built on first use)."""
+    if isinstance(bearing, FixedGeometryBearing):
+        return _lobe_solver(bearing)[0]
     s = getattr(bearing._local, "tilt_solver", None)
     if s is None:
         model = _core.SystemModel()
@@ -133,7 +187,8 @@ class TiltedFilm:
             "h_min_z_m": self.h_min_z_m}])
 
 
-def tilted_forces(bearing: JournalBearing, *, x_m: float, y_m: float, speed_hz: float,
+def tilted_forces(bearing: JournalBearing | FixedGeometryBearing, *, x_m: float, y_m: float,
+                  speed_hz: float,
                   theta_x_rad: float = 0.0, theta_y_rad: float = 0.0, vx_m_s: float = 0.0,
                   vy_m_s: float = 0.0, wx_rad_s: float = 0.0, wy_rad_s: float = 0.0
                   ) -> TiltedFilm:
@@ -148,13 +203,14 @@ def tilted_forces(bearing: JournalBearing, *, x_m: float, y_m: float, speed_hz: 
                               MAX_ANGULAR_VELOCITY_RAD_S)])
     s = _solver(bearing)
     H = np.asarray(s.film_forces(r, rd, TWO_PI * _speed(speed_hz)))
-    return TiltedFilm(force_n=H[:2].copy(), moment_n_m=H[2:].copy(),
-                      h_min_m=float(s.last_h_min[0]),
-                      h_min_angle_deg=float(s.last_h_min_angle_deg[0]),
-                      h_min_z_m=float(s.last_h_min_z_m[0]))
+    phis = _lobe_solver(bearing)[1] if isinstance(bearing, FixedGeometryBearing) else None
+    hm, ha, hz = _min_film(s, phis)
+    return TiltedFilm(force_n=H[:2].copy(), moment_n_m=H[2:].copy(), h_min_m=hm,
+                      h_min_angle_deg=ha, h_min_z_m=hz)
 
 
-def tilted_coefficients(bearing: JournalBearing, *, x_m: float, y_m: float, speed_hz: float,
+def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing, *, x_m: float,
+                        y_m: float, speed_hz: float,
                         theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
                         method: str = "perturbation", rel_step: float = 1e-6
                         ) -> tuple[np.ndarray, np.ndarray]:
@@ -173,6 +229,23 @@ def tilted_coefficients(bearing: JournalBearing, *, x_m: float, y_m: float, spee
     else:
         raise InputError(f"method: expected 'perturbation' or 'finite_difference', got {method!r}")
     return np.array(lin.KH), np.array(lin.DH)
+
+
+def imposed_tilt(f: _core.FilmCoupling, theta_x: float, theta_y: float) -> _core.FilmCoupling:
+    """The film ``f`` on (x, y, θx, θy) turned into a film on (x, y) alone with the tilt
+    (θx, θy) in its base thickness: base_h + S(·, 2)·w(2, ·)·θx + S(·, 3)·w(3, ·)·θy
+    (n_circ, n_axial + 1); ``f`` keeps its first two coordinates."""
+    S, W = np.asarray(f.shape), np.asarray(f.axial_weight)
+    n, k1 = S.shape[0], W.shape[1]
+    b = np.asarray(f.base_h)
+    base = np.full((n, k1), f.geometry.clearance_m) if b.size == 0 else np.broadcast_to(
+        b.reshape(n, -1), (n, k1)).copy()
+    base += np.outer(S[:, 2], W[2] * theta_x) + np.outer(S[:, 3], W[3] * theta_y)
+    f.base_h = np.ascontiguousarray(base)
+    f.coords = list(f.coords)[:2]
+    f.shape = np.ascontiguousarray(S[:, :2])
+    f.axial_weight = np.zeros((0, 0))
+    return f
 
 
 @dataclass(frozen=True)
@@ -210,7 +283,8 @@ class MisalignedEquilibrium:
             "h_min_z_m": self.h_min_z_m, "status": self.status, "message": self.message}])
 
 
-def misaligned_equilibrium(bearing: JournalBearing, *, load_n: Sequence[float],
+def misaligned_equilibrium(bearing: JournalBearing | FixedGeometryBearing, *,
+                           load_n: Sequence[float],
                            speed_hz: float, theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
                            tol: float = 1e-10) -> MisalignedEquilibrium:
     """(x, y) where the film force balances ``load_n`` (N, on the journal) with the journal
@@ -223,17 +297,16 @@ def misaligned_equilibrium(bearing: JournalBearing, *, load_n: Sequence[float],
     f = _speed(speed_hz)
     if f == 0.0:
         raise InputError("speed_hz: a static equilibrium needs 0 < |speed_hz|, got 0")
-    phi = TWO_PI * np.arange(bearing.n_circ) / bearing.n_circ
-    z = axial_positions(bearing)
-    base = bearing.clearance_m + np.outer(np.sin(phi), tx * z) - np.outer(np.cos(phi), ty * z)
-    film = tilt_coupling(bearing, [0, 1], base_h=base)
-    film.shape = np.ascontiguousarray(film.shape[:, :2])
-    film.axial_weight = np.zeros((0, 0))
+    if isinstance(bearing, FixedGeometryBearing):
+        films = [imposed_tilt(p.coupling, tx, ty)
+                 for p in bearing.films(0, 1, bearing.name or "bearing", rot=(2, 3))]
+    else:
+        films = [imposed_tilt(tilt_coupling(bearing, [0, 1, 2, 3]), tx, ty)]
     model = _core.SystemModel()
     z2 = np.zeros((2, 2))
     model.M, model.K, model.C, model.G = z2, z2, z2, z2
     model.Q, model.chamber = np.array([lx, ly]), np.zeros(2)
-    model.films = [film]
+    model.films = films
     opt = _core.EquilibriumOptions()
     opt.tol = v.in_range("tol", tol, 1e-14, 1e-2)
     opt.polish = True
@@ -268,4 +341,5 @@ __all__ = [
     "tilted_coefficients",
     "misaligned_equilibrium",
     "tilt_coupling",
+    "imposed_tilt",
 ]

@@ -65,6 +65,10 @@ class TiltingPadBearing:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
+    # journal tilt (the film on the station's rotations, as fixed-geometry and plain
+    # bearings have it): not yet for pads, refused (the core's pad-by-pad equilibrium takes
+    # no pad film with axial weights)
+    tilt: bool = False
     # a frozen viscosity per node and pad, Pa·s: per pad (N_pad, n_axial + 1) as nested tuples
     # (the THD pads' temperature fields at their thermal equilibrium, pad_thd.py); None:
     # viscosity_pa_s everywhere
@@ -98,6 +102,10 @@ class TiltingPadBearing:
         v.in_range(f"{where}.pad_arc_deg", self.pad_arc_deg, 0.0, 360.0 / self.n_pads,
                    lo_open=True, hi_open=True)
         check_arc(f"{where}.pad_arc_deg", self.pad_arc_deg, self)
+        if self.tilt is not False:
+            raise InputError(f"{where}.tilt: journal tilt is not available for tilting-pad "
+                             f"bearings yet (the pads' films are solved without the journal's "
+                             f"rotations); expected false, got {self.tilt!r}")
         v.in_range(f"{where}.pivot_offset", self.pivot_offset, 0.0, 1.0, lo_open=True,
                    hi_open=True)
         v.in_range(f"{where}.preload", self.preload, 0.0, 1.0, hi_open=True)

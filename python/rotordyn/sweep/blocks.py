@@ -92,7 +92,10 @@ def _eq_seg(asm, res, at):
         c = np.array([bc.clearance_m if bc.clearance_m > 0 else math.nan for bc in bs])
         tilt = ok & np.array([bool(bc.rot) for bc in bs])[None, :]
         rot = [bc.rot if bc.rot else (0, 0) for bc in bs]
-        hz_col = [asm.film_owner.index(bc.index) if bc.rot else 0 for bc in bs]
+        hf = np.asarray(res.h_min)[a:b]  # the thinnest film of a lobed bearing
+        hz_col = [asm.min_film_index(bc.index, hf) if bc.rot else np.zeros(b - a, dtype=int)
+                  for bc in bs]
+        hz_col = np.stack(hz_col, axis=1) if bs else np.zeros((b - a, 0), dtype=int)
         m = (b - a) * nb
         with np.errstate(invalid="ignore"):
             out.append((np.repeat(at + k, nb), {
@@ -106,8 +109,8 @@ def _eq_seg(asm, res, at):
                                                 nan).ravel(),
                 "journal_theta_y_rad": np.where(tilt, R[a:b][:, [r[1] for r in rot]],
                                                 nan).ravel(),
-                "h_min_z_m": np.where(tilt, HZ[a:b][:, hz_col] if HZ.shape[1] else nan,
-                                      nan).ravel(),
+                "h_min_z_m": np.where(tilt, np.take_along_axis(HZ[a:b], hz_col, axis=1)
+                                      if HZ.shape[1] else nan, nan).ravel(),
                 "status": np.repeat(st[a:b], nb), "message": np.repeat(msg[a:b], nb)}))
             assert len(out[-1][0]) == m
     return out
