@@ -14,6 +14,7 @@ pads and on three-lobe bearings with the THD oil system (coarse grids), two spee
 import contextlib
 import dataclasses
 import io
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -160,3 +161,17 @@ def test_critical_speeds_on_thermal_films(tmp_path):
     assert crit is not None, note
     assert thermal_critical_speeds(dataclasses.replace(s, thermal=None), rng, 0.0, None) == \
         (None, "", None)
+
+
+def test_isothermal_sections_are_labelled_for_a_model_with_an_oil_system():
+    """With ``[thermal]`` the report's unbalance (4) and stability (5) sections are computed on
+    the isothermal films: the HTML says so there and points to the thermal ones; a model
+    without an oil system gets no label."""
+    from rotordyn.report.html import _isothermal_note
+
+    models = Path(__file__).parent / "data" / "models"
+    hot = rotordyn.System.from_toml(models / "compressor_plain_thermal.toml")
+    cold = rotordyn.System.from_toml(models / "compressor_plain.toml")
+    assert hot.thermal is not None and "Isothermal films" in _isothermal_note(hot)
+    assert "section 3c" in _isothermal_note(hot)
+    assert _isothermal_note(cold) == ""

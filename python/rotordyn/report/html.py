@@ -386,7 +386,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     parts.append(f"<h2>4. Unbalance response</h2><p>API 684 unbalance U = 6350 W/N g·mm = "
                  f"{u_kgm * 1e6:.4g} g·mm {html.escape(where)} (W = {s.mass_kg:.4g} kg, the "
                  f"rotor's static load; N = N_mc = {60 * rng.n_mc_hz:.0f} rpm); the speed grid "
-                 "is refined at every peak.</p>")
+                 "is refined at every peak." + _isothermal_note(s) + "</p>")
     if not u.stable.all():
         bad = u.speeds_hz[~u.stable]
         parts.append(f"<p class=\"fail\">The equilibrium is linearly unstable at {bad.size} of "
@@ -419,7 +419,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                  "<figure>" + svg(_log_dec_figure(c, ld, operating_speed_hz))
                  + f"<figcaption>Forward rotor modes below {window_hz:.4g} Hz (backward modes "
                  "and the undamped shaft modes far above the speed range are left out; |δ| < "
-                 "1e-6 is round-off).</figcaption></figure>")
+                 "1e-6 is round-off)." + _isothermal_note(s) + "</figcaption></figure>")
 
     # 5b. API 617 Level I with the stages' anticipated cross-coupling
     _progress(progress, "API 617 Level I")
@@ -470,6 +470,16 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     out.write_text(doc, encoding="utf-8")
     progress.done()
     return out
+
+
+def _isothermal_note(system) -> str:
+    """With an oil system (``[thermal]``), the label of a section computed on the isothermal
+    films ("" without one)."""
+    if getattr(system, "thermal", None) is None:
+        return ""
+    return (" <b>Isothermal films</b> (each bearing's own viscosity, not the oil system's "
+            "thermal equilibrium); on thermal films: section 3c, and "
+            "<code>rotordyn stability/unbalance --thermal</code>.")
 
 
 def _thermal_critical_html(crit, note: str, campbell, window_hz: float) -> str:
