@@ -288,3 +288,18 @@ def unbalances(field: str, value, n_stations: int) -> list[tuple[int, float, flo
                     finite(f"{field}[{i}].mass_kg_m", me),
                     finite(f"{field}[{i}].phase_deg", ph)))
     return out
+
+
+def arclength_steps(ds, ds_min, ds_max, max_points, direction) -> tuple:
+    """The step controls of a pseudo-arclength continuation: (ds, ds_min, ds_max,
+    max_points, direction) checked (0 < ds_min ≤ ds ≤ ds_max, 1 ≤ max_points ≤ 100 000,
+    direction ±1)."""
+    ds, ds_min, ds_max = positive("ds", ds), positive("ds_min", ds_min), positive("ds_max", ds_max)
+    if not ds_min <= ds <= ds_max:
+        raise InputError(f"ds: expected ds_min ≤ ds ≤ ds_max, got {ds_min:g} ≤ {ds:g} ≤ "
+                         f"{ds_max:g}")
+    max_points = integer("max_points", max_points, lo=1, hi=100_000)
+    direction = integer("direction", direction, lo=-1, hi=1)
+    if direction == 0:
+        raise InputError("direction: expected +1 or -1, got 0")
+    return ds, ds_min, ds_max, max_points, direction

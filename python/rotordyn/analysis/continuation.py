@@ -166,16 +166,8 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     if not start.ok:
         raise InputError(f"start: the orbit did not converge (status {start.status!r}: "
                          f"{start.message})")
-    ds = v.positive("ds", ds)
-    ds_min = v.positive("ds_min", ds_min)
-    ds_max = v.positive("ds_max", ds_max)
-    if not ds_min <= ds <= ds_max:
-        raise InputError(f"ds: expected ds_min ≤ ds ≤ ds_max, got {ds_min:g} ≤ {ds:g} ≤ "
-                         f"{ds_max:g}")
-    max_points = v.integer("max_points", max_points, lo=1, hi=100_000)
-    direction = v.integer("direction", direction, lo=-1, hi=1)
-    if direction == 0:
-        raise InputError("direction: expected +1 or -1, got 0")
+    ds, ds_min, ds_max, max_points, direction = v.arclength_steps(ds, ds_min, ds_max,
+                                                                  max_points, direction)
     if param_scale is None:
         param_scale = hi - lo
     param_scale = v.positive("param_scale", param_scale)

@@ -212,16 +212,8 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
         raise InputError(f"bounds: chamber_pressure_pa must be >= 0, got ({lo:g}, {hi:g})")
     if vary == "speed_hz" and lo <= 0 <= hi:
         raise InputError(f"bounds: a speed branch must not contain 0 Hz, got ({lo:g}, {hi:g})")
-    ds = v.positive("ds", ds)
-    ds_min = v.positive("ds_min", ds_min)
-    ds_max = v.positive("ds_max", ds_max)
-    if not ds_min <= ds <= ds_max:
-        raise InputError(f"ds: expected ds_min ≤ ds ≤ ds_max, got {ds_min:g} ≤ {ds:g} ≤ "
-                         f"{ds_max:g}")
-    max_points = v.integer("max_points", max_points, lo=1, hi=100_000)
-    direction = v.integer("direction", direction, lo=-1, hi=1)
-    if direction == 0:
-        raise InputError("direction: expected +1 or -1, got 0")
+    ds, ds_min, ds_max, max_points, direction = v.arclength_steps(ds, ds_min, ds_max,
+                                                                  max_points, direction)
     D_p = v.positive("param_scale", hi - lo if param_scale is None else param_scale)
     tol = v.in_range("tol", tol, 0.0, 1e-2, lo_open=True)
     max_iter = v.integer("max_iter", max_iter, lo=1, hi=1000)

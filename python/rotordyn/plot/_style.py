@@ -101,3 +101,17 @@ def legend_below(ax, handles, ncol: int = 3, **kw):
         return fig.legend(handles=handles, loc="outside lower center", ncol=ncol,
                           fontsize=kw.pop("fontsize", 6), **kw)
     return ax.legend(handles=handles, loc="best", fontsize=kw.pop("fontsize", 6), **kw)
+
+
+def stability_segments(ax, x, y, stable, what: str) -> list:
+    """A branch of a bifurcation diagram: segments between consecutive points solid where both
+    ends are stable, dashed elsewhere (tab:blue). Returns the two legend handles
+    ("stable <what>", "unstable <what>")."""
+    from matplotlib.lines import Line2D
+
+    for i in range(len(x) - 1):
+        st = bool(stable[i] and stable[i + 1])
+        ax.plot(x[i:i + 2], y[i:i + 2], "-" if st else "--", color="tab:blue", lw=1.2)
+    return [Line2D([], [], color="tab:blue", ls="-", label=f"stable {what}"),
+            Line2D([], [], color="tab:blue", ls="--", label=f"unstable {what}")]
+

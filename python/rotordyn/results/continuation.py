@@ -135,7 +135,7 @@ class BranchResult(Display):
         parts solid, unstable dashed, bifurcations marked. Returns the Axes."""
         from matplotlib.lines import Line2D
 
-        from rotordyn.plot._style import PAGE_IN, paper_style
+        from rotordyn.plot._style import PAGE_IN, paper_style, stability_segments
 
         u, sym, f, disp = UNITS[self.vary]
         marks = {"fold": ("o", "tab:red"), "period_doubling": ("s", "tab:purple"),
@@ -151,13 +151,8 @@ class BranchResult(Display):
                                      layout="constrained")
             p = self.parameter * f
             a = self.amplitude_m[:, bearing] * 1e6 if len(self) else np.zeros(0)
-            for i in range(len(self) - 1):
-                st = bool(self.stable[i] and self.stable[i + 1])
-                ax.plot(p[i:i + 2], a[i:i + 2], "-" if st else "--", color="tab:blue",
-                        lw=1.2)
+            handles = stability_segments(ax, p, a, self.stable, "orbits")
             ax.plot(p, a, ".", color="tab:blue", ms=3)
-            handles = [Line2D([], [], color="tab:blue", ls="-", label="stable orbits"),
-                       Line2D([], [], color="tab:blue", ls="--", label="unstable orbits")]
             seen = set()
             for b in self.bifurcations:
                 mk, col = marks[b["kind"]]

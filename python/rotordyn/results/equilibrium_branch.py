@@ -215,7 +215,7 @@ class EquilibriumBranchResult(Display):
         marked. Returns the Axes."""
         from matplotlib.lines import Line2D
 
-        from rotordyn.plot._style import PAGE_IN, paper_style
+        from rotordyn.plot._style import PAGE_IN, paper_style, stability_segments
 
         u, sym, f, disp = parameter_units(self.vary)
         marks = {"hopf": ("*", "k"), "fold": ("o", "tab:red"),
@@ -230,11 +230,7 @@ class EquilibriumBranchResult(Display):
                                      layout="constrained")
             p = self.parameter * f
             e = self.eccentricity_ratio[:, bearing] if len(self) else np.zeros(0)
-            for i in range(len(self) - 1):
-                st = bool(self.stable[i] and self.stable[i + 1])
-                ax.plot(p[i:i + 2], e[i:i + 2], "-" if st else "--", color="tab:blue", lw=1.2)
-            handles = [Line2D([], [], color="tab:blue", ls="-", label="stable equilibria"),
-                       Line2D([], [], color="tab:blue", ls="--", label="unstable equilibria")]
+            handles = stability_segments(ax, p, e, self.stable, "equilibria")
             seen = set()
             for b in self.bifurcations:
                 mk, col = marks[b["kind"]]
