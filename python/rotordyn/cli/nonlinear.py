@@ -1,6 +1,7 @@
 """Nonlinear dynamics on the command line: ``periodic-orbit`` (a limit cycle or an
-unbalance-forced orbit by shooting, with its Floquet multipliers) and ``continuation`` (its
-branch over p_c, speed or a_y by pseudo-arclength continuation; docs/nonlinear.md)."""
+unbalance-forced orbit by shooting or harmonic balance, with its Floquet multipliers) and
+``continuation`` (its branch over p_c, speed or a_y by pseudo-arclength continuation;
+docs/nonlinear.md)."""
 
 from __future__ import annotations
 
@@ -18,9 +19,10 @@ from rotordyn.model import builtin as models
 def register(sub) -> None:
     """The subcommands of this module on the ``rotordyn`` parser's subparsers ``sub``."""
     s = sub.add_parser("periodic-orbit",
-                       help="limit cycle or unbalance-forced orbit by shooting, with its "
-                            "Floquet multipliers")
+                       help="limit cycle or unbalance-forced orbit by shooting or harmonic "
+                            "balance, with its Floquet multipliers")
     _orbit_arguments(s)
+    _hb_arguments(s)
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="write the orbit and the multipliers in the unit circle")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -71,15 +73,74 @@ def _orbit_arguments(s) -> None:
     s.add_argument("--subharmonic", type=int, default=1, metavar="K",
                    help="forced orbits: period K revolutions (default 1)")
     s.add_argument("--settle-s", type=float, default=None, metavar="S",
-                   help="simulated seconds of transient before shooting, from the "
+                   help="simulated seconds of transient before the orbit solve, from the "
                         "equilibrium disturbed by --disturbance-c (default: 1.0 s for a limit "
-                        "cycle, 0 for a forced orbit: start at the equilibrium)")
+                        "cycle by shooting, else 0: start at the equilibrium, for a limit cycle "
+                        "by harmonic balance displaced along its least-damped whirl mode)")
     s.add_argument("--disturbance-c", type=float, default=0.1, metavar="F",
                    help="vertical disturbance of the active journal, fraction of its "
                         "clearance (default 0.1)")
-    s.add_argument("--rtol", type=float, default=1e-8, help="CVODES relative tolerance")
+    s.add_argument("--rtol", type=float, default=1e-8,
+                   help="CVODES relative tolerance (default 1e-8)")
     s.add_argument("--tol", type=float, default=1e-6,
-                   help="shooting residual tolerance, fraction of the smallest clearance")
+                   help="residual tolerance, fraction of the smallest clearance (default "
+                        "1e-6; harmonic balance: the scaled AFT residual)")
+
+
+# The harmonic-balance flags: (argparse dest, flag, default); None in args = not given.
+HB_FLAGS = (("harmonics", "--harmonics", 8), ("samples", "--samples", None),
+            ("floquet", "--floquet", "samples"), ("start_amplitude_c", "--start-amplitude-c", 0.3))
+
+
+def _hb_arguments(s) -> None:
+    s.add_argument("--method", choices=["shooting", "harmonic_balance"], default="shooting",
+                   help="shooting (default): Newton on the CVODES flow over one period; "
+                        "harmonic_balance: Newton on the Fourier coefficients of the orbit "
+                        "with the film forces at --samples points per period (AFT; "
+                        "docs/nonlinear.md)")
+    s.add_argument("--harmonics", type=int, default=None, metavar="H",
+                   help="harmonic balance: harmonics H of the orbit, 1..1000 (default 8)")
+    s.add_argument("--samples", type=int, default=None, metavar="M",
+                   help="harmonic balance: time samples per period M >= 2H + 1, at most "
+                        "100000 (default 4H)")
+    s.add_argument("--floquet", choices=["samples", "flow", "none"], default=None,
+                   help="harmonic balance: the Floquet multipliers from the M samples' "
+                        "linearisations (samples, default: Magnus, no film solve), from one "
+                        "CVODES sensitivity flow at --rtol (flow), or none")
+    s.add_argument("--start-amplitude-c", type=float, default=None, metavar="F",
+                   help="harmonic balance, autonomous cycle started at the equilibrium "
+                        "(--settle-s 0, the default with harmonic balance): the journal's "
+                        "amplitude along the least-damped whirl mode, fraction of its "
+                        "clearance in [1e-06, 0.99] (default 0.3)")
+
+
+def _hb_options(args) -> dict:
+    """The periodic_orbit keywords of --method (the HB flags checked, defaults filled in)."""
+    given = [flag for dest, flag, _ in HB_FLAGS if getattr(args, dest) is not None]
+    if args.method != "harmonic_balance":
+        if given:
+            raise InputError(f"{given[0]}: applies only to --method harmonic_balance")
+        return {"method": "shooting"}
+    opt = {dest: (default if getattr(args, dest) is None else getattr(args, dest))
+           for dest, _, default in HB_FLAGS}
+    h = _int_in("--harmonics", opt["harmonics"], 1, 1000)
+    m = opt["samples"]
+    if m is not None:
+        m = _int_in("--samples", m, 2 * h + 1, 100_000, f" (2H + 1 with --harmonics {h})")
+    if args.start_amplitude_c is not None:
+        if args.kind != "autonomous" or (args.settle_s or 0.0) > 0:
+            raise InputError("--start-amplitude-c: applies only to an autonomous cycle "
+                             "started at the equilibrium (--kind autonomous, --settle-s 0)")
+    amp = v.in_range("--start-amplitude-c", opt["start_amplitude_c"], 1e-6, 0.99)
+    return {"method": "harmonic_balance", "harmonics": h, "time_points": m,
+            "floquet": opt["floquet"], "start_amplitude_c": amp}
+
+
+def _int_in(flag: str, value: int, lo: int, hi: int, why: str = "") -> int:
+    """An integer flag in lo..hi, the error naming the flag and the whole range."""
+    if not lo <= value <= hi:
+        raise InputError(f"{flag}: expected an integer in {lo}{why}..{hi}, got {value}")
+    return value
 
 
 def _unbalances(texts) -> list:
@@ -96,9 +157,10 @@ def _unbalances(texts) -> list:
 
 def _settled_start(args, s, ub):
     """The settling transient of --settle-s (None: start at the equilibrium), or False when it
-    failed (printed)."""
+    failed (printed). Default: 1 s for a limit cycle by shooting, else 0."""
+    hb = getattr(args, "method", "shooting") == "harmonic_balance"
     settle = args.settle_s if args.settle_s is not None else (
-        1.0 if args.kind == "autonomous" else 0.0)
+        1.0 if args.kind == "autonomous" and not hb else 0.0)
     v.non_negative("--settle-s", settle)
     v.finite("--disturbance-c", args.disturbance_c)
     start = None
@@ -118,6 +180,7 @@ def _settled_start(args, s, ub):
 
 def _cmd_periodic_orbit(args) -> int:
     check_figure(args.plot)
+    hb = _hb_options(args)
     s = models.load(args.model)
     ub = _unbalances(args.unbalance)
     start = _settled_start(args, s, ub)
@@ -125,11 +188,13 @@ def _cmd_periodic_orbit(args) -> int:
         return 1
     res = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
                                   kind=args.kind, start=start, unbalances=ub,
-                                  subharmonic=args.subharmonic, rtol=args.rtol, tol=args.tol)
+                                  subharmonic=args.subharmonic, rtol=args.rtol, tol=args.tol,
+                                  **hb)
     if args.json:
         mu = np.asarray(res.multipliers, dtype=complex)
         print(json_text({
             "status": res.status, "message": res.message, "kind": res.kind,
+            **_method_info(hb, res, start),
             "speed_hz": res.speed_hz, "chamber_pressure_pa": res.chamber_pressure_pa,
             "period_s": res.period_s if res.ok else None,
             "amplitude_m": res.amplitude() if res.ok and res.journal_x_m.shape[1] else None,
@@ -140,11 +205,28 @@ def _cmd_periodic_orbit(args) -> int:
         }))
     else:
         print(repr(res))
+        info = _method_info(hb, res, start)
+        settings = ", ".join(f"{k} = {x}" for k, x in info.items() if k != "method")
+        print(f"method: {info['method']}" + (f" ({settings})" if settings else ""))
         if res.ok:
             print(table_text(res.multipliers_frame().head(8)))
     if args.plot and res.ok:
         save_figure(res.plot(), args.plot, args.dpi)
     return 0 if res.ok else 1
+
+
+def _method_info(hb: dict, res, start) -> dict:
+    """The method and its settings for the output: M as used (the result's, else the
+    default 4H), the start amplitude only where it was used (a cycle from the equilibrium)."""
+    if hb["method"] != "harmonic_balance":
+        return {"method": "shooting"}
+    info = {"method": "harmonic_balance", "harmonics": hb["harmonics"],
+            "time_points": int(res.stats.get("time_points",
+                                             hb["time_points"] or 4 * hb["harmonics"])),
+            "floquet": hb["floquet"]}
+    if start is None and res.kind == "autonomous":
+        info["start_amplitude_c"] = hb["start_amplitude_c"]
+    return info
 
 
 def _cmd_continuation(args) -> int:
