@@ -175,6 +175,7 @@ def test_isothermal_sections_are_labelled_for_a_model_with_an_oil_system():
     cold = rotordyn.System.from_toml(models / "compressor_plain.toml")
     assert hot.thermal is not None and "Isothermal films" in _isothermal_note(hot)
     assert "section 3c" in _isothermal_note(hot)
+    assert "not evaluated in this report" in _isothermal_note(hot, thermal_shown=False)
     assert _isothermal_note(cold) == ""
 
 
@@ -230,7 +231,7 @@ def test_unbalance_and_stability_sections_on_thermal_films(html_reports):
     assert "unbalance response at station 3, thermal films" in page  # the Bode title
     assert "unbalance response at station 3, isothermal films" in page
     assert "log decrement of the forward rotor modes, thermal films" in page
-    assert "sections 4b and 5a below" in page  # the isothermal label points to them
+    assert "sections 4b and 5a (from section 3c" in page  # the isothermal label points there
     checks = _cells(page, "Overall")
     assert checks[0][:2] == ["check", "films"]
     films = {(r[0], r[1]) for r in checks[1:]}

@@ -11,8 +11,9 @@ SVG, no external resources) in the spirit of an API 684 lateral analysis:
    separation margins and the API 617 amplitude limit;
 5. stability: the logarithmic decrement of the forward rotor modes in the frequency window,
    screened against δ > 0.1; with an oil system (``[thermal]``) 3c, 4b and 5a give the same on
-   thermal films (:mod:`rotordyn.report.thermal_dynamics`, the checks on both); 5b. API 617 Level I with the anticipated cross-coupling Q_A of
-   the model's stages (:mod:`rotordyn.report.level1`; "not evaluated (no stage data)" without);
+   thermal films (:mod:`rotordyn.report.thermal_dynamics`, the checks on both); 5b. API 617
+   Level I with the anticipated cross-coupling Q_A of the model's stages
+   (:mod:`rotordyn.report.level1`; "not evaluated (no stage data)" without);
 6. for an active journal bearing, the stability map over (a_y, p_c);
 7. the text report (the paper's checks with their stated tolerances).
 
@@ -398,7 +399,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     parts.append(f"<h2>4. Unbalance response</h2><p>API 684 unbalance U = 6350 W/N g·mm = "
                  f"{u_kgm * 1e6:.4g} g·mm {html.escape(where)} (W = {s.mass_kg:.4g} kg, the "
                  f"rotor's static load; N = N_mc = {60 * rng.n_mc_hz:.0f} rpm); the speed grid "
-                 "is refined at every peak." + _isothermal_note(s) + "</p>")
+                 "is refined at every peak." + _isothermal_note(s, tu is not None) + "</p>")
     iso = thermal_dyn.ISOTHERMAL if s.thermal is not None else ""
     checks.films = iso
     parts.append(thermal_dyn.unstable_html(u, checks))
@@ -421,7 +422,8 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                      "log decrement of the forward rotor modes" + (f", {iso}" if iso else ""))))
                  + f"<figcaption>Forward rotor modes below {window_hz:.4g} Hz (backward modes "
                  "and the undamped shaft modes far above the speed range are left out; |δ| < "
-                 "1e-6 is round-off)." + _isothermal_note(s) + "</figcaption></figure>")
+                 "1e-6 is round-off)." + _isothermal_note(s, tc is not None)
+                 + "</figcaption></figure>")
     if tc is not None:  # the same on thermal films: section 3c's Campbell diagram
         parts.append(thermal_dyn.stability_html(tc, checks, window_hz, operating_speed_hz, svg,
                                                 _log_dec_figure, _table, c, ld))
@@ -478,15 +480,18 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     return out
 
 
-def _isothermal_note(system) -> str:
+def _isothermal_note(system, thermal_shown: bool = True) -> str:
     """With an oil system (``[thermal]``), the label of a section computed on the isothermal
-    films ("" without one)."""
+    films ("" without one); ``thermal_shown``: sections 4b and 5a give the thermal films' (else
+    section 3c says why not)."""
     if getattr(system, "thermal", None) is None:
         return ""
+    where = ("sections 4b and 5a (from section 3c's results)" if thermal_shown else
+             "not evaluated in this report (section 3c says why)")
     return (" <b>Isothermal films</b> (each bearing's own viscosity, not the oil system's "
             "thermal equilibrium); the same on thermal films (each speed at its own thermal "
-            "equilibrium, field frozen): sections 4b and 5a below (from section 3c's results), "
-            "and <code>rotordyn stability/unbalance --thermal</code>.")
+            f"equilibrium, field frozen): {where}, and "
+            "<code>rotordyn stability/unbalance --thermal</code>.")
 
 
 def _thermal_critical_html(crit, note: str, campbell, window_hz: float) -> str:
@@ -501,6 +506,7 @@ def _thermal_critical_html(crit, note: str, campbell, window_hz: float) -> str:
     ax.set_ylim(0, window_hz)
     rows = [tuple(html.escape(str(x)) for x in r) for r in critical_rows(crit)]
     return (head + f"<p>{html.escape(note)} (docs/film-physics.md); sections 3, 4 and 5: the "
-            "model's isothermal films; 4b and 5a: these thermal films.</p><figure>" + svg(ax.figure) + "</figure>"
+            "model's isothermal films; 4b and 5a: these thermal films.</p><figure>"
+            + svg(ax.figure) + "</figure>"
             + (_table(CRITICAL_HEADER, rows) if rows else
                "<p>No critical speed in the speed range on thermal films.</p>"))
