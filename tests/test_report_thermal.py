@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import pytest
 
 import rotordyn
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
@@ -174,4 +175,104 @@ def test_isothermal_sections_are_labelled_for_a_model_with_an_oil_system():
     cold = rotordyn.System.from_toml(models / "compressor_plain.toml")
     assert hot.thermal is not None and "Isothermal films" in _isothermal_note(hot)
     assert "section 3c" in _isothermal_note(hot)
+    assert "not evaluated in this report" in _isothermal_note(hot, thermal_shown=False)
     assert _isothermal_note(cold) == ""
+
+
+def _coarse(name):
+    """A compressor model of tests/data/models on a coarse film grid (36 x 8)."""
+    s = rotordyn.System.from_toml(Path(__file__).parent / "data" / "models" / f"{name}.toml")
+    return dataclasses.replace(s, bearings=tuple(
+        dataclasses.replace(b, n_circ=36, n_axial=8) for b in s.bearings))
+
+
+HTML_SPEEDS = np.arange(100.0, 201.0, 10.0)
+
+
+@pytest.fixture(scope="module")
+def html_reports(tmp_path_factory):
+    """The HTML report of the compressor on plain bearings with its oil system and without it
+    (coarse grid, 100–200 Hz in 10 Hz steps): {name: (system, page)}."""
+    from rotordyn.report.html import write_html
+
+    out = {}
+    for name in ("compressor_plain_thermal", "compressor_plain"):
+        d = tmp_path_factory.mktemp(name)
+        s = _coarse(name)
+        s.to_toml(d / "m.toml")
+        page = write_html(str(d / "m.toml"), d / "r.html", speeds_hz=HTML_SPEEDS,
+                          progress=False)
+        out[name] = (s, page.read_text(encoding="utf-8"))
+    return out
+
+
+def _cells(page: str, start: str) -> list[list[str]]:
+    """The cells of the first table after ``start``."""
+    import html
+    import re
+
+    i = page.index("<table>", page.index(start))
+    rows = re.findall(r"<tr>(.*?)</tr>", page[i:page.index("</table>", i)])
+    return [[html.unescape(re.sub("<.*?>", "", c)) for c in re.findall(r"<t[dh]>(.*?)</t[dh]>",
+                                                                      r)] for r in rows]
+
+
+def test_unbalance_and_stability_sections_on_thermal_films(html_reports):
+    """Sections 4b and 5a: with [thermal] the unbalance response and the stability screen are
+    shown on thermal films beside the isothermal ones (section 3c's results, not recomputed),
+    the checks table names the films of each row and has the API checks on both; without an
+    oil system none of it. A thermal δ shown equals rotordyn.campbell(thermal=True) at that
+    speed, screened as the report does (same calls: the printed 4 digits)."""
+    from rotordyn.report.criteria import Checks, stability_screen
+
+    s, page = html_reports["compressor_plain_thermal"]
+    assert "<h2>4b. Unbalance response on thermal films</h2>" in page
+    assert "<h2>5a. Stability on thermal films</h2>" in page
+    assert "unbalance response at station 3, thermal films" in page  # the Bode title
+    assert "unbalance response at station 3, isothermal films" in page
+    assert "log decrement of the forward rotor modes, thermal films" in page
+    assert "sections 4b and 5a (from section 3c" in page  # the isothermal label points there
+    checks = _cells(page, "Overall")
+    assert checks[0][:2] == ["check", "films"]
+    films = {(r[0], r[1]) for r in checks[1:]}
+    for name in ("no growing forward mode over the speed range",
+                 "orbit against the bearing clearance (station 1)"):
+        assert (name, "isothermal films") in films and (name, "thermal films") in films
+    assert ("thermal equilibrium at every speed of the Campbell diagram",
+            "thermal films") in films
+    rows = _cells(page, "<h2>5a.")
+    assert rows[0][-1] == "thermal films: δ" and len(rows) == 1 + HTML_SPEEDS.size
+    c = rotordyn.campbell(s, HTML_SPEEDS, 0.0, None, thermal=True)
+    ld = stability_screen(Checks(), c, 1.5 * HTML_SPEEDS[-1], None)
+    for r in rows[1:]:
+        i = int(np.flatnonzero(HTML_SPEEDS == float(r[0]))[0])
+        assert float(r[-1]) == float(f"{np.nanmin(ld[i]) + 0.0:.4g}")
+        assert float(r[-2]) == float(f"{c.frequencies_hz[i, np.nanargmin(ld[i])]:.4g}")
+    _, cold = html_reports["compressor_plain"]
+    assert "thermal films" not in cold and "Isothermal films" not in cold
+    assert _cells(cold, "Overall")[0][:2] == ["check", "criterion"]
+
+
+def test_speeds_without_a_thermal_equilibrium_are_marked_not_plotted():
+    """A speed whose thermal equilibrium failed (its ``thermal`` entry None or not converged)
+    is listed and written "no thermal equilibrium" in the log decrement table, never a number;
+    the check says not resolved."""
+    from types import SimpleNamespace
+
+    from rotordyn.report.criteria import NOT_RESOLVED, Checks
+    from rotordyn.report.thermal_dynamics import (equilibrium_check, failed_text,
+                                                  log_dec_rows, no_thermal_equilibrium)
+
+    sp = np.array([100.0, 110.0, 120.0])
+    ok = SimpleNamespace(status="ok")
+    c = SimpleNamespace(speeds_hz=sp, thermal=(ok, None, SimpleNamespace(status="no_equilibrium")),
+                        frequencies_hz=np.array([[50.0], [np.nan], [np.nan]]))
+    ld = np.array([[0.3], [np.nan], [np.nan]])
+    np.testing.assert_array_equal(no_thermal_equilibrium(c), [110.0, 120.0])
+    rows = log_dec_rows(c, ld, c, ld)
+    assert rows[0] == ("100", "50", "0.3", "50", "0.3")
+    assert rows[1][3:] == rows[2][3:] == ("no thermal equilibrium",) * 2
+    assert "110, 120 Hz" in failed_text(no_thermal_equilibrium(c))
+    checks = Checks()
+    equilibrium_check(checks, c, "the Campbell diagram")
+    assert checks.rows[0][3] == NOT_RESOLVED and "2 of 3 speeds failed" in checks.rows[0][2]

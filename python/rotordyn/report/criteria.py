@@ -134,13 +134,18 @@ def api_unbalance(system, n_mc_hz: float, speed_hz: float, pc: float, ay):
 
 class Checks:
     """The checks: name, criterion, value, verdict (True PASS, False FAIL, None no criterion
-    applies, NOT_RESOLVED a value that cannot be computed)."""
+    applies, NOT_RESOLVED a value that cannot be computed). ``films``: the physics the rows
+    added next are computed on ("isothermal films", "thermal films"; "" without an oil
+    system), kept per row in ``films_of``."""
 
     def __init__(self):
         self.rows: list[tuple[str, str, str, object]] = []
+        self.films_of: list[str] = []
+        self.films = ""
 
     def add(self, name: str, criterion: str, value: str, verdict) -> None:
         self.rows.append((name, criterion, value, verdict))
+        self.films_of.append(self.films)
 
     def overall(self) -> str:
         """FAIL if any check fails, else NOT RESOLVED if any is, else PASS (a check that was not

@@ -10,8 +10,10 @@ SVG, no external resources) in the spirit of an API 684 lateral analysis:
 4. unbalance response (API 684 unbalance U = 6350 W/N g·mm) with amplification factors,
    separation margins and the API 617 amplitude limit;
 5. stability: the logarithmic decrement of the forward rotor modes in the frequency window,
-   screened against δ > 0.1; 5b. API 617 Level I with the anticipated cross-coupling Q_A of
-   the model's stages (:mod:`rotordyn.report.level1`; "not evaluated (no stage data)" without);
+   screened against δ > 0.1; with an oil system (``[thermal]``) 3c, 4b and 5a give the same on
+   thermal films (:mod:`rotordyn.report.thermal_dynamics`, the checks on both); 5b. API 617
+   Level I with the anticipated cross-coupling Q_A of the model's stages
+   (:mod:`rotordyn.report.level1`; "not evaluated (no stage data)" without);
 6. for an active journal bearing, the stability map over (a_y, p_c);
 7. the text report (the paper's checks with their stated tolerances).
 
@@ -42,9 +44,9 @@ from rotordyn.report.sections import (COEFFICIENT_HEADER, CRITICAL_HEADER, MERGE
                                       SOURCE_LEAST_DAMPED, critical_rows,
                                       critical_speed_table, critical_text_lines,
                                       not_resonance_note, shape_source, shapes_for,
-                                      thermal_critical_speeds, thermal_critical_text_lines)
-from rotordyn.report.criteria import (NOT_RESOLVED, SCREEN_LOG_DEC, Checks, amplitude_checks,
-                                      critical_speed_map, separation_checks,
+                                      thermal_critical_text_lines, thermal_results)
+from rotordyn.report import thermal_dynamics as thermal_dyn
+from rotordyn.report.criteria import (NOT_RESOLVED, SCREEN_LOG_DEC, Checks, critical_speed_map,
                                       speed_range, stability_screen)
 
 
@@ -79,9 +81,13 @@ def _verdict(ok) -> str:
 
 
 def _checks_html(checks: Checks) -> str:
-    return _table(["check", "criterion", "value", "result"],
-                  [(html.escape(n), html.escape(c), html.escape(v), _verdict(ok))
-                   for n, c, v, ok in checks.rows])
+    """The checks table; with an oil system a column "films" says which physics each row is
+    computed on (isothermal or thermal films)."""
+    films = any(checks.films_of)
+    return _table(["check"] + ["films"] * films + ["criterion", "value", "result"],
+                  [(html.escape(n),) + (html.escape(f or "–"),) * films
+                   + (html.escape(c), html.escape(v), _verdict(ok))
+                   for (n, c, v, ok), f in zip(checks.rows, checks.films_of)])
 
 
 def _critical_map_figure(ks, f, stations, op):
@@ -108,7 +114,10 @@ def _critical_map_figure(ks, f, stations, op):
     return fig
 
 
-def _log_dec_figure(c, ld, op_range):
+def _log_dec_figure(c, ld, op_range, title="log decrement of the forward rotor modes",
+                    failed=()):
+    """δ of the screened forward rotor modes ``ld`` over speed; ``failed``: speeds (Hz) without
+    a thermal equilibrium, marked × on the speed axis."""
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
@@ -142,7 +151,11 @@ def _log_dec_figure(c, ld, op_range):
         if np.isfinite(ld).any():
             ax.set_ylim(min(-0.05, 1.1 * float(np.nanmin(ld))),
                         max(0.3, 1.05 * float(np.nanmax(ld))))
-        ax.set_title("log decrement of the forward rotor modes")
+        ax.set_title(title)
+        if len(failed):
+            h.append(ax.plot(failed, np.zeros(len(failed)), "x", color="tab:red", ms=5,
+                             mew=1.2, clip_on=False, transform=ax.get_xaxis_transform(),
+                             label="no thermal equilibrium (not computed)")[0])
         ax.legend(handles=h, loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=6)
     return fig
 
@@ -207,7 +220,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     import matplotlib
 
     matplotlib.use("Agg")
-    from rotordyn.plot import bode, rotor_drawing, stability_map_grid
+    from rotordyn.plot import rotor_drawing, stability_map_grid
     from rotordyn.plot.frequency import campbell_diagram
 
     s = models.load(model)
@@ -371,7 +384,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     # 3c. critical speeds with every speed at its own thermal equilibrium (an oil system)
     if s.thermal is not None:
         _progress(progress, "Campbell and unbalance response on thermal films")
-    tcrit, tnote, tc = thermal_critical_speeds(s, rng, pc, ay, operating_speed_hz)
+    tcrit, tnote, tc, tu = thermal_results(s, rng, pc, ay, operating_speed_hz)
     if tcrit is not None and figure_dir is not None:
         tcrit.to_csv(Path(figure_dir) / "critical_speeds_thermal.csv", index=False)
     parts.append(_thermal_critical_html(tcrit, tnote, tc, window_hz))
@@ -386,40 +399,35 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     parts.append(f"<h2>4. Unbalance response</h2><p>API 684 unbalance U = 6350 W/N g·mm = "
                  f"{u_kgm * 1e6:.4g} g·mm {html.escape(where)} (W = {s.mass_kg:.4g} kg, the "
                  f"rotor's static load; N = N_mc = {60 * rng.n_mc_hz:.0f} rpm); the speed grid "
-                 "is refined at every peak." + _isothermal_note(s) + "</p>")
-    if not u.stable.all():
-        bad = u.speeds_hz[~u.stable]
-        parts.append(f"<p class=\"fail\">The equilibrium is linearly unstable at {bad.size} of "
-                     f"the speeds ({bad[0]:.4g}–{bad[-1]:.4g} Hz): there the response is not a "
-                     "steady orbit and is left out of the amplitude checks.</p>")
-        checks.add("linear stability over the speed range", "every speed below the threshold "
-                   "of instability", f"unstable from {bad[0]:.4g} Hz", False)
+                 "is refined at every peak." + _isothermal_note(s, tu is not None) + "</p>")
+    iso = thermal_dyn.ISOTHERMAL if s.thermal is not None else ""
+    checks.films = iso
+    parts.append(thermal_dyn.unstable_html(u, checks))
     clear = {b.station: getattr(b, "clearance_m", None) for b in s.bearings}
     for st in outs:
-        a1, _ = bode(u, station=st)
-        parts.append(f"<figure>{svg(a1.figure)}<figcaption>Station {st}.</figcaption></figure>")
-        rows = separation_checks(checks, u, st)
-        if rows:
-            parts.append(_table(["N_c (Hz)", "peak (µm)", "AF", "SM (%)", "required (%)",
-                                 "result"],
-                                [(f"{nc:.4g}", f"{pk * 1e6:.3g}", html.escape(aft),
-                                  f"{sm:.1f}" if np.isfinite(sm) else "n/a",
-                                  ("none" if req == 0 else f"{req:.1f}") if np.isfinite(req)
-                                  else "n/a", _verdict(v)) for nc, pk, aft, sm, req, v in rows]))
-        else:
-            parts.append(f"<p>Station {st}: no resonance peak in the speed range.</p>")
-        amplitude_checks(checks, u, st, rng.n_mc_hz, clear.get(st))
+        parts += thermal_dyn.station_html(u, checks, st, rng.n_mc_hz, clear.get(st), svg,
+                                          _table, _verdict, iso)
+    if tu is not None:  # the same on thermal films: section 3c's response
+        parts.append(thermal_dyn.response_html(tu, checks, outs, rng.n_mc_hz, clear, svg,
+                                               _table, _verdict))
     parts.append("<p>AF: amplification factor N_c/(N₂ − N₁) by the half-power method (≤: a "
                  "bound, one half-power speed outside the range); SM: separation margin from "
                  "the operating speed range.</p>")
 
     # 5. stability over speed
+    checks.films = iso
     ld = stability_screen(checks, c, window_hz, operating_speed_hz)
     parts.append("<h2>5. Stability: logarithmic decrement of the forward rotor modes</h2>"
-                 "<figure>" + svg(_log_dec_figure(c, ld, operating_speed_hz))
+                 "<figure>" + svg(_log_dec_figure(c, ld, operating_speed_hz, (
+                     "log decrement of the forward rotor modes" + (f", {iso}" if iso else ""))))
                  + f"<figcaption>Forward rotor modes below {window_hz:.4g} Hz (backward modes "
                  "and the undamped shaft modes far above the speed range are left out; |δ| < "
-                 "1e-6 is round-off)." + _isothermal_note(s) + "</figcaption></figure>")
+                 "1e-6 is round-off)." + _isothermal_note(s, tc is not None)
+                 + "</figcaption></figure>")
+    if tc is not None:  # the same on thermal films: section 3c's Campbell diagram
+        parts.append(thermal_dyn.stability_html(tc, checks, window_hz, operating_speed_hz, svg,
+                                                _log_dec_figure, _table, c, ld))
+    checks.films = iso  # Level I and the active bearing's map: isothermal films
 
     # 5b. API 617 Level I with the stages' anticipated cross-coupling
     _progress(progress, "API 617 Level I")
@@ -472,13 +480,17 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     return out
 
 
-def _isothermal_note(system) -> str:
+def _isothermal_note(system, thermal_shown: bool = True) -> str:
     """With an oil system (``[thermal]``), the label of a section computed on the isothermal
-    films ("" without one)."""
+    films ("" without one); ``thermal_shown``: sections 4b and 5a give the thermal films' (else
+    section 3c says why not)."""
     if getattr(system, "thermal", None) is None:
         return ""
+    where = ("sections 4b and 5a (from section 3c's results)" if thermal_shown else
+             "not evaluated in this report (section 3c says why)")
     return (" <b>Isothermal films</b> (each bearing's own viscosity, not the oil system's "
-            "thermal equilibrium); on thermal films: section 3c, and "
+            "thermal equilibrium); the same on thermal films (each speed at its own thermal "
+            f"equilibrium, field frozen): {where}, and "
             "<code>rotordyn stability/unbalance --thermal</code>.")
 
 
@@ -493,7 +505,8 @@ def _thermal_critical_html(crit, note: str, campbell, window_hz: float) -> str:
     ax = campbell_diagram(campbell, title="Campbell diagram, thermal films")
     ax.set_ylim(0, window_hz)
     rows = [tuple(html.escape(str(x)) for x in r) for r in critical_rows(crit)]
-    return (head + f"<p>{html.escape(note)} (docs/film-physics.md); sections 3 and 4: the "
-            "model's isothermal films.</p><figure>" + svg(ax.figure) + "</figure>"
+    return (head + f"<p>{html.escape(note)} (docs/film-physics.md); sections 3, 4 and 5: the "
+            "model's isothermal films; 4b and 5a: these thermal films.</p><figure>"
+            + svg(ax.figure) + "</figure>"
             + (_table(CRITICAL_HEADER, rows) if rows else
                "<p>No critical speed in the speed range on thermal films.</p>"))

@@ -318,33 +318,43 @@ def api_response(system, speeds_hz, n_mc_hz: float, chamber_pressure_pa: float, 
 
 def thermal_critical_speeds(system, rng, chamber_pressure_pa: float, config_ay_m,
                             operating_speed_hz=None):
+    """(table, note, CampbellResult) of :func:`thermal_results` (its unbalance response left
+    out)."""
+    return thermal_results(system, rng, chamber_pressure_pa, config_ay_m,
+                           operating_speed_hz)[:3]
+
+
+def thermal_results(system, rng, chamber_pressure_pa: float, config_ay_m,
+                    operating_speed_hz=None):
     """The critical speeds (:func:`critical_speed_table`) of the damped Campbell diagram and
     the API unbalance response with every speed at its own thermal equilibrium of the model's
     ``[thermal]`` (field frozen for K_H, D_H; docs/film-physics.md, "Dynamics at each point's
     own thermal equilibrium"), over the positive analysed speeds. Returns (table, note, the
-    CampbellResult): (None, "", None) without an oil system or bearing elements, (None, why,
-    None) when the thermal model does not apply to the bearings."""
+    CampbellResult, the UnbalanceResult) — the report's sections 3c, 4b and 5a: (None, "",
+    None, None) without an oil system or bearing elements, (None, why, None, None) when the
+    thermal model does not apply to the bearings."""
     from rotordyn.errors import InputError
 
     if getattr(system, "thermal", None) is None or not system.bearings:
-        return None, "", None
+        return None, "", None, None
     sp = np.asarray(rng.speeds_hz, dtype=float)
     sp = sp[sp > 0]  # a thermal equilibrium needs a turning journal
     if sp.size < 2:
-        return None, "not evaluated: fewer than two positive speeds in the analysed range", None
+        return (None, "not evaluated: fewer than two positive speeds in the analysed range",
+                None, None)
     try:  # InputError: the model's thermal model does not apply to its bearings
         c = analysis.campbell(system, sp, chamber_pressure_pa, config_ay_m, thermal=True)
         u, *_ = api_response(system, sp, rng.n_mc_hz, chamber_pressure_pa, config_ay_m,
                              operating_speed_hz, thermal=True)
     except InputError as exc:
-        return None, f"not evaluated: {exc}", None
+        return None, f"not evaluated: {exc}", None, None
     bad = int(np.sum([s not in ("ok", "contact") for s in c.point_status]))
     note = (f"thermal model {system.thermal.model}, oil supplied at "
             f"{system.thermal.supply_temperature_c:g} °C; each of {sp.size} speeds at its own "
             "thermal equilibrium, the temperature field frozen"
             + (f"; {bad} speed(s) without a thermal equilibrium (not linearised)" if bad
                else ""))
-    return critical_speed_table(c, u), note, c
+    return critical_speed_table(c, u), note, c, u
 
 
 def thermal_critical_text_lines(crit, note: str) -> list[str]:
@@ -464,4 +474,5 @@ __all__ = ["COEFFICIENT_HEADER", "CRITICAL_COLUMNS", "CRITICAL_HEADER", "Critica
            "api_response", "coefficient_rows", "coefficient_speeds", "critical_mode_shapes",
            "coefficient_text_lines", "critical_rows", "critical_speed_table",
            "critical_text_lines", "not_resonance_note", "shape_source", "shapes_for",
-           "thermal_critical_speeds", "thermal_critical_text_lines", "write_text_sections"]
+           "thermal_critical_speeds", "thermal_critical_text_lines", "thermal_results",
+           "write_text_sections"]
