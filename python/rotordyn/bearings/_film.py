@@ -93,16 +93,23 @@ def check_film_fields(b, where: str, n_stations: int | None) -> None:
         plausibility.housing_offset(f"{where}.config_ay_m", b.config_ay_m, b.clearance_m)
 
 
-def check_tilt_fields(b, where: str) -> None:
-    """``tilt`` (bool) and the housing misalignment (config_theta_x_rad, config_theta_y_rad:
-    finite, only with tilt, and not closing the film at an edge for a journal on the shaft
-    line: sqrt(θx² + θy²)·L/2 < c)."""
+def tilt_fields(b, where: str) -> tuple[float, float]:
+    """``tilt`` (bool) and the housing misalignment (θx, θy) in rad: finite, and only with
+    tilt. Returns (θx, θy)."""
     v.boolean(f"{where}.tilt", b.tilt)
     tx = v.finite(f"{where}.config_theta_x_rad", b.config_theta_x_rad)
     ty = v.finite(f"{where}.config_theta_y_rad", b.config_theta_y_rad)
     if (tx or ty) and not b.tilt:
         raise InputError(f"{where}.config_theta_x_rad, config_theta_y_rad: a misalignment "
                          "needs the film coupled to the journal's rotations (tilt = true)")
+    return tx, ty
+
+
+def check_tilt_fields(b, where: str) -> None:
+    """``tilt`` (bool) and the housing misalignment (config_theta_x_rad, config_theta_y_rad:
+    finite, only with tilt, and not closing the film at an edge for a journal on the shaft
+    line: sqrt(θx² + θy²)·L/2 < c)."""
+    tx, ty = tilt_fields(b, where)
     edge = math.hypot(tx, ty) * 0.5 * b.length_m
     if not edge < b.clearance_m:
         raise InputError(

@@ -41,7 +41,8 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
-from rotordyn.bearings._film import SystemParts, check_arc, check_film_fields, pad_film
+from rotordyn.bearings._film import (SystemParts, check_arc, check_film_fields, pad_film,
+                                     tilt_fields)
 from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.bearings.pad_thd import (freeze_fields, pad_fields, pad_model_options,
                                         pad_thd_equilibrium)
@@ -156,12 +157,7 @@ class FixedGeometryBearing:
     def _check_tilt(self, where: str) -> None:
         """``tilt`` (bool), the misalignment (finite, only with tilt, and not closing any
         lobe's film at an edge for a journal on the shaft line: :meth:`edge_film` > 0)."""
-        v.boolean(f"{where}.tilt", self.tilt)
-        tx = v.finite(f"{where}.config_theta_x_rad", self.config_theta_x_rad)
-        ty = v.finite(f"{where}.config_theta_y_rad", self.config_theta_y_rad)
-        if (tx or ty) and not self.tilt:
-            raise InputError(f"{where}.config_theta_x_rad, config_theta_y_rad: a misalignment "
-                             "needs the film coupled to the journal's rotations (tilt = true)")
+        tx, ty = tilt_fields(self, where)
         if self.tilt and self.film_model != "finite":
             raise InputError(f"{where}.film_model: tilt = true needs the finite-length film "
                              f"(film_model = 'finite'), got {self.film_model!r}")
