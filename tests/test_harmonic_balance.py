@@ -21,8 +21,7 @@ from rotordyn.errors import InputError
 HB = "harmonic_balance"
 
 
-@pytest.fixture(scope="module")
-def smooth_rotor():
+def smooth_rotor_system():
     """A short rotor on two plain journal bearings with a full (uncavitated) film: the
     system of tests/test_periodic.py::test_nonlinear_forced_orbit_equals_harmonic_balance
     (15 Hz, 8e-3 kg·m: orbit 0.15 c, second harmonic 5 % of the first)."""
@@ -34,6 +33,11 @@ def smooth_rotor():
                                       cavitation="none") for s in (0, 4))
     return rd.System(rotor=rd.Rotor(shaft, ()), materials=(steel,), bearings=films,
                      reduction=rd.Reduction(master_stations=(0, 4), method="guyan"))
+
+
+@pytest.fixture(scope="module")
+def smooth_rotor():
+    return smooth_rotor_system()
 
 
 def test_forced_orbit_on_a_smooth_film_equals_shooting(smooth_rotor):

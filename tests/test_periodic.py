@@ -198,14 +198,9 @@ def test_nonlinear_forced_orbit_equals_harmonic_balance():
     The orbit is unstable (a multiplier outside the unit circle): shooting finds it anyway."""
     import scipy.optimize as so
 
-    steel = rd.Material("steel", density_kg_m3=7810.0, young_pa=211e9,
-                        shear_modulus_pa=81.2e9)
-    shaft = tuple(rd.ShaftSection(length_m=0.1, outer_diameter_m=0.1) for _ in range(4))
-    films = tuple(rd.FluidFilmBearing(s, diameter_m=0.05, length_m=0.025, clearance_m=1e-4,
-                                      viscosity_pa_s=0.03, n_circ=36, n_axial=6,
-                                      cavitation="none") for s in (0, 4))
-    system = rd.System(rotor=rd.Rotor(shaft, ()), materials=(steel,), bearings=films,
-                       reduction=rd.Reduction(master_stations=(0, 4), method="guyan"))
+    from test_harmonic_balance import smooth_rotor_system
+
+    system = smooth_rotor_system()
     f, ub = 15.0, [(2, 8e-3, 0.0)]
     res = periodic_orbit(system, f, kind="forced", unbalances=ub, rtol=1e-10, atol_m=1e-15,
                          tol=1e-9)
