@@ -300,6 +300,24 @@ class Assembled:
         return a
 
 
+def check_operating_parameter(system: System, name: str, field: str = "vary") -> None:
+    """``InputError`` naming ``field`` when the operating variable ``name`` acts on nothing in
+    ``system``: ``chamber_pressure_pa`` needs an active journal bearing, ``config_ay_m`` the
+    active bearing (or the system's only bearing). A scan over it would repeat one point."""
+    asm = assembled(system)
+    n_active = sum(bc.active for bc in asm.bearings)
+    if name == "chamber_pressure_pa" and n_active == 0:
+        raise InputError(f"{field}: chamber_pressure_pa acts on an active journal bearing's "
+                         "chamber and this model has none; vary speed_hz (or a model field, "
+                         "e.g. bearings.0.clearance_m, in a sweep or an equilibrium branch)")
+    if name == "config_ay_m" and n_active != 1 and not (n_active == 0
+                                                        and len(asm.bearings) == 1):
+        raise InputError(f"{field}: config_ay_m is the housing offset of the active journal "
+                         f"bearing, and this model has {n_active} active of "
+                         f"{len(asm.bearings)} bearings; vary a bearing's own offset "
+                         "(bearings.<name>.config_ay_m) instead")
+
+
 _local = threading.local()
 
 

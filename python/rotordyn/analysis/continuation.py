@@ -18,7 +18,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import assembled, check_operating_parameter
 from rotordyn.analysis.periodic import NEWTON, orbit_result
 from rotordyn.errors import InputError
 from rotordyn.model.system import System
@@ -159,6 +159,7 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         itself does not converge under these options.
     """
     vary = v.choice("vary", vary, VARIABLES)
+    check_operating_parameter(system, vary)
     lo, hi = v.bounds("bounds", bounds)
     if not isinstance(start, PeriodicOrbitResult):
         raise InputError("start: expected a PeriodicOrbitResult (a converged orbit from "

@@ -25,7 +25,7 @@ import numpy as np
 from rotordyn._common import validate as v
 from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import Assembled, assembled
+from rotordyn.analysis.assembly import Assembled, assembled, check_operating_parameter
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn.analysis.linear import FD_REL_STEP, _linear_from
 from rotordyn.errors import InputError, RotordynError
@@ -44,6 +44,7 @@ def _parameter(system: System, vary) -> str:
         raise InputError(f"vary: expected one of {', '.join(OPERATING)} or a model field path "
                          f"(e.g. bearings.0.clearance_m), got {vary!r}")
     if vary in OPERATING:
+        check_operating_parameter(system, vary)
         return vary
     if "." not in vary and not hasattr(system, vary):
         raise InputError(f"vary: unknown parameter {vary!r}: expected one of "

@@ -12,7 +12,7 @@ import numpy as np
 
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import assembled, check_operating_parameter
 from rotordyn.analysis.linear import linearize
 from rotordyn.analysis.lyapunov import central_second, central_third, first_lyapunov, \
     fitted_derivatives, hopf_vectors
@@ -94,6 +94,7 @@ def hopf(system: System, vary: str = "chamber_pressure_pa", *, bounds=None, at=N
     A failure is a status (``no_crossing``, ``no_equilibrium``, ``error``) with a message.
     """
     v.choice("vary", vary, PARAMETERS)
+    check_operating_parameter(system, vary)
     fixed = {"speed_hz": v.speed("speed_hz", speed_hz),
              "chamber_pressure_pa": v.non_negative("chamber_pressure_pa", chamber_pressure_pa),
              "config_ay_m": None if config_ay_m is None else v.finite("config_ay_m",

@@ -11,6 +11,7 @@ import numpy as np
 
 from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
+from rotordyn.analysis.assembly import check_operating_parameter
 from rotordyn.model.system import System
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 
@@ -93,6 +94,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     from scipy.optimize import brentq
     import pandas as pd
     v.choice("vary", vary, PARAMETERS)
+    check_operating_parameter(system, vary)
     lo, hi = v.bounds("bounds", bounds)
     if vary == "chamber_pressure_pa" and lo < 0:
         raise InputError(f"bounds: {vary} must be >= 0, got {bounds!r}")
@@ -213,6 +215,8 @@ def stability_boundary(system: System, vary: str = "chamber_pressure_pa",
     v.choice("along", along, PARAMETERS)
     if along == vary:
         raise InputError("along: expected a parameter other than vary")
+    check_operating_parameter(system, vary)
+    check_operating_parameter(system, along, "along")
     vals = v.vector("values", values)
     if vals.size == 0:
         raise InputError("values: expected a non-empty 1-D array of finite values")

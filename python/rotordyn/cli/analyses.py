@@ -14,7 +14,7 @@ from rotordyn.cli import sleeve
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
                                  add_thermal_arguments, check_figure, json_text, oil_from_args,
                                  save_figure, table_text)
-from rotordyn.cli.common import add_thd_arguments
+from rotordyn.cli.common import add_thd_arguments, default_vary
 from rotordyn.cli.common import speeds as parse_speeds
 from rotordyn.errors import InputError
 from rotordyn.model import builtin as models
@@ -116,9 +116,11 @@ def _register(sub) -> None:
     s = sub.add_parser("threshold", help="threshold of instability (max Re λ = 0)")
     s.add_argument("model", help=MODEL_HELP)
     s.add_argument("--vary", choices=["chamber_pressure_pa", "config_ay_m", "speed_hz"],
-                   default="chamber_pressure_pa", help="the input scanned for the threshold")
-    s.add_argument("--bounds", type=float, nargs=2, default=(0.0, 0.5e6), metavar=("LO", "HI"),
-                   help="scan interval of --vary, in its unit (Pa, m or Hz)")
+                   default=None, help="the input scanned for the threshold (default: "
+                   "chamber_pressure_pa with an active journal bearing, else speed_hz)")
+    s.add_argument("--bounds", type=float, nargs=2, default=None, metavar=("LO", "HI"),
+                   help="scan interval of --vary, in its unit (Pa, m or Hz); default 0 0.5e6 "
+                        "for chamber_pressure_pa, required for the others")
     s.add_argument("--n-scan", type=int, default=11, metavar="N",
                    help="points of the bracketing scan")
     add_operating_point(s)
@@ -441,7 +443,12 @@ def _cmd_campbell(args) -> int:
 
 def _cmd_threshold(args) -> int:
     s = models.load(args.model)
-    lo, hi = args.bounds
+    args.vary = args.vary or default_vary(s)
+    if args.bounds is None and args.vary != "chamber_pressure_pa":
+        unit = {"speed_hz": "Hz", "config_ay_m": "m"}[args.vary]
+        raise InputError(f"--bounds: required with --vary {args.vary} (LO HI in {unit}; only "
+                         "chamber_pressure_pa has a default range, 0 0.5e6 Pa)")
+    lo, hi = args.bounds or (0.0, 0.5e6)
     t = analysis.threshold(s, args.vary, bounds=(lo, hi), speed_hz=args.speed_hz,
                            chamber_pressure_pa=args.chamber_pressure_pa,
                            config_ay_m=args.config_ay_m, n_scan=args.n_scan)

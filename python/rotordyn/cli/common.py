@@ -119,6 +119,14 @@ def add_operating_point(s, speed=True):
                         "(-1.85 mm = -1.85e-3; default: the model's own)")
 
 
+def default_vary(system) -> str:
+    """The threshold's default parameter: p_c with an active journal bearing, else speed."""
+    from rotordyn.bearings import ActiveJournalBearing
+
+    act = any(isinstance(b, ActiveJournalBearing) for b in system.bearings)
+    return "chamber_pressure_pa" if act else "speed_hz"
+
+
 def figure_path(flag: str, path: str) -> str:
     """An output figure: its folder must exist and its suffix be a format matplotlib writes
     (issue 13: a missing folder or an unknown suffix gave a traceback after the solve)."""

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 from rotordyn import analysis
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
-                                 check_figure, json_text, save_figure, table_text)
+                                 check_figure, default_vary, json_text, save_figure,
+                                 table_text)
 from rotordyn.model import builtin as models
 
 
@@ -15,9 +16,10 @@ def register(sub) -> None:
                                     "coefficient, sub/supercritical, leading-order cycle")
     s.add_argument("model", help=MODEL_HELP)
     add_operating_point(s)
-    s.add_argument("--vary", default="chamber_pressure_pa",
+    s.add_argument("--vary", default=None,
                    choices=["chamber_pressure_pa", "speed_hz", "config_ay_m"],
-                   help="the parameter whose threshold is the Hopf point (Pa, Hz, m)")
+                   help="the parameter whose threshold is the Hopf point (Pa, Hz, m; default: "
+                        "chamber_pressure_pa with an active journal bearing, else speed_hz)")
     s.add_argument("--bounds", type=float, nargs=2, default=None, metavar=("LO", "HI"),
                    help="search the threshold in this range (unit of --vary)")
     s.add_argument("--at", type=float, default=None,
@@ -36,6 +38,7 @@ def register(sub) -> None:
 def _cmd_hopf(args) -> int:
     check_figure(args.plot)
     s = models.load(args.model)
+    args.vary = args.vary or default_vary(s)
     res = analysis.hopf(s, args.vary, bounds=None if args.bounds is None else
                         tuple(args.bounds), at=args.at, speed_hz=args.speed_hz,
                         chamber_pressure_pa=args.chamber_pressure_pa,

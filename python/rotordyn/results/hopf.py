@@ -101,8 +101,11 @@ class HopfResult(Display):
                         for c in self.amplitude_coefficient) if self.value else ""
         return (f"<HopfResult ok: {self.type} Hopf point at {sym} = {self.value * f:.6g} {u2}, "
                 f"whirl {self.whirl_frequency_hz:.5g} Hz, l1 = {self.l1:.4g} ± "
-                f"{self.l1_error:.2g} 1/s, dReλ/d{sym} = {self.alpha_prime:.4g}; cycles "
-                f"{self.cycle_side} ({'stable' if self.supercritical else 'unstable'})"
+                f"{self.l1_error:.2g} 1/s, dReλ/d{sym} = {self.alpha_prime:.4g}; "
+                + (f"cycles {self.cycle_side} ({'stable' if self.supercritical else 'unstable'})"
+                   if self.type != "degenerate" else
+                   f"cycles {self.cycle_side} by l1's sign, their side and stability not "
+                   "resolved")
                 + (f", amplitude at 1 % from the point: {amp}" if amp else "") + ">")
 
     def to_frame(self) -> pd.DataFrame:
