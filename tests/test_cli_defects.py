@@ -14,6 +14,7 @@ import pytest
 import rotordyn as rd
 from rotordyn.cli import build_parser
 from rotordyn.errors import UnitWarning
+from cli_output import error_lines
 
 
 def run(*args, cwd=None):
@@ -117,7 +118,7 @@ def datasets(tmp_path_factory):
 def test_plot_kind_mismatch_is_one_line_exit_2(datasets, tmp_path, which, kind, needle):
     p = run("plot", str(datasets[which][1]), "--kind", kind, "--out", str(tmp_path / "f.png"))
     assert p.returncode == 2
-    assert p.stderr.strip().count("\n") == 0 and needle in p.stderr, p.stderr
+    assert len(error_lines(p.stderr)) == 1 and needle in p.stderr, p.stderr
     assert "Traceback" not in p.stderr
 
 

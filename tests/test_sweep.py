@@ -15,6 +15,7 @@ import pytest
 import rotordyn as rd
 import rotordyn.sweep as sw
 from rotordyn.sweep import SweepSpec, run_sweep
+from cli_output import error_lines
 
 SPEC = """
 schema = "rotordyn/sweep/1"
@@ -246,7 +247,7 @@ def test_bad_specs_name_the_field(tmp_path, text, field):
     r = subprocess.run([sys.executable, "-m", "rotordyn.cli", "sweep", str(p), "--out",
                         str(tmp_path / "o")], capture_output=True, text=True)
     assert r.returncode == 2 and field.split(".")[-1] in r.stderr
-    assert len(r.stderr.strip().splitlines()) == 1
+    assert len(error_lines(r.stderr)) == 1
 
 
 def test_model_field_axes(tmp_path):

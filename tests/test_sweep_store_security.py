@@ -20,7 +20,6 @@ import hashlib
 import json
 import os
 import random
-import re
 import shutil
 import subprocess
 import sys
@@ -33,6 +32,7 @@ import rotordyn as rd
 import rotordyn.sweep as sw
 from rotordyn.sweep import SweepSpec, run_sweep
 from rotordyn.sweep import store as store_mod
+from cli_output import error_lines
 
 SPEC = """
 schema = "rotordyn/sweep/1"
@@ -188,9 +188,7 @@ def test_plot_refuses_a_damaged_part(done, tmp_path):
     assert r.returncode == 2 and part.name in r.stderr and "damaged" in r.stderr, r.stderr
     # one error line; on a slow machine the CLI's progress lines ("running (3 s so far)",
     # "stopped after 3.6 s") may surround it
-    err = [ln for ln in r.stderr.strip().splitlines()
-           if not re.match(r"rotordyn [\w-]+: (running \(|done after |stopped after )", ln)]
-    assert len(err) == 1, r.stderr
+    assert len(error_lines(r.stderr)) == 1, r.stderr
     assert not (tmp_path / "m.png").exists()
 
 
@@ -452,7 +450,7 @@ def test_operating_axes_range_checked_at_load(tmp_path, line, field):
         SweepSpec.from_toml(p)
     r = _cli("sweep", p, "--out", tmp_path / "o", "--threads", "1")
     assert r.returncode == 2 and field in r.stderr, r.stderr
-    assert len(r.stderr.strip().splitlines()) == 1
+    assert len(error_lines(r.stderr)) == 1
     assert not (tmp_path / "o").exists()
 
 
@@ -493,7 +491,7 @@ def test_scheduler_address_checked_at_once(done, tmp_path):
     r = _cli("sweep", spec, "--out", tmp_path / "o", "--scheduler", "not-an-address")
     assert r.returncode == 2 and "scheduler" in r.stderr and "not-an-address" in r.stderr, \
         r.stderr
-    assert len(r.stderr.strip().splitlines()) == 1 and "internal error" not in r.stderr
+    assert len(error_lines(r.stderr)) == 1 and "internal error" not in r.stderr
     import socket
 
     with socket.socket() as s:  # a port that was free a moment ago: closed
