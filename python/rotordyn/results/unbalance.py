@@ -17,6 +17,12 @@ from rotordyn._common.api import (  # noqa: F401 - the criteria of the peaks
 if TYPE_CHECKING:
     import pandas as pd
 
+# A local maximum with no half-power band that rises less than this fraction of its height
+# above its surroundings (its topographic prominence) is a ripple of the response, not a
+# resonance: the films' coefficients are only piecewise smooth in speed (a film node changes
+# its cavitation state), and the adaptive speed grid resolves those kinks.
+RIPPLE_PROMINENCE = 0.02
+
 PEAK_COLUMNS = ("station", "critical_speed_hz", "peak_m", "n1_hz", "n2_hz",
                 "amplification_factor", "af_kind", "critically_damped")
 """The columns of :meth:`UnbalanceResult.peaks` (plus ``separation_margin_pct`` and
@@ -118,15 +124,20 @@ class UnbalanceResult(Display):
         half-power method (API 684; :func:`amplification_factor` for ``af_kind``), whether it is
         critically damped (AF < 2.5), and, when operating speeds are known, the separation
         margin and the margin API 617/684 requires (NaN: the AF is not resolved, so the margin
-        cannot be judged). Columns :data:`PEAK_COLUMNS` even when there is no peak."""
+        cannot be judged). A local maximum without a half-power band that rises less than
+        :data:`RIPPLE_PROMINENCE` (2 %) of its height above its surroundings is a ripple of the
+        film coefficients, not a peak. Columns :data:`PEAK_COLUMNS` even when there is none."""
         import pandas as pd
         k = 0 if station is None else list(self.stations).index(station)
+        from scipy.signal import peak_prominences
+
         a = {"major": self.major_m, "x": np.abs(self.x), "y": np.abs(self.y)}[amplitude][:, k]
         s = self.speeds_hz
         rows = []
         for i in range(1, len(s) - 1):
             if not (a[i] > a[i - 1] and a[i] >= a[i + 1]):
                 continue
+            prominence = peak_prominences(a, [i])[0][0] / a[i]
             # parabola through the three points
             x0, x1, x2, y0, y1, y2 = s[i - 1], s[i], s[i + 1], a[i - 1], a[i], a[i + 1]
             den = (x0 - x1) * (x0 - x2) * (x1 - x2)
@@ -144,6 +155,8 @@ class UnbalanceResult(Display):
                 j += 1
             n2 = np.nan if a[j] > half else s[j - 1] + (a[j - 1] - half) * (s[j] - s[j - 1]) / (a[j - 1] - a[j])
             af, kind = amplification_factor(nc, n1, n2, s[0], s[-1])
+            if prominence < RIPPLE_PROMINENCE:
+                continue  # a ripple (RIPPLE_PROMINENCE), not a resonance
             row = {"station": int(self.stations[k]), "critical_speed_hz": nc, "peak_m": peak,
                    "n1_hz": n1, "n2_hz": n2, "amplification_factor": af, "af_kind": kind,
                    "critically_damped": bool(af < API_CRITICALLY_DAMPED_AF)}
