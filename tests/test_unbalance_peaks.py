@@ -56,3 +56,28 @@ def test_a_small_separate_resonance_is_kept():
     assert len(pk) == 2
     assert pk["critical_speed_hz"].iloc[1] == pytest.approx(70.0, rel=1e-3)
     assert RIPPLE_PROMINENCE == 0.02
+
+
+def test_bode_legend_names_only_what_is_drawn():
+    """No half-power band in the legend of a response without one; the labels of many peaks
+    do not pile up (the smaller ones hidden, their number said in the legend)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    s = np.arange(10.0, 160.0, 0.05)
+    mono = response(s, 1e-6 * s / 160.0)  # rising, no peak
+    a1, _ = mono.plot(station=0)
+    names = [t.get_text() for t in a1.figure.legends[0].get_texts()]
+    assert not any("half-power" in n or "critical speed" in n for n in names), names
+    # six well separated sharp modes of falling height on a figure a third of a page wide
+    a = sum(h * sdof(s, nc, 0.01) for h, nc in zip((6, 5, 4, 3, 2, 1), (30, 36, 42, 48, 54, 60)))
+    many = response(s, 1e-6 * a)
+    assert len(many.peaks(0)) == 6
+    a1, _ = many.plot(station=0)
+    names = [t.get_text() for t in a1.figure.legends[0].get_texts()]
+    assert any("half-power" in n for n in names)
+    shown = [t for t in a1.texts if t.get_visible() and t.get_text().startswith("N_c")]
+    r = a1.figure.canvas.get_renderer()
+    boxes = [t.get_window_extent(r) for t in shown]
+    assert all(not b.overlaps(c) for i, b in enumerate(boxes) for c in boxes[i + 1:])
+    if len(shown) < 6:
+        assert any(f"{6 - len(shown)} smaller not labelled" in n for n in names), names

@@ -62,11 +62,13 @@ def bode(result, station=None, axes=None, annotate: bool = True):
         pk = result.peaks(result.stations[k])
         top = float(np.nanmax(result.major_m[:, k])) * 1e6 if np.isfinite(result.major_m[:, k]).any() else 1.0
         xr = float(sp[-1] - sp[0])
+        boxes, bands = [], False
         for n, (_, row) in enumerate(pk.sort_values("critical_speed_hz").iterrows()):
             nc, af = row["critical_speed_hz"], row["amplification_factor"]
             a1.axvline(nc, color="0.3", lw=0.6, ls=":")
             if np.isfinite(row["n1_hz"]) and np.isfinite(row["n2_hz"]):
                 a1.axvspan(row["n1_hz"], row["n2_hz"], color="tab:purple", alpha=0.15, lw=0)
+                bands = True
             txt = f"N_c = {nc:.1f} Hz, " + af_text(af, row["af_kind"])
             if "separation_margin_pct" in row and np.isfinite(row.get("required_margin_pct",
                                                                       np.nan)):
@@ -77,15 +79,20 @@ def bode(result, station=None, axes=None, annotate: bool = True):
             # boxes stacked in the free band above the curves, arrows to the peaks
             ty = top * (1.55 - 0.2 * (n % 3))
             tx = min(max(nc + 0.02 * xr, sp[0]), sp[-1] - 0.3 * xr)
-            a1.annotate(txt, (nc, row["peak_m"] * 1e6), xytext=(tx, ty), fontsize=5.8,
-                        va="top", ha="left", arrowprops=dict(arrowstyle="-", color="0.4",
-                                                             lw=0.5),
-                        bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="0.6", alpha=0.9))
-        handles.append(Line2D([], [], color="0.3", lw=0.6, ls=":",
-                              label="critical speed N_c (peak)"))
-        handles.append(Patch(color="tab:purple", alpha=0.15,
-                             label="half-power band N₁…N₂ (AF = N_c/(N₂−N₁))"))
-        a1.set_ylim(0, top * 1.62)
+            boxes.append((row["peak_m"], a1.annotate(
+                txt, (nc, row["peak_m"] * 1e6), xytext=(tx, ty), fontsize=5.8, va="top",
+                ha="left", arrowprops=dict(arrowstyle="-", color="0.4", lw=0.5),
+                bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="0.6", alpha=0.9))))
+        if len(pk):
+            a1.set_ylim(0, top * 1.62)
+            # the largest peaks keep their boxes; one that would overlap them is hidden
+            hidden = declutter([b for _, b in sorted(boxes, key=lambda pb: -pb[0])])
+            more = f" ({hidden} smaller not labelled: peaks())" if hidden else ""
+            handles.append(Line2D([], [], color="0.3", lw=0.6, ls=":",
+                                  label="critical speed N_c (peak)" + more))
+        if bands:
+            handles.append(Patch(color="tab:purple", alpha=0.15,
+                                 label="half-power band N₁…N₂ (AF = N_c/(N₂−N₁))"))
     if result.operating_speed_hz is not None:
         lo, hi = result.operating_speed_hz
         for a in axes:
