@@ -15,7 +15,7 @@ from rotordyn.errors import ConvergenceError, InputError
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn._common import validate as v
 from rotordyn.model.system import System
-from rotordyn.results.unbalance import UnbalanceResult
+from rotordyn.results.unbalance import RIPPLE_PROMINENCE, UnbalanceResult
 from rotordyn.units import hz_to_rad_s
 
 
@@ -37,9 +37,21 @@ def _unresolved_peaks(u: UnbalanceResult) -> list[int]:
             for i in range(1, len(v) - 1):
                 if v[i] > v[i - 1] and v[i] >= v[i + 1] and (
                         min(v[i - 1], v[i + 1]) < v[i] / np.sqrt(2)
-                        or s[i + 1] - s[i - 1] > 2 * BAND_TOL_REL * s[i]):
+                        or s[i + 1] - s[i - 1] > 2 * BAND_TOL_REL * s[i]) \
+                        and not _ripple(v, i):
                     out.add(i)
     return sorted(out)
+
+
+def _ripple(v, i) -> bool:
+    """Whether the local maximum v[i] rises less than RIPPLE_PROMINENCE of its height above
+    the valley separating it from a higher one: film-coefficient ripple, which
+    :meth:`UnbalanceResult.peaks` does not count, so the grid is not refined for it (an
+    undersampled resonance stands well above its sampled neighbours, so it is not one)."""
+    from scipy.signal import peak_prominences
+
+    v = np.nan_to_num(v, nan=0.0)
+    return bool(peak_prominences(v, [i])[0][0] < RIPPLE_PROMINENCE * v[i])
 
 
 def _unresolved_bands(u: UnbalanceResult) -> list[tuple[float, float]]:
@@ -52,7 +64,7 @@ def _unresolved_bands(u: UnbalanceResult) -> list[tuple[float, float]]:
     for k in range(u.major_m.shape[1]):
         v = u.major_m[:, k]
         for i in range(1, len(v) - 1):
-            if not (v[i] > v[i - 1] and v[i] >= v[i + 1]):
+            if not (v[i] > v[i - 1] and v[i] >= v[i + 1]) or _ripple(v, i):
                 continue
             half = v[i] / np.sqrt(2)
             tol = BAND_TOL_REL * s[i]

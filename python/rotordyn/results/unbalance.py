@@ -137,7 +137,7 @@ class UnbalanceResult(Display):
         for i in range(1, len(s) - 1):
             if not (a[i] > a[i - 1] and a[i] >= a[i + 1]):
                 continue
-            prominence = peak_prominences(a, [i])[0][0] / a[i]
+            prominence = peak_prominences(np.nan_to_num(a, nan=0.0), [i])[0][0] / a[i]
             # parabola through the three points
             x0, x1, x2, y0, y1, y2 = s[i - 1], s[i], s[i + 1], a[i - 1], a[i], a[i + 1]
             den = (x0 - x1) * (x0 - x2) * (x1 - x2)
