@@ -69,3 +69,11 @@ def test_equilibrium_cli_json_and_negative_config():
 def test_equilibrium_cli_bad_pressure_exits_2():
     p = run("equilibrium", "paper-rig", "--chamber-pressure-pa", "-5")
     assert p.returncode == 2 and "chamber_pressure_pa" in p.stderr
+
+
+def test_python_m_rotordyn_is_the_command():
+    p = subprocess.run([sys.executable, "-m", "rotordyn", "--version"], capture_output=True,
+                       text=True)
+    q = run("--version")
+    assert p.returncode == 0 == q.returncode, p.stderr
+    assert p.stdout == q.stdout and p.stdout.strip()

@@ -49,6 +49,9 @@ def build_parser() -> argparse.ArgumentParser:
     p = ArgumentParser(prog="rotordyn", description=DESCRIPTION,
                        epilog="Exit codes: 0 success, 2 bad input (one line naming the field), "
                               "1 runtime failure. Units: SI, flags carry the unit suffix.")
+    from rotordyn._common.info import __version__
+    p.add_argument("--version", action="version", version=f"rotordyn {__version__}",
+                   help="print the version and exit (`rotordyn info`: the libraries too)")
     sub = p.add_subparsers(dest="command", required=True, parser_class=ArgumentParser,
                            metavar="COMMAND")
     for family in COMMANDS:
