@@ -356,3 +356,17 @@ def test_report_figures_of_the_docs_are_shown_in_a_doc():
     for n in names:
         assert f"](figures/{n})" in pages, n
         assert (root / "docs" / "figures" / n).stat().st_size > 20000
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_text_report_has_the_checks_of_the_html(reports, name):
+    """report.txt (the main job's text) carries the checks table and overall verdict of the
+    HTML report: it had only the critical speeds and coefficients, no verdict at all."""
+    page, d = reports[name][1], reports[name][2]
+    text = (d / "report.txt").read_text(encoding="utf-8")
+    overall = re.search(r"Overall: <span class=\"\w+\">([A-Z ]+)</span>", page).group(1)
+    assert f"checks: overall {overall} " in text
+    for check, _, value, result in _checks(page):
+        line = next((ln for ln in text.splitlines() if f" {check}" in ln and value in ln), None)
+        assert line is not None, (check, value)
+        assert line.split()[0] == result.split()[0], (line, result)

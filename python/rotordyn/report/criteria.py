@@ -147,6 +147,17 @@ class Checks:
         self.rows.append((name, criterion, value, verdict))
         self.films_of.append(self.films)
 
+    def text_lines(self) -> list[str]:
+        """The checks as text (the HTML report's checks table): the overall verdict, then one
+        line per check, ``RESULT  check [films]: value (criterion)``."""
+        out = ["", f"checks: overall {self.overall()} (every check with its criterion)"]
+        for (name, crit, value, ok), films in zip(self.rows, self.films_of):
+            res = ("n/a" if ok is None else ok if isinstance(ok, str)
+                   else "PASS" if ok else "FAIL")
+            out.append(f"  {res:<12} {name}" + (f" [{films}]" if films else "")
+                       + f": {value} ({crit})")
+        return out
+
     def overall(self) -> str:
         """FAIL if any check fails, else NOT RESOLVED if any is, else PASS (a check that was not
         evaluated, e.g. "not evaluated (no stage data)", neither passes nor fails)."""

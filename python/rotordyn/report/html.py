@@ -213,7 +213,8 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     critical speed and the bearing coefficient figure there as PNG, and the coefficients and
     the critical speeds as ``bearing_coefficients.csv``, ``critical_speeds.csv``.
     ``text_sink``: a list that gets the text report's lines of the critical speeds, their mode
-    shapes and the bearing coefficients (:mod:`rotordyn.report.sections`)."""
+    shapes and the bearing coefficients (:mod:`rotordyn.report.sections`) and the checks
+    table (:meth:`Checks.text_lines`)."""
     import datetime
     import hashlib
 
@@ -465,6 +466,8 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     if text_lines:
         parts.append("<h2>7. Checks against the reference paper (text report)</h2><pre>"
                      + html.escape("\n".join(text_lines)) + "</pre>")
+    if text_sink is not None:
+        text_sink += checks.text_lines()
     verdict = checks.overall()
     cls = {"PASS": "pass", "FAIL": "fail"}.get(verdict, "nr")
     doc = (f"<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>{title}"
