@@ -96,3 +96,23 @@ def test_refinement_skips_ripple():
     u = rd.unbalance_response(s, [(3, 1e-4, 0.0)], sp, stations=[1, 3])
     np.testing.assert_array_equal(u.speeds_hz, sp)
     assert u.peaks(1).empty and u.peaks(3).empty
+
+
+def test_no_separation_margin_check_for_a_peak_without_resonance():
+    """A hump with AF < 1 (its half-power band wider than its speed) stays in the peaks table
+    but is no critical speed: the report adds no separation-margin check for it (it added a
+    PASS row "separation margin, N_c = …: AF < 1 (no resonance)")."""
+    from rotordyn.report.criteria import Checks, separation_checks
+
+    s = np.arange(5.0, 200.0, 0.25)
+    # a broad hump at 40 Hz (half-power band 47 Hz: AF ≈ 0.85) and a sharp mode (AF ≈ 25)
+    a = np.exp(-((s - 40.0) / 40.0) ** 2) + 0.1 * sdof(s, 120.0, 0.02)
+    u = UnbalanceResult(s, (0,), 1e-6 * a[:, None] + 0j, 1e-6j * a[:, None],
+                        np.array(["ok"] * s.size), ((0, 1e-4, 0.0),), (60.0, 70.0))
+    pk = u.peaks(0)
+    assert len(pk) == 2 and pk["amplification_factor"].iloc[0] < 1.0
+    checks = Checks()
+    rows = separation_checks(checks, u, 0)
+    assert len(rows) == 2  # the peaks table keeps both
+    names = [r[0] for r in checks.rows]
+    assert len(names) == 1 and "N_c = 120" in names[0], names

@@ -170,7 +170,8 @@ class Checks:
 
 
 def separation_checks(checks: Checks, u, station: int) -> list[tuple]:
-    """Rows of the peaks table at ``station`` and their separation-margin checks."""
+    """Rows of the peaks table at ``station`` and their separation-margin checks (none for a
+    peak with AF < 1: no resonance)."""
     rows = []
     for r in u.peaks(station).to_dict("records"):
         af, kind = r["amplification_factor"], r["af_kind"]
@@ -183,7 +184,9 @@ def separation_checks(checks: Checks, u, station: int) -> list[tuple]:
         else:
             verdict = bool(sm >= req)
         rows.append((r["critical_speed_hz"], r["peak_m"], af_text(af, kind), sm, req, verdict))
-        if u.operating_speed_hz is not None:
+        # AF < 1: a half-power band wider than the speed, no resonance (docs/api-criteria.md):
+        # in the peaks table, but no separation margin of a critical speed to check
+        if u.operating_speed_hz is not None and not (kind != "unresolved" and af < 1.0):
             crit = ("API 684: AF < 2.5 critically damped, no margin; else SM ≥ 17(1 − 1/(AF − "
                     "1.5)) % (≤ 16 %) below / 10 + that (≤ 26 %) above the operating range")
             val = (f"{af_text(af, kind)}, SM {sm:.1f} %, required "
