@@ -175,9 +175,12 @@ def test_every_room_is_in_the_table():
 
 
 def test_root_holds_only_the_table_of_contents():
-    """The root has the re-exports and the three base modules; no feature module."""
+    """The root has the re-exports, the base modules and the ``python -m`` entry point (which
+    imports the CLI only); no feature module."""
     tops = sorted(p.name for p in PACKAGE.glob("*.py"))
-    assert tops == ["__init__.py", "errors.py", "units.py"]
+    assert tops == ["__init__.py", "__main__.py", "errors.py", "units.py"]
+    main_graph = import_graph(PACKAGE)["rotordyn.__main__"]
+    assert main_graph == {"rotordyn.cli"}, main_graph
     tree = ast.parse((PACKAGE / "__init__.py").read_text(encoding="utf-8"))
     defs = [n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))]
     assert defs == [], f"the root defines {defs}: define them in a room and re-export"
