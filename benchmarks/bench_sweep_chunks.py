@@ -15,6 +15,7 @@ the same way with ``--points``: the chunk, the bare per-point work (the same ana
 no rows) and the former dict-per-row chunk (tests/sweep_point_rows_reference.py).
 
     python benchmarks/bench_sweep_chunks.py [--repeat 5] [--points] [--only-points]
+        [--only-stability]
 """
 
 from __future__ import annotations
@@ -330,6 +331,8 @@ def main():
     ap.add_argument("--points", action="store_true",
                     help="also the thermal, waterfall, run-up, robust and hopf chunks")
     ap.add_argument("--only-points", action="store_true", help="only those")
+    ap.add_argument("--only-stability", action="store_true",
+                    help="only the stability chunk (the goal chunk <= 1.1x its call)")
     ap.add_argument("--thermal-dynamics", action="store_true",
                     help="only the stability and unbalance chunks with options.thermal")
     a = ap.parse_args()
@@ -355,6 +358,9 @@ def main():
     show("stability chunk, Fig. 9 lines over p_c", n, interleaved(
         {"bare": lambda: bare_stability(asm, inp), "chunk": lambda: run_chunk(job, 0, 0, n)},
         repeat=a.repeat))
+    if a.only_stability:
+        footer()
+        return
 
     job = Job("b", toml, "equilibrium", {}, axes)
     show("equilibrium chunk, Fig. 9 lines over p_c", n, interleaved(

@@ -19,7 +19,21 @@ from rotordyn.sweep.lines import max_real
 from rotordyn.sweep.points import (CONVERGED, STATUS, Variants, base_system, equilibrium_options,
                                    job_model_ay, operating, point_options, ref_bearing,
                                    stable_modes)
-from rotordyn.sweep.tracking import track_line
+from tracking_reference import track_modes_reference
+
+
+def track_line(rows, line, weight=None):
+    """The former per-line tracking (NumPy/SciPy, tests/tracking_reference.py)."""
+    k = max(len(lam) for _, lam, _ in line)
+    n = line[0][2].shape[0]
+    lam = np.full((len(line), k), np.nan + 0j)
+    phi = np.full((len(line), n, k), np.nan + 0j)
+    for i, (_, lm, ph) in enumerate(line):
+        lam[i, :len(lm)] = lm
+        phi[i, :, :ph.shape[1]] = ph
+    ids = track_modes_reference(lam, phi, weight=weight)
+    for i, (at, lm, _) in enumerate(line):
+        rows[at]["mode_id"] = ids[i, :len(lm)].astype(np.int64)
 from rotordyn.sweep.lines import block_rows, threshold_line as threshold_line_blocks
 from rotordyn.sweep.work import STR, Job, categories, schema
 from rotordyn.units import hz_to_rad_s

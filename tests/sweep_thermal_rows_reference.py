@@ -59,7 +59,7 @@ def stab_rows(job, variants, chunk_id, lo, hi, rows):
     each line as the isothermal sweep does), at the point's thermal equilibrium."""
     from rotordyn.analysis.linear import stability
     from rotordyn.results.modes import settled_real
-    from rotordyn.sweep.tracking import track_line
+    from sweep_rows_reference import track_line  # the former NumPy/SciPy tracking
 
     line, weight = [], None
 

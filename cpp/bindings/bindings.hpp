@@ -26,4 +26,5 @@ void bind_continuation(py::module_& m);
 void bind_unbalance(py::module_& m);
 void bind_threshold(py::module_& m);
 void bind_thd(py::module_& m);
+void bind_tracking(py::module_& m);
 }  // namespace rotordyn::py_bind

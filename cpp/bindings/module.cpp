@@ -22,4 +22,5 @@ PYBIND11_MODULE(_core, m) {
   bind_unbalance(m);
   bind_threshold(m);
   bind_thd(m);
+  bind_tracking(m);
 }

@@ -17,9 +17,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from rotordyn import _core
 from rotordyn.errors import InputError
 
-__all__ = ["mac", "track_modes"]
+__all__ = ["mac", "track_modes", "track_lines"]
 
 
 def mac(phi_a: np.ndarray, phi_b: np.ndarray, weight: np.ndarray | None = None) -> np.ndarray:
@@ -57,86 +58,44 @@ def track_modes(eigenvalues: np.ndarray, shapes=None, *, weight: np.ndarray | No
     minimises Σ (1 − MAC) + eig_weight·|Δλ|/scale, scale = max(|λ|) over the two points.
     A pair with MAC < ``min_mac`` (with shapes) or whose eigenvalues differ by more than 10 % of
     the scale (without shapes) is not matched: the slot starts a new id (a mode that leaves a
-    truncated set and another that enters it are not joined).
+    truncated set and another that enters it are not joined). The assignment is optimal
+    (shortest augmenting paths); the work is one C++ call (``_core.track_modes``).
     """
-    from scipy.optimize import linear_sum_assignment
     lam = np.asarray(eigenvalues, dtype=complex)
     if lam.ndim != 2:
         raise InputError(f"eigenvalues: expected shape (n_points, n_modes), got {lam.shape}")
     n_pts, k = lam.shape
-    phi = None
+    phi = []
     if shapes is not None:
         if isinstance(shapes, (list, tuple)):
+            if len(shapes) != n_pts:
+                raise InputError(f"shapes: expected {n_pts} arrays (one per point), got "
+                                 f"{len(shapes)}")
             n = max((np.asarray(s).shape[0] for s in shapes if s is not None), default=0)
-            phi = np.full((n_pts, n, k), np.nan + 0j)
-            for i, s in enumerate(shapes):
-                if s is None:
-                    continue
-                s = np.asarray(s, dtype=complex)
-                phi[i, :, :s.shape[1]] = s
+            for s in shapes:
+                s = np.zeros((n, 0), complex) if s is None else np.asarray(s, dtype=complex)
+                if s.ndim != 2 or s.shape[1] > k:
+                    raise InputError(f"shapes: expected arrays of shape (n, <= {k}), got "
+                                     f"{s.shape}")
+                phi.append(s)
         else:
-            phi = np.asarray(shapes, dtype=complex)
-        if phi.ndim != 3 or phi.shape[0] != n_pts or phi.shape[2] != k:
-            raise InputError(f"shapes: expected shape ({n_pts}, n, {k}), got {phi.shape}")
+            arr = np.asarray(shapes, dtype=complex)
+            if arr.ndim != 3 or arr.shape[0] != n_pts or arr.shape[2] != k:
+                raise InputError(f"shapes: expected shape ({n_pts}, n, {k}), got {arr.shape}")
+            phi = list(arr)
     for name, x in (("eig_weight", eig_weight), ("min_mac", min_mac)):
         if not np.isfinite(x) or x < 0:
             raise InputError(f"{name}: expected a finite value >= 0, got {x!r}")
-
-    ids = np.full((n_pts, k), -1, dtype=np.int64)
-    next_id = 0
-    # Where every id was last seen: (point, slot), in id order (ids are 0, 1, ... in order of
-    # creation). The weighted shapes W φ and the norms φ^H W φ of every point are formed once
-    # (one batched product) instead of at every comparison; the MAC is then the same quotient.
-    last_pt: list[int] = []
-    last_slot: list[int] = []
-    if phi is not None:
-        wphi = phi if weight is None else np.matmul(np.asarray(weight), phi)
-        with np.errstate(invalid="ignore"):
-            nrm = np.real(np.einsum("pik,pik->pk", phi.conj(), wphi))
-    # which slots hold a mode, every point at once (no arithmetic: the same booleans)
-    present_all = np.isfinite(lam)
-    if phi is not None:
-        present_all &= np.all(np.isfinite(phi), axis=1)
-    # one errstate for the whole line (entering it per point cost as much as the MAC)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        for i in range(n_pts):
-            slots = np.nonzero(present_all[i])[0]
-            if slots.size == 0:
-                continue
-            assigned = {}
-            if last_pt:
-                kp, ks = np.asarray(last_pt), np.asarray(last_slot)
-                lk = lam[kp, ks]
-                li = lam[i, slots]
-                scale = max(np.abs(lk).max(), np.abs(li).max(), 1e-300)
-                dist = np.abs(li[:, None] - lk[None, :]) / scale
-                if phi is not None:
-                    m = _mac_known(phi[i][:, slots], nrm[i, slots], wphi[kp, :, ks].T,
-                                   nrm[kp, ks])
-                else:
-                    m = np.ones_like(dist)
-                cost = (1.0 - m) + eig_weight * dist
-                rows, cols = linear_sum_assignment(cost)
-                for r, c in zip(rows.tolist(), cols.tolist()):
-                    if (m[r, c] < min_mac) if phi is not None else (dist[r, c] > 0.1):
-                        continue
-                    assigned[int(slots[r])] = c
-            for s in slots.tolist():
-                if s not in assigned:
-                    assigned[s] = next_id
-                    next_id += 1
-                    last_pt.append(i)
-                    last_slot.append(s)
-                j = assigned[s]
-                ids[i, s] = j
-                last_pt[j], last_slot[j] = i, s
-    return ids
+    w = np.zeros((0, 0)) if weight is None or not phi else np.asarray(weight, dtype=float)
+    return track_lines(lam, phi, w, [], eig_weight=eig_weight, min_mac=min_mac)
 
 
-def _mac_known(a: np.ndarray, na: np.ndarray, wb: np.ndarray, nb: np.ndarray) -> np.ndarray:
-    """:func:`mac` from precomputed parts (inside the caller's errstate): shapes ``a`` (n, ka)
-    with norms ``na`` (ka,), the weighted shapes W b (n, kb) with norms ``nb`` (kb,)."""
-    cross = np.abs(a.conj().T @ wb) ** 2
-    den = na[:, None] * nb[None, :]
-    ok = den > 0
-    return np.clip(np.where(ok, cross / np.where(ok, den, 1.0), 0.0), 0.0, 1.0)
+def track_lines(eigenvalues: np.ndarray, shapes: list, weight: np.ndarray, line_start,
+                *, eig_weight: float = 0.2, min_mac: float = 0.3) -> np.ndarray:
+    """:func:`track_modes` of several lines in one C++ call (no input checks: the sweep's
+    chunks): eigenvalues (n_points, k) complex, shapes one (n, k_i) array per point or [],
+    weight (n, n) or (0, 0), ``line_start`` (n_points,) true where a line starts (or [] for
+    one line). Returns (n_points, k) int64 ids, restarting at 0 on every line."""
+    return np.asarray(_core.track_modes(eigenvalues, shapes, weight,
+                                        [int(bool(s)) for s in line_start],
+                                        eig_weight, min_mac), dtype=np.int64)

@@ -10,7 +10,6 @@ order, the same values in the same row order): tests/test_sweep_columns.py.
 from __future__ import annotations
 
 import math
-from collections import defaultdict
 
 import numpy as np
 
@@ -22,7 +21,7 @@ from rotordyn.results.modes import settled_real
 from rotordyn.sweep.columns import runs
 from rotordyn.sweep.points import (CONVERGED, STATUS, equilibrium_options, operating, point_list,
                                    ref_bearing, segments, stable_modes)
-from rotordyn.sweep.tracking import track_line
+from rotordyn.sweep.tracking import track_points
 from rotordyn.units import hz_to_rad_s
 
 _NAMES = np.array([WHIRL_NAMES[-1], WHIRL_NAMES[0], WHIRL_NAMES[1]])
@@ -31,11 +30,12 @@ _NAMES = np.array([WHIRL_NAMES[-1], WHIRL_NAMES[0], WHIRL_NAMES[1]])
 def _operating(items, errs, catch, named):
     """(f, pc, a) per point, or None with the error in ``errs``."""
     ops = [None] * len(items)
+    memo: dict = {}  # the items hold their models alive: ids are not reused meanwhile
     for k, it in enumerate(items):
         if errs[k]:
             continue
         try:
-            ops[k] = operating(it[1], it[0])
+            ops[k] = operating(it[1], it[0], memo)
         except catch as exc:
             errs[k] = f"{type(exc).__name__}: {exc}" if named else str(exc)
     return ops
@@ -130,17 +130,16 @@ def stab_blocks(job, variants, chunk_id, pids, asms):
     n = len(items)
     ids: list = [None] * n
     if job.options.get("track", True):
-        buf, weight = [], None
+        pts, new_line = [], True
         for i, j, S in segs:
             for k in range(i, j):
-                if not items[k][3] and buf:
-                    _track(buf, weight, ids)
-                    buf = []
+                new_line = new_line or not items[k][3]
                 if S is not None and S["ok"][k - i]:
-                    buf.append((k, S["lam"][k - i], S["modes"][k - i]))
-                    weight = items[k][1].mats[0]
-        if buf:
-            _track(buf, weight, ids)
+                    pts.append((k, S["lam"][k - i], S["modes"][k - i], new_line,
+                                items[k][1].mats[0]))
+                    new_line = False
+        for k, v in track_points(pts).items():
+            ids[k] = v
     blocks = []
     for i, j, S in segs:
         if S is None:
@@ -153,13 +152,6 @@ def stab_blocks(job, variants, chunk_id, pids, asms):
             else:
                 blocks.append(_stab_block(S, a, b, i, ids))
     return blocks
-
-
-def _track(buf, weight, ids):
-    got: dict = defaultdict(dict)
-    track_line(got, buf, weight)
-    for k, v in got.items():
-        ids[k] = v["mode_id"]
 
 
 def _stab_batch(job, seg, ops):

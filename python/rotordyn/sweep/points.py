@@ -91,12 +91,20 @@ def point_options(job, p: dict) -> dict:
     return opts
 
 
-def operating(asm, p: dict):
-    """speed (Hz), p_c (Pa), configuration vector; InputError on a bad value."""
+def operating(asm, p: dict, memo: dict | None = None):
+    """speed (Hz), p_c (Pa), configuration vector; InputError on a bad value. ``memo``: a dict
+    kept by the caller for one chunk, in which the configuration vector of each (model, a_y,
+    a_x) is built once (a line over p_c or the speed shares one; the vector is read-only)."""
     f = v.finite("speed_hz", p.get("speed_hz", 50.0))
     pc = v.non_negative("chamber_pressure_pa", p.get("chamber_pressure_pa", 0.0))
     ay, ax = p.get("config_ay_m"), p.get("config_ax_m")
-    a = asm.config_vector(ay, ax)
+    if memo is None:
+        return f, pc, asm.config_vector(ay, ax)
+    key = (id(asm), ay, ax)
+    a = memo.get(key)
+    if a is None:
+        a = memo[key] = asm.config_vector(ay, ax)
+        a.flags.writeable = False
     return f, pc, a
 
 
