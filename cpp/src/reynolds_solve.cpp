@@ -211,16 +211,26 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
     }
     const double tol_p = 1e-13 * pscale;
     const double tol_mu = 1e-13 * bscale;
+    // Degenerate (p = 0 and A p − b = 0 together): zero to within 1e-12 of the film's own
+    // scales — the characteristic pressure μ|ω|(R/c)² and the Couette flux (|ω|R/2)·c·Δz of a
+    // cell — or of this solution's, whichever is larger. Not by exact zeros: an unloaded
+    // tilting pad sits at the edge of its pressure-free branch, where round-off of the state
+    // (a warm-started equilibrium that differs from a cold one in the last bits) leaves either
+    // ~1e-8 Pa on a few nodes or p = 0 with a multiplier of round-off size; both are the
+    // same degenerate state, and the linearisation (the directional-derivative limit below)
+    // must not jump between them (it moved the compressor's modes by 1.5e-3).
+    const double deg_p = 1e-12 * std::max(pscale, mu * std::abs(omega) * (R / c) * (R / c));
+    const double deg_mu = 1e-12 * std::max(bscale, 0.5 * std::abs(omega) * R * c * dz);
     bool changed = false;
     for (int i = 0; i < S.n_unk; ++i) {
       const int n = S.node_of[i];
       if (S.active[i]) {
         const double mu_i = cell_residual(n, p);  // multiplier ∝ (A p − b)_i
         next[i] = mu_i >= -tol_mu ? 1 : 0;
-        degenerate[i] = mu_i == 0.0 ? 1 : 0;
+        degenerate[i] = std::abs(mu_i) <= deg_mu ? 1 : 0;
       } else {
         next[i] = p[n] < -tol_p ? 1 : 0;
-        degenerate[i] = p[n] == 0.0 ? 1 : 0;
+        degenerate[i] = std::abs(p[n]) <= deg_p ? 1 : 0;
       }
       if (next[i] != S.active[i]) changed = true;
     }
