@@ -187,12 +187,14 @@ def _coarse(name):
 
 
 HTML_SPEEDS = np.arange(100.0, 201.0, 10.0)
+HTML_OPERATING = (120.0, 160.0)  # N_mc = 160 Hz = the top speed / 1.25, as without a range
 
 
 @pytest.fixture(scope="module")
 def html_reports(tmp_path_factory):
     """The HTML report of the compressor on plain bearings with its oil system and without it
-    (coarse grid, 100–200 Hz in 10 Hz steps): {name: (system, page)}."""
+    (coarse grid, 100–200 Hz in 10 Hz steps, operating range 120–160 Hz): {name: (system,
+    page, the text report's lines it gave (text_sink), its directory)}."""
     from rotordyn.report.html import write_html
 
     out = {}
@@ -200,9 +202,10 @@ def html_reports(tmp_path_factory):
         d = tmp_path_factory.mktemp(name)
         s = _coarse(name)
         s.to_toml(d / "m.toml")
+        sink: list[str] = []
         page = write_html(str(d / "m.toml"), d / "r.html", speeds_hz=HTML_SPEEDS,
-                          progress=False)
-        out[name] = (s, page.read_text(encoding="utf-8"))
+                          operating_speed_hz=HTML_OPERATING, progress=False, text_sink=sink)
+        out[name] = (s, page.read_text(encoding="utf-8"), sink, d)
     return out
 
 
@@ -225,7 +228,7 @@ def test_unbalance_and_stability_sections_on_thermal_films(html_reports):
     speed, screened as the report does (same calls: the printed 4 digits)."""
     from rotordyn.report.criteria import Checks, stability_screen
 
-    s, page = html_reports["compressor_plain_thermal"]
+    s, page = html_reports["compressor_plain_thermal"][:2]
     assert "<h2>4b. Unbalance response on thermal films</h2>" in page
     assert "<h2>5a. Stability on thermal films</h2>" in page
     assert "unbalance response at station 3, thermal films" in page  # the Bode title
@@ -248,7 +251,7 @@ def test_unbalance_and_stability_sections_on_thermal_films(html_reports):
         i = int(np.flatnonzero(HTML_SPEEDS == float(r[0]))[0])
         assert float(r[-1]) == float(f"{np.nanmin(ld[i]) + 0.0:.4g}")
         assert float(r[-2]) == float(f"{c.frequencies_hz[i, np.nanargmin(ld[i])]:.4g}")
-    _, cold = html_reports["compressor_plain"]
+    cold = html_reports["compressor_plain"][1]
     assert "thermal films" not in cold and "Isothermal films" not in cold
     assert _cells(cold, "Overall")[0][:2] == ["check", "criterion"]
 
@@ -276,3 +279,118 @@ def test_speeds_without_a_thermal_equilibrium_are_marked_not_plotted():
     checks = Checks()
     equilibrium_check(checks, c, "the Campbell diagram")
     assert checks.rows[0][3] == NOT_RESOLVED and "2 of 3 speeds failed" in checks.rows[0][2]
+
+
+def _block(lines, head: str) -> list[str]:
+    """The lines of the text report's block starting with ``head`` (to the next blank line)."""
+    i = next(k for k, x in enumerate(lines) if x.startswith(head))
+    j = next((k for k in range(i + 1, len(lines)) if not lines[k].strip()), len(lines))
+    return lines[i:j]
+
+
+def _text_cells(line: str) -> list[str]:
+    import re
+
+    return re.split(r"\s{2,}", line.strip())
+
+
+def test_text_report_has_the_thermal_unbalance_response_and_stability(html_reports, tmp_path,
+                                                                      monkeypatch):
+    """report.txt carries sections 4, 4b, 5 and 5a of the HTML report (it had the critical
+    speeds on thermal films but no thermal unbalance response or stability lines): per output
+    station the resonance peaks with their separation margins and the amplitude checks, and
+    the least damped mode at 11 speeds, each block labelled with its films.
+
+    * The HTML report's text (write_html's text_sink, as ``rotordyn report --html`` writes it):
+      the peaks of section 4b and the table of section 5a as the HTML shows them, cell by cell.
+    * ``rotordyn report --out DIR`` without --html, same model, speeds and operating range:
+      report.txt from the isothermal unbalance response to its end (the checks and the overall
+      verdict included) equals the HTML report's text line by line, and the thermal Campbell
+      diagram and unbalance response are computed once each (section 3c's, reused).
+    * Without an oil system the blocks carry no films label and one δ column."""
+    s, page, sink, d = html_reports["compressor_plain_thermal"]
+    head = "unbalance response on thermal films"
+    th = _block(sink, head)
+    assert "unbalance response on isothermal films" in "\n".join(sink)
+    # the peaks of 4b, text against HTML (every station's table)
+    sec = page[page.index("<h2>4b."):page.index("<h2>5.")]
+    html_rows = []
+    k = 0
+    while "<table>" in sec[k:]:
+        rows = _cells(sec[k:], "<table>")
+        html_rows += [r for r in rows[1:]]
+        k = sec.index("</table>", k) + 8
+    text_rows = [_text_cells(x) for x in th if x.strip() and _text_cells(x)[0][0].isdigit()]
+    assert len(html_rows) >= 1 and text_rows == html_rows
+    assert any(x.strip().startswith(("PASS", "FAIL")) and "(station 1)" in x for x in th)
+    # section 5a's table
+    stab = _block(sink, "stability on isothermal and thermal films")
+    i = next(k for k, x in enumerate(stab) if x.strip().startswith("speed (Hz)"))
+    table5a = [_text_cells(x) for x in stab[i:i + 1 + HTML_SPEEDS.size]]
+    assert table5a == _cells(page, "<h2>5a.")
+    assert any("[thermal films]" in x and "stability screening" in x for x in stab)
+    # the text report without --html: the same lines, the thermal results computed once
+    calls = {"campbell": 0, "unbalance_response": 0}
+    for name in calls:
+        real = getattr(rotordyn.analysis, name)
+
+        def count(*a, _real=real, _name=name, **kw):
+            calls[_name] += kw.get("thermal") is True
+            return _real(*a, **kw)
+        monkeypatch.setattr(rotordyn.analysis, name, count)
+    out = tmp_path / "out"
+    err = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        assert main(["report", str(d / "m.toml"), "--out", str(out), "--speeds-hz",
+                     "100:200:10", "--operating-speed-hz", "120", "160"]) == 0, err.getvalue()
+    assert calls == {"campbell": 1, "unbalance_response": 1}
+    text = (out / "report.txt").read_text(encoding="utf-8").splitlines()
+    start = "unbalance response on isothermal films"
+    a = text[next(k for k, x in enumerate(text) if x.startswith(start)):]
+    b = sink[next(k for k, x in enumerate(sink) if x.startswith(start)):]
+    assert a == b and a[-1].startswith("  not evaluated (no stage data) API 617 Level I")
+    assert any(x.startswith("checks: overall FAIL") for x in a)
+    assert any("separation margin" in x and "[thermal films]" in x for x in a)
+    # no oil system: no films label, one δ column
+    cold = html_reports["compressor_plain"][2]
+    assert "thermal films" not in "\n".join(cold) and "isothermal" not in "\n".join(cold)
+    assert _block(cold, "unbalance response: API 684")
+    stab = _block(cold, "stability: the least damped")
+    assert _text_cells(stab[1]) == ["speed (Hz)", "mode (Hz)", "δ"]
+
+
+def test_text_report_marks_speeds_without_a_thermal_equilibrium(tmp_path):
+    """A speed whose thermal equilibrium fails (the oil law's range ends at 85 °C; the DE film
+    exceeds it at 200 Hz, T_max 94.5 °C, and stays below it at 100 and 150 Hz) is listed and
+    written "no thermal equilibrium" in the text report's thermal blocks, never a number: the
+    unbalance response and the stability screen on thermal films, the per-film temperature
+    table (status "error", n/a: it stopped the whole report with exit 1 before) and the
+    checks ("not resolved")."""
+    s = _coarse("compressor_plain_thermal")
+    oil = dataclasses.replace(s.thermal.oil, t_max_c=85.0)
+    s = dataclasses.replace(s, thermal=dataclasses.replace(s.thermal, oil=oil))
+    s.to_toml(tmp_path / "m.toml")
+    out = tmp_path / "out"
+    err = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        assert main(["report", str(tmp_path / "m.toml"), "--out", str(out), "--speeds-hz",
+                     "100,125,200", "--operating-speed-hz", "100", "160"]) == 0, err.getvalue()
+    lines = (out / "report.txt").read_text(encoding="utf-8").splitlines()
+    th = _block(lines, "unbalance response on thermal films")
+    assert "  no thermal equilibrium at 1 of 3 speeds (not linearised: no response, no " \
+        "eigenvalues there): 200 Hz" in th
+    stab = _block(lines, "stability on isothermal and thermal films")
+    row = next(_text_cells(x) for x in stab if x.strip().startswith("200 "))
+    assert row[3:] == ["no thermal equilibrium"] * 2 and float(row[2]) < 0  # isothermal: δ
+    assert any(x.strip().startswith("not resolved thermal equilibrium at every speed of the "
+                                    "Campbell diagram [thermal films]: 1 of 3 speeds failed: "
+                                    "200 Hz") for x in stab)
+    temps = _block(lines, "bearing temperatures and power loss")
+    failed = [r for r in map(_text_cells, temps) if r[:2] in (["NDE bearing", "200"],
+                                                              ["DE bearing", "200"])]
+    assert len(failed) == 2 and all(r[2:9] == ["n/a"] * 7 and r[9] == "error" for r in failed)
+    fr = pd.read_csv(out / "bearing_thermal.csv")
+    bad = fr[fr["speed_hz"] == 200.0]
+    assert (bad["status"] == "error").all() and bad["max_temperature_c"].isna().all()
+    assert "t_max_c" in bad["message"].iloc[0]
+    assert fr[fr["speed_hz"] < 200.0]["status"].eq("ok").all()

@@ -96,6 +96,8 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
     const int k = n % K1;
     if ((k == 0 && D[n + 1]) || (k == Kl && D[n - 1])) D[n] = 1;
   }
+  // a pad's trailing-edge column (below): prescribed pressure, but the pad's last cells
+  std::vector<char> te(N, 0);
   if (pad && any) {
     // a pad film (tilting pad, lobe): the prescribed-pressure gap between the pad's trailing
     // and leading edges is the inlet, but not the trailing-edge column, whose circumferential
@@ -109,8 +111,10 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
     };
     for (int j = 0; j < N; ++j) {
       const int up = omega > 0.0 ? (j + N - 1) % N : (j + 1) % N;
-      if (col_in(j) && !col_in(up))
+      if (col_in(j) && !col_in(up)) {
+        te[j] = 1;
         for (int k = 0; k < K1; ++k) D[j * K1 + k] = 0;
+      }
     }
   }
   // without grooves the inlet is the column of maximum film; where the peak of the film
@@ -174,7 +178,13 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
         continue;
       }
       const int k = n % K1;
-      if (k == 0 || k == Kl) {  // open end: what the internal faces bring leaves through it
+      // open end: what the internal faces bring leaves through it. Not at a pad's trailing-
+      // edge column: its nodes hold the prescribed pressure, and the flux of their face into
+      // the gap (whose thickness averages in the gap's 4 C_p) exceeds what the pad brings, as
+      // in its inner cells; that imbalance is the prescribed pressure's, not ambient oil
+      // drawn in at the two end cells (which took 0.12-0.30 Q_in at T_s there and cooled the
+      // pad's outlet), so every trailing-edge cell passes on just what the pad brings it
+      if ((k == 0 || k == Kl) && !te[static_cast<std::size_t>(n / K1)]) {
         const double B = in[n] - out[n];
         if (B >= 0.0) {
           side_out[n] = B;

@@ -333,3 +333,33 @@ def reduce_coefficients(KH, DH, M, nu):
     j, p = slice(0, 2), slice(2, None)
     Zr = Z[j, j] - Z[j, p] @ np.linalg.solve(Z[p, p], Z[p, j])
     return Zr.real.copy(), Zr.imag / nu
+
+
+def imposed_tilt(f: _core.FilmCoupling, theta_x: float, theta_y: float) -> _core.FilmCoupling:
+    """The film ``f`` on (x, y, θx, θy) turned into a film on (x, y) alone with the tilt
+    (θx, θy) in its base thickness: base_h + S(·, 2)·w(2, ·)·θx + S(·, 3)·w(3, ·)·θy
+    (n_circ, n_axial + 1); ``f`` keeps its first two coordinates."""
+    S, W = np.asarray(f.shape), np.asarray(f.axial_weight)
+    n, k1 = S.shape[0], W.shape[1]
+    b = np.asarray(f.base_h)
+    base = np.full((n, k1), f.geometry.clearance_m) if b.size == 0 else np.broadcast_to(
+        b.reshape(n, -1), (n, k1)).copy()
+    base += np.outer(S[:, 2], W[2] * theta_x) + np.outer(S[:, 3], W[3] * theta_y)
+    f.base_h = np.ascontiguousarray(base)
+    f.coords = list(f.coords)[:2]
+    f.shape = np.ascontiguousarray(S[:, :2])
+    f.axial_weight = np.zeros((0, 0))
+    return f
+
+
+def min_film(s, phis=None) -> tuple[float, float, float]:
+    """(h_min m, its angle deg, its z m) over the solver's films (the thinnest one's; a lobe's
+    core-grid angle mapped to its physical angle with ``phis``)."""
+    h = np.asarray(s.last_h_min, dtype=float)
+    i = int(np.argmin(h))
+    a = float(s.last_h_min_angle_deg[i])
+    if phis is not None:
+        phi = phis[i]
+        j = int(round(a / 360.0 * len(phi))) % len(phi)
+        a = float(np.degrees(phi[j]) % 360.0) if np.isfinite(phi[j]) else math.nan
+    return float(h[i]), a, float(s.last_h_min_z_m[i])

@@ -274,14 +274,23 @@ class FixedGeometryBearing:
                             journal_htc_w_m2k: float = 0.0, bush_htc_w_m2k: float = 0.0,
                             journal_temperature_c: float | None = None,
                             bush_temperature_c: float | None = None, tol_k: float = 1e-6,
-                            model: str = "thd", effective_factor: float = 0.5):
+                            model: str = "thd", effective_factor: float = 0.5,
+                            theta_x_rad: float = 0.0, theta_y_rad: float = 0.0):
         """Thermo-hydrodynamic equilibrium of the lobes under ``load_n`` (N) at ``speed_hz``
         (as :meth:`rotordyn.bearings.TiltingPadBearing.thermal_equilibrium`: per lobe the
         energy equation, each lobe's inlet groove mixing supply oil with the part
         ``carry_over`` of the upstream lobe's hot oil) and K, C with the field frozen: a
         :class:`rotordyn.bearings.pad_thd.PadThdResult` (no pad tilts). ``model="effective"``:
         the effective-temperature model per lobe (``effective_factor`` k), as for tilting
-        pads."""
+        pads.
+
+        ``theta_x_rad``, ``theta_y_rad``: the journal's tilt relative to the bearing (rad; as
+        :func:`rotordyn.bearings.tilt.misaligned_equilibrium`; a pose that closes a lobe's
+        film at an edge is an InputError naming them). With a tilt, or with ``tilt = True``,
+        the lobes' films carry it (:mod:`rotordyn.bearings.tilt_thermal`) and the result
+        adds the moments, the edge film and K4, C4 (4×4 over x, y, θx, θy) at the frozen
+        field. (``config_theta_x_rad``, ``config_theta_y_rad`` are the housing's misalignment
+        in a system; standalone, give the journal's tilt here.)"""
         opts = pad_model_options(model, supply_temperature_c=supply_temperature_c,
                                  supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
                                  effective_factor=effective_factor, tol_k=tol_k,
@@ -289,6 +298,12 @@ class FixedGeometryBearing:
                                  bush_htc_w_m2k=bush_htc_w_m2k,
                                  journal_temperature_c=journal_temperature_c,
                                  bush_temperature_c=bush_temperature_c)
+        if self.tilt or theta_x_rad != 0.0 or theta_y_rad != 0.0:
+            from rotordyn.bearings.tilt_thermal import tilted_thermal_equilibrium
+
+            return tilted_thermal_equilibrium(self, theta_x_rad=theta_x_rad,
+                                              theta_y_rad=theta_y_rad, oil=oil, opts=opts,
+                                              load_n=load_n, speed_hz=speed_hz)
         parts = SystemParts(films=self.films(0, 1, self.name or "bearing"), tables=[])
         return pad_thd_equilibrium(parts, oil=oil, opts=opts, load_n=load_n, speed_hz=speed_hz,
                                    clearance_m=self.clearance_m, whirl_ratio=None)

@@ -133,6 +133,11 @@ class PadThdResult:
     Fields per pad (N_pad, n_axial + 1): ``temperature_c``, ``viscosity_pa_s`` (the frozen
     field), ``inlet_mask``, ``flows`` (face flows, cell dissipation and area).
 
+    A tilted journal (:meth:`rotordyn.bearings.FixedGeometryBearing.thermal_equilibrium` with
+    ``theta_x_rad``, ``theta_y_rad`` or ``tilt = True``): ``theta_x_rad``, ``theta_y_rad``,
+    the moments ``moment_n_m`` (Mx, My) N·m, the edge film ``h_min_m`` and its ``h_min_z_m``,
+    and ``K4``, ``C4`` (4×4 over x, y, θx, θy, ΔH = −K Δr − C Δṙ) at the frozen field.
+
     ``thermal_model = "effective"`` (the effective-temperature model per pad): each pad is
     isoviscous at μ(T_eff); ``mean_temperature_c`` (also :attr:`effective_temperature_c`) is
     T_eff = T_in + k ΔT, ``max_temperature_c`` = ``outlet_temperature_c`` = T_in + ΔT,
@@ -169,6 +174,16 @@ class PadThdResult:
     status: str = "ok"
     message: str = ""
     thermal_model: str = "thd"
+    # a tilted journal (fixed-geometry bearings, rotordyn.bearings.tilt_thermal): its tilt
+    # relative to the bearing (rad), the film moments on it (N·m, about x, y), the edge film
+    # (m, and its z) and K, C 4×4 over (x, y, θx, θy) at the frozen field; None untilted
+    theta_x_rad: float = 0.0
+    theta_y_rad: float = 0.0
+    moment_n_m: np.ndarray | None = field(default=None, repr=False)
+    h_min_m: float = math.nan
+    h_min_z_m: float = math.nan
+    K4: np.ndarray | None = field(default=None, repr=False)
+    C4: np.ndarray | None = field(default=None, repr=False)
 
     @property
     def effective_temperature_c(self) -> np.ndarray:
@@ -237,6 +252,13 @@ class PadThdResult:
             for i, a in enumerate("xy"):
                 for j, b in enumerate("xy"):
                     df[f"{name}{a}{b}_{unit}"] = float(A[i, j])
+        if self.K4 is not None:  # a tilted journal
+            df["theta_x_rad"] = self.theta_x_rad
+            df["theta_y_rad"] = self.theta_y_rad
+            df["moment_x_n_m"] = float(self.moment_n_m[0])
+            df["moment_y_n_m"] = float(self.moment_n_m[1])
+            df["h_min_m"] = self.h_min_m
+            df["h_min_z_m"] = self.h_min_z_m
         df["status"] = self.status
         df["message"] = self.message
         return df

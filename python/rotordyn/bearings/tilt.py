@@ -37,6 +37,7 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 import threading
 
+from rotordyn.bearings._film import imposed_tilt, min_film as _min_film
 from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
 from rotordyn.bearings.journal import MAX_SPEED_HZ, JournalBearing
 from rotordyn.errors import InputError
@@ -137,19 +138,6 @@ def _lobe_solver(bearing: FixedGeometryBearing):
     return hit
 
 
-def _min_film(s, phis=None) -> tuple[float, float, float]:
-    """(h_min m, its angle deg, its z m) over the solver's films (the thinnest one's; a lobe's
-    core-grid angle mapped to its physical angle with ``phis``)."""
-    h = np.asarray(s.last_h_min, dtype=float)
-    i = int(np.argmin(h))
-    a = float(s.last_h_min_angle_deg[i])
-    if phis is not None:
-        phi = phis[i]
-        j = int(round(a / 360.0 * len(phi))) % len(phi)
-        a = float(np.degrees(phi[j]) % 360.0) if np.isfinite(phi[j]) else math.nan
-    return float(h[i]), a, float(s.last_h_min_z_m[i])
-
-
 def _solver(bearing) -> _core.SystemSolver:
     """This thread's four-coordinate film of ``bearing`` (built on first use)."""
     if isinstance(bearing, FixedGeometryBearing):
@@ -229,23 +217,6 @@ def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing, *, x_m: 
     else:
         raise InputError(f"method: expected 'perturbation' or 'finite_difference', got {method!r}")
     return np.array(lin.KH), np.array(lin.DH)
-
-
-def imposed_tilt(f: _core.FilmCoupling, theta_x: float, theta_y: float) -> _core.FilmCoupling:
-    """The film ``f`` on (x, y, θx, θy) turned into a film on (x, y) alone with the tilt
-    (θx, θy) in its base thickness: base_h + S(·, 2)·w(2, ·)·θx + S(·, 3)·w(3, ·)·θy
-    (n_circ, n_axial + 1); ``f`` keeps its first two coordinates."""
-    S, W = np.asarray(f.shape), np.asarray(f.axial_weight)
-    n, k1 = S.shape[0], W.shape[1]
-    b = np.asarray(f.base_h)
-    base = np.full((n, k1), f.geometry.clearance_m) if b.size == 0 else np.broadcast_to(
-        b.reshape(n, -1), (n, k1)).copy()
-    base += np.outer(S[:, 2], W[2] * theta_x) + np.outer(S[:, 3], W[3] * theta_y)
-    f.base_h = np.ascontiguousarray(base)
-    f.coords = list(f.coords)[:2]
-    f.shape = np.ascontiguousarray(S[:, :2])
-    f.axial_weight = np.zeros((0, 0))
-    return f
 
 
 @dataclass(frozen=True)

@@ -45,9 +45,10 @@ from rotordyn.report.sections import (COEFFICIENT_HEADER, CRITICAL_HEADER, MERGE
                                       critical_speed_table, critical_text_lines,
                                       not_resonance_note, shape_source, shapes_for,
                                       thermal_critical_text_lines, thermal_results)
+from rotordyn.report import dynamics_text
 from rotordyn.report import thermal_dynamics as thermal_dyn
 from rotordyn.report.criteria import (NOT_RESOLVED, SCREEN_LOG_DEC, Checks, critical_speed_map,
-                                      speed_range, stability_screen)
+                                      speed_range)
 
 
 
@@ -403,21 +404,23 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                  "is refined at every peak." + _isothermal_note(s, tu is not None) + "</p>")
     iso = thermal_dyn.ISOTHERMAL if s.thermal is not None else ""
     checks.films = iso
-    parts.append(thermal_dyn.unstable_html(u, checks))
+    # the text report's lines of sections 4, 4b, 5 and 5a, from the same rows (report.txt)
+    dyn = dynamics_text.response_head(iso, u_kgm, where, rng.n_mc_hz)
+    parts.append(thermal_dyn.unstable_html(u, checks, dyn))
     clear = {b.station: getattr(b, "clearance_m", None) for b in s.bearings}
     for st in outs:
         parts += thermal_dyn.station_html(u, checks, st, rng.n_mc_hz, clear.get(st), svg,
-                                          _table, _verdict, iso)
+                                          _table, _verdict, iso, dyn)
     if tu is not None:  # the same on thermal films: section 3c's response
+        dyn += dynamics_text.response_head(thermal_dyn.THERMAL, u_kgm, where, rng.n_mc_hz)
         parts.append(thermal_dyn.response_html(tu, checks, outs, rng.n_mc_hz, clear, svg,
-                                               _table, _verdict))
+                                               _table, _verdict, dyn))
     parts.append("<p>AF: amplification factor N_c/(N₂ − N₁) by the half-power method (≤: a "
                  "bound, one half-power speed outside the range); SM: separation margin from "
                  "the operating speed range.</p>")
 
     # 5. stability over speed
-    checks.films = iso
-    ld = stability_screen(checks, c, window_hz, operating_speed_hz)
+    ld, iso_added = thermal_dyn.isothermal_screen(checks, c, window_hz, operating_speed_hz, iso)
     parts.append("<h2>5. Stability: logarithmic decrement of the forward rotor modes</h2>"
                  "<figure>" + svg(_log_dec_figure(c, ld, operating_speed_hz, (
                      "log decrement of the forward rotor modes" + (f", {iso}" if iso else ""))))
@@ -427,7 +430,14 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                  + "</figcaption></figure>")
     if tc is not None:  # the same on thermal films: section 3c's Campbell diagram
         parts.append(thermal_dyn.stability_html(tc, checks, window_hz, operating_speed_hz, svg,
-                                                _log_dec_figure, _table, c, ld))
+                                                _log_dec_figure, _table, c, ld, dyn,
+                                                iso_added))
+    else:
+        dyn += dynamics_text.stability_head(iso, window_hz, False) + dynamics_text.log_dec_lines(
+            thermal_dyn.LOG_DEC_HEADER_ONE, thermal_dyn.log_dec_rows(c, ld, None, None),
+            iso_added)
+    if text_sink is not None:
+        text_sink += dyn
     checks.films = iso  # Level I and the active bearing's map: isothermal films
 
     # 5b. API 617 Level I with the stages' anticipated cross-coupling

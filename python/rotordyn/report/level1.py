@@ -59,15 +59,23 @@ def text_lines(r, why: str) -> list[str]:
     return out
 
 
-def html_section(r, why: str, checks, svg, table) -> str:
-    """The HTML section; the criteria go into ``checks`` (PASS/FAIL only where they apply)."""
-    head = "<h2>5b. API 617 Level I stability analysis</h2>"
+def add_checks(r, why: str, checks) -> None:
+    """Level I's criteria into the report's ``checks`` (PASS/FAIL only where they apply; ``r``
+    None: one row saying why it was not evaluated)."""
     if r is None:
         checks.add("API 617 Level I", "Q_0/Q_A ≥ 2 and δ_A ≥ 0.1", why, why)
-        return head + f"<p class=\"na\">{html.escape(why)}. Give the stages as [[stage]] tables " \
-            "in the model file (docs/model-file.md) and the operating speed range.</p>"
+        return
     for name, crit, val, v in r.checks():
         checks.add(name, crit, val, v)
+
+
+def html_section(r, why: str, checks, svg, table) -> str:
+    """The HTML section; the criteria go into ``checks`` (:func:`add_checks`)."""
+    head = "<h2>5b. API 617 Level I stability analysis</h2>"
+    add_checks(r, why, checks)
+    if r is None:
+        return head + f"<p class=\"na\">{html.escape(why)}. Give the stages as [[stage]] tables " \
+            "in the model file (docs/model-file.md) and the operating speed range.</p>"
     if r.status != "ok":
         return head + f"<p class=\"nr\">{NOT_RESOLVED}: {html.escape(r.message)}</p>"
     q0 = (f"{r.q0_n_per_m / 1e6:.4g} MN/m" if np.isfinite(r.q0_n_per_m)

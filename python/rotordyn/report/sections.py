@@ -408,19 +408,27 @@ def coefficient_text_lines(coeffs) -> list[str]:
 
 
 def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, outdir,
-                        operating_speed_hz=None, campbell=None) -> list[str]:
+                        operating_speed_hz=None, campbell=None, level1=None) -> list[str]:
     """The text report's critical speeds (with their sources), the mode shape at each one
     (``critical_mode_<k>.png``, ``critical_speeds.csv``) and the bearings' coefficients over
     speed (``bearing_coefficients.csv``/``.png``) under ``outdir``, as the HTML report has
     them; with an oil system (``[thermal]``) the bearing temperatures, power loss and K, C at
-    the thermal equilibrium (:mod:`rotordyn.report.thermal`). ``rng``:
-    :class:`rotordyn.report.criteria.SpeedRange`; ``campbell``: a Campbell diagram over
-    ``rng.speeds_hz`` already computed (else computed here). Returns the lines."""
+    the thermal equilibrium (:mod:`rotordyn.report.thermal`) and the critical speeds on thermal
+    films; then the unbalance response and the stability screen on the isothermal and (with an
+    oil system) thermal films (:func:`rotordyn.report.thermal_dynamics.text_sections`: the
+    thermal ones from the same Campbell diagram and response as the critical speeds, not
+    computed twice) and the checks with their overall verdict, Level I's (``level1``: the
+    (Level1Result or None, why) of :func:`rotordyn.report.level1.evaluate`) among them.
+    ``rng``: :class:`rotordyn.report.criteria.SpeedRange`; ``campbell``: a Campbell diagram
+    over ``rng.speeds_hz`` already computed (else computed here). Returns the lines."""
     from pathlib import Path
 
     import matplotlib.pyplot as plt
 
     from rotordyn.plot.coefficients import bearing_coefficients as coefficient_figure
+    from rotordyn.report import level1 as level1_report
+    from rotordyn.report import thermal_dynamics
+    from rotordyn.report.criteria import Checks
 
     outdir = Path(outdir)
     sp = rng.speeds_hz
@@ -429,7 +437,7 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
     if c is None:
         c = (analysis.campbell(system, sp, pc, ay) if system.bearings
              else analysis.rotor_campbell(system, sp, n_modes=12))
-    u, *_ = api_response(system, sp, rng.n_mc_hz, pc, ay, operating_speed_hz)
+    u, _, u_kgm, where = api_response(system, sp, rng.n_mc_hz, pc, ay, operating_speed_hz)
     crit = critical_speed_table(c, u)
     crit.to_csv(outdir / "critical_speeds.csv", index=False)
     shapes = shapes_for(system, crit, rng.n_mc_hz, 1.5 * float(sp[-1]), pc, ay)
@@ -448,11 +456,21 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
 
     th, th_coeffs, note = thermal_frames(system, sp, pc, ay)
     write_thermal(th, th_coeffs, outdir)
-    tcrit, tnote, _ = thermal_critical_speeds(system, rng, pc, ay, operating_speed_hz)
+    tcrit, tnote, tc, tu = thermal_results(system, rng, pc, ay, operating_speed_hz)
     if tcrit is not None:
         tcrit.to_csv(outdir / "critical_speeds_thermal.csv", index=False)
+    checks = Checks()
+    films = thermal_dynamics.ISOTHERMAL if getattr(system, "thermal", None) is not None else ""
+    dyn = thermal_dynamics.text_sections(
+        checks, response=(u, u_kgm, where), thermal_response=tu, campbell=c,
+        thermal_campbell=tc, outs=list(u.stations), n_mc_hz=rng.n_mc_hz,
+        clear={b.station: getattr(b, "clearance_m", None) for b in system.bearings},
+        window_hz=1.5 * float(sp[-1]), op_range=operating_speed_hz, films=films)
+    checks.films = films  # Level I: isothermal films (as in the HTML report)
+    if level1 is not None:
+        level1_report.add_checks(*level1, checks)
     return (lines + coefficient_text_lines(coeffs) + thermal_text_lines(th, th_coeffs, note)
-            + thermal_critical_text_lines(tcrit, tnote))
+            + thermal_critical_text_lines(tcrit, tnote) + dyn + checks.text_lines())
 
 
 def coefficient_speeds(speeds_hz, n: int = 11) -> np.ndarray:

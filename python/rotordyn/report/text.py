@@ -190,12 +190,12 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         from rotordyn.report import sections
         from rotordyn.report.criteria import speed_range
 
-        rng = speed_range(s, operating_speed_hz or ((45.0, 55.0) if paper else None),
-                          speeds_hz, None, paper)
+        op = operating_speed_hz or ((45.0, 55.0) if paper else None)  # as the HTML report
+        rng = speed_range(s, op, speeds_hz, None, paper)
         same = campbell_04 is not None and np.array_equal(campbell_04.speeds_hz, rng.speeds_hz)
         for text in sections.write_text_sections(
                 s, rng, 0.4e6 if active else 0.0, 0.0 if active else None, outdir,
-                operating_speed_hz, campbell=campbell_04 if same else None):
+                op, campbell=campbell_04 if same else None, level1=(l1, why)):
             say(text)
     (outdir / "report.txt").write_text("\n".join(lines) + "\n")
     print(f"wrote {outdir}/report.txt and tables/figures", file=sys.stderr)

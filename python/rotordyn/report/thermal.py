@@ -18,7 +18,7 @@ import numpy as np
 from rotordyn._common.status import CONVERGED
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
 from rotordyn.analysis.thermal import system_thermal_equilibrium
-from rotordyn.errors import InputError
+from rotordyn.errors import InputError, RotordynError
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -60,6 +60,9 @@ def thermal_frames(system, speeds_hz, chamber_pressure_pa: float, config_ay_m,
                                            config_ay_m=config_ay_m)
         except InputError as exc:
             return None, None, f"not evaluated: {exc}"
+        except RotordynError as exc:  # e.g. a film hotter than the oil law's range: the
+            tables.append((float(f), exc))  # speed's rows say so, never a number
+            continue
         fr = r.to_frame()
         if r.status not in CONVERGED:
             num = fr.select_dtypes("number").columns.difference(["speed_hz",
@@ -71,11 +74,44 @@ def thermal_frames(system, speeds_hz, chamber_pressure_pa: float, config_ay_m,
                                                config_ay_m))
     if not tables:
         return None, None, "not evaluated: no positive speed in the analysed range"
+    tables = _failed_rows(system, tables)
     model = tables[0]["thermal_model"].iloc[0]
     note = (f"thermal model {model} ([thermal] of the model file), oil supplied at "
             f"{tables[0]['supply_temperature_c'].iloc[0]:g} °C")
     return (pd.concat(tables, ignore_index=True),
             pd.concat(coeffs, ignore_index=True) if coeffs else None, note)
+
+
+def _failed_rows(system, tables) -> list:
+    """``tables`` with each (speed, error) of a thermal equilibrium that raised replaced by its
+    rows: the films of the speeds that converged (else the bearings), NaN numbers, status
+    "error" and the error's text."""
+    import pandas as pd
+
+    ok = [t for t in tables if not isinstance(t, tuple)]
+    names = list(ok[0]["bearing"]) if ok else [b.name or str(i)
+                                                 for i, b in enumerate(system.bearings)]
+    cols = list(ok[0].columns) if ok else ["speed_hz", "supply_temperature_c", "bearing",
+                                           "thermal_model", "effective_temperature_c",
+                                           "max_temperature_c", "inlet_temperature_c",
+                                           "power_loss_w", "film_flow_m3_s",
+                                           "supply_flow_m3_s", "journal_y_m", "status",
+                                           "message"]
+    out = []
+    for t in tables:
+        if not isinstance(t, tuple):
+            out.append(t)
+            continue
+        f, exc = t
+        fr = pd.DataFrame({c: np.full(len(names), np.nan) for c in cols})
+        fr["speed_hz"] = f
+        fr["supply_temperature_c"] = system.thermal.supply_temperature_c
+        fr["bearing"] = names
+        fr["thermal_model"] = system.thermal.model
+        fr["status"] = "error"
+        fr["message"] = str(exc)
+        out.append(fr)
+    return out
 
 
 def thermal_rows(frame) -> list[tuple]:
@@ -94,8 +130,11 @@ TOTAL_HEADER = ("bearing", "speed (Hz)", "T_max (°C)", "power loss (W)")
 
 def total_rows(frame) -> list[tuple]:
     """Table rows (:data:`TOTAL_HEADER`) of :func:`bearing_totals`."""
-    return [(d.bearing, f"{d.speed_hz:.4g}", f"{d.max_temperature_c:.2f}",
-             f"{d.power_loss_w:.4g}") for d in bearing_totals(frame).itertuples(index=False)]
+    def num(x, fmt):
+        return format(x, fmt) if np.isfinite(x) else "n/a"
+    return [(d.bearing, f"{d.speed_hz:.4g}", num(d.max_temperature_c, ".2f"),
+             num(d.power_loss_w, ".4g"))
+            for d in bearing_totals(frame).itertuples(index=False)]
 
 
 def bearing_totals(frame) -> pd.DataFrame:
@@ -104,7 +143,8 @@ def bearing_totals(frame) -> pd.DataFrame:
     bearing = frame["bearing"].str.replace(r"\.(pad|lobe)\d+$", "", regex=True)
     g = frame.assign(bearing=bearing).groupby(["bearing", "speed_hz"], sort=False)
     return g.agg(max_temperature_c=("max_temperature_c", "max"),
-                 power_loss_w=("power_loss_w", "sum")).reset_index()
+                 power_loss_w=("power_loss_w", lambda x: x.sum(min_count=1))  # NaN: failed
+                 ).reset_index()
 
 
 def thermal_text_lines(frame, coeffs, note: str) -> list[str]:
