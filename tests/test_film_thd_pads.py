@@ -40,6 +40,7 @@ import rotordyn
 from rotordyn import _core
 from rotordyn.bearings import FixedGeometryBearing, Oil, TiltingPadBearing
 from rotordyn.errors import InputError
+from thd_balance import upwind_faces
 
 MODELS = Path(__file__).parent / "data" / "models"
 VG32 = Oil(viscosity_law="walther", t1_c=40.0, nu1_mm2_s=32.0, t2_c=100.0, nu2_mm2_s=5.4,
@@ -98,20 +99,13 @@ def _pad_balance(T, D, fl, rho_c, ts):
     inflow = np.zeros_like(T)
     outflow = np.zeros_like(T)
     heat = 0.0
-    for j in range(n):
-        for k in range(k1):
-            faces = [((j, k), ((j + 1) % n, k), qp[j, k])]
-            if k < k1 - 1:
-                faces.append(((j, k), (j, k + 1), qz[j, k]))
-            for a, b, F in faces:
-                if F < 0:
-                    a, b, F = b, a, -F
-                inflow[b] += F
-                outflow[a] += F
-                if D[b] and not D[a]:
-                    heat += F * T[a]          # out of the pad into the gap (trailing edge)
-                elif D[a] and not D[b]:
-                    heat -= F * T[a]          # from the inlet gap into the pad
+    for a, b, F in upwind_faces(qp, qz):
+        inflow[b] += F
+        outflow[a] += F
+        if D[b] and not D[a]:
+            heat += F * T[a]          # out of the pad into the gap (trailing edge)
+        elif D[a] and not D[b]:
+            heat -= F * T[a]          # from the inlet gap into the pad
     imb = 0.0
     for j in range(n):
         for k in range(k1):
@@ -306,18 +300,11 @@ def _pad_flows(T, D, fl):
     inflow, outflow = np.zeros_like(T), np.zeros_like(T)
     te = np.zeros(T.shape, bool)
     q_in = 0.0
-    for j in range(n):
-        for k in range(k1):
-            faces = [((j, k), ((j + 1) % n, k), qp[j, k])]
-            if k < k1 - 1:
-                faces.append(((j, k), (j, k + 1), qz[j, k]))
-            for a, b, F in faces:
-                if F < 0:
-                    a, b, F = b, a, -F
-                inflow[b] += F
-                outflow[a] += F
-                if D[a] and not D[b]:
-                    q_in += F
+    for a, b, F in upwind_faces(qp, qz):
+        inflow[b] += F
+        outflow[a] += F
+        if D[a] and not D[b]:
+            q_in += F
     for j in range(n):                        # trailing-edge cells: the gap downstream
         te[j] = ~D[j] & D[(j + 1) % n]
     B = inflow - outflow
@@ -386,18 +373,11 @@ def test_the_trailing_edge_corners_draw_no_ambient_oil():
         qp, qz = fl["q_phi_m3_s"], fl["q_z_m3_s"]
         inflow, outflow = np.zeros_like(T), np.zeros_like(T)
         sources = {}
-        for j in range(n):
-            for kk in range(k1):
-                faces = [((j, kk), ((j + 1) % n, kk), qp[j, kk])]
-                if kk < k1 - 1:
-                    faces.append(((j, kk), (j, kk + 1), qz[j, kk]))
-                for a, b, F in faces:
-                    if F < 0:
-                        a, b, F = b, a, -F
-                    inflow[b] += F
-                    outflow[a] += F
-                    if F > 0:
-                        sources.setdefault(b, []).append(a)
+        for a, b, F in upwind_faces(qp, qz):
+            inflow[b] += F
+            outflow[a] += F
+            if F > 0:
+                sources.setdefault(b, []).append(a)
         te = [(j, kk) for j in range(n) for kk in range(k1) if not D[j, kk] and D[(j + 1) % n, kk]]
         assert len(te) == k1
         for c in te:  # a mixing cell with heating only: not below all it receives

@@ -6,6 +6,19 @@ take, the dissipation of the film's cells and the worst relative mass defect of 
 import numpy as np
 
 
+def upwind_faces(qp, qz):
+    """Every face of the grid as (from cell, to cell, flow ≥ 0), oriented along its flow:
+    ``qp`` (n_circ, n_axial + 1) the φ-faces j+1/2 (+ with φ), ``qz`` the axial faces k+1/2."""
+    n, k1 = np.asarray(qp).shape
+    for j in range(n):
+        for k in range(k1):
+            faces = [((j, k), ((j + 1) % n, k), qp[j, k])]
+            if k < k1 - 1:
+                faces.append(((j, k), (j, k + 1), qz[j, k]))
+            for a, b, F in faces:
+                yield (b, a, -F) if F < 0 else (a, b, F)
+
+
 def balance(T, inlet_mask, flows, rho_c, ts, h_wall=0.0, t_wall=0.0):
     """``T``, ``inlet_mask``: (n_circ, n_axial + 1); ``flows``: dict with ``q_phi_m3_s``
     (face j+1/2, + with φ), ``q_z_m3_s`` (face k+1/2), ``dissipation_w``, ``area_m2``;
@@ -19,15 +32,7 @@ def balance(T, inlet_mask, flows, rho_c, ts, h_wall=0.0, t_wall=0.0):
     inflow = np.zeros_like(T)
     outflow = np.zeros_like(T)
     heat = 0.0
-    faces = []
-    for j in range(n):
-        for k in range(k1):
-            faces.append(((j, k), ((j + 1) % n, k), qp[j, k]))
-            if k < k1 - 1:
-                faces.append(((j, k), (j, k + 1), qz[j, k]))
-    for a, b, F in faces:
-        if F < 0:
-            a, b, F = b, a, -F
+    for a, b, F in upwind_faces(qp, qz):
         inflow[b] += F
         outflow[a] += F
         if D[b] and not D[a]:

@@ -9,22 +9,7 @@ import numpy as np
 
 def track_modes_reference(eigenvalues: np.ndarray, shapes=None, *, weight: np.ndarray | None = None,
                 eig_weight: float = 0.2, min_mac: float = 0.3) -> np.ndarray:
-    """Tracked mode ids along a line of points.
-
-    eigenvalues: (n_points, k) complex, 1/s, the modes of each point in any order (NaN for a
-    point or a slot without a mode). shapes: (n_points, n, k) complex (or a list of (n, k_i)
-    arrays padded to k), the matching mode shapes on one set of coordinates; None tracks by
-    eigenvalue proximity alone. Returns ``mode_id``: (n_points, k) int64, the id of each slot,
-    -1 where there is no mode. Ids start at 0 in the order of the first point's slots; a mode
-    that appears later (e.g. it enters a truncated set of the lowest modes) gets the next
-    unused id.
-
-    Each point is matched with the last point where a mode was seen, by the assignment that
-    minimises Σ (1 − MAC) + eig_weight·|Δλ|/scale, scale = max(|λ|) over the two points.
-    A pair with MAC < ``min_mac`` (with shapes) or whose eigenvalues differ by more than 10 % of
-    the scale (without shapes) is not matched: the slot starts a new id (a mode that leaves a
-    truncated set and another that enters it are not joined).
-    """
+    """The former rotordyn.analysis.tracking.track_modes, as it was (same arguments and ids)."""
     from scipy.optimize import linear_sum_assignment
     lam = np.asarray(eigenvalues, dtype=complex)
     n_pts, k = lam.shape
