@@ -62,7 +62,8 @@ def smooth_branch():
 def test_smooth_forced_branch_equals_shooting_at_its_speeds(smooth_branch):
     """Each point of the HB speed branch against the shooting at that point's speed (rtol
     1e-10, tol 1e-9, started from the point's state): every sample of every coordinate within
-    1e-6 of the orbit amplitude (H = 12; measured below 3e-8), the multipliers within 1e-4,
+    1e-6 of the orbit amplitude (H = 12; measured ≤ 2.9e-9), the multipliers within 1e-4
+    (measured ≤ 4.8e-5),
     the same stability (the orbits are unstable, |μ_c| ≈ 1.025); the period is 1/speed to
     1e-12 and the speed grows along the branch."""
     s, ub, br = smooth_branch
@@ -151,6 +152,26 @@ def test_rig_branch_rechecks_the_multipliers_near_the_unit_circle(rig_hb_branch)
             assert o.stats["monodromy_rtol"] > 0
         else:
             assert o.stats["monodromy_rtol"] == 0.0
+
+
+def test_rig_branch_over_ay_uses_the_exact_spring_force_derivative(rig_hb_branch):
+    """vary="config_ay_m" (∂R/∂a_y = K·∂a/∂a_y in the constant harmonic, no difference
+    quotient): 3 points up from −1.85 mm from the branch's HB cycle; the last against the
+    shooting at its a_y (rtol 1e-8, tol 1e-7): amplitude within 1e-3 c, period 1e-4 (measured
+    over 4 points: ≤ 4.4e-4 c, 3.3e-5); the amplitude falls as a_y rises towards the Hopf
+    point (tests/test_continuation.py's shooting branch)."""
+    rig, br0 = rig_hb_branch
+    br = rd.continuation(rig, "config_ay_m", (-3e-3, 0.0), br0.orbits[0], method=HB,
+                         tol=1e-8, ds=0.05, max_points=3, rtol=1e-7)
+    assert br.ok and len(br) == 3, br.message
+    assert br.stats["fd_evaluations"] == 0
+    assert np.all(np.diff(br.parameter) > 0) and np.all(np.diff(br.amplitude_m[:, 0]) < 0)
+    o = br.orbits[-1]
+    sh = rd.periodic_orbit(rig, 50.0, 0.05e6, o.config_ay_m, start=(o.r[0], o.v[0]),
+                           period_s=o.period_s, rtol=1e-8, tol=1e-7)
+    assert sh.ok, sh.message
+    assert abs(o.amplitude() - sh.amplitude()) < 1e-3 * br.clearance_m[0]
+    assert abs(o.period_s - sh.period_s) < 1e-4 * sh.period_s
 
 
 # --------------------------------------------------------- a fold: the compressor's oil whip
@@ -273,6 +294,17 @@ def linear_orbit():
     o = rd.periodic_orbit(s, 60.0, kind="forced", unbalances=[(3, 1e-3, 30.0)], n_out=11)
     assert o.ok
     return s, o
+
+
+def test_a_start_that_does_not_converge_is_a_status(linear_orbit):
+    """A start the first corrector cannot converge under the options (tol 1e-30 in one
+    Newton iteration) is a branch with status ``not_converged``, no points, ``stop =
+    "start"`` and the corrector's message (never an exception)."""
+    s, o = linear_orbit
+    br = rd.continuation(s, "speed_hz", (50.0, 80.0), o, unbalances=[(3, 1e-3, 30.0)],
+                         method=HB, harmonics=2, tol=1e-30, max_iter=1)
+    assert br.status == "not_converged" and br.stop == "start" and len(br) == 0
+    assert "did not converge in 1 Newton iterations" in br.message
 
 
 @pytest.mark.parametrize("kw, field", [
