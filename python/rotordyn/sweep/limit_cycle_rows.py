@@ -141,7 +141,7 @@ class _Line:
         return (float(p.get("speed_hz", 50.0)), float(p.get("chamber_pressure_pa", 0.0)),
                 p.get("config_ay_m"))
 
-    def hb(self) -> dict:
+    def corrector_options(self) -> dict:
         """The continuation's keywords of the method (shooting: its correctors)."""
         if self.method == "harmonic_balance":
             return {"method": self.method, "harmonics": self.harmonics,
@@ -225,7 +225,7 @@ def _branch(job, line, hrow, span, ys):
         ds0 = min(ds, max(0.5 * a0, 2e-3))
         kw = dict(ds=ds0, ds_min=min(1e-3, 0.5 * ds0),
                   ds_max=ds_max, param_scale=span, rtol=line.rtol, tol=line.tol,
-                  sensitivity_rtol=line.srtol, n_out=101, **line.hb())
+                  sensitivity_rtol=line.srtol, n_out=101, **line.corrector_options())
         mp = int(o.get("max_points", DEFAULTS["max_points"]))
         out = []
         for direction in (sgn, -sgn):
