@@ -72,6 +72,13 @@ def main() -> int:
     br = rd.continuation(lin, "speed_hz", (50.0, 200.0), orbit, unbalances=ub, ds=0.05,
                          max_points=3)
     assert br.ok, br.message
+    # harmonic balance: one orbit and a branch with its corrector (the Floquet flow route too)
+    hb = rd.periodic_orbit(lin, 60.0, kind="forced", unbalances=ub, method="harmonic_balance",
+                           harmonics=2)
+    assert hb.ok, hb.message
+    br = rd.continuation(lin, "speed_hz", (50.0, 200.0), hb, unbalances=ub, ds=0.05,
+                         max_points=3, method="harmonic_balance", harmonics=2, floquet="flow")
+    assert br.ok, br.message
     rd.modes(lin, n_modes=6)
     rd.modes(lin, n_modes=6)  # the cached operator
     rd.unbalance_response(lin, ub, [40.0, 80.0, 120.0])

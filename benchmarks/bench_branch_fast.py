@@ -21,6 +21,15 @@ the unstable cycles and back past the fold near 126.6 Hz. The speed has no param
 sensitivity: ``fast`` keeps the central-difference ∂R/∂p there (Broyden and the screening
 remain).
 
+Harmonic balance (mode ``hb`` or ``hb:H``: ``rd.continuation(..., method="harmonic_balance",
+harmonics=H)``, default H = 8, residual tol ``--hb-tol`` 1e-6, its own constant step
+``--hb-ds``): its arclength measures the Fourier coefficients (not the start state), so its
+points are not the shooting's; it is compared with the baseline **at its own parameter
+values** by interpolating the baseline (cubic splines of A², T and |μ_c| in the parameter,
+possible where the baseline does not fold), with the interpolation's own error estimated by
+interpolating the baseline's odd points from its even ones. Each point's Floquet route
+(samples, or the sensitivity flow within ``floquet_margin`` of the unit circle) is printed.
+
 ``--repeat N`` runs the modes N times interleaved (exact, fast, exact, fast, …) and prints the
 median CPU and wall of each and the median CPU ratio of every mode to the first.
 
@@ -34,6 +43,7 @@ bifurcations (kinds, parameters). Load printed before and after each mode.
     python benchmarks/bench_branch_fast.py --model compressor --modes exact fast --repeat 3
     python benchmarks/bench_branch_fast.py --modes sensitivities fast --ds 0.05
     python benchmarks/bench_branch_fast.py --modes sensitivities fast:1e-4:0   # never re-run
+    python benchmarks/bench_branch_fast.py --modes exact fast hb --quiet   # HB beside fast
 """
 
 from __future__ import annotations
@@ -106,6 +116,132 @@ def compare(base, br, unit: str) -> str:
     return "\n  ".join(lines)
 
 
+def compare_interp(base, br, unit: str) -> str:
+    """The branch ``br`` against the baseline at br's own parameter values: the baseline
+    interpolated by cubic splines of A², T and |μ_c| in the parameter over its monotonic
+    part, and (near a Hopf point A(p) is steep, so a small shift along the branch is a large
+    change of A at fixed p) the parameter at br's amplitude (a spline of p in A). The
+    interpolation's own error is estimated from the baseline's odd points interpolated from
+    its even ones. Differences are split at the baseline's |μ_c| = 0.99: nearer the unit
+    circle a shooting point at tol is uncertain by up to tol/(1 − |μ_c|) along the branch."""
+    from scipy.interpolate import CubicSpline
+
+    p = np.asarray(base.parameter, float)
+    d = np.sign(p[-1] - p[0])
+    k = 1
+    while k < len(p) and (p[k] - p[k - 1]) * d > 0:
+        k += 1
+    if k < 4:
+        return "not compared by interpolation: the baseline is not monotonic in p"
+    c = base.clearance_m[0]
+    idx = np.arange(k) if d > 0 else np.arange(k)[::-1]
+    ps, A, T, mu = (p[idx], base.amplitude_m[idx, 0], base.period_s[idx],
+                    base.max_multiplier[idx])
+
+    def splines(j):
+        return (CubicSpline(ps[j], A[j] ** 2), CubicSpline(ps[j], T[j]),
+                CubicSpline(ps[j], mu[j]))
+
+    fA, fT, fm = splines(np.arange(len(ps)))
+    q = np.asarray(br.parameter, float)
+    inside = (q >= ps[0]) & (q <= ps[-1])
+    if not inside.any():
+        return "no point inside the baseline's parameter range"
+    qi, Ai = q[inside], br.amplitude_m[inside, 0]
+    dA = np.abs(np.sqrt(np.maximum(fA(qi), 0)) - Ai) / c
+    dT = np.abs(fT(qi) - br.period_s[inside]) / br.period_s[inside]
+    dm = np.abs(fm(qi) - br.max_multiplier[inside])
+    far = fm(qi) < 0.99
+    ev, od = np.arange(0, len(ps), 2), np.arange(1, len(ps) - 1, 2)
+    gA, gT, gm = splines(ev)
+    eA = np.abs(np.sqrt(np.maximum(gA(ps[od]), 0)) - A[od]) / c
+    eT = np.abs(gT(ps[od]) - T[od]) / T[od]
+    em = np.abs(gm(ps[od]) - mu[od])
+    o = np.argsort(A)  # p as a function of the amplitude (monotonic on this branch)
+    fp = CubicSpline(A[o], ps[o])
+    inA = (br.amplitude_m[:, 0] >= A.min()) & (br.amplitude_m[:, 0] <= A.max())
+    dpA = np.abs(fp(br.amplitude_m[inA, 0]) - q[inA])
+    big = br.amplitude_m[inA, 0] > 0.1 * c
+    nearest = np.abs(ps[None, :] - qi[:, None]).argmin(1)
+    same_stab = bool(np.array_equal(base.stable[idx][nearest], br.stable[inside]))
+
+    def mx(x, m):
+        return f"{x[m].max():.2e}" if m.any() else "-"
+
+    lines = [f"points {len(br)} ({int(inside.sum())} inside the baseline's monotonic range "
+             f"{ps[0]:.6g}..{ps[-1]:.6g} {unit}; baseline {len(base)}, {k} monotonic)",
+             f"at equal parameter values, where the baseline's |mu_c| < 0.99 ({int(far.sum())} "
+             f"points): max |dA|/c {mx(dA, far)}, |dT|/T {mx(dT, far)}, ||mu_c| diff| "
+             f"{mx(dm, far)}",
+             f"  and nearer 1 ({int((~far).sum())} points): |dA|/c {mx(dA, ~far)}, |dT|/T "
+             f"{mx(dT, ~far)}, ||mu_c| diff| {mx(dm, ~far)}",
+             f"at equal amplitude: max |dp| {dpA.max():.3g} {unit} ({int(inA.sum())} points; "
+             f"{mx(dpA, big)} {unit} where A > 0.1 c)",
+             f"interpolation error of the baseline (odd points from the even ones): "
+             f"|dA|/c {eA.max():.2e}, |dT|/T {eT.max():.2e}, |mu_c| {em.max():.2e}",
+             f"stability flags equal to the nearest baseline point's: {same_stab}",
+             "bifurcations: " + str([(b["kind"], float(f"{b['parameter']:.6g}"))
+                                     for b in br.bifurcations]) + " (baseline " +
+             str([(b["kind"], float(f"{b['parameter']:.6g}")) for b in base.bifurcations])
+             + ")"]
+    if k < len(p):
+        lines.append(f"baseline parameter after its monotonic part: "
+                     f"{', '.join(f'{x:.7g}' for x in p[k - 2:])}")
+    return "\n  ".join(lines)
+
+
+def reshoot(system, base, br, count: int, vary: str, rig: bool) -> None:
+    """``count`` points of the branch ``br`` (spread over it) re-shot at their own parameter
+    by ``rd.periodic_orbit`` at tight tolerances (rtol 1e-8, tol 1e-7, monodromy 1e-6) from
+    their state: the error of br's point and of the baseline interpolated there (its spline
+    of A² in p, as in :func:`compare_interp`) against that reference."""
+    from scipy.interpolate import CubicSpline
+
+    p = np.asarray(base.parameter, float)
+    k = 1
+    while k < len(p) and p[k] > p[k - 1]:
+        k += 1
+    fA = CubicSpline(p[:k], base.amplitude_m[:k, 0] ** 2)
+    fT = CubicSpline(p[:k], base.period_s[:k])
+    c = base.clearance_m[0]
+    print(f"\nreshoot: {count} points re-shot at rtol 1e-8, tol 1e-7 (the reference); errors "
+          "of the branch point and of the baseline interpolated at its parameter")
+    for i in np.unique(np.linspace(0, len(br) - 1, count).astype(int)):
+        o = br.orbits[i]
+        q = float(br.parameter[i])
+        op = {"speed_hz": o.speed_hz, "chamber_pressure_pa": o.chamber_pressure_pa,
+              "config_ay_m": AY_M if rig else None} | {vary: q}
+        r = rd.periodic_orbit(system, op["speed_hz"], op["chamber_pressure_pa"],
+                              op["config_ay_m"], start=(o.r[0], o.v[0]), period_s=o.period_s,
+                              rtol=1e-8, tol=1e-7, sensitivity_rtol=1e-6)
+        if not r.ok:
+            print(f"  point {i} ({vary} {q:.6g}): reference failed: {r.message}")
+            continue
+        a = r.amplitude()
+        line = (f"  point {i} ({vary} {q:.6g}, A/c {a / c:.4f}, |mu_c| "
+                f"{abs(r.critical_multiplier):.5f}): branch |dA|/c {abs(o.amplitude() - a) / c:.1e}"
+                f", |dT|/T {abs(o.period_s - r.period_s) / r.period_s:.1e}, ||mu_c| diff| "
+                f"{abs(abs(o.critical_multiplier) - abs(r.critical_multiplier)):.1e}")
+        if p[0] <= q <= p[k - 1]:
+            line += (f"; baseline |dA|/c {abs(np.sqrt(fA(q)) - a) / c:.1e}, |dT|/T "
+                     f"{abs(fT(q) - r.period_s) / r.period_s:.1e}")
+        print(line)
+
+
+def run_mode(mode: str, system, cyc, ckw: dict, ds: float, npts: int, args):
+    """One branch by ``mode``: a shooting corrector (exact, broyden, fast[:SCREEN:MARGIN]) or
+    harmonic balance (hb[:H])."""
+    name, *extra = mode.split(":")
+    if name == "hb":
+        h = int(extra[0]) if extra else 8
+        return rd.continuation(system, start=cyc, ds=args.hb_ds, ds_max=args.hb_ds,
+                               max_points=npts, method="harmonic_balance", harmonics=h,
+                               **ckw, rtol=KW["rtol"], tol=args.hb_tol)
+    sk = dict(zip(("screen_rtol", "screen_margin"), map(float, extra)))
+    return rd.continuation(system, start=cyc, ds=ds, ds_max=ds, max_points=npts,
+                           newton=name, **ckw, **sk, **KW)
+
+
 def recheck(system, br, vary: str, band: float, rig: bool) -> None:
     """|mu_c| of screened points near the unit circle at both tolerances, same state."""
     print(f"\nrecheck: screened points with ||mu_c| - 1| < {band:g}, re-shot from their state")
@@ -137,6 +273,13 @@ def main() -> int:
     ap.add_argument("--modes", nargs="+", default=["exact", "broyden", "fast"],
                     help="newton modes; fast:SCREEN_RTOL:SCREEN_MARGIN sets the screening")
     ap.add_argument("--repeat", type=int, default=1, help="interleaved repeats of the modes")
+    ap.add_argument("--hb-ds", type=float, default=None,
+                    help="mode hb: its constant step (default 0.0155 rig: 50 points end at the same 12 µm as the shooting modes' 50; 0.1 compressor)")
+    ap.add_argument("--hb-tol", type=float, default=1e-6,
+                    help="mode hb: the scaled residual tolerance (default 1e-6)")
+    ap.add_argument("--reshoot", type=int, default=0, metavar="K",
+                    help="after the runs: K points of the last hb branch re-shot at tight "
+                         "tolerances, the error of the hb points and of the baseline there")
     ap.add_argument("--quiet", action="store_true", help="no per-point table")
     ap.add_argument("--recheck", type=float, default=None, metavar="BAND",
                     help="after the runs: every point of the last branch with a screened "
@@ -147,6 +290,8 @@ def main() -> int:
     rig = args.model == "rig"
     ds = args.ds if args.ds is not None else (0.0125 if rig else 0.1)
     npts = args.max_points if args.max_points is not None else (50 if rig else 30)
+    if args.hb_ds is None:
+        args.hb_ds = 0.0155 if rig else 0.1
     what = ("rig limit-cycle branch over p_c, 50 Hz, a_y = -1.85 mm" if rig else
             "compressor on plain bearings (36 x 6), whip branch down in speed from 130 Hz")
     header(f"bench_branch_fast: {what}, ds = ds_max = {ds}, max_points {npts}, "
@@ -155,30 +300,33 @@ def main() -> int:
     system, cyc, ckw, unit, to_unit = rig_case() if rig else compressor_case()
     print(f"start: {cyc} ({time.perf_counter() - w0:.1f} s wall, "
           f"{time.process_time() - c0:.1f} s CPU)")
-    base = None
+    base = last_hb = None
     times = {m: ([], []) for m in args.modes}
     for rep in range(args.repeat):
         for mode in args.modes:
             print_load(f"before {mode} (repeat {rep + 1})")
             w0, c0 = time.perf_counter(), time.process_time()
-            name, *extra = mode.split(":")  # fast:SCREEN_RTOL:SCREEN_MARGIN
-            sk = dict(zip(("screen_rtol", "screen_margin"), map(float, extra)))
-            br = rd.continuation(system, start=cyc, ds=ds, ds_max=ds, max_points=npts,
-                                 newton=name, **ckw, **sk, **KW)
+            br = run_mode(mode, system, cyc, ckw, ds, npts, args)
+            hb = mode.split(":")[0] == "hb"
+            if hb:
+                last_hb = br
             wall, cpu = time.perf_counter() - w0, time.process_time() - c0
             times[mode][0].append(cpu)
             times[mode][1].append(wall)
             print(f"\n[{mode}] {br}")
             if not args.quiet and rep == 0:
                 print(f"{ckw['vary']:>20} {'amplitude µm':>13} {'period ms':>10} "
-                      f"{'|mu_c|':>8} {'dp/ds':>8} {'type':>15} stable monodromy_rtol")
+                      f"{'|mu_c|':>8} {'dp/ds':>8} {'type':>15} stable "
+                      + ("floquet (|mu_c| samples)" if hb else "monodromy_rtol"))
                 for i in range(len(br)):
                     print(f"{br.parameter[i] / to_unit:20.6f} "
                           f"{br.amplitude_m[i, 0] * 1e6:13.3f} "
                           f"{br.period_s[i] * 1e3:10.5f} {br.max_multiplier[i]:8.5f} "
                           f"{br.tangent_p[i]:+8.4f} {br.critical_type[i]:>15} "
-                          f"{str(bool(br.stable[i])):>6} "
-                          f"{br.orbits[i].stats['monodromy_rtol']:g}")
+                          f"{str(bool(br.stable[i])):>6} " + (
+                              f"{br.orbits[i].stats['floquet']} "
+                              f"({br.orbits[i].stats['floquet_samples_modulus']:.5f})" if hb
+                              else f"{br.orbits[i].stats['monodromy_rtol']:g}"))
             for b in br.bifurcations:
                 print(f"bifurcation: {b['kind']} at {ckw['vary']} = {b['parameter']:.6g}")
             print(f"stop: {br.stop} {br.message}; {br.stats}")
@@ -186,8 +334,12 @@ def main() -> int:
                   f"({cpu / max(len(br), 1):.3f} s CPU per point)")
             if base is None:
                 base = br
+            elif hb:
+                print(f"[{mode}] against [{args.modes[0]}]:\n  "
+                      f"{compare_interp(base, br, unit)}")
             else:
                 print(f"[{mode}] against [{args.modes[0]}]:\n  {compare(base, br, unit)}")
+            if base is not br and not hb:
                 n = min(len(base), len(br))
                 d = np.abs(base.max_multiplier[:n] - br.max_multiplier[:n])
                 print("  ||mu_c| diff| per point (|mu_c| of the baseline): " + ", ".join(
@@ -195,6 +347,8 @@ def main() -> int:
             print_load(f"after {mode} (repeat {rep + 1})")
     if args.recheck is not None:
         recheck(system, br, ckw["vary"], args.recheck, rig)
+    if args.reshoot:
+        reshoot(system, base, last_hb, args.reshoot, ckw["vary"], rig)
     print("\nsummary (median over the repeats, one thread):")
     ref = times[args.modes[0]][0]
     for mode, (cpus, walls) in times.items():

@@ -16,6 +16,7 @@ PYBIND11_MODULE(_core, m) {
   bind_periodic(m);
   bind_harmonic_balance(m);
   bind_continuation(m);
+  bind_hb_continuation(m);
   bind_sleeve(m);
   bind_batch(m);
   bind_thermal(m);

@@ -16,20 +16,7 @@ using namespace shooting_detail;
 namespace {
 
 PeriodicInput at_parameter(const ContinuationInput& c, double p) {
-  PeriodicInput in = c.base;
-  switch (c.parameter) {
-    case ContinuationParameter::chamber_pressure:
-      in.chamber_pressure = p;
-      break;
-    case ContinuationParameter::speed:
-      in.omega = p;
-      break;
-    case ContinuationParameter::config:
-      in.a = c.base.a + p * c.config_direction;
-      break;
-  }
-  if (in.kind == OrbitKind::forced) in.period = c.subharmonic * 2 * M_PI / std::abs(in.omega);
-  return in;
+  return shooting_detail::at_parameter(c.base, c.parameter, c.config_direction, c.subharmonic, p);
 }
 
 // ∂f/∂p of eq. 12's right-hand side where f is affine in p (first-order form, (N)): p_c
@@ -59,6 +46,25 @@ Eigen::VectorXd residual(SystemSolver& solver, const ContinuationInput& c, const
 }
 
 }  // namespace
+
+PeriodicInput shooting_detail::at_parameter(const PeriodicInput& base, ContinuationParameter parameter,
+                                            const Eigen::VectorXd& config_direction, int subharmonic,
+                                            double p) {
+  PeriodicInput in = base;
+  switch (parameter) {
+    case ContinuationParameter::chamber_pressure:
+      in.chamber_pressure = p;
+      break;
+    case ContinuationParameter::speed:
+      in.omega = p;
+      break;
+    case ContinuationParameter::config:
+      in.a = base.a + p * config_direction;
+      break;
+  }
+  if (in.kind == OrbitKind::forced) in.period = subharmonic * 2 * M_PI / std::abs(in.omega);
+  return in;
+}
 
 ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput& c,
                                    const ShootingOptions& opt) {

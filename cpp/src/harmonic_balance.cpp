@@ -6,217 +6,19 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
-#include <unsupported/Eigen/MatrixFunctions>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "rotordyn/errors.hpp"
+#include "hb_detail.hpp"
 #include "shooting_detail.hpp"
 
 namespace rotordyn {
 
-namespace {
-
 using shooting_detail::Flow;
-
-struct Basis {
-  int H = 0, M = 0, nb = 0;   // nb = 2H + 1
-  Eigen::MatrixXd E, E1, E2;  // (M, nb): basis, d/dτ, d²/dτ² at τ_j
-  Eigen::MatrixXd P;          // (nb, M): the projection (DFT) R̂ = P R
-};
-
-Basis make_basis(int H, int M) {
-  Basis b;
-  b.H = H;
-  b.M = M;
-  b.nb = 2 * H + 1;
-  b.E.setZero(M, b.nb);
-  b.E1.setZero(M, b.nb);
-  b.E2.setZero(M, b.nb);
-  b.P.setZero(b.nb, M);
-  for (int j = 0; j < M; ++j) {
-    const double tau = 2 * M_PI * j / M;
-    b.E(j, 0) = 1.0;
-    b.P(0, j) = 1.0 / M;
-    for (int k = 1; k <= H; ++k) {
-      const double c = std::cos(k * tau), s = std::sin(k * tau);
-      b.E(j, 2 * k - 1) = c;
-      b.E(j, 2 * k) = s;
-      b.E1(j, 2 * k - 1) = -k * s;
-      b.E1(j, 2 * k) = k * c;
-      b.E2(j, 2 * k - 1) = -k * k * c;
-      b.E2(j, 2 * k) = -k * k * s;
-      b.P(2 * k - 1, j) = 2.0 * c / M;
-      b.P(2 * k, j) = 2.0 * s / M;
-    }
-  }
-  return b;
-}
-
-// One residual evaluation at (Z, ω): R̂ (nb·n), the Jacobian in z (nb·n × nb·n) and its ω
-// column, and the linearisations at the samples (for the Floquet multipliers).
-struct Eval {
-  Eigen::VectorXd R, dRdw;
-  Eigen::MatrixXd J;
-  std::vector<Eigen::MatrixXd> KH, DH;
-  bool ok = false;
-  std::string why;
-  bool contact = false;
-};
-
-struct Problem {
-  SystemSolver* solver = nullptr;
-  const PeriodicInput* in = nullptr;
-  Flow* F = nullptr;  // M(Ω) factor, F0, C + ΩG
-  Basis B;
-  Eigen::Index n = 0;
-  bool autonomous = true;
-  long linearizations = 0, evaluations = 0;
-
-  // Z: (nb, n) coefficients; ω the fundamental (rad/s).
-  Eval eval(const Eigen::MatrixXd& Z, double w, bool jac) {
-    const SystemModel& m = solver->model();
-    const PeriodicInput& I = *in;
-    const int M = B.M, nb = B.nb;
-    const Eigen::Index nn = n * nb;
-    Eval e;
-    e.R.setZero(nn);
-    if (jac) {
-      e.J.setZero(nn, nn);
-      e.dRdw.setZero(nn);
-      e.KH.resize(static_cast<std::size_t>(M));
-      e.DH.resize(static_cast<std::size_t>(M));
-    }
-    const Eigen::MatrixXd Rt = B.E * Z, R1 = B.E1 * Z, R2 = B.E2 * Z;  // (M, n)
-    const Eigen::MatrixXd& Mm = m.mass_at(I.omega);
-    const bool forced = I.unbalance_cos.size() > 0;
-    ++evaluations;
-    for (int j = 0; j < M; ++j) {
-      const Eigen::VectorXd r = Rt.row(j).transpose(), r1 = R1.row(j).transpose(),
-                            r2 = R2.row(j).transpose();
-      const Eigen::VectorXd v = w * r1;
-      Linearization lin;
-      try {
-        if (jac) {
-          lin = solver->linearize(r, v, I.omega);
-          ++linearizations;
-        } else {
-          lin.film_force = solver->film_forces(r, v, I.omega);
-        }
-      } catch (const ContactError& ex) {
-        e.contact = true;
-        e.why = std::string("a film closed at sample ") + std::to_string(j) + ": " + ex.what();
-        return e;
-      } catch (const ConvergenceError& ex) {
-        e.why = std::string("film solve at sample ") + std::to_string(j) + ": " + ex.what();
-        return e;
-      }
-      if (!lin.film_force.allFinite()) {
-        e.why = "non-finite film force at sample " + std::to_string(j);
-        return e;
-      }
-      Eigen::VectorXd Rj = w * w * (Mm * r2) + w * (F->Cd * r1) + m.K * r - lin.film_force - F->F0;
-      if (forced) {
-        const double th = I.omega * (I.t0 + (2 * M_PI * j / M) / w);
-        Rj -= I.omega * I.omega * (std::cos(th) * I.unbalance_cos + std::sin(th) * I.unbalance_sin);
-      }
-      for (int p = 0; p < nb; ++p) e.R.segment(p * n, n) += B.P(p, j) * Rj;
-      if (!jac) continue;
-      const Eigen::MatrixXd G = m.K + lin.KH;
-      const Eigen::MatrixXd Dv = F->Cd + lin.DH;
-      const Eigen::VectorXd dw = 2 * w * (Mm * r2) + Dv * r1;
-      for (int p = 0; p < nb; ++p) e.dRdw.segment(p * n, n) += B.P(p, j) * dw;
-      for (int q = 0; q < nb; ++q) {
-        const double e0 = B.E(j, q), e1 = B.E1(j, q), e2 = B.E2(j, q);
-        if (e0 == 0.0 && e1 == 0.0 && e2 == 0.0) continue;
-        const Eigen::MatrixXd T = e0 * G + (w * e1) * Dv + (w * w * e2) * Mm;
-        for (int p = 0; p < nb; ++p) {
-          const double pw = B.P(p, j);
-          if (pw != 0.0) e.J.block(p * n, q * n, n, n) += pw * T;
-        }
-      }
-      e.KH[static_cast<std::size_t>(j)] = lin.KH;
-      e.DH[static_cast<std::size_t>(j)] = lin.DH;
-    }
-    if (!e.R.allFinite() || (jac && !e.J.allFinite())) {
-      e.why = "non-finite residual or Jacobian";
-      return e;
-    }
-    e.ok = true;
-    return e;
-  }
-};
-
-// Coefficients (nb, n) of position samples X (M0, n) at τ_j = 2πj/M0, truncated to H.
-Eigen::MatrixXd project_samples(const Eigen::MatrixXd& X, int H) {
-  const Eigen::Index M0 = X.rows();
-  Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(2 * H + 1, X.cols());
-  for (Eigen::Index j = 0; j < M0; ++j) {
-    const double tau = 2 * M_PI * static_cast<double>(j) / static_cast<double>(M0);
-    Z.row(0) += X.row(j) / static_cast<double>(M0);
-    for (int k = 1; k <= H; ++k) {
-      Z.row(2 * k - 1) += 2.0 * std::cos(k * tau) * X.row(j) / static_cast<double>(M0);
-      Z.row(2 * k) += 2.0 * std::sin(k * tau) * X.row(j) / static_cast<double>(M0);
-    }
-  }
-  return Z;
-}
-
-// Shift the time origin by φ (τ → τ + φ): a_k' + i b_k' from a_k, b_k.
-void shift_phase(Eigen::MatrixXd& Z, int H, double phi) {
-  for (int k = 1; k <= H; ++k) {
-    const double c = std::cos(k * phi), s = std::sin(k * phi);
-    const Eigen::RowVectorXd a = Z.row(2 * k - 1), b = Z.row(2 * k);
-    Z.row(2 * k - 1) = a * c + b * s;
-    Z.row(2 * k) = b * c - a * s;
-  }
-}
-
-// Monodromy of ẋ = A(t) x over one period from the samples A_j = A(t_j) (first-order form),
-// A(τ) trigonometrically interpolated, 4th-order Magnus (two Gauss points per step) with
-// the exact exponential of each step (stable for the stiff sleeve and film modes).
-Eigen::MatrixXd monodromy_from_samples(const std::vector<Eigen::MatrixXd>& A, double T,
-                                       int substeps) {
-  const int M = static_cast<int>(A.size());
-  const Eigen::Index N = A[0].rows();
-  const int K = (M - 1) / 2;
-  const bool nyq = M % 2 == 0;
-  std::vector<Eigen::MatrixXd> Ac(static_cast<std::size_t>(K + 1), Eigen::MatrixXd::Zero(N, N)),
-      As(static_cast<std::size_t>(K + 1), Eigen::MatrixXd::Zero(N, N));
-  Eigen::MatrixXd An = Eigen::MatrixXd::Zero(N, N);
-  for (int j = 0; j < M; ++j) {
-    const double tau = 2 * M_PI * j / M;
-    Ac[0] += A[static_cast<std::size_t>(j)] / M;
-    for (int k = 1; k <= K; ++k) {
-      Ac[static_cast<std::size_t>(k)] += (2.0 * std::cos(k * tau) / M) * A[static_cast<std::size_t>(j)];
-      As[static_cast<std::size_t>(k)] += (2.0 * std::sin(k * tau) / M) * A[static_cast<std::size_t>(j)];
-    }
-    if (nyq) An += (std::cos(0.5 * M * tau) / M) * A[static_cast<std::size_t>(j)];
-  }
-  auto at = [&](double tau) {
-    Eigen::MatrixXd out = Ac[0];
-    for (int k = 1; k <= K; ++k)
-      out += std::cos(k * tau) * Ac[static_cast<std::size_t>(k)] +
-             std::sin(k * tau) * As[static_cast<std::size_t>(k)];
-    if (nyq) out += std::cos(0.5 * M * tau) * An;
-    return out;
-  };
-  const int ns = M * std::max(substeps, 1);
-  const double h = T / ns, dtau = 2 * M_PI / ns;
-  const double g = std::sqrt(3.0) / 6.0;
-  Eigen::MatrixXd Phi = Eigen::MatrixXd::Identity(N, N);
-  for (int i = 0; i < ns; ++i) {
-    const Eigen::MatrixXd A1 = at((i + 0.5 - g) * dtau), A2 = at((i + 0.5 + g) * dtau);
-    const Eigen::MatrixXd Om =
-        (0.5 * h) * (A1 + A2) + (std::sqrt(3.0) / 12.0 * h * h) * (A2 * A1 - A1 * A2);
-    Phi = Om.exp() * Phi;
-  }
-  return Phi;
-}
-
-}  // namespace
+using namespace hb_detail;
 
 HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput& in,
                                        const Eigen::MatrixXd& start_samples,
@@ -258,12 +60,7 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
 
   Flow F;
   shooting_detail::setup_flow(F, solver, in);
-  double L = opt.length_scale;
-  if (!(L > 0)) {
-    L = std::numeric_limits<double>::infinity();
-    for (const FilmCoupling& fc : m.films) L = std::min(L, fc.geometry.clearance_m);
-    if (!std::isfinite(L)) L = 1e-3;
-  }
+  const double L = hb_detail::length_scale(m, opt.length_scale);
   o.length_scale = L;
 
   // The start's coefficients.
@@ -314,7 +111,6 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
   P.F = &F;
   P.B = make_basis(H, M);
   P.n = n;
-  P.autonomous = autonomous;
   const int nb = P.B.nb;
   const Eigen::Index nn = n * nb;
   const Eigen::Index K = autonomous ? nn + 1 : nn;
@@ -328,21 +124,9 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
   // Row scales: each coordinate's |K_ii + K_H,ii| + ω²|M_ii| + ω|C_ii + D_H,ii| at the start
   // (the residual in units of a displacement), so ‖R̃‖ is measured in L.
   Eigen::VectorXd rowscale;
-  auto scaled = [&](const Eigen::VectorXd& R) -> Eigen::VectorXd {
-    Eigen::VectorXd s(R.size());
-    for (int p = 0; p < nb; ++p) s.segment(p * n, n) = R.segment(p * n, n).cwiseQuotient(rowscale);
-    return s / L;
-  };
+  auto scaled = [&](const Eigen::VectorXd& R) { return hb_detail::scaled(R, rowscale, nb, L); };
   Eval e = P.eval(Z, w, true);
-  if (e.ok) {
-    const Eigen::MatrixXd& Mm = m.mass_at(in.omega);
-    rowscale.resize(n);
-    const double ws = std::max(std::abs(in.omega), w);
-    // The ω-independent part of the Jacobian's c0 block is mean(K + K_H).
-    const Eigen::MatrixXd G0 = e.J.block(0, 0, n, n);
-    for (Eigen::Index i = 0; i < n; ++i)
-      rowscale(i) = std::abs(G0(i, i)) + ws * ws * std::abs(Mm(i, i)) + ws * std::abs(F.Cd(i, i)) + 1e-300;
-  }
+  if (e.ok) rowscale = row_scale(e, m, F, in.omega, w);
   bool converged = false;
   double res = std::numeric_limits<double>::infinity();
   for (int it = 0; e.ok; ++it) {
@@ -435,11 +219,7 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
   out.frequency = w;
   out.linearizations = P.linearizations;
   out.evaluations = P.evaluations;
-  out.harmonic_amplitudes.resize(H + 1);
-  out.harmonic_amplitudes(0) = Z.row(0).cwiseAbs().maxCoeff() / L;
-  for (int k = 1; k <= H; ++k)
-    out.harmonic_amplitudes(k) =
-        (Z.row(2 * k - 1).array().square() + Z.row(2 * k).array().square()).sqrt().maxCoeff() / L;
+  out.harmonic_amplitudes = harmonic_amplitudes(Z, L);
   const double T = 2 * M_PI / w;
   o.period = T;
   o.residual = res;
@@ -470,61 +250,21 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
     return out;
   }
   // The orbit over one period, n_out samples including the end point.
-  const int ns = std::max(in.n_out, 2);
-  o.t.resize(ns);
-  o.r.resize(ns, n);
-  o.v.resize(ns, n);
-  for (int i = 0; i < ns; ++i) {
-    const double tau = 2 * M_PI * i / (ns - 1);
-    o.t(i) = in.t0 + T * i / (ns - 1);
-    Eigen::RowVectorXd E(nb), E1(nb);
-    E(0) = 1.0;
-    E1(0) = 0.0;
-    for (int k = 1; k <= H; ++k) {
-      E(2 * k - 1) = std::cos(k * tau);
-      E(2 * k) = std::sin(k * tau);
-      E1(2 * k - 1) = -k * std::sin(k * tau);
-      E1(2 * k) = k * std::cos(k * tau);
-    }
-    o.r.row(i) = E * Z;
-    o.v.row(i) = w * (E1 * Z);
-  }
-  if (!o.r.allFinite() || !o.v.allFinite()) {
+  if (!fill_orbit(o, Z, w, in.t0, in.n_out)) {
     o.status = "error";
     o.message = "non-finite harmonic-balance orbit";
     finish();
     return out;
   }
   if (opt.floquet == HbFloquet::samples) {
-    std::vector<Eigen::MatrixXd> A(static_cast<std::size_t>(M));
-    for (int j = 0; j < M; ++j) {
-      Eigen::MatrixXd Aj = Eigen::MatrixXd::Zero(N, N);
-      Aj.block(0, n, n, n).setIdentity();
-      Aj.block(n, 0, n, n) = -F.Mllt.solve(m.K + e.KH[static_cast<std::size_t>(j)]);
-      Aj.block(n, n, n, n) = -F.Mllt.solve(F.Cd + e.DH[static_cast<std::size_t>(j)]);
-      A[static_cast<std::size_t>(j)] = Aj;
-    }
-    o.monodromy = monodromy_from_samples(A, T, opt.magnus_substeps);
+    o.monodromy = sample_monodromy(F, m, e, T, opt.magnus_substeps);
     o.monodromy_rtol = 0.0;
   } else if (opt.floquet == HbFloquet::flow) {
-    Eigen::VectorXd x0(N);
-    x0 << o.r0, o.v0;
     const double srtol = opt.sensitivity_rtol > 0 ? opt.sensitivity_rtol : opt.cvode.rtol;
-    shooting_detail::FlowRun run =
-        shooting_detail::run_flow(F, x0, in.t0, T, true, 2, opt.cvode, true, srtol);
-    o.steps += run.steps;
-    o.rhs_evals += run.rhs_evals;
-    o.jac_evals += run.jac_evals;
-    o.sensitivity_flows = 1;
-    o.sens_rhs_evals = F.sens_evals;
-    if (run.flag < 0) {
-      o.status = F.contact ? "rub" : "error";
-      o.message = "harmonic balance: the monodromy flow failed: " + run.why;
+    if (!flow_monodromy(F, o, in.t0, T, opt.cvode, srtol)) {
       finish();
       return out;
     }
-    o.monodromy = run.Phi;
-    o.monodromy_rtol = srtol;
   }
   if (opt.floquet != HbFloquet::none) {
     if (!o.monodromy.allFinite()) {

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "rotordyn/continuation.hpp"
 #include "rotordyn/periodic.hpp"
 
 namespace rotordyn::shooting_detail {
@@ -53,6 +54,10 @@ void setup_flow(Flow& F, SystemSolver& solver, const PeriodicInput& in);
 /// Integrate x0 over [t0, t0 + T] (with the monodromy when `sens`), sampling n_out points.
 FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool sens, int n_out,
                  const CvodeOptions& opt, bool sens_errcon, double sens_rtol);
+/// The orbit input at the parameter value p of a continuation (continuation.cpp): p_c, Ω or
+/// a = base.a + p · config_direction; a forced orbit's period follows Ω (subharmonic · 2π/|Ω|).
+PeriodicInput at_parameter(const PeriodicInput& base, ContinuationParameter parameter,
+                           const Eigen::VectorXd& config_direction, int subharmonic, double p);
 /// InputError for shapes, non-finite values, period ≤ 0, forcing inconsistent with the kind.
 void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt);
 

@@ -7,7 +7,10 @@ The loop (predictor along the tangent, step-size control, bounds, detection) run
 corrector is one C++ call (``_core.continuation_step``: the shooting Newton over CVODES,
 bordered by ∂R/∂p and the arclength condition; its matrix starts from the previous point's
 and is updated by Broyden from flows without sensitivities; Φ from forward sensitivities and
-∂R/∂p — a central finite difference of two flows — are recomputed at the converged point)."""
+∂R/∂p — a central finite difference of two flows — are recomputed at the converged point).
+``method="harmonic_balance"`` hands the branch to :mod:`rotordyn.analysis.hb_continuation`
+(the correctors on the orbit's Fourier coefficients); what both share (the set-up from the
+start orbit, the Hopf end, the assembly of the result) is :mod:`rotordyn.analysis.orbit_branch`."""
 
 from __future__ import annotations
 
@@ -18,15 +21,15 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import assembled, check_operating_parameter
-from rotordyn.analysis.periodic import NEWTON, orbit_result
+from rotordyn.analysis import hb_continuation as hbc
+from rotordyn.analysis.orbit_branch import (PARAM, VARIABLES, assemble, hopf_estimate,
+                                            prepare)
+from rotordyn.analysis.periodic import NEWTON
 from rotordyn.errors import InputError
 from rotordyn.model.system import System
 from rotordyn.results.continuation import BranchResult
 from rotordyn.results.periodic import PeriodicOrbitResult
-from rotordyn.units import hz_to_rad_s
 
-VARIABLES = ("chamber_pressure_pa", "speed_hz", "config_ay_m")
 #: the correctors' names: "exact" is "sensitivities" (Newton with Φ and ∂R/∂p at every
 #: iteration) by the name the CLI and sweep specs use beside "fast"
 NEWTON_MODES = ("exact", "fast") + NEWTON
@@ -34,24 +37,10 @@ NEWTON_MODES = ("exact", "fast") + NEWTON
 CLI_NEWTON = ("exact", "fast")
 #: the correctors when none is asked for (docs/nonlinear.md, "fast on a second model")
 DEFAULT_NEWTON = "exact"
-_PARAM = {"chamber_pressure_pa": "chamber_pressure", "speed_hz": "speed",
-          "config_ay_m": "config"}
-
-
-def _amplitude(o: PeriodicOrbitResult) -> np.ndarray:
-    """(n_bearings,) the journals' amplitudes; a system without bearings: (1,) the largest
-    distance of any coordinate from its mean over the orbit."""
-    if o.journal_x_m.shape[1] == 0:
-        return np.array([float(np.max(np.abs(o.r - o.r.mean(axis=0))))])
-    return np.array([o.amplitude(b) for b in range(o.journal_x_m.shape[1])])
-
-
-def _names(bcs) -> tuple:
-    return tuple(bc.name for bc in bcs) if bcs else ("largest coordinate",)
-
-
-def _clearances(bcs) -> np.ndarray:
-    return np.array([bc.clearance_m for bc in bcs]) if bcs else np.array([np.nan])
+#: the correctors' methods: shooting (the default) or harmonic balance (``hb_continuation``)
+METHODS = ("shooting", "harmonic_balance")
+#: the options of the harmonic-balance correctors only (None: not given)
+HB_OPTIONS = ("harmonics", "time_points", "floquet", "floquet_margin")
 
 
 def continuation(system: System, vary: str, bounds, start="equilibrium", **options):
@@ -99,7 +88,10 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
                  max_iter: int = 8, max_steps: int = 200000, fd_step: float = 1e-4,
                  n_out: int = 101, sensitivity_rtol: float | None = None,
                  newton: str = DEFAULT_NEWTON, screen_rtol: float = 1e-4,
-                 screen_margin: float = 0.005, progress=None) -> BranchResult:
+                 screen_margin: float = 0.005, method: str = "shooting",
+                 harmonics: int | None = None, time_points: int | None = None,
+                 floquet: str | None = None, floquet_margin: float | None = None,
+                 progress=None) -> BranchResult:
     """Continue the periodic orbit ``start`` over ``vary`` within ``bounds``.
 
     Parameters
@@ -149,6 +141,28 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         ||μ_c| − 1| < ``screen_margin`` or |μ_trivial − 1| > ``screen_margin``. Each
         point's ``stats["monodromy_rtol"]`` says which tolerance its multipliers have
         (``screen_margin`` 0: never repeated, for measurements).
+    method
+        ``"shooting"`` (default: the correctors above) or ``"harmonic_balance"``: each
+        corrector is Newton on the orbit's Fourier coefficients, its frequency and the
+        parameter (the AFT residual of ``rd.periodic_orbit(method="harmonic_balance")``),
+        bordered by ∂R/∂p (exact for p_c and a_y, a central difference of ``fd_step`` for
+        the speed) and the arclength row; ``tol`` is then the scaled AFT residual, ``ds``
+        measures the coefficients / L, ω / ω_start and the parameter; ``rtol``,
+        ``atol_m``, ``max_steps`` and ``sensitivity_rtol`` apply to the Floquet rechecks'
+        flows only; ``newton`` does not apply (docs/nonlinear.md, "Continuation by harmonic
+        balance"). Every point is a :class:`PeriodicOrbitResult` whose ``stats["method"]``
+        names its method.
+    harmonics, time_points
+        Harmonic balance only: H (default 8) and the samples per period M ≥ 2H + 1
+        (default 4H).
+    floquet, floquet_margin
+        Harmonic balance only: ``"samples"`` (default) the multipliers from the samples'
+        linearisations (no film solve), recomputed by one CVODES sensitivity flow at
+        ``sensitivity_rtol`` where the critical multiplier is within ``floquet_margin``
+        (default 0.01) of the unit circle or the trivial one is off 1 by more than half of
+        it (a poor sample monodromy);
+        ``"flow"`` the flow at every point. Each point's ``stats["floquet"]`` says which
+        route gave its multipliers (``"samples"`` or ``"flow"``).
     progress
         None, or a callable(point_index, BranchResult-so-far message) for progress lines.
 
@@ -158,87 +172,52 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         status ``"ok"`` with at least the start point; ``"not_converged"`` when the start
         itself does not converge under these options.
     """
-    vary = v.choice("vary", vary, VARIABLES)
-    check_operating_parameter(system, vary)
-    lo, hi = v.bounds("bounds", bounds)
-    if not isinstance(start, PeriodicOrbitResult):
-        raise InputError("start: expected a PeriodicOrbitResult (a converged orbit from "
-                         f"rotordyn.periodic_orbit), got {type(start).__name__}")
-    if not start.ok:
-        raise InputError(f"start: the orbit did not converge (status {start.status!r}: "
-                         f"{start.message})")
+    setup = prepare(system, vary, bounds, start, unbalances, param_scale, n_out)
     ds, ds_min, ds_max, max_points, direction = v.arclength_steps(ds, ds_min, ds_max,
                                                                   max_points, direction)
-    if param_scale is None:
-        param_scale = hi - lo
-    param_scale = v.positive("param_scale", param_scale)
     v.in_range("rtol", rtol, 1e-14, 1e-3)
     v.positive("atol_m", atol_m)
     v.positive("tol", tol)
     v.integer("max_iter", max_iter, lo=1, hi=1000)
     v.integer("max_steps", max_steps, lo=1)
     v.in_range("fd_step", fd_step, 1e-10, 0.1)
-    v.integer("n_out", n_out, lo=2, hi=1_000_000)
-
-    asm = assembled(system)
-    n = asm.n
-    if start.r.shape[1] != n:
-        raise InputError(f"start: the orbit has {start.r.shape[1]} coordinates, the system {n}")
-    kind = start.kind
-    ub_list = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
-    if kind == "forced" and not ub_list:
-        raise InputError("unbalances: a forced start needs its unbalances "
-                         "[(station, mass_kg_m, phase_deg)] again")
-    if kind == "autonomous" and ub_list:
-        raise InputError("unbalances: an autonomous branch has no unbalance forcing")
-    subharmonic = 1
-    if kind == "forced":
-        subharmonic = max(1, int(round(start.period_s * abs(start.speed_hz))))
-
-    bcs = asm.bearings
-    a0 = asm.config_vector(None)
-    if bcs and abs(a0[bcs[0].jy] - start.config_ay_m) > 1e-15:
-        a0 = asm.config_vector(start.config_ay_m)
-    p_start = {"chamber_pressure_pa": start.chamber_pressure_pa, "speed_hz": start.speed_hz,
-               "config_ay_m": start.config_ay_m}[vary]
-    if not lo <= p_start <= hi:
-        raise InputError(f"bounds: ({lo:g}, {hi:g}) must contain the start's {vary} = "
-                         f"{p_start:g}")
-    if vary == "speed_hz" and (lo <= 0 <= hi):
-        raise InputError(f"bounds: a speed branch must not contain 0 Hz, got ({lo:g}, {hi:g})")
-
+    if sensitivity_rtol is not None:
+        sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
+    newton = v.choice("newton", newton, NEWTON_MODES)
+    method = v.choice("method", method, METHODS)
+    if method == "harmonic_balance":
+        if newton != DEFAULT_NEWTON:
+            raise InputError(f"newton: applies only to method='shooting' (the correctors of "
+                             f"harmonic balance are Newton on its coefficients), got "
+                             f"{newton!r}")
+        return hbc.hb_branch(setup, start, ds=ds, ds_min=ds_min, ds_max=ds_max,
+                             max_points=max_points, direction=direction, rtol=rtol,
+                             atol_m=atol_m, tol=tol, max_iter=max_iter, max_steps=max_steps,
+                             fd_step=fd_step, sensitivity_rtol=sensitivity_rtol,
+                             harmonics=harmonics, time_points=time_points, floquet=floquet,
+                             floquet_margin=floquet_margin, progress=progress)
+    given = {"harmonics": harmonics, "time_points": time_points, "floquet": floquet,
+             "floquet_margin": floquet_margin}
+    for k in HB_OPTIONS:
+        if given[k] is not None:
+            raise InputError(f"{k}: applies only to method='harmonic_balance'")
+    vary, lo, hi, asm, n, kind = (setup.vary, setup.lo, setup.hi, setup.asm, setup.n,
+                                  setup.kind)
+    bcs, base, to_core = setup.bcs, setup.base, setup.to_core
+    p_start = setup.p_start
     inp = _core.ContinuationInput()
-    base = _core.PeriodicInput()
-    base.kind = _core.OrbitKind.autonomous if kind == "autonomous" else _core.OrbitKind.forced
-    omega = hz_to_rad_s(float(start.speed_hz))
-    base.omega = omega
-    base.chamber_pressure = float(start.chamber_pressure_pa)
-    uc, us = np.zeros(n), np.zeros(n)
-    for st, me, ph in ub_list:
-        L = asm.station_load_matrix(st)
-        q = np.radians(ph)
-        uc += me * (L[:, 0] * np.cos(q) + L[:, 1] * np.sin(q))
-        us += me * (-L[:, 0] * np.sin(q) + L[:, 1] * np.cos(q))
-    base.unbalance_cos, base.unbalance_sin = (uc, us) if ub_list else (np.zeros(0), np.zeros(0))
-    base.t0 = float(start.t[0])
-    base.n_out = int(n_out)
-    # p in the core's units: Pa, rad/s, m; a(p) = a_base + p · direction for config
-    to_core = hz_to_rad_s(1.0) if vary == "speed_hz" else 1.0
-    if vary == "config_ay_m":
-        a_base = asm.config_vector(0.0)
-        inp.config_direction = asm.config_vector(1.0) - a_base
-        base.a = a_base
-    else:
-        base.a = a0
-    inp.parameter = getattr(_core.ContinuationParameter, _PARAM[vary])
-    inp.subharmonic = subharmonic
+    if setup.config_direction is not None:
+        inp.config_direction = setup.config_direction
+    inp.parameter = getattr(_core.ContinuationParameter, PARAM[vary])
+    inp.subharmonic = setup.subharmonic
     inp.fd_step = float(fd_step)
     inp.direction = int(direction)
 
     L = start.length_scale_m
+    omega = setup.omega
     w = max(abs(omega), 2 * np.pi / start.period_s)
     scale = np.concatenate([np.full(n, L), np.full(n, L * w),
-                            [start.period_s, param_scale * to_core]])
+                            [start.period_s, setup.param_scale * to_core]])
     inp.scale = scale
     opt = _core.ShootingOptions()
     c = _core.CvodeOptions()
@@ -247,8 +226,7 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     c.max_steps = int(max_steps)
     opt.cvode, opt.tol, opt.max_iter = c, float(tol), int(max_iter)
     if sensitivity_rtol is not None:
-        opt.sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
-    newton = v.choice("newton", newton, NEWTON_MODES)
+        opt.sensitivity_rtol = sensitivity_rtol
     if newton == "exact":
         newton = "sensitivities"
     opt.broyden = newton in ("broyden", "fast")
@@ -258,15 +236,7 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         opt.screen_margin = v.in_range("screen_margin", screen_margin, 0.0, 0.5)
 
     def point_result(step, p_core):
-        p = p_core / to_core
-        spd = p if vary == "speed_hz" else start.speed_hz
-        pc = p if vary == "chamber_pressure_pa" else start.chamber_pressure_pa
-        if vary != "config_ay_m":
-            return orbit_result(asm, step.orbit, kind, float(spd), float(pc), a0)
-        a = base.a + p * np.asarray(inp.config_direction)
-        o = orbit_result(asm, step.orbit, kind, float(spd), float(pc), np.asarray(a))
-        # the result's config_ay_m is the first bearing's; the parameter is the active one's
-        return dataclasses.replace(o, config_ay_m=float(p))
+        return setup.point_result(step.orbit, p_core, extra_stats={"method": "shooting"})
 
     def correct(x, T, p_core, y_prev, tangent, step_ds, jacobian=np.zeros((0, 0))):
         base.r0, base.v0, base.period = x[:n], x[n:], float(T)
@@ -282,17 +252,11 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     y_start = np.concatenate([x0, [start.period_s, p_start * to_core]])
     first = correct(x0, start.period_s, p_start * to_core, y_start, np.zeros(0), 0.0)
     orbits, ys, tangents, arcl, jacobians = [], [], [], [], []
-    stats = {"correctors": 1, "failed_correctors": 0, "flows": first.orbit.iterations,
+    stats = {"method": "shooting", "correctors": 1, "failed_correctors": 0,
+             "flows": first.orbit.iterations,
              "sensitivity_flows": first.orbit.sensitivity_flows, "fd_flows": first.fd_flows}
     if first.orbit.status != "ok":
-        return BranchResult(
-            vary=vary, kind=kind, parameter=np.zeros(0),
-            amplitude_m=np.zeros((0, len(_names(bcs)))),
-            period_s=np.zeros(0), max_multiplier=np.zeros(0), stable=np.zeros(0, bool),
-            critical_type=(), arclength=np.zeros(0), tangent_p=np.zeros(0),
-            bearing_names=_names(bcs), clearance_m=_clearances(bcs), bifurcations=(),
-            bounds=(lo, hi), stop="start", message=first.orbit.message, stats=stats,
-            status="not_converged")
+        return setup.failed(first.orbit.message, stats)
 
     def accept(step):
         o = point_result(step, step.p)
@@ -345,7 +309,7 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         # family half a period on: the branch ends there.
         o_new = point_result(step, step.p)
         if kind == "autonomous" and _offset_dot(orbits[-1], o_new, scale[:2 * n]) < 0:
-            hopf = _hopf_estimate(orbits, o_new, vary)
+            hopf = hopf_estimate(orbits, o_new, vary)
             stop = "hopf"
             break
         accept(step)
@@ -355,8 +319,7 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         if o.iterations <= (3 if newton == "sensitivities" else 4):
             h = min(h * 1.5, ds_max)
 
-    br = _branch(vary, kind, orbits, tangents, arcl, to_core, bcs, (lo, hi), stop, message,
-                 stats)
+    br = assemble(vary, kind, orbits, tangents, arcl, bcs, (lo, hi), stop, message, stats)
     if hopf is not None:
         br = dataclasses.replace(br, bifurcations=br.bifurcations + (hopf,))
     return br
@@ -369,66 +332,3 @@ def _offset(o: PeriodicOrbitResult, dx: np.ndarray) -> np.ndarray:
 
 def _offset_dot(a: PeriodicOrbitResult, b: PeriodicOrbitResult, dx: np.ndarray) -> float:
     return float(np.dot(_offset(a, dx), _offset(b, dx)))
-
-
-def _hopf_estimate(orbits, beyond: PeriodicOrbitResult, vary: str) -> dict:
-    """The Hopf point where the branch meets the equilibrium: p against the signed amplitude
-    (positive on the branch, negative beyond) through the last two points and the one
-    beyond, a parabola p = p_H + b·A + c·A² evaluated at A = 0 (near a Hopf point
-    A² ∝ |p − p_H|). ``curvature`` c (unit of ``vary`` per m²): with the cycles on the
-    unstable side of the equilibrium and stable, the Hopf point is supercritical."""
-    pts = list(orbits[-2:]) + [beyond]
-    key = {"chamber_pressure_pa": "chamber_pressure_pa", "speed_hz": "speed_hz",
-           "config_ay_m": "config_ay_m"}[vary]
-    p = np.array([getattr(o, key) for o in pts])
-    A = np.array([_amplitude(o)[0] for o in pts])
-    A[-1] = -A[-1]
-    if len(pts) == 3:
-        coef = np.polyfit(A, p, 2)
-        p_h, curv = float(coef[2]), float(coef[0])
-    else:
-        w = A[0] / (A[0] - A[1])
-        p_h, curv = float(p[0] + w * (p[1] - p[0])), float("nan")
-    nb = max(beyond.journal_x_m.shape[1], 1)
-    return {"kind": "hopf", "index": len(orbits) - 1, "parameter": p_h,
-            "amplitude_m": np.zeros(nb), "multiplier": complex(1.0), "curvature": curv,
-            "period_s": float(beyond.period_s), "beyond_parameter": float(p[-1]),
-            "beyond_amplitude_m": float(-A[-1])}
-
-
-def _branch(vary, kind, orbits, tangents, arcl, to_core, bcs, bounds, stop, message, stats):
-    n_pts = len(orbits)
-    p = np.array([{"chamber_pressure_pa": o.chamber_pressure_pa, "speed_hz": o.speed_hz,
-                   "config_ay_m": o.config_ay_m}[vary] for o in orbits])
-    amp = np.array([_amplitude(o) for o in orbits]).reshape(n_pts, len(_names(bcs)))
-    mm = np.array([abs(o.critical_multiplier) if o.critical_multiplier is not None else 0.0
-                   for o in orbits])
-    stable = np.array([o.stable for o in orbits], dtype=bool)
-    ctype = tuple(o.critical_type for o in orbits)
-    tp = np.array([t[-1] for t in tangents])
-    bif = []
-    for i in range(1, n_pts):
-        turned = tp[i - 1] * tp[i] < 0
-        crossed = (mm[i - 1] - 1.0) * (mm[i] - 1.0) < 0
-        if not (turned or crossed):
-            continue
-        if turned:
-            # where dp/ds = 0, linear in the arclength between the two points
-            w = tp[i - 1] / (tp[i - 1] - tp[i])
-            k = "fold"
-        else:
-            w = (1.0 - mm[i - 1]) / (mm[i] - mm[i - 1])
-            unstable_side = i if mm[i] > 1 else i - 1
-            ct = ctype[unstable_side]
-            k = {"fold": "stability_change"}.get(ct, ct)
-        mu = orbits[i].critical_multiplier
-        bif.append({"kind": k, "index": i, "parameter": float(p[i - 1] + w * (p[i] - p[i - 1])),
-                    "amplitude_m": amp[i - 1] + w * (amp[i] - amp[i - 1]),
-                    "multiplier": complex(mu) if mu is not None else complex(np.nan)})
-    return BranchResult(
-        vary=vary, kind=kind, parameter=p, amplitude_m=amp,
-        period_s=np.array([o.period_s for o in orbits]), max_multiplier=mm, stable=stable,
-        critical_type=ctype, arclength=np.array(arcl, dtype=float), tangent_p=tp,
-        bearing_names=_names(bcs), clearance_m=_clearances(bcs), bifurcations=tuple(bif),
-        orbits=tuple(orbits), bounds=bounds, stop=stop, message=message, stats=stats,
-        status="ok")

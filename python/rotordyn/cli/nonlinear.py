@@ -1,7 +1,7 @@
 """Nonlinear dynamics on the command line: ``periodic-orbit`` (a limit cycle or an
 unbalance-forced orbit by shooting or harmonic balance, with its Floquet multipliers) and
-``continuation`` (its branch over p_c, speed or a_y by pseudo-arclength continuation;
-docs/nonlinear.md)."""
+``continuation`` (its branch over p_c, speed or a_y by pseudo-arclength continuation, with
+shooting or harmonic-balance correctors; docs/nonlinear.md)."""
 
 from __future__ import annotations
 
@@ -44,10 +44,16 @@ def register(sub) -> None:
     c.add_argument("--max-points", type=int, default=50, help="points on the branch")
     c.add_argument("--direction", type=int, choices=[1, -1], default=1,
                    help="leave the start towards growing (1) or falling (-1) parameter")
-    c.add_argument("--newton", choices=list(CLI_NEWTON), default=DEFAULT_NEWTON,
-                   help="the correctors (default %(default)s): exact = Newton with the "
-                        "monodromy from CVODES sensitivities and dR/dp by central "
-                        "differences at every iteration, every point's multipliers at "
+    _hb_arguments(c, floquet=("samples", "flow"))
+    c.add_argument("--floquet-margin", type=float, default=None, metavar="F",
+                   help="harmonic balance: the multipliers from the samples are recomputed by "
+                        "one CVODES sensitivity flow where |mu_c| is within F of 1 or the "
+                        "trivial multiplier is off 1 by more than F/2, in [0, 0.5] (default "
+                        "0.01)")
+    c.add_argument("--newton", choices=list(CLI_NEWTON), default=None,
+                   help=f"--method shooting: the correctors (default {DEFAULT_NEWTON}): "
+                        "exact = Newton with the monodromy from CVODES sensitivities and "
+                        "dR/dp by central differences at every iteration, every point's multipliers at "
                         "--rtol; fast = Broyden updates from the previous point's matrix, "
                         "dR/dp from a CVODES parameter sensitivity (p_c, a_y; the speed "
                         "keeps the central difference), each point's monodromy screened "
@@ -92,21 +98,22 @@ HB_FLAGS = (("harmonics", "--harmonics", 8), ("samples", "--samples", None),
             ("floquet", "--floquet", "samples"), ("start_amplitude_c", "--start-amplitude-c", 0.3))
 
 
-def _hb_arguments(s) -> None:
+def _hb_arguments(s, floquet=("samples", "flow", "none")) -> None:
     s.add_argument("--method", choices=["shooting", "harmonic_balance"], default="shooting",
                    help="shooting (default): Newton on the CVODES flow over one period; "
                         "harmonic_balance: Newton on the Fourier coefficients of the orbit "
                         "with the film forces at --samples points per period (AFT; "
-                        "docs/nonlinear.md)")
+                        "docs/nonlinear.md); a branch's correctors likewise")
     s.add_argument("--harmonics", type=int, default=None, metavar="H",
                    help="harmonic balance: harmonics H of the orbit, 1..1000 (default 8)")
     s.add_argument("--samples", type=int, default=None, metavar="M",
                    help="harmonic balance: time samples per period M >= 2H + 1, at most "
                         "100000 (default 4H)")
-    s.add_argument("--floquet", choices=["samples", "flow", "none"], default=None,
+    s.add_argument("--floquet", choices=list(floquet), default=None,
                    help="harmonic balance: the Floquet multipliers from the M samples' "
                         "linearisations (samples, default: Magnus, no film solve), from one "
-                        "CVODES sensitivity flow at --rtol (flow), or none")
+                        "CVODES sensitivity flow at --rtol (flow)"
+                        + (", or none" if "none" in floquet else ""))
     s.add_argument("--start-amplitude-c", type=float, default=None, metavar="F",
                    help="harmonic balance, autonomous cycle started at the equilibrium "
                         "(--settle-s 0, the default with harmonic balance): the journal's "
@@ -231,6 +238,16 @@ def _method_info(hb: dict, res, start) -> dict:
 
 def _cmd_continuation(args) -> int:
     check_figure(args.plot)
+    hb = _hb_options(args)
+    method = hb["method"]
+    if method == "harmonic_balance" and args.newton is not None:
+        raise InputError("--newton: applies only to --method shooting (the correctors of "
+                         "harmonic balance are Newton on the orbit's coefficients)")
+    if method != "harmonic_balance" and args.floquet_margin is not None:
+        raise InputError("--floquet-margin: applies only to --method harmonic_balance")
+    if args.floquet_margin is not None:
+        v.in_range("--floquet-margin", args.floquet_margin, 0.0, 0.5)
+    newton = args.newton or DEFAULT_NEWTON
     s = models.load(args.model)
     ub = _unbalances(args.unbalance)
     v.bounds("--bounds", args.bounds)
@@ -238,32 +255,51 @@ def _cmd_continuation(args) -> int:
     start = _settled_start(args, s, ub)
     if start is False:
         return 1
+    # the start by the branch's method (harmonic balance: its multipliers from the samples;
+    # the branch's first corrector solves it again with the branch's options)
+    start_how = {**hb, "floquet": "samples"} if method == "harmonic_balance" else hb
     orbit = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa,
                                     args.config_ay_m, kind=args.kind, start=start,
                                     unbalances=ub, subharmonic=args.subharmonic,
-                                    rtol=args.rtol, tol=args.tol)
+                                    rtol=args.rtol, tol=args.tol, **start_how)
     if not orbit.ok:
         print(f"rotordyn: no start orbit: {orbit!r}")
         return 1
+    if method == "harmonic_balance":
+        how = {"method": method, "harmonics": hb["harmonics"], "time_points": hb["time_points"],
+               "floquet": hb["floquet"], "floquet_margin": args.floquet_margin}
+    else:
+        how = {"newton": newton}
     br = analysis.continuation(s, args.vary, tuple(args.bounds), orbit, unbalances=ub,
                                ds=args.ds, ds_max=max(0.2, args.ds), max_points=args.max_points,
-                               direction=args.direction, rtol=args.rtol, tol=args.tol,
-                               newton=args.newton)
+                               direction=args.direction, rtol=args.rtol, tol=args.tol, **how)
+    info = {"method": method}
+    if method == "harmonic_balance":
+        info.update(harmonics=br.stats["harmonics"], time_points=br.stats["time_points"],
+                    floquet=br.stats["floquet"], floquet_margin=br.stats["floquet_margin"])
+    routes = [o.stats.get("floquet", "flow") for o in br.orbits]
     if args.json:
         print(json_text({
             "status": br.status, "stop": br.stop, "message": br.message, "vary": br.vary,
-            "kind": br.kind, "newton": args.newton, "parameter": br.parameter, "amplitude_m": br.amplitude_m,
+            "kind": br.kind, **info, "newton": newton if method == "shooting" else None,
+            "parameter": br.parameter, "amplitude_m": br.amplitude_m,
             "period_s": br.period_s, "max_multiplier": br.max_multiplier,
             "stable": br.stable, "critical_type": list(br.critical_type),
+            "floquet_route": routes,
             "bifurcations": [{"kind": b["kind"], "index": b["index"],
                               "parameter": b["parameter"]} for b in br.bifurcations],
             "stats": br.stats,
         }))
     else:
         print(repr(br))
+        settings = ", ".join(f"{k} = {x}" for k, x in info.items() if k != "method")
+        print(f"method: {method}" + (f" ({settings})" if settings else f" (newton = {newton})"))
         cols = [br.vary, "amplitude_m", "period_s", "max_multiplier", "stable",
                 "critical_type", "bifurcation"]
-        print(table_text(br.to_frame()[cols]))
+        df = br.to_frame()[cols]
+        if method == "harmonic_balance":
+            df = df.assign(floquet=np.repeat(routes, len(br.bearing_names)))
+        print(table_text(df))
     if args.plot and len(br):
         save_figure(br.plot(), args.plot, args.dpi)
     return 0 if br.ok else 1

@@ -29,7 +29,12 @@ Rows (one schema, ``record`` tells them apart):
 Options (docs/nonlinear.md): the ``hopf`` analysis's, and the shooting's ``rtol``, ``tol``,
 ``sensitivity_rtol``, ``n_out``; the continuation's ``ds``, ``ds_max``, ``max_points``,
 ``newton`` (``exact`` — the default, also ``sensitivities`` —, ``fast``, ``broyden``: its
-correctors only; the cycle at each grid value is shot by Newton with sensitivities); ``start_amplitude``, ``distance``, ``station``. ``tol`` is the shooting's:
+correctors only; the cycle at each grid value is shot by Newton with sensitivities); ``method``
+(``shooting``, the default, or ``harmonic_balance``: the branches' correctors and the cycle at
+each grid value by harmonic balance, with ``harmonics`` and ``time_points``; its Floquet
+multipliers from the samples, by one sensitivity flow near the unit circle; the first cycle
+at a Hopf point stays shot) — each cycle row's ``method`` says which computed it;
+``start_amplitude``, ``distance``, ``station``. ``tol`` is the shooting's:
 the threshold scan, crossings and l1 of the hopf rows keep the equilibrium's default
 tolerance, so they equal a ``hopf`` sweep's rows.
 
@@ -46,6 +51,7 @@ import numpy as np
 
 from rotordyn.analysis.assembly import pin_assembled
 from rotordyn.analysis.continuation import DEFAULT_NEWTON, continuation
+from rotordyn.analysis.hb_continuation import HARMONICS, checked_orbit
 from rotordyn.analysis.hopf import FD_STEP, hopf, hopf_cycle
 from rotordyn.analysis.periodic import periodic_orbit
 from rotordyn.analysis.transient import transient
@@ -66,7 +72,8 @@ CYCLE_COLUMNS = ("cycle", "bearing", "amplitude_m", "amplitude_c", "period_s",
 NATURAL_ENDS = ("bound", "hopf", "rub", "equilibrium")
 #: defaults of the options (docs/nonlinear.md)
 DEFAULTS = {"rtol": 1e-7, "tol": 1e-6, "ds": 0.05, "ds_max": 0.2, "max_points": 60,
-            "n_out": 1001, "start_amplitude": 0.08, "newton": DEFAULT_NEWTON}
+            "n_out": 1001, "start_amplitude": 0.08, "newton": DEFAULT_NEWTON,
+            "method": "shooting", "harmonics": HARMONICS}
 
 
 def semi_major_axis(x, y) -> float:
@@ -105,7 +112,8 @@ def _cycle_columns(o, C, clearance, speed):
             "whirl_ratio": 1.0 / (o.period_s * speed) if speed else math.nan,
             "max_multiplier": abs(mc) if mc is not None else math.nan,
             "critical_type": o.critical_type, "stable": bool(o.stable),
-            "newton_iterations": int(o.stats.get("iterations", 0))}
+            "newton_iterations": int(o.stats.get("iterations", 0)),
+            "method": str(o.stats.get("method", "shooting"))}
 
 
 class _Line:
@@ -123,6 +131,9 @@ class _Line:
         self.srtol = o.get("sensitivity_rtol")
         self.n_out = int(o.get("n_out", DEFAULTS["n_out"]))
         self.newton = str(o.get("newton", DEFAULTS["newton"]))
+        self.method = str(o.get("method", DEFAULTS["method"]))
+        self.harmonics = int(o.get("harmonics", DEFAULTS["harmonics"]))
+        self.time_points = o.get("time_points")
 
     def operating(self, value):
         p = dict(self.p0)
@@ -130,8 +141,20 @@ class _Line:
         return (float(p.get("speed_hz", 50.0)), float(p.get("chamber_pressure_pa", 0.0)),
                 p.get("config_ay_m"))
 
+    def corrector_options(self) -> dict:
+        """The continuation's keywords of the method (shooting: its correctors)."""
+        if self.method == "harmonic_balance":
+            return {"method": self.method, "harmonics": self.harmonics,
+                    "time_points": self.time_points}
+        return {"newton": self.newton}
+
     def shoot(self, value, r, vel, period):
         f, pc, ay = self.operating(value)
+        if self.method == "harmonic_balance":
+            return checked_orbit(self.system, f, pc, ay, start=(r, vel), period_s=period,
+                                 harmonics=self.harmonics, time_points=self.time_points,
+                                 n_out=self.n_out, rtol=self.rtol, tol=self.tol,
+                                 sensitivity_rtol=self.srtol)
         return periodic_orbit(self.system, f, pc, ay, start=(r, vel), period_s=period,
                               n_out=self.n_out, rtol=self.rtol, tol=self.tol,
                               sensitivity_rtol=self.srtol)
@@ -202,7 +225,7 @@ def _branch(job, line, hrow, span, ys):
         ds0 = min(ds, max(0.5 * a0, 2e-3))
         kw = dict(ds=ds0, ds_min=min(1e-3, 0.5 * ds0),
                   ds_max=ds_max, param_scale=span, rtol=line.rtol, tol=line.tol,
-                  sensitivity_rtol=line.srtol, n_out=101, newton=line.newton)
+                  sensitivity_rtol=line.srtol, n_out=101, **line.corrector_options())
         mp = int(o.get("max_points", DEFAULTS["max_points"]))
         out = []
         for direction in (sgn, -sgn):
@@ -337,9 +360,11 @@ def limit_cycle_line(job, variants, lo, hi, at, asms):
     merge`)."""
     scan = {}
     # the hopf rows without the shooting's ``tol``: the threshold scan, the crossings and
-    # l1 read ``tol`` as the equilibrium's tolerance (default 1e-10, as in a hopf sweep)
+    # l1 read ``tol`` as the equilibrium's tolerance (default 1e-10, as in a hopf sweep),
+    # and ``method`` as the equilibrium's solver (here: the cycles' method)
     hjob = copy.copy(job)
-    hjob.options = {k: x for k, x in job.options.items() if k != "tol"}
+    hjob.options = {k: x for k, x in job.options.items()
+                    if k not in ("tol", "method", "harmonics", "time_points")}
     line_asms = [None] * (hi - lo)
     hblocks = hopf_line_blocks(hjob, variants, lo, hi, 0, line_asms, scan)
     asms[at:at + hi - lo] = line_asms

@@ -24,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+from rotordyn.analysis.continuation import METHODS as CONTINUATION_METHODS
 from rotordyn.analysis.continuation import NEWTON_MODES
 from rotordyn.errors import InputError
 from rotordyn._common import validate as v
@@ -164,7 +165,9 @@ OPTIONS["limit_cycle"] = {**OPTIONS["hopf"], "station": _opt_int(0, 100000),
                           "max_points": _opt_int(2, 10000), "n_out": _opt_int(8, 100000),
                           "distance": _opt_range(0.0, 0.5),
                           "start_amplitude": _opt_range(0.0, 0.9),
-                          "newton": _opt_choice(*NEWTON_MODES)}
+                          "newton": _opt_choice(*NEWTON_MODES),
+                          "method": _opt_choice(*CONTINUATION_METHODS),
+                          "harmonics": _opt_int(1, 1000), "time_points": _opt_int(3, 100000)}
 REQUIRED["limit_cycle"] = ("vary",)
 
 
@@ -425,6 +428,20 @@ class SweepSpec:
             if z and z in (x, y):
                 raise InputError("options.z: must differ from options.x and options.y")
             fine_axes(self)
+        if a == "limit_cycle":
+            o = self.options
+            hb = o.get("method", "shooting") == "harmonic_balance"
+            if hb and "newton" in o:
+                raise InputError("options.newton: applies only to options.method = "
+                                 "'shooting' (harmonic balance corrects by Newton on the "
+                                 "orbit's coefficients)")
+            for k in ("harmonics", "time_points"):
+                if k in o and not hb:
+                    raise InputError(f"options.{k}: applies only to options.method = "
+                                     "'harmonic_balance'")
+            if "time_points" in o and o["time_points"] < 2 * o.get("harmonics", 8) + 1:
+                raise InputError(f"options.time_points: expected M >= 2H + 1 = "
+                                 f"{2 * o.get('harmonics', 8) + 1}, got {o['time_points']}")
         if a == "run-up":
             if "speed_hz" in self.axes:
                 raise InputError("grid.speed_hz: a run-up takes its speeds from options "

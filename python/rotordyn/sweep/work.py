@@ -71,7 +71,7 @@ OUTPUTS["limit_cycle"] = {"record": _cat(["hopf", "cycle"]), **OUTPUTS["hopf"],
                           "period_s": F64, "max_multiplier": F64, "critical_type": STR,
                           "stable": BOOL, "equilibrium_stable": BOOL, "max_real_1_per_s": F64,
                           "coexists_with_stable_equilibrium": BOOL, "bistable": BOOL,
-                          "newton_iterations": I64}
+                          "newton_iterations": I64, "method": STR}
 
 
 # a stability / Campbell / unbalance sweep with ``options.thermal`` (:mod:`.thermal_rows`):

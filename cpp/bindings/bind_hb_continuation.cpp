@@ -1,0 +1,46 @@
+// Pseudo-arclength corrector by harmonic balance; the GIL is released while correcting (the
+// solver object must not be shared between threads).
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "rotordyn/hb_continuation.hpp"
+
+namespace rotordyn::py_bind {
+
+void bind_hb_continuation(py::module_& m) {
+  py::class_<HbContinuationInput>(m, "HbContinuationInput")
+      .def(py::init<>())
+      .def_readwrite("base", &HbContinuationInput::base)
+      .def_readwrite("parameter", &HbContinuationInput::parameter)
+      .def_readwrite("config_direction", &HbContinuationInput::config_direction)
+      .def_readwrite("subharmonic", &HbContinuationInput::subharmonic)
+      .def_readwrite("coefficients", &HbContinuationInput::coefficients)
+      .def_readwrite("frequency", &HbContinuationInput::frequency)
+      .def_readwrite("p", &HbContinuationInput::p)
+      .def_readwrite("scale", &HbContinuationInput::scale)
+      .def_readwrite("y_prev", &HbContinuationInput::y_prev)
+      .def_readwrite("tangent", &HbContinuationInput::tangent)
+      .def_readwrite("ds", &HbContinuationInput::ds)
+      .def_readwrite("direction", &HbContinuationInput::direction)
+      .def_readwrite("fd_step", &HbContinuationInput::fd_step);
+  py::class_<HbContinuationOptions>(m, "HbContinuationOptions")
+      .def(py::init<>())
+      .def_readwrite("hb", &HbContinuationOptions::hb)
+      .def_readwrite("floquet_margin", &HbContinuationOptions::floquet_margin);
+  py::class_<HbContinuationStep>(m, "HbContinuationStep")
+      .def_readonly("hb", &HbContinuationStep::hb)
+      .def_readonly("p", &HbContinuationStep::p)
+      .def_readonly("tangent", &HbContinuationStep::tangent)
+      .def_readonly("floquet_route", &HbContinuationStep::floquet_route)
+      .def_readonly("sample_critical_modulus", &HbContinuationStep::sample_critical_modulus)
+      .def_readonly("sample_trivial_error", &HbContinuationStep::sample_trivial_error)
+      .def_readonly("fd_evaluations", &HbContinuationStep::fd_evaluations);
+  m.def("hb_continuation_step", &hb_continuation_step, py::arg("solver"), py::arg("input"),
+        py::arg("options"), py::call_guard<py::gil_scoped_release>(),
+        "One pseudo-arclength corrector step of a periodic-orbit branch by harmonic balance "
+        "(Newton on the Fourier coefficients, frequency and parameter, bordered by dR/dp and "
+        "the arclength condition); the new unit tangent and the Floquet route.");
+}
+
+}  // namespace rotordyn::py_bind

@@ -1,0 +1,93 @@
+// Pseudo-arclength continuation of periodic orbits (paper eq. 12) by harmonic balance: one
+// corrector step per call on the harmonic-balance unknowns, bordered by the parameter and the
+// arclength condition. The branch loop (predictor, step control, bifurcations) drives it
+// (python/rotordyn/analysis/hb_continuation.py); the shooting corrector is continuation.hpp.
+//
+// Unknowns in scaled coordinates u = (z / L, ω / D_ω, p / D_p): z the Fourier coefficients of
+// the positions (harmonic_balance.hpp: rows c0, a_1, b_1, …, a_H, b_H of every coordinate,
+// flattened row by row), ω = 2π/T (an unknown for autonomous cycles only; a forced orbit has
+// ω = |Ω|/k and follows a speed parameter), p the parameter. With a unit tangent t at the
+// previous point u_prev and the arclength step ds the corrector solves
+//
+//   R̃(z, ω, p) = 0                              the AFT residual of eq. 12, scaled (units of L)
+//   φᵀ z = 0                                    (autonomous) the integral phase condition
+//                                               ∫ r(τ)·r'_prev(τ) dτ = 0 against the previous
+//                                               point: Σ_k k (a_k·b_k,prev − b_k·a_k,prev)
+//   tᵀ (u − u_prev) − ds = 0                    pseudo-arclength (first point: p held)
+//
+// by damped Newton with the matrix [[∂R̃/∂z, ∂R̃/∂ω, ∂R̃/∂p]; [φᵀ, 0, 0]; tᵀ]: ∂R̃/∂z and ∂R̃/∂ω
+// the harmonic-balance Jacobian (the films' perturbation-method K_H, D_H at the samples, the
+// code of harmonic_balance.cpp), ∂R̃/∂p exact where eq. 12 is affine in p (p_c: −c_s, a_y:
+// K·∂a/∂a_y, both in the constant harmonic only) and a central difference of two residual
+// evaluations at p ± h for the speed (M, G, the films and a forced period depend on Ω). The
+// new tangent is the null vector of the first rows, oriented along the previous tangent.
+// Floquet multipliers from the samples' linearisations (no film solve), recomputed by one
+// CVODES sensitivity flow where the verdict is not safe from the samples.
+#pragma once
+#include <Eigen/Core>
+
+#include <string>
+
+#include "rotordyn/continuation.hpp"
+#include "rotordyn/harmonic_balance.hpp"
+
+namespace rotordyn {
+
+struct HbContinuationInput {
+  /// The orbit's fixed data (kind, a, unbalance, t0, n_out); omega / chamber_pressure / a are
+  /// overridden by the parameter; r0, v0 and period are not used.
+  PeriodicInput base;
+  ContinuationParameter parameter = ContinuationParameter::chamber_pressure;
+  /// config: a(p) = base.a + p · config_direction (n,); base.a is the configuration at p = 0.
+  Eigen::VectorXd config_direction;
+  int subharmonic = 1;             ///< forced orbits: T = subharmonic · 2π / |Ω|
+  Eigen::MatrixXd coefficients;    ///< (2H + 1, n) predicted coefficients, m
+  double frequency = 0.0;          ///< predicted ω, rad/s (autonomous; forced: from p)
+  double p = 0.0;                  ///< predicted parameter: Pa, rad/s or m
+  Eigen::VectorXd scale;           ///< (3): L (coefficients, m), D_ω (rad/s), D_p
+  /// ((2H + 1) n + 2) the previous point (coefficients row by row, ω, p), unscaled
+  Eigen::VectorXd y_prev;
+  /// ((2H + 1) n + 2) unit tangent at y_prev in scaled coordinates; empty: no arclength
+  /// condition, the parameter is held at p (the first point of a branch)
+  Eigen::VectorXd tangent;
+  double ds = 0.0;                 ///< scaled arclength from y_prev
+  int direction = 1;               ///< first point: orient the new tangent to increase p (+1)
+  double fd_step = 1e-4;           ///< h / D_p of the central difference ∂R/∂p (speed)
+};
+
+struct HbContinuationOptions {
+  /// harmonics, time_points, tol (scaled residual), max_iter, film_continuation, floquet,
+  /// magnus_substeps, cvode and sensitivity_rtol (the flows of the Floquet recheck); the length
+  /// scale is scale(0) and there is no deflation (the arclength row keeps the corrector off
+  /// the equilibria).
+  HarmonicBalanceOptions hb;
+  /// floquet = samples: the multipliers are recomputed by one CVODES sensitivity flow (at
+  /// sensitivity_rtol) where | |μ_c| − 1 | < floquet_margin or |μ_trivial − 1| >
+  /// floquet_margin / 2 (a poor sample monodromy: its |μ_c| error was measured up to about
+  /// 1.5 × its trivial multiplier's); 0: never.
+  double floquet_margin = 0.01;
+};
+
+struct HbContinuationStep {
+  /// The corrected orbit (orbit: samples, multipliers, status; coefficients, frequency,
+  /// counters of the call).
+  HarmonicBalanceResult hb;
+  double p = 0.0;                  ///< its parameter
+  /// ((2H + 1) n + 2) unit tangent there (scaled), empty on failure
+  Eigen::VectorXd tangent;
+  /// Where the reported multipliers come from: "samples", "flow" (the recheck, or floquet =
+  /// flow) or "none"; empty on failure.
+  std::string floquet_route;
+  /// From the samples' monodromy (also where the flow replaced it, and with floquet = flow):
+  /// |μ_c| and |μ_trivial − 1| (autonomous; else 0); NaN when not computed.
+  double sample_critical_modulus = 0.0, sample_trivial_error = 0.0;
+  long fd_evaluations = 0;         ///< residual evaluations for the central difference ∂R/∂p
+};
+
+/// One pseudo-arclength corrector step by harmonic balance. Failures are statuses of
+/// hb.orbit (not_converged, rub, error, with a message); InputError for shapes, a
+/// non-positive scale, fd_step outside (0, 1), harmonics / time points out of range.
+HbContinuationStep hb_continuation_step(SystemSolver& solver, const HbContinuationInput& in,
+                                        const HbContinuationOptions& opt);
+
+}  // namespace rotordyn

@@ -1,0 +1,443 @@
+// Pseudo-arclength corrector by harmonic balance (hb_continuation.hpp). The residual, its
+// Jacobian, the orbit's samples and the monodromy are harmonic_balance.cpp's (hb_detail.hpp);
+// the operating point at a parameter value is the shooting corrector's (shooting_detail.hpp).
+#include "rotordyn/hb_continuation.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+#include "hb_detail.hpp"
+#include "rotordyn/errors.hpp"
+#include "shooting_detail.hpp"
+
+namespace rotordyn {
+
+namespace {
+
+using shooting_detail::Flow;
+
+// Everything an evaluation at one parameter value needs: the orbit input there, its flow data
+// (M(Ω), F0, C + ΩG) and the AFT problem pointing at both (so not copyable).
+struct At {
+  PeriodicInput in;
+  Flow F;
+  hb_detail::Problem P;
+  At(SystemSolver& solver, const HbContinuationInput& c, const hb_detail::Basis& B, double p)
+      : in(shooting_detail::at_parameter(c.base, c.parameter, c.config_direction, c.subharmonic,
+                                         p)) {
+    shooting_detail::setup_flow(F, solver, in);
+    P.solver = &solver;
+    P.in = &in;
+    P.F = &F;
+    P.B = B;
+    P.n = F.n;
+  }
+  At(const At&) = delete;
+  At& operator=(const At&) = delete;
+  /// ω of a forced orbit at this parameter (its period follows Ω).
+  double forced_w() const { return 2 * M_PI / in.period; }
+};
+
+}  // namespace
+
+HbContinuationStep hb_continuation_step(SystemSolver& solver, const HbContinuationInput& c,
+                                        const HbContinuationOptions& opt) {
+  const HarmonicBalanceOptions& ho = opt.hb;
+  require(ho.harmonics >= 1 && ho.harmonics <= 1000,
+          "harmonics: expected an integer in [1, 1000], got " + std::to_string(ho.harmonics));
+  const int H = ho.harmonics, nb = 2 * H + 1;
+  const int M = ho.time_points == 0 ? std::max(4 * H, 2 * H + 1) : ho.time_points;
+  require(M >= 2 * H + 1 && M <= 100000,
+          "time_points: expected M >= 2H + 1 = " + std::to_string(2 * H + 1) +
+              " (and <= 1e5), got " + std::to_string(M));
+  require(ho.tol > 0 && std::isfinite(ho.tol), "tol: expected a value > 0");
+  require(ho.max_iter >= 1, "max_iter: expected at least 1");
+  require(ho.magnus_substeps >= 1, "magnus_substeps: expected at least 1");
+  require(opt.floquet_margin >= 0 && opt.floquet_margin < 1,
+          "floquet_margin: expected a value in [0, 1)");
+  const SystemModel& m = solver.model();
+  const Eigen::Index n = m.n(), nn = nb * n, Y = nn + 2;
+  const bool autonomous = c.base.kind == OrbitKind::autonomous;
+  require(c.coefficients.rows() == nb && c.coefficients.cols() == n && c.coefficients.allFinite(),
+          shape_msg("coefficients", nb, n, c.coefficients.rows(), c.coefficients.cols()) +
+              " (2H + 1 rows) with finite values");
+  require(c.scale.size() == 3 && c.scale.allFinite() && (c.scale.array() > 0).all(),
+          shape_msg("scale", 3, 1, c.scale.size(), 1) + " with finite values > 0");
+  require(c.y_prev.size() == Y && c.y_prev.allFinite(),
+          shape_msg("y_prev", Y, 1, c.y_prev.size(), 1) + " with finite values");
+  require(c.tangent.size() == 0 || (c.tangent.size() == Y && c.tangent.allFinite()),
+          shape_msg("tangent", Y, 1, c.tangent.size(), 1) + " (or empty)");
+  require(std::isfinite(c.p) && std::isfinite(c.ds), "p, ds: expected finite values");
+  require(c.fd_step > 0 && c.fd_step < 1, "fd_step: expected a value in (0, 1)");
+  require(c.subharmonic >= 1, "subharmonic: expected at least 1");
+  require(c.parameter != ContinuationParameter::config || c.config_direction.size() == n,
+          shape_msg("config_direction", n, 1, c.config_direction.size(), 1));
+  require(c.parameter != ContinuationParameter::speed || c.p != 0.0,
+          "speed: the continuation parameter Ω must not be 0");
+  require(!autonomous || (std::isfinite(c.frequency) && c.frequency > 0),
+          "frequency: expected a finite ω > 0 rad/s for an autonomous orbit");
+  {
+    PeriodicInput chk =
+        shooting_detail::at_parameter(c.base, c.parameter, c.config_direction, c.subharmonic, c.p);
+    chk.r0 = c.coefficients.colwise().sum().transpose();  // any finite (n,) state
+    chk.v0 = Eigen::VectorXd::Zero(n);
+    if (autonomous) chk.period = 2 * M_PI / c.frequency;
+    ShootingOptions so;
+    so.cvode = ho.cvode;
+    so.tol = ho.tol;
+    so.max_iter = ho.max_iter;
+    so.sensitivity_rtol = ho.sensitivity_rtol;
+    shooting_detail::validate(solver, chk, so);
+  }
+
+  HbContinuationStep out;
+  HarmonicBalanceResult& hb = out.hb;
+  hb.harmonics = H;
+  hb.time_points = M;
+  PeriodicOrbitResult& o = hb.orbit;
+  o.t0 = c.base.t0;
+  const double L = c.scale(0), Dw = c.scale(1), Dp = c.scale(2);
+  o.length_scale = L;
+  const long solves0 = solver.reynolds_solves();
+  const bool first = c.tangent.size() == 0;
+  const hb_detail::Basis B = hb_detail::make_basis(H, M);
+
+  if (ho.film_continuation) solver.set_film_continuation(true);
+  struct Off {
+    SystemSolver& s;
+    ~Off() { s.set_film_continuation(false); }
+  } off{solver};
+
+  // The unknowns' columns: z, [ω], p; the full layout (y, tangent) always has the ω entry.
+  const Eigen::Index U = autonomous ? nn + 2 : nn + 1, iw = nn, ip = U - 1;
+  Eigen::VectorXd sfull(Y);
+  sfull.head(nn).setConstant(L);
+  sfull(nn) = Dw;
+  sfull(nn + 1) = Dp;
+  const Eigen::VectorXd yprev_s = c.y_prev.cwiseQuotient(sfull);
+  auto to_unknowns = [&](const Eigen::VectorXd& full) {  // (Y) → (U)
+    Eigen::VectorXd u(U);
+    u.head(nn) = full.head(nn);
+    if (autonomous) u(iw) = full(nn);
+    u(ip) = full(nn + 1);
+    return u;
+  };
+  const Eigen::VectorXd uprev = to_unknowns(yprev_s);
+  const Eigen::VectorXd t_prev = first ? Eigen::VectorXd() : to_unknowns(c.tangent);
+  auto flat = [&](const Eigen::MatrixXd& Z) {  // (nb, n) → (nn), row by row
+    Eigen::VectorXd z(nn);
+    for (int p = 0; p < nb; ++p) z.segment(p * n, n) = Z.row(p).transpose();
+    return z;
+  };
+  auto unflat = [&](const Eigen::VectorXd& z) {
+    Eigen::MatrixXd Z(nb, n);
+    for (int p = 0; p < nb; ++p) Z.row(p) = z.segment(p * n, n).transpose();
+    return Z;
+  };
+  // The integral phase condition against the previous point's coefficients (autonomous),
+  // normalised; φᵀ z_prev = 0 identically.
+  Eigen::VectorXd phi;
+  if (autonomous) {
+    const Eigen::MatrixXd Zp = unflat(c.y_prev.head(nn));
+    phi = Eigen::VectorXd::Zero(nn);
+    for (int k = 1; k <= H; ++k)
+      for (Eigen::Index i = 0; i < n; ++i) {
+        phi((2 * k - 1) * n + i) = k * Zp(2 * k, i);
+        phi(2 * k * n + i) = -k * Zp(2 * k - 1, i);
+      }
+    const double pn = phi.norm();
+    if (!(pn > 0)) {
+      o.status = "not_converged";
+      o.message = "the previous point has no harmonics (an equilibrium): no phase condition";
+      return out;
+    }
+    phi /= pn;
+  }
+
+  Eigen::MatrixXd Z = c.coefficients;
+  double p = c.p;
+  long linearizations = 0, evaluations = 0;
+  auto make_at = [&](double pp) { return std::make_unique<At>(solver, c, B, pp); };
+  std::unique_ptr<At> cur = make_at(p);
+  double w = autonomous ? c.frequency : cur->forced_w();
+  auto count = [&](const At& a) {
+    linearizations += a.P.linearizations;
+    evaluations += a.P.evaluations;
+  };
+  auto unknowns = [&](const Eigen::MatrixXd& Zc, double wc, double pc) {
+    Eigen::VectorXd u(U);
+    u.head(nn) = flat(Zc) / L;
+    if (autonomous) u(iw) = wc / Dw;
+    u(ip) = pc / Dp;
+    return u;
+  };
+  // The condition rows' residuals: phase (autonomous) and arclength (the parameter held for
+  // the first point: its row is e_p with a zero residual).
+  auto conditions = [&](const Eigen::VectorXd& u) {
+    Eigen::VectorXd g(autonomous ? 2 : 1);
+    if (autonomous) g(0) = phi.dot(u.head(nn));
+    g(g.size() - 1) = first ? 0.0 : t_prev.dot(u - uprev) - c.ds;
+    return g;
+  };
+  Eigen::VectorXd rowscale;
+  hb_detail::Eval e = cur->P.eval(Z, w, true);
+  count(*cur);
+  if (e.ok) rowscale = hb_detail::row_scale(e, m, cur->F, cur->in.omega, w);
+
+  // ∂R/∂p at (Z, w, p) (unscaled, nn): exact for p_c and a_y (the constant harmonic), a
+  // central difference of two residual evaluations for the speed (ω follows Ω for a forced
+  // orbit). Empty when an evaluation at p ± h fails.
+  auto dRdp = [&]() -> Eigen::VectorXd {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(nn);
+    if (c.parameter == ContinuationParameter::chamber_pressure) {
+      d.head(n) = -m.chamber;
+    } else if (c.parameter == ContinuationParameter::config) {
+      d.head(n) = m.K * c.config_direction;
+    } else {
+      const double h = c.fd_step * Dp;
+      std::unique_ptr<At> ap = make_at(p + h), am = make_at(p - h);
+      const hb_detail::Eval ep = ap->P.eval(Z, autonomous ? w : ap->forced_w(), false);
+      const hb_detail::Eval em = am->P.eval(Z, autonomous ? w : am->forced_w(), false);
+      count(*ap);
+      count(*am);
+      out.fd_evaluations += 2;
+      if (!ep.ok || !em.ok) return Eigen::VectorXd();
+      d = (ep.R - em.R) / (2 * h);
+    }
+    return d;
+  };
+  // The bordered rows without the arclength row (scaled): R̃ and the phase row.
+  auto rows = [&](const hb_detail::Eval& ev, const Eigen::VectorXd& drdp) {
+    const Eigen::Index Rr = autonomous ? nn + 1 : nn;
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(Rr, U);
+    for (int q = 0; q < nb; ++q)
+      J.block(q * n, 0, n, nn) = rowscale.cwiseInverse().asDiagonal() * ev.J.middleRows(q * n, n);
+    const Eigen::VectorXd sp = hb_detail::scaled(drdp, rowscale, nb, L);
+    J.block(0, ip, nn, 1) = sp * Dp;
+    if (autonomous) {
+      J.block(0, iw, nn, 1) = hb_detail::scaled(ev.dRdw, rowscale, nb, L) * Dw;
+      J.block(nn, 0, 1, nn) = phi.transpose();
+    }
+    return J;
+  };
+  auto merit = [&](const Eigen::VectorXd& Rs, const Eigen::VectorXd& g) {
+    return std::sqrt(Rs.squaredNorm() + g.squaredNorm());
+  };
+
+  bool converged = false;
+  double res = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd drdp_conv;
+  for (int it = 0; e.ok; ++it) {
+    const Eigen::VectorXd Rs = hb_detail::scaled(e.R, rowscale, nb, L);
+    const Eigen::VectorXd u = unknowns(Z, w, p);
+    const Eigen::VectorXd g = conditions(u);
+    res = std::max(Rs.cwiseAbs().maxCoeff(), g.cwiseAbs().maxCoeff());
+    o.residuals.push_back(res);
+    o.iterations = it;
+    if (!std::isfinite(res)) {
+      o.status = "error";
+      o.message = "non-finite harmonic-balance residual";
+      break;
+    }
+    const Eigen::VectorXd drdp = dRdp();
+    if (drdp.size() == 0) {
+      o.status = "not_converged";
+      o.message = "corrector iteration " + std::to_string(it) +
+                  ": a residual at p ± h for the parameter derivative failed";
+      break;
+    }
+    if (res < ho.tol) {
+      converged = true;
+      drdp_conv = drdp;
+      break;
+    }
+    if (it >= ho.max_iter) break;
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(U, U);
+    const Eigen::MatrixXd Jr = rows(e, drdp);
+    J.topRows(Jr.rows()) = Jr;
+    Eigen::VectorXd b(U);
+    b.head(nn) = -Rs;
+    if (autonomous) b(nn) = -g(0);
+    if (first) {
+      J(U - 1, ip) = 1.0;
+      b(U - 1) = 0.0;
+    } else {
+      J.row(U - 1) = t_prev.transpose();
+      b(U - 1) = -g(g.size() - 1);
+    }
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu(J);
+    Eigen::VectorXd d = lu.solve(b);
+    if (!d.allFinite() || (J * d - b).norm() > 1e-6 * std::max(b.norm(), 1e-300) + 1e-12) {
+      o.status = "not_converged";
+      o.message = "corrector iteration " + std::to_string(it) +
+                  ": singular bordered Newton matrix (a branch point, or a step too long)";
+      break;
+    }
+    const double cap = std::max({1.0, d.head(nn).cwiseAbs().maxCoeff() / 0.25,
+                                 autonomous ? std::abs(d(iw)) * Dw / (0.1 * w) : 0.0,
+                                 std::abs(d(ip)) / 0.25});
+    d /= cap;
+    const double m0 = merit(Rs, g);
+    double lam = 1.0;
+    hb_detail::Eval trial;
+    std::unique_ptr<At> at_t;
+    Eigen::MatrixXd Zt;
+    double wt = w, pt = p;
+    for (int ls = 0; ls < 8; ++ls, lam *= 0.5) {
+      Zt = Z + lam * L * unflat(d.head(nn));
+      pt = p + lam * d(ip) * Dp;
+      at_t = make_at(pt);
+      wt = autonomous ? w + lam * d(iw) * Dw : at_t->forced_w();
+      trial = at_t->P.eval(Zt, wt, true);
+      count(*at_t);
+      if (trial.ok &&
+          merit(hb_detail::scaled(trial.R, rowscale, nb, L), conditions(unknowns(Zt, wt, pt))) <
+              (1.0 - 1e-4 * lam) * m0)
+        break;
+      if (trial.ok && ls == 7) break;  // the smallest step: accepted (a kink of the film)
+    }
+    if (!trial.ok) {
+      o.status = trial.contact ? "rub" : "not_converged";
+      o.message = "corrector iteration " + std::to_string(it) + ": " + trial.why;
+      e = trial;
+      break;
+    }
+    if (autonomous && !(wt > 0)) {
+      o.status = "not_converged";
+      o.message = "corrector iteration " + std::to_string(it) + ": the frequency fell to ≤ 0";
+      break;
+    }
+    Z = Zt;
+    w = wt;
+    p = pt;
+    cur = std::move(at_t);
+    e = std::move(trial);
+  }
+  if (!e.ok && o.status == "ok") {
+    o.status = e.contact ? "rub" : "not_converged";
+    o.message = "harmonic balance at the predicted point: " + e.why;
+  }
+  hb.coefficients = Z;
+  hb.frequency = w;
+  hb.harmonic_amplitudes = hb_detail::harmonic_amplitudes(Z, L);
+  out.p = p;
+  o.residual = res;
+  o.period = 2 * M_PI / w;
+  o.r0 = (B.E.row(0) * Z).transpose();
+  o.v0 = w * (B.E1.row(0) * Z).transpose();
+  auto finish = [&]() {
+    o.reynolds_solves = solver.reynolds_solves() - solves0;
+    hb.linearizations = linearizations;
+    hb.evaluations = evaluations;
+  };
+  if (!converged) {
+    if (o.status == "ok") {
+      std::ostringstream os;
+      os << "corrector did not converge in " << ho.max_iter << " Newton iterations: residual "
+         << res << " (tol " << ho.tol << "); shorten the step";
+      o.status = "not_converged";
+      o.message = os.str();
+    }
+    finish();
+    return out;
+  }
+  const double hmax = hb.harmonic_amplitudes.tail(H).maxCoeff();
+  if (autonomous && hmax < std::max(100 * ho.tol, 1e-4)) {
+    std::ostringstream os;
+    os << "the branch reached an equilibrium (the orbit's harmonics are " << hmax
+       << " of the length scale): the cycle has shrunk to a Hopf point";
+    o.status = "not_converged";
+    o.message = os.str();
+    finish();
+    return out;
+  }
+  if (!hb_detail::fill_orbit(o, Z, w, c.base.t0, c.base.n_out)) {
+    o.status = "error";
+    o.message = "non-finite harmonic-balance orbit";
+    finish();
+    return out;
+  }
+  // Floquet multipliers: from the samples' linearisations, recomputed by one sensitivity flow
+  // where the verdict is not safe at the samples' accuracy: |μ_c| within the margin of 1, or
+  // the trivial multiplier off 1 by more than half the margin (measured on the rig and the
+  // compressor's whip cycles: the samples' |μ_c| within 1.5 × their trivial error of the
+  // flow's at all but one point, and within 1.4e-3 there).
+  const double T = o.period;
+  const double srtol = ho.sensitivity_rtol > 0 ? ho.sensitivity_rtol : ho.cvode.rtol;
+  out.sample_critical_modulus = out.sample_trivial_error = std::numeric_limits<double>::quiet_NaN();
+  // (floquet = flow: the samples' multipliers are computed as well, for the record: a few
+  // milliseconds of dense algebra.)
+  bool flow = ho.floquet == HbFloquet::flow;
+  if (ho.floquet != HbFloquet::none) {
+    o.monodromy = hb_detail::sample_monodromy(cur->F, m, e, T, ho.magnus_substeps);
+    o.monodromy_rtol = 0.0;
+    out.floquet_route = "samples";
+    if (!o.monodromy.allFinite()) {
+      flow = true;  // the samples gave nothing usable: the flow decides
+    } else {
+      o.floquet = floquet(o.monodromy, autonomous);
+      const Floquet& fq = o.floquet;
+      out.sample_critical_modulus = fq.critical >= 0 ? fq.critical_modulus : 0.0;
+      out.sample_trivial_error =
+          fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
+      const double mg = opt.floquet_margin;
+      flow = flow || (mg > 0 && (fq.critical < 0 || std::abs(fq.critical_modulus - 1.0) < mg ||
+                                 out.sample_trivial_error > 0.5 * mg));
+    }
+  }
+  if (flow) {
+    if (!hb_detail::flow_monodromy(cur->F, o, c.base.t0, T, ho.cvode, srtol)) {
+      o.monodromy.resize(0, 0);
+      o.floquet = Floquet();
+      finish();
+      return out;
+    }
+    out.floquet_route = "flow";
+  }
+  if (ho.floquet == HbFloquet::none) {
+    out.floquet_route = "none";
+  } else {
+    if (!o.monodromy.allFinite()) {
+      o.status = "error";
+      o.message = "non-finite monodromy matrix";
+      o.monodromy.resize(0, 0);
+      o.floquet = Floquet();
+      finish();
+      return out;
+    }
+    o.floquet = floquet(o.monodromy, autonomous);
+  }
+  // Tangent: the null vector of the rows (R̃, phase) in the unknowns, bordered by the previous
+  // tangent (first point: by e_p), oriented along it (first point: p growing with direction).
+  Eigen::MatrixXd Bm = Eigen::MatrixXd::Zero(U, U);
+  const Eigen::MatrixXd Jr = rows(e, drdp_conv);
+  Bm.topRows(Jr.rows()) = Jr;
+  if (first)
+    Bm(U - 1, ip) = 1.0;
+  else
+    Bm.row(U - 1) = t_prev.transpose();
+  Eigen::VectorXd eU = Eigen::VectorXd::Zero(U);
+  eU(U - 1) = 1.0;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(Bm);
+  Eigen::VectorXd tz = lu.solve(eU);
+  if (lu.rank() < U || !tz.allFinite() || tz.norm() == 0) {
+    o.status = "not_converged";
+    o.message = "no tangent at the corrected point (singular bordered matrix: a branch point)";
+    finish();
+    return out;
+  }
+  tz /= tz.norm();
+  if (first && tz(ip) * c.direction < 0) tz = -tz;
+  out.tangent = Eigen::VectorXd::Zero(Y);
+  out.tangent.head(nn) = tz.head(nn);
+  if (autonomous) out.tangent(nn) = tz(iw);
+  out.tangent(nn + 1) = tz(ip);
+  finish();
+  return out;
+}
+
+}  // namespace rotordyn

@@ -1,0 +1,284 @@
+// The harmonic-balance pieces shared by one orbit and a branch's corrector (hb_detail.hpp).
+#include "hb_detail.hpp"
+
+#include <Eigen/Cholesky>
+#include <unsupported/Eigen/MatrixFunctions>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "rotordyn/errors.hpp"
+
+namespace rotordyn::hb_detail {
+
+Basis make_basis(int H, int M) {
+  Basis b;
+  b.H = H;
+  b.M = M;
+  b.nb = 2 * H + 1;
+  b.E.setZero(M, b.nb);
+  b.E1.setZero(M, b.nb);
+  b.E2.setZero(M, b.nb);
+  b.P.setZero(b.nb, M);
+  for (int j = 0; j < M; ++j) {
+    const double tau = 2 * M_PI * j / M;
+    b.E(j, 0) = 1.0;
+    b.P(0, j) = 1.0 / M;
+    for (int k = 1; k <= H; ++k) {
+      const double c = std::cos(k * tau), s = std::sin(k * tau);
+      b.E(j, 2 * k - 1) = c;
+      b.E(j, 2 * k) = s;
+      b.E1(j, 2 * k - 1) = -k * s;
+      b.E1(j, 2 * k) = k * c;
+      b.E2(j, 2 * k - 1) = -k * k * c;
+      b.E2(j, 2 * k) = -k * k * s;
+      b.P(2 * k - 1, j) = 2.0 * c / M;
+      b.P(2 * k, j) = 2.0 * s / M;
+    }
+  }
+  return b;
+}
+
+Eval Problem::eval(const Eigen::MatrixXd& Z, double w, bool jac) {
+  const SystemModel& m = solver->model();
+  const PeriodicInput& I = *in;
+  const int M = B.M, nb = B.nb;
+  const Eigen::Index nn = n * nb;
+  Eval e;
+  e.R.setZero(nn);
+  if (jac) {
+    e.J.setZero(nn, nn);
+    e.dRdw.setZero(nn);
+    e.KH.resize(static_cast<std::size_t>(M));
+    e.DH.resize(static_cast<std::size_t>(M));
+  }
+  const Eigen::MatrixXd Rt = B.E * Z, R1 = B.E1 * Z, R2 = B.E2 * Z;  // (M, n)
+  const Eigen::MatrixXd& Mm = m.mass_at(I.omega);
+  const bool forced = I.unbalance_cos.size() > 0;
+  ++evaluations;
+  for (int j = 0; j < M; ++j) {
+    const Eigen::VectorXd r = Rt.row(j).transpose(), r1 = R1.row(j).transpose(),
+                          r2 = R2.row(j).transpose();
+    const Eigen::VectorXd v = w * r1;
+    Linearization lin;
+    try {
+      if (jac) {
+        lin = solver->linearize(r, v, I.omega);
+        ++linearizations;
+      } else {
+        lin.film_force = solver->film_forces(r, v, I.omega);
+      }
+    } catch (const ContactError& ex) {
+      e.contact = true;
+      e.why = std::string("a film closed at sample ") + std::to_string(j) + ": " + ex.what();
+      return e;
+    } catch (const ConvergenceError& ex) {
+      e.why = std::string("film solve at sample ") + std::to_string(j) + ": " + ex.what();
+      return e;
+    }
+    if (!lin.film_force.allFinite()) {
+      e.why = "non-finite film force at sample " + std::to_string(j);
+      return e;
+    }
+    Eigen::VectorXd Rj = w * w * (Mm * r2) + w * (F->Cd * r1) + m.K * r - lin.film_force - F->F0;
+    if (forced) {
+      const double th = I.omega * (I.t0 + (2 * M_PI * j / M) / w);
+      Rj -= I.omega * I.omega * (std::cos(th) * I.unbalance_cos + std::sin(th) * I.unbalance_sin);
+    }
+    for (int p = 0; p < nb; ++p) e.R.segment(p * n, n) += B.P(p, j) * Rj;
+    if (!jac) continue;
+    const Eigen::MatrixXd G = m.K + lin.KH;
+    const Eigen::MatrixXd Dv = F->Cd + lin.DH;
+    const Eigen::VectorXd dw = 2 * w * (Mm * r2) + Dv * r1;
+    for (int p = 0; p < nb; ++p) e.dRdw.segment(p * n, n) += B.P(p, j) * dw;
+    for (int q = 0; q < nb; ++q) {
+      const double e0 = B.E(j, q), e1 = B.E1(j, q), e2 = B.E2(j, q);
+      if (e0 == 0.0 && e1 == 0.0 && e2 == 0.0) continue;
+      const Eigen::MatrixXd T = e0 * G + (w * e1) * Dv + (w * w * e2) * Mm;
+      for (int p = 0; p < nb; ++p) {
+        const double pw = B.P(p, j);
+        if (pw != 0.0) e.J.block(p * n, q * n, n, n) += pw * T;
+      }
+    }
+    e.KH[static_cast<std::size_t>(j)] = lin.KH;
+    e.DH[static_cast<std::size_t>(j)] = lin.DH;
+  }
+  if (!e.R.allFinite() || (jac && !e.J.allFinite())) {
+    e.why = "non-finite residual or Jacobian";
+    return e;
+  }
+  e.ok = true;
+  return e;
+}
+
+Eigen::MatrixXd project_samples(const Eigen::MatrixXd& X, int H) {
+  const Eigen::Index M0 = X.rows();
+  Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(2 * H + 1, X.cols());
+  for (Eigen::Index j = 0; j < M0; ++j) {
+    const double tau = 2 * M_PI * static_cast<double>(j) / static_cast<double>(M0);
+    Z.row(0) += X.row(j) / static_cast<double>(M0);
+    for (int k = 1; k <= H; ++k) {
+      Z.row(2 * k - 1) += 2.0 * std::cos(k * tau) * X.row(j) / static_cast<double>(M0);
+      Z.row(2 * k) += 2.0 * std::sin(k * tau) * X.row(j) / static_cast<double>(M0);
+    }
+  }
+  return Z;
+}
+
+void shift_phase(Eigen::MatrixXd& Z, int H, double phi) {
+  for (int k = 1; k <= H; ++k) {
+    const double c = std::cos(k * phi), s = std::sin(k * phi);
+    const Eigen::RowVectorXd a = Z.row(2 * k - 1), b = Z.row(2 * k);
+    Z.row(2 * k - 1) = a * c + b * s;
+    Z.row(2 * k) = b * c - a * s;
+  }
+}
+
+double length_scale(const SystemModel& m, double length_scale) {
+  if (length_scale > 0) return length_scale;
+  double L = std::numeric_limits<double>::infinity();
+  for (const FilmCoupling& fc : m.films) L = std::min(L, fc.geometry.clearance_m);
+  return std::isfinite(L) ? L : 1e-3;
+}
+
+Eigen::VectorXd row_scale(const Eval& e, const SystemModel& m, const shooting_detail::Flow& F,
+                          double omega, double w) {
+  const Eigen::Index n = F.n;
+  const Eigen::MatrixXd& Mm = m.mass_at(omega);
+  Eigen::VectorXd s(n);
+  const double ws = std::max(std::abs(omega), w);
+  // The ω-independent part of the Jacobian's c0 block is mean(K + K_H).
+  const Eigen::MatrixXd G0 = e.J.block(0, 0, n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    s(i) = std::abs(G0(i, i)) + ws * ws * std::abs(Mm(i, i)) + ws * std::abs(F.Cd(i, i)) + 1e-300;
+  return s;
+}
+
+Eigen::VectorXd scaled(const Eigen::VectorXd& R, const Eigen::VectorXd& rowscale, int nb, double L) {
+  const Eigen::Index n = rowscale.size();
+  Eigen::VectorXd s(R.size());
+  for (int p = 0; p < nb; ++p) s.segment(p * n, n) = R.segment(p * n, n).cwiseQuotient(rowscale);
+  return s / L;
+}
+
+Eigen::VectorXd harmonic_amplitudes(const Eigen::MatrixXd& Z, double L) {
+  const int H = static_cast<int>((Z.rows() - 1) / 2);
+  Eigen::VectorXd a(H + 1);
+  a(0) = Z.row(0).cwiseAbs().maxCoeff() / L;
+  for (int k = 1; k <= H; ++k)
+    a(k) = (Z.row(2 * k - 1).array().square() + Z.row(2 * k).array().square()).sqrt().maxCoeff() / L;
+  return a;
+}
+
+bool fill_orbit(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, double t0, int n_out) {
+  const int H = static_cast<int>((Z.rows() - 1) / 2), nb = 2 * H + 1;
+  const Eigen::Index n = Z.cols();
+  const double T = 2 * M_PI / w;
+  o.period = T;
+  const int ns = std::max(n_out, 2);
+  o.t.resize(ns);
+  o.r.resize(ns, n);
+  o.v.resize(ns, n);
+  for (int i = 0; i < ns; ++i) {
+    const double tau = 2 * M_PI * i / (ns - 1);
+    o.t(i) = t0 + T * i / (ns - 1);
+    Eigen::RowVectorXd E(nb), E1(nb);
+    E(0) = 1.0;
+    E1(0) = 0.0;
+    for (int k = 1; k <= H; ++k) {
+      E(2 * k - 1) = std::cos(k * tau);
+      E(2 * k) = std::sin(k * tau);
+      E1(2 * k - 1) = -k * std::sin(k * tau);
+      E1(2 * k) = k * std::cos(k * tau);
+    }
+    o.r.row(i) = E * Z;
+    o.v.row(i) = w * (E1 * Z);
+  }
+  o.r0 = o.r.row(0).transpose();
+  o.v0 = o.v.row(0).transpose();
+  return o.r.allFinite() && o.v.allFinite();
+}
+
+namespace {
+
+// Monodromy of ẋ = A(t) x over one period from the samples A_j = A(t_j) (first-order form),
+// A(τ) trigonometrically interpolated, 4th-order Magnus (two Gauss points per step) with
+// the exact exponential of each step (stable for the stiff sleeve and film modes).
+Eigen::MatrixXd monodromy_from_samples(const std::vector<Eigen::MatrixXd>& A, double T,
+                                       int substeps) {
+  const int M = static_cast<int>(A.size());
+  const Eigen::Index N = A[0].rows();
+  const int K = (M - 1) / 2;
+  const bool nyq = M % 2 == 0;
+  std::vector<Eigen::MatrixXd> Ac(static_cast<std::size_t>(K + 1), Eigen::MatrixXd::Zero(N, N)),
+      As(static_cast<std::size_t>(K + 1), Eigen::MatrixXd::Zero(N, N));
+  Eigen::MatrixXd An = Eigen::MatrixXd::Zero(N, N);
+  for (int j = 0; j < M; ++j) {
+    const double tau = 2 * M_PI * j / M;
+    Ac[0] += A[static_cast<std::size_t>(j)] / M;
+    for (int k = 1; k <= K; ++k) {
+      Ac[static_cast<std::size_t>(k)] += (2.0 * std::cos(k * tau) / M) * A[static_cast<std::size_t>(j)];
+      As[static_cast<std::size_t>(k)] += (2.0 * std::sin(k * tau) / M) * A[static_cast<std::size_t>(j)];
+    }
+    if (nyq) An += (std::cos(0.5 * M * tau) / M) * A[static_cast<std::size_t>(j)];
+  }
+  auto at = [&](double tau) {
+    Eigen::MatrixXd out = Ac[0];
+    for (int k = 1; k <= K; ++k)
+      out += std::cos(k * tau) * Ac[static_cast<std::size_t>(k)] +
+             std::sin(k * tau) * As[static_cast<std::size_t>(k)];
+    if (nyq) out += std::cos(0.5 * M * tau) * An;
+    return out;
+  };
+  const int ns = M * std::max(substeps, 1);
+  const double h = T / ns, dtau = 2 * M_PI / ns;
+  const double g = std::sqrt(3.0) / 6.0;
+  Eigen::MatrixXd Phi = Eigen::MatrixXd::Identity(N, N);
+  for (int i = 0; i < ns; ++i) {
+    const Eigen::MatrixXd A1 = at((i + 0.5 - g) * dtau), A2 = at((i + 0.5 + g) * dtau);
+    const Eigen::MatrixXd Om =
+        (0.5 * h) * (A1 + A2) + (std::sqrt(3.0) / 12.0 * h * h) * (A2 * A1 - A1 * A2);
+    Phi = Om.exp() * Phi;
+  }
+  return Phi;
+}
+
+}  // namespace
+
+Eigen::MatrixXd sample_monodromy(const shooting_detail::Flow& F, const SystemModel& m,
+                                 const Eval& e, double T, int substeps) {
+  const Eigen::Index n = F.n, N = F.N;
+  const int M = static_cast<int>(e.KH.size());
+  std::vector<Eigen::MatrixXd> A(static_cast<std::size_t>(M));
+  for (int j = 0; j < M; ++j) {
+    Eigen::MatrixXd Aj = Eigen::MatrixXd::Zero(N, N);
+    Aj.block(0, n, n, n).setIdentity();
+    Aj.block(n, 0, n, n) = -F.Mllt.solve(m.K + e.KH[static_cast<std::size_t>(j)]);
+    Aj.block(n, n, n, n) = -F.Mllt.solve(F.Cd + e.DH[static_cast<std::size_t>(j)]);
+    A[static_cast<std::size_t>(j)] = Aj;
+  }
+  return monodromy_from_samples(A, T, substeps);
+}
+
+bool flow_monodromy(shooting_detail::Flow& F, PeriodicOrbitResult& o, double t0, double T,
+                    const CvodeOptions& cvode, double srtol) {
+  Eigen::VectorXd x0(F.N);
+  x0 << o.r0, o.v0;
+  const long sens0 = F.sens_evals;
+  shooting_detail::FlowRun run = shooting_detail::run_flow(F, x0, t0, T, true, 2, cvode, true, srtol);
+  o.steps += run.steps;
+  o.rhs_evals += run.rhs_evals;
+  o.jac_evals += run.jac_evals;
+  o.sensitivity_flows += 1;
+  o.sens_rhs_evals += F.sens_evals - sens0;
+  if (run.flag < 0) {
+    o.status = F.contact ? "rub" : "error";
+    o.message = "harmonic balance: the monodromy flow failed: " + run.why;
+    return false;
+  }
+  o.monodromy = run.Phi;
+  o.monodromy_rtol = srtol;
+  return true;
+}
+
+}  // namespace rotordyn::hb_detail

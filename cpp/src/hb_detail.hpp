@@ -1,0 +1,79 @@
+// Internal to the harmonic-balance code (harmonic_balance.cpp: one orbit; hb_continuation.cpp:
+// the corrector of a branch): the Fourier basis, the AFT residual of eq. 12 with its Jacobian,
+// the orbit's samples and its monodromy (from the samples' linearisations or from one CVODES
+// sensitivity flow). Not installed, not part of the public headers.
+#pragma once
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+#include "rotordyn/periodic.hpp"
+#include "shooting_detail.hpp"
+
+namespace rotordyn::hb_detail {
+
+/// The truncated Fourier basis at M equally spaced samples τ_j = 2πj/M; coefficient rows
+/// c0, a_1, b_1, …, a_H, b_H.
+struct Basis {
+  int H = 0, M = 0, nb = 0;   // nb = 2H + 1
+  Eigen::MatrixXd E, E1, E2;  // (M, nb): basis, d/dτ, d²/dτ² at τ_j
+  Eigen::MatrixXd P;          // (nb, M): the projection (DFT) R̂ = P R
+};
+
+Basis make_basis(int H, int M);
+
+/// One residual evaluation at (Z, ω): R̂ (nb·n, block p = harmonic row p), with `jac` the
+/// Jacobian in z (nb·n × nb·n), its ω column and the films' K_H, D_H at the samples (for the
+/// Floquet multipliers).
+struct Eval {
+  Eigen::VectorXd R, dRdw;
+  Eigen::MatrixXd J;
+  std::vector<Eigen::MatrixXd> KH, DH;
+  bool ok = false;
+  std::string why;
+  bool contact = false;
+};
+
+/// The AFT residual of eq. 12 at the operating point of `in` (F: its M(Ω) factor, F0, C + ΩG;
+/// both must outlive the problem).
+struct Problem {
+  SystemSolver* solver = nullptr;
+  const PeriodicInput* in = nullptr;
+  shooting_detail::Flow* F = nullptr;
+  Basis B;
+  Eigen::Index n = 0;
+  long linearizations = 0, evaluations = 0;
+
+  /// Z: (nb, n) coefficients; ω the fundamental (rad/s).
+  Eval eval(const Eigen::MatrixXd& Z, double w, bool jac);
+};
+
+/// Coefficients (nb, n) of position samples X (M0, n) at τ_j = 2πj/M0, truncated to H.
+Eigen::MatrixXd project_samples(const Eigen::MatrixXd& X, int H);
+/// Shift the time origin by φ (τ → τ + φ).
+void shift_phase(Eigen::MatrixXd& Z, int H, double phi);
+/// The smallest film clearance, m (`length_scale` if > 0; 1e-3 m for a system without films).
+double length_scale(const SystemModel& m, double length_scale);
+/// Each coordinate's residual scale |K_ii + K_H,ii| + ω_s²|M_ii| + ω_s|C_ii + ΩG_ii| (ω_s =
+/// max(|Ω|, ω)) from an evaluation with the Jacobian: the residual in units of a displacement.
+Eigen::VectorXd row_scale(const Eval& e, const SystemModel& m, const shooting_detail::Flow& F,
+                          double omega, double w);
+/// R̃ = R / (rowscale · L), block by block (nb blocks of n).
+Eigen::VectorXd scaled(const Eigen::VectorXd& R, const Eigen::VectorXd& rowscale, int nb, double L);
+/// (H + 1,) max over the coordinates of |(a_k, b_k)| / L (k = 0: |c0| / L).
+Eigen::VectorXd harmonic_amplitudes(const Eigen::MatrixXd& Z, double L);
+/// The orbit over one period into o: n_out samples including the end point (t, r, v), the
+/// start (r0, v0) at τ = 0 and the period 2π/ω. false if a sample is not finite.
+bool fill_orbit(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, double t0, int n_out);
+/// The monodromy from the linearisations of `e` at its M samples (A(τ) trigonometrically
+/// interpolated, 4th-order Magnus with exponentials): no film solve.
+Eigen::MatrixXd sample_monodromy(const shooting_detail::Flow& F, const SystemModel& m,
+                                 const Eval& e, double T, int substeps);
+/// The monodromy of one CVODES flow with forward sensitivities in the error test (at
+/// `srtol`) from (o.r0, o.v0) over [t0, t0 + T] into o.monodromy (o.monodromy_rtol, the
+/// flow's counters). false with o.status / o.message set when the flow fails.
+bool flow_monodromy(shooting_detail::Flow& F, PeriodicOrbitResult& o, double t0, double T,
+                    const CvodeOptions& cvode, double srtol);
+
+}  // namespace rotordyn::hb_detail

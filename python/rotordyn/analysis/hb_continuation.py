@@ -1,0 +1,239 @@
+"""Pseudo-arclength continuation of periodic orbits by harmonic balance
+(``rd.continuation(..., method="harmonic_balance")``; docs/nonlinear.md, "Continuation by
+harmonic balance"): the branch loop (predictor along the tangent, step control, bounds, the
+Hopf end) runs here; each corrector is one C++ call (``_core.hb_continuation_step``: Newton on
+the Fourier coefficients, the frequency and the parameter, bordered by ∂R/∂p and the arclength
+row, the AFT residual and Jacobian of ``rd.periodic_orbit(method="harmonic_balance")``). Each
+point's Floquet multipliers come from the samples' linearisations, and from one CVODES
+sensitivity flow where the verdict is not safe from the samples (``floquet_margin``); every
+point's ``stats["floquet"]`` says which."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn.analysis import harmonic_balance as hbal
+from rotordyn.analysis.orbit_branch import PARAM, BranchSetup, assemble, hopf_estimate
+from rotordyn.analysis.periodic import periodic_orbit
+from rotordyn.errors import InputError
+from rotordyn.results.continuation import BranchResult
+from rotordyn.results.periodic import PeriodicOrbitResult
+
+#: the Floquet routes of a branch point (``"none"`` would leave the stability unknown)
+FLOQUET = ("samples", "flow")
+#: defaults of the harmonic-balance options of a branch
+HARMONICS, FLOQUET_MARGIN = 8, 0.01
+
+
+def start_coefficients(start: PeriodicOrbitResult, harmonics: int) -> np.ndarray:
+    """(2H + 1, n) Fourier coefficients of the start orbit's positions (rows c0, a_1, b_1, …):
+    a harmonic-balance orbit's own (truncated or padded to H), else the projection of its
+    samples over one period (equally spaced, the repeated endpoint left out; at least 2H + 1
+    of them)."""
+    nb = 2 * harmonics + 1
+    n = start.r.shape[1]
+    z = start.stats.get("coefficients")
+    if start.stats.get("method") == "harmonic_balance" and z is not None \
+            and np.shape(z)[1:] == (n,):
+        z = np.asarray(z, dtype=float)
+        out = np.zeros((nb, n))
+        k = min(nb, z.shape[0])
+        out[:k] = z[:k]
+        return out
+    t = np.asarray(start.t, dtype=float)
+    r = np.asarray(start.r, dtype=float)[:-1]
+    m0 = r.shape[0]
+    if m0 < nb:
+        raise InputError(f"start: the orbit has {m0} samples per period; harmonic balance with "
+                         f"{harmonics} harmonics needs at least 2H + 1 = {nb} (solve the start "
+                         "with a larger n_out)")
+    dt = np.diff(t)
+    if not np.allclose(dt, start.period_s / m0, rtol=1e-6, atol=0.0):
+        raise InputError("start: the orbit's samples are not equally spaced over one period")
+    tau = 2 * np.pi * np.arange(m0) / m0
+    out = np.zeros((nb, n))
+    out[0] = r.mean(axis=0)
+    for k in range(1, harmonics + 1):
+        out[2 * k - 1] = 2.0 / m0 * np.cos(k * tau) @ r
+        out[2 * k] = 2.0 / m0 * np.sin(k * tau) @ r
+    return out
+
+
+def needs_flow(o: PeriodicOrbitResult, margin: float) -> bool:
+    """Whether the multipliers of ``o`` from the samples do not give a safe verdict: the
+    critical one within ``margin`` of the unit circle (or none), or the trivial one off 1 by
+    more than ``margin`` / 2 (the samples' monodromy is poor: its |μ_c| error was measured up
+    to about 1.5 × the trivial multiplier's; the rule of the C++ corrector)."""
+    mc, mt = o.critical_multiplier, o.trivial_multiplier
+    return (mc is None or abs(abs(mc) - 1.0) < margin
+            or (mt is not None and abs(mt - 1.0) > 0.5 * margin))
+
+
+def checked_orbit(system, speed_hz: float, chamber_pressure_pa: float, config_ay_m, *, start,
+                  period_s: float, harmonics: int = HARMONICS, time_points: int | None = None,
+                  n_out: int = 201, rtol: float = 1e-8, tol: float = 1e-6,
+                  sensitivity_rtol: float | None = None,
+                  margin: float = FLOQUET_MARGIN) -> PeriodicOrbitResult:
+    """A limit cycle by harmonic balance from a state ``start`` (r, ṙ) with a period guess,
+    its multipliers from the samples, or — where :func:`needs_flow` — from one CVODES
+    sensitivity flow from the converged orbit (the rule of the branch's points);
+    ``stats["floquet"]`` says which."""
+    kw = dict(method="harmonic_balance", harmonics=harmonics, time_points=time_points,
+              n_out=n_out, rtol=rtol, tol=tol, sensitivity_rtol=sensitivity_rtol)
+    o = periodic_orbit(system, speed_hz, chamber_pressure_pa, config_ay_m, start=start,
+                       period_s=period_s, floquet="samples", **kw)
+    route = "samples"
+    if o.ok and needs_flow(o, margin):
+        o = periodic_orbit(system, speed_hz, chamber_pressure_pa, config_ay_m,
+                           start=(o.r[0], o.v[0]), period_s=o.period_s, floquet="flow", **kw)
+        route = "flow"
+    return dataclasses.replace(o, stats={**o.stats, "floquet": route})
+
+
+def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_min: float,
+              ds_max: float, max_points: int, direction: int, rtol: float, atol_m: float,
+              tol: float, max_iter: int, max_steps: int, fd_step: float,
+              sensitivity_rtol: float | None, harmonics: int | None,
+              time_points: int | None, floquet: str | None, floquet_margin: float | None,
+              progress=None) -> BranchResult:
+    """The branch of ``setup`` from ``start`` by harmonic-balance correctors (the options
+    checked by :func:`rotordyn.analysis.continuation.orbit_continuation`, which calls this)."""
+    h_ = HARMONICS if harmonics is None else harmonics
+    m_hb = hbal.time_points_for(h_, time_points)
+    h_ = int(h_)
+    floquet = v.choice("floquet", "samples" if floquet is None else floquet, FLOQUET)
+    margin = v.in_range("floquet_margin",
+                        FLOQUET_MARGIN if floquet_margin is None else floquet_margin, 0.0, 0.5)
+    asm, n, kind = setup.asm, setup.n, setup.kind
+    nb = 2 * h_ + 1
+    nn = nb * n
+    z0 = start_coefficients(start, h_)
+    w0 = 2 * np.pi / float(start.period_s)
+
+    inp = _core.HbContinuationInput()
+    inp.base = setup.base
+    inp.parameter = getattr(_core.ContinuationParameter, PARAM[setup.vary])
+    if setup.config_direction is not None:
+        inp.config_direction = setup.config_direction
+    inp.subharmonic = setup.subharmonic
+    inp.fd_step = float(fd_step)
+    inp.direction = int(direction)
+    to_core = setup.to_core
+    L = float(start.length_scale_m)
+    scale = np.array([L, w0, setup.param_scale * to_core])
+    inp.scale = scale
+    sfull = np.concatenate([np.full(nn, L), scale[1:]])
+
+    c = _core.CvodeOptions()
+    c.rtol, c.atol_position = float(rtol), float(atol_m)
+    c.atol_velocity = float(atol_m) * max(abs(setup.omega), w0, 1.0)
+    c.max_steps = int(max_steps)
+    ho = _core.HarmonicBalanceOptions()
+    ho.harmonics, ho.time_points = h_, int(m_hb)
+    ho.tol, ho.max_iter = float(tol), int(max_iter)
+    ho.floquet = getattr(_core.HbFloquet, floquet)
+    ho.cvode = c
+    if sensitivity_rtol is not None:
+        ho.sensitivity_rtol = float(sensitivity_rtol)
+    opt = _core.HbContinuationOptions()
+    opt.hb = ho
+    opt.floquet_margin = float(margin)
+
+    def correct(z, w, p_core, y_prev, tangent, step_ds):
+        inp.coefficients = np.ascontiguousarray(z.reshape(nb, n))
+        inp.frequency = float(w)
+        inp.p = float(p_core)
+        inp.y_prev = y_prev
+        inp.tangent = tangent
+        inp.ds = float(step_ds)
+        return _core.hb_continuation_step(asm.solver, inp, opt)
+
+    stats = {"method": "harmonic_balance", "harmonics": h_, "time_points": int(m_hb),
+             "floquet": floquet, "floquet_margin": float(margin), "correctors": 0,
+             "failed_correctors": 0, "newton_iterations": 0, "evaluations": 0,
+             "linearizations": 0, "fd_evaluations": 0, "flow_rechecks": 0}
+
+    def tally(step):
+        stats["correctors"] += 1
+        stats["newton_iterations"] += int(step.hb.orbit.iterations)
+        stats["evaluations"] += int(step.hb.evaluations)
+        stats["linearizations"] += int(step.hb.linearizations)
+        stats["fd_evaluations"] += int(step.fd_evaluations)
+        stats["flow_rechecks"] += int(step.floquet_route == "flow")
+
+    def result(step):
+        return setup.point_result(step.hb.orbit, step.p, extra_stats={
+            **hbal.hb_stats(step.hb), "floquet": step.floquet_route,
+            "floquet_samples_modulus": float(step.sample_critical_modulus),
+            "floquet_samples_trivial_error": float(step.sample_trivial_error),
+            "fd_evaluations": int(step.fd_evaluations)})
+
+    p0 = setup.p_start * to_core
+    y_start = np.concatenate([z0.ravel(), [w0, p0]])
+    first = correct(z0.ravel(), w0, p0, y_start, np.zeros(0), 0.0)
+    tally(first)
+    if first.hb.orbit.status != "ok":
+        return setup.failed(first.hb.orbit.message, stats)
+    orbits, ys, tangents, arcl = [], [], [], []
+
+    def accept(step, o):
+        orbits.append(o)
+        ys.append(np.concatenate([np.asarray(step.hb.coefficients).ravel(),
+                                  [step.hb.frequency, step.p]]))
+        tangents.append(np.asarray(step.tangent, dtype=float))
+        if progress is not None:
+            progress(len(orbits) - 1, repr(o))
+
+    accept(first, result(first))
+    arcl.append(0.0)
+    lo, hi = setup.lo, setup.hi
+    stop, message, hopf = "max_points", "", None
+    h = ds
+    while len(orbits) < max_points:
+        y, t = ys[-1], tangents[-1]
+        yp = y + h * t * sfull
+        step = correct(yp[:nn], yp[nn], yp[nn + 1], y, t, h)
+        tally(step)
+        o_core = step.hb.orbit
+        bad = o_core.status != "ok"
+        if not bad and float(np.dot(step.tangent, t)) < np.cos(np.radians(30)):
+            bad, msg = True, "the tangent turned by more than 30°"
+        else:
+            msg = o_core.message
+        if bad:
+            stats["failed_correctors"] += 1
+            message = msg
+            if o_core.status == "not_converged" and "equilibrium" in o_core.message:
+                stop = "equilibrium"
+                if h / 2 < ds_min:
+                    break
+            h /= 2
+            if h < ds_min:
+                stop = "rub" if o_core.status == "rub" else (
+                    "equilibrium" if stop == "equilibrium" else "step_min")
+                break
+            continue
+        if not lo <= step.p / to_core <= hi:
+            stop = "bound"
+            break
+        o_new = result(step)
+        # through a Hopf point the cycles shrink onto the equilibrium and the branch passes
+        # through it onto the same family half a period on: the harmonics turn round
+        if kind == "autonomous" and float(np.dot(y[n:nn], np.asarray(
+                step.hb.coefficients).ravel()[n:])) < 0:
+            hopf = hopf_estimate(orbits, o_new, setup.vary)
+            stop = "hopf"
+            break
+        accept(step, o_new)
+        arcl.append(arcl[-1] + h)
+        if o_core.iterations <= 3:  # a quick corrector lets the step grow
+            h = min(h * 1.5, ds_max)
+    br = assemble(setup.vary, kind, orbits, tangents, arcl, setup.bcs, (lo, hi), stop,
+                  message, stats)
+    if hopf is not None:
+        br = dataclasses.replace(br, bifurcations=br.bifurcations + (hopf,))
+    return br

@@ -1,0 +1,231 @@
+"""What the two continuations of periodic orbits share (docs/nonlinear.md): the shooting
+corrector's (:mod:`rotordyn.analysis.continuation`) and harmonic balance's
+(:mod:`rotordyn.analysis.hb_continuation`) — the checked set-up of a branch from its start
+orbit (the operating point, the parameter in the core's units, the orbit input), each point's
+:class:`~rotordyn.results.PeriodicOrbitResult`, the Hopf end, and the assembly of the
+:class:`~rotordyn.results.BranchResult` with its bifurcations."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from rotordyn import _core
+from rotordyn._common import validate as v
+from rotordyn.analysis.assembly import assembled, check_operating_parameter
+from rotordyn.analysis.periodic import orbit_result
+from rotordyn.errors import InputError
+from rotordyn.results.continuation import BranchResult
+from rotordyn.results.periodic import PeriodicOrbitResult
+from rotordyn.units import hz_to_rad_s
+
+VARIABLES = ("chamber_pressure_pa", "speed_hz", "config_ay_m")
+PARAM = {"chamber_pressure_pa": "chamber_pressure", "speed_hz": "speed",
+         "config_ay_m": "config"}
+
+
+def amplitude(o: PeriodicOrbitResult) -> np.ndarray:
+    """(n_bearings,) the journals' amplitudes; a system without bearings: (1,) the largest
+    distance of any coordinate from its mean over the orbit."""
+    if o.journal_x_m.shape[1] == 0:
+        return np.array([float(np.max(np.abs(o.r - o.r.mean(axis=0))))])
+    return np.array([o.amplitude(b) for b in range(o.journal_x_m.shape[1])])
+
+
+def names(bcs) -> tuple:
+    return tuple(bc.name for bc in bcs) if bcs else ("largest coordinate",)
+
+
+def clearances(bcs) -> np.ndarray:
+    return np.array([bc.clearance_m for bc in bcs]) if bcs else np.array([np.nan])
+
+
+@dataclasses.dataclass
+class BranchSetup:
+    """A branch's checked set-up: the assembled system, the start's kind and operating point,
+    the parameter (``p_start`` in the unit of ``vary``; ``to_core`` the factor to the core's
+    Pa, rad/s or m), the orbit input ``base`` (``_core.PeriodicInput``: kind, Ω, p_c, a,
+    unbalance, t0, n_out) and, for a_y, the configuration direction."""
+
+    vary: str
+    lo: float
+    hi: float
+    asm: object
+    n: int
+    kind: str
+    subharmonic: int
+    bcs: tuple
+    a0: np.ndarray
+    p_start: float
+    to_core: float
+    omega: float
+    base: object
+    config_direction: np.ndarray | None
+    param_scale: float
+    start_speed: float = 0.0
+    start_pc: float = 0.0
+
+    def point_result(self, orbit, p_core: float, extra_stats: dict | None = None):
+        """The :class:`PeriodicOrbitResult` of a corrected orbit (the core's) at p_core."""
+        p = p_core / self.to_core
+        spd = p if self.vary == "speed_hz" else self.start_speed
+        pc = p if self.vary == "chamber_pressure_pa" else self.start_pc
+        if self.vary != "config_ay_m":
+            return orbit_result(self.asm, orbit, self.kind, float(spd), float(pc), self.a0,
+                                extra_stats=extra_stats)
+        a = np.asarray(self.base.a) + p * self.config_direction
+        o = orbit_result(self.asm, orbit, self.kind, float(spd), float(pc), np.asarray(a),
+                         extra_stats=extra_stats)
+        # the result's config_ay_m is the first bearing's; the parameter is the active one's
+        return dataclasses.replace(o, config_ay_m=float(p))
+
+    def failed(self, message: str, stats: dict) -> BranchResult:
+        """The branch of a start that did not converge: no points, status not_converged."""
+        return BranchResult(
+            vary=self.vary, kind=self.kind, parameter=np.zeros(0),
+            amplitude_m=np.zeros((0, len(names(self.bcs)))),
+            period_s=np.zeros(0), max_multiplier=np.zeros(0), stable=np.zeros(0, bool),
+            critical_type=(), arclength=np.zeros(0), tangent_p=np.zeros(0),
+            bearing_names=names(self.bcs), clearance_m=clearances(self.bcs), bifurcations=(),
+            bounds=(self.lo, self.hi), stop="start", message=message, stats=stats,
+            status="not_converged")
+
+
+def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: int) -> BranchSetup:
+    """The checked set-up of a branch over ``vary`` within ``bounds`` from the orbit
+    ``start`` (InputError naming the field for a bad one)."""
+    vary = v.choice("vary", vary, VARIABLES)
+    check_operating_parameter(system, vary)
+    lo, hi = v.bounds("bounds", bounds)
+    if not isinstance(start, PeriodicOrbitResult):
+        raise InputError("start: expected a PeriodicOrbitResult (a converged orbit from "
+                         f"rotordyn.periodic_orbit), got {type(start).__name__}")
+    if not start.ok:
+        raise InputError(f"start: the orbit did not converge (status {start.status!r}: "
+                         f"{start.message})")
+    if param_scale is None:
+        param_scale = hi - lo
+    param_scale = v.positive("param_scale", param_scale)
+    v.integer("n_out", n_out, lo=2, hi=1_000_000)
+    asm = assembled(system)
+    n = asm.n
+    if start.r.shape[1] != n:
+        raise InputError(f"start: the orbit has {start.r.shape[1]} coordinates, the system {n}")
+    kind = start.kind
+    ub_list = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
+    if kind == "forced" and not ub_list:
+        raise InputError("unbalances: a forced start needs its unbalances "
+                         "[(station, mass_kg_m, phase_deg)] again")
+    if kind == "autonomous" and ub_list:
+        raise InputError("unbalances: an autonomous branch has no unbalance forcing")
+    subharmonic = 1
+    if kind == "forced":
+        subharmonic = max(1, int(round(start.period_s * abs(start.speed_hz))))
+    bcs = asm.bearings
+    a0 = asm.config_vector(None)
+    if bcs and abs(a0[bcs[0].jy] - start.config_ay_m) > 1e-15:
+        a0 = asm.config_vector(start.config_ay_m)
+    p_start = {"chamber_pressure_pa": start.chamber_pressure_pa, "speed_hz": start.speed_hz,
+               "config_ay_m": start.config_ay_m}[vary]
+    if not lo <= p_start <= hi:
+        raise InputError(f"bounds: ({lo:g}, {hi:g}) must contain the start's {vary} = "
+                         f"{p_start:g}")
+    if vary == "speed_hz" and (lo <= 0 <= hi):
+        raise InputError(f"bounds: a speed branch must not contain 0 Hz, got ({lo:g}, {hi:g})")
+
+    base = _core.PeriodicInput()
+    base.kind = _core.OrbitKind.autonomous if kind == "autonomous" else _core.OrbitKind.forced
+    omega = hz_to_rad_s(float(start.speed_hz))
+    base.omega = omega
+    base.chamber_pressure = float(start.chamber_pressure_pa)
+    uc, us = np.zeros(n), np.zeros(n)
+    for st, me, ph in ub_list:
+        L = asm.station_load_matrix(st)
+        q = np.radians(ph)
+        uc += me * (L[:, 0] * np.cos(q) + L[:, 1] * np.sin(q))
+        us += me * (-L[:, 0] * np.sin(q) + L[:, 1] * np.cos(q))
+    base.unbalance_cos, base.unbalance_sin = (uc, us) if ub_list else (np.zeros(0), np.zeros(0))
+    base.t0 = float(start.t[0])
+    base.n_out = int(n_out)
+    # p in the core's units: Pa, rad/s, m; a(p) = a_base + p · direction for config
+    to_core = hz_to_rad_s(1.0) if vary == "speed_hz" else 1.0
+    direction = None
+    if vary == "config_ay_m":
+        a_base = asm.config_vector(0.0)
+        direction = asm.config_vector(1.0) - a_base
+        base.a = a_base
+    else:
+        base.a = a0
+    return BranchSetup(vary=vary, lo=lo, hi=hi, asm=asm, n=n, kind=kind,
+                       subharmonic=subharmonic, bcs=bcs, a0=a0, p_start=float(p_start),
+                       to_core=to_core, omega=omega, base=base, config_direction=direction,
+                       param_scale=float(param_scale), start_speed=float(start.speed_hz),
+                       start_pc=float(start.chamber_pressure_pa))
+
+
+def hopf_estimate(orbits, beyond: PeriodicOrbitResult, vary: str) -> dict:
+    """The Hopf point where the branch meets the equilibrium: p against the signed amplitude
+    (positive on the branch, negative beyond) through the last two points and the one
+    beyond, a parabola p = p_H + b·A + c·A² evaluated at A = 0 (near a Hopf point
+    A² ∝ |p − p_H|). ``curvature`` c (unit of ``vary`` per m²): with the cycles on the
+    unstable side of the equilibrium and stable, the Hopf point is supercritical."""
+    pts = list(orbits[-2:]) + [beyond]
+    key = {"chamber_pressure_pa": "chamber_pressure_pa", "speed_hz": "speed_hz",
+           "config_ay_m": "config_ay_m"}[vary]
+    p = np.array([getattr(o, key) for o in pts])
+    A = np.array([amplitude(o)[0] for o in pts])
+    A[-1] = -A[-1]
+    if len(pts) == 3:
+        coef = np.polyfit(A, p, 2)
+        p_h, curv = float(coef[2]), float(coef[0])
+    else:
+        w = A[0] / (A[0] - A[1])
+        p_h, curv = float(p[0] + w * (p[1] - p[0])), float("nan")
+    nb = max(beyond.journal_x_m.shape[1], 1)
+    return {"kind": "hopf", "index": len(orbits) - 1, "parameter": p_h,
+            "amplitude_m": np.zeros(nb), "multiplier": complex(1.0), "curvature": curv,
+            "period_s": float(beyond.period_s), "beyond_parameter": float(p[-1]),
+            "beyond_amplitude_m": float(-A[-1])}
+
+
+def assemble(vary, kind, orbits, tangents, arcl, bcs, bounds, stop, message, stats):
+    """The :class:`BranchResult` of the accepted points (``tangents``: each point's tangent,
+    its last entry dp/ds) with the bifurcations between successive points: ``fold`` where
+    dp/ds changes sign (interpolated linearly in s), else where the critical multiplier's
+    modulus crosses 1 its type on the unstable side (``stability_change`` for a real +1)."""
+    n_pts = len(orbits)
+    p = np.array([{"chamber_pressure_pa": o.chamber_pressure_pa, "speed_hz": o.speed_hz,
+                   "config_ay_m": o.config_ay_m}[vary] for o in orbits])
+    amp = np.array([amplitude(o) for o in orbits]).reshape(n_pts, len(names(bcs)))
+    mm = np.array([abs(o.critical_multiplier) if o.critical_multiplier is not None else 0.0
+                   for o in orbits])
+    stable = np.array([o.stable for o in orbits], dtype=bool)
+    ctype = tuple(o.critical_type for o in orbits)
+    tp = np.array([t[-1] for t in tangents])
+    bif = []
+    for i in range(1, n_pts):
+        turned = tp[i - 1] * tp[i] < 0
+        crossed = (mm[i - 1] - 1.0) * (mm[i] - 1.0) < 0
+        if not (turned or crossed):
+            continue
+        if turned:
+            # where dp/ds = 0, linear in the arclength between the two points
+            w = tp[i - 1] / (tp[i - 1] - tp[i])
+            k = "fold"
+        else:
+            w = (1.0 - mm[i - 1]) / (mm[i] - mm[i - 1])
+            unstable_side = i if mm[i] > 1 else i - 1
+            ct = ctype[unstable_side]
+            k = {"fold": "stability_change"}.get(ct, ct)
+        mu = orbits[i].critical_multiplier
+        bif.append({"kind": k, "index": i, "parameter": float(p[i - 1] + w * (p[i] - p[i - 1])),
+                    "amplitude_m": amp[i - 1] + w * (amp[i] - amp[i - 1]),
+                    "multiplier": complex(mu) if mu is not None else complex(np.nan)})
+    return BranchResult(
+        vary=vary, kind=kind, parameter=p, amplitude_m=amp,
+        period_s=np.array([o.period_s for o in orbits]), max_multiplier=mm, stable=stable,
+        critical_type=ctype, arclength=np.array(arcl, dtype=float), tangent_p=tp,
+        bearing_names=names(bcs), clearance_m=clearances(bcs), bifurcations=tuple(bif),
+        orbits=tuple(orbits), bounds=bounds, stop=stop, message=message, stats=stats,
+        status="ok")
