@@ -243,6 +243,11 @@ class PadTiltedFilm:
 def _film_at(lay: _Layout, r_full: np.ndarray, omega: float, unloaded: int) -> PadTiltedFilm:
     s = lay.solver
     H = np.asarray(s.film_forces(r_full, np.zeros(len(r_full)), omega))
+    # the force on the journal at fixed pad tilts: H_q + Σ t_k H_η_k (the film's force on the
+    # journal's q at fixed η misses the part through η = q·t_k + ℓ δ_k; H_η_k vanishes at a
+    # balanced pad without a tilt spring)
+    F = H[:2] + np.array([-np.sin(lay.psi), np.cos(lay.psi)]) @ H[N_JOURNAL::lay.npd][
+        : lay.b.n_pads]
     h = np.asarray(s.last_h_min, dtype=float)
     hz = np.asarray(s.last_h_min_z_m, dtype=float)
     i = int(np.argmin(h))
@@ -250,7 +255,7 @@ def _film_at(lay: _Layout, r_full: np.ndarray, omega: float, unloaded: int) -> P
     j = int(round(float(s.last_h_min_angle_deg[i]) / 360.0 * len(phi))) % len(phi)
     ang = float(np.degrees(phi[j]) % 360.0) if np.isfinite(phi[j]) else math.nan
     tilts, pitches = lay.pads(r_full)
-    return PadTiltedFilm(force_n=H[:2].copy(), moment_n_m=H[2:4].copy(), h_min_m=float(h[i]),
+    return PadTiltedFilm(force_n=F, moment_n_m=H[2:4].copy(), h_min_m=float(h[i]),
                          h_min_angle_deg=ang, h_min_z_m=float(hz[i]), pad_tilts_rad=tilts,
                          pad_pitches_rad=pitches, pad_h_min_m=h.copy(), pad_h_min_z_m=hz.copy(),
                          r=r_full.copy(), unloaded_pads=int(unloaded))

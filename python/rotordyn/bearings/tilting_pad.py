@@ -149,9 +149,6 @@ class TiltingPadBearing:
         """``tilt`` (bool), the misalignment (finite, only with tilt, and not closing any pad's
         film at an edge for a journal on the housing's axis: :meth:`edge_film` > 0)."""
         tx, ty = tilt_fields(self, where)
-        if self.tilt and self.viscosity_field_pa_s is not None:
-            raise InputError(f"{where}.viscosity_field_pa_s: a frozen THD field with tilt = true "
-                             f"is not available for tilting pads; expected None")
         h, z, k = self.edge_film(0.0, 0.0, tx, ty)
         if not h > 0.0:
             raise InputError(
