@@ -296,8 +296,8 @@ def test_spherical_pivots_relieve_the_misaligned_edge_film():
 
 @pytest.mark.parametrize("pivot", PIVOTS)
 def test_system_stability_transient_vs_linear_and_toml(pivot):
-    """Stability has four more modes than the aligned system (two stations' θx, θy) and, with
-    spherical pivots, ten pitch modes; a 0.2 µm disturbance of the misaligned equilibrium
+    """The linear model has four more coordinates than the aligned system (two stations' θx,
+    θy, labelled as such) and, with spherical pivots, ten pitches; a 0.2 µm disturbance of the misaligned equilibrium
     follows expm(A t) of the linear model (1 %); TOML round trip."""
     s = compressor(pivot, config_theta_x_rad=2e-4)
     st = rotordyn.stability(s, speed_hz=F_HZ)
@@ -309,6 +309,9 @@ def test_system_stability_transient_vs_linear_and_toml(pivot):
     n0 = rotordyn.linearize(s0, speed_hz=F_HZ).M.shape[0]
     n = lm.M.shape[0]
     assert n == n0 + 4 + (10 if pivot == "spherical" else 0)
+    assert {"station1.rot_x", "station5.rot_y"} <= set(lm.labels)  # the rotation masters
+    assert sum(lab.endswith(".pitch") for lab in lm.labels) == (10 if pivot == "spherical"
+                                                                else 0)
     A = np.block([[np.zeros((n, n)), np.eye(n)],
                   [-np.linalg.solve(lm.M, lm.K), -np.linalg.solve(lm.M, lm.D)]])
     assert np.max(np.linalg.eigvals(A).real) < 0
