@@ -116,13 +116,18 @@ def test_force_even_moment_first_order_and_restoring(pivot):
     assert np.log2(dc[0] / dc[1]) > 1.9
 
 
+FLEXIBLE = dict(pivot_stiffness_n_per_m=3e8, pad_mass_kg=0.3, pitch_stiffness_n_m_per_rad=10.0)
+
+
 @pytest.mark.parametrize("pivot", PIVOTS)
-def test_4x4_coefficients_match_finite_differences(pivot):
+@pytest.mark.parametrize("flexible", [False, True], ids=["rigid", "flexible"])
+def test_4x4_coefficients_match_finite_differences(pivot, flexible):
     """The unreduced perturbation K, C over [x, y, θx, θy, pads] against central differences
     of the films (2e-6 of each block's largest entry, observed 1e-10), and the statically
     condensed 4×4 K against central differences of the pad-equilibrated forces and moments
-    (each pose's pads re-solved; 1e-5, observed 1e-8)."""
-    b = pads(pivot)
+    (each pose's pads re-solved; 1e-5, observed ≤ 2e-8), also with flexible pivots and a pitch
+    seat stiffness (spherical: pitch ⊃ pivot ⊃ tilt solves)."""
+    b = pads(pivot, **(FLEXIBLE if flexible else {}))
     P = dict(**POSE, **TILT)
     r, K, C, _ = pad_tilted_coefficients(b, **P, full=True)
     _, Kd, Cd, _ = pad_tilted_coefficients(b, **P, full=True, method="finite_difference")
