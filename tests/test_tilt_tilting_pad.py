@@ -91,8 +91,9 @@ def test_opposite_tilts_mirror(pivot):
 @pytest.mark.parametrize("pivot", PIVOTS)
 def test_force_even_moment_first_order_and_restoring(pivot):
     """Loaded pose (Swift–Stieber): F(θ) − F(0) second order (observed 2.01, 2.00; asserted
-    2 ± 0.1), the moment first order (observed 1.01, 1.00; 1 ± 0.02). Centred journal: F(0) = 0 and the change is of order ≥ 2
-    (observed 4.0: with five pads a quadratic vector term is excluded by the 5-fold symmetry);
+    2 ± 0.1), the moment first order (observed 1.01, 1.00; 1 ± 0.02). Centred journal:
+    F(0) = 0 and the change is of order ≥ 2 (observed 4.0: with five pads a quadratic vector
+    term is excluded by the 5-fold symmetry);
     θx > 0 gives Mx < 0 and θy > 0 gives My < 0 (restoring: at z > 0 a journal tilted about +x
     moves down, onto the loaded pads, which push it up there)."""
     b = pads(pivot)
@@ -302,8 +303,8 @@ def test_spherical_pivots_relieve_the_misaligned_edge_film():
 @pytest.mark.parametrize("pivot", PIVOTS)
 def test_system_stability_transient_vs_linear_and_toml(pivot):
     """The linear model has four more coordinates than the aligned system (two stations' θx,
-    θy, labelled as such) and, with spherical pivots, ten pitches; a 0.2 µm disturbance of the misaligned equilibrium
-    follows expm(A t) of the linear model (1 %); TOML round trip."""
+    θy, labelled as such) and, with spherical pivots, ten pitches; a 0.2 µm disturbance of the
+    misaligned equilibrium follows expm(A t) of the linear model (1 %); TOML round trip."""
     s = compressor(pivot, config_theta_x_rad=2e-4)
     st = rotordyn.stability(s, speed_hz=F_HZ)
     assert st.status == "ok" and np.all(np.isfinite(st.eigenvalues))

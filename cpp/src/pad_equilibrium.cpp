@@ -45,7 +45,8 @@ struct SystemSolver::PadSolve {
   SystemSolver& s;
   const PadGroup& g;
   double omega = 0.0;
-  Eigen::VectorXd rc;  // the film's local coordinates (journal x, y[, θx, θy], tilt[, pivot][, pitch])
+  // the film's local coordinates: journal x, y[, θx, θy], tilt[, pivot][, pitch]
+  Eigen::VectorXd rc;
   Eigen::Vector3d A = Eigen::Vector3d::Zero();  // (K r − F) on the pad less K_gg p_g
   Eigen::Matrix3d Kgg = Eigen::Matrix3d::Zero();
   double tol = 0.0;           // absolute residual tolerance, N
