@@ -232,11 +232,12 @@ def test_bad_tilt_raises_input_error_naming_the_field(kw, field):
 
 
 def test_core_refuses_bad_axial_weights():
-    """The core's own checks (SystemModel.validate): the weight's shape, finite values, and no
-    weights on a film whose coordinates are a tilting pad's."""
+    """The core's own checks (SystemModel.validate): the weight's shape, finite values; a pad's
+    film may carry weights (tilting pads with journal tilt), and its pitch flags must match
+    the pad groups (one per group, 0 or 1, a pitch after the tilt [and pivot])."""
     b = bearing(n_circ=24, n_axial=4)
 
-    def model(weight, pads=()):
+    def model(weight, pads=(), pitch=()):
         f = tilt_coupling(b, [0, 1, 2, 3])
         f.axial_weight = weight
         m = _core.SystemModel()
@@ -245,6 +246,7 @@ def test_core_refuses_bad_axial_weights():
         m.Q, m.chamber = np.zeros(4), np.zeros(4)
         m.films = [f]
         m.pad_coords = [list(p) for p in pads]
+        m.pad_pitch = list(pitch)
         return m
 
     with pytest.raises(rotordyn.InputError, match=r"films\[0\]\.axial_weight: expected"):
@@ -253,8 +255,14 @@ def test_core_refuses_bad_axial_weights():
     w[2, 1] = np.nan
     with pytest.raises(rotordyn.InputError, match=r"films\[0\]\.axial_weight: expected finite"):
         _core.SystemSolver(model(w))
-    with pytest.raises(rotordyn.InputError, match=r"pad_coords\[0\]: a pad's film cannot"):
-        _core.SystemSolver(model(np.ones((4, 5)), pads=[(2,)]))
+    _core.SystemSolver(model(np.ones((4, 5)), pads=[(2,)]))  # accepted
+    _core.SystemSolver(model(np.ones((4, 5)), pads=[(2, 3)], pitch=[1]))  # tilt, pitch
+    with pytest.raises(rotordyn.InputError, match=r"pad_pitch: expected one flag per pad"):
+        _core.SystemSolver(model(np.ones((4, 5)), pads=[(2,)], pitch=[1, 0]))
+    with pytest.raises(rotordyn.InputError, match=r"pad_pitch\[0\]: expected 0 or 1"):
+        _core.SystemSolver(model(np.ones((4, 5)), pads=[(2, 3)], pitch=[2]))
+    with pytest.raises(rotordyn.InputError, match=r"pad_coords\[0\]: expected 2 \(tilt, pitch\)"):
+        _core.SystemSolver(model(np.ones((4, 5)), pads=[(2,)], pitch=[1]))
 
 
 def short_bearing_tilted(length_m, x, y, tx, ty, omega, nphi=720, nz=2001):

@@ -28,7 +28,8 @@ from test_bearing_elements_system import FILM, ROTOR_TOML, _bearings  # noqa: E4
 
 # explicit values for fields whose default is None (the element's own default then applies)
 NONE_VALUES = {"preload": 0.4, "offset": 0.5, "orientation_deg": 270.0,
-               "end_seal_conductance_m3_per_pa_s_per_m": 1e-10, "density_kg_m3": 870.0}
+               "end_seal_conductance_m3_per_pa_s_per_m": 1e-10, "density_kg_m3": 870.0,
+               "pitch_inertia_kg_m2": 2e-4}
 
 
 def _base():

@@ -174,8 +174,8 @@ def test_bad_poses_and_fields_raise_input_error():
         fixed("elliptical", tilt=1)
     with pytest.raises(InputError, match="film_model"):
         fixed("partial_arc", arc_deg=360.0, tilt=True, film_model="short")
-    with pytest.raises(InputError, match=r"tilting_pad_bearing\.tilt"):
-        TiltingPadBearing(station=0, **GEOM, tilt=True)
+    with pytest.raises(InputError, match=r"tilting_pad_bearing\.config_theta_x_rad"):
+        TiltingPadBearing(station=0, **GEOM, tilt=True, config_theta_x_rad=4.1e-3)
 
 
 # -- system: the compressor on two elliptical bearings ----------------------------------------

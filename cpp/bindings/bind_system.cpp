@@ -41,6 +41,7 @@ void bind_system(py::module_& m) {
       .def_readwrite("films", &SystemModel::films)
       .def_readwrite("tables", &SystemModel::tables)
       .def_readwrite("pad_coords", &SystemModel::pad_coords)
+      .def_readwrite("pad_pitch", &SystemModel::pad_pitch)
       .def("validate", &SystemModel::validate);
 
   py::class_<EquilibriumOptions>(m, "EquilibriumOptions")

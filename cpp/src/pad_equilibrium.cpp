@@ -45,13 +45,14 @@ struct SystemSolver::PadSolve {
   SystemSolver& s;
   const PadGroup& g;
   double omega = 0.0;
-  Eigen::VectorXd rc;         // the film's local coordinates (journal x, y, tilt[, pivot])
-  Eigen::Vector2d A = Eigen::Vector2d::Zero();  // (K r − F) on the pad less K_gg p_g
-  Eigen::Matrix2d Kgg = Eigen::Matrix2d::Zero();
+  // the film's local coordinates: journal x, y[, θx, θy], tilt[, pivot][, pitch]
+  Eigen::VectorXd rc;
+  Eigen::Vector3d A = Eigen::Vector3d::Zero();  // (K r − F) on the pad less K_gg p_g
+  Eigen::Matrix3d Kgg = Eigen::Matrix3d::Zero();
   double tol = 0.0;           // absolute residual tolerance, N
   bool pressure_free = false;
   double pmax = 0.0;
-  Eigen::Vector2d R = Eigen::Vector2d::Zero();
+  Eigen::Vector3d R = Eigen::Vector3d::Zero();
 
   PadSolve(SystemSolver& solver, const PadGroup& group) : s(solver), g(group) {}
   int m() const { return static_cast<int>(g.local.size()); }
@@ -66,10 +67,10 @@ struct SystemSolver::PadSolve {
       for (int j = 0; j < m(); ++j) R(k) += Kgg(k, j) * own(j);
     }
   }
-  /// ∂R/∂p_g (m × m) about the last eval.
-  Eigen::Matrix2d jac() {
+  /// ∂R/∂p_g (m × m, in the top-left corner) about the last eval.
+  Eigen::Matrix3d jac() {
     const Eigen::MatrixXd Kf = s.film_stiffness(g.film, g.local);  // the pad's own columns
-    Eigen::Matrix2d J = Eigen::Matrix2d::Identity();
+    Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
     for (int k = 0; k < m(); ++k)
       for (int j = 0; j < m(); ++j)
         J(k, j) = Kgg(k, j) + Kf(g.local[static_cast<std::size_t>(k)],
@@ -89,17 +90,28 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc) {
   const int it = ps.g.local[0];
   const double C = fc.geometry.clearance_m, pinch = kPinch * C;
   double lo = -INFINITY, hi = INFINITY;
-  for (Eigen::Index j = 0; j < fc.shape.rows(); ++j) {
-    double h0 = fc.base_h.size() ? fc.base_h.row(j).minCoeff() : C;
-    for (Eigen::Index k = 0; k < fc.shape.cols(); ++k)
-      if (k != it) h0 += fc.shape(j, k) * ps.rc(k);
-    const double sj = fc.shape(j, it);
+  // node thickness h0 + sj·tilt: the tilt range keeps every node above the pinch
+  auto bound = [&](double h0, double sj) {
     if (sj > 0)
       lo = std::max(lo, (pinch - h0) / sj);
     else if (sj < 0)
       hi = std::min(hi, (h0 - pinch) / -sj);
     else if (!(h0 > pinch))
       throw ContactError("film '" + fc.name + "': the pad's film closes at every tilt");
+  };
+  if (fc.axial_weight.size() == 0) {  // h − tilt term constant along z up to base_h: by rows
+    for (Eigen::Index j = 0; j < fc.shape.rows(); ++j) {
+      double h0 = fc.base_h.size() ? fc.base_h.row(j).minCoeff() : C;
+      for (Eigen::Index k = 0; k < fc.shape.cols(); ++k)
+        if (k != it) h0 += fc.shape(j, k) * ps.rc(k);
+      bound(h0, fc.shape(j, it));
+    }
+  } else {  // journal tilt (or pad pitch): the thickness varies along z, node by node
+    Eigen::VectorXd r0 = ps.rc;
+    r0(it) = 0.0;
+    const RowMatrixXd h0 = fc.thickness(r0), d = fc.thickness_derivative(it);
+    for (Eigen::Index j = 0; j < h0.rows(); ++j)
+      for (Eigen::Index k = 0; k < h0.cols(); ++k) bound(h0(j, k), d(j, k));
   }
   if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi))
     throw ContactError("film '" + fc.name + "': the pad's film closes at every tilt");
@@ -183,6 +195,112 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc) {
   return std::abs(ps.R(0)) <= 1e3 * ps.tol ? 1 : -1;
 }
 
+/// A spherical pivot's pitch γ (the group's last coordinate): f(γ) = R_γ(γ, inner*(γ)) with
+/// the tilt (and pivot) re-solved by `inner` at each γ. The film's pitch moment restores (f
+/// non-decreasing in γ); past the admissible range the film closes at the edge the pad swings
+/// towards, so f = +∞ above it and −∞ below. Start: the current γ, and wherever the pad is
+/// pressure-free (or cannot be balanced) there, the defined γ_def — the pitch that makes the
+/// pad's film closest to parallel to the journal (least squares of h over the pad's nodes,
+/// tilt and pivot held) — from which the search is a function of the other coordinates
+/// alone. A pad pressure-free at γ_def keeps γ_def (its pitch, like its tilt, then has no
+/// film stiffness). Safeguarded Newton (Schur derivative over the inner coordinates) with
+/// bracket expansion and bisection. Returns inner's state (1, 0) or −1.
+template <class PadSolve, class FilmCoupling, class Inner>
+int pitch_solve(PadSolve& ps, const FilmCoupling& fc, Inner&& inner) {
+  const int m = ps.m(), pg = m - 1;
+  const int ig = ps.g.local[static_cast<std::size_t>(pg)];
+  double gdef = 0.0;
+  {
+    Eigen::VectorXd r0 = ps.rc;
+    r0(ig) = 0.0;
+    const RowMatrixXd h0 = fc.thickness(r0), d = fc.thickness_derivative(ig);
+    const double dd = d.squaredNorm();
+    if (dd > 0) gdef = -h0.cwiseProduct(d).sum() / dd;
+  }
+  const double kgg = ps.Kgg(pg, pg);
+  const double half = 0.5 * fc.geometry.length_m;
+  const double gscale = fc.geometry.clearance_m / half;  // the pitch that moves an edge by C
+  double gam = ps.rc(ig), a = 0, b = 0, good = 0, step = 0.1 * gscale;
+  bool has_a = false, has_b = false, has_good = false, from_def = false;
+  auto restart = [&]() {
+    from_def = true;
+    has_a = has_b = has_good = false;
+    step = 0.1 * gscale;
+    gam = gdef;
+  };
+  for (int k = 0; k < 200; ++k) {
+    ps.rc(ig) = gam;
+    int st = -1;
+    bool ok = true;
+    try {
+      st = inner();
+      ok = st >= 0;
+    } catch (const ContactError&) {
+      ok = false;
+    }
+    if (!from_def && (!ok || ps.pressure_free)) {
+      restart();
+      continue;
+    }
+    if (ok && ps.pressure_free && kgg == 0.0) return st;  // unloaded at γ_def (or a plateau)
+    double f;
+    if (ok) {
+      f = ps.R(pg);
+      if (std::abs(f) <= ps.tol) return st;
+      good = gam;
+      has_good = true;
+    } else {
+      if (!has_good) return -1;  // nothing balances the pad near γ_def
+      f = gam > good ? INFINITY : -INFINITY;
+    }
+    if (f < 0) {
+      a = gam;
+      has_a = true;
+    } else {
+      b = gam;
+      has_b = true;
+    }
+    double gn = NAN;
+    if (ok) {
+      const Eigen::Matrix3d J = ps.jac();
+      // Schur complement over the inner coordinates taking part (the tilt if pressured, the
+      // pivot)
+      std::vector<int> in;
+      if (st == 1) in.push_back(0);
+      if (pg == 2) in.push_back(1);
+      double d = J(pg, pg);
+      if (!in.empty()) {
+        const auto ni = static_cast<Eigen::Index>(in.size());
+        Eigen::MatrixXd Jii(ni, ni);
+        Eigen::VectorXd Jig(ni), Jgi(ni);
+        for (Eigen::Index i = 0; i < ni; ++i) {
+          Jig(i) = J(in[static_cast<std::size_t>(i)], pg);
+          Jgi(i) = J(pg, in[static_cast<std::size_t>(i)]);
+          for (Eigen::Index j = 0; j < ni; ++j)
+            Jii(i, j) = J(in[static_cast<std::size_t>(i)], in[static_cast<std::size_t>(j)]);
+        }
+        const Eigen::VectorXd x = Jii.partialPivLu().solve(Jig);
+        if (x.allFinite()) d -= Jgi.dot(x);
+      }
+      if (d > 0) gn = gam - f / d;
+    }
+    const double gtol = 1e-14 * std::max(gscale, std::abs(gam));
+    if (has_a && has_b) {
+      if (b - a <= gtol) return ok ? st : -1;
+      if (!(std::isfinite(gn) && gn > a && gn < b)) gn = 0.5 * (a + b);
+    } else if (!has_b) {
+      if (!(std::isfinite(gn) && gn > gam)) gn = gam + step;
+      step *= 2;
+    } else {
+      if (!(std::isfinite(gn) && gn < gam)) gn = gam - step;
+      step *= 2;
+    }
+    if (ok && std::abs(gn - gam) <= gtol) return st;
+    gam = gn;
+  }
+  return -1;
+}
+
 }  // namespace
 
 bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double load_scale,
@@ -212,7 +330,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
       ps.omega = omega;
       // a flexible pivot's nested solve needs its tilt converged (a stiff pivot amplifies the
       // tilt's error in f(u)): the tight tolerance there
-      ps.tol = g.coords.size() == 2 ? tol_floor : tol_in;
+      ps.tol = g.coords.size() >= 2 ? tol_floor : tol_in;
       ps.rc.resize(static_cast<Eigen::Index>(fc.coords.size()));
       for (std::size_t j = 0; j < fc.coords.size(); ++j)
         ps.rc(static_cast<Eigen::Index>(j)) = rr(fc.coords[j]);
@@ -225,11 +343,11 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
           ps.A(a) -= ps.Kgg(a, b) * rr(g.coords[static_cast<std::size_t>(b)]);
         }
       }
-      int st = -1;
-      if (m == 1) {
-        st = tilt_solve(ps, fc);
-      } else {
+      // tilt, and with a flexible pivot the pivot displacement, for the current pitch
+      auto inner = [&]() -> int {
+        if (!g.pivot()) return tilt_solve(ps, fc);
         // flexible pivot: f(u) = R_u(u, tilt*(u)), increasing in u
+        int st = -1;
         const int iu = g.local[1];
         const double C = fc.geometry.clearance_m;
         double u = ps.rc(iu), a = 0, b = 0, step = 0.1 * C;
@@ -254,7 +372,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
           }
           double un = NAN;
           if (ok) {
-            const Eigen::Matrix2d J = ps.jac();
+            const Eigen::Matrix3d J = ps.jac();
             const double d = (st == 1 && J(0, 0) != 0.0) ? J(1, 1) - J(1, 0) * J(0, 1) / J(0, 0)
                                                          : J(1, 1);
             if (d > 0) un = u - fu / d;
@@ -277,7 +395,9 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
           u = un;
           st = -1;
         }
-      }
+        return st;
+      };
+      const int st = g.pitch ? pitch_solve(ps, fc, inner) : inner();
       if (st < 0) {
         why = "pad '" + fc.name + "': no tilt balances the pad";
         return false;
@@ -332,11 +452,16 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
     res_prev = res;
     linearize_last_solve(false, KH, nullptr);  // every film's last solve is at r
     const Eigen::MatrixXd J = model_.K + KH;
-    // pad coordinates that take part (an unloaded pad's tilt has a zero row and column)
+    // pad coordinates that take part (an unloaded pad's tilt, and its pitch without a pitch
+    // spring, have a zero row and column)
     std::vector<int> pc;
     for (std::size_t k = 0; k < pads_.size(); ++k)
-      for (std::size_t a = 0; a < pads_[k].coords.size(); ++a)
-        if (state[k] == 1 || a > 0) pc.push_back(pads_[k].coords[a]);
+      for (std::size_t a = 0; a < pads_[k].coords.size(); ++a) {
+        const int c = pads_[k].coords[a];
+        const bool free_pitch = pads_[k].pitch && a + 1 == pads_[k].coords.size() &&
+                                model_.K(c, c) == 0.0;
+        if (state[k] == 1 || (a > 0 && !free_pitch)) pc.push_back(c);
+      }
     const auto np = static_cast<Eigen::Index>(pc.size());
     Eigen::MatrixXd Joo(no, no), Jop(no, np), Jpo(np, no), Jpp(np, np);
     Eigen::VectorXd Ro(no), Rp(np);

@@ -148,11 +148,19 @@ void SystemModel::validate() const {
   for (std::size_t i = 0; i < tables.size(); ++i)
     tables[i].validate("tables[" + std::to_string(i) + "]", nn);
   std::vector<int> group(static_cast<std::size_t>(nn), -1);
+  require(pad_pitch.empty() || pad_pitch.size() == pad_coords.size(),
+          "pad_pitch: expected one flag per pad group (" + std::to_string(pad_coords.size()) +
+              ") or none, got " + std::to_string(pad_pitch.size()));
   for (std::size_t g = 0; g < pad_coords.size(); ++g) {
     const std::string w = "pad_coords[" + std::to_string(g) + "]";
     const auto& pc = pad_coords[g];
-    require(pc.size() == 1 || pc.size() == 2,
-            w + ": expected 1 (tilt) or 2 (tilt, pivot) coordinates, got " +
+    const bool pitch = !pad_pitch.empty() && pad_pitch[g] != 0;
+    require(pad_pitch.empty() || pad_pitch[g] == 0 || pad_pitch[g] == 1,
+            "pad_pitch[" + std::to_string(g) + "]: expected 0 or 1");
+    const std::size_t n_own = pc.size() - (pitch ? 1 : 0);
+    require(!pc.empty() && (n_own == 1 || n_own == 2),
+            w + (pitch ? ": expected 2 (tilt, pitch) or 3 (tilt, pivot, pitch) coordinates, got "
+                       : ": expected 1 (tilt) or 2 (tilt, pivot) coordinates, got ") +
                 std::to_string(pc.size()));
     int owner = -1;
     for (int c : pc) {
@@ -173,10 +181,10 @@ void SystemModel::validate() const {
                 w + ": coordinate " + std::to_string(c) + " enters a table bearing");
     }
     require(owner >= 0, w + ": the pad's coordinates enter no film");
-    require(films[static_cast<std::size_t>(owner)].axial_weight.size() == 0,
-            w + ": a pad's film cannot have axial weights (journal tilt) yet");
-    if (pc.size() == 2)
+    if (n_own == 2)
       require(K(pc[1], pc[1]) > 0, w + ": the pivot coordinate needs K(u, u) > 0");
+    if (pitch)
+      require(K(pc.back(), pc.back()) >= 0, w + ": the pitch coordinate needs K >= 0");
   }
   for (Eigen::Index a = 0; a < nn; ++a)
     for (Eigen::Index b = 0; b < nn; ++b) {
@@ -192,9 +200,11 @@ SystemSolver::SystemSolver(SystemModel model) : model_(std::move(model)) {
   h_min_.assign(films_.size(), 0.0);
   h_min_angle_.assign(films_.size(), 0.0);
   h_min_z_.assign(films_.size(), 0.0);
-  for (const auto& pc : model_.pad_coords) {
+  for (std::size_t gi = 0; gi < model_.pad_coords.size(); ++gi) {
+    const auto& pc = model_.pad_coords[gi];
     PadGroup g;
     g.coords = pc;
+    g.pitch = !model_.pad_pitch.empty() && model_.pad_pitch[gi] != 0;
     for (std::size_t i = 0; i < model_.films.size(); ++i) {
       const auto& fc = model_.films[i].coords;
       const auto it = std::find(fc.begin(), fc.end(), pc[0]);
@@ -266,7 +276,8 @@ void SystemSolver::solve_one(std::size_t i, const Eigen::VectorXd& rc,
   h_min_[i] = s.h_min_m;
   h_min_angle_[i] = s.h_min_angle_deg;
   {  // the axial position of the minimum: the first minimum node in row-major order (the
-     // one whose angle the solver reports); 0 where h is uniform along z at that angle
+     // one whose angle the solver reports); 0 where h is uniform along z at that angle (to
+     // round-off: a spherical pad's pitch at an aligned journal is a root at ~1e-19 rad)
     Eigen::Index jm = 0, km = 0;
     double best = f.h(0, 0);
     for (Eigen::Index j = 0; j < f.h.rows(); ++j)
@@ -277,7 +288,8 @@ void SystemSolver::solve_one(std::size_t i, const Eigen::VectorXd& rc,
           km = k;
         }
     const double L = fc.geometry.length_m;
-    h_min_z_[i] = f.h.row(jm).maxCoeff() == f.h.row(jm).minCoeff()
+    const double hmax = f.h.row(jm).maxCoeff();
+    h_min_z_[i] = hmax - f.h.row(jm).minCoeff() <= 1e-13 * hmax
                       ? 0.0
                       : -0.5 * L + static_cast<double>(km) * L / fc.grid.n_axial;
   }

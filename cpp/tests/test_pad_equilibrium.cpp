@@ -98,4 +98,11 @@ TEST_CASE("pad assembly: pad coordinates are validated") {
   CHECK_THROWS(SystemSolver{mod}, InputError);
   mod.pad_coords = {{5}};
   CHECK_THROWS(SystemSolver{mod}, InputError);
+  mod.pad_coords = {{2}};
+  mod.pad_pitch = {1};  // a pitch needs the pad's tilt before it
+  CHECK_THROWS(SystemSolver{mod}, InputError);
+  mod.pad_pitch = {0, 0};  // one flag per pad group
+  CHECK_THROWS(SystemSolver{mod}, InputError);
+  mod.pad_pitch = {0};
+  SystemSolver ok{mod};  // no pitch flagged: valid
 }

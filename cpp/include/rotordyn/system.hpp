@@ -82,10 +82,15 @@ struct SystemModel {
   /// Tilting pads (or any element whose own coordinates enter one film only): per pad, its
   /// coordinates in r, the tilt-like one first (film moment; any structural stiffness, often
   /// none), then optionally a radial pivot displacement (K(u, u) > 0, film force decreasing
-  /// as u grows). Each group's coordinates must belong to exactly one film and no other film
-  /// or table, and K must not couple two groups. Non-empty: the Newton equilibrium starts
-  /// from the pad-assembly solve (pad_equilibrium.cpp).
+  /// as u grows), then optionally the pad's pitch (rotation about the tangent at the pivot, a
+  /// spherical pivot's axial tilt: flagged by pad_pitch). Each group's coordinates must
+  /// belong to exactly one film and no other film or table, and K must not couple two
+  /// groups. The pad's film may carry axial weights (journal tilt). Non-empty: the Newton
+  /// equilibrium starts from the pad-assembly solve (pad_equilibrium.cpp).
   std::vector<std::vector<int>> pad_coords;
+  /// Per pad group, 1 if its last coordinate is the pad's pitch (film moment about the
+  /// pivot's tangent; its film column has an axial weight, z), else 0; empty: no pitch.
+  std::vector<int> pad_pitch;
   Eigen::Index n() const { return M.rows(); }
   void validate() const;  ///< shapes and indices; InputError naming the field
   /// True when a table carries mass coefficients (the mass matrix then depends on Ω).
@@ -254,6 +259,9 @@ class SystemSolver {
     std::size_t film = 0;
     std::vector<int> coords;  ///< indices into r: tilt[, pivot]
     std::vector<int> local;   ///< their positions in films[film].coords
+    bool pitch = false;       ///< the last coordinate is the pad's pitch
+    /// with a radial pivot coordinate (it is then the second)
+    bool pivot() const { return coords.size() == (pitch ? 3u : 2u); }
   };
   std::vector<PadGroup> pads_;
   struct PadSolve;

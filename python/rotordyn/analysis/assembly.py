@@ -34,6 +34,7 @@ class BearingCoords:
     active: bool
     extra: tuple[int, ...] = ()  # the element's own coordinates (pad tilts, pivots)
     rot: tuple[int, ...] = ()    # the station's θx, θy when the film couples to them (tilt)
+    labels: tuple[str, ...] = ()  # the own coordinates' labels (``name.pad0.eta`` …)
 
 
 def gravity_load(system: System) -> np.ndarray:
@@ -87,6 +88,7 @@ class Assembled:
         self.extra_labels: list[str] = []
         films, tables = [], []
         pad_coords = []  # tilting pads' own coordinates, per pad (pad-assembly equilibrium)
+        pad_pitch = []   # per pad: 1 if its last coordinate is a pitch (spherical pivot)
         coupled = []  # (indices [jx, jy, extras], M, K, C) of elements with own coordinates
         self.film_owner: list[int] = []  # bearing index of each C++ film
         self.film_phi: list = []         # physical node angles of each film (None: core grid)
@@ -96,7 +98,7 @@ class Assembled:
             if hasattr(b, "system_parts"):  # rotordyn.bearings elements
                 name = b.name or f"bearing[{bi}]"
                 rot: tuple[int, ...] = ()
-                if getattr(b, "tilt", False):  # fixed geometry: the lobes' films tilt too
+                if getattr(b, "tilt", False):  # lobes' and pads' films tilt too
                     rot = rotation_index(b.station, f"bearings[{bi}]")
                     parts = b.system_parts(jx, jy, n, name, rot=rot)
                 else:
@@ -115,11 +117,12 @@ class Assembled:
                                     parts.penalty))
                     loc = [jx, jy] + list(extra)
                     pad_coords += [[loc[i] for i in g] for g in parts.pad_groups]
+                    pad_pitch += (list(parts.pad_pitch) or [0] * len(parts.pad_groups))
                     self.extra_labels += list(parts.labels)
                     n += parts.n_extra
                 self.bearings.append(BearingCoords(bi, name, jx, jy, (),
                                                    getattr(b, "clearance_m", 0.0), False, extra,
-                                                   rot=rot))
+                                                   rot=rot, labels=tuple(parts.labels)))
                 continue
             jb = b.journal_bearing()
             g, grid = jb.to_core()
@@ -206,6 +209,7 @@ class Assembled:
         model.films = films
         model.tables = tables
         model.pad_coords = pad_coords
+        model.pad_pitch = pad_pitch if any(pad_pitch) else []
         self.model = model
         self.n = n
         self.n_rotor = n_r

@@ -41,7 +41,10 @@ def _element_matrices(lm, b, name: str, idx: list[int]):
     if len(idx) == 2:
         return K, C, M
     if hasattr(b, "system_parts"):  # pads: tilt springs and inertias couple journal and pads
-        parts = b.system_parts(0, 1, 2, name)
+        # (a tilting journal's pads: their pitch coordinates too; the rotations' indices only
+        # place the films' columns, not M, K)
+        parts = b.system_parts(0, 1, 2, name, rot=(0, 1)) if getattr(b, "tilt", False) \
+            else b.system_parts(0, 1, 2, name)
         if parts.M.shape == K.shape:
             return K + parts.K, C + parts.C, parts.M
     own = idx[2:]  # sleeve masters: their stiffness and mass (no journal coupling)

@@ -117,7 +117,9 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
 def tilt_outputs(asm, r, a, h_min_z_films, h_min_films=None) -> dict:
     """Per tilting-film bearing: its journal rotations relative to the housing, the housing
     misalignment and the axial position of its minimum film (EquilibriumResult.tilt; a lobed
-    bearing's: its thinnest lobe's, ``h_min_films`` the films' minimum films)."""
+    or pad bearing's: its thinnest film's, ``h_min_films`` the films' minimum films); for
+    tilting pads also every pad's minimum film and its z (tuples, pad order) and, with
+    spherical pivots, the pads' pitches (rad)."""
     out = {}
     for bc in asm.bearings:
         if not bc.rot:
@@ -129,4 +131,11 @@ def tilt_outputs(asm, r, a, h_min_z_films, h_min_films=None) -> dict:
                          "config_theta_x_rad": float(a[bc.rot[0]]),
                          "config_theta_y_rad": float(a[bc.rot[1]]),
                          "h_min_z_m": float(h_min_z_films[i])}
+        if bc.extra and h_min_films is not None:  # tilting pads: every pad's edge film
+            films = [k for k, o in enumerate(asm.film_owner) if o == bc.index]
+            out[bc.index]["pad_h_min_m"] = tuple(float(h_min_films[k]) for k in films)
+            out[bc.index]["pad_h_min_z_m"] = tuple(float(h_min_z_films[k]) for k in films)
+            pitch = [j for j, lab in zip(bc.extra, bc.labels) if lab.endswith(".pitch")]
+            if pitch:
+                out[bc.index]["pad_pitch_rad"] = tuple(float(r[j]) for j in pitch)
     return out

@@ -31,8 +31,10 @@ FD_REL_STEP = 1e-6
 
 def coordinate_labels(asm: Assembled) -> tuple:
     """Names of the system coordinates: ``station<k>.x``/``.y`` (a full model: also
-    ``.rot_x``/``.rot_y``, and ``node<i>.…`` for FE nodes that are not stations), then
-    ``<bearing>.sleeve<j>`` and the elements' own coordinates (pad tilts)."""
+    ``.rot_x``/``.rot_y``, and ``node<i>.…`` for FE nodes that are not stations; a reduced
+    model: the rotations ``.rot_x``/``.rot_y`` of the stations a tilting film keeps as
+    masters, then ``cb_mode<j>``), then ``<bearing>.sleeve<j>`` and the elements' own
+    coordinates (pad tilts, pivots, pitches)."""
     s = asm.system
     if asm.rotor.reduction is None:
         station_of = {int(nd): st for st, nd in enumerate(s.rotor.station_nodes())}
@@ -41,6 +43,7 @@ def coordinate_labels(asm: Assembled) -> tuple:
                  + f".{comp[d % 4]}" for d in (int(x) for x in asm.rotor.full.dofs)]
     else:
         names = [f"station{st}.{c}" for st in s.reduction.master_stations for c in "xy"]
+        names += [f"station{st}.{c}" for st in s.tilt_stations() for c in ("rot_x", "rot_y")]
         names += [f"cb_mode{j + 1}" for j in range(asm.n_rotor - len(names))]
     for bc in asm.bearings:
         names += [f"{bc.name}.sleeve{j + 1}" for j in range(len(bc.sleeve))]

@@ -12,8 +12,9 @@
   :mod:`.ross_io` a bearing element as a ROSS ``BearingElement``;
 * :mod:`.thermal` the oil (:class:`Oil`, viscosity–temperature laws) and the
   effective-temperature equilibrium of a plain film (:class:`ThermalEquilibriumResult`);
-* :mod:`.tilt` a tilted or misaligned journal in a plain film: forces and moments
-  (:func:`tilted_forces`), 4×4 K, C over (x, y, θx, θy), the equilibrium at an imposed tilt.
+* :mod:`.tilt` a tilted or misaligned journal in a plain, lobed or tilting-pad film: forces
+  and moments (:func:`tilted_forces`), 4×4 K, C over (x, y, θx, θy), the equilibrium at an
+  imposed tilt (tilting pads: :mod:`.tilt_pads`, the pads at their equilibrium).
 
 Each can be placed in a :class:`rotordyn.System` (``bearings=...``, TOML ``[[bearing]] type =
 ...``, the names of :data:`BEARING_TYPES`) and also used standalone (forces, coefficient tables

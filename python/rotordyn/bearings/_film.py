@@ -275,6 +275,9 @@ class SystemParts:
     # per pad, its own coordinates (indices into [x, y, extras]: tilt, then pivot): the C++
     # equilibrium solves them pad by pad (SystemModel.pad_coords, pad_equilibrium.cpp)
     pad_groups: list = field(default_factory=list)
+    # per pad group, 1 if its last coordinate is the pad's pitch (spherical pivot, journal
+    # tilt; SystemModel.pad_pitch), else 0; empty: none
+    pad_pitch: list = field(default_factory=list)
 
 
 def standalone_model(parts: SystemParts, load_n) -> "_core.SystemModel":
@@ -296,6 +299,7 @@ def standalone_model(parts: SystemParts, load_n) -> "_core.SystemModel":
     model.films = [p.coupling if isinstance(p, PadFilm) else p for p in parts.films]
     model.tables = parts.tables
     model.pad_coords = [list(g) for g in parts.pad_groups]
+    model.pad_pitch = [int(p) for p in parts.pad_pitch]
     return model
 
 
@@ -321,16 +325,17 @@ def operating_table(parts: SystemParts, load_n, speeds_hz, *, n_threads: int = 1
             np.asarray(res.DH).reshape(ns, n, n) + C, list(res.status), list(res.message), M)
 
 
-def reduce_coefficients(KH, DH, M, nu):
-    """Condense extra (pad) coordinates at the whirl frequency ν (rad/s): the journal's 2×2
-    impedance Z = Z_jj − Z_jp Z_pp⁻¹ Z_pj with Z = K + iνC − ν²M; K = Re Z, C = Im Z / ν.
+def reduce_coefficients(KH, DH, M, nu, n_journal: int = 2):
+    """Condense extra (pad) coordinates at the whirl frequency ν (rad/s): the journal's
+    impedance Z = Z_jj − Z_jp Z_pp⁻¹ Z_pj with Z = K + iνC − ν²M over its first ``n_journal``
+    coordinates (2: x, y; 4: x, y, θx, θy of a tilting journal); K = Re Z, C = Im Z / ν.
     ν = 0 gives the static condensation of K and the limit of C."""
-    if KH.shape[0] == 2:
+    if KH.shape[0] == n_journal:
         return KH.copy(), DH.copy()
     if nu == 0.0:
         nu = 1e-9 * max(1.0, np.abs(KH).max() / max(np.abs(DH).max(), 1e-300))
     Z = KH + 1j * nu * DH - nu ** 2 * M
-    j, p = slice(0, 2), slice(2, None)
+    j, p = slice(0, n_journal), slice(n_journal, None)
     Zr = Z[j, j] - Z[j, p] @ np.linalg.solve(Z[p, p], Z[p, j])
     return Zr.real.copy(), Zr.imag / nu
 

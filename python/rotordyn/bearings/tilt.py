@@ -40,6 +40,9 @@ import threading
 from rotordyn.bearings._film import imposed_tilt, min_film as _min_film
 from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
 from rotordyn.bearings.journal import MAX_SPEED_HZ, JournalBearing
+from rotordyn.bearings.tilt_pads import (pad_misaligned_equilibrium, pad_tilted_coefficients,
+                                         pad_tilted_forces)
+from rotordyn.bearings.tilting_pad import TiltingPadBearing
 from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
@@ -175,13 +178,27 @@ class TiltedFilm:
             "h_min_z_m": self.h_min_z_m}])
 
 
-def tilted_forces(bearing: JournalBearing | FixedGeometryBearing, *, x_m: float, y_m: float,
+def tilted_forces(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBearing, *,
+                  x_m: float, y_m: float,
                   speed_hz: float,
                   theta_x_rad: float = 0.0, theta_y_rad: float = 0.0, vx_m_s: float = 0.0,
                   vy_m_s: float = 0.0, wx_rad_s: float = 0.0, wy_rad_s: float = 0.0
                   ) -> TiltedFilm:
     """Forces and moments on a rigid journal at (x, y) tilted by (θx, θy) rad, moving at
-    (vx, vy) m/s and (ωx, ωy) rad/s (the squeeze term ∂h/∂t of the same thickness)."""
+    (vx, vy) m/s and (ωx, ωy) rad/s (the squeeze term ∂h/∂t of the same thickness).
+
+    A :class:`TiltingPadBearing`: the journal held at rest at the pose, every pad at its
+    equilibrium (:func:`rotordyn.bearings.tilt_pads.pad_tilted_forces`; a
+    :class:`~rotordyn.bearings.tilt_pads.PadTiltedFilm` with the pads' tilts, pitches and
+    films); velocities are refused (the pads' motion is a state of the system transient)."""
+    if isinstance(bearing, TiltingPadBearing):
+        for name, val in (("vx_m_s", vx_m_s), ("vy_m_s", vy_m_s), ("wx_rad_s", wx_rad_s),
+                          ("wy_rad_s", wy_rad_s)):
+            if v.finite(name, val) != 0.0:
+                raise InputError(f"{name}: expected 0 for a tilting-pad bearing (the pads' "
+                                 f"velocities are states of the system transient), got {val!r}")
+        return pad_tilted_forces(bearing, x_m=x_m, y_m=y_m, speed_hz=speed_hz,
+                                 theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad)
     r = np.array(check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad))
     rd = np.array([v.in_range("vx_m_s", vx_m_s, -1e3, 1e3),
                    v.in_range("vy_m_s", vy_m_s, -1e3, 1e3),
@@ -197,7 +214,8 @@ def tilted_forces(bearing: JournalBearing | FixedGeometryBearing, *, x_m: float,
                       h_min_angle_deg=ha, h_min_z_m=hz)
 
 
-def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing, *, x_m: float,
+def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBearing,
+                        *, x_m: float,
                         y_m: float, speed_hz: float,
                         theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
                         method: str = "perturbation", rel_step: float = 1e-6
@@ -206,7 +224,15 @@ def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing, *, x_m: 
 
     ``method="perturbation"``: the linearised Reynolds solves on the film's factorisation;
     ``"finite_difference"``: central differences of (F, M), steps rel_step·c on x, y and
-    rel_step·c (rad) on the rotations, rel_step·c·|ω| on the velocities."""
+    rel_step·c (rad) on the rotations, rel_step·c·|ω| on the velocities.
+
+    A :class:`TiltingPadBearing`: the pads at their equilibrium for the pose and their
+    coordinates condensed at the synchronous frequency
+    (:func:`rotordyn.bearings.tilt_pads.pad_tilted_coefficients` takes the whirl ratio)."""
+    if isinstance(bearing, TiltingPadBearing):
+        return pad_tilted_coefficients(bearing, x_m=x_m, y_m=y_m, speed_hz=speed_hz,
+                                       theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad,
+                                       method=method, rel_step=rel_step)
     r = np.array(check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad))
     w = TWO_PI * _speed(speed_hz)
     s = _solver(bearing)
@@ -254,13 +280,20 @@ class MisalignedEquilibrium:
             "h_min_z_m": self.h_min_z_m, "status": self.status, "message": self.message}])
 
 
-def misaligned_equilibrium(bearing: JournalBearing | FixedGeometryBearing, *,
+def misaligned_equilibrium(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBearing,
+                           *,
                            load_n: Sequence[float],
                            speed_hz: float, theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
                            tol: float = 1e-10) -> MisalignedEquilibrium:
     """(x, y) where the film force balances ``load_n`` (N, on the journal) with the journal
     tilted by (θx, θy) rad: the C++ Newton equilibrium of the film on (x, y) whose thickness
-    at zero (x, y) is c + θx z sin φ − θy z cos φ; then the moments at that point."""
+    at zero (x, y) is c + θx z sin φ − θy z cos φ; then the moments at that point.
+    A :class:`TiltingPadBearing`: the pads free
+    (:func:`rotordyn.bearings.tilt_pads.pad_misaligned_equilibrium`)."""
+    if isinstance(bearing, TiltingPadBearing):
+        return pad_misaligned_equilibrium(bearing, load_n=load_n, speed_hz=speed_hz,
+                                          theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad,
+                                          tol=tol)
     if isinstance(load_n, (str, bytes)) or len(np.atleast_1d(load_n)) != 2:
         raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}")
     lx, ly = v.finite("load_n[0]", load_n[0]), v.finite("load_n[1]", load_n[1])

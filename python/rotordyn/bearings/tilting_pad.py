@@ -18,6 +18,19 @@ shape columns (−(R + t) sin(φ − ψ), cos(φ − ψ)). A pad is in equilibri
 moment is zero (plus ``tilt_stiffness_n_m_per_rad``·δ if the pivot resists tilt; the key was
 ``tilt_stiffness_nm_per_rad`` before, still read with a deprecation warning: "nm" reads as
 nanometres against the suffix vocabulary's ``_n_per_m``).
+
+Journal tilt (``tilt = True``; docs/film-physics.md, "Tilting-pad bearings"): every pad's
+film couples to the station's rotations (θx, θy) too, with the plain bearing's convention
+(the journal centre at z is at (x + θy z, y − θx z)), and the housing's angular
+misalignment (``config_theta_x_rad``, ``config_theta_y_rad``) is the configuration at them.
+``pivot_type``: ``"rocker"`` (default; a line-contact rocker back or a cylindrical pivot: the
+pad rocks about the pivot line and is axially rigid, it cannot follow the journal's slope) or
+``"spherical"`` (a ball-and-socket pivot: the pad also pitches, γ_k its rotation about the
+tangent t_k at the pivot, right-hand rule, so its surface at z moves outward by γ_k z:
+h += γ_k z cos(φ − ψ_k); pitch inertia ``pitch_inertia_kg_m2`` (None: ``pad_inertia_kg_m2``)
+and an optional ``pitch_stiffness_n_m_per_rad``). The pad's rotation about its radial axis
+(yaw) is not modelled (held). Without ``tilt`` a spherical pivot adds no coordinate: the
+aligned film is symmetric in z, so it exerts no pitch moment and the pitch decouples.
 """
 
 from __future__ import annotations
@@ -30,7 +43,8 @@ import numpy as np
 from rotordyn._common import validate as v
 from rotordyn._common.status import CONVERGED
 from rotordyn.bearings._film import (SystemParts, check_arc, check_film_fields, check_load,
-                                     check_speeds, operating_table, pad_film, speed_limit)
+                                     check_speeds, operating_table, pad_film, speed_limit,
+                                     tilt_fields)
 from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.bearings.pad_thd import (freeze_fields, pad_fields, pad_model_options,
                                         pad_thd_equilibrium)
@@ -65,10 +79,16 @@ class TiltingPadBearing:
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
-    # journal tilt (the film on the station's rotations, as fixed-geometry and plain
-    # bearings have it): not yet for pads, refused (the core's pad-by-pad equilibrium takes
-    # no pad film with axial weights)
+    # journal tilt: every pad's film couples to the station's rotations too; the housing's
+    # angular misalignment (rad, right-hand rule about x, y) is the configuration a at them
     tilt: bool = False
+    config_theta_x_rad: float = 0.0
+    config_theta_y_rad: float = 0.0
+    # "rocker" (axially rigid pads) or "spherical" (pads pitch about the pivot's tangent;
+    # with tilt only), module docstring
+    pivot_type: str = "rocker"
+    pitch_inertia_kg_m2: float | None = None
+    pitch_stiffness_n_m_per_rad: float = 0.0
     # a frozen viscosity per node and pad, Pa·s: per pad (N_pad, n_axial + 1) as nested tuples
     # (the THD pads' temperature fields at their thermal equilibrium, pad_thd.py); None:
     # viscosity_pa_s everywhere
@@ -102,10 +122,6 @@ class TiltingPadBearing:
         v.in_range(f"{where}.pad_arc_deg", self.pad_arc_deg, 0.0, 360.0 / self.n_pads,
                    lo_open=True, hi_open=True)
         check_arc(f"{where}.pad_arc_deg", self.pad_arc_deg, self)
-        if self.tilt is not False:
-            raise InputError(f"{where}.tilt: journal tilt is not available for tilting-pad "
-                             f"bearings yet (the pads' films are solved without the journal's "
-                             f"rotations); expected false, got {self.tilt!r}")
         v.in_range(f"{where}.pivot_offset", self.pivot_offset, 0.0, 1.0, lo_open=True,
                    hi_open=True)
         v.in_range(f"{where}.preload", self.preload, 0.0, 1.0, hi_open=True)
@@ -123,6 +139,60 @@ class TiltingPadBearing:
         if self.cavitation == "jfo":
             raise InputError(f"{where}.cavitation: 'jfo' is not supported on tilting pads; use "
                              "'reynolds', 'gumbel' or 'none'")
+        v.choice(f"{where}.pivot_type", self.pivot_type, ("rocker", "spherical"))
+        if self.pitch_inertia_kg_m2 is not None:
+            v.positive(f"{where}.pitch_inertia_kg_m2", self.pitch_inertia_kg_m2)
+        v.non_negative(f"{where}.pitch_stiffness_n_m_per_rad", self.pitch_stiffness_n_m_per_rad)
+        self._check_tilt(where)
+
+    def _check_tilt(self, where: str) -> None:
+        """``tilt`` (bool), the misalignment (finite, only with tilt, and not closing any pad's
+        film at an edge for a journal on the housing's axis: :meth:`edge_film` > 0)."""
+        tx, ty = tilt_fields(self, where)
+        h, z, k = self.edge_film(0.0, 0.0, tx, ty)
+        if not h > 0.0:
+            raise InputError(
+                f"{where}.config_theta_x_rad, config_theta_y_rad: the misalignment closes pad "
+                f"{k}'s film at the edge z = {z:+g} m (minimum film {h:g} m with the pads "
+                f"untilted{' and pitched to the journal' if self.pitch else ''}); expected a "
+                f"misalignment whose edge film stays > 0 (rocker pads: |theta|·length_m/2 below "
+                f"about clearance_m = {self.clearance_m:g} m)")
+
+    @property
+    def pitch(self) -> bool:
+        """The pads pitch (a coordinate each): spherical pivots with journal tilt."""
+        return bool(self.tilt) and self.pivot_type == "spherical"
+
+    def edge_film(self, x: float, y: float, theta_x: float, theta_y: float
+                  ) -> tuple[float, float, int]:
+        """The smallest film thickness (m) over the pads of a journal at (x, y) (m, mid-plane)
+        tilted by (θx, θy) rad with the pads untilted (δ = 0, u = 0) and, with spherical
+        pivots, pitched parallel to the journal along the pivot line (γ_k = θ·t_k), the edge z
+        (m) and the pad where it is. Pad k's h(θ, z) = C_p − |V| cos(θ − arg V) (θ = φ − ψ_k)
+        with V = (C_p − C_b + e·n_k − γ_k z, e·t_k), e = (x + θy z, y − θx z), least at arg V
+        if that lies on the pad's arc, else at an arc end; at an edge z = ±L/2 (straight
+        axis)."""
+        Cb = self.clearance_m
+        Cp = Cb / (1.0 - self.preload)
+        arc = math.radians(self.pad_arc_deg)
+        lead, trail = -self.pivot_offset * arc, (1.0 - self.pivot_offset) * arc
+        best, where, pad = math.inf, 0.0, 0
+        for k, psi_deg in enumerate(self.pivot_angles_deg()):
+            psi = math.radians(psi_deg)
+            cp, sp = math.cos(psi), math.sin(psi)
+            gam = theta_y * cp - theta_x * sp if self.pivot_type == "spherical" else 0.0
+            for z in (-0.5 * self.length_m, 0.5 * self.length_m):
+                ex, ey = x + theta_y * z, y - theta_x * z
+                vn = Cp - Cb + ex * cp + ey * sp - gam * z
+                vt = -ex * sp + ey * cp
+                a, th = math.hypot(vn, vt), math.atan2(vt, vn)
+                if lead <= th <= trail:
+                    h = Cp - a
+                else:
+                    h = Cp - a * max(math.cos(lead - th), math.cos(trail - th))
+                if h < best:
+                    best, where, pad = h, z, k
+        return best, where, pad
 
     # -- geometry -------------------------------------------------------------------------
     def pivot_angles_deg(self) -> np.ndarray:
@@ -139,6 +209,8 @@ class TiltingPadBearing:
 
     @property
     def dofs_per_pad(self) -> int:
+        """Coordinates per pad of the standalone (aligned) bearing: η, and u with a flexible
+        pivot (in a system with tilt and spherical pivots, the pitch γ after them)."""
         return 2 if self.flexible_pivot else 1
 
     @property
@@ -146,44 +218,67 @@ class TiltingPadBearing:
         """Pivot lever ℓ = R + t, m."""
         return 0.5 * self.diameter_m + self.pad_thickness_m
 
-    def system_parts(self, jx: int, jy: int, first_extra: int, name: str) -> SystemParts:
+    def system_parts(self, jx: int, jy: int, first_extra: int, name: str,
+                     rot=()) -> SystemParts:
         """Pad coordinates: η_k = q·t_k + ℓ δ_k, the journal's tangential offset relative to
         tilted pad k (t_k the unit tangent at the pivot), m, and with a flexible pivot u_k.
         In (q, η) each pad's film depends on the journal only through its radial offset
         ξ_k = q·n_k: h = base − ξ_k cos θ − η_k sin θ + u_k cos θ (θ = φ − ψ_k). This keeps
         Newton's steps from dragging a pad into the pressure-free (fully divergent) branch
         when the journal moves tangentially to it. Tilt δ_k = (η_k − q·t_k)/ℓ: the pad's
-        kinetic energy ½ I δ̇² and tilt spring ½ k_t δ² couple η_k with the journal in M, K."""
+        kinetic energy ½ I δ̇² and tilt spring ½ k_t δ² couple η_k with the journal in M, K.
+
+        ``rot`` (two indices: the station's θx, θy): every pad's film couples to them too,
+        h += z (θx sin φ − θy cos φ) (shapes sin φ, −cos φ with axial weight z), and with
+        spherical pivots each pad has its pitch γ_k (rad) after its other coordinates,
+        h += γ_k z cos θ, with inertia and stiffness of its own (M, K over [x, y, extras] do
+        not involve the rotations)."""
         lever = self.lever_m
         arc = math.radians(self.pad_arc_deg)
+        pitch = bool(rot) and self.pivot_type == "spherical"
         films, labels = [], []
-        npd = self.dofs_per_pad
+        npd = 1 + int(self.flexible_pivot) + int(pitch)
         n = npd * self.n_pads
         M = np.zeros((2 + n, 2 + n))
         K = np.zeros((2 + n, 2 + n))
         P = np.zeros((2 + n, 2 + n))
-        groups = []  # each pad's own coordinates (tilt, pivot): the pad-assembly equilibrium
+        groups = []  # each pad's own coordinates (tilt, pivot, pitch): the pad assembly
+        z = np.linspace(-0.5 * self.length_m, 0.5 * self.length_m, self.n_axial + 1)
         for k, psi_deg in enumerate(self.pivot_angles_deg()):
             psi = math.radians(psi_deg)
             cp, sp = math.cos(psi), math.sin(psi)
             start = psi - self.pivot_offset * arc
             ik = 2 + npd * k
-            coords = [jx, jy, first_extra + npd * k]
-            shapes = [lambda phi, psi=psi: -np.sin(phi - psi)]
+            coords = [jx, jy] + list(rot) + [first_extra + npd * k]
+            shapes = ([np.sin, lambda phi: -np.cos(phi)] if rot else []) + [
+                lambda phi, psi=psi: -np.sin(phi - psi)]
+            weights = [1.0, 1.0] + ([z, z] if rot else []) + [1.0]
             labels.append(f"{name}.pad{k}.eta")
             a = np.zeros(2 + n)  # δ_k = a · [qx, qy, extras]
             a[0], a[1], a[ik] = sp / lever, -cp / lever, 1.0 / lever
             M += self.pad_inertia_kg_m2 * np.outer(a, a)
             K += self.tilt_stiffness_n_m_per_rad * np.outer(a, a)
             P += np.outer(a, a)  # fallback equilibrium homotopy: tilts held at 0 first
-            groups.append([ik] + ([ik + 1] if self.flexible_pivot else []))
+            groups.append([ik] + ([ik + 1] if self.flexible_pivot else [])
+                          + ([ik + npd - 1] if pitch else []))
             if self.flexible_pivot:
                 coords.append(first_extra + npd * k + 1)
                 shapes.append(lambda phi, psi=psi: np.cos(phi - psi))
+                weights.append(1.0)
                 labels.append(f"{name}.pad{k}.pivot")
                 M[ik + 1, ik + 1] = self.pad_mass_kg
                 P[ik + 1, ik + 1] = 1.0 / lever ** 2  # and pivots at u = 0
                 K[ik + 1, ik + 1] = self.pivot_stiffness_n_per_m
+            if pitch:  # γ_k: the pad's surface at z moves outward by γ_k z
+                ig = ik + npd - 1
+                coords.append(first_extra + npd * k + npd - 1)
+                shapes.append(lambda phi, psi=psi: np.cos(phi - psi))
+                weights.append(z)
+                labels.append(f"{name}.pad{k}.pitch")
+                M[ig, ig] = (self.pad_inertia_kg_m2 if self.pitch_inertia_kg_m2 is None
+                             else self.pitch_inertia_kg_m2)
+                K[ig, ig] = self.pitch_stiffness_n_m_per_rad
+                P[ig, ig] = (0.5 * self.length_m / lever) ** 2  # homotopy: edges as the tilt
             pf = pad_film(
                 name=f"{name}.pad{k}", diameter_m=self.diameter_m, length_m=self.length_m,
                 clearance_m=self.clearance_m, viscosity_pa_s=self.viscosity_pa_s,
@@ -197,11 +292,14 @@ class TiltingPadBearing:
             S[on, 0] = -np.cos(th) * cp
             S[on, 1] = -np.cos(th) * sp
             pf.coupling.shape = S
+            if rot:  # ∂h/∂r_k = S(φ, k)·w(k, z): z on the rotations and the pitch
+                pf.coupling.axial_weight = np.ascontiguousarray(
+                    np.vstack([np.broadcast_to(w, z.shape) for w in weights]))
             films.append(pf)
         pad_fields(self.viscosity_field_pa_s, films, f"{name}.viscosity_field_pa_s")
         return SystemParts(films=films, tables=[], n_extra=n, M=M, K=K,
                            C=np.zeros((2 + n, 2 + n)), labels=tuple(labels), penalty=P,
-                           pad_groups=groups)
+                           pad_groups=groups, pad_pitch=[int(pitch)] * len(groups))
 
     def pad_tilts_rad(self, r) -> np.ndarray:
         """Pad tilts δ_k (rad) from standalone coordinates r = [x, y, pad coordinates...]."""

@@ -54,7 +54,9 @@ class EquilibriumResult(Display):
     # bearings whose film couples to the journal's rotations (tilt = true): {bearing index:
     # {"journal_theta_x_rad", "journal_theta_y_rad" (relative to the housing),
     # "config_theta_x_rad", "config_theta_y_rad" (housing misalignment), "h_min_z_m"
-    # (axial position of the minimum film, z = 0 mid-plane)}}
+    # (axial position of the minimum film, z = 0 mid-plane); tilting pads also
+    # "pad_h_min_m", "pad_h_min_z_m" (tuples, every pad's minimum film and its z) and with
+    # spherical pivots "pad_pitch_rad" (tuple): not columns of to_frame()}}
     tilt: dict = field(default_factory=dict)
 
     def __repr__(self) -> str:
@@ -175,6 +177,8 @@ class EquilibriumResult(Display):
                 df.loc[bi, col] = val
         for bi, d in self.tilt.items():  # tilting films: rotations, misalignment, edge film
             for col, val in d.items():
+                if isinstance(val, tuple):  # per pad (pad_h_min_m, …): in .tilt only
+                    continue
                 if col not in df:
                     df[col] = np.nan
                 df.loc[bi, col] = val
