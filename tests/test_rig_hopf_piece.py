@@ -69,9 +69,9 @@ def _check_piece(rig, vary, bounds, fixed, distances, subcritical):
 
 def test_subcritical_hopf_of_the_rig_in_the_speed_domain_against_its_cycles(rig):
     """a_y = 0, 0.4 MPa: the Hopf speed 98.9888 Hz is subcritical inside the piece
-    (l1 = +4.2e-5, κ = 1146 µm²/Hz); the unstable cycles 1e-4 and 3e-4 Hz below it (0.34 and
-    0.59 µm) have A²/(κ d) = 1.007 (0.9999–1.0007 with the plateau's wider spans). The default span gives l1 = +0.005 ± 0.0027, degenerate,
-    κ 120 times smaller."""
+    (l1 = +4.2e-5, κ = 1143 µm²/Hz); the unstable cycles 1e-4 and 3e-4 Hz below it (0.34 and
+    0.59 µm) have A²/(κ d) = 1.007 (0.9999–1.0007 with the plateau's wider spans, κ = 1151).
+    The default span gives l1 = +0.005 ± 0.0027, degenerate, κ 120 times smaller."""
     h, amps = _check_piece(rig, "speed_hz", (90.0, 110.0),
                            dict(chamber_pressure_pa=0.4e6, config_ay_m=0.0), (1e-4, 3e-4),
                            subcritical=True)
