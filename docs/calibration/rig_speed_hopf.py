@@ -113,7 +113,8 @@ def cycles_at(speeds):
         txt = "; ".join(f"{amp(o) * 1e6:.4f} µm |μ_c| {abs(o.critical_multiplier):.6f} "
                         f"{'stable' if o.stable else 'unstable'}"
                         for _, o in sorted(found.items()))
-        print(f"    {s:8.3f} Hz: equilibrium max Re λ {np.max(np.real(eq.eigenvalues)):+.6f} 1/s; cycles: "
+        re_max = float(np.max(np.real(eq.eigenvalues)))
+        print(f"    {s:8.3f} Hz: equilibrium max Re λ {re_max:+.6f} 1/s; cycles: "
               f"{txt or 'none'} [{time.process_time() - t:.1f} s CPU]")
 
 
