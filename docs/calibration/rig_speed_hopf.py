@@ -16,11 +16,12 @@ right at 99.4 Hz — the continued limit cycle (≈ 3 µm) or the transient that
     coordinate, so the fold, 0.12 Hz wide and 1.4 µm high, is round; a constant step 4e-3;
     ``fd_step`` 2e-4, a 0.01 Hz central difference for ∂R/∂p, whose amplitude component is
     ~1e-6 per Hz and drowns in the flows' noise at the default 1e-4 of the bounds' span);
+    ``--branch-up``: the same upwards from 99.4 Hz (80 points);
 (e) transients at 99.4 Hz from the equilibrium displaced 30 µm, and from the shot cycle, at
     the transient's default tolerances (rtol 1e-6, atol 1e-9 m) and tighter ones.
 
 Run:  .venv/bin/python docs/calibration/rig_speed_hopf.py              # (a)-(c), ~1 min CPU
-      .venv/bin/python docs/calibration/rig_speed_hopf.py --branch     # + (d), minutes
+      .venv/bin/python docs/calibration/rig_speed_hopf.py --branch [--branch-up]  # + (d)
       .venv/bin/python docs/calibration/rig_speed_hopf.py --transients [--long 400]  # + (e)
       .venv/bin/python docs/calibration/rig_speed_hopf.py --pc   # the p_c Hopf point only
 """
@@ -118,18 +119,20 @@ def cycles_at(speeds):
               f"{txt or 'none'} [{time.process_time() - t:.1f} s CPU]")
 
 
-def branch():
-    """(d) the branch from the stable cycle at 99.4 Hz down through the fold to the Hopf
-    point."""
+def branch(direction):
+    """(d) the branch from the stable cycle at 99.4 Hz: down (direction −1) through the fold
+    to the Hopf point, or up (+1)."""
     t = time.process_time()
     hb = rd.periodic_orbit(RIG, 99.4, PC, 0.0, method="harmonic_balance", harmonics=8,
                            start_amplitude_c=0.01, tol=1e-9, floquet="none", n_out=1001)
     o = rd.periodic_orbit(RIG, 99.4, PC, 0.0, start=(hb.r[0], hb.v[0]), period_s=hb.period_s,
                           rtol=1e-9, tol=1e-8, n_out=1001)
-    br = rd.continuation(RIG, "speed_hz", (98.5, 99.5), o, direction=-1, rtol=1e-9, tol=1e-8,
+    bounds = (98.5, 99.5) if direction < 0 else (98.5, 102.0)
+    br = rd.continuation(RIG, "speed_hz", bounds, o, direction=direction, rtol=1e-9, tol=1e-8,
                          ds=4e-3, ds_max=4e-3, ds_min=4e-5, max_points=80, param_scale=50.0,
                          fd_step=2e-4, max_iter=12, n_out=1001)
-    print(f"(d) {br!r} [{time.process_time() - t:.1f} s CPU]")
+    print(f"(d) {'down' if direction < 0 else 'up'}: {br!r} "
+          f"[{time.process_time() - t:.1f} s CPU]")
     print("    speed_hz  amplitude_um  whirl_hz  |mu_c|     stable")
     for i, s in enumerate(br.parameter):
         print(f"    {s:9.5f} {amp(br.orbits[i]) * 1e6:12.5f} {1 / br.period_s[i]:9.5f} "
@@ -197,7 +200,8 @@ def pc_point():
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--branch", action="store_true", help="(d) the continued branch")
+    ap.add_argument("--branch", action="store_true", help="(d) the branch down to the Hopf point")
+    ap.add_argument("--branch-up", action="store_true", help="(d) the branch up from 99.4 Hz")
     ap.add_argument("--transients", action="store_true", help="(e) the transients")
     ap.add_argument("--pc", action="store_true",
                     help="only the Hopf point over p_c at a_y = -1.85 mm, 50 Hz")
@@ -214,7 +218,9 @@ def main():
     near_cycles(h, (5e-5, 1e-4, 2e-4, 3e-4))
     cycles_at((98.85, 98.88, 98.95, 98.98, 99.1, 99.4, 99.7, 100.5))
     if a.branch:
-        branch()
+        branch(-1)
+    if a.branch_up:
+        branch(+1)
     if a.transients:
         transients(a.long)
 
