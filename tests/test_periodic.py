@@ -145,6 +145,34 @@ def test_a_start_that_is_not_on_a_cycle_is_a_status(linear_system):
     assert "not_converged" in repr(res)
 
 
+def test_a_small_orbit_about_a_weakly_damped_equilibrium_is_not_a_cycle(linear_system):
+    """The linear rotor with its supports' damping cut to 2e-3 N·s/m: the least-damped mode
+    has |μ| = 1 − 1.7e-8 per period, so any small orbit along it closes within tol after one
+    period although a linear system has no limit cycle (near a Hopf point the same happens
+    beside the real cycle: docs/nonlinear.md). The Newton correction at the converged start is
+    half the orbit's extent: refused (status not_converged, no multipliers); before, such an
+    orbit came back ok. A converged orbit reports its correction (far below tol)."""
+    sup = tuple(dataclasses.replace(p, cxx_n_s_per_m=2e-3, cyy_n_s_per_m=2e-3)
+                for p in linear_system.supports)
+    light = dataclasses.replace(linear_system, supports=sup)
+    A = state_matrix(assembled(light), 2 * np.pi * 50.0)
+    lam, V = np.linalg.eig(A)
+    k = int(np.argmax(np.where(lam.imag > 0, lam.real, -np.inf)))
+    T = 2 * np.pi / lam[k].imag
+    assert abs(abs(np.exp(lam[k] * T)) - 1) < 1e-7
+    n = A.shape[0] // 2
+    r_eq = np.asarray(rd.equilibrium(light, 50.0).r)
+    v = V[:, k].real / np.max(np.abs(V[:n, k].real)) * 1e-7
+    for tol in (1e-9, 1e-7):
+        res = periodic_orbit(light, 50.0, start=np.concatenate([r_eq, np.zeros(n)]) + v,
+                             period_s=T, rtol=1e-10, tol=tol, max_iter=5)
+        assert res.status == "not_converged" and "not resolved" in res.message
+        assert res.multipliers.size == 0 and not res.stable
+    ub = [(3, 1e-3, 30.0)]
+    ok = periodic_orbit(linear_system, 60.0, kind="forced", unbalances=ub, rtol=1e-9, tol=1e-8)
+    assert ok.ok and 0 <= ok.stats["newton_correction"] < 1e-8
+
+
 def test_period_from_transient_needs_an_oscillation(plain_system):
     tr = rd.transient(plain_system, 0.02, 50.0, n_out=41)
     with pytest.raises(rd.InputError, match="start"):

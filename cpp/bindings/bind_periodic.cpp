@@ -57,6 +57,7 @@ void bind_periodic(py::module_& m) {
       .def_readonly("floquet", &PeriodicOrbitResult::floquet)
       .def_readonly("residual", &PeriodicOrbitResult::residual)
       .def_readonly("residuals", &PeriodicOrbitResult::residuals)
+      .def_readonly("newton_correction", &PeriodicOrbitResult::newton_correction)
       .def_readonly("iterations", &PeriodicOrbitResult::iterations)
       .def_readonly("length_scale", &PeriodicOrbitResult::length_scale)
       .def_readonly("status", &PeriodicOrbitResult::status)

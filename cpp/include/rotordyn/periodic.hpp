@@ -24,6 +24,7 @@
 #include <Eigen/Core>
 
 #include <complex>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,11 @@ struct PeriodicOrbitResult {
   Eigen::MatrixXd monodromy;       ///< (2n, 2n) ∂x(t0 + T)/∂x(t0) at the converged orbit
   Floquet floquet;
   double residual = 0.0;           ///< final ‖D⁻¹(φ_T(x0) − x0)‖∞
+  /// ‖Δz_x‖∞ of the Newton step the final (error-controlled) monodromy gives at the converged
+  /// start, scaled units (positions / L): the estimated distance to the exact orbit (the
+  /// residual test allows up to tol / |1 − μ|); an autonomous orbit is refused when it
+  /// exceeds a tenth of the orbit's extent. NaN when not computed.
+  double newton_correction = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> residuals;   ///< per Newton iteration
   int iterations = 0;              ///< flows integrated (Newton iterations + 1)
   double length_scale = 0.0;       ///< L used in D, m

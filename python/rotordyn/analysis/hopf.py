@@ -285,7 +285,11 @@ def hopf_cycle(system: System, result: HopfResult, value: float, *, rtol: float 
     """The limit cycle at ``value`` of ``result.vary`` near the Hopf point ``result``, by
     shooting (:func:`rotordyn.periodic_orbit`) from the leading-order cycle
     x_e(value) + 2 Re(z q) with period 2π/ω (x_e the equilibrium at ``value``). InputError
-    when ``value`` is on the side without cycles."""
+    when ``value`` is on the side without cycles. Keywords go to
+    :func:`rotordyn.periodic_orbit`; very near the point (the cycle's radial multiplier within
+    ~1e-5 of 1) pass ``method="harmonic_balance"``: shooting's flow map is at its integration
+    noise there and lands on other cycles or is refused (docs/nonlinear.md, "l1 inside the
+    kink-free piece")."""
     from rotordyn.analysis.equilibrium import equilibrium
     from rotordyn.analysis.periodic import periodic_orbit
 

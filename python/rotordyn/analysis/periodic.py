@@ -302,5 +302,6 @@ def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: floa
                "sens_rhs_evals": res.sens_rhs_evals, "jac_evals": res.jac_evals,
                "reynolds_solves": res.reynolds_solves,
                "sensitivity_flows": res.sensitivity_flows,
-               "monodromy_rtol": float(res.monodromy_rtol), **(extra_stats or {})},
+               "monodromy_rtol": float(res.monodromy_rtol),
+               "newton_correction": float(res.newton_correction), **(extra_stats or {})},
         status=status, message=message)

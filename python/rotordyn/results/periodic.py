@@ -29,7 +29,11 @@ class PeriodicOrbitResult(Display):
     < 1; critical_type: how it leaves the unit circle when the orbit loses stability:
     ``"fold"`` (real, +1), ``"period_doubling"`` (real, −1), ``"neimark_sacker"`` (complex
     pair: a torus, quasi-periodic whirl). residuals: the shooting residual per Newton
-    iteration, in units of length_scale_m (velocities: length_scale_m·ω). status ``"ok"`` or
+    iteration, in units of length_scale_m (velocities: length_scale_m·ω).
+    ``stats["newton_correction"]`` (shooting): the largest component of the Newton step the
+    final, error-controlled monodromy gives at the converged start, same units — the
+    estimated distance to the exact orbit (the residual test alone allows tol/|1 − μ|, large
+    near a Hopf point); NaN for harmonic balance and continuation points. status ``"ok"`` or
     ``"not_converged"``/``"rub"``/``"error"`` (then no multipliers: arrays empty, stable
     False).
     """
