@@ -135,6 +135,27 @@ class _Problem:
         return (self.residual(r, p + h) - self.residual(r, p - h)) / (2 * h)
 
 
+def _check_acts(prob, r, lo, hi) -> None:
+    """InputError naming ``vary`` when the model field changes nothing of eq. 14 and eq. 19
+    between the bounds: the assembled M, C, G, K, loads, configuration, and the film forces
+    and their linearisation at the start's state ``r`` are the same at ``lo`` and ``hi`` (a
+    field read only by reports or drawings, e.g. a disk's diameter when its mass is given:
+    the branch would be one point repeated)."""
+    def snapshot(p):
+        asm, w, pc, a, K, Q, ch = prob._parts(p)
+        m = asm.model
+        z = np.zeros(prob.n)
+        lin = asm.solver.linearize(r, z, w)
+        M = m.mass_at(w) if m.has_table_mass() else m.M
+        return [np.asarray(x, dtype=float) for x in (
+            M, m.C, m.G, K, Q, ch, a, asm.solver.film_forces(r, z, w), lin.KH, lin.DH)]
+
+    if all(np.array_equal(x, y) for x, y in zip(snapshot(lo), snapshot(hi))):
+        raise InputError(f"vary: {prob.vary} does not act on the model: the matrices, loads "
+                         f"and film forces are the same at {lo:g} and {hi:g} (a field of "
+                         "reports or drawings only); vary a field of the equations of motion")
+
+
 def _eigen(lm):
     n = lm.M.shape[0]
     Minv = np.linalg.inv(lm.M)
@@ -282,7 +303,10 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
     def solve_point(p, r_start):
         sys_p = prob.system_at(p)
         spd, pc, ay = prob.operating(p)
-        e = equilibrium(sys_p, spd, pc, ay, tol=tol, r0=r_start)
+        # cold without a start (never this thread's last equilibrium): the same branch
+        # whatever ran before (the start's root differed by 1e-11 c after another solve of
+        # the same model, and every later point with it)
+        e = equilibrium(sys_p, spd, pc, ay, tol=tol, r0=r_start, warm_start=False)
         return sys_p, spd, e
 
     def linear(sys_p, spd, e):
@@ -371,6 +395,8 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
         if progress is not None:
             progress(len(pts) - 1, f"{vary} = {p:.6g}: max Re λ = {lam.real.max():.4g} 1/s")
 
+    if vary not in OPERATING:
+        _check_acts(prob, np.asarray(e0.r, float), lo, hi)
     lm0, lam0 = linear(sys0, spd0, e0)
     y0 = np.concatenate([np.asarray(e0.r) / L, [p0 / D_p]])
     J0, Jr0 = bordered(np.asarray(e0.r), p0)
@@ -433,10 +459,29 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
                                                stats=stats, **base)
 
 
+def _real_crossing(lam_a, fa, fb) -> int:
+    """+1 (−1) when a real eigenvalue of eq. 19 crosses zero upwards (downwards) between two
+    points, 0 without a sign change of det(K + K_H) (``fa``, ``fb``: its signed indicator):
+    the direction from the real eigenvalue nearest zero on the first point's side."""
+    if fa * fb >= 0:
+        return 0
+    re = lam_a[lam_a.imag == 0].real
+    if re.size == 0:
+        return 0
+    return 1 if re[np.argmin(np.abs(re))] < 0 else -1
+
+
 def _bifurcations(pts, n, correct, prob, L, D_p, refine, stats) -> tuple:
-    """Hopf points (the count of unstable complex pairs changes) and folds / branch points
+    """Hopf points (a complex pair through the imaginary axis) and folds / branch points
     (sign(det(K + K_H)) changes; ``fold`` when dp/ds also turns) between successive points,
-    refined by Brent's method on the arclength from the earlier point."""
+    refined by Brent's method on the arclength from the earlier point.
+
+    A Hopf crossing is counted from the eigenvalues with Re > 0, not from the complex pairs
+    among them: two real unstable eigenvalues that meet and leave the real axis as an
+    unstable pair (or the reverse: next to a fold, where a real eigenvalue has just crossed
+    zero) change the number of unstable pairs without any crossing of the axis. The change
+    of the unstable count less the real crossing (±1 at a fold) is twice the pairs that
+    crossed."""
     from scipy.optimize import brentq
 
     out = []
@@ -445,8 +490,10 @@ def _bifurcations(pts, n, correct, prob, L, D_p, refine, stats) -> tuple:
         ca = int(np.sum((a["lam"].imag > 0) & (a["lam"].real > 0)))
         cb = int(np.sum((b["lam"].imag > 0) & (b["lam"].real > 0)))
         fa, fb = _signed_smin(a["Jr"]), _signed_smin(b["Jr"])
+        na, nb = int(np.sum(a["lam"].real > 0)), int(np.sum(b["lam"].real > 0))
+        pairs = nb - na - _real_crossing(a["lam"], fa, fb)  # 2 × (pairs through the axis)
         events = []
-        if ca != cb:
+        if pairs != 0:
             k = min(ca, cb) + 1
             events.append(("hopf", lambda lam, Jr, k=k: _kth_pair(lam, k), k))
         if fa * fb < 0:
