@@ -110,6 +110,34 @@ def test_one_hopf_point_and_none_where_real_eigenvalues_meet(speed_branch):
     assert not [b for b in br.bifurcations if i2 < b["index"] < i]
 
 
+def test_symmetric_fold_of_two_magnets_is_found_where_the_parameter_turns(system):
+    """A second magnet at the other journal (kyy = −1.5e7 N/m at both): both journals obey the
+    same closed form and fold at the same speed, so two real eigenvalues cross zero together
+    and det(K + K_H) keeps its sign; the folds are found where dp/ds = 0 (on the sign of det
+    alone none was, and the unstable count's change by two read as Hopf points at 128.08 and
+    147.999 Hz), at the
+    closed form's speeds (1e-4; measured 1.0e-5, 1.8e-5: the single magnet's), the unstable
+    count changing by two, no Hopf point in those steps."""
+    import dataclasses
+
+    magnets = (system.supports[0], dataclasses.replace(system.supports[0], station=2,
+                                                       name="magnet 2"))
+    br = rd.continuation(dataclasses.replace(system, supports=magnets), "speed_hz", BOUNDS,
+                         direction=-1)
+    folds = sorted((b for b in br.bifurcations if b["kind"] == "fold"),
+                   key=lambda b: b["parameter"])
+    assert [b["kind"] for b in br.bifurcations].count("hopf") == 1
+    assert len(folds) == 2
+    for b, (_, f_ref) in zip(folds, MagnetFold().speed_folds()):
+        assert b["refined"] and "dp/ds = 0" in b["message"]
+        assert b["parameter"] == pytest.approx(f_ref, rel=1e-4)
+        i = b["index"]
+        assert abs(int(br.n_unstable[i]) - int(br.n_unstable[i - 1])) == 2
+        assert br.tangent_p[i - 1] * br.tangent_p[i] < 0
+    np.testing.assert_allclose(br.eccentricity_ratio[:, 0], br.eccentricity_ratio[:, 1],
+                               rtol=1e-6)
+
+
 def test_equilibria_from_many_starts_match_the_closed_form(system, speed_branch):
     """A brute-force scan: rd.equilibrium from 16 starts of the magnet's journal (ε 0.1 … 0.7
     × 4 directions) finds three equilibria at 142 Hz, between the folds, and one at 155 Hz,
