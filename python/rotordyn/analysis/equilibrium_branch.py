@@ -27,7 +27,7 @@ from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import Assembled, assembled, check_operating_parameter
 from rotordyn.analysis.equilibrium import equilibrium
-from rotordyn.analysis.equilibrium_events import bifurcations, signed_smin
+from rotordyn.analysis.equilibrium_events import bifurcations
 from rotordyn.analysis.linear import FD_REL_STEP, _linear_from
 from rotordyn.errors import InputError, RotordynError
 from rotordyn.model.paths import get_field, set_field

@@ -51,8 +51,8 @@ def register(sub) -> None:
     c.add_argument("--direction", type=int, choices=[1, -1], default=1,
                    help="leave the start towards growing (1) or falling (-1) parameter")
     c.add_argument("--newton", choices=list(CLI_NEWTON), default=None,
-                   help=f"orbits: the correctors (default {DEFAULT_NEWTON}): exact = Newton with the "
-                        "monodromy from CVODES sensitivities and dR/dp by central "
+                   help=f"orbits: the correctors (default {DEFAULT_NEWTON}): exact = Newton "
+                        "with the monodromy from CVODES sensitivities and dR/dp by central "
                         "differences at every iteration, every point's multipliers at "
                         "--rtol; fast = Broyden updates from the previous point's matrix, "
                         "dR/dp from a CVODES parameter sensitivity (p_c, a_y; the speed "

@@ -119,7 +119,8 @@ class HopfResult(Display):
                                              if val is not None},
                    "bearing": name, "whirl_frequency_hz": self.whirl_frequency_hz,
                    "l1": self.l1, "l1_error": self.l1_error, "l1_refined": self.l1_refined,
-                   "type": self.type, "alpha_prime": self.alpha_prime, "stable_side": self.stable_side,
+                   "type": self.type, "alpha_prime": self.alpha_prime,
+                   "stable_side": self.stable_side,
                    "cycle_side": self.cycle_side,
                    "amplitude_coefficient_m2": (float(self.amplitude_coefficient[i])
                                                 if self.ok else math.nan),
