@@ -27,6 +27,7 @@ from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import Assembled, assembled, check_operating_parameter
 from rotordyn.analysis.equilibrium import equilibrium
+from rotordyn.analysis.equilibrium_events import bifurcations
 from rotordyn.analysis.linear import FD_REL_STEP, _linear_from
 from rotordyn.errors import InputError, RotordynError
 from rotordyn.model.paths import get_field, set_field
@@ -135,24 +136,32 @@ class _Problem:
         return (self.residual(r, p + h) - self.residual(r, p - h)) / (2 * h)
 
 
+def _check_acts(prob, r, lo, hi) -> None:
+    """InputError naming ``vary`` when the model field changes nothing of eq. 14 and eq. 19
+    between the bounds: the assembled M, C, G, K, loads, configuration, and the film forces
+    and their linearisation at the start's state ``r`` are the same at ``lo`` and ``hi`` (a
+    field read only by reports or drawings, e.g. a disk's diameter when its mass is given:
+    the branch would be one point repeated)."""
+    def snapshot(p):
+        asm, w, pc, a, K, Q, ch = prob._parts(p)
+        m = asm.model
+        z = np.zeros(prob.n)
+        lin = asm.solver.linearize(r, z, w)
+        M = m.mass_at(w) if m.has_table_mass() else m.M
+        return [np.asarray(x, dtype=float) for x in (
+            M, m.C, m.G, K, Q, ch, a, asm.solver.film_forces(r, z, w), lin.KH, lin.DH)]
+
+    if all(np.array_equal(x, y) for x, y in zip(snapshot(lo), snapshot(hi))):
+        raise InputError(f"vary: {prob.vary} does not act on the model: the matrices, loads "
+                         f"and film forces are the same at {lo:g} and {hi:g} (a field of "
+                         "reports or drawings only); vary a field of the equations of motion")
+
+
 def _eigen(lm):
     n = lm.M.shape[0]
     Minv = np.linalg.inv(lm.M)
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ lm.K, -Minv @ lm.D]])
     return np.linalg.eigvals(A)
-
-
-def _signed_smin(J) -> float:
-    """sign(det J) · σ_min(J): continuous through a singular static Jacobian (fold)."""
-    s = np.linalg.svd(J, compute_uv=False)
-    sign, _ = np.linalg.slogdet(J)
-    return float(sign * s[-1] / s[0])
-
-
-def _kth_pair(lam, k) -> float:
-    """Re of the k-th largest (k ≥ 1) of the eigenvalues with Im > 0 (−inf if fewer)."""
-    re = np.sort(lam[lam.imag > 0].real)[::-1]
-    return float(re[k - 1]) if re.size >= k else -math.inf
 
 
 @limited_blas
@@ -282,7 +291,10 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
     def solve_point(p, r_start):
         sys_p = prob.system_at(p)
         spd, pc, ay = prob.operating(p)
-        e = equilibrium(sys_p, spd, pc, ay, tol=tol, r0=r_start)
+        # cold without a start (never this thread's last equilibrium): the same branch
+        # whatever ran before (the start's root differed by 1e-11 c after another solve of
+        # the same model, and every later point with it)
+        e = equilibrium(sys_p, spd, pc, ay, tol=tol, r0=r_start, warm_start=False)
         return sys_p, spd, e
 
     def linear(sys_p, spd, e):
@@ -371,6 +383,8 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
         if progress is not None:
             progress(len(pts) - 1, f"{vary} = {p:.6g}: max Re λ = {lam.real.max():.4g} 1/s")
 
+    if vary not in OPERATING:
+        _check_acts(prob, np.asarray(e0.r, float), lo, hi)
     lm0, lam0 = linear(sys0, spd0, e0)
     y0 = np.concatenate([np.asarray(e0.r) / L, [p0 / D_p]])
     J0, Jr0 = bordered(np.asarray(e0.r), p0)
@@ -428,104 +442,6 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
         if info <= 4:
             h = min(1.5 * h, ds_max)
 
-    bif = _bifurcations(pts, n, correct, prob, L, D_p, refine, stats)
+    bif = bifurcations(pts, n, correct, prob, L, D_p, refine, stats, h_fd)
     return EquilibriumBranchResult.from_points(pts, bif, stop=stop, message=message,
                                                stats=stats, **base)
-
-
-def _bifurcations(pts, n, correct, prob, L, D_p, refine, stats) -> tuple:
-    """Hopf points (the count of unstable complex pairs changes) and folds / branch points
-    (sign(det(K + K_H)) changes; ``fold`` when dp/ds also turns) between successive points,
-    refined by Brent's method on the arclength from the earlier point."""
-    from scipy.optimize import brentq
-
-    out = []
-    for i in range(1, len(pts)):
-        a, b = pts[i - 1], pts[i]
-        ca = int(np.sum((a["lam"].imag > 0) & (a["lam"].real > 0)))
-        cb = int(np.sum((b["lam"].imag > 0) & (b["lam"].real > 0)))
-        fa, fb = _signed_smin(a["Jr"]), _signed_smin(b["Jr"])
-        events = []
-        if ca != cb:
-            k = min(ca, cb) + 1
-            events.append(("hopf", lambda lam, Jr, k=k: _kth_pair(lam, k), k))
-        if fa * fb < 0:
-            kind = "fold" if a["t"][-1] * b["t"][-1] < 0 else "branch_point"
-            events.append((kind, lambda lam, Jr: _signed_smin(Jr), 0))
-        sig_b = float(a["t"] @ (b["y"] - a["y"]))
-        for kind, f, k in events:
-            rec = {"kind": kind, "index": i, "refined": False, "smooth": True, "message": ""}
-            p_est, y_at, lam_at = None, None, None
-            if refine and sig_b > 0:
-                def g(sig, f=f):
-                    y_pred = a["y"] + (sig / sig_b) * (b["y"] - a["y"])
-                    y, info = correct(y_pred, a["t"], a["y"], sig)
-                    if y is None:
-                        raise RotordynError(info)
-                    r, p = y[:n] * L, y[n] * D_p
-                    Jr = prob.jacobian_r(r, p)
-                    lam = _eigen_at(prob, r, p, Jr)
-                    g.last = (y, lam)
-                    return f(lam, Jr)
-                try:
-                    stats["refinements"] += 1
-                    g0, g1 = f(a["lam"], a["Jr"]), f(b["lam"], b["Jr"])
-                    if g0 * g1 < 0:
-                        s = brentq(g, 0.0, sig_b, xtol=1e-12, rtol=1e-12, maxiter=100)
-                        # both sides of the root: a cavitated film is piecewise smooth, and
-                        # a change of its cavitated set can make the indicator jump through
-                        # zero instead of crossing it (no normal form there)
-                        d = 1e-9 * sig_b
-                        f_lo, f_hi = g(max(s - d, 0.0)), g(min(s + d, sig_b))
-                        g(s)
-                        y_at, lam_at = g.last
-                        p_est = float(y_at[n] * D_p)
-                        rec["refined"] = True
-                        ref = max(abs(g0), abs(g1))
-                        if min(abs(f_lo), abs(f_hi)) > 1e-6 * ref:
-                            rec["smooth"] = False
-                            rec["jump"] = (float(f_lo), float(f_hi))
-                            rec["message"] = (
-                                f"non-smooth: the indicator jumps from {f_lo:.4g} to "
-                                f"{f_hi:.4g} here (a change of a film's cavitated set; the "
-                                "linearisation on either side is not zero)")
-                except (RotordynError, ValueError) as exc:
-                    rec["message"] = f"not refined: {exc}"
-            if p_est is None:  # linear in the indicator between the two points
-                g0 = f(a["lam"], a["Jr"])
-                g1 = f(b["lam"], b["Jr"])
-                w = g0 / (g0 - g1) if np.isfinite(g0) and np.isfinite(g1) and g0 != g1 else 0.5
-                y_at = a["y"] + w * (b["y"] - a["y"])
-                p_est = float(y_at[n] * D_p)
-                lam_at = b["lam"]
-            rec["parameter"] = p_est
-            rec["r"] = y_at[:n] * L
-            if kind == "hopf":
-                up = lam_at[lam_at.imag > 0]  # the crossing pair: the k-th largest Re
-                up = up[np.argsort(-up.real, kind="stable")]
-                lam_c = complex(up[k - 1]) if up.size >= k else complex(np.nan, np.nan)
-                rec["eigenvalue"] = lam_c
-                rec["whirl_frequency_hz"] = float(lam_c.imag / (2 * np.pi))
-            else:
-                re = lam_at[lam_at.imag == 0].real
-                rec["eigenvalue"] = complex(re[np.argmin(np.abs(re))]) if re.size else \
-                    complex(np.nan)
-                rec["whirl_frequency_hz"] = 0.0
-            out.append(rec)
-    return tuple(out)
-
-
-def _eigen_at(prob, r, p, Jr):
-    """Eigenvalues of eq. 19 at (r, p) (a corrected point inside a refinement)."""
-    asm = prob._asm(p)
-    spd, _, _ = prob.operating(p)
-    w = hz_to_rad_s(spd)
-    m = asm.model
-    lin = asm.solver.linearize(r, np.zeros(prob.n), w)
-    M = np.asarray(m.mass_at(w) if m.has_table_mass() else m.M)
-    D = np.asarray(m.C) + w * np.asarray(m.G) + np.asarray(lin.DH)
-    K = np.asarray(m.K) + np.asarray(lin.KH)
-    n = M.shape[0]
-    Minv = np.linalg.inv(M)
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ K, -Minv @ D]])
-    return np.linalg.eigvals(A)

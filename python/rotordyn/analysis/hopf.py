@@ -158,18 +158,27 @@ def refined(system: System, factor: int = 2) -> System:
     return dataclasses.replace(system, bearings=tuple(out))
 
 
+GRID_CHECK_NO_EQUILIBRIUM = "grid_check: no equilibrium on the refined grid"
+GRID_CHECK_NO_PAIR = "grid_check: no complex eigenvalue pair on the refined grid"
+
+
 def _grid_checked(system, res, fixed, fd_step, fd_method):
-    """l1 of ``res`` again on the refined films (same point, same fd_step)."""
+    """l1 of ``res`` again on the refined films (same point, same fd_step). Without an
+    equilibrium or a complex pair there, the type is ``degenerate`` with l1_error = inf (the
+    sweep's hopf rows do the same: rotordyn.sweep.hopf_rows)."""
     import dataclasses
 
     fine = refined(system)
     spd, pc, ay = _operating(res.vary, res.value, fixed)
     lm = linearize(fine, spd, pc, ay)
     if lm.equilibrium.status not in CONVERGED:
-        return dataclasses.replace(res, type="degenerate", l1_error=math.inf, message=(
-            "grid_check: no equilibrium on the refined grid"))
+        return dataclasses.replace(res, type="degenerate", l1_error=math.inf,
+                                   message=GRID_CHECK_NO_EQUILIBRIUM)
     A = _jacobian(lm)
     lam = _critical_eigenvalue(A, res.whirl_frequency_hz)
+    if lam is None:
+        return dataclasses.replace(res, type="degenerate", l1_error=math.inf,
+                                   message=GRID_CHECK_NO_PAIR)
     core = lyapunov_at(assembled(fine), np.asarray(lm.equilibrium.r, float), spd, lm.M, A,
                        lam.imag, fd_step, fd_method)
     err = max(res.l1_error, abs(core["l1"] - res.l1))

@@ -28,6 +28,10 @@ def register(sub) -> None:
     s.add_argument("--fd-step", type=float, default=5e-2,
                    help="half-width of the film-force polynomial fits (scaled: fraction of "
                         "the clearance)")
+    s.add_argument("--grid-check", action="store_true",
+                   help="compute l1 again with every film grid refined twice (n_circ and "
+                        "n_axial x 2, the same point and fits): l1_refined, and a type that "
+                        "changes with the grid is degenerate (docs/nonlinear.md)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="write the leading-order bifurcation diagram")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -43,11 +47,12 @@ def _cmd_hopf(args) -> int:
                         tuple(args.bounds), at=args.at, speed_hz=args.speed_hz,
                         chamber_pressure_pa=args.chamber_pressure_pa,
                         config_ay_m=args.config_ay_m, n_scan=args.n_scan,
-                        fd_step=args.fd_step)
+                        fd_step=args.fd_step, grid_check=args.grid_check)
     if args.json:
         print(json_text({"status": res.status, "message": res.message, "vary": res.vary,
                          "value": res.value, "whirl_frequency_hz": res.whirl_frequency_hz,
                          "l1": res.l1, "l1_error": res.l1_error, "type": res.type,
+                         "grid_check": args.grid_check, "l1_refined": res.l1_refined,
                          "alpha_prime": res.alpha_prime, "stable_side": res.stable_side,
                          "cycle_side": res.cycle_side,
                          "amplitude_coefficient_m2": res.amplitude_coefficient}))

@@ -1,7 +1,8 @@
 """Nonlinear dynamics on the command line: ``periodic-orbit`` (a limit cycle or an
 unbalance-forced orbit by shooting or harmonic balance, with its Floquet multipliers) and
 ``continuation`` (its branch over p_c, speed or a_y by pseudo-arclength continuation, with
-shooting or harmonic-balance correctors; docs/nonlinear.md)."""
+shooting or harmonic-balance correctors, or with ``--start equilibrium`` the branch of static
+equilibria: :mod:`.branches`; docs/nonlinear.md)."""
 
 from __future__ import annotations
 
@@ -10,8 +11,9 @@ import numpy as np
 from rotordyn import analysis
 from rotordyn.analysis.continuation import CLI_NEWTON, DEFAULT_NEWTON
 from rotordyn._common import validate as v
+from rotordyn.cli import branches
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
-                                 check_figure, json_text, save_figure, table_text)
+                                 check_figure, json_text, out_dir, save_figure, table_text)
 from rotordyn.errors import InputError
 from rotordyn.model import builtin as models
 
@@ -30,18 +32,22 @@ def register(sub) -> None:
     s.set_defaults(func=_cmd_periodic_orbit)
 
     c = sub.add_parser("continuation",
-                       help="branch of limit cycles or forced orbits over p_c, speed or a_y "
-                            "by pseudo-arclength continuation, with stability and "
-                            "bifurcations")
+                       help="branch of limit cycles or forced orbits over p_c, speed or a_y, "
+                            "or of static equilibria (--start equilibrium) over those or a "
+                            "model field, by pseudo-arclength continuation, with stability "
+                            "and bifurcations")
     _orbit_arguments(c)
     c.add_argument("--vary", required=True,
-                   choices=["chamber_pressure_pa", "speed_hz", "config_ay_m"],
-                   help="the continued parameter (Pa, Hz, m)")
+                   help="the continued parameter: chamber_pressure_pa (Pa), speed_hz (Hz), "
+                        "config_ay_m (m); with --start equilibrium also a numeric model "
+                        "field path (SI unit of the field)")
     c.add_argument("--bounds", type=float, nargs=2, required=True, metavar=("LO", "HI"),
                    help="parameter range (unit of --vary); must contain the start's value")
-    c.add_argument("--ds", type=float, default=0.05,
-                   help="first arclength step (scaled: clearance, period, bounds' span)")
-    c.add_argument("--max-points", type=int, default=50, help="points on the branch")
+    c.add_argument("--ds", type=float, default=None,
+                   help="first arclength step (scaled: clearance, period, bounds' span; "
+                        "default 0.05 for orbits, 0.02 for equilibria)")
+    c.add_argument("--max-points", type=int, default=None,
+                   help="points on the branch (default 50 for orbits, 200 for equilibria)")
     c.add_argument("--direction", type=int, choices=[1, -1], default=1,
                    help="leave the start towards growing (1) or falling (-1) parameter")
     _hb_arguments(c, floquet=("samples", "flow"))
@@ -59,11 +65,17 @@ def register(sub) -> None:
                         "keeps the central difference), each point's monodromy screened "
                         "at 1e-4 and redone at --rtol where |mu_c| is within 0.005 of 1 "
                         "(docs/nonlinear.md)")
+    branches.add_arguments(c)
     c.add_argument("--plot", default=None, metavar="FIG",
-                   help="write the bifurcation diagram (amplitude against the parameter)")
+                   help="write the bifurcation diagram (orbits: amplitude, equilibria: "
+                        "eccentricity ratio against the parameter)")
     c.add_argument("--json", action="store_true", help=JSON_HELP)
     add_dpi(c)
-    c.set_defaults(func=_cmd_continuation)
+    # None: not given (orbit-only flags are refused with --start equilibrium; each start
+    # fills its own defaults: ORBIT_DEFAULTS, branches.EQ_DEFAULTS)
+    c.set_defaults(func=_cmd_continuation, kind=None, rtol=None, tol=None,
+                   disturbance_c=None, subharmonic=None, speed_hz=None,
+                   chamber_pressure_pa=None)
 
 
 def _orbit_arguments(s) -> None:
@@ -236,22 +248,48 @@ def _method_info(hb: dict, res, start) -> dict:
     return info
 
 
+#: the orbit branch's defaults of the flags ``continuation`` leaves at None
+ORBIT_DEFAULTS = {"kind": "autonomous", "rtol": 1e-8, "tol": 1e-6, "disturbance_c": 0.1,
+                  "subharmonic": 1, "speed_hz": 50.0, "chamber_pressure_pa": 0.0,
+                  "ds": 0.05, "max_points": 50, "newton": DEFAULT_NEWTON}
+ORBIT_VARY = ("chamber_pressure_pa", "speed_hz", "config_ay_m")
+
+
 def _cmd_continuation(args) -> int:
     check_figure(args.plot)
-    hb = _hb_options(args)
-    method = hb["method"]
-    if method == "harmonic_balance" and args.newton is not None:
+    v.bounds("--bounds", args.bounds)
+    if args.ds is not None:
+        v.positive("--ds", args.ds)
+    out = None
+    if args.out is not None:
+        out = out_dir("--out", args.out)  # before the solve
+        import matplotlib
+
+        matplotlib.use("Agg")  # the --out figure
+    if args.start == "equilibrium":
+        if args.method != "shooting":
+            raise InputError("--method: applies only to a branch of orbits (--start orbit)")
+        return branches.run_equilibrium(args, out)
+    branches.refuse(args, branches.EQUILIBRIUM_ONLY,
+                    "applies only to a branch of equilibria (--start equilibrium)")
+    if args.vary not in ORBIT_VARY:
+        raise InputError(f"--vary: a branch of orbits varies one of {', '.join(ORBIT_VARY)}, "
+                         f"got {args.vary!r} (a model field: --start equilibrium)")
+    if args.method == "harmonic_balance" and args.newton is not None:
         raise InputError("--newton: applies only to --method shooting (the correctors of "
                          "harmonic balance are Newton on the orbit's coefficients)")
+    for k, val in ORBIT_DEFAULTS.items():
+        if getattr(args, k) is None:
+            setattr(args, k, val)
+    hb = _hb_options(args)
+    method = hb["method"]
     if method != "harmonic_balance" and args.floquet_margin is not None:
         raise InputError("--floquet-margin: applies only to --method harmonic_balance")
     if args.floquet_margin is not None:
         v.in_range("--floquet-margin", args.floquet_margin, 0.0, 0.5)
-    newton = args.newton or DEFAULT_NEWTON
+    newton = args.newton
     s = models.load(args.model)
     ub = _unbalances(args.unbalance)
-    v.bounds("--bounds", args.bounds)
-    v.positive("--ds", args.ds)
     start = _settled_start(args, s, ub)
     if start is False:
         return 1
@@ -270,26 +308,35 @@ def _cmd_continuation(args) -> int:
                "floquet": hb["floquet"], "floquet_margin": args.floquet_margin}
     else:
         how = {"newton": newton}
-    br = analysis.continuation(s, args.vary, tuple(args.bounds), orbit, unbalances=ub,
-                               ds=args.ds, ds_max=max(0.2, args.ds), max_points=args.max_points,
-                               direction=args.direction, rtol=args.rtol, tol=args.tol, **how)
+    steps = {"ds_max": max(0.2, args.ds) if args.ds_max is None else args.ds_max}
+    if args.ds_min is not None:
+        steps["ds_min"] = args.ds_min
+    try:
+        br = analysis.continuation(s, args.vary, tuple(args.bounds), orbit, unbalances=ub,
+                                   ds=args.ds, max_points=args.max_points,
+                                   direction=args.direction, param_scale=args.param_scale,
+                                   rtol=args.rtol, tol=args.tol, **how, **steps)
+    except InputError as exc:
+        raise branches.flagged(exc) from None
     info = {"method": method}
     if method == "harmonic_balance":
         info.update(harmonics=br.stats["harmonics"], time_points=br.stats["time_points"],
                     floquet=br.stats["floquet"], floquet_margin=br.stats["floquet_margin"])
     routes = [o.stats.get("floquet", "flow") for o in br.orbits]
+    record = {
+        "status": br.status, "stop": br.stop, "message": br.message, "start": "orbit",
+        "vary": br.vary, "kind": br.kind, **info,
+        "newton": newton if method == "shooting" else None, "parameter": br.parameter,
+        "amplitude_m": br.amplitude_m, "period_s": br.period_s,
+        "max_multiplier": br.max_multiplier, "stable": br.stable,
+        "critical_type": list(br.critical_type), "floquet_route": routes,
+        "bifurcations": [{"kind": b["kind"], "index": b["index"],
+                          "parameter": b["parameter"]} for b in br.bifurcations],
+        "stats": br.stats,
+    }
+    branches.write_outputs(br, record, args, out)  # before stdout (a closed pipe ends it)
     if args.json:
-        print(json_text({
-            "status": br.status, "stop": br.stop, "message": br.message, "vary": br.vary,
-            "kind": br.kind, **info, "newton": newton if method == "shooting" else None,
-            "parameter": br.parameter, "amplitude_m": br.amplitude_m,
-            "period_s": br.period_s, "max_multiplier": br.max_multiplier,
-            "stable": br.stable, "critical_type": list(br.critical_type),
-            "floquet_route": routes,
-            "bifurcations": [{"kind": b["kind"], "index": b["index"],
-                              "parameter": b["parameter"]} for b in br.bifurcations],
-            "stats": br.stats,
-        }))
+        print(json_text(record))
     else:
         print(repr(br))
         settings = ", ".join(f"{k} = {x}" for k, x in info.items() if k != "method")
@@ -300,6 +347,4 @@ def _cmd_continuation(args) -> int:
         if method == "harmonic_balance":
             df = df.assign(floquet=np.repeat(routes, len(br.bearing_names)))
         print(table_text(df))
-    if args.plot and len(br):
-        save_figure(br.plot(), args.plot, args.dpi)
     return 0 if br.ok else 1

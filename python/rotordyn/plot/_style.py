@@ -109,9 +109,17 @@ def stability_segments(ax, x, y, stable, what: str) -> list:
     ("stable <what>", "unstable <what>")."""
     from matplotlib.lines import Line2D
 
-    for i in range(len(x) - 1):
-        st = bool(stable[i] and stable[i + 1])
-        ax.plot(x[i:i + 2], y[i:i + 2], "-" if st else "--", color="tab:blue", lw=1.2)
+    # one polyline per run of segments with the same style: a dashed line drawn segment by
+    # segment restarts its pattern at every point, and closely spaced points (a branch near
+    # a fold) looked solid
+    seg = [bool(stable[i] and stable[i + 1]) for i in range(len(x) - 1)]
+    i = 0
+    while i < len(seg):
+        j = i
+        while j + 1 < len(seg) and seg[j + 1] == seg[i]:
+            j += 1
+        ax.plot(x[i:j + 2], y[i:j + 2], "-" if seg[i] else "--", color="tab:blue", lw=1.2)
+        i = j + 1
     return [Line2D([], [], color="tab:blue", ls="-", label=f"stable {what}"),
             Line2D([], [], color="tab:blue", ls="--", label=f"unstable {what}")]
 

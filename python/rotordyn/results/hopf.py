@@ -106,7 +106,10 @@ class HopfResult(Display):
                    if self.type != "degenerate" else
                    f"cycles {self.cycle_side} by l1's sign, their side and stability not "
                    "resolved")
-                + (f", amplitude at 1 % from the point: {amp}" if amp else "") + ">")
+                + (f", amplitude at 1 % from the point: {amp}" if amp else "")
+                + (f"; grid check: l1 = {self.l1_refined:.4g} on the refined films"
+                   if math.isfinite(self.l1_refined) else "")
+                + (f"; {self.message}" if self.message else "") + ">")
 
     def to_frame(self) -> pd.DataFrame:
         import pandas as pd
@@ -115,8 +118,9 @@ class HopfResult(Display):
             row = {self.vary: self.value, **{k: val for k, val in self.fixed.items()
                                              if val is not None},
                    "bearing": name, "whirl_frequency_hz": self.whirl_frequency_hz,
-                   "l1": self.l1, "l1_error": self.l1_error, "type": self.type,
-                   "alpha_prime": self.alpha_prime, "stable_side": self.stable_side,
+                   "l1": self.l1, "l1_error": self.l1_error, "l1_refined": self.l1_refined,
+                   "type": self.type, "alpha_prime": self.alpha_prime,
+                   "stable_side": self.stable_side,
                    "cycle_side": self.cycle_side,
                    "amplitude_coefficient_m2": (float(self.amplitude_coefficient[i])
                                                 if self.ok else math.nan),

@@ -49,19 +49,22 @@ class Variants:
         self.model_toml = model_toml
         self.cache = {}
 
-    def get(self, p: dict):
-        key = tuple((k, val) for k, val in p.items() if "." in k and not k.startswith("options.")
-                    or k == "gravity_m_s2")
+    @staticmethod
+    def _key(p: dict) -> tuple:
+        return tuple((k, val) for k, val in p.items() if "." in k and not k.startswith(
+            "options.") or k == "gravity_m_s2")
+
+    def _fresh(self, key, build):
+        """This chunk's copy of the process-wide assembled model ``key`` (built by
+        ``build()`` once per process), with a solver of its own."""
         hit = self.cache.get(key)
         if hit is None:
             proto = _ASM.get((self.model_toml, key))
             if proto is None:
-                s = self.base
-                for k, val in key:
-                    s = set_field(s, k, val)
+                proto = build()
                 if len(_ASM) > 8:
                     _ASM.clear()
-                proto = _ASM[(self.model_toml, key)] = Assembled(s)
+                _ASM[(self.model_toml, key)] = proto
             hit = copy.copy(proto)
             hit.solver = _core.SystemSolver(proto.model)
             hit.last_r = None
@@ -71,6 +74,26 @@ class Variants:
                 self.cache.clear()
             self.cache[key] = hit
         return hit
+
+    def get(self, p: dict):
+        key = self._key(p)
+
+        def build():
+            s = self.base
+            for k, val in key:
+                s = set_field(s, k, val)
+            return Assembled(s)
+
+        return self._fresh(key, build)
+
+    def refined(self, p: dict):
+        """The model of ``p`` with every film grid refined twice (n_circ, n_axial × 2:
+        :func:`rotordyn.analysis.hopf.refined`, the ``hopf`` analysis's ``grid_check``),
+        with a solver of its own built fresh for this chunk."""
+        from rotordyn.analysis.hopf import refined
+
+        return self._fresh(("refined",) + self._key(p),
+                           lambda: Assembled(refined(self.get(p).system)))
 
 
 def point_options(job, p: dict) -> dict:

@@ -40,6 +40,7 @@ UNITS = {
     "value": ("axis units", "threshold value of the varied axis"),
     "whirl_frequency_hz": ("Hz", "whirl frequency at the threshold"),
     "l1": ("1/s", "first Lyapunov coefficient at the crossing (scaled coordinates)"),
+    "l1_refined": ("1/s", "l1 on every film grid refined twice (options.grid_check)"),
     "alpha_prime": ("1/s per axis unit", "dRe λ/d(vary) at the crossing"),
     "amplitude_coefficient_m2": ("m² per axis unit",
                                  "leading-order cycle amplitude² per distance from the crossing"),

@@ -147,7 +147,9 @@ OPTIONS = {
                "samples_per_revolution": _opt_int(8, 4096), "rtol": _opt_range(0.0, 1e-2),
                "rub_fraction": _opt_range(0.0, 0.999, lo_open=False)},
 }
-OPTIONS["hopf"] = {**OPTIONS["threshold"], "fd_step": _opt_range(0.0, 0.5)}
+OPTIONS["hopf"] = {**OPTIONS["threshold"], "fd_step": _opt_range(0.0, 0.5),
+                   # l1 again on every film grid refined twice (rotordyn.hopf's grid_check)
+                   "grid_check": _opt_bool}
 REQUIRED = {"threshold": ("vary",), "hopf": ("vary",), "boundary": ("x", "y", "resolution"),
             "unbalance": ("unbalances",), "waterfall": ("unbalances",),
             "run-up": ("unbalances", "start_hz", "stop_hz", "rate_hz_per_s")}

@@ -64,7 +64,8 @@ OUTPUTS = {
 }
 OUTPUTS["campbell"] = OUTPUTS["stability"]
 OUTPUTS["hopf"] = {**OUTPUTS["threshold"], "l1": F64, "l1_error": F64, "hopf_type": STR,
-                   "alpha_prime": F64, "amplitude_coefficient_m2": F64}
+                   "alpha_prime": F64, "amplitude_coefficient_m2": F64,
+                   "l1_refined": F64}  # options.grid_check (NaN: not checked)
 OUTPUTS["robust"] = robust_outputs(F64, BOOL, _cat)
 OUTPUTS["limit_cycle"] = {"record": _cat(["hopf", "cycle"]), **OUTPUTS["hopf"],
                           "cycle": I64, "bearing": STR, "amplitude_m": F64, "amplitude_c": F64,
