@@ -144,13 +144,19 @@ def test_a_field_that_does_not_act_on_the_model_is_refused(compressor, capsys, t
 
 
 def test_cli_orbit_start_refuses_equilibrium_flags_and_fields(compressor, capsys):
-    """The orbit branch (the default --start) takes p_c, speed or a_y only and not the
-    equilibrium's --no-refine: exit 2 naming the flag before the start orbit is solved."""
+    """The orbit branch (the default --start) by shooting takes p_c, speed or a_y only (a
+    model field: harmonic-balance correctors) and not the equilibrium's --no-refine: exit 2
+    naming the flag before the start orbit is solved."""
     _, model = compressor
     assert main(["continuation", model, "--vary", "bearings.0.clearance_m", "--bounds",
                  "6e-5", "1e-4"]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("rotordyn: error: --vary:") and "--start equilibrium" in err
+    assert err.startswith("rotordyn: error: --method:") and "bearings.0.clearance_m" in err
+    assert "--method harmonic_balance" in err
+    assert main(["continuation", model, "--vary", "bearings.0.clearence_m", "--bounds",
+                 "6e-5", "1e-4", "--method", "harmonic_balance"]) == 2
+    assert capsys.readouterr().err.startswith("rotordyn: error: --vary: unknown parameter "
+                                              "'bearings.0.clearence_m'")
     assert main(["continuation", model, "--vary", "speed_hz", "--bounds", "100", "150",
                  "--no-refine"]) == 2
     assert capsys.readouterr().err.startswith("rotordyn: error: --no-refine:")

@@ -345,71 +345,15 @@ HbContinuationStep hb_continuation_step(SystemSolver& solver, const HbContinuati
     finish();
     return out;
   }
-  const double hmax = hb.harmonic_amplitudes.tail(H).maxCoeff();
-  if (autonomous && hmax < std::max(100 * ho.tol, 1e-4)) {
-    std::ostringstream os;
-    os << "the branch reached an equilibrium (the orbit's harmonics are " << hmax
-       << " of the length scale): the cycle has shrunk to a Hopf point";
-    o.status = "not_converged";
-    o.message = os.str();
+  hb_detail::PointFloquet pf;
+  const bool done = hb_detail::finish_point(o, Z, w, L, cur->in, cur->F, m, e, ho,
+                                            opt.floquet_margin, pf);
+  out.floquet_route = pf.route;
+  out.sample_critical_modulus = pf.sample_critical_modulus;
+  out.sample_trivial_error = pf.sample_trivial_error;
+  if (!done) {
     finish();
     return out;
-  }
-  if (!hb_detail::fill_orbit(o, Z, w, c.base.t0, c.base.n_out)) {
-    o.status = "error";
-    o.message = "non-finite harmonic-balance orbit";
-    finish();
-    return out;
-  }
-  // Floquet multipliers: from the samples' linearisations, recomputed by one sensitivity flow
-  // where the verdict is not safe at the samples' accuracy: |μ_c| within the margin of 1, or
-  // the trivial multiplier off 1 by more than half the margin (measured on the rig and the
-  // compressor's whip cycles: the samples' |μ_c| within 1.5 × their trivial error of the
-  // flow's at all but one point, and within 1.4e-3 there).
-  const double T = o.period;
-  const double srtol = ho.sensitivity_rtol > 0 ? ho.sensitivity_rtol : ho.cvode.rtol;
-  out.sample_critical_modulus = out.sample_trivial_error = std::numeric_limits<double>::quiet_NaN();
-  // (floquet = flow: the samples' multipliers are computed as well, for the record: a few
-  // milliseconds of dense algebra.)
-  bool flow = ho.floquet == HbFloquet::flow;
-  if (ho.floquet != HbFloquet::none) {
-    o.monodromy = hb_detail::sample_monodromy(cur->F, m, e, T, ho.magnus_substeps);
-    o.monodromy_rtol = 0.0;
-    out.floquet_route = "samples";
-    if (!o.monodromy.allFinite()) {
-      flow = true;  // the samples gave nothing usable: the flow decides
-    } else {
-      o.floquet = floquet(o.monodromy, autonomous);
-      const Floquet& fq = o.floquet;
-      out.sample_critical_modulus = fq.critical >= 0 ? fq.critical_modulus : 0.0;
-      out.sample_trivial_error =
-          fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
-      const double mg = opt.floquet_margin;
-      flow = flow || (mg > 0 && (fq.critical < 0 || std::abs(fq.critical_modulus - 1.0) < mg ||
-                                 out.sample_trivial_error > 0.5 * mg));
-    }
-  }
-  if (flow) {
-    if (!hb_detail::flow_monodromy(cur->F, o, c.base.t0, T, ho.cvode, srtol)) {
-      o.monodromy.resize(0, 0);
-      o.floquet = Floquet();
-      finish();
-      return out;
-    }
-    out.floquet_route = "flow";
-  }
-  if (ho.floquet == HbFloquet::none) {
-    out.floquet_route = "none";
-  } else {
-    if (!o.monodromy.allFinite()) {
-      o.status = "error";
-      o.message = "non-finite monodromy matrix";
-      o.monodromy.resize(0, 0);
-      o.floquet = Floquet();
-      finish();
-      return out;
-    }
-    o.floquet = floquet(o.monodromy, autonomous);
   }
   // Tangent: the null vector of the rows (R̃, phase) in the unknowns, bordered by the previous
   // tangent (first point: by e_p), oriented along it (first point: p growing with direction).

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "rotordyn/errors.hpp"
 
@@ -278,6 +279,75 @@ bool flow_monodromy(shooting_detail::Flow& F, PeriodicOrbitResult& o, double t0,
   }
   o.monodromy = run.Phi;
   o.monodromy_rtol = srtol;
+  return true;
+}
+
+bool finish_point(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, double L,
+                  const PeriodicInput& in, shooting_detail::Flow& F, const SystemModel& m,
+                  const Eval& e, const HarmonicBalanceOptions& ho, double margin,
+                  PointFloquet& pf) {
+  const int H = static_cast<int>((Z.rows() - 1) / 2);
+  const bool autonomous = in.kind == OrbitKind::autonomous;
+  const double hmax = harmonic_amplitudes(Z, L).tail(H).maxCoeff();
+  if (autonomous && hmax < std::max(100 * ho.tol, 1e-4)) {
+    std::ostringstream os;
+    os << "the branch reached an equilibrium (the orbit's harmonics are " << hmax
+       << " of the length scale): the cycle has shrunk to a Hopf point";
+    o.status = "not_converged";
+    o.message = os.str();
+    return false;
+  }
+  if (!fill_orbit(o, Z, w, in.t0, in.n_out)) {
+    o.status = "error";
+    o.message = "non-finite harmonic-balance orbit";
+    return false;
+  }
+  // Floquet multipliers: from the samples' linearisations, recomputed by one sensitivity flow
+  // where the verdict is not safe at the samples' accuracy: |μ_c| within the margin of 1, or
+  // the trivial multiplier off 1 by more than half the margin (measured on the rig and the
+  // compressor's whip cycles: the samples' |μ_c| within 1.5 × their trivial error of the
+  // flow's at all but one point, and within 1.4e-3 there).
+  const double T = o.period;
+  const double srtol = ho.sensitivity_rtol > 0 ? ho.sensitivity_rtol : ho.cvode.rtol;
+  pf.sample_critical_modulus = pf.sample_trivial_error = std::numeric_limits<double>::quiet_NaN();
+  // (floquet = flow: the samples' multipliers are computed as well, for the record: a few
+  // milliseconds of dense algebra.)
+  bool flow = ho.floquet == HbFloquet::flow;
+  if (ho.floquet != HbFloquet::none) {
+    o.monodromy = sample_monodromy(F, m, e, T, ho.magnus_substeps);
+    o.monodromy_rtol = 0.0;
+    pf.route = "samples";
+    if (!o.monodromy.allFinite()) {
+      flow = true;  // the samples gave nothing usable: the flow decides
+    } else {
+      o.floquet = floquet(o.monodromy, autonomous);
+      const Floquet& fq = o.floquet;
+      pf.sample_critical_modulus = fq.critical >= 0 ? fq.critical_modulus : 0.0;
+      pf.sample_trivial_error = fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
+      flow = flow || (margin > 0 && (fq.critical < 0 || std::abs(fq.critical_modulus - 1.0) < margin ||
+                                     pf.sample_trivial_error > 0.5 * margin));
+    }
+  }
+  if (flow) {
+    if (!flow_monodromy(F, o, in.t0, T, ho.cvode, srtol)) {
+      o.monodromy.resize(0, 0);
+      o.floquet = Floquet();
+      return false;
+    }
+    pf.route = "flow";
+  }
+  if (ho.floquet == HbFloquet::none) {
+    pf.route = "none";
+    return true;
+  }
+  if (!o.monodromy.allFinite()) {
+    o.status = "error";
+    o.message = "non-finite monodromy matrix";
+    o.monodromy.resize(0, 0);
+    o.floquet = Floquet();
+    return false;
+  }
+  o.floquet = floquet(o.monodromy, autonomous);
   return true;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "rotordyn/harmonic_balance.hpp"
 #include "rotordyn/periodic.hpp"
 #include "shooting_detail.hpp"
 
@@ -75,5 +76,24 @@ Eigen::MatrixXd sample_monodromy(const shooting_detail::Flow& F, const SystemMod
 /// flow's counters). false with o.status / o.message set when the flow fails.
 bool flow_monodromy(shooting_detail::Flow& F, PeriodicOrbitResult& o, double t0, double T,
                     const CvodeOptions& cvode, double srtol);
+
+/// Where a converged point's multipliers came from: "samples", "flow" or "none", and the
+/// samples' |μ_c| and |μ_trivial − 1| (NaN when not computed; 0 when there is none).
+struct PointFloquet {
+  std::string route;
+  double sample_critical_modulus = 0.0, sample_trivial_error = 0.0;
+};
+
+/// The end of a converged corrector at (Z, ω) (a branch point: hb_continuation.cpp and
+/// hb_field.cpp): an autonomous orbit whose harmonics are all below max(100 tol, 1e-4) L is
+/// refused (the branch reached an equilibrium), the orbit's samples into o (fill_orbit), and
+/// its Floquet multipliers — from the samples' linearisations of `e` (an evaluation with the
+/// Jacobian at Z, ω), recomputed by one CVODES sensitivity flow at sensitivity_rtol where
+/// | |μ_c| − 1 | < margin or |μ_trivial − 1| > margin / 2 (margin 0: never), or by the flow
+/// for floquet = flow. false with o.status / o.message set on a failure.
+bool finish_point(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, double L,
+                  const PeriodicInput& in, shooting_detail::Flow& F, const SystemModel& m,
+                  const Eval& e, const HarmonicBalanceOptions& ho, double margin,
+                  PointFloquet& pf);
 
 }  // namespace rotordyn::hb_detail

@@ -185,6 +185,10 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         sensitivity_rtol = v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
     newton = v.choice("newton", newton, NEWTON_MODES)
     method = v.choice("method", method, METHODS)
+    if setup.field is not None and method != "harmonic_balance":
+        raise InputError(f"method: a branch over the model field {setup.vary} has "
+                         "harmonic-balance correctors only (method='harmonic_balance'; the "
+                         "shooting corrector varies p_c, the speed or a_y inside the core)")
     if method == "harmonic_balance":
         if newton != DEFAULT_NEWTON:
             raise InputError(f"newton: applies only to method='shooting' (the correctors of "

@@ -25,42 +25,17 @@ import numpy as np
 from rotordyn._common import validate as v
 from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import Assembled, assembled, check_operating_parameter
+from rotordyn.analysis.assembly import Assembled, assembled
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn.analysis.equilibrium_events import bifurcations
+from rotordyn.analysis.field_axis import (OPERATING, FieldSystems, check_acts, field_parameter,
+                                          field_value)
 from rotordyn.analysis.linear import FD_REL_STEP, _linear_from
 from rotordyn.errors import InputError, RotordynError
-from rotordyn.model.paths import get_field, set_field
 from rotordyn.model.system import System
 from rotordyn.results.equilibrium import EquilibriumResult
 from rotordyn.results.equilibrium_branch import EquilibriumBranchResult
 from rotordyn.units import hz_to_rad_s
-
-OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m")
-
-
-def _parameter(system: System, vary) -> str:
-    """``vary`` checked: an operating variable or a numeric model field path."""
-    if not isinstance(vary, str) or not vary:
-        raise InputError(f"vary: expected one of {', '.join(OPERATING)} or a model field path "
-                         f"(e.g. bearings.0.clearance_m), got {vary!r}")
-    if vary in OPERATING:
-        check_operating_parameter(system, vary)
-        return vary
-    if "." not in vary and not hasattr(system, vary):
-        raise InputError(f"vary: unknown parameter {vary!r}: expected one of "
-                         f"{', '.join(OPERATING)} or a model field path such as "
-                         "bearings.0.clearance_m or bearings.*.viscosity_pa_s")
-    try:
-        vals = get_field(system, vary)
-        set_field(system, vary, float(vals[0]) if vals else 0.0, where="vary")
-    except InputError as exc:
-        raise InputError(f"vary: unknown parameter {vary!r} ({exc})") from None
-    except (AttributeError, IndexError, TypeError, ValueError) as exc:
-        raise InputError(f"vary: unknown parameter {vary!r}: not a model field path "
-                         f"({exc})") from None
-    return vary
-
 
 class _Problem:
     """The residual of eq. 14 and its derivatives at (r, p)."""
@@ -70,7 +45,7 @@ class _Problem:
         self.op = {"speed_hz": speed_hz, "chamber_pressure_pa": pc, "config_ay_m": ay}
         self.asm0 = assembled(system)
         self.n = self.asm0.n
-        self._cache: dict = {}
+        self.fields = None if vary in OPERATING else FieldSystems(system, vary, self.n)
         if vary == "config_ay_m":
             self.a_base = self.asm0.config_vector(0.0)
             self.a_dir = self.asm0.config_vector(1.0) - self.a_base
@@ -82,23 +57,10 @@ class _Problem:
         return op["speed_hz"], op["chamber_pressure_pa"], op["config_ay_m"]
 
     def system_at(self, p) -> System:
-        return self.system if self.vary in OPERATING else set_field(self.system, self.vary,
-                                                                    float(p), where="vary")
+        return self.system if self.vary in OPERATING else self.fields.system_at(p)
 
     def _asm(self, p) -> Assembled:
-        if self.vary in OPERATING:
-            return self.asm0
-        key = float(p)
-        hit = self._cache.get(key)
-        if hit is None:
-            hit = Assembled(self.system_at(p))
-            if hit.n != self.n:
-                raise InputError(f"vary: {self.vary} changes the number of coordinates "
-                                 f"({self.n} → {hit.n}); only fields that keep them can vary")
-            if len(self._cache) >= 6:
-                self._cache.pop(next(iter(self._cache)))
-            self._cache[key] = hit
-        return hit
+        return self.asm0 if self.vary in OPERATING else self.fields.at(p)
 
     def _parts(self, p):
         asm = self._asm(p)
@@ -138,23 +100,18 @@ class _Problem:
 
 def _check_acts(prob, r, lo, hi) -> None:
     """InputError naming ``vary`` when the model field changes nothing of eq. 14 and eq. 19
-    between the bounds: the assembled M, C, G, K, loads, configuration, and the film forces
-    and their linearisation at the start's state ``r`` are the same at ``lo`` and ``hi`` (a
-    field read only by reports or drawings, e.g. a disk's diameter when its mass is given:
-    the branch would be one point repeated)."""
+    between the bounds (:func:`rotordyn.analysis.field_axis.check_acts`): the assembled M,
+    C, G, K, loads, configuration, and the film forces and their linearisation at the start's
+    state ``r``."""
     def snapshot(p):
         asm, w, pc, a, K, Q, ch = prob._parts(p)
         m = asm.model
         z = np.zeros(prob.n)
         lin = asm.solver.linearize(r, z, w)
         M = m.mass_at(w) if m.has_table_mass() else m.M
-        return [np.asarray(x, dtype=float) for x in (
-            M, m.C, m.G, K, Q, ch, a, asm.solver.film_forces(r, z, w), lin.KH, lin.DH)]
+        return (M, m.C, m.G, K, Q, ch, a, asm.solver.film_forces(r, z, w), lin.KH, lin.DH)
 
-    if all(np.array_equal(x, y) for x, y in zip(snapshot(lo), snapshot(hi))):
-        raise InputError(f"vary: {prob.vary} does not act on the model: the matrices, loads "
-                         f"and film forces are the same at {lo:g} and {hi:g} (a field of "
-                         "reports or drawings only); vary a field of the equations of motion")
+    check_acts(prob.vary, lo, hi, snapshot)
 
 
 def _eigen(lm):
@@ -216,7 +173,7 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
         branch ended (``bound``, ``max_points``, ``step_min``, or the status of a failed
         equilibrium at the corrected point: ``no_equilibrium``, ``not_converged``).
     """
-    vary = _parameter(system, vary)
+    vary = field_parameter(system, vary)
     lo, hi = v.bounds("bounds", bounds)
     if vary == "chamber_pressure_pa" and lo < 0:
         raise InputError(f"bounds: chamber_pressure_pa must be >= 0, got ({lo:g}, {hi:g})")
@@ -270,11 +227,7 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
             p0 = op["config_ay_m"] = float(asm0.config_vector()[[bc.jy for bc in
                                                                  asm0.bearings][0]])
     else:
-        vals = get_field(system, vary)
-        if not vals or any(float(x) != float(vals[0]) for x in vals):
-            raise InputError(f"vary: {vary} selects fields with different values {vals}; "
-                             "a branch varies one value")
-        p0 = float(vals[0])
+        p0 = field_value(system, vary)
     if not lo <= p0 <= hi:
         raise InputError(f"bounds: ({lo:g}, {hi:g}) must contain the start's {vary} = {p0:g}")
 

@@ -17,6 +17,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.analysis import harmonic_balance as hbal
+from rotordyn.analysis.hb_field import FieldCorrector
 from rotordyn.analysis.orbit_branch import PARAM, BranchSetup, assemble, hopf_estimate
 from rotordyn.analysis.periodic import periodic_orbit
 from rotordyn.errors import InputError
@@ -116,7 +117,8 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
 
     inp = _core.HbContinuationInput()
     inp.base = setup.base
-    inp.parameter = getattr(_core.ContinuationParameter, PARAM[setup.vary])
+    if setup.field is None:
+        inp.parameter = getattr(_core.ContinuationParameter, PARAM[setup.vary])
     if setup.config_direction is not None:
         inp.config_direction = setup.config_direction
     inp.subharmonic = setup.subharmonic
@@ -151,6 +153,10 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
         inp.tangent = tangent
         inp.ds = float(step_ds)
         return _core.hb_continuation_step(asm.solver, inp, opt)
+
+    if setup.field is not None:  # a model field: the system re-assembled at every value
+        ho.length_scale = L
+        correct = FieldCorrector(setup, ho, opt, scale, fd_step, direction)
 
     stats = {"method": "harmonic_balance", "harmonics": h_, "time_points": int(m_hb),
              "floquet": floquet, "floquet_margin": float(margin), "correctors": 0,
@@ -232,6 +238,8 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
         arcl.append(arcl[-1] + h)
         if o_core.iterations <= 3:  # a quick corrector lets the step grow
             h = min(h * 1.5, ds_max)
+    if setup.field is not None:
+        stats["assemblies"] = setup.field.assemblies
     br = assemble(setup.vary, kind, orbits, tangents, arcl, setup.bcs, (lo, hi), stop,
                   message, stats)
     if hopf is not None:

@@ -12,12 +12,14 @@ import numpy as np
 
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import assembled, check_operating_parameter
+from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.field_axis import field_parameter
 from rotordyn.analysis.linear import linearize
 from rotordyn.analysis.lyapunov import central_second, central_third, first_lyapunov, \
     fitted_derivatives, hopf_vectors
 from rotordyn.analysis.threshold import PARAMETERS, threshold
 from rotordyn.errors import InputError, RotordynError
+from rotordyn.model.paths import set_field
 from rotordyn.model.system import System
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn.results.hopf import HopfResult
@@ -33,8 +35,16 @@ FD_METHODS = ("fit", "central")
 
 def _operating(vary, value, fixed):
     p = dict(fixed)
-    p[vary] = float(value)
+    if vary in PARAMETERS:
+        p[vary] = float(value)
     return p["speed_hz"], p["chamber_pressure_pa"], p["config_ay_m"]
+
+
+def _system_at(system: System, vary: str, value) -> System:
+    """``system`` with the model field ``vary`` at ``value`` (an operating variable: as is)."""
+    if vary in PARAMETERS:
+        return system
+    return set_field(system, vary, float(value), where="vary")
 
 
 def _jacobian(lm) -> np.ndarray:
@@ -69,6 +79,11 @@ def hopf(system: System, vary: str = "chamber_pressure_pa", *, bounds=None, at=N
          grid_check: bool = False) -> HopfResult:
     """Hopf point on the stability boundary in ``vary`` and its first Lyapunov coefficient.
 
+    ``vary``: an operating variable (``chamber_pressure_pa``, ``config_ay_m``, ``speed_hz``)
+    or a numeric model field path (e.g. ``"bearings.*.clearance_m"``): then the system is
+    re-assembled with the field at each value (the crossing, α', l1 on that system), and
+    ``speed_hz``, ``chamber_pressure_pa``, ``config_ay_m`` are the fixed operating point.
+
     The crossing: :func:`rotordyn.threshold` in ``bounds`` (its first crossing), or ``at``
     (a value of ``vary`` already on the boundary, e.g. a boundary sweep's row). At the
     crossing: the equilibrium, the Jacobian A of eq. 12 in first-order form (perturbation-
@@ -93,8 +108,7 @@ def hopf(system: System, vary: str = "chamber_pressure_pa", *, bounds=None, at=N
     hysteresis), ``degenerate`` (|l1| < 3 ``l1_error``: the sign is not resolved).
     A failure is a status (``no_crossing``, ``no_equilibrium``, ``error``) with a message.
     """
-    v.choice("vary", vary, PARAMETERS)
-    check_operating_parameter(system, vary)
+    vary = field_parameter(system, vary)
     fixed = {"speed_hz": v.speed("speed_hz", speed_hz),
              "chamber_pressure_pa": v.non_negative("chamber_pressure_pa", chamber_pressure_pa),
              "config_ay_m": None if config_ay_m is None else v.finite("config_ay_m",
@@ -109,7 +123,7 @@ def hopf(system: System, vary: str = "chamber_pressure_pa", *, bounds=None, at=N
     if not asm.bearings:
         raise InputError("system: a Hopf analysis needs at least one fluid-film bearing "
                          "(the nonlinearity of eq. 12 is in the films)")
-    fixed_out = {k: val for k, val in fixed.items() if k != vary}
+    fixed_out = {k: val for k, val in fixed.items() if k != vary}  # (a field: all three)
     base = dict(vary=vary, fixed=fixed_out, fd_step=float(fd_step),
                 bearing_names=tuple(bc.name for bc in asm.bearings),
                 clearance_m=np.array([bc.clearance_m for bc in asm.bearings]))
@@ -126,7 +140,7 @@ def hopf(system: System, vary: str = "chamber_pressure_pa", *, bounds=None, at=N
             raise InputError(f"at: chamber_pressure_pa must be >= 0, got {at!r}")
         whirl, span, stable_side = math.nan, 0.0, ""
     try:
-        res = _hopf_at(system, asm, vary, value, whirl, span, stable_side, fixed, fd_step,
+        res = _hopf_at(system, vary, value, whirl, span, stable_side, fixed, fd_step,
                        fd_method, param_step, base)
         if grid_check and res.ok:
             res = _grid_checked(system, res, fixed, fd_step, fd_method)
@@ -168,7 +182,7 @@ def _grid_checked(system, res, fixed, fd_step, fd_method):
     sweep's hopf rows do the same: rotordyn.sweep.hopf_rows)."""
     import dataclasses
 
-    fine = refined(system)
+    fine = refined(_system_at(system, res.vary, res.value))
     spd, pc, ay = _operating(res.vary, res.value, fixed)
     lm = linearize(fine, spd, pc, ay)
     if lm.equilibrium.status not in CONVERGED:
@@ -236,10 +250,14 @@ def lyapunov_at(asm, r, speed_hz: float, M, A, omega: float, fd_step: float = FD
             "velocity_scale": float(ws)}
 
 
-def _hopf_at(system, asm, vary, value, whirl, span, stable_side, fixed, fd_step, fd_method,
+def _hopf_at(system, vary, value, whirl, span, stable_side, fixed, fd_step, fd_method,
              param_step, base):
     spd, pc, ay = _operating(vary, value, fixed)
-    lm = linearize(system, spd, pc, ay)
+    sys_v = _system_at(system, vary, value)
+    if sys_v is not system:  # a model field: the clearances at the Hopf point's value
+        base = {**base, "clearance_m": np.array([bc.clearance_m
+                                                 for bc in assembled(sys_v).bearings])}
+    lm = linearize(sys_v, spd, pc, ay)
     e = lm.equilibrium
     if e.status not in CONVERGED:
         return HopfResult.failed("no_equilibrium", f"{e.status}: {e.message}", value=value,
@@ -263,14 +281,15 @@ def _hopf_at(system, asm, vary, value, whirl, span, stable_side, fixed, fd_step,
         p2 = value + s * dp
         if vary == "chamber_pressure_pa" and p2 < 0:
             p2 = value  # one-sided at p_c = 0
-        lm2 = linearize(system, *_operating(vary, p2, fixed))
+        lm2 = linearize(_system_at(system, vary, p2), *_operating(vary, p2, fixed))
         if lm2.equilibrium.status not in CONVERGED:
             return HopfResult.failed("no_equilibrium", f"at {vary} = {p2:g}: "
                                      f"{lm2.equilibrium.message}", value=value, **base)
         re.append((p2, _eig_near(_jacobian(lm2), lam0).real))
     alpha_p = (re[0][1] - re[1][1]) / (re[0][0] - re[1][0])
 
-    core = lyapunov_at(asm, np.asarray(e.r, float), spd, lm.M, A, omega, fd_step, fd_method)
+    core = lyapunov_at(assembled(sys_v), np.asarray(e.r, float), spd, lm.M, A, omega,
+                       fd_step, fd_method)
     if not (math.isfinite(core["l1"]) and math.isfinite(alpha_p)):
         return HopfResult.failed("error", "non-finite l1 or dRe λ/dp", value=value, **base)
     l1, l1_err = core["l1"], core["l1_error"]
@@ -295,7 +314,8 @@ def hopf_cycle(system: System, result: HopfResult, value: float, *, rtol: float 
     shooting (:func:`rotordyn.periodic_orbit`) from the leading-order cycle
     x_e(value) + 2 Re(z q) with period 2π/ω (x_e the equilibrium at ``value``). InputError
     when ``value`` is on the side without cycles. Keywords go to
-    :func:`rotordyn.periodic_orbit`; very near the point (the cycle's radial multiplier within
+    :func:`rotordyn.periodic_orbit` on the system at ``value`` (a model field ``vary``: the
+    system re-assembled with the field there); very near the point (the cycle's radial multiplier within
     ~1e-5 of 1) pass ``method="harmonic_balance"``: shooting's flow map is at its integration
     noise there and lands on other cycles or is refused (docs/nonlinear.md, "l1 inside the
     kink-free piece")."""
@@ -306,6 +326,7 @@ def hopf_cycle(system: System, result: HopfResult, value: float, *, rtol: float 
         raise InputError("result: expected a HopfResult with status ok")
     x, period = result.cycle_state(value)
     spd, pc, ay = _operating(result.vary, value, result.fixed | {result.vary: value})
+    system = _system_at(system, result.vary, value)
     e = equilibrium(system, spd, pc, ay)
     n = x.size // 2
     if e.status in CONVERGED:  # the cycle about this point's own equilibrium
@@ -320,7 +341,10 @@ def hopf_branch(system: System, result: HopfResult, bounds, *, distance: float |
     """The branch of limit cycles born at the Hopf point ``result``: the first cycle by
     :func:`hopf_cycle` at ``distance`` (unit of vary; default 0.2 % of the bounds' span)
     from the point on its cycle side, then :func:`rotordyn.continuation` away from the point
-    within ``bounds`` (keywords passed on). Returns the BranchResult (a failed first cycle:
+    within ``bounds`` (keywords passed on; a model field ``vary``: on the system with the
+    field at the first cycle's value, by ``method="harmonic_balance"`` unless another is
+    given, which the continuation then refuses; the first cycle by the same method and
+    harmonics). Returns the BranchResult (a failed first cycle:
     ConvergenceError with its message)."""
     from rotordyn.analysis.continuation import continuation
     from rotordyn.errors import ConvergenceError
@@ -330,10 +354,15 @@ def hopf_branch(system: System, result: HopfResult, bounds, *, distance: float |
         raise InputError("result: expected a HopfResult with status ok")
     d = v.positive("distance", distance if distance is not None else 2e-3 * (hi - lo))
     sgn = 1 if result.cycle_side == "above" else -1
-    first = hopf_cycle(system, result, result.value + sgn * d, rtol=rtol, tol=tol)
+    value = result.value + sgn * d
+    how = {}
+    if result.vary not in PARAMETERS:  # a model field: harmonic-balance correctors only
+        kw.setdefault("method", "harmonic_balance")
+        if kw["method"] == "harmonic_balance":
+            how = {k: kw[k] for k in ("method", "harmonics", "time_points") if k in kw}
+    first = hopf_cycle(system, result, value, rtol=rtol, tol=tol, **how)
     if not first.ok:
         raise ConvergenceError(f"hopf_branch: the first cycle at {result.vary} = "
-                               f"{result.value + sgn * d:.6g} did not converge: "
-                               f"{first.message}")
-    return continuation(system, result.vary, (lo, hi), first, direction=sgn, rtol=rtol,
-                        tol=tol, **kw)
+                               f"{value:.6g} did not converge: {first.message}")
+    return continuation(_system_at(system, result.vary, value), result.vary, (lo, hi), first,
+                        direction=sgn, rtol=rtol, tol=tol, **kw)

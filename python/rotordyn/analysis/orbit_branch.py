@@ -1,7 +1,8 @@
 """What the two continuations of periodic orbits share (docs/nonlinear.md): the shooting
 corrector's (:mod:`rotordyn.analysis.continuation`) and harmonic balance's
 (:mod:`rotordyn.analysis.hb_continuation`) — the checked set-up of a branch from its start
-orbit (the operating point, the parameter in the core's units, the orbit input), each point's
+orbit (the operating point, the parameter in the core's units, the orbit input; for a model
+field the system re-assembled at each value), each point's
 :class:`~rotordyn.results.PeriodicOrbitResult`, the Hopf end, and the assembly of the
 :class:`~rotordyn.results.BranchResult` with its bifurcations."""
 
@@ -13,16 +14,23 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
-from rotordyn.analysis.assembly import assembled, check_operating_parameter
+from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.field_axis import FieldSystems, check_acts, field_parameter, field_value
 from rotordyn.analysis.periodic import orbit_result
-from rotordyn.errors import InputError
+from rotordyn.errors import InputError, RotordynError
 from rotordyn.results.continuation import BranchResult
 from rotordyn.results.periodic import PeriodicOrbitResult
 from rotordyn.units import hz_to_rad_s
 
+#: the operating variables the core varies itself (any other ``vary`` is a model field path)
 VARIABLES = ("chamber_pressure_pa", "speed_hz", "config_ay_m")
 PARAM = {"chamber_pressure_pa": "chamber_pressure", "speed_hz": "speed",
          "config_ay_m": "config"}
+
+
+def point_parameter(o: PeriodicOrbitResult, vary: str) -> float:
+    """The value of ``vary`` at a branch point (a model field's: ``stats["field_value"]``)."""
+    return float(getattr(o, vary) if vary in VARIABLES else o.stats["field_value"])
 
 
 def amplitude(o: PeriodicOrbitResult) -> np.ndarray:
@@ -65,10 +73,29 @@ class BranchSetup:
     param_scale: float
     start_speed: float = 0.0
     start_pc: float = 0.0
+    #: a model field: the system re-assembled at each value, the operating a_y override (None:
+    #: the model's configuration) and the unbalances [(station, m·e, phase)]
+    field: FieldSystems | None = None
+    ay_override: float | None = None
+    unbalances: tuple = ()
+
+    def input_at(self, p: float):
+        """The orbit input (``_core.PeriodicInput``) on the system with the field at ``p``:
+        the base with the configuration and unbalance of that assembly (a model field)."""
+        asm = self.field.at(p)
+        return periodic_input(asm, self.kind, self.base.omega, self.base.chamber_pressure,
+                              asm.config_vector(self.ay_override), self.unbalances,
+                              self.base.t0, self.base.n_out, self.base.period)
 
     def point_result(self, orbit, p_core: float, extra_stats: dict | None = None):
         """The :class:`PeriodicOrbitResult` of a corrected orbit (the core's) at p_core."""
         p = p_core / self.to_core
+        if self.field is not None:
+            asm = self.field.at(p)
+            return orbit_result(asm, orbit, self.kind, self.start_speed, self.start_pc,
+                                asm.config_vector(self.ay_override),
+                                extra_stats={**(extra_stats or {}), "field": self.vary,
+                                             "field_value": float(p)})
         spd = p if self.vary == "speed_hz" else self.start_speed
         pc = p if self.vary == "chamber_pressure_pa" else self.start_pc
         if self.vary != "config_ay_m":
@@ -92,11 +119,37 @@ class BranchSetup:
             status="not_converged")
 
 
+def periodic_input(asm, kind: str, omega: float, chamber_pressure: float, a, ub_list, t0: float,
+                   n_out: int, period: float):
+    """The ``_core.PeriodicInput`` of an orbit on the assembled system ``asm``: kind, Ω (rad/s),
+    p_c, the configuration a (n,), the unbalances [(station, m·e kg·m, phase deg)] as the
+    cosine and sine force vectors, t0, n_out and the period (forced: the forcing's)."""
+    n = asm.n
+    inp = _core.PeriodicInput()
+    inp.kind = _core.OrbitKind.autonomous if kind == "autonomous" else _core.OrbitKind.forced
+    inp.omega = float(omega)
+    inp.chamber_pressure = float(chamber_pressure)
+    uc, us = np.zeros(n), np.zeros(n)
+    for st, me, ph in ub_list:
+        L = asm.station_load_matrix(st)
+        q = np.radians(ph)
+        uc += me * (L[:, 0] * np.cos(q) + L[:, 1] * np.sin(q))
+        us += me * (-L[:, 0] * np.sin(q) + L[:, 1] * np.cos(q))
+    inp.unbalance_cos, inp.unbalance_sin = (uc, us) if ub_list else (np.zeros(0), np.zeros(0))
+    inp.a = np.asarray(a, dtype=float)
+    inp.t0 = float(t0)
+    inp.n_out = int(n_out)
+    inp.period = float(period)
+    return inp
+
+
 def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: int) -> BranchSetup:
     """The checked set-up of a branch over ``vary`` within ``bounds`` from the orbit
-    ``start`` (InputError naming the field for a bad one)."""
-    vary = v.choice("vary", vary, VARIABLES)
-    check_operating_parameter(system, vary)
+    ``start`` (InputError naming the field for a bad one). ``vary``: an operating variable
+    (VARIABLES) or a numeric model field path; a field must act on the equations of motion
+    between the bounds (:func:`rotordyn.analysis.field_axis.check_acts` at the start's
+    state)."""
+    vary = field_parameter(system, vary)
     lo, hi = v.bounds("bounds", bounds)
     if not isinstance(start, PeriodicOrbitResult):
         raise InputError("start: expected a PeriodicOrbitResult (a converged orbit from "
@@ -123,45 +176,80 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
     if kind == "forced":
         subharmonic = max(1, int(round(start.period_s * abs(start.speed_hz))))
     bcs = asm.bearings
-    a0 = asm.config_vector(None)
-    if bcs and abs(a0[bcs[0].jy] - start.config_ay_m) > 1e-15:
-        a0 = asm.config_vector(start.config_ay_m)
-    p_start = {"chamber_pressure_pa": start.chamber_pressure_pa, "speed_hz": start.speed_hz,
-               "config_ay_m": start.config_ay_m}[vary]
+    ay_override = None
+    if bcs and abs(asm.config_vector(None)[bcs[0].jy] - start.config_ay_m) > 1e-15:
+        ay_override = float(start.config_ay_m)
+    a0 = asm.config_vector(ay_override)
+    if vary in VARIABLES:
+        p_start = {"chamber_pressure_pa": start.chamber_pressure_pa,
+                   "speed_hz": start.speed_hz, "config_ay_m": start.config_ay_m}[vary]
+    else:
+        p_start = field_value(system, vary)
     if not lo <= p_start <= hi:
         raise InputError(f"bounds: ({lo:g}, {hi:g}) must contain the start's {vary} = "
                          f"{p_start:g}")
     if vary == "speed_hz" and (lo <= 0 <= hi):
         raise InputError(f"bounds: a speed branch must not contain 0 Hz, got ({lo:g}, {hi:g})")
 
-    base = _core.PeriodicInput()
-    base.kind = _core.OrbitKind.autonomous if kind == "autonomous" else _core.OrbitKind.forced
     omega = hz_to_rad_s(float(start.speed_hz))
-    base.omega = omega
-    base.chamber_pressure = float(start.chamber_pressure_pa)
-    uc, us = np.zeros(n), np.zeros(n)
-    for st, me, ph in ub_list:
-        L = asm.station_load_matrix(st)
-        q = np.radians(ph)
-        uc += me * (L[:, 0] * np.cos(q) + L[:, 1] * np.sin(q))
-        us += me * (-L[:, 0] * np.sin(q) + L[:, 1] * np.cos(q))
-    base.unbalance_cos, base.unbalance_sin = (uc, us) if ub_list else (np.zeros(0), np.zeros(0))
-    base.t0 = float(start.t[0])
-    base.n_out = int(n_out)
-    # p in the core's units: Pa, rad/s, m; a(p) = a_base + p · direction for config
+    period = (subharmonic * 2 * np.pi / abs(omega) if kind == "forced"
+              else float(start.period_s))
+    base = periodic_input(asm, kind, omega, float(start.chamber_pressure_pa), a0, ub_list,
+                          float(start.t[0]), n_out, period)
+    # p in the core's units: Pa, rad/s or m (a field: its SI unit); a(p) = a_base + p ·
+    # direction for config
     to_core = hz_to_rad_s(1.0) if vary == "speed_hz" else 1.0
     direction = None
     if vary == "config_ay_m":
         a_base = asm.config_vector(0.0)
         direction = asm.config_vector(1.0) - a_base
         base.a = a_base
-    else:
-        base.a = a0
+    field = None
+    if vary not in VARIABLES:
+        field = FieldSystems(system, vary, n)
+        _check_field_acts(field, kind, omega, float(start.chamber_pressure_pa), ay_override,
+                          ub_list, start, lo, hi)
     return BranchSetup(vary=vary, lo=lo, hi=hi, asm=asm, n=n, kind=kind,
                        subharmonic=subharmonic, bcs=bcs, a0=a0, p_start=float(p_start),
                        to_core=to_core, omega=omega, base=base, config_direction=direction,
                        param_scale=float(param_scale), start_speed=float(start.speed_hz),
-                       start_pc=float(start.chamber_pressure_pa))
+                       start_pc=float(start.chamber_pressure_pa), field=field,
+                       ay_override=ay_override, unbalances=tuple(ub_list))
+
+
+def _check_field_acts(field: FieldSystems, kind, omega, pc, ay_override, ub_list, start, lo,
+                      hi) -> None:
+    """InputError naming ``vary`` when the field changes nothing of eq. 12 between the
+    bounds: M (at Ω), C, G, K, the loads, the chamber force, the configuration, the unbalance
+    forcing, and the film forces and their linearisation at the start orbit's first state (a
+    film closed there at a bound counts as a change)."""
+    r, vel = np.asarray(start.r[0], float), np.asarray(start.v[0], float)
+
+    def snapshot(p):
+        asm = field.at(p)
+        m = asm.model
+        inp = periodic_input(asm, kind, omega, pc, asm.config_vector(ay_override), ub_list,
+                             0.0, 2, 1.0)
+        M = m.mass_at(omega) if m.has_table_mass() else m.M
+        try:
+            lin = asm.solver.linearize(r, vel, omega)
+            films = (lin.film_force, lin.KH, lin.DH)
+        except RotordynError:  # a film closed at this bound's value: not comparable
+            films = (np.array([np.nan]),) * 3
+        return (M, m.C, m.G, m.K, m.Q, pc * np.asarray(m.chamber), inp.a, inp.unbalance_cos,
+                inp.unbalance_sin, *films)
+
+    check_acts(field.vary, lo, hi, snapshot)
+
+
+def _point_clearances(orbits, bcs) -> np.ndarray:
+    """(n_bearings,) the bearings' clearances, or (n_points, n_bearings) each point's where a
+    model field changes them along the branch."""
+    c = clearances(bcs)
+    if not bcs or not orbits:
+        return c
+    per = np.array([o.clearance_m for o in orbits], dtype=float).reshape(len(orbits), -1)
+    return c if np.all(per == per[0]) and np.array_equal(per[0], c) else per
 
 
 def hopf_estimate(orbits, beyond: PeriodicOrbitResult, vary: str) -> dict:
@@ -171,9 +259,7 @@ def hopf_estimate(orbits, beyond: PeriodicOrbitResult, vary: str) -> dict:
     A² ∝ |p − p_H|). ``curvature`` c (unit of ``vary`` per m²): with the cycles on the
     unstable side of the equilibrium and stable, the Hopf point is supercritical."""
     pts = list(orbits[-2:]) + [beyond]
-    key = {"chamber_pressure_pa": "chamber_pressure_pa", "speed_hz": "speed_hz",
-           "config_ay_m": "config_ay_m"}[vary]
-    p = np.array([getattr(o, key) for o in pts])
+    p = np.array([point_parameter(o, vary) for o in pts])
     A = np.array([amplitude(o)[0] for o in pts])
     A[-1] = -A[-1]
     if len(pts) == 3:
@@ -195,8 +281,7 @@ def assemble(vary, kind, orbits, tangents, arcl, bcs, bounds, stop, message, sta
     dp/ds changes sign (interpolated linearly in s), else where the critical multiplier's
     modulus crosses 1 its type on the unstable side (``stability_change`` for a real +1)."""
     n_pts = len(orbits)
-    p = np.array([{"chamber_pressure_pa": o.chamber_pressure_pa, "speed_hz": o.speed_hz,
-                   "config_ay_m": o.config_ay_m}[vary] for o in orbits])
+    p = np.array([point_parameter(o, vary) for o in orbits])
     amp = np.array([amplitude(o) for o in orbits]).reshape(n_pts, len(names(bcs)))
     mm = np.array([abs(o.critical_multiplier) if o.critical_multiplier is not None else 0.0
                    for o in orbits])
@@ -226,6 +311,7 @@ def assemble(vary, kind, orbits, tangents, arcl, bcs, bounds, stop, message, sta
         vary=vary, kind=kind, parameter=p, amplitude_m=amp,
         period_s=np.array([o.period_s for o in orbits]), max_multiplier=mm, stable=stable,
         critical_type=ctype, arclength=np.array(arcl, dtype=float), tangent_p=tp,
-        bearing_names=names(bcs), clearance_m=clearances(bcs), bifurcations=tuple(bif),
+        bearing_names=names(bcs), clearance_m=_point_clearances(orbits, bcs),
+        bifurcations=tuple(bif),
         orbits=tuple(orbits), bounds=bounds, stop=stop, message=message, stats=stats,
         status="ok")

@@ -12,6 +12,7 @@ import numpy as np
 from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import check_operating_parameter
+from rotordyn.model.paths import set_field
 from rotordyn.model.system import System
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 
@@ -72,8 +73,10 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
               config_ay_m: float | None = None, n_scan: int = 25, xtol: float | None = None,
               exclude_sleeve_modes: bool = False, thermal: dict | None = None
               ) -> ThresholdResult:
-    """The value of ``vary`` (``"chamber_pressure_pa"``, ``"config_ay_m"`` or ``"speed_hz"``)
-    in ``bounds`` where the least-damped eigenvalue's real part crosses zero.
+    """The value of ``vary`` (``"chamber_pressure_pa"``, ``"config_ay_m"``, ``"speed_hz"``, or
+    a numeric model field path such as ``"bearings.*.clearance_m"``: the system re-assembled
+    with the field at every scanned value, the operating point fixed) in ``bounds`` where the
+    least-damped eigenvalue's real part crosses zero.
 
     The bounds are scanned at ``n_scan`` points (equilibria continued from point to point),
     then refined where a parabola through three neighbouring scan values dips through zero
@@ -93,8 +96,10 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     """
     from scipy.optimize import brentq
     import pandas as pd
-    v.choice("vary", vary, PARAMETERS)
-    check_operating_parameter(system, vary)
+    from rotordyn.analysis.field_axis import field_parameter
+
+    vary = field_parameter(system, vary)
+    field = vary not in PARAMETERS
     lo, hi = v.bounds("bounds", bounds)
     if vary == "chamber_pressure_pa" and lo < 0:
         raise InputError(f"bounds: {vary} must be >= 0, got {bounds!r}")
@@ -106,16 +111,19 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
              "chamber_pressure_pa": v.non_negative("chamber_pressure_pa", chamber_pressure_pa),
              "config_ay_m": None if config_ay_m is None else v.finite("config_ay_m",
                                                                        config_ay_m)}
-    fixed.pop(vary)
+    if not field:
+        fixed.pop(vary)
     thermal = _thermal_keywords(thermal)
     calls = [0]
 
     def g(x):
         calls[0] += 1
         p = dict(fixed)
-        p[vary] = float(x)
-        try:
-            return _point(system, p, exclude_sleeve_modes, thermal)
+        if not field:
+            p[vary] = float(x)
+        try:  # a model field: the system re-assembled with the field at x
+            sx = set_field(system, vary, float(x), where="bounds") if field else system
+            return _point(sx, p, exclude_sleeve_modes, thermal)
         except RotordynError as exc:  # a failed point is a NaN, the scan goes on
             return math.nan, math.nan, f"error: {exc}"
 

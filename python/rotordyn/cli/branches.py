@@ -31,7 +31,8 @@ EQUILIBRIUM_ONLY = (("no_refine", "--no-refine"),)
 _FLAGS = {"vary": "--vary", "bounds": "--bounds", "ds": "--ds", "ds_min": "--ds-min",
           "ds_max": "--ds-max", "max_points": "--max-points", "direction": "--direction",
           "param_scale": "--param-scale", "tol": "--tol", "speed_hz": "--speed-hz",
-          "chamber_pressure_pa": "--chamber-pressure-pa", "config_ay_m": "--config-ay-m"}
+          "chamber_pressure_pa": "--chamber-pressure-pa", "config_ay_m": "--config-ay-m",
+          "method": "--method"}
 
 #: the equilibrium API's defaults where the command line leaves a flag out
 EQ_DEFAULTS = {"ds": 0.02, "ds_min": 1e-5, "ds_max": 0.05, "max_points": 200, "tol": 1e-10}
@@ -43,7 +44,8 @@ def add_arguments(c) -> None:
     c.add_argument("--start", choices=STARTS, default="orbit",
                    help="orbit (default): a limit cycle or forced orbit found as by "
                         "periodic-orbit, continued over --vary (chamber_pressure_pa, speed_hz "
-                        "or config_ay_m); equilibrium: the static equilibrium, continued over "
+                        "or config_ay_m; a model field path with --method harmonic_balance); "
+                        "equilibrium: the static equilibrium, continued over "
                         "an operating variable or a numeric model field path (e.g. "
                         "bearings.*.clearance_m, supports.0.kyy_n_per_m), with max Re(lambda) "
                         "at every point, its Hopf points and folds. With equilibrium the "

@@ -1,7 +1,7 @@
 """Nonlinear dynamics on the command line: ``periodic-orbit`` (a limit cycle or an
 unbalance-forced orbit by shooting or harmonic balance, with its Floquet multipliers) and
-``continuation`` (its branch over p_c, speed or a_y by pseudo-arclength continuation, with
-shooting or harmonic-balance correctors, or with ``--start equilibrium`` the branch of static
+``continuation`` (its branch over p_c, speed, a_y or — harmonic-balance correctors — a model
+field by pseudo-arclength continuation, with shooting or harmonic-balance correctors, or with ``--start equilibrium`` the branch of static
 equilibria: :mod:`.branches`; docs/nonlinear.md)."""
 
 from __future__ import annotations
@@ -10,6 +10,8 @@ import numpy as np
 
 from rotordyn import analysis
 from rotordyn.analysis.continuation import CLI_NEWTON, DEFAULT_NEWTON
+from rotordyn.analysis.field_axis import field_parameter
+from rotordyn.analysis.orbit_branch import VARIABLES
 from rotordyn._common import validate as v
 from rotordyn.cli import branches
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
@@ -32,15 +34,17 @@ def register(sub) -> None:
     s.set_defaults(func=_cmd_periodic_orbit)
 
     c = sub.add_parser("continuation",
-                       help="branch of limit cycles or forced orbits over p_c, speed or a_y, "
-                            "or of static equilibria (--start equilibrium) over those or a "
+                       help="branch of limit cycles or forced orbits, or of static "
+                            "equilibria (--start equilibrium), over p_c, speed, a_y or a "
                             "model field, by pseudo-arclength continuation, with stability "
                             "and bifurcations")
     _orbit_arguments(c)
     c.add_argument("--vary", required=True,
                    help="the continued parameter: chamber_pressure_pa (Pa), speed_hz (Hz), "
-                        "config_ay_m (m); with --start equilibrium also a numeric model "
-                        "field path (SI unit of the field)")
+                        "config_ay_m (m), or a numeric model field path (SI unit of the "
+                        "field, e.g. bearings.0.viscosity_pa_s, supports.0.kyy_n_per_m: the "
+                        "model re-assembled at every value) with --start equilibrium or, "
+                        "for orbits, --method harmonic_balance")
     c.add_argument("--bounds", type=float, nargs=2, required=True, metavar=("LO", "HI"),
                    help="parameter range (unit of --vary); must contain the start's value")
     c.add_argument("--ds", type=float, default=None,
@@ -252,7 +256,9 @@ def _method_info(hb: dict, res, start) -> dict:
 ORBIT_DEFAULTS = {"kind": "autonomous", "rtol": 1e-8, "tol": 1e-6, "disturbance_c": 0.1,
                   "subharmonic": 1, "speed_hz": 50.0, "chamber_pressure_pa": 0.0,
                   "ds": 0.05, "max_points": 50, "newton": DEFAULT_NEWTON}
-ORBIT_VARY = ("chamber_pressure_pa", "speed_hz", "config_ay_m")
+#: the operating variables a branch of orbits by shooting varies (harmonic balance: also a
+#: numeric model field path)
+ORBIT_VARY = VARIABLES
 
 
 def _cmd_continuation(args) -> int:
@@ -272,9 +278,6 @@ def _cmd_continuation(args) -> int:
         return branches.run_equilibrium(args, out)
     branches.refuse(args, branches.EQUILIBRIUM_ONLY,
                     "applies only to a branch of equilibria (--start equilibrium)")
-    if args.vary not in ORBIT_VARY:
-        raise InputError(f"--vary: a branch of orbits varies one of {', '.join(ORBIT_VARY)}, "
-                         f"got {args.vary!r} (a model field: --start equilibrium)")
     if args.method == "harmonic_balance" and args.newton is not None:
         raise InputError("--newton: applies only to --method shooting (the correctors of "
                          "harmonic balance are Newton on the orbit's coefficients)")
@@ -289,6 +292,14 @@ def _cmd_continuation(args) -> int:
         v.in_range("--floquet-margin", args.floquet_margin, 0.0, 0.5)
     newton = args.newton
     s = models.load(args.model)
+    try:  # before the start orbit is solved: an unknown parameter, a field with shooting
+        vary = field_parameter(s, args.vary)
+    except InputError as exc:
+        raise branches.flagged(exc) from None
+    if vary not in ORBIT_VARY and method != "harmonic_balance":
+        raise InputError(f"--method: a branch of orbits over the model field {vary} has "
+                         "harmonic-balance correctors only (--method harmonic_balance; "
+                         "shooting varies chamber_pressure_pa, speed_hz or config_ay_m)")
     ub = _unbalances(args.unbalance)
     start = _settled_start(args, s, ub)
     if start is False:

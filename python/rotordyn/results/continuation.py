@@ -20,14 +20,29 @@ UNITS = {"chamber_pressure_pa": ("Pa", "p_c", 1e-6, "MPa"),
 BIFURCATION_KINDS = ("fold", "period_doubling", "neimark_sacker", "stability_change", "hopf")
 
 
+def parameter_units(vary: str) -> tuple:
+    """(SI unit, symbol, display factor, display unit) of ``vary``: the operating variables'
+    from UNITS, a model field's from its suffix (DESIGN §9)."""
+    if vary in UNITS:
+        return UNITS[vary]
+    name = vary.rsplit(".", 1)[-1]
+    for suffix, unit in (("_pa_s", "Pa·s"), ("_kg_m2", "kg·m²"), ("_n_per_m", "N/m"),
+                         ("_n_s_per_m", "N·s/m"), ("_m_s2", "m/s²"), ("_kg", "kg"),
+                         ("_pa", "Pa"), ("_hz", "Hz"), ("_deg", "deg"), ("_m", "m")):
+        if name.endswith(suffix):
+            return unit, vary, 1.0, unit
+    return "", vary, 1.0, ""
+
+
 @dataclass(frozen=True)
 class BranchResult(Display):
     """A branch of periodic orbits over the parameter ``vary``.
 
-    parameter: (n_points,) in the unit of ``vary`` (Pa, Hz or m); amplitude_m:
-    (n_points, n_bearings) the largest distance of each journal from its orbit's mean position
+    parameter: (n_points,) in the unit of ``vary`` (Pa, Hz, m, or a model field's SI unit);
+    amplitude_m: (n_points, n_bearings) the largest distance of each journal from its orbit's mean position
     (a system without bearings: one column, "largest coordinate", the largest distance of any
-    coordinate from its mean, clearance NaN);
+    coordinate from its mean, clearance NaN); clearance_m: (n_bearings,), or
+    (n_points, n_bearings) where a model field changes the clearances along the branch;
     period_s: (n_points,); max_multiplier: (n_points,) the modulus of the critical
     (non-trivial, largest) Floquet multiplier; stable: (n_points,) bool (max_multiplier < 1);
     critical_type: (n_points,) how the critical multiplier sits (``fold``: real > 0,
@@ -75,13 +90,13 @@ class BranchResult(Display):
 
     @property
     def unit(self) -> str:
-        return UNITS[self.vary][0]
+        return parameter_units(self.vary)[0]
 
     def __len__(self) -> int:
         return int(self.parameter.size)
 
     def __repr__(self) -> str:
-        u, sym, f, disp = UNITS[self.vary]
+        u, sym, f, disp = parameter_units(self.vary)
         head = f"<BranchResult {self.status}: {self.kind} orbits over {self.vary}"
         if not len(self):
             return head + f", no points: {self.message}>"
@@ -110,7 +125,7 @@ class BranchResult(Display):
             "bearing": np.tile(np.asarray(self.bearing_names, dtype=object), npt),
             self.vary: np.repeat(self.parameter, nb),
             "amplitude_m": self.amplitude_m.ravel(),
-            "amplitude_c": (self.amplitude_m / self.clearance_m[None, :]).ravel(),
+            "amplitude_c": (self.amplitude_m / np.atleast_2d(self.clearance_m)).ravel(),
             "period_s": np.repeat(self.period_s, nb),
             "max_multiplier": np.repeat(self.max_multiplier, nb),
             "stable": np.repeat(self.stable, nb),
@@ -137,7 +152,7 @@ class BranchResult(Display):
 
         from rotordyn.plot._style import PAGE_IN, paper_style, stability_segments
 
-        u, sym, f, disp = UNITS[self.vary]
+        u, sym, f, disp = parameter_units(self.vary)
         marks = {"fold": ("o", "tab:red"), "period_doubling": ("s", "tab:purple"),
                  "neimark_sacker": ("D", "tab:green"), "stability_change": ("^", "tab:orange"),
                  "hopf": ("*", "k")}

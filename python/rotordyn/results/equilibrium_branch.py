@@ -10,26 +10,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from rotordyn.results._display import Display
-from rotordyn.results.continuation import UNITS
+from rotordyn.results.continuation import parameter_units
 
 if TYPE_CHECKING:
     import pandas as pd
 
 EQUILIBRIUM_BIFURCATIONS = ("hopf", "fold", "branch_point")
-
-
-def parameter_units(vary: str) -> tuple:
-    """(SI unit, symbol, display factor, display unit) of ``vary``: the operating variables'
-    from UNITS, a model field's from its suffix (DESIGN §9)."""
-    if vary in UNITS:
-        return UNITS[vary]
-    name = vary.rsplit(".", 1)[-1]
-    for suffix, unit in (("_pa_s", "Pa·s"), ("_kg_m2", "kg·m²"), ("_n_per_m", "N/m"),
-                         ("_n_s_per_m", "N·s/m"), ("_m_s2", "m/s²"), ("_kg", "kg"),
-                         ("_pa", "Pa"), ("_hz", "Hz"), ("_deg", "deg"), ("_m", "m")):
-        if name.endswith(suffix):
-            return unit, vary, 1.0, unit
-    return "", vary, 1.0, ""
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from rotordyn.results._display import Display
-from rotordyn.results.continuation import UNITS
+from rotordyn.results.continuation import parameter_units
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -96,7 +96,7 @@ class HopfResult(Display):
     def __repr__(self) -> str:
         if not self.ok:
             return f"<HopfResult {self.status}: {self.vary}; {self.message}>"
-        unit, sym, f, u2 = UNITS[self.vary]
+        unit, sym, f, u2 = parameter_units(self.vary)
         amp = ", ".join(f"{math.sqrt(c * abs(self.value) * 0.01) * 1e6:.3g} µm"
                         for c in self.amplitude_coefficient) if self.value else ""
         return (f"<HopfResult ok: {self.type} Hopf point at {sym} = {self.value * f:.6g} {u2}, "
@@ -138,7 +138,7 @@ class HopfResult(Display):
 
         if ax is None:
             _, ax = plt.subplots(figsize=(6, 4))
-        unit, sym, f, u2 = UNITS[self.vary]
+        unit, sym, f, u2 = parameter_units(self.vary)
         if not self.ok:
             ax.set_title(f"Hopf: {self.status}")
             return ax
