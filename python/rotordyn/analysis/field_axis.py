@@ -6,13 +6,14 @@ Shared by the branches of equilibria (:mod:`.equilibrium_branch`) and of periodi
 
 from __future__ import annotations
 
+import dataclasses
 from collections import OrderedDict
 
 import numpy as np
 
 from rotordyn.analysis.assembly import Assembled, check_operating_parameter
 from rotordyn.errors import InputError
-from rotordyn.model.paths import get_field, set_field
+from rotordyn.model.paths import declared_type, get_field, set_field
 from rotordyn.model.system import System
 
 #: the operating variables a branch can vary besides the model fields
@@ -40,7 +41,26 @@ def field_parameter(system: System, vary) -> str:
     except (AttributeError, IndexError, TypeError, ValueError) as exc:
         raise InputError(f"vary: unknown parameter {vary!r}: not a model field path "
                          f"({exc})") from None
+    if _integer(system, vary, vals):
+        raise InputError(f"vary: {vary} is an integer field (a grid size, a station or an "
+                         f"index; now {vals[0]!r}), not a continuous parameter: a branch "
+                         "varies a real-valued field such as bearings.0.clearance_m, "
+                         "bearings.*.viscosity_pa_s or supports.0.kyy_n_per_m")
     return vary
+
+
+def _integer(system: System, vary: str, vals) -> bool:
+    """Whether ``vary`` is an integer field: declared ``int`` on its dataclass (a TOML integer
+    in a float field is not), or, for an element of a list of numbers, holding ints."""
+    head, _, name = vary.rpartition(".")
+    try:
+        owners = get_field(system, head) if head else [system]
+    except (AttributeError, IndexError, TypeError, ValueError):
+        owners = []
+    kinds = [declared_type(o, name) for o in owners if dataclasses.is_dataclass(o)]
+    if kinds:
+        return any("float" not in k and "int" in k for k in kinds)
+    return bool(vals) and all(isinstance(x, int) and not isinstance(x, bool) for x in vals)
 
 
 def field_value(system: System, vary: str) -> float:

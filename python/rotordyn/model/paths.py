@@ -50,8 +50,19 @@ _ARRAY_FIELDS = {"viscosity_field_pa_s": "a frozen viscosity per film node, set 
                                          "equilibrium"}
 
 
-def _coerce(old, value, where: str):
-    """The new value in the type of the field it replaces (ints stay ints)."""
+def declared_type(obj, name: str) -> str:
+    """The annotation of the dataclass field ``name`` of ``obj`` as text ("" if none)."""
+    if dataclasses.is_dataclass(obj):
+        for f in dataclasses.fields(obj):
+            if f.name == name:
+                return f.type if isinstance(f.type, str) else getattr(f.type, "__name__",
+                                                                      str(f.type))
+    return ""
+
+
+def _coerce(old, value, where: str, declared: str = ""):
+    """The new value in the type of the field it replaces (ints stay ints, unless the field
+    is declared a float: a TOML integer such as ``mass_kg = 30`` takes 30.5)."""
     name = where.rsplit(".", 1)[-1]
     if name in _ARRAY_FIELDS:
         raise InputError(f"{where}: not a numeric field ({_ARRAY_FIELDS[name]}); "
@@ -59,7 +70,7 @@ def _coerce(old, value, where: str):
     if isinstance(old, bool) or not isinstance(old, (int, float)) and old is not None:
         raise InputError(f"{where}: not a numeric field (holds {type(old).__name__}); "
                          "only numbers can be swept")
-    if isinstance(old, int):
+    if isinstance(old, int) and "float" not in declared:
         if not float(value).is_integer():
             raise InputError(f"{where}: expected an integer, got {value!r}")
         return int(value)
@@ -87,7 +98,8 @@ def _set(obj, parts: list[str], value, where: str):
         return dataclasses.replace(obj, **{head: tuple(new)})
     if rest:
         return dataclasses.replace(obj, **{head: _set(cur, rest, value, here)})
-    return dataclasses.replace(obj, **{head: _coerce(cur, value, here)})
+    return dataclasses.replace(obj, **{head: _coerce(cur, value, here,
+                                                     declared_type(obj, head))})
 
 
 def set_field(system, path: str, value, where: str = "grid"):
