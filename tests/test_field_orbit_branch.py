@@ -243,3 +243,31 @@ def test_cli_continuation_over_a_field(compressor, whip, visc_branch, tmp_path, 
     assert main(args) == 2
     err = capsys.readouterr().err
     assert err.startswith("rotordyn: error: --method:") and VISC in err
+
+
+def test_cli_continuation_from_the_hopf_point_over_a_field(compressor, clearance_hopf,
+                                                           tmp_path, capsys):
+    """``rotordyn continuation --start hopf --vary bearings.*.clearance_m``: the Hopf point of
+    the threshold in --bounds (the equilibrium branch's within 1e-11 m), harmonic-balance
+    correctors without --method (a field has no others), the first cycle at --hopf-distance
+    on the cycles' side; the start flags of an orbit are refused, --hopf-distance elsewhere
+    too."""
+    model = tmp_path / "compressor_36x6.toml"
+    compressor.to_toml(model)
+    args = ["continuation", str(model), "--start", "hopf", "--vary", CLEAR, "--bounds",
+            "9e-5", "1e-4", "--speed-hz", "130", "--hopf-distance", "1e-10",
+            "--max-points", "3", "--tol", "1e-8", "--rtol", "1e-6"]
+    assert main(args + ["--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["status"] == "ok" and rec["start"] == "hopf" and rec["method"] == HB
+    assert abs(rec["hopf"]["value"] - clearance_hopf["parameter"]) < 1e-11
+    assert rec["hopf"]["cycle_side"] == "above"
+    assert rec["parameter"][0] == pytest.approx(rec["hopf"]["value"] + 1e-10, abs=1e-15)
+    assert len(rec["parameter"]) == 3
+    assert main(args + ["--settle-s", "0.1"]) == 2
+    assert capsys.readouterr().err.startswith("rotordyn: error: --settle-s: does not apply "
+                                              "to --start hopf")
+    assert main(["continuation", str(model), "--vary", CLEAR, "--bounds", "9e-5", "1e-4",
+                 "--method", HB, "--hopf-distance", "1e-10"]) == 2
+    assert capsys.readouterr().err.startswith("rotordyn: error: --hopf-distance: applies "
+                                              "only to --start hopf")

@@ -14,8 +14,8 @@ from rotordyn.errors import InputError
 from rotordyn.model import builtin as models
 
 #: the start of ``rotordyn continuation``: a periodic orbit found as by ``periodic-orbit``
-#: (the default), or the static equilibrium
-STARTS = ("orbit", "equilibrium")
+#: (the default), the static equilibrium, or the cycles born at the Hopf point in --bounds
+STARTS = ("orbit", "equilibrium", "hopf")
 
 #: flags of an orbit branch only: (argparse dest, flag)
 ORBIT_ONLY = (("kind", "--kind"), ("unbalance", "--unbalance"),
@@ -26,6 +26,14 @@ ORBIT_ONLY = (("kind", "--kind"), ("unbalance", "--unbalance"),
               ("start_amplitude_c", "--start-amplitude-c"))
 #: flags of an equilibrium branch only
 EQUILIBRIUM_ONLY = (("no_refine", "--no-refine"),)
+#: flags of the start orbit that a branch from a Hopf point does not take (its first cycle is
+#: the normal form's, an autonomous limit cycle)
+NOT_FROM_HOPF = (("kind", "--kind"), ("unbalance", "--unbalance"),
+                 ("subharmonic", "--subharmonic"), ("settle_s", "--settle-s"),
+                 ("disturbance_c", "--disturbance-c"),
+                 ("start_amplitude_c", "--start-amplitude-c"))
+#: flags of a branch from a Hopf point only
+HOPF_ONLY = (("hopf_distance", "--hopf-distance"),)
 
 #: API keyword -> command-line flag, for the InputError of the API naming the flag
 _FLAGS = {"vary": "--vary", "bounds": "--bounds", "ds": "--ds", "ds_min": "--ds-min",
@@ -52,7 +60,14 @@ def add_arguments(c) -> None:
                         "varied operating value starts on the bound the branch leaves from "
                         "(--direction), the others default to 50 Hz, 0 Pa and the model's "
                         "a_y; --ds 0.02, --ds-max 0.05, --max-points 200, --tol 1e-10 "
-                        "(the equilibrium's)")
+                        "(the equilibrium's). hopf: the Hopf point of the threshold in --bounds "
+                        "(as rotordyn hopf; --vary also a model field path), its first cycle "
+                        "from the normal form at --hopf-distance on the cycles' side, then the "
+                        "branch of orbits away from the point (a model field: --method "
+                        "harmonic_balance, the default there)")
+    c.add_argument("--hopf-distance", type=float, default=None, metavar="D",
+                   help="--start hopf: the first cycle's distance from the Hopf point (unit "
+                        "of --vary; default 0.2 %% of the --bounds span)")
     c.add_argument("--ds-min", type=float, default=None, metavar="DS",
                    help="smallest arclength step; the branch stops below it (default: the "
                         "API's, 1e-3 for orbits, 1e-5 for equilibria)")

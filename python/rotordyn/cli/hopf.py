@@ -7,6 +7,7 @@ from rotordyn import analysis
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
                                  check_figure, default_vary, json_text, save_figure,
                                  table_text)
+from rotordyn.errors import InputError
 from rotordyn.model import builtin as models
 
 
@@ -17,9 +18,11 @@ def register(sub) -> None:
     s.add_argument("model", help=MODEL_HELP)
     add_operating_point(s)
     s.add_argument("--vary", default=None,
-                   choices=["chamber_pressure_pa", "speed_hz", "config_ay_m"],
-                   help="the parameter whose threshold is the Hopf point (Pa, Hz, m; default: "
-                        "chamber_pressure_pa with an active journal bearing, else speed_hz)")
+                   help="the parameter whose threshold is the Hopf point: chamber_pressure_pa "
+                        "(Pa), speed_hz (Hz), config_ay_m (m), or a numeric model field path "
+                        "(e.g. bearings.*.clearance_m, SI unit of the field: the model "
+                        "re-assembled at each value, the operating point fixed); default "
+                        "chamber_pressure_pa with an active journal bearing, else speed_hz")
     s.add_argument("--bounds", type=float, nargs=2, default=None, metavar=("LO", "HI"),
                    help="search the threshold in this range (unit of --vary)")
     s.add_argument("--at", type=float, default=None,
@@ -43,11 +46,17 @@ def _cmd_hopf(args) -> int:
     check_figure(args.plot)
     s = models.load(args.model)
     args.vary = args.vary or default_vary(s)
-    res = analysis.hopf(s, args.vary, bounds=None if args.bounds is None else
-                        tuple(args.bounds), at=args.at, speed_hz=args.speed_hz,
-                        chamber_pressure_pa=args.chamber_pressure_pa,
-                        config_ay_m=args.config_ay_m, n_scan=args.n_scan,
-                        fd_step=args.fd_step, grid_check=args.grid_check)
+    try:
+        res = analysis.hopf(s, args.vary, bounds=None if args.bounds is None else
+                            tuple(args.bounds), at=args.at, speed_hz=args.speed_hz,
+                            chamber_pressure_pa=args.chamber_pressure_pa,
+                            config_ay_m=args.config_ay_m, n_scan=args.n_scan,
+                            fd_step=args.fd_step, grid_check=args.grid_check)
+    except InputError as exc:  # the API's keyword as the command line's flag
+        key, sep, rest = str(exc).partition(":")
+        if sep and key in ("vary", "bounds", "at"):
+            raise InputError(f"--{key}:{rest}") from None
+        raise
     if args.json:
         print(json_text({"status": res.status, "message": res.message, "vary": res.vary,
                          "value": res.value, "whirl_frequency_hz": res.whirl_frequency_hz,

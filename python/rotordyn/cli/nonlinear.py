@@ -11,12 +11,13 @@ import numpy as np
 from rotordyn import analysis
 from rotordyn.analysis.continuation import CLI_NEWTON, DEFAULT_NEWTON
 from rotordyn.analysis.field_axis import field_parameter
+from rotordyn.analysis.hopf import hopf_branch
 from rotordyn.analysis.orbit_branch import VARIABLES
 from rotordyn._common import validate as v
 from rotordyn.cli import branches
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
                                  check_figure, json_text, out_dir, save_figure, table_text)
-from rotordyn.errors import InputError
+from rotordyn.errors import ConvergenceError, InputError
 from rotordyn.model import builtin as models
 
 
@@ -261,6 +262,18 @@ ORBIT_DEFAULTS = {"kind": "autonomous", "rtol": 1e-8, "tol": 1e-6, "disturbance_
 ORBIT_VARY = VARIABLES
 
 
+def _hopf_point(args, s, vary):
+    """``--start hopf``: the Hopf point of the threshold in --bounds at the operating point
+    (rd.hopf), or None when there is none (printed)."""
+    h = analysis.hopf(s, vary, bounds=tuple(args.bounds), speed_hz=args.speed_hz,
+                      chamber_pressure_pa=args.chamber_pressure_pa,
+                      config_ay_m=args.config_ay_m)
+    if not h.ok:
+        print(f"rotordyn: no Hopf point in --bounds: {h!r}")
+        return None
+    return h
+
+
 def _cmd_continuation(args) -> int:
     check_figure(args.plot)
     v.bounds("--bounds", args.bounds)
@@ -278,6 +291,13 @@ def _cmd_continuation(args) -> int:
         return branches.run_equilibrium(args, out)
     branches.refuse(args, branches.EQUILIBRIUM_ONLY,
                     "applies only to a branch of equilibria (--start equilibrium)")
+    if args.start == "hopf":
+        branches.refuse(args, branches.NOT_FROM_HOPF, "does not apply to --start hopf (the "
+                        "first cycle is the normal form's limit cycle at the Hopf point)")
+        if args.method == "shooting" and args.vary not in ORBIT_VARY:
+            args.method = "harmonic_balance"  # a model field: the only correctors
+    else:
+        branches.refuse(args, branches.HOPF_ONLY, "applies only to --start hopf")
     if args.method == "harmonic_balance" and args.newton is not None:
         raise InputError("--newton: applies only to --method shooting (the correctors of "
                          "harmonic balance are Newton on the orbit's coefficients)")
@@ -301,19 +321,24 @@ def _cmd_continuation(args) -> int:
                          "harmonic-balance correctors only (--method harmonic_balance; "
                          "shooting varies chamber_pressure_pa, speed_hz or config_ay_m)")
     ub = _unbalances(args.unbalance)
-    start = _settled_start(args, s, ub)
-    if start is False:
-        return 1
-    # the start by the branch's method (harmonic balance: its multipliers from the samples;
-    # the branch's first corrector solves it again with the branch's options)
-    start_how = {**hb, "floquet": "samples"} if method == "harmonic_balance" else hb
-    orbit = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa,
-                                    args.config_ay_m, kind=args.kind, start=start,
-                                    unbalances=ub, subharmonic=args.subharmonic,
-                                    rtol=args.rtol, tol=args.tol, **start_how)
-    if not orbit.ok:
-        print(f"rotordyn: no start orbit: {orbit!r}")
-        return 1
+    if args.start == "hopf":
+        hres = _hopf_point(args, s, vary)
+        if hres is None:
+            return 1
+    else:
+        start = _settled_start(args, s, ub)
+        if start is False:
+            return 1
+        # the start by the branch's method (harmonic balance: its multipliers from the
+        # samples; the branch's first corrector solves it again with the branch's options)
+        start_how = {**hb, "floquet": "samples"} if method == "harmonic_balance" else hb
+        orbit = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa,
+                                        args.config_ay_m, kind=args.kind, start=start,
+                                        unbalances=ub, subharmonic=args.subharmonic,
+                                        rtol=args.rtol, tol=args.tol, **start_how)
+        if not orbit.ok:
+            print(f"rotordyn: no start orbit: {orbit!r}")
+            return 1
     if method == "harmonic_balance":
         how = {"method": method, "harmonics": hb["harmonics"], "time_points": hb["time_points"],
                "floquet": hb["floquet"], "floquet_margin": args.floquet_margin}
@@ -323,19 +348,29 @@ def _cmd_continuation(args) -> int:
     if args.ds_min is not None:
         steps["ds_min"] = args.ds_min
     try:
-        br = analysis.continuation(s, args.vary, tuple(args.bounds), orbit, unbalances=ub,
-                                   ds=args.ds, max_points=args.max_points,
-                                   direction=args.direction, param_scale=args.param_scale,
-                                   rtol=args.rtol, tol=args.tol, **how, **steps)
+        if args.start == "hopf":
+            br = hopf_branch(s, hres, tuple(args.bounds), distance=args.hopf_distance,
+                             ds=args.ds, max_points=args.max_points,
+                             param_scale=args.param_scale, rtol=args.rtol, tol=args.tol,
+                             **how, **steps)
+        else:
+            br = analysis.continuation(s, args.vary, tuple(args.bounds), orbit,
+                                       unbalances=ub, ds=args.ds,
+                                       max_points=args.max_points, direction=args.direction,
+                                       param_scale=args.param_scale, rtol=args.rtol,
+                                       tol=args.tol, **how, **steps)
     except InputError as exc:
         raise branches.flagged(exc) from None
+    except ConvergenceError as exc:  # the first cycle at the Hopf point
+        print(f"rotordyn: no start orbit: {exc}")
+        return 1
     info = {"method": method}
     if method == "harmonic_balance":
         info.update(harmonics=br.stats["harmonics"], time_points=br.stats["time_points"],
                     floquet=br.stats["floquet"], floquet_margin=br.stats["floquet_margin"])
     routes = [o.stats.get("floquet", "flow") for o in br.orbits]
     record = {
-        "status": br.status, "stop": br.stop, "message": br.message, "start": "orbit",
+        "status": br.status, "stop": br.stop, "message": br.message, "start": args.start,
         "vary": br.vary, "kind": br.kind, **info,
         "newton": newton if method == "shooting" else None, "parameter": br.parameter,
         "amplitude_m": br.amplitude_m, "period_s": br.period_s,
@@ -345,10 +380,16 @@ def _cmd_continuation(args) -> int:
                           "parameter": b["parameter"]} for b in br.bifurcations],
         "stats": br.stats,
     }
+    if args.start == "hopf":
+        record["hopf"] = {"value": hres.value, "type": hres.type, "l1": hres.l1,
+                          "l1_error": hres.l1_error, "cycle_side": hres.cycle_side,
+                          "whirl_frequency_hz": hres.whirl_frequency_hz}
     branches.write_outputs(br, record, args, out)  # before stdout (a closed pipe ends it)
     if args.json:
         print(json_text(record))
     else:
+        if args.start == "hopf":
+            print(repr(hres))
         print(repr(br))
         settings = ", ".join(f"{k} = {x}" for k, x in info.items() if k != "method")
         print(f"method: {method}" + (f" ({settings})" if settings else f" (newton = {newton})"))
