@@ -324,7 +324,8 @@ bool finish_point(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, do
       const Floquet& fq = o.floquet;
       pf.sample_critical_modulus = fq.critical >= 0 ? fq.critical_modulus : 0.0;
       pf.sample_trivial_error = fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
-      flow = flow || (margin > 0 && (fq.critical < 0 || std::abs(fq.critical_modulus - 1.0) < margin ||
+      flow = flow || (margin > 0 && (fq.critical < 0 ||
+                                     std::abs(fq.critical_modulus - 1.0) < margin ||
                                      pf.sample_trivial_error > 0.5 * margin));
     }
   }

@@ -32,7 +32,8 @@ void check(const SystemSolver& solver, const PeriodicInput& in, const Eigen::Mat
   const Eigen::Index n = solver.model().n();
   const int nb = 2 * ho.harmonics + 1;
   require(Z.rows() == nb && Z.cols() == n && Z.allFinite(),
-          shape_msg("coefficients", nb, n, Z.rows(), Z.cols()) + " (2H + 1 rows) with finite values");
+          shape_msg("coefficients", nb, n, Z.rows(), Z.cols()) +
+              " (2H + 1 rows) with finite values");
   require(std::isfinite(w) && w > 0, "frequency: expected a finite ω > 0 rad/s");
   PeriodicInput chk = in;
   chk.r0 = Z.colwise().sum().transpose();  // any finite (n,) state

@@ -47,7 +47,8 @@ def continuation(system: System, vary: str, bounds, start="equilibrium", **optio
     """Pseudo-arclength continuation of a branch over ``vary`` within ``bounds``.
 
     ``start`` a converged :class:`~rotordyn.results.PeriodicOrbitResult`: the branch of
-    periodic orbits (:func:`orbit_continuation`, ``vary`` p_c, speed or a_y) →
+    periodic orbits (:func:`orbit_continuation`, ``vary`` p_c, speed or a_y, or with
+    ``method="harmonic_balance"`` a numeric model field path) →
     :class:`~rotordyn.results.BranchResult`. ``start="equilibrium"`` (the default) or a
     converged :class:`~rotordyn.results.EquilibriumResult`: the branch of static equilibria
     with their linear stability, Hopf points and folds
@@ -99,6 +100,11 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     vary
         ``"chamber_pressure_pa"`` (Pa), ``"speed_hz"`` (Hz) or ``"config_ay_m"`` (m, the
         active bearing's vertical configuration); the other operating values are the start's.
+        With ``method="harmonic_balance"`` also a numeric model field path (e.g.
+        ``"bearings.*.viscosity_pa_s"``, SI unit of the field): the system re-assembled at
+        every value (:mod:`rotordyn.analysis.hb_field`; the start an orbit of ``system`` as
+        passed, at its value of the field; docs/nonlinear.md, "Branches of limit cycles over
+        a model field").
     bounds
         (low, high) in the unit of ``vary``; must contain the start's value. The branch stops
         at the first point outside.

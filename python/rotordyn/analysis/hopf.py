@@ -315,10 +315,10 @@ def hopf_cycle(system: System, result: HopfResult, value: float, *, rtol: float 
     x_e(value) + 2 Re(z q) with period 2π/ω (x_e the equilibrium at ``value``). InputError
     when ``value`` is on the side without cycles. Keywords go to
     :func:`rotordyn.periodic_orbit` on the system at ``value`` (a model field ``vary``: the
-    system re-assembled with the field there); very near the point (the cycle's radial multiplier within
-    ~1e-5 of 1) pass ``method="harmonic_balance"``: shooting's flow map is at its integration
-    noise there and lands on other cycles or is refused (docs/nonlinear.md, "l1 inside the
-    kink-free piece")."""
+    system re-assembled with the field there); very near the point (the cycle's radial
+    multiplier within ~1e-5 of 1) pass ``method="harmonic_balance"``: shooting's flow map is
+    at its integration noise there and lands on other cycles or is refused
+    (docs/nonlinear.md, "l1 inside the kink-free piece")."""
     from rotordyn.analysis.equilibrium import equilibrium
     from rotordyn.analysis.periodic import periodic_orbit
 

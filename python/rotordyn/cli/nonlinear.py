@@ -1,8 +1,9 @@
 """Nonlinear dynamics on the command line: ``periodic-orbit`` (a limit cycle or an
 unbalance-forced orbit by shooting or harmonic balance, with its Floquet multipliers) and
-``continuation`` (its branch over p_c, speed, a_y or — harmonic-balance correctors — a model
-field by pseudo-arclength continuation, with shooting or harmonic-balance correctors, or with ``--start equilibrium`` the branch of static
-equilibria: :mod:`.branches`; docs/nonlinear.md)."""
+``continuation`` (its branch over p_c, speed, a_y or — harmonic-balance correctors only — a
+model field by pseudo-arclength continuation, with shooting or harmonic-balance correctors,
+from an orbit or from the Hopf point in the bounds (``--start hopf``), or with ``--start
+equilibrium`` the branch of static equilibria: :mod:`.branches`; docs/nonlinear.md)."""
 
 from __future__ import annotations
 

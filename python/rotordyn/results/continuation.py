@@ -39,9 +39,9 @@ class BranchResult(Display):
     """A branch of periodic orbits over the parameter ``vary``.
 
     parameter: (n_points,) in the unit of ``vary`` (Pa, Hz, m, or a model field's SI unit);
-    amplitude_m: (n_points, n_bearings) the largest distance of each journal from its orbit's mean position
-    (a system without bearings: one column, "largest coordinate", the largest distance of any
-    coordinate from its mean, clearance NaN); clearance_m: (n_bearings,), or
+    amplitude_m: (n_points, n_bearings) the largest distance of each journal from its orbit's
+    mean position (a system without bearings: one column, "largest coordinate", the largest
+    distance of any coordinate from its mean, clearance NaN); clearance_m: (n_bearings,), or
     (n_points, n_bearings) where a model field changes the clearances along the branch;
     period_s: (n_points,); max_multiplier: (n_points,) the modulus of the critical
     (non-trivial, largest) Floquet multiplier; stable: (n_points,) bool (max_multiplier < 1);
