@@ -155,6 +155,11 @@ def test_heat_balance_closes_and_the_journal_takes_no_net_heat():
     assert abs(g.heat_to_journal_w) < 1e-9 * diss
     out_g, diss_g, _, _ = balance(g.temperature_c, g.inlet_mask, g.flows, RC, TS)
     assert out_g + g.heat_to_journal_w == pytest.approx(diss_g, rel=1e-9)
+    # the inlet mixing with the recirculated oil at its reported (mixing-cup) temperature
+    q_f = r.film_flow_m3_s - 0.5 * r.recirculation_flow_m3_s
+    assert r.inlet_temperature_c == pytest.approx(
+        (q_f * TS + 0.5 * r.recirculation_flow_m3_s * r.recirculation_temperature_c)
+        / (q_f + 0.5 * r.recirculation_flow_m3_s), abs=1e-9)
     fr = r.to_frame()
     assert fr["journal_temperature_c"].iloc[0] == TJ
     assert fr["max_wall_temperature_c"].iloc[0] == pytest.approx(Tw[film].max())
@@ -173,6 +178,13 @@ def test_tilting_pads_share_one_journal_and_conduct_through_the_pads():
         out, diss, _ = pad_balance(r.temperature_c[k], D, r.flows[k], RC, TS)
         assert out + r.heat_to_journal_w[k] + r.heat_to_bush_w[k] == pytest.approx(diss,
                                                                                    rel=1e-9)
+        # Ettles' mixing with the upstream pad's outlet (its mixing-cup temperature, which
+        # carries the journal's temperature too)
+        u = (k - 1) % tp.n_pads
+        carried = min(0.5 * r.outlet_flow_m3_s[u], r.film_flow_m3_s[k])
+        t_mix = ((r.film_flow_m3_s[k] - carried) * TS + carried * r.outlet_temperature_c[u]) \
+            / r.film_flow_m3_s[k]
+        assert r.inlet_temperature_c[k] == pytest.approx(t_mix, abs=1e-9)
         # into the pad: through it and its back face, U (T_w − T_o) per area
         qb = (r.flows[k]["area_m2"] * U * (r.wall_temperature_c[k] - TS))[~D].sum()
         assert qb == pytest.approx(r.heat_to_bush_w[k], rel=1e-9)

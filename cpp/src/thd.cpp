@@ -464,7 +464,8 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
   st.max_temperature_c = parts.pad ? std::max(tmax, Tin) : T.maxCoeff();
   st.mean_temperature_c = tmean / area;
   st.inlet_temperature_c = Tin;
-  st.recirculation_temperature_c = Qr > 0.0 ? (ta + Tin * tb) / Qr : Tin;
+  st.recirculation_temperature_c =
+      Qr > 0.0 ? (ta + Tin * tb + (balance ? TJb * parts.tc : 0.0)) / Qr : Tin;
   st.side_temperature_c = qs > 0.0 ? ts / qs : Tin;
   st.power_loss_w = P;
   st.friction_power_w = sol.friction_torque_nm * omega;
