@@ -76,7 +76,8 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
   for (int r = 0; r < nr; ++r) grp[r] = r;
   std::function<int(int)> root = [&](int r) { return grp[r] == r ? r : grp[r] = root(grp[r]); };
   for (int r = 0; r < nr; ++r) {
-    const int u = pos[static_cast<std::size_t>(thermal[static_cast<std::size_t>(ring[r])].upstream)];
+    const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
+    const int u = pos[static_cast<std::size_t>(thermal[i].upstream)];
     if (u >= 0) grp[root(r)] = root(u);
   }
   std::vector<int> jrow(nr, -1);  // the row of each pad's journal unknown (-1: fixed journal)

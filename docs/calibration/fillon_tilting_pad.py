@@ -99,8 +99,8 @@ def walls(tp) -> None:
         print(f"  λ = {lam}: {cpu:.2f} s CPU (adiabatic, same speeds: {cpu_ad:.2f} s)")
         for (rpm, r), a, meas in zip(rows, ad, MEASURED_C):
             tw = r.max_wall_temperature_c_total
-            print(f"    {rpm:6.0f} rpm {r.status:>4}  pad surface {tw:6.2f} °C (Δ {tw - meas:+6.2f}"
-                  f" vs {meas:4.1f})  film {r.max_temperature_c_total:6.2f}  journal "
+            print(f"    {rpm:6.0f} rpm {r.status:>4}  pad surface {tw:6.2f} °C "
+                  f"(Δ {tw - meas:+6.2f} vs {meas:4.1f})  film {r.max_temperature_c_total:6.2f}  journal "
                   f"{r.journal_temperature_c[0]:6.2f}  ε {r.eccentricity_ratio:.3f}  P "
                   f"{r.power_loss_w_total:6.1f} W  to pads {r.heat_to_bush_w.sum():6.1f} W  "
                   f"steps {r.iterations} (adiabatic {a.iterations})")

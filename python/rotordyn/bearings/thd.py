@@ -71,7 +71,8 @@ class ThdEquilibriumResult:
     ``max_wall_temperature_c`` the hottest bush surface over the film (the film's own where no
     heat crosses; :mod:`rotordyn.bearings.thd_walls`).
     Fields (n_circ, n_axial + 1): ``temperature_c``, ``viscosity_pa_s`` (the field K, C and the
-    equilibrium used), ``inlet_mask``, ``wall_temperature_c`` (the bush surface). K (N/m), C (N·s/m) 2×2 with dF = −K dq − C dq̇.
+    equilibrium used), ``inlet_mask``, ``wall_temperature_c`` (the bush surface). K (N/m),
+    C (N·s/m) 2×2 with dF = −K dq − C dq̇.
     """
 
     speed_hz: float
