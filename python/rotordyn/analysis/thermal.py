@@ -251,5 +251,5 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         inlet_mask=tuple(np.array(s.inlet_mask) for s in st) if thd else (),
         flows=tuple({k: np.array(getattr(s.flows, k)) for k in FLOW_FIELDS} for s in st)
         if thd else (),
-        **({f: col(f) for f in WALL_COLUMNS} if thd else {}),
+        **{f: col(f) if thd else np.full(len(rows), np.nan) for f in WALL_COLUMNS},
         wall_temperature_c=tuple(np.array(s.wall_temperature_c) for s in st) if thd else ())
