@@ -51,7 +51,10 @@ def main() -> int:
     for bad in (lambda: rd.equilibrium(rig, float("nan")),
                 lambda: rd.JournalBearing(diameter_m=-1.0, length_m=0.04, clearance_m=3e-4,
                                           viscosity_pa_s=0.04),
-                lambda: b.forces(x_m=1.0, y_m=0.0, speed_hz=50.0)):
+                lambda: b.forces(x_m=1.0, y_m=0.0, speed_hz=50.0),
+                lambda: rd._core.track_modes(np.zeros((2, 2), complex), [np.eye(2)],
+                                             np.zeros((0, 0)), []),
+                lambda: rd._core.linear_assignment(np.array([[0.0, np.nan]]))):
         try:
             bad()
         except rd.RotordynError:

@@ -10,6 +10,10 @@ machine load printed before and after, the baselines measured in the same run:
 * ours, isothermal: equilibrium from the load + K, C at μ(40 °C) (the same grooved film);
 * ours, THD: the THD equilibrium from the load (energy equation, μ(T) per node, one C++ call)
   + K, C with the field frozen (``JournalBearing.thermal_equilibrium(model="thd")``);
+* ours, THD with the walls' heat paths (rotordyn.bearings.thd_walls: the film's own conduction
+  to the walls, the journal's temperature from its heat balance, 1-D conduction through a
+  20 mm steel bush, k_b = 50 W/(m K), to its back face at 300 W/(m² K) in oil at the supply
+  temperature) + K, C with the field frozen — the cost of the walls beside the adiabatic THD;
 * ours, THD + the stiffness with the temperature following the journal (ROSS's definition of
   K: four more THD equilibria under perturbed loads, central differences);
 * ROSS, THD: ``PlainJournal(...)`` — its equilibrium from the load (Nelder–Mead over
@@ -17,6 +21,10 @@ machine load printed before and after, the baselines measured in the same run:
   at perturbed positions and velocities). Its numba kernels are compiled in an untimed
   warm-up; the bearing is rebuilt every run and ROSS's caches are cleared before it, so no
   result is reused.
+
+Without ROSS the script times ours alone, on our ISO VG 68 (Walther through 68 and 8.6 mm²/s
+at 40 and 100 °C, ρ 867 kg/m³, c 1951 J/(kg K): ROSS's lubricant entries) — the walls' cost
+beside the adiabatic THD needs no baseline from elsewhere.
 
 Printed after the timings: the comparison on equal inputs (eccentricity, attitude, temperature
 field at ROSS's volume centres, pad outlet temperatures, K, C entries in % of the largest).
@@ -33,6 +41,7 @@ import os
 for _v in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "NUMBA_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_v, "1")
 
+import dataclasses  # noqa: E402
 import statistics  # noqa: E402
 import sys  # noqa: E402
 import time  # noqa: E402
@@ -58,6 +67,46 @@ def _pct(a: np.ndarray) -> str:
     return ", ".join(f"{100 * x:+.1f}" for x in np.asarray(a).ravel())
 
 
+WALLS = dict(wall_htc="film", journal_wall="balance", bush_wall="conduction",
+             bush_thickness_m=0.02, bush_conductivity_w_per_m_k=50.0, back_htc_w_m2k=300.0)
+
+
+def ours_without_ross(n_circ: int, n_axial: int):
+    """The case's bearing on our ISO VG 68 law (ROSS's density and specific heat)."""
+    import rotordyn
+    from rotordyn.bearings import Groove, Oil
+
+    oil = Oil(viscosity_law="walther", t1_c=40.0, nu1_mm2_s=68.0, t2_c=100.0, nu2_mm2_s=8.6,
+              density_kg_m3=867.0, specific_heat_j_per_kg_k=1951.0)
+    jb = rotordyn.JournalBearing(
+        diameter_m=case.D_M, length_m=case.L_M, clearance_m=case.C_M,
+        viscosity_pa_s=oil.viscosity_pa_s(case.SUPPLY_C), n_circ=n_circ, n_axial=n_axial,
+        cavitation="gumbel", grooves=[Groove(0.0, case.GROOVE_DEG),
+                                      Groove(180.0, case.GROOVE_DEG)])
+    return jb, oil
+
+
+def _ours_lines(med, res, rw, head: bool = True) -> None:
+    """Our timings: isothermal, adiabatic THD, THD with the walls, field-following K."""
+    if head:
+        print(f"  ours isothermal equilibrium + K, C          : cpu {fmt(med['iso'][1])}, wall "
+              f"{fmt(med['iso'][0])}")
+        print(f"  ours THD equilibrium + K, C (field frozen)  : cpu {fmt(med['thd'][1])}, wall "
+              f"{fmt(med['thd'][0])}  ({med['thd'][1] / med['iso'][1]:.1f}x the isothermal "
+              f"CPU; {res.iterations} outer steps)")
+    print(f"  ours THD with the walls + K, C              : cpu {fmt(med['thd_walls'][1])}, "
+          f"wall {fmt(med['thd_walls'][0])}  ({med['thd_walls'][1] / med['thd'][1]:.2f}x the "
+          f"adiabatic THD CPU, {med['thd_walls'][1] / med['iso'][1]:.1f}x the isothermal; "
+          f"{rw.iterations} outer steps)")
+    print(f"    adiabatic: T_max {res.max_temperature_c:.2f} degC, eps "
+          f"{res.eccentricity_ratio:.4f}; walls: T_max {rw.max_temperature_c:.2f} degC, bush "
+          f"surface max {rw.max_wall_temperature_c:.2f} degC, journal "
+          f"{rw.journal_temperature_c:.2f} degC, to the bush {rw.heat_to_bush_w:.1f} W of "
+          f"{rw.power_loss_w:.1f} W, eps {rw.eccentricity_ratio:.4f}")
+    print(f"  ours THD + field-following K (4 more THD)   : cpu {fmt(med['thd_ff'][1])}, wall "
+          f"{fmt(med['thd_ff'][0])}")
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=21)
@@ -67,15 +116,16 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     header("THD plain journal bearing beside ROSS's thermal PlainJournal (issue 20)")
     ross = import_ross()
-    if ross is None:
-        print("ROSS not installed: no baseline (pip install ross-rotordynamics 'plotly<7')")
-        footer()
-        return 0
     n, k = args.grid, args.axial
-    w, cpu, rb = timed(lambda: case.ross_bearing(ross, n, k))  # warm-up: numba compiles
-    print(f"ROSS warm-up (numba compilation included): {fmt(cpu)} CPU, {fmt(w)} wall")
-    ro = case.ross_outputs(rb)
-    jb, oil, dev = case.ours(ro, n, k)
+    if ross is None:
+        print("ROSS not installed: ours only, on our ISO VG 68 law (pip install "
+              "ross-rotordynamics 'plotly<7' for the baseline)")
+        jb, oil = ours_without_ross(n, k)
+    else:
+        w, cpu, rb = timed(lambda: case.ross_bearing(ross, n, k))  # warm-up: numba compiles
+        print(f"ROSS warm-up (numba compilation included): {fmt(cpu)} CPU, {fmt(w)} wall")
+        ro = case.ross_outputs(rb)
+        jb, oil, dev = case.ours(ro, n, k)
     mu_s = oil.viscosity_pa_s(case.SUPPLY_C)
 
     def iso():
@@ -84,6 +134,12 @@ def main(argv=None) -> int:
 
     def thd():
         return case.thd(jb, oil)
+
+    def thd_walls():
+        return jb.thermal_equilibrium(load_n=case.LOAD_N, speed_hz=case.SPEED_HZ,
+                                      oil=dataclasses.replace(oil, conductivity_w_per_m_k=0.13),
+                                      supply_temperature_c=case.SUPPLY_C, carry_over=0.0,
+                                      model="thd", **WALLS)
 
     def thd_ff():
         return case.thd(jb, oil), case.field_following_stiffness(jb, oil)
@@ -94,18 +150,26 @@ def main(argv=None) -> int:
         cleared.append(clear_ross_caches(rb))  # PlainJournal memoises nothing in ROSS 2.3
         return case.ross_bearing(ross, n, k)
 
-    for fn in (iso, thd, thd_ff):
+    for fn in (iso, thd, thd_walls, thd_ff):
         fn()
-    t = {"iso": [], "thd": [], "thd_ff": [], "ross": []}
-    for r in range(max(args.repeat, args.ross_repeat)):
+    t = {"iso": [], "thd": [], "thd_walls": [], "thd_ff": [], "ross": []}
+    for r in range(max(args.repeat, args.ross_repeat if ross is not None else 0)):
         if r < args.repeat:
-            for key, fn in (("iso", iso), ("thd", thd), ("thd_ff", thd_ff)):
+            for key, fn in (("iso", iso), ("thd", thd), ("thd_walls", thd_walls),
+                            ("thd_ff", thd_ff)):
                 t[key].append(timed(fn)[:2])
-        if r < args.ross_repeat:
+        if ross is not None and r < args.ross_repeat:
             t["ross"].append(timed(ross_run)[:2])
     med = {key: (statistics.median(x[0] for x in v), statistics.median(x[1] for x in v))
-           for key, v in t.items()}
+           for key, v in t.items() if v}
     res = thd()
+    rw = thd_walls()
+    if ross is None:
+        print(f"ours only ({n} x {k} intervals, {case.SPEED_HZ:g} Hz, load {case.LOAD_N} N, "
+              f"one thread, medians of {args.repeat} interleaved runs):")
+        _ours_lines(med, res, rw)
+        footer()
+        return 0
     k_ff = case.field_following_stiffness(jb, oil)
     e_iso, _ = iso()
     cmp_ = case.compare(res, ro, k_ff)
@@ -121,8 +185,7 @@ def main(argv=None) -> int:
           f"{fmt(med['thd'][0])}  ({med['thd'][1] / med['iso'][1]:.1f}x the isothermal CPU, "
           f"{med['thd'][0] / med['iso'][0]:.1f}x wall; goal <= 5x; {res.iterations} outer "
           f"steps)")
-    print(f"  ours THD + field-following K (4 more THD)   : cpu {fmt(med['thd_ff'][1])}, wall "
-          f"{fmt(med['thd_ff'][0])}")
+    _ours_lines(med, res, rw, head=False)
     print(f"  ROSS THD equilibrium + K, C                 : cpu {fmt(med['ross'][1])}, wall "
           f"{fmt(med['ross'][0])}  (bearing rebuilt each run; ROSS caches cleared before it: "
           f"{max(cleared, default=0)} found)")

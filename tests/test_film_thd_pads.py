@@ -40,6 +40,7 @@ import rotordyn
 from rotordyn import _core
 from rotordyn.bearings import FixedGeometryBearing, Oil, TiltingPadBearing
 from rotordyn.errors import InputError
+from thd_balance import pad_balance as _pad_balance
 from thd_balance import upwind_faces
 
 MODELS = Path(__file__).parent / "data" / "models"
@@ -89,37 +90,6 @@ def test_temperature_independent_viscosity_is_the_isothermal_bearing_bit_for_bit
     assert np.array_equal(res.K_full, kb + tp.system_parts(0, 1, 2, "b").K)
     r_iso, _, _, _ = tp.full_coefficients(SPEED, LOAD)
     np.testing.assert_allclose(res.r, r_iso, atol=1e-9 * tp.clearance_m)
-
-
-def _pad_balance(T, D, fl, rho_c, ts):
-    """Heat carried out of one pad by its flows minus what they bring in (W), the pad cells'
-    dissipation (W) and the largest relative mass imbalance of a non-inlet interior cell."""
-    qp, qz = fl["q_phi_m3_s"], fl["q_z_m3_s"]
-    n, k1 = T.shape
-    inflow = np.zeros_like(T)
-    outflow = np.zeros_like(T)
-    heat = 0.0
-    for a, b, F in upwind_faces(qp, qz):
-        inflow[b] += F
-        outflow[a] += F
-        if D[b] and not D[a]:
-            heat += F * T[a]          # out of the pad into the gap (trailing edge)
-        elif D[a] and not D[b]:
-            heat -= F * T[a]          # from the inlet gap into the pad
-    imb = 0.0
-    for j in range(n):
-        for k in range(k1):
-            if D[j, k]:
-                continue
-            B = inflow[j, k] - outflow[j, k]
-            if D[(j + 1) % n, k]:             # trailing-edge column (prescribed pressure, end
-                heat += B * T[j, k]           # cells too): what it does not pass on, at its T
-            elif k in (0, k1 - 1):            # open end: leaves (or ambient oil at T_s enters)
-                heat += B * (T[j, k] if B > 0 else ts)
-            else:                             # mass not passed on leaves at the cell's T
-                heat += B * T[j, k]
-                imb = max(imb, abs(B) / max(inflow[j, k], 1e-300))
-    return rho_c * heat, fl["dissipation_w"][~D].sum(), imb
 
 
 def test_heat_carried_out_equals_dissipation_per_pad_and_the_carry_over_mixing():

@@ -212,10 +212,12 @@ def test_limit_cycle_chunk_equals_the_former_per_row_code(replayed_branches, spe
 def test_schemas_equal_the_stored_ones_of_the_code_before():
     """Column names, order and arrow types of a chunk's table against
     tests/data/sweep_point_schemas.json, written by ``schema()`` of the code at 6ea1047 (before
-    the columnar blocks) for axes speed_hz × chamber_pressure_pa, plus the hopf and
-    limit_cycle rows' ``l1_refined`` (float64 after ``amplitude_coefficient_m2``: the hopf
-    analysis's ``grid_check``, added since): a changed dtype fails here even where both paths
-    of the comparisons above would change together."""
+    the columnar blocks) for axes speed_hz × chamber_pressure_pa: a changed dtype fails here
+    even where both paths of the comparisons above would change together. (Changed on purpose
+    since: the hopf and limit_cycle rows' ``l1_refined``, float64 after
+    ``amplitude_coefficient_m2``, the hopf analysis's ``grid_check``; the ``thermal`` rows' four
+    THD wall columns, journal_temperature_c … heat_to_bush_w, float64, before ``iterations``;
+    docs/film-physics.md.)"""
     import json
 
     stored = json.loads((Path(__file__).parent / "data" / "sweep_point_schemas.json")

@@ -65,7 +65,10 @@ def test_compacted_into_few_files(reference):
     assert pq.ParquetFile(ref / names[0]).num_row_groups == 3
 
 
-def test_threads_processes_identical(reference, tmp_path):
+def test_threads_processes_identical(reference, tmp_path, monkeypatch):
+    """2 threads, then 2 worker processes (started whatever the map's size), against the
+    one-thread reference."""
+    _workers_only(monkeypatch)
     spec, ref = reference
     want = _digest(ref)
     assert run_sweep(spec, tmp_path / "t2", threads=2).complete
@@ -76,13 +79,14 @@ def test_threads_processes_identical(reference, tmp_path):
                                   check_exact=True)
 
 
-def test_workers_while_port_8787_is_taken(reference, tmp_path):
+def test_workers_while_port_8787_is_taken(reference, tmp_path, monkeypatch):
     """A --workers sweep while another program (e.g. a second sweep, or a dask dashboard)
     holds port 8787: the LocalCluster's HTTP endpoints go to a free port, with no warning
     (warnings are errors in this suite) and the same rows. Before: dask bound them to 8787
     even without a dashboard, warned 'port 8787 is already in use' and retried."""
     import socket
 
+    _workers_only(monkeypatch)  # a cluster, small map or not
     spec, ref = reference
     holder = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
     try:
@@ -99,26 +103,112 @@ def test_workers_while_port_8787_is_taken(reference, tmp_path):
 
 
 def test_driver_then_workers_identical(reference, tmp_path, monkeypatch):
-    """--workers: the driver computes chunks while the LocalCluster starts, then hands the
-    chunks not yet begun to the workers. Forced here to exactly 2 chunks in the driver and 7
-    on the workers: the dataset equals the one-thread reference bit for bit."""
+    """--workers: the driver's threads compute chunks while the LocalCluster starts, then
+    hand the chunks not yet begun to the workers. Forced here to start the cluster (the map
+    is small) and to stop the driver's 2 threads after 2 chunks (3 if both held one): the rest
+    run on the workers, and the dataset equals the one-thread reference bit for bit."""
     from rotordyn.sweep import execution
 
     seen = []
 
     class TwoFirst(execution.StartingCluster):
-        def _started(self):  # the driver's thread stops after 2 chunks, whatever the start
+        def _worth_a_cluster(self, seconds_left):
+            return True
+
+        def _started(self):  # the driver's threads stop after 2 chunks, whatever the start
             return self.local >= 2
 
         def close(self):
-            seen.append(self.local)
+            seen.append((self.local, self.cluster))
             super().close()
 
     monkeypatch.setattr(execution, "StartingCluster", TwoFirst)
     spec, ref = reference
     assert run_sweep(spec, tmp_path / "h", workers=2, progress=False).complete
-    assert seen == [2]
+    assert len(seen) == 1 and seen[0][0] in (2, 3) and seen[0][1]
     assert _digest(tmp_path / "h") == _digest(ref)
+
+
+def _workers_only(monkeypatch):
+    """--workers with every chunk on the worker processes (the cluster started first)."""
+    from rotordyn.sweep import execution
+
+    class WorkersOnly(execution.StartingCluster):
+        def _overlap(self, job, tasks):
+            self.dask = execution.Dask(None, self.workers, self.timeout, self.progress)
+            self.cluster = True
+            return 0
+            yield  # a generator, as the method it replaces
+
+    monkeypatch.setattr(execution, "StartingCluster", WorkersOnly)
+
+
+def test_small_map_stays_on_the_driver(reference, tmp_path, monkeypatch):
+    """--workers 2 on a map whose remaining time on the driver's threads is below a
+    LocalCluster's start: no worker process is started, every chunk runs on the driver's 2
+    threads, the dataset is the reference's."""
+    from rotordyn.sweep import execution
+
+    seen = []
+
+    class Watch(execution.StartingCluster):
+        def close(self):
+            seen.append((self.local, self.cluster))
+            super().close()
+
+    monkeypatch.setattr(execution, "StartingCluster", Watch)
+    spec, ref = reference
+    assert run_sweep(spec, tmp_path / "s", workers=2, progress=False).complete
+    assert seen == [(9, False)]
+    assert _digest(tmp_path / "s") == _digest(ref)
+
+
+@pytest.mark.parametrize("start_s, cluster", [(0.5, True), (20.0, False)])
+def test_cluster_decision_from_the_warm_chunks(monkeypatch, start_s, cluster):
+    """The decision on timed fake chunks: 100 tasks on 2 threads, a first chunk per thread of
+    0.3 s (the model build) then 0.02 s each, i.e. ~1 s left on the threads after the first
+    warm chunk (~15 s if judged from a first chunk): a start cost of 0.5 s starts the cluster
+    (which takes the chunks not yet begun), one of 20 s keeps the map on the driver. Every
+    chunk is yielded exactly once either way."""
+    import threading
+
+    from rotordyn.sweep import execution
+
+    warm = threading.local()
+
+    def task(job, cid, lo, hi):
+        time.sleep(0.02 if getattr(warm, "done", False) else 0.3)
+        warm.done = True
+        return cid, {}
+
+    class FakeDask:
+        def __init__(self, *a):
+            self.closed = False
+
+        def map(self, job, tasks):
+            for t in tasks:
+                yield t[0], (t[0], {})
+
+        def close(self):
+            self.closed = True
+
+    class Progress:
+        def status(self, text):
+            pass
+
+    monkeypatch.setattr(execution, "_task", task)
+    monkeypatch.setattr(execution, "Dask", FakeDask)
+    monkeypatch.setattr(execution, "CLUSTER_START_S", start_s)
+    ex = execution.StartingCluster(2, 30.0, Progress())
+    tasks = [(i, i, i + 1) for i in range(100)]
+    got = [cid for cid, _ in ex.map(None, tasks)]
+    ex.close()
+    assert sorted(got) == list(range(100))
+    assert ex.cluster is cluster
+    if cluster:
+        assert 2 < ex.local < 60  # a warm chunk was awaited, then the rest went to the cluster
+    else:
+        assert ex.local == 100
 
 
 def test_resume_identical(reference, tmp_path):

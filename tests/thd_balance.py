@@ -1,7 +1,9 @@
 """Energy balance of a THD film recomputed from its returned fields (used by the THD tests):
 the heat the face flows carry out of the film (upwind face temperatures), the heat the walls
 take, the dissipation of the film's cells and the worst relative mass defect of an inner cell.
-(On bare arrays, with the wall term; test_film_thd.py and test_film_thd_active.py use it.)"""
+(On bare arrays, with the wall term; test_film_thd.py and test_film_thd_active.py use it;
+:func:`pad_balance` the same for one pad of a pad bearing, test_film_thd_pads.py and
+test_thd_walls.py.)"""
 
 import numpy as np
 
@@ -52,3 +54,34 @@ def balance(T, inlet_mask, flows, rho_c, ts, h_wall=0.0, t_wall=0.0):
     diss = float(np.asarray(flows["dissipation_w"])[~D].sum())
     wall = float((h_wall * np.asarray(flows["area_m2"]) * (T - t_wall))[~D].sum())
     return rho_c * heat, diss, wall, mass
+
+
+def pad_balance(T, D, fl, rho_c, ts):
+    """Heat carried out of one pad by its flows minus what they bring in (W), the pad cells'
+    dissipation (W) and the largest relative mass imbalance of a non-inlet interior cell."""
+    qp, qz = fl["q_phi_m3_s"], fl["q_z_m3_s"]
+    n, k1 = T.shape
+    inflow = np.zeros_like(T)
+    outflow = np.zeros_like(T)
+    heat = 0.0
+    for a, b, F in upwind_faces(qp, qz):
+        inflow[b] += F
+        outflow[a] += F
+        if D[b] and not D[a]:
+            heat += F * T[a]          # out of the pad into the gap (trailing edge)
+        elif D[a] and not D[b]:
+            heat -= F * T[a]          # from the inlet gap into the pad
+    imb = 0.0
+    for j in range(n):
+        for k in range(k1):
+            if D[j, k]:
+                continue
+            B = inflow[j, k] - outflow[j, k]
+            if D[(j + 1) % n, k]:             # trailing-edge column (prescribed pressure, end
+                heat += B * T[j, k]           # cells too): what it does not pass on, at its T
+            elif k in (0, k1 - 1):            # open end: leaves (or ambient oil at T_s enters)
+                heat += B * (T[j, k] if B > 0 else ts)
+            else:                             # mass not passed on leaves at the cell's T
+                heat += B * T[j, k]
+                imb = max(imb, abs(B) / max(inflow[j, k], 1e-300))
+    return rho_c * heat, fl["dissipation_w"][~D].sum(), imb

@@ -18,6 +18,13 @@ void bind_thd(py::module_& m) {
       .def_readwrite("bush_htc_w_m2k", &ThdOptions::bush_htc_w_m2k)
       .def_readwrite("journal_temperature_c", &ThdOptions::journal_temperature_c)
       .def_readwrite("bush_temperature_c", &ThdOptions::bush_temperature_c)
+      .def_readwrite("film_htc", &ThdOptions::film_htc)
+      .def_readwrite("journal_balance", &ThdOptions::journal_balance)
+      .def_readwrite("bush_conduction", &ThdOptions::bush_conduction)
+      .def_readwrite("bush_thickness_m", &ThdOptions::bush_thickness_m)
+      .def_readwrite("bush_conductivity_w_per_m_k", &ThdOptions::bush_conductivity_w_per_m_k)
+      .def_readwrite("back_htc_w_m2k", &ThdOptions::back_htc_w_m2k)
+      .def_readwrite("back_temperature_c", &ThdOptions::back_temperature_c)
       .def_readwrite("tol_k", &ThdOptions::tol_k)
       .def_readwrite("max_iter", &ThdOptions::max_iter)
       .def("validate", &ThdOptions::validate, py::arg("oil"));
@@ -37,7 +44,10 @@ void bind_thd(py::module_& m) {
       .def_readonly("side_flow_m3_s", &ThdFilmState::side_flow_m3_s)
       .def_readonly("supply_flow_m3_s", &ThdFilmState::supply_flow_m3_s)
       .def_readonly("heat_to_journal_w", &ThdFilmState::heat_to_journal_w)
-      .def_readonly("heat_to_bush_w", &ThdFilmState::heat_to_bush_w);
+      .def_readonly("heat_to_bush_w", &ThdFilmState::heat_to_bush_w)
+      .def_readonly("journal_temperature_c", &ThdFilmState::journal_temperature_c)
+      .def_readonly("wall_temperature_c", &ThdFilmState::wall_temperature_c)
+      .def_readonly("max_wall_temperature_c", &ThdFilmState::max_wall_temperature_c);
   py::class_<ThdEquilibrium>(m, "ThdEquilibrium")
       .def_readonly("equilibrium", &ThdEquilibrium::equilibrium)
       .def_readonly("coefficients", &ThdEquilibrium::coefficients)

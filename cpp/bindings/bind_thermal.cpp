@@ -29,6 +29,7 @@ void bind_thermal(py::module_& m) {
       .def_readwrite("mu2_pa_s", &OilModel::mu2_pa_s)
       .def_readwrite("density_kg_m3", &OilModel::density_kg_m3)
       .def_readwrite("specific_heat_j_per_kg_k", &OilModel::specific_heat_j_per_kg_k)
+      .def_readwrite("conductivity_w_per_m_k", &OilModel::conductivity_w_per_m_k)
       .def_readwrite("t_min_c", &OilModel::t_min_c)
       .def_readwrite("t_max_c", &OilModel::t_max_c)
       .def("validate", &OilModel::validate)
@@ -88,7 +89,12 @@ void bind_thermal(py::module_& m) {
       .def_readonly("recirculation_temperature_c",
                     &ThermalFilmState::recirculation_temperature_c)
       .def_readonly("inlet_mask", &ThermalFilmState::inlet_mask)
-      .def_readonly("flows", &ThermalFilmState::flows);
+      .def_readonly("flows", &ThermalFilmState::flows)
+      .def_readonly("heat_to_journal_w", &ThermalFilmState::heat_to_journal_w)
+      .def_readonly("heat_to_bush_w", &ThermalFilmState::heat_to_bush_w)
+      .def_readonly("journal_temperature_c", &ThermalFilmState::journal_temperature_c)
+      .def_readonly("max_wall_temperature_c", &ThermalFilmState::max_wall_temperature_c)
+      .def_readonly("wall_temperature_c", &ThermalFilmState::wall_temperature_c);
   py::class_<ThermalSystemResult>(m, "ThermalSystemResult")
       .def_readonly("equilibrium", &ThermalSystemResult::equilibrium)
       .def_readonly("films", &ThermalSystemResult::films)

@@ -68,6 +68,7 @@ void ThdOptions::validate(const OilModel& oil) const {
     throw InputError("tol_k: expected 1e-12 <= tol_k <= 1 K, got " + num(tol_k));
   if (!(max_iter >= 1 && max_iter <= 1000))
     throw InputError("max_iter: expected 1 <= max_iter <= 1000, got " + std::to_string(max_iter));
+  validate_walls(*this, oil);
 }
 
 ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
@@ -83,6 +84,12 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
   const double TB = std::isnan(opt.bush_temperature_c) ? Ts : opt.bush_temperature_c;
   const double hJ = opt.journal_htc_w_m2k, hB = opt.bush_htc_w_m2k;
   const double rc = oil.density_kg_m3 * oil.specific_heat_j_per_kg_k;
+  // the cells' heat paths to the walls (thd_walls.hpp); `legacy`: given coefficients to fixed
+  // wall temperatures, in the energy equation's original arithmetic
+  const WallModel wm = wall_model(opt, oil);
+  parts.walls.resize(static_cast<std::size_t>(nn));
+  for (int n = 0; n < nn; ++n)
+    parts.walls[static_cast<std::size_t>(n)] = wm.cell(sol.h_m.data()[n], fl.fill.data()[n]);
   // inlet nodes: the groove nodes and the end half cells of groove columns (their flows are
   // the supply's, as FilmSolution::inlet_flow_m3_s), or the column of maximum film
   std::vector<char> D(nn, 0);
@@ -168,6 +175,7 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
       if (n % K1 < Kl) link(n, n + 1, qz[n]);
     }
     Eigen::VectorXd b0 = Eigen::VectorXd::Zero(nn), b1 = Eigen::VectorXd::Zero(nn);
+    Eigen::VectorXd b2 = Eigen::VectorXd::Zero(wm.balance ? nn : 0);  // the journal's T_J
     std::vector<double> side_out(nn, 0.0);
     const double* A = fl.area_m2.data();
     const double* phi = fl.dissipation_w.data();
@@ -193,18 +201,27 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
           b0[n] -= rc * B * Ts;
         }
       }
-      diag[n] += (hJ + hB) * A[n];
-      b0[n] += phi[n] + A[n] * (hJ * TJ + hB * TB);
+      if (wm.legacy) {
+        diag[n] += (hJ + hB) * A[n];
+        b0[n] += phi[n] + A[n] * (hJ * TJ + hB * TB);
+      } else {  // loss to the walls (kJ + kB) T − (lJ + lB) T_J − (nJ + nB), per area
+        const CellWall& w = parts.walls[static_cast<std::size_t>(n)];
+        diag[n] += (w.kJ + w.kB) * A[n];
+        b0[n] += phi[n] + A[n] * (w.nJ + w.nB + (wm.balance ? 0.0 : (w.lJ + w.lB) * wm.TJ));
+        if (wm.balance) b2[n] = A[n] * (w.lJ + w.lB);
+      }
       if (!(diag[n] > 0.0)) {  // no inflow at all: the cell's outflow enters at T_s
         diag[n] = out[n] > 0.0 ? rc * out[n] : 1.0;
         b0[n] = out[n] > 0.0 ? b0[n] + rc * out[n] * Ts : Ts;
+        if (wm.balance && !(out[n] > 0.0)) b2[n] = 0.0;
       }
       trip.emplace_back(n, n, diag[n]);
     }
     // Solve M X = [b0 b1]. Upwind convection makes M lower triangular in the flow's order when
     // the flow graph (the inlet cutting the circle) has no cycle: one sweep in topological order
     // (Kahn); a recirculation cycle (e.g. a backflow eddy) falls back to the sparse LU.
-    Eigen::VectorXd X0(nn), X1(nn);
+    Eigen::VectorXd X0(nn), X1(nn), X2(b2.size());
+    const bool j2 = wm.balance;
     {
       std::vector<int> indeg(nn, 0), dstart(nn + 1, 0), dnode;
       for (const auto& t : trip)
@@ -239,6 +256,7 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
         if (D[n]) {
           X0[n] = 0.0;
           X1[n] = 1.0;
+          if (j2) X2[n] = 0.0;
         } else {
           double s0 = b0[n], s1 = 0.0;
           for (int i = ustart[n]; i < ustart[n + 1]; ++i) {
@@ -247,6 +265,11 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
           }
           X0[n] = s0 / diag[n];
           X1[n] = s1 / diag[n];
+          if (j2) {
+            double s2 = b2[n];
+            for (int i = ustart[n]; i < ustart[n + 1]; ++i) s2 += uw[i] * X2[unode[i]];
+            X2[n] = s2 / diag[n];
+          }
         }
         for (int i = dstart[n]; i < dstart[n + 1]; ++i)
           if (--indeg[dnode[i]] == 0) order.push_back(dnode[i]);
@@ -261,11 +284,12 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
           throw ConvergenceError("THD energy equation: the convection operator is singular");
         X0 = lu.solve(b0);
         X1 = lu.solve(b1);
+        if (j2) X2 = lu.solve(b2);
       }
     }
     // the flows into and out of the inlet: Q (inlet -> film), Q_r and its mixing-cup T (affine
     // in T_in: T_r = a + b T_in)
-    double Q = 0.0, Qr = 0.0, ta = 0.0, tb = 0.0;
+    double Q = 0.0, Qr = 0.0, ta = 0.0, tb = 0.0, tc = 0.0;
     auto inlet = [&](int a, int b, double F) {
       if (F < 0.0) {
         std::swap(a, b);
@@ -276,6 +300,7 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
         Qr += F;
         ta += F * X0[a];
         tb += F * X1[a];
+        if (j2) tc += F * X2[a];
       }
     };
     for (int n = 0; n < nn; ++n) {
@@ -291,7 +316,7 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
       // the flow the trailing-edge cells receive from the pad (their energy equations' inflow,
       // in_n: Σ in_n = Q_in − Q_s to round-off where the film conserves mass; a cavitated pad's
       // excess is scaled out, so the temperature is the trailing edge's profile).
-      double qte = 0.0, sa = 0.0, sb = 0.0, qs = 0.0;
+      double qte = 0.0, sa = 0.0, sb = 0.0, sc = 0.0, qs = 0.0;
       for (int n = 0; n < nn; ++n) {
         qs += side_out[n];
         if (D[n] || !(in[n] > 0.0)) continue;
@@ -301,29 +326,35 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
         qte += in[n];
         sa += in[n] * X0[n];
         sb += in[n] * X1[n];
+        if (j2) sc += in[n] * X2[n];
       }
       Qr = qte > 0.0 ? std::max(Q - qs, 0.0) : 0.0;
       ta = qte > 0.0 ? Qr * sa / qte : 0.0;
       tb = qte > 0.0 ? Qr * sb / qte : 0.0;
+      tc = qte > 0.0 ? Qr * sc / qte : 0.0;
     }
     parts.inlet = std::move(D);
     parts.side_out = std::move(side_out);
     parts.X0 = std::move(X0);
     parts.X1 = std::move(X1);
+    parts.X2 = std::move(X2);
     parts.Q = Q;
     parts.Qr = Qr;
     parts.ta = ta;
     parts.tb = tb;
+    parts.tc = tc;
   };
   solve(D, parts);
   if (jb >= 0 && wb > 0.0) {
     ThdFieldParts other;
+    other.walls = parts.walls;
     std::vector<char> Db(nn, 0);
     for (int k = 0; k < K1; ++k) Db[jb * K1 + k] = 1;
     solve(std::move(Db), other);
     const double wa = 1.0 - wb;  // every part is linear in the field: blend them all
     parts.X0 = wa * parts.X0 + wb * other.X0;
     parts.X1 = wa * parts.X1 + wb * other.X1;
+    if (wm.balance) parts.X2 = wa * parts.X2 + wb * other.X2;
     for (int n = 0; n < nn; ++n)
       parts.side_out[static_cast<std::size_t>(n)] =
           wa * parts.side_out[static_cast<std::size_t>(n)] +
@@ -332,9 +363,11 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
     parts.Qr = wa * parts.Qr + wb * other.Qr;
     parts.ta = wa * parts.ta + wb * other.ta;
     parts.tb = wa * parts.tb + wb * other.tb;
+    parts.tc = wa * parts.tc + wb * other.tc;
     parts.blend_column = jb;
     parts.blend_weight = wb;
   }
+  if (wm.balance) journal_sums(parts, N, K1);
   return parts;
 }
 
@@ -349,6 +382,17 @@ ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
                            "inlet " + num(Q) + " m^3/s, carried over " + num(lam * Qr) +
                            " m^3/s)");
   double Tin = Ts;
+  if (opt.journal_balance) {
+    // the inlet mixing and the journal's heat balance together (both affine in T_in, T_J):
+    //   (Q_f + λ Q_r − λ tb) T_in − λ tc T_J = Q_f T_s + λ ta,   jb T_in + jc T_J = −ja
+    Eigen::Matrix2d M;
+    M << Qf + lam * Qr - lam * parts.tb, -lam * parts.tc, parts.jb, parts.jc;
+    const Eigen::Vector2d x =
+        M.fullPivLu().solve(Eigen::Vector2d(Qf * Ts + lam * parts.ta, -parts.ja));
+    if (!x.allFinite())
+      throw ConvergenceError("THD energy equation: the journal's heat balance is singular");
+    return thd_state(std::move(parts), sol, opt, omega, x[0], Qf, x[1]);
+  }
   if (Qr > 0.0) {
     const double a = parts.ta / Qr, b = parts.tb / Qr;
     Tin = (Qf * Ts + lam * Qr * a) / (Qf + lam * Qr * (1.0 - b));
@@ -357,7 +401,7 @@ ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
 }
 
 ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const ThdOptions& opt,
-                       double omega, double Tin, double Qf) {
+                       double omega, double Tin, double Qf, double TJb) {
   ThdFilmState st;
   st.flows = std::move(parts.flows);
   const FilmFlows& fl = st.flows;
@@ -372,13 +416,21 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
   const double* A = fl.area_m2.data();
   const double* phi = fl.dissipation_w.data();
   const double Q = parts.Q, Qr = parts.Qr, ta = parts.ta, tb = parts.tb;
-  Eigen::VectorXd T = parts.X0 + Tin * parts.X1;
+  const bool balance = opt.journal_balance;
+  const bool legacy = !(opt.film_htc || balance || opt.bush_conduction);
+  const double tj = balance ? TJb : TJ;  // the journal's temperature
+  if (balance && !(std::isfinite(TJb) && parts.X2.size() == nn))
+    throw ConvergenceError("THD energy equation: no journal temperature from its balance");
+  Eigen::VectorXd T = balance ? Eigen::VectorXd(parts.X0 + Tin * parts.X1 + TJb * parts.X2)
+                              : Eigen::VectorXd(parts.X0 + Tin * parts.X1);
   if (mirror_symmetric(sol.h_m)) symmetrize(T.data(), N, K1);
   if (!T.allFinite())
     throw ConvergenceError("THD energy equation: non-finite film temperature");
   st.temperature_c = Eigen::Map<const RowMatrixXd>(T.data(), N, K1);
+  st.wall_temperature_c = st.temperature_c;
   st.inlet_mask.resize(N, K1);
   double area = 0.0, tmean = 0.0, qs = 0.0, ts = 0.0, P = 0.0, qj = 0.0, qb = 0.0;
+  double twmax = -std::numeric_limits<double>::infinity();
   // a pad film: the mean, the maximum and the power over the pad's cells only (the gap nodes
   // are not film: they hold the inlet temperature and their shear is not the pad's)
   double tmax = -std::numeric_limits<double>::infinity();
@@ -395,13 +447,25 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
     tmax = std::max(tmax, T[n]);
     // the walls of the film's cells (an inlet handed over: the film's share of its columns)
     const double wf = 1.0 - st.inlet_mask.data()[n];
-    qj += wf * hJ * A[n] * (T[n] - TJ);
-    qb += wf * hB * A[n] * (T[n] - TB);
+    const CellWall& w = parts.walls[static_cast<std::size_t>(n)];
+    if (legacy) {
+      qj += wf * hJ * A[n] * (T[n] - TJ);
+      qb += wf * hB * A[n] * (T[n] - TB);
+    } else {
+      qj += wf * A[n] * (w.kJ * T[n] - w.lJ * tj - w.nJ);
+      qb += wf * A[n] * (w.kB * T[n] - w.lB * tj - w.nB);
+    }
+    if (wf > 0.0) {
+      const double tw = w.pT * T[n] + w.pJ * tj + w.p0;
+      st.wall_temperature_c.data()[n] = tw;
+      twmax = std::max(twmax, tw);
+    }
   }
   st.max_temperature_c = parts.pad ? std::max(tmax, Tin) : T.maxCoeff();
   st.mean_temperature_c = tmean / area;
   st.inlet_temperature_c = Tin;
-  st.recirculation_temperature_c = Qr > 0.0 ? (ta + Tin * tb) / Qr : Tin;
+  st.recirculation_temperature_c =
+      Qr > 0.0 ? (ta + Tin * tb + (balance ? TJb * parts.tc : 0.0)) / Qr : Tin;
   st.side_temperature_c = qs > 0.0 ? ts / qs : Tin;
   st.power_loss_w = P;
   st.friction_power_w = sol.friction_torque_nm * omega;
@@ -411,6 +475,8 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
   st.supply_flow_m3_s = Qf;
   st.heat_to_journal_w = qj;
   st.heat_to_bush_w = qb;
+  st.journal_temperature_c = tj;
+  st.max_wall_temperature_c = twmax;
   return st;
 }
 

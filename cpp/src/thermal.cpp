@@ -51,6 +51,9 @@ const char* viscosity_law_name(ViscosityLaw law) {
 void OilModel::validate() const {
   positive(density_kg_m3, "density_kg_m3");
   positive(specific_heat_j_per_kg_k, "specific_heat_j_per_kg_k");
+  if (!(std::isfinite(conductivity_w_per_m_k) && conductivity_w_per_m_k >= 0.0))
+    throw InputError("conductivity_w_per_m_k: expected a finite value >= 0 W/(m K), got " +
+                     num(conductivity_w_per_m_k));
   if (!(std::isfinite(t_min_c) && std::isfinite(t_max_c) && t_min_c > -kKelvin &&
         t_min_c < t_max_c))
     throw InputError("t_min_c, t_max_c: expected -273.15 < t_min_c < t_max_c (the viscosity "

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -45,12 +46,19 @@ bool take_thd_state(const ThdFilmState& ts, const ThermalFilm& tf, const Eigen::
   st.viscosity_field = ts.flows.viscosity_pa_s;  // the field of this equilibrium
   st.inlet_mask = ts.inlet_mask;
   st.flows = ts.flows;
+  st.heat_to_journal_w = ts.heat_to_journal_w;
+  st.heat_to_bush_w = ts.heat_to_bush_w;
+  st.journal_temperature_c = ts.journal_temperature_c;
+  st.max_wall_temperature_c = ts.max_wall_temperature_c;
+  st.wall_temperature_c = ts.wall_temperature_c;
   return !(res > tf.thd_options.tol_k);
 }
 
 /// The THD pad films' inlet temperatures (Ettles' hot-oil carry-over from the upstream pad,
 /// ThermalFilm::upstream), solved together — each pad's field is affine in its inlet
 /// temperature, so the ring is one small linear system — then their states and next fields.
+/// A journal from its heat balance (journal_balance) is one more unknown per bearing (the
+/// pads linked by `upstream`): the net heat into it from all the bearing's pads is zero.
 void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldParts>& parts,
                 const std::vector<const FilmSolution*>& sols, const std::vector<double>& wfs,
                 const std::vector<int>& off, const Eigen::VectorXd& X, Eigen::VectorXd& GX,
@@ -63,8 +71,27 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
     }
   if (ring.empty()) return;
   const int nr = static_cast<int>(ring.size());
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(nr, nr);
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(nr);
+  // the bearings: pads linked by `upstream` share a journal (union–find over the ring)
+  std::vector<int> grp(nr);
+  for (int r = 0; r < nr; ++r) grp[r] = r;
+  std::function<int(int)> root = [&](int r) { return grp[r] == r ? r : grp[r] = root(grp[r]); };
+  for (int r = 0; r < nr; ++r) {
+    const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
+    const int u = pos[static_cast<std::size_t>(thermal[i].upstream)];
+    if (u >= 0) grp[root(r)] = root(u);
+  }
+  std::vector<int> jrow(nr, -1);  // the row of each pad's journal unknown (-1: fixed journal)
+  int n = nr;
+  for (int r = 0; r < nr; ++r) {
+    const ThdOptions& o = thermal[static_cast<std::size_t>(ring[r])].thd_options;
+    const int g = root(r);
+    if (o.journal_balance != thermal[static_cast<std::size_t>(ring[g])].thd_options.journal_balance)
+      throw InputError("journal_wall: the pads of one bearing need one journal model");
+    if (o.journal_balance && jrow[g] < 0) jrow[g] = n++;
+    jrow[r] = o.journal_balance ? jrow[g] : -1;
+  }
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
   std::vector<double> Qf(thermal.size(), 0.0);
   for (int r = 0; r < nr; ++r) {
     const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
@@ -86,13 +113,19 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
       throw ConvergenceError("THD energy equation, film '" + name + "': the pad draws no oil "
                              "(flow from the inlet " + num(pi.Q) + " m^3/s)");
     Qf[i] = qf;
-    // (Q_f + c) T_in,i − c (tb_u/Q_r,u) T_in,u = Q_f T_s + c ta_u/Q_r,u
+    // (Q_f + c) T_in,i − c (tb_u/Q_r,u) T_in,u [− c (tc_u/Q_r,u) T_J] = Q_f T_s + c ta_u/Q_r,u
     A(r, r) += qf + carried;
     if (carried > 0.0) {
       A(r, pos[u]) -= carried * pu.tb / pu.Qr;
+      if (jrow[r] >= 0) A(r, jrow[r]) -= carried * pu.tc / pu.Qr;
       b[r] += carried * pu.ta / pu.Qr;
     }
     b[r] += qf * o.supply_temperature_c;
+    if (jrow[r] >= 0) {  // the journal's balance: Σ_pads (ja + jb T_in + jc T_J) = 0
+      A(jrow[r], r) += pi.jb;
+      A(jrow[r], jrow[r]) += pi.jc;
+      b[jrow[r]] -= pi.ja;
+    }
   }
   const Eigen::VectorXd tin = A.fullPivLu().solve(b);
   if (!tin.allFinite())
@@ -101,7 +134,9 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
   for (int r = 0; r < nr; ++r) {
     const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
     ThdFilmState ts = thd_state(std::move(parts[i]), *sols[i], thermal[i].thd_options, wfs[i],
-                                tin[r], Qf[i]);
+                                tin[r], Qf[i],
+                                jrow[r] >= 0 ? tin[jrow[r]]
+                                             : std::numeric_limits<double>::quiet_NaN());
     if (!take_thd_state(ts, thermal[i], X, off[i], off[i + 1] - off[i], GX, films[i]))
       done = false;
   }

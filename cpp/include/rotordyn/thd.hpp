@@ -19,9 +19,11 @@
 // (carry_over) of the flow Q_r reaching the inlet from the film at its mixing-cup temperature
 // T_r (solved exactly: T is affine in T_in). The same mixing as the effective model.
 #pragma once
+#include <limits>
 #include <vector>
 
 #include "rotordyn/thermal.hpp"
+#include "rotordyn/thd_walls.hpp"
 
 namespace rotordyn {
 
@@ -44,6 +46,13 @@ struct ThdFilmState {
   double side_flow_m3_s = 0.0;     ///< through the ends from the film's end cells
   double supply_flow_m3_s = 0.0;   ///< Q_f (fresh oil)
   double heat_to_journal_w = 0.0, heat_to_bush_w = 0.0;
+  /// the journal's temperature (journal_temperature_c, or from its heat balance), degC
+  double journal_temperature_c = 0.0;
+  /// the bush (pad) surface temperature, degC (n_circ, n_axial + 1): the given bush
+  /// temperature, the conducting bush's surface, or the film's own where no heat crosses
+  /// (adiabatic); inlet nodes: the film's. Its maximum over the film's cells.
+  RowMatrixXd wall_temperature_c;
+  double max_wall_temperature_c = 0.0;
 };
 
 /// The energy equation at the solver's last (full-output) solution `sol` at ω (rad/s).
@@ -61,9 +70,15 @@ struct ThdFieldParts {
   std::vector<char> inlet;       ///< (n_nodes,) 1 on the inlet nodes
   std::vector<double> side_out;  ///< (n_nodes,) flow leaving through the ends, m³/s
   Eigen::VectorXd X0, X1;        ///< (n_nodes,) degC, degC/degC
+  /// a journal from its heat balance (ThdOptions::journal_balance): T = X0 + T_in X1 + T_J X2,
+  /// Q_r T_r = ta + T_in tb + T_J tc, and the net heat into the journal from the film's cells
+  /// (W) ja + T_in jb + T_J jc; otherwise X2 empty and tc = ja = jb = jc = 0
+  Eigen::VectorXd X2;
   double Q = 0.0;                ///< from the inlet into the film, m³/s
   double Qr = 0.0;               ///< from the film into the inlet (pad: Q − Σ side_out), m³/s
-  double ta = 0.0, tb = 0.0;     ///< Q_r T_r = ta + T_in tb
+  double ta = 0.0, tb = 0.0;     ///< Q_r T_r = ta + T_in tb (+ T_J tc)
+  double tc = 0.0, ja = 0.0, jb = 0.0, jc = 0.0;
+  std::vector<CellWall> walls;   ///< (n_nodes,) each cell's heat paths (thd_walls.hpp)
   bool pad = false;
   /// an ungrooved film's inlet handed over to a neighbour column (thd_field): that column
   /// (-1: none) and its weight w in (0, 1/2]; the parts are the blend (1 − w) · inlet at
@@ -75,8 +90,11 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
                         const OilModel& oil, const ThdOptions& opt, double omega, bool pad);
 /// The film's state at the inlet temperature T_in (degC) with the fresh flow Q_f (m³/s).
 /// A pad film's mean, maximum and power loss cover the pad's cells only (not the gap).
+/// `t_journal_c`: the journal's temperature from its heat balance (journal_balance; NaN
+/// otherwise: the fixed journal temperature).
 ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const ThdOptions& opt,
-                       double omega, double t_in_c, double supply_flow_m3_s);
+                       double omega, double t_in_c, double supply_flow_m3_s,
+                       double t_journal_c = std::numeric_limits<double>::quiet_NaN());
 
 struct ThdEquilibrium {
   EquilibriumSolution equilibrium;   ///< under the load with the viscosity field μ(T)

@@ -36,6 +36,9 @@ struct OilModel {
   double mu1_pa_s = 0.0278, mu2_pa_s = 0.0047;  ///< power: μ at t1_c, t2_c (VG 32: ρν)
   double density_kg_m3 = 870.0;
   double specific_heat_j_per_kg_k = 2000.0;
+  /// thermal conductivity k, W/(m K) (a mineral oil: 0.13); used by the THD film's
+  /// cross-film conduction to its walls (ThdOptions::film_htc)
+  double conductivity_w_per_m_k = 0.13;
   double t_min_c = -20.0, t_max_c = 200.0;  ///< range of the law (supply and film temperatures)
   /// InputError naming the field: positive properties, a law that falls with temperature,
   /// a valid range.
@@ -96,6 +99,24 @@ struct ThdOptions {
   /// T_J, T_B, degC; NaN: the supply temperature.
   double journal_temperature_c = std::numeric_limits<double>::quiet_NaN();
   double bush_temperature_c = std::numeric_limits<double>::quiet_NaN();
+  // The walls' own heat paths (thd_walls.hpp; docs/film-physics.md "Heat paths to the
+  // journal and through the bush or pad"):
+  /// the film-side coefficient of each wall from the film's own conduction across its
+  /// thickness, q = θ k/h (6 T − 4 T_wall − 2 T_other wall) per cell (the parabolic cross-film
+  /// profile of a uniform viscous heat source; k the oil's conductivity), instead of the
+  /// given journal_htc_w_m2k, bush_htc_w_m2k (which must then be 0)
+  bool film_htc = false;
+  /// the journal's temperature from its own heat balance: zero net heat flux into the
+  /// journal over the whole bearing (all its films), instead of journal_temperature_c
+  bool journal_balance = false;
+  /// the bush (pad) surface temperature from 1-D conduction through the bush (pad) to its
+  /// back face, which loses heat to the surrounding oil: q_B = U (T_w − T_o),
+  /// 1/U = t/k + 1/h_o, instead of a fixed bush_temperature_c
+  bool bush_conduction = false;
+  double bush_thickness_m = 0.0;              ///< t >= 0
+  double bush_conductivity_w_per_m_k = 0.0;   ///< k >= 0 (0: an insulating bush)
+  double back_htc_w_m2k = 0.0;                ///< h_o >= 0 (0: an insulated back face)
+  double back_temperature_c = std::numeric_limits<double>::quiet_NaN();  ///< T_o; NaN: T_s
   double tol_k = 1e-6;             ///< on max |ΔT| over the nodes between iterations, K
   int max_iter = 200;
   void validate(const OilModel& oil) const;  ///< InputError naming the field
@@ -146,6 +167,12 @@ struct ThermalFilmState {
   double recirculation_flow_m3_s = 0.0, recirculation_temperature_c = 0.0;
   RowMatrixXd inlet_mask;
   FilmFlows flows;
+  /// THD films: the heat the film gives its walls (W), the journal's temperature (fixed, or
+  /// from the journal's heat balance), the bush (pad) surface temperature field and its
+  /// maximum over the film's cells (ThdFilmState)
+  double heat_to_journal_w = 0.0, heat_to_bush_w = 0.0;
+  double journal_temperature_c = 0.0, max_wall_temperature_c = 0.0;
+  RowMatrixXd wall_temperature_c;
 };
 
 struct ThermalSystemResult {

@@ -22,9 +22,10 @@ from rotordyn.bearings import (ActiveJournalBearing, FixedGeometryBearing, Fluid
 from rotordyn.bearings.pad_thd import (check_carry_over, pad_options, pad_thermal_films,
                                        uniform_fields)
 from rotordyn.bearings.thd import THERMAL_MODELS, thd_options
+from rotordyn.bearings.thd_walls import WALL_DEFAULTS, WALL_OPTIONS
 from rotordyn.bearings.thermal import thermal_options
 from rotordyn.errors import InputError
-from rotordyn.results.thermal import SystemThermalResult
+from rotordyn.results.thermal import WALL_COLUMNS, SystemThermalResult
 from rotordyn.units import hz_to_rad_s
 
 # the energy equation's terms of a THD film (FilmFlows), per node (n_circ, n_axial + 1)
@@ -44,7 +45,8 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
                                journal_htc_w_m2k: float | None = None,
                                bush_htc_w_m2k: float | None = None,
                                journal_temperature_c: float | None = None,
-                               bush_temperature_c: float | None = None) -> SystemThermalResult:
+                               bush_temperature_c: float | None = None,
+                               **walls) -> SystemThermalResult:
     """Thermal equilibrium of ``system`` at ``speed_hz``: each plain or active journal bearing
     (``type = "journal"``, :class:`rotordyn.FluidFilmBearing`; ``type = "active_journal"``,
     :class:`rotordyn.ActiveJournalBearing`, whose film thickness includes the sleeve's
@@ -77,7 +79,12 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     ``journal_temperature_c``, ``bush_temperature_c`` °C, None: the model's, else the supply
     temperature); None: the model's ``[thermal] model`` (default "effective"). With
     "thd" the result's ``system`` carries each bearing's frozen viscosity field
-    (``viscosity_field_pa_s``) and ``temperature_c`` the fields."""
+    (``viscosity_field_pa_s``) and ``temperature_c`` the fields. ``walls``: the THD film's
+    heat paths (:mod:`rotordyn.bearings.thd_walls`: ``wall_htc``, ``journal_wall``,
+    ``bush_wall``, ``bush_thickness_m``, ``bush_conductivity_w_per_m_k``,
+    ``back_htc_w_m2k``, ``back_temperature_c``), each one left out: the model's ``[thermal]``
+    value, else its default; a journal from its heat balance is one per bearing (all its
+    pads)."""
     v.speed("speed_hz", speed_hz)
     if float(speed_hz) == 0.0:
         raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
@@ -139,16 +146,33 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
             return given
         return getattr(thermal_model, field) if thermal_model is not None else 0.0
     hj, hb = wall(journal_htc_w_m2k, "journal_htc_w_m2k"), wall(bush_htc_w_m2k, "bush_htc_w_m2k")
+    unknown = set(walls) - set(WALL_OPTIONS)
+    if unknown:
+        raise InputError(f"{sorted(unknown)[0]}: not an option of the thermal equilibrium")
+    def wall_opt(f):
+        return walls[f] if walls.get(f) is not None else \
+            getattr(thermal_model, f) if thermal_model is not None else WALL_DEFAULTS[f]
+    wall_kw = {f: wall_opt(f) for f in ("wall_htc", "journal_wall", "bush_wall")}
+    # the bush's conduction data: the model's only where its bush conducts here too
+    own = thermal_model is not None and thermal_model.bush_wall == wall_kw["bush_wall"]
+    wall_kw.update({f: walls[f] if walls.get(f) is not None else
+                    getattr(thermal_model, f) if own else WALL_DEFAULTS[f]
+                    for f in WALL_OPTIONS[3:]})
+    # a wall temperature the model gives does not apply where the call chooses the wall's
+    # own heat balance or conduction instead
     tj = journal_temperature_c if journal_temperature_c is not None else \
-        getattr(thermal_model, "journal_temperature_c", None)
+        getattr(thermal_model, "journal_temperature_c", None) \
+        if wall_kw["journal_wall"] != "balance" else None
     tb = bush_temperature_c if bush_temperature_c is not None else \
-        getattr(thermal_model, "bush_temperature_c", None)
+        getattr(thermal_model, "bush_temperature_c", None) \
+        if wall_kw["bush_wall"] != "conduction" else None
     opts = {i: options(i) for i in idx}
     thd_opts = {i: thd_options(supply_temperature_c=supply_temperature_c,
                                supply_flow_m3_s=opts[i].supply_flow_m3_s,
                                carry_over=opts[i].carry_over, journal_htc_w_m2k=hj,
                                bush_htc_w_m2k=hb, journal_temperature_c=tj,
-                               bush_temperature_c=tb, tol_k=tol_k) for i in idx} if thd else {}
+                               bush_temperature_c=tb, tol_k=tol_k, **wall_kw)
+                for i in idx} if thd else {}
     asm = assembled(system)
     omega = hz_to_rad_s(float(speed_hz))
     films = []
@@ -226,4 +250,6 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         temperature_c=tuple(np.array(s.temperature_c) for s in st) if thd else (),
         inlet_mask=tuple(np.array(s.inlet_mask) for s in st) if thd else (),
         flows=tuple({k: np.array(getattr(s.flows, k)) for k in FLOW_FIELDS} for s in st)
-        if thd else ())
+        if thd else (),
+        **{f: col(f) if thd else np.full(len(rows), np.nan) for f in WALL_COLUMNS},
+        wall_temperature_c=tuple(np.array(s.wall_temperature_c) for s in st) if thd else ())

@@ -275,7 +275,7 @@ class FixedGeometryBearing:
                             journal_temperature_c: float | None = None,
                             bush_temperature_c: float | None = None, tol_k: float = 1e-6,
                             model: str = "thd", effective_factor: float = 0.5,
-                            theta_x_rad: float = 0.0, theta_y_rad: float = 0.0):
+                            theta_x_rad: float = 0.0, theta_y_rad: float = 0.0, **walls):
         """Thermo-hydrodynamic equilibrium of the lobes under ``load_n`` (N) at ``speed_hz``
         (as :meth:`rotordyn.bearings.TiltingPadBearing.thermal_equilibrium`: per lobe the
         energy equation, each lobe's inlet groove mixing supply oil with the part
@@ -290,14 +290,15 @@ class FixedGeometryBearing:
         the lobes' films carry it (:mod:`rotordyn.bearings.tilt_thermal`) and the result
         adds the moments, the edge film and K4, C4 (4×4 over x, y, θx, θy) at the frozen
         field. (``config_theta_x_rad``, ``config_theta_y_rad`` are the housing's misalignment
-        in a system; standalone, give the journal's tilt here.)"""
+        in a system; standalone, give the journal's tilt here.) ``walls``: the THD film's heat
+        paths (:mod:`rotordyn.bearings.thd_walls`), as for tilting pads."""
         opts = pad_model_options(model, supply_temperature_c=supply_temperature_c,
                                  supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
                                  effective_factor=effective_factor, tol_k=tol_k,
                                  journal_htc_w_m2k=journal_htc_w_m2k,
                                  bush_htc_w_m2k=bush_htc_w_m2k,
                                  journal_temperature_c=journal_temperature_c,
-                                 bush_temperature_c=bush_temperature_c)
+                                 bush_temperature_c=bush_temperature_c, **walls)
         if self.tilt or theta_x_rad != 0.0 or theta_y_rad != 0.0:
             from rotordyn.bearings.tilt_thermal import tilted_thermal_equilibrium
 

@@ -85,7 +85,9 @@ def pad_options(opts, n_pads: int):
         o = _core.ThdOptions() if thd else _core.ThermalOptions()
         for f in ("supply_temperature_c", "carry_over", "tol_k", "max_iter") + (
                 ("journal_htc_w_m2k", "bush_htc_w_m2k", "journal_temperature_c",
-                 "bush_temperature_c") if thd else ("effective_factor",)):
+                 "bush_temperature_c", "film_htc", "journal_balance", "bush_conduction",
+                 "bush_thickness_m", "bush_conductivity_w_per_m_k", "back_htc_w_m2k",
+                 "back_temperature_c") if thd else ("effective_factor",)):
             setattr(o, f, getattr(opts, f))
         o.supply_flow_m3_s = opts.supply_flow_m3_s / n_pads
         return o
@@ -110,7 +112,8 @@ def pad_model_options(model: str, *, supply_temperature_c, supply_flow_m3_s, car
     from rotordyn.bearings.thd import film_thermal_options
 
     given = {k: x for k, x in walls.items() if x is not None and not (
-        k.endswith("_htc_w_m2k") and x == 0.0)} if model == "effective" else walls
+        k in ("journal_htc_w_m2k", "bush_htc_w_m2k") and x == 0.0)} \
+        if model == "effective" else walls
     return film_thermal_options(model, given, supply_temperature_c=supply_temperature_c,
                                 supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
                                 effective_factor=effective_factor, tol_k=tol_k)
@@ -184,6 +187,14 @@ class PadThdResult:
     h_min_z_m: float = math.nan
     K4: np.ndarray | None = field(default=None, repr=False)
     C4: np.ndarray | None = field(default=None, repr=False)
+    # the THD pads' walls (rotordyn.bearings.thd_walls), per pad: heat to the journal and to
+    # the pad (W), the journal's temperature (°C; one per bearing, repeated), the hottest pad
+    # surface (°C) and the pad surface fields; None for the effective model
+    heat_to_journal_w: np.ndarray | None = field(default=None, repr=False)
+    heat_to_bush_w: np.ndarray | None = field(default=None, repr=False)
+    journal_temperature_c: np.ndarray | None = field(default=None, repr=False)
+    max_wall_temperature_c: np.ndarray | None = field(default=None, repr=False)
+    wall_temperature_c: tuple = field(default=(), repr=False)
 
     @property
     def effective_temperature_c(self) -> np.ndarray:
@@ -198,6 +209,11 @@ class PadThdResult:
     def mean_temperature_c_total(self) -> float:
         """Mean over all pads' areas (pads of equal area: the mean of the pad means)."""
         return float(np.mean(self.mean_temperature_c))
+
+    @property
+    def max_wall_temperature_c_total(self) -> float:
+        """The hottest pad surface (THD; °C): the quantity a thermocouple in the pad reads."""
+        return float(np.max(self.max_wall_temperature_c))
 
     @property
     def power_loss_w_total(self) -> float:
@@ -242,6 +258,14 @@ class PadThdResult:
             cols[f] = [*a, float(np.sum(a))]
         cols["pad_tilt_rad"] = [*self.pad_tilts_rad, np.nan] if len(self.pad_tilts_rad) \
             else [np.nan] * (n + 1)
+        if self.max_wall_temperature_c is not None:  # THD: the walls
+            cols["max_wall_temperature_c"] = [*self.max_wall_temperature_c,
+                                              self.max_wall_temperature_c_total]
+            cols["journal_temperature_c"] = [*self.journal_temperature_c,
+                                             float(np.mean(self.journal_temperature_c))]
+            for f in ("heat_to_journal_w", "heat_to_bush_w"):
+                a = getattr(self, f)
+                cols[f] = [*a, float(np.sum(a))]
         df = pd.DataFrame(cols)
         df.insert(0, "speed_hz", self.speed_hz)
         df.insert(1, "supply_temperature_c", self.supply_temperature_c)
@@ -333,7 +357,12 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
         flows=tuple({k: np.array(getattr(s.flows, k)) for k in
                      ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2")}
                     for s in st) if thd else (),
-        status=eq.status, message=eq.message, thermal_model="thd" if thd else "effective")
+        status=eq.status, message=eq.message, thermal_model="thd" if thd else "effective",
+        **(dict(heat_to_journal_w=col("heat_to_journal_w"), heat_to_bush_w=col("heat_to_bush_w"),
+                journal_temperature_c=col("journal_temperature_c"),
+                max_wall_temperature_c=col("max_wall_temperature_c"),
+                wall_temperature_c=tuple(np.array(s.wall_temperature_c) for s in st))
+           if thd else {}))
 
 
 def uniform_fields(films, states) -> tuple:

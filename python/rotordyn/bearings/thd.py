@@ -19,6 +19,7 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
+from rotordyn.bearings.thd_walls import WALL_OPTIONS, check_walls, set_walls
 from rotordyn.bearings.thermal import thermal_options
 from rotordyn.errors import InputError
 
@@ -28,9 +29,11 @@ THERMAL_MODELS = ("effective", "thd")
 
 def thd_options(*, supply_temperature_c, supply_flow_m3_s=0.0, carry_over=0.0,
                 journal_htc_w_m2k=0.0, bush_htc_w_m2k=0.0, journal_temperature_c=None,
-                bush_temperature_c=None, tol_k=1e-6) -> _core.ThdOptions:
+                bush_temperature_c=None, tol_k=1e-6, **walls) -> _core.ThdOptions:
     """The core's THD options (numbers checked here; ranges by the core, naming the field).
-    ``journal_temperature_c``/``bush_temperature_c`` None: the supply temperature."""
+    ``journal_temperature_c``/``bush_temperature_c`` None: the supply temperature; ``walls``
+    the heat paths of :mod:`rotordyn.bearings.thd_walls` (``wall_htc``, ``journal_wall``,
+    ``bush_wall``, ``bush_thickness_m``, ...)."""
     o = _core.ThdOptions()
     o.supply_temperature_c = v.finite("supply_temperature_c", supply_temperature_c)
     o.supply_flow_m3_s = v.finite("supply_flow_m3_s", supply_flow_m3_s)
@@ -42,6 +45,15 @@ def thd_options(*, supply_temperature_c, supply_flow_m3_s=0.0, carry_over=0.0,
     if bush_temperature_c is not None:
         o.bush_temperature_c = v.finite("bush_temperature_c", bush_temperature_c)
     o.tol_k = v.finite("tol_k", tol_k)
+    w = check_walls(walls)
+    if w["journal_wall"] == "balance" and journal_temperature_c is not None:
+        raise InputError(f"journal_temperature_c: not used with journal_wall = 'balance' (the "
+                         f"journal's temperature follows from its heat balance), got "
+                         f"{journal_temperature_c}")
+    if w["bush_wall"] == "conduction" and bush_temperature_c is not None:
+        raise InputError(f"bush_temperature_c: not used with bush_wall = 'conduction' (the "
+                         f"back face's oil is back_temperature_c), got {bush_temperature_c}")
+    set_walls(o, w)
     return o
 
 
@@ -54,9 +66,13 @@ class ThdEquilibriumResult:
     of the flow reaching the inlet), ``side_temperature_c`` (of the side leakage). Flows m³/s:
     ``film_flow_m3_s`` Q from the inlet into the film, ``recirculation_flow_m3_s`` Q_r back to
     it, ``side_flow_m3_s``, ``supply_flow_m3_s`` Q_f. ``power_loss_w`` the dissipation of the
-    energy equation, ``friction_power_w`` torque·|ω|; heat to journal/bush (W, 0 adiabatic).
+    energy equation, ``friction_power_w`` torque·|ω|; heat to journal/bush (W, 0 adiabatic);
+    ``journal_temperature_c`` the journal's (fixed, or from its heat balance) and
+    ``max_wall_temperature_c`` the hottest bush surface over the film (the film's own where no
+    heat crosses; :mod:`rotordyn.bearings.thd_walls`).
     Fields (n_circ, n_axial + 1): ``temperature_c``, ``viscosity_pa_s`` (the field K, C and the
-    equilibrium used), ``inlet_mask``. K (N/m), C (N·s/m) 2×2 with dF = −K dq − C dq̇.
+    equilibrium used), ``inlet_mask``, ``wall_temperature_c`` (the bush surface). K (N/m),
+    C (N·s/m) 2×2 with dF = −K dq − C dq̇.
     """
 
     speed_hz: float
@@ -75,6 +91,8 @@ class ThdEquilibriumResult:
     supply_flow_m3_s: float
     heat_to_journal_w: float
     heat_to_bush_w: float
+    journal_temperature_c: float
+    max_wall_temperature_c: float
     x_m: float
     y_m: float
     eccentricity_ratio: float
@@ -85,6 +103,7 @@ class ThdEquilibriumResult:
     viscosity_pa_s: np.ndarray = field(repr=False)
     inlet_mask: np.ndarray = field(repr=False)
     flows: dict = field(repr=False)
+    wall_temperature_c: np.ndarray = field(repr=False, default=None)
     status: str = "ok"
     message: str = ""
 
@@ -103,7 +122,8 @@ class ThdEquilibriumResult:
                   "inlet_temperature_c", "recirculation_temperature_c", "side_temperature_c",
                   "power_loss_w", "friction_power_w", "film_flow_m3_s",
                   "recirculation_flow_m3_s", "side_flow_m3_s", "supply_flow_m3_s",
-                  "heat_to_journal_w", "heat_to_bush_w"):
+                  "heat_to_journal_w", "heat_to_bush_w", "journal_temperature_c",
+                  "max_wall_temperature_c"):
             row[f] = getattr(self, f)
         row.update(journal_x_m=self.x_m, journal_y_m=self.y_m,
                    eccentricity_ratio=self.eccentricity_ratio)
@@ -162,11 +182,13 @@ def run_thd_equilibrium(solver, oil, opts, load_n, speed_hz: float,
         friction_power_w=st.friction_power_w, film_flow_m3_s=st.film_flow_m3_s,
         recirculation_flow_m3_s=st.recirculation_flow_m3_s, side_flow_m3_s=st.side_flow_m3_s,
         supply_flow_m3_s=st.supply_flow_m3_s, heat_to_journal_w=st.heat_to_journal_w,
-        heat_to_bush_w=st.heat_to_bush_w, x_m=float(e.x_m), y_m=float(e.y_m),
+        heat_to_bush_w=st.heat_to_bush_w, journal_temperature_c=st.journal_temperature_c,
+        max_wall_temperature_c=st.max_wall_temperature_c, x_m=float(e.x_m), y_m=float(e.y_m),
         eccentricity_ratio=math.hypot(e.x_m, e.y_m) / clearance_m,
         K=np.array(dc.K), C=np.array(dc.C), iterations=int(r.iterations),
         temperature_c=np.array(st.temperature_c), viscosity_pa_s=np.array(fl.viscosity_pa_s),
-        inlet_mask=np.array(st.inlet_mask), flows=flows)
+        inlet_mask=np.array(st.inlet_mask), flows=flows,
+        wall_temperature_c=np.array(st.wall_temperature_c))
 
 
 def film_thermal_options(model: str, thd: dict, *, supply_temperature_c: float,
@@ -174,7 +196,8 @@ def film_thermal_options(model: str, thd: dict, *, supply_temperature_c: float,
                          tol_k: float):
     """The checked options of a standalone film's thermal equilibrium: ``model`` "effective"
     (:func:`rotordyn.bearings.thermal.thermal_options`) or "thd" (:func:`thd_options`, with
-    the keyword options ``thd``: heat-transfer coefficients W/(m² K), wall temperatures °C).
+    the keyword options ``thd``: heat-transfer coefficients W/(m² K), wall temperatures °C,
+    the wall options of :mod:`rotordyn.bearings.thd_walls`).
     InputError naming the model or the option."""
     v.choice("model", model, THERMAL_MODELS)
     if model == "effective":
@@ -184,7 +207,7 @@ def film_thermal_options(model: str, thd: dict, *, supply_temperature_c: float,
                                supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
                                effective_factor=effective_factor, tol_k=tol_k)
     unknown = set(thd) - {"journal_htc_w_m2k", "bush_htc_w_m2k",
-                          "journal_temperature_c", "bush_temperature_c"}
+                          "journal_temperature_c", "bush_temperature_c", *WALL_OPTIONS}
     if unknown:
         raise InputError(f"{sorted(unknown)[0]}: not an option of the THD film")
     return thd_options(supply_temperature_c=supply_temperature_c,

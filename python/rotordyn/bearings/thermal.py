@@ -18,12 +18,13 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
+from rotordyn.bearings.thd_walls import WALL_OPTIONS, check_walls
 from rotordyn.errors import InputError
 
 VISCOSITY_LAWS = ("walther", "exponential", "power")
 _OIL_NUMBERS = ("t1_c", "nu1_mm2_s", "t2_c", "nu2_mm2_s", "mu_ref_pa_s", "t_ref_c",
                 "beta_1_per_k", "mu1_pa_s", "mu2_pa_s", "density_kg_m3",
-                "specific_heat_j_per_kg_k", "t_min_c", "t_max_c")
+                "specific_heat_j_per_kg_k", "conductivity_w_per_m_k", "t_min_c", "t_max_c")
 
 
 @dataclass(frozen=True, slots=True)
@@ -37,6 +38,9 @@ class Oil:
         or "power" (μ = a T^b with T in °C, the law of ROSS's thermal bearings, through
         (t1_c, mu1_pa_s), (t2_c, mu2_pa_s); needs t_min_c > 0 °C).
     density_kg_m3, specific_heat_j_per_kg_k : ρ, c_p (constant).
+    conductivity_w_per_m_k : k, W/(m K) (constant; 0.13, a mineral oil): the THD film's
+        conduction across its thickness to its walls (``wall_htc = "film"``,
+        :mod:`rotordyn.bearings.thd_walls`); no other model uses it.
     t_min_c, t_max_c : range of the law; supply and film temperatures must lie in it.
     """
 
@@ -52,6 +56,7 @@ class Oil:
     mu2_pa_s: float = 0.0047
     density_kg_m3: float = 870.0
     specific_heat_j_per_kg_k: float = 2000.0
+    conductivity_w_per_m_k: float = 0.13
     t_min_c: float = -20.0
     t_max_c: float = 200.0
 
@@ -223,7 +228,10 @@ class ThermalModel:
     effective-temperature heat balance) or "thd" (the thermo-hydrodynamic film, with the
     heat-transfer coefficients ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` W/(m² K), 0:
     adiabatic, to walls at ``journal_temperature_c``, ``bush_temperature_c`` °C, None: the
-    supply temperature).
+    supply temperature; and the walls' own heat paths ``wall_htc``, ``journal_wall``,
+    ``bush_wall``, ``bush_thickness_m``, ``bush_conductivity_w_per_m_k``, ``back_htc_w_m2k``,
+    ``back_temperature_c`` of :mod:`rotordyn.bearings.thd_walls`, for every bearing; on pad
+    bearings the "bush" is each pad).
     """
 
     supply_temperature_c: float
@@ -237,9 +245,27 @@ class ThermalModel:
     bush_htc_w_m2k: float = 0.0
     journal_temperature_c: float | None = None
     bush_temperature_c: float | None = None
+    wall_htc: str = "given"
+    journal_wall: str = "fixed"
+    bush_wall: str = "fixed"
+    bush_thickness_m: float = 0.0
+    bush_conductivity_w_per_m_k: float = 0.0
+    back_htc_w_m2k: float = 0.0
+    back_temperature_c: float | None = None
 
     def __post_init__(self) -> None:
         v.choice("thermal.model", self.model, ("effective", "thd"))
+        walls = check_walls({f: getattr(self, f) for f in WALL_OPTIONS}, "thermal.")
+        for f in WALL_OPTIONS:
+            object.__setattr__(self, f, walls[f])
+        if self.journal_wall == "balance" and self.journal_temperature_c is not None:
+            raise InputError("thermal.journal_temperature_c: not used with journal_wall = "
+                             "'balance' (the journal's temperature follows from its heat "
+                             f"balance), got {self.journal_temperature_c}")
+        if self.bush_wall == "conduction" and self.bush_temperature_c is not None:
+            raise InputError("thermal.bush_temperature_c: not used with bush_wall = "
+                             "'conduction' (the back face's oil is back_temperature_c), got "
+                             f"{self.bush_temperature_c}")
         for f in ("journal_temperature_c", "bush_temperature_c"):
             if getattr(self, f) is not None:
                 object.__setattr__(self, f, v.finite(f, getattr(self, f)))

@@ -341,7 +341,7 @@ class TiltingPadBearing:
                             journal_temperature_c: float | None = None,
                             bush_temperature_c: float | None = None, tol_k: float = 1e-6,
                             model: str = "thd", effective_factor: float = 0.5,
-                            whirl_ratio: float | None = 1.0):
+                            whirl_ratio: float | None = 1.0, **walls):
         """Thermo-hydrodynamic equilibrium under ``load_n`` (N) at ``speed_hz``: per pad the
         energy equation, μ(T) per node of ``oil`` (:class:`rotordyn.bearings.Oil`), the
         inlet of each pad mixing supply oil at ``supply_temperature_c`` °C with the part
@@ -357,7 +357,13 @@ class TiltingPadBearing:
         ``model="effective"``: the effective-temperature model per pad instead (each pad
         isoviscous at μ(T_eff), T_eff = T_in + ``effective_factor`` ΔT, ΔT from the pad's
         power loss and flows, the same inlet mixing; the wall options are THD-only;
-        docs/film-physics.md §"Effective-temperature pad bearings")."""
+        docs/film-physics.md §"Effective-temperature pad bearings").
+
+        ``walls``: the THD film's heat paths (:mod:`rotordyn.bearings.thd_walls`:
+        ``wall_htc``, ``journal_wall = "balance"`` — one journal temperature from the heat
+        balance over all pads —, ``bush_wall = "conduction"`` with the pad's
+        ``bush_thickness_m``, ``bush_conductivity_w_per_m_k``, ``back_htc_w_m2k``,
+        ``back_temperature_c``)."""
         if whirl_ratio is not None:
             v.finite("whirl_ratio", whirl_ratio)
         opts = pad_model_options(model, supply_temperature_c=supply_temperature_c,
@@ -366,7 +372,7 @@ class TiltingPadBearing:
                                  journal_htc_w_m2k=journal_htc_w_m2k,
                                  bush_htc_w_m2k=bush_htc_w_m2k,
                                  journal_temperature_c=journal_temperature_c,
-                                 bush_temperature_c=bush_temperature_c)
+                                 bush_temperature_c=bush_temperature_c, **walls)
         parts = self.system_parts(0, 1, 2, self.name or "bearing")
         return pad_thd_equilibrium(parts, oil=oil, opts=opts, load_n=load_n, speed_hz=speed_hz,
                                    clearance_m=self.clearance_m, whirl_ratio=whirl_ratio,

@@ -8,6 +8,11 @@ from dataclasses import dataclass
 import numpy as np
 
 
+WALL_COLUMNS = ("journal_temperature_c", "max_wall_temperature_c", "heat_to_journal_w",
+                "heat_to_bush_w")
+"""The THD films' wall outputs of :meth:`SystemThermalResult.to_frame` (NaN for others)."""
+
+
 @dataclass(frozen=True)
 class SystemThermalResult:
     """Thermal equilibrium of a system (docs/film-physics.md).
@@ -47,6 +52,19 @@ class SystemThermalResult:
     # area_m2, the node viscosity_pa_s
     inlet_mask: tuple = ()
     flows: tuple = ()
+    # "thd": per film, the heat it gives the journal and the bush or pad (W), the journal's
+    # temperature (°C; fixed, or one per bearing from its heat balance), the hottest bush or
+    # pad surface (°C) and the surface fields (rotordyn.bearings.thd_walls); NaN otherwise
+    heat_to_journal_w: np.ndarray | None = None
+    heat_to_bush_w: np.ndarray | None = None
+    journal_temperature_c: np.ndarray | None = None
+    max_wall_temperature_c: np.ndarray | None = None
+    wall_temperature_c: tuple = ()
+
+    def wall(self, name: str) -> np.ndarray:
+        """One of the THD wall outputs per film (NaN where there is none)."""
+        x = getattr(self, name)
+        return np.full(len(self.bearing_names), np.nan) if x is None else np.asarray(x)
 
     def __repr__(self) -> str:
         t = ", ".join(f"{n}: {x:.2f} degC" for n, x in zip(self.bearing_names,
@@ -75,6 +93,7 @@ class SystemThermalResult:
             "supply_flow_m3_s": self.supply_flow_m3_s,
             "journal_x_m": self.journal_x_m,
             "journal_y_m": self.journal_y_m,
+            **{c: self.wall(c) for c in WALL_COLUMNS},
             "status": [self.status] * n,
             "message": [self.message] * n,
         })

@@ -18,6 +18,13 @@ from rotordyn.sweep.dataset import open_dataset
 from rotordyn.sweep.work import Job, run_chunk
 
 
+# The wall time below which `--workers N` keeps a map on N threads of the driver instead of
+# starting a LocalCluster: the start and worker check (1.0-1.4 s on the 2-core machine, idle
+# or loaded), the workers' first imports and model builds (~1.5 CPU-s each, competing with
+# the driver on the same cores) and the close (0.3 s); docs/performance.md.
+CLUSTER_START_S = 3.0
+
+
 class SweepInterrupted(Exception):
     """Ctrl-C: the chunks written so far are kept; running again resumes."""
 
@@ -355,69 +362,122 @@ class Dask:
 
 
 class StartingCluster:
-    """A LocalCluster whose start overlaps the driver's own work: at the first ``map`` a
-    thread of this process computes chunks, one at a time, while the main thread starts the
-    cluster (SIGINT ignored while the worker processes are spawned, as in :class:`Dask`:
-    Ctrl-C reaches only the driver, which stops the workers itself). Once the workers are up
-    and checked, the thread finishes the chunk it holds and the chunks not yet begun go to
-    the workers. The start (~2-4 s: processes importing rotordyn, the build check) thus no
-    longer precedes all work, so ``--workers N`` is not slower than ``--threads 1`` on a map
-    done in a few seconds. A chunk's rows do not depend on where it ran: the dataset is the
-    same as on the workers alone. ``local`` counts the chunks the driver computed."""
+    """A LocalCluster started only when the map is worth it, its start overlapping the
+    driver's own work. At the first ``map``, ``workers`` threads of this process compute
+    chunks (the C++ core releases the GIL). The time the rest would take on those threads is
+    estimated as chunks left × a chunk's time / threads, from a thread's second chunk (its
+    first also builds the model: 0.3 s against 0.03 s on the Fig. 9 map), or from the first
+    chunk done when even that bound is short: if it is below :data:`CLUSTER_START_S`, the
+    driver finishes the map itself and says so (on a
+    map of seconds the processes' start, imports, transfers and close cost more than they
+    give: measured in docs/performance.md); otherwise the main thread starts the cluster
+    (SIGINT ignored while the worker processes are spawned, as in :class:`Dask`: Ctrl-C
+    reaches only the driver, which stops the workers itself) while the threads go on, and once
+    the workers are up and checked the threads finish the chunks they hold and the chunks not
+    yet begun go to the workers. A chunk's rows do not depend on where it ran: the dataset is
+    the same as on the workers alone. ``local`` counts the chunks the driver computed;
+    ``cluster`` tells whether the workers were started."""
 
     def __init__(self, workers: int, timeout: float, progress):
         self.workers, self.timeout, self.progress = workers, timeout, progress
         self.dask = None
         self.local = 0
+        self.cluster = False
 
     def _started(self) -> bool:
-        """The workers are up and checked (the driver's thread stops taking chunks)."""
+        """The workers are up and checked (the driver's threads stop taking chunks)."""
         return self.dask is not None
 
+    def _worth_a_cluster(self, seconds_left: float) -> bool:
+        """Start the workers when the driver's threads would need longer than their start."""
+        return seconds_left > CLUSTER_START_S
+
     def _overlap(self, job, tasks):
-        """Start the cluster while a thread computes tasks; returns (results, next index)."""
+        """Compute tasks on the driver's threads, starting the cluster if worth it: a
+        generator of (chunk id, result) whose return value is the index of the first task
+        not begun (the workers' share)."""
+        import queue
         import threading
 
         lock = threading.Lock()
-        state = {"next": 0, "error": None}
-        out = []
+        state = {"next": 0, "stop": False}
+        done: queue.Queue = queue.Queue()
 
         def work():
+            first = True
             while True:
                 with lock:
-                    if self._started() or state["next"] >= len(tasks):
+                    if state["stop"] or self._started() or state["next"] >= len(tasks):
+                        done.put(None)
                         return
                     t = tasks[state["next"]]
                     state["next"] += 1
+                t0 = time.perf_counter()
                 try:
-                    out.append((t[0], _task(job, *t)))
+                    r = _task(job, *t)
                 except BaseException as exc:  # noqa: BLE001 - re-raised in the driver
-                    state["error"] = exc
+                    with lock:
+                        state["stop"] = True
+                    done.put(("error", exc))
+                    done.put(None)
                     return
-                self.local += 1
+                dt = time.perf_counter() - t0
+                with lock:
+                    self.local += 1
+                done.put((t[0], r, dt, first))
+                first = False
 
-        th = threading.Thread(target=work, name="rotordyn-sweep-driver", daemon=True)
-        self.progress.status(f"computing here while {self.workers} worker processes start")
-        th.start()
+        n = max(1, min(self.workers, len(tasks)))
+        threads = [threading.Thread(target=work, name=f"rotordyn-sweep-driver-{i}",
+                                    daemon=True) for i in range(n)]
+        self.progress.status(f"computing here on {n} threads")
+        for th in threads:
+            th.start()
+        live, decided = n, False
         try:
-            dask = Dask(None, self.workers, self.timeout, self.progress)
-            with lock:
-                self.dask = dask
+            while live:
+                item = done.get()
+                if item is None:
+                    live -= 1
+                    continue
+                if item[0] == "error":
+                    raise item[1]
+                yield item[0], item[1]
+                if decided:
+                    continue
+                with lock:
+                    rest = len(tasks) - state["next"]
+                left = rest * item[2] / n
+                if item[3] and self._worth_a_cluster(left):
+                    continue  # a first chunk (model build included): wait for a warm one
+                decided = True
+                if self._worth_a_cluster(left):
+                    self.progress.status(f"computing here while {self.workers} worker "
+                                         f"processes start")
+                    self.cluster = True
+                    dask = Dask(None, self.workers, self.timeout, self.progress)
+                    with lock:
+                        self.dask = dask
+                else:
+                    self.progress.status(
+                        f"{n} threads of this process: the map's remaining ~{left:.1f} s is "
+                        f"less than a LocalCluster's start (~{CLUSTER_START_S:g} s)")
+            return state["next"]
         finally:
             with lock:
-                state["next"] = len(tasks) if self.dask is None else state["next"]
-            th.join()
-        if state["error"] is not None:
-            raise state["error"]
-        return out, state["next"]
+                state["stop"] = True
+            for th in threads:
+                th.join()
 
     def map(self, job, tasks):
         tasks = list(tasks)
         i = 0
         if not self._started() and tasks:
-            out, i = self._overlap(job, tasks)
-            yield from out
+            i = yield from self._overlap(job, tasks)
         if i < len(tasks):
+            if self.dask is None:  # the threads stopped before the decision (tests force it)
+                self.cluster = True
+                self.dask = Dask(None, self.workers, self.timeout, self.progress)
             yield from self.dask.map(job, tasks[i:])
 
     def close(self):

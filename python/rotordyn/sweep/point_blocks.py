@@ -23,6 +23,7 @@ from rotordyn.analysis.thermal import system_thermal_equilibrium
 from rotordyn.analysis.transient import transient
 from rotordyn.errors import RotordynError
 from rotordyn.operation import SpeedProfile
+from rotordyn.results.thermal import WALL_COLUMNS
 from rotordyn.sweep.columns import merge
 from rotordyn.sweep.points import (CONVERGED, STATUS, equilibrium_options, operating,
                                    point_list, ref_bearing, segments, solve_equilibrium)
@@ -30,7 +31,10 @@ from rotordyn.units import hz_to_rad_s
 
 THERMAL_COLUMNS = ("effective_temperature_c", "max_temperature_c", "inlet_temperature_c",
                    "temperature_rise_k", "viscosity_pa_s", "power_loss_w", "film_flow_m3_s",
-                   "side_flow_m3_s", "supply_flow_m3_s", "journal_x_m", "journal_y_m")
+                   "side_flow_m3_s", "supply_flow_m3_s", "journal_x_m", "journal_y_m",
+                   # the THD films' walls (NaN for the effective model)
+                   "journal_temperature_c", "max_wall_temperature_c", "heat_to_journal_w",
+                   "heat_to_bush_w")
 _CATCH = (RotordynError, ArithmeticError, ValueError)
 
 
@@ -61,7 +65,8 @@ def thermal_blocks(job, variants, chunk_id, pids, asms):
             continue
         nb = len(r.bearing_names)
         ok = r.status in CONVERGED
-        cols = {c: (np.asarray(getattr(r, c), dtype=np.float64)[:nb] if ok
+        cols = {c: (np.asarray(r.wall(c) if c in WALL_COLUMNS else getattr(r, c),
+                               dtype=np.float64)[:nb] if ok
                     else np.full(nb, math.nan)) for c in THERMAL_COLUMNS}
         cols.update(bearing=np.array(list(r.bearing_names), dtype=object),
                     iterations=int(r.iterations), status=_status(r.status), message=r.message)

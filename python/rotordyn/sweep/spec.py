@@ -102,7 +102,14 @@ _THERMAL_KEYS = {"model": _opt_choice("effective", "thd"), "tol_k": _opt_range(0
                  "journal_htc_w_m2k": lambda f, x: v.non_negative(f, x),
                  "bush_htc_w_m2k": lambda f, x: v.non_negative(f, x),
                  "journal_temperature_c": lambda f, x: v.finite(f, x),
-                 "bush_temperature_c": lambda f, x: v.finite(f, x)}
+                 "bush_temperature_c": lambda f, x: v.finite(f, x),
+                 "wall_htc": _opt_choice("given", "film"),
+                 "journal_wall": _opt_choice("fixed", "balance"),
+                 "bush_wall": _opt_choice("fixed", "conduction"),
+                 "bush_thickness_m": lambda f, x: v.non_negative(f, x),
+                 "bush_conductivity_w_per_m_k": lambda f, x: v.non_negative(f, x),
+                 "back_htc_w_m2k": lambda f, x: v.non_negative(f, x),
+                 "back_temperature_c": lambda f, x: v.finite(f, x)}
 
 
 def _opt_thermal(f, x):
