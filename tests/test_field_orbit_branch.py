@@ -271,3 +271,30 @@ def test_cli_continuation_from_the_hopf_point_over_a_field(compressor, clearance
                  "--method", HB, "--hopf-distance", "1e-10"]) == 2
     assert capsys.readouterr().err.startswith("rotordyn: error: --hopf-distance: applies "
                                               "only to --start hopf")
+
+
+@pytest.mark.parametrize("vary, bounds", [("supports.*.kyy_n_per_m", (0.5e8, 3e8)),
+                                          ("rotor.disks.1.mass_kg", (10.0, 60.0))])
+def test_forced_branch_over_a_field_is_the_closed_form(vary, bounds):
+    """The unbalance-forced orbit of the compressor on linear supports (H = 1, tol 1e-11)
+    continued over the supports' vertical stiffness (K) or an impeller's mass (M): every
+    point equals the closed form on the model rebuilt with its value (tests/orbit_forms.py)
+    within 1e-10 of the amplitude (measured ≤ 1.2e-14), while the field moves the orbit by
+    1–14 % of it along the branch (the closed form of the unchanged model is off by that)."""
+    from orbit_forms import forced_orbit
+
+    s = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    ub = [(3, 1e-3, 30.0)]
+    o = rd.periodic_orbit(s, 60.0, kind="forced", unbalances=ub, method=HB, harmonics=1,
+                          tol=1e-12)
+    br = rd.continuation(s, vary, bounds, o, unbalances=ub, method=HB, harmonics=1,
+                         tol=1e-11, ds=0.05, max_points=4)
+    assert br.ok and len(br) == 4 and br.kind == "forced" and np.all(np.diff(br.parameter) > 0)
+    moved = []
+    for p, pt in zip(br.parameter, br.orbits):
+        r_exact, _ = forced_orbit(set_field(s, vary, float(p)), pt.speed_hz, pt.t, ub)
+        scale = np.abs(r_exact).max()
+        assert np.abs(pt.r - r_exact).max() < 1e-10 * scale
+        r_fixed, _ = forced_orbit(s, pt.speed_hz, pt.t, ub)
+        moved.append(np.abs(r_fixed - r_exact).max() / scale)
+    assert moved[0] == 0.0 and min(moved[1:]) > 1e-2
