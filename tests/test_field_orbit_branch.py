@@ -298,3 +298,10 @@ def test_forced_branch_over_a_field_is_the_closed_form(vary, bounds):
         r_fixed, _ = forced_orbit(s, pt.speed_hz, pt.t, ub)
         moved.append(np.abs(r_fixed - r_exact).max() / scale)
     assert moved[0] == 0.0 and min(moved[1:]) > 1e-2
+
+
+def test_threshold_over_a_field_refuses_a_bound_the_model_refuses(compressor):
+    with pytest.raises(InputError, match=r"^bounds: the model refuses bearings.\*.clearance_m"):
+        rd.threshold(compressor, CLEAR, bounds=(-1e-4, 1e-4), speed_hz=SPEED)
+    with pytest.raises(InputError, match=r"^vary: bearings.0.n_axial is an integer field"):
+        rd.hopf(compressor, "bearings.0.n_axial", bounds=(4, 8), speed_hz=SPEED)

@@ -113,6 +113,12 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
                                                                        config_ay_m)}
     if not field:
         fixed.pop(vary)
+    else:  # a bound the model refuses (a clearance <= 0) is bad input, not a failed point
+        for b in (lo, hi):
+            try:
+                set_field(system, vary, b, where="vary")
+            except InputError as exc:
+                raise InputError(f"bounds: the model refuses {vary} = {b:g} ({exc})") from None
     thermal = _thermal_keywords(thermal)
     calls = [0]
 
