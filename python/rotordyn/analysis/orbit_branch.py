@@ -104,15 +104,30 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
     if not start.ok:
         raise InputError(f"start: the orbit did not converge (status {start.status!r}: "
                          f"{start.message})")
+    asm = assembled(system)
+    if start.r.shape[1] != asm.n:
+        raise InputError(f"start: the orbit has {start.r.shape[1]} coordinates, the system "
+                         f"{asm.n}")
+    return setup_at(system, vary, (lo, hi), start.kind, start.speed_hz,
+                    start.chamber_pressure_pa, start.config_ay_m, float(start.t[0]),
+                    float(start.period_s), unbalances, param_scale, n_out)
+
+
+def setup_at(system, vary: str, bounds, kind: str, speed_hz: float, chamber_pressure_pa: float,
+             config_ay_m: float, t0: float, period_s: float, unbalances, param_scale,
+             n_out: int) -> BranchSetup:
+    """The set-up of a branch over ``vary`` through an orbit of ``kind`` at this operating
+    point (``config_ay_m`` the first bearing's a_y, as a PeriodicOrbitResult has it; ``t0``
+    the orbit's start time, ``period_s`` its period): :func:`prepare` without a start orbit
+    (e.g. a branch started at a Hopf point)."""
+    vary = v.choice("vary", vary, VARIABLES)
+    lo, hi = v.bounds("bounds", bounds)
     if param_scale is None:
         param_scale = hi - lo
     param_scale = v.positive("param_scale", param_scale)
     v.integer("n_out", n_out, lo=2, hi=1_000_000)
     asm = assembled(system)
     n = asm.n
-    if start.r.shape[1] != n:
-        raise InputError(f"start: the orbit has {start.r.shape[1]} coordinates, the system {n}")
-    kind = start.kind
     ub_list = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
     if kind == "forced" and not ub_list:
         raise InputError("unbalances: a forced start needs its unbalances "
@@ -121,13 +136,13 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
         raise InputError("unbalances: an autonomous branch has no unbalance forcing")
     subharmonic = 1
     if kind == "forced":
-        subharmonic = max(1, int(round(start.period_s * abs(start.speed_hz))))
+        subharmonic = max(1, int(round(period_s * abs(speed_hz))))
     bcs = asm.bearings
     a0 = asm.config_vector(None)
-    if bcs and abs(a0[bcs[0].jy] - start.config_ay_m) > 1e-15:
-        a0 = asm.config_vector(start.config_ay_m)
-    p_start = {"chamber_pressure_pa": start.chamber_pressure_pa, "speed_hz": start.speed_hz,
-               "config_ay_m": start.config_ay_m}[vary]
+    if bcs and abs(a0[bcs[0].jy] - config_ay_m) > 1e-15:
+        a0 = asm.config_vector(config_ay_m)
+    p_start = {"chamber_pressure_pa": chamber_pressure_pa, "speed_hz": speed_hz,
+               "config_ay_m": config_ay_m}[vary]
     if not lo <= p_start <= hi:
         raise InputError(f"bounds: ({lo:g}, {hi:g}) must contain the start's {vary} = "
                          f"{p_start:g}")
@@ -136,9 +151,9 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
 
     base = _core.PeriodicInput()
     base.kind = _core.OrbitKind.autonomous if kind == "autonomous" else _core.OrbitKind.forced
-    omega = hz_to_rad_s(float(start.speed_hz))
+    omega = hz_to_rad_s(float(speed_hz))
     base.omega = omega
-    base.chamber_pressure = float(start.chamber_pressure_pa)
+    base.chamber_pressure = float(chamber_pressure_pa)
     uc, us = np.zeros(n), np.zeros(n)
     for st, me, ph in ub_list:
         L = asm.station_load_matrix(st)
@@ -146,7 +161,7 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
         uc += me * (L[:, 0] * np.cos(q) + L[:, 1] * np.sin(q))
         us += me * (-L[:, 0] * np.sin(q) + L[:, 1] * np.cos(q))
     base.unbalance_cos, base.unbalance_sin = (uc, us) if ub_list else (np.zeros(0), np.zeros(0))
-    base.t0 = float(start.t[0])
+    base.t0 = float(t0)
     base.n_out = int(n_out)
     # p in the core's units: Pa, rad/s, m; a(p) = a_base + p · direction for config
     to_core = hz_to_rad_s(1.0) if vary == "speed_hz" else 1.0
@@ -160,8 +175,8 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
     return BranchSetup(vary=vary, lo=lo, hi=hi, asm=asm, n=n, kind=kind,
                        subharmonic=subharmonic, bcs=bcs, a0=a0, p_start=float(p_start),
                        to_core=to_core, omega=omega, base=base, config_direction=direction,
-                       param_scale=float(param_scale), start_speed=float(start.speed_hz),
-                       start_pc=float(start.chamber_pressure_pa))
+                       param_scale=float(param_scale), start_speed=float(speed_hz),
+                       start_pc=float(chamber_pressure_pa))
 
 
 def hopf_estimate(orbits, beyond: PeriodicOrbitResult, vary: str) -> dict:
