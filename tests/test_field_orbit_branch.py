@@ -349,3 +349,10 @@ def test_core_evaluation_and_point_on_a_smooth_film():
     bad = _core.hb_evaluate(asm.solver, inp, Z, w, ho, False)
     with pytest.raises(InputError, match="at: expected an evaluation with the Jacobian"):
         _core.hb_orbit_point(asm.solver, inp, bad, opt)
+
+
+def test_cycles_at_amplitudes_refuse_a_field_hopf_point(compressor, clearance_hopf):
+    h = rd.hopf(compressor, CLEAR, at=clearance_hopf["parameter"], speed_hz=SPEED)
+    with pytest.raises(InputError, match=r"^result: a Hopf point over the model field "
+                                         r"bearings.\*.clearance_m"):
+        rd.hopf_cycles(compressor, h, (0.01,))

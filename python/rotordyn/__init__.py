@@ -85,8 +85,8 @@ from rotordyn.results import (
     StaticResult,
     load_result,
 )
-from rotordyn.analysis import hopf
-from rotordyn.results import HopfResult
+from rotordyn.analysis import hopf, hopf_cycles
+from rotordyn.results import HopfCyclesResult, HopfResult
 from rotordyn.results import EquilibriumBranchResult
 
 __all__ = [
@@ -152,6 +152,8 @@ __all__ = [
     "EquilibriumResult",
     "SleeveResult",
     "hopf",
+    "hopf_cycles",
+    "HopfCyclesResult",
     "HopfResult",
     "EquilibriumBranchResult",
 ]

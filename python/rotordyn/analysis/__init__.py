@@ -14,9 +14,10 @@ from rotordyn.analysis.continuation import continuation
 from rotordyn.analysis.modes import RotorMatrices, modes, rotor_campbell
 from rotordyn.analysis.thermal import system_thermal_equilibrium
 from rotordyn.analysis.hopf import hopf
+from rotordyn.analysis.hopf_cycles import hopf_cycles
 
 __all__ = ["level1", "static", "campbell", "modes", "rotor_campbell", "equilibrium", "linearize",
            "stability", "threshold", "stability_boundary", "unbalance_response", "statespace",
            "transient", "periodic_orbit", "continuation", "RotorMatrices",
            "system_thermal_equilibrium"]
-__all__ += ["hopf"]
+__all__ += ["hopf", "hopf_cycles"]

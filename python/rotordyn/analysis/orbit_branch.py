@@ -157,15 +157,32 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
     if not start.ok:
         raise InputError(f"start: the orbit did not converge (status {start.status!r}: "
                          f"{start.message})")
+    asm = assembled(system)
+    if start.r.shape[1] != asm.n:
+        raise InputError(f"start: the orbit has {start.r.shape[1]} coordinates, the system "
+                         f"{asm.n}")
+    return setup_at(system, vary, (lo, hi), start.kind, start.speed_hz,
+                    start.chamber_pressure_pa, start.config_ay_m, float(start.t[0]),
+                    float(start.period_s), unbalances, param_scale, n_out,
+                    state=(np.asarray(start.r[0], float), np.asarray(start.v[0], float)))
+
+
+def setup_at(system, vary: str, bounds, kind: str, speed_hz: float, chamber_pressure_pa: float,
+             config_ay_m: float, t0: float, period_s: float, unbalances, param_scale,
+             n_out: int, state=None) -> BranchSetup:
+    """The set-up of a branch over ``vary`` through an orbit of ``kind`` at this operating
+    point (``config_ay_m`` the first bearing's a_y, as a PeriodicOrbitResult has it; ``t0``
+    the orbit's start time, ``period_s`` its period): :func:`prepare` without a start orbit
+    (e.g. a branch started at a Hopf point). A model field ``vary`` is checked to act at the
+    state (r, ṙ) ``state`` (None: the centred journals at rest)."""
+    vary = field_parameter(system, vary)
+    lo, hi = v.bounds("bounds", bounds)
     if param_scale is None:
         param_scale = hi - lo
     param_scale = v.positive("param_scale", param_scale)
     v.integer("n_out", n_out, lo=2, hi=1_000_000)
     asm = assembled(system)
     n = asm.n
-    if start.r.shape[1] != n:
-        raise InputError(f"start: the orbit has {start.r.shape[1]} coordinates, the system {n}")
-    kind = start.kind
     ub_list = v.unbalances("unbalances", unbalances, system.rotor.n_stations)
     if kind == "forced" and not ub_list:
         raise InputError("unbalances: a forced start needs its unbalances "
@@ -174,15 +191,15 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
         raise InputError("unbalances: an autonomous branch has no unbalance forcing")
     subharmonic = 1
     if kind == "forced":
-        subharmonic = max(1, int(round(start.period_s * abs(start.speed_hz))))
+        subharmonic = max(1, int(round(period_s * abs(speed_hz))))
     bcs = asm.bearings
     ay_override = None
-    if bcs and abs(asm.config_vector(None)[bcs[0].jy] - start.config_ay_m) > 1e-15:
-        ay_override = float(start.config_ay_m)
+    if bcs and abs(asm.config_vector(None)[bcs[0].jy] - config_ay_m) > 1e-15:
+        ay_override = float(config_ay_m)
     a0 = asm.config_vector(ay_override)
     if vary in VARIABLES:
-        p_start = {"chamber_pressure_pa": start.chamber_pressure_pa,
-                   "speed_hz": start.speed_hz, "config_ay_m": start.config_ay_m}[vary]
+        p_start = {"chamber_pressure_pa": chamber_pressure_pa, "speed_hz": speed_hz,
+                   "config_ay_m": config_ay_m}[vary]
     else:
         p_start = field_value(system, vary)
     if not lo <= p_start <= hi:
@@ -191,11 +208,10 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
     if vary == "speed_hz" and (lo <= 0 <= hi):
         raise InputError(f"bounds: a speed branch must not contain 0 Hz, got ({lo:g}, {hi:g})")
 
-    omega = hz_to_rad_s(float(start.speed_hz))
-    period = (subharmonic * 2 * np.pi / abs(omega) if kind == "forced"
-              else float(start.period_s))
-    base = periodic_input(asm, kind, omega, float(start.chamber_pressure_pa), a0, ub_list,
-                          float(start.t[0]), n_out, period)
+    omega = hz_to_rad_s(float(speed_hz))
+    period = (subharmonic * 2 * np.pi / abs(omega) if kind == "forced" else float(period_s))
+    base = periodic_input(asm, kind, omega, float(chamber_pressure_pa), a0, ub_list,
+                          float(t0), n_out, period)
     # p in the core's units: Pa, rad/s or m (a field: its SI unit); a(p) = a_base + p ·
     # direction for config
     to_core = hz_to_rad_s(1.0) if vary == "speed_hz" else 1.0
@@ -207,23 +223,25 @@ def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: in
     field = None
     if vary not in VARIABLES:
         field = FieldSystems(system, vary, n)
-        _check_field_acts(field, kind, omega, float(start.chamber_pressure_pa), ay_override,
-                          ub_list, start, lo, hi)
+        if state is None:
+            state = (np.zeros(n), np.zeros(n))
+        _check_field_acts(field, kind, omega, float(chamber_pressure_pa), ay_override,
+                          ub_list, state, lo, hi)
     return BranchSetup(vary=vary, lo=lo, hi=hi, asm=asm, n=n, kind=kind,
                        subharmonic=subharmonic, bcs=bcs, a0=a0, p_start=float(p_start),
                        to_core=to_core, omega=omega, base=base, config_direction=direction,
-                       param_scale=float(param_scale), start_speed=float(start.speed_hz),
-                       start_pc=float(start.chamber_pressure_pa), field=field,
+                       param_scale=float(param_scale), start_speed=float(speed_hz),
+                       start_pc=float(chamber_pressure_pa), field=field,
                        ay_override=ay_override, unbalances=tuple(ub_list))
 
 
-def _check_field_acts(field: FieldSystems, kind, omega, pc, ay_override, ub_list, start, lo,
+def _check_field_acts(field: FieldSystems, kind, omega, pc, ay_override, ub_list, state, lo,
                       hi) -> None:
     """InputError naming ``vary`` when the field changes nothing of eq. 12 between the
     bounds: M (at Ω), C, G, K, the loads, the chamber force, the configuration, the unbalance
-    forcing, and the film forces and their linearisation at the start orbit's first state (a
-    film closed there at a bound counts as a change)."""
-    r, vel = np.asarray(start.r[0], float), np.asarray(start.v[0], float)
+    forcing, and the film forces and their linearisation at the state (r, ṙ) (the start
+    orbit's first; a film closed there at a bound counts as a change)."""
+    r, vel = state
 
     def snapshot(p):
         asm = field.at(p)

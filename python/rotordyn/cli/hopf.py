@@ -4,6 +4,7 @@ coefficient and type (docs/nonlinear.md)."""
 from __future__ import annotations
 
 from rotordyn import analysis
+from rotordyn.analysis.hopf_cycles import check_amplitudes
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
                                  check_figure, default_vary, json_text, save_figure,
                                  table_text)
@@ -35,6 +36,11 @@ def register(sub) -> None:
                    help="compute l1 again with every film grid refined twice (n_circ and "
                         "n_axial x 2, the same point and fits): l1_refined, and a type that "
                         "changes with the grid is degenerate (docs/nonlinear.md)")
+    s.add_argument("--cycles", type=float, nargs="+", default=None, metavar="A",
+                   help="also the cycles of the branch born at the point at these amplitudes "
+                        "(fractions of the smallest film clearance, increasing, each in "
+                        "(0, 0.9]), by harmonic balance with the parameter free: their side, "
+                        "stability and the onset (soft/hard) they show (docs/nonlinear.md)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="write the leading-order bifurcation diagram")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -44,6 +50,8 @@ def register(sub) -> None:
 
 def _cmd_hopf(args) -> int:
     check_figure(args.plot)
+    if args.cycles is not None:
+        check_amplitudes("--cycles", args.cycles)
     s = models.load(args.model)
     args.vary = args.vary or default_vary(s)
     try:
@@ -57,18 +65,35 @@ def _cmd_hopf(args) -> int:
         if sep and key in ("vary", "bounds", "at"):
             raise InputError(f"--{key}:{rest}") from None
         raise
+    cyc = None
+    if args.cycles is not None and res.ok:
+        if res.vary not in ("chamber_pressure_pa", "speed_hz", "config_ay_m"):
+            raise InputError(f"--cycles: the cycles at given amplitudes vary an operating "
+                             f"variable (chamber_pressure_pa, speed_hz, config_ay_m), not the "
+                             f"model field {res.vary} (its cycles: rotordyn continuation "
+                             "--start hopf)")
+        cyc = analysis.hopf_cycles(s, res, tuple(args.cycles))
     if args.json:
-        print(json_text({"status": res.status, "message": res.message, "vary": res.vary,
-                         "value": res.value, "whirl_frequency_hz": res.whirl_frequency_hz,
-                         "l1": res.l1, "l1_error": res.l1_error, "type": res.type,
-                         "grid_check": args.grid_check, "l1_refined": res.l1_refined,
-                         "alpha_prime": res.alpha_prime, "stable_side": res.stable_side,
-                         "cycle_side": res.cycle_side,
-                         "amplitude_coefficient_m2": res.amplitude_coefficient}))
+        rec = {"status": res.status, "message": res.message, "vary": res.vary,
+               "value": res.value, "whirl_frequency_hz": res.whirl_frequency_hz,
+               "l1": res.l1, "l1_error": res.l1_error, "type": res.type,
+               "grid_check": args.grid_check, "l1_refined": res.l1_refined,
+               "alpha_prime": res.alpha_prime, "stable_side": res.stable_side,
+               "cycle_side": res.cycle_side,
+               "amplitude_coefficient_m2": res.amplitude_coefficient}
+        if cyc is not None:
+            rec["cycles"] = {"onset": cyc.onset, "l1_side_confirmed": cyc.l1_side_confirmed,
+                             "rows": cyc.to_frame().to_dict(orient="records")}
+        print(json_text(rec))
     else:
         print(repr(res))
         if res.ok:
             print(table_text(res.to_frame()))
+        if cyc is not None:
+            print(repr(cyc))
+            cols = ["amplitude_c", res.vary, "distance", "side", "stable", "max_multiplier",
+                    "period_s", "leading_order_ratio", "status"]
+            print(table_text(cyc.to_frame()[cols]))
     if args.plot and res.ok:
         save_figure(res.plot(), args.plot, args.dpi)
     return 0 if res.ok else 1

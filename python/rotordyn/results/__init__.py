@@ -15,6 +15,7 @@ from rotordyn.results.thermal import SystemThermalResult
 from rotordyn.results.transient import TransientResult
 from rotordyn.results.unbalance import UnbalanceResult
 from rotordyn.results.hopf import HopfResult
+from rotordyn.results.hopf_cycles import HopfCyclesResult
 
 __all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult", "LinearModel",
            "StabilityResult", "ThresholdResult", "BoundaryResult", "UnbalanceResult",
@@ -22,4 +23,4 @@ __all__ = ["Level1Result", "ModesResult", "CampbellResult", "EquilibriumResult",
            "BranchResult", "SystemThermalResult", "load_result", "save_result"]
 from rotordyn.results.equilibrium_branch import EquilibriumBranchResult
 
-__all__ += ["HopfResult", "EquilibriumBranchResult"]
+__all__ += ["HopfResult", "HopfCyclesResult", "EquilibriumBranchResult"]
