@@ -44,6 +44,13 @@ bifurcations (kinds, parameters). Load printed before and after each mode.
     python benchmarks/bench_branch_fast.py --modes sensitivities fast --ds 0.05
     python benchmarks/bench_branch_fast.py --modes sensitivities fast:1e-4:0   # never re-run
     python benchmarks/bench_branch_fast.py --modes exact fast hb --quiet   # HB beside fast
+    python benchmarks/bench_branch_fast.py --model compressor --quiet --repeat 3 \
+        --modes hb:8:flow hb:8:samples hb:8:hill   # the Floquet routes of one HB branch
+
+Mode ``hb:H:ROUTE`` sets the branch's ``floquet`` (samples, hill or flow). HB modes of equal H
+have the same points (the route does not steer the corrector): against an ``hb:H:flow`` mode
+every point's screening |mu_c| (the samples' or Hill's) and its trivial error are printed
+beside the flow's, with the route taken and the stability flags.
 """
 
 from __future__ import annotations
@@ -371,6 +378,8 @@ def main() -> int:
                 hb_runs[mode] = br
             if base is None:
                 base = br
+            elif hb and args.modes[0].split(":")[:2] == mode.split(":")[:2]:
+                pass  # an HB baseline of the same H: the same points, compare_routes below
             elif hb:
                 print(f"[{mode}] against [{args.modes[0]}]:\n  "
                       f"{compare_interp(base, br, unit)}")

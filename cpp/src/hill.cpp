@@ -31,6 +31,20 @@ double centroid(const Eigen::Ref<const Eigen::VectorXcd>& z, int H, Eigen::Index
   return den > 0 ? num / den : 0.0;
 }
 
+// InputError unless X is a non-empty square matrix of finite values (named `name`).
+void require_square(const std::string& name, const Eigen::MatrixXd& X) {
+  require(X.rows() >= 1 && X.cols() == X.rows(),
+          name + ": expected a non-empty square matrix, got shape (" + std::to_string(X.rows()) +
+              ", " + std::to_string(X.cols()) + ")");
+  require(X.allFinite(), name + ": expected finite values");
+}
+
+// InputError unless X has shape (n, n) and finite values.
+void require_block(const std::string& name, const Eigen::MatrixXd& X, Eigen::Index n) {
+  require(X.rows() == n && X.cols() == n, shape_msg(name, n, n, X.rows(), X.cols()));
+  require(X.allFinite(), name + ": expected finite values");
+}
+
 }  // namespace
 
 HillResult hill_from_matrices(const Eigen::MatrixXd& J, const Eigen::MatrixXd& delta1,
@@ -40,14 +54,11 @@ HillResult hill_from_matrices(const Eigen::MatrixXd& J, const Eigen::MatrixXd& d
           "harmonics: expected an integer in [1, 200], got " + std::to_string(harmonics));
   require(std::isfinite(omega) && omega > 0, "omega: expected a finite value > 0 rad/s");
   const Eigen::Index n = mass.rows(), H = harmonics, nb = 2 * H + 1, nn = nb * n, N2 = 2 * nn;
-  require(n >= 1 && mass.cols() == n && mass.allFinite(),
-          shape_msg("mass", n, n, mass.rows(), mass.cols()) + " with finite values");
+  require_square("mass", mass);
   require(N2 <= 6000, "harmonics: the Hill matrix would have " + std::to_string(N2) +
                           " rows (2n(2H + 1)); at most 6000: lower harmonics");
-  require(J.rows() == nn && J.cols() == nn && J.allFinite(),
-          shape_msg("J", nn, nn, J.rows(), J.cols()) + " with finite values");
-  require(delta1.rows() == nn && delta1.cols() == nn && delta1.allFinite(),
-          shape_msg("delta1", nn, nn, delta1.rows(), delta1.cols()) + " with finite values");
+  require_block("J", J, nn);
+  require_block("delta1", delta1, nn);
   Eigen::PartialPivLU<Eigen::MatrixXd> mlu(mass);
   require(mlu.rcond() > 1e-14, "mass: expected an invertible matrix");
 
@@ -141,9 +152,19 @@ HillResult hill_from_matrices(const Eigen::MatrixXd& J, const Eigen::MatrixXd& d
         dp0 += static_cast<double>(k) * z.segment(2 * k * n, n);
       }
       X0.col(a) << p0, out.exponents(a) * p0 + omega * dp0;
+      const double nrm = X0.col(a).norm();  // unit columns: the rcond test below is scale-free
+      if (nrm > 0) X0.col(a) /= nrm;
     }
-    Eigen::PartialPivLU<Eigen::MatrixXcd> xlu(X0);
-    out.monodromy = (X0 * out.multipliers.asDiagonal() * xlu.inverse()).real();
+    // Φ = X0 diag(μ) X0⁻¹ as the solution of X0ᵀ Φᵀ = (X0 diag(μ))ᵀ (full pivoting: X0 is
+    // near singular where two families' Floquet solutions nearly coincide, e.g. a pair about
+    // to collide on the real axis); left empty when X0 is numerically singular (rcond below
+    // 1e-13) or Φ comes out non-finite: the multipliers do not depend on it.
+    const Eigen::FullPivLU<Eigen::MatrixXcd> xlu(X0.transpose());
+    if (xlu.rcond() > 1e-13) {
+      const Eigen::MatrixXcd XL = X0 * out.multipliers.asDiagonal();
+      out.monodromy = xlu.solve(XL.transpose()).transpose().real();
+      if (!out.monodromy.allFinite()) out.monodromy.resize(0, 0);
+    }
   }
   return out;
 }
@@ -159,16 +180,10 @@ HillResult hill_floquet(const Eigen::MatrixXd& mass, const std::vector<Eigen::Ma
           "stiffness, damping: expected the same number of samples, at least 2H + 1 = " +
               std::to_string(2 * harmonics + 1) + ", got " + std::to_string(stiffness.size()) +
               " and " + std::to_string(damping.size()));
-  require(n >= 1 && mass.cols() == n, shape_msg("mass", n, n, mass.rows(), mass.cols()));
+  require_square("mass", mass);
   for (int j = 0; j < Ms; ++j) {
-    const Eigen::MatrixXd& G = stiffness[static_cast<std::size_t>(j)];
-    const Eigen::MatrixXd& D = damping[static_cast<std::size_t>(j)];
-    require(G.rows() == n && G.cols() == n && G.allFinite(),
-            shape_msg("stiffness[" + std::to_string(j) + "]", n, n, G.rows(), G.cols()) +
-                " with finite values");
-    require(D.rows() == n && D.cols() == n && D.allFinite(),
-            shape_msg("damping[" + std::to_string(j) + "]", n, n, D.rows(), D.cols()) +
-                " with finite values");
+    require_block("stiffness[" + std::to_string(j) + "]", stiffness[static_cast<std::size_t>(j)], n);
+    require_block("damping[" + std::to_string(j) + "]", damping[static_cast<std::size_t>(j)], n);
   }
   require(std::isfinite(omega) && omega > 0, "omega: expected a finite value > 0 rad/s");
   require(2 * n * (2 * harmonics + 1) <= 6000,
@@ -242,7 +257,7 @@ bool hill_floquet_into(PeriodicOrbitResult& o, Problem& P, const Eval& e, const 
     o.message = std::string("Hill's method: ") + ex.what();
     return false;
   }
-  if (h.multipliers.size() != F.N || !h.multipliers.allFinite() || !h.monodromy.allFinite()) {
+  if (h.multipliers.size() != F.N || !h.multipliers.allFinite()) {
     o.status = "error";
     o.message = "Hill's method: " + std::to_string(h.multipliers.size()) + " finite exponents of " +
                 std::to_string(F.N) + " (a non-finite Hill matrix or eigenvector)";

@@ -49,7 +49,8 @@ struct HillResult {
   Eigen::VectorXd all_centroids;  ///< their κ
   /// (2n, 2n) Re(X0 e^{ΛT} X0⁻¹), X0 the kept Floquet solutions' states (x, x') at τ = 0: the
   /// monodromy matrix these exponents and eigenvectors give (ill-conditioned where two
-  /// multipliers nearly coincide; the multipliers above do not depend on it).
+  /// multipliers nearly coincide; (0, 0) where X0 is numerically singular, rcond ≤ 1e-13;
+  /// the multipliers above do not depend on it).
   Eigen::MatrixXd monodromy;
   int harmonics = 0;
 };
