@@ -91,15 +91,7 @@ Eval Problem::eval(const Eigen::MatrixXd& Z, double w, bool jac) {
     const Eigen::MatrixXd Dv = F->Cd + lin.DH;
     const Eigen::VectorXd dw = 2 * w * (Mm * r2) + Dv * r1;
     for (int p = 0; p < nb; ++p) e.dRdw.segment(p * n, n) += B.P(p, j) * dw;
-    for (int q = 0; q < nb; ++q) {
-      const double e0 = B.E(j, q), e1 = B.E1(j, q), e2 = B.E2(j, q);
-      if (e0 == 0.0 && e1 == 0.0 && e2 == 0.0) continue;
-      const Eigen::MatrixXd T = e0 * G + (w * e1) * Dv + (w * w * e2) * Mm;
-      for (int p = 0; p < nb; ++p) {
-        const double pw = B.P(p, j);
-        if (pw != 0.0) e.J.block(p * n, q * n, n, n) += pw * T;
-      }
-    }
+    add_sample_block(e.J, B, j, G, w, Dv, w * w, Mm);
     e.KH[static_cast<std::size_t>(j)] = lin.KH;
     e.DH[static_cast<std::size_t>(j)] = lin.DH;
   }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "rotordyn/hill.hpp"
 #include "rotordyn/periodic.hpp"
 #include "shooting_detail.hpp"
 
@@ -70,6 +71,26 @@ bool fill_orbit(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, doub
 /// interpolated, 4th-order Magnus with exponentials): no film solve.
 Eigen::MatrixXd sample_monodromy(const shooting_detail::Flow& F, const SystemModel& m,
                                  const Eval& e, double T, int substeps);
+/// out.block(p, q) += P(p, j) (E(j, q) X0 + s1 E'(j, q) X1 + s2 E''(j, q) X2) for every harmonic
+/// row p and column q (n × n blocks): sample j's share of a projected linear operator (the AFT
+/// Jacobian: X0 = K + K_H, s1 X1 = ω D, s2 X2 = ω² M). hill.cpp.
+void add_sample_block(Eigen::MatrixXd& out, const Basis& B, int j, const Eigen::MatrixXd& X0,
+                      double s1, const Eigen::MatrixXd& X1, double s2, const Eigen::MatrixXd& X2);
+/// Floquet exponents and multipliers by Hill's method (hill.hpp) at an evaluation with the
+/// Jacobian: its J, and Δ1 from its D_H and Cd = C + ΩG; Mm = M(Ω). hill.cpp.
+HillResult hill_at(const Basis& B, const Eval& e, const Eigen::MatrixXd& Cd,
+                   const Eigen::MatrixXd& Mm, double w, HillSelection selection);
+/// o.floquet (and o.monodromy, the one Hill's exponents and eigenvectors give) by Hill's
+/// method at the converged orbit (Z, w) of P, whose last evaluation with the Jacobian is e:
+/// with that Jacobian when time_points ≤ its M, else with one more evaluation on time_points
+/// samples (counted in P). false with o.status ("error", or "rub" if a film closes at a new
+/// sample) and a message when that evaluation or the eigenvalue solver fails, or fewer than 2n
+/// finite exponents come out. hill.cpp.
+bool hill_floquet_into(PeriodicOrbitResult& o, Problem& P, const Eval& e, const Eigen::MatrixXd& Z,
+                       double w, bool autonomous, HillSelection selection, int time_points);
+/// Hill's time points for H harmonics and the Newton's M: `requested` if > 0, else max(M, 8H)
+/// (the AFT Jacobian's aliasing: docs/nonlinear.md).
+int hill_time_points(int H, int M, int requested);
 /// The monodromy of one CVODES flow with forward sensitivities in the error test (at
 /// `srtol`) from (o.r0, o.v0) over [t0, t0 + T] into o.monodromy (o.monodromy_rtol, the
 /// flow's counters). false with o.status / o.message set when the flow fails.
