@@ -44,6 +44,13 @@ bifurcations (kinds, parameters). Load printed before and after each mode.
     python benchmarks/bench_branch_fast.py --modes sensitivities fast --ds 0.05
     python benchmarks/bench_branch_fast.py --modes sensitivities fast:1e-4:0   # never re-run
     python benchmarks/bench_branch_fast.py --modes exact fast hb --quiet   # HB beside fast
+    python benchmarks/bench_branch_fast.py --model compressor --quiet --repeat 3 \
+        --modes hb:8:flow hb:8:samples hb:8:hill   # the Floquet routes of one HB branch
+
+Mode ``hb:H:ROUTE`` sets the branch's ``floquet`` (samples, hill or flow). HB modes of equal H
+have the same points (the route does not steer the corrector): against an ``hb:H:flow`` mode
+every point's screening |mu_c| (the samples' or Hill's) and its trivial error are printed
+beside the flow's, with the route taken and the stability flags.
 """
 
 from __future__ import annotations
@@ -234,12 +241,46 @@ def run_mode(mode: str, system, cyc, ckw: dict, ds: float, npts: int, args):
     name, *extra = mode.split(":")
     if name == "hb":
         h = int(extra[0]) if extra else 8
+        fl = {"floquet": extra[1]} if len(extra) > 1 else {}
         return rd.continuation(system, start=cyc, ds=args.hb_ds, ds_max=args.hb_ds,
                                max_points=npts, method="harmonic_balance", harmonics=h,
-                               **ckw, rtol=KW["rtol"], tol=args.hb_tol)
+                               **ckw, **fl, rtol=KW["rtol"], tol=args.hb_tol)
     sk = dict(zip(("screen_rtol", "screen_margin"), map(float, extra)))
     return rd.continuation(system, start=cyc, ds=ds, ds_max=ds, max_points=npts,
                            newton=name, **ckw, **sk, **KW)
+
+
+def screen(o) -> float:
+    """|mu_c| of a harmonic-balance point's screening route (Hill's or the samples')."""
+    s = o.stats
+    return s.get("floquet_hill_modulus", s.get("floquet_samples_modulus", float("nan")))
+
+
+def compare_routes(runs: dict) -> None:
+    """HB modes hb:H:ROUTE of equal H have the same points (the Floquet route does not steer
+    the corrector): each point's |mu_c| of every route against hb:H:flow's, with the screen's
+    trivial-multiplier error and the flows each route took."""
+    for mode, ref in runs.items():
+        name, *extra = mode.split(":")
+        if len(extra) < 2 or extra[1] != "flow":
+            continue
+        for other, br in runs.items():
+            if other == mode or other.split(":")[1:2] != extra[:1] or len(br) != len(ref):
+                continue
+            print(f"\n[{other}] against [{mode}] point by point (same points):")
+            worst = 0.0
+            for i, (o, r) in enumerate(zip(br.orbits, ref.orbits)):
+                s = o.stats
+                key = "hill" if "floquet_hill_modulus" in s else "samples"
+                mu, et = s[f"floquet_{key}_modulus"], s[f"floquet_{key}_trivial_error"]
+                d = mu - abs(r.critical_multiplier)
+                worst = max(worst, abs(d))
+                print(f"  {i:3d} p {br.parameter[i]:.6g}: flow |mu_c| "
+                      f"{abs(r.critical_multiplier):.5f}, {key} {mu:.5f} ({d:+.1e}), trivial "
+                      f"error {et:.1e}, route {s['floquet']}, stable {bool(br.stable[i])} "
+                      f"(flow: {bool(ref.stable[i])})")
+            print(f"  largest |d|mu_c|| {worst:.2e}; flows {br.stats['flow_rechecks']} of "
+                  f"{len(br)}; same stability flags {bool(np.array_equal(br.stable, ref.stable))}")
 
 
 def recheck(system, br, vary: str, band: float, rig: bool) -> None:
@@ -301,6 +342,7 @@ def main() -> int:
     print(f"start: {cyc} ({time.perf_counter() - w0:.1f} s wall, "
           f"{time.process_time() - c0:.1f} s CPU)")
     base = last_hb = None
+    hb_runs = {}
     times = {m: ([], []) for m in args.modes}
     for rep in range(args.repeat):
         for mode in args.modes:
@@ -317,23 +359,27 @@ def main() -> int:
             if not args.quiet and rep == 0:
                 print(f"{ckw['vary']:>20} {'amplitude µm':>13} {'period ms':>10} "
                       f"{'|mu_c|':>8} {'dp/ds':>8} {'type':>15} stable "
-                      + ("floquet (|mu_c| samples)" if hb else "monodromy_rtol"))
+                      + ("floquet (|mu_c| screen)" if hb else "monodromy_rtol"))
                 for i in range(len(br)):
                     print(f"{br.parameter[i] / to_unit:20.6f} "
                           f"{br.amplitude_m[i, 0] * 1e6:13.3f} "
                           f"{br.period_s[i] * 1e3:10.5f} {br.max_multiplier[i]:8.5f} "
                           f"{br.tangent_p[i]:+8.4f} {br.critical_type[i]:>15} "
                           f"{str(bool(br.stable[i])):>6} " + (
-                              f"{br.orbits[i].stats['floquet']} "
-                              f"({br.orbits[i].stats['floquet_samples_modulus']:.5f})" if hb
+                              f"{br.orbits[i].stats['floquet']} ({screen(br.orbits[i]):.5f})"
+                              if hb
                               else f"{br.orbits[i].stats['monodromy_rtol']:g}"))
             for b in br.bifurcations:
                 print(f"bifurcation: {b['kind']} at {ckw['vary']} = {b['parameter']:.6g}")
             print(f"stop: {br.stop} {br.message}; {br.stats}")
             print(f"[{mode}] {len(br)} points: {wall:.2f} s wall, {cpu:.2f} s CPU "
                   f"({cpu / max(len(br), 1):.3f} s CPU per point)")
+            if hb and rep == 0:
+                hb_runs[mode] = br
             if base is None:
                 base = br
+            elif hb and args.modes[0].split(":")[:2] == mode.split(":")[:2]:
+                pass  # an HB baseline of the same H: the same points, compare_routes below
             elif hb:
                 print(f"[{mode}] against [{args.modes[0]}]:\n  "
                       f"{compare_interp(base, br, unit)}")
@@ -345,6 +391,7 @@ def main() -> int:
                 print("  ||mu_c| diff| per point (|mu_c| of the baseline): " + ", ".join(
                     f"{m:.4f}:{x:.1e}" for m, x in zip(base.max_multiplier[:n], d)))
             print_load(f"after {mode} (repeat {rep + 1})")
+    compare_routes(hb_runs)
     if args.recheck is not None:
         recheck(system, br, ckw["vary"], args.recheck, rig)
     if args.reshoot:

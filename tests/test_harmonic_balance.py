@@ -137,7 +137,7 @@ def test_rig_cycle_from_a_transient_and_from_a_state(coarse_rig_cycle):
     (dict(harmonics=8, time_points=16), "time_points"),
     (dict(period_s=-1.0), "period_s"),
     (dict(period_s=0.0), "period_s"),
-    (dict(floquet="hill"), "floquet"),
+    (dict(floquet="magnus"), "floquet"),
     (dict(method="collocation"), "method"),
 ])
 def test_bad_input_names_the_field(smooth_rotor, kw, field):

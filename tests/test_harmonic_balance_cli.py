@@ -116,7 +116,7 @@ def test_cli_help_lists_the_method(capsys):
     assert e.value.code == 0
     text = " ".join(capsys.readouterr().out.split())
     assert "--method {shooting,harmonic_balance}" in text
-    for flag in ("--harmonics H", "--samples M", "--floquet {samples,flow,none}",
+    for flag in ("--harmonics H", "--samples M", "--floquet {samples,hill,flow,none}",
                  "--start-amplitude-c F"):
         assert flag in text
     assert "(default 8)" in text and "(default 4H)" in text and "(default 0.3)" in text

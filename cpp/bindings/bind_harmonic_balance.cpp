@@ -13,7 +13,8 @@ void bind_harmonic_balance(py::module_& m) {
   py::enum_<HbFloquet>(m, "HbFloquet")
       .value("none", HbFloquet::none)
       .value("samples", HbFloquet::samples)
-      .value("flow", HbFloquet::flow);
+      .value("flow", HbFloquet::flow)
+      .value("hill", HbFloquet::hill);
   py::class_<HarmonicBalanceOptions>(m, "HarmonicBalanceOptions")
       .def(py::init<>())
       .def_readwrite("harmonics", &HarmonicBalanceOptions::harmonics)
@@ -25,6 +26,8 @@ void bind_harmonic_balance(py::module_& m) {
       .def_readwrite("film_continuation", &HarmonicBalanceOptions::film_continuation)
       .def_readwrite("floquet", &HarmonicBalanceOptions::floquet)
       .def_readwrite("magnus_substeps", &HarmonicBalanceOptions::magnus_substeps)
+      .def_readwrite("hill_selection", &HarmonicBalanceOptions::hill_selection)
+      .def_readwrite("hill_time_points", &HarmonicBalanceOptions::hill_time_points)
       .def_readwrite("cvode", &HarmonicBalanceOptions::cvode)
       .def_readwrite("sensitivity_rtol", &HarmonicBalanceOptions::sensitivity_rtol);
   py::class_<HarmonicBalanceResult>(m, "HarmonicBalanceResult")

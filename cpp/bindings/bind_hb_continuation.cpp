@@ -33,8 +33,8 @@ void bind_hb_continuation(py::module_& m) {
       .def_readonly("p", &HbContinuationStep::p)
       .def_readonly("tangent", &HbContinuationStep::tangent)
       .def_readonly("floquet_route", &HbContinuationStep::floquet_route)
-      .def_readonly("sample_critical_modulus", &HbContinuationStep::sample_critical_modulus)
-      .def_readonly("sample_trivial_error", &HbContinuationStep::sample_trivial_error)
+      .def_readonly("screen_critical_modulus", &HbContinuationStep::screen_critical_modulus)
+      .def_readonly("screen_trivial_error", &HbContinuationStep::screen_trivial_error)
       .def_readonly("fd_evaluations", &HbContinuationStep::fd_evaluations);
   m.def("hb_continuation_step", &hb_continuation_step, py::arg("solver"), py::arg("input"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>(),

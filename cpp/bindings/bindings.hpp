@@ -21,6 +21,7 @@ void bind_bearings(py::module_& m);
 void bind_batch(py::module_& m);
 void bind_periodic(py::module_& m);
 void bind_harmonic_balance(py::module_& m);
+void bind_hill(py::module_& m);
 void bind_thermal(py::module_& m);
 void bind_continuation(py::module_& m);
 void bind_hb_continuation(py::module_& m);

@@ -14,6 +14,7 @@ PYBIND11_MODULE(_core, m) {
   bind_bearings(m);
   bind_transient(m);
   bind_periodic(m);
+  bind_hill(m);
   bind_harmonic_balance(m);
   bind_continuation(m);
   bind_hb_continuation(m);

@@ -33,6 +33,10 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
   require(opt.tol > 0 && std::isfinite(opt.tol), "tol: expected a value > 0");
   require(opt.max_iter >= 1, "max_iter: expected at least 1");
   require(opt.magnus_substeps >= 1, "magnus_substeps: expected at least 1");
+  require(opt.hill_time_points == 0 || (opt.hill_time_points >= 2 * opt.harmonics + 1 &&
+                                        opt.hill_time_points <= 100000),
+          "hill_time_points: expected 0 (max(M, 8H)) or an integer in [2H + 1, 1e5], got " +
+              std::to_string(opt.hill_time_points));
   ShootingOptions so;
   so.cvode = opt.cvode;
   so.tol = opt.tol;
@@ -259,6 +263,15 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
   if (opt.floquet == HbFloquet::samples) {
     o.monodromy = sample_monodromy(F, m, e, T, opt.magnus_substeps);
     o.monodromy_rtol = 0.0;
+  } else if (opt.floquet == HbFloquet::hill) {
+    const bool ok = hill_floquet_into(o, P, e, Z, w, autonomous, opt.hill_selection,
+                                      hill_time_points(H, M, opt.hill_time_points));
+    out.linearizations = P.linearizations;
+    out.evaluations = P.evaluations;
+    if (!ok) {
+      finish();
+      return out;
+    }
   } else if (opt.floquet == HbFloquet::flow) {
     const double srtol = opt.sensitivity_rtol > 0 ? opt.sensitivity_rtol : opt.cvode.rtol;
     if (!flow_monodromy(F, o, in.t0, T, opt.cvode, srtol)) {
@@ -266,7 +279,7 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
       return out;
     }
   }
-  if (opt.floquet != HbFloquet::none) {
+  if (opt.floquet != HbFloquet::none && opt.floquet != HbFloquet::hill) {
     if (!o.monodromy.allFinite()) {
       o.status = "error";
       o.message = "non-finite monodromy matrix";

@@ -57,6 +57,10 @@ HbContinuationStep hb_continuation_step(SystemSolver& solver, const HbContinuati
   require(ho.tol > 0 && std::isfinite(ho.tol), "tol: expected a value > 0");
   require(ho.max_iter >= 1, "max_iter: expected at least 1");
   require(ho.magnus_substeps >= 1, "magnus_substeps: expected at least 1");
+  require(ho.hill_time_points == 0 ||
+              (ho.hill_time_points >= 2 * H + 1 && ho.hill_time_points <= 100000),
+          "hill_time_points: expected 0 (max(M, 8H)) or an integer in [2H + 1, 1e5], got " +
+              std::to_string(ho.hill_time_points));
   require(opt.floquet_margin >= 0 && opt.floquet_margin < 1,
           "floquet_margin: expected a value in [0, 1)");
   const SystemModel& m = solver.model();
@@ -346,11 +350,13 @@ HbContinuationStep hb_continuation_step(SystemSolver& solver, const HbContinuati
     return out;
   }
   hb_detail::PointFloquet pf;
-  const bool done = hb_detail::finish_point(o, Z, w, L, cur->in, cur->F, m, e, ho,
+  const bool done = hb_detail::finish_point(o, Z, w, L, cur->in, cur->F, cur->P, e, ho,
                                             opt.floquet_margin, pf);
   out.floquet_route = pf.route;
-  out.sample_critical_modulus = pf.sample_critical_modulus;
-  out.sample_trivial_error = pf.sample_trivial_error;
+  out.screen_critical_modulus = pf.screen_critical_modulus;
+  out.screen_trivial_error = pf.screen_trivial_error;
+  linearizations += pf.linearizations;
+  evaluations += pf.evaluations;
   if (!done) {
     finish();
     return out;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rotordyn/harmonic_balance.hpp"
+#include "rotordyn/hill.hpp"
 #include "rotordyn/periodic.hpp"
 #include "shooting_detail.hpp"
 
@@ -71,29 +72,54 @@ bool fill_orbit(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, doub
 /// interpolated, 4th-order Magnus with exponentials): no film solve.
 Eigen::MatrixXd sample_monodromy(const shooting_detail::Flow& F, const SystemModel& m,
                                  const Eval& e, double T, int substeps);
+/// out.block(p, q) += P(p, j) (E(j, q) X0 + s1 E'(j, q) X1 + s2 E''(j, q) X2) for every harmonic
+/// row p and column q (n × n blocks): sample j's share of a projected linear operator (the AFT
+/// Jacobian: X0 = K + K_H, s1 X1 = ω D, s2 X2 = ω² M). hill.cpp.
+void add_sample_block(Eigen::MatrixXd& out, const Basis& B, int j, const Eigen::MatrixXd& X0,
+                      double s1, const Eigen::MatrixXd& X1, double s2, const Eigen::MatrixXd& X2);
+/// Floquet exponents and multipliers by Hill's method (hill.hpp) at an evaluation with the
+/// Jacobian: its J, and Δ1 from its D_H and Cd = C + ΩG; Mm = M(Ω). hill.cpp.
+HillResult hill_at(const Basis& B, const Eval& e, const Eigen::MatrixXd& Cd,
+                   const Eigen::MatrixXd& Mm, double w, HillSelection selection);
+/// o.floquet (and o.monodromy, the one Hill's exponents and eigenvectors give) by Hill's
+/// method at the converged orbit (Z, w) of P, whose last evaluation with the Jacobian is e:
+/// with that Jacobian when time_points ≤ its M, else with one more evaluation on time_points
+/// samples (counted in P). false with o.status ("error", or "rub" if a film closes at a new
+/// sample) and a message when that evaluation or the eigenvalue solver fails, or fewer than 2n
+/// finite exponents come out. hill.cpp.
+bool hill_floquet_into(PeriodicOrbitResult& o, Problem& P, const Eval& e, const Eigen::MatrixXd& Z,
+                       double w, bool autonomous, HillSelection selection, int time_points);
+/// Hill's time points for H harmonics and the Newton's M: `requested` if > 0, else max(M, 8H)
+/// (the AFT Jacobian's aliasing: docs/nonlinear.md).
+int hill_time_points(int H, int M, int requested);
 /// The monodromy of one CVODES flow with forward sensitivities in the error test (at
 /// `srtol`) from (o.r0, o.v0) over [t0, t0 + T] into o.monodromy (o.monodromy_rtol, the
 /// flow's counters). false with o.status / o.message set when the flow fails.
 bool flow_monodromy(shooting_detail::Flow& F, PeriodicOrbitResult& o, double t0, double T,
                     const CvodeOptions& cvode, double srtol);
 
-/// Where a converged point's multipliers came from: "samples", "flow" or "none", and the
-/// samples' |μ_c| and |μ_trivial − 1| (NaN when not computed; 0 when there is none).
+/// Where a converged point's multipliers came from: "samples", "hill", "flow" or "none", the
+/// screening route's |μ_c| and |μ_trivial − 1| (NaN when not computed; 0 when there is none),
+/// and the film linearisations and evaluations Hill's method added (one more evaluation on
+/// its own time points).
 struct PointFloquet {
   std::string route;
-  double sample_critical_modulus = 0.0, sample_trivial_error = 0.0;
+  double screen_critical_modulus = 0.0, screen_trivial_error = 0.0;
+  long linearizations = 0, evaluations = 0;
 };
 
 /// The end of a converged corrector at (Z, ω) (a branch point: hb_continuation.cpp and
 /// hb_field.cpp): an autonomous orbit whose harmonics are all below max(100 tol, 1e-4) L is
 /// refused (the branch reached an equilibrium), the orbit's samples into o (fill_orbit), and
-/// its Floquet multipliers — from the samples' linearisations of `e` (an evaluation with the
-/// Jacobian at Z, ω), recomputed by one CVODES sensitivity flow at sensitivity_rtol where
-/// | |μ_c| − 1 | < margin or |μ_trivial − 1| > margin / 2 (margin 0: never), or by the flow
-/// for floquet = flow. false with o.status / o.message set on a failure.
+/// its Floquet multipliers — from the screening route (floquet = samples: the samples'
+/// linearisations of `e`, an evaluation of P with the Jacobian at Z, ω; floquet = hill: Hill's
+/// method on e's Jacobian, with one more evaluation of P on Hill's time points), recomputed by
+/// one CVODES sensitivity flow at sensitivity_rtol where the screen is not safe (samples:
+/// | |μ_c| − 1 | < margin or |μ_trivial − 1| > margin / 2; Hill: | |μ_c| − 1 | < margin +
+/// 3 |μ_trivial − 1|; margin 0: never), or by the flow for floquet = flow. false with o.status
+/// / o.message set on a failure.
 bool finish_point(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, double L,
-                  const PeriodicInput& in, shooting_detail::Flow& F, const SystemModel& m,
-                  const Eval& e, const HarmonicBalanceOptions& ho, double margin,
-                  PointFloquet& pf);
+                  const PeriodicInput& in, shooting_detail::Flow& F, Problem& P, const Eval& e,
+                  const HarmonicBalanceOptions& ho, double margin, PointFloquet& pf);
 
 }  // namespace rotordyn::hb_detail

@@ -141,16 +141,32 @@ HbContinuationStep hb_orbit_point(SystemSolver& solver, const PeriodicInput& in,
   const long solves0 = solver.reynolds_solves();
   shooting_detail::Flow F;
   shooting_detail::setup_flow(F, solver, in);
+  hb_detail::Problem P;  // Hill's method evaluates once more on its own time points
+  P.solver = &solver;
+  P.in = &in;
+  P.F = &F;
+  P.B = B;
+  P.n = F.n;
+  if (ho.film_continuation) solver.set_film_continuation(true);  // as hb_evaluate: this call only
+  struct Off {
+    SystemSolver& s;
+    ~Off() { s.set_film_continuation(false); }
+  } off{solver};
   hb_detail::Eval e;
   e.ok = true;
+  e.R = at.residual;
+  e.J = at.jacobian;
+  e.dRdw = at.d_frequency;
   e.KH = at.film_stiffness;
   e.DH = at.film_damping;
   hb_detail::PointFloquet pf;
-  hb_detail::finish_point(o, at.coefficients, at.frequency, L, in, F, m, e, ho, opt.floquet_margin,
-                          pf);
+  hb_detail::finish_point(o, at.coefficients, at.frequency, L, in, F, P, e, ho,
+                          opt.floquet_margin, pf);
   out.floquet_route = pf.route;
-  out.sample_critical_modulus = pf.sample_critical_modulus;
-  out.sample_trivial_error = pf.sample_trivial_error;
+  out.screen_critical_modulus = pf.screen_critical_modulus;
+  out.screen_trivial_error = pf.screen_trivial_error;
+  hb.linearizations = pf.linearizations;
+  hb.evaluations = pf.evaluations;
   o.reynolds_solves = solver.reynolds_solves() - solves0;
   return out;
 }

@@ -267,10 +267,14 @@ Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous) {
   require(monodromy.rows() == monodromy.cols() && monodromy.size() > 0,
           "monodromy: expected a non-empty square matrix");
   require(monodromy.allFinite(), "monodromy: expected finite values");
-  Floquet out;
   Eigen::EigenSolver<Eigen::MatrixXd> es(monodromy, false);
   if (es.info() != Eigen::Success) throw ConvergenceError("monodromy: eigenvalues did not converge");
-  Eigen::VectorXcd mu = es.eigenvalues();
+  return floquet_from_multipliers(es.eigenvalues(), autonomous);
+}
+
+Floquet floquet_from_multipliers(const Eigen::VectorXcd& mu, bool autonomous) {
+  require(mu.size() > 0 && mu.allFinite(), "multipliers: expected finite values");
+  Floquet out;
   std::vector<Eigen::Index> idx(static_cast<std::size_t>(mu.size()));
   std::iota(idx.begin(), idx.end(), 0);
   std::stable_sort(idx.begin(), idx.end(), [&](Eigen::Index a, Eigen::Index b) {

@@ -18,6 +18,7 @@
 
 #include <string>
 
+#include "rotordyn/hill.hpp"
 #include "rotordyn/periodic.hpp"
 
 namespace rotordyn {
@@ -27,8 +28,11 @@ enum class HbFloquet {
   none,     ///< not computed (monodromy and multipliers empty)
   samples,  ///< Φ from the M linearisations of the converged orbit: A(τ) trigonometrically
             ///< interpolated, 4th-order Magnus (Gauss points) with exponentials, no film solve
-  flow      ///< one CVODES flow with forward sensitivities from the HB orbit's start (as the
+  flow,     ///< one CVODES flow with forward sensitivities from the HB orbit's start (as the
             ///< shooting's final pass: error-controlled at sensitivity_rtol)
+  hill      ///< Hill's method (hill.hpp) on the converged orbit's HB Jacobian: the eigenvalues
+            ///< of the Hill matrix, one exponent per family; no film solve; the monodromy
+            ///< reported is the one its exponents and eigenvectors give
 };
 
 struct HarmonicBalanceOptions {
@@ -44,6 +48,12 @@ struct HarmonicBalanceOptions {
   bool film_continuation = true;
   HbFloquet floquet = HbFloquet::samples;
   int magnus_substeps = 4;     ///< floquet = samples: Magnus steps per sample interval
+  HillSelection hill_selection = HillSelection::centroid;  ///< floquet = hill: the rule
+  /// floquet = hill: samples of the Jacobian of the Hill matrix; 0: max(M, 8H) — the Newton's
+  /// own Jacobian when M ≥ 8H, else one more evaluation at the converged orbit on 8H samples
+  /// (8H film linearisations; the AFT aliasing of the 4H default was the largest error of
+  /// Hill's multipliers on the compressor's whip cycles: docs/nonlinear.md).
+  int hill_time_points = 0;
   CvodeOptions cvode;          ///< the start flow (state start) and floquet = flow
   double sensitivity_rtol = 0; ///< floquet = flow; 0: cvode.rtol
 };

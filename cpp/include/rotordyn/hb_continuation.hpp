@@ -21,8 +21,9 @@
 // K·∂a/∂a_y, both in the constant harmonic only) and a central difference of two residual
 // evaluations at p ± h for the speed (M, G, the films and a forced period depend on Ω). The
 // new tangent is the null vector of the first rows, oriented along the previous tangent.
-// Floquet multipliers from the samples' linearisations (no film solve), recomputed by one
-// CVODES sensitivity flow where the verdict is not safe from the samples.
+// Floquet multipliers from the samples' linearisations or by Hill's method on the converged
+// Jacobian (no film solve), recomputed by one CVODES sensitivity flow where the verdict is not
+// safe from them.
 #pragma once
 #include <Eigen/Core>
 
@@ -61,10 +62,10 @@ struct HbContinuationOptions {
   /// scale is scale(0) and there is no deflation (the arclength row keeps the corrector off
   /// the equilibria).
   HarmonicBalanceOptions hb;
-  /// floquet = samples: the multipliers are recomputed by one CVODES sensitivity flow (at
-  /// sensitivity_rtol) where | |μ_c| − 1 | < floquet_margin or |μ_trivial − 1| >
-  /// floquet_margin / 2 (a poor sample monodromy: its |μ_c| error was measured up to about
-  /// 1.5 × its trivial multiplier's); 0: never.
+  /// floquet = samples or hill: the multipliers are recomputed by one CVODES sensitivity flow
+  /// (at sensitivity_rtol) where | |μ_c| − 1 | < floquet_margin or |μ_trivial − 1| >
+  /// floquet_margin / 2 (a poor screen: the samples' |μ_c| error was measured up to about
+  /// 1.5 × their trivial multiplier's); 0: never.
   double floquet_margin = 0.01;
 };
 
@@ -75,12 +76,13 @@ struct HbContinuationStep {
   double p = 0.0;                  ///< its parameter
   /// ((2H + 1) n + 2) unit tangent there (scaled), empty on failure
   Eigen::VectorXd tangent;
-  /// Where the reported multipliers come from: "samples", "flow" (the recheck, or floquet =
-  /// flow) or "none"; empty on failure.
+  /// Where the reported multipliers come from: "samples", "hill", "flow" (the recheck, or
+  /// floquet = flow) or "none"; empty on failure.
   std::string floquet_route;
-  /// From the samples' monodromy (also where the flow replaced it, and with floquet = flow):
-  /// |μ_c| and |μ_trivial − 1| (autonomous; else 0); NaN when not computed.
-  double sample_critical_modulus = 0.0, sample_trivial_error = 0.0;
+  /// From the screening route (the samples' monodromy, or Hill's method with floquet = hill;
+  /// also where the flow replaced it, and with floquet = flow the samples'): |μ_c| and
+  /// |μ_trivial − 1| (autonomous; else 0); NaN when not computed.
+  double screen_critical_modulus = 0.0, screen_trivial_error = 0.0;
   long fd_evaluations = 0;         ///< residual evaluations for the central difference ∂R/∂p
 };
 

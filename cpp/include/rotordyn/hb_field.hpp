@@ -52,11 +52,12 @@ HbEvaluation hb_evaluate(SystemSolver& solver, const PeriodicInput& in,
 /// coefficients and frequency on this solver and input): the checks and Floquet multipliers
 /// of hb_continuation_step's converged point — an autonomous orbit with all harmonics below
 /// max(100 tol, 1e-4) L refused as an equilibrium, the samples (in.n_out over one period from
-/// in.t0), the multipliers from the samples' linearisations, recomputed by one CVODES
-/// sensitivity flow by opt.floquet_margin's rule or for floquet = flow. Returns the step with
-/// hb (orbit, coefficients, frequency, harmonic amplitudes; its counters those of this call),
-/// floquet_route and the samples' |μ_c| and trivial error; p, tangent and fd_evaluations are
-/// the caller's. L: opt.hb.length_scale (0: the smallest film clearance). InputError when
+/// in.t0), the multipliers from the samples' linearisations (floquet = samples) or by Hill's
+/// method on the evaluation's Jacobian (floquet = hill: one more evaluation on Hill's time
+/// points), recomputed by one CVODES sensitivity flow by opt.floquet_margin's rule or for
+/// floquet = flow. Returns the step with hb (orbit, coefficients, frequency, harmonic
+/// amplitudes; its counters those of this call), floquet_route and the screening route's
+/// |μ_c| and trivial error; p, tangent and fd_evaluations are the caller's. L: opt.hb.length_scale (0: the smallest film clearance). InputError when
 /// `at` has no Jacobian or does not fit the solver.
 HbContinuationStep hb_orbit_point(SystemSolver& solver, const PeriodicInput& in,
                                   const HbEvaluation& at, const HbContinuationOptions& opt);

@@ -97,6 +97,8 @@ struct Floquet {
 /// Eigenvalues of Φ and their classification; `autonomous`: the multiplier nearest 1 is the
 /// trivial one (the flow direction) and is left out of the stability test.
 Floquet floquet(const Eigen::MatrixXd& monodromy, bool autonomous);
+/// The same classification of given multipliers (e.g. Hill's method: hill.hpp).
+Floquet floquet_from_multipliers(const Eigen::VectorXcd& multipliers, bool autonomous);
 
 struct PeriodicOrbitResult {
   Eigen::VectorXd r0, v0;          ///< (n,) converged start at t0

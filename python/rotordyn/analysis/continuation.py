@@ -167,8 +167,12 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         ``sensitivity_rtol`` where the critical multiplier is within ``floquet_margin``
         (default 0.01) of the unit circle or the trivial one is off 1 by more than half of
         it (a poor sample monodromy);
+        ``"hill"`` the multipliers by Hill's method from the converged orbit's HB Jacobian
+        (no film solve beyond its max(M, 8H) linearisations), recomputed by the flow where
+        the critical one is within ``floquet_margin`` + 3 × the trivial one's error of the
+        unit circle (docs/nonlinear.md, "Floquet multipliers by Hill's method");
         ``"flow"`` the flow at every point. Each point's ``stats["floquet"]`` says which
-        route gave its multipliers (``"samples"`` or ``"flow"``).
+        route gave its multipliers (``"samples"``, ``"hill"`` or ``"flow"``).
     progress
         None, or a callable(point_index, BranchResult-so-far message) for progress lines.
 

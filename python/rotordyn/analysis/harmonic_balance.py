@@ -11,7 +11,7 @@ from rotordyn._common import validate as v
 from rotordyn.errors import InputError
 from rotordyn.results.transient import TransientResult
 
-FLOQUET = ("samples", "flow", "none")
+FLOQUET = ("samples", "hill", "flow", "none")
 
 
 def time_points_for(harmonics: int, time_points: int | None) -> int:

@@ -25,7 +25,7 @@ from rotordyn.results.continuation import BranchResult
 from rotordyn.results.periodic import PeriodicOrbitResult
 
 #: the Floquet routes of a branch point (``"none"`` would leave the stability unknown)
-FLOQUET = ("samples", "flow")
+FLOQUET = ("samples", "hill", "flow")
 #: defaults of the harmonic-balance options of a branch
 HARMONICS, FLOQUET_MARGIN = 8, 0.01
 
@@ -72,6 +72,15 @@ def needs_flow(o: PeriodicOrbitResult, margin: float) -> bool:
     mc, mt = o.critical_multiplier, o.trivial_multiplier
     return (mc is None or abs(abs(mc) - 1.0) < margin
             or (mt is not None and abs(mt - 1.0) > 0.5 * margin))
+
+
+def screen_stats(step, floquet: str) -> dict:
+    """The screening route's |μ_c| and trivial error of a corrector step, keyed by the route:
+    ``floquet_hill_*`` (floquet "hill") or ``floquet_samples_*`` (the samples: floquet
+    "samples", and "flow" where they are computed for the record)."""
+    screen = "hill" if floquet == "hill" else "samples"
+    return {f"floquet_{screen}_modulus": float(step.screen_critical_modulus),
+            f"floquet_{screen}_trivial_error": float(step.screen_trivial_error)}
 
 
 def checked_orbit(system, speed_hz: float, chamber_pressure_pa: float, config_ay_m, *, start,
@@ -174,8 +183,7 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
     def result(step):
         return setup.point_result(step.hb.orbit, step.p, extra_stats={
             **hbal.hb_stats(step.hb), "floquet": step.floquet_route,
-            "floquet_samples_modulus": float(step.sample_critical_modulus),
-            "floquet_samples_trivial_error": float(step.sample_trivial_error),
+            **screen_stats(step, floquet),
             "fd_evaluations": int(step.fd_evaluations)})
 
     p0 = setup.p_start * to_core

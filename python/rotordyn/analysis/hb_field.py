@@ -10,8 +10,9 @@ residual, M film solves, or with its Jacobian M film linearisations), as the equ
 branch over a field does. The unknowns, conditions, scaling, step cap, line search and
 convergence test are those of the C++ corrector (cpp/src/hb_continuation.cpp), with ∂R/∂p a
 central difference of two residual evaluations on the systems at p ± h. The converged point's
-checks and Floquet multipliers are the C++ corrector's (``_core.hb_orbit_point``, from the
-last evaluation's film linearisations, one CVODES flow near the unit circle). The branch loop
+checks and Floquet multipliers are the C++ corrector's (``_core.hb_orbit_point``: from the
+last evaluation's film linearisations or by Hill's method on its Jacobian, one CVODES flow
+near the unit circle). The branch loop
 is :func:`rotordyn.analysis.hb_continuation.hb_branch`'s: this corrector returns what
 ``_core.hb_continuation_step`` returns."""
 
@@ -64,8 +65,8 @@ class FieldStep:
     p: float
     tangent: np.ndarray
     floquet_route: str = ""
-    sample_critical_modulus: float = float("nan")
-    sample_trivial_error: float = float("nan")
+    screen_critical_modulus: float = float("nan")
+    screen_trivial_error: float = float("nan")
     fd_evaluations: int = 0
 
 
@@ -298,11 +299,12 @@ class FieldCorrector:
                        residual=residuals[-1], reynolds_solves=self.solves + o.reynolds_solves)
         hb = _HB(orbit=orbit, coefficients=Z, frequency=w,
                  harmonic_amplitudes=np.asarray(pt_core.hb.harmonic_amplitudes),
-                 harmonics=self.H, time_points=self.M, evaluations=self.evaluations,
-                 linearizations=self.linearizations)
+                 harmonics=self.H, time_points=self.M,
+                 evaluations=self.evaluations + int(pt_core.hb.evaluations),
+                 linearizations=self.linearizations + int(pt_core.hb.linearizations))
         return FieldStep(hb=hb, p=p, tangent=tangent_full, floquet_route=pt_core.floquet_route,
-                         sample_critical_modulus=float(pt_core.sample_critical_modulus),
-                         sample_trivial_error=float(pt_core.sample_trivial_error),
+                         screen_critical_modulus=float(pt_core.screen_critical_modulus),
+                         screen_trivial_error=float(pt_core.screen_trivial_error),
                          fd_evaluations=fd)
 
     def _failed(self, Z, w, p, status, message, it, residuals, fd) -> FieldStep:

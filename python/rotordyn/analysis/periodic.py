@@ -123,8 +123,12 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         the journal at ``start_amplitude_c`` of the clearance (docs/nonlinear.md).
     floquet
         harmonic balance only: ``"samples"`` (the monodromy from the converged orbit's M
-        linearisations, 4th-order Magnus, no film solve), ``"flow"`` (one CVODES
-        sensitivity flow at ``sensitivity_rtol``) or ``"none"``.
+        linearisations, 4th-order Magnus, no film solve), ``"hill"`` (Hill's method: the
+        eigenvalues of the Hill matrix of the linearised orbit, from the harmonic-balance
+        Jacobian on max(M, 8H) samples, one exponent kept per family by the centroid of its
+        eigenvector's harmonics; no film solve beyond those linearisations), ``"flow"`` (one
+        CVODES sensitivity flow at ``sensitivity_rtol``) or ``"none"`` (docs/nonlinear.md,
+        "Floquet multipliers by Hill's method": their accuracy measured against the flow).
 
     Returns
     -------

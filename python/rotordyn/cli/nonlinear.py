@@ -56,7 +56,7 @@ def register(sub) -> None:
                    help="points on the branch (default 50 for orbits, 200 for equilibria)")
     c.add_argument("--direction", type=int, choices=[1, -1], default=1,
                    help="leave the start towards growing (1) or falling (-1) parameter")
-    _hb_arguments(c, floquet=("samples", "flow"))
+    _hb_arguments(c, floquet=("samples", "hill", "flow"))
     c.add_argument("--floquet-margin", type=float, default=None, metavar="F",
                    help="harmonic balance: the multipliers from the samples are recomputed by "
                         "one CVODES sensitivity flow where |mu_c| is within F of 1 or the "
@@ -116,7 +116,7 @@ HB_FLAGS = (("harmonics", "--harmonics", 8), ("samples", "--samples", None),
             ("floquet", "--floquet", "samples"), ("start_amplitude_c", "--start-amplitude-c", 0.3))
 
 
-def _hb_arguments(s, floquet=("samples", "flow", "none")) -> None:
+def _hb_arguments(s, floquet=("samples", "hill", "flow", "none")) -> None:
     s.add_argument("--method", choices=["shooting", "harmonic_balance"], default="shooting",
                    help="shooting (default): Newton on the CVODES flow over one period; "
                         "harmonic_balance: Newton on the Fourier coefficients of the orbit "
@@ -129,7 +129,8 @@ def _hb_arguments(s, floquet=("samples", "flow", "none")) -> None:
                         "100000 (default 4H)")
     s.add_argument("--floquet", choices=list(floquet), default=None,
                    help="harmonic balance: the Floquet multipliers from the M samples' "
-                        "linearisations (samples, default: Magnus, no film solve), from one "
+                        "linearisations (samples: Magnus, no film solve), by Hill's method "
+                        "on the harmonic-balance Jacobian (hill: no film solve), from one "
                         "CVODES sensitivity flow at --rtol (flow)"
                         + (", or none" if "none" in floquet else ""))
     s.add_argument("--start-amplitude-c", type=float, default=None, metavar="F",

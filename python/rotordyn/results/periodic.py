@@ -22,7 +22,9 @@ class PeriodicOrbitResult(Display):
     kind: ``"autonomous"`` (a self-excited limit cycle, period unknown) or ``"forced"``
     (unbalance forcing, period k·2π/Ω). t: (n_t,) s over [t0, t0 + T]; r, v: (n_t, n)
     coordinates and velocities (m, m/s); journal_x_m, journal_y_m: (n_t, n_bearings) relative
-    to each housing; period_s: T; monodromy: (2n, 2n) ∂x(t0 + T)/∂x(t0) with x = (r, ṙ);
+    to each housing; period_s: T; monodromy: (2n, 2n) ∂x(t0 + T)/∂x(t0) with x = (r, ṙ)
+    (harmonic balance with ``floquet="hill"``: the one Hill's exponents and eigenvectors
+    give, (0, 0) where their Floquet solutions are numerically dependent);
     multipliers: (2n,) complex Floquet multipliers, largest modulus first; trivial_index:
     index of the trivial multiplier (autonomous: the flow direction, ≈ 1), −1 for forced
     orbits; critical_index: the non-trivial multiplier of largest modulus; stable: its modulus
