@@ -18,13 +18,6 @@
 namespace rotordyn {
 
 namespace {
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
 // The width (cells of the grid, either side of the midpoint between two columns) over which
 // an ungrooved film's inlet passes from one column of maximum film to the next (thd_field).
 // Outside it the inlet is the one column, as before the hand-over existed.

@@ -8,17 +8,11 @@
 #include "rotordyn/errors.hpp"
 #include "rotordyn/thd.hpp"
 #include "rotordyn/thermal.hpp"
+#include "thermal_detail.hpp"
 
 namespace rotordyn {
 
 namespace {
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
 void nonneg(double v, const std::string& field, const char* unit) {
   if (!(std::isfinite(v) && v >= 0.0))
     throw InputError(field + ": expected a finite value >= 0 " + unit + ", got " + num(v));

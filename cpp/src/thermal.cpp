@@ -16,13 +16,6 @@ namespace rotordyn {
 namespace {
 constexpr double kKelvin = 273.15;
 
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
 void positive(double v, const char* field) {
   if (!(std::isfinite(v) && v > 0.0))
     throw InputError(std::string(field) + ": expected a finite value > 0, got " + num(v));

@@ -1,14 +1,24 @@
-// Internal to the thermal model (thermal.cpp, thermal_system.cpp): the heat balance of one film.
+// Internal to the thermal model (thermal.cpp, thermal_system.cpp, thd.cpp, thd_walls.cpp): the
+// heat balance of one film, and the number format of its error messages.
 #pragma once
 
 #include <Eigen/Dense>
 
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "rotordyn/thermal.hpp"
 
 namespace rotordyn {
+
+/// A number in the thermal films' error messages (6 significant digits).
+inline std::string num(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
 
 /// The supply's checks shared by the effective-temperature and THD options: the supply
 /// temperature inside the viscosity law's range, a fresh flow >= 0, 0 <= carry_over <= 1.

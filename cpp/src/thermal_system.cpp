@@ -18,13 +18,6 @@
 namespace rotordyn {
 
 namespace {
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
 // A THD film's solution as the film's state and its slice [o, o + nn) of the fixed-point map
 // GX; true when the slice moved by at most the film's tol_k from the iterate X.
 bool take_thd_state(const ThdFilmState& ts, const ThermalFilm& tf, const Eigen::VectorXd& X,

@@ -83,6 +83,30 @@ def screen_stats(step, floquet: str) -> dict:
             f"floquet_{screen}_trivial_error": float(step.screen_trivial_error)}
 
 
+def corrector_options(harmonics: int, time_points: int, tol: float, max_iter: int,
+                      floquet: str, margin: float, rtol: float, atol_m: float,
+                      velocity_scale: float, max_steps: int,
+                      sensitivity_rtol: float | None = None):
+    """The ``_core.HbContinuationOptions`` of a harmonic-balance corrector: H, M, the Newton
+    tolerance and iterations, the Floquet route and margin, and the CVODES options of the
+    flow (atol on velocities = ``atol_m`` × ``velocity_scale``, rad/s)."""
+    c = _core.CvodeOptions()
+    c.rtol, c.atol_position = float(rtol), float(atol_m)
+    c.atol_velocity = float(atol_m) * float(velocity_scale)
+    c.max_steps = int(max_steps)
+    ho = _core.HarmonicBalanceOptions()
+    ho.harmonics, ho.time_points = int(harmonics), int(time_points)
+    ho.tol, ho.max_iter = float(tol), int(max_iter)
+    ho.floquet = getattr(_core.HbFloquet, floquet)
+    ho.cvode = c
+    if sensitivity_rtol is not None:
+        ho.sensitivity_rtol = float(sensitivity_rtol)
+    opt = _core.HbContinuationOptions()
+    opt.hb = ho
+    opt.floquet_margin = float(margin)
+    return opt
+
+
 def checked_orbit(system, speed_hz: float, chamber_pressure_pa: float, config_ay_m, *, start,
                   period_s: float, harmonics: int = HARMONICS, time_points: int | None = None,
                   n_out: int = 201, rtol: float = 1e-8, tol: float = 1e-6,
@@ -139,20 +163,9 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
     inp.scale = scale
     sfull = np.concatenate([np.full(nn, L), scale[1:]])
 
-    c = _core.CvodeOptions()
-    c.rtol, c.atol_position = float(rtol), float(atol_m)
-    c.atol_velocity = float(atol_m) * max(abs(setup.omega), w0, 1.0)
-    c.max_steps = int(max_steps)
-    ho = _core.HarmonicBalanceOptions()
-    ho.harmonics, ho.time_points = h_, int(m_hb)
-    ho.tol, ho.max_iter = float(tol), int(max_iter)
-    ho.floquet = getattr(_core.HbFloquet, floquet)
-    ho.cvode = c
-    if sensitivity_rtol is not None:
-        ho.sensitivity_rtol = float(sensitivity_rtol)
-    opt = _core.HbContinuationOptions()
-    opt.hb = ho
-    opt.floquet_margin = float(margin)
+    opt = corrector_options(h_, m_hb, tol, max_iter, floquet, margin, rtol, atol_m,
+                            max(abs(setup.omega), w0, 1.0), max_steps, sensitivity_rtol)
+    ho = opt.hb
 
     def correct(z, w, p_core, y_prev, tangent, step_ds):
         inp.coefficients = np.ascontiguousarray(z.reshape(nb, n))

@@ -22,7 +22,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.analysis import harmonic_balance as hbal
-from rotordyn.analysis.hb_continuation import FLOQUET_MARGIN, HARMONICS
+from rotordyn.analysis.hb_continuation import FLOQUET_MARGIN, HARMONICS, corrector_options
 from rotordyn.analysis.orbit_branch import PARAM, setup_at
 from rotordyn.errors import InputError
 from rotordyn.results.hopf import HopfResult
@@ -121,18 +121,8 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
     inp.fd_step = 1e-6
     inp.direction = 1
     inp.scale = scale
-    c = _core.CvodeOptions()
-    c.rtol, c.atol_position = float(rtol), float(atol_m)
-    c.atol_velocity = float(atol_m) * max(abs(setup.omega), w0, 1.0)
-    c.max_steps = int(max_steps)
-    ho = _core.HarmonicBalanceOptions()
-    ho.harmonics, ho.time_points = h_, int(m_hb)
-    ho.tol, ho.max_iter = float(tol), int(max_iter)
-    ho.floquet = _core.HbFloquet.samples
-    ho.cvode = c
-    opt = _core.HbContinuationOptions()
-    opt.hb = ho
-    opt.floquet_margin = float(floquet_margin)
+    opt = corrector_options(h_, m_hb, tol, max_iter, "samples", floquet_margin, rtol, atol_m,
+                            max(abs(setup.omega), w0, 1.0), max_steps)
 
     def solve(y_prev):
         """The cycle whose harmonics project on y_prev's as y_prev's own do."""
