@@ -120,3 +120,22 @@ def test_cli_help_lists_the_method(capsys):
                  "--start-amplitude-c F"):
         assert flag in text
     assert "(default 8)" in text and "(default 4H)" in text and "(default 0.3)" in text
+
+
+def test_cli_failed_hb_start_says_what_to_try(coarse_compressor, capsys):
+    """An HB limit cycle from the equilibrium that does not converge (130 Hz: the 0.9 c whip
+    far from a 0.05 c start, H = 2): exit 1 with the result, and a line naming --settle-s and
+    --start-amplitude-c; a settled start or a forced orbit gets no such line (their start is
+    not the equilibrium's mode)."""
+    path, _ = coarse_compressor
+    from rotordyn.cli import nonlinear
+    args = type("A", (), {"method": HB, "kind": "autonomous"})()
+    assert "--settle-s 1" in nonlinear._start_hint(args, None)
+    assert nonlinear._start_hint(args, object()) == ""  # a settled start: nothing to add
+    args.kind = "forced"
+    assert nonlinear._start_hint(args, None) == ""
+    rc = main(["periodic-orbit", path, "--speed-hz", "130", "--method", HB,
+               "--start-amplitude-c", "0.05", "--harmonics", "2"])
+    out = capsys.readouterr().out
+    assert rc == 1 and "not_converged" in out
+    assert "--settle-s 1" in out and "--start-amplitude-c" in out

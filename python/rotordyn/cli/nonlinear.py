@@ -204,6 +204,17 @@ def _settled_start(args, s, ub):
     return start
 
 
+def _start_hint(args, start) -> str:
+    """What to try when a harmonic-balance limit cycle started from the equilibrium failed."""
+    if (getattr(args, "method", "shooting") == "harmonic_balance" and start is None
+            and args.kind == "autonomous"):
+        return ("\nrotordyn: harmonic balance started from the equilibrium's whirl mode at "
+                "--start-amplitude-c of the clearance; a cycle of another size (oil whip "
+                "near the clearance) needs a settled start: add --settle-s 1, or set "
+                "--start-amplitude-c near its size")
+    return ""
+
+
 def _cmd_periodic_orbit(args) -> int:
     check_figure(args.plot)
     hb = _hb_options(args)
@@ -236,6 +247,10 @@ def _cmd_periodic_orbit(args) -> int:
         print(f"method: {info['method']}" + (f" ({settings})" if settings else ""))
         if res.ok:
             print(table_text(res.multipliers_frame().head(8)))
+        else:
+            hint = _start_hint(args, start)
+            if hint:
+                print(hint.lstrip("\n"))
     if args.plot and res.ok:
         save_figure(res.plot(), args.plot, args.dpi)
     return 0 if res.ok else 1
@@ -339,7 +354,7 @@ def _cmd_continuation(args) -> int:
                                         unbalances=ub, subharmonic=args.subharmonic,
                                         rtol=args.rtol, tol=args.tol, **start_how)
         if not orbit.ok:
-            print(f"rotordyn: no start orbit: {orbit!r}")
+            print(f"rotordyn: no start orbit: {orbit!r}" + _start_hint(args, start))
             return 1
     if method == "harmonic_balance":
         how = {"method": method, "harmonics": hb["harmonics"], "time_points": hb["time_points"],
@@ -395,8 +410,9 @@ def _cmd_continuation(args) -> int:
         print(repr(br))
         settings = ", ".join(f"{k} = {x}" for k, x in info.items() if k != "method")
         print(f"method: {method}" + (f" ({settings})" if settings else f" (newton = {newton})"))
-        cols = [br.vary, "amplitude_m", "period_s", "max_multiplier", "stable",
-                "critical_type", "bifurcation"]
+        # one row per (point, bearing): both named, or the bearings' rows look repeated
+        cols = ["point", "bearing", br.vary, "amplitude_m", "period_s", "max_multiplier",
+                "stable", "critical_type", "bifurcation"]
         df = br.to_frame()[cols]
         if method == "harmonic_balance":
             df = df.assign(floquet=np.repeat(routes, len(br.bearing_names)))
