@@ -22,7 +22,8 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.analysis import harmonic_balance as hbal
-from rotordyn.analysis.hb_continuation import FLOQUET_MARGIN, HARMONICS, corrector_options
+from rotordyn.analysis.hb_continuation import (FLOQUET, FLOQUET_MARGIN, HARMONICS,
+                                               corrector_options)
 from rotordyn.analysis.orbit_branch import PARAM, setup_at
 from rotordyn.errors import InputError
 from rotordyn.results.hopf import HopfResult
@@ -54,7 +55,8 @@ def check_amplitudes(name: str, amplitudes_c) -> np.ndarray:
 def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
                 harmonics: int = HARMONICS, time_points: int | None = None,
                 tol: float = 1e-10, rtol: float = 1e-8, atol_m: float = 1e-12,
-                floquet_margin: float = FLOQUET_MARGIN, max_iter: int = 30,
+                floquet: str = "samples", floquet_margin: float = FLOQUET_MARGIN,
+                max_iter: int = 30,
                 max_steps: int = 200000) -> HopfCyclesResult:
     """The limit cycles of the branch born at the Hopf point ``result`` (of
     :func:`rotordyn.hopf` on the same ``system``) at the amplitudes ``amplitudes_c``
@@ -65,9 +67,15 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
     amplitudes); cycles on the unstable side that are stable are a soft onset.
     ``harmonics``, ``time_points``, ``tol``, ``max_iter`` as in
     ``rd.periodic_orbit(method="harmonic_balance")``; ``rtol``, ``atol_m``, ``max_steps``
-    the CVODES options of the Floquet flow; ``floquet_margin`` as in the harmonic-balance
-    continuation. Rows that do not converge have their status and message; the rows after
-    them start from the last converged cycle."""
+    the CVODES options of the Floquet flow; ``floquet`` (``"samples"``, ``"hill"`` or
+    ``"flow"``) and ``floquet_margin`` as in the harmonic-balance continuation (near the Hopf
+    point |μ_c| is near 1, so every cycle is rechecked by the flow unless the margin is 0:
+    on a stiff model the flow dominates the cost, and ``floquet="hill"`` with
+    ``floquet_margin=0`` gives the stability from the Hill matrix alone). Rows that do not
+    converge have their status and message; the rows after them start from the last converged
+    cycle. A row whose parameter the corrector did not move (the start already met ``tol``:
+    very small amplitudes) is ``unresolved``, kept with its orbit but left out of the
+    verdicts."""
     if not isinstance(result, HopfResult) or not result.ok:
         raise InputError("result: expected a HopfResult with status ok (from rotordyn.hopf)")
     if result.vary not in PARAM:
@@ -80,6 +88,7 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
     v.in_range("tol", tol, 1e-14, 1e-2)
     v.in_range("rtol", rtol, 1e-14, 1e-2)
     v.positive("atol_m", atol_m)
+    floquet = v.choice("floquet", floquet, FLOQUET)
     v.in_range("floquet_margin", floquet_margin, 0.0, 0.5)
     v.integer("max_iter", max_iter, lo=1, hi=1000)
     v.integer("max_steps", max_steps, lo=100, hi=100_000_000)
@@ -121,7 +130,7 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
     inp.fd_step = 1e-6
     inp.direction = 1
     inp.scale = scale
-    opt = corrector_options(h_, m_hb, tol, max_iter, "samples", floquet_margin, rtol, atol_m,
+    opt = corrector_options(h_, m_hb, tol, max_iter, floquet, floquet_margin, rtol, atol_m,
                             max(abs(setup.omega), w0, 1.0), max_steps)
 
     def solve(y_prev):
@@ -163,6 +172,7 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
             else:
                 y_cur, a_cur = y_last, a_last
             for a_t in ([a] if k == 1 else np.geomspace(a_last, a, k + 1)[1:]):
+                p_from = float(y_cur[nn + 1])
                 step = solve(scaled(y_cur, a_cur, a_t))
                 stats["correctors"] += 1
                 stats["newton_iterations"] += int(step.hb.orbit.iterations)
@@ -182,7 +192,15 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
             continue
         o = setup.point_result(step.hb.orbit, step.p, extra_stats={
             **hbal.hb_stats(step.hb), "floquet": step.floquet_route})
-        rows.append({"amplitude_c": float(a), "status": "ok", "message": "", "orbit": o,
-                     "value": float(step.p / to_core), "floquet": step.floquet_route})
+        status, message = "ok", ""
+        if abs(step.p - p_from) <= 1e-12 * max(abs(p_from), to_core):
+            # the start already satisfied the residual: the parameter was never corrected
+            status = "unresolved"
+            message = (f"the start satisfies the harmonic-balance residual (tol {tol:g}) at "
+                       f"{a:g} c: the cycle's {vary} is not resolved at this amplitude (a "
+                       "larger amplitude, or a smaller tol)")
+        rows.append({"amplitude_c": float(a), "status": status, "message": message,
+                     "orbit": o, "value": float(step.p / to_core),
+                     "floquet": step.floquet_route})
         y_last, a_last = y_new, float(a)
     return HopfCyclesResult.from_rows(result, rows, stats, harmonics=h_, time_points=int(m_hb))

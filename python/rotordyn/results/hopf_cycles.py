@@ -25,8 +25,10 @@ class HopfCyclesResult(Display):
     largest distance of each journal from its mean), ``period_s``, ``max_multiplier`` (|μ|
     of the critical multiplier, the trivial one left out), ``stable``, ``leading_order_ratio``
     = A²/(amplitude_coefficient·|distance|) per the largest journal (1 where the leading order
-    holds), ``floquet`` (the multipliers' route), ``status``, ``message``; ``orbits`` the
-    :class:`PeriodicOrbitResult` of each converged row (None otherwise).
+    holds), ``floquet`` (the multipliers' route), ``status`` (``ok``; ``unresolved``: the
+    corrector did not move the parameter, the row is kept but out of the verdicts; or the
+    corrector's failure), ``message``; ``orbits`` the :class:`PeriodicOrbitResult` of each
+    solved row (None where the corrector failed).
 
     ``onset``: ``"hard"`` when a converged cycle lies on the side where the equilibrium is
     stable (it coexists with the equilibrium: hysteresis), ``"soft"`` when every converged
@@ -147,7 +149,10 @@ class HopfCyclesResult(Display):
         for i in np.flatnonzero(ok):
             parts.append(f"{self.amplitude_c[i]:g} c: {sym} {self.distance[i] * f:+.4g} {u2}"
                          f" ({'stable' if self.stable[i] else 'unstable'})")
-        failed = int((~ok).sum())
+        others = {}
+        for st in self.statuses:
+            if st != "ok":
+                others[st] = others.get(st, 0) + 1
+        rest = "".join(f"; {k} at {st}" for st, k in others.items())
         return (f"<HopfCyclesResult {self.onset} onset at {sym} = {self.hopf_value * f:.6g} "
-                f"{u2}: smallest cycle {verdict}; " + "; ".join(parts)
-                + (f"; {failed} amplitude(s) not converged" if failed else "") + ">")
+                f"{u2}: smallest cycle {verdict}; " + "; ".join(parts) + rest + ">")
