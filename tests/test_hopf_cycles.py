@@ -122,3 +122,16 @@ def test_cli_hopf_cycles(compressor):
                           "100", "200", "--cycles", "2"], capture_output=True, text=True,
                          timeout=300)
     assert bad.returncode == 2 and "--cycles" in bad.stderr
+    hill = subprocess.run([sys.executable, "-m", "rotordyn.cli", "hopf", model, "--bounds",
+                           "100", "200", "--cycles", "0.01", "--floquet", "hill",
+                           "--floquet-margin", "0", "--json"], capture_output=True, text=True,
+                          timeout=300)
+    assert hill.returncode == 0, hill.stderr
+    row = json.loads(hill.stdout)["cycles"]["rows"][0]
+    assert row["floquet"] == "hill" and row["speed_hz"] == pytest.approx(api.value[0], rel=1e-9)
+    for flags, named in ((["--floquet", "hill"], "--floquet"),
+                         (["--cycles", "0.01", "--floquet-margin", "2"], "--floquet-margin")):
+        out = subprocess.run([sys.executable, "-m", "rotordyn.cli", "hopf", model, "--bounds",
+                              "100", "200", *flags], capture_output=True, text=True,
+                             timeout=300)
+        assert out.returncode == 2 and named in out.stderr, out.stderr

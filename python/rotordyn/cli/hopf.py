@@ -4,10 +4,12 @@ coefficient and type (docs/nonlinear.md)."""
 from __future__ import annotations
 
 from rotordyn import analysis
+from rotordyn._common import validate as v
 from rotordyn.analysis.hopf_cycles import check_amplitudes
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
                                  check_figure, default_vary, json_text, save_figure,
                                  table_text)
+from rotordyn.errors import InputError
 from rotordyn.errors import InputError
 from rotordyn.model import builtin as models
 
@@ -41,6 +43,13 @@ def register(sub) -> None:
                         "(fractions of the smallest film clearance, increasing, each in "
                         "(0, 0.9]), by harmonic balance with the parameter free: their side, "
                         "stability and the onset (soft/hard) they show (docs/nonlinear.md)")
+    s.add_argument("--floquet", default="samples", choices=["samples", "hill", "flow"],
+                   help="with --cycles: the cycles' Floquet multipliers from the samples, by "
+                        "Hill's method or by a CVODES flow (default: samples)")
+    s.add_argument("--floquet-margin", type=float, default=None, metavar="F",
+                   help="with --cycles: recheck by the flow where |mu_c| is within F of 1 "
+                        "(default 0.01; near a Hopf point that is every cycle: 0 with --floquet "
+                        "hill skips the flow, which on a stiff model takes minutes)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="write the leading-order bifurcation diagram")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -52,6 +61,10 @@ def _cmd_hopf(args) -> int:
     check_figure(args.plot)
     if args.cycles is not None:
         check_amplitudes("--cycles", args.cycles)
+        if args.floquet_margin is not None:
+            v.in_range("--floquet-margin", args.floquet_margin, 0.0, 0.5)
+    elif args.floquet != "samples" or args.floquet_margin is not None:
+        raise InputError("--floquet, --floquet-margin: apply only with --cycles")
     s = models.load(args.model)
     args.vary = args.vary or default_vary(s)
     try:
@@ -72,7 +85,8 @@ def _cmd_hopf(args) -> int:
                              f"variable (chamber_pressure_pa, speed_hz, config_ay_m), not the "
                              f"model field {res.vary} (its cycles: rotordyn continuation "
                              "--start hopf)")
-        cyc = analysis.hopf_cycles(s, res, tuple(args.cycles))
+        margin = {} if args.floquet_margin is None else {"floquet_margin": args.floquet_margin}
+        cyc = analysis.hopf_cycles(s, res, tuple(args.cycles), floquet=args.floquet, **margin)
     if args.json:
         rec = {"status": res.status, "message": res.message, "vary": res.vary,
                "value": res.value, "whirl_frequency_hz": res.whirl_frequency_hz,
