@@ -81,27 +81,14 @@ def test_thermal_table_model_selector_round_trip_and_bad_input(tmp_path):
 def test_thermal_sweep_with_the_thd_film_equals_direct_calls(tmp_path):
     """The ``thermal`` sweep analysis on a model whose ``[thermal] model = "thd"``, over the
     bush's heat-transfer coefficient: each point equals the direct call (1e-9)."""
-    import rotordyn.sweep as sw
-    from rotordyn.sweep import run_sweep
-    from rotordyn.sweep.paths import set_field
+    from thermal_sweep_check import sweep_points
 
     s = rotordyn.System.from_toml(MODELS / "compressor_plain_thermal.toml")
     s = dataclasses.replace(
         s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=8) for b in s.bearings),
         thermal=dataclasses.replace(s.thermal, model="thd"))
-    s.to_toml(tmp_path / "m.toml")
-    spec = tmp_path / "s.toml"
-    spec.write_text('schema = "rotordyn/sweep/1"\nname = "thd"\nmodel = "m.toml"\n'
-                    'analysis = "thermal"\nchunk_size = 2\n[grid]\n'
-                    '"thermal.bush_htc_w_m2k" = [0.0, 2000.0]\nspeed_hz = 150.0\n')
-    res = run_sweep(spec, tmp_path / "o", threads=1)
-    assert res.complete and res.counts["failed"] == 0
-    fr = sw.open(tmp_path / "o").frame
-    assert len(fr) == 4 and (fr["status"] == "ok").all()
     tmax = []
-    for _, g in fr.groupby("point_id"):
-        m = set_field(s, "thermal.bush_htc_w_m2k", float(g.iloc[0]["thermal.bush_htc_w_m2k"]))
-        r = rotordyn.system_thermal_equilibrium(m, speed_hz=150.0)
+    for _, g, r in sweep_points(tmp_path, s, "thermal.bush_htc_w_m2k", [0.0, 2000.0]):
         for c in ("effective_temperature_c", "max_temperature_c", "power_loss_w", "journal_y_m"):
             np.testing.assert_allclose(g[c].to_numpy(), getattr(r, c), rtol=1e-9, atol=1e-15)
         tmax.append(r.max_temperature_c[0])

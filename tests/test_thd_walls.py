@@ -241,25 +241,11 @@ def test_compressor_with_the_walls_in_a_system(tmp_path):
 
 
 def test_sweep_over_the_bush_conductivity_equals_direct_calls(tmp_path):
-    import rotordyn.sweep as sw
-    from rotordyn.sweep import run_sweep
-    from rotordyn.sweep.paths import set_field
+    from thermal_sweep_check import sweep_points
 
-    s = _compressor()
-    s.to_toml(tmp_path / "m.toml")
-    spec = tmp_path / "s.toml"
-    spec.write_text('schema = "rotordyn/sweep/1"\nname = "walls"\nmodel = "m.toml"\n'
-                    'analysis = "thermal"\nchunk_size = 2\n[grid]\n'
-                    '"thermal.bush_conductivity_w_per_m_k" = [0.0, 50.0]\nspeed_hz = 150.0\n')
-    res = run_sweep(spec, tmp_path / "o", threads=1)
-    assert res.complete and res.counts["failed"] == 0
-    fr = sw.open(tmp_path / "o").frame
-    assert len(fr) == 4 and (fr["status"] == "ok").all()
     tmax = []
-    for _, g in fr.groupby("point_id"):
-        k = float(g.iloc[0]["thermal.bush_conductivity_w_per_m_k"])
-        r = rotordyn.system_thermal_equilibrium(
-            set_field(s, "thermal.bush_conductivity_w_per_m_k", k), speed_hz=150.0)
+    for _, g, r in sweep_points(tmp_path, _compressor(), "thermal.bush_conductivity_w_per_m_k",
+                                [0.0, 50.0]):
         for c in ("max_temperature_c", "journal_temperature_c", "heat_to_bush_w",
                   "max_wall_temperature_c"):
             np.testing.assert_allclose(g[c].to_numpy(), r.wall(c) if c != "max_temperature_c"
