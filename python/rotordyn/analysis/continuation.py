@@ -22,8 +22,8 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis import hb_continuation as hbc
-from rotordyn.analysis.orbit_branch import (PARAM, VARIABLES, assemble, hopf_estimate,
-                                            prepare)
+from rotordyn.analysis.orbit_branch import (PARAM, VARIABLES, assemble, halved,
+                                            hopf_estimate, prepare, rejected)
 from rotordyn.analysis.periodic import NEWTON
 from rotordyn.errors import InputError
 from rotordyn.model.system import System
@@ -295,22 +295,12 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         stats["sensitivity_flows"] += step.orbit.sensitivity_flows
         stats["fd_flows"] += step.fd_flows
         o = step.orbit
-        bad = o.status != "ok"
-        if not bad and float(np.dot(step.tangent, t)) < np.cos(np.radians(30)):
-            bad, o_msg = True, "the tangent turned by more than 30°"
-        else:
-            o_msg = o.message
+        bad, o_msg = rejected(o.status, o.message, step.tangent, t)
         if bad:
             stats["failed_correctors"] += 1
             message = o_msg
-            if o.status == "not_converged" and "equilibrium" in o.message:
-                stop = "equilibrium"
-                if h / 2 < ds_min:
-                    break
-            h /= 2
-            if h < ds_min:
-                stop = "rub" if o.status == "rub" else ("equilibrium" if stop == "equilibrium"
-                                                        else "step_min")
+            h, stop = halved(h, ds_min, o.status, o.message, stop)
+            if h is None:
                 break
             continue
         p_new = step.p / to_core

@@ -18,7 +18,8 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.analysis import harmonic_balance as hbal
 from rotordyn.analysis.hb_field import FieldCorrector
-from rotordyn.analysis.orbit_branch import PARAM, BranchSetup, assemble, hopf_estimate
+from rotordyn.analysis.orbit_branch import (PARAM, BranchSetup, assemble, halved,
+                                            hopf_estimate, rejected)
 from rotordyn.analysis.periodic import periodic_orbit
 from rotordyn.errors import InputError
 from rotordyn.results.continuation import BranchResult
@@ -226,22 +227,12 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
         step = correct(yp[:nn], yp[nn], yp[nn + 1], y, t, h)
         tally(step)
         o_core = step.hb.orbit
-        bad = o_core.status != "ok"
-        if not bad and float(np.dot(step.tangent, t)) < np.cos(np.radians(30)):
-            bad, msg = True, "the tangent turned by more than 30°"
-        else:
-            msg = o_core.message
+        bad, msg = rejected(o_core.status, o_core.message, step.tangent, t)
         if bad:
             stats["failed_correctors"] += 1
             message = msg
-            if o_core.status == "not_converged" and "equilibrium" in o_core.message:
-                stop = "equilibrium"
-                if h / 2 < ds_min:
-                    break
-            h /= 2
-            if h < ds_min:
-                stop = "rub" if o_core.status == "rub" else (
-                    "equilibrium" if stop == "equilibrium" else "step_min")
+            h, stop = halved(h, ds_min, o_core.status, o_core.message, stop)
+            if h is None:
                 break
             continue
         if not lo <= step.p / to_core <= hi:

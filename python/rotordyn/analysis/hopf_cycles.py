@@ -99,11 +99,11 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
     pc = p_h if vary == "chamber_pressure_pa" else float(fixed.get("chamber_pressure_pa")
                                                           or 0.0)
     ay = p_h if vary == "config_ay_m" else fixed.get("config_ay_m")
-    if ay is None:
+    if ay is None:  # the model's own a_y (setup_at keeps its configuration vector then)
         from rotordyn.analysis.assembly import assembled
 
-        bcs = assembled(system).bearings
-        ay = float(assembled(system).config_vector(None)[bcs[0].jy]) if bcs else 0.0
+        asm0 = assembled(system)
+        ay = float(asm0.config_vector(None)[asm0.bearings[0].jy]) if asm0.bearings else 0.0
     # the parameter's scale in the bordered system (the bounds only set it: the cycles'
     # parameter is free)
     span = 0.5 * max(abs(p_h), 1.0) if vary != "config_ay_m" else max(abs(p_h), 1e-3)

@@ -270,6 +270,29 @@ def _point_clearances(orbits, bcs) -> np.ndarray:
     return c if np.all(per == per[0]) and np.array_equal(per[0], c) else per
 
 
+def rejected(status: str, message: str, new_tangent, tangent) -> tuple[bool, str]:
+    """Whether a corrected branch point is refused, and why: the corrector's failure, or a
+    tangent turned by more than 30° from the previous one (the step jumped branches)."""
+    if status == "ok" and float(np.dot(new_tangent, tangent)) < np.cos(np.radians(30)):
+        return True, "the tangent turned by more than 30°"
+    return status != "ok", message
+
+
+def halved(h: float, ds_min: float, status: str, message: str, stop: str):
+    """After a refused corrector (``status``, the core's ``message``): (the halved step, the
+    stop reason), the step None when the branch ends there — below ``ds_min``, or a cycle
+    that shrank onto the equilibrium (a Hopf end) with no smaller step left."""
+    if status == "not_converged" and "equilibrium" in message:
+        stop = "equilibrium"
+        if h / 2 < ds_min:
+            return None, stop
+    h /= 2
+    if h < ds_min:
+        return None, ("rub" if status == "rub" else
+                      "equilibrium" if stop == "equilibrium" else "step_min")
+    return h, stop
+
+
 def hopf_estimate(orbits, beyond: PeriodicOrbitResult, vary: str) -> dict:
     """The Hopf point where the branch meets the equilibrium: p against the signed amplitude
     (positive on the branch, negative beyond) through the last two points and the one
