@@ -16,6 +16,7 @@ import pytest
 import rotordyn as rd
 
 from orbit_forms import forced_orbit
+import coarse_models  # noqa: E402
 
 MODELS = Path(__file__).parent / "data" / "models"
 UB = [(3, 1e-3, 30.0)]
@@ -199,12 +200,8 @@ def test_continuation_newton_names(linear_system, linear_orbit):
 def coarse_rig_cycle():
     """The paper rig (36 × 6 film grid for speed) and its stable cycle at a_y = −1.85 mm,
     50 Hz, 0.05 MPa from a 0.6 s transient."""
-    import dataclasses
-
-    rig = rd.models.paper_rig()
-    b = rig.bearings[0]
-    rig = dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
-                              + tuple(rig.bearings[1:]))
+    
+    rig = coarse_models.paper_rig()
     tr = rd.transient(rig, 0.6, 50.0, 0.05e6, -1.85e-3, disturbance_m=(0.0, 3e-5), n_out=6001)
     cyc = rd.periodic_orbit(rig, 50.0, 0.05e6, -1.85e-3, start=tr, rtol=1e-6, tol=1e-4)
     assert cyc.ok, cyc.message
@@ -272,11 +269,8 @@ def whip_branch():
     """The oil-whip cycle of the compressor on plain journal bearings (36 × 6 film grid for
     speed; linear threshold 126.5 Hz) at 130 Hz, reached from the equilibrium disturbed by
     0.6 c, continued down in speed past its fold (7 points)."""
-    import dataclasses
-
-    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
-    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                              for b in s.bearings))
+    
+    s = coarse_models.compressor_plain()
     tr = rd.transient(s, 0.4, 130.0, disturbance_m=(0.0, 6e-5), n_out=4001)
     cyc = rd.periodic_orbit(s, 130.0, start=tr, rtol=1e-6, tol=1e-4)
     assert cyc.ok and cyc.stable, cyc.message

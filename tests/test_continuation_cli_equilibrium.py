@@ -17,15 +17,14 @@ import pytest
 
 import rotordyn as rd
 from rotordyn.cli import main
+import coarse_models  # noqa: E402
 
 MODELS = Path(__file__).parent / "data" / "models"
 
 
 @pytest.fixture(scope="module")
 def compressor(tmp_path_factory):
-    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
-    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                              for b in s.bearings))
+    s = coarse_models.compressor_plain()
     path = tmp_path_factory.mktemp("model") / "compressor_36x6.toml"
     s.to_toml(path)
     return s, str(path)

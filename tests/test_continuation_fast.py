@@ -11,12 +11,12 @@ correctors stop below ``tol`` = 1e-4 in the scaled residual, so a point may move
 tol/(1 − |μ_c|) of the length scale (|μ_c| ≤ 0.998 on this branch) and its successors follow
 it along the branch: the tolerances below are that bound, not the round-off."""
 
-import dataclasses
 
 import numpy as np
 import pytest
 
 import rotordyn as rd
+import coarse_models  # noqa: E402
 
 TOL = 1e-4
 
@@ -25,10 +25,7 @@ TOL = 1e-4
 def rig_cycle():
     """The paper rig (36 × 6 film grid for speed) and its stable cycle at a_y = −1.85 mm,
     50 Hz, 0.05 MPa from a 0.6 s transient (as tests/test_continuation.py)."""
-    rig = rd.models.paper_rig()
-    b = rig.bearings[0]
-    rig = dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
-                              + tuple(rig.bearings[1:]))
+    rig = coarse_models.paper_rig()
     tr = rd.transient(rig, 0.6, 50.0, 0.05e6, -1.85e-3, disturbance_m=(0.0, 3e-5), n_out=6001)
     cyc = rd.periodic_orbit(rig, 50.0, 0.05e6, -1.85e-3, start=tr, rtol=1e-6, tol=TOL)
     assert cyc.ok, cyc.message
@@ -115,9 +112,7 @@ def whip_branches():
     central-difference ∂R/∂p (Broyden and the screening remain)."""
     from pathlib import Path
 
-    s = rd.System.from_toml(Path(__file__).parent / "data" / "models" / "compressor_plain.toml")
-    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                              for b in s.bearings))
+    s = coarse_models.compressor_plain()
     tr = rd.transient(s, 0.4, 130.0, disturbance_m=(0.0, 6e-5), n_out=4001)
     cyc = rd.periodic_orbit(s, 130.0, start=tr, rtol=1e-6, tol=TOL)
     assert cyc.ok and cyc.stable, cyc.message

@@ -27,15 +27,14 @@ import pytest
 
 import rotordyn as rd
 from rotordyn.model.paths import set_field
+import coarse_models  # noqa: E402
 
 MODELS = Path(__file__).parent / "data" / "models"
 
 
 @pytest.fixture(scope="module")
 def compressor():
-    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
-    return dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                                 for b in s.bearings))
+    return coarse_models.compressor_plain()
 
 
 @pytest.fixture(scope="module")
@@ -115,10 +114,7 @@ def test_model_field_branch_clearance(compressor):
 
 @pytest.fixture(scope="module")
 def coarse_rig():
-    rig = rd.models.paper_rig()
-    b = rig.bearings[0]
-    return dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
-                               + tuple(rig.bearings[1:]))
+    return coarse_models.paper_rig()
 
 
 def test_rig_pressure_branch_two_crossings(coarse_rig):

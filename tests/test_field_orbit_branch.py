@@ -32,6 +32,7 @@ from rotordyn.analysis.hopf import hopf_branch
 from rotordyn.cli import main
 from rotordyn.errors import InputError
 from rotordyn.model.paths import set_field
+import coarse_models  # noqa: E402
 
 HB = "harmonic_balance"
 MODELS = Path(__file__).parent / "data" / "models"
@@ -42,9 +43,7 @@ SPEED = 130.0
 
 @pytest.fixture(scope="module")
 def compressor():
-    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
-    return dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                                 for b in s.bearings))
+    return coarse_models.compressor_plain()
 
 
 @pytest.fixture(scope="module")

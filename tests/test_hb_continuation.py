@@ -13,7 +13,6 @@ References:
 
 from __future__ import annotations
 
-import dataclasses
 import json
 from pathlib import Path
 
@@ -25,6 +24,7 @@ from rotordyn.errors import InputError
 
 from orbit_forms import forced_orbit
 from test_harmonic_balance import smooth_rotor_system
+import coarse_models  # noqa: E402
 
 HB = "harmonic_balance"
 MODELS = Path(__file__).parent / "data" / "models"
@@ -89,10 +89,7 @@ def test_smooth_forced_branch_equals_shooting_at_its_speeds(smooth_branch):
 def rig_hb_branch():
     """The paper rig on a 36 × 6 active film at a_y = −1.85 mm, 50 Hz: its cycle at 0.05 MPa
     by HB from the equilibrium (no transient), continued up in p_c to the Hopf end (ds 0.1)."""
-    rig = rd.models.paper_rig()
-    b = rig.bearings[0]
-    rig = dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
-                              + tuple(rig.bearings[1:]))
+    rig = coarse_models.paper_rig()
     cyc = rd.periodic_orbit(rig, 50.0, 0.05e6, -1.85e-3, method=HB, tol=1e-8)
     assert cyc.ok, cyc.message
     br = rd.continuation(rig, "chamber_pressure_pa", (0.04e6, 0.08e6), cyc, method=HB,
@@ -180,9 +177,7 @@ def whip_hb_branch():
     """The compressor on plain bearings (36 × 6 film grid): its oil-whip cycle at 130 Hz by
     HB from a 0.4 s transient, continued down in speed with HB correctors (ds 0.1 constant)
     past the fold near 121.7 Hz (docs/nonlinear.md "A fold")."""
-    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
-    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                              for b in s.bearings))
+    s = coarse_models.compressor_plain()
     tr = rd.transient(s, 0.4, 130.0, disturbance_m=(0.0, 6e-5), n_out=4001)
     cyc = rd.periodic_orbit(s, 130.0, start=tr, method=HB, tol=1e-8)
     assert cyc.ok and cyc.stable, cyc.message

@@ -31,6 +31,7 @@ from rotordyn.analysis.periodic import periodic_orbit
 from rotordyn.errors import InputError
 
 from test_harmonic_balance import smooth_rotor_system
+import coarse_models  # noqa: E402
 
 HB = "harmonic_balance"
 MODELS = Path(__file__).parent / "data" / "models"
@@ -254,9 +255,7 @@ def test_whip_cycle_of_the_compressor_by_hill():
     9.5e-8 on a smooth one above), the same stability; the samples' Magnus monodromy of the
     same orbit has a trivial error above 10 × Hill's (measured 0.117: why the branch's
     samples route sends most whip points to the flow, docs/nonlinear.md)."""
-    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
-    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                              for b in s.bearings))
+    s = coarse_models.compressor_plain()
     tr = rd.transient(s, 0.4, 130.0, disturbance_m=(0.0, 6e-5), n_out=4001)
     kw = dict(start=tr, method=HB, harmonics=8, tol=1e-8)
     hill = rd.periodic_orbit(s, 130.0, floquet="hill", **kw)

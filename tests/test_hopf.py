@@ -4,7 +4,6 @@ against the continued limit-cycle branches (tests/test_continuation.py's models)
 
 from __future__ import annotations
 
-import dataclasses
 from pathlib import Path
 
 import numpy as np
@@ -12,6 +11,7 @@ import pytest
 
 import rotordyn as rd
 from rotordyn.analysis.lyapunov import central_second, central_third, first_lyapunov
+import coarse_models  # noqa: E402
 
 MODELS = Path(__file__).parent / "data" / "models"
 
@@ -102,10 +102,7 @@ def coarse_rig():
     """The paper rig with a 36 × 6 film grid (as tests/test_continuation.py), whose film
     force is smooth over ±2 % of the clearance about the Hopf point's equilibrium (l1 from
     fits over ±1 % and ±2 %: −0.074505 both; the default ±5 %: −0.0732)."""
-    rig = rd.models.paper_rig()
-    b = rig.bearings[0]
-    return dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
-                               + tuple(rig.bearings[1:]))
+    return coarse_models.paper_rig()
 
 
 def test_rig_hopf_is_supercritical_and_predicts_the_start_of_the_cycle_branch(coarse_rig):
@@ -147,9 +144,7 @@ def test_hopf_of_the_compressor_over_speed_and_bad_input(capsys):
     field."""
     from rotordyn.cli import main
 
-    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
-    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                              for b in s.bearings))
+    s = coarse_models.compressor_plain()
     h = rd.hopf(s, "speed_hz", bounds=(100.0, 150.0))
     th = rd.threshold(s, "speed_hz", bounds=(100.0, 150.0))
     assert h.ok and h.value == pytest.approx(th.value, rel=1e-9)

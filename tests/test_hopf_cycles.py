@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import rotordyn as rd
+import coarse_models  # noqa: E402
 
 MODELS = Path(__file__).parent / "data" / "models"
 
@@ -21,10 +22,7 @@ MODELS = Path(__file__).parent / "data" / "models"
 def coarse_rig():
     """The paper rig with a 36 × 6 film grid, whose film force is smooth over ±2 % of the
     clearance about the Hopf point's equilibrium (tests/test_hopf.py)."""
-    rig = rd.models.paper_rig()
-    b = rig.bearings[0]
-    return dataclasses.replace(rig, bearings=(dataclasses.replace(b, n_circ=36, n_axial=6),)
-                               + tuple(rig.bearings[1:]))
+    return coarse_models.paper_rig()
 
 
 @pytest.fixture(scope="module")

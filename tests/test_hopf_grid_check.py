@@ -12,7 +12,6 @@ processes bit for bit."""
 
 from __future__ import annotations
 
-import dataclasses
 import json
 import math
 from pathlib import Path
@@ -23,6 +22,7 @@ import pytest
 
 import rotordyn as rd
 from rotordyn.model.paths import set_field
+import coarse_models  # noqa: E402
 
 MODELS = Path(__file__).parent / "data" / "models"
 
@@ -44,9 +44,7 @@ vary = "speed_hz"
 
 @pytest.fixture(scope="module")
 def compressor(tmp_path_factory):
-    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
-    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                              for b in s.bearings))
+    s = coarse_models.compressor_plain()
     path = tmp_path_factory.mktemp("model") / "compressor_36x6.toml"
     s.to_toml(path)
     return s, str(path)
