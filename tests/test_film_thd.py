@@ -165,9 +165,6 @@ def test_thd_bad_input_names_the_field():
     with pytest.raises(InputError, match="model"):
         b.thermal_equilibrium(oil=VG32, load_n=LOAD, speed_hz=SPEED, supply_temperature_c=TS,
                               model="adiabatic")
-    with pytest.raises(InputError, match="turbulence"):
-        rotordyn.JournalBearing(viscosity_pa_s=0.02, turbulence="ng_pan", density_kg_m3=870.0,
-                                **GEO).thermal_equilibrium(oil=VG32, **kw)
     g, grid = b.to_core()
     s = _core.ReynoldsSolver(g, grid, "reynolds")
     with pytest.raises(InputError, match="viscosity_pa_s"):

@@ -113,10 +113,15 @@ struct ReynoldsSolver::Impl {
   double R = 0, L = 0, c = 0, mu = 0, dphi = 0, dz = 0;
   // Turbulence (geo.turbulence != laminar, reynolds_turbulence.cpp): Re_h = re_per_h · h with
   // re_per_h = ρ|ω|R/μ (set per solve). turb_face: the multipliers of a face's conductance
-  // (12/k) and of its h-derivative.
+  // (12/k) and of its h-derivative; the face is the east (axial = false) or north face of
+  // node q, whose viscosity (a viscosity field: the mean of its nodes') sets its Re_h.
+  // node_re: Re_h at node n with film h (its own viscosity).
   bool turb = false;
   double re_per_h = 0.0;
-  void turb_face(double hf, bool axial, double& m, double& dm) const;
+  void turb_face(double hf, bool axial, int q, double& m, double& dm) const;
+  double node_re(int n, double hn) const {
+    return visc_field ? re_per_h * hn * (mu / mu_node[n]) : re_per_h * hn;
+  }
   // Viscosity field (set_viscosity_field, the thermo-hydrodynamic film; reynolds_viscosity.cpp):
   // node viscosities and the multipliers mu/mu_face of the faces' conductances (the face
   // viscosity the mean of its two nodes'), applied after the uniform film's conductances, so

@@ -29,9 +29,9 @@ void ReynoldsSolver::Impl::residual_derivative_many(const LinearSystem& S,
     double ge, gw, gn, gs, pe, pw, pn, ps, ta, tb, wp;
   };
   std::vector<Row> rows(static_cast<std::size_t>(nu));
-  auto tmul = [&](double hf, bool axial) {
+  auto tmul = [&](double hf, bool axial, int q) {
     double mm, dm;
-    turb_face(hf, axial, mm, dm);
+    turb_face(hf, axial, q, mm, dm);
     return dm;
   };
   for (int i = 0; i < nu; ++i) {
@@ -41,10 +41,10 @@ void ReynoldsSolver::Impl::residual_derivative_many(const LinearSystem& S,
     const double hn = 0.5 * (h[n] + h[n + 1]), hs = 0.5 * (h[n - 1] + h[n]);
     double ge = fE * he * he, gw = fE * hw * hw, gn = fN * hn * hn, gs = fN * hs * hs;
     if (turb) {
-      ge *= tmul(he, false);
-      gw *= tmul(hw, false);
-      gn *= tmul(hn, true);
-      gs *= tmul(hs, true);
+      ge *= tmul(he, false, n);
+      gw *= tmul(hw, false, w);
+      gn *= tmul(hn, true, n);
+      gs *= tmul(hs, true, n - 1);
     }
     if (visc_field) {
       ge *= vmE[n];

@@ -384,12 +384,12 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
       double m, dm;
       for (int k = 0; k < K1; ++k) {
         const int q = row + k;
-        turb_face(0.5 * (h[q] + h[erow + k]), false, m, dm);
+        turb_face(0.5 * (h[q] + h[erow + k]), false, q, m, dm);
         cE[q] *= m;
       }
       for (int k = 0; k + 1 < K1; ++k) {
         const int q = row + k;
-        turb_face(0.5 * (h[q] + h[q + 1]), true, m, dm);
+        turb_face(0.5 * (h[q] + h[q + 1]), true, q, m, dm);
         cN[q] *= m;
       }
     }
@@ -402,7 +402,7 @@ void ReynoldsSolver::Impl::set_film(const double* h_in, const double* hdot_in, d
     pocket_face(static_cast<int>(f), 0.5 * (h_smooth[q] + h_smooth[o]), G3, Gc);
     if (turb) {  // the stepped face's Re_h at its effective film cbrt(G3)
       double m, dm;
-      turb_face(std::cbrt(G3), pf.north, m, dm);
+      turb_face(std::cbrt(G3), pf.north, q, m, dm);
       G3 *= m;
     }
     if (pf.north) {

@@ -341,7 +341,7 @@ void ReynoldsSolver::Impl::postprocess() {
         const int n = row + k;
         const double dpdphi = (pe[k] - pw[k]) / (2.0 * dphi);
         double tau = node_mu(n) * omega * R * thr[k] / hr[k];
-        if (turb) tau *= turbulence_factors(geo.turbulence, re_per_h * hr[k]).cf;  // Couette shear
+        if (turb) tau *= turbulence_factors(geo.turbulence, node_re(n, hr[k])).cf;  // Couette
         tr[k] = tau + hr[k] / (2.0 * R) * dpdphi;
       }
     }
@@ -360,7 +360,7 @@ void ReynoldsSolver::Impl::postprocess() {
   for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
     const int k = n % K1;
     const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
-    const double cf = turb ? turbulence_factors(geo.turbulence, re_per_h * h[n]).cf : 1.0;
+    const double cf = turb ? turbulence_factors(geo.turbulence, node_re(n, h[n])).cf : 1.0;
     torque += wk * cf * node_mu(n) * omega * R * theta[n] * (pocket_inv_h(n) - 1.0 / h[n]);
   }
   out.force_n = Eigen::Vector2d(fx * area, fy * area);
@@ -532,15 +532,15 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
     g = f3 / 3.0 * dG3;
     if (turb) {  // d(G3·12/k(cbrt G3))/dhf = dG3 · dm (reynolds_turbulence.cpp)
       double m, dm;
-      turb_face(std::cbrt(G3), pk_faces[face].north, m, dm);
+      turb_face(std::cbrt(G3), pk_faces[face].north, pk_faces[face].n, m, dm);
       g *= dm;
     }
     bq = dGc;
   };
   // turbulent films: each conductance derivative takes its face's multiplier dm
-  auto tmul = [&](double hf, bool axial) {
+  auto tmul = [&](double hf, bool axial, int q) {
     double m, dm;
-    turb_face(hf, axial, m, dm);
+    turb_face(hf, axial, q, m, dm);
     return dm;
   };
   for (int i = 0; i < S.n_unk; ++i) {
@@ -554,9 +554,9 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
       const double dhi = 0.5 * (dh[n] + dh[in]);
       double ge = fE * he * he, gw = fE * hw * hw, gi = fN * hi * hi;
       if (turb) {
-        ge *= tmul(he, false);
-        gw *= tmul(hw, false);
-        gi *= tmul(hi, true);
+        ge *= tmul(he, false, n);
+        gw *= tmul(hw, false, w);
+        gi *= tmul(hi, true, k == 0 ? n : in);
       }
       double qe = dhe, qw = dhw;  // Couette-thickness changes of the two φ-faces
       if constexpr (kPockets) {
@@ -587,10 +587,10 @@ void ReynoldsSolver::Impl::residual_derivative_t(const LinearSystem& S, const do
     const double dhn = 0.5 * (dh[n] + dh[n + 1]), dhs = 0.5 * (dh[n - 1] + dh[n]);
     double ge = fE * he * he, gw = fE * hw * hw, gn = fN * hn * hn, gs = fN * hs * hs;
     if (turb) {
-      ge *= tmul(he, false);
-      gw *= tmul(hw, false);
-      gn *= tmul(hn, true);
-      gs *= tmul(hs, true);
+      ge *= tmul(he, false, n);
+      gw *= tmul(hw, false, w);
+      gn *= tmul(hn, true, n);
+      gs *= tmul(hs, true, n - 1);
     }
     double qe = dhe, qw = dhw;
     if constexpr (kPockets) {

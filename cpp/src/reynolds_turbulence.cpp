@@ -39,9 +39,13 @@ TurbulenceFactors turbulence_factors(Turbulence model, double re) {
 // Conductance multipliers of a face with (effective) film h: m = 12/k (h³/(12μ) → h³/(kμ))
 // and dm = d(h³ m)/dh / (3 h² ) = m (1 − Re dk/dRe / (3k)), the factor of the conductance's
 // h-derivative (laminar: m = dm = 1).
-void ReynoldsSolver::Impl::turb_face(double hf, bool axial, double& m, double& dm) const {
-  // only the coefficient this face needs (one pow), the same values as turbulence_factors
-  const double re = re_per_h * hf;
+void ReynoldsSolver::Impl::turb_face(double hf, bool axial, int q, double& m,
+                                     double& dm) const {
+  // only the coefficient this face needs (one pow), the same values as turbulence_factors;
+  // a viscosity field: Re_h at the face's viscosity μ_face = μ / (μ/μ_face) (the field is
+  // frozen, so dm, the h-derivative at fixed μ_face, keeps its form)
+  const double re =
+      visc_field ? re_per_h * hf * (axial ? vmN[q] : vmE[q]) : re_per_h * hf;
   double k = 12.0, rk = 0.0;
   if (geo.turbulence == Turbulence::ng_pan && re > 0.0) {
     const double a = axial ? 0.0043 * std::pow(re, 0.96) : 0.0136 * std::pow(re, 0.90);

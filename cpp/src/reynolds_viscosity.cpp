@@ -1,5 +1,6 @@
 // A viscosity per node (the thermo-hydrodynamic film, thd.hpp) and the film's finite-volume
-// flows and viscous dissipation, the transport terms of the energy equation.
+// flows and viscous dissipation, the transport terms of the energy equation. A turbulent film
+// takes every face's and node's Re_h at its own viscosity (reynolds_turbulence.cpp).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -20,9 +21,6 @@ void ReynoldsSolver::set_viscosity_field(const RowMatrixXd& v) {
   if (s.geo.short_bearing)
     throw InputError("short_bearing: a viscosity field needs the finite film (the short-bearing "
                      "model has no circumferential flow), got short_bearing = true");
-  if (s.turb)
-    throw InputError("turbulence: a viscosity field is available for the laminar film only, got '" +
-                     std::string(turbulence_name(s.geo.turbulence)) + "'");
   if (s.sealed)
     throw InputError("end_seal: a viscosity field needs open ends (the seal's flow carries no "
                      "temperature model), got sealed ends");
@@ -129,12 +127,15 @@ void ReynoldsSolver::Impl::film_flows(FilmFlows& f) const {
     f.area_m2.data()[n] = area;
     f.fill.data()[n] = th[n];
     f.viscosity_pa_s.data()[n] = node_mu(n);
-    ds[n] += node_mu(n) * U * U * th[n] / h[n] * area;  // Couette μU²θ/h
+    // Couette μU²θ/h (turbulent: the wall-shear factor C_f at the node's Re_h, as the torque)
+    const double cf = turb ? turbulence_factors(geo.turbulence, node_re(n, h[n])).cf : 1.0;
+    ds[n] += cf * node_mu(n) * U * U * th[n] / h[n] * area;
   }
   for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
     const int k = n % K1;
     const double area = ((k == 0 || k == Kl) ? 0.5 : 1.0) * a0;
-    ds[n] += node_mu(n) * U * U * th[n] * (pocket_inv_h(n) - 1.0 / h[n]) * area;
+    const double cf = turb ? turbulence_factors(geo.turbulence, node_re(n, h[n])).cf : 1.0;
+    ds[n] += cf * node_mu(n) * U * U * th[n] * (pocket_inv_h(n) - 1.0 / h[n]) * area;
   }
 }
 
