@@ -92,6 +92,7 @@ def _eq_batch(seg, rows):
     # per bearing (a tilting pad has a film per pad, a table bearing none: NaN)
     HM = asm.bearing_h_min(np.asarray(res.h_min))
     HZ = np.asarray(res.h_min_z_m)
+    FF = np.asarray(res.film_force)  # the films' H: moments at a tilting film's rotations
     for k, it in enumerate(seg):
         st, msg = res.status[k], res.message[k]
         if st == "error":  # the solve raised
@@ -111,6 +112,8 @@ def _eq_batch(seg, rows):
                          "journal_theta_y_rad": float(R[k, bc.rot[1]]) if tilt else math.nan,
                          "h_min_z_m": float(HZ[k, asm.film_owner.index(bc.index)]) if tilt
                          else math.nan,
+                         "film_moment_x_n_m": float(FF[k, bc.rot[0]]) if tilt else math.nan,
+                         "film_moment_y_n_m": float(FF[k, bc.rot[1]]) if tilt else math.nan,
                          "status": st if st in STATUS else "error", "message": msg})
 
 

@@ -59,7 +59,8 @@ void bind_batch(py::module_& m) {
       .def_readonly("residual", &EquilibriumBatchResult::residual)
       .def_readonly("r", &EquilibriumBatchResult::r)
       .def_readonly("h_min", &EquilibriumBatchResult::h_min)
-      .def_readonly("h_min_z_m", &EquilibriumBatchResult::h_min_z_m);
+      .def_readonly("h_min_z_m", &EquilibriumBatchResult::h_min_z_m)
+      .def_readonly("film_force", &EquilibriumBatchResult::film_force);
   m.def(
       "equilibrium_batch",
       [](SystemSolver& solver, const Eigen::VectorXd& omega, const Eigen::VectorXd& pressure,

@@ -196,6 +196,7 @@ EquilibriumBatchResult equilibrium_batch(SystemSolver& solver, const StabilityBa
   out.r = RowMatrixXd::Constant(np, n, nan);
   out.h_min = RowMatrixXd::Constant(np, nf, nan);
   out.h_min_z_m = RowMatrixXd::Constant(np, nf, nan);
+  out.film_force = RowMatrixXd::Constant(np, n, nan);
   Eigen::VectorXd prev;
   bool have_prev = false;
   for (Eigen::Index i = 0; i < np; ++i) {
@@ -208,6 +209,7 @@ EquilibriumBatchResult equilibrium_batch(SystemSolver& solver, const StabilityBa
       out.iterations[i] = e.iterations;
       out.residual[i] = e.residual;
       out.r.row(i) = e.r.transpose();
+      if (e.film_force.size() == n) out.film_force.row(i) = e.film_force.transpose();
       for (std::size_t f = 0; f < e.h_min.size() && static_cast<Eigen::Index>(f) < nf; ++f)
         out.h_min(i, static_cast<Eigen::Index>(f)) = e.h_min[f];
       for (std::size_t f = 0; f < e.h_min_z_m.size() && static_cast<Eigen::Index>(f) < nf; ++f)

@@ -65,6 +65,7 @@ struct EquilibriumBatchResult {
   RowMatrixXd r;                             ///< (n_pts, n) equilibrium (NaN on "error")
   RowMatrixXd h_min;                         ///< (n_pts, n_films)
   RowMatrixXd h_min_z_m;                     ///< (n_pts, n_films) axial position of h_min, m
+  RowMatrixXd film_force;                    ///< (n_pts, n) H at the equilibrium (NaN on "error")
 };
 
 /// Points in order on one solver, exactly as a Python loop of solver.equilibrium calls

@@ -110,14 +110,17 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         iterations=int(res.iterations), reynolds_solves=int(res.reynolds_solves),
         residual=float(res.residual), status=res.status, message=res.message,
         pm=float(res.pm) if method == "successive" else float("nan"), path=path,
-        tilt=tilt_outputs(asm, r, a, np.asarray(res.h_min_z_m), np.asarray(res.h_min)),
+        tilt=tilt_outputs(asm, r, a, np.asarray(res.h_min_z_m), np.asarray(res.h_min),
+                          np.asarray(res.film_force)),
     )
 
 
-def tilt_outputs(asm, r, a, h_min_z_films, h_min_films=None) -> dict:
+def tilt_outputs(asm, r, a, h_min_z_films, h_min_films=None, film_force=None) -> dict:
     """Per tilting-film bearing: its journal rotations relative to the housing, the housing
-    misalignment and the axial position of its minimum film (EquilibriumResult.tilt; a lobed
-    or pad bearing's: its thinnest film's, ``h_min_films`` the films' minimum films); for
+    misalignment, the axial position of its minimum film (EquilibriumResult.tilt; a lobed
+    or pad bearing's: its thinnest film's, ``h_min_films`` the films' minimum films) and,
+    with ``film_force`` (the films' H at the equilibrium, (n,)), the films' moments on the
+    journal about x and y (N·m, the rotations' entries of H); for
     tilting pads also every pad's minimum film and its z (tuples, pad order) and, with
     spherical pivots, the pads' pitches (rad)."""
     out = {}
@@ -131,6 +134,9 @@ def tilt_outputs(asm, r, a, h_min_z_films, h_min_films=None) -> dict:
                          "config_theta_x_rad": float(a[bc.rot[0]]),
                          "config_theta_y_rad": float(a[bc.rot[1]]),
                          "h_min_z_m": float(h_min_z_films[i])}
+        if film_force is not None and len(film_force) == len(r):
+            out[bc.index]["film_moment_x_n_m"] = float(film_force[bc.rot[0]])
+            out[bc.index]["film_moment_y_n_m"] = float(film_force[bc.rot[1]])
         if bc.extra and h_min_films is not None:  # tilting pads: every pad's edge film
             films = [k for k, o in enumerate(asm.film_owner) if o == bc.index]
             out[bc.index]["pad_h_min_m"] = tuple(float(h_min_films[k]) for k in films)

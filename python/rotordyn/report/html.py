@@ -40,7 +40,8 @@ from rotordyn._common.progress import Steps
 from rotordyn.plot.coefficients import bearing_coefficients as coefficient_figure
 from rotordyn.report.sections import (COEFFICIENT_HEADER, CRITICAL_HEADER, MERGE_RTOL,
                                       api_response, bearing_coefficient_frame,
-                                      coefficient_rows, coefficient_text_lines,
+                                      coefficient_rows, coefficient_speeds,
+                                      coefficient_text_lines,
                                       SOURCE_LEAST_DAMPED, critical_rows,
                                       critical_speed_table, critical_text_lines,
                                       not_resonance_note, shape_source, shapes_for,
@@ -318,6 +319,10 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                      + _table(COEFFICIENT_HEADER, [tuple(html.escape(str(c)) for c in r)
                                                    for r in coefficient_rows(coeffs)]))
 
+    # 2d (placed after 2c). the minimum film, its place, and tilted films' edge and moments
+    from rotordyn.report.films import film_html, film_text_lines, write_films
+
+    film_tab, lengths = write_films(s, coefficient_speeds(sp), pc, ay, figure_dir)
     # 2c. the bearings' temperatures and K, C at the thermal equilibrium (an oil system)
     from rotordyn.report.thermal import (thermal_frames, thermal_html, thermal_text_lines,
                                          write_thermal)
@@ -328,6 +333,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     if figure_dir is not None:
         write_thermal(th, th_coeffs, figure_dir)
     parts.append(thermal_html(th, th_coeffs, th_note, svg, _table))
+    parts.append(film_html(film_tab, _table, lengths))
 
     # 3. Campbell; the unbalance response is computed here too, for its peaks are critical
     # speeds as well (the only ones of a heavily damped mode that never crosses 1×)
@@ -394,6 +400,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
         text_sink += critical_text_lines(crit, shapes, rng, pc, bool(active),
                                          files=figure_dir is not None)
         text_sink += coefficient_text_lines(coeffs)
+        text_sink += film_text_lines(film_tab, lengths)
         text_sink += thermal_text_lines(th, th_coeffs, th_note)
         text_sink += thermal_critical_text_lines(tcrit, tnote)
 

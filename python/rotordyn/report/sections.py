@@ -453,6 +453,9 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
         fig.savefig(outdir / "bearing_coefficients.png", dpi=200, bbox_inches="tight")
         plt.close(fig)
     from rotordyn.report.thermal import thermal_frames, thermal_text_lines, write_thermal
+    from rotordyn.report.films import film_text_lines, write_films
+
+    film_tab, lengths = write_films(system, coefficient_speeds(sp), pc, ay, outdir)
 
     th, th_coeffs, note = thermal_frames(system, sp, pc, ay)
     write_thermal(th, th_coeffs, outdir)
@@ -469,7 +472,8 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
     checks.films = films  # Level I: isothermal films (as in the HTML report)
     if level1 is not None:
         level1_report.add_checks(*level1, checks)
-    return (lines + coefficient_text_lines(coeffs) + thermal_text_lines(th, th_coeffs, note)
+    return (lines + coefficient_text_lines(coeffs) + film_text_lines(film_tab, lengths)
+            + thermal_text_lines(th, th_coeffs, note)
             + thermal_critical_text_lines(tcrit, tnote) + dyn + checks.text_lines())
 
 

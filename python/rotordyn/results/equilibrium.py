@@ -76,7 +76,8 @@ class EquilibriumResult(Display):
         """Each bearing's values keyed by its name (``bearing[i]`` when it has none), as plain
         numbers rather than arrays over the bearings: ``{name: {"config_ax_m", "config_ay_m",
         "journal_x_m", "journal_y_m", "x_over_c", "y_over_c", "eccentricity_ratio",
-        "h_min_m", "h_min_angle_deg", "clearance_m"[, "sleeve_m" (list, m)]}}``."""
+        "h_min_m", "h_min_angle_deg", "clearance_m"[, "sleeve_m" (list, m)][, the tilting
+        film's outputs of :attr:`tilt` (per-pad tuples as lists)]}}``."""
         out = {}
         for i, n in enumerate(self.bearing_names):
             d = {k: float(getattr(self, k)[i]) for k in (
@@ -84,6 +85,8 @@ class EquilibriumResult(Display):
                 "y_over_c", "eccentricity_ratio", "h_min_m", "h_min_angle_deg", "clearance_m")}
             if i in self.sleeve_m:
                 d["sleeve_m"] = [float(x) for x in self.sleeve_m[i]]
+            for k, val in self.tilt.get(i, {}).items():
+                d[k] = [float(x) for x in val] if isinstance(val, tuple) else float(val)
             out[str(n or f"bearing[{i}]")] = d
         return out
 

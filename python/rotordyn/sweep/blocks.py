@@ -74,6 +74,7 @@ def _eq_seg(asm, res, at):
     R, IT, RES = np.asarray(res.r), np.asarray(res.iterations), np.asarray(res.residual)
     HM = asm.bearing_h_min(np.asarray(res.h_min))
     HZ = np.asarray(res.h_min_z_m)
+    FF = np.asarray(res.film_force)
     st = np.array([_status(s) for s in res.status], dtype=object)
     msg = np.array(res.message, dtype=object)
     raised = np.array([s == "error" for s in res.status])
@@ -111,6 +112,10 @@ def _eq_seg(asm, res, at):
                                                 nan).ravel(),
                 "h_min_z_m": np.where(tilt, np.take_along_axis(HZ[a:b], hz_col, axis=1)
                                       if HZ.shape[1] else nan, nan).ravel(),
+                "film_moment_x_n_m": np.where(tilt, FF[a:b][:, [r[0] for r in rot]],
+                                              nan).ravel(),
+                "film_moment_y_n_m": np.where(tilt, FF[a:b][:, [r[1] for r in rot]],
+                                              nan).ravel(),
                 "status": np.repeat(st[a:b], nb), "message": np.repeat(msg[a:b], nb)}))
             assert len(out[-1][0]) == m
     return out

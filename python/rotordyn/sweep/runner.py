@@ -47,6 +47,8 @@ UNITS = {
     "journal_theta_x_rad": ("rad", "journal rotation about x relative to the housing"),
     "journal_theta_y_rad": ("rad", "journal rotation about y relative to the housing"),
     "h_min_z_m": ("m", "axial position of the minimum film (0: mid-plane)"),
+    "film_moment_x_n_m": ("N m", "the films' moment on the journal about x (tilt = true)"),
+    "film_moment_y_n_m": ("N m", "the films' moment on the journal about y (tilt = true)"),
 }
 UNITS.update({  # the limit_cycle analysis
     "amplitude_m": ("m", "limit cycle's semi-major axis (largest distance from its mean)"),

@@ -39,8 +39,10 @@ OUTPUTS = {
     "equilibrium": {"bearing": STR, "journal_x_m": F64, "journal_y_m": F64, "x_over_c": F64,
                     "y_over_c": F64, "h_min_m": F64, "iterations": I64, "residual": F64,
                     # tilting films (tilt = true; NaN elsewhere): the journal's rotations
-                    # relative to the housing and the axial position of the minimum film
-                    "journal_theta_x_rad": F64, "journal_theta_y_rad": F64, "h_min_z_m": F64},
+                    # relative to the housing, the axial position of the minimum film and
+                    # the films' moments on the journal
+                    "journal_theta_x_rad": F64, "journal_theta_y_rad": F64, "h_min_z_m": F64,
+                    "film_moment_x_n_m": F64, "film_moment_y_n_m": F64},
     "thermal": {"bearing": STR, "effective_temperature_c": F64, "max_temperature_c": F64,
                 "inlet_temperature_c": F64, "temperature_rise_k": F64, "viscosity_pa_s": F64,
                 "power_loss_w": F64, "film_flow_m3_s": F64, "side_flow_m3_s": F64,

@@ -1,0 +1,139 @@
+"""The report's film table: each fluid-film bearing's minimum film at the equilibrium over
+speed, where it sits, and with ``tilt = true`` the edge it moves to, the journal's tilt in
+the housing and the films' moments (issue 20; docs/film-physics.md)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+
+from rotordyn import analysis
+
+TILT_COLUMNS = ("h_min_z_m", "journal_theta_x_rad", "journal_theta_y_rad",
+                "config_theta_x_rad", "config_theta_y_rad", "film_moment_x_n_m",
+                "film_moment_y_n_m")
+
+
+def film_frame(system, speeds_hz, chamber_pressure_pa: float, config_ay_m) -> pd.DataFrame:
+    """One row per fluid-film bearing (clearance > 0) and speed (Hz): ``eccentricity_ratio``,
+    ``h_min_m``, ``h_min_angle_deg`` and, when a bearing has ``tilt = true``, the
+    :data:`TILT_COLUMNS` (NaN for its untilted neighbours); ``status`` of the equilibrium
+    (a failed one: NaN outputs; one that raised, e.g. beyond a table bearing's speeds:
+    "error"). Empty without fluid-film bearings."""
+    from rotordyn.errors import RotordynError
+
+    films = [(getattr(b, "name", "") or f"bearing[{i}]") for i, b in enumerate(system.bearings)
+             if getattr(b, "clearance_m", 0.0) > 0.0]
+    tilted = any(getattr(b, "tilt", False) for b in system.bearings)
+    rows = []
+    for sp in np.asarray(speeds_hz, dtype=float) if films else ():
+        try:
+            e = analysis.equilibrium(system, float(sp), chamber_pressure_pa, config_ay_m)
+        except RotordynError as err:  # e.g. a table bearing's speed range: a row per film
+            for name in films:
+                row = {"bearing": name, "speed_hz": float(sp), "eccentricity_ratio": math.nan,
+                       "h_min_m": math.nan, "h_min_angle_deg": math.nan, "status": "error"}
+                row.update({k: math.nan for k in TILT_COLUMNS if tilted})
+                rows.append(row)
+            del err
+            continue
+        ok = e.status == "ok"
+        for i, name in enumerate(e.bearing_names):
+            c = float(e.clearance_m[i])
+            if not c > 0.0:
+                continue
+            x, y = float(e.journal_x_m[i]), float(e.journal_y_m[i])
+            row = {"bearing": name, "speed_hz": float(sp),
+                   "eccentricity_ratio": math.hypot(x, y) / c if ok else math.nan,
+                   "h_min_m": float(e.h_min_m[i]) if ok else math.nan,
+                   "h_min_angle_deg": float(e.h_min_angle_deg[i]) if ok else math.nan,
+                   "status": e.status}
+            t = e.tilt.get(i, {})
+            for k in TILT_COLUMNS if tilted else ():
+                row[k] = float(t[k]) if (ok and k in t) else math.nan
+            rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def _f(v, fmt):
+    return "–" if not np.isfinite(v) else format(v, fmt)
+
+
+def _where(z, length):
+    """The minimum film's axial place: "edge ±" at an end of a bearing of ``length`` (m; 0:
+    unknown), else its z in mm."""
+    if not np.isfinite(z):
+        return "–"
+    if length and abs(abs(z) - 0.5 * length) <= 1e-9 * length:
+        return "edge +" if z > 0 else "edge −"
+    return f"{1e3 * z:.1f} mm"
+
+
+def film_rows(frame: pd.DataFrame, lengths: dict | None = None):
+    """(header, rows of strings) of the film table; ``lengths``: bearing name → length (m),
+    to name an end as "edge"."""
+    tilt = "film_moment_y_n_m" in frame
+    head = ["bearing", "speed (Hz)", "ε", "h_min (µm)", "at φ (deg)"]
+    if tilt:
+        head += ["at z", "tilt θx, θy (mrad)", "M_x (N·m)", "M_y (N·m)"]
+    head.append("status")
+    body = []
+    for r in frame.itertuples(index=False):
+        cells = [r.bearing, f"{r.speed_hz:.4g}", _f(r.eccentricity_ratio, ".3f"),
+                 _f(1e6 * r.h_min_m, ".2f"), _f(r.h_min_angle_deg, ".0f")]
+        if tilt:
+            cells += [_where(r.h_min_z_m, (lengths or {}).get(r.bearing, 0.0)),
+                      "–" if not np.isfinite(r.journal_theta_x_rad) else
+                      f"{1e3 * r.journal_theta_x_rad:.3f}, {1e3 * r.journal_theta_y_rad:.3f}",
+                      _f(r.film_moment_x_n_m, ".4g"), _f(r.film_moment_y_n_m, ".4g")]
+        cells.append(str(r.status))
+        body.append([str(c) for c in cells])
+    return head, body
+
+
+def _what(frame) -> str:
+    return ("minimum film at the equilibrium and where it sits (φ from +x towards +y"
+            + ("; with tilt = true: its axial place, the journal's tilt in the housing and "
+               "the films' moments on the journal" if "film_moment_y_n_m" in frame else "")
+            + "; bearing_films.csv)")
+
+
+def film_text_lines(frame: pd.DataFrame, lengths: dict | None = None) -> list[str]:
+    """The text report's film table (none for an empty frame)."""
+    if frame.empty:
+        return []
+    head, body = film_rows(frame, lengths)
+    widths = [max(len(h), *(len(b[j]) for b in body)) for j, h in enumerate(head)]
+
+    def line(cells):
+        return "  " + "  ".join(c.ljust(w) for c, w in zip(cells, widths))
+
+    return ["", "bearing films: " + _what(frame), line(head)] + [line(b) for b in body]
+
+
+def film_html(frame: pd.DataFrame, table, lengths: dict | None = None) -> str:
+    """The HTML report's section 2d (``table(header, rows)``: the report's table writer)."""
+    import html
+
+    if frame.empty:
+        return ""
+    head, body = film_rows(frame, lengths)
+    return ("<h2>2d. Bearing films at the equilibrium</h2><p>" + html.escape(_what(frame))
+            + "</p>" + table(head, [tuple(html.escape(c) for c in b) for b in body]))
+
+
+def write_films(system, speeds_hz, chamber_pressure_pa: float, config_ay_m, outdir):
+    """The film frame at ``speeds_hz``, written as ``bearing_films.csv`` under ``outdir``
+    (None: not written); returns (frame, lengths by bearing name)."""
+    from pathlib import Path
+
+    fr = film_frame(system, speeds_hz, chamber_pressure_pa, config_ay_m)
+    if outdir is not None and not fr.empty:
+        fr.to_csv(Path(outdir) / "bearing_films.csv", index=False)
+    return fr, {getattr(b, "name", ""): getattr(b, "length_m", 0.0) for b in system.bearings}
+
+
+__all__ = ["TILT_COLUMNS", "film_frame", "film_html", "film_rows", "film_text_lines",
+           "write_films"]
