@@ -243,6 +243,9 @@ def test_unbalance_and_stability_sections_on_thermal_films(html_reports):
         assert (name, "isothermal films") in films and (name, "thermal films") in films
     assert ("thermal equilibrium at every speed of the Campbell diagram",
             "thermal films") in films
+    # all converged: a check that passed (it read "n/a" beside "all 121 speeds converged")
+    conv = [r for r in checks[1:] if r[0].startswith("thermal equilibrium at every speed")]
+    assert conv and all(r[-1] == "PASS" for r in conv), conv
     rows = _cells(page, "<h2>5a.")
     assert rows[0][-1] == "thermal films: δ" and len(rows) == 1 + HTML_SPEEDS.size
     c = rotordyn.campbell(s, HTML_SPEEDS, 0.0, None, thermal=True)

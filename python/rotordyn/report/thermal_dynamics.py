@@ -130,14 +130,15 @@ def unstable_html(u, checks, text: list | None = None) -> str:
 
 def equilibrium_check(checks, result, what: str) -> None:
     """The check "thermal equilibrium at every speed of ``what``": not resolved when any speed
-    of ``result`` failed (its dynamics are missing there), else no criterion (n/a)."""
+    of ``result`` failed (its dynamics are missing there), else passed (every speed's
+    dynamics are there)."""
     failed = no_thermal_equilibrium(result)
     n = len(result.speeds_hz)
     checks.add(f"thermal equilibrium at every speed of {what}", "each speed's thermal "
                "equilibrium converged (else its dynamics are missing)",
                (f"{len(failed)} of {n} speeds failed: " + ", ".join(f"{f:.4g}" for f in failed)
                 + " Hz") if len(failed) else f"all {n} speeds converged",
-               NOT_RESOLVED if len(failed) else None)
+               NOT_RESOLVED if len(failed) else True)
 
 
 def response_html(u, checks, outs, n_mc_hz: float, clear: dict, svg, table, verdict,
