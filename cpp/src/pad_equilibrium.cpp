@@ -290,6 +290,8 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
   const double tol_floor = 1e-14 * load_scale;
   double tol_in = tol_floor;
   std::vector<int> state(pads_.size(), 1);  // 1 pressured, 0 unloaded (pressure-free)
+  // a spherical pad's coordinates in r come from its pressured root at the last evaluation
+  std::vector<char> warm(pads_.size(), 0);
 
   // Every pad on its loaded branch for the other coordinates of r (pad coordinates in r are
   // the guesses). false (why) if a pad cannot be balanced; ContactError propagates.
@@ -376,14 +378,20 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
         st = pitch_solve(ps, fc, inner);
       } else {
         // a spherical pad: the joint Newton (pad_joint.cpp; no nesting, so the loose tolerance
-        // as for a rocker pad's tilt); where it fails from a pressured start (the tilt there
-        // sliding towards the pressure-free set, the first call's centred pads), the tilt
-        // (and pivot) for the current pitch, then the joint Newton again; else the nested
-        // solves, from the same states as without the joint Newton
+        // as for a rocker pad's tilt) from a warm start — the pad's coordinates predicted from
+        // its pressured root at the assembly's last evaluation. Otherwise, or where it fails,
+        // the nested solves' own first step, the tilt (and pivot) for the current pitch, and
+        // from there the joint Newton if the pad carries pressure; else the nested solves go
+        // on from that step (a pad pressure-free there restarts from γ_def): the joint Newton
+        // only replaces the pitch iteration the nested solves would run from the same point.
         const double tol_nested = ps.tol;
-        ps.tol = tol_in;
-        const int j0 = ps.joint(fc);
-        ps.tol = tol_nested;
+        auto try_joint = [&](double t) {
+          ps.tol = t;
+          const int j = ps.joint(fc);
+          ps.tol = tol_nested;
+          return j;
+        };
+        const int j0 = warm[k] ? try_joint(tol_in) : -1;
         if (j0 == 1) {
           st = 1;
         } else if (j0 == 0) {
@@ -394,20 +402,14 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
             st0 = inner();
           } catch (const ContactError&) {
           }
-          if (st0 == 1 && !ps.pressure_free) {
-            ps.tol = tol_in;
-            const int j1 = ps.joint(fc);
-            ps.tol = tol_nested;
-            if (j1 == 1) {
-              st = 1;
-            } else {
-              ps.eval();  // back at inner's point (rc restored), as pitch_solve expects
-              st = pitch_solve(ps, fc, inner, st0);
-            }
+          if (st0 == 1 && !ps.pressure_free && try_joint(tol_in) == 1) {
+            st = 1;
           } else {
+            if (st0 == 1 && !ps.pressure_free) ps.eval();  // at inner's point (rc restored)
             st = pitch_solve(ps, fc, inner, st0);
           }
         }
+        warm[k] = st == 1;
       }
       if (st < 0) {
         why = "pad '" + fc.name + "': no tilt balances the pad";
