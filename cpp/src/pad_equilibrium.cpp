@@ -385,13 +385,14 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
         // on from that step (a pad pressure-free there restarts from γ_def): the joint Newton
         // only replaces the pitch iteration the nested solves would run from the same point.
         const double tol_nested = ps.tol;
-        auto try_joint = [&](double t) {
-          ps.tol = t;
+        // (tight at once where the pads are the only coordinates: a held pose)
+        auto try_joint = [&]() {
+          ps.tol = outer.empty() ? tol_floor : tol_in;
           const int j = ps.joint(fc);
           ps.tol = tol_nested;
           return j;
         };
-        const int j0 = warm[k] ? try_joint(tol_in) : -1;
+        const int j0 = warm[k] ? try_joint() : -1;
         if (j0 == 1) {
           st = 1;
         } else if (j0 == 0) {
@@ -402,7 +403,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
             st0 = inner();
           } catch (const ContactError&) {
           }
-          if (st0 == 1 && !ps.pressure_free && try_joint(tol_in) == 1) {
+          if (st0 == 1 && !ps.pressure_free && try_joint() == 1) {
             st = 1;
           } else {
             if (st0 == 1 && !ps.pressure_free) ps.eval();  // at inner's point (rc restored)
