@@ -7,8 +7,9 @@
 // the tilt's ∂R/∂δ > 0 (the tilt solve's loaded-branch root), the pivot's and the pitch's Schur
 // derivatives > 0 (the increasing f(u) and f(γ) the nested solves bracket) — so that the root
 // is the nested solves' root to the tolerance. Anything else hands back to the nested solves
-// from the same start (rc restored): a pad pressure-free at a trial point (its defined position
-// is the nested solve's boundary of the pressure-free set, or γ_def), a trial that pinches the
+// from the same start (rc restored): a pad pressure-free or only lightly loaded at a trial
+// point (peak pressure below 1e-3 of μ|Ω s|(R/C)²: near its pressure-free set the nested
+// solves' defined choice — the boundary of that set, or γ_def — decides), a trial that pinches the
 // film below kPinch·C or closes it, a Jacobian that is not restoring, a step with no decrease
 // of the scaled residual after five halvings, or no convergence in 8 steps. The start is the
 // nested solves' own start, so the answer stays a function of the same inputs.
@@ -30,6 +31,14 @@ int SystemSolver::PadSolve::joint(const FilmCoupling& fc) {
   // the merit max_k |R_k|·scale_k compares the rows' work (N·m) instead of N against N·m
   Eigen::Vector3d scale = Eigen::Vector3d::Constant(C);
   scale(n - 1) = C / (0.5 * fc.geometry.length_m);
+  // a clearly loaded pad only: peak pressure ≥ 1e-3 of the film's pressure scale μ|Ω s|(R/C)²
+  // (the load scale's 1e-3 of the Sommerfeld load). A lighter pad sits near its pressure-free
+  // set, where it may have more than one equilibrium and the nested solves' defined choice
+  // (their restart from γ_def) decides; the joint Newton, started elsewhere, could end on
+  // another one or on the set's boundary with a vanishing stiffness.
+  const double Rj = 0.5 * fc.geometry.diameter_m;
+  const double p_light = 1e-3 * fc.geometry.viscosity_pa_s * std::abs(omega * fc.spin_factor) *
+                         (Rj / C) * (Rj / C);
   auto fail = [&](int why) {
     rc = start;
     return why;
@@ -43,7 +52,7 @@ int SystemSolver::PadSolve::joint(const FilmCoupling& fc) {
     } catch (const ContactError&) {
       return false;
     }
-    return !pressure_free;
+    return !pressure_free && pmax >= p_light;
   };
   auto merit = [&]() {
     double f = 0.0;
