@@ -171,3 +171,18 @@ def test_operating_point_in_one_call(pivot, whirl_ratio):
     with pytest.raises(InputError, match="whirl_ratio"):
         pad_misaligned_equilibrium(b, load_n=(0.0, -1500.0), coefficients=True,
                                    whirl_ratio=float("nan"), **kw)
+
+
+def test_a_lightly_loaded_pad_takes_the_nested_choice():
+    """Zero preload, flexible pivots with a soft pitch seat, journal held near the centre and
+    tilted: one pad carries a few hundred Pa and has two pressured equilibria (pitch
+    −1.3e-5 rad at 359 Pa, −6.5e-4 rad at 7e4 Pa); below 1e-3 of μ|Ω|(R/C)² (2.8 kPa here) the
+    joint Newton leaves it to the nested solves, so both paths give the same pads (1e-9 of
+    the scale; observed 5e-19 m) and the same pressure-free pads (without that rule the joint
+    Newton ended on the other equilibrium, 0.16 of c/(L/2) away in pitch)."""
+    b = TiltingPadBearing(**GEOM, preload=0.0, **FLEXIBLE)
+    pose = (1e-5, -3e-5, *TILT)
+    (ej, s, pj), (en, _, pn) = held(b, pose, True), held(b, pose, False)
+    agree(ej, en, s, 1e-9)
+    assert ej.unloaded_pads == en.unloaded_pads
+    assert sum(p == 0.0 for p in pj) == sum(p == 0.0 for p in pn)
