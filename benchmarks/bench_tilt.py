@@ -27,7 +27,9 @@ at a new load or pose):
 * standalone operating point: ``untilted`` today's ``coefficient_table`` at one speed (the
   pads' equilibrium under W and the synchronous 2×2, one C++ call) against ``tilted, rocker``
   and ``tilted, spherical``: ``misaligned_equilibrium`` at θ = (0.2, −0.3) c/L and the
-  synchronous 4×4 ``tilted_coefficients`` there;
+  synchronous 4×4 ``tilted_coefficients`` there (the pads solved twice); ``one call``: the
+  same from ``pad_misaligned_equilibrium(..., coefficients=True)`` (linearised about the
+  equilibrium's own films);
 * the film at a held pose with the pads in equilibrium (``tilted_forces``) at zero tilt and
   tilted, rocker and spherical;
 * the compressor of tests/data/models on its two tilting-pad bearings (72×16): equilibrium and
@@ -138,6 +140,7 @@ def pads(repeat) -> None:
 
     from rotordyn.bearings import (TiltingPadBearing, misaligned_equilibrium,
                                    tilted_coefficients)
+    from rotordyn.bearings.tilt_pads import pad_misaligned_equilibrium
 
     geo = dict(station=0, diameter_m=0.1, length_m=0.05, clearance_m=C, viscosity_pa_s=0.018,
                n_pads=5, pad_arc_deg=60.0, preload=0.5, n_circ=72, n_axial=16)
@@ -155,14 +158,21 @@ def pads(repeat) -> None:
         m = misaligned_equilibrium(b, load_n=load(), speed_hz=100.0, **th)
         return tilted_coefficients(b, x_m=m.x_m, y_m=m.y_m, speed_hz=100.0, **th)
 
+    def one_call(b):
+        return pad_misaligned_equilibrium(b, load_n=load(), speed_hz=100.0, coefficients=True,
+                                          **th)
+
     t = interleaved({
         "untilted": lambda: flat.coefficient_table([100.0], load()),
         "tilted, rocker": lambda: point(rock),
         "tilted, spherical": lambda: point(sph),
+        "tilted, rocker, one call": lambda: one_call(rock),
+        "tilted, spherical, one call": lambda: one_call(sph),
     }, repeat=repeat, number=5)
     for k, v in t.items():
-        print(f"tilting pads, equilibrium + K, C (5 x 60 deg, 72x16): {k:20s} {v}")
-    for k in ("tilted, rocker", "tilted, spherical"):
+        print(f"tilting pads, equilibrium + K, C (5 x 60 deg, 72x16): {k:27s} {v}")
+    for k in ("tilted, rocker", "tilted, spherical", "tilted, rocker, one call",
+              "tilted, spherical, one call"):
         print(f"  ratio {k} / untilted: {t[k].wall / t['untilted'].wall:.2f}x wall, "
               f"{t[k].cpu / t['untilted'].cpu:.2f}x CPU")
     m = misaligned_equilibrium(rock, load_n=(0.0, -1500.0), speed_hz=100.0, **th)

@@ -58,7 +58,10 @@ void bind_system(py::module_& m) {
       .def_readwrite("contact_fraction", &EquilibriumOptions::contact_fraction)
       .def_readwrite("polish", &EquilibriumOptions::polish)
       .def_readwrite("reuse_jacobian", &EquilibriumOptions::reuse_jacobian)
-      .def_readwrite("reuse_contraction", &EquilibriumOptions::reuse_contraction);
+      .def_readwrite("reuse_contraction", &EquilibriumOptions::reuse_contraction)
+      .def_readwrite("joint_pad_solve", &EquilibriumOptions::joint_pad_solve,
+                     "Spherical-pivot pads: joint Newton on each pad's coordinates with the "
+                     "nested solves as fallback (True), or always nested (False; tests).");
 
   py::class_<EquilibriumResult>(m, "EquilibriumResult")
       .def_readonly("r", &EquilibriumResult::r)

@@ -343,8 +343,8 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
       // the rest; pad_equilibrium.cpp), then the full Newton below finishes and polishes.
       Eigen::VectorXd rp = r;
       int it = 0, unloaded = 0;
-      if (pad_assembly(omega, F, out.load_scale, opt.tol, opt.max_iter, rp, it, unloaded,
-                       why_pads)) {
+      if (pad_assembly(omega, F, out.load_scale, opt.tol, opt.max_iter, opt.joint_pad_solve, rp,
+                       it, unloaded, why_pads)) {
         rn = rp;
         out.path = "pad_assembly";
         out.unloaded_pads = unloaded;

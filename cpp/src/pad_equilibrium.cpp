@@ -22,6 +22,10 @@
 // increasing in u (K(u, u) > 0, the film force falls as the pad moves away); a film closed at
 // every tilt counts as f = −∞. Newton on f with the Schur derivative, bracket expansion and
 // bisection.
+//
+// A spherical pivot's pitch γ: solved around the tilt (and pivot) solve (pitch_solve below),
+// or, by default, first by one joint Newton on the pad's coordinates (pad_joint.cpp) that
+// hands back to these nested solves where it does not reach a pressured, restoring root.
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <algorithm>
@@ -29,55 +33,17 @@
 #include <limits>
 #include <sstream>
 
+#include "pad_detail.hpp"
 #include "rotordyn/errors.hpp"
 #include "rotordyn/system.hpp"
 
 namespace rotordyn {
 
 namespace {
-constexpr double kPinch = 1e-3;  // the ends of a pad's tilt range: film pinched to kPinch·C
+using pad_detail::kPinch;
 double sgn(double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
 double inf_norm(const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 }  // namespace
-
-/// One pad's residual as a function of its own coordinates, everything else fixed.
-struct SystemSolver::PadSolve {
-  SystemSolver& s;
-  const PadGroup& g;
-  double omega = 0.0;
-  // the film's local coordinates: journal x, y[, θx, θy], tilt[, pivot][, pitch]
-  Eigen::VectorXd rc;
-  Eigen::Vector3d A = Eigen::Vector3d::Zero();  // (K r − F) on the pad less K_gg p_g
-  Eigen::Matrix3d Kgg = Eigen::Matrix3d::Zero();
-  double tol = 0.0;           // absolute residual tolerance, N
-  bool pressure_free = false;
-  double pmax = 0.0;
-  Eigen::Vector3d R = Eigen::Vector3d::Zero();
-
-  PadSolve(SystemSolver& solver, const PadGroup& group) : s(solver), g(group) {}
-  int m() const { return static_cast<int>(g.local.size()); }
-  double own(int k) const { return rc(g.local[static_cast<std::size_t>(k)]); }
-  void eval() {
-    const Eigen::VectorXd Hl = s.solve_film(g.film, rc, omega);
-    const RowMatrixXd& p = s.last_pressure(static_cast<int>(g.film));
-    pmax = p.maxCoeff();
-    pressure_free = p.cwiseAbs().maxCoeff() == 0.0;
-    for (int k = 0; k < m(); ++k) {
-      R(k) = A(k) - Hl(g.local[static_cast<std::size_t>(k)]);
-      for (int j = 0; j < m(); ++j) R(k) += Kgg(k, j) * own(j);
-    }
-  }
-  /// ∂R/∂p_g (m × m, in the top-left corner) about the last eval.
-  Eigen::Matrix3d jac() {
-    const Eigen::MatrixXd Kf = s.film_stiffness(g.film, g.local);  // the pad's own columns
-    Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
-    for (int k = 0; k < m(); ++k)
-      for (int j = 0; j < m(); ++j)
-        J(k, j) = Kgg(k, j) + Kf(g.local[static_cast<std::size_t>(k)],
-                                 g.local[static_cast<std::size_t>(j)]);
-    return J;
-  }
-};
 
 namespace {
 
@@ -129,7 +95,7 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc) {
       // a pressured root is restoring (∂R/∂δ > 0: the film moment grows against the tilt);
       // a negative slope means the iterate slides towards the pressure-free set, where the
       // moment fades to zero without a root (small |R| there is no root): bracket instead
-      const double d = ps.jac()(0, 0);
+      const double d = ps.jac(1)(0, 0);
       if (!(d > 0)) break;
       if (std::abs(r) <= ps.tol) return 1;
       if (k >= 3 && std::abs(r) > 0.25 * prev) break;  // not converging: bracket instead
@@ -162,7 +128,7 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc) {
     ps.rc(it) = x;
     ps.eval();
     const double r = ps.R(0);
-    const double d = ps.pressure_free ? 0.0 : ps.jac()(0, 0);
+    const double d = ps.pressure_free ? 0.0 : ps.jac(1)(0, 0);
     if (!ps.pressure_free && std::abs(r) <= ps.tol && d > 0) return 1;
     if (eff(r, ps.pressure_free) == sL) {
       a = x;
@@ -204,9 +170,10 @@ int tilt_solve(PadSolve& ps, const FilmCoupling& fc) {
 /// tilt and pivot held) — from which the search is a function of the other coordinates
 /// alone. A pad pressure-free at γ_def keeps γ_def (its pitch, like its tilt, then has no
 /// film stiffness). Safeguarded Newton (Schur derivative over the inner coordinates) with
-/// bracket expansion and bisection. Returns inner's state (1, 0) or −1.
+/// bracket expansion and bisection. Returns inner's state (1, 0) or −1. first ≥ −2: inner has
+/// already run at the current γ and returned it (−2: ContactError), ps evaluated where it left.
 template <class PadSolve, class FilmCoupling, class Inner>
-int pitch_solve(PadSolve& ps, const FilmCoupling& fc, Inner&& inner) {
+int pitch_solve(PadSolve& ps, const FilmCoupling& fc, Inner&& inner, int first = -3) {
   const int m = ps.m(), pg = m - 1;
   const int ig = ps.g.local[static_cast<std::size_t>(pg)];
   double gdef = 0.0;
@@ -232,11 +199,16 @@ int pitch_solve(PadSolve& ps, const FilmCoupling& fc, Inner&& inner) {
     ps.rc(ig) = gam;
     int st = -1;
     bool ok = true;
-    try {
-      st = inner();
+    if (k == 0 && first >= -2) {
+      st = std::max(first, -1);
       ok = st >= 0;
-    } catch (const ContactError&) {
-      ok = false;
+    } else {
+      try {
+        st = inner();
+        ok = st >= 0;
+      } catch (const ContactError&) {
+        ok = false;
+      }
     }
     if (!from_def && (!ok || ps.pressure_free)) {
       restart();
@@ -304,8 +276,8 @@ int pitch_solve(PadSolve& ps, const FilmCoupling& fc, Inner&& inner) {
 }  // namespace
 
 bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double load_scale,
-                                double tol, int max_iter, Eigen::VectorXd& r, int& iterations,
-                                int& unloaded, std::string& why) {
+                                double tol, int max_iter, bool joint, Eigen::VectorXd& r,
+                                int& iterations, int& unloaded, std::string& why) {
   const Eigen::Index n = model_.n();
   std::vector<char> in_pad(static_cast<std::size_t>(n), 0);
   for (const auto& g : pads_)
@@ -318,6 +290,8 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
   const double tol_floor = 1e-14 * load_scale;
   double tol_in = tol_floor;
   std::vector<int> state(pads_.size(), 1);  // 1 pressured, 0 unloaded (pressure-free)
+  // a spherical pad's coordinates in r come from its pressured root at the last evaluation
+  std::vector<char> warm(pads_.size(), 0);
 
   // Every pad on its loaded branch for the other coordinates of r (pad coordinates in r are
   // the guesses). false (why) if a pad cannot be balanced; ContactError propagates.
@@ -372,7 +346,7 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
           }
           double un = NAN;
           if (ok) {
-            const Eigen::Matrix3d J = ps.jac();
+            const Eigen::Matrix3d J = ps.jac(2);
             const double d = (st == 1 && J(0, 0) != 0.0) ? J(1, 1) - J(1, 0) * J(0, 1) / J(0, 0)
                                                          : J(1, 1);
             if (d > 0) un = u - fu / d;
@@ -397,7 +371,47 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
         }
         return st;
       };
-      const int st = g.pitch ? pitch_solve(ps, fc, inner) : inner();
+      int st = -1;
+      if (!g.pitch) {
+        st = inner();
+      } else if (!joint) {
+        st = pitch_solve(ps, fc, inner);
+      } else {
+        // a spherical pad: the joint Newton (pad_joint.cpp; no nesting, so the loose tolerance
+        // as for a rocker pad's tilt) from a warm start — the pad's coordinates predicted from
+        // its pressured root at the assembly's last evaluation. Otherwise, or where it fails,
+        // the nested solves' own first step, the tilt (and pivot) for the current pitch, and
+        // from there the joint Newton if the pad carries pressure; else the nested solves go
+        // on from that step (a pad pressure-free there restarts from γ_def): the joint Newton
+        // only replaces the pitch iteration the nested solves would run from the same point.
+        const double tol_nested = ps.tol;
+        // (tight at once where the pads are the only coordinates: a held pose)
+        auto try_joint = [&]() {
+          ps.tol = outer.empty() ? tol_floor : tol_in;
+          const int j = ps.joint(fc);
+          ps.tol = tol_nested;
+          return j;
+        };
+        const int j0 = warm[k] ? try_joint() : -1;
+        if (j0 == 1) {
+          st = 1;
+        } else if (j0 == 0) {
+          st = pitch_solve(ps, fc, inner);
+        } else {
+          int st0 = -2;
+          try {
+            st0 = inner();
+          } catch (const ContactError&) {
+          }
+          if (st0 == 1 && !ps.pressure_free && try_joint() == 1) {
+            st = 1;
+          } else {
+            if (st0 == 1 && !ps.pressure_free) ps.eval();  // at inner's point (rc restored)
+            st = pitch_solve(ps, fc, inner, st0);
+          }
+        }
+        warm[k] = st == 1;
+      }
       if (st < 0) {
         why = "pad '" + fc.name + "': no tilt balances the pad";
         return false;

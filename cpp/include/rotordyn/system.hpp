@@ -122,6 +122,10 @@ struct EquilibriumOptions {
   /// within it, not beyond. The polish and the load continuation always use the exact one.
   bool reuse_jacobian = false;
   double reuse_contraction = 0.1;  ///< in (0, 1): a step reducing ‖R‖ less than this refreshes J
+  /// Tilting pads on spherical pivots: each pad's (tilt[, pivot], pitch) by one joint Newton
+  /// in the pad assembly, the nested solves (pitch ⊃ pivot ⊃ tilt) where it fails (true), or
+  /// always the nested solves (false: the reference the joint solve is tested against).
+  bool joint_pad_solve = true;
 };
 
 struct EquilibriumResult {
@@ -268,9 +272,10 @@ class SystemSolver {
   /// Pad-assembly start (pad_equilibrium.cpp): every pad solved on its loaded branch for the
   /// current journal/rotor coordinates, inside a Newton on those with the reduced Jacobian.
   /// true with r at a point whose residual is below tol·load_scale (pads at round-off).
+  /// joint: spherical pads by the joint Newton first (EquilibriumOptions::joint_pad_solve).
   bool pad_assembly(double omega, const Eigen::VectorXd& F, double load_scale, double tol,
-                    int max_iter, Eigen::VectorXd& r, int& iterations, int& unloaded,
-                    std::string& why);
+                    int max_iter, bool joint, Eigen::VectorXd& r, int& iterations,
+                    int& unloaded, std::string& why);
 };
 
 }  // namespace rotordyn

@@ -311,7 +311,9 @@ class PadMisalignedEquilibrium:
     relative to the bearing, the pads free: position (m), eccentricity ratio and attitude at
     the mid-plane, forces (N) and moments (N·m) on the journal, the thinnest pad's minimum film
     and where it is, per pad tilt, pitch and minimum film (:class:`PadTiltedFilm`'s fields in
-    ``film``), status, message, iterations and how the start was reached (``path``)."""
+    ``film``), status, message, iterations and how the start was reached (``path``); with
+    ``coefficients=True`` the 4×4 ``K``, ``C`` there (as :func:`pad_tilted_coefficients`),
+    else None."""
 
     x_m: float
     y_m: float
@@ -329,6 +331,8 @@ class PadMisalignedEquilibrium:
     iterations: int
     path: str
     film: PadTiltedFilm | None
+    K: np.ndarray | None = None
+    C: np.ndarray | None = None
 
     def to_frame(self):
         import pandas as pd
@@ -345,13 +349,21 @@ class PadMisalignedEquilibrium:
 
 def pad_misaligned_equilibrium(b: TiltingPadBearing, *, load_n, speed_hz: float,
                                theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
-                               tol: float = 1e-10) -> PadMisalignedEquilibrium:
+                               tol: float = 1e-10, coefficients: bool = False,
+                               whirl_ratio: float | None = 1.0) -> PadMisalignedEquilibrium:
     """(x, y) where the pads' films balance ``load_n`` (N, on the journal) with the journal
     tilted by (θx, θy) rad, pads free (the C++ equilibrium with the pad assembly, the tilt
-    homotopy as fallback); then the forces, moments and films there."""
+    homotopy as fallback); then the forces, moments and films there. ``coefficients=True``:
+    also the operating point's 4×4 K, C over (x, y, θx, θy), the pads condensed at ν =
+    ``whirl_ratio``·Ω (None: static), linearised about this equilibrium's own films —
+    :func:`pad_tilted_coefficients` at (x, y) re-solves the pads at the held pose from the
+    cold start (the same root to the tolerance, a second pad solve)."""
     if isinstance(load_n, (str, bytes)) or len(np.atleast_1d(load_n)) != 2:
         raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}")
     lx, ly = v.finite("load_n[0]", load_n[0]), v.finite("load_n[1]", load_n[1])
+    v.boolean("coefficients", coefficients)
+    if whirl_ratio is not None:
+        v.finite("whirl_ratio", whirl_ratio)
     _, _, tx, ty = check_pad_pose(b, 0.0, 0.0, theta_x_rad, theta_y_rad)
     f = _speed(b, speed_hz)
     w = TWO_PI * f
@@ -377,6 +389,12 @@ def pad_misaligned_equilibrium(b: TiltingPadBearing, *, load_n, speed_hz: float,
                                         math.nan, math.nan, status, message,
                                         int(e.iterations), str(e.path), None)
     film = _film_at(lay, r, w, e.unloaded_pads)
+    K = C = None
+    if coefficients:  # the films' solve at r is reused (same coordinates)
+        lin = lay.solver.linearize(r, np.zeros(len(r)), w)
+        nu = 0.0 if whirl_ratio is None else whirl_ratio * abs(w)
+        K, C = reduce_coefficients(np.asarray(lin.KH) + lay.K, np.asarray(lin.DH), lay.M, nu,
+                                   N_JOURNAL)
     W = math.hypot(lx, ly)
     att = math.nan
     if W > 0.0 and (x != 0.0 or y != 0.0):
@@ -388,7 +406,7 @@ def pad_misaligned_equilibrium(b: TiltingPadBearing, *, load_n, speed_hz: float,
         eccentricity_ratio=math.hypot(x, y) / b.clearance_m, attitude_angle_deg=att,
         force_n=film.force_n, moment_n_m=film.moment_n_m, h_min_m=film.h_min_m,
         h_min_angle_deg=film.h_min_angle_deg, h_min_z_m=film.h_min_z_m, status=status,
-        message=message, iterations=int(e.iterations), path=str(e.path), film=film)
+        message=message, iterations=int(e.iterations), path=str(e.path), film=film, K=K, C=C)
 
 
 __all__ = ["PadTiltedFilm", "PadMisalignedEquilibrium", "pad_tilted_forces",
