@@ -60,27 +60,37 @@ namespace {
 #define ROTORDYN_UNROLL
 #endif
 
-// Checkpoint of a right-looking factorisation before column c (c a multiple of b): columns
-// c .. c+b-1 are the only ones that columns < c have updated, so with them the factorisation
-// can be resumed at c (BandLDLT::refactorize_from).
-inline void save_block(double* ckpt, const double* col, int c, int b, int w) {
-  std::memcpy(ckpt + static_cast<std::size_t>(c / b) * b * w, col,
-              sizeof(double) * static_cast<std::size_t>(b) * w);
-}
+// Checkpoint of a right-looking factorisation before column c (c a multiple of the stride
+// ks): columns c .. c+b-1 are the only ones that columns < c have updated, so with them the
+// factorisation can be resumed at c (BandLDLT::refactorize_from). Saved at every ks-th
+// column only (ks = kCheckpointRings·b): a copy of the whole band per factorisation cost
+// about as much as a resumed iteration saved.
+struct Checkpoints {
+  double* ckpt;  // null: none saved
+  int ks;        // stride (columns)
+  int next;      // the next column to save before
+  void at(const double* col, int c, int b) {
+    if (ckpt && c == next) {
+      const std::size_t w = static_cast<std::size_t>(b) + 1;
+      std::memcpy(ckpt + static_cast<std::size_t>(c / ks) * b * w, col, sizeof(double) * b * w);
+      next += ks;
+    }
+  }
+};
 
 // Right-looking LDLᵀ in the band of width b: B = b as a compile-time constant (the update
 // loops unroll), or B = 0 for any b given at run time. Columns with no coupling below the
 // diagonal (decoupled unknowns) are skipped. a has n + b columns of b + 1 values, the last b
 // zero padding, so every column updates exactly b columns. False on a zero or non-finite pivot.
 // From column c_start (the earlier columns and the state of c_start .. c_start+b-1 those of
-// an earlier run); ckpt non-null: the checkpoints saved on the way (save_block).
+// an earlier run); the checkpoints saved on the way (Checkpoints).
 template <int B>
-bool factor_band(double* a, int n, int b_run, char* coupled, int c_start, double* ckpt) {
+bool factor_band(double* a, int n, int b_run, char* coupled, int c_start, Checkpoints ck) {
   const int b = B > 0 ? B : b_run;
   const int w = b + 1;
   for (int c = c_start; c < n; ++c) {
     double* col = a + static_cast<std::size_t>(c) * w;
-    if (ckpt && c % b == 0) save_block(ckpt, col, c, b, w);
+    ck.at(col, c, b);
     const double d = col[0];
     if (!(d != 0.0 && std::isfinite(d))) return false;
     bool nz = false;
@@ -108,13 +118,13 @@ ROTORDYN_UNROLL
 // column was last written in (offsets 0-1, 2-3, ...; store forwarding), the shifted pairs an
 // odd t1 needs are shuffles of them; every target column is written in those same pairs.
 template <int B>
-bool factor_band_sse2(double* a, int n, char* coupled, int c_start, double* ckpt) {
+bool factor_band_sse2(double* a, int n, char* coupled, int c_start, Checkpoints ck) {
   constexpr int w = B + 1;
   constexpr int P = B / 2 + 1;  // pairs covering offsets 0..B (the last a single when B even)
   const __m128d zero = _mm_setzero_pd();
   for (int c = c_start; c < n; ++c) {
     double* col = a + static_cast<std::size_t>(c) * w;
-    if (ckpt && c % B == 0) save_block(ckpt, col, c, B, w);
+    ck.at(col, c, B);
     __m128d cp[P];
 ROTORDYN_UNROLL
     for (int m = 0; m < P; ++m)
@@ -311,9 +321,10 @@ void BandLDLT::begin(int cut, bool reverse) {
 bool BandLDLT::factorize_assembled(bool checkpoints) { return factor_from(0, checkpoints); }
 
 bool BandLDLT::refactorize_from(int c0, bool checkpoints) {
-  if (!ckpt_ok_ || c0 < 0 || c0 % b_ != 0 || c0 >= n_) return factor_from(0, checkpoints);
+  const int ks = checkpoint_stride();
+  if (!ckpt_ok_ || c0 < 0 || c0 % ks != 0 || c0 >= n_) return factor_from(0, checkpoints);
   std::memcpy(a_.data() + static_cast<std::size_t>(c0) * (b_ + 1),
-              ckpt_.data() + static_cast<std::size_t>(c0 / b_) * b_ * (b_ + 1),
+              ckpt_.data() + static_cast<std::size_t>(c0 / ks) * b_ * (b_ + 1),
               sizeof(double) * static_cast<std::size_t>(b_) * (b_ + 1));
   return factor_from(c0, checkpoints);
 }
@@ -321,10 +332,11 @@ bool BandLDLT::refactorize_from(int c0, bool checkpoints) {
 bool BandLDLT::factor_from(int c0, bool checkpoints) {
   ckpt_ok_ = false;
   if (!usable_) return false;
-  double* ck = nullptr;
+  const int ks = checkpoint_stride();
+  Checkpoints ck{nullptr, ks, (c0 + ks - 1) / ks * ks};
   if (checkpoints) {
-    ckpt_.resize(static_cast<std::size_t>((n_ + b_ - 1) / b_) * b_ * (b_ + 1));
-    ck = ckpt_.data();
+    ckpt_.resize(static_cast<std::size_t>((n_ + ks - 1) / ks) * b_ * (b_ + 1));
+    ck.ckpt = ckpt_.data();
   }
   bool ok;
   switch (b_) {

@@ -50,10 +50,12 @@ class BandLDLT {
     a_[static_cast<std::size_t>(ci) * (b_ + 1) + (cj - ci)] = v;
     return true;
   }
-  /// checkpoints: also save, every b columns, the state of the next b columns (what a later
-  /// refactorize_from needs; one copy of the band).
+  /// checkpoints: also save, every checkpoint_stride() columns, the state of the next b
+  /// columns (what a later refactorize_from needs).
   bool factorize_assembled(bool checkpoints = false);
-  /// Resumes the last factorisation at column c0 (a multiple of bandwidth(), opened order):
+  int checkpoint_stride() const { return kCheckpointRings * b_; }
+  /// Resumes the last factorisation at column c0 (a multiple of checkpoint_stride(), opened
+  /// order):
   /// valid when the assembled band equals the last one's in columns 0 .. c0 + b − 1 (the
   /// same opening, checkpoints saved) and the caller has rewritten columns c0 + b .. n − 1
   /// (begin_from, then the columns; a write into c0 .. c0 + b − 1 is overwritten here). The
@@ -83,13 +85,14 @@ class BandLDLT {
   bool usable_ = false;
   int n_ = 0, b_ = 0, shift_ = 0;
   bool rev_ = false;  // opened order runs in −j (see opened())
+  static constexpr int kCheckpointRings = 4;
   std::vector<int> ring_first_;
   std::vector<int> col_of_;   // value slot -> column (unknown)
   std::vector<int> dist_;     // value slot -> forward distance row − column (mod n), -1: upper
   std::vector<double> a_;     // band, column c at a_[c*(b+1) + d] = L(c + d, c) (d = 0: D)
   std::vector<char> coupled_; // column c has a nonzero below the diagonal
   mutable std::vector<double> ys_;
-  std::vector<double> ckpt_;  // state of columns k·b .. k·b + b − 1 before column k·b
+  std::vector<double> ckpt_;  // state of columns k·s .. k·s + b − 1 before column k·s (s the stride)
   bool ckpt_ok_ = false;      // ckpt_ holds the last (successful) factorisation's states
   bool factor_from(int c0, bool checkpoints);
   mutable std::vector<double> y4s_;  // solve4's interleaved workspace, (n + b) x 4

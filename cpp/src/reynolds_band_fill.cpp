@@ -44,7 +44,8 @@ void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* 
         S.band_cut = cut;
         return;
       }
-      const int c0 = cmin >= 2 * b ? ((cmin - 2 * b) / b) * b : 0;
+      const int ks = B.checkpoint_stride();
+      const int c0 = cmin >= 2 * b ? ((cmin - 2 * b) / ks) * ks : 0;
       if (c0 > 0 && fill_band(S, mk, cut, rev, c0 + b) && B.refactorize_from(c0, ckpt)) {
         S.band_cut = cut;
         ++band_resumed;
