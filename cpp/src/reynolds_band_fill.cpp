@@ -19,18 +19,23 @@ void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* 
       for (int i = S.ring_first[j]; i < S.ring_first[j + 1] && all; ++i) all = mk && mk[i];
       return all;
     };
+    // Full grid: the factor order runs against the rotation. The active-set iterations after
+    // the first mostly move the reformation boundary (the film front creeping upstream a ring
+    // per iteration), which then comes last among the film's columns, followed only by
+    // cavitated (skipped) ones, and the factorisation resumes there (below); the opening is
+    // kept through the iterations while its ring stays decoupled. The half grid keeps the
+    // order +j from the first decoupled ring and full refactorisations (no gain measured
+    // there; its answers stay those of that order bit for bit).
+    const bool resumable = !S.half && omega != 0.0;
+    const bool rev = resumable && omega > 0.0;
+    const bool ckpt = resumable && reuse && reuse->checkpoints;
     int cut = -1;
-    if (reuse && reuse->keep_cut >= 0 && decoupled(reuse->keep_cut)) cut = reuse->keep_cut;
+    if (resumable && reuse && reuse->keep_cut >= 0 && decoupled(reuse->keep_cut))
+      cut = reuse->keep_cut;
     for (int j = 0; j < N && cut < 0; ++j)
       if (decoupled(j)) cut = j;
-    // Factor order against the rotation: the active-set iterations after the first mostly
-    // move the reformation boundary (the film front creeping upstream a ring per iteration),
-    // which then comes last among the film's columns, followed only by cavitated (skipped)
-    // ones, and the factorisation resumes there (below).
-    const bool rev = omega > 0.0;
-    const bool ckpt = reuse && reuse->checkpoints;
     BandLDLT& B = S.band;
-    if (cut >= 0 && reuse && reuse->prev && band_resume && mk &&
+    if (cut >= 0 && ckpt && reuse->prev && band_resume && mk &&
         S.factor == LinearSystem::Factor::band && B.resumable(cut, rev)) {
       // Same film, a changed mask, the same opening: the factor's columns before the first
       // one the change touches stay (an unknown's couplings lie in its column and the b
