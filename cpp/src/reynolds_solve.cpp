@@ -193,14 +193,9 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   for (int n = 0; n < n_nodes; ++n)
     if (fixed[n]) pscale_fixed = std::max(pscale_fixed, std::abs(p[n]));
   for (int it = 1; it <= max_iter; ++it) {
-    // from the second iteration on: `next` holds the last iteration's set (swapped below),
-    // the band factor resumes after the first column the change touches (same opening)
-    BandReuse reuse;
-    reuse.checkpoints = true;
-    if (it > 1) {
-      reuse.prev = &next;
-      reuse.keep_cut = S.band_cut;
-    }
+    // from the 2nd iteration on, `next` holds the last set (swapped below): the band factor
+    // keeps its opening and resumes after the first column the change touches
+    const BandReuse reuse{true, it > 1 ? &next : nullptr, it > 1 ? S.band_cut : -1};
     factor_spd(S, &S.active, &reuse);
     for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
     S.solve_spd(b.data(), S.sol.data());
@@ -299,8 +294,7 @@ void ReynoldsSolver::Impl::solve_derivative_lcp(LinearSystem& S, const Eigen::Ve
   x.setZero(S.n_unk);
   const int max_iter = 100 + S.n_unk / 4;
   bool converged = false;
-  BandReuse restore;  // the base state's factor again afterwards: the same opening
-  restore.keep_cut = S.band_cut;
+  const BandReuse restore{false, nullptr, S.band_cut};  // the base factor again: its opening
   for (int it = 1; it <= max_iter && !converged; ++it) {
     factor_spd(S, &mask);
     for (int i = 0; i < S.n_unk; ++i) b[i] = mask[i] ? 0.0 : -dr[i];
