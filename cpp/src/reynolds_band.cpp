@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -46,6 +47,8 @@ bool BandLDLT::analyze(const SpMat& A, const std::vector<int>& ring_first, doubl
   coupled_.assign(n_, 0);
   ys_.assign(n_ + b_, 0.0);
   y4s_.assign(static_cast<std::size_t>(n_ + b_) * 4, 0.0);
+  ckpt_.clear();  // allocated on the first factorisation that saves checkpoints
+  ckpt_ok_ = false;
   usable_ = true;
   return true;
 }
@@ -57,16 +60,37 @@ namespace {
 #define ROTORDYN_UNROLL
 #endif
 
+// Checkpoint of a right-looking factorisation before column c (c a multiple of the stride
+// ks): columns c .. c+b-1 are the only ones that columns < c have updated, so with them the
+// factorisation can be resumed at c (BandLDLT::refactorize_from). Saved at every ks-th
+// column only (ks = kCheckpointRings·b): a copy of the whole band per factorisation cost
+// about as much as a resumed iteration saved.
+struct Checkpoints {
+  double* ckpt;  // null: none saved
+  int ks;        // stride (columns)
+  int next;      // the next column to save before
+  void at(const double* col, int c, int b) {
+    if (ckpt && c == next) {
+      const std::size_t w = static_cast<std::size_t>(b) + 1;
+      std::memcpy(ckpt + static_cast<std::size_t>(c / ks) * b * w, col, sizeof(double) * b * w);
+      next += ks;
+    }
+  }
+};
+
 // Right-looking LDLᵀ in the band of width b: B = b as a compile-time constant (the update
 // loops unroll), or B = 0 for any b given at run time. Columns with no coupling below the
 // diagonal (decoupled unknowns) are skipped. a has n + b columns of b + 1 values, the last b
 // zero padding, so every column updates exactly b columns. False on a zero or non-finite pivot.
+// From column c_start (the earlier columns and the state of c_start .. c_start+b-1 those of
+// an earlier run); the checkpoints saved on the way (Checkpoints).
 template <int B>
-bool factor_band(double* a, int n, int b_run, char* coupled) {
+bool factor_band(double* a, int n, int b_run, char* coupled, int c_start, Checkpoints ck) {
   const int b = B > 0 ? B : b_run;
   const int w = b + 1;
-  for (int c = 0; c < n; ++c) {
+  for (int c = c_start; c < n; ++c) {
     double* col = a + static_cast<std::size_t>(c) * w;
+    ck.at(col, c, b);
     const double d = col[0];
     if (!(d != 0.0 && std::isfinite(d))) return false;
     bool nz = false;
@@ -94,12 +118,13 @@ ROTORDYN_UNROLL
 // column was last written in (offsets 0-1, 2-3, ...; store forwarding), the shifted pairs an
 // odd t1 needs are shuffles of them; every target column is written in those same pairs.
 template <int B>
-bool factor_band_sse2(double* a, int n, char* coupled) {
+bool factor_band_sse2(double* a, int n, char* coupled, int c_start, Checkpoints ck) {
   constexpr int w = B + 1;
   constexpr int P = B / 2 + 1;  // pairs covering offsets 0..B (the last a single when B even)
   const __m128d zero = _mm_setzero_pd();
-  for (int c = 0; c < n; ++c) {
+  for (int c = c_start; c < n; ++c) {
     double* col = a + static_cast<std::size_t>(c) * w;
+    ck.at(col, c, B);
     __m128d cp[P];
 ROTORDYN_UNROLL
     for (int m = 0; m < P; ++m)
@@ -265,57 +290,88 @@ ROTORDYN_UNROLL
   X(18) X(19) X(20) X(21) X(22) X(23) X(24) X(25) X(31) X(32) X(33)
 }  // namespace
 
-bool BandLDLT::factorize(const double* values, int cut) {
+bool BandLDLT::factorize(const double* values, int cut, bool reverse) {
   if (!usable_) return false;
   const int w = b_ + 1;
-  shift_ = ring_first_[cut];
-  std::fill(a_.begin(), a_.end(), 0.0);
+  begin(cut, reverse);
   const int nnz = static_cast<int>(dist_.size());
   for (int q = 0; q < nnz; ++q) {
     const double v = values[q];
     if (v == 0.0) continue;
     const int d = dist_[q];
     if (d < 0) continue;  // upper triangle (mirror of a stored lower entry)
-    int c = col_of_[q] - shift_;
-    if (c < 0) c += n_;
-    // A nonzero coupling across the opening (column near the end, row near the start).
-    if (c + d >= n_) return false;
+    // the pair (column unknown, the one d after it): forward, the column unknown comes
+    // first; reverse, the other one
+    const int cf = opened(col_of_[q]);
+    const int c = rev_ ? cf - d : cf;
+    // A nonzero coupling across the opening.
+    if (c < 0 || c + d >= n_) return false;
     a_[static_cast<std::size_t>(c) * w + d] = v;
   }
   return factorize_assembled();
 }
 
-void BandLDLT::begin(int cut) {
-  shift_ = ring_first_[cut];
+void BandLDLT::begin(int cut, bool reverse) {
+  ckpt_ok_ = false;
+  rev_ = reverse;
+  shift_ = reverse ? ring_first_[cut + 1] : ring_first_[cut];
   std::fill(a_.begin(), a_.end(), 0.0);
 }
 
-bool BandLDLT::factorize_assembled() {
+bool BandLDLT::factorize_assembled(bool checkpoints) { return factor_from(0, checkpoints); }
+
+bool BandLDLT::refactorize_from(int c0, bool checkpoints) {
+  const int ks = checkpoint_stride();
+  if (!ckpt_ok_ || c0 < 0 || c0 % ks != 0 || c0 >= n_) return factor_from(0, checkpoints);
+  std::memcpy(a_.data() + static_cast<std::size_t>(c0) * (b_ + 1),
+              ckpt_.data() + static_cast<std::size_t>(c0 / ks) * b_ * (b_ + 1),
+              sizeof(double) * static_cast<std::size_t>(b_) * (b_ + 1));
+  return factor_from(c0, checkpoints);
+}
+
+bool BandLDLT::factor_from(int c0, bool checkpoints) {
+  ckpt_ok_ = false;
   if (!usable_) return false;
+  const int ks = checkpoint_stride();
+  Checkpoints ck{nullptr, ks, (c0 + ks - 1) / ks * ks};
+  if (checkpoints) {
+    ckpt_.resize(static_cast<std::size_t>((n_ + ks - 1) / ks) * b_ * (b_ + 1));
+    ck.ckpt = ckpt_.data();
+  }
+  bool ok;
   switch (b_) {
 #if defined(__SSE2__)
 #define ROTORDYN_BAND_FACTOR(B) \
   case B:                      \
-    return factor_band_sse2<B>(a_.data(), n_, coupled_.data());
+    ok = factor_band_sse2<B>(a_.data(), n_, coupled_.data(), c0, ck); \
+    break;
 #else
 #define ROTORDYN_BAND_FACTOR(B) \
   case B:                      \
-    return factor_band<B>(a_.data(), n_, B, coupled_.data());
+    ok = factor_band<B>(a_.data(), n_, B, coupled_.data(), c0, ck); \
+    break;
 #endif
     ROTORDYN_BAND_CASES(ROTORDYN_BAND_FACTOR)
 #undef ROTORDYN_BAND_FACTOR
     default:
-      return factor_band<0>(a_.data(), n_, b_, coupled_.data());
+      ok = factor_band<0>(a_.data(), n_, b_, coupled_.data(), c0, ck);
   }
+  ckpt_ok_ = ok && checkpoints;
+  return ok;
 }
 
 void BandLDLT::solve(const double* bvec, double* x) const {
   double* y = ys_.data();
   // the padding receives 0·y updates: cleared, so a non-finite right-hand side cannot linger
   std::fill(ys_.begin() + n_, ys_.end(), 0.0);
-  // y[c] = b[i] for c = i − shift (mod n): two contiguous pieces
-  std::copy(bvec + shift_, bvec + n_, y);
-  std::copy(bvec, bvec + shift_, y + (n_ - shift_));
+  // y[opened(i)] = b[i]: two contiguous pieces (reversed in the reverse order)
+  if (rev_) {
+    std::reverse_copy(bvec, bvec + shift_, y);
+    std::reverse_copy(bvec + shift_, bvec + n_, y + shift_);
+  } else {
+    std::copy(bvec + shift_, bvec + n_, y);
+    std::copy(bvec, bvec + shift_, y + (n_ - shift_));
+  }
   switch (b_) {
 #if defined(__SSE2__)
 #define ROTORDYN_BAND_SOLVE(B) \
@@ -333,8 +389,13 @@ void BandLDLT::solve(const double* bvec, double* x) const {
     default:
       solve_band<0>(a_.data(), n_, b_, coupled_.data(), y);
   }
-  std::copy(y, y + (n_ - shift_), x + shift_);
-  std::copy(y + (n_ - shift_), y + n_, x);
+  if (rev_) {
+    std::reverse_copy(y, y + shift_, x);
+    std::reverse_copy(y + shift_, y + n_, x + shift_);
+  } else {
+    std::copy(y, y + (n_ - shift_), x + shift_);
+    std::copy(y + (n_ - shift_), y + n_, x);
+  }
 }
 
 void BandLDLT::solve4(double* const x[4]) const {

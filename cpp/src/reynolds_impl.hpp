@@ -64,6 +64,7 @@ struct LinearSystem {
   BandLDLT band;               // when a decoupled ring opens the circle (reynolds_band.hpp)
   std::vector<int> ring_first; // ring j's unknowns are ring_first[j] .. ring_first[j+1]-1
   bool use_band = true;
+  int band_cut = -1;           // the ring the last band factor opened the circle at (-1: none)
   // fill_band's per-unknown table (built on its first use): node, west node, flags, weight,
   // north/east neighbour unknowns where a slot exists (-1 none) and their distances mod n.
   struct FillEntry {
@@ -223,9 +224,21 @@ struct ReynoldsSolver::Impl {
   // masked (or has no unknowns), which opens the circle there — the band filled directly from
   // the conductances, one pass, no sparse values; otherwise fill_spd and the static sparse
   // LDLᵀ. Both factor the same values as fill_spd(S, mask).
-  void factor_spd(LinearSystem& S, const std::vector<char>* mask);
-  bool fill_band(LinearSystem& S, const char* mask, int cut);
+  // reuse (the active-set loop, reynolds_band_fill.cpp): keep_cut >= 0 opens the circle at
+  // that ring while it stays decoupled; checkpoints saves what a resumed band factor needs;
+  // prev, the mask of the last factor_spd of S with the film unchanged since, resumes the
+  // band factor after the first columns the mask change touches (bit for bit the full one).
+  struct BandReuse {
+    bool checkpoints = false;
+    const std::vector<char>* prev = nullptr;
+    int keep_cut = -1;
+  };
+  void factor_spd(LinearSystem& S, const std::vector<char>* mask,
+                  const BandReuse* reuse = nullptr);
+  bool fill_band(LinearSystem& S, const char* mask, int cut, bool rev, int c_from = 0);
   bool band_factor = true;  // the banded path on (off: always the sparse factor; tests)
+  bool band_resume = true;  // BandReuse::prev honoured (off: a full refactor; tests)
+  int band_resumed = 0;     // resumed band factorisations in the last solve_reynolds
   // Residual (outflow + storage) of node n's full cell for node pressures pp and fill theta.
   double cell_residual(int n, const std::vector<double>& pp) const;
 

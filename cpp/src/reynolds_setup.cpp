@@ -485,6 +485,9 @@ bool ReynoldsSolver::pressure_only() const { return impl_->pressure_only; }
 void ReynoldsSolver::set_pressure_only(bool on) { impl_->pressure_only = on; }
 bool ReynoldsSolver::band_factor() const { return impl_->band_factor; }
 void ReynoldsSolver::set_band_factor(bool on) { impl_->band_factor = on; }
+bool ReynoldsSolver::band_resume() const { return impl_->band_resume; }
+void ReynoldsSolver::set_band_resume(bool on) { impl_->band_resume = on; }
+int ReynoldsSolver::band_resumed() const { return impl_->band_resumed; }
 bool ReynoldsSolver::band_factor_used() const {
   return impl_->sys && impl_->sys->factor == LinearSystem::Factor::band;
 }

@@ -178,6 +178,7 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
 
 void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   base_rhs(S, S.rhs);
+  band_resumed = 0;
   // In a continuation (a transient run: consecutive right-hand sides at nearby states) the
   // last converged set is the better start; it leads to the same unique solution.
   if (continuation && S.last_set.size() == static_cast<std::size_t>(S.n_unk))
@@ -192,7 +193,10 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   for (int n = 0; n < n_nodes; ++n)
     if (fixed[n]) pscale_fixed = std::max(pscale_fixed, std::abs(p[n]));
   for (int it = 1; it <= max_iter; ++it) {
-    factor_spd(S, &S.active);
+    // from the 2nd iteration on, `next` holds the last set (swapped below): the band factor
+    // keeps its opening and resumes after the first column the change touches
+    const BandReuse reuse{true, it > 1 ? &next : nullptr, it > 1 ? S.band_cut : -1};
+    factor_spd(S, &S.active, &reuse);
     for (int i = 0; i < S.n_unk; ++i) b[i] = S.active[i] ? 0.0 : S.rhs[i];
     S.solve_spd(b.data(), S.sol.data());
     for (int i = 0; i < S.n_unk; ++i) {
@@ -290,6 +294,7 @@ void ReynoldsSolver::Impl::solve_derivative_lcp(LinearSystem& S, const Eigen::Ve
   x.setZero(S.n_unk);
   const int max_iter = 100 + S.n_unk / 4;
   bool converged = false;
+  const BandReuse restore{false, nullptr, S.band_cut};  // the base factor again: its opening
   for (int it = 1; it <= max_iter && !converged; ++it) {
     factor_spd(S, &mask);
     for (int i = 0; i < S.n_unk; ++i) b[i] = mask[i] ? 0.0 : -dr[i];
@@ -309,7 +314,7 @@ void ReynoldsSolver::Impl::solve_derivative_lcp(LinearSystem& S, const Eigen::Ve
     }
     mask.swap(next);
   }
-  factor_spd(S, &S.active);
+  factor_spd(S, &S.active, &restore);
   if (!converged)
     throw ConvergenceError("reynolds cavitation: the directional derivative at a degenerate "
                            "cavitation set did not converge");

@@ -253,6 +253,71 @@ TEST_CASE("reynolds: BandLDLT opens the circle at a decoupled ring; equals Stati
   CHECK(!band.factorize(B.valuePtr(), 3));
 }
 
+TEST_CASE("reynolds: BandLDLT in reverse order; resumed factor equals the full one bit for bit") {
+  // The circle opened at ring `cut` and numbered in −j solves the masked operator; a mask
+  // change late in the opened order, refactorised from the last checkpoint before it, gives
+  // the same solutions bit for bit as a full refactorisation of the new mask (both orders).
+  const int N = 24, M = 6, n = N * M;
+  auto id = [&](int j, int k) { return ((j + N) % N) * M + k; };
+  std::mt19937 rng(5);
+  const Eigen::SparseMatrix<double> A = periodic_operator(N, M, rng);
+  std::vector<int> ring_first(N + 1);
+  for (int j = 0; j <= N; ++j) ring_first[j] = j * M;
+  BandLDLT band, full;
+  CHECK(band.analyze(A, ring_first) && full.analyze(A, ring_first));
+  for (const bool rev : {true, false}) {
+    const int cut = 5;
+    std::vector<char> mask(n);
+    for (auto& m : mask) m = rng() % 4 == 0;
+    for (int k = 0; k < M; ++k) mask[id(cut, k)] = 1;
+    const Eigen::SparseMatrix<double> B = masked(A, mask);
+    CHECK(band.factorize(B.valuePtr(), cut, rev));
+    CHECK(band.reversed() == rev && band.opened(id(cut, rev ? M - 1 : 0)) == 0);
+    Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0), x(n);
+    for (int i = 0; i < n; ++i)
+      if (mask[i]) b[i] = 0.0;
+    band.solve(b.data(), x.data());
+    CHECK((B * x - b).norm() < 1e-12 * b.norm());
+    // direct assembly with checkpoints, then a change in ring cut ∓ 15 (opened position 15)
+    auto assemble = [&](BandLDLT& f, const Eigen::SparseMatrix<double>& Bm, int c_from) {
+      if (c_from > 0)
+        f.begin_from(c_from);
+      else
+        f.begin(cut, rev);
+      for (int c = 0; c < n; ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(Bm, c); it; ++it)
+          if (it.row() >= c && std::min(f.opened(c), f.opened(it.row())) >= c_from)
+            CHECK(f.set(static_cast<int>(it.row()), c, it.value()));
+    };
+    assemble(band, B, 0);
+    CHECK(band.factorize_assembled(true) && band.resumable(cut, rev) &&
+          !band.resumable(cut, !rev));
+    std::vector<char> mask2 = mask;
+    const int jc = rev ? cut - 15 : cut + 15;
+    for (int k = 0; k < M; ++k) mask2[id(jc, k)] = !mask2[id(jc, k)];
+    const Eigen::SparseMatrix<double> B2 = masked(A, mask2);
+    const int cmin = band.opened(id(jc, rev ? M - 1 : 0));
+    CHECK(cmin == 15 * M);
+    // (a fallback to a full factorisation would refactorise the old factor's columns < c0)
+    const int ks = band.checkpoint_stride();
+    const int c0 = ((cmin - 2 * M) / ks) * ks;
+    CHECK(ks == 4 * M && c0 == 12 * M);
+    assemble(band, B2, c0 + M);
+    CHECK(band.refactorize_from(c0));
+    assemble(full, B2, 0);
+    CHECK(full.factorize_assembled());
+    Eigen::VectorXd b2 = Eigen::VectorXd::LinSpaced(n, 3.0, -1.0), x1(n), x2(n);
+    for (int i = 0; i < n; ++i)
+      if (mask2[i]) b2[i] = 0.0;
+    band.solve(b2.data(), x1.data());
+    full.solve(b2.data(), x2.data());
+    CHECK((B2 * x2 - b2).norm() < 1e-12 * b2.norm());
+    bool same = true;
+    for (int i = 0; i < n; ++i) same = same && x1[i] == x2[i];
+    CHECK(same);
+  }
+}
+
 TEST_CASE("reynolds: banded and sparse factorisations give the same film (cavitated, no groove)") {
   // A groove-less film is periodic; a loaded journal cavitates whole rings, where the solver
   // opens the circle and factorises in the band. Pressures, force and K, C agree with the
@@ -279,6 +344,41 @@ TEST_CASE("reynolds: banded and sparse factorisations give the same film (cavita
     full.rigid(3e-5, -5e-5, 0.0, 0.0, w);
     CHECK(!full.band_factor_used());
   }
+}
+
+TEST_CASE("reynolds: the resumed active-set factorisations give the film bit for bit") {
+  // Swift-Stieber on the half and the full grid and a z-dependent (tilted) film, both senses
+  // of rotation: with the resume of the band factor (the full grid's iterations after the
+  // first) the pressures, force and K, C are those of full refactorisations in every
+  // iteration, bit for bit, and the resume happened (the half grid refactorises in full).
+  const int N = 72, K1 = 17;
+  RowMatrixXd h(N, K1), hd = RowMatrixXd::Zero(N, K1);
+  for (int j = 0; j < N; ++j)
+    for (int k = 0; k < K1; ++k) {
+      const double phi = 2.0 * kPi * j / N, z = (k - 8) / 16.0;
+      h(j, k) = 1e-4 * (1.0 - (0.58 + 0.2 * z) * std::cos(phi - 0.5 - 0.3 * z));
+    }
+  int resumed = 0;
+  for (const double w : {2 * kPi * 50.0, -2 * kPi * 50.0})
+    for (const bool sym : {true, false}) {
+      ReynoldsSolver a(geom(0.05, 0.04), FilmGrid{N, 16}, Cavitation::reynolds);
+      ReynoldsSolver b(geom(0.05, 0.04), FilmGrid{N, 16}, Cavitation::reynolds);
+      b.set_band_resume(false);
+      CHECK(a.band_resume() && !b.band_resume());
+      for (ReynoldsSolver* s : {&a, &b}) s->set_use_axial_symmetry(sym);
+      const auto ca = a.coefficients(3e-5, -5e-5, w), cb = b.coefficients(3e-5, -5e-5, w);
+      CHECK(a.band_factor_used() && b.band_factor_used() && b.band_resumed() == 0);
+      resumed += a.band_resumed();
+      if (sym) CHECK(a.band_resumed() == 0);
+      CHECK(ca.K == cb.K && ca.C == cb.C && ca.force_n == cb.force_n);
+      const FilmSolution& fa = a.solve(h, hd, w);
+      const RowMatrixXd pa = fa.p_pa;
+      const int ia = fa.iterations;
+      const FilmSolution& fb = b.solve(h, hd, w);
+      CHECK(fb.iterations == ia && ia >= 2 && (pa.array() == fb.p_pa.array()).all());
+      resumed += a.band_resumed();
+    }
+  CHECK(resumed > 0);
 }
 
 TEST_CASE("reynolds: linearize_many equals one linearize() per perturbation, bit for bit") {

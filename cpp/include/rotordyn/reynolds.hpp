@@ -309,6 +309,14 @@ class ReynoldsSolver {
   void set_band_factor(bool on);
   /// Whether the last solve's (final) factorisation was the banded one.
   bool band_factor_used() const;
+  /// Testing switch (on by default): in the Swift–Stieber active-set loop on the full grid
+  /// the banded factor (ordered against the rotation) resumes after the first column an
+  /// iteration's set change touches (the factor is the full refactorisation's bit for bit).
+  /// Off: every iteration refactorises in full.
+  /// band_resumed(): how many of the last Swift–Stieber solve's factorisations resumed.
+  bool band_resume() const;
+  void set_band_resume(bool on);
+  int band_resumed() const;
   /// When h and ∂h/∂t are mirror-symmetric about z = 0 (rigid aligned journal), solve on the
   /// half grid, for either parity of n_axial (exactly the same discrete solution, ~2-4x
   /// cheaper); on by default. Non-symmetric films and perturbations use the full grid.
