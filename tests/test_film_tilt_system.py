@@ -136,7 +136,8 @@ def test_misalignment_as_a_sweep_axis(tmp_path):
                                  speed_hz=150.0)
         row = g[g["bearing"] == e.bearing_names[0]].iloc[0]
         assert row["journal_y_m"] == pytest.approx(e.journal_y_m[0], rel=1e-8)
-        for k in ("journal_theta_x_rad", "journal_theta_y_rad", "h_min_z_m"):
+        for k in ("journal_theta_x_rad", "journal_theta_y_rad", "h_min_z_m",
+                  "film_moment_x_n_m", "film_moment_y_n_m"):
             assert row[k] == pytest.approx(e.tilt[0][k], rel=1e-7, abs=1e-15), k
 
 
