@@ -3,7 +3,9 @@
 Either a journal position (``--x-m --y-m``, optional ``--vx-m-s --vy-m-s``) or a static load
 (``--load-n FX FY``, then the static equilibrium is solved first). Prints the film force,
 friction torque, flows, minimum film and the K, C coefficients; ``--json`` for a machine-
-readable record. Exit 2 on bad input (the message names the field).
+readable record. Exit 2 on bad input (the message names the field). ``--theta-x-rad``,
+``--theta-y-rad``: the journal tilted relative to the bearing, with its moments, edge film and
+4×4 K, C (:mod:`rotordyn.cli.bearing_tilt`).
 
 Film physics (docs/film-physics.md): ``--turbulence ng_pan --density-kg-m3 RHO`` for the
 turbulent film; ``--supply-temperature-c T`` with ``--load-n`` and an oil law
@@ -25,6 +27,7 @@ from rotordyn.bearings._film import TURBULENCE_MODELS
 from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.bearings.thermal import Oil
 from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args, table_text
+from rotordyn.cli.bearing_tilt import add_tilt_arguments, run_tilted, wants_tilt
 from rotordyn.cli.common import add_thd_arguments
 from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
@@ -88,6 +91,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="journal centre velocity y, m/s")
     s.add_argument("--load-n", type=float, nargs=2, metavar=("FX", "FY"), default=None,
                    help="static load on the journal, N: solve the equilibrium first")
+    add_tilt_arguments(s)
     s.add_argument("--method", choices=("perturbation", "finite_difference"),
                    default="perturbation", help="how K and C are computed")
     s.add_argument("--json", action="store_true", help="print one JSON record")
@@ -123,6 +127,12 @@ def run(args: argparse.Namespace) -> int:
     b = JournalBearing(viscosity_pa_s=args.viscosity_pa_s, **film)
     rec: dict = {"bearing": {k: v for k, v in b.__getstate__().items() if k != "grooves"}}
     rec["bearing"]["grooves"] = [[g.center_deg, g.width_deg, g.pressure_pa] for g in grooves]
+    if wants_tilt(args):
+        if args.speed_hz is None and args.speeds_hz is None:
+            raise InputError("--speed-hz: required")
+        if args.speed_hz is not None:
+            rec["speed_hz"] = args.speed_hz
+        return run_tilted(b, args, rec, thermal=oil is not None)
     if args.speeds_hz is not None:
         return _table(b, args)
     if args.speed_hz is None:

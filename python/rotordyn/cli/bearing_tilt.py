@@ -1,0 +1,92 @@
+"""``rotordyn bearing --theta-x-rad/--theta-y-rad``: one operating point of a plain journal
+bearing with the journal tilted relative to the bearing (issue 20; docs/film-physics.md,
+"Journal tilt and bearing misalignment"): forces, moments, the edge film and the 4×4 K, C
+over (x, y, θx, θy)."""
+
+from __future__ import annotations
+
+import argparse
+
+import numpy as np
+
+from rotordyn.bearings import JournalBearing
+from rotordyn.errors import InputError
+
+
+def add_tilt_arguments(s: argparse.ArgumentParser) -> None:
+    s.add_argument("--theta-x-rad", type=float, default=None, metavar="RAD",
+                   help="journal tilt about x relative to the bearing, rad (a misaligned "
+                        "bearing: prints the moments, the edge film and 4x4 K, C)")
+    s.add_argument("--theta-y-rad", type=float, default=None, metavar="RAD",
+                   help="journal tilt about y relative to the bearing, rad")
+
+
+def wants_tilt(args: argparse.Namespace) -> bool:
+    return args.theta_x_rad is not None or args.theta_y_rad is not None
+
+
+def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict, thermal: bool) -> int:
+    """The tilted operating point (``--load-n``: the misaligned equilibrium first; a failed
+    one is reported and not linearised, exit 1)."""
+    from rotordyn.bearings.tilt import misaligned_equilibrium, tilted_coefficients, tilted_forces
+    from rotordyn.cli.common import json_text
+
+    if args.speeds_hz is not None or thermal:
+        raise InputError("--theta-x-rad/--theta-y-rad: a tilted journal is available at one "
+                         "operating point of the isothermal film, not with --speeds-hz or a "
+                         "thermal model (in a system: tilt = true with [thermal])")
+    tx = 0.0 if args.theta_x_rad is None else args.theta_x_rad
+    ty = 0.0 if args.theta_y_rad is None else args.theta_y_rad
+    rec.update(journal_theta_x_rad=tx, journal_theta_y_rad=ty)
+    vx = vy = 0.0
+    if args.load_n is not None:
+        if args.x_m is not None or args.y_m is not None:
+            raise InputError("--load-n: give either --load-n or --x-m/--y-m, not both")
+        e = misaligned_equilibrium(b, load_n=tuple(args.load_n), speed_hz=args.speed_hz,
+                                   theta_x_rad=tx, theta_y_rad=ty)
+        rec["equilibrium"] = {"load_n": list(args.load_n), "status": e.status,
+                              "message": e.message, "x_m": e.x_m, "y_m": e.y_m,
+                              "eccentricity_ratio": e.eccentricity_ratio,
+                              "attitude_angle_deg": e.attitude_angle_deg,
+                              "iterations": e.iterations}
+        if e.status != "ok":
+            if args.json:
+                print(json_text(rec))
+            else:
+                print(f"misaligned equilibrium: {e.status} ({e.message}); no film outputs "
+                      "or coefficients at a failed equilibrium")
+            return 1
+        x, y = e.x_m, e.y_m
+    else:
+        if args.x_m is None or args.y_m is None:
+            raise InputError("--x-m/--y-m: journal position required (or give --load-n)")
+        x, y, vx, vy = args.x_m, args.y_m, args.vx_m_s, args.vy_m_s
+    t = tilted_forces(b, x_m=x, y_m=y, speed_hz=args.speed_hz, theta_x_rad=tx, theta_y_rad=ty,
+                      vx_m_s=vx, vy_m_s=vy)
+    K, C = tilted_coefficients(b, x_m=x, y_m=y, speed_hz=args.speed_hz, theta_x_rad=tx,
+                               theta_y_rad=ty, method=args.method)
+    rec.update(journal_x_m=x, journal_y_m=y, journal_vx_m_s=vx, journal_vy_m_s=vy,
+               force_n=np.asarray(t.force_n).tolist(), moment_n_m=np.asarray(t.moment_n_m).tolist(),
+               h_min_m=t.h_min_m, h_min_angle_deg=t.h_min_angle_deg, h_min_z_m=t.h_min_z_m,
+               coordinates=["x", "y", "theta_x", "theta_y"], k=np.asarray(K).tolist(),
+               c=np.asarray(C).tolist(), coefficient_method=args.method)
+    if args.json:
+        print(json_text(rec))
+        return 0
+    if "equilibrium" in rec:
+        e = rec["equilibrium"]
+        print(f"misaligned equilibrium: x = {x:.6g} m, y = {y:.6g} m, eps (mid-plane) = "
+              f"{e['eccentricity_ratio']:.4g}, attitude = {e['attitude_angle_deg']:.2f} deg")
+    print(f"journal tilt relative to the bearing: theta_x = {tx:.6g} rad, theta_y = {ty:.6g} rad")
+    print(f"force on journal: Fx = {t.force_n[0]:.6g} N, Fy = {t.force_n[1]:.6g} N; moment: "
+          f"Mx = {t.moment_n_m[0]:.6g} N m, My = {t.moment_n_m[1]:.6g} N m")
+    print(f"h_min = {t.h_min_m:.6g} m at {t.h_min_angle_deg:.2f} deg, z = {t.h_min_z_m:.6g} m "
+          "(mid-plane 0)")
+    print("K over (x, y, theta_x, theta_y) [N/m, N/rad, N m/m, N m/rad] =\n"
+          + np.array2string(np.asarray(K), precision=5))
+    print("C over (x, y, theta_x, theta_y) [N s/m, N s/rad, N m s/m, N m s/rad] =\n"
+          + np.array2string(np.asarray(C), precision=5))
+    return 0
+
+
+__all__ = ["add_tilt_arguments", "run_tilted", "wants_tilt"]

@@ -1,0 +1,74 @@
+"""``rotordyn bearing --theta-x-rad/--theta-y-rad`` (issue 20: the CLI shows the edge film
+and the moments): the command-line record of a tilted journal equals the API
+(`tilted_forces`, `tilted_coefficients`, `misaligned_equilibrium`) to round-off; zero tilt
+gives today's 2×2 K, C in the translational block; bad input names the field."""
+
+import json
+
+import numpy as np
+import pytest
+
+import rotordyn
+from rotordyn.bearings.tilt import misaligned_equilibrium, tilted_coefficients, tilted_forces
+from rotordyn.cli import main
+
+D, L, C, MU = 0.1, 0.05, 1e-4, 0.018
+GEO = ["--diameter-m", str(D), "--length-m", str(L), "--clearance-m", str(C),
+       "--viscosity-pa-s", str(MU), "--n-circ", "36", "--n-axial", "8", "--speed-hz", "100"]
+TH = dict(theta_x_rad=0.2 * C / L, theta_y_rad=-0.4 * C / L)
+
+
+def _b():
+    return rotordyn.JournalBearing(diameter_m=D, length_m=L, clearance_m=C, viscosity_pa_s=MU,
+                                   n_circ=36, n_axial=8)
+
+
+def _run(capsys, *extra):
+    code = main(["bearing", *GEO, *extra, "--json"])
+    return code, json.loads(capsys.readouterr().out)
+
+
+def test_tilted_point_equals_the_api(capsys):
+    x, y = 0.3 * C, -0.4 * C
+    code, r = _run(capsys, "--x-m", str(x), "--y-m", str(y),
+                   "--theta-x-rad", repr(TH["theta_x_rad"]),
+                   "--theta-y-rad", repr(TH["theta_y_rad"]))
+    assert code == 0
+    t = tilted_forces(_b(), x_m=x, y_m=y, speed_hz=100.0, **TH)
+    K, Cm = tilted_coefficients(_b(), x_m=x, y_m=y, speed_hz=100.0, **TH)
+    np.testing.assert_allclose(r["force_n"], t.force_n, rtol=1e-12)
+    np.testing.assert_allclose(r["moment_n_m"], t.moment_n_m, rtol=1e-12)
+    assert r["h_min_z_m"] == pytest.approx(t.h_min_z_m) and abs(r["h_min_z_m"]) == L / 2
+    np.testing.assert_allclose(r["k"], K, rtol=1e-12, atol=1e-12 * np.abs(K).max())
+    np.testing.assert_allclose(r["c"], Cm, rtol=1e-12, atol=1e-12 * np.abs(Cm).max())
+    assert np.shape(r["k"]) == (4, 4) and r["coordinates"] == ["x", "y", "theta_x", "theta_y"]
+
+
+def test_misaligned_equilibrium_and_zero_tilt(capsys):
+    code, r = _run(capsys, "--load-n", "0", "-2000", "--theta-y-rad", repr(TH["theta_y_rad"]))
+    assert code == 0 and r["equilibrium"]["status"] == "ok"
+    e = misaligned_equilibrium(_b(), load_n=(0.0, -2000.0), speed_hz=100.0,
+                               theta_y_rad=TH["theta_y_rad"])
+    assert (r["journal_x_m"], r["journal_y_m"]) == pytest.approx((e.x_m, e.y_m), rel=1e-12)
+    np.testing.assert_allclose(r["moment_n_m"], e.moment_n_m, rtol=1e-9)
+    # zero tilt given: the translational block is today's 2x2 bearing
+    code, z = _run(capsys, "--load-n", "0", "-2000", "--theta-x-rad", "0")
+    assert code == 0
+    b = _b()
+    eq = b.static_equilibrium(load_n=(0.0, -2000.0), speed_hz=100.0)
+    K, Cm = b.coefficients(x_m=eq.x_m, y_m=eq.y_m, speed_hz=100.0)
+    np.testing.assert_allclose(np.array(z["k"])[:2, :2], K, rtol=1e-8, atol=1e-8 * abs(K).max())
+    np.testing.assert_allclose(np.array(z["c"])[:2, :2], Cm, rtol=1e-8,
+                               atol=1e-8 * abs(Cm).max())
+
+
+def test_text_output_and_bad_input(capsys):
+    assert main(["bearing", *GEO, "--x-m", "0", "--y-m", "0", "--theta-y-rad", "1e-3"]) == 0
+    out = capsys.readouterr().out
+    assert "moment: Mx" in out and "z = " in out and "theta_y" in out
+    # a tilt that closes the film at an edge: theta L/2 >= c
+    assert main(["bearing", *GEO, "--x-m", "0", "--y-m", "0", "--theta-y-rad", "5e-3"]) == 2
+    assert "theta" in capsys.readouterr().err
+    assert main(["bearing", *GEO[:-2], "--speeds-hz", "50:100:50", "--load-n", "0", "-1000",
+                 "--theta-x-rad", "1e-4"]) == 2
+    assert "--theta-x-rad" in capsys.readouterr().err
