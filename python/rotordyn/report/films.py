@@ -31,13 +31,12 @@ def film_frame(system, speeds_hz, chamber_pressure_pa: float, config_ay_m) -> pd
     for sp in np.asarray(speeds_hz, dtype=float) if films else ():
         try:
             e = analysis.equilibrium(system, float(sp), chamber_pressure_pa, config_ay_m)
-        except RotordynError as err:  # e.g. a table bearing's speed range: a row per film
+        except RotordynError:  # e.g. a table bearing's speed range: a row per film
             for name in films:
                 row = {"bearing": name, "speed_hz": float(sp), "eccentricity_ratio": math.nan,
                        "h_min_m": math.nan, "h_min_angle_deg": math.nan, "status": "error"}
                 row.update({k: math.nan for k in TILT_COLUMNS if tilted})
                 rows.append(row)
-            del err
             continue
         ok = e.status == "ok"
         for i, name in enumerate(e.bearing_names):
@@ -45,7 +44,7 @@ def film_frame(system, speeds_hz, chamber_pressure_pa: float, config_ay_m) -> pd
             if not c > 0.0:
                 continue
             x, y = float(e.journal_x_m[i]), float(e.journal_y_m[i])
-            row = {"bearing": name, "speed_hz": float(sp),
+            row = {"bearing": name or f"bearing[{i}]", "speed_hz": float(sp),
                    "eccentricity_ratio": math.hypot(x, y) / c if ok else math.nan,
                    "h_min_m": float(e.h_min_m[i]) if ok else math.nan,
                    "h_min_angle_deg": float(e.h_min_angle_deg[i]) if ok else math.nan,
