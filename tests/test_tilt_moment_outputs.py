@@ -98,8 +98,15 @@ def test_cli_equilibrium_prints_the_moments(tmp_path, capsys):
 def test_report_film_table(tmp_path):
     from rotordyn.report.films import film_frame, film_text_lines
 
+    from rotordyn.analysis.bearing_coefficients import bearing_coefficients
+
+    def frame(system, speeds):
+        eqs: list = []
+        bearing_coefficients(system, speeds, equilibria=eqs)
+        return film_frame(system, eqs)
+
     s = compressor(config_theta_y_rad=AL)
-    fr = film_frame(s, [60.0, 150.0], 0.0, None)
+    fr = frame(s, [60.0, 150.0])
     assert list(fr["bearing"]) == ["NDE bearing", "DE bearing"] * 2
     e = rotordyn.equilibrium(s, speed_hz=150.0)
     row = fr[(fr["speed_hz"] == 150.0) & (fr["bearing"] == "NDE bearing")].iloc[0]
@@ -109,6 +116,6 @@ def test_report_film_table(tmp_path):
     text = "\n".join(film_text_lines(fr, {b_.name: b_.length_m for b_ in s.bearings}))
     assert "edge" in text and "M_y (N·m)" in text
     # untilted films: the table keeps h_min and drops the tilt columns
-    fu = film_frame(compressor(tilt=False), [150.0], 0.0, None)
+    fu = frame(compressor(tilt=False), [150.0])
     assert fu["h_min_m"].notna().all() and "film_moment_y_n_m" not in fu
     assert isinstance(fu, pd.DataFrame)

@@ -56,7 +56,7 @@ def _element_matrices(lm, b, name: str, idx: list[int]):
 
 def bearing_coefficients(system, speeds_hz, chamber_pressure_pa: float = 0.0,
                          config_ay_m: float | None = None, *, whirl_ratio: float = 1.0,
-                         progress=None) -> pd.DataFrame:
+                         progress=None, equilibria: list | None = None) -> pd.DataFrame:
     """Every fluid-film or table bearing's kxx … cyy over ``speeds_hz`` (Hz), in the system.
 
     Returns a tidy frame, one row per (bearing, speed): ``bearing`` (its name, or
@@ -65,7 +65,9 @@ def bearing_coefficients(system, speeds_hz, chamber_pressure_pa: float = 0.0,
     coefficients where it did not converge). Convention dF = −K dq − C dq̇ (DESIGN frame: x
     horizontal, y up). ``whirl_ratio``: ν/Ω at which pads and sleeve are condensed (1:
     synchronous, as API 684 tabulates them; 0: static condensation). ``progress``: called as
-    ``progress(i, n)`` after each speed."""
+    ``progress(i, n)`` after each speed. ``equilibria``: a list that receives, in increasing
+    speed, ``(speed_hz, status, EquilibriumResult | None)`` of each speed's equilibrium (None
+    where the solve raised), for tables of the same operating points."""
     import pandas as pd
     sp = np.atleast_1d(np.asarray(speeds_hz, dtype=float))
     if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)) or np.any(sp < 0):
@@ -81,6 +83,8 @@ def bearing_coefficients(system, speeds_hz, chamber_pressure_pa: float = 0.0,
                                                  config_ay_m, "perturbation",
                                                  continue_on=("ok", "contact")):
         i = int(order[k])
+        if equilibria is not None:
+            equilibria.append((float(sp[i]), status, lm.equilibrium if lm is not None else None))
         out = []
         lab = list(lm.labels) if lm is not None else []
         for bi, b in enumerate(system.bearings):

@@ -9,49 +9,37 @@ import math
 import numpy as np
 import pandas as pd
 
-from rotordyn import analysis
+from rotordyn._common.status import CONVERGED
 
 TILT_COLUMNS = ("h_min_z_m", "journal_theta_x_rad", "journal_theta_y_rad",
                 "config_theta_x_rad", "config_theta_y_rad", "film_moment_x_n_m",
                 "film_moment_y_n_m")
 
 
-def film_frame(system, speeds_hz, chamber_pressure_pa: float, config_ay_m) -> pd.DataFrame:
-    """One row per fluid-film bearing (clearance > 0) and speed (Hz): ``eccentricity_ratio``,
-    ``h_min_m``, ``h_min_angle_deg`` and, when a bearing has ``tilt = true``, the
-    :data:`TILT_COLUMNS` (NaN for its untilted neighbours); ``status`` of the equilibrium
-    (a failed one: NaN outputs; one that raised, e.g. beyond a table bearing's speeds:
-    "error"). Empty without fluid-film bearings."""
-    from rotordyn.errors import RotordynError
-
-    films = [(getattr(b, "name", "") or f"bearing[{i}]") for i, b in enumerate(system.bearings)
-             if getattr(b, "clearance_m", 0.0) > 0.0]
+def film_frame(system, equilibria) -> pd.DataFrame:
+    """One row per fluid-film bearing (clearance > 0) and speed of ``equilibria`` (the
+    ``(speed_hz, status, EquilibriumResult | None)`` that
+    :func:`rotordyn.analysis.bearing_coefficients.bearing_coefficients` collects, so the table
+    and the coefficients share their operating points): ``eccentricity_ratio``, ``h_min_m``,
+    ``h_min_angle_deg`` and, when a bearing has ``tilt = true``, the :data:`TILT_COLUMNS`
+    (NaN for its untilted neighbours); ``status`` of the equilibrium (not converged or raised:
+    NaN outputs). Empty without fluid-film bearings."""
+    films = [(i, getattr(b, "name", "") or f"bearing[{i}]")
+             for i, b in enumerate(system.bearings) if getattr(b, "clearance_m", 0.0) > 0.0]
     tilted = any(getattr(b, "tilt", False) for b in system.bearings)
     rows = []
-    for sp in np.asarray(speeds_hz, dtype=float) if films else ():
-        try:
-            e = analysis.equilibrium(system, float(sp), chamber_pressure_pa, config_ay_m)
-        except RotordynError:  # e.g. a table bearing's speed range: a row per film
-            for name in films:
-                row = {"bearing": name, "speed_hz": float(sp), "eccentricity_ratio": math.nan,
-                       "h_min_m": math.nan, "h_min_angle_deg": math.nan, "status": "error"}
-                row.update({k: math.nan for k in TILT_COLUMNS if tilted})
-                rows.append(row)
-            continue
-        ok = e.status == "ok"
-        for i, name in enumerate(e.bearing_names):
-            c = float(e.clearance_m[i])
-            if not c > 0.0:
-                continue
-            x, y = float(e.journal_x_m[i]), float(e.journal_y_m[i])
-            row = {"bearing": name or f"bearing[{i}]", "speed_hz": float(sp),
-                   "eccentricity_ratio": math.hypot(x, y) / c if ok else math.nan,
-                   "h_min_m": float(e.h_min_m[i]) if ok else math.nan,
-                   "h_min_angle_deg": float(e.h_min_angle_deg[i]) if ok else math.nan,
-                   "status": e.status}
-            t = e.tilt.get(i, {})
+    for sp, status, e in equilibria if films else ():
+        ok = e is not None and status in CONVERGED  # as the coefficients beside it
+        for i, name in films:
+            row = {"bearing": name, "speed_hz": float(sp), "eccentricity_ratio": math.nan,
+                   "h_min_m": math.nan, "h_min_angle_deg": math.nan, "status": status}
+            t = e.tilt.get(i, {}) if ok else {}
+            if ok:
+                row.update(eccentricity_ratio=float(e.eccentricity_ratio[i]),
+                           h_min_m=float(e.h_min_m[i]),
+                           h_min_angle_deg=float(e.h_min_angle_deg[i]))
             for k in TILT_COLUMNS if tilted else ():
-                row[k] = float(t[k]) if (ok and k in t) else math.nan
+                row[k] = float(t[k]) if k in t else math.nan
             rows.append(row)
     return pd.DataFrame(rows)
 
@@ -123,12 +111,12 @@ def film_html(frame: pd.DataFrame, table, lengths: dict | None = None) -> str:
             + "</p>" + table(head, [tuple(html.escape(c) for c in b) for b in body]))
 
 
-def write_films(system, speeds_hz, chamber_pressure_pa: float, config_ay_m, outdir):
-    """The film frame at ``speeds_hz``, written as ``bearing_films.csv`` under ``outdir``
-    (None: not written); returns (frame, lengths by bearing name)."""
+def write_films(system, equilibria, outdir):
+    """The film frame of ``equilibria`` (:func:`film_frame`), written as ``bearing_films.csv``
+    under ``outdir`` (None: not written); returns (frame, lengths by bearing name)."""
     from pathlib import Path
 
-    fr = film_frame(system, speeds_hz, chamber_pressure_pa, config_ay_m)
+    fr = film_frame(system, equilibria)
     if outdir is not None and not fr.empty:
         fr.to_csv(Path(outdir) / "bearing_films.csv", index=False)
     return fr, {getattr(b, "name", ""): getattr(b, "length_m", 0.0) for b in system.bearings}

@@ -40,8 +40,7 @@ from rotordyn._common.progress import Steps
 from rotordyn.plot.coefficients import bearing_coefficients as coefficient_figure
 from rotordyn.report.sections import (COEFFICIENT_HEADER, CRITICAL_HEADER, MERGE_RTOL,
                                       api_response, bearing_coefficient_frame,
-                                      coefficient_rows, coefficient_speeds,
-                                      coefficient_text_lines,
+                                      coefficient_rows, coefficient_text_lines,
                                       SOURCE_LEAST_DAMPED, critical_rows,
                                       critical_speed_table, critical_text_lines,
                                       not_resonance_note, shape_source, shapes_for,
@@ -296,7 +295,8 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
 
     # 2. undamped critical speed map with the bearings' K(Ω)
     _progress(progress, "bearing coefficients over speed")
-    coeffs = bearing_coefficient_frame(s, sp, pc, ay, progress=progress.item)
+    eqs: list = []
+    coeffs = bearing_coefficient_frame(s, sp, pc, ay, progress=progress.item, equilibria=eqs)
     curves = _bearing_stiffness_curves(s, coeffs)
     parts.append("<h2>2. Undamped critical speed map</h2><figure>"
                  + svg(_critical_map_figure(ks, fmap, stations, curves))
@@ -322,7 +322,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     # 2d (placed after 2c). the minimum film, its place, and tilted films' edge and moments
     from rotordyn.report.films import film_html, film_text_lines, write_films
 
-    film_tab, lengths = write_films(s, coefficient_speeds(sp), pc, ay, figure_dir)
+    film_tab, lengths = write_films(s, eqs, figure_dir)
     # 2c. the bearings' temperatures and K, C at the thermal equilibrium (an oil system)
     from rotordyn.report.thermal import (thermal_frames, thermal_html, thermal_text_lines,
                                          write_thermal)

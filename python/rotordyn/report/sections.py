@@ -446,7 +446,8 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
             m.figure.savefig(outdir / f"critical_mode_{k}.png", dpi=200, bbox_inches="tight")
             plt.close(m.figure)
     lines = critical_text_lines(crit, shapes, rng, pc, ay is not None)
-    coeffs = bearing_coefficient_frame(system, sp, pc, ay)
+    eqs: list = []
+    coeffs = bearing_coefficient_frame(system, sp, pc, ay, equilibria=eqs)
     if not coeffs.empty:
         coeffs.to_csv(outdir / "bearing_coefficients.csv", index=False)
         fig = coefficient_figure(coeffs)
@@ -455,7 +456,7 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
     from rotordyn.report.thermal import thermal_frames, thermal_text_lines, write_thermal
     from rotordyn.report.films import film_text_lines, write_films
 
-    film_tab, lengths = write_films(system, coefficient_speeds(sp), pc, ay, outdir)
+    film_tab, lengths = write_films(system, eqs, outdir)
 
     th, th_coeffs, note = thermal_frames(system, sp, pc, ay)
     write_thermal(th, th_coeffs, outdir)
@@ -484,11 +485,12 @@ def coefficient_speeds(speeds_hz, n: int = 11) -> np.ndarray:
 
 
 def bearing_coefficient_frame(system, speeds_hz, chamber_pressure_pa: float, config_ay_m,
-                              progress=None):
+                              progress=None, equilibria: list | None = None):
     """The bearings' coefficients at :func:`coefficient_speeds` (an empty frame without bearing
-    elements)."""
+    elements); ``equilibria`` receives the equilibria they were taken at
+    (:func:`rotordyn.analysis.bearing_coefficients.bearing_coefficients`)."""
     return bearing_coefficients(system, coefficient_speeds(speeds_hz), chamber_pressure_pa,
-                                config_ay_m, progress=progress)
+                                config_ay_m, progress=progress, equilibria=equilibria)
 
 
 __all__ = ["COEFFICIENT_HEADER", "CRITICAL_COLUMNS", "CRITICAL_HEADER", "CriticalShape",
