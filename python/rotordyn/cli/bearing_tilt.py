@@ -57,12 +57,13 @@ def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict, thermal: 
                       "or coefficients at a failed equilibrium")
             return 1
         x, y = e.x_m, e.y_m
+        t = e  # its film outputs at (x, y): forces, moments, minimum film and where
     else:
         if args.x_m is None or args.y_m is None:
             raise InputError("--x-m/--y-m: journal position required (or give --load-n)")
         x, y, vx, vy = args.x_m, args.y_m, args.vx_m_s, args.vy_m_s
-    t = tilted_forces(b, x_m=x, y_m=y, speed_hz=args.speed_hz, theta_x_rad=tx, theta_y_rad=ty,
-                      vx_m_s=vx, vy_m_s=vy)
+        t = tilted_forces(b, x_m=x, y_m=y, speed_hz=args.speed_hz, theta_x_rad=tx,
+                          theta_y_rad=ty, vx_m_s=vx, vy_m_s=vy)
     K, C = tilted_coefficients(b, x_m=x, y_m=y, speed_hz=args.speed_hz, theta_x_rad=tx,
                                theta_y_rad=ty, method=args.method)
     rec.update(journal_x_m=x, journal_y_m=y, journal_vx_m_s=vx, journal_vy_m_s=vy,
