@@ -201,3 +201,16 @@ def test_bad_input_names_the_field(compressor):
         rd.continuation(compressor, "speed_hz", (100.0, 150.0), ds=0.0)
     with pytest.raises(rd.InputError, match="direction"):
         rd.continuation(compressor, "speed_hz", (100.0, 150.0), direction=0)
+
+
+def test_a_bound_that_closes_the_film_is_a_change_not_an_error(compressor):
+    """The "does the field act" check linearises the films at both bounds: at a clearance of
+    1 µm the start's journal position closes the film. That counts as a change (as for
+    orbit branches); it raised a bare ContactError from the check before any branch point."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the 1 µm clearance's plausibility warning
+        br = rd.continuation(compressor, "bearings.*.clearance_m", (1e-6, 1e-4),
+                             speed_hz=130.0, direction=-1)
+    assert br.status == "ok" and len(br.to_frame()) > 3
