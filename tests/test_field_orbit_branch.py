@@ -164,6 +164,10 @@ def test_cycles_born_at_the_hopf_point_over_clearance(compressor, clearance_hopf
     br = hopf_branch(compressor, h, (0.8e-4, 1.0e-4), distance=1e-10, max_points=3,
                      tol=1e-8)
     assert br.ok and len(br) == 3 and br.stats["method"] == HB, br.message
+    # shooting over a field is refused before the first cycle is solved (it was refused by
+    # the continuation only after a shooting solve of that cycle)
+    with pytest.raises(InputError, match=r"^method: a branch over the model field "):
+        hopf_branch(compressor, h, (0.8e-4, 1.0e-4), distance=1e-10, method="shooting")
     p0 = br.parameter[0]
     assert p0 == pytest.approx(h.value + 1e-10, abs=1e-15)
     assert br.amplitude_m[0, 0] == pytest.approx(h.amplitude(p0), rel=0.03)
@@ -360,14 +364,15 @@ def test_cycles_at_amplitudes_refuse_a_field_hopf_point(compressor, clearance_ho
 def test_field_branch_multipliers_by_hill(compressor, whip, visc_branch):
     """floquet="hill" on a branch over a field (Hill's method on each point's HB Jacobian on
     the rebuilt model): the same points (parameter and amplitude within 1e-9 relative: the
-    correctors do not depend on the route) and |μ_c| within 1e-2 of the flow's (the whole
-    viscosity branch takes the flow by the samples' rule here; measured 3.9e-3, Hill's
-    accuracy on these whip cycles at H = 8: docs/nonlinear.md)."""
+    correctors do not depend on the route) and Hill's |μ_c| (margin 0: no flow recheck) within
+    1e-2 of the flow's (the reference branch takes the flow by the samples' rule here;
+    Hill's accuracy on these whip cycles at H = 8: docs/nonlinear.md)."""
     br = rd.continuation(compressor, VISC, (0.010, 0.025), whip, method=HB, tol=1e-10,
                          ds=0.1, ds_max=0.2, max_points=4, rtol=1e-6, sensitivity_rtol=1e-5,
-                         floquet="hill")
+                         floquet="hill", floquet_margin=0.0)
     assert br.ok and len(br) == 4
-    assert {o.stats["floquet"] for o in br.orbits} <= {"hill", "flow"}
+    # margin 0: no point is rechecked by the flow, so Hill's |μ| is what is compared below
+    assert {o.stats["floquet"] for o in br.orbits} == {"hill"}
     np.testing.assert_allclose(br.parameter, visc_branch.parameter, rtol=1e-9)
     np.testing.assert_allclose(br.amplitude_m, visc_branch.amplitude_m, rtol=1e-9)
     assert np.abs(br.max_multiplier - visc_branch.max_multiplier).max() < 1e-2

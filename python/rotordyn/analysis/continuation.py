@@ -43,6 +43,13 @@ METHODS = ("shooting", "harmonic_balance")
 HB_OPTIONS = ("harmonics", "time_points", "floquet", "floquet_margin")
 
 
+def field_method_error(vary: str) -> InputError:
+    """The refusal of a corrector other than harmonic balance on a branch over a field."""
+    return InputError(f"method: a branch over the model field {vary} has harmonic-balance "
+                      "correctors only (method='harmonic_balance'; the shooting corrector "
+                      "varies p_c, the speed or a_y inside the core)")
+
+
 def continuation(system: System, vary: str, bounds, start="equilibrium", **options):
     """Pseudo-arclength continuation of a branch over ``vary`` within ``bounds``.
 
@@ -196,9 +203,7 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     newton = v.choice("newton", newton, NEWTON_MODES)
     method = v.choice("method", method, METHODS)
     if setup.field is not None and method != "harmonic_balance":
-        raise InputError(f"method: a branch over the model field {setup.vary} has "
-                         "harmonic-balance correctors only (method='harmonic_balance'; the "
-                         "shooting corrector varies p_c, the speed or a_y inside the core)")
+        raise field_method_error(setup.vary)
     if method == "harmonic_balance":
         if newton != DEFAULT_NEWTON:
             raise InputError(f"newton: applies only to method='shooting' (the correctors of "

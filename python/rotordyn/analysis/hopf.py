@@ -342,11 +342,10 @@ def hopf_branch(system: System, result: HopfResult, bounds, *, distance: float |
     :func:`hopf_cycle` at ``distance`` (unit of vary; default 0.2 % of the bounds' span)
     from the point on its cycle side, then :func:`rotordyn.continuation` away from the point
     within ``bounds`` (keywords passed on; a model field ``vary``: on the system with the
-    field at the first cycle's value, by ``method="harmonic_balance"`` unless another is
-    given, which the continuation then refuses; the first cycle by the same method and
-    harmonics). Returns the BranchResult (a failed first cycle:
+    field at the first cycle's value, by ``method="harmonic_balance"``; another method is
+    refused before any solve; the first cycle by the same method and harmonics). Returns the BranchResult (a failed first cycle:
     ConvergenceError with its message)."""
-    from rotordyn.analysis.continuation import continuation
+    from rotordyn.analysis.continuation import continuation, field_method_error
     from rotordyn.errors import ConvergenceError
 
     lo, hi = v.bounds("bounds", bounds)
@@ -358,8 +357,9 @@ def hopf_branch(system: System, result: HopfResult, bounds, *, distance: float |
     how = {}
     if result.vary not in PARAMETERS:  # a model field: harmonic-balance correctors only
         kw.setdefault("method", "harmonic_balance")
-        if kw["method"] == "harmonic_balance":
-            how = {k: kw[k] for k in ("method", "harmonics", "time_points") if k in kw}
+        if kw["method"] != "harmonic_balance":  # refused before the first cycle's solve
+            raise field_method_error(result.vary)
+        how = {k: kw[k] for k in ("method", "harmonics", "time_points") if k in kw}
     first = hopf_cycle(system, result, value, rtol=rtol, tol=tol, **how)
     if not first.ok:
         raise ConvergenceError(f"hopf_branch: the first cycle at {result.vary} = "

@@ -94,12 +94,14 @@ def refuse(args, flags, why: str) -> None:
             raise InputError(f"{flag}: {why}")
 
 
-def flagged(exc: InputError) -> InputError:
-    """The API's InputError with its keyword replaced by the command-line flag."""
+def flagged(exc: InputError, extra: dict | None = None) -> InputError:
+    """The API's InputError with its keyword replaced by the command-line flag (``extra``:
+    a command's own keyword → flag pairs beside the branch commands')."""
+    flags = {**_FLAGS, **(extra or {})}
     text = str(exc)
     key, sep, rest = text.partition(":")
-    if sep and key in _FLAGS:
-        return InputError(f"{_FLAGS[key]}:{rest}")
+    if sep and key in flags:
+        return InputError(f"{flags[key]}:{rest}")
     return exc
 
 
