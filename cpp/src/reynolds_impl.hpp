@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "format_detail.hpp"
 #include "reynolds_band.hpp"
 #include "reynolds_ldlt.hpp"
 #include "rotordyn/reynolds.hpp"
@@ -27,13 +28,7 @@ constexpr long long kMaxFilmNodes = 1LL << 22;
 constexpr double kMaxFactorBytes = 4e9;
 constexpr double kMaxFactorFlops = 2e10;
 
-/// A number in error messages (6 significant digits).
-inline std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
+using format_detail::num;  // a number in error messages (6 significant digits)
 }  // namespace reynolds_detail
 
 /// One sparse system over a set of unknown nodes: the full grid, or — when the film and its

@@ -1,5 +1,5 @@
 // Internal to the thermal model (thermal.cpp, thermal_system.cpp, thd.cpp, thd_walls.cpp): the
-// heat balance of one film, and the number format of its error messages.
+// heat balance of one film (the number format of its messages: format_detail.hpp).
 #pragma once
 
 #include <Eigen/Dense>
@@ -8,17 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "format_detail.hpp"
 #include "rotordyn/thermal.hpp"
 
 namespace rotordyn {
 
-/// A number in the thermal films' error messages (6 significant digits).
-inline std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
+using format_detail::num;  // a number in the thermal films' error messages
 
 /// The supply's checks shared by the effective-temperature and THD options: the supply
 /// temperature inside the viscosity law's range, a fresh flow >= 0, 0 <= carry_over <= 1.
