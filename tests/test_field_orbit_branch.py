@@ -352,6 +352,12 @@ def test_core_evaluation_and_point_on_a_smooth_film():
     bad = _core.hb_evaluate(asm.solver, inp, Z, w, ho, False)
     with pytest.raises(InputError, match="at: expected an evaluation with the Jacobian"):
         _core.hb_orbit_point(asm.solver, inp, bad, opt)
+    # Hill's time points below 2H + 1 are refused here as by the continuation step (this
+    # entry point went on to build the basis with them)
+    ho.floquet, ho.hill_time_points = _core.HbFloquet.hill, 12
+    opt.hb = ho
+    with pytest.raises(InputError, match="hill_time_points"):
+        _core.hb_orbit_point(asm.solver, inp, ev, opt)
 
 
 def test_cycles_at_amplitudes_refuse_a_field_hopf_point(compressor, clearance_hopf):

@@ -23,20 +23,8 @@ using namespace hb_detail;
 HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput& in,
                                        const Eigen::MatrixXd& start_samples,
                                        const HarmonicBalanceOptions& opt) {
-  require(opt.harmonics >= 1 && opt.harmonics <= 1000,
-          "harmonics: expected an integer in [1, 1000], got " + std::to_string(opt.harmonics));
+  const int M = checked_time_points(opt);
   const int H = opt.harmonics;
-  const int M = opt.time_points == 0 ? std::max(4 * H, 2 * H + 1) : opt.time_points;
-  require(M >= 2 * H + 1 && M <= 100000,
-          "time_points: expected M >= 2H + 1 = " + std::to_string(2 * H + 1) + " (and <= 1e5), got " +
-              std::to_string(M));
-  require(opt.tol > 0 && std::isfinite(opt.tol), "tol: expected a value > 0");
-  require(opt.max_iter >= 1, "max_iter: expected at least 1");
-  require(opt.magnus_substeps >= 1, "magnus_substeps: expected at least 1");
-  require(opt.hill_time_points == 0 || (opt.hill_time_points >= 2 * opt.harmonics + 1 &&
-                                        opt.hill_time_points <= 100000),
-          "hill_time_points: expected 0 (max(M, 8H)) or an integer in [2H + 1, 1e5], got " +
-              std::to_string(opt.hill_time_points));
   ShootingOptions so;
   so.cvode = opt.cvode;
   so.tol = opt.tol;

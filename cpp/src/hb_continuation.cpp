@@ -47,20 +47,8 @@ struct At {
 HbContinuationStep hb_continuation_step(SystemSolver& solver, const HbContinuationInput& c,
                                         const HbContinuationOptions& opt) {
   const HarmonicBalanceOptions& ho = opt.hb;
-  require(ho.harmonics >= 1 && ho.harmonics <= 1000,
-          "harmonics: expected an integer in [1, 1000], got " + std::to_string(ho.harmonics));
+  const int M = hb_detail::checked_time_points(ho);
   const int H = ho.harmonics, nb = 2 * H + 1;
-  const int M = ho.time_points == 0 ? std::max(4 * H, 2 * H + 1) : ho.time_points;
-  require(M >= 2 * H + 1 && M <= 100000,
-          "time_points: expected M >= 2H + 1 = " + std::to_string(2 * H + 1) +
-              " (and <= 1e5), got " + std::to_string(M));
-  require(ho.tol > 0 && std::isfinite(ho.tol), "tol: expected a value > 0");
-  require(ho.max_iter >= 1, "max_iter: expected at least 1");
-  require(ho.magnus_substeps >= 1, "magnus_substeps: expected at least 1");
-  require(ho.hill_time_points == 0 ||
-              (ho.hill_time_points >= 2 * H + 1 && ho.hill_time_points <= 100000),
-          "hill_time_points: expected 0 (max(M, 8H)) or an integer in [2H + 1, 1e5], got " +
-              std::to_string(ho.hill_time_points));
   require(opt.floquet_margin >= 0 && opt.floquet_margin < 1,
           "floquet_margin: expected a value in [0, 1)");
   const SystemModel& m = solver.model();

@@ -92,6 +92,11 @@ bool hill_floquet_into(PeriodicOrbitResult& o, Problem& P, const Eval& e, const 
 /// Hill's time points for H harmonics and the Newton's M: `requested` if > 0, else max(M, 8H)
 /// (the AFT Jacobian's aliasing: docs/nonlinear.md).
 int hill_time_points(int H, int M, int requested);
+/// The checks of the harmonic-balance options every entry point shares (harmonics in
+/// [1, 1000], M = time_points or max(4H, 2H + 1) in [2H + 1, 1e5], tol > 0, max_iter >= 1,
+/// magnus_substeps >= 1, hill_time_points 0 or in [2H + 1, 1e5]; InputError naming the
+/// field); returns M.
+int checked_time_points(const HarmonicBalanceOptions& ho);
 /// The monodromy of one CVODES flow with forward sensitivities in the error test (at
 /// `srtol`) from (o.r0, o.v0) over [t0, t0 + T] into o.monodromy (o.monodromy_rtol, the
 /// flow's counters). false with o.status / o.message set when the flow fails.

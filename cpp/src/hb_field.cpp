@@ -14,17 +14,6 @@ namespace rotordyn {
 
 namespace {
 
-int time_points(const HarmonicBalanceOptions& ho) {
-  require(ho.harmonics >= 1 && ho.harmonics <= 1000,
-          "harmonics: expected an integer in [1, 1000], got " + std::to_string(ho.harmonics));
-  const int H = ho.harmonics;
-  const int M = ho.time_points == 0 ? std::max(4 * H, 2 * H + 1) : ho.time_points;
-  require(M >= 2 * H + 1 && M <= 100000,
-          "time_points: expected M >= 2H + 1 = " + std::to_string(2 * H + 1) +
-              " (and <= 1e5), got " + std::to_string(M));
-  return M;
-}
-
 // The checks of an orbit input at (Z, ω): shapes, a positive frequency (a forced one the
 // input's), the operating point (shooting_detail::validate on a copy with a finite start).
 void check(const SystemSolver& solver, const PeriodicInput& in, const Eigen::MatrixXd& Z, double w,
@@ -60,7 +49,7 @@ void check(const SystemSolver& solver, const PeriodicInput& in, const Eigen::Mat
 HbEvaluation hb_evaluate(SystemSolver& solver, const PeriodicInput& in,
                          const Eigen::MatrixXd& coefficients, double frequency,
                          const HarmonicBalanceOptions& opt, bool jacobian) {
-  const int M = time_points(opt);
+  const int M = hb_detail::checked_time_points(opt);
   check(solver, in, coefficients, frequency, opt);
   shooting_detail::Flow F;
   shooting_detail::setup_flow(F, solver, in);
@@ -102,9 +91,7 @@ HbEvaluation hb_evaluate(SystemSolver& solver, const PeriodicInput& in,
 HbContinuationStep hb_orbit_point(SystemSolver& solver, const PeriodicInput& in,
                                   const HbEvaluation& at, const HbContinuationOptions& opt) {
   const HarmonicBalanceOptions& ho = opt.hb;
-  const int M = time_points(ho);
-  require(ho.tol > 0 && std::isfinite(ho.tol), "tol: expected a value > 0");
-  require(ho.magnus_substeps >= 1, "magnus_substeps: expected at least 1");
+  const int M = hb_detail::checked_time_points(ho);
   require(opt.floquet_margin >= 0 && opt.floquet_margin < 1,
           "floquet_margin: expected a value in [0, 1)");
   require(at.ok, "at: expected a successful evaluation, got one that failed: " + at.message);
