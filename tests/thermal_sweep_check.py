@@ -22,7 +22,7 @@ def sweep_points(tmp_path, system, field: str, values, speed_hz: float = 150.0):
     res = run_sweep(spec, tmp_path / "o", threads=1)
     assert res.complete and res.counts["failed"] == 0
     fr = sw.open(tmp_path / "o").frame
-    assert len(fr) == 2 * len(values) and (fr["status"] == "ok").all()
+    assert len(fr) == len(system.bearings) * len(values) and (fr["status"] == "ok").all()
     out = []
     for _, g in fr.groupby("point_id"):
         x = float(g.iloc[0][field])
