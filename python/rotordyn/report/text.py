@@ -58,6 +58,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
     import matplotlib
 
     matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
     paper = s.name in CALIBRATIONS
     outdir = Path(out)
     outdir.mkdir(parents=True, exist_ok=True)
@@ -94,6 +95,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         "full_frequencies_hz": full.frequencies_hz.tolist()}, indent=2) + "\n")
     ax = full.plot(modes=range(0, min(6, len(full.eigenvalues)), 2))
     ax.figure.savefig(outdir / "rotor_mode_shapes.png", dpi=200, bbox_inches="tight")
+    plt.close(ax.figure)  # a long-lived process writing many reports keeps no figure
 
     active = [b for b in s.bearings if isinstance(b, ActiveJournalBearing)]
     campbell_04 = None  # the Campbell at p_c = 0.4 MPa of the paper's checks, reused below
@@ -169,6 +171,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         ax = c.plot()
         ax.set_title("natural frequencies at p_c = 0.4 MPa (paper Fig. 12)")
         ax.figure.savefig(outdir / "campbell.png", dpi=200, bbox_inches="tight")
+        plt.close(ax.figure)
 
         if paper:
             say()
