@@ -304,6 +304,11 @@ class Assembled:
         return a
 
 
+#: the operating variables a scan, a threshold or a branch can vary besides the model fields
+#: (each acts through the solver's operating point, not by re-assembling the model)
+OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m")
+
+
 def check_operating_parameter(system: System, name: str, field: str = "vary") -> None:
     """``InputError`` naming ``field`` when the operating variable ``name`` acts on nothing in
     ``system``: ``chamber_pressure_pa`` needs an active journal bearing, ``config_ay_m`` the

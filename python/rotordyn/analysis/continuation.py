@@ -22,8 +22,8 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis import hb_continuation as hbc
-from rotordyn.analysis.orbit_branch import (PARAM, VARIABLES, assemble, halved,
-                                            hopf_estimate, prepare, rejected)
+from rotordyn.analysis.orbit_branch import (PARAM, assemble, halved, hopf_estimate,
+                                            prepare, rejected)
 from rotordyn.analysis.periodic import NEWTON
 from rotordyn.errors import InputError
 from rotordyn.model.system import System

@@ -11,13 +11,11 @@ from collections import OrderedDict
 
 import numpy as np
 
-from rotordyn.analysis.assembly import Assembled, check_operating_parameter
+from rotordyn.analysis.assembly import OPERATING, Assembled, check_operating_parameter
 from rotordyn.errors import InputError, RotordynError
 from rotordyn.model.paths import declared_type, get_field, set_field
 from rotordyn.model.system import System
 
-#: the operating variables a branch can vary besides the model fields
-OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m")
 
 
 def field_parameter(system: System, vary) -> str:

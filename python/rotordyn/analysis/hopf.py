@@ -12,12 +12,12 @@ import numpy as np
 
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import OPERATING, assembled
 from rotordyn.analysis.field_axis import field_parameter
 from rotordyn.analysis.linear import linearize
 from rotordyn.analysis.lyapunov import central_second, central_third, first_lyapunov, \
     fitted_derivatives, hopf_vectors
-from rotordyn.analysis.threshold import PARAMETERS, threshold
+from rotordyn.analysis.threshold import threshold
 from rotordyn.errors import InputError, RotordynError
 from rotordyn.model.paths import set_field
 from rotordyn.model.system import System
@@ -35,14 +35,14 @@ FD_METHODS = ("fit", "central")
 
 def _operating(vary, value, fixed):
     p = dict(fixed)
-    if vary in PARAMETERS:
+    if vary in OPERATING:
         p[vary] = float(value)
     return p["speed_hz"], p["chamber_pressure_pa"], p["config_ay_m"]
 
 
 def _system_at(system: System, vary: str, value) -> System:
     """``system`` with the model field ``vary`` at ``value`` (an operating variable: as is)."""
-    if vary in PARAMETERS:
+    if vary in OPERATING:
         return system
     return set_field(system, vary, float(value), where="vary")
 
@@ -355,7 +355,7 @@ def hopf_branch(system: System, result: HopfResult, bounds, *, distance: float |
     sgn = 1 if result.cycle_side == "above" else -1
     value = result.value + sgn * d
     how = {}
-    if result.vary not in PARAMETERS:  # a model field: harmonic-balance correctors only
+    if result.vary not in OPERATING:  # a model field: harmonic-balance correctors only
         kw.setdefault("method", "harmonic_balance")
         if kw["method"] != "harmonic_balance":  # refused before the first cycle's solve
             raise field_method_error(result.vary)

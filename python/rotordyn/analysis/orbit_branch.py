@@ -14,7 +14,7 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import OPERATING, assembled
 from rotordyn.analysis.field_axis import FieldSystems, check_acts, field_parameter, field_value
 from rotordyn.analysis.periodic import orbit_result
 from rotordyn.errors import InputError, RotordynError
@@ -23,14 +23,13 @@ from rotordyn.results.periodic import PeriodicOrbitResult
 from rotordyn.units import hz_to_rad_s
 
 #: the operating variables the core varies itself (any other ``vary`` is a model field path)
-VARIABLES = ("chamber_pressure_pa", "speed_hz", "config_ay_m")
 PARAM = {"chamber_pressure_pa": "chamber_pressure", "speed_hz": "speed",
          "config_ay_m": "config"}
 
 
 def point_parameter(o: PeriodicOrbitResult, vary: str) -> float:
     """The value of ``vary`` at a branch point (a model field's: ``stats["field_value"]``)."""
-    return float(getattr(o, vary) if vary in VARIABLES else o.stats["field_value"])
+    return float(getattr(o, vary) if vary in OPERATING else o.stats["field_value"])
 
 
 def amplitude(o: PeriodicOrbitResult) -> np.ndarray:
@@ -146,7 +145,7 @@ def periodic_input(asm, kind: str, omega: float, chamber_pressure: float, a, ub_
 def prepare(system, vary: str, bounds, start, unbalances, param_scale, n_out: int) -> BranchSetup:
     """The checked set-up of a branch over ``vary`` within ``bounds`` from the orbit
     ``start`` (InputError naming the field for a bad one). ``vary``: an operating variable
-    (VARIABLES) or a numeric model field path; a field must act on the equations of motion
+    (OPERATING) or a numeric model field path; a field must act on the equations of motion
     between the bounds (:func:`rotordyn.analysis.field_axis.check_acts` at the start's
     state)."""
     vary = field_parameter(system, vary)
@@ -197,7 +196,7 @@ def setup_at(system, vary: str, bounds, kind: str, speed_hz: float, chamber_pres
     if bcs and abs(asm.config_vector(None)[bcs[0].jy] - config_ay_m) > 1e-15:
         ay_override = float(config_ay_m)
     a0 = asm.config_vector(ay_override)
-    if vary in VARIABLES:
+    if vary in OPERATING:
         p_start = {"chamber_pressure_pa": chamber_pressure_pa, "speed_hz": speed_hz,
                    "config_ay_m": config_ay_m}[vary]
     else:
@@ -221,7 +220,7 @@ def setup_at(system, vary: str, bounds, kind: str, speed_hz: float, chamber_pres
         direction = asm.config_vector(1.0) - a_base
         base.a = a_base
     field = None
-    if vary not in VARIABLES:
+    if vary not in OPERATING:
         field = FieldSystems(system, vary, n)
         if state is None:
             state = (np.zeros(n), np.zeros(n))

@@ -11,12 +11,10 @@ import numpy as np
 
 from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
-from rotordyn.analysis.assembly import check_operating_parameter
+from rotordyn.analysis.assembly import OPERATING, check_operating_parameter
 from rotordyn.model.paths import set_field
 from rotordyn.model.system import System
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
-
-PARAMETERS = ("chamber_pressure_pa", "config_ay_m", "speed_hz")
 
 
 def _point(system, params, exclude_sleeve_modes, thermal=None):
@@ -99,7 +97,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     from rotordyn.analysis.field_axis import field_parameter
 
     vary = field_parameter(system, vary)
-    field = vary not in PARAMETERS
+    field = vary not in OPERATING
     lo, hi = v.bounds("bounds", bounds)
     if vary == "chamber_pressure_pa" and lo < 0:
         raise InputError(f"bounds: {vary} must be >= 0, got {bounds!r}")
@@ -225,8 +223,8 @@ def stability_boundary(system: System, vary: str = "chamber_pressure_pa",
     against a_y at 50 Hz; Fig. 10: p_c against speed at a_y = 0). Each point first searches a
     narrow bracket around the previous threshold (continuation), then the full ``bounds``."""
     import pandas as pd
-    v.choice("vary", vary, PARAMETERS)
-    v.choice("along", along, PARAMETERS)
+    v.choice("vary", vary, OPERATING)
+    v.choice("along", along, OPERATING)
     if along == vary:
         raise InputError("along: expected a parameter other than vary")
     check_operating_parameter(system, vary)

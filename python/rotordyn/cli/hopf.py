@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from rotordyn import analysis
 from rotordyn._common import validate as v
-from rotordyn.analysis.field_axis import OPERATING
+from rotordyn.analysis.assembly import OPERATING
 from rotordyn.analysis.hopf_cycles import check_amplitudes
 from rotordyn.cli import branches
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,

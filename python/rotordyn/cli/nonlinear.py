@@ -10,10 +10,10 @@ from __future__ import annotations
 import numpy as np
 
 from rotordyn import analysis
+from rotordyn.analysis.assembly import OPERATING
 from rotordyn.analysis.continuation import CLI_NEWTON, DEFAULT_NEWTON
 from rotordyn.analysis.field_axis import field_parameter
 from rotordyn.analysis.hopf import hopf_branch
-from rotordyn.analysis.orbit_branch import VARIABLES
 from rotordyn._common import validate as v
 from rotordyn.cli import branches
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
@@ -276,7 +276,7 @@ ORBIT_DEFAULTS = {"kind": "autonomous", "rtol": 1e-8, "tol": 1e-6, "disturbance_
                   "ds": 0.05, "max_points": 50, "newton": DEFAULT_NEWTON}
 #: the operating variables a branch of orbits by shooting varies (harmonic balance: also a
 #: numeric model field path)
-ORBIT_VARY = VARIABLES
+ORBIT_VARY = OPERATING
 
 
 def _hopf_point(args, s, vary):
