@@ -73,7 +73,7 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
     on a stiff model the flow dominates the cost, and ``floquet="hill"`` with
     ``floquet_margin=0`` gives the stability from the Hill matrix alone). Rows that do not
     converge have their status and message; the rows after them start from the last converged
-    cycle. A row whose parameter the corrector did not move (the start already met ``tol``:
+    cycle. A row whose corrector took no Newton step (the start already met ``tol``:
     very small amplitudes) is ``unresolved``, kept with its orbit but left out of the
     verdicts."""
     if not isinstance(result, HopfResult) or not result.ok:
@@ -172,7 +172,6 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
             else:
                 y_cur, a_cur = y_last, a_last
             for a_t in ([a] if k == 1 else np.geomspace(a_last, a, k + 1)[1:]):
-                p_from = float(y_cur[nn + 1])
                 step = solve(scaled(y_cur, a_cur, a_t))
                 stats["correctors"] += 1
                 stats["newton_iterations"] += int(step.hb.orbit.iterations)
@@ -193,8 +192,9 @@ def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
         o = setup.point_result(step.hb.orbit, step.p, extra_stats={
             **hbal.hb_stats(step.hb), "floquet": step.floquet_route})
         status, message = "ok", ""
-        if abs(step.p - p_from) <= 1e-12 * max(abs(p_from), to_core):
-            # the start already satisfied the residual: the parameter was never corrected
+        if int(step.hb.orbit.iterations) == 0:
+            # the start already satisfied the residual: no Newton step, the parameter is the
+            # leading-order estimate's, never corrected
             status = "unresolved"
             message = (f"the start satisfies the harmonic-balance residual (tol {tol:g}) at "
                        f"{a:g} c: the cycle's {vary} is not resolved at this amplitude (a "
