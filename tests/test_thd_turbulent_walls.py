@@ -24,7 +24,9 @@ Checks:
   (1e-9), each cell's film-side flux recomputed from the returned fields with the factors at
   its Re_h and Pr equals the conduction through the bush (1e-9);
 * the same bearing (D 0.3 m, 100 Hz, 60 kN) with and without the eddy conductivity: the
-  walls take more heat, the film runs cooler, the bush surface hotter;
+  walls take more heat, the film runs cooler, the bush surface hotter; the same on a large
+  tilting-pad bearing (every pad's film takes the factors): the loaded pads cooler, the
+  journal cooler;
 * a vanishing density (Re_h → 0): the film's walls are the laminar film's;
 * bad input names the field.
 """
@@ -38,7 +40,8 @@ from scipy.optimize import brentq
 
 import rotordyn
 from rotordyn import _core
-from rotordyn.bearings import Groove, Oil
+from rotordyn.bearings import Groove, Oil, TiltingPadBearing
+from rotordyn.bearings.pad_thd import pad_model_options, pad_thd_equilibrium
 from rotordyn.bearings.thd import run_thd_equilibrium, thd_options
 from rotordyn.errors import InputError
 from thd_balance import balance
@@ -190,6 +193,34 @@ def test_large_turbulent_bearing_runs_cooler_with_the_eddy_conductivity():
     # ... and closer to its walls: the bush surface hotter (what a thermocouple reads)
     assert tur.max_wall_temperature_c > lam.max_wall_temperature_c
     assert tur.max_wall_temperature_c < tur.max_temperature_c
+
+
+def test_tilting_pads_pass_the_eddy_conductivity_to_every_pad():
+    # a large tilting-pad bearing (5 pads on 60°, load between pads 0 and 4), one journal
+    # from its heat balance over the pads, each pad conducting to oil at its back
+    tp = TiltingPadBearing(station=0, diameter_m=0.3, length_m=0.15, clearance_m=3e-4,
+                           viscosity_pa_s=0.02, n_pads=5, pad_arc_deg=60.0, pivot_offset=0.5,
+                           preload=0.3, n_circ=60, n_axial=6, turbulence="ng_pan",
+                           density_kg_m3=870.0)
+    res = {}
+    for eddy in (False, True):
+        o = pad_model_options("thd", supply_temperature_c=TS, supply_flow_m3_s=0.0,
+                              carry_over=0.5, effective_factor=0.5, tol_k=1e-6, **FILM)
+        o.wall_eddy_conductivity = eddy
+        r = pad_thd_equilibrium(tp.system_parts(0, 1, 2, "bearing"), oil=VG32, opts=o,
+                                load_n=LOAD, speed_hz=SPEED, clearance_m=tp.clearance_m,
+                                whirl_ratio=None, tilts=tp.pad_tilts_rad)
+        assert r.status == "ok", r.message
+        res[eddy] = r
+    lam, tur = res[False], res[True]
+    t_lam, t_tur = np.asarray(lam.max_temperature_c), np.asarray(tur.max_temperature_c)
+    loaded = [0, 4]
+    assert np.all(t_tur[loaded] < t_lam[loaded] - 1.0)            # the loaded pads cooler
+    assert np.sum(tur.heat_to_bush_w) > 1.3 * np.sum(lam.heat_to_bush_w)
+    # the journal, better coupled, runs cooler and carries more heat from the loaded pads
+    # to the unloaded ones (whose films it warms: their bush heat rises)
+    assert tur.journal_temperature_c[0] < lam.journal_temperature_c[0] - 1.0
+    assert np.all(np.asarray(tur.heat_to_bush_w)[1:4] > np.asarray(lam.heat_to_bush_w)[1:4])
 
 
 def test_vanishing_density_is_the_laminar_films_walls():
