@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "rotordyn/thd.hpp"
+#include "rotordyn/thd_wall_turbulence.hpp"
 
 namespace rotordyn::py_bind {
 
@@ -19,6 +20,7 @@ void bind_thd(py::module_& m) {
       .def_readwrite("journal_temperature_c", &ThdOptions::journal_temperature_c)
       .def_readwrite("bush_temperature_c", &ThdOptions::bush_temperature_c)
       .def_readwrite("film_htc", &ThdOptions::film_htc)
+      .def_readwrite("wall_eddy_conductivity", &ThdOptions::wall_eddy_conductivity)
       .def_readwrite("journal_balance", &ThdOptions::journal_balance)
       .def_readwrite("bush_conduction", &ThdOptions::bush_conduction)
       .def_readwrite("bush_thickness_m", &ThdOptions::bush_thickness_m)
@@ -62,6 +64,26 @@ void bind_thd(py::module_& m) {
   m.def("thd_energy", &thd_energy, py::arg("solver"), py::arg("solution"), py::arg("oil"),
         py::arg("options"), py::arg("omega"), py::call_guard<py::gil_scoped_release>(),
         "The THD energy equation at the solver's last full solve.");
+  m.def(
+      "turbulent_wall_factors",
+      [](const std::string& model, double re, double pr) {
+        const TurbulentWallFactors g = turbulent_wall_factors(parse_turbulence(model), re, pr);
+        return py::make_tuple(g.symmetric, g.across);
+      },
+      py::arg("model"), py::arg("reynolds_number"), py::arg("prandtl_number"),
+      "(G_s, G_c): the eddy conductivity's factors on a THD film's wall coefficients "
+      "(thd_wall_turbulence.hpp) at Re_h and the molecular Prandtl number.");
+  m.def(
+      "eddy_wall_factors",
+      [](double a, double p) {
+        const TurbulentWallFactors g = eddy_wall_factors(a, p);
+        return py::make_tuple(g.symmetric, g.across);
+      },
+      py::arg("half_film_plus"), py::arg("prandtl_ratio"),
+      "(G_s, G_c) at the half film in wall units h+/2 and Pr/Pr_t.");
+  m.def("eddy_couette_shear_factor", &eddy_couette_shear_factor, py::arg("reynolds_number"),
+        "The Reichardt eddy model's own Couette shear factor at Re_h.");
+  m.attr("TURBULENT_PRANDTL") = kTurbulentPrandtl;
 }
 
 }  // namespace rotordyn::py_bind

@@ -79,10 +79,14 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
   const double rc = oil.density_kg_m3 * oil.specific_heat_j_per_kg_k;
   // the cells' heat paths to the walls (thd_walls.hpp); `legacy`: given coefficients to fixed
   // wall temperatures, in the energy equation's original arithmetic
-  const WallModel wm = wall_model(opt, oil);
+  // (a turbulent film: at each cell's Re_h and Prandtl number, its own viscosity)
+  WallModel wm = wall_model(opt, oil);
+  if (wm.film_htc && opt.wall_eddy_conductivity)
+    wm.set_film(solver.geometry(), omega, oil.specific_heat_j_per_kg_k);
   parts.walls.resize(static_cast<std::size_t>(nn));
   for (int n = 0; n < nn; ++n)
-    parts.walls[static_cast<std::size_t>(n)] = wm.cell(sol.h_m.data()[n], fl.fill.data()[n]);
+    parts.walls[static_cast<std::size_t>(n)] =
+        wm.cell(sol.h_m.data()[n], fl.fill.data()[n], fl.viscosity_pa_s.data()[n]);
   // inlet nodes: the groove nodes and the end half cells of groove columns (their flows are
   // the supply's, as FilmSolution::inlet_flow_m3_s), or the column of maximum film
   std::vector<char> D(nn, 0);

@@ -7,6 +7,7 @@
 
 #include "rotordyn/errors.hpp"
 #include "rotordyn/thd.hpp"
+#include "rotordyn/thd_wall_turbulence.hpp"
 #include "rotordyn/thermal.hpp"
 #include "thermal_detail.hpp"
 
@@ -113,14 +114,33 @@ WallModel wall_model(const ThdOptions& o, const OilModel& oil) {
   return w;
 }
 
-CellWall WallModel::cell(double h_m, double fill) const {
+void WallModel::set_film(const JournalBearingGeometry& geo, double omega,
+                         double specific_heat) {
+  turbulence = geo.turbulence;
+  rho_u = geo.turbulence == Turbulence::laminar
+              ? 0.0 : geo.density_kg_m3 * std::abs(omega) * 0.5 * geo.diameter_m;
+  cp = specific_heat;
+}
+
+CellWall WallModel::cell(double h_m, double fill, double mu) const {
   // film side: q_J = aJ T − bJJ T_J − bJB T_w, q_B = aB T − bBJ T_J − bBB T_w
   double aJ = hJ, bJJ = hJ, bJB = 0.0, aB = hB, bBJ = 0.0, bBB = hB;
   if (film_htc) {
     const double c = h_m > 0.0 ? fill * k_oil / h_m : 0.0;
-    aJ = aB = 6.0 * c;
-    bJJ = bBB = 4.0 * c;
-    bJB = bBJ = 2.0 * c;
+    // a turbulent film: the eddy conductivity's factors at the cell's Re_h and Pr
+    TurbulentWallFactors g;
+    if (turbulence != Turbulence::laminar && rho_u > 0.0 && c > 0.0)
+      g = turbulent_wall_factors(turbulence, rho_u * h_m / mu, mu * cp / k_oil);
+    if (g.symmetric == 1.0 && g.across == 1.0) {  // the laminar film's arithmetic
+      aJ = aB = 6.0 * c;
+      bJJ = bBB = 4.0 * c;
+      bJB = bBJ = 2.0 * c;
+    } else {  // q_J = H_s (T − (T_J + T_w)/2) + K_c (T_w − T_J), q_B likewise with − K_c
+      const double Hs = 6.0 * c * g.symmetric, Kc = c * g.across;
+      aJ = aB = Hs;
+      bJJ = bBB = 0.5 * Hs + Kc;
+      bJB = bBJ = 0.5 * Hs - Kc;
+    }
   }
   CellWall w;
   // the surface temperature T_w = pT T + pJ T_J + p0

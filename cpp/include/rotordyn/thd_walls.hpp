@@ -10,7 +10,10 @@
 //   T(y) = T_J + (T_w − T_J) y/h + S y (h − y)/(2k),  mean T = (T_J + T_w)/2 + S h²/(12k),
 // whose wall fluxes in terms of its mean are, per unit area and with the fill θ of the cell,
 //   q_J = θ k/h (6 T − 4 T_J − 2 T_w),  q_B = θ k/h (6 T − 2 T_J − 4 T_w)
-// (with T_J = T_w: 6 θ k/h (T − T_wall) to each wall, a Nusselt number of 6 on h);
+// (with T_J = T_w: 6 θ k/h (T − T_wall) to each wall, a Nusselt number of 6 on h); a
+// turbulent film (turbulence "ng_pan") adds an eddy conductivity: the same relations with the
+// symmetric part 6 θ k/h and the across-film part θ k/h raised by the factors G_s, G_c >= 1 at
+// the cell's Re_h and Prandtl number (thd_wall_turbulence.hpp; exactly 1 at Re_h = 0);
 //
 // bush (pad): a fixed surface temperature T_w = T_B, or 1-D conduction through its thickness t
 // (conductivity k_b) to its back face, which convects to the surrounding oil at T_o with h_o
@@ -24,6 +27,8 @@
 //
 // Each cell's relations are affine in (T, T_J): CellWall.
 #pragma once
+
+#include "rotordyn/reynolds.hpp"
 
 namespace rotordyn {
 
@@ -49,8 +54,17 @@ struct WallModel {
   double k_oil = 0.0;           ///< W/(m K), film_htc
   double TJ = 0.0, TB = 0.0;    ///< fixed journal and bush temperatures, degC
   double U = 0.0, To = 0.0;     ///< bush conduction: U = 1/(t/k_b + 1/h_o), back oil degC
-  /// the heat paths of a cell with the film thickness h (m) and fill θ
-  CellWall cell(double h_m, double fill) const;
+  /// a turbulent film (film_htc; set_film): the eddy conductivity at each cell's
+  /// Re_h = rho_u h/μ and Pr = μ c_p/k (thd_wall_turbulence.hpp)
+  Turbulence turbulence = Turbulence::laminar;
+  double rho_u = 0.0;           ///< ρ|ω|R of the film's Reynolds number, kg/(m² s)
+  double cp = 0.0;              ///< the oil's specific heat, J/(kg K)
+  /// the film's turbulence (its geometry's model and density, at ω, rad/s): the film-side
+  /// coefficients of a turbulent film take the eddy conductivity
+  void set_film(const JournalBearingGeometry& geo, double omega, double specific_heat);
+  /// the heat paths of a cell with the film thickness h (m), fill θ and viscosity μ (Pa s;
+  /// used by a turbulent film only)
+  CellWall cell(double h_m, double fill, double mu_pa_s = 0.0) const;
 };
 
 /// The wall model of the options (checked: ThdOptions::validate).

@@ -104,8 +104,13 @@ struct ThdOptions {
   /// the film-side coefficient of each wall from the film's own conduction across its
   /// thickness, q = θ k/h (6 T − 4 T_wall − 2 T_other wall) per cell (the parabolic cross-film
   /// profile of a uniform viscous heat source; k the oil's conductivity), instead of the
-  /// given journal_htc_w_m2k, bush_htc_w_m2k (which must then be 0)
+  /// given journal_htc_w_m2k, bush_htc_w_m2k (which must then be 0); a turbulent film's
+  /// eddy conductivity raises them (thd_wall_turbulence.hpp)
   bool film_htc = false;
+  /// with film_htc on a turbulent film: the eddy conductivity raises the film-side
+  /// coefficients (thd_wall_turbulence.hpp); false: the laminar film's conduction alone (the
+  /// lower bound of the wall heat the turbulent film had before; for comparisons)
+  bool wall_eddy_conductivity = true;
   /// the journal's temperature from its own heat balance: zero net heat flux into the
   /// journal over the whole bearing (all its films), instead of journal_temperature_c
   bool journal_balance = false;

@@ -85,9 +85,10 @@ def pad_options(opts, n_pads: int):
         o = _core.ThdOptions() if thd else _core.ThermalOptions()
         for f in ("supply_temperature_c", "carry_over", "tol_k", "max_iter") + (
                 ("journal_htc_w_m2k", "bush_htc_w_m2k", "journal_temperature_c",
-                 "bush_temperature_c", "film_htc", "journal_balance", "bush_conduction",
-                 "bush_thickness_m", "bush_conductivity_w_per_m_k", "back_htc_w_m2k",
-                 "back_temperature_c") if thd else ("effective_factor",)):
+                 "bush_temperature_c", "film_htc", "wall_eddy_conductivity",
+                 "journal_balance", "bush_conduction", "bush_thickness_m",
+                 "bush_conductivity_w_per_m_k", "back_htc_w_m2k", "back_temperature_c")
+                if thd else ("effective_factor",)):
             setattr(o, f, getattr(opts, f))
         o.supply_flow_m3_s = opts.supply_flow_m3_s / n_pads
         return o

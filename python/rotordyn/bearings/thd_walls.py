@@ -7,7 +7,11 @@ Options (keywords of every THD entry point and keys of the model file's ``[therm
   ``bush_htc_w_m2k``) or ``"film"`` (the film's own conduction across its thickness h: per
   cell q_J = θ k/h (6 T − 4 T_J − 2 T_w), q_B = θ k/h (6 T − 2 T_J − 4 T_w), the parabolic
   cross-film profile of a uniform viscous heat source; k the oil's
-  ``conductivity_w_per_m_k``; the given coefficients must then be 0);
+  ``conductivity_w_per_m_k``; the given coefficients must then be 0; a turbulent film,
+  ``turbulence = "ng_pan"``, raises the symmetric part 6 θ k/h and the across-film part
+  θ k/h by its eddy conductivity at each cell's Re_h and Prandtl number: C++
+  ``thd_wall_turbulence.hpp``, docs/film-physics.md "The turbulent film's wall heat
+  transfer");
 * ``journal_wall``: ``"fixed"`` (the journal at ``journal_temperature_c``, None: the supply
   temperature) or ``"balance"`` (the journal's temperature from its own heat balance: zero net
   heat into it over the whole bearing, all its pads; iterated with the film);
