@@ -82,6 +82,11 @@ def main() -> int:
     br = rd.continuation(lin, "speed_hz", (50.0, 200.0), hb, unbalances=ub, ds=0.05,
                          max_points=3, method="harmonic_balance", harmonics=2, floquet="flow")
     assert br.ok, br.message
+    # over a model field: the core's corrector calls back into Python for each system (the
+    # GIL taken for the call, the re-assembled solvers held by the core while it uses them)
+    br = rd.continuation(lin, "supports.*.kyy_n_per_m", (0.5e8, 3e8), hb, unbalances=ub,
+                         ds=0.05, max_points=3, method="harmonic_balance", harmonics=2)
+    assert br.ok and br.stats["assemblies"] > 3, br.message
     rd.modes(lin, n_modes=6)
     rd.modes(lin, n_modes=6)  # the cached operator
     rd.unbalance_response(lin, ub, [40.0, 80.0, 120.0])

@@ -1,6 +1,7 @@
 """Branches of limit cycles over a model field (``rd.continuation(system,
 "bearings.*.viscosity_pa_s", bounds, orbit, method="harmonic_balance")``,
-analysis/hb_field.py; docs/nonlinear.md "Branches over a model field"), the threshold and
+the core's corrector with the systems of analysis/hb_field.py; docs/nonlinear.md "Branches
+over a model field"), the threshold and
 the Hopf point over a field, and the cycles born there (analysis/hopf.py ``hopf_branch``).
 
 Model: the compressor on two plain bearings (tests/data/models/compressor_plain.toml) on a
@@ -310,54 +311,53 @@ def test_threshold_over_a_field_refuses_a_bound_the_model_refuses(compressor):
         rd.hopf(compressor, "bearings.0.n_axial", bounds=(4, 8), speed_hz=SPEED)
 
 
-def test_core_evaluation_and_point_on_a_smooth_film():
-    """The two core calls the field corrector is made of, on the smooth full-film rotor's
-    forced orbit (H = 6, converged by rd.periodic_orbit to tol 1e-12): ``hb_evaluate`` at the
-    orbit's coefficients has a residual ≤ 1e-9 of the row scale (measured 3.5e-14 N against
-    7.4e4 N/m·m scales), its Jacobian equals a central difference of two residual calls
-    along a random direction within 1e-6 (measured 8.7e-9); ``hb_orbit_point`` from that
-    evaluation gives the orbit's own Floquet multipliers (samples) to 1e-10."""
+def test_core_corrector_asks_the_field_systems():
+    """The core's corrector over a field gets each system from the Python provider
+    (``field_systems``): a value the model refuses (an impeller mass < 0) is the step's status
+    with the model's message, a provider that raises passes its exception through the core
+    call, and at an accepted value the step converges on the rebuilt model (the forced orbit
+    of the compressor on linear supports, H = 1: its closed form there within 1e-10 of the
+    amplitude, measured 2.2e-15), with ∂R/∂p by two residual evaluations per Newton iteration."""
+    from orbit_forms import forced_orbit
     from rotordyn import _core
-    from rotordyn.analysis.assembly import assembled
-    from rotordyn.analysis.orbit_branch import periodic_input
-    from test_harmonic_balance import smooth_rotor_system
+    from rotordyn.analysis.hb_continuation import corrector_options, start_coefficients
+    from rotordyn.analysis.hb_field import field_systems
+    from rotordyn.analysis.orbit_branch import prepare
 
-    s = smooth_rotor_system()
-    ub = [(2, 8e-3, 0.0)]
-    o = rd.periodic_orbit(s, 15.0, kind="forced", unbalances=ub, method=HB, harmonics=6,
+    s = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    ub = [(3, 1e-3, 30.0)]
+    o = rd.periodic_orbit(s, 60.0, kind="forced", unbalances=ub, method=HB, harmonics=1,
                           tol=1e-12)
-    assert o.ok
-    asm = assembled(s)
-    w = 2 * np.pi * 15.0
-    inp = periodic_input(asm, "forced", w, 0.0, asm.config_vector(None), ub, 0.0, 11,
-                         2 * np.pi / w)
-    ho = _core.HarmonicBalanceOptions()
-    ho.harmonics, ho.time_points, ho.tol = 6, 24, 1e-12
-    Z = np.asarray(o.stats["coefficients"])
-    ev = _core.hb_evaluate(asm.solver, inp, Z, w, ho, True)
-    assert ev.ok and np.abs(ev.residual).max() < 1e-9 * np.abs(ev.row_scale).max()
-    d = np.random.default_rng(0).standard_normal(Z.shape) * 1e-6
-    h = 1e-3
-    rp, rm = (np.asarray(_core.hb_evaluate(asm.solver, inp, Z + sg * h * d, w, ho,
-                                           False).residual) for sg in (1, -1))
-    fd = (rp - rm) / (2 * h)
-    assert np.abs(np.asarray(ev.jacobian) @ d.ravel() - fd).max() < 1e-6 * np.abs(fd).max()
-    opt = _core.HbContinuationOptions()
-    ho.floquet = _core.HbFloquet.samples
-    opt.hb, opt.floquet_margin = ho, 0.0
-    pt = _core.hb_orbit_point(asm.solver, inp, ev, opt)
-    assert pt.hb.orbit.status == "ok" and pt.floquet_route == "samples"
-    mu = np.sort_complex(np.asarray(pt.hb.orbit.floquet.multipliers))
-    np.testing.assert_allclose(mu, np.sort_complex(np.asarray(o.multipliers)), atol=1e-10)
-    bad = _core.hb_evaluate(asm.solver, inp, Z, w, ho, False)
-    with pytest.raises(InputError, match="at: expected an evaluation with the Jacobian"):
-        _core.hb_orbit_point(asm.solver, inp, bad, opt)
-    # Hill's time points below 2H + 1 are refused here as by the continuation step (this
-    # entry point went on to build the basis with them)
-    ho.floquet, ho.hill_time_points = _core.HbFloquet.hill, 12
-    opt.hb = ho
-    with pytest.raises(InputError, match="hill_time_points"):
-        _core.hb_orbit_point(asm.solver, inp, ev, opt)
+    vary = "rotor.disks.1.mass_kg"
+    setup = prepare(s, vary, (10.0, 60.0), o, ub, None, 11)
+    z, w = start_coefficients(o, 1), 2 * np.pi * 60.0
+    inp = _core.HbContinuationInput()
+    inp.base, inp.coefficients, inp.frequency = setup.base, z, w
+    inp.scale = np.array([float(o.length_scale_m), w, 50.0])
+    opt = corrector_options(1, 4, 1e-11, 20, "samples", 0.01, 1e-8, 1e-9, w, 10000)
+
+    def step(system_at, p):
+        inp.p, inp.y_prev = p, np.concatenate([z.ravel(), [w, p]])
+        return _core.hb_continuation_step(system_at, inp, opt)
+
+    bad = step(field_systems(setup), -5.0)
+    assert bad.hb.orbit.status == "not_converged" and len(bad.tangent) == 0
+    assert bad.hb.orbit.message.startswith("harmonic balance at the predicted point: the "
+                                           f"model refuses {vary} = -5: ")
+
+    def broken(p):
+        raise RuntimeError(f"no system at {p}")
+
+    with pytest.raises(RuntimeError, match="no system at 20.0"):
+        step(broken, 20.0)
+    ok = step(field_systems(setup), 20.0)
+    assert ok.hb.orbit.status == "ok" and ok.p == 20.0 and ok.hb.orbit.iterations >= 1
+    assert ok.fd_evaluations == 2 * (ok.hb.orbit.iterations + 1)
+    t = np.linspace(0.0, 2 * np.pi / w, 9)
+    r_exact, _ = forced_orbit(set_field(s, vary, 20.0), 60.0, t, ub)
+    basis = np.stack([np.ones_like(t), np.cos(w * t), np.sin(w * t)], axis=1)
+    r = basis @ np.asarray(ok.hb.coefficients)
+    assert np.abs(r - r_exact).max() < 1e-10 * np.abs(r_exact).max()
 
 
 def test_cycles_at_amplitudes_refuse_a_field_hopf_point(compressor, clearance_hopf):

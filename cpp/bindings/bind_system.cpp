@@ -2,6 +2,8 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <memory>
+
 #include "bindings.hpp"
 #include "rotordyn/system.hpp"
 
@@ -85,7 +87,8 @@ void bind_system(py::module_& m) {
       .def_readonly("film_force", &Linearization::film_force);
 
   using gil = py::call_guard<py::gil_scoped_release>;
-  py::class_<SystemSolver>(m, "SystemSolver",
+  // shared holder: a corrector over a model field keeps the systems it is given alive
+  py::class_<SystemSolver, std::shared_ptr<SystemSolver>>(m, "SystemSolver",
                            "Film forces, linearisation and equilibrium of a SystemModel. "
                            "One per thread.")
       .def(py::init<SystemModel>(), py::arg("model"))

@@ -25,7 +25,6 @@ void bind_hill(py::module_& m);
 void bind_thermal(py::module_& m);
 void bind_continuation(py::module_& m);
 void bind_hb_continuation(py::module_& m);
-void bind_hb_field(py::module_& m);
 void bind_unbalance(py::module_& m);
 void bind_threshold(py::module_& m);
 void bind_thd(py::module_& m);

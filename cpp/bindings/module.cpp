@@ -18,7 +18,6 @@ PYBIND11_MODULE(_core, m) {
   bind_harmonic_balance(m);
   bind_continuation(m);
   bind_hb_continuation(m);
-  bind_hb_field(m);
   bind_sleeve(m);
   bind_batch(m);
   bind_thermal(m);

@@ -113,16 +113,16 @@ struct PointFloquet {
   long linearizations = 0, evaluations = 0;
 };
 
-/// The end of a converged corrector at (Z, ω) (a branch point: hb_continuation.cpp and
-/// hb_field.cpp): an autonomous orbit whose harmonics are all below max(100 tol, 1e-4) L is
-/// refused (the branch reached an equilibrium), the orbit's samples into o (fill_orbit), and
-/// its Floquet multipliers — from the screening route (floquet = samples: the samples'
-/// linearisations of `e`, an evaluation of P with the Jacobian at Z, ω; floquet = hill: Hill's
-/// method on e's Jacobian, with one more evaluation of P on Hill's time points), recomputed by
-/// one CVODES sensitivity flow at sensitivity_rtol where the screen is not safe (samples:
-/// | |μ_c| − 1 | < margin or |μ_trivial − 1| > margin / 2; Hill: | |μ_c| − 1 | < margin +
-/// 3 |μ_trivial − 1|; margin 0: never), or by the flow for floquet = flow. false with o.status
-/// / o.message set on a failure.
+/// The end of a converged corrector at (Z, ω) (a branch point: hb_continuation.cpp): an
+/// autonomous orbit whose harmonics are all below max(100 tol, 1e-4) L is refused (the branch
+/// reached an equilibrium), the orbit's samples into o (fill_orbit), and its Floquet
+/// multipliers — from the screening route (floquet = samples: the samples' linearisations of
+/// `e`, an evaluation of P with the Jacobian at Z, ω; floquet = hill: Hill's method on e's
+/// Jacobian, with one more evaluation of P on Hill's time points), recomputed by one CVODES
+/// sensitivity flow at sensitivity_rtol where the screen is not safe (samples: | |μ_c| − 1 | <
+/// margin or |μ_trivial − 1| > margin / 2; Hill: | |μ_c| − 1 | < margin + 3 |μ_trivial − 1|;
+/// margin 0: never), or by the flow for floquet = flow. false with o.status / o.message set
+/// on a failure.
 bool finish_point(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, double L,
                   const PeriodicInput& in, shooting_detail::Flow& F, Problem& P, const Eval& e,
                   const HarmonicBalanceOptions& ho, double margin, PointFloquet& pf);

@@ -19,7 +19,8 @@
 // the harmonic-balance Jacobian (the films' perturbation-method K_H, D_H at the samples, the
 // code of harmonic_balance.cpp), ∂R̃/∂p exact where eq. 12 is affine in p (p_c: −c_s, a_y:
 // K·∂a/∂a_y, both in the constant harmonic only) and a central difference of two residual
-// evaluations at p ± h for the speed (M, G, the films and a forced period depend on Ω). The
+// evaluations at p ± h for the speed (M, G, the films and a forced period depend on Ω) and for
+// a parameter the caller varies (the systems at p ± h from its provider: a model field). The
 // new tangent is the null vector of the first rows, oriented along the previous tangent.
 // Floquet multipliers from the samples' linearisations or by Hill's method on the converged
 // Jacobian (no film solve), recomputed by one CVODES sensitivity flow where the verdict is not
@@ -27,6 +28,8 @@
 #pragma once
 #include <Eigen/Core>
 
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "rotordyn/continuation.hpp"
@@ -86,10 +89,34 @@ struct HbContinuationStep {
   long fd_evaluations = 0;         ///< residual evaluations for the central difference ∂R/∂p
 };
 
-/// One pseudo-arclength corrector step by harmonic balance. Failures are statuses of
+/// One pseudo-arclength corrector step by harmonic balance over p_c, Ω or a_y (the
+/// parameter varies the operating point of `solver`'s model). Failures are statuses of
 /// hb.orbit (not_converged, rub, error, with a message); InputError for shapes, a
 /// non-positive scale, fd_step outside (0, 1), harmonics / time points out of range.
 HbContinuationStep hb_continuation_step(SystemSolver& solver, const HbContinuationInput& in,
+                                        const HbContinuationOptions& opt);
+
+/// The system of a branch at one value of a parameter the caller varies (a model field: a
+/// clearance, a viscosity, a support stiffness, for which the caller re-assembles the model):
+/// its solver and orbit input there (kind, Ω, p_c, a, unbalance, t0, n_out; a forced orbit's
+/// period; r0 and v0 are not used), or the model's refusal of the value.
+struct HbSystemAt {
+  std::shared_ptr<SystemSolver> solver;  ///< null: the value is refused
+  PeriodicInput input;
+  std::string refused;                   ///< why the model refuses the value (solver null)
+};
+/// p ↦ the system at p. Called at every value the corrector visits (the iterates, the line
+/// search's trials, p ± h of the central difference ∂R/∂p); a refused value is an evaluation
+/// that failed there, with the refusal as its message.
+using HbSystemProvider = std::function<HbSystemAt(double p)>;
+
+/// The same corrector step over a parameter the caller varies: the systems come from
+/// `system_at`, ∂R/∂p is the central difference of two residual evaluations on the systems at
+/// p ± h (h = fd_step · D_p), and in.base, parameter, config_direction and subharmonic are not
+/// used. InputError as above, and for a system whose coordinates differ from the
+/// coefficients' columns.
+HbContinuationStep hb_continuation_step(const HbSystemProvider& system_at,
+                                        const HbContinuationInput& in,
                                         const HbContinuationOptions& opt);
 
 }  // namespace rotordyn

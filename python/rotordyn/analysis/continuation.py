@@ -109,9 +109,9 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         active bearing's vertical configuration); the other operating values are the start's.
         With ``method="harmonic_balance"`` also a numeric model field path (e.g.
         ``"bearings.*.viscosity_pa_s"``, SI unit of the field): the system re-assembled at
-        every value (:mod:`rotordyn.analysis.hb_field`; the start an orbit of ``system`` as
-        passed, at its value of the field; docs/nonlinear.md, "Branches of limit cycles over
-        a model field").
+        every value the core's corrector visits (:mod:`rotordyn.analysis.hb_field`; the
+        start an orbit of ``system`` as passed, at its value of the field; docs/nonlinear.md,
+        "Branches of limit cycles over a model field").
     bounds
         (low, high) in the unit of ``vary``; must contain the start's value. The branch stops
         at the first point outside.

@@ -17,7 +17,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.analysis import harmonic_balance as hbal
-from rotordyn.analysis.hb_field import FieldCorrector
+from rotordyn.analysis.hb_field import field_systems
 from rotordyn.analysis.orbit_branch import (PARAM, BranchSetup, assemble, halved,
                                             hopf_estimate, rejected)
 from rotordyn.analysis.periodic import periodic_orbit
@@ -166,7 +166,9 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
 
     opt = corrector_options(h_, m_hb, tol, max_iter, floquet, margin, rtol, atol_m,
                             max(abs(setup.omega), w0, 1.0), max_steps, sensitivity_rtol)
-    ho = opt.hb
+
+    # a model field: the core asks for the system re-assembled at every value it visits
+    systems = asm.solver if setup.field is None else field_systems(setup)
 
     def correct(z, w, p_core, y_prev, tangent, step_ds):
         inp.coefficients = np.ascontiguousarray(z.reshape(nb, n))
@@ -175,11 +177,7 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
         inp.y_prev = y_prev
         inp.tangent = tangent
         inp.ds = float(step_ds)
-        return _core.hb_continuation_step(asm.solver, inp, opt)
-
-    if setup.field is not None:  # a model field: the system re-assembled at every value
-        ho.length_scale = L
-        correct = FieldCorrector(setup, ho, opt, scale, fd_step, direction)
+        return _core.hb_continuation_step(systems, inp, opt)
 
     stats = {"method": "harmonic_balance", "harmonics": h_, "time_points": int(m_hb),
              "floquet": floquet, "floquet_margin": float(margin), "correctors": 0,
