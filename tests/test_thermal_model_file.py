@@ -74,6 +74,22 @@ def test_bad_thermal_input_names_the_toml_path(old, new, match):
         rotordyn.System.from_toml(_text(**{old: new}), is_text=True)
 
 
+def test_thermal_film_entry_on_a_table_bearing_says_why():
+    """A ``[[thermal.film]]`` entry naming a bearing that has no film (a coefficient table)
+    says what that bearing is (before: only "expected ... of the model ['NDE bearing'], got 'DE
+    bearing'", which reads as a misspelt name)."""
+    table = (MODELS / "compressor_table.toml").read_text()
+    de = table.index("[[bearing]]", table.index("[[bearing]]") + 1)
+    plain = THERMAL.read_text()
+    first = plain.index("[[bearing]]")
+    nde = plain[first:plain.index("[[bearing]]", first + 1)]
+    text = table[:table.index("[[bearing]]")] + nde + table[de:] + \
+        plain[plain.index("[thermal]"):]
+    with pytest.raises(InputError, match=r"^thermal\.film\[0\]\.bearing: .*\['NDE bearing'\], "
+                       r"got 'DE bearing' \(a TableBearing: it has no film"):
+        rotordyn.System.from_toml(text, is_text=True)
+
+
 def test_analysis_and_cli_take_the_models_oil_system(capsys):
     s = _model()
     r = system_thermal_equilibrium(s, speed_hz=SPEED)

@@ -120,12 +120,15 @@ class System:
             # plain journal bearings, and the pad bearings of the THD film (pad_thd.py)
             plain = {b.name for b in self.bearings if b.name and (
                 isinstance(b, (FluidFilmBearing, TiltingPadBearing, FixedGeometryBearing)))}
+            kinds = {b.name: type(b).__name__ for b in self.bearings if b.name}
             for i, f in enumerate(self.thermal.films):
                 if f.bearing not in plain:
+                    why = (f" (a {kinds[f.bearing]}: it has no film for a thermal model)"
+                           if f.bearing in kinds else "")
                     raise InputError(f"thermal.film[{i}].bearing: expected the name of a plain "
                                      f"journal bearing (type = \"journal\"), or a tilting-pad "
                                      f"or fixed-geometry bearing, of the model "
-                                     f"{sorted(plain)}, got {f.bearing!r}")
+                                     f"{sorted(plain)}, got {f.bearing!r}{why}")
 
 
     # -- lookups -----------------------------------------------------------------------
