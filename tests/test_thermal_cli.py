@@ -120,3 +120,27 @@ def test_sweep_bad_thermal_options_exit_2(tmp_path, capsys, model, thermal, fiel
     err = capsys.readouterr().err
     assert field in err and "Traceback" not in err
     assert not (tmp_path / "o").exists() or not list((tmp_path / "o").glob("*.parquet"))
+
+
+def test_a_failed_speed_says_why_on_the_command_line(tmp_path, capsys, system):
+    """A speed whose thermal equilibrium raised (the oil law's range ends at 85 degC; the DE
+    film exceeds it at 200 Hz, not at 100 Hz): its --json thermal entry is its status and why
+    (it was null) and the text summary gives the reason (it said only "thermal equilibrium
+    failed")."""
+    import dataclasses
+
+    oil = dataclasses.replace(system.thermal.oil, t_max_c=85.0)
+    s = dataclasses.replace(system, thermal=dataclasses.replace(system.thermal, oil=oil),
+                            bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=8)
+                                           for b in system.bearings))
+    path = str(tmp_path / "m.toml")
+    s.to_toml(path)
+    assert main(["campbell", path, "--speeds-hz", "100,200", "--thermal", "--json"]) == 0
+    th = json.loads(capsys.readouterr().out)["thermal"]
+    assert th[0]["status"] == "ok" and th[1]["status"] == "error"
+    assert "t_max_c = 85 degC" in th[1]["message"]
+    assert main(["unbalance", path, "--unbalance", "3,1e-4,0", "--speeds-hz", "100,200",
+                 "--thermal"]) == 0
+    err = capsys.readouterr().err
+    assert "200 Hz: thermal equilibrium failed (ConvergenceError: " in err
+    assert "viscosity law's range (t_max_c = 85 degC)" in err
