@@ -172,6 +172,25 @@ def test_a_failed_speed_says_why_in_the_api_results_and_unbalance_rows():
     assert bad["message"].str.contains("viscosity law's range").all()
 
 
+@pytest.mark.parametrize("kw, match", [
+    ({"model": "x"}, r"^thermal\.model: expected one of"),
+    ({"carry_over": 2.0}, r"^thermal\.carry_over: expected 0 <= carry_over"),
+    ({"supply_temperature_c": 300.0}, r"^thermal\.supply_temperature_c: expected a temperature"),
+    ({"tol_k": -1.0}, r"^thermal\.tol_k: "),
+])
+def test_a_bad_thermal_keyword_value_is_named_as_given(kw, match):
+    """A bad value among the ``thermal=`` keywords of stability, Campbell and the unbalance
+    response names ``thermal.<key>`` (before: only the key, e.g. "model: expected ...", as if
+    the call's own argument ``model`` were wrong)."""
+    s = _plain()
+    with pytest.raises(InputError, match=match):
+        rd.stability(s, 150.0, thermal=kw)
+    with pytest.raises(InputError, match=match):
+        rd.campbell(s, [150.0], thermal=kw)
+    with pytest.raises(InputError, match=match):
+        rd.unbalance_response(s, [(3, 1e-4, 0.0)], [150.0], refine=False, thermal=kw)
+
+
 def test_model_level_refusals_raise_not_rows():
     """A zero speed is bad input: InputError naming the field, not an ``error`` row per speed
     (before: a Campbell diagram of NaN rows). The effective model on tilting pads, once a

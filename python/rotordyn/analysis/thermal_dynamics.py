@@ -63,9 +63,14 @@ def thermal_point(system, speed_hz, chamber_pressure_pa=0.0, config_ay_m=None, k
     carries the frozen viscosities and the offsets used)."""
     from rotordyn.analysis.thermal import system_thermal_equilibrium
 
-    return system_thermal_equilibrium(system, speed_hz=float(speed_hz),
-                                      chamber_pressure_pa=float(chamber_pressure_pa),
-                                      config_ay_m=config_ay_m, **(kw or {}))
+    try:
+        return system_thermal_equilibrium(system, speed_hz=float(speed_hz),
+                                          chamber_pressure_pa=float(chamber_pressure_pa),
+                                          config_ay_m=config_ay_m, **(kw or {}))
+    except InputError as exc:  # a value of the thermal keywords: named as the caller gave it
+        if any(str(exc).startswith(f"{k}:") for k in (kw or {})):
+            raise InputError(f"thermal.{exc}") from None
+        raise
 
 
 def _converged_points(system, sp, chamber_pressure_pa, config_ay_m, thermal, status, therm,
