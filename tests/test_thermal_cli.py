@@ -144,3 +144,23 @@ def test_a_failed_speed_says_why_on_the_command_line(tmp_path, capsys, system):
     err = capsys.readouterr().err
     assert "200 Hz: thermal equilibrium failed (ConvergenceError: " in err
     assert "viscosity law's range (t_max_c = 85 degC)" in err
+
+
+def test_threshold_thermal(tmp_path, capsys, system):
+    """``rotordyn threshold --thermal``: each scanned point at its own thermal equilibrium, as
+    ``rotordyn.threshold(..., thermal=True)`` (the flag was missing; exit 2 naming --thermal
+    on a model without an oil system)."""
+    import dataclasses
+
+    s = dataclasses.replace(system, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=8)
+                                                   for b in system.bearings))
+    path = str(tmp_path / "m.toml")
+    s.to_toml(path)
+    args = ["threshold", path, "--vary", "speed_hz", "--bounds", "120", "130", "--n-scan", "3"]
+    assert main(args + ["--thermal", "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)
+    ref = rd.threshold(s, "speed_hz", bounds=(120.0, 130.0), n_scan=3, thermal=True)
+    assert got["status"] == "ok" and got["speed_hz"] == ref.value
+    assert main(["threshold", PLAIN, "--vary", "speed_hz", "--bounds", "120", "130",
+                 "--thermal"]) == 2
+    assert "--thermal" in capsys.readouterr().err

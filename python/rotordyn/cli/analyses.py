@@ -124,6 +124,7 @@ def _register(sub) -> None:
     s.add_argument("--n-scan", type=int, default=11, metavar="N",
                    help="points of the bracketing scan")
     add_operating_point(s)
+    _add_thermal_flag(s)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_threshold)
 
@@ -461,7 +462,8 @@ def _cmd_threshold(args) -> int:
     lo, hi = args.bounds or (0.0, 0.5e6)
     t = analysis.threshold(s, args.vary, bounds=(lo, hi), speed_hz=args.speed_hz,
                            chamber_pressure_pa=args.chamber_pressure_pa,
-                           config_ay_m=args.config_ay_m, n_scan=args.n_scan)
+                           config_ay_m=args.config_ay_m, n_scan=args.n_scan,
+                           thermal=_thermal(args, s))
     payload = {args.vary: t.value, "whirl_frequency_hz": t.whirl_frequency_hz,
                "whirl_ratio": t.whirl_ratio, "stable_side": t.stable_side,
                "crossings": list(t.crossings), "status": t.status, "message": t.message,
