@@ -163,9 +163,7 @@ def unbalance_rows(job, variants, chunk_id, lo, hi, rows):
             rows += [fail_row(r[0], "error", f"{type(exc).__name__}: {exc}") for r in pts]
             continue
         status = [_status(x) for x in res.point_status]
-        msg = ["" if (t is not None and t.status in CONVERGED) else
-               (f"thermal equilibrium: {t.message}" if t is not None else "error")
-               for t in res.thermal]
+        msg = list(res.point_message)  # why a speed failed: the thermal status or exception
         cols = unbalance_columns(res, speeds, stations, status, msg)
         ns = len(stations)
         for k, (row, *_rest) in enumerate(pts):

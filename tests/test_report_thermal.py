@@ -391,7 +391,7 @@ def test_text_report_marks_speeds_without_a_thermal_equilibrium(tmp_path):
     temps = _block(lines, "bearing temperatures and power loss")
     failed = [r for r in map(_text_cells, temps) if r[:2] in (["NDE bearing", "200"],
                                                               ["DE bearing", "200"])]
-    assert len(failed) == 2 and all(r[2:9] == ["n/a"] * 7 and r[9] == "error" for r in failed)
+    assert len(failed) == 2 and all(r[2:10] == ["n/a"] * 8 and r[10] == "error" for r in failed)
     fr = pd.read_csv(out / "bearing_thermal.csv")
     bad = fr[fr["speed_hz"] == 200.0]
     assert (bad["status"] == "error").all() and bad["max_temperature_c"].isna().all()

@@ -216,7 +216,8 @@ def test_schemas_equal_the_stored_ones_of_the_code_before():
     even where both paths of the comparisons above would change together. (Changed on purpose
     since: the hopf and limit_cycle rows' ``l1_refined``, float64 after
     ``amplitude_coefficient_m2``, the hopf analysis's ``grid_check``; the ``thermal`` rows' four
-    THD wall columns, journal_temperature_c … heat_to_bush_w, float64, before ``iterations``;
+    THD wall columns, journal_temperature_c … heat_to_bush_w, float64, before ``iterations``,
+    then the hot film's h_min_m and h_min_z_m, float64, before ``iterations``;
     docs/film-physics.md.)"""
     import json
 

@@ -120,3 +120,47 @@ def test_sweep_bad_thermal_options_exit_2(tmp_path, capsys, model, thermal, fiel
     err = capsys.readouterr().err
     assert field in err and "Traceback" not in err
     assert not (tmp_path / "o").exists() or not list((tmp_path / "o").glob("*.parquet"))
+
+
+def test_a_failed_speed_says_why_on_the_command_line(tmp_path, capsys, system):
+    """A speed whose thermal equilibrium raised (the oil law's range ends at 85 degC; the DE
+    film exceeds it at 200 Hz, not at 100 Hz): its --json thermal entry is its status and why
+    (it was null) and the text summary gives the reason (it said only "thermal equilibrium
+    failed")."""
+    import dataclasses
+
+    oil = dataclasses.replace(system.thermal.oil, t_max_c=85.0)
+    s = dataclasses.replace(system, thermal=dataclasses.replace(system.thermal, oil=oil),
+                            bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=8)
+                                           for b in system.bearings))
+    path = str(tmp_path / "m.toml")
+    s.to_toml(path)
+    assert main(["campbell", path, "--speeds-hz", "100,200", "--thermal", "--json"]) == 0
+    th = json.loads(capsys.readouterr().out)["thermal"]
+    assert th[0]["status"] == "ok" and th[1]["status"] == "error"
+    assert "t_max_c = 85 degC" in th[1]["message"]
+    assert main(["unbalance", path, "--unbalance", "3,1e-4,0", "--speeds-hz", "100,200",
+                 "--thermal"]) == 0
+    err = capsys.readouterr().err
+    assert "200 Hz: thermal equilibrium failed (ConvergenceError: " in err
+    assert "viscosity law's range (t_max_c = 85 degC)" in err
+
+
+def test_threshold_thermal(tmp_path, capsys, system):
+    """``rotordyn threshold --thermal``: each scanned point at its own thermal equilibrium, as
+    ``rotordyn.threshold(..., thermal=True)`` (the flag was missing; exit 2 naming --thermal
+    on a model without an oil system)."""
+    import dataclasses
+
+    s = dataclasses.replace(system, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=8)
+                                                   for b in system.bearings))
+    path = str(tmp_path / "m.toml")
+    s.to_toml(path)
+    args = ["threshold", path, "--vary", "speed_hz", "--bounds", "120", "130", "--n-scan", "3"]
+    assert main(args + ["--thermal", "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)
+    ref = rd.threshold(s, "speed_hz", bounds=(120.0, 130.0), n_scan=3, thermal=True)
+    assert got["status"] == "ok" and got["speed_hz"] == ref.value
+    assert main(["threshold", PLAIN, "--vary", "speed_hz", "--bounds", "120", "130",
+                 "--thermal"]) == 2
+    assert "--thermal" in capsys.readouterr().err

@@ -146,6 +146,51 @@ def test_failed_thermal_equilibrium_is_a_status_row():
         rd.stability(s, 150.0, thermal=dict(supply_temperature_c=195.0))
 
 
+def test_a_failed_speed_says_why_in_the_api_results_and_unbalance_rows():
+    """Campbell and unbalance results at thermal equilibria keep why a speed failed
+    (``point_message``; Campbell's ``to_frame()`` message column), as the sweep's stability and
+    Campbell rows did. Before: the API's Campbell rows said status ``error`` with an empty
+    message and the unbalance sweep rows only ``error``, so the cause (here the film past the
+    viscosity law's t_max_c at 150 Hz, while 100 Hz stays inside at a 195 degC supply) was
+    lost."""
+    s = _plain()
+    th = dict(supply_temperature_c=195.0)
+    c = rd.campbell(s, [100.0, 150.0], n_modes=2, thermal=th)
+    assert list(c.point_status) == ["ok", "error"]
+    assert c.point_message[0] == "" and "viscosity law's range" in c.point_message[1]
+    f = c.to_frame()
+    assert f[f["speed_hz"] == 150.0]["message"].str.startswith("ConvergenceError: ").all()
+    assert (f[f["speed_hz"] == 100.0]["message"] == "").all()
+    u = rd.unbalance_response(s, [(3, 1e-4, 0.0)], [100.0, 150.0], refine=False, thermal=th)
+    assert list(u.point_status) == ["ok", "error"]
+    assert list(u.point_message) == list(c.point_message)
+    job = _job("unbalance", {"unbalances": [[3, 1e-4, 0.0]], "thermal": th},
+               {"speed_hz": [100.0, 150.0]})
+    t = run_chunk(job, 0, 0, 2).to_pandas()
+    bad = t[t["speed_hz"] == 150.0]
+    assert len(bad) and (bad["status"] == "error").all()
+    assert bad["message"].str.contains("viscosity law's range").all()
+
+
+@pytest.mark.parametrize("kw, match", [
+    ({"model": "x"}, r"^thermal\.model: expected one of"),
+    ({"carry_over": 2.0}, r"^thermal\.carry_over: expected 0 <= carry_over"),
+    ({"supply_temperature_c": 300.0}, r"^thermal\.supply_temperature_c: expected a temperature"),
+    ({"tol_k": -1.0}, r"^thermal\.tol_k: "),
+])
+def test_a_bad_thermal_keyword_value_is_named_as_given(kw, match):
+    """A bad value among the ``thermal=`` keywords of stability, Campbell and the unbalance
+    response names ``thermal.<key>`` (before: only the key, e.g. "model: expected ...", as if
+    the call's own argument ``model`` were wrong)."""
+    s = _plain()
+    with pytest.raises(InputError, match=match):
+        rd.stability(s, 150.0, thermal=kw)
+    with pytest.raises(InputError, match=match):
+        rd.campbell(s, [150.0], thermal=kw)
+    with pytest.raises(InputError, match=match):
+        rd.unbalance_response(s, [(3, 1e-4, 0.0)], [150.0], refine=False, thermal=kw)
+
+
 def test_model_level_refusals_raise_not_rows():
     """A zero speed is bad input: InputError naming the field, not an ``error`` row per speed
     (before: a Campbell diagram of NaN rows). The effective model on tilting pads, once a

@@ -67,11 +67,27 @@ def _text(**edit):
     ("supply_flow_m3_s = 2.0e-5", "supply_flow_m3_s = -2.0e-5",
      r"^thermal\.film\[0\]\.supply_flow_m3_s: expected >= 0"),
     ("bearing = \"DE bearing\"", "bearing = \"DE\"",
-     r"^thermal\.film\[0\]\.bearing: expected the name of a plain journal bearing"),
+     r"^thermal\.film\[0\]\.bearing: expected the name of a plain or active journal bearing"),
 ])
 def test_bad_thermal_input_names_the_toml_path(old, new, match):
     with pytest.raises(InputError, match=match):
         rotordyn.System.from_toml(_text(**{old: new}), is_text=True)
+
+
+def test_thermal_film_entry_on_a_table_bearing_says_why():
+    """A ``[[thermal.film]]`` entry naming a bearing that has no film (a coefficient table)
+    says what that bearing is (before: only "expected ... of the model ['NDE bearing'], got 'DE
+    bearing'", which reads as a misspelt name)."""
+    table = (MODELS / "compressor_table.toml").read_text()
+    de = table.index("[[bearing]]", table.index("[[bearing]]") + 1)
+    plain = THERMAL.read_text()
+    first = plain.index("[[bearing]]")
+    nde = plain[first:plain.index("[[bearing]]", first + 1)]
+    text = table[:table.index("[[bearing]]")] + nde + table[de:] + \
+        plain[plain.index("[thermal]"):]
+    with pytest.raises(InputError, match=r"^thermal\.film\[0\]\.bearing: .*\['NDE bearing'\], "
+                       r"got 'DE bearing' \(a TableBearing: it has no film"):
+        rotordyn.System.from_toml(text, is_text=True)
 
 
 def test_analysis_and_cli_take_the_models_oil_system(capsys):
@@ -164,3 +180,30 @@ def test_every_thermal_number_is_a_model_path():
         set_field(s, "thermal.oil.viscosity_law", 1.0)
     with pytest.raises(InputError, match=r"thermal\.films\.NDE: no element 'NDE'.*'DE bearing'"):
         set_field(s, "thermal.films.NDE.carry_over", 0.1)
+
+
+def test_thermal_film_entry_on_an_active_bearing():
+    """A ``[[thermal.film]]`` entry may name an active journal bearing (docs/model-file.md; the
+    thermal models take it: docs/film-physics.md, "THD active bearing"). Before: refused at
+    load, "expected the name of a plain journal bearing ... got 'DE active bearing'". On the
+    compressor with an active DE bearing (tests/data/models/compressor_active.toml) and the
+    plain-thermal model's oil system, the entry's metered supply flow and carry-over reach the
+    active film (effective model, 150 Hz, p_c = 0), the plain NDE film keeps its own demand,
+    and the model file round-trips."""
+    text = (MODELS / "compressor_active.toml").read_text().replace(
+        "n_circ = 72\nn_axial = 16", "n_circ = 48\nn_axial = 8")
+    oil = THERMAL.read_text()
+    text += "\n" + oil[oil.index("[thermal]"):].replace('bearing = "DE bearing"',
+                                                         'bearing = "DE active bearing"')
+    s = rotordyn.System.from_toml(text, is_text=True)
+    assert s.thermal.films[0].bearing == "DE active bearing"
+    assert rotordyn.System.from_toml(s.to_toml(), is_text=True) == s
+    r = system_thermal_equilibrium(s, speed_hz=SPEED, model="effective")
+    assert r.status == "ok"
+    fr = r.to_frame().set_index("bearing")
+    assert fr.loc["DE active bearing", "supply_flow_m3_s"] == pytest.approx(2e-5, rel=1e-12)
+    assert fr.loc["NDE bearing", "supply_flow_m3_s"] != pytest.approx(2e-5, rel=1e-3)
+    lam = system_thermal_equilibrium(s, speed_hz=SPEED, model="effective", carry_over=0.4,
+                                     supply_flow_m3_s=2e-5).to_frame().set_index("bearing")
+    assert fr.loc["DE active bearing", "effective_temperature_c"] == pytest.approx(
+        lam.loc["DE active bearing", "effective_temperature_c"], abs=1e-4)

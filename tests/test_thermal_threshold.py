@@ -87,3 +87,20 @@ def test_thermal_threshold_below_the_supply_temperature_one(compressor):
     m_th = rd.stability(s, 120.0, thermal=True).max_real_1_per_s
     m_iso = rd.stability(_iso(s, [mu_s] * 2), 120.0, warm_start=False).max_real_1_per_s
     assert m_iso < m_th < 0.0
+
+
+def test_threshold_takes_thermal_true_like_stability(compressor):
+    """``thermal=True`` (the model's ``[thermal]`` as it is) is accepted by ``threshold`` as by
+    ``stability``, ``campbell`` and ``unbalance_response`` (before: an InputError "expected
+    None or a dict", so the call the docs pair with ``stability(..., thermal=True)`` failed);
+    it is the empty dict's answer bit for bit, and ``False`` the isothermal one."""
+    kw = dict(bounds=(120.0, 130.0), n_scan=3, xtol=1e-3)
+    a = rd.threshold(compressor, "speed_hz", thermal=True, **kw)
+    b = rd.threshold(compressor, "speed_hz", thermal={}, **kw)
+    assert a.status == "ok" and a.value == b.value and a.value == pytest.approx(123.975, abs=2e-3)
+    iso = rd.threshold(compressor, "speed_hz", thermal=False, **kw)
+    # (the isothermal scan continues equilibria warm from the process's last state: the same
+    # threshold to round-off, observed 1.5e-12 Hz)
+    assert iso.value == pytest.approx(rd.threshold(compressor, "speed_hz", **kw).value,
+                                      rel=1e-12)
+    assert iso.value == pytest.approx(126.570, abs=2e-3)  # at the bearings' own 0.018 Pa s

@@ -477,6 +477,16 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
   return st;
 }
 
+double thd_residual_k(const Eigen::Ref<const Eigen::VectorXd>& G,
+                      const Eigen::Ref<const Eigen::VectorXd>& T, double t_max_c) {
+  double r = 0.0;
+  for (Eigen::Index n = 0; n < G.size(); ++n) {
+    const double d = std::abs(std::min(G[n], t_max_c) - T[n]);
+    if (!(d <= r)) r = d;  // NaN propagates
+  }
+  return r;
+}
+
 ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
                                const ThdOptions& opt, double lx, double ly, double omega) {
   oil.validate();
@@ -529,7 +539,7 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
     const FilmSolution* sol = &solver.rigid(x, y, 0.0, 0.0, omega);
     ThdFilmState st = thd_energy(solver, *sol, oil, opt, omega);
     const Eigen::VectorXd G = Eigen::Map<const Eigen::VectorXd>(st.temperature_c.data(), nn);
-    const double res = (G - T).cwiseAbs().maxCoeff();
+    const double res = thd_residual_k(G, T, oil.t_max_c);
     out.iterations = it;
     if (res <= opt.tol_k) {
       if (rtol > 1e-10) {  // polish the equilibrium with the field frozen, and its state
@@ -541,7 +551,7 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
         st = thd_energy(solver, *sol, oil, opt, omega);
         const Eigen::VectorXd G2 =
             Eigen::Map<const Eigen::VectorXd>(st.temperature_c.data(), nn);
-        if ((G2 - T).cwiseAbs().maxCoeff() > opt.tol_k) {  // the position had not settled
+        if (thd_residual_k(G2, T, oil.t_max_c) > opt.tol_k) {  // the position had not settled
           T = G2;
           continue;
         }
@@ -555,7 +565,7 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
                                "law's range (t_max_c = " + num(oil.t_max_c) + " degC)");
       return out;
     }
-    Eigen::VectorXd Tn = mixer.next(T, G);
+    Eigen::VectorXd Tn = mixer.next(T, G.cwiseMin(oil.t_max_c));  // the clamped map
     for (int n = 0; n < nn; ++n) Tn[n] = std::clamp(Tn[n], oil.t_min_c, oil.t_max_c);
     if (mirror_symmetric(sol->h_m)) symmetrize(Tn.data(), N, K1);
     T = Tn;

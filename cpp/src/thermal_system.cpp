@@ -22,8 +22,11 @@ namespace {
 // GX; true when the slice moved by at most the film's tol_k from the iterate X.
 bool take_thd_state(const ThdFilmState& ts, const ThermalFilm& tf, const Eigen::VectorXd& X,
                     int o, int nn, Eigen::VectorXd& GX, ThermalFilmState& st) {
-  GX.segment(o, nn) = Eigen::Map<const Eigen::VectorXd>(ts.temperature_c.data(), nn);
-  const double res = (GX.segment(o, nn) - X.segment(o, nn)).cwiseAbs().maxCoeff();
+  // the clamped map (the iterates stay in the law's range): a film hotter than t_max_c
+  // settles at nodes held there, and the range check names it (thd_residual_k)
+  const Eigen::Map<const Eigen::VectorXd> G(ts.temperature_c.data(), nn);
+  const double res = thd_residual_k(G, X.segment(o, nn), tf.oil.t_max_c);
+  GX.segment(o, nn) = G.cwiseMin(tf.oil.t_max_c);
   st.mean_temperature_c = st.effective_temperature_c = ts.mean_temperature_c;
   st.max_temperature_c = ts.max_temperature_c;
   st.inlet_temperature_c = ts.inlet_temperature_c;
@@ -482,8 +485,10 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
       for (std::size_t i = 0; i < thermal.size(); ++i)
         if (!(out.films[i].max_temperature_c <= thermal[i].oil.t_max_c))
           throw ConvergenceError("thermal equilibrium, film '" + m.films[thermal[i].film].name +
-                                 "': the maximum film temperature exceeds the viscosity law's "
-                                 "range (t_max_c)");
+                                 "': the maximum film temperature " +
+                                 num(out.films[i].max_temperature_c) + " degC exceeds the "
+                                 "viscosity law's range (t_max_c = " +
+                                 num(thermal[i].oil.t_max_c) + " degC)");
       return out;
     }
   }

@@ -112,4 +112,11 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
                                const ThdOptions& opt, double load_x_n, double load_y_n,
                                double omega);
 
+/// The residual of a THD fixed-point step, max |min(G, t_max_c) − T| (K): the iterates T are
+/// held in the law's range, so a film whose energy equation asks for more than t_max_c at a
+/// node held there has settled at that clamped point (the caller's range check then names
+/// t_max_c) instead of never settling.
+double thd_residual_k(const Eigen::Ref<const Eigen::VectorXd>& G,
+                      const Eigen::Ref<const Eigen::VectorXd>& T, double t_max_c);
+
 }  // namespace rotordyn

@@ -252,4 +252,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         flows=tuple({k: np.array(getattr(s.flows, k)) for k in FLOW_FIELDS} for s in st)
         if thd else (),
         **{f: col(f) if thd else np.full(len(rows), np.nan) for f in WALL_COLUMNS},
+        **{f: np.array([getattr(eq, g)[j] for _, j in rows], dtype=np.float64)
+           if eq.status in CONVERGED else np.full(len(rows), np.nan)
+           for f, g in (("h_min_m", "h_min"), ("h_min_z_m", "h_min_z_m"))},
         wall_temperature_c=tuple(np.array(s.wall_temperature_c) for s in st) if thd else ())

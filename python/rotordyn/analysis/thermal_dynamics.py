@@ -63,15 +63,22 @@ def thermal_point(system, speed_hz, chamber_pressure_pa=0.0, config_ay_m=None, k
     carries the frozen viscosities and the offsets used)."""
     from rotordyn.analysis.thermal import system_thermal_equilibrium
 
-    return system_thermal_equilibrium(system, speed_hz=float(speed_hz),
-                                      chamber_pressure_pa=float(chamber_pressure_pa),
-                                      config_ay_m=config_ay_m, **(kw or {}))
+    try:
+        return system_thermal_equilibrium(system, speed_hz=float(speed_hz),
+                                          chamber_pressure_pa=float(chamber_pressure_pa),
+                                          config_ay_m=config_ay_m, **(kw or {}))
+    except InputError as exc:  # a value of the thermal keywords: named as the caller gave it
+        if any(str(exc).startswith(f"{k}:") for k in (kw or {})):
+            raise InputError(f"thermal.{exc}") from None
+        raise
 
 
-def _converged_points(system, sp, chamber_pressure_pa, config_ay_m, thermal, status, therm):
+def _converged_points(system, sp, chamber_pressure_pa, config_ay_m, thermal, status, therm,
+                      message):
     """(i, speed, thermal equilibrium) of every speed whose thermal equilibrium converged;
-    fills ``status`` (the thermal status, "error" where it raised) and ``therm`` (the
-    equilibria, None where it raised) for every speed. A failed point is never yielded (never
+    fills ``status`` (the thermal status, "error" where it raised), ``therm`` (the
+    equilibria, None where it raised) and ``message`` (why a speed failed, as the sweep rows
+    say it; "" otherwise) for every speed. A failed point is never yielded (never
     linearised); an InputError (the model's or the keywords' fault: every speed would refuse)
     propagates."""
     from rotordyn.errors import RotordynError
@@ -82,14 +89,17 @@ def _converged_points(system, sp, chamber_pressure_pa, config_ay_m, thermal, sta
             t = thermal_point(system, s, chamber_pressure_pa, config_ay_m, thermal)
         except InputError:
             raise
-        except RotordynError:
+        except RotordynError as exc:
             therm.append(None)
             status[i] = "error"
+            message[i] = f"{type(exc).__name__}: {exc}"
             continue
         therm.append(t)
         status[i] = t.status
         if t.status in CONVERGED:
             yield i, s, t
+        else:
+            message[i] = f"thermal equilibrium: {t.message}"
 
 
 def thermal_stability(stability, system, speed_hz, chamber_pressure_pa, config_ay_m, *,
@@ -128,17 +138,20 @@ def thermal_campbell(linearize, stability_from, system, sp, chamber_pressure_pa,
     status = np.empty(sp.size, dtype=object)
     shapes = np.full((sp.size, asm.n, width), np.nan + 0j)
     therm: list = []
+    message = np.full(sp.size, "", dtype=object)
     for i, s, t in _converged_points(system, sp, chamber_pressure_pa, config_ay_m, thermal,
-                                     status, therm):
+                                     status, therm, message):
         try:
             lm = linearize(t.system, float(s), chamber_pressure_pa, config_ay_m, method=method,
                            warm_start=False)
             status[i] = lm.status
             if lm.status not in CONVERGED:
+                message[i] = lm.equilibrium.message or lm.status
                 continue
             st = stability_from(assembled(t.system), lm, None if n_modes is None else k)
-        except RotordynError:
+        except RotordynError as exc:
             status[i] = "error"
+            message[i] = f"{type(exc).__name__}: {exc}"
             continue
         m = min(width, len(st.eigenvalues))
         lam[i, :m] = st.eigenvalues[:m]
@@ -149,7 +162,7 @@ def thermal_campbell(linearize, stability_from, system, sp, chamber_pressure_pa,
     mode_id = track_modes(lam, shapes, weight=np.asarray(asm.model.M))
     return CampbellResult(sp, lam, whirl, model=system.reduction.method, kind=kind,
                           point_status=status.astype(str), mode_id=mode_id,
-                          thermal=tuple(therm))
+                          thermal=tuple(therm), point_message=message.astype(str))
 
 
 def thermal_unbalance(unbalance_response, system, ub, sp, kw: dict, thermal):
@@ -169,11 +182,13 @@ def thermal_unbalance(unbalance_response, system, ub, sp, kw: dict, thermal):
     check = bool(system.bearings) if check is None else bool(check)
     mr = np.full(sp.size, np.nan) if check else None
     therm: list = []
-    for i, s, t in _converged_points(system, sp, pc, ay, thermal, status, therm):
+    message = np.full(sp.size, "", dtype=object)
+    for i, s, t in _converged_points(system, sp, pc, ay, thermal, status, therm, message):
         u = unbalance_response(t.system, ub, [float(s)], **{**kw, "stations": outs},
                                refine=False)
         X[i], Y[i], status[i] = u.x[0], u.y[0], u.point_status[0]
         if check:
             mr[i] = u.max_real_1_per_s[0]
     return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub),
-                           kw.get("operating_speed_hz"), mr, thermal=tuple(therm))
+                           kw.get("operating_speed_hz"), mr, thermal=tuple(therm),
+                           point_message=message.astype(str))

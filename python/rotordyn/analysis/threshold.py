@@ -41,17 +41,20 @@ def _point(system, params, exclude_sleeve_modes, thermal=None):
 
 
 def _thermal_keywords(thermal):
-    """``thermal`` checked: None, or a dict of system_thermal_equilibrium's keywords other
-    than the operating point's (InputError naming the key)."""
-    if thermal is None:
+    """``thermal`` checked: None or False (isothermal), True (the model's ``[thermal]`` as it
+    is, as for ``stability``), or a dict of system_thermal_equilibrium's keywords other than
+    the operating point's (InputError naming the key)."""
+    if thermal is None or thermal is False:
         return None
+    if thermal is True:
+        return {}
     import inspect
 
     from rotordyn.analysis.thermal import system_thermal_equilibrium
 
     if not isinstance(thermal, dict):
-        raise InputError(f"thermal: expected None or a dict of system_thermal_equilibrium "
-                         f"keywords, got {type(thermal).__name__}")
+        raise InputError(f"thermal: expected None, True or a dict of "
+                         f"system_thermal_equilibrium keywords, got {type(thermal).__name__}")
     own = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
     allowed = [k for k in inspect.signature(system_thermal_equilibrium).parameters
                if k not in own and k != "system"]
@@ -69,7 +72,7 @@ def _thermal_keywords(thermal):
 def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
               speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
               config_ay_m: float | None = None, n_scan: int = 25, xtol: float | None = None,
-              exclude_sleeve_modes: bool = False, thermal: dict | None = None
+              exclude_sleeve_modes: bool = False, thermal: dict | bool | None = None
               ) -> ThresholdResult:
     """The value of ``vary`` (``"chamber_pressure_pa"``, ``"config_ay_m"``, ``"speed_hz"``, or
     a numeric model field path such as ``"bearings.*.clearance_m"``: the system re-assembled
@@ -84,7 +87,8 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     ``value`` NaN — never an invented number. A band narrower than the scan spacing that
     leaves no trace in the scanned values can still be missed: raise ``n_scan``.
 
-    ``thermal``: None (the isothermal films) or the keywords of
+    ``thermal``: None (the isothermal films), True (the model's ``[thermal]`` as it is) or
+    the keywords of
     :func:`rotordyn.system_thermal_equilibrium` (``oil``, ``supply_temperature_c``,
     ``model="thd"``, ``carry_over``...; not the operating point, which the threshold sets):
     every evaluation then first solves the thermal equilibrium at its point (a cold start;

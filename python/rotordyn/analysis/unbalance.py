@@ -91,7 +91,9 @@ def _merge(a: UnbalanceResult, b: UnbalanceResult) -> UnbalanceResult:
                            None if a.max_real_1_per_s is None else
                            np.concatenate([a.max_real_1_per_s, b.max_real_1_per_s])[o],
                            thermal=tuple(np.array(a.thermal + b.thermal, dtype=object)[o])
-                           if a.thermal else ())
+                           if a.thermal else (),
+                           point_message=None if a.point_message is None else
+                           np.concatenate([a.point_message, b.point_message])[o])
 
 
 def _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X, Y, status):

@@ -200,16 +200,24 @@ def film_thermal_options(model: str, thd: dict, *, supply_temperature_c: float,
     the wall options of :mod:`rotordyn.bearings.thd_walls`).
     InputError naming the model or the option."""
     v.choice("model", model, THERMAL_MODELS)
+    # an unknown keyword first, whatever the model (before: with model="effective" any
+    # keyword, e.g. a tilt, was called "an option of model='thd' only", which it was not)
+    unknown = set(thd) - {"journal_htc_w_m2k", "bush_htc_w_m2k",
+                          "journal_temperature_c", "bush_temperature_c", *WALL_OPTIONS}
+    if unknown:
+        key = sorted(unknown)[0]
+        if key in ("theta_x_rad", "theta_y_rad"):
+            raise InputError(f"{key}: a tilted journal's standalone thermal equilibrium is "
+                             "FixedGeometryBearing.thermal_equilibrium's; plain and "
+                             "tilting-pad bearings with tilt = true take a thermal model in a "
+                             "system (rotordyn.system_thermal_equilibrium)")
+        raise InputError(f"{key}: not an option of the thermal equilibrium")
     if model == "effective":
         if thd:
             raise InputError(f"{sorted(thd)[0]}: an option of model='thd' only")
         return thermal_options(supply_temperature_c=supply_temperature_c,
                                supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
                                effective_factor=effective_factor, tol_k=tol_k)
-    unknown = set(thd) - {"journal_htc_w_m2k", "bush_htc_w_m2k",
-                          "journal_temperature_c", "bush_temperature_c", *WALL_OPTIONS}
-    if unknown:
-        raise InputError(f"{sorted(unknown)[0]}: not an option of the THD film")
     return thd_options(supply_temperature_c=supply_temperature_c,
                        supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
                        tol_k=tol_k, **thd)

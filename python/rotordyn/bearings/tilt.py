@@ -38,7 +38,9 @@ from rotordyn._common import validate as v
 import threading
 
 from rotordyn.bearings._film import imposed_tilt, min_film as _min_film
+from rotordyn.bearings.active import ActiveJournalBearing
 from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
+from rotordyn.bearings.fluid_film import FluidFilmBearing
 from rotordyn.bearings.journal import MAX_SPEED_HZ, JournalBearing
 from rotordyn.bearings.tilt_pads import (pad_misaligned_equilibrium, pad_tilted_coefficients,
                                          pad_tilted_forces)
@@ -55,13 +57,30 @@ def axial_positions(bearing: JournalBearing) -> np.ndarray:
     return np.linspace(-0.5 * bearing.length_m, 0.5 * bearing.length_m, bearing.n_axial + 1)
 
 
-def tilt_coupling(bearing: JournalBearing, coords: Sequence[int], name: str = "",
-                  base_h: np.ndarray | None = None) -> _core.FilmCoupling:
+def _plain(bearing):
+    """``bearing`` checked for the plain film's functions: a :class:`JournalBearing`, or a
+    system's plain bearing (:class:`FluidFilmBearing`, e.g. ``System.bearings[i]`` or the
+    frozen one of a thermal equilibrium's ``system``, whose viscosity field the film keeps);
+    InputError naming ``bearing`` otherwise (an active bearing's sleeve is a system's)."""
+    if isinstance(bearing, ActiveJournalBearing):
+        raise InputError("bearing: an active journal bearing's tilted film includes its "
+                         "sleeve, a system's coordinates: use tilt = true in a system")
+    if not isinstance(bearing, (JournalBearing, FluidFilmBearing)):
+        raise InputError(f"bearing: expected a JournalBearing, FluidFilmBearing, "
+                         f"FixedGeometryBearing or TiltingPadBearing, got "
+                         f"{type(bearing).__name__}")
+    return bearing
+
+
+def tilt_coupling(bearing: JournalBearing | FluidFilmBearing, coords: Sequence[int],
+                  name: str = "", base_h: np.ndarray | None = None) -> _core.FilmCoupling:
     """The film of ``bearing`` on four system coordinates (x, y, θx, θy) = ``coords``:
     shape (n_circ, 4) = (−cos φ, −sin φ, sin φ, −cos φ), axial weights (4, n_axial + 1) =
     (1, 1, z, z). ``base_h`` (n_circ, n_axial + 1) replaces the clearance (misalignment
-    imposed through the thickness)."""
-    g, grid = bearing.to_core()
+    imposed through the thickness). A :class:`FluidFilmBearing`'s frozen viscosity field
+    (``viscosity_field_pa_s``) is the film's, as in a system."""
+    film = bearing.journal_bearing() if isinstance(bearing, FluidFilmBearing) else bearing
+    g, grid = film.to_core()
     f = _core.FilmCoupling()
     f.name = name or "bearing"
     f.geometry, f.grid, f.cavitation = g, grid, bearing.cavitation
@@ -73,6 +92,9 @@ def tilt_coupling(bearing: JournalBearing, coords: Sequence[int], name: str = ""
     f.axial_weight = np.ascontiguousarray(np.vstack([np.ones_like(z), np.ones_like(z), z, z]))
     if base_h is not None:
         f.base_h = np.ascontiguousarray(base_h, dtype=float)
+    vf = getattr(bearing, "viscosity_field_pa_s", None)
+    if vf is not None:
+        f.viscosity_field = np.asarray(vf, dtype=float)
     return f
 
 
@@ -145,7 +167,8 @@ def _solver(bearing) -> _core.SystemSolver:
     """This thread's four-coordinate film of ``bearing`` (built on first use)."""
     if isinstance(bearing, FixedGeometryBearing):
         return _lobe_solver(bearing)[0]
-    s = getattr(bearing._local, "tilt_solver", None)
+    local = getattr(bearing, "_local", None)  # a FluidFilmBearing (slots) keeps no solver
+    s = None if local is None else getattr(local, "tilt_solver", None)
     if s is None:
         model = _core.SystemModel()
         z = np.zeros((4, 4))
@@ -153,7 +176,8 @@ def _solver(bearing) -> _core.SystemSolver:
         model.Q, model.chamber = np.zeros(4), np.zeros(4)
         model.films = [tilt_coupling(bearing, [0, 1, 2, 3])]
         s = _core.SystemSolver(model)
-        bearing._local.tilt_solver = s
+        if local is not None:
+            local.tilt_solver = s
     return s
 
 
@@ -199,6 +223,8 @@ def tilted_forces(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBea
                                  f"velocities are states of the system transient), got {val!r}")
         return pad_tilted_forces(bearing, x_m=x_m, y_m=y_m, speed_hz=speed_hz,
                                  theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad)
+    if not isinstance(bearing, FixedGeometryBearing):
+        bearing = _plain(bearing)
     r = np.array(check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad))
     rd = np.array([v.in_range("vx_m_s", vx_m_s, -1e3, 1e3),
                    v.in_range("vy_m_s", vy_m_s, -1e3, 1e3),
@@ -233,6 +259,8 @@ def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing | Tilting
         return pad_tilted_coefficients(bearing, x_m=x_m, y_m=y_m, speed_hz=speed_hz,
                                        theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad,
                                        method=method, rel_step=rel_step)
+    if not isinstance(bearing, FixedGeometryBearing):
+        bearing = _plain(bearing)
     r = np.array(check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad))
     w = TWO_PI * _speed(speed_hz)
     s = _solver(bearing)
@@ -294,6 +322,8 @@ def misaligned_equilibrium(bearing: JournalBearing | FixedGeometryBearing | Tilt
         return pad_misaligned_equilibrium(bearing, load_n=load_n, speed_hz=speed_hz,
                                           theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad,
                                           tol=tol)
+    if not isinstance(bearing, FixedGeometryBearing):
+        bearing = _plain(bearing)
     if isinstance(load_n, (str, bytes)) or len(np.atleast_1d(load_n)) != 2:
         raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}")
     lx, ly = v.finite("load_n[0]", load_n[0]), v.finite("load_n[1]", load_n[1])

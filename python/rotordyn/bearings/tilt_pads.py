@@ -100,6 +100,8 @@ class _Layout:
             g = _core.FilmCoupling()
             g.name, g.geometry, g.grid, g.cavitation = f.name, f.geometry, f.grid, f.cavitation
             g.spin_factor = f.spin_factor
+            if np.asarray(f.viscosity_field).size:  # a frozen (thermal) field stays the pad's
+                g.viscosity_field = f.viscosity_field
             g.coords = [keep_journal.index(coords[loc]) if coords[loc] < N_JOURNAL
                         else nk + coords[loc] - N_JOURNAL for loc in keep]
             g.shape = np.ascontiguousarray(S[:, keep])

@@ -124,6 +124,7 @@ def _register(sub) -> None:
     s.add_argument("--n-scan", type=int, default=11, metavar="N",
                    help="points of the bracketing scan")
     add_operating_point(s)
+    _add_thermal_flag(s)
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_threshold)
 
@@ -353,24 +354,33 @@ def _thermal(args, s):
     return {} if args.thermal_model is None else {"model": args.thermal_model}
 
 
-def _thermal_json(t):
+def _thermal_json(t, message: str = ""):
+    """A point's thermal equilibrium for --json; one that raised (None): its status and why
+    (the result's ``point_message``)."""
     if t is None:
-        return None
+        return {"status": "error", "message": message} if message else None
     return {"model": t.thermal_model, "status": t.status, "film": list(t.bearing_names),
             "effective_temperature_c": t.effective_temperature_c,
             "max_temperature_c": t.max_temperature_c, "power_loss_w": t.power_loss_w}
 
 
-def _thermal_summary(speeds, thermal) -> None:
-    """Per speed at its own thermal equilibrium: the hottest film and the power loss
-    (stderr; nothing for isothermal films)."""
+def _messages(res) -> list:
+    """Why each speed failed (a thermal result's ``point_message``; "" where none)."""
+    pm = getattr(res, "point_message", None)
+    return [""] * len(res.speeds_hz) if pm is None else [str(m) for m in pm]
+
+
+def _thermal_summary(speeds, thermal, messages=None) -> None:
+    """Per speed at its own thermal equilibrium: the hottest film and the power loss, or why
+    it failed (stderr; nothing for isothermal films)."""
     if not thermal:
         return
     print("each speed at its own thermal equilibrium (field frozen):", file=sys.stderr)
-    for f, t in zip(speeds, thermal):
+    for i, (f, t) in enumerate(zip(speeds, thermal)):
         if t is None or t.status not in CONVERGED:
-            print(f"  {f:g} Hz: thermal equilibrium failed"
-                  + (f" ({t.status}: {t.message})" if t is not None else ""), file=sys.stderr)
+            why = (f" ({t.status}: {t.message})" if t is not None else
+                   f" ({messages[i]})" if messages is not None and messages[i] else "")
+            print(f"  {f:g} Hz: thermal equilibrium failed" + why, file=sys.stderr)
             continue
         print(f"  {f:g} Hz: T_max {float(np.max(t.max_temperature_c)):.4g} degC, "
               f"{float(np.sum(t.power_loss_w)):.4g} W", file=sys.stderr)
@@ -428,11 +438,12 @@ def _cmd_campbell(args) -> int:
                      "speeds_hz": c.speeds_hz, "frequencies_hz": c.frequencies_hz,
                      "point_status": list(c.point_status) if c.point_status is not None
                      else None}
-                    | ({"thermal": [_thermal_json(t) for t in c.thermal]} if c.thermal
+                    | ({"thermal": [_thermal_json(t, m) for t, m in
+                                    zip(c.thermal, _messages(c))]} if c.thermal
                        else {})))
     else:
         print(table_text(crit))
-        _thermal_summary(c.speeds_hz, c.thermal)
+        _thermal_summary(c.speeds_hz, c.thermal, _messages(c))
     if args.plot:
         ax = c.plot()
         if args.max_freq_hz is not None:
@@ -451,7 +462,8 @@ def _cmd_threshold(args) -> int:
     lo, hi = args.bounds or (0.0, 0.5e6)
     t = analysis.threshold(s, args.vary, bounds=(lo, hi), speed_hz=args.speed_hz,
                            chamber_pressure_pa=args.chamber_pressure_pa,
-                           config_ay_m=args.config_ay_m, n_scan=args.n_scan)
+                           config_ay_m=args.config_ay_m, n_scan=args.n_scan,
+                           thermal=_thermal(args, s))
     payload = {args.vary: t.value, "whirl_frequency_hz": t.whirl_frequency_hz,
                "whirl_ratio": t.whirl_ratio, "stable_side": t.stable_side,
                "crossings": list(t.crossings), "status": t.status, "message": t.message,
@@ -480,13 +492,14 @@ def _cmd_unbalance(args) -> int:
     if args.json:
         print(json_text({"stations": list(u.stations), "peaks": peaks,
                      "response": u.to_frame().to_dict("list")}
-                    | ({"thermal": [_thermal_json(t) for t in u.thermal]} if u.thermal
+                    | ({"thermal": [_thermal_json(t, m) for t, m in
+                                    zip(u.thermal, _messages(u))]} if u.thermal
                        else {})))
     else:
         for st in u.stations:
             print(f"station {st}:")
             print(table_text(u.peaks(st)))
-        _thermal_summary(u.speeds_hz, u.thermal)
+        _thermal_summary(u.speeds_hz, u.thermal, _messages(u))
     if args.plot:  # one figure per output station (FIG_station<k>.png when several)
         from pathlib import Path
 

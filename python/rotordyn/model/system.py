@@ -16,7 +16,7 @@ from rotordyn.errors import InputError
 from rotordyn._common import plausibility
 from rotordyn._common import validate as v
 from rotordyn.bearings import BEARING_TYPES, FluidFilmBearing, ThermalModel
-from rotordyn.bearings import FixedGeometryBearing, TiltingPadBearing
+from rotordyn.bearings import ActiveJournalBearing, FixedGeometryBearing, TiltingPadBearing
 from rotordyn.model.rotor import (REDUCTION_METHODS, STEEL, Material,  # noqa: F401
                                  Reduction, Rotor, Support)
 from rotordyn.model.stage import Stage
@@ -117,15 +117,20 @@ class System:
             if not isinstance(self.thermal, ThermalModel):
                 raise InputError(f"thermal: expected a ThermalModel, got "
                                  f"{type(self.thermal).__name__}")
-            # plain journal bearings, and the pad bearings of the THD film (pad_thd.py)
-            plain = {b.name for b in self.bearings if b.name and (
-                isinstance(b, (FluidFilmBearing, TiltingPadBearing, FixedGeometryBearing)))}
+            # plain and active journal bearings, and the pad bearings (pad_thd.py): the
+            # bearings the thermal models take (rotordyn.analysis.thermal)
+            plain = {b.name for b in self.bearings if b.name and isinstance(
+                b, (FluidFilmBearing, ActiveJournalBearing, TiltingPadBearing,
+                    FixedGeometryBearing))}
+            kinds = {b.name: type(b).__name__ for b in self.bearings if b.name}
             for i, f in enumerate(self.thermal.films):
                 if f.bearing not in plain:
+                    why = (f" (a {kinds[f.bearing]}: it has no film for a thermal model)"
+                           if f.bearing in kinds else "")
                     raise InputError(f"thermal.film[{i}].bearing: expected the name of a plain "
-                                     f"journal bearing (type = \"journal\"), or a tilting-pad "
-                                     f"or fixed-geometry bearing, of the model "
-                                     f"{sorted(plain)}, got {f.bearing!r}")
+                                     f"or active journal bearing, or a tilting-pad or "
+                                     f"fixed-geometry bearing, of the model "
+                                     f"{sorted(plain)}, got {f.bearing!r}{why}")
 
 
     # -- lookups -----------------------------------------------------------------------

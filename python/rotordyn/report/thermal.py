@@ -3,7 +3,8 @@
 (:func:`rotordyn.system_thermal_equilibrium`, the model's own thermal model: effective
 temperature or THD; one row per plain/active bearing, per pad or per lobe) at a few speeds of
 the analysed range — maximum, mean (effective) and inlet temperatures, power loss, film and
-supply flows, the journal position — and each bearing's K, C at that thermal equilibrium with
+supply flows, the journal position, the minimum film of the hot film (the other sections'
+films are isothermal) — and each bearing's K, C at that thermal equilibrium with
 its temperature field frozen (the coefficients the report's other sections give at the model's
 isothermal viscosity). Text and HTML share these tables; ``bearing_thermal.csv`` and
 ``bearing_thermal_coefficients.csv`` are written beside the figures, ``bearing_thermal.png``
@@ -26,7 +27,7 @@ if TYPE_CHECKING:
 N_SPEEDS = 5  # speeds of the thermal table, spread over the analysed range
 THERMAL_HEADER = ("film", "speed (Hz)", "T_max (°C)", "T_mean (°C)", "T_in (°C)",
                   "power loss (W)", "film flow (L/min)", "supply flow (L/min)", "y (µm)",
-                  "status")
+                  "h_min (µm)", "status")
 L_PER_MIN = 6e4  # m³/s -> L/min
 
 
@@ -95,8 +96,8 @@ def _failed_rows(system, tables) -> list:
                                            "thermal_model", "effective_temperature_c",
                                            "max_temperature_c", "inlet_temperature_c",
                                            "power_loss_w", "film_flow_m3_s",
-                                           "supply_flow_m3_s", "journal_y_m", "status",
-                                           "message"]
+                                           "supply_flow_m3_s", "journal_y_m", "h_min_m",
+                                           "status", "message"]
     out = []
     for t in tables:
         if not isinstance(t, tuple):
@@ -122,7 +123,7 @@ def thermal_rows(frame) -> list[tuple]:
              num(d.effective_temperature_c, ".2f"), num(d.inlet_temperature_c, ".2f"),
              num(d.power_loss_w, ".4g"), num(d.film_flow_m3_s * L_PER_MIN, ".4g"),
              num(d.supply_flow_m3_s * L_PER_MIN, ".4g"), num(d.journal_y_m * 1e6, ".4g"),
-             d.status) for d in frame.itertuples(index=False)]
+             num(d.h_min_m * 1e6, ".4g"), d.status) for d in frame.itertuples(index=False)]
 
 
 TOTAL_HEADER = ("bearing", "speed (Hz)", "T_max (°C)", "power loss (W)")

@@ -35,6 +35,8 @@ class CampbellResult(Display):
     point_status: np.ndarray | None = None  # (n_speeds,) equilibrium status per speed
     mode_id: np.ndarray | None = None  # (n_speeds, n_modes) tracked ids
     thermal: tuple = ()  # (n_speeds,) SystemThermalResult per speed (``thermal=``), else ()
+    # (n_speeds,) why a speed failed ("" where it converged; ``thermal=``), else None
+    point_message: np.ndarray | None = None
 
     def ids(self) -> np.ndarray:
         """(n_speeds, n_modes) int64 mode ids: the tracked ones, else the slot index."""
@@ -129,7 +131,8 @@ class CampbellResult(Display):
             "whirl": pd.Categorical([WHIRL_NAMES[int(w)] for w in self.whirl.ravel()],
                                     categories=["forward", "backward", "planar"]),
             "status": pd.Categorical(st),
-            "message": [self.message] * (ns * nm),
+            "message": (np.repeat(self.point_message, nm) if self.point_message is not None
+                        else [self.message] * (ns * nm)),
         })
         if self.kind is not None:
             df.insert(4, "kind", pd.Categorical(self.kind.ravel(), categories=["rotor", "sleeve", "pad"]))

@@ -60,9 +60,15 @@ class SystemThermalResult:
     journal_temperature_c: np.ndarray | None = None
     max_wall_temperature_c: np.ndarray | None = None
     wall_temperature_c: tuple = ()
+    # per film: the minimum film thickness at the thermal equilibrium (m; the hot film, not the
+    # isothermal one) and its axial position (m, z = 0 mid-plane: a tilted journal's edge
+    # film); NaN where the equilibrium failed
+    h_min_m: np.ndarray | None = None
+    h_min_z_m: np.ndarray | None = None
 
     def wall(self, name: str) -> np.ndarray:
-        """One of the THD wall outputs per film (NaN where there is none)."""
+        """One of the THD wall outputs (or the minimum film's) per film (NaN where there is
+        none)."""
         x = getattr(self, name)
         return np.full(len(self.bearing_names), np.nan) if x is None else np.asarray(x)
 
@@ -93,6 +99,8 @@ class SystemThermalResult:
             "supply_flow_m3_s": self.supply_flow_m3_s,
             "journal_x_m": self.journal_x_m,
             "journal_y_m": self.journal_y_m,
+            "h_min_m": self.wall("h_min_m"),
+            "h_min_z_m": self.wall("h_min_z_m"),
             **{c: self.wall(c) for c in WALL_COLUMNS},
             "status": [self.status] * n,
             "message": [self.message] * n,

@@ -44,6 +44,8 @@ class UnbalanceResult(Display):
     operating_speed_hz: tuple | None = None
     max_real_1_per_s: np.ndarray | None = None
     thermal: tuple = ()  # (n_speeds,) SystemThermalResult per speed (``thermal=``), else ()
+    # (n_speeds,) why a speed failed ("" where it converged; ``thermal=``), else None
+    point_message: np.ndarray | None = None
 
     @property
     def stable(self) -> np.ndarray:

@@ -34,7 +34,9 @@ THERMAL_COLUMNS = ("effective_temperature_c", "max_temperature_c", "inlet_temper
                    "side_flow_m3_s", "supply_flow_m3_s", "journal_x_m", "journal_y_m",
                    # the THD films' walls (NaN for the effective model)
                    "journal_temperature_c", "max_wall_temperature_c", "heat_to_journal_w",
-                   "heat_to_bush_w")
+                   "heat_to_bush_w",
+                   # the minimum film at the thermal equilibrium and its axial position
+                   "h_min_m", "h_min_z_m")
 _CATCH = (RotordynError, ArithmeticError, ValueError)
 
 
@@ -65,7 +67,8 @@ def thermal_blocks(job, variants, chunk_id, pids, asms):
             continue
         nb = len(r.bearing_names)
         ok = r.status in CONVERGED
-        cols = {c: (np.asarray(r.wall(c) if c in WALL_COLUMNS else getattr(r, c),
+        cols = {c: (np.asarray(r.wall(c) if c in WALL_COLUMNS or c.startswith("h_min")
+                               else getattr(r, c),
                                dtype=np.float64)[:nb] if ok
                     else np.full(nb, math.nan)) for c in THERMAL_COLUMNS}
         cols.update(bearing=np.array(list(r.bearing_names), dtype=object),

@@ -181,9 +181,7 @@ def unbalance_blocks(job, variants, chunk_id, pids, asms):
             blocks.append((k, {"status": "error", "message": f"{type(exc).__name__}: {exc}"}))
             continue
         status = [_status(x) for x in res.point_status]
-        msg = ["" if (t is not None and t.status in CONVERGED) else
-               (f"thermal equilibrium: {t.message}" if t is not None else "error")
-               for t in res.thermal]
+        msg = list(res.point_message)  # why a speed failed: the thermal status or exception
         cols = unbalance_columns(res, speeds, stations, status, msg)
         ns = len(stations)
         for i, t in enumerate(res.thermal):  # one block per speed, merged per run
