@@ -27,7 +27,7 @@ Checks:
   walls take more heat, the film runs cooler, the bush surface hotter; the same on a large
   tilting-pad bearing (every pad's film takes the factors): the loaded pads cooler, the
   journal cooler;
-* a vanishing density (Re_h → 0): the film's walls are the laminar film's;
+* a turbulent film's density is the thermal oil's (one oil), else an InputError naming it;
 * bad input names the field.
 """
 
@@ -223,12 +223,20 @@ def test_tilting_pads_pass_the_eddy_conductivity_to_every_pad():
     assert np.all(np.asarray(tur.heat_to_bush_w)[1:4] > np.asarray(lam.heat_to_bush_w)[1:4])
 
 
-def test_vanishing_density_is_the_laminar_films_walls():
-    lam = _run(rotordyn.JournalBearing(n_circ=36, n_axial=8, viscosity_pa_s=0.02, **BIG),
-               **FILM)
-    tiny = _run(_bearing(rho=1e-6), **FILM)
-    np.testing.assert_allclose(tiny.temperature_c, lam.temperature_c, rtol=0, atol=1e-6)
-    assert tiny.heat_to_bush_w == pytest.approx(lam.heat_to_bush_w, rel=1e-7)
+def test_the_turbulent_film_and_the_thermal_oil_are_one_oil():
+    """A turbulent film's density (its Re_h) must be the thermal oil's (the heat balance, the
+    Walther law's μ = ρν): a film at 860 kg/m³ under the VG 32 oil's 870 is refused, naming
+    the field, in the standalone THD film, the effective-temperature film and a system's
+    thermal equilibrium. (Re_h → 0 through the density alone, which this refusal rules out
+    at the THD level, is checked on the factors:
+    test_factors_are_one_without_turbulence_and_grow_with_re_and_pr.)"""
+    with pytest.raises(InputError, match=r"density_kg_m3: a turbulent film's density .* "
+                       r"oil.density_kg_m3 = 870 .* got 860"):
+        _run(_bearing(rho=860.0), **FILM)
+    with pytest.raises(InputError, match="density_kg_m3: a turbulent film's density"):
+        _bearing(rho=860.0).thermal_equilibrium(load_n=LOAD, speed_hz=SPEED, oil=VG32,
+                                                supply_temperature_c=TS)
+    assert _run(_bearing(rho=870.0), **FILM).max_temperature_c > TS  # the same oil runs
 
 
 @pytest.mark.parametrize("args,field", [((-1.0, 100.0), "reynolds_number"),

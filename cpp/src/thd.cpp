@@ -491,6 +491,7 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
                                const ThdOptions& opt, double lx, double ly, double omega) {
   oil.validate();
   opt.validate(oil);
+  check_film_density(solver.geometry(), oil, "");
   if (!(std::isfinite(omega) && omega != 0.0))
     throw InputError("speed_hz: the thermal equilibrium needs a nonzero speed");
   const int N = solver.grid().n_circ, K1 = solver.grid().n_axial + 1, nn = N * K1;

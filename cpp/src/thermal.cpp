@@ -123,6 +123,16 @@ void validate_supply(const OilModel& oil, double supply_temperature_c, double su
     throw InputError("carry_over: expected 0 <= carry_over <= 1, got " + num(carry_over));
 }
 
+void check_film_density(const JournalBearingGeometry& g, const OilModel& oil,
+                        const std::string& where) {
+  if (g.turbulence == Turbulence::laminar) return;
+  if (!(std::abs(g.density_kg_m3 - oil.density_kg_m3) <= 1e-9 * oil.density_kg_m3))
+    throw InputError(where + "density_kg_m3: a turbulent film's density (its Reynolds number "
+                     "rho |omega| R h / mu) must be the thermal oil's, oil.density_kg_m3 = " +
+                     num(oil.density_kg_m3) + " kg/m^3 (one oil: give both the same value), "
+                     "got " + num(g.density_kg_m3));
+}
+
 void ThermalOptions::validate(const OilModel& oil) const {
   validate_supply(oil, supply_temperature_c, supply_flow_m3_s, carry_over);
   if (!(effective_factor >= 0.5 && effective_factor <= 1.0))
@@ -243,6 +253,7 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
                                        double omega) {
   oil.validate();
   opt.validate(oil);
+  check_film_density(solver.geometry(), oil, "");
   if (!(std::isfinite(omega) && omega != 0.0))
     throw InputError("speed_hz: the thermal equilibrium needs a nonzero speed");
   const double Ts = opt.supply_temperature_c;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "format_detail.hpp"
+#include "rotordyn/reynolds.hpp"
 #include "rotordyn/thermal.hpp"
 
 namespace rotordyn {
@@ -20,6 +21,13 @@ using format_detail::num;  // a number in the thermal films' error messages
 /// InputError naming the field.
 void validate_supply(const OilModel& oil, double supply_temperature_c, double supply_flow_m3_s,
                      double carry_over);
+
+/// A turbulent film's density (its Reynolds number ρ|ω|R h/μ) and the thermal oil's (the heat
+/// balance, the Walther law's μ = ρν) are one oil's: InputError naming `where` +
+/// "density_kg_m3" when they differ by more than 1e-9 relative. A laminar film's density is
+/// not used and not checked.
+void check_film_density(const JournalBearingGeometry& g, const OilModel& oil,
+                        const std::string& where);
 
 /// The film's effective temperature at a fixed journal position (P ∝ μ, flows independent of
 /// μ): the root of T − Ts − m a μ(T), a = P/(μ ρ c (Q − Q_s/2)), m = λ Q_r/Q_f + k, with the

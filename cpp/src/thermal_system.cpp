@@ -341,6 +341,11 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
         throw InputError("thermal[" + std::to_string(i) + "].film: film " +
                          std::to_string(t.film) + " is given twice");
     t.oil.validate();
+    {
+      const FilmCoupling& fc = model.films[static_cast<std::size_t>(t.film)];
+      check_film_density(fc.geometry, t.oil,
+                         "films." + (fc.name.empty() ? std::to_string(t.film) : fc.name) + ".");
+    }
     if (t.upstream >= 0 && !(t.upstream < static_cast<int>(thermal.size()) &&
                              thermal[static_cast<std::size_t>(t.upstream)].thd == t.thd))
       throw InputError("thermal[" + std::to_string(i) + "].upstream: expected the index of a "
