@@ -16,6 +16,12 @@ if TYPE_CHECKING:
     import pandas as pd
 
 
+# to_frame()'s columns a failed equilibrium keeps (the others are its state: NaN)
+_INPUT_COLUMNS = ["bearing", "speed_hz", "chamber_pressure_pa", "config_ax_m", "config_ay_m",
+                  "config_theta_x_rad", "config_theta_y_rad", "iterations", "reynolds_solves",
+                  "residual", "status", "message"]
+
+
 @dataclass(frozen=True)
 class EquilibriumResult(Display):
     """Equilibrium at one operating point.
@@ -149,7 +155,9 @@ class EquilibriumResult(Display):
 
     def to_frame(self) -> pd.DataFrame:
         """One row per bearing: inputs (``chamber_pressure_pa`` with an active bearing only),
-        journal position (m and /c), film, status."""
+        journal position (m and /c), film, status. An equilibrium that did not converge has
+        no position: its state columns (position, film, sleeve, tilt) are NaN, as in the
+        sweep rows (the attributes keep the last iterate, for diagnosis)."""
         import pandas as pd
         nb = len(self.bearing_names)
         df = pd.DataFrame({
@@ -185,4 +193,7 @@ class EquilibriumResult(Display):
                 if col not in df:
                     df[col] = np.nan
                 df.loc[bi, col] = val
+        if not self.converged:  # no state: inputs, counters, status and message only
+            for col in df.columns.difference(_INPUT_COLUMNS):
+                df[col] = np.nan
         return df

@@ -79,11 +79,13 @@ class SystemThermalResult:
 
     def to_frame(self):
         """One row per thermal bearing: inputs, temperatures, viscosity, power, flows,
-        journal position, status."""
+        journal position, status. A thermal equilibrium that did not converge has no state:
+        those columns are NaN, as in the sweep rows (the attributes keep the last iterate)."""
         import pandas as pd
+        from rotordyn._common.status import CONVERGED
 
         n = len(self.bearing_names)
-        return pd.DataFrame({
+        df = pd.DataFrame({
             "speed_hz": np.full(n, self.speed_hz),
             "supply_temperature_c": np.full(n, self.supply_temperature_c),
             "bearing": list(self.bearing_names),
@@ -105,6 +107,12 @@ class SystemThermalResult:
             "status": [self.status] * n,
             "message": [self.message] * n,
         })
+        if self.status not in CONVERGED:
+            inputs = ["speed_hz", "supply_temperature_c", "bearing", "thermal_model", "status",
+                      "message"]
+            for col in df.columns.difference(inputs):
+                df[col] = np.nan
+        return df
 
 
 # The thermal outputs a point at its own thermal equilibrium carries (``thermal=`` of
