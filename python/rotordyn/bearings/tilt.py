@@ -39,6 +39,7 @@ import threading
 
 from rotordyn.bearings._film import imposed_tilt, min_film as _min_film
 from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
+from rotordyn.bearings.fluid_film import FluidFilmBearing
 from rotordyn.bearings.journal import MAX_SPEED_HZ, JournalBearing
 from rotordyn.bearings.tilt_pads import (pad_misaligned_equilibrium, pad_tilted_coefficients,
                                          pad_tilted_forces)
@@ -46,6 +47,7 @@ from rotordyn.bearings.tilting_pad import TiltingPadBearing
 from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
+FilmBearing = JournalBearing | FixedGeometryBearing | TiltingPadBearing | FluidFilmBearing
 COORDINATES = ("x", "y", "theta_x", "theta_y")
 MAX_ANGULAR_VELOCITY_RAD_S = 1e5
 
@@ -109,6 +111,26 @@ def check_pose(bearing: JournalBearing, x_m, y_m, theta_x_rad, theta_y_rad,
                 f" ratio < 1, i.e. |(x + theta_y z, y - theta_x z)| < clearance_m ="
                 f" {bearing.clearance_m:g} m at z = ±L/2")
     return vals
+
+
+def film_bearing(bearing):
+    """The standalone film of ``bearing``: a :class:`JournalBearing`,
+    :class:`FixedGeometryBearing` or :class:`TiltingPadBearing` as it is; a model's plain
+    bearing (``type = "journal"``, :class:`FluidFilmBearing`, e.g. ``system.bearings[i]``) as
+    its film model (its ``journal_bearing()``). Anything else (a table, an active bearing's
+    sleeve, a string) is an InputError naming ``bearing``, not an AttributeError from inside."""
+    if isinstance(bearing, (JournalBearing, FixedGeometryBearing, TiltingPadBearing)):
+        return bearing
+    if isinstance(bearing, FluidFilmBearing):
+        if bearing.viscosity_field_pa_s is not None:
+            raise InputError(
+                "bearing.viscosity_field_pa_s: the standalone tilt functions take an "
+                "isoviscous film; the frozen field of a thermal equilibrium is used by the "
+                "system's film (rotordyn.equilibrium on the system)")
+        return bearing.journal_bearing()
+    raise InputError(
+        "bearing: expected a JournalBearing, FixedGeometryBearing or TiltingPadBearing (or a "
+        f"model's type = \"journal\" bearing), got {type(bearing).__name__}")
 
 
 def _speed(speed_hz) -> float:
@@ -178,7 +200,7 @@ class TiltedFilm:
             "h_min_z_m": self.h_min_z_m}])
 
 
-def tilted_forces(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBearing, *,
+def tilted_forces(bearing: FilmBearing, *,
                   x_m: float, y_m: float,
                   speed_hz: float,
                   theta_x_rad: float = 0.0, theta_y_rad: float = 0.0, vx_m_s: float = 0.0,
@@ -191,6 +213,7 @@ def tilted_forces(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBea
     equilibrium (:func:`rotordyn.bearings.tilt_pads.pad_tilted_forces`; a
     :class:`~rotordyn.bearings.tilt_pads.PadTiltedFilm` with the pads' tilts, pitches and
     films); velocities are refused (the pads' motion is a state of the system transient)."""
+    bearing = film_bearing(bearing)
     if isinstance(bearing, TiltingPadBearing):
         for name, val in (("vx_m_s", vx_m_s), ("vy_m_s", vy_m_s), ("wx_rad_s", wx_rad_s),
                           ("wy_rad_s", wy_rad_s)):
@@ -214,7 +237,7 @@ def tilted_forces(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBea
                       h_min_angle_deg=ha, h_min_z_m=hz)
 
 
-def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBearing,
+def tilted_coefficients(bearing: FilmBearing,
                         *, x_m: float,
                         y_m: float, speed_hz: float,
                         theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
@@ -229,6 +252,7 @@ def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing | Tilting
     A :class:`TiltingPadBearing`: the pads at their equilibrium for the pose and their
     coordinates condensed at the synchronous frequency
     (:func:`rotordyn.bearings.tilt_pads.pad_tilted_coefficients` takes the whirl ratio)."""
+    bearing = film_bearing(bearing)
     if isinstance(bearing, TiltingPadBearing):
         return pad_tilted_coefficients(bearing, x_m=x_m, y_m=y_m, speed_hz=speed_hz,
                                        theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad,
@@ -280,7 +304,7 @@ class MisalignedEquilibrium:
             "h_min_z_m": self.h_min_z_m, "status": self.status, "message": self.message}])
 
 
-def misaligned_equilibrium(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBearing,
+def misaligned_equilibrium(bearing: FilmBearing,
                            *,
                            load_n: Sequence[float],
                            speed_hz: float, theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
@@ -290,6 +314,7 @@ def misaligned_equilibrium(bearing: JournalBearing | FixedGeometryBearing | Tilt
     at zero (x, y) is c + θx z sin φ − θy z cos φ; then the moments at that point.
     A :class:`TiltingPadBearing`: the pads free
     (:func:`rotordyn.bearings.tilt_pads.pad_misaligned_equilibrium`)."""
+    bearing = film_bearing(bearing)
     if isinstance(bearing, TiltingPadBearing):
         return pad_misaligned_equilibrium(bearing, load_n=load_n, speed_hz=speed_hz,
                                           theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad,

@@ -1,0 +1,132 @@
+"""Journal tilt and misalignment used as an engineer would (issue 20, a user's pass).
+
+Not the paper rig: the compressor of tests/data/models on plain bearings, and a 1 m shaft on
+three plain bearings written here (statically indeterminate: the middle housing is offset, so
+the shaft crosses the outer bearings at a slope). Checks:
+* the standalone tilt functions take a model file's plain bearing (``system.bearings[i]``, a
+  ``FluidFilmBearing``) and give its film model's answers bit for bit; any other object is an
+  InputError naming ``bearing`` (it was an AttributeError from inside the film code);
+* the three-bearing line: a misalignment at one end and the opposite one at the other end
+  mirror each other (z → −z), the Guyan model with the rotations kept as masters reaches the
+  unreduced model's equilibrium, and the middle bearing (zero slope by symmetry) with
+  ``tilt = true`` gives the untilted equilibrium to round-off.
+"""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+import rotordyn
+from rotordyn.bearings.tilt import misaligned_equilibrium, tilted_coefficients, tilted_forces
+from rotordyn.model.rotor import Reduction
+
+from pathlib import Path
+
+MODELS = Path(__file__).parent / "data" / "models"
+F_HZ = 150.0
+
+
+def compressor(**fields):
+    s = rotordyn.System.from_toml(MODELS / "compressor_plain.toml")
+    return dataclasses.replace(s, bearings=tuple(
+        dataclasses.replace(b, tilt=True, n_circ=48, n_axial=6, **fields) for b in s.bearings))
+
+
+THREE = """
+schema = "rotordyn/model/1"
+name = "three-bearing-line"
+[material.steel]
+density_kg_m3 = 7850.0
+young_pa = 2.07e11
+poisson = 0.29
+[rotor]
+{sections}
+[[disk]]
+station = 1
+mass_kg = 15.0
+ip_kg_m2 = 0.10
+id_kg_m2 = 0.05
+[[disk]]
+station = 3
+mass_kg = 15.0
+ip_kg_m2 = 0.10
+id_kg_m2 = 0.05
+{bearings}
+"""
+
+
+def three_bearing_line(config=((0.0, 0.0), (0.0, 0.0), (0.0, 0.0)), tilt=(True, True, True),
+                       offset_b_m=3e-5):
+    sections = "".join("[[rotor.section]]\nlength_m = 0.25\nouter_diameter_m = 0.06\n"
+                       "n_elements = 3\n" for _ in range(4))
+    bearings = ""
+    for name, st, (tx, ty), t in zip("ABC", (0, 2, 4), config, tilt):
+        bearings += (f'[[bearing]]\ntype = "journal"\nname = "{name}"\nstation = {st}\n'
+                     "diameter_m = 0.06\nlength_m = 0.04\nclearance_m = 8.0e-5\n"
+                     "viscosity_pa_s = 0.02\nn_circ = 48\nn_axial = 8\n"
+                     f"tilt = {'true' if t else 'false'}\n")
+        if t:
+            bearings += f"config_theta_x_rad = {tx!r}\nconfig_theta_y_rad = {ty!r}\n"
+        if name == "B":
+            bearings += f"config_ay_m = {offset_b_m!r}\n"
+    return rotordyn.System.from_toml(THREE.format(sections=sections, bearings=bearings),
+                                     is_text=True)
+
+
+def test_standalone_tilt_functions_take_a_model_files_plain_bearing():
+    b = compressor().bearings[1]
+    jb = b.journal_bearing()
+    kw = dict(speed_hz=F_HZ, theta_x_rad=2e-4, theta_y_rad=-1e-4)
+    m, mj = (misaligned_equilibrium(x, load_n=(0.0, -1500.0), **kw) for x in (b, jb))
+    assert m.status == "ok" and (m.x_m, m.y_m) == (mj.x_m, mj.y_m)
+    assert np.array_equal(m.moment_n_m, mj.moment_n_m) and m.h_min_z_m == mj.h_min_z_m
+    f, fj = (tilted_forces(x, x_m=m.x_m, y_m=m.y_m, **kw) for x in (b, jb))
+    assert np.array_equal(f.force_n, fj.force_n) and np.array_equal(f.moment_n_m, fj.moment_n_m)
+    (K, C), (Kj, Cj) = (tilted_coefficients(x, x_m=m.x_m, y_m=m.y_m, **kw) for x in (b, jb))
+    assert np.array_equal(K, Kj) and np.array_equal(C, Cj)
+    table = rotordyn.System.from_toml(MODELS / "compressor_table.toml").bearings[0]
+    for bad in (table, "journal", None):
+        for fn, extra in ((tilted_forces, dict(x_m=0.0, y_m=0.0)),
+                          (tilted_coefficients, dict(x_m=0.0, y_m=0.0)),
+                          (misaligned_equilibrium, dict(load_n=(0.0, -1.0)))):
+            with pytest.raises(rotordyn.InputError, match=r"^bearing: expected"):
+                fn(bad, speed_hz=F_HZ, **extra)
+    frozen = dataclasses.replace(b, viscosity_field_pa_s=np.full((48, 7), 0.018))
+    with pytest.raises(rotordyn.InputError, match=r"^bearing.viscosity_field_pa_s"):
+        tilted_forces(frozen, x_m=0.0, y_m=0.0, speed_hz=F_HZ)
+
+
+def test_three_bearing_line_mirror_guyan_and_zero_slope():
+    th = 5e-4
+    ea = rotordyn.equilibrium(three_bearing_line(config=((0.0, th), (0.0, 0.0), (0.0, 0.0))), 60.0)
+    ec = rotordyn.equilibrium(three_bearing_line(config=((0.0, 0.0), (0.0, 0.0), (0.0, -th))),
+                              60.0)
+    assert ea.status == ec.status == "ok"
+    fa, fc = ea.to_frame(), ec.to_frame()
+    scale = {"journal_x_m": 8e-5, "journal_y_m": 8e-5, "h_min_m": 8e-5, "h_min_z_m": 0.02,
+             "journal_theta_x_rad": th, "journal_theta_y_rad": th, "film_moment_x_n_m": 1.0,
+             "film_moment_y_n_m": 1.0}
+    for col, sign in (("journal_x_m", 1), ("journal_y_m", 1), ("h_min_m", 1), ("h_min_z_m", -1),
+                      ("journal_theta_x_rad", -1), ("journal_theta_y_rad", -1),
+                      ("film_moment_x_n_m", -1), ("film_moment_y_n_m", -1)):
+        a, c = fa[col].to_numpy(), fc[col].to_numpy()[::-1]
+        np.testing.assert_allclose(a, sign * c, rtol=0, atol=1e-9 * scale[col], err_msg=col)
+    # the misaligned end: the shaft hardly follows its housing, the edge film thins
+    e0 = rotordyn.equilibrium(three_bearing_line(tilt=(False, False, False)), 60.0)
+    assert fa.loc[0, "journal_theta_y_rad"] < -0.8 * th
+    assert fa.loc[0, "h_min_m"] < e0.h_min_m[0] - 5e-6
+    # Guyan with the bearing rotations as masters: the static condensation is exact there
+    s = three_bearing_line(config=((0.0, th), (0.0, 0.0), (0.0, 0.0)))
+    eg = rotordyn.equilibrium(dataclasses.replace(
+        s, reduction=Reduction((0, 1, 2, 3, 4), "guyan")), 60.0)
+    assert eg.status == "ok"
+    np.testing.assert_allclose(eg.journal_y_m, ea.journal_y_m, rtol=0, atol=1e-9 * 8e-5)
+    for i in range(3):
+        for k in ("journal_theta_x_rad", "journal_theta_y_rad"):
+            assert abs(eg.tilt[i][k] - ea.tilt[i][k]) < 1e-9 * th
+    # the middle bearing sits at zero slope (symmetric line): tilt = true changes nothing
+    e1 = rotordyn.equilibrium(three_bearing_line(tilt=(False, True, False)), 60.0)
+    np.testing.assert_allclose(e1.journal_x_m, e0.journal_x_m, rtol=0, atol=1e-12 * 8e-5)
+    np.testing.assert_allclose(e1.journal_y_m, e0.journal_y_m, rtol=0, atol=1e-12 * 8e-5)
+    assert abs(e1.tilt[1]["film_moment_x_n_m"]) < 1e-12
