@@ -6,6 +6,9 @@ the shaft crosses the outer bearings at a slope). Checks:
 * the standalone tilt functions take a model file's plain bearing (``system.bearings[i]``, a
   ``FluidFilmBearing``) and give its film model's answers bit for bit; any other object is an
   InputError naming ``bearing`` (it was an AttributeError from inside the film code);
+* a speed whose misaligned equilibrium fails is a Campbell or unbalance row with its status
+  and no verdict: no whirl, no mode kind, no stability flag, NaN (not ±inf, not 0) damping
+  (they said "planar", "rotor", point_stable True, log_dec inf, damping ratio 0);
 * the three-bearing line: a misalignment at one end and the opposite one at the other end
   mirror each other (z → −z), the Guyan model with the rotations kept as masters reaches the
   unreduced model's equilibrium, and the middle bearing (zero slope by symmetry) with
@@ -13,6 +16,7 @@ the shaft crosses the outer bearings at a slope). Checks:
 """
 
 import dataclasses
+import math
 
 import numpy as np
 import pytest
@@ -20,6 +24,7 @@ import pytest
 import rotordyn
 from rotordyn.bearings.tilt import misaligned_equilibrium, tilted_coefficients, tilted_forces
 from rotordyn.model.rotor import Reduction
+from rotordyn.results.modes import damping_ratio, log_dec
 
 from pathlib import Path
 
@@ -95,6 +100,27 @@ def test_standalone_tilt_functions_take_a_model_files_plain_bearing():
     frozen = dataclasses.replace(b, viscosity_field_pa_s=np.full((48, 7), 0.018))
     with pytest.raises(rotordyn.InputError, match=r"^bearing.viscosity_field_pa_s"):
         tilted_forces(frozen, x_m=0.0, y_m=0.0, speed_hz=F_HZ)
+
+
+def test_failed_misaligned_speeds_carry_no_verdict():
+    """0.00395 rad at the DE housing (edge gap 1.25 µm for an aligned shaft): no equilibrium
+    at either speed."""
+    s = compressor(config_theta_y_rad=3.95e-3)
+    c = rotordyn.campbell(s, [100.0, F_HZ])
+    assert list(c.point_status) == ["no_equilibrium"] * 2
+    fr = c.to_frame()
+    assert len(fr) and (fr["status"] == "no_equilibrium").all()
+    assert fr["whirl"].isna().all() and fr["kind"].isna().all()
+    assert fr["log_dec"].isna().all() and fr["freq_hz"].isna().all()
+    u = rotordyn.unbalance_response(s, [(3, 1e-4, 0.0)], [100.0, F_HZ], stations=[1, 3])
+    fu = u.to_frame()
+    assert (fu["status"] == "no_equilibrium").all() and fu["major_m"].isna().all()
+    assert fu["whirl"].isna().all() and fu["point_stable"].isna().all()
+    # the helpers: an eigenvalue that was not computed has no damping
+    lam = np.array([complex(math.nan, math.nan), -1.0 + 10.0j, -3.0 + 0.0j])
+    assert np.isnan(log_dec(lam)[0]) and np.isnan(damping_ratio(lam)[0])
+    assert log_dec(lam)[2] == math.inf and damping_ratio(lam)[2] == 1.0  # unchanged
+    np.testing.assert_allclose(log_dec(lam)[1], 2 * math.pi / 10.0, rtol=1e-15)
 
 
 def test_three_bearing_line_mirror_guyan_and_zero_slope():
