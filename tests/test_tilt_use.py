@@ -103,7 +103,7 @@ def test_standalone_tilt_functions_take_a_model_files_plain_bearing():
 
 
 def test_failed_misaligned_speeds_carry_no_verdict():
-    """0.00395 rad at the DE housing (edge gap 1.25 µm for an aligned shaft): no equilibrium
+    """0.00395 rad at both housings (edge gap 1.25 µm for an aligned shaft): no equilibrium
     at either speed."""
     s = compressor(config_theta_y_rad=3.95e-3)
     c = rotordyn.campbell(s, [100.0, F_HZ])
@@ -156,3 +156,25 @@ def test_three_bearing_line_mirror_guyan_and_zero_slope():
     np.testing.assert_allclose(e1.journal_x_m, e0.journal_x_m, rtol=0, atol=1e-12 * 8e-5)
     np.testing.assert_allclose(e1.journal_y_m, e0.journal_y_m, rtol=0, atol=1e-12 * 8e-5)
     assert abs(e1.tilt[1]["film_moment_x_n_m"]) < 1e-12
+
+
+def test_cli_reports_failed_speeds(tmp_path, capsys):
+    """`rotordyn campbell` / `unbalance` on a model whose every speed fails: each failed speed
+    named on stderr with its status (and Campbell's reason), exit 1 (they printed an empty
+    table and exited 0)."""
+    from rotordyn.cli import main
+
+    path = tmp_path / "m.toml"
+    compressor(config_theta_y_rad=3.95e-3).to_toml(path)
+    assert main(["campbell", str(path), "--speeds-hz", "100,150"]) == 1
+    err = capsys.readouterr().err
+    assert "100 Hz: no_equilibrium" in err and "150 Hz: no_equilibrium" in err
+    assert "minimum film thickness" in err  # the equilibrium's own message
+    assert main(["unbalance", str(path), "--unbalance", "3,1e-4,0", "--speeds-hz",
+                 "100,150"]) == 1
+    err = capsys.readouterr().err
+    assert "100 Hz: no_equilibrium" in err and "150 Hz: no_equilibrium" in err
+    path2 = tmp_path / "ok.toml"  # every speed solved: exit 0, nothing named
+    compressor(config_theta_y_rad=3e-4).to_toml(path2)
+    assert main(["campbell", str(path2), "--speeds-hz", "100,150"]) == 0
+    assert "no_equilibrium" not in capsys.readouterr().err

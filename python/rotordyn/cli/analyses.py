@@ -410,6 +410,19 @@ def _cmd_stability(args) -> int:
     return 0
 
 
+def _failed_speeds(speeds_hz, status, messages=()) -> int:
+    """Name every speed without a converged equilibrium on stderr (its status and, where
+    known, why); the exit code: 1 when no speed converged, else 0."""
+    if status is None:
+        return 0
+    status = [str(x) for x in status]
+    for i, (f, stt) in enumerate(zip(speeds_hz, status)):
+        if stt not in CONVERGED:
+            why = messages[i] if i < len(messages) and messages[i] else ""
+            print(f"rotordyn: {f:g} Hz: {stt}" + (f": {why}" if why else ""), file=sys.stderr)
+    return 1 if status and not any(x in CONVERGED for x in status) else 0
+
+
 def _cmd_campbell(args) -> int:
     check_figure(args.plot)
     speeds = parse_speeds(args.speeds_hz)
@@ -427,7 +440,7 @@ def _cmd_campbell(args) -> int:
                      "critical_speeds": crit.to_dict("records"),
                      "speeds_hz": c.speeds_hz, "frequencies_hz": c.frequencies_hz,
                      "point_status": list(c.point_status) if c.point_status is not None
-                     else None}
+                     else None, "point_message": list(c.point_message) or None}
                     | ({"thermal": [_thermal_json(t) for t in c.thermal]} if c.thermal
                        else {})))
     else:
@@ -438,7 +451,7 @@ def _cmd_campbell(args) -> int:
         if args.max_freq_hz is not None:
             ax.set_ylim(0, args.max_freq_hz)
         save_figure(ax, args.plot, args.dpi)
-    return 0
+    return _failed_speeds(c.speeds_hz, c.point_status, c.point_message)
 
 
 def _cmd_threshold(args) -> int:
@@ -495,4 +508,4 @@ def _cmd_unbalance(args) -> int:
                 Path(args.plot).with_name(f"{Path(args.plot).stem}_station{st}"
                                           f"{Path(args.plot).suffix}"))
             save_figure(u.plot(station=st, kind=args.plot_kind), path, args.dpi)
-    return 0
+    return _failed_speeds(u.speeds_hz, u.point_status)
