@@ -209,3 +209,22 @@ def test_static_of_a_reduced_tilting_model_keeps_the_rotation_masters():
         assert row["moment_y_n_m"] == pytest.approx(e.tilt[i]["film_moment_y_n_m"], rel=1e-9)
     assert "moment_x_n_m" not in rotordyn.static(
         rotordyn.System.from_toml(MODELS / "compressor_plain.toml"), F_HZ).reactions
+
+
+def test_cli_stability_of_a_failed_equilibrium_gives_no_verdict(tmp_path, capsys):
+    """`rotordyn stability` where the misaligned equilibrium fails: exit 1 with the reason, no
+    verdict (it printed "UNSTABLE: largest Re λ = nan 1/s", and --json "stable": false)."""
+    import json
+
+    from rotordyn.cli import main
+
+    path = tmp_path / "m.toml"
+    compressor(config_theta_y_rad=3.95e-3).to_toml(path)
+    assert main(["stability", str(path), "--speed-hz", "150"]) == 1
+    err = capsys.readouterr().err
+    assert "UNSTABLE" not in err and "stable:" not in err and "no_equilibrium" in err
+    assert main(["stability", str(path), "--speed-hz", "150", "--json"]) == 1
+    out = json.loads(capsys.readouterr().out)
+    assert out["status"] == "no_equilibrium" and out["stable"] is None
+    st = rotordyn.stability(compressor(config_theta_y_rad=3.95e-3), F_HZ)
+    assert repr(st).startswith("<StabilityResult no verdict (no_equilibrium)")

@@ -385,7 +385,8 @@ def _cmd_stability(args) -> int:
     if args.json:
         cols = ["mode", "freq_hz", "eig_real_1_per_s", "damping_ratio", "log_dec",
                 "mode_stable"]
-        print(json_text({"status": st.status, "message": st.message, "stable": st.stable,
+        verdict = st.stable if st.status in CONVERGED else None  # none without equilibrium
+        print(json_text({"status": st.status, "message": st.message, "stable": verdict,
                          "speed_hz": st.speed_hz, "max_real_1_per_s": st.max_real_1_per_s,
                          "modes": df.iloc[keep][cols].to_dict("list")
                          | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])},
@@ -395,8 +396,9 @@ def _cmd_stability(args) -> int:
         if len(keep) < len(df):
             print(f"({len(keep)} of {len(df)} modes shown; --n-modes N or --max-freq-hz HZ for "
                   "others; the least damped mode and the verdict cover all)", file=sys.stderr)
-        print(f"{'stable' if st.stable else 'UNSTABLE'}: largest Re λ = "
-              f"{st.max_real_1_per_s:.4g} 1/s", file=sys.stderr)
+        if st.status in CONVERGED:  # a failed equilibrium has no verdict (below: why)
+            print(f"{'stable' if st.stable else 'UNSTABLE'}: largest Re λ = "
+                  f"{st.max_real_1_per_s:.4g} 1/s", file=sys.stderr)
         if st.thermal is not None:
             t = st.thermal
             print(f"at the thermal equilibrium ({t.thermal_model} model, field frozen): "
