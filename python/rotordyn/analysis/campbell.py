@@ -54,16 +54,18 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     whirl = np.zeros((sp.size, width), dtype=np.int64)
     kind = np.full((sp.size, width), "rotor", dtype=object)
     status = np.empty(sp.size, dtype=object)
+    message = [""] * sp.size
     shapes = np.full((sp.size, asm.n, width), np.nan + 0j)
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
                                               method):
         status[i] = stt
         if lm is None or stt not in CONVERGED:  # a failed point stays a NaN row
+            message[i] = lm.equilibrium.message if lm is not None else "the solve raised"
             continue
         try:
             st = _stability_from(asm, lm, None if n_modes is None else k)
-        except RotordynError:
-            status[i] = "error"
+        except RotordynError as exc:
+            status[i], message[i] = "error", str(exc)
             continue
         m = min(width, len(st.eigenvalues))
         lam[i, :m] = st.eigenvalues[:m]
@@ -74,4 +76,5 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     # Modes tracked by eigenvector continuity (mass-weighted MAC between consecutive speeds).
     mode_id = track_modes(lam, shapes, weight=np.asarray(asm.model.M))
     return CampbellResult(sp, lam, whirl, model=system.reduction.method, kind=kind,
-                          point_status=status.astype(str), mode_id=mode_id)
+                          point_status=status.astype(str), mode_id=mode_id,
+                          point_message=np.asarray(message, dtype=str))

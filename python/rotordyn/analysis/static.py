@@ -91,9 +91,10 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
         if asm.rotor.reduction is None:
             u = rr
         else:
-            ms = list(system.reduction.master_stations)
-            m_idx = [full.local(int(4 * nodes[s] + k)) for s in ms for k in (0, 1)]
-            um = rr[: 2 * len(ms)]
+            # every master: the stations' translations and the tilting films' rotations
+            # (their film moments act there; as slaves they were taken as unloaded)
+            m_idx = [full.local(int(d)) for d in system.master_dofs()]
+            um = rr[: len(m_idx)]
             s_idx = np.setdiff1d(np.arange(dofs.size), m_idx)
             u = np.zeros(dofs.size)
             u[m_idx] = um
@@ -105,6 +106,9 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
             b = system.bearings[bc.index]
             reactions.append({"name": b.name, "station": int(b.station), "kind": kinds[type(b)],
                               "force_x_n": float(H[bc.jx]), "force_y_n": float(H[bc.jy])})
+            if bc.rot:  # a tilting film: its moments on the journal (the rotations' H)
+                reactions[-1] |= {"moment_x_n_m": float(H[bc.rot[0]]),
+                                  "moment_y_n_m": float(H[bc.rot[1]])}
     else:
         try:
             u = np.linalg.solve(Kc, fc)
@@ -133,6 +137,9 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
         reactions.append({"name": sp.name, "station": int(sp.station), "kind": sp.type,
                           "force_x_n": float(fx), "force_y_n": float(fy)})
     reactions.sort(key=lambda r: r["station"])
+    columns = ["name", "station", "kind", "force_x_n", "force_y_n"]
+    if any("moment_x_n_m" in r for r in reactions):
+        columns += ["moment_x_n_m", "moment_y_n_m"]
     z, F = _element_forces(system, u_full, g)
     # left end of an element: the forces left of the section are what the rotor to the left
     # exerts on it (+F); right end: minus the force the rest exerts there (−F).
@@ -142,6 +149,5 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
         deflection_x_m=u_full[0::4], deflection_y_m=u_full[1::4], section_positions_m=z,
         shear_x_n=sgn * F[:, 0], shear_y_n=sgn * F[:, 1],
         moment_xz_n_m=-sgn * F[:, 3], moment_yz_n_m=sgn * F[:, 2],
-        reactions=pd.DataFrame(reactions, columns=["name", "station", "kind", "force_x_n",
-                                                   "force_y_n"]),
+        reactions=pd.DataFrame(reactions, columns=columns),
         weight_n=weight, status=status, message=message)

@@ -48,6 +48,7 @@ from rotordyn.bearings.tilting_pad import TiltingPadBearing
 from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
+FilmBearing = JournalBearing | FixedGeometryBearing | TiltingPadBearing | FluidFilmBearing
 COORDINATES = ("x", "y", "theta_x", "theta_y")
 MAX_ANGULAR_VELOCITY_RAD_S = 1e5
 
@@ -133,6 +134,18 @@ def check_pose(bearing: JournalBearing, x_m, y_m, theta_x_rad, theta_y_rad,
     return vals
 
 
+def film_bearing(bearing):
+    """The standalone film of ``bearing``: a :class:`JournalBearing`,
+    :class:`FixedGeometryBearing` or :class:`TiltingPadBearing` as it is; a model's plain
+    bearing (``type = "journal"``, :class:`FluidFilmBearing`, e.g. ``system.bearings[i]``,
+    with its frozen viscosity field if it has one) through :func:`_plain`. Anything else (a
+    table, an active bearing's sleeve, a string) is an InputError naming ``bearing``, not an
+    AttributeError from inside."""
+    if isinstance(bearing, (JournalBearing, FixedGeometryBearing, TiltingPadBearing)):
+        return bearing
+    return _plain(bearing)
+
+
 def _speed(speed_hz) -> float:
     f = v.finite("speed_hz", speed_hz)
     if abs(f) > MAX_SPEED_HZ:
@@ -202,7 +215,7 @@ class TiltedFilm:
             "h_min_z_m": self.h_min_z_m}])
 
 
-def tilted_forces(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBearing, *,
+def tilted_forces(bearing: FilmBearing, *,
                   x_m: float, y_m: float,
                   speed_hz: float,
                   theta_x_rad: float = 0.0, theta_y_rad: float = 0.0, vx_m_s: float = 0.0,
@@ -215,6 +228,7 @@ def tilted_forces(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBea
     equilibrium (:func:`rotordyn.bearings.tilt_pads.pad_tilted_forces`; a
     :class:`~rotordyn.bearings.tilt_pads.PadTiltedFilm` with the pads' tilts, pitches and
     films); velocities are refused (the pads' motion is a state of the system transient)."""
+    bearing = film_bearing(bearing)
     if isinstance(bearing, TiltingPadBearing):
         for name, val in (("vx_m_s", vx_m_s), ("vy_m_s", vy_m_s), ("wx_rad_s", wx_rad_s),
                           ("wy_rad_s", wy_rad_s)):
@@ -223,8 +237,6 @@ def tilted_forces(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBea
                                  f"velocities are states of the system transient), got {val!r}")
         return pad_tilted_forces(bearing, x_m=x_m, y_m=y_m, speed_hz=speed_hz,
                                  theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad)
-    if not isinstance(bearing, FixedGeometryBearing):
-        bearing = _plain(bearing)
     r = np.array(check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad))
     rd = np.array([v.in_range("vx_m_s", vx_m_s, -1e3, 1e3),
                    v.in_range("vy_m_s", vy_m_s, -1e3, 1e3),
@@ -240,7 +252,7 @@ def tilted_forces(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBea
                       h_min_angle_deg=ha, h_min_z_m=hz)
 
 
-def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBearing,
+def tilted_coefficients(bearing: FilmBearing,
                         *, x_m: float,
                         y_m: float, speed_hz: float,
                         theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
@@ -255,12 +267,11 @@ def tilted_coefficients(bearing: JournalBearing | FixedGeometryBearing | Tilting
     A :class:`TiltingPadBearing`: the pads at their equilibrium for the pose and their
     coordinates condensed at the synchronous frequency
     (:func:`rotordyn.bearings.tilt_pads.pad_tilted_coefficients` takes the whirl ratio)."""
+    bearing = film_bearing(bearing)
     if isinstance(bearing, TiltingPadBearing):
         return pad_tilted_coefficients(bearing, x_m=x_m, y_m=y_m, speed_hz=speed_hz,
                                        theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad,
                                        method=method, rel_step=rel_step)
-    if not isinstance(bearing, FixedGeometryBearing):
-        bearing = _plain(bearing)
     r = np.array(check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad))
     w = TWO_PI * _speed(speed_hz)
     s = _solver(bearing)
@@ -308,7 +319,7 @@ class MisalignedEquilibrium:
             "h_min_z_m": self.h_min_z_m, "status": self.status, "message": self.message}])
 
 
-def misaligned_equilibrium(bearing: JournalBearing | FixedGeometryBearing | TiltingPadBearing,
+def misaligned_equilibrium(bearing: FilmBearing,
                            *,
                            load_n: Sequence[float],
                            speed_hz: float, theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
@@ -318,12 +329,11 @@ def misaligned_equilibrium(bearing: JournalBearing | FixedGeometryBearing | Tilt
     at zero (x, y) is c + θx z sin φ − θy z cos φ; then the moments at that point.
     A :class:`TiltingPadBearing`: the pads free
     (:func:`rotordyn.bearings.tilt_pads.pad_misaligned_equilibrium`)."""
+    bearing = film_bearing(bearing)
     if isinstance(bearing, TiltingPadBearing):
         return pad_misaligned_equilibrium(bearing, load_n=load_n, speed_hz=speed_hz,
                                           theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad,
                                           tol=tol)
-    if not isinstance(bearing, FixedGeometryBearing):
-        bearing = _plain(bearing)
     if isinstance(load_n, (str, bytes)) or len(np.atleast_1d(load_n)) != 2:
         raise InputError(f"load_n: expected two numbers (Fx, Fy) in N, got {load_n!r}")
     lx, ly = v.finite("load_n[0]", load_n[0]), v.finite("load_n[1]", load_n[1])

@@ -395,7 +395,8 @@ def _cmd_stability(args) -> int:
     if args.json:
         cols = ["mode", "freq_hz", "eig_real_1_per_s", "damping_ratio", "log_dec",
                 "mode_stable"]
-        print(json_text({"status": st.status, "message": st.message, "stable": st.stable,
+        verdict = st.stable if st.status in CONVERGED else None  # none without equilibrium
+        print(json_text({"status": st.status, "message": st.message, "stable": verdict,
                          "speed_hz": st.speed_hz, "max_real_1_per_s": st.max_real_1_per_s,
                          "modes": df.iloc[keep][cols].to_dict("list")
                          | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])},
@@ -405,8 +406,9 @@ def _cmd_stability(args) -> int:
         if len(keep) < len(df):
             print(f"({len(keep)} of {len(df)} modes shown; --n-modes N or --max-freq-hz HZ for "
                   "others; the least damped mode and the verdict cover all)", file=sys.stderr)
-        print(f"{'stable' if st.stable else 'UNSTABLE'}: largest Re λ = "
-              f"{st.max_real_1_per_s:.4g} 1/s", file=sys.stderr)
+        if st.status in CONVERGED:  # a failed equilibrium has no verdict (below: why)
+            print(f"{'stable' if st.stable else 'UNSTABLE'}: largest Re λ = "
+                  f"{st.max_real_1_per_s:.4g} 1/s", file=sys.stderr)
         if st.thermal is not None:
             t = st.thermal
             print(f"at the thermal equilibrium ({t.thermal_model} model, field frozen): "
@@ -418,6 +420,19 @@ def _cmd_stability(args) -> int:
         print(f"rotordyn: failed: {st.status}: {st.message}", file=sys.stderr)
         return 1
     return 0
+
+
+def _failed_speeds(speeds_hz, status, messages=()) -> int:
+    """Name every speed without a converged equilibrium on stderr (its status and, where
+    known, why); the exit code: 1 when no speed converged, else 0."""
+    if status is None:
+        return 0
+    status = [str(x) for x in status]
+    for i, (f, stt) in enumerate(zip(speeds_hz, status)):
+        if stt not in CONVERGED:
+            why = messages[i] if i < len(messages) and messages[i] else ""
+            print(f"rotordyn: {f:g} Hz: {stt}" + (f": {why}" if why else ""), file=sys.stderr)
+    return 1 if status and not any(x in CONVERGED for x in status) else 0
 
 
 def _cmd_campbell(args) -> int:
@@ -437,7 +452,8 @@ def _cmd_campbell(args) -> int:
                      "critical_speeds": crit.to_dict("records"),
                      "speeds_hz": c.speeds_hz, "frequencies_hz": c.frequencies_hz,
                      "point_status": list(c.point_status) if c.point_status is not None
-                     else None}
+                     else None, "point_message": _messages(c)
+                     if c.point_message is not None else None}
                     | ({"thermal": [_thermal_json(t, m) for t, m in
                                     zip(c.thermal, _messages(c))]} if c.thermal
                        else {})))
@@ -449,7 +465,7 @@ def _cmd_campbell(args) -> int:
         if args.max_freq_hz is not None:
             ax.set_ylim(0, args.max_freq_hz)
         save_figure(ax, args.plot, args.dpi)
-    return 0
+    return _failed_speeds(c.speeds_hz, c.point_status, _messages(c))
 
 
 def _cmd_threshold(args) -> int:
@@ -508,4 +524,4 @@ def _cmd_unbalance(args) -> int:
                 Path(args.plot).with_name(f"{Path(args.plot).stem}_station{st}"
                                           f"{Path(args.plot).suffix}"))
             save_figure(u.plot(station=st, kind=args.plot_kind), path, args.dpi)
-    return 0
+    return _failed_speeds(u.speeds_hz, u.point_status)

@@ -35,7 +35,7 @@ class CampbellResult(Display):
     point_status: np.ndarray | None = None  # (n_speeds,) equilibrium status per speed
     mode_id: np.ndarray | None = None  # (n_speeds, n_modes) tracked ids
     thermal: tuple = ()  # (n_speeds,) SystemThermalResult per speed (``thermal=``), else ()
-    # (n_speeds,) why a speed failed ("" where it converged; ``thermal=``), else None
+    # (n_speeds,) why a speed failed ("" where it converged), else None
     point_message: np.ndarray | None = None
 
     def ids(self) -> np.ndarray:
@@ -120,6 +120,12 @@ class CampbellResult(Display):
         lam = self.eigenvalues.ravel()
         st = (np.repeat(self.point_status, nm) if self.point_status is not None
               else [self.status] * (ns * nm))
+        msg = (list(np.repeat(np.asarray(self.point_message, dtype=object), nm))
+               if self.point_message is not None else [self.message] * (ns * nm))
+        # A slot without an eigenvalue (a failed speed's row) has no whirl and no kind: a
+        # failed equilibrium is not classified.
+        none = np.isnan(lam)
+        whirl = [None if n else WHIRL_NAMES[int(w)] for n, w in zip(none, self.whirl.ravel())]
         df = pd.DataFrame({
             "model": pd.Categorical([self.model] * (ns * nm)),
             "speed_hz": np.repeat(self.speeds_hz, nm),
@@ -128,14 +134,13 @@ class CampbellResult(Display):
             "freq_hz": lam.imag / (2 * np.pi),
             "eig_real_1_per_s": lam.real,
             "log_dec": self.log_dec.ravel(),
-            "whirl": pd.Categorical([WHIRL_NAMES[int(w)] for w in self.whirl.ravel()],
-                                    categories=["forward", "backward", "planar"]),
+            "whirl": pd.Categorical(whirl, categories=["forward", "backward", "planar"]),
             "status": pd.Categorical(st),
-            "message": (np.repeat(self.point_message, nm) if self.point_message is not None
-                        else [self.message] * (ns * nm)),
+            "message": msg,
         })
         if self.kind is not None:
-            df.insert(4, "kind", pd.Categorical(self.kind.ravel(), categories=["rotor", "sleeve", "pad"]))
+            kind = np.where(none, None, self.kind.ravel())
+            df.insert(4, "kind", pd.Categorical(kind, categories=["rotor", "sleeve", "pad"]))
         if self.thermal:
             from rotordyn.results.thermal import thermal_frame_columns
 

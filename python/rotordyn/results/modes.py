@@ -42,17 +42,20 @@ def mode_stable(eigenvalues: np.ndarray) -> np.ndarray:
 
 
 def damping_ratio(eigenvalues: np.ndarray) -> np.ndarray:
-    """ζ = −Re λ / |λ| (0 for λ = 0 and within the round-off band of Re λ = 0)."""
+    """ζ = −Re λ / |λ| (0 for λ = 0 and within the round-off band of Re λ = 0; NaN for a NaN
+    eigenvalue: a failed point's slot has no damping)."""
     mag = np.abs(eigenvalues)
-    return np.where(mag > 0, -settled_real(eigenvalues) / np.where(mag > 0, mag, 1.0), 0.0)
+    z = np.where(mag > 0, -settled_real(eigenvalues) / np.where(mag > 0, mag, 1.0), 0.0)
+    return np.where(np.isnan(mag), np.nan, z)
 
 
 def log_dec(eigenvalues: np.ndarray) -> np.ndarray:
     """Logarithmic decrement δ = −2π Re λ / Im λ (inf for a non-oscillating root; 0 within the
-    round-off band of Re λ = 0, +0 never −0: tables printed "-0")."""
-    im = np.asarray(eigenvalues).imag
-    return np.where(im > 0, -2 * np.pi * settled_real(eigenvalues) / np.where(im > 0, im, 1.0),
-                    np.inf) + 0.0
+    round-off band of Re λ = 0, +0 never −0: tables printed "-0"; NaN for a NaN eigenvalue)."""
+    lam = np.asarray(eigenvalues)
+    im = lam.imag
+    d = np.where(im > 0, -2 * np.pi * settled_real(lam) / np.where(im > 0, im, 1.0), np.inf)
+    return np.where(np.isnan(lam), np.nan, d) + 0.0
 
 
 @dataclass(frozen=True)

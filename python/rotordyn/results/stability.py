@@ -98,7 +98,9 @@ class StabilityResult(Display):
 
     def __repr__(self) -> str:
         e = self.linear.equilibrium
-        head = (f"<StabilityResult {'stable' if self.stable else 'UNSTABLE'} ({self.status}): "
+        verdict = ("no verdict" if self.status not in CONVERGED
+                   else "stable" if self.stable else "UNSTABLE")
+        head = (f"<StabilityResult {verdict} ({self.status}): "
                 f"{self.speed_hz:g} Hz, p_c = {e.chamber_pressure_pa / 1e6:g} MPa, "
                 f"{len(self.eigenvalues)} modes")
         if len(self.eigenvalues):

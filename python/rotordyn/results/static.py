@@ -31,8 +31,10 @@ class StaticResult(Display):
     (y–z) plane of those forces about the section, sagging positive (a beam on two supports
     under its weight has M > 0), ``moment_xz_n_m`` likewise in the horizontal plane.
     reactions: one row per support and bearing element (``name``, ``station``, ``kind``,
-    ``force_x_n``, ``force_y_n``: the force it exerts on the rotor, N). ``weight_n``: the
-    rotor's weight; the reactions' y-sum balances it.
+    ``force_x_n``, ``force_y_n``: the force it exerts on the rotor, N; with a tilting film,
+    ``tilt = true``, also ``moment_x_n_m``, ``moment_y_n_m``: the film's moment on the
+    journal about x and y, N·m, NaN for the other rows). ``weight_n``: the rotor's weight;
+    the reactions' y-sum balances it.
     """
 
     speed_hz: float

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from rotordyn._common.status import CONVERGED
 from rotordyn.results._display import Display
 
 
@@ -99,6 +100,13 @@ class UnbalanceResult(Display):
 
         ns, nk = self.x.shape
         whirl = whirl_label(whirl_index(self.x, self.y, axis=()))  # per speed and station
+        # A speed without a converged equilibrium has no orbit, so no whirl and no stability
+        # verdict (null, not "planar" and True)
+        solved = np.isin(np.asarray(self.point_status, dtype=str), list(CONVERGED))
+        orbit = solved[:, None] & np.isfinite(self.x) & np.isfinite(self.y)
+        whirl = np.where(orbit, whirl, None)
+        verdict = pd.array(np.repeat(self.stable, nk), dtype="boolean")
+        verdict[~np.repeat(solved, nk)] = pd.NA
         df = pd.DataFrame({
             "speed_hz": np.repeat(self.speeds_hz, nk),
             "station": np.tile(np.asarray(self.stations, dtype=np.int64), ns),
@@ -110,7 +118,7 @@ class UnbalanceResult(Display):
             "minor_m": self.minor_m.ravel(),
             "whirl": pd.Categorical(whirl.ravel(),
                                     categories=["forward", "backward", "planar"]),
-            "point_stable": np.repeat(self.stable, nk),
+            "point_stable": verdict,
             "status": pd.Categorical(np.repeat(self.point_status, nk)),
         })
         if self.thermal:
