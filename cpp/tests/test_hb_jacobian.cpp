@@ -10,6 +10,7 @@
 #include "../src/hb_detail.hpp"  // private: the AFT problem, tested directly
 #include "../src/shooting_detail.hpp"
 #include "rotordyn/system.hpp"
+#include "system_testing.hpp"
 #include "testing.hpp"
 
 using namespace rotordyn;
@@ -25,18 +26,6 @@ SystemModel mass_on_film() {
   g.clearance_m = kC;
   g.viscosity_pa_s = 0.02;
   FilmGrid grid{36, 8};
-  FilmCoupling f;
-  f.name = "jb";
-  f.geometry = g;
-  f.grid = grid;
-  f.cavitation = Cavitation::none;  // smooth in the state: central differences converge
-  f.coords = {0, 1};
-  f.shape.resize(grid.n_circ, 2);
-  for (int j = 0; j < grid.n_circ; ++j) {
-    const double phi = 2 * M_PI * j / grid.n_circ;
-    f.shape(j, 0) = -std::cos(phi);
-    f.shape(j, 1) = -std::sin(phi);
-  }
   SystemModel m;
   m.M = Eigen::Matrix2d::Identity() * 5.0;
   m.K = Eigen::Matrix2d::Identity() * 1e5;
@@ -44,7 +33,7 @@ SystemModel mass_on_film() {
   m.G = Eigen::Matrix2d::Zero();
   m.Q = Eigen::Vector2d(0.0, -200.0);
   m.chamber = Eigen::Vector2d::Zero();
-  m.films = {f};
+  m.films = {rdtest::journal_film(g, grid, Cavitation::none)};
   return m;
 }
 

@@ -4,6 +4,7 @@
 
 #include "rotordyn/errors.hpp"
 #include "rotordyn/system.hpp"
+#include "system_testing.hpp"
 #include "testing.hpp"
 
 using namespace rotordyn;
@@ -16,18 +17,6 @@ SystemModel one_film(double k_struct) {
   g.clearance_m = 3e-4;
   g.viscosity_pa_s = 0.04;
   FilmGrid grid{48, 12};
-  FilmCoupling f;
-  f.name = "jb";
-  f.geometry = g;
-  f.grid = grid;
-  f.cavitation = Cavitation::reynolds;
-  f.coords = {0, 1};
-  f.shape.resize(grid.n_circ, 2);
-  for (int j = 0; j < grid.n_circ; ++j) {
-    const double phi = 2 * M_PI * j / grid.n_circ;
-    f.shape(j, 0) = -std::cos(phi);
-    f.shape(j, 1) = -std::sin(phi);
-  }
   SystemModel m;
   m.M = Eigen::Matrix2d::Identity() * 10.0;
   m.K = Eigen::Matrix2d::Identity() * k_struct;
@@ -35,7 +24,7 @@ SystemModel one_film(double k_struct) {
   m.G = Eigen::Matrix2d::Zero();
   m.Q = Eigen::Vector2d(0.0, -500.0);
   m.chamber = Eigen::Vector2d::Zero();
-  m.films = {f};
+  m.films = {rdtest::journal_film(g, grid, Cavitation::reynolds)};
   return m;
 }
 }  // namespace
