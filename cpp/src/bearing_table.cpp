@@ -65,10 +65,12 @@ void TableCoupling::at(double omega, Eigen::Matrix2d& Kout, Eigen::Matrix2d& Cou
   fill(i, i + 1, t);
 }
 
-Eigen::VectorXd homotopy_start(const SystemModel& model, double omega, double pc,
-                               const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
-                               const EquilibriumOptions& options,
-                               const Eigen::MatrixXd& P) {
+namespace {
+// homotopy_start, adding every stage's Reynolds solves to `solves`
+Eigen::VectorXd counted_homotopy_start(const SystemModel& model, double omega, double pc,
+                                       const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
+                                       const EquilibriumOptions& options,
+                                       const Eigen::MatrixXd& P, long& solves) {
   const Eigen::Index n = model.n();
   require(P.rows() == n && P.cols() == n, shape_msg("pad_penalty", n, n, P.rows(), P.cols()));
   Eigen::VectorXd r = r0.size() ? r0 : Eigen::VectorXd::Zero(n);
@@ -101,6 +103,7 @@ Eigen::VectorXd homotopy_start(const SystemModel& model, double omega, double pc
     m.K += (kappa0 * std::pow(10.0, -next) / pmax) * P;
     SystemSolver s(std::move(m));
     const EquilibriumResult e = s.equilibrium(omega, pc, a, r, options);
+    solves += e.reynolds_solves;
     if (e.status != "ok") wasted += e.reynolds_solves;
     if (e.status == "ok") {
       r = e.r;
@@ -115,6 +118,15 @@ Eigen::VectorXd homotopy_start(const SystemModel& model, double omega, double pc
   }
   return r;
 }
+}  // namespace
+
+Eigen::VectorXd homotopy_start(const SystemModel& model, double omega, double pc,
+                               const Eigen::VectorXd& a, const Eigen::VectorXd& r0,
+                               const EquilibriumOptions& options,
+                               const Eigen::MatrixXd& P) {
+  long solves = 0;
+  return counted_homotopy_start(model, omega, pc, a, r0, options, P, solves);
+}
 
 EquilibriumResult pad_system_equilibrium(SystemSolver& solver, const SystemModel& model,
                                          double omega, double pc, const Eigen::VectorXd& a,
@@ -128,11 +140,16 @@ EquilibriumResult pad_system_equilibrium(SystemSolver& solver, const SystemModel
   if (converged && e.path == "pad_assembly") return e;
   // not through the pad assembly: a plain Newton may sit on an unloaded pad's pressure-free
   // branch, so the homotopy decides; a converged first answer stays if the homotopy fails
-  const Eigen::VectorXd start = homotopy_start(model, omega, pc, a, homotopy_r0, options, P);
+  long solves = 0;
+  const Eigen::VectorXd start =
+      counted_homotopy_start(model, omega, pc, a, homotopy_r0, options, P, solves);
   EquilibriumResult h = solver.equilibrium(omega, pc, a, start, options);
   h.path = "homotopy";
-  if (converged && h.status != "ok" && h.status != "contact") return e;
-  return h;
+  // the call's whole work: the first attempt, the homotopy's stages and the answer's Newton
+  const long total = e.reynolds_solves + solves + h.reynolds_solves;
+  EquilibriumResult& out = converged && h.status != "ok" && h.status != "contact" ? e : h;
+  out.reynolds_solves = total;
+  return out;
 }
 
 OperatingPointTable operating_points(const SystemModel& model, const Eigen::VectorXd& omegas,
