@@ -53,3 +53,21 @@ def test_a_failed_thermal_frame_has_no_state(compressor):
     assert bad[state].isna().all().all()
     assert list(bad["status"]) == ["not_converged"] * 2
     assert (bad["supply_temperature_c"] == good["supply_temperature_c"]).all()
+
+
+def test_an_unbalance_sweep_row_of_a_failed_speed_has_no_peak_verdict():
+    """``peak`` (BOOL) is null, not False, at a speed without a converged equilibrium (no
+    response there); the column keeps its True/False where the equilibrium converged. The
+    active compressor at p_c = 1e9 Pa (no equilibrium) beside p_c = 0, each speed at its own
+    thermal equilibrium (tests/test_thermal_sweep.py's case)."""
+    from test_thermal_sweep import CASES, _job
+
+    from rotordyn.sweep.work import run_chunk
+
+    model, analysis, options, axes = CASES["unbalance-no-equilibrium"]
+    job = _job(model(), analysis, options, axes)
+    t = run_chunk(job, 2, 0, int(np.prod(job.shape))).to_pandas()
+    failed = t["status"] != "ok"
+    assert failed.any() and (~failed).any()
+    assert t.loc[failed, "peak"].isna().all()
+    assert t.loc[~failed, "peak"].notna().all()

@@ -77,6 +77,13 @@ def _numeric(fld, name, blocks, ident):
             mask.append(np.ones(m, bool))
             nulls = True
             continue
+        if not _is_scalar(x) and np.asarray(x).dtype == object:  # None entries: nulls
+            x = np.asarray(x)
+            none = np.array([e is None for e in x], dtype=bool)
+            vals.append(np.where(none, 0, x).astype(dt))
+            mask.append(none)
+            nulls = nulls or bool(none.any())
+            continue
         vals.append(np.full(m, x, dt) if _is_scalar(x) else np.asarray(x, dtype=dt))
         mask.append(np.zeros(m, bool))
     v = np.concatenate(vals) if vals else np.zeros(0, dt)

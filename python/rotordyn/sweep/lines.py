@@ -161,6 +161,18 @@ def unbalance_line(job, variants, lo, hi, at, asms):
              unbalance_columns(res, speeds, stations, status, msg))]
 
 
+def _peak_column(peak, status):
+    """(n·ns,) ``peak``: null at a speed without a converged equilibrium (no response there, so
+    no verdict either way; it read False), else whether a peak sits at that speed."""
+    from rotordyn._common.status import CONVERGED
+    failed = np.array([str(x) not in CONVERGED for x in status], dtype=bool)
+    if not failed.any():
+        return peak.ravel()
+    out = peak.astype(object)
+    out[failed, :] = None
+    return out.ravel()
+
+
 def unbalance_columns(res, speeds, stations, status, msg) -> dict:
     """The (speed, station) columns of an unbalance line (flat, speed-major) from its
     :class:`UnbalanceResult`: amplitudes, phases, orbit axes, the peaks' critical speed, AF
@@ -188,7 +200,7 @@ def unbalance_columns(res, speeds, stations, status, msg) -> dict:
         "phase_x_deg": np.degrees(np.angle(X)).ravel(),
         "phase_y_deg": np.degrees(np.angle(Y)).ravel(),
         "major_m": np.asarray(major, dtype=float).ravel(),
-        "minor_m": np.asarray(minor, dtype=float).ravel(), "peak": peak.ravel(),
+        "minor_m": np.asarray(minor, dtype=float).ravel(), "peak": _peak_column(peak, status),
         "critical_speed_hz": crit.ravel(), "amplification_factor": amp.ravel(),
         "separation_margin_pct": sep.ravel(),
         "status": np.repeat(np.array(status, dtype=object), ns),
