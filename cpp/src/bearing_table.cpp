@@ -81,6 +81,7 @@ Eigen::VectorXd counted_homotopy_start(const SystemModel& model, double omega, d
     try {
       const Linearization lin = s.linearize(start, Eigen::VectorXd::Zero(n), omega);
       kappa0 = 100.0 * lin.KH.diagonal().cwiseAbs().maxCoeff();
+      solves += s.reynolds_solves();
     } catch (const std::exception&) {
       return r;
     }

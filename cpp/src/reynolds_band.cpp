@@ -322,7 +322,9 @@ bool BandLDLT::factorize_assembled(bool checkpoints) { return factor_from(0, che
 
 bool BandLDLT::refactorize_from(int c0, bool checkpoints) {
   const int ks = checkpoint_stride();
-  if (!ckpt_ok_ || c0 < 0 || c0 % ks != 0 || c0 >= n_) return factor_from(0, checkpoints);
+  // no saved state for c0: the band's columns before c0 hold the last factor, not A, so no
+  // factorisation can start from it (the caller assembles the band again)
+  if (!ckpt_ok_ || c0 < 0 || c0 % ks != 0 || c0 >= n_) return false;
   std::memcpy(a_.data() + static_cast<std::size_t>(c0) * (b_ + 1),
               ckpt_.data() + static_cast<std::size_t>(c0 / ks) * b_ * (b_ + 1),
               sizeof(double) * static_cast<std::size_t>(b_) * (b_ + 1));

@@ -60,7 +60,8 @@ class BandLDLT {
   /// same opening, checkpoints saved) and the caller has rewritten columns c0 + b .. n − 1
   /// (begin_from, then the columns; a write into c0 .. c0 + b − 1 is overwritten here). The
   /// factor is the one factorize_assembled() gives, bit for bit (the same operations from the
-  /// state saved before column c0). A full factorisation when no state is saved.
+  /// state saved before column c0). False when no state is saved for c0 (the caller then
+  /// assembles and factorises the whole band).
   bool refactorize_from(int c0, bool checkpoints = true);
   /// The last factorisation saved its checkpoints and succeeded, opened at `cut` that way.
   bool resumable(int cut, bool reverse) const {

@@ -42,13 +42,9 @@ void ReynoldsSolver::Impl::factor_spd(LinearSystem& S, const std::vector<char>* 
       // before it); resumed at the last checkpoint c0 with columns c0 .. c0 + b − 1 untouched.
       const int b = B.bandwidth(), nu = S.n_unk;
       const char* pv = reuse->prev->data();
-      int cmin = nu;
+      int cmin = nu;  // < nu: the caller passes prev only for a changed mask
       for (int i = 0; i < nu; ++i)
         if (pv[i] != mk[i]) cmin = std::min(cmin, B.opened(i));
-      if (cmin == nu) {  // the same mask: the same factor
-        S.band_cut = cut;
-        return;
-      }
       const int ks = B.checkpoint_stride();
       const int c0 = cmin >= 2 * b ? ((cmin - 2 * b) / ks) * ks : 0;
       if (c0 > 0 && fill_band(S, mk, cut, rev, c0 + b) && B.refactorize_from(c0, ckpt)) {

@@ -76,6 +76,10 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
   const double TJ = std::isnan(opt.journal_temperature_c) ? Ts : opt.journal_temperature_c;
   const double TB = std::isnan(opt.bush_temperature_c) ? Ts : opt.bush_temperature_c;
   const double hJ = opt.journal_htc_w_m2k, hB = opt.bush_htc_w_m2k;
+  // one oil: a turbulent film's Re_h (the walls' eddy factors, the film's own) takes the
+  // film's density, the heat balance the oil's (every THD path passes here: standalone,
+  // system, pads, thd_energy)
+  check_film_density(solver.geometry(), oil, "");
   const double rc = oil.density_kg_m3 * oil.specific_heat_j_per_kg_k;
   // the cells' heat paths to the walls (thd_walls.hpp); `legacy`: given coefficients to fixed
   // wall temperatures, in the energy equation's original arithmetic
@@ -482,7 +486,8 @@ double thd_residual_k(const Eigen::Ref<const Eigen::VectorXd>& G,
   double r = 0.0;
   for (Eigen::Index n = 0; n < G.size(); ++n) {
     const double d = std::abs(std::min(G[n], t_max_c) - T[n]);
-    if (!(d <= r)) r = d;  // NaN propagates
+    if (std::isnan(d)) return d;  // a NaN node is no settled field, wherever it sits
+    r = std::max(r, d);
   }
   return r;
 }
@@ -491,7 +496,6 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
                                const ThdOptions& opt, double lx, double ly, double omega) {
   oil.validate();
   opt.validate(oil);
-  check_film_density(solver.geometry(), oil, "");
   if (!(std::isfinite(omega) && omega != 0.0))
     throw InputError("speed_hz: the thermal equilibrium needs a nonzero speed");
   const int N = solver.grid().n_circ, K1 = solver.grid().n_axial + 1, nn = N * K1;

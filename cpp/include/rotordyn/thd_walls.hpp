@@ -64,7 +64,7 @@ struct WallModel {
   void set_film(const JournalBearingGeometry& geo, double omega, double specific_heat);
   /// the heat paths of a cell with the film thickness h (m), fill θ and viscosity μ (Pa s;
   /// used by a turbulent film only)
-  CellWall cell(double h_m, double fill, double mu_pa_s = 0.0) const;
+  CellWall cell(double h_m, double fill, double mu_pa_s) const;
 };
 
 /// The wall model of the options (checked: ThdOptions::validate).
