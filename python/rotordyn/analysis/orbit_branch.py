@@ -17,7 +17,7 @@ from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import OPERATING, assembled
 from rotordyn.analysis.field_axis import FieldSystems, check_acts, field_parameter, field_value
 from rotordyn.analysis.periodic import orbit_result
-from rotordyn.errors import InputError, RotordynError
+from rotordyn.errors import InputError
 from rotordyn.results.continuation import BranchResult
 from rotordyn.results.periodic import PeriodicOrbitResult
 from rotordyn.units import hz_to_rad_s

@@ -12,6 +12,7 @@ import numpy as np
 from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import OPERATING, check_operating_parameter
+from rotordyn.analysis.thermal_dynamics import thermal_keywords
 from rotordyn.model.paths import set_field
 from rotordyn.model.system import System
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
@@ -38,34 +39,6 @@ def _point(system, params, exclude_sleeve_modes, thermal=None):
         lam = lam[st.kind == "rotor"]
     i = int(np.argmax(lam.real))
     return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), st.status
-
-
-def _thermal_keywords(thermal):
-    """``thermal`` checked: None or False (isothermal), True (the model's ``[thermal]`` as it
-    is, as for ``stability``), or a dict of system_thermal_equilibrium's keywords other than
-    the operating point's (InputError naming the key)."""
-    if thermal is None or thermal is False:
-        return None
-    if thermal is True:
-        return {}
-    import inspect
-
-    from rotordyn.analysis.thermal import system_thermal_equilibrium
-
-    if not isinstance(thermal, dict):
-        raise InputError(f"thermal: expected None, True or a dict of "
-                         f"system_thermal_equilibrium keywords, got {type(thermal).__name__}")
-    own = ("speed_hz", "chamber_pressure_pa", "config_ay_m", "config_ax_m")
-    allowed = [k for k in inspect.signature(system_thermal_equilibrium).parameters
-               if k not in own and k != "system"]
-    for k in thermal:
-        if k in own:
-            raise InputError(f"thermal.{k}: set by the threshold's point (vary and the fixed "
-                             "parameters), not by the thermal keywords")
-        if k not in allowed:
-            raise InputError(f"thermal.{k}: not a keyword of system_thermal_equilibrium; "
-                             f"expected one of {allowed}")
-    return dict(thermal)
 
 
 @limited_blas
@@ -121,7 +94,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
                 set_field(system, vary, b, where="vary")
             except InputError as exc:
                 raise InputError(f"bounds: the model refuses {vary} = {b:g} ({exc})") from None
-    thermal = _thermal_keywords(thermal)
+    thermal = thermal_keywords(thermal)
     calls = [0]
 
     def g(x):

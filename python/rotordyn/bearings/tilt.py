@@ -58,21 +58,6 @@ def axial_positions(bearing: JournalBearing) -> np.ndarray:
     return np.linspace(-0.5 * bearing.length_m, 0.5 * bearing.length_m, bearing.n_axial + 1)
 
 
-def _plain(bearing):
-    """``bearing`` checked for the plain film's functions: a :class:`JournalBearing`, or a
-    system's plain bearing (:class:`FluidFilmBearing`, e.g. ``System.bearings[i]`` or the
-    frozen one of a thermal equilibrium's ``system``, whose viscosity field the film keeps);
-    InputError naming ``bearing`` otherwise (an active bearing's sleeve is a system's)."""
-    if isinstance(bearing, ActiveJournalBearing):
-        raise InputError("bearing: an active journal bearing's tilted film includes its "
-                         "sleeve, a system's coordinates: use tilt = true in a system")
-    if not isinstance(bearing, (JournalBearing, FluidFilmBearing)):
-        raise InputError(f"bearing: expected a JournalBearing, FluidFilmBearing, "
-                         f"FixedGeometryBearing or TiltingPadBearing, got "
-                         f"{type(bearing).__name__}")
-    return bearing
-
-
 def tilt_coupling(bearing: JournalBearing | FluidFilmBearing, coords: Sequence[int],
                   name: str = "", base_h: np.ndarray | None = None) -> _core.FilmCoupling:
     """The film of ``bearing`` on four system coordinates (x, y, θx, θy) = ``coords``:
@@ -136,14 +121,20 @@ def check_pose(bearing: JournalBearing, x_m, y_m, theta_x_rad, theta_y_rad,
 
 def film_bearing(bearing):
     """The standalone film of ``bearing``: a :class:`JournalBearing`,
-    :class:`FixedGeometryBearing` or :class:`TiltingPadBearing` as it is; a model's plain
-    bearing (``type = "journal"``, :class:`FluidFilmBearing`, e.g. ``system.bearings[i]``,
-    with its frozen viscosity field if it has one) through :func:`_plain`. Anything else (a
-    table, an active bearing's sleeve, a string) is an InputError naming ``bearing``, not an
-    AttributeError from inside."""
-    if isinstance(bearing, (JournalBearing, FixedGeometryBearing, TiltingPadBearing)):
-        return bearing
-    return _plain(bearing)
+    :class:`FixedGeometryBearing` or :class:`TiltingPadBearing` as it is, or a model's plain
+    bearing (``type = "journal"``, :class:`FluidFilmBearing`, e.g. ``System.bearings[i]`` or
+    the frozen one of a thermal equilibrium's ``system``, whose viscosity field the film
+    keeps). Anything else (an active bearing, whose sleeve is a system's coordinates, a
+    table, a string) is an InputError naming ``bearing``, not an AttributeError from inside."""
+    if isinstance(bearing, ActiveJournalBearing):
+        raise InputError("bearing: an active journal bearing's tilted film includes its "
+                         "sleeve, a system's coordinates: use tilt = true in a system")
+    if not isinstance(bearing, (JournalBearing, FixedGeometryBearing, TiltingPadBearing,
+                                FluidFilmBearing)):
+        raise InputError(f"bearing: expected a JournalBearing, FluidFilmBearing, "
+                         f"FixedGeometryBearing or TiltingPadBearing, got "
+                         f"{type(bearing).__name__}")
+    return bearing
 
 
 def _speed(speed_hz) -> float:

@@ -31,11 +31,15 @@ PEAK_HEADER = ["N_c (Hz)", "peak (µm)", "AF", "SM (%)", "required (%)", "result
 
 def no_thermal_equilibrium(result) -> np.ndarray:
     """Speeds (Hz) of ``result`` (a thermal Campbell or unbalance result: its ``thermal`` per
-    speed) whose thermal equilibrium failed or raised (never linearised: NaN rows)."""
+    speed) whose thermal equilibrium failed or raised, or whose system equilibrium on the
+    frozen field did (never linearised: NaN rows)."""
     th = getattr(result, "thermal", ())
     if not th:
         return np.empty(0)
     bad = [t is None or t.status not in CONVERGED for t in th]
+    ps = getattr(result, "point_status", None)
+    if ps is not None:  # the dynamics need the frozen field's equilibrium too
+        bad = [b or str(p) not in CONVERGED for b, p in zip(bad, ps)]
     return np.asarray(result.speeds_hz, dtype=float)[np.asarray(bad, dtype=bool)]
 
 

@@ -53,10 +53,16 @@ class UnbalanceResult(Display):
         """(n_speeds,) bool: the equilibrium is linearly stable (Re λ below the round-off band
         of 1e-9 |λ|), so the unbalance response is a steady orbit; all True when not checked.
         Above the threshold of instability the computed response is the forced part of a
-        motion that grows: it is not what the machine shows."""
+        motion that grows: it is not what the machine shows. False at a speed without a
+        converged equilibrium (nothing was linearised there: no stable verdict)."""
+        solved = self._solved()
         if self.max_real_1_per_s is None:
-            return np.ones(len(self.speeds_hz), dtype=bool)
-        return ~(self.max_real_1_per_s > 1e-9)
+            return solved
+        return solved & ~(self.max_real_1_per_s > 1e-9)
+
+    def _solved(self) -> np.ndarray:
+        """(n_speeds,) bool: the speed's equilibrium converged."""
+        return np.isin(np.asarray(self.point_status, dtype=str), list(CONVERGED))
 
     def __repr__(self) -> str:
         a = self.major_m
@@ -66,7 +72,7 @@ class UnbalanceResult(Display):
             pk = (f"; largest orbit {a[i, k] * 1e6:.4g} µm at station {self.stations[k]}, "
                   f"{self.speeds_hz[i]:.4g} Hz")
         bad = int(np.sum(self.point_status != "ok"))
-        uns = int(np.sum(~self.stable))
+        uns = int(np.sum(self._solved() & ~self.stable))
         return (f"<UnbalanceResult {len(self.speeds_hz)} speeds {self.speeds_hz[0]:g}–"
                 f"{self.speeds_hz[-1]:g} Hz, stations {list(self.stations)}{pk}"
                 + (f"; {bad} speeds not ok" if bad else "")
@@ -102,7 +108,7 @@ class UnbalanceResult(Display):
         whirl = whirl_label(whirl_index(self.x, self.y, axis=()))  # per speed and station
         # A speed without a converged equilibrium has no orbit, so no whirl and no stability
         # verdict (null, not "planar" and True)
-        solved = np.isin(np.asarray(self.point_status, dtype=str), list(CONVERGED))
+        solved = self._solved()
         orbit = solved[:, None] & np.isfinite(self.x) & np.isfinite(self.y)
         whirl = np.where(orbit, whirl, None)
         verdict = pd.array(np.repeat(self.stable, nk), dtype="boolean")
