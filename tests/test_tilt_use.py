@@ -119,6 +119,8 @@ def test_failed_misaligned_speeds_carry_no_verdict():
     fu = u.to_frame()
     assert (fu["status"] == "no_equilibrium").all() and fu["major_m"].isna().all()
     assert fu["whirl"].isna().all() and fu["point_stable"].isna().all()
+    assert not u.stable.any()  # no stable verdict without an equilibrium (the attribute too)
+    assert "above the threshold" not in repr(u)
     # the helpers: an eigenvalue that was not computed has no damping
     lam = np.array([complex(math.nan, math.nan), -1.0 + 10.0j, -3.0 + 0.0j])
     assert np.isnan(log_dec(lam)[0]) and np.isnan(damping_ratio(lam)[0])
