@@ -2,10 +2,12 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <algorithm>
 #include <exception>
 #include <functional>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -115,15 +117,45 @@ Eigen::MatrixXd state_matrix(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
   return A;
 }
 
-std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero) {
+// Roots of the rigid-body motions of a rotor without supports (K singular, d = n − rank K):
+// zero in exact arithmetic but defective (λ² M v = 0: Jordan blocks), so the dense
+// eigensolver spreads them to |λ| ~ √(ε ‖A‖) ≈ √ε ω_max, which can exceed the threshold of
+// pick_modes (an overhung 25 kg disk on a 0.7 m shaft: 1.5e-3 rad/s against 1.4e-3, kept as a
+// "mode" of damping ratio ∓0.75). Marks the (at most 2d) smallest roots below 10 √ε max|λ|;
+// none when K is regular, so the low mode of a soft support is never taken for one.
+std::vector<char> rigid_roots(const Eigen::MatrixXd& K, const Eigen::VectorXcd& w) {
+  std::vector<char> rigid(static_cast<std::size_t>(w.size()), 0);
+  if (w.size() == 0 || K.rows() == 0) return rigid;
+  const double spread =
+      10.0 * std::sqrt(std::numeric_limits<double>::epsilon()) * w.cwiseAbs().maxCoeff();
+  if (!(w.cwiseAbs().minCoeff() < spread)) return rigid;  // no candidate: skip the QR
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(K);
+  qr.setThreshold(1e-11);  // rigid motions' pivots: 1e-17 of the largest; soft supports ≫
+  const Eigen::Index d = K.rows() - qr.rank();
+  if (d == 0) return rigid;
+  std::vector<int> order(static_cast<std::size_t>(w.size()));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return std::abs(w(a)) < std::abs(w(b)); });
+  for (Eigen::Index k = 0; k < std::min<Eigen::Index>(2 * d, w.size()); ++k) {
+    const int i = order[static_cast<std::size_t>(k)];
+    if (!(std::abs(w(i)) < spread)) break;
+    rigid[static_cast<std::size_t>(i)] = 1;
+  }
+  return rigid;
+}
+
+std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero,
+                            const std::vector<char>* rigid = nullptr) {
   // Keep one of each conjugate pair (ω_d >= 0); real roots are kept once each. Rigid-body
-  // roots (|λ| below `zero`, a multiple root that rounding spreads into tiny complex pairs)
-  // are dropped.
+  // roots (|λ| below `zero`, a multiple root that rounding spreads into tiny complex pairs,
+  // or marked by rigid_roots) are dropped.
   std::vector<int> idx;
   const double big = w.size() ? w.cwiseAbs().maxCoeff() : 0.0;
   for (int i = 0; i < w.size(); ++i) {
     const double im = w(i).imag();
     if (std::abs(w(i)) < zero) continue;
+    if (rigid && (*rigid)[static_cast<std::size_t>(i)]) continue;
     if (im > 1e-12 * big || im == 0.0) idx.push_back(i);
   }
   std::stable_sort(idx.begin(), idx.end(), [&](int a, int b) {
@@ -181,12 +213,14 @@ ModalResult modal_impl(const Eigen::MatrixXd& M,
     if (n_modes <= 0 || n_modes > kInverseIterationRoots) {
       Eigen::MatrixXcd Vs;
       eig_general(A, w, &Vs);
-      idx = pick_modes(w, n_modes, zero);
+      const std::vector<char> rigid = rigid_roots(K, w);
+      idx = pick_modes(w, n_modes, zero, &rigid);
       V = Vs.topRows(n);
       for (int k : idx) V.col(k).normalize();
     } else {
       eig_general(A, w, nullptr);
-      idx = pick_modes(w, n_modes, zero);
+      const std::vector<char> rigid = rigid_roots(K, w);
+      idx = pick_modes(w, n_modes, zero, &rigid);
       V.resize(n, w.size());
       const Eigen::MatrixXcd Mc = M.cast<std::complex<double>>(),
                              Dc = D.cast<std::complex<double>>(),
