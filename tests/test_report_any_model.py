@@ -214,9 +214,9 @@ def test_heavily_damped_compressors_get_mode_shapes(reports):
     """Issue 18: on plain and tilting-pad bearings no mode crosses 1× (heavily damped), so the
     report drew no mode shape. Plain bearings: the response peaks (above the whip threshold,
     flagged so) are the critical speeds, each with the damped mode nearest its frequency
-    drawn; tilting pads: no 1× crossing and no resonance peak (the response rises to the top
-    speed; a wiggle with AF < 1 is no resonance), so the least damped forward mode at N_mc is
-    drawn and the page says there is no critical speed."""
+    drawn; tilting pads: no 1× crossing, a heavily damped response peak (below). A model
+    without any critical speed draws the least damped forward mode with a resonance at N_mc
+    (tests/test_report_overdamped.py)."""
     import pandas as pd
 
     code, page, d = reports["compressor_plain"][:3]
@@ -226,11 +226,17 @@ def test_heavily_damped_compressors_get_mode_shapes(reports):
     assert t["source"].str.contains("linearly unstable").all()
     assert page.count("<figcaption>Critical speed ") == min(len(t), 6)
     assert "the damped forward mode nearest the unbalance response peak" in page
+    # tilting pads: no 1× crossing. Before 2026-12-05 the API unbalance went to the station of
+    # an overdamped rigid-body root (29.8 Hz, damping ratio 0.9994: no resonance), excited
+    # nothing, and the page said "no critical speed". It now goes to the first forward mode
+    # with a resonance (100 Hz, ζ 0.21 at 170 Hz: the middle impeller, station 3), whose
+    # response has a peak: heavily damped (AF < 2.5, API 684: no separation margin needed)
     code, page, d = reports["compressor_tilting_pad"][:3]
-    assert pd.read_csv(Path(d) / "critical_speeds.csv").empty
-    assert "No critical speed in the speed range" in page
-    assert page.count("<figcaption>No critical speed: 170 Hz") == 1
-    assert "the least damped forward mode" in page
+    t = pd.read_csv(Path(d) / "critical_speeds.csv")
+    assert len(t) == 1 and t["campbell_hz"].isna().all()
+    assert t["source"].str.startswith("unbalance response peak").all()
+    assert (t["amplification_factor"] < 2.5).all() and str(t["stations"].iloc[0]) == "3"
+    assert page.count("<figcaption>Critical speed 1") == 1
     assert (Path(d) / "critical_mode_1.png").stat().st_size > 20000
 
 

@@ -15,6 +15,8 @@ import numpy as np
 
 from rotordyn import analysis
 from rotordyn._common.api import API_CRITICALLY_DAMPED_AF, af_text
+from rotordyn._common.status import CONVERGED
+from rotordyn.analysis.level1 import RESONANT_ZETA
 from rotordyn.model.rotor import Reduction, Support
 
 API_SPEED_FACTOR = 1.25        # API 684: analyse from 0 to at least 125 % of N_mc
@@ -22,6 +24,8 @@ API_UNBALANCE_G_MM = 6350.0    # API 684/617: U = 6350 W / N g·mm (W kg, N rpm)
 API_CLEARANCE_FRACTION = 0.75  # API 617: peak-to-peak ≤ 75 % of the diametral clearance
 SCREEN_LOG_DEC = 0.1           # screening: forward rotor modes in the window δ > 0.1
 LOG_DEC_ROUND_OFF = 1e-6       # |δ| below this is round-off of an undamped mode, not a sign
+# δ of damping ratio 1/√2 (RESONANT_ZETA): a root damped beyond it has no resonance peak
+RESONANT_LOG_DEC = 2.0 * np.pi * RESONANT_ZETA / np.sqrt(1.0 - RESONANT_ZETA ** 2)
 N_SPEEDS = 121                 # grid of the Campbell diagram and the unbalance response
 PAPER_SPEEDS_HZ = np.arange(5.0, 121.0, 1.0)  # the paper's Fig. 12/13 speeds (§6.3)
 
@@ -111,7 +115,10 @@ def api_unbalance(system, n_mc_hz: float, speed_hz: float, pc: float, ay):
     """(station, U kg·m, why): the API unbalance U = 6350 W/N g·mm for the first forward rotor
     mode, W the rotor's whole static load (the journals' loads summed, as API 684 takes for a
     mode with its largest deflection between the bearings), placed at the station of that
-    mode's largest deflection at ``speed_hz``; the largest disk when no mode is found."""
+    mode's largest deflection at ``speed_hz``; the largest disk when no mode is found. The
+    first forward mode is the lowest forward rotor mode with a resonance (damping ratio below
+    1/√2, as API 617 Level I's :func:`rotordyn.level1` judges it): an overdamped rigid-body
+    root of stiff, heavily damped films (tilting pads) has no peak to excite."""
     u_kgm = API_UNBALANCE_G_MM * system.mass_kg / (60.0 * n_mc_hz) * 1e-6
     try:
         st = analysis.stability(system, speed_hz, pc, ay)
@@ -119,7 +126,8 @@ def api_unbalance(system, n_mc_hz: float, speed_hz: float, pc: float, ay):
         st = None
     if st is not None and st.rotor_shapes is not None and len(st.eigenvalues):
         fwd = [j for j in range(len(st.eigenvalues)) if st.whirl[j] == "forward"
-               and st.kind[j] == "rotor" and st.eigenvalues[j].imag > 0]
+               and st.kind[j] == "rotor" and st.eigenvalues[j].imag > 0
+               and st.damping_ratio[j] < RESONANT_ZETA]  # a mode with a resonance
         if fwd:
             j = fwd[0]
             nodes = system.rotor.station_nodes()
@@ -231,28 +239,43 @@ def stability_screen(checks: Checks, c, window_hz: float, op_range) -> np.ndarra
     API 617 Level I with Q_A is :mod:`rotordyn.report.level1`) and no growing forward mode
     over the whole range. Returns the screened δ (n_speeds, n_modes), NaN elsewhere."""
     ld = np.where(c.rotor_mask() & (c.whirl == 1) & (c.frequencies_hz < window_hz)
-                  & (c.frequencies_hz > 0), c.log_dec, np.nan)
+                  & (c.frequencies_hz > 0) & (c.log_dec < RESONANT_LOG_DEC), c.log_dec, np.nan)
     ld = np.where(np.abs(ld) < LOG_DEC_ROUND_OFF, 0.0, ld)
+    conv = _converged_speeds(c)
     if op_range is not None:
         inr = (c.speeds_hz >= op_range[0]) & (c.speeds_hz <= op_range[1])
-        sub = ld[inr]
-        if np.isfinite(sub).any():
-            m = float(np.nanmin(sub))
-            checks.add("stability screening in the operating range", f"forward rotor modes "
-                       f"below {window_hz:.4g} Hz: δ > {SCREEN_LOG_DEC} without cross-coupling "
-                       "(API 617 Level I with Q_A: its own checks)",
-                       f"minimum δ = {m:.3g}", bool(m > SCREEN_LOG_DEC))
-        else:
-            checks.add("stability screening in the operating range", "forward rotor modes "
-                       f"δ > {SCREEN_LOG_DEC}", "no converged point in the range", NOT_RESOLVED)
+        _screen_check(checks, "stability screening in the operating range",
+                      f"forward rotor modes below {window_hz:.4g} Hz: δ > {SCREEN_LOG_DEC} "
+                      "without cross-coupling (API 617 Level I with Q_A: its own checks)",
+                      ld[inr], conv[inr], window_hz, lambda m: m > SCREEN_LOG_DEC, "the range")
+    _screen_check(checks, "no growing forward mode over the speed range",
+                  f"forward rotor modes below {window_hz:.4g} Hz: δ ≥ 0", ld, conv, window_hz,
+                  lambda m: m >= 0, "the speed range")
+    return ld
+
+
+def _converged_speeds(c) -> np.ndarray:
+    """(n_speeds,) True where the Campbell diagram ``c`` has a converged equilibrium."""
+    ps = getattr(c, "point_status", None)
+    if ps is None:
+        return np.full(len(c.speeds_hz), c.status in CONVERGED)
+    return np.isin(np.asarray(ps, dtype=object), CONVERGED)
+
+
+def _screen_check(checks: Checks, name: str, criterion: str, ld, conv, window_hz: float,
+                  passes, where: str) -> None:
+    """One screening check on the screened δ ``ld`` of some speeds: its minimum; or, where
+    speeds converged but no forward rotor mode below ``window_hz`` has a resonance (every
+    one damped beyond ζ = 1/√2, δ ≥ 2π: nothing to grow, as an unstable mode has ζ < 0),
+    PASS saying so; NOT RESOLVED without a converged speed."""
     if np.isfinite(ld).any():
         m = float(np.nanmin(ld))
-        checks.add("no growing forward mode over the speed range", f"forward rotor modes below "
-                   f"{window_hz:.4g} Hz: δ ≥ 0", f"minimum δ = {m:.3g}", bool(m >= 0))
+        checks.add(name, criterion, f"minimum δ = {m:.3g}", bool(passes(m)))
+    elif np.any(conv):
+        checks.add(name, criterion, f"no forward rotor mode with a resonance below "
+                   f"{window_hz:.4g} Hz (all damped beyond δ = 2π) in {where}", True)
     else:
-        checks.add("no growing forward mode over the speed range", "δ ≥ 0",
-                   "no converged point", NOT_RESOLVED)
-    return ld
+        checks.add(name, criterion, f"no converged point in {where}", NOT_RESOLVED)
 
 
 __all__ = ["API_CRITICALLY_DAMPED_AF", "Checks", "NOT_RESOLVED", "SpeedRange", "amplitude_checks",

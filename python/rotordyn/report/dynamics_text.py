@@ -75,7 +75,8 @@ def stability_head(films: str, window_hz: float, thermal: bool) -> list[str]:
     """The heading of the stability block (``thermal``: both films side by side)."""
     on = (" on isothermal and thermal films" if thermal else f" on {films}" if films else "")
     return ["", f"stability{on}: the least damped forward rotor mode below {window_hz:.4g} Hz "
-            "(screened: backward modes and round-off |δ| < 1e-6 left out) at up to 11 speeds; "
+            "(screened: backward modes, roots damped beyond δ = 2π (no resonance) and round-off "
+            "|δ| < 1e-6 left out) at up to 11 speeds; "
             "screening δ > 0.1 in the operating range, δ ≥ 0 over the range"]
 
 

@@ -25,6 +25,7 @@ import numpy as np
 from rotordyn import analysis
 from rotordyn._common.api import af_text
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
+from rotordyn.report.criteria import RESONANT_LOG_DEC
 from rotordyn.report.tables import COEFFICIENT_HEADER, _text_table, coefficient_rows
 
 if TYPE_CHECKING:
@@ -50,7 +51,8 @@ class CriticalShape:
 SOURCE_CAMPBELL = "damped Campbell crossing (1×, forward)"
 SOURCE_PEAK = "unbalance response peak"
 SOURCE_LEAST_DAMPED = ("no critical speed in range: the least damped forward mode at the "
-                       "maximum continuous speed")
+                       "maximum continuous speed (with a resonance below the screening window, "
+                       "else the first one with a resonance)")
 UNSTABLE_NOTE = "(at a linearly unstable speed: not a steady orbit)"
 MERGE_RTOL = 0.05  # a crossing and a peak (or peaks at two stations) this close are one critical
 CRITICAL_COLUMNS = ("speed_hz", "source", "campbell_hz", "log_dec", "peak_hz", "stations",
@@ -222,10 +224,21 @@ def _pick(freqs, whirl, kind, target_hz) -> int | None:
 
 
 def _least_damped(r, kind, below_hz) -> int | None:
-    """The forward rotor mode below ``below_hz`` (Hz) with the smallest log decrement."""
-    ok = [j for j in range(len(r.frequencies_hz)) if r.whirl[j] == "forward"
-          and 0 < r.frequencies_hz[j] < below_hz and (kind is None or kind[j] == "rotor")]
-    return min(ok, key=lambda j: r.log_dec[j]) if ok else None
+    """The forward rotor mode with the smallest log decrement among those with a resonance
+    (δ < 2π, damping ratio below 1/√2) below ``below_hz`` (Hz); else the first (lowest)
+    forward rotor mode with a resonance above it; else the least damped of all below
+    ``below_hz`` — an overdamped root of heavily damped films (δ in the thousands on tilting
+    pads) is drawn only when no mode has a resonance."""
+    fwd = [j for j in range(len(r.frequencies_hz)) if r.whirl[j] == "forward"
+           and r.frequencies_hz[j] > 0 and (kind is None or kind[j] == "rotor")]
+    res = [j for j in fwd if r.log_dec[j] < RESONANT_LOG_DEC]
+    low = [j for j in res if r.frequencies_hz[j] < below_hz]
+    if low:
+        return min(low, key=lambda j: r.log_dec[j])
+    if res:
+        return min(res, key=lambda j: r.frequencies_hz[j])
+    low = [j for j in fwd if r.frequencies_hz[j] < below_hz]
+    return min(low, key=lambda j: r.log_dec[j]) if low else None
 
 
 def shapes_for(system, crit, n_mc_hz: float, window_hz: float, chamber_pressure_pa: float,
@@ -283,7 +296,10 @@ def critical_mode_shapes(system, critical_speeds_hz, chamber_pressure_pa: float,
         ax = r.plot(j, system=system)
         ld = float(r.log_dec[j])
         ld = 0.0 if abs(ld) < 1e-6 else ld
-        if src == SOURCE_LEAST_DAMPED:
+        if src == SOURCE_LEAST_DAMPED and r.frequencies_hz[j] >= least_damped_below_hz:
+            head = (f"no critical speed; first forward mode with a resonance (none below "
+                    f"{least_damped_below_hz:.4g} Hz) at {nc:.4g} Hz")
+        elif src == SOURCE_LEAST_DAMPED:
             head = f"no critical speed; least damped forward mode at {nc:.4g} Hz"
         else:
             how = "1× crossing" if src.startswith(SOURCE_CAMPBELL) else "response peak"

@@ -1,0 +1,43 @@
+"""The report's mode choices on heavily damped films (an overhung pump on tilting pads).
+
+Stiff, heavily damped tilting pads make the pump's rigid-body roots overdamped: at 60 Hz the
+lowest "forward rotor" roots are -329 ± 0.82i 1/s (damping ratio 0.999997, δ ≈ 2500) — no
+resonance peak. The report took them for modes: the API 684 unbalance went to the NDE end
+(station 0) "for the first forward mode (0.1303 Hz)", the stability screening printed
+"minimum δ = 1.47e+03", and the drawn "least damped forward mode" was the δ = 2520 root.
+API 617 Level I (`rotordyn.level1`) already judged only modes with a resonance (damping
+ratio below 1/√2, δ < 2π); the report now uses the same rule: the unbalance goes to the
+station of the first forward mode with a resonance (131 Hz: the impeller, station 3, where
+the mode's deflection is largest), the screening says no mode has a resonance below its
+window, and the drawn mode is that 131 Hz mode (δ ≈ 1).
+"""
+
+from pathlib import Path
+
+import numpy as np
+
+import rotordyn as rd
+from rotordyn.cli import main
+
+PUMP = Path(__file__).parent / "data" / "models" / "pump_overhung_tilting_pad.toml"
+
+
+def test_overdamped_roots_are_not_the_reports_modes(tmp_path):
+    s = rd.System.from_toml(PUMP)
+    st = rd.stability(s, 60.0)
+    fwd = [j for j in range(len(st.eigenvalues)) if st.whirl[j] == "forward"
+           and st.kind[j] == "rotor" and st.eigenvalues[j].imag > 0]
+    # the premise: the lowest forward rotor root has no resonance, a higher one has
+    assert st.damping_ratio[fwd[0]] > 0.99
+    first = next(j for j in fwd if st.damping_ratio[j] < 1 / np.sqrt(2))
+    assert 100.0 < st.frequencies_hz[first] < 200.0
+    d = tmp_path / "rep"
+    assert main(["report", str(PUMP), "--out", str(d), "--operating-speed-hz", "40", "60",
+                 "--speeds-hz", "10:70:20"]) == 0
+    text = (d / "report.txt").read_text()
+    assert (f"at station 3, the largest deflection of the first forward mode "
+            f"({st.frequencies_hz[first]:.4g} Hz at 60 Hz)") in text
+    assert "minimum δ = 1.4" not in text and "log dec 2.5" not in text
+    assert "no forward rotor mode with a resonance below" in text
+    shape = next(ln for ln in text.splitlines() if "critical_mode_1.png" in ln)
+    assert f"forward mode at {st.frequencies_hz[first]:.4g} Hz" in shape, shape
