@@ -512,9 +512,15 @@ def _cmd_unbalance(args) -> int:
                                     zip(u.thermal, _messages(u))]} if u.thermal
                        else {})))
     else:
+        print(repr(u).strip("<>"))  # largest orbit, speeds above the threshold, failed speeds
+        sp = np.asarray(u.speeds_hz)
         for st in u.stations:
-            print(f"station {st}:")
-            print(table_text(u.peaks(st)))
+            pk = u.peaks(st)
+            if pk.empty:
+                print(f"station {st}: no resonance peak over {sp.min():g}–{sp.max():g} Hz")
+            else:
+                print(f"station {st}: {len(pk)} resonance peak(s)")
+                print(table_text(pk))
         _thermal_summary(u.speeds_hz, u.thermal, _messages(u))
     if args.plot:  # one figure per output station (FIG_station<k>.png when several)
         from pathlib import Path
