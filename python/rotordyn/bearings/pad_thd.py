@@ -290,11 +290,14 @@ class PadThdResult:
 
 
 def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_m: float,
-                        whirl_ratio: float | None, tilts=None) -> PadThdResult:
+                        whirl_ratio: float | None, tilts=None, model=None) -> PadThdResult:
     """THD equilibrium of a standalone pad bearing from its ``parts``
     (:class:`rotordyn.bearings._film.SystemParts`, journal x, y = coordinates 0, 1): one C++
     call for the equilibrium (journal, pads) with the pads' energy equations and inlet mixing,
-    then K, C at it with the field frozen. ``tilts(r)`` (optional) gives the pad tilts."""
+    then K, C at it with the field frozen. ``tilts(r)`` (optional) gives the pad tilts.
+    ``model``: the core model over [x, y, pad coordinates] loaded by ``load_n`` instead of
+    the one built from ``parts`` (a tilted journal held in the pads' base films,
+    :mod:`rotordyn.bearings.tilt_thermal`)."""
     from rotordyn.bearings._film import reduce_coefficients, standalone_model
     from rotordyn.bearings.thermal import Oil
 
@@ -308,7 +311,7 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
         raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
     check_carry_over(opts.carry_over)
     n = 2 + parts.n_extra
-    model = standalone_model(parts, load)
+    model = standalone_model(parts, load) if model is None else model
     M, K, C = (np.array(a, dtype=float) for a in (model.M, model.K, model.C))  # structural
     films = model.films
     omega = 2.0 * math.pi * float(speed_hz)
