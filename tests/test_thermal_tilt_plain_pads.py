@@ -269,3 +269,28 @@ def test_plain_equals_the_system_at_the_journal_tilt_and_film_load(model):
                                                  abs=1e-6 * c)
         np.testing.assert_allclose(sa.moment_n_m, ff[list(bc.rot)], rtol=1e-6)
         assert sa.h_min_z_m == pytest.approx(tilt["h_min_z_m"])
+
+
+@pytest.mark.parametrize("model", ["thd", "effective"])
+def test_spherical_pads_pitch_with_the_tilt(model):
+    """Spherical pivots (the pads pitch, a coordinate each, measured from γ = θ·t_k): the
+    tilted thermal equilibrium converges, θ and −θ give opposite moments and the same
+    position, and the frozen-field bearing's pads, re-solved at the returned pose, carry the
+    load (1e-8) with the same moments (1e-7). The pads pitching with the journal carry a
+    tenth of the rocker pads' moment (docs, "Tilting-pad bearings")."""
+    from rotordyn.bearings.tilt_pads import pad_tilted_forces
+
+    b = _pads(tilt=True, pivot_type="spherical")
+    p = b.thermal_equilibrium(**PKW, model=model, theta_y_rad=6e-4)
+    m = b.thermal_equilibrium(**PKW, model=model, theta_y_rad=-6e-4)
+    assert p.status == m.status == "ok"
+    assert (p.x_m, p.y_m) == pytest.approx((m.x_m, m.y_m), abs=1e-9 * b.clearance_m)
+    scale = np.abs(p.moment_n_m).max()
+    np.testing.assert_allclose(p.moment_n_m, -m.moment_n_m, atol=1e-8 * scale)
+    rocker = _pads(tilt=True).thermal_equilibrium(**PKW, model=model, theta_y_rad=6e-4)
+    assert scale < 0.2 * np.abs(rocker.moment_n_m).max()
+    frozen = dataclasses.replace(b, viscosity_field_pa_s=p.viscosity_pa_s)
+    f = pad_tilted_forces(frozen, x_m=p.x_m, y_m=p.y_m, speed_hz=PKW["speed_hz"],
+                          theta_y_rad=6e-4)
+    np.testing.assert_allclose(f.force_n, -np.array(PKW["load_n"]), atol=1e-8 * 1500.0)
+    np.testing.assert_allclose(f.moment_n_m, p.moment_n_m, rtol=1e-7, atol=1e-9 * scale)

@@ -137,8 +137,9 @@ class PadThdResult:
     Fields per pad (N_pad, n_axial + 1): ``temperature_c``, ``viscosity_pa_s`` (the frozen
     field), ``inlet_mask``, ``flows`` (face flows, cell dissipation and area).
 
-    A tilted journal (:meth:`rotordyn.bearings.FixedGeometryBearing.thermal_equilibrium` with
-    ``theta_x_rad``, ``theta_y_rad`` or ``tilt = True``): ``theta_x_rad``, ``theta_y_rad``,
+    A tilted journal (:meth:`rotordyn.bearings.FixedGeometryBearing.thermal_equilibrium` or
+    :meth:`rotordyn.bearings.TiltingPadBearing.thermal_equilibrium` with ``theta_x_rad``,
+    ``theta_y_rad`` or ``tilt = True``): ``theta_x_rad``, ``theta_y_rad``,
     the moments ``moment_n_m`` (Mx, My) N·m, the edge film ``h_min_m`` and its ``h_min_z_m``,
     and ``K4``, ``C4`` (4×4 over x, y, θx, θy, ΔH = −K Δr − C Δṙ) at the frozen field.
 
@@ -178,7 +179,7 @@ class PadThdResult:
     status: str = "ok"
     message: str = ""
     thermal_model: str = "thd"
-    # a tilted journal (fixed-geometry bearings, rotordyn.bearings.tilt_thermal): its tilt
+    # a tilted journal (fixed-geometry, tilting pads; rotordyn.bearings.tilt_thermal): its tilt
     # relative to the bearing (rad), the film moments on it (N·m, about x, y), the edge film
     # (m, and its z) and K, C 4×4 over (x, y, θx, θy) at the frozen field; None untilted
     theta_x_rad: float = 0.0
