@@ -94,7 +94,9 @@ void bind_thermal(py::module_& m) {
       .def_readonly("heat_to_bush_w", &ThermalFilmState::heat_to_bush_w)
       .def_readonly("journal_temperature_c", &ThermalFilmState::journal_temperature_c)
       .def_readonly("max_wall_temperature_c", &ThermalFilmState::max_wall_temperature_c)
-      .def_readonly("wall_temperature_c", &ThermalFilmState::wall_temperature_c);
+      .def_readonly("wall_temperature_c", &ThermalFilmState::wall_temperature_c)
+      .def_readonly("side_temperature_c", &ThermalFilmState::side_temperature_c)
+      .def_readonly("friction_power_w", &ThermalFilmState::friction_power_w);
   py::class_<ThermalSystemResult>(m, "ThermalSystemResult")
       .def_readonly("equilibrium", &ThermalSystemResult::equilibrium)
       .def_readonly("films", &ThermalSystemResult::films)

@@ -47,6 +47,8 @@ bool take_thd_state(const ThdFilmState& ts, const ThermalFilm& tf, const Eigen::
   st.journal_temperature_c = ts.journal_temperature_c;
   st.max_wall_temperature_c = ts.max_wall_temperature_c;
   st.wall_temperature_c = ts.wall_temperature_c;
+  st.side_temperature_c = ts.side_temperature_c;
+  st.friction_power_w = ts.friction_power_w;
   return !(res > tf.thd_options.tol_k);
 }
 

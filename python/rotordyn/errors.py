@@ -39,4 +39,14 @@ class OutputError(InputError):
     errors were before issue 21, so code catching InputError still catches it."""
 
 
-__all__ += ["RotordynWarning", "UnitWarning", "RotordynDeprecationWarning", "OutputError"]
+class ClosedFilmError(InputError):
+    """A bearing's misalignment (``config_theta_x_rad``, ``config_theta_y_rad``) closes a film
+    at an edge for a journal on the housing's axis: a fault of the combination of the
+    misalignment with the bearing's length and clearance, not of a value on its own. An
+    :class:`InputError` (a model is refused with it); a sweep makes a grid point that raises
+    it a row with status ``error`` and this message, and refuses the spec only when every
+    value of the axis raises it (:mod:`rotordyn.sweep.spec`)."""
+
+
+__all__ += ["RotordynWarning", "UnitWarning", "RotordynDeprecationWarning", "OutputError",
+            "ClosedFilmError"]

@@ -178,6 +178,9 @@ struct ThermalFilmState {
   double heat_to_journal_w = 0.0, heat_to_bush_w = 0.0;
   double journal_temperature_c = 0.0, max_wall_temperature_c = 0.0;
   RowMatrixXd wall_temperature_c;
+  /// THD films: the mixing-cup temperature of the side leakage (degC) and the Reynolds
+  /// solution's friction power torque·|ω| (W) (ThdFilmState); 0 for effective films.
+  double side_temperature_c = 0.0, friction_power_w = 0.0;
 };
 
 struct ThermalSystemResult {

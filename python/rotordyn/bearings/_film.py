@@ -32,7 +32,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import plausibility
 from rotordyn._common import validate as v
-from rotordyn.errors import InputError
+from rotordyn.errors import ClosedFilmError, InputError
 
 CAVITATION_MODELS = ("none", "gumbel", "reynolds", "jfo")
 # Turbulent lubrication models (C++ core, docs/film-physics.md): "laminar" or "ng_pan"
@@ -112,7 +112,7 @@ def check_tilt_fields(b, where: str) -> None:
     tx, ty = tilt_fields(b, where)
     edge = math.hypot(tx, ty) * 0.5 * b.length_m
     if not edge < b.clearance_m:
-        raise InputError(
+        raise ClosedFilmError(
             f"{where}.config_theta_x_rad, config_theta_y_rad: the misalignment closes the film"
             f" at an edge (|theta|·L/2 = {edge:g} m); expected sqrt(theta_x² + theta_y²)·"
             f"length_m/2 < clearance_m = {b.clearance_m:g} m")

@@ -46,7 +46,7 @@ from rotordyn.bearings._film import (SystemParts, check_arc, check_film_fields, 
 from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.bearings.pad_thd import (freeze_fields, pad_fields, pad_model_options,
                                         pad_thd_equilibrium)
-from rotordyn.errors import InputError
+from rotordyn.errors import ClosedFilmError, InputError
 
 KINDS = {  # n lobes, orientation deg, preload, offset
     "partial_arc": (1, 270.0, 0.0, 0.5),
@@ -163,7 +163,7 @@ class FixedGeometryBearing:
                              f"(film_model = 'finite'), got {self.film_model!r}")
         h, z = self.edge_film(0.0, 0.0, tx, ty)
         if not h > 0.0:
-            raise InputError(
+            raise ClosedFilmError(
                 f"{where}.config_theta_x_rad, config_theta_y_rad: the misalignment closes a "
                 f"lobe's film at the edge z = {z:+g} m (minimum film {h:g} m); expected a "
                 f"misalignment whose edge film stays > 0 (for a 360° arc without preload: "

@@ -458,7 +458,9 @@ class JournalBearing:
     def thermal_equilibrium(self, *, load_n: Sequence[float], speed_hz: float, oil: Oil,
                             supply_temperature_c: float, supply_flow_m3_s: float = 0.0,
                             carry_over: float = 0.0, effective_factor: float = 0.5,
-                            tol_k: float = 1e-6, model: str = "effective", **thd):
+                            tol_k: float = 1e-6, model: str = "effective",
+                            theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
+                            tilt: bool = False, **thd):
         """Effective-temperature (thermal) equilibrium under ``load_n`` (N) at ``speed_hz``:
         the film is isoviscous at μ(T_eff) of ``oil`` (:class:`rotordyn.bearings.Oil`), T_eff
         from a global heat balance with the supply at ``supply_temperature_c`` (°C), the fresh
@@ -473,7 +475,11 @@ class JournalBearing:
         the temperature field from the energy equation, μ(T) per node; ``effective_factor`` is
         not used; keyword options ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` (W/(m² K), 0:
         adiabatic), ``journal_temperature_c``, ``bush_temperature_c`` (None: the supply
-        temperature). Returns a :class:`rotordyn.bearings.thd.ThdEquilibriumResult`."""
+        temperature). Returns a :class:`rotordyn.bearings.thd.ThdEquilibriumResult`.
+
+        ``theta_x_rad``, ``theta_y_rad`` (rad), or ``tilt=True``: the journal tilted relative
+        to the bearing (:func:`rotordyn.bearings.tilt_thermal.plain_tilted_thermal_equilibrium`:
+        adds the moments, edge film and K4, C4 at the frozen temperature)."""
         opts = film_thermal_options(model, thd, supply_temperature_c=supply_temperature_c,
                                     supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
                                     effective_factor=effective_factor, tol_k=tol_k)
@@ -481,6 +487,13 @@ class JournalBearing:
         f = _speed(speed_hz)
         if f == 0.0:
             raise InputError("speed_hz: the thermal equilibrium needs 0 < |speed_hz| <= 1e5, got 0")
+        tx, ty = _finite(theta_x_rad, "theta_x_rad"), _finite(theta_y_rad, "theta_y_rad")
+        if v.boolean("tilt", tilt) or tx != 0.0 or ty != 0.0:
+            from rotordyn.bearings.tilt_thermal import plain_tilted_thermal_equilibrium
+
+            return plain_tilted_thermal_equilibrium(self, theta_x_rad=tx, theta_y_rad=ty,
+                                                    oil=oil, opts=opts, load_n=load,
+                                                    speed_hz=f)
         s = getattr(self._local, "thermal_solver", None)
         if s is None:  # its own solver: the thermal iteration changes its viscosity
             g, grid = self.to_core()

@@ -137,8 +137,9 @@ class PadThdResult:
     Fields per pad (N_pad, n_axial + 1): ``temperature_c``, ``viscosity_pa_s`` (the frozen
     field), ``inlet_mask``, ``flows`` (face flows, cell dissipation and area).
 
-    A tilted journal (:meth:`rotordyn.bearings.FixedGeometryBearing.thermal_equilibrium` with
-    ``theta_x_rad``, ``theta_y_rad`` or ``tilt = True``): ``theta_x_rad``, ``theta_y_rad``,
+    A tilted journal (:meth:`rotordyn.bearings.FixedGeometryBearing.thermal_equilibrium` or
+    :meth:`rotordyn.bearings.TiltingPadBearing.thermal_equilibrium` with ``theta_x_rad``,
+    ``theta_y_rad`` or ``tilt = True``): ``theta_x_rad``, ``theta_y_rad``,
     the moments ``moment_n_m`` (Mx, My) N·m, the edge film ``h_min_m`` and its ``h_min_z_m``,
     and ``K4``, ``C4`` (4×4 over x, y, θx, θy, ΔH = −K Δr − C Δṙ) at the frozen field.
 
@@ -178,7 +179,7 @@ class PadThdResult:
     status: str = "ok"
     message: str = ""
     thermal_model: str = "thd"
-    # a tilted journal (fixed-geometry bearings, rotordyn.bearings.tilt_thermal): its tilt
+    # a tilted journal (fixed-geometry, tilting pads; rotordyn.bearings.tilt_thermal): its tilt
     # relative to the bearing (rad), the film moments on it (N·m, about x, y), the edge film
     # (m, and its z) and K, C 4×4 over (x, y, θx, θy) at the frozen field; None untilted
     theta_x_rad: float = 0.0
@@ -290,11 +291,14 @@ class PadThdResult:
 
 
 def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_m: float,
-                        whirl_ratio: float | None, tilts=None) -> PadThdResult:
+                        whirl_ratio: float | None, tilts=None, model=None) -> PadThdResult:
     """THD equilibrium of a standalone pad bearing from its ``parts``
     (:class:`rotordyn.bearings._film.SystemParts`, journal x, y = coordinates 0, 1): one C++
     call for the equilibrium (journal, pads) with the pads' energy equations and inlet mixing,
-    then K, C at it with the field frozen. ``tilts(r)`` (optional) gives the pad tilts."""
+    then K, C at it with the field frozen. ``tilts(r)`` (optional) gives the pad tilts.
+    ``model``: the core model over [x, y, pad coordinates] loaded by ``load_n`` instead of
+    the one built from ``parts`` (a tilted journal held in the pads' base films,
+    :mod:`rotordyn.bearings.tilt_thermal`)."""
     from rotordyn.bearings._film import reduce_coefficients, standalone_model
     from rotordyn.bearings.thermal import Oil
 
@@ -308,7 +312,7 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
         raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
     check_carry_over(opts.carry_over)
     n = 2 + parts.n_extra
-    model = standalone_model(parts, load)
+    model = standalone_model(parts, load) if model is None else model
     M, K, C = (np.array(a, dtype=float) for a in (model.M, model.K, model.C))  # structural
     films = model.films
     omega = 2.0 * math.pi * float(speed_hz)

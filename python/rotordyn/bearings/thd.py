@@ -20,7 +20,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings.thd_walls import WALL_OPTIONS, check_walls, set_walls
-from rotordyn.bearings.thermal import thermal_options
+from rotordyn.bearings.thermal import thermal_options, tilt_columns
 from rotordyn.errors import InputError
 
 THERMAL_MODELS = ("effective", "thd")
@@ -72,7 +72,8 @@ class ThdEquilibriumResult:
     heat crosses; :mod:`rotordyn.bearings.thd_walls`).
     Fields (n_circ, n_axial + 1): ``temperature_c``, ``viscosity_pa_s`` (the field K, C and the
     equilibrium used), ``inlet_mask``, ``wall_temperature_c`` (the bush surface). K (N/m),
-    C (N·s/m) 2×2 with dF = −K dq − C dq̇.
+    C (N·s/m) 2×2 with dF = −K dq − C dq̇. A tilted journal: the tilt fields of
+    :class:`rotordyn.bearings.ThermalEquilibriumResult` (moments, edge film, K4, C4).
     """
 
     speed_hz: float
@@ -106,6 +107,15 @@ class ThdEquilibriumResult:
     wall_temperature_c: np.ndarray = field(repr=False, default=None)
     status: str = "ok"
     message: str = ""
+    # a tilted journal (rotordyn.bearings.tilt_thermal), as ThermalEquilibriumResult's
+    theta_x_rad: float = 0.0
+    theta_y_rad: float = 0.0
+    moment_n_m: np.ndarray | None = field(default=None, repr=False)
+    h_min_m: float = math.nan
+    h_min_angle_deg: float = math.nan
+    h_min_z_m: float = math.nan
+    K4: np.ndarray | None = field(default=None, repr=False)
+    C4: np.ndarray | None = field(default=None, repr=False)
 
     def __repr__(self) -> str:
         return (f"ThdEquilibriumResult(T_max={self.max_temperature_c:.2f} degC, "
@@ -131,6 +141,7 @@ class ThdEquilibriumResult:
             for i, a in enumerate("xy"):
                 for j, b in enumerate("xy"):
                     row[f"{name}{a}{b}_{unit}"] = float(A[i, j])
+        row.update(tilt_columns(self))
         row.update(iterations=self.iterations, status=self.status, message=self.message)
         return pd.DataFrame([row])
 
@@ -205,13 +216,7 @@ def film_thermal_options(model: str, thd: dict, *, supply_temperature_c: float,
     unknown = set(thd) - {"journal_htc_w_m2k", "bush_htc_w_m2k",
                           "journal_temperature_c", "bush_temperature_c", *WALL_OPTIONS}
     if unknown:
-        key = sorted(unknown)[0]
-        if key in ("theta_x_rad", "theta_y_rad"):
-            raise InputError(f"{key}: a tilted journal's standalone thermal equilibrium is "
-                             "FixedGeometryBearing.thermal_equilibrium's; plain and "
-                             "tilting-pad bearings with tilt = true take a thermal model in a "
-                             "system (rotordyn.system_thermal_equilibrium)")
-        raise InputError(f"{key}: not an option of the thermal equilibrium")
+        raise InputError(f"{sorted(unknown)[0]}: not an option of the thermal equilibrium")
     if model == "effective":
         if thd:
             raise InputError(f"{sorted(thd)[0]}: an option of model='thd' only")

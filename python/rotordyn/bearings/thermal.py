@@ -12,7 +12,7 @@ entry point and returns a :class:`ThermalEquilibriumResult`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -88,6 +88,9 @@ class ThermalEquilibriumResult:
     Temperatures °C; ``temperature_rise_k`` ΔT (K); flows m³/s (``film_flow_m3_s`` Q across
     the line of maximum film, ``side_flow_m3_s`` Q_s, ``supply_flow_m3_s`` the fresh oil);
     ``power_loss_w`` the friction power; K (N/m), C (N·s/m) 2×2 with dF = −K dq − C dq̇.
+    A tilted journal (``thermal_equilibrium(..., theta_x_rad, theta_y_rad)``): the tilt, the
+    moments ``moment_n_m`` (N·m), the edge film ``h_min_m`` at ``h_min_angle_deg``,
+    ``h_min_z_m`` and ``K4``, ``C4`` (4×4 over x, y, θx, θy) at the frozen temperature.
     """
 
     speed_hz: float
@@ -110,6 +113,17 @@ class ThermalEquilibriumResult:
     iterations: int
     status: str = "ok"
     message: str = ""
+    # a tilted journal (rotordyn.bearings.tilt_thermal): its tilt relative to the bearing
+    # (rad), the film moments on it (N·m, about x, y), the edge film (m, its angle deg and z m)
+    # and K, C 4×4 over (x, y, θx, θy) at the frozen temperature; None untilted
+    theta_x_rad: float = 0.0
+    theta_y_rad: float = 0.0
+    moment_n_m: np.ndarray | None = field(default=None, repr=False)
+    h_min_m: float = math.nan
+    h_min_angle_deg: float = math.nan
+    h_min_z_m: float = math.nan
+    K4: np.ndarray | None = field(default=None, repr=False)
+    C4: np.ndarray | None = field(default=None, repr=False)
 
     def __repr__(self) -> str:
         return (f"ThermalEquilibriumResult(T_eff={self.effective_temperature_c:.2f} degC, "
@@ -138,8 +152,19 @@ class ThermalEquilibriumResult:
             for i, a in enumerate("xy"):
                 for j, b in enumerate("xy"):
                     row[f"{name}{a}{b}_{unit}"] = float(A[i, j])
+        row.update(tilt_columns(self))
         row.update(iterations=self.iterations, status=self.status, message=self.message)
         return pd.DataFrame([row])
+
+
+def tilt_columns(res) -> dict:
+    """A tilted plain film's columns (none untilted): its tilt, moments and edge film."""
+    if res.K4 is None:
+        return {}
+    return {"theta_x_rad": res.theta_x_rad, "theta_y_rad": res.theta_y_rad,
+            "moment_x_n_m": float(res.moment_n_m[0]), "moment_y_n_m": float(res.moment_n_m[1]),
+            "h_min_m": res.h_min_m, "h_min_angle_deg": res.h_min_angle_deg,
+            "h_min_z_m": res.h_min_z_m}
 
 
 def thermal_options(*, supply_temperature_c, supply_flow_m3_s=0.0, carry_over=0.0,

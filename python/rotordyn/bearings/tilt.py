@@ -42,6 +42,8 @@ from rotordyn.bearings.active import ActiveJournalBearing
 from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
 from rotordyn.bearings.fluid_film import FluidFilmBearing
 from rotordyn.bearings.journal import MAX_SPEED_HZ, JournalBearing
+from rotordyn.bearings.tilt_film import (axial_positions, check_plain_pose,  # noqa: F401
+                                         edge_eccentricity, tilt_coupling)
 from rotordyn.bearings.tilt_pads import (pad_misaligned_equilibrium, pad_tilted_coefficients,
                                          pad_tilted_forces)
 from rotordyn.bearings.tilting_pad import TiltingPadBearing
@@ -51,46 +53,6 @@ TWO_PI = 2.0 * math.pi
 FilmBearing = JournalBearing | FixedGeometryBearing | TiltingPadBearing | FluidFilmBearing
 COORDINATES = ("x", "y", "theta_x", "theta_y")
 MAX_ANGULAR_VELOCITY_RAD_S = 1e5
-
-
-def axial_positions(bearing: JournalBearing) -> np.ndarray:
-    """z of the grid's node rows, m, (n_axial + 1,), z = 0 the bearing's mid-plane."""
-    return np.linspace(-0.5 * bearing.length_m, 0.5 * bearing.length_m, bearing.n_axial + 1)
-
-
-def tilt_coupling(bearing: JournalBearing | FluidFilmBearing, coords: Sequence[int],
-                  name: str = "", base_h: np.ndarray | None = None) -> _core.FilmCoupling:
-    """The film of ``bearing`` on four system coordinates (x, y, θx, θy) = ``coords``:
-    shape (n_circ, 4) = (−cos φ, −sin φ, sin φ, −cos φ), axial weights (4, n_axial + 1) =
-    (1, 1, z, z). ``base_h`` (n_circ, n_axial + 1) replaces the clearance (misalignment
-    imposed through the thickness). A :class:`FluidFilmBearing`'s frozen viscosity field
-    (``viscosity_field_pa_s``) is the film's, as in a system."""
-    film = bearing.journal_bearing() if isinstance(bearing, FluidFilmBearing) else bearing
-    g, grid = film.to_core()
-    f = _core.FilmCoupling()
-    f.name = name or "bearing"
-    f.geometry, f.grid, f.cavitation = g, grid, bearing.cavitation
-    f.coords = [int(c) for c in coords]
-    phi = TWO_PI * np.arange(bearing.n_circ) / bearing.n_circ
-    c, s = np.cos(phi), np.sin(phi)
-    f.shape = np.ascontiguousarray(np.column_stack([-c, -s, s, -c]))
-    z = axial_positions(bearing)
-    f.axial_weight = np.ascontiguousarray(np.vstack([np.ones_like(z), np.ones_like(z), z, z]))
-    if base_h is not None:
-        f.base_h = np.ascontiguousarray(base_h, dtype=float)
-    vf = getattr(bearing, "viscosity_field_pa_s", None)
-    if vf is not None:
-        f.viscosity_field = np.asarray(vf, dtype=float)
-    return f
-
-
-def edge_eccentricity(bearing: JournalBearing, x: float, y: float, theta_x: float,
-                      theta_y: float) -> float:
-    """Largest eccentricity ratio of the journal axis over the bearing length (at an edge:
-    the axis is straight, so the largest one is at z = ±L/2)."""
-    hl = 0.5 * bearing.length_m
-    return max(math.hypot(x + theta_y * z, y - theta_x * z) for z in (-hl, hl)) \
-        / bearing.clearance_m
 
 
 def check_pose(bearing: JournalBearing, x_m, y_m, theta_x_rad, theta_y_rad,
@@ -107,16 +69,7 @@ def check_pose(bearing: JournalBearing, x_m, y_m, theta_x_rad, theta_y_rad,
                 f"z = {z:+g} m (minimum film {h:.6g} m); expected a pose whose film stays > 0 "
                 f"over the lobes at z = ±L/2")
         return vals
-    hl = 0.5 * bearing.length_m
-    for z in (-hl, hl):
-        e = math.hypot(x + ty * z, y - tx * z) / bearing.clearance_m
-        if not e < 1.0:
-            raise InputError(
-                f"{names[2]}, {names[3]}: the tilted journal closes the film at the edge "
-                f"z = {z:+g} m (edge eccentricity ratio {e:.6g}); expected an edge eccentricity"
-                f" ratio < 1, i.e. |(x + theta_y z, y - theta_x z)| < clearance_m ="
-                f" {bearing.clearance_m:g} m at z = ±L/2")
-    return vals
+    return check_plain_pose(bearing, x, y, tx, ty, names)
 
 
 def film_bearing(bearing):

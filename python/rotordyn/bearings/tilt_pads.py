@@ -34,7 +34,6 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import reduce_coefficients, speed_limit
-from rotordyn.bearings.tilting_pad import TiltingPadBearing
 from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
@@ -45,7 +44,7 @@ class _Layout:
     """The bearing's pads on [x, y, θx, θy, pad coordinates]: films, structural K, M and the
     pad groups; a film solver over all of them (model A); the pitch offsets' geometry."""
 
-    def __init__(self, b: TiltingPadBearing):
+    def __init__(self, b):  # b: a TiltingPadBearing (not imported: its class calls this module)
         self.b = b
         self.parts = p = b.system_parts(0, 1, N_JOURNAL, b.name or "bearing", rot=(2, 3))
         self.n = n = p.n_extra
@@ -147,7 +146,7 @@ class _Layout:
 _local = threading.local()
 
 
-def _layout(b: TiltingPadBearing) -> _Layout:
+def _layout(b) -> _Layout:
     """This thread's layout of ``b`` (a few bearings kept)."""
     cache = getattr(_local, "cache", None)
     if cache is None:
@@ -167,7 +166,7 @@ def _options(tol: float) -> "_core.EquilibriumOptions":
     return opt
 
 
-def check_pad_pose(b: TiltingPadBearing, x_m, y_m, theta_x_rad, theta_y_rad,
+def check_pad_pose(b, x_m, y_m, theta_x_rad, theta_y_rad,
                    names=("x_m", "y_m", "theta_x_rad", "theta_y_rad")) -> tuple[float, ...]:
     """Finite coordinates whose journal leaves every pad's film open at both edges with the
     pads untilted (and spherical pads pitched to the journal): InputError naming the field."""
@@ -181,7 +180,7 @@ def check_pad_pose(b: TiltingPadBearing, x_m, y_m, theta_x_rad, theta_y_rad,
     return vals
 
 
-def _speed(b: TiltingPadBearing, speed_hz) -> float:
+def _speed(b, speed_hz) -> float:
     f = v.finite("speed_hz", speed_hz)
     top, why = speed_limit(_layout(b).parts.films)
     if f == 0.0 or abs(f) > top:
@@ -190,7 +189,7 @@ def _speed(b: TiltingPadBearing, speed_hz) -> float:
     return f
 
 
-def _pad_equilibrium(b: TiltingPadBearing, pose: np.ndarray, omega: float, tol: float):
+def _pad_equilibrium(b, pose: np.ndarray, omega: float, tol: float):
     """(r over [pose, pads], equilibrium result of the pads): each pad balanced for the held
     pose (a failure raises ConvergenceError with the core's message)."""
     lay = _layout(b)
@@ -263,7 +262,7 @@ def _film_at(lay: _Layout, r_full: np.ndarray, omega: float, unloaded: int) -> P
                          r=r_full.copy(), unloaded_pads=int(unloaded))
 
 
-def pad_tilted_forces(b: TiltingPadBearing, *, x_m: float, y_m: float, speed_hz: float,
+def pad_tilted_forces(b, *, x_m: float, y_m: float, speed_hz: float,
                       theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
                       tol: float = 1e-10) -> PadTiltedFilm:
     """Forces and moments on a journal held at (x, y) m tilted by (θx, θy) rad, every pad at
@@ -274,7 +273,7 @@ def pad_tilted_forces(b: TiltingPadBearing, *, x_m: float, y_m: float, speed_hz:
     return _film_at(_layout(b), r, w, e.unloaded_pads)
 
 
-def pad_tilted_coefficients(b: TiltingPadBearing, *, x_m: float, y_m: float, speed_hz: float,
+def pad_tilted_coefficients(b, *, x_m: float, y_m: float, speed_hz: float,
                             theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
                             whirl_ratio: float | None = 1.0, method: str = "perturbation",
                             rel_step: float = 1e-6, full: bool = False):
@@ -349,7 +348,7 @@ class PadMisalignedEquilibrium:
             "h_min_z_m": self.h_min_z_m, "status": self.status, "message": self.message}])
 
 
-def pad_misaligned_equilibrium(b: TiltingPadBearing, *, load_n, speed_hz: float,
+def pad_misaligned_equilibrium(b, *, load_n, speed_hz: float,
                                theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
                                tol: float = 1e-10, coefficients: bool = False,
                                whirl_ratio: float | None = 1.0) -> PadMisalignedEquilibrium:

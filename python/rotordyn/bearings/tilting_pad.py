@@ -48,7 +48,7 @@ from rotordyn.bearings._film import (SystemParts, check_arc, check_film_fields, 
 from rotordyn.bearings.coefficients import coefficient_table
 from rotordyn.bearings.pad_thd import (freeze_fields, pad_fields, pad_model_options,
                                         pad_thd_equilibrium)
-from rotordyn.errors import InputError
+from rotordyn.errors import ClosedFilmError, InputError
 
 
 @dataclass(frozen=True, slots=True)
@@ -151,7 +151,7 @@ class TiltingPadBearing:
         tx, ty = tilt_fields(self, where)
         h, z, k = self.edge_film(0.0, 0.0, tx, ty)
         if not h > 0.0:
-            raise InputError(
+            raise ClosedFilmError(
                 f"{where}.config_theta_x_rad, config_theta_y_rad: the misalignment closes pad "
                 f"{k}'s film at the edge z = {z:+g} m (minimum film {h:g} m with the pads "
                 f"untilted{' and pitched to the journal' if self.pitch else ''}); expected a "
@@ -341,7 +341,8 @@ class TiltingPadBearing:
                             journal_temperature_c: float | None = None,
                             bush_temperature_c: float | None = None, tol_k: float = 1e-6,
                             model: str = "thd", effective_factor: float = 0.5,
-                            whirl_ratio: float | None = 1.0, **walls):
+                            whirl_ratio: float | None = 1.0, theta_x_rad: float = 0.0,
+                            theta_y_rad: float = 0.0, **walls):
         """Thermo-hydrodynamic equilibrium under ``load_n`` (N) at ``speed_hz``: per pad the
         energy equation, μ(T) per node of ``oil`` (:class:`rotordyn.bearings.Oil`), the
         inlet of each pad mixing supply oil at ``supply_temperature_c`` °C with the part
@@ -363,7 +364,14 @@ class TiltingPadBearing:
         ``wall_htc``, ``journal_wall = "balance"`` — one journal temperature from the heat
         balance over all pads —, ``bush_wall = "conduction"`` with the pad's
         ``bush_thickness_m``, ``bush_conductivity_w_per_m_k``, ``back_htc_w_m2k``,
-        ``back_temperature_c``)."""
+        ``back_temperature_c``).
+
+        ``theta_x_rad``, ``theta_y_rad``: the journal's tilt relative to the bearing (rad; as
+        :func:`rotordyn.bearings.tilt.misaligned_equilibrium`; a tilt closing a pad's film at
+        an edge is an InputError naming them). With a tilt, or with ``tilt = True``, the
+        pads' films carry it (:func:`rotordyn.bearings.tilt_thermal.
+        pad_tilted_thermal_equilibrium`) and the result adds the moments, the edge film and
+        K4, C4 (4×4 over x, y, θx, θy) at the frozen fields."""
         if whirl_ratio is not None:
             v.finite("whirl_ratio", whirl_ratio)
         opts = pad_model_options(model, supply_temperature_c=supply_temperature_c,
@@ -373,6 +381,13 @@ class TiltingPadBearing:
                                  bush_htc_w_m2k=bush_htc_w_m2k,
                                  journal_temperature_c=journal_temperature_c,
                                  bush_temperature_c=bush_temperature_c, **walls)
+        tx, ty = v.finite("theta_x_rad", theta_x_rad), v.finite("theta_y_rad", theta_y_rad)
+        if self.tilt or tx != 0.0 or ty != 0.0:
+            from rotordyn.bearings.tilt_thermal import pad_tilted_thermal_equilibrium
+
+            return pad_tilted_thermal_equilibrium(self, theta_x_rad=tx, theta_y_rad=ty,
+                                                  oil=oil, opts=opts, load_n=load_n,
+                                                  speed_hz=speed_hz, whirl_ratio=whirl_ratio)
         parts = self.system_parts(0, 1, 2, self.name or "bearing")
         return pad_thd_equilibrium(parts, oil=oil, opts=opts, load_n=load_n, speed_hz=speed_hz,
                                    clearance_m=self.clearance_m, whirl_ratio=whirl_ratio,

@@ -14,7 +14,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from rotordyn.errors import InputError
+from rotordyn.errors import ClosedFilmError, InputError
 
 
 def _fields(obj) -> list[str]:
@@ -109,8 +109,9 @@ def set_field(system, path: str, value, where: str = "grid"):
         raise InputError(f"{where}.{path}: expected a finite number, got {value!r}")
     try:
         return _set(system, path.split("."), value, "")
-    except InputError as exc:
-        raise InputError(f"{where}.{path}: {exc}") from None
+    except InputError as exc:  # a closed film stays one (a sweep makes it that point's row)
+        cls = ClosedFilmError if isinstance(exc, ClosedFilmError) else InputError
+        raise cls(f"{where}.{path}: {exc}") from None
     except (TypeError, ValueError) as exc:
         raise InputError(f"{where}.{path}: {exc}") from None
 

@@ -26,7 +26,7 @@ import numpy as np
 
 from rotordyn.analysis.continuation import METHODS as CONTINUATION_METHODS
 from rotordyn.analysis.continuation import NEWTON_MODES
-from rotordyn.errors import InputError
+from rotordyn.errors import ClosedFilmError, InputError
 from rotordyn._common import validate as v
 from rotordyn.model import builtin as models
 from rotordyn.sweep import robust_rows as rr
@@ -231,7 +231,10 @@ def _check_model_axis(system, name: str, vals: list) -> None:
     smallest, the largest and CHECK_ALL evenly spaced distinct values between (the model's
     checks bound one field at a time; a value they would still reject becomes that point's
     ``error`` row, never a crash). The error names ``grid.<name>[i]``, i the first index
-    holding the rejected value."""
+    holding the rejected value. A value whose bearing misalignment closes a film
+    (:class:`rotordyn.errors.ClosedFilmError`, a combination of fields) is that point's
+    ``error`` row with the message; the spec is refused only when every checked value
+    closes it."""
     from rotordyn.sweep.paths import get_field, set_field
 
     arr = np.asarray(vals, dtype=float)
@@ -250,13 +253,19 @@ def _check_model_axis(system, name: str, vals: list) -> None:
     else:
         pick = np.unique(np.linspace(0, len(uniq) - 1, CHECK_ALL).round().astype(int))
     head = f"grid.{name}: "
+    closed = []  # (index, message) of the values whose misalignment closes a film
     for k in pick:
         i = int(first[k])
         try:
             set_field(system, name, vals[i])
+        except ClosedFilmError as exc:  # that point's row (status error), not the spec
+            closed.append((i, str(exc).removeprefix(head)))
         except InputError as exc:
             msg = str(exc).removeprefix(head)
             raise InputError(f"grid.{name}[{i}]: {msg}") from None
+    if closed and len(closed) == len(pick):
+        i, msg = min(closed)  # the first grid index
+        raise InputError(f"grid.{name}[{i}]: {msg} (every value of the axis closes the film)")
 
 
 def boundary_axes(spec) -> tuple[str, ...]:
