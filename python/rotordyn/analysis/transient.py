@@ -286,6 +286,8 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     if adaptive is not None:
         Cm, _ = measurement_matrix(system, adaptive.measurements)
         inp.adaptive = adaptive.to_core(Cm, Cm @ np.concatenate([r_eq, np.zeros(n)]))
+    tb = [bc for bc in asm.bearings if bc.rot]  # tilting films: their moments recorded
+    inp.record_film_force = [j for bc in tb for j in bc.rot[:2]]
     res = _core.integrate(asm.solver, inp, opt)
     r = np.asarray(res.r)
     status, message = res.status, res.message
@@ -307,6 +309,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
         actuator_states=np.asarray(res.actuator_states),
         controller_states=np.asarray(res.controller_states),
         adaptive_states=np.asarray(res.adaptive_states),
+        **_tilt_histories(bcs, r, np.asarray(res.film_force)),
         equilibrium_r=r_eq,
         stats={"steps": res.steps, "rhs_evals": res.rhs_evals, "jac_evals": res.jac_evals,
                "newton_fails": res.newton_fails, "error_test_fails": res.error_test_fails,
@@ -316,3 +319,24 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
                "reynolds_iterations": res.reynolds_iterations},
         status=start_status if status == "ok" else status,
         message="; ".join(m for m in (start_note, message) if m))
+
+
+def _tilt_histories(bcs, r, ff) -> dict:
+    """The tilting films' journal rotations relative to the housing (rad) and moments on the
+    journal (N·m) at each output, (n_t, n_bearings), NaN for a bearing without a tilting film
+    (``ff``: the core's recorded H at the rotations, in bearing order); {} without one."""
+    if not any(bc.rot for bc in bcs):
+        return {}
+    nt = r.shape[0]
+    out = {k: np.full((nt, len(bcs)), np.nan) for k in (
+        "journal_theta_x_rad", "journal_theta_y_rad", "film_moment_x_n_m", "film_moment_y_n_m")}
+    q = 0
+    for b, bc in enumerate(bcs):
+        if not bc.rot:
+            continue
+        out["journal_theta_x_rad"][:, b] = r[:, bc.rot[0]]
+        out["journal_theta_y_rad"][:, b] = r[:, bc.rot[1]]
+        out["film_moment_x_n_m"][:, b] = ff[:, q]
+        out["film_moment_y_n_m"][:, b] = ff[:, q + 1]
+        q += 2
+    return out
