@@ -108,7 +108,8 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               controller=None, measurements=None, measurement_offset=None,
               atol_pa: float = 1.0,
               max_step_s: float = 0.0, rub_fraction: float = 1e-3,
-              max_cost_s: float = MAX_COST_S, adaptive=None) -> TransientResult:
+              max_cost_s: float = MAX_COST_S, adaptive=None,
+              record_film_moments: bool = True) -> TransientResult:
     """Integrate eq. 12 from t = 0 to ``t_end_s``.
 
     The start is the static equilibrium (eq. 14) with the journal of the active (or only)
@@ -139,6 +140,10 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     command (two more CVODE states, the coefficient P of Re(P e^{iθ})) added to the command;
     its measurements relative to their value at the starting equilibrium. Its speed grid
     must cover the run (InputError naming ``adaptive.speeds_hz``).
+
+    Tilting films (``tilt = true``): the result carries the journal's rotations at their
+    bearings and, with ``record_film_moments`` (default), the films' moments at every output
+    (one more film solve per output after the run; False: NaN moments, no extra solve).
 
     Budget (checked before anything is solved): a discrete controller restarts CVODE at each
     sample; a run estimated above ``max_cost_s`` (default 600 s; ``math.inf``: no limit) is an
@@ -287,7 +292,10 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
         Cm, _ = measurement_matrix(system, adaptive.measurements)
         inp.adaptive = adaptive.to_core(Cm, Cm @ np.concatenate([r_eq, np.zeros(n)]))
     tb = [bc for bc in asm.bearings if bc.rot]  # tilting films: their moments recorded
-    inp.record_film_force = [j for bc in tb for j in bc.rot[:2]]
+    if not isinstance(record_film_moments, (bool, np.bool_)):
+        raise InputError(f"record_film_moments: expected True or False, got "
+                         f"{record_film_moments!r}")
+    inp.record_film_force = [j for bc in tb for j in bc.rot[:2]] if record_film_moments else []
     res = _core.integrate(asm.solver, inp, opt)
     r = np.asarray(res.r)
     status, message = res.status, res.message
@@ -328,6 +336,8 @@ def _tilt_histories(bcs, r, ff) -> dict:
     if not any(bc.rot for bc in bcs):
         return {}
     nt = r.shape[0]
+    if ff.shape[1] == 0:  # moments not recorded (record_film_moments=False)
+        ff = np.full((nt, 2 * sum(1 for bc in bcs if bc.rot)), np.nan)
     out = {k: np.full((nt, len(bcs)), np.nan) for k in (
         "journal_theta_x_rad", "journal_theta_y_rad", "film_moment_x_n_m", "film_moment_y_n_m")}
     q = 0
