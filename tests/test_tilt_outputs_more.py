@@ -171,3 +171,63 @@ def test_report_prints_the_coupling_blocks():
     assert not set(TILT_COLUMNS) & set(fu)
     tu = "\n".join(coefficient_text_lines(fu))
     assert "tilting" not in tu and "kxx (MN/m)" in tu
+
+
+def test_tilting_pad_coupling_blocks_are_the_standalone_pads():
+    """Pads condensed at synchronous whirl onto (x, y, θx, θy) in the system equal the
+    standalone pads' `tilted_coefficients` (pads at their equilibrium for the held pose,
+    condensed at ν = Ω) at the system's equilibrium pose: the embedding of the pads' own
+    coordinates beside the rotations (measured agreement ~1e-14)."""
+    from rotordyn.analysis.bearing_coefficients import TILT_COLUMNS, bearing_coefficients
+
+    s = rotordyn.System.from_toml(MODELS / "compressor_tilting_pad.toml")
+    s = dataclasses.replace(s, bearings=tuple(
+        dataclasses.replace(b, n_circ=36, n_axial=6, tilt=True, config_theta_y_rad=AL)
+        for b in s.bearings))
+    eqs: list = []
+    fr = bearing_coefficients(s, [150.0], equilibria=eqs)
+    e = eqs[0][2]
+    q = ("x", "y", "tx", "ty")
+    for i, b in enumerate(s.bearings):
+        K, C = tilted_coefficients(b, x_m=e.journal_x_m[i], y_m=e.journal_y_m[i],
+                                   speed_hz=150.0,
+                                   theta_x_rad=e.tilt[i]["journal_theta_x_rad"],
+                                   theta_y_rad=e.tilt[i]["journal_theta_y_rad"])
+        row = fr[fr["bearing"] == b.name].iloc[0]
+        np.testing.assert_allclose(
+            row[["kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m"]].to_numpy(float),
+            K[:2, :2].ravel(), rtol=1e-9)
+        for kc, M in (("k", K), ("c", C)):
+            for a in range(4):
+                for c in range(4):
+                    if a < 2 and c < 2:
+                        continue
+                    col = next(n for n in TILT_COLUMNS if n.startswith(f"{kc}{q[a]}{q[c]}_"))
+                    assert row[col] == pytest.approx(M[a, c], rel=1e-9,
+                                                     abs=1e-9 * np.abs(M).max()), col
+
+
+def test_thermal_stability_rows_carry_the_tilt(tmp_path):
+    """`options.thermal`: the tilt lists are those of the point's thermal equilibrium (the
+    direct `rotordyn.stability(..., thermal={})`'s equilibrium, the same calls: equal)."""
+    s = rotordyn.System.from_toml(MODELS / "compressor_plain_thermal.toml")
+    s = dataclasses.replace(s, bearings=tuple(
+        dataclasses.replace(b, tilt=True, n_circ=36, n_axial=8, config_theta_y_rad=AL)
+        for b in s.bearings))
+    s.to_toml(tmp_path / "th.toml")
+    spec = tmp_path / "th_spec.toml"
+    spec.write_text('schema = "rotordyn/sweep/1"\nname = "th"\nmodel = "th.toml"\n'
+                    'analysis = "stability"\n[grid]\nspeed_hz = [150.0]\n'
+                    '[options]\nn_modes = 4\n[options.thermal]\n')
+    run_sweep(spec, tmp_path / "o_th", threads=1)
+    f = sw.open(tmp_path / "o_th").frame
+    assert (f["status"] == "ok").all() and len(f) == 4
+    st = rotordyn.stability(s, 150.0, n_modes=4, thermal={})
+    e = st.linear.equilibrium
+    row = f.iloc[0]
+    assert list(row["tilt_bearing"]) == [b.name for b in s.bearings]
+    for c in LISTS:
+        ref = np.array([e.tilt[i][c] for i in range(len(s.bearings))])
+        np.testing.assert_allclose(np.asarray(row[c], dtype=float), ref, rtol=1e-9,
+                                   atol=1e-9 * np.abs(ref).max(), err_msg=c)
+    assert row["max_temperature_c"] > 0  # the thermal columns beside them
