@@ -143,7 +143,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
 
     Tilting films (``tilt = true``): the result carries the journal's rotations at their
     bearings and, with ``record_film_moments`` (default), the films' moments at every output
-    (one more film solve per output after the run; False: NaN moments, no extra solve).
+    (one more film solve per output after the run; False: no moments, no extra solve).
 
     Budget (checked before anything is solved): a discrete controller restarts CVODE at each
     sample; a run estimated above ``max_cost_s`` (default 600 s; ``math.inf``: no limit) is an
@@ -332,21 +332,23 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
 def _tilt_histories(bcs, r, ff) -> dict:
     """The tilting films' journal rotations relative to the housing (rad) and moments on the
     journal (N·m) at each output, (n_t, n_bearings), NaN for a bearing without a tilting film
-    (``ff``: the core's recorded H at the rotations, in bearing order); {} without one."""
+    (``ff``: the core's recorded H at the rotations, in bearing order; no columns: not
+    recorded, no moments); {} without a tilting film."""
     if not any(bc.rot for bc in bcs):
         return {}
     nt = r.shape[0]
-    if ff.shape[1] == 0:  # moments not recorded (record_film_moments=False)
-        ff = np.full((nt, 2 * sum(1 for bc in bcs if bc.rot)), np.nan)
-    out = {k: np.full((nt, len(bcs)), np.nan) for k in (
-        "journal_theta_x_rad", "journal_theta_y_rad", "film_moment_x_n_m", "film_moment_y_n_m")}
+    names = ("journal_theta_x_rad", "journal_theta_y_rad")
+    if ff.shape[1]:  # recorded (not with record_film_moments=False)
+        names += ("film_moment_x_n_m", "film_moment_y_n_m")
+    out = {k: np.full((nt, len(bcs)), np.nan) for k in names}
     q = 0
     for b, bc in enumerate(bcs):
         if not bc.rot:
             continue
         out["journal_theta_x_rad"][:, b] = r[:, bc.rot[0]]
         out["journal_theta_y_rad"][:, b] = r[:, bc.rot[1]]
-        out["film_moment_x_n_m"][:, b] = ff[:, q]
-        out["film_moment_y_n_m"][:, b] = ff[:, q + 1]
+        if ff.shape[1]:
+            out["film_moment_x_n_m"][:, b] = ff[:, q]
+            out["film_moment_y_n_m"][:, b] = ff[:, q + 1]
         q += 2
     return out
