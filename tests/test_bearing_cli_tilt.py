@@ -39,9 +39,10 @@ def test_tilted_point_equals_the_api(capsys):
     np.testing.assert_allclose(r["force_n"], t.force_n, rtol=1e-12)
     np.testing.assert_allclose(r["moment_n_m"], t.moment_n_m, rtol=1e-12)
     assert r["h_min_z_m"] == pytest.approx(t.h_min_z_m) and abs(r["h_min_z_m"]) == L / 2
-    np.testing.assert_allclose(r["k"], K, rtol=1e-12, atol=1e-12 * np.abs(K).max())
-    np.testing.assert_allclose(r["c"], Cm, rtol=1e-12, atol=1e-12 * np.abs(Cm).max())
-    assert np.shape(r["k"]) == (4, 4) and r["coordinates"] == ["x", "y", "theta_x", "theta_y"]
+    np.testing.assert_allclose(r["k_4x4_si"], K, rtol=1e-12, atol=1e-12 * np.abs(K).max())
+    np.testing.assert_allclose(r["c_4x4_si"], Cm, rtol=1e-12, atol=1e-12 * np.abs(Cm).max())
+    assert np.shape(r["k_4x4_si"]) == (4, 4)
+    assert r["coordinates"] == ["x", "y", "theta_x", "theta_y"]
 
 
 def test_misaligned_equilibrium_and_zero_tilt(capsys):
@@ -57,8 +58,9 @@ def test_misaligned_equilibrium_and_zero_tilt(capsys):
     b = _b()
     eq = b.static_equilibrium(load_n=(0.0, -2000.0), speed_hz=100.0)
     K, Cm = b.coefficients(x_m=eq.x_m, y_m=eq.y_m, speed_hz=100.0)
-    np.testing.assert_allclose(np.array(z["k"])[:2, :2], K, rtol=1e-8, atol=1e-8 * abs(K).max())
-    np.testing.assert_allclose(np.array(z["c"])[:2, :2], Cm, rtol=1e-8,
+    np.testing.assert_allclose(np.array(z["k_4x4_si"])[:2, :2], K, rtol=1e-8,
+                               atol=1e-8 * abs(K).max())
+    np.testing.assert_allclose(np.array(z["c_4x4_si"])[:2, :2], Cm, rtol=1e-8,
                                atol=1e-8 * abs(Cm).max())
 
 
@@ -72,3 +74,34 @@ def test_text_output_and_bad_input(capsys):
     assert main(["bearing", *GEO[:-2], "--speeds-hz", "50:100:50", "--load-n", "0", "-1000",
                  "--theta-x-rad", "1e-4"]) == 2
     assert "--theta-x-rad" in capsys.readouterr().err
+
+
+def test_json_keys_match_the_aligned_command(capsys):
+    """The tilted record names its coefficients as the aligned `rotordyn bearing` does
+    (`k_n_per_m`, `c_n_s_per_m`: the translational 2×2 block, N/m and N·s/m), the 4×4 under
+    unit-suffixed names with every entry's unit given; at zero tilt the 2×2 equals the aligned
+    command's own to 1e-8 (the same film, the tilted film's full-grid solve against the
+    aligned half grid: round-off apart)."""
+    x, y = 0.3 * C, -0.4 * C
+    pose = ["--x-m", str(x), "--y-m", str(y)]
+    code, t = _run(capsys, *pose, "--theta-y-rad", repr(TH["theta_y_rad"]))
+    assert code == 0
+    assert "k" not in t and "c" not in t
+    K4, C4 = np.array(t["k_4x4_si"]), np.array(t["c_4x4_si"])
+    np.testing.assert_array_equal(t["k_n_per_m"], K4[:2, :2])
+    np.testing.assert_array_equal(t["c_n_s_per_m"], C4[:2, :2])
+    assert t["k_4x4_units"][0] == ["N/m", "N/m", "N/rad", "N/rad"]
+    assert t["k_4x4_units"][3] == ["N m/m", "N m/m", "N m/rad", "N m/rad"]
+    assert t["c_4x4_units"][2][2] == "N m s/rad" and t["c_4x4_units"][1][0] == "N s/m"
+    code, z = _run(capsys, *pose, "--theta-x-rad", "0")
+    code0, a = _run(capsys, *pose)
+    assert code == code0 == 0
+    for key in ("k_n_per_m", "c_n_s_per_m"):
+        ref = np.array(a[key])
+        np.testing.assert_allclose(z[key], ref, rtol=1e-8, atol=1e-8 * abs(ref).max())
+    # the one pose resolution of both paths: the same refusals, word for word
+    for extra in (["--load-n", "0", "-1000", "--x-m", "0"], []):
+        assert main(["bearing", *GEO, *extra]) == 2
+        e0 = capsys.readouterr().err
+        assert main(["bearing", *GEO, *extra, "--theta-x-rad", "1e-4"]) == 2
+        assert capsys.readouterr().err == e0 and ("--load-n" in e0 or "--x-m" in e0)

@@ -15,6 +15,8 @@ void bind_batch(py::module_& m) {
       .def_readonly("iterations", &StabilityBatchResult::iterations)
       .def_readonly("r", &StabilityBatchResult::r)
       .def_readonly("h_min", &StabilityBatchResult::h_min)
+      .def_readonly("h_min_z_m", &StabilityBatchResult::h_min_z_m)
+      .def_readonly("film_force", &StabilityBatchResult::film_force)
       .def_readonly("n_eig", &StabilityBatchResult::n_eig)
       .def_readonly("eigenvalues", &StabilityBatchResult::eigenvalues)
       .def_readonly("whirl", &StabilityBatchResult::whirl)

@@ -100,7 +100,8 @@ void bind_transient(py::module_& m) {
       .def_readwrite("pressure", &TransientInput::pressure)
       .def_readwrite("actuator", &TransientInput::actuator)
       .def_readwrite("controller", &TransientInput::controller)
-      .def_readwrite("adaptive", &TransientInput::adaptive);
+      .def_readwrite("adaptive", &TransientInput::adaptive)
+      .def_readwrite("record_film_force", &TransientInput::record_film_force);
   py::class_<TransientResult>(m, "TransientResult")
       .def_readonly("t", &TransientResult::t)
       .def_readonly("r", &TransientResult::r)
@@ -114,6 +115,7 @@ void bind_transient(py::module_& m) {
       .def_readonly("actuator_states", &TransientResult::actuator_states)
       .def_readonly("controller_states", &TransientResult::controller_states)
       .def_readonly("adaptive_states", &TransientResult::adaptive_states)
+      .def_readonly("film_force", &TransientResult::film_force)
       .def_readonly("status", &TransientResult::status)
       .def_readonly("message", &TransientResult::message)
       .def_readonly("steps", &TransientResult::steps)

@@ -86,6 +86,8 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
   out.iterations = Eigen::VectorXi::Zero(np);
   out.r = RowMatrixXd::Constant(np, n, nan);
   out.h_min = RowMatrixXd::Constant(np, static_cast<Eigen::Index>(m.films.size()), nan);
+  out.h_min_z_m = out.h_min;
+  out.film_force = RowMatrixXd::Constant(np, n, nan);
   out.n_eig = Eigen::VectorXi::Zero(np);
   out.eigenvalues = Eigen::MatrixXcd::Constant(np, k, std::complex<double>(nan, nan));
   out.whirl = Eigen::MatrixXi::Zero(np, k);
@@ -143,6 +145,9 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
         out.h_min(i, static_cast<Eigen::Index>(f)) = e.h_min[f];
       if (e.status != "ok" && e.status != "contact") continue;
       out.r.row(i) = e.r.transpose();
+      if (e.film_force.size() == n) out.film_force.row(i) = e.film_force.transpose();
+      for (std::size_t f = 0; f < e.h_min_z_m.size() && f < m.films.size(); ++f)
+        out.h_min_z_m(i, static_cast<Eigen::Index>(f)) = e.h_min_z_m[f];
       Linearization lin = in.finite_difference ? solver.linearize_fd(e.r, w, in.fd_step)
                                                : solver.linearize(e.r, zero, w);
       const Eigen::MatrixXd D = m.C + w * m.G + lin.DH;

@@ -484,6 +484,30 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
 
 }  // namespace
 
+// The film force at the coordinates in.record_film_force at every output state reached
+// (after the run, so the integration's solves and its counters are those of a run without
+// it): one film solve per output; a closed film there (ContactError) leaves NaN.
+static void record_film_force(SystemSolver& solver, const TransientInput& in,
+                              TransientResult& out) {
+  const auto k = static_cast<Eigen::Index>(in.record_film_force.size());
+  const Eigen::Index nt = out.t.size(), n = out.r.cols();
+  out.film_force = Eigen::MatrixXd::Constant(nt, k, NAN);
+  if (k == 0) return;
+  for (int j : in.record_film_force)
+    require(j >= 0 && j < n, "record_film_force: a coordinate index outside [0, n)");
+  for (Eigen::Index i = 0; i < nt; ++i) {
+    if (!std::isfinite(out.t(i)) || !out.r.row(i).allFinite() || !out.v.row(i).allFinite())
+      continue;
+    try {
+      const Eigen::VectorXd H =
+          solver.film_forces(out.r.row(i).transpose(), out.v.row(i).transpose(), out.speed(i));
+      for (Eigen::Index q = 0; q < k; ++q)
+        out.film_force(i, q) = H(in.record_film_force[static_cast<std::size_t>(q)]);
+    } catch (const ContactError&) {
+    }
+  }
+}
+
 TransientResult integrate(SystemSolver& solver, const TransientInput& in,
                           const CvodeOptions& opt) {
   const SystemModel& m = solver.model();
@@ -865,6 +889,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   out.reynolds_solves = solver.reynolds_solves() - solves0;
   out.reynolds_iterations = solver.reynolds_iterations() - iters0;
   cleanup();
+  record_film_force(solver, in, out);
   return out;
 }
 

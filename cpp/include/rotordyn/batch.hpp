@@ -42,6 +42,9 @@ struct StabilityBatchResult {
   Eigen::VectorXi iterations;                ///< (n_pts,)
   RowMatrixXd r;                             ///< (n_pts, n) equilibrium
   RowMatrixXd h_min;                         ///< (n_pts, n_films)
+  /// (n_pts, n_films) axial position of h_min, m, and (n_pts, n) H at the equilibrium (a
+  /// tilted film's moments at its rotations): NaN where the equilibrium did not converge
+  RowMatrixXd h_min_z_m, film_force;
   Eigen::VectorXi n_eig;                     ///< (n_pts,) eigenvalues found (0: none)
   Eigen::MatrixXcd eigenvalues;              ///< (n_pts, k), NaN past n_eig
   Eigen::MatrixXi whirl;                     ///< (n_pts, k) -1, 0, 1

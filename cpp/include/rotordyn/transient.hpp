@@ -51,6 +51,10 @@ struct TransientInput {
   Actuator actuator;               ///< command -> p_c
   Controller controller;           ///< optional LTI feedback added to the command
   AdaptiveHarmonic adaptive;       ///< optional adaptive 1× command added to the command
+  /// Coordinates whose film force H_k is recorded at every output time (a tilted film's
+  /// rotations: its moments, N·m), after the run, by one film solve per output state reached
+  /// (r, ṙ, Ω there); empty: none recorded, no extra solve.
+  std::vector<int> record_film_force;
 };
 
 struct TransientResult {
@@ -65,6 +69,9 @@ struct TransientResult {
   Eigen::MatrixXd actuator_states;    ///< (n_t, order)
   Eigen::MatrixXd controller_states;  ///< (n_t, n_k)
   Eigen::MatrixXd adaptive_states;    ///< (n_t, 2) [P_r, P_i] Pa, or (n_t, 0)
+  /// (n_t, len(record_film_force)) H at those coordinates at each output (NaN: not reached,
+  /// or the film closed there); not counted in reynolds_solves.
+  Eigen::MatrixXd film_force;
   std::string status = "ok";       ///< ok | contact | not_converged | error
   std::string message;
   long steps = 0, rhs_evals = 0, jac_evals = 0, newton_fails = 0, error_test_fails = 0;

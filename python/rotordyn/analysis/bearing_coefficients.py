@@ -31,6 +31,17 @@ if TYPE_CHECKING:
 COLUMNS = ("bearing", "station", "speed_hz") + tuple(
     f"{n}_n_per_m" for n in COEFF_NAMES[:4]) + tuple(
     f"{n}_n_s_per_m" for n in COEFF_NAMES[4:]) + ("status",)
+# A tilting film (tilt = true): its 4×4 over (x, y, θx, θy) beyond the translational block,
+# K[i, j] = −∂H_i/∂r_j, C the same per velocity, as columns ``k<i><j>_<units>`` with tx, ty
+# for θx, θy: the force–tilt block (N/rad, N·s/rad), the moment–translation block (N·m/m,
+# N·m·s/m) and the tilt–tilt block (N·m/rad, N·m·s/rad); NaN for a bearing without one.
+_Q = ("x", "y", "tx", "ty")
+_KU = {(0, 0): "n_per_m", (0, 1): "n_per_rad", (1, 0): "n_m_per_m", (1, 1): "n_m_per_rad"}
+_CU = {(0, 0): "n_s_per_m", (0, 1): "n_s_per_rad", (1, 0): "n_m_s_per_m",
+       (1, 1): "n_m_s_per_rad"}
+TILT_COLUMNS = tuple(f"{kc}{_Q[i]}{_Q[j]}_{u[(i // 2, j // 2)]}"
+                     for kc, u in (("k", _KU), ("c", _CU))
+                     for i in range(4) for j in range(4) if i >= 2 or j >= 2)
 
 
 def _element_matrices(lm, b, name: str, idx: list[int]):
@@ -54,6 +65,25 @@ def _element_matrices(lm, b, name: str, idx: list[int]):
     return K, C, M
 
 
+def _tilt_entries(lm, b, name: str, idx: list[int], rot, nu: float) -> np.ndarray:
+    """The 12 entries of :data:`TILT_COLUMNS` of a tilting film's element: its own
+    coordinates condensed at ν onto (x, y, θx, θy) as :func:`_element_matrices` condenses
+    them onto (x, y) (the element's own M, K, C do not involve the rotations)."""
+    K2, C2, M2 = _element_matrices(lm, b, name, idx)
+    KH2, DH2 = lm.KH[np.ix_(idx, idx)], lm.DH[np.ix_(idx, idx)]
+    idx4 = idx[:2] + list(rot) + idx[2:]
+    K4 = lm.KH[np.ix_(idx4, idx4)].copy()
+    C4 = lm.DH[np.ix_(idx4, idx4)].copy()
+    M4 = np.zeros_like(K4)
+    pos = [0, 1] + list(range(4, len(idx4)))
+    K4[np.ix_(pos, pos)] += K2 - KH2
+    C4[np.ix_(pos, pos)] += C2 - DH2
+    M4[np.ix_(pos, pos)] = M2
+    K, C = reduce_coefficients(K4, C4, M4, nu, n_journal=4)
+    keep = [(i, j) for i in range(4) for j in range(4) if i >= 2 or j >= 2]
+    return np.array([K[i, j] for i, j in keep] + [C[i, j] for i, j in keep])
+
+
 def bearing_coefficients(system, speeds_hz, chamber_pressure_pa: float = 0.0,
                          config_ay_m: float | None = None, *, whirl_ratio: float = 1.0,
                          progress=None, equilibria: list | None = None) -> pd.DataFrame:
@@ -67,7 +97,9 @@ def bearing_coefficients(system, speeds_hz, chamber_pressure_pa: float = 0.0,
     synchronous, as API 684 tabulates them; 0: static condensation). ``progress``: called as
     ``progress(i, n)`` after each speed. ``equilibria``: a list that receives, in increasing
     speed, ``(speed_hz, status, EquilibriumResult | None)`` of each speed's equilibrium (None
-    where the solve raised), for tables of the same operating points."""
+    where the solve raised), for tables of the same operating points. With a tilting film
+    (``tilt = true``) the frame also has :data:`TILT_COLUMNS`: the rest of that film's 4×4
+    over (x, y, θx, θy), condensed alike (NaN for the other bearings)."""
     import pandas as pd
     sp = np.atleast_1d(np.asarray(speeds_hz, dtype=float))
     if sp.ndim != 1 or sp.size == 0 or not np.all(np.isfinite(sp)) or np.any(sp < 0):
@@ -79,6 +111,12 @@ def bearing_coefficients(system, speeds_hz, chamber_pressure_pa: float = 0.0,
         return pd.DataFrame({c: [] for c in COLUMNS})
     order = np.argsort(sp, kind="stable")
     rows: dict[int, list] = {}
+    tilts = any(getattr(b, "tilt", False) for b in system.bearings)
+    rot = {}
+    if tilts:
+        from rotordyn.analysis.assembly import assembled
+
+        rot = {bc.index: bc.rot for bc in assembled(system).bearings if bc.rot}
     for k, status, lm in continued_linear_models(system, sp[order], chamber_pressure_pa,
                                                  config_ay_m, "perturbation",
                                                  continue_on=("ok", "contact")):
@@ -90,21 +128,25 @@ def bearing_coefficients(system, speeds_hz, chamber_pressure_pa: float = 0.0,
         for bi, b in enumerate(system.bearings):
             name = b.name or f"bearing[{bi}]"
             KC = np.full(8, np.nan)
+            KT = np.full(len(TILT_COLUMNS) if tilts else 0, np.nan)
             if lm is not None and status in CONVERGED:
                 idx = [lab.index(f"station{b.station}.x"), lab.index(f"station{b.station}.y")]
                 idx += [j for j, s in enumerate(lab) if s.startswith(name + ".")]
                 Kb, Cb, Mb = _element_matrices(lm, b, name, idx)
-                K, C = reduce_coefficients(Kb, Cb, Mb, whirl_ratio * hz_to_rad_s(sp[i]))
+                nu = whirl_ratio * hz_to_rad_s(sp[i])
+                K, C = reduce_coefficients(Kb, Cb, Mb, nu)
                 KC = np.concatenate([K.ravel(), C.ravel()])
-            out.append([name, int(b.station), float(sp[i]), *KC, status])
+                if bi in rot:
+                    KT = _tilt_entries(lm, b, name, idx, rot[bi], nu)
+            out.append([name, int(b.station), float(sp[i]), *KC, status, *KT])
         rows[i] = out
         if progress is not None:
             progress(len(rows), sp.size)
     flat = [r for i in range(sp.size) for r in rows.get(i, [])]
-    df = pd.DataFrame(flat, columns=list(COLUMNS))
+    df = pd.DataFrame(flat, columns=list(COLUMNS) + (list(TILT_COLUMNS) if tilts else []))
     return df.sort_values(["bearing", "speed_hz"], key=lambda c: c.map(
         {(b.name or f"bearing[{i}]"): i for i, b in enumerate(system.bearings)})
         if c.name == "bearing" else c, ignore_index=True, kind="stable")
 
 
-__all__ = ["COLUMNS", "bearing_coefficients"]
+__all__ = ["COLUMNS", "TILT_COLUMNS", "bearing_coefficients"]

@@ -108,7 +108,8 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               controller=None, measurements=None, measurement_offset=None,
               atol_pa: float = 1.0,
               max_step_s: float = 0.0, rub_fraction: float = 1e-3,
-              max_cost_s: float = MAX_COST_S, adaptive=None) -> TransientResult:
+              max_cost_s: float = MAX_COST_S, adaptive=None,
+              record_film_moments: bool = True) -> TransientResult:
     """Integrate eq. 12 from t = 0 to ``t_end_s``.
 
     The start is the static equilibrium (eq. 14) with the journal of the active (or only)
@@ -139,6 +140,10 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     command (two more CVODE states, the coefficient P of Re(P e^{iθ})) added to the command;
     its measurements relative to their value at the starting equilibrium. Its speed grid
     must cover the run (InputError naming ``adaptive.speeds_hz``).
+
+    Tilting films (``tilt = true``): the result carries the journal's rotations at their
+    bearings and, with ``record_film_moments`` (default), the films' moments at every output
+    (one more film solve per output after the run; False: no moments, no extra solve).
 
     Budget (checked before anything is solved): a discrete controller restarts CVODE at each
     sample; a run estimated above ``max_cost_s`` (default 600 s; ``math.inf``: no limit) is an
@@ -286,6 +291,11 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     if adaptive is not None:
         Cm, _ = measurement_matrix(system, adaptive.measurements)
         inp.adaptive = adaptive.to_core(Cm, Cm @ np.concatenate([r_eq, np.zeros(n)]))
+    tb = [bc for bc in asm.bearings if bc.rot]  # tilting films: their moments recorded
+    if not isinstance(record_film_moments, (bool, np.bool_)):
+        raise InputError(f"record_film_moments: expected True or False, got "
+                         f"{record_film_moments!r}")
+    inp.record_film_force = [j for bc in tb for j in bc.rot[:2]] if record_film_moments else []
     res = _core.integrate(asm.solver, inp, opt)
     r = np.asarray(res.r)
     status, message = res.status, res.message
@@ -307,6 +317,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
         actuator_states=np.asarray(res.actuator_states),
         controller_states=np.asarray(res.controller_states),
         adaptive_states=np.asarray(res.adaptive_states),
+        **_tilt_histories(bcs, r, np.asarray(res.film_force)),
         equilibrium_r=r_eq,
         stats={"steps": res.steps, "rhs_evals": res.rhs_evals, "jac_evals": res.jac_evals,
                "newton_fails": res.newton_fails, "error_test_fails": res.error_test_fails,
@@ -316,3 +327,28 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
                "reynolds_iterations": res.reynolds_iterations},
         status=start_status if status == "ok" else status,
         message="; ".join(m for m in (start_note, message) if m))
+
+
+def _tilt_histories(bcs, r, ff) -> dict:
+    """The tilting films' journal rotations relative to the housing (rad) and moments on the
+    journal (N·m) at each output, (n_t, n_bearings), NaN for a bearing without a tilting film
+    (``ff``: the core's recorded H at the rotations, in bearing order; no columns: not
+    recorded, no moments); {} without a tilting film."""
+    if not any(bc.rot for bc in bcs):
+        return {}
+    nt = r.shape[0]
+    names = ("journal_theta_x_rad", "journal_theta_y_rad")
+    if ff.shape[1]:  # recorded (not with record_film_moments=False)
+        names += ("film_moment_x_n_m", "film_moment_y_n_m")
+    out = {k: np.full((nt, len(bcs)), np.nan) for k in names}
+    q = 0
+    for b, bc in enumerate(bcs):
+        if not bc.rot:
+            continue
+        out["journal_theta_x_rad"][:, b] = r[:, bc.rot[0]]
+        out["journal_theta_y_rad"][:, b] = r[:, bc.rot[1]]
+        if ff.shape[1]:
+            out["film_moment_x_n_m"][:, b] = ff[:, q]
+            out["film_moment_y_n_m"][:, b] = ff[:, q + 1]
+        q += 2
+    return out

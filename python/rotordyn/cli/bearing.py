@@ -28,7 +28,7 @@ from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.bearings.thermal import Oil
 from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args, table_text
 from rotordyn.cli.bearing_tilt import add_tilt_arguments, run_tilted, wants_tilt
-from rotordyn.cli.common import add_thd_arguments
+from rotordyn.cli.common import add_thd_arguments, journal_pose
 from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
 from rotordyn.results.equilibrium import CONVERGED
@@ -140,11 +140,9 @@ def run(args: argparse.Namespace) -> int:
     rec["speed_hz"] = args.speed_hz
     if oil is not None:
         return _thermal(b, oil, film, rec, args)
-    if args.load_n is not None:
-        if args.x_m is not None or args.y_m is not None:
-            raise InputError("--load-n: give either --load-n or --x-m/--y-m, not both")
-        eq = b.static_equilibrium(load_n=tuple(args.load_n), speed_hz=args.speed_hz)
-        x, y, vx, vy = eq.x_m, eq.y_m, 0.0, 0.0
+    x, y, vx, vy, eq = journal_pose(
+        args, lambda load: b.static_equilibrium(load_n=load, speed_hz=args.speed_hz))
+    if eq is not None:
         rec["equilibrium"] = {
             "load_n": list(eq.load_n), "x_m": eq.x_m, "y_m": eq.y_m,
             "eccentricity_ratio": eq.eccentricity_ratio,
@@ -153,10 +151,6 @@ def run(args: argparse.Namespace) -> int:
             "sommerfeld": _finite_or_none(eq.sommerfeld),
             "residual_rel": eq.residual_rel, "iterations": eq.iterations,
         }
-    else:
-        if args.x_m is None or args.y_m is None:
-            raise InputError("--x-m/--y-m: journal position required (or give --load-n)")
-        x, y, vx, vy = args.x_m, args.y_m, args.vx_m_s, args.vy_m_s
     r = b.solve(x_m=x, y_m=y, speed_hz=args.speed_hz, vx_m_s=vx, vy_m_s=vy)
     K, C = b.coefficients(x_m=x, y_m=y, speed_hz=args.speed_hz, method=args.method)
     rec.update(

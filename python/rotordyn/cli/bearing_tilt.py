@@ -29,7 +29,7 @@ def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict, thermal: 
     """The tilted operating point (``--load-n``: the misaligned equilibrium first; a failed
     one is reported and not linearised, exit 1)."""
     from rotordyn.bearings.tilt import misaligned_equilibrium, tilted_coefficients, tilted_forces
-    from rotordyn.cli.common import json_text
+    from rotordyn.cli.common import journal_pose, json_text
 
     if args.speeds_hz is not None or thermal:
         raise InputError("--theta-x-rad/--theta-y-rad: a tilted journal is available at one "
@@ -38,12 +38,9 @@ def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict, thermal: 
     tx = 0.0 if args.theta_x_rad is None else args.theta_x_rad
     ty = 0.0 if args.theta_y_rad is None else args.theta_y_rad
     rec.update(journal_theta_x_rad=tx, journal_theta_y_rad=ty)
-    vx = vy = 0.0
-    if args.load_n is not None:
-        if args.x_m is not None or args.y_m is not None:
-            raise InputError("--load-n: give either --load-n or --x-m/--y-m, not both")
-        e = misaligned_equilibrium(b, load_n=tuple(args.load_n), speed_hz=args.speed_hz,
-                                   theta_x_rad=tx, theta_y_rad=ty)
+    x, y, vx, vy, e = journal_pose(args, lambda load: misaligned_equilibrium(
+        b, load_n=load, speed_hz=args.speed_hz, theta_x_rad=tx, theta_y_rad=ty))
+    if e is not None:
         rec["equilibrium"] = {"load_n": list(args.load_n), "status": e.status,
                               "message": e.message, "x_m": e.x_m, "y_m": e.y_m,
                               "eccentricity_ratio": e.eccentricity_ratio,
@@ -56,12 +53,8 @@ def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict, thermal: 
                 print(f"misaligned equilibrium: {e.status} ({e.message}); no film outputs "
                       "or coefficients at a failed equilibrium")
             return 1
-        x, y = e.x_m, e.y_m
         t = e  # its film outputs at (x, y): forces, moments, minimum film and where
     else:
-        if args.x_m is None or args.y_m is None:
-            raise InputError("--x-m/--y-m: journal position required (or give --load-n)")
-        x, y, vx, vy = args.x_m, args.y_m, args.vx_m_s, args.vy_m_s
         t = tilted_forces(b, x_m=x, y_m=y, speed_hz=args.speed_hz, theta_x_rad=tx,
                           theta_y_rad=ty, vx_m_s=vx, vy_m_s=vy)
     K, C = tilted_coefficients(b, x_m=x, y_m=y, speed_hz=args.speed_hz, theta_x_rad=tx,
@@ -69,8 +62,8 @@ def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict, thermal: 
     rec.update(journal_x_m=x, journal_y_m=y, journal_vx_m_s=vx, journal_vy_m_s=vy,
                force_n=np.asarray(t.force_n).tolist(), moment_n_m=np.asarray(t.moment_n_m).tolist(),
                h_min_m=t.h_min_m, h_min_angle_deg=t.h_min_angle_deg, h_min_z_m=t.h_min_z_m,
-               coordinates=["x", "y", "theta_x", "theta_y"], k=np.asarray(K).tolist(),
-               c=np.asarray(C).tolist(), coefficient_method=args.method)
+               coordinates=list(COORDINATES), **coefficient_record(K, C),
+               coefficient_method=args.method)
     if args.json:
         print(json_text(rec))
         return 0
@@ -88,6 +81,27 @@ def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict, thermal: 
     print("C over (x, y, theta_x, theta_y) [N s/m, N s/rad, N m s/m, N m s/rad] =\n"
           + np.array2string(np.asarray(C), precision=5))
     return 0
+
+
+COORDINATES = ("x", "y", "theta_x", "theta_y")
+# SI units of K[i, j] = -dH_i/dr_j over (x, y, θx, θy): forces on translations and
+# rotations, moments on translations and rotations; C the same per unit velocity
+_K_UNITS = (("N/m", "N/m", "N/rad", "N/rad"),) * 2 + (("N m/m", "N m/m", "N m/rad",
+                                                      "N m/rad"),) * 2
+_C_UNITS = (("N s/m", "N s/m", "N s/rad", "N s/rad"),) * 2 + (("N m s/m", "N m s/m",
+                                                              "N m s/rad", "N m s/rad"),) * 2
+
+
+def coefficient_record(K, C) -> dict:
+    """The tilted film's coefficients as JSON fields named as the aligned command's: the
+    translational 2×2 block as ``k_n_per_m``, ``c_n_s_per_m`` (the same meaning and units
+    as there), the whole 4×4 over ``coordinates`` as ``k_4x4_si``, ``c_4x4_si`` with each
+    entry's unit in ``k_4x4_units``, ``c_4x4_units`` (4×4 strings)."""
+    K, C = np.asarray(K, dtype=float), np.asarray(C, dtype=float)
+    return {"k_n_per_m": K[:2, :2].tolist(), "c_n_s_per_m": C[:2, :2].tolist(),
+            "k_4x4_si": K.tolist(), "c_4x4_si": C.tolist(),
+            "k_4x4_units": [list(r) for r in _K_UNITS],
+            "c_4x4_units": [list(r) for r in _C_UNITS]}
 
 
 __all__ = ["add_tilt_arguments", "run_tilted", "wants_tilt"]

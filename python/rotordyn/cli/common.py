@@ -289,3 +289,18 @@ def oil_from_args(args) -> "Oil | None":
     mu, tr, beta = args.oil_exponential
     return Oil(viscosity_law="exponential", mu_ref_pa_s=mu, t_ref_c=tr, beta_1_per_k=beta,
                **common)
+
+
+def journal_pose(args, equilibrium):
+    """The journal's pose for ``rotordyn bearing`` (aligned or tilted): with ``--load-n``
+    the equilibrium ``equilibrium(load_n)`` under it, (x, y, 0, 0, that result); else the
+    given ``--x-m --y-m`` and ``--vx-m-s --vy-m-s``, (x, y, vx, vy, None). InputError naming
+    the field when both or neither are given."""
+    if args.load_n is not None:
+        if args.x_m is not None or args.y_m is not None:
+            raise InputError("--load-n: give either --load-n or --x-m/--y-m, not both")
+        eq = equilibrium(tuple(args.load_n))
+        return eq.x_m, eq.y_m, 0.0, 0.0, eq
+    if args.x_m is None or args.y_m is None:
+        raise InputError("--x-m/--y-m: journal position required (or give --load-n)")
+    return args.x_m, args.y_m, args.vx_m_s, args.vy_m_s, None

@@ -38,6 +38,7 @@ from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.report import level1 as level1_report
 from rotordyn._common.progress import Steps
 from rotordyn.plot.coefficients import bearing_coefficients as coefficient_figure
+from rotordyn.report.tables import tilt_coefficient_tables
 from rotordyn.report.sections import (COEFFICIENT_HEADER, CRITICAL_HEADER, MERGE_RTOL,
                                       api_response, bearing_coefficient_frame,
                                       coefficient_rows, coefficient_text_lines,
@@ -318,6 +319,13 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                      + ".</figcaption></figure>"
                      + _table(COEFFICIENT_HEADER, [tuple(html.escape(str(c)) for c in r)
                                                    for r in coefficient_rows(coeffs)]))
+        for (head, rows), what in zip(tilt_coefficient_tables(coeffs),
+                                      ("Stiffness", "Damping")):
+            parts.append(f"<p>Tilting films: {what.lower()} coupling blocks of the 4×4 over "
+                         "(x, y, θx, θy) (dH = −K dr − C dṙ, H = (Fx, Fy, Mx, My); the x, y "
+                         "block is the table above).</p>"
+                         + _table(head, [tuple(html.escape(str(c)) for c in r)
+                                         for r in rows]))
 
     # 2d (placed after 2c). the minimum film, its place, and tilted films' edge and moments
     from rotordyn.report.films import film_html, film_text_lines, write_films

@@ -26,7 +26,8 @@ from rotordyn import analysis
 from rotordyn._common.api import af_text
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
 from rotordyn.report.criteria import RESONANT_LOG_DEC
-from rotordyn.report.tables import COEFFICIENT_HEADER, _text_table, coefficient_rows
+from rotordyn.report.tables import (COEFFICIENT_HEADER, _text_table, coefficient_rows,
+                                    tilt_coefficient_tables)
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -418,9 +419,14 @@ def coefficient_text_lines(coeffs) -> list[str]:
     """The text report's table of the bearings' coefficients (none without bearings)."""
     if coeffs.empty:
         return []
-    return (["", "bearing coefficients over speed (dF = −K dq − C dq̇; x horizontal, y up; "
-             "bearing_coefficients.csv/.png)"]
-            + _text_table(COEFFICIENT_HEADER, coefficient_rows(coeffs)))
+    lines = (["", "bearing coefficients over speed (dF = −K dq − C dq̇; x horizontal, y up; "
+              "bearing_coefficients.csv/.png)"]
+             + _text_table(COEFFICIENT_HEADER, coefficient_rows(coeffs)))
+    for (head, rows), what in zip(tilt_coefficient_tables(coeffs), ("stiffness", "damping")):
+        lines += ["", f"tilting films: {what} coupling blocks of the 4×4 over (x, y, θx, θy) "
+                  "(dH = −K dr − C dṙ, H = (Fx, Fy, Mx, My); the x, y block above)"]
+        lines += _text_table(head, rows)
+    return lines
 
 
 def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, outdir,

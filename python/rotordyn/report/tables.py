@@ -29,4 +29,51 @@ COEFFICIENT_HEADER = ("bearing", "speed (Hz)", "kxx (MN/m)", "kxy (MN/m)", "kyx 
                       "cyy (kN·s/m)", "status")
 
 
-__all__ = ["COEFFICIENT_HEADER", "coefficient_rows"]
+# A tilting film's coupling blocks (rotordyn.analysis.bearing_coefficients.TILT_COLUMNS):
+# per block its column stem, its SI unit in the column name, the printed unit and scale
+_BLOCKS = (("k", "xy", "t", "n_per_rad", "kN/rad", 1e3),
+           ("k", "t", "xy", "n_m_per_m", "kN·m/m", 1e3),
+           ("k", "t", "t", "n_m_per_rad", "kN·m/rad", 1e3),
+           ("c", "xy", "t", "n_s_per_rad", "N·s/rad", 1.0),
+           ("c", "t", "xy", "n_m_s_per_m", "N·m·s/m", 1.0),
+           ("c", "t", "t", "n_m_s_per_rad", "N·m·s/rad", 1.0))
+_AX = {"xy": ("x", "y"), "t": ("tx", "ty")}
+_SHOW = {"x": "x", "y": "y", "tx": "θx", "ty": "θy"}
+
+
+def _tilt_cells():
+    """[(frame column, header, scale)] of the coupling blocks in the order printed."""
+    out = []
+    for kc, rows, cols, unit, shown, scale in _BLOCKS:
+        for i in _AX[rows]:
+            for j in _AX[cols]:
+                out.append((f"{kc}{i}{j}_{unit}", f"{kc}{_SHOW[i]}{_SHOW[j]} ({shown})", scale))
+    return out
+
+
+def tilt_coefficient_tables(frame) -> list[tuple[tuple, list[tuple]]]:
+    """The tilting films' coupling blocks of the 4×4 K, C over (x, y, θx, θy) (force–tilt,
+    moment–translation, tilt–tilt; the translational block is the main table's) as two
+    tables, K then C: [(header, rows)], rows only for the bearings with a tilting film;
+    [] when the frame has none (an untilted model's report is unchanged)."""
+    cells = _tilt_cells()
+    if frame.empty or cells[0][0] not in frame:
+        return []
+    names = frame.loc[frame[[c for c, _, _ in cells]].notna().any(axis=1), "bearing"]
+    tilted = frame[frame["bearing"].isin(set(names))]  # every speed of those bearings
+    if tilted.empty:
+        return []
+    out = []
+    for kc in ("k", "c"):
+        part = [c for c in cells if c[0].startswith(kc)]
+        rows = []
+        for r in tilted.itertuples(index=False):
+            d = r._asdict()
+            rows.append((d["bearing"], f"{d['speed_hz']:.4g}",
+                         *(f"{d[c] / sc:.4g}" if np.isfinite(d[c]) else "n/a"
+                           for c, _, sc in part), d["status"]))
+        out.append((("bearing", "speed (Hz)", *(h for _, h, _ in part), "status"), rows))
+    return out
+
+
+__all__ = ["COEFFICIENT_HEADER", "coefficient_rows", "tilt_coefficient_tables"]

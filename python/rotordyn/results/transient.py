@@ -13,6 +13,9 @@ if TYPE_CHECKING:
     import pandas as pd
 
 
+_TILT = ("journal_theta_x_rad", "journal_theta_y_rad", "film_moment_x_n_m", "film_moment_y_n_m")
+
+
 @dataclass(frozen=True)
 class TransientResult(Display):
     """t: (n_t,) s; r, v: (n_t, n) coordinates and velocities (m, m/s); journal_x_m,
@@ -45,6 +48,13 @@ class TransientResult(Display):
     actuator_states: np.ndarray | None = None
     controller_states: np.ndarray | None = None
     adaptive_states: np.ndarray | None = None  # (n_t, 2) [Re P, Im P] Pa of the adaptive 1×
+    # tilting films (tilt = true), (n_t, n_bearings), NaN for a bearing without one; None
+    # when no film tilts: the journal's rotations relative to the housing (rad) and the
+    # films' moments on the journal (N·m; one film solve per output after the run)
+    journal_theta_x_rad: np.ndarray | None = None
+    journal_theta_y_rad: np.ndarray | None = None
+    film_moment_x_n_m: np.ndarray | None = None
+    film_moment_y_n_m: np.ndarray | None = None
 
     def __repr__(self) -> str:
         amp = ""
@@ -55,13 +65,15 @@ class TransientResult(Display):
                 f"{self.chamber_pressure_pa / 1e6:g} MPa{amp}>")
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per (time, bearing)."""
+        """One row per (time, bearing); with a tilting film also the journal's rotations
+        and the films' moments (NaN for a bearing without a tilting film)."""
         import pandas as pd
         nt, nb = self.journal_x_m.shape
 
         def col(a, default):
             return np.repeat(a, nb) if a is not None else default
 
+        tilt = {k: getattr(self, k).ravel() for k in _TILT if getattr(self, k) is not None}
         return pd.DataFrame({
             "t_s": np.repeat(self.t, nb),
             "bearing": np.tile(np.asarray(self.bearing_names, dtype=object), nt),
@@ -74,6 +86,7 @@ class TransientResult(Display):
             "journal_x_m": self.journal_x_m.ravel(),
             "journal_y_m": self.journal_y_m.ravel(),
             "h_min_m": self.h_min_m.ravel(),
+            **tilt,
             "status": self.status,
         })
 

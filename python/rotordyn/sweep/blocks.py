@@ -21,6 +21,7 @@ from rotordyn.results.modes import settled_real
 from rotordyn.sweep.columns import runs
 from rotordyn.sweep.points import (CONVERGED, STATUS, equilibrium_options, operating, point_list,
                                    ref_bearing, segments, stable_modes)
+from rotordyn.sweep.tilt_rows import batch_tilt, repeat_lists
 from rotordyn.sweep.tracking import track_points
 from rotordyn.units import hz_to_rad_s
 
@@ -193,7 +194,9 @@ def _stab_batch(job, seg, ops):
             "KE": KE, "EV": EV, "valid": valid, "MS": MS, "DR": DR, "LD": LD, "FR": FR,
             "WN": WN, "KIND": KIND, "IT": np.asarray(res.iterations).astype(np.int64),
             "jx": R[:, bc.jx] if bc else nan, "jy": R[:, bc.jy] if bc else nan, "HMIN": HMIN,
-            "lam": [EV[k, :KE[k]] for k in range(len(st))], "modes": res.modes}
+            "lam": [EV[k, :KE[k]] for k in range(len(st))], "modes": res.modes,
+            # the tilting films' outputs per point (docs/sweeps.md; none without one)
+            "tilt": batch_tilt(asm, res) if any(b.rot for b in asm.bearings) else None}
 
 
 def _stab_block(S, a, b, at, ids):
@@ -205,7 +208,8 @@ def _stab_block(S, a, b, at, ids):
                                for k in range(a, b)]).astype(np.int64) if len(cols) else cols)
     with np.errstate(invalid="ignore"):
         mx = np.where(V, EV.real, -np.inf).max(axis=1)
-    return (np.repeat(at + np.arange(a, b), ke), {
+    tilt = repeat_lists(S["tilt"][a:b], ke) if S["tilt"] is not None else {}
+    return (np.repeat(at + np.arange(a, b), ke), {**tilt,
         "journal_x_m": np.repeat(S["jx"][a:b], ke), "journal_y_m": np.repeat(S["jy"][a:b], ke),
         "h_min_m": np.repeat(S["HMIN"][a:b], ke), "iterations": np.repeat(S["IT"][a:b], ke),
         "point_stable": np.repeat(np.where(V, S["MS"][a:b], True).all(axis=1), ke),

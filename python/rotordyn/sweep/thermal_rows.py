@@ -29,6 +29,7 @@ from rotordyn.results.modes import settled_real
 from rotordyn.results.thermal import THERMAL_POINT_COLUMNS, thermal_point_values
 from rotordyn.sweep.columns import merge
 from rotordyn.sweep.points import STATUS, operating, point_list, ref_bearing, stable_modes
+from rotordyn.sweep.tilt_rows import equilibrium_tilt, repeat_lists
 from rotordyn.sweep.tracking import track_line
 
 _LISTS = THERMAL_POINT_COLUMNS[:4]
@@ -134,7 +135,9 @@ def _modes_block(k, st, t, ids, asm):
     hm = np.atleast_1d(e.h_min_m)
     kind = np.array([str(x) if x in ("rotor", "sleeve") else None for x in st.kind],
                     dtype=object)  # a pad's own mode: null, as the isothermal rows
-    return (np.full(n, k, dtype=np.int64), {
+    tilt = (repeat_lists([equilibrium_tilt(asm, e)], [n])
+            if any(b.rot for b in asm.bearings) else {})
+    return (np.full(n, k, dtype=np.int64), {**tilt,
         "mode_id": (np.arange(n) if ids is None else np.asarray(ids)).astype(np.int64),
         "mode": np.arange(1, n + 1, dtype=np.int64), "freq_hz": lam.imag / (2 * np.pi),
         "eig_real_1_per_s": lam.real, "damping_ratio": dr, "log_dec": ld,

@@ -22,6 +22,7 @@ from rotordyn.sweep.points import STATUS, Variants, base_system
 from rotordyn.sweep.robust_rows import outputs as robust_outputs, robust_blocks
 from rotordyn.sweep.thermal_rows import (stab_blocks as thermal_stab_blocks,
                                          unbalance_blocks as thermal_unbalance_blocks)
+from rotordyn.sweep.tilt_rows import TILT_OUTPUTS, tilt_on
 
 
 WHIRL = ["forward", "backward", "planar"]
@@ -93,9 +94,11 @@ def thermal_on(job) -> bool:
     return job.analysis in THERMAL_ANALYSES and job.options.get("thermal") is not None
 
 
-def schema(analysis: str, axes: list[str], thermal: bool = False) -> pa.Schema:
+def schema(analysis: str, axes: list[str], thermal: bool = False,
+           tilt: bool = False) -> pa.Schema:
     """The fixed arrow schema of a sweep's rows (every chunk is cast to it); ``thermal``:
-    with the thermal outputs of ``options.thermal``."""
+    with the thermal outputs of ``options.thermal``; ``tilt``: with the tilting films'
+    per-bearing list columns (:mod:`.tilt_rows`)."""
     fields = [pa.field("sweep_id", pa.dictionary(pa.int8(), STR)),
               pa.field("point_id", I64), pa.field("chunk_id", I64)]
     base = ["speed_hz", "chamber_pressure_pa", "config_ay_m"]
@@ -107,6 +110,8 @@ def schema(analysis: str, axes: list[str], thermal: bool = False) -> pa.Schema:
         fields.append(pa.field(k, t[0] if isinstance(t, tuple) else t))
     if thermal:
         fields += [pa.field(k, t) for k, t in THERMAL_OUTPUTS.items()]
+    if tilt:
+        fields += [pa.field(k, t) for k, t in TILT_OUTPUTS.items()]
     fields += [pa.field("status", pa.dictionary(pa.int8(), STR)), pa.field("message", STR)]
     return pa.schema(fields)
 
@@ -183,7 +188,8 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
                   thermal_stab_blocks)(job, variants, chunk_id, pl, asms)
     else:
         blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
-    t = block_table(job, schema(job.analysis, list(job.axes), thermal_on(job)),
+    t = block_table(job, schema(job.analysis, list(job.axes), thermal_on(job),
+                                tilt_on(job, base)),
                     categories(job.analysis),
                     identity(job, chunk_id, pl, asms), blocks)
     if eqs:  # the points' equilibria, for the next refinement level's starts
