@@ -4,7 +4,8 @@ Not the paper rig: the compressor of tests/data/models on plain bearings, and a 
 three plain bearings written here (statically indeterminate: the middle housing is offset, so
 the shaft crosses the outer bearings at a slope). Checks:
 * the standalone tilt functions take a model file's plain bearing (``system.bearings[i]``, a
-  ``FluidFilmBearing``) and give its film model's answers bit for bit; any other object is an
+  ``FluidFilmBearing``) and give, bit for bit, the answers of a ``JournalBearing`` written
+  from the model file's numbers in the test; any other object is an
   InputError naming ``bearing`` (it was an AttributeError from inside the film code);
 * a speed whose misaligned equilibrium fails is a Campbell or unbalance row with its status
   and no verdict: no whirl, no mode kind, no stability flag, NaN (not ±inf, not 0) damping
@@ -81,7 +82,10 @@ def three_bearing_line(config=((0.0, 0.0), (0.0, 0.0), (0.0, 0.0)), tilt=(True, 
 
 def test_standalone_tilt_functions_take_a_model_files_plain_bearing():
     b = compressor().bearings[1]
-    jb = b.journal_bearing()
+    # the DE film as the model file and compressor() state it, built here (not through
+    # b.journal_bearing(), which the functions call themselves)
+    jb = rotordyn.JournalBearing(diameter_m=0.1, length_m=0.05, clearance_m=1.0e-4,
+                                 viscosity_pa_s=0.018, n_circ=48, n_axial=6)
     kw = dict(speed_hz=F_HZ, theta_x_rad=2e-4, theta_y_rad=-1e-4)
     m, mj = (misaligned_equilibrium(x, load_n=(0.0, -1500.0), **kw) for x in (b, jb))
     assert m.status == "ok" and (m.x_m, m.y_m) == (mj.x_m, mj.y_m)
