@@ -122,6 +122,15 @@ def test_failed_misaligned_speeds_carry_no_verdict():
     u = rotordyn.unbalance_response(s, [(3, 1e-4, 0.0)], [100.0, F_HZ], stations=[1, 3])
     fu = u.to_frame()
     assert (fu["status"] == "no_equilibrium").all() and fu["major_m"].isna().all()
+    # point_message, one type and wording on every path (isothermal here; thermal in
+    # tests/test_thermal_dynamics.py): the equilibrium's message per failed speed, a str
+    for res in (c, u):
+        assert res.point_message.dtype == object and len(res.point_message) == 2
+        assert all(isinstance(m, str) and "minimum film thickness" in m
+                   for m in res.point_message)
+    ok = rotordyn.campbell(compressor(), [F_HZ], n_modes=2)
+    ou = rotordyn.unbalance_response(compressor(), [(3, 1e-4, 0.0)], [F_HZ], refine=False)
+    assert list(ok.point_message) == list(ou.point_message) == [None]  # converged: None
     assert fu["whirl"].isna().all() and fu["point_stable"].isna().all()
     assert not u.stable.any()  # no stable verdict without an equilibrium (the attribute too)
     assert "above the threshold" not in repr(u)
