@@ -195,3 +195,28 @@ TEST_CASE("hb corrector over a caller's parameter: a refused value is a status w
   CHECK_THROWS(hb_continuation_step(at, c, opt), InputError);
   CHECK_THROWS(hb_continuation_step(HbSystemProvider(), first_point(1000.0), opt), InputError);
 }
+
+TEST_CASE("hb corrector on one system: its orbit input is validated (once, at the first value)") {
+  // The one-system entry (p_c here; the oscillator has no chamber, so the response is the
+  // closed form at any p_c): the system and the orbit input differ between parameter values
+  // only by p_c, Ω or a_y, so they are checked at the first value only; a bad input is still
+  // an InputError before any solve.
+  const HbContinuationOptions opt = options();
+  SystemSolver one(oscillator(2500.0));
+  HbContinuationInput c = first_point(2500.0);
+  c.parameter = ContinuationParameter::chamber_pressure;
+  c.p = 1e5;
+  c.y_prev(4) = c.p;
+  const HbContinuationStep s = hb_continuation_step(one, c, opt);
+  CHECK(s.hb.orbit.status == "ok" && s.p == 1e5);
+  const Response ref = closed_form(2500.0);
+  const double amp = std::hypot(ref.a, ref.b);
+  CHECK_CLOSE(s.hb.coefficients(1, 0), ref.a, 0, 1e-10 * amp);
+  CHECK_CLOSE(s.hb.coefficients(2, 0), ref.b, 0, 1e-10 * amp);
+  HbContinuationInput bad = c;
+  bad.base.unbalance_cos.setZero();  // a forced orbit without forcing
+  CHECK_THROWS(hb_continuation_step(one, bad, opt), InputError);
+  bad = c;
+  bad.base.n_out = 1;
+  CHECK_THROWS(hb_continuation_step(one, bad, opt), InputError);
+}
