@@ -7,18 +7,24 @@ its back, 1000 W/(m² K)), the film-side coefficients with the eddy conductivity
 the CPU per equilibrium (median of interleaved repeats).
 
 Run:  python benchmarks/bench_thd_turbulent_walls.py [--grid 48x12] [--repeat 5]
+Protocol (benchmarks/_common.py): one BLAS/OpenMP thread for both sides (pinned and printed),
+interleaved repeats, medians, CPU beside wall time, the machine load before and after.
 """
 
 import argparse
 import math
 import os
 import statistics
+import sys
 import time
 
-import rotordyn
-from rotordyn import _core
-from rotordyn.bearings import Oil
-from rotordyn.bearings.thd import run_thd_equilibrium, thd_options
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from _common import footer, header  # noqa: E402
+
+import rotordyn  # noqa: E402
+from rotordyn import _core  # noqa: E402
+from rotordyn.bearings import Oil  # noqa: E402
+from rotordyn.bearings.thd import run_thd_equilibrium, thd_options  # noqa: E402
 
 VG32 = Oil(viscosity_law="walther", t1_c=40.0, nu1_mm2_s=32.0, t2_c=100.0, nu2_mm2_s=5.4,
            density_kg_m3=870.0, specific_heat_j_per_kg_k=2000.0, conductivity_w_per_m_k=0.13)
@@ -42,7 +48,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=5)
     a = ap.parse_args()
     nc, na = (int(x) for x in a.grid.split("x"))
-    print(f"load average {os.getloadavg()}")
+    header("turbulent THD film's wall heat transfer")
     out = {}
     for turb in ("laminar", "ng_pan"):
         b = rotordyn.JournalBearing(diameter_m=0.3, length_m=0.15, clearance_m=4.5e-4,
@@ -73,7 +79,7 @@ def main():
               f"{statistics.median(cpu[False]):.3f} / {statistics.median(cpu[True]):.3f} "
               f"(ratio {statistics.median(cpu[True]) / statistics.median(cpu[False]):.2f}); "
               f"wall s {statistics.median(wall[False]):.3f} / {statistics.median(wall[True]):.3f}")
-    print(f"load average {os.getloadavg()}")
+    footer()
 
 
 if __name__ == "__main__":

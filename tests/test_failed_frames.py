@@ -46,12 +46,20 @@ def test_a_failed_thermal_frame_has_no_state(compressor):
     assert t.status == "ok"
     good = t.to_frame()
     assert np.isfinite(good[["max_temperature_c", "journal_x_m", "h_min_m"]].to_numpy()).all()
-    bad = dataclasses.replace(t, status="not_converged", message="did not settle").to_frame()
+    # a real failure, not a relabelled success: both housings misaligned by 3.95 mrad (the
+    # aligned shaft's edge gap 1.25 um, tests/test_tilt_use.py) close the films, so the
+    # thermal equilibrium's system equilibrium has no solution
+    tilted = dataclasses.replace(compressor, bearings=[
+        dataclasses.replace(b, n_circ=48, n_axial=6, tilt=True, config_theta_y_rad=3.95e-3)
+        for b in compressor.bearings])
+    f = rd.system_thermal_equilibrium(tilted, speed_hz=150.0)
+    assert f.status in ("no_equilibrium", "not_converged") and f.message
+    bad = f.to_frame()
     state = [c for c in bad.columns if c not in ("speed_hz", "supply_temperature_c", "bearing",
                                                    "thermal_model", "status", "message")]
     assert "max_temperature_c" in state and "journal_x_m" in state
     assert bad[state].isna().all().all()
-    assert list(bad["status"]) == ["not_converged"] * 2
+    assert list(bad["status"]) == [f.status] * 2 and (bad["message"] == f.message).all()
     assert (bad["supply_temperature_c"] == good["supply_temperature_c"]).all()
 
 

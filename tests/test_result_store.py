@@ -123,3 +123,19 @@ def test_refuses_newer_schema_wrong_kind_and_other_files(results, tmp_path):
     with pytest.raises(rd.InputError, match="expected a rotordyn result"):
         store.save_result({"a": 1}, tmp_path / "x.npz")
     assert zipfile.is_zipfile(p)  # an ordinary .npz: numpy reads its arrays directly
+
+
+def test_point_message_with_none_round_trips(tmp_path):
+    """``point_message`` is an object array of str (a failed point) and None (a converged
+    one): saved and loaded as it was (the store refused object arrays that were not all
+    text, so every Campbell and unbalance result failed to save once None marked the
+    converged points)."""
+    from rotordyn.results.campbell import CampbellResult
+    from rotordyn.results.store import load_result, save_result
+
+    c = CampbellResult(np.array([1.0, 2.0]), np.full((2, 1), 1j),
+                       np.zeros((2, 1), dtype=np.int64), point_status=np.array(["ok", "error"]),
+                       point_message=np.array([None, "ConvergenceError: x"], dtype=object))
+    back = load_result(save_result(c, tmp_path / "c.npz"))
+    assert back.point_message.dtype == object
+    assert list(back.point_message) == [None, "ConvergenceError: x"]

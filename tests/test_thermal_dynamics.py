@@ -157,10 +157,10 @@ def test_a_failed_speed_says_why_in_the_api_results_and_unbalance_rows():
     th = dict(supply_temperature_c=195.0)
     c = rd.campbell(s, [100.0, 150.0], n_modes=2, thermal=th)
     assert list(c.point_status) == ["ok", "error"]
-    assert c.point_message[0] == "" and "viscosity law's range" in c.point_message[1]
+    assert c.point_message[0] is None and "viscosity law's range" in c.point_message[1]
     f = c.to_frame()
     assert f[f["speed_hz"] == 150.0]["message"].str.startswith("ConvergenceError: ").all()
-    assert (f[f["speed_hz"] == 100.0]["message"] == "").all()
+    assert f[f["speed_hz"] == 100.0]["message"].isna().all()
     u = rd.unbalance_response(s, [(3, 1e-4, 0.0)], [100.0, 150.0], refine=False, thermal=th)
     assert list(u.point_status) == ["ok", "error"]
     assert list(u.point_message) == list(c.point_message)

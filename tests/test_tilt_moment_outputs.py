@@ -119,3 +119,25 @@ def test_report_film_table(tmp_path):
     fu = frame(compressor(tilt=False), [150.0])
     assert fu["h_min_m"].notna().all() and "film_moment_y_n_m" not in fu
     assert isinstance(fu, pd.DataFrame)
+
+
+def test_report_tables_mark_a_missing_value_alike():
+    """The film table of a failed speed and the thermal table's missing values print the one
+    marker of the report's tables (rotordyn.report.tables.MISSING, "n/a"); the film table
+    printed "–" where the thermal and coefficient tables print "n/a"."""
+    from rotordyn.report.films import film_frame, film_text_lines
+    from rotordyn.report.tables import MISSING
+    from rotordyn.report.thermal import thermal_rows
+
+    s = compressor(config_theta_y_rad=AL)
+    fr = film_frame(s, [(150.0, "no_equilibrium", None)])
+    body = film_text_lines(fr, {b_.name: b_.length_m for b_ in s.bearings})[3:]
+    assert len(body) == 2 and "–" not in "".join(body)
+    for line in body:  # ε, h_min, φ, z, tilt, M_x, M_y: missing; the status kept
+        assert line.split().count(MISSING) == 7 and line.rstrip().endswith("no_equilibrium")
+    nan = float("nan")
+    th = pd.DataFrame([dict(bearing="NDE bearing", speed_hz=150.0, max_temperature_c=nan,
+                            effective_temperature_c=nan, inlet_temperature_c=nan,
+                            power_loss_w=nan, film_flow_m3_s=nan, supply_flow_m3_s=nan,
+                            journal_y_m=nan, h_min_m=nan, status="no_equilibrium")])
+    assert thermal_rows(th)[0][2:-1] == (MISSING,) * 8

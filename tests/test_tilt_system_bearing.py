@@ -9,7 +9,10 @@ Before: an AttributeError from inside (``'FluidFilmBearing' object has no attrib
 thermal equilibrium's bearing silently was the isoviscous one. Now the system bearing is its
 film model with its field. Checked on the compressor of tests/data/models (not the paper rig)
 on two misaligned turbulent plain bearings with its oil system (THD):
-* the plain bearing of the model file equals its ``journal_bearing()`` bit for bit;
+* the plain bearing of the model file equals, bit for bit, a ``JournalBearing`` written here
+  from the model file's numbers (not through ``journal_bearing()``, which the functions call
+  themselves: comparing with it compared a path with itself), and its forces and moments at
+  the system's own equilibrium pose equal the system's film (assembly's coupling, 1e-9);
 * the THD-frozen bearing of ``system_thermal_equilibrium(...).system``: the films' moments of
   the frozen system's equilibrium equal ``tilted_forces`` of that bearing at the
   equilibrium's pose (1e-9; the system's film, the same field), and differ from the
@@ -47,17 +50,34 @@ def _compressor():
 
 
 def test_a_system_plain_bearing_is_its_film_model():
-    b = _compressor().bearings[0]
+    s = _compressor()
+    b = s.bearings[0]
+    # the film as the model file and _compressor() state it, built here
+    ref = rd.JournalBearing(diameter_m=0.1, length_m=0.05, clearance_m=1.0e-4,
+                            viscosity_pa_s=0.018, n_circ=48, n_axial=6, turbulence="ng_pan",
+                            density_kg_m3=860.0)
     pose = dict(x_m=2e-5, y_m=-1e-5, speed_hz=F_HZ, theta_x_rad=1e-4, theta_y_rad=-2e-4)
-    a, r = tilted_forces(b, **pose), tilted_forces(b.journal_bearing(), **pose)
+    a, r = tilted_forces(b, **pose), tilted_forces(ref, **pose)
     assert np.array_equal(a.force_n, r.force_n) and np.array_equal(a.moment_n_m, r.moment_n_m)
-    for x, y in zip(tilted_coefficients(b, **pose), tilted_coefficients(b.journal_bearing(),
-                                                                         **pose)):
+    for x, y in zip(tilted_coefficients(b, **pose), tilted_coefficients(ref, **pose)):
         assert np.array_equal(x, y)
     e = misaligned_equilibrium(b, load_n=(0.0, -1000.0), speed_hz=F_HZ, theta_y_rad=3e-4)
-    e0 = misaligned_equilibrium(b.journal_bearing(), load_n=(0.0, -1000.0), speed_hz=F_HZ,
-                                theta_y_rad=3e-4)
+    e0 = misaligned_equilibrium(ref, load_n=(0.0, -1000.0), speed_hz=F_HZ, theta_y_rad=3e-4)
     assert e.status == "ok" and (e.x_m, e.y_m) == (e0.x_m, e0.y_m)
+    # the system's own film (assembly's coupling) at its isothermal equilibrium pose
+    eq = rd.equilibrium(s, F_HZ)
+    assert eq.status == "ok"
+    for i, bi in enumerate(s.bearings):
+        tt = eq.tilt[i]
+        f = tilted_forces(bi, x_m=eq.journal_x_m[i], y_m=eq.journal_y_m[i], speed_hz=F_HZ,
+                          theta_x_rad=tt["journal_theta_x_rad"],
+                          theta_y_rad=tt["journal_theta_y_rad"])
+        got = np.array([tt["film_moment_x_n_m"], tt["film_moment_y_n_m"]])
+        np.testing.assert_allclose(got, f.moment_n_m, rtol=1e-9,
+                                   atol=1e-9 * np.abs(f.moment_n_m).max())
+        bc = assembled(s).bearings[i]
+        np.testing.assert_allclose(f.force_n, np.asarray(eq.film_force_n)[[bc.jx, bc.jy]],
+                                   rtol=1e-9)
 
 
 def test_a_thd_frozen_bearing_keeps_its_field():

@@ -4,7 +4,8 @@ Not the paper rig: the compressor of tests/data/models on plain bearings, and a 
 three plain bearings written here (statically indeterminate: the middle housing is offset, so
 the shaft crosses the outer bearings at a slope). Checks:
 * the standalone tilt functions take a model file's plain bearing (``system.bearings[i]``, a
-  ``FluidFilmBearing``) and give its film model's answers bit for bit; any other object is an
+  ``FluidFilmBearing``) and give, bit for bit, the answers of a ``JournalBearing`` written
+  from the model file's numbers in the test; any other object is an
   InputError naming ``bearing`` (it was an AttributeError from inside the film code);
 * a speed whose misaligned equilibrium fails is a Campbell or unbalance row with its status
   and no verdict: no whirl, no mode kind, no stability flag, NaN (not ±inf, not 0) damping
@@ -81,7 +82,10 @@ def three_bearing_line(config=((0.0, 0.0), (0.0, 0.0), (0.0, 0.0)), tilt=(True, 
 
 def test_standalone_tilt_functions_take_a_model_files_plain_bearing():
     b = compressor().bearings[1]
-    jb = b.journal_bearing()
+    # the DE film as the model file and compressor() state it, built here (not through
+    # b.journal_bearing(), which the functions call themselves)
+    jb = rotordyn.JournalBearing(diameter_m=0.1, length_m=0.05, clearance_m=1.0e-4,
+                                 viscosity_pa_s=0.018, n_circ=48, n_axial=6)
     kw = dict(speed_hz=F_HZ, theta_x_rad=2e-4, theta_y_rad=-1e-4)
     m, mj = (misaligned_equilibrium(x, load_n=(0.0, -1500.0), **kw) for x in (b, jb))
     assert m.status == "ok" and (m.x_m, m.y_m) == (mj.x_m, mj.y_m)
@@ -118,6 +122,15 @@ def test_failed_misaligned_speeds_carry_no_verdict():
     u = rotordyn.unbalance_response(s, [(3, 1e-4, 0.0)], [100.0, F_HZ], stations=[1, 3])
     fu = u.to_frame()
     assert (fu["status"] == "no_equilibrium").all() and fu["major_m"].isna().all()
+    # point_message, one type and wording on every path (isothermal here; thermal in
+    # tests/test_thermal_dynamics.py): the equilibrium's message per failed speed, a str
+    for res in (c, u):
+        assert res.point_message.dtype == object and len(res.point_message) == 2
+        assert all(isinstance(m, str) and "minimum film thickness" in m
+                   for m in res.point_message)
+    ok = rotordyn.campbell(compressor(), [F_HZ], n_modes=2)
+    ou = rotordyn.unbalance_response(compressor(), [(3, 1e-4, 0.0)], [F_HZ], refine=False)
+    assert list(ok.point_message) == list(ou.point_message) == [None]  # converged: None
     assert fu["whirl"].isna().all() and fu["point_stable"].isna().all()
     assert not u.stable.any()  # no stable verdict without an equilibrium (the attribute too)
     assert "above the threshold" not in repr(u)

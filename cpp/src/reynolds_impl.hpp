@@ -13,6 +13,7 @@
 #include "reynolds_band.hpp"
 #include "reynolds_ldlt.hpp"
 #include "rotordyn/reynolds.hpp"
+#include "turbulence_detail.hpp"
 
 namespace rotordyn {
 
@@ -117,6 +118,11 @@ struct ReynoldsSolver::Impl {
   void turb_face(double hf, bool axial, int q, double& m, double& dm) const;
   double node_re(int n, double hn) const {
     return visc_field ? re_per_h * hn * (mu / mu_node[n]) : re_per_h * hn;
+  }
+  // node_cf: the Couette wall-shear factor C_f at node n with film h (1 laminar): the
+  // friction torque's and the dissipation's, one expression (couette_shear_factor).
+  double node_cf(int n, double hn) const {
+    return turb ? couette_shear_factor(geo.turbulence, node_re(n, hn)) : 1.0;
   }
   // Viscosity field (set_viscosity_field, the thermo-hydrodynamic film; reynolds_viscosity.cpp):
   // node viscosities and the multipliers mu/mu_face of the faces' conductances (the face

@@ -346,7 +346,7 @@ void ReynoldsSolver::Impl::postprocess() {
         const int n = row + k;
         const double dpdphi = (pe[k] - pw[k]) / (2.0 * dphi);
         double tau = node_mu(n) * omega * R * thr[k] / hr[k];
-        if (turb) tau *= turbulence_factors(geo.turbulence, node_re(n, hr[k])).cf;  // Couette
+        if (turb) tau *= node_cf(n, hr[k]);  // Couette
         tr[k] = tau + hr[k] / (2.0 * R) * dpdphi;
       }
     }
@@ -365,7 +365,7 @@ void ReynoldsSolver::Impl::postprocess() {
   for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
     const int k = n % K1;
     const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
-    const double cf = turb ? turbulence_factors(geo.turbulence, node_re(n, h[n])).cf : 1.0;
+    const double cf = node_cf(n, h[n]);
     torque += wk * cf * node_mu(n) * omega * R * theta[n] * (pocket_inv_h(n) - 1.0 / h[n]);
   }
   out.force_n = Eigen::Vector2d(fx * area, fy * area);

@@ -23,6 +23,11 @@ const char* turbulence_name(Turbulence t) {
   return "?";
 }
 
+double couette_shear_factor(Turbulence model, double re) {
+  if (model == Turbulence::laminar || !(re > 0.0)) return 1.0;  // Re = 0: exactly laminar
+  return 1.0 + 0.0012 * std::pow(re, 0.94);
+}
+
 TurbulenceFactors turbulence_factors(Turbulence model, double re) {
   TurbulenceFactors f;
   if (model == Turbulence::laminar || !(re > 0.0)) return f;  // Re = 0: exactly laminar
@@ -30,7 +35,7 @@ TurbulenceFactors turbulence_factors(Turbulence model, double re) {
   const double ax = 0.0136 * std::pow(re, 0.90), az = 0.0043 * std::pow(re, 0.96);
   f.kx = 12.0 + ax;
   f.kz = 12.0 + az;
-  f.cf = 1.0 + 0.0012 * std::pow(re, 0.94);
+  f.cf = couette_shear_factor(model, re);
   f.re_dkx = 0.90 * ax;
   f.re_dkz = 0.96 * az;
   return f;

@@ -9,6 +9,7 @@
 
 #include "format_detail.hpp"
 #include "rotordyn/errors.hpp"
+#include "turbulence_detail.hpp"
 
 namespace rotordyn {
 
@@ -120,7 +121,7 @@ TurbulentWallFactors turbulent_wall_factors(Turbulence model, double re, double 
     throw InputError("prandtl_number: expected a finite value > 0, got " + num(pr));
   if (model == Turbulence::laminar || re == 0.0) return {};
   // the film's own Couette wall shear τ = C_f μU/h: h⁺ = √(C_f Re_h)
-  const double cf = turbulence_factors(model, re).cf;
+  const double cf = couette_shear_factor(model, re);
   return eddy_wall_factors(0.5 * std::sqrt(cf * re), pr / kTurbulentPrandtl);
 }
 

@@ -2,8 +2,10 @@
 // a provider of the systems): a forced oscillator (no film) over its stiffness against the
 // closed form of its response and of the response's derivative, and a value the provider
 // refuses as a status with the refusal.
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "rotordyn/errors.hpp"
 #include "rotordyn/hb_continuation.hpp"
@@ -52,9 +54,9 @@ Response closed_form(double k) {
 // The systems at k: a solver per call (as a caller re-assembling a model), k ≥ k_max refused.
 struct Provider {
   double k_max;
-  int calls = 0;
+  std::vector<double> visited;  // every k asked for, in order
   HbSystemAt operator()(double k) {
-    ++calls;
+    visited.push_back(k);
     HbSystemAt at;
     if (k >= k_max) {
       at.refused = "the model refuses k = " + std::to_string(k);
@@ -100,7 +102,7 @@ TEST_CASE("hb corrector over a caller's parameter: forced oscillator over k is t
   // the first point (k held) and one arclength step, each against the closed form to 1e-10
   // of the amplitude, and the tangent's direction against d(a, b)/dk to 1e-6 (the central
   // difference ∂R/∂p: O(h²) = 1e-8 relative here, plus round-off).
-  Provider prov{1e9};
+  Provider prov{1e9, {}};
   const HbSystemProvider at = std::ref(prov);
   const HbContinuationOptions opt = options();
   HbContinuationInput c = first_point(2500.0);
@@ -139,12 +141,41 @@ TEST_CASE("hb corrector over a caller's parameter: forced oscillator over k is t
   ref = closed_form(s1.p);
   CHECK_CLOSE(s1.hb.coefficients(1, 0), ref.a, 0, 1e-10 * amp);
   CHECK_CLOSE(s1.hb.coefficients(2, 0), ref.b, 0, 1e-10 * amp);
-  CHECK(prov.calls > 0);
+  // The systems the provider was asked for: per step the start value, then per corrector
+  // iteration (it = 0..iterations) the central difference's pair p ± h (h = fd_step · D_p =
+  // 0.1 N/m) at that iterate's p and, before the next iteration, one line-search trial (the
+  // residual is affine in (z, k): every full Newton step is accepted, so one trial per step).
+  const double h = c.fd_step * c.scale(2);
+  auto expected = [&](double p_start, const HbContinuationStep& s, const std::vector<double>& got,
+                      std::size_t at) {
+    const int it = s.hb.orbit.iterations;
+    const std::size_t n = 1 + 2 * (it + 1) + it;  // start, pairs, trials
+    CHECK(got.size() >= at + n);
+    if (got.size() < at + n) return at + n;
+    CHECK(got[at] == p_start);
+    double p = p_start;
+    std::size_t q = at + 1;
+    for (int i = 0; i <= it; ++i) {
+      CHECK_CLOSE(got[q], p + h, 1e-15, 0);
+      CHECK_CLOSE(got[q + 1], p - h, 1e-15, 0);
+      q += 2;
+      if (i < it) p = got[q++];  // the trial: the next iterate
+    }
+    CHECK(p == s.p);  // the last iterate is the step's answer
+    return q;
+  };
+  CHECK(s0.fd_evaluations == 2 * (s0.hb.orbit.iterations + 1));
+  CHECK(s1.fd_evaluations == 2 * (s1.hb.orbit.iterations + 1));
+  const std::size_t n0 = expected(2500.0, s0, prov.visited, 0);
+  CHECK(std::all_of(prov.visited.begin() + 1, prov.visited.begin() + n0,
+                    [&](double k) { return std::abs(k - 2500.0) <= h * (1 + 1e-12); }));
+  const std::size_t n1 = expected(c1.p, s1, prov.visited, n0);
+  CHECK(prov.visited.size() == n1);  // nothing else asked for
 }
 
 TEST_CASE("hb corrector over a caller's parameter: a refused value is a status with its reason") {
   const HbContinuationOptions opt = options();
-  Provider prov{2000.0};
+  Provider prov{2000.0, {}};
   const HbSystemProvider at = std::ref(prov);
   // the predicted point refused
   HbContinuationStep s = hb_continuation_step(at, first_point(2500.0), opt);
@@ -163,4 +194,29 @@ TEST_CASE("hb corrector over a caller's parameter: a refused value is a status w
   c.y_prev = Eigen::VectorXd::Zero(8);
   CHECK_THROWS(hb_continuation_step(at, c, opt), InputError);
   CHECK_THROWS(hb_continuation_step(HbSystemProvider(), first_point(1000.0), opt), InputError);
+}
+
+TEST_CASE("hb corrector on one system: its orbit input is validated (once, at the first value)") {
+  // The one-system entry (p_c here; the oscillator has no chamber, so the response is the
+  // closed form at any p_c): the system and the orbit input differ between parameter values
+  // only by p_c, Ω or a_y, so they are checked at the first value only; a bad input is still
+  // an InputError before any solve.
+  const HbContinuationOptions opt = options();
+  SystemSolver one(oscillator(2500.0));
+  HbContinuationInput c = first_point(2500.0);
+  c.parameter = ContinuationParameter::chamber_pressure;
+  c.p = 1e5;
+  c.y_prev(4) = c.p;
+  const HbContinuationStep s = hb_continuation_step(one, c, opt);
+  CHECK(s.hb.orbit.status == "ok" && s.p == 1e5);
+  const Response ref = closed_form(2500.0);
+  const double amp = std::hypot(ref.a, ref.b);
+  CHECK_CLOSE(s.hb.coefficients(1, 0), ref.a, 0, 1e-10 * amp);
+  CHECK_CLOSE(s.hb.coefficients(2, 0), ref.b, 0, 1e-10 * amp);
+  HbContinuationInput bad = c;
+  bad.base.unbalance_cos.setZero();  // a forced orbit without forcing
+  CHECK_THROWS(hb_continuation_step(one, bad, opt), InputError);
+  bad = c;
+  bad.base.n_out = 1;
+  CHECK_THROWS(hb_continuation_step(one, bad, opt), InputError);
 }

@@ -350,7 +350,9 @@ TEST_CASE("reynolds: the resumed active-set factorisations give the film bit for
   // Swift-Stieber on the half and the full grid and a z-dependent (tilted) film, both senses
   // of rotation: with the resume of the band factor (the full grid's iterations after the
   // first) the pressures, force and K, C are those of full refactorisations in every
-  // iteration, bit for bit, and the resume happened (the half grid refactorises in full).
+  // iteration, bit for bit, and the resume happened in every case that runs on the full grid
+  // (checked per case: the half grid's coefficients refactorise in full, the tilted film's
+  // solve, full grid either way, resumes in 0 < r < iterations; observed 1-2 per solve).
   const int N = 72, K1 = 17;
   RowMatrixXd h(N, K1), hd = RowMatrixXd::Zero(N, K1);
   for (int j = 0; j < N; ++j)
@@ -358,7 +360,6 @@ TEST_CASE("reynolds: the resumed active-set factorisations give the film bit for
       const double phi = 2.0 * kPi * j / N, z = (k - 8) / 16.0;
       h(j, k) = 1e-4 * (1.0 - (0.58 + 0.2 * z) * std::cos(phi - 0.5 - 0.3 * z));
     }
-  int resumed = 0;
   for (const double w : {2 * kPi * 50.0, -2 * kPi * 50.0})
     for (const bool sym : {true, false}) {
       ReynoldsSolver a(geom(0.05, 0.04), FilmGrid{N, 16}, Cavitation::reynolds);
@@ -368,17 +369,19 @@ TEST_CASE("reynolds: the resumed active-set factorisations give the film bit for
       for (ReynoldsSolver* s : {&a, &b}) s->set_use_axial_symmetry(sym);
       const auto ca = a.coefficients(3e-5, -5e-5, w), cb = b.coefficients(3e-5, -5e-5, w);
       CHECK(a.band_factor_used() && b.band_factor_used() && b.band_resumed() == 0);
-      resumed += a.band_resumed();
-      if (sym) CHECK(a.band_resumed() == 0);
+      if (sym)
+        CHECK(a.band_resumed() == 0);
+      else
+        CHECK(a.band_resumed() > 0);
       CHECK(ca.K == cb.K && ca.C == cb.C && ca.force_n == cb.force_n);
       const FilmSolution& fa = a.solve(h, hd, w);
       const RowMatrixXd pa = fa.p_pa;
       const int ia = fa.iterations;
+      const int ra = a.band_resumed();  // read before b's solve: a's own last solve
+      CHECK(ra > 0 && ra < ia);
       const FilmSolution& fb = b.solve(h, hd, w);
       CHECK(fb.iterations == ia && ia >= 2 && (pa.array() == fb.p_pa.array()).all());
-      resumed += a.band_resumed();
     }
-  CHECK(resumed > 0);
 }
 
 TEST_CASE("reynolds: linearize_many equals one linearize() per perturbation, bit for bit") {

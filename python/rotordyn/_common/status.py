@@ -6,3 +6,17 @@ STATUSES = ("ok", "no_equilibrium", "contact", "not_converged", "error")
 # only these are linearised, classified or integrated from. The others are failures.
 CONVERGED = ("ok", "contact")
 FAILED = ("no_equilibrium", "not_converged", "error")
+
+
+def point_messages(status, messages):
+    """``point_message`` of a result over points (Campbell, unbalance response; one type on
+    every path, isothermal or thermal): an (n,) object array, at a failed point why it failed
+    (a str: the failed stage's message, ``"<ErrorClass>: <what>"`` where a solve raised, else
+    the status itself), None where the point converged (status in :data:`CONVERGED`)."""
+    import numpy as np
+
+    out = np.full(len(status), None, dtype=object)
+    for i, (st, m) in enumerate(zip(status, messages)):
+        if str(st) not in CONVERGED:
+            out[i] = str(m) if m else str(st)
+    return out

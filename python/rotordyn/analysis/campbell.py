@@ -14,6 +14,7 @@ from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
 from rotordyn.model.system import System
 from rotordyn.results.campbell import CampbellResult
+from rotordyn._common.status import point_messages
 from rotordyn.results.equilibrium import CONVERGED
 
 WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
@@ -55,17 +56,18 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     kind = np.full((sp.size, width), "rotor", dtype=object)
     status = np.empty(sp.size, dtype=object)
     message = [""] * sp.size
+    errors: dict = {}
     shapes = np.full((sp.size, asm.n, width), np.nan + 0j)
     for i, stt, lm in continued_linear_models(system, sp, chamber_pressure_pa, config_ay_m,
-                                              method):
+                                              method, errors=errors):
         status[i] = stt
         if lm is None or stt not in CONVERGED:  # a failed point stays a NaN row
-            message[i] = lm.equilibrium.message if lm is not None else "the solve raised"
+            message[i] = lm.equilibrium.message if lm is not None else errors.get(i, "")
             continue
         try:
             st = _stability_from(asm, lm, None if n_modes is None else k)
         except RotordynError as exc:
-            status[i], message[i] = "error", str(exc)
+            status[i], message[i] = "error", f"{type(exc).__name__}: {exc}"
             continue
         m = min(width, len(st.eigenvalues))
         lam[i, :m] = st.eigenvalues[:m]
@@ -77,4 +79,4 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     mode_id = track_modes(lam, shapes, weight=np.asarray(asm.model.M))
     return CampbellResult(sp, lam, whirl, model=system.reduction.method, kind=kind,
                           point_status=status.astype(str), mode_id=mode_id,
-                          point_message=np.asarray(message, dtype=str))
+                          point_message=point_messages(status, message))

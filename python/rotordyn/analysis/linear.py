@@ -179,11 +179,11 @@ def stability(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float
 
 def continued_linear_models(system: System, speeds_hz, chamber_pressure_pa: float,
                             config_ay_m: float | None, method: str,
-                            continue_on=("ok",)):
+                            continue_on=("ok",), errors: dict | None = None):
     """Yield ``(index, status, LinearModel | None)`` along increasing ``speeds_hz``: each
     equilibrium starts from the last one whose status is in ``continue_on`` (continuation),
-    then K_H(Ω), D_H(Ω). A point whose solve raises is ``(i, "error", None)``; the sequence
-    goes on. Used by the Campbell diagram, gain schedules and bearing coefficients (the
+    then K_H(Ω), D_H(Ω). A point whose solve raises is ``(i, "error", None)`` (``errors[i]``:
+    ``"<ErrorClass>: <what>"`` when a dict is given); the sequence goes on. Used by the Campbell diagram, gain schedules and bearing coefficients (the
     unbalance response runs the same sequence in one C++ call, ``_core.unbalance_sweep``)."""
     from rotordyn.errors import RotordynError
 
@@ -194,7 +194,9 @@ def continued_linear_models(system: System, speeds_hz, chamber_pressure_pa: floa
             e = equilibrium(system, float(s), chamber_pressure_pa, config_ay_m, r0=r0,
                             warm_start=r0 is None)
             lm = _linear_from(asm, e, float(s), method, FD_REL_STEP)
-        except RotordynError:
+        except RotordynError as exc:
+            if errors is not None:
+                errors[i] = f"{type(exc).__name__}: {exc}"
             yield i, "error", None
             continue
         if e.status in continue_on:

@@ -20,6 +20,7 @@ import inspect
 import numpy as np
 
 from rotordyn.errors import ConvergenceError, InputError
+from rotordyn._common.status import point_messages
 from rotordyn.results.equilibrium import CONVERGED
 
 WHIRL_CODE = {"forward": 1, "backward": -1, "planar": 0}
@@ -146,7 +147,7 @@ def thermal_campbell(linearize, stability_from, system, sp, chamber_pressure_pa,
                            warm_start=False)
             status[i] = lm.status
             if lm.status not in CONVERGED:
-                message[i] = lm.equilibrium.message or lm.status
+                message[i] = lm.equilibrium.message
                 continue
             st = stability_from(assembled(t.system), lm, None if n_modes is None else k)
         except RotordynError as exc:
@@ -162,7 +163,7 @@ def thermal_campbell(linearize, stability_from, system, sp, chamber_pressure_pa,
     mode_id = track_modes(lam, shapes, weight=np.asarray(asm.model.M))
     return CampbellResult(sp, lam, whirl, model=system.reduction.method, kind=kind,
                           point_status=status.astype(str), mode_id=mode_id,
-                          thermal=tuple(therm), point_message=message.astype(str))
+                          thermal=tuple(therm), point_message=point_messages(status, message))
 
 
 def thermal_unbalance(unbalance_response, system, ub, sp, kw: dict, thermal):
@@ -191,4 +192,4 @@ def thermal_unbalance(unbalance_response, system, ub, sp, kw: dict, thermal):
             mr[i] = u.max_real_1_per_s[0]
     return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub),
                            kw.get("operating_speed_hz"), mr, thermal=tuple(therm),
-                           point_message=message.astype(str))
+                           point_message=point_messages(status, message))

@@ -12,6 +12,7 @@ from rotordyn.analysis.assembly import assembled
 from rotordyn.analysis.equilibrium import equilibrium_options
 from rotordyn.analysis.linear import FD_REL_STEP, LINEARIZATION_METHODS
 from rotordyn.errors import ConvergenceError, InputError
+from rotordyn._common.status import point_messages
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn._common import validate as v
 from rotordyn.model.system import System
@@ -92,26 +93,28 @@ def _merge(a: UnbalanceResult, b: UnbalanceResult) -> UnbalanceResult:
                            np.concatenate([a.max_real_1_per_s, b.max_real_1_per_s])[o],
                            thermal=tuple(np.array(a.thermal + b.thermal, dtype=object)[o])
                            if a.thermal else (),
-                           point_message=None if a.point_message is None else
-                           np.concatenate([a.point_message, b.point_message])[o])
+                           point_message=np.concatenate([a.point_message, b.point_message])[o])
 
 
-def _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X, Y, status):
+def _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X, Y, status,
+                  message):
     """A system without bearing elements: its linear model is M, C + ΩG, K at every speed
     and its equilibrium does not depend on the speed, so the equilibrium is solved once (its
     status is every speed's) and all speeds are one C++ call (one symbolic analysis of the
     pencil, a numeric LU per speed): the numbers each speed factorises are those of the
-    per-speed loop (K_H = D_H = 0). Fills X, Y, status in place."""
+    per-speed loop (K_H = D_H = 0). Fills X, Y, status, message in place."""
     from rotordyn.analysis.equilibrium import equilibrium
     from rotordyn.errors import RotordynError
 
     try:
         e = equilibrium(system, float(sp[0]), chamber_pressure_pa, config_ay_m)
-    except RotordynError:
+    except RotordynError as exc:
         status[:] = "error"
+        message[:] = [f"{type(exc).__name__}: {exc}"] * len(message)
         return
     status[:] = e.status
     if e.status not in CONVERGED:
+        message[:] = [e.message] * len(message)
         return
     m = asm.model
     O = np.concatenate(Cout, axis=0)  # (2 n_out, n): x, y of each output station
@@ -121,13 +124,13 @@ def _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X
 
 
 def _with_bearings(system, asm, sp, chamber_pressure_pa, config_ay_m, method, check, threads,
-                   F1, Cout, X, Y, status, max_real):
+                   F1, Cout, X, Y, status, max_real, message):
     """All speeds in one C++ call (``_core.unbalance_sweep``): per speed the equilibrium
     continued from the last converged one (the first from this system's last equilibrium, as
     :func:`rotordyn.equilibrium` warm-starts), K_H(Ω), D_H(Ω) (eq. 18), then
     (K + K_H − Ω² M + iΩ (C + ΩG + D_H)) q = Ω² F₁ and, with ``check``, the largest real part
     of eq. 19's eigenvalues: the numbers the per-speed path (equilibrium, linearize,
-    harmonic_response, modal) computed. Fills X, Y, status, max_real in place;
+    harmonic_response, modal) computed. Fills X, Y, status, max_real, message in place;
     ConvergenceError where the dynamic stiffness is singular (as the per-speed solve raised)."""
     a = np.tile(asm.config_vector(config_ay_m, None), (sp.size, 1))
     r0 = asm.last_r if asm.last_r is not None else np.zeros(0)
@@ -145,6 +148,7 @@ def _with_bearings(system, asm, sp, chamber_pressure_pa, config_ay_m, method, ch
         if msg:
             raise ConvergenceError(f"unbalance response at {sp[i]:g} Hz: {msg}")
     status[:] = st
+    message[:] = list(res.message)
     Z = np.asarray(res.Y)
     X[:] = Z[:, 0::2]
     Y[:] = Z[:, 1::2]
@@ -233,12 +237,14 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     Y = np.full((sp.size, len(outs)), np.nan + 0j)
     status = np.empty(sp.size, dtype=object)
     max_real = np.full(sp.size, np.nan) if check else None
+    message = [""] * sp.size
     if not system.bearings and not check:
         _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X, Y,
-                      status)
+                      status, message)
         return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub),
-                               operating_speed_hz, max_real)
+                               operating_speed_hz, max_real,
+                               point_message=point_messages(status, message))
     _with_bearings(system, asm, sp, chamber_pressure_pa, config_ay_m, method, check, threads,
-                   F1, Cout, X, Y, status, max_real)
+                   F1, Cout, X, Y, status, max_real, message)
     return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub), operating_speed_hz,
-                           max_real)
+                           max_real, point_message=point_messages(status, message))

@@ -365,9 +365,9 @@ def _thermal_json(t, message: str = ""):
 
 
 def _messages(res) -> list:
-    """Why each speed failed (a thermal result's ``point_message``; "" where none)."""
-    pm = getattr(res, "point_message", None)
-    return [""] * len(res.speeds_hz) if pm is None else [str(m) for m in pm]
+    """Why each speed failed (the result's ``point_message``: a str, None where it
+    converged)."""
+    return list(res.point_message)
 
 
 def _thermal_summary(speeds, thermal, messages=None) -> None:
@@ -452,8 +452,7 @@ def _cmd_campbell(args) -> int:
                      "critical_speeds": crit.to_dict("records"),
                      "speeds_hz": c.speeds_hz, "frequencies_hz": c.frequencies_hz,
                      "point_status": list(c.point_status) if c.point_status is not None
-                     else None, "point_message": _messages(c)
-                     if c.point_message is not None else None}
+                     else None, "point_message": _messages(c)}
                     | ({"thermal": [_thermal_json(t, m) for t, m in
                                     zip(c.thermal, _messages(c))]} if c.thermal
                        else {})))

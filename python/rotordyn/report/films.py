@@ -10,6 +10,7 @@ import numpy as np
 import pandas as pd
 
 from rotordyn._common.status import CONVERGED
+from rotordyn.report.tables import MISSING, _text_table, cell
 
 TILT_COLUMNS = ("h_min_z_m", "journal_theta_x_rad", "journal_theta_y_rad",
                 "config_theta_x_rad", "config_theta_y_rad", "film_moment_x_n_m",
@@ -44,15 +45,11 @@ def film_frame(system, equilibria) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def _f(v, fmt):
-    return "–" if not np.isfinite(v) else format(v, fmt)
-
-
 def _where(z, length):
     """The minimum film's axial place: "edge ±" at an end of a bearing of ``length`` (m; 0:
     unknown), else its z in mm."""
     if not np.isfinite(z):
-        return "–"
+        return MISSING
     if length and abs(abs(z) - 0.5 * length) <= 1e-9 * length:
         return "edge +" if z > 0 else "edge −"
     return f"{1e3 * z:.1f} mm"
@@ -68,13 +65,13 @@ def film_rows(frame: pd.DataFrame, lengths: dict | None = None):
     head.append("status")
     body = []
     for r in frame.itertuples(index=False):
-        cells = [r.bearing, f"{r.speed_hz:.4g}", _f(r.eccentricity_ratio, ".3f"),
-                 _f(1e6 * r.h_min_m, ".2f"), _f(r.h_min_angle_deg, ".0f")]
+        cells = [r.bearing, f"{r.speed_hz:.4g}", cell(r.eccentricity_ratio, ".3f"),
+                 cell(1e6 * r.h_min_m, ".2f"), cell(r.h_min_angle_deg, ".0f")]
         if tilt:
             cells += [_where(r.h_min_z_m, (lengths or {}).get(r.bearing, 0.0)),
-                      "–" if not np.isfinite(r.journal_theta_x_rad) else
+                      MISSING if not np.isfinite(r.journal_theta_x_rad) else
                       f"{1e3 * r.journal_theta_x_rad:.3f}, {1e3 * r.journal_theta_y_rad:.3f}",
-                      _f(r.film_moment_x_n_m, ".4g"), _f(r.film_moment_y_n_m, ".4g")]
+                      cell(r.film_moment_x_n_m, ".4g"), cell(r.film_moment_y_n_m, ".4g")]
         cells.append(str(r.status))
         body.append([str(c) for c in cells])
     return head, body
@@ -92,12 +89,7 @@ def film_text_lines(frame: pd.DataFrame, lengths: dict | None = None) -> list[st
     if frame.empty:
         return []
     head, body = film_rows(frame, lengths)
-    widths = [max(len(h), *(len(b[j]) for b in body)) for j, h in enumerate(head)]
-
-    def line(cells):
-        return "  " + "  ".join(c.ljust(w) for c, w in zip(cells, widths))
-
-    return ["", "bearing films: " + _what(frame), line(head)] + [line(b) for b in body]
+    return ["", "bearing films: " + _what(frame)] + _text_table(head, body)
 
 
 def film_html(frame: pd.DataFrame, table, lengths: dict | None = None) -> str:

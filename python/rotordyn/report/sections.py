@@ -26,8 +26,8 @@ from rotordyn import analysis
 from rotordyn._common.api import af_text
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
 from rotordyn.report.criteria import RESONANT_LOG_DEC
-from rotordyn.report.tables import (COEFFICIENT_HEADER, _text_table, coefficient_rows,
-                                    tilt_coefficient_tables)
+from rotordyn.report.tables import (COEFFICIENT_HEADER, MISSING, _text_table, cell,
+                                    coefficient_rows, tilt_coefficient_tables)
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -198,10 +198,9 @@ def critical_rows(table) -> list[tuple]:
     out = []
     for r in table.itertuples(index=False):
         out.append((f"{r.speed_hz:.4g}", f"{60 * r.speed_hz:.0f}", r.source,
-                    f"{r.campbell_hz:.4g}" if np.isfinite(r.campbell_hz) else "–",
-                    f"{r.log_dec + 0.0:.3g}" if np.isfinite(r.log_dec) else "–",
-                    f"{r.peak_hz:.4g}" if np.isfinite(r.peak_hz) else "–", r.stations or "–",
-                    af_text(r.amplification_factor, r.af_kind) if r.af_kind else "–"))
+                    cell(r.campbell_hz, ".4g"), cell(r.log_dec + 0.0, ".3g"),
+                    cell(r.peak_hz, ".4g"), r.stations or MISSING,
+                    af_text(r.amplification_factor, r.af_kind) if r.af_kind else MISSING))
     return out
 
 

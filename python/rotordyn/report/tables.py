@@ -5,8 +5,19 @@ from __future__ import annotations
 
 import numpy as np
 
+# the one marker of a missing value (a failed point, a column a row does not have) in every
+# table of the report, text and HTML
+MISSING = "n/a"
+
+
+def cell(x, fmt: str) -> str:
+    """``x`` formatted by ``fmt``, :data:`MISSING` when it is not finite (NaN, inf)."""
+    return format(x, fmt) if np.isfinite(x) else MISSING
+
 
 def _text_table(header, rows) -> list[str]:
+    """The text report's table layout: columns left-aligned to their widest cell, two spaces
+    apart, indented by two."""
     w = [max(len(str(h)), *(len(str(r[i])) for r in rows)) for i, h in enumerate(header)]
     return ["  " + "  ".join(f"{str(c):<{w[i]}}" for i, c in enumerate(r))
             for r in [tuple(header), *rows]]
@@ -20,7 +31,7 @@ def coefficient_rows(frame) -> list[tuple]:
         ks = [d[f"k{p}_n_per_m"] / 1e6 for p in ("xx", "xy", "yx", "yy")]
         cs = [d[f"c{p}_n_s_per_m"] / 1e3 for p in ("xx", "xy", "yx", "yy")]
         rows.append((d["bearing"], f"{d['speed_hz']:.4g}",
-                     *(f"{x:.4g}" if np.isfinite(x) else "n/a" for x in ks + cs), d["status"]))
+                     *(cell(x, ".4g") for x in ks + cs), d["status"]))
     return rows
 
 
@@ -70,10 +81,10 @@ def tilt_coefficient_tables(frame) -> list[tuple[tuple, list[tuple]]]:
         for r in tilted.itertuples(index=False):
             d = r._asdict()
             rows.append((d["bearing"], f"{d['speed_hz']:.4g}",
-                         *(f"{d[c] / sc:.4g}" if np.isfinite(d[c]) else "n/a"
+                         *(cell(d[c] / sc, ".4g")
                            for c, _, sc in part), d["status"]))
         out.append((("bearing", "speed (Hz)", *(h for _, h, _ in part), "status"), rows))
     return out
 
 
-__all__ = ["COEFFICIENT_HEADER", "coefficient_rows", "tilt_coefficient_tables"]
+__all__ = ["COEFFICIENT_HEADER", "MISSING", "cell", "coefficient_rows", "tilt_coefficient_tables"]

@@ -20,6 +20,7 @@ from rotordyn._common.status import CONVERGED
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
 from rotordyn.analysis.thermal import system_thermal_equilibrium
 from rotordyn.errors import InputError, RotordynError
+from rotordyn.report.tables import cell
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -117,13 +118,11 @@ def _failed_rows(system, tables) -> list:
 
 def thermal_rows(frame) -> list[tuple]:
     """Table rows (:data:`THERMAL_HEADER`) of a thermal table."""
-    def num(x, fmt):
-        return format(x, fmt) if np.isfinite(x) else "n/a"
-    return [(d.bearing, f"{d.speed_hz:.4g}", num(d.max_temperature_c, ".2f"),
-             num(d.effective_temperature_c, ".2f"), num(d.inlet_temperature_c, ".2f"),
-             num(d.power_loss_w, ".4g"), num(d.film_flow_m3_s * L_PER_MIN, ".4g"),
-             num(d.supply_flow_m3_s * L_PER_MIN, ".4g"), num(d.journal_y_m * 1e6, ".4g"),
-             num(d.h_min_m * 1e6, ".4g"), d.status) for d in frame.itertuples(index=False)]
+    return [(d.bearing, f"{d.speed_hz:.4g}", cell(d.max_temperature_c, ".2f"),
+             cell(d.effective_temperature_c, ".2f"), cell(d.inlet_temperature_c, ".2f"),
+             cell(d.power_loss_w, ".4g"), cell(d.film_flow_m3_s * L_PER_MIN, ".4g"),
+             cell(d.supply_flow_m3_s * L_PER_MIN, ".4g"), cell(d.journal_y_m * 1e6, ".4g"),
+             cell(d.h_min_m * 1e6, ".4g"), d.status) for d in frame.itertuples(index=False)]
 
 
 TOTAL_HEADER = ("bearing", "speed (Hz)", "T_max (°C)", "power loss (W)")
@@ -131,10 +130,8 @@ TOTAL_HEADER = ("bearing", "speed (Hz)", "T_max (°C)", "power loss (W)")
 
 def total_rows(frame) -> list[tuple]:
     """Table rows (:data:`TOTAL_HEADER`) of :func:`bearing_totals`."""
-    def num(x, fmt):
-        return format(x, fmt) if np.isfinite(x) else "n/a"
-    return [(d.bearing, f"{d.speed_hz:.4g}", num(d.max_temperature_c, ".2f"),
-             num(d.power_loss_w, ".4g"))
+    return [(d.bearing, f"{d.speed_hz:.4g}", cell(d.max_temperature_c, ".2f"),
+             cell(d.power_loss_w, ".4g"))
             for d in bearing_totals(frame).itertuples(index=False)]
 
 

@@ -10,7 +10,7 @@ import numpy as np
 
 from rotordyn.results._display import Display
 
-from rotordyn._common.status import CONVERGED
+from rotordyn._common.status import CONVERGED, point_messages
 from rotordyn.results.modes import WHIRL_NAMES, log_dec
 
 if TYPE_CHECKING:
@@ -35,8 +35,15 @@ class CampbellResult(Display):
     point_status: np.ndarray | None = None  # (n_speeds,) equilibrium status per speed
     mode_id: np.ndarray | None = None  # (n_speeds, n_modes) tracked ids
     thermal: tuple = ()  # (n_speeds,) SystemThermalResult per speed (``thermal=``), else ()
-    # (n_speeds,) why a speed failed ("" where it converged), else None
+    # (n_speeds,) object: why a speed failed (str), None where it converged; filled from
+    # point_status when not given (rotordyn._common.status.point_messages)
     point_message: np.ndarray | None = None
+
+    def __post_init__(self):
+        ns = len(self.speeds_hz)
+        st = self.point_status if self.point_status is not None else [self.status] * ns
+        msg = [self.message] * ns if self.point_message is None else self.point_message
+        object.__setattr__(self, "point_message", point_messages(st, msg))
 
     def ids(self) -> np.ndarray:
         """(n_speeds, n_modes) int64 mode ids: the tracked ones, else the slot index."""
@@ -120,8 +127,7 @@ class CampbellResult(Display):
         lam = self.eigenvalues.ravel()
         st = (np.repeat(self.point_status, nm) if self.point_status is not None
               else [self.status] * (ns * nm))
-        msg = (list(np.repeat(np.asarray(self.point_message, dtype=object), nm))
-               if self.point_message is not None else [self.message] * (ns * nm))
+        msg = list(np.repeat(self.point_message, nm))  # None where the speed converged
         # A slot without an eigenvalue (a failed speed's row) has no whirl and no kind: a
         # failed equilibrium is not classified.
         none = np.isnan(lam)

@@ -62,13 +62,16 @@ class _Encoder:
             return {"$complex": [self.enc(x.real, where), self.enc(x.imag, where)]}
         if isinstance(x, np.ndarray):
             if x.dtype == object:
-                try:
-                    a = x.astype(str)
-                except (TypeError, ValueError):
-                    raise InputError(f"save: {where}: an object array that is not text") from None
-                if not all(isinstance(v, str) for v in x.ravel()):
+                # text, with None entries allowed (e.g. point_message: None where a point
+                # converged), kept as a mask beside the text
+                none = np.array([v is None for v in x.ravel()], dtype=bool).reshape(x.shape)
+                if not all(isinstance(v, str) or v is None for v in x.ravel()):
                     raise InputError(f"save: {where}: an object array that is not text")
-                return {"$array": self._put(a), "object": True}
+                a = np.where(none, "", x).astype(str)
+                out = {"$array": self._put(a), "object": True}
+                if none.any():
+                    out["none"] = self._put(none)
+                return out
             if x.dtype.kind not in "biufcUS":
                 raise InputError(f"save: {where}: arrays of dtype {x.dtype} cannot be saved")
             return {"$array": self._put(x)}
@@ -115,7 +118,12 @@ def _dec(x, arrays, where: str):
     if isinstance(x, dict):
         if "$array" in x:
             a = arrays[x["$array"]]
-            return a.astype(object) if x.get("object") else a
+            if not x.get("object"):
+                return a
+            a = a.astype(object)
+            if "none" in x:
+                a[np.asarray(arrays[x["none"]], dtype=bool)] = None
+            return a
         if "$frame" in x:
             return pd.read_parquet(io.BytesIO(arrays[x["$frame"]].tobytes()), use_threads=False)
         if "$int" in x:

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from rotordyn._common.status import CONVERGED
+from rotordyn._common.status import CONVERGED, point_messages
 from rotordyn.results._display import Display
 
 
@@ -45,8 +45,14 @@ class UnbalanceResult(Display):
     operating_speed_hz: tuple | None = None
     max_real_1_per_s: np.ndarray | None = None
     thermal: tuple = ()  # (n_speeds,) SystemThermalResult per speed (``thermal=``), else ()
-    # (n_speeds,) why a speed failed ("" where it converged; ``thermal=``), else None
+    # (n_speeds,) object: why a speed failed (str), None where it converged; filled from
+    # point_status when not given (rotordyn._common.status.point_messages)
     point_message: np.ndarray | None = None
+
+    def __post_init__(self):
+        msg = [""] * len(self.point_status) if self.point_message is None else \
+            self.point_message
+        object.__setattr__(self, "point_message", point_messages(self.point_status, msg))
 
     @property
     def stable(self) -> np.ndarray:

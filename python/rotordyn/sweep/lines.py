@@ -156,7 +156,7 @@ def unbalance_line(job, variants, lo, hi, at, asms):
     res = UnbalanceResult(np.asarray(speeds), stations, X, Y, np.asarray(status),
                           tuple(map(tuple, ub)),
                           tuple(opts["operating_speed_hz"]) if "operating_speed_hz" in opts
-                          else None)
+                          else None, point_message=np.asarray(msg, dtype=object))
     return [(np.repeat(at + np.arange(n), len(stations)),
              unbalance_columns(res, speeds, stations, status, msg))]
 
