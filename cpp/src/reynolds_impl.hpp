@@ -118,6 +118,11 @@ struct ReynoldsSolver::Impl {
   double node_re(int n, double hn) const {
     return visc_field ? re_per_h * hn * (mu / mu_node[n]) : re_per_h * hn;
   }
+  // the model's factors at Re_h with the geometry's transition (if any)
+  TurbulenceFactors tfac(double re) const {
+    return turbulence_factors(geo.turbulence, re, geo.turbulence_onset_re,
+                              geo.turbulence_full_re);
+  }
   // Viscosity field (set_viscosity_field, the thermo-hydrodynamic film; reynolds_viscosity.cpp):
   // node viscosities and the multipliers mu/mu_face of the faces' conductances (the face
   // viscosity the mean of its two nodes'), applied after the uniform film's conductances, so

@@ -32,7 +32,7 @@ double ReynoldsSolver::Impl::short_source(const double* hh, const double* hd, in
 double ReynoldsSolver::Impl::short_factor(int n) const {
   const double z = -0.5 * L + (n % K1) * dz;
   if (turb)  // p = (k_z/2) μ s (z² − L²/4)/h³: the axial conductance h³/(k_z μ) at the node
-    return 0.5 * turbulence_factors(geo.turbulence, re_per_h * h[n]).kz * mu *
+    return 0.5 * tfac(re_per_h * h[n]).kz * mu *
            (z * z - 0.25 * L * L);
   return 6.0 * mu * (z * z - 0.25 * L * L);
 }
@@ -346,7 +346,7 @@ void ReynoldsSolver::Impl::postprocess() {
         const int n = row + k;
         const double dpdphi = (pe[k] - pw[k]) / (2.0 * dphi);
         double tau = node_mu(n) * omega * R * thr[k] / hr[k];
-        if (turb) tau *= turbulence_factors(geo.turbulence, node_re(n, hr[k])).cf;  // Couette
+        if (turb) tau *= tfac(node_re(n, hr[k])).cf;  // Couette
         tr[k] = tau + hr[k] / (2.0 * R) * dpdphi;
       }
     }
@@ -365,7 +365,7 @@ void ReynoldsSolver::Impl::postprocess() {
   for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
     const int k = n % K1;
     const double wk = (k == 0 || k == Kl) ? 0.5 : 1.0;
-    const double cf = turb ? turbulence_factors(geo.turbulence, node_re(n, h[n])).cf : 1.0;
+    const double cf = turb ? tfac(node_re(n, h[n])).cf : 1.0;
     torque += wk * cf * node_mu(n) * omega * R * theta[n] * (pocket_inv_h(n) - 1.0 / h[n]);
   }
   out.force_n = Eigen::Vector2d(fx * area, fy * area);
@@ -690,7 +690,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
       // turbulent: the factor k_z(h)/2 also varies, d ln k_z/d ln h = Re dk_z/dRe / k_z
       double q3 = 3.0;
       if (s.turb) {
-        const TurbulenceFactors t = turbulence_factors(s.geo.turbulence, s.re_per_h * hv);
+        const TurbulenceFactors t = s.tfac(s.re_per_h * hv);
         q3 -= t.re_dkz / t.kz;
       }
       const double v = s.short_factor(n) * (dsrc - q3 * src * dh.data()[n] / hv) /

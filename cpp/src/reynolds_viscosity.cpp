@@ -128,13 +128,13 @@ void ReynoldsSolver::Impl::film_flows(FilmFlows& f) const {
     f.fill.data()[n] = th[n];
     f.viscosity_pa_s.data()[n] = node_mu(n);
     // Couette μU²θ/h (turbulent: the wall-shear factor C_f at the node's Re_h, as the torque)
-    const double cf = turb ? turbulence_factors(geo.turbulence, node_re(n, h[n])).cf : 1.0;
+    const double cf = turb ? tfac(node_re(n, h[n])).cf : 1.0;
     ds[n] += cf * node_mu(n) * U * U * th[n] / h[n] * area;
   }
   for (const int n : pk_cells) {  // a cell a pocket edge crosses: its mean of 1/h
     const int k = n % K1;
     const double area = ((k == 0 || k == Kl) ? 0.5 : 1.0) * a0;
-    const double cf = turb ? turbulence_factors(geo.turbulence, node_re(n, h[n])).cf : 1.0;
+    const double cf = turb ? tfac(node_re(n, h[n])).cf : 1.0;
     ds[n] += cf * node_mu(n) * U * U * th[n] * (pocket_inv_h(n) - 1.0 / h[n]) * area;
   }
 }

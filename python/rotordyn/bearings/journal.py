@@ -216,6 +216,9 @@ class JournalBearing:
         coefficients, switched on by the local film Reynolds number ρ|ω|R h/μ;
         docs/film-physics.md).
     density_kg_m3 : oil density ρ, kg/m³ (needed by ``turbulence = "ng_pan"``).
+    turbulence_onset_re, turbulence_full_re : optional laminar-to-turbulent transition: the
+        Re_h at which the turbulent corrections start and are full (0 <= onset < full; both
+        or neither; None: the model acts at every Re_h > 0).
     """
 
     def __init__(
@@ -231,6 +234,8 @@ class JournalBearing:
         grooves: Iterable[Groove] = (),
         turbulence: str = "laminar",
         density_kg_m3: float | None = None,
+        turbulence_onset_re: float | None = None,
+        turbulence_full_re: float | None = None,
     ) -> None:
         self.diameter_m = _positive(diameter_m, "diameter_m")
         self.length_m = _positive(length_m, "length_m")
@@ -265,9 +270,12 @@ class JournalBearing:
                 " the steady mass-conserving film content is undetermined)"
             )
         self.grooves = gs
-        check_turbulence("JournalBearing", turbulence, density_kg_m3)
+        check_turbulence("JournalBearing", turbulence, density_kg_m3, turbulence_onset_re,
+                         turbulence_full_re)
         self.turbulence = turbulence
-        self.density_kg_m3 = None if density_kg_m3 is None else float(density_kg_m3)
+        self.density_kg_m3, self.turbulence_onset_re, self.turbulence_full_re = (
+            None if x is None else float(x)
+            for x in (density_kg_m3, turbulence_onset_re, turbulence_full_re))
         self._local = threading.local()
 
     # -- plumbing ------------------------------------------------------------------------
@@ -283,6 +291,8 @@ class JournalBearing:
             grooves=self.grooves,
             turbulence=self.turbulence,
             density_kg_m3=self.density_kg_m3,
+            turbulence_onset_re=self.turbulence_onset_re,
+            turbulence_full_re=self.turbulence_full_re,
         )
 
     def __getstate__(self) -> dict:
@@ -309,7 +319,8 @@ class JournalBearing:
         g.clearance_m = self.clearance_m
         g.viscosity_pa_s = self.viscosity_pa_s
         g.grooves = [gr.to_core() for gr in self.grooves]
-        set_turbulence(g, self.turbulence, self.density_kg_m3)
+        set_turbulence(g, self.turbulence, self.density_kg_m3, self.turbulence_onset_re,
+                       self.turbulence_full_re)
         return g, _core.FilmGrid(self.n_circ, self.n_axial)
 
     def solver(self) -> _core.ReynoldsSolver:
