@@ -185,6 +185,30 @@ def test_compressor_with_a_ramp_equilibrium_stability_toml_and_sweep_axis():
         set_field(ramp, "bearings.0.turbulence_onset_re", 1400.0)   # above the full value
 
 
+@pytest.mark.parametrize("model, grid", [("compressor_tilting_pad.toml", dict(n_axial=6)),
+                                         ("compressor_active.toml", dict(n_axial=8))])
+def test_tilting_pad_and_active_bearings_carry_the_transition(model, grid):
+    """The compressor on tilting pads, and with its active journal bearing (μ = 6 mPa·s,
+    250 Hz): a ramp above every face gives the laminar equilibrium bit for bit (every pad's
+    and the sleeve bearing's film takes the fields); the ramp 1000–1300 moves the journals
+    away from both the laminar and the transition-free turbulent equilibrium."""
+    s = rotordyn.System.from_toml(MODELS / model)
+
+    def mk(**kw):
+        return dataclasses.replace(s, bearings=tuple(
+            dataclasses.replace(b, viscosity_pa_s=0.006, n_circ=36, **grid, **kw)
+            for b in s.bearings))
+
+    turb = dict(turbulence="ng_pan", density_kg_m3=860.0)
+    r = [rotordyn.equilibrium(x, speed_hz=250.0) for x in (
+        mk(), mk(**turb, turbulence_onset_re=1e6, turbulence_full_re=2e6),
+        mk(**turb, turbulence_onset_re=1000.0, turbulence_full_re=1300.0), mk(**turb))]
+    assert all(x.status == "ok" for x in r)
+    assert np.array_equal(r[0].r, r[1].r)
+    assert not np.allclose(r[2].r, r[0].r, rtol=1e-9, atol=0.0)
+    assert not np.allclose(r[2].r, r[3].r, rtol=1e-9, atol=0.0)
+
+
 def test_cli_prints_and_records_the_transition(capsys):
     from rotordyn.cli import main
 
