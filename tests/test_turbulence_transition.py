@@ -250,6 +250,13 @@ def test_bad_input_names_the_field(kw, field):
     g.turbulence, g.density_kg_m3 = kw.get("turbulence", "ng_pan"), 860.0
     g.turbulence_onset_re = kw.get("turbulence_onset_re", math.nan)
     g.turbulence_full_re = kw.get("turbulence_full_re", math.nan)
-    if not (math.isnan(g.turbulence_onset_re) and "turbulence_full_re" not in kw):
-        with pytest.raises(InputError, match="turbulence_"):
-            g.validate()
+    with pytest.raises(InputError, match="turbulence_"):
+        g.validate()
+    # the core's functions check the pair too (no NaN from a half-given ramp)
+    if "turbulence" not in kw:
+        on, full = g.turbulence_onset_re, g.turbulence_full_re
+        for call in (lambda: _core.turbulence_weight(100.0, on, full),
+                     lambda: _core.turbulence_factors("ng_pan", 100.0, on, full),
+                     lambda: _core.turbulent_wall_factors("ng_pan", 100.0, 300.0, on, full)):
+            with pytest.raises(InputError, match=field):
+                call()

@@ -88,6 +88,14 @@ void bind_reynolds(py::module_& m) {
   m.def(
       "turbulence_weight",
       [](double re, double onset, double full) {
+        JournalBearingGeometry geo;  // the transition's checks (InputError naming the field)
+        geo.turbulence = Turbulence::ng_pan;
+        geo.density_kg_m3 = 1.0;
+        geo.turbulence_onset_re = onset;
+        geo.turbulence_full_re = full;
+        geo.validate();
+        if (!(std::isfinite(re) && re >= 0.0))
+          throw InputError("reynolds_number: expected a finite value >= 0");
         double rg = 0.0;
         const double g = turbulence_weight(re, onset, full, &rg);
         return py::make_tuple(g, rg);

@@ -67,6 +67,14 @@ void bind_thd(py::module_& m) {
   m.def(
       "turbulent_wall_factors",
       [](const std::string& model, double re, double pr, double onset, double full) {
+        if (!(std::isnan(onset) && std::isnan(full))) {  // the transition's checks
+          JournalBearingGeometry geo;
+          geo.turbulence = parse_turbulence(model);
+          geo.density_kg_m3 = 1.0;
+          geo.turbulence_onset_re = onset;
+          geo.turbulence_full_re = full;
+          geo.validate();
+        }
         const TurbulentWallFactors g =
             turbulent_wall_factors(parse_turbulence(model), re, pr, onset, full);
         return py::make_tuple(g.symmetric, g.across);
