@@ -30,6 +30,8 @@ from test_bearing_elements_system import FILM, ROTOR_TOML, _bearings  # noqa: E4
 NONE_VALUES = {"preload": 0.4, "offset": 0.5, "orientation_deg": 270.0,
                "end_seal_conductance_m3_per_pa_s_per_m": 1e-10, "density_kg_m3": 870.0,
                "pitch_inertia_kg_m2": 2e-4}
+# the turbulent film's transition: a pair (both or neither) on a turbulent film
+TRANSITION = {"turbulence_onset_re": 500.0, "turbulence_full_re": 1000.0}
 
 
 def _base():
@@ -59,6 +61,12 @@ def test_every_element_field_is_a_model_path(kind):
             s2 = set_field(s, f"{path}.1", val)
             assert get_field(s2, f"{path}.1") == [val]
             assert getattr(s2.bearings[0], f.name)[1] == val
+            continue
+        if f.name in TRANSITION:  # set on a turbulent film that has the pair
+            t = dataclasses.replace(s, bearings=(dataclasses.replace(
+                b, turbulence="ng_pan", density_kg_m3=870.0, **TRANSITION),))
+            s2 = set_field(t, path, 1.1 * TRANSITION[f.name])
+            assert get_field(s2, path) == [1.1 * TRANSITION[f.name]]
             continue
         val = NONE_VALUES[f.name] if cur is None else cur
         s2 = set_field(s, path, val)

@@ -59,19 +59,49 @@ void bind_reynolds(py::module_& m) {
           "Dowson 1974 fits), switched on by the local Re_h = rho |omega| R h / mu.")
       .def_readwrite("density_kg_m3", &JournalBearingGeometry::density_kg_m3,
                      "Oil density, kg/m^3 (the film Reynolds number of a turbulent film).")
+      .def_readwrite("turbulence_onset_re", &JournalBearingGeometry::turbulence_onset_re,
+                     "Re_h at which the turbulent corrections start (transition; NaN: none).")
+      .def_readwrite("turbulence_full_re", &JournalBearingGeometry::turbulence_full_re,
+                     "Re_h at which the turbulent corrections are full (transition; NaN: none).")
       .def("validate", &JournalBearingGeometry::validate);
 
   m.def(
       "turbulence_factors",
-      [](const std::string& model, double re) {
+      [](const std::string& model, double re, double onset, double full) {
         if (!(std::isfinite(re) && re >= 0.0))
           throw InputError("reynolds_number: expected a finite value >= 0");
-        const TurbulenceFactors t = turbulence_factors(parse_turbulence(model), re);
+        JournalBearingGeometry g;  // the transition's checks
+        g.turbulence = parse_turbulence(model);
+        g.density_kg_m3 = 1.0;
+        g.turbulence_onset_re = onset;
+        g.turbulence_full_re = full;
+        g.validate();
+        const TurbulenceFactors t = turbulence_factors(g.turbulence, re, onset, full);
         return py::make_tuple(t.kx, t.kz, t.cf);
       },
       py::arg("model"), py::arg("reynolds_number"),
+      py::arg("onset_re") = std::numeric_limits<double>::quiet_NaN(),
+      py::arg("full_re") = std::numeric_limits<double>::quiet_NaN(),
       "(k_x, k_z, C_f) of the turbulent lubrication model at the film Reynolds number Re_h: "
-      "Poiseuille coefficients (12 laminar) and the Couette shear factor (1 laminar).");
+      "Poiseuille coefficients (12 laminar) and the Couette shear factor (1 laminar); with a "
+      "transition onset_re < full_re (NaN: none) the turbulent increments take its weight.");
+  m.def(
+      "turbulence_weight",
+      [](double re, double onset, double full) {
+        JournalBearingGeometry geo;  // the transition's checks (InputError naming the field)
+        geo.turbulence = Turbulence::ng_pan;
+        geo.density_kg_m3 = 1.0;
+        geo.turbulence_onset_re = onset;
+        geo.turbulence_full_re = full;
+        geo.validate();
+        if (!(std::isfinite(re) && re >= 0.0))
+          throw InputError("reynolds_number: expected a finite value >= 0");
+        double rg = 0.0;
+        const double g = turbulence_weight(re, onset, full, &rg);
+        return py::make_tuple(g, rg);
+      },
+      py::arg("reynolds_number"), py::arg("onset_re"), py::arg("full_re"),
+      "(gamma, Re dgamma/dRe): the transition's intermittency weight (cubic smoothstep).");
 
   py::class_<FilmGrid>(m, "FilmGrid", "n_circ nodes around, n_axial intervals along.")
       .def(py::init<>())

@@ -66,11 +66,22 @@ void bind_thd(py::module_& m) {
         "The THD energy equation at the solver's last full solve.");
   m.def(
       "turbulent_wall_factors",
-      [](const std::string& model, double re, double pr) {
-        const TurbulentWallFactors g = turbulent_wall_factors(parse_turbulence(model), re, pr);
+      [](const std::string& model, double re, double pr, double onset, double full) {
+        if (!(std::isnan(onset) && std::isnan(full))) {  // the transition's checks
+          JournalBearingGeometry geo;
+          geo.turbulence = parse_turbulence(model);
+          geo.density_kg_m3 = 1.0;
+          geo.turbulence_onset_re = onset;
+          geo.turbulence_full_re = full;
+          geo.validate();
+        }
+        const TurbulentWallFactors g =
+            turbulent_wall_factors(parse_turbulence(model), re, pr, onset, full);
         return py::make_tuple(g.symmetric, g.across);
       },
       py::arg("model"), py::arg("reynolds_number"), py::arg("prandtl_number"),
+      py::arg("onset_re") = std::numeric_limits<double>::quiet_NaN(),
+      py::arg("full_re") = std::numeric_limits<double>::quiet_NaN(),
       "(G_s, G_c): the eddy conductivity's factors on a THD film's wall coefficients "
       "(thd_wall_turbulence.hpp) at Re_h and the molecular Prandtl number.");
   m.def(

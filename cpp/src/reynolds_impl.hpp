@@ -120,9 +120,17 @@ struct ReynoldsSolver::Impl {
     return visc_field ? re_per_h * hn * (mu / mu_node[n]) : re_per_h * hn;
   }
   // node_cf: the Couette wall-shear factor C_f at node n with film h (1 laminar): the
-  // friction torque's and the dissipation's, one expression (couette_shear_factor).
+  // friction torque's and the dissipation's, one expression (couette_shear_factor), with
+  // the geometry's transition (if any)
   double node_cf(int n, double hn) const {
-    return turb ? couette_shear_factor(geo.turbulence, node_re(n, hn)) : 1.0;
+    return turb ? couette_shear_factor(geo.turbulence, node_re(n, hn), geo.turbulence_onset_re,
+                                       geo.turbulence_full_re)
+                : 1.0;
+  }
+  // the model's factors at Re_h with the geometry's transition (if any)
+  TurbulenceFactors tfac(double re) const {
+    return turbulence_factors(geo.turbulence, re, geo.turbulence_onset_re,
+                              geo.turbulence_full_re);
   }
   // Viscosity field (set_viscosity_field, the thermo-hydrodynamic film; reynolds_viscosity.cpp):
   // node viscosities and the multipliers mu/mu_face of the faces' conductances (the face

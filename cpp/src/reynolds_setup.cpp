@@ -80,6 +80,24 @@ void JournalBearingGeometry::validate() const {
                      "rho |omega| R h / mu needs it), got " + num(density_kg_m3));
   if (turbulence != Turbulence::laminar && turbulence != Turbulence::ng_pan)
     throw InputError("turbulence: expected 'laminar' or 'ng_pan'");
+  // the optional transition: both NaN (none) or 0 <= onset < full, finite, with a turbulent
+  // model (a laminar film has nothing to switch on)
+  const bool no_on = std::isnan(turbulence_onset_re), no_full = std::isnan(turbulence_full_re);
+  if (no_on != no_full)
+    throw InputError(std::string(no_on ? "turbulence_onset_re" : "turbulence_full_re") +
+                     ": the transition needs both turbulence_onset_re and turbulence_full_re "
+                     "(or neither)");
+  if (!no_on) {
+    if (turbulence == Turbulence::laminar)
+      throw InputError("turbulence_onset_re: a laminar-to-turbulent transition needs "
+                       "turbulence = 'ng_pan', got 'laminar'");
+    if (!(std::isfinite(turbulence_onset_re) && turbulence_onset_re >= 0.0))
+      throw InputError("turbulence_onset_re: expected a finite Re_h >= 0, got " +
+                       num(turbulence_onset_re));
+    if (!(std::isfinite(turbulence_full_re) && turbulence_full_re > turbulence_onset_re))
+      throw InputError("turbulence_full_re: expected a finite Re_h > turbulence_onset_re = " +
+                       num(turbulence_onset_re) + ", got " + num(turbulence_full_re));
+  }
   for (std::size_t i = 0; i < pockets.size(); ++i) {
     const Pocket& pk = pockets[i];
     const std::string f = "pockets[" + std::to_string(i) + "].";

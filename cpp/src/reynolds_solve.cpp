@@ -32,7 +32,7 @@ double ReynoldsSolver::Impl::short_source(const double* hh, const double* hd, in
 double ReynoldsSolver::Impl::short_factor(int n) const {
   const double z = -0.5 * L + (n % K1) * dz;
   if (turb)  // p = (k_z/2) μ s (z² − L²/4)/h³: the axial conductance h³/(k_z μ) at the node
-    return 0.5 * turbulence_factors(geo.turbulence, re_per_h * h[n]).kz * mu *
+    return 0.5 * tfac(re_per_h * h[n]).kz * mu *
            (z * z - 0.25 * L * L);
   return 6.0 * mu * (z * z - 0.25 * L * L);
 }
@@ -690,7 +690,7 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
       // turbulent: the factor k_z(h)/2 also varies, d ln k_z/d ln h = Re dk_z/dRe / k_z
       double q3 = 3.0;
       if (s.turb) {
-        const TurbulenceFactors t = turbulence_factors(s.geo.turbulence, s.re_per_h * hv);
+        const TurbulenceFactors t = s.tfac(s.re_per_h * hv);
         q3 -= t.re_dkz / t.kz;
       }
       const double v = s.short_factor(n) * (dsrc - q3 * src * dh.data()[n] / hv) /

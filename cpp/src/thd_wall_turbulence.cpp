@@ -115,14 +115,23 @@ TurbulentWallFactors eddy_wall_factors(double a, double P) {
   return g;
 }
 
-TurbulentWallFactors turbulent_wall_factors(Turbulence model, double re, double pr) {
+TurbulentWallFactors turbulent_wall_factors(Turbulence model, double re, double pr,
+                                            double onset, double full) {
   check_reynolds(re);
   if (!(std::isfinite(pr) && pr > 0.0))
     throw InputError("prandtl_number: expected a finite value > 0, got " + num(pr));
   if (model == Turbulence::laminar || re == 0.0) return {};
-  // the film's own Couette wall shear τ = C_f μU/h: h⁺ = √(C_f Re_h)
+  const double g = turbulence_weight(re, onset, full);
+  if (g == 0.0) return {};  // below the transition's onset: the laminar film's conduction
+  // the film's own Couette wall shear τ = C_f μU/h: h⁺ = √(C_f Re_h) (the fully turbulent
+  // factors, whose excess the weight then scales)
   const double cf = couette_shear_factor(model, re);
-  return eddy_wall_factors(0.5 * std::sqrt(cf * re), pr / kTurbulentPrandtl);
+  TurbulentWallFactors f = eddy_wall_factors(0.5 * std::sqrt(cf * re), pr / kTurbulentPrandtl);
+  if (g < 1.0) {
+    f.symmetric = 1.0 + g * (f.symmetric - 1.0);
+    f.across = 1.0 + g * (f.across - 1.0);
+  }
+  return f;
 }
 
 double eddy_couette_shear_factor(double re) {

@@ -117,6 +117,8 @@ WallModel wall_model(const ThdOptions& o, const OilModel& oil) {
 void WallModel::set_film(const JournalBearingGeometry& geo, double omega,
                          double specific_heat) {
   turbulence = geo.turbulence;
+  onset_re = geo.turbulence_onset_re;
+  full_re = geo.turbulence_full_re;
   rho_u = geo.turbulence == Turbulence::laminar
               ? 0.0 : geo.density_kg_m3 * std::abs(omega) * 0.5 * geo.diameter_m;
   cp = specific_heat;
@@ -130,7 +132,8 @@ CellWall WallModel::cell(double h_m, double fill, double mu) const {
     // a turbulent film: the eddy conductivity's factors at the cell's Re_h and Pr
     TurbulentWallFactors g;
     if (turbulence != Turbulence::laminar && rho_u > 0.0 && c > 0.0)
-      g = turbulent_wall_factors(turbulence, rho_u * h_m / mu, mu * cp / k_oil);
+      g = turbulent_wall_factors(turbulence, rho_u * h_m / mu, mu * cp / k_oil, onset_re,
+                                 full_re);
     if (g.symmetric == 1.0 && g.across == 1.0) {  // the laminar film's arithmetic
       aJ = aB = 6.0 * c;
       bJJ = bBB = 4.0 * c;

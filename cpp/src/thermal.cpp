@@ -167,7 +167,8 @@ double max_film_flow(const ReynoldsSolver& solver, const FilmSolution& sol, doub
       const double hf = 0.5 * (sol.h_m(j, k) + sol.h_m(jd, k));
       double flux = 0.5 * std::abs(omega) * R * hf * sol.theta(j, k);
       if (!g.short_bearing) {  // the short-bearing model has no circumferential pressure flow
-        const double kx = turbulence_factors(g.turbulence, re_per_h * hf).kx;
+        const double kx = turbulence_factors(g.turbulence, re_per_h * hf,
+                                             g.turbulence_onset_re, g.turbulence_full_re).kx;
         flux -= hf * hf * hf / (kx * mu * R * dphi) * (sol.p_pa(jd, k) - sol.p_pa(j, k));
       }
       q += wk * flux;

@@ -4,12 +4,17 @@
 // (thd_wall_turbulence.cpp).
 #pragma once
 
+#include <limits>
+
 #include "rotordyn/reynolds.hpp"
 
 namespace rotordyn {
 
-/// C_f = 1 + 0.0012 Re_h^0.94 (Taylor & Dowson's fit of Ng & Pan; reynolds.hpp, Turbulence);
-/// 1 for a laminar film and at Re_h <= 0: turbulence_factors(model, Re).cf.
-double couette_shear_factor(Turbulence model, double reynolds_number);
+/// C_f = 1 + γ 0.0012 Re_h^0.94 (Taylor & Dowson's fit of Ng & Pan; reynolds.hpp, Turbulence),
+/// γ the transition's weight between `onset` and `full` (turbulence_weight; NaN: none, γ = 1);
+/// 1 for a laminar film, at Re_h <= 0 and below the onset: turbulence_factors(...).cf.
+double couette_shear_factor(Turbulence model, double reynolds_number,
+                            double onset = std::numeric_limits<double>::quiet_NaN(),
+                            double full = std::numeric_limits<double>::quiet_NaN());
 
 }  // namespace rotordyn

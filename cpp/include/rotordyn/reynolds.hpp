@@ -70,6 +70,17 @@ struct TurbulenceFactors {
   double re_dkx = 0.0, re_dkz = 0.0;
 };
 TurbulenceFactors turbulence_factors(Turbulence model, double reynolds_number);
+/// Optional laminar-to-turbulent transition over onset_re < Re_h < full_re (both NaN: none,
+/// the model acts at every Re_h > 0): the intermittency weight γ(Re_h), 0 at and below the
+/// onset, 1 at and above full_re, between them the cubic smoothstep γ = t²(3 − 2t),
+/// t = (Re − onset)/(full − onset) (C1: γ' = 0 at both ends). With `re_dweight`, also
+/// Re dγ/dRe. The turbulent increments take γ: k = 12 + γ a Re^b, C_f = 1 + γ 0.0012 Re^0.94,
+/// Re dk/dRe = γ a b Re^b + (Re γ') a Re^b; below the onset exactly laminar (12, 12, 1, 0,
+/// 0), above full_re exactly turbulence_factors(model, Re).
+double turbulence_weight(double reynolds_number, double onset_re, double full_re,
+                         double* re_dweight = nullptr);
+TurbulenceFactors turbulence_factors(Turbulence model, double reynolds_number, double onset_re,
+                                     double full_re);
 
 /// Axial supply groove fixed in the bearing frame: nodes with φ in
 /// [center − width/2, center + width/2] (the nearest node for a zero width) are held at
@@ -124,6 +135,10 @@ struct JournalBearingGeometry {
   /// pad grid (diameter s·D at speed ω/s) the surface speed |ω|R is the pad's own.
   Turbulence turbulence = Turbulence::laminar;
   double density_kg_m3 = 0.0;
+  /// Optional transition (turbulence_weight): the Re_h at which the turbulent corrections
+  /// start and reach their full value, 0 <= onset < full, finite; both NaN (default): none.
+  double turbulence_onset_re = std::numeric_limits<double>::quiet_NaN();
+  double turbulence_full_re = std::numeric_limits<double>::quiet_NaN();
   /// InputError naming the field and its allowed range.
   void validate() const;
 };

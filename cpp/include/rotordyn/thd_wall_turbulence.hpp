@@ -47,9 +47,14 @@ struct TurbulentWallFactors {
 
 /// The factors at the film Reynolds number Re_h = ρUh/μ (>= 0) and the oil's molecular
 /// Prandtl number Pr = μ c_p / k (> 0), the wall shear the film's C_f (turbulence_factors).
-/// InputError naming reynolds_number or prandtl_number.
-TurbulentWallFactors turbulent_wall_factors(Turbulence model, double reynolds_number,
-                                            double prandtl_number);
+/// InputError naming reynolds_number or prandtl_number. With a transition (onset_re <
+/// full_re; NaN: none) the factors' excess takes the film's intermittency weight γ(Re_h)
+/// (turbulence_weight): G = 1 + γ (G_turbulent − 1), exactly 1 at and below the onset and
+/// exactly the turbulent factors at and above full_re.
+TurbulentWallFactors turbulent_wall_factors(
+    Turbulence model, double reynolds_number, double prandtl_number,
+    double onset_re = std::numeric_limits<double>::quiet_NaN(),
+    double full_re = std::numeric_limits<double>::quiet_NaN());
 
 /// The same factors at the half film in wall units a = h⁺/2 (>= 0) and Pr/Pr_t (> 0).
 TurbulentWallFactors eddy_wall_factors(double half_film_plus, double prandtl_ratio);

@@ -58,6 +58,9 @@ struct WallModel {
   /// Re_h = rho_u h/μ and Pr = μ c_p/k (thd_wall_turbulence.hpp)
   Turbulence turbulence = Turbulence::laminar;
   double rho_u = 0.0;           ///< ρ|ω|R of the film's Reynolds number, kg/(m² s)
+  /// the film's transition (NaN: none; thd_wall_turbulence.hpp)
+  double onset_re = std::numeric_limits<double>::quiet_NaN();
+  double full_re = std::numeric_limits<double>::quiet_NaN();
   double cp = 0.0;              ///< the oil's specific heat, J/(kg K)
   /// the film's turbulence (its geometry's model and density, at ω, rad/s): the film-side
   /// coefficients of a turbulent film take the eddy conductivity

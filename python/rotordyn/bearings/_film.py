@@ -41,9 +41,25 @@ TURBULENCE_MODELS = ("laminar", "ng_pan")
 MAX_DENSITY_KG_M3 = 1e5
 
 
-def check_turbulence(where: str, turbulence, density_kg_m3) -> None:
-    """The turbulence model and the oil density it needs (kg/m³, None: not given)."""
+def check_turbulence(where: str, turbulence, density_kg_m3, onset_re=None,
+                     full_re=None) -> None:
+    """The turbulence model, the oil density it needs (kg/m³, None: not given) and its
+    optional laminar-to-turbulent transition (``turbulence_onset_re`` < ``turbulence_full_re``,
+    finite, onset >= 0, both or neither, only with a turbulent model)."""
     v.choice(f"{where}.turbulence", turbulence, TURBULENCE_MODELS)
+    if (onset_re is None) != (full_re is None):
+        missing = "turbulence_onset_re" if onset_re is None else "turbulence_full_re"
+        raise InputError(f"{where}.{missing}: the transition needs both turbulence_onset_re "
+                         "and turbulence_full_re (or neither), got None")
+    if onset_re is not None:
+        if turbulence == "laminar":
+            raise InputError(f"{where}.turbulence_onset_re: a laminar-to-turbulent transition "
+                             "needs turbulence = 'ng_pan', got 'laminar'")
+        on = v.non_negative(f"{where}.turbulence_onset_re", onset_re)
+        full = v.finite(f"{where}.turbulence_full_re", full_re)
+        if not full > on:
+            raise InputError(f"{where}.turbulence_full_re: expected a Re_h > "
+                             f"turbulence_onset_re = {on!r}, got {full_re!r}")
     if density_kg_m3 is not None:
         v.in_range(f"{where}.density_kg_m3", density_kg_m3, 0.0, MAX_DENSITY_KG_M3,
                    lo_open=True)
@@ -53,11 +69,15 @@ def check_turbulence(where: str, turbulence, density_kg_m3) -> None:
                          f"film Reynolds number rho*U*h/mu needs it), got None")
 
 
-def set_turbulence(g, turbulence: str, density_kg_m3) -> None:
-    """Put the turbulence model on a core geometry (laminar leaves the default)."""
+def set_turbulence(g, turbulence: str, density_kg_m3, onset_re=None, full_re=None) -> None:
+    """Put the turbulence model (and its transition, if any) on a core geometry (laminar
+    leaves the default)."""
     g.turbulence = turbulence
     if density_kg_m3 is not None:
         g.density_kg_m3 = float(density_kg_m3)
+    if onset_re is not None:
+        g.turbulence_onset_re = float(onset_re)
+        g.turbulence_full_re = float(full_re)
 
 TWO_PI = 2.0 * math.pi
 GAP_FACTOR = 4.0  # film thickness put on the (pressure-prescribed) gap nodes, × C_p
@@ -84,7 +104,8 @@ def check_film_fields(b, where: str, n_stations: int | None) -> None:
     v.integer(f"{where}.n_axial", b.n_axial, lo=2, hi=1024)
     v.finite(f"{where}.config_ax_m", b.config_ax_m)
     v.finite(f"{where}.config_ay_m", b.config_ay_m)
-    check_turbulence(where, getattr(b, "turbulence", "laminar"), getattr(b, "density_kg_m3", None))
+    check_turbulence(where, getattr(b, "turbulence", "laminar"), getattr(b, "density_kg_m3", None),
+                     getattr(b, "turbulence_onset_re", None), getattr(b, "turbulence_full_re", None))
     if n_stations is not None:  # placed in a system: unit-slip warnings, once, by its path
         plausibility.length(f"{where}.diameter_m", b.diameter_m)
         plausibility.clearance(f"{where}.clearance_m", b.clearance_m, b.diameter_m)
@@ -189,7 +210,8 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
              extra_shapes=(), supply_pressure_pa: float = 0.0, spin: float = 1.0,
              base_extra=None, end_seal_conductance: float | None = None,
              short_bearing: bool = False, pockets=(), turbulence: str = "laminar",
-             density_kg_m3: float | None = None) -> PadFilm:
+             density_kg_m3: float | None = None, turbulence_onset_re: float | None = None,
+             turbulence_full_re: float | None = None) -> PadFilm:
     """Film coupling of one pad (or of a full 360° bush when ``arc_rad`` is 2π).
 
     ``extra_shapes``: callables φ (rad, pad nodes) → ∂h/∂r_k for coordinates beyond the
@@ -202,7 +224,8 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
     Reynolds core); None: open ends (p = 0 at z = ±L/2). ``short_bearing``: the core's
     short-bearing (Ocvirk) approximation (360° films only). ``turbulence``,
     ``density_kg_m3``: the turbulent lubrication model (``TURBULENCE_MODELS``) and the oil
-    density of its film Reynolds number (the mapped grid keeps the pad's surface speed ωR).
+    density of its film Reynolds number (the mapped grid keeps the pad's surface speed ωR);
+    ``turbulence_onset_re``, ``turbulence_full_re``: its optional transition (None: none).
     """
     Cb = clearance_m
     Cp = Cb / (1.0 - preload)
@@ -237,7 +260,7 @@ def pad_film(*, name: str, diameter_m: float, length_m: float, clearance_m: floa
     if end_seal_conductance is not None:
         g.end_seal_conductance = float(end_seal_conductance)
     g.short_bearing = bool(short_bearing)
-    set_turbulence(g, turbulence, density_kg_m3)
+    set_turbulence(g, turbulence, density_kg_m3, turbulence_onset_re, turbulence_full_re)
     g.pockets = [_core.Pocket(math.degrees(a / s), math.degrees(arc / s), z0, z1, d)
                  for a, arc, z0, z1, d in pockets]  # core angle = (φ − start) / s
     f = _core.FilmCoupling()

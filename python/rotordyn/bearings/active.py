@@ -36,6 +36,10 @@ class ActiveJournalBearing:
     grooves: tuple[Groove, ...] = ()
     turbulence: str = "laminar"
     density_kg_m3: float | None = None
+    # the turbulent film's optional laminar-to-turbulent transition (Re_h at which the
+    # corrections start and are full; both or neither; docs/film-physics.md)
+    turbulence_onset_re: float | None = None
+    turbulence_full_re: float | None = None
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""

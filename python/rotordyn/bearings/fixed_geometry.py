@@ -84,6 +84,10 @@ class FixedGeometryBearing:
     n_axial: int = 16
     turbulence: str = "laminar"
     density_kg_m3: float | None = None
+    # the turbulent film's optional laminar-to-turbulent transition (Re_h at which the
+    # corrections start and are full; both or neither; docs/film-physics.md)
+    turbulence_onset_re: float | None = None
+    turbulence_full_re: float | None = None
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
@@ -222,7 +226,9 @@ class FixedGeometryBearing:
                 extra_shapes=(np.sin, lambda p: -np.cos(p)) if rot else (),
                 supply_pressure_pa=self.supply_pressure_pa,
                 spin=spin, pockets=pockets, turbulence=self.turbulence,
-                density_kg_m3=self.density_kg_m3, short_bearing=self.film_model == "short"))
+                density_kg_m3=self.density_kg_m3, short_bearing=self.film_model == "short",
+                turbulence_onset_re=self.turbulence_onset_re,
+                turbulence_full_re=self.turbulence_full_re))
             if rot:  # rotations: ∂h/∂θ = S(φ)·z (the weight-1 coordinates first, as untilted)
                 z = np.linspace(-0.5 * self.length_m, 0.5 * self.length_m, self.n_axial + 1)
                 out[-1].coupling.axial_weight = np.ascontiguousarray(

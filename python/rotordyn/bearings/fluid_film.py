@@ -44,7 +44,9 @@ def film_model(b) -> JournalBearing:
                           clearance_m=b.clearance_m, viscosity_pa_s=b.viscosity_pa_s,
                           n_circ=b.n_circ, n_axial=b.n_axial, cavitation=b.cavitation,
                           grooves=b.grooves, turbulence=b.turbulence,
-                          density_kg_m3=b.density_kg_m3)
+                          density_kg_m3=b.density_kg_m3,
+                          turbulence_onset_re=b.turbulence_onset_re,
+                          turbulence_full_re=b.turbulence_full_re)
 
 
 
@@ -63,6 +65,10 @@ class FluidFilmBearing:
     grooves: tuple[Groove, ...] = ()
     turbulence: str = "laminar"
     density_kg_m3: float | None = None
+    # the turbulent film's optional laminar-to-turbulent transition (Re_h at which the
+    # corrections start and are full; both or neither; docs/film-physics.md)
+    turbulence_onset_re: float | None = None
+    turbulence_full_re: float | None = None
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""

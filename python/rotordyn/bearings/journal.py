@@ -32,6 +32,7 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import CAVITATION_MODELS, SystemParts, check_turbulence, set_turbulence
 from rotordyn.bearings.coefficients import coefficient_table
+from rotordyn.bearings.journal_results import BearingEquilibrium, FilmResult, PressureField
 from rotordyn.bearings.thermal import Oil, run_thermal_equilibrium
 from rotordyn.bearings.thd import film_thermal_options, run_thd_equilibrium
 from rotordyn.errors import InputError
@@ -118,88 +119,6 @@ class Groove:
         return _core.Groove(float(self.center_deg), float(self.width_deg), float(self.pressure_pa))
 
 
-@dataclass(frozen=True, slots=True)
-class FilmResult:
-    """Outputs of one Reynolds solve (SI units)."""
-
-    force_n: np.ndarray
-    friction_torque_n_m: float
-    inlet_flow_m3_s: float
-    side_flow_m3_s: float
-    h_min_m: float
-    h_min_angle_deg: float
-    iterations: int
-
-
-@dataclass(frozen=True, slots=True)
-class PressureField:
-    """Pressure on the film grid: ``p_pa[j, k]`` at ``phi_rad[j]``, ``z_m[k]`` (k=0, -1: ends)."""
-
-    phi_rad: np.ndarray
-    z_m: np.ndarray
-    p_pa: np.ndarray
-    h_m: np.ndarray
-    theta: np.ndarray
-    force_n: np.ndarray
-
-    def to_frame(self):
-        import pandas as pd
-
-        phi, z = np.meshgrid(self.phi_rad, self.z_m, indexing="ij")
-        return pd.DataFrame(
-            {
-                "phi_rad": phi.ravel(),
-                "z_m": z.ravel(),
-                "p_pa": self.p_pa.ravel(),
-                "h_m": self.h_m.ravel(),
-                "theta": self.theta.ravel(),
-            }
-        )
-
-
-@dataclass(frozen=True, slots=True)
-class BearingEquilibrium:
-    """Static equilibrium of a rigid journal: film force + load = 0.
-
-    ``sommerfeld`` is S = μ N L D / W · (R/c)² with N = |speed_hz| (rev/s); the attitude angle
-    is the angle from the load line to the line of centres, positive in the rotation sense.
-    """
-
-    x_m: float
-    y_m: float
-    eccentricity_ratio: float
-    attitude_angle_deg: float
-    sommerfeld: float
-    load_n: tuple[float, float]
-    speed_hz: float
-    force_n: np.ndarray
-    residual_rel: float
-    iterations: int
-    status: str = "ok"
-    message: str = ""
-
-    def to_frame(self):
-        import pandas as pd
-
-        return pd.DataFrame(
-            [
-                {
-                    "speed_hz": self.speed_hz,
-                    "load_x_n": self.load_n[0],
-                    "load_y_n": self.load_n[1],
-                    "journal_x_m": self.x_m,
-                    "journal_y_m": self.y_m,
-                    "eccentricity_ratio": self.eccentricity_ratio,
-                    "attitude_angle_deg": self.attitude_angle_deg,
-                    "sommerfeld": self.sommerfeld,
-                    "residual_rel": self.residual_rel,
-                    "status": self.status,
-                    "message": self.message,
-                }
-            ]
-        )
-
-
 class JournalBearing:
     """360° plain journal bearing with optional axial grooves, solved on an (φ, z) grid.
 
@@ -216,6 +135,9 @@ class JournalBearing:
         coefficients, switched on by the local film Reynolds number ρ|ω|R h/μ;
         docs/film-physics.md).
     density_kg_m3 : oil density ρ, kg/m³ (needed by ``turbulence = "ng_pan"``).
+    turbulence_onset_re, turbulence_full_re : optional laminar-to-turbulent transition: the
+        Re_h at which the turbulent corrections start and are full (0 <= onset < full; both
+        or neither; None: the model acts at every Re_h > 0).
     """
 
     def __init__(
@@ -231,6 +153,8 @@ class JournalBearing:
         grooves: Iterable[Groove] = (),
         turbulence: str = "laminar",
         density_kg_m3: float | None = None,
+        turbulence_onset_re: float | None = None,
+        turbulence_full_re: float | None = None,
     ) -> None:
         self.diameter_m = _positive(diameter_m, "diameter_m")
         self.length_m = _positive(length_m, "length_m")
@@ -265,9 +189,12 @@ class JournalBearing:
                 " the steady mass-conserving film content is undetermined)"
             )
         self.grooves = gs
-        check_turbulence("JournalBearing", turbulence, density_kg_m3)
+        check_turbulence("JournalBearing", turbulence, density_kg_m3, turbulence_onset_re,
+                         turbulence_full_re)
         self.turbulence = turbulence
-        self.density_kg_m3 = None if density_kg_m3 is None else float(density_kg_m3)
+        self.density_kg_m3, self.turbulence_onset_re, self.turbulence_full_re = (
+            None if x is None else float(x)
+            for x in (density_kg_m3, turbulence_onset_re, turbulence_full_re))
         self._local = threading.local()
 
     # -- plumbing ------------------------------------------------------------------------
@@ -283,6 +210,8 @@ class JournalBearing:
             grooves=self.grooves,
             turbulence=self.turbulence,
             density_kg_m3=self.density_kg_m3,
+            turbulence_onset_re=self.turbulence_onset_re,
+            turbulence_full_re=self.turbulence_full_re,
         )
 
     def __getstate__(self) -> dict:
@@ -309,7 +238,8 @@ class JournalBearing:
         g.clearance_m = self.clearance_m
         g.viscosity_pa_s = self.viscosity_pa_s
         g.grooves = [gr.to_core() for gr in self.grooves]
-        set_turbulence(g, self.turbulence, self.density_kg_m3)
+        set_turbulence(g, self.turbulence, self.density_kg_m3, self.turbulence_onset_re,
+                       self.turbulence_full_re)
         return g, _core.FilmGrid(self.n_circ, self.n_axial)
 
     def solver(self) -> _core.ReynoldsSolver:

@@ -9,7 +9,9 @@ Options (keywords of every THD entry point and keys of the model file's ``[therm
   cross-film profile of a uniform viscous heat source; k the oil's
   ``conductivity_w_per_m_k``; the given coefficients must then be 0; a turbulent film,
   ``turbulence = "ng_pan"``, raises the symmetric part 6 θ k/h and the across-film part
-  θ k/h by its eddy conductivity at each cell's Re_h and Prandtl number: C++
+  θ k/h by its eddy conductivity at each cell's Re_h and Prandtl number (with the film's
+  transition, ``turbulence_onset_re``/``turbulence_full_re``, the factors' excess takes its
+  weight: exactly the laminar film's coefficients below the onset): C++
   ``thd_wall_turbulence.hpp``, docs/film-physics.md "The turbulent film's wall heat
   transfer");
 * ``journal_wall``: ``"fixed"`` (the journal at ``journal_temperature_c``, None: the supply

@@ -76,6 +76,10 @@ class TiltingPadBearing:
     n_axial: int = 16
     turbulence: str = "laminar"
     density_kg_m3: float | None = None
+    # the turbulent film's optional laminar-to-turbulent transition (Re_h at which the
+    # corrections start and are full; both or neither; docs/film-physics.md)
+    turbulence_onset_re: float | None = None
+    turbulence_full_re: float | None = None
     config_ax_m: float = 0.0
     config_ay_m: float = 0.0
     name: str = ""
@@ -284,7 +288,9 @@ class TiltingPadBearing:
                 clearance_m=self.clearance_m, viscosity_pa_s=self.viscosity_pa_s,
                 cavitation=self.cavitation, start_rad=start, arc_rad=arc, pivot_rad=psi,
                 preload=self.preload, n_circ=self.n_circ, n_axial=self.n_axial, coords=coords,
-                extra_shapes=shapes, turbulence=self.turbulence, density_kg_m3=self.density_kg_m3)
+                extra_shapes=shapes, turbulence=self.turbulence, density_kg_m3=self.density_kg_m3,
+                turbulence_onset_re=self.turbulence_onset_re,
+                turbulence_full_re=self.turbulence_full_re)
             # journal columns in (q, η): −cos θ n_k (the tangential part is carried by η)
             S = np.asarray(pf.coupling.shape).copy()
             on = pf.on_pad

@@ -8,7 +8,7 @@ readable record. Exit 2 on bad input (the message names the field). ``--theta-x-
 4×4 K, C (:mod:`rotordyn.cli.bearing_tilt`).
 
 Film physics (docs/film-physics.md): ``--turbulence ng_pan --density-kg-m3 RHO`` for the
-turbulent film; ``--supply-temperature-c T`` with ``--load-n`` and an oil law
+turbulent film (``--turbulence-onset-re RE0 --turbulence-full-re RE1``: its transition); ``--supply-temperature-c T`` with ``--load-n`` and an oil law
 (``--oil-walther T1 NU1 T2 NU2``, ``--oil-exponential MU_REF T_REF BETA`` or
 ``--oil-power T1 MU1 T2 MU2``) for the
 effective-temperature equilibrium (then ``--viscosity-pa-s`` may be omitted): it prints the
@@ -63,6 +63,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="turbulent film model (ng_pan: Ng-Pan-Elrod, needs --density-kg-m3)")
     s.add_argument("--density-kg-m3", type=float, default=None, metavar="RHO",
                    help="oil density, kg/m3 (turbulence; the thermal oil's density)")
+    s.add_argument("--turbulence-onset-re", type=float, default=None, metavar="RE",
+                   help="transition: Re_h at which the turbulent corrections start (with "
+                        "--turbulence-full-re; default: none, turbulent at every Re_h)")
+    s.add_argument("--turbulence-full-re", type=float, default=None, metavar="RE",
+                   help="transition: Re_h at which the turbulent corrections are full")
     add_thermal_arguments(s)
     add_thd_arguments(s)
     s.add_argument("--n-circ", type=int, default=72, metavar="N",
@@ -123,7 +128,8 @@ def run(args: argparse.Namespace) -> int:
     film = dict(
         diameter_m=args.diameter_m, length_m=args.length_m, clearance_m=args.clearance_m,
         n_circ=args.n_circ, n_axial=args.n_axial, cavitation=args.cavitation, grooves=grooves,
-        turbulence=args.turbulence, density_kg_m3=args.density_kg_m3)
+        turbulence=args.turbulence, density_kg_m3=args.density_kg_m3,
+        turbulence_onset_re=args.turbulence_onset_re, turbulence_full_re=args.turbulence_full_re)
     b = JournalBearing(viscosity_pa_s=args.viscosity_pa_s, **film)
     rec: dict = {"bearing": {k: v for k, v in b.__getstate__().items() if k != "grooves"}}
     rec["bearing"]["grooves"] = [[g.center_deg, g.width_deg, g.pressure_pa] for g in grooves]
@@ -163,6 +169,10 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(json_text(rec))
     else:
+        if b.turbulence != "laminar":
+            print(f"film: turbulent ({b.turbulence}), " + (
+                "at every Re_h" if b.turbulence_onset_re is None else
+                f"transition Re_h {b.turbulence_onset_re:g} to {b.turbulence_full_re:g}"))
         if "equilibrium" in rec:
             e = rec["equilibrium"]
             print(f"equilibrium: x = {x:.6g} m, y = {y:.6g} m, eps = {e['eccentricity_ratio']:.4g},"
