@@ -14,8 +14,9 @@ at 20 Hz of the load scale) and the tilt homotopy ran: 36 866 and 40 886 Reynold
 * at 20 Hz the answer is the homotopy's (homotopy start, then plain Newton on the same model
   without pad groups, as tests/test_tilting_pad_equilibrium.py builds it) to 1e-8 of the
   clearance on the journal, 1e-7 C on the pad tilts, 1e-7 of C/(L/2) on the pitches (measured
-  4.4e-9 C, 3.9e-8 C, 5.5e-9: the plain Newton's tolerance), except the top pads; the top pads' tilt and pitch are not fixed by their one-node film (any
-  pose that keeps that node's film carries the same ~0 force), so they are left out;
+  4.4e-9 C, 3.9e-8 C, 5.5e-9: the plain Newton's tolerance), except the top pads, whose
+  tilt and pitch their one-node film does not fix (any pose that keeps that node's film
+  carries the same ~0 force);
 * at 5 Hz the homotopy's answer is another equilibrium: there pad 1 of each bearing is
   pressure-free (0 of 165 nodes) on its pressure-free continuum, a branch the pad assembly
   excludes by construction; the pad assembly's answer has every side pad pressured on every
@@ -67,7 +68,6 @@ def test_the_answer_is_the_homotopys_where_that_is_on_the_loaded_branch(system):
     a = asm.config_vector(None, None)
     pads = _pads(asm)
     n = m.K.shape[0]
-    # the top pad of each bearing: the one whose film carries the least pressure
     for hz in (20.0, 5.0):
         w = 2 * math.pi * hz
         e = _core.SystemSolver(m).equilibrium(w, 0.0, a, np.zeros(0), opt)
@@ -76,6 +76,7 @@ def test_the_answer_is_the_homotopys_where_that_is_on_the_loaded_branch(system):
         s.film_forces(np.asarray(e.r), np.zeros(n), w)
         peak = [float(np.asarray(s.last_pressure(k)).max()) for k in range(len(pads))]
         nodes = [int((np.asarray(s.last_pressure(k)) > 0).sum()) for k in range(len(pads))]
+        # the top pad of each bearing: pressure on one node, ~0 Pa (measured 7e-5 Pa)
         top = [k for k in range(len(pads)) if nodes[k] <= 1]
         assert len(top) == 2 and all(peak[k] < 1e-3 for k in top), (nodes, peak)
         # every other pad is pressured on every node but the cavitated ones of the loaded pads
