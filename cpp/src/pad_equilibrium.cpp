@@ -28,6 +28,7 @@
 // hands back to these nested solves where it does not reach a pressured, restoring root.
 #include <Eigen/LU>
 #include <Eigen/QR>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -273,6 +274,75 @@ int pitch_solve(PadSolve& ps, const FilmCoupling& fc, Inner&& inner, int first =
   return -1;
 }
 
+/// X = J_pp⁻¹ J_po and y = J_pp⁻¹ R_p for the reduced Newton (the pads' sensitivities to the
+/// outer coordinates, implicit function theorem). J_pp is block diagonal, one block per pad
+/// (a pad's film depends on its own coordinates and the journal's only); `start` gives each
+/// pad's first row in J_pp (blocks run to the next pad's start), `scale` each row's coordinate
+/// scale. Where every block has full rank: LU of J_pp. A pad at the boundary of its
+/// pressure-free set can carry pressure on a single node (the compressor on misaligned
+/// spherical pads at 5 and 20 Hz: the top pads, 1.4e-9 and 7.5e-8 Pa on 1 of 165 nodes):
+/// its tilt and pitch moments are then two multiples of that node's pressure and its block has
+/// rank 1 (smallest singular value 1e-20 of the largest, scaled) — the LU divided by zero and
+/// the NaN step ended the pad assembly. There each block is inverted on its range (scaled
+/// pseudo-inverse, singular values below kRankTol of the block's largest dropped): the pad's
+/// moment balance fixes only the one film combination its pressure sees, the flat direction
+/// is left to the pads' own solve (which re-solves every pad at each trial point).
+void pad_block_solve(const Eigen::MatrixXd& Jpp, const Eigen::MatrixXd& Jpo,
+                     const Eigen::VectorXd& Rp, const std::vector<int>& start,
+                     const std::vector<double>& scale, Eigen::MatrixXd& X, Eigen::VectorXd& y) {
+  // film stiffness entries carry round-off ~1e-13 of a block's largest; the rank-1 pads seen
+  // had 1e-20
+  constexpr double kRankTol = 1e-10;
+  const auto np = Jpp.rows();
+  std::vector<Eigen::Index> b0, b1;  // the non-empty blocks [b0, b1)
+  for (std::size_t k = 0; k < start.size(); ++k) {
+    const Eigen::Index e = k + 1 < start.size() ? start[k + 1] : np;
+    if (e > start[k]) {
+      b0.push_back(start[k]);
+      b1.push_back(e);
+    }
+  }
+  bool block_diagonal = true, full_rank = true;
+  std::vector<Eigen::JacobiSVD<Eigen::MatrixXd>> svd;
+  for (std::size_t k = 0; k < b0.size(); ++k) {
+    const Eigen::Index a = b0[k], m = b1[k] - a;
+    for (Eigen::Index i = a; i < a + m; ++i)
+      for (Eigen::Index j = 0; j < np; ++j)
+        if ((j < a || j >= a + m) && Jpp(i, j) != 0.0) block_diagonal = false;
+    Eigen::MatrixXd B = Jpp.block(a, a, m, m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      B.row(i) *= scale[static_cast<std::size_t>(a + i)];
+      B.col(i) *= scale[static_cast<std::size_t>(a + i)];
+    }
+    svd.emplace_back(B, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    const Eigen::VectorXd sv = svd.back().singularValues();
+    if (!(sv(m - 1) > kRankTol * sv(0))) full_rank = false;
+  }
+  if (full_rank || !block_diagonal) {
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jpp);
+    X = lu.solve(Jpo);
+    y = lu.solve(Rp);
+    return;
+  }
+  X = Eigen::MatrixXd::Zero(np, Jpo.cols());
+  y = Eigen::VectorXd::Zero(np);
+  for (std::size_t k = 0; k < b0.size(); ++k) {
+    const Eigen::Index a = b0[k], m = b1[k] - a;
+    const Eigen::VectorXd s =
+        Eigen::Map<const Eigen::VectorXd>(scale.data() + a, m);  // x = S B_s⁺ S b
+    const Eigen::JacobiSVD<Eigen::MatrixXd>& d = svd[k];
+    const Eigen::VectorXd sv = d.singularValues();
+    Eigen::VectorXd inv = Eigen::VectorXd::Zero(m);
+    for (Eigen::Index i = 0; i < m; ++i)
+      if (sv(i) > kRankTol * sv(0)) inv(i) = 1.0 / sv(i);
+    const Eigen::MatrixXd P =
+        s.asDiagonal() * (d.matrixV() * inv.asDiagonal() * d.matrixU().transpose()) *
+        s.asDiagonal();
+    X.middleRows(a, m) = P * Jpo.middleRows(a, m);
+    y.segment(a, m) = P * Rp.segment(a, m);
+  }
+}
+
 }  // namespace
 
 bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double load_scale,
@@ -468,14 +538,22 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
     const Eigen::MatrixXd J = model_.K + KH;
     // pad coordinates that take part (an unloaded pad's tilt, and its pitch without a pitch
     // spring, have a zero row and column)
-    std::vector<int> pc;
-    for (std::size_t k = 0; k < pads_.size(); ++k)
+    std::vector<int> pc, pc_start(pads_.size());
+    std::vector<double> pc_scale;  // C for tilt and pivot, C/(L/2) for a pitch (pad_joint.cpp)
+    for (std::size_t k = 0; k < pads_.size(); ++k) {
+      pc_start[k] = static_cast<int>(pc.size());
+      const JournalBearingGeometry& geo = model_.films[pads_[k].film].geometry;
       for (std::size_t a = 0; a < pads_[k].coords.size(); ++a) {
         const int c = pads_[k].coords[a];
-        const bool free_pitch = pads_[k].pitch && a + 1 == pads_[k].coords.size() &&
-                                model_.K(c, c) == 0.0;
-        if (state[k] == 1 || (a > 0 && !free_pitch)) pc.push_back(c);
+        const bool is_pitch = pads_[k].pitch && a + 1 == pads_[k].coords.size();
+        const bool free_pitch = is_pitch && model_.K(c, c) == 0.0;
+        if (state[k] == 1 || (a > 0 && !free_pitch)) {
+          pc.push_back(c);
+          pc_scale.push_back(is_pitch ? geo.clearance_m / (0.5 * geo.length_m)
+                                      : geo.clearance_m);
+        }
       }
+    }
     const auto np = static_cast<Eigen::Index>(pc.size());
     Eigen::MatrixXd Joo(no, no), Jop(no, np), Jpo(np, no), Jpp(np, np);
     Eigen::VectorXd Ro(no), Rp(np);
@@ -495,9 +573,13 @@ bool SystemSolver::pad_assembly(double omega, const Eigen::VectorXd& F, double l
     }
     Eigen::VectorXd dro, drp;
     if (np) {
-      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jpp);
-      const Eigen::MatrixXd X = lu.solve(Jpo);
-      const Eigen::VectorXd y = lu.solve(Rp);
+      Eigen::MatrixXd X;
+      Eigen::VectorXd y;
+      pad_block_solve(Jpp, Jpo, Rp, pc_start, pc_scale, X, y);
+      if (!X.allFinite() || !y.allFinite()) {
+        why = "pad assembly: non-finite pad sensitivities";
+        return false;
+      }
       const Eigen::MatrixXd S = Joo - Jop * X;  // reduced Jacobian
       dro = S.partialPivLu().solve(-(Ro - Jop * y));
       // singular reduced Jacobian: e.g. a journal on one loaded pad with the others
