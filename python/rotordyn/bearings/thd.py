@@ -20,7 +20,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings.thd_walls import WALL_OPTIONS, check_walls, set_walls
-from rotordyn.bearings.thermal import thermal_options, tilt_columns
+from rotordyn.bearings.thermal import TiltedJournalOutputs, thermal_options, tilt_columns
 from rotordyn.errors import InputError
 
 THERMAL_MODELS = ("effective", "thd")
@@ -58,7 +58,7 @@ def thd_options(*, supply_temperature_c, supply_flow_m3_s=0.0, carry_over=0.0,
 
 
 @dataclass(frozen=True, slots=True)
-class ThdEquilibriumResult:
+class ThdEquilibriumResult(TiltedJournalOutputs):
     """THD equilibrium of a plain film and its K, C (temperature field frozen).
 
     Temperatures °C: ``max_temperature_c``, ``mean_temperature_c`` (area-weighted over the
@@ -107,15 +107,6 @@ class ThdEquilibriumResult:
     wall_temperature_c: np.ndarray = field(repr=False, default=None)
     status: str = "ok"
     message: str = ""
-    # a tilted journal (rotordyn.bearings.tilt_thermal), as ThermalEquilibriumResult's
-    theta_x_rad: float = 0.0
-    theta_y_rad: float = 0.0
-    moment_n_m: np.ndarray | None = field(default=None, repr=False)
-    h_min_m: float = math.nan
-    h_min_angle_deg: float = math.nan
-    h_min_z_m: float = math.nan
-    K4: np.ndarray | None = field(default=None, repr=False)
-    C4: np.ndarray | None = field(default=None, repr=False)
 
     def __repr__(self) -> str:
         return (f"ThdEquilibriumResult(T_max={self.max_temperature_c:.2f} degC, "

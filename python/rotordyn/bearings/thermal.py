@@ -81,8 +81,24 @@ class Oil:
         return float(out) if np.ndim(out) == 0 else out
 
 
+@dataclass(frozen=True, slots=True, kw_only=True)
+class TiltedJournalOutputs:
+    """A tilted journal's outputs of a thermal equilibrium (rotordyn.bearings.tilt_thermal):
+    its tilt relative to the bearing (rad), the film moments on it (N·m, about x, y), the edge
+    film (m, its angle deg and z m) and K, C 4×4 over (x, y, θx, θy) at the frozen temperature;
+    None untilted. Keyword-only, after the result's own fields."""
+    theta_x_rad: float = 0.0
+    theta_y_rad: float = 0.0
+    moment_n_m: np.ndarray | None = field(default=None, repr=False)
+    h_min_m: float = math.nan
+    h_min_angle_deg: float = math.nan
+    h_min_z_m: float = math.nan
+    K4: np.ndarray | None = field(default=None, repr=False)
+    C4: np.ndarray | None = field(default=None, repr=False)
+
+
 @dataclass(frozen=True, slots=True)
-class ThermalEquilibriumResult:
+class ThermalEquilibriumResult(TiltedJournalOutputs):
     """Effective-temperature equilibrium of a plain film and its K, C (temperature frozen).
 
     Temperatures °C; ``temperature_rise_k`` ΔT (K); flows m³/s (``film_flow_m3_s`` Q across
@@ -113,17 +129,6 @@ class ThermalEquilibriumResult:
     iterations: int
     status: str = "ok"
     message: str = ""
-    # a tilted journal (rotordyn.bearings.tilt_thermal): its tilt relative to the bearing
-    # (rad), the film moments on it (N·m, about x, y), the edge film (m, its angle deg and z m)
-    # and K, C 4×4 over (x, y, θx, θy) at the frozen temperature; None untilted
-    theta_x_rad: float = 0.0
-    theta_y_rad: float = 0.0
-    moment_n_m: np.ndarray | None = field(default=None, repr=False)
-    h_min_m: float = math.nan
-    h_min_angle_deg: float = math.nan
-    h_min_z_m: float = math.nan
-    K4: np.ndarray | None = field(default=None, repr=False)
-    C4: np.ndarray | None = field(default=None, repr=False)
 
     def __repr__(self) -> str:
         return (f"ThermalEquilibriumResult(T_eff={self.effective_temperature_c:.2f} degC, "
@@ -333,4 +338,5 @@ class ThermalModel:
                                effective_factor=f.effective_factor, tol_k=tol_k)
 
 
-__all__ = ["Oil", "ThermalEquilibriumResult", "ThermalFilm", "ThermalModel", "VISCOSITY_LAWS"]
+__all__ = ["Oil", "ThermalEquilibriumResult", "ThermalFilm", "ThermalModel", "TiltedJournalOutputs",
+           "VISCOSITY_LAWS"]
