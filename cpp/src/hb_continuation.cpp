@@ -62,27 +62,23 @@ struct At {
   hb_detail::Problem P;
   FilmSwitch& films;
   long solves = 0;
-  // `check`: validate the system and its orbit input (a caller's provider: every system it
-  // gives is new; one system moved by p_c, Ω or a_y: its first value only, see correct()).
   At(HbSystemAt sys, const hb_detail::Basis& B, Eigen::Index n, OrbitKind kind,
-     const ShootingOptions& so, FilmSwitch& fs, bool check)
+     const ShootingOptions& so, FilmSwitch& fs)
       : solver(std::move(sys.solver)), refused(std::move(sys.refused)), in(std::move(sys.input)),
         films(fs) {
     if (!solver) {
       if (refused.empty()) refused = "the system at this parameter value is not available";
       return;
     }
-    if (check) {
-      require(solver->model().n() == n,
-              "system_at: the system has " + std::to_string(solver->model().n()) +
-                  " coordinates, the coefficients " + std::to_string(n));
-      require(in.kind == kind, "system_at: the orbit kind differs from the branch's");
-      PeriodicInput chk = in;  // the operating point's checks, with a finite start
-      chk.r0 = Eigen::VectorXd::Zero(n);
-      chk.v0 = Eigen::VectorXd::Zero(n);
-      if (kind == OrbitKind::autonomous) chk.period = 1.0;
-      shooting_detail::validate(*solver, chk, so);
-    }
+    require(solver->model().n() == n,
+            "system_at: the system has " + std::to_string(solver->model().n()) +
+                " coordinates, the coefficients " + std::to_string(n));
+    require(in.kind == kind, "system_at: the orbit kind differs from the branch's");
+    PeriodicInput chk = in;  // the operating point's checks, with a finite start
+    chk.r0 = Eigen::VectorXd::Zero(n);
+    chk.v0 = Eigen::VectorXd::Zero(n);
+    if (kind == OrbitKind::autonomous) chk.period = 1.0;
+    shooting_detail::validate(*solver, chk, so);
     shooting_detail::setup_flow(F, *solver, in);
     P.solver = solver.get();
     P.in = &in;
@@ -113,12 +109,8 @@ struct At {
 
 // The corrector of both entry points: `exact_c0` (n) the constant harmonic of ∂R/∂p where
 // eq. 12 is affine in p (p_c, a_y), empty for the central difference on the systems at p ± h.
-// `one_system`: every value is the same system and orbit input but for the parameter (p_c,
-// Ω, a_y), so both are validated once, at the first value; a caller's provider (false) gives
-// a new system at every value, each validated as it comes.
 HbContinuationStep correct(const HbSystemProvider& system_at, const Eigen::VectorXd& exact_c0,
-                           const HbContinuationInput& c, const HbContinuationOptions& opt,
-                           bool one_system) {
+                           const HbContinuationInput& c, const HbContinuationOptions& opt) {
   const HarmonicBalanceOptions& ho = opt.hb;
   const int M = hb_detail::checked_time_points(ho);
   const int H = ho.harmonics, nb = 2 * H + 1;
@@ -217,12 +209,8 @@ HbContinuationStep correct(const HbSystemProvider& system_at, const Eigen::Vecto
     if (a) count(*a);
     a.reset();
   };
-  bool validated = false;
   auto make_at = [&](double pp) {
-    auto a = std::make_unique<At>(system_at(pp), B, n, c.base.kind, so, films,
-                                  !(one_system && validated));
-    validated = true;
-    return a;
+    return std::make_unique<At>(system_at(pp), B, n, c.base.kind, so, films);
   };
   std::unique_ptr<At> cur = make_at(p);
   double w = autonomous ? c.frequency : cur->forced_w(c.frequency);
@@ -474,14 +462,14 @@ HbContinuationStep hb_continuation_step(SystemSolver& solver, const HbContinuati
   Eigen::VectorXd exact;
   if (c.parameter == ContinuationParameter::chamber_pressure) exact = -m.chamber;
   if (c.parameter == ContinuationParameter::config) exact = m.K * c.config_direction;
-  return correct(at, exact, c, opt, true);
+  return correct(at, exact, c, opt);
 }
 
 HbContinuationStep hb_continuation_step(const HbSystemProvider& system_at,
                                         const HbContinuationInput& c,
                                         const HbContinuationOptions& opt) {
   require(static_cast<bool>(system_at), "system_at: expected a provider of the systems");
-  return correct(system_at, Eigen::VectorXd(), c, opt, false);
+  return correct(system_at, Eigen::VectorXd(), c, opt);
 }
 
 }  // namespace rotordyn

@@ -292,8 +292,18 @@ void pad_block_solve(const Eigen::MatrixXd& Jpp, const Eigen::MatrixXd& Jpo,
                      const std::vector<double>& scale, Eigen::MatrixXd& X, Eigen::VectorXd& y) {
   // film stiffness entries carry round-off ~1e-13 of a block's largest; the rank-1 pads seen
   // had 1e-20
+  // (a trade-off: a well-posed but lightly loaded block whose smallest scaled singular value
+  // falls below it loses that direction to the pads' own solve and converges linearly there)
   constexpr double kRankTol = 1e-10;
   const auto np = Jpp.rows();
+  if (!Jpp.allFinite() || !Jpo.allFinite() || !Rp.allFinite()) {
+    // no SVD of a non-finite block (Eigen leaves its factors unset): the LU's NaN step, which
+    // the caller's finiteness check turns into the pad assembly's failure
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jpp);
+    X = lu.solve(Jpo);
+    y = lu.solve(Rp);
+    return;
+  }
   std::vector<Eigen::Index> b0, b1;  // the non-empty blocks [b0, b1)
   for (std::size_t k = 0; k < start.size(); ++k) {
     const Eigen::Index e = k + 1 < start.size() ? start[k + 1] : np;

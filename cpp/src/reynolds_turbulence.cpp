@@ -46,7 +46,12 @@ TurbulenceFactors turbulence_factors(Turbulence model, double re) {
 
 double turbulence_weight(double re, double onset, double full, double* re_dweight) {
   if (re_dweight) *re_dweight = 0.0;
-  if (std::isnan(onset)) return 1.0;  // no transition
+  if (std::isnan(onset) || std::isnan(full)) {
+    if (std::isnan(onset) && std::isnan(full)) return 1.0;  // no transition
+    throw InputError("turbulence_onset_re, turbulence_full_re: expected both or neither, got " +
+                     std::string(std::isnan(onset) ? "turbulence_full_re" : "turbulence_onset_re") +
+                     " alone");
+  }
   if (!(re > onset)) return 0.0;
   if (re >= full) return 1.0;
   const double w = full - onset, t = (re - onset) / w;

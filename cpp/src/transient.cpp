@@ -486,15 +486,19 @@ int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, 
 
 // The film force at the coordinates in.record_film_force at every output state reached
 // (after the run, so the integration's solves and its counters are those of a run without
-// it): one film solve per output; a closed film there (ContactError) leaves NaN.
+// it): one film solve per output, each from its own inputs (film continuation off, so a
+// recorded value does not depend on the solve before it). A film that fails there (closed:
+// ContactError; its cavitation iteration: ConvergenceError) leaves NaN in that row, and the
+// message counts such rows: a finished run is never lost to its recording.
 static void record_film_force(SystemSolver& solver, const TransientInput& in,
                               TransientResult& out) {
   const auto k = static_cast<Eigen::Index>(in.record_film_force.size());
-  const Eigen::Index nt = out.t.size(), n = out.r.cols();
+  const Eigen::Index nt = out.t.size();
   out.film_force = Eigen::MatrixXd::Constant(nt, k, NAN);
   if (k == 0) return;
-  for (int j : in.record_film_force)
-    require(j >= 0 && j < n, "record_film_force: a coordinate index outside [0, n)");
+  solver.set_film_continuation(false);
+  int failed = 0;
+  std::string first;
   for (Eigen::Index i = 0; i < nt; ++i) {
     if (!std::isfinite(out.t(i)) || !out.r.row(i).allFinite() || !out.v.row(i).allFinite())
       continue;
@@ -503,9 +507,13 @@ static void record_film_force(SystemSolver& solver, const TransientInput& in,
           solver.film_forces(out.r.row(i).transpose(), out.v.row(i).transpose(), out.speed(i));
       for (Eigen::Index q = 0; q < k; ++q)
         out.film_force(i, q) = H(in.record_film_force[static_cast<std::size_t>(q)]);
-    } catch (const ContactError&) {
+    } catch (const std::runtime_error& e) {  // ContactError, ConvergenceError
+      if (failed++ == 0) first = e.what();
     }
   }
+  if (failed > 0)
+    out.message += std::string(out.message.empty() ? "" : "; ") + "film forces not recorded at " +
+                   std::to_string(failed) + " output(s) (NaN there): " + first;
 }
 
 TransientResult integrate(SystemSolver& solver, const TransientInput& in,
@@ -534,6 +542,9 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   const Eigen::Index nt = in.t_out.size();
   const double t_end = in.t_out(nt - 1);
   validate_operation(in.speed, in.pressure, in.actuator, in.controller, n, t_end);
+  for (int j : in.record_film_force)
+    require(j >= 0 && j < n, "record_film_force: expected coordinate indices in [0, " +
+                                 std::to_string(n) + "), got " + std::to_string(j));
 
   // The films continue their cavitation sets from one right-hand side to the next for this
   // run only (started afresh here, so the run is a function of its inputs; off again on exit,
