@@ -35,9 +35,24 @@ def test_overdamped_roots_are_not_the_reports_modes(tmp_path):
     assert main(["report", str(PUMP), "--out", str(d), "--operating-speed-hz", "40", "60",
                  "--speeds-hz", "10:70:20"]) == 0
     text = (d / "report.txt").read_text()
-    assert (f"at station 3, the largest deflection of the first forward mode "
+    nodes = s.rotor.station_nodes()
+    amp = np.abs(st.rotor_shapes[nodes, 0, first]) + np.abs(st.rotor_shapes[nodes, 1, first])
+    k = int(np.argmax(amp))
+    assert k == 3  # the overhung impeller, not the NDE end (station 0) of the overdamped root
+    assert (f"at station {k}, the largest deflection of the first forward mode "
             f"({st.frequencies_hz[first]:.4g} Hz at 60 Hz)") in text
     assert "minimum δ = 1.4" not in text and "log dec 2.5" not in text
     assert "no forward rotor mode with a resonance below" in text
     shape = next(ln for ln in text.splitlines() if "critical_mode_1.png" in ln)
     assert f"forward mode at {st.frequencies_hz[first]:.4g} Hz" in shape, shape
+
+
+def test_duplicate_bearing_names_are_refused():
+    """Two bearings of one name made bearing_coefficients take both bearings' pad coordinates
+    for each (it looks them up by name): kxx 4.4950e7 for 4.4919e7 and cxy 7.6e-12 for
+    243.6 N·s/m on this pump before its bearings were named apart; now an InputError."""
+    import pytest
+
+    text = PUMP.read_text().replace('name = "DE"', 'name = "NDE"')
+    with pytest.raises(rd.InputError, match=r"bearing\[1\]\.name"):
+        rd.System.from_toml(text, is_text=True)

@@ -294,3 +294,17 @@ def test_spherical_pads_pitch_with_the_tilt(model):
                           theta_y_rad=6e-4)
     np.testing.assert_allclose(f.force_n, -np.array(PKW["load_n"]), atol=1e-8 * 1500.0)
     np.testing.assert_allclose(f.moment_n_m, p.moment_n_m, rtol=1e-7, atol=1e-9 * scale)
+
+
+@pytest.mark.parametrize("model", ["effective", "thd"])
+def test_untilted_thermal_result_carries_its_minimum_film(model):
+    """Review 2026-12-05: the tilt fields made an untilted result's ``h_min_m`` NaN beside
+    status ok. It is the film's minimum c − e at the equilibrium, as the core's own film solve
+    at that position reports it (an independent path: JournalBearing.solve)."""
+    b = _plain()
+    u = b.thermal_equilibrium(**KW, model=model)
+    assert u.status == "ok"
+    f = b.solve(x_m=u.x_m, y_m=u.y_m, speed_hz=KW["speed_hz"])
+    assert u.h_min_m == pytest.approx(f.h_min_m, rel=1e-14)
+    assert u.h_min_angle_deg == pytest.approx(f.h_min_angle_deg, abs=1e-9)
+    assert 0.0 < u.h_min_m < PLAIN["clearance_m"]

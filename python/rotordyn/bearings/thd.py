@@ -20,7 +20,8 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings.thd_walls import WALL_OPTIONS, check_walls, set_walls
-from rotordyn.bearings.thermal import TiltedJournalOutputs, thermal_options, tilt_columns
+from rotordyn.bearings.thermal import (TiltedJournalOutputs, thermal_options, tilt_columns,
+                                       untilted_h_min)
 from rotordyn.errors import InputError
 
 THERMAL_MODELS = ("effective", "thd")
@@ -187,6 +188,7 @@ def run_thd_equilibrium(solver, oil, opts, load_n, speed_hz: float,
         heat_to_bush_w=st.heat_to_bush_w, journal_temperature_c=st.journal_temperature_c,
         max_wall_temperature_c=st.max_wall_temperature_c, x_m=float(e.x_m), y_m=float(e.y_m),
         eccentricity_ratio=math.hypot(e.x_m, e.y_m) / clearance_m,
+        **untilted_h_min(float(e.x_m), float(e.y_m), clearance_m),
         K=np.array(dc.K), C=np.array(dc.C), iterations=int(r.iterations),
         temperature_c=np.array(st.temperature_c), viscosity_pa_s=np.array(fl.viscosity_pa_s),
         inlet_mask=np.array(st.inlet_mask), flows=flows,

@@ -162,6 +162,14 @@ class ThermalEquilibriumResult(TiltedJournalOutputs):
         return pd.DataFrame([row])
 
 
+def untilted_h_min(x_m: float, y_m: float, clearance_m: float) -> dict:
+    """The minimum film of an untilted journal at (x, y) (m) and its angle (deg, from +x
+    towards +y), c − e as the core's rigid film gives it; its z is the whole length (NaN)."""
+    e = math.hypot(x_m, y_m)
+    ang = math.degrees(math.atan2(y_m, x_m)) % 360.0 if e > 0.0 else 0.0
+    return {"h_min_m": clearance_m - e, "h_min_angle_deg": ang}
+
+
 def tilt_columns(res) -> dict:
     """A tilted plain film's columns (none untilted): its tilt, moments and edge film."""
     if res.K4 is None:
@@ -203,6 +211,7 @@ def run_thermal_equilibrium(solver, oil: Oil, opts, load_n, speed_hz: float,
         film_flow_m3_s=r.film_flow_m3_s, side_flow_m3_s=r.side_flow_m3_s,
         supply_flow_m3_s=r.supply_flow_m3_s, x_m=float(e.x_m), y_m=float(e.y_m),
         eccentricity_ratio=math.hypot(e.x_m, e.y_m) / clearance_m,
+        **untilted_h_min(float(e.x_m), float(e.y_m), clearance_m),
         K=np.array(dc.K), C=np.array(dc.C), iterations=int(r.iterations))
 
 
@@ -339,4 +348,4 @@ class ThermalModel:
 
 
 __all__ = ["Oil", "ThermalEquilibriumResult", "ThermalFilm", "ThermalModel", "TiltedJournalOutputs",
-           "VISCOSITY_LAWS"]
+           "VISCOSITY_LAWS", "untilted_h_min"]

@@ -506,16 +506,21 @@ def _cmd_unbalance(args) -> int:
     peaks = {int(st): u.peaks(st).to_dict("records") for st in u.stations}
     if args.json:
         print(json_text({"stations": list(u.stations), "peaks": peaks,
-                     "response": u.to_frame().to_dict("list")}
+                     "response": u.to_frame().to_dict("list"),
+                     "point_status": [str(x) for x in u.point_status],
+                     "point_message": _messages(u)}
                     | ({"thermal": [_thermal_json(t, m) for t, m in
                                     zip(u.thermal, _messages(u))]} if u.thermal
                        else {})))
     else:
         print(repr(u).strip("<>"))  # largest orbit, speeds above the threshold, failed speeds
         sp = np.asarray(u.speeds_hz)
+        conv = np.isin(np.asarray(u.point_status, dtype=object), CONVERGED)
         for st in u.stations:
             pk = u.peaks(st)
-            if pk.empty:
+            if pk.empty and not conv.any():
+                print(f"station {st}: no converged speed (below, why each failed)")
+            elif pk.empty:
                 print(f"station {st}: no resonance peak over {sp.min():g}–{sp.max():g} Hz")
             else:
                 print(f"station {st}: {len(pk)} resonance peak(s)")
@@ -529,4 +534,4 @@ def _cmd_unbalance(args) -> int:
                 Path(args.plot).with_name(f"{Path(args.plot).stem}_station{st}"
                                           f"{Path(args.plot).suffix}"))
             save_figure(u.plot(station=st, kind=args.plot_kind), path, args.dpi)
-    return _failed_speeds(u.speeds_hz, u.point_status)
+    return _failed_speeds(u.speeds_hz, u.point_status, _messages(u))

@@ -102,6 +102,10 @@ class System:
                                  f"{', '.join(c.__name__ for c in BEARING_TYPES.values())}, "
                                  f"got {type(b).__name__}")
             b.check(where, n)
+            dup = [j for j in range(i) if b.name and self.bearings[j].name == b.name]
+            if dup:  # outputs, sweep axes (bearings.<name>) and films look bearings up by name
+                raise InputError(f"{where}.name: expected a name no other bearing has, got "
+                                 f"{b.name!r} (also bearing[{dup[0]}])")
             if b.station in seen:
                 raise InputError(f"{where}.station: station {b.station} already has a bearing")
             seen.add(b.station)
