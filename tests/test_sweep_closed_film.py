@@ -72,7 +72,7 @@ def test_closed_film_point_is_a_row(tmp_path):
 def test_every_value_closing_or_malformed_is_refused_at_load(tmp_path):
     _model(tmp_path)
     with pytest.raises(InputError, match=r"grid\.bearings\.DE bearing\.config_theta_y_rad\[0\]"
-                       r".*every value of the axis closes the film"):
+                       r".*every checked value of the axis is refused"):
         SweepSpec.from_toml(_spec(tmp_path, [5e-3, -6e-3], "all"))
     with pytest.raises(InputError, match=r"config_theta_y_rad.*expected a finite number"):
         SweepSpec.from_toml(_spec(tmp_path, [1e-3, float("nan")], "nan"))
@@ -84,3 +84,29 @@ def test_every_value_closing_or_malformed_is_refused_at_load(tmp_path):
     with pytest.raises(InputError, match=r"clearance_m\[1\]") as exc:
         SweepSpec.from_toml(p)
     assert not isinstance(exc.value, ClosedFilmError)
+
+
+def test_transition_pair_axes_refuse_only_their_bad_combinations(tmp_path):
+    """Review 2026-12-05: sweeping both ends of a turbulence transition, onset [1000, 1500] x
+    full [1300, 2000], was refused at load (onset 1500 was checked against the model's full
+    1300), although three of its four points are valid. The pair's order is a combination's
+    fault (FieldCombinationError): the (1500, 1300) point is an error row, the others run."""
+    s = rotordyn.System.from_toml(MODELS / "compressor_plain.toml")
+    s = dataclasses.replace(s, bearings=tuple(
+        dataclasses.replace(b, turbulence="ng_pan", density_kg_m3=870.0,
+                            turbulence_onset_re=1000.0, turbulence_full_re=1300.0,
+                            n_circ=36, n_axial=6) for b in s.bearings))
+    s.to_toml(tmp_path / "m.toml")
+    on, full = "bearings.DE bearing.turbulence_onset_re", "bearings.DE bearing.turbulence_full_re"
+    p = tmp_path / "tr.toml"
+    p.write_text(f'schema = "rotordyn/sweep/1"\nname = "tr"\nmodel = "m.toml"\n'
+                 f'analysis = "equilibrium"\n[grid]\nspeed_hz = [{F_HZ}]\n'
+                 f'"{on}" = [1000.0, 1500.0]\n"{full}" = [1300.0, 2000.0]\n')
+    res = run_sweep(p, tmp_path / "out", threads=1)
+    assert res.complete
+    f = sw.open(tmp_path / "out").frame
+    bad = f[(f[on] == 1500.0) & (f[full] == 1300.0)]
+    assert len(bad) and (bad["status"] == "error").all()
+    assert bad["message"].str.contains("turbulence_full_re").all()
+    good = f[~((f[on] == 1500.0) & (f[full] == 1300.0))]
+    assert (good["status"] == "ok").all() and good["journal_x_m"].notna().all()

@@ -39,7 +39,15 @@ class OutputError(InputError):
     errors were before issue 21, so code catching InputError still catches it."""
 
 
-class ClosedFilmError(InputError):
+class FieldCombinationError(InputError):
+    """A fault of a combination of a model's fields, not of a value on its own (a bearing's
+    misalignment with its length and clearance; a transition's onset with its full Re_h). An
+    :class:`InputError` (a model is refused with it); a sweep makes a grid point that raises
+    it a row with status ``error`` and this message, and refuses the spec only when every
+    value of the axis raises it (:mod:`rotordyn.sweep.spec`)."""
+
+
+class ClosedFilmError(FieldCombinationError):
     """A bearing's misalignment (``config_theta_x_rad``, ``config_theta_y_rad``) closes a film
     at an edge for a journal on the housing's axis: a fault of the combination of the
     misalignment with the bearing's length and clearance, not of a value on its own. An
@@ -49,4 +57,4 @@ class ClosedFilmError(InputError):
 
 
 __all__ += ["RotordynWarning", "UnitWarning", "RotordynDeprecationWarning", "OutputError",
-            "ClosedFilmError"]
+            "FieldCombinationError", "ClosedFilmError"]

@@ -188,6 +188,9 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     v.in_range("rub_fraction", rub_fraction, 0.0, 1.0, hi_open=True)
     v.positive("atol_m", atol_m)
     v.integer("max_steps", max_steps, lo=1)
+    if not isinstance(record_film_moments, (bool, np.bool_)):  # before any solve
+        raise InputError(f"record_film_moments: expected True or False, got "
+                         f"{record_film_moments!r}")
     if config_ay_m is not None:
         v.finite("config_ay_m", config_ay_m)
     if not (isinstance(max_cost_s, (float, np.floating)) and max_cost_s == math.inf):
@@ -292,9 +295,6 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
         Cm, _ = measurement_matrix(system, adaptive.measurements)
         inp.adaptive = adaptive.to_core(Cm, Cm @ np.concatenate([r_eq, np.zeros(n)]))
     tb = [bc for bc in asm.bearings if bc.rot]  # tilting films: their moments recorded
-    if not isinstance(record_film_moments, (bool, np.bool_)):
-        raise InputError(f"record_film_moments: expected True or False, got "
-                         f"{record_film_moments!r}")
     inp.record_film_force = [j for bc in tb for j in bc.rot[:2]] if record_film_moments else []
     res = _core.integrate(asm.solver, inp, opt)
     r = np.asarray(res.r)

@@ -32,7 +32,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import plausibility
 from rotordyn._common import validate as v
-from rotordyn.errors import ClosedFilmError, InputError
+from rotordyn.errors import ClosedFilmError, FieldCombinationError, InputError
 
 CAVITATION_MODELS = ("none", "gumbel", "reynolds", "jfo")
 # Turbulent lubrication models (C++ core, docs/film-physics.md): "laminar" or "ng_pan"
@@ -57,8 +57,8 @@ def check_turbulence(where: str, turbulence, density_kg_m3, onset_re=None,
                              "needs turbulence = 'ng_pan', got 'laminar'")
         on = v.non_negative(f"{where}.turbulence_onset_re", onset_re)
         full = v.finite(f"{where}.turbulence_full_re", full_re)
-        if not full > on:
-            raise InputError(f"{where}.turbulence_full_re: expected a Re_h > "
+        if not full > on:  # a pair's fault (a sweep point's error row, not the spec)
+            raise FieldCombinationError(f"{where}.turbulence_full_re: expected a Re_h > "
                              f"turbulence_onset_re = {on!r}, got {full_re!r}")
     if density_kg_m3 is not None:
         v.in_range(f"{where}.density_kg_m3", density_kg_m3, 0.0, MAX_DENSITY_KG_M3,

@@ -114,8 +114,11 @@ def plain_tilted_thermal_equilibrium(bearing, *, theta_x_rad: float, theta_y_rad
         raise InputError(f"oil: expected a rotordyn.bearings.Oil, got {oil!r}")
     tx, ty = v.finite("theta_x_rad", theta_x_rad), v.finite("theta_y_rad", theta_y_rad)
     check_plain_pose(bearing, 0.0, 0.0, tx, ty)
-    lx, ly = (float(q) for q in load_n)
-    w = TWO_PI * float(speed_hz)
+    load = np.asarray(load_n, dtype=float)
+    if load.shape != (2,) or not np.all(np.isfinite(load)):
+        raise InputError(f"load_n: expected two finite numbers (Fx, Fy) N, got {load_n!r}")
+    lx, ly = float(load[0]), float(load[1])
+    w = TWO_PI * v.speed("speed_hz", speed_hz)
     film = imposed_tilt(tilt_coupling(bearing, [0, 1, 2, 3], bearing_name(bearing)), tx, ty)
     model = _core.SystemModel()
     z2 = np.zeros((2, 2))

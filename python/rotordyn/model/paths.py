@@ -14,7 +14,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from rotordyn.errors import ClosedFilmError, InputError
+from rotordyn.errors import ClosedFilmError, FieldCombinationError, InputError
 
 
 def _fields(obj) -> list[str]:
@@ -102,6 +102,27 @@ def _set(obj, parts: list[str], value, where: str):
                                                      declared_type(obj, head))})
 
 
+def set_fields(system, items, where: str = "grid"):
+    """A copy of ``system`` with every (dotted path, value) of ``items`` set (each by
+    :func:`set_field`). A fault of a combination of fields met on the way — an intermediate
+    model, e.g. a transition's onset set above the full Re_h the next item raises — is
+    retried after the others, so the order of the items does not matter; the first such
+    fault is raised only when no item can be set any more."""
+    pending, s = list(items), system
+    while pending:
+        left, first = [], None
+        for path, value in pending:
+            try:
+                s = set_field(s, path, value, where)
+            except FieldCombinationError as exc:
+                left.append((path, value))
+                first = first or exc
+        if len(left) == len(pending):
+            raise first
+        pending = left
+    return s
+
+
 def set_field(system, path: str, value, where: str = "grid"):
     """A copy of ``system`` with the field at dotted ``path`` set to ``value`` (validated by
     the model's own checks; an InputError names ``where``.path)."""
@@ -109,8 +130,9 @@ def set_field(system, path: str, value, where: str = "grid"):
         raise InputError(f"{where}.{path}: expected a finite number, got {value!r}")
     try:
         return _set(system, path.split("."), value, "")
-    except InputError as exc:  # a closed film stays one (a sweep makes it that point's row)
-        cls = ClosedFilmError if isinstance(exc, ClosedFilmError) else InputError
+    except InputError as exc:  # a combination's fault stays one (a sweep point's row)
+        cls = (ClosedFilmError if isinstance(exc, ClosedFilmError) else FieldCombinationError
+               if isinstance(exc, FieldCombinationError) else InputError)
         raise cls(f"{where}.{path}: {exc}") from None
     except (TypeError, ValueError) as exc:
         raise InputError(f"{where}.{path}: {exc}") from None

@@ -2,6 +2,6 @@
 that the analyses — a continuation over a model field — use them without importing the sweep
 room)."""
 
-from rotordyn.model.paths import get_field, set_field  # noqa: F401
+from rotordyn.model.paths import get_field, set_field, set_fields  # noqa: F401
 
-__all__ = ["get_field", "set_field"]
+__all__ = ["get_field", "set_field", "set_fields"]

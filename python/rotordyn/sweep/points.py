@@ -18,7 +18,7 @@ from rotordyn.analysis.linear import FD_REL_STEP
 from rotordyn.errors import RotordynError
 from rotordyn.results.modes import mode_stable
 from rotordyn.model.system import System
-from rotordyn.sweep.paths import set_field
+from rotordyn.sweep.paths import set_fields
 from rotordyn.units import hz_to_rad_s
 
 
@@ -79,10 +79,7 @@ class Variants:
         key = self._key(p)
 
         def build():
-            s = self.base
-            for k, val in key:
-                s = set_field(s, k, val)
-            return Assembled(s)
+            return Assembled(set_fields(self.base, key))
 
         return self._fresh(key, build)
 

@@ -26,7 +26,7 @@ import numpy as np
 
 from rotordyn.analysis.continuation import METHODS as CONTINUATION_METHODS
 from rotordyn.analysis.continuation import NEWTON_MODES
-from rotordyn.errors import ClosedFilmError, InputError
+from rotordyn.errors import FieldCombinationError, InputError
 from rotordyn._common import validate as v
 from rotordyn.model import builtin as models
 from rotordyn.sweep import robust_rows as rr
@@ -233,8 +233,9 @@ def _check_model_axis(system, name: str, vals: list) -> None:
     ``error`` row, never a crash). The error names ``grid.<name>[i]``, i the first index
     holding the rejected value. A value whose bearing misalignment closes a film
     (:class:`rotordyn.errors.ClosedFilmError`, a combination of fields) is that point's
-    ``error`` row with the message; the spec is refused only when every checked value
-    closes it."""
+    ``error`` row with the message, as is any fault of a combination of fields
+    (:class:`rotordyn.errors.FieldCombinationError`: a transition's onset above its full
+    Re_h on another axis); the spec is refused only when every checked value is."""
     from rotordyn.sweep.paths import get_field, set_field
 
     arr = np.asarray(vals, dtype=float)
@@ -253,19 +254,19 @@ def _check_model_axis(system, name: str, vals: list) -> None:
     else:
         pick = np.unique(np.linspace(0, len(uniq) - 1, CHECK_ALL).round().astype(int))
     head = f"grid.{name}: "
-    closed = []  # (index, message) of the values whose misalignment closes a film
+    closed = []  # (index, message) of the values refused for a combination of fields
     for k in pick:
         i = int(first[k])
         try:
             set_field(system, name, vals[i])
-        except ClosedFilmError as exc:  # that point's row (status error), not the spec
+        except FieldCombinationError as exc:  # that point's row (status error), not the spec
             closed.append((i, str(exc).removeprefix(head)))
         except InputError as exc:
             msg = str(exc).removeprefix(head)
             raise InputError(f"grid.{name}[{i}]: {msg}") from None
     if closed and len(closed) == len(pick):
         i, msg = min(closed)  # the first grid index
-        raise InputError(f"grid.{name}[{i}]: {msg} (every value of the axis closes the film)")
+        raise InputError(f"grid.{name}[{i}]: {msg} (every checked value of the axis is refused: no point could run)")
 
 
 def boundary_axes(spec) -> tuple[str, ...]:
