@@ -238,10 +238,13 @@ def stability_screen(checks: Checks, c, window_hz: float, op_range) -> np.ndarra
     modes set to 0). Checks: δ > 0.1 in the operating range (a screening without cross-coupling;
     API 617 Level I with Q_A is :mod:`rotordyn.report.level1`) and no growing forward mode
     over the whole range. Returns the screened δ (n_speeds, n_modes), NaN elsewhere."""
-    ld = np.where(c.rotor_mask() & (c.whirl == 1) & (c.frequencies_hz < window_hz)
-                  & (c.frequencies_hz > 0) & (c.log_dec < RESONANT_LOG_DEC), c.log_dec, np.nan)
+    fwd = (c.rotor_mask() & (c.whirl == 1) & (c.frequencies_hz < window_hz)
+           & (c.frequencies_hz > 0))
+    ld = np.where(fwd & (c.log_dec < RESONANT_LOG_DEC), c.log_dec, np.nan)
     ld = np.where(np.abs(ld) < LOG_DEC_ROUND_OFF, 0.0, ld)
+    # per speed: converged, and whether any forward rotor mode lies below the window at all
     conv = _converged_speeds(c)
+    conv = np.where(conv, np.where(fwd.any(axis=1), 2, 1), 0)
     if op_range is not None:
         inr = (c.speeds_hz >= op_range[0]) & (c.speeds_hz <= op_range[1])
         _screen_check(checks, "stability screening in the operating range",
@@ -265,15 +268,20 @@ def _converged_speeds(c) -> np.ndarray:
 def _screen_check(checks: Checks, name: str, criterion: str, ld, conv, window_hz: float,
                   passes, where: str) -> None:
     """One screening check on the screened δ ``ld`` of some speeds: its minimum; or, where
-    speeds converged but no forward rotor mode below ``window_hz`` has a resonance (every
-    one damped beyond ζ = 1/√2, δ ≥ 2π: nothing to grow, as an unstable mode has ζ < 0),
-    PASS saying so; NOT RESOLVED without a converged speed."""
+    speeds converged but no forward rotor mode below ``window_hz`` has a resonance (none
+    there, or every one damped beyond ζ = 1/√2, δ ≥ 2π: nothing to grow, as an unstable mode
+    has ζ < 0), PASS saying which; NOT RESOLVED without a converged speed. ``conv`` per
+    speed: 0 not converged, 1 converged without a forward rotor mode below the window, 2
+    with one."""
     if np.isfinite(ld).any():
         m = float(np.nanmin(ld))
         checks.add(name, criterion, f"minimum δ = {m:.3g}", bool(passes(m)))
-    elif np.any(conv):
+    elif np.any(conv == 2):
         checks.add(name, criterion, f"no forward rotor mode with a resonance below "
                    f"{window_hz:.4g} Hz (all damped beyond δ = 2π) in {where}", True)
+    elif np.any(conv == 1):
+        checks.add(name, criterion, f"no forward rotor mode below {window_hz:.4g} Hz in "
+                   f"{where}", True)
     else:
         checks.add(name, criterion, f"no converged point in {where}", NOT_RESOLVED)
 

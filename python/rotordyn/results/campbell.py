@@ -127,7 +127,8 @@ class CampbellResult(Display):
         lam = self.eigenvalues.ravel()
         st = (np.repeat(self.point_status, nm) if self.point_status is not None
               else [self.status] * (ns * nm))
-        msg = list(np.repeat(self.point_message, nm))  # None where the speed converged
+        # "" where the speed converged, as every other frame and the sweep rows write it
+        msg = ["" if m is None else m for m in np.repeat(self.point_message, nm)]
         # A slot without an eigenvalue (a failed speed's row) has no whirl and no kind: a
         # failed equilibrium is not classified.
         none = np.isnan(lam)
