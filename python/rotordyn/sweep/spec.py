@@ -26,7 +26,8 @@ import numpy as np
 
 from rotordyn.analysis.continuation import METHODS as CONTINUATION_METHODS
 from rotordyn.analysis.continuation import NEWTON_MODES
-from rotordyn.errors import FieldCombinationError, InputError
+from rotordyn.errors import InputError
+from rotordyn.sweep.model_axes import check_model_axis
 from rotordyn._common import validate as v
 from rotordyn.model import builtin as models
 from rotordyn.sweep import robust_rows as rr
@@ -219,54 +220,6 @@ def _axis(name: str, val) -> list[float]:
     if isinstance(val, list) and val:
         return [v.finite(f"{where}[{i}]", x) for i, x in enumerate(val)]
     raise InputError(f"{where}: expected a number, a non-empty list or {{start, stop, num}}")
-
-
-CHECK_ALL = 4096  # distinct values of a model-field axis each rebuilt into a model
-
-
-def _check_model_axis(system, name: str, vals: list) -> None:
-    """The values of a model-field axis against the model, fast for any length: a cheap
-    check of every value (an integer field takes integers), then the model rebuilt with
-    each distinct value once when there are at most CHECK_ALL of them, else with the
-    smallest, the largest and CHECK_ALL evenly spaced distinct values between (the model's
-    checks bound one field at a time; a value they would still reject becomes that point's
-    ``error`` row, never a crash). The error names ``grid.<name>[i]``, i the first index
-    holding the rejected value. A value whose bearing misalignment closes a film
-    (:class:`rotordyn.errors.ClosedFilmError`, a combination of fields) is that point's
-    ``error`` row with the message, as is any fault of a combination of fields
-    (:class:`rotordyn.errors.FieldCombinationError`: a transition's onset above its full
-    Re_h on another axis); the spec is refused only when every checked value is."""
-    from rotordyn.sweep.paths import get_field, set_field
-
-    arr = np.asarray(vals, dtype=float)
-    try:
-        old = get_field(system, name)
-    except (AttributeError, IndexError, KeyError, TypeError, InputError):
-        old = []
-    if any(isinstance(o, int) and not isinstance(o, bool) for o in old):
-        bad = np.flatnonzero(arr != np.round(arr))
-        if bad.size:
-            raise InputError(f"grid.{name}[{bad[0]}]: expected an integer (the field holds "
-                             f"one), got {vals[bad[0]]!r}")
-    uniq, first = np.unique(arr, return_index=True)
-    if len(uniq) <= CHECK_ALL:
-        pick = range(len(uniq))
-    else:
-        pick = np.unique(np.linspace(0, len(uniq) - 1, CHECK_ALL).round().astype(int))
-    head = f"grid.{name}: "
-    closed = []  # (index, message) of the values refused for a combination of fields
-    for k in pick:
-        i = int(first[k])
-        try:
-            set_field(system, name, vals[i])
-        except FieldCombinationError as exc:  # that point's row (status error), not the spec
-            closed.append((i, str(exc).removeprefix(head)))
-        except InputError as exc:
-            msg = str(exc).removeprefix(head)
-            raise InputError(f"grid.{name}[{i}]: {msg}") from None
-    if closed and len(closed) == len(pick):
-        i, msg = min(closed)  # the first grid index
-        raise InputError(f"grid.{name}[{i}]: {msg} (every checked value of the axis is refused: no point could run)")
 
 
 def boundary_axes(spec) -> tuple[str, ...]:
@@ -540,7 +493,7 @@ class SweepSpec:
                 raise InputError(f"grid.{name}: unknown axis (allowed: "
                                  f"{', '.join(OPERATING)}, a dotted model field such as "
                                  "bearings.active.clearance_m, or options.<name>)")
-            _check_model_axis(system, name, vals)
+            check_model_axis(system, name, vals)
         if self.analysis == "robust":
             rr.check_model(system, self.options)
         n_st = system.rotor.n_stations
