@@ -22,7 +22,6 @@ from dataclasses import dataclass, field
 from decimal import Decimal, localcontext
 from pathlib import Path
 
-
 from rotordyn.analysis.continuation import METHODS as CONTINUATION_METHODS
 from rotordyn.analysis.continuation import NEWTON_MODES
 from rotordyn.errors import InputError
