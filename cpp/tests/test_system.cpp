@@ -89,24 +89,11 @@ TEST_CASE("system: failed and contact equilibria are told apart, bad shapes rais
 }
 
 namespace {
-/// one_film with the journal's rotations as coordinates 2, 3 (shape sin φ, −cos φ; axial
-/// weight z): h = c − (x + θy z) cos φ − (y − θx z) sin φ.
+/// one_film with the journal's rotations as coordinates 2, 3 (rdtest::tilting_journal_film).
 SystemModel tilting_film() {
   SystemModel m = one_film(0.0);
-  FilmCoupling& f = m.films[0];
-  const int K1 = f.grid.n_axial + 1;
-  f.coords = {0, 1, 2, 3};
-  RowMatrixXd S(f.grid.n_circ, 4);
-  for (int j = 0; j < f.grid.n_circ; ++j) {
-    const double phi = 2 * M_PI * j / f.grid.n_circ;
-    S.row(j) << -std::cos(phi), -std::sin(phi), std::sin(phi), -std::cos(phi);
-  }
-  f.shape = S;
-  f.axial_weight = RowMatrixXd::Ones(4, K1);
-  for (int k = 0; k < K1; ++k) {
-    const double z = -0.5 * f.geometry.length_m + k * f.geometry.length_m / f.grid.n_axial;
-    f.axial_weight(2, k) = f.axial_weight(3, k) = z;
-  }
+  m.films[0] = rdtest::tilting_journal_film(m.films[0].geometry, m.films[0].grid,
+                                            Cavitation::reynolds);
   m.M = Eigen::Matrix4d::Identity();
   m.K = m.C = m.G = Eigen::Matrix4d::Zero();
   m.Q = m.chamber = Eigen::Vector4d::Zero();

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rotordyn._common import validate as v
 from rotordyn.bearings._film import check_film_fields, check_tilt_fields
 from rotordyn.bearings.journal import Groove, JournalBearing
 from rotordyn.errors import InputError
@@ -93,6 +94,34 @@ class FluidFilmBearing:
     def journal_bearing(self) -> JournalBearing:
         """The standalone film model (forces, coefficients) of this bearing."""
         return film_model(self)
+
+    def thermal_equilibrium(self, *, load_n, speed_hz: float, oil,
+                            supply_temperature_c: float, supply_flow_m3_s: float = 0.0,
+                            carry_over: float = 0.0, effective_factor: float = 0.5,
+                            tol_k: float = 1e-6, model: str = "effective",
+                            theta_x_rad: float = 0.0, theta_y_rad: float = 0.0,
+                            tilt: bool | None = None, **thd):
+        """The standalone thermal equilibrium of this bearing's film under ``load_n`` (N) at
+        ``speed_hz``: :meth:`rotordyn.JournalBearing.thermal_equilibrium`'s signature and
+        result (``model="effective"`` or ``"thd"``, the THD keyword options, the journal's
+        tilt ``theta_x_rad``, ``theta_y_rad`` relative to the bearing, rad).
+
+        Of this bearing's own fields: the film (geometry, grid, cavitation, grooves,
+        turbulence) is used; ``viscosity_pa_s`` and a frozen ``viscosity_field_pa_s`` are not
+        (the oil's law replaces them, as for JournalBearing); ``tilt`` (None: this bearing's
+        own ``tilt`` field) gives the tilted film's outputs (moments, edge film, K4, C4) even
+        at zero tilt. The housing's ``config_theta_x_rad``, ``config_theta_y_rad`` are not
+        applied: they are the housing's misalignment against the shaft line of a system,
+        whose journal rotation is the system's to find; standalone the journal's tilt
+        relative to the bearing is given here (as for the fixed-geometry and tilting-pad
+        bearings; ``config_ax_m``, ``config_ay_m`` likewise)."""
+        tilted = self.tilt if tilt is None else v.boolean("tilt", tilt)
+        return film_model(self).thermal_equilibrium(
+            load_n=load_n, speed_hz=speed_hz, oil=oil,
+            supply_temperature_c=supply_temperature_c, supply_flow_m3_s=supply_flow_m3_s,
+            carry_over=carry_over, effective_factor=effective_factor, tol_k=tol_k,
+            model=model, theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad, tilt=tilted,
+            **thd)
 
 
 __all__ = ["FluidFilmBearing", "check_placed_film", "film_model", "freeze_viscosity_field"]

@@ -27,7 +27,8 @@ from rotordyn.bearings._film import TURBULENCE_MODELS
 from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.bearings.thermal import Oil
 from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args, table_text
-from rotordyn.cli.bearing_tilt import add_tilt_arguments, run_tilted, wants_tilt
+from rotordyn.cli.bearing_tilt import (add_tilt_arguments, print_thermal_tilt, run_tilted,
+                                       thermal_tilt, thermal_tilt_record, wants_tilt)
 from rotordyn.cli.common import add_thd_arguments, journal_pose
 from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
@@ -138,7 +139,9 @@ def run(args: argparse.Namespace) -> int:
             raise InputError("--speed-hz: required")
         if args.speed_hz is not None:
             rec["speed_hz"] = args.speed_hz
-        return run_tilted(b, args, rec, thermal=oil is not None)
+        if oil is not None and args.speeds_hz is None:  # the tilted thermal equilibrium
+            return _thermal(b, oil, film, rec, args)
+        return run_tilted(b, args, rec)
     if args.speeds_hz is not None:
         return _table(b, args)
     if args.speed_hz is None:
@@ -202,16 +205,21 @@ def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
                               supply_temperature_c=args.supply_temperature_c,
                               supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),
                               carry_over=_or(args.carry_over, 0.0),
-                              effective_factor=_or(args.effective_factor, 0.5))
+                              effective_factor=_or(args.effective_factor, 0.5),
+                              **thermal_tilt(args))
     hot = JournalBearing(viscosity_pa_s=r.viscosity_pa_s, **film)
-    f = hot.solve(x_m=r.x_m, y_m=r.y_m, speed_hz=args.speed_hz)
     row = r.to_frame().iloc[0].to_dict()
     rec["thermal"] = {k: (float(v) if isinstance(v, (int, float, np.floating)) else v)
                       for k, v in row.items()}
-    rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, force_n=np.asarray(f.force_n).tolist(),
-               friction_torque_n_m=f.friction_torque_n_m, h_min_m=f.h_min_m,
-               h_min_angle_deg=f.h_min_angle_deg, k_n_per_m=r.K.tolist(),
+    rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, k_n_per_m=r.K.tolist(),
                c_n_s_per_m=r.C.tolist(), coefficient_method="perturbation")
+    if wants_tilt(args):  # the hot film's forces at the tilted pose; moments, edge, K4, C4
+        thermal_tilt_record(r, rec, hot)
+    else:
+        f = hot.solve(x_m=r.x_m, y_m=r.y_m, speed_hz=args.speed_hz)
+        rec.update(force_n=np.asarray(f.force_n).tolist(), h_min_m=f.h_min_m,
+                   h_min_angle_deg=f.h_min_angle_deg,
+                   friction_torque_n_m=f.friction_torque_n_m)
     if args.json:
         print(json_text(rec))
         return 0
@@ -221,7 +229,9 @@ def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
     print(f"power loss {r.power_loss_w:.5g} W; film flow {r.film_flow_m3_s:.5g} m3/s, side flow "
           f"{r.side_flow_m3_s:.5g} m3/s, fresh supply {r.supply_flow_m3_s:.5g} m3/s")
     print(f"equilibrium: x = {r.x_m:.6g} m, y = {r.y_m:.6g} m, eps = {r.eccentricity_ratio:.4g}; "
-          f"h_min = {f.h_min_m:.6g} m at {f.h_min_angle_deg:.2f} deg")
+          f"h_min = {rec['h_min_m']:.6g} m at {rec['h_min_angle_deg']:.2f} deg")
+    if wants_tilt(args):
+        return print_thermal_tilt(r, rec)
     print("K [N/m] =", np.array2string(r.K, precision=5))
     print("C [N s/m] =", np.array2string(r.C, precision=5))
     return 0
@@ -238,12 +248,15 @@ def _thd(b: JournalBearing, oil: Oil, rec: dict, args: argparse.Namespace) -> in
     r = b.thermal_equilibrium(load_n=tuple(args.load_n), speed_hz=args.speed_hz, oil=oil,
                               supply_temperature_c=args.supply_temperature_c,
                               supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),
-                              carry_over=_or(args.carry_over, 0.0), model="thd", **thd)
+                              carry_over=_or(args.carry_over, 0.0), model="thd", **thd,
+                              **thermal_tilt(args))
     row = r.to_frame().iloc[0].to_dict()
     rec["thermal"] = {k: (float(v) if isinstance(v, (int, float, np.floating)) else v)
                       for k, v in row.items()}
     rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, k_n_per_m=r.K.tolist(),
                c_n_s_per_m=r.C.tolist(), coefficient_method="perturbation")
+    if wants_tilt(args):
+        thermal_tilt_record(r, rec)
     if args.json:
         print(json_text(rec))
         return 0 if r.status in CONVERGED else 1
@@ -255,8 +268,11 @@ def _thd(b: JournalBearing, oil: Oil, rec: dict, args: argparse.Namespace) -> in
           f"fresh supply {r.supply_flow_m3_s:.5g} m3/s; heat to journal "
           f"{r.heat_to_journal_w:.4g} W, to bush {r.heat_to_bush_w:.4g} W")
     print(f"equilibrium: x = {r.x_m:.6g} m, y = {r.y_m:.6g} m, eps = {r.eccentricity_ratio:.4g}")
-    print("K [N/m] =", np.array2string(r.K, precision=5))
-    print("C [N s/m] =", np.array2string(r.C, precision=5))
+    if wants_tilt(args):
+        print_thermal_tilt(r, rec)
+    else:
+        print("K [N/m] =", np.array2string(r.K, precision=5))
+        print("C [N s/m] =", np.array2string(r.C, precision=5))
     return 0 if r.status in CONVERGED else 1
 
 

@@ -1,7 +1,10 @@
 """``rotordyn bearing --theta-x-rad/--theta-y-rad``: one operating point of a plain journal
 bearing with the journal tilted relative to the bearing (issue 20; docs/film-physics.md,
 "Journal tilt and bearing misalignment"): forces, moments, the edge film and the 4×4 K, C
-over (x, y, θx, θy)."""
+over (x, y, θx, θy) — of the isothermal film (:func:`run_tilted`) or at the thermal
+equilibrium with the tilted journal (``--supply-temperature-c`` with an oil law, effective or
+THD: :func:`thermal_tilt`, :func:`thermal_tilt_record`, :func:`print_thermal_tilt`, called by
+the thermal paths of :mod:`rotordyn.cli.bearing`)."""
 
 from __future__ import annotations
 
@@ -25,18 +28,68 @@ def wants_tilt(args: argparse.Namespace) -> bool:
     return args.theta_x_rad is not None or args.theta_y_rad is not None
 
 
-def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict, thermal: bool) -> int:
-    """The tilted operating point (``--load-n``: the misaligned equilibrium first; a failed
-    one is reported and not linearised, exit 1)."""
+def _tilt(args: argparse.Namespace) -> tuple[float, float]:
+    return (0.0 if args.theta_x_rad is None else args.theta_x_rad,
+            0.0 if args.theta_y_rad is None else args.theta_y_rad)
+
+
+def thermal_tilt(args: argparse.Namespace) -> dict:
+    """The keywords of ``JournalBearing.thermal_equilibrium`` for the tilt options (none
+    without them; ``tilt=True``: the tilted film's outputs even at a zero tilt given)."""
+    if not wants_tilt(args):
+        return {}
+    tx, ty = _tilt(args)
+    return {"theta_x_rad": tx, "theta_y_rad": ty, "tilt": True}
+
+
+def thermal_tilt_record(r, rec: dict, hot: JournalBearing | None = None) -> None:
+    """The tilted thermal equilibrium ``r``'s tilt outputs into ``rec`` under the isothermal
+    tilted record's names (moments, edge film and its z, the 4×4 K, C at the frozen field);
+    with ``hot`` (the effective model's film, isoviscous at μ(T_eff)) the film's forces at
+    the tilted pose as ``force_n`` (the THD record, tilted or not, has none)."""
+    from rotordyn.bearings.tilt import tilted_forces
+
+    rec.update(journal_theta_x_rad=r.theta_x_rad, journal_theta_y_rad=r.theta_y_rad,
+               moment_n_m=np.asarray(r.moment_n_m).tolist(), h_min_m=r.h_min_m,
+               h_min_angle_deg=r.h_min_angle_deg, h_min_z_m=r.h_min_z_m,
+               coordinates=list(COORDINATES), **coefficient_record(r.K4, r.C4))
+    if hot is not None:
+        t = tilted_forces(hot, x_m=r.x_m, y_m=r.y_m, speed_hz=r.speed_hz,
+                          theta_x_rad=r.theta_x_rad, theta_y_rad=r.theta_y_rad)
+        rec["force_n"] = np.asarray(t.force_n).tolist()
+
+
+def print_thermal_tilt(r, rec: dict) -> int:
+    """The text lines of :func:`thermal_tilt_record`'s outputs."""
+    if "force_n" in rec:
+        print(f"force on journal: Fx = {rec['force_n'][0]:.6g} N, Fy = {rec['force_n'][1]:.6g} N")
+    _print_tilt(r.theta_x_rad, r.theta_y_rad, r.moment_n_m, r.h_min_m, r.h_min_angle_deg,
+                r.h_min_z_m, r.K4, r.C4, "at the thermal equilibrium, temperature frozen")
+    return 0
+
+
+def _print_tilt(tx, ty, moment, h_min, h_angle, h_z, K, C, where: str = "") -> None:
+    print(f"journal tilt relative to the bearing: theta_x = {tx:.6g} rad, theta_y = {ty:.6g} rad")
+    print(f"moment: Mx = {moment[0]:.6g} N m, My = {moment[1]:.6g} N m")
+    print(f"h_min = {h_min:.6g} m at {h_angle:.2f} deg, z = {h_z:.6g} m (mid-plane 0)")
+    tail = f" ({where})" if where else ""
+    print(f"K over (x, y, theta_x, theta_y) [N/m, N/rad, N m/m, N m/rad]{tail} =\n"
+          + np.array2string(np.asarray(K), precision=5))
+    print(f"C over (x, y, theta_x, theta_y) [N s/m, N s/rad, N m s/m, N m s/rad]{tail} =\n"
+          + np.array2string(np.asarray(C), precision=5))
+
+
+def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict) -> int:
+    """The tilted operating point of the isothermal film (``--load-n``: the misaligned
+    equilibrium first; a failed one is reported and not linearised, exit 1)."""
     from rotordyn.bearings.tilt import misaligned_equilibrium, tilted_coefficients, tilted_forces
     from rotordyn.cli.common import journal_pose, json_text
 
-    if args.speeds_hz is not None or thermal:
+    if args.speeds_hz is not None:
         raise InputError("--theta-x-rad/--theta-y-rad: a tilted journal is available at one "
-                         "operating point of the isothermal film, not with --speeds-hz or a "
-                         "thermal model (in a system: tilt = true with [thermal])")
-    tx = 0.0 if args.theta_x_rad is None else args.theta_x_rad
-    ty = 0.0 if args.theta_y_rad is None else args.theta_y_rad
+                         "operating point (--speed-hz), not in a coefficient table "
+                         "(--speeds-hz: the aligned film's)")
+    tx, ty = _tilt(args)
     rec.update(journal_theta_x_rad=tx, journal_theta_y_rad=ty)
     x, y, vx, vy, e = journal_pose(args, lambda load: misaligned_equilibrium(
         b, load_n=load, speed_hz=args.speed_hz, theta_x_rad=tx, theta_y_rad=ty))
@@ -71,15 +124,8 @@ def run_tilted(b: JournalBearing, args: argparse.Namespace, rec: dict, thermal: 
         e = rec["equilibrium"]
         print(f"misaligned equilibrium: x = {x:.6g} m, y = {y:.6g} m, eps (mid-plane) = "
               f"{e['eccentricity_ratio']:.4g}, attitude = {e['attitude_angle_deg']:.2f} deg")
-    print(f"journal tilt relative to the bearing: theta_x = {tx:.6g} rad, theta_y = {ty:.6g} rad")
-    print(f"force on journal: Fx = {t.force_n[0]:.6g} N, Fy = {t.force_n[1]:.6g} N; moment: "
-          f"Mx = {t.moment_n_m[0]:.6g} N m, My = {t.moment_n_m[1]:.6g} N m")
-    print(f"h_min = {t.h_min_m:.6g} m at {t.h_min_angle_deg:.2f} deg, z = {t.h_min_z_m:.6g} m "
-          "(mid-plane 0)")
-    print("K over (x, y, theta_x, theta_y) [N/m, N/rad, N m/m, N m/rad] =\n"
-          + np.array2string(np.asarray(K), precision=5))
-    print("C over (x, y, theta_x, theta_y) [N s/m, N s/rad, N m s/m, N m s/rad] =\n"
-          + np.array2string(np.asarray(C), precision=5))
+    print(f"force on journal: Fx = {t.force_n[0]:.6g} N, Fy = {t.force_n[1]:.6g} N")
+    _print_tilt(tx, ty, t.moment_n_m, t.h_min_m, t.h_min_angle_deg, t.h_min_z_m, K, C)
     return 0
 
 
@@ -104,4 +150,5 @@ def coefficient_record(K, C) -> dict:
             "c_4x4_units": [list(r) for r in _C_UNITS]}
 
 
-__all__ = ["add_tilt_arguments", "run_tilted", "wants_tilt"]
+__all__ = ["add_tilt_arguments", "print_thermal_tilt", "run_tilted", "thermal_tilt",
+           "thermal_tilt_record", "wants_tilt"]
