@@ -235,9 +235,11 @@ def test_plain_equals_the_system_at_the_journal_tilt_and_film_load(model):
     thermal equilibrium under the load its film carries, at the journal's tilt the system
     found, is the system's (two outer iterations to |ΔT| ≤ 1e-6 K apart): temperatures
     1e-5 K, position 1e-6 c, moments 1e-6 (observed 1e-7 K, 1e-9 c). (At +0.3 mrad the THD
-    NDE film has two fixed points — the inlet column's hand-over, cpp/src/thd.cpp — and the
-    two calls converge to different ones, 0.37 K apart, each an exact fixed point of the same
-    energy solve: docs/film-physics.md.)"""
+    NDE film has two fixed points and the two calls converge to different ones, 0.37 K apart,
+    each an exact fixed point of the same energy solve: one reformation node of the
+    Swift–Stieber zone is cavitated in one and full in the other, and its streamer fill jumps
+    from 0.646 to 1 — not the inlet's hand-over, which is the same in both: docs/film-physics.md,
+    "Not unique".)"""
     from rotordyn.analysis.assembly import assembled
 
     s = rotordyn.System.from_toml(MODELS / "compressor_plain_thermal.toml")
