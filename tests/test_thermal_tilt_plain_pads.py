@@ -310,3 +310,16 @@ def test_untilted_thermal_result_carries_its_minimum_film(model):
     assert u.h_min_m == pytest.approx(f.h_min_m, rel=1e-14)
     assert u.h_min_angle_deg == pytest.approx(f.h_min_angle_deg, abs=1e-9)
     assert 0.0 < u.h_min_m < PLAIN["clearance_m"]
+
+
+def test_tilt_argument_is_accepted_by_every_bearing_type():
+    """Review 2026-12-05: JournalBearing and a model's plain bearing took ``tilt=True``
+    (the tilted outputs at zero tilt), the tilting-pad and fixed-geometry bearings refused it
+    ("tilt: not an option"); they take it now, with the same meaning: at zero tilt the
+    result carries the 4×4 K, C, and ``tilt=None`` is the bearing's own field."""
+    pads = rotordyn.System.from_toml(MODELS / "compressor_tilting_pad.toml").bearings[0]
+    kw = dict(PKW, model="effective")
+    t = pads.thermal_equilibrium(**kw, tilt=True)
+    u = pads.thermal_equilibrium(**kw)
+    assert t.K4 is not None and t.K4.shape == (4, 4) and getattr(u, "K4", None) is None
+    np.testing.assert_allclose(t.K4[:2, :2], u.K, rtol=1e-6, atol=1e-6 * np.abs(u.K).max())

@@ -281,7 +281,8 @@ class FixedGeometryBearing:
                             journal_temperature_c: float | None = None,
                             bush_temperature_c: float | None = None, tol_k: float = 1e-6,
                             model: str = "thd", effective_factor: float = 0.5,
-                            theta_x_rad: float = 0.0, theta_y_rad: float = 0.0, **walls):
+                            theta_x_rad: float = 0.0, theta_y_rad: float = 0.0, tilt: bool | None = None,
+                            **walls):
         """Thermo-hydrodynamic equilibrium of the lobes under ``load_n`` (N) at ``speed_hz``
         (as :meth:`rotordyn.bearings.TiltingPadBearing.thermal_equilibrium`: per lobe the
         energy equation, each lobe's inlet groove mixing supply oil with the part
@@ -292,8 +293,8 @@ class FixedGeometryBearing:
 
         ``theta_x_rad``, ``theta_y_rad``: the journal's tilt relative to the bearing (rad; as
         :func:`rotordyn.bearings.tilt.misaligned_equilibrium`; a pose that closes a lobe's
-        film at an edge is an InputError naming them). With a tilt, or with ``tilt = True``,
-        the lobes' films carry it (:mod:`rotordyn.bearings.tilt_thermal`) and the result
+        film at an edge is an InputError naming them). With a tilt, or with ``tilt`` True
+        (None: the bearing's own field), the lobes' films carry it (:mod:`rotordyn.bearings.tilt_thermal`) and the result
         adds the moments, the edge film and K4, C4 (4×4 over x, y, θx, θy) at the frozen
         field. (``config_theta_x_rad``, ``config_theta_y_rad`` are the housing's misalignment
         in a system; standalone, give the journal's tilt here.) ``walls``: the THD film's heat
@@ -305,7 +306,8 @@ class FixedGeometryBearing:
                                  bush_htc_w_m2k=bush_htc_w_m2k,
                                  journal_temperature_c=journal_temperature_c,
                                  bush_temperature_c=bush_temperature_c, **walls)
-        if self.tilt or theta_x_rad != 0.0 or theta_y_rad != 0.0:
+        tilted = self.tilt if tilt is None else v.boolean("tilt", tilt)
+        if tilted or theta_x_rad != 0.0 or theta_y_rad != 0.0:
             from rotordyn.bearings.tilt_thermal import tilted_thermal_equilibrium
 
             return tilted_thermal_equilibrium(self, theta_x_rad=theta_x_rad,

@@ -348,7 +348,8 @@ class TiltingPadBearing:
                             bush_temperature_c: float | None = None, tol_k: float = 1e-6,
                             model: str = "thd", effective_factor: float = 0.5,
                             whirl_ratio: float | None = 1.0, theta_x_rad: float = 0.0,
-                            theta_y_rad: float = 0.0, **walls):
+                            theta_y_rad: float = 0.0, tilt: bool | None = None,
+                            **walls):
         """Thermo-hydrodynamic equilibrium under ``load_n`` (N) at ``speed_hz``: per pad the
         energy equation, μ(T) per node of ``oil`` (:class:`rotordyn.bearings.Oil`), the
         inlet of each pad mixing supply oil at ``supply_temperature_c`` °C with the part
@@ -374,8 +375,8 @@ class TiltingPadBearing:
 
         ``theta_x_rad``, ``theta_y_rad``: the journal's tilt relative to the bearing (rad; as
         :func:`rotordyn.bearings.tilt.misaligned_equilibrium`; a tilt closing a pad's film at
-        an edge is an InputError naming them). With a tilt, or with ``tilt = True``, the
-        pads' films carry it (:func:`rotordyn.bearings.tilt_thermal.
+        an edge is an InputError naming them). With a tilt, or with ``tilt`` True (None: the
+        bearing's own ``tilt`` field), the pads' films carry it (:func:`rotordyn.bearings.tilt_thermal.
         pad_tilted_thermal_equilibrium`) and the result adds the moments, the edge film and
         K4, C4 (4×4 over x, y, θx, θy) at the frozen fields."""
         if whirl_ratio is not None:
@@ -388,7 +389,8 @@ class TiltingPadBearing:
                                  journal_temperature_c=journal_temperature_c,
                                  bush_temperature_c=bush_temperature_c, **walls)
         tx, ty = v.finite("theta_x_rad", theta_x_rad), v.finite("theta_y_rad", theta_y_rad)
-        if self.tilt or tx != 0.0 or ty != 0.0:
+        tilted = self.tilt if tilt is None else v.boolean("tilt", tilt)
+        if tilted or tx != 0.0 or ty != 0.0:
             from rotordyn.bearings.tilt_thermal import pad_tilted_thermal_equilibrium
 
             return pad_tilted_thermal_equilibrium(self, theta_x_rad=tx, theta_y_rad=ty,
