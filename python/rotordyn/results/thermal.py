@@ -65,6 +65,12 @@ class SystemThermalResult:
     # film); NaN where the equilibrium failed
     h_min_m: np.ndarray | None = None
     h_min_z_m: np.ndarray | None = None
+    # a model with tilting films (tilt = true), per film: its bearing's journal rotations
+    # (rad, the system's coordinates as the equilibrium's columns of the same names) and the
+    # bearing's film moments on the journal (N·m; a tilting-pad bearing's whole moment on each
+    # pad's row); NaN for an untilted film and where the equilibrium failed; None (no columns)
+    # when no film tilts
+    tilt: dict | None = None
 
     def wall(self, name: str) -> np.ndarray:
         """One of the THD wall outputs (or the minimum film's) per film (NaN where there is
@@ -104,6 +110,7 @@ class SystemThermalResult:
             "h_min_m": self.wall("h_min_m"),
             "h_min_z_m": self.wall("h_min_z_m"),
             **{c: self.wall(c) for c in WALL_COLUMNS},
+            **(self.tilt or {}),
             "status": [self.status] * n,
             "message": [self.message] * n,
         })
