@@ -256,21 +256,21 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
            if eq.status in CONVERGED else np.full(len(rows), np.nan)
            for f, g in (("h_min_m", "h_min"), ("h_min_z_m", "h_min_z_m"))},
         wall_temperature_c=tuple(np.array(s.wall_temperature_c) for s in st) if thd else (),
-        tilt=_tilt_columns(eq, r, [bcs[i] for i, _ in rows]))
+        tilt=_tilt_columns(asm, eq, r, a, [bcs[i] for i, _ in rows]))
 
 
-def _tilt_columns(eq, r: np.ndarray, film_bcs: list) -> dict | None:
+def _tilt_columns(asm, eq, r: np.ndarray, a: np.ndarray, film_bcs: list) -> dict | None:
     """Per film (its bearing ``film_bcs[k]``): the journal rotations at the bearing and the
-    bearing's film moments at the thermal equilibrium ``eq`` (system coordinates ``r``);
-    NaN for an untilted film and where the equilibrium failed; None when no film tilts."""
+    bearing's film moments at the thermal equilibrium ``eq`` (system coordinates ``r``, the
+    configuration ``a``), as the isothermal equilibrium's ``tilt`` entries
+    (:func:`rotordyn.analysis.equilibrium.tilt_outputs`); NaN for an untilted film and where
+    the equilibrium failed; None when no film tilts."""
     if not any(bc.rot for bc in film_bcs):
         return None
-    ok = eq.status in CONVERGED
-    H = np.asarray(eq.film_force, dtype=np.float64)
+    from rotordyn.analysis.equilibrium import tilt_outputs
 
-    def col(src, q):
-        return np.array([float(src[bc.rot[q]]) if ok and bc.rot and src.size else np.nan
-                         for bc in film_bcs])
-
-    return {"journal_theta_x_rad": col(r, 0), "journal_theta_y_rad": col(r, 1),
-            "film_moment_x_n_m": col(H, 0), "film_moment_y_n_m": col(H, 1)}
+    t = (tilt_outputs(asm, r, a, np.asarray(eq.h_min_z_m), np.asarray(eq.h_min),
+                      np.asarray(eq.film_force)) if eq.status in CONVERGED else {})
+    return {k: np.array([t.get(bc.index, {}).get(k, np.nan) for bc in film_bcs], dtype=float)
+            for k in ("journal_theta_x_rad", "journal_theta_y_rad", "film_moment_x_n_m",
+                      "film_moment_y_n_m")}
