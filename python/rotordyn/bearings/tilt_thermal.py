@@ -84,16 +84,21 @@ def tilted_thermal_equilibrium(bearing, *, theta_x_rad: float, theta_y_rad: floa
 
 
 
-def _four_solver(films, K=None, M=None):
-    """A SystemSolver over the four journal coordinates (and any pad coordinates after them)
-    of ``films``, with the structural K, M of the pads (zero for plain films and lobes)."""
-    n = 4 if K is None else K.shape[0]
+def _film_model(films, n: int, K=None, M=None, Q=None):
+    """A SystemModel of ``films`` over n coordinates: structural K, M (zero unless given,
+    e.g. the pads'), no damping or gyroscopics, the load Q (N; zero unless given)."""
     z = np.zeros((n, n))
     model = _core.SystemModel()
     model.M, model.K, model.C, model.G = (z if M is None else M), (z if K is None else K), z, z
-    model.Q, model.chamber = np.zeros(n), np.zeros(n)
+    model.Q, model.chamber = (np.zeros(n) if Q is None else Q), np.zeros(n)
     model.films = list(films)
-    return _core.SystemSolver(model)
+    return model
+
+
+def _four_solver(films, K=None, M=None):
+    """A SystemSolver over the four journal coordinates (and any pad coordinates after them)
+    of ``films``, with the structural K, M of the pads (zero for plain films and lobes)."""
+    return _core.SystemSolver(_film_model(films, 4 if K is None else K.shape[0], K, M))
 
 
 def plain_tilted_thermal_equilibrium(bearing, *, theta_x_rad: float, theta_y_rad: float, oil,
@@ -120,11 +125,7 @@ def plain_tilted_thermal_equilibrium(bearing, *, theta_x_rad: float, theta_y_rad
     lx, ly = float(load[0]), float(load[1])
     w = TWO_PI * v.speed("speed_hz", speed_hz)
     film = imposed_tilt(tilt_coupling(bearing, [0, 1, 2, 3], bearing_name(bearing)), tx, ty)
-    model = _core.SystemModel()
-    z2 = np.zeros((2, 2))
-    model.M, model.K, model.C, model.G = z2, z2, z2, z2
-    model.Q, model.chamber = np.array([lx, ly]), np.zeros(2)
-    model.films = [film]
+    model = _film_model([film], 2, Q=np.array([lx, ly]))
     thd = isinstance(opts, _core.ThdOptions)
     tf = _core.ThermalFilm()
     tf.film, tf.oil, tf.thd = 0, oil.to_core(), thd
