@@ -154,15 +154,7 @@ def test_report_prints_the_coupling_blocks():
                                    y_m=e.journal_y_m[i], speed_hz=150.0,
                                    theta_x_rad=e.tilt[i]["journal_theta_x_rad"],
                                    theta_y_rad=e.tilt[i]["journal_theta_y_rad"])
-        q = ("x", "y", "tx", "ty")
-        for kc, M in (("k", K), ("c", C)):
-            for a in range(4):
-                for c in range(4):
-                    if a < 2 and c < 2:
-                        continue
-                    col = next(n for n in TILT_COLUMNS if n.startswith(f"{kc}{q[a]}{q[c]}_"))
-                    assert row[col] == pytest.approx(M[a, c], rel=1e-6,
-                                                     abs=1e-6 * np.abs(M[2:, 2:]).max()), col
+        _assert_coupling(row, K, C, TILT_COLUMNS, 1e-6, lambda M: np.abs(M[2:, 2:]).max())
         assert row["ktxtx_n_m_per_rad"] > 0 and row["cxtx_n_s_per_rad"] != 0
     text = "\n".join(coefficient_text_lines(fr))
     assert "tilting films: stiffness coupling" in text and "kθxθx (kN·m/rad)" in text
@@ -172,6 +164,19 @@ def test_report_prints_the_coupling_blocks():
     assert not set(TILT_COLUMNS) & set(fu)
     tu = "\n".join(coefficient_text_lines(fu))
     assert "tilting" not in tu and "kxx (MN/m)" in tu
+
+
+def _assert_coupling(row, K, C, columns, rel, scale):
+    """The coupling entries (outside the x, y block) of a coefficient row against K, C
+    (4×4 over x, y, θx, θy): relative ``rel``, absolute ``rel·scale(M)``."""
+    q = ("x", "y", "tx", "ty")
+    for kc, M in (("k", K), ("c", C)):
+        for a in range(4):
+            for c in range(4):
+                if a < 2 and c < 2:
+                    continue
+                col = next(n for n in columns if n.startswith(f"{kc}{q[a]}{q[c]}_"))
+                assert row[col] == pytest.approx(M[a, c], rel=rel, abs=rel * scale(M)), col
 
 
 def test_tilting_pad_coupling_blocks_are_the_standalone_pads():
@@ -188,7 +193,6 @@ def test_tilting_pad_coupling_blocks_are_the_standalone_pads():
     eqs: list = []
     fr = bearing_coefficients(s, [150.0], equilibria=eqs)
     e = eqs[0][2]
-    q = ("x", "y", "tx", "ty")
     for i, b in enumerate(s.bearings):
         K, C = tilted_coefficients(b, x_m=e.journal_x_m[i], y_m=e.journal_y_m[i],
                                    speed_hz=150.0,
@@ -198,14 +202,7 @@ def test_tilting_pad_coupling_blocks_are_the_standalone_pads():
         np.testing.assert_allclose(
             row[["kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m"]].to_numpy(float),
             K[:2, :2].ravel(), rtol=1e-9)
-        for kc, M in (("k", K), ("c", C)):
-            for a in range(4):
-                for c in range(4):
-                    if a < 2 and c < 2:
-                        continue
-                    col = next(n for n in TILT_COLUMNS if n.startswith(f"{kc}{q[a]}{q[c]}_"))
-                    assert row[col] == pytest.approx(M[a, c], rel=1e-9,
-                                                     abs=1e-9 * np.abs(M).max()), col
+        _assert_coupling(row, K, C, TILT_COLUMNS, 1e-9, lambda M: np.abs(M).max())
 
 
 def test_thermal_stability_rows_carry_the_tilt(tmp_path):
