@@ -56,3 +56,30 @@ def test_duplicate_bearing_names_are_refused():
     text = PUMP.read_text().replace('name = "DE"', 'name = "NDE"')
     with pytest.raises(rd.InputError, match=r"bearing\[1\]\.name"):
         rd.System.from_toml(text, is_text=True)
+
+
+TURBINE = Path(__file__).parent / "data" / "models" / "turbine_two_axial_groove.toml"
+
+
+def test_overdamped_crossings_are_not_critical_speeds():
+    """A steam-turbine rotor (4.3 t) on turbulent two-axial-groove bearings: at 3–5 Hz its
+    heavy bearing modes cross 1× with δ ≈ 10–12 (damping ratio ≈ 0.85, no resonance); the
+    report listed them as its first three critical speeds. They are named below the table
+    instead; the 25 Hz crossing (δ ≈ 1.8, a resonance) stays a critical speed."""
+    from rotordyn.report.criteria import RESONANT_LOG_DEC
+    from rotordyn.report.sections import _crossings, critical_speed_table, not_resonance_note
+
+    s = rd.System.from_toml(TURBINE)
+    c = rd.campbell(s, np.concatenate([np.linspace(1.0, 8.0, 8), np.linspace(20.0, 30.0, 5)]))
+    cross, ld = _crossings(c)
+    flat = cross[ld >= RESONANT_LOG_DEC]
+    keep = cross[ld < RESONANT_LOG_DEC]
+    assert flat.size >= 1 and keep.size >= 1  # the premise, read off the Campbell diagram
+    assert np.all(flat < 6.0) and np.any((keep > 20.0) & (keep < 30.0))
+    table = critical_speed_table(c)
+    np.testing.assert_allclose(np.sort(table["speed_hz"].to_numpy()), np.sort(keep))
+    listed = table.attrs["overdamped_crossings"]
+    np.testing.assert_allclose(sorted(f for f, _ in listed), np.sort(flat))
+    note = not_resonance_note(table)
+    assert "1× crossings not counted" in note
+    assert all(f"{f:.4g} Hz" in note for f in flat)

@@ -370,7 +370,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                     f"peak's half-power band or within {100 * MERGE_RTOL:g} % of it). A heavily "
                     "damped mode may never cross 1× and still give a response peak "
                     "(docs/api-criteria.md).</p>" if len(crit) else
-                    "<p>No critical speed in the speed range: no forward 1× crossing in the "
+                    "<p>No critical speed in the speed range: no resonant forward 1× crossing in the "
                     "Campbell diagram and no resonance peak in the unbalance response.</p>")
                  + (f"<p>{html.escape(not_resonance_note(crit))}</p>"
                     if not_resonance_note(crit) else ""))

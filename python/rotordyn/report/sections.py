@@ -110,6 +110,10 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
     without any damped forward mode of ``campbell`` inside its half-power band at that speed
     is two modes' responses interfering, not a resonance: it is left out and listed in
     ``attrs["not_resonances"]`` ((speed Hz, stations) pairs, :func:`not_resonance_note`).
+    A crossing without a response peak whose mode has no resonance there (δ ≥ 2π, damping
+    ratio ≥ 1/√2, the rule of :data:`~rotordyn.report.criteria.RESONANT_LOG_DEC`: a heavily
+    damped bearing mode at low speed) is not a critical speed either: it is left out and listed
+    in ``attrs["overdamped_crossings"]`` ((speed Hz, δ) pairs).
 
     Columns :data:`CRITICAL_COLUMNS`: ``speed_hz`` (Hz: the crossing's where there is one, else
     the peak's), ``source`` (:data:`SOURCE_CAMPBELL`, :data:`SOURCE_PEAK` or both joined by
@@ -139,8 +143,11 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
                      "stations": ", ".join(str(x) for x in g["stations"]),
                      "amplification_factor": g["amplification_factor"],
                      "af_kind": g["af_kind"]})
+    overdamped = []
     for i in range(cross.size):
-        if i not in used:
+        if i not in used and cross_ld[i] >= RESONANT_LOG_DEC:
+            overdamped.append((float(cross[i]), float(cross_ld[i])))
+        elif i not in used:
             rows.append({"speed_hz": cross[i], "source": SOURCE_CAMPBELL, "campbell_hz": cross[i],
                          "log_dec": cross_ld[i], "peak_hz": np.nan, "stations": "", "amplification_factor": np.nan,
                          "af_kind": ""})
@@ -148,6 +155,7 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
                                                                        ignore_index=True)
     df.attrs["not_resonances"] = [(g["peak_hz"], ", ".join(str(x) for x in g["stations"]))
                                   for g in dropped]
+    df.attrs["overdamped_crossings"] = overdamped
     return df
 
 
@@ -180,13 +188,21 @@ def _mode_in_band(campbell, group: dict) -> bool:
 
 
 def not_resonance_note(table) -> str:
-    """The response peaks :func:`critical_speed_table` did not count (empty when none)."""
+    """The response peaks and the Campbell crossings :func:`critical_speed_table` did not
+    count (empty when none)."""
     gone = table.attrs.get("not_resonances", [])
-    if not gone:
-        return ""
-    return ("Response peaks not counted as critical speeds (no damped forward mode within "
-            "their half-power band at that speed: two modes' responses interfering): "
-            + "; ".join(f"{f:.4g} Hz at station(s) {st}" for f, st in gone) + ".")
+    flat = table.attrs.get("overdamped_crossings", [])
+    out = []
+    if gone:
+        out.append("Response peaks not counted as critical speeds (no damped forward mode "
+                   "within their half-power band at that speed: two modes' responses "
+                   "interfering): " + "; ".join(f"{f:.4g} Hz at station(s) {st}"
+                                                for f, st in gone) + ".")
+    if flat:
+        out.append("1× crossings not counted as critical speeds (the mode has no resonance "
+                   f"there: δ ≥ 2π, damping ratio ≥ 1/√2; no response peak): "
+                   + "; ".join(f"{f:.4g} Hz (δ = {ld:.3g})" for f, ld in flat) + ".")
+    return " ".join(out)
 
 
 CRITICAL_HEADER = ("critical speed (Hz)", "(rpm)", "source", "1× crossing (Hz)",
@@ -379,8 +395,10 @@ def thermal_critical_text_lines(crit, note: str) -> list[str]:
         return ["", f"critical speeds on thermal films: {note}"] if note else []
     lines = ["", f"critical speeds on thermal films ({note}; critical_speeds_thermal.csv)"]
     if len(crit):
-        return lines + _text_table(CRITICAL_HEADER, critical_rows(crit))
-    return lines + ["  none: no forward 1× crossing and no response peak in the range"]
+        lines += _text_table(CRITICAL_HEADER, critical_rows(crit))
+    else:
+        lines.append("  none: no resonant forward 1× crossing and no response peak in the range")
+    return lines + (["  " + not_resonance_note(crit)] if not_resonance_note(crit) else [])
 
 
 def critical_text_lines(crit, shapes, rng, chamber_pressure_pa: float, active: bool,
@@ -396,7 +414,7 @@ def critical_text_lines(crit, shapes, rng, chamber_pressure_pa: float, active: b
     if len(crit):
         lines += _text_table(CRITICAL_HEADER, critical_rows(crit))
     else:
-        lines.append("  none: no forward 1× crossing and no response peak in the range")
+        lines.append("  none: no resonant forward 1× crossing and no response peak in the range")
     if not_resonance_note(crit):
         lines.append("  " + not_resonance_note(crit))
     for k, m in enumerate(shapes, start=1):
