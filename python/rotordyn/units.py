@@ -29,16 +29,26 @@ def rad_s_to_rpm(w_rad_s):
 
 # The suffix vocabulary of column names and fields (longest first): the unit each names.
 SUFFIX_UNITS = (("_n_s_per_m", "N·s/m"), ("_n_per_m", "N/m"), ("_n_m_per_rad", "N·m/rad"), ("_nm_per_rad", "N·m/rad"),
-                ("_kg_m3", "kg/m³"), ("_kg_m2", "kg·m²"), ("_1_per_s", "1/s"),
+                ("_j_per_kg_k", "J/(kg·K)"), ("_w_per_m_k", "W/(m·K)"), ("_w_m2k", "W/(m²·K)"),
+                ("_kg_m3", "kg/m³"), ("_kg_m2", "kg·m²"), ("_1_per_s", "1/s"), ("_mm2_s", "mm²/s"),
                 ("_pa_s", "Pa·s"), ("_m3_s", "m³/s"), ("_rad_s", "rad/s"), ("_hz", "Hz"),
                 ("_pa", "Pa"), ("_kg", "kg"), ("_deg", "deg"), ("_rad", "rad"), ("_n_m", "N·m"),
-                ("_m_s", "m/s"), ("_m", "m"), ("_s", "s"), ("_n", "N"), ("_w", "W"))
+                ("_m_s", "m/s"), ("_m", "m"), ("_s", "s"), ("_n", "N"), ("_w", "W"),
+                # ratios to the clearance c (x_over_c, start_amplitude_c) before degrees Celsius
+                ("_over_c", "1"), ("amplitude_c", "1"), ("_c", "°C"), ("_k", "K"))
+
+
+def split_unit(name: str) -> tuple[str, str]:
+    """(stem, unit) of a column or field name: ``thermal.supply_temperature_c`` →
+    (``thermal.supply_temperature``, ``°C``); a name without a unit suffix is its own stem, unit
+    ``"1"``."""
+    for suffix, unit in SUFFIX_UNITS:
+        if name.endswith(suffix):
+            return (name[: -len(suffix)], unit) if unit != "1" else (name, unit)
+    return name, "1"
 
 
 def unit_of(name: str) -> str:
     """The unit a column or field name carries in its suffix (``bearing[0].clearance_m`` →
     ``m``); ``"1"`` for a name without a unit suffix (dimensionless)."""
-    for suffix, unit in SUFFIX_UNITS:
-        if name.endswith(suffix):
-            return unit
-    return "1"
+    return split_unit(name)[1]

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from rotordyn.plot._style import COLUMN_IN, new_axes, paper_style, require
-from rotordyn.units import SUFFIX_UNITS, unit_of
+from rotordyn.units import split_unit, unit_of
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -31,8 +31,7 @@ def axis_short(name: str) -> tuple[str, str]:
     """(symbol, unit) of an axis as the figures write it."""
     if name in AXIS_SHORT:
         return AXIS_SHORT[name]
-    unit = unit_of(name)
-    stem = name[: -len(next(s for s, u in SUFFIX_UNITS if u == unit))] if unit != "1" else name
+    stem, unit = split_unit(name)
     return stem, _DISPLAY.get(unit, (unit, 1.0))[0]
 
 
@@ -79,10 +78,13 @@ def select(df: pd.DataFrame, where: dict | None, what: str) -> pd.DataFrame:
 
 @paper_style
 def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, title=None,
-                       limits=None, colorbar=True, legend=True):
+                       limits=None, colorbar=True, legend=True, boundary_field=None):
     """Map of max Re λ (1/s) on the grid ``x`` (n_x,) × ``y`` (n_y,), ``max_real`` (n_x, n_y),
     in the inputs' own units (``xname``/``yname`` are column names such as
     ``chamber_pressure_pa``). ``failed``: (k, 2) points without a result (marked ×).
+    ``boundary_field`` (n_x, n_y), 1/s: the field whose zero contour is drawn as the boundary
+    (default ``max_real``; :func:`critical_field`: the same sign at every node, interpolated
+    on the modes that go unstable).
     ``limits`` (lo, hi) 1/s: the colour scale (default: this map's range), so that small
     multiples share one; ``colorbar``/``legend`` False leave them to the caller (who gets the
     mappable as ``ax._rotordyn_mesh`` and the legend entries as ``ax._rotordyn_handles``)."""
@@ -107,13 +109,17 @@ def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, ti
     if colorbar:
         cb = ax.figure.colorbar(m, ax=ax, pad=0.02)
         cb.set_label(COLOR_LABEL)
+        two_slope_ticks(cb, lo, hi)
     # this map's own range decides its boundary
     lo, hi = (np.nanmin(Z), np.nanmax(Z)) if np.isfinite(Z).any() else (0.0, 0.0)
     handles = []
     if lo < 0 < hi and np.isfinite(Z).sum() > 3:
-        ax.contourf(X, Y, np.nan_to_num(Z, nan=-np.inf), levels=[0.0, np.inf], colors="none",
+        B = Z if boundary_field is None else np.asarray(boundary_field, dtype=float)
+        require(B.shape == Z.shape, f"stability-map: boundary_field: expected shape {Z.shape}, "
+                                    f"got {B.shape}")
+        ax.contourf(X, Y, np.nan_to_num(B, nan=-np.inf), levels=[0.0, np.inf], colors="none",
                     hatches=["////"])
-        ax.contour(X, Y, Z, levels=[0.0], colors="k", linewidths=1.8)
+        ax.contour(X, Y, B, levels=[0.0], colors="k", linewidths=1.8)
         handles.append(Line2D([], [], color="k", lw=1.8, label="stability boundary, Re λ = 0"))
         handles.append(Patch(facecolor="none", edgecolor="k", hatch="////",
                              label="unstable side (Re λ > 0)"))
@@ -140,8 +146,45 @@ def stability_map_grid(x, y, max_real, *, xname, yname, ax=None, failed=None, ti
 COLOR_LABEL = "largest real part of the eigenvalues, max Re λ (1/s)"
 
 
+def two_slope_ticks(cb, lo: float, hi: float) -> None:
+    """Ticks on both halves of a colour bar centred on 0 (a TwoSlopeNorm squeezes the smaller
+    half, where the default locator left no tick: -0.02 against +17 1/s showed only 0)."""
+    from matplotlib.ticker import MaxNLocator
+
+    loc = MaxNLocator(nbins=3)
+    neg = [t for t in loc.tick_values(lo, 0.0) if lo <= t < 0] if lo < 0 else []
+    pos = [t for t in loc.tick_values(0.0, hi) if 0 < t <= hi] if hi > 0 else []
+    if not neg and lo < 0:
+        neg = [lo]
+    if not pos and hi > 0:
+        pos = [hi]
+    cb.set_ticks(neg + [0.0] + pos)
+    cb.ax.yaxis.set_major_formatter("{x:.3g}")
+
+
+def critical_field(d: pd.DataFrame, axes: list[str], xs, ys) -> np.ndarray | None:
+    """The field whose zero contour is the boundary (n_x, n_y), 1/s: at each point the largest
+    Re λ among the tracked modes (``mode_id``) that are unstable somewhere in ``d`` (the rows
+    with a result), else max Re λ. Its sign equals max Re λ's at every point (a point with an
+    unstable mode has that mode in the set; a stable point has every Re λ < 0), but between
+    points it follows the modes that cross: max Re λ of a rotor without material damping is a
+    bystander mode's -0.01 1/s on the whole stable side, and its linear zero hugged the last
+    stable point (a turbine on a 10 Hz grid: 60.01 Hz drawn for a threshold at 61.58 Hz, now 61.30). None without ids."""
+    if "mode_id" not in d or d["mode_id"].isna().any() or d.empty:
+        return None
+    crit = np.unique(d.loc[d["eig_real_1_per_s"] > 0, "mode_id"].to_numpy())
+    if crit.size == 0:
+        return None
+    g = (d[d["mode_id"].isin(crit)].groupby(axes)["eig_real_1_per_s"].max().unstack()
+         .reindex(index=xs, columns=ys))
+    m = d.groupby(axes)["eig_real_1_per_s"].max().unstack().reindex(index=xs, columns=ys)
+    return np.where(np.isfinite(g.to_numpy(dtype=float)), g.to_numpy(dtype=float),
+                    m.to_numpy(dtype=float))
+
+
 def _map_arrays(df: pd.DataFrame, axes: list[str], rotor_only: bool):
-    """(x, y, max Re λ (n_x, n_y), failed points (k, 2)) of a stability dataset over two axes."""
+    """(x, y, max Re λ (n_x, n_y), failed points (k, 2), boundary field (n_x, n_y) or None) of
+    a stability dataset over two axes."""
     d = df[df["status"] == "ok"]
     if rotor_only and "kind" in d:
         d = d[d["kind"] == "rotor"]
@@ -149,7 +192,7 @@ def _map_arrays(df: pd.DataFrame, axes: list[str], rotor_only: bool):
     g = d.groupby(axes)["eig_real_1_per_s"].max().unstack().reindex(index=xs, columns=ys)
     pts = df.groupby(axes)["status"].apply(lambda s: (s != "ok").all())
     failed = np.array([k for k, bad in pts.items() if bad], dtype=float).reshape(-1, 2)
-    return xs, ys, g.to_numpy(dtype=float), failed
+    return xs, ys, g.to_numpy(dtype=float), failed, critical_field(d, axes, xs, ys)
 
 
 def stability_map(df: pd.DataFrame, ax=None, rotor_only: bool = True, where=None,
@@ -170,8 +213,9 @@ def stability_map(df: pd.DataFrame, ax=None, rotor_only: bool = True, where=None
                                                    "--facet AXIS)" if len(axes) > 2 else ""))
     require("eig_real_1_per_s" in df, "stability-map: the dataset has no eigenvalues "
                                       "(eig_real_1_per_s); run a stability sweep")
-    x, y, z, failed = _map_arrays(df, axes, rotor_only)
-    return stability_map_grid(x, y, z, xname=axes[0], yname=axes[1], ax=ax, failed=failed)
+    x, y, z, failed, b = _map_arrays(df, axes, rotor_only)
+    return stability_map_grid(x, y, z, xname=axes[0], yname=axes[1], ax=ax, failed=failed,
+                              boundary_field=b)
 
 
 @paper_style
@@ -209,8 +253,9 @@ def stability_map_facets(df: pd.DataFrame, facet: str, rotor_only: bool = True, 
     sym, unit = axis_short(facet)
     k = axis_scale(facet)
     kinds = set()
-    for a, (v, x, y, z, failed) in zip(grid.flat, panels):
+    for a, (v, x, y, z, failed, b) in zip(grid.flat, panels):
         stability_map_grid(x, y, z, xname=rest[0], yname=rest[1], ax=a, failed=failed,
+                           boundary_field=b,
                            limits=(lo, hi), colorbar=False, legend=False,
                            title=f"{sym} = {v * k:.4g}" + (f" {unit}" if unit != "1" else ""))
         kinds |= {h.get_label() for h in a._rotordyn_handles}
@@ -220,6 +265,7 @@ def stability_map_facets(df: pd.DataFrame, facet: str, rotor_only: bool = True, 
     sm = plt.cm.ScalarMappable(norm=norm, cmap="RdBu_r")
     cb = fig.colorbar(sm, ax=[a for a in grid.flat[:n]], pad=0.02, shrink=0.9)
     cb.set_label(COLOR_LABEL)
+    two_slope_ticks(cb, min(lo, -1e-9), max(hi, 1e-9))
     handles = [Line2D([], [], color="k", lw=1.8, label="stability boundary, Re λ = 0"),
                Patch(facecolor="none", edgecolor="k", hatch="////",
                      label="unstable side (Re λ > 0)")]
