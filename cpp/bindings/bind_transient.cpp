@@ -17,6 +17,7 @@ void bind_transient(py::module_& m) {
       .def_readwrite("max_steps", &CvodeOptions::max_steps)
       .def_readwrite("max_step", &CvodeOptions::max_step)
       .def_readwrite("stability_limit_detection", &CvodeOptions::stability_limit_detection)
+      .def_readwrite("max_order", &CvodeOptions::max_order)
       .def_readwrite("analytic_jacobian", &CvodeOptions::analytic_jacobian)
       .def_readwrite("atol_pressure", &CvodeOptions::atol_pressure)
       .def_readwrite("atol_controller", &CvodeOptions::atol_controller)

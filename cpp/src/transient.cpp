@@ -539,6 +539,8 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   require(opt.max_steps > 0, "cvode options: max_steps must be positive");
   require(opt.rub_fraction >= 0 && opt.rub_fraction < 1,
           "rub_fraction: expected a value in [0, 1), got " + std::to_string(opt.rub_fraction));
+  require(opt.max_order >= 1 && opt.max_order <= 5,
+          "max_order: expected an integer in [1, 5], got " + std::to_string(opt.max_order));
   const Eigen::Index nt = in.t_out.size();
   const double t_end = in.t_out(nt - 1);
   validate_operation(in.speed, in.pressure, in.actuator, in.controller, n, t_end);
@@ -706,6 +708,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   if (opt.max_step > 0) check(CVodeSetMaxStep(mem, opt.max_step), "CVodeSetMaxStep");
   if (opt.stability_limit_detection)
     check(CVodeSetStabLimDet(mem, SUNTRUE), "CVodeSetStabLimDet");
+  if (opt.max_order < 5) check(CVodeSetMaxOrd(mem, opt.max_order), "CVodeSetMaxOrd");
   check(CVodeSetStopTime(mem, t_end), "CVodeSetStopTime");
   if (c.rate_switched) {
     check(CVodeRootInit(mem, 2, rate_roots), "CVodeRootInit");

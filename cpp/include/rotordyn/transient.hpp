@@ -29,6 +29,8 @@ struct CvodeOptions {
   /// repeated error-test failures and small steps. Limit cycle of the rig: -21 % right-hand
   /// sides at equal tolerance (docs/performance.md).
   bool stability_limit_detection = true;
+  /// Highest BDF order (CVodeSetMaxOrd, 1..5).
+  int max_order = 5;
   double atol_pressure = 1.0;     ///< Pa (actuator pressure state; its rate state: × ω_n)
   double atol_controller = 1e-9;  ///< controller states (units of the controller)
   /// The run stops with status "rub" once a film's minimum thickness falls below

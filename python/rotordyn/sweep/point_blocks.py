@@ -170,7 +170,8 @@ def waterfall_blocks(job, variants, chunk_id, pids, asms):
         return transient(asm.system, revs / f, f, pc, p.get("config_ay_m"), r0=r0,
                          unbalances=ub, n_out=revs * spr + 1,
                          rtol=float(opts.get("rtol", 1e-6)),
-                         rub_fraction=float(opts.get("rub_fraction", 1e-3)))
+                         rub_fraction=float(opts.get("rub_fraction", 1e-3)),
+                         bdf_max_order=int(opts.get("bdf_max_order", 5)))
 
     for k, asm, opts, f, tr in _transients(point_list(job, variants, pids, asms), op,
                                            integrate, blocks):
@@ -239,7 +240,8 @@ def runup_blocks(job, variants, chunk_id, pids, asms):
                          speed=SpeedProfile.ramp(f0, f1, rate), r0=r0,
                          unbalances=[tuple(u) for u in opts["unbalances"]],
                          n_out=int(revs * spr) + 1, rtol=float(opts.get("rtol", 1e-6)),
-                         rub_fraction=float(opts.get("rub_fraction", 1e-3)))
+                         rub_fraction=float(opts.get("rub_fraction", 1e-3)),
+                         bdf_max_order=int(opts.get("bdf_max_order", 5)))
 
     for k, asm, opts, _, tr in _transients(point_list(job, variants, pids, asms), op,
                                            integrate, blocks):

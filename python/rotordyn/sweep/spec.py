@@ -147,11 +147,13 @@ OPTIONS = {
                   "samples_per_revolution": _opt_int(8, 4096),
                   "max_harmonic": _opt_range(0.0, 100.0),
                   "max_frequency_hz": _opt_range(0.0, 1e6), "rtol": _opt_range(0.0, 1e-2),
-                  "rub_fraction": _opt_range(0.0, 0.999, lo_open=False)},
+                  "rub_fraction": _opt_range(0.0, 0.999, lo_open=False),
+                  "bdf_max_order": _opt_int(1, 5)},
     "run-up": {"unbalances": _opt_unbalances, "start_hz": _opt_range(0.0, 1e5),
                "stop_hz": _opt_range(0.0, 1e5), "rate_hz_per_s": _opt_range(0.0, 1e6),
                "samples_per_revolution": _opt_int(8, 4096), "rtol": _opt_range(0.0, 1e-2),
-               "rub_fraction": _opt_range(0.0, 0.999, lo_open=False)},
+               "rub_fraction": _opt_range(0.0, 0.999, lo_open=False),
+               "bdf_max_order": _opt_int(1, 5)},
 }
 OPTIONS["hopf"] = {**OPTIONS["threshold"], "fd_step": _opt_range(0.0, 0.5),
                    # l1 again on every film grid refined twice (rotordyn.hopf's grid_check)
