@@ -110,10 +110,13 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   out.load_scale = std::max({inf_norm(model_.Q), inf_norm(Ka), inf_norm(pc * model_.chamber),
                              1e-12});
   Eigen::VectorXd r = r0.size() ? r0 : zero;
-  if (!pads_.empty()) {
-    // With tilting pads the films carry force even without a load (preloaded pads): the
-    // residual scale is at least 1e-3 of the largest film's Sommerfeld load μ|Ω s| R L (R/C)²,
-    // so an unloaded bearing (centred journal) has a reachable tolerance.
+  {
+    // The residual scale is at least 1e-3 of the largest film's Sommerfeld load
+    // μ|Ω s| R L (R/C)², so an unloaded system has a reachable tolerance: preloaded tilting
+    // pads carry force without a load, and a rotor without gravity (a vertical machine) has
+    // only the films' round-off at its centred journals (a two-axial-groove bearing with
+    // supply pressure: 2e-13 N against a scale of 1e-12 N failed its line search). A loaded
+    // system's scale (its weight) is far above this floor and unchanged.
     double fs = 0.0;
     for (const FilmCoupling& f : model_.films) {
       const double R = 0.5 * f.geometry.diameter_m, C = f.geometry.clearance_m;

@@ -402,7 +402,8 @@ def _cmd_stability(args) -> int:
                          | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])},
                          "thermal": _thermal_json(st.thermal)}))
     else:
-        print(table_text(df.iloc[keep]))
+        if len(df):  # a failed equilibrium has no modes: its status line below, no empty table
+            print(table_text(df.iloc[keep]))
         if len(keep) < len(df):
             print(f"({len(keep)} of {len(df)} modes shown; --n-modes N or --max-freq-hz HZ for "
                   "others; the least damped mode and the verdict cover all)", file=sys.stderr)

@@ -205,6 +205,8 @@ def table_text(df) -> str:
 
     from rotordyn.units import unit_of
 
+    if df.empty:  # never pandas' "Empty DataFrame / Columns: [...]" dump
+        return "(no rows)"
     out = df.copy()
     for c in list(out.columns):
         # a length (suffix _m alone: not _n_m, N·m)
