@@ -83,3 +83,7 @@ def test_overdamped_crossings_are_not_critical_speeds():
     note = not_resonance_note(table)
     assert "1× crossings not counted" in note
     assert all(f"{f:.4g} Hz" in note for f in flat)
+    # the Campbell result's own table flags them, and its figure draws them apart
+    cs = c.critical_speeds()
+    np.testing.assert_allclose(np.sort(cs.loc[~cs["resonant"], "speed_hz"]), np.sort(flat))
+    assert f"{keep[0]:.4g}" in repr(c) and f"{flat[0]:.4g}" not in repr(c)

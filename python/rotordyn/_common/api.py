@@ -11,6 +11,13 @@ from __future__ import annotations
 
 import numpy as np
 
+RESONANT_ZETA = 1.0 / np.sqrt(2.0)
+"""A root damped beyond this damping ratio has no resonance peak (the response of a single
+mode |H(ω)| peaks only for ζ < 1/√2); API 617 Level I, the report and the Campbell critical
+speeds use it to tell a mode with a resonance from an overdamped root."""
+RESONANT_LOG_DEC = 2.0 * np.pi * RESONANT_ZETA / np.sqrt(1.0 - RESONANT_ZETA ** 2)
+"""The log decrement of :data:`RESONANT_ZETA`: δ = 2π."""
+
 API_CRITICALLY_DAMPED_AF = 2.5
 """API 684 (2nd ed., §2.8.2; API 617 §2.6.2.10): a response with AF < 2.5 is critically damped
 and needs no separation margin."""

@@ -21,6 +21,7 @@ import dataclasses
 
 import numpy as np
 
+from rotordyn._common.api import RESONANT_ZETA
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled
@@ -128,7 +129,7 @@ def _coupling_matrix(asm, placement) -> np.ndarray:
     return K
 
 
-RESONANT_ZETA = 1.0 / np.sqrt(2.0)  # a root damped beyond this has no resonance peak
+# RESONANT_ZETA (rotordyn._common.api, imported above): a root damped beyond it has no resonance
 
 
 def _candidates(st, max_freq_hz) -> np.ndarray:

@@ -449,7 +449,8 @@ def _cmd_campbell(args) -> int:
                                                   else {"n_modes": args.n_modes}))
     crit = c.critical_speeds(harmonic=args.harmonic, whirl=None if args.all_whirl else "forward")
     if args.json:
-        print(json_text({"critical_speeds_hz": crit["speed_hz"].to_numpy(),
+        # critical speeds: the crossings of modes with a resonance; every crossing in the records
+        print(json_text({"critical_speeds_hz": crit.loc[crit["resonant"], "speed_hz"].to_numpy(),
                      "critical_speeds": crit.to_dict("records"),
                      "speeds_hz": c.speeds_hz, "frequencies_hz": c.frequencies_hz,
                      "point_status": list(c.point_status) if c.point_status is not None
@@ -459,6 +460,10 @@ def _cmd_campbell(args) -> int:
                        else {})))
     else:
         print(table_text(crit))
+        if len(crit) and not crit["resonant"].all():
+            print("(resonant False: the mode is damped beyond ζ = 1/√2 there, δ ≥ 2π: it crosses "
+                  "the line without a resonance peak and is not a critical speed)",
+                  file=sys.stderr)
         _thermal_summary(c.speeds_hz, c.thermal, _messages(c))
     if args.plot:
         ax = c.plot()

@@ -27,7 +27,8 @@ def campbell_arrays(speeds_hz, freq_hz, damping, whirl, *, ax=None, color_by="lo
 
     speeds_hz: (n_s,); freq_hz, damping, whirl: (n_s, n_curves) — one column per tracked mode
     (NaN where absent), damping in the unit of ``color_by``, whirl codes +1/−1/0.
-    critical: DataFrame with ``speed_hz``, ``freq_hz`` (and ``harmonic``) to mark, or None.
+    critical: DataFrame with ``speed_hz``, ``freq_hz`` (and ``harmonic``, ``resonant``: a
+    crossing whose mode has no resonance, δ ≥ 2π, is drawn grey and unlabelled) to mark, or None.
     Returns the Axes (its figure holds the colour bar).
     """
     import matplotlib.pyplot as plt
@@ -86,6 +87,14 @@ def campbell_arrays(speeds_hz, freq_hz, damping, whirl, *, ax=None, color_by="lo
     if any_unstable:
         handles.append(Line2D([], [], color=(0.85, 0, 0), lw=2.6,
                               label="unstable (δ < 0, growing)"))
+    flat = None
+    if critical is not None and "resonant" in critical:  # crossings without a resonance
+        flat = critical[~critical["resonant"].astype(bool)]
+        critical = critical[critical["resonant"].astype(bool)]
+    if flat is not None and len(flat):
+        ax.plot(flat["speed_hz"], flat["freq_hz"], "o", mfc="0.8", mec="0.45", ms=4, zorder=5)
+        handles.append(Line2D([], [], ls="", marker="o", mfc="0.8", mec="0.45", ms=4,
+                              label="1× crossing, no resonance (δ ≥ 2π)"))
     if critical is not None and len(critical):
         ax.plot(critical["speed_hz"], critical["freq_hz"], "o", mfc="white", mec="k", ms=5,
                 zorder=5)

@@ -14,9 +14,9 @@ import dataclasses
 import numpy as np
 
 from rotordyn import analysis
-from rotordyn._common.api import API_CRITICALLY_DAMPED_AF, af_text
+from rotordyn._common.api import (API_CRITICALLY_DAMPED_AF, RESONANT_LOG_DEC, RESONANT_ZETA,
+                                  af_text)
 from rotordyn._common.status import CONVERGED
-from rotordyn.analysis.level1 import RESONANT_ZETA
 from rotordyn.model.rotor import Reduction, Support
 
 API_SPEED_FACTOR = 1.25        # API 684: analyse from 0 to at least 125 % of N_mc
@@ -24,8 +24,6 @@ API_UNBALANCE_G_MM = 6350.0    # API 684/617: U = 6350 W / N g·mm (W kg, N rpm)
 API_CLEARANCE_FRACTION = 0.75  # API 617: peak-to-peak ≤ 75 % of the diametral clearance
 SCREEN_LOG_DEC = 0.1           # screening: forward rotor modes in the window δ > 0.1
 LOG_DEC_ROUND_OFF = 1e-6       # |δ| below this is round-off of an undamped mode, not a sign
-# δ of damping ratio 1/√2 (RESONANT_ZETA): a root damped beyond it has no resonance peak
-RESONANT_LOG_DEC = 2.0 * np.pi * RESONANT_ZETA / np.sqrt(1.0 - RESONANT_ZETA ** 2)
 N_SPEEDS = 121                 # grid of the Campbell diagram and the unbalance response
 PAPER_SPEEDS_HZ = np.arange(5.0, 121.0, 1.0)  # the paper's Fig. 12/13 speeds (§6.3)
 

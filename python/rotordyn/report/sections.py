@@ -25,7 +25,7 @@ import numpy as np
 from rotordyn import analysis
 from rotordyn._common.api import af_text
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
-from rotordyn.report.criteria import RESONANT_LOG_DEC
+from rotordyn._common.api import RESONANT_LOG_DEC
 from rotordyn.report.tables import (COEFFICIENT_HEADER, MISSING, _text_table, cell,
                                     coefficient_rows, tilt_coefficient_tables)
 
@@ -165,14 +165,7 @@ def _crossings(campbell) -> tuple[np.ndarray, np.ndarray]:
     if campbell is None:
         return np.empty(0), np.empty(0)
     cs = campbell.critical_speeds()
-    ld = campbell.tracked(np.where(np.isfinite(campbell.log_dec), campbell.log_dec, np.nan))
-    sp = campbell.speeds_hz
-    out = []
-    for m, x in zip(cs["mode"], cs["speed_hz"]):
-        col = ld[:, int(m) - 1]
-        ok = np.isfinite(col)
-        out.append(float(np.interp(x, sp[ok], col[ok])) if ok.sum() >= 1 else np.nan)
-    return cs["speed_hz"].to_numpy(dtype=float), np.asarray(out, dtype=float)
+    return cs["speed_hz"].to_numpy(dtype=float), cs["log_dec"].to_numpy(dtype=float)
 
 
 def _mode_in_band(campbell, group: dict) -> bool:

@@ -159,7 +159,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         # 5. Campbell and critical speeds at p_c = 0.4 MPa, a_y = 0
         c = campbell_04 = analysis.campbell(s, np.arange(5.0, 121.0, 1.0), 0.4e6, 0.0)
         crit = c.critical_speeds()
-        cs = crit["speed_hz"].to_numpy()
+        cs = crit.loc[crit["resonant"], "speed_hz"].to_numpy()
         line = "critical speeds at p_c = 0.4 MPa: " + ", ".join(f"{x:.1f} Hz" for x in cs)
         if paper:
             line += "; paper " + ", ".join(

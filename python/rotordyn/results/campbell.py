@@ -10,6 +10,7 @@ import numpy as np
 
 from rotordyn.results._display import Display
 
+from rotordyn._common.api import RESONANT_LOG_DEC
 from rotordyn._common.status import CONVERGED, point_messages
 from rotordyn.results.modes import WHIRL_NAMES, log_dec
 
@@ -68,7 +69,8 @@ class CampbellResult(Display):
     def __repr__(self) -> str:
         ns, nm = self.eigenvalues.shape
         try:
-            crit = self.critical_speeds()["speed_hz"].to_numpy()
+            cs = self.critical_speeds()
+            crit = cs.loc[cs["resonant"], "speed_hz"].to_numpy()
             cs = ", ".join(f"{x:.4g}" for x in crit[:6]) or "none"
         except Exception:  # noqa: BLE001 - a repr never raises
             cs = "?"
@@ -91,7 +93,10 @@ class CampbellResult(Display):
         """Speeds where a mode's damped frequency equals ``harmonic`` × running speed, by linear
         interpolation between the computed speeds along each tracked mode. ``whirl`` filters by
         the mode's whirl at the crossing (None: any). Columns: mode (tracked id + 1),
-        speed_hz, freq_hz, whirl."""
+        speed_hz, freq_hz, whirl, harmonic, log_dec (the mode's δ at the crossing, interpolated
+        along the tracked mode) and resonant (δ < 2π, damping ratio below 1/√2: a root damped
+        beyond it crosses the line but gives no resonance peak — a heavy bearing mode at low
+        speed; :data:`rotordyn._common.api.RESONANT_LOG_DEC`)."""
         import pandas as pd
         rows = []
         f = self.frequencies_hz
@@ -100,16 +105,22 @@ class CampbellResult(Display):
         # Along the tracked curves: sorted slots swap modes where two frequencies cross.
         f = self.tracked(f)
         wh = self.tracked(self.whirl.astype(float))
+        ld = self.tracked(np.where(np.isfinite(self.log_dec), self.log_dec, np.nan))
         for j in range(f.shape[1]):
             g = f[:, j] - harmonic * self.speeds_hz
             for i in np.where(np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]:
                 t = g[i] / (g[i] - g[i + 1])
                 s = self.speeds_hz[i] + t * (self.speeds_hz[i + 1] - self.speeds_hz[i])
                 w = WHIRL_NAMES[int(wh[i if t < 0.5 else i + 1, j])]
+                ok = np.isfinite(ld[:, j])
+                d = float(np.interp(s, self.speeds_hz[ok], ld[ok, j])) if ok.any() else np.nan
                 if whirl is None or w == whirl:
                     rows.append({"mode": j + 1, "speed_hz": s, "freq_hz": harmonic * s,
-                                 "whirl": w, "harmonic": harmonic})
-        df = pd.DataFrame(rows, columns=["mode", "speed_hz", "freq_hz", "whirl", "harmonic"])
+                                 "whirl": w, "harmonic": harmonic, "log_dec": d,
+                                 # an unknown δ (NaN) stays a critical speed
+                                 "resonant": not d >= RESONANT_LOG_DEC})
+        df = pd.DataFrame(rows, columns=["mode", "speed_hz", "freq_hz", "whirl", "harmonic",
+                                         "log_dec", "resonant"])
         return df.sort_values("speed_hz", ignore_index=True)
 
     def rotor_mask(self) -> np.ndarray:
