@@ -50,10 +50,15 @@ def test_speed_line_40_to_160_hz_all_converge():
 def test_100_hz_moves_by_millikelvin_only():
     # the figures of the code before the hand-over (commit e8c5ebd, where 100 Hz converged):
     # the films' peaks there lie 0.18 and 0.01 cell from a column, so the inlet's share of the
-    # neighbour column (0.17, 0.01) moves the temperatures by a few mK only (measured 3.5 mK)
+    # neighbour column (0.17, 0.01) moves the temperatures by a few mK only (measured 3.5 mK).
+    # Since the fill of a cavitated cell next to the full film (tests/test_thd_fill_continuity.py)
+    # the maxima moved from 74.8346, 77.5966 to 74.8258, 77.5749 degC (-8.8, -21.7 mK,
+    # measured), i.e. -5.3 and -23.0 mK from e8c5ebd's: the reference is e8c5ebd's T_max plus
+    # those offsets, the tolerance as before
     r = rotordyn.system_thermal_equilibrium(_compressor(), speed_hz=100.0, model="thd")
     assert r.status == "ok"
-    np.testing.assert_allclose(r.max_temperature_c, [74.83111813, 77.5978379], atol=0.01)
+    np.testing.assert_allclose(r.max_temperature_c,
+                               [74.83111813 - 0.0053, 77.5978379 - 0.0230], atol=0.01)
     np.testing.assert_allclose(r.effective_temperature_c, [68.57057131, 71.71637222], atol=0.1)
 
 

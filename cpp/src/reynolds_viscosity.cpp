@@ -65,10 +65,29 @@ void ReynoldsSolver::Impl::film_flows(FilmFlows& f) const {
     const int u = S.unk[m];
     return u >= 0 && S.active[u] && !biactive[n];
   };
+  // A cavitated node's distance from the full film, in the units of a pressure: its
+  // complementarity variable, continuous in the film's inputs and 0 where the node changes
+  // between cavitated and full. Swift–Stieber: the multiplier (A p − b)_n ≥ 0 over the
+  // conductance of the face to the full neighbour; clipped: −p_full, the unclipped pressure.
+  // front(n, m, g): where the zero of that variable lies between the cavitated node n and its
+  // neighbour m, 1 at n and 0 at m (linear between p_m ≥ 0 and −ζ_n); 0 if m is not full.
+  auto front = [&](int n, double rn, int m, double g) {
+    const double pm = p[m];
+    if (!(pm > 0.0)) return 0.0;
+    const double zn = clipped ? -pfull[n] : (g > 0.0 ? rn / g : 0.0);
+    return zn > 0.0 ? pm / (pm + zn) : 1.0;
+  };
   std::vector<double> th(theta);
   if (cav == Cavitation::reynolds || clipped) {
     // Couette streamers: from each rupture, the flow through the upstream face fills the
-    // fraction θ = F/(U h_f Δz/2) of the cell's downstream face (p = 0 in the zone)
+    // fraction θ_s = F/(U h_f Δz/2) of the cell's downstream face (p = 0 in the zone).
+    // A cavitated node next to the full film takes θ_s + (1 − θ_s) s, s = the largest
+    // front() over its four neighbours: the full film's fill 1 where the node is about to
+    // turn full (ζ_n → 0), its streamer's where the neighbour is about to cavitate (p_m → 0).
+    // Without it the fill of a node jumped θ_s <-> 1 as it changed between cavitated and full
+    // (a Swift–Stieber film creates the streamers' missing mass at reformation), so the THD map
+    // jumped there and could have two fixed points (docs/film-physics.md, "Thermal films with
+    // a tilted journal").
     const int dir = fwd ? 1 : N - 1;
     for (int k = 1; k < Kl; ++k) {
       int j0 = -1;
@@ -87,7 +106,12 @@ void ReynoldsSolver::Impl::film_flows(FilmFlows& f) const {
           F = -(cE[n] * (p[n] - p[up]) + qE[n] * th[up]);
           cap = -qE[west(n)];
         }
-        th[n] = cap > 0.0 ? std::clamp(F / cap, 0.0, 1.0) : 1.0;
+        const double ts = cap > 0.0 ? std::clamp(F / cap, 0.0, 1.0) : 1.0;
+        const double rn = clipped ? 0.0 : cell_residual(n, p);
+        const int e = east(n), w = west(n);
+        const double sf = std::max({front(n, rn, e, cE[n]), front(n, rn, w, cE[w]),
+                                    front(n, rn, n + 1, cN[n]), front(n, rn, n - 1, cN[n - 1])});
+        th[n] = ts + (1.0 - ts) * sf;
       }
     }
   }

@@ -7,6 +7,11 @@ and weights of ``inlet_mask`` at mid-length); the cells whose cavitation fill di
 than 0.05 between the two, and the count of cavitated cells.
 
 Run ``python docs/calibration/thd_tilt_two_fixed_points.py [mrad ...]`` (default 0.2 0.3).
+
+Since the fill of a cavitated cell next to the full film (2026-12-05, docs/film-physics.md,
+"Fill of a cavitated cell next to the full film") the two calls meet one fixed point at every
+misalignment measured (0-0.6 mrad): this script then prints equal rows and no differing cell;
+``docs/calibration/thd_tilt_scan.py`` is the scan.
 """
 
 import dataclasses
