@@ -26,7 +26,7 @@ iterated with. Checks:
   ``viscosity_field_pa_s``) and gives the same answers; the thermal sweep and the CLI equal
   the direct call;
 * ``threshold(..., thermal=...)`` (each evaluation at its own thermal equilibrium): a flat oil
-  gives the isothermal threshold bit for bit; with VG 46 max Re λ of the thermal film is zero
+  gives the isothermal threshold to round-off; with VG 46 max Re λ of the thermal film is zero
   at its threshold and positive at the isothermal one;
 * the effective-temperature model likewise: the power loss and flows of the deformed film at
   μ(T_eff) recomputed here (1e-6) close its heat balance (1e-9);
@@ -223,7 +223,7 @@ def test_transient_of_the_returned_system_follows_its_linear_model():
 
 def test_threshold_with_the_thd_film():
     """``threshold(..., thermal=...)``: each evaluation at its own thermal equilibrium. With a
-    temperature-independent oil it is the isothermal threshold bit for bit; with VG 46 the
+    temperature-independent oil it is the isothermal threshold to round-off; with VG 46 the
     rig is still unstable (thermal film) at the isothermal threshold, the thermal film's max
     Re λ is zero at its own threshold (1e-4 1/s; the slope is ~1.4e-4 1/s per Pa) and changes
     sign 100 Pa either side of it."""
@@ -233,7 +233,10 @@ def test_threshold_with_the_thd_film():
     iso = rd.threshold(s, **kw)
     assert iso.status == "ok" and len(iso.crossings) == 1
     f = rd.threshold(s, **kw, thermal=dict(oil=flat, supply_temperature_c=TS, model="thd"))
-    assert f.crossings == iso.crossings
+    # equal to round-off: each equilibrium warm-starts from the last one this process solved
+    # and is polished to the round-off floor, so two identical calls differ by ~2e-13
+    # relative (three isothermal calls in one process: 57043.39329712198, …13173, …139955 Pa)
+    np.testing.assert_allclose(f.crossings, iso.crossings, rtol=1e-11, atol=0.0)
     th = dict(oil=VG46, supply_temperature_c=TS, model="thd")
     h = rd.threshold(s, **kw, thermal=th)
     assert h.status == "ok" and h.stable_side == "above"
