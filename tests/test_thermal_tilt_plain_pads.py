@@ -143,7 +143,8 @@ def test_plain_tilt_and_its_opposite_mirror(model):
     if model == "thd":
         np.testing.assert_allclose(p.temperature_c, m.temperature_c[:, ::-1], atol=1e-8)
     fr = p.to_frame()
-    assert fr["journal_theta_y_rad"].iloc[0] == 3e-4 and fr["film_moment_x_n_m"].iloc[0] == p.film_moment_n_m[0]
+    assert fr["journal_theta_y_rad"].iloc[0] == 3e-4
+    assert fr["film_moment_x_n_m"].iloc[0] == p.film_moment_n_m[0]
 
 
 @pytest.mark.parametrize("model", ["thd", "effective"])
