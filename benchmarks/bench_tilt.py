@@ -89,7 +89,7 @@ def main(argv=None) -> int:
           "against the untilted force; CPU is the figure when the wall time shows a busy machine)")
     f = tilted_forces(tb, **st, **th)
     print(f"tilted film: F = ({f.force_n[0]:.4g}, {f.force_n[1]:.4g}) N, M = "
-          f"({f.moment_n_m[0]:.4g}, {f.moment_n_m[1]:.4g}) N m, h_min = {f.h_min_m:.4g} m at "
+          f"({f.film_moment_n_m[0]:.4g}, {f.film_moment_n_m[1]:.4g}) N m, h_min = {f.h_min_m:.4g} m at "
           f"phi = {f.h_min_angle_deg:.1f} deg, z = {f.h_min_z_m:+.4g} m")
     lobes(args.repeat, geo, st, th)
     pads(args.repeat)
@@ -130,7 +130,7 @@ def lobes(repeat, geo, st, th) -> None:
               f"{t[k].cpu / base.cpu:.2f}x CPU")
     f = tilted_forces(fb, **st, **th)
     print(f"tilted elliptical: F = ({f.force_n[0]:.4g}, {f.force_n[1]:.4g}) N, M = "
-          f"({f.moment_n_m[0]:.4g}, {f.moment_n_m[1]:.4g}) N m, h_min = {f.h_min_m:.4g} m at "
+          f"({f.film_moment_n_m[0]:.4g}, {f.film_moment_n_m[1]:.4g}) N m, h_min = {f.h_min_m:.4g} m at "
           f"phi = {f.h_min_angle_deg:.1f} deg, z = {f.h_min_z_m:+.4g} m")
 
 
@@ -177,7 +177,7 @@ def pads(repeat) -> None:
               f"{t[k].cpu / t['untilted'].cpu:.2f}x CPU")
     m = misaligned_equilibrium(rock, load_n=(0.0, -1500.0), speed_hz=100.0, **th)
     print(f"  rocker at theta: e = ({m.x_m / C:.4f}, {m.y_m / C:.4f}) c, M = "
-          f"({m.moment_n_m[0]:.4g}, {m.moment_n_m[1]:.4g}) N m, h_min = {m.h_min_m:.4g} m at "
+          f"({m.film_moment_n_m[0]:.4g}, {m.film_moment_n_m[1]:.4g}) N m, h_min = {m.h_min_m:.4g} m at "
           f"z = {m.h_min_z_m:+.4g} m, path {m.path}")
 
     def pose():

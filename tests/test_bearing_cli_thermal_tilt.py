@@ -56,7 +56,7 @@ def test_tilted_thermal_record_equals_the_api(capsys, model):
     assert (r["journal_x_m"], r["journal_y_m"]) == pytest.approx((a.x_m, a.y_m), rel=1e-12)
     assert r["thermal"]["max_temperature_c"] == pytest.approx(a.max_temperature_c, rel=1e-12)
     assert r["thermal"]["power_loss_w"] == pytest.approx(a.power_loss_w, rel=1e-12)
-    np.testing.assert_allclose(r["moment_n_m"], a.moment_n_m, rtol=1e-12)
+    np.testing.assert_allclose(r["film_moment_n_m"], a.film_moment_n_m, rtol=1e-12)
     assert (r["h_min_m"], r["h_min_z_m"]) == pytest.approx((a.h_min_m, a.h_min_z_m), rel=1e-12)
     assert r["h_min_z_m"] == pytest.approx(0.025)  # the thin edge
     for key, ref in (("k_4x4_si", a.K4), ("c_4x4_si", a.C4)):
@@ -64,7 +64,7 @@ def test_tilted_thermal_record_equals_the_api(capsys, model):
     np.testing.assert_array_equal(r["k_n_per_m"], np.array(r["k_4x4_si"])[:2, :2])
     np.testing.assert_array_equal(r["c_n_s_per_m"], np.array(r["c_4x4_si"])[:2, :2])
     assert (r["journal_theta_x_rad"], r["journal_theta_y_rad"]) == (TX, TY)
-    assert r["thermal"]["moment_y_n_m"] == r["moment_n_m"][1]
+    assert r["thermal"]["film_moment_y_n_m"] == r["film_moment_n_m"][1]
     if model == "effective":  # the hot film at the tilted pose carries the load
         np.testing.assert_allclose(r["force_n"], [0.0, 4000.0], atol=1e-7 * 4000.0)
 
@@ -74,8 +74,10 @@ def test_key_names_are_those_of_the_two_records(capsys, model):
     """Every key of the tilted thermal record is a key of the untilted thermal record or of
     the isothermal tilted record, with the same meaning; of the two, only the isothermal
     film's journal velocities and misaligned-equilibrium block are absent, and with the
-    effective model the untilted film's friction torque (the tilted film solve gives none);
-    the THD record has no ``force_n``, tilted or not (no film solve after the core's)."""
+    effective model the untilted film's friction torque (the tilted film solve gives none).
+    Both tilted records carry ``force_n``, the frozen film's force at the returned pose (the
+    result's; before 2026-12-05 the THD record had none, as the untilted THD record has
+    none)."""
     code, th = _run(capsys, "--model", model, *TILT)
     code0, plain = _run(capsys, "--model", model)
     iso = main(["bearing", "--diameter-m", "0.1", "--length-m", "0.05", "--clearance-m",
@@ -86,8 +88,9 @@ def test_key_names_are_those_of_the_two_records(capsys, model):
     assert set(th) <= set(plain) | set(iso_rec)
     missing = (set(plain) | set(iso_rec)) - set(th)
     assert missing == ({"equilibrium", "journal_vx_m_s", "journal_vy_m_s"}
-                       | ({"friction_torque_n_m"} if model == "effective" else {"force_n"}))
-    assert ("force_n" in th) == ("force_n" in plain)
+                       | ({"friction_torque_n_m"} if model == "effective" else set()))
+    assert "force_n" in th and ("force_n" in plain) == (model == "effective")
+    np.testing.assert_allclose(th["force_n"], [0.0, 4000.0], atol=1e-7 * 4000.0)
     for k in ("k_4x4_units", "c_4x4_units", "coordinates"):
         assert th[k] == iso_rec[k]
 
@@ -109,3 +112,18 @@ def test_text_output_and_refusals(capsys):
     assert "--speeds-hz" in capsys.readouterr().err
     assert main([*GEO, *SPEED, *OIL, "--x-m", "0", "--y-m", "0", *TILT]) == 2
     assert "--load-n" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("model", ["effective", "thd"])
+def test_failed_tilted_thermal_equilibrium_is_a_status_record(capsys, model):
+    """400 kN on this 0.1 m × 0.05 m bearing: the equilibrium runs into the contact limit
+    (no_equilibrium). Before: one 'rotordyn: failed: ...' line on stderr, exit 1, and with
+    --json no record at all; now the record of the point (exit 1)."""
+    code = main([*GEO, *SPEED, "--load-n", "0", "-400000", *OIL, "--model", model, *TILT,
+                 "--json"])
+    r = json.loads(capsys.readouterr().out)
+    assert code == 1 and r["status"] == "no_equilibrium" and "contact" not in r["status"]
+    assert "minimum film" in r["message"] and r["load_n"] == [0.0, -400000.0]
+    assert (r["journal_theta_x_rad"], r["journal_theta_y_rad"]) == (TX, TY)
+    assert r["thermal_model"] == model and r["speed_hz"] == 100.0
+    assert not {"thermal", "k_4x4_si", "film_moment_n_m", "force_n"} & set(r)

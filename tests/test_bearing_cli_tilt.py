@@ -37,7 +37,7 @@ def test_tilted_point_equals_the_api(capsys):
     t = tilted_forces(_b(), x_m=x, y_m=y, speed_hz=100.0, **TH)
     K, Cm = tilted_coefficients(_b(), x_m=x, y_m=y, speed_hz=100.0, **TH)
     np.testing.assert_allclose(r["force_n"], t.force_n, rtol=1e-12)
-    np.testing.assert_allclose(r["moment_n_m"], t.moment_n_m, rtol=1e-12)
+    np.testing.assert_allclose(r["film_moment_n_m"], t.film_moment_n_m, rtol=1e-12)
     assert r["h_min_z_m"] == pytest.approx(t.h_min_z_m) and abs(r["h_min_z_m"]) == L / 2
     np.testing.assert_allclose(r["k_4x4_si"], K, rtol=1e-12, atol=1e-12 * np.abs(K).max())
     np.testing.assert_allclose(r["c_4x4_si"], Cm, rtol=1e-12, atol=1e-12 * np.abs(Cm).max())
@@ -51,7 +51,7 @@ def test_misaligned_equilibrium_and_zero_tilt(capsys):
     e = misaligned_equilibrium(_b(), load_n=(0.0, -2000.0), speed_hz=100.0,
                                theta_y_rad=TH["theta_y_rad"])
     assert (r["journal_x_m"], r["journal_y_m"]) == pytest.approx((e.x_m, e.y_m), rel=1e-12)
-    np.testing.assert_allclose(r["moment_n_m"], e.moment_n_m, rtol=1e-9)
+    np.testing.assert_allclose(r["film_moment_n_m"], e.film_moment_n_m, rtol=1e-9)
     # zero tilt given: the translational block is today's 2x2 bearing
     code, z = _run(capsys, "--load-n", "0", "-2000", "--theta-x-rad", "0")
     assert code == 0
@@ -91,8 +91,8 @@ def test_json_keys_match_the_aligned_command(capsys):
     np.testing.assert_array_equal(t["k_n_per_m"], K4[:2, :2])
     np.testing.assert_array_equal(t["c_n_s_per_m"], C4[:2, :2])
     assert t["k_4x4_units"][0] == ["N/m", "N/m", "N/rad", "N/rad"]
-    assert t["k_4x4_units"][3] == ["N m/m", "N m/m", "N m/rad", "N m/rad"]
-    assert t["c_4x4_units"][2][2] == "N m s/rad" and t["c_4x4_units"][1][0] == "N s/m"
+    assert t["k_4x4_units"][3] == ["N·m/m", "N·m/m", "N·m/rad", "N·m/rad"]
+    assert t["c_4x4_units"][2][2] == "N·m·s/rad" and t["c_4x4_units"][1][0] == "N·s/m"
     code, z = _run(capsys, *pose, "--theta-x-rad", "0")
     code0, a = _run(capsys, *pose)
     assert code == code0 == 0

@@ -60,7 +60,7 @@ def test_zero_tilt_is_the_untilted_film_bit_for_bit():
     H2 = np.asarray(s2.film_forces(np.array([x, y]), np.array([1e-3, -2e-3]), w))
     assert np.array_equal(t.force_n, H2)
     # the aligned film is symmetric in z: its moments vanish to the round-off of the sum
-    assert np.abs(t.moment_n_m).max() < 1e-14 * np.abs(H2).max() * L
+    assert np.abs(t.film_moment_n_m).max() < 1e-14 * np.abs(H2).max() * L
     # the pressure is today's system film's bit for bit, and the standalone bearing's (which
     # builds h in its own order) to round-off
     p4 = np.asarray(b._local.tilt_solver.last_pressure(0))
@@ -84,11 +84,11 @@ def test_opposite_tilts_mirror_each_other(x, y):
     m = tilted_forces(b, x_m=x, y_m=y, speed_hz=F_HZ, theta_x_rad=-th[0], theta_y_rad=-th[1])
     scale = np.abs(p.force_n).max() + 1e-3
     np.testing.assert_allclose(m.force_n, p.force_n, rtol=0, atol=1e-11 * scale)
-    np.testing.assert_allclose(m.moment_n_m, -p.moment_n_m, rtol=0,
-                               atol=1e-11 * np.abs(p.moment_n_m).max())
+    np.testing.assert_allclose(m.film_moment_n_m, -p.film_moment_n_m, rtol=0,
+                               atol=1e-11 * np.abs(p.film_moment_n_m).max())
     assert m.h_min_m == pytest.approx(p.h_min_m, rel=1e-14)
     assert m.h_min_z_m == pytest.approx(-p.h_min_z_m, abs=1e-15)
-    assert np.abs(p.moment_n_m).max() > 1e-3  # a real moment, not a zero
+    assert np.abs(p.film_moment_n_m).max() > 1e-3  # a real moment, not a zero
 
 
 def test_centred_tilt_gives_no_force_and_a_first_order_moment_with_its_sign():
@@ -102,9 +102,9 @@ def test_centred_tilt_gives_no_force_and_a_first_order_moment_with_its_sign():
     ms = []
     for th in (0.2 * C / L, 0.1 * C / L):
         t = tilted_forces(b, x_m=0.0, y_m=0.0, speed_hz=F_HZ, theta_y_rad=th)
-        assert t.moment_n_m[0] < 0
-        assert np.hypot(*t.force_n) < 1e-12 * np.hypot(*t.moment_n_m) / L
-        ms.append(np.hypot(*t.moment_n_m))
+        assert t.film_moment_n_m[0] < 0
+        assert np.hypot(*t.force_n) < 1e-12 * np.hypot(*t.film_moment_n_m) / L
+        ms.append(np.hypot(*t.film_moment_n_m))
     order_m = math.log(ms[0] / ms[1]) / math.log(2.0)
     assert abs(order_m - 1.0) < 0.02, order_m
 
@@ -124,7 +124,7 @@ def test_small_tilt_changes_the_force_at_second_order(cavitation):
         t = tilted_forces(b, x_m=x, y_m=y, speed_hz=F_HZ, theta_x_rad=-0.5 * th,
                           theta_y_rad=th)
         df.append(np.hypot(*(t.force_n - f0)))
-        dm.append(np.hypot(*t.moment_n_m))
+        dm.append(np.hypot(*t.film_moment_n_m))
     om = np.log(np.array(dm[:-1]) / dm[1:]) / math.log(2.0)
     assert np.all(np.abs(om - 1.0) < 0.02), om
     if cavitation == "reynolds":
@@ -208,7 +208,7 @@ def test_misaligned_equilibrium_zero_tilt_and_load_balance():
     np.testing.assert_allclose(e.force_n, -np.asarray(load), rtol=0, atol=1e-8 * 200.0)
     assert e.h_min_m < e0.h_min_m  # the edge film is thinner than the aligned minimum
     assert abs(e.h_min_z_m) == pytest.approx(L / 2)
-    assert np.abs(e.moment_n_m).max() > 0
+    assert np.abs(e.film_moment_n_m).max() > 0
 
 
 @pytest.mark.parametrize("kw,field", [
@@ -309,7 +309,7 @@ def test_tilted_film_tends_to_the_short_bearing_at_second_order_in_l_over_d():
         for na in (64, 128):
             t = tilted_forces(bearing(n_circ=288, n_axial=na, cavitation="none", length_m=Lb),
                               speed_hz=F_HZ, **st)
-            got.append(np.concatenate([t.force_n, t.moment_n_m]))
+            got.append(np.concatenate([t.force_n, t.film_moment_n_m]))
         rich = got[1] + (got[1] - got[0]) / 3
         errs.append(rich / ref - 1)
     e = np.array(errs)

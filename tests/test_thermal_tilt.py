@@ -70,7 +70,7 @@ def test_zero_tilt_is_the_untilted_thermal_bearing(kind, model):
     assert a.K4 is None and b.K4.shape == (4, 4)
     np.testing.assert_allclose(b.K4[:2, :2], a.K, rtol=1e-9, atol=1e-9 * np.abs(a.K).max())
     np.testing.assert_allclose(b.C4[:2, :2], a.C, rtol=1e-9, atol=1e-9 * np.abs(a.C).max())
-    assert np.abs(b.moment_n_m).max() < 1e-9  # N·m: a film even in z carries none
+    assert np.abs(b.film_moment_n_m).max() < 1e-9  # N·m: a film even in z carries none
     assert b.h_min_z_m == 0.0
 
 
@@ -96,11 +96,13 @@ def test_a_tilt_heats_the_thin_edge_and_its_opposite_mirrors():
     assert (p.x_m, p.y_m) == pytest.approx((m.x_m, m.y_m), abs=1e-12 * b.clearance_m)
     for a, c in zip(p.temperature_c, m.temperature_c):
         np.testing.assert_allclose(a, c[:, ::-1], atol=1e-9)
-    np.testing.assert_allclose(p.moment_n_m, -m.moment_n_m, atol=1e-9 * np.abs(p.moment_n_m).max())
-    assert p.moment_n_m[0] < 0  # θy > 0: a moment about −x (docs, "Sign check")
+    np.testing.assert_allclose(p.film_moment_n_m, -m.film_moment_n_m,
+                               atol=1e-9 * np.abs(p.film_moment_n_m).max())
+    assert p.film_moment_n_m[0] < 0  # θy > 0: a moment about −x (docs, "Sign check")
     assert m.h_min_z_m == pytest.approx(-L / 2)
     fr = p.to_frame()
-    assert fr["theta_y_rad"].iloc[0] == 2e-4 and fr["h_min_z_m"].iloc[0] == pytest.approx(L / 2)
+    assert fr["journal_theta_y_rad"].iloc[0] == 2e-4
+    assert fr["h_min_z_m"].iloc[0] == pytest.approx(L / 2)
     # a tilt that closes a lobe's film at an edge names the fields
     with pytest.raises(InputError, match="theta_x_rad, theta_y_rad"):
         b.thermal_equilibrium(**KW, theta_x_rad=5e-3)
@@ -155,7 +157,7 @@ def test_4x4_coefficients_and_moments_at_the_frozen_field():
     np.testing.assert_allclose(r.C4, Cf, rtol=0, atol=1e-6 * np.abs(Cf).max())
     f = tilted_forces(hot, **pose)
     np.testing.assert_allclose(f.force_n, -np.asarray(KW["load_n"]), atol=1e-6)
-    np.testing.assert_allclose(f.moment_n_m, r.moment_n_m, rtol=1e-12)
+    np.testing.assert_allclose(f.film_moment_n_m, r.film_moment_n_m, rtol=1e-12)
     assert f.h_min_m == r.h_min_m and f.h_min_z_m == r.h_min_z_m
     # the tilt is felt by the temperature and the coefficients
     r0 = b.thermal_equilibrium(**KW)
@@ -205,7 +207,7 @@ def test_compressor_on_misaligned_three_lobe_bearings_with_an_oil_system(tmp_pat
             np.testing.assert_allclose(a, res.temperature_c[i], atol=1e-5)
         assert (sa.x_m, sa.y_m) == pytest.approx((res.journal_x_m[rows[0]],
                                                   res.journal_y_m[rows[0]]), abs=1e-6 * c)
-        np.testing.assert_allclose(sa.moment_n_m, ff[list(bc.rot)], rtol=1e-6)
+        np.testing.assert_allclose(sa.film_moment_n_m, ff[list(bc.rot)], rtol=1e-6)
         assert sa.h_min_z_m == pytest.approx(tilt["h_min_z_m"])
     # the dynamics at each point's thermal equilibrium: thermal=True is the frozen system's
     st = rotordyn.stability(s, speed_hz=SPEED, thermal=True)

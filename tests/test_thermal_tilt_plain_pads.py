@@ -108,7 +108,7 @@ def test_plain_zero_tilt_is_the_untilted_film(model):
         assert t.mean_temperature_c == st.mean_temperature_c
     else:
         assert t.effective_temperature_c == st.effective_temperature_c
-    assert t.K4.shape == (4, 4) and np.abs(t.moment_n_m).max() < 1e-9  # even in z: none
+    assert t.K4.shape == (4, 4) and np.abs(t.film_moment_n_m).max() < 1e-9  # even in z: none
     assert t.h_min_z_m == 0.0
     # the untilted standalone result (another Newton) to its tolerance
     u = b.thermal_equilibrium(**KW, model=model)
@@ -134,16 +134,17 @@ def test_plain_tilt_and_its_opposite_mirror(model):
     assert p.status == m.status == "ok"
     assert (p.x_m, p.y_m) == pytest.approx((m.x_m, m.y_m), abs=1e-9 * c)
     assert p.max_temperature_c == pytest.approx(m.max_temperature_c, abs=1e-8)
-    scale = np.abs(p.moment_n_m).max()
+    scale = np.abs(p.film_moment_n_m).max()
     assert scale > 0.1  # N·m
-    np.testing.assert_allclose(p.moment_n_m, -m.moment_n_m, atol=1e-8 * scale)
+    np.testing.assert_allclose(p.film_moment_n_m, -m.film_moment_n_m, atol=1e-8 * scale)
     assert p.h_min_m == pytest.approx(m.h_min_m, rel=1e-8)
     assert abs(p.h_min_z_m) == pytest.approx(L / 2) and p.h_min_z_m == -m.h_min_z_m
     assert p.h_min_m < c * (1 - p.eccentricity_ratio)  # the edge film is the thinnest
     if model == "thd":
         np.testing.assert_allclose(p.temperature_c, m.temperature_c[:, ::-1], atol=1e-8)
     fr = p.to_frame()
-    assert fr["theta_y_rad"].iloc[0] == 3e-4 and fr["moment_x_n_m"].iloc[0] == p.moment_n_m[0]
+    assert fr["journal_theta_y_rad"].iloc[0] == 3e-4
+    assert fr["film_moment_x_n_m"].iloc[0] == p.film_moment_n_m[0]
 
 
 @pytest.mark.parametrize("model", ["thd", "effective"])
@@ -158,7 +159,7 @@ def test_plain_returned_pose_balances_the_load_in_the_frozen_film(model):
                       theta_y_rad=ty)
     W = 4000.0
     np.testing.assert_allclose(f.force_n, -np.array(KW["load_n"]), atol=1e-8 * W)
-    np.testing.assert_allclose(f.moment_n_m, r.moment_n_m, rtol=1e-8)
+    np.testing.assert_allclose(f.film_moment_n_m, r.film_moment_n_m, rtol=1e-8)
     assert f.h_min_m == pytest.approx(r.h_min_m, rel=1e-12) and f.h_min_z_m == r.h_min_z_m
     K, C = tilted_coefficients(frozen, x_m=r.x_m, y_m=r.y_m, speed_hz=KW["speed_hz"],
                                theta_x_rad=tx, theta_y_rad=ty)
@@ -192,7 +193,7 @@ def test_pads_zero_tilt_is_the_untilted_bearing(model):
     assert a.K4 is None and b.K4.shape == (4, 4)
     np.testing.assert_allclose(b.K4[:2, :2], a.K, atol=1e-9 * np.abs(a.K).max())
     np.testing.assert_allclose(b.C4[:2, :2], a.C, atol=1e-9 * np.abs(a.C).max())
-    assert np.abs(b.moment_n_m).max() < 1e-9
+    assert np.abs(b.film_moment_n_m).max() < 1e-9
 
 
 def test_pads_tilt_and_its_opposite_mirror_and_balance_the_load():
@@ -208,9 +209,9 @@ def test_pads_tilt_and_its_opposite_mirror_and_balance_the_load():
     np.testing.assert_allclose(p.pad_tilts_rad, m.pad_tilts_rad, atol=1e-9 * c / b.length_m)
     for a, q in zip(p.temperature_c, m.temperature_c):
         np.testing.assert_allclose(a, q[:, ::-1], atol=1e-8)
-    scale = np.abs(p.moment_n_m).max()
+    scale = np.abs(p.film_moment_n_m).max()
     assert scale > 0.1
-    np.testing.assert_allclose(p.moment_n_m, -m.moment_n_m, atol=1e-8 * scale)
+    np.testing.assert_allclose(p.film_moment_n_m, -m.film_moment_n_m, atol=1e-8 * scale)
     assert p.h_min_z_m == pytest.approx(L / 2) and m.h_min_z_m == pytest.approx(-L / 2)
     u = _pads().thermal_equilibrium(**PKW)
     assert p.max_temperature_c_total > u.max_temperature_c_total  # the thin edge is hotter
@@ -219,7 +220,7 @@ def test_pads_tilt_and_its_opposite_mirror_and_balance_the_load():
     f = pad_tilted_forces(frozen, x_m=p.x_m, y_m=p.y_m, speed_hz=PKW["speed_hz"],
                           theta_y_rad=th)
     np.testing.assert_allclose(f.force_n, -np.array(PKW["load_n"]), atol=1e-8 * 1500.0)
-    np.testing.assert_allclose(f.moment_n_m, p.moment_n_m, rtol=1e-7)
+    np.testing.assert_allclose(f.film_moment_n_m, p.film_moment_n_m, rtol=1e-7)
     np.testing.assert_allclose(f.pad_tilts_rad, p.pad_tilts_rad, rtol=1e-7, atol=1e-12)
     with pytest.raises(InputError, match="theta_x_rad, theta_y_rad: the tilted journal closes"):
         b.thermal_equilibrium(**PKW, theta_x_rad=5e-3)
@@ -269,7 +270,7 @@ def test_plain_equals_the_system_at_the_journal_tilt_and_film_load(model):
         c = b.clearance_m
         assert (sa.x_m, sa.y_m) == pytest.approx((res.journal_x_m[k], res.journal_y_m[k]),
                                                  abs=1e-6 * c)
-        np.testing.assert_allclose(sa.moment_n_m, ff[list(bc.rot)], rtol=1e-6)
+        np.testing.assert_allclose(sa.film_moment_n_m, ff[list(bc.rot)], rtol=1e-6)
         assert sa.h_min_z_m == pytest.approx(tilt["h_min_z_m"])
 
 
@@ -287,15 +288,15 @@ def test_spherical_pads_pitch_with_the_tilt(model):
     m = b.thermal_equilibrium(**PKW, model=model, theta_y_rad=-6e-4)
     assert p.status == m.status == "ok"
     assert (p.x_m, p.y_m) == pytest.approx((m.x_m, m.y_m), abs=1e-9 * b.clearance_m)
-    scale = np.abs(p.moment_n_m).max()
-    np.testing.assert_allclose(p.moment_n_m, -m.moment_n_m, atol=1e-8 * scale)
+    scale = np.abs(p.film_moment_n_m).max()
+    np.testing.assert_allclose(p.film_moment_n_m, -m.film_moment_n_m, atol=1e-8 * scale)
     rocker = _pads(tilt=True).thermal_equilibrium(**PKW, model=model, theta_y_rad=6e-4)
-    assert scale < 0.2 * np.abs(rocker.moment_n_m).max()
+    assert scale < 0.2 * np.abs(rocker.film_moment_n_m).max()
     frozen = dataclasses.replace(b, viscosity_field_pa_s=p.viscosity_pa_s)
     f = pad_tilted_forces(frozen, x_m=p.x_m, y_m=p.y_m, speed_hz=PKW["speed_hz"],
                           theta_y_rad=6e-4)
     np.testing.assert_allclose(f.force_n, -np.array(PKW["load_n"]), atol=1e-8 * 1500.0)
-    np.testing.assert_allclose(f.moment_n_m, p.moment_n_m, rtol=1e-7, atol=1e-9 * scale)
+    np.testing.assert_allclose(f.film_moment_n_m, p.film_moment_n_m, rtol=1e-7, atol=1e-9 * scale)
 
 
 @pytest.mark.parametrize("model", ["effective", "thd"])

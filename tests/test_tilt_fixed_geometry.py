@@ -60,7 +60,7 @@ def test_full_arc_equals_the_plain_journal_bearing_tilted():
     jb = JournalBearing(**GEOM, n_circ=48, n_axial=12)
     a, b = tilted_forces(fb, **POSE, **TILT), tilted_forces(jb, **POSE, **TILT)
     np.testing.assert_allclose(a.force_n, b.force_n, rtol=1e-12)
-    np.testing.assert_allclose(a.moment_n_m, b.moment_n_m, rtol=1e-12)
+    np.testing.assert_allclose(a.film_moment_n_m, b.film_moment_n_m, rtol=1e-12)
     assert (a.h_min_m, a.h_min_angle_deg, a.h_min_z_m) == pytest.approx(
         (b.h_min_m, b.h_min_angle_deg, b.h_min_z_m), rel=1e-12)
     for A, B in zip(tilted_coefficients(fb, **POSE, **TILT),
@@ -70,7 +70,7 @@ def test_full_arc_equals_the_plain_journal_bearing_tilted():
     mb = misaligned_equilibrium(jb, load_n=(0.0, -2000.0), speed_hz=100.0, theta_x_rad=4e-4)
     assert ma.status == mb.status == "ok"
     assert (ma.x_m, ma.y_m) == pytest.approx((mb.x_m, mb.y_m), rel=1e-10)
-    np.testing.assert_allclose(ma.moment_n_m, mb.moment_n_m, rtol=1e-9)
+    np.testing.assert_allclose(ma.film_moment_n_m, mb.film_moment_n_m, rtol=1e-9)
 
 
 @pytest.mark.parametrize("kw", KINDS[:4], ids=lambda k: k["kind"])
@@ -84,11 +84,11 @@ def test_opposite_tilts_mirror(kw):
                       theta_y_rad=-TILT["theta_y_rad"])
     F = np.abs(p.force_n).max()
     np.testing.assert_allclose(p.force_n, m.force_n, rtol=0, atol=1e-10 * F)
-    np.testing.assert_allclose(p.moment_n_m, -m.moment_n_m, rtol=0,
-                               atol=1e-10 * np.abs(p.moment_n_m).max())
+    np.testing.assert_allclose(p.film_moment_n_m, -m.film_moment_n_m, rtol=0,
+                               atol=1e-10 * np.abs(p.film_moment_n_m).max())
     assert p.h_min_z_m == pytest.approx(-m.h_min_z_m, abs=1e-15)
     assert abs(p.h_min_z_m) == pytest.approx(0.5 * b.length_m)
-    assert np.abs(p.moment_n_m).max() > 1e-3 * F * b.length_m
+    assert np.abs(p.film_moment_n_m).max() > 1e-3 * F * b.length_m
 
 
 def test_centred_tilt_no_force_first_order_moment_with_its_sign():
@@ -103,9 +103,9 @@ def test_centred_tilt_no_force_first_order_moment_with_its_sign():
         ms = []
         for th in (2e-4, 1e-4):
             t = tilted_forces(b, x_m=0.0, y_m=0.0, speed_hz=100.0, theta_y_rad=th)
-            assert t.moment_n_m[0] < 0.0
-            assert np.hypot(*t.force_n) < 1e-9 * np.hypot(*t.moment_n_m) / b.length_m
-            ms.append(np.hypot(*t.moment_n_m))
+            assert t.film_moment_n_m[0] < 0.0
+            assert np.hypot(*t.force_n) < 1e-9 * np.hypot(*t.film_moment_n_m) / b.length_m
+            ms.append(np.hypot(*t.film_moment_n_m))
         assert np.log2(ms[0] / ms[1]) == pytest.approx(1.0, abs=0.04)
 
 
@@ -119,7 +119,7 @@ def test_loaded_small_tilt_changes_the_force_at_second_order(kind):
     for th in (4e-4, 2e-4, 1e-4):
         t = tilted_forces(b, **POSE, theta_x_rad=-0.5 * th, theta_y_rad=th)
         df.append(np.hypot(*(t.force_n - f0)))
-        dm.append(np.hypot(*t.moment_n_m))
+        dm.append(np.hypot(*t.film_moment_n_m))
     of = np.log2(np.array(df[:-1]) / df[1:])
     om = np.log2(np.array(dm[:-1]) / dm[1:])
     assert np.all(np.abs(of - 2.0) < 0.05), of
@@ -152,7 +152,7 @@ def test_grid_convergence_of_the_moments():
     Ms = []
     for n in (24, 48, 96):
         b = fixed("elliptical", n_circ=2 * n, n_axial=n // 4, cavitation="none")
-        Ms.append(tilted_forces(b, **POSE, **TILT).moment_n_m)
+        Ms.append(tilted_forces(b, **POSE, **TILT).film_moment_n_m)
     e1, e2 = np.linalg.norm(Ms[1] - Ms[0]), np.linalg.norm(Ms[2] - Ms[1])
     assert np.log2(e1 / e2) == pytest.approx(2.0, abs=0.3)
 

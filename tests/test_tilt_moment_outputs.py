@@ -49,8 +49,8 @@ def test_equilibrium_moments_are_the_standalone_films(sign):
                             speed_hz=F_HZ, theta_x_rad=t["journal_theta_x_rad"],
                             theta_y_rad=t["journal_theta_y_rad"])
         got = np.array([t["film_moment_x_n_m"], t["film_moment_y_n_m"]])
-        np.testing.assert_allclose(got, ref.moment_n_m, rtol=1e-9,
-                                   atol=1e-9 * np.abs(ref.moment_n_m).max())
+        np.testing.assert_allclose(got, ref.film_moment_n_m, rtol=1e-9,
+                                   atol=1e-9 * np.abs(ref.film_moment_n_m).max())
         assert abs(got).max() > 0.01  # N·m: the misaligned films carry a moment
         assert fr.loc[i, "film_moment_x_n_m"] == t["film_moment_x_n_m"]
         assert fr.loc[i, "film_moment_y_n_m"] == t["film_moment_y_n_m"]

@@ -59,7 +59,7 @@ def test_zero_tilt_is_the_untilted_bearing(pivot):
     assert m.status == "ok" and m.path == "pad_assembly", m.message
     c = b.clearance_m
     assert (m.x_m, m.y_m) == pytest.approx((tab.x_m[0], tab.y_m[0]), rel=0, abs=1e-12 * c)
-    assert np.abs(m.moment_n_m).max() < 1e-12 * 1500.0 * b.length_m
+    assert np.abs(m.film_moment_n_m).max() < 1e-12 * 1500.0 * b.length_m
     assert np.abs(m.film.pad_pitches_rad).max() < 1e-15
     assert m.film.unloaded_pads == 0 and m.h_min_z_m == 0.0
     K, C = tilted_coefficients(b, x_m=m.x_m, y_m=m.y_m, speed_hz=SPEED)
@@ -77,8 +77,8 @@ def test_opposite_tilts_mirror(pivot):
                       theta_y_rad=-TILT["theta_y_rad"])
     F = np.abs(p.force_n).max()
     np.testing.assert_allclose(p.force_n, m.force_n, rtol=0, atol=1e-10 * F)
-    np.testing.assert_allclose(p.moment_n_m, -m.moment_n_m, rtol=0,
-                               atol=1e-10 * np.abs(p.moment_n_m).max())
+    np.testing.assert_allclose(p.film_moment_n_m, -m.film_moment_n_m, rtol=0,
+                               atol=1e-10 * np.abs(p.film_moment_n_m).max())
     np.testing.assert_allclose(p.pad_tilts_rad, m.pad_tilts_rad, rtol=0, atol=1e-15)
     np.testing.assert_allclose(p.pad_pitches_rad, -m.pad_pitches_rad, rtol=0, atol=1e-15)
     np.testing.assert_allclose(p.pad_h_min_m, m.pad_h_min_m, rtol=1e-10)
@@ -102,7 +102,7 @@ def test_force_even_moment_first_order_and_restoring(pivot):
     for th in (4e-4, 2e-4, 1e-4):
         t = tilted_forces(b, **POSE, theta_x_rad=th, theta_y_rad=-0.5 * th)
         df.append(np.hypot(*(t.force_n - f0)))
-        dm.append(np.hypot(*t.moment_n_m))
+        dm.append(np.hypot(*t.film_moment_n_m))
     of, om = np.log2(np.array(df[:-1]) / df[1:]), np.log2(np.array(dm[:-1]) / dm[1:])
     assert np.all(np.abs(of - 2.0) < 0.1), of
     assert np.all(np.abs(om - 1.0) < 0.02), om
@@ -112,7 +112,7 @@ def test_force_even_moment_first_order_and_restoring(pivot):
     for th in (4e-4, 2e-4):
         tx = tilted_forces(b, x_m=0.0, y_m=0.0, speed_hz=SPEED, theta_x_rad=th)
         ty = tilted_forces(b, x_m=0.0, y_m=0.0, speed_hz=SPEED, theta_y_rad=th)
-        assert tx.moment_n_m[0] < 0.0 and ty.moment_n_m[1] < 0.0
+        assert tx.film_moment_n_m[0] < 0.0 and ty.film_moment_n_m[1] < 0.0
         dc.append(np.hypot(*tx.force_n))
     assert np.log2(dc[0] / dc[1]) > 1.9
 
@@ -145,7 +145,7 @@ def test_4x4_coefficients_match_finite_differences(pivot, flexible):
             q[j] += sg * step[j]
             t = tilted_forces(b, x_m=q[0], y_m=q[1], speed_hz=SPEED, theta_x_rad=q[2],
                               theta_y_rad=q[3])
-            h.append(np.concatenate([t.force_n, t.moment_n_m]))
+            h.append(np.concatenate([t.force_n, t.film_moment_n_m]))
         Kfd[:, j] = -(h[0] - h[1]) / (2 * step[j])
     for rs in (slice(0, 2), slice(2, 4)):
         for cs in (slice(0, 2), slice(2, 4)):
@@ -165,7 +165,7 @@ def test_grid_convergence_of_the_moments():
         Ms = []
         for k in (2, 4, 8):
             b = pads(pivot, n_circ=72 * k, n_axial=4 * k)
-            Ms.append(tilted_forces(b, **POSE, **TILT).moment_n_m)
+            Ms.append(tilted_forces(b, **POSE, **TILT).film_moment_n_m)
         e1, e2 = np.linalg.norm(Ms[1] - Ms[0]), np.linalg.norm(Ms[2] - Ms[1])
         assert np.log2(e1 / e2) == pytest.approx(2.0, abs=0.3), (pivot, e1, e2)
 
@@ -187,7 +187,7 @@ def test_rigid_pads_are_the_four_lobe_bearing():
         t = tilted_forces(b, **POSE, **TILT)
         K, C = tilted_coefficients(b, **POSE, **TILT)
         err.append(max(np.abs(t.force_n - ref.force_n).max() / np.abs(ref.force_n).max(),
-                       np.abs(t.moment_n_m - ref.moment_n_m).max() / np.abs(ref.moment_n_m).max(),
+                       np.abs(t.film_moment_n_m - ref.film_moment_n_m).max() / np.abs(ref.film_moment_n_m).max(),
                        np.abs(K - Kr).max() / np.abs(Kr).max(),
                        np.abs(C - Cr).max() / np.abs(Cr).max()))
         assert (t.h_min_angle_deg, t.h_min_z_m) == (ref.h_min_angle_deg, ref.h_min_z_m)
@@ -212,9 +212,9 @@ def test_a_spherical_pad_follows_a_tilt_about_its_tangent():
     assert f1.pad_pitches_rad[0] == pytest.approx(th, rel=1e-12)
     np.testing.assert_allclose(f1.force_n, f0.force_n, rtol=1e-12, atol=1e-12)
     np.testing.assert_allclose(f1.pad_tilts_rad, f0.pad_tilts_rad, rtol=1e-12)
-    assert np.abs(f1.moment_n_m).max() < 1e-12 * np.abs(f0.force_n).max() * b.length_m
+    assert np.abs(f1.film_moment_n_m).max() < 1e-12 * np.abs(f0.force_n).max() * b.length_m
     r1 = tilted_forces(pads("rocker", **kw), **pose, **tilt)
-    assert np.abs(r1.moment_n_m).max() > 1e-3 * np.abs(f0.force_n).max() * b.length_m
+    assert np.abs(r1.film_moment_n_m).max() > 1e-3 * np.abs(f0.force_n).max() * b.length_m
     assert abs(r1.h_min_z_m) == pytest.approx(0.5 * b.length_m)
     assert r1.h_min_m < f1.h_min_m
 

@@ -62,6 +62,40 @@ Eigen::VectorXd line_start(const StabilityBatchInput& in, Eigen::Index i,
   return l1 * hist[0] + l2 * hist[1] + l3 * hist[2];
 }
 
+bool converged(const std::string& status) { return status == "ok" || status == "contact"; }
+
+/// The one rule for a failed point of either batch (its equilibrium not "ok"/"contact", or
+/// any stage raised: "error"): every numeric output of the point NaN — the equilibrium, the
+/// minimum films and their z, H; the residual of the equilibrium batch; the eigenvalues and
+/// sleeve shares of the stability batch, with n_eig 0, whirl 0 and no modes — and a message
+/// (the status itself when the solver gave none). The iteration count (the work done) stays.
+template <class Result>
+void fail_common(Result& out, Eigen::Index i) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  out.r.row(i).setConstant(nan);
+  out.h_min.row(i).setConstant(nan);
+  out.h_min_z_m.row(i).setConstant(nan);
+  out.film_force.row(i).setConstant(nan);
+  if (out.message[static_cast<std::size_t>(i)].empty())
+    out.message[static_cast<std::size_t>(i)] = "no equilibrium (" +
+                                               out.status[static_cast<std::size_t>(i)] + ")";
+}
+
+void fail_point(StabilityBatchResult& out, Eigen::Index i) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  fail_common(out, i);
+  out.n_eig[i] = 0;
+  out.eigenvalues.row(i).setConstant(std::complex<double>(nan, nan));
+  out.whirl.row(i).setZero();
+  out.sleeve_share.row(i).setConstant(nan);
+  out.modes[static_cast<std::size_t>(i)] = Eigen::MatrixXcd();
+}
+
+void fail_point(EquilibriumBatchResult& out, Eigen::Index i) {
+  fail_common(out, i);
+  out.residual[i] = std::numeric_limits<double>::quiet_NaN();
+}
+
 }  // namespace
 
 StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchInput& in) {
@@ -141,9 +175,12 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
         hist.clear();
         kh_prev.resize(0, 0);
       }
+      if (!converged(e.status)) {
+        fail_point(out, i);
+        continue;
+      }
       for (std::size_t f = 0; f < e.h_min.size() && f < m.films.size(); ++f)
         out.h_min(i, static_cast<Eigen::Index>(f)) = e.h_min[f];
-      if (e.status != "ok" && e.status != "contact") continue;
       out.r.row(i) = e.r.transpose();
       if (e.film_force.size() == n) out.film_force.row(i) = e.film_force.transpose();
       for (std::size_t f = 0; f < e.h_min_z_m.size() && f < m.films.size(); ++f)
@@ -155,6 +192,7 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
       if (!D.allFinite() || !K.allFinite()) {
         out.status[i] = "error";
         out.message[i] = "non-finite bearing coefficients";
+        fail_point(out, i);
         continue;
       }
       if (e.status == "ok" && line_jacobian) kh_prev = lin.KH;
@@ -176,6 +214,7 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
     } catch (const std::exception& ex) {
       out.status[i] = "error";
       out.message[i] = ex.what();
+      fail_point(out, i);
       hist.clear();
       kh_prev.resize(0, 0);
     }
@@ -212,6 +251,12 @@ EquilibriumBatchResult equilibrium_batch(SystemSolver& solver, const StabilityBa
       out.status[i] = e.status;
       out.message[i] = e.message;
       out.iterations[i] = e.iterations;
+      have_prev = e.status == "ok";
+      if (have_prev) prev = e.r;
+      if (!converged(e.status)) {
+        fail_point(out, i);
+        continue;
+      }
       out.residual[i] = e.residual;
       out.r.row(i) = e.r.transpose();
       if (e.film_force.size() == n) out.film_force.row(i) = e.film_force.transpose();
@@ -219,11 +264,10 @@ EquilibriumBatchResult equilibrium_batch(SystemSolver& solver, const StabilityBa
         out.h_min(i, static_cast<Eigen::Index>(f)) = e.h_min[f];
       for (std::size_t f = 0; f < e.h_min_z_m.size() && static_cast<Eigen::Index>(f) < nf; ++f)
         out.h_min_z_m(i, static_cast<Eigen::Index>(f)) = e.h_min_z_m[f];
-      have_prev = e.status == "ok";
-      if (have_prev) prev = e.r;
     } catch (const std::exception& ex) {
       out.status[i] = "error";
       out.message[i] = ex.what();
+      fail_point(out, i);
       have_prev = false;
     }
   }

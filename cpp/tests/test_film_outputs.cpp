@@ -135,4 +135,17 @@ TEST_CASE("stability_batch: film force and h_min z at each equilibrium, NaN wher
   }
   CHECK(!out.film_force.row(2).array().isFinite().any());
   CHECK(std::isnan(out.h_min_z_m(2, 0)));
+  // one rule for a failed point in both batches: every numeric output NaN, a message set
+  // (before, stability_batch kept the failed iterate's h_min and equilibrium_batch its r, H,
+  // h_min, h_min z and residual)
+  CHECK(!out.r.row(2).array().isFinite().any() && !out.h_min.row(2).array().isFinite().any());
+  CHECK(out.n_eig[2] == 0 && !out.eigenvalues.row(2).array().isFinite().any());
+  CHECK(!out.message[2].empty());
+  SystemSolver s2(m);
+  const EquilibriumBatchResult eq = equilibrium_batch(s2, in);
+  CHECK(eq.status == out.status && eq.status[0] == "ok");
+  CHECK((eq.r.row(0) - out.r.row(0)).norm() == 0.0);  // the same cold start, exact Jacobian
+  CHECK(!eq.r.row(2).array().isFinite().any() && !eq.film_force.row(2).array().isFinite().any());
+  CHECK(!eq.h_min.row(2).array().isFinite().any() && std::isnan(eq.h_min_z_m(2, 0)));
+  CHECK(std::isnan(eq.residual[2]) && std::isfinite(eq.residual[0]) && !eq.message[2].empty());
 }

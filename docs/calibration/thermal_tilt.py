@@ -71,7 +71,7 @@ def main():
         print(f"| {th:.1f} | {r.h_min_m * 1e6:.2f}, {r.h_min_z_m * 1e3:+.1f} | "
               f"{r.max_temperature_c_total:.2f}, {z * 1e3:+.1f} | "
               f"{r.mean_temperature_c[k]:.2f} | {r.eccentricity_ratio:.4f} | "
-              f"{r.moment_n_m[0]:+.3f}, {r.moment_n_m[1]:+.3f} | {r.power_loss_w_total:.1f} |")
+              f"{r.film_moment_n_m[0]:+.3f}, {r.film_moment_n_m[1]:+.3f} | {r.power_loss_w_total:.1f} |")
     untilted = dataclasses.replace(b, tilt=False)
     t0 = cpu(lambda: untilted.thermal_equilibrium(**kw), args.repeat)
     t1 = cpu(lambda: b.thermal_equilibrium(**kw, theta_y_rad=4e-4), args.repeat)

@@ -54,7 +54,7 @@ def main():
             r = plain.thermal_equilibrium(**kw, model=model, theta_y_rad=th, tilt=True)
             print(f"{model} | {th * 1e3:.1f} | {r.h_min_m * 1e6:.2f}, {r.h_min_z_m * 1e3:+.1f} | "
                   f"{r.max_temperature_c:.2f} | {r.eccentricity_ratio:.4f} | "
-                  f"{r.moment_n_m[0]:+.3f}, {r.moment_n_m[1]:+.3f} | {r.power_loss_w:.1f}")
+                  f"{r.film_moment_n_m[0]:+.3f}, {r.film_moment_n_m[1]:+.3f} | {r.power_loss_w:.1f}")
         t = medians([lambda: plain.thermal_equilibrium(**kw, model=model),
                      lambda: plain.thermal_equilibrium(**kw, model=model, theta_y_rad=4e-4)],
                     args.repeat)
@@ -69,7 +69,7 @@ def main():
         r = pads.thermal_equilibrium(**pkw, theta_y_rad=th)
         print(f"{th * 1e3:.1f} | {r.h_min_m * 1e6:.2f}, {r.h_min_z_m * 1e3:+.1f} | "
               f"{r.max_temperature_c_total:.2f} | {r.eccentricity_ratio:.4f} | "
-              f"{r.moment_n_m[0]:+.3f}, {r.moment_n_m[1]:+.3f} | {r.power_loss_w_total:.1f}")
+              f"{r.film_moment_n_m[0]:+.3f}, {r.film_moment_n_m[1]:+.3f} | {r.power_loss_w_total:.1f}")
     untilted = dataclasses.replace(pads, tilt=False)
     t = medians([lambda: untilted.thermal_equilibrium(**pkw),
                  lambda: pads.thermal_equilibrium(**pkw, theta_y_rad=4e-4)], args.repeat)

@@ -28,7 +28,10 @@ def rad_s_to_rpm(w_rad_s):
 
 
 # The suffix vocabulary of column names and fields (longest first): the unit each names.
-SUFFIX_UNITS = (("_n_s_per_m", "N·s/m"), ("_n_per_m", "N/m"), ("_n_m_per_rad", "N·m/rad"), ("_nm_per_rad", "N·m/rad"),
+SUFFIX_UNITS = (("_n_m_s_per_rad", "N·m·s/rad"), ("_n_m_s_per_m", "N·m·s/m"),
+                ("_n_s_per_rad", "N·s/rad"), ("_n_m_per_m", "N·m/m"), ("_n_per_rad", "N/rad"),
+                ("_n_s_per_m", "N·s/m"), ("_n_per_m", "N/m"), ("_n_m_per_rad", "N·m/rad"),
+                ("_nm_per_rad", "N·m/rad"),
                 ("_j_per_kg_k", "J/(kg·K)"), ("_w_per_m_k", "W/(m·K)"), ("_w_m2k", "W/(m²·K)"),
                 ("_kg_m3", "kg/m³"), ("_kg_m2", "kg·m²"), ("_1_per_s", "1/s"), ("_mm2_s", "mm²/s"),
                 ("_pa_s", "Pa·s"), ("_m3_s", "m³/s"), ("_rad_s", "rad/s"), ("_hz", "Hz"),
@@ -52,3 +55,24 @@ def unit_of(name: str) -> str:
     """The unit a column or field name carries in its suffix (``bearing[0].clearance_m`` →
     ``m``); ``"1"`` for a name without a unit suffix (dimensionless)."""
     return split_unit(name)[1]
+
+
+# A tilting film's 4×4 K, C over (x, y, θx, θy), ΔH = −K Δr − C Δṙ: the unit of entry (i, j)
+# by its row block (0: the forces Fx, Fy; 1: the moments Mx, My) and column block (0: the
+# translations x, y; 1: the rotations θx, θy), as the suffix stem of its column name
+# (``k<i><j>_<stem>``, rotordyn.analysis.bearing_coefficients) — the one definition the
+# coefficient frames, the report's tables and ``rotordyn bearing``'s 4×4 units are read from.
+TILT_COORDINATES = ("x", "y", "theta_x", "theta_y")
+TILT_UNIT_STEMS = {"k": (("n_per_m", "n_per_rad"), ("n_m_per_m", "n_m_per_rad")),
+                   "c": (("n_s_per_m", "n_s_per_rad"), ("n_m_s_per_m", "n_m_s_per_rad"))}
+
+
+def tilt_unit_stem(kind: str, i: int, j: int) -> str:
+    """The unit stem of entry (i, j) of the 4×4 ``kind`` ("k" or "c") over
+    :data:`TILT_COORDINATES` (``n_m_per_rad`` for K[2, 3])."""
+    return TILT_UNIT_STEMS[kind][i // 2][j // 2]
+
+
+def tilt_units(kind: str) -> list[list[str]]:
+    """The 4×4 of units (``N/m`` … ``N·m/rad``) of ``kind`` ("k" or "c")."""
+    return [[unit_of("_" + tilt_unit_stem(kind, i, j)) for j in range(4)] for i in range(4)]

@@ -53,8 +53,11 @@ struct StabilityBatchResult {
 };
 
 /// Points in order on one solver; a point failing at any stage gets status "error" (or the
-/// equilibrium's status) and the batch goes on. Continuation: a point with restart = 0 starts
-/// from the previous point's equilibrium when that one converged ("ok"), extrapolated along
+/// equilibrium's status) and the batch goes on. A failed point (not "ok"/"contact"): every
+/// numeric output NaN (r, h_min, h_min_z_m, film_force, eigenvalues, sleeve_share; n_eig 0,
+/// no modes) and a message — the rule of equilibrium_batch too; iterations kept.
+/// Continuation: a point with restart = 0 starts from the previous point's equilibrium when
+/// that one converged ("ok"), extrapolated along
 /// the line (quadratic through up to three converged predecessors whose inputs lie on one
 /// straight line; retried from the previous equilibrium itself if that start fails).
 StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchInput& in);
@@ -65,15 +68,18 @@ struct EquilibriumBatchResult {
   std::vector<std::string> status, message;  ///< (n_pts,) "error": the solve raised
   Eigen::VectorXi iterations;                ///< (n_pts,)
   Eigen::VectorXd residual;                  ///< (n_pts,)
-  RowMatrixXd r;                             ///< (n_pts, n) equilibrium (NaN on "error")
+  RowMatrixXd r;                             ///< (n_pts, n) equilibrium
   RowMatrixXd h_min;                         ///< (n_pts, n_films)
   RowMatrixXd h_min_z_m;                     ///< (n_pts, n_films) axial position of h_min, m
-  RowMatrixXd film_force;                    ///< (n_pts, n) H at the equilibrium (NaN on "error")
+  RowMatrixXd film_force;                    ///< (n_pts, n) H at the equilibrium
+  // a failed point (not "ok"/"contact", or "error": the solve raised): residual, r, h_min,
+  // h_min_z_m and film_force NaN, a message set (stability_batch's rule); iterations kept
 };
 
 /// Points in order on one solver, exactly as a Python loop of solver.equilibrium calls
-/// would: a point with restart = 0 starts from the previous point's equilibrium when that
-/// one's status was "ok", else (and after a point that raised) from the concentric state.
+/// would (but a failed point's outputs NaN, above): a point with restart = 0 starts from the
+/// previous point's equilibrium when that one's status was "ok", else (and after a point
+/// that raised) from the concentric state.
 EquilibriumBatchResult equilibrium_batch(SystemSolver& solver, const StabilityBatchInput& in);
 
 }  // namespace rotordyn

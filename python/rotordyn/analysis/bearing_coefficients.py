@@ -23,7 +23,7 @@ from rotordyn.analysis.linear import continued_linear_models
 from rotordyn.bearings._film import reduce_coefficients
 from rotordyn.bearings.coefficients import COEFF_NAMES
 from rotordyn.errors import InputError
-from rotordyn.units import hz_to_rad_s
+from rotordyn.units import hz_to_rad_s, tilt_unit_stem
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -32,16 +32,13 @@ COLUMNS = ("bearing", "station", "speed_hz") + tuple(
     f"{n}_n_per_m" for n in COEFF_NAMES[:4]) + tuple(
     f"{n}_n_s_per_m" for n in COEFF_NAMES[4:]) + ("status",)
 # A tilting film (tilt = true): its 4×4 over (x, y, θx, θy) beyond the translational block,
-# K[i, j] = −∂H_i/∂r_j, C the same per velocity, as columns ``k<i><j>_<units>`` with tx, ty
-# for θx, θy: the force–tilt block (N/rad, N·s/rad), the moment–translation block (N·m/m,
-# N·m·s/m) and the tilt–tilt block (N·m/rad, N·m·s/rad); NaN for a bearing without one.
+# K[i, j] = −∂H_i/∂r_j, C the same per velocity, as columns ``k<i><j>_<unit stem>`` with tx,
+# ty for θx, θy: the force–tilt, moment–translation and tilt–tilt blocks, each entry's unit
+# from rotordyn.units.tilt_unit_stem (N/rad … N·m·s/rad); NaN for a bearing without one.
 _Q = ("x", "y", "tx", "ty")
-_KU = {(0, 0): "n_per_m", (0, 1): "n_per_rad", (1, 0): "n_m_per_m", (1, 1): "n_m_per_rad"}
-_CU = {(0, 0): "n_s_per_m", (0, 1): "n_s_per_rad", (1, 0): "n_m_s_per_m",
-       (1, 1): "n_m_s_per_rad"}
-TILT_COLUMNS = tuple(f"{kc}{_Q[i]}{_Q[j]}_{u[(i // 2, j // 2)]}"
-                     for kc, u in (("k", _KU), ("c", _CU))
-                     for i in range(4) for j in range(4) if i >= 2 or j >= 2)
+TILT_COLUMNS = tuple(f"{kc}{_Q[i]}{_Q[j]}_{tilt_unit_stem(kc, i, j)}"
+                     for kc in ("k", "c") for i in range(4) for j in range(4)
+                     if i >= 2 or j >= 2)
 
 
 def _element_matrices(lm, b, name: str, idx: list[int]):

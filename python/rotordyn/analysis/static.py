@@ -107,8 +107,8 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
             reactions.append({"name": b.name, "station": int(b.station), "kind": kinds[type(b)],
                               "force_x_n": float(H[bc.jx]), "force_y_n": float(H[bc.jy])})
             if bc.rot:  # a tilting film: its moments on the journal (the rotations' H)
-                reactions[-1] |= {"moment_x_n_m": float(H[bc.rot[0]]),
-                                  "moment_y_n_m": float(H[bc.rot[1]])}
+                reactions[-1] |= {"film_moment_x_n_m": float(H[bc.rot[0]]),
+                                  "film_moment_y_n_m": float(H[bc.rot[1]])}
     else:
         try:
             u = np.linalg.solve(Kc, fc)
@@ -138,8 +138,8 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
                           "force_x_n": float(fx), "force_y_n": float(fy)})
     reactions.sort(key=lambda r: r["station"])
     columns = ["name", "station", "kind", "force_x_n", "force_y_n"]
-    if any("moment_x_n_m" in r for r in reactions):
-        columns += ["moment_x_n_m", "moment_y_n_m"]
+    if any("film_moment_x_n_m" in r for r in reactions):
+        columns += ["film_moment_x_n_m", "film_moment_y_n_m"]
     z, F = _element_forces(system, u_full, g)
     # left end of an element: the forces left of the section are what the rotor to the left
     # exerts on it (+F); right end: minus the force the rest exerts there (−F).

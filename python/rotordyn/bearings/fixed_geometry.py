@@ -291,7 +291,8 @@ class FixedGeometryBearing:
         the effective-temperature model per lobe (``effective_factor`` k), as for tilting
         pads.
 
-        ``theta_x_rad``, ``theta_y_rad``: the journal's tilt relative to the bearing (rad; as
+        ``theta_x_rad``, ``theta_y_rad`` (inputs; the result names them ``journal_theta_*``): the
+        journal's tilt relative to the bearing (rad; as
         :func:`rotordyn.bearings.tilt.misaligned_equilibrium`; a pose that closes a lobe's
         film at an edge is an InputError naming them). With a tilt, or with ``tilt`` True
         (None: the bearing's own field), the lobes' films carry it (:mod:`rotordyn.bearings.tilt_thermal`) and the result

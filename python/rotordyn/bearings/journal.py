@@ -407,8 +407,8 @@ class JournalBearing:
         adiabatic), ``journal_temperature_c``, ``bush_temperature_c`` (None: the supply
         temperature). Returns a :class:`rotordyn.bearings.thd.ThdEquilibriumResult`.
 
-        ``theta_x_rad``, ``theta_y_rad`` (rad), or ``tilt=True``: the journal tilted relative
-        to the bearing (:func:`rotordyn.bearings.tilt_thermal.plain_tilted_thermal_equilibrium`:
+        ``theta_x_rad``, ``theta_y_rad`` (rad; inputs: the result names them
+        ``journal_theta_*``), or ``tilt=True``: the journal tilted relative to the bearing (:func:`rotordyn.bearings.tilt_thermal.plain_tilted_thermal_equilibrium`:
         adds the moments, edge film and K4, C4 at the frozen temperature)."""
         opts = film_thermal_options(model, thd, supply_temperature_c=supply_temperature_c,
                                     supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,

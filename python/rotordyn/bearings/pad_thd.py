@@ -32,7 +32,17 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
+from rotordyn.bearings.tilt_names import RenamedTiltOutputs
 from rotordyn.errors import ConvergenceError, InputError
+
+
+def failed_equilibrium(what: str, eq) -> ConvergenceError:
+    """The ConvergenceError of a thermal equilibrium ``eq`` (the core's EquilibriumResult)
+    that did not converge, carrying its ``status`` and ``detail`` (the core's message) for a
+    caller that reports the failed point as a status record (``rotordyn bearing``)."""
+    exc = ConvergenceError(f"{what}: {eq.status}: {eq.message}")
+    exc.status, exc.detail = str(eq.status), str(eq.message)
+    return exc
 
 
 def pad_fields(fields, films, where: str):
@@ -121,7 +131,7 @@ def pad_model_options(model: str, *, supply_temperature_c, supply_flow_m3_s, car
 
 
 @dataclass(frozen=True, slots=True)
-class PadThdResult:
+class PadThdResult(RenamedTiltOutputs):
     """THD equilibrium of a pad bearing (tilting pads or fixed-geometry lobes) and its K, C
     with the temperature field frozen.
 
@@ -138,10 +148,13 @@ class PadThdResult:
     field), ``inlet_mask``, ``flows`` (face flows, cell dissipation and area).
 
     A tilted journal (:meth:`rotordyn.bearings.FixedGeometryBearing.thermal_equilibrium` or
-    :meth:`rotordyn.bearings.TiltingPadBearing.thermal_equilibrium` with ``theta_x_rad``,
-    ``theta_y_rad`` or ``tilt = True``): ``theta_x_rad``, ``theta_y_rad``,
-    the moments ``moment_n_m`` (Mx, My) N·m, the edge film ``h_min_m`` and its ``h_min_z_m``,
-    and ``K4``, ``C4`` (4×4 over x, y, θx, θy, ΔH = −K Δr − C Δṙ) at the frozen field.
+    :meth:`rotordyn.bearings.TiltingPadBearing.thermal_equilibrium` with the inputs
+    ``theta_x_rad``, ``theta_y_rad`` or ``tilt = True``): the tilt ``journal_theta_x_rad``,
+    ``journal_theta_y_rad``, the film's force ``force_n`` (Fx, Fy) N and moments
+    ``film_moment_n_m`` (Mx, My) N·m on the journal, the edge film ``h_min_m`` at
+    ``h_min_angle_deg``, ``h_min_z_m``, and ``K4``, ``C4`` (4×4 over x, y, θx, θy,
+    ΔH = −K Δr − C Δṙ) at the frozen field (the names of
+    :mod:`rotordyn.bearings.tilt_names`).
 
     ``thermal_model = "effective"`` (the effective-temperature model per pad): each pad is
     isoviscous at μ(T_eff); ``mean_temperature_c`` (also :attr:`effective_temperature_c`) is
@@ -180,13 +193,16 @@ class PadThdResult:
     message: str = ""
     thermal_model: str = "thd"
     # a tilted journal (fixed-geometry, tilting pads; rotordyn.bearings.tilt_thermal): its tilt
-    # relative to the bearing (rad), the film moments on it (N·m, about x, y), the edge film
-    # (m, and its z) and K, C 4×4 over (x, y, θx, θy) at the frozen field; None untilted
-    theta_x_rad: float = 0.0
-    theta_y_rad: float = 0.0
-    moment_n_m: np.ndarray | None = field(default=None, repr=False)
+    # relative to the bearing (rad), the film's force (N) and moments (N·m, about x, y) on it,
+    # the edge film (m, its angle deg and z) and K, C 4×4 over (x, y, θx, θy) at the frozen
+    # field; None untilted (the names of rotordyn.bearings.tilt_names)
+    journal_theta_x_rad: float = 0.0
+    journal_theta_y_rad: float = 0.0
+    film_moment_n_m: np.ndarray | None = field(default=None, repr=False)
     h_min_m: float = math.nan
     h_min_z_m: float = math.nan
+    force_n: np.ndarray | None = field(default=None, repr=False)
+    h_min_angle_deg: float = math.nan
     K4: np.ndarray | None = field(default=None, repr=False)
     C4: np.ndarray | None = field(default=None, repr=False)
     # the THD pads' walls (rotordyn.bearings.thd_walls), per pad: heat to the journal and to
@@ -279,11 +295,12 @@ class PadThdResult:
                 for j, b in enumerate("xy"):
                     df[f"{name}{a}{b}_{unit}"] = float(A[i, j])
         if self.K4 is not None:  # a tilted journal
-            df["theta_x_rad"] = self.theta_x_rad
-            df["theta_y_rad"] = self.theta_y_rad
-            df["moment_x_n_m"] = float(self.moment_n_m[0])
-            df["moment_y_n_m"] = float(self.moment_n_m[1])
+            df["journal_theta_x_rad"] = self.journal_theta_x_rad
+            df["journal_theta_y_rad"] = self.journal_theta_y_rad
+            df["film_moment_x_n_m"] = float(self.film_moment_n_m[0])
+            df["film_moment_y_n_m"] = float(self.film_moment_n_m[1])
             df["h_min_m"] = self.h_min_m
+            df["h_min_angle_deg"] = self.h_min_angle_deg
             df["h_min_z_m"] = self.h_min_z_m
         df["status"] = self.status
         df["message"] = self.message
@@ -323,7 +340,7 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
     res = _core.thermal_system_equilibrium(model, tf, omega, 0.0, np.zeros(n), eopt)
     eq = res.equilibrium
     if eq.status not in ("ok", "contact"):
-        raise ConvergenceError(f"pad THD equilibrium: {eq.status}: {eq.message}")
+        raise failed_equilibrium("pad THD equilibrium", eq)
     st = list(res.films)
     r = np.asarray(eq.r)
     thd = isinstance(opts, _core.ThdOptions)

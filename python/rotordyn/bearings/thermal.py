@@ -19,6 +19,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings.thd_walls import WALL_OPTIONS, check_walls
+from rotordyn.bearings.tilt_names import RenamedTiltOutputs
 from rotordyn.errors import InputError
 
 VISCOSITY_LAWS = ("walther", "exponential", "power")
@@ -82,14 +83,17 @@ class Oil:
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)
-class TiltedJournalOutputs:
+class TiltedJournalOutputs(RenamedTiltOutputs):
     """A tilted journal's outputs of a thermal equilibrium (rotordyn.bearings.tilt_thermal):
-    its tilt relative to the bearing (rad), the film moments on it (N·m, about x, y), the edge
-    film (m, its angle deg and z m) and K, C 4×4 over (x, y, θx, θy) at the frozen temperature;
-    None untilted. Keyword-only, after the result's own fields."""
-    theta_x_rad: float = 0.0
-    theta_y_rad: float = 0.0
-    moment_n_m: np.ndarray | None = field(default=None, repr=False)
+    its tilt relative to the bearing (rad), the film's force (N, Fx, Fy: it carries the load)
+    and moments (N·m, about x, y) on it at the frozen temperature, the edge film (m, its angle
+    deg and z m) and K, C 4×4 over (x, y, θx, θy) at the frozen temperature; None untilted.
+    Keyword-only, after the result's own fields; the names of the system's outputs
+    (:mod:`rotordyn.bearings.tilt_names`)."""
+    journal_theta_x_rad: float = 0.0
+    journal_theta_y_rad: float = 0.0
+    force_n: np.ndarray | None = field(default=None, repr=False)
+    film_moment_n_m: np.ndarray | None = field(default=None, repr=False)
     h_min_m: float = math.nan
     h_min_angle_deg: float = math.nan
     h_min_z_m: float = math.nan
@@ -104,8 +108,9 @@ class ThermalEquilibriumResult(TiltedJournalOutputs):
     Temperatures °C; ``temperature_rise_k`` ΔT (K); flows m³/s (``film_flow_m3_s`` Q across
     the line of maximum film, ``side_flow_m3_s`` Q_s, ``supply_flow_m3_s`` the fresh oil);
     ``power_loss_w`` the friction power; K (N/m), C (N·s/m) 2×2 with dF = −K dq − C dq̇.
-    A tilted journal (``thermal_equilibrium(..., theta_x_rad, theta_y_rad)``): the tilt, the
-    moments ``moment_n_m`` (N·m), the edge film ``h_min_m`` at ``h_min_angle_deg``,
+    A tilted journal (``thermal_equilibrium(..., theta_x_rad, theta_y_rad)``, inputs): the
+    tilt ``journal_theta_x_rad``, ``journal_theta_y_rad``, the film's force ``force_n`` (N)
+    and moments ``film_moment_n_m`` (N·m), the edge film ``h_min_m`` at ``h_min_angle_deg``,
     ``h_min_z_m`` and ``K4``, ``C4`` (4×4 over x, y, θx, θy) at the frozen temperature.
     """
 
@@ -174,8 +179,10 @@ def tilt_columns(res) -> dict:
     """A tilted plain film's columns (none untilted): its tilt, moments and edge film."""
     if res.K4 is None:
         return {}
-    return {"theta_x_rad": res.theta_x_rad, "theta_y_rad": res.theta_y_rad,
-            "moment_x_n_m": float(res.moment_n_m[0]), "moment_y_n_m": float(res.moment_n_m[1]),
+    return {"journal_theta_x_rad": res.journal_theta_x_rad,
+            "journal_theta_y_rad": res.journal_theta_y_rad,
+            "film_moment_x_n_m": float(res.film_moment_n_m[0]),
+            "film_moment_y_n_m": float(res.film_moment_n_m[1]),
             "h_min_m": res.h_min_m, "h_min_angle_deg": res.h_min_angle_deg,
             "h_min_z_m": res.h_min_z_m}
 

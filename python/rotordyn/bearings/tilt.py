@@ -12,9 +12,16 @@ By virtual work the generalised film forces on the four coordinates are
 H_k = ∫∫ p ∂h/∂r_k dA: the forces (Fx, Fy) = −∫∫ p (cos φ, sin φ) dA and the moments about
 the bearing centre Mx = ∫∫ p z sin φ dA, My = −∫∫ p z cos φ dA (= (r × dF) with dF the
 pressure force on the journal surface). Linear coefficients over (x, y, θx, θy) are
-defined by ΔH = −K Δr − C Δṙ (4×4; units N/m, N/rad, N·m/m, N·m/rad and the same per
-second for C). A bearing's own angular misalignment (housing rotated by (αx, αy)) is the
-same film seen by a journal at rotation θ − α relative to the housing.
+defined by ΔH = −K Δr − C Δṙ (4×4; each entry's unit from :data:`rotordyn.units.
+TILT_UNIT_STEMS`: N/m, N/rad, N·m/m, N·m/rad, and per m/s or rad/s for C). A bearing's own
+angular misalignment (housing rotated by (αx, αy)) is the same film seen by a journal at
+rotation θ − α relative to the housing.
+
+Names: the keyword arguments ``theta_x_rad``, ``theta_y_rad`` are *inputs* (the tilt imposed
+on the journal, relative to the bearing); the results name the tilt and the film's moments
+as the system's outputs do, ``journal_theta_x_rad``, ``journal_theta_y_rad``,
+``film_moment_n_m`` (frames: ``film_moment_x_n_m``, ``film_moment_y_n_m``;
+:mod:`rotordyn.bearings.tilt_names`).
 
 A :class:`rotordyn.bearings.FixedGeometryBearing` (partial arc, lobed, offset halves,
 pressure dam) takes the same functions: its lobes' films with the rotations' shapes on their
@@ -47,6 +54,7 @@ from rotordyn.bearings.tilt_film import (axial_positions, check_plain_pose,  # n
 from rotordyn.bearings.tilt_pads import (pad_misaligned_equilibrium, pad_tilted_coefficients,
                                          pad_tilted_forces)
 from rotordyn.bearings.tilting_pad import TiltingPadBearing
+from rotordyn.bearings.tilt_names import RenamedTiltOutputs
 from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
@@ -139,12 +147,12 @@ def _solver(bearing) -> _core.SystemSolver:
 
 
 @dataclass(frozen=True)
-class TiltedFilm:
+class TiltedFilm(RenamedTiltOutputs):
     """Film of a tilted journal: forces (Fx, Fy) N and moments (Mx, My) N·m on the journal
     about the bearing centre; minimum film (m) and where it is (φ deg from +x, z m)."""
 
     force_n: np.ndarray
-    moment_n_m: np.ndarray
+    film_moment_n_m: np.ndarray
     h_min_m: float
     h_min_angle_deg: float
     h_min_z_m: float
@@ -154,7 +162,8 @@ class TiltedFilm:
 
         return pd.DataFrame([{
             "force_x_n": self.force_n[0], "force_y_n": self.force_n[1],
-            "moment_x_n_m": self.moment_n_m[0], "moment_y_n_m": self.moment_n_m[1],
+            "film_moment_x_n_m": self.film_moment_n_m[0],
+            "film_moment_y_n_m": self.film_moment_n_m[1],
             "h_min_m": self.h_min_m, "h_min_angle_deg": self.h_min_angle_deg,
             "h_min_z_m": self.h_min_z_m}])
 
@@ -192,7 +201,7 @@ def tilted_forces(bearing: FilmBearing, *,
     H = np.asarray(s.film_forces(r, rd, TWO_PI * _speed(speed_hz)))
     phis = _lobe_solver(bearing)[1] if isinstance(bearing, FixedGeometryBearing) else None
     hm, ha, hz = _min_film(s, phis)
-    return TiltedFilm(force_n=H[:2].copy(), moment_n_m=H[2:].copy(), h_min_m=hm,
+    return TiltedFilm(force_n=H[:2].copy(), film_moment_n_m=H[2:].copy(), h_min_m=hm,
                       h_min_angle_deg=ha, h_min_z_m=hz)
 
 
@@ -229,7 +238,7 @@ def tilted_coefficients(bearing: FilmBearing,
 
 
 @dataclass(frozen=True)
-class MisalignedEquilibrium:
+class MisalignedEquilibrium(RenamedTiltOutputs):
     """Journal position under a static load at an imposed tilt (θx, θy) relative to the
     bearing (the bearing's misalignment seen by a journal held parallel to the shaft line):
     position (m), eccentricity ratio and attitude at the mid-plane, the film's forces (N) and
@@ -237,12 +246,12 @@ class MisalignedEquilibrium:
 
     x_m: float
     y_m: float
-    theta_x_rad: float
-    theta_y_rad: float
+    journal_theta_x_rad: float
+    journal_theta_y_rad: float
     eccentricity_ratio: float
     attitude_angle_deg: float
     force_n: np.ndarray
-    moment_n_m: np.ndarray
+    film_moment_n_m: np.ndarray
     h_min_m: float
     h_min_angle_deg: float
     h_min_z_m: float
@@ -254,11 +263,13 @@ class MisalignedEquilibrium:
         import pandas as pd
 
         return pd.DataFrame([{
-            "x_m": self.x_m, "y_m": self.y_m, "theta_x_rad": self.theta_x_rad,
-            "theta_y_rad": self.theta_y_rad, "eccentricity_ratio": self.eccentricity_ratio,
+            "x_m": self.x_m, "y_m": self.y_m, "journal_theta_x_rad": self.journal_theta_x_rad,
+            "journal_theta_y_rad": self.journal_theta_y_rad,
+            "eccentricity_ratio": self.eccentricity_ratio,
             "attitude_angle_deg": self.attitude_angle_deg,
             "force_x_n": self.force_n[0], "force_y_n": self.force_n[1],
-            "moment_x_n_m": self.moment_n_m[0], "moment_y_n_m": self.moment_n_m[1],
+            "film_moment_x_n_m": self.film_moment_n_m[0],
+            "film_moment_y_n_m": self.film_moment_n_m[1],
             "h_min_m": self.h_min_m, "h_min_angle_deg": self.h_min_angle_deg,
             "h_min_z_m": self.h_min_z_m, "status": self.status, "message": self.message}])
 
@@ -315,9 +326,9 @@ def misaligned_equilibrium(bearing: FilmBearing,
     else:
         att = math.nan
     return MisalignedEquilibrium(
-        x_m=x, y_m=y, theta_x_rad=tx, theta_y_rad=ty,
+        x_m=x, y_m=y, journal_theta_x_rad=tx, journal_theta_y_rad=ty,
         eccentricity_ratio=math.hypot(x, y) / bearing.clearance_m, attitude_angle_deg=att,
-        force_n=film_at.force_n, moment_n_m=film_at.moment_n_m, h_min_m=film_at.h_min_m,
+        force_n=film_at.force_n, film_moment_n_m=film_at.film_moment_n_m, h_min_m=film_at.h_min_m,
         h_min_angle_deg=film_at.h_min_angle_deg, h_min_z_m=film_at.h_min_z_m, status=status,
         message=message, iterations=int(e.iterations))
 

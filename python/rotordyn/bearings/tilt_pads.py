@@ -34,6 +34,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import reduce_coefficients, speed_limit
+from rotordyn.bearings.tilt_names import RenamedTiltOutputs
 from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
@@ -206,7 +207,7 @@ def _pad_equilibrium(b, pose: np.ndarray, omega: float, tol: float):
 
 
 @dataclass(frozen=True)
-class PadTiltedFilm:
+class PadTiltedFilm(RenamedTiltOutputs):
     """The film of a tilting-pad bearing on a journal held at a pose, every pad at its
     equilibrium: forces (Fx, Fy) N and moments (Mx, My) N·m on the journal about the bearing
     centre; the thinnest pad's minimum film (m) and where it is (φ deg from +x, z m); per pad
@@ -215,7 +216,7 @@ class PadTiltedFilm:
     ``unloaded_pads`` the pads without a pressured equilibrium."""
 
     force_n: np.ndarray
-    moment_n_m: np.ndarray
+    film_moment_n_m: np.ndarray
     h_min_m: float
     h_min_angle_deg: float
     h_min_z_m: float
@@ -237,8 +238,8 @@ class PadTiltedFilm:
             "pad_pitch_rad": self.pad_pitches_rad, "h_min_m": self.pad_h_min_m,
             "h_min_z_m": self.pad_h_min_z_m,
             "force_x_n": np.full(n, self.force_n[0]), "force_y_n": np.full(n, self.force_n[1]),
-            "moment_x_n_m": np.full(n, self.moment_n_m[0]),
-            "moment_y_n_m": np.full(n, self.moment_n_m[1])})
+            "film_moment_x_n_m": np.full(n, self.film_moment_n_m[0]),
+            "film_moment_y_n_m": np.full(n, self.film_moment_n_m[1])})
 
 
 def _film_at(lay: _Layout, r_full: np.ndarray, omega: float, unloaded: int) -> PadTiltedFilm:
@@ -256,7 +257,7 @@ def _film_at(lay: _Layout, r_full: np.ndarray, omega: float, unloaded: int) -> P
     j = int(round(float(s.last_h_min_angle_deg[i]) / 360.0 * len(phi))) % len(phi)
     ang = float(np.degrees(phi[j]) % 360.0) if np.isfinite(phi[j]) else math.nan
     tilts, pitches = lay.pads(r_full)
-    return PadTiltedFilm(force_n=F, moment_n_m=H[2:4].copy(), h_min_m=float(h[i]),
+    return PadTiltedFilm(force_n=F, film_moment_n_m=H[2:4].copy(), h_min_m=float(h[i]),
                          h_min_angle_deg=ang, h_min_z_m=float(hz[i]), pad_tilts_rad=tilts,
                          pad_pitches_rad=pitches, pad_h_min_m=h.copy(), pad_h_min_z_m=hz.copy(),
                          r=r_full.copy(), unloaded_pads=int(unloaded))
@@ -307,7 +308,7 @@ def pad_tilted_coefficients(b, *, x_m: float, y_m: float, speed_hz: float,
 
 
 @dataclass(frozen=True)
-class PadMisalignedEquilibrium:
+class PadMisalignedEquilibrium(RenamedTiltOutputs):
     """The journal of a tilting-pad bearing under a static load at an imposed tilt (θx, θy)
     relative to the bearing, the pads free: position (m), eccentricity ratio and attitude at
     the mid-plane, forces (N) and moments (N·m) on the journal, the thinnest pad's minimum film
@@ -318,12 +319,12 @@ class PadMisalignedEquilibrium:
 
     x_m: float
     y_m: float
-    theta_x_rad: float
-    theta_y_rad: float
+    journal_theta_x_rad: float
+    journal_theta_y_rad: float
     eccentricity_ratio: float
     attitude_angle_deg: float
     force_n: np.ndarray
-    moment_n_m: np.ndarray
+    film_moment_n_m: np.ndarray
     h_min_m: float
     h_min_angle_deg: float
     h_min_z_m: float
@@ -339,11 +340,13 @@ class PadMisalignedEquilibrium:
         import pandas as pd
 
         return pd.DataFrame([{
-            "x_m": self.x_m, "y_m": self.y_m, "theta_x_rad": self.theta_x_rad,
-            "theta_y_rad": self.theta_y_rad, "eccentricity_ratio": self.eccentricity_ratio,
+            "x_m": self.x_m, "y_m": self.y_m, "journal_theta_x_rad": self.journal_theta_x_rad,
+            "journal_theta_y_rad": self.journal_theta_y_rad,
+            "eccentricity_ratio": self.eccentricity_ratio,
             "attitude_angle_deg": self.attitude_angle_deg,
             "force_x_n": self.force_n[0], "force_y_n": self.force_n[1],
-            "moment_x_n_m": self.moment_n_m[0], "moment_y_n_m": self.moment_n_m[1],
+            "film_moment_x_n_m": self.film_moment_n_m[0],
+            "film_moment_y_n_m": self.film_moment_n_m[1],
             "h_min_m": self.h_min_m, "h_min_angle_deg": self.h_min_angle_deg,
             "h_min_z_m": self.h_min_z_m, "status": self.status, "message": self.message}])
 
@@ -403,9 +406,9 @@ def pad_misaligned_equilibrium(b, *, load_n, speed_hz: float,
         att = math.degrees(math.atan2(dx * y - dy * x, dx * x + dy * y))
         att = -att if f < 0 else att
     return PadMisalignedEquilibrium(
-        x_m=x, y_m=y, theta_x_rad=tx, theta_y_rad=ty,
+        x_m=x, y_m=y, journal_theta_x_rad=tx, journal_theta_y_rad=ty,
         eccentricity_ratio=math.hypot(x, y) / b.clearance_m, attitude_angle_deg=att,
-        force_n=film.force_n, moment_n_m=film.moment_n_m, h_min_m=film.h_min_m,
+        force_n=film.force_n, film_moment_n_m=film.film_moment_n_m, h_min_m=film.h_min_m,
         h_min_angle_deg=film.h_min_angle_deg, h_min_z_m=film.h_min_z_m, status=status,
         message=message, iterations=int(e.iterations), path=str(e.path), film=film, K=K, C=C)
 

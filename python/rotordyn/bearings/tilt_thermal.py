@@ -24,7 +24,10 @@ A tilted film is not symmetric in z: its grid is solved whole, and its temperatu
 not symmetrised. At that thermal equilibrium, with the temperature (viscosity) field
 **frozen**, the four-coordinate films give the moments on the journal, the edge film and the
 4×4 K, C over (x, y, θx, θy) (ΔH = −K Δr − C Δṙ, the convention of :mod:`rotordyn.bearings.
-tilt`; tilting pads condensed at the whirl frequency)."""
+tilt`; tilting pads condensed at the whirl frequency). ``theta_x_rad``, ``theta_y_rad`` are the
+inputs (the held tilt); the results carry it as ``journal_theta_x_rad``,
+``journal_theta_y_rad``, with ``force_n`` and ``film_moment_n_m`` (the names of
+:mod:`rotordyn.bearings.tilt_names`)."""
 
 from __future__ import annotations
 
@@ -37,8 +40,8 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import SystemParts, imposed_tilt, min_film, reduce_coefficients
-from rotordyn.bearings.pad_thd import pad_fields, pad_thd_equilibrium
-from rotordyn.errors import ConvergenceError, InputError
+from rotordyn.bearings.pad_thd import failed_equilibrium, pad_fields, pad_thd_equilibrium
+from rotordyn.errors import InputError
 
 TWO_PI = 2.0 * math.pi
 
@@ -75,11 +78,12 @@ def tilted_thermal_equilibrium(bearing, *, theta_x_rad: float, theta_y_rad: floa
     r4 = np.array([res.x_m, res.y_m, tx, ty])
     w = TWO_PI * float(speed_hz)
     H = np.asarray(solver.film_forces(r4, np.zeros(4), w))
-    h_min, _, h_z = min_film(solver, [p.phi for p in four])
+    h_min, h_ang, h_z = min_film(solver, [p.phi for p in four])
     lin = solver.linearize(r4, np.zeros(4), w)
-    return dataclasses.replace(res, theta_x_rad=tx, theta_y_rad=ty, moment_n_m=H[2:].copy(),
-                               h_min_m=h_min, h_min_z_m=h_z, K4=np.array(lin.KH),
-                               C4=np.array(lin.DH))
+    return dataclasses.replace(res, journal_theta_x_rad=tx, journal_theta_y_rad=ty,
+                               force_n=H[:2].copy(), film_moment_n_m=H[2:].copy(),
+                               h_min_m=h_min, h_min_angle_deg=h_ang, h_min_z_m=h_z,
+                               K4=np.array(lin.KH), C4=np.array(lin.DH))
 
 
 
@@ -138,7 +142,7 @@ def plain_tilted_thermal_equilibrium(bearing, *, theta_x_rad: float, theta_y_rad
     res = _core.thermal_system_equilibrium(model, [tf], w, 0.0, np.zeros(2), eopt)
     eq = res.equilibrium
     if eq.status not in ("ok", "contact"):
-        raise ConvergenceError(f"tilted thermal equilibrium: {eq.status}: {eq.message}")
+        raise failed_equilibrium("tilted thermal equilibrium", eq)
     st = res.films[0]
     x, y = (float(q) for q in eq.r)
     # the frozen field on the four-coordinate film: moments, edge film, K4, C4
@@ -164,9 +168,9 @@ def plain_tilted_thermal_equilibrium(bearing, *, theta_x_rad: float, theta_y_rad
                   supply_flow_m3_s=st.supply_flow_m3_s, x_m=x, y_m=y,
                   eccentricity_ratio=math.hypot(x, y) / bearing.clearance_m,
                   K=K4[:2, :2].copy(), C=C4[:2, :2].copy(), iterations=int(res.iterations),
-                  status=str(eq.status), message=str(eq.message), theta_x_rad=tx,
-                  theta_y_rad=ty, moment_n_m=H[2:].copy(), h_min_m=h_min,
-                  h_min_angle_deg=h_ang, h_min_z_m=h_z, K4=K4, C4=C4)
+                  status=str(eq.status), message=str(eq.message), journal_theta_x_rad=tx,
+                  journal_theta_y_rad=ty, force_n=H[:2].copy(), film_moment_n_m=H[2:].copy(),
+                  h_min_m=h_min, h_min_angle_deg=h_ang, h_min_z_m=h_z, K4=K4, C4=C4)
     if not thd:
         return ThermalEquilibriumResult(
             effective_temperature_c=st.effective_temperature_c,
@@ -240,9 +244,11 @@ def pad_tilted_thermal_equilibrium(bearing, *, theta_x_rad: float, theta_y_rad: 
     nu = 0.0 if whirl_ratio is None else float(whirl_ratio) * w  # as pad_thd_equilibrium
     K4, C4 = reduce_coefficients(np.asarray(lin.KH) + lay.K, np.asarray(lin.DH), lay.M, nu,
                                  N_JOURNAL)
-    return dataclasses.replace(res, theta_x_rad=tx, theta_y_rad=ty,
-                               moment_n_m=film.moment_n_m.copy(), h_min_m=film.h_min_m,
-                               h_min_z_m=film.h_min_z_m, K4=K4, C4=C4)
+    return dataclasses.replace(res, journal_theta_x_rad=tx, journal_theta_y_rad=ty,
+                               force_n=film.force_n.copy(),
+                               film_moment_n_m=film.film_moment_n_m.copy(), h_min_m=film.h_min_m,
+                               h_min_angle_deg=film.h_min_angle_deg, h_min_z_m=film.h_min_z_m,
+                               K4=K4, C4=C4)
 
 
 __all__ = ["pad_tilted_thermal_equilibrium", "plain_tilted_thermal_equilibrium",

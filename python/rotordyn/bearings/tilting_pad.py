@@ -373,7 +373,8 @@ class TiltingPadBearing:
         ``bush_thickness_m``, ``bush_conductivity_w_per_m_k``, ``back_htc_w_m2k``,
         ``back_temperature_c``).
 
-        ``theta_x_rad``, ``theta_y_rad``: the journal's tilt relative to the bearing (rad; as
+        ``theta_x_rad``, ``theta_y_rad`` (inputs; the result names them ``journal_theta_*``): the
+        journal's tilt relative to the bearing (rad; as
         :func:`rotordyn.bearings.tilt.misaligned_equilibrium`; a tilt closing a pad's film at
         an edge is an InputError naming them). With a tilt, or with ``tilt`` True (None: the
         bearing's own ``tilt`` field), the pads' films carry it (:func:`rotordyn.bearings.tilt_thermal.

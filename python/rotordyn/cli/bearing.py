@@ -5,7 +5,9 @@ Either a journal position (``--x-m --y-m``, optional ``--vx-m-s --vy-m-s``) or a
 friction torque, flows, minimum film and the K, C coefficients; ``--json`` for a machine-
 readable record. Exit 2 on bad input (the message names the field). ``--theta-x-rad``,
 ``--theta-y-rad``: the journal tilted relative to the bearing, with its moments, edge film and
-4×4 K, C (:mod:`rotordyn.cli.bearing_tilt`).
+4×4 K, C (:mod:`rotordyn.cli.bearing_tilt`). ``--model-file MODEL [--bearing NAME]``: a model
+file's plain, tilting-pad or fixed-geometry bearing instead of the dimensions, at its tilted
+operating point (:mod:`rotordyn.cli.bearing_model`).
 
 Film physics (docs/film-physics.md): ``--turbulence ng_pan --density-kg-m3 RHO`` for the
 turbulent film (``--turbulence-onset-re RE0 --turbulence-full-re RE1``: its transition); ``--supply-temperature-c T`` with ``--load-n`` and an oil law
@@ -27,8 +29,10 @@ from rotordyn.bearings._film import TURBULENCE_MODELS
 from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.bearings.thermal import Oil
 from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args, table_text
-from rotordyn.cli.bearing_tilt import (add_tilt_arguments, print_thermal_tilt, run_tilted,
-                                       thermal_tilt, thermal_tilt_record, wants_tilt)
+from rotordyn.cli.bearing_model import add_model_arguments, model_bearing
+from rotordyn.cli.bearing_thermal import (print_effective, print_thd, run_thermal_tilted,
+                                          thermal_kwargs, thermal_row)
+from rotordyn.cli.bearing_tilt import add_tilt_arguments, run_tilted, wants_tilt
 from rotordyn.cli.common import add_thd_arguments, journal_pose
 from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
@@ -51,16 +55,16 @@ def _groove(text: str) -> Groove:
 def register(sub: argparse._SubParsersAction) -> None:
     s = sub.add_parser("bearing", help="fluid-film journal bearing at one operating point",
                        description=__doc__)
-    s.add_argument("--diameter-m", type=float, required=True, metavar="M",
+    s.add_argument("--diameter-m", type=float, default=None, metavar="M",
                    help="journal diameter D, m (50 mm = 0.05)")
-    s.add_argument("--length-m", type=float, required=True, metavar="M",
+    s.add_argument("--length-m", type=float, default=None, metavar="M",
                    help="bearing length L, m")
-    s.add_argument("--clearance-m", type=float, required=True, metavar="M",
+    s.add_argument("--clearance-m", type=float, default=None, metavar="M",
                    help="radial clearance c, m (0.3 mm = 3e-4)")
     s.add_argument("--viscosity-pa-s", type=float, default=None, metavar="PA_S",
                    help="dynamic viscosity of the lubricant, Pa s (required unless the "
                         "thermal model gives it: --supply-temperature-c)")
-    s.add_argument("--turbulence", choices=TURBULENCE_MODELS, default="laminar",
+    s.add_argument("--turbulence", choices=TURBULENCE_MODELS, default=None,
                    help="turbulent film model (ng_pan: Ng-Pan-Elrod, needs --density-kg-m3)")
     s.add_argument("--density-kg-m3", type=float, default=None, metavar="RHO",
                    help="oil density, kg/m3 (turbulence; the thermal oil's density)")
@@ -71,11 +75,13 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="transition: Re_h at which the turbulent corrections are full")
     add_thermal_arguments(s)
     add_thd_arguments(s)
-    s.add_argument("--n-circ", type=int, default=72, metavar="N",
-                   help="film grid cells around the circumference")
-    s.add_argument("--n-axial", type=int, default=16, metavar="N",
-                   help="film grid cells along the length")
-    s.add_argument("--cavitation", choices=CAVITATION_MODELS, default="reynolds",
+    s.add_argument("--n-circ", type=int, default=None, metavar="N",
+                   help="film grid cells around the circumference (default 72; "
+                        "--model-file: the bearing's)")
+    s.add_argument("--n-axial", type=int, default=None, metavar="N",
+                   help="film grid cells along the length (default 16; --model-file: the "
+                        "bearing's)")
+    s.add_argument("--cavitation", choices=CAVITATION_MODELS, default=None,
                    help="cavitation model (gumbel: half-Sommerfeld; reynolds: Swift-Stieber)")
     s.add_argument("--groove", action="append", default=[], metavar="C[,W[,P]]",
                    help="axial groove: centre deg, width deg, pressure Pa (repeatable)")
@@ -98,6 +104,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     s.add_argument("--load-n", type=float, nargs=2, metavar=("FX", "FY"), default=None,
                    help="static load on the journal, N: solve the equilibrium first")
     add_tilt_arguments(s)
+    add_model_arguments(s)
     s.add_argument("--method", choices=("perturbation", "finite_difference"),
                    default="perturbation", help="how K and C are computed")
     s.add_argument("--json", action="store_true", help="print one JSON record")
@@ -111,6 +118,17 @@ def _finite_or_none(value: float):
 def run(args: argparse.Namespace) -> int:
     from rotordyn._common import plausibility
 
+    if args.model_file is not None:
+        return _model_file(args)
+    for k in ("diameter_m", "length_m", "clearance_m"):
+        if getattr(args, k) is None:
+            raise InputError(f"--{k.replace('_', '-')}: required (or --model-file MODEL)")
+    if args.bearing is not None:
+        raise InputError("--bearing: an option of --model-file")
+    args.n_circ = 72 if args.n_circ is None else args.n_circ
+    args.n_axial = 16 if args.n_axial is None else args.n_axial
+    args.cavitation = "reynolds" if args.cavitation is None else args.cavitation
+    args.turbulence = "laminar" if args.turbulence is None else args.turbulence
     grooves = [_groove(g) for g in args.groove]
     if args.diameter_m > 0 and args.clearance_m > 0:
         plausibility.length("--diameter-m", args.diameter_m)
@@ -140,7 +158,7 @@ def run(args: argparse.Namespace) -> int:
         if args.speed_hz is not None:
             rec["speed_hz"] = args.speed_hz
         if oil is not None and args.speeds_hz is None:  # the tilted thermal equilibrium
-            return _thermal(b, oil, film, rec, args)
+            return run_thermal_tilted(b, oil, rec, args)
         return run_tilted(b, args, rec)
     if args.speeds_hz is not None:
         return _table(b, args)
@@ -191,89 +209,51 @@ def run(args: argparse.Namespace) -> int:
 
 def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
              args: argparse.Namespace) -> int:
-    """Effective-temperature equilibrium: temperatures, power, flows, K, C (frozen T)."""
-    if args.load_n is None or args.x_m is not None or args.y_m is not None:
-        raise InputError("--load-n: the thermal model solves the equilibrium under a load "
-                         "(give --load-n, not --x-m/--y-m)")
-    if args.thermal_model == "thd":
-        return _thd(b, oil, rec, args)
-    for opt in ("journal_htc_w_m2k", "bush_htc_w_m2k", "journal_temperature_c",
-                "bush_temperature_c"):
-        if getattr(args, opt) is not None:
-            raise InputError(f"--{opt.replace('_', '-')}: an option of --model thd only")
-    r = b.thermal_equilibrium(load_n=tuple(args.load_n), speed_hz=args.speed_hz, oil=oil,
-                              supply_temperature_c=args.supply_temperature_c,
-                              supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),
-                              carry_over=_or(args.carry_over, 0.0),
-                              effective_factor=_or(args.effective_factor, 0.5),
-                              **thermal_tilt(args))
-    hot = JournalBearing(viscosity_pa_s=r.viscosity_pa_s, **film)
-    row = r.to_frame().iloc[0].to_dict()
-    rec["thermal"] = {k: (float(v) if isinstance(v, (int, float, np.floating)) else v)
-                      for k, v in row.items()}
+    """Effective-temperature or THD equilibrium of the aligned film: temperatures, power,
+    flows, K, C (temperature frozen); the tilted one: :func:`rotordyn.cli.bearing_thermal.
+    run_thermal_tilted`."""
+    kw = thermal_kwargs(args)
+    r = b.thermal_equilibrium(oil=oil, **kw)
+    rec["thermal"] = thermal_row(r)
     rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, k_n_per_m=r.K.tolist(),
                c_n_s_per_m=r.C.tolist(), coefficient_method="perturbation")
-    if wants_tilt(args):  # the hot film's forces at the tilted pose; moments, edge, K4, C4
-        thermal_tilt_record(r, rec, hot)
-    else:
-        f = hot.solve(x_m=r.x_m, y_m=r.y_m, speed_hz=args.speed_hz)
+    if kw["model"] == "effective":  # the hot film's forces, minimum film and torque
+        f = JournalBearing(viscosity_pa_s=r.viscosity_pa_s, **film).solve(
+            x_m=r.x_m, y_m=r.y_m, speed_hz=args.speed_hz)
         rec.update(force_n=np.asarray(f.force_n).tolist(), h_min_m=f.h_min_m,
                    h_min_angle_deg=f.h_min_angle_deg,
                    friction_torque_n_m=f.friction_torque_n_m)
+    code = 0 if r.status in CONVERGED else 1
     if args.json:
         print(json_text(rec))
-        return 0
-    print(f"thermal equilibrium: T_eff = {r.effective_temperature_c:.2f} degC, T_max = "
-          f"{r.max_temperature_c:.2f} degC, T_in = {r.inlet_temperature_c:.2f} degC "
-          f"(supply {args.supply_temperature_c:g} degC), mu = {r.viscosity_pa_s:.4g} Pa s")
-    print(f"power loss {r.power_loss_w:.5g} W; film flow {r.film_flow_m3_s:.5g} m3/s, side flow "
-          f"{r.side_flow_m3_s:.5g} m3/s, fresh supply {r.supply_flow_m3_s:.5g} m3/s")
-    print(f"equilibrium: x = {r.x_m:.6g} m, y = {r.y_m:.6g} m, eps = {r.eccentricity_ratio:.4g}; "
-          f"h_min = {rec['h_min_m']:.6g} m at {rec['h_min_angle_deg']:.2f} deg")
-    if wants_tilt(args):
-        return print_thermal_tilt(r, rec)
+        return code
+    if kw["model"] == "thd":
+        print_thd(r, args)
+    else:
+        print_effective(r, args, rec["h_min_m"], rec["h_min_angle_deg"])
     print("K [N/m] =", np.array2string(r.K, precision=5))
     print("C [N s/m] =", np.array2string(r.C, precision=5))
-    return 0
+    return code
 
 
-def _thd(b: JournalBearing, oil: Oil, rec: dict, args: argparse.Namespace) -> int:
-    """THD equilibrium: T_max, T_mean, power loss, flows, K, C (temperature field frozen)."""
-    thd = {k: getattr(args, k) for k in ("journal_htc_w_m2k", "bush_htc_w_m2k",
-                                         "journal_temperature_c", "bush_temperature_c")
-           if getattr(args, k) is not None}
-    if args.effective_factor is not None:
-        raise InputError("--effective-factor: an option of the effective-temperature model "
-                         "(not --model thd)")
-    r = b.thermal_equilibrium(load_n=tuple(args.load_n), speed_hz=args.speed_hz, oil=oil,
-                              supply_temperature_c=args.supply_temperature_c,
-                              supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),
-                              carry_over=_or(args.carry_over, 0.0), model="thd", **thd,
-                              **thermal_tilt(args))
-    row = r.to_frame().iloc[0].to_dict()
-    rec["thermal"] = {k: (float(v) if isinstance(v, (int, float, np.floating)) else v)
-                      for k, v in row.items()}
-    rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, k_n_per_m=r.K.tolist(),
-               c_n_s_per_m=r.C.tolist(), coefficient_method="perturbation")
-    if wants_tilt(args):
-        thermal_tilt_record(r, rec)
-    if args.json:
-        print(json_text(rec))
-        return 0 if r.status in CONVERGED else 1
-    print(f"THD equilibrium ({r.status}): T_max = {r.max_temperature_c:.2f} degC, T_mean = "
-          f"{r.mean_temperature_c:.2f} degC, T_in = {r.inlet_temperature_c:.2f} degC "
-          f"(supply {args.supply_temperature_c:g} degC)")
-    print(f"power loss {r.power_loss_w:.5g} W; film flow {r.film_flow_m3_s:.5g} m3/s, side flow "
-          f"{r.side_flow_m3_s:.5g} m3/s, recirculation {r.recirculation_flow_m3_s:.5g} m3/s, "
-          f"fresh supply {r.supply_flow_m3_s:.5g} m3/s; heat to journal "
-          f"{r.heat_to_journal_w:.4g} W, to bush {r.heat_to_bush_w:.4g} W")
-    print(f"equilibrium: x = {r.x_m:.6g} m, y = {r.y_m:.6g} m, eps = {r.eccentricity_ratio:.4g}")
-    if wants_tilt(args):
-        print_thermal_tilt(r, rec)
-    else:
-        print("K [N/m] =", np.array2string(r.K, precision=5))
-        print("C [N s/m] =", np.array2string(r.C, precision=5))
-    return 0 if r.status in CONVERGED else 1
+def _model_file(args: argparse.Namespace) -> int:
+    """A model file's bearing (:mod:`rotordyn.cli.bearing_model`) at its tilted operating
+    point, isothermal or at its thermal equilibrium."""
+    if not wants_tilt(args):
+        raise InputError("--theta-x-rad/--theta-y-rad: --model-file gives the bearing's "
+                         "tilted operating point (moments, edge film, 4x4 K, C); give the "
+                         "journal's tilt (0 for an aligned journal)")
+    if args.speed_hz is None:
+        raise InputError("--speed-hz: required")
+    b, brec = model_bearing(args)
+    rec: dict = {"bearing": brec, "speed_hz": args.speed_hz}
+    oil = oil_from_args(args)
+    if oil is None and args.thermal_model is not None:
+        raise InputError("--model: the thermal model needs --supply-temperature-c, --load-n "
+                         "and an --oil-* law")
+    if oil is not None and args.speeds_hz is None:
+        return run_thermal_tilted(b, oil, rec, args)
+    return run_tilted(b, args, rec)
 
 
 def _table(b: JournalBearing, args: argparse.Namespace) -> int:
@@ -287,8 +267,3 @@ def _table(b: JournalBearing, args: argparse.Namespace) -> int:
     else:
         print(table_text(t.to_frame()))
     return 0 if all(s in CONVERGED for s in t.status) else 1
-
-
-def _or(value, default):
-    """``value`` unless None (an option not given: the film model's default)."""
-    return default if value is None else value

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from rotordyn.units import tilt_unit_stem, unit_of
+
 # the one marker of a missing value (a failed point, a column a row does not have) in every
 # table of the report, text and HTML
 MISSING = "n/a"
@@ -41,24 +43,23 @@ COEFFICIENT_HEADER = ("bearing", "speed (Hz)", "kxx (MN/m)", "kxy (MN/m)", "kyx 
 
 
 # A tilting film's coupling blocks (rotordyn.analysis.bearing_coefficients.TILT_COLUMNS):
-# per block its column stem, its SI unit in the column name, the printed unit and scale
-_BLOCKS = (("k", "xy", "t", "n_per_rad", "kN/rad", 1e3),
-           ("k", "t", "xy", "n_m_per_m", "kN·m/m", 1e3),
-           ("k", "t", "t", "n_m_per_rad", "kN·m/rad", 1e3),
-           ("c", "xy", "t", "n_s_per_rad", "N·s/rad", 1.0),
-           ("c", "t", "xy", "n_m_s_per_m", "N·m·s/m", 1.0),
-           ("c", "t", "t", "n_m_s_per_rad", "N·m·s/rad", 1.0))
-_AX = {"xy": ("x", "y"), "t": ("tx", "ty")}
+# per block (row block, column block: 0 translations, 1 rotations; the units are
+# rotordyn.units.tilt_unit_stem's) the printed prefix and its scale
+_BLOCKS = (("k", 0, 1, "k", 1e3), ("k", 1, 0, "k", 1e3), ("k", 1, 1, "k", 1e3),
+           ("c", 0, 1, "", 1.0), ("c", 1, 0, "", 1.0), ("c", 1, 1, "", 1.0))
+_AX = (("x", "y"), ("tx", "ty"))
 _SHOW = {"x": "x", "y": "y", "tx": "θx", "ty": "θy"}
 
 
 def _tilt_cells():
     """[(frame column, header, scale)] of the coupling blocks in the order printed."""
     out = []
-    for kc, rows, cols, unit, shown, scale in _BLOCKS:
-        for i in _AX[rows]:
-            for j in _AX[cols]:
-                out.append((f"{kc}{i}{j}_{unit}", f"{kc}{_SHOW[i]}{_SHOW[j]} ({shown})", scale))
+    for kc, rb, cb, prefix, scale in _BLOCKS:
+        stem = tilt_unit_stem(kc, 2 * rb, 2 * cb)
+        shown = prefix + unit_of("_" + stem)
+        for i in _AX[rb]:
+            for j in _AX[cb]:
+                out.append((f"{kc}{i}{j}_{stem}", f"{kc}{_SHOW[i]}{_SHOW[j]} ({shown})", scale))
     return out
 
 

@@ -32,7 +32,7 @@ class StaticResult(Display):
     under its weight has M > 0), ``moment_xz_n_m`` likewise in the horizontal plane.
     reactions: one row per support and bearing element (``name``, ``station``, ``kind``,
     ``force_x_n``, ``force_y_n``: the force it exerts on the rotor, N; with a tilting film,
-    ``tilt = true``, also ``moment_x_n_m``, ``moment_y_n_m``: the film's moment on the
+    ``tilt = true``, also ``film_moment_x_n_m``, ``film_moment_y_n_m``: the film's moment on the
     journal about x and y, N·m, NaN for the other rows). ``weight_n``: the rotor's weight;
     the reactions' y-sum balances it.
     """

@@ -186,7 +186,8 @@ def _stab_batch(job, seg, ops):
         DR = np.where(AB > 0, -RE / AB, np.nan)
         LD = np.where(EV.imag != 0, -2 * np.pi * RE / EV.imag, np.nan)
         FR = EV.imag / (2 * np.pi)
-        HMIN = (np.nanmin(H, axis=1) if H.shape[1] else np.full(len(st), math.nan))
+        # the thinnest film (NaN on a failed point: the batch's one rule, all its films NaN)
+        HMIN = (np.fmin.reduce(H, axis=1) if H.shape[1] else np.full(len(st), math.nan))
     WN = _NAMES[np.clip(np.asarray(res.whirl), -1, 1) + 1]
     KIND = np.where(np.asarray(res.sleeve_share) > 0.5, "sleeve", "rotor")
     nan = np.full(len(st), math.nan)

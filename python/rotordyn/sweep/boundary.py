@@ -39,7 +39,8 @@ from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, e
 from rotordyn.sweep.spec import boundary_axes, fine_axes
 from rotordyn.sweep.store import BOUNDARY, Store
 from rotordyn.sweep.surface import ColumnPlan, column_field
-from rotordyn.sweep.work import Job, pop_equilibria
+from rotordyn.sweep.points import base_system
+from rotordyn.sweep.work import Job, job_schema, pop_equilibria
 
 
 def _classify(table) -> dict[int, tuple[int, float, float]]:
@@ -125,8 +126,10 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     z = refined[2] if len(refined) == 3 else None
     shape = tuple(len(ax[a]) for a in refined)
     header = {**header, "axes": ax, "n_points": None, "n_chunks": None, "group": None}
-    store = Store(out, header, resume=resume, group=1)
     job = Job(spec.name, model_toml, spec.analysis, spec.options, ax)
+    # a resume refuses parts of another row schema (Store._check_schemas)
+    store = Store(out, header, resume=resume, group=1,
+                  schema=job_schema(job, base_system(model_toml)))
     job.key = header["spec_hash"]
     job.meta = {"sweep_id": spec.name, "spec_hash": header["spec_hash"],
                 "model_hash": header["model_hash"], "rotordyn": __version__,

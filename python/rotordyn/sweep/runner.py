@@ -24,7 +24,7 @@ from rotordyn.sweep.boundary import run_boundary
 from rotordyn.sweep.dataset import open_dataset
 from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, check_scheduler,
                                       executor, group_size)
-from rotordyn.sweep.work import Job
+from rotordyn.sweep.work import Job, job_schema
 from rotordyn.units import unit_of
 
 UNITS = {
@@ -110,7 +110,9 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
         return run_boundary(spec, header, model_toml, out, scheduler=scheduler,
                             workers=workers, threads=threads, resume=resume,
                             progress=progress, worker_timeout=worker_timeout)
-    store = Store(out, header, resume=resume, group=header["group"])
+    job = Job(spec.name, model_toml, spec.analysis, spec.options, spec.ordered_axes)
+    store = Store(out, header, resume=resume, group=header["group"],
+                  schema=job_schema(job, system))
     try:
         bounds = spec.chunk_bounds()
         store.compact_complete(n_chunks)
@@ -121,7 +123,6 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
         bar = Progress(n_chunks, len(done), counts0,
                        enabled=None if progress is None else bool(progress))
         if todo:
-            job = Job(spec.name, model_toml, spec.analysis, spec.options, spec.ordered_axes)
             job.key = header["spec_hash"]
             job.meta = {"sweep_id": spec.name, "spec_hash": header["spec_hash"],
                         "model_hash": header["model_hash"], "rotordyn": __version__,

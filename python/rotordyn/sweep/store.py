@@ -179,9 +179,13 @@ def _bookkeeping(d: SafeDir, name: str, field: str) -> bytes | None:
 class Store:
     """An open sweep directory, locked for this process."""
 
-    def __init__(self, out, header: dict, *, resume: bool = True, group: int = 1):
+    def __init__(self, out, header: dict, *, resume: bool = True, group: int = 1,
+                 schema: pa.Schema | None = None):
         self.out = Path(out)
         self.header = header
+        # the rows' schema of this sweep (None: not checked): a resume refuses parts written
+        # with another one (an older rotordyn's rows) rather than mixing two in one dataset
+        self.schema = schema
         self.group = max(1, int(group))
         self.files: dict[str, dict] = {}   # file name -> log entry (live files only)
         self._lockfd = None
@@ -316,6 +320,7 @@ class Store:
         raw = _bookkeeping(self.dir, LOG, "out")
         live = live_entries(parse_log(raw or b"", out / LOG))
         good = [e for e in live.values() if self._verify(e)]
+        self._check_schemas(good)
         # a crash between logging a compacted file and logging the removal of its parts
         # leaves both: keep the widest file covering each chunk
         good = [e for e in good if not any(o is not e and o["lo"] <= e["lo"] and
@@ -350,9 +355,28 @@ class Store:
     def _verify(self, e: dict) -> bool:
         try:
             data = self._read_part(e)
-            return pq.ParquetFile(pa.BufferReader(data)).metadata.num_rows == e["rows"]
+            f = pq.ParquetFile(pa.BufferReader(data))
+            e["_schema"] = f.schema_arrow  # for _check_schemas (not logged)
+            return f.metadata.num_rows == e["rows"]
         except (OSError, pa.ArrowException):
             return False
+
+    def _check_schemas(self, entries: list[dict]) -> None:
+        """Refuse a resume whose logged parts hold rows of another schema than this sweep's
+        (``self.schema``; e.g. parts of an older rotordyn, before a column was added): the
+        new chunks would be written with the new schema beside them, a dataset no reader can
+        concatenate. The message names the part and the columns that differ."""
+        for e in sorted(entries, key=lambda e: e["lo"]):
+            got = e.pop("_schema", None)
+            if self.schema is None or got is None:
+                continue
+            why = schema_difference(self.schema, got)
+            if why:
+                raise InputError(
+                    f"out: {str(self.out)!r} holds chunks written with another row schema "
+                    f"({e['file']}: {why}; e.g. rows of an older rotordyn); resuming would mix "
+                    "two schemas in one dataset: run the sweep again with --no-resume "
+                    "(resume=False; every chunk is recomputed) or into another directory")
 
     def _rewrite_log(self, entries: list[dict]) -> None:
         if self._log is not None:
@@ -474,6 +498,28 @@ class Store:
             if e["lo"] <= chunk_id <= e["hi"]:
                 return self._table(e).read_row_group(chunk_id - e["lo"], use_threads=False)
         raise KeyError(chunk_id)
+
+
+def schema_difference(expected: pa.Schema, got: pa.Schema) -> str:
+    """What differs between two row schemas (metadata aside): the columns missing from
+    ``got``, those it has beyond ``expected``, those of another type or order; "" if none."""
+    if got.remove_metadata().equals(expected.remove_metadata()):
+        return ""
+    names, have = list(expected.names), list(got.names)
+    missing = [n for n in names if n not in have]
+    extra = [n for n in have if n not in names]
+    parts = []
+    if missing:
+        parts.append(f"without the columns {missing}")
+    if extra:
+        parts.append(f"with the columns {extra} this sweep does not write")
+    for n in names:
+        if n in have and got.field(n).type != expected.field(n).type:
+            parts.append(f"column {n!r} of type {got.field(n).type}, expected "
+                         f"{expected.field(n).type}")
+    if not parts:
+        parts.append("the columns in another order")
+    return "; ".join(parts)
 
 
 def open_dir(out) -> SafeDir:

@@ -116,6 +116,12 @@ def schema(analysis: str, axes: list[str], thermal: bool = False,
     return pa.schema(fields)
 
 
+def job_schema(job, base) -> pa.Schema:
+    """The rows' schema of ``job`` on the model ``base`` (the chunks' and what a resume
+    expects of the parts already written, :class:`rotordyn.sweep.store.Store`)."""
+    return schema(job.analysis, list(job.axes), thermal_on(job), tilt_on(job, base))
+
+
 def categories(analysis: str) -> dict:
     cats = {"status": STATUS}
     if analysis == "limit_cycle":
@@ -188,9 +194,7 @@ def run_chunk(job: Job, chunk_id: int, lo: int, hi: int, pids=None) -> pa.Table:
                   thermal_stab_blocks)(job, variants, chunk_id, pl, asms)
     else:
         blocks = _BLOCKS[job.analysis](job, variants, chunk_id, pl, asms)
-    t = block_table(job, schema(job.analysis, list(job.axes), thermal_on(job),
-                                tilt_on(job, base)),
-                    categories(job.analysis),
+    t = block_table(job, job_schema(job, base), categories(job.analysis),
                     identity(job, chunk_id, pl, asms), blocks)
     if eqs:  # the points' equilibria, for the next refinement level's starts
         t = t.replace_schema_metadata({**(t.schema.metadata or {}),
