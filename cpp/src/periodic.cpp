@@ -226,7 +226,8 @@ double film_step_fraction(const SystemModel& m, const Eigen::Ref<const Eigen::Ma
   for (const FilmCoupling& fc : m.films) {
     const Eigen::Index nc = static_cast<Eigen::Index>(fc.coords.size());
     Eigen::MatrixXd dRf(dR.rows(), nc);  // the film's coordinates of each row
-    for (Eigen::Index k = 0; k < nc; ++k) dRf.col(k) = dR.col(fc.coords[static_cast<std::size_t>(k)]);
+    for (Eigen::Index k = 0; k < nc; ++k)
+      dRf.col(k) = dR.col(fc.coords[static_cast<std::size_t>(k)]);
     if (dRf.cwiseAbs().maxCoeff() == 0.0) continue;
     RowMatrixXd dh = RowMatrixXd::Zero(dR.rows(), fc.shape.rows() * (fc.grid.n_axial + 1));
     for (Eigen::Index k = 0; k < nc; ++k) {
