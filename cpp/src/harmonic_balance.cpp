@@ -23,6 +23,7 @@ using namespace hb_detail;
 HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput& in,
                                        const Eigen::MatrixXd& start_samples,
                                        const HarmonicBalanceOptions& opt) {
+  const shooting_detail::SerialEigen serial;
   const int M = checked_time_points(opt);
   const int H = opt.harmonics;
   ShootingOptions so;
@@ -173,8 +174,16 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
       const double tau = 1.0 / (1.0 - g);
       if (std::isfinite(tau)) d *= tau;
     }
-    const double cap = std::max({1.0, d.head(nn).cwiseAbs().maxCoeff() / 0.25,
-                                 autonomous ? std::abs(d(nn)) / 0.1 : 0.0});
+    // The cap: a limit cycle's every coefficient at 0.25 L (the rig's published runs); a
+    // forced orbit's step at 0.25 of a clearance in film thickness at any sample (rotations
+    // and coordinates far from the films are not capped as lengths: film_step_fraction).
+    double big = d.head(nn).cwiseAbs().maxCoeff() / 0.25;
+    if (!autonomous) {
+      Eigen::MatrixXd Dz(nb, n);
+      for (int p = 0; p < nb; ++p) Dz.row(p) = L * d.segment(p * n, n).transpose();
+      big = shooting_detail::film_step_fraction(m, P.B.E * Dz) / 0.25;
+    }
+    const double cap = std::max({1.0, big, autonomous ? std::abs(d(nn)) / 0.1 : 0.0});
     d /= cap;
     auto dmerit = [&](const Eigen::MatrixXd& Zc, const Eigen::VectorXd& Rsc) {
       return (autonomous && opt.deflation) ? (1.0 / std::max(harm2(Zc), 1e-300) + 1.0) * Rsc.norm()

@@ -194,6 +194,46 @@ bool fill_orbit(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, doub
 
 namespace {
 
+// exp(A) = D exp(D⁻¹ A D) D⁻¹ with D diagonal, powers of 2 (exact), balancing the rows and
+// columns of A (Osborne's iteration, as LAPACK's gebal). The first-order matrix of a
+// flexible rotor mixes metres, radians and their rates: on the overhung pump (36
+// coordinates, tilted films) ‖A h‖₁ ≈ 2e8 where its eigenvalues are ≤ 41, and the scaling
+// and squaring of the exponential, sized by the norm, took 12 s CPU for the 128 steps of one
+// monodromy (balanced: under a second; docs/nonlinear.md).
+Eigen::MatrixXd balanced_exp(const Eigen::MatrixXd& A) {
+  const Eigen::Index N = A.rows();
+  Eigen::MatrixXd B = A;
+  Eigen::VectorXd d = Eigen::VectorXd::Ones(N);
+  bool changed = true;
+  for (int sweep = 0; changed && sweep < 64; ++sweep) {
+    changed = false;
+    for (Eigen::Index i = 0; i < N; ++i) {
+      double c = B.col(i).cwiseAbs().sum() - std::abs(B(i, i));
+      double r = B.row(i).cwiseAbs().sum() - std::abs(B(i, i));
+      if (!(c > 0.0) || !(r > 0.0)) continue;
+      const double total = c + r;
+      double f = 1.0;
+      while (c < 0.5 * r) {
+        c *= 2.0;
+        r *= 0.5;
+        f *= 2.0;
+      }
+      while (c >= 2.0 * r) {
+        c *= 0.5;
+        r *= 2.0;
+        f *= 0.5;
+      }
+      if (c + r < 0.95 * total) {
+        changed = true;
+        d(i) *= f;
+        B.col(i) *= f;
+        B.row(i) /= f;
+      }
+    }
+  }
+  return d.asDiagonal() * B.exp() * d.cwiseInverse().asDiagonal();
+}
+
 // Monodromy of ẋ = A(t) x over one period from the samples A_j = A(t_j) (first-order form),
 // A(τ) trigonometrically interpolated, 4th-order Magnus (two Gauss points per step) with
 // the exact exponential of each step (stable for the stiff sleeve and film modes).
@@ -231,7 +271,7 @@ Eigen::MatrixXd monodromy_from_samples(const std::vector<Eigen::MatrixXd>& A, do
     const Eigen::MatrixXd A1 = at((i + 0.5 - g) * dtau), A2 = at((i + 0.5 + g) * dtau);
     const Eigen::MatrixXd Om =
         (0.5 * h) * (A1 + A2) + (std::sqrt(3.0) / 12.0 * h * h) * (A2 * A1 - A1 * A2);
-    Phi = Om.exp() * Phi;
+    Phi = balanced_exp(Om) * Phi;
   }
   return Phi;
 }

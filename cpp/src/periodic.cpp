@@ -221,6 +221,24 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
   return out;
 }
 
+double film_step_fraction(const SystemModel& m, const Eigen::Ref<const Eigen::MatrixXd>& dR) {
+  double out = 0.0;
+  for (const FilmCoupling& fc : m.films) {
+    const Eigen::Index nc = static_cast<Eigen::Index>(fc.coords.size());
+    Eigen::MatrixXd dRf(dR.rows(), nc);  // the film's coordinates of each row
+    for (Eigen::Index k = 0; k < nc; ++k)
+      dRf.col(k) = dR.col(fc.coords[static_cast<std::size_t>(k)]);
+    if (dRf.cwiseAbs().maxCoeff() == 0.0) continue;
+    RowMatrixXd dh = RowMatrixXd::Zero(dR.rows(), fc.shape.rows() * (fc.grid.n_axial + 1));
+    for (Eigen::Index k = 0; k < nc; ++k) {
+      const RowMatrixXd dk = fc.thickness_derivative(k);  // (n_circ, n_axial + 1)
+      dh += dRf.col(k) * Eigen::Map<const Eigen::RowVectorXd>(dk.data(), dk.size());
+    }
+    out = std::max(out, dh.cwiseAbs().maxCoeff() / fc.geometry.clearance_m);
+  }
+  return out;
+}
+
 void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt) {
   const Eigen::Index n = solver.model().n();
   auto vec_ok = [&](const Eigen::VectorXd& v, const char* name, bool allow_empty) {
@@ -326,6 +344,7 @@ void flow_map(SystemSolver& solver, const PeriodicInput& in, const CvodeOptions&
 
 PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in,
                                    const ShootingOptions& opt) {
+  const shooting_detail::SerialEigen serial;
   validate(solver, in, opt);
   const SystemModel& m = solver.model();
   Flow F;
@@ -471,7 +490,16 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
       break;
     }
     Eigen::VectorXd dz = lu.solve(b);
-    const double big = dz.head(N).cwiseAbs().maxCoeff() / max_step;
+    // The cap: a limit cycle's every coordinate at max_step of L (the rig's published runs);
+    // a forced orbit's step by the change of film thickness it makes, positions and
+    // velocities / ω (film_step_fraction: only the films are nonlinear in x).
+    double big = dz.head(N).cwiseAbs().maxCoeff() / max_step;
+    if (!autonomous) {
+      Eigen::MatrixXd rows(2, n);
+      rows.row(0) = L * dz.head(n).transpose();
+      rows.row(1) = L * dz.segment(n, n).transpose();
+      big = film_step_fraction(m, rows) / max_step;
+    }
     const double big_t = autonomous ? std::abs(dz(N)) / 0.2 : 0.0;
     const double cap = std::max({1.0, big, big_t});
     dz /= cap;

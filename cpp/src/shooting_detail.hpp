@@ -12,6 +12,19 @@
 
 namespace rotordyn::shooting_detail {
 
+/// Eigen's own matrix products on one thread for the life of the guard (an orbit solve): the
+/// core links OpenMP for its batches, and Eigen then splits every product above ~50³ over
+/// OpenMP threads, which on a loaded machine spin-wait. Measured on the overhung pump's
+/// forced orbit by harmonic balance (72 × 72 Magnus exponentials, a 612 × 612 Newton
+/// matrix), load 14 on 2 cores: 52 % of the CPU in libgomp (docs/nonlinear.md).
+struct SerialEigen {
+  int previous = Eigen::nbThreads();
+  SerialEigen() { Eigen::setNbThreads(1); }
+  ~SerialEigen() { Eigen::setNbThreads(previous); }
+  SerialEigen(const SerialEigen&) = delete;
+  SerialEigen& operator=(const SerialEigen&) = delete;
+};
+
 // Everything the right-hand sides share: eq. 12 at constant Ω and p_c, first-order form.
 struct Flow {
   SystemSolver* solver = nullptr;
@@ -58,6 +71,14 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
 /// a = base.a + p · config_direction; a forced orbit's period follows Ω (subharmonic · 2π/|Ω|).
 PeriodicInput at_parameter(const PeriodicInput& base, ContinuationParameter parameter,
                            const Eigen::VectorXd& config_direction, int subharmonic, double p);
+/// The largest change of any film's thickness a displacement makes, in units of that film's
+/// clearance: max over the rows of dR (k, n), the films and their grid nodes of
+/// |Σ_j ∂h/∂r_j dR(i, j)| / c. Coordinates that enter no film count for nothing (the films
+/// are the only forces nonlinear in r). The step cap of a forced orbit's Newton (shooting and
+/// harmonic balance): a rotation or a coordinate far from the films is not a length and
+/// capping it at a fraction of the clearance crawled (the overhung pump's tilted films:
+/// 9 harmonic-balance iterations at 5e-3 kg·m, docs/nonlinear.md).
+double film_step_fraction(const SystemModel& m, const Eigen::Ref<const Eigen::MatrixXd>& dR);
 /// InputError for shapes, non-finite values, period ≤ 0, forcing inconsistent with the kind.
 void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt);
 

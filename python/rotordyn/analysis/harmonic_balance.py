@@ -72,6 +72,48 @@ def samples_from_equilibrium(asm, omega: float, r_e: np.ndarray, amplitude_c: fl
     return r_e[None, :] + s * d, float(2 * np.pi / lam.imag[k])
 
 
+def linear_forced_response(asm, omega: float, r_e: np.ndarray, uc: np.ndarray,
+                           us: np.ndarray) -> tuple[np.ndarray, float]:
+    """The complex amplitude q (n,) of the linearised system's unbalance response at the
+    equilibrium r_e: (K + K_H − Ω² M(Ω) + iΩ(C + ΩG + D_H)) q = Ω² (u_c − i u_s), with K_H,
+    D_H the films' stiffness and damping there (every coordinate: rotor, tilt, pads, sleeve),
+    so r(t) = r_e + Re(q e^{iΩt}) is the first harmonic of the forced orbit at small
+    unbalance (docs/nonlinear.md, "Forced orbits from the linear response"); and the
+    largest real part of the linearisation's eigenvalues, 1/s (< 0: a transient settles
+    as e^{σt})."""
+    md = asm.model
+    n = asm.n
+    lin = asm.solver.linearize(r_e, np.zeros(n), omega)
+    M = np.asarray(md.mass_at(omega))
+    K, C, G = (np.asarray(x) for x in (md.K, md.C, md.G))
+    KK, DD = K + np.asarray(lin.KH), C + omega * G + np.asarray(lin.DH)
+    q = np.linalg.solve(KK - omega**2 * M + 1j * omega * DD, omega**2 * (uc - 1j * us))
+    A = np.zeros((2 * n, 2 * n))
+    A[:n, n:] = np.eye(n)
+    A[n:, :n] = -np.linalg.solve(M, KK)
+    A[n:, n:] = -np.linalg.solve(M, DD)
+    return q, float(np.linalg.eigvals(A).real.max())
+
+
+def forced_start(asm, omega: float, r_e: np.ndarray, q: np.ndarray, subharmonic: int, m: int,
+                 keep_fraction: float = 0.1) -> tuple[np.ndarray, float]:
+    """The start of a forced orbit from the linear response q (:func:`linear_forced_response`):
+    (m, n) position samples r_e + s Re(q e^{ikτ_j}) at τ_j = 2πj/m (k = ``subharmonic``: the
+    forcing is the k-th harmonic of the period), and s: 1, halved (at most 20 times) while a
+    film's thickness at a sample falls below ``keep_fraction`` of its clearance (a linear
+    response larger than the clearance is no start; its shape and phase still are)."""
+    tau = 2 * np.pi * np.arange(m) / m
+    d = np.real(np.outer(np.exp(1j * subharmonic * tau), q))  # (m, n)
+    c = np.array([f.geometry.clearance_m for f in asm.model.films])
+    s = 1.0
+    for _ in range(20):
+        h = np.array([asm.solver.film_h_min(r_e + s * dj) for dj in d])
+        if c.size == 0 or np.all(h >= keep_fraction * c[None, :]):
+            break
+        s *= 0.5
+    return r_e[None, :] + s * d, s
+
+
 def solve(asm, inp, samples: np.ndarray | None, *, harmonics: int, time_points: int,
           tol: float, max_iter: int, floquet: str, cvode, sensitivity_rtol: float | None,
           magnus_substeps: int = 4):

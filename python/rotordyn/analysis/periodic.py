@@ -5,6 +5,8 @@ forced by unbalance (period k·2π/Ω)."""
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from rotordyn import _core
@@ -23,6 +25,7 @@ from rotordyn.units import hz_to_rad_s
 KINDS = ("autonomous", "forced")
 METHODS = ("shooting", "harmonic_balance")
 NEWTON = ("broyden", "sensitivities")
+FORCED_STARTS = ("linear", "equilibrium")
 
 
 def period_from_transient(result: TransientResult, bearing: int = 0,
@@ -61,7 +64,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                    newton: str = "sensitivities", method: str = "shooting",
                    harmonics: int = 8, time_points: int | None = None,
                    floquet: str = "samples",
-                   start_amplitude_c: float = 0.3) -> PeriodicOrbitResult:
+                   start_amplitude_c: float = 0.3,
+                   forced_start: str = "linear") -> PeriodicOrbitResult:
     """Periodic orbit of eq. 12 by single shooting, with its Floquet multipliers.
 
     Unknowns: the state x0 = (r, ṙ) (2n) at t0, and for ``kind="autonomous"`` the period T
@@ -83,8 +87,9 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         A :class:`~rotordyn.results.TransientResult` (its last sample is the start, at its
         time t0 for a forced orbit, and for an autonomous one the period is estimated from
         its last half unless ``period_s`` is given), or a state: an array (2n,) = (r, ṙ) or a
-        pair (r (n,), ṙ (n,)) in m and m/s. None: the static equilibrium (forced orbits
-        only: an autonomous cycle needs a start on or near it).
+        pair (r (n,), ṙ (n,)) in m and m/s. None (forced orbits only: an autonomous cycle
+        needs a start on or near it; harmonic balance excepted, below): by
+        ``forced_start``.
     period_s
         s; autonomous: the first guess (required with a state start); forced: optional.
     n_out
@@ -129,6 +134,13 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         eigenvector's harmonics; no film solve beyond those linearisations), ``"flow"`` (one
         CVODES sensitivity flow at ``sensitivity_rtol``) or ``"none"`` (docs/nonlinear.md,
         "Floquet multipliers by Hill's method": their accuracy measured against the flow).
+    forced_start
+        A forced orbit with ``start=None``: ``"linear"`` (default) the linearised system's
+        unbalance response at the static equilibrium, r_e + Re(q e^{iΩt}) (the films' K_H,
+        D_H there; halved while a film would close to a tenth of its clearance:
+        ``stats["linear_start_scale"]``), the orbit's first harmonic at small unbalance;
+        ``"equilibrium"`` the static equilibrium at rest (the start before; docs/nonlinear.md
+        "Forced orbits from the linear response").
 
     Returns
     -------
@@ -138,6 +150,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         for ``"ok"``.
     """
     kind = v.choice("kind", kind, KINDS)
+    forced_start = v.choice("forced_start", forced_start, FORCED_STARTS)
+    start_scale = sigma = None
     method = v.choice("method", method, METHODS)
     hb = method == "harmonic_balance"
     if hb:
@@ -216,7 +230,19 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                 raise ConvergenceError(f"periodic_orbit: no equilibrium to start from "
                                        f"({e.status}: {e.message}); give start")
             r0, v0 = np.array(e.r, dtype=float), np.zeros(n)
-            if hb:
+            if forced_start == "linear":
+                # the linear unbalance response at the equilibrium: the orbit's first
+                # harmonic at small unbalance (scaled down where it would close a film)
+                uc, us = _unbalance_vectors(asm, ub_list)
+                om = hz_to_rad_s(float(speed_hz))
+                q, sigma = hbal.linear_forced_response(asm, om, r0, uc, us)
+                lin, start_scale = hbal.forced_start(asm, om, r0, q, subharmonic,
+                                                     m_hb if hb else 32)
+                if hb:
+                    samples = lin
+                else:
+                    r0, v0 = lin[0].copy(), start_scale * np.real(1j * om * q)
+            elif hb:
                 samples = np.repeat(r0[None, :], m_hb, axis=0)
     else:
         if isinstance(start, (tuple, list)) and len(start) == 2:
@@ -233,13 +259,11 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         raise InputError(f"start: the start closes film '{asm.model.films[k].name}' (minimum "
                          f"film thickness {h0[k]:.3g} m)")
 
-    uc, us = np.zeros(n), np.zeros(n)
-    for st, me, ph in ub_list:
-        L = asm.station_load_matrix(st)
-        p = np.radians(ph)
-        uc += me * (L[:, 0] * np.cos(p) + L[:, 1] * np.sin(p))
-        us += me * (-L[:, 0] * np.sin(p) + L[:, 1] * np.cos(p))
+    uc, us = _unbalance_vectors(asm, ub_list)
 
+    # the linear start's scale (1: the linear response itself; < 1: halved to keep the films
+    # open); absent for any other start
+    start_stats = {} if start_scale is None else {"linear_start_scale": float(start_scale)}
     omega = hz_to_rad_s(float(speed_hz))
     inp = _core.PeriodicInput()
     inp.kind = _core.OrbitKind.autonomous if kind == "autonomous" else _core.OrbitKind.forced
@@ -261,8 +285,10 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         res = hbal.solve(asm, inp, samples, harmonics=harmonics, time_points=m_hb, tol=tol,
                          max_iter=max_iter, floquet=floquet, cvode=c,
                          sensitivity_rtol=sensitivity_rtol)
-        return orbit_result(asm, res.orbit, kind, float(speed_hz), float(chamber_pressure_pa),
-                            a, extra_stats=hbal.hb_stats(res))
+        return _with_hint(orbit_result(asm, res.orbit, kind, float(speed_hz),
+                                       float(chamber_pressure_pa), a,
+                                       extra_stats={**hbal.hb_stats(res), **start_stats}),
+                          start_scale, sigma)
     opt = _core.ShootingOptions()
     opt.cvode = c
     opt.tol = float(tol)
@@ -273,7 +299,41 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                                               sensitivity_error_control)
     opt.broyden = v.choice("newton", newton, NEWTON) == "broyden"
     res = _core.periodic_orbit(asm.solver, inp, opt)
-    return orbit_result(asm, res, kind, float(speed_hz), float(chamber_pressure_pa), a)
+    return _with_hint(orbit_result(asm, res, kind, float(speed_hz), float(chamber_pressure_pa),
+                                   a, extra_stats=start_stats), start_scale, sigma)
+
+
+def _with_hint(res: PeriodicOrbitResult, start_scale, sigma) -> PeriodicOrbitResult:
+    """A forced orbit from the linear start that failed: its message says what to do next
+    (the settling time from the equilibrium's least-damped mode, or that there is none)."""
+    if res.ok or start_scale is None:
+        return res
+    how = ("the linear unbalance response at the equilibrium" if start_scale == 1.0 else
+           f"the linear unbalance response at the equilibrium scaled by {start_scale:.3g} "
+           "(at full size it closes a film to a tenth of its clearance: a large orbit)")
+    if sigma < 0:
+        settle = np.log(100.0) / -sigma
+        what = (f"the equilibrium's least-damped mode decays as exp({sigma:.4g} t), so a "
+                f"transient with the unbalance settles to 1 % in about {settle:.3g} s: give "
+                f"start=rotordyn.transient(system, {settle:.3g}, ..., unbalances=...) "
+                f"(command line: --settle-s {settle:.3g}), or continue the orbit over the "
+                "speed from a speed where it converged (rotordyn.continuation)")
+    else:
+        what = (f"the equilibrium is unstable (an eigenvalue with real part {sigma:.4g} 1/s): "
+                "there may be no stable forced orbit near it (a whirl beside the unbalance "
+                "response); run a transient to see where the motion goes")
+    return dataclasses.replace(res, message=f"{res.message}; started from {how}; {what}")
+
+
+def _unbalance_vectors(asm, ub_list) -> tuple[np.ndarray, np.ndarray]:
+    """u_c, u_s (n,): the unbalance force is Ω² (u_c cos Ωt + u_s sin Ωt)."""
+    uc, us = np.zeros(asm.n), np.zeros(asm.n)
+    for st, me, ph in ub_list:
+        L = asm.station_load_matrix(st)
+        p = np.radians(ph)
+        uc += me * (L[:, 0] * np.cos(p) + L[:, 1] * np.sin(p))
+        us += me * (-L[:, 0] * np.sin(p) + L[:, 1] * np.cos(p))
+    return uc, us
 
 
 def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: float,

@@ -99,8 +99,10 @@ def _orbit_arguments(s) -> None:
     s.add_argument("--settle-s", type=float, default=None, metavar="S",
                    help="simulated seconds of transient before the orbit solve, from the "
                         "equilibrium disturbed by --disturbance-c (default: 1.0 s for a limit "
-                        "cycle by shooting, else 0: start at the equilibrium, for a limit cycle "
-                        "by harmonic balance displaced along its least-damped whirl mode)")
+                        "cycle by shooting, else 0: a forced orbit starts from the linear "
+                        "unbalance response at the equilibrium, a limit cycle by harmonic "
+                        "balance from the equilibrium displaced along its least-damped whirl "
+                        "mode)")
     s.add_argument("--disturbance-c", type=float, default=0.1, metavar="F",
                    help="vertical disturbance of the active journal, fraction of its "
                         "clearance (default 0.1)")
