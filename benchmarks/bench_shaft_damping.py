@@ -11,7 +11,8 @@ rotor at rest on rigid supports at its bearing stations: β = 2ζ/ω₁.
 Printed for β = 0 (baseline) and β: the stability at ``speed`` Hz — max Re λ with the
 frequency and kind of the mode that holds it, and the least damped mode below 100 Hz (the
 film-coupled modes) — then a transient of ``revs`` revolutions from the equilibrium disturbed
-by 0.1 c (CVODE BDF, the package's default tolerances): CVODE steps, stability-limit order
+by 0.1 c (CVODE BDF, the package's default tolerances): the largest difference of the two
+runs' journal orbits (in clearances), CVODE steps, stability-limit order
 reductions, right-hand sides, Jacobians, and the median wall and CPU time of interleaved
 repeats (default 1: the undamped run takes ~20 s CPU), with the machine load before and
 after.
@@ -88,6 +89,7 @@ def main() -> None:
     # in every repeat) and the median wall and CPU time
     cases = {"β = 0": s0, f"β = {beta:.3g}": s1}
     times = {k: ([], []) for k in cases}
+    last = {}
     for _ in range(a.repeat):
         for tag, s in cases.items():
             w0, c0 = time.perf_counter(), time.process_time()
@@ -95,13 +97,19 @@ def main() -> None:
             times[tag][0].append(time.perf_counter() - w0)
             times[tag][1].append(time.process_time() - c0)
             st = tr.stats
+            last[tag] = tr
             print(f"transient {tag}: status {tr.status}; steps {st['steps']}, stability-limit "
                   f"order reductions {st['stab_lim_order_reductions']}, rhs {st['rhs_evals']}, "
                   f"Jacobians {st['jac_evals']}, error-test fails {st['error_test_fails']}; "
                   f"{times[tag][0][-1]:.1f} s wall, {times[tag][1][-1]:.1f} s CPU", flush=True)
-    for tag, (w, c) in times.items():
+    a0, a1 = (last[k] for k in cases)
+    dj = np.hypot(a1.journal_x_m - a0.journal_x_m, a1.journal_y_m - a0.journal_y_m)
+    amp = np.hypot(a0.journal_x_m - a0.journal_x_m[-1], a0.journal_y_m - a0.journal_y_m[-1])
+    print(f"journal orbits, β against β = 0: largest difference {dj.max() / c:.2e} c "
+          f"(the undamped run's largest excursion from its end point: {amp.max() / c:.2e} c)")
+    for tag, (w, cpu) in times.items():
         print(f"transient {tag}: median {statistics.median(w):.2f} s wall, "
-              f"{statistics.median(c):.2f} s CPU over {a.repeat} interleaved repeat(s)")
+              f"{statistics.median(cpu):.2f} s CPU over {a.repeat} interleaved repeat(s)")
     footer()
 
 

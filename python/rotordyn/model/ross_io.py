@@ -1,8 +1,8 @@
 """ROSS rotors as rotordyn systems (optional: ``pip install rotordyn[ross]``): a ROSS ``Rotor``
 (uniform shaft elements, disks, linear bearings) as a :class:`rotordyn.System`: one section per
-ROSS shaft element (stations = ROSS nodes, its alpha/beta damping kept), materials by
-(E, G, ρ), disks, and bearings as
-linear supports (constant coefficients) or :class:`~rotordyn.bearings.TableBearing`
+ROSS shaft element (stations = ROSS nodes; its proportional damping alpha, beta as the
+section's ``damping_alpha_1_per_s``, ``damping_beta_s``), materials by (E, G, ρ), disks, and
+bearings as linear supports (constant coefficients) or :class:`~rotordyn.bearings.TableBearing`
 (speed-dependent ones, or with mass coefficients mxx…myy; ROSS frequencies are rad/s, ours Hz).
 The other direction, a bearing element as a ROSS ``BearingElement``, is
 :func:`rotordyn.bearings.to_ross_bearing`."""

@@ -240,8 +240,9 @@ class Rotor:
     Material damping of the shaft (ROSS's ShaftElement ``alpha``, ``beta``): each element adds
     ``C_e = α M_e + β K_e`` to the damping matrix C, stationary (fixed frame); the disks and
     supports add none. ``damping_alpha_1_per_s`` (α, 1/s) and ``damping_beta_s`` (β, s) hold
-    for every section that gives no value of its own. A mode of the undamped rotor at rest
-    (circular frequency ω) gets the damping ratio ζ = α/(2ω) + βω/2; a hysteretic loss
+    for every section that gives no value of its own. A mode of the undamped rotor at rest on
+    rigid supports (circular frequency ω) gets the damping ratio ζ = α/(2ω) + βω/2 (the α
+    term exactly only without disks, whose mass takes no α); a hysteretic loss
     factor η at a reference frequency is β = η/ω_ref (:meth:`beta_from_loss_factor`).
     0 (the default) is the undamped shaft.
 
