@@ -122,9 +122,9 @@ def test_damping_enters_the_linear_system_reduced_like_the_supports_c():
     np.testing.assert_allclose(dC[:nr, :nr], expected, rtol=1e-10,
                                atol=1e-12 * np.abs(expected).max())
     assert not np.any(dC[nr:]) and not np.any(dC[:, nr:])
-    # the equilibrium does not see C; the eigenvalues do: the bending modes above 1 kHz
-    # (~1.6 kHz, ζ 4 % → 14 %) much more damped
-    np.testing.assert_array_equal(l0.equilibrium.r, l1.equilibrium.r)
+    # the equilibrium does not see C (to its warm start's round-off: 2e-14 seen in the
+    # suite); the eigenvalues do: the bending modes above 1 kHz much more damped
+    np.testing.assert_allclose(l1.equilibrium.r, l0.equilibrium.r, rtol=1e-10)
     e0 = rd.stability(s0, 80.0).eigenvalues
     e1 = rd.stability(s1, 80.0).eigenvalues
     hi0, hi1 = e0[e0.imag > 2 * np.pi * 1e3], e1[e1.imag > 2 * np.pi * 1e3]
