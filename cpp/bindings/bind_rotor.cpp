@@ -33,6 +33,10 @@ void bind_rotor(py::module_& m) {
       .def_readwrite("shear_coefficient", &ShaftElement::shear_coefficient)
       .def_readwrite("shear", &ShaftElement::shear)
       .def_readwrite("rotary_inertia", &ShaftElement::rotary_inertia)
+      .def_readwrite("damping_alpha", &ShaftElement::damping_alpha,
+                     "proportional damping α (1/s): the element adds α M_e to C")
+      .def_readwrite("damping_beta", &ShaftElement::damping_beta,
+                     "proportional damping β (s): the element adds β K_e to C")
       .def("area", &ShaftElement::area)
       .def("second_moment", &ShaftElement::second_moment)
       .def("kappa", &ShaftElement::kappa)

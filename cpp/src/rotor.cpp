@@ -114,6 +114,12 @@ void RotorModel::validate() const {
     pos(e.density, "density");
     pos(e.young, "young");
     pos(e.shear_modulus, "shear_modulus");
+    auto nonneg = [&](double v, const char* f) {
+      require(std::isfinite(v) && v >= 0,
+              elem_field(i, f) + ": expected a finite value >= 0, got " + std::to_string(v));
+    };
+    nonneg(e.damping_alpha, "damping_alpha");
+    nonneg(e.damping_beta, "damping_beta");
     require(std::isfinite(e.inner_diameter) && e.inner_diameter >= 0 &&
                 e.inner_diameter < e.outer_diameter,
             elem_field(i, "inner_diameter") + ": expected 0 <= value < outer_diameter, got " +
@@ -147,6 +153,7 @@ RotorMatrices assemble(const RotorModel& model) {
   std::vector<T> tm, tk, tc, tg;
   tm.reserve(model.elements.size() * 64 + model.disks.size() * 4);
   tk.reserve(model.elements.size() * 64 + model.supports.size() * 4);
+  tc.reserve(model.supports.size() * 4);
   tg.reserve(model.elements.size() * 64 + model.disks.size() * 2);
   for (std::size_t i = 0; i < model.elements.size(); ++i) {
     const ElementMatrices em = element_matrices(model.elements[i]);
@@ -157,6 +164,14 @@ RotorMatrices assemble(const RotorModel& model) {
         if (em.K(a, b) != 0) tk.emplace_back(o + a, o + b, em.K(a, b));
         if (em.G(a, b) != 0) tg.emplace_back(o + a, o + b, em.G(a, b));
       }
+    // proportional material damping α M_e + β K_e (an undamped element adds no entry: C
+    // stays the supports' alone, bit for bit)
+    const double al = model.elements[i].damping_alpha, be = model.elements[i].damping_beta;
+    if (al == 0.0 && be == 0.0) continue;
+    const Matrix8d Ce = al * em.M + be * em.K;
+    for (int a = 0; a < 8; ++a)
+      for (int b = 0; b < 8; ++b)
+        if (Ce(a, b) != 0) tc.emplace_back(o + a, o + b, Ce(a, b));
   }
   for (const auto& d : model.disks) {
     const int o = 4 * d.node;

@@ -89,3 +89,29 @@ TEST_CASE("validate names the field of a negative length") {
   }
   CHECK(ok);
 }
+
+TEST_CASE("proportional damping: C = α M + β K of the elements, none from disks or at 0") {
+  RotorModel m;
+  for (int i = 0; i < 3; ++i) m.elements.push_back(steel(0.2, 0.04));
+  m.disks.push_back(Disk{1, 5.0, 0.01, 0.005});
+  const RotorMatrices undamped = assemble(m);
+  CHECK(undamped.C.nonZeros() == 0);  // α = β = 0 adds no entry
+  for (auto& e : m.elements) {
+    e.damping_alpha = 4.0;
+    e.damping_beta = 3e-5;
+  }
+  const RotorMatrices d = assemble(m);
+  m.disks.clear();
+  const RotorMatrices shaft = assemble(m);
+  const Eigen::MatrixXd expected =
+      4.0 * Eigen::MatrixXd(shaft.M) + 3e-5 * Eigen::MatrixXd(shaft.K);
+  CHECK((Eigen::MatrixXd(d.C) - expected).norm() < 1e-14 * expected.norm());
+  m.elements[1].damping_beta = -1.0;
+  bool ok = false;
+  try {
+    m.validate();
+  } catch (const InputError& ex) {
+    ok = std::string(ex.what()).find("elements[1].damping_beta") != std::string::npos;
+  }
+  CHECK(ok);
+}

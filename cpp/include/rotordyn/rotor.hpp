@@ -4,7 +4,8 @@
 // Degrees of freedom: 4 per node, ordered (x, y, θx, θy); x horizontal, y vertical up, z along
 // the shaft axis, θx and θy rotations about x and y (right-hand rule). Slopes: dx/dz = θy,
 // dy/dz = -θx. Spin Ω > 0 about +z. Equations of motion:
-//   M q̈ + (C + Ω G) q̇ + K q = f,   G skew-symmetric.
+//   M q̈ + (C + Ω G) q̇ + K q = f,   G skew-symmetric; C holds the supports' dampers and the
+// shaft's proportional material damping Σ_e (α_e M_e + β_e K_e).
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -28,6 +29,10 @@ struct ShaftElement {
   double shear_coefficient = -1;  ///< κ; <= 0 means Cowper's value from the section and ν
   bool shear = true;              ///< false: Euler-Bernoulli (φ = 0)
   bool rotary_inertia = true;     ///< false: no rotary inertia and no gyroscopic terms
+  /// Material (structural) damping, proportional: the element adds α M_e + β K_e to C
+  /// (stationary, i.e. in the fixed frame). α in 1/s, β in s; 0 = undamped (the default).
+  double damping_alpha = 0.0;
+  double damping_beta = 0.0;
 
   double area() const;
   double second_moment() const;  ///< I = π(do⁴ - di⁴)/64, m^4
@@ -70,7 +75,8 @@ struct RotorModel {
   void validate() const;  ///< throws InputError naming the field
 };
 
-/// Assembled free-free sparse matrices (n_dof × n_dof); supports add to K and C.
+/// Assembled free-free sparse matrices (n_dof × n_dof); supports add to K and C, the shaft
+/// elements' proportional damping α M_e + β K_e to C (nothing where α = β = 0).
 struct RotorMatrices {
   SparseMatrixD M, K, C, G;
 };

@@ -45,10 +45,24 @@ def gravity_load(system: System) -> np.ndarray:
                                                                    n_nodes))
 
 
+def refuse_rotating_damping(system: System, what: str) -> None:
+    """InputError when the rotor's β damping acts in the rotating frame: ``what`` does not
+    carry its speed-dependent circulatory stiffness Ω K_c (only the rotor-alone modes and
+    Campbell diagram do), and ignoring it would give a wrong answer."""
+    if system.rotor.has_rotating_damping:
+        raise InputError(
+            f"rotor.damping_rotating: {what} does not include the circulatory stiffness Ω K_c "
+            "of rotating (internal) shaft damping; only rotordyn.modes and "
+            "rotordyn.rotor_campbell (the rotor on its supports) do. Set damping_rotating = "
+            "false for this analysis (β then damps as stationary material damping)")
+
+
 class Assembled:
     """The C++ ``SystemModel`` and ``SystemSolver`` of a System, with the index maps."""
 
     def __init__(self, system: System):
+        refuse_rotating_damping(system, "the analysis of the system (equilibrium, stability, "
+                                "campbell, unbalance response, transient, state space, ...)")
         self.system = system
         self.rotor = rotor_matrices(system)
         M, K, C, G = self.rotor.matrices()

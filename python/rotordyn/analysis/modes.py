@@ -42,6 +42,7 @@ class RotorMatrices:
         self._mats = None
         self._op = None
         self._xy = self._rot = None
+        self._kc = False  # not yet built (None: no rotating damping)
         if method != "none":
             if not system.reduction.master_stations:
                 raise InputError(
@@ -64,6 +65,35 @@ class RotorMatrices:
                     a.flags.writeable = False  # shared through the cache: never altered
             self._mats = mats
         return self._mats
+
+    def circulatory(self):
+        """K_c of the analysed model (reduced like C), the circulatory stiffness per unit
+        spin speed (rad/s) of the shaft's rotating (internal) damping, N·s/m: the fixed-frame
+        equations take K + Ω K_c. K_c = −K_β J, K_β = Σ β_e K_e (the elements' β damping,
+        assembled in C++) and J the 90° turn about z of every node's (x, y) and (θx, θy): the
+        rotating-frame damping force −K_β (q̇ − Ω J q) (Friswell et al. 2010, Dynamics of
+        Rotating Machines, rotating damping; Genta 2005, Dynamics of Rotating Systems). None when
+        the rotor has no rotating damping."""
+        if self._kc is False:
+            self._kc = None
+            if self.system.rotor.has_rotating_damping:
+                import scipy.sparse as sp
+
+                core = self.system.to_core()
+                elems = core.elements
+                for e in elems:
+                    e.damping_alpha = 0.0
+                core.elements, core.disks, core.supports, core.rigid_nodes = elems, [], [], []
+                data, indices, indptr, shape = _core.assemble(core)["C"]
+                Kb = sp.csc_matrix((data, indices, indptr), shape=shape)
+                kc = -np.asarray((Kb @ turn_matrix(shape[0])).todense())
+                dofs = np.asarray(self.full.dofs)
+                kc = kc[np.ix_(dofs, dofs)]
+                if self.reduction is not None:
+                    kc = np.asarray(self.reduction.reduce(kc))
+                kc.flags.writeable = False
+                self._kc = kc
+        return self._kc
 
     def operator(self):
         """The C++ ``ModalOperator`` of :meth:`matrices` (sparse pencil and K's factorisation,
@@ -97,6 +127,18 @@ class RotorMatrices:
         out = np.zeros((n_full,) + qf.shape[1:], dtype=qf.dtype)
         out[np.asarray(self.full.dofs)] = qf
         return out
+
+
+def turn_matrix(n_dof: int):
+    """J (sparse, n_dof × n_dof): every node's (x, y, θx, θy) turned by +90° about z,
+    (−y, x, −θy, θx); J q is i·q of the complex whirl notation."""
+    import scipy.sparse as sp
+
+    i = np.arange(0, n_dof, 2)  # the first of each pair (x, θx)
+    rows = np.concatenate([i, i + 1])
+    cols = np.concatenate([i + 1, i])
+    vals = np.concatenate([-np.ones(i.size), np.ones(i.size)])
+    return sp.csc_matrix((vals, (rows, cols)), shape=(n_dof, n_dof))
 
 
 # Cache of the constrained (and reduced) matrices per (System, method), keyed by value: a System
@@ -159,7 +201,12 @@ def clear_cache() -> None:
 
 def _result(rm: RotorMatrices, speed_hz: float, n_modes: int, model_name: str) -> ModesResult:
     w = hz_to_rad_s(speed_hz)
-    r = rm.operator().modal(w, rm.xy_pairs(), n_modes, True, rm.rot_pairs())
+    kc = rm.circulatory()
+    if kc is None:
+        r = rm.operator().modal(w, rm.xy_pairs(), n_modes, True, rm.rot_pairs())
+    else:  # K + Ω K_c changes with the speed: no kept factorisation of K
+        M, K, C, G = rm.matrices()
+        r = _core.modal(M, C + w * G, K + w * kc, rm.xy_pairs(), n_modes, True, rm.rot_pairs())
     shapes = rm.expand(np.asarray(r.modes))  # (4 n_nodes, n_modes)
     n_nodes = shapes.shape[0] // 4
     return ModesResult(
@@ -249,6 +296,18 @@ def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
     # n_modes=10**6 gave a 10^6-column NaN array).
     n_modes = min(n_modes, M.shape[0])
     v.memory("n_modes", 16.0 * sp.size * n_modes)
-    r = _core.campbell(M, C, G, K, rm.xy_pairs(), hz_to_rad_s(sp), n_modes, rm.rot_pairs())
-    return CampbellResult(sp, np.asarray(r.eigenvalues), np.asarray(r.whirl),
+    kc = rm.circulatory()
+    if kc is None:
+        r = _core.campbell(M, C, G, K, rm.xy_pairs(), hz_to_rad_s(sp), n_modes, rm.rot_pairs())
+        ev, wh = np.asarray(r.eigenvalues), np.asarray(r.whirl)
+    else:  # rotating damping: K + Ω K_c, one eigen-analysis per speed
+        ev = np.full((sp.size, n_modes), complex(np.nan, np.nan))
+        wh = np.zeros((sp.size, n_modes), dtype=np.int32)
+        for i, w in enumerate(hz_to_rad_s(sp)):
+            r = _core.modal(M, C + w * G, K + w * kc, rm.xy_pairs(), n_modes, False,
+                            rm.rot_pairs())
+            k = len(r.whirl)
+            ev[i, :k] = np.asarray(r.eigenvalues)
+            wh[i, :k] = [int(x) for x in r.whirl]
+    return CampbellResult(sp, ev, wh,
                           model="full" if rm.reduction is None else rm.method)

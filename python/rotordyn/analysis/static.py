@@ -17,7 +17,7 @@ import numpy as np
 
 from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import assembled, gravity_load
+from rotordyn.analysis.assembly import assembled, gravity_load, refuse_rotating_damping
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn.analysis.modes import rotor_matrices
 from rotordyn.bearings import BEARING_TYPES
@@ -61,6 +61,7 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
     fields, never a deflection. See :class:`rotordyn.results.StaticResult` for the sign
     conventions."""
     import pandas as pd
+    refuse_rotating_damping(system, "static")
     g = float(system.gravity_m_s2)
     rm = rotor_matrices(system, "none")
     full = rm.full

@@ -1,7 +1,8 @@
 """ROSS rotors as rotordyn systems (optional: ``pip install rotordyn[ross]``): a ROSS ``Rotor``
 (uniform shaft elements, disks, linear bearings) as a :class:`rotordyn.System`: one section per
-ROSS shaft element (stations = ROSS nodes), materials by (E, G, ρ), disks, and bearings as
-linear supports (constant coefficients) or :class:`~rotordyn.bearings.TableBearing`
+ROSS shaft element (stations = ROSS nodes; its proportional damping alpha, beta as the
+section's ``damping_alpha_1_per_s``, ``damping_beta_s``), materials by (E, G, ρ), disks, and
+bearings as linear supports (constant coefficients) or :class:`~rotordyn.bearings.TableBearing`
 (speed-dependent ones, or with mass coefficients mxx…myy; ROSS frequencies are rad/s, ours Hz).
 The other direction, a bearing element as a ROSS ``BearingElement``, is
 :func:`rotordyn.bearings.to_ross_bearing`."""
@@ -40,8 +41,12 @@ def system_from_ross(rotor, *, name: str = ""):
         if key not in mats:
             mats[key] = Material(name=f"m{len(mats)}", density_kg_m3=key[2], young_pa=key[0],
                                  shear_modulus_pa=key[1])
+        # ROSS's proportional damping C_e = α M_e + β K_e (its ShaftElement alpha, beta)
+        alpha, beta = float(getattr(e, "alpha", 0.0) or 0.0), float(getattr(e, "beta", 0.0) or 0.0)
         sections.append(ShaftSection(length_m=float(e.L), outer_diameter_m=float(e.odl),
-                                     inner_diameter_m=float(e.idl), material=mats[key].name))
+                                     inner_diameter_m=float(e.idl), material=mats[key].name,
+                                     damping_alpha_1_per_s=alpha or None,
+                                     damping_beta_s=beta or None))
     disks = tuple(Disk(station=int(d.n), mass_kg=float(d.m), ip_kg_m2=float(d.Ip),
                        id_kg_m2=float(d.Id)) for d in rotor.disk_elements)
     if getattr(rotor, "point_mass_elements", None):

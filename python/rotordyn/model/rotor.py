@@ -64,6 +64,10 @@ class ShaftSection:
     material: str = "steel"
     n_elements: int = 1
     shear_coefficient: float | None = None  # None: Cowper's value for the section
+    # material damping of this section (None: the rotor's damping_alpha_1_per_s /
+    # damping_beta_s): C_e = α M_e + β K_e of each of its elements
+    damping_alpha_1_per_s: float | None = None
+    damping_beta_s: float | None = None
 
     def check(self, where: str) -> None:
         """Validate; ``where`` is the field path used in messages (``rotor.section[3]``)."""
@@ -82,6 +86,9 @@ class ShaftSection:
         if self.shear_coefficient is not None:
             v.in_range(f"{where}.shear_coefficient", self.shear_coefficient, 0.0, 2.0,
                        lo_open=True)
+        for f in ("damping_alpha_1_per_s", "damping_beta_s"):
+            if getattr(self, f) is not None:
+                v.non_negative(f"{where}.{f}", getattr(self, f))
 
     @property
     def area_m2(self) -> float:
@@ -91,8 +98,13 @@ class ShaftSection:
         return material.density_kg_m3 * self.area_m2 * self.length_m
 
     def to_core(self, material: Material, *, shear: bool = True,
-                rotary_inertia: bool = True) -> list:
-        """The section's C++ elements (``n_elements`` equal ``_core.ShaftElement``)."""
+                rotary_inertia: bool = True, damping_alpha_1_per_s: float = 0.0,
+                damping_beta_s: float = 0.0) -> list:
+        """The section's C++ elements (``n_elements`` equal ``_core.ShaftElement``). The
+        damping arguments are the rotor's; the section's own values, when given, win."""
+        alpha = (damping_alpha_1_per_s if self.damping_alpha_1_per_s is None
+                 else self.damping_alpha_1_per_s)
+        beta = damping_beta_s if self.damping_beta_s is None else self.damping_beta_s
         out = []
         for _ in range(self.n_elements):
             e = _core.ShaftElement()
@@ -105,6 +117,8 @@ class ShaftSection:
             e.shear_coefficient = -1.0 if self.shear_coefficient is None else self.shear_coefficient
             e.shear = shear
             e.rotary_inertia = rotary_inertia
+            e.damping_alpha = float(alpha)
+            e.damping_beta = float(beta)
             out.append(e)
         return out
 
@@ -221,14 +235,35 @@ class Support:
 
 @dataclass(frozen=True, slots=True)
 class Rotor:
-    """Shaft sections (left to right) and rigid disks."""
+    """Shaft sections (left to right) and rigid disks.
+
+    Material damping of the shaft (ROSS's ShaftElement ``alpha``, ``beta``): each element adds
+    ``C_e = α M_e + β K_e`` to the damping matrix C, stationary (fixed frame); the disks and
+    supports add none. ``damping_alpha_1_per_s`` (α, 1/s) and ``damping_beta_s`` (β, s) hold
+    for every section that gives no value of its own. A mode of the undamped rotor at rest on
+    rigid supports (circular frequency ω) gets the damping ratio ζ = α/(2ω) + βω/2 (the α
+    term exactly only without disks, whose mass takes no α); a hysteretic loss
+    factor η at a reference frequency is β = η/ω_ref (:meth:`beta_from_loss_factor`).
+    0 (the default) is the undamped shaft.
+
+    ``damping_rotating``: the β part acts in the rotating shaft (internal damping): besides
+    β K_e in C, the fixed-frame equations get the circulatory stiffness Ω K_c,
+    K_c = −(Σ β_e K_e) J (J turns every node's (x, y) and (θx, θy) by 90° about z), which
+    destabilises forward whirl above a threshold speed. Taken by the rotor-alone analyses
+    (:func:`rotordyn.modes`, :func:`rotordyn.rotor_campbell`); the others refuse it."""
 
     sections: tuple[ShaftSection, ...]
     disks: tuple[Disk, ...] = field(default_factory=tuple)
+    damping_alpha_1_per_s: float = 0.0
+    damping_beta_s: float = 0.0
+    damping_rotating: bool = False
 
     def __post_init__(self):
         object.__setattr__(self, "sections", tuple(self.sections))
         object.__setattr__(self, "disks", tuple(self.disks))
+        v.non_negative("rotor.damping_alpha_1_per_s", self.damping_alpha_1_per_s)
+        v.non_negative("rotor.damping_beta_s", self.damping_beta_s)
+        v.boolean("rotor.damping_rotating", self.damping_rotating)
         if not self.sections:
             raise InputError("rotor.section: expected at least one shaft section, got none")
         for i, s in enumerate(self.sections):
@@ -237,6 +272,22 @@ class Rotor:
             s.check(f"rotor.section[{i}]")
         for i, d in enumerate(self.disks):
             d.check(f"disk[{i}]", self.n_stations)
+
+    @staticmethod
+    def beta_from_loss_factor(loss_factor: float, reference_hz: float) -> float:
+        """β (s) of a hysteretic loss factor η matched at one frequency: β = η/(2π f_ref).
+        Viscous β damps a mode at ω with ζ = βω/2, i.e. η(ω/ω_ref)/2: equal to the
+        hysteretic ζ = η/2 at f_ref only (above it β over-damps, below it under-damps)."""
+        eta = v.non_negative("loss_factor", loss_factor)
+        f = v.positive("reference_hz", reference_hz)
+        return eta / (2.0 * math.pi * f)
+
+    @property
+    def has_rotating_damping(self) -> bool:
+        """``damping_rotating`` with a β > 0 on some section (the circulatory term exists)."""
+        return bool(self.damping_rotating) and any(
+            (self.damping_beta_s if s.damping_beta_s is None else s.damping_beta_s) > 0
+            for s in self.sections)
 
     @property
     def n_stations(self) -> int:

@@ -158,7 +158,9 @@ class System:
         elems = []
         for s in self.rotor.sections:
             elems.extend(s.to_core(self.material(s.material), shear=shear,
-                                   rotary_inertia=rotary_inertia))
+                                   rotary_inertia=rotary_inertia,
+                                   damping_alpha_1_per_s=self.rotor.damping_alpha_1_per_s,
+                                   damping_beta_s=self.rotor.damping_beta_s))
         m.elements = elems
         disks = []
         for d in self.rotor.disks:
@@ -192,7 +194,8 @@ class System:
         return self._sparse("K")
 
     def C(self) -> sp.csc_matrix:
-        """Damping matrix of the linear supports, sparse."""
+        """Damping matrix: the linear supports' dampers and the shaft's material damping
+        Σ (α M_e + β K_e), sparse."""
         return self._sparse("C")
 
     def G(self) -> sp.csc_matrix:

@@ -123,7 +123,8 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
     rotor_t = doc.get("rotor")
     if rotor_t is None:
         raise InputError("rotor: missing table [rotor] with [[rotor.section]] entries")
-    _check_keys("rotor", rotor_t, {"section"})
+    rotor_keys = {"damping_alpha_1_per_s", "damping_beta_s", "damping_rotating"}
+    _check_keys("rotor", rotor_t, {"section"} | rotor_keys)
     sections = []
     for i, t in enumerate(_array_of_tables("rotor.section", rotor_t.get("section", []))):
         _check_keys(f"rotor.section[{i}]", t, _fields(ShaftSection))
@@ -163,7 +164,10 @@ def system_fields_from_toml(path_or_text, *, is_text: bool = False) -> dict:
         kwargs["gravity_m_s2"] = doc["gravity_m_s2"]
     if mats:
         kwargs["materials"] = tuple(mats)
-    return dict(rotor=Rotor(tuple(sections), tuple(disks)), supports=tuple(supports),
+    # (Rotor's own messages name rotor.damping_* and disk[i] already)
+    rotor = Rotor(tuple(sections), tuple(disks),
+                  **{k: rotor_t[k] for k in rotor_keys if k in rotor_t})
+    return dict(rotor=rotor, supports=tuple(supports),
                 reduction=reduction, bearings=tuple(bearings), name=doc.get("name", ""),
                 description=doc.get("description", ""), **kwargs)
 
@@ -290,7 +294,7 @@ def system_to_toml(system) -> str:
         lines.append(f"description = {_val(system.description)}")
     for m in system.materials:
         lines += ["", f"[material.{m.name}]"] + _table_lines(m, skip=("name",), defaults_too=True)
-    lines += ["", "[rotor]"]
+    lines += ["", "[rotor]"] + _table_lines(system.rotor, skip=("sections", "disks"))
     for s in system.rotor.sections:
         lines += ["", "[[rotor.section]]"] + _table_lines(s)
     for d in system.rotor.disks:

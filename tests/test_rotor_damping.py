@@ -1,0 +1,328 @@
+"""Material (proportional) damping of the shaft: C_e = α M_e + β K_e per element.
+
+References:
+- Proportional (Rayleigh) damping decouples the undamped modes: a mode of circular frequency
+  ω gets the damping ratio ζ = α/(2ω) + βω/2 and the eigenvalue
+  λ = −ζω ± iω√(1 − ζ²), |λ| = ω (Friswell, Penny, Garvey & Lees, Dynamics of Rotating
+  Machines, Cambridge 2010, on proportional damping; Géradin & Rixen, Mechanical
+  Vibrations, 3rd ed. 2015). Exact for the rotor at rest (G does not act) on rigid
+  supports (K is the shaft's alone), and for its Guyan reduction too (T'(αM + βK)T =
+  αM_r + βK_r).
+- ROSS ``ShaftElement(alpha=..., beta=...)`` adds the same α M_e + β K_e (compared when
+  ross-rotordynamics is installed, skipped otherwise).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rotordyn as rd
+from rotordyn import _core
+from rotordyn.analysis.modes import rotor_matrices, turn_matrix
+
+MODELS = Path(__file__).parent / "data" / "models"
+ALPHA, BETA = 20.0, 2.0e-5  # 1/s, s: ζ of 1 % to 13 % over the modes below
+
+
+def _compressor(alpha=0.0, beta=0.0, method="none", masters=(), disks=True):
+    """The compressor rotor (tests/data/models/compressor_linear.toml: 1.2 m, three 30 kg
+    impellers) on rigid supports at its bearing stations 1 and 5, no bearing element."""
+    s = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    rotor = dataclasses.replace(s.rotor, damping_alpha_1_per_s=alpha, damping_beta_s=beta,
+                                disks=s.rotor.disks if disks else ())
+    return dataclasses.replace(s, rotor=rotor, bearings=(),
+                               supports=(rd.Support(1), rd.Support(5)),
+                               reduction=rd.Reduction(master_stations=masters, method=method))
+
+
+@pytest.mark.parametrize("method,masters,disks", [("none", (), False), ("guyan", (2, 3, 4), False),
+                                                  ("none", (), True), ("guyan", (2, 3, 4), True)])
+def test_damping_ratio_of_proportional_damping_is_the_closed_form(method, masters, disks):
+    """α M_e + β K_e of the shaft: with the disks (whose mass takes no α, as in ROSS) the
+    closed form holds for β alone; the bare shaft takes both. ω from scipy's eigh of the
+    undamped (K, M), independent of the package's eigen-solver (the full model's
+    shift-invert Arnoldi: |λ| to 4e-8 seen, so ζ ~ 0.1 to ~4e-7)."""
+    from scipy.linalg import eigh
+
+    n = 8
+    alpha = 0.0 if disks else ALPHA
+    M, K = rotor_matrices(_compressor(method=method, masters=masters,
+                                      disks=disks)).matrices()[:2]
+    omega = np.sqrt(eigh(K, M, eigvals_only=True)[:n])  # undamped, rad/s (x/y pairs)
+    lam = rd.modes(_compressor(alpha, BETA, method, masters, disks), 0.0,
+                   n_modes=n).eigenvalues
+    zeta = alpha / (2 * omega) + BETA * omega / 2
+    assert zeta.min() > 0.002 and zeta.max() < 0.3  # a case where the terms count
+    if not disks:
+        assert (alpha / (2 * omega[0])) > 0.1 * zeta[0]  # α's share is not negligible
+    np.testing.assert_allclose(np.abs(lam), omega, rtol=2e-7)
+    np.testing.assert_allclose(-lam.real / np.abs(lam), zeta, rtol=2e-6)
+
+
+def test_assembled_damping_is_alpha_m_plus_beta_k_of_the_shaft():
+    """Free-free shaft without supports: C = αM + βK; disks take no damping."""
+    s = _compressor(ALPHA, BETA)
+    s = dataclasses.replace(s, supports=(), rotor=dataclasses.replace(s.rotor, disks=()))
+    C, M, K = (x.toarray() for x in (s.C(), s.M(), s.K()))
+    np.testing.assert_allclose(C, ALPHA * M + BETA * K, rtol=1e-14, atol=1e-12 * np.abs(C).max())
+    with_disks = _compressor(ALPHA, BETA)
+    with_disks = dataclasses.replace(with_disks, supports=())
+    np.testing.assert_array_equal(with_disks.C().toarray(), C)  # disks add M only
+
+
+def test_a_section_value_replaces_the_rotors():
+    s = _compressor(0.0, BETA)
+    secs = s.rotor.sections
+    # every section naming the rotor's value: the same matrix, bit for bit
+    same = dataclasses.replace(s, rotor=dataclasses.replace(
+        s.rotor, damping_beta_s=0.0,
+        sections=tuple(dataclasses.replace(x, damping_beta_s=BETA) for x in secs)))
+    np.testing.assert_array_equal(same.C().toarray(), s.C().toarray())
+    # the first section (2 elements) undamped: its own nodes 0, 1 lose their C rows
+    first = dataclasses.replace(s, rotor=dataclasses.replace(
+        s.rotor, sections=(dataclasses.replace(secs[0], damping_beta_s=0.0),) + secs[1:]))
+    C = first.C().toarray()
+    assert not np.any(C[:8]) and np.any(C[8:12]) and np.any(s.C().toarray()[:8])
+
+
+def test_zero_damping_adds_no_entry():
+    """α = β = 0 (given or default) assembles C from the supports alone: the same sparse
+    matrix and the same analysis results, bit for bit."""
+    s = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    z = dataclasses.replace(s, rotor=dataclasses.replace(
+        s.rotor, damping_alpha_1_per_s=0.0, damping_beta_s=0.0,
+        sections=tuple(dataclasses.replace(x, damping_alpha_1_per_s=0.0, damping_beta_s=0.0)
+                       for x in s.rotor.sections)))
+    C0, Cz = s.C(), z.C()
+    assert Cz.nnz == C0.nnz == 8  # the two supports' 2 × 2 blocks
+    np.testing.assert_array_equal(Cz.toarray(), C0.toarray())
+    a, b = rd.modes(s, 100.0).eigenvalues, rd.modes(z, 100.0).eigenvalues
+    np.testing.assert_array_equal(a, b)
+
+
+def test_damping_enters_the_linear_system_reduced_like_the_supports_c():
+    """The stability analysis's structural C of a Guyan-reduced rotor on fluid-film bearings
+    (the compressor on plain bearings) is the undamped one plus T'(βK_shaft)T."""
+    from coarse_models import compressor_plain
+
+    s0 = compressor_plain()
+    s1 = dataclasses.replace(s0, rotor=dataclasses.replace(s0.rotor, damping_beta_s=BETA))
+    l0 = rd.linearize(s0, 80.0)
+    l1 = rd.linearize(s1, 80.0)
+    rm = rotor_matrices(s0)  # no supports: the constrained K is the shaft's alone
+    expected = np.asarray(rm.reduction.reduce(BETA * np.asarray(rm.full.K)))
+    nr = expected.shape[0]
+    dC = l1.C_structure - l0.C_structure
+    np.testing.assert_allclose(dC[:nr, :nr], expected, rtol=1e-10,
+                               atol=1e-12 * np.abs(expected).max())
+    assert not np.any(dC[nr:]) and not np.any(dC[:, nr:])
+    # the equilibrium does not see C (to its warm start's round-off: 2e-14 seen in the
+    # suite); the eigenvalues do: the bending modes above 1 kHz much more damped
+    np.testing.assert_allclose(l1.equilibrium.r, l0.equilibrium.r, rtol=1e-10)
+    e0 = rd.stability(s0, 80.0).eigenvalues
+    e1 = rd.stability(s1, 80.0).eigenvalues
+    hi0, hi1 = e0[e0.imag > 2 * np.pi * 1e3], e1[e1.imag > 2 * np.pi * 1e3]
+    assert hi0.size == hi1.size > 0
+    assert np.all(hi1.real < 2 * hi0.real)
+
+
+def test_transient_steady_state_is_the_unbalance_response_with_damping():
+    """The transient right-hand side and Jacobian carry C: on linear supports the settled
+    unbalance orbit equals the harmonic solution (K − Ω²M + iΩ(C + ΩG)) X = F, C including
+    β K, at 160 Hz near the first bending critical (~170 Hz) where β = 2e-4 s lowers the
+    amplitude by a third. The orbit's harmonic amplitudes are fitted by least squares over the
+    last 10 of 40 revolutions."""
+    s = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    s = dataclasses.replace(s, rotor=dataclasses.replace(s.rotor, damping_beta_s=2e-4),
+                            gravity_m_s2=0.0)
+    und = dataclasses.replace(s, rotor=dataclasses.replace(s.rotor, damping_beta_s=0.0))
+    ub, f = [(3, 1e-3, 0.0)], 160.0
+    u1 = rd.unbalance_response(s, ub, [f], stations=[3], refine=False)
+    u0 = rd.unbalance_response(und, ub, [f], stations=[3], refine=False)
+    X = np.array([u1.x[0, 0], u1.y[0, 0]])
+    assert abs(u1.major_m[0, 0] / u0.major_m[0, 0] - 1) > 0.3  # β matters at this speed
+    tr = rd.transient(s, 40 / f, f, unbalances=ub, n_out=4001)
+    assert tr.status == "ok"
+    late = tr.t > 30 / f
+    w = 2 * np.pi * f * tr.t[late]
+    A = np.column_stack([np.cos(w), np.sin(w)])
+    i3 = 2 * list(s.reduction.master_stations).index(3)  # station 3's x, y in r
+    fit = np.linalg.lstsq(A, tr.r[late][:, i3:i3 + 2], rcond=None)[0]  # (cos, sin) × (x, y)
+    Xt = fit[0] - 1j * fit[1]  # x = Re(X e^{iΩt})
+    np.testing.assert_allclose(np.abs(Xt), np.abs(X), rtol=2e-3)
+
+
+@pytest.mark.parametrize("field,value", [("damping_alpha_1_per_s", -1.0),
+                                         ("damping_beta_s", float("nan")),
+                                         ("damping_beta_s", float("inf")),
+                                         ("damping_alpha_1_per_s", "a")])
+def test_bad_damping_names_the_field(field, value):
+    s = _compressor()
+    with pytest.raises(rd.InputError, match=rf"rotor\.{field}"):
+        dataclasses.replace(s.rotor, **{field: value})
+    with pytest.raises(rd.InputError, match=rf"rotor\.section\[0\]\.{field}"):
+        rd.Rotor((rd.ShaftSection(0.5, 0.05, **{field: value}),))
+    text = s.to_toml().replace("[rotor]\n", f"[rotor]\n{field} = {_toml(value)}\n", 1)
+    with pytest.raises(rd.InputError, match=rf"rotor\.{field}"):
+        rd.System.from_toml(text, is_text=True)
+    e = _core.ShaftElement()
+    e.length, e.outer_diameter, e.density, e.young, e.shear_modulus = 0.1, 0.05, 7850, 2e11, 8e10
+    m = _core.RotorModel()
+    if isinstance(value, float):
+        setattr(e, "damping_alpha" if "alpha" in field else "damping_beta", value)
+        m.elements = [e]
+        with pytest.raises(rd.InputError, match=r"elements\[0\]\.damping_"):
+            m.validate()
+
+
+def _toml(value) -> str:
+    if isinstance(value, str):
+        return f'"{value}"'
+    return {math.inf: "inf"}.get(value, "nan" if value != value else repr(value))
+
+
+def test_toml_round_trip_and_zero_writes_nothing():
+    s = _compressor(ALPHA, BETA)
+    secs = s.rotor.sections
+    s = dataclasses.replace(s, rotor=dataclasses.replace(
+        s.rotor, sections=(dataclasses.replace(secs[0], damping_beta_s=1e-4),) + secs[1:]))
+    text = s.to_toml()
+    assert f"damping_alpha_1_per_s = {ALPHA!r}" in text and "damping_beta_s = 0.0001" in text
+    back = rd.System.from_toml(text, is_text=True)
+    assert back == s
+    np.testing.assert_array_equal(back.C().toarray(), s.C().toarray())
+    assert "damping" not in _compressor().to_toml()  # undamped files stay as they were
+    with pytest.raises(rd.InputError, match=r"rotor\.damping_gamma: unknown key"):
+        rd.System.from_toml(text.replace("damping_alpha_1_per_s", "damping_gamma"), is_text=True)
+
+
+def test_beta_from_loss_factor():
+    beta = rd.Rotor.beta_from_loss_factor(0.004, 150.0)
+    assert beta == pytest.approx(0.004 / (2 * math.pi * 150.0), rel=1e-15)
+    # the viscous β matches the hysteretic ζ = η/2 at the reference frequency only
+    assert beta * (2 * math.pi * 150.0) / 2 == pytest.approx(0.002, rel=1e-14)
+    with pytest.raises(rd.InputError, match="reference_hz"):
+        rd.Rotor.beta_from_loss_factor(0.004, 0.0)
+    with pytest.raises(rd.InputError, match="loss_factor"):
+        rd.Rotor.beta_from_loss_factor(-0.1, 10.0)
+
+
+@pytest.mark.ross
+def test_modes_equal_ross_with_shaft_damping():
+    """ROSS's run_modal on a shaft with alpha, beta against rotordyn's modes of the imported
+    rotor (its lateral eigenvalues: ROSS's elements also carry axial and torsional DOFs)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rs = pytest.importorskip("ross")
+        steel = rs.Material(name="Steel_damping", rho=7810, E=211e9, G_s=81.2e9)
+        shaft = [rs.ShaftElement(0.25, 0.0, 0.05, material=steel, shear_effects=True,
+                                 rotary_inertia=True, gyroscopic=True, alpha=ALPHA, beta=BETA)
+                 for _ in range(6)]
+        disk = rs.DiskElement.from_geometry(n=3, material=steel, width=0.07, i_d=0.05,
+                                            o_d=0.28)
+        brg = [rs.BearingElement(n, kxx=1e7, kyy=1e7, cxx=0.0, cyy=0.0) for n in (0, 6)]
+        rotor = rs.Rotor(shaft, [disk], brg)
+        ev = np.asarray(rotor.run_modal(0.0, num_modes=24).evalues)
+    from rotordyn.model import system_from_ross
+
+    s = system_from_ross(rotor)
+    assert s.rotor.sections[0].damping_beta_s == BETA
+    ours = rd.modes(s, 0.0, n_modes=6).eigenvalues
+    ross = ev[ev.imag > 0]
+    for lam in ours:
+        assert np.min(np.abs(ross - lam)) <= 1e-6 * abs(lam)
+
+
+# -- rotating (internal) damping ---------------------------------------------------------------
+def _jeffcott(c_e, beta, rotating=True):
+    """A Jeffcott-like rotor: Ø 20 mm steel shaft, 0.6 m between rigid supports, a 9.9 kg
+    disk at mid-span (station 1) where a linear support adds the external damping c_e only;
+    Guyan-reduced to the disk's x, y (its rotations vanish there by symmetry)."""
+    steel = rd.Material("steel", 7850.0, 2.1e11, 0.3)
+    secs = tuple(rd.ShaftSection(0.3, 0.02, n_elements=4) for _ in range(2))
+    disk = rd.Disk.from_geometry(1, steel, width_m=0.04, outer_diameter_m=0.2,
+                                 inner_diameter_m=0.02)
+    rotor = rd.Rotor(secs, (disk,), damping_beta_s=beta, damping_rotating=rotating)
+    sup = (rd.Support(0), rd.Support(2),
+           rd.Support(1, "linear", cxx_n_s_per_m=c_e, cyy_n_s_per_m=c_e))
+    return rd.System(rotor=rotor, materials=(steel,), supports=sup,
+                     reduction=rd.Reduction(master_stations=(1,), method="guyan"))
+
+
+def test_circulatory_matrix_is_skew_and_turns_with_the_shaft():
+    s = _jeffcott(20.0, 1e-4)
+    rm = rotor_matrices(s, "none")
+    kc = rm.circulatory()
+    np.testing.assert_allclose(kc, -kc.T, atol=1e-12 * np.abs(kc).max())
+    J = turn_matrix(4 * (s.rotor.n_elements + 1)).toarray()
+    Kb = 1e-4 * (dataclasses.replace(s, supports=(), rotor=dataclasses.replace(
+        s.rotor, disks=())).K().toarray())
+    np.testing.assert_allclose(Kb @ J, J @ Kb, atol=1e-12 * np.abs(Kb).max())  # isotropic
+    assert rotor_matrices(_jeffcott(20.0, 1e-4, rotating=False), "none").circulatory() is None
+
+
+def test_jeffcott_internal_damping_threshold():
+    """Rigid-support Jeffcott rotor with external damping c_e and internal (rotating) damping
+    c_i: stable below Ω_th = ω_n (1 + c_e/c_i), the forward mode unstable above (Friswell
+    et al. 2010, Dynamics of Rotating Machines, on rotating damping; Genta 2005, Dynamics of
+    Rotating Systems). In complex form m z̈ + (c_e + c_i) ż + (k − iΩc_i) z = 0; at the
+    threshold λ = iω, whose imaginary part gives ω = Ω c_i/(c_e + c_i) and real part
+    k = m ω². Here ω_n = √(k/m) and c_i = β k of the reduced
+    model (its C is c_e + βk exactly). The shaft's own gyroscopic coupling g (reduced
+    G = [[0, g], [−g, 0]], Ø 20 mm shaft beside a 9.9 kg disk) adds −iΩg ż: the same two
+    conditions then give Ω_th = √(k/(mρ² − gρ)), ρ = c_i/(c_e + c_i), 7e-5 above the classic
+    value; found to 1e-8 of that form, and to 1e-4 of the classic one."""
+    from scipy.optimize import brentq
+
+    c_e, beta = 20.0, 1.0e-4
+    s = _jeffcott(c_e, beta)
+    M, K, C, G = rotor_matrices(s).matrices()
+    m, k = M[0, 0], K[0, 0]
+    assert M[1, 1] == pytest.approx(m, rel=1e-12) and K[1, 1] == pytest.approx(k, rel=1e-12)
+    c_i = beta * k
+    np.testing.assert_allclose(C, (c_e + c_i) * np.eye(2), rtol=1e-12)
+    wn = math.sqrt(k / m)
+    omega_th = wn * (1 + c_e / c_i)
+
+    def growth(f_hz, whirl="forward"):
+        r = rd.modes(s, f_hz, reduction="guyan")
+        return r.eigenvalues.real[r.whirl == whirl].max()
+
+    f_th = brentq(growth, 1.05 * wn / (2 * math.pi), 2.0 * omega_th / (2 * math.pi),
+                  xtol=1e-10)
+    assert 2 * math.pi * f_th == pytest.approx(omega_th, rel=1e-4)
+    g, rho = G[0, 1], c_i / (c_e + c_i)
+    assert G[1, 0] == -g and 0 < g < 1e-3 * m
+    assert 2 * math.pi * f_th == pytest.approx(math.sqrt(k / (m * rho**2 - g * rho)), rel=1e-8)
+    above = rd.modes(s, 1.2 * f_th, reduction="guyan")
+    assert above.eigenvalues.real[above.whirl == "forward"].max() > 0
+    assert above.eigenvalues.real[above.whirl == "backward"].max() < 0
+    # stationary β damping (the same C) never destabilises
+    still = rd.modes(_jeffcott(c_e, beta, rotating=False), 3 * f_th, reduction="guyan")
+    assert still.eigenvalues.real.max() < 0
+    # the rotor Campbell diagram crosses at the same speed
+    camp = rd.rotor_campbell(s, [0.9 * f_th, 1.1 * f_th], reduction="guyan")
+    ev = camp.eigenvalues
+    assert ev[0].real.max() < 0 < ev[1].real.max()
+
+
+def test_rotating_damping_is_refused_where_it_is_not_carried():
+    from coarse_models import compressor_plain
+
+    s = compressor_plain()
+    s = dataclasses.replace(s, rotor=dataclasses.replace(s.rotor, damping_beta_s=1e-5,
+                                                         damping_rotating=True))
+    for call in (lambda: rd.equilibrium(s, 50.0), lambda: rd.stability(s, 50.0),
+                 lambda: rd.static(s, 50.0)):
+        with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):
+            call()
+    back = rd.System.from_toml(s.to_toml(), is_text=True)
+    assert back == s and "damping_rotating = true" in s.to_toml()
+    with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):
+        dataclasses.replace(s.rotor, damping_rotating="yes")
