@@ -163,3 +163,6 @@ def test_model_file_refusals(capsys):
     assert "--diameter-m" in capsys.readouterr().err
     assert main(["bearing", "--speed-hz", "150", "--load-n", "0", "-1", *TILT]) == 2
     assert "--diameter-m" in capsys.readouterr().err
+    # an oil density without an oil law would be silently ignored: refused
+    assert main([*base, "--bearing", "NDE bearing", "--density-kg-m3", "870", *TILT]) == 2
+    assert "--density-kg-m3" in capsys.readouterr().err

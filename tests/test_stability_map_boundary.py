@@ -87,3 +87,26 @@ def test_map_draws_and_ticks_both_halves(sweep):
     cb = ax.collections[0].colorbar
     ticks = np.asarray(cb.get_ticks())
     assert (ticks < 0).any() and (ticks > 0).any() and (ticks == 0).any()
+
+
+def test_one_signed_map_ticks_only_its_half():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from rotordyn.plot.maps import stability_map_grid
+
+    ax = stability_map_grid([1.0, 2.0], [50.0, 60.0], np.array([[1.0, 2.0], [3.0, 4.0]]),
+                            xname="bearings.*.clearance_m", yname="speed_hz")
+    ticks = np.asarray(ax.collections[0].colorbar.get_ticks())
+    assert not (ticks < 0).any()  # the -1e-9 padding of an unstable map is not labelled
+
+
+def test_units_of_thermal_fields():
+    from rotordyn.units import split_unit
+
+    assert split_unit("thermal.supply_temperature_c") == ("thermal.supply_temperature", "°C")
+    assert split_unit("thermal.oil.t1_c") == ("thermal.oil.t1", "°C")
+    assert split_unit("bearing[0].oil.beta_1_per_k") == ("bearing[0].oil.beta", "1/K")
+    assert split_unit("thermal.tol_k") == ("thermal.tol", "K")
+    for clearance_units in ("x_over_c", "amplitude_c", "disturbance_c", "amplitudes_c", "p_c"):
+        assert split_unit(clearance_units)[1] == "1"

@@ -202,6 +202,10 @@ namespace {
 // monodromy (balanced: under a second; docs/nonlinear.md).
 Eigen::MatrixXd balanced_exp(const Eigen::MatrixXd& A) {
   const Eigen::Index N = A.rows();
+  // A non-finite entry: no balancing (an inf row or column sum never settles in the loops
+  // below); the exponential is non-finite and the caller falls back to the flow.
+  if (!A.allFinite())
+    return Eigen::MatrixXd::Constant(N, N, std::numeric_limits<double>::quiet_NaN());
   Eigen::MatrixXd B = A;
   Eigen::VectorXd d = Eigen::VectorXd::Ones(N);
   bool changed = true;

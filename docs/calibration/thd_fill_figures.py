@@ -57,7 +57,7 @@ def main(fine):
                                   theta_y_rad=t * 1e-3, tilt=True)
         print(f"  {t:.1f} mrad: h_min {r.h_min_m * 1e6:.2f} um T_max {r.max_temperature_c:.4f} "
               f"eps {r.eccentricity_ratio:.5f} P {r.power_loss_w:.2f} "
-              f"M {np.round(np.asarray(r.moment_n_m), 4).tolist()}")
+              f"M {np.round(np.asarray(r.film_moment_n_m), 4).tolist()}")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 
 TWO_PI = 2.0 * math.pi
 
@@ -37,14 +38,19 @@ SUFFIX_UNITS = (("_n_m_s_per_rad", "N·m·s/rad"), ("_n_m_s_per_m", "N·m·s/m")
                 ("_pa_s", "Pa·s"), ("_m3_s", "m³/s"), ("_rad_s", "rad/s"), ("_hz", "Hz"),
                 ("_pa", "Pa"), ("_kg", "kg"), ("_deg", "deg"), ("_rad", "rad"), ("_n_m", "N·m"),
                 ("_m_s", "m/s"), ("_m", "m"), ("_s", "s"), ("_n", "N"), ("_w", "W"),
-                # ratios to the clearance c (x_over_c, start_amplitude_c) before degrees Celsius
-                ("_over_c", "1"), ("amplitude_c", "1"), ("_c", "°C"), ("_k", "K"))
+                ("_1_per_k", "1/K"), ("_k", "K"))
+
+# Degrees Celsius: only a temperature's own name ends in _c (t1_c, t_ref_c, supply_temperature_c);
+# other names ending in _c are in units of the clearance c (x_over_c, amplitude_c, disturbance_c)
+_CELSIUS = re.compile(r"(?:^|[._])(?:[a-z_]*temperature|t(?:\d+|_ref|_min|_max)?)_c$")
 
 
 def split_unit(name: str) -> tuple[str, str]:
     """(stem, unit) of a column or field name: ``thermal.supply_temperature_c`` →
     (``thermal.supply_temperature``, ``°C``); a name without a unit suffix is its own stem, unit
     ``"1"``."""
+    if _CELSIUS.search(name):
+        return name[:-2], "°C"
     for suffix, unit in SUFFIX_UNITS:
         if name.endswith(suffix):
             return (name[: -len(suffix)], unit) if unit != "1" else (name, unit)

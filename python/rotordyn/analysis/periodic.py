@@ -311,7 +311,10 @@ def _with_hint(res: PeriodicOrbitResult, start_scale, sigma) -> PeriodicOrbitRes
     how = ("the linear unbalance response at the equilibrium" if start_scale == 1.0 else
            f"the linear unbalance response at the equilibrium scaled by {start_scale:.3g} "
            "(at full size it closes a film to a tenth of its clearance: a large orbit)")
-    if sigma < 0:
+    if not np.isfinite(sigma):
+        what = ("the equilibrium's eigenvalues are not known (no settling time to suggest): "
+                "run a transient to see where the motion goes")
+    elif sigma < 0:
         settle = np.log(100.0) / -sigma
         what = (f"the equilibrium's least-damped mode decays as exp({sigma:.4g} t), so a "
                 f"transient with the unbalance settles to 1 % in about {settle:.3g} s: give "

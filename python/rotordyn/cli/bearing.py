@@ -251,6 +251,9 @@ def _model_file(args: argparse.Namespace) -> int:
     if oil is None and args.thermal_model is not None:
         raise InputError("--model: the thermal model needs --supply-temperature-c, --load-n "
                          "and an --oil-* law")
+    if oil is None and args.density_kg_m3 is not None:
+        raise InputError("--density-kg-m3: with --model-file only the thermal oil's density "
+                         "(give an --oil-* law); the model's bearing has its own")
     if oil is not None and args.speeds_hz is None:
         return run_thermal_tilted(b, oil, rec, args)
     return run_tilted(b, args, rec)

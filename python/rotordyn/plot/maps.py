@@ -152,11 +152,12 @@ def two_slope_ticks(cb, lo: float, hi: float) -> None:
     from matplotlib.ticker import MaxNLocator
 
     loc = MaxNLocator(nbins=3)
-    neg = [t for t in loc.tick_values(lo, 0.0) if lo <= t < 0] if lo < 0 else []
-    pos = [t for t in loc.tick_values(0.0, hi) if 0 < t <= hi] if hi > 0 else []
-    if not neg and lo < 0:
+    # a half no wider than the ±1e-9 padding of a one-signed map gets no ticks
+    neg = [t for t in loc.tick_values(lo, 0.0) if lo <= t < 0] if lo < -1e-9 else []
+    pos = [t for t in loc.tick_values(0.0, hi) if 0 < t <= hi] if hi > 1e-9 else []
+    if not neg and lo < -1e-9:
         neg = [lo]
-    if not pos and hi > 0:
+    if not pos and hi > 1e-9:
         pos = [hi]
     cb.set_ticks(neg + [0.0] + pos)
     cb.ax.yaxis.set_major_formatter("{x:.3g}")
