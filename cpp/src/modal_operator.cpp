@@ -16,6 +16,7 @@ struct ModalOperator::Impl {
   double scale = 1.0;
   detail::SpLU lu0;                 // K's factorisation (σ = 0), when `factored`
   bool factored = false;
+  detail::RigidBodyCache rigid;     // K's rigid-body motions, found on first need
 };
 
 namespace {
@@ -72,7 +73,7 @@ ModalResult ModalOperator::modal(double omega, const std::vector<std::pair<int, 
     return Dd;
   };
   return detail::modal_impl(p.M, dense_D, p.K, xy_pairs, n_modes, with_modes, rot_pairs,
-                            nullptr, &pencil);
+                            nullptr, &pencil, &p.rigid);
 }
 
 }  // namespace rotordyn

@@ -1,0 +1,149 @@
+// Rigid-body roots of a pencil λ²M + λD + K whose stiffness is singular (a rotor without
+// supports, `modes --without-bearings`): one rule for the dense and the sparse modal paths.
+//
+// With d rigid-body motions (K Φ = 0), the pencil has zero roots that are defective at rest
+// (λ² M φ = 0: Jordan pairs), and the dense eigensolver spreads them to |λ| ~ √ε ω_max; left
+// in, two of them showed as a 0.00015 Hz "mode" of damping ratio −0.75 on an overhung pump.
+// How many zero roots there are follows from the rigid-body subspace alone: on it the pencil is
+// λ (λ M_r + D_r), M_r = ΦᵀMΦ, D_r = ΦᵀDΦ, so it has d roots at zero from the factor λ and
+// d − rank D_r more from λ M_r + D_r; its other roots, the eigenvalues of −M_r⁻¹ D_r, are
+// regular (a spinning free rotor's nutation Ω I_p/I_t, a damper's decay) and are kept however
+// small, down to the solver's resolution. At rest without damping all 2d roots are zero; once
+// the gyroscopic coupling splits a conical pair, two fewer.
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <vector>
+
+#include "modal_detail.hpp"
+
+namespace rotordyn::detail {
+
+namespace {
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+// Pivot of the mass-scaled stiffness, relative to the largest (≈ ω²/ω_max²), below which a
+// column is a rigid-body motion: (10 √ε)², so a motion slower than rigid_root_bound, the
+// dense solver's resolution, counts as rigid and any faster one as elastic (see rigid_body).
+constexpr double kRigidPivot = 100.0 * kEps;
+// A regular root of the rigid-body subspace must exceed kResolution √ε ω_max, and a computed
+// root lie within kMatch (relative) of it, to be kept (see rigid_roots).
+constexpr double kResolution = 2.0;
+constexpr double kMatch = 0.1;
+
+// ‖S‖₂ of a symmetric positive semi-definite S by power iteration (to a few per cent: a scale).
+double norm2_estimate(const Eigen::MatrixXd& S) {
+  const Eigen::Index n = S.rows();
+  Eigen::VectorXd x(n);
+  for (Eigen::Index i = 0; i < n; ++i) x(i) = 1.0 + 0.1 * std::sin(1.0 + 2.3 * i);  // generic
+  double est = 0.0;
+  for (int it = 0; it < 60; ++it) {
+    const double nx = x.norm();
+    if (!(nx > 0)) break;
+    x /= nx;
+    Eigen::VectorXd y = S * x;
+    const double e = y.norm();
+    x.swap(y);
+    if (std::abs(e - est) <= 1e-3 * e) {
+      est = e;
+      break;
+    }
+    est = e;
+  }
+  return est;
+}
+}  // namespace
+
+double frequency_reference(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
+  double r = 0.0;
+  for (Eigen::Index i = 0; i < M.rows(); ++i)
+    if (M(i, i) > 0) r = std::max(r, std::abs(K(i, i)) / M(i, i));
+  return std::sqrt(r);
+}
+
+double rigid_root_bound(double omega_high) { return 10.0 * std::sqrt(kEps) * omega_high; }
+
+RigidBody rigid_body(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
+  const Eigen::Index n = M.rows();
+  RigidBody rb;
+  rb.phi.resize(n, 0);
+  if (n == 0) return rb;
+  // Mass scaling p = Lᵀ q (L Lᵀ = M): Ks = L⁻¹ K L⁻ᵀ is the same matrix whatever the units of
+  // each coordinate (mm or m, rad or mrad) and however long the rotor, and its spectrum is ω²
+  // of the undamped rotor. Without a Cholesky factor (M not positive definite) the diagonal
+  // √M_ii scales instead, which is unit-consistent too.
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n, n);
+  Eigen::LLT<Eigen::MatrixXd> llt(M);
+  if (llt.info() == Eigen::Success) {
+    L = llt.matrixL();
+  } else {
+    for (Eigen::Index i = 0; i < n; ++i) L(i, i) = M(i, i) > 0 ? std::sqrt(M(i, i)) : 1.0;
+  }
+  const auto Lt = L.triangularView<Eigen::Lower>();
+  Eigen::MatrixXd Ks = Lt.solve(K);                  // L⁻¹ K
+  Ks = Lt.solve(Ks.transpose()).transpose().eval();  // L⁻¹ K L⁻ᵀ
+  const Eigen::MatrixXd Ss = 0.5 * (Ks + Ks.transpose());
+  rb.omega_max = std::sqrt(norm2_estimate(Ss));
+  // Rank of Ks from its pivoted QR (of Ksᵀ, so that the trailing columns of Q span K's right
+  // null space in p). A pivot below kRigidPivot (2.2e-14) of the largest is a rigid-body
+  // motion: rounding leaves the overhung pump's four at 9e-19 … 2e-17 of it, and 200 N/m
+  // supports under it (roots at 1.4 and 4.8 rad/s) at 4.1e-11 — in m or mm alike (the pivots
+  // of K itself: 8.5e-10 in m and N/m, 2.2e-12 with the translations in mm).
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Ks.transpose());
+  qr.setThreshold(kRigidPivot);
+  const Eigen::Index r = qr.rank(), d = n - r;
+  if (d == 0) return rb;
+  const Eigen::MatrixXd Q = qr.householderQ();
+  // Back to q: φ = L⁻ᵀ p.
+  rb.phi = L.transpose().triangularView<Eigen::Upper>().solve(Q.rightCols(d));
+  return rb;
+}
+
+std::vector<char> rigid_roots(const RigidBody& rb, const Eigen::MatrixXd& M,
+                              const Eigen::MatrixXd& D, const Eigen::VectorXcd& w) {
+  std::vector<char> rigid(static_cast<std::size_t>(w.size()), 0);
+  const Eigen::Index d = rb.phi.cols();
+  if (d == 0 || w.size() == 0) return rigid;
+  const double bound = rigid_root_bound(std::max(rb.omega_max, w.cwiseAbs().maxCoeff()));
+  // The regular roots of the rigid-body subspace, μ = eigenvalues of −M_r⁻¹ D_r (1/s, unit-
+  // consistent): a nutation Ω I_p/I_t, a damper's decay. Only those above the resolution
+  // kResolution √ε ω_max are roots the dense solver tells apart from the spread zeros (the
+  // spread measured up to 0.6 √ε ω_max); a slower one counts as zero.
+  const Eigen::MatrixXd Mr = rb.phi.transpose() * M * rb.phi;
+  const Eigen::MatrixXd Dr = rb.phi.transpose() * D * rb.phi;
+  const double resolution = kResolution * std::sqrt(kEps) * rb.omega_max;
+  std::vector<std::complex<double>> mu;
+  Eigen::LLT<Eigen::MatrixXd> llt(Mr);
+  if (llt.info() == Eigen::Success) {
+    const Eigen::MatrixXd A = -llt.solve(Dr);
+    Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
+    if (es.info() == Eigen::Success)
+      for (Eigen::Index i = 0; i < d; ++i)
+        if (std::abs(es.eigenvalues()(i)) > resolution) mu.push_back(es.eigenvalues()(i));
+  }
+  // 2d − |μ| roots are zero. Every root below the bound is one of them unless it is the
+  // nearest root to a regular μ and within kMatch of it (each μ claims one root): so neither a
+  // slow nutation is dropped nor a spread zero kept, whatever their order in |λ|.
+  std::vector<char> claimed(static_cast<std::size_t>(w.size()), 0);
+  for (const auto& m : mu) {
+    Eigen::Index best = -1;
+    double dist = 0.0;
+    for (Eigen::Index i = 0; i < w.size(); ++i) {
+      const double e = std::abs(w(i) - m);
+      if (!claimed[static_cast<std::size_t>(i)] && (best < 0 || e < dist)) {
+        best = i;
+        dist = e;
+      }
+    }
+    if (best >= 0 && dist <= kMatch * std::abs(m)) claimed[static_cast<std::size_t>(best)] = 1;
+  }
+  for (Eigen::Index i = 0; i < w.size(); ++i)
+    if (std::abs(w(i)) < bound && !claimed[static_cast<std::size_t>(i)])
+      rigid[static_cast<std::size_t>(i)] = 1;
+  return rigid;
+}
+
+}  // namespace rotordyn::detail
