@@ -167,7 +167,7 @@ ModalResult modal_impl(const Eigen::MatrixXd& M,
   // When K is singular the count of rigid_roots replaces the threshold `zero` (which would
   // drop a slow nutation that rigid_roots keeps); `zero` stays for a regular K.
   double zero_here = zero;
-  auto rigid_marks = [&](const Eigen::VectorXcd& roots) {
+  auto rigid_marks = [&](Eigen::VectorXcd& roots) {
     zero_here = zero;
     if (roots.size() == 0) return std::vector<char>();
     const double hi = std::max(omega_ref, roots.cwiseAbs().maxCoeff());

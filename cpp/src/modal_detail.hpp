@@ -62,9 +62,10 @@ double rigid_root_bound(double omega);
 /// roots, spread by rounding. The rigid-body subspace has 2d roots: the regular ones μ (the
 /// eigenvalues of −M_r⁻¹D_r above 2 √ε ω_max, M_r = ΦᵀMΦ, D_r = ΦᵀDΦ), the rest zero. Every
 /// root of w below rigid_root_bound(max(ω_max, max |w|)) is marked but the nearest to each μ,
-/// if within 10 % of it. None when d = 0.
+/// if within 10 % of it, which takes the value μ (more accurate there than the solver's). None
+/// when d = 0 (w untouched).
 std::vector<char> rigid_roots(const RigidBody& rb, const Eigen::MatrixXd& M,
-                              const Eigen::MatrixXd& D, const Eigen::VectorXcd& w);
+                              const Eigen::MatrixXd& D, Eigen::VectorXcd& w);
 
 /// rigid_body(M, K) made once on first use and then shared (by the speeds of a Campbell
 /// diagram, the threads that run them, the calls on one ModalOperator).
