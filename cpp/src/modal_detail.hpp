@@ -36,9 +36,9 @@ bool modal_shift_invert(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
                         const Eigen::MatrixXd& K, int n_modes, Eigen::VectorXcd& lambda,
                         Eigen::MatrixXcd& shapes, Eigen::VectorXd* start = nullptr);
 
-/// The factorisation of K alone (σ = 0) when it succeeds with a finite log-determinant (the
-/// first thing modal_shift_invert tries), else false.
-bool factor_at_zero(const SpMat& K, SpLU& lu);
+/// The factorisation of K alone (σ = 0) when it succeeds with a finite log-determinant and K
+/// has no rigid-body motion (the first thing modal_shift_invert tries), else false.
+bool factor_at_zero(const SpMat& K, const SpMat& M, SpLU& lu);
 
 /// The rigid-body motions of M q̈ + D q̇ + K q = 0: the null space of K found from the rank of
 /// the mass-scaled stiffness L⁻¹ K L⁻ᵀ (L Lᵀ = M), so the verdict does not depend on the units

@@ -41,7 +41,7 @@ ModalOperator::ModalOperator(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
   p->Ks = K.sparseView(0.0, 0.0);
   p->scale = std::sqrt(K.diagonal().cwiseAbs().maxCoeff() /
                        std::max(1e-300, M.diagonal().cwiseAbs().maxCoeff()));
-  if (n > kDenseLimit) p->factored = detail::factor_at_zero(p->Ks, p->lu0);
+  if (n > kDenseLimit) p->factored = detail::factor_at_zero(p->Ks, p->Ms, p->lu0);
   impl_ = std::move(p);
 }
 
