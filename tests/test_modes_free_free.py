@@ -1,8 +1,9 @@
 """Free-free rotors: the rigid-body roots are dropped by one rule on both modal paths, and what
 is left matches closed forms.
 
-The rule (cpp/src/modal_rigid.cpp): K's rigid-body motions come from the rank of the mass-scaled
-stiffness L⁻¹KL⁻ᵀ (LLᵀ = M), so the verdict is the same in any units and at any length scale;
+The rule (cpp/src/modal_rigid.cpp): K's rigid-body motions come from the rank of the
+Jacobi-scaled stiffness J⁻¹KJ⁻¹ (J = diag √K_ii), so the verdict is the same in any units and at
+any length scale;
 on the rigid-body subspace the pencil has 2d roots, the regular ones being the eigenvalues of
 −M_r⁻¹D_r (a spinning free rotor's nutation), the rest zero; every root below 10 √ε ω_max is
 dropped but the one each regular root claims.
@@ -78,7 +79,7 @@ def both_paths(c, speed_hz, n_modes):
 @pytest.mark.parametrize("length_m", [0.1, 1.0, 10.0])
 def test_free_free_euler_bernoulli_shaft_has_only_its_bending_modes(length_m):
     """No rigid-body root is left, on either path, for a short, a 1 m and a long shaft (the
-    rank verdict is that of the mass-scaled stiffness, the same for all three), and the first
+    rank verdict is that of the Jacobi-scaled stiffness, the same for all three), and the first
     four bending pairs are the closed form's (20 elements: errors measured 2.2e-6 … 1.7e-4,
     the h⁴ discretisation error)."""
     d = length_m / 40

@@ -41,8 +41,9 @@ bool modal_shift_invert(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
 bool factor_at_zero(const SpMat& K, const SpMat& M, SpLU& lu);
 
 /// The rigid-body motions of M q̈ + D q̇ + K q = 0: the null space of K found from the rank of
-/// the mass-scaled stiffness L⁻¹ K L⁻ᵀ (L Lᵀ = M), so the verdict does not depend on the units
-/// of the coordinates. phi: (n, d), d = 0 when K is regular. omega_max: √‖L⁻¹ K L⁻ᵀ‖₂, the
+/// the Jacobi-scaled stiffness J⁻¹ K J⁻¹ (J = diag √|K_ii|), so the verdict does not depend on
+/// the units of the coordinates. phi: (n, d), d = 0 when K is regular. omega_max (when d > 0):
+/// √‖L⁻¹ K L⁻ᵀ‖₂ (L Lᵀ = M), the
 /// model's highest undamped frequency (1/s), the scale of the eigensolver's rounding.
 struct RigidBody {
   Eigen::MatrixXd phi;

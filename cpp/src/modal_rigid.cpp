@@ -25,10 +25,9 @@ namespace rotordyn::detail {
 
 namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-// Pivot of the mass-scaled stiffness, relative to the largest (≈ ω²/ω_max²), below which a
-// column is a rigid-body motion: (10 √ε)², so a motion slower than rigid_root_bound, the
-// dense solver's resolution, counts as rigid and any faster one as elastic (see rigid_body).
-constexpr double kRigidPivot = 100.0 * kEps;
+// Pivot of the Jacobi-scaled stiffness, relative to the largest, below which a column is a
+// rigid-body motion (see rigid_body; the same number in modal_sparse.cpp's check).
+constexpr double kRigidPivot = 1e-13;
 // A regular root of the rigid-body subspace must exceed kResolution √ε ω_max, and a computed
 // root lie within kMatch (relative) of it, to be kept (see rigid_roots).
 constexpr double kResolution = 2.0;
@@ -71,10 +70,30 @@ RigidBody rigid_body(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   RigidBody rb;
   rb.phi.resize(n, 0);
   if (n == 0) return rb;
-  // Mass scaling p = Lᵀ q (L Lᵀ = M): Ks = L⁻¹ K L⁻ᵀ is the same matrix whatever the units of
-  // each coordinate (mm or m, rad or mrad) and however long the rotor, and its spectrum is ω²
-  // of the undamped rotor. Without a Cholesky factor (M not positive definite) the diagonal
-  // √M_ii scales instead, which is unit-consistent too.
+  // K's null space from the rank of its Jacobi-scaled form J⁻¹ K J⁻¹ (J = diag √|K_ii|): the
+  // same matrix whatever the units of each coordinate (mm or m, rad or mrad) and however long
+  // the rotor, and independent of M (a mass-scaled test called the physical modes of a disk on
+  // a nearly massless cantilever rigid: ω²/ω_max² = 3e-17 there, ω_max set by the shaft's
+  // 1e-8 mass). Pivoted QR of its transpose, so that the trailing columns of Q span the right
+  // null space. A pivot below kRigidPivot (1e-13) of the largest is a rigid-body motion:
+  // rounding leaves them at ≤ 4.5e-16 (the overhung pump, free 1 m and 1.5 m shafts of 20 and
+  // 100 elements); supports of 200 N/m under the pump give 8.7e-9, of 0.02 N/m (roots at
+  // 0.014 rad/s) 8.7e-13 — in m or mm alike (the pivots of K itself, the old test: 8.5e-10 for
+  // 200 N/m in m and N/m, 2.2e-12 with the translations in mm, against 1e-11).
+  Eigen::VectorXd jinv(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double k = std::abs(K(i, i));
+    jinv(i) = k > 0 ? 1.0 / std::sqrt(k) : 1.0;
+  }
+  const Eigen::MatrixXd Kj = jinv.asDiagonal() * K * jinv.asDiagonal();
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Kj.transpose());
+  qr.setThreshold(kRigidPivot);
+  const Eigen::Index d = n - qr.rank();
+  if (d == 0) return rb;
+  const Eigen::MatrixXd Q = qr.householderQ();
+  rb.phi = jinv.asDiagonal() * Q.rightCols(d);
+  // The model's highest undamped frequency, the scale of the dense solver's rounding: from the
+  // mass-scaled stiffness L⁻¹ K L⁻ᵀ (L Lᵀ = M; without a Cholesky factor, diag √M_ii).
   Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n, n);
   Eigen::LLT<Eigen::MatrixXd> llt(M);
   if (llt.info() == Eigen::Success) {
@@ -85,20 +104,7 @@ RigidBody rigid_body(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   const auto Lt = L.triangularView<Eigen::Lower>();
   Eigen::MatrixXd Ks = Lt.solve(K);                  // L⁻¹ K
   Ks = Lt.solve(Ks.transpose()).transpose().eval();  // L⁻¹ K L⁻ᵀ
-  const Eigen::MatrixXd Ss = 0.5 * (Ks + Ks.transpose());
-  rb.omega_max = std::sqrt(norm2_estimate(Ss));
-  // Rank of Ks from its pivoted QR (of Ksᵀ, so that the trailing columns of Q span K's right
-  // null space in p). A pivot below kRigidPivot (2.2e-14) of the largest is a rigid-body
-  // motion: rounding leaves the overhung pump's four at 9e-19 … 2e-17 of it, and 200 N/m
-  // supports under it (roots at 1.4 and 4.8 rad/s) at 4.1e-11 — in m or mm alike (the pivots
-  // of K itself: 8.5e-10 in m and N/m, 2.2e-12 with the translations in mm).
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Ks.transpose());
-  qr.setThreshold(kRigidPivot);
-  const Eigen::Index r = qr.rank(), d = n - r;
-  if (d == 0) return rb;
-  const Eigen::MatrixXd Q = qr.householderQ();
-  // Back to q: φ = L⁻ᵀ p.
-  rb.phi = L.transpose().triangularView<Eigen::Upper>().solve(Q.rightCols(d));
+  rb.omega_max = std::sqrt(norm2_estimate(0.5 * (Ks + Ks.transpose())));
   return rb;
 }
 
