@@ -2,7 +2,6 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
-#include <Eigen/QR>
 #include <algorithm>
 #include <exception>
 #include <functional>
@@ -117,39 +116,11 @@ Eigen::MatrixXd state_matrix(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
   return A;
 }
 
-// Roots of the rigid-body motions of a rotor without supports (K singular, d = n − rank K):
-// zero in exact arithmetic but defective (λ² M v = 0: Jordan blocks), so the dense
-// eigensolver spreads them to |λ| ~ √(ε ‖A‖) ≈ √ε ω_max, which can exceed the threshold of
-// pick_modes (an overhung 25 kg disk on a 0.7 m shaft: 1.5e-3 rad/s against 1.4e-3, kept as a
-// "mode" of damping ratio ∓0.75). Marks the (at most 2d) smallest roots below 10 √ε max|λ|;
-// none when K is regular, so the low mode of a soft support is never taken for one.
-std::vector<char> rigid_roots(const Eigen::MatrixXd& K, const Eigen::VectorXcd& w) {
-  std::vector<char> rigid(static_cast<std::size_t>(w.size()), 0);
-  if (w.size() == 0 || K.rows() == 0) return rigid;
-  const double spread =
-      10.0 * std::sqrt(std::numeric_limits<double>::epsilon()) * w.cwiseAbs().maxCoeff();
-  if (!(w.cwiseAbs().minCoeff() < spread)) return rigid;  // no candidate: skip the QR
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(K);
-  qr.setThreshold(1e-11);  // rigid motions' pivots: 1e-17 of the largest; soft supports ≫
-  const Eigen::Index d = K.rows() - qr.rank();
-  if (d == 0) return rigid;
-  std::vector<int> order(static_cast<std::size_t>(w.size()));
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return std::abs(w(a)) < std::abs(w(b)); });
-  for (Eigen::Index k = 0; k < std::min<Eigen::Index>(2 * d, w.size()); ++k) {
-    const int i = order[static_cast<std::size_t>(k)];
-    if (!(std::abs(w(i)) < spread)) break;
-    rigid[static_cast<std::size_t>(i)] = 1;
-  }
-  return rigid;
-}
-
 std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero,
                             const std::vector<char>* rigid = nullptr) {
   // Keep one of each conjugate pair (ω_d >= 0); real roots are kept once each. Rigid-body
   // roots (|λ| below `zero`, a multiple root that rounding spreads into tiny complex pairs,
-  // or marked by rigid_roots) are dropped.
+  // or marked by detail::rigid_roots) are dropped.
   std::vector<int> idx;
   const double big = w.size() ? w.cwiseAbs().maxCoeff() : 0.0;
   for (int i = 0; i < w.size(); ++i) {
@@ -180,13 +151,32 @@ ModalResult modal_impl(const Eigen::MatrixXd& M,
                        const Eigen::MatrixXd& K, const std::vector<std::pair<int, int>>& xy_pairs,
                        int n_modes, bool with_modes,
                        const std::vector<std::pair<int, int>>& rot_pairs, Eigen::VectorXd* start,
-                       const SparsePencil* pre) {
+                       const SparsePencil* pre, const RigidBodyCache* rigid_cache) {
   const Eigen::Index n = M.rows();
   Eigen::VectorXcd w;
   Eigen::MatrixXcd V;
   // Rigid-body threshold from the model's own frequency scale √(max K_ii / max M_ii).
   const double mk = K.diagonal().cwiseAbs().maxCoeff(), mm = M.diagonal().cwiseAbs().maxCoeff();
   const double zero = 1e-7 * std::sqrt(mk / std::max(mm, 1e-300));
+  // The roots that are K's rigid-body motions spread by rounding (one rule for both paths,
+  // modal_rigid.cpp). rigid_body's O(n³) is spent only when a root is small enough to be one:
+  // never for a supported rotor, once per model when the cache is shared.
+  const double omega_ref = frequency_reference(M, K);
+  RigidBodyCache own_cache;
+  const RigidBodyCache& cache = rigid_cache ? *rigid_cache : own_cache;
+  // When K is singular the count of rigid_roots replaces the threshold `zero` (which would
+  // drop a slow nutation that rigid_roots keeps); `zero` stays for a regular K.
+  double zero_here = zero;
+  auto rigid_marks = [&](Eigen::VectorXcd& roots) {
+    zero_here = zero;
+    if (roots.size() == 0) return std::vector<char>();
+    const double hi = std::max(omega_ref, roots.cwiseAbs().maxCoeff());
+    if (!(roots.cwiseAbs().minCoeff() < rigid_root_bound(hi)))
+      return std::vector<char>(static_cast<std::size_t>(roots.size()), 0);
+    const RigidBody& rb = cache.get(M, K);
+    if (rb.phi.cols() > 0) zero_here = 0.0;
+    return rigid_roots(rb, M, dense_D(), roots);
+  };
   std::vector<int> idx;
   bool done = false;
   // Large model, few modes: shift-invert Arnoldi on the sparse pencil; ask for more roots
@@ -197,7 +187,8 @@ ModalResult modal_impl(const Eigen::MatrixXd& M,
         pre ? modal_shift_invert(*pre, n_modes + extra, w, V, start)
             : modal_shift_invert(M, dense_D(), K, n_modes + extra, w, V, start);
     if (!conv) break;
-    idx = pick_modes(w, n_modes, zero);
+    const std::vector<char> rigid = rigid_marks(w);
+    idx = pick_modes(w, n_modes, zero_here, &rigid);
     if (static_cast<int>(idx.size()) >= n_modes) {
       done = true;
       break;
@@ -213,14 +204,14 @@ ModalResult modal_impl(const Eigen::MatrixXd& M,
     if (n_modes <= 0 || n_modes > kInverseIterationRoots) {
       Eigen::MatrixXcd Vs;
       eig_general(A, w, &Vs);
-      const std::vector<char> rigid = rigid_roots(K, w);
-      idx = pick_modes(w, n_modes, zero, &rigid);
+      const std::vector<char> rigid = rigid_marks(w);
+      idx = pick_modes(w, n_modes, zero_here, &rigid);
       V = Vs.topRows(n);
       for (int k : idx) V.col(k).normalize();
     } else {
       eig_general(A, w, nullptr);
-      const std::vector<char> rigid = rigid_roots(K, w);
-      idx = pick_modes(w, n_modes, zero, &rigid);
+      const std::vector<char> rigid = rigid_marks(w);
+      idx = pick_modes(w, n_modes, zero_here, &rigid);
       V.resize(n, w.size());
       const Eigen::MatrixXcd Mc = M.cast<std::complex<double>>(),
                              Dc = D.cast<std::complex<double>>(),
@@ -284,6 +275,7 @@ CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
   // not depend on the start beyond the convergence tolerance. An exception in any thread is
   // stored and rethrown on the calling thread.
   std::exception_ptr error = nullptr;
+  const detail::RigidBodyCache rigid;  // K's rigid-body motions: the same at every speed
 #pragma omp parallel
   {
     Eigen::VectorXd start;
@@ -293,7 +285,7 @@ CampbellResult campbell(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
         const Eigen::MatrixXd D = C + speeds(s) * G;
         auto dense_D = [&D]() -> const Eigen::MatrixXd& { return D; };
         const ModalResult r = detail::modal_impl(M, dense_D, K, xy_pairs, n_modes, false,
-                                                 rot_pairs, &start, nullptr);
+                                                 rot_pairs, &start, nullptr, &rigid);
         for (Eigen::Index j = 0; j < r.eigenvalues.size(); ++j) {
           out.eigenvalues(s, j) = r.eigenvalues(j);
           out.whirl(s, j) = static_cast<int>(r.whirl[static_cast<std::size_t>(j)]);

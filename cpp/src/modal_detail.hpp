@@ -4,6 +4,7 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <functional>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -35,18 +36,61 @@ bool modal_shift_invert(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
                         const Eigen::MatrixXd& K, int n_modes, Eigen::VectorXcd& lambda,
                         Eigen::MatrixXcd& shapes, Eigen::VectorXd* start = nullptr);
 
-/// The factorisation of K alone (σ = 0) when it succeeds with a finite log-determinant (the
-/// first thing modal_shift_invert tries), else false.
-bool factor_at_zero(const SpMat& K, SpLU& lu);
+/// The factorisation of K alone (σ = 0) when it succeeds with a finite log-determinant and K
+/// has no rigid-body motion (the first thing modal_shift_invert tries), else false.
+bool factor_at_zero(const SpMat& K, const SpMat& M, SpLU& lu);
+
+/// The rigid-body motions of M q̈ + D q̇ + K q = 0: the null space of K found from the rank of
+/// the Jacobi-scaled stiffness J⁻¹ K J⁻¹ (J = diag √|K_ii|), so the verdict does not depend on
+/// the units of the coordinates. phi: (n, d), d = 0 when K is regular. omega_max (when d > 0):
+/// √‖L⁻¹ K L⁻ᵀ‖₂ (L Lᵀ = M), the
+/// model's highest undamped frequency (1/s), the scale of the eigensolver's rounding.
+struct RigidBody {
+  Eigen::MatrixXd phi;
+  double omega_max = 0.0;
+};
+RigidBody rigid_body(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
+
+/// √max_i (K_ii / M_ii) (1/s): a Rayleigh quotient of the undamped pencil, so at most its
+/// highest frequency, in any units; O(n), to decide whether rigid_body is worth its O(n³).
+double frequency_reference(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
+
+/// 10 √ε ω: the largest |λ| to which rounding spreads a defective zero root of a model whose
+/// highest frequency is ω (dense solver; the shift-invert path spreads them far less).
+double rigid_root_bound(double omega);
+
+/// The one rule of both modal paths: marks (1) the roots of w that are the pencil's zero
+/// roots, spread by rounding. The rigid-body subspace has 2d roots: the regular ones μ (the
+/// eigenvalues of −M_r⁻¹D_r above 2 √ε ω_max, M_r = ΦᵀMΦ, D_r = ΦᵀDΦ), the rest zero. Every
+/// root of w below rigid_root_bound(max(ω_max, max |w|)) is marked but the nearest to each μ,
+/// if within 10 % of it, which takes the value μ (more accurate there than the solver's). None
+/// when d = 0 (w untouched).
+std::vector<char> rigid_roots(const RigidBody& rb, const Eigen::MatrixXd& M,
+                              const Eigen::MatrixXd& D, Eigen::VectorXcd& w);
+
+/// rigid_body(M, K) made once on first use and then shared (by the speeds of a Campbell
+/// diagram, the threads that run them, the calls on one ModalOperator).
+class RigidBodyCache {
+ public:
+  const RigidBody& get(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) const {
+    std::call_once(once_, [&] { value_ = rigid_body(M, K); });
+    return value_;
+  }
+
+ private:
+  mutable std::once_flag once_;
+  mutable RigidBody value_;
+};
 
 /// The modal analysis behind rotordyn::modal: M, K dense; D dense made on demand (only the
 /// dense path needs it); pre: the sparse pencil to use in place of one made from the dense
-/// matrices (same numbers, so the same answer).
+/// matrices (same numbers, so the same answer); rigid: K's rigid-body motions kept between
+/// calls, or null (found here if needed).
 ModalResult modal_impl(const Eigen::MatrixXd& M,
                        const std::function<const Eigen::MatrixXd&()>& dense_D,
                        const Eigen::MatrixXd& K, const std::vector<std::pair<int, int>>& xy_pairs,
                        int n_modes, bool with_modes,
                        const std::vector<std::pair<int, int>>& rot_pairs, Eigen::VectorXd* start,
-                       const SparsePencil* pre);
+                       const SparsePencil* pre, const RigidBodyCache* rigid = nullptr);
 
 }  // namespace rotordyn::detail

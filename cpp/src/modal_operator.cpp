@@ -16,6 +16,7 @@ struct ModalOperator::Impl {
   double scale = 1.0;
   detail::SpLU lu0;                 // K's factorisation (σ = 0), when `factored`
   bool factored = false;
+  detail::RigidBodyCache rigid;     // K's rigid-body motions, found on first need
 };
 
 namespace {
@@ -40,7 +41,7 @@ ModalOperator::ModalOperator(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
   p->Ks = K.sparseView(0.0, 0.0);
   p->scale = std::sqrt(K.diagonal().cwiseAbs().maxCoeff() /
                        std::max(1e-300, M.diagonal().cwiseAbs().maxCoeff()));
-  if (n > kDenseLimit) p->factored = detail::factor_at_zero(p->Ks, p->lu0);
+  if (n > kDenseLimit) p->factored = detail::factor_at_zero(p->Ks, p->Ms, p->lu0);
   impl_ = std::move(p);
 }
 
@@ -72,7 +73,7 @@ ModalResult ModalOperator::modal(double omega, const std::vector<std::pair<int, 
     return Dd;
   };
   return detail::modal_impl(p.M, dense_D, p.K, xy_pairs, n_modes, with_modes, rot_pairs,
-                            nullptr, &pencil);
+                            nullptr, &pencil, &p.rigid);
 }
 
 }  // namespace rotordyn

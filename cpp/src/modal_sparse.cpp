@@ -20,13 +20,34 @@ SpMat to_sparse(const Eigen::MatrixXd& X) { return X.sparseView(0.0, 0.0); }
 double frequency_scale(const Eigen::VectorXd& kd, const Eigen::VectorXd& md) {
   return std::sqrt(kd.cwiseAbs().maxCoeff() / std::max(1e-300, md.cwiseAbs().maxCoeff()));
 }
+
+// True when lu, a factorisation of K that "succeeded", is of a K with rigid-body motions:
+// SparseLU then keeps pivots at rounding level (finite log-determinant), and shift-invert about
+// σ = 0 amplifies the rigid-body directions by ~1/ε (a rotor pinned at one end gave Ritz
+// values such as −2346 + 997i rad/s beside the dense solver's 670 … 738i). One inverse-
+// iteration step x = K⁻¹ M b from a generic b: its Jacobi-scaled Rayleigh quotient
+// xᵀKx / Σ K_ii x_i² (unit-consistent, bounded below by the smallest eigenvalue of
+// J⁻¹KJ⁻¹) is at rounding level then; below 1e-13, rigid_body's rank threshold, it is a rigid
+// motion (0.02 N/m supports under the overhung pump: 8.7e-13).
+bool has_rigid_motions(const SpMat& K, const SpMat& M, const SpLU& lu) {
+  const Eigen::Index n = K.rows();
+  Eigen::VectorXd b(n);
+  for (Eigen::Index i = 0; i < n; ++i) b(i) = 1.0 + 0.1 * std::sin(1.0 + 2.3 * i);  // generic
+  const Eigen::VectorXd x = lu.solve(M * b);
+  if (!x.allFinite()) return true;
+  double xj = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) xj += std::abs(K.coeff(i, i)) * x(i) * x(i);
+  const double xk = x.dot(K * x);
+  return !(xj > 0) || !(xk > 1e-13 * xj);
+}
 }  // namespace
 
-bool factor_at_zero(const SpMat& K, SpLU& lu) {
+bool factor_at_zero(const SpMat& K, const SpMat& M, SpLU& lu) {
   SpMat P = K;
   P.makeCompressed();
   lu.compute(P);
-  return lu.info() == Eigen::Success && std::isfinite(lu.logAbsDeterminant());
+  return lu.info() == Eigen::Success && std::isfinite(lu.logAbsDeterminant()) &&
+         !has_rigid_motions(K, M, lu);
 }
 
 bool modal_shift_invert(const Eigen::MatrixXd& Md, const Eigen::MatrixXd& Dd,
@@ -56,9 +77,10 @@ bool modal_shift_invert(const SparsePencil& p, int n_modes, Eigen::VectorXcd& la
       P.makeCompressed();
       local.compute(P);
       if (local.info() == Eigen::Success) {
-        // SparseLU may "succeed" on a numerically singular matrix: check the pivots.
+        // SparseLU may "succeed" on a numerically singular matrix: check the pivots, and at
+        // σ = 0 that K has no rigid-body motion.
         const double ld = local.logAbsDeterminant();
-        if (std::isfinite(ld)) break;
+        if (std::isfinite(ld) && (attempt > 0 || !has_rigid_motions(K, M, local))) break;
       }
       sigma = -1e-3 * p.scale * (attempt + 1);
     }
