@@ -28,7 +28,8 @@ constexpr double kInletBand = 0.5;
 // temperature T_up + Φ/(ρ c in) otherwise grows without bound as in -> 0 and jumps back to
 // T_s + Φ/(ρ c out) when the flow from the pad reverses (a lightly loaded lobe's trailing-edge
 // end cells: the turbine of tests/data/models at 5.387 Hz cycled 200 outer steps, that node
-// 45 <-> 63 degC). On a loaded pad in/out >= 0.23 there (docs/film-physics.md): unchanged.
+// 45 <-> 63 degC). It never acts on the compressor's pads and lobes of the THD tests (their
+// results bit for bit, docs/film-physics.md "A trailing-edge cell the pad hardly feeds").
 constexpr double kTeMakeup = 0.1;
 
 void nonneg(double v, const char* field) {
