@@ -133,3 +133,24 @@ def test_a_failed_forced_orbit_is_a_truthful_status(pump):
         assert "--settle-s" in res.message and "settles to 1 %" in res.message
     with pytest.raises(rd.InputError, match="forced_start"):
         periodic_orbit(pump, F_HZ, kind="forced", unbalances=ub, forced_start="transient")
+
+
+def test_cli_forced_start_flag(capsys):
+    """``rotordyn periodic-orbit --forced-start``: both starts reach the same forced orbit of
+    the pump by harmonic balance (to 1e-9 of its amplitude); a bad choice is refused."""
+    import json
+
+    from rotordyn.cli import main
+
+    base = ["periodic-orbit", str(MODELS / "pump_overhung.toml"), "--kind", "forced",
+            "--speed-hz", "50", "--unbalance", "3,5e-4,0", "--method", "harmonic_balance",
+            "--json"]
+    amp = {}
+    for start in ("linear", "equilibrium"):
+        assert main([*base, "--forced-start", start]) == 0
+        d = json.loads(capsys.readouterr().out)
+        assert d["status"] == "ok"
+        amp[start] = d["amplitude_m"]
+    assert abs(amp["linear"] - amp["equilibrium"]) < 1e-9 * amp["linear"]
+    assert main([*base, "--forced-start", "cold"]) == 2
+    assert "--forced-start" in capsys.readouterr().err

@@ -103,6 +103,10 @@ def _orbit_arguments(s) -> None:
                         "unbalance response at the equilibrium, a limit cycle by harmonic "
                         "balance from the equilibrium displaced along its least-damped whirl "
                         "mode)")
+    s.add_argument("--forced-start", choices=["linear", "equilibrium"], default="linear",
+                   help="forced orbit without --settle-s: start from the linear unbalance "
+                        "response at the equilibrium (linear, default) or from the "
+                        "equilibrium itself (equilibrium)")
     s.add_argument("--disturbance-c", type=float, default=0.1, metavar="F",
                    help="vertical disturbance of the active journal, fraction of its "
                         "clearance (default 0.1)")
@@ -228,7 +232,7 @@ def _cmd_periodic_orbit(args) -> int:
     res = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
                                   kind=args.kind, start=start, unbalances=ub,
                                   subharmonic=args.subharmonic, rtol=args.rtol, tol=args.tol,
-                                  **hb)
+                                  forced_start=args.forced_start, **hb)
     if args.json:
         mu = np.asarray(res.multipliers, dtype=complex)
         print(json_text({
