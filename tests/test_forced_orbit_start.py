@@ -67,6 +67,11 @@ def test_small_unbalance_orbit_is_the_linear_response(pump):
         assert res.status == "ok", res.message
         assert res.stats["linear_start_scale"] == 1.0
         r_lin, q, _ = linear_orbit(pump, F_HZ, ub, res.t)
+        # the linear start's q is the package's unbalance response (its own C++ path)
+        u = rd.unbalance_response(pump, ub, [F_HZ], stations=[b.station for b in pump.bearings])
+        qj = np.array([(q[b.jx], q[b.jy]) for b in asm.bearings])
+        np.testing.assert_allclose(qj, np.stack([u.x[0], u.y[0]], axis=1),
+                                   rtol=1e-8, atol=1e-8 * np.abs(qj).max())
         errs.append(np.abs(res.r[:, j] - r_lin[:, j]).max() / np.abs(q[j]).max())
     assert errs[0] < 0.1
     assert 3.0 < errs[0] / errs[1] < 5.0

@@ -235,12 +235,10 @@ def test_plain_equals_the_system_at_the_journal_tilt_and_film_load(model):
     rotor on two bearings is statically determinate, so each bearing's standalone tilted
     thermal equilibrium under the load its film carries, at the journal's tilt the system
     found, is the system's (two outer iterations to |ΔT| ≤ 1e-6 K apart): temperatures
-    1e-5 K, position 1e-6 c, moments 1e-6 (observed 1e-7 K, 1e-9 c). (At +0.3 mrad the THD
-    NDE film has two fixed points and the two calls converge to different ones, 0.37 K apart,
-    each an exact fixed point of the same energy solve: one reformation node of the
-    Swift–Stieber zone is cavitated in one and full in the other, and its streamer fill jumps
-    from 0.646 to 1 — not the inlet's hand-over, which is the same in both: docs/film-physics.md,
-    "Not unique".)"""
+    1e-5 K, position 1e-6 c, moments 1e-6 (observed 1e-7 K, 1e-9 c). (Until 2026-12-05 the
+    THD NDE film had two fixed points at +0.3 mrad, 0.37 K apart, from a cavitated cell's
+    fill jumping 0.646 ↔ 1; the fill is continuous now and the two calls agree there:
+    tests/test_thd_fill_continuity.py, docs/film-physics.md, "Unique since 2026-12-05".)"""
     from rotordyn.analysis.assembly import assembled
 
     s = rotordyn.System.from_toml(MODELS / "compressor_plain_thermal.toml")
