@@ -66,6 +66,47 @@ speed_hz = 60.0
         SweepSpec.from_toml(spec)
 
 
+@pytest.mark.parametrize("call", [
+    lambda s: rd.equilibrium(s, 60.0, 1e5),
+    lambda s: rd.stability(s, 60.0, 1e5),
+    lambda s: rd.campbell(s, [50.0, 60.0], chamber_pressure_pa=1e5),
+    lambda s: rd.unbalance_response(s, [(3, 1e-4, 0.0)], [60.0], chamber_pressure_pa=1e5),
+    lambda s: rd.transient(s, 0.01, 60.0, 1e5),
+    lambda s: rd.periodic_orbit(s, 60.0, 1e5, method="harmonic_balance"),
+    lambda s: rd.threshold(s, "speed_hz", bounds=(60.0, 160.0), chamber_pressure_pa=1e5),
+], ids=["equilibrium", "stability", "campbell", "unbalance", "transient", "orbit",
+        "threshold"])
+def test_a_fixed_pc_without_an_active_bearing_is_refused(plain, call):
+    """A nonzero p_c held fixed on the compressor (no active bearing) acted on nothing while
+    the result echoed it ("stable (ok): 60 Hz, p_c = 0.1 MPa"): refused, naming the field
+    and the one allowed value; p_c = 0 still runs."""
+    with pytest.raises(InputError, match=r"^chamber_pressure_pa: 100000 Pa acts on an active "
+                                         r".*\(allowed: 0\)"):
+        call(plain)
+
+
+def test_a_single_nonzero_pc_axis_value_is_refused(tmp_path):
+    spec = tmp_path / "s.toml"
+    spec.write_text(f"""schema = "rotordyn/sweep/1"
+name = "pc-on-plain"
+model = "{MODELS / 'compressor_plain.toml'}"
+analysis = "stability"
+[grid]
+chamber_pressure_pa = 1e5
+speed_hz = 60.0
+""")
+    with pytest.raises(InputError, match=r"^grid\.chamber_pressure_pa: acts on an active"):
+        SweepSpec.from_toml(spec)
+    spec.write_text(spec.read_text().replace("= 1e5", "= 0.0"))
+    assert SweepSpec.from_toml(spec) is not None
+
+
+def test_cli_stability_refuses_pc_without_an_active_bearing(capsys):
+    model = str(MODELS / "compressor_plain.toml")
+    assert main(["stability", model, "--speed-hz", "60", "--chamber-pressure-pa", "1e5"]) == 2
+    assert "chamber_pressure_pa: 100000 Pa acts on an active" in capsys.readouterr().err
+
+
 def test_cli_threshold_defaults_to_speed_and_asks_for_its_range(capsys):
     model = str(MODELS / "compressor_plain.toml")
     assert main(["threshold", model]) == 2

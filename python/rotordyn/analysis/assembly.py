@@ -17,6 +17,7 @@ import numpy as np
 from rotordyn import _core
 from rotordyn.analysis.modes import rotor_matrices
 from rotordyn.errors import InputError
+from rotordyn._common import validate as v
 from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.model.system import System
 
@@ -321,6 +322,16 @@ class Assembled:
 #: the operating variables a scan, a threshold or a branch can vary besides the model fields
 #: (each acts through the solver's operating point, not by re-assembling the model)
 OPERATING = ("speed_hz", "chamber_pressure_pa", "config_ay_m")
+
+
+def chamber_pressure(system: System, value, field: str = "chamber_pressure_pa") -> float:
+    """p_c, Pa: a finite number >= 0, and 0 on a system without an active journal bearing
+    (a nonzero p_c there would act on nothing while the result echoed it as applied)."""
+    p = v.non_negative(field, value)
+    if p != 0.0 and not any(isinstance(b, ActiveJournalBearing) for b in system.bearings):
+        raise InputError(f"{field}: {p:g} Pa acts on an active journal bearing's chamber and "
+                         "this model has none; leave it 0 (allowed: 0)")
+    return p
 
 
 def check_operating_parameter(system: System, name: str, field: str = "vary") -> None:

@@ -7,7 +7,7 @@ from rotordyn._common.threads import limited_blas
 
 import numpy as np
 
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import assembled, chamber_pressure
 from rotordyn.analysis.linear import _stability_from, continued_linear_models, linearize
 from rotordyn.analysis.tracking import track_modes
 from rotordyn.errors import InputError, RotordynError
@@ -34,7 +34,7 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
     equilibrium (cold start, field frozen for K_H, D_H; no continuation between speeds;
     the result's ``thermal`` per speed; :mod:`.thermal_dynamics`)."""
     sp = v.speeds("speeds_hz", speeds_hz)
-    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    chamber_pressure(system, chamber_pressure_pa)
     if config_ay_m is not None:  # a NaN here made every point "error" (issue 13)
         v.finite("config_ay_m", config_ay_m)
     v.choice("method", method, ("perturbation", "finite_difference"))

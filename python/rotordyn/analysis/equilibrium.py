@@ -8,7 +8,7 @@ from rotordyn._common.threads import limited_blas
 import numpy as np
 
 from rotordyn import _core
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import assembled, chamber_pressure
 from rotordyn.errors import InputError
 from rotordyn._common import validate as v
 from rotordyn.model.system import System
@@ -59,7 +59,7 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
     open film was found); ``message`` says why.
     """
     v.speed("speed_hz", speed_hz)
-    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    chamber_pressure(system, chamber_pressure_pa)
     if config_ay_m is not None:
         v.finite("config_ay_m", config_ay_m)
     if config_ax_m is not None:

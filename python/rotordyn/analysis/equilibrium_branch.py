@@ -25,7 +25,7 @@ import numpy as np
 from rotordyn._common import validate as v
 from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import Assembled, assembled
+from rotordyn.analysis.assembly import Assembled, assembled, chamber_pressure
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn.analysis.equilibrium_events import bifurcations
 from rotordyn.analysis.field_axis import (OPERATING, FieldSystems, check_acts, field_parameter,
@@ -217,8 +217,7 @@ def equilibrium_continuation(system: System, vary: str, bounds, start="equilibri
         raise InputError("start: expected \"equilibrium\" or a converged EquilibriumResult, "
                          f"got {type(start).__name__}")
     op["speed_hz"] = v.speed("speed_hz", op["speed_hz"])
-    op["chamber_pressure_pa"] = v.non_negative("chamber_pressure_pa",
-                                               op["chamber_pressure_pa"])
+    op["chamber_pressure_pa"] = chamber_pressure(system, op["chamber_pressure_pa"])
     if op["config_ay_m"] is not None:
         op["config_ay_m"] = v.finite("config_ay_m", op["config_ay_m"])
     if vary in OPERATING:

@@ -12,7 +12,7 @@ import numpy as np
 
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import OPERATING, assembled
+from rotordyn.analysis.assembly import OPERATING, assembled, chamber_pressure
 from rotordyn.analysis.field_axis import field_parameter
 from rotordyn.analysis.linear import linearize
 from rotordyn.analysis.lyapunov import central_second, central_third, first_lyapunov, \
@@ -110,7 +110,7 @@ def hopf(system: System, vary: str = "chamber_pressure_pa", *, bounds=None, at=N
     """
     vary = field_parameter(system, vary)
     fixed = {"speed_hz": v.speed("speed_hz", speed_hz),
-             "chamber_pressure_pa": v.non_negative("chamber_pressure_pa", chamber_pressure_pa),
+             "chamber_pressure_pa": chamber_pressure(system, chamber_pressure_pa),
              "config_ay_m": None if config_ay_m is None else v.finite("config_ay_m",
                                                                        config_ay_m)}
     v.in_range("fd_step", fd_step, 1e-6, 0.5)

@@ -13,7 +13,7 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis import harmonic_balance as hbal
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import assembled, chamber_pressure
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn.errors import ConvergenceError, InputError
 from rotordyn.model.system import System
@@ -158,7 +158,7 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         m_hb = hbal.time_points_for(harmonics, time_points)
         v.in_range("start_amplitude_c", start_amplitude_c, 1e-6, 0.99)
     v.speed("speed_hz", speed_hz)
-    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    chamber_pressure(system, chamber_pressure_pa)
     if config_ay_m is not None:
         v.finite("config_ay_m", config_ay_m)
     v.integer("n_out", n_out, lo=2, hi=1_000_000)

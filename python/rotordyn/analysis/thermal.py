@@ -16,7 +16,7 @@ from rotordyn import _core
 from rotordyn._common.status import CONVERGED
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import assembled, chamber_pressure
 from rotordyn.bearings import (ActiveJournalBearing, FixedGeometryBearing, FluidFilmBearing,
                                Oil, TiltingPadBearing)
 from rotordyn.bearings.pad_thd import (check_carry_over, pad_options, pad_thermal_films,
@@ -88,7 +88,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     v.speed("speed_hz", speed_hz)
     if float(speed_hz) == 0.0:
         raise InputError("speed_hz: the thermal equilibrium needs a nonzero speed, got 0")
-    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    chamber_pressure(system, chamber_pressure_pa)
     for name, val in (("config_ay_m", config_ay_m), ("config_ax_m", config_ax_m)):
         if val is not None:
             v.finite(name, val)

@@ -11,7 +11,8 @@ import numpy as np
 
 from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
-from rotordyn.analysis.assembly import OPERATING, assembled, check_operating_parameter
+from rotordyn.analysis.assembly import (OPERATING, assembled, chamber_pressure,
+                                        check_operating_parameter)
 from rotordyn.analysis.thermal_dynamics import thermal_keywords
 from rotordyn.model.paths import set_field
 from rotordyn.model.system import System
@@ -83,7 +84,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     # The fixed parameters obey the ranges of stability() (issue 13: a negative fixed
     # chamber pressure used to scan and report "no_crossing").
     fixed = {"speed_hz": v.speed("speed_hz", speed_hz),
-             "chamber_pressure_pa": v.non_negative("chamber_pressure_pa", chamber_pressure_pa),
+             "chamber_pressure_pa": chamber_pressure(system, chamber_pressure_pa),
              "config_ay_m": None if config_ay_m is None else v.finite("config_ay_m",
                                                                        config_ay_m)}
     if not field:

@@ -11,7 +11,7 @@ from rotordyn._common.threads import limited_blas
 import numpy as np
 
 from rotordyn import _core
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import assembled, chamber_pressure
 from rotordyn.analysis.equilibrium import equilibrium
 from rotordyn.analysis.measurement import measurement_matrix
 from rotordyn.errors import ConvergenceError, InputError
@@ -194,7 +194,7 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
     v.non_negative("max_step_s", max_step_s)
     v.positive("t_end_s", t_end_s)
     v.speed("speed_hz", speed_hz)
-    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    chamber_pressure(system, chamber_pressure_pa)
     v.integer("n_out", n_out, lo=2)
     v.in_range("rtol", rtol, 1e-14, 0.1, hi_open=True)
     v.in_range("rub_fraction", rub_fraction, 0.0, 1.0, hi_open=True)

@@ -8,7 +8,7 @@ from rotordyn._common.threads import limited_blas
 import numpy as np
 
 from rotordyn import _core
-from rotordyn.analysis.assembly import assembled
+from rotordyn.analysis.assembly import assembled, chamber_pressure
 from rotordyn.analysis.equilibrium import equilibrium_options
 from rotordyn.analysis.linear import FD_REL_STEP, LINEARIZATION_METHODS
 from rotordyn.errors import ConvergenceError, InputError
@@ -210,7 +210,7 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     if not ub:
         raise InputError("unbalances: expected at least one (station, mass_kg_m, phase_deg)")
     sp = v.speeds("speeds_hz", speeds_hz, positive_only=True)
-    v.non_negative("chamber_pressure_pa", chamber_pressure_pa)
+    chamber_pressure(system, chamber_pressure_pa)
     if config_ay_m is not None:
         v.finite("config_ay_m", config_ay_m)
     if operating_speed_hz is not None:

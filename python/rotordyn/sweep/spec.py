@@ -478,13 +478,14 @@ class SweepSpec:
                     if len(act) != 1 and len(system.bearings) != 1:
                         raise InputError(f"grid.{name}: addresses the active bearing, but the "
                                          f"model has {len(act)}; use bearings.<name>.{name}")
-                if name == "chamber_pressure_pa" and len(vals) > 1:
+                if name == "chamber_pressure_pa" and any(isinstance(x, (int, float)) and x != 0
+                                                          for x in vals):
                     from rotordyn.bearings import ActiveJournalBearing
 
                     if not any(isinstance(b, ActiveJournalBearing) for b in system.bearings):
                         raise InputError("grid.chamber_pressure_pa: acts on an active journal "
-                                         "bearing's chamber and the model has none (every "
-                                         "value would repeat the same point)")
+                                         "bearing's chamber and the model has none (allowed: "
+                                         "0; other values would repeat the same point)")
                 continue
             if name.startswith("options."):
                 self._option_axis(name)
