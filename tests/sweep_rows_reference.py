@@ -432,9 +432,10 @@ def common_row(job, pid, chunk_id, idx, p, asm):
     row.update(p)
     row.setdefault("speed_hz", 50.0)
     row.setdefault("chamber_pressure_pa", 0.0)
+    bc = ref_bearing(asm, job.options.get("bearing")) if asm is not None else None
     if "config_ay_m" not in row:
-        bc = ref_bearing(asm) if asm is not None else None
         row["config_ay_m"] = (job_model_ay(asm, bc) if bc is not None else math.nan)
+    row["journal_bearing"] = asm.system.bearings[bc.index].name if bc is not None else None
     return row
 
 

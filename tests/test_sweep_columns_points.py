@@ -218,7 +218,8 @@ def test_schemas_equal_the_stored_ones_of_the_code_before():
     ``amplitude_coefficient_m2``, the hopf analysis's ``grid_check``; the ``thermal`` rows' four
     THD wall columns, journal_temperature_c … heat_to_bush_w, float64, before ``iterations``,
     then the hot film's h_min_m and h_min_z_m, float64, before ``iterations``;
-    docs/film-physics.md.)"""
+    docs/film-physics.md; ``journal_bearing``, string, after the ``i_`` columns of the
+    analyses whose rows do not name a bearing: which journal they describe.)"""
     import json
 
     stored = json.loads((Path(__file__).parent / "data" / "sweep_point_schemas.json")

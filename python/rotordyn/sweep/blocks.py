@@ -168,7 +168,7 @@ def _stab_batch(job, seg, ops):
         asm.solver, *_inputs(ops), restart, equilibrium_options(opts), int(n_modes),
         opts.get("linearization", "perturbation") == "finite_difference", FD_REL_STEP,
         asm.rotor.xy_pairs(), asm.rotor.rot_pairs(), [i for bc in asm.bearings for i in bc.sleeve])
-    bc = ref_bearing(asm)
+    bc = ref_bearing(asm, job.options.get("bearing"))
     KE = np.asarray(res.n_eig).astype(np.int64)
     EV = np.asarray(res.eigenvalues)
     R = np.asarray(res.r)

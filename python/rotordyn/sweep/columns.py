@@ -38,17 +38,22 @@ def identity(job, chunk_id: int, pids, asms) -> dict:
         cols["speed_hz"] = np.full(n, 50.0)
     if "chamber_pressure_pa" not in cols:
         cols["chamber_pressure_pa"] = np.zeros(n)
+    # the bearing whose journal the rows describe (journal_x_m, ..., and config_ay_m when it
+    # is not an axis): options.bearing, else the active bearing, else the first
+    ay, names, seen = np.full(n, math.nan), np.full(n, None, dtype=object), {}
+    for k, asm in enumerate(asms):
+        if asm is None:
+            continue
+        got = seen.get(id(asm))
+        if got is None:
+            bc = pt_.ref_bearing(asm, job.options.get("bearing"))
+            got = seen[id(asm)] = ((pt_.job_model_ay(asm, bc),
+                                    getattr(asm.system.bearings[bc.index], "name", None))
+                                   if bc is not None else (math.nan, None))
+        ay[k], names[k] = got
     if "config_ay_m" not in cols:
-        ay, seen = np.full(n, math.nan), {}
-        for k, asm in enumerate(asms):
-            if asm is None:
-                continue
-            v = seen.get(id(asm))
-            if v is None:
-                bc = pt_.ref_bearing(asm)
-                v = seen[id(asm)] = pt_.job_model_ay(asm, bc) if bc is not None else math.nan
-            ay[k] = v
         cols["config_ay_m"] = ay
+    cols["journal_bearing"] = names
     return cols
 
 

@@ -178,8 +178,10 @@ def waterfall_blocks(job, variants, chunk_id, pids, asms):
         if tr.status not in CONVERGED:  # "contact": integrated from a contact equilibrium
             blocks.append(_fail(k, _status(tr.status), tr.message))
             continue
-        freq, ax = tr.spectrum(last_fraction=0.5, axis="x")
-        _, ay_ = tr.spectrum(last_fraction=0.5, axis="y")
+        bc = ref_bearing(asm, job.options.get("bearing"))
+        j = bc.index if bc else 0  # the journal of the row's journal_bearing
+        freq, ax = tr.spectrum(j, last_fraction=0.5, axis="x")
+        _, ay_ = tr.spectrum(j, last_fraction=0.5, axis="y")
         # max_frequency_hz: every speed's spectrum over the same span (a waterfall's traces
         # then line up); else up to max_harmonic × speed
         fmax = opts.get("max_frequency_hz")
@@ -245,7 +247,7 @@ def runup_blocks(job, variants, chunk_id, pids, asms):
 
     for k, asm, opts, _, tr in _transients(point_list(job, variants, pids, asms), op,
                                            integrate, blocks):
-        bc = ref_bearing(asm)
+        bc = ref_bearing(asm, job.options.get("bearing"))
         j = bc.index if bc else 0
         # the rows reached (a failed run, e.g. "rub", leaves NaN rows after it stopped)
         done = np.isfinite(np.asarray(tr.angle_rad)) & np.all(np.isfinite(tr.r), axis=1)

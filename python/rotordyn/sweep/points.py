@@ -15,7 +15,7 @@ from rotordyn._common.status import CONVERGED  # noqa: F401 - statuses of a conv
 from rotordyn._common.whirl import WHIRL_NAMES
 from rotordyn.analysis.assembly import Assembled
 from rotordyn.analysis.linear import FD_REL_STEP
-from rotordyn.errors import RotordynError
+from rotordyn.errors import InputError, RotordynError
 from rotordyn.results.modes import mode_stable
 from rotordyn.model.system import System
 from rotordyn.sweep.paths import set_fields
@@ -128,7 +128,15 @@ def operating(asm, p: dict, memo: dict | None = None):
     return f, pc, a
 
 
-def ref_bearing(asm):
+def ref_bearing(asm, name: str | None = None):
+    """The bearing whose journal the rows' ``journal_*``/``config_ay_m`` columns describe
+    (column ``journal_bearing``): the one named by the option ``bearing``, else the active
+    bearing, else the first."""
+    if name is not None:
+        for bc in asm.bearings:
+            if getattr(asm.system.bearings[bc.index], "name", None) == name:
+                return bc
+        raise InputError(f"options.bearing: {name!r} is not a bearing of the model")
     act = [bc for bc in asm.bearings if bc.active]
     return (act or asm.bearings)[0] if asm.bearings else None
 

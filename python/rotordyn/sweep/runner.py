@@ -31,6 +31,8 @@ UNITS = {
     "speed_hz": ("Hz", "spin speed"), "chamber_pressure_pa": ("Pa", "chamber pressure p_c"),
     "config_ay_m": ("m", "housing offset a_y of the active bearing"),
     "config_ax_m": ("m", "housing offset a_x of the active bearing"),
+    "journal_bearing": ("", "the bearing whose journal journal_x_m, journal_y_m, config_ay_m "
+                            "(when not an axis) and the motion columns describe"),
     "journal_x_m": ("m", "journal x relative to the housing"),
     "journal_y_m": ("m", "journal y relative to the housing"),
     "h_min_m": ("m", "minimum film thickness"), "freq_hz": ("Hz", "damped natural frequency"),

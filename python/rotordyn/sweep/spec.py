@@ -52,6 +52,12 @@ def _opt_range(lo, hi, lo_open=True):
     return lambda f, x: v.in_range(f, x, lo, hi, lo_open=lo_open)
 
 
+def _opt_bearing(f, x):
+    if not isinstance(x, str) or not x:
+        raise InputError(f"{f}: expected a bearing's name (a string), got {x!r}")
+    return x
+
+
 def _opt_bool(f, x):
     if not isinstance(x, bool):
         raise InputError(f"{f}: expected true or false, got {x!r}")
@@ -134,8 +140,9 @@ OPTIONS = {
     "equilibrium": dict(_EQ),
     "thermal": {"tol_k": _opt_range(0.0, 1.0)},
     "stability": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "track": _opt_bool,
-                  "line": _opt_axis, "thermal": _opt_thermal},
-    "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "thermal": _opt_thermal},
+                  "line": _opt_axis, "thermal": _opt_thermal, "bearing": _opt_bearing},
+    "campbell": {**_EQ, **_LIN, "n_modes": _opt_int(1, 1000), "thermal": _opt_thermal,
+                 "bearing": _opt_bearing},
     "threshold": {"vary": _opt_axis, "exclude_sleeve_modes": _opt_bool,
                   "xtol": _opt_range(0.0, math.inf)},
     "boundary": {"x": _opt_axis, "y": _opt_axis, "z": _opt_axis,
@@ -148,12 +155,12 @@ OPTIONS = {
                   "max_harmonic": _opt_range(0.0, 100.0),
                   "max_frequency_hz": _opt_range(0.0, 1e6), "rtol": _opt_range(0.0, 1e-2),
                   "rub_fraction": _opt_range(0.0, 0.999, lo_open=False),
-                  "bdf_max_order": _opt_int(1, 5)},
+                  "bdf_max_order": _opt_int(1, 5), "bearing": _opt_bearing},
     "run-up": {"unbalances": _opt_unbalances, "start_hz": _opt_range(0.0, 1e5),
                "stop_hz": _opt_range(0.0, 1e5), "rate_hz_per_s": _opt_range(0.0, 1e6),
                "samples_per_revolution": _opt_int(8, 4096), "rtol": _opt_range(0.0, 1e-2),
                "rub_fraction": _opt_range(0.0, 0.999, lo_open=False),
-               "bdf_max_order": _opt_int(1, 5)},
+               "bdf_max_order": _opt_int(1, 5), "bearing": _opt_bearing},
 }
 OPTIONS["hopf"] = {**OPTIONS["threshold"], "fd_step": _opt_range(0.0, 0.5),
                    # l1 again on every film grid refined twice (rotordyn.hopf's grid_check)
@@ -497,6 +504,11 @@ class SweepSpec:
             check_model_axis(system, name, vals)
         if self.analysis == "robust":
             rr.check_model(system, self.options)
+        if "bearing" in self.options:
+            names = [getattr(b, "name", "") for b in system.bearings]
+            if self.options["bearing"] not in names:
+                raise InputError(f"options.bearing: {self.options['bearing']!r} is not a "
+                                 f"bearing of the model (allowed: {', '.join(map(repr, names))})")
         n_st = system.rotor.n_stations
         if "station" in self.options and self.options["station"] >= n_st:
             raise InputError(f"options.station: station {self.options['station']} out of "

@@ -110,7 +110,8 @@ def stab_blocks(job, variants, chunk_id, pids, asms):
         if st is None:
             blocks.append(_fail(k, fail["status"], fail["message"], th))
         else:
-            blocks.append(_modes_block(k, st, t, ids[k], items[k][1]))
+            blocks.append(_modes_block(k, st, t, ids[k], items[k][1],
+                                       job.options.get("bearing")))
     return merge(blocks)
 
 
@@ -121,7 +122,7 @@ def _track(buf, weight, ids):
         ids[k] = r["mode_id"]
 
 
-def _modes_block(k, st, t, ids, asm):
+def _modes_block(k, st, t, ids, asm, bearing=None):
     lam = st.eigenvalues
     n = len(lam)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -131,7 +132,7 @@ def _modes_block(k, st, t, ids, asm):
         dr = np.where(ab > 0, -re / ab, np.nan)
         ld = np.where(lam.imag != 0, -2 * np.pi * re / lam.imag, np.nan)
     e = st.linear.equilibrium
-    bc = ref_bearing(asm)
+    bc = ref_bearing(asm, bearing)
     hm = np.atleast_1d(e.h_min_m)
     kind = np.array([str(x) if x in ("rotor", "sleeve") else None for x in st.kind],
                     dtype=object)  # a pad's own mode: null, as the isothermal rows

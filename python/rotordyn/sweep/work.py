@@ -106,6 +106,9 @@ def schema(analysis: str, axes: list[str], thermal: bool = False,
         fields.append(pa.field(a, F64))
     for a in axes:
         fields.append(pa.field(f"i_{a}", I32))
+    if "bearing" not in OUTPUTS[analysis]:  # rows of one bearing each name it there
+        # the bearing whose journal the rows' journal_*/config_ay_m columns describe
+        fields.append(pa.field("journal_bearing", STR))
     for k, t in OUTPUTS[analysis].items():
         fields.append(pa.field(k, t[0] if isinstance(t, tuple) else t))
     if thermal:
