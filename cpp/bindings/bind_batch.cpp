@@ -21,7 +21,9 @@ void bind_batch(py::module_& m) {
       .def_readonly("eigenvalues", &StabilityBatchResult::eigenvalues)
       .def_readonly("whirl", &StabilityBatchResult::whirl)
       .def_readonly("sleeve_share", &StabilityBatchResult::sleeve_share)
-      .def_readonly("modes", &StabilityBatchResult::modes);
+      .def_readonly("modes", &StabilityBatchResult::modes)
+      .def_readonly("least_stable", &StabilityBatchResult::least_stable)
+      .def_readonly("max_real", &StabilityBatchResult::max_real);
   m.def(
       "stability_batch",
       [](SystemSolver& solver, const Eigen::VectorXd& omega, const Eigen::VectorXd& pressure,

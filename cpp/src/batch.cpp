@@ -89,6 +89,25 @@ void fail_point(StabilityBatchResult& out, Eigen::Index i) {
   out.whirl.row(i).setZero();
   out.sleeve_share.row(i).setConstant(nan);
   out.modes[static_cast<std::size_t>(i)] = Eigen::MatrixXcd();
+  out.least_stable[i] = std::complex<double>(nan, nan);
+  out.max_real[i] = nan;
+}
+
+/// The root with the largest real part, Re λ within 1e-9·max(|λ|, 1) of 0 counted as 0 (the
+/// round-off band of rotordyn.results.modes.settled_real); NaN when there is none.
+std::complex<double> least_stable_root(const Eigen::VectorXcd& roots) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::complex<double> best(nan, nan);
+  double key_best = -std::numeric_limits<double>::infinity();
+  for (Eigen::Index j = 0; j < roots.size(); ++j) {
+    const double re = roots[j].real();
+    const double key = std::abs(re) < 1e-9 * std::max(std::abs(roots[j]), 1.0) ? 0.0 : re;
+    if (key > key_best || std::isnan(best.real())) {
+      key_best = key;
+      best = roots[j];
+    }
+  }
+  return best;
 }
 
 void fail_point(EquilibriumBatchResult& out, Eigen::Index i) {
@@ -127,6 +146,8 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
   out.whirl = Eigen::MatrixXi::Zero(np, k);
   out.sleeve_share = RowMatrixXd::Constant(np, k, nan);
   out.modes.resize(np);
+  out.least_stable = Eigen::VectorXcd::Constant(np, std::complex<double>(nan, nan));
+  out.max_real = Eigen::VectorXd::Constant(np, nan);
   // Continuation along a line: hist holds the equilibria of the points before i on its line
   // that converged ("ok") in a row, newest first (at most 3), for an extrapolated start
   // (line_start); an extrapolated start that fails is retried from hist[0] itself, so
@@ -211,6 +232,13 @@ StabilityBatchResult stability_batch(SystemSolver& solver, const StabilityBatchI
         out.sleeve_share(i, j) = kin > 0 ? ks / kin : 0.0;
       }
       out.modes[static_cast<std::size_t>(i)] = std::move(mr.modes);
+      // the verdict over every root: the kept ones when they are all, else all of them
+      // (eigenvalues only) — a mode above the n_modes cut can be the unstable one
+      const Eigen::VectorXcd all =
+          k < n ? modal(Mw, D, K, in.xy_pairs, 0, false, in.rot_pairs).eigenvalues
+                : Eigen::VectorXcd(mr.eigenvalues);
+      out.least_stable[i] = least_stable_root(all);
+      if (all.size()) out.max_real[i] = all.real().maxCoeff();
     } catch (const std::exception& ex) {
       out.status[i] = "error";
       out.message[i] = ex.what();

@@ -134,11 +134,17 @@ std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero,
     if (fa != fb) return fa < fb;
     return std::abs(w(a)) < std::abs(w(b));
   });
-  // Drop real roots: overdamped motions carry no natural frequency. Keep them only when
-  // nothing else is left.
+  // Drop decaying real roots: overdamped motions carry no natural frequency. Keep them only
+  // when nothing else is left. A growing real root (Re λ above the round-off band of
+  // rotordyn.results.modes.ROUND_OFF_REL = 1e-9) is a divergence — a static instability,
+  // e.g. an equilibrium past a fold — and is always kept (first: its frequency is 0), so
+  // the verdict of every caller sees it.
+  constexpr double kRoundOffRel = 1e-9;
   std::vector<int> osc;
   for (int i : idx)
-    if (w(i).imag() > 0) osc.push_back(i);
+    if (w(i).imag() > 0 ||
+        w(i).real() > kRoundOffRel * std::max(std::abs(w(i)), 1.0))
+      osc.push_back(i);
   if (!osc.empty()) idx.swap(osc);
   if (n_modes > 0 && static_cast<int>(idx.size()) > n_modes) idx.resize(n_modes);
   return idx;
@@ -201,7 +207,14 @@ ModalResult modal_impl(const Eigen::MatrixXd& M,
     // from dgeev itself: 27.6 s → 0.4 s CPU for all 244 modes of a 244-DOF rotor.
     const Eigen::MatrixXd& D = dense_D();
     const Eigen::MatrixXd A = state_matrix(M, D, K);
-    if (n_modes <= 0 || n_modes > kInverseIterationRoots) {
+    if (n_modes <= 0 && !with_modes) {
+      // Every root, eigenvalues only (a verdict over all of them): no vectors, so the
+      // whirl of these roots is not classified (planar).
+      eig_general(A, w, nullptr);
+      const std::vector<char> rigid = rigid_marks(w);
+      idx = pick_modes(w, n_modes, zero_here, &rigid);
+      V = Eigen::MatrixXcd::Zero(n, w.size());
+    } else if (n_modes <= 0 || n_modes > kInverseIterationRoots) {
       Eigen::MatrixXcd Vs;
       eig_general(A, w, &Vs);
       const std::vector<char> rigid = rigid_marks(w);

@@ -50,6 +50,12 @@ struct StabilityBatchResult {
   Eigen::MatrixXi whirl;                     ///< (n_pts, k) -1, 0, 1
   RowMatrixXd sleeve_share;                  ///< (n_pts, k) kinetic-energy share of the sleeve
   std::vector<Eigen::MatrixXcd> modes;       ///< per point (n, n_eig)
+  /// (n_pts,) the root with the largest real part among ALL the point's roots (Re λ within
+  /// the round-off band 1e-9·max(|λ|, 1) counted as 0), whatever n_modes kept: the point's
+  /// verdict and max Re λ. NaN where the point failed.
+  Eigen::VectorXcd least_stable;
+  /// (n_pts,) max Re λ over ALL the point's roots, 1/s (NaN where the point failed)
+  Eigen::VectorXd max_real;
 };
 
 /// Points in order on one solver; a point failing at any stage gets status "error" (or the

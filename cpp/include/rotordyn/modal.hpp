@@ -27,7 +27,9 @@ struct ModalResult {
 void eig_general(const Eigen::MatrixXd& A, Eigen::VectorXcd& w, Eigen::MatrixXcd* V);
 
 /// Modal analysis of the second-order system (dense, n_dof ≤ a few thousand).
-/// xy_pairs: (ix, iy) index pairs used to classify whirl. n_modes <= 0: all.
+/// xy_pairs: (ix, iy) index pairs used to classify whirl. n_modes <= 0: all (with
+/// with_modes = false: eigenvalues only, for a verdict over every root; their whirl is then
+/// not classified: planar). A growing real root (a divergence) is always kept.
 /// rot_pairs: (iθx, iθy) pairs, used for the whirl of modes without translation (a tilting
 /// disk).
 ModalResult modal(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D, const Eigen::MatrixXd& K,

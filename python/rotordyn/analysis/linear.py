@@ -120,6 +120,10 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
     ask = n if (pads or n_modes is None) else int(n_modes)
     r = _core.modal(lm.M, lm.D, lm.K, xy, ask, True, asm.rotor.rot_pairs())
     lam = np.asarray(r.eigenvalues)
+    # the verdict covers every root: a cut to n_modes leaves the rest out of the modes only
+    every = (np.asarray(_core.modal(lm.M, lm.D, lm.K, xy, 0, False,
+                                    asm.rotor.rot_pairs()).eigenvalues)
+             if ask < n else None)
     phi = np.asarray(r.modes)  # (n, k)
     whirl_code = np.asarray(r.whirl)
     if not (np.all(np.isfinite(lam)) and np.all(np.isfinite(phi))):
@@ -138,6 +142,7 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
         kin_p = np.real(np.einsum("ik,ij,jk->k", phi[pads].conj(), Mp, phi[pads]))
         kind[kin_p > 0.5 * kin_total] = "pad"
         if n_modes is not None:
+            every = lam  # the verdict over every root, pads' own included
             sel = mode_window(kind, n_modes)
             lam, phi, whirl_code, kind = lam[sel], phi[:, sel], whirl_code[sel], kind[sel]
     rotor = asm.rotor.expand(phi[:asm.n_rotor])
@@ -147,7 +152,7 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
     return StabilityResult(lm, lam, np.array([WHIRL_NAMES[int(x)] for x in whirl_code],
                                              dtype=object),
                            kind, rotor.reshape(n_nodes, 4, -1), sleeves, status=lm.status,
-                           message=lm.equilibrium.message, modes=phi)
+                           message=lm.equilibrium.message, modes=phi, all_eigenvalues=every)
 
 
 @limited_blas

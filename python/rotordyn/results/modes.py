@@ -50,11 +50,14 @@ def damping_ratio(eigenvalues: np.ndarray) -> np.ndarray:
 
 
 def log_dec(eigenvalues: np.ndarray) -> np.ndarray:
-    """Logarithmic decrement δ = −2π Re λ / Im λ (inf for a non-oscillating root; 0 within the
-    round-off band of Re λ = 0, +0 never −0: tables printed "-0"; NaN for a NaN eigenvalue)."""
+    """Logarithmic decrement δ = −2π Re λ / Im λ (for a non-oscillating root +inf when it
+    decays, −inf when it grows: a divergence; 0 within the round-off band of Re λ = 0, +0 never
+    −0: tables printed "-0"; NaN for a NaN eigenvalue)."""
     lam = np.asarray(eigenvalues)
     im = lam.imag
-    d = np.where(im > 0, -2 * np.pi * settled_real(lam) / np.where(im > 0, im, 1.0), np.inf)
+    re = settled_real(lam)
+    d = np.where(im > 0, -2 * np.pi * re / np.where(im > 0, im, 1.0),
+                 np.where(re > 0, -np.inf, np.inf))
     return np.where(np.isnan(lam), np.nan, d) + 0.0
 
 

@@ -91,6 +91,9 @@ class StabilityResult(Display):
     modes: np.ndarray | None = None
     # the thermal equilibrium whose frozen field the films ran at (``thermal=``), else None
     thermal: object = None
+    # every root of the point when ``eigenvalues`` keeps fewer (n_modes): the verdict and
+    # max Re λ cover them all (a mode above the cut can be the unstable one); else None
+    all_eigenvalues: np.ndarray | None = None
 
     @property
     def speed_hz(self) -> float:
@@ -108,6 +111,10 @@ class StabilityResult(Display):
             head += (f"; least damped {self.frequencies_hz[j]:.4g} Hz {self.whirl[j]} "
                      f"{self.kind[j]} mode, Re λ = {self.eigenvalues.real[j]:.3g} 1/s, "
                      f"log dec {self.log_dec[j]:.3g}")
+        if self.all_eigenvalues is not None:
+            head += (f" (the {len(self.eigenvalues)} kept; over all "
+                     f"{len(self.all_eigenvalues)} roots max Re λ = "
+                     f"{self.max_real_1_per_s:.3g} 1/s)")
         return head + ">"
 
     @property
@@ -124,8 +131,10 @@ class StabilityResult(Display):
 
     @property
     def max_real_1_per_s(self) -> float:
-        """Largest real part (the least-damped mode); > 0 means unstable."""
-        return float(np.max(self.eigenvalues.real)) if len(self.eigenvalues) else float("nan")
+        """Largest real part over every root of the point (also above an n_modes cut); > 0
+        means unstable."""
+        lam = self.eigenvalues if self.all_eigenvalues is None else self.all_eigenvalues
+        return float(np.max(lam.real)) if len(lam) else float("nan")
 
     @property
     def stable(self) -> bool:
@@ -133,7 +142,8 @@ class StabilityResult(Display):
         round-off band of zero (an undamped rotor) count as marginally stable, not unstable."""
         if self.status not in CONVERGED or len(self.eigenvalues) == 0:
             return False
-        return bool(np.all(mode_stable(self.eigenvalues)))
+        lam = self.eigenvalues if self.all_eigenvalues is None else self.all_eigenvalues
+        return bool(np.all(mode_stable(self.eigenvalues)) and np.all(mode_stable(lam)))
 
     def plot(self, mode: int | None = None, ax=None, system=None):
         """3-D whirl orbits of ``mode`` (0-based; default: the least damped rotor mode) along

@@ -196,6 +196,9 @@ def _stab_batch(job, seg, ops):
             "WN": WN, "KIND": KIND, "IT": np.asarray(res.iterations).astype(np.int64),
             "jx": R[:, bc.jx] if bc else nan, "jy": R[:, bc.jy] if bc else nan, "HMIN": HMIN,
             "lam": [EV[k, :KE[k]] for k in range(len(st))], "modes": res.modes,
+            # the verdict and max Re λ over every root of the point, not only the n_modes
+            # kept (a mode above the cut can be the unstable one)
+            "MX": np.asarray(res.max_real), "LS": np.asarray(res.least_stable),
             # the tilting films' outputs per point (docs/sweeps.md; none without one)
             "tilt": batch_tilt(asm, res) if any(b.rot for b in asm.bearings) else None}
 
@@ -207,13 +210,13 @@ def _stab_block(S, a, b, at, ids):
     cols = np.nonzero(V)[1].astype(np.int64)
     mode_id = (np.concatenate([ids[at + k] if ids[at + k] is not None else np.arange(ke[k - a])
                                for k in range(a, b)]).astype(np.int64) if len(cols) else cols)
-    with np.errstate(invalid="ignore"):
-        mx = np.where(V, EV.real, -np.inf).max(axis=1)
+    mx = S["MX"][a:b]
+    ls_stable = stable_modes(S["LS"][a:b][:, None])[:, 0]
     tilt = repeat_lists(S["tilt"][a:b], ke) if S["tilt"] is not None else {}
     return (np.repeat(at + np.arange(a, b), ke), {**tilt,
         "journal_x_m": np.repeat(S["jx"][a:b], ke), "journal_y_m": np.repeat(S["jy"][a:b], ke),
         "h_min_m": np.repeat(S["HMIN"][a:b], ke), "iterations": np.repeat(S["IT"][a:b], ke),
-        "point_stable": np.repeat(np.where(V, S["MS"][a:b], True).all(axis=1), ke),
+        "point_stable": np.repeat(np.where(V, S["MS"][a:b], True).all(axis=1) & ls_stable, ke),
         "max_real_1_per_s": np.repeat(mx, ke), "mode_id": mode_id, "mode": cols + 1,
         "freq_hz": S["FR"][a:b][V], "eig_real_1_per_s": EV.real[V],
         "damping_ratio": S["DR"][a:b][V], "log_dec": S["LD"][a:b][V],
