@@ -230,3 +230,17 @@ def test_one_whirl_rule_planar_at_rest():
         ["planar", "planar", "forward", "backward"]
     p = run("modes", "paper-rig", "--json", "--without-bearings")
     assert set(_strict(p.stdout)["whirl"]) == {"planar"}
+
+
+def test_campbell_without_crossings_says_so(capsys):
+    """The three-bearing train has no 1× crossing of a forward mode over 20–30 Hz: the text
+    output said pandas' "(no rows)"; it names what was looked for and where."""
+    from pathlib import Path
+
+    from rotordyn.cli import main
+
+    model = str(Path(__file__).parent / "data" / "models" / "motor_fan_train.toml")
+    assert main(["campbell", model, "--speeds-hz", "20:30:10", "--n-modes", "4"]) == 0
+    out = capsys.readouterr().out
+    assert "no 1× crossing of a forward mode between 20 and 30 Hz" in out
+    assert "(no rows)" not in out

@@ -459,7 +459,13 @@ def _cmd_campbell(args) -> int:
                                     zip(c.thermal, _messages(c))]} if c.thermal
                        else {})))
     else:
-        print(table_text(crit))
+        if len(crit):
+            print(table_text(crit))
+        else:  # say what was looked for, not pandas' "(no rows)"
+            which = "" if args.all_whirl else "forward "
+            print(f"no {args.harmonic:g}× crossing of a {which}mode between "
+                  f"{c.speeds_hz[0]:g} and {c.speeds_hz[-1]:g} Hz: no critical speed there "
+                  "(--json or --plot for the modes' frequencies)")
         if len(crit) and not crit["resonant"].all():
             print("(resonant False: the mode is damped beyond ζ = 1/√2 there, δ ≥ 2π: it crosses "
                   "the line without a resonance peak and is not a critical speed)",
