@@ -119,7 +119,7 @@ def test_cli_help_lists_the_method(capsys):
     for flag in ("--harmonics H", "--samples M", "--floquet {samples,hill,flow,none}",
                  "--start-amplitude-c F"):
         assert flag in text
-    assert "(default 8)" in text and "(default 4H)" in text and "(default 0.3)" in text
+    assert "(default 8)" in text and "(default 4H)" in text and "(default: 0.3, then 0.6, then 0.9" in text
 
 
 def test_cli_failed_hb_start_says_what_to_try(coarse_compressor, capsys):

@@ -44,7 +44,8 @@ def samples_from_equilibrium(asm, omega: float, r_e: np.ndarray, amplitude_c: fl
     """The cheap start of a limit cycle: the equilibrium r_e (n,) plus the least-damped
     whirl mode of its linearisation (first-order system matrix A = [[0, I], [−M⁻¹(K + K_H),
     −M⁻¹(C + ΩG + D_H)]], the eigenvalue of largest real part with Im > 0), scaled so the
-    first bearing's journal moves ``amplitude_c`` of its clearance (the semi-major axis).
+    journal that moves most for its clearance moves ``amplitude_c`` of it (the semi-major
+    axis; on a multi-bearing rotor the first bearing's scale could close another's film).
     Returns the (m, n) position samples and the period guess 2π/Im λ, s."""
     md = asm.model
     n = asm.n
@@ -62,13 +63,13 @@ def samples_from_equilibrium(asm, omega: float, r_e: np.ndarray, amplitude_c: fl
                          "start a limit cycle from")
     k = up[np.argmax(lam.real[up])]
     q = vec[:n, k]
-    bc = asm.bearings[0]
     tau = 2 * np.pi * np.arange(m) / m
     d = np.real(np.outer(np.exp(1j * tau), q))  # (m, n)
-    semi = np.hypot(d[:, bc.jx], d[:, bc.jy]).max()
-    if not semi > 0:
-        raise InputError("start: the least-damped mode does not move the first journal")
-    s = amplitude_c * bc.clearance_m / semi
+    ratio = max((np.hypot(d[:, bc.jx], d[:, bc.jy]).max() / bc.clearance_m
+                 for bc in asm.bearings if bc.clearance_m > 0), default=0.0)
+    if not ratio > 0:
+        raise InputError("start: the least-damped mode does not move the journals")
+    s = amplitude_c / ratio
     return r_e[None, :] + s * d, float(2 * np.pi / lam.imag[k])
 
 

@@ -64,7 +64,7 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                    newton: str = "sensitivities", method: str = "shooting",
                    harmonics: int = 8, time_points: int | None = None,
                    floquet: str = "samples",
-                   start_amplitude_c: float = 0.3,
+                   start_amplitude_c: float | None = None,
                    forced_start: str = "linear") -> PeriodicOrbitResult:
     """Periodic orbit of eq. 12 by single shooting, with its Floquet multipliers.
 
@@ -125,7 +125,10 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         ``floquet="flow"``; newton, sensitivity_error_control do not apply. Start: a
         TransientResult (its last period resampled), a state with period_s (one flow), or
         for an autonomous cycle None: the equilibrium plus its least-damped whirl mode with
-        the journal at ``start_amplitude_c`` of the clearance (docs/nonlinear.md).
+        the journal at ``start_amplitude_c`` of the clearance (docs/nonlinear.md); None
+        (default): 0.3, then 0.6, then 0.9 until one converges (an oil whip's cycle near the
+        clearance is out of reach from 0.3; the result's ``stats["start_amplitude_c"]`` is
+        the start that converged, every start tried is in the message of a failure).
     floquet
         harmonic balance only: ``"samples"`` (the monodromy from the converged orbit's M
         linearisations, 4th-order Magnus, no film solve), ``"hill"`` (Hill's method: the
@@ -156,7 +159,10 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     hb = method == "harmonic_balance"
     if hb:
         m_hb = hbal.time_points_for(harmonics, time_points)
-        v.in_range("start_amplitude_c", start_amplitude_c, 1e-6, 0.99)
+        if start_amplitude_c is not None:
+            v.in_range("start_amplitude_c", start_amplitude_c, 1e-6, 0.99)
+        elif kind == "autonomous" and start is None:
+            return _amplitude_ladder(locals())
     v.speed("speed_hz", speed_hz)
     chamber_pressure(system, chamber_pressure_pa)
     if config_ay_m is not None:
@@ -264,6 +270,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     # the linear start's scale (1: the linear response itself; < 1: halved to keep the films
     # open); absent for any other start
     start_stats = {} if start_scale is None else {"linear_start_scale": float(start_scale)}
+    if hb and kind == "autonomous" and start is None:  # the whirl-mode start's amplitude
+        start_stats["start_amplitude_c"] = float(start_amplitude_c)
     omega = hz_to_rad_s(float(speed_hz))
     inp = _core.PeriodicInput()
     inp.kind = _core.OrbitKind.autonomous if kind == "autonomous" else _core.OrbitKind.forced
@@ -301,6 +309,41 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     res = _core.periodic_orbit(asm.solver, inp, opt)
     return _with_hint(orbit_result(asm, res, kind, float(speed_hz), float(chamber_pressure_pa),
                                    a, extra_stats=start_stats), start_scale, sigma)
+
+
+#: the start amplitudes (fractions of the clearance) tried in turn for a harmonic-balance
+#: limit cycle from the equilibrium when none is given
+START_AMPLITUDES_C = (0.3, 0.6, 0.9)
+
+
+def _amplitude_ladder(kw: dict) -> PeriodicOrbitResult:
+    """periodic_orbit with ``kw`` (its arguments) from each of START_AMPLITUDES_C until one
+    converges; the last failure names every start tried."""
+    args = {k: kw[k] for k in ("system", "speed_hz", "chamber_pressure_pa", "config_ay_m")}
+    opts = {k: kw[k] for k in ("kind", "start", "period_s", "subharmonic", "unbalances",
+                               "n_out", "rtol", "atol_m", "tol", "max_iter", "max_steps",
+                               "sensitivity_error_control", "sensitivity_rtol", "newton",
+                               "method", "harmonics", "time_points", "floquet",
+                               "forced_start")}
+    res, closed, tried = None, None, []
+    for amp in START_AMPLITUDES_C:
+        try:
+            got = periodic_orbit(*args.values(), **opts, start_amplitude_c=amp)
+        except InputError as exc:  # a start that large closes a film: no larger one is tried
+            if not str(exc).startswith("start: the start closes film"):
+                raise
+            closed = f"{amp:g} closes a film"
+            break
+        tried.append(f"{amp:g}")
+        if got.ok:
+            return got
+        res = got
+    if res is None:
+        raise InputError(f"start_amplitude_c: every start from the equilibrium's whirl mode "
+                         f"closes a film ({closed}); give a smaller start_amplitude_c")
+    why = ", ".join(tried) + (f"; {closed}" if closed else "")
+    return dataclasses.replace(res, message=f"{res.message} (started from the equilibrium's "
+                                            f"whirl mode at {why} of the clearance in turn)")
 
 
 def _with_hint(res: PeriodicOrbitResult, start_scale, sigma) -> PeriodicOrbitResult:

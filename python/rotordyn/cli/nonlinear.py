@@ -119,7 +119,7 @@ def _orbit_arguments(s) -> None:
 
 # The harmonic-balance flags: (argparse dest, flag, default); None in args = not given.
 HB_FLAGS = (("harmonics", "--harmonics", 8), ("samples", "--samples", None),
-            ("floquet", "--floquet", "samples"), ("start_amplitude_c", "--start-amplitude-c", 0.3))
+            ("floquet", "--floquet", "samples"), ("start_amplitude_c", "--start-amplitude-c", None))
 
 
 def _hb_arguments(s, floquet=("samples", "hill", "flow", "none")) -> None:
@@ -143,7 +143,8 @@ def _hb_arguments(s, floquet=("samples", "hill", "flow", "none")) -> None:
                    help="harmonic balance, autonomous cycle started at the equilibrium "
                         "(--settle-s 0, the default with harmonic balance): the journal's "
                         "amplitude along the least-damped whirl mode, fraction of its "
-                        "clearance in [1e-06, 0.99] (default 0.3)")
+                        "clearance in [1e-06, 0.99] (default: 0.3, then 0.6, then 0.9 until "
+                        "one converges)")
 
 
 def _hb_options(args) -> dict:
@@ -163,7 +164,9 @@ def _hb_options(args) -> dict:
         if args.kind != "autonomous" or (args.settle_s or 0.0) > 0:
             raise InputError("--start-amplitude-c: applies only to an autonomous cycle "
                              "started at the equilibrium (--kind autonomous, --settle-s 0)")
-    amp = v.in_range("--start-amplitude-c", opt["start_amplitude_c"], 1e-6, 0.99)
+    amp = opt["start_amplitude_c"]  # None: 0.3, 0.6, 0.9 in turn (rotordyn.periodic_orbit)
+    if amp is not None:
+        amp = v.in_range("--start-amplitude-c", amp, 1e-6, 0.99)
     return {"method": "harmonic_balance", "harmonics": h, "time_points": m,
             "floquet": opt["floquet"], "start_amplitude_c": amp}
 
@@ -215,9 +218,9 @@ def _start_hint(args, start) -> str:
     if (getattr(args, "method", "shooting") == "harmonic_balance" and start is None
             and args.kind == "autonomous"):
         return ("\nrotordyn: harmonic balance started from the equilibrium's whirl mode at "
-                "--start-amplitude-c of the clearance; a cycle of another size (oil whip "
-                "near the clearance) needs a settled start: add --settle-s 1, or set "
-                "--start-amplitude-c near its size")
+                "--start-amplitude-c of the clearance (without it: 0.3, 0.6 and 0.9 in "
+                "turn); a cycle of another size needs a settled start: add --settle-s 1, or "
+                "set --start-amplitude-c near its size")
     return ""
 
 
@@ -272,7 +275,7 @@ def _method_info(hb: dict, res, start) -> dict:
                                              hb["time_points"] or 4 * hb["harmonics"])),
             "floquet": hb["floquet"]}
     if start is None and res.kind == "autonomous":
-        info["start_amplitude_c"] = hb["start_amplitude_c"]
+        info["start_amplitude_c"] = res.stats.get("start_amplitude_c", hb["start_amplitude_c"])
     return info
 
 

@@ -1,0 +1,39 @@
+"""A harmonic-balance limit cycle from the equilibrium without a start amplitude tries 0.3,
+0.6 and 0.9 of the clearance in turn. On a three-bearing motor-fan train at 110 Hz, above its
+oil-whip threshold (~102 Hz), the whip cycle (115.7 µm, near the 120 µm clearance) is out of
+Newton's reach from 0.3: the default call failed and the CLI's advice was a settling
+transient (3 min CPU on the unreduced model). Found in an engineer's pass, not on the rig."""
+
+from pathlib import Path
+
+import pytest
+
+import rotordyn as rd
+
+MODEL = Path(__file__).parent / "data" / "models" / "motor_fan_train_guyan.toml"
+
+
+@pytest.fixture(scope="module")
+def train():
+    return rd.System.from_toml(MODEL)
+
+
+def test_default_start_reaches_the_whip_cycle(train):
+    low = rd.periodic_orbit(train, 110.0, method="harmonic_balance", start_amplitude_c=0.3)
+    assert not low.ok  # the old default start fails here: the test can fail
+    res = rd.periodic_orbit(train, 110.0, method="harmonic_balance")
+    assert res.ok, res.message
+    assert res.stats["start_amplitude_c"] in (0.6, 0.9)
+    # the same cycle as an explicit start near its size
+    ref = rd.periodic_orbit(train, 110.0, method="harmonic_balance", start_amplitude_c=0.9)
+    assert res.period_s == pytest.approx(ref.period_s, rel=1e-6)
+    assert res.amplitude(0) == pytest.approx(ref.amplitude(0), rel=1e-6)
+    assert 100e-6 < res.amplitude(0) < 120e-6
+
+
+def test_a_failed_ladder_names_every_start(train):
+    """Below the threshold (90 Hz: a stable equilibrium, no cycle to find with 2 Newton
+    iterations) the failure names the three starts tried."""
+    res = rd.periodic_orbit(train, 90.0, method="harmonic_balance", max_iter=2)
+    assert not res.ok
+    assert "at 0.3, 0.6" in res.message and "of the clearance in turn" in res.message
