@@ -515,3 +515,23 @@ def test_rotating_damping_refusals_and_toml():
     assert back == s and "damping_rotating = true" in s.to_toml()
     with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):
         dataclasses.replace(s.rotor, damping_rotating="yes")
+
+def test_a_stability_sweep_carries_rotating_damping(tmp_path):
+    """The sweep's per-point work (its own equilibria and eigen-analysis in the core) over
+    speed through the Jeffcott threshold: max Re λ per speed equals rotordyn.stability's, and
+    it is zero at the closed-form Ω_th (the middle point)."""
+    import pandas as pd
+    from rotordyn.sweep.runner import run_sweep
+
+    s = _jeffcott(20.0, 1.0e-4)
+    f_th = _jeffcott_constants(20.0, 1.0e-4)[3] / (2 * math.pi)
+    (tmp_path / "j.toml").write_text(s.to_toml())
+    (tmp_path / "spec.toml").write_text(
+        'schema = "rotordyn/sweep/1"\nname = "jeffcott"\nmodel = "j.toml"\n'
+        'analysis = "stability"\nchunk_size = 5\n[grid]\n'
+        f"speed_hz = {{start = {0.8 * f_th!r}, stop = {1.2 * f_th!r}, num = 5}}\n")
+    run_sweep(tmp_path / "spec.toml", tmp_path / "out", threads=1, progress=False)
+    df = pd.read_parquet(tmp_path / "out").groupby("speed_hz")["max_real_1_per_s"].max()
+    ref = [rd.stability(s, f).eigenvalues.real.max() for f in df.index]
+    np.testing.assert_allclose(df.to_numpy(), ref, rtol=1e-9, atol=1e-9)
+    assert abs(df.iloc[2]) < 1e-6 * abs(df.iloc[0]) and df.iloc[0] < 0 < df.iloc[4]
