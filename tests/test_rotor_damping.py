@@ -312,17 +312,226 @@ def test_jeffcott_internal_damping_threshold():
     assert ev[0].real.max() < 0 < ev[1].real.max()
 
 
-def test_rotating_damping_is_refused_where_it_is_not_carried():
+def _jeffcott_constants(c_e, beta):
+    """m, k, c_i = βk, the shaft's gyroscopic g and Ω_th of :func:`_jeffcott` (the closed form
+    of test_jeffcott_internal_damping_threshold, with g kept)."""
+    M, K, C, G = rotor_matrices(_jeffcott(c_e, beta)).matrices()
+    m, k, g = M[0, 0], K[0, 0], G[0, 1]
+    c_i = beta * k
+    rho = c_i / (c_e + c_i)
+    return m, k, c_i, math.sqrt(k / (m * rho**2 - g * rho))
+
+
+def test_jeffcott_system_analyses_carry_rotating_damping():
+    """The system analyses of the Jeffcott rotor on its linear (damper) support: stability
+    equals the rotor-alone modes at zero film (no bearing elements) below and above the
+    threshold, the speed threshold and the Campbell diagram cross at the closed-form
+    Ω_th, and the static equilibrium under gravity moves sideways by the circulatory force:
+    K r + Ω K_c r = Q with K = k I, K_c = c_i [[0, 1], [−1, 0]] (the reduced form; −Ω K_c r
+    = Ω c_i J r, i.e. +iΩc_i z in complex notation) gives
+    y = y₀ k²/(k² + Ω²c_i²), x = −y₀ k Ω c_i/(k² + Ω²c_i²) (y₀ = −mg/k at rest): the shaft
+    deflects towards +x, the way the bottom of the spinning shaft moves."""
+    c_e, beta = 20.0, 1.0e-4
+    s = _jeffcott(c_e, beta)
+    m, k, c_i, w_th = _jeffcott_constants(c_e, beta)
+    f_th = w_th / (2 * math.pi)
+    from rotordyn.analysis.assembly import assembled
+
+    np.testing.assert_allclose(np.asarray(assembled(s).model.Kc),
+                               c_i * np.array([[0.0, 1.0], [-1.0, 0.0]]), rtol=1e-10,
+                               atol=1e-12 * c_i)
+    for f in (0.8 * f_th, 1.2 * f_th):
+        sys_lam = np.sort_complex(rd.stability(s, f).eigenvalues)
+        rot_lam = np.sort_complex(rd.modes(s, f, reduction="guyan").eigenvalues)
+        rot_lam = np.sort_complex(np.concatenate([rot_lam, rot_lam.conj()]))
+        sys_lam = np.sort_complex(np.concatenate([sys_lam, sys_lam.conj()]))
+        np.testing.assert_allclose(sys_lam, rot_lam, rtol=1e-10)
+    th = rd.threshold(s, "speed_hz", bounds=(0.5 * f_th, 1.5 * f_th), xtol=1e-9 * f_th)
+    assert th.status == "ok" and th.stable_side == "below"
+    assert th.value == pytest.approx(f_th, rel=1e-7)
+    camp = rd.campbell(s, [0.95 * f_th, 1.05 * f_th])
+    ev = np.asarray(camp.eigenvalues)
+    assert ev[0].real.max() < 0 < ev[1].real.max()
+    # the sideways static shift (gravity along −y)
+    y0 = rd.equilibrium(s, 0.0).r[1]
+    assert y0 < 0
+    for f in (0.5 * f_th, 2.0 * f_th):
+        w = 2 * math.pi * f
+        e = rd.equilibrium(s, f)
+        d = k * k + (w * c_i) ** 2
+        assert e.status == "ok"
+        np.testing.assert_allclose(e.r, [-y0 * k * w * c_i / d, y0 * k * k / d],
+                                   rtol=1e-10, atol=1e-12 * abs(y0))
+    # stationary β damping: no sideways shift, no threshold
+    e_still = rd.equilibrium(_jeffcott(c_e, beta, rotating=False), 2.0 * f_th)
+    assert abs(e_still.r[0]) <= 1e-12 * abs(y0)
+
+
+def test_jeffcott_transient_and_orbits_follow_the_linear_model():
+    """Above the threshold the nonlinear integrator (CVODE: right-hand side −Ω K_c r, its
+    Jacobian Ω K_c) started at the equilibrium plus ε Re(φ), ε Re(λφ) of the unstable
+    forward mode follows ε Re(φ e^{λt}) (the system is linear without films), so its growth
+    rate is Re λ; below it the unbalance-forced periodic orbit (shooting, monodromy by
+    sensitivities, and harmonic balance) is the equilibrium plus the unbalance response, and
+    its Floquet multipliers are e^{λT} of the linear model."""
+    c_e, beta = 20.0, 1.0e-4
+    s = _jeffcott(c_e, beta)
+    f_th = _jeffcott_constants(c_e, beta)[3] / (2 * math.pi)
+    f = 1.3 * f_th
+    lm = rd.linearize(s, f)
+    lam, vec = np.linalg.eig(lm.state_matrix())
+    i = int(np.argmax(lam.real))
+    assert lam[i].real > 0
+    eps = 1e-6 / np.abs(vec[:2, i]).max()
+    e = lm.equilibrium
+    T = min(3.0 / lam[i].real, 40.0 / f)  # three e-foldings or 40 revolutions
+    tr = rd.transient(s, T, f, r0=e.r + eps * vec[:2, i].real, v0=eps * vec[2:, i].real,
+                      n_out=201, rtol=1e-9, atol_m=1e-16)
+    assert tr.status == "ok"
+    lin = eps * (vec[:2, i][None, :] * np.exp(lam[i] * tr.t)[:, None]).real
+    amp = np.abs(lin).max()
+    assert np.abs(tr.r - e.r - lin).max() <= 1e-5 * amp
+    rad = np.hypot(*(tr.r - e.r).T)
+    growth = np.polyfit(tr.t[100:], np.log(rad[100:]), 1)[0]
+    assert growth == pytest.approx(lam[i].real, rel=1e-3)
+    # below the threshold: the forced orbit and its multipliers
+    f = 0.8 * f_th
+    ub = [(1, 1e-4, 0.0)]
+    orb = rd.periodic_orbit(s, f, kind="forced", unbalances=ub, n_out=65)
+    assert orb.status == "ok"
+    u = rd.unbalance_response(s, ub, [f], stations=[1])
+    e = rd.equilibrium(s, f)
+    w = 2 * math.pi * f
+    ph = np.exp(1j * w * (orb.t - orb.t[0]))
+    amp = abs(u.x[0, 0])
+    np.testing.assert_allclose(orb.r[:, 0] - e.r[0], (u.x[0, 0] * ph).real, atol=1e-5 * amp)
+    np.testing.assert_allclose(orb.r[:, 1] - e.r[1], (u.y[0, 0] * ph).real, atol=1e-5 * amp)
+    lam_b = np.linalg.eigvals(rd.linearize(s, f).state_matrix())
+    mu = np.sort_complex(np.exp(lam_b * orb.period_s))
+    np.testing.assert_allclose(np.sort_complex(np.asarray(orb.multipliers)), mu, atol=1e-6)
+    # harmonic balance (K_H of the solver at the samples): the same orbit and multipliers
+    hb = rd.periodic_orbit(s, f, kind="forced", unbalances=ub, n_out=65,
+                           method="harmonic_balance", harmonics=2)
+    assert hb.status == "ok"
+    ph = np.exp(1j * w * (hb.t - hb.t[0]))
+    np.testing.assert_allclose(hb.r[:, 0] - e.r[0], (u.x[0, 0] * ph).real, atol=1e-9 * amp)
+    np.testing.assert_allclose(np.sort_complex(np.asarray(hb.multipliers)), mu, atol=1e-9)
+
+
+def test_rotating_damping_on_the_compressor():
+    """Non-rig models. compressor_linear (Guyan, two anisotropic linear supports): stability
+    equals the rotor-alone modes at every speed (no film), the unbalance response is the
+    direct solve of (K + ΩK_c − Ω²M + iΩ(C + ΩG)) X = Ω² F₁, and the same β rotating damps
+    the forward modes less and the backward ones more than stationary. compressor_plain (two plain journal
+    bearings): the equilibrium satisfies K r + ΩK_c r = H_films + Q with film_force_n the
+    films' own force, the shaft's sag turns sideways by the closed form below, K by differences
+    equals the perturbation one, and the Campbell diagram equals the point stability."""
+    from coarse_models import compressor_plain
+    from rotordyn.analysis.assembly import assembled
+
+    def rot(s, rotating=True, beta=4e-5):
+        return dataclasses.replace(s, rotor=dataclasses.replace(
+            s.rotor, damping_beta_s=beta, damping_rotating=rotating))
+
+    lin = rd.System.from_toml(MODELS / "compressor_linear.toml")
+    s = rot(lin)
+    f = 150.0
+    st = rd.stability(s, f)
+    a = np.sort_complex(st.eigenvalues)
+    b = rd.modes(s, f, reduction="guyan", n_modes=a.size).eigenvalues
+    b = np.sort_complex(b)
+    np.testing.assert_allclose(a, b, rtol=1e-9)
+    # the same β rotating damps forward whirl less and backward whirl more than stationary
+    still = rd.stability(rot(lin, False), f)
+
+    def least(r, whirl):
+        return r.eigenvalues.real[r.whirl == whirl].max()
+
+    assert least(st, "forward") > least(still, "forward") + 10.0
+    assert least(st, "backward") < least(still, "backward") - 0.5
+    asm = assembled(s)
+    ub = [(3, 1e-3, 0.0)]
+    u = rd.unbalance_response(s, ub, [f], stations=[3])
+    m = asm.model
+    w = 2 * math.pi * f
+    Z = (np.asarray(m.K) + w * np.asarray(m.Kc) - w * w * np.asarray(m.M)
+         + 1j * w * (np.asarray(m.C) + w * np.asarray(m.G)))
+    X = np.linalg.solve(Z, w * w * asm.unbalance_load(ub))
+    O = asm.station_output_matrix(3)
+    np.testing.assert_allclose([u.x[0, 0], u.y[0, 0]], O @ X, rtol=1e-9)
+
+    plain = compressor_plain()
+    s = rot(plain)
+    f = 100.0
+    w = 2 * math.pi * f
+    e = rd.equilibrium(s, f)
+    assert e.status == "ok"
+    asm = assembled(s)
+    m = asm.model
+    res = (np.asarray(m.K) + w * np.asarray(m.Kc)) @ e.r - e.film_force_n - np.asarray(m.Q)
+    assert np.abs(res).max() <= 1e-8 * np.abs(np.asarray(m.Q)).max()
+    # The circulatory forces have no resultant (K_β holds the rigid-body motions), so the two
+    # bearings of this symmetric rotor carry the same loads and the journals stay put; with one
+    # β on an isotropic shaft K_c = −β K J, and the elastic sag d₀ relative to the journals
+    # turns and shrinks to d = d₀/(1 − iΩβ) (complex z = x + iy): sideways by Ωβ = 2.5 %.
+    e_still = rd.equilibrium(rot(plain, False), f)
+    np.testing.assert_allclose(e.journal_x_m, e_still.journal_x_m, rtol=1e-10)
+    np.testing.assert_allclose(e.journal_y_m, e_still.journal_y_m, rtol=1e-10)
+    z0 = e_still.r[0::2] + 1j * e_still.r[1::2]
+    z1 = e.r[0::2] + 1j * e.r[1::2]
+    d0 = z0 - z0[0]
+    np.testing.assert_allclose(z1 - z1[0], d0 / (1 - 1j * w * 4e-5), rtol=0,
+                               atol=1e-10 * np.abs(d0).max())
+    assert np.abs((z1 - z1[0]).real).max() > 0.02 * np.abs(d0).max()
+    lp = rd.linearize(s, f)
+    lf = rd.linearize(s, f, method="finite_difference")
+    np.testing.assert_allclose(lp.K_structure, np.asarray(m.K) + w * np.asarray(m.Kc))
+    np.testing.assert_allclose(lf.K, lp.K, atol=1e-5 * np.abs(lp.K).max())
+    st = rd.stability(s, f)
+    camp = rd.campbell(s, [90.0, f])
+    row = np.asarray(camp.eigenvalues)[1]
+    for lam in st.eigenvalues:  # the Campbell row also lists the overdamped real roots
+        assert np.nanmin(np.abs(row - lam)) <= 1e-6 * abs(lam)
+
+
+def test_rotating_damping_refusals_and_toml():
     from coarse_models import compressor_plain
 
     s = compressor_plain()
     s = dataclasses.replace(s, rotor=dataclasses.replace(s.rotor, damping_beta_s=1e-5,
                                                          damping_rotating=True))
-    for call in (lambda: rd.equilibrium(s, 50.0), lambda: rd.stability(s, 50.0),
-                 lambda: rd.static(s, 50.0)):
-        with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):
-            call()
+    # static's shear/moment recovery does not carry the circulatory force; a housing offset
+    # bends the shaft under it, which is not carried either
+    with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):
+        rd.static(s, 50.0)
+    off = dataclasses.replace(s, bearings=(dataclasses.replace(s.bearings[0], config_ay_m=1e-5),)
+                              + s.bearings[1:])
+    with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating.*offset"):
+        rd.equilibrium(off, 50.0)
+    with pytest.raises(rd.InputError, match=r"config_ay_m with rotor\.damping_rotating"):
+        rd.threshold(_jeffcott(20.0, 1e-4), "config_ay_m",
+                     bounds=(0.0, 1e-4))
     back = rd.System.from_toml(s.to_toml(), is_text=True)
     assert back == s and "damping_rotating = true" in s.to_toml()
     with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):
         dataclasses.replace(s.rotor, damping_rotating="yes")
+
+def test_a_stability_sweep_carries_rotating_damping(tmp_path):
+    """The sweep's per-point work (its own equilibria and eigen-analysis in the core) over
+    speed through the Jeffcott threshold: max Re λ per speed equals rotordyn.stability's, and
+    it is zero at the closed-form Ω_th (the middle point)."""
+    import pandas as pd
+    from rotordyn.sweep.runner import run_sweep
+
+    s = _jeffcott(20.0, 1.0e-4)
+    f_th = _jeffcott_constants(20.0, 1.0e-4)[3] / (2 * math.pi)
+    (tmp_path / "j.toml").write_text(s.to_toml())
+    (tmp_path / "spec.toml").write_text(
+        'schema = "rotordyn/sweep/1"\nname = "jeffcott"\nmodel = "j.toml"\n'
+        'analysis = "stability"\nchunk_size = 5\n[grid]\n'
+        f"speed_hz = {{start = {0.8 * f_th!r}, stop = {1.2 * f_th!r}, num = 5}}\n")
+    run_sweep(tmp_path / "spec.toml", tmp_path / "out", threads=1, progress=False)
+    df = pd.read_parquet(tmp_path / "out").groupby("speed_hz")["max_real_1_per_s"].max()
+    ref = [rd.stability(s, f).eigenvalues.real.max() for f in df.index]
+    np.testing.assert_allclose(df.to_numpy(), ref, rtol=1e-9, atol=1e-9)
+    assert abs(df.iloc[2]) < 1e-6 * abs(df.iloc[0]) and df.iloc[0] < 0 < df.iloc[4]

@@ -38,6 +38,7 @@ void bind_system(py::module_& m) {
       .def_readwrite("K", &SystemModel::K)
       .def_readwrite("C", &SystemModel::C)
       .def_readwrite("G", &SystemModel::G)
+      .def_readwrite("Kc", &SystemModel::Kc)
       .def_readwrite("Q", &SystemModel::Q)
       .def_readwrite("chamber", &SystemModel::chamber)
       .def_readwrite("films", &SystemModel::films)

@@ -130,8 +130,9 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
     return Eigen::VectorXd(model_.K * rr - H - F);
   };
   auto finish = [&](Eigen::VectorXd rr, const Eigen::VectorXd& H, double res) {
+    // the bearings' own force: H less the shaft's circulatory −Ω Kc r (rotating damping)
+    out.film_force = model_.Kc.size() ? Eigen::VectorXd(H + omega * (model_.Kc * rr)) : H;
     out.r = std::move(rr);
-    out.film_force = H;
     out.residual = res;
     out.h_min = h_min_;
     out.h_min_angle_deg = h_min_angle_;

@@ -117,6 +117,9 @@ void SystemModel::validate() const {
   require(K.rows() == nn && K.cols() == nn, shape_msg("K", nn, nn, K.rows(), K.cols()));
   require(C.rows() == nn && C.cols() == nn, shape_msg("C", nn, nn, C.rows(), C.cols()));
   require(G.rows() == nn && G.cols() == nn, shape_msg("G", nn, nn, G.rows(), G.cols()));
+  require(Kc.size() == 0 || (Kc.rows() == nn && Kc.cols() == nn),
+          shape_msg("Kc", nn, nn, Kc.rows(), Kc.cols()) + " (or empty: no rotating damping)");
+  require(Kc.allFinite(), "Kc: expected finite entries");
   require(Q.size() == nn, shape_msg("Q", nn, 1, Q.size(), 1));
   require(chamber.size() == nn, shape_msg("chamber", nn, 1, chamber.size(), 1));
   for (std::size_t i = 0; i < films.size(); ++i) {
@@ -421,6 +424,7 @@ void SystemSolver::add_table_forces(const Eigen::VectorXd& r, const Eigen::Vecto
     H(t.coords[0]) += f(0);
     H(t.coords[1]) += f(1);
   }
+  if (model_.Kc.size()) H.noalias() -= omega * (model_.Kc * r);  // rotating shaft damping
 }
 
 void SystemSolver::add_table_coefficients(double omega, Eigen::MatrixXd& KH,
@@ -433,7 +437,7 @@ void SystemSolver::add_table_coefficients(double omega, Eigen::MatrixXd& KH,
         KH(t.coords[a], t.coords[b]) += Kt(a, b);
         if (DH) (*DH)(t.coords[a], t.coords[b]) += Ct(a, b);
       }
-  }
+  }  if (model_.Kc.size()) KH += omega * model_.Kc;
 }
 
 Linearization SystemSolver::linearize(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot,
@@ -455,9 +459,11 @@ Linearization SystemSolver::linearize_fd(const Eigen::VectorXd& r, double omega,
   out.KH = Eigen::MatrixXd::Zero(n, n);
   out.DH = Eigen::MatrixXd::Zero(n, n);
   const double wref = std::abs(omega) > 0 ? std::abs(omega) : 1.0;
+  std::vector<char> differenced(static_cast<std::size_t>(n), 0);
   for (const FilmCoupling& fc : model_.films) {
     for (int j : fc.coords) {
       if (out.KH.col(j).cwiseAbs().sum() != 0.0) continue;  // already done (shared coordinate)
+      differenced[static_cast<std::size_t>(j)] = 1;
       const double dx = rel_step * fc.geometry.clearance_m, dv = dx * wref;
       // A step lost in round-off (r ± dx == r) would give K_H = D_H = 0 with no error
       // (issue 13: rel_step = 1e-300): refuse steps that r(j) cannot resolve to 1 %.
@@ -487,6 +493,11 @@ Linearization SystemSolver::linearize_fd(const Eigen::VectorXd& r, double omega,
       }
     }
   }
+  // The shaft's circulatory Ω Kc (rotating damping) is linear too: exactly in every column
+  // not differenced above (those hold it already, through H).
+  if (model_.Kc.size())
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (!differenced[static_cast<std::size_t>(j)]) out.KH.col(j) += omega * model_.Kc.col(j);
   film_forces(r, zero, omega);  // leave the solvers at the operating point
   return out;
 }

@@ -503,8 +503,10 @@ static void record_film_force(SystemSolver& solver, const TransientInput& in,
     if (!std::isfinite(out.t(i)) || !out.r.row(i).allFinite() || !out.v.row(i).allFinite())
       continue;
     try {
-      const Eigen::VectorXd H =
+      Eigen::VectorXd H =
           solver.film_forces(out.r.row(i).transpose(), out.v.row(i).transpose(), out.speed(i));
+      if (solver.model().Kc.size())  // the bearings' own: less the circulatory −Ω Kc r
+        H += out.speed(i) * (solver.model().Kc * out.r.row(i).transpose());
       for (Eigen::Index q = 0; q < k; ++q)
         out.film_force(i, q) = H(in.record_film_force[static_cast<std::size_t>(q)]);
     } catch (const std::runtime_error& e) {  // ContactError, ConvergenceError

@@ -137,3 +137,27 @@ TEST_CASE("system: opposite tilts mirror each other; tilt K_H equals differences
   CHECK((a.DH - b.DH).bottomRightCorner<2, 2>().norm() <
         1e-4 * b.DH.bottomRightCorner<2, 2>().norm());
 }
+
+TEST_CASE("system: rotating damping's Kc enters H as −Ω Kc r and K_H as Ω Kc") {
+  // a film plus a shaft spring k with a circulatory Kc = c_i [[0, 1], [−1, 0]] (per rad/s)
+  const double ci = 300.0, w = 2 * M_PI * 50;
+  SystemModel m0 = one_film(2e6), m1 = m0;
+  m1.Kc = (Eigen::Matrix2d() << 0.0, ci, -ci, 0.0).finished();
+  SystemSolver s0(m0), s1(m1);
+  const Eigen::Vector2d r(1e-4, -1.2e-4), z = Eigen::Vector2d::Zero();
+  const Eigen::VectorXd d = s1.film_forces(r, z, w) - s0.film_forces(r, z, w);
+  CHECK((d + w * m1.Kc * r).cwiseAbs().maxCoeff() < 1e-12 * (w * m1.Kc * r).norm());
+  const Linearization a0 = s0.linearize(r, z, w), a1 = s1.linearize(r, z, w);
+  CHECK((a1.KH - a0.KH - w * m1.Kc).cwiseAbs().maxCoeff() < 1e-9 * a0.KH.norm());
+  CHECK((a1.DH - a0.DH).cwiseAbs().maxCoeff() == 0.0);
+  // the equilibrium: K r + Ω Kc r = H_films + Q, its film_force the film's own
+  const EquilibriumResult e =
+      s1.equilibrium(w, 0.0, Eigen::Vector2d::Zero(), Eigen::VectorXd(), EquilibriumOptions{});
+  CHECK(e.status == "ok");
+  const Eigen::VectorXd own = s0.film_forces(e.r, z, w);
+  CHECK((e.film_force - own).cwiseAbs().maxCoeff() < 1e-12 * 500.0);
+  CHECK((m1.K * e.r + w * m1.Kc * e.r - own - m1.Q).cwiseAbs().maxCoeff() < 1e-8 * 500.0);
+  SystemModel bad = m0;
+  bad.Kc = Eigen::Matrix3d::Zero();
+  CHECK_THROWS((void)SystemSolver(bad), InputError);
+}

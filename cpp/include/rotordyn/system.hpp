@@ -75,6 +75,12 @@ struct TableCoupling {
 /// Linear matrices, loads and films of the system (SI). n = total coordinates.
 struct SystemModel {
   Eigen::MatrixXd M, K, C, G;  ///< (n, n); G per unit spin speed (rad/s)
+  /// Circulatory stiffness of the shaft's rotating (internal) damping per unit spin speed
+  /// (rad/s), N·s/m: (n, n) or empty (none). It acts like the tables, inside H: the solver's
+  /// H(Ω, r, ṙ) includes −Ω Kc r and its K_H includes Ω Kc, so every analysis built on H
+  /// (equilibrium, linearisation, transient and its Jacobian, orbits, thresholds, sweeps over
+  /// Ω by differences) carries it. The damping itself (β K) is in C.
+  Eigen::MatrixXd Kc;
   Eigen::VectorXd Q;           ///< (n,) static load (gravity), N
   Eigen::VectorXd chamber;     ///< (n,) chamber force per unit chamber pressure, N/Pa
   std::vector<FilmCoupling> films;
@@ -130,7 +136,9 @@ struct EquilibriumOptions {
 
 struct EquilibriumResult {
   Eigen::VectorXd r;           ///< (n,) equilibrium coordinates (relative to the housings)
-  Eigen::VectorXd film_force;  ///< (n,) H at the equilibrium
+  /// (n,) H at the equilibrium: the bearings' own (films, tables), without the shaft's
+  /// circulatory −Ω Kc r that the solver's H carries
+  Eigen::VectorXd film_force;
   std::vector<double> h_min;   ///< per film, m
   std::vector<double> h_min_angle_deg;
   /// Axial position z of each film's minimum (m, z = 0 mid-plane; 0 where the film is
@@ -245,7 +253,8 @@ class SystemSolver {
   /// K_H (and D_H if `damping`) about the films' last solve, by the perturbation method
   /// (linearised solves reusing each film's factorisation; no new Reynolds solve).
   void linearize_last_solve(bool damping, Eigen::MatrixXd& KH, Eigen::MatrixXd* DH);
-  /// The table bearings' −K(Ω) q − C(Ω) q̇ added to H, and their K, C added to K_H, D_H.
+  /// The table bearings' −K(Ω) q − C(Ω) q̇ and the shaft's circulatory −Ω Kc r added to
+  /// H, and their K, C (and Ω Kc) added to K_H, D_H.
   void add_table_forces(const Eigen::VectorXd& r, const Eigen::VectorXd& rdot, double omega,
                         Eigen::VectorXd& H) const;
   void add_table_coefficients(double omega, Eigen::MatrixXd& KH, Eigen::MatrixXd* DH) const;

@@ -48,22 +48,27 @@ def gravity_load(system: System) -> np.ndarray:
 
 def refuse_rotating_damping(system: System, what: str) -> None:
     """InputError when the rotor's β damping acts in the rotating frame: ``what`` does not
-    carry its speed-dependent circulatory stiffness Ω K_c (only the rotor-alone modes and
-    Campbell diagram do), and ignoring it would give a wrong answer."""
+    carry its speed-dependent circulatory force −Ω K_c q, and ignoring it would give a wrong
+    answer (the system analyses carry it through the solver's H, :class:`Assembled`)."""
     if system.rotor.has_rotating_damping:
         raise InputError(
-            f"rotor.damping_rotating: {what} does not include the circulatory stiffness Ω K_c "
-            "of rotating (internal) shaft damping; only rotordyn.modes and "
-            "rotordyn.rotor_campbell (the rotor on its supports) do. Set damping_rotating = "
-            "false for this analysis (β then damps as stationary material damping)")
+            f"rotor.damping_rotating: {what} does not include the circulatory force −Ω K_c q "
+            "of rotating (internal) shaft damping (the equilibrium, linearisation, stability, "
+            "Campbell, unbalance response, transient and periodic orbits do). Set "
+            "damping_rotating = false for this analysis (β then damps as stationary material "
+            "damping)")
 
 
 class Assembled:
-    """The C++ ``SystemModel`` and ``SystemSolver`` of a System, with the index maps."""
+    """The C++ ``SystemModel`` and ``SystemSolver`` of a System, with the index maps.
+
+    Rotating shaft damping (``rotor.damping_rotating``): the model's ``Kc`` holds the
+    circulatory stiffness K_c per unit spin speed on the rotor coordinates
+    (:meth:`RotorMatrices.circulatory`, zero on sleeves and pads); the solver adds −Ω K_c r to
+    H and Ω K_c to K_H, so every analysis built on H carries it (``Kc`` is empty without
+    it, bit for bit the stationary model)."""
 
     def __init__(self, system: System):
-        refuse_rotating_damping(system, "the analysis of the system (equilibrium, stability, "
-                                "campbell, unbalance response, transient, state space, ...)")
         self.system = system
         self.rotor = rotor_matrices(system)
         M, K, C, G = self.rotor.matrices()
@@ -202,6 +207,9 @@ class Assembled:
         model.K = block(K, blocks_K)
         model.C = block(C, blocks_C)
         model.G = block(G, [np.zeros_like(B) for B in blocks_M])
+        kc = self.rotor.circulatory()
+        if kc is not None:  # rotating shaft damping: −Ω K_c r inside H (system.hpp)
+            model.Kc = block(kc, [np.zeros_like(B) for B in blocks_M])
         Mm, Km, Cm = (np.array(x) for x in (model.M, model.K, model.C))
         self.pad_penalty = None  # tilt penalty of the pads (equilibrium homotopy), (n, n)
         for idx, Mp, Kp, Cp, Pp in coupled:  # pad inertia/pivot terms couple journal and pads
@@ -316,6 +324,12 @@ class Assembled:
                 raise InputError(f"{name}: addresses the active bearing, but the system has "
                                  f"{len(active)}; set config_ax_m/config_ay_m on the bearings")
             a[getattr(active[0], idx)] = val
+        if self.system.rotor.has_rotating_damping and np.any(a):
+            raise InputError(
+                "rotor.damping_rotating: a housing offset (config_ax_m/config_ay_m, "
+                "config_theta_x_rad/config_theta_y_rad) bends the shaft, and the rotating "
+                "damping's circulatory force on that bend (−Ω K_c a) is not carried; set the "
+                "offsets to 0 or damping_rotating = false")
         return a
 
 
@@ -340,6 +354,10 @@ def check_operating_parameter(system: System, name: str, field: str = "vary") ->
     active bearing (or the system's only bearing). A scan over it would repeat one point."""
     asm = assembled(system)
     n_active = sum(bc.active for bc in asm.bearings)
+    if name == "config_ay_m" and system.rotor.has_rotating_damping:
+        raise InputError(f"{field}: config_ay_m with rotor.damping_rotating: the rotating "
+                         "damping's circulatory force on the shaft bent by a housing offset "
+                         "(−Ω K_c a) is not carried; vary speed_hz or a model field")
     if name == "chamber_pressure_pa" and n_active == 0:
         raise InputError(f"{field}: chamber_pressure_pa acts on an active journal bearing's "
                          "chamber and this model has none; vary speed_hz (or a model field, "

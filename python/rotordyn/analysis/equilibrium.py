@@ -96,11 +96,12 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         asm.last_r = r.copy()
     bcs = asm.bearings
     h_min, h_ang = asm.bearing_h_min(np.asarray(res.h_min), np.asarray(res.h_min_angle_deg))
+    film_force = np.asarray(res.film_force)  # the bearings' own (C++: less −Ω K_c r)
     return EquilibriumResult(
         speed_hz=float(speed_hz), chamber_pressure_pa=float(chamber_pressure_pa),
         config_ay_m=np.array([a[bc.jy] for bc in bcs]),
         config_ax_m=np.array([a[bc.jx] for bc in bcs]),
-        method=method, r=r, film_force_n=np.asarray(res.film_force),
+        method=method, r=r, film_force_n=film_force,
         bearing_names=tuple(bc.name for bc in bcs),
         journal_x_m=np.array([r[bc.jx] for bc in bcs]),
         journal_y_m=np.array([r[bc.jy] for bc in bcs]),
@@ -111,7 +112,7 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         residual=float(res.residual), status=res.status, message=res.message,
         pm=float(res.pm) if method == "successive" else float("nan"), path=path,
         tilt=tilt_outputs(asm, r, a, np.asarray(res.h_min_z_m), np.asarray(res.h_min),
-                          np.asarray(res.film_force)),
+                          film_force),
     )
 
 

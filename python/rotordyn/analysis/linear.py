@@ -62,6 +62,8 @@ def _linear_from(asm: Assembled, e: EquilibriumResult, speed_hz: float, method: 
         else:
             lin = asm.solver.linearize_fd(e.r, w, rel_step)
         KH, DH = np.asarray(lin.KH), np.asarray(lin.DH)
+        if np.asarray(m.Kc).size:  # the solver's K_H carries the shaft's Ω K_c: take it out
+            KH = KH - w * np.asarray(m.Kc)
         if not (np.all(np.isfinite(KH)) and np.all(np.isfinite(DH))):
             raise ConvergenceError(f"linearize: non-finite K_H or D_H at {speed_hz:g} Hz "
                                    f"({method}); the film solve is not trustworthy here")
@@ -71,6 +73,9 @@ def _linear_from(asm: Assembled, e: EquilibriumResult, speed_hz: float, method: 
     else:
         KH = DH = np.full((n, n), np.nan)
     K0, C0, G = (np.asarray(x) for x in (m.K, m.C, m.G))
+    kc = np.asarray(m.Kc)
+    if kc.size:  # rotating shaft damping: K_s at this speed, K + Ω K_c (K_H: the bearings')
+        K0 = K0 + w * kc
     # bearing tables with mass coefficients: M(Ω) at this speed
     M = np.asarray(m.mass_at(w) if m.has_table_mass() else m.M)
     return LinearModel(speed_hz=float(speed_hz), M=M, D=C0 + w * G + DH, K=K0 + KH, KH=KH,

@@ -102,7 +102,8 @@ def _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X
     and its equilibrium does not depend on the speed, so the equilibrium is solved once (its
     status is every speed's) and all speeds are one C++ call (one symbolic analysis of the
     pencil, a numeric LU per speed): the numbers each speed factorises are those of the
-    per-speed loop (K_H = D_H = 0). Fills X, Y, status, message in place."""
+    per-speed loop (K_H = D_H = 0). Fills X, Y, status, message in place. Not with rotating
+    shaft damping (K + Ω K_c and the equilibrium change with the speed: the per-speed path)."""
     from rotordyn.analysis.equilibrium import equilibrium
     from rotordyn.errors import RotordynError
 
@@ -238,7 +239,7 @@ def unbalance_response(system: System, unbalances, speeds_hz, *, stations=None,
     status = np.empty(sp.size, dtype=object)
     max_real = np.full(sp.size, np.nan) if check else None
     message = [""] * sp.size
-    if not system.bearings and not check:
+    if not system.bearings and not check and not system.rotor.has_rotating_damping:
         _linear_rotor(system, asm, sp, chamber_pressure_pa, config_ay_m, F1, Cout, X, Y,
                       status, message)
         return UnbalanceResult(sp, outs, X, Y, status.astype(str), tuple(ub),

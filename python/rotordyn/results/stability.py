@@ -22,7 +22,9 @@ class LinearModel:
 
     M, D, K, KH, DH, K_structure, C_structure, G: (n, n) SI matrices on the system coordinates
     (rotor masters, then sleeve masters); chamber: (n,) force per Pa of chamber pressure;
-    labels: (n,) coordinate names.
+    labels: (n,) coordinate names. With rotating shaft damping (``rotor.damping_rotating``)
+    K_structure is K_s + Ω K_c at this speed (K_c the circulatory stiffness) and K_H the
+    bearings' own.
     """
 
     speed_hz: float
