@@ -149,8 +149,8 @@ def test_warm_start_needs_few_reynolds_solves(rig):
     solves each trial once and forms K_H only at accepted, unconverged points), and the cold
     start needs at most 10 (observed 6-9). Counts, not times: deterministic on any machine."""
     for pc in (0.10e6, 0.25e6):
-        rd.equilibrium(rig, 50.0, 0.99 * pc, -1.85e-3, warm_start=False)
-        w = rd.equilibrium(rig, 50.0, pc, -1.85e-3)
+        near = rd.equilibrium(rig, 50.0, 0.99 * pc, -1.85e-3, warm_start=False)
+        w = rd.equilibrium(rig, 50.0, pc, -1.85e-3, r0=near.r)
         c = rd.equilibrium(rig, 50.0, pc, -1.85e-3, warm_start=False)
         assert w.status == "ok" and c.status == "ok"
         assert w.reynolds_solves <= 5 and c.reynolds_solves <= 10

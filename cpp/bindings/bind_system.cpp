@@ -116,6 +116,8 @@ void bind_system(py::module_& m) {
                              "Active-set (or linear) iterations summed over the solves.")
       .def_property_readonly("linearizations", &SystemSolver::linearizations,
                              "Linearisations (K_H, or K_H and D_H) about a solve.")
+      .def("forget_state", &SystemSolver::forget_state,
+           "Forget the films' last solve and carried cavitation sets (a new public call).")
       .def_property_readonly("last_h_min", &SystemSolver::last_h_min)
       .def("film_h_min", &SystemSolver::film_h_min, py::arg("r"),
            "Minimum film thickness of each film at positions r (n,), m, from the geometry "

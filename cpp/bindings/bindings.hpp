@@ -10,6 +10,7 @@ using array_d = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 void bind_errors(py::module_& m);
 void bind_info(py::module_& m);
+void bind_threads(py::module_& m);
 void bind_rotor(py::module_& m);
 void bind_modal(py::module_& m);
 void bind_harmonic(py::module_& m);

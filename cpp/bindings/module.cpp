@@ -6,6 +6,7 @@ PYBIND11_MODULE(_core, m) {
   using namespace rotordyn::py_bind;
   bind_errors(m);
   bind_info(m);
+  bind_threads(m);
   bind_rotor(m);
   bind_modal(m);
   bind_harmonic(m);

@@ -23,7 +23,6 @@ using namespace hb_detail;
 HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput& in,
                                        const Eigen::MatrixXd& start_samples,
                                        const HarmonicBalanceOptions& opt) {
-  const shooting_detail::SerialEigen serial;
   const int M = checked_time_points(opt);
   const int H = opt.harmonics;
   ShootingOptions so;

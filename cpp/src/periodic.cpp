@@ -344,7 +344,6 @@ void flow_map(SystemSolver& solver, const PeriodicInput& in, const CvodeOptions&
 
 PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in,
                                    const ShootingOptions& opt) {
-  const shooting_detail::SerialEigen serial;
   validate(solver, in, opt);
   const SystemModel& m = solver.model();
   Flow F;

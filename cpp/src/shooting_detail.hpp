@@ -5,45 +5,12 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
-#include <mutex>
 #include <string>
 
 #include "rotordyn/continuation.hpp"
 #include "rotordyn/periodic.hpp"
 
 namespace rotordyn::shooting_detail {
-
-/// Eigen's own matrix products on one thread for the life of the guard (an orbit solve): the
-/// core links OpenMP for its batches, and Eigen then splits every product above ~50³ over
-/// OpenMP threads, which on a loaded machine spin-wait. Measured on the overhung pump's
-/// forced orbit by harmonic balance (72 × 72 Magnus exponentials, a 612 × 612 Newton
-/// matrix), load 14 on 2 cores: 52 % of the CPU in libgomp (docs/nonlinear.md).
-/// Eigen's thread count is one process-wide value and orbit solves run on several threads at
-/// once (sweeps, the GIL released): the guards are counted under a mutex, the first sets one
-/// thread and the last sets 0 again (Eigen follows OpenMP's count, its default; nothing else
-/// in the core sets it), so overlapping solves neither restore each other's value nor pin it.
-struct SerialEigen {
-  SerialEigen() {
-    const std::lock_guard<std::mutex> lock(mutex());
-    if (depth()++ == 0) Eigen::setNbThreads(1);
-  }
-  ~SerialEigen() {
-    const std::lock_guard<std::mutex> lock(mutex());
-    if (--depth() == 0) Eigen::setNbThreads(0);
-  }
-  SerialEigen(const SerialEigen&) = delete;
-  SerialEigen& operator=(const SerialEigen&) = delete;
-
- private:
-  static std::mutex& mutex() {
-    static std::mutex m;
-    return m;
-  }
-  static int& depth() {
-    static int d = 0;
-    return d;
-  }
-};
 
 // Everything the right-hand sides share: eq. 12 at constant Ω and p_c, first-order form.
 struct Flow {

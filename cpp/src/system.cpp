@@ -342,6 +342,10 @@ void SystemSolver::set_film_carry(bool on) {
   carry_ = on;
 }
 
+void SystemSolver::forget_state() {
+  set_film_continuation(false);  // forgets the sets, invalidates each film's and the last solve
+}
+
 std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
   if (r.size() != model_.n()) throw InputError(shape_msg("r", model_.n(), 1, r.size(), 1));
   std::vector<double> out(model_.films.size());

@@ -21,7 +21,8 @@ re-exported here; no module of the package imports the root (docs/architecture.m
 from __future__ import annotations
 
 from rotordyn._common.info import __version__, build_info
-from rotordyn._common.threads import get_blas_threads, set_blas_threads
+from rotordyn._common.threads import (get_blas_threads, get_eigen_threads, set_blas_threads,
+                                      set_eigen_threads)
 from rotordyn.analysis import (
     campbell,
     continuation,
@@ -94,6 +95,8 @@ __all__ = [
     "build_info",
     "set_blas_threads",
     "get_blas_threads",
+    "set_eigen_threads",
+    "get_eigen_threads",
     # errors
     "RotordynError",
     "InputError",

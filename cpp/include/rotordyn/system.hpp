@@ -221,6 +221,11 @@ class SystemSolver {
   /// between its own solves only, from the prediction at its start.
   void set_film_carry(bool on);
   bool film_carry() const { return carry_; }
+  /// Forget every state an earlier call left: the films' last solve (pressures,
+  /// factorisations) and their carried cavitation sets, continuation and carry switched off.
+  /// The next call's answer is then a function of its own inputs only (a public analysis
+  /// starts here: python/rotordyn/_common/calls.py).
+  void forget_state();
   /// Minimum film thickness of each film at positions r (n,), m, from the geometry alone
   /// (h = c + S r over the grid angles, eq. 3): no Reynolds solve, no change to the solvers'
   /// state. Equals last_h_min() after a solve at the same r; ≤ 0 means contact.

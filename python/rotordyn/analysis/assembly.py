@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rotordyn import _core
+from rotordyn._common.calls import current_epoch
 from rotordyn.analysis.modes import rotor_matrices
 from rotordyn.errors import InputError
 from rotordyn._common import validate as v
@@ -238,6 +239,13 @@ class Assembled:
         self.n_rotor = n_r
         self.solver = _core.SystemSolver(model)
         self.last_r: np.ndarray | None = None  # last converged equilibrium (warm starts)
+        self.epoch = current_epoch()  # the public call whose warm state this holds
+
+    def forget(self) -> None:
+        """Drop every warm state of an earlier call: the last equilibrium and the films'
+        last solve and carried cavitation sets (the next solve starts from its own inputs)."""
+        self.last_r = None
+        self.solver.forget_state()
 
     def bearing_h_min(self, h_films, angle_films=None):
         """Per-bearing minimum film thickness (last axis: films → bearings; NaN for a bearing
@@ -384,7 +392,18 @@ def assembled(system: System) -> Assembled:
         if len(cache) >= 8:
             cache.pop(next(iter(cache)))
         hit = cache[key] = Assembled(system)
+    _this_call(hit)
     return hit
+
+
+def _this_call(asm: Assembled) -> None:
+    """Reset ``asm``'s warm state when it was last used by another public call than the
+    running one (rotordyn._common.calls): the same call gives the same answer bit for bit
+    whatever ran before; the points of one call continue from each other."""
+    epoch = current_epoch()
+    if asm.epoch != epoch:
+        asm.forget()
+        asm.epoch = epoch
 
 
 def pin_assembled(asm: Assembled) -> None:
@@ -398,3 +417,4 @@ def pin_assembled(asm: Assembled) -> None:
     if len(cache) >= 8:
         cache.pop(next(iter(cache)))
     cache[asm.system] = asm
+    _this_call(asm)

@@ -50,6 +50,7 @@ def field_method_error(vary: str) -> InputError:
                       "varies p_c, the speed or a_y inside the core)")
 
 
+@limited_blas
 def continuation(system: System, vary: str, bounds, start="equilibrium", **options):
     """Pseudo-arclength continuation of a branch over ``vary`` within ``bounds``.
 

@@ -46,8 +46,12 @@ def equilibrium(system: System, speed_hz: float = 50.0, chamber_pressure_pa: flo
         ``pm`` = P_m; ``"auto"`` picks the P_m that minimises the spectral radius of the
         iteration at the starting point).
     tol : residual ‖K(r + a) − H − Q − C_s0‖∞ relative to the largest load.
-    warm_start : start from the last equilibrium of this system on this thread (else from
-        the concentric, undeformed state), unless ``r0`` is given.
+    warm_start : start from the last equilibrium of this system solved within the same
+        public call (an analysis continuing along its own points calls this function so), else
+        from the concentric, undeformed state; unless ``r0`` is given. A direct call starts
+        cold: nothing of an earlier call survives into it (rotordyn._common.calls), so the
+        same inputs give the same answer bit for bit whatever ran before. To continue from a
+        known equilibrium pass its ``r`` as ``r0``.
     contact_fraction : a converged equilibrium whose minimum film thickness is below this
         fraction of its clearance has status ``"contact"``.
 

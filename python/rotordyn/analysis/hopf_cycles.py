@@ -21,6 +21,7 @@ import numpy as np
 
 from rotordyn import _core
 from rotordyn._common import validate as v
+from rotordyn._common.threads import limited_blas
 from rotordyn.analysis import harmonic_balance as hbal
 from rotordyn.analysis.hb_continuation import (FLOQUET, FLOQUET_MARGIN, HARMONICS,
                                                corrector_options)
@@ -52,6 +53,7 @@ def check_amplitudes(name: str, amplitudes_c) -> np.ndarray:
     return amps
 
 
+@limited_blas
 def hopf_cycles(system, result: HopfResult, amplitudes_c=AMPLITUDES_C, *,
                 harmonics: int = HARMONICS, time_points: int | None = None,
                 tol: float = 1e-10, rtol: float = 1e-8, atol_m: float = 1e-12,

@@ -11,8 +11,7 @@ import numpy as np
 
 from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
-from rotordyn.analysis.assembly import (OPERATING, assembled, chamber_pressure,
-                                        check_operating_parameter)
+from rotordyn.analysis.assembly import OPERATING, chamber_pressure, check_operating_parameter
 from rotordyn.analysis.thermal_dynamics import thermal_keywords
 from rotordyn.model.paths import set_field
 from rotordyn.model.system import System
@@ -97,7 +96,6 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
                 raise InputError(f"bounds: the model refuses {vary} = {b:g} ({exc})") from None
     thermal = thermal_keywords(thermal)
     calls = [0]
-    cold: set = set()
 
     def g(x):
         calls[0] += 1
@@ -105,13 +103,11 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
         if not field:
             p[vary] = float(x)
         try:  # a model field: the system re-assembled with the field at x
+            # Each system's first equilibrium of this call starts cold, the others continue
+            # from it (rotordyn._common.calls): the same inputs give the same threshold bit
+            # for bit whatever ran before (a warm start from an earlier call moved it by
+            # ~2e-13 relative)
             sx = set_field(system, vary, float(x), where="bounds") if field else system
-            if sx not in cold:  # by value, as the assembly cache
-                # its first equilibrium of this call starts cold, the others continue from
-                # it: the same inputs give the same threshold bit for bit whatever ran before
-                # (a warm start from an earlier call moved it by ~2e-13 relative)
-                assembled(sx).last_r = None
-                cold.add(sx)
             return _point(sx, p, exclude_sleeve_modes, thermal)
         except RotordynError as exc:  # a failed point is a NaN, the scan goes on
             return math.nan, math.nan, f"error: {exc}"
