@@ -61,7 +61,7 @@ def case(request, tmp_path_factory):
                                 f0=f0, f1=f1, n=n, res=res))
     result = run_sweep(spec, d / "o", threads=2, progress=False)
     assert result.complete
-    return name, sw.open(d / "o"), (f1 - f0) / (res - 1)
+    return name, sw.open(d / "o"), (f1 - f0) / (res - 1), spec
 
 
 def _dense(name, ds, c):
@@ -75,7 +75,7 @@ def _dense(name, ds, c):
 
 
 def test_boundary_at_the_bisected_threshold(case):
-    name, ds, step = case
+    name, ds, step, _ = case
     model, (c0, c1), bounds, _, _ = CASES[name]
     b = ds.boundary()
     s = rd.System.from_toml(MODELS / model)
@@ -99,13 +99,16 @@ def test_boundary_at_the_bisected_threshold(case):
 
 
 def test_rows_carry_modes_and_map_draws_the_same_boundary(case):
-    """One row per mode with tracked ids: stability_map of the boundary sweep accepts it."""
+    """One row per mode with tracked ids: the map's field of the boundary sweep's rows has
+    the same zero contour as the sweep's polylines (one rule), and stability_map draws it."""
     import matplotlib
 
     matplotlib.use("Agg")
-    from rotordyn.plot.maps import stability_map
+    from rotordyn.plot.maps import critical_field, stability_map
+    from rotordyn.sweep.boundary import polylines
+    from rotordyn.sweep.spec import SweepSpec, fine_axes
 
-    name, ds, _ = case
+    name, ds, _, spec = case
     fr = ds.frame
     ok = fr[fr["status"] == "ok"]
     assert ok["mode_id"].notna().all() and (ok.groupby("point_id").size() > 4).all()
@@ -113,4 +116,26 @@ def test_rows_carry_modes_and_map_draws_the_same_boundary(case):
     mx = ok.groupby("point_id")["eig_real_1_per_s"].max()
     np.testing.assert_array_equal(mx.to_numpy(), ok.groupby("point_id")["max_real_1_per_s"]
                                   .first().to_numpy())
+    ax, _ = fine_axes(SweepSpec.from_toml(spec))
+    xs, ys = np.asarray(ax[X]), np.asarray(ax["speed_hz"])
+    f = critical_field(ok, [X, "speed_hz"], xs, ys)
+    lines = polylines(xs, ys, f)
+    b = ds.boundary()
+    assert len(lines) == b["line"].nunique() == 1
+    np.testing.assert_allclose(lines[0], b[[X, "speed_hz"]].to_numpy(), rtol=1e-12)
     stability_map(pd.DataFrame(fr))
+
+
+def test_rule_on_a_bystander_and_a_linear_crossing_mode():
+    """Two modes on a line s = 0.5, 1.5: a bystander at Re λ = -0.01 and a crossing mode with
+    Re λ = s - 1 (zero at s = 1). The rule's field is the crossing mode's at both points, so
+    its linear zero is exactly 1; max Re λ's (-0.01, 0.5) is at 0.5196."""
+    point = np.array([0, 0, 1, 1])
+    mode_id = np.array([0, 1, 0, 1])
+    re = np.array([-0.01, -0.5, -0.01, 0.5])
+    pts, f = critical_values(point, mode_id, re)
+    assert pts.tolist() == [0, 1] and f.tolist() == [-0.5, 0.5]
+    assert 0.5 + f[0] / (f[0] - f[1]) == 1.0
+    # without an unstable mode anywhere: max Re λ; a point without finite values: NaN
+    pts, f = critical_values([0, 0, 1], [0, 1, 0], [-0.01, -0.5, np.nan])
+    assert f[0] == -0.01 and np.isnan(f[1])
