@@ -60,6 +60,13 @@ resolution = {res}
 {zopt}"""
 
 
+
+def point_values(t, name="max_real_1_per_s"):
+    """A boundary chunk's per-point value (its first row: the point's mode rows share it)."""
+    pid = t.column("point_id").to_numpy()
+    first = np.r_[0, np.flatnonzero(np.diff(pid)) + 1] if len(pid) else np.zeros(0, int)
+    return np.asarray(t.column(name).to_pylist(), dtype=float)[first]
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--resolution", type=int, default=1001)
@@ -98,7 +105,7 @@ def main(argv=None):
         job = Job(spec.name, spec.load_model().to_toml(), spec.analysis, spec.options, ax)
         xs, ys = np.asarray(ax["config_ay_m"]), np.asarray(ax["chamber_pressure_pa"])
         ny = len(ys)
-        fr = ds.frame
+        fr = ds.frame.drop_duplicates("point_id")  # a point's mode rows share it
         # columns the boundary crosses (both states among its evaluated nodes), evenly spread
         mixed = fr.groupby("config_ay_m")["point_stable"].nunique()
         cand = np.searchsorted(xs, mixed[mixed > 1].index.to_numpy())
@@ -107,7 +114,7 @@ def main(argv=None):
         worst = 0.0
         for i in cols:
             t = run_chunk(job, 0, 0, 0, [i * ny + j for j in range(ny)])
-            z = np.asarray(t.column("max_real_1_per_s").to_pylist(), dtype=float)
+            z = point_values(t)
             st = np.where(np.isfinite(z), (z >= 0).astype(int), 2)
             k = np.flatnonzero(st[1:] != st[:-1])
             # the boundary's evaluated nodes on this column and their states
@@ -238,7 +245,7 @@ def dense_grid(args):
 
     def slab(i):
         t = run_chunk(job, 0, 0, 0, list(range(i * res * res, (i + 1) * res * res)))
-        return i, np.asarray(t.column("max_real_1_per_s").to_pylist(), dtype=float)
+        return i, point_values(t)
 
     w0, c0 = time.perf_counter(), time.process_time()
     with ThreadPoolExecutor(args.threads) as ex:
@@ -253,7 +260,7 @@ def compare_grid(ds, V):
     """Every (a_y, speed) column's crossings (neighbouring p_c nodes in different states, both
     evaluated) against the dense grid's."""
     st = np.where(np.isfinite(V), (V >= 0).astype(int), 2)
-    fr = ds.frame
+    fr = ds.frame.drop_duplicates("point_id")  # a point's mode rows share it
     i, j, k = (fr[f"i_{a}"].to_numpy() for a in ("config_ay_m", "chamber_pressure_pa",
                                                   "speed_hz"))
     seen = np.zeros(st.shape, bool)
@@ -278,7 +285,7 @@ def dense_columns(args, p, ds, b):
     job = Job(spec.name, spec.load_model().to_toml(), spec.analysis, spec.options, ax)
     xs, ys, zs = (np.asarray(ax[a]) for a in ("config_ay_m", "chamber_pressure_pa", "speed_hz"))
     ny, nz = len(ys), len(zs)
-    fr = ds.frame
+    fr = ds.frame.drop_duplicates("point_id")  # a point's mode rows share it
     mixed = fr.groupby(["i_config_ay_m", "i_speed_hz"])["point_stable"].nunique()
     cand = mixed[mixed > 1].index.to_list()
     pick = [cand[q] for q in np.linspace(0, len(cand) - 1, args.columns).round().astype(int)]
@@ -286,7 +293,7 @@ def dense_columns(args, p, ds, b):
     same, worst = 0, 0.0
     for i, k in pick:
         t = run_chunk(job, 0, 0, 0, [(i * ny + j) * nz + k for j in range(ny)])
-        zc = np.asarray(t.column("max_real_1_per_s").to_pylist(), dtype=float)
+        zc = point_values(t)
         st = np.where(np.isfinite(zc), (zc >= 0).astype(int), 2)
         kd = np.flatnonzero(st[1:] != st[:-1])
         sub = fr[(fr["i_config_ay_m"] == i) & (fr["i_speed_hz"] == k)]

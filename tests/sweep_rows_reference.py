@@ -242,9 +242,24 @@ def _unbalance_rows(job, variants, chunk_id, lo, hi, rows):
         unbalance_line(job, variants, chunk_id, s, e, rows)
 
 
+def _max_real_modes(job, asm, p, r0, opts, exclude_sleeve):
+    """lines.max_real with the point's every mode: (max Re λ, its frequency Hz, status,
+    equilibrium r or None, eigenvalues, whirl, kind)."""
+    f, pc, a = pt.operating(asm, p)
+    e = pt.solve_equilibrium(asm, f, pc, a, r0, opts)
+    if e.status not in CONVERGED:
+        return math.nan, math.nan, e.status, None, None, None, None
+    lam, _, whirl, kind = pt.eigen(asm, e, f, opts, None)
+    use = lam[kind == "rotor"] if exclude_sleeve else lam
+    i = int(np.argmax(use.real))
+    return (float(use[i].real), float(use[i].imag / (2 * np.pi)), e.status, np.asarray(e.r),
+            lam, whirl, kind)
+
+
 def _boundary_rows(job, variants, chunk_id, pids, rows):
-    """One row per listed point: max Re λ (rotor modes only with exclude_sleeve_modes), its
-    frequency, point_stable; ``level`` is set by the driver."""
+    """One row per mode of each listed point (a failed point: one row): the stability rows'
+    mode columns (mode_id the slot), max Re λ (rotor modes only with exclude_sleeve_modes)
+    and its frequency, point_stable; ``level`` is set by the driver."""
 
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     r_prev = None
@@ -253,7 +268,8 @@ def _boundary_rows(job, variants, chunk_id, pids, rows):
             rows.append(fail_row(row, "error", err))
             continue
         try:
-            y, fr, st, r = max_real(job, asm, p, r_prev if line else None, opts, excl)
+            y, fr, st, r, lam, whirl, kind = _max_real_modes(
+                job, asm, p, r_prev if line else None, opts, excl)
         except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
             rows.append(fail_row(row, "error", f"{type(exc).__name__}: {exc}"))
             r_prev = None
@@ -262,7 +278,17 @@ def _boundary_rows(job, variants, chunk_id, pids, rows):
         if r is None:
             rows.append(fail_row(row, st if st in STATUS else "error", "no equilibrium"))
             continue
-        rows.append({**row, "max_real_1_per_s": y, "freq_hz": fr, "point_stable": y < 0,
+        ke = len(lam)
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            RE = settled_real(lam)
+            AB = np.abs(lam)
+            DR = np.where(AB > 0, -RE / AB, np.nan)
+            LD = np.where(lam.imag != 0, -2 * np.pi * RE / lam.imag, np.nan)
+        rows.append({**row, "_n": ke, "mode_id": np.arange(ke), "mode": np.arange(1, ke + 1),
+                     "freq_hz": lam.imag / (2 * np.pi), "eig_real_1_per_s": lam.real,
+                     "damping_ratio": DR, "log_dec": LD, "whirl": whirl, "kind": kind,
+                     "mode_stable": stable_modes(lam), "point_stable": y < 0,
+                     "max_real_1_per_s": y, "max_real_freq_hz": fr,
                      "level": job.level, "status": st, "message": ""})
 
 

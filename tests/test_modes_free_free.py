@@ -101,8 +101,9 @@ def test_free_rotor_nutation_is_kept_at_low_speed_and_follows_the_closed_form():
     (0.05 rad/s) under which the old rule dropped the 2d smallest roots (the dense path lost
     it); there the rigid-body subspace's root stands in for the solver's (measured 8e-12 off
     the closed form on both paths, damping zero; the dense solver's own root was 1.3e-3 off).
-    Above the cut the solvers' roots are kept as they come: at 1 Hz the dense one is 2.6e-5
-    off with a damping ratio of −7e-6 (its rounding; the sparse one 1.1e-7), and above a few Hz
+    Above the cut the solvers' roots are kept, each refined by its structured Rayleigh
+    quotient on this conservative pencil (the dense one was 2.6e-5 off at 1 Hz with a damping
+    ratio of −7e-6, now 9.0e-7 and 0: tests/test_modes_conservative_zeta.py), and above a few Hz
     the shaft's flexibility lowers the nutation by O(Ω²): 3.4e-5 at 10 Hz, 3.1e-4 at 30 Hz."""
     s = disk_on_shaft()
     c = core.constrain(s.to_core())

@@ -124,7 +124,8 @@ def test_boundary_chunk_equals_the_point_loop(case):
     job = Job("s", _model(model), "boundary", options, axes)
     job.level = 2
     new, old = run_chunk(job, 5, 0, 0, pids), ref.run_chunk(job, 5, 0, 0, pids)
-    assert new.column("point_id").to_pylist() == pids
+    got = new.column("point_id").to_pylist()  # one row per mode (a failed point: one)
+    assert [p for k, p in enumerate(got) if k == 0 or p != got[k - 1]] == pids
     st = new.column("status").cast("string").to_pylist()
     assert "ok" in st
     assert_identical(new, old)

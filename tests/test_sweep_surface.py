@@ -26,6 +26,7 @@ from rotordyn.sweep.work import Job, run_chunk
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_linear_references import rigid_rotor  # noqa: E402
+from test_sweep_boundary_refine import point_column  # noqa: E402
 
 
 def _nodes(n, n0):
@@ -171,7 +172,7 @@ def test_surface_sweep_by_columns_matches_dense_columns(tmp_path):
     res = run_sweep(p, tmp_path / "o", threads=2, progress=False)
     assert res.manifest["n_points"] < 0.2 * 17**3
     ds = sw.open(tmp_path / "o")
-    fr, b = ds.frame, ds.boundary()
+    fr, b = ds.frame.drop_duplicates("point_id"), ds.boundary()
     spec = SweepSpec.from_toml(p)
     ax, _ = fine_axes(spec)
     job = Job(spec.name, model.read_text(), spec.analysis, spec.options, ax)
@@ -182,7 +183,7 @@ def test_surface_sweep_by_columns_matches_dense_columns(tmp_path):
         g = ax["gravity_m_s2"][kz]
         for i in (2, 8, 14):
             t = run_chunk(job, 0, 0, 0, [(i * 17 + j) * 17 + kz for j in range(17)])
-            col = np.asarray(t.column("max_real_1_per_s").to_pylist())
+            col = point_column(t)
             k = np.flatnonzero(np.sign(col[1:]) != np.sign(col[:-1]))
             sub = fr[(fr[x] == ax[x][i]) & (fr["gravity_m_s2"] == g)]
             jj = np.sort(np.searchsorted(ys, sub["speed_hz"].to_numpy()))
@@ -239,7 +240,7 @@ def test_curve_sweep_by_columns_matches_dense_columns(tmp_path):
     res = run_sweep(p, tmp_path / "o", threads=2, progress=False)
     assert res.manifest["n_points"] < 200  # of 900
     ds = sw.open(tmp_path / "o")
-    fr, b = ds.frame, ds.boundary()
+    fr, b = ds.frame.drop_duplicates("point_id"), ds.boundary()
     spec = SweepSpec.from_toml(p)
     ax, _ = fine_axes(spec)
     job = Job(spec.name, model.read_text(), spec.analysis, spec.options, ax)
@@ -247,7 +248,7 @@ def test_curve_sweep_by_columns_matches_dense_columns(tmp_path):
     ys = np.asarray(ax["speed_hz"])
     for i in range(0, 30, 3):
         t = run_chunk(job, 0, 0, 0, [i * 30 + j for j in range(30)])
-        col = np.asarray(t.column("max_real_1_per_s").to_pylist())
+        col = point_column(t)
         k = np.flatnonzero(np.sign(col[1:]) != np.sign(col[:-1]))
         assert len(k) == 1
         sub = fr[fr[x] == ax[x][i]].set_index("speed_hz")["max_real_1_per_s"]

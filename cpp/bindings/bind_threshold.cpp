@@ -62,10 +62,14 @@ void bind_threshold(py::module_& m) {
       .def_readonly("status", &MaxRealBatchResult::status)
       .def_readonly("message", &MaxRealBatchResult::message)
       .def_readonly("r_last", &MaxRealBatchResult::r_last)
-      .def_readonly("r", &MaxRealBatchResult::r);
+      .def_readonly("r", &MaxRealBatchResult::r)
+      .def_readonly("n_eig", &MaxRealBatchResult::n_eig)
+      .def_readonly("eigenvalues", &MaxRealBatchResult::eigenvalues)
+      .def_readonly("whirl", &MaxRealBatchResult::whirl)
+      .def_readonly("sleeve_share", &MaxRealBatchResult::sleeve_share);
   m.def("max_real_batch", &max_real_batch, py::arg("solver"), py::arg("input"),
         py::call_guard<py::gil_scoped_release>(),
-        "max Re lambda (and its frequency) at each listed point of a boundary-refinement "
+        "max Re lambda (and its frequency, and every eigenvalue) at each listed point of a boundary-refinement "
         "chunk, equilibria continued along lines, in one call.");
 }
 

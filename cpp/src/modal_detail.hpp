@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
+#include <complex>
 #include <functional>
 #include <mutex>
 #include <utility>
@@ -67,6 +68,21 @@ double rigid_root_bound(double omega);
 /// when d = 0 (w untouched).
 std::vector<char> rigid_roots(const RigidBody& rb, const Eigen::MatrixXd& M,
                               const Eigen::MatrixXd& D, Eigen::VectorXcd& w);
+
+/// Whether the pencil is conservative gyroscopic: M and K symmetric and D skew-symmetric,
+/// exactly (no damping, no cross-coupled stiffness: a free rotor or one on linear springs).
+bool conservative_gyroscopic(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
+                             const Eigen::MatrixXd& K);
+
+/// The root near `lam` of the conservative pencil's structured Rayleigh quotient
+/// m λ² + i g λ + k = 0 of the displacement vector x (m = x^H M x, k = x^H K x real,
+/// x^H D x = i g, each formed from the real and imaginary parts so that the structure is
+/// exact): purely imaginary when g² + 4 m k ≥ 0 (K ≥ 0 along x), and stationary in x (P(iν)
+/// is Hermitian), so second-order accurate. `lam` itself when the quotient's root is more
+/// than 1e-3 |lam| away (x not that root's vector) or x is degenerate.
+std::complex<double> conservative_root(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
+                                       const Eigen::MatrixXd& K, const Eigen::VectorXcd& x,
+                                       std::complex<double> lam);
 
 /// rigid_body(M, K) made once on first use and then shared (by the speeds of a Campbell
 /// diagram, the threads that run them, the calls on one ModalOperator).

@@ -165,4 +165,40 @@ std::vector<char> rigid_roots(const RigidBody& rb, const Eigen::MatrixXd& M,
   return rigid;
 }
 
+bool conservative_gyroscopic(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
+                             const Eigen::MatrixXd& K) {
+  const Eigen::Index n = M.rows();
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = 0; i < j; ++i)
+      if (M(i, j) != M(j, i) || K(i, j) != K(j, i) || D(i, j) != -D(j, i)) return false;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (D(i, i) != 0.0) return false;
+  return true;
+}
+
+std::complex<double> conservative_root(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
+                                       const Eigen::MatrixXd& K, const Eigen::VectorXcd& x,
+                                       std::complex<double> lam) {
+  const Eigen::VectorXd xr = x.real(), xi = x.imag();
+  const double m = xr.dot(M * xr) + xi.dot(M * xi);
+  const double k = xr.dot(K * xr) + xi.dot(K * xi);
+  const double g = xr.dot(D * xi) - xi.dot(D * xr);  // x^H D x = i g (D skew)
+  if (!(m > 0) || !std::isfinite(k) || !std::isfinite(g)) return lam;
+  // λ = i ν: m ν² + g ν − k = 0
+  const double disc = g * g + 4.0 * m * k;
+  std::complex<double> c1, c2;
+  if (disc >= 0) {
+    const double q = -0.5 * (g + std::copysign(std::sqrt(disc), g));
+    const double nu1 = q / m, nu2 = q != 0.0 ? -k / q : 0.0;
+    c1 = {0.0, nu1};
+    c2 = {0.0, nu2};
+  } else {  // K < 0 along x: a real pair about −g / 2m
+    const double re = std::sqrt(-disc) / (2.0 * m), im = -g / (2.0 * m);
+    c1 = {re, im};
+    c2 = {-re, im};
+  }
+  const std::complex<double> c = std::abs(c1 - lam) <= std::abs(c2 - lam) ? c1 : c2;
+  return std::abs(c - lam) <= 1e-3 * std::abs(lam) ? c : lam;
+}
+
 }  // namespace rotordyn::detail

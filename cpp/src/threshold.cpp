@@ -41,6 +41,9 @@ struct Point {
   double y = kNaN, f = kNaN;
   std::string status;  ///< the equilibrium's
   Eigen::VectorXd r;  ///< empty: no converged equilibrium
+  Eigen::VectorXcd lam;      ///< every eigenvalue (ModalResult's order)
+  std::vector<int> whirl;    ///< per eigenvalue: -1, 0, 1
+  std::vector<double> share;  ///< per eigenvalue: the sleeve's kinetic-energy share (0: none)
 };
 
 // max Re λ of eq. 19 at one operating point (the sweep's rule: every mode, the sleeve's own
@@ -62,14 +65,19 @@ Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, doub
   const ModalResult mr = modal(M, D, K, in.xy_pairs, static_cast<int>(n), true, in.rot_pairs);
   if (!mr.eigenvalues.allFinite()) throw ArithmeticFailure("non-finite eigenvalues");
   Eigen::Index best = -1;
-  for (Eigen::Index j = 0; j < mr.eigenvalues.size(); ++j) {
-    if (in.exclude_sleeve && !in.sleeve.empty()) {
+  const Eigen::Index ke = mr.eigenvalues.size();
+  p.share.assign(static_cast<std::size_t>(ke), 0.0);
+  p.whirl.resize(static_cast<std::size_t>(ke));
+  for (Eigen::Index j = 0; j < ke; ++j) {
+    p.whirl[static_cast<std::size_t>(j)] = static_cast<int>(mr.whirl[static_cast<std::size_t>(j)]);
+    if (!in.sleeve.empty()) {  // stability_batch's kind rule: the sleeve's kinetic share
       const Eigen::VectorXcd phi = mr.modes.col(j);
       const double kin = (phi.adjoint() * M * phi).real()(0, 0);
       double ks = 0.0;
       for (int i : in.sleeve)
         for (int k : in.sleeve) ks += (std::conj(phi[i]) * M(i, k) * phi[k]).real();
-      if (ks > 0.5 * kin) continue;  // a sleeve mode
+      p.share[static_cast<std::size_t>(j)] = kin > 0 ? ks / kin : 0.0;
+      if (in.exclude_sleeve && ks > 0.5 * kin) continue;  // a sleeve mode
     }
     if (best < 0 || mr.eigenvalues[j].real() > mr.eigenvalues[best].real()) best = j;
   }
@@ -77,6 +85,7 @@ Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, doub
   p.y = mr.eigenvalues[best].real();
   p.f = mr.eigenvalues[best].imag() / (2.0 * M_PI);
   p.r = e.r;
+  p.lam = mr.eigenvalues;
   return p;
 }
 
@@ -253,6 +262,8 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
   out.status.assign(static_cast<std::size_t>(np), "invalid");
   out.message.assign(static_cast<std::size_t>(np), "");
   out.r = RowMatrixXd::Constant(np, n, kNaN);
+  out.n_eig = Eigen::VectorXi::Zero(np);
+  std::vector<Point> pts(static_cast<std::size_t>(np));
   Eigen::VectorXd prev = in.r0;
   for (Eigen::Index i = 0; i < np; ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -270,6 +281,8 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
       out.freq[i] = p.f;
       prev = p.r;
       if (p.r.size() == n) out.r.row(i) = p.r.transpose();
+      out.n_eig[i] = static_cast<int>(p.lam.size());
+      pts[k] = p;
     } catch (const std::exception& ex) {
       out.status[k] = "error";
       out.message[k] = named(ex);
@@ -277,6 +290,20 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
     }
   }
   out.r_last = prev;
+  // every point's eigenvalues, whirl and sleeve shares (padding past n_eig: NaN, 0, NaN)
+  const Eigen::Index k = np ? out.n_eig.maxCoeff() : 0;
+  out.eigenvalues = Eigen::MatrixXcd::Constant(np, k, std::complex<double>(kNaN, kNaN));
+  out.whirl = Eigen::MatrixXi::Zero(np, k);
+  out.sleeve_share = RowMatrixXd::Constant(np, k, kNaN);
+  for (Eigen::Index i = 0; i < np; ++i) {
+    const Point& p = pts[static_cast<std::size_t>(i)];
+    for (Eigen::Index j = 0; j < p.lam.size(); ++j) {
+      const auto u = static_cast<std::size_t>(j);
+      out.eigenvalues(i, j) = p.lam[j];
+      out.whirl(i, j) = p.whirl[u];
+      out.sleeve_share(i, j) = p.share[u];
+    }
+  }
   return out;
 }
 

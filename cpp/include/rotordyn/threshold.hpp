@@ -73,6 +73,13 @@ struct MaxRealBatchResult {
   std::vector<std::string> status, message;
   Eigen::VectorXd r_last;       ///< the last point's equilibrium if it was analysed, else empty
   RowMatrixXd r;                ///< (n_pts, n) each point's equilibrium if analysed, else NaN
+  /// the eigen-analysis of each analysed point (stability_batch's layout): n_eig (0 for a
+  /// failed point), eigenvalues (n_pts, k) NaN past n_eig, whirl (n_pts, k) -1, 0, 1, and
+  /// sleeve_share (n_pts, k) the sleeve's kinetic-energy share of each mode (0 without one)
+  Eigen::VectorXi n_eig;
+  Eigen::MatrixXcd eigenvalues;
+  Eigen::MatrixXi whirl;
+  RowMatrixXd sleeve_share;
 };
 
 /// Points in order on `solver`, as the per-point loop: a point with restart 0 starts from the

@@ -164,23 +164,25 @@ def two_slope_ticks(cb, lo: float, hi: float) -> None:
 
 
 def critical_field(d: pd.DataFrame, axes: list[str], xs, ys) -> np.ndarray | None:
-    """The field whose zero contour is the boundary (n_x, n_y), 1/s: at each point the largest
-    Re λ among the tracked modes (``mode_id``) that are unstable somewhere in ``d`` (the rows
-    with a result), else max Re λ. Its sign equals max Re λ's at every point (a point with an
-    unstable mode has that mode in the set; a stable point has every Re λ < 0), but between
-    points it follows the modes that cross: max Re λ of a rotor without material damping is a
-    bystander mode's -0.01 1/s on the whole stable side, and its linear zero hugged the last
-    stable point (a turbine on a 10 Hz grid: 60.01 Hz drawn for a threshold at 61.58 Hz, now 61.30). None without ids."""
+    """The field whose zero contour is the boundary (n_x, n_y), 1/s, by the rule of
+    :func:`rotordyn._common.crossing.critical_values` (the boundary sweep's too): at each point
+    the largest Re λ among the tracked modes (``mode_id``) that are unstable somewhere in ``d``
+    (the rows with a result), else max Re λ; the sign of max Re λ at every point, but between
+    points it follows the modes that cross (a turbine on a 10 Hz grid: 60.01 Hz drawn for a
+    threshold at 61.58 Hz by max Re λ, 61.30 by this). None without ids or unstable modes."""
+    from rotordyn._common.crossing import critical_values
+
     if "mode_id" not in d or d["mode_id"].isna().any() or d.empty:
         return None
-    crit = np.unique(d.loc[d["eig_real_1_per_s"] > 0, "mode_id"].to_numpy())
-    if crit.size == 0:
+    if not (d["eig_real_1_per_s"] > 0).any():
         return None
-    g = (d[d["mode_id"].isin(crit)].groupby(axes)["eig_real_1_per_s"].max().unstack()
-         .reindex(index=xs, columns=ys))
-    m = d.groupby(axes)["eig_real_1_per_s"].max().unstack().reindex(index=xs, columns=ys)
-    return np.where(np.isfinite(g.to_numpy(dtype=float)), g.to_numpy(dtype=float),
-                    m.to_numpy(dtype=float))
+    xs, ys = np.asarray(xs), np.asarray(ys)
+    key = (np.searchsorted(xs, d[axes[0]].to_numpy()) * len(ys)
+           + np.searchsorted(ys, d[axes[1]].to_numpy()))
+    pts, val = critical_values(key, d["mode_id"].to_numpy(), d["eig_real_1_per_s"].to_numpy())
+    out = np.full(len(xs) * len(ys), np.nan)
+    out[pts] = val
+    return out.reshape(len(xs), len(ys))
 
 
 def _map_arrays(df: pd.DataFrame, axes: list[str], rotor_only: bool):

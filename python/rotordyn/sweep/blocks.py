@@ -226,18 +226,21 @@ def _stab_block(S, a, b, at, ids):
 
 # -- boundary refinement --------------------------------------------------------------------
 def boundary_blocks(job, variants, chunk_id, pids, asms, equilibria=None):
-    """One row per listed point: max Re λ (rotor modes only with exclude_sleeve_modes), its
-    frequency, point_stable; one ``max_real_batch`` call per run of points on one model (the
-    equilibrium continued along lines as the per-point loop did, across runs too). A point
-    with a start in ``job.starts`` (point_id -> equilibrium, e.g. a solved neighbour's)
-    starts there instead. ``equilibria`` (a list) receives the (n_pts, n) equilibria (NaN
-    rows: none) when given."""
+    """One row per mode of each listed point (a failed point: one row): the stability rows'
+    mode columns (``mode_id`` the mode's slot here; the refinement's driver replaces it by the
+    id tracked from a neighbour, :mod:`.boundary_modes`), max Re λ (rotor modes only with
+    exclude_sleeve_modes) and its frequency, point_stable, ``level``; one ``max_real_batch``
+    call per run of points on one model (the equilibrium continued along lines as the
+    per-point loop did, across runs too). A point with a start in ``job.starts`` (point_id ->
+    equilibrium, e.g. a solved neighbour's) starts there instead. ``equilibria`` (a list)
+    receives the (n_pts, n) equilibria (NaN rows: none) when given."""
     excl = bool(job.options.get("exclude_sleeve_modes", False))
     items = point_list(job, variants, pids, asms)
     n = len(items)
     st = np.empty(n, dtype=object)
     msg = np.empty(n, dtype=object)
     y, fr = np.full(n, math.nan), np.full(n, math.nan)
+    lam, whirl, share = [None] * n, [None] * n, [None] * n
     carry = None  # the last evaluated point's equilibrium (None: failed)
     errs = [it[4] for it in items]
     starts = getattr(job, "starts", None) or {}
@@ -293,16 +296,42 @@ def boundary_blocks(job, variants, chunk_id, pids, asms, equilibria=None):
             else:
                 st[i + k], msg[i + k] = _status(s), "no equilibrium"
         y[i:j], fr[i:j] = np.asarray(res.y), np.asarray(res.freq)
-    good = np.array([s in CONVERGED for s in st], dtype=bool)
+        ke, EV = np.asarray(res.n_eig), np.asarray(res.eigenvalues)
+        W, SH = np.asarray(res.whirl), np.asarray(res.sleeve_share)
+        for k in range(j - i):
+            lam[i + k], whirl[i + k], share[i + k] = EV[k, :ke[k]], W[k, :ke[k]], SH[k, :ke[k]]
+    good = np.array([s in CONVERGED and lam[k] is not None and len(lam[k])
+                     for k, s in enumerate(st)], dtype=bool)
     blocks = []
     for a, b, g in runs(good):
         k = np.arange(a, b)
         if g:
-            blocks.append((k, {"max_real_1_per_s": y[a:b], "freq_hz": fr[a:b],
-                               "point_stable": y[a:b] < 0, "level": job.level,
-                               "status": st[a:b], "message": ""}))
+            blocks.append(_boundary_block(job, k, y, fr, st, lam, whirl, share))
         else:
             blocks.append((k, {"status": st[a:b], "message": msg[a:b]}))
     if equilibria is not None:
         equilibria.append(np.full((n, 0), math.nan) if R is None else R)
     return blocks
+
+
+def _boundary_block(job, k, y, fr, st, lam, whirl, share):
+    """The mode rows of the converged points ``k`` (stability rows' per-mode columns)."""
+    ke = np.array([len(lam[q]) for q in k])
+    EV = np.concatenate([lam[q] for q in k])
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        RE = settled_real(EV)
+        AB = np.abs(EV)
+        DR = np.where(AB > 0, -RE / AB, np.nan)
+        LD = np.where(EV.imag != 0, -2 * np.pi * RE / EV.imag, np.nan)
+    MS = stable_modes(EV)
+    rep = np.repeat(k, ke)
+    return (rep, {"mode_id": np.concatenate([np.arange(m) for m in ke]).astype(np.int64),
+                  "mode": np.concatenate([np.arange(1, m + 1) for m in ke]).astype(np.int64),
+                  "freq_hz": EV.imag / (2 * np.pi), "eig_real_1_per_s": EV.real,
+                  "damping_ratio": DR, "log_dec": LD,
+                  "whirl": _NAMES[np.clip(np.concatenate([whirl[q] for q in k]), -1, 1) + 1],
+                  "kind": np.where(np.concatenate([share[q] for q in k]) > 0.5, "sleeve",
+                                   "rotor"),
+                  "mode_stable": MS, "point_stable": y[rep] < 0,
+                  "max_real_1_per_s": y[rep], "max_real_freq_hz": fr[rep],
+                  "level": job.level, "status": st[rep], "message": ""})

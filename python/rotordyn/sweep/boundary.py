@@ -7,10 +7,14 @@ fits) is evaluated first (max Re λ at each point). A cell whose four corners do
 one state (stable, unstable, failed) holds the boundary: it is split at its middle fine node
 along each axis where it is wider than one fine step (halves differ by one step when the width
 is odd), and the new corners are evaluated; this repeats until the mixed cells are one fine
-step wide (:class:`Refinement`). The boundary is the zero contour of max Re λ over the
-evaluated fine points (linear interpolation on each cell edge), stored as polylines in
-``_boundary.parquet``; the evaluated points are the dataset's rows, with the ``level`` that
-asked for them.
+step wide (:class:`Refinement`). The boundary is the zero contour, over the evaluated fine
+points (linear interpolation on each cell edge), of the stability map's field
+(:mod:`.boundary_modes`: the Re λ of the tracked modes that go unstable somewhere; max Re λ's
+sign at every point, but the crossing mode's Re λ between points, where max Re λ of an
+undamped rotor is a bystander's and its zero hugged the stable node), stored as polylines in
+``_boundary.parquet``; the evaluated points' modes are the dataset's rows (one per mode as a
+stability sweep's, ``mode_id`` tracked from a neighbour point), with the ``level`` that asked
+for them.
 
 With ``z`` (a third axis, e.g. speed) the boundary surface over (x, y, z) is found by
 columns along y by default (``refine = "columns"``, :mod:`rotordyn.sweep.surface`: each
@@ -38,19 +42,22 @@ from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, e
                                       group_size)
 from rotordyn.sweep.spec import boundary_axes, fine_axes
 from rotordyn.sweep.store import BOUNDARY, Store
+from rotordyn.sweep.boundary_modes import ModeTracks, with_ids
 from rotordyn.sweep.surface import ColumnPlan, column_field
 from rotordyn.sweep.points import base_system
 from rotordyn.sweep.work import Job, job_schema, pop_equilibria
 
 
 def _classify(table) -> dict[int, tuple[int, float, float]]:
-    """point_id -> (state: 0 stable, 1 unstable, 2 failed; max Re λ; its frequency)."""
+    """point_id -> (state: 0 stable, 1 unstable, 2 failed; max Re λ; its frequency), from
+    each point's first row (its mode rows share them)."""
     pid = table.column("point_id").to_numpy()
-    st = table.column("status").cast("string").to_numpy(zero_copy_only=False)
-    y = table.column("max_real_1_per_s").to_numpy(zero_copy_only=False)
-    fr = table.column("freq_hz").to_numpy(zero_copy_only=False)
+    first = np.r_[0, np.flatnonzero(np.diff(pid)) + 1] if len(pid) else np.zeros(0, int)
+    st = table.column("status").cast("string").to_numpy(zero_copy_only=False)[first]
+    y = table.column("max_real_1_per_s").to_numpy(zero_copy_only=False)[first]
+    fr = table.column("max_real_freq_hz").to_numpy(zero_copy_only=False)[first]
     out = {}
-    for p, s, v, f in zip(pid, st, y, fr):
+    for p, s, v, f in zip(pid[first], st, y, fr):
         ok = s in ("ok", "contact") and v is not None and math.isfinite(v)
         out[int(p)] = ((0 if v < 0 else 1) if ok else 2, float(v) if ok else math.nan,
                        float(f) if ok else math.nan)
@@ -153,6 +160,10 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     else:
         plan = Refinement(*[nodes[a] for a in refined])
     state: dict[int, tuple] = {}
+    modes = ModeTracks(bool(spec.options.get("exclude_sleeve_modes", False)))
+
+    def fine_index(p):
+        return np.unravel_index(p - base, shape)
     eqs: dict[int, np.ndarray] = {}  # point_id -> equilibrium (columns: starts of the next)
     cid = 0
     ex = None
@@ -181,8 +192,9 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
             done = store.done_chunks()
             for c, pl in chunks:
                 t = store.table(c) if c in done else None
-                if t is not None and sorted(t.column("point_id").to_pylist()) == pl:
+                if t is not None and sorted(set(t.column("point_id").to_pylist())) == pl:
                     state.update(_classify(t))
+                    modes.add_tracked(ModeTracks.rows(t), fine_index, plan.level)
                     bar.update({})
                 else:
                     todo.append((c, 0, 0, pl))
@@ -192,14 +204,23 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                     ex = executor(scheduler, workers or min(len(todo), os.cpu_count() or 1),
                                   threads, worker_timeout, bar)
                 pls = {t[0]: t[3] for t in todo}
+                got = []
                 for c, (table, cnt) in ex.map(job, todo):
                     table, R = pop_equilibria(table)
                     if by_cols and R is not None and R.shape[1]:
                         good = np.isfinite(R).all(axis=1)
                         eqs.update(zip(np.asarray(pls[c])[good].tolist(), R[good]))
-                    store.add(c, table, cnt, 0)
+                    got.append((c, table, cnt))
                     state.update(_classify(table))
                     bar.update(cnt)
+                # the level's modes tracked from their parents (in point-id order, whatever
+                # finished first), then its chunks stored with their ids
+                rows = {}
+                for _, table, _ in got:
+                    rows.update(ModeTracks.rows(table))
+                ids = modes.track(rows, fine_index, plan.level)
+                for c, table, cnt in sorted(got, key=lambda g: g[0]):
+                    store.add(c, with_ids(table, ids), cnt, 0)
             if by_cols:
                 more = plan.advance({i: state[pid3(i)][:2] for i in idxs})
             else:
@@ -219,8 +240,9 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
         store.group = group_size(cid, spec.max_files)
         store.compact_complete(cid)
         vals = np.full(shape, np.nan)
-        for p, (_, v, _) in state.items():
-            vals[np.unravel_index(p - base, shape)] = v
+        for p, v in modes.field().items():  # the map's rule (max Re λ's sign at each point)
+            if state[p][0] != 2:
+                vals[np.unravel_index(p - base, shape)] = v
         rows = {"line": [], "vertex": [], x: [], y: []}
         if z is not None:
             rows[z] = []

@@ -58,7 +58,12 @@ OUTPUTS = {
                   "h_min_m": F64, "iterations": I64},
     "threshold": {"crossing": I64, "value": F64, "whirl_frequency_hz": F64,
                   "whirl_ratio": F64, "stable_side": STR, "evaluations": I64},
-    "boundary": {"max_real_1_per_s": F64, "freq_hz": F64, "point_stable": BOOL, "level": I64},
+    # one row per mode as a stability sweep's (mode_id tracked from a neighbour point), with
+    # the frequency of max Re λ's mode and the refinement level that asked for the point
+    "boundary": {"mode_id": I64, "mode": I64, "freq_hz": F64, "eig_real_1_per_s": F64,
+                 "damping_ratio": F64, "log_dec": F64, "whirl": _cat(WHIRL),
+                 "kind": _cat(KIND), "mode_stable": BOOL, "point_stable": BOOL,
+                 "max_real_1_per_s": F64, "max_real_freq_hz": F64, "level": I64},
     "unbalance": {"station": I64, "amplitude_x_m": F64, "amplitude_y_m": F64,
                   "phase_x_deg": F64, "phase_y_deg": F64, "major_m": F64, "minor_m": F64,
                   "peak": BOOL, "critical_speed_hz": F64, "amplification_factor": F64,
