@@ -387,7 +387,8 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
         uniform_fields(films, st),
         inlet_mask=tuple(np.array(s.inlet_mask) for s in st) if thd else (),
         flows=tuple({k: np.array(getattr(s.flows, k)) for k in
-                     ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2", "makeup_m3_s")}
+                     ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2",
+                      "makeup_m3_s")}
                     for s in st) if thd else (),
         status=eq.status, message=eq.message, thermal_model="thd" if thd else "effective",
         **(dict(heat_to_journal_w=col("heat_to_journal_w"), heat_to_bush_w=col("heat_to_bush_w"),
