@@ -4,9 +4,10 @@ tilted relative to it (``--theta-x-rad``, ``--theta-y-rad``), isothermal
 (:func:`rotordyn.cli.bearing_tilt.run_tilted`) or at its thermal equilibrium
 (:func:`rotordyn.cli.bearing_thermal.run_thermal_tilted`): a plain (``journal``),
 tilting-pad or fixed-geometry bearing of a built-in model or a model TOML, with its own
-geometry, pads or lobes, grid, cavitation and grooves (``--n-circ``, ``--n-axial`` override its grid). The housing's misalignment
-(``config_theta_*``) and offsets are not applied: they place the housing against a system's
-shaft line; standalone the journal's tilt relative to the bearing is given."""
+geometry, pads or lobes, grid, cavitation and grooves (``--n-circ``, ``--n-axial`` override
+its grid). The housing's misalignment (``config_theta_*``) and offsets are not applied: they
+place the housing against a system's shaft line; standalone the journal's tilt relative to
+the bearing is given."""
 
 from __future__ import annotations
 
