@@ -29,13 +29,13 @@ import numpy as np
 from rotordyn.bearings._film import TURBULENCE_MODELS
 from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.bearings.thermal import Oil
-from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args, table_text
+from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args
+from rotordyn.cli.bearing_aligned import run_model_aligned, table
 from rotordyn.cli.bearing_model import add_model_arguments, model_bearing
 from rotordyn.cli.bearing_thermal import (print_effective, print_thd, run_thermal_tilted,
                                           thermal_kwargs, thermal_row)
 from rotordyn.cli.bearing_tilt import add_tilt_arguments, run_tilted, wants_tilt
 from rotordyn.cli.common import add_thd_arguments, journal_pose
-from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
 from rotordyn.results.equilibrium import CONVERGED
 
@@ -168,7 +168,7 @@ def _aligned(b: JournalBearing, oil: Oil | None, rec: dict, args: argparse.Names
     """The aligned plain film ``b`` (given by its dimensions, or a model file's plain bearing):
     a coefficient table, the thermal equilibrium or the isothermal operating point."""
     if args.speeds_hz is not None:
-        return _table(b, args)
+        return table(b, args)
     if args.speed_hz is None:
         raise InputError("--speed-hz: required (or --speeds-hz START:STOP:STEP for a table)")
     rec["speed_hz"] = args.speed_hz
@@ -248,7 +248,6 @@ def _model_file(args: argparse.Namespace) -> int:
     bearing as the system solves it (a plain bearing through the dimensions path's own
     code, a tilting-pad or fixed-geometry one: :mod:`rotordyn.cli.bearing_aligned`)."""
     from rotordyn.bearings import FluidFilmBearing
-    from rotordyn.cli.bearing_aligned import run_model_aligned
 
     if args.speed_hz is None and (wants_tilt(args) or args.speeds_hz is None):
         raise InputError("--speed-hz: required" + (
@@ -271,16 +270,3 @@ def _model_file(args: argparse.Namespace) -> int:
     if oil is not None and args.speeds_hz is None:
         return run_thermal_tilted(b, oil, rec, args)
     return run_tilted(b, args, rec)
-
-
-def _table(b: JournalBearing, args: argparse.Namespace) -> int:
-    if args.load_n is None:
-        raise InputError("--load-n: a coefficient table (--speeds-hz) needs the static load")
-    t = b.coefficient_table(_speeds(args.speeds_hz), tuple(args.load_n), n_threads=args.threads)
-    if args.csv:
-        print(t.to_csv(), end="")
-    elif args.json:
-        print(t.to_frame().to_json(orient="records", indent=2))
-    else:
-        print(table_text(t.to_frame()))
-    return 0 if all(s in CONVERGED for s in t.status) else 1

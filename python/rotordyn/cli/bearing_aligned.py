@@ -22,7 +22,7 @@ import argparse
 
 import numpy as np
 
-from rotordyn.cli.common import json_text, table_text
+from rotordyn.cli.common import json_text, speeds as _speeds, table_text
 from rotordyn.errors import ConvergenceError, InputError
 from rotordyn.results.equilibrium import CONVERGED
 
@@ -140,12 +140,25 @@ def run_model_aligned(b, oil, rec: dict, args: argparse.Namespace) -> int:
             raise InputError("--speeds-hz: a coefficient table is the isothermal film's (the "
                              "model bearing's viscosity); the thermal model runs at one "
                              "--speed-hz")
-        from rotordyn.cli.bearing import _table
-
-        return _table(b, args)
+        return table(b, args)
     if oil is not None:
         return _thermal(b, oil, rec, args)
     return _isothermal(b, rec, args)
 
 
-__all__ = ["run_model_aligned"]
+def table(b, args: argparse.Namespace) -> int:
+    """The coefficient table of ``b`` (any film bearing) over ``--speeds-hz`` under
+    ``--load-n``: CSV, JSON records or text; exit 1 when a row did not converge."""
+    if args.load_n is None:
+        raise InputError("--load-n: a coefficient table (--speeds-hz) needs the static load")
+    t = b.coefficient_table(_speeds(args.speeds_hz), tuple(args.load_n), n_threads=args.threads)
+    if args.csv:
+        print(t.to_csv(), end="")
+    elif args.json:
+        print(t.to_frame().to_json(orient="records", indent=2))
+    else:
+        print(table_text(t.to_frame()))
+    return 0 if all(s in CONVERGED for s in t.status) else 1
+
+
+__all__ = ["run_model_aligned", "table"]
