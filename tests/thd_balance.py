@@ -56,9 +56,12 @@ def balance(T, inlet_mask, flows, rho_c, ts, h_wall=0.0, t_wall=0.0):
     return rho_c * heat, diss, wall, mass
 
 
-def pad_balance(T, D, fl, rho_c, ts):
+def pad_balance(T, D, fl, rho_c, ts, t_in=None):
     """Heat carried out of one pad by its flows minus what they bring in (W), the pad cells'
-    dissipation (W) and the largest relative mass imbalance of a non-inlet interior cell."""
+    dissipation (W) and the largest relative mass imbalance of a non-inlet interior cell.
+    ``t_in`` (°C): the pad's inlet temperature, at which its trailing-edge cells' make-up
+    (``fl["makeup_m3_s"]``, inlet-gap oil a cell the pad hardly feeds draws) enters; it
+    leaves with the cell's oil, so it adds ρ c Σ m (T − T_in). None: no make-up term."""
     qp, qz = fl["q_phi_m3_s"], fl["q_z_m3_s"]
     n, k1 = T.shape
     inflow = np.zeros_like(T)
@@ -84,4 +87,7 @@ def pad_balance(T, D, fl, rho_c, ts):
             else:                             # mass not passed on leaves at the cell's T
                 heat += B * T[j, k]
                 imb = max(imb, abs(B) / max(inflow[j, k], 1e-300))
+    if t_in is not None and "makeup_m3_s" in fl:
+        m = np.asarray(fl["makeup_m3_s"])
+        heat += float((m * (np.asarray(T) - t_in))[~D].sum())
     return rho_c * heat, fl["dissipation_w"][~D].sum(), imb

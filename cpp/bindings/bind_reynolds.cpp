@@ -228,7 +228,8 @@ void bind_reynolds(py::module_& m) {
       .def_readonly("fill", &FilmFlows::fill)
       .def_readonly("dissipation_w", &FilmFlows::dissipation_w)
       .def_readonly("area_m2", &FilmFlows::area_m2)
-      .def_readonly("viscosity_pa_s", &FilmFlows::viscosity_pa_s);
+      .def_readonly("viscosity_pa_s", &FilmFlows::viscosity_pa_s)
+      .def_readonly("makeup_m3_s", &FilmFlows::makeup_m3_s);
 }
 
 }  // namespace rotordyn::py_bind

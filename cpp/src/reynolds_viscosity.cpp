@@ -126,6 +126,7 @@ void ReynoldsSolver::Impl::film_flows(FilmFlows& f) const {
   f.dissipation_w.setZero(N, K1);
   f.area_m2.resize(N, K1);
   f.viscosity_pa_s.resize(N, K1);
+  f.makeup_m3_s.setZero(N, K1);
   double* qp = f.q_phi_m3_s.data();
   double* qz = f.q_z_m3_s.data();
   double* ds = f.dissipation_w.data();

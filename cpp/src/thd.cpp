@@ -186,7 +186,7 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
     }
     Eigen::VectorXd b0 = Eigen::VectorXd::Zero(nn), b1 = Eigen::VectorXd::Zero(nn);
     Eigen::VectorXd b2 = Eigen::VectorXd::Zero(wm.balance ? nn : 0);  // the journal's T_J
-    std::vector<double> side_out(nn, 0.0);
+    std::vector<double> side_out(nn, 0.0), makeup(nn, 0.0);
     const double* A = fl.area_m2.data();
     const double* phi = fl.dissipation_w.data();
     for (int n = 0; n < nn; ++n) {
@@ -216,6 +216,7 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
         if (mk > 0.0) {
           diag[n] += rc * mk;
           b1[n] += rc * mk;
+          makeup[n] = mk;
         }
       }
       if (wm.legacy) {
@@ -349,9 +350,21 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
       ta = qte > 0.0 ? Qr * sa / qte : 0.0;
       tb = qte > 0.0 ? Qr * sb / qte : 0.0;
       tc = qte > 0.0 ? Qr * sc / qte : 0.0;
+      // the make-up (kTeMakeup) enters at T_in and leaves with the cell's oil at T: it returns
+      // to the gap the heat m (T − T_in) it picked up, which the hot oil passed on carries
+      // (the pad's heat balance and the next inlet's mixing close with it); Q_out stays the
+      // pad's own mass balance (the make-up goes back where it came from)
+      if (Qr > 0.0)
+        for (int n = 0; n < nn; ++n)
+          if (makeup[n] > 0.0) {
+            ta += makeup[n] * X0[n];
+            tb += makeup[n] * (X1[n] - 1.0);
+            if (j2) tc += makeup[n] * X2[n];
+          }
     }
     parts.inlet = std::move(D);
     parts.side_out = std::move(side_out);
+    parts.makeup = std::move(makeup);
     parts.X0 = std::move(X0);
     parts.X1 = std::move(X1);
     parts.X2 = std::move(X2);
@@ -376,6 +389,10 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
       parts.side_out[static_cast<std::size_t>(n)] =
           wa * parts.side_out[static_cast<std::size_t>(n)] +
           wb * other.side_out[static_cast<std::size_t>(n)];
+    for (int n = 0; n < nn; ++n)
+      parts.makeup[static_cast<std::size_t>(n)] =
+          wa * parts.makeup[static_cast<std::size_t>(n)] +
+          wb * other.makeup[static_cast<std::size_t>(n)];
     parts.Q = wa * parts.Q + wb * other.Q;
     parts.Qr = wa * parts.Qr + wb * other.Qr;
     parts.ta = wa * parts.ta + wb * other.ta;
@@ -385,6 +402,7 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
     parts.blend_weight = wb;
   }
   if (wm.balance) journal_sums(parts, N, K1);
+  parts.flows.makeup_m3_s = Eigen::Map<const RowMatrixXd>(parts.makeup.data(), N, K1);
   return parts;
 }
 

@@ -184,6 +184,9 @@ struct FilmFlows {
                               ///< + half of c Δp² of each of its faces (Poiseuille)
   RowMatrixXd area_m2;        ///< the node's cell area (half on the end rows), m²
   RowMatrixXd viscosity_pa_s; ///< the node viscosities the solve used
+  RowMatrixXd makeup_m3_s;    ///< THD pad films: the inlet-gap oil a trailing-edge cell draws
+                              ///< (its make-up, thd.cpp kTeMakeup), entering at the pad's
+                              ///< inlet temperature; 0 elsewhere and outside the THD field
 };
 
 /// Linear coefficients at an operating point: film force change = −K dq − C dq̇ (DESIGN frame).

@@ -69,6 +69,7 @@ struct ThdFieldParts {
   FilmFlows flows;
   std::vector<char> inlet;       ///< (n_nodes,) 1 on the inlet nodes
   std::vector<double> side_out;  ///< (n_nodes,) flow leaving through the ends, m³/s
+  std::vector<double> makeup;    ///< (n_nodes,) inlet-gap oil a trailing-edge cell draws, m³/s
   Eigen::VectorXd X0, X1;        ///< (n_nodes,) degC, degC/degC
   /// a journal from its heat balance (ThdOptions::journal_balance): T = X0 + T_in X1 + T_J X2,
   /// Q_r T_r = ta + T_in tb + T_J tc, and the net heat into the journal from the film's cells
@@ -76,7 +77,8 @@ struct ThdFieldParts {
   Eigen::VectorXd X2;
   double Q = 0.0;                ///< from the inlet into the film, m³/s
   double Qr = 0.0;               ///< from the film into the inlet (pad: Q − Σ side_out), m³/s
-  double ta = 0.0, tb = 0.0;     ///< Q_r T_r = ta + T_in tb (+ T_J tc)
+  double ta = 0.0, tb = 0.0;     ///< Q_r T_r = ta + T_in tb (+ T_J tc); a pad: with the heat
+                                 ///< its trailing-edge make-up picks up, Σ m (T − T_in)
   double tc = 0.0, ja = 0.0, jb = 0.0, jc = 0.0;
   std::vector<CellWall> walls;   ///< (n_nodes,) each cell's heat paths (thd_walls.hpp)
   bool pad = false;

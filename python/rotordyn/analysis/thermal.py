@@ -29,7 +29,8 @@ from rotordyn.results.thermal import WALL_COLUMNS, SystemThermalResult
 from rotordyn.units import hz_to_rad_s
 
 # the energy equation's terms of a THD film (FilmFlows), per node (n_circ, n_axial + 1)
-FLOW_FIELDS = ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2", "viscosity_pa_s")
+FLOW_FIELDS = ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2", "viscosity_pa_s",
+               "makeup_m3_s")
 
 
 @limited_blas

@@ -238,6 +238,16 @@ class PadThdResult(RenamedTiltOutputs):
         return float(np.sum(self.power_loss_w))
 
     @property
+    def makeup_flow_m3_s(self) -> np.ndarray:
+        """Per pad (THD): the inlet-gap oil its trailing-edge cells draw where the pad hardly
+        feeds them (m³/s; cpp/src/thd.cpp, kTeMakeup; it enters at the pad's inlet
+        temperature and leaves with the cell's oil); zeros for the effective model."""
+        if not self.flows:
+            return np.zeros(len(self.max_temperature_c))
+        return np.array([float(np.sum(np.asarray(f["makeup_m3_s"])[np.asarray(m) == 0]))
+                         for f, m in zip(self.flows, self.inlet_mask)])
+
+    @property
     def supply_flow_m3_s_total(self) -> float:
         return float(np.sum(self.supply_flow_m3_s))
 
@@ -271,7 +281,7 @@ class PadThdResult(RenamedTiltOutputs):
         cols["outlet_temperature_c"] = [*self.outlet_temperature_c,
                                         wmean(self.outlet_temperature_c, self.outlet_flow_m3_s)]
         for f in ("power_loss_w", "film_flow_m3_s", "outlet_flow_m3_s", "side_flow_m3_s",
-                  "supply_flow_m3_s"):
+                  "supply_flow_m3_s") + (("makeup_flow_m3_s",) if self.flows else ()):
             a = getattr(self, f)
             cols[f] = [*a, float(np.sum(a))]
         cols["pad_tilt_rad"] = [*self.pad_tilts_rad, np.nan] if len(self.pad_tilts_rad) \
@@ -377,7 +387,8 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
         uniform_fields(films, st),
         inlet_mask=tuple(np.array(s.inlet_mask) for s in st) if thd else (),
         flows=tuple({k: np.array(getattr(s.flows, k)) for k in
-                     ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2")}
+                     ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2",
+                      "makeup_m3_s")}
                     for s in st) if thd else (),
         status=eq.status, message=eq.message, thermal_model="thd" if thd else "effective",
         **(dict(heat_to_journal_w=col("heat_to_journal_w"), heat_to_bush_w=col("heat_to_bush_w"),

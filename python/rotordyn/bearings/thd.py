@@ -174,7 +174,7 @@ def run_thd_equilibrium(solver, oil, opts, load_n, speed_hz: float,
     e, dc, st = r.equilibrium, r.coefficients, r.film
     fl = st.flows
     flows = {name: np.array(getattr(fl, name)) for name in
-             ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2")}
+             ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2", "makeup_m3_s")}
     return ThdEquilibriumResult(
         speed_hz=float(speed_hz), load_n=(float(load_n[0]), float(load_n[1])),
         supply_temperature_c=float(opts.supply_temperature_c),

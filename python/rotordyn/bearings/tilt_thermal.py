@@ -188,7 +188,7 @@ def plain_tilted_thermal_equilibrium(bearing, *, theta_x_rad: float, theta_y_rad
         temperature_c=np.array(st.temperature_c), viscosity_pa_s=np.array(fl.viscosity_pa_s),
         inlet_mask=np.array(st.inlet_mask),
         flows={k: np.array(getattr(fl, k)) for k in
-               ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2")},
+               ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2", "makeup_m3_s")},
         wall_temperature_c=np.array(st.wall_temperature_c), **common)
 
 

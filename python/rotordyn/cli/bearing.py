@@ -6,8 +6,9 @@ friction torque, flows, minimum film and the K, C coefficients; ``--json`` for a
 readable record. Exit 2 on bad input (the message names the field). ``--theta-x-rad``,
 ``--theta-y-rad``: the journal tilted relative to the bearing, with its moments, edge film and
 4×4 K, C (:mod:`rotordyn.cli.bearing_tilt`). ``--model-file MODEL [--bearing NAME]``: a model
-file's plain, tilting-pad or fixed-geometry bearing instead of the dimensions, at its tilted
-operating point (:mod:`rotordyn.cli.bearing_model`).
+file's plain, tilting-pad or fixed-geometry bearing instead of the dimensions, aligned (as
+the system's film: :mod:`rotordyn.cli.bearing_aligned`) or at a tilt
+(:mod:`rotordyn.cli.bearing_model`).
 
 Film physics (docs/film-physics.md): ``--turbulence ng_pan --density-kg-m3 RHO`` for the
 turbulent film (``--turbulence-onset-re RE0 --turbulence-full-re RE1``: its transition); ``--supply-temperature-c T`` with ``--load-n`` and an oil law
@@ -28,13 +29,13 @@ import numpy as np
 from rotordyn.bearings._film import TURBULENCE_MODELS
 from rotordyn.bearings.journal import CAVITATION_MODELS, Groove, JournalBearing
 from rotordyn.bearings.thermal import Oil
-from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args, table_text
+from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args
+from rotordyn.cli.bearing_aligned import run_model_aligned, table
 from rotordyn.cli.bearing_model import add_model_arguments, model_bearing
 from rotordyn.cli.bearing_thermal import (print_effective, print_thd, run_thermal_tilted,
                                           thermal_kwargs, thermal_row)
 from rotordyn.cli.bearing_tilt import add_tilt_arguments, run_tilted, wants_tilt
 from rotordyn.cli.common import add_thd_arguments, journal_pose
-from rotordyn.cli.common import speeds as _speeds
 from rotordyn.errors import InputError
 from rotordyn.results.equilibrium import CONVERGED
 
@@ -160,13 +161,19 @@ def run(args: argparse.Namespace) -> int:
         if oil is not None and args.speeds_hz is None:  # the tilted thermal equilibrium
             return run_thermal_tilted(b, oil, rec, args)
         return run_tilted(b, args, rec)
+    return _aligned(b, oil, rec, args)
+
+
+def _aligned(b: JournalBearing, oil: Oil | None, rec: dict, args: argparse.Namespace) -> int:
+    """The aligned plain film ``b`` (given by its dimensions, or a model file's plain bearing):
+    a coefficient table, the thermal equilibrium or the isothermal operating point."""
     if args.speeds_hz is not None:
-        return _table(b, args)
+        return table(b, args)
     if args.speed_hz is None:
         raise InputError("--speed-hz: required (or --speeds-hz START:STOP:STEP for a table)")
     rec["speed_hz"] = args.speed_hz
     if oil is not None:
-        return _thermal(b, oil, film, rec, args)
+        return _thermal(b, oil, rec, args)
     x, y, vx, vy, eq = journal_pose(
         args, lambda load: b.static_equilibrium(load_n=load, speed_hz=args.speed_hz))
     if eq is not None:
@@ -207,8 +214,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
-             args: argparse.Namespace) -> int:
+def _thermal(b: JournalBearing, oil: Oil, rec: dict, args: argparse.Namespace) -> int:
     """Effective-temperature or THD equilibrium of the aligned film: temperatures, power,
     flows, K, C (temperature frozen); the tilted one: :func:`rotordyn.cli.bearing_thermal.
     run_thermal_tilted`."""
@@ -218,7 +224,7 @@ def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
     rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, k_n_per_m=r.K.tolist(),
                c_n_s_per_m=r.C.tolist(), coefficient_method="perturbation")
     if kw["model"] == "effective":  # the hot film's forces, minimum film and torque
-        f = JournalBearing(viscosity_pa_s=r.viscosity_pa_s, **film).solve(
+        f = JournalBearing(**{**b.__getstate__(), "viscosity_pa_s": r.viscosity_pa_s}).solve(
             x_m=r.x_m, y_m=r.y_m, speed_hz=args.speed_hz)
         rec.update(force_n=np.asarray(f.force_n).tolist(), h_min_m=f.h_min_m,
                    h_min_angle_deg=f.h_min_angle_deg,
@@ -237,16 +243,19 @@ def _thermal(b: JournalBearing, oil: Oil, film: dict, rec: dict,
 
 
 def _model_file(args: argparse.Namespace) -> int:
-    """A model file's bearing (:mod:`rotordyn.cli.bearing_model`) at its tilted operating
-    point, isothermal or at its thermal equilibrium."""
-    if not wants_tilt(args):
-        raise InputError("--theta-x-rad/--theta-y-rad: --model-file gives the bearing's "
-                         "tilted operating point (moments, edge film, 4x4 K, C); give the "
-                         "journal's tilt (0 for an aligned journal)")
-    if args.speed_hz is None:
-        raise InputError("--speed-hz: required")
+    """A model file's bearing (:mod:`rotordyn.cli.bearing_model`): with a tilt its tilted
+    operating point, isothermal or at its thermal equilibrium; without one the aligned
+    bearing as the system solves it (a plain bearing through the dimensions path's own
+    code, a tilting-pad or fixed-geometry one: :mod:`rotordyn.cli.bearing_aligned`)."""
+    from rotordyn.bearings import FluidFilmBearing
+
+    if args.speed_hz is None and (wants_tilt(args) or args.speeds_hz is None):
+        raise InputError("--speed-hz: required" + (
+            "" if wants_tilt(args) else " (or --speeds-hz START:STOP:STEP for a table)"))
     b, brec = model_bearing(args)
-    rec: dict = {"bearing": brec, "speed_hz": args.speed_hz}
+    rec: dict = {"bearing": brec}
+    if args.speed_hz is not None:
+        rec["speed_hz"] = args.speed_hz
     oil = oil_from_args(args)
     if oil is None and args.thermal_model is not None:
         raise InputError("--model: the thermal model needs --supply-temperature-c, --load-n "
@@ -254,19 +263,10 @@ def _model_file(args: argparse.Namespace) -> int:
     if oil is None and args.density_kg_m3 is not None:
         raise InputError("--density-kg-m3: with --model-file only the thermal oil's density "
                          "(give an --oil-* law); the model's bearing has its own")
+    if not wants_tilt(args):
+        if isinstance(b, FluidFilmBearing):
+            return _aligned(b.journal_bearing(), oil, rec, args)
+        return run_model_aligned(b, oil, rec, args)
     if oil is not None and args.speeds_hz is None:
         return run_thermal_tilted(b, oil, rec, args)
     return run_tilted(b, args, rec)
-
-
-def _table(b: JournalBearing, args: argparse.Namespace) -> int:
-    if args.load_n is None:
-        raise InputError("--load-n: a coefficient table (--speeds-hz) needs the static load")
-    t = b.coefficient_table(_speeds(args.speeds_hz), tuple(args.load_n), n_threads=args.threads)
-    if args.csv:
-        print(t.to_csv(), end="")
-    elif args.json:
-        print(t.to_frame().to_json(orient="records", indent=2))
-    else:
-        print(table_text(t.to_frame()))
-    return 0 if all(s in CONVERGED for s in t.status) else 1

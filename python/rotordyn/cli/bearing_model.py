@@ -1,12 +1,13 @@
 """``rotordyn bearing --model-file MODEL [--bearing NAME]``: a model file's fluid-film bearing
-at one operating point with the journal tilted relative to it (``--theta-x-rad``,
-``--theta-y-rad``; 0 for an aligned journal), isothermal (:func:`rotordyn.cli.bearing_tilt.
-run_tilted`) or at its thermal equilibrium (:func:`rotordyn.cli.bearing_thermal.
-run_thermal_tilted`): a plain (``journal``), tilting-pad or fixed-geometry bearing of a
-built-in model or a model TOML, with its own geometry, pads or lobes, grid, cavitation and
-grooves (``--n-circ``, ``--n-axial`` override its grid). The housing's misalignment
-(``config_theta_*``) and offsets are not applied: they place the housing against a system's
-shaft line; standalone the journal's tilt relative to the bearing is given."""
+at one operating point, aligned (:mod:`rotordyn.cli.bearing_aligned`) or with the journal
+tilted relative to it (``--theta-x-rad``, ``--theta-y-rad``), isothermal
+(:func:`rotordyn.cli.bearing_tilt.run_tilted`) or at its thermal equilibrium
+(:func:`rotordyn.cli.bearing_thermal.run_thermal_tilted`): a plain (``journal``),
+tilting-pad or fixed-geometry bearing of a built-in model or a model TOML, with its own
+geometry, pads or lobes, grid, cavitation and grooves (``--n-circ``, ``--n-axial`` override
+its grid). The housing's misalignment (``config_theta_*``) and offsets are not applied: they
+place the housing against a system's shaft line; standalone the journal's tilt relative to
+the bearing is given."""
 
 from __future__ import annotations
 
@@ -26,8 +27,9 @@ def add_model_arguments(s: argparse.ArgumentParser) -> None:
     s.add_argument("--model-file", default=None, metavar="MODEL",
                    help="a built-in model name or a model TOML: its bearing --bearing (plain, "
                         "tilting-pad or fixed-geometry, with its own geometry, grid, "
-                        "cavitation) instead of --diameter-m ...; with --theta-x-rad/"
-                        "--theta-y-rad (0 for an aligned journal), isothermal or thermal")
+                        "cavitation) instead of --diameter-m ...; aligned as in the "
+                        "system, or tilted with --theta-x-rad/--theta-y-rad; isothermal or "
+                        "thermal")
     s.add_argument("--bearing", default=None, metavar="NAME",
                    help="with --model-file: the bearing's name (default: the model's only "
                         "fluid-film bearing)")
