@@ -146,10 +146,11 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         "Forced orbits from the linear response").
     bdf_max_order
         Highest BDF order of the CVODES flows (1–5, default 5), as for
-        :func:`rotordyn.transient`: 2 on a flexible rotor whose lightly damped bending modes
-        hold orders 3–5 at their stability limit (``stats["order_reductions"]`` many per
-        flow; the overhung pump: 839 steps per period instead of 2,562, docs/nonlinear.md
-        "Shooting on a flexible rotor").
+        :func:`rotordyn.transient`: 2 can pay on a flexible rotor whose lightly damped
+        bending modes hold orders 3–5 at their stability limit (``stats["order_reductions"]``
+        many per flow) at loose tolerances (the overhung pump at atol 1e-9 m: 839 steps per
+        period instead of 2,562); at atol_m 1e-12 it took more steps there (12,709 against
+        8,345; docs/nonlinear.md "Shooting on a flexible rotor").
     sensitivity_solve
         The corrector of the monodromy's sensitivity columns: ``"blocked"`` (default) all
         2n columns in one solve per iteration with the exact matrix I − γA;

@@ -30,9 +30,10 @@ def register(sub) -> None:
     _orbit_arguments(s)
     _hb_arguments(s)
     s.add_argument("--bdf-max-order", type=int, default=5, metavar="Q",
-                   help="highest BDF order of the CVODES flows, 1..5 (default 5); 2 for a "
-                        "flexible rotor whose undamped bending modes hold orders 3-5 at "
-                        "their stability limit (the overhung pump: docs/nonlinear.md)")
+                   help="highest BDF order of the CVODES flows, 1..5 (default 5); 2 can "
+                        "pay on a flexible rotor whose undamped bending modes hold orders "
+                        "3-5 at their stability limit, at loose tolerances "
+                        "(docs/nonlinear.md)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="write the orbit and the multipliers in the unit circle")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
