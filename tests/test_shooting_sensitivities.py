@@ -1,6 +1,6 @@
 """The shooting flows' sensitivity corrector and BDF order cap (docs/nonlinear.md, "Shooting
 on a flexible rotor"): the blocked corrector (all monodromy columns in one solve with the
-exact matrix I − γA, the default) gives the orbit and the multipliers of CVODES's own
+exact matrix I − γA, opt-in) gives the orbit and the multipliers of CVODES's own
 column-by-column corrector; ``bdf_max_order`` reaches the flows."""
 
 from pathlib import Path

@@ -69,9 +69,9 @@ struct Flow {
   Eigen::VectorXd dfdp;
   double p_unit = 1.0;
   // The staggered sensitivity corrector: true, all columns in one blocked solve with the
-  // exact matrix I − γA (blocked_sensitivity_solver); false, CVODES's own Newton (one dense
-  // back-substitution per column with the state's lagged matrix; the path before).
-  bool blocked_sensitivities = true;
+  // exact matrix I − γA (blocked_sensitivity_solver); false (default), CVODES's own Newton
+  // (one dense back-substitution per column with the state's lagged matrix).
+  bool blocked_sensitivities = false;
 };
 
 struct FlowRun {

@@ -68,12 +68,11 @@ struct ShootingOptions {
   /// with sensitivities when a step does not halve the residual. false: sensitivities in
   /// every iteration (Newton). The final pass is the same either way.
   bool broyden = false;
-  /// The staggered sensitivity corrector of the flows with sensitivities. true (default): all
+  /// The staggered sensitivity corrector of the flows with sensitivities. true (opt-in): all
   /// 2n monodromy columns in one blocked solve per iteration with the exact matrix I − γA
-  /// (one LU per step; the sensitivity equations are linear, so one iteration solves them);
-  /// false: CVODES's own corrector, one dense back-substitution per column with the state's
-  /// lagged Newton matrix (the path before; for measurements). Same error tests either way.
-  bool blocked_sensitivities = true;
+  /// (one LU per step attempt); false (default): CVODES's own corrector, one dense
+  /// back-substitution per column with the state's lagged Newton matrix. Same error tests.
+  bool blocked_sensitivities = false;
   /// Continuation only (continuation_step): ∂R/∂p from one more CVODES sensitivity column in
   /// the flows with sensitivities (ṡ_p = A s_p + ∂f/∂p, exact for p_c and a_y, where f is
   /// affine in p) instead of two flows at p ± h. The speed keeps the central difference.
