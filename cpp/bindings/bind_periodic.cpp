@@ -35,6 +35,7 @@ void bind_periodic(py::module_& m) {
       .def_readwrite("sensitivity_error_control", &ShootingOptions::sensitivity_error_control)
       .def_readwrite("sensitivity_rtol", &ShootingOptions::sensitivity_rtol)
       .def_readwrite("broyden", &ShootingOptions::broyden)
+      .def_readwrite("blocked_sensitivities", &ShootingOptions::blocked_sensitivities)
       .def_readwrite("parameter_sensitivity", &ShootingOptions::parameter_sensitivity)
       .def_readwrite("screen_rtol", &ShootingOptions::screen_rtol)
       .def_readwrite("screen_margin", &ShootingOptions::screen_margin);
@@ -68,6 +69,9 @@ void bind_periodic(py::module_& m) {
       .def_readonly("jac_evals", &PeriodicOrbitResult::jac_evals)
       .def_readonly("reynolds_solves", &PeriodicOrbitResult::reynolds_solves)
       .def_readonly("sensitivity_flows", &PeriodicOrbitResult::sensitivity_flows)
+      .def_readonly("order_reductions", &PeriodicOrbitResult::order_reductions)
+      .def_readonly("sens_linear_solves", &PeriodicOrbitResult::sens_linear_solves)
+      .def_readonly("sens_factorizations", &PeriodicOrbitResult::sens_factorizations)
       .def_readonly("monodromy_rtol", &PeriodicOrbitResult::monodromy_rtol);
   m.def("periodic_orbit", &periodic_orbit, py::arg("solver"), py::arg("input"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>(),

@@ -151,6 +151,7 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
     in_p = at_parameter(c, p);
     Flow F;
     setup_flow(F, solver, in_p);
+    F.blocked_sensitivities = opt.blocked_sensitivities;
     if (opt.parameter_sensitivity) {
       F.dfdp = parameter_rhs(F, solver.model(), c);
       F.p_unit = Dp * opt.cvode.atol_position / Dx(0);
@@ -165,6 +166,9 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
     o.steps += run.steps;
     o.rhs_evals += run.rhs_evals;
     o.jac_evals += run.jac_evals;
+    o.order_reductions += run.order_reductions;
+    o.sens_factorizations += run.sens_factorizations;
+    o.sens_linear_solves += run.sens_newton_iters * (N + (run.dxdp.size() == N ? 1 : 0));
     o.sens_rhs_evals += F.sens_evals;
     if (run.flag < 0) {
       o.status = F.contact ? "rub" : "not_converged";

@@ -127,10 +127,11 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
   void* mem = CVodeCreate(CV_BDF, ctx);
   const int Ns = static_cast<int>(N) + (F.dfdp.size() == N ? 1 : 0);
   N_Vector* yS = sens ? N_VCloneVectorArray(Ns, y) : nullptr;
-  std::vector<sunrealtype> atolS_data;
+  SUNNonlinearSolver sens_nls = nullptr;
   auto cleanup = [&]() {
     if (yS) N_VDestroyVectorArray(yS, Ns);
     CVodeFree(&mem);
+    if (sens_nls) SUNNonlinSolFree(sens_nls);
     SUNLinSolFree(LS);
     SUNMatDestroy(Jm);
     N_VDestroy(abstol);
@@ -159,6 +160,7 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
   check(CVodeSetMaxNumSteps(mem, opt.max_steps), "CVodeSetMaxNumSteps");
   if (opt.max_step > 0) check(CVodeSetMaxStep(mem, opt.max_step), "CVodeSetMaxStep");
   if (opt.stability_limit_detection) check(CVodeSetStabLimDet(mem, SUNTRUE), "CVodeSetStabLimDet");
+  if (opt.max_order < 5) check(CVodeSetMaxOrd(mem, opt.max_order), "CVodeSetMaxOrd");
   const double t_end = t0 + T;
   check(CVodeSetStopTime(mem, t_end), "CVodeSetStopTime");
   if (sens) {
@@ -179,6 +181,11 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
     N_VDestroyVectorArray(atolS, Ns);
     check(f, "CVodeSensSVtolerances");
     check(CVodeSetSensErrCon(mem, sens_errcon ? SUNTRUE : SUNFALSE), "CVodeSetSensErrCon");
+    if (F.blocked_sensitivities) {
+      sens_nls = blocked_sensitivity_solver(F, mem, ctx);
+      if (!sens_nls) check(CV_MEM_FAIL, "blocked_sensitivity_solver");
+      check(CVodeSetNonlinearSolverSensStg(mem, sens_nls), "CVodeSetNonlinearSolverSensStg");
+    }
   }
   const int ns = std::max(n_out, 2);
   out.t.resize(ns);
@@ -201,6 +208,15 @@ FlowRun run_flow(Flow& F, const Eigen::VectorXd& x0, double t0, double T, bool s
   out.rhs_evals = v;
   CVodeGetNumJacEvals(mem, &v);
   out.jac_evals = v;
+  if (opt.stability_limit_detection) {
+    CVodeGetNumStabLimOrderReds(mem, &v);
+    out.order_reductions = v;
+  }
+  if (sens) {
+    CVodeGetSensNumNonlinSolvIters(mem, &v);
+    out.sens_newton_iters = v;
+    out.sens_factorizations = blocked_sensitivity_factorizations(sens_nls);
+  }
   out.flag = flag;
   if (flag < 0) {
     out.why = cvode_flag_name(flag) + " at t = " + std::to_string(tret) + " s" +
@@ -269,6 +285,8 @@ void validate(const SystemSolver& solver, const PeriodicInput& in, const Shootin
   require(c.rtol > 0 && c.rtol < 1 && c.atol_position > 0 && c.atol_velocity > 0,
           "cvode options: tolerances must be positive");
   require(c.max_steps > 0, "cvode options: max_steps must be positive");
+  require(c.max_order >= 1 && c.max_order <= 5,
+          "bdf_max_order: expected an integer in [1, 5], got " + std::to_string(c.max_order));
   require(opt.tol > 0 && std::isfinite(opt.tol), "tol: expected a value > 0");
   require(opt.max_iter >= 1, "max_iter: expected at least 1");
   require(opt.sensitivity_rtol >= 0 && opt.sensitivity_rtol < 1,
@@ -348,6 +366,7 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
   const SystemModel& m = solver.model();
   Flow F;
   setup_flow(F, solver, in);
+  F.blocked_sensitivities = opt.blocked_sensitivities;
   const Eigen::Index n = F.n, N = F.N;
   const bool autonomous = in.kind == OrbitKind::autonomous;
   PeriodicOrbitResult out;
@@ -394,6 +413,9 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
     out.steps += run.steps;
     out.rhs_evals += run.rhs_evals;
     out.jac_evals += run.jac_evals;
+    out.order_reductions += run.order_reductions;
+    out.sens_factorizations += run.sens_factorizations;
+    out.sens_linear_solves += run.sens_newton_iters * N;  // Ns = N columns per iteration
     if (run.flag < 0) {
       out.status = F.contact ? "rub" : "not_converged";
       out.message = "shooting iteration " + std::to_string(it) + ": " + run.why;

@@ -4,6 +4,7 @@
 #pragma once
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <sundials/sundials_nonlinearsolver.h>
 
 #include <string>
 
@@ -34,6 +35,10 @@ struct Flow {
   // as much as one absolute tolerance of the positions).
   Eigen::VectorXd dfdp;
   double p_unit = 1.0;
+  // The staggered sensitivity corrector: true, all columns in one blocked solve with the
+  // exact matrix I − γA (blocked_sensitivity_solver); false (default), CVODES's own Newton
+  // (one dense back-substitution per column with the state's lagged matrix).
+  bool blocked_sensitivities = false;
 };
 
 struct FlowRun {
@@ -45,10 +50,20 @@ struct FlowRun {
   int flag = 0;              // < 0: CVODES failure
   std::string why;
   long steps = 0, rhs_evals = 0, jac_evals = 0;
+  long order_reductions = 0;   // BDF stability-limit order reductions (CVODES)
+  long sens_newton_iters = 0;  // sensitivity corrector iterations (each: Ns linear solves)
+  long sens_factorizations = 0;  // LU factorisations of I − γA by the blocked corrector
 };
 
 /// ẋ = f(t, x) of eq. 12 (first-order form) at the flow's operating point.
 Eigen::VectorXd vector_field(Flow& F, double t, const Eigen::Ref<const Eigen::VectorXd>& y);
+/// The staggered sensitivity corrector for CVODES (CVodeSetNonlinearSolverSensStg) that
+/// solves all sensitivity columns at once with its own LU of I − γA, A the Jacobian the
+/// sensitivity right-hand side formed (F.A at F.y_A); shooting_sens.cpp. The caller frees it
+/// (SUNNonlinSolFree) after CVodeFree.
+SUNNonlinearSolver blocked_sensitivity_solver(Flow& F, void* cvode_mem, SUNContext ctx);
+/// Factorisations made by a blocked_sensitivity_solver so far.
+long blocked_sensitivity_factorizations(SUNNonlinearSolver nls);
 /// Binds F to solver and `in` (which must outlive F): M(Ω), the constant forces, C + ΩG.
 void setup_flow(Flow& F, SystemSolver& solver, const PeriodicInput& in);
 /// Integrate x0 over [t0, t0 + T] (with the monodromy when `sens`), sampling n_out points.

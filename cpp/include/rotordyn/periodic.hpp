@@ -68,6 +68,11 @@ struct ShootingOptions {
   /// with sensitivities when a step does not halve the residual. false: sensitivities in
   /// every iteration (Newton). The final pass is the same either way.
   bool broyden = false;
+  /// The staggered sensitivity corrector of the flows with sensitivities. true (opt-in): all
+  /// 2n monodromy columns in one blocked solve per iteration with the exact matrix I − γA
+  /// (one LU per step attempt); false (default): CVODES's own corrector, one dense
+  /// back-substitution per column with the state's lagged Newton matrix. Same error tests.
+  bool blocked_sensitivities = false;
   /// Continuation only (continuation_step): ∂R/∂p from one more CVODES sensitivity column in
   /// the flows with sensitivities (ṡ_p = A s_p + ∂f/∂p, exact for p_c and a_y, where f is
   /// affine in p) instead of two flows at p ± h. The speed keeps the central difference.
@@ -121,6 +126,16 @@ struct PeriodicOrbitResult {
   std::string message;
   long steps = 0, rhs_evals = 0, sens_rhs_evals = 0, jac_evals = 0, reynolds_solves = 0;
   long sensitivity_flows = 0;      ///< flows with sensitivities among the `iterations`
+  /// BDF stability-limit order reductions over all flows (CVODES; 0 with the detection off):
+  /// many of them mean lightly damped stiff modes hold BDF orders 3-5 at their stability
+  /// limit (cvode.max_order = 2 steps over them).
+  long order_reductions = 0;
+  /// Dense back-substitutions of the sensitivity corrector over all flows: its iterations
+  /// × the 2n columns (the monodromy's cost beyond the orbit's own steps).
+  long sens_linear_solves = 0;
+  /// LU factorisations of I − γA by the blocked sensitivity corrector (0 with
+  /// ShootingOptions::blocked_sensitivities off: then sens_linear_solves are CVODES's).
+  long sens_factorizations = 0;
   /// The sensitivity tolerance of the pass that gave the reported monodromy (the error test's
   /// relative tolerance: sensitivity_rtol, or screen_rtol for a screened continuation point).
   double monodromy_rtol = 0.0;

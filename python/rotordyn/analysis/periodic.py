@@ -26,6 +26,7 @@ KINDS = ("autonomous", "forced")
 METHODS = ("shooting", "harmonic_balance")
 NEWTON = ("broyden", "sensitivities")
 FORCED_STARTS = ("linear", "equilibrium")
+SENSITIVITY_SOLVES = ("blocked", "columns")
 
 
 def period_from_transient(result: TransientResult, bearing: int = 0,
@@ -65,7 +66,9 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                    harmonics: int = 8, time_points: int | None = None,
                    floquet: str = "samples",
                    start_amplitude_c: float | None = None,
-                   forced_start: str = "linear") -> PeriodicOrbitResult:
+                   forced_start: str = "linear",
+                   bdf_max_order: int = 5,
+                   sensitivity_solve: str = "columns") -> PeriodicOrbitResult:
     """Periodic orbit of eq. 12 by single shooting, with its Floquet multipliers.
 
     Unknowns: the state x0 = (r, ṙ) (2n) at t0, and for ``kind="autonomous"`` the period T
@@ -144,6 +147,20 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         ``stats["linear_start_scale"]``), the orbit's first harmonic at small unbalance;
         ``"equilibrium"`` the static equilibrium at rest (the start before; docs/nonlinear.md
         "Forced orbits from the linear response").
+    bdf_max_order
+        Highest BDF order of the CVODES flows (1–5, default 5), as for
+        :func:`rotordyn.transient`: 2 can pay on a flexible rotor whose lightly damped
+        bending modes hold orders 3–5 at their stability limit (``stats["order_reductions"]``
+        many per flow) at loose tolerances (the overhung pump at atol 1e-9 m: 839 steps per
+        period instead of 2,562); at atol_m 1e-12 it took more steps there (12,709 against
+        8,345; docs/nonlinear.md "Shooting on a flexible rotor").
+    sensitivity_solve
+        The corrector of the monodromy's sensitivity columns: ``"columns"`` (default)
+        CVODES's own corrector, one back-substitution per column with its lagged Newton
+        matrix; ``"blocked"`` (opt-in) all 2n columns in one solve per iteration with the
+        exact matrix I − γA (2.45× less CPU on the pump's Newton flows; it changes the
+        Newton path, so three tests measured on the columns' path differ: not the default
+        yet, docs/nonlinear.md). Same error tests.
 
     Returns
     -------
@@ -287,6 +304,7 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     c.rtol, c.atol_position = float(rtol), float(atol_m)
     c.atol_velocity = float(atol_m) * max(abs(omega), 2 * np.pi / float(period_s), 1.0)
     c.max_steps = int(max_steps)
+    c.max_order = v.integer("bdf_max_order", bdf_max_order, lo=1, hi=5)
     if sensitivity_rtol is not None:
         v.in_range("sensitivity_rtol", sensitivity_rtol, 1e-14, 0.1)
     if hb:
@@ -306,6 +324,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     opt.sensitivity_error_control = v.boolean("sensitivity_error_control",
                                               sensitivity_error_control)
     opt.broyden = v.choice("newton", newton, NEWTON) == "broyden"
+    opt.blocked_sensitivities = v.choice("sensitivity_solve", sensitivity_solve,
+                                         SENSITIVITY_SOLVES) == "blocked"
     res = _core.periodic_orbit(asm.solver, inp, opt)
     return _with_hint(orbit_result(asm, res, kind, float(speed_hz), float(chamber_pressure_pa),
                                    a, extra_stats=start_stats), start_scale, sigma)
@@ -324,7 +344,7 @@ def _amplitude_ladder(kw: dict) -> PeriodicOrbitResult:
                                "n_out", "rtol", "atol_m", "tol", "max_iter", "max_steps",
                                "sensitivity_error_control", "sensitivity_rtol", "newton",
                                "method", "harmonics", "time_points", "floquet",
-                               "forced_start")}
+                               "forced_start", "bdf_max_order", "sensitivity_solve")}
     res, closed, tried = None, None, []
     for amp in START_AMPLITUDES_C:
         try:
@@ -412,6 +432,9 @@ def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: floa
                "sens_rhs_evals": res.sens_rhs_evals, "jac_evals": res.jac_evals,
                "reynolds_solves": res.reynolds_solves,
                "sensitivity_flows": res.sensitivity_flows,
+               "order_reductions": res.order_reductions,
+               "sens_linear_solves": res.sens_linear_solves,
+               "sens_factorizations": res.sens_factorizations,
                "monodromy_rtol": float(res.monodromy_rtol),
                "newton_correction": float(res.newton_correction), **(extra_stats or {})},
         status=status, message=message)

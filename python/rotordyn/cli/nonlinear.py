@@ -29,6 +29,11 @@ def register(sub) -> None:
                             "balance, with its Floquet multipliers")
     _orbit_arguments(s)
     _hb_arguments(s)
+    s.add_argument("--bdf-max-order", type=int, default=5, metavar="Q",
+                   help="highest BDF order of the CVODES flows, 1..5 (default 5); 2 can "
+                        "pay on a flexible rotor whose undamped bending modes hold orders "
+                        "3-5 at their stability limit, at loose tolerances "
+                        "(docs/nonlinear.md)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="write the orbit and the multipliers in the unit circle")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -235,7 +240,8 @@ def _cmd_periodic_orbit(args) -> int:
     res = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
                                   kind=args.kind, start=start, unbalances=ub,
                                   subharmonic=args.subharmonic, rtol=args.rtol, tol=args.tol,
-                                  forced_start=args.forced_start, **hb)
+                                  forced_start=args.forced_start,
+                                  bdf_max_order=args.bdf_max_order, **hb)
     if args.json:
         mu = np.asarray(res.multipliers, dtype=complex)
         print(json_text({
