@@ -80,3 +80,19 @@ def test_n_modes_cut_keeps_the_verdict_over_every_root(tmp_path):
     assert len(df) == 3
     assert df.max_real_1_per_s.iloc[0] == pytest.approx(full.max_real_1_per_s, rel=1e-9)
     assert bool(df.point_stable.iloc[0]) == full.stable
+
+
+def test_an_undamped_rotor_keeps_its_verdict_with_n_modes():
+    """A conservative gyroscopic rotor (linear springs, no damping): its roots are refined from
+    their vectors to exactly imaginary; the verdict's eigenvalues-only solve past an n_modes
+    cut skipped that and dgeev's rounding (+3.5e-8 1/s) made the point unstable with
+    n_modes = 4 and stable without (found by the review of this change)."""
+    steel = rd.Material("steel", density_kg_m3=7810.0, young_pa=211e9, shear_modulus_pa=81.2e9)
+    shaft = tuple(rd.ShaftSection(length_m=0.25, outer_diameter_m=0.05) for _ in range(6))
+    disks = (rd.Disk.from_geometry(3, steel, width_m=0.07, outer_diameter_m=0.28,
+                                   inner_diameter_m=0.05),)
+    sup = tuple(rd.Support(s, "linear", kxx_n_per_m=1e4, kyy_n_per_m=1e4) for s in (0, 6))
+    s = rd.System(rotor=rd.Rotor(shaft, disks), materials=(steel,), supports=sup)
+    full, cut = rd.stability(s, 1.0), rd.stability(s, 1.0, n_modes=4)
+    assert full.stable and cut.stable
+    assert full.max_real_1_per_s == 0.0 and cut.max_real_1_per_s == 0.0

@@ -209,9 +209,11 @@ ModalResult modal_impl(const Eigen::MatrixXd& M,
     // from dgeev itself: 27.6 s → 0.4 s CPU for all 244 modes of a 244-DOF rotor.
     const Eigen::MatrixXd& D = dense_D();
     const Eigen::MatrixXd A = state_matrix(M, D, K);
-    if (n_modes <= 0 && !with_modes) {
-      // Every root, eigenvalues only (a verdict over all of them): no vectors, so the
-      // whirl of these roots is not classified (planar).
+    // Every root, eigenvalues only (a verdict over all of them): no vectors, so the whirl of
+    // these roots is not classified (planar). Not for a conservative gyroscopic pencil: its
+    // roots are refined below from their vectors (else dgeev's rounding in Re λ, up to
+    // ~1e-6·|λ|, would reach the verdict and make it depend on n_modes).
+    if (n_modes <= 0 && !with_modes && !detail::conservative_gyroscopic(M, D, K)) {
       eig_general(A, w, nullptr);
       const std::vector<char> rigid = rigid_marks(w);
       idx = pick_modes(w, n_modes, zero_here, &rigid);

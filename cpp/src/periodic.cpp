@@ -4,6 +4,7 @@
 
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
+#include <sundials/sundials_config.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
@@ -256,6 +257,12 @@ double film_step_fraction(const SystemModel& m, const Eigen::Ref<const Eigen::Ma
 }
 
 void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt) {
+#if SUNDIALS_VERSION_MAJOR != 6
+  // refused before any CVODES memory exists (shooting_sens.cpp redeclares SUNDIALS 6's layout)
+  if (opt.blocked_sensitivities)
+    throw InputError(std::string("sensitivity_solve: 'blocked' needs SUNDIALS 6 (this build "
+                                 "has ") + SUNDIALS_VERSION + "); use 'columns'");
+#endif
   const Eigen::Index n = solver.model().n();
   auto vec_ok = [&](const Eigen::VectorXd& v, const char* name, bool allow_empty) {
     cvode_detail::check_state_vector(v, name, n, allow_empty);

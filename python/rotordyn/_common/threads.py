@@ -146,6 +146,20 @@ def _exit():
                 _eigen_pending = None
 
 
+class core_calls:
+    """Context of core calls made outside a public analysis (a sweep chunk's C++ batches on
+    a pool thread): counted as running, so a set_eigen_threads waits for them too, with the
+    BLAS limited as in :func:`limited_blas`."""
+
+    def __enter__(self):
+        _enter()
+        return self
+
+    def __exit__(self, *exc):
+        _exit()
+        return False
+
+
 def limited_blas(fn):
     """Decorator of every public analysis: run ``fn`` with the BLAS limited to
     :func:`get_blas_threads` threads, as one public call (:mod:`rotordyn._common.calls`: the

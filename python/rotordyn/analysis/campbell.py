@@ -65,7 +65,7 @@ def campbell(system: System, speeds_hz, chamber_pressure_pa: float = 0.0,
             message[i] = lm.equilibrium.message if lm is not None else errors.get(i, "")
             continue
         try:
-            st = _stability_from(asm, lm, None if n_modes is None else k)
+            st = _stability_from(asm, lm, None if n_modes is None else k, verdict=False)
         except RotordynError as exc:
             status[i], message[i] = "error", f"{type(exc).__name__}: {exc}"
             continue

@@ -110,7 +110,11 @@ def mode_window(kind, n_modes: int) -> np.ndarray:
                           | (kind == "pad") & (np.arange(kind.size) < top))
 
 
-def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> StabilityResult:
+def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None,
+                    verdict: bool = True) -> StabilityResult:
+    """The modes of ``lm`` (the lowest ``n_modes``); ``verdict``: also every root past that
+    cut for the point's verdict (an extra eigenvalues-only solve; a Campbell diagram, which
+    reports no verdict, skips it)."""
     n = asm.n
     xy = asm.rotor.xy_pairs()
     if lm.status not in CONVERGED or not np.all(np.isfinite(lm.K)):
@@ -128,7 +132,7 @@ def _stability_from(asm: Assembled, lm: LinearModel, n_modes: int | None) -> Sta
     # the verdict covers every root: a cut to n_modes leaves the rest out of the modes only
     every = (np.asarray(_core.modal(lm.M, lm.D, lm.K, xy, 0, False,
                                     asm.rotor.rot_pairs()).eigenvalues)
-             if ask < n else None)
+             if ask < n and verdict else None)
     phi = np.asarray(r.modes)  # (n, k)
     whirl_code = np.asarray(r.whirl)
     if not (np.all(np.isfinite(lam)) and np.all(np.isfinite(phi))):

@@ -361,9 +361,10 @@ def _amplitude_ladder(kw: dict) -> PeriodicOrbitResult:
     if res is None:
         raise InputError(f"start_amplitude_c: every start from the equilibrium's whirl mode "
                          f"closes a film ({closed}); give a smaller start_amplitude_c")
-    why = ", ".join(tried) + (f"; {closed}" if closed else "")
+    why = (f"at {', '.join(tried)} of the clearance in turn"
+           + (f"; a start of {closed}" if closed else ""))
     return dataclasses.replace(res, message=f"{res.message} (started from the equilibrium's "
-                                            f"whirl mode at {why} of the clearance in turn)")
+                                            f"whirl mode {why})")
 
 
 def _with_hint(res: PeriodicOrbitResult, start_scale, sigma) -> PeriodicOrbitResult:

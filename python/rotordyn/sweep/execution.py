@@ -232,7 +232,10 @@ class Progress:
 
 # -- executors ----------------------------------------------------------------------------
 def _task(job: Job, chunk_id: int, lo: int, hi: int, pids=None):
-    t = run_chunk(job, chunk_id, lo, hi, pids)
+    from rotordyn._common.threads import core_calls
+
+    with core_calls():  # Eigen's thread count is not changed under the chunk's batches
+        t = run_chunk(job, chunk_id, lo, hi, pids)
     return t, counts_of(t)
 
 

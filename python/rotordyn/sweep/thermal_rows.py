@@ -143,8 +143,9 @@ def _modes_block(k, st, t, ids, asm, bearing=None):
         "mode": np.arange(1, n + 1, dtype=np.int64), "freq_hz": lam.imag / (2 * np.pi),
         "eig_real_1_per_s": lam.real, "damping_ratio": dr, "log_dec": ld,
         "whirl": np.array([str(w) for w in st.whirl], dtype=object), "kind": kind,
-        "mode_stable": np.asarray(ms, dtype=bool), "point_stable": bool(np.all(ms)),
-        "max_real_1_per_s": float(lam.real.max()),
+        # the point's verdict and max Re λ over every root (not only an n_modes cut)
+        "mode_stable": np.asarray(ms, dtype=bool), "point_stable": bool(st.stable),
+        "max_real_1_per_s": float(st.max_real_1_per_s),
         "journal_x_m": float(e.r[bc.jx]) if bc else math.nan,
         "journal_y_m": float(e.r[bc.jy]) if bc else math.nan,
         "h_min_m": float(np.nanmin(hm)) if len(hm) else math.nan,
