@@ -85,7 +85,8 @@ Eigen::MatrixXd balanced_exp(const Eigen::MatrixXd& A);
 /// (converged), or when the next level would exceed max_steps steps per period.
 struct RefinedMonodromy {
   Eigen::MatrixXd Phi;      ///< the finest level's monodromy (empty on failure)
-  /// | |μ_c| − |μ_c|_previous level | (inf with one level only: no estimate)
+  /// | |μ_c| − |μ_c|_previous level | (inf with one level only: no estimate); autonomous:
+  /// at least trivial_error
   double error = std::numeric_limits<double>::quiet_NaN();
   double trivial_error = std::numeric_limits<double>::quiet_NaN();  ///< |μ_triv − 1|
   int steps = 0;            ///< Magnus steps per period of Phi
@@ -98,7 +99,7 @@ struct RefinedMonodromy {
 };
 RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::MatrixXd& Z, double w,
                                    bool autonomous, double tol, int max_steps);
-/// The budget of refined_monodromy: `requested` if > 0, else 8 M steps per period.
+/// The budget of refined_monodromy: `requested` if > 0, else 128 M steps per period.
 int refined_max_steps(int M, int requested);
 
 /// out.block(p, q) += P(p, j) (E(j, q) X0 + s1 E'(j, q) X1 + s2 E''(j, q) X2) for every harmonic

@@ -56,7 +56,7 @@ struct HarmonicBalanceOptions {
   /// interpolated (magnus_substeps per sample interval), no error estimate.
   double floquet_tol = 1e-3;
   /// floquet = samples, floquet_tol > 0: the most Magnus steps per period (each level doubles
-  /// them and linearises the films at the new midpoints); 0: 8 M.
+  /// them and linearises the films at the new midpoints); 0: 128 M.
   int floquet_max_steps = 0;
   int magnus_substeps = 4;     ///< floquet = samples, floquet_tol = 0: steps per sample interval
   HillSelection hill_selection = HillSelection::centroid;  ///< floquet = hill: the rule
@@ -84,7 +84,7 @@ struct HarmonicBalanceResult {
   long linearizations = 0;     ///< film linearisations (one per sample per evaluation)
   long evaluations = 0;        ///< residual evaluations (M samples each)
   /// floquet = samples refined (floquet_tol > 0): | |μ_c| − |μ_c|_previous level | of the
-  /// reported multipliers (NaN otherwise), whether it met floquet_tol within the budget (a
+  /// reported multipliers, for an autonomous cycle at least |μ_trivial − 1| (NaN otherwise), whether it met floquet_tol within the budget (a
   /// stability verdict with | |μ_c| − 1 | ≤ floquet_error, or not converged, is unresolved),
   /// the Magnus steps per period, the levels, the film linearisations the refinement added
   /// (also counted in `linearizations`), the trivial multiplier's |μ − 1| and |μ_c| per level.

@@ -138,7 +138,7 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     floquet_tol, floquet_max_steps
         ``floquet="samples"``: the monodromy is refined on the orbit itself (the films
         linearised between the samples, 4th-order Magnus with Simpson nodes, the steps per
-        period doubled from M/2, at most ``floquet_max_steps``, default 8M) until |μ_c|
+        period doubled from M/2, at most ``floquet_max_steps``, default 128M) until |μ_c|
         moves by at most ``floquet_tol``·max(1, |μ_c|) between two levels;
         ``stats["floquet_error"]`` is that last change and ``stats["floquet_resolved"]`` is
         False (``stability_resolved`` of the result) when it did not converge or | |μ_c| − 1 |

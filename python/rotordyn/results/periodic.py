@@ -105,7 +105,7 @@ class PeriodicOrbitResult(Display):
         crit = "" if mc is None else (f", critical multiplier |μ| = {abs(mc):.4g}{pm} "
                                       f"({self.critical_type})")
         verdict = ("stable" if self.stable else "unstable") if self.stability_resolved \
-            else "stability unresolved
+            else "stability unresolved"
         amp = f", amplitude {self.amplitude() * 1e6:.4g} µm" if self.journal_x_m.shape[1] else ""
         return (head + f", period {self.period_s * 1e3:.5g} ms ({1 / self.period_s:.5g} Hz)"
                 f"{amp}, {verdict}{crit}>")
