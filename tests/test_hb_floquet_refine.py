@@ -62,8 +62,8 @@ def test_stiff_train_samples_agree_with_the_flow_within_the_estimate():
     refined |μ_c| agrees with one CVODES sensitivity flow (rtol 1e-4) from the same orbit
     within the reported error estimate + 1e-3 for the flow (measured 0.91989 ± 2.2e-3 against
     0.91908 at rtol 1e-4, 0.91910 at 1e-7: 4096 steps, 8160 more film linearisations, 2 s
-    CPU), the same verdict and type (fold); the former interpolated product of the same samples is off by
-    2.6e-2 (0.9447) and calls it a Neimark–Sacker multiplier."""
+    CPU), the same verdict and type (fold); the former interpolated product of the same
+    samples is off by 2.6e-2 (0.9447) and calls it a Neimark–Sacker multiplier."""
     s = rd.System.from_toml(MODELS / "motor_fan_train_guyan.toml")
     o = periodic_orbit(s, 110.0, method=HB, harmonics=8, tol=1e-8, start_amplitude_c=0.9)
     assert o.ok, o.message

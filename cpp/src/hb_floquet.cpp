@@ -178,9 +178,23 @@ RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::Matri
     const int ns = static_cast<int>(nodes.size()) / 2;
     Eigen::MatrixXd Phi = simpson_magnus(fr, nodes, T);
     if (!Phi.allFinite()) {
-      out.why = "non-finite monodromy from the samples (" + std::to_string(ns) + " steps)";
-      out.Phi.resize(0, 0);
-      return out;
+      // A coarse level of a stiff model can overflow (the rig's sleeve at M/2 = 16 steps:
+      // the commutator term of a long step): no estimate from it, the next level decides.
+      ++out.levels;
+      out.moduli.push_back(std::numeric_limits<double>::quiet_NaN());
+      out.error = std::numeric_limits<double>::quiet_NaN();
+      if (2 * ns > max_steps) {
+        out.why = "non-finite monodromy from the samples (" + std::to_string(ns) + " steps)";
+        out.Phi.resize(0, 0);
+        return out;
+      }
+      prev = std::numeric_limits<double>::quiet_NaN();
+      prev_type.clear();
+      if (!double_nodes(nodes, fr, P, Z, w, out)) {
+        out.Phi.resize(0, 0);
+        return out;
+      }
+      continue;
     }
     const Floquet fq = floquet(Phi, autonomous);
     const double mod = fq.critical >= 0 ? fq.critical_modulus : 0.0;
@@ -189,7 +203,7 @@ RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::Matri
     ++out.levels;
     out.moduli.push_back(mod);
     out.trivial_error = fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
-    if (out.levels >= 2) {
+    if (std::isfinite(prev)) {
       out.error = std::abs(mod - prev);
       if (out.error <= tol * std::max(1.0, mod) && fq.critical_type == prev_type) {
         out.converged = true;
@@ -204,12 +218,12 @@ RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::Matri
       return out;
     }
   }
-  // One level only (a budget below M steps): no estimate, so nothing is resolved. An
+  // One finite level only (a budget below M steps): no estimate, nothing resolved. An
   // autonomous cycle's trivial multiplier is exactly 1 for the exact orbit: its distance from
   // 1 measures what the refinement cannot (the HB orbit's truncation), and the whip cycle's
   // |μ_c| converged 9.4e-3 away from the flow's with a trivial error of 1.4e-2
   // (docs/nonlinear.md): the estimate is the larger of the two.
-  if (out.levels < 2) out.error = std::numeric_limits<double>::infinity();
+  if (!std::isfinite(out.error)) out.error = std::numeric_limits<double>::infinity();
   if (autonomous) out.error = std::max(out.error, out.trivial_error);
   out.ok = true;
   return out;

@@ -84,8 +84,8 @@ struct HarmonicBalanceResult {
   long linearizations = 0;     ///< film linearisations (one per sample per evaluation)
   long evaluations = 0;        ///< residual evaluations (M samples each)
   /// floquet = samples refined (floquet_tol > 0): | |μ_c| − |μ_c|_previous level | of the
-  /// reported multipliers, for an autonomous cycle at least |μ_trivial − 1| (NaN otherwise), whether it met floquet_tol within the budget (a
-  /// stability verdict with | |μ_c| − 1 | ≤ floquet_error, or not converged, is unresolved),
+  /// reported multipliers, for an autonomous cycle at least |μ_trivial − 1| (NaN otherwise),
+  /// whether the move met floquet_tol within the budget (a stability verdict with | |μ_c| − 1 | ≤ floquet_error, or not converged, is unresolved),
   /// the Magnus steps per period, the levels, the film linearisations the refinement added
   /// (also counted in `linearizations`), the trivial multiplier's |μ − 1| and |μ_c| per level.
   double floquet_error = std::numeric_limits<double>::quiet_NaN();
