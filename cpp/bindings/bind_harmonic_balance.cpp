@@ -26,6 +26,8 @@ void bind_harmonic_balance(py::module_& m) {
       .def_readwrite("film_continuation", &HarmonicBalanceOptions::film_continuation)
       .def_readwrite("floquet", &HarmonicBalanceOptions::floquet)
       .def_readwrite("magnus_substeps", &HarmonicBalanceOptions::magnus_substeps)
+      .def_readwrite("floquet_tol", &HarmonicBalanceOptions::floquet_tol)
+      .def_readwrite("floquet_max_steps", &HarmonicBalanceOptions::floquet_max_steps)
       .def_readwrite("hill_selection", &HarmonicBalanceOptions::hill_selection)
       .def_readwrite("hill_time_points", &HarmonicBalanceOptions::hill_time_points)
       .def_readwrite("cvode", &HarmonicBalanceOptions::cvode)
@@ -38,7 +40,14 @@ void bind_harmonic_balance(py::module_& m) {
       .def_readonly("time_points", &HarmonicBalanceResult::time_points)
       .def_readonly("frequency", &HarmonicBalanceResult::frequency)
       .def_readonly("linearizations", &HarmonicBalanceResult::linearizations)
-      .def_readonly("evaluations", &HarmonicBalanceResult::evaluations);
+      .def_readonly("evaluations", &HarmonicBalanceResult::evaluations)
+      .def_readonly("floquet_error", &HarmonicBalanceResult::floquet_error)
+      .def_readonly("floquet_converged", &HarmonicBalanceResult::floquet_converged)
+      .def_readonly("floquet_steps", &HarmonicBalanceResult::floquet_steps)
+      .def_readonly("floquet_levels", &HarmonicBalanceResult::floquet_levels)
+      .def_readonly("floquet_linearizations", &HarmonicBalanceResult::floquet_linearizations)
+      .def_readonly("floquet_trivial_error", &HarmonicBalanceResult::floquet_trivial_error)
+      .def_readonly("floquet_moduli", &HarmonicBalanceResult::floquet_moduli);
   m.def("harmonic_balance", &harmonic_balance, py::arg("solver"), py::arg("input"),
         py::arg("start_samples"), py::arg("options"), py::call_guard<py::gil_scoped_release>(),
         "Periodic orbit of eq. 12 by harmonic balance (AFT, Newton on the Fourier coefficients "

@@ -256,7 +256,27 @@ HarmonicBalanceResult harmonic_balance(SystemSolver& solver, const PeriodicInput
     finish();
     return out;
   }
-  if (opt.floquet == HbFloquet::samples) {
+  if (opt.floquet == HbFloquet::samples && opt.floquet_tol > 0) {
+    RefinedMonodromy rm = refined_monodromy(P, e, Z, w, autonomous, opt.floquet_tol,
+                                            refined_max_steps(M, opt.floquet_max_steps));
+    out.linearizations = P.linearizations;
+    out.floquet_linearizations = rm.linearizations;
+    out.floquet_steps = rm.steps;
+    out.floquet_levels = rm.levels;
+    out.floquet_moduli = rm.moduli;
+    if (!rm.ok) {
+      o.status = rm.contact ? "rub" : "error";
+      o.message = "harmonic balance: the Floquet multipliers from the samples: " + rm.why;
+      finish();
+      return out;
+    }
+    out.floquet_error = rm.error;
+    out.floquet_converged = rm.converged;
+    out.floquet_trivial_error = autonomous ? rm.trivial_error
+                                           : std::numeric_limits<double>::quiet_NaN();
+    o.monodromy = std::move(rm.Phi);
+    o.monodromy_rtol = 0.0;
+  } else if (opt.floquet == HbFloquet::samples) {
     o.monodromy = sample_monodromy(F, m, e, T, opt.magnus_substeps);
     o.monodromy_rtol = 0.0;
   } else if (opt.floquet == HbFloquet::hill) {

@@ -192,8 +192,6 @@ bool fill_orbit(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, doub
   return o.r.allFinite() && o.v.allFinite();
 }
 
-namespace {
-
 // exp(A) = D exp(D⁻¹ A D) D⁻¹ with D diagonal, powers of 2 (exact), balancing the rows and
 // columns of A (Osborne's iteration, as LAPACK's gebal). The first-order matrix of a
 // flexible rotor mixes metres, radians and their rates: on the overhung pump (36
@@ -237,6 +235,8 @@ Eigen::MatrixXd balanced_exp(const Eigen::MatrixXd& A) {
   }
   return d.asDiagonal() * B.exp() * d.cwiseInverse().asDiagonal();
 }
+
+namespace {
 
 // Monodromy of ẋ = A(t) x over one period from the samples A_j = A(t_j) (first-order form),
 // A(τ) trigonometrically interpolated, 4th-order Magnus (two Gauss points per step) with
@@ -424,6 +424,11 @@ int checked_time_points(const HarmonicBalanceOptions& ho) {
   require(ho.tol > 0 && std::isfinite(ho.tol), "tol: expected a value > 0");
   require(ho.max_iter >= 1, "max_iter: expected at least 1");
   require(ho.magnus_substeps >= 1, "magnus_substeps: expected at least 1");
+  require(ho.floquet_tol >= 0 && ho.floquet_tol < 1,
+          "floquet_tol: expected a value in [0, 1) (0: no refinement)");
+  require(ho.floquet_max_steps >= 0 && ho.floquet_max_steps <= 1000000,
+          "floquet_max_steps: expected 0 (8 M) or an integer in [1, 1e6], got " +
+              std::to_string(ho.floquet_max_steps));
   require(ho.hill_time_points == 0 ||
               (ho.hill_time_points >= 2 * H + 1 && ho.hill_time_points <= 100000),
           "hill_time_points: expected 0 (max(M, 8H)) or an integer in [2H + 1, 1e5], got " +

@@ -5,6 +5,7 @@
 #pragma once
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,35 @@ bool fill_orbit(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, doub
 /// interpolated, 4th-order Magnus with exponentials): no film solve.
 Eigen::MatrixXd sample_monodromy(const shooting_detail::Flow& F, const SystemModel& m,
                                  const Eval& e, double T, int substeps);
+/// exp(A) with A's rows and columns balanced first (Osborne, powers of 2): hb_detail.cpp.
+Eigen::MatrixXd balanced_exp(const Eigen::MatrixXd& A);
+
+/// The samples route refined (hb_floquet.cpp): the monodromy of the orbit's linearisation
+/// by 4th-order Magnus with Simpson nodes (each step's ends and midpoint) at which the films
+/// are linearised on the HB orbit itself (no interpolation of A(τ)); the first level's nodes
+/// are the Newton's M samples (M even; M/2 steps), each further level doubles the steps and
+/// linearises the films at the new midpoints only. Stops when the critical multiplier's
+/// modulus changed by ≤ tol·max(1, |μ_c|) between two levels and its type did not change
+/// (converged), or when the next level would exceed max_steps steps per period.
+struct RefinedMonodromy {
+  Eigen::MatrixXd Phi;      ///< the finest level's monodromy (empty on failure)
+  /// | |μ_c| − |μ_c|_previous level | (inf with one level only: no estimate); autonomous:
+  /// at least trivial_error
+  double error = std::numeric_limits<double>::quiet_NaN();
+  double trivial_error = std::numeric_limits<double>::quiet_NaN();  ///< |μ_triv − 1|
+  int steps = 0;            ///< Magnus steps per period of Phi
+  int levels = 0;
+  bool converged = false;
+  long linearizations = 0;  ///< film linearisations added (beyond the Newton's samples)
+  std::vector<double> moduli;  ///< |μ_c| per level
+  bool ok = false, contact = false;
+  std::string why;
+};
+RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::MatrixXd& Z, double w,
+                                   bool autonomous, double tol, int max_steps);
+/// The budget of refined_monodromy: `requested` if > 0, else 128 M steps per period.
+int refined_max_steps(int M, int requested);
+
 /// out.block(p, q) += P(p, j) (E(j, q) X0 + s1 E'(j, q) X1 + s2 E''(j, q) X2) for every harmonic
 /// row p and column q (n × n blocks): sample j's share of a projected linear operator (the AFT
 /// Jacobian: X0 = K + K_H, s1 X1 = ω D, s2 X2 = ω² M). hill.cpp.

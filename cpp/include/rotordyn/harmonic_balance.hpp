@@ -16,7 +16,9 @@
 #pragma once
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "rotordyn/hill.hpp"
 #include "rotordyn/periodic.hpp"
@@ -47,7 +49,16 @@ struct HarmonicBalanceOptions {
   /// The films' cavitation-set continuation between consecutive samples (as in a transient).
   bool film_continuation = true;
   HbFloquet floquet = HbFloquet::samples;
-  int magnus_substeps = 4;     ///< floquet = samples: Magnus steps per sample interval
+  /// floquet = samples: > 0 refines the monodromy on the orbit itself (the films linearised
+  /// between the samples, Simpson-node 4th-order Magnus, the steps doubled from M/2) until
+  /// |μ_c| moves by ≤ floquet_tol·max(1, |μ_c|) between two levels (result: floquet_error,
+  /// floquet_converged); 0: one product from the M samples, A(τ) trigonometrically
+  /// interpolated (magnus_substeps per sample interval), no error estimate.
+  double floquet_tol = 1e-3;
+  /// floquet = samples, floquet_tol > 0: the most Magnus steps per period (each level doubles
+  /// them and linearises the films at the new midpoints); 0: 128 M.
+  int floquet_max_steps = 0;
+  int magnus_substeps = 4;     ///< floquet = samples, floquet_tol = 0: steps per sample interval
   HillSelection hill_selection = HillSelection::centroid;  ///< floquet = hill: the rule
   /// floquet = hill: samples of the Jacobian of the Hill matrix; 0: max(M, 8H) — the Newton's
   /// own Jacobian when M ≥ 8H, else one more evaluation at the converged orbit on 8H samples
@@ -72,6 +83,17 @@ struct HarmonicBalanceResult {
   double frequency = 0.0;      ///< ω = 2π/T, rad/s
   long linearizations = 0;     ///< film linearisations (one per sample per evaluation)
   long evaluations = 0;        ///< residual evaluations (M samples each)
+  /// floquet = samples refined (floquet_tol > 0): | |μ_c| − |μ_c|_previous level | of the
+  /// reported multipliers, for an autonomous cycle at least |μ_trivial − 1| (NaN otherwise),
+  /// whether the move met floquet_tol within the budget (a stability verdict with | |μ_c| − 1 | ≤ floquet_error, or not converged, is unresolved),
+  /// the Magnus steps per period, the levels, the film linearisations the refinement added
+  /// (also counted in `linearizations`), the trivial multiplier's |μ − 1| and |μ_c| per level.
+  double floquet_error = std::numeric_limits<double>::quiet_NaN();
+  bool floquet_converged = false;
+  int floquet_steps = 0, floquet_levels = 0;
+  long floquet_linearizations = 0;
+  double floquet_trivial_error = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> floquet_moduli;
 };
 
 /// Harmonic balance from a start given as position samples `start_samples` (M0, n) at

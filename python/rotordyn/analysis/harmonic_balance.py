@@ -117,7 +117,7 @@ def forced_start(asm, omega: float, r_e: np.ndarray, q: np.ndarray, subharmonic:
 
 def solve(asm, inp, samples: np.ndarray | None, *, harmonics: int, time_points: int,
           tol: float, max_iter: int, floquet: str, cvode, sensitivity_rtol: float | None,
-          magnus_substeps: int = 4):
+          magnus_substeps: int = 4, floquet_tol: float = 1e-3, floquet_max_steps: int = 0):
     """The C++ harmonic balance on the prepared :class:`_core.PeriodicInput` ``inp`` from
     position samples (m0, n) over one period (or None: one flow from inp.r0, inp.v0)."""
     opt = _core.HarmonicBalanceOptions()
@@ -127,6 +127,8 @@ def solve(asm, inp, samples: np.ndarray | None, *, harmonics: int, time_points: 
     opt.max_iter = int(max_iter)
     opt.floquet = getattr(_core.HbFloquet, v.choice("floquet", floquet, FLOQUET))
     opt.magnus_substeps = v.integer("magnus_substeps", magnus_substeps, lo=1, hi=1000)
+    opt.floquet_tol = v.in_range("floquet_tol", floquet_tol, 0.0, 0.5)
+    opt.floquet_max_steps = v.integer("floquet_max_steps", floquet_max_steps, lo=0, hi=1000000)
     opt.cvode = cvode
     if sensitivity_rtol is not None:
         opt.sensitivity_rtol = float(sensitivity_rtol)
@@ -140,4 +142,21 @@ def hb_stats(res) -> dict:
             "time_points": int(res.time_points), "linearizations": int(res.linearizations),
             "evaluations": int(res.evaluations),
             "harmonic_amplitudes": tuple(float(x) for x in res.harmonic_amplitudes),
-            "coefficients": np.asarray(res.coefficients)}
+            "coefficients": np.asarray(res.coefficients), **floquet_stats(res)}
+
+
+def floquet_stats(res) -> dict:
+    """The refined samples route's entries (empty for the other routes): the error estimate
+    | |μ_c| − |μ_c|_previous level |, whether it met floquet_tol, the verdict's resolution
+    (converged and | |μ_c| − 1 | > the error), steps, levels and film linearisations."""
+    err = float(res.floquet_error)
+    if res.floquet_levels < 1 or res.orbit.status != "ok":
+        return {}
+    fq = res.orbit.floquet
+    mc = float(fq.critical_modulus) if fq.critical >= 0 else 0.0
+    return {"floquet_error": err, "floquet_converged": bool(res.floquet_converged),
+            "floquet_resolved": bool(res.floquet_converged and abs(mc - 1.0) > err),
+            "floquet_steps": int(res.floquet_steps), "floquet_levels": int(res.floquet_levels),
+            "floquet_linearizations": int(res.floquet_linearizations),
+            "floquet_trivial_error": float(res.floquet_trivial_error),
+            "floquet_moduli": tuple(float(x) for x in res.floquet_moduli)}

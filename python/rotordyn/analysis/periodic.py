@@ -64,7 +64,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                    sensitivity_rtol: float | None = None,
                    newton: str = "sensitivities", method: str = "shooting",
                    harmonics: int = 8, time_points: int | None = None,
-                   floquet: str = "samples",
+                   floquet: str = "samples", floquet_tol: float = 1e-3,
+                   floquet_max_steps: int = 0,
                    start_amplitude_c: float | None = None,
                    forced_start: str = "linear",
                    bdf_max_order: int = 5,
@@ -140,6 +141,16 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         eigenvector's harmonics; no film solve beyond those linearisations), ``"flow"`` (one
         CVODES sensitivity flow at ``sensitivity_rtol``) or ``"none"`` (docs/nonlinear.md,
         "Floquet multipliers by Hill's method": their accuracy measured against the flow).
+    floquet_tol, floquet_max_steps
+        ``floquet="samples"``: the monodromy is refined on the orbit itself (the films
+        linearised between the samples, 4th-order Magnus with Simpson nodes, the steps per
+        period doubled from M/2, at most ``floquet_max_steps``, default 128M) until |μ_c|
+        moves by at most ``floquet_tol``·max(1, |μ_c|) between two levels;
+        ``stats["floquet_error"]`` is that last change and ``stats["floquet_resolved"]`` is
+        False (``stability_resolved`` of the result) when it did not converge or | |μ_c| − 1 |
+        ≤ the error: the stable/unstable verdict is then not decided (use ``"flow"``).
+        ``floquet_tol=0``: the former single product from the M samples (A(τ) interpolated),
+        no error estimate (docs/nonlinear.md, "Refined sample multipliers").
     forced_start
         A forced orbit with ``start=None``: ``"linear"`` (default) the linearised system's
         unbalance response at the static equilibrium, r_e + Re(q e^{iΩt}) (the films' K_H,
@@ -310,7 +321,8 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     if hb:
         res = hbal.solve(asm, inp, samples, harmonics=harmonics, time_points=m_hb, tol=tol,
                          max_iter=max_iter, floquet=floquet, cvode=c,
-                         sensitivity_rtol=sensitivity_rtol)
+                         sensitivity_rtol=sensitivity_rtol, floquet_tol=floquet_tol,
+                         floquet_max_steps=floquet_max_steps)
         return _with_hint(orbit_result(asm, res.orbit, kind, float(speed_hz),
                                        float(chamber_pressure_pa), a,
                                        extra_stats={**hbal.hb_stats(res), **start_stats}),
@@ -344,7 +356,8 @@ def _amplitude_ladder(kw: dict) -> PeriodicOrbitResult:
                                "n_out", "rtol", "atol_m", "tol", "max_iter", "max_steps",
                                "sensitivity_error_control", "sensitivity_rtol", "newton",
                                "method", "harmonics", "time_points", "floquet",
-                               "forced_start", "bdf_max_order", "sensitivity_solve")}
+                               "forced_start", "bdf_max_order", "sensitivity_solve",
+                               "floquet_tol", "floquet_max_steps")}
     res, closed, tried = None, None, []
     for amp in START_AMPLITUDES_C:
         try:

@@ -78,6 +78,13 @@ class PeriodicOrbitResult(Display):
         return complex(self.multipliers[self.critical_index]) if self.critical_index >= 0 \
             else None
 
+    @property
+    def stability_resolved(self) -> bool:
+        """False where the multipliers' own error estimate leaves the stable/unstable verdict
+        undecided (harmonic balance, ``floquet="samples"``: the refinement did not converge
+        within its budget, or | |μ_c| − 1 | ≤ ``stats["floquet_error"]``); True otherwise."""
+        return bool(self.stats.get("floquet_resolved", True))
+
     def amplitude(self, bearing: int = 0) -> float:
         """Largest distance of the journal from the orbit's mean position, m. The samples
         close the period (the last repeats the first), so the mean is taken over one period
@@ -93,11 +100,15 @@ class PeriodicOrbitResult(Display):
         if not self.ok:
             return head + f": {self.message}>"
         mc = self.critical_multiplier
-        crit = "" if mc is None else (f", critical multiplier |μ| = {abs(mc):.4g} "
+        err = self.stats.get("floquet_error")
+        pm = "" if err is None else f" ± {err:.2g}"
+        crit = "" if mc is None else (f", critical multiplier |μ| = {abs(mc):.4g}{pm} "
                                       f"({self.critical_type})")
+        verdict = ("stable" if self.stable else "unstable") if self.stability_resolved \
+            else "stability unresolved"
         amp = f", amplitude {self.amplitude() * 1e6:.4g} µm" if self.journal_x_m.shape[1] else ""
         return (head + f", period {self.period_s * 1e3:.5g} ms ({1 / self.period_s:.5g} Hz)"
-                f"{amp}, {'stable' if self.stable else 'unstable'}{crit}>")
+                f"{amp}, {verdict}{crit}>")
 
     def to_frame(self) -> pd.DataFrame:
         """One row per (time, bearing) of the orbit, with the period and the stability."""
