@@ -52,16 +52,22 @@ def test_the_rig_keeps_both():
     assert t.status in ("ok", "no_crossing")
 
 
-def test_sweep_axis_of_pc_without_an_active_bearing(tmp_path):
+def _pc_spec(tmp_path, pc: str):
+    """A stability sweep of the compressor (no active bearing) with the p_c axis ``pc``."""
     spec = tmp_path / "s.toml"
     spec.write_text(f"""schema = "rotordyn/sweep/1"
 name = "pc-on-plain"
 model = "{MODELS / 'compressor_plain.toml'}"
 analysis = "stability"
 [grid]
-chamber_pressure_pa = [0.0, 1e5]
+chamber_pressure_pa = {pc}
 speed_hz = 60.0
 """)
+    return spec
+
+
+def test_sweep_axis_of_pc_without_an_active_bearing(tmp_path):
+    spec = _pc_spec(tmp_path, "[0.0, 1e5]")
     with pytest.raises(InputError, match=r"^grid\.chamber_pressure_pa: acts on an active"):
         SweepSpec.from_toml(spec)
 
@@ -86,19 +92,9 @@ def test_a_fixed_pc_without_an_active_bearing_is_refused(plain, call):
 
 
 def test_a_single_nonzero_pc_axis_value_is_refused(tmp_path):
-    spec = tmp_path / "s.toml"
-    spec.write_text(f"""schema = "rotordyn/sweep/1"
-name = "pc-on-plain"
-model = "{MODELS / 'compressor_plain.toml'}"
-analysis = "stability"
-[grid]
-chamber_pressure_pa = 1e5
-speed_hz = 60.0
-""")
     with pytest.raises(InputError, match=r"^grid\.chamber_pressure_pa: acts on an active"):
-        SweepSpec.from_toml(spec)
-    spec.write_text(spec.read_text().replace("= 1e5", "= 0.0"))
-    assert SweepSpec.from_toml(spec) is not None
+        SweepSpec.from_toml(_pc_spec(tmp_path, "1e5"))
+    assert SweepSpec.from_toml(_pc_spec(tmp_path, "0.0")) is not None
 
 
 def test_cli_stability_refuses_pc_without_an_active_bearing(capsys):

@@ -37,16 +37,23 @@ def test_a_growing_real_root_is_kept():
     assert np.asarray(r.eigenvalues) == pytest.approx([-1.5 + 1j * np.sqrt(4 - 2.25)], rel=1e-12)
 
 
-def _magnetic_pull_rotor():
+def _rotor(k_n_per_m=1e6, c_n_s_per_m=100.0, pull_n_per_m=None):
+    """A disk on a 1.5 m shaft on two linear supports (k, c); ``pull_n_per_m``: the rotor
+    core's unbalanced magnetic pull at the disk, a negative stiffness."""
     steel = rd.Material("steel", density_kg_m3=7810.0, young_pa=211e9, shear_modulus_pa=81.2e9)
     shaft = tuple(rd.ShaftSection(length_m=0.25, outer_diameter_m=0.05) for _ in range(6))
     disks = (rd.Disk.from_geometry(3, steel, width_m=0.07, outer_diameter_m=0.28,
                                    inner_diameter_m=0.05),)
-    sup = tuple(rd.Support(s, "linear", kxx_n_per_m=1e6, kyy_n_per_m=1e6, cxx_n_s_per_m=100.0,
-                           cyy_n_s_per_m=100.0) for s in (0, 6))
-    # the rotor core's unbalanced magnetic pull: a negative stiffness larger than the shaft's
-    pull = rd.Support(3, "linear", kxx_n_per_m=-3e6, kyy_n_per_m=-3e6)
-    return rd.System(rotor=rd.Rotor(shaft, disks), materials=(steel,), supports=sup + (pull,))
+    damp = {"cxx_n_s_per_m": c_n_s_per_m, "cyy_n_s_per_m": c_n_s_per_m} if c_n_s_per_m else {}
+    sup = tuple(rd.Support(s, "linear", kxx_n_per_m=k_n_per_m, kyy_n_per_m=k_n_per_m, **damp)
+                for s in (0, 6))
+    if pull_n_per_m is not None:
+        sup += (rd.Support(3, "linear", kxx_n_per_m=pull_n_per_m, kyy_n_per_m=pull_n_per_m),)
+    return rd.System(rotor=rd.Rotor(shaft, disks), materials=(steel,), supports=sup)
+
+
+def _magnetic_pull_rotor():
+    return _rotor(pull_n_per_m=-3e6)  # larger than the shaft's stiffness
 
 
 @pytest.mark.parametrize("n_modes", [None, 4])
@@ -87,12 +94,7 @@ def test_an_undamped_rotor_keeps_its_verdict_with_n_modes():
     their vectors to exactly imaginary; the verdict's eigenvalues-only solve past an n_modes
     cut skipped that and dgeev's rounding (+3.5e-8 1/s) made the point unstable with
     n_modes = 4 and stable without (found by the review of this change)."""
-    steel = rd.Material("steel", density_kg_m3=7810.0, young_pa=211e9, shear_modulus_pa=81.2e9)
-    shaft = tuple(rd.ShaftSection(length_m=0.25, outer_diameter_m=0.05) for _ in range(6))
-    disks = (rd.Disk.from_geometry(3, steel, width_m=0.07, outer_diameter_m=0.28,
-                                   inner_diameter_m=0.05),)
-    sup = tuple(rd.Support(s, "linear", kxx_n_per_m=1e4, kyy_n_per_m=1e4) for s in (0, 6))
-    s = rd.System(rotor=rd.Rotor(shaft, disks), materials=(steel,), supports=sup)
+    s = _rotor(k_n_per_m=1e4, c_n_s_per_m=0.0)
     full, cut = rd.stability(s, 1.0), rd.stability(s, 1.0, n_modes=4)
     assert full.stable and cut.stable
     assert full.max_real_1_per_s == 0.0 and cut.max_real_1_per_s == 0.0
