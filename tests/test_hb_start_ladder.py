@@ -37,3 +37,20 @@ def test_a_failed_ladder_names_every_start(train):
     res = rd.periodic_orbit(train, 90.0, method="harmonic_balance", max_iter=2)
     assert not res.ok
     assert "at 0.3, 0.6" in res.message and "of the clearance in turn" in res.message
+
+
+def test_cli_floquet_tol(capsys):
+    """--floquet-tol reaches the refinement: 0 is the single product (no error estimate),
+    the default refines (floquet_error in the stats); with shooting it is refused."""
+    import json
+
+    from rotordyn.cli import main
+
+    base = ["periodic-orbit", str(MODEL), "--speed-hz", "110", "--start-amplitude-c", "0.9",
+            "--json"]
+    assert main(base + ["--method", "harmonic_balance", "--floquet-tol", "0"]) == 0
+    assert "floquet_error" not in json.loads(capsys.readouterr().out)["stats"]
+    assert main(base + ["--method", "harmonic_balance"]) == 0
+    assert json.loads(capsys.readouterr().out)["stats"]["floquet_error"] > 0
+    assert main(["periodic-orbit", str(MODEL), "--floquet-tol", "1e-3"]) == 2
+    assert "--floquet-tol: applies only to --method harmonic_balance" in capsys.readouterr().err

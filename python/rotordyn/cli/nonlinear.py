@@ -34,6 +34,11 @@ def register(sub) -> None:
                         "pay on a flexible rotor whose undamped bending modes hold orders "
                         "3-5 at their stability limit, at loose tolerances "
                         "(docs/nonlinear.md)")
+    s.add_argument("--floquet-tol", type=float, default=None, metavar="TOL",
+                   help="harmonic balance with --floquet samples: refine the multipliers "
+                        "(sub-steps doubled) until |μ_c| moves by at most TOL·max(1, |μ_c|), "
+                        "in [0, 0.5] (default 1e-3; 0: the single product from the samples, "
+                        "no error estimate)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="write the orbit and the multipliers in the unit circle")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -232,6 +237,12 @@ def _start_hint(args, start) -> str:
 def _cmd_periodic_orbit(args) -> int:
     check_figure(args.plot)
     hb = _hb_options(args)
+    if args.floquet_tol is not None:
+        if hb["method"] != "harmonic_balance" or hb["floquet"] != "samples":
+            raise InputError("--floquet-tol: applies only to --method harmonic_balance with "
+                             "--floquet samples")
+        hb["floquet_tol"] = v.in_range("--floquet-tol", args.floquet_tol, 0.0, 0.5,
+                                       lo_open=False)
     s = models.load(args.model)
     ub = _unbalances(args.unbalance)
     start = _settled_start(args, s, ub)
