@@ -22,7 +22,6 @@ Timings: medians of interleaved repeats, one thread, CPU beside wall, load print
 from __future__ import annotations
 
 import argparse
-import dataclasses
 import sys
 from pathlib import Path
 
@@ -30,6 +29,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
 from _common import footer, header, interleaved, print_load  # noqa: E402
+from bench_hill import compressor_orbit  # noqa: E402
 
 import rotordyn as rd  # noqa: E402
 
@@ -37,13 +37,7 @@ MODELS = Path(__file__).parent.parent / "tests" / "data" / "models"
 
 
 def compressor(h: int, m: int | None):
-    s = rd.System.from_toml(MODELS / "compressor_plain.toml")
-    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                              for b in s.bearings))
-    op = (130.0, 0.0, None)
-    tr = rd.transient(s, 0.4, 130.0, disturbance_m=(0.0, 6e-5), n_out=4001)
-    return s, op, rd.periodic_orbit(s, *op, start=tr, method="harmonic_balance", harmonics=h,
-                                    time_points=m, tol=1e-8, floquet="none")
+    return compressor_orbit(h, m)  # bench_hill's case (the same cycle in both benchmarks)
 
 
 def train(name: str):
