@@ -19,7 +19,7 @@ Checks:
   1e-5 K).
 """
 
-import dataclasses
+import importlib.util
 import math
 from pathlib import Path
 
@@ -28,9 +28,7 @@ import pytest
 
 import rotordyn
 from rotordyn import _core
-from rotordyn.analysis.assembly import assembled
 
-MODELS = Path(__file__).resolve().parent / "data" / "models"
 GEO = dict(diameter_m=0.1, length_m=0.05, clearance_m=1e-4)
 
 
@@ -78,26 +76,20 @@ def test_fill_is_continuous_where_a_node_changes_between_cavitated_and_full():
     assert worst < 1e-5
 
 
+def _scan_script():
+    """docs/calibration/thd_tilt_scan.py (its system-against-standalone solve)."""
+    path = Path(__file__).resolve().parents[1] / "docs" / "calibration" / "thd_tilt_scan.py"
+    spec = importlib.util.spec_from_file_location("thd_tilt_scan", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
 @pytest.mark.parametrize("theta_y_mrad", [0.27, 0.30])
 def test_tilted_compressor_system_and_standalone_meet_one_fixed_point(theta_y_mrad):
-    s = rotordyn.System.from_toml(MODELS / "compressor_plain_thermal.toml")
-    s = dataclasses.replace(s, bearings=tuple(
-        dataclasses.replace(b, n_circ=36, n_axial=6, tilt=True,
-                            config_theta_y_rad=theta_y_mrad * 1e-3)
-        for b in s.bearings))
-    th = s.thermal
-    res = rotordyn.system_thermal_equilibrium(s, speed_hz=150.0, model="thd")
-    assert res.status == "ok"
-    e = rotordyn.equilibrium(res.system, speed_hz=150.0)
-    ff = np.asarray(e.film_force_n)
     k = 0  # the NDE bearing, the film of the two fixed points
-    bc, b = assembled(res.system).bearings[k], s.bearings[k]
-    own, tilt = th.film(b.name), e.tilt[k]
-    sa = b.journal_bearing().thermal_equilibrium(
-        load_n=(-ff[bc.jx], -ff[bc.jy]), speed_hz=150.0, oil=th.oil, model="thd",
-        supply_temperature_c=th.supply_temperature_c, carry_over=own.carry_over,
-        supply_flow_m3_s=own.supply_flow_m3_s,
-        theta_x_rad=tilt["journal_theta_x_rad"], theta_y_rad=tilt["journal_theta_y_rad"])
+    res, sa, b = _scan_script().system_and_standalone(theta_y_mrad * 1e-3, k)
+    assert res.status == "ok"
     diff = np.max(np.abs(np.asarray(res.temperature_c[k]) - np.asarray(sa.temperature_c)))
     assert diff < 1e-5, (res.max_temperature_c[k], sa.max_temperature_c, diff)
     assert abs(res.journal_x_m[k] - sa.x_m) < 1e-6 * b.clearance_m

@@ -21,7 +21,11 @@ from rotordyn.analysis.assembly import assembled
 MODELS = Path(__file__).resolve().parents[2] / "tests" / "data" / "models"
 
 
-def point(theta_y_rad, k=0, grid=(36, 6)):
+def system_and_standalone(theta_y_rad, k=0, grid=(36, 6)):
+    """The system's THD equilibrium of the compressor with every housing misaligned by
+    ``theta_y_rad`` and the standalone tilted film of bearing ``k`` at the system's journal
+    tilt and film load: (system result, standalone result, bearing). Also used by
+    tests/test_thd_fill_continuity.py."""
     s = rotordyn.System.from_toml(MODELS / "compressor_plain_thermal.toml")
     s = dataclasses.replace(s, bearings=tuple(
         dataclasses.replace(b, n_circ=grid[0], n_axial=grid[1], tilt=True,
@@ -38,6 +42,11 @@ def point(theta_y_rad, k=0, grid=(36, 6)):
         supply_temperature_c=th.supply_temperature_c, carry_over=own.carry_over,
         supply_flow_m3_s=own.supply_flow_m3_s,
         theta_x_rad=tilt["journal_theta_x_rad"], theta_y_rad=tilt["journal_theta_y_rad"])
+    return res, sa, b
+
+
+def point(theta_y_rad, k=0, grid=(36, 6)):
+    res, sa, _ = system_and_standalone(theta_y_rad, k, grid)
     fs, fa = np.asarray(res.flows[k]["fill"]), np.asarray(sa.flows["fill"])
     return (float(res.max_temperature_c[k]), float(sa.max_temperature_c),
             float(np.max(np.abs(np.asarray(res.temperature_c[k])
