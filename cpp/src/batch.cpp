@@ -93,15 +93,16 @@ void fail_point(StabilityBatchResult& out, Eigen::Index i) {
   out.max_real[i] = nan;
 }
 
-/// The root with the largest real part, Re λ within 1e-9·max(|λ|, 1) of 0 counted as 0 (the
-/// round-off band of rotordyn.results.modes.settled_real); NaN when there is none.
+/// The root with the largest real part, Re λ within the round-off band kRoundOffRel counted
+/// as 0 (rotordyn.results.modes.settled_real); NaN when there is none.
 std::complex<double> least_stable_root(const Eigen::VectorXcd& roots) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::complex<double> best(nan, nan);
   double key_best = -std::numeric_limits<double>::infinity();
   for (Eigen::Index j = 0; j < roots.size(); ++j) {
     const double re = roots[j].real();
-    const double key = std::abs(re) < 1e-9 * std::max(std::abs(roots[j]), 1.0) ? 0.0 : re;
+    const double key =
+        std::abs(re) < kRoundOffRel * std::max(std::abs(roots[j]), 1.0) ? 0.0 : re;
     if (key > key_best || std::isnan(best.real())) {
       key_best = key;
       best = roots[j];

@@ -135,11 +135,10 @@ std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero,
     return std::abs(w(a)) < std::abs(w(b));
   });
   // Drop decaying real roots: overdamped motions carry no natural frequency. Keep them only
-  // when nothing else is left. A growing real root (Re λ above the round-off band of
-  // rotordyn.results.modes.ROUND_OFF_REL = 1e-9) is a divergence — a static instability,
+  // when nothing else is left. A growing real root (Re λ above the round-off band
+  // kRoundOffRel) is a divergence — a static instability,
   // e.g. an equilibrium past a fold — and is always kept (first: its frequency is 0), so
   // the verdict of every caller sees it.
-  constexpr double kRoundOffRel = 1e-9;
   std::vector<int> osc;
   for (int i : idx)
     if (w(i).imag() > 0 ||

@@ -26,6 +26,10 @@ struct ModalResult {
 /// the right eigenvectors as columns.
 void eig_general(const Eigen::MatrixXd& A, Eigen::VectorXcd& w, Eigen::MatrixXcd* V);
 
+/// Round-off band of Re λ: |Re λ| < kRoundOffRel·max(|λ|, 1) counts as 0 (the rule of
+/// rotordyn.results.modes.ROUND_OFF_REL, for the verdicts computed in C++).
+inline constexpr double kRoundOffRel = 1e-9;
+
 /// Modal analysis of the second-order system (dense, n_dof ≤ a few thousand).
 /// xy_pairs: (ix, iy) index pairs used to classify whirl. n_modes <= 0: all (with
 /// with_modes = false: eigenvalues only, for a verdict over every root; their whirl is then
