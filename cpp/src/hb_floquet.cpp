@@ -45,6 +45,12 @@ Frame make_frame(const shooting_detail::Flow& F, const SystemModel& m, const Eva
   const Eigen::Index k = static_cast<Eigen::Index>(fr.idx.size());
   fr.MK = -F.Mllt.solve(m.K);
   fr.MC = -F.Mllt.solve(F.Cd);
+  // A model with no film (linear supports only) has k = 0: Eigen's triangular solve of a
+  // zero-column right-hand side binds a reference to a null pointer (UBSan), so skip it.
+  if (k == 0) {
+    fr.Mf.resize(n, 0);
+    return fr;
+  }
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(n, k);
   for (Eigen::Index a = 0; a < k; ++a) S(fr.idx[static_cast<std::size_t>(a)], a) = 1.0;
   fr.Mf = F.Mllt.solve(S);
