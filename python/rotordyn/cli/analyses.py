@@ -227,6 +227,9 @@ def _cmd_equilibrium(args) -> int:
         }))
     else:
         print(table_text(e.to_frame()))
+        pads = e.pads_frame()
+        if len(pads):  # tilting pads: every pad's tilt, peak pressure, film and load state
+            print(table_text(pads))
     return 0 if e.converged else 1
 
 

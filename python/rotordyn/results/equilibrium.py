@@ -64,6 +64,10 @@ class EquilibriumResult(Display):
     # "pad_h_min_m", "pad_h_min_z_m" (tuples, every pad's minimum film and its z) and with
     # spherical pivots "pad_pitch_rad" (tuple): not columns of to_frame()}}
     tilt: dict = field(default_factory=dict)
+    # tilting-pad bearings (tilted or not), converged equilibria only: {bearing index:
+    # {"pad_pivot_deg", "pad_tilt_rad", "pad_p_max_pa", "pad_h_min_m", "pad_unloaded"}}, tuples
+    # in pad order (analysis.equilibrium.pad_outputs); one row per pad in pads_frame()
+    pads: dict = field(default_factory=dict)
 
     def __repr__(self) -> str:
         pos = "; ".join(f"{n or i}: x/c = {x:.4f}, y/c = {y:.4f}"
@@ -83,7 +87,8 @@ class EquilibriumResult(Display):
         numbers rather than arrays over the bearings: ``{name: {"config_ax_m", "config_ay_m",
         "journal_x_m", "journal_y_m", "x_over_c", "y_over_c", "eccentricity_ratio",
         "h_min_m", "h_min_angle_deg", "clearance_m"[, "sleeve_m" (list, m)][, the tilting
-        film's outputs of :attr:`tilt` (per-pad tuples as lists)]}}``."""
+        film's outputs of :attr:`tilt` (per-pad tuples as lists)][, a tilting-pad bearing's
+        :attr:`pads` (lists)]}}``."""
         out = {}
         for i, n in enumerate(self.bearing_names):
             d = {k: float(getattr(self, k)[i]) for k in (
@@ -93,6 +98,8 @@ class EquilibriumResult(Display):
                 d["sleeve_m"] = [float(x) for x in self.sleeve_m[i]]
             for k, val in self.tilt.get(i, {}).items():
                 d[k] = [float(x) for x in val] if isinstance(val, tuple) else float(val)
+            for k, val in self.pads.get(i, {}).items():
+                d[k] = [bool(x) if k == "pad_unloaded" else float(x) for x in val]
             out[str(n or f"bearing[{i}]")] = d
         return out
 
@@ -152,6 +159,22 @@ class EquilibriumResult(Display):
             return ax
 
         return draw(ax)
+
+    def pads_frame(self) -> pd.DataFrame:
+        """One row per pad of every tilting-pad bearing: ``bearing``, ``pad`` (0-based, pivot
+        order), ``pivot_deg``, ``tilt_rad``, ``p_max_pa`` (peak film pressure), ``h_min_m``
+        and ``unloaded`` (its film carries no pressure). Empty without tilting pads or
+        without a converged equilibrium."""
+        import pandas as pd
+        rows = []
+        for bi, d in self.pads.items():
+            for k in range(len(d["pad_tilt_rad"])):
+                rows.append({"bearing": self.bearing_names[bi], "pad": k,
+                             "pivot_deg": d["pad_pivot_deg"][k], "tilt_rad": d["pad_tilt_rad"][k],
+                             "p_max_pa": d["pad_p_max_pa"][k], "h_min_m": d["pad_h_min_m"][k],
+                             "unloaded": d["pad_unloaded"][k]})
+        return pd.DataFrame(rows, columns=["bearing", "pad", "pivot_deg", "tilt_rad", "p_max_pa",
+                                           "h_min_m", "unloaded"])
 
     def to_frame(self) -> pd.DataFrame:
         """One row per bearing: inputs (``chamber_pressure_pa`` with an active bearing only),
