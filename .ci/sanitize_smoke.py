@@ -163,6 +163,40 @@ def main() -> int:
     ad = AdaptiveRejection([("journal", 0)], [50.0], [[1e-9 + 1e-9j, 1e-9]], 1.0, p0_pa=2e4)
     rd.transient(rig, 0.01, 50.0, 0.5e6, -1.85e-3, adaptive=ad, unbalances=[(6, 2e-5, 0.0)],
                  n_out=11)
+    # the latest wave's entry points: the eigenvalues past an n_modes cut (stability's verdict
+    # over every root) and the root picker on a statically indeterminate train; rotating
+    # shaft damping (Ω K_c in the solver's H) through equilibrium, stability and a transient;
+    # the refined HB Floquet product on a model with films (k > 0 film columns; the linear
+    # model above has none); shooting's blocked sensitivity solve where SUNDIALS has it;
+    # every pad's state at a tilting-pad equilibrium
+    train = rd.System.from_toml(models / "motor_fan_train_guyan.toml")
+    st = rd.stability(train, 25.0, n_modes=4)
+    assert st.all_eigenvalues.size > st.eigenvalues.size
+    spin = dataclasses.replace(plain, rotor=dataclasses.replace(
+        plain.rotor, damping_beta_s=4e-5, damping_rotating=True))
+    assert rd.equilibrium(spin, 150.0).status == "ok"
+    rd.stability(spin, 150.0)
+    rd.transient(spin, 0.005, 150.0, disturbance_m=(1e-6, 0.0), n_out=6)
+    steel = rd.Material("steel", density_kg_m3=7810.0, young_pa=211e9, shear_modulus_pa=81.2e9)
+    smooth = rd.System(
+        rotor=rd.Rotor(tuple(rd.ShaftSection(length_m=0.1, outer_diameter_m=0.1)
+                             for _ in range(4)), ()),
+        materials=(steel,), reduction=rd.Reduction(master_stations=(0, 4), method="guyan"),
+        bearings=tuple(rd.FluidFilmBearing(st_, diameter_m=0.05, length_m=0.025,
+                                           clearance_m=1e-4, viscosity_pa_s=0.03, n_circ=36,
+                                           n_axial=6, cavitation="none") for st_ in (0, 4)))
+    hb = rd.periodic_orbit(smooth, 15.0, kind="forced", unbalances=[(2, 8e-3, 0.0)],
+                           method="harmonic_balance", harmonics=4, floquet="samples",
+                           floquet_tol=1e-4)
+    assert hb.ok, hb.message
+    try:
+        sh = rd.periodic_orbit(lin, 60.0, kind="forced", unbalances=ub,
+                               sensitivity_solve="blocked")
+        assert sh.ok, sh.message
+    except rd.InputError as exc:  # SUNDIALS before 6: refused by name
+        assert "sensitivity_solve" in str(exc), exc
+    pads = rd.equilibrium(rd.System.from_toml(models / "compressor_tilting_pad.toml"), 40.0)
+    assert pads.pads_frame().unloaded.sum() == 2
     print("sanitize_smoke: ok")
     return 0
 
