@@ -173,7 +173,8 @@ def main() -> int:
     st = rd.stability(train, 25.0, n_modes=4)
     assert st.all_eigenvalues.size > st.eigenvalues.size
     spin = dataclasses.replace(plain, rotor=dataclasses.replace(
-        plain.rotor, damping_beta_s=4e-5, damping_rotating=True))
+        plain.rotor, damping_beta_s=4e-5, damping_rotating=True), bearings=(dataclasses.replace(
+            plain.bearings[0], config_ay_m=1e-5),) + plain.bearings[1:])  # with an offset
     assert rd.equilibrium(spin, 150.0).status == "ok"
     rd.stability(spin, 150.0)
     rd.transient(spin, 0.005, 150.0, disturbance_m=(1e-6, 0.0), n_out=6)

@@ -500,17 +500,10 @@ def test_rotating_damping_refusals_and_toml():
     s = compressor_plain()
     s = dataclasses.replace(s, rotor=dataclasses.replace(s.rotor, damping_beta_s=1e-5,
                                                          damping_rotating=True))
-    # static's shear/moment recovery does not carry the circulatory force; a housing offset
-    # bends the shaft under it, which is not carried either
+    # static's shear/moment recovery does not carry the circulatory force (housing offsets
+    # are carried: tests/test_rotating_damping_offsets.py)
     with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):
         rd.static(s, 50.0)
-    off = dataclasses.replace(s, bearings=(dataclasses.replace(s.bearings[0], config_ay_m=1e-5),)
-                              + s.bearings[1:])
-    with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating.*offset"):
-        rd.equilibrium(off, 50.0)
-    with pytest.raises(rd.InputError, match=r"config_ay_m with rotor\.damping_rotating"):
-        rd.threshold(_jeffcott(20.0, 1e-4), "config_ay_m",
-                     bounds=(0.0, 1e-4))
     back = rd.System.from_toml(s.to_toml(), is_text=True)
     assert back == s and "damping_rotating = true" in s.to_toml()
     with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):

@@ -29,7 +29,7 @@ Eigen::VectorXd parameter_rhs(const Flow& F, const SystemModel& m, const Continu
   if (c.parameter == ContinuationParameter::chamber_pressure)
     d.tail(F.n) = F.Mllt.solve(m.chamber);
   else
-    d.tail(F.n) = -F.Mllt.solve(m.K * c.config_direction);
+    d.tail(F.n) = -F.Mllt.solve(m.offset_load(c.base.omega, c.config_direction));
   return d;
 }
 

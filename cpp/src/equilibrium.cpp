@@ -104,7 +104,7 @@ EquilibriumResult SystemSolver::equilibrium(double omega, double pc, const Eigen
   } within_call{*this, !carry_};
   if (within_call.own) carry_sets(true);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
-  const Eigen::VectorXd Ka = model_.K * a;
+  const Eigen::VectorXd Ka = model_.offset_load(omega, a);
   const Eigen::VectorXd F = model_.Q + pc * model_.chamber - Ka;  // eq. 14 right side less H
   EquilibriumResult out;
   out.load_scale = std::max({inf_norm(model_.Q), inf_norm(Ka), inf_norm(pc * model_.chamber),

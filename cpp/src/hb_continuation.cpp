@@ -461,7 +461,8 @@ HbContinuationStep hb_continuation_step(SystemSolver& solver, const HbContinuati
   };
   Eigen::VectorXd exact;
   if (c.parameter == ContinuationParameter::chamber_pressure) exact = -m.chamber;
-  if (c.parameter == ContinuationParameter::config) exact = m.K * c.config_direction;
+  if (c.parameter == ContinuationParameter::config)
+    exact = m.offset_load(c.base.omega, c.config_direction);  // (K + Ω Kc) da
   return correct(at, exact, c, opt);
 }
 

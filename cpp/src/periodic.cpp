@@ -101,7 +101,7 @@ void setup_flow(Flow& F, SystemSolver& solver, const PeriodicInput& in) {
   F.N = 2 * F.n;
   F.Mllt.compute(m.mass_at(in.omega));
   require(F.Mllt.info() == Eigen::Success, "M: the mass matrix must be positive definite");
-  F.F0 = m.Q - m.K * in.a + in.chamber_pressure * m.chamber;
+  F.F0 = m.Q - m.offset_load(in.omega, in.a) + in.chamber_pressure * m.chamber;
   F.Cd = m.C + in.omega * m.G;
 }
 

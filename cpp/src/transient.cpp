@@ -70,6 +70,7 @@ struct Ctx {
   double noise_dt = 0.0;
   Eigen::LLT<Eigen::MatrixXd> Mllt;
   Eigen::VectorXd F0;     // Q − K a
+  Eigen::VectorXd KcA;    // Kc a (rotating damping with housing offsets; else empty)
   Eigen::VectorXd g;      // M⁻¹ c_s
   bool table_mass = false;  // bearing tables with mass coefficients: M = M(Ω)
   double mass_omega = std::numeric_limits<double>::quiet_NaN();  // Ω of Mllt (table_mass)
@@ -341,6 +342,7 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     const Eigen::VectorXd r = Y.head(n), v = Y.segment(n, n);
     const Eigen::VectorXd H = c.solver->film_forces(r, v, P.omega);
     Eigen::VectorXd f = c.F0 + P.pc * m.chamber;
+    if (c.KcA.size()) f.noalias() -= P.omega * c.KcA;
     if (in.unbalance_cos.size()) {
       const double cs = std::cos(P.theta), sn = std::sin(P.theta);
       f += P.omega * P.omega * (cs * in.unbalance_cos + sn * in.unbalance_sin);
@@ -579,6 +581,7 @@ TransientResult integrate(SystemSolver& solver, const TransientInput& in,
   c.Mllt.compute(m.M);
   require(c.Mllt.info() == Eigen::Success, "M: the mass matrix must be positive definite");
   c.F0 = m.Q - m.K * in.a;
+  if (m.Kc.size()) c.KcA = m.Kc * in.a;  // −Ω(t) Kc a: the offsets' circulatory load
   c.g = c.Mllt.solve(m.chamber);
   c.table_mass = m.has_table_mass();
   if (K.enabled && K.noise_std.size() && (K.noise_std.array() > 0).any()) {

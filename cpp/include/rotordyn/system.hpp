@@ -79,12 +79,22 @@ struct SystemModel {
   /// (rad/s), N·s/m: (n, n) or empty (none). It acts like the tables, inside H: the solver's
   /// H(Ω, r, ṙ) includes −Ω Kc r and its K_H includes Ω Kc, so every analysis built on H
   /// (equilibrium, linearisation, transient and its Jacobian, orbits, thresholds, sweeps over
-  /// Ω by differences) carries it. The damping itself (β K) is in C.
+  /// Ω by differences) carries it. The damping itself (β K) is in C. The housing offsets a of
+  /// eq. 14 bend the shaft too (r is relative to the housings, the shaft's displacement r + a):
+  /// their part −Ω Kc a is a load, in offset_load().
   Eigen::MatrixXd Kc;
   Eigen::VectorXd Q;           ///< (n,) static load (gravity), N
   Eigen::VectorXd chamber;     ///< (n,) chamber force per unit chamber pressure, N/Pa
   std::vector<FilmCoupling> films;
   std::vector<TableCoupling> tables;
+  /// (n,) The shaft's force from the housing offsets a at spin speed ω (rad/s): K a + ω Kc a
+  /// (elastic and, with rotating damping, circulatory), moved to the right side of eq. 14 as
+  /// −offset_load(ω, a).
+  Eigen::VectorXd offset_load(double omega, const Eigen::VectorXd& a) const {
+    Eigen::VectorXd f = K * a;
+    if (Kc.size()) f.noalias() += omega * (Kc * a);
+    return f;
+  }
   /// Tilting pads (or any element whose own coordinates enter one film only): per pad, its
   /// coordinates in r, the tilt-like one first (film moment; any structural stiffness, often
   /// none), then optionally a radial pivot displacement (K(u, u) > 0, film force decreasing

@@ -332,12 +332,6 @@ class Assembled:
                 raise InputError(f"{name}: addresses the active bearing, but the system has "
                                  f"{len(active)}; set config_ax_m/config_ay_m on the bearings")
             a[getattr(active[0], idx)] = val
-        if self.system.rotor.has_rotating_damping and np.any(a):
-            raise InputError(
-                "rotor.damping_rotating: a housing offset (config_ax_m/config_ay_m, "
-                "config_theta_x_rad/config_theta_y_rad) bends the shaft, and the rotating "
-                "damping's circulatory force on that bend (−Ω K_c a) is not carried; set the "
-                "offsets to 0 or damping_rotating = false")
         return a
 
 
@@ -362,10 +356,6 @@ def check_operating_parameter(system: System, name: str, field: str = "vary") ->
     active bearing (or the system's only bearing). A scan over it would repeat one point."""
     asm = assembled(system)
     n_active = sum(bc.active for bc in asm.bearings)
-    if name == "config_ay_m" and system.rotor.has_rotating_damping:
-        raise InputError(f"{field}: config_ay_m with rotor.damping_rotating: the rotating "
-                         "damping's circulatory force on the shaft bent by a housing offset "
-                         "(−Ω K_c a) is not carried; vary speed_hz or a model field")
     if name == "chamber_pressure_pa" and n_active == 0:
         raise InputError(f"{field}: chamber_pressure_pa acts on an active journal bearing's "
                          "chamber and this model has none; vary speed_hz (or a model field, "

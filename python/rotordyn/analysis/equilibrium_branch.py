@@ -73,16 +73,26 @@ class _Problem:
         return asm, hz_to_rad_s(spd), pc, a, np.asarray(m.K), np.asarray(m.Q), np.asarray(
             m.chamber)
 
+    @staticmethod
+    def _offset_load(asm, w, a) -> np.ndarray:
+        """(K + Ω K_c) a (n,), N: the shaft's force from the housing offsets, elastic and,
+        with rotating damping, circulatory (the solver's H carries −Ω K_c r only)."""
+        m = asm.model
+        f = np.asarray(m.K) @ a
+        Kc = np.asarray(m.Kc)
+        return f + w * (Kc @ a) if Kc.size else f
+
     def load_scale(self, p) -> float:
-        _, _, pc, a, K, Q, ch = self._parts(p)
-        return max(np.abs(Q).max(initial=0.0), np.abs(K @ a).max(initial=0.0),
+        asm, w, pc, a, _, Q, ch = self._parts(p)
+        return max(np.abs(Q).max(initial=0.0),
+                   np.abs(self._offset_load(asm, w, a)).max(initial=0.0),
                    np.abs(pc * ch).max(initial=0.0), 1e-12)
 
     def residual(self, r, p):
         """R(r, p) (n,), N; a closing film raises ContactError."""
         asm, w, pc, a, K, Q, ch = self._parts(p)
         H = np.asarray(asm.solver.film_forces(r, np.zeros(self.n), w), dtype=float)
-        return K @ (r + a) - H - Q - pc * ch
+        return K @ r + self._offset_load(asm, w, a) - H - Q - pc * ch
 
     def jacobian_r(self, r, p):
         """∂R/∂r = K + K_H (n, n), N/m."""
@@ -94,7 +104,7 @@ class _Problem:
         if self.vary == "chamber_pressure_pa":
             return -np.asarray(self.asm0.model.chamber, dtype=float)
         if self.vary == "config_ay_m":
-            return np.asarray(self.asm0.model.K) @ self.a_dir
+            return self._offset_load(self.asm0, self._parts(p)[1], self.a_dir)
         return (self.residual(r, p + h) - self.residual(r, p - h)) / (2 * h)
 
 
