@@ -124,3 +124,68 @@ def test_equilibrium_branch_over_the_offset_with_rotating_damping():
         c = e.clearance_m[i]
         assert row.journal_x_m == pytest.approx(e.journal_x_m[i], abs=1e-7 * c)
         assert row.journal_y_m == pytest.approx(e.journal_y_m[i], abs=1e-7 * c)
+
+
+def test_static_analysis_carries_the_circulatory_force():
+    """rotordyn.static with rotating damping (refused before). The Jeffcott rotor of
+    tests/test_rotor_damping.py (rigid supports, 9.9 kg disk at mid-span, β = 1e-4 s,
+    c_i = βk): its disk sits where K r + Ω K_c r = Q puts it, y = y₀k²/(k² + Ω²c_i²),
+    x = −y₀kΩc_i/(k² + Ω²c_i²) (1e-9), and its deflection at the disk equals
+    rotordyn.equilibrium's; the reactions carry the weight and no sideways resultant (K_c has
+    none: 1e-9 of the weight) and stay vertical, and the internal shear and moment in yz are
+    the stationary-damping rotor's (1e-9) and vanish in xz (1e-9 of yz's) though the shaft is
+    bent sideways: its elastic and damping stresses balance there."""
+    import math
+
+    from test_rotor_damping import _jeffcott, _jeffcott_constants
+
+    c_e, beta = 20.0, 1e-4
+    s = _jeffcott(c_e, beta)
+    m, k, c_i, w_th = _jeffcott_constants(c_e, beta)
+    y0 = rd.equilibrium(s, 0.0).r[1]  # the sag at rest (the consistent gravity load)
+    for f in (0.5 * w_th / (2 * math.pi), 2.0 * w_th / (2 * math.pi)):
+        w = 2 * math.pi * f
+        st = rd.static(s, f)
+        assert st.status == "ok"
+        d = k * k + (w * c_i) ** 2
+        mid = int(np.argmin(np.abs(st.node_positions_m - 0.3)))
+        x, y = st.deflection_x_m[mid], st.deflection_y_m[mid]
+        np.testing.assert_allclose([x, y], [-y0 * k * w * c_i / d, y0 * k * k / d], rtol=1e-9)
+        e = rd.equilibrium(s, f)
+        np.testing.assert_allclose([x, y], e.r[:2], rtol=1e-9, atol=1e-12 * abs(y0))
+        assert x > 0  # towards the motion of the bottom of the shaft
+        R = st.reactions
+        assert R.force_y_n.sum() == pytest.approx(st.weight_n, rel=1e-9)
+        assert abs(R.force_x_n.sum()) <= 1e-9 * st.weight_n
+        rigid = R[R.kind == "rigid"]
+        # the bend turns sideways but the reactions do not: the elastic and the internal
+        # damping stresses balance each other in the xz plane, so the total internal moment
+        # there (end forces with (K_e + Ω K_c,e) u_e) vanishes while the shaft's curvature in
+        # xz does not; in yz it is the reaction's moment
+        assert abs(rigid.force_x_n).max() <= 1e-9 * st.weight_n
+        still = rd.static(_jeffcott(c_e, beta, rotating=False), f)
+        np.testing.assert_allclose(st.moment_yz_n_m, still.moment_yz_n_m, rtol=1e-9,
+                                   atol=1e-9 * abs(still.moment_yz_n_m).max())
+        np.testing.assert_allclose(st.shear_y_n, still.shear_y_n, rtol=1e-9,
+                                   atol=1e-9 * abs(still.shear_y_n).max())
+        assert abs(st.moment_xz_n_m).max() <= 1e-9 * abs(st.moment_yz_n_m).max()
+        assert abs(still.deflection_x_m).max() <= 1e-12 * abs(y0)
+
+
+def test_static_on_plain_bearings_with_guyan_masters():
+    """The compressor on plain bearings (Guyan masters), β = 4e-5 s rotating, 100 Hz, the NDE
+    housing offset: the slaves are recovered with K + Ω K_c, so every free node is in
+    equilibrium — the shear and moment vanish at the rotor's free ends (1e-9 of the weight,
+    1e-9 of the largest moment), the films carry the weight and no sideways resultant."""
+    s = _rotating(rd.System.from_toml(MODELS / "compressor_plain.toml"), 4e-5)
+    s = _offsets(s, **{s.bearings[0].name: {"config_ay_m": 2e-5}})
+    st = rd.static(s, 100.0)
+    assert st.status == "ok", st.message
+    W = st.weight_n
+    assert st.reactions.force_y_n.sum() == pytest.approx(W, rel=1e-9)
+    assert abs(st.reactions.force_x_n.sum()) <= 1e-9 * W
+    Mmax = max(abs(st.moment_yz_n_m).max(), abs(st.moment_xz_n_m).max())
+    for k in (0, -1):
+        assert abs(st.shear_x_n[k]) <= 1e-9 * W and abs(st.shear_y_n[k]) <= 1e-9 * W
+        assert abs(st.moment_xz_n_m[k]) <= 1e-9 * Mmax
+        assert abs(st.moment_yz_n_m[k]) <= 1e-9 * Mmax

@@ -494,16 +494,13 @@ def test_rotating_damping_on_the_compressor():
         assert np.nanmin(np.abs(row - lam)) <= 1e-6 * abs(lam)
 
 
-def test_rotating_damping_refusals_and_toml():
+def test_rotating_damping_toml_and_bad_flag():
     from coarse_models import compressor_plain
 
     s = compressor_plain()
     s = dataclasses.replace(s, rotor=dataclasses.replace(s.rotor, damping_beta_s=1e-5,
                                                          damping_rotating=True))
-    # static's shear/moment recovery does not carry the circulatory force (housing offsets
-    # are carried: tests/test_rotating_damping_offsets.py)
-    with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):
-        rd.static(s, 50.0)
+    # static and housing offsets carry it (tests/test_rotating_damping_offsets.py)
     back = rd.System.from_toml(s.to_toml(), is_text=True)
     assert back == s and "damping_rotating = true" in s.to_toml()
     with pytest.raises(rd.InputError, match=r"rotor\.damping_rotating"):

@@ -47,19 +47,6 @@ def gravity_load(system: System) -> np.ndarray:
                                                                    n_nodes))
 
 
-def refuse_rotating_damping(system: System, what: str) -> None:
-    """InputError when the rotor's β damping acts in the rotating frame: ``what`` does not
-    carry its speed-dependent circulatory force −Ω K_c q, and ignoring it would give a wrong
-    answer (the system analyses carry it through the solver's H, :class:`Assembled`)."""
-    if system.rotor.has_rotating_damping:
-        raise InputError(
-            f"rotor.damping_rotating: {what} does not include the circulatory force −Ω K_c q "
-            "of rotating (internal) shaft damping (the equilibrium, linearisation, stability, "
-            "Campbell, unbalance response, transient and periodic orbits do). Set "
-            "damping_rotating = false for this analysis (β then damps as stationary material "
-            "damping)")
-
-
 class Assembled:
     """The C++ ``SystemModel`` and ``SystemSolver`` of a System, with the index maps.
 

@@ -9,7 +9,15 @@ journals); with masters, the other DOFs solve K_ss u_s = f_s − K_sm u_m (stati
 exact for a static load; f the consistent gravity load −g M e_y). A rotor on supports alone is
 K u = f. Element end forces F_e = K_e u_e − f_e give the internal forces at both ends of every
 element; the reactions are the residual K u − f at the fixed DOFs (rigid supports), −K_s u of
-the linear supports and the film (or table) forces of the bearings."""
+the linear supports and the film (or table) forces of the bearings.
+
+Rotating (internal) shaft damping (``rotor.damping_rotating``): a shaft spinning at Ω in a
+static bend carries the internal damping stress of its rotating strain rate, the circulatory
+force −Ω K_c u (K_c = −Σ β_e K_e J, :meth:`RotorMatrices.circulatory`). It is part of the
+internal forces: every K above becomes K + Ω K_c — the slave recovery, the rotor on supports
+alone, the elements' end forces (K_e − Ω β_e K_e J_e) u_e and the residual at the supports.
+K_c has no resultant (rigid motions are in the null space of every K_e), so the reactions
+still carry the weight; they turn sideways with the bend."""
 
 from __future__ import annotations
 
@@ -17,25 +25,38 @@ import numpy as np
 
 from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
-from rotordyn.analysis.assembly import assembled, gravity_load, refuse_rotating_damping
+from rotordyn.analysis.assembly import assembled, gravity_load
 from rotordyn.analysis.equilibrium import equilibrium
-from rotordyn.analysis.modes import rotor_matrices
+from rotordyn.analysis.modes import rotor_matrices, turn_matrix
 from rotordyn.bearings import BEARING_TYPES
 from rotordyn.errors import InputError
 from rotordyn.model.system import System
 from rotordyn.results.static import StaticResult
 
 
-def _element_forces(system: System, u_full: np.ndarray, g: float):
+def _circulatory_betas(system: System, omega: float) -> list:
+    """Per section Ω β (s·rad/s) of its rotating damping: 0 without ``damping_rotating``."""
+    rot = system.rotor
+    if not rot.has_rotating_damping:
+        return [0.0] * len(rot.sections)
+    return [omega * (rot.damping_beta_s if sec.damping_beta_s is None else sec.damping_beta_s)
+            for sec in rot.sections]
+
+
+def _element_forces(system: System, u_full: np.ndarray, g: float, omega: float = 0.0):
     """(z (2 n_e,), F (2 n_e, 4)): for every element its left and right end positions and the
-    end forces (x, y, θx, θy) F_e = K_e u_e − f_e exerted on it by the rest of the rotor."""
+    end forces (x, y, θx, θy) F_e = (K_e + Ω K_c,e) u_e − f_e exerted on it by the rest of the
+    rotor (K_c,e = −β_e K_e J_e with rotating damping, else 0)."""
     z, F = [], []
     node = 0
     zs = 0.0
     uy = np.tile([0.0, 1.0, 0.0, 0.0], 2)
-    for sec in system.rotor.sections:
+    J8 = turn_matrix(8).toarray()
+    for sec, wb in zip(system.rotor.sections, _circulatory_betas(system, omega)):
         mat = system.material(sec.material)
         Ke, Me = sec.K(mat), sec.M(mat)
+        if wb:
+            Ke = Ke - wb * (Ke @ J8)
         fe = -g * (Me @ uy)
         le = sec.length_m / sec.n_elements
         for _ in range(sec.n_elements):
@@ -53,7 +74,9 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
            config_ay_m: float | None = None, *, config_ax_m: float | None = None,
            **equilibrium_kw) -> StaticResult:
     """Deflection, shear force, bending moment and reactions at the equilibrium at
-    ``speed_hz`` (bearing elements' films depend on it; a rotor on supports alone does not).
+    ``speed_hz`` (bearing elements' films depend on it, and with rotating shaft damping the
+    shaft's circulatory force Ω K_c u: the module's docstring; else a rotor on supports alone
+    does not).
 
     The configuration (``config_ay_m``, ``config_ax_m``: the active or only bearing's housing
     offset; other bearings' offsets from the model) and ``equilibrium_kw`` are those of
@@ -61,13 +84,20 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
     fields, never a deflection. See :class:`rotordyn.results.StaticResult` for the sign
     conventions."""
     import pandas as pd
-    refuse_rotating_damping(system, "static")
+    from rotordyn._common import validate as v
+    from rotordyn.units import hz_to_rad_s
+
+    v.finite("speed_hz", speed_hz)
     g = float(system.gravity_m_s2)
+    omega = hz_to_rad_s(float(speed_hz))
     rm = rotor_matrices(system, "none")
     full = rm.full
     dofs = np.asarray(full.dofs)
     n_full = 4 * (system.rotor.n_elements + 1)
-    Kc = np.asarray(full.K)
+    Kc = np.asarray(full.K)  # the constrained stiffness, + Ω K_c with rotating damping
+    circ = rm.circulatory()
+    if circ is not None:
+        Kc = Kc + omega * np.asarray(circ)
     f_ff = gravity_load(system)
     fc = f_ff[dofs]  # the consistent gravity load on the free DOFs
     nodes = system.rotor.station_nodes()
@@ -124,6 +154,14 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
     # Residual of the free-free rotor (without the linear supports): the supports' reactions
     # at their nodes, the bearing forces at theirs, ~0 elsewhere.
     K_ff = system.K().toarray()
+    if circ is not None:  # the free-free circulatory stiffness, element by element
+        J8 = turn_matrix(8).toarray()
+        node = 0
+        for sec, wb in zip(system.rotor.sections, _circulatory_betas(system, omega)):
+            Ke = sec.K(system.material(sec.material))
+            for _ in range(sec.n_elements):
+                K_ff[4 * node: 4 * node + 8, 4 * node: 4 * node + 8] -= wb * (Ke @ J8)
+                node += 1
     k_sup = np.zeros((n_full, n_full))
     for sp in system.supports:
         if sp.type == "linear":
@@ -141,7 +179,7 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
     columns = ["name", "station", "kind", "force_x_n", "force_y_n"]
     if any("film_moment_x_n_m" in r for r in reactions):
         columns += ["film_moment_x_n_m", "film_moment_y_n_m"]
-    z, F = _element_forces(system, u_full, g)
+    z, F = _element_forces(system, u_full, g, omega)
     # left end of an element: the forces left of the section are what the rotor to the left
     # exerts on it (+F); right end: minus the force the rest exerts there (−F).
     sgn = np.tile([1.0, -1.0], z.size // 2)

@@ -251,8 +251,8 @@ class Rotor:
     K_c = −(Σ β_e K_e) J (J turns every node's (x, y) and (θx, θy) by 90° about z), which
     destabilises forward whirl above a threshold speed. Carried by the rotor-alone analyses
     (:func:`rotordyn.modes`, :func:`rotordyn.rotor_campbell`) and by every system analysis
-    (the solver's H includes −Ω K_c r, the offsets' −Ω K_c a is a load); :func:`rotordyn.static`
-    refuses it. α stays stationary (external damping) either way (docs/model-file.md)."""
+    (the solver's H includes −Ω K_c r, the offsets' −Ω K_c a is a load) and
+    :func:`rotordyn.static` (the internal forces include Ω K_c u). α stays stationary (external damping) either way (docs/model-file.md)."""
 
     sections: tuple[ShaftSection, ...]
     disks: tuple[Disk, ...] = field(default_factory=tuple)
