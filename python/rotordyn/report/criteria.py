@@ -75,13 +75,77 @@ class SpeedRange:
     why: str
 
 
+def table_window(system):
+    """(lo, hi, text): the speeds (Hz) every bearing table of ``system`` covers (tables that
+    extrapolate, or of one speed, cover all), and which table bounds them; None without such a
+    table."""
+    from rotordyn.bearings import TableBearing
+
+    tabs = [b for b in system.bearings if isinstance(b, TableBearing) and not b.extrapolate
+            and len(b.speeds_hz) > 1]
+    if not tabs:
+        return None
+    lo_b = max(tabs, key=lambda b: b.speeds_hz[0])
+    hi_b = min(tabs, key=lambda b: b.speeds_hz[-1])
+    lo, hi = float(lo_b.speeds_hz[0]), float(hi_b.speeds_hz[-1])
+    name = lambda b: repr(b.name or f"station {b.station}")  # noqa: E731
+    text = (f"the table of bearing {name(hi_b)} ends at {hi:g} Hz"
+            + (f", that of bearing {name(lo_b)} starts at {lo:g} Hz" if lo > 0 else "")
+            + "; extend the tables or set extrapolate = true to analyse further")
+    return lo, hi, text
+
+
+def _within_tables(system, rng: SpeedRange, explicit: bool) -> SpeedRange:
+    """``rng`` limited to the speeds the bearing tables cover (the coefficients are not
+    defined outside them), saying so in its ``why``: an automatic range is cut there (as many
+    speeds over what is left), a given list keeps its speeds inside them; a
+    maximum continuous speed outside them, or a list with no speed inside, is refused naming
+    the option."""
+    from rotordyn.errors import InputError
+
+    win = table_window(system)
+    if win is None:
+        return rng
+    lo, hi, text = win
+    sp = rng.speeds_hz
+    tol = 1e-12 * max(abs(lo), abs(hi))
+    if sp[0] >= lo - tol and sp[-1] <= hi + tol:
+        return rng
+    cut = sp[(sp >= lo - tol) & (sp <= hi + tol)]
+    if explicit:
+        if cut.size == 0:
+            raise InputError(f"--speeds-hz: {sp[0]:g}–{sp[-1]:g} Hz has no speed within the "
+                             f"bearing tables' {lo:g}–{hi:g} Hz ({text})")
+        return SpeedRange(cut, min(rng.n_mc_hz, hi), f"{rng.why}; {sp.size - cut.size} of "
+                          f"them outside the bearing tables dropped: {text}")
+    if rng.n_mc_hz > hi + tol or rng.n_mc_hz < lo - tol:
+        raise InputError(f"--operating-speed-hz: the maximum continuous speed {rng.n_mc_hz:g} "
+                         f"Hz is outside the bearing tables' {lo:g}–{hi:g} Hz ({text})")
+    cut = np.linspace(max(sp[0], lo), min(sp[-1], hi), sp.size)  # the same grid size
+    return SpeedRange(cut, rng.n_mc_hz, f"{rng.why}; cut to {cut[0]:.4g}–{cut[-1]:.4g} Hz: "
+                      f"{text}")
+
+
 def speed_range(system, operating_speed_hz=None, speeds_hz=None, rigid_map=None,
                 paper: bool = False) -> SpeedRange:
     """The report's speeds: ``speeds_hz`` when given; else 2 %…125 % of the maximum operating
     speed (API 684), for the paper's rig its 5–120 Hz when that reaches further; else, for the
     paper's rig, its 5–120 Hz; else up to 125 % of the second
     undamped critical speed on stiff bearings (``rigid_map`` from :func:`critical_speed_map`),
-    so the first two criticals are in range."""
+    so the first two criticals are in range — then, with bearing tables, within the speeds
+    they cover (:func:`table_window`; N_mc at most their top over 1.25 when it was not
+    given)."""
+    rng = _speed_range(system, operating_speed_hz, speeds_hz, rigid_map, paper)
+    win = table_window(system)
+    if win is not None and speeds_hz is None and not operating_speed_hz \
+            and API_SPEED_FACTOR * rng.n_mc_hz > win[1]:
+        top = win[1] / API_SPEED_FACTOR
+        rng = SpeedRange(rng.speeds_hz, top, rng.why + f"; N_mc taken as {top:.4g} Hz, the "
+                         "tables' top speed / 1.25")
+    return _within_tables(system, rng, speeds_hz is not None)
+
+
+def _speed_range(system, operating_speed_hz, speeds_hz, rigid_map, paper) -> SpeedRange:
     if speeds_hz is not None:
         sp = np.asarray(speeds_hz, dtype=float)
         top = float(operating_speed_hz[1]) if operating_speed_hz else float(sp[-1]) / 1.25

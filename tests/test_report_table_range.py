@@ -1,0 +1,63 @@
+"""The report's speed range on a model with bearing tables (tests/data/models/
+compressor_table.toml: both tables over 0–200 Hz, no extrapolation). Before, the report without
+an operating speed ran its static analysis at N_mc = the second undamped critical on stiff
+bearings (525 Hz) and stopped with "speed 656.375 Hz is outside its table": an engineer's own
+table-bearing model could not be reported at all. Now the range stays inside the tables and
+says so (docs/report.md)."""
+
+import contextlib
+import dataclasses
+import io
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rotordyn as rd
+from rotordyn.cli import main
+from rotordyn.report.criteria import speed_range, table_window
+
+MODELS = Path(__file__).parent / "data" / "models"
+
+
+@pytest.fixture(scope="module")
+def table_model():
+    return rd.System.from_toml(MODELS / "compressor_table.toml")
+
+
+def test_automatic_range_is_cut_at_the_tables(table_model):
+    free = dataclasses.replace(table_model, bearings=tuple(
+        dataclasses.replace(b, extrapolate=True) for b in table_model.bearings))
+    wide = speed_range(free)  # extrapolating tables cover every speed: the criticals' range
+    assert wide.speeds_hz[-1] > 600.0 and table_window(free) is None
+    r = speed_range(table_model)
+    assert r.speeds_hz[-1] == pytest.approx(200.0) and r.speeds_hz[0] >= 0.0
+    assert np.all(np.diff(r.speeds_hz) > 0) and r.speeds_hz.size >= 60
+    assert r.n_mc_hz == pytest.approx(200.0 / 1.25)
+    assert "table of bearing 'NDE bearing' ends at 200 Hz" in r.why
+    assert "extrapolate = true" in r.why
+    # an operating range whose 125 % passes the tables: cut there, N_mc kept
+    r = speed_range(table_model, (140.0, 170.0))
+    assert r.speeds_hz[-1] == pytest.approx(200.0) and r.n_mc_hz == 170.0
+    assert "cut to" in r.why
+    # within the tables: unchanged
+    assert speed_range(table_model, (100.0, 150.0)).speeds_hz[-1] == pytest.approx(187.5)
+
+
+def test_given_speeds_and_refusals(table_model):
+    r = speed_range(table_model, None, np.arange(20.0, 241.0, 20.0))
+    assert r.speeds_hz[-1] == 200.0 and "2 of them outside the bearing tables dropped" in r.why
+    with pytest.raises(rd.InputError, match="--speeds-hz"):
+        speed_range(table_model, None, np.array([250.0, 300.0]))
+    with pytest.raises(rd.InputError, match="--operating-speed-hz.*210 Hz.*0–200 Hz"):
+        speed_range(table_model, (150.0, 210.0))
+
+
+def test_report_of_a_table_model_without_operating_speed(tmp_path):
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        code = main(["report", str(MODELS / "compressor_table.toml"), "--out", str(tmp_path)])
+    assert code == 0, err.getvalue()
+    text = (tmp_path / "report.txt").read_text(encoding="utf-8")
+    assert "critical speeds over 16.41–200 Hz" in text
+    assert "ends at 200 Hz" in text
