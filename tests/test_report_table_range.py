@@ -61,3 +61,23 @@ def test_report_of_a_table_model_without_operating_speed(tmp_path):
     text = (tmp_path / "report.txt").read_text(encoding="utf-8")
     assert "critical speeds over 16.41–200 Hz" in text
     assert "ends at 200 Hz" in text
+
+
+def test_campbell_and_unbalance_default_speeds_come_from_the_model(capsys):
+    """`rotordyn campbell` / `unbalance` without --speeds-hz: the paper's 5–120 Hz only on its
+    rig; on another machine the report's range (said on stderr). Before, every model got
+    5:120:1, so the compressor's criticals at 141 and 149 Hz were "no 1× crossing"."""
+    import argparse
+
+    from rotordyn.cli.analyses import _speeds
+
+    ns = argparse.Namespace(speeds_hz=None)
+    np.testing.assert_array_equal(_speeds(ns, rd.models.paper_rig()), np.arange(5.0, 121.0))
+    assert main(["campbell", str(MODELS / "compressor_table.toml")]) == 0
+    cap = capsys.readouterr()
+    assert "speeds: 121 from 16.41 to 200 Hz" in cap.err and "ends at 200 Hz" in cap.err
+    assert "141.066" in cap.out  # the first critical, beyond the rig's 120 Hz
+    assert main(["unbalance", str(MODELS / "compressor_linear.toml"), "--unbalance", "3,1e-4,0",
+                 "--operating-speed-hz", "100", "120"]) == 0
+    assert "speeds: 121 from 3 to 150 Hz (2 %…125 % of the maximum operating speed 120 Hz" \
+        in capsys.readouterr().err

@@ -99,8 +99,9 @@ def _register(sub) -> None:
 
     s = sub.add_parser("campbell", help="natural frequencies against speed; critical speeds")
     s.add_argument("model", help=MODEL_HELP)
-    s.add_argument("--speeds-hz", default="5:120:1", metavar="SPEC",
-                   help="speeds, Hz: start:stop:step (inclusive) or a comma-separated list")
+    s.add_argument("--speeds-hz", default=None, metavar="SPEC",
+                   help="speeds, Hz: start:stop:step (inclusive) or a comma-separated list "
+                        "(default: " + DEFAULT_SPEEDS_TEXT + ")")
     add_operating_point(s, speed=False)
     s.add_argument("--harmonic", type=float, default=1.0, metavar="N",
                    help="excitation order: critical speeds where f = N x speed")
@@ -134,8 +135,9 @@ def _register(sub) -> None:
     s.add_argument("--unbalance", action="append", required=True,
                    metavar="STATION,MASS_KG_M,PHASE_DEG",
                    help="unbalance m·e (kg m) at a station with its phase (deg); repeatable")
-    s.add_argument("--speeds-hz", default="5:120:1", metavar="SPEC",
-                   help="speeds, Hz: start:stop:step or a list; refined near each peak")
+    s.add_argument("--speeds-hz", default=None, metavar="SPEC",
+                   help="speeds, Hz: start:stop:step or a list; refined near each peak "
+                        "(default: " + DEFAULT_SPEEDS_TEXT + ")")
     s.add_argument("--station", type=int, action="append", default=None, metavar="K",
                    help="output station, repeatable (default: the unbalanced stations)")
     s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
@@ -439,10 +441,33 @@ def _failed_speeds(speeds_hz, status, messages=()) -> int:
     return 1 if status and not any(x in CONVERGED for x in status) else 0
 
 
+PAPER_MODELS = ("paper-rig", "paper-rig-hs")
+DEFAULT_SPEEDS_TEXT = ("5:120:1 on the paper's rig; else the report's range: 2 %%…125 %% of "
+                       "the maximum operating speed, or up to 125 %% of the second undamped "
+                       "critical speed on stiff bearings, within any bearing tables")
+
+
+def _speeds(args, s, operating_speed_hz=None) -> np.ndarray:
+    """``--speeds-hz`` as given; else the paper's 5–120 Hz for its rig, or the report's range
+    for the model (rotordyn.report.criteria.speed_range: from the operating speed or the
+    undamped criticals, within the bearing tables), said on stderr. A rig-only default (5–120
+    Hz) on another machine would miss its criticals or leave its bearing tables."""
+    if args.speeds_hz is not None:
+        return parse_speeds(args.speeds_hz)
+    if s.name in PAPER_MODELS:
+        return parse_speeds("5:120:1")
+    from rotordyn.report.criteria import speed_range
+
+    rng = speed_range(s, operating_speed_hz)
+    print(f"speeds: {len(rng.speeds_hz)} from {rng.speeds_hz[0]:.4g} to {rng.speeds_hz[-1]:.4g} "
+          f"Hz ({rng.why}; --speeds-hz to choose)", file=sys.stderr)
+    return rng.speeds_hz
+
+
 def _cmd_campbell(args) -> int:
     check_figure(args.plot)
-    speeds = parse_speeds(args.speeds_hz)
     s = models.load(args.model)
+    speeds = _speeds(args, s)
     th = _thermal(args, s)
     if s.bearings:
         c = analysis.campbell(s, speeds, args.chamber_pressure_pa, args.config_ay_m,
@@ -513,7 +538,9 @@ def _cmd_unbalance(args) -> int:
         except ValueError:
             raise InputError(
                 f"--unbalance: expected STATION,MASS_KG_M,PHASE_DEG, got {text!r}") from None
-    u = analysis.unbalance_response(s, ub, parse_speeds(args.speeds_hz), stations=args.station,
+    speeds = _speeds(args, s, tuple(args.operating_speed_hz) if args.operating_speed_hz
+                     else None)
+    u = analysis.unbalance_response(s, ub, speeds, stations=args.station,
                                     chamber_pressure_pa=args.chamber_pressure_pa,
                                     config_ay_m=args.config_ay_m,
                                     operating_speed_hz=args.operating_speed_hz,
