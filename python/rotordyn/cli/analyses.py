@@ -454,7 +454,11 @@ def _speeds(args, s, operating_speed_hz=None) -> np.ndarray:
     Hz) on another machine would miss its criticals or leave its bearing tables."""
     if args.speeds_hz is not None:
         return parse_speeds(args.speeds_hz)
-    if s.name in PAPER_MODELS:
+    if operating_speed_hz is not None and not all(np.isfinite(f) and f > 0
+                                                  for f in operating_speed_hz):
+        raise InputError(f"--operating-speed-hz: expected speeds > 0 Hz, got "
+                         f"{list(operating_speed_hz)!r}")
+    if s.name in PAPER_MODELS and operating_speed_hz is None:
         return parse_speeds("5:120:1")
     from rotordyn.report.criteria import speed_range
 
