@@ -462,7 +462,7 @@ def _speeds(args, s, operating_speed_hz=None) -> np.ndarray:
         return parse_speeds("5:120:1")
     from rotordyn.report.criteria import speed_range
 
-    rng = speed_range(s, operating_speed_hz)
+    rng = speed_range(s, operating_speed_hz, paper=s.name in PAPER_MODELS)
     print(f"speeds: {len(rng.speeds_hz)} from {rng.speeds_hz[0]:.4g} to {rng.speeds_hz[-1]:.4g} "
           f"Hz ({rng.why}; --speeds-hz to choose)", file=sys.stderr)
     return rng.speeds_hz
