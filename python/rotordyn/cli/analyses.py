@@ -105,7 +105,8 @@ def _register(sub) -> None:
     s.add_argument("--harmonic", type=float, default=1.0, metavar="N",
                    help="excitation order: critical speeds where f = N x speed")
     s.add_argument("--all-whirl", action="store_true",
-                   help="report backward-whirl crossings too (default: forward only)")
+                   help="report backward-whirl crossings too (default: forward and "
+                        "planar whirl, the modes an unbalance drives)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="also write the Campbell diagram to FIG.png or FIG.svg")
     _add_mode_window(s, n_default=None)
