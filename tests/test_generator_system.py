@@ -149,3 +149,29 @@ def test_generator_sweep_rows_equal_the_api(tmp_path, gen):
         assert list(g["kind"].astype(str)) == list(api["kind"].astype(str))[:n]
         assert "pad" in set(g["kind"].astype(str))
         assert g["point_stable"].all() == st.stable
+
+
+def test_unbalance_cli_speeds_follow_the_operating_speed(capsys):
+    """`rotordyn unbalance ... --operating-speed-hz MIN MAX` without --speeds-hz analyses API
+    684's 2 %…125 % of MAX (the report's range), not the paper rig's 5–120 Hz: a machine
+    running above 96 Hz lost its running range and its criticals there. On the generator
+    (50.5 Hz): 1.2625–63.125 Hz, with the first critical's peak (22.27 Hz, AF ≈ 28) and its
+    separation margin below the running range, (N_min − N_c)/N_min = (49.5 − 22.27)/49.5 =
+    55.0 %."""
+    import json
+
+    from rotordyn.cli import main
+
+    api_ub = 6350.0 * 11043.4064 / (60 * 50.5) * 1e-6     # U = 6350 W/N g·mm, kg·m
+    code = main(["unbalance", str(MODEL), "--unbalance", f"3,{api_ub:.6g},0", "--station", "3",
+                 "--operating-speed-hz", "49.5", "50.5", "--json"])
+    assert code == 0
+    out = json.loads(capsys.readouterr().out)
+    sp = np.asarray(out["response"]["speed_hz"], dtype=float)
+    assert sp.min() == pytest.approx(0.02 * 1.25 * 50.5, rel=1e-12)
+    assert sp.max() == pytest.approx(1.25 * 50.5, rel=1e-12)
+    pk = out["peaks"]["3"]
+    first = min(pk, key=lambda p: p["critical_speed_hz"])
+    assert 21.8 < first["critical_speed_hz"] < 23.03            # the bounds of the test above
+    assert first["separation_margin_pct"] == pytest.approx(
+        100 * (49.5 - first["critical_speed_hz"]) / 49.5, rel=1e-6)

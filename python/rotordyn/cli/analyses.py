@@ -135,8 +135,10 @@ def _register(sub) -> None:
     s.add_argument("--unbalance", action="append", required=True,
                    metavar="STATION,MASS_KG_M,PHASE_DEG",
                    help="unbalance m·e (kg m) at a station with its phase (deg); repeatable")
-    s.add_argument("--speeds-hz", default="5:120:1", metavar="SPEC",
-                   help="speeds, Hz: start:stop:step or a list; refined near each peak")
+    s.add_argument("--speeds-hz", default=None, metavar="SPEC",
+                   help="speeds, Hz: start:stop:step or a list; refined near each peak "
+                        "(default: with --operating-speed-hz 2 %%…125 %% of MAX in 121 "
+                        "speeds (API 684), else 5:120:1)")
     s.add_argument("--station", type=int, action="append", default=None, metavar="K",
                    help="output station, repeatable (default: the unbalanced stations)")
     s.add_argument("--operating-speed-hz", type=float, nargs=2, default=None,
@@ -500,6 +502,24 @@ def _cmd_threshold(args) -> int:
     return 0
 
 
+UNBALANCE_DEFAULT_SPEEDS = "5:120:1"  # without an operating speed (the paper rig's range)
+
+
+def _unbalance_speeds(args) -> np.ndarray:
+    """--speeds-hz; else, with --operating-speed-hz, API 684's 2 %…125 % of the maximum
+    operating speed (121 speeds, the report's grid: a 150 Hz compressor analysed over the
+    rig's 5–120 Hz had its 161 Hz critical and its margins cut off); else 5:120:1."""
+    if args.speeds_hz is not None:
+        return parse_speeds(args.speeds_hz)
+    if args.operating_speed_hz is not None:
+        hi = 1.25 * float(max(args.operating_speed_hz))
+        if not (np.isfinite(hi) and hi > 0):
+            raise InputError(f"--operating-speed-hz: expected speeds > 0 Hz, got "
+                             f"{args.operating_speed_hz!r}")
+        return np.linspace(0.02 * hi, hi, 121)
+    return parse_speeds(UNBALANCE_DEFAULT_SPEEDS)
+
+
 def _cmd_unbalance(args) -> int:
     check_figure(args.plot)
     s = models.load(args.model)
@@ -511,7 +531,7 @@ def _cmd_unbalance(args) -> int:
         except ValueError:
             raise InputError(
                 f"--unbalance: expected STATION,MASS_KG_M,PHASE_DEG, got {text!r}") from None
-    u = analysis.unbalance_response(s, ub, parse_speeds(args.speeds_hz), stations=args.station,
+    u = analysis.unbalance_response(s, ub, _unbalance_speeds(args), stations=args.station,
                                     chamber_pressure_pa=args.chamber_pressure_pa,
                                     config_ay_m=args.config_ay_m,
                                     operating_speed_hz=args.operating_speed_hz,
