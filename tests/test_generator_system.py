@@ -118,7 +118,8 @@ def test_generator_sweep_rows_equal_the_api(tmp_path, gen):
     tilting pads' own roots (2.30 Hz, δ 6725; 52.06 Hz at 50 Hz) "rotor", the API "pad".
     (Known, not fixed: at 40 Hz on this coarse 60 x 8 pad grid the sweep's batch and the API
     differ by up to 1e-3 in the heavily damped modes' frequencies and by one pad root, with
-    the same journal position to 1e-15; on the default 72 x 16 grid they agree.)"""
+    the same journal position to 1e-15; rotordyn.stability(..., tol=1e-12) gives the sweep's
+    numbers: K jumps within the equilibrium tolerance on that grid; on 72 x 16 they agree.)"""
     import dataclasses
 
     import pandas as pd
