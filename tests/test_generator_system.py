@@ -36,10 +36,13 @@ def _euler_bernoulli_first_hz(k_bearing: float | None) -> float:
     K, M = np.zeros((n, n)), np.zeros((n, n))
     for e, (l, d) in enumerate(elems):
         i, a = np.pi * d ** 4 / 64, np.pi * d ** 2 / 4
-        k = E * i / l ** 3 * np.array([[12, 6 * l, -12, 6 * l], [6 * l, 4 * l * l, -6 * l, 2 * l * l],
-                                       [-12, -6 * l, 12, -6 * l], [6 * l, 2 * l * l, -6 * l, 4 * l * l]])
-        m = rho * a * l / 420 * np.array([[156, 22 * l, 54, -13 * l], [22 * l, 4 * l * l, 13 * l, -3 * l * l],
-                                          [54, 13 * l, 156, -22 * l], [-13 * l, -3 * l * l, -22 * l, 4 * l * l]])
+        ll = l * l
+        k = E * i / l ** 3 * np.array([[12, 6 * l, -12, 6 * l], [6 * l, 4 * ll, -6 * l, 2 * ll],
+                                       [-12, -6 * l, 12, -6 * l], [6 * l, 2 * ll, -6 * l, 4 * ll]])
+        m = rho * a * l / 420 * np.array([[156, 22 * l, 54, -13 * l],
+                                          [22 * l, 4 * ll, 13 * l, -3 * ll],
+                                          [54, 13 * l, 156, -22 * l],
+                                          [-13 * l, -3 * ll, -22 * l, 4 * ll]])
         K[2 * e:2 * e + 4, 2 * e:2 * e + 4] += k
         M[2 * e:2 * e + 4, 2 * e:2 * e + 4] += m
     node = np.cumsum([0] + [c[2] for c in secs])      # FE node of each station
@@ -81,8 +84,8 @@ def test_generator_is_stable_with_every_log_dec_positive(gen):
 def test_generator_first_critical_between_independent_bounds(gen):
     """The first critical speed lies between Dunkerley's lower bound (rigid-support bending
     frequency in series with the rigid rotor bouncing on the bearings' vertical stiffness,
-    1/f² = 1/f_rigid² + 1/f_brg², f_brg = √(2k/m)/2π; k = 1.0e9 N/m is below both bearings' kyy
-    at 20–23 Hz, report's coefficient table: DE 1.03e9, NDE 1.47e9 at 19.8 Hz) and the rigid
+    1/f² = 1/f_rigid² + 1/f_brg², f_brg = √(2k/m)/2π; k = 1.0e9 N/m is below both bearings'
+    kyy at 20–23 Hz, report's coefficient table: DE 1.03e9, NDE 1.47e9 at 19.8 Hz) and the rigid
     support Euler-Bernoulli value (an upper bound: shear and bearing flexibility lower it).
     The horizontal planar mode (kxx 0.16–0.56e9) is lower, bounded below with k = 1.5e8. Before
     the planar modes counted as driven by unbalance, this crossing was not listed at all (the

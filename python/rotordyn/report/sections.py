@@ -174,7 +174,8 @@ def _mode_in_band(campbell, group: dict) -> bool:
     frequency inside the peak's half-power band (an open side: unbounded there)."""
     i = int(np.argmin(np.abs(campbell.speeds_hz - group["peak_hz"])))
     f = campbell.frequencies_hz[i]
-    ok = campbell.rotor_mask()[i] & driven_by_unbalance(campbell.whirl[i]) & (f > 0) & np.isfinite(f)
+    ok = (campbell.rotor_mask()[i] & driven_by_unbalance(campbell.whirl[i]) & (f > 0)
+          & np.isfinite(f))
     lo, hi = group["band_hz"]
     lo = lo if np.isfinite(lo) else -np.inf
     hi = hi if np.isfinite(hi) else np.inf
