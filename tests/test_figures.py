@@ -54,7 +54,7 @@ def test_campbell_diagram(rig_campbell, tmp_path):
     assert cb == ["logarithmic decrement δ (–)"]
     leg = legend_texts(ax)
     for entry in ("0.5× running speed", "1× running speed", "2× running speed",
-                  "critical speed (forward, 1×)"):
+                  "critical speed (1×, forward or planar)"):
         assert entry in leg
     assert any("whirl" in t for t in leg)
     # the critical speeds are labelled on the figure with their speed

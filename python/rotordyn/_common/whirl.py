@@ -27,3 +27,16 @@ def whirl_label(index) -> np.ndarray:
     i = np.asarray(index, dtype=float)
     return np.where(np.abs(i) < WHIRL_PLANAR_TOL, "planar",
                     np.where(i > 0, "forward", "backward")).astype(object)
+
+
+def driven_by_unbalance(whirl) -> np.ndarray:
+    """True where a mode's whirl (a label or the index code 1/0/−1) is one an unbalance — a
+    force rotating forward with the shaft — drives: forward, and planar (a straight-line orbit
+    is half forward, half backward circular whirl). On anisotropic supports the lowest bending
+    modes are planar at low speed (a generator on tilting pads loaded between and on pads:
+    kyy ≈ 1.6–3.3 kxx; its first bending pair, 22.2 and 22.5 Hz, is planar up to its 1×
+    crossing, tests/test_generator_system.py); its 1× crossing is a critical speed."""
+    w = np.asarray(whirl)
+    if w.dtype.kind in "biuf":
+        return w >= 0
+    return (w == "forward") | (w == "planar")

@@ -203,6 +203,16 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     res = _core.thermal_system_equilibrium(asm.model, films, omega,
                                            float(chamber_pressure_pa), a, opt)
     eq = res.equilibrium
+    message = eq.message
+    if eq.status == "not_converged" and "did not settle" in message:
+        # what to change (measured: the generator of tests/data/models on 60 x 8 pad grids
+        # did not settle to 1e-6 K at 18.79 and 38.38 Hz; tol_k = 1e-4 K or 72 x 16 grids did)
+        grids = sorted({(b.n_circ, b.n_axial) for b in system.bearings
+                        if hasattr(b, "n_circ") and hasattr(b, "n_axial")})
+        message += (f" to tol_k = {tol_k:g} K (a coarse film grid, here n_circ x n_axial = "
+                    + ", ".join(f"{c} x {z}" for c, z in grids)
+                    + ", makes the heat balance only piecewise smooth in the film "
+                    "temperatures: raise tol_k or refine the bearings' n_circ, n_axial)")
     r = np.asarray(eq.r)
     st = list(res.films)
     mus, fields = {}, {}
@@ -246,7 +256,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         side_flow_m3_s=col("side_flow_m3_s"), supply_flow_m3_s=col("supply_flow_m3_s"),
         journal_x_m=np.array([r[bcs[i].jx] for i, _ in rows]),
         journal_y_m=np.array([r[bcs[i].jy] for i, _ in rows]),
-        r=r, iterations=int(res.iterations), system=hot, status=eq.status, message=eq.message,
+        r=r, iterations=int(res.iterations), system=hot, status=eq.status, message=message,
         thermal_model=model,
         temperature_c=tuple(np.array(s.temperature_c) for s in st) if thd else (),
         inlet_mask=tuple(np.array(s.inlet_mask) for s in st) if thd else (),

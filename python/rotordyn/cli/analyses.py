@@ -77,6 +77,8 @@ def _register(sub) -> None:
     add_thd_arguments(s)
     s.add_argument("--density-kg-m3", type=float, default=None, metavar="RHO",
                    help="oil density, kg/m3 (default 870)")
+    s.add_argument("--tol-k", type=float, default=1e-6, metavar="K",
+                   help="the films' temperatures settled to |dT| <= K, kelvin (default: 1e-6)")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
     s.set_defaults(func=_cmd_thermal)
 
@@ -106,7 +108,8 @@ def _register(sub) -> None:
     s.add_argument("--harmonic", type=float, default=1.0, metavar="N",
                    help="excitation order: critical speeds where f = N x speed")
     s.add_argument("--all-whirl", action="store_true",
-                   help="report backward-whirl crossings too (default: forward only)")
+                   help="report backward-whirl crossings too (default: forward and "
+                        "planar whirl, the modes an unbalance drives)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="also write the Campbell diagram to FIG.png or FIG.svg")
     _add_mode_window(s, n_default=None)
@@ -253,7 +256,7 @@ def _cmd_thermal(args) -> int:
         config_ay_m=args.config_ay_m, model=args.thermal_model,
         journal_htc_w_m2k=args.journal_htc_w_m2k,
         bush_htc_w_m2k=args.bush_htc_w_m2k, journal_temperature_c=args.journal_temperature_c,
-        bush_temperature_c=args.bush_temperature_c)
+        bush_temperature_c=args.bush_temperature_c, tol_k=args.tol_k)
     df = r.to_frame()
     if args.json:
         print(json_text({"status": r.status, "message": r.message, "iterations": r.iterations,

@@ -106,7 +106,7 @@ def campbell_arrays(speeds_hz, freq_hz, damping, whirl, *, ax=None, color_by="lo
                 fontsize=6.5, bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none",
                                         alpha=0.8)))
         handles.append(Line2D([], [], ls="", marker="o", mfc="white", mec="k",
-                              label="critical speed (forward, 1×)"))
+                              label="critical speed (1×, forward or planar)"))
     ax.set_xlim(sp.min(), sp.max())
     ax.set_ylim(0, 1.05 * max(fmax, sp.max() * (min(max(harmonics), 1.0) if harmonics else 1)))
     if critical is not None and len(critical):

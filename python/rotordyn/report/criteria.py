@@ -17,6 +17,7 @@ from rotordyn import analysis
 from rotordyn._common.api import (API_CRITICALLY_DAMPED_AF, RESONANT_LOG_DEC, RESONANT_ZETA,
                                   af_text)
 from rotordyn._common.status import CONVERGED
+from rotordyn._common.whirl import driven_by_unbalance
 from rotordyn.model.rotor import Reduction, Support
 
 API_SPEED_FACTOR = 1.25        # API 684: analyse from 0 to at least 125 % of N_mc
@@ -187,7 +188,7 @@ def api_unbalance(system, n_mc_hz: float, speed_hz: float, pc: float, ay):
     except Exception:  # noqa: BLE001 - the placement falls back to the largest disk
         st = None
     if st is not None and st.rotor_shapes is not None and len(st.eigenvalues):
-        fwd = [j for j in range(len(st.eigenvalues)) if st.whirl[j] == "forward"
+        fwd = [j for j in range(len(st.eigenvalues)) if driven_by_unbalance(st.whirl[j])
                and st.kind[j] == "rotor" and st.eigenvalues[j].imag > 0
                and st.damping_ratio[j] < RESONANT_ZETA]  # a mode with a resonance
         if fwd:
@@ -300,7 +301,7 @@ def stability_screen(checks: Checks, c, window_hz: float, op_range) -> np.ndarra
     modes set to 0). Checks: δ > 0.1 in the operating range (a screening without cross-coupling;
     API 617 Level I with Q_A is :mod:`rotordyn.report.level1`) and no growing forward mode
     over the whole range. Returns the screened δ (n_speeds, n_modes), NaN elsewhere."""
-    fwd = (c.rotor_mask() & (c.whirl == 1) & (c.frequencies_hz < window_hz)
+    fwd = (c.rotor_mask() & driven_by_unbalance(c.whirl) & (c.frequencies_hz < window_hz)
            & (c.frequencies_hz > 0))
     ld = np.where(fwd & (c.log_dec < RESONANT_LOG_DEC), c.log_dec, np.nan)
     ld = np.where(np.abs(ld) < LOG_DEC_ROUND_OFF, 0.0, ld)

@@ -24,6 +24,7 @@ import numpy as np
 
 from rotordyn import analysis
 from rotordyn._common.api import af_text
+from rotordyn._common.whirl import driven_by_unbalance
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
 from rotordyn._common.api import RESONANT_LOG_DEC
 from rotordyn.report.tables import (COEFFICIENT_HEADER, MISSING, _text_table, cell,
@@ -173,7 +174,8 @@ def _mode_in_band(campbell, group: dict) -> bool:
     frequency inside the peak's half-power band (an open side: unbounded there)."""
     i = int(np.argmin(np.abs(campbell.speeds_hz - group["peak_hz"])))
     f = campbell.frequencies_hz[i]
-    ok = campbell.rotor_mask()[i] & (campbell.whirl[i] == 1) & (f > 0) & np.isfinite(f)
+    ok = (campbell.rotor_mask()[i] & driven_by_unbalance(campbell.whirl[i]) & (f > 0)
+          & np.isfinite(f))
     lo, hi = group["band_hz"]
     lo = lo if np.isfinite(lo) else -np.inf
     hi = hi if np.isfinite(hi) else np.inf
@@ -225,7 +227,7 @@ def shape_source(source: str) -> str:
 
 def _pick(freqs, whirl, kind, target_hz) -> int | None:
     """The forward rotor mode nearest ``target_hz`` (None if there is none)."""
-    ok = [j for j in range(len(freqs)) if whirl[j] == "forward" and freqs[j] > 0
+    ok = [j for j in range(len(freqs)) if driven_by_unbalance(whirl[j]) and freqs[j] > 0
           and (kind is None or kind[j] == "rotor")]
     if not ok:
         return None
@@ -238,7 +240,7 @@ def _least_damped(r, kind, below_hz) -> int | None:
     forward rotor mode with a resonance above it; else the least damped of all below
     ``below_hz`` — an overdamped root of heavily damped films (δ in the thousands on tilting
     pads) is drawn only when no mode has a resonance."""
-    fwd = [j for j in range(len(r.frequencies_hz)) if r.whirl[j] == "forward"
+    fwd = [j for j in range(len(r.frequencies_hz)) if driven_by_unbalance(r.whirl[j])
            and r.frequencies_hz[j] > 0 and (kind is None or kind[j] == "rotor")]
     res = [j for j in fwd if r.log_dec[j] < RESONANT_LOG_DEC]
     low = [j for j in res if r.frequencies_hz[j] < below_hz]

@@ -12,6 +12,7 @@ from rotordyn.results._display import Display
 
 from rotordyn._common.api import RESONANT_LOG_DEC
 from rotordyn._common.status import CONVERGED, point_messages
+from rotordyn._common.whirl import driven_by_unbalance
 from rotordyn.results.modes import WHIRL_NAMES, log_dec
 
 if TYPE_CHECKING:
@@ -92,7 +93,9 @@ class CampbellResult(Display):
     def critical_speeds(self, harmonic: float = 1.0, whirl: str | None = "forward") -> pd.DataFrame:
         """Speeds where a mode's damped frequency equals ``harmonic`` × running speed, by linear
         interpolation between the computed speeds along each tracked mode. ``whirl`` filters by
-        the mode's whirl at the crossing (None: any). Columns: mode (tracked id + 1),
+        the mode's whirl at the crossing (None: any; "forward" keeps every mode an unbalance
+        drives, forward and planar whirl, :func:`rotordyn._common.whirl.driven_by_unbalance`:
+        on anisotropic supports the first critical can be a planar mode). Columns: mode (tracked id + 1),
         speed_hz, freq_hz, whirl, harmonic, log_dec (the mode's δ at the crossing, interpolated
         along the tracked mode) and resonant (δ < 2π, damping ratio below 1/√2: a root damped
         beyond it crosses the line but gives no resonance peak — a heavy bearing mode at low
@@ -114,7 +117,8 @@ class CampbellResult(Display):
                 w = WHIRL_NAMES[int(wh[i if t < 0.5 else i + 1, j])]
                 ok = np.isfinite(ld[:, j])
                 d = float(np.interp(s, self.speeds_hz[ok], ld[ok, j])) if ok.any() else np.nan
-                if whirl is None or w == whirl:
+                if (whirl is None or w == whirl
+                        or (whirl == "forward" and bool(driven_by_unbalance(w)))):
                     rows.append({"mode": j + 1, "speed_hz": s, "freq_hz": harmonic * s,
                                  "whirl": w, "harmonic": harmonic, "log_dec": d,
                                  # an unknown δ (NaN) stays a critical speed

@@ -19,8 +19,8 @@ from rotordyn.analysis.linear import FD_REL_STEP
 from rotordyn.errors import RotordynError
 from rotordyn.results.modes import settled_real
 from rotordyn.sweep.columns import runs
-from rotordyn.sweep.points import (CONVERGED, STATUS, equilibrium_options, operating, point_list,
-                                   ref_bearing, segments, stable_modes)
+from rotordyn.sweep.points import (CONVERGED, STATUS, equilibrium_options, mode_kind, operating,
+                                   point_list, ref_bearing, segments, stable_modes)
 from rotordyn.sweep.tilt_rows import batch_tilt, repeat_lists
 from rotordyn.sweep.tracking import track_points
 from rotordyn.units import hz_to_rad_s
@@ -189,7 +189,12 @@ def _stab_batch(job, seg, ops):
         # the thinnest film (NaN on a failed point: the batch's one rule, all its films NaN)
         HMIN = (np.fmin.reduce(H, axis=1) if H.shape[1] else np.full(len(st), math.nan))
     WN = _NAMES[np.clip(np.asarray(res.whirl), -1, 1) + 1]
-    KIND = np.where(np.asarray(res.sleeve_share) > 0.5, "sleeve", "rotor")
+    KIND = np.where(np.asarray(res.sleeve_share) > 0.5, "sleeve", "rotor").astype(object)
+    if any(getattr(b, "extra", ()) for b in asm.bearings):  # tilting pads' own modes
+        for k in np.flatnonzero(ok):
+            Mw = (np.asarray(asm.model.mass_at(hz_to_rad_s(ops[k][0])))
+                  if asm.model.has_table_mass() else asm.mats[0])
+            KIND[k, :KE[k]] = mode_kind(asm, Mw, np.asarray(res.modes[k]), KIND[k, :KE[k]])
     nan = np.full(len(st), math.nan)
     return {"ok": ok, "st": st, "fail": fail, "msg": np.array(res.message, dtype=object),
             "KE": KE, "EV": EV, "valid": valid, "MS": MS, "DR": DR, "LD": LD, "FR": FR,

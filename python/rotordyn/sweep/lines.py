@@ -25,7 +25,7 @@ def max_real(job, asm, p, r0, opts, exclude_sleeve):
         return math.nan, math.nan, e.status, None
     lam, _, _, kind = pt.eigen(asm, e, f, opts, None)
     if exclude_sleeve:
-        lam = lam[kind == "rotor"]
+        lam = lam[kind != "sleeve"]
     i = int(np.argmax(lam.real))
     return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), e.status, np.asarray(e.r)
 

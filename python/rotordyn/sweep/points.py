@@ -185,9 +185,26 @@ def eigen(asm, e, f, opts, n_modes):
     kin = np.real(np.einsum("ik,ij,jk->k", phi.conj(), M, phi))
     kin_s = (np.real(np.einsum("ik,ij,jk->k", phi[sl].conj(), M[np.ix_(sl, sl)], phi[sl]))
              if sl else np.zeros(len(lam)))
-    kind = np.where(kin_s > 0.5 * kin, "sleeve", "rotor")
+    kind = mode_kind(asm, M, phi, np.where(kin_s > 0.5 * kin, "sleeve", "rotor"))
     whirl = np.array([WHIRL_NAMES[int(x)] for x in res.whirl])
     return lam, phi, whirl, kind
+
+
+def mode_kind(asm, M, phi, kind) -> np.ndarray:
+    """``kind`` ("rotor"/"sleeve" per mode) with "pad" where the tilting pads' own coordinates
+    carry more than half of the mode's kinetic energy — the rule of ``rotordyn.stability``
+    (analysis/linear.py), so a sweep row and the API name a mode alike (before, the sweep
+    called the generator's 2.30 Hz and 52.06 Hz pad roots "rotor")."""
+    kind = np.asarray(kind).astype(object)
+    pads = [i for bc in asm.bearings for i in getattr(bc, "extra", ())]
+    if not pads or phi.shape[1] == 0:
+        return kind
+    M = np.asarray(M)
+    kin = np.real(np.einsum("ik,ij,jk->k", phi.conj(), M, phi))
+    kin_p = np.real(np.einsum("ik,ij,jk->k", phi[pads].conj(), M[np.ix_(pads, pads)],
+                              phi[pads]))
+    kind[kin_p > 0.5 * kin] = "pad"
+    return kind
 
 
 def stable_modes(lam) -> np.ndarray:

@@ -134,8 +134,8 @@ def _modes_block(k, st, t, ids, asm, bearing=None):
     e = st.linear.equilibrium
     bc = ref_bearing(asm, bearing)
     hm = np.atleast_1d(e.h_min_m)
-    kind = np.array([str(x) if x in ("rotor", "sleeve") else None for x in st.kind],
-                    dtype=object)  # a pad's own mode: null, as the isothermal rows
+    kind = np.array([str(x) if x in ("rotor", "sleeve", "pad") else None for x in st.kind],
+                    dtype=object)  # "pad": a tilting pad's own mode, as rotordyn.stability
     tilt = (repeat_lists([equilibrium_tilt(asm, e)], [n])
             if any(b.rot for b in asm.bearings) else {})
     return (np.full(n, k, dtype=np.int64), {**tilt,

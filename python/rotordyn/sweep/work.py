@@ -26,7 +26,7 @@ from rotordyn.sweep.tilt_rows import TILT_OUTPUTS, tilt_on
 
 
 WHIRL = ["forward", "backward", "planar"]
-KIND = ["rotor", "sleeve"]
+KIND = ["rotor", "sleeve", "pad"]
 F64, I64, I32, BOOL, STR = pa.float64(), pa.int64(), pa.int32(), pa.bool_(), pa.string()
 
 
