@@ -73,6 +73,10 @@ def _cmd_sweep(args) -> int:
     except SweepInterrupted as exc:
         print(f"rotordyn: {exc}", file=sys.stderr)
         return 130
+    if res.dropped:
+        print(f"rotordyn: resume: {len(res.dropped)} file(s) of {args.out} did not match the "
+              "log and were removed, their chunks computed again: " + "; ".join(
+                  f"{n} ({why})" for n, why in res.dropped), file=sys.stderr)
     if args.json:
         print(manifest_json(res))
     else:
