@@ -59,3 +59,31 @@ def test_resume_names_what_it_dropped(tmp_path, capsys):
     # a resume of the finished directory finds nothing to drop and says nothing
     assert main(["sweep", str(spec), "--out", str(out), "--threads", "1"]) == 0
     assert "resume" not in capsys.readouterr().err
+
+
+def test_another_models_directory_says_the_model_changed(tmp_path):
+    """The same spec on an edited model into the old directory: refused naming what changed
+    (before: 'spec or model changed', for either)."""
+    import pytest
+
+    from rotordyn.errors import InputError
+
+    model2 = tmp_path / "m2.toml"
+    model2.write_text(MODEL.read_text().replace("viscosity_pa_s = 0.018",
+                                                "viscosity_pa_s = 0.020"))
+    text = ('schema = "rotordyn/sweep/1"\nname = "r"\nmodel = "{}"\nanalysis = "stability"\n'
+            'chunk_size = 6\n[grid]\nspeed_hz = [60.0, 120.0]\n[options]\nn_modes = 2\n')
+    a, b = tmp_path / "a.toml", tmp_path / "b.toml"
+    a.write_text(text.format(MODEL))
+    b.write_text(text.format(model2))
+    run_sweep(a, tmp_path / "out", threads=1, progress=False)
+    with pytest.raises(InputError, match=r"'r': spec changed \(hash \w+, the directory's \w+\), "
+                       r"model changed \(hash \w+, the directory's \w+\)\); use another"):
+        run_sweep(b, tmp_path / "out", threads=1, progress=False)
+    # the model file edited in place: the spec (its path) is the same, the model is not
+    model2.write_text(MODEL.read_text())
+    run_sweep(b, tmp_path / "out2", threads=1, progress=False)
+    model2.write_text(MODEL.read_text().replace("viscosity_pa_s = 0.018",
+                                                "viscosity_pa_s = 0.020"))
+    with pytest.raises(InputError, match=r"'r': model changed \(hash"):
+        run_sweep(b, tmp_path / "out2", threads=1, progress=False)

@@ -324,8 +324,11 @@ class Store:
             self._rewrite_log([])
             return
         if not same:
+            what = [f"{k} changed (hash {self.header[k + '_hash']}, the directory's "
+                    f"{manifest.get(k + '_hash')})" for k in ("spec", "model")
+                    if manifest.get(k + "_hash") != self.header[k + "_hash"]]
             raise InputError(f"out: {str(out)!r} holds a different sweep "
-                             f"({manifest.get('sweep_id')!r}: spec or model changed); use "
+                             f"({manifest.get('sweep_id')!r}: {', '.join(what)}); use "
                              "another directory or --no-resume")
         self.dropped += [(n, "an unfinished write of a driver that stopped")
                          for n in self._clean_tmp()]
