@@ -302,6 +302,7 @@ class Store:
                 raise InputError(f"out: {str(out)!r} holds parquet files but no sweep manifest "
                                  f"({stray[0] if stray else LOG}); they may belong to another "
                                  "sweep: choose an empty directory")
+            self._check_no_others()
             self._clean_tmp()
             self._write_manifest()
             self._rewrite_log([])
@@ -312,6 +313,7 @@ class Store:
         if foreign:
             raise InputError(f"out: {str(out)!r} holds parquet files that are not this "
                              f"sweep's ({foreign[0]}); choose another directory")
+        self._check_no_others()
         if not resume:
             if manifest.get("sweep_id") != self.header["sweep_id"]:
                 raise InputError(
@@ -355,6 +357,21 @@ class Store:
                                             "stopped before logging it"))
                 self.dir.unlink(n)  # a symlink of a part's name goes too (not its target)
         self._rewrite_log(good)
+
+    def _check_no_others(self) -> None:
+        """Refuse a directory holding entries the dataset's readers would take for data:
+        pandas.read_parquet(OUT) and pyarrow.dataset read every file and sub-directory whose
+        name does not begin with '_' or '.' (a notes.txt made them fail; a sub-directory of
+        another sweep's parts would be read into this one's rows). Nothing is removed."""
+        others = sorted(n for n in self.dir.names()
+                        if not n.startswith(("_", ".")) and not _PART.match(n))
+        if others:
+            more = f" and {len(others) - 1} more" if len(others) > 1 else ""
+            raise InputError(
+                f"out: {str(self.out)!r} holds {others[0]!r}{more}, which "
+                "pandas.read_parquet(OUT) and pyarrow.dataset would read as part of the "
+                "dataset: choose an empty or new directory (names beginning with '_' or '.' "
+                "are skipped by the readers and allowed)")
 
     def _clean_tmp(self) -> list[str]:
         """Remove the temporaries (the names removed): only the lock holder writes them, so
