@@ -12,19 +12,25 @@ from rotordyn.errors import InputError
 def register(sub) -> None:
     """``sweep`` and ``plot`` on the ``rotordyn`` parser's subparsers ``sub``."""
     s = sub.add_parser("sweep", help="run a sweep spec on dask into a parquet dataset")
-    s.add_argument("spec", help="sweep specification, sweeps/<name>.toml")
-    s.add_argument("--out", required=True, metavar="DIR", help="output dataset directory")
+    s.add_argument("spec", help="sweep specification: a TOML file, or a built-in spec's "
+                                "name (fig9_stability_map, sweeps/<name>.toml)")
+    s.add_argument("--out", required=True, metavar="DIR",
+                   help="output dataset directory: new or empty, or this sweep's own to "
+                        "resume")
     s.add_argument("--scheduler", default=None, metavar="ADDR",
                    help="tcp://host:port or tls://host:port of an existing dask cluster "
                         "(default: a LocalCluster); the cluster is trusted completely")
     s.add_argument("--tls-ca-file", default=None, metavar="PEM",
-                   help="tls:// scheduler: the CA certificate that signed the cluster's")
+                   help="tls:// scheduler: the CA certificate that signed the cluster's "
+                        "certificates")
     s.add_argument("--tls-cert", default=None, metavar="PEM",
                    help="tls:// scheduler: this client's certificate")
     s.add_argument("--tls-key", default=None, metavar="PEM",
                    help="tls:// scheduler: this client's private key")
     s.add_argument("--workers", type=int, default=None, metavar="N",
-                   help="LocalCluster worker processes (default: dask's choice)")
+                   help="LocalCluster worker processes, started only when the driver's "
+                        "first chunks show the map is worth it (default: one per core, at "
+                        "most one per chunk left)")
     s.add_argument("--threads", type=int, default=None, metavar="N",
                    help="compute on N threads in this process, no dask (default: off)")
     s.add_argument("--resume", action=argparse.BooleanOptionalAction, default=True,
@@ -73,6 +79,10 @@ def _cmd_sweep(args) -> int:
     except SweepInterrupted as exc:
         print(f"rotordyn: {exc}", file=sys.stderr)
         return 130
+    if res.dropped:
+        print(f"rotordyn: resume: {len(res.dropped)} file(s) of {args.out} did not match the "
+              "log and were removed, their chunks computed again: " + "; ".join(
+                  f"{n} ({why})" for n, why in res.dropped), file=sys.stderr)
     if args.json:
         print(manifest_json(res))
     else:

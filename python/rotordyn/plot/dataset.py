@@ -65,6 +65,8 @@ def plot_dataset(df: pd.DataFrame, kind: str, out: str, dpi: int = 200, **kwargs
     else:
         kwargs["where"] = where
     ax = fn(df, **kwargs)
-    ax.figure.savefig(out, dpi=dpi)
+    # the paper style's tight bounding box (its rc applies while drawing, not here): a 3-D
+    # cascade's frequency label hangs below the figure and was cut off in the file
+    ax.figure.savefig(out, dpi=dpi, bbox_inches="tight")
     plt.close(ax.figure)
     return out

@@ -37,11 +37,10 @@ from pathlib import Path
 
 import numpy as np
 
-from rotordyn._common.info import __version__
 from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, executor,
                                       group_size)
 from rotordyn.sweep.spec import boundary_axes, fine_axes
-from rotordyn.sweep.store import BOUNDARY, Store
+from rotordyn.sweep.store import BOUNDARY, Store, part_metadata
 from rotordyn.sweep.boundary_modes import ModeTracks, with_ids
 from rotordyn.sweep.surface import ColumnPlan, column_field
 from rotordyn.sweep.points import base_system
@@ -138,9 +137,7 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     store = Store(out, header, resume=resume, group=1,
                   schema=job_schema(job, base_system(model_toml)))
     job.key = header["spec_hash"]
-    job.meta = {"sweep_id": spec.name, "spec_hash": header["spec_hash"],
-                "model_hash": header["model_hash"], "rotordyn": __version__,
-                "units": header["units"]}
+    job.meta = part_metadata(header)
     base = int(np.ravel_multi_index(tuple(0 for _ in ax), tuple(len(v) for v in ax.values())))
 
     strides = [int(np.prod(shape[d + 1:])) for d in range(len(shape))]
@@ -276,6 +273,6 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
                "fine_points": int(np.prod(shape))}
         if by_cols:  # the points this run asked for, by reason (resumed chunks included)
             man["points_by_reason"] = dict(plan.stats)
-        return SweepResult(Path(out), man, len(entries), cid, counts)
+        return SweepResult(Path(out), man, len(entries), cid, counts, tuple(store.dropped))
     finally:
         store.close()

@@ -38,6 +38,9 @@ class SweepResult:
     done: int
     n_chunks: int
     counts: dict
+    # files a resume found damaged, unlogged or unfinished and removed, (name, why): their
+    # chunks were computed again
+    dropped: tuple = ()
 
     @property
     def complete(self) -> bool:

@@ -30,6 +30,14 @@ def max_real(job, asm, p, r0, opts, exclude_sleeve):
     return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), e.status, np.asarray(e.r)
 
 
+def _stable_side(xs, ys, i) -> str:
+    """Which side of the crossing in the bracket [x_i, x_{i+1}] is stable, in the varied
+    value (not in scan order: a line scanned from its largest value down has its stable
+    point second when the stable side is below)."""
+    x_stable, x_other = (xs[i], xs[i + 1]) if ys[i] < 0 else (xs[i + 1], xs[i])
+    return "below" if x_stable < x_other else "above"
+
+
 _AXIS = {"speed_hz": _core.ThresholdAxis.speed,
          "chamber_pressure_pa": _core.ThresholdAxis.chamber_pressure,
          "config_ay_m": _core.ThresholdAxis.config}
@@ -91,7 +99,7 @@ def threshold_line(job, variants, lo, hi, at, asms, scan=None):
             f"i_{vary}": None, vary: roots, "crossing": np.arange(1, k + 1),
             "value": roots, "whirl_frequency_hz": freqs,
             "whirl_ratio": [fr / sp if sp else math.nan for fr, sp in zip(freqs, speeds)],
-            "stable_side": ["below" if ys[i] < 0 else "above" for i in res.bracket],
+            "stable_side": [_stable_side(xs, ys, i) for i in res.bracket],
             "evaluations": list(res.evaluations), "status": list(res.status),
             "message": list(res.message)})]
     good = [y for y in ys.tolist() if math.isfinite(y)]

@@ -19,7 +19,7 @@ from pathlib import Path
 from rotordyn._common import validate as v
 from rotordyn._common.info import __version__, build_info
 from rotordyn.sweep.spec import SweepSpec
-from rotordyn.sweep.store import Store, read_manifest
+from rotordyn.sweep.store import Store, part_metadata, read_manifest
 from rotordyn.sweep.boundary import run_boundary
 from rotordyn.sweep.dataset import open_dataset
 from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, check_scheduler,
@@ -126,9 +126,7 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
                        enabled=None if progress is None else bool(progress))
         if todo:
             job.key = header["spec_hash"]
-            job.meta = {"sweep_id": spec.name, "spec_hash": header["spec_hash"],
-                        "model_hash": header["model_hash"], "rotordyn": __version__,
-                        "units": header["units"]}
+            job.meta = part_metadata(header)
             ex = None
             try:
                 n = workers or min(len(todo), os.cpu_count() or 1)
@@ -147,7 +145,8 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
         bar.close()
         final = store.chunk_entries()
         counts = {k: sum(c[k] for c in final.values()) for k in ("ok", "failed", "unstable")}
-        return SweepResult(Path(out), {"format": "", **header}, len(final), n_chunks, counts)
+        return SweepResult(Path(out), {"format": "", **header}, len(final), n_chunks, counts,
+                           tuple(store.dropped))
     finally:
         store.close()
 
@@ -165,4 +164,5 @@ def result_of(out) -> SweepResult:
 
 def manifest_json(res: SweepResult) -> str:
     return json.dumps({"sweep_id": res.manifest.get("sweep_id"), "out": str(res.out),
-                       "chunks_done": res.done, "n_chunks": res.n_chunks, **res.counts})
+                       "chunks_done": res.done, "n_chunks": res.n_chunks, **res.counts,
+                       "dropped": [list(d) for d in res.dropped]})

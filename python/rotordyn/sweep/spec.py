@@ -25,6 +25,7 @@ from pathlib import Path
 from rotordyn.analysis.continuation import METHODS as CONTINUATION_METHODS
 from rotordyn.analysis.continuation import NEWTON_MODES
 from rotordyn.errors import InputError
+from rotordyn.sweep import axis_values
 from rotordyn.sweep.model_axes import check_model_axis
 from rotordyn._common import validate as v
 from rotordyn.model import builtin as models
@@ -385,6 +386,8 @@ class SweepSpec:
         n = math.prod(len(x) for x in self.axes.values())
         if n > MAX_POINTS:
             raise InputError(f"grid: {n} points, more than the limit of {MAX_POINTS}")
+        for name, vals in self.axes.items():
+            axis_values.check_unique(name, vals)
         a = self.analysis
         if a in ("threshold", "hopf", "limit_cycle"):
             ax = self.options["vary"]
@@ -451,6 +454,10 @@ class SweepSpec:
             if any(b <= a_ for a_, b in zip(sp, sp[1:])) or sp[0] <= 0:
                 raise InputError("grid.speed_hz: expected positive, strictly increasing "
                                  "speeds")
+        la = self.line_axis
+        if a in ("threshold", "hopf", "limit_cycle", "stability") and la in self.axes:
+            axis_values.check_monotonic(la, self.axes[la], "modes are tracked" if a ==
+                                        "stability" else "sign changes are bracketed")
         self._check_operating()
 
     def _check_operating(self) -> None:

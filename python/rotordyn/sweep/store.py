@@ -53,6 +53,15 @@ _SHA = re.compile(r"[0-9a-f]{64}\Z")
 _RUNTIME = {errno.ENOSPC, errno.EDQUOT, errno.EIO, errno.EFBIG}
 
 
+def part_metadata(header: dict) -> dict:
+    """What every part's schema metadata (key ``rotordyn``) holds: the sweep, the hashes of
+    its spec and model, the analysis and its options, the rotordyn version and build, the
+    units. With the model's TOML (the manifest's ``model``, identified by ``model_hash``) a
+    point is reproduced from its row's axis values."""
+    return {k: header[k] for k in ("sweep_id", "spec_hash", "model_hash", "rotordyn",
+                                   "build_info", "analysis", "options", "units")}
+
+
 def part_name(lo: int, hi: int) -> str:
     """File holding chunks lo..hi (inclusive)."""
     return f"part-{lo:06d}-{hi:06d}.parquet"
@@ -188,6 +197,8 @@ class Store:
         self.schema = schema
         self.group = max(1, int(group))
         self.files: dict[str, dict] = {}   # file name -> log entry (live files only)
+        # what a resume found and dropped (file name, why): its chunks are recomputed
+        self.dropped: list[tuple[str, str]] = []
         self._lockfd = None
         self._log = None                   # descriptor of the log, open for appending
         self.dir = None
@@ -291,6 +302,7 @@ class Store:
                 raise InputError(f"out: {str(out)!r} holds parquet files but no sweep manifest "
                                  f"({stray[0] if stray else LOG}); they may belong to another "
                                  "sweep: choose an empty directory")
+            self._check_no_others()
             self._clean_tmp()
             self._write_manifest()
             self._rewrite_log([])
@@ -301,6 +313,7 @@ class Store:
         if foreign:
             raise InputError(f"out: {str(out)!r} holds parquet files that are not this "
                              f"sweep's ({foreign[0]}); choose another directory")
+        self._check_no_others()
         if not resume:
             if manifest.get("sweep_id") != self.header["sweep_id"]:
                 raise InputError(
@@ -313,13 +326,23 @@ class Store:
             self._rewrite_log([])
             return
         if not same:
+            what = [f"{k} changed (hash {self.header[k + '_hash']}, the directory's "
+                    f"{manifest.get(k + '_hash')})" for k in ("spec", "model")
+                    if manifest.get(k + "_hash") != self.header[k + "_hash"]]
             raise InputError(f"out: {str(out)!r} holds a different sweep "
-                             f"({manifest.get('sweep_id')!r}: spec or model changed); use "
+                             f"({manifest.get('sweep_id')!r}: {', '.join(what)}); use "
                              "another directory or --no-resume")
-        self._clean_tmp()
+        self.dropped += [(n, "an unfinished write of a driver that stopped")
+                         for n in self._clean_tmp()]
         raw = _bookkeeping(self.dir, LOG, "out")
         live = live_entries(parse_log(raw or b"", out / LOG))
-        good = [e for e in live.values() if self._verify(e)]
+        good = []
+        for e in live.values():
+            why = self._verify(e)
+            if why:
+                self.dropped.append((e["file"], why))
+            else:
+                good.append(e)
         self._check_schemas(good)
         # a crash between logging a compacted file and logging the removal of its parts
         # leaves both: keep the widest file covering each chunk
@@ -329,17 +352,39 @@ class Store:
         keep = {e["file"] for e in good}
         for n in stray:
             if n not in keep:
+                if n not in live:
+                    self.dropped.append((n, "not in the log: written by a driver that "
+                                            "stopped before logging it"))
                 self.dir.unlink(n)  # a symlink of a part's name goes too (not its target)
         self._rewrite_log(good)
 
-    def _clean_tmp(self) -> None:
-        # only the lock holder writes temporaries, so every one here is a dead driver's
+    def _check_no_others(self) -> None:
+        """Refuse a directory holding entries the dataset's readers would take for data:
+        pandas.read_parquet(OUT) and pyarrow.dataset read every file and sub-directory whose
+        name does not begin with '_' or '.' (a notes.txt made them fail; a sub-directory of
+        another sweep's parts would be read into this one's rows). Nothing is removed."""
+        others = sorted(n for n in self.dir.names()
+                        if not n.startswith(("_", ".")) and not _PART.match(n))
+        if others:
+            more = f" and {len(others) - 1} more" if len(others) > 1 else ""
+            raise InputError(
+                f"out: {str(self.out)!r} holds {others[0]!r}{more}, which "
+                "pandas.read_parquet(OUT) and pyarrow.dataset would read as part of the "
+                "dataset: choose an empty or new directory (names beginning with '_' or '.' "
+                "are skipped by the readers and allowed)")
+
+    def _clean_tmp(self) -> list[str]:
+        """Remove the temporaries (the names removed): only the lock holder writes them, so
+        every one here is a dead driver's."""
+        gone = []
         for n in self.dir.names():
             if n.startswith(TMP):
                 try:
                     self.dir.unlink(n)
+                    gone.append(n)
                 except OSError:
                     pass
+        return gone
 
     def _write_manifest(self) -> None:
         self._atomic(MANIFEST, json.dumps({"format": FORMAT, **self.header}, indent=1).encode())
@@ -352,14 +397,18 @@ class Store:
             raise NotRegular(errno.EINVAL, f"{e['file']} does not match its SHA-256")
         return data
 
-    def _verify(self, e: dict) -> bool:
+    def _verify(self, e: dict) -> str | None:
+        """Why a logged file cannot be kept (None: it matches the log)."""
         try:
             data = self._read_part(e)
             f = pq.ParquetFile(pa.BufferReader(data))
             e["_schema"] = f.schema_arrow  # for _check_schemas (not logged)
-            return f.metadata.num_rows == e["rows"]
-        except (OSError, pa.ArrowException):
-            return False
+        except FileNotFoundError:
+            return "missing"
+        except (OSError, pa.ArrowException) as exc:
+            return getattr(exc, "strerror", None) or str(exc)
+        n = f.metadata.num_rows
+        return None if n == e["rows"] else f"{n} rows, the log says {e['rows']}"
 
     def _check_schemas(self, entries: list[dict]) -> None:
         """Refuse a resume whose logged parts hold rows of another schema than this sweep's
