@@ -325,6 +325,12 @@ def _boundary_block(job, k, y, fr, st, lam, whirl, share):
         LD = np.where(EV.imag != 0, -2 * np.pi * RE / EV.imag, np.nan)
     MS = stable_modes(EV)
     rep = np.repeat(k, ke)
+    # the point's verdict by the stability rows' rule (every root mode_stable, round-off
+    # band included) over the roots max Re λ counts: the rotor's alone with
+    # exclude_sleeve_modes. max Re λ's raw sign called an undamped rotor's +1e-12 unstable.
+    SH = np.concatenate([share[q] for q in k])
+    counts = ~(SH > 0.5) if job.options.get("exclude_sleeve_modes", False) else np.ones_like(MS)
+    PS = np.logical_and.reduceat(MS | ~counts, np.r_[0, np.cumsum(ke)[:-1]])
     return (rep, {"mode_id": np.concatenate([np.arange(m) for m in ke]).astype(np.int64),
                   "mode": np.concatenate([np.arange(1, m + 1) for m in ke]).astype(np.int64),
                   "freq_hz": EV.imag / (2 * np.pi), "eig_real_1_per_s": EV.real,
@@ -332,6 +338,6 @@ def _boundary_block(job, k, y, fr, st, lam, whirl, share):
                   "whirl": _NAMES[np.clip(np.concatenate([whirl[q] for q in k]), -1, 1) + 1],
                   "kind": np.where(np.concatenate([share[q] for q in k]) > 0.5, "sleeve",
                                    "rotor"),
-                  "mode_stable": MS, "point_stable": y[rep] < 0,
+                  "mode_stable": MS, "point_stable": np.repeat(PS, ke),
                   "max_real_1_per_s": y[rep], "max_real_freq_hz": fr[rep],
                   "level": job.level, "status": st[rep], "message": ""})
