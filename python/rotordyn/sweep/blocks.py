@@ -17,7 +17,7 @@ from rotordyn import _core
 from rotordyn._common.whirl import WHIRL_NAMES
 from rotordyn.analysis.linear import FD_REL_STEP
 from rotordyn.errors import RotordynError
-from rotordyn.results.modes import settled_real
+from rotordyn.results.modes import log_dec, settled_real
 from rotordyn.sweep.columns import runs
 from rotordyn.sweep.points import (CONVERGED, STATUS, equilibrium_options, operating, point_list,
                                    ref_bearing, segments, stable_modes)
@@ -184,7 +184,7 @@ def _stab_batch(job, seg, ops):
         RE = settled_real(EV)  # round-off of an undamped mode is 0, not a sign
         AB = np.abs(EV)
         DR = np.where(AB > 0, -RE / AB, np.nan)
-        LD = np.where(EV.imag != 0, -2 * np.pi * RE / EV.imag, np.nan)
+        LD = log_dec(EV)  # the API's: −inf for a divergence, +0 for round-off
         FR = EV.imag / (2 * np.pi)
         # the thinnest film (NaN on a failed point: the batch's one rule, all its films NaN)
         HMIN = (np.fmin.reduce(H, axis=1) if H.shape[1] else np.full(len(st), math.nan))
@@ -322,7 +322,7 @@ def _boundary_block(job, k, y, fr, st, lam, whirl, share):
         RE = settled_real(EV)
         AB = np.abs(EV)
         DR = np.where(AB > 0, -RE / AB, np.nan)
-        LD = np.where(EV.imag != 0, -2 * np.pi * RE / EV.imag, np.nan)
+        LD = log_dec(EV)  # the API's: −inf for a divergence, +0 for round-off
     MS = stable_modes(EV)
     rep = np.repeat(k, ke)
     # the point's verdict by the stability rows' rule (every root mode_stable, round-off
