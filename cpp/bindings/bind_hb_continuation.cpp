@@ -38,7 +38,9 @@ void bind_hb_continuation(py::module_& m) {
       .def_readonly("floquet_route", &HbContinuationStep::floquet_route)
       .def_readonly("screen_critical_modulus", &HbContinuationStep::screen_critical_modulus)
       .def_readonly("screen_trivial_error", &HbContinuationStep::screen_trivial_error)
-      .def_readonly("fd_evaluations", &HbContinuationStep::fd_evaluations);
+      .def_readonly("fd_evaluations", &HbContinuationStep::fd_evaluations)
+      .def_readonly("floquet_error", &HbContinuationStep::floquet_error)
+      .def_readonly("floquet_steps", &HbContinuationStep::floquet_steps);
   py::class_<HbSystemAt>(m, "HbSystemAt")
       .def(py::init<>())
       .def_readwrite("solver", &HbSystemAt::solver)

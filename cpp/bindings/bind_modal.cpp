@@ -11,6 +11,8 @@
 namespace rotordyn::py_bind {
 
 void bind_modal(py::module_& m) {
+  // The round-off band of Re λ of every verdict, C++ and Python (rotordyn.results.modes).
+  m.attr("ROUND_OFF_REL") = kRoundOffRel;
   py::class_<ModalResult>(m, "ModalResult")
       .def_readonly("eigenvalues", &ModalResult::eigenvalues)
       .def_readonly("modes", &ModalResult::modes)

@@ -100,9 +100,7 @@ std::complex<double> least_stable_root(const Eigen::VectorXcd& roots) {
   std::complex<double> best(nan, nan);
   double key_best = -std::numeric_limits<double>::infinity();
   for (Eigen::Index j = 0; j < roots.size(); ++j) {
-    const double re = roots[j].real();
-    const double key =
-        std::abs(re) < kRoundOffRel * std::max(std::abs(roots[j]), 1.0) ? 0.0 : re;
+    const double key = settled_real(roots[j]);
     if (key > key_best || std::isnan(best.real())) {
       key_best = key;
       best = roots[j];

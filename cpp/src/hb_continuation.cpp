@@ -402,6 +402,8 @@ HbContinuationStep correct(const HbSystemProvider& system_at, const Eigen::Vecto
   out.floquet_route = pf.route;
   out.screen_critical_modulus = pf.screen_critical_modulus;
   out.screen_trivial_error = pf.screen_trivial_error;
+  out.floquet_error = pf.refined_error;
+  out.floquet_steps = pf.refined_steps;
   if (!done) {
     finish();
     return out;

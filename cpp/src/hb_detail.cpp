@@ -388,7 +388,27 @@ bool finish_point(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, do
     const bool near = pf.route == "hill"
                           ? std::abs(fq.critical_modulus - 1.0) < margin + 3.0 * et
                           : (std::abs(fq.critical_modulus - 1.0) < margin || et > 0.5 * margin);
-    flow = flow || (margin > 0 && (fq.critical < 0 || near));
+    bool recheck = margin > 0 && (fq.critical < 0 || near);
+    // floquet_tol > 0 (samples): a close verdict is first refined by the Magnus product at
+    // doubling step counts (hb_floquet.cpp, the periodic orbit's floquet_tol); the flow
+    // decides only where the refinement leaves it unresolved (not converged within its
+    // budget, or | |μ_c| − 1 | within its own error estimate).
+    if (recheck && !flow && ho.floquet == HbFloquet::samples && ho.floquet_tol > 0) {
+      RefinedMonodromy rm = refined_monodromy(P, e, Z, w, autonomous, ho.floquet_tol,
+                                              refined_max_steps(P.B.M, ho.floquet_max_steps));
+      pf.refined_steps = rm.steps;
+      if (rm.ok && rm.converged && rm.Phi.allFinite()) {
+        const Floquet fr = floquet(rm.Phi, autonomous);
+        if (fr.critical >= 0 && std::abs(fr.critical_modulus - 1.0) > rm.error) {
+          o.monodromy = std::move(rm.Phi);
+          o.monodromy_rtol = 0.0;
+          pf.route = "refined";
+          pf.refined_error = rm.error;
+          recheck = false;
+        }
+      }
+    }
+    flow = flow || recheck;
   }
   if (flow) {
     if (!flow_monodromy(F, o, in.t0, T, ho.cvode, srtol)) {

@@ -140,6 +140,10 @@ bool flow_monodromy(shooting_detail::Flow& F, PeriodicOrbitResult& o, double t0,
 struct PointFloquet {
   std::string route;
   double screen_critical_modulus = 0.0, screen_trivial_error = 0.0;
+  /// route "refined": the refined product's | |μ_c| − |μ_c|_previous level | (else NaN) and
+  /// its Magnus steps per period (0: not refined)
+  double refined_error = std::numeric_limits<double>::quiet_NaN();
+  int refined_steps = 0;
   long linearizations = 0, evaluations = 0;
 };
 
@@ -151,7 +155,9 @@ struct PointFloquet {
 /// Jacobian, with one more evaluation of P on Hill's time points), recomputed by one CVODES
 /// sensitivity flow at sensitivity_rtol where the screen is not safe (samples: | |μ_c| − 1 | <
 /// margin or |μ_trivial − 1| > margin / 2; Hill: | |μ_c| − 1 | < margin + 3 |μ_trivial − 1|;
-/// margin 0: never), or by the flow for floquet = flow. false with o.status / o.message set
+/// margin 0: never), or by the flow for floquet = flow. With floquet = samples and
+/// ho.floquet_tol > 0 a point the screen calls close is first refined (refined_monodromy;
+/// route "refined") and goes to the flow only when that leaves the verdict unresolved. false with o.status / o.message set
 /// on a failure.
 bool finish_point(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, double L,
                   const PeriodicInput& in, shooting_detail::Flow& F, Problem& P, const Eval& e,

@@ -141,8 +141,7 @@ std::vector<int> pick_modes(const Eigen::VectorXcd& w, int n_modes, double zero,
   // the verdict of every caller sees it.
   std::vector<int> osc;
   for (int i : idx)
-    if (w(i).imag() > 0 ||
-        w(i).real() > kRoundOffRel * std::max(std::abs(w(i)), 1.0))
+    if (w(i).imag() > 0 || settled_real(w(i)) > 0)
       osc.push_back(i);
   if (!osc.empty()) idx.swap(osc);
   if (n_modes > 0 && static_cast<int>(idx.size()) > n_modes) idx.resize(n_modes);

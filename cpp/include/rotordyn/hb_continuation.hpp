@@ -29,6 +29,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -79,14 +80,20 @@ struct HbContinuationStep {
   double p = 0.0;                  ///< its parameter
   /// ((2H + 1) n + 2) unit tangent there (scaled), empty on failure
   Eigen::VectorXd tangent;
-  /// Where the reported multipliers come from: "samples", "hill", "flow" (the recheck, or
-  /// floquet = flow) or "none"; empty on failure.
+  /// Where the reported multipliers come from: "samples", "refined" (the samples' product
+  /// refined to hb.floquet_tol), "hill", "flow" (the recheck, or floquet = flow) or "none";
+  /// empty on failure.
   std::string floquet_route;
   /// From the screening route (the samples' monodromy, or Hill's method with floquet = hill;
   /// also where the flow replaced it, and with floquet = flow the samples'): |μ_c| and
   /// |μ_trivial − 1| (autonomous; else 0); NaN when not computed.
   double screen_critical_modulus = 0.0, screen_trivial_error = 0.0;
   long fd_evaluations = 0;         ///< residual evaluations for the central difference ∂R/∂p
+  /// hb.floquet_tol > 0 and a close screen: the refined product's | |μ_c| − |μ_c|_previous
+  /// level | where it decided (route "refined"; else NaN) and its Magnus steps per period
+  /// (0: not refined; > 0 with another route: it was refined, then left to the flow)
+  double floquet_error = std::numeric_limits<double>::quiet_NaN();
+  int floquet_steps = 0;
 };
 
 /// One pseudo-arclength corrector step by harmonic balance over p_c, Ω or a_y (the

@@ -3,6 +3,8 @@
 #pragma once
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <complex>
 #include <utility>
 #include <vector>
@@ -29,6 +31,11 @@ void eig_general(const Eigen::MatrixXd& A, Eigen::VectorXcd& w, Eigen::MatrixXcd
 /// Round-off band of Re λ: |Re λ| < kRoundOffRel·max(|λ|, 1) counts as 0 (the rule of
 /// rotordyn.results.modes.ROUND_OFF_REL, for the verdicts computed in C++).
 inline constexpr double kRoundOffRel = 1e-9;
+
+/// Re λ with the round-off band set to exactly 0 (rotordyn.results.modes.settled_real).
+inline double settled_real(const std::complex<double>& l) {
+  return std::abs(l.real()) < kRoundOffRel * std::max(std::abs(l), 1.0) ? 0.0 : l.real();
+}
 
 /// Modal analysis of the second-order system (dense, n_dof ≤ a few thousand).
 /// xy_pairs: (ix, iy) index pairs used to classify whirl. n_modes <= 0: all (with

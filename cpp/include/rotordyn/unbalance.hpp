@@ -43,7 +43,9 @@ struct UnbalanceSweepResult {
   /// (n_s,) equilibrium status, or "error" with "<ErrorClass>: <what>" as the message
   std::vector<std::string> status, message;
   RowMatrixXd r;                             ///< (n_s, n) equilibrium (NaN on "error")
-  Eigen::VectorXd max_real;                  ///< (n_s,) 1/s; NaN unless check_stability
+  /// (n_s,) 1/s, the largest Re λ with the round-off band (kRoundOffRel) set to 0; NaN
+  /// unless check_stability
+  Eigen::VectorXd max_real;
   /// (n_s,) non-empty where the harmonic or the eigen solve failed after a converged,
   /// linearised equilibrium (a singular dynamic stiffness): the caller raises it.
   std::vector<std::string> solve_error;

@@ -40,7 +40,7 @@ DEFAULT_NEWTON = "exact"
 #: the correctors' methods: shooting (the default) or harmonic balance (``hb_continuation``)
 METHODS = ("shooting", "harmonic_balance")
 #: the options of the harmonic-balance correctors only (None: not given)
-HB_OPTIONS = ("harmonics", "time_points", "floquet", "floquet_margin")
+HB_OPTIONS = ("harmonics", "time_points", "floquet", "floquet_margin", "floquet_tol")
 
 
 def field_method_error(vary: str) -> InputError:
@@ -100,7 +100,7 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
                  screen_margin: float = 0.005, method: str = "shooting",
                  harmonics: int | None = None, time_points: int | None = None,
                  floquet: str | None = None, floquet_margin: float | None = None,
-                 progress=None) -> BranchResult:
+                 floquet_tol: float | None = None, progress=None) -> BranchResult:
     """Continue the periodic orbit ``start`` over ``vary`` within ``bounds``.
 
     Parameters
@@ -180,7 +180,16 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         the critical one is within ``floquet_margin`` + 3 × the trivial one's error of the
         unit circle (docs/nonlinear.md, "Floquet multipliers by Hill's method");
         ``"flow"`` the flow at every point. Each point's ``stats["floquet"]`` says which
-        route gave its multipliers (``"samples"``, ``"hill"`` or ``"flow"``).
+        route gave its multipliers (``"samples"``, ``"refined"``, ``"hill"`` or ``"flow"``).
+    floquet_tol
+        Harmonic balance with ``floquet="samples"`` only, in [0, 0.5] (default 0): > 0
+        refines a point's multipliers where the screen calls its verdict close (the band of
+        ``floquet_margin``) by the Magnus product at doubling step counts until |μ_c|
+        moves by at most ``floquet_tol``·max(1, |μ_c|) (``periodic_orbit``'s
+        ``floquet_tol``); the point's route is then ``"refined"`` with
+        ``stats["floquet_error"]``, and the flow recomputes it only where the refinement
+        leaves the verdict unresolved (not converged, or | |μ_c| − 1 | within its error).
+        0: the flow at every close point, as before.
     progress
         None, or a callable(point_index, BranchResult-so-far message) for progress lines.
 
@@ -215,9 +224,10 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
                              atol_m=atol_m, tol=tol, max_iter=max_iter, max_steps=max_steps,
                              fd_step=fd_step, sensitivity_rtol=sensitivity_rtol,
                              harmonics=harmonics, time_points=time_points, floquet=floquet,
-                             floquet_margin=floquet_margin, progress=progress)
+                             floquet_margin=floquet_margin, floquet_tol=floquet_tol,
+                             progress=progress)
     given = {"harmonics": harmonics, "time_points": time_points, "floquet": floquet,
-             "floquet_margin": floquet_margin}
+             "floquet_margin": floquet_margin, "floquet_tol": floquet_tol}
     for k in HB_OPTIONS:
         if given[k] is not None:
             raise InputError(f"{k}: applies only to method='harmonic_balance'")

@@ -4,9 +4,9 @@ harmonic balance"): the branch loop (predictor along the tangent, step control, 
 Hopf end) runs here; each corrector is one C++ call (``_core.hb_continuation_step``: Newton on
 the Fourier coefficients, the frequency and the parameter, bordered by ∂R/∂p and the arclength
 row, the AFT residual and Jacobian of ``rd.periodic_orbit(method="harmonic_balance")``). Each
-point's Floquet multipliers come from the samples' linearisations, and from one CVODES
-sensitivity flow where the verdict is not safe from the samples (``floquet_margin``); every
-point's ``stats["floquet"]`` says which."""
+point's Floquet multipliers come from the samples' linearisations, and where the verdict is
+not safe from the samples (``floquet_margin``) from their refined product (``floquet_tol`` >
+0) or one CVODES sensitivity flow; every point's ``stats["floquet"]`` says which."""
 
 from __future__ import annotations
 
@@ -87,10 +87,10 @@ def screen_stats(step, floquet: str) -> dict:
 def corrector_options(harmonics: int, time_points: int, tol: float, max_iter: int,
                       floquet: str, margin: float, rtol: float, atol_m: float,
                       velocity_scale: float, max_steps: int,
-                      sensitivity_rtol: float | None = None):
+                      sensitivity_rtol: float | None = None, floquet_tol: float = 0.0):
     """The ``_core.HbContinuationOptions`` of a harmonic-balance corrector: H, M, the Newton
-    tolerance and iterations, the Floquet route and margin, and the CVODES options of the
-    flow (atol on velocities = ``atol_m`` × ``velocity_scale``, rad/s)."""
+    tolerance and iterations, the Floquet route, margin and refinement tolerance, and the
+    CVODES options of the flow (atol on velocities = ``atol_m`` × ``velocity_scale``, rad/s)."""
     c = _core.CvodeOptions()
     c.rtol, c.atol_position = float(rtol), float(atol_m)
     c.atol_velocity = float(atol_m) * float(velocity_scale)
@@ -99,6 +99,8 @@ def corrector_options(harmonics: int, time_points: int, tol: float, max_iter: in
     ho.harmonics, ho.time_points = int(harmonics), int(time_points)
     ho.tol, ho.max_iter = float(tol), int(max_iter)
     ho.floquet = getattr(_core.HbFloquet, floquet)
+    # > 0: a close screen is refined before the flow (finish_point, hb_detail.cpp)
+    ho.floquet_tol = float(floquet_tol)
     ho.cvode = c
     if sensitivity_rtol is not None:
         ho.sensitivity_rtol = float(sensitivity_rtol)
@@ -136,7 +138,7 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
               tol: float, max_iter: int, max_steps: int, fd_step: float,
               sensitivity_rtol: float | None, harmonics: int | None,
               time_points: int | None, floquet: str | None, floquet_margin: float | None,
-              progress=None) -> BranchResult:
+              floquet_tol: float | None = None, progress=None) -> BranchResult:
     """The branch of ``setup`` from ``start`` by harmonic-balance correctors (the options
     checked by :func:`rotordyn.analysis.continuation.orbit_continuation`, which calls this)."""
     h_ = HARMONICS if harmonics is None else harmonics
@@ -145,6 +147,10 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
     floquet = v.choice("floquet", "samples" if floquet is None else floquet, FLOQUET)
     margin = v.in_range("floquet_margin",
                         FLOQUET_MARGIN if floquet_margin is None else floquet_margin, 0.0, 0.5)
+    ftol = 0.0 if floquet_tol is None else v.in_range("floquet_tol", floquet_tol, 0.0, 0.5)
+    if ftol > 0 and floquet != "samples":
+        raise InputError(f"floquet_tol: applies only to floquet='samples' (it refines the "
+                         f"samples' product), got floquet={floquet!r}")
     asm, n, kind = setup.asm, setup.n, setup.kind
     nb = 2 * h_ + 1
     nn = nb * n
@@ -167,7 +173,8 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
     sfull = np.concatenate([np.full(nn, L), scale[1:]])
 
     opt = corrector_options(h_, m_hb, tol, max_iter, floquet, margin, rtol, atol_m,
-                            max(abs(setup.omega), w0, 1.0), max_steps, sensitivity_rtol)
+                            max(abs(setup.omega), w0, 1.0), max_steps, sensitivity_rtol,
+                            ftol)
 
     # a model field: the core asks for the system re-assembled at every value it visits
     systems = asm.solver if setup.field is None else field_systems(setup)
@@ -182,9 +189,10 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
         return _core.hb_continuation_step(systems, inp, opt)
 
     stats = {"method": "harmonic_balance", "harmonics": h_, "time_points": int(m_hb),
-             "floquet": floquet, "floquet_margin": float(margin), "correctors": 0,
-             "failed_correctors": 0, "newton_iterations": 0, "evaluations": 0,
-             "linearizations": 0, "fd_evaluations": 0, "flow_rechecks": 0}
+             "floquet": floquet, "floquet_margin": float(margin), "floquet_tol": ftol,
+             "correctors": 0, "failed_correctors": 0, "newton_iterations": 0,
+             "evaluations": 0, "linearizations": 0, "fd_evaluations": 0, "flow_rechecks": 0,
+             "refined": 0}
 
     def tally(step):
         stats["correctors"] += 1
@@ -193,11 +201,14 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
         stats["linearizations"] += int(step.hb.linearizations)
         stats["fd_evaluations"] += int(step.fd_evaluations)
         stats["flow_rechecks"] += int(step.floquet_route == "flow")
+        stats["refined"] += int(step.floquet_steps > 0)  # refined (then maybe the flow)
 
     def result(step):
         return setup.point_result(step.hb.orbit, step.p, extra_stats={
             **hbal.hb_stats(step.hb), "floquet": step.floquet_route,
             **screen_stats(step, floquet),
+            **({"floquet_error": float(step.floquet_error)}
+               if step.floquet_route == "refined" else {}),
             "fd_evaluations": int(step.fd_evaluations)})
 
     p0 = setup.p_start * to_core

@@ -22,7 +22,7 @@ ORBIT_ONLY = (("kind", "--kind"), ("unbalance", "--unbalance"),
               ("subharmonic", "--subharmonic"), ("settle_s", "--settle-s"),
               ("disturbance_c", "--disturbance-c"), ("rtol", "--rtol"), ("newton", "--newton"),
               ("harmonics", "--harmonics"), ("samples", "--samples"), ("floquet", "--floquet"),
-              ("floquet_margin", "--floquet-margin"),
+              ("floquet_margin", "--floquet-margin"), ("floquet_tol", "--floquet-tol"),
               ("start_amplitude_c", "--start-amplitude-c"))
 #: flags of an equilibrium branch only
 EQUILIBRIUM_ONLY = (("no_refine", "--no-refine"),)

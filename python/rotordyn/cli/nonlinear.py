@@ -72,6 +72,12 @@ def register(sub) -> None:
                         "one CVODES sensitivity flow where |mu_c| is within F of 1 or the "
                         "trivial multiplier is off 1 by more than F/2, in [0, 0.5] (default "
                         "0.01)")
+    c.add_argument("--floquet-tol", type=float, default=None, metavar="TOL",
+                   help="harmonic balance with --floquet samples: where the screen calls a "
+                        "point's verdict close (--floquet-margin), refine its multipliers "
+                        "(Magnus steps doubled) until |mu_c| moves by at most "
+                        "TOL·max(1, |mu_c|) before any flow, in [0, 0.5] (default 0: the "
+                        "flow at every close point)")
     c.add_argument("--newton", choices=list(CLI_NEWTON), default=None,
                    help=f"--method shooting: the correctors (default {DEFAULT_NEWTON}): "
                         "exact = Newton with the monodromy from CVODES sensitivities and "
@@ -354,6 +360,11 @@ def _cmd_continuation(args) -> int:
         raise InputError("--floquet-margin: applies only to --method harmonic_balance")
     if args.floquet_margin is not None:
         v.in_range("--floquet-margin", args.floquet_margin, 0.0, 0.5)
+    if args.floquet_tol is not None:
+        if method != "harmonic_balance" or hb["floquet"] != "samples":
+            raise InputError("--floquet-tol: applies only to --method harmonic_balance with "
+                             "--floquet samples")
+        v.in_range("--floquet-tol", args.floquet_tol, 0.0, 0.5)
     newton = args.newton
     s = models.load(args.model)
     try:  # before the start orbit is solved: an unknown parameter, a field with shooting
@@ -385,7 +396,8 @@ def _cmd_continuation(args) -> int:
             return 1
     if method == "harmonic_balance":
         how = {"method": method, "harmonics": hb["harmonics"], "time_points": hb["time_points"],
-               "floquet": hb["floquet"], "floquet_margin": args.floquet_margin}
+               "floquet": hb["floquet"], "floquet_margin": args.floquet_margin,
+               "floquet_tol": args.floquet_tol}
     else:
         how = {"newton": newton}
     steps = {"ds_max": max(0.2, args.ds) if args.ds_max is None else args.ds_max}
@@ -411,7 +423,8 @@ def _cmd_continuation(args) -> int:
     info = {"method": method}
     if method == "harmonic_balance":
         info.update(harmonics=br.stats["harmonics"], time_points=br.stats["time_points"],
-                    floquet=br.stats["floquet"], floquet_margin=br.stats["floquet_margin"])
+                    floquet=br.stats["floquet"], floquet_margin=br.stats["floquet_margin"],
+                    floquet_tol=br.stats.get("floquet_tol", 0.0))
     routes = [o.stats.get("floquet", "flow") for o in br.orbits]
     record = {
         "status": br.status, "stop": br.stop, "message": br.message, "start": args.start,

@@ -17,7 +17,7 @@ from rotordyn.control.plant import as_plant, paired
 from rotordyn.errors import InputError
 from rotordyn.operation.controller import Controller
 from rotordyn.operation.profiles import PressureSchedule
-from rotordyn.results.modes import damping_ratio
+from rotordyn.results.modes import damping_ratio, point_stable
 
 
 @dataclass(frozen=True)
@@ -47,7 +47,8 @@ class ClosedLoopResult:
 
     @property
     def stable(self) -> bool:
-        return self.max_real < 0
+        """Every Re λ below the round-off band (:func:`rotordyn.results.modes.point_stable`)."""
+        return point_stable(self.eigenvalues)
 
     def _m(self, name):
         return getattr(self.margins.input, name) if self.margins is not None else math.nan

@@ -149,11 +149,11 @@ def margin_columns(m) -> dict:
 
 
 def eigen_columns(lam) -> dict:
-    from rotordyn.results.modes import damping_ratio
+    from rotordyn.results.modes import damping_ratio, point_stable
 
     z = damping_ratio(lam)
     i, j = int(np.argmax(lam.real)), int(np.argmin(z))
-    return {"point_stable": bool(lam.real.max() < 0),
+    return {"point_stable": point_stable(lam),  # the stability rows' rule
             "max_real_1_per_s": float(lam.real[i]),
             "max_real_freq_hz": float(abs(lam.imag[i]) / (2 * np.pi)),
             "min_damping_ratio": float(z[j]),

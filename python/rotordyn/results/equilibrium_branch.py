@@ -11,6 +11,7 @@ import numpy as np
 
 from rotordyn.results._display import Display
 from rotordyn.results.continuation import parameter_units
+from rotordyn.results.modes import mode_stable, point_stable
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -26,7 +27,8 @@ class EquilibriumBranchResult(Display):
     journal_x_m, journal_y_m, eccentricity_ratio, h_min_m: (n_points, n_bearings) relative to
     each housing (as :class:`EquilibriumResult`); max_real_1_per_s, freq_hz: (n_points,) the
     least-damped eigenvalue of eq. 19 (its real part and damped frequency); n_unstable:
-    (n_points,) eigenvalues with Re λ > 0; stable: (n_points,) bool (max_real < 0);
+    (n_points,) eigenvalues with Re λ > 0 beyond round-off; stable: (n_points,) bool (every
+    root ``mode_stable``, the round-off band of ``rotordyn.results.modes.ROUND_OFF_REL``);
     arclength, tangent_p: (n_points,) the scaled arclength s and dp/ds; point_status:
     (n_points,) each equilibrium's status (``ok`` or ``contact``: only converged points are on
     the branch). bifurcations: one dict per event between two successive points — ``kind``
@@ -98,8 +100,8 @@ class EquilibriumBranchResult(Display):
             h_min_m=np.array([e.h_min_m for e in es]),
             max_real_1_per_s=np.array([float(x[i].real) for x, i in zip(lam, imax)]),
             freq_hz=np.array([abs(float(x[i].imag)) / (2 * np.pi) for x, i in zip(lam, imax)]),
-            n_unstable=np.array([int(np.sum(x.real > 0)) for x in lam], dtype=np.int64),
-            stable=np.array([bool(np.all(x.real < 0)) for x in lam]),
+            n_unstable=np.array([int(np.sum(~mode_stable(x))) for x in lam], dtype=np.int64),
+            stable=np.array([point_stable(x) for x in lam], dtype=bool),
             arclength=np.array([q["s"] for q in pts]),
             tangent_p=np.array([q["t"][-1] for q in pts]),
             point_status=tuple(e.status for e in es), bearing_names=bearing_names,

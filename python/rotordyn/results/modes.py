@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from rotordyn import _core
 from rotordyn.results._display import Display
 
 from rotordyn._common.whirl import (  # noqa: F401 - the modal results' vocabulary
@@ -22,11 +23,14 @@ def _freq_list(f, whirl=None, n: int = 6) -> str:
     return ", ".join(items) + (", …" if len(f) > n else "")
 
 
-ROUND_OFF_REL = 1e-9
+ROUND_OFF_REL = float(_core.ROUND_OFF_REL)
 """Real parts within ±1e-9 max(|λ|, 1) of zero are round-off of an undamped mode: they count as
 zero damping (log dec 0, ζ 0) and as stable, never as a sign (issue 18: δ = −4e-12 read as
-unstable by a filter on the sign). The C++ sweeps and ``StabilityResult.stable`` use the same
-band."""
+unstable by a filter on the sign). The constant is the C++ core's (``kRoundOffRel`` in
+modal.hpp), so the C++ verdicts (the stability batch's least stable root, the root picker,
+the unbalance sweep's max Re λ) and the Python ones (:func:`mode_stable`,
+:func:`point_stable`: ``StabilityResult.stable``, every sweep row's ``mode_stable`` and
+``point_stable``) share one band."""
 
 
 def settled_real(eigenvalues: np.ndarray) -> np.ndarray:
@@ -39,6 +43,12 @@ def settled_real(eigenvalues: np.ndarray) -> np.ndarray:
 def mode_stable(eigenvalues: np.ndarray) -> np.ndarray:
     """Per mode: Re λ below the round-off band (an undamped mode is marginally stable)."""
     return settled_real(eigenvalues) <= 0.0
+
+
+def point_stable(eigenvalues: np.ndarray) -> bool:
+    """The point's verdict: every root :func:`mode_stable` (no root: True). The one rule of
+    ``StabilityResult.stable`` and of every sweep row's ``point_stable``."""
+    return bool(np.all(mode_stable(np.asarray(eigenvalues))))
 
 
 def damping_ratio(eigenvalues: np.ndarray) -> np.ndarray:

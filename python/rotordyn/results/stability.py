@@ -10,7 +10,7 @@ import numpy as np
 from rotordyn.results._display import Display
 
 from rotordyn.results.equilibrium import CONVERGED, STATUSES, EquilibriumResult
-from rotordyn.results.modes import damping_ratio, log_dec, mode_stable
+from rotordyn.results.modes import damping_ratio, log_dec, mode_stable, point_stable
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -140,12 +140,13 @@ class StabilityResult(Display):
 
     @property
     def stable(self) -> bool:
-        """No eigenvalue grows (paper §6.2): every Re λ < 1e-9 |λ|. Real parts within that
+        """No eigenvalue grows (paper §6.2): every Re λ below the round-off band
+        (:func:`rotordyn.results.modes.point_stable`, 1e-9 max(|λ|, 1)). Real parts within that
         round-off band of zero (an undamped rotor) count as marginally stable, not unstable."""
         if self.status not in CONVERGED or len(self.eigenvalues) == 0:
             return False
         lam = self.eigenvalues if self.all_eigenvalues is None else self.all_eigenvalues
-        return bool(np.all(mode_stable(self.eigenvalues)) and np.all(mode_stable(lam)))
+        return point_stable(self.eigenvalues) and point_stable(lam)
 
     def plot(self, mode: int | None = None, ax=None, system=None):
         """3-D whirl orbits of ``mode`` (0-based; default: the least damped rotor mode) along

@@ -34,7 +34,8 @@ PEAK_COLUMNS = ("station", "critical_speed_hz", "peak_m", "n1_hz", "n2_hz",
 class UnbalanceResult(Display):
     """x, y: (n_speeds, n_stations) complex amplitudes (m) of x = Re(X e^{iΩt}) at the output
     stations; speeds_hz (n_speeds,); point_status (n_speeds,); max_real_1_per_s (n_speeds,)
-    the linear system's largest Re λ at each speed, or None when not checked (``stable``)."""
+    the linear system's largest Re λ at each speed (round-off of an undamped mode, within
+    :data:`~rotordyn.results.modes.ROUND_OFF_REL` of 0, set to 0), or None when not checked (``stable``)."""
 
     speeds_hz: np.ndarray
     stations: tuple
@@ -56,15 +57,16 @@ class UnbalanceResult(Display):
 
     @property
     def stable(self) -> np.ndarray:
-        """(n_speeds,) bool: the equilibrium is linearly stable (Re λ below the round-off band
-        of 1e-9 |λ|), so the unbalance response is a steady orbit; all True when not checked.
+        """(n_speeds,) bool: the equilibrium is linearly stable (every Re λ below the round-off
+        band of :data:`rotordyn.results.modes.ROUND_OFF_REL`, which ``max_real_1_per_s``
+        already sets to 0), so the unbalance response is a steady orbit; all True when not checked.
         Above the threshold of instability the computed response is the forced part of a
         motion that grows: it is not what the machine shows. False at a speed without a
         converged equilibrium (nothing was linearised there: no stable verdict)."""
         solved = self._solved()
         if self.max_real_1_per_s is None:
             return solved
-        return solved & ~(self.max_real_1_per_s > 1e-9)
+        return solved & ~(self.max_real_1_per_s > 0)
 
     def _solved(self) -> np.ndarray:
         """(n_speeds,) bool: the speed's equilibrium converged."""

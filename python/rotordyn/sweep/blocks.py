@@ -17,7 +17,7 @@ from rotordyn import _core
 from rotordyn._common.whirl import WHIRL_NAMES
 from rotordyn.analysis.linear import FD_REL_STEP
 from rotordyn.errors import RotordynError
-from rotordyn.results.modes import settled_real
+from rotordyn.results.modes import log_dec, settled_real
 from rotordyn.sweep.columns import runs
 from rotordyn.sweep.points import (CONVERGED, STATUS, equilibrium_options, mode_kind, operating,
                                    point_list, ref_bearing, segments, stable_modes)
@@ -184,7 +184,7 @@ def _stab_batch(job, seg, ops):
         RE = settled_real(EV)  # round-off of an undamped mode is 0, not a sign
         AB = np.abs(EV)
         DR = np.where(AB > 0, -RE / AB, np.nan)
-        LD = np.where(EV.imag != 0, -2 * np.pi * RE / EV.imag, np.nan)
+        LD = log_dec(EV)  # the API's: −inf for a divergence, +0 for round-off
         FR = EV.imag / (2 * np.pi)
         # the thinnest film (NaN on a failed point: the batch's one rule, all its films NaN)
         HMIN = (np.fmin.reduce(H, axis=1) if H.shape[1] else np.full(len(st), math.nan))
@@ -327,9 +327,15 @@ def _boundary_block(job, k, y, fr, st, lam, whirl, share):
         RE = settled_real(EV)
         AB = np.abs(EV)
         DR = np.where(AB > 0, -RE / AB, np.nan)
-        LD = np.where(EV.imag != 0, -2 * np.pi * RE / EV.imag, np.nan)
+        LD = log_dec(EV)  # the API's: −inf for a divergence, +0 for round-off
     MS = stable_modes(EV)
     rep = np.repeat(k, ke)
+    # the point's verdict by the stability rows' rule (every root mode_stable, round-off
+    # band included) over the roots max Re λ counts: the rotor's alone with
+    # exclude_sleeve_modes. max Re λ's raw sign called an undamped rotor's +1e-12 unstable.
+    SH = np.concatenate([share[q] for q in k])
+    counts = ~(SH > 0.5) if job.options.get("exclude_sleeve_modes", False) else np.ones_like(MS)
+    PS = np.logical_and.reduceat(MS | ~counts, np.r_[0, np.cumsum(ke)[:-1]])
     return (rep, {"mode_id": np.concatenate([np.arange(m) for m in ke]).astype(np.int64),
                   "mode": np.concatenate([np.arange(1, m + 1) for m in ke]).astype(np.int64),
                   "freq_hz": EV.imag / (2 * np.pi), "eig_real_1_per_s": EV.real,
@@ -337,6 +343,6 @@ def _boundary_block(job, k, y, fr, st, lam, whirl, share):
                   "whirl": _NAMES[np.clip(np.concatenate([whirl[q] for q in k]), -1, 1) + 1],
                   "kind": np.where(np.concatenate([share[q] for q in k]) > 0.5, "sleeve",
                                    "rotor"),
-                  "mode_stable": MS, "point_stable": y[rep] < 0,
+                  "mode_stable": MS, "point_stable": np.repeat(PS, ke),
                   "max_real_1_per_s": y[rep], "max_real_freq_hz": fr[rep],
                   "level": job.level, "status": st[rep], "message": ""})

@@ -55,10 +55,12 @@ def _classify(table) -> dict[int, tuple[int, float, float]]:
     st = table.column("status").cast("string").to_numpy(zero_copy_only=False)[first]
     y = table.column("max_real_1_per_s").to_numpy(zero_copy_only=False)[first]
     fr = table.column("max_real_freq_hz").to_numpy(zero_copy_only=False)[first]
+    ps = table.column("point_stable").to_numpy(zero_copy_only=False)[first]
     out = {}
-    for p, s, v, f in zip(pid[first], st, y, fr):
+    for p, s, v, f, good in zip(pid[first], st, y, fr, ps):
         ok = s in ("ok", "contact") and v is not None and math.isfinite(v)
-        out[int(p)] = ((0 if v < 0 else 1) if ok else 2, float(v) if ok else math.nan,
+        # the row's verdict (round-off band included), not max Re λ's raw sign
+        out[int(p)] = ((0 if good else 1) if ok else 2, float(v) if ok else math.nan,
                        float(f) if ok else math.nan)
     return out
 
@@ -238,8 +240,8 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
         store.compact_complete(cid)
         vals = np.full(shape, np.nan)
         for p, v in modes.field().items():  # the map's rule (max Re λ's sign at each point)
-            if state[p][0] != 2:
-                vals[np.unravel_index(p - base, shape)] = v
+            if state[p][0] != 2:  # a stable point's round-off (+1e-12) is not a sign
+                vals[np.unravel_index(p - base, shape)] = v if state[p][0] else min(v, 0.0)
         rows = {"line": [], "vertex": [], x: [], y: []}
         if z is not None:
             rows[z] = []

@@ -25,7 +25,7 @@ import numpy as np
 from rotordyn.analysis.thermal_dynamics import thermal_point
 from rotordyn.errors import RotordynError
 from rotordyn.results.equilibrium import CONVERGED
-from rotordyn.results.modes import settled_real
+from rotordyn.results.modes import log_dec, settled_real
 from rotordyn.results.thermal import THERMAL_POINT_COLUMNS, thermal_point_values
 from rotordyn.sweep.columns import merge
 from rotordyn.sweep.points import STATUS, operating, point_list, ref_bearing, stable_modes
@@ -130,7 +130,7 @@ def _modes_block(k, st, t, ids, asm, bearing=None):
         re = settled_real(lam[None, :])[0]
         ab = np.abs(lam)
         dr = np.where(ab > 0, -re / ab, np.nan)
-        ld = np.where(lam.imag != 0, -2 * np.pi * re / lam.imag, np.nan)
+        ld = log_dec(lam)  # the API's: −inf for a growing real root (a divergence)
     e = st.linear.equilibrium
     bc = ref_bearing(asm, bearing)
     hm = np.atleast_1d(e.h_min_m)
