@@ -81,3 +81,28 @@ def test_campbell_and_unbalance_default_speeds_come_from_the_model(capsys):
                  "--operating-speed-hz", "100", "120"]) == 0
     assert "speeds: 121 from 3 to 150 Hz (2 %…125 % of the maximum operating speed 120 Hz" \
         in capsys.readouterr().err
+
+
+def test_tables_above_the_models_own_n_mc(table_model):
+    """Tables over 170–210 Hz and no operating speed: the model's own N_mc (168 Hz, the
+    tables' top / 1.25) is moved into the tables instead of refusing an option the user never
+    gave (review finding); tables far above the criticals give their own range."""
+    def shifted(lo, hi):
+        return dataclasses.replace(table_model, bearings=tuple(
+            dataclasses.replace(b, speeds_hz=(lo, 0.5 * (lo + hi), hi))
+            for b in table_model.bearings))
+    r = speed_range(shifted(170.0, 210.0))
+    assert r.speeds_hz[0] == pytest.approx(170.0) and r.speeds_hz[-1] == pytest.approx(210.0)
+    assert r.n_mc_hz == pytest.approx(170.0) and "inside the tables" in r.why
+    r = speed_range(shifted(2000.0, 2100.0))
+    assert r.speeds_hz[0] == pytest.approx(2000.0) and r.speeds_hz[-1] == pytest.approx(2100.0)
+    assert np.all(np.diff(r.speeds_hz) > 0)
+    with pytest.raises(rd.InputError, match="--operating-speed-hz"):
+        speed_range(shifted(170.0, 210.0), (100.0, 150.0))
+
+
+def test_log_dec_of_a_neutral_real_root_is_zero():
+    from rotordyn.results.modes import log_dec
+
+    np.testing.assert_array_equal(log_dec(np.array([0j, 1e-13 + 0j, -1.0 + 0j, 1.0 + 0j])),
+                                  [0.0, 0.0, np.inf, -np.inf])

@@ -96,7 +96,7 @@ def table_window(system):
     return lo, hi, text
 
 
-def _within_tables(system, rng: SpeedRange, explicit: bool) -> SpeedRange:
+def _within_tables(system, rng: SpeedRange, explicit: bool, given_n_mc: bool) -> SpeedRange:
     """``rng`` limited to the speeds the bearing tables cover (the coefficients are not
     defined outside them), saying so in its ``why``: an automatic range is cut there (as many
     speeds over what is left), a given list keeps its speeds inside them; a
@@ -115,14 +115,21 @@ def _within_tables(system, rng: SpeedRange, explicit: bool) -> SpeedRange:
     cut = sp[(sp >= lo - tol) & (sp <= hi + tol)]
     if explicit:
         if cut.size == 0:
-            raise InputError(f"--speeds-hz: {sp[0]:g}–{sp[-1]:g} Hz has no speed within the "
-                             f"bearing tables' {lo:g}–{hi:g} Hz ({text})")
+            raise InputError(f"speeds_hz (--speeds-hz): {sp[0]:g}–{sp[-1]:g} Hz has no speed "
+                             f"within the bearing tables' {lo:g}–{hi:g} Hz ({text})")
         return SpeedRange(cut, min(rng.n_mc_hz, hi), f"{rng.why}; {sp.size - cut.size} of "
                           f"them outside the bearing tables dropped: {text}")
     if rng.n_mc_hz > hi + tol or rng.n_mc_hz < lo - tol:
-        raise InputError(f"--operating-speed-hz: the maximum continuous speed {rng.n_mc_hz:g} "
-                         f"Hz is outside the bearing tables' {lo:g}–{hi:g} Hz ({text})")
-    cut = np.linspace(max(sp[0], lo), min(sp[-1], hi), sp.size)  # the same grid size
+        if given_n_mc:  # the user's maximum continuous speed: refused, named
+            raise InputError(f"--operating-speed-hz: the maximum continuous speed "
+                             f"{rng.n_mc_hz:g} Hz is outside the bearing tables' {lo:g}–{hi:g} "
+                             f"Hz ({text})")
+        top = min(max(rng.n_mc_hz, lo), hi)  # the model's own N_mc, moved into the tables
+        rng = SpeedRange(sp, top, f"{rng.why}; N_mc taken as {top:.4g} Hz, inside the tables")
+    a, b = max(sp[0], lo), min(sp[-1], hi)
+    if not a < b:  # no overlap: the tables' own speeds
+        a, b = lo, hi
+    cut = np.linspace(a, b, sp.size)  # the same grid size
     return SpeedRange(cut, rng.n_mc_hz, f"{rng.why}; cut to {cut[0]:.4g}–{cut[-1]:.4g} Hz: "
                       f"{text}")
 
@@ -143,7 +150,7 @@ def speed_range(system, operating_speed_hz=None, speeds_hz=None, rigid_map=None,
         top = win[1] / API_SPEED_FACTOR
         rng = SpeedRange(rng.speeds_hz, top, rng.why + f"; N_mc taken as {top:.4g} Hz, the "
                          "tables' top speed / 1.25")
-    return _within_tables(system, rng, speeds_hz is not None)
+    return _within_tables(system, rng, speeds_hz is not None, bool(operating_speed_hz))
 
 
 def _speed_range(system, operating_speed_hz, speeds_hz, rigid_map, paper) -> SpeedRange:

@@ -67,7 +67,7 @@ def log_dec(eigenvalues: np.ndarray) -> np.ndarray:
     im = lam.imag
     re = settled_real(lam)
     d = np.where(im > 0, -2 * np.pi * re / np.where(im > 0, im, 1.0),
-                 np.where(re > 0, -np.inf, np.inf))
+                 np.where(re > 0, -np.inf, np.where(re < 0, np.inf, 0.0)))  # neutral real: 0
     return np.where(np.isnan(lam), np.nan, d) + 0.0
 
 
