@@ -10,6 +10,8 @@ import math
 
 import numpy as np
 
+from rotordyn.results.modes import settled_real
+
 from rotordyn.errors import RotordynError
 from rotordyn.units import hz_to_rad_s
 
@@ -57,10 +59,13 @@ def bifurcations(pts, n, correct, prob, L, D_p, refine, stats, h_fd) -> tuple:
     out = []
     for i in range(1, len(pts)):
         a, b = pts[i - 1], pts[i]
-        ca = int(np.sum((a["lam"].imag > 0) & (a["lam"].real > 0)))
-        cb = int(np.sum((b["lam"].imag > 0) & (b["lam"].real > 0)))
+        # unstable roots by the verdict's rule (round-off band: results.modes.settled_real),
+        # as EquilibriumBranchResult's n_unstable counts them
+        ra, rb = settled_real(a["lam"]), settled_real(b["lam"])
+        ca = int(np.sum((a["lam"].imag > 0) & (ra > 0)))
+        cb = int(np.sum((b["lam"].imag > 0) & (rb > 0)))
         fa, fb = signed_smin(a["Jr"]), signed_smin(b["Jr"])
-        na, nb = int(np.sum(a["lam"].real > 0)), int(np.sum(b["lam"].real > 0))
+        na, nb = int(np.sum(ra > 0)), int(np.sum(rb > 0))
         turn = a["t"][-1] * b["t"][-1] < 0
         if fa * fb < 0 or not turn:  # 2 × (pairs through the axis)
             pairs = nb - na - _real_crossing(a["lam"], fa, fb)

@@ -35,8 +35,8 @@ def _point(system, params, exclude_sleeve_modes, thermal=None):
     if st.status not in ("ok", "contact") or len(st.eigenvalues) == 0:
         return math.nan, math.nan, st.status
     lam = st.eigenvalues
-    if exclude_sleeve_modes:
-        lam = lam[st.kind == "rotor"]
+    if exclude_sleeve_modes:  # the rotor's and the tilting pads' roots (the sweep's rule)
+        lam = lam[st.kind != "sleeve"]
     i = int(np.argmax(lam.real))
     return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), st.status
 

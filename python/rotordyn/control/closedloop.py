@@ -194,9 +194,13 @@ def closed_loop(p, k, *, freqs_hz=None, computation_delay_s: float | None = None
     elif np.all(np.isfinite(lam)) and lam.real.max() < 0:
         m, msg = margins(p, k0, computation_delay_s=tau, pade_order=pade_order), "ok"
     else:
+        from rotordyn.results.modes import point_stable
+
         m = None
-        msg = (f"not computed: the closed loop is not stable (largest Re λ = "
-               f"{float(np.nanmax(lam.real)):.6g} 1/s)")
+        marginal = np.all(np.isfinite(lam)) and point_stable(lam)  # .stable, yet not decaying
+        msg = (f"not computed: the closed loop is " + ("only marginally stable" if marginal
+                                                       else "not stable")
+               + f" (largest Re λ = {float(np.nanmax(lam.real)):.6g} 1/s)")
     return ClosedLoopResult(Acl, lam, damping_ratio(lam), m, msg, f, L)
 
 

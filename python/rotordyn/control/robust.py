@@ -119,8 +119,11 @@ def closed_loop_point(system, k, speed_hz, pc, ay, *, actuator=None, equilibrium
     if not np.all(np.isfinite(lam)):
         raise ArithmeticError("non-finite closed-loop eigenvalues")
     if not (with_margins and lam.real.max() < 0):
+        from rotordyn.results.modes import point_stable
+
         msg = "margins not computed" if lam.real.max() < 0 else \
-            f"unstable closed loop (largest Re λ = {lam.real.max():.6g} 1/s): no margins"
+            (("marginally stable" if point_stable(lam) else "unstable")
+             + f" closed loop (largest Re λ = {lam.real.max():.6g} 1/s): no margins")
         return p, lam, None, msg
     tau = k.computation_delay_s
     kk = with_pade_delay(k, tau, pade_order) if tau and not k.discrete else k
