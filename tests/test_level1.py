@@ -237,7 +237,10 @@ def test_log_dec_at_round_off_is_plus_zero():
     from rotordyn.results.modes import log_dec
 
     d = log_dec(np.array([1e-13 + 300j, -1e-13 + 300j, 0j]))
-    assert d[0] == 0.0 and not np.signbit(d[0]) and not np.signbit(d[1]) and np.isinf(d[2])
+    # a neutral real root (λ = 0) is 0 too, as its damping ratio: not +inf ("infinitely
+    # damped"), which it was before the 2026-12-05 review
+    assert d[0] == 0.0 and not np.signbit(d[0]) and not np.signbit(d[1])
+    assert d[2] == 0.0 and not np.signbit(d[2])
     import pandas as pd
 
     assert table_text(pd.DataFrame({"log_dec": [-0.0, 0.5]})).split()[1] == "0"
