@@ -59,7 +59,12 @@ def test_report_of_a_table_model_without_operating_speed(tmp_path):
         code = main(["report", str(MODELS / "compressor_table.toml"), "--out", str(tmp_path)])
     assert code == 0, err.getvalue()
     text = (tmp_path / "report.txt").read_text(encoding="utf-8")
-    assert "critical speeds over 16.41–200 Hz" in text
+    lo = speed_range(rd.System.from_toml(MODELS / "compressor_table.toml")).speeds_hz[0]
+    from rotordyn.report.criteria import critical_speed_map
+
+    second = critical_speed_map(rd.System.from_toml(MODELS / "compressor_table.toml"))[1][-1, 1]
+    assert lo == pytest.approx(0.02 * 1.25 * second, rel=1e-12)  # 2 % of 125 % of it
+    assert f"critical speeds over {lo:.4g}–200 Hz" in text
     assert "ends at 200 Hz" in text
 
 
@@ -75,8 +80,13 @@ def test_campbell_and_unbalance_default_speeds_come_from_the_model(capsys):
     np.testing.assert_array_equal(_speeds(ns, rd.models.paper_rig()), np.arange(5.0, 121.0))
     assert main(["campbell", str(MODELS / "compressor_table.toml")]) == 0
     cap = capsys.readouterr()
-    assert "speeds: 121 from 16.41 to 200 Hz" in cap.err and "ends at 200 Hz" in cap.err
-    assert "141.066" in cap.out  # the first critical, beyond the rig's 120 Hz
+    lo = speed_range(rd.System.from_toml(MODELS / "compressor_table.toml")).speeds_hz[0]
+    assert f"speeds: 121 from {lo:.4g} to 200 Hz" in cap.err and "ends at 200 Hz" in cap.err
+    # a forward 1× crossing beyond the rig's 120 Hz (the API's own Campbell diagram finds it)
+    crit = rd.campbell(rd.System.from_toml(MODELS / "compressor_table.toml"),
+                       np.linspace(lo, 200.0, 121)).critical_speeds()
+    first = float(crit["speed_hz"].iloc[0])
+    assert first > 120.0 and f"{first:g}"[:5] in cap.out
     assert main(["unbalance", str(MODELS / "compressor_linear.toml"), "--unbalance", "3,1e-4,0",
                  "--operating-speed-hz", "100", "120"]) == 0
     assert "speeds: 121 from 3 to 150 Hz (2 %…125 % of the maximum operating speed 120 Hz" \

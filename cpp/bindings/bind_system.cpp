@@ -39,6 +39,9 @@ void bind_system(py::module_& m) {
       .def_readwrite("C", &SystemModel::C)
       .def_readwrite("G", &SystemModel::G)
       .def_readwrite("Kc", &SystemModel::Kc)
+      .def("offset_load", &SystemModel::offset_load, py::arg("omega"), py::arg("a"),
+           "(n,) the shaft's force from the housing offsets a at spin speed omega (rad/s): "
+           "K a + omega Kc a, N.")
       .def_readwrite("Q", &SystemModel::Q)
       .def_readwrite("chamber", &SystemModel::chamber)
       .def_readwrite("films", &SystemModel::films)

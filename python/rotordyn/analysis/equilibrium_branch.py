@@ -75,12 +75,9 @@ class _Problem:
 
     @staticmethod
     def _offset_load(asm, w, a) -> np.ndarray:
-        """(K + Ω K_c) a (n,), N: the shaft's force from the housing offsets, elastic and,
-        with rotating damping, circulatory (the solver's H carries −Ω K_c r only)."""
-        m = asm.model
-        f = np.asarray(m.K) @ a
-        Kc = np.asarray(m.Kc)
-        return f + w * (Kc @ a) if Kc.size else f
+        """(K + Ω K_c) a (n,), N: the core's SystemModel::offset_load (the solver's H
+        carries −Ω K_c r only)."""
+        return np.asarray(asm.model.offset_load(float(w), np.asarray(a, dtype=float)))
 
     def load_scale(self, p) -> float:
         asm, w, pc, a, _, Q, ch = self._parts(p)

@@ -77,16 +77,7 @@ class RotorMatrices:
         if self._kc is False:
             self._kc = None
             if self.system.rotor.has_rotating_damping:
-                import scipy.sparse as sp
-
-                core = self.system.to_core()
-                elems = core.elements
-                for e in elems:
-                    e.damping_alpha = 0.0
-                core.elements, core.disks, core.supports, core.rigid_nodes = elems, [], [], []
-                data, indices, indptr, shape = _core.assemble(core)["C"]
-                Kb = sp.csc_matrix((data, indices, indptr), shape=shape)
-                kc = -np.asarray((Kb @ turn_matrix(shape[0])).todense())
+                kc = free_free_circulatory(self.system)
                 dofs = np.asarray(self.full.dofs)
                 kc = kc[np.ix_(dofs, dofs)]
                 if self.reduction is not None:
@@ -127,6 +118,22 @@ class RotorMatrices:
         out = np.zeros((n_full,) + qf.shape[1:], dtype=qf.dtype)
         out[np.asarray(self.full.dofs)] = qf
         return out
+
+
+def free_free_circulatory(system) -> np.ndarray:
+    """(4 n_nodes, 4 n_nodes) K_c = −K_β J of the free-free shaft (no supports, disks or
+    constraints), N·s/m: K_β = Σ β_e K_e assembled in C++ (each section's β, else the
+    rotor's), J :func:`turn_matrix`."""
+    import scipy.sparse as sp
+
+    core = system.to_core()
+    elems = core.elements
+    for e in elems:
+        e.damping_alpha = 0.0
+    core.elements, core.disks, core.supports, core.rigid_nodes = elems, [], [], []
+    data, indices, indptr, shape = _core.assemble(core)["C"]
+    Kb = sp.csc_matrix((data, indices, indptr), shape=shape)
+    return -np.asarray((Kb @ turn_matrix(shape[0])).todense())
 
 
 def turn_matrix(n_dof: int):

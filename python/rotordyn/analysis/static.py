@@ -27,7 +27,7 @@ from rotordyn._common.status import CONVERGED
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis.assembly import assembled, gravity_load
 from rotordyn.analysis.equilibrium import equilibrium
-from rotordyn.analysis.modes import rotor_matrices, turn_matrix
+from rotordyn.analysis.modes import free_free_circulatory, rotor_matrices, turn_matrix
 from rotordyn.bearings import BEARING_TYPES
 from rotordyn.errors import InputError
 from rotordyn.model.system import System
@@ -154,14 +154,8 @@ def static(system: System, speed_hz: float = 50.0, chamber_pressure_pa: float = 
     # Residual of the free-free rotor (without the linear supports): the supports' reactions
     # at their nodes, the bearing forces at theirs, ~0 elsewhere.
     K_ff = system.K().toarray()
-    if circ is not None:  # the free-free circulatory stiffness, element by element
-        J8 = turn_matrix(8).toarray()
-        node = 0
-        for sec, wb in zip(system.rotor.sections, _circulatory_betas(system, omega)):
-            Ke = sec.K(system.material(sec.material))
-            for _ in range(sec.n_elements):
-                K_ff[4 * node: 4 * node + 8, 4 * node: 4 * node + 8] -= wb * (Ke @ J8)
-                node += 1
+    if circ is not None:  # the free-free circulatory stiffness
+        K_ff = K_ff + omega * free_free_circulatory(system)
     k_sup = np.zeros((n_full, n_full))
     for sp in system.supports:
         if sp.type == "linear":

@@ -96,7 +96,7 @@ def table_window(system):
     return lo, hi, text
 
 
-def _within_tables(system, rng: SpeedRange, explicit: bool, given_n_mc: bool) -> SpeedRange:
+def _within_tables(win, rng: SpeedRange, explicit: bool, given_n_mc: bool) -> SpeedRange:
     """``rng`` limited to the speeds the bearing tables cover (the coefficients are not
     defined outside them), saying so in its ``why``: an automatic range is cut there (as many
     speeds over what is left), a given list keeps its speeds inside them; a
@@ -104,8 +104,7 @@ def _within_tables(system, rng: SpeedRange, explicit: bool, given_n_mc: bool) ->
     the option."""
     from rotordyn.errors import InputError
 
-    win = table_window(system)
-    if win is None:
+    if win is None:  # no bearing table bounds the speeds (:func:`table_window`)
         return rng
     lo, hi, text = win
     sp = rng.speeds_hz
@@ -150,7 +149,7 @@ def speed_range(system, operating_speed_hz=None, speeds_hz=None, rigid_map=None,
         top = win[1] / API_SPEED_FACTOR
         rng = SpeedRange(rng.speeds_hz, top, rng.why + f"; N_mc taken as {top:.4g} Hz, the "
                          "tables' top speed / 1.25")
-    return _within_tables(system, rng, speeds_hz is not None, bool(operating_speed_hz))
+    return _within_tables(win, rng, speeds_hz is not None, bool(operating_speed_hz))
 
 
 def _speed_range(system, operating_speed_hz, speeds_hz, rigid_map, paper) -> SpeedRange:
