@@ -40,7 +40,7 @@ import numpy as np
 from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, executor,
                                       group_size)
 from rotordyn.sweep.spec import boundary_axes, fine_axes
-from rotordyn.sweep.store import BOUNDARY, Store, part_metadata
+from rotordyn.sweep.store import BOUNDARY, Store, part_metadata, task_key
 from rotordyn.sweep.boundary_modes import ModeTracks, with_ids
 from rotordyn.sweep.surface import ColumnPlan, column_field
 from rotordyn.sweep.points import base_system
@@ -137,8 +137,9 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
     job = Job(spec.name, model_toml, spec.analysis, spec.options, ax)
     # a resume refuses parts of another row schema (Store._check_schemas)
     store = Store(out, header, resume=resume, group=1,
-                  schema=job_schema(job, base_system(model_toml)))
-    job.key = header["spec_hash"]
+                  schema=job_schema(job, base_system(model_toml)),
+                  spec_aliases=(spec.legacy_hash(),))
+    job.key = task_key(header)
     job.meta = part_metadata(header)
     base = int(np.ravel_multi_index(tuple(0 for _ in ax), tuple(len(v) for v in ax.values())))
 

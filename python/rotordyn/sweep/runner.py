@@ -19,7 +19,7 @@ from pathlib import Path
 from rotordyn._common import validate as v
 from rotordyn._common.info import __version__, build_info
 from rotordyn.sweep.spec import SweepSpec
-from rotordyn.sweep.store import Store, part_metadata, read_manifest
+from rotordyn.sweep.store import Store, part_metadata, read_manifest, task_key
 from rotordyn.sweep.boundary import run_boundary
 from rotordyn.sweep.dataset import open_dataset
 from rotordyn.sweep.execution import (Progress, SweepInterrupted, SweepResult, check_scheduler,
@@ -114,7 +114,7 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
                             progress=progress, worker_timeout=worker_timeout)
     job = Job(spec.name, model_toml, spec.analysis, spec.options, spec.ordered_axes)
     store = Store(out, header, resume=resume, group=header["group"],
-                  schema=job_schema(job, system))
+                  schema=job_schema(job, system), spec_aliases=(spec.legacy_hash(),))
     try:
         bounds = spec.chunk_bounds()
         store.compact_complete(n_chunks)
@@ -125,7 +125,7 @@ def run_sweep(spec_path, out, *, scheduler: str | None = None, workers: int | No
         bar = Progress(n_chunks, len(done), counts0,
                        enabled=None if progress is None else bool(progress))
         if todo:
-            job.key = header["spec_hash"]
+            job.key = task_key(header)
             job.meta = part_metadata(header)
             ex = None
             try:

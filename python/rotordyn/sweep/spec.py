@@ -596,7 +596,18 @@ class SweepSpec:
         return [(lo, min(lo + size, n)) for lo in range(0, n, size)]
 
     def hash(self) -> str:
-        payload = json.dumps({"model": self.model, "analysis": self.analysis,
+        """16 hex digits of the analysis, axes, options and chunking. The model is not in
+        it: it enters by its content (the manifest's ``model_hash``), so a sweep whose model
+        file moved, or that runs from another directory or machine, still resumes."""
+        return self._hash({})
+
+    def legacy_hash(self) -> str:
+        """The hash before 2026-12-06, which also held the model reference as resolved
+        (a TOML's absolute path): a directory written then still resumes."""
+        return self._hash({"model": self.model})
+
+    def _hash(self, extra: dict) -> str:
+        payload = json.dumps({**extra, "analysis": self.analysis,
                               "axes": self.axes, "options": self.options,
                               "chunk_size": self.chunk_size, "max_files": self.max_files},
                              sort_keys=True)

@@ -62,6 +62,12 @@ def part_metadata(header: dict) -> dict:
                                    "build_info", "analysis", "options", "units")}
 
 
+def task_key(header: dict) -> str:
+    """The sweep's part of its chunks' task names on a dask scheduler: the spec's and the
+    model's hashes, so two sweeps that differ only in their model never share a task."""
+    return f"{header['spec_hash']}-{header['model_hash']}"
+
+
 def part_name(lo: int, hi: int) -> str:
     """File holding chunks lo..hi (inclusive)."""
     return f"part-{lo:06d}-{hi:06d}.parquet"
@@ -189,9 +195,12 @@ class Store:
     """An open sweep directory, locked for this process."""
 
     def __init__(self, out, header: dict, *, resume: bool = True, group: int = 1,
-                 schema: pa.Schema | None = None):
+                 schema: pa.Schema | None = None, spec_aliases: tuple[str, ...] = ()):
         self.out = Path(out)
         self.header = header
+        # older spec hashes of this same sweep (SweepSpec.legacy_hash): a directory written
+        # under one resumes, and its manifest is rewritten with today's hash
+        self.spec_aliases = tuple(spec_aliases)
         # the rows' schema of this sweep (None: not checked): a resume refuses parts written
         # with another one (an older rotordyn's rows) rather than mixing two in one dataset
         self.schema = schema
@@ -307,7 +316,9 @@ class Store:
             self._write_manifest()
             self._rewrite_log([])
             return
-        same = (manifest.get("spec_hash") == self.header["spec_hash"]
+        alias = (manifest.get("spec_hash") != self.header["spec_hash"]
+                 and manifest.get("spec_hash") in self.spec_aliases)
+        same = ((alias or manifest.get("spec_hash") == self.header["spec_hash"])
                 and manifest.get("model_hash") == self.header["model_hash"])
         foreign = [n for n in stray if not self._ours(n)]
         if foreign:
@@ -328,10 +339,13 @@ class Store:
         if not same:
             what = [f"{k} changed (hash {self.header[k + '_hash']}, the directory's "
                     f"{manifest.get(k + '_hash')})" for k in ("spec", "model")
-                    if manifest.get(k + "_hash") != self.header[k + "_hash"]]
+                    if manifest.get(k + "_hash") != self.header[k + "_hash"]
+                    and not (k == "spec" and alias)]
             raise InputError(f"out: {str(out)!r} holds a different sweep "
                              f"({manifest.get('sweep_id')!r}: {', '.join(what)}); use "
                              "another directory or --no-resume")
+        if alias:
+            self._write_manifest()
         self.dropped += [(n, "an unfinished write of a driver that stopped")
                          for n in self._clean_tmp()]
         raw = _bookkeeping(self.dir, LOG, "out")
