@@ -11,7 +11,10 @@ each (the path before, columns at order 5, takes minutes: ``--skip-old``). Part 
 (``--final``): the whole solve, whose final pass has the sensitivities in the error test
 (capped at 2000 steps per output interval). Part 3 (``--others``): the compressor's forced
 orbit and the paper rig's limit cycle, blocked against columns, median of ``--repeat``
-interleaved repeats (same orbit, same multipliers, CPU).
+interleaved repeats (same orbit, same multipliers, CPU). Part 4 (``--floquet``): the whole
+pump solve (blocked) with the monodromy from the final error-controlled flow (``floquet=
+"flow"``, the default) against the Magnus product on the orbit's samples (``"samples"``, no
+final pass), once each (the flow takes minutes): CPU and the multipliers of both.
 One thread, load printed.
 """
 
@@ -56,6 +59,8 @@ def main() -> int:
     ap.add_argument("--final", action="store_true",
                     help="part 2: the whole solve with its final error-controlled pass")
     ap.add_argument("--others", action="store_true", help="part 3: compressor and rig")
+    ap.add_argument("--floquet", action="store_true",
+                    help="part 4: the monodromy from the final flow against the samples")
     args = ap.parse_args()
     header("forced orbit of the overhung pump by shooting: blocked sensitivities (opt-in), BDF order")
     pump = rd.System.from_toml(MODELS / "pump_overhung.toml")
@@ -118,6 +123,24 @@ def main() -> int:
                       f"{abs(b.critical_multiplier):.6f}; multipliers differ by "
                       f"{np.abs(mu_a - mu_b).max():.1e}; CPU ratio "
                       f"{tt['columns'].cpu / tt['blocked'].cpu:.2f}x")
+    if args.floquet:
+        print("\npart 4: the whole solve (blocked, order 5), the monodromy from the final "
+              "flow against the orbit's samples")
+        out = {}
+        for fq in ("samples", "flow"):
+            r, c, w = cpu(lambda: shoot(sensitivity_solve="blocked", floquet=fq))
+            out[fq] = r
+            row(f"floquet {fq}", r, c, w)
+            if r.ok:
+                print(f"    |mu| {np.array2string(np.abs(r.multipliers[:6]), precision=6)}"
+                      f"  error estimate {r.stats.get('floquet_error')}")
+            print_load("    load")
+        a, b = out["flow"], out["samples"]
+        if a.ok and b.ok:
+            d = np.abs(a.multipliers[:, None] - b.multipliers[None, :]).min(axis=1)
+            print(f"    every flow multiplier within {d.max():.1e} of a samples multiplier; "
+                  f"|mu_c| {abs(a.critical_multiplier):.6f} / "
+                  f"{abs(b.critical_multiplier):.6f}; harmonic balance {abs(hb.critical_multiplier):.6f}")
     footer()
     return 0
 

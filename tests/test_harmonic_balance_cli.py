@@ -89,7 +89,8 @@ def test_cli_limit_cycle_from_the_equilibrium_equals_api(coarse_compressor, caps
 
 @pytest.mark.parametrize("flags, named, allowed", [
     (["--harmonics", "4"], "--harmonics", "--method harmonic_balance"),
-    (["--floquet", "flow"], "--floquet", "--method harmonic_balance"),
+    # shooting takes --floquet flow, samples or none since 2026-12-06
+    (["--floquet", "hill"], "--floquet", "--method shooting expected one of flow, samples"),
     (["--method", HB, "--harmonics", "0"], "--harmonics", "1..1000"),
     (["--method", HB, "--harmonics", "4", "--samples", "8"], "--samples", "9"),
     (["--method", HB, "--samples", "200000"], "--samples", "100000"),

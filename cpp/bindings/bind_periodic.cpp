@@ -26,6 +26,10 @@ void bind_periodic(py::module_& m) {
       .def_readwrite("t0", &PeriodicInput::t0)
       .def_readwrite("period", &PeriodicInput::period)
       .def_readwrite("n_out", &PeriodicInput::n_out);
+  py::enum_<ShootingFloquet>(m, "ShootingFloquet")
+      .value("flow", ShootingFloquet::flow)
+      .value("samples", ShootingFloquet::samples)
+      .value("none", ShootingFloquet::none);
   py::class_<ShootingOptions>(m, "ShootingOptions")
       .def(py::init<>())
       .def_readwrite("cvode", &ShootingOptions::cvode)
@@ -38,7 +42,10 @@ void bind_periodic(py::module_& m) {
       .def_readwrite("blocked_sensitivities", &ShootingOptions::blocked_sensitivities)
       .def_readwrite("parameter_sensitivity", &ShootingOptions::parameter_sensitivity)
       .def_readwrite("screen_rtol", &ShootingOptions::screen_rtol)
-      .def_readwrite("screen_margin", &ShootingOptions::screen_margin);
+      .def_readwrite("screen_margin", &ShootingOptions::screen_margin)
+      .def_readwrite("floquet", &ShootingOptions::floquet)
+      .def_readwrite("floquet_tol", &ShootingOptions::floquet_tol)
+      .def_readwrite("floquet_max_steps", &ShootingOptions::floquet_max_steps);
   py::class_<Floquet>(m, "Floquet")
       .def_readonly("multipliers", &Floquet::multipliers)
       .def_readonly("trivial", &Floquet::trivial)
@@ -72,7 +79,11 @@ void bind_periodic(py::module_& m) {
       .def_readonly("order_reductions", &PeriodicOrbitResult::order_reductions)
       .def_readonly("sens_linear_solves", &PeriodicOrbitResult::sens_linear_solves)
       .def_readonly("sens_factorizations", &PeriodicOrbitResult::sens_factorizations)
-      .def_readonly("monodromy_rtol", &PeriodicOrbitResult::monodromy_rtol);
+      .def_readonly("monodromy_rtol", &PeriodicOrbitResult::monodromy_rtol)
+      .def_readonly("floquet_error", &PeriodicOrbitResult::floquet_error)
+      .def_readonly("floquet_converged", &PeriodicOrbitResult::floquet_converged)
+      .def_readonly("floquet_steps", &PeriodicOrbitResult::floquet_steps)
+      .def_readonly("floquet_linearizations", &PeriodicOrbitResult::floquet_linearizations);
   m.def("periodic_orbit", &periodic_orbit, py::arg("solver"), py::arg("input"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>(),
         "Periodic orbit of eq. 12 by single shooting (CVODES forward sensitivities for the "

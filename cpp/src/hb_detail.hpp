@@ -99,6 +99,13 @@ struct RefinedMonodromy {
 };
 RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::MatrixXd& Z, double w,
                                    bool autonomous, double tol, int max_steps);
+/// The same refined product on a shooting orbit (hb_floquet.cpp): the films linearised at its
+/// samples X (n_out rows over [t0, t0 + T], the last equal to the first; positions then
+/// velocities), refined on the positions' trigonometric interpolant (H = (n_out − 2) / 2).
+RefinedMonodromy refined_monodromy_of_samples(SystemSolver& solver, const PeriodicInput& in,
+                                              shooting_detail::Flow& F, const Eigen::MatrixXd& X,
+                                              double T, bool autonomous, double tol,
+                                              int max_steps);
 /// The budget of refined_monodromy: `requested` if > 0, else 128 M steps per period.
 int refined_max_steps(int M, int requested);
 

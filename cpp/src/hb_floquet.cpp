@@ -235,4 +235,53 @@ RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::Matri
   return out;
 }
 
+RefinedMonodromy refined_monodromy_of_samples(SystemSolver& solver, const PeriodicInput& in,
+                                              shooting_detail::Flow& F, const Eigen::MatrixXd& X,
+                                              double T, bool autonomous, double tol,
+                                              int max_steps) {
+  const Eigen::Index n = F.n;
+  const int M = static_cast<int>(X.rows()) - 1;  // the end sample repeats the start
+  RefinedMonodromy out;
+  if (M < 2) {
+    out.why = "the orbit has fewer than 3 samples (n_out)";
+    return out;
+  }
+  Problem P;
+  P.solver = &solver;
+  P.in = &in;
+  P.F = &F;
+  P.n = n;
+  // The samples' linearisations use the orbit's own states (exact); the interpolant serves
+  // the refinement's midpoints only.
+  Eval e;
+  e.KH.resize(static_cast<std::size_t>(M));
+  e.DH.resize(static_cast<std::size_t>(M));
+  for (int j = 0; j < M; ++j) {
+    Linearization lin;
+    try {
+      lin = solver.linearize(X.row(j).head(n).transpose(), X.row(j).tail(n).transpose(),
+                             in.omega);
+    } catch (const ContactError& ex) {
+      out.contact = true;
+      out.why = std::string("a film closed at an orbit sample: ") + ex.what();
+      return out;
+    } catch (const ConvergenceError& ex) {
+      out.why = std::string("film solve at an orbit sample: ") + ex.what();
+      return out;
+    }
+    if (!lin.KH.allFinite() || !lin.DH.allFinite()) {
+      out.why = "non-finite film linearisation at an orbit sample";
+      return out;
+    }
+    e.KH[static_cast<std::size_t>(j)] = std::move(lin.KH);
+    e.DH[static_cast<std::size_t>(j)] = std::move(lin.DH);
+    ++out.linearizations;
+  }
+  const Eigen::MatrixXd Z = project_samples(X.topLeftCorner(M, n), (M - 1) / 2);
+  const long base = out.linearizations;
+  out = refined_monodromy(P, e, Z, 2 * M_PI / T, autonomous, tol, max_steps);
+  out.linearizations += base;
+  return out;
+}
+
 }  // namespace rotordyn::hb_detail

@@ -20,6 +20,7 @@
 
 #include "rotordyn/errors.hpp"
 #include "cvode_detail.hpp"
+#include "hb_detail.hpp"
 #include "shooting_detail.hpp"
 
 namespace rotordyn {
@@ -296,6 +297,9 @@ void validate(const SystemSolver& solver, const PeriodicInput& in, const Shootin
           "bdf_max_order: expected an integer in [1, 5], got " + std::to_string(c.max_order));
   require(opt.tol > 0 && std::isfinite(opt.tol), "tol: expected a value > 0");
   require(opt.max_iter >= 1, "max_iter: expected at least 1");
+  require(opt.floquet_tol >= 0 && std::isfinite(opt.floquet_tol),
+          "floquet_tol: expected a finite value >= 0");
+  require(opt.floquet_max_steps >= 0, "floquet_max_steps: expected a value >= 0");
   require(opt.sensitivity_rtol >= 0 && opt.sensitivity_rtol < 1,
           "sensitivity_rtol: expected a value in [0, 1)");
   require(opt.length_scale >= 0 && std::isfinite(opt.length_scale),
@@ -438,7 +442,10 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
       out.message = "non-finite state after one period";
       break;
     }
-    if (res < opt.tol && errcon) {
+    // Without the flow's final pass (floquet samples or none) a flow under tol is the end;
+    // its Newton matrix is this flow's sensitivities (outside the error test) or the secant.
+    const bool final_pass = opt.floquet == ShootingFloquet::flow;
+    if (res < opt.tol && (errcon || (!final_pass && (sens || Jx.size() > 0)))) {
       converged = true;
       // The Newton correction the error-controlled monodromy gives at the converged point
       // (uncapped, scaled units): an estimate of the distance to the true orbit. The residual
@@ -446,8 +453,10 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
       // multiplier → 1) can exceed the orbit itself.
       Eigen::MatrixXd J = Eigen::MatrixXd::Zero(K, K);
       Eigen::VectorXd b = Eigen::VectorXd::Zero(K);
-      J.topLeftCorner(N, N) = D.cwiseInverse().asDiagonal() * run.Phi * D.asDiagonal() -
-                              Eigen::MatrixXd::Identity(N, N);
+      J.topLeftCorner(N, N) = sens ? Eigen::MatrixXd(D.cwiseInverse().asDiagonal() * run.Phi *
+                                                         D.asDiagonal() -
+                                                     Eigen::MatrixXd::Identity(N, N))
+                                   : Jx;
       b.head(N) = -R;
       if (autonomous) {
         const Eigen::VectorXd f0 = vector_field(F, in.t0, x).cwiseQuotient(D);
@@ -455,7 +464,7 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
         J.block(N, 0, 1, N) = f0.transpose() / std::max(f0.norm(), 1e-300);
       }
       Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
-      out.newton_correction = (run.Phi.allFinite() && lu.rank() == K)
+      out.newton_correction = (J.allFinite() && lu.rank() == K)
                                   ? lu.solve(b).head(N).cwiseAbs().maxCoeff()
                                   : std::numeric_limits<double>::infinity();
       break;
@@ -590,7 +599,30 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
   out.t = run.t;
   out.r = run.X.leftCols(n);
   out.v = run.X.rightCols(n);
-  out.monodromy = run.Phi;
+  if (opt.floquet == ShootingFloquet::none) return out;
+  if (opt.floquet == ShootingFloquet::samples) {
+    // The orbit's samples from t0: the converged start's flow (run) ends at x(t0 + T).
+    Eigen::MatrixXd X = run.X;
+    const int max_steps = opt.floquet_max_steps > 0
+                              ? opt.floquet_max_steps
+                              : 128 * static_cast<int>(std::max<Eigen::Index>(X.rows() - 1, 1));
+    const hb_detail::RefinedMonodromy rm = hb_detail::refined_monodromy_of_samples(
+        solver, in, F, X, T, autonomous, opt.floquet_tol, max_steps);
+    out.reynolds_solves = solver.reynolds_solves() - solves0;
+    out.floquet_linearizations = rm.linearizations;
+    if (!rm.ok) {
+      out.status = "error";
+      out.message = "the orbit converged but its monodromy from the samples failed: " + rm.why +
+                    " (floquet='flow' integrates it instead)";
+      return out;
+    }
+    out.monodromy = rm.Phi;
+    out.floquet_error = rm.error;
+    out.floquet_converged = rm.converged;
+    out.floquet_steps = rm.steps;
+  } else {
+    out.monodromy = run.Phi;
+  }
   if (!out.monodromy.allFinite()) {
     out.status = "error";
     out.message = "non-finite monodromy matrix";
@@ -598,7 +630,8 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
     return out;
   }
   out.floquet = floquet(out.monodromy, autonomous);
-  out.monodromy_rtol = opt.sensitivity_rtol > 0 ? opt.sensitivity_rtol : opt.cvode.rtol;
+  if (opt.floquet == ShootingFloquet::flow)
+    out.monodromy_rtol = opt.sensitivity_rtol > 0 ? opt.sensitivity_rtol : opt.cvode.rtol;
   return out;
 }
 

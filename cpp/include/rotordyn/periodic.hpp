@@ -48,6 +48,9 @@ struct PeriodicInput {
   int n_out = 201;                ///< samples of the converged orbit over [t0, t0 + T]
 };
 
+/// Where shooting's reported monodromy comes from (ShootingOptions::floquet).
+enum class ShootingFloquet { flow, samples, none };
+
 struct ShootingOptions {
   CvodeOptions cvode;          ///< rtol, atol_position, atol_velocity, max_steps, max_step
   double tol = 1e-7;           ///< converged when ‖D⁻¹(φ_T(x0) − x0)‖∞ < tol
@@ -85,6 +88,17 @@ struct ShootingOptions {
   /// starting from the previous point's matrix runs its first flow as the screened pass.
   double screen_rtol = 0.0;
   double screen_margin = 0.005;
+  /// periodic_orbit only (the continuation keeps the flow). flow: the converged orbit
+  /// integrated once more with the sensitivities in the error test (the monodromy to
+  /// sensitivity_rtol). samples: no such pass; the monodromy by 4th-order Magnus on the
+  /// converged orbit's film linearisations (its n_out − 1 samples, then refined on the
+  /// orbit's trigonometric interpolant until |μ_c| moves by ≤ floquet_tol·max(1, |μ_c|), as
+  /// harmonic balance's samples route): the exponentials take a flexible rotor's stiff
+  /// bending modes exactly, where the error-controlled pass resolves them with nanosecond
+  /// steps. none: no monodromy, no multipliers (the orbit only).
+  ShootingFloquet floquet = ShootingFloquet::flow;
+  double floquet_tol = 1e-3;
+  int floquet_max_steps = 0;  ///< samples: the most Magnus steps per period; 0: 128 (n_out − 1)
 };
 
 /// Floquet multipliers of a monodromy matrix and the type of the critical one.
@@ -139,6 +153,13 @@ struct PeriodicOrbitResult {
   /// The sensitivity tolerance of the pass that gave the reported monodromy (the error test's
   /// relative tolerance: sensitivity_rtol, or screen_rtol for a screened continuation point).
   double monodromy_rtol = 0.0;
+  /// ShootingFloquet::samples: | |μ_c| − |μ_c| of the previous level | (inf: one level only;
+  /// autonomous: at least |μ_trivial − 1|), whether it met floquet_tol, the Magnus steps per
+  /// period and the film linearisations of the product. NaN / false / 0 otherwise.
+  double floquet_error = std::numeric_limits<double>::quiet_NaN();
+  bool floquet_converged = false;
+  int floquet_steps = 0;
+  long floquet_linearizations = 0;
 };
 
 /// Shooting Newton from (r0, v0, period). A failure (no convergence, the journal reaching the

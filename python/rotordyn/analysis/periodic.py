@@ -24,6 +24,8 @@ from rotordyn.units import hz_to_rad_s
 
 KINDS = ("autonomous", "forced")
 METHODS = ("shooting", "harmonic_balance")
+#: shooting's sources of the monodromy (harmonic balance: harmonic_balance.FLOQUET)
+SHOOTING_FLOQUET = ("flow", "samples", "none")
 NEWTON = ("broyden", "sensitivities")
 FORCED_STARTS = ("linear", "equilibrium")
 SENSITIVITY_SOLVES = ("blocked", "columns")
@@ -64,7 +66,7 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
                    sensitivity_rtol: float | None = None,
                    newton: str = "sensitivities", method: str = "shooting",
                    harmonics: int = 8, time_points: int | None = None,
-                   floquet: str = "samples", floquet_tol: float = 1e-3,
+                   floquet: str | None = None, floquet_tol: float = 1e-3,
                    floquet_max_steps: int = 0,
                    start_amplitude_c: float | None = None,
                    forced_start: str = "linear",
@@ -134,7 +136,14 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         clearance is out of reach from 0.3; the result's ``stats["start_amplitude_c"]`` is
         the start that converged, every start tried is in the message of a failure).
     floquet
-        harmonic balance only: ``"samples"`` (the monodromy from the converged orbit's M
+        shooting: ``"flow"`` (default) the converged orbit integrated once more with the
+        sensitivities in CVODES's error test; ``"samples"`` no such pass, the monodromy by
+        4th-order Magnus on the converged orbit's film linearisations at its ``n_out`` − 1
+        samples, refined on the orbit's trigonometric interpolant as below (the exponentials
+        take a flexible rotor's stiff bending modes exactly, where the error-controlled pass
+        resolves them with nanosecond steps: the overhung pump, docs/nonlinear.md); ``"none"``
+        the orbit only (no multipliers: ``stability_resolved`` False).
+        Harmonic balance: ``"samples"`` (default; the monodromy from the converged orbit's M
         linearisations, 4th-order Magnus, no film solve), ``"hill"`` (Hill's method: the
         eigenvalues of the Hill matrix of the linearised orbit, from the harmonic-balance
         Jacobian on max(M, 8H) samples, one exponent kept per family by the centroid of its
@@ -142,7 +151,9 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
         CVODES sensitivity flow at ``sensitivity_rtol``) or ``"none"`` (docs/nonlinear.md,
         "Floquet multipliers by Hill's method": their accuracy measured against the flow).
     floquet_tol, floquet_max_steps
-        ``floquet="samples"``: the monodromy is refined on the orbit itself (the films
+        ``floquet="samples"`` (shooting: from the ``n_out`` − 1 samples, at most 128 of them
+        per sample by default; ``floquet_tol`` > 0): the monodromy is refined on the orbit
+        itself (the films
         linearised between the samples, 4th-order Magnus with Simpson nodes, the steps per
         period doubled from M/2, at most ``floquet_max_steps``, default 128M) until |μ_c|
         moves by at most ``floquet_tol``·max(1, |μ_c|) between two levels;
@@ -185,6 +196,13 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     start_scale = sigma = None
     method = v.choice("method", method, METHODS)
     hb = method == "harmonic_balance"
+    if floquet is None:
+        floquet = "samples" if hb else "flow"
+    elif not hb:
+        floquet = v.choice("floquet", floquet, SHOOTING_FLOQUET)
+        if floquet == "samples":
+            v.in_range("floquet_tol", floquet_tol, 0.0, 0.5, lo_open=True)
+            v.integer("floquet_max_steps", floquet_max_steps, lo=0)
     if hb:
         m_hb = hbal.time_points_for(harmonics, time_points)
         if start_amplitude_c is not None:
@@ -338,9 +356,30 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     opt.broyden = v.choice("newton", newton, NEWTON) == "broyden"
     opt.blocked_sensitivities = v.choice("sensitivity_solve", sensitivity_solve,
                                          SENSITIVITY_SOLVES) == "blocked"
+    opt.floquet = getattr(_core.ShootingFloquet, floquet)
+    if floquet == "samples":
+        opt.floquet_tol = float(floquet_tol)
+        opt.floquet_max_steps = int(floquet_max_steps)
     res = _core.periodic_orbit(asm.solver, inp, opt)
     return _with_hint(orbit_result(asm, res, kind, float(speed_hz), float(chamber_pressure_pa),
-                                   a, extra_stats=start_stats), start_scale, sigma)
+                                   a, extra_stats={**shooting_floquet_stats(res, floquet),
+                                                   **start_stats}), start_scale, sigma)
+
+
+def shooting_floquet_stats(res, floquet: str) -> dict:
+    """``stats`` entries of shooting's monodromy: its route, and for ``"samples"`` the
+    refinement's error estimate, whether it met floquet_tol, the verdict's resolution
+    (converged and | |μ_c| − 1 | > the error), steps and film linearisations."""
+    out = {"floquet_route": floquet}
+    if floquet != "samples" or res.status != "ok":
+        return out
+    fq = res.floquet
+    mc = float(fq.critical_modulus) if fq.critical >= 0 else 0.0
+    err = float(res.floquet_error)
+    return {**out, "floquet_error": err, "floquet_converged": bool(res.floquet_converged),
+            "floquet_resolved": bool(res.floquet_converged and abs(mc - 1.0) > err),
+            "floquet_steps": int(res.floquet_steps),
+            "floquet_linearizations": int(res.floquet_linearizations)}
 
 
 #: the start amplitudes (fractions of the clearance) tried in turn for a harmonic-balance
@@ -430,6 +469,9 @@ def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: floa
     mu = np.asarray(fl.multipliers, dtype=complex) if ok else np.zeros(0, dtype=complex)
     if ok and not (np.all(np.isfinite(r)) and np.all(np.isfinite(mu))):
         status, message, ok = "error", "non-finite orbit or multipliers reported as ok", False
+    stats = {}
+    if ok and mu.size == 0:  # floquet="none": no verdict (not "unstable")
+        stats["floquet_resolved"] = False
     return PeriodicOrbitResult(
         kind=kind, speed_hz=float(speed_hz), chamber_pressure_pa=float(chamber_pressure_pa),
         config_ay_m=float(a[bcs[0].jy]) if bcs else 0.0,
@@ -450,5 +492,6 @@ def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: floa
                "sens_linear_solves": res.sens_linear_solves,
                "sens_factorizations": res.sens_factorizations,
                "monodromy_rtol": float(res.monodromy_rtol),
-               "newton_correction": float(res.newton_correction), **(extra_stats or {})},
+               "newton_correction": float(res.newton_correction), **(extra_stats or {}),
+               **stats},
         status=status, message=message)

@@ -14,6 +14,7 @@ from rotordyn.analysis.assembly import OPERATING
 from rotordyn.analysis.continuation import CLI_NEWTON, DEFAULT_NEWTON
 from rotordyn.analysis.field_axis import field_parameter
 from rotordyn.analysis.hopf import hopf_branch
+from rotordyn.analysis.periodic import SHOOTING_FLOQUET
 from rotordyn._common import validate as v
 from rotordyn.cli import branches
 from rotordyn.cli.common import (JSON_HELP, MODEL_HELP, add_dpi, add_operating_point,
@@ -28,17 +29,17 @@ def register(sub) -> None:
                        help="limit cycle or unbalance-forced orbit by shooting or harmonic "
                             "balance, with its Floquet multipliers")
     _orbit_arguments(s)
-    _hb_arguments(s)
+    _hb_arguments(s, shooting_floquet=True)
     s.add_argument("--bdf-max-order", type=int, default=5, metavar="Q",
                    help="highest BDF order of the CVODES flows, 1..5 (default 5); 2 can "
                         "pay on a flexible rotor whose undamped bending modes hold orders "
                         "3-5 at their stability limit, at loose tolerances "
                         "(docs/nonlinear.md)")
     s.add_argument("--floquet-tol", type=float, default=None, metavar="TOL",
-                   help="harmonic balance with --floquet samples: refine the multipliers "
-                        "(sub-steps doubled) until |μ_c| moves by at most TOL·max(1, |μ_c|), "
-                        "in [0, 0.5] (default 1e-3; 0: the single product from the samples, "
-                        "no error estimate)")
+                   help="--floquet samples: refine the multipliers (sub-steps doubled) "
+                        "until |μ_c| moves by at most TOL·max(1, |μ_c|), in [0, 0.5] "
+                        "(default 1e-3; harmonic balance 0: the single product from the "
+                        "samples, no error estimate; shooting: > 0)")
     s.add_argument("--plot", default=None, metavar="FIG",
                    help="write the orbit and the multipliers in the unit circle")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -138,7 +139,8 @@ HB_FLAGS = (("harmonics", "--harmonics", 8), ("samples", "--samples", None),
             ("floquet", "--floquet", "samples"), ("start_amplitude_c", "--start-amplitude-c", None))
 
 
-def _hb_arguments(s, floquet=("samples", "hill", "flow", "none")) -> None:
+def _hb_arguments(s, floquet=("samples", "hill", "flow", "none"),
+                  shooting_floquet: bool = False) -> None:
     s.add_argument("--method", choices=["shooting", "harmonic_balance"], default="shooting",
                    help="shooting (default): Newton on the CVODES flow over one period; "
                         "harmonic_balance: Newton on the Fourier coefficients of the orbit "
@@ -154,7 +156,11 @@ def _hb_arguments(s, floquet=("samples", "hill", "flow", "none")) -> None:
                         "linearisations (samples: Magnus, no film solve), by Hill's method "
                         "on the harmonic-balance Jacobian (hill: no film solve), from one "
                         "CVODES sensitivity flow at --rtol (flow)"
-                        + (", or none" if "none" in floquet else ""))
+                        + (", or none" if "none" in floquet else "")
+                        + ("; shooting: flow (default: the converged orbit once more with "
+                           "the sensitivities in the error test), samples (Magnus on the "
+                           "orbit's 200 samples, refined: fast on flexible rotors) or "
+                           "none" if shooting_floquet else ""))
     s.add_argument("--start-amplitude-c", type=float, default=None, metavar="F",
                    help="harmonic balance, autonomous cycle started at the equilibrium "
                         "(--settle-s 0, the default with harmonic balance): the journal's "
@@ -163,13 +169,20 @@ def _hb_arguments(s, floquet=("samples", "hill", "flow", "none")) -> None:
                         "one converges)")
 
 
-def _hb_options(args) -> dict:
-    """The periodic_orbit keywords of --method (the HB flags checked, defaults filled in)."""
+def _hb_options(args, shooting_floquet: bool = False) -> dict:
+    """The periodic_orbit keywords of --method (the HB flags checked, defaults filled in);
+    ``shooting_floquet``: --floquet flow/samples/none also with shooting (one orbit)."""
     given = [flag for dest, flag, _ in HB_FLAGS if getattr(args, dest) is not None]
     if args.method != "harmonic_balance":
+        fq = args.floquet
+        if shooting_floquet and fq is not None:
+            given.remove("--floquet")
+            if fq not in SHOOTING_FLOQUET:
+                raise InputError(f"--floquet: with --method shooting expected one of "
+                                 f"{', '.join(SHOOTING_FLOQUET)}, got {fq!r}")
         if given:
             raise InputError(f"{given[0]}: applies only to --method harmonic_balance")
-        return {"method": "shooting"}
+        return {"method": "shooting", **({"floquet": fq} if shooting_floquet else {})}
     opt = {dest: (default if getattr(args, dest) is None else getattr(args, dest))
            for dest, _, default in HB_FLAGS}
     h = _int_in("--harmonics", opt["harmonics"], 1, 1000)
@@ -242,11 +255,10 @@ def _start_hint(args, start) -> str:
 
 def _cmd_periodic_orbit(args) -> int:
     check_figure(args.plot)
-    hb = _hb_options(args)
+    hb = _hb_options(args, shooting_floquet=True)
     if args.floquet_tol is not None:
-        if hb["method"] != "harmonic_balance" or hb["floquet"] != "samples":
-            raise InputError("--floquet-tol: applies only to --method harmonic_balance with "
-                             "--floquet samples")
+        if hb["floquet"] != "samples":
+            raise InputError("--floquet-tol: applies only to --floquet samples")
         hb["floquet_tol"] = v.in_range("--floquet-tol", args.floquet_tol, 0.0, 0.5,
                                        lo_open=False)
     s = models.load(args.model)
@@ -293,7 +305,7 @@ def _method_info(hb: dict, res, start) -> dict:
     """The method and its settings for the output: M as used (the result's, else the
     default 4H), the start amplitude only where it was used (a cycle from the equilibrium)."""
     if hb["method"] != "harmonic_balance":
-        return {"method": "shooting"}
+        return {"method": "shooting", "floquet": hb.get("floquet") or "flow"}
     info = {"method": "harmonic_balance", "harmonics": hb["harmonics"],
             "time_points": int(res.stats.get("time_points",
                                              hb["time_points"] or 4 * hb["harmonics"])),
