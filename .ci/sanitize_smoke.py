@@ -196,6 +196,12 @@ def main() -> int:
         assert sh.ok, sh.message
     except rd.InputError as exc:  # SUNDIALS before 6: refused by name
         assert "sensitivity_solve" in str(exc), exc
+    # shooting's monodromy from the orbit's samples (the refined Magnus product on a shooting
+    # orbit's films) and its "none"
+    for fq in ("samples", "none"):
+        sh = rd.periodic_orbit(smooth, 15.0, kind="forced", unbalances=[(2, 8e-3, 0.0)],
+                               floquet=fq, n_out=41)
+        assert sh.ok, sh.message
     pads = rd.equilibrium(rd.System.from_toml(models / "compressor_tilting_pad.toml"), 40.0)
     assert pads.pads_frame().unloaded.sum() == 2
     print("sanitize_smoke: ok")
