@@ -66,6 +66,8 @@ def test_none_reports_the_orbit_without_a_verdict(orbits):
     assert c.multipliers.size == 0 and c.monodromy.size == 0
     assert not c.stability_resolved and "stability unresolved" in repr(c)
     assert c.critical_multiplier is None
+    assert not c.to_frame().stability_resolved.any()
+    assert orbits["samples"].to_frame().stability_resolved.all()
 
 
 def test_samples_on_a_limit_cycle_keep_the_trivial_multipliers_error_in_the_estimate():

@@ -111,7 +111,8 @@ class PeriodicOrbitResult(Display):
                 f"{amp}, {verdict}{crit}>")
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per (time, bearing) of the orbit, with the period and the stability."""
+        """One row per (time, bearing) of the orbit, with the period and the stability
+        (``stable`` is a verdict only where ``stability_resolved``: see that property)."""
         import pandas as pd
         nt, nb = self.journal_x_m.shape
         return pd.DataFrame({
@@ -125,6 +126,7 @@ class PeriodicOrbitResult(Display):
             "journal_x_m": self.journal_x_m.ravel(),
             "journal_y_m": self.journal_y_m.ravel(),
             "stable": self.stable,
+            "stability_resolved": self.stability_resolved,
             "status": self.status,
         })
 
