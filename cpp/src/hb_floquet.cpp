@@ -166,7 +166,8 @@ Eigen::MatrixXd simpson_magnus(const Frame& fr, const std::vector<Node>& nodes, 
 int refined_max_steps(int M, int requested) { return requested > 0 ? requested : 128 * M; }
 
 RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::MatrixXd& Z, double w,
-                                   bool autonomous, double tol, int max_steps) {
+                                   bool autonomous, double tol, int max_steps,
+                                   double trivial_tol) {
   RefinedMonodromy out;
   const SystemModel& m = P.solver->model();
   const int M = static_cast<int>(e.KH.size());
@@ -211,7 +212,8 @@ RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::Matri
     out.trivial_error = fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
     if (std::isfinite(prev)) {
       out.error = std::abs(mod - prev);
-      if (out.error <= tol * std::max(1.0, mod) && fq.critical_type == prev_type) {
+      if (out.error <= tol * std::max(1.0, mod) && fq.critical_type == prev_type &&
+          !(trivial_tol > 0 && autonomous && out.trivial_error > trivial_tol)) {
         out.converged = true;
         break;
       }
@@ -279,7 +281,8 @@ RefinedMonodromy refined_monodromy_of_samples(SystemSolver& solver, const Period
   }
   const Eigen::MatrixXd Z = project_samples(X.topLeftCorner(M, n), (M - 1) / 2);
   const long base = out.linearizations;
-  out = refined_monodromy(P, e, Z, 2 * M_PI / T, autonomous, tol, max_steps);
+  // the orbit is the integrator's (not a truncated series): its trivial multiplier must be 1
+  out = refined_monodromy(P, e, Z, 2 * M_PI / T, autonomous, tol, max_steps, tol);
   out.linearizations += base;
   return out;
 }
