@@ -210,6 +210,10 @@ void bind_reynolds(py::module_& m) {
                     "Factorise in the band when a wholly cavitated ring (or a full-width "
                     "groove) opens the circle (default True); False: always the sparse LDLT. "
                     "The pressures agree to round-off.")
+      .def_property("refine_prediction", &RS::refine_prediction, &RS::set_refine_prediction,
+                    "Full grid: refine the coarse cavitation-set prediction by projected "
+                    "relaxation near the film boundaries (default True); the same pressures "
+                    "bit for bit, fewer active-set iterations (testing switch).")
       .def_property_readonly("band_factor_used", &RS::band_factor_used,
                              "Whether the last solve's final factorisation was banded.")
       .def("reset", &RS::reset, "Drop the last solution (solves never depend on earlier calls).")

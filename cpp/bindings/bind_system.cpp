@@ -119,6 +119,9 @@ void bind_system(py::module_& m) {
                              "Active-set (or linear) iterations summed over the solves.")
       .def_property_readonly("linearizations", &SystemSolver::linearizations,
                              "Linearisations (K_H, or K_H and D_H) about a solve.")
+      .def("set_refine_prediction", &SystemSolver::set_refine_prediction, py::arg("on"),
+           "Testing switch: every film's refined cavitation-set prediction (default on; the "
+           "same pressures bit for bit). Invalidates the last solve.")
       .def("forget_state", &SystemSolver::forget_state,
            "Forget the films' last solve and carried cavitation sets (a new public call).")
       .def_property_readonly("last_h_min", &SystemSolver::last_h_min)

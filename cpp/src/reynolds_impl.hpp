@@ -78,6 +78,14 @@ struct LinearSystem {
   /// x = A⁻¹ b with the symmetric factor of the last factor_spd (ldlt or band).
   // predict_active: the four coarse nodes (flat p_pa indices) around each unknown
   std::vector<std::array<int, 4>> coarse_around;
+  // refine_prediction (full grid): bilinear weights of coarse_around, the operator's neighbour
+  // unknowns (n_unk: none), per solve its rows over their diagonals (b, e, w, n, s), the
+  // relaxed pressures (one zero slot past the end), a ring's updates, the rings relaxed
+  std::vector<std::array<double, 4>> coarse_w;
+  std::vector<std::array<int, 4>> relax_idx;
+  std::vector<std::array<double, 5>> relax_c;
+  std::vector<double> relax_x, relax_t;
+  std::vector<char> relax_ring;
   void solve_spd(const double* b, double* x) const {
     if (factor == Factor::band)
       band.solve(b, x);
@@ -262,6 +270,10 @@ struct ReynoldsSolver::Impl {
   // term b_i < 0 (divergent film: the Couette and squeeze terms draw fluid out of the cell).
   // The primal–dual iteration then needs ~1–3 steps, nearly independent of the grid.
   void predict_active(LinearSystem& S);
+  // Full grid: the coarse prediction (coarse pressures pc, flat) refined by projected
+  // relaxation of the fine operator near the predicted film boundaries (reynolds_refine.cpp).
+  void refine_prediction(LinearSystem& S, const double* pc);
+  bool refine = true;  // refine_prediction on (off: the coarse prediction alone; tests)
   std::unique_ptr<ReynoldsSolver> coarse;  // Swift–Stieber solver on the halved grid
   bool coarse_usable = false;
   bool predict = true;  // coarse-grid prediction on; off: start from the empty set

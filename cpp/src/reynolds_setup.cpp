@@ -506,6 +506,8 @@ void ReynoldsSolver::set_band_factor(bool on) { impl_->band_factor = on; }
 bool ReynoldsSolver::band_resume() const { return impl_->band_resume; }
 void ReynoldsSolver::set_band_resume(bool on) { impl_->band_resume = on; }
 int ReynoldsSolver::band_resumed() const { return impl_->band_resumed; }
+bool ReynoldsSolver::refine_prediction() const { return impl_->refine; }
+void ReynoldsSolver::set_refine_prediction(bool on) { impl_->refine = on; }
 bool ReynoldsSolver::band_factor_used() const {
   return impl_->sys && impl_->sys->factor == LinearSystem::Factor::band;
 }

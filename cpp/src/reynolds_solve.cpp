@@ -168,6 +168,7 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
         };
         if (row_cav(a[0], a[1]) && row_cav(a[2], a[3])) S.active[i] = 1;
       }
+      if (refine && !S.half) refine_prediction(S, pcd);
       return;
     } catch (const ConvergenceError&) {
       // fall through to the local prediction (still a function of the inputs only)

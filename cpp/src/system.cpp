@@ -342,6 +342,14 @@ void SystemSolver::set_film_carry(bool on) {
   carry_ = on;
 }
 
+void SystemSolver::set_refine_prediction(bool on) {
+  for (auto& f : films_) {
+    f->solver.set_refine_prediction(on);
+    f->valid = false;
+  }
+  solved_ = false;
+}
+
 void SystemSolver::forget_state() {
   set_film_continuation(false);  // forgets the sets, invalidates each film's and the last solve
 }

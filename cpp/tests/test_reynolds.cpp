@@ -366,7 +366,10 @@ TEST_CASE("reynolds: the resumed active-set factorisations give the film bit for
       ReynoldsSolver b(geom(0.05, 0.04), FilmGrid{N, 16}, Cavitation::reynolds);
       b.set_band_resume(false);
       CHECK(a.band_resume() && !b.band_resume());
-      for (ReynoldsSolver* s : {&a, &b}) s->set_use_axial_symmetry(sym);
+      for (ReynoldsSolver* s : {&a, &b}) {
+        s->set_use_axial_symmetry(sym);
+        s->set_refine_prediction(false);  // the coarse start: iterations that resume
+      }
       const auto ca = a.coefficients(3e-5, -5e-5, w), cb = b.coefficients(3e-5, -5e-5, w);
       CHECK(a.band_factor_used() && b.band_factor_used() && b.band_resumed() == 0);
       if (sym)
@@ -382,6 +385,53 @@ TEST_CASE("reynolds: the resumed active-set factorisations give the film bit for
       const FilmSolution& fb = b.solve(h, hd, w);
       CHECK(fb.iterations == ia && ia >= 2 && (pa.array() == fb.p_pa.array()).all());
     }
+}
+
+TEST_CASE("reynolds: the refined full-grid prediction gives the same film in fewer iterations") {
+  // Tilted journals (h = c - (x + ty z) cos phi - (y - tx z) sin phi, not symmetric in z: the
+  // full grid), both senses of rotation, several poses: with the relaxed start of the
+  // active-set loop (refine_prediction) the pressures, the cavitated set, the forces and
+  // moments and the linearised solves (dh of x, y, tx, ty) are those of the coarse start bit
+  // for bit, and the loop takes fewer iterations in total (observed 2.9 -> 1.5 per solve).
+  const int N = 72, K1 = 17;
+  const double c = 1e-4, L = 0.04;
+  ReynoldsSolver a(geom(0.05, L), FilmGrid{N, 16}, Cavitation::reynolds);
+  ReynoldsSolver b(geom(0.05, L), FilmGrid{N, 16}, Cavitation::reynolds);
+  b.set_refine_prediction(false);
+  CHECK(a.refine_prediction() && !b.refine_prediction());
+  RowMatrixXd h(N, K1), hd = RowMatrixXd::Zero(N, K1), zero = RowMatrixXd::Zero(N, K1);
+  RowMatrixXd dh[4] = {h, h, h, h};
+  int ia = 0, ib = 0;
+  const double poses[4][4] = {{0.3, -0.5, 0.2, -0.3}, {-0.4, 0.2, 0.4, 0.3},
+                              {0.1, 0.55, -0.3, 0.1}, {-0.2, -0.6, 0.0, 0.5}};
+  for (const double w : {2 * kPi * 50.0, -2 * kPi * 50.0})
+    for (const auto& q : poses) {
+      const double x = q[0] * c, y = q[1] * c, tx = q[2] * c / L, ty = q[3] * c / L;
+      for (int j = 0; j < N; ++j)
+        for (int k = 0; k < K1; ++k) {
+          const double phi = 2.0 * kPi * j / N, z = -0.5 * L + k * L / 16.0;
+          h(j, k) = c - (x + ty * z) * std::cos(phi) - (y - tx * z) * std::sin(phi);
+          dh[0](j, k) = -std::cos(phi);
+          dh[1](j, k) = -std::sin(phi);
+          dh[2](j, k) = z * std::sin(phi);
+          dh[3](j, k) = -z * std::cos(phi);
+        }
+      const FilmSolution& fa = a.solve(h, hd, w);
+      const RowMatrixXd pa = fa.p_pa;
+      ia += fa.iterations;
+      const FilmSolution& fb = b.solve(h, hd, w);
+      ib += fb.iterations;
+      CHECK((pa.array() == fb.p_pa.array()).all());
+      CHECK(((pa.array() == 0.0) == (fb.p_pa.array() == 0.0)).all());
+      for (int v = 0; v < 4; ++v) {
+        CHECK(a.integrate(pa, dh[v]) == b.integrate(fb.p_pa, dh[v]));
+        const RowMatrixXd da = a.linearize(dh[v], zero), db = b.linearize(dh[v], zero);
+        CHECK((da.array() == db.array()).all());
+        const RowMatrixXd ea = a.linearize(zero, dh[v]), eb = b.linearize(zero, dh[v]);
+        CHECK((ea.array() == eb.array()).all());
+      }
+    }
+  CHECK(ia < ib);
 }
 
 TEST_CASE("reynolds: linearize_many equals one linearize() per perturbation, bit for bit") {

@@ -231,6 +231,10 @@ class SystemSolver {
   /// between its own solves only, from the prediction at its start.
   void set_film_carry(bool on);
   bool film_carry() const { return carry_; }
+  /// Testing switch: every film's ReynoldsSolver::set_refine_prediction (on by default; the
+  /// same pressures bit for bit, fewer active-set iterations on full grids). Invalidates the
+  /// last solve, so the next call solves again.
+  void set_refine_prediction(bool on);
   /// Forget every state an earlier call left: the films' last solve (pressures,
   /// factorisations) and their carried cavitation sets, continuation and carry switched off.
   /// The next call's answer is then a function of its own inputs only (a public analysis
