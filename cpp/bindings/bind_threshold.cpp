@@ -32,6 +32,7 @@ void bind_threshold(py::module_& m) {
   py::class_<ThresholdLineResult>(m, "ThresholdLineResult")
       .def_readonly("y", &ThresholdLineResult::y)
       .def_readonly("freq", &ThresholdLineResult::freq)
+      .def_readonly("stable", &ThresholdLineResult::stable)
       .def_readonly("bracket", &ThresholdLineResult::bracket)
       .def_readonly("root", &ThresholdLineResult::root)
       .def_readonly("root_freq", &ThresholdLineResult::root_freq)

@@ -36,6 +36,9 @@ struct ThresholdLineInput {
 
 struct ThresholdLineResult {
   Eigen::VectorXd y, freq;      ///< (n_pts,) max Re λ (1/s) and its frequency (Hz); NaN: failed
+  /// (n_pts,) the verdict (rotordyn.results.modes.point_stable over the counted roots):
+  /// 1 stable, 0 unstable, -1 failed
+  std::vector<int> stable;
   std::vector<int> bracket;     ///< per crossing: i of the bracket [x_i, x_{i+1}]
   std::vector<double> root, root_freq;  ///< per crossing (NaN on error)
   std::vector<std::string> status, message;  ///< per crossing: "ok" | "error", "<Error>: what"

@@ -1,0 +1,102 @@
+"""The threshold line, its ``stable_side``, the limit-cycle rows' scan verdicts and the gain
+schedule's ``stable`` on the one verdict rule (the round-off band of Re λ,
+``rotordyn.results.modes.point_stable``), not the raw sign of max Re λ.
+
+The case: the compressor of tests/data/models/compressor_table.toml on coefficient tables
+without damping whose cross-coupling is 0 up to 50 Hz and grows linearly above it. Up to
+50 Hz the rotor is conservative (symmetric stiffness, gyroscopic D only: max Re λ exactly 0
+after the conservative-root refinement); above it the undamped cross-coupling makes it
+unstable at once. The threshold is therefore 50 Hz (within the band's width: the verdict
+flips where the growing root leaves |Re λ| < 1e-9 |λ|). On the raw sign the conservative
+point's y = 0 made no bracket with its unstable neighbour (y0·y1 = 0): "no crossing".
+"""
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+import rotordyn as rd
+from rotordyn.results.modes import point_stable, verdict_real
+from rotordyn.sweep import run_sweep
+import rotordyn.sweep as sw
+
+MODELS = Path(__file__).parent / "data" / "models"
+ONSET_HZ = 50.0
+
+
+def _conservative_below_onset() -> str:
+    t = (MODELS / "compressor_table.toml").read_text()
+    t = t.replace("speeds_hz = [0.0, 100.0, 200.0]", f"speeds_hz = [0.0, {ONSET_HZ}, 200.0]")
+    t = t.replace("kxx_n_per_m = [1.0e8, 1.2e8, 1.5e8]", "kxx_n_per_m = [1.0e8, 1.0e8, 1.0e8]")
+    t = t.replace("kyy_n_per_m = [1.5e8, 1.8e8, 2.2e8]", "kyy_n_per_m = [1.5e8, 1.5e8, 1.5e8]")
+    t = t.replace("kxy_n_per_m = [0.0, 2.0e7, 4.0e7]", "kxy_n_per_m = [0.0, 0.0, 4.0e7]")
+    t = t.replace("kyx_n_per_m = [0.0, -2.0e7, -4.0e7]", "kyx_n_per_m = [0.0, 0.0, -4.0e7]")
+    t = re.sub(r"c(xx|yy)_n_s_per_m = .*\n", "", t)
+    assert t.count("[0.0, 0.0, 4.0e7]") == 2 and "n_s_per_m" not in t
+    return t
+
+
+def _threshold(tmp_path, speeds):
+    model = tmp_path / "m.toml"
+    model.write_text(_conservative_below_onset())
+    (tmp_path / "t.toml").write_text(
+        f'schema = "rotordyn/sweep/1"\nname = "t"\nmodel = "{model.as_posix()}"\n'
+        'analysis = "threshold"\n[grid]\nspeed_hz = ' + repr([float(s) for s in speeds])
+        + '\n[options]\nvary = "speed_hz"\n')
+    assert run_sweep(tmp_path / "t.toml", tmp_path / "o", threads=1, progress=False).complete
+    return sw.open(tmp_path / "o").frame, rd.System.from_toml(model)
+
+
+def test_the_case_is_conservative_below_the_onset_and_unstable_above(tmp_path):
+    _, s = _threshold(tmp_path, [30.0, 70.0])
+    lo, hi = rd.stability(s, 30.0), rd.stability(s, 70.0)
+    # the raw sign cannot bracket it: max Re λ is not below 0 on the stable side
+    assert lo.stable and lo.eigenvalues.real.max() >= 0.0
+    assert not hi.stable and hi.eigenvalues.real.max() > 0.0
+    assert verdict_real(lo.eigenvalues) < 0 < verdict_real(hi.eigenvalues)
+
+
+def test_threshold_line_brackets_by_the_verdict(tmp_path):
+    fr, s = _threshold(tmp_path, [30.0, 40.0, 60.0, 70.0])
+    assert len(fr) == 1, fr[["status", "message"]]
+    row = fr.iloc[0]
+    assert str(row["status"]) == "ok" and row["crossing"] == 1
+    assert abs(row["value"] - ONSET_HZ) <= 1e-6 * ONSET_HZ
+    assert row["stable_side"] == "below"
+    # either side of the root: the API's verdict
+    assert rd.stability(s, row["value"] - 1e-3).stable
+    assert not rd.stability(s, row["value"] + 1e-3).stable
+
+
+def test_threshold_line_scanned_downwards_keeps_the_stable_side(tmp_path):
+    fr, _ = _threshold(tmp_path, [70.0, 60.0, 40.0, 30.0])
+    row = fr.iloc[0]
+    assert str(row["status"]) == "ok" and abs(row["value"] - ONSET_HZ) <= 1e-6 * ONSET_HZ
+    assert row["stable_side"] == "below"
+
+
+def test_a_conservative_line_has_no_crossing_and_says_stable(tmp_path):
+    fr, _ = _threshold(tmp_path, [10.0, 20.0, 30.0, 40.0])
+    assert len(fr) == 1 and str(fr.iloc[0]["status"]) == "no_crossing"
+    assert "stable at all 4 points" in fr.iloc[0]["message"]
+
+
+def test_the_scan_verdicts_are_the_apis(tmp_path):
+    """The scan handed to the limit-cycle rows (``equilibrium_stable``): the verdict per point,
+    the API's; the raw rule (``max Re λ < 0``) said False at the conservative points."""
+    from rotordyn.sweep.work import Job
+    from rotordyn.sweep.lines import threshold_line
+    from rotordyn.sweep.points import Variants, base_system
+
+    model = tmp_path / "m.toml"
+    model.write_text(_conservative_below_onset())
+    s = rd.System.from_toml(model)
+    speeds = [20.0, 40.0, 60.0]
+    job = Job("t", s.to_toml(), "threshold", {"vary": "speed_hz"}, {"speed_hz": speeds})
+    scan = {}
+    threshold_line(job, Variants(base_system(job.model_toml), job.model_toml), 0, 3, 0,
+                   [None] * 3, scan)
+    want = [int(rd.stability(s, f).stable) for f in speeds]
+    assert list(scan["stable"]) == want == [1, 1, 0]
+    assert not (np.asarray(scan["y"])[:2] < 0).any()  # what the raw rule read as unstable
