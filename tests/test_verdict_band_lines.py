@@ -100,3 +100,36 @@ def test_the_scan_verdicts_are_the_apis(tmp_path):
     want = [int(rd.stability(s, f).stable) for f in speeds]
     assert list(scan["stable"]) == want == [1, 1, 0]
     assert not (np.asarray(scan["y"])[:2] < 0).any()  # what the raw rule read as unstable
+
+
+def test_gain_schedule_with_an_undamped_injection_oscillator_is_stable():
+    """A scheduled law carrying a fixed-frequency injection oscillator (ẋ_k = [[0, w],
+    [−w, 0]] x_k, u = C_k x_k, not driven by the measurements: an identification signal
+    generator) on the compressor with the active bearing: the closed loop is block
+    triangular, so its roots are the plant's (damped by the films) and ±i w, marginally
+    stable. ``stable`` is the verdict of every speed (as ``closed_loop(...).stable``); the raw
+    rule ``max Re λ < 0`` called the oscillator's Re λ = 0 (or its round-off) unstable."""
+    from rotordyn.control import Actuator, Controller
+    from rotordyn.control.closedloop import closed_loop
+    from rotordyn.control.gain_schedule import gain_schedule, law_at_speed, schedule_stability
+    from rotordyn.control.plant import plant
+    from rotordyn.control.pid import pid
+
+    s = rd.System.from_toml(MODELS / "compressor_active.toml")
+    meas = pid(1.0e8, 0.0).measurements
+    w = 2 * np.pi * 30.0
+    A = np.array([[0.0, w], [-w, 0.0]])
+    B = np.zeros((2, 2))
+    ks = [Controller(A, B, np.array([[c, 0.0]]), np.zeros((1, 2)), meas)
+          for c in (1.0e3, 2.0e3)]
+    law = gain_schedule(ks, [40.0, 60.0])
+    st = schedule_stability(s, law, actuator=Actuator.ideal(), n_between=1)
+    assert st.speed_hz.size == 3
+    for i, f in enumerate(st.speed_hz):
+        ref = closed_loop(plant(s, float(f), actuator=Actuator.ideal()),
+                          law_at_speed(law, float(f)), with_margins=False)
+        assert ref.stable and st.point_stable[i]
+    assert st.stable
+    # the test can fail: the oscillator's Re λ is 0 or round-off, never below the band
+    assert np.nanmax(st.max_real_1_per_s) >= -1e-9 * w
+    assert st.to_frame()["point_stable"].all()

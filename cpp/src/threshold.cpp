@@ -44,6 +44,7 @@ struct Point {
   Eigen::VectorXcd lam;      ///< every eigenvalue (ModalResult's order)
   std::vector<int> whirl;    ///< per eigenvalue: -1, 0, 1
   std::vector<double> share;  ///< per eigenvalue: the sleeve's kinetic-energy share (0: none)
+  std::vector<double> pad_share;  ///< per eigenvalue: the tilting pads' share (0: none)
   bool stable = false;  ///< the verdict: every counted root's Re λ below the round-off band
   /// The bracket's and Brent's function: y where the verdict is unstable or y < 0, else
   /// −kRoundOffRel·max(|λ|, 1) of the deciding root (a stable point's y in the band is
@@ -72,10 +73,19 @@ Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, doub
   Eigen::Index best = -1;
   const Eigen::Index ke = mr.eigenvalues.size();
   p.share.assign(static_cast<std::size_t>(ke), 0.0);
+  p.pad_share.assign(static_cast<std::size_t>(ke), 0.0);
   p.whirl.resize(static_cast<std::size_t>(ke));
   std::vector<char> counted(static_cast<std::size_t>(ke), 0);
   for (Eigen::Index j = 0; j < ke; ++j) {
     p.whirl[static_cast<std::size_t>(j)] = static_cast<int>(mr.whirl[static_cast<std::size_t>(j)]);
+    if (!in.pads.empty()) {  // rotordyn.stability's "pad" kind: the pads' kinetic share
+      const Eigen::VectorXcd phi = mr.modes.col(j);
+      const double kin = (phi.adjoint() * M * phi).real()(0, 0);
+      double kp = 0.0;
+      for (int i : in.pads)
+        for (int k : in.pads) kp += (std::conj(phi[i]) * M(i, k) * phi[k]).real();
+      p.pad_share[static_cast<std::size_t>(j)] = kin > 0 ? kp / kin : 0.0;
+    }
     if (!in.sleeve.empty()) {  // stability_batch's kind rule: the sleeve's kinetic share
       const Eigen::VectorXcd phi = mr.modes.col(j);
       const double kin = (phi.adjoint() * M * phi).real()(0, 0);
@@ -274,6 +284,7 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
   rule.xy_pairs = in.xy_pairs;
   rule.rot_pairs = in.rot_pairs;
   rule.sleeve = in.sleeve;
+  rule.pads = in.pads;
   MaxRealBatchResult out;
   out.y = Eigen::VectorXd::Constant(np, kNaN);
   out.freq = Eigen::VectorXd::Constant(np, kNaN);
@@ -308,11 +319,12 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
     }
   }
   out.r_last = prev;
-  // every point's eigenvalues, whirl and sleeve shares (padding past n_eig: NaN, 0, NaN)
+  // every point's eigenvalues, whirl, sleeve and pad shares (past n_eig: NaN, 0, NaN, NaN)
   const Eigen::Index k = np ? out.n_eig.maxCoeff() : 0;
   out.eigenvalues = Eigen::MatrixXcd::Constant(np, k, std::complex<double>(kNaN, kNaN));
   out.whirl = Eigen::MatrixXi::Zero(np, k);
   out.sleeve_share = RowMatrixXd::Constant(np, k, kNaN);
+  out.pad_share = RowMatrixXd::Constant(np, k, kNaN);
   for (Eigen::Index i = 0; i < np; ++i) {
     const Point& p = pts[static_cast<std::size_t>(i)];
     for (Eigen::Index j = 0; j < p.lam.size(); ++j) {
@@ -320,6 +332,7 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
       out.eigenvalues(i, j) = p.lam[j];
       out.whirl(i, j) = p.whirl[u];
       out.sleeve_share(i, j) = p.share[u];
+      out.pad_share(i, j) = p.pad_share[u];
     }
   }
   return out;

@@ -68,7 +68,7 @@ class ModeTracks:
     def _put(self, p, lam, kind, idx, level):
         self.level[p] = level
         self.lam[p] = lam
-        self.use[p] = (kind == "rotor") if self.exclude_sleeve else np.ones(len(lam), bool)
+        self.use[p] = (kind != "sleeve") if self.exclude_sleeve else np.ones(len(lam), bool)
         self.index[p] = np.asarray(idx)
 
     def track(self, rows: dict, index, level: int) -> dict:
