@@ -67,7 +67,7 @@ def test_boundary_rows_name_the_pad_modes(tmp_path, gen):
     fr = _run(tmp_path, "boundary",
               f'"bearings.DE_bearing.clearance_m" = {list(CLEARANCES)!r}\n'
               "speed_hz = [49.0, 50.0]\n",
-              'x = "bearings.DE_bearing.clearance_m"\ny = "speed_hz"\nresolution = 2\n')
+              'x = "bearings.DE_bearing.clearance_m"\ny = "speed_hz"\nresolution = 3\n')
     assert fr["point_id"].nunique() == 4
     for _, g in fr.groupby("point_id"):
         api = _api(gen, g["bearings.DE_bearing.clearance_m"].iloc[0], g["speed_hz"].iloc[0])

@@ -133,3 +133,48 @@ def test_gain_schedule_with_an_undamped_injection_oscillator_is_stable():
     # the test can fail: the oscillator's Re λ is 0 or round-off, never below the band
     assert np.nanmax(st.max_real_1_per_s) >= -1e-9 * w
     assert st.to_frame()["point_stable"].all()
+
+
+def test_boundary_map_over_a_conservative_region(tmp_path):
+    """A boundary sweep over (pull stiffness × speed) on the undamped compressor of
+    tests/test_verdict_one_rule.py: divergent for a strong pull, conservative (max Re λ =
+    round-off, +1e-13 here) for a weak one. The field of both the stored boundary and the
+    stability-map plot is strictly negative at every stable point, so the plot's zero contour
+    is the stored boundary: one line along the last stable node column. Before, the plot's
+    field was the raw round-off (+1e-13) there: no zero contour at all and the conservative
+    region shaded unstable."""
+    from rotordyn.plot.maps import _map_arrays
+    from rotordyn.sweep.boundary import polylines
+
+    t = (MODELS / "compressor_linear.toml").read_text()
+    t = re.sub(r"c(xx|yy)_n_s_per_m = .*\n", "", t).replace("kyy_n_per_m = 1.5e8",
+                                                             "kyy_n_per_m = 1.0e8")
+    t += ('\n[[support]]\ntype = "linear"\nname = "pull"\nstation = 3\n'
+          "kxx_n_per_m = -1.0e6\nkyy_n_per_m = 0.0\n")
+    pull = "supports.2.kxx_n_per_m"
+    (tmp_path / "m.toml").write_text(t)
+    (tmp_path / "b.toml").write_text(
+        f'schema = "rotordyn/sweep/1"\nmodel = "{(tmp_path / "m.toml").as_posix()}"\n'
+        f'name = "b"\nanalysis = "boundary"\n[grid]\n"{pull}" = [-4.0e8, -1.0e6]\n'
+        f'speed_hz = [20.0, 60.0]\n[options]\nx = "{pull}"\ny = "speed_hz"\nresolution = 9\n')
+    assert run_sweep(tmp_path / "b.toml", tmp_path / "o", threads=1, progress=False).complete
+    ds = sw.open(tmp_path / "o")
+    fr = ds.frame
+    first = fr.groupby("point_id").first()
+    stable = first[first["point_stable"].astype(bool)]
+    # the case: a conservative stable region (max Re λ not below 0) beside a divergent one
+    assert len(stable) and (stable["max_real_1_per_s"] >= 0).all()
+    assert (~first["point_stable"].astype(bool)).any()
+    assert stable[pull].nunique() >= 2  # a region, not only the grid's edge
+    edge = stable[pull].min()  # the stable node column next to the divergent side
+    b = ds.boundary()
+    # at the stable node (its field -5e-7 1/s beside +250 1/s: 2e-9 of the fine step off)
+    assert len(b)
+    np.testing.assert_allclose(b[pull], edge, rtol=1e-8)
+    xs, ys, _, _, B = _map_arrays(fr, [pull, "speed_hz"], True)
+    ok = np.isfinite(B)
+    st_grid = np.isin(xs, stable[pull].unique())[:, None] & ok
+    assert (B[st_grid] < 0).all() and (B[ok & ~st_grid] > 0).all()
+    lines = polylines(xs, ys, B)
+    assert len(lines) == 1
+    np.testing.assert_allclose(lines[0][:, 0], edge, rtol=1e-8)
