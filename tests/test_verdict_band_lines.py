@@ -131,7 +131,7 @@ def test_gain_schedule_with_an_undamped_injection_oscillator_is_stable():
         assert ref.stable and st.point_stable[i]
     assert st.stable
     # the test can fail: the oscillator's Re λ is 0 or round-off, never below the band
-    assert np.nanmax(st.max_real_1_per_s) >= -1e-9 * w
+    assert np.nanmax(st.max_real_1_per_s) >= 0.0  # exactly 0 here (block triangular)
     assert st.to_frame()["point_stable"].all()
 
 
