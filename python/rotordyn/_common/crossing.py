@@ -23,10 +23,10 @@ def banded(re, mag) -> np.ndarray:
     lower edge: |Re λ| < ROUND_OFF_REL·max(|λ|, 1) becomes −ROUND_OFF_REL·max(|λ|, 1). Its
     sign is the mode's verdict (``mode_stable``) and it is never 0: a conservative region's
     Re λ = 0 ± round-off is strictly negative, so no zero contour runs through it."""
-    from rotordyn.results.modes import ROUND_OFF_REL
+    from rotordyn import _core  # the core's band (results.modes.ROUND_OFF_REL reads it too)
 
     re = np.asarray(re, dtype=float)
-    band = ROUND_OFF_REL * np.maximum(np.asarray(mag, dtype=float), 1.0)
+    band = float(_core.ROUND_OFF_REL) * np.maximum(np.asarray(mag, dtype=float), 1.0)
     with np.errstate(invalid="ignore"):
         return np.where(np.abs(re) < band, -band, re)
 
