@@ -342,25 +342,28 @@ def threshold_line(job, variants, chunk_id, lo, hi, rows):
     # one C++ call: the scan (equilibria continued along the line, eigen-analysis) and every
     # sign change refined by Brent's method (SciPy's brentq, step for step)
     res = _core.threshold_line(asm.solver, inp)
-    ys = np.asarray(res.y)
+    verdicts = np.asarray(res.stable)
     evals = len(xs)
     found = 0
     for i, x, fr, status, msg, evals in zip(res.bracket, res.root, res.root_freq, res.status,
                                             res.message, res.evaluations):
-        y0 = ys[i]
         found += 1
+        low_stable = (verdicts[i] == 1) == (xs[i] < xs[i + 1])
         speed = x if vary == "speed_hz" else row["speed_hz"]
         rows.append({**row, vary: x, "crossing": found, "value": x,
                      "whirl_frequency_hz": fr, "whirl_ratio": fr / speed if speed else math.nan,
-                     "stable_side": "below" if y0 < 0 else "above", "evaluations": evals,
+                     "stable_side": "below" if low_stable else "above", "evaluations": evals,
                      "status": status, "message": msg})
     if not found:
-        good = [y for y in ys.tolist() if math.isfinite(y)]
-        what = ("no point of the line has an equilibrium" if not good else
-                f"{'unstable' if min(good) > 0 else 'stable'} at all {len(good)} points")
+        good = verdicts[verdicts >= 0]
+        what = ("no point of the line has an equilibrium" if not good.size else
+                f"{'stable' if good.all() else 'unstable'} at all {good.size} points"
+                if good.min() == good.max() else
+                "the verdict changes only across failed points")
         rows.append({**row, vary: math.nan, "crossing": 0, "value": math.nan,
                      "evaluations": evals, "status": "no_crossing",
-                     "message": f"max Re λ does not change sign along {vary}: {what}"})
+                     "message": f"the stability verdict does not change along {vary}: "
+                                f"{what}"})
 
 
 def unbalance_line(job, variants, chunk_id, lo, hi, rows):

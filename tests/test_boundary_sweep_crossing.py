@@ -68,8 +68,9 @@ def _dense(name, ds, c):
     """(speeds, max Re λ, the map rule's field) of the evaluated nodes at clearance c."""
     fr = ds.frame
     d = fr[(fr[X] == c) & (fr["status"] == "ok")]
-    pts, val = critical_values(d["point_id"].to_numpy(), d["mode_id"].to_numpy(),
-                               d["eig_real_1_per_s"].to_numpy())
+    re = d["eig_real_1_per_s"].to_numpy()
+    pts, val = critical_values(d["point_id"].to_numpy(), d["mode_id"].to_numpy(), re,
+                               np.hypot(re, 2 * np.pi * d["freq_hz"].to_numpy()))
     first = d.drop_duplicates("point_id").set_index("point_id").loc[pts]
     return first["speed_hz"].to_numpy(), first["max_real_1_per_s"].to_numpy(), val
 
@@ -133,9 +134,14 @@ def test_rule_on_a_bystander_and_a_linear_crossing_mode():
     point = np.array([0, 0, 1, 1])
     mode_id = np.array([0, 1, 0, 1])
     re = np.array([-0.01, -0.5, -0.01, 0.5])
-    pts, f = critical_values(point, mode_id, re)
+    pts, f = critical_values(point, mode_id, re, np.full(4, 100.0))
     assert pts.tolist() == [0, 1] and f.tolist() == [-0.5, 0.5]
     assert 0.5 + f[0] / (f[0] - f[1]) == 1.0
     # without an unstable mode anywhere: max Re λ; a point without finite values: NaN
-    pts, f = critical_values([0, 0, 1], [0, 1, 0], [-0.01, -0.5, np.nan])
+    pts, f = critical_values([0, 0, 1], [0, 1, 0], [-0.01, -0.5, np.nan], [100.0] * 3)
     assert f[0] == -0.01 and np.isnan(f[1])
+    # a conservative point (Re λ = 0 or round-off of it, |λ| = 100): the band's lower edge,
+    # strictly negative whatever the round-off's sign; an unstable mode past the band counts
+    pts, f = critical_values([0, 0, 1, 1], [0, 1, 0, 1], [0.0, 5e-8, -3e-8, 2e-6],
+                             [100.0] * 4)
+    np.testing.assert_allclose(f, [-1e-7, 2e-6], rtol=1e-15)

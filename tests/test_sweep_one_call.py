@@ -136,8 +136,9 @@ def test_unbalance_lines_equal_the_point_loop():
 
 def loop_threshold(job, vary, excl):
     """The threshold line's loop before the one call: the scan of max Re λ (equilibria
-    continued along the line) and SciPy's brentq on each sign change, every evaluation from
-    the bracket's first point. [(value, whirl frequency, status, evaluations)]."""
+    continued along the line) and SciPy's brentq on each sign change of max Re λ with the
+    verdict's sign (rotordyn.results.modes.verdict_real), every evaluation from the
+    bracket's first point. [(value, whirl frequency, status, evaluations)]."""
     from scipy.optimize import brentq
 
     from rotordyn.sweep.lines import max_real
@@ -151,7 +152,7 @@ def loop_threshold(job, vary, excl):
     for pid in range(n):
         _, p = job.point(pid)
         try:
-            y, _, _, r = max_real(job, asm, p, r0, {}, excl)
+            y, _, _, r = max_real(job, asm, p, r0, {}, excl, verdict=True)
         except (rd.RotordynError, ArithmeticError, ValueError):
             y, r = math.nan, None
         evals += 1
@@ -168,7 +169,8 @@ def loop_threshold(job, vary, excl):
         def g(x, pb=pb, start=rs[i]):
             nonlocal evals
             evals += 1
-            y, _, _, _ = max_real(job, asm, {**pb, vary: float(x)}, start, {}, excl)
+            y, _, _, _ = max_real(job, asm, {**pb, vary: float(x)}, start, {}, excl,
+                                  verdict=True)
             return y
 
         x = brentq(g, xs[i], xs[i + 1], xtol=abs(xs[i + 1] - xs[i]) * 1e-8,

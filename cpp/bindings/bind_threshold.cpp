@@ -28,10 +28,12 @@ void bind_threshold(py::module_& m) {
       .def_readwrite("xy_pairs", &ThresholdLineInput::xy_pairs)
       .def_readwrite("rot_pairs", &ThresholdLineInput::rot_pairs)
       .def_readwrite("sleeve", &ThresholdLineInput::sleeve)
+      .def_readwrite("pads", &ThresholdLineInput::pads)
       .def_readwrite("valid", &ThresholdLineInput::valid);
   py::class_<ThresholdLineResult>(m, "ThresholdLineResult")
       .def_readonly("y", &ThresholdLineResult::y)
       .def_readonly("freq", &ThresholdLineResult::freq)
+      .def_readonly("stable", &ThresholdLineResult::stable)
       .def_readonly("bracket", &ThresholdLineResult::bracket)
       .def_readonly("root", &ThresholdLineResult::root)
       .def_readonly("root_freq", &ThresholdLineResult::root_freq)
@@ -55,7 +57,8 @@ void bind_threshold(py::module_& m) {
       .def_readwrite("exclude_sleeve", &MaxRealBatchInput::exclude_sleeve)
       .def_readwrite("xy_pairs", &MaxRealBatchInput::xy_pairs)
       .def_readwrite("rot_pairs", &MaxRealBatchInput::rot_pairs)
-      .def_readwrite("sleeve", &MaxRealBatchInput::sleeve);
+      .def_readwrite("sleeve", &MaxRealBatchInput::sleeve)
+      .def_readwrite("pads", &MaxRealBatchInput::pads);
   py::class_<MaxRealBatchResult>(m, "MaxRealBatchResult")
       .def_readonly("y", &MaxRealBatchResult::y)
       .def_readonly("freq", &MaxRealBatchResult::freq)
@@ -66,7 +69,8 @@ void bind_threshold(py::module_& m) {
       .def_readonly("n_eig", &MaxRealBatchResult::n_eig)
       .def_readonly("eigenvalues", &MaxRealBatchResult::eigenvalues)
       .def_readonly("whirl", &MaxRealBatchResult::whirl)
-      .def_readonly("sleeve_share", &MaxRealBatchResult::sleeve_share);
+      .def_readonly("sleeve_share", &MaxRealBatchResult::sleeve_share)
+      .def_readonly("pad_share", &MaxRealBatchResult::pad_share);
   m.def("max_real_batch", &max_real_batch, py::arg("solver"), py::arg("input"),
         py::call_guard<py::gil_scoped_release>(),
         "max Re lambda (and its frequency, and every eigenvalue) at each listed point of a boundary-refinement "

@@ -44,6 +44,12 @@ struct Point {
   Eigen::VectorXcd lam;      ///< every eigenvalue (ModalResult's order)
   std::vector<int> whirl;    ///< per eigenvalue: -1, 0, 1
   std::vector<double> share;  ///< per eigenvalue: the sleeve's kinetic-energy share (0: none)
+  std::vector<double> pad_share;  ///< per eigenvalue: the tilting pads' share (0: none)
+  bool stable = false;  ///< the verdict: every counted root's Re λ below the round-off band
+  /// The bracket's and Brent's function: y where the verdict is unstable or y < 0, else
+  /// −kRoundOffRel·max(|λ|, 1) of the deciding root (a stable point's y in the band is
+  /// round-off of 0, never a sign): its sign is the verdict's, and it is never 0.
+  double g = kNaN;
 };
 
 // max Re λ of eq. 19 at one operating point (the sweep's rule: every mode, the sleeve's own
@@ -67,9 +73,19 @@ Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, doub
   Eigen::Index best = -1;
   const Eigen::Index ke = mr.eigenvalues.size();
   p.share.assign(static_cast<std::size_t>(ke), 0.0);
+  p.pad_share.assign(static_cast<std::size_t>(ke), 0.0);
   p.whirl.resize(static_cast<std::size_t>(ke));
+  std::vector<char> counted(static_cast<std::size_t>(ke), 0);
   for (Eigen::Index j = 0; j < ke; ++j) {
     p.whirl[static_cast<std::size_t>(j)] = static_cast<int>(mr.whirl[static_cast<std::size_t>(j)]);
+    if (!in.pads.empty()) {  // rotordyn.stability's "pad" kind: the pads' kinetic share
+      const Eigen::VectorXcd phi = mr.modes.col(j);
+      const double kin = (phi.adjoint() * M * phi).real()(0, 0);
+      double kp = 0.0;
+      for (int i : in.pads)
+        for (int k : in.pads) kp += (std::conj(phi[i]) * M(i, k) * phi[k]).real();
+      p.pad_share[static_cast<std::size_t>(j)] = kin > 0 ? kp / kin : 0.0;
+    }
     if (!in.sleeve.empty()) {  // stability_batch's kind rule: the sleeve's kinetic share
       const Eigen::VectorXcd phi = mr.modes.col(j);
       const double kin = (phi.adjoint() * M * phi).real()(0, 0);
@@ -79,10 +95,17 @@ Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, doub
       p.share[static_cast<std::size_t>(j)] = kin > 0 ? ks / kin : 0.0;
       if (in.exclude_sleeve && ks > 0.5 * kin) continue;  // a sleeve mode
     }
+    counted[static_cast<std::size_t>(j)] = 1;
     if (best < 0 || mr.eigenvalues[j].real() > mr.eigenvalues[best].real()) best = j;
   }
   if (best < 0) throw ValueFailure("attempt to get argmax of an empty sequence");
+  p.stable = true;  // the one verdict rule (rotordyn.results.modes.point_stable)
+  for (Eigen::Index j = 0; j < ke; ++j)
+    if (counted[static_cast<std::size_t>(j)] && settled_real(mr.eigenvalues[j]) > 0)
+      p.stable = false;
   p.y = mr.eigenvalues[best].real();
+  p.g = (!p.stable || p.y < 0) ? p.y
+                               : -kRoundOffRel * std::max(std::abs(mr.eigenvalues[best]), 1.0);
   p.f = mr.eigenvalues[best].imag() / (2.0 * M_PI);
   p.r = e.r;
   p.lam = mr.eigenvalues;
@@ -167,6 +190,7 @@ ThresholdLineResult threshold_line(SystemSolver& solver, const ThresholdLineInpu
   ThresholdLineResult out;
   out.y = Eigen::VectorXd::Constant(np, kNaN);
   out.freq = Eigen::VectorXd::Constant(np, kNaN);
+  out.stable.assign(static_cast<std::size_t>(np), -1);
   std::vector<Eigen::VectorXd> rs(static_cast<std::size_t>(np));
   Eigen::VectorXd r0;
   int evals = 0;
@@ -183,12 +207,16 @@ ThresholdLineResult threshold_line(SystemSolver& solver, const ThresholdLineInpu
     r0 = p.r;
     out.y[i] = p.y;
     out.freq[i] = p.f;
+    if (std::isfinite(p.y)) out.stable[static_cast<std::size_t>(i)] = p.stable ? 1 : 0;
     rs[static_cast<std::size_t>(i)] = p.r;
   }
   const double rtol = 4 * std::numeric_limits<double>::epsilon();
   for (Eigen::Index i = 0; i + 1 < np; ++i) {
-    const double y0 = out.y[i], y1 = out.y[i + 1];
-    if (!(std::isfinite(y0) && std::isfinite(y1)) || y0 * y1 >= 0) continue;
+    // a bracket: one end stable and the other unstable by the verdict (the band's rule; the
+    // raw sign of max Re λ called a conservative rotor's round-off +1e-12 unstable)
+    const int s0 = out.stable[static_cast<std::size_t>(i)];
+    const int s1 = out.stable[static_cast<std::size_t>(i + 1)];
+    if (s0 < 0 || s1 < 0 || s0 == s1) continue;
     const Eigen::VectorXd& start = rs[static_cast<std::size_t>(i)];
     // the operating point of x in this bracket: point i with the varied value replaced
     auto at = [&](double x, double& omega, double& pc, Eigen::VectorXd& a) {
@@ -208,8 +236,8 @@ ThresholdLineResult threshold_line(SystemSolver& solver, const ThresholdLineInpu
       Eigen::VectorXd a;
       at(x, omega, pc, a);
       const Point p = max_real(solver, in, omega, pc, a, start);
-      if (!std::isfinite(p.y)) throw ArithmeticFailure("no equilibrium inside the bracket");
-      return p.y;
+      if (!std::isfinite(p.g)) throw ArithmeticFailure("no equilibrium inside the bracket");
+      return p.g;
     };
     const double span = std::abs(in.x[i + 1] - in.x[i]);
     double x = kNaN, fr = kNaN;
@@ -256,6 +284,7 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
   rule.xy_pairs = in.xy_pairs;
   rule.rot_pairs = in.rot_pairs;
   rule.sleeve = in.sleeve;
+  rule.pads = in.pads;
   MaxRealBatchResult out;
   out.y = Eigen::VectorXd::Constant(np, kNaN);
   out.freq = Eigen::VectorXd::Constant(np, kNaN);
@@ -290,11 +319,12 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
     }
   }
   out.r_last = prev;
-  // every point's eigenvalues, whirl and sleeve shares (padding past n_eig: NaN, 0, NaN)
+  // every point's eigenvalues, whirl, sleeve and pad shares (past n_eig: NaN, 0, NaN, NaN)
   const Eigen::Index k = np ? out.n_eig.maxCoeff() : 0;
   out.eigenvalues = Eigen::MatrixXcd::Constant(np, k, std::complex<double>(kNaN, kNaN));
   out.whirl = Eigen::MatrixXi::Zero(np, k);
   out.sleeve_share = RowMatrixXd::Constant(np, k, kNaN);
+  out.pad_share = RowMatrixXd::Constant(np, k, kNaN);
   for (Eigen::Index i = 0; i < np; ++i) {
     const Point& p = pts[static_cast<std::size_t>(i)];
     for (Eigen::Index j = 0; j < p.lam.size(); ++j) {
@@ -302,6 +332,7 @@ MaxRealBatchResult max_real_batch(SystemSolver& solver, const MaxRealBatchInput&
       out.eigenvalues(i, j) = p.lam[j];
       out.whirl(i, j) = p.whirl[u];
       out.sleeve_share(i, j) = p.share[u];
+      out.pad_share(i, j) = p.pad_share[u];
     }
   }
   return out;

@@ -31,11 +31,15 @@ struct ThresholdLineInput {
   int max_iter = 100;
   std::vector<std::pair<int, int>> xy_pairs, rot_pairs;
   std::vector<int> sleeve;      ///< sleeve coordinates (mode kind by kinetic-energy share)
+  std::vector<int> pads;        ///< tilting pads' tilt/pivot coordinates ("pad" kind, likewise)
   std::vector<int> valid;       ///< (n_pts,) 0: the point's operating values were refused (a failed point)
 };
 
 struct ThresholdLineResult {
   Eigen::VectorXd y, freq;      ///< (n_pts,) max Re λ (1/s) and its frequency (Hz); NaN: failed
+  /// (n_pts,) the verdict (rotordyn.results.modes.point_stable over the counted roots):
+  /// 1 stable, 0 unstable, -1 failed
+  std::vector<int> stable;
   std::vector<int> bracket;     ///< per crossing: i of the bracket [x_i, x_{i+1}]
   std::vector<double> root, root_freq;  ///< per crossing (NaN on error)
   std::vector<std::string> status, message;  ///< per crossing: "ok" | "error", "<Error>: what"
@@ -64,6 +68,7 @@ struct MaxRealBatchInput {
   bool exclude_sleeve = false;
   std::vector<std::pair<int, int>> xy_pairs, rot_pairs;
   std::vector<int> sleeve;      ///< sleeve coordinates (mode kind by kinetic-energy share)
+  std::vector<int> pads;        ///< tilting pads' tilt/pivot coordinates ("pad" kind, likewise)
 };
 
 struct MaxRealBatchResult {
@@ -75,11 +80,13 @@ struct MaxRealBatchResult {
   RowMatrixXd r;                ///< (n_pts, n) each point's equilibrium if analysed, else NaN
   /// the eigen-analysis of each analysed point (stability_batch's layout): n_eig (0 for a
   /// failed point), eigenvalues (n_pts, k) NaN past n_eig, whirl (n_pts, k) -1, 0, 1, and
-  /// sleeve_share (n_pts, k) the sleeve's kinetic-energy share of each mode (0 without one)
+  /// sleeve_share (n_pts, k) the sleeve's kinetic-energy share of each mode (0 without one),
+  /// pad_share (n_pts, k) the tilting pads' (0 without pads)
   Eigen::VectorXi n_eig;
   Eigen::MatrixXcd eigenvalues;
   Eigen::MatrixXi whirl;
   RowMatrixXd sleeve_share;
+  RowMatrixXd pad_share;
 };
 
 /// Points in order on `solver`, as the per-point loop: a point with restart 0 starts from the

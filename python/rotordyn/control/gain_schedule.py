@@ -111,16 +111,21 @@ def law_at_speed(controller: Controller, speed_hz: float) -> Controller:
 class ScheduleStability:
     """Closed-loop stability of a scheduled law over the speed: ``speed_hz`` (n,), ``design``
     (n,) True at grid points, ``max_real_1_per_s`` and ``min_damping`` (n,) of the linear
-    closed loop with the law interpolated at that speed (NaN: no equilibrium there)."""
+    closed loop with the law interpolated at that speed (NaN: no equilibrium there),
+    ``point_stable`` (n,) each speed's verdict (:func:`rotordyn.results.modes.point_stable`:
+    a root in the round-off band is marginally stable, not a sign; False where NaN)."""
 
     speed_hz: np.ndarray
     design: np.ndarray
     max_real_1_per_s: np.ndarray
     min_damping: np.ndarray
+    point_stable: np.ndarray
 
     @property
     def stable(self) -> bool:
-        return bool(np.all(self.max_real_1_per_s < 0))
+        """Every speed :attr:`point_stable` (the one verdict rule; max Re λ's raw sign called
+        a conservative closed loop's round-off +1e-12 unstable)."""
+        return bool(np.all(self.point_stable))
 
     @property
     def worst(self) -> tuple:
@@ -133,7 +138,8 @@ class ScheduleStability:
 
         return pd.DataFrame({"speed_hz": self.speed_hz, "design": self.design,
                              "max_real_1_per_s": self.max_real_1_per_s,
-                             "min_damping": self.min_damping})
+                             "min_damping": self.min_damping,
+                             "point_stable": self.point_stable})
 
 
 def schedule_stability(system, controller: Controller, *, chamber_pressure_pa: float = 0.0,
@@ -145,7 +151,7 @@ def schedule_stability(system, controller: Controller, *, chamber_pressure_pa: f
     shows here, not at the grid points."""
     from rotordyn.control.closedloop import closed_loop_matrix
     from rotordyn.control.plant import plant
-    from rotordyn.results.modes import damping_ratio
+    from rotordyn.results.modes import damping_ratio, point_stable
 
     if not isinstance(controller, Controller) or controller.schedule_law is None:
         raise InputError("controller: expected a scheduled law (rotordyn.control.gain_schedule."
@@ -161,13 +167,15 @@ def schedule_stability(system, controller: Controller, *, chamber_pressure_pa: f
         sp = np.sort(v.vector("speeds_hz", speeds_hz))
     check_covers(controller, float(sp.min()), float(sp.max()))
     mr, mz = np.full(sp.size, math.nan), np.full(sp.size, math.nan)
+    ok = np.zeros(sp.size, dtype=bool)
     for j, f in enumerate(sp):
         p = plant(system, float(f), chamber_pressure_pa, config_ay_m,
                   measurements=controller.measurements, actuator=actuator)
         lam = np.linalg.eigvals(closed_loop_matrix(p, law_at_speed(controller, float(f))))
         mr[j] = lam.real.max()
         mz[j] = damping_ratio(lam).min()
-    return ScheduleStability(sp, np.isin(sp, x), mr, mz)
+        ok[j] = bool(np.all(np.isfinite(lam))) and point_stable(lam)
+    return ScheduleStability(sp, np.isin(sp, x), mr, mz, ok)
 
 
 def tune_pd_schedule(system, speeds_hz, *, chamber_pressure_pa: float = 0.0,

@@ -170,16 +170,18 @@ def critical_field(d: pd.DataFrame, axes: list[str], xs, ys) -> np.ndarray | Non
     (the rows with a result), else max Re λ; the sign of max Re λ at every point, but between
     points it follows the modes that cross (a turbine on a 10 Hz grid: 60.01 Hz drawn for a
     threshold at 61.58 Hz by max Re λ, 61.30 by this). None without ids or unstable modes."""
-    from rotordyn._common.crossing import critical_values
+    from rotordyn._common.crossing import banded, critical_values
 
     if "mode_id" not in d or d["mode_id"].isna().any() or d.empty:
         return None
-    if not (d["eig_real_1_per_s"] > 0).any():
+    re = d["eig_real_1_per_s"].to_numpy(dtype=float)
+    mag = np.hypot(re, 2 * np.pi * d["freq_hz"].to_numpy(dtype=float))
+    if not (banded(re, mag) > 0).any():  # no unstable mode (round-off of 0 is not one)
         return None
     xs, ys = np.asarray(xs), np.asarray(ys)
     key = (np.searchsorted(xs, d[axes[0]].to_numpy()) * len(ys)
            + np.searchsorted(ys, d[axes[1]].to_numpy()))
-    pts, val = critical_values(key, d["mode_id"].to_numpy(), d["eig_real_1_per_s"].to_numpy())
+    pts, val = critical_values(key, d["mode_id"].to_numpy(), re, mag)
     out = np.full(len(xs) * len(ys), np.nan)
     out[pts] = val
     return out.reshape(len(xs), len(ys))

@@ -51,6 +51,21 @@ def point_stable(eigenvalues: np.ndarray) -> bool:
     return bool(np.all(mode_stable(np.asarray(eigenvalues))))
 
 
+def verdict_real(eigenvalues: np.ndarray) -> float:
+    """The threshold's function of a point's roots: max Re λ where the point is unstable
+    (:func:`point_stable` False) or max Re λ < 0, else −ROUND_OFF_REL·max(|λ|, 1) of the
+    deciding root (a stable max Re λ in the round-off band is 0, never a sign). Its sign is
+    the verdict's and it is never 0, so a bracket and Brent's method on it find where the
+    verdict flips; away from the band it is max Re λ itself. The C++ threshold line's rule
+    (cpp/src/threshold.cpp)."""
+    lam = np.asarray(eigenvalues)
+    i = int(np.argmax(lam.real))
+    y = float(lam[i].real)
+    if not point_stable(lam) or y < 0:
+        return y
+    return -ROUND_OFF_REL * max(float(abs(lam[i])), 1.0)
+
+
 def damping_ratio(eigenvalues: np.ndarray) -> np.ndarray:
     """ζ = −Re λ / |λ| (0 for λ = 0 and within the round-off band of Re λ = 0; NaN for a NaN
     eigenvalue: a failed point's slot has no damping)."""

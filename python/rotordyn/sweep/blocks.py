@@ -160,12 +160,39 @@ def stab_blocks(job, variants, chunk_id, pids, asms):
     return blocks
 
 
+def _cut(EV, W, KIND, KE, modes, ok, n_modes):
+    """The batch's per-point modes cut to ``n_modes`` by the API's rule
+    (:func:`rotordyn.analysis.linear.mode_window`), padded as the batch pads (NaN, 0,
+    "rotor"); the point's verdict (``max_real``, ``least_stable``) keeps every root."""
+    from rotordyn.analysis.linear import mode_window
+
+    sel = [mode_window(KIND[k, :KE[k]], n_modes) if ok[k] else np.zeros(0, int)
+           for k in range(len(KE))]
+    ke = np.array([len(q) if ok[k] else KE[k] for k, q in enumerate(sel)], dtype=np.int64)
+    w = int(ke.max()) if ke.size else 0
+    ev = np.full((len(KE), w), np.nan + 1j * np.nan)
+    wh = np.zeros((len(KE), w), dtype=W.dtype)
+    kd = np.full((len(KE), w), "rotor", dtype=object)
+    md = list(modes)
+    for k in np.flatnonzero(ok):
+        q = sel[k]
+        ev[k, :q.size], wh[k, :q.size], kd[k, :q.size] = EV[k, q], W[k, q], KIND[k, q]
+        md[k] = np.asarray(modes[k])[:, q]
+    return ev, wh, kd, ke, md
+
+
 def _stab_batch(job, seg, ops):
     asm, opts = seg[0][1], seg[0][2]
     n_modes = job.options.get("n_modes") or 0
+    pads = any(getattr(b, "extra", ()) for b in asm.bearings)  # tilting pads' own modes
     restart = [1 if k == 0 or not it[3] else 0 for k, it in enumerate(seg)]
+    # with tilting pads every mode is computed, classified, then cut by the API's rule
+    # (rotordyn.analysis.linear.mode_window: n_modes counts the rotor's and sleeve's modes,
+    # the pads' below the highest kept one listed beside them); the batch's own cut counted
+    # pad roots, so a pad root took a rotor mode's slot
     res = _core.stability_batch(
-        asm.solver, *_inputs(ops), restart, equilibrium_options(opts), int(n_modes),
+        asm.solver, *_inputs(ops), restart, equilibrium_options(opts),
+        0 if pads else int(n_modes),
         opts.get("linearization", "perturbation") == "finite_difference", FD_REL_STEP,
         asm.rotor.xy_pairs(), asm.rotor.rot_pairs(), [i for bc in asm.bearings for i in bc.sleeve])
     bc = ref_bearing(asm, job.options.get("bearing"))
@@ -175,6 +202,16 @@ def _stab_batch(job, seg, ops):
     H = np.asarray(res.h_min)
     st = np.array([_status(s) for s in res.status], dtype=object)
     ok = np.array([s in CONVERGED for s in st]) & (KE > 0)
+    W = np.asarray(res.whirl)
+    KIND = np.where(np.asarray(res.sleeve_share) > 0.5, "sleeve", "rotor").astype(object)
+    modes = list(res.modes)
+    if pads:
+        for k in np.flatnonzero(ok):
+            Mw = (np.asarray(asm.model.mass_at(hz_to_rad_s(ops[k][0])))
+                  if asm.model.has_table_mass() else asm.mats[0])
+            KIND[k, :KE[k]] = mode_kind(asm, Mw, np.asarray(modes[k]), KIND[k, :KE[k]])
+        if n_modes:
+            EV, W, KIND, KE, modes = _cut(EV, W, KIND, KE, modes, ok, int(n_modes))
     fail = np.array([m or "no equilibrium" for m in res.message], dtype=object)
     valid = np.arange(EV.shape[1])[None, :] < KE[:, None]
     # every per-mode column of the batch at once (elementwise: the numbers of the point
@@ -188,19 +225,13 @@ def _stab_batch(job, seg, ops):
         FR = EV.imag / (2 * np.pi)
         # the thinnest film (NaN on a failed point: the batch's one rule, all its films NaN)
         HMIN = (np.fmin.reduce(H, axis=1) if H.shape[1] else np.full(len(st), math.nan))
-    WN = _NAMES[np.clip(np.asarray(res.whirl), -1, 1) + 1]
-    KIND = np.where(np.asarray(res.sleeve_share) > 0.5, "sleeve", "rotor").astype(object)
-    if any(getattr(b, "extra", ()) for b in asm.bearings):  # tilting pads' own modes
-        for k in np.flatnonzero(ok):
-            Mw = (np.asarray(asm.model.mass_at(hz_to_rad_s(ops[k][0])))
-                  if asm.model.has_table_mass() else asm.mats[0])
-            KIND[k, :KE[k]] = mode_kind(asm, Mw, np.asarray(res.modes[k]), KIND[k, :KE[k]])
+    WN = _NAMES[np.clip(W, -1, 1) + 1]
     nan = np.full(len(st), math.nan)
     return {"ok": ok, "st": st, "fail": fail, "msg": np.array(res.message, dtype=object),
             "KE": KE, "EV": EV, "valid": valid, "MS": MS, "DR": DR, "LD": LD, "FR": FR,
             "WN": WN, "KIND": KIND, "IT": np.asarray(res.iterations).astype(np.int64),
             "jx": R[:, bc.jx] if bc else nan, "jy": R[:, bc.jy] if bc else nan, "HMIN": HMIN,
-            "lam": [EV[k, :KE[k]] for k in range(len(st))], "modes": res.modes,
+            "lam": [EV[k, :KE[k]] for k in range(len(st))], "modes": modes,
             # the verdict and max Re λ over every root of the point, not only the n_modes
             # kept (a mode above the cut can be the unstable one)
             "MX": np.asarray(res.max_real), "LS": np.asarray(res.least_stable),
@@ -245,7 +276,7 @@ def boundary_blocks(job, variants, chunk_id, pids, asms, equilibria=None):
     st = np.empty(n, dtype=object)
     msg = np.empty(n, dtype=object)
     y, fr = np.full(n, math.nan), np.full(n, math.nan)
-    lam, whirl, share = [None] * n, [None] * n, [None] * n
+    lam, whirl, share, pshare = [None] * n, [None] * n, [None] * n, [None] * n
     carry = None  # the last evaluated point's equilibrium (None: failed)
     errs = [it[4] for it in items]
     starts = getattr(job, "starts", None) or {}
@@ -276,6 +307,7 @@ def boundary_blocks(job, variants, chunk_id, pids, asms, equilibria=None):
         inp.exclude_sleeve = excl
         inp.xy_pairs, inp.rot_pairs = asm.rotor.xy_pairs(), asm.rotor.rot_pairs()
         inp.sleeve = [q for bc in asm.bearings for q in bc.sleeve]
+        inp.pads = [q for bc in asm.bearings for q in getattr(bc, "extra", ())]
         if starts:
             S = np.full((j - i, asm.n), math.nan)
             for k in range(i, j):
@@ -303,15 +335,17 @@ def boundary_blocks(job, variants, chunk_id, pids, asms, equilibria=None):
         y[i:j], fr[i:j] = np.asarray(res.y), np.asarray(res.freq)
         ke, EV = np.asarray(res.n_eig), np.asarray(res.eigenvalues)
         W, SH = np.asarray(res.whirl), np.asarray(res.sleeve_share)
+        PH = np.asarray(res.pad_share)
         for k in range(j - i):
             lam[i + k], whirl[i + k], share[i + k] = EV[k, :ke[k]], W[k, :ke[k]], SH[k, :ke[k]]
+            pshare[i + k] = PH[k, :ke[k]]
     good = np.array([s in CONVERGED and lam[k] is not None and len(lam[k])
                      for k, s in enumerate(st)], dtype=bool)
     blocks = []
     for a, b, g in runs(good):
         k = np.arange(a, b)
         if g:
-            blocks.append(_boundary_block(job, k, y, fr, st, lam, whirl, share))
+            blocks.append(_boundary_block(job, k, y, fr, st, lam, whirl, share, pshare))
         else:
             blocks.append((k, {"status": st[a:b], "message": msg[a:b]}))
     if equilibria is not None:
@@ -319,7 +353,7 @@ def boundary_blocks(job, variants, chunk_id, pids, asms, equilibria=None):
     return blocks
 
 
-def _boundary_block(job, k, y, fr, st, lam, whirl, share):
+def _boundary_block(job, k, y, fr, st, lam, whirl, share, pshare):
     """The mode rows of the converged points ``k`` (stability rows' per-mode columns)."""
     ke = np.array([len(lam[q]) for q in k])
     EV = np.concatenate([lam[q] for q in k])
@@ -341,8 +375,10 @@ def _boundary_block(job, k, y, fr, st, lam, whirl, share):
                   "freq_hz": EV.imag / (2 * np.pi), "eig_real_1_per_s": EV.real,
                   "damping_ratio": DR, "log_dec": LD,
                   "whirl": _NAMES[np.clip(np.concatenate([whirl[q] for q in k]), -1, 1) + 1],
-                  "kind": np.where(np.concatenate([share[q] for q in k]) > 0.5, "sleeve",
-                                   "rotor"),
+                  # the stability rows' kinds: "pad" where the tilting pads' tilt/pivot
+                  # coordinates carry more than half the kinetic energy (mode_kind's rule)
+                  "kind": np.where(np.concatenate([pshare[q] for q in k]) > 0.5, "pad",
+                                   np.where(SH > 0.5, "sleeve", "rotor")),
                   "mode_stable": MS, "point_stable": np.repeat(PS, ke),
                   "max_real_1_per_s": y[rep], "max_real_freq_hz": fr[rep],
                   "level": job.level, "status": st[rep], "message": ""})

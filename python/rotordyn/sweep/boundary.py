@@ -240,9 +240,12 @@ def run_boundary(spec, header, model_toml, out, *, scheduler=None, workers=None,
         store.group = group_size(cid, spec.max_files)
         store.compact_complete(cid)
         vals = np.full(shape, np.nan)
-        for p, v in modes.field().items():  # the map's rule (max Re λ's sign at each point)
-            if state[p][0] != 2:  # a stable point's round-off (+1e-12) is not a sign
-                vals[np.unravel_index(p - base, shape)] = v if state[p][0] else min(v, 0.0)
+        # the map's rule (the verdict's sign at each point, strictly negative at a stable
+        # one: a conservative region's Re λ = 0 is the band's lower edge, so no zero contour
+        # runs through it)
+        for p, v in modes.field().items():
+            if state[p][0] != 2:
+                vals[np.unravel_index(p - base, shape)] = v
         rows = {"line": [], "vertex": [], x: [], y: []}
         if z is not None:
             rows[z] = []

@@ -68,7 +68,7 @@ class ModeTracks:
     def _put(self, p, lam, kind, idx, level):
         self.level[p] = level
         self.lam[p] = lam
-        self.use[p] = (kind == "rotor") if self.exclude_sleeve else np.ones(len(lam), bool)
+        self.use[p] = (kind != "sleeve") if self.exclude_sleeve else np.ones(len(lam), bool)
         self.index[p] = np.asarray(idx)
 
     def track(self, rows: dict, index, level: int) -> dict:
@@ -143,8 +143,8 @@ class ModeTracks:
             return {}
         key = np.concatenate([np.full(int(self.use[p].sum()), p) for p in ps])
         mid = np.concatenate([self.ids[p][self.use[p]] for p in ps])
-        re = np.concatenate([self.lam[p].real[self.use[p]] for p in ps])
-        pts, val = critical_values(key, mid, re)
+        lam = np.concatenate([self.lam[p][self.use[p]] for p in ps])
+        pts, val = critical_values(key, mid, lam.real, np.abs(lam))
         return dict(zip(pts.tolist(), val.tolist()))
 
 

@@ -160,7 +160,7 @@ class _Line:
                               sensitivity_rtol=self.srtol)
 
 
-def _branch(job, line, hrow, span, ys):
+def _branch(job, line, hrow, span, verdicts):
     """(HopfResult, [branches], failure message) of the cycles born at the crossing
     ``hrow``. The first cycle is shot from the leading-order cycle at the distance from the
     Hopf point where its amplitude is ``start_amplitude`` of the clearance (at most 5 % of
@@ -201,7 +201,7 @@ def _branch(job, line, hrow, span, ys):
     for sgn in (first_side, -first_side, 0):
         settled = sgn == 0
         if settled:  # the cycle a transient settles on, on the line's unstable side
-            c0, sgn = _settled_cycle(line, h, ys)
+            c0, sgn = _settled_cycle(line, h, verdicts)
             if not c0.ok:
                 msgs.append(c0.message)
                 continue
@@ -249,13 +249,13 @@ class _NoCycle:
         self.message = message
 
 
-def _settled_cycle(line, h, ys):
+def _settled_cycle(line, h, verdicts):
     """(cycle, direction towards the Hopf point) from a transient at the grid value of the
     line's unstable side nearest the Hopf point: 60 whirl periods from the equilibrium
     disturbed by 0.1 c, then shooting from its last period (the attracting cycle, the one a
     disturbance throws the journal onto)."""
     xs = np.asarray(line.xs, float)
-    unst = np.flatnonzero(np.asarray(ys) > 0)
+    unst = np.flatnonzero(np.asarray(verdicts) == 0)  # the verdict's unstable points
     if unst.size == 0:
         return _NoCycle("transient: no grid value of the line has an unstable equilibrium"), 0
     k = int(unst[np.argmin(np.abs(xs[unst] - h.value))])
@@ -390,6 +390,9 @@ def limit_cycle_line(job, variants, lo, hi, at, asms):
     span = max(xs) - min(xs)
     line = _Line(job, asm, p0, xs)
     ys = scan.get("y", np.full(len(xs), np.nan))
+    # the scan's verdicts (1 stable, 0 unstable, -1 failed: the round-off band's rule, not
+    # the raw sign of max Re λ, which called a conservative point's +1e-12 unstable)
+    verdicts = scan.get("stable", np.full(len(xs), -1))
     name, C = _where(asm, job.options.get("station"))
     bc = pt.ref_bearing(asm)
     clearance = bc.clearance_m if (bc is not None and job.options.get("station") is None) \
@@ -406,7 +409,7 @@ def limit_cycle_line(job, variants, lo, hi, at, asms):
                and abs(b[1].value - hr["value"]) > 1e-2 * span for b in branches):
             continue  # this crossing ends a branch already continued from another one
         try:
-            h, brs, msg = _branch(job, line, hr, span, ys)
+            h, brs, msg = _branch(job, line, hr, span, verdicts)
         except (RotordynError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
             h, brs, msg = None, [], f"{type(exc).__name__}: {exc}"
         if not brs:
@@ -431,7 +434,7 @@ def limit_cycle_line(job, variants, lo, hi, at, asms):
         row = {**nan_cols, "record": "cycle"}
         here = np.array([at + k])
         y = float(ys[k])
-        eq_st = bool(y < 0) if math.isfinite(y) else None
+        eq_st = bool(verdicts[k] == 1) if verdicts[k] >= 0 else None
         row.update(max_real_1_per_s=y, equilibrium_stable=eq_st, bearing=name)
         g = p[vary]
         f = line.operating(g)[0]

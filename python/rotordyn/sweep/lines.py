@@ -17,8 +17,10 @@ from rotordyn.sweep import points as pt
 from rotordyn.units import hz_to_rad_s
 
 
-def max_real(job, asm, p, r0, opts, exclude_sleeve):
-    """(max Re λ, its frequency Hz, status, equilibrium r or None) at point ``p``."""
+def max_real(job, asm, p, r0, opts, exclude_sleeve, verdict=False):
+    """(max Re λ, its frequency Hz, status, equilibrium r or None) at point ``p``; with
+    ``verdict`` the first entry is the threshold's function instead
+    (:func:`rotordyn.results.modes.verdict_real`: max Re λ with the verdict's sign)."""
     f, pc, a = pt.operating(asm, p)
     e = pt.solve_equilibrium(asm, f, pc, a, r0, opts)
     if e.status not in pt.CONVERGED:
@@ -27,14 +29,19 @@ def max_real(job, asm, p, r0, opts, exclude_sleeve):
     if exclude_sleeve:
         lam = lam[kind != "sleeve"]
     i = int(np.argmax(lam.real))
+    if verdict:
+        from rotordyn.results.modes import verdict_real
+        return verdict_real(lam), float(lam[i].imag / (2 * np.pi)), e.status, np.asarray(e.r)
     return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), e.status, np.asarray(e.r)
 
 
-def _stable_side(xs, ys, i) -> str:
+def _stable_side(xs, stable, i) -> str:
     """Which side of the crossing in the bracket [x_i, x_{i+1}] is stable, in the varied
     value (not in scan order: a line scanned from its largest value down has its stable
-    point second when the stable side is below)."""
-    x_stable, x_other = (xs[i], xs[i + 1]) if ys[i] < 0 else (xs[i + 1], xs[i])
+    point second when the stable side is below). ``stable``: the points' verdicts (1 stable,
+    0 unstable: the round-off band's rule, not max Re λ's raw sign, which called a
+    conservative point's +1e-12 unstable)."""
+    x_stable, x_other = (xs[i], xs[i + 1]) if stable[i] == 1 else (xs[i + 1], xs[i])
     return "below" if x_stable < x_other else "above"
 
 
@@ -89,8 +96,10 @@ def threshold_line(job, variants, lo, hi, at, asms, scan=None):
     # sign change refined by Brent's method (SciPy's brentq, step for step)
     res = _core.threshold_line(asm.solver, inp)
     ys = np.asarray(res.y)
+    verdicts = np.asarray(res.stable, dtype=np.int64)
     if scan is not None:
         scan["y"] = ys.copy()
+        scan["stable"] = verdicts.copy()
     roots, freqs = list(res.root), list(res.root_freq)
     k = len(roots)
     if k:
@@ -99,16 +108,19 @@ def threshold_line(job, variants, lo, hi, at, asms, scan=None):
             f"i_{vary}": None, vary: roots, "crossing": np.arange(1, k + 1),
             "value": roots, "whirl_frequency_hz": freqs,
             "whirl_ratio": [fr / sp if sp else math.nan for fr, sp in zip(freqs, speeds)],
-            "stable_side": [_stable_side(xs, ys, i) for i in res.bracket],
+            "stable_side": [_stable_side(xs, verdicts, i) for i in res.bracket],
             "evaluations": list(res.evaluations), "status": list(res.status),
             "message": list(res.message)})]
-    good = [y for y in ys.tolist() if math.isfinite(y)]
-    what = ("no point of the line has an equilibrium" if not good else
-            f"{'unstable' if min(good) > 0 else 'stable'} at all {len(good)} points")
+    good = verdicts[verdicts >= 0]
+    what = ("no point of the line has an equilibrium" if not good.size else
+            f"{'stable' if good.all() else 'unstable'} at all {good.size} points"
+            if good.min() == good.max() else
+            "the verdict changes only across failed points")
     return [(np.array([at]), {f"i_{vary}": None, vary: math.nan, "crossing": 0,
                               "value": math.nan, "evaluations": len(xs),
                               "status": "no_crossing",
-                              "message": f"max Re λ does not change sign along {vary}: {what}"})]
+                              "message": f"the stability verdict does not change along "
+                                         f"{vary}: {what}"})]
 
 
 def unbalance_line(job, variants, lo, hi, at, asms):
