@@ -181,24 +181,36 @@ def test_unbalance_cli_speeds_follow_the_operating_speed(capsys):
         100 * (49.5 - first["critical_speed_hz"]) / 49.5, rel=1e-6)
 
 
-def test_unsettled_pad_temperatures_say_what_to_change(gen, capsys):
-    """The effective-temperature pads of the generator on its coarse 60 × 8 grids do not
-    settle to the default 1e-6 K at 18.79 Hz (the heat balance is only piecewise smooth
-    there; the 72 × 16 grid settles in 12 iterations): the status stays not_converged, and
-    the message now names tol_k and the grid, and `rotordyn thermal --tol-k` can raise it
-    (1e-4 K: ok after 45 iterations). Before, the message said only that the temperatures
-    did not settle and the command had no tolerance option."""
+def test_pad_temperatures_settle_at_the_default_tolerance(gen, capsys):
+    """The effective-temperature pads of the generator on its 60 × 8 grids did not settle to
+    the default 1e-6 K at 18.79 and 38.38 Hz (60 iterations, not_converged; 1e-4 K by chance
+    after 45): on the unloaded NDE top pads the cell before the trailing edge sat at a
+    round-off multiplier, and round-off chose its fill (1 or its streamer's 0.965), so the
+    pads' dissipation jumped by 0.35 % and the map T -> T_eff had no fixed point (a 2-cycle
+    between the two fills). With the fill continuous near the degenerate band
+    (reynolds_viscosity.cpp) both speeds converge in 7 iterations, every pad's state closes
+    its heat balance (the iteration's own check: T_eff of its viscosity = T_in + k ΔT within
+    tol_k), and the answer equals the 1e-4 K run within that run's tolerance."""
     from rotordyn.cli import main
 
-    r = rd.system_thermal_equilibrium(gen, speed_hz=18.79)
-    assert r.status == "not_converged"
-    assert "tol_k = 1e-06 K" in r.message and "60 x 8" in r.message
-    assert np.all(np.isnan(r.max_temperature_c))            # no state from a failed solve
-    assert main(["thermal", str(MODEL), "--speed-hz", "18.79", "--tol-k", "1e-4"]) == 0
-    out = capsys.readouterr().out
-    assert "ok after" in out
-    ok = rd.system_thermal_equilibrium(gen, speed_hz=18.79, tol_k=1e-4)
-    assert ok.status == "ok"
+    rho, cp, k = 860.0, 2000.0, 0.5                        # the model's [thermal] oil, factor
+    for f in (18.79, 38.38):
+        r = rd.system_thermal_equilibrium(gen, speed_hz=f)
+        assert r.status == "ok" and r.iterations <= 10
+        assert len(r.bearing_names) == 10
+        dT = r.temperature_rise_k
+        np.testing.assert_allclose(
+            rho * cp * dT * (r.film_flow_m3_s - 0.5 * r.side_flow_m3_s), r.power_loss_w,
+            rtol=1e-9)
+        np.testing.assert_allclose(r.effective_temperature_c,
+                                   r.inlet_temperature_c + k * dT, rtol=0, atol=1e-6)
+        coarse = rd.system_thermal_equilibrium(gen, speed_hz=f, tol_k=1e-4)
+        assert coarse.status == "ok"
+        np.testing.assert_allclose(r.effective_temperature_c, coarse.effective_temperature_c,
+                                   rtol=0, atol=1e-4)
+    assert main(["thermal", str(MODEL), "--speed-hz", "18.79"]) == 0
+    assert "ok after" in capsys.readouterr().out
     # plausible bearing temperatures and losses: ISO VG 32 at 45 °C, 0.3 m journals at 18.8 Hz
-    assert 45.0 < ok.max_temperature_c.max() < 75.0
-    assert 2e3 < ok.power_loss_w.sum() < 3e4
+    r = rd.system_thermal_equilibrium(gen, speed_hz=18.79)
+    assert 45.0 < r.max_temperature_c.max() < 75.0
+    assert 2e3 < r.power_loss_w.sum() < 3e4

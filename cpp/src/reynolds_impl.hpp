@@ -218,6 +218,7 @@ struct ReynoldsSolver::Impl {
   // central differences (see solve_derivative_lcp).
   std::vector<char> biactive;  // node -> 1 if degenerate
   int n_biactive = 0;
+  double deg_mu_last = 0.0;    // the last active-set solve's degenerate band of the multiplier
   bool solved = false;
   FilmSolution out;
 

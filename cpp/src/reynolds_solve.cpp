@@ -240,6 +240,7 @@ void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
       if (next[i] != S.active[i]) changed = true;
     }
     if (!changed) {
+      deg_mu_last = deg_mu;
       for (int n = 0; n < n_nodes; ++n) pfull[n] = p[n];
       std::fill(biactive.begin(), biactive.end(), 0);
       n_biactive = 0;

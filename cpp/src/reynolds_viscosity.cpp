@@ -77,6 +77,23 @@ void ReynoldsSolver::Impl::film_flows(FilmFlows& f) const {
     const double zn = clipped ? -pfull[n] : (g > 0.0 ? rn / g : 0.0);
     return zn > 0.0 ? pm / (pm + zn) : 1.0;
   };
+  // A Swift–Stieber node whose multiplier is within kNearFull of the degenerate band (p = 0
+  // and A p − b = 0 together, reynolds_solve.cpp) is on the edge of the full film whatever
+  // its neighbours' pressures: its fill goes linearly from 1 at the band's edge (where a
+  // degenerate node is full, fill 1) to its streamer's at kNearFull × the band. front()
+  // cannot give that where no neighbour carries pressure: on an unloaded tilting pad (p = 0
+  // everywhere, the pad at the edge of its pressure-free branch) the cell before the trailing
+  // edge sat at a multiplier of round-off size, and round-off chose fill 1 or θ_s = 0.965:
+  // the pad's dissipation jumped by 0.35 %, its effective temperature by 1.5e-3 K, and the
+  // generator's thermal equilibrium cycled without a fixed point (docs/film-physics.md, "When
+  // the pad temperatures do not settle").
+  constexpr double kNearFull = 1e6;
+  auto near_full = [&](double rn) {
+    const double d = deg_mu_last;
+    if (clipped || !(d > 0.0)) return 0.0;
+    if (rn <= d) return 1.0;
+    return std::max(0.0, (kNearFull * d - rn) / ((kNearFull - 1.0) * d));
+  };
   std::vector<double> th(theta);
   if (cav == Cavitation::reynolds || clipped) {
     // Couette streamers: from each rupture, the flow through the upstream face fills the
@@ -110,7 +127,8 @@ void ReynoldsSolver::Impl::film_flows(FilmFlows& f) const {
         const double rn = clipped ? 0.0 : cell_residual(n, p);
         const int e = east(n), w = west(n);
         const double sf = std::max({front(n, rn, e, cE[n]), front(n, rn, w, cE[w]),
-                                    front(n, rn, n + 1, cN[n]), front(n, rn, n - 1, cN[n - 1])});
+                                    front(n, rn, n + 1, cN[n]), front(n, rn, n - 1, cN[n - 1]),
+                                    near_full(rn)});
         th[n] = ts + (1.0 - ts) * sf;
       }
     }

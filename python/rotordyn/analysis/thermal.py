@@ -205,14 +205,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     eq = res.equilibrium
     message = eq.message
     if eq.status == "not_converged" and "did not settle" in message:
-        # what to change (measured: the generator of tests/data/models on 60 x 8 pad grids
-        # did not settle to 1e-6 K at 18.79 and 38.38 Hz; tol_k = 1e-4 K or 72 x 16 grids did)
-        grids = sorted({(b.n_circ, b.n_axial) for b in system.bearings
-                        if hasattr(b, "n_circ") and hasattr(b, "n_axial")})
-        message += (f" to tol_k = {tol_k:g} K (a coarse film grid, here n_circ x n_axial = "
-                    + ", ".join(f"{c} x {z}" for c, z in grids)
-                    + ", makes the heat balance only piecewise smooth in the film "
-                    "temperatures: raise tol_k or refine the bearings' n_circ, n_axial)")
+        message += f" to tol_k = {tol_k:g} K"
     r = np.asarray(eq.r)
     st = list(res.films)
     mus, fields = {}, {}
@@ -247,8 +240,9 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         x = np.array([getattr(s, name) for s in st], dtype=np.float64)
         return x if eq.status in CONVERGED else np.full_like(x, np.nan)
 
+    pads = _pad_outputs(hot, r, omega, eq, rows, st, thd) if eq.status in CONVERGED else {}
     return SystemThermalResult(
-        speed_hz=float(speed_hz), supply_temperature_c=float(supply_temperature_c),
+        pads=pads, speed_hz=float(speed_hz), supply_temperature_c=float(supply_temperature_c),
         bearing_names=names, effective_temperature_c=col("effective_temperature_c"),
         max_temperature_c=col("max_temperature_c"), inlet_temperature_c=col("inlet_temperature_c"),
         temperature_rise_k=col("temperature_rise_k"), viscosity_pa_s=col("viscosity_pa_s"),
@@ -285,3 +279,35 @@ def _tilt_columns(asm, eq, r: np.ndarray, a: np.ndarray, film_bcs: list) -> dict
     return {k: np.array([t.get(bc.index, {}).get(k, np.nan) for bc in film_bcs], dtype=float)
             for k in ("journal_theta_x_rad", "journal_theta_y_rad", "film_moment_x_n_m",
                       "film_moment_y_n_m")}
+
+# per pad of a thermal tilting-pad bearing: SystemThermalResult.pads key -> film state field
+PAD_THERMAL = (("pad_effective_temperature_c", "effective_temperature_c"),
+               ("pad_max_temperature_c", "max_temperature_c"),
+               ("pad_inlet_temperature_c", "inlet_temperature_c"),
+               ("pad_temperature_rise_k", "temperature_rise_k"),
+               ("pad_viscosity_pa_s", "viscosity_pa_s"),
+               ("pad_power_loss_w", "power_loss_w"),
+               ("pad_supply_flow_m3_s", "supply_flow_m3_s"),
+               ("pad_max_wall_temperature_c", "max_wall_temperature_c"))
+EFFECTIVE_PAD = {f for _, f in PAD_THERMAL} - {"max_wall_temperature_c"}  # not THD-only
+
+
+def _pad_outputs(hot, r: np.ndarray, omega: float, eq, rows: list, st: list,
+                 thd: bool) -> dict:
+    """Per thermal tilting-pad bearing, every pad's state at the converged thermal
+    equilibrium ``r`` as the isothermal equilibrium's ``pads``
+    (:func:`rotordyn.analysis.equilibrium.pad_outputs`: pivot, tilt, peak pressure, minimum
+    film, unloaded; the pressures from the returned system ``hot``, whose films carry the
+    frozen viscosities of this equilibrium) and each pad's film state (``PAD_THERMAL``; THD:
+    ``pad_effective_temperature_c`` is the pad's mean, ``pad_max_wall_temperature_c`` its
+    hottest surface, NaN for the effective model). Bearings left isothermal are left out."""
+    from rotordyn.analysis.equilibrium import pad_outputs
+
+    out = pad_outputs(assembled(hot), r, omega, np.asarray(eq.h_min))
+    for bi, d in out.items():
+        own = [s for (b, _), s in zip(rows, st) if b == bi]
+        if len(own) == len(d["pad_tilt_rad"]):
+            for key, field in PAD_THERMAL:
+                d[key] = tuple(float(getattr(s, field)) if thd or field in EFFECTIVE_PAD
+                               else float("nan") for s in own)
+    return {bi: d for bi, d in out.items() if "pad_power_loss_w" in d}

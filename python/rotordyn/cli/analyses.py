@@ -261,7 +261,8 @@ def _cmd_thermal(args) -> int:
     if args.json:
         print(json_text({"status": r.status, "message": r.message, "iterations": r.iterations,
                          "thermal_model": r.thermal_model,
-                         "bearings": df.to_dict(orient="records")}))
+                         "bearings": df.to_dict(orient="records"),
+                         "pads": r.pads_frame().to_dict(orient="records")}))
     else:
         mean = "T_mean" if r.thermal_model == "thd" else "T_eff"
         print(f"thermal model {r.thermal_model}: {r.status} after {r.iterations} iterations")
@@ -272,6 +273,9 @@ def _cmd_thermal(args) -> int:
                   f"side flow {r.side_flow_m3_s[k]:.5g} m3/s, supply flow "
                   f"{r.supply_flow_m3_s[k]:.5g} m3/s")
         print(table_text(df))
+        pads = r.pads_frame()
+        if len(pads):  # tilting pads: every pad's tilt, peak pressure, film, temperatures
+            print(table_text(pads))
     return 0 if r.status in CONVERGED else 1
 
 

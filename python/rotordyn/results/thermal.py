@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -11,6 +11,12 @@ import numpy as np
 WALL_COLUMNS = ("journal_temperature_c", "max_wall_temperature_c", "heat_to_journal_w",
                 "heat_to_bush_w")
 """The THD films' wall outputs of :meth:`SystemThermalResult.to_frame` (NaN for others)."""
+
+
+PAD_FRAME_THERMAL = ("effective_temperature_c", "max_temperature_c", "inlet_temperature_c",
+                     "temperature_rise_k", "viscosity_pa_s", "power_loss_w", "supply_flow_m3_s",
+                     "max_wall_temperature_c")
+"""The thermal columns of :meth:`SystemThermalResult.pads_frame` (its pads' ``pad_*``)."""
 
 
 @dataclass(frozen=True)
@@ -71,6 +77,13 @@ class SystemThermalResult:
     # pad's row); NaN for an untilted film and where the equilibrium failed; None (no columns)
     # when no film tilts
     tilt: dict | None = None
+    # per thermal tilting-pad bearing (index into the model's bearings): every pad's state at
+    # the thermal equilibrium, tuples in pad order — the isothermal equilibrium's pad_pivot_deg,
+    # pad_tilt_rad, pad_p_max_pa, pad_h_min_m, pad_unloaded (EquilibriumResult.pads) and the
+    # pad's pad_effective_temperature_c (THD: its mean), pad_max_temperature_c,
+    # pad_inlet_temperature_c, pad_temperature_rise_k, pad_viscosity_pa_s, pad_power_loss_w,
+    # pad_supply_flow_m3_s, pad_max_wall_temperature_c (THD); {} where it failed
+    pads: dict = field(default_factory=dict)
 
     def wall(self, name: str) -> np.ndarray:
         """One of the THD wall outputs (or the minimum film's) per film (NaN where there is
@@ -82,6 +95,27 @@ class SystemThermalResult:
         t = ", ".join(f"{n}: {x:.2f} degC" for n, x in zip(self.bearing_names,
                                                            self.effective_temperature_c))
         return f"SystemThermalResult(speed_hz={self.speed_hz:g}, T_eff=[{t}], status={self.status!r})"
+
+    def pads_frame(self):
+        """One row per pad of every thermal tilting-pad bearing: ``bearing``, ``pad`` (0-based,
+        pivot order), ``pivot_deg``, ``tilt_rad``, ``p_max_pa``, ``h_min_m``, ``unloaded``
+        (as :meth:`EquilibriumResult.pads_frame`) and the pad's ``effective_temperature_c``
+        (THD: mean), ``max_temperature_c``, ``inlet_temperature_c``, ``temperature_rise_k``,
+        ``viscosity_pa_s``, ``power_loss_w``, ``supply_flow_m3_s``,
+        ``max_wall_temperature_c`` (THD; NaN otherwise). Empty without tilting pads or
+        without a converged thermal equilibrium."""
+        import pandas as pd
+
+        cols = ["bearing", "pad", "pivot_deg", "tilt_rad", "p_max_pa", "h_min_m", "unloaded",
+                *PAD_FRAME_THERMAL]
+        names = self.system.bearings
+        rows = []
+        for bi, d in self.pads.items():
+            for k in range(len(d["pad_tilt_rad"])):
+                rows.append([names[bi].name, k, d["pad_pivot_deg"][k], d["pad_tilt_rad"][k],
+                             d["pad_p_max_pa"][k], d["pad_h_min_m"][k], d["pad_unloaded"][k],
+                             *(d["pad_" + c][k] for c in PAD_FRAME_THERMAL)])
+        return pd.DataFrame(rows, columns=cols)
 
     def to_frame(self):
         """One row per thermal bearing: inputs, temperatures, viscosity, power, flows,
