@@ -41,7 +41,8 @@ def test_a_failed_ladder_names_every_start(train):
 
 def test_cli_floquet_tol(capsys):
     """--floquet-tol reaches the refinement: 0 is the single product (no error estimate),
-    the default refines (floquet_error in the stats); with shooting it is refused."""
+    the default refines (floquet_error in the stats); with shooting it needs --floquet samples
+    (since 2026-12-06 shooting takes it) and a value > 0."""
     import json
 
     from rotordyn.cli import main
@@ -53,4 +54,8 @@ def test_cli_floquet_tol(capsys):
     assert main(base + ["--method", "harmonic_balance"]) == 0
     assert json.loads(capsys.readouterr().out)["stats"]["floquet_error"] > 0
     assert main(["periodic-orbit", str(MODEL), "--floquet-tol", "1e-3"]) == 2
-    assert "--floquet-tol: applies only to --method harmonic_balance" in capsys.readouterr().err
+    assert "--floquet-tol: applies only to --floquet samples" in capsys.readouterr().err
+    assert main(["periodic-orbit", str(MODEL), "--floquet", "samples", "--floquet-tol",
+                 "0"]) == 2
+    assert "--floquet-tol: with --method shooting expected a value in (0, 0.5]" in \
+        capsys.readouterr().err

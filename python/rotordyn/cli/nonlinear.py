@@ -261,6 +261,9 @@ def _cmd_periodic_orbit(args) -> int:
             raise InputError("--floquet-tol: applies only to --floquet samples")
         hb["floquet_tol"] = v.in_range("--floquet-tol", args.floquet_tol, 0.0, 0.5,
                                        lo_open=False)
+        if hb["method"] != "harmonic_balance" and hb["floquet_tol"] == 0:
+            raise InputError("--floquet-tol: with --method shooting expected a value in "
+                             "(0, 0.5] (0, the single product, is harmonic balance's), got 0")
     s = models.load(args.model)
     ub = _unbalances(args.unbalance)
     start = _settled_start(args, s, ub)
