@@ -18,7 +18,8 @@ Transport Phenomena, §10.4): the cross-film parabola's mean exceeds the walls b
 power is μU²/c · πDL. The THD film (concentric, full film, the walls' film-side coefficient
 from the film's own conduction, both walls fixed at 50 °C, a viscosity that does not vary)
 carries its heat to the walls; with carry-over λ the oil's through-flow leaves (1 − λ) of it
-unheated, so the mean rise tends to μU²/(12k) as λ → 1 (within (1 − λ) · 0.9, measured).
+unheated, so the mean rise tends to μU²/(12k) as λ → 1 (measured −0.853 (1 − λ) at 36, 72, 144
+cells around; before the inlet source the walls took 0.971, 0.985, 0.992 of the power there).
 """
 
 import math
@@ -87,4 +88,6 @@ def test_cengel_problem_6_54_couette_film_with_viscous_heating():
         assert heat_out(r, lam, tw, rc) == pytest.approx(r.power_loss_w, rel=1e-9)
         err[lam] = (r.mean_temperature_c - tw) / rise - 1.0
         assert abs(err[lam]) < (1.0 - lam), (lam, err[lam])
-    assert abs(err[0.999]) < abs(err[0.99])   # → the closed form as λ → 1
+    # → the closed form as λ → 1, at first order in 1 − λ (observed err ≈ −0.85 (1 − λ) on
+    # every grid: ratio 0.1004 for a tenfold smaller 1 − λ)
+    assert 0.09 < err[0.999] / err[0.99] < 0.11, err
