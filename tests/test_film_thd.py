@@ -10,7 +10,8 @@ Checks:
   flows carry out of the film (side leakage and the flow back to the inlet, minus the inlet
   flow, at their temperatures; recomputed here from the returned face flows and temperature
   field) equals the dissipation of the film's cells to round-off (1e-9), and with wall heat
-  transfer the walls' share closes it the same way;
+  transfer the walls' share closes it the same way; the whole bearing (side leakage, the flow
+  not carried over, every cell's walls) takes the reported power loss to 1e-9;
 * the dissipation (μU²θ/h + h³|∇p|²/12μ) against the friction power torque·ω: on a full
   film they are equal to round-off (the discrete identity pᵀA p = pᵀb);
 * grid convergence of T_max: the observed order of the first-order upwind energy equation
@@ -79,6 +80,14 @@ def _balance(r, rho_c, ts):
     return heat, diss, mass
 
 
+def _heat_out(r, rho_c, ts, lam):
+    """The whole bearing's heat out relative to T_s (W): side leakage, the part of the flow
+    reaching the inlet that is not carried over, the walls (each cell's, the inlet's at T_in)."""
+    return (rho_c * (r.side_flow_m3_s * (r.side_temperature_c - ts) + (1.0 - lam)
+                     * r.recirculation_flow_m3_s * (r.recirculation_temperature_c - ts))
+            + r.heat_to_journal_w + r.heat_to_bush_w)
+
+
 def test_energy_balance_adiabatic_and_with_walls():
     b = _bearing(cavitation="jfo", grooves=[Groove(center_deg=90.0, width_deg=20.0)])
     rc = VG32.density_kg_m3 * VG32.specific_heat_j_per_kg_k
@@ -90,13 +99,21 @@ def test_energy_balance_adiabatic_and_with_walls():
     assert out == pytest.approx(diss, rel=1e-9)
     assert r.heat_to_journal_w == 0.0 and r.heat_to_bush_w == 0.0
     assert r.inlet_temperature_c > TS       # hot oil carried over
+    # the whole bearing against its reported power (every cell's dissipation, the groove's
+    # included: "Heat of the inlet cells"; the ungrooved full film: tests/test_thd_inlet_heat.py)
+    assert _heat_out(r, rc, TS, 0.5) == pytest.approx(r.power_loss_w, rel=1e-9)
+    assert r.power_loss_w > diss            # the groove's share is in it
     # with heat transfer to journal and bush: flows + walls = dissipation
     w = b.thermal_equilibrium(load_n=LOAD, speed_hz=SPEED, oil=VG32, supply_temperature_c=TS,
                               model="thd", carry_over=0.5, journal_htc_w_m2k=2000.0,
                               bush_htc_w_m2k=1000.0)
     out_w, diss_w, _ = _balance(w, rc, TS)
     assert w.heat_to_journal_w > 0.0 and w.heat_to_bush_w > 0.0
-    assert out_w + w.heat_to_journal_w + w.heat_to_bush_w == pytest.approx(diss_w, rel=1e-9)
+    fw = w.inlet_mask == 0                  # the film's cells: their walls close their balance
+    A, T = w.flows["area_m2"], w.temperature_c
+    walls_film = (A * (2000.0 * (T - TS) + 1000.0 * (T - TS)))[fw].sum()
+    assert out_w + walls_film == pytest.approx(diss_w, rel=1e-9)
+    assert _heat_out(w, rc, TS, 0.5) == pytest.approx(w.power_loss_w, rel=1e-9)
     assert w.max_temperature_c < r.max_temperature_c
 
 

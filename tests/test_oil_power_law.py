@@ -72,9 +72,11 @@ def test_thd_film_uses_the_power_law_at_every_node():
     """The THD film's viscosity field against the closed form a T^b at each node's
     temperature (a, b computed here): within 1e-8 relative — the field is the law at the
     temperatures of the iteration's last step, which the reported field differs from by the
-    iteration's tolerance (|ΔT| ~ 1e-8 K, |b| ΔT/T ~ 1e-9; measured 9.8e-10)."""
+    iteration's tolerance: tol_k = 1e-8 K here, |b| ΔT/T ≤ 5e-10. (At the default 1e-6 K the
+    bound is 4e-8: the last step's |ΔT| landed at ~1e-8 K before the inlet cells heated the
+    supply, 9.8e-10 measured, and at ~1e-6 K after, 2.4e-8 measured, 2026-12-05.)"""
     r = _bearing().thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=_power(),
-                                       supply_temperature_c=45.0, model="thd")
+                                       supply_temperature_c=45.0, model="thd", tol_k=1e-8)
     assert r.status == "ok"
     T, mu = np.asarray(r.temperature_c), np.asarray(r.viscosity_pa_s)
     assert T.shape == mu.shape and T.max() > 50.0  # a real rise above the 45 °C supply

@@ -362,6 +362,15 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
             if (j2) tc += makeup[n] * X2[n];
           }
     }
+    double so0 = 0.0, so1 = 0.0, so2 = 0.0;  // Σ side_out T, affine (ThdFieldParts::so0)
+    for (int n = 0; n < nn; ++n) {
+      so0 += side_out[n] * X0[n];
+      so1 += side_out[n] * X1[n];
+      if (j2) so2 += side_out[n] * X2[n];
+    }
+    parts.so0 = so0;
+    parts.so1 = so1;
+    parts.so2 = so2;
     parts.inlet = std::move(D);
     parts.side_out = std::move(side_out);
     parts.makeup = std::move(makeup);
@@ -398,8 +407,34 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
     parts.ta = wa * parts.ta + wb * other.ta;
     parts.tb = wa * parts.tb + wb * other.tb;
     parts.tc = wa * parts.tc + wb * other.tc;
+    parts.so0 = wa * parts.so0 + wb * other.so0;
+    parts.so1 = wa * parts.so1 + wb * other.so1;
+    parts.so2 = wa * parts.so2 + wb * other.so2;
     parts.blend_column = jb;
     parts.blend_weight = wb;
+  }
+  if (!pad) {
+    // the inlet cells are film (an ungrooved film's inlet column at its peak; a groove's
+    // nodes on the film's grid): their dissipation and their wall exchange at T_in heat the
+    // oil passing them, a source in the inlet mixing (thd_energy), so that every watt of the
+    // power loss (Σ Φ over all cells = friction torque · ω) goes into the oil or the walls
+    const double* A = fl.area_m2.data();
+    const double* phi = fl.dissipation_w.data();
+    for (int n = 0; n < nn; ++n) {
+      const int j = n / K1;
+      const double m = j == jb ? wb : (parts.inlet[static_cast<std::size_t>(n)] ? 1.0 - wb : 0.0);
+      if (!(m > 0.0)) continue;
+      if (wm.legacy) {
+        parts.si0 += m * (phi[n] + A[n] * (hJ * TJ + hB * TB));
+        parts.si1 -= m * A[n] * (hJ + hB);
+      } else {
+        const CellWall& w = parts.walls[static_cast<std::size_t>(n)];
+        parts.si0 +=
+            m * (phi[n] + A[n] * (w.nJ + w.nB + (wm.balance ? 0.0 : (w.lJ + w.lB) * wm.TJ)));
+        parts.si1 -= m * A[n] * (w.kJ + w.kB);
+        if (wm.balance) parts.si2 += m * A[n] * (w.lJ + w.lB);
+      }
+    }
   }
   if (wm.balance) journal_sums(parts, N, K1);
   parts.flows.makeup_m3_s = Eigen::Map<const RowMatrixXd>(parts.makeup.data(), N, K1);
@@ -416,22 +451,24 @@ ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
     throw ConvergenceError("THD energy equation: the film draws no fresh oil (flow from the "
                            "inlet " + num(Q) + " m^3/s, carried over " + num(lam * Qr) +
                            " m^3/s)");
-  double Tin = Ts;
+  // the inlet cells' heat (si0 + T_in si1 + T_J si2 W, thd_field) joins the mixing
+  const double rc = oil.density_kg_m3 * oil.specific_heat_j_per_kg_k;
+  const double s0 = parts.si0 / rc, s1 = parts.si1 / rc, s2 = parts.si2 / rc;
   if (opt.journal_balance) {
     // the inlet mixing and the journal's heat balance together (both affine in T_in, T_J):
-    //   (Q_f + λ Q_r − λ tb) T_in − λ tc T_J = Q_f T_s + λ ta,   jb T_in + jc T_J = −ja
+    //   (Q_f + λ Q_r − λ tb − s1) T_in − (λ tc + s2) T_J = Q_f T_s + λ ta + s0,
+    //   jb T_in + jc T_J = −ja
     Eigen::Matrix2d M;
-    M << Qf + lam * Qr - lam * parts.tb, -lam * parts.tc, parts.jb, parts.jc;
+    M << Qf + lam * Qr - lam * parts.tb - s1, -lam * parts.tc - s2, parts.jb, parts.jc;
     const Eigen::Vector2d x =
-        M.fullPivLu().solve(Eigen::Vector2d(Qf * Ts + lam * parts.ta, -parts.ja));
+        M.fullPivLu().solve(Eigen::Vector2d(Qf * Ts + lam * parts.ta + s0, -parts.ja));
     if (!x.allFinite())
       throw ConvergenceError("THD energy equation: the journal's heat balance is singular");
     return thd_state(std::move(parts), sol, opt, omega, x[0], Qf, x[1]);
   }
-  if (Qr > 0.0) {
-    const double a = parts.ta / Qr, b = parts.tb / Qr;
-    Tin = (Qf * Ts + lam * Qr * a) / (Qf + lam * Qr * (1.0 - b));
-  }
+  const double Tin = (Qf * Ts + lam * parts.ta + s0) / (Qf + lam * Qr - lam * parts.tb - s1);
+  if (!std::isfinite(Tin))
+    throw ConvergenceError("THD energy equation: non-finite inlet temperature");
   return thd_state(std::move(parts), sol, opt, omega, Tin, Qf);
 }
 
@@ -480,8 +517,9 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
     tmean += A[n] * T[n];
     P += phi[n];
     tmax = std::max(tmax, T[n]);
-    // the walls of the film's cells (an inlet handed over: the film's share of its columns)
-    const double wf = 1.0 - st.inlet_mask.data()[n];
+    // the walls of the film's cells; not a pad: every node's (an inlet cell's exchange at
+    // T_in, the inlet source's share, is in its blended T: exact, the walls being affine)
+    const double wf = parts.pad ? 1.0 - st.inlet_mask.data()[n] : 1.0;
     const CellWall& w = parts.walls[static_cast<std::size_t>(n)];
     if (legacy) {
       qj += wf * hJ * A[n] * (T[n] - TJ);
@@ -490,7 +528,7 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
       qj += wf * A[n] * (w.kJ * T[n] - w.lJ * tj - w.nJ);
       qb += wf * A[n] * (w.kB * T[n] - w.lB * tj - w.nB);
     }
-    if (wf > 0.0) {
+    if (wf > 0.0) {  // the wall surface of every cell the walls' heat counts
       const double tw = w.pT * T[n] + w.pJ * tj + w.p0;
       st.wall_temperature_c.data()[n] = tw;
       twmax = std::max(twmax, tw);
@@ -501,6 +539,8 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
   st.inlet_temperature_c = Tin;
   st.recirculation_temperature_c =
       Qr > 0.0 ? (ta + Tin * tb + (balance ? TJb * parts.tc : 0.0)) / Qr : Tin;
+  if (!parts.pad)  // the blend's own side heat (ThdFieldParts::so0), not blended T · side_out
+    ts = parts.so0 + Tin * parts.so1 + (balance ? TJb * parts.so2 : 0.0);
   st.side_temperature_c = qs > 0.0 ? ts / qs : Tin;
   st.power_loss_w = P;
   st.friction_power_w = sol.friction_torque_nm * omega;

@@ -67,8 +67,11 @@ void validate_walls(const ThdOptions& o, const OilModel& oil) {
 }
 
 namespace {
-// the share of node n that is film (not inlet): 1 − its inlet_mask weight (thd_state)
+// the share of node n whose journal heat the balance counts: a pad film's cells (not the
+// gap); every node of a film that is not a pad (its inlet cells' exchange at T_in, which the
+// blended X gives them, is the inlet source's share, thd_field)
 double film_share(const ThdFieldParts& p, int n, int K1) {
+  if (!p.pad) return 1.0;
   if (p.blend_column >= 0 && n / K1 == p.blend_column) return 1.0 - p.blend_weight;
   return p.inlet[static_cast<std::size_t>(n)] ? p.blend_weight : 1.0;
 }

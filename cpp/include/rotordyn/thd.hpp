@@ -80,6 +80,12 @@ struct ThdFieldParts {
   double ta = 0.0, tb = 0.0;     ///< Q_r T_r = ta + T_in tb (+ T_J tc); a pad: with the heat
                                  ///< its trailing-edge make-up picks up, Σ m (T − T_in)
   double tc = 0.0, ja = 0.0, jb = 0.0, jc = 0.0;
+  /// not a pad: the heat the inlet cells (an ungrooved film's inlet column, a groove's nodes;
+  /// their inlet_mask share) add to the oil passing them, their dissipation minus their wall
+  /// exchange at T_in, si0 + T_in si1 + T_J si2 (W; si2 with journal_balance), a source in
+  /// the inlet mixing (thd_energy); and the heat the side flows carry out, Σ side_out T =
+  /// so0 + T_in so1 + T_J so2 (W/(ρc)), blended per solve (exact for a handed-over inlet)
+  double si0 = 0.0, si1 = 0.0, si2 = 0.0, so0 = 0.0, so1 = 0.0, so2 = 0.0;
   std::vector<CellWall> walls;   ///< (n_nodes,) each cell's heat paths (thd_walls.hpp)
   bool pad = false;
   /// an ungrooved film's inlet handed over to a neighbour column (thd_field): that column
