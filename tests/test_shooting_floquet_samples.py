@@ -38,13 +38,16 @@ def orbits(compressor):
 
 
 def test_samples_give_the_flows_multipliers_on_a_forced_orbit(orbits):
-    """The compressor on plain bearings (Reynolds with cavitation), 50 Hz: the same orbit
-    (the Newton path does not depend on the route), every multiplier within 2e-6 of the
+    """The compressor on plain bearings (Reynolds with cavitation), 50 Hz: the same orbit to
+    the integration's accuracy (the Newton path is the same; the flow route reports the
+    orbit of its extra pass, which here the stall rule had already made the last Newton
+    flow), every multiplier within 2e-6 of the
     error-controlled flow's (measured 6.4e-7; |mu_c| 0.1913777 against 0.1913771) and within
     the refinement's own estimate plus that; the estimate met floquet_tol."""
     a, b = orbits["flow"], orbits["samples"]
     assert a.ok and b.ok, (a.message, b.message)
-    assert np.array_equal(a.r, b.r)
+    L = a.length_scale_m
+    assert np.abs(a.r - b.r).max() < 10 * 1e-7 * L     # 10 tol of the residual scale
     d = np.abs(a.multipliers[:, None] - b.multipliers[None, :]).min(axis=1)
     assert d.max() < 2e-6
     assert abs(abs(a.critical_multiplier) - abs(b.critical_multiplier)) <= \
@@ -62,11 +65,20 @@ def test_samples_give_the_flows_multipliers_on_a_forced_orbit(orbits):
 
 def test_none_reports_the_orbit_without_a_verdict(orbits):
     a, c = orbits["flow"], orbits["none"]
-    assert c.ok and np.array_equal(a.r, c.r)
+    assert c.ok and np.abs(a.r - c.r).max() < 10 * 1e-7 * a.length_scale_m
     assert c.multipliers.size == 0 and c.monodromy.size == 0
     assert not c.stability_resolved and "stability unresolved" in repr(c)
     assert c.critical_multiplier is None
     assert not c.to_frame().stability_resolved.any()
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ax, _ = c.plot()   # no verdict: neither the stable blue nor the unstable red
+    assert ax.lines[1].get_color() == "tab:gray"
+    assert "unresolved" in ax.get_legend().get_texts()[1].get_text()
+    plt.close("all")
     assert orbits["samples"].to_frame().stability_resolved.all()
 
 

@@ -1,15 +1,16 @@
 """The THD film's energy balance against its reported power loss (issue 20; docs/film-physics.md
-"Heat of the inlet cells"): every watt of ``power_loss_w`` (Σ Φ over every cell, the friction
-torque · ω on a full film) goes into the oil or the walls. The inlet cells (an ungrooved film's
-inlet column at its peak, a groove's nodes) hold the inlet temperature; their dissipation and
-their wall exchange at T_in heat the oil passing them, a source in the inlet mixing.
+"Heat of the inlet cells"): every watt of ``power_loss_w`` (Σ Φ over the film's cells; the
+friction torque · ω on an ungrooved full film) goes into the oil or the walls. An ungrooved
+film's inlet column (at its peak) holds the inlet temperature; its dissipation and its wall
+exchange at T_in heat the oil passing it, a source in the inlet mixing. A supply groove's
+nodes are not film (deep, their shear small): in neither the power loss nor the balance.
 
 Balance, relative to the supply temperature T_s, from the reported numbers: the side leakage
 ρc Q_s (T_side − T_s), the flow reaching the inlet that is not carried over
 ρc (1 − λ) Q_r (T_r − T_s), and the heat to journal and bush. It holds to round-off (1e-9) on
 mass-conserving films (full film, Elrod–Adams); before the inlet source the ungrooved full film
 lost its inlet column's share (0.977, 0.989 at 36 × 8, 72 × 16) and the grooved Elrod–Adams
-film its groove's (0.935 at 72 × 16).
+film's power held its groove's shear (0.935 at 72 × 16).
 
 Closed form: Çengel & Ghajar, Heat and Mass Transfer, 5th ed., Problem 6-54 — a 6 cm shaft at
 3000 rpm in a 20 cm long bearing, uniform clearance 0.2 mm, walls at 50 °C, μ = 0.05 Pa·s,

@@ -300,6 +300,8 @@ void validate(const SystemSolver& solver, const PeriodicInput& in, const Shootin
   require(opt.floquet_tol >= 0 && std::isfinite(opt.floquet_tol),
           "floquet_tol: expected a finite value >= 0");
   require(opt.floquet_max_steps >= 0, "floquet_max_steps: expected a value >= 0");
+  require(opt.floquet != ShootingFloquet::samples || opt.floquet_tol > 0,
+          "floquet_tol: expected a value > 0 with floquet = samples");
   require(opt.sensitivity_rtol >= 0 && opt.sensitivity_rtol < 1,
           "sensitivity_rtol: expected a value in [0, 1)");
   require(opt.length_scale >= 0 && std::isfinite(opt.length_scale),
@@ -406,9 +408,11 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
   bool converged = false;
   // The Newton iterations run with the sensitivities outside the error test (cheap: the steps
   // are the orbit's), and with opt.broyden only when the matrix needs refreshing: in between,
-  // flows without sensitivities and Broyden's rank-one secant update of Φ − I. The converged
-  // orbit is always integrated once more with the sensitivities in the error test, so the
-  // monodromy and the multipliers reported have CVODES's error control.
+  // flows without sensitivities and Broyden's rank-one secant update of Φ − I. With
+  // ShootingFloquet::flow the converged orbit is integrated once more with the sensitivities
+  // in the error test, so the monodromy and the multipliers reported have CVODES's error
+  // control; with samples or none the converged flow is the last (one with sensitivities,
+  // whose Φ gives the Newton correction below) and the monodromy comes from elsewhere.
   bool errcon = opt.sensitivity_error_control;
   bool fresh = true;        // the next flow integrates the sensitivities (a new matrix)
   bool refreshed = false;   // that flow repeats the last point (no stall test against it)
@@ -442,21 +446,26 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
       out.message = "non-finite state after one period";
       break;
     }
-    // Without the flow's final pass (floquet samples or none) a flow under tol is the end;
-    // its Newton matrix is this flow's sensitivities (outside the error test) or the secant.
+    // Without the flow's final pass (floquet samples or none) a flow under tol with
+    // sensitivities is the end (their Φ, outside the error test, gives the Newton correction);
+    // one without (Broyden's secant, stale by a step and, for a cycle, by a period) is
+    // repeated once with them at the same start.
     const bool final_pass = opt.floquet == ShootingFloquet::flow;
-    if (res < opt.tol && (errcon || (!final_pass && (sens || Jx.size() > 0)))) {
+    if (res < opt.tol && !final_pass && !sens && !errcon) {
+      fresh = true;
+      refreshed = true;
+      continue;
+    }
+    if (res < opt.tol && (errcon || !final_pass)) {
       converged = true;
-      // The Newton correction the error-controlled monodromy gives at the converged point
-      // (uncapped, scaled units): an estimate of the distance to the true orbit. The residual
-      // test alone allows up to tol / |1 − μ| there, which near a Hopf point (the radial
-      // multiplier → 1) can exceed the orbit itself.
+      // The Newton correction the monodromy gives at the converged point (uncapped, scaled
+      // units; error-controlled on the flow route): an estimate of the distance to the true
+      // orbit. The residual test alone allows up to tol / |1 − μ| there, which near a Hopf
+      // point (the radial multiplier → 1) can exceed the orbit itself.
       Eigen::MatrixXd J = Eigen::MatrixXd::Zero(K, K);
       Eigen::VectorXd b = Eigen::VectorXd::Zero(K);
-      J.topLeftCorner(N, N) = sens ? Eigen::MatrixXd(D.cwiseInverse().asDiagonal() * run.Phi *
-                                                         D.asDiagonal() -
-                                                     Eigen::MatrixXd::Identity(N, N))
-                                   : Jx;
+      J.topLeftCorner(N, N) = D.cwiseInverse().asDiagonal() * run.Phi * D.asDiagonal() -
+                              Eigen::MatrixXd::Identity(N, N);
       b.head(N) = -R;
       if (autonomous) {
         const Eigen::VectorXd f0 = vector_field(F, in.t0, x).cwiseQuotient(D);

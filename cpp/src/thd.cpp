@@ -413,11 +413,12 @@ ThdFieldParts thd_field(const ReynoldsSolver& solver, const FilmSolution& sol,
     parts.blend_column = jb;
     parts.blend_weight = wb;
   }
-  if (!pad) {
-    // the inlet cells are film (an ungrooved film's inlet column at its peak; a groove's
-    // nodes on the film's grid): their dissipation and their wall exchange at T_in heat the
-    // oil passing them, a source in the inlet mixing (thd_energy), so that every watt of the
-    // power loss (Σ Φ over all cells = friction torque · ω) goes into the oil or the walls
+  parts.grooved = any && !pad;
+  if (!pad && !any) {
+    // an ungrooved film's inlet column (at its peak) is film: its dissipation and its wall
+    // exchange at T_in heat the oil passing it, a source in the inlet mixing (thd_energy),
+    // so that every watt of the power loss (Σ Φ over all cells) goes into the oil or the
+    // walls. A groove's nodes are not film (ThdFieldParts::grooved): no source
     const double* A = fl.area_m2.data();
     const double* phi = fl.dissipation_w.data();
     for (int n = 0; n < nn; ++n) {
@@ -515,11 +516,11 @@ ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const Thd
     if (parts.pad && D[n]) continue;
     area += A[n];
     tmean += A[n] * T[n];
-    P += phi[n];
+    if (!(parts.grooved && D[n])) P += phi[n];  // a groove's shear is not the film's
     tmax = std::max(tmax, T[n]);
     // the walls of the film's cells; not a pad: every node's (an inlet cell's exchange at
     // T_in, the inlet source's share, is in its blended T: exact, the walls being affine)
-    const double wf = parts.pad ? 1.0 - st.inlet_mask.data()[n] : 1.0;
+    const double wf = (parts.pad || parts.grooved) ? 1.0 - st.inlet_mask.data()[n] : 1.0;
     const CellWall& w = parts.walls[static_cast<std::size_t>(n)];
     if (legacy) {
       qj += wf * hJ * A[n] * (T[n] - TJ);

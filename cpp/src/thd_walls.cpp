@@ -68,10 +68,11 @@ void validate_walls(const ThdOptions& o, const OilModel& oil) {
 
 namespace {
 // the share of node n whose journal heat the balance counts: a pad film's cells (not the
-// gap); every node of a film that is not a pad (its inlet cells' exchange at T_in, which the
-// blended X gives them, is the inlet source's share, thd_field)
+// gap), a grooved film's (not the groove); every node of an ungrooved plain film (its inlet
+// cells' exchange at T_in, which the blended X gives them, is the inlet source's share,
+// thd_field)
 double film_share(const ThdFieldParts& p, int n, int K1) {
-  if (!p.pad) return 1.0;
+  if (!p.pad && !p.grooved) return 1.0;
   if (p.blend_column >= 0 && n / K1 == p.blend_column) return 1.0 - p.blend_weight;
   return p.inlet[static_cast<std::size_t>(n)] ? p.blend_weight : 1.0;
 }

@@ -78,7 +78,7 @@ Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, doub
   std::vector<char> counted(static_cast<std::size_t>(ke), 0);
   for (Eigen::Index j = 0; j < ke; ++j) {
     p.whirl[static_cast<std::size_t>(j)] = static_cast<int>(mr.whirl[static_cast<std::size_t>(j)]);
-    if (!in.pads.empty()) {  // rotordyn.stability's "pad" kind: the pads' kinetic share
+    if (!in.pads.empty()) {  // the "pad" kind: the pads' kinetic share
       const Eigen::VectorXcd phi = mr.modes.col(j);
       const double kin = (phi.adjoint() * M * phi).real()(0, 0);
       double kp = 0.0;
@@ -99,7 +99,7 @@ Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, doub
     if (best < 0 || mr.eigenvalues[j].real() > mr.eigenvalues[best].real()) best = j;
   }
   if (best < 0) throw ValueFailure("attempt to get argmax of an empty sequence");
-  p.stable = true;  // the one verdict rule (rotordyn.results.modes.point_stable)
+  p.stable = true;  // the one verdict rule (the round-off band, modal.hpp)
   for (Eigen::Index j = 0; j < ke; ++j)
     if (counted[static_cast<std::size_t>(j)] && settled_real(mr.eigenvalues[j]) > 0)
       p.stable = false;

@@ -80,7 +80,7 @@ struct ThdFieldParts {
   double ta = 0.0, tb = 0.0;     ///< Q_r T_r = ta + T_in tb (+ T_J tc); a pad: with the heat
                                  ///< its trailing-edge make-up picks up, Σ m (T − T_in)
   double tc = 0.0, ja = 0.0, jb = 0.0, jc = 0.0;
-  /// not a pad: the heat the inlet cells (an ungrooved film's inlet column, a groove's nodes;
+  /// an ungrooved plain film: the heat its inlet cells (the inlet column at the film's peak,
   /// their inlet_mask share) add to the oil passing them, their dissipation minus their wall
   /// exchange at T_in, si0 + T_in si1 + T_J si2 (W; si2 with journal_balance), a source in
   /// the inlet mixing (thd_energy); and the heat the side flows carry out, Σ side_out T =
@@ -88,6 +88,11 @@ struct ThdFieldParts {
   double si0 = 0.0, si1 = 0.0, si2 = 0.0, so0 = 0.0, so1 = 0.0, so2 = 0.0;
   std::vector<CellWall> walls;   ///< (n_nodes,) each cell's heat paths (thd_walls.hpp)
   bool pad = false;
+  /// a plain film with supply grooves: the groove nodes (`inlet`) are not film — a supply
+  /// groove is deep, its shear small; the grid has no groove depth, so the film's thickness
+  /// would over-state it — so, as a pad's gap, their dissipation is in neither the power
+  /// loss nor the heat balance, and their walls exchange nothing
+  bool grooved = false;
   /// an ungrooved film's inlet handed over to a neighbour column (thd_field): that column
   /// (-1: none) and its weight w in (0, 1/2]; the parts are the blend (1 − w) · inlet at
   /// the `inlet` column + w · inlet at this one

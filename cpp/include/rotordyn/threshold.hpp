@@ -37,7 +37,7 @@ struct ThresholdLineInput {
 
 struct ThresholdLineResult {
   Eigen::VectorXd y, freq;      ///< (n_pts,) max Re λ (1/s) and its frequency (Hz); NaN: failed
-  /// (n_pts,) the verdict (rotordyn.results.modes.point_stable over the counted roots):
+  /// (n_pts,) the verdict (the round-off band of modal.hpp over the counted roots):
   /// 1 stable, 0 unstable, -1 failed
   std::vector<int> stable;
   std::vector<int> bracket;     ///< per crossing: i of the bracket [x_i, x_{i+1}]

@@ -162,8 +162,12 @@ class PeriodicOrbitResult(Display):
             if self.journal_x_m.shape[1]:
                 c = self.clearance_m[bearing]
                 ax.plot(np.cos(th), np.sin(th), "k-", lw=0.8)
+                # no verdict (floquet "none", an unresolved estimate): neither blue nor red
+                col, lab = (("tab:blue", "stable orbit") if self.stable else
+                            ("tab:red", "unstable orbit")) if self.stability_resolved else \
+                    ("tab:gray", "orbit (stability unresolved)")
                 ax.plot(self.journal_x_m[:, bearing] / c, self.journal_y_m[:, bearing] / c,
-                        color="tab:blue" if self.stable else "tab:red", lw=1.0)
+                        color=col, lw=1.0)
                 ax.set_aspect("equal")
                 ax.set_xlabel("journal x / c (–), horizontal")
                 ax.set_ylabel("journal y / c (–), vertical up")
@@ -171,8 +175,7 @@ class PeriodicOrbitResult(Display):
                              f"{self.period_s * 1e3:.4g} ms")
                 ax.legend(handles=[
                     Line2D([], [], color="k", lw=0.8, label="clearance circle"),
-                    Line2D([], [], color="tab:blue" if self.stable else "tab:red",
-                           label="stable orbit" if self.stable else "unstable orbit")],
+                    Line2D([], [], color=col, label=lab)],
                     loc="lower left", fontsize=6)
             axm.plot(np.cos(th), np.sin(th), "k-", lw=0.8)
             mu = np.asarray(self.multipliers, dtype=complex)

@@ -603,7 +603,8 @@ class SweepSpec:
 
     def legacy_hash(self) -> str:
         """The hash before 2026-12-06, which also held the model reference as resolved
-        (a TOML's absolute path): a directory written then still resumes."""
+        (a TOML's absolute path): a directory written then still resumes where the model
+        resolves to the same path as then (a moved one does not match it)."""
         return self._hash({"model": self.model})
 
     def _hash(self, extra: dict) -> str:

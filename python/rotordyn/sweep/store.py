@@ -344,8 +344,6 @@ class Store:
             raise InputError(f"out: {str(out)!r} holds a different sweep "
                              f"({manifest.get('sweep_id')!r}: {', '.join(what)}); use "
                              "another directory or --no-resume")
-        if alias:
-            self._write_manifest()
         self.dropped += [(n, "an unfinished write of a driver that stopped")
                          for n in self._clean_tmp()]
         raw = _bookkeeping(self.dir, LOG, "out")
@@ -371,6 +369,8 @@ class Store:
                                             "stopped before logging it"))
                 self.dir.unlink(n)  # a symlink of a part's name goes too (not its target)
         self._rewrite_log(good)
+        if alias:  # every check passed: today's hash from now on
+            self._write_manifest()
 
     def _check_no_others(self) -> None:
         """Refuse a directory holding entries the dataset's readers would take for data:
