@@ -202,6 +202,11 @@ def main() -> int:
         sh = rd.periodic_orbit(smooth, 15.0, kind="forced", unbalances=[(2, 8e-3, 0.0)],
                                floquet=fq, n_out=41)
         assert sh.ok, sh.message
+    # the thermal pads' continuous fill near the degenerate band (an unloaded pad) and the
+    # thermal equilibrium's per-pad outputs
+    gth = rd.system_thermal_equilibrium(rd.System.from_toml(
+        models / "generator_tilting_pad.toml"), speed_hz=18.79)
+    assert gth.status == "ok" and len(gth.pads_frame()) == 10
     pads = rd.equilibrium(rd.System.from_toml(models / "compressor_tilting_pad.toml"), 40.0)
     assert pads.pads_frame().unloaded.sum() == 2
     print("sanitize_smoke: ok")
