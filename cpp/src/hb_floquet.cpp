@@ -101,6 +101,29 @@ void state_at(const Eigen::MatrixXd& Z, double w, double tau, Eigen::VectorXd& r
   }
 }
 
+// The films' linearisation at one state of the orbit (`where` names it in a failure); false
+// with out.why / out.contact set on a film failure or a non-finite K_H, D_H.
+bool linearize_at(SystemSolver& solver, const Eigen::VectorXd& r, const Eigen::VectorXd& v,
+                  double omega, const std::string& where, Linearization& lin,
+                  RefinedMonodromy& out) {
+  try {
+    lin = solver.linearize(r, v, omega);
+  } catch (const ContactError& ex) {
+    out.contact = true;
+    out.why = "a film closed " + where + ": " + ex.what();
+    return false;
+  } catch (const ConvergenceError& ex) {
+    out.why = "film solve " + where + ": " + ex.what();
+    return false;
+  }
+  ++out.linearizations;
+  if (!lin.KH.allFinite() || !lin.DH.allFinite()) {
+    out.why = "non-finite film linearisation " + where;
+    return false;
+  }
+  return true;
+}
+
 // The nodes doubled: the old nodes at even indices, the films linearised at the midpoints
 // (in the order of τ, as the Newton's samples: the cavitation-set continuation sees
 // consecutive nearby states). false with out.why / out.contact on a film failure.
@@ -114,23 +137,10 @@ bool double_nodes(std::vector<Node>& nodes, const Frame& fr, Problem& P, const E
     const double tau = 2 * M_PI * (2 * i + 1) / (2.0 * G);
     state_at(Z, w, tau, r, v);
     Linearization lin;
-    try {
-      lin = P.solver->linearize(r, v, P.in->omega);
-    } catch (const ContactError& ex) {
-      out.contact = true;
-      out.why = std::string("a film closed between the samples (τ = ") + std::to_string(tau) +
-                "): " + ex.what();
+    if (!linearize_at(*P.solver, r, v, P.in->omega,
+                      "between the samples (τ = " + std::to_string(tau) + ")", lin, out))
       return false;
-    } catch (const ConvergenceError& ex) {
-      out.why = std::string("film solve between the samples: ") + ex.what();
-      return false;
-    }
-    ++out.linearizations;
     ++P.linearizations;
-    if (!lin.KH.allFinite() || !lin.DH.allFinite()) {
-      out.why = "non-finite film linearisation between the samples";
-      return false;
-    }
     if (!node_of(fr, lin.KH, lin.DH, next[static_cast<std::size_t>(2 * i + 1)])) {
       out.why = "a film linearisation between the samples acts on other coordinates";
       return false;
@@ -260,24 +270,11 @@ RefinedMonodromy refined_monodromy_of_samples(SystemSolver& solver, const Period
   e.DH.resize(static_cast<std::size_t>(M));
   for (int j = 0; j < M; ++j) {
     Linearization lin;
-    try {
-      lin = solver.linearize(X.row(j).head(n).transpose(), X.row(j).tail(n).transpose(),
-                             in.omega);
-    } catch (const ContactError& ex) {
-      out.contact = true;
-      out.why = std::string("a film closed at an orbit sample: ") + ex.what();
+    if (!linearize_at(solver, X.row(j).head(n).transpose(), X.row(j).tail(n).transpose(),
+                      in.omega, "at orbit sample " + std::to_string(j), lin, out))
       return out;
-    } catch (const ConvergenceError& ex) {
-      out.why = std::string("film solve at an orbit sample: ") + ex.what();
-      return out;
-    }
-    if (!lin.KH.allFinite() || !lin.DH.allFinite()) {
-      out.why = "non-finite film linearisation at an orbit sample";
-      return out;
-    }
     e.KH[static_cast<std::size_t>(j)] = std::move(lin.KH);
     e.DH[static_cast<std::size_t>(j)] = std::move(lin.DH);
-    ++out.linearizations;
   }
   const Eigen::MatrixXd Z = project_samples(X.topLeftCorner(M, n), (M - 1) / 2);
   const long base = out.linearizations;

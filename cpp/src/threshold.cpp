@@ -76,24 +76,23 @@ Point max_real(SystemSolver& s, const ThresholdLineInput& in, double omega, doub
   p.pad_share.assign(static_cast<std::size_t>(ke), 0.0);
   p.whirl.resize(static_cast<std::size_t>(ke));
   std::vector<char> counted(static_cast<std::size_t>(ke), 0);
+  // a mode's kinetic energy on the coordinates idx over its whole kinetic energy
+  auto kinetic_share = [&](Eigen::Index j, const std::vector<int>& idx) {
+    const Eigen::VectorXcd phi = mr.modes.col(j);
+    const double kin = (phi.adjoint() * M * phi).real()(0, 0);
+    double part = 0.0;
+    for (int i : idx)
+      for (int k : idx) part += (std::conj(phi[i]) * M(i, k) * phi[k]).real();
+    return kin > 0 ? part / kin : 0.0;
+  };
   for (Eigen::Index j = 0; j < ke; ++j) {
     p.whirl[static_cast<std::size_t>(j)] = static_cast<int>(mr.whirl[static_cast<std::size_t>(j)]);
-    if (!in.pads.empty()) {  // the "pad" kind: the pads' kinetic share
-      const Eigen::VectorXcd phi = mr.modes.col(j);
-      const double kin = (phi.adjoint() * M * phi).real()(0, 0);
-      double kp = 0.0;
-      for (int i : in.pads)
-        for (int k : in.pads) kp += (std::conj(phi[i]) * M(i, k) * phi[k]).real();
-      p.pad_share[static_cast<std::size_t>(j)] = kin > 0 ? kp / kin : 0.0;
-    }
+    if (!in.pads.empty())  // the "pad" kind: the pads' kinetic share
+      p.pad_share[static_cast<std::size_t>(j)] = kinetic_share(j, in.pads);
     if (!in.sleeve.empty()) {  // stability_batch's kind rule: the sleeve's kinetic share
-      const Eigen::VectorXcd phi = mr.modes.col(j);
-      const double kin = (phi.adjoint() * M * phi).real()(0, 0);
-      double ks = 0.0;
-      for (int i : in.sleeve)
-        for (int k : in.sleeve) ks += (std::conj(phi[i]) * M(i, k) * phi[k]).real();
-      p.share[static_cast<std::size_t>(j)] = kin > 0 ? ks / kin : 0.0;
-      if (in.exclude_sleeve && ks > 0.5 * kin) continue;  // a sleeve mode
+      const double ks = kinetic_share(j, in.sleeve);
+      p.share[static_cast<std::size_t>(j)] = ks;
+      if (in.exclude_sleeve && ks > 0.5) continue;  // a sleeve mode
     }
     counted[static_cast<std::size_t>(j)] = 1;
     if (best < 0 || mr.eigenvalues[j].real() > mr.eigenvalues[best].real()) best = j;

@@ -149,14 +149,23 @@ def floquet_stats(res) -> dict:
     """The refined samples route's entries (empty for the other routes): the error estimate
     | |μ_c| − |μ_c|_previous level |, whether it met floquet_tol, the verdict's resolution
     (converged and | |μ_c| − 1 | > the error), steps, levels and film linearisations."""
-    err = float(res.floquet_error)
     if res.floquet_levels < 1 or res.orbit.status != "ok":
         return {}
-    fq = res.orbit.floquet
+    return {**refined_entries(res.orbit.floquet, res),
+            "floquet_levels": int(res.floquet_levels),
+            "floquet_trivial_error": float(res.floquet_trivial_error),
+            "floquet_moduli": tuple(float(x) for x in res.floquet_moduli)}
+
+
+def refined_entries(fq, res) -> dict:
+    """The refined product's error estimate, whether it met floquet_tol, the verdict's
+    resolution (converged and | |μ_c| − 1 | > the error), steps and film linearisations, from
+    the Floquet classification ``fq`` and a core result ``res`` carrying floquet_error,
+    floquet_converged, floquet_steps and floquet_linearizations (harmonic balance's or
+    shooting's)."""
+    err = float(res.floquet_error)
     mc = float(fq.critical_modulus) if fq.critical >= 0 else 0.0
     return {"floquet_error": err, "floquet_converged": bool(res.floquet_converged),
             "floquet_resolved": bool(res.floquet_converged and abs(mc - 1.0) > err),
-            "floquet_steps": int(res.floquet_steps), "floquet_levels": int(res.floquet_levels),
-            "floquet_linearizations": int(res.floquet_linearizations),
-            "floquet_trivial_error": float(res.floquet_trivial_error),
-            "floquet_moduli": tuple(float(x) for x in res.floquet_moduli)}
+            "floquet_steps": int(res.floquet_steps),
+            "floquet_linearizations": int(res.floquet_linearizations)}

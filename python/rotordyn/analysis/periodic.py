@@ -373,13 +373,7 @@ def shooting_floquet_stats(res, floquet: str) -> dict:
     out = {"floquet_route": floquet}
     if floquet != "samples" or res.status != "ok":
         return out
-    fq = res.floquet
-    mc = float(fq.critical_modulus) if fq.critical >= 0 else 0.0
-    err = float(res.floquet_error)
-    return {**out, "floquet_error": err, "floquet_converged": bool(res.floquet_converged),
-            "floquet_resolved": bool(res.floquet_converged and abs(mc - 1.0) > err),
-            "floquet_steps": int(res.floquet_steps),
-            "floquet_linearizations": int(res.floquet_linearizations)}
+    return {**out, **hbal.refined_entries(res.floquet, res)}
 
 
 #: the start amplitudes (fractions of the clearance) tried in turn for a harmonic-balance
