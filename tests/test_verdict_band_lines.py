@@ -11,6 +11,7 @@ flips where the growing root leaves |Re λ| < 1e-9 |λ|). On the raw sign the co
 point's y = 0 made no bracket with its unstable neighbour (y0·y1 = 0): "no crossing".
 """
 
+import math
 import re
 from pathlib import Path
 
@@ -178,3 +179,37 @@ def test_boundary_map_over_a_conservative_region(tmp_path):
     lines = polylines(xs, ys, B)
     assert len(lines) == 1
     np.testing.assert_allclose(lines[0][:, 0], edge, rtol=1e-8)
+
+
+def test_api_threshold_brackets_by_the_verdict(tmp_path):
+    """``rd.threshold`` (the API's scan + Brent) on the same case: the conservative points'
+    max Re λ = 0 (or round-off) is the verdict "stable", so the scan brackets the onset with
+    its unstable neighbour and Brent's method finds it. On the raw sign the scan's y0·y1 = 0
+    made no bracket ("no_crossing") or called the stable side "above"."""
+    model = tmp_path / "m.toml"
+    model.write_text(_conservative_below_onset())
+    s = rd.System.from_toml(model)
+    t = rd.threshold(s, "speed_hz", bounds=(30.0, 70.0), n_scan=5)
+    assert t.status == "ok", t.message
+    assert abs(t.value - ONSET_HZ) <= 1e-6 * ONSET_HZ
+    assert t.stable_side == "below" and t.crossings == (t.value,)
+    sc = t.scan
+    below = sc[sc["speed_hz"] < ONSET_HZ - 1e-3]
+    # the case can fail the raw rule: the stable side's max Re λ is not below 0
+    assert len(below) and (below["max_real_1_per_s"] >= 0).all()
+    assert below["stable"].all() and (below["verdict_real_1_per_s"] < 0).all()
+    for x, st in zip(sc["speed_hz"], sc["stable"]):  # the scan's verdict is the API's
+        assert bool(st) == rd.stability(s, float(x)).stable
+    # either side of the root: the API's verdict
+    assert rd.stability(s, t.value - 1e-3).stable
+    assert not rd.stability(s, t.value + 1e-3).stable
+
+
+def test_api_threshold_over_a_conservative_range_says_stable(tmp_path):
+    model = tmp_path / "m.toml"
+    model.write_text(_conservative_below_onset())
+    s = rd.System.from_toml(model)
+    t = rd.threshold(s, "speed_hz", bounds=(10.0, 40.0), n_scan=4)
+    assert t.status == "no_crossing" and math.isnan(t.value)
+    assert "stable at all 4 scanned points" in t.message
+    assert (t.scan["max_real_1_per_s"] >= 0).all() and t.scan["stable"].all()

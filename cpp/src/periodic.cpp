@@ -620,7 +620,7 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
     out.reynolds_solves = solver.reynolds_solves() - solves0;
     out.floquet_linearizations = rm.linearizations;
     if (!rm.ok) {
-      out.status = "error";
+      out.status = rm.contact ? "rub" : "error";  // as harmonic balance's refined product
       out.message = "the orbit converged but its monodromy from the samples failed: " + rm.why +
                     " (floquet='flow' integrates it instead)";
       return out;

@@ -180,6 +180,7 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
 void ReynoldsSolver::Impl::solve_reynolds(LinearSystem& S) {
   base_rhs(S, S.rhs);
   band_resumed = 0;
+  deg_mu_last = 0.0;  // this solve's band, set on convergence (none from an earlier solve)
   // In a continuation (a transient run: consecutive right-hand sides at nearby states) the
   // last converged set is the better start; it leads to the same unique solution.
   if (continuation && S.last_set.size() == static_cast<std::size_t>(S.n_unk))

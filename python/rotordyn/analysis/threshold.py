@@ -15,6 +15,7 @@ from rotordyn.analysis.assembly import OPERATING, chamber_pressure, check_operat
 from rotordyn.analysis.thermal_dynamics import thermal_keywords
 from rotordyn.model.paths import set_field
 from rotordyn.model.system import System
+from rotordyn.results.modes import verdict_real
 from rotordyn.results.threshold import BoundaryResult, ThresholdResult
 
 
@@ -33,12 +34,14 @@ def _point(system, params, exclude_sleeve_modes, thermal=None):
     st = stability(system, params["speed_hz"], params["chamber_pressure_pa"],
                    params["config_ay_m"])
     if st.status not in ("ok", "contact") or len(st.eigenvalues) == 0:
-        return math.nan, math.nan, st.status
+        return math.nan, math.nan, st.status, math.nan
     lam = st.eigenvalues
     if exclude_sleeve_modes:  # the rotor's and the tilting pads' roots (the sweep's rule)
         lam = lam[st.kind != "sleeve"]
     i = int(np.argmax(lam.real))
-    return float(lam[i].real), float(lam[i].imag / (2 * np.pi)), st.status
+    # the function whose zero is the threshold: its sign is the point's verdict
+    # (point_stable's round-off band), never 0; away from the band it is max Re λ itself
+    return verdict_real(lam), float(lam[i].imag / (2 * np.pi)), st.status, float(lam[i].real)
 
 
 @limited_blas
@@ -50,7 +53,12 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
     """The value of ``vary`` (``"chamber_pressure_pa"``, ``"config_ay_m"``, ``"speed_hz"``, or
     a numeric model field path such as ``"bearings.*.clearance_m"``: the system re-assembled
     with the field at every scanned value, the operating point fixed) in ``bounds`` where the
-    least-damped eigenvalue's real part crosses zero.
+    point's stability verdict flips: where the least-damped eigenvalue's real part crosses
+    zero, a real part within the round-off band of 0 (an undamped rotor's, 1e-9 max(|λ|, 1):
+    :func:`rotordyn.results.modes.point_stable`) counting as stable — the verdict of
+    :func:`rotordyn.stability` and of the sweeps, not the raw sign. The function bracketed
+    and refined is :func:`rotordyn.results.modes.verdict_real` (max Re λ away from the band;
+    the scan's ``verdict_real_1_per_s`` beside the raw ``max_real_1_per_s`` and ``stable``).
 
     The bounds are scanned at ``n_scan`` points (equilibria continued from point to point),
     then refined where a parabola through three neighbouring scan values dips through zero
@@ -110,18 +118,20 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
             sx = set_field(system, vary, float(x), where="bounds") if field else system
             return _point(sx, p, exclude_sleeve_modes, thermal)
         except RotordynError as exc:  # a failed point is a NaN, the scan goes on
-            return math.nan, math.nan, f"error: {exc}"
+            return math.nan, math.nan, f"error: {exc}", math.nan
 
     xs = np.linspace(lo, hi, n_scan)
     rows = []
     for x in xs:
-        re, f, stt = g(x)
-        rows.append({vary: x, "max_real_1_per_s": re, "freq_hz": f, "status": stt})
+        y, f, stt, re = g(x)
+        rows.append({vary: x, "max_real_1_per_s": re, "verdict_real_1_per_s": y,
+                     "stable": bool(y < 0) if np.isfinite(y) else None, "freq_hz": f,
+                     "status": stt})
     # Refinement: where three neighbours share a sign but the parabola through them crosses
     # zero between them, evaluate at its extremum (two rounds).
     for _ in range(2):
-        pts = sorted((r[vary], r["max_real_1_per_s"]) for r in rows
-                     if np.isfinite(r["max_real_1_per_s"]))
+        pts = sorted((r[vary], r["verdict_real_1_per_s"]) for r in rows
+                     if np.isfinite(r["verdict_real_1_per_s"]))
         extra = []
         for (x0, y0), (x1, y1), (x2, y2) in zip(pts, pts[1:], pts[2:]):
             if not (np.sign(y0) == np.sign(y1) == np.sign(y2)):
@@ -138,12 +148,15 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
         if not extra:
             break
         for x in extra:
-            re, f, stt = g(x)
-            rows.append({vary: x, "max_real_1_per_s": re, "freq_hz": f, "status": stt})
+            y, f, stt, re = g(x)
+            rows.append({vary: x, "max_real_1_per_s": re, "verdict_real_1_per_s": y,
+                         "stable": bool(y < 0) if np.isfinite(y) else None, "freq_hz": f,
+                         "status": stt})
     scan = pd.DataFrame(rows).sort_values(vary, ignore_index=True)
-    ok = scan[np.isfinite(scan["max_real_1_per_s"])].reset_index(drop=True)
+    scan["stable"] = scan["stable"].astype("boolean")  # NA at a failed point
+    ok = scan[np.isfinite(scan["verdict_real_1_per_s"])].reset_index(drop=True)
     base = dict(vary=vary, fixed=fixed, bounds=(lo, hi), xtol=xtol, scan=scan)
-    re = ok["max_real_1_per_s"].to_numpy()
+    re = ok["verdict_real_1_per_s"].to_numpy()
     idx = np.where(np.sign(re[:-1]) * np.sign(re[1:]) < 0)[0]
     n_failed = len(scan) - len(ok)
     if len(idx) == 0:
@@ -156,12 +169,12 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
             what = f"{state} at all {len(re)} scanned points with an equilibrium"
             if n_failed:
                 what += f" ({n_failed} failed: " + ", ".join(
-                    sorted(set(scan.loc[~np.isfinite(scan["max_real_1_per_s"]),
+                    sorted(set(scan.loc[~np.isfinite(scan["verdict_real_1_per_s"]),
                                         "status"].str.split(":").str[0]))) + ")"
         return ThresholdResult(value=math.nan, whirl_frequency_hz=math.nan,
                                whirl_ratio=math.nan, stable_side="", evaluations=calls[0],
                                status="no_crossing" if len(re) else "no_equilibrium",
-                               message=f"max Re λ does not change sign in {vary} ∈ "
+                               message=f"the stability verdict does not change in {vary} ∈ "
                                        f"[{lo:g}, {hi:g}]: {what} (a band narrower than the "
                                        "scan spacing can hide between them)",
                                **base)
@@ -183,7 +196,7 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
                                    message=f"root finding failed in [{a:g}, {b:g}]: {exc}",
                                    **base)
     root, i = roots[0]
-    _, f, _ = g(root)
+    _, f, _, _ = g(root)
     speed = root if vary == "speed_hz" else fixed["speed_hz"]
     side = "above" if re[i + 1] < 0 else "below"
     msg = ""
