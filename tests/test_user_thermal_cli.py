@@ -37,8 +37,8 @@ def _thermal_json(model, *args):
     return p, (json.loads(p.stdout) if p.returncode in (0, 1) and p.stdout else None)
 
 
-def _api(model, oil=None, **kw):
-    s = rd.System.from_toml(model)
+def _api(path, oil=None, **kw):
+    s = rd.System.from_toml(path)
     return rd.system_thermal_equilibrium(s, speed_hz=150.0, oil=oil, **kw).to_frame()
 
 
@@ -80,3 +80,56 @@ def test_a_law_of_its_own_keeps_the_models_density_and_specific_heat():
 def test_bad_property_is_refused_naming_it(opt, val, field):
     p, _ = _thermal_json(LAMINAR, opt, val)
     assert p.returncode == 2 and field in p.stderr
+
+
+# An option of the other thermal model was silently ignored by the system call (the standalone
+# film refuses it: "an option of model='thd' only"): `system_thermal_equilibrium(...,
+# journal_htc_w_m2k=500)` or `wall_htc="film"` on the effective-temperature model (adiabatic)
+# gave the model's answer bit for bit, `rotordyn thermal --journal-htc-w-m2k 500` too; and
+# `effective_factor=` with the THD film. Now each is refused naming it.
+@pytest.mark.parametrize("kw,field", [({"journal_htc_w_m2k": 500.0}, "journal_htc_w_m2k"),
+                                      ({"bush_temperature_c": 60.0}, "bush_temperature_c"),
+                                      ({"wall_htc": "film"}, "wall_htc")])
+def test_thd_wall_options_refused_on_the_effective_model(kw, field):
+    s = rd.System.from_toml(TURB)
+    assert s.thermal.model == "effective"
+    with pytest.raises(rd.InputError, match=f"^{field}: an option of model='thd' only"):
+        rd.system_thermal_equilibrium(s, speed_hz=150.0, **kw)
+    with pytest.raises(rd.InputError, match=f"^thermal.{field}: an option"):
+        rd.stability(s, 150.0, thermal=kw)
+    # the THD film takes them
+    r = rd.system_thermal_equilibrium(s, speed_hz=150.0, model="thd", **kw)
+    assert r.status == "ok"
+
+
+def test_effective_factor_refused_on_the_thd_film():
+    s = rd.System.from_toml(TURB)
+    with pytest.raises(rd.InputError, match="^effective_factor: an option of model='effective'"):
+        rd.system_thermal_equilibrium(s, speed_hz=150.0, model="thd", effective_factor=0.7)
+
+
+def test_cli_wall_option_on_the_effective_model_is_refused_naming_it():
+    p, _ = _thermal_json(TURB, "--journal-htc-w-m2k", 500)
+    assert p.returncode == 2 and "--journal-htc-w-m2k" in p.stderr
+    p, d = _thermal_json(TURB, "--journal-htc-w-m2k", 500, "--model", "thd")
+    assert p.returncode == 0, p.stderr
+    _same(d, _api(TURB, model="thd", journal_htc_w_m2k=500.0))
+
+
+def test_thermal_keywords_take_the_thd_wall_options():
+    """`thermal={"model": "thd", "wall_htc": "film"}` (docs: a dict of
+    system_thermal_equilibrium's keywords) was refused: "thermal.wall_htc: not a keyword of
+    system_thermal_equilibrium; expected one of [..., 'walls']" — the signature's **walls
+    listed by its own name. Now the dynamics run at the same thermal equilibrium as the
+    direct call, bit for bit."""
+    s = rd.System.from_toml(TURB)
+    kw = {"model": "thd", "wall_htc": "film"}
+    st = rd.stability(s, 150.0, thermal=kw)
+    r = rd.system_thermal_equilibrium(s, speed_hz=150.0, **kw)
+    np.testing.assert_array_equal(st.thermal.max_temperature_c, r.max_temperature_c)
+    np.testing.assert_array_equal(st.eigenvalues, rd.stability(r.system, 150.0).eigenvalues)
+    # the film's own conduction to walls at the supply temperature cools it (here by > 10 K)
+    plain = rd.system_thermal_equilibrium(s, speed_hz=150.0, model="thd")
+    assert np.all(r.max_temperature_c < plain.max_temperature_c - 10.0)
+    c = rd.campbell(s, [150.0], n_modes=4, thermal=kw)
+    np.testing.assert_array_equal(c.thermal[0].max_temperature_c, r.max_temperature_c)
