@@ -110,6 +110,21 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         model = getattr(thermal_model, "model", "effective") if thermal_model is not None \
             else "effective"
     v.choice("model", model, THERMAL_MODELS)
+    unknown = set(walls) - set(WALL_OPTIONS)
+    if unknown:
+        raise InputError(f"{sorted(unknown)[0]}: not an option of the thermal equilibrium")
+    # an option the chosen model does not use is refused, as the standalone film refuses it
+    # (before, the system call ignored it silently: the same answer with or without it)
+    given = {"journal_htc_w_m2k": journal_htc_w_m2k, "bush_htc_w_m2k": bush_htc_w_m2k,
+             "journal_temperature_c": journal_temperature_c,
+             "bush_temperature_c": bush_temperature_c, **walls}
+    if model == "effective" and any(x is not None for x in given.values()):
+        raise InputError(f"{sorted(k for k, x in given.items() if x is not None)[0]}: an "
+                         "option of model='thd' only (the effective-temperature model is "
+                         "adiabatic)")
+    if model == "thd" and effective_factor is not None:
+        raise InputError("effective_factor: an option of model='effective' only (the THD film "
+                         "has no effective temperature: the energy equation gives the field)")
     plain = [i for i, b in enumerate(system.bearings)
              if isinstance(b, (FluidFilmBearing, ActiveJournalBearing))]
     pads = [i for i, b in enumerate(system.bearings)
@@ -147,9 +162,6 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
             return given
         return getattr(thermal_model, field) if thermal_model is not None else 0.0
     hj, hb = wall(journal_htc_w_m2k, "journal_htc_w_m2k"), wall(bush_htc_w_m2k, "bush_htc_w_m2k")
-    unknown = set(walls) - set(WALL_OPTIONS)
-    if unknown:
-        raise InputError(f"{sorted(unknown)[0]}: not an option of the thermal equilibrium")
     def wall_opt(f):
         return walls[f] if walls.get(f) is not None else \
             getattr(thermal_model, f) if thermal_model is not None else WALL_DEFAULTS[f]

@@ -40,8 +40,13 @@ def thermal_keywords(thermal, where: str = "thermal") -> dict | None:
     if not isinstance(thermal, dict):
         raise InputError(f"{where}: expected None, True or a dict of "
                          f"system_thermal_equilibrium keywords, got {type(thermal).__name__}")
-    allowed = [k for k in inspect.signature(system_thermal_equilibrium).parameters
-               if k not in OWN and k != "system"]
+    from rotordyn.bearings.thd_walls import WALL_OPTIONS
+
+    # its named keywords and the THD walls' options it takes as **walls (before, the
+    # signature's "walls" itself was listed and wall_htc, bush_wall, ... refused)
+    params = inspect.signature(system_thermal_equilibrium).parameters
+    allowed = [k for k, p in params.items() if k not in OWN and k != "system"
+               and p.kind is not inspect.Parameter.VAR_KEYWORD] + list(WALL_OPTIONS)
     for k in thermal:
         if k in OWN:
             raise InputError(f"{where}.{k}: set by the operating point, not by the thermal "

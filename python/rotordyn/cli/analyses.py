@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import sys
 
 import numpy as np
@@ -76,7 +77,7 @@ def _register(sub) -> None:
     add_thermal_arguments(s)
     add_thd_arguments(s)
     s.add_argument("--density-kg-m3", type=float, default=None, metavar="RHO",
-                   help="oil density, kg/m3 (default 870)")
+                   help="oil density, kg/m3 (default: the model's [thermal.oil], else 870)")
     s.add_argument("--tol-k", type=float, default=1e-6, metavar="K",
                    help="the films' temperatures settled to |dT| <= K, kelvin (default: 1e-6)")
     s.add_argument("--json", action="store_true", help=JSON_HELP)
@@ -242,9 +243,13 @@ def _cmd_thermal(args) -> int:
     s = models.load(args.model)
     if s.thermal is not None and all(x is None for x in (args.oil_walther, args.oil_exponential,
                                                        args.oil_power)):
-        oil = None  # the model's [thermal] oil (--supply-temperature-c may still override)
-    else:
-        oil = oil_from_args(args)
+        # the model's [thermal] oil (--supply-temperature-c may still override), with the
+        # properties given on the command line (they were silently ignored before)
+        props = {f: getattr(args, f) for f in ("density_kg_m3", "specific_heat_j_per_kg_k")
+                 if getattr(args, f) is not None}
+        oil = dataclasses.replace(s.thermal.oil, **props) if props else None
+    else:  # a law of its own: the model's density and specific heat unless given
+        oil = oil_from_args(args, base=s.thermal.oil if s.thermal is not None else None)
     if oil is None and s.thermal is None:
         raise InputError("--supply-temperature-c: required (the oil's supply temperature, "
                          "degC) when the model has no [thermal] table")
@@ -282,9 +287,17 @@ def _cmd_thermal(args) -> int:
 def _check_thermal_model(s, args) -> None:
     """The option that contradicts the thermal model chosen (``--model``, else the model
     file's ``[thermal] model``), named before any solve: ``--effective-factor`` with the THD
-    film (it has no effective temperature to weight). (Every thermal bearing, plain, active,
+    film (it has no effective temperature to weight), a wall option with the adiabatic
+    effective-temperature model. (Every thermal bearing, plain, active,
     tilting-pad or fixed-geometry, takes either model.)"""
     chosen = args.thermal_model or getattr(s.thermal, "model", None) or "effective"
+    if chosen == "effective":  # the effective-temperature model is adiabatic: no walls
+        for f in ("journal_htc_w_m2k", "bush_htc_w_m2k", "journal_temperature_c",
+                  "bush_temperature_c"):
+            if getattr(args, f, None) is not None:
+                raise InputError(f"--{f.replace('_', '-')}: an option of the THD film (the "
+                                 "effective-temperature model is adiabatic); --model thd, or "
+                                 "leave it out")
     if chosen == "thd" and args.effective_factor is not None:
         raise InputError("--effective-factor: the THD film has no effective temperature (the "
                          "energy equation gives the field); leave it out, or --model effective")

@@ -235,8 +235,9 @@ def add_thermal_arguments(s) -> None:
                    metavar=("T1_C", "MU1_PA_S", "T2_C", "MU2_PA_S"),
                    help="power viscosity law mu = a T^b (T in degC; ROSS's law) through two "
                         "points (its range is then [1, 200] degC)")
-    s.add_argument("--specific-heat-j-per-kg-k", type=float, default=2000.0, metavar="CP",
-                   help="oil specific heat, J/(kg K) (thermal model)")
+    s.add_argument("--specific-heat-j-per-kg-k", type=float, default=None, metavar="CP",
+                   help="oil specific heat, J/(kg K) (thermal model; default: the model's "
+                        "[thermal.oil] with `rotordyn thermal`, else 2000)")
     s.add_argument("--supply-flow-m3-s", type=float, default=None, metavar="Q",
                    help="fresh oil supply flow, m3/s (default: the model's [thermal], else 0: "
                         "the film's own demand)")
@@ -265,9 +266,11 @@ def add_thd_arguments(s) -> None:
                    help="thd: bush wall temperature, degC (default: the supply temperature)")
 
 
-def oil_from_args(args) -> "Oil | None":
+def oil_from_args(args, base=None) -> "Oil | None":
     """The thermal model's oil from the options of :func:`add_thermal_arguments`, or None
-    (isothermal) when no supply temperature is given."""
+    (isothermal) when no supply temperature is given. ``base``: the model's oil (its
+    ``[thermal.oil]``), whose density and specific heat an --oil-* law keeps unless
+    ``--density-kg-m3``, ``--specific-heat-j-per-kg-k`` are given (without it: 870, 2000)."""
     from rotordyn.bearings.thermal import Oil
 
     if args.supply_temperature_c is None:
@@ -278,8 +281,11 @@ def oil_from_args(args) -> "Oil | None":
     if sum(x is not None for x in (args.oil_walther, args.oil_exponential, args.oil_power)) != 1:
         raise InputError("--oil-walther/--oil-exponential/--oil-power: the thermal model needs "
                          "exactly one viscosity law")
-    rho = 870.0 if args.density_kg_m3 is None else args.density_kg_m3
-    common = dict(density_kg_m3=rho, specific_heat_j_per_kg_k=args.specific_heat_j_per_kg_k)
+    rho = args.density_kg_m3 if args.density_kg_m3 is not None else \
+        base.density_kg_m3 if base is not None else 870.0
+    cp = args.specific_heat_j_per_kg_k if args.specific_heat_j_per_kg_k is not None else \
+        base.specific_heat_j_per_kg_k if base is not None else 2000.0
+    common = dict(density_kg_m3=rho, specific_heat_j_per_kg_k=cp)
     if args.oil_walther is not None:
         t1, n1, t2, n2 = args.oil_walther
         return Oil(viscosity_law="walther", t1_c=t1, nu1_mm2_s=n1, t2_c=t2, nu2_mm2_s=n2,

@@ -10,11 +10,15 @@ under a numbered key, and one entry ``__rotordyn__``: UTF-8 JSON with
 * ``value``: the result's fields as a tree: plain JSON for numbers and text, ``{"$array":
   key}`` for an array, ``{"$frame": key}`` for a table (parquet bytes, dtypes and categories
   kept), ``{"$tuple"|"$list"|"$dict": …}``, and ``{"$dataclass": "module:Class", "fields":
-  …}`` for nested results (a stability result's linear model and equilibrium).
+  …}`` for nested results (a stability result's linear model and equilibrium), and
+  ``{"$system": text}`` for a model held by a result (a thermal equilibrium's frozen
+  ``system``): its TOML model file, read back with ``System.from_toml`` (lossless).
 
 Only classes of ``rotordyn.results`` are rebuilt from a file, so a file cannot name arbitrary
 code. Any family can be saved: equilibrium, stability (with its linear model), modes,
-Campbell, unbalance, static, threshold, boundary, state space, transient."""
+Campbell, unbalance, static, threshold, boundary, state space, transient, the system thermal
+equilibrium, and the thermal stability, Campbell and unbalance results that carry one per
+point."""
 
 from __future__ import annotations
 
@@ -30,6 +34,7 @@ import numpy as np
 
 from rotordyn._common.info import __version__
 from rotordyn.errors import InputError, OutputError
+from rotordyn.model.system import System
 
 SCHEMA = "rotordyn/result"
 SCHEMA_VERSION = 1
@@ -86,6 +91,8 @@ class _Encoder:
         if isinstance(x, dict):
             return {"$dict": [[self.enc(k, f"{where} key"), self.enc(v, f"{where}[{k!r}]")]
                               for k, v in x.items()]}
+        if isinstance(x, System):  # a thermal equilibrium's frozen model: its model file
+            return {"$system": x.to_toml()}
         if dataclasses.is_dataclass(x) and not isinstance(x, type):
             cls = type(x)
             if not cls.__module__.startswith(ALLOWED_MODULES):
@@ -141,6 +148,8 @@ def _dec(x, arrays, where: str):
             return [_dec(v, arrays, f"{where}[{i}]") for i, v in enumerate(x["$list"])]
         if "$dict" in x:
             return {_dec(k, arrays, where): _dec(v, arrays, where) for k, v in x["$dict"]}
+        if "$system" in x:  # read as a model file is (no code named by the file)
+            return System.from_toml(str(x["$system"]), is_text=True)
         if "$dataclass" in x:
             cls = _class(x["$dataclass"], where)
             vals = {k: _dec(v, arrays, f"{where}.{k}") for k, v in x["fields"].items()}

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from rotordyn.results._display import Display
 
 WALL_COLUMNS = ("journal_temperature_c", "max_wall_temperature_c", "heat_to_journal_w",
                 "heat_to_bush_w")
@@ -20,7 +21,7 @@ PAD_FRAME_THERMAL = ("effective_temperature_c", "max_temperature_c", "inlet_temp
 
 
 @dataclass(frozen=True)
-class SystemThermalResult:
+class SystemThermalResult(Display):
     """Thermal equilibrium of a system (docs/film-physics.md).
 
     Per thermal bearing (arrays in the order of ``bearing_names``): temperatures °C, the rise

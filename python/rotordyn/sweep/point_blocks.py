@@ -25,6 +25,7 @@ from rotordyn.errors import RotordynError
 from rotordyn.operation import SpeedProfile
 from rotordyn.results.thermal import WALL_COLUMNS
 from rotordyn.sweep.columns import merge
+from rotordyn.sweep.tilt_rows import THERMAL_TILT_OUTPUTS
 from rotordyn.sweep.points import (CONVERGED, STATUS, equilibrium_options, operating,
                                    point_list, ref_bearing, segments, solve_equilibrium)
 from rotordyn.units import hz_to_rad_s
@@ -71,6 +72,10 @@ def thermal_blocks(job, variants, chunk_id, pids, asms):
                                else getattr(r, c),
                                dtype=np.float64)[:nb] if ok
                     else np.full(nb, math.nan)) for c in THERMAL_COLUMNS}
+        if r.tilt is not None:  # a tilting model: its films' rotations and moments (NaN
+            # for an untilted film; the result's NaN where the equilibrium failed)
+            cols.update({c: np.asarray(r.tilt[c], dtype=np.float64)[:nb] if ok
+                         else np.full(nb, math.nan) for c in THERMAL_TILT_OUTPUTS})
         cols.update(bearing=np.array(list(r.bearing_names), dtype=object),
                     iterations=int(r.iterations), status=_status(r.status), message=r.message)
         blocks.append((np.full(nb, k, dtype=np.int64), cols))

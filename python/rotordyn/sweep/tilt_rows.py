@@ -21,7 +21,11 @@ TILT_LISTS = ("journal_theta_x_rad", "journal_theta_y_rad", "film_moment_x_n_m",
               "film_moment_y_n_m", "tilt_h_min_m", "h_min_z_m")
 TILT_OUTPUTS = {"tilt_bearing": pa.list_(pa.string()),
                 **{k: pa.list_(pa.float64()) for k in TILT_LISTS}}
-TILT_ANALYSES = ("stability", "campbell")
+TILT_ANALYSES = ("stability", "campbell", "thermal")
+# the thermal analysis's rows are one per film: its film's bearing's values, flat (NaN for an
+# untilted film and a failed point), as SystemThermalResult.to_frame() and `rotordyn thermal`
+THERMAL_TILT_OUTPUTS = {k: pa.float64() for k in ("journal_theta_x_rad", "journal_theta_y_rad",
+                                                  "film_moment_x_n_m", "film_moment_y_n_m")}
 
 
 def model_tilts(system) -> bool:
@@ -30,7 +34,8 @@ def model_tilts(system) -> bool:
 
 
 def tilt_on(job, base) -> bool:
-    """Whether the rows of ``job`` (on the model ``base``) carry the tilt columns."""
+    """Whether the rows of ``job`` (on the model ``base``) carry the tilt columns (the
+    thermal analysis: :data:`THERMAL_TILT_OUTPUTS`)."""
     return job.analysis in TILT_ANALYSES and model_tilts(base)
 
 

@@ -22,7 +22,7 @@ from rotordyn.sweep.points import STATUS, Variants, base_system
 from rotordyn.sweep.robust_rows import outputs as robust_outputs, robust_blocks
 from rotordyn.sweep.thermal_rows import (stab_blocks as thermal_stab_blocks,
                                          unbalance_blocks as thermal_unbalance_blocks)
-from rotordyn.sweep.tilt_rows import TILT_OUTPUTS, tilt_on
+from rotordyn.sweep.tilt_rows import THERMAL_TILT_OUTPUTS, TILT_OUTPUTS, tilt_on
 
 
 WHIRL = ["forward", "backward", "planar"]
@@ -103,7 +103,8 @@ def schema(analysis: str, axes: list[str], thermal: bool = False,
            tilt: bool = False) -> pa.Schema:
     """The fixed arrow schema of a sweep's rows (every chunk is cast to it); ``thermal``:
     with the thermal outputs of ``options.thermal``; ``tilt``: with the tilting films'
-    per-bearing list columns (:mod:`.tilt_rows`)."""
+    per-bearing list columns (:mod:`.tilt_rows`; the thermal analysis's rows, one per film:
+    its bearing's rotations and moments, flat)."""
     fields = [pa.field("sweep_id", pa.dictionary(pa.int8(), STR)),
               pa.field("point_id", I64), pa.field("chunk_id", I64)]
     base = ["speed_hz", "chamber_pressure_pa", "config_ay_m"]
@@ -119,7 +120,8 @@ def schema(analysis: str, axes: list[str], thermal: bool = False,
     if thermal:
         fields += [pa.field(k, t) for k, t in THERMAL_OUTPUTS.items()]
     if tilt:
-        fields += [pa.field(k, t) for k, t in TILT_OUTPUTS.items()]
+        fields += [pa.field(k, t) for k, t in (THERMAL_TILT_OUTPUTS if analysis == "thermal"
+                                               else TILT_OUTPUTS).items()]
     fields += [pa.field("status", pa.dictionary(pa.int8(), STR)), pa.field("message", STR)]
     return pa.schema(fields)
 
