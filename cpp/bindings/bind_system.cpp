@@ -105,7 +105,8 @@ void bind_system(py::module_& m) {
              double omega) {
             Eigen::VectorXd H;
             SystemSolver::ThinnestFilm t;
-            {
+            {  // released after the conversions: the solve touches only C++ state (the
+               // solver is one per thread) and the results are built after reacquiring
               py::gil_scoped_release release;
               const auto n = static_cast<Eigen::Index>(r.size());
               const auto nd = static_cast<Eigen::Index>(rdot.size());
