@@ -99,6 +99,27 @@ void bind_system(py::module_& m) {
       .def_property_readonly("model", &SystemSolver::model)
       .def("film_forces", &SystemSolver::film_forces, py::arg("r"), py::arg("rdot"),
            py::arg("omega"), gil())
+      .def(
+          "film_point",
+          [](SystemSolver& s, const std::vector<double>& r, const std::vector<double>& rdot,
+             double omega) {
+            Eigen::VectorXd H;
+            SystemSolver::ThinnestFilm t;
+            {  // released after the conversions: the solve touches only C++ state (the
+               // solver is one per thread) and the results are built after reacquiring
+              py::gil_scoped_release release;
+              const auto n = static_cast<Eigen::Index>(r.size());
+              const auto nd = static_cast<Eigen::Index>(rdot.size());
+              H = s.film_forces(Eigen::Map<const Eigen::VectorXd>(r.data(), n),
+                                Eigen::Map<const Eigen::VectorXd>(rdot.data(), nd), omega);
+              t = s.thinnest_film();
+            }
+            return py::make_tuple(py::cast(std::move(H)), t.film, t.h_min_m, t.h_min_angle_deg,
+                                  t.h_min_z_m);
+          },
+          py::arg("r"), py::arg("rdot"), py::arg("omega"),
+          "film_forces(r, rdot, omega) and the thinnest film at that call in one call (r, "
+          "rdot: sequences of floats): (H, film index, h_min m, its angle deg, its z m).")
       .def("linearize", &SystemSolver::linearize, py::arg("r"), py::arg("rdot"), py::arg("omega"),
            gil())
       .def("linearize_fd", &SystemSolver::linearize_fd, py::arg("r"), py::arg("omega"),

@@ -55,29 +55,6 @@ void ReynoldsSolver::Impl::refine_prediction(LinearSystem& S, const double* pc) 
   S.relax_x.resize(nu + 1);
   S.relax_t.resize(nu);
   S.relax_ring.resize(nr);
-  double* x = S.relax_x.data();
-  x[nu] = 0.0;
-  const double* ce = cE.data();
-  const double* cn = cN.data();
-  for (int i = 0; i < nu; ++i) {
-    const std::array<int, 4>& a = S.coarse_around[i];
-    const std::array<double, 4>& w4 = S.coarse_w[i];
-    x[i] = std::max(0.0, w4[0] * pc[a[0]] + w4[1] * pc[a[1]] + w4[2] * pc[a[2]] +
-                             w4[3] * pc[a[3]]);
-    // row i of fill_spd's operator and base_rhs, divided by its diagonal
-    const int n = S.node_of[i];
-    const int w = west(n);
-    const double wp = S.wphi[i];
-    double d;
-    if (S.has_s[i])
-      d = wp * (ce[n] + ce[w]) + (S.has_n[i] ? cn[n] : 0.0) + cn[n - 1];
-    else
-      d = wp * (ce[n] + ce[w]) + cn[n];
-    if (end_row(n)) d += gseal;
-    const double inv = 1.0 / d;
-    S.relax_c[i] = {S.rhs[i] * inv, wp * ce[n] * inv, wp * ce[w] * inv, cn[n] * inv,
-                    n > 0 ? cn[n - 1] * inv : 0.0};
-  }
   // the rings within kMargin of a ring whose predicted set differs from the next one's
   char* near = S.relax_ring.data();
   std::fill(near, near + nr, 0);
@@ -90,10 +67,44 @@ void ReynoldsSolver::Impl::refine_prediction(LinearSystem& S, const double* pc) 
     if (!edge) continue;
     for (int d = -kMargin; d <= kMargin + 1; ++d) near[((j + d) % nr + nr) % nr] = 1;
   }
+  // The start x (the coarse pressures interpolated) and the rows of the operator, only where
+  // the sweeps read them: the near rings' unknowns and (x only) their neighbours. Nothing
+  // else is read, so the relaxed set is the one of a setup over every unknown.
+  double* x = S.relax_x.data();
+  x[nu] = 0.0;
+  const double* ce = cE.data();
+  const double* cn = cN.data();
+  const auto* I = S.relax_idx.data();
+  auto start = [&](int i) {
+    const std::array<int, 4>& a = S.coarse_around[i];
+    const std::array<double, 4>& w4 = S.coarse_w[i];
+    x[i] = std::max(0.0, w4[0] * pc[a[0]] + w4[1] * pc[a[1]] + w4[2] * pc[a[2]] +
+                             w4[3] * pc[a[3]]);
+  };
+  for (int j = 0; j < nr; ++j) {
+    if (!near[j]) continue;
+    for (int i = S.ring_first[j]; i < S.ring_first[j + 1]; ++i) {
+      start(i);
+      for (const int q : I[i])
+        if (q < nu) start(q);
+      // row i of fill_spd's operator and base_rhs, divided by its diagonal
+      const int n = S.node_of[i];
+      const int w = west(n);
+      const double wp = S.wphi[i];
+      double d;
+      if (S.has_s[i])
+        d = wp * (ce[n] + ce[w]) + (S.has_n[i] ? cn[n] : 0.0) + cn[n - 1];
+      else
+        d = wp * (ce[n] + ce[w]) + cn[n];
+      if (end_row(n)) d += gseal;
+      const double inv = 1.0 / d;
+      S.relax_c[i] = {S.rhs[i] * inv, wp * ce[n] * inv, wp * ce[w] * inv, cn[n] * inv,
+                      n > 0 ? cn[n - 1] * inv : 0.0};
+    }
+  }
   // Projected relaxation, ring by ring: Gauss–Seidel from ring to ring, Jacobi within a ring
   // (a ring's updates independent of each other, not one dependent chain per node).
   const auto* C = S.relax_c.data();
-  const auto* I = S.relax_idx.data();
   double* t = S.relax_t.data();
   auto ring = [&](int j) {
     if (!near[j]) return;

@@ -354,6 +354,25 @@ void SystemSolver::forget_state() {
   set_film_continuation(false);  // forgets the sets, invalidates each film's and the last solve
 }
 
+SystemSolver::ThinnestFilm SystemSolver::thinnest_film() const {
+  ThinnestFilm t;
+  for (std::size_t i = 0; i < h_min_.size(); ++i) {
+    if (std::isnan(h_min_[i])) {
+      t.film = static_cast<int>(i);
+      break;
+    }
+    if (t.film < 0 || h_min_[i] < h_min_[static_cast<std::size_t>(t.film)])
+      t.film = static_cast<int>(i);
+  }
+  if (t.film >= 0) {
+    const auto i = static_cast<std::size_t>(t.film);
+    t.h_min_m = h_min_[i];
+    t.h_min_angle_deg = h_min_angle_[i];
+    t.h_min_z_m = h_min_z_[i];
+  }
+  return t;
+}
+
 std::vector<double> SystemSolver::film_h_min(const Eigen::VectorXd& r) const {
   if (r.size() != model_.n()) throw InputError(shape_msg("r", model_.n(), 1, r.size(), 1));
   std::vector<double> out(model_.films.size());

@@ -251,6 +251,13 @@ class SystemSolver {
   const std::vector<double>& last_h_min_z_m() const { return h_min_z_; }
   /// Pressure field of film i at the last call, (n_circ, n_axial + 1).
   const RowMatrixXd& last_pressure(int film) const;
+  /// The thinnest film at the last call: the first index of the smallest last_h_min (the
+  /// first NaN if any) and its minimum (m), angle (deg) and z (m).
+  struct ThinnestFilm {
+    int film = -1;
+    double h_min_m = 0.0, h_min_angle_deg = 0.0, h_min_z_m = 0.0;
+  };
+  ThinnestFilm thinnest_film() const;
 
  private:
   struct Film;

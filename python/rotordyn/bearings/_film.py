@@ -387,7 +387,12 @@ def min_film(s, phis=None) -> tuple[float, float, float]:
     i = int(np.argmin(h))
     a = float(s.last_h_min_angle_deg[i])
     if phis is not None:
-        phi = phis[i]
-        j = int(round(a / 360.0 * len(phi))) % len(phi)
-        a = float(np.degrees(phi[j]) % 360.0) if np.isfinite(phi[j]) else math.nan
+        a = lobe_angle(a, phis[i])
     return float(h[i]), a, float(s.last_h_min_z_m[i])
+
+
+def lobe_angle(a: float, phi) -> float:
+    """A lobe's core-grid angle ``a`` (deg) as its physical angle (deg in [0, 360); NaN on
+    a gap node), ``phi`` the lobe's node angles (rad)."""
+    j = int(round(a / 360.0 * len(phi))) % len(phi)
+    return float(np.degrees(phi[j]) % 360.0) if np.isfinite(phi[j]) else math.nan

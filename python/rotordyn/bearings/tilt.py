@@ -44,7 +44,7 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 import threading
 
-from rotordyn.bearings._film import imposed_tilt, min_film as _min_film
+from rotordyn.bearings._film import imposed_tilt, lobe_angle
 from rotordyn.bearings.active import ActiveJournalBearing
 from rotordyn.bearings.fixed_geometry import FixedGeometryBearing
 from rotordyn.bearings.fluid_film import FluidFilmBearing
@@ -181,28 +181,68 @@ def tilted_forces(bearing: FilmBearing, *,
     equilibrium (:func:`rotordyn.bearings.tilt_pads.pad_tilted_forces`; a
     :class:`~rotordyn.bearings.tilt_pads.PadTiltedFilm` with the pads' tilts, pitches and
     films); velocities are refused (the pads' motion is a state of the system transient)."""
-    bearing = film_bearing(bearing)
-    if isinstance(bearing, TiltingPadBearing):
-        for name, val in (("vx_m_s", vx_m_s), ("vy_m_s", vy_m_s), ("wx_rad_s", wx_rad_s),
-                          ("wy_rad_s", wy_rad_s)):
-            if v.finite(name, val) != 0.0:
-                raise InputError(f"{name}: expected 0 for a tilting-pad bearing (the pads' "
-                                 f"velocities are states of the system transient), got {val!r}")
-        return pad_tilted_forces(bearing, x_m=x_m, y_m=y_m, speed_hz=speed_hz,
-                                 theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad)
-    r = np.array(check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad))
-    rd = np.array([v.in_range("vx_m_s", vx_m_s, -1e3, 1e3),
-                   v.in_range("vy_m_s", vy_m_s, -1e3, 1e3),
-                   v.in_range("wx_rad_s", wx_rad_s, -MAX_ANGULAR_VELOCITY_RAD_S,
-                              MAX_ANGULAR_VELOCITY_RAD_S),
-                   v.in_range("wy_rad_s", wy_rad_s, -MAX_ANGULAR_VELOCITY_RAD_S,
-                              MAX_ANGULAR_VELOCITY_RAD_S)])
-    s = _solver(bearing)
-    H = np.asarray(s.film_forces(r, rd, TWO_PI * _speed(speed_hz)))
-    phis = _lobe_solver(bearing)[1] if isinstance(bearing, FixedGeometryBearing) else None
-    hm, ha, hz = _min_film(s, phis)
+    kind = type(bearing)
+    if (kind is JournalBearing or kind is FixedGeometryBearing) and _fast_inputs(
+            bearing, x_m, y_m, theta_x_rad, theta_y_rad, vx_m_s, vy_m_s, wx_rad_s, wy_rad_s,
+            speed_hz):
+        r = (x_m, y_m, theta_x_rad, theta_y_rad)
+        rd = (vx_m_s, vy_m_s, wx_rad_s, wy_rad_s)
+        f = speed_hz
+    else:
+        bearing = film_bearing(bearing)
+        if isinstance(bearing, TiltingPadBearing):
+            for name, val in (("vx_m_s", vx_m_s), ("vy_m_s", vy_m_s), ("wx_rad_s", wx_rad_s),
+                              ("wy_rad_s", wy_rad_s)):
+                if v.finite(name, val) != 0.0:
+                    raise InputError(f"{name}: expected 0 for a tilting-pad bearing (the pads' "
+                                     f"velocities are states of the system transient), got "
+                                     f"{val!r}")
+            return pad_tilted_forces(bearing, x_m=x_m, y_m=y_m, speed_hz=speed_hz,
+                                     theta_x_rad=theta_x_rad, theta_y_rad=theta_y_rad)
+        r = check_pose(bearing, x_m, y_m, theta_x_rad, theta_y_rad)
+        rd = (v.in_range("vx_m_s", vx_m_s, -1e3, 1e3),
+              v.in_range("vy_m_s", vy_m_s, -1e3, 1e3),
+              v.in_range("wx_rad_s", wx_rad_s, -MAX_ANGULAR_VELOCITY_RAD_S,
+                         MAX_ANGULAR_VELOCITY_RAD_S),
+              v.in_range("wy_rad_s", wy_rad_s, -MAX_ANGULAR_VELOCITY_RAD_S,
+                         MAX_ANGULAR_VELOCITY_RAD_S))
+        f = _speed(speed_hz)
+    if isinstance(bearing, FixedGeometryBearing):
+        s, phis = _lobe_solver(bearing)
+    else:
+        s, phis = _solver(bearing), None
+    # the forces and the thinnest film in one core call
+    H, i, hm, ha, hz = s.film_point(r, rd, TWO_PI * f)
+    if phis is not None:
+        ha = lobe_angle(ha, phis[i])
     return TiltedFilm(force_n=H[:2].copy(), film_moment_n_m=H[2:].copy(), h_min_m=hm,
                       h_min_angle_deg=ha, h_min_z_m=hz)
+
+
+def _fast_inputs(bearing, x, y, tx, ty, vx, vy, wx, wy, f) -> bool:
+    """True when the full path's checks pass unchanged (the hot path of a plain or
+    fixed-geometry bearing, a few number checks instead of nine validations): every input a
+    Python float, all finite (their sum finite: a NaN or an infinity makes it non-finite,
+    an overflow only sends the call to the full path), the velocities and the speed in
+    their ranges and the journal axis inside the clearance at both edges (check_pose's
+    arithmetic). False sends the call to the full path, whose checks raise the InputError
+    naming the field."""
+    if not (type(x) is float and type(y) is float and type(tx) is float and type(ty) is float
+            and type(vx) is float and type(vy) is float and type(wx) is float
+            and type(wy) is float and type(f) is float
+            and math.isfinite(x + y + tx + ty + vx + vy + wx + wy + f)
+            and -1e3 <= vx <= 1e3 and -1e3 <= vy <= 1e3
+            and -MAX_ANGULAR_VELOCITY_RAD_S <= wx <= MAX_ANGULAR_VELOCITY_RAD_S
+            and -MAX_ANGULAR_VELOCITY_RAD_S <= wy <= MAX_ANGULAR_VELOCITY_RAD_S
+            and abs(f) <= MAX_SPEED_HZ):
+        return False
+    if type(bearing) is FixedGeometryBearing:
+        return bearing.edge_film(x, y, tx, ty)[0] > 0.0
+    hl, c = 0.5 * bearing.length_m, bearing.clearance_m
+    for z in (-hl, hl):
+        if not math.hypot(x + ty * z, y - tx * z) / c < 1.0:
+            return False
+    return True
 
 
 def tilted_coefficients(bearing: FilmBearing,
