@@ -124,3 +124,41 @@ def test_threshold_takes_thermal_true_like_stability(compressor):
     t = rd.system_thermal_equilibrium(compressor, speed_hz=a.value)
     assert max(_mu_eff(compressor, t)) < min(b.viscosity_pa_s for b in compressor.bearings)
     assert a.value < iso.value - 1.0  # measured 2.6 Hz below
+
+
+def test_threshold_with_a_failed_thermal_point_is_a_row_not_a_crash(compressor, monkeypatch):
+    """A scan point whose thermal equilibrium returns a status other than ok/contact (e.g.
+    "not_converged": the fixed point did not settle) is a failed row (NaN, status "thermal
+    not_converged", ``stable`` NA) and the scan goes on; before, its 3-tuple against the
+    4-value unpacking raised ValueError out of ``rd.threshold``. The failure is injected (a
+    real one needs a case where the thermal iteration cycles)."""
+    import sys
+    import types
+
+    thr = sys.modules["rotordyn.analysis.threshold"]  # (the package's name is the function)
+
+    real = thr.thermal_point
+
+    def failing(system, speed_hz, *a, **k):
+        if speed_hz > 127.0:
+            return types.SimpleNamespace(status="not_converged", system=system)
+        return real(system, speed_hz, *a, **k)
+
+    monkeypatch.setattr(thr, "thermal_point", failing)
+    r = rd.threshold(compressor, "speed_hz", bounds=(100.0, 130.0), n_scan=3, thermal=True)
+    sc = r.scan
+    bad = sc[sc["speed_hz"] > 127.0]
+    assert len(bad) == 1 and bad["status"].iloc[0] == "thermal not_converged"
+    assert np.isnan(bad["max_real_1_per_s"].iloc[0]) and bad["stable"].isna().all()
+    assert sc["stable"].notna().sum() == 2
+
+
+def test_threshold_refuses_a_thermal_keyword_of_the_other_model(compressor):
+    """A THD-only keyword with the model's effective-temperature films is bad input named as
+    ``thermal.<key>`` (as ``rd.stability(..., thermal=...)``), not a failed point at every
+    scanned value ("no_equilibrium")."""
+    with pytest.raises(rd.InputError, match=r"^thermal\.journal_htc_w_m2k"):
+        rd.stability(compressor, 120.0, thermal={"journal_htc_w_m2k": 10.0})
+    with pytest.raises(rd.InputError, match=r"^thermal\.journal_htc_w_m2k"):
+        rd.threshold(compressor, "speed_hz", bounds=(100.0, 130.0), n_scan=3,
+                     thermal={"journal_htc_w_m2k": 10.0})

@@ -75,7 +75,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
 
     ``model``: ``"effective"`` (the effective-temperature heat balance above) or ``"thd"``
     (the thermo-hydrodynamic film of every thermal bearing: the energy equation over its grid,
-    μ(T) per node, :mod:`rotordyn.bearings.thd`; ``effective_factor`` unused; heat-transfer
+    μ(T) per node, :mod:`rotordyn.bearings.thd`; ``effective_factor`` refused; heat-transfer
     coefficients ``journal_htc_w_m2k``, ``bush_htc_w_m2k`` W/(m² K), 0 adiabatic, walls at
     ``journal_temperature_c``, ``bush_temperature_c`` °C, None: the model's, else the supply
     temperature); None: the model's ``[thermal] model`` (default "effective"). With

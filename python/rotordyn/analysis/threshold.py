@@ -12,7 +12,7 @@ import numpy as np
 from rotordyn.errors import InputError, RotordynError
 from rotordyn._common import validate as v
 from rotordyn.analysis.assembly import OPERATING, chamber_pressure, check_operating_parameter
-from rotordyn.analysis.thermal_dynamics import thermal_keywords
+from rotordyn.analysis.thermal_dynamics import thermal_keywords, thermal_point
 from rotordyn.model.paths import set_field
 from rotordyn.model.system import System
 from rotordyn.results.modes import verdict_real
@@ -23,13 +23,11 @@ def _point(system, params, exclude_sleeve_modes, thermal=None):
     from rotordyn.analysis.linear import stability
 
     if thermal is not None:  # the thermal equilibrium at this point, its field frozen
-        from rotordyn.analysis.thermal import system_thermal_equilibrium
-
-        t = system_thermal_equilibrium(system, speed_hz=params["speed_hz"],
-                                       chamber_pressure_pa=params["chamber_pressure_pa"],
-                                       config_ay_m=params["config_ay_m"], **thermal)
+        # (a refused keyword raises InputError "thermal.<key>: ...", as stability(thermal=))
+        t = thermal_point(system, params["speed_hz"], params["chamber_pressure_pa"],
+                          params["config_ay_m"], thermal)
         if t.status not in ("ok", "contact"):
-            return math.nan, math.nan, f"thermal {t.status}"
+            return math.nan, math.nan, f"thermal {t.status}", math.nan
         system = t.system
     st = stability(system, params["speed_hz"], params["chamber_pressure_pa"],
                    params["config_ay_m"])
@@ -117,6 +115,10 @@ def threshold(system: System, vary: str = "chamber_pressure_pa", *, bounds,
             # ~2e-13 relative)
             sx = set_field(system, vary, float(x), where="bounds") if field else system
             return _point(sx, p, exclude_sleeve_modes, thermal)
+        except InputError as exc:
+            if str(exc).startswith("thermal."):  # the keywords' fault: every point refuses
+                raise
+            return math.nan, math.nan, f"error: {exc}", math.nan
         except RotordynError as exc:  # a failed point is a NaN, the scan goes on
             return math.nan, math.nan, f"error: {exc}", math.nan
 

@@ -269,8 +269,9 @@ def add_thd_arguments(s) -> None:
 def oil_from_args(args, base=None) -> "Oil | None":
     """The thermal model's oil from the options of :func:`add_thermal_arguments`, or None
     (isothermal) when no supply temperature is given. ``base``: the model's oil (its
-    ``[thermal.oil]``), whose density and specific heat an --oil-* law keeps unless
-    ``--density-kg-m3``, ``--specific-heat-j-per-kg-k`` are given (without it: 870, 2000)."""
+    ``[thermal.oil]``), whose density, specific heat and conductivity an --oil-* law keeps
+    (density and specific heat unless ``--density-kg-m3``, ``--specific-heat-j-per-kg-k`` are
+    given; without a model oil: 870, 2000 and 0.13 W/(m K))."""
     from rotordyn.bearings.thermal import Oil
 
     if args.supply_temperature_c is None:
@@ -286,6 +287,8 @@ def oil_from_args(args, base=None) -> "Oil | None":
     cp = args.specific_heat_j_per_kg_k if args.specific_heat_j_per_kg_k is not None else \
         base.specific_heat_j_per_kg_k if base is not None else 2000.0
     common = dict(density_kg_m3=rho, specific_heat_j_per_kg_k=cp)
+    if base is not None:  # the oil's conductivity (the THD film's own) is not the law's
+        common["conductivity_w_per_m_k"] = base.conductivity_w_per_m_k
     if args.oil_walther is not None:
         t1, n1, t2, n2 = args.oil_walther
         return Oil(viscosity_law="walther", t1_c=t1, nu1_mm2_s=n1, t2_c=t2, nu2_mm2_s=n2,

@@ -20,7 +20,10 @@ class ThresholdResult(Display):
     of the crossing mode. ``stable_side``: "above" or "below" the threshold. ``status``:
     "ok", "no_crossing" (no sign change in ``bounds``: ``value`` is NaN) or "error".
     ``crossings``: every sign change found by the scan, refined (``value`` is the first).
-    ``scan``: the bracketing scan (vary value, max real part, status)."""
+    ``scan``: the bracketing scan (vary value, ``max_real_1_per_s`` the raw max Re λ,
+    ``verdict_real_1_per_s`` the function bracketed (its sign the verdict,
+    :func:`rotordyn.results.modes.verdict_real`), ``stable`` the point's verdict (NA at a
+    failed point), ``freq_hz``, ``status``)."""
 
     vary: str
     value: float
@@ -71,12 +74,16 @@ class ThresholdResult(Display):
         def draw(ax):
             ax = new_axes(ax, width=COLUMN_IN * 1.2)
             k = axis_scale(self.vary)
-            sc = self.scan[np.isfinite(self.scan["max_real_1_per_s"])]
-            x, y = sc[self.vary].to_numpy() * k, sc["max_real_1_per_s"].to_numpy()
+            col = "max_real_1_per_s"
+            sc = self.scan[np.isfinite(self.scan[col])]
+            x, y = sc[self.vary].to_numpy() * k, sc[col].to_numpy()
             ax.plot(x, y, "o-", color="tab:blue", ms=3)
             ax.axhline(0, color="k", lw=0.6)
-            ax.fill_between(x, 0, np.maximum(y, 0), facecolor="none", edgecolor="tab:red",
-                            hatch="////", lw=0)
+            # hatched where the point's verdict is unstable (not Re λ's round-off sign)
+            bad = (sc["verdict_real_1_per_s"].to_numpy() > 0 if "verdict_real_1_per_s" in sc
+                   else y > 0)
+            ax.fill_between(x, 0, np.where(bad, np.maximum(y, 0), 0), facecolor="none",
+                            edgecolor="tab:red", hatch="////", lw=0)
             for c in self.crossings:
                 ax.axvline(c * k, color="k", ls="--", lw=0.8)
             h = [Line2D([], [], color="tab:blue", marker="o", ms=3,
