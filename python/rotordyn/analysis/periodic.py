@@ -486,6 +486,7 @@ def orbit_result(asm, res, kind: str, speed_hz: float, chamber_pressure_pa: floa
                "sens_linear_solves": res.sens_linear_solves,
                "sens_factorizations": res.sens_factorizations,
                "monodromy_rtol": float(res.monodromy_rtol),
+               "flow_tol_factor": float(getattr(res, "flow_tol_factor", 1.0)),
                "newton_correction": float(res.newton_correction), **(extra_stats or {}),
                **stats},
         status=status, message=message)
