@@ -57,6 +57,8 @@ def main() -> int:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--skip-old", action="store_true",
                     help="part 1 without the path before (columns, order 5: minutes)")
+    ap.add_argument("--floquet-routes", default="samples,flow",
+                    help="part 4: the floquet routes to run, comma-separated")
     ap.add_argument("--no-part1", action="store_true",
                     help="skip part 1 (the first two Newton flows)")
     ap.add_argument("--final", action="store_true",
@@ -135,7 +137,7 @@ def main() -> int:
               f"the orbit's samples; correctors {args.floquet_solves}")
         for solve in args.floquet_solves.split(","):
             out = {}
-            for fq in ("samples", "flow"):
+            for fq in args.floquet_routes.split(","):
                 r, c, w = cpu(lambda: shoot(sensitivity_solve=solve, floquet=fq))
                 out[fq] = r
                 row(f"{solve}, floquet {fq}", r, c, w)
@@ -148,8 +150,8 @@ def main() -> int:
                 else:
                     print(f"    {r.message[:300]}")
                 print_load("    load")
-            a, b = out["flow"], out["samples"]
-            if a.ok and b.ok:
+            a, b = out.get("flow"), out.get("samples")
+            if a is not None and b is not None and a.ok and b.ok:
                 d = np.abs(a.multipliers[:, None] - b.multipliers[None, :]).min(axis=1)
                 print(f"    every flow multiplier within {d.max():.1e} of a samples multiplier; "
                       f"|mu_c| {abs(a.critical_multiplier):.6f} / "
