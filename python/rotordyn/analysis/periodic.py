@@ -106,10 +106,11 @@ def periodic_orbit(system: System, speed_hz: float = 50.0, chamber_pressure_pa: 
     tol
         Convergence: the largest component of x(t0 + T) − x0 below tol × (the smallest
         film clearance; velocities: × max(Ω, 2π/T)). A full Newton step that lowers the
-        residual by less than half has met the flows' own error: their state tolerances
-        (rtol, atol_m) are then tightened tenfold, at most twice (``stats["flow_tol_factor"]``
-        0.1 or 0.01), before the sensitivities go into the error test (docs/nonlinear.md,
-        "The residual's floor").
+        residual by less than half has met the flows' own error: with ``floquet`` "samples"
+        or "none" their state tolerances (rtol, atol_m) are then tightened tenfold, at most
+        twice (``stats["flow_tol_factor"]`` 0.1 or 0.01), before the sensitivities go into
+        the error test; with "flow" they go into it at once (docs/nonlinear.md, "The
+        residual's floor").
     max_iter, max_steps
         Newton iterations; CVODES steps per period.
     sensitivity_error_control
