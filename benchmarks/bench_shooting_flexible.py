@@ -14,7 +14,8 @@ orbit and the paper rig's limit cycle, blocked against columns, median of ``--re
 interleaved repeats (same orbit, same multipliers, CPU). Part 4 (``--floquet``): the whole
 pump solve (blocked) with the monodromy from the final error-controlled flow (``floquet=
 "flow"``, the default) against the Magnus product on the orbit's samples (``"samples"``, no
-final pass), once each (the flow takes minutes): CPU and the multipliers of both.
+final pass), once each for each corrector of ``--floquet-solves`` (the flow takes minutes):
+CPU, wall, the residuals, the flows' tolerance factor after a stall and the multipliers.
 One thread, load printed.
 """
 
@@ -56,11 +57,18 @@ def main() -> int:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--skip-old", action="store_true",
                     help="part 1 without the path before (columns, order 5: minutes)")
+    ap.add_argument("--floquet-routes", default="samples,flow",
+                    help="part 4: the floquet routes to run, comma-separated")
+    ap.add_argument("--no-part1", action="store_true",
+                    help="skip part 1 (the first two Newton flows)")
     ap.add_argument("--final", action="store_true",
                     help="part 2: the whole solve with its final error-controlled pass")
     ap.add_argument("--others", action="store_true", help="part 3: compressor and rig")
     ap.add_argument("--floquet", action="store_true",
                     help="part 4: the monodromy from the final flow against the samples")
+    ap.add_argument("--floquet-solves", default="columns,blocked",
+                    help="part 4: the sensitivity correctors to run, comma-separated "
+                         "(columns: the default; blocked: opt-in)")
     args = ap.parse_args()
     header("forced orbit of the overhung pump by shooting: blocked sensitivities (opt-in), BDF order")
     pump = rd.System.from_toml(MODELS / "pump_overhung.toml")
@@ -74,10 +82,11 @@ def main() -> int:
     print(f"harmonic balance (H = 8, tol 1e-10): {hb.status}, amplitude "
           f"{hb.amplitude(0) * 1e6:.4g} µm (NDE), |mu_c| {abs(hb.critical_multiplier):.5f}")
 
-    print("\npart 1: the two Newton flows with sensitivities (max_iter=1, tol 1e-12: no "
-          "final pass)")
-    combos = [("blocked", 2), ("blocked", 5), ("columns", 2)]
-    if not args.skip_old:
+    combos = [] if args.no_part1 else [("blocked", 2), ("blocked", 5), ("columns", 2)]
+    if combos:
+        print("\npart 1: the two Newton flows with sensitivities (max_iter=1, tol 1e-12: no "
+              "final pass)")
+    if combos and not args.skip_old:
         combos.append(("columns", 5))
     for solve, order in combos:
         r, c, w = cpu(lambda: shoot(max_iter=1, tol=1e-12, sensitivity_solve=solve,
@@ -124,23 +133,30 @@ def main() -> int:
                       f"{np.abs(mu_a - mu_b).max():.1e}; CPU ratio "
                       f"{tt['columns'].cpu / tt['blocked'].cpu:.2f}x")
     if args.floquet:
-        print("\npart 4: the whole solve (blocked, order 5), the monodromy from the final "
-              "flow against the orbit's samples")
-        out = {}
-        for fq in ("samples", "flow"):
-            r, c, w = cpu(lambda: shoot(sensitivity_solve="blocked", floquet=fq))
-            out[fq] = r
-            row(f"floquet {fq}", r, c, w)
-            if r.ok:
-                print(f"    |mu| {np.array2string(np.abs(r.multipliers[:6]), precision=6)}"
-                      f"  error estimate {r.stats.get('floquet_error')}")
-            print_load("    load")
-        a, b = out["flow"], out["samples"]
-        if a.ok and b.ok:
-            d = np.abs(a.multipliers[:, None] - b.multipliers[None, :]).min(axis=1)
-            print(f"    every flow multiplier within {d.max():.1e} of a samples multiplier; "
-                  f"|mu_c| {abs(a.critical_multiplier):.6f} / "
-                  f"{abs(b.critical_multiplier):.6f}; harmonic balance {abs(hb.critical_multiplier):.6f}")
+        print("\npart 4: the whole solve (order 5), the monodromy from the final flow against "
+              f"the orbit's samples; correctors {args.floquet_solves}")
+        for solve in args.floquet_solves.split(","):
+            out = {}
+            for fq in args.floquet_routes.split(","):
+                r, c, w = cpu(lambda: shoot(sensitivity_solve=solve, floquet=fq))
+                out[fq] = r
+                row(f"{solve}, floquet {fq}", r, c, w)
+                print(f"    residuals {np.array2string(np.asarray(r.residuals), precision=2)}"
+                      f"  flow_tol_factor {r.stats['flow_tol_factor']:g}"
+                      f"  sensitivity flows {r.stats['sensitivity_flows']}")
+                if r.ok:
+                    print(f"    |mu| {np.array2string(np.abs(r.multipliers[:6]), precision=6)}"
+                          f"  error estimate {r.stats.get('floquet_error')}")
+                else:
+                    print(f"    {r.message[:300]}")
+                print_load("    load")
+            a, b = out.get("flow"), out.get("samples")
+            if a is not None and b is not None and a.ok and b.ok:
+                d = np.abs(a.multipliers[:, None] - b.multipliers[None, :]).min(axis=1)
+                print(f"    every flow multiplier within {d.max():.1e} of a samples multiplier; "
+                      f"|mu_c| {abs(a.critical_multiplier):.6f} / "
+                      f"{abs(b.critical_multiplier):.6f}; harmonic balance "
+                      f"{abs(hb.critical_multiplier):.6f}")
     footer()
     return 0
 

@@ -62,3 +62,47 @@ def test_bdf_max_order_reaches_the_flows(plain_system):
     with pytest.raises(InputError, match="sensitivity_solve"):
         rd.periodic_orbit(plain_system, 50.0, kind="forced", unbalances=ub,
                           sensitivity_solve="rows")
+
+
+def test_a_stalled_newton_tightens_the_flow_before_the_sensitivities_error_test(plain_system):
+    """The residual's floor is the flow's own error (docs/nonlinear.md, "The residual's
+    floor"): on the compressor (50 Hz, 2e-4 kg·m, rtol 1e-9, tol 1e-7, CVODES's column
+    corrector, monodromy from the samples) the Newton residuals go 1.46e-5, 4.95e-7, 3.50e-7 —
+    the last step did not halve the residual. Before, that put the sensitivities into the
+    error test for the next flow: 5745 steps in all against 951 with the blocked corrector,
+    whose path did not stall. Now the state's tolerances are tightened tenfold first
+    (measured: 1105 steps, residual 8.5e-8 < tol, flow_tol_factor 0.1). Asserted: converged
+    to tol, the factor reported, fewer than twice the blocked corrector's steps, and the
+    orbit within 10 tol·L of the error-controlled flow route's (the path before)."""
+    ub = [(3, 2e-4, 0.0)]
+    kw = dict(kind="forced", unbalances=ub, rtol=1e-9, tol=1e-7)
+    cols = rd.periodic_orbit(plain_system, 50.0, floquet="samples", **kw)
+    blk = rd.periodic_orbit(plain_system, 50.0, floquet="samples", sensitivity_solve="blocked",
+                            **kw)
+    ref = rd.periodic_orbit(plain_system, 50.0, floquet="flow", sensitivity_error_control=True,
+                            **kw)
+    assert cols.ok and blk.ok and ref.ok, (cols.message, blk.message, ref.message)
+    assert cols.residuals[-1] < 1e-7
+    assert cols.stats["flow_tol_factor"] < 1.0
+    assert blk.stats["flow_tol_factor"] == 1.0
+    assert cols.stats["steps"] < 2 * blk.stats["steps"]
+    L = cols.length_scale_m
+    assert np.abs(cols.r - ref.r).max() < 10 * 1e-7 * L
+    d = np.abs(cols.multipliers[:, None] - ref.multipliers[None, :]).min(axis=1)
+    assert d.max() < 2e-6
+
+
+def test_a_solve_stopped_after_stalls_says_what_it_tried(plain_system):
+    """A solve that runs out of iterations after the stall rule fired reports what was tried
+    and that the residual's floor may be the integration's (before: "the start may not be
+    near a periodic orbit", whatever happened). The compressor at rtol 1e-4, atol 1e-7 m,
+    tol 1e-9, max_iter 5: residuals 6.1e-4, 2.6e-4, 1.35e-5, 7.1e-6 (a fall of less than
+    half after a full step: the state's tolerances tightened tenfold), 6.4e-4 (the tighter
+    flow's own map: the residual grew, so the sensitivities go into the error test),
+    2.1e-4, then the iterations end (measured; with max_iter 8 it converges to 4.5e-14)."""
+    r = rd.periodic_orbit(plain_system, 50.0, kind="forced", unbalances=[(3, 2e-4, 0.0)],
+                          rtol=1e-4, atol_m=1e-7, tol=1e-9, max_iter=5, floquet="none")
+    assert r.status == "not_converged"
+    assert "tightened 1 time(s) tenfold and the sensitivities in the error test" in r.message
+    assert "floor may be the integration's error" in r.message, r.message
+    assert r.stats["flow_tol_factor"] == pytest.approx(0.1)

@@ -83,7 +83,8 @@ void bind_periodic(py::module_& m) {
       .def_readonly("floquet_error", &PeriodicOrbitResult::floquet_error)
       .def_readonly("floquet_converged", &PeriodicOrbitResult::floquet_converged)
       .def_readonly("floquet_steps", &PeriodicOrbitResult::floquet_steps)
-      .def_readonly("floquet_linearizations", &PeriodicOrbitResult::floquet_linearizations);
+      .def_readonly("floquet_linearizations", &PeriodicOrbitResult::floquet_linearizations)
+      .def_readonly("flow_tol_factor", &PeriodicOrbitResult::flow_tol_factor);
   m.def("periodic_orbit", &periodic_orbit, py::arg("solver"), py::arg("input"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>(),
         "Periodic orbit of eq. 12 by single shooting (CVODES forward sensitivities for the "
