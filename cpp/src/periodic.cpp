@@ -422,6 +422,7 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
   // The state's tolerances of the flows: opt.cvode's, tightened tenfold at a stall (below).
   CvodeOptions flow_opt = opt.cvode;
   int tightenings = 0;
+  bool stalled_once = false;  // a stall met the rule below (the message says what was tried)
   double last_cap = 1.0;    // the cap of the step that led to this flow (1: uncapped)
   for (int it = 0; it <= opt.max_iter + 1; ++it) {
     const bool sens = errcon || fresh || !opt.broyden;
@@ -516,6 +517,7 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
     // that pass with the state tightened as well had not ended after 6 min CPU, against
     // 3 min 23 s for the whole solve without the tightening).
     if (stalled && !errcon) {
+      stalled_once = true;
       if (at_floor && opt.floquet != ShootingFloquet::flow && tightenings < 2 &&
           flow_opt.rtol * 0.1 >= 1e-13) {
         flow_opt.rtol *= 0.1;
@@ -588,7 +590,7 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
   }
   out.reynolds_solves = solver.reynolds_solves() - solves0;
   out.sens_rhs_evals = F.sens_evals;
-  out.flow_tol_factor = flow_opt.rtol / opt.cvode.rtol;
+  out.flow_tol_factor = std::pow(0.1, tightenings);  // exactly 1, 0.1 or 0.01 (not a ratio)
   out.period = T;
   out.r0 = x.head(n);
   out.v0 = x.tail(n);
@@ -598,7 +600,7 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
       std::ostringstream os;
       os << "shooting did not converge in " << opt.max_iter << " Newton iterations: residual "
          << out.residual << " (tol " << opt.tol << ")";
-      if (tightenings > 0 || errcon)
+      if (stalled_once)
         os << "; the residual stalled with the flows' tolerances tightened "
            << (tightenings ? std::to_string(tightenings) + " time(s) tenfold" : "not at all")
            << (errcon ? " and the sensitivities in the error test" : "")
