@@ -503,11 +503,11 @@ PeriodicOrbitResult periodic_orbit(SystemSolver& solver, const PeriodicInput& in
     // CVODES computes is x ↦ φ_T(x) + e(x), e its global error, which jumps with the step
     // sequence: measured on the overhung pump (rtol 1e-8, atol 1e-12 m, tol 1e-6) the same
     // start gave scaled residuals 1.38e-6 (column corrector), 1.63e-6 (blocked: other steps)
-    // and 2.65e-6 (rtol 1e-10): the flow's error is at tol's level, beyond any Newton matrix. The state's tolerances are tightened
-    // tenfold (at most twice, rtol ≥ 1e-13): that lowers the floor and keeps the steps the
-    // orbit's. Only then the sensitivities go into the error test (before: at once, which on a
-    // flexible rotor resolves the stiff modes the unit-vector columns excite — 73,000 steps
-    // for the pump's period against 8,000).
+    // and 2.65e-6 (rtol 1e-10): the flow's error is at tol's level, beyond any Newton matrix. The
+    // state's tolerances are tightened tenfold (at most twice, rtol ≥ 1e-13): that lowers the floor
+    // and keeps the steps the orbit's. Only then the sensitivities go into the error test (before:
+    // at once, which on a flexible rotor resolves the stiff modes the unit-vector columns excite —
+    // 73,000 steps for the pump's period against 8,000).
     // A residual that grew, or a capped step, is Newton away from the orbit (the nonlinear
     // phase): the sensitivities go into the error test at once, as before.
     const bool at_floor = stalled && res <= out.residuals[out.residuals.size() - 2] &&

@@ -162,8 +162,9 @@ struct PeriodicOrbitResult {
   long floquet_linearizations = 0;
   /// The factor on cvode.rtol, atol_position and atol_velocity of the last flow: 1, or 0.1 /
   /// 0.01 once a full (uncapped) Newton step with fresh sensitivities lowered the residual by
-  /// less than half, with ShootingFloquet samples or none (the residual's floor is then the flow's own error: the state's
-  /// tolerances are tightened before the sensitivities go into the error test;
+  /// less than half, with ShootingFloquet samples or none (the residual's floor is then the
+  /// flow's own error: the state's tolerances are tightened before the sensitivities go into
+  /// the error test;
   /// docs/nonlinear.md, "The residual's floor"). The monodromy's sensitivity tolerance is
   /// not scaled.
   double flow_tol_factor = 1.0;
