@@ -68,6 +68,7 @@ def test_html_report_is_self_contained_with_every_section(report):
     for sec in ("Model", "Undamped critical speed map", "Campbell diagram", "Unbalance response",
                 "logarithmic decrement", "stability map in p_c", "text report"):
         assert sec in heads, sec
+    assert "Checks against the reference paper" in heads  # the rig's own checks
     assert p.tags.count("svg") >= 7
     data = " ".join(p.cells)
     assert "PASS" in data and "FAIL" in data

@@ -67,6 +67,8 @@ def test_report_completes_on_any_model(reports, name):
     assert "analysed speeds" in page and "125 %" in page  # API 684 range from the operating one
     # no [[stage]] data in these models: API 617 Level I is said not evaluated, not invented
     assert "API 617 Level I" in page and "not evaluated (no stage data)" in page
+    # the text report's section names the paper only on the paper's rig
+    assert "<h2>7. Text report</h2>" in page and "reference paper" not in page
 
 
 @pytest.mark.parametrize("name", NAMES)

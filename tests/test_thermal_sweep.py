@@ -245,3 +245,15 @@ def test_failed_system_equilibrium_returns_its_status():
     assert r.status == "no_equilibrium"
     assert np.all(np.isnan(r.effective_temperature_c)) and np.all(np.isnan(r.viscosity_pa_s))
     assert r.system is rig
+
+
+@pytest.mark.parametrize("model, key, value", [("effective", "journal_htc_w_m2k", 100.0),
+                                               ("thd", "effective_factor", 0.5)])
+def test_other_model_option_refused_before_any_row(tmp_path, model, key, value):
+    """An ``options.thermal`` keyword of the other thermal model is an InputError naming it
+    when the spec meets its model (as rd.system_thermal_equilibrium refuses it); before, the
+    spec passed and every row of the sweep became the same failed point."""
+    p = _spec(tmp_path, "stability")
+    p.write_text(p.read_text() + f'model = "{model}"\n{key} = {value}\n')
+    with pytest.raises(rd.InputError, match=rf"options\.thermal\.{key}: an option of model="):
+        sw.SweepSpec.from_toml(p).check_against(_plain())

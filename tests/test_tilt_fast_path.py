@@ -121,9 +121,11 @@ def test_gate_refuses_what_the_full_checks_refuse(bearing):
         assert not _fast_inputs(bearing, *(kw[n] for n in NAMES), kw["speed_hz"])
         if field == "y_m" and val == 1:  # an int is valid, only not the fast path's float
             continue
-        # a pose that closes the film names the rotations
+        # a pose that closes the film names the rotations, or the position where the
+        # journal's centre alone closes it
         closes = field in ("theta_y_rad", "x_m") and type(val) is float and abs(val) > C
-        named = "theta_x_rad, theta_y_rad" if closes else field
+        named = field if not closes else (
+            "theta_x_rad, theta_y_rad" if field == "theta_y_rad" else "x_m, y_m")
         with pytest.raises(InputError, match=f"^{named}: "):
             tilted_forces(bearing, **kw)
     # the edge film: just inside the clearance at an edge passes both, just outside neither

@@ -33,6 +33,27 @@ FLOW_FIELDS = ("q_phi_m3_s", "q_z_m3_s", "fill", "dissipation_w", "area_m2", "vi
                "makeup_m3_s")
 
 
+THD_ONLY_OPTIONS = ("journal_htc_w_m2k", "bush_htc_w_m2k", "journal_temperature_c",
+                    "bush_temperature_c", *WALL_OPTIONS)
+
+
+def refuse_other_model_options(model: str, given: dict, prefix: str = "") -> None:
+    """InputError naming the first of ``given`` (keyword → value, None: not given) that the
+    thermal ``model`` does not use: the THD walls with "effective" (adiabatic),
+    ``effective_factor`` with "thd" (no effective temperature); ``prefix`` goes before the
+    name (e.g. "options.thermal.")."""
+    named = sorted(k for k, x in given.items() if x is not None)
+    if model == "effective":
+        bad = [k for k in named if k in THD_ONLY_OPTIONS]
+        if bad:
+            raise InputError(f"{prefix}{bad[0]}: an option of model='thd' only (the "
+                             "effective-temperature model is adiabatic)")
+    if model == "thd" and "effective_factor" in named:
+        raise InputError(f"{prefix}effective_factor: an option of model='effective' only (the "
+                         "THD film has no effective temperature: the energy equation gives the "
+                         "field)")
+
+
 @limited_blas
 def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = None,
                                supply_temperature_c: float | None = None, bearings=None,
@@ -115,16 +136,11 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         raise InputError(f"{sorted(unknown)[0]}: not an option of the thermal equilibrium")
     # an option the chosen model does not use is refused, as the standalone film refuses it
     # (before, the system call ignored it silently: the same answer with or without it)
-    given = {"journal_htc_w_m2k": journal_htc_w_m2k, "bush_htc_w_m2k": bush_htc_w_m2k,
-             "journal_temperature_c": journal_temperature_c,
-             "bush_temperature_c": bush_temperature_c, **walls}
-    if model == "effective" and any(x is not None for x in given.values()):
-        raise InputError(f"{sorted(k for k, x in given.items() if x is not None)[0]}: an "
-                         "option of model='thd' only (the effective-temperature model is "
-                         "adiabatic)")
-    if model == "thd" and effective_factor is not None:
-        raise InputError("effective_factor: an option of model='effective' only (the THD film "
-                         "has no effective temperature: the energy equation gives the field)")
+    refuse_other_model_options(model, {
+        "journal_htc_w_m2k": journal_htc_w_m2k, "bush_htc_w_m2k": bush_htc_w_m2k,
+        "journal_temperature_c": journal_temperature_c,
+        "bush_temperature_c": bush_temperature_c, "effective_factor": effective_factor,
+        **walls})
     plain = [i for i, b in enumerate(system.bearings)
              if isinstance(b, (FluidFilmBearing, ActiveJournalBearing))]
     pads = [i for i, b in enumerate(system.bearings)

@@ -70,6 +70,12 @@ def check_pose(bearing: JournalBearing, x_m, y_m, theta_x_rad, theta_y_rad,
     vals = tuple(v.finite(n, val) for n, val in zip(names, (x_m, y_m, theta_x_rad, theta_y_rad)))
     x, y, tx, ty = vals
     if isinstance(bearing, FixedGeometryBearing):
+        h0 = bearing.edge_film(x, y, 0.0, 0.0)[0]
+        if not h0 > 0.0:
+            raise InputError(
+                f"{names[0]}, {names[1]}: the journal's centre closes a lobe's film (minimum "
+                f"film {h0:.6g} m); expected a position whose film stays > 0 over the lobes, "
+                f"and with the tilt at z = ±L/2")
         h, z = bearing.edge_film(x, y, tx, ty)
         if not h > 0.0:
             raise InputError(

@@ -60,7 +60,14 @@ def edge_eccentricity(bearing, x: float, y: float, theta_x: float,
 def check_plain_pose(bearing, x: float, y: float, tx: float, ty: float,
                      names=("x_m", "y_m", "theta_x_rad", "theta_y_rad")) -> tuple[float, ...]:
     """(x, y, θx, θy) (finite, checked by the caller) whose journal axis stays inside the
-    plain bearing's clearance at both edges; InputError naming the rotations otherwise."""
+    plain bearing's clearance at both edges; InputError otherwise, naming the position where
+    the journal's centre alone closes the film, else the rotations."""
+    e0 = math.hypot(x, y) / bearing.clearance_m
+    if not e0 < 1.0:
+        raise InputError(
+            f"{names[0]}, {names[1]}: the journal's centre closes the film (eccentricity "
+            f"ratio {e0:.6g}); expected |(x, y)| < clearance_m = {bearing.clearance_m:g} m, "
+            f"and |(x + theta_y z, y - theta_x z)| < clearance_m at z = ±L/2")
     hl = 0.5 * bearing.length_m
     for z in (-hl, hl):
         e = math.hypot(x + ty * z, y - tx * z) / bearing.clearance_m

@@ -489,7 +489,10 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
 
     # 7. text report
     if text_lines:
-        parts.append("<h2>7. Checks against the reference paper (text report)</h2><pre>"
+        # the paper's checks only on its rig; another model's text report has no reference
+        heading = ("Checks against the reference paper (text report)" if paper else
+                   "Text report")
+        parts.append(f"<h2>7. {heading}</h2><pre>"
                      + html.escape("\n".join(text_lines)) + "</pre>")
     if text_sink is not None:
         text_sink += checks.text_lines()

@@ -169,7 +169,8 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         say(line)
         c.to_frame().to_csv(outdir / "campbell.csv", index=False)
         ax = c.plot()
-        ax.set_title("natural frequencies at p_c = 0.4 MPa (paper Fig. 12)")
+        ax.set_title("natural frequencies at p_c = 0.4 MPa"
+                     + (" (paper Fig. 12)" if paper else ""))
         ax.figure.savefig(outdir / "campbell.png", dpi=200, bbox_inches="tight")
         plt.close(ax.figure)
 

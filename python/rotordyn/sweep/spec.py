@@ -483,6 +483,14 @@ class SweepSpec:
         if "thermal" in self.options and getattr(system, "thermal", None) is None:
             raise InputError("options.thermal: needs the model's oil system (a [thermal] "
                              "table in the model file, docs/model-file.md)")
+        if isinstance(self.options.get("thermal"), dict):
+            # the other model's option refused up front, as rotordyn.system_thermal_equilibrium
+            # refuses it (else every row failed with the same InputError)
+            from rotordyn.analysis.thermal import refuse_other_model_options
+
+            th = self.options["thermal"]
+            refuse_other_model_options(th.get("model", system.thermal.model), th,
+                                       prefix="options.thermal.")
         for name, vals in self.axes.items():
             if name in OPERATING:
                 if name in ("config_ay_m", "config_ax_m"):
