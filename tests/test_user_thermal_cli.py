@@ -133,3 +133,17 @@ def test_thermal_keywords_take_the_thd_wall_options():
     assert np.all(r.max_temperature_c < plain.max_temperature_c - 10.0)
     c = rd.campbell(s, [150.0], n_modes=4, thermal=kw)
     np.testing.assert_array_equal(c.thermal[0].max_temperature_c, r.max_temperature_c)
+
+
+def test_terminal_table_keeps_the_axial_place_of_the_minimum_film_in_m():
+    """`rotordyn thermal`'s table printed an aligned journal's ``h_min_z`` (0, the mid-plane)
+    as ``h_min_z_um`` and a tilted one's (±L/2, an edge) as ``h_min_z_m``: the same column
+    under two names and units. An axial place stays in m; the films and positions go to µm."""
+    import pandas as pd
+
+    from rotordyn.cli.common import table_text
+
+    for z in (0.0, 0.0225):
+        head = table_text(pd.DataFrame({"h_min_m": [69e-6], "h_min_z_m": [z],
+                                        "journal_x_m": [2e-5]})).split("\n")[0].split()
+        assert head == ["h_min_um", "h_min_z_m", "journal_x_um"], head

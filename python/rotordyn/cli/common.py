@@ -200,7 +200,9 @@ def table_text(df) -> str:
     """A result table as the terminal shows it: 6 significant digits (not pandas' fixed 6
     decimals, which printed 69 µm as 0.000069), and small lengths — a ``*_m`` column whose
     values are all below 1 cm: amplitudes, positions, films — in µm with the column renamed
-    ``*_um``. ``--json`` keeps SI."""
+    ``*_um``; an axial place (``*_z_m``, e.g. the minimum film's ``h_min_z_m``) stays in m
+    whatever its values (it was µm when 0, an aligned journal, and m at an edge).
+    ``--json`` keeps SI."""
     import numpy as np
 
     from rotordyn.units import unit_of
@@ -211,6 +213,8 @@ def table_text(df) -> str:
     for c in list(out.columns):
         # a length (suffix _m alone: not _n_m, N·m)
         if not (isinstance(c, str) and unit_of(c) == "m") or out[c].dtype.kind != "f":
+            continue
+        if c.endswith("_z_m"):  # a place along the bearing, not a small length
             continue
         vals = out[c].to_numpy(dtype=float)
         if np.isfinite(vals).any() and np.nanmax(np.abs(vals)) < 0.01:
