@@ -378,3 +378,48 @@ def test_text_report_has_the_checks_of_the_html(reports, name):
         line = next((ln for ln in text.splitlines() if f" {check}" in ln and value in ln), None)
         assert line is not None, (check, value)
         assert line.split()[0] == result.split()[0], (line, result)
+
+
+def test_report_of_an_active_bearing_machine_uses_its_own_bearing_and_configuration(tmp_path):
+    """The text report's active-bearing sections on a machine that is not the paper's rig
+    (the compressor with a plain NDE bearing [0] and an active DE bearing [1]): they printed
+    bearing 0's journal (the plain bearing) as the active bearing's, at the rig's a_y =
+    −1.85 mm (18 clearances of this 0.1 mm bearing) and 50 Hz, with "paper" columns of NaN,
+    and "p_c = nan MPa (stable ; …)" where no threshold lies in the bounds; the critical speeds
+    only over the rig's 5–120 Hz ("critical speeds at p_c = 0.4 MPa: " and nothing, the DE
+    mode being at 209 Hz). Now: the active bearing at the model's own configuration and the
+    report's speed, the no-crossing said as such, the critical speeds over the report's
+    range (API 684: to 125 % of the operating range's top)."""
+    model = MODELS / "compressor_active.toml"
+    err, out = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(out):
+        code = main(["report", str(model), "--out", str(tmp_path), "--operating-speed-hz",
+                     "40", "60", "--html", str(tmp_path / "r.html")])
+    assert code == 0, err.getvalue()
+    text = out.getvalue()
+    page = (tmp_path / "r.html").read_text(encoding="utf-8")
+    row = next(r for r in _checks(page) if r[0].startswith("threshold of instability"))
+    assert row[0] == "threshold of instability at a_y = 0 mm, 50 Hz", row  # not the rig's
+    assert "nan" not in row[2], row
+    s = rd.System.from_toml(model)
+    ia = next(i for i, b in enumerate(s.bearings) if isinstance(b, rd.ActiveJournalBearing))
+    assert ia == 1
+    assert "equilibrium of the active bearing 'DE active bearing' at its configuration " \
+           "a_y = 0 mm, 50 Hz" in text
+    lines = text.splitlines()
+    i = next(k for k, ln in enumerate(lines) if ln.startswith("equilibrium of the active"))
+    for ln, pc in zip(lines[i + 2:i + 7], (0.0, 0.1e6, 0.2e6, 0.3e6, 0.4e6)):
+        e = rd.equilibrium(s, 50.0, pc)
+        cells = ln.split()
+        assert float(cells[0]) == pytest.approx(pc / 1e6)
+        assert float(cells[1]) == pytest.approx(e.x_over_c[ia], abs=1e-4)
+        assert float(cells[2]) == pytest.approx(e.y_over_c[ia], abs=1e-4)
+        assert cells[-1] == "ok"
+    assert not re.search(r"\bpaper\b|\bnan\b", text), re.search(r".*(\bpaper\b|\bnan\b).*",
+                                                                  text).group(0)
+    t = next(ln for ln in lines if ln.startswith("threshold of instability"))
+    assert "at its configuration a_y = 0 mm, 50 Hz" in t
+    assert re.search(r"p_c = \d\.\d{4} MPa \(stable (above|below);", t) or \
+        re.search(r"none in 0–0\.4 MPa \(no_crossing: .*(stable|unstable) at all", t), t
+    c = next(ln for ln in lines if ln.startswith("critical speeds at p_c = 0.4 MPa"))
+    assert "(1.5–75 Hz)" in c, c  # 2 %…125 % of the top operating speed, 60 Hz

@@ -230,7 +230,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     paper = s.name in ("paper-rig", "paper-rig-hs")
     active = [b for b in s.bearings if isinstance(b, ActiveJournalBearing)]
     pc = (0.4e6 if active else 0.0) if chamber_pressure_pa is None else chamber_pressure_pa
-    ay = 0.0 if active else None
+    ay = active[0].config_ay_m if active else None  # the model's configuration (rig: 0)
     if operating_speed_hz is None and paper:
         operating_speed_hz = (45.0, 55.0)
     progress = Steps("report", 6 + bool(active) + 2 * (s.thermal is not None),
@@ -464,7 +464,11 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
     if active:
         _progress(progress, "active bearing stability map")
         speed = float(np.mean(operating_speed_hz)) if operating_speed_hz else 50.0
-        ays = np.linspace(-2.5e-3, 0.5e-3, 13)
+        # the paper's a_y range on its rig (−8.3 c … +1.7 c); another model's ±8 c about its
+        # own configuration (the rig's a_y of −1.85 mm is 18 clearances of a 0.1 mm bearing)
+        ab = active[0]
+        ays = (np.linspace(-2.5e-3, 0.5e-3, 13) if paper else
+               ab.config_ay_m + ab.clearance_m * np.linspace(-8.0, 8.0, 13))
         pcs = np.linspace(0.0, 0.4e6, 21)
         Z = np.full((ays.size, pcs.size), np.nan)
         failed = []
@@ -481,11 +485,17 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                                 title=f"active bearing: stability map at {speed:g} Hz")
         parts.append("<h2>6. Active bearing: stability map in p_c</h2><figure>" + svg(ax.figure)
                      + "</figure>")
-        t = analysis.threshold(s, "chamber_pressure_pa", bounds=(0.02e6, 0.3e6),
-                               speed_hz=speed, config_ay_m=-1.85e-3, n_scan=8)
-        checks.add(f"threshold of instability at a_y = −1.85 mm, {speed:g} Hz",
+        t_ay, bounds = (-1.85e-3, (0.02e6, 0.3e6)) if paper else (ab.config_ay_m,
+                                                                   (0.0, float(pcs[-1])))
+        t = analysis.threshold(s, "chamber_pressure_pa", bounds=bounds, speed_hz=speed,
+                               config_ay_m=t_ay, n_scan=8)
+        value = (f"p_c = {t.value / 1e6:.4f} MPa, stable {t.stable_side} ({t.status})"
+                 if t.status == "ok" else
+                 f"none in {bounds[0] / 1e6:g}–{bounds[1] / 1e6:g} MPa ({t.status}: "
+                 f"{t.message})")
+        checks.add(f"threshold of instability at a_y = {1e3 * t_ay:g} mm, {speed:g} Hz",
                    "stable operation needs p_c on the stable side of the threshold",
-                   f"p_c = {t.value / 1e6:.4f} MPa, stable {t.stable_side} ({t.status})", None)
+                   value, None)
 
     # 7. text report
     if text_lines:

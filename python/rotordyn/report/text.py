@@ -1,7 +1,9 @@
 """``rotordyn report MODEL --out DIR`` (the main job of ``make run``): the model's rotor and
-sleeve frequencies, and for a system with an active bearing the paper's checks — Table 1
-equilibria, the threshold of instability and the critical speeds — each beside the paper's
-value when the model is the paper's rig. Text, CSV/JSON tables and PNG figures under DIR."""
+sleeve frequencies, and for a system with an active bearing its journal's equilibria over
+p_c, the threshold of instability and the critical speeds — on the paper's rig at the paper's
+conditions (Table 1), each beside the paper's value; on another model at the active bearing's
+own configuration and the report's speeds (docs/api-criteria.md). Text, CSV/JSON tables and
+PNG figures under DIR."""
 
 from __future__ import annotations
 
@@ -12,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from rotordyn import analysis
+from rotordyn._common.status import CONVERGED
 from rotordyn.model import builtin as models
 from rotordyn.bearings import ActiveJournalBearing
 
@@ -124,43 +127,76 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
                           mark(c, ref, rtol=TOL_SLEEVE_REL) if np.isfinite(ref) else ""], w))
         sr.to_frame().to_csv(outdir / "sleeve_modes.csv", index=False)
 
-        # 3. Table 1 (a_y = -1.85 mm, 50 Hz)
+        # 3.–5. on the paper's rig its conditions (Table 1 at a_y = -1.85 mm, 50 Hz, and the
+        # paper's 5–120 Hz); on another model the active bearing's own configuration at the
+        # HTML section 6's speed, p_c over its map's 0–0.4 MPa and the report's speeds
+        ia = next(i for i, b in enumerate(s.bearings) if isinstance(b, ActiveJournalBearing))
+        aname = s.bearings[ia].name or f"bearing[{ia}]"
+        if paper:
+            speed, ay, pcs = 50.0, -1.85e-3, sorted(PAPER_TABLE1)
+            bounds, where = (0.02e6, 0.3e6), "a_y = -1.85 mm, 50 Hz"
+        else:
+            speed = float(np.mean(operating_speed_hz)) if operating_speed_hz else 50.0
+            ay, pcs, bounds = s.bearings[ia].config_ay_m, [0.0, 0.1e6, 0.2e6, 0.3e6, 0.4e6], \
+                (0.0, 0.4e6)
+            where = f"its configuration a_y = {1e3 * ay:g} mm, {speed:g} Hz"
         say()
-        say("equilibrium at a_y = -1.85 mm, 50 Hz (paper Table 1; the paper's x axis is mirrored)")
-        w3 = (8, 9, 9, 10, 10, 6, 30)
-        say(_fmt_row(["p_c MPa", "x/c", "y/c", "paper |x|", "paper y", "iter",
-                      "check (|x|/c, y/c)" if paper else ""], w3))
+        if paper:
+            say(f"equilibrium at {where} (paper Table 1; the paper's x axis is mirrored)")
+        else:
+            say(f"equilibrium of the active bearing {aname!r} at {where}")
+        w3 = (8, 9, 9, 10, 10, 6, 30) if paper else (8, 9, 9, 6, 14)
+
+        def row3(cells):  # the paper's columns on its rig only
+            return _fmt_row(cells if paper else cells[:3] + cells[5:], w3)
+        say(row3(["p_c MPa", "x/c", "y/c", "paper |x|", "paper y", "iter",
+                  "check (|x|/c, y/c)" if paper else "status"]))
         rows = []
-        for pc in sorted(PAPER_TABLE1):
-            e = analysis.equilibrium(s, 50.0, pc, -1.85e-3)
-            px, py = PAPER_TABLE1[pc] if paper else (np.nan, np.nan)
-            chk = ""
+        for pc in pcs:
+            e = analysis.equilibrium(s, speed, pc, ay)
+            x, y = e.x_over_c[ia], e.y_over_c[ia]  # the active bearing's journal
+            chk, px, py = e.status, "", ""
             if paper:
-                err = max(abs(abs(e.x_over_c[0]) - px), abs(e.y_over_c[0] - py))
-                chk = mark(err, 0.0, atol=TOL_TABLE1_ABS)
-            say(_fmt_row([f"{pc / 1e6:.2f}", f"{e.x_over_c[0]:.4f}", f"{e.y_over_c[0]:.4f}",
-                          f"{px:.4f}", f"{py:.4f}", e.iterations, chk], w3))
+                rx, ry = PAPER_TABLE1[pc]
+                px, py = f"{rx:.4f}", f"{ry:.4f}"
+                chk = mark(max(abs(abs(x) - rx), abs(y - ry)), 0.0, atol=TOL_TABLE1_ABS)
+            ok = e.status in CONVERGED
+            say(row3([f"{pc / 1e6:.2f}", f"{x:.4f}" if ok else "-",
+                      f"{y:.4f}" if ok else "-", px, py, e.iterations, chk]))
             rows.append(e.to_frame())
         import pandas as pd
 
         pd.concat(rows, ignore_index=True).to_csv(outdir / "table1_equilibrium.csv", index=False)
 
         # 4. threshold
-        t = analysis.threshold(s, "chamber_pressure_pa", bounds=(0.02e6, 0.3e6),
-                               speed_hz=50.0, config_ay_m=-1.85e-3, n_scan=8)
+        t = analysis.threshold(s, "chamber_pressure_pa", bounds=bounds, speed_hz=speed,
+                               config_ay_m=ay, n_scan=8)
         say()
-        say(f"threshold of instability at a_y = -1.85 mm, 50 Hz: p_c = "
-            f"{t.value / 1e6:.4f} MPa (stable {t.stable_side}; whirl {t.whirl_frequency_hz:.2f}"
-            f" Hz; status {t.status})"
-            + (f"; paper {PAPER_THRESHOLD_PA / 1e6:.3f} MPa: "
-               f"{mark(t.value, PAPER_THRESHOLD_PA, rtol=TOL_THRESHOLD_REL)}" if paper else ""))
+        head = f"threshold of instability in p_c at {where}: "
+        if t.status == "ok":
+            say(head + f"p_c = {t.value / 1e6:.4f} MPa (stable {t.stable_side}; whirl "
+                f"{t.whirl_frequency_hz:.2f} Hz; status {t.status})"
+                + (f"; paper {PAPER_THRESHOLD_PA / 1e6:.3f} MPa: "
+                   f"{mark(t.value, PAPER_THRESHOLD_PA, rtol=TOL_THRESHOLD_REL)}"
+                   if paper else ""))
+        else:  # no crossing in the bounds (or a failed scan): say what the scan saw
+            say(head + f"none in {bounds[0] / 1e6:g}–{bounds[1] / 1e6:g} MPa ({t.status}: "
+                f"{t.message})" + (f"; paper {PAPER_THRESHOLD_PA / 1e6:.3f} MPa: missing"
+                                   if paper else ""))
         t.to_frame().to_csv(outdir / "threshold.csv", index=False)
 
-        # 5. Campbell and critical speeds at p_c = 0.4 MPa, a_y = 0
-        c = campbell_04 = analysis.campbell(s, np.arange(5.0, 121.0, 1.0), 0.4e6, 0.0)
+        # 5. Campbell and critical speeds at p_c = 0.4 MPa, the configuration of the rest of
+        # the report
+        from rotordyn.report.criteria import speed_range
+
+        op = operating_speed_hz or ((45.0, 55.0) if paper else None)  # as the HTML report
+        sp = np.arange(5.0, 121.0, 1.0) if paper else speed_range(s, op, speeds_hz, None,
+                                                                  paper).speeds_hz
+        c = campbell_04 = analysis.campbell(s, sp, 0.4e6, s.bearings[ia].config_ay_m)
         crit = c.critical_speeds()
         cs = crit.loc[crit["resonant"], "speed_hz"].to_numpy()
-        line = "critical speeds at p_c = 0.4 MPa: " + ", ".join(f"{x:.1f} Hz" for x in cs)
+        line = (f"critical speeds at p_c = 0.4 MPa ({sp[0]:.4g}–{sp[-1]:.4g} Hz): "
+                + (", ".join(f"{x:.1f} Hz" for x in cs) if len(cs) else "none"))
         if paper:
             line += "; paper " + ", ".join(
                 f"{ref:g} Hz: " + (mark(cs[np.argmin(abs(cs - ref))], ref, rtol=TOL_CRITICAL_REL)
@@ -198,7 +234,8 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         rng = speed_range(s, op, speeds_hz, None, paper)
         same = campbell_04 is not None and np.array_equal(campbell_04.speeds_hz, rng.speeds_hz)
         for text in sections.write_text_sections(
-                s, rng, 0.4e6 if active else 0.0, 0.0 if active else None, outdir,
+                s, rng, 0.4e6 if active else 0.0, active[0].config_ay_m if active else None,
+                outdir,
                 op, campbell=campbell_04 if same else None, level1=(l1, why)):
             say(text)
     (outdir / "report.txt").write_text("\n".join(lines) + "\n")
