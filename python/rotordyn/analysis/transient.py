@@ -113,8 +113,9 @@ def transient(system: System, t_end_s: float, speed_hz: float = 50.0,
               bdf_max_order: int = 5) -> TransientResult:
     """Integrate eq. 12 from t = 0 to ``t_end_s``.
 
-    The start is the static equilibrium (eq. 14) with the journal of the active (or only)
-    bearing displaced by ``disturbance_m`` = (dx, dy), unless ``r0``/``v0`` are given.
+    The start is the static equilibrium (eq. 14) with the journal of the active bearing (with
+    none, of the first bearing, ``bearings[0]``) displaced by ``disturbance_m`` = (dx, dy),
+    unless ``r0``/``v0`` are given (to disturb another journal, give ``r0``).
     ``unbalances``: [(station, mass_kg_m, phase_deg)] rotating with the rotor; with a
     varying speed the force is m e (Ω² e_r − Ω̇ e_t) at the rotor angle θ = ∫Ω dt (radial
     and tangential, the tangential one from the angular acceleration). Output at ``n_out``

@@ -125,8 +125,8 @@ def _orbit_arguments(s) -> None:
                         "response at the equilibrium (linear, default) or from the "
                         "equilibrium itself (equilibrium)")
     s.add_argument("--disturbance-c", type=float, default=0.1, metavar="F",
-                   help="vertical disturbance of the active journal, fraction of its "
-                        "clearance (default 0.1)")
+                   help="vertical disturbance of the active journal (without one: of the "
+                        "first bearing's), fraction of the smallest film clearance (default 0.1)")
     s.add_argument("--rtol", type=float, default=1e-8,
                    help="CVODES relative tolerance (default 1e-8)")
     s.add_argument("--tol", type=float, default=1e-6,

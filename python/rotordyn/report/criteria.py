@@ -180,11 +180,30 @@ def _speed_range(system, operating_speed_hz, speeds_hz, rigid_map, paper) -> Spe
                       f"speed on stiff bearings ({top:.4g} Hz); margins not assessed")
 
 
+def overhung_mass_kg(system, station: int) -> float | None:
+    """The mass (kg) outboard of the outermost bearing or support on the side of ``station``
+    when ``station`` lies beyond it (an overhung end: shaft sections past that support's
+    station and the disks beyond it), else None (``station`` between the supports)."""
+    at = sorted({b.station for b in system.bearings} | {s.station for s in system.supports})
+    if not at or at[0] <= station <= at[-1]:
+        return None
+    secs = system.rotor.sections
+    right = station > at[-1]
+    idx = range(at[-1], len(secs)) if right else range(0, at[0])
+    shaft = sum(secs[i].mass_kg(system.material(secs[i].material)) for i in idx)
+    disks = sum(d.mass_kg for d in system.rotor.disks
+                if (d.station > at[-1] if right else d.station < at[0]))
+    return float(shaft + disks)
+
+
 def api_unbalance(system, n_mc_hz: float, speed_hz: float, pc: float, ay):
     """(station, U kg·m, why): the API unbalance U = 6350 W/N g·mm for the first forward rotor
     mode, W the rotor's whole static load (the journals' loads summed, as API 684 takes for a
-    mode with its largest deflection between the bearings), placed at the station of that
-    mode's largest deflection at ``speed_hz``; the largest disk when no mode is found. The
+    mode with its largest deflection between the bearings) or, when that deflection is at an
+    overhung end (outboard of every bearing and support), the overhung weight (API 617 / API
+    684 §2.8: "the weight outboard of the bearing", :func:`overhung_mass_kg`), placed at the
+    station of that mode's largest deflection at ``speed_hz``; the largest disk when no mode
+    is found. The
     first forward mode is the lowest forward rotor mode with a resonance (damping ratio below
     1/√2, as API 617 Level I's :func:`rotordyn.level1` judges it): an overdamped rigid-body
     root of stiff, heavily damped films (tilting pads) has no peak to excite."""
@@ -202,8 +221,13 @@ def api_unbalance(system, n_mc_hz: float, speed_hz: float, pc: float, ay):
             nodes = system.rotor.station_nodes()
             amp = np.abs(st.rotor_shapes[nodes, 0, j]) + np.abs(st.rotor_shapes[nodes, 1, j])
             k = int(np.argmax(amp))
-            return k, u_kgm, (f"at station {k}, the largest deflection of the first forward "
-                              f"mode ({st.frequencies_hz[j]:.4g} Hz at {speed_hz:.4g} Hz)")
+            why = (f"at station {k}, the largest deflection of the first forward mode "
+                   f"({st.frequencies_hz[j]:.4g} Hz at {speed_hz:.4g} Hz)")
+            w = overhung_mass_kg(system, k)
+            if w is not None:
+                u_kgm = API_UNBALANCE_G_MM * w / (60.0 * n_mc_hz) * 1e-6
+                why += f", W = the overhung weight {w:.4g} kg (outboard of the bearing)"
+            return k, u_kgm, why
     disk = max(system.rotor.disks, key=lambda d: d.mass_kg) if system.rotor.disks else None
     k = disk.station if disk else system.rotor.n_stations // 2
     return k, u_kgm, f"at station {k} (the largest disk)"
@@ -268,7 +292,8 @@ def separation_checks(checks: Checks, u, station: int) -> list[tuple]:
                     "1.5)) % (≤ 16 %) below / 10 + that (≤ 26 %) above the operating range")
             val = (f"{af_text(af, kind)}, SM {sm:.1f} %, required "
                    + ("none" if req == 0 else f"{req:.1f} %" if np.isfinite(req) else
-                      "not known (extend the speed range)"))
+                      "not known (the half-power band leaves the speed range or runs into "
+                      "another resonance)"))
             checks.add(f"separation margin, N_c = {r['critical_speed_hz']:.4g} Hz (station "
                        f"{station})", crit, val, verdict)
     return rows
@@ -356,5 +381,5 @@ def _screen_check(checks: Checks, name: str, criterion: str, ld, conv, window_hz
 
 
 __all__ = ["API_CRITICALLY_DAMPED_AF", "Checks", "NOT_RESOLVED", "SpeedRange", "amplitude_checks",
-           "amplitude_limit_um", "api_unbalance", "critical_speed_map", "separation_checks",
-           "speed_range", "stability_screen"]
+           "amplitude_limit_um", "api_unbalance", "critical_speed_map", "overhung_mass_kg",
+           "separation_checks", "speed_range", "stability_screen"]

@@ -30,6 +30,27 @@ PEAK_COLUMNS = ("station", "critical_speed_hz", "peak_m", "n1_hz", "n2_hz",
 ``required_margin_pct`` when operating speeds are known), also when there is no peak."""
 
 
+def _half_power_speed(a: np.ndarray, s: np.ndarray, i: int, half: float, step: int
+                      ) -> tuple[float, bool]:
+    """(N, cut): the speed where the response ``a`` first falls to ``half`` walking from the
+    peak ``i`` in direction ``step`` (linear interpolation; NaN when it does not fall that far
+    within the speeds), and whether the walk climbed into another resonance first (the
+    response rose by more than :data:`RIPPLE_PROMINENCE` of the peak above its lowest value
+    since the peak). A cut band has no half-power speed on that side: taking the range's end
+    instead made a small resonance on a larger one's skirt "critically damped" (issue qa21)."""
+    j, low, n = i, a[i], len(s)
+    while 0 < j < n - 1 and a[j] > half:
+        if a[j] > low + RIPPLE_PROMINENCE * a[i]:
+            return float("nan"), True
+        low = min(low, a[j])
+        j += step
+    if a[j] > half:
+        return (float("nan"), a[j] > low + RIPPLE_PROMINENCE * a[i])
+    if step < 0:
+        return float(s[j] + (half - a[j]) * (s[j + 1] - s[j]) / (a[j + 1] - a[j])), False
+    return float(s[j - 1] + (a[j - 1] - half) * (s[j] - s[j - 1]) / (a[j - 1] - a[j])), False
+
+
 @dataclass(frozen=True)
 class UnbalanceResult(Display):
     """x, y: (n_speeds, n_stations) complex amplitudes (m) of x = Re(X e^{iΩt}) at the output
@@ -170,15 +191,12 @@ class UnbalanceResult(Display):
             nc = -B / (2 * A) if A < 0 else x1
             peak = max(y1, A * nc**2 + B * nc + (y1 - A * x1**2 - B * x1))
             half = peak / np.sqrt(2)
-            j = i
-            while j > 0 and a[j] > half:
-                j -= 1
-            n1 = np.nan if a[j] > half else s[j] + (half - a[j]) * (s[j + 1] - s[j]) / (a[j + 1] - a[j])
-            j = i
-            while j < len(s) - 1 and a[j] > half:
-                j += 1
-            n2 = np.nan if a[j] > half else s[j - 1] + (a[j - 1] - half) * (s[j] - s[j - 1]) / (a[j - 1] - a[j])
-            af, kind = amplification_factor(nc, n1, n2, s[0], s[-1])
+            n1, cut1 = _half_power_speed(a, s, i, half, -1)
+            n2, cut2 = _half_power_speed(a, s, i, half, +1)
+            if cut1 or cut2:  # the band runs into another resonance: N_1 or N_2 does not exist
+                af, kind = float("nan"), "unresolved"
+            else:
+                af, kind = amplification_factor(nc, n1, n2, s[0], s[-1])
             if prominence < RIPPLE_PROMINENCE:
                 continue  # a ripple (RIPPLE_PROMINENCE), not a resonance
             row = {"station": int(self.stations[k]), "critical_speed_hz": nc, "peak_m": peak,
