@@ -36,7 +36,7 @@ def whip_pair():
     assert cyc.ok and cyc.stable, cyc.message
     flow = rd.continuation(s, "speed_hz", (100.0, 140.0), cyc, **WHIP)
     samples = rd.continuation(s, "speed_hz", (100.0, 140.0), cyc, floquet="samples", **WHIP)
-    return s, flow, samples
+    return s, flow, samples, cyc
 
 
 def test_samples_route_gives_the_flows_multipliers_and_fold(whip_pair):
@@ -52,7 +52,7 @@ def test_samples_route_gives_the_flows_multipliers_and_fold(whip_pair):
     route's tangent comes from the Newton flow's sensitivities outside the error test —
     and the fold is interpolated between them), each within 0.1 Hz of its branch's lowest
     speed."""
-    s, flow, samples = whip_pair
+    s, flow, samples, _ = whip_pair
     assert flow.ok and samples.ok, (flow.message, samples.message)
     assert len(samples) == len(flow) == 7
     assert samples.parameter[0] == flow.parameter[0]
@@ -80,7 +80,7 @@ def test_routes_follow_the_screen_and_close_points_are_rechecked(whip_pair):
     the samples' (monodromy_rtol 0), and the branch's flow_rechecks counts the rechecks.
     The flow route's points integrate a final pass the samples route saves: fewer CVODES
     steps per point wherever no recheck ran."""
-    _, flow, samples = whip_pair
+    _, flow, samples, _ = whip_pair
     assert {o.stats["floquet"] for o in flow.orbits} == {"flow"}
     routes = [o.stats["floquet"] for o in samples.orbits]
     for o, route in zip(samples.orbits, routes):
@@ -95,6 +95,23 @@ def test_routes_follow_the_screen_and_close_points_are_rechecked(whip_pair):
     for a, b, route in zip(flow.orbits[1:], samples.orbits[1:], routes[1:]):
         if route == "samples":
             assert b.stats["steps"] < a.stats["steps"]
+
+
+def test_floquet_tol_refines_close_points_before_the_flow(whip_pair):
+    """floquet_tol > 0: the points the screen calls close are refined first (the Magnus
+    product at doubling step counts; the branch's stats["refined"] counts them) and go to the
+    flow only where the refinement leaves the verdict unresolved. On the whip branch both
+    close points (121.97 and 121.67 Hz) stay unresolved — the refinement needs the trivial
+    multiplier within floquet_tol of 1 — so their multipliers are the flow's, and every
+    point is the floquet_tol = 0 branch's: the same routes and |μ_c| to 1e-9."""
+    s, _, samples, cyc = whip_pair
+    br = rd.continuation(s, "speed_hz", (100.0, 140.0), cyc, floquet="samples",
+                         floquet_tol=1e-3, **WHIP)
+    assert br.ok and br.stats["floquet_tol"] == 1e-3
+    routes = [o.stats["floquet"] for o in br.orbits]
+    assert br.stats["refined"] == routes.count("flow") + routes.count("refined") >= 1
+    assert routes == [o.stats["floquet"] for o in samples.orbits]
+    assert np.allclose(br.max_multiplier, samples.max_multiplier, rtol=0, atol=1e-9)
 
 
 def test_linear_rotor_multipliers_are_exp_lambda_t():

@@ -190,7 +190,9 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         ``sensitivity_rtol`` where the critical multiplier is within ``floquet_margin``
         (default 0.01) of the unit circle or the trivial one is off 1 by more than half of
         it — the screen of the harmonic-balance corrector (docs/nonlinear.md, "Cheap
-        multipliers on a shooting branch"); a film closing at a sample is status ``"rub"``.
+        multipliers on a shooting branch"; measured with ``newton="exact"``: with
+        ``"fast"`` its screened final pass can be cheaper); a film closing at a sample is
+        status ``"rub"``.
         Harmonic balance: ``"samples"`` (default) the same from the samples of the HB orbit;
         ``"hill"`` the multipliers by Hill's method from the converged orbit's HB Jacobian
         (no film solve beyond its max(M, 8H) linearisations), recomputed by the flow where
@@ -198,7 +200,8 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         unit circle (docs/nonlinear.md, "Floquet multipliers by Hill's method");
         ``"flow"`` the flow at every point. Each point's ``stats["floquet"]`` says which
         route gave its multipliers (``"samples"``, ``"refined"``, ``"hill"`` or ``"flow"``);
-        the branch's ``stats["flow_rechecks"]`` counts the points the flow rechecked.
+        the branch's ``stats["flow_rechecks"]`` counts the flow's rechecks (shooting: of the
+        accepted points; harmonic balance: of every corrector).
     floquet_tol
         ``floquet="samples"`` only (both methods), in [0, 0.5] (default 0): > 0
         refines a point's multipliers where the screen calls its verdict close (the band of
