@@ -43,20 +43,30 @@ def print_branch(br) -> None:
         print(f"bifurcation: {b['kind']} at {b['parameter']:.6g} (after point {b['index']})")
 
 
-def whip(args) -> int:
+def compressor_plain():
+    """tests/data/models/compressor_plain.toml with both films on 36 × 6 nodes."""
     import dataclasses
 
-    header("bench_continuation --whip: compressor on plain bearings, oil-whip cycles over "
-           "the speed")
     s = rd.System.from_toml(Path(__file__).parent.parent / "tests" / "data" / "models"
                             / "compressor_plain.toml")
-    s = dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
-                                              for b in s.bearings))
+    return dataclasses.replace(s, bearings=tuple(dataclasses.replace(b, n_circ=36, n_axial=6)
+                                                 for b in s.bearings))
+
+
+def whip_cycle(s):
+    """The whip cycle at 130 Hz from a 0.4 s transient (journal disturbed by 60 µm)."""
+    tr = rd.transient(s, 0.4, 130.0, disturbance_m=(0.0, 6e-5), n_out=4001)
+    return rd.periodic_orbit(s, 130.0, start=tr, **KW)
+
+
+def whip(args) -> int:
+    header("bench_continuation --whip: compressor on plain bearings, oil-whip cycles over "
+           "the speed")
+    s = compressor_plain()
     th = rd.threshold(s, "speed_hz", bounds=(60.0, 300.0))
     print(f"linear threshold: {th}")
     w0, c0 = time.perf_counter(), time.process_time()
-    tr = rd.transient(s, 0.4, 130.0, disturbance_m=(0.0, 6e-5), n_out=4001)
-    cyc = rd.periodic_orbit(s, 130.0, start=tr, **KW)
+    cyc = whip_cycle(s)
     print("start:", cyc)
     br = rd.continuation(s, "speed_hz", (100.0, 140.0), cyc, ds=0.1, ds_max=0.3,
                          max_points=12, direction=-1, newton=args.newton, **KW)
@@ -65,6 +75,48 @@ def whip(args) -> int:
     print_branch(br)
     print(f"stop: {br.stop} {br.message}; {br.stats}")
     print(f"transient + shooting + {len(br)}-point branch: {wall:.2f} s wall, {cpu:.2f} s CPU")
+    footer()
+    return 0
+
+
+def floquet_routes(args) -> int:
+    """The whip branch (7 points from 130 Hz down, as tests/test_continuation.py) with
+    floquet="flow" (every point's final pass with the sensitivities in the error test) and
+    "samples" (the films' linearisations at the samples, the flow only where the verdict is
+    close): interleaved repeats, medians of wall and CPU, the ratio, the routes."""
+    from _common import interleaved
+
+    header("bench_continuation --floquet: shooting branch, floquet='flow' vs 'samples' "
+           "(compressor on plain bearings, 36 x 6, whip branch 130 Hz down, 7 points)")
+    s = compressor_plain()
+    cyc = whip_cycle(s)
+    print(f"newton={args.newton!r}, rtol 1e-6, tol 1e-4, n_out 101 (the default)")
+    out = {}
+
+    def run(route):
+        def f():
+            out[route] = rd.continuation(s, "speed_hz", (100.0, 140.0), cyc, ds=0.1,
+                                         ds_max=0.3, max_points=7, direction=-1,
+                                         newton=args.newton, floquet=route, **KW)
+        return f
+
+    t = interleaved({"flow": run("flow"), "samples": run("samples")}, repeat=args.repeat,
+                    warmup=0)
+    for route in ("flow", "samples"):
+        br = out[route]
+        print(f"\nfloquet={route!r}: {br}")
+        print_branch(br)
+        print("routes:", [o.stats.get("floquet") for o in br.orbits],
+              "steps:", [o.stats["steps"] for o in br.orbits],
+              "film solves:", [o.stats["reynolds_solves"] for o in br.orbits])
+        print("sums: steps", sum(o.stats["steps"] for o in br.orbits), "film solves",
+              sum(o.stats["reynolds_solves"] for o in br.orbits))
+        print(f"stats: {br.stats}")
+    for route in ("flow", "samples"):
+        print(f"{route:>8}: {t[route]} (median of {args.repeat}; walls "
+              f"{', '.join(f'{w:.2f}' for w in t[route].walls)} s)")
+    print(f"ratio flow / samples: {t['flow'].wall / t['samples'].wall:.2f} wall, "
+          f"{t['flow'].cpu / t['samples'].cpu:.2f} CPU")
     footer()
     return 0
 
@@ -87,8 +139,14 @@ def main() -> int:
     ap.add_argument("--others", action="store_true",
                     help="also continue the start over a_y (-3…0 mm) and the speed (20…120 Hz) "
                          "both ways, 15 points each (several minutes)")
+    ap.add_argument("--floquet", action="store_true",
+                    help="only the whip branch (7 points) with floquet='flow' against "
+                         "floquet='samples', interleaved repeats")
+    ap.add_argument("--repeat", type=int, default=3, help="--floquet: repeats of each")
     args = ap.parse_args()
     print(pin_threads(1))
+    if args.floquet:
+        return floquet_routes(args)
     if args.whip:
         return whip(args)
     header("bench_continuation: paper rig limit-cycle branch over p_c, 50 Hz, a_y = -1.85 mm")

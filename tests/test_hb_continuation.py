@@ -355,8 +355,8 @@ def test_a_start_that_does_not_converge_is_a_status(linear_orbit):
     (dict(method=HB, floquet_margin=-0.1), "floquet_margin"),
     (dict(method=HB, newton="fast"), "newton"),
     (dict(harmonics=4), "harmonics"),
-    (dict(floquet_margin=0.1), "floquet_margin"),
-    (dict(floquet_tol=1e-3), "floquet_tol"),  # shooting: its own monodromy, no refinement
+    (dict(floquet_margin=0.6), "floquet_margin"),  # shooting too: in [0, 0.5]
+    (dict(floquet_tol=1e-3), "floquet_tol"),  # shooting: refines floquet="samples" only
     (dict(method=HB, floquet_tol=0.6), "floquet_tol"),
     (dict(method=HB, floquet_tol=-1e-3), "floquet_tol"),
     (dict(method=HB, floquet="hill", floquet_tol=1e-3), "floquet_tol"),

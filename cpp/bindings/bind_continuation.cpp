@@ -32,7 +32,12 @@ void bind_continuation(py::module_& m) {
       .def_readonly("p", &ContinuationStep::p)
       .def_readonly("tangent", &ContinuationStep::tangent)
       .def_readonly("fd_flows", &ContinuationStep::fd_flows)
-      .def_readonly("jacobian", &ContinuationStep::jacobian);
+      .def_readonly("jacobian", &ContinuationStep::jacobian)
+      .def_readonly("floquet_route", &ContinuationStep::floquet_route)
+      .def_readonly("screen_critical_modulus", &ContinuationStep::screen_critical_modulus)
+      .def_readonly("screen_trivial_error", &ContinuationStep::screen_trivial_error)
+      .def_readonly("floquet_error", &ContinuationStep::floquet_error)
+      .def_readonly("floquet_steps", &ContinuationStep::floquet_steps);
   m.def("continuation_step", &continuation_step, py::arg("solver"), py::arg("input"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>(),
         "One pseudo-arclength corrector step of a periodic-orbit branch (shooting Newton "

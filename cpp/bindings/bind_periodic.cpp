@@ -45,7 +45,8 @@ void bind_periodic(py::module_& m) {
       .def_readwrite("screen_margin", &ShootingOptions::screen_margin)
       .def_readwrite("floquet", &ShootingOptions::floquet)
       .def_readwrite("floquet_tol", &ShootingOptions::floquet_tol)
-      .def_readwrite("floquet_max_steps", &ShootingOptions::floquet_max_steps);
+      .def_readwrite("floquet_max_steps", &ShootingOptions::floquet_max_steps)
+      .def_readwrite("floquet_margin", &ShootingOptions::floquet_margin);
   py::class_<Floquet>(m, "Floquet")
       .def_readonly("multipliers", &Floquet::multipliers)
       .def_readonly("trivial", &Floquet::trivial)

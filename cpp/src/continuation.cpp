@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "rotordyn/errors.hpp"
+#include "hb_detail.hpp"
 #include "shooting_detail.hpp"
 
 namespace rotordyn {
@@ -43,6 +44,71 @@ Eigen::VectorXd residual(SystemSolver& solver, const ContinuationInput& c, const
   FlowRun run = run_flow(F, x, in.t0, TT, false, 2, opt, false, opt.rtol);
   if (run.flag < 0) return Eigen::VectorXd();
   return run.xT - x;
+}
+
+// floquet = samples: the converged orbit's multipliers from its films' linearisations at the
+// n_out − 1 samples X (the single Magnus product of harmonic balance's samples route), screened
+// by hb_detail::screen_close (the harmonic-balance corrector's rule), refined where close
+// (opt.floquet_tol > 0) and recomputed by one error-controlled flow at srtol where the verdict
+// is still close. false with o.status / o.message on a failure ("rub": a film closed at a
+// sample, as periodic_orbit's samples route).
+bool samples_floquet(SystemSolver& solver, const PeriodicInput& in, const Eigen::MatrixXd& X,
+                     bool autonomous, const ShootingOptions& opt, double srtol,
+                     PeriodicOrbitResult& o, ContinuationStep& out) {
+  Flow F;
+  setup_flow(F, solver, in);
+  F.blocked_sensitivities = opt.blocked_sensitivities;
+  const double T = o.period;
+  hb_detail::Eval e;
+  hb_detail::RefinedMonodromy lin;
+  hb_detail::PointFloquet pf;
+  if (!hb_detail::linearize_samples(solver, in, X, e, lin)) {
+    o.status = lin.contact ? "rub" : "error";
+    o.message = "the orbit converged but its monodromy from the samples failed: " + lin.why +
+                " (floquet='flow' integrates it instead)";
+    return false;
+  }
+  o.floquet_linearizations = lin.linearizations;
+  pf.route = "samples";
+  o.monodromy = hb_detail::sample_monodromy(F, solver.model(), e, T,
+                                            HarmonicBalanceOptions().magnus_substeps);
+  o.monodromy_rtol = 0.0;
+  bool flow = !o.monodromy.allFinite();  // nothing usable from the samples: the flow decides
+  if (!flow) {
+    o.floquet = floquet(o.monodromy, autonomous);
+    flow = hb_detail::screen_close(o.floquet, opt.floquet_margin, false, pf);
+    if (flow && opt.floquet_tol > 0) {
+      const int M = static_cast<int>(X.rows()) - 1;
+      hb_detail::RefinedMonodromy rm = hb_detail::refine_samples(
+          solver, in, F, X, e, T, autonomous, opt.floquet_tol,
+          hb_detail::refined_max_steps(M, opt.floquet_max_steps));
+      o.floquet_linearizations += rm.linearizations;
+      const double err = rm.error;
+      const bool conv = rm.converged;
+      flow = !hb_detail::take_refined(rm, autonomous, o, pf);
+      if (!flow) {
+        o.floquet_error = err;
+        o.floquet_converged = conv;
+        o.floquet_steps = pf.refined_steps;
+      }
+    }
+  }
+  if (flow) {
+    if (!hb_detail::flow_monodromy(F, o, in.t0, T, opt.cvode, srtol)) return false;
+    pf.route = "flow";
+  }
+  if (!o.monodromy.allFinite()) {
+    o.status = "error";
+    o.message = "non-finite monodromy matrix";
+    return false;
+  }
+  o.floquet = floquet(o.monodromy, autonomous);
+  out.floquet_route = pf.route;
+  out.screen_critical_modulus = pf.screen_critical_modulus;
+  out.screen_trivial_error = pf.screen_trivial_error;
+  out.floquet_error = pf.refined_error;
+  out.floquet_steps = pf.refined_steps;
+  return true;
 }
 
 }  // namespace
@@ -83,7 +149,7 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
           shape_msg("config_direction", n, 1, c.config_direction.size(), 1));
   require(c.parameter != ContinuationParameter::speed || c.p != 0.0,
           "speed: the continuation parameter Ω must not be 0");
-  validate(solver, at_parameter(c, c.p), opt);
+  validate(solver, at_parameter(c, c.p), opt, true);
 
   ContinuationStep out;
   PeriodicOrbitResult& o = out.orbit;
@@ -136,9 +202,14 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
   if (!fresh) JR = c.jacobian;
   bool refreshed = false;
   Eigen::VectorXd R_prev, tcol_prev, dz_prev;
+  // floquet = flow: the converged point is integrated once more with the sensitivities in the
+  // error test (the reported monodromy and the tangent's). samples: no such pass; the last
+  // flow with sensitivities (outside the error test) gives the tangent's Φ and ∂R/∂p, the
+  // multipliers come from the samples (samples_floquet).
+  const bool final_pass = opt.floquet == ShootingFloquet::flow;
   // The final pass's sensitivity tolerance: screen_rtol first when screening (repeated at
   // srtol where the verdict is not safe), else srtol.
-  const bool screen = opt.screen_rtol > 0 && opt.screen_rtol > srtol;
+  const bool screen = final_pass && opt.screen_rtol > 0 && opt.screen_rtol > srtol;
   double pass_rtol = screen ? opt.screen_rtol : srtol;
   bool dxdp_ok = false;  // the last sensitivity flow gave ∂R/∂p
   // Screening from the previous point's matrix: the first flow is already the screened final
@@ -189,8 +260,13 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
     const bool done = res < opt.tol;
     if (speculative && !done) errcon = opt.sensitivity_error_control;
     speculative = false;
-    if (done && !errcon) {  // converged without the sensitivities' error test: one more pass
-      errcon = true;        // at the same point with it (no ∂R/∂p needed for this one)
+    if (done && !final_pass && !sens) {  // samples: a Broyden flow under tol is repeated
+      fresh = true;                        // once with the sensitivities (the tangent's Φ and
+      refreshed = true;                    // ∂R/∂p), outside the error test
+      continue;
+    }
+    if (done && final_pass && !errcon) {  // converged without the sensitivities' error test:
+      errcon = true;  // one more pass at the same point with it (no ∂R/∂p needed for this one)
       continue;
     }
     if (done && screen && pass_rtol != srtol && run.Phi.allFinite()) {
@@ -334,9 +410,16 @@ ContinuationStep continuation_step(SystemSolver& solver, const ContinuationInput
   o.t = run.t;
   o.r = run.X.leftCols(n);
   o.v = run.X.rightCols(n);
-  o.monodromy = run.Phi;
-  o.floquet = floquet(o.monodromy, autonomous);
-  o.monodromy_rtol = pass_rtol;
+  if (final_pass) {
+    o.monodromy = run.Phi;
+    o.floquet = floquet(o.monodromy, autonomous);
+    o.monodromy_rtol = pass_rtol;
+    out.floquet_route = "flow";
+  } else {
+    const bool ok = samples_floquet(solver, in_p, run.X, autonomous, opt, srtol, o, out);
+    o.reynolds_solves = solver.reynolds_solves() - solves0;
+    if (!ok) return out;
+  }
   // Tangent: null vector of the rows R (and phase) in the unknowns, bordered by the previous
   // tangent (first point: by e_p), oriented along it (first point: p growing with direction).
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(U, U);

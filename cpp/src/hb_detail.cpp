@@ -310,11 +310,39 @@ bool flow_monodromy(shooting_detail::Flow& F, PeriodicOrbitResult& o, double t0,
   o.sens_rhs_evals += F.sens_evals - sens0;
   if (run.flag < 0) {
     o.status = F.contact ? "rub" : "error";
-    o.message = "harmonic balance: the monodromy flow failed: " + run.why;
+    o.message = "the monodromy flow failed: " + run.why;
     return false;
   }
   o.monodromy = run.Phi;
   o.monodromy_rtol = srtol;
+  return true;
+}
+
+bool screen_close(const Floquet& fq, double margin, bool hill, PointFloquet& pf) {
+  pf.screen_critical_modulus = fq.critical >= 0 ? fq.critical_modulus : 0.0;
+  pf.screen_trivial_error = fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
+  const double et = pf.screen_trivial_error;
+  // samples: near the unit circle, or a poor monodromy (trivial error above margin / 2);
+  // Hill: near the unit circle by the margin widened by 3 × the trivial error. Hill's
+  // |μ_c| error against the flow was ≤ 3.6e-4 on the rig's 50-point branch and ≤ 7.7e-3 on
+  // the compressor's 30-point whip branch (trivial errors ≤ 9.5e-4 and ≤ 1.6e-2): inside
+  // the margin, but not proportional to the trivial error (up to 27 × it), so the trivial
+  // error only widens the band (docs/nonlinear.md, "Floquet multipliers by Hill's method").
+  const bool near = hill ? std::abs(fq.critical_modulus - 1.0) < margin + 3.0 * et
+                         : (std::abs(fq.critical_modulus - 1.0) < margin || et > 0.5 * margin);
+  return margin > 0 && (fq.critical < 0 || near);
+}
+
+bool take_refined(RefinedMonodromy& rm, bool autonomous, PeriodicOrbitResult& o,
+                  PointFloquet& pf) {
+  pf.refined_steps = rm.steps;
+  if (!(rm.ok && rm.converged && rm.Phi.allFinite())) return false;
+  const Floquet fr = floquet(rm.Phi, autonomous);
+  if (!(fr.critical >= 0 && std::abs(fr.critical_modulus - 1.0) > rm.error)) return false;
+  o.monodromy = std::move(rm.Phi);
+  o.monodromy_rtol = 0.0;
+  pf.route = "refined";
+  pf.refined_error = rm.error;
   return true;
 }
 
@@ -375,20 +403,7 @@ bool finish_point(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, do
     }
   }
   if (screened) {
-    const Floquet& fq = o.floquet;
-    pf.screen_critical_modulus = fq.critical >= 0 ? fq.critical_modulus : 0.0;
-    pf.screen_trivial_error = fq.trivial >= 0 ? std::abs(fq.multipliers(fq.trivial) - 1.0) : 0.0;
-    const double et = pf.screen_trivial_error;
-    // samples: near the unit circle, or a poor monodromy (trivial error above margin / 2);
-    // Hill: near the unit circle by the margin widened by 3 × the trivial error. Hill's
-    // |μ_c| error against the flow was ≤ 3.6e-4 on the rig's 50-point branch and ≤ 7.7e-3 on
-    // the compressor's 30-point whip branch (trivial errors ≤ 9.5e-4 and ≤ 1.6e-2): inside
-    // the margin, but not proportional to the trivial error (up to 27 × it), so the trivial
-    // error only widens the band (docs/nonlinear.md, "Floquet multipliers by Hill's method").
-    const bool near = pf.route == "hill"
-                          ? std::abs(fq.critical_modulus - 1.0) < margin + 3.0 * et
-                          : (std::abs(fq.critical_modulus - 1.0) < margin || et > 0.5 * margin);
-    bool recheck = margin > 0 && (fq.critical < 0 || near);
+    bool recheck = screen_close(o.floquet, margin, pf.route == "hill", pf);
     // floquet_tol > 0 (samples): a close verdict is first refined by the Magnus product at
     // doubling step counts (hb_floquet.cpp, the periodic orbit's floquet_tol); the flow
     // decides only where the refinement leaves it unresolved (not converged within its
@@ -396,17 +411,7 @@ bool finish_point(PeriodicOrbitResult& o, const Eigen::MatrixXd& Z, double w, do
     if (recheck && !flow && ho.floquet == HbFloquet::samples && ho.floquet_tol > 0) {
       RefinedMonodromy rm = refined_monodromy(P, e, Z, w, autonomous, ho.floquet_tol,
                                               refined_max_steps(P.B.M, ho.floquet_max_steps));
-      pf.refined_steps = rm.steps;
-      if (rm.ok && rm.converged && rm.Phi.allFinite()) {
-        const Floquet fr = floquet(rm.Phi, autonomous);
-        if (fr.critical >= 0 && std::abs(fr.critical_modulus - 1.0) > rm.error) {
-          o.monodromy = std::move(rm.Phi);
-          o.monodromy_rtol = 0.0;
-          pf.route = "refined";
-          pf.refined_error = rm.error;
-          recheck = false;
-        }
-      }
+      recheck = !take_refined(rm, autonomous, o, pf);
     }
     flow = flow || recheck;
   }

@@ -111,6 +111,17 @@ RefinedMonodromy refined_monodromy_of_samples(SystemSolver& solver, const Period
                                               shooting_detail::Flow& F, const Eigen::MatrixXd& X,
                                               double T, bool autonomous, double tol,
                                               int max_steps);
+/// The films linearised at a shooting orbit's samples X (n_out rows over [t0, t0 + T], the
+/// last equal to the first) into e.KH, e.DH (n_out − 1 each); false with out.why /
+/// out.contact (a film closed) on a failure; out.linearizations counts them.
+bool linearize_samples(SystemSolver& solver, const PeriodicInput& in, const Eigen::MatrixXd& X,
+                       Eval& e, RefinedMonodromy& out);
+/// refined_monodromy_of_samples from linearisations e already made (linearize_samples); the
+/// result's linearizations count only those it adds.
+RefinedMonodromy refine_samples(SystemSolver& solver, const PeriodicInput& in,
+                                shooting_detail::Flow& F, const Eigen::MatrixXd& X,
+                                const Eval& e, double T, bool autonomous, double tol,
+                                int max_steps);
 /// The budget of refined_monodromy: `requested` if > 0, else 128 M steps per period.
 int refined_max_steps(int M, int requested);
 
@@ -158,6 +169,19 @@ struct PointFloquet {
   int refined_steps = 0;
   long linearizations = 0, evaluations = 0;
 };
+
+/// The screen of a point's multipliers from a cheap route (pf.screen_critical_modulus and
+/// pf.screen_trivial_error set from fq): whether the verdict needs the flow (or first the
+/// refinement). Samples: no critical multiplier, | |μ_c| − 1 | < margin, or |μ_trivial − 1| >
+/// margin / 2 (a poor monodromy); `hill`: | |μ_c| − 1 | < margin + 3 |μ_trivial − 1|. margin
+/// 0: never. Shared by the harmonic-balance and the shooting continuation's correctors.
+bool screen_close(const Floquet& fq, double margin, bool hill, PointFloquet& pf);
+/// A refined product (refined_monodromy) taken where it resolves the verdict: converged,
+/// finite, with a critical multiplier and | |μ_c| − 1 | above its error estimate; then
+/// o.monodromy is its Φ (monodromy_rtol 0) and pf.route "refined" with refined_error. Always
+/// records pf.refined_steps. false: the flow decides.
+bool take_refined(RefinedMonodromy& rm, bool autonomous, PeriodicOrbitResult& o,
+                  PointFloquet& pf);
 
 /// The end of a converged corrector at (Z, ω) (a branch point: hb_continuation.cpp): an
 /// autonomous orbit whose harmonics are all below max(100 tol, 1e-4) L is refused (the branch

@@ -247,17 +247,33 @@ RefinedMonodromy refined_monodromy(Problem& P, const Eval& e, const Eigen::Matri
   return out;
 }
 
-RefinedMonodromy refined_monodromy_of_samples(SystemSolver& solver, const PeriodicInput& in,
-                                              shooting_detail::Flow& F, const Eigen::MatrixXd& X,
-                                              double T, bool autonomous, double tol,
-                                              int max_steps) {
-  const Eigen::Index n = F.n;
+bool linearize_samples(SystemSolver& solver, const PeriodicInput& in, const Eigen::MatrixXd& X,
+                       Eval& e, RefinedMonodromy& out) {
+  const Eigen::Index n = X.cols() / 2;
   const int M = static_cast<int>(X.rows()) - 1;  // the end sample repeats the start
-  RefinedMonodromy out;
   if (M < 2) {
     out.why = "the orbit has fewer than 3 samples (n_out)";
-    return out;
+    return false;
   }
+  e.KH.resize(static_cast<std::size_t>(M));
+  e.DH.resize(static_cast<std::size_t>(M));
+  for (int j = 0; j < M; ++j) {
+    Linearization lin;
+    if (!linearize_at(solver, X.row(j).head(n).transpose(), X.row(j).tail(n).transpose(),
+                      in.omega, "at orbit sample " + std::to_string(j), lin, out))
+      return false;
+    e.KH[static_cast<std::size_t>(j)] = std::move(lin.KH);
+    e.DH[static_cast<std::size_t>(j)] = std::move(lin.DH);
+  }
+  return true;
+}
+
+RefinedMonodromy refine_samples(SystemSolver& solver, const PeriodicInput& in,
+                                shooting_detail::Flow& F, const Eigen::MatrixXd& X,
+                                const Eval& e, double T, bool autonomous, double tol,
+                                int max_steps) {
+  const Eigen::Index n = F.n;
+  const int M = static_cast<int>(e.KH.size());
   Problem P;
   P.solver = &solver;
   P.in = &in;
@@ -265,21 +281,20 @@ RefinedMonodromy refined_monodromy_of_samples(SystemSolver& solver, const Period
   P.n = n;
   // The samples' linearisations use the orbit's own states (exact); the interpolant serves
   // the refinement's midpoints only.
-  Eval e;
-  e.KH.resize(static_cast<std::size_t>(M));
-  e.DH.resize(static_cast<std::size_t>(M));
-  for (int j = 0; j < M; ++j) {
-    Linearization lin;
-    if (!linearize_at(solver, X.row(j).head(n).transpose(), X.row(j).tail(n).transpose(),
-                      in.omega, "at orbit sample " + std::to_string(j), lin, out))
-      return out;
-    e.KH[static_cast<std::size_t>(j)] = std::move(lin.KH);
-    e.DH[static_cast<std::size_t>(j)] = std::move(lin.DH);
-  }
   const Eigen::MatrixXd Z = project_samples(X.topLeftCorner(M, n), (M - 1) / 2);
-  const long base = out.linearizations;
   // the orbit is the integrator's (not a truncated series): its trivial multiplier must be 1
-  out = refined_monodromy(P, e, Z, 2 * M_PI / T, autonomous, tol, max_steps, tol);
+  return refined_monodromy(P, e, Z, 2 * M_PI / T, autonomous, tol, max_steps, tol);
+}
+
+RefinedMonodromy refined_monodromy_of_samples(SystemSolver& solver, const PeriodicInput& in,
+                                              shooting_detail::Flow& F, const Eigen::MatrixXd& X,
+                                              double T, bool autonomous, double tol,
+                                              int max_steps) {
+  RefinedMonodromy out;
+  Eval e;
+  if (!linearize_samples(solver, in, X, e, out)) return out;
+  const long base = out.linearizations;
+  out = refine_samples(solver, in, F, X, e, T, autonomous, tol, max_steps);
   out.linearizations += base;
   return out;
 }

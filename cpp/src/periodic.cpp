@@ -257,7 +257,8 @@ double film_step_fraction(const SystemModel& m, const Eigen::Ref<const Eigen::Ma
   return out;
 }
 
-void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt) {
+void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt,
+              bool continuation) {
 #if SUNDIALS_VERSION_MAJOR != 6
   // refused before any CVODES memory exists (shooting_sens.cpp redeclares SUNDIALS 6's layout)
   if (opt.blocked_sensitivities)
@@ -300,8 +301,16 @@ void validate(const SystemSolver& solver, const PeriodicInput& in, const Shootin
   require(opt.floquet_tol >= 0 && std::isfinite(opt.floquet_tol),
           "floquet_tol: expected a finite value >= 0");
   require(opt.floquet_max_steps >= 0, "floquet_max_steps: expected a value >= 0");
-  require(opt.floquet != ShootingFloquet::samples || opt.floquet_tol > 0,
-          "floquet_tol: expected a value > 0 with floquet = samples");
+  if (continuation) {  // the branch's samples route: 0 is the unrefined product (screened)
+    require(opt.floquet != ShootingFloquet::none,
+            "floquet: expected flow or samples for a continuation (none leaves no verdict)");
+    require(opt.floquet_tol <= 0.5, "floquet_tol: expected a value in [0, 0.5]");
+    require(opt.floquet_margin >= 0 && opt.floquet_margin <= 0.5,
+            "floquet_margin: expected a value in [0, 0.5]");
+  } else {
+    require(opt.floquet != ShootingFloquet::samples || opt.floquet_tol > 0,
+            "floquet_tol: expected a value > 0 with floquet = samples");
+  }
   require(opt.sensitivity_rtol >= 0 && opt.sensitivity_rtol < 1,
           "sensitivity_rtol: expected a value in [0, 1)");
   require(opt.length_scale >= 0 && std::isfinite(opt.length_scale),

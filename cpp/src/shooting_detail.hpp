@@ -82,6 +82,7 @@ PeriodicInput at_parameter(const PeriodicInput& base, ContinuationParameter para
 /// 9 harmonic-balance iterations at 5e-3 kg·m, docs/nonlinear.md).
 double film_step_fraction(const SystemModel& m, const Eigen::Ref<const Eigen::MatrixXd>& dR);
 /// InputError for shapes, non-finite values, period ≤ 0, forcing inconsistent with the kind.
-void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt);
+void validate(const SystemSolver& solver, const PeriodicInput& in, const ShootingOptions& opt,
+              bool continuation = false);
 
 }  // namespace rotordyn::shooting_detail

@@ -16,10 +16,16 @@
 // without sensitivities at p ± h (h = fd_step · D_p); with ShootingOptions::broyden the
 // iterations start from the previous point's matrix and update it by Broyden from flows
 // without sensitivities, and only the converged point gets Φ (error-controlled) and ∂R/∂p.
+// With ShootingOptions::floquet = samples the converged point's Φ (the tangent's) comes from
+// the last flow with sensitivities outside the error test, and its multipliers from the films'
+// linearisations at the orbit's samples, recomputed by the error-controlled flow only where
+// the verdict is close (hb_detail::screen_close, the harmonic-balance corrector's screen).
 // The new tangent is the null vector of the first N (+1) rows, oriented along the previous
 // tangent.
 #pragma once
 #include <Eigen/Core>
+#include <limits>
+#include <string>
 
 #include "rotordyn/periodic.hpp"
 
@@ -59,6 +65,19 @@ struct ContinuationStep {
   /// (2n, U) the scaled rows R of the bordered matrix at the corrected point (error-controlled
   /// Φ − I, D_T f(φ_T), ∂R/∂p): the next corrector's starting matrix. Empty on failure.
   Eigen::MatrixXd jacobian;
+  /// Where the reported multipliers come from: "flow" (the final pass of ShootingOptions::
+  /// floquet = flow, or the samples route's recheck), "samples" (the monodromy from the films'
+  /// linearisations at the n_out − 1 samples of the converged flow) or "refined" (that product
+  /// refined to floquet_tol); empty on failure.
+  std::string floquet_route;
+  /// floquet = samples: the samples' |μ_c| and |μ_trivial − 1| (autonomous; else 0), also where
+  /// the flow replaced them; NaN otherwise.
+  double screen_critical_modulus = std::numeric_limits<double>::quiet_NaN();
+  double screen_trivial_error = std::numeric_limits<double>::quiet_NaN();
+  /// Route "refined": the refined product's last change of |μ_c| (else NaN); its Magnus steps
+  /// per period (0: not refined; > 0 with route "flow": refined, then left to the flow).
+  double floquet_error = std::numeric_limits<double>::quiet_NaN();
+  int floquet_steps = 0;
 };
 
 /// One pseudo-arclength corrector step. Failures are statuses of `orbit`; InputError for

@@ -88,7 +88,7 @@ struct ShootingOptions {
   /// starting from the previous point's matrix runs its first flow as the screened pass.
   double screen_rtol = 0.0;
   double screen_margin = 0.005;
-  /// periodic_orbit only (the continuation keeps the flow). flow: the converged orbit
+  /// flow: the converged orbit
   /// integrated once more with the sensitivities in the error test (the monodromy to
   /// sensitivity_rtol). samples: no such pass; the monodromy by 4th-order Magnus on the
   /// converged orbit's film linearisations (its n_out − 1 samples, then refined on the
@@ -96,9 +96,16 @@ struct ShootingOptions {
   /// harmonic balance's samples route): the exponentials take a flexible rotor's stiff
   /// bending modes exactly, where the error-controlled pass resolves them with nanosecond
   /// steps. none: no monodromy, no multipliers (the orbit only).
+  /// The continuation (continuation.hpp) takes flow or samples; its samples route is
+  /// harmonic balance's: the single product from the n_out − 1 samples, screened by
+  /// floquet_margin, then refined (floquet_tol > 0; 0 allowed there: no refinement) or
+  /// recomputed by the flow where the verdict is close.
   ShootingFloquet floquet = ShootingFloquet::flow;
   double floquet_tol = 1e-3;
   int floquet_max_steps = 0;  ///< samples: the most Magnus steps per period; 0: 128 (n_out − 1)
+  /// Continuation with floquet = samples only: the screen's band about the unit circle
+  /// (hb_detail::screen_close; 0: never rechecked)
+  double floquet_margin = 0.01;
 };
 
 /// Floquet multipliers of a monodromy matrix and the type of the critical one.

@@ -7,7 +7,9 @@ The loop (predictor along the tangent, step-size control, bounds, detection) run
 corrector is one C++ call (``_core.continuation_step``: the shooting Newton over CVODES,
 bordered by ∂R/∂p and the arclength condition; its matrix starts from the previous point's
 and is updated by Broyden from flows without sensitivities; Φ from forward sensitivities and
-∂R/∂p — a central finite difference of two flows — are recomputed at the converged point).
+∂R/∂p — a central finite difference of two flows — are recomputed at the converged point;
+with ``floquet="samples"`` the multipliers come from the samples' linearisations, the
+error-controlled flow only where the verdict is close).
 ``method="harmonic_balance"`` hands the branch to :mod:`rotordyn.analysis.hb_continuation`
 (the correctors on the orbit's Fourier coefficients); what both share (the set-up from the
 start orbit, the Hopf end, the assembly of the result) is :mod:`rotordyn.analysis.orbit_branch`."""
@@ -22,8 +24,8 @@ from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn._common.threads import limited_blas
 from rotordyn.analysis import hb_continuation as hbc
-from rotordyn.analysis.orbit_branch import (PARAM, assemble, halved, hopf_estimate,
-                                            prepare, rejected)
+from rotordyn.analysis.orbit_branch import (PARAM, assemble, floquet_options, halved,
+                                            hopf_estimate, prepare, rejected)
 from rotordyn.analysis.periodic import NEWTON
 from rotordyn.errors import InputError
 from rotordyn.model.system import System
@@ -40,7 +42,9 @@ DEFAULT_NEWTON = "exact"
 #: the correctors' methods: shooting (the default) or harmonic balance (``hb_continuation``)
 METHODS = ("shooting", "harmonic_balance")
 #: the options of the harmonic-balance correctors only (None: not given)
-HB_OPTIONS = ("harmonics", "time_points", "floquet", "floquet_margin", "floquet_tol")
+HB_OPTIONS = ("harmonics", "time_points")
+#: the Floquet routes of a shooting branch point (the default first: today's final pass)
+SHOOTING_FLOQUET = ("flow", "samples")
 
 
 def field_method_error(vary: str) -> InputError:
@@ -64,7 +68,12 @@ def continuation(system: System, vary: str, bounds, start="equilibrium", **optio
     numeric model field path, e.g. ``"bearings.0.clearance_m"``; the operating point by
     ``speed_hz``, ``chamber_pressure_pa``, ``config_ay_m``) →
     :class:`~rotordyn.results.EquilibriumBranchResult`. ``options``: the keywords of the
-    function called (InputError naming an unknown one)."""
+    function called (InputError naming an unknown one). An orbit branch's multipliers:
+    ``floquet`` applies to both methods — shooting ``"flow"`` (default: the error-controlled
+    sensitivity flow at every point) or ``"samples"`` (the films' linearisations at the
+    orbit's samples, the flow only where the verdict is within ``floquet_margin`` of the
+    unit circle; ``floquet_tol`` refines first), harmonic balance ``"samples"`` (default),
+    ``"hill"`` or ``"flow"``; each point's ``stats["floquet"]`` names its route."""
     import inspect
 
     from rotordyn.analysis.equilibrium_branch import equilibrium_continuation
@@ -138,7 +147,8 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     sensitivity_rtol
         Relative tolerance of the monodromy in the final (error-controlled) pass at each
         point (default ``rtol``): the accuracy of the multipliers and the tangent; looser is
-        cheaper (as for :func:`rotordyn.periodic_orbit`).
+        cheaper (as for :func:`rotordyn.periodic_orbit`). With ``floquet="samples"``: of the
+        flows that recheck close points only.
     newton
         ``"exact"`` (default; ``"sensitivities"`` is the same): Φ and ∂R/∂p at every
         iteration. ``"broyden"``: each
@@ -149,8 +159,9 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         more CVODES sensitivity column (p_c, a_y; the speed keeps the central difference),
         and the final pass screened at ``screen_rtol`` (docs/nonlinear.md).
     screen_rtol, screen_margin
-        ``newton="fast"`` only: each point's final pass (sensitivities in the error test)
-        runs first at the sensitivity tolerance ``screen_rtol``, and again at
+        ``newton="fast"`` with ``floquet="flow"`` only: each point's final pass
+        (sensitivities in the error test) runs first at the sensitivity tolerance
+        ``screen_rtol``, and again at
         ``sensitivity_rtol`` where the verdict is not safe at the looser one:
         ||μ_c| − 1| < ``screen_margin`` or |μ_trivial − 1| > ``screen_margin``. Each
         point's ``stats["monodromy_rtol"]`` says which tolerance its multipliers have
@@ -170,26 +181,36 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         Harmonic balance only: H (default 8) and the samples per period M ≥ 2H + 1
         (default 4H).
     floquet, floquet_margin
-        Harmonic balance only: ``"samples"`` (default) the multipliers from the samples'
-        linearisations (no film solve), recomputed by one CVODES sensitivity flow at
+        Both methods. Shooting: ``"flow"`` (default) each converged point integrated once
+        more with the sensitivities in CVODES's error test at ``sensitivity_rtol`` (its
+        monodromy gives the multipliers and the tangent); ``"samples"`` no such pass (the
+        tangent from the last Newton flow's sensitivities outside the error test), the
+        multipliers from the films' linearisations at the orbit's ``n_out`` − 1 samples
+        (4th-order Magnus, no flow), recomputed by one sensitivity flow at
         ``sensitivity_rtol`` where the critical multiplier is within ``floquet_margin``
         (default 0.01) of the unit circle or the trivial one is off 1 by more than half of
-        it (a poor sample monodromy);
+        it — the screen of the harmonic-balance corrector (docs/nonlinear.md, "Cheap
+        multipliers on a shooting branch"; measured with ``newton="exact"``: with
+        ``"fast"`` its screened final pass can be cheaper); a film closing at a sample is
+        status ``"rub"``.
+        Harmonic balance: ``"samples"`` (default) the same from the samples of the HB orbit;
         ``"hill"`` the multipliers by Hill's method from the converged orbit's HB Jacobian
         (no film solve beyond its max(M, 8H) linearisations), recomputed by the flow where
         the critical one is within ``floquet_margin`` + 3 × the trivial one's error of the
         unit circle (docs/nonlinear.md, "Floquet multipliers by Hill's method");
         ``"flow"`` the flow at every point. Each point's ``stats["floquet"]`` says which
-        route gave its multipliers (``"samples"``, ``"refined"``, ``"hill"`` or ``"flow"``).
+        route gave its multipliers (``"samples"``, ``"refined"``, ``"hill"`` or ``"flow"``);
+        the branch's ``stats["flow_rechecks"]`` counts the flow's rechecks (shooting: of the
+        accepted points; harmonic balance: of every corrector).
     floquet_tol
-        Harmonic balance with ``floquet="samples"`` only, in [0, 0.5] (default 0): > 0
+        ``floquet="samples"`` only (both methods), in [0, 0.5] (default 0): > 0
         refines a point's multipliers where the screen calls its verdict close (the band of
         ``floquet_margin``) by the Magnus product at doubling step counts until |μ_c|
         moves by at most ``floquet_tol``·max(1, |μ_c|) (``periodic_orbit``'s
         ``floquet_tol``); the point's route is then ``"refined"`` with
         ``stats["floquet_error"]``, and the flow recomputes it only where the refinement
         leaves the verdict unresolved (not converged, or | |μ_c| − 1 | within its error).
-        0: the flow at every close point, as before.
+        0: the flow at every close point.
     progress
         None, or a callable(point_index, BranchResult-so-far message) for progress lines.
 
@@ -226,11 +247,12 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
                              harmonics=harmonics, time_points=time_points, floquet=floquet,
                              floquet_margin=floquet_margin, floquet_tol=floquet_tol,
                              progress=progress)
-    given = {"harmonics": harmonics, "time_points": time_points, "floquet": floquet,
-             "floquet_margin": floquet_margin, "floquet_tol": floquet_tol}
+    given = {"harmonics": harmonics, "time_points": time_points}
     for k in HB_OPTIONS:
         if given[k] is not None:
             raise InputError(f"{k}: applies only to method='harmonic_balance'")
+    floquet, margin, ftol = floquet_options(floquet, floquet_margin, floquet_tol,
+                                            SHOOTING_FLOQUET, SHOOTING_FLOQUET[0])
     vary, lo, hi, asm, n, kind = (setup.vary, setup.lo, setup.hi, setup.asm, setup.n,
                                   setup.kind)
     bcs, base, to_core = setup.bcs, setup.base, setup.to_core
@@ -257,6 +279,8 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     opt.cvode, opt.tol, opt.max_iter = c, float(tol), int(max_iter)
     if sensitivity_rtol is not None:
         opt.sensitivity_rtol = sensitivity_rtol
+    opt.floquet = getattr(_core.ShootingFloquet, floquet)
+    opt.floquet_margin, opt.floquet_tol = margin, ftol
     if newton == "exact":
         newton = "sensitivities"
     opt.broyden = newton in ("broyden", "fast")
@@ -266,7 +290,13 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         opt.screen_margin = v.in_range("screen_margin", screen_margin, 0.0, 0.5)
 
     def point_result(step, p_core):
-        return setup.point_result(step.orbit, p_core, extra_stats={"method": "shooting"})
+        extra = {"method": "shooting", "floquet": step.floquet_route}
+        if floquet == "samples":
+            extra.update(floquet_samples_modulus=float(step.screen_critical_modulus),
+                         floquet_samples_trivial_error=float(step.screen_trivial_error))
+            if step.floquet_route == "refined":
+                extra["floquet_error"] = float(step.floquet_error)
+        return setup.point_result(step.orbit, p_core, extra_stats=extra)
 
     def correct(x, T, p_core, y_prev, tangent, step_ds, jacobian=np.zeros((0, 0))):
         base.r0, base.v0, base.period = x[:n], x[n:], float(T)
@@ -282,13 +312,18 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     y_start = np.concatenate([x0, [start.period_s, p_start * to_core]])
     first = correct(x0, start.period_s, p_start * to_core, y_start, np.zeros(0), 0.0)
     orbits, ys, tangents, arcl, jacobians = [], [], [], [], []
-    stats = {"method": "shooting", "correctors": 1, "failed_correctors": 0,
+    stats = {"method": "shooting", "floquet": floquet, "floquet_margin": margin,
+             "floquet_tol": ftol, "correctors": 1, "failed_correctors": 0,
              "flows": first.orbit.iterations,
-             "sensitivity_flows": first.orbit.sensitivity_flows, "fd_flows": first.fd_flows}
+             "sensitivity_flows": first.orbit.sensitivity_flows, "fd_flows": first.fd_flows,
+             "flow_rechecks": 0, "refined": 0}
     if first.orbit.status != "ok":
         return setup.failed(first.orbit.message, stats)
 
     def accept(step):
+        if floquet == "samples":  # the points' routes (the flow route has no choice)
+            stats["flow_rechecks"] += int(step.floquet_route == "flow")
+            stats["refined"] += int(step.floquet_steps > 0)
         o = point_result(step, step.p)
         orbits.append(o)
         ys.append(np.concatenate([o.r[0], o.v[0], [o.period_s, step.p]]))
@@ -335,8 +370,12 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         accept(step)
         arcl.append(arcl[-1] + h)
         # a quick corrector (Broyden: its flows are cheaper and converge superlinearly, one
-        # more is allowed) lets the step grow
-        if o.iterations <= (3 if newton == "sensitivities" else 4):
+        # more is allowed) lets the step grow. The flows are counted as on the flow route:
+        # Newton with sensitivities ends there with the final pass, which floquet="samples"
+        # does not run (Broyden's last flow is repeated with sensitivities on both routes),
+        # so both routes take the same steps
+        flows = o.iterations + (floquet == "samples" and newton == "sensitivities")
+        if flows <= (3 if newton == "sensitivities" else 4):
             h = min(h * 1.5, ds_max)
 
     br = assemble(vary, kind, orbits, tangents, arcl, bcs, (lo, hi), stop, message, stats)

@@ -15,11 +15,10 @@ import dataclasses
 import numpy as np
 
 from rotordyn import _core
-from rotordyn._common import validate as v
 from rotordyn.analysis import harmonic_balance as hbal
 from rotordyn.analysis.hb_field import field_systems
-from rotordyn.analysis.orbit_branch import (PARAM, BranchSetup, assemble, halved,
-                                            hopf_estimate, rejected)
+from rotordyn.analysis.orbit_branch import (FLOQUET_MARGIN, PARAM, BranchSetup, assemble,
+                                            floquet_options, halved, hopf_estimate, rejected)
 from rotordyn.analysis.periodic import periodic_orbit
 from rotordyn.errors import InputError
 from rotordyn.results.continuation import BranchResult
@@ -28,7 +27,7 @@ from rotordyn.results.periodic import PeriodicOrbitResult
 #: the Floquet routes of a branch point (``"none"`` would leave the stability unknown)
 FLOQUET = ("samples", "hill", "flow")
 #: defaults of the harmonic-balance options of a branch
-HARMONICS, FLOQUET_MARGIN = 8, 0.01
+HARMONICS = 8
 
 
 def start_coefficients(start: PeriodicOrbitResult, harmonics: int) -> np.ndarray:
@@ -144,13 +143,8 @@ def hb_branch(setup: BranchSetup, start: PeriodicOrbitResult, *, ds: float, ds_m
     h_ = HARMONICS if harmonics is None else harmonics
     m_hb = hbal.time_points_for(h_, time_points)
     h_ = int(h_)
-    floquet = v.choice("floquet", "samples" if floquet is None else floquet, FLOQUET)
-    margin = v.in_range("floquet_margin",
-                        FLOQUET_MARGIN if floquet_margin is None else floquet_margin, 0.0, 0.5)
-    ftol = 0.0 if floquet_tol is None else v.in_range("floquet_tol", floquet_tol, 0.0, 0.5)
-    if ftol > 0 and floquet != "samples":
-        raise InputError(f"floquet_tol: applies only to floquet='samples' (it refines the "
-                         f"samples' product), got floquet={floquet!r}")
+    floquet, margin, ftol = floquet_options(floquet, floquet_margin, floquet_tol, FLOQUET,
+                                            "samples")
     asm, n, kind = setup.asm, setup.n, setup.kind
     nb = 2 * h_ + 1
     nn = nb * n

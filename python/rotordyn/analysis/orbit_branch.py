@@ -27,6 +27,25 @@ PARAM = {"chamber_pressure_pa": "chamber_pressure", "speed_hz": "speed",
          "config_ay_m": "config"}
 
 
+#: the band of a branch point's screen about the unit circle (``floquet_margin``'s default)
+FLOQUET_MARGIN = 0.01
+
+
+def floquet_options(floquet, floquet_margin, floquet_tol, routes, default: str) -> tuple:
+    """The checked Floquet options of a branch's correctors (both methods): the route (one of
+    ``routes``, ``default`` when None), the screen's margin in [0, 0.5] (default
+    FLOQUET_MARGIN) and the refinement tolerance in [0, 0.5] (default 0), which applies only
+    to ``floquet="samples"``; InputError naming the field otherwise."""
+    floquet = v.choice("floquet", default if floquet is None else floquet, routes)
+    margin = v.in_range("floquet_margin",
+                        FLOQUET_MARGIN if floquet_margin is None else floquet_margin, 0.0, 0.5)
+    ftol = 0.0 if floquet_tol is None else v.in_range("floquet_tol", floquet_tol, 0.0, 0.5)
+    if ftol > 0 and floquet != "samples":
+        raise InputError(f"floquet_tol: applies only to floquet='samples' (it refines the "
+                         f"samples' product), got floquet={floquet!r}")
+    return floquet, float(margin), float(ftol)
+
+
 def point_parameter(o: PeriodicOrbitResult, vary: str) -> float:
     """The value of ``vary`` at a branch point (a model field's: ``stats["field_value"]``)."""
     return float(getattr(o, vary) if vary in OPERATING else o.stats["field_value"])
