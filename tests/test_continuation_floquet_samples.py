@@ -151,3 +151,32 @@ def test_bad_floquet_options_of_a_shooting_branch(kw, field):
         rd.continuation(s, "speed_hz", (50.0, 80.0), start, unbalances=UB, max_points=2, **kw)
     if field == "floquet":
         assert "'flow', 'samples'" in str(ei.value)
+
+
+def test_command_line_shooting_branch_takes_floquet_samples(capsys):
+    """``rotordyn continuation --floquet samples`` with shooting (it exited 2: "--floquet:
+    applies only to --method harmonic_balance" although the API takes it): the JSON's
+    routes are the samples' and the largest multiplier of each point is exp(λT) of the
+    linear rotor as in the API test above; --floquet hill with shooting, --floquet-tol with
+    the flow route and --floquet-margin with the flow route exit 2 naming the flag."""
+    import json
+
+    from rotordyn.cli import main
+
+    model = str(MODELS / "compressor_linear.toml")
+    base = ["continuation", model, "--kind", "forced", "--speed-hz", "60", "--unbalance",
+            "3,1e-3,30", "--vary", "speed_hz", "--bounds", "50", "80", "--max-points", "3",
+            "--ds", "0.1", "--rtol", "1e-9"]
+    assert main(base + ["--floquet", "samples", "--floquet-margin", "0", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["status"] == "ok" and out["floquet_route"] == ["samples"] * 3, out
+    s = rd.System.from_toml(model)
+    for f, mu in zip(out["parameter"], out["max_multiplier"]):
+        lam = rd.stability(s, float(f)).eigenvalues
+        assert mu == pytest.approx(np.exp(np.max(lam.real) / f), rel=1e-5)
+    for extra, flag in ((["--floquet", "hill"], "--floquet"),
+                        (["--floquet-tol", "1e-3"], "--floquet-tol"),
+                        (["--floquet", "flow", "--floquet-margin", "0.1"], "--floquet-margin"),
+                        (["--floquet", "samples", "--floquet-tol", "0.7"], "--floquet-tol")):
+        assert main(base + extra) == 2, extra
+        assert flag in capsys.readouterr().err

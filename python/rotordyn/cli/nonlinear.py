@@ -12,6 +12,7 @@ import numpy as np
 from rotordyn import analysis
 from rotordyn.analysis.assembly import OPERATING
 from rotordyn.analysis.continuation import CLI_NEWTON, DEFAULT_NEWTON
+from rotordyn.analysis.continuation import SHOOTING_FLOQUET as SHOOTING_BRANCH_FLOQUET
 from rotordyn.analysis.field_axis import field_parameter
 from rotordyn.analysis.hopf import hopf_branch
 from rotordyn.analysis.periodic import SHOOTING_FLOQUET
@@ -67,14 +68,15 @@ def register(sub) -> None:
                    help="points on the branch (default 50 for orbits, 200 for equilibria)")
     c.add_argument("--direction", type=int, choices=[1, -1], default=1,
                    help="leave the start towards growing (1) or falling (-1) parameter")
-    _hb_arguments(c, floquet=("samples", "hill", "flow"))
+    _hb_arguments(c, floquet=("samples", "hill", "flow"), shooting_floquet="branch")
     c.add_argument("--floquet-margin", type=float, default=None, metavar="F",
-                   help="harmonic balance: the multipliers from the samples are recomputed by "
+                   help="--floquet samples (harmonic balance: also hill): the multipliers "
+                        "from the samples are recomputed by "
                         "one CVODES sensitivity flow where |mu_c| is within F of 1 or the "
                         "trivial multiplier is off 1 by more than F/2, in [0, 0.5] (default "
                         "0.01)")
     c.add_argument("--floquet-tol", type=float, default=None, metavar="TOL",
-                   help="harmonic balance with --floquet samples: where the screen calls a "
+                   help="--floquet samples (either method): where the screen calls a "
                         "point's verdict close (--floquet-margin), refine its multipliers "
                         "(Magnus steps doubled) until |mu_c| moves by at most "
                         "TOL·max(1, |mu_c|) before any flow, in [0, 0.5] (default 0: the "
@@ -140,7 +142,7 @@ HB_FLAGS = (("harmonics", "--harmonics", 8), ("samples", "--samples", None),
 
 
 def _hb_arguments(s, floquet=("samples", "hill", "flow", "none"),
-                  shooting_floquet: bool = False) -> None:
+                  shooting_floquet: bool | str = False) -> None:
     s.add_argument("--method", choices=["shooting", "harmonic_balance"], default="shooting",
                    help="shooting (default): Newton on the CVODES flow over one period; "
                         "harmonic_balance: Newton on the Fourier coefficients of the orbit "
@@ -157,7 +159,12 @@ def _hb_arguments(s, floquet=("samples", "hill", "flow", "none"),
                         "on the harmonic-balance Jacobian (hill: no film solve), from one "
                         "CVODES sensitivity flow at --rtol (flow)"
                         + (", or none" if "none" in floquet else "")
-                        + ("; shooting: flow (default: the converged orbit once more with "
+                        + ("; shooting: flow (default: every point's converged orbit once "
+                           "more with the sensitivities in the error test) or samples (from "
+                           "the orbit's samples, the flow only where the verdict is within "
+                           "--floquet-margin: cheaper with --newton exact; docs/nonlinear.md)"
+                           if shooting_floquet == "branch" else
+                           "; shooting: flow (default: the converged orbit once more with "
                            "the sensitivities in the error test), samples (Magnus on the "
                            "orbit's 200 samples, refined: fast on flexible rotors) or "
                            "none" if shooting_floquet else ""))
@@ -369,16 +376,21 @@ def _cmd_continuation(args) -> int:
     for k, val in ORBIT_DEFAULTS.items():
         if getattr(args, k) is None:
             setattr(args, k, val)
-    hb = _hb_options(args)
+    if args.method != "harmonic_balance" and args.floquet is not None \
+            and args.floquet not in SHOOTING_BRANCH_FLOQUET:
+        raise InputError(f"--floquet: with --method shooting expected one of "
+                         f"{', '.join(SHOOTING_BRANCH_FLOQUET)}, got {args.floquet!r}")
+    hb = _hb_options(args, shooting_floquet=True)
     method = hb["method"]
-    if method != "harmonic_balance" and args.floquet_margin is not None:
-        raise InputError("--floquet-margin: applies only to --method harmonic_balance")
+    fq = hb["floquet"] or ("samples" if method == "harmonic_balance" else "flow")
     if args.floquet_margin is not None:
+        if method != "harmonic_balance" and fq != "samples":
+            raise InputError("--floquet-margin: applies only to --floquet samples with "
+                             "--method shooting (the flow route screens nothing)")
         v.in_range("--floquet-margin", args.floquet_margin, 0.0, 0.5)
     if args.floquet_tol is not None:
-        if method != "harmonic_balance" or hb["floquet"] != "samples":
-            raise InputError("--floquet-tol: applies only to --method harmonic_balance with "
-                             "--floquet samples")
+        if fq != "samples":
+            raise InputError("--floquet-tol: applies only to --floquet samples")
         v.in_range("--floquet-tol", args.floquet_tol, 0.0, 0.5)
     newton = args.newton
     s = models.load(args.model)
@@ -401,7 +413,8 @@ def _cmd_continuation(args) -> int:
             return 1
         # the start by the branch's method (harmonic balance: its multipliers from the
         # samples; the branch's first corrector solves it again with the branch's options)
-        start_how = {**hb, "floquet": "samples"} if method == "harmonic_balance" else hb
+        start_how = ({**hb, "floquet": "samples"} if method == "harmonic_balance" else
+                     {"method": "shooting"})
         orbit = analysis.periodic_orbit(s, args.speed_hz, args.chamber_pressure_pa,
                                         args.config_ay_m, kind=args.kind, start=start,
                                         unbalances=ub, subharmonic=args.subharmonic,
@@ -413,8 +426,9 @@ def _cmd_continuation(args) -> int:
         how = {"method": method, "harmonics": hb["harmonics"], "time_points": hb["time_points"],
                "floquet": hb["floquet"], "floquet_margin": args.floquet_margin,
                "floquet_tol": args.floquet_tol}
-    else:
-        how = {"newton": newton}
+    else:  # shooting: its route, and the screen's options with samples
+        how = {"newton": newton, "floquet": fq, "floquet_margin": args.floquet_margin,
+               "floquet_tol": args.floquet_tol}
     steps = {"ds_max": max(0.2, args.ds) if args.ds_max is None else args.ds_max}
     if args.ds_min is not None:
         steps["ds_min"] = args.ds_min
