@@ -220,7 +220,9 @@ def test_grooved_bearing_draws_the_groove_flow():
     """With a supply groove (at 150°, near the maximum film of this load, whose attitude is
     ~50°) the heat balance takes the flow the groove delivers into the film
     (FilmResult.inlet_flow_m3_s at the thermal equilibrium), and the fresh flow a given supply
-    (below the film's demand, with carry-over) mixes hotter oil in: T_in > T_s."""
+    (below the film's demand, with carry-over) mixes hotter oil in: T_in > T_s. (The supply
+    was 0.5 Q, below the side leakage Q_s: a starved film since 2026-12-06, docs/film-physics.md
+    "A metered supply below the film's demand"; now Q_s + (Q − Q_s)/4, fed.)"""
     b = rotordyn.JournalBearing(diameter_m=0.1, length_m=0.05, clearance_m=1e-4,
                                 viscosity_pa_s=0.02, n_circ=36, n_axial=8,
                                 grooves=[rotordyn.Groove(center_deg=150.0, width_deg=20.0)])
@@ -234,7 +236,8 @@ def test_grooved_bearing_draws_the_groove_flow():
     assert r.inlet_temperature_c == 45.0
     r2 = b.thermal_equilibrium(load_n=(0.0, -5000.0), speed_hz=100.0, oil=VG32,
                                supply_temperature_c=45.0, carry_over=0.5,
-                               supply_flow_m3_s=0.5 * r.film_flow_m3_s)
+                               supply_flow_m3_s=r.side_flow_m3_s + 0.25 * (
+                                   r.film_flow_m3_s - r.side_flow_m3_s))
     assert r2.inlet_temperature_c > 45.0 + 1.0
     assert r2.effective_temperature_c > r.effective_temperature_c
 

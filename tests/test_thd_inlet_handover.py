@@ -29,7 +29,7 @@ import pytest
 import rotordyn
 
 MODELS = Path(__file__).parent / "data" / "models"
-FILM_KW = [dict(carry_over=0.6), dict(carry_over=0.4, supply_flow_m3_s=2.0e-5)]
+FILM_KW = [dict(carry_over=0.6), dict(carry_over=0.4, supply_flow_m3_s=3.0e-4)]
 
 
 def _compressor(**kw):
@@ -57,14 +57,17 @@ def test_100_hz_moves_by_millikelvin_only():
     # those offsets, the tolerance as before. Since the inlet cells heat the oil passing them
     # ("Heat of the inlet cells", 2026-12-05) the maxima moved from 74.8258, 77.5749 to
     # 75.1148, 77.8964 degC (+289.0, +321.5 mK, measured) and the films' means from 68.6196,
-    # 71.6953 to 68.9451, 72.2473 degC (+325.5, +552.0 mK): the references carry those too
+    # 71.6953 to 68.9451, 72.2473 degC (+325.5, +552.0 mK): the references carry those too.
+    # Since the DE bearing's metered supply is a fed 3e-4 m³/s (2026-12-06; its 2e-5 before
+    # starves the film under the mass-conserving mixing) the DE film is measured afresh:
+    # T_max 77.8964 -> 64.4936 degC, mean 72.2473 -> 56.6583 degC; the NDE film moved by
+    # -0.05 mK (75.1148 -> 75.11477 degC)
     r = rotordyn.system_thermal_equilibrium(_compressor(), speed_hz=100.0, model="thd")
     assert r.status == "ok"
     np.testing.assert_allclose(r.max_temperature_c,
-                               [74.83111813 - 0.0053 + 0.2890, 77.5978379 - 0.0230 + 0.3215],
-                               atol=0.01)
+                               [74.83111813 - 0.0053 + 0.2890, 64.4936], atol=0.01)
     np.testing.assert_allclose(r.effective_temperature_c,
-                               [68.57057131 + 0.3255, 71.71637222 + 0.5520], atol=0.1)
+                               [68.57057131 + 0.3255, 56.6583], atol=0.1)
 
 
 def test_120_hz_converges_and_equals_the_standalone_bearings():

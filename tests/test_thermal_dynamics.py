@@ -132,18 +132,19 @@ def test_sweep_flat_oil_rows_equal_isothermal_rows():
 
 def test_failed_thermal_equilibrium_is_a_status_row():
     s = _plain()
-    # 195 degC supply: the film leaves the viscosity law's range (t_max_c = 200 degC); the
-    # thermal equilibrium fails and the point is never linearised
-    job = _job("stability", {"thermal": {"supply_temperature_c": 195.0}},
+    # 197 degC supply: the film leaves the viscosity law's range (t_max_c = 200 degC); the
+    # thermal equilibrium fails and the point is never linearised (195 degC before the DE
+    # bearing's metered supply was raised to a fed 3e-4 m³/s, 2026-12-06)
+    job = _job("stability", {"thermal": {"supply_temperature_c": 197.0}},
                {"speed_hz": [150.0, 160.0]})
     t = run_chunk(job, 0, 0, 2).to_pandas()
     assert len(t) == 2 and set(t["status"]) == {"error"}
     assert t["message"].str.contains("viscosity law's range").all()
     assert t["eig_real_1_per_s"].isna().all()
-    c = rd.campbell(s, [150.0, 160.0], thermal=dict(supply_temperature_c=195.0))
+    c = rd.campbell(s, [150.0, 160.0], thermal=dict(supply_temperature_c=197.0))
     assert list(c.point_status) == ["error", "error"] and np.isnan(c.eigenvalues).all()
     with pytest.raises(rd.errors.ConvergenceError, match="viscosity law"):
-        rd.stability(s, 150.0, thermal=dict(supply_temperature_c=195.0))
+        rd.stability(s, 150.0, thermal=dict(supply_temperature_c=197.0))
 
 
 def test_a_failed_speed_says_why_in_the_api_results_and_unbalance_rows():
@@ -151,10 +152,10 @@ def test_a_failed_speed_says_why_in_the_api_results_and_unbalance_rows():
     (``point_message``; Campbell's ``to_frame()`` message column), as the sweep's stability and
     Campbell rows did. Before: the API's Campbell rows said status ``error`` with an empty
     message and the unbalance sweep rows only ``error``, so the cause (here the film past the
-    viscosity law's t_max_c at 150 Hz, while 100 Hz stays inside at a 195 degC supply) was
+    viscosity law's t_max_c at 150 Hz, while 100 Hz stays inside at a 197 degC supply) was
     lost."""
     s = _plain()
-    th = dict(supply_temperature_c=195.0)
+    th = dict(supply_temperature_c=197.0)
     c = rd.campbell(s, [100.0, 150.0], n_modes=2, thermal=th)
     assert list(c.point_status) == ["ok", "error"]
     assert c.point_message[0] is None and "viscosity law's range" in c.point_message[1]

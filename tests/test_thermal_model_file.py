@@ -35,7 +35,7 @@ def test_round_trip_and_plain_model_unchanged():
     assert s.thermal == ThermalModel(
         supply_temperature_c=45.0, carry_over=0.6,
         oil=Oil(density_kg_m3=860.0, specific_heat_j_per_kg_k=2000.0),
-        films=(ThermalFilm(bearing="DE bearing", carry_over=0.4, supply_flow_m3_s=2e-5),))
+        films=(ThermalFilm(bearing="DE bearing", carry_over=0.4, supply_flow_m3_s=3e-4),))
     assert rotordyn.System.from_toml(s.to_toml(), is_text=True) == s
     plain = rotordyn.System.from_toml(MODELS / "compressor_plain.toml")
     assert plain.thermal is None and "[thermal]" not in plain.to_toml()
@@ -64,7 +64,7 @@ def _text(**edit):
     ("t1_c = 40.0", "t1_c = 40.0\ncolour = 1", r"^thermal\.oil\.colour: unknown key"),
     ("bearing = \"DE bearing\"", "bearing = \"DE bearing\"\nflow = 1.0",
      r"^thermal\.film\[0\]\.flow: unknown key"),
-    ("supply_flow_m3_s = 2.0e-5", "supply_flow_m3_s = -2.0e-5",
+    ("supply_flow_m3_s = 3.0e-4", "supply_flow_m3_s = -3.0e-4",
      r"^thermal\.film\[0\]\.supply_flow_m3_s: expected >= 0"),
     ("bearing = \"DE bearing\"", "bearing = \"DE\"",
      r"^thermal\.film\[0\]\.bearing: expected the name of a plain or active journal bearing"),
@@ -105,7 +105,7 @@ def test_analysis_and_cli_take_the_models_oil_system(capsys):
     assert same.status == "ok"
     np.testing.assert_allclose(r.effective_temperature_c[0], same.effective_temperature_c[0],
                                rtol=1e-9)
-    assert r.supply_flow_m3_s[1] == pytest.approx(2e-5, rel=1e-12)  # the DE's metered flow
+    assert r.supply_flow_m3_s[1] == pytest.approx(3e-4, rel=1e-12)  # the DE's metered flow
     assert abs(r.effective_temperature_c[1] - same.effective_temperature_c[1]) > 1.0
     # an explicit argument overrides the model for every bearing
     over = system_thermal_equilibrium(s, speed_hz=SPEED, carry_over=0.6, supply_flow_m3_s=0.0)
@@ -201,9 +201,9 @@ def test_thermal_film_entry_on_an_active_bearing():
     r = system_thermal_equilibrium(s, speed_hz=SPEED, model="effective")
     assert r.status == "ok"
     fr = r.to_frame().set_index("bearing")
-    assert fr.loc["DE active bearing", "supply_flow_m3_s"] == pytest.approx(2e-5, rel=1e-12)
-    assert fr.loc["NDE bearing", "supply_flow_m3_s"] != pytest.approx(2e-5, rel=1e-3)
+    assert fr.loc["DE active bearing", "supply_flow_m3_s"] == pytest.approx(3e-4, rel=1e-12)
+    assert fr.loc["NDE bearing", "supply_flow_m3_s"] != pytest.approx(3e-4, rel=1e-3)
     lam = system_thermal_equilibrium(s, speed_hz=SPEED, model="effective", carry_over=0.4,
-                                     supply_flow_m3_s=2e-5).to_frame().set_index("bearing")
+                                     supply_flow_m3_s=3e-4).to_frame().set_index("bearing")
     assert fr.loc["DE active bearing", "effective_temperature_c"] == pytest.approx(
         lam.loc["DE active bearing", "effective_temperature_c"], abs=1e-4)

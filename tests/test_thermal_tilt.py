@@ -221,7 +221,9 @@ def test_compressor_on_misaligned_three_lobe_bearings_with_an_oil_system(tmp_pat
     assert np.all(e.h_min_m < e0.h_min_m)
     for b in s.bearings:
         rows = [i for i, n in enumerate(res.bearing_names) if n.startswith(b.name + ".")]
-        assert res.max_temperature_c[rows].max() > al.max_temperature_c[rows].max() + 0.1
+        # (DE: +0.078 K since its metered supply is a fed 3e-4 m³/s, 2026-12-06; the 2e-5
+        # before left the film short of oil and hotter, the margin > 0.1 K)
+        assert res.max_temperature_c[rows].max() > al.max_temperature_c[rows].max() + 0.05
     st0 = rotordyn.stability(_compressor(0.0), speed_hz=SPEED, thermal=True)
     assert abs(np.max(st.eigenvalues.real) - np.max(st0.eigenvalues.real)) > 0.1  # 1/s
     # the model file keeps the tilt and the oil system; the misalignment is an axis of the

@@ -15,6 +15,7 @@ PyObject* new_exc(py::module_& m, const char* name, PyObject* bases, const char*
 PyObject* g_base = nullptr;
 PyObject* g_input = nullptr;
 PyObject* g_conv = nullptr;
+PyObject* g_starved = nullptr;
 PyObject* g_contact = nullptr;
 PyObject* g_sundials = nullptr;
 }  // namespace
@@ -26,6 +27,13 @@ void bind_errors(py::module_& m) {
                     "Bad input: the message names the field and the allowed range.");
   py::tuple rt_bases = py::make_tuple(py::handle(g_base), py::handle(PyExc_RuntimeError));
   g_conv = new_exc(m, "ConvergenceError", rt_bases.ptr(), "An iteration did not converge.");
+  {  // a ConvergenceError whose status is "starved" (class attribute, as failed equilibria's)
+    py::tuple st_bases = py::make_tuple(py::handle(g_conv));
+    g_starved = new_exc(m, "StarvedFilmError", st_bases.ptr(),
+                        "A thermal film's metered supply and its hot oil fall short of the "
+                        "flow it draws (status 'starved').");
+    py::setattr(py::handle(g_starved), "status", py::str("starved"));
+  }
   g_contact = new_exc(m, "ContactError", rt_bases.ptr(),
                       "Journal and bush (or sleeve) are in contact.");
   g_sundials = new_exc(m, "SundialsError", rt_bases.ptr(), "A SUNDIALS call failed.");
@@ -36,6 +44,8 @@ void bind_errors(py::module_& m) {
       PyErr_SetString(g_input, e.what());
     } catch (const rotordyn::ContactError& e) {
       PyErr_SetString(g_contact, e.what());
+    } catch (const rotordyn::StarvedError& e) {
+      PyErr_SetString(g_starved, e.what());
     } catch (const rotordyn::ConvergenceError& e) {
       PyErr_SetString(g_conv, e.what());
     } catch (const rotordyn::SundialsError& e) {

@@ -45,6 +45,7 @@ void bind_thd(py::module_& m) {
       .def_readonly("recirculation_flow_m3_s", &ThdFilmState::recirculation_flow_m3_s)
       .def_readonly("side_flow_m3_s", &ThdFilmState::side_flow_m3_s)
       .def_readonly("supply_flow_m3_s", &ThdFilmState::supply_flow_m3_s)
+      .def_readonly("carry_over_effective", &ThdFilmState::carry_over_effective)
       .def_readonly("heat_to_journal_w", &ThdFilmState::heat_to_journal_w)
       .def_readonly("heat_to_bush_w", &ThdFilmState::heat_to_bush_w)
       .def_readonly("journal_temperature_c", &ThdFilmState::journal_temperature_c)

@@ -56,6 +56,7 @@ void bind_thermal(py::module_& m) {
       .def_readonly("film_flow_m3_s", &ThermalEquilibrium::film_flow_m3_s)
       .def_readonly("side_flow_m3_s", &ThermalEquilibrium::side_flow_m3_s)
       .def_readonly("supply_flow_m3_s", &ThermalEquilibrium::supply_flow_m3_s)
+      .def_readonly("carry_over_effective", &ThermalEquilibrium::carry_over_effective)
       .def_readonly("iterations", &ThermalEquilibrium::iterations)
       .def_readonly("equilibrium_iterations", &ThermalEquilibrium::equilibrium_iterations);
 
@@ -82,6 +83,8 @@ void bind_thermal(py::module_& m) {
       .def_readonly("film_flow_m3_s", &ThermalFilmState::film_flow_m3_s)
       .def_readonly("side_flow_m3_s", &ThermalFilmState::side_flow_m3_s)
       .def_readonly("supply_flow_m3_s", &ThermalFilmState::supply_flow_m3_s)
+      .def_readonly("carry_over_effective", &ThermalFilmState::carry_over_effective)
+      .def_readonly("starved", &ThermalFilmState::starved)
       .def_readonly("mean_temperature_c", &ThermalFilmState::mean_temperature_c)
       .def_readonly("temperature_c", &ThermalFilmState::temperature_c)
       .def_readonly("viscosity_field", &ThermalFilmState::viscosity_field)

@@ -446,8 +446,16 @@ ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
                         const OilModel& oil, const ThdOptions& opt, double omega) {
   ThdFieldParts parts = thd_field(solver, sol, oil, opt, omega, false);
   const double Q = parts.Q, Qr = parts.Qr, Ts = opt.supply_temperature_c;
-  const double lam = opt.carry_over;
-  const double Qf = opt.supply_flow_m3_s > 0.0 ? opt.supply_flow_m3_s : Q - lam * Qr;
+  // the mixing (thermal_detail.hpp supply_mixing): λ, or λ_eff = (Q − Q_f)/Q_r where a
+  // metered supply falls short of the demand Q − λ Q_r (starved: Q_f + Q_r < Q)
+  double qs = 0.0;  // the film's side leakage: it keeps Q − Q_s (supply_mixing's Qr_avail)
+  for (double q : parts.side_out) qs += q;
+  const double Qr_avail = std::min(Qr, std::max(Q - qs, 0.0));
+  const SupplyMixing mix = supply_mixing(Q, Qr, opt.carry_over, opt.supply_flow_m3_s, Qr_avail);
+  const double Qf = mix.qf;
+  if (mix.starved && !(Qr > 0.0))
+    throw StarvedError(starved_message("THD energy equation", Qf, Q, Qr_avail));
+  const double lam = mix.made_up ? mix.lam_eff : opt.carry_over;
   if (!(Q > 0.0 && Qf > 0.0))
     throw ConvergenceError("THD energy equation: the film draws no fresh oil (flow from the "
                            "inlet " + num(Q) + " m^3/s, carried over " + num(lam * Qr) +
@@ -465,12 +473,18 @@ ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
         M.fullPivLu().solve(Eigen::Vector2d(Qf * Ts + lam * parts.ta + s0, -parts.ja));
     if (!x.allFinite())
       throw ConvergenceError("THD energy equation: the journal's heat balance is singular");
-    return thd_state(std::move(parts), sol, opt, omega, x[0], Qf, x[1]);
+    ThdFilmState st = thd_state(std::move(parts), sol, opt, omega, x[0], Qf, x[1]);
+    st.carry_over_effective = lam;
+    st.starved = mix.starved;
+    return st;
   }
   const double Tin = (Qf * Ts + lam * parts.ta + s0) / (Qf + lam * Qr - lam * parts.tb - s1);
   if (!std::isfinite(Tin))
     throw ConvergenceError("THD energy equation: non-finite inlet temperature");
-  return thd_state(std::move(parts), sol, opt, omega, Tin, Qf);
+  ThdFilmState st = thd_state(std::move(parts), sol, opt, omega, Tin, Qf);
+  st.carry_over_effective = lam;
+  st.starved = mix.starved;
+  return st;
 }
 
 ThdFilmState thd_state(ThdFieldParts&& parts, const FilmSolution& sol, const ThdOptions& opt,
@@ -567,6 +581,14 @@ double thd_residual_k(const Eigen::Ref<const Eigen::VectorXd>& G,
   return r;
 }
 
+namespace {
+/// The hot oil that may reach a plain film's inlet, min(Q_r, Q − Q_s) (thd_energy)
+double hot_oil(const ThdFilmState& st) {
+  return std::min(st.recirculation_flow_m3_s,
+                  std::max(st.film_flow_m3_s - st.side_flow_m3_s, 0.0));
+}
+}  // namespace
+
 ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
                                const ThdOptions& opt, double lx, double ly, double omega) {
   oil.validate();
@@ -581,6 +603,7 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
   RowMatrixXd mu(N, K1);
   double x = 0.0, y = 0.0;
   AndersonMixer mixer;  // T -> G(T) accelerated
+  std::string starved;  // the last iterate's message, when it was starved
   for (int it = 1; it <= opt.max_iter; ++it) {
     for (int n = 0; n < nn; ++n) {
       if (!(T[n] <= oil.t_max_c))
@@ -618,6 +641,8 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
     }
     const FilmSolution* sol = &solver.rigid(x, y, 0.0, 0.0, omega);
     ThdFilmState st = thd_energy(solver, *sol, oil, opt, omega);
+    starved = st.starved ? starved_message("THD equilibrium", st.supply_flow_m3_s,
+                                           st.film_flow_m3_s, hot_oil(st)) : std::string();
     const Eigen::VectorXd G = Eigen::Map<const Eigen::VectorXd>(st.temperature_c.data(), nn);
     const double res = thd_residual_k(G, T, oil.t_max_c);
     out.iterations = it;
@@ -636,6 +661,9 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
           continue;
         }
       }
+      if (st.starved)  // no equilibrium of the full film (thermal_detail.hpp supply_mixing)
+        throw StarvedError(starved_message("THD equilibrium", st.supply_flow_m3_s,
+                                           st.film_flow_m3_s, hot_oil(st)));
       out.equilibrium = eq;
       out.coefficients = solver.coefficients(x, y, omega);
       out.film = std::move(st);
@@ -650,6 +678,7 @@ ThdEquilibrium thd_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
     if (mirror_symmetric(sol->h_m)) symmetrize(Tn.data(), N, K1);
     T = Tn;
   }
+  if (!starved.empty()) throw StarvedError(starved);  // the last iterate was starved
   throw ConvergenceError("THD equilibrium: the film temperature did not settle to " +
                          num(opt.tol_k) + " K in " + std::to_string(opt.max_iter) +
                          " iterations");

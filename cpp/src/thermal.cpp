@@ -205,8 +205,12 @@ ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, do
   }
   const double Ts = opt.supply_temperature_c;
   const double Qr = std::max(Q - Qs, 0.0);
-  const double Qf = opt.supply_flow_m3_s > 0.0 ? opt.supply_flow_m3_s : Q - opt.carry_over * Qr;
-  const double m = opt.carry_over * Qr / Qf + opt.effective_factor;
+  const SupplyMixing mix = supply_mixing(Q, Qr, opt.carry_over, opt.supply_flow_m3_s);
+  const double Qf = mix.qf;
+  const std::string where =
+      "thermal equilibrium" + (name.empty() ? std::string() : ", film '" + name + "'");
+  if (mix.starved && !(Qr > 0.0)) throw StarvedError(starved_message(where, Qf, Q, Qr));
+  const double m = mix.carried / Qf + opt.effective_factor;
   const double a = P / (mu * rc * denom);
   auto g = [&](double t) { return t - Ts - m * a * oil.viscosity_pa_s(t); };
   double lo = Ts, hi = std::min(Ts + m * a * oil.viscosity_pa_s(Ts), oil.t_max_c);
@@ -216,10 +220,11 @@ ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, do
                                              std::max(1.0, std::abs(Ts)), oil.t_max_c);
     ghi = g(hi);
   }
-  if (ghi < 0.0)
-    throw ConvergenceError("thermal equilibrium" + (name.empty() ? "" : ", film '" + name + "'") +
-                           ": the film temperature exceeds the viscosity law's range (t_max_c = " +
-                           num(oil.t_max_c) + " degC)");
+  if (ghi < 0.0) {
+    if (mix.starved) throw StarvedError(starved_message(where, Qf, Q, Qr));
+    throw ConvergenceError(where + ": the film temperature exceeds the viscosity law's range "
+                           "(t_max_c = " + num(oil.t_max_c) + " degC)");
+  }
   for (int k = 0; k < 200 && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++k) {
     double t = hi - ghi * (hi - lo) / (ghi - glo);
     if (!(t > lo && t < hi) || k % 3 == 2) t = 0.5 * (lo + hi);
@@ -239,14 +244,23 @@ ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, do
   ThermalFilmState st;
   st.effective_temperature_c = 0.5 * (lo + hi);  // the new temperature
   st.temperature_rise_k = P / (rc * denom);       // ΔT at μ
-  st.inlet_temperature_c = Ts + opt.carry_over * Qr * st.temperature_rise_k / Qf;
+  st.inlet_temperature_c = Ts + mix.carried * st.temperature_rise_k / Qf;
   st.max_temperature_c = st.inlet_temperature_c + st.temperature_rise_k;
   st.viscosity_pa_s = mu;
   st.power_loss_w = P;
   st.film_flow_m3_s = Q;
   st.side_flow_m3_s = Qs;
   st.supply_flow_m3_s = Qf;
+  st.carry_over_effective = mix.lam_eff;
+  st.starved = mix.starved;
   return st;
+}
+
+std::string starved_message(const std::string& where, double Qf, double Q, double Qr) {
+  return where + ": starved: the metered supply Q_f = " + num(Qf) + " m^3/s and all the hot "
+         "oil reaching the inlet Q_r = " + num(Qr) + " m^3/s fall short of the flow the film "
+         "draws, Q = " + num(Q) + " m^3/s; a supply of at least Q - Q_r = " + num(Q - Qr) +
+         " m^3/s feeds it (a starved film's reduced wetted arc is not modelled)";
 }
 
 ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& oil,
@@ -259,6 +273,7 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
     throw InputError("speed_hz: the thermal equilibrium needs a nonzero speed");
   const double Ts = opt.supply_temperature_c;
   ThermalEquilibrium out;
+  std::string starved;  // the last iterate's, when starved (its failure is the starvation)
   double T = Ts, x = 0.0, y = 0.0;
   double T_prev = Ts, f_prev = std::numeric_limits<double>::quiet_NaN();
   for (int it = 1; it <= opt.max_iter; ++it) {
@@ -280,7 +295,10 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
     const ThermalFilmState st = heat_balance(oil, opt, mu, P, Q, Qs, "");
     const double Tn = st.effective_temperature_c;  // the heat balance's temperature at this position
     out.iterations = it;
+    starved = st.starved ? starved_message("thermal equilibrium", st.supply_flow_m3_s, Q,
+                                           std::max(Q - Qs, 0.0)) : std::string();
     if (std::abs(Tn - T) <= opt.tol_k) {
+      if (st.starved) throw StarvedError(starved);  // no equilibrium of the full film
       out.equilibrium = eq;
       out.coefficients = solver.coefficients(x, y, omega);
       out.viscosity_pa_s = mu;
@@ -292,6 +310,7 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
       out.film_flow_m3_s = Q;
       out.side_flow_m3_s = Qs;
       out.supply_flow_m3_s = st.supply_flow_m3_s;
+      out.carry_over_effective = st.carry_over_effective;
       if (!(out.max_temperature_c <= oil.t_max_c))
         throw ConvergenceError("thermal equilibrium: the maximum film temperature " +
                                num(out.max_temperature_c) + " degC exceeds the viscosity "
@@ -312,6 +331,7 @@ ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& o
     f_prev = f;
     T = Tnext;
   }
+  if (!starved.empty()) throw StarvedError(starved);
   throw ConvergenceError("thermal equilibrium: the effective temperature did not settle to " +
                          num(opt.tol_k) + " K in " + std::to_string(opt.max_iter) +
                          " iterations");

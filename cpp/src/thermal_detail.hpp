@@ -22,6 +22,54 @@ using format_detail::num;  // a number in the thermal films' error messages
 void validate_supply(const OilModel& oil, double supply_temperature_c, double supply_flow_m3_s,
                      double carry_over);
 
+/// The oil a film's inlet mixes (docs/film-physics.md "A metered supply below the film's
+/// demand"): the film draws Q; the hot flow Q_r reaches its inlet (a plain film's own
+/// recirculation, a pad's: the upstream pad's outflow); λ the given carry-over.
+/// * no metered supply (metered <= 0): Q_f = Q − λ Q_r, the film's own demand; when λ Q_r
+///   exceeds Q the film draws Q of hot oil alone (Q_f = 0, carried = Q);
+/// * metered Q_f with Q_f + λ Q_r >= Q: carried = λ Q_r; the surplus Q_f + λ Q_r − Q mixes
+///   at the inlet (it cools T_in) and leaves there, not through the film;
+/// * metered Q_f with Q_f + λ Q_r < Q: the shortfall is made up by more hot oil, carried =
+///   Q − Q_f (λ_eff = carried / Q_r): Q T_in = Q_f T_s + carried T_r, mass-conserving;
+/// * starved when carried > Q_r (Q_f + Q_r < Q; also Q_r = 0): more hot oil than reaches the
+///   inlet — the mixing is still carried = Q − Q_f (a continuation, so that an iterate can
+///   pass through), but no equilibrium of the full film may be reported from it.
+struct SupplyMixing {
+  double qf = 0.0;        ///< fresh flow mixed at T_s, m³/s
+  double carried = 0.0;   ///< hot flow mixed at T_r, m³/s
+  double lam_eff = 0.0;   ///< carried / Q_r (exactly the given λ where that is carried)
+  bool made_up = false;   ///< a metered supply's shortfall made up by hot oil
+  bool starved = false;
+};
+/// `Qr_avail` (default Q_r): the hot oil that may make up a shortfall — a THD plain film's
+/// flux into its inlet may exceed what the film keeps, Q − Q_s (the oil a Swift–Stieber film
+/// adds where it reforms is no supply), so it passes min(Q_r, Q − Q_s): starved when
+/// carried > Q_r_avail.
+inline SupplyMixing supply_mixing(double Q, double Qr, double lam, double metered,
+                                  double Qr_avail = -1.0) {
+  if (Qr_avail < 0.0) Qr_avail = Qr;
+  SupplyMixing s;
+  s.carried = Qr > 0.0 ? lam * Qr : 0.0;
+  s.qf = metered > 0.0 ? metered : Q - s.carried;
+  s.lam_eff = lam;
+  if (!(metered > 0.0) && s.qf < 0.0) {  // more hot oil than the film draws
+    s.carried = Q;
+    s.qf = 0.0;
+    s.lam_eff = Q / Qr;
+  }
+  if (metered > 0.0 && s.qf + s.carried < Q) {  // the shortfall: more hot oil
+    s.carried = Q - s.qf;
+    s.starved = !(s.carried <= Qr_avail);
+    s.made_up = true;
+    if (Qr > 0.0) s.lam_eff = s.carried / Qr;
+  }
+  return s;
+}
+
+/// The message of a starved film (StarvedError): its metered supply Q_f, the flow it draws Q,
+/// the hot flow reaching its inlet Q_r and the least supply that feeds it, Q − Q_r.
+std::string starved_message(const std::string& where, double Qf, double Q, double Qr);
+
 /// A turbulent film's density (its Reynolds number ρ|ω|R h/μ) and the thermal oil's (the heat
 /// balance, the Walther law's μ = ρν) are one oil's: InputError naming `where` +
 /// "density_kg_m3" when they differ by more than 1e-9 relative. A laminar film's density is

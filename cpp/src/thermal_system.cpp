@@ -36,6 +36,8 @@ bool take_thd_state(const ThdFilmState& ts, const ThermalFilm& tf, const Eigen::
   st.film_flow_m3_s = ts.film_flow_m3_s;
   st.side_flow_m3_s = ts.side_flow_m3_s;
   st.supply_flow_m3_s = ts.supply_flow_m3_s;
+  st.carry_over_effective = ts.carry_over_effective;
+  st.starved = ts.starved;
   st.recirculation_flow_m3_s = ts.recirculation_flow_m3_s;
   st.recirculation_temperature_c = ts.recirculation_temperature_c;
   st.temperature_c = ts.temperature_c;
@@ -90,7 +92,8 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
   }
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
-  std::vector<double> Qf(thermal.size(), 0.0);
+  std::vector<double> Qf(thermal.size(), 0.0), lam_eff(thermal.size(), 0.0);
+  std::vector<char> starved(thermal.size(), 0);
   for (int r = 0; r < nr; ++r) {
     const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
     const std::size_t u = static_cast<std::size_t>(thermal[i].upstream);
@@ -101,12 +104,15 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
       throw InputError("thermal[" + std::to_string(i) + "].upstream: film '" +
                        m.films[thermal[u].film].name + "' is not a pad film");
     const ThdFieldParts& pu = parts[u];
-    double carried = pu.Qr > 0.0 ? o.carry_over * pu.Qr : 0.0;
-    double qf = o.supply_flow_m3_s > 0.0 ? o.supply_flow_m3_s : pi.Q - carried;
-    if (!(o.supply_flow_m3_s > 0.0) && qf < 0.0) {  // more hot oil than the pad draws
-      carried = pi.Q;
-      qf = 0.0;
-    }
+    // the pad's inlet mixes its supply share with the upstream pad's outflow Q_r,u (a
+    // metered share below the demand draws more of it; starved: Q_f + Q_r,u < Q)
+    const SupplyMixing mix = supply_mixing(pi.Q, pu.Qr, o.carry_over, o.supply_flow_m3_s);
+    const double carried = mix.carried, qf = mix.qf;
+    if (mix.starved && !(pu.Qr > 0.0))
+      throw StarvedError(starved_message("THD energy equation, film '" + name + "'", qf, pi.Q,
+                                         pu.Qr));
+    lam_eff[i] = mix.lam_eff;
+    starved[i] = mix.starved ? 1 : 0;
     if (!(pi.Q > 0.0 && qf + carried > 0.0))
       throw ConvergenceError("THD energy equation, film '" + name + "': the pad draws no oil "
                              "(flow from the inlet " + num(pi.Q) + " m^3/s)");
@@ -135,6 +141,8 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
                                 tin[r], Qf[i],
                                 jrow[r] >= 0 ? tin[jrow[r]]
                                              : std::numeric_limits<double>::quiet_NaN());
+    ts.carry_over_effective = lam_eff[i];
+    ts.starved = starved[i] != 0;
     if (!take_thd_state(ts, thermal[i], X, off[i], off[i + 1] - off[i], GX, films[i]))
       done = false;
   }
@@ -167,17 +175,18 @@ PadBalance pad_balance(const ReynoldsSolver& rs, const FilmSolution& sol, const 
 
 /// The carry-over of the THD pads (pad_states): the carried-over flow λ Q_out,u (all of the
 /// pad's demand when it exceeds it) and the fresh flow Q_f.
-void pad_mixing(const ThermalOptions& o, double Q, double Qout_u, const std::string& name,
-                double& qf, double& carried) {
-  carried = Qout_u > 0.0 ? o.carry_over * Qout_u : 0.0;
-  qf = o.supply_flow_m3_s > 0.0 ? o.supply_flow_m3_s : Q - carried;
-  if (!(o.supply_flow_m3_s > 0.0) && qf < 0.0) {  // more hot oil than the pad draws
-    carried = Q;
-    qf = 0.0;
-  }
+SupplyMixing pad_mixing(const ThermalOptions& o, double Q, double Qout_u,
+                        const std::string& name, double& qf, double& carried) {
+  const SupplyMixing mix = supply_mixing(Q, Qout_u, o.carry_over, o.supply_flow_m3_s);
+  carried = mix.carried;
+  qf = mix.qf;
+  if (mix.starved && !(Qout_u > 0.0))
+    throw StarvedError(starved_message("thermal equilibrium, film '" + name + "'", qf, Q,
+                                       Qout_u));
   if (!(Q > 0.0 && qf + carried > 0.0))
     throw ConvergenceError("thermal equilibrium, film '" + name + "': the pad draws no oil "
                            "(flow into its leading edge " + num(Q) + " m^3/s)");
+  return mix;
 }
 
 /// The effective-temperature pad films (ThermalFilm::upstream >= 0, thd = false): per pad the
@@ -211,7 +220,8 @@ void effective_pad_states(const std::vector<ThermalFilm>& thermal,
                        "' is not an effective-temperature pad film");
     return pos[static_cast<std::size_t>(u)];
   };
-  std::vector<double> qf(nr), carried(nr), dT(nr), den(nr);
+  std::vector<double> qf(nr), carried(nr), dT(nr), den(nr), lam_eff(nr);
+  std::vector<char> starved(nr, 0);
   const auto name = [&](int r) {
     return m.films[thermal[static_cast<std::size_t>(ring[static_cast<std::size_t>(r)])].film].name;
   };
@@ -233,8 +243,11 @@ void effective_pad_states(const std::vector<ThermalFilm>& thermal,
     const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
     const int u = up(r);
     const PadBalance& pb = bal[i];
-    pad_mixing(thermal[i].options, pb.Q, bal[static_cast<std::size_t>(ring[u])].Qout, name(r),
-               qf[r], carried[r]);
+    const SupplyMixing mix = pad_mixing(thermal[i].options, pb.Q,
+                                        bal[static_cast<std::size_t>(ring[u])].Qout, name(r),
+                                        qf[r], carried[r]);
+    lam_eff[r] = mix.lam_eff;
+    starved[r] = mix.starved ? 1 : 0;
     // (Q_f + c) T_in,r − c T_in,u = Q_f T_s + c ΔT_u
     A(r, r) += qf[r] + carried[r];
     A(r, u) -= carried[r];
@@ -258,6 +271,8 @@ void effective_pad_states(const std::vector<ThermalFilm>& thermal,
     st.film_flow_m3_s = pb.Q;
     st.side_flow_m3_s = pb.Qs;
     st.supply_flow_m3_s = qf[r];
+    st.carry_over_effective = lam_eff[r];
+    st.starved = starved[r] != 0;
     st.recirculation_flow_m3_s = pb.Qout;
     films[i] = st;
   }
@@ -319,6 +334,33 @@ void effective_pad_states(const std::vector<ThermalFilm>& thermal,
     T[i] = std::isfinite(xn[r]) ? std::clamp(xn[r], thermal[i].options.supply_temperature_c,
                                              thermal[i].oil.t_max_c) : g[r];
   }
+}
+
+/// Status "starved" on `out` when one of its films' current states is starved (the first, by
+/// the thermal list's order; its message names the film and gives Q_f, Q, Q_r and the least
+/// supply Q − Q_r); false when none is.
+bool starved_status(ThermalSystemResult& out, const std::vector<ThermalFilm>& thermal,
+                    const SystemModel& m) {
+  for (std::size_t i = 0; i < out.films.size(); ++i) {
+    const ThermalFilmState& f = out.films[i];
+    if (!f.starved) continue;
+    const double Q = f.film_flow_m3_s, Qf = f.supply_flow_m3_s;
+    // the hot oil available (supply_mixing): a plain effective film's Q − Q_s, a THD plain
+    // film's min(Q_r, Q − Q_s), a pad's the upstream pad's outflow
+    double Qr = 0.0;
+    if (thermal[i].upstream >= 0) {
+      Qr = out.films[static_cast<std::size_t>(thermal[i].upstream)].recirculation_flow_m3_s;
+    } else {
+      Qr = std::max(Q - f.side_flow_m3_s, 0.0);
+      if (thermal[i].thd) Qr = std::min(Qr, f.recirculation_flow_m3_s);
+    }
+    out.equilibrium.status = "starved";
+    out.equilibrium.message = starved_message(
+        "thermal equilibrium, film '" + m.films[static_cast<std::size_t>(thermal[i].film)].name +
+            "'", Qf, Q, Qr);
+    return true;
+  }
+  return false;
 }
 }  // namespace
 
@@ -421,67 +463,78 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
     const Eigen::VectorXd& r = out.equilibrium.r;
     r0 = r;
     bool done = true;
-    std::vector<ThdFieldParts> parts(thermal.size());
-    std::vector<const FilmSolution*> sols(thermal.size(), nullptr);
-    std::vector<double> wfs(thermal.size(), 0.0);
-    std::vector<PadBalance> bal(thermal.size());
-    std::vector<char> eff_pad(thermal.size(), 0);
-    // the next temperature of an effective-temperature film: the map T -> Tn with a per-film
-    // secant step once two iterates exist (safeguarded as in thermal_equilibrium; the films
-    // couple only weakly, through the positions)
-    auto next = [&](std::size_t i, double Tn) {
-      const double f = Tn - T[i];
-      double Tnext = Tn;
-      if (it > 1 && std::isfinite(f_prev[i]) && f != f_prev[i]) {
-        const double ts = T[i] - f * (T[i] - T_prev[i]) / (f - f_prev[i]);
-        if (std::isfinite(ts) && ts > thermal[i].options.supply_temperature_c &&
-            ts < thermal[i].oil.t_max_c && std::abs(ts - T[i]) <= 4.0 * std::abs(f))
-          Tnext = ts;
+    for (ThermalFilmState& f : out.films) f.starved = false;  // this iteration's flags
+    try {  // a starved film ends the iteration with status "starved" (starved_status)
+      std::vector<ThdFieldParts> parts(thermal.size());
+      std::vector<const FilmSolution*> sols(thermal.size(), nullptr);
+      std::vector<double> wfs(thermal.size(), 0.0);
+      std::vector<PadBalance> bal(thermal.size());
+      std::vector<char> eff_pad(thermal.size(), 0);
+      // the next temperature of an effective-temperature film: the map T -> Tn with a per-film
+      // secant step once two iterates exist (safeguarded as in thermal_equilibrium; the films
+      // couple only weakly, through the positions)
+      auto next = [&](std::size_t i, double Tn) {
+        const double f = Tn - T[i];
+        double Tnext = Tn;
+        if (it > 1 && std::isfinite(f_prev[i]) && f != f_prev[i]) {
+          const double ts = T[i] - f * (T[i] - T_prev[i]) / (f - f_prev[i]);
+          if (std::isfinite(ts) && ts > thermal[i].options.supply_temperature_c &&
+              ts < thermal[i].oil.t_max_c && std::abs(ts - T[i]) <= 4.0 * std::abs(f))
+            Tnext = ts;
+        }
+        T_prev[i] = T[i];
+        f_prev[i] = f;
+        T[i] = Tnext;
+      };
+      for (std::size_t i = 0; i < thermal.size(); ++i) {
+        const FilmCoupling& fc = m.films[thermal[i].film];
+        Eigen::VectorXd rc(fc.coords.size());
+        for (std::size_t k = 0; k < fc.coords.size(); ++k) rc[k] = r[fc.coords[k]];
+        const RowMatrixXd h = fc.thickness(rc);
+        ReynoldsSolver& rs = *fsol[i];
+        const double wf = omega * fc.spin_factor;
+        const FilmSolution& sol = rs.solve(h, RowMatrixXd::Zero(h.rows(), h.cols()), wf);
+        if (thermal[i].thd && thermal[i].upstream >= 0) {  // a pad: after the loop (its ring)
+          parts[i] = thd_field(rs, sol, thermal[i].oil, thermal[i].thd_options, wf, true);
+          sols[i] = &sol;
+          wfs[i] = wf;
+          continue;
+        }
+        if (thermal[i].upstream >= 0) {  // an effective-temperature pad: after the loop
+          bal[i] = pad_balance(rs, sol, thermal[i].oil, wf, fc.geometry.viscosity_pa_s);
+          eff_pad[i] = 1;
+          continue;
+        }
+        if (thermal[i].thd) {
+          const ThdFilmState ts =
+              thd_energy(rs, sol, thermal[i].oil, thermal[i].thd_options, wf);
+          if (!take_thd_state(ts, thermal[i], X, off[i], off[i + 1] - off[i], GX, out.films[i]))
+            done = false;
+          continue;
+        }
+        const double P = sol.friction_torque_nm * wf;
+        const double qg = sol.inlet_flow_m3_s;
+        const double Q = fc.geometry.grooves.empty() || !(qg > 0.0) ? max_film_flow(rs, sol, wf)
+                                                                     : qg;
+        const double mu = fc.geometry.viscosity_pa_s;
+        ThermalFilmState st = heat_balance(thermal[i].oil, thermal[i].options, mu, P, Q,
+                                           sol.side_flow_m3_s, fc.name);
+        const double Tn = st.effective_temperature_c;
+        st.effective_temperature_c = T[i];  // the state of this solve (μ = μ(T[i]))
+        out.films[i] = st;
+        if (std::abs(Tn - T[i]) > thermal[i].options.tol_k) done = false;
+        next(i, Tn);
       }
-      T_prev[i] = T[i];
-      f_prev[i] = f;
-      T[i] = Tnext;
-    };
-    for (std::size_t i = 0; i < thermal.size(); ++i) {
-      const FilmCoupling& fc = m.films[thermal[i].film];
-      Eigen::VectorXd rc(fc.coords.size());
-      for (std::size_t k = 0; k < fc.coords.size(); ++k) rc[k] = r[fc.coords[k]];
-      const RowMatrixXd h = fc.thickness(rc);
-      ReynoldsSolver& rs = *fsol[i];
-      const double wf = omega * fc.spin_factor;
-      const FilmSolution& sol = rs.solve(h, RowMatrixXd::Zero(h.rows(), h.cols()), wf);
-      if (thermal[i].thd && thermal[i].upstream >= 0) {  // a pad: after the loop (its ring)
-        parts[i] = thd_field(rs, sol, thermal[i].oil, thermal[i].thd_options, wf, true);
-        sols[i] = &sol;
-        wfs[i] = wf;
-        continue;
-      }
-      if (thermal[i].upstream >= 0) {  // an effective-temperature pad: after the loop
-        bal[i] = pad_balance(rs, sol, thermal[i].oil, wf, fc.geometry.viscosity_pa_s);
-        eff_pad[i] = 1;
-        continue;
-      }
-      if (thermal[i].thd) {
-        const ThdFilmState ts = thd_energy(rs, sol, thermal[i].oil, thermal[i].thd_options, wf);
-        if (!take_thd_state(ts, thermal[i], X, off[i], off[i + 1] - off[i], GX, out.films[i]))
-          done = false;
-        continue;
-      }
-      const double P = sol.friction_torque_nm * wf;
-      const double qg = sol.inlet_flow_m3_s;
-      const double Q = fc.geometry.grooves.empty() || !(qg > 0.0) ? max_film_flow(rs, sol, wf)
-                                                                   : qg;
-      const double mu = fc.geometry.viscosity_pa_s;
-      ThermalFilmState st = heat_balance(thermal[i].oil, thermal[i].options, mu, P, Q,
-                                         sol.side_flow_m3_s, fc.name);
-      const double Tn = st.effective_temperature_c;
-      st.effective_temperature_c = T[i];  // the state of this solve (μ = μ(T[i]))
-      out.films[i] = st;
-      if (std::abs(Tn - T[i]) > thermal[i].options.tol_k) done = false;
-      next(i, Tn);
+      pad_states(thermal, parts, sols, wfs, off, X, GX, out.films, done, m);
+      effective_pad_states(thermal, bal, eff_pad, T, out.films, done, m, pad_mixer);
+    } catch (const StarvedError& e) {
+      out.equilibrium.status = "starved";
+      out.equilibrium.message = e.what();
+      return out;
+    } catch (const ConvergenceError&) {  // a starved film's state has no heat balance
+      if (starved_status(out, thermal, m)) return out;
+      throw;
     }
-    pad_states(thermal, parts, sols, wfs, off, X, GX, out.films, done, m);
-    effective_pad_states(thermal, bal, eff_pad, T, out.films, done, m, pad_mixer);
     if (off.back() > 0 && !done) {  // the THD films' next temperatures
       X = mixer.next(X, GX);
       for (std::size_t i = 0; i < thermal.size(); ++i)
@@ -489,6 +542,7 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
           X[n] = std::clamp(X[n], thermal[i].oil.t_min_c, thermal[i].oil.t_max_c);
     }
     if (done) {
+      if (starved_status(out, thermal, m)) return out;  // never a thermal answer from it
       for (std::size_t i = 0; i < thermal.size(); ++i)
         if (!(out.films[i].max_temperature_c <= thermal[i].oil.t_max_c))
           throw ConvergenceError("thermal equilibrium, film '" + m.films[thermal[i].film].name +
@@ -499,6 +553,7 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
       return out;
     }
   }
+  if (starved_status(out, thermal, m)) return out;  // the last iterate was starved
   out.equilibrium.status = "not_converged";
   out.equilibrium.message = "thermal equilibrium: the film temperatures did not settle in " +
                             std::to_string(max_iter) + " iterations";

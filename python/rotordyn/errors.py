@@ -2,7 +2,8 @@
 
 ``InputError`` (also a ``ValueError``) names the offending field and its allowed range;
 ``ConvergenceError``, ``ContactError`` and ``SundialsError`` (also ``RuntimeError``) come from
-the solvers. The classes are created by the C++ core so that C++ exceptions map onto them.
+the solvers; ``StarvedFilmError`` is the ConvergenceError of a thermal film whose metered supply
+and hot oil fall short of the flow it draws (its class attribute ``status`` is "starved"). The classes are created by the C++ core so that C++ exceptions map onto them.
 """
 
 from rotordyn._core import (  # noqa: F401
@@ -10,10 +11,12 @@ from rotordyn._core import (  # noqa: F401
     ConvergenceError,
     InputError,
     RotordynError,
+    StarvedFilmError,
     SundialsError,
 )
 
-__all__ = ["RotordynError", "InputError", "ConvergenceError", "ContactError", "SundialsError"]
+__all__ = ["RotordynError", "InputError", "ConvergenceError", "ContactError", "SundialsError",
+           "StarvedFilmError"]
 
 
 class RotordynWarning(UserWarning):

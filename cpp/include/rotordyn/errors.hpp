@@ -18,6 +18,16 @@ class ConvergenceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A thermal film's metered oil supply cannot feed it: the supply Q_f and all the hot oil
+/// that reaches its inlet Q_r together fall short of the flow Q the film draws (a starved
+/// film; docs/film-physics.md "A metered supply below the film's demand"). A
+/// ConvergenceError (no thermal equilibrium of the full film exists); the callers that
+/// report statuses report "starved".
+class StarvedError : public ConvergenceError {
+ public:
+  using ConvergenceError::ConvergenceError;
+};
+
 /// The journal touched the bush or sleeve (film thickness below the allowed minimum).
 class ContactError : public std::runtime_error {
  public:

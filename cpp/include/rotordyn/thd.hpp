@@ -15,7 +15,8 @@
 // oil at the supply temperature.
 // Inlet: the supply-groove nodes (with a groove) or the column of maximum film (without one)
 // hold the mixing temperature T_in = (Q_f T_s + λ Q_r T_r)/(Q_f + λ Q_r): the fresh flow Q_f
-// (supply_flow_m3_s; 0: the film's demand Q − λ Q_r) at T_s mixed with the carried-over part λ
+// (supply_flow_m3_s; 0: the film's demand Q − λ Q_r; a metered Q_f below it draws more hot oil,
+// λ_eff = (Q − Q_f)/Q_r, starved when Q_f + Q_r < Q) at T_s mixed with the carried-over part λ
 // (carry_over) of the flow Q_r reaching the inlet from the film at its mixing-cup temperature
 // T_r (solved exactly: T is affine in T_in). The same mixing as the effective model.
 #pragma once
@@ -45,6 +46,10 @@ struct ThdFilmState {
   double recirculation_flow_m3_s = 0.0;  ///< Q_r, from the film into the inlet nodes (a pad film: Q_in − Q_s, the pad's mass balance)
   double side_flow_m3_s = 0.0;     ///< through the ends from the film's end cells
   double supply_flow_m3_s = 0.0;   ///< Q_f (fresh oil)
+  /// λ_eff, the carried-over fraction of Q_r the inlet mixes (the given λ, or (Q − Q_f)/Q_r
+  /// where a metered supply falls short of the demand); `starved`: Q_f + Q_r < Q
+  double carry_over_effective = 0.0;
+  bool starved = false;
   double heat_to_journal_w = 0.0, heat_to_bush_w = 0.0;
   /// the journal's temperature (journal_temperature_c, or from its heat balance), degC
   double journal_temperature_c = 0.0;

@@ -13,8 +13,10 @@
 // just downstream of its line of maximum thickness, max_film_flow) and leaks Q_s at its ends; the leakage leaves at the mean rise ΔT/2, the rest Q − Q_s at ΔT, all the friction
 // power P = torque·|ω| goes into the oil:  P = ρ c_p ΔT (Q − Q_s/2).
 // At the supply, the fraction λ (carry_over) of the recirculating hot flow Q_r = Q − Q_s mixes
-// with the supply flow Q_f at T_s (supply_flow_m3_s; 0: the film's own demand Q − λ Q_r):
-//   T_in = T_s + λ Q_r ΔT / Q_f,  T_max = T_in + ΔT,  T_eff = T_in + k ΔT (k = effective_factor,
+// with the supply flow Q_f at T_s (supply_flow_m3_s; 0: the film's own demand Q − λ Q_r;
+// a metered Q_f below that demand draws more hot oil, λ_eff = (Q − Q_f)/Q_r, and a film with
+// Q_f + Q_r < Q is starved: StarvedError, thermal_detail.hpp supply_mixing):
+//   T_in = T_s + λ_eff Q_r ΔT / Q_f,  T_max = T_in + ΔT,  T_eff = T_in + k ΔT (k = effective_factor,
 // 0.5: Shigley's average film temperature). The film is isoviscous at μ(T_eff).
 #pragma once
 #include <limits>
@@ -66,6 +68,9 @@ struct ThermalEquilibrium {
   double film_flow_m3_s = 0.0;       ///< Q (groove inflow, or downstream of the maximum film)
   double side_flow_m3_s = 0.0;       ///< Q_s
   double supply_flow_m3_s = 0.0;     ///< Q_f (fresh oil)
+  /// λ_eff: the carried-over fraction of Q_r the inlet mixes — the given λ, or (Q − Q_f)/Q_r
+  /// where a metered supply falls short of the demand Q − λ Q_r
+  double carry_over_effective = 0.0;
   int iterations = 0;                ///< outer (equilibrium) iterations
   int equilibrium_iterations = 0;    ///< Newton iterations summed
 };
@@ -143,7 +148,8 @@ struct ThermalFilm {
   /// upstream pad's outflow Q_r,u at its mixing-cup temperature T_r,u (Ettles' hot-oil
   /// carry-over): T_in = (Q_f T_s + λ Q_r,u T_r,u)/(Q_f + λ Q_r,u), Q_f the pad's demand
   /// Q − λ Q_r,u (or thd_options.supply_flow_m3_s when > 0); when λ Q_r,u exceeds the demand
-  /// the pad draws Q of the carried-over oil alone. The ring's inlet temperatures are solved
+  /// the pad draws Q of the carried-over oil alone; a metered Q_f below the demand draws
+  /// Q − Q_f of it (λ_eff), starved when that exceeds Q_r,u (thermal_detail.hpp supply_mixing). The ring's inlet temperatures are solved
   /// together (a small linear system: each field is affine in its T_in). −1: a plain film
   /// mixing its own recirculation.
   /// Effective-temperature pad films (thd = false, upstream >= 0 an effective pad film): per
@@ -161,6 +167,11 @@ struct ThermalFilmState {
   double effective_temperature_c = 0.0, max_temperature_c = 0.0, inlet_temperature_c = 0.0;
   double temperature_rise_k = 0.0, viscosity_pa_s = 0.0, power_loss_w = 0.0;
   double film_flow_m3_s = 0.0, side_flow_m3_s = 0.0, supply_flow_m3_s = 0.0;
+  /// λ_eff, the carried-over fraction of the hot flow reaching the inlet (the given λ, or
+  /// (Q − Q_f)/Q_r where a metered supply falls short of the demand); `starved`: Q_f + Q_r < Q
+  /// (no equilibrium of the full film is reported from such a state)
+  double carry_over_effective = 0.0;
+  bool starved = false;
   /// THD films: the area-weighted mean temperature (also in effective_temperature_c), the
   /// temperature and viscosity fields (n_circ, n_axial + 1); temperature_rise_k = T_max − T_in,
   /// viscosity_pa_s = μ(mean). Empty fields for effective-temperature films.

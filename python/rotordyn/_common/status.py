@@ -1,11 +1,13 @@
 """The status vocabulary of every result and sweep row (DESIGN §5): a status is truthful, and
 only a converged equilibrium is linearised, classified or integrated from."""
 
-STATUSES = ("ok", "no_equilibrium", "contact", "not_converged", "error")
+STATUSES = ("ok", "no_equilibrium", "contact", "not_converged", "error", "starved")
 # Converged equilibria ("contact": converged with a film thinner than contact_fraction c);
 # only these are linearised, classified or integrated from. The others are failures.
 CONVERGED = ("ok", "contact")
-FAILED = ("no_equilibrium", "not_converged", "error")
+FAILED = ("no_equilibrium", "not_converged", "error", "starved")
+# "starved": a thermal film whose metered oil supply and the hot oil reaching its inlet fall
+# short of the flow it draws (docs/film-physics.md "A metered supply below the film's demand")
 
 
 def point_messages(status, messages):

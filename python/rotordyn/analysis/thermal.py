@@ -276,6 +276,7 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
         temperature_rise_k=col("temperature_rise_k"), viscosity_pa_s=col("viscosity_pa_s"),
         power_loss_w=col("power_loss_w"), film_flow_m3_s=col("film_flow_m3_s"),
         side_flow_m3_s=col("side_flow_m3_s"), supply_flow_m3_s=col("supply_flow_m3_s"),
+        carry_over_effective=col("carry_over_effective"),
         journal_x_m=np.array([r[bcs[i].jx] for i, _ in rows]),
         journal_y_m=np.array([r[bcs[i].jy] for i, _ in rows]),
         r=r, iterations=int(res.iterations), system=hot, status=eq.status, message=message,

@@ -12,6 +12,9 @@ direction of rotation) passes on at its trailing edge — Ettles' hot-oil carry-
     T_in,k = (Q_f,k T_s + λ Q_out,k−1 T_out,k−1) / (Q_f,k + λ Q_out,k−1),
     Q_f,k = Q_in,k − λ Q_out,k−1   (the pad's own demand; or the given supply flow / n_pads),
 
+(a metered share below the pad's demand draws more hot oil, λ_eff = (Q_in,k − Q_f,k)/Q_out,k−1,
+mass-conserving; Q_f,k + Q_out,k−1 < Q_in,k starves the bearing: status "starved",
+docs/film-physics.md "A metered supply below the film's demand"),
 λ the carry-over (mixing) coefficient in [0, 1] (``carry_over``), Q_out = Q_in − Q_s the pad's
 own mass balance (inflow at the leading edge minus side leakage) and T_out the mixing-cup
 temperature of the flow its trailing-edge cells receive. Each field is affine in its
@@ -33,14 +36,15 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings.tilt_names import RenamedTiltOutputs
-from rotordyn.errors import ConvergenceError, InputError
+from rotordyn.errors import ConvergenceError, InputError, StarvedFilmError
 
 
 def failed_equilibrium(what: str, eq) -> ConvergenceError:
     """The ConvergenceError of a thermal equilibrium ``eq`` (the core's EquilibriumResult)
     that did not converge, carrying its ``status`` and ``detail`` (the core's message) for a
     caller that reports the failed point as a status record (``rotordyn bearing``)."""
-    exc = ConvergenceError(f"{what}: {eq.status}: {eq.message}")
+    cls = StarvedFilmError if str(eq.status) == "starved" else ConvergenceError
+    exc = cls(f"{what}: {eq.status}: {eq.message}")
     exc.status, exc.detail = str(eq.status), str(eq.message)
     return exc
 
@@ -213,6 +217,9 @@ class PadThdResult(RenamedTiltOutputs):
     journal_temperature_c: np.ndarray | None = field(default=None, repr=False)
     max_wall_temperature_c: np.ndarray | None = field(default=None, repr=False)
     wall_temperature_c: tuple = field(default=(), repr=False)
+    # per pad: λ_eff, the carried-over fraction of the upstream pad's outflow its inlet mixes
+    # (the given carry_over, or (Q − Q_f)/Q_out,u where its metered supply share falls short)
+    carry_over_effective: np.ndarray | None = field(default=None, repr=False)
 
     @property
     def effective_temperature_c(self) -> np.ndarray:
@@ -284,6 +291,8 @@ class PadThdResult(RenamedTiltOutputs):
                   "supply_flow_m3_s") + (("makeup_flow_m3_s",) if self.flows else ()):
             a = getattr(self, f)
             cols[f] = [*a, float(np.sum(a))]
+        if self.carry_over_effective is not None:
+            cols["carry_over_effective"] = [*self.carry_over_effective, np.nan]
         cols["pad_tilt_rad"] = [*self.pad_tilts_rad, np.nan] if len(self.pad_tilts_rad) \
             else [np.nan] * (n + 1)
         if self.max_wall_temperature_c is not None:  # THD: the walls
@@ -378,7 +387,8 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
         outlet_temperature_c=col("recirculation_temperature_c"),
         power_loss_w=col("power_loss_w"), film_flow_m3_s=col("film_flow_m3_s"),
         outlet_flow_m3_s=col("recirculation_flow_m3_s"), side_flow_m3_s=col("side_flow_m3_s"),
-        supply_flow_m3_s=col("supply_flow_m3_s"), x_m=float(r[0]), y_m=float(r[1]),
+        supply_flow_m3_s=col("supply_flow_m3_s"),
+        carry_over_effective=col("carry_over_effective"), x_m=float(r[0]), y_m=float(r[1]),
         eccentricity_ratio=math.hypot(r[0], r[1]) / clearance_m,
         pad_tilts_rad=np.asarray(tilts(r)) if tilts is not None else np.zeros(0),
         K=Kr, C=Cr, K_full=Kf, C_full=Cf, M_full=M, r=r, iterations=int(res.iterations),

@@ -108,6 +108,9 @@ class ThdEquilibriumResult(TiltedJournalOutputs):
     wall_temperature_c: np.ndarray = field(repr=False, default=None)
     status: str = "ok"
     message: str = ""
+    # λ_eff: the carried-over fraction of Q_r the inlet mixes (the given carry_over, or
+    # (Q − Q_f)/Q_r where a metered supply falls short of the demand)
+    carry_over_effective: float = math.nan
 
     def __repr__(self) -> str:
         return (f"ThdEquilibriumResult(T_max={self.max_temperature_c:.2f} degC, "
@@ -124,7 +127,7 @@ class ThdEquilibriumResult(TiltedJournalOutputs):
                   "inlet_temperature_c", "recirculation_temperature_c", "side_temperature_c",
                   "power_loss_w", "friction_power_w", "film_flow_m3_s",
                   "recirculation_flow_m3_s", "side_flow_m3_s", "supply_flow_m3_s",
-                  "heat_to_journal_w", "heat_to_bush_w", "journal_temperature_c",
+                  "carry_over_effective", "heat_to_journal_w", "heat_to_bush_w", "journal_temperature_c",
                   "max_wall_temperature_c"):
             row[f] = getattr(self, f)
         row.update(journal_x_m=self.x_m, journal_y_m=self.y_m,
@@ -184,7 +187,8 @@ def run_thd_equilibrium(solver, oil, opts, load_n, speed_hz: float,
         side_temperature_c=st.side_temperature_c, power_loss_w=st.power_loss_w,
         friction_power_w=st.friction_power_w, film_flow_m3_s=st.film_flow_m3_s,
         recirculation_flow_m3_s=st.recirculation_flow_m3_s, side_flow_m3_s=st.side_flow_m3_s,
-        supply_flow_m3_s=st.supply_flow_m3_s, heat_to_journal_w=st.heat_to_journal_w,
+        supply_flow_m3_s=st.supply_flow_m3_s, carry_over_effective=st.carry_over_effective,
+        heat_to_journal_w=st.heat_to_journal_w,
         heat_to_bush_w=st.heat_to_bush_w, journal_temperature_c=st.journal_temperature_c,
         max_wall_temperature_c=st.max_wall_temperature_c, x_m=float(e.x_m), y_m=float(e.y_m),
         eccentricity_ratio=math.hypot(e.x_m, e.y_m) / clearance_m,

@@ -134,6 +134,9 @@ class ThermalEquilibriumResult(TiltedJournalOutputs):
     iterations: int
     status: str = "ok"
     message: str = ""
+    # λ_eff: the carried-over fraction of the recirculating flow the inlet mixes (the given
+    # carry_over, or (Q − Q_f)/(Q − Q_s) where a metered supply falls short of the demand)
+    carry_over_effective: float = math.nan
 
     def __repr__(self) -> str:
         return (f"ThermalEquilibriumResult(T_eff={self.effective_temperature_c:.2f} degC, "
@@ -155,6 +158,7 @@ class ThermalEquilibriumResult(TiltedJournalOutputs):
             "viscosity_pa_s": self.viscosity_pa_s, "power_loss_w": self.power_loss_w,
             "film_flow_m3_s": self.film_flow_m3_s, "side_flow_m3_s": self.side_flow_m3_s,
             "supply_flow_m3_s": self.supply_flow_m3_s,
+            "carry_over_effective": self.carry_over_effective,
             "journal_x_m": self.x_m, "journal_y_m": self.y_m,
             "eccentricity_ratio": self.eccentricity_ratio,
         }
@@ -216,7 +220,8 @@ def run_thermal_equilibrium(solver, oil: Oil, opts, load_n, speed_hz: float,
         inlet_temperature_c=r.inlet_temperature_c, temperature_rise_k=r.temperature_rise_k,
         viscosity_pa_s=r.viscosity_pa_s, power_loss_w=r.power_loss_w,
         film_flow_m3_s=r.film_flow_m3_s, side_flow_m3_s=r.side_flow_m3_s,
-        supply_flow_m3_s=r.supply_flow_m3_s, x_m=float(e.x_m), y_m=float(e.y_m),
+        supply_flow_m3_s=r.supply_flow_m3_s, carry_over_effective=r.carry_over_effective,
+        x_m=float(e.x_m), y_m=float(e.y_m),
         eccentricity_ratio=math.hypot(e.x_m, e.y_m) / clearance_m,
         **untilted_h_min(float(e.x_m), float(e.y_m), clearance_m),
         K=np.array(dc.K), C=np.array(dc.C), iterations=int(r.iterations))

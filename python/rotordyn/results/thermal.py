@@ -85,6 +85,10 @@ class SystemThermalResult(Display):
     # pad_inlet_temperature_c, pad_temperature_rise_k, pad_viscosity_pa_s, pad_power_loss_w,
     # pad_supply_flow_m3_s, pad_max_wall_temperature_c (THD); {} where it failed
     pads: dict = field(default_factory=dict)
+    # per film: λ_eff, the carried-over fraction of the hot flow reaching its inlet (the given
+    # carry_over, or (Q − Q_f)/Q_r where a metered supply falls short of the demand); NaN
+    # where the equilibrium failed
+    carry_over_effective: np.ndarray | None = None
 
     def wall(self, name: str) -> np.ndarray:
         """One of the THD wall outputs (or the minimum film's) per film (NaN where there is
@@ -140,6 +144,7 @@ class SystemThermalResult(Display):
             "film_flow_m3_s": self.film_flow_m3_s,
             "side_flow_m3_s": self.side_flow_m3_s,
             "supply_flow_m3_s": self.supply_flow_m3_s,
+            "carry_over_effective": self.wall("carry_over_effective"),
             "journal_x_m": self.journal_x_m,
             "journal_y_m": self.journal_y_m,
             "h_min_m": self.wall("h_min_m"),

@@ -22,7 +22,8 @@ from rotordyn.sweep.paths import set_fields
 from rotordyn.units import hz_to_rad_s
 
 
-STATUS = ["ok", "no_equilibrium", "contact", "not_converged", "no_crossing", "error", "rub"]
+STATUS = ["ok", "no_equilibrium", "contact", "not_converged", "no_crossing", "error", "rub",
+          "starved"]
 
 _BASE: dict = {}
 
