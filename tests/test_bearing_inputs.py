@@ -161,6 +161,12 @@ def test_cli_modes_without_bearings_flag(capsys):
     assert main(["modes", path]) == 2
     assert "without_bearings" in capsys.readouterr().err
     assert main(["modes", path, "--without-bearings", "--json"]) == 0
+    # a bad speed is named first (it named the missing --without-bearings)
+    assert main(["modes", path, "--speed-hz", "nan"]) == 2
+    assert "speed_hz" in capsys.readouterr().err
+    s = rd.System.from_toml(path)
+    with pytest.raises(rd.InputError, match="^speeds_hz"):
+        rd.rotor_campbell(s, [20.0, 10.0])
 
 
 # -- issue 18: the model file keeps a disk's geometry ---------------------------------------

@@ -262,8 +262,8 @@ def modes(system: System, speed_hz: float = 0.0, *, reduction: str | None = None
         this is True: their coefficients depend on the equilibrium, so use
         :func:`rotordyn.stability` for the system's modes; True gives the rotor without them.
     """
+    v.speed("speed_hz", speed_hz)  # a bad speed is named first, whatever else is wrong
     _check_no_bearings(system, "modes", without_bearings)
-    v.speed("speed_hz", speed_hz)
     if n_modes is not None:
         v.integer("n_modes", n_modes, lo=1)
     method = system.reduction.method if reduction is None else reduction
@@ -292,8 +292,8 @@ def rotor_campbell(system: System, speeds_hz, *, reduction: str | None = None,
     speeds_hz: (n_speeds,) increasing, Hz. A system with bearing elements is refused unless
     ``without_bearings`` (see :func:`modes`; :func:`rotordyn.campbell` includes them).
     """
-    _check_no_bearings(system, "rotor_campbell", without_bearings)
     sp = v.speeds("speeds_hz", speeds_hz)
+    _check_no_bearings(system, "rotor_campbell", without_bearings)
     v.integer("n_modes", n_modes, lo=1)
     if reduction is not None:
         v.choice("reduction", reduction, REDUCTION_METHODS)
