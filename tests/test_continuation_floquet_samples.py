@@ -140,6 +140,7 @@ def test_linear_rotor_multipliers_are_exp_lambda_t():
     ({"floquet": "samples", "floquet_tol": -1e-3}, "floquet_tol"),
     ({"floquet": "flow", "floquet_tol": 1e-3}, "floquet_tol"),
     ({"floquet": "samples", "floquet_margin": 0.6}, "floquet_margin"),
+    ({"floquet": "flow", "floquet_margin": 0.1}, "floquet_margin"),  # the flow screens nothing
 ])
 def test_bad_floquet_options_of_a_shooting_branch(kw, field):
     """Shooting has the routes "flow" and "samples" (Hill's method needs harmonic balance's

@@ -336,6 +336,35 @@ void effective_pad_states(const std::vector<ThermalFilm>& thermal,
   }
 }
 
+/// The starved message of pad film `i`: the bearing's metered supply is shared equally by its
+/// pads (the ring of `upstream` links), so the message gives the bearing's supply and the
+/// least supply that feeds every pad under equal shares, n × max_k (Q_k − Q_r,k), Q_r,k the
+/// outflow of pad k's upstream pad; and this pad's share, hot oil and draw.
+std::string pad_starved_message(const std::string& where, std::size_t i,
+                                const ThermalSystemResult& out,
+                                const std::vector<ThermalFilm>& thermal) {
+  const ThermalFilmState& f = out.films[i];
+  const double Qr = out.films[static_cast<std::size_t>(thermal[i].upstream)]
+                        .recirculation_flow_m3_s;
+  std::size_t k = i, n = 0;
+  double need = 0.0;  // the largest per-pad shortfall of hot oil, m^3/s
+  do {
+    const std::size_t u = static_cast<std::size_t>(thermal[k].upstream);
+    need = std::max(need, out.films[k].film_flow_m3_s - out.films[u].recirculation_flow_m3_s);
+    k = u;
+    ++n;
+  } while (k != i && n <= thermal.size());
+  const double N = static_cast<double>(n);
+  return where + ": starved: the bearing's metered supply " + num(N * f.supply_flow_m3_s) +
+         " m^3/s is shared equally by its " + std::to_string(n) + " pads; this pad's share "
+         "Q_f = " + num(f.supply_flow_m3_s) + " m^3/s and the upstream pad's outflow Q_r = " +
+         num(Qr) + " m^3/s fall short of the flow it draws, Q = " + num(f.film_flow_m3_s) +
+         " m^3/s; with equal shares a bearing supply of at least " + num(N * need) +
+         " m^3/s (" + std::to_string(n) + " x the largest pad shortfall Q - Q_r) feeds every "
+         "pad (an unloaded pad's surplus share does not feed a loaded one; a starved film's "
+         "reduced wetted arc is not modelled)";
+}
+
 /// Status "starved" on `out` when one of its films' current states is starved (the first, by
 /// the thermal list's order; its message names the film and gives Q_f, Q, Q_r and the least
 /// supply Q − Q_r); false when none is.
@@ -345,19 +374,19 @@ bool starved_status(ThermalSystemResult& out, const std::vector<ThermalFilm>& th
     const ThermalFilmState& f = out.films[i];
     if (!f.starved) continue;
     const double Q = f.film_flow_m3_s, Qf = f.supply_flow_m3_s;
-    // the hot oil available (supply_mixing): a plain effective film's Q − Q_s, a THD plain
-    // film's min(Q_r, Q − Q_s), a pad's the upstream pad's outflow
-    double Qr = 0.0;
-    if (thermal[i].upstream >= 0) {
-      Qr = out.films[static_cast<std::size_t>(thermal[i].upstream)].recirculation_flow_m3_s;
-    } else {
-      Qr = std::max(Q - f.side_flow_m3_s, 0.0);
-      if (thermal[i].thd) Qr = std::min(Qr, f.recirculation_flow_m3_s);
-    }
-    out.equilibrium.status = "starved";
-    out.equilibrium.message = starved_message(
+    const std::string where =
         "thermal equilibrium, film '" + m.films[static_cast<std::size_t>(thermal[i].film)].name +
-            "'", Qf, Q, Qr);
+        "'";
+    out.equilibrium.status = "starved";
+    if (thermal[i].upstream >= 0) {
+      out.equilibrium.message = pad_starved_message(where, i, out, thermal);
+      return true;
+    }
+    // the hot oil available (supply_mixing): a plain effective film's Q − Q_s, a THD plain
+    // film's min(Q_r, Q − Q_s)
+    double Qr = std::max(Q - f.side_flow_m3_s, 0.0);
+    if (thermal[i].thd) Qr = std::min(Qr, f.recirculation_flow_m3_s);
+    out.equilibrium.message = starved_message(where, Qf, Q, Qr);
     return true;
   }
   return false;
@@ -531,8 +560,11 @@ ThermalSystemResult thermal_system_equilibrium(const SystemModel& model,
       out.equilibrium.status = "starved";
       out.equilibrium.message = e.what();
       return out;
-    } catch (const ConvergenceError&) {  // a starved film's state has no heat balance
-      if (starved_status(out, thermal, m)) return out;
+    } catch (const ConvergenceError& e) {  // a starved film's state has no heat balance
+      if (starved_status(out, thermal, m)) {  // the failure kept beside the starvation
+        out.equilibrium.message += "; and then: " + std::string(e.what());
+        return out;
+      }
       throw;
     }
     if (off.back() > 0 && !done) {  // the THD films' next temperatures

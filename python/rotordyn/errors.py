@@ -3,7 +3,8 @@
 ``InputError`` (also a ``ValueError``) names the offending field and its allowed range;
 ``ConvergenceError``, ``ContactError`` and ``SundialsError`` (also ``RuntimeError``) come from
 the solvers; ``StarvedFilmError`` is the ConvergenceError of a thermal film whose metered supply
-and hot oil fall short of the flow it draws (its class attribute ``status`` is "starved"). The classes are created by the C++ core so that C++ exceptions map onto them.
+and hot oil fall short of the flow it draws (its class attribute ``status`` is "starved").
+The classes are created by the C++ core so that C++ exceptions map onto them.
 """
 
 from rotordyn._core import (  # noqa: F401

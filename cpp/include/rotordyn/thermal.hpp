@@ -16,8 +16,8 @@
 // with the supply flow Q_f at T_s (supply_flow_m3_s; 0: the film's own demand Q − λ Q_r;
 // a metered Q_f below that demand draws more hot oil, λ_eff = (Q − Q_f)/Q_r, and a film with
 // Q_f + Q_r < Q is starved: StarvedError, thermal_detail.hpp supply_mixing):
-//   T_in = T_s + λ_eff Q_r ΔT / Q_f,  T_max = T_in + ΔT,  T_eff = T_in + k ΔT (k = effective_factor,
-// 0.5: Shigley's average film temperature). The film is isoviscous at μ(T_eff).
+//   T_in = T_s + λ_eff Q_r ΔT / Q_f,  T_max = T_in + ΔT,  T_eff = T_in + k ΔT
+// (k = effective_factor, 0.5: Shigley's average film temperature). The film is isoviscous at μ(T_eff).
 #pragma once
 #include <limits>
 
@@ -149,9 +149,10 @@ struct ThermalFilm {
   /// carry-over): T_in = (Q_f T_s + λ Q_r,u T_r,u)/(Q_f + λ Q_r,u), Q_f the pad's demand
   /// Q − λ Q_r,u (or thd_options.supply_flow_m3_s when > 0); when λ Q_r,u exceeds the demand
   /// the pad draws Q of the carried-over oil alone; a metered Q_f below the demand draws
-  /// Q − Q_f of it (λ_eff), starved when that exceeds Q_r,u (thermal_detail.hpp supply_mixing). The ring's inlet temperatures are solved
-  /// together (a small linear system: each field is affine in its T_in). −1: a plain film
-  /// mixing its own recirculation.
+  /// Q − Q_f of it (λ_eff), starved when that exceeds Q_r,u (thermal_detail.hpp
+  /// supply_mixing). The ring's inlet temperatures are solved together (a small linear
+  /// system: each field is affine in its T_in). −1: a plain film mixing its own
+  /// recirculation.
   /// Effective-temperature pad films (thd = false, upstream >= 0 an effective pad film): per
   /// pad the plain heat balance P = ρ c ΔT (Q − Q_s/2) with the pad's dissipation P, the flow
   /// Q into its leading edge and its side leakage Q_s (the THD pad film's flows and cells),

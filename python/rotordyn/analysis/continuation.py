@@ -253,6 +253,9 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
             raise InputError(f"{k}: applies only to method='harmonic_balance'")
     floquet, margin, ftol = floquet_options(floquet, floquet_margin, floquet_tol,
                                             SHOOTING_FLOQUET, SHOOTING_FLOQUET[0])
+    if floquet == "flow" and floquet_margin is not None:  # as the command line refuses it
+        raise InputError(f"floquet_margin: applies only to floquet='samples' with shooting "
+                         f"(the flow route screens nothing), got {floquet_margin!r}")
     vary, lo, hi, asm, n, kind = (setup.vary, setup.lo, setup.hi, setup.asm, setup.n,
                                   setup.kind)
     bcs, base, to_core = setup.bcs, setup.base, setup.to_core

@@ -358,11 +358,12 @@ def pad_thd_equilibrium(parts, *, oil, opts, load_n, speed_hz: float, clearance_
     eopt.polish = True
     res = _core.thermal_system_equilibrium(model, tf, omega, 0.0, np.zeros(n), eopt)
     eq = res.equilibrium
+    thd = isinstance(opts, _core.ThdOptions)
     if eq.status not in ("ok", "contact"):
-        raise failed_equilibrium("pad THD equilibrium", eq)
+        raise failed_equilibrium("pad THD equilibrium" if thd else
+                                 "pad effective-temperature equilibrium", eq)
     st = list(res.films)
     r = np.asarray(eq.r)
-    thd = isinstance(opts, _core.ThdOptions)
     for f, s in zip(films, st):  # freeze the field (THD) or the pad's μ(T_eff) (effective)
         if thd:
             f.viscosity_field = np.array(s.viscosity_field)

@@ -127,7 +127,8 @@ class ThdEquilibriumResult(TiltedJournalOutputs):
                   "inlet_temperature_c", "recirculation_temperature_c", "side_temperature_c",
                   "power_loss_w", "friction_power_w", "film_flow_m3_s",
                   "recirculation_flow_m3_s", "side_flow_m3_s", "supply_flow_m3_s",
-                  "carry_over_effective", "heat_to_journal_w", "heat_to_bush_w", "journal_temperature_c",
+                  "carry_over_effective", "heat_to_journal_w", "heat_to_bush_w",
+                  "journal_temperature_c",
                   "max_wall_temperature_c"):
             row[f] = getattr(self, f)
         row.update(journal_x_m=self.x_m, journal_y_m=self.y_m,

@@ -493,7 +493,8 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                  if t.status == "ok" else
                  f"none in {bounds[0] / 1e6:g}–{bounds[1] / 1e6:g} MPa ({t.status}: "
                  f"{t.message})")
-        checks.add(f"threshold of instability at a_y = {1e3 * t_ay:g} mm, {speed:g} Hz",
+        checks.add(f"threshold of instability at a_y = {1e3 * t_ay:g} mm, {speed:g} Hz"
+                   .replace("-", "−"),  # a minus sign, as the rest of the page
                    "stable operation needs p_c on the stable side of the threshold",
                    value, None)
 

@@ -172,7 +172,7 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         t = analysis.threshold(s, "chamber_pressure_pa", bounds=bounds, speed_hz=speed,
                                config_ay_m=ay, n_scan=8)
         say()
-        head = f"threshold of instability in p_c at {where}: "
+        head = f"threshold of instability {'' if paper else 'in p_c '}at {where}: "
         if t.status == "ok":
             say(head + f"p_c = {t.value / 1e6:.4f} MPa (stable {t.stable_side}; whirl "
                 f"{t.whirl_frequency_hz:.2f} Hz; status {t.status})"
@@ -195,8 +195,9 @@ def run(model: str, out: str, html: str | None = None, operating_speed_hz=None,
         c = campbell_04 = analysis.campbell(s, sp, 0.4e6, s.bearings[ia].config_ay_m)
         crit = c.critical_speeds()
         cs = crit.loc[crit["resonant"], "speed_hz"].to_numpy()
-        line = (f"critical speeds at p_c = 0.4 MPa ({sp[0]:.4g}–{sp[-1]:.4g} Hz): "
-                + (", ".join(f"{x:.1f} Hz" for x in cs) if len(cs) else "none"))
+        line = ("critical speeds at p_c = 0.4 MPa"
+                + ("" if paper else f" ({sp[0]:.4g}–{sp[-1]:.4g} Hz)") + ": "
+                + ", ".join(f"{x:.1f} Hz" for x in cs) + ("" if len(cs) or paper else "none"))
         if paper:
             line += "; paper " + ", ".join(
                 f"{ref:g} Hz: " + (mark(cs[np.argmin(abs(cs - ref))], ref, rtol=TOL_CRITICAL_REL)

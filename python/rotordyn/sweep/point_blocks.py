@@ -32,7 +32,10 @@ from rotordyn.units import hz_to_rad_s
 
 THERMAL_COLUMNS = ("effective_temperature_c", "max_temperature_c", "inlet_temperature_c",
                    "temperature_rise_k", "viscosity_pa_s", "power_loss_w", "film_flow_m3_s",
-                   "side_flow_m3_s", "supply_flow_m3_s", "journal_x_m", "journal_y_m",
+                   "side_flow_m3_s", "supply_flow_m3_s",
+                   # the carry-over the mixing used: λ, or (Q − Q_f)/Q_r where a metered
+                   # supply fell short of the demand
+                   "carry_over_effective", "journal_x_m", "journal_y_m",
                    # the THD films' walls (NaN for the effective model)
                    "journal_temperature_c", "max_wall_temperature_c", "heat_to_journal_w",
                    "heat_to_bush_w",
@@ -69,6 +72,7 @@ def thermal_blocks(job, variants, chunk_id, pids, asms):
         nb = len(r.bearing_names)
         ok = r.status in CONVERGED
         cols = {c: (np.asarray(r.wall(c) if c in WALL_COLUMNS or c.startswith("h_min")
+                               or c == "carry_over_effective"
                                else getattr(r, c),
                                dtype=np.float64)[:nb] if ok
                     else np.full(nb, math.nan)) for c in THERMAL_COLUMNS}
