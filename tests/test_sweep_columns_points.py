@@ -217,7 +217,9 @@ def test_schemas_equal_the_stored_ones_of_the_code_before():
     since: the hopf and limit_cycle rows' ``l1_refined``, float64 after
     ``amplitude_coefficient_m2``, the hopf analysis's ``grid_check``; the ``thermal`` rows' four
     THD wall columns, journal_temperature_c … heat_to_bush_w, float64, before ``iterations``,
-    then the hot film's h_min_m and h_min_z_m, float64, before ``iterations``;
+    then the hot film's h_min_m and h_min_z_m, float64, before ``iterations``, then
+    ``carry_over_effective``, float64, after ``supply_flow_m3_s`` (2026-12-06: the carry-over
+    a metered supply short of the demand makes up);
     docs/film-physics.md; ``journal_bearing``, string, after the ``i_`` columns of the
     analyses whose rows do not name a bearing: which journal they describe.)"""
     import json
