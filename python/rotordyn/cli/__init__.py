@@ -17,6 +17,7 @@ import sys
 
 from rotordyn._common import plausibility
 from rotordyn._common.info import DESCRIPTION
+from rotordyn._common.interrupt import safe_interrupts
 from rotordyn._common.progress import long_work
 from rotordyn.bearings import ActiveJournalBearing
 from rotordyn.cli import analyses, bearing, control, level1, nonlinear, report, sweeps
@@ -82,9 +83,14 @@ def _warning_printer(default):
 
 
 def main(argv: list[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    with safe_interrupts():  # Ctrl-C never lands inside an import (a broken module lock)
+        return _main(argv)
+
+
+def _main(argv: list[str]) -> int:
     import warnings
 
-    argv = list(sys.argv[1:] if argv is None else argv)
     shown = warnings.showwarning
     warnings.showwarning = _warning_printer(shown)
     try:
