@@ -167,3 +167,17 @@ def test_fast_route_bad_input_names_the_field(rig_cycle, kw, field):
     args = {"newton": "fast", **kw}
     with pytest.raises(rd.errors.InputError, match=field):
         rd.continuation(rig, "chamber_pressure_pa", (0.04e6, 0.08e6), cyc, **args)
+
+
+@pytest.mark.parametrize("route", [{"newton": "fast", "floquet": "samples"},
+                                   {"newton": "exact"}, {"newton": "broyden"},
+                                   {"method": "harmonic_balance"}])
+@pytest.mark.parametrize("field", ["screen_rtol", "screen_margin"])
+def test_screen_options_are_refused_where_nothing_is_screened(rig_cycle, route, field):
+    """screen_rtol/screen_margin tune only the fast flow route's screened final pass: given
+    with the samples route, another Newton or harmonic balance they did nothing, silently."""
+    rig, cyc = rig_cycle
+    with pytest.raises(rd.errors.InputError, match=f"{field}: applies only to "
+                                                   "method='shooting' with newton='fast'"):
+        rd.continuation(rig, "chamber_pressure_pa", (0.04e6, 0.08e6), cyc, **route,
+                        **{field: 1e-3})

@@ -451,10 +451,9 @@ ThdFilmState thd_energy(const ReynoldsSolver& solver, const FilmSolution& sol,
   double qs = 0.0;  // the film's side leakage: it keeps Q − Q_s (supply_mixing's Qr_avail)
   for (double q : parts.side_out) qs += q;
   const double Qr_avail = std::min(Qr, std::max(Q - qs, 0.0));
-  const SupplyMixing mix = supply_mixing(Q, Qr, opt.carry_over, opt.supply_flow_m3_s, Qr_avail);
+  const SupplyMixing mix = checked_supply_mixing("THD energy equation", Q, Qr, opt.carry_over,
+                                                 opt.supply_flow_m3_s, Qr_avail);
   const double Qf = mix.qf;
-  if (mix.starved && !(Qr > 0.0))
-    throw StarvedError(starved_message("THD energy equation", Qf, Q, Qr_avail));
   const double lam = mix.made_up ? mix.lam_eff : opt.carry_over;
   if (!(Q > 0.0 && Qf > 0.0))
     throw ConvergenceError("THD energy equation: the film draws no fresh oil (flow from the "

@@ -205,11 +205,11 @@ ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, do
   }
   const double Ts = opt.supply_temperature_c;
   const double Qr = std::max(Q - Qs, 0.0);
-  const SupplyMixing mix = supply_mixing(Q, Qr, opt.carry_over, opt.supply_flow_m3_s);
-  const double Qf = mix.qf;
   const std::string where =
       "thermal equilibrium" + (name.empty() ? std::string() : ", film '" + name + "'");
-  if (mix.starved && !(Qr > 0.0)) throw StarvedError(starved_message(where, Qf, Q, Qr));
+  const SupplyMixing mix =
+      checked_supply_mixing(where, Q, Qr, opt.carry_over, opt.supply_flow_m3_s);
+  const double Qf = mix.qf;
   const double m = mix.carried / Qf + opt.effective_factor;
   const double a = P / (mu * rc * denom);
   auto g = [&](double t) { return t - Ts - m * a * oil.viscosity_pa_s(t); };

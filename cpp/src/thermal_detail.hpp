@@ -70,6 +70,18 @@ inline SupplyMixing supply_mixing(double Q, double Qr, double lam, double metere
 /// the hot flow reaching its inlet Q_r and the least supply that feeds it, Q − Q_r.
 std::string starved_message(const std::string& where, double Qf, double Q, double Qr);
 
+/// supply_mixing, with the one starvation that has no continuation: no hot oil at all reaches
+/// the inlet (Q_r <= 0), so λ_eff is undefined — StarvedError (starved_message at `where`,
+/// with Qr_avail), at once; a starved film with Q_r > 0 is returned flagged (the iteration
+/// passes through it and reports "starved" if it ends there).
+inline SupplyMixing checked_supply_mixing(const std::string& where, double Q, double Qr,
+                                          double lam, double metered, double Qr_avail = -1.0) {
+  const SupplyMixing s = supply_mixing(Q, Qr, lam, metered, Qr_avail);
+  if (s.starved && !(Qr > 0.0))
+    throw StarvedError(starved_message(where, s.qf, Q, Qr_avail < 0.0 ? Qr : Qr_avail));
+  return s;
+}
+
 /// A turbulent film's density (its Reynolds number ρ|ω|R h/μ) and the thermal oil's (the heat
 /// balance, the Walther law's μ = ρν) are one oil's: InputError naming `where` +
 /// "density_kg_m3" when they differ by more than 1e-9 relative. A laminar film's density is

@@ -54,6 +54,20 @@ bool take_thd_state(const ThdFilmState& ts, const ThermalFilm& tf, const Eigen::
   return !(res > tf.thd_options.tol_k);
 }
 
+/// A pad's inlet mixing (both pad models): its supply share with the upstream pad's outflow
+/// Q_out,u (checked_supply_mixing: a share below the demand draws more of it; starved when
+/// Q_f + Q_out,u < Q) at the pad's carry-over λ and metered share. `where`: "THD energy
+/// equation" or "thermal equilibrium". ConvergenceError when the pad draws no oil.
+SupplyMixing pad_mixing(const std::string& where, double lam, double metered, double Q,
+                        double Qout_u, const std::string& name) {
+  const std::string at = where + ", film '" + name + "'";
+  const SupplyMixing mix = checked_supply_mixing(at, Q, Qout_u, lam, metered);
+  if (!(Q > 0.0 && mix.qf + mix.carried > 0.0))
+    throw ConvergenceError(at + ": the pad draws no oil (flow into its leading edge " + num(Q) +
+                           " m^3/s)");
+  return mix;
+}
+
 /// The THD pad films' inlet temperatures (Ettles' hot-oil carry-over from the upstream pad,
 /// ThermalFilm::upstream), solved together — each pad's field is affine in its inlet
 /// temperature, so the ring is one small linear system — then their states and next fields.
@@ -92,8 +106,7 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
   }
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
-  std::vector<double> Qf(thermal.size(), 0.0), lam_eff(thermal.size(), 0.0);
-  std::vector<char> starved(thermal.size(), 0);
+  std::vector<SupplyMixing> mixes(thermal.size());
   for (int r = 0; r < nr; ++r) {
     const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
     const std::size_t u = static_cast<std::size_t>(thermal[i].upstream);
@@ -104,19 +117,10 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
       throw InputError("thermal[" + std::to_string(i) + "].upstream: film '" +
                        m.films[thermal[u].film].name + "' is not a pad film");
     const ThdFieldParts& pu = parts[u];
-    // the pad's inlet mixes its supply share with the upstream pad's outflow Q_r,u (a
-    // metered share below the demand draws more of it; starved: Q_f + Q_r,u < Q)
-    const SupplyMixing mix = supply_mixing(pi.Q, pu.Qr, o.carry_over, o.supply_flow_m3_s);
-    const double carried = mix.carried, qf = mix.qf;
-    if (mix.starved && !(pu.Qr > 0.0))
-      throw StarvedError(starved_message("THD energy equation, film '" + name + "'", qf, pi.Q,
-                                         pu.Qr));
-    lam_eff[i] = mix.lam_eff;
-    starved[i] = mix.starved ? 1 : 0;
-    if (!(pi.Q > 0.0 && qf + carried > 0.0))
-      throw ConvergenceError("THD energy equation, film '" + name + "': the pad draws no oil "
-                             "(flow from the inlet " + num(pi.Q) + " m^3/s)");
-    Qf[i] = qf;
+    // the pad's inlet mixes its supply share with the upstream pad's outflow Q_r,u
+    mixes[i] = pad_mixing("THD energy equation", o.carry_over, o.supply_flow_m3_s, pi.Q, pu.Qr,
+                          name);
+    const double carried = mixes[i].carried, qf = mixes[i].qf;
     // (Q_f + c) T_in,i − c (tb_u/Q_r,u) T_in,u [− c (tc_u/Q_r,u) T_J] = Q_f T_s + c ta_u/Q_r,u
     A(r, r) += qf + carried;
     if (carried > 0.0) {
@@ -138,11 +142,11 @@ void pad_states(const std::vector<ThermalFilm>& thermal, std::vector<ThdFieldPar
   for (int r = 0; r < nr; ++r) {
     const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
     ThdFilmState ts = thd_state(std::move(parts[i]), *sols[i], thermal[i].thd_options, wfs[i],
-                                tin[r], Qf[i],
+                                tin[r], mixes[i].qf,
                                 jrow[r] >= 0 ? tin[jrow[r]]
                                              : std::numeric_limits<double>::quiet_NaN());
-    ts.carry_over_effective = lam_eff[i];
-    ts.starved = starved[i] != 0;
+    ts.carry_over_effective = mixes[i].lam_eff;
+    ts.starved = mixes[i].starved;
     if (!take_thd_state(ts, thermal[i], X, off[i], off[i + 1] - off[i], GX, films[i]))
       done = false;
   }
@@ -171,22 +175,6 @@ PadBalance pad_balance(const ReynoldsSolver& rs, const FilmSolution& sol, const 
   b.Qout = std::max(parts.Q - b.Qs, 0.0);
   b.mu = mu;
   return b;
-}
-
-/// The carry-over of the THD pads (pad_states): the carried-over flow λ Q_out,u (all of the
-/// pad's demand when it exceeds it) and the fresh flow Q_f.
-SupplyMixing pad_mixing(const ThermalOptions& o, double Q, double Qout_u,
-                        const std::string& name, double& qf, double& carried) {
-  const SupplyMixing mix = supply_mixing(Q, Qout_u, o.carry_over, o.supply_flow_m3_s);
-  carried = mix.carried;
-  qf = mix.qf;
-  if (mix.starved && !(Qout_u > 0.0))
-    throw StarvedError(starved_message("thermal equilibrium, film '" + name + "'", qf, Q,
-                                       Qout_u));
-  if (!(Q > 0.0 && qf + carried > 0.0))
-    throw ConvergenceError("thermal equilibrium, film '" + name + "': the pad draws no oil "
-                           "(flow into its leading edge " + num(Q) + " m^3/s)");
-  return mix;
 }
 
 /// The effective-temperature pad films (ThermalFilm::upstream >= 0, thd = false): per pad the
@@ -220,8 +208,8 @@ void effective_pad_states(const std::vector<ThermalFilm>& thermal,
                        "' is not an effective-temperature pad film");
     return pos[static_cast<std::size_t>(u)];
   };
-  std::vector<double> qf(nr), carried(nr), dT(nr), den(nr), lam_eff(nr);
-  std::vector<char> starved(nr, 0);
+  std::vector<double> dT(nr), den(nr);
+  std::vector<SupplyMixing> mix(nr);
   const auto name = [&](int r) {
     return m.films[thermal[static_cast<std::size_t>(ring[static_cast<std::size_t>(r)])].film].name;
   };
@@ -243,15 +231,13 @@ void effective_pad_states(const std::vector<ThermalFilm>& thermal,
     const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
     const int u = up(r);
     const PadBalance& pb = bal[i];
-    const SupplyMixing mix = pad_mixing(thermal[i].options, pb.Q,
-                                        bal[static_cast<std::size_t>(ring[u])].Qout, name(r),
-                                        qf[r], carried[r]);
-    lam_eff[r] = mix.lam_eff;
-    starved[r] = mix.starved ? 1 : 0;
+    const ThermalOptions& o = thermal[i].options;
+    mix[r] = pad_mixing("thermal equilibrium", o.carry_over, o.supply_flow_m3_s, pb.Q,
+                        bal[static_cast<std::size_t>(ring[u])].Qout, name(r));
     // (Q_f + c) T_in,r − c T_in,u = Q_f T_s + c ΔT_u
-    A(r, r) += qf[r] + carried[r];
-    A(r, u) -= carried[r];
-    b[r] += qf[r] * thermal[i].options.supply_temperature_c + carried[r] * dT[u];
+    A(r, r) += mix[r].qf + mix[r].carried;
+    A(r, u) -= mix[r].carried;
+    b[r] += mix[r].qf * thermal[i].options.supply_temperature_c + mix[r].carried * dT[u];
   }
   const Eigen::VectorXd tin = A.fullPivLu().solve(b);
   if (!tin.allFinite() || !((A * tin - b).cwiseAbs().maxCoeff() <=
@@ -270,9 +256,9 @@ void effective_pad_states(const std::vector<ThermalFilm>& thermal,
     st.power_loss_w = pb.P;
     st.film_flow_m3_s = pb.Q;
     st.side_flow_m3_s = pb.Qs;
-    st.supply_flow_m3_s = qf[r];
-    st.carry_over_effective = lam_eff[r];
-    st.starved = starved[r] != 0;
+    st.supply_flow_m3_s = mix[r].qf;
+    st.carry_over_effective = mix[r].lam_eff;
+    st.starved = mix[r].starved;
     st.recirculation_flow_m3_s = pb.Qout;
     films[i] = st;
   }
@@ -298,7 +284,8 @@ void effective_pad_states(const std::vector<ThermalFilm>& thermal,
     for (int r : order) {
       const std::size_t i = static_cast<std::size_t>(ring[static_cast<std::size_t>(r)]);
       const double ts = thermal[i].options.supply_temperature_c;
-      const double t_in = (qf[r] * ts + carried[r] * Tout[up(r)]) / (qf[r] + carried[r]);
+      const double t_in = (mix[r].qf * ts + mix[r].carried * Tout[up(r)]) /
+                          (mix[r].qf + mix[r].carried);
       ThermalOptions o = thermal[i].options;  // the pad's own balance from its inlet
       o.supply_temperature_c = std::min(t_in, thermal[i].oil.t_max_c);
       o.carry_over = 0.0;

@@ -20,6 +20,14 @@ __all__ = ["RotordynError", "InputError", "ConvergenceError", "ContactError", "S
            "StarvedFilmError"]
 
 
+def status_error(status: str, message: str) -> ConvergenceError:
+    """The exception of a point that ended with a failed ``status``: ``StarvedFilmError`` for
+    "starved" (one mapping of the status, shared by every caller), ``ConvergenceError``
+    otherwise."""
+    cls = StarvedFilmError if str(status) == "starved" else ConvergenceError
+    return cls(message)
+
+
 class RotordynWarning(UserWarning):
     """Base class of rotordyn's warnings (the computation goes on; the input is suspicious)."""
 

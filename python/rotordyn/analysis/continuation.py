@@ -98,6 +98,16 @@ def continuation(system: System, vary: str, bounds, start="equilibrium", **optio
     return fn(system, vary, bounds, start, **options)
 
 
+def _screens_apply(screens: dict, applies: bool) -> None:
+    """``screen_rtol``/``screen_margin`` belong to the screened final pass of shooting's
+    ``newton="fast"`` flow route; given anywhere else (where they would do nothing):
+    InputError naming the field."""
+    for k, val in screens.items():
+        if val is not None and not applies:
+            raise InputError(f"{k}: applies only to method='shooting' with newton='fast' and "
+                             f"floquet='flow' (the screened final pass), got {val!r}")
+
+
 @limited_blas
 def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(),
                  ds: float = 0.05, ds_min: float = 1e-3, ds_max: float = 0.2,
@@ -105,8 +115,8 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
                  rtol: float = 1e-8, atol_m: float = 1e-12, tol: float = 1e-6,
                  max_iter: int = 8, max_steps: int = 200000, fd_step: float = 1e-4,
                  n_out: int = 101, sensitivity_rtol: float | None = None,
-                 newton: str = DEFAULT_NEWTON, screen_rtol: float = 1e-4,
-                 screen_margin: float = 0.005, method: str = "shooting",
+                 newton: str = DEFAULT_NEWTON, screen_rtol: float | None = None,
+                 screen_margin: float | None = None, method: str = "shooting",
                  harmonics: int | None = None, time_points: int | None = None,
                  floquet: str | None = None, floquet_margin: float | None = None,
                  floquet_tol: float | None = None, progress=None) -> BranchResult:
@@ -159,7 +169,8 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
         more CVODES sensitivity column (p_c, a_y; the speed keeps the central difference),
         and the final pass screened at ``screen_rtol`` (docs/nonlinear.md).
     screen_rtol, screen_margin
-        ``newton="fast"`` with ``floquet="flow"`` only: each point's final pass
+        ``newton="fast"`` with ``floquet="flow"`` only (given elsewhere: InputError; defaults
+        1e-4 and 0.005): each point's final pass
         (sensitivities in the error test) runs first at the sensitivity tolerance
         ``screen_rtol``, and again at
         ``sensitivity_rtol`` where the verdict is not safe at the looser one:
@@ -235,6 +246,9 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     method = v.choice("method", method, METHODS)
     if setup.field is not None and method != "harmonic_balance":
         raise field_method_error(setup.vary)
+    screens = {"screen_rtol": screen_rtol, "screen_margin": screen_margin}
+    if method == "harmonic_balance":
+        _screens_apply(screens, False)
     if method == "harmonic_balance":
         if newton != DEFAULT_NEWTON:
             raise InputError(f"newton: applies only to method='shooting' (the correctors of "
@@ -253,6 +267,7 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
             raise InputError(f"{k}: applies only to method='harmonic_balance'")
     floquet, margin, ftol = floquet_options(floquet, floquet_margin, floquet_tol,
                                             SHOOTING_FLOQUET, SHOOTING_FLOQUET[0])
+    _screens_apply(screens, newton == "fast" and floquet == "flow")
     if floquet == "flow" and floquet_margin is not None:  # as the command line refuses it
         raise InputError(f"floquet_margin: applies only to floquet='samples' with shooting "
                          f"(the flow route screens nothing), got {floquet_margin!r}")
@@ -289,8 +304,10 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     opt.broyden = newton in ("broyden", "fast")
     if newton == "fast":
         opt.parameter_sensitivity = True
-        opt.screen_rtol = v.in_range("screen_rtol", screen_rtol, 1e-14, 0.1)
-        opt.screen_margin = v.in_range("screen_margin", screen_margin, 0.0, 0.5)
+        opt.screen_rtol = v.in_range("screen_rtol", 1e-4 if screen_rtol is None
+                                     else screen_rtol, 1e-14, 0.1)
+        opt.screen_margin = v.in_range("screen_margin", 0.005 if screen_margin is None
+                                       else screen_margin, 0.0, 0.5)
 
     def point_result(step, p_core):
         extra = {"method": "shooting", "floquet": step.floquet_route}

@@ -19,7 +19,7 @@ import inspect
 
 import numpy as np
 
-from rotordyn.errors import ConvergenceError, InputError, StarvedFilmError
+from rotordyn.errors import InputError, status_error
 from rotordyn._common.status import point_messages
 from rotordyn.results.equilibrium import CONVERGED
 
@@ -117,9 +117,8 @@ def thermal_stability(stability, system, speed_hz, chamber_pressure_pa, config_a
 
     t = thermal_point(system, speed_hz, chamber_pressure_pa, config_ay_m, thermal)
     if t.status not in CONVERGED:  # a starved film: StarvedFilmError (status "starved")
-        cls = StarvedFilmError if t.status == "starved" else ConvergenceError
-        raise cls(f"thermal equilibrium at {float(speed_hz):g} Hz: {t.status} "
-                  f"({t.message}); not linearised")
+        raise status_error(t.status, f"thermal equilibrium at {float(speed_hz):g} Hz: "
+                                     f"{t.status} ({t.message}); not linearised")
     st = stability(t.system, speed_hz, chamber_pressure_pa, config_ay_m, n_modes=n_modes,
                    method=method, warm_start=False, **equilibrium_kw)
     return dataclasses.replace(st, thermal=t)

@@ -16,7 +16,7 @@ from rotordyn._common.status import point_messages
 from rotordyn.results.equilibrium import CONVERGED
 from rotordyn._common import validate as v
 from rotordyn.model.system import System
-from rotordyn.results.unbalance import RIPPLE_PROMINENCE, UnbalanceResult
+from rotordyn.results.unbalance import RIPPLE_PROMINENCE, UnbalanceResult, half_power_walk
 from rotordyn.units import hz_to_rad_s
 
 
@@ -59,7 +59,9 @@ def _unresolved_bands(u: UnbalanceResult) -> list[tuple[float, float]]:
     """Grid intervals holding a half-power speed N₁ or N₂ of a peak of the orbit's major axis
     (what :meth:`UnbalanceResult.peaks` reads), at any station, wider than BAND_TOL_REL × N_c:
     the AF interpolated across them is not converged, so a station's AF depended on which
-    other stations refined the grid (issue 18)."""
+    other stations refined the grid (issue 18). A side whose walk climbs into another
+    resonance first has no half-power speed (``peaks()`` calls its AF unresolved): nothing to
+    refine there (the walk went on past the neighbour, refining a band no AF reads)."""
     s = u.speeds_hz
     out = []
     for k in range(u.major_m.shape[1]):
@@ -69,16 +71,11 @@ def _unresolved_bands(u: UnbalanceResult) -> list[tuple[float, float]]:
                 continue
             half = v[i] / np.sqrt(2)
             tol = BAND_TOL_REL * s[i]
-            j = i
-            while j > 0 and v[j] > half:
-                j -= 1
-            if v[j] <= half and s[j + 1] - s[j] > tol:
-                out.append((s[j], s[j + 1]))
-            j = i
-            while j < len(v) - 1 and v[j] > half:
-                j += 1
-            if v[j] <= half and s[j] - s[j - 1] > tol:
-                out.append((s[j - 1], s[j]))
+            for step in (-1, 1):
+                j, cut = half_power_walk(v, i, half, step)
+                lo, hi = (j, j + 1) if step < 0 else (j - 1, j)
+                if not cut and v[j] <= half and s[hi] - s[lo] > tol:
+                    out.append((s[lo], s[hi]))
     return out
 
 

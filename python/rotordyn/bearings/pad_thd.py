@@ -36,15 +36,14 @@ import numpy as np
 from rotordyn import _core
 from rotordyn._common import validate as v
 from rotordyn.bearings.tilt_names import RenamedTiltOutputs
-from rotordyn.errors import ConvergenceError, InputError, StarvedFilmError
+from rotordyn.errors import ConvergenceError, InputError, status_error
 
 
 def failed_equilibrium(what: str, eq) -> ConvergenceError:
     """The ConvergenceError of a thermal equilibrium ``eq`` (the core's EquilibriumResult)
     that did not converge, carrying its ``status`` and ``detail`` (the core's message) for a
     caller that reports the failed point as a status record (``rotordyn bearing``)."""
-    cls = StarvedFilmError if str(eq.status) == "starved" else ConvergenceError
-    exc = cls(f"{what}: {eq.status}: {eq.message}")
+    exc = status_error(eq.status, f"{what}: {eq.status}: {eq.message}")
     exc.status, exc.detail = str(eq.status), str(eq.message)
     return exc
 

@@ -30,22 +30,32 @@ PEAK_COLUMNS = ("station", "critical_speed_hz", "peak_m", "n1_hz", "n2_hz",
 ``required_margin_pct`` when operating speeds are known), also when there is no peak."""
 
 
+def half_power_walk(a: np.ndarray, i: int, half: float, step: int) -> tuple[int, bool]:
+    """(j, cut): the first index where the response ``a`` falls to ``half`` walking from the
+    peak ``i`` in direction ``step`` (or the end of the speeds), and whether the walk climbed
+    into another resonance first (the response rose by more than :data:`RIPPLE_PROMINENCE`
+    of the peak above its lowest value since the peak). One walk for the half-power speeds
+    (:func:`_half_power_speed`) and the unbalance response's grid refinement around them."""
+    j, low, n = i, a[i], len(a)
+    while 0 < j < n - 1 and a[j] > half:
+        if a[j] > low + RIPPLE_PROMINENCE * a[i]:
+            return j, True
+        low = min(low, a[j])
+        j += step
+    return j, bool(a[j] > half and a[j] > low + RIPPLE_PROMINENCE * a[i])
+
+
 def _half_power_speed(a: np.ndarray, s: np.ndarray, i: int, half: float, step: int
                       ) -> tuple[float, bool]:
     """(N, cut): the speed where the response ``a`` first falls to ``half`` walking from the
     peak ``i`` in direction ``step`` (linear interpolation; NaN when it does not fall that far
-    within the speeds), and whether the walk climbed into another resonance first (the
-    response rose by more than :data:`RIPPLE_PROMINENCE` of the peak above its lowest value
-    since the peak). A cut band has no half-power speed on that side: taking the range's end
-    instead made a small resonance on a larger one's skirt "critically damped" (issue qa21)."""
-    j, low, n = i, a[i], len(s)
-    while 0 < j < n - 1 and a[j] > half:
-        if a[j] > low + RIPPLE_PROMINENCE * a[i]:
-            return float("nan"), True
-        low = min(low, a[j])
-        j += step
-    if a[j] > half:
-        return (float("nan"), a[j] > low + RIPPLE_PROMINENCE * a[i])
+    within the speeds), and whether the walk climbed into another resonance first
+    (:func:`half_power_walk`). A cut band has no half-power speed on that side: taking the
+    range's end instead made a small resonance on a larger one's skirt "critically damped"
+    (issue qa21)."""
+    j, cut = half_power_walk(a, i, half, step)
+    if cut or a[j] > half:
+        return float("nan"), cut
     if step < 0:
         return float(s[j] + (half - a[j]) * (s[j + 1] - s[j]) / (a[j + 1] - a[j])), False
     return float(s[j - 1] + (a[j - 1] - half) * (s[j] - s[j - 1]) / (a[j - 1] - a[j])), False
