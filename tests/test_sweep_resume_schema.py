@@ -45,9 +45,10 @@ def _spec(tmp_path):
     return spec
 
 
-def _make_old(out: Path, drop_last: bool = True) -> list[str]:
-    """Rewrite the logged parts of ``out`` without the tilt columns (an older rotordyn's
-    rows), log them as it would have, and forget the last chunk (left to do)."""
+def _make_old(out: Path, drop_last: bool = True, columns=TILT_OUTPUTS) -> list[str]:
+    """Rewrite the logged parts of ``out`` without ``columns`` (default the tilt columns: an
+    older rotordyn's rows), log them as it would have, and forget the last chunk (left to
+    do)."""
     log = out / "_chunks.jsonl"
     entries = [json.loads(x) for x in log.read_text().splitlines() if x.strip()]
     live = {e["file"]: e for e in entries if e["op"] == "file"}
@@ -61,7 +62,7 @@ def _make_old(out: Path, drop_last: bool = True) -> list[str]:
             (out / name).unlink()
             continue
         t = pq.read_table(out / name)
-        t = t.drop_columns([c for c in TILT_OUTPUTS if c in t.column_names])
+        t = t.drop_columns([c for c in columns if c in t.column_names])
         buf = pa.BufferOutputStream()
         pq.write_table(t, buf, compression="zstd")
         data = buf.getvalue().to_pybytes()
@@ -130,3 +131,33 @@ def test_a_resume_of_the_same_schema_still_resumes(tmp_path):
     run_sweep(spec, out, threads=1)
     got = sw.open(out).frame
     assert got["eig_real_1_per_s"].tolist() == ref["eig_real_1_per_s"].tolist()
+
+
+def test_resume_of_a_thermal_sweep_before_carry_over_effective_refuses(tmp_path):
+    """A thermal sweep (analysis "thermal") begun before its rows had ``carry_over_effective`` (the
+    effective carry-over of a metered supply below the film's demand, 2026-12-06): the resume
+    names the column and --no-resume; nothing is written. Model: the compressor on plain
+    thermal bearings (36 × 8), not the paper rig."""
+    s = rotordyn.System.from_toml(MODELS / "compressor_plain_thermal.toml")
+    s = dataclasses.replace(s, bearings=tuple(
+        dataclasses.replace(b, n_circ=36, n_axial=8) for b in s.bearings))
+    s.to_toml(tmp_path / "m.toml")
+    spec = tmp_path / "spec.toml"
+    spec.write_text('schema = "rotordyn/sweep/1"\nname = "old-thermal"\nmodel = "m.toml"\n'
+                    'analysis = "thermal"\nchunk_size = 1\n[grid]\n'
+                    'speed_hz = [100.0, 150.0, 200.0]\n')
+    out = tmp_path / "out"
+    run_sweep(spec, out, threads=1, progress=False)
+    assert "carry_over_effective" in sw.open(out).frame.columns
+    old = _make_old(out, columns=("carry_over_effective",))
+    assert len(old) == 2
+    before = sorted(p.name for p in out.iterdir())
+    with pytest.raises(InputError) as exc:
+        run_sweep(spec, out, threads=1, progress=False)
+    msg = str(exc.value)
+    assert "another row schema" in msg and "carry_over_effective" in msg
+    assert "--no-resume" in msg
+    assert sorted(p.name for p in out.iterdir()) == before
+    run_sweep(spec, out, threads=1, resume=False, progress=False)
+    got = sw.open(out).frame
+    assert len(got) == 6 and got["carry_over_effective"].notna().all()  # 3 speeds × 2 films
