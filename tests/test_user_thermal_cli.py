@@ -116,6 +116,23 @@ def test_cli_wall_option_on_the_effective_model_is_refused_naming_it():
     _same(d, _api(TURB, model="thd", journal_htc_w_m2k=500.0))
 
 
+@pytest.mark.parametrize("args, message", [
+    (["--model", "effective", "--bush-htc-w-m2k", "500"],
+     "rotordyn: error: --bush-htc-w-m2k: an option of --model thd only (the "
+     "effective-temperature model is adiabatic)"),
+    (["--model", "thd", "--effective-factor", "0.5"],
+     "rotordyn: error: --effective-factor: an option of --model effective only (the THD film "
+     "has no effective temperature: the energy equation gives the field)")])
+def test_cli_other_model_option_is_the_apis_rule_in_flag_names(args, message, capsys):
+    """`rotordyn thermal` refuses an option of the other model by the API's one rule
+    (analysis.thermal.refuse_other_model_options), named as its flags (it kept its own copy
+    of the rule, in other words)."""
+    from rotordyn.cli import main
+
+    assert main(["thermal", str(TURB), "--speed-hz", "150", *args]) == 2
+    assert capsys.readouterr().err.strip() == message
+
+
 def test_thermal_keywords_take_the_thd_wall_options():
     """`thermal={"model": "thd", "wall_htc": "film"}` (docs: a dict of
     system_thermal_equilibrium's keywords) was refused: "thermal.wall_htc: not a keyword of

@@ -37,21 +37,31 @@ THD_ONLY_OPTIONS = ("journal_htc_w_m2k", "bush_htc_w_m2k", "journal_temperature_
                     "bush_temperature_c", *WALL_OPTIONS)
 
 
-def refuse_other_model_options(model: str, given: dict, prefix: str = "") -> None:
+def refuse_other_model_options(model: str, given: dict, prefix: str = "",
+                               flags: bool = False) -> None:
     """InputError naming the first of ``given`` (keyword → value, None: not given) that the
     thermal ``model`` does not use: the THD walls with "effective" (adiabatic),
     ``effective_factor`` with "thd" (no effective temperature); ``prefix`` goes before the
-    name (e.g. "options.thermal.")."""
+    name (e.g. "options.thermal."). ``flags``: named as the command line's options
+    (``--bush-htc-w-m2k: an option of --model thd only``). The one rule of the API, the
+    sweep spec and the CLI."""
     named = sorted(k for k, x in given.items() if x is not None)
+
+    def name(k):
+        return f"--{k.replace('_', '-')}" if flags else f"{prefix}{k}"
+
+    def of(m):
+        return f"--model {m}" if flags else f"model='{m}'"
+
     if model == "effective":
         bad = [k for k in named if k in THD_ONLY_OPTIONS]
         if bad:
-            raise InputError(f"{prefix}{bad[0]}: an option of model='thd' only (the "
+            raise InputError(f"{name(bad[0])}: an option of {of('thd')} only (the "
                              "effective-temperature model is adiabatic)")
     if model == "thd" and "effective_factor" in named:
-        raise InputError(f"{prefix}effective_factor: an option of model='effective' only (the "
-                         "THD film has no effective temperature: the energy equation gives the "
-                         "field)")
+        raise InputError(f"{name('effective_factor')}: an option of {of('effective')} only "
+                         "(the THD film has no effective temperature: the energy equation "
+                         "gives the field)")
 
 
 @limited_blas

@@ -290,17 +290,11 @@ def _check_thermal_model(s, args) -> None:
     film (it has no effective temperature to weight), a wall option with the adiabatic
     effective-temperature model. (Every thermal bearing, plain, active,
     tilting-pad or fixed-geometry, takes either model.)"""
+    from rotordyn.analysis.thermal import THD_ONLY_OPTIONS, refuse_other_model_options
+
     chosen = args.thermal_model or getattr(s.thermal, "model", None) or "effective"
-    if chosen == "effective":  # the effective-temperature model is adiabatic: no walls
-        for f in ("journal_htc_w_m2k", "bush_htc_w_m2k", "journal_temperature_c",
-                  "bush_temperature_c"):
-            if getattr(args, f, None) is not None:
-                raise InputError(f"--{f.replace('_', '-')}: an option of the THD film (the "
-                                 "effective-temperature model is adiabatic); --model thd, or "
-                                 "leave it out")
-    if chosen == "thd" and args.effective_factor is not None:
-        raise InputError("--effective-factor: the THD film has no effective temperature (the "
-                         "energy equation gives the field); leave it out, or --model effective")
+    refuse_other_model_options(chosen, {k: getattr(args, k, None) for k in (
+        *THD_ONLY_OPTIONS, "effective_factor")}, flags=True)
 
 
 MODE_TABLE_ROWS = 12  # modes a table shows without --n-modes / --max-freq-hz
