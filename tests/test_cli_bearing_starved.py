@@ -11,9 +11,9 @@ printed no record.
 
 Models: the compressor's DE bearing (tests/data/models/compressor_plain_thermal.toml, D 0.1 m,
 L 0.05 m, c 0.1 mm, ISO VG 32 at 45 °C, 150 Hz; not the paper rig) through ``--model-file``
-and built from flags. The least supply that feeds the film (``least_supply_m3_s``, bracketed to 1 % by the
-command) is checked against the film: fed (status ok, exit 0) at 1.001 × it and starved 2 %
-below it. The C++ message's own "a supply of at least Q - Q_r" is the demand left at the
+and built from flags. The least supply that feeds the film (``least_supply_m3_s``,
+bracketed to 1 % by the command) is checked against the film: fed (status ok, exit 0) at
+1.001 × it and starved 2 % below it. The C++ message's own "a supply of at least Q - Q_r" is the demand left at the
 starved iterate's flows: on this bearing (effective model, from 1e-7 m³/s) it named 3.44e-5
 m³/s, which still starves the film (fed from ≈ 9.8e-5)."""
 

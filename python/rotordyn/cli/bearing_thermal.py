@@ -243,5 +243,6 @@ def run_thermal_tilted(b, oil, rec: dict, args: argparse.Namespace) -> int:
     return 0
 
 
-__all__ = ["failed_aligned", "least_feeding_supply", "print_effective", "print_thd", "run_thermal_tilted", "thermal_kwargs",
+__all__ = ["failed_aligned", "least_feeding_supply", "print_effective", "print_thd",
+           "run_thermal_tilted", "thermal_kwargs",
            "thermal_model", "thermal_row"]
