@@ -22,7 +22,7 @@ def _loaded(eq) -> dict:
     """{(bearing, pad): loaded?} of a converged equilibrium's tilting pads."""
     out = {}
     for bi, d in (getattr(eq, "pads", None) or {}).items():
-        for k, unloaded in enumerate(d["pad_unloaded"]):
+        for k, unloaded in enumerate(d.get("pad_unloaded", ())):
             out[(str(eq.bearing_names[bi]), k)] = not bool(unloaded)
     return out
 

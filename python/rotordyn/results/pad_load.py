@@ -31,9 +31,9 @@ def light_pads(equilibrium) -> list[tuple[str, int, float, float]]:
     ``pads_frame()``); empty without tilting pads or a converged equilibrium."""
     out = []
     for bi, d in (getattr(equilibrium, "pads", None) or {}).items():
-        p = [float(x) for x in d["pad_p_max_pa"]]
+        p = [float(x) for x in d.get("pad_p_max_pa", ())]
         top = max(p) if p else 0.0
-        for k, (pk, unloaded) in enumerate(zip(p, d["pad_unloaded"])):
+        for k, (pk, unloaded) in enumerate(zip(p, d.get("pad_unloaded", ()))):
             if top > 0 and not unloaded and pk < LIGHT_PAD_REL * top:
                 out.append((str(equilibrium.bearing_names[bi]), k, pk, top))
     return out
