@@ -419,7 +419,8 @@ def _cmd_stability(args) -> int:
                          "speed_hz": st.speed_hz, "max_real_1_per_s": st.max_real_1_per_s,
                          "modes": df.iloc[keep][cols].to_dict("list")
                          | {"whirl": list(st.whirl[keep]), "kind": list(st.kind[keep])},
-                         "thermal": _thermal_json(st.thermal)}))
+                         "thermal": _thermal_json(st.thermal),
+                         "pad_load_note": st.pad_load_note}))
     else:
         if len(df):  # a failed equilibrium has no modes: its status line below, no empty table
             print(table_text(df.iloc[keep]))
@@ -429,6 +430,8 @@ def _cmd_stability(args) -> int:
         if st.status in CONVERGED:  # a failed equilibrium has no verdict (below: why)
             print(f"{'stable' if st.stable else 'UNSTABLE'}: largest Re λ = "
                   f"{st.max_real_1_per_s:.4g} 1/s", file=sys.stderr)
+            if st.pad_load_note:  # a verdict at the onset of pad loading: sensitive
+                print(f"note: {st.pad_load_note}", file=sys.stderr)
         if st.thermal is not None:
             t = st.thermal
             print(f"at the thermal equilibrium ({t.thermal_model} model, field frozen): "

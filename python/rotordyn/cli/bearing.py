@@ -32,11 +32,12 @@ from rotordyn.bearings.thermal import Oil
 from rotordyn.cli.common import add_thermal_arguments, json_text, oil_from_args
 from rotordyn.cli.bearing_aligned import run_model_aligned, table
 from rotordyn.cli.bearing_model import add_model_arguments, model_bearing
-from rotordyn.cli.bearing_thermal import (print_effective, print_thd, run_thermal_tilted,
+from rotordyn.cli.bearing_thermal import (failed_aligned, least_feeding_supply,
+                                          print_effective, print_thd, run_thermal_tilted,
                                           thermal_kwargs, thermal_row)
 from rotordyn.cli.bearing_tilt import add_tilt_arguments, run_tilted, wants_tilt
 from rotordyn.cli.common import add_thd_arguments, journal_pose
-from rotordyn.errors import InputError
+from rotordyn.errors import ConvergenceError, InputError
 from rotordyn.results.equilibrium import CONVERGED
 
 
@@ -217,9 +218,20 @@ def _aligned(b: JournalBearing, oil: Oil | None, rec: dict, args: argparse.Names
 def _thermal(b: JournalBearing, oil: Oil, rec: dict, args: argparse.Namespace) -> int:
     """Effective-temperature or THD equilibrium of the aligned film: temperatures, power,
     flows, K, C (temperature frozen); the tilted one: :func:`rotordyn.cli.bearing_thermal.
-    run_thermal_tilted`."""
+    run_thermal_tilted`. A film without a thermal equilibrium (a metered supply below what it
+    leaks: status "starved"; no settled temperature) is a status record with exit 1
+    (:func:`rotordyn.cli.bearing_thermal.failed_aligned`), as a tilted or pad bearing's is."""
     kw = thermal_kwargs(args)
-    r = b.thermal_equilibrium(oil=oil, **kw)
+    try:
+        r = b.thermal_equilibrium(oil=oil, **kw)
+    except ConvergenceError as exc:  # e.g. StarvedFilmError: a failed status, not an error
+        status = getattr(exc, "status", "error")
+        least = None
+        if status == "starved":
+            least = least_feeding_supply(
+                lambda q: b.thermal_equilibrium(oil=oil, **{**kw, "supply_flow_m3_s": q}),
+                kw["supply_flow_m3_s"], str(exc))
+        return failed_aligned(rec, args, status, getattr(exc, "detail", str(exc)), least)
     rec["thermal"] = thermal_row(r)
     rec.update(journal_x_m=r.x_m, journal_y_m=r.y_m, k_n_per_m=r.K.tolist(),
                c_n_s_per_m=r.C.tolist(), coefficient_method="perturbation")

@@ -6,14 +6,16 @@ given by its dimensions, or a model file's plain, tilting-pad or fixed-geometry 
 (``--model-file``, :mod:`rotordyn.cli.bearing_model`); docs/film-physics.md, "Plain and
 tilting-pad bearings, standalone".
 
-A tilted thermal equilibrium that fails (no equilibrium within the iteration caps, a load the
-film cannot carry) is a status record — ``status``, ``message`` and the point's inputs, text
+A thermal equilibrium that fails, tilted or aligned (no equilibrium within the iteration
+caps, a load the film cannot carry, a metered supply below what the film draws: "starved") is
+a status record — ``status``, ``message`` and the point's inputs, text
 or ``--json`` — with exit 1, as a failed misaligned equilibrium is (no film outputs or
 coefficients at a failed point)."""
 
 from __future__ import annotations
 
 import argparse
+import re
 
 import numpy as np
 
@@ -124,6 +126,73 @@ def _failed(rec: dict, args: argparse.Namespace, status: str, message: str) -> i
     return 1
 
 
+_DEMAND = re.compile(r"at least Q - Q_r = ([0-9.eE+-]+) m\^3/s")
+LEAST_SUPPLY_RTOL = 0.01  # the bracket of the least supply that feeds a starved film
+
+
+def least_feeding_supply(solve, supply: float, message: str) -> float | None:
+    """The least metered supply (m³/s) at which ``solve(q)`` (a thermal equilibrium at supply
+    ``q``) is not starved, bracketed to :data:`LEAST_SUPPLY_RTOL` (the fed end returned; None
+    when 40 steps find no fed supply). The C++ message's "at least Q − Q_r" is the demand
+    left at the starved iterate's flows, a necessary supply, not always a sufficient one: a
+    larger supply cools the film, which then draws more (the compressor's DE bearing, effective
+    model, from 1e-7 m³/s: 3.44e-5 named, still starved; fed from about 9.8e-5)."""
+    from rotordyn.errors import StarvedFilmError
+
+    def starved(q):
+        try:
+            r = solve(q)
+        except StarvedFilmError as exc:
+            return True, str(exc)
+        except ConvergenceError:
+            return False, ""  # not a starvation: the supply is not what fails there
+        return r.status == "starved", getattr(r, "message", "")
+
+    lo, msg, hi = supply, message, None
+    for _ in range(40):  # walk up from the starved supply: the iterate's demand, else 2×
+        m = _DEMAND.search(msg)
+        q = max(2.0 * lo, 1e-12) if m is None else max(float(m.group(1)), 1.001 * lo)
+        bad, msg = starved(q)
+        if not bad:
+            hi = q
+            break
+        lo = q
+    if hi is None:
+        return None
+    while hi - lo > LEAST_SUPPLY_RTOL * hi:
+        mid = 0.5 * (lo + hi)
+        if starved(mid)[0]:
+            lo = mid
+        else:
+            hi = mid
+    return hi
+
+
+def failed_aligned(rec: dict, args: argparse.Namespace, status: str, message: str,
+                   least_supply_m3_s: float | None = None) -> int:
+    """The status record of a failed aligned thermal equilibrium of a plain film (exit 1):
+    ``status`` (e.g. "starved": the metered supply below what the film draws), ``message``
+    (for a starved film also the least supply that feeds it, ``least_supply_m3_s``, from
+    :func:`least_feeding_supply`) and the point's inputs; no film outputs or coefficients."""
+    if status == "starved":
+        message += ("; the least supply that feeds the film: " + (
+            f"{least_supply_m3_s:.4g} m^3/s (bracketed to {100 * LEAST_SUPPLY_RTOL:g} %)"
+            if least_supply_m3_s is not None else "not found"))
+        rec["least_supply_m3_s"] = least_supply_m3_s
+    rec.update(load_n=list(args.load_n), supply_temperature_c=args.supply_temperature_c,
+               supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),
+               carry_over=_or(args.carry_over, 0.0), thermal_model=thermal_model(args),
+               status=status, message=message)
+    if args.json:
+        print(json_text(rec))
+    else:
+        print(f"thermal equilibrium ({rec['thermal_model']} model): {status} ({message}) at "
+              f"load ({args.load_n[0]:g}, {args.load_n[1]:g}) N, {args.speed_hz:g} Hz, supply "
+              f"{args.supply_temperature_c:g} degC, {rec['supply_flow_m3_s']:g} m3/s; no film "
+              "outputs or coefficients at a failed equilibrium")
+    return 1
+
+
 def run_thermal_tilted(b, oil, rec: dict, args: argparse.Namespace) -> int:
     """The tilted thermal equilibrium of ``b`` (a JournalBearing, or a model file's plain,
     tilting-pad or fixed-geometry bearing) under ``--load-n`` with the journal held at the
@@ -174,5 +243,6 @@ def run_thermal_tilted(b, oil, rec: dict, args: argparse.Namespace) -> int:
     return 0
 
 
-__all__ = ["print_effective", "print_thd", "run_thermal_tilted", "thermal_kwargs",
+__all__ = ["failed_aligned", "least_feeding_supply", "print_effective", "print_thd",
+           "run_thermal_tilted", "thermal_kwargs",
            "thermal_model", "thermal_row"]

@@ -42,11 +42,12 @@ from rotordyn.report.tables import tilt_coefficient_tables
 from rotordyn.report.sections import (COEFFICIENT_HEADER, CRITICAL_HEADER, MERGE_RTOL,
                                       api_response, bearing_coefficient_frame,
                                       coefficient_rows, coefficient_text_lines,
-                                      SOURCE_LEAST_DAMPED, critical_rows,
+                                      SOURCE_LEAST_DAMPED, backward_note, critical_rows,
                                       critical_speed_table, critical_text_lines,
                                       not_resonance_note, shape_source, shapes_for,
                                       thermal_critical_text_lines, thermal_results)
 from rotordyn.report import dynamics_text
+from rotordyn.report.pad_onset import pad_onset_html
 from rotordyn.report import thermal_dynamics as thermal_dyn
 from rotordyn.report.criteria import (NOT_RESOLVED, SCREEN_LOG_DEC, Checks, critical_speed_map,
                                       speed_range)
@@ -372,8 +373,8 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                     "(docs/api-criteria.md).</p>" if len(crit) else
                     "<p>No critical speed in the speed range: no resonant forward 1× crossing in the "
                     "Campbell diagram and no resonance peak in the unbalance response.</p>")
-                 + (f"<p>{html.escape(not_resonance_note(crit))}</p>"
-                    if not_resonance_note(crit) else ""))
+                 + "".join(f"<p>{html.escape(n)}</p>"
+                           for n in (not_resonance_note(crit), backward_note(crit)) if n))
 
     # 3b. the mode shape at each critical speed
     _progress(progress, f"mode shapes at the critical speeds ({len(crit)} in range)")
@@ -391,7 +392,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
             sec.append(f"<figure>{svg(m.figure)}<figcaption>{what}: "
                        f"{m.speed_hz:.4g} Hz ({60 * m.speed_hz:.0f} rpm, "
                        f"{html.escape(m.source)}), {m.whirl} mode at {m.freq_hz:.4g} Hz, log "
-                       f"dec {m.log_dec:.3g} ({html.escape(shape_source(m.source))}): whirl "
+                       f"dec {m.log_dec:.3g} ({html.escape(shape_source(m.source, m.whirl))}): whirl "
                        "orbits along the rotor, normalised to the largest.</figcaption>"
                        "</figure>")
         if len(crit) > len(shapes):
@@ -442,7 +443,7 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
                  + f"<figcaption>Forward rotor modes below {window_hz:.4g} Hz (backward modes "
                  "and the undamped shaft modes far above the speed range are left out; |δ| < "
                  "1e-6 is round-off)." + _isothermal_note(s, tc is not None)
-                 + "</figcaption></figure>")
+                 + "</figcaption></figure>" + pad_onset_html(eqs))
     if tc is not None:  # the same on thermal films: section 3c's Campbell diagram
         parts.append(thermal_dyn.stability_html(tc, checks, window_hz, operating_speed_hz, svg,
                                                 _log_dec_figure, _table, c, ld, dyn,

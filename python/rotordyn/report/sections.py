@@ -7,7 +7,9 @@ diagram and the unbalance response:
   or both;
 * the mode shape at each critical speed (the system's eigenvector at that speed whose damped
   frequency is nearest the critical's — the crossing's or the peak's, i.e. the speed itself —
-  forward whirl, drawn as whirl orbits along the rotor);
+  of the critical's whirl: forward, or backward where the response orbit at the responding
+  station whirls backward, :mod:`rotordyn.report.critical_whirl`; drawn as whirl orbits
+  along the rotor);
 * each bearing's stiffness and damping coefficients kxx … cyy over the analysed speeds
   (:func:`rotordyn.analysis.bearing_coefficients.bearing_coefficients`, pads and sleeve
   condensed at the synchronous whirl frequency), as a table and a figure.
@@ -27,6 +29,9 @@ from rotordyn._common.api import af_text
 from rotordyn._common.whirl import driven_by_unbalance
 from rotordyn.analysis.bearing_coefficients import bearing_coefficients
 from rotordyn._common.api import RESONANT_LOG_DEC
+from rotordyn.report.critical_whirl import (BACKWARD_NOTE, backward_crossings, mode_in_band,
+                                            pick_backward, response_whirl, station_whirl,
+                                            whirl_text)
 from rotordyn.report.tables import (COEFFICIENT_HEADER, MISSING, _text_table, cell,
                                     coefficient_rows, tilt_coefficient_tables)
 
@@ -51,6 +56,7 @@ class CriticalShape:
 
 
 SOURCE_CAMPBELL = "damped Campbell crossing (1×, forward)"
+SOURCE_CAMPBELL_BACKWARD = "damped Campbell crossing (1×, backward)"
 SOURCE_PEAK = "unbalance response peak"
 SOURCE_LEAST_DAMPED = ("no critical speed in range: the least damped forward mode at the "
                        "maximum continuous speed (with a resonance below the screening window, "
@@ -58,7 +64,7 @@ SOURCE_LEAST_DAMPED = ("no critical speed in range: the least damped forward mod
 UNSTABLE_NOTE = "(at a linearly unstable speed: not a steady orbit)"
 MERGE_RTOL = 0.05  # a crossing and a peak (or peaks at two stations) this close are one critical
 CRITICAL_COLUMNS = ("speed_hz", "source", "campbell_hz", "log_dec", "peak_hz", "stations",
-                    "amplification_factor", "af_kind")
+                    "amplification_factor", "af_kind", "whirl", "whirl_station")
 
 
 def _peak_groups(unbalance, rtol: float) -> list[dict]:
@@ -121,29 +127,44 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
     " + "; a peak at a linearly unstable speed says so), ``campbell_hz``, ``log_dec`` (the
     crossing mode's δ there: δ ≳ 1.3, AF ≈ π/δ < 2.5, is critically damped), ``peak_hz`` (NaN
     where absent), ``stations`` (the stations whose response peaks there, text),
-    ``amplification_factor`` and ``af_kind`` of the largest peak."""
+    ``amplification_factor`` and ``af_kind`` of the largest peak, ``whirl`` and
+    ``whirl_station``: a peak's whirl is that of the circular component of the response that
+    resonates at the responding station (the output station with the largest orbit there;
+    :func:`rotordyn.report.critical_whirl.response_whirl`), and a backward peak is matched with
+    the backward 1× crossings (:data:`SOURCE_CAMPBELL_BACKWARD`) and backward modes; a
+    crossing alone carries its mode's whirl (station −1)."""
     import pandas as pd
     cross, cross_ld = _crossings(campbell)
+    cross_wh = _crossing_whirls(campbell)
+    back, back_ld = backward_crossings(campbell)
     peaks = _peak_groups(unbalance, rtol) if unbalance is not None else []
     used: set[int] = set()
+    used_back: set[int] = set()
     rows, dropped = [], []
     for g in peaks:
-        near = [i for i in range(cross.size) if i not in used and _near(cross[i], g, rtol)]
-        i = min(near, key=lambda i: abs(cross[i] - g["peak_hz"])) if near else None
+        label, _, at = response_whirl(unbalance, g["stations"], g["peak_hz"], rtol)
+        if label == "backward" and any(i not in used and _near(cross[i], g, rtol)
+                                       for i in range(cross.size)):
+            label = "forward"  # a forward mode crosses 1× inside the peak too: it is that one
+        bw = label == "backward"  # matched with backward crossings and backward modes
+        xs, xld, taken = (back, back_ld, used_back) if bw else (cross, cross_ld, used)
+        near = [i for i in range(xs.size) if i not in taken and _near(xs[i], g, rtol)]
+        i = min(near, key=lambda i: abs(xs[i] - g["peak_hz"])) if near else None
         if i is not None:
-            used.add(i)
-        elif campbell is not None and not _mode_in_band(campbell, g):
+            taken.add(i)
+        elif campbell is not None and not mode_in_band(campbell, g, label):
             dropped.append(g)  # two modes' responses interfering, no resonance of its own
             continue
         peak = SOURCE_PEAK + ("" if g["stable"] else " " + UNSTABLE_NOTE)
-        rows.append({"speed_hz": cross[i] if i is not None else g["peak_hz"],
-                     "source": (SOURCE_CAMPBELL + " + " if i is not None else "") + peak,
-                     "campbell_hz": cross[i] if i is not None else np.nan,
-                     "log_dec": cross_ld[i] if i is not None else np.nan,
+        src = SOURCE_CAMPBELL_BACKWARD if bw else SOURCE_CAMPBELL
+        rows.append({"speed_hz": xs[i] if i is not None else g["peak_hz"],
+                     "source": (src + " + " if i is not None else "") + peak,
+                     "campbell_hz": xs[i] if i is not None else np.nan,
+                     "log_dec": xld[i] if i is not None else np.nan,
                      "peak_hz": g["peak_hz"],
                      "stations": ", ".join(str(x) for x in g["stations"]),
                      "amplification_factor": g["amplification_factor"],
-                     "af_kind": g["af_kind"]})
+                     "af_kind": g["af_kind"], "whirl": label, "whirl_station": at})
     overdamped = []
     for i in range(cross.size):
         if i not in used and cross_ld[i] >= RESONANT_LOG_DEC:
@@ -151,7 +172,7 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
         elif i not in used:
             rows.append({"speed_hz": cross[i], "source": SOURCE_CAMPBELL, "campbell_hz": cross[i],
                          "log_dec": cross_ld[i], "peak_hz": np.nan, "stations": "", "amplification_factor": np.nan,
-                         "af_kind": ""})
+                         "af_kind": "", "whirl": cross_wh[i], "whirl_station": -1})
     df = pd.DataFrame(rows, columns=list(CRITICAL_COLUMNS)).sort_values("speed_hz",
                                                                        ignore_index=True)
     df.attrs["not_resonances"] = [(g["peak_hz"], ", ".join(str(x) for x in g["stations"]))
@@ -161,25 +182,17 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
 
 
 def _crossings(campbell) -> tuple[np.ndarray, np.ndarray]:
-    """The forward 1× crossings (Hz) and the crossing mode's log decrement there (interpolated
-    along the tracked mode)."""
+    """The forward (and planar) 1× crossings (Hz) and the crossing mode's log decrement there
+    (interpolated along the tracked mode)."""
     if campbell is None:
         return np.empty(0), np.empty(0)
     cs = campbell.critical_speeds()
     return cs["speed_hz"].to_numpy(dtype=float), cs["log_dec"].to_numpy(dtype=float)
 
 
-def _mode_in_band(campbell, group: dict) -> bool:
-    """Whether a forward rotor mode of ``campbell`` at the speed nearest the peak has its damped
-    frequency inside the peak's half-power band (an open side: unbounded there)."""
-    i = int(np.argmin(np.abs(campbell.speeds_hz - group["peak_hz"])))
-    f = campbell.frequencies_hz[i]
-    ok = (campbell.rotor_mask()[i] & driven_by_unbalance(campbell.whirl[i]) & (f > 0)
-          & np.isfinite(f))
-    lo, hi = group["band_hz"]
-    lo = lo if np.isfinite(lo) else -np.inf
-    hi = hi if np.isfinite(hi) else np.inf
-    return bool(np.any(ok & (f >= lo) & (f <= hi)))
+def _crossing_whirls(campbell) -> list[str]:
+    """The whirl of each crossing of :func:`_crossings` ("forward" or "planar")."""
+    return [] if campbell is None else [str(w) for w in campbell.critical_speeds()["whirl"]]
 
 
 def not_resonance_note(table) -> str:
@@ -200,7 +213,13 @@ def not_resonance_note(table) -> str:
     return " ".join(out)
 
 
-CRITICAL_HEADER = ("critical speed (Hz)", "(rpm)", "source", "1× crossing (Hz)",
+def backward_note(table) -> str:
+    """How a backward critical speed is treated (empty without one in ``table``)."""
+    has = table is not None and len(table) and (table["whirl"] == "backward").any()
+    return BACKWARD_NOTE if has else ""
+
+
+CRITICAL_HEADER = ("critical speed (Hz)", "(rpm)", "source", "whirl", "1× crossing (Hz)",
                    "δ at the crossing", "response peak (Hz)", "peak at stations", "AF")
 
 
@@ -209,16 +228,20 @@ def critical_rows(table) -> list[tuple]:
     out = []
     for r in table.itertuples(index=False):
         out.append((f"{r.speed_hz:.4g}", f"{60 * r.speed_hz:.0f}", r.source,
-                    cell(r.campbell_hz, ".4g"), cell(r.log_dec + 0.0, ".3g"),
+                    r.whirl or MISSING, cell(r.campbell_hz, ".4g"), cell(r.log_dec + 0.0, ".3g"),
                     cell(r.peak_hz, ".4g"), r.stations or MISSING,
                     af_text(r.amplification_factor, r.af_kind) if r.af_kind else MISSING))
     return out
 
 
-def shape_source(source: str) -> str:
-    """How the mode of a critical was picked, for the figure's caption."""
+def shape_source(source: str, whirl: str = "forward") -> str:
+    """How the mode of a critical was picked, for the figure's caption (``whirl``: the
+    critical's, :func:`rotordyn.report.critical_whirl.response_whirl`)."""
     if source == SOURCE_LEAST_DAMPED:
         return "no 1× crossing and no resonance peak in range: the least damped forward mode"
+    if whirl.endswith("backward"):
+        return ("the backward component of the response resonates at the responding station: "
+                "the damped rotor mode nearest the speed whose orbit there whirls backward")
     if source.startswith(SOURCE_CAMPBELL):
         return "the mode crossing 1× in the damped Campbell diagram"
     return ("the damped forward mode nearest the unbalance response peak's frequency at that "
@@ -261,7 +284,8 @@ def shapes_for(system, crit, n_mc_hz: float, window_hz: float, chamber_pressure_
     if len(crit):
         return critical_mode_shapes(system, crit["speed_hz"].to_numpy(), chamber_pressure_pa,
                                     config_ay_m, progress=progress,
-                                    sources=list(crit["source"]))
+                                    sources=list(crit["source"]),
+                                    whirls=list(zip(crit["whirl"], crit["whirl_station"])))
     return critical_mode_shapes(system, [n_mc_hz], chamber_pressure_pa, config_ay_m,
                                 progress=progress, sources=[SOURCE_LEAST_DAMPED],
                                 least_damped_below_hz=window_hz)
@@ -269,7 +293,7 @@ def shapes_for(system, crit, n_mc_hz: float, window_hz: float, chamber_pressure_
 
 def critical_mode_shapes(system, critical_speeds_hz, chamber_pressure_pa: float,
                          config_ay_m, *, max_n: int = MAX_CRITICAL_SHAPES,
-                         progress=None, sources=None,
+                         progress=None, sources=None, whirls=None,
                          least_damped_below_hz: float = np.inf) -> list[CriticalShape]:
     """The mode shape at each of the first ``max_n`` critical speeds (Hz): with bearing
     elements the system's stability eigenvectors at that speed (equilibrium there), else the
@@ -279,11 +303,15 @@ def critical_mode_shapes(system, critical_speeds_hz, chamber_pressure_pa: float,
     ``source`` column of :func:`critical_speed_table`; default: Campbell crossings), named in
     the figure's title; a source :data:`SOURCE_LEAST_DAMPED` draws instead the least damped
     forward rotor mode below ``least_damped_below_hz`` at that speed (a model without any
-    critical speed in range, :func:`shapes_for`)."""
+    critical speed in range, :func:`shapes_for`). ``whirls``: each critical's (whirl, station)
+    (the ``whirl`` and ``whirl_station`` columns): a backward one draws the rotor mode nearest
+    the speed whose orbit at that station whirls backward
+    (:func:`rotordyn.report.critical_whirl.pick_backward`)."""
     out: list[CriticalShape] = []
     crit = [float(x) for x in critical_speeds_hz][:max_n]
     srcs = list(sources)[:max_n] if sources is not None else [SOURCE_CAMPBELL] * len(crit)
-    for n, (nc, src) in enumerate(zip(crit, srcs)):
+    whs = list(whirls)[:max_n] if whirls is not None else [("forward", -1)] * len(crit)
+    for n, (nc, src, (wh, at)) in enumerate(zip(crit, srcs, whs)):
         try:
             if system.bearings:
                 r = analysis.stability(system, nc, chamber_pressure_pa, config_ay_m)
@@ -295,12 +323,15 @@ def critical_mode_shapes(system, critical_speeds_hz, chamber_pressure_pa: float,
         except Exception as exc:  # noqa: BLE001 - a failed point is reported, not raised
             out.append(CriticalShape(nc, np.nan, "", np.nan, None, f"{exc}", src))
             continue
+        bw = wh == "backward"
         if ok and src == SOURCE_LEAST_DAMPED:
             j = _least_damped(r, kind, least_damped_below_hz)
+        elif ok and bw:
+            j = pick_backward(r, kind, system, int(at), nc)
         else:
             j = _pick(r.frequencies_hz, r.whirl, kind, nc) if ok else None
         if j is None:
-            why = (f"no forward rotor mode at {nc:.4g} Hz" if ok
+            why = (f"no {'backward' if bw else 'forward'} rotor mode at {nc:.4g} Hz" if ok
                    else f"{r.status}: {r.message}")
             out.append(CriticalShape(nc, np.nan, "", np.nan, None, why, src))
             continue
@@ -314,10 +345,15 @@ def critical_mode_shapes(system, critical_speeds_hz, chamber_pressure_pa: float,
             head = f"no critical speed; least damped forward mode at {nc:.4g} Hz"
         else:
             how = "1× crossing" if src.startswith(SOURCE_CAMPBELL) else "response peak"
+            how += ", backward whirl" if bw else ""
             head = f"critical speed {n + 1} ({how}): {nc:.4g} Hz ({60 * nc:.0f} rpm)"
-        ax.set_title(f"{head}\nmode {r.frequencies_hz[j]:.4g} Hz, {r.whirl[j]}, δ = {ld:.3g}")
-        out.append(CriticalShape(nc, float(r.frequencies_hz[j]), str(r.whirl[j]), ld,
-                                 ax.figure, source=src))
+        # a backward critical's mode by its orbit at the responding station (its summed label
+        # may say otherwise on strongly elliptical modes)
+        name = (whirl_text("backward", station_whirl(r, system, int(at))[j]) if bw
+                else str(r.whirl[j]))
+        ax.set_title(f"{head}\nmode {r.frequencies_hz[j]:.4g} Hz, {name}, δ = {ld:.3g}")
+        out.append(CriticalShape(nc, float(r.frequencies_hz[j]), name, ld, ax.figure,
+                                 source=src))
         if progress is not None:
             progress(n + 1, len(crit))
     return out
@@ -393,7 +429,8 @@ def thermal_critical_text_lines(crit, note: str) -> list[str]:
         lines += _text_table(CRITICAL_HEADER, critical_rows(crit))
     else:
         lines.append("  none: no resonant forward 1× crossing and no response peak in the range")
-    return lines + (["  " + not_resonance_note(crit)] if not_resonance_note(crit) else [])
+    return (lines + (["  " + not_resonance_note(crit)] if not_resonance_note(crit) else [])
+            + (["  " + backward_note(crit)] if backward_note(crit) else []))
 
 
 def critical_text_lines(crit, shapes, rng, chamber_pressure_pa: float, active: bool,
@@ -412,6 +449,8 @@ def critical_text_lines(crit, shapes, rng, chamber_pressure_pa: float, active: b
         lines.append("  none: no resonant forward 1× crossing and no response peak in the range")
     if not_resonance_note(crit):
         lines.append("  " + not_resonance_note(crit))
+    if backward_note(crit):
+        lines.append("  " + backward_note(crit))
     for k, m in enumerate(shapes, start=1):
         if m.figure is None:
             lines.append(f"  mode shape at critical speed {k} ({m.speed_hz:.4g} Hz): not "
@@ -421,7 +460,8 @@ def critical_text_lines(crit, shapes, rng, chamber_pressure_pa: float, active: b
                 else f"mode shape at critical speed {k}")
         lines.append(f"  {f'critical_mode_{k}.png: ' if files else ''}{what}, "
                      f"{m.speed_hz:.4g} Hz ({m.source}): {m.whirl} mode at "
-                     f"{m.freq_hz:.4g} Hz, log dec {m.log_dec:.3g} ({shape_source(m.source)})")
+                     f"{m.freq_hz:.4g} Hz, log dec {m.log_dec:.3g} "
+                     f"({shape_source(m.source, m.whirl)})")
     if len(crit) > len(shapes):
         lines.append(f"  mode shapes of the first {len(shapes)} of {len(crit)} drawn")
     return lines
@@ -507,9 +547,12 @@ def write_text_sections(system, rng, chamber_pressure_pa: float, config_ay_m, ou
     checks.films = films  # Level I: isothermal films (as in the HTML report)
     if level1 is not None:
         level1_report.add_checks(*level1, checks)
+    from rotordyn.report.pad_onset import pad_onset_lines
+
     return (lines + coefficient_text_lines(coeffs) + film_text_lines(film_tab, lengths)
             + thermal_text_lines(th, th_coeffs, note)
-            + thermal_critical_text_lines(tcrit, tnote) + dyn + checks.text_lines())
+            + thermal_critical_text_lines(tcrit, tnote) + dyn + pad_onset_lines(eqs)
+            + checks.text_lines())
 
 
 def coefficient_speeds(speeds_hz, n: int = 11) -> np.ndarray:
@@ -530,6 +573,7 @@ def bearing_coefficient_frame(system, speeds_hz, chamber_pressure_pa: float, con
 __all__ = ["COEFFICIENT_HEADER", "CRITICAL_COLUMNS", "CRITICAL_HEADER", "CriticalShape",
            "MAX_CRITICAL_SHAPES", "SOURCE_CAMPBELL", "SOURCE_LEAST_DAMPED", "SOURCE_PEAK", "bearing_coefficient_frame",
            "api_response", "coefficient_rows", "coefficient_speeds", "critical_mode_shapes",
+           "SOURCE_CAMPBELL_BACKWARD", "backward_note",
            "coefficient_text_lines", "critical_rows", "critical_speed_table",
            "critical_text_lines", "not_resonance_note", "shape_source", "shapes_for",
            "thermal_critical_speeds", "thermal_critical_text_lines", "thermal_results",

@@ -117,11 +117,24 @@ class StabilityResult(Display):
             head += (f" (the {len(self.eigenvalues)} kept; over all "
                      f"{len(self.all_eigenvalues)} roots max Re λ = "
                      f"{self.max_real_1_per_s:.3g} 1/s)")
+        light = self.pad_load_note
+        if light:
+            head += "; " + light.split(":", 1)[0] + " (pad_load_note)"
         return head + ">"
 
     @property
     def frequencies_hz(self) -> np.ndarray:
         return self.eigenvalues.imag / (2 * np.pi)
+
+    @property
+    def pad_load_note(self) -> str:
+        """Tilting pads at the onset of loading at this equilibrium, named with why the
+        verdict is sensitive there ("" without any; :mod:`rotordyn.results.pad_load`)."""
+        from rotordyn.results.pad_load import light_pad_note
+
+        if self.status not in CONVERGED:
+            return ""
+        return light_pad_note(self.linear.equilibrium)
 
     @property
     def damping_ratio(self) -> np.ndarray:
