@@ -50,15 +50,14 @@ def thermal_kwargs(args: argparse.Namespace) -> dict:
               supply_temperature_c=args.supply_temperature_c,
               supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),
               carry_over=_or(args.carry_over, 0.0), model=thermal_model(args))
+    from rotordyn.analysis.thermal import refuse_other_model_options
+
+    # the API's one rule, named as the flags
+    refuse_other_model_options(kw["model"], {k: getattr(args, k, None) for k in (
+        *THD_WALLS, "effective_factor")}, flags=True)
     if kw["model"] == "thd":
-        if args.effective_factor is not None:
-            raise InputError("--effective-factor: an option of the effective-temperature model "
-                             "(not --model thd)")
         kw.update({k: getattr(args, k) for k in THD_WALLS if getattr(args, k) is not None})
     else:
-        for opt in THD_WALLS:
-            if getattr(args, opt) is not None:
-                raise InputError(f"--{opt.replace('_', '-')}: an option of --model thd only")
         kw["effective_factor"] = _or(args.effective_factor, 0.5)
     return kw
 
