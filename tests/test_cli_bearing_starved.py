@@ -76,16 +76,3 @@ def test_starved_plain_film_is_a_status_record(capsys, model, src):
     assert f"({model} model): starved (" in out and "1e-07 m3/s" in out
     assert "Q - Q_r" in out and "no film outputs or coefficients" in out
 
-
-@pytest.mark.parametrize("args, message", [
-    (["--model", "effective", "--bush-htc-w-m2k", "500"],
-     "--bush-htc-w-m2k: an option of --model thd only (the effective-temperature model is "
-     "adiabatic)"),
-    (["--model", "thd", "--effective-factor", "0.5"],
-     "--effective-factor: an option of --model effective only (the THD film has no effective "
-     "temperature: the energy equation gives the field)")])
-def test_other_model_option_is_the_apis_rule(capsys, args, message):
-    """`rotordyn bearing` refuses an option of the other thermal model by the API's rule
-    (analysis.thermal.refuse_other_model_options, flag names), as `rotordyn thermal` does."""
-    code, _, err = _run(capsys, *FLAGS, *OIL, *POINT, *args)
-    assert code == 2 and err.strip() == f"rotordyn: error: {message}"

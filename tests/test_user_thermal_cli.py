@@ -116,6 +116,14 @@ def test_cli_wall_option_on_the_effective_model_is_refused_naming_it():
     _same(d, _api(TURB, model="thd", journal_htc_w_m2k=500.0))
 
 
+# `rotordyn bearing` at a point of its own (a plain film by its dimensions, loaded, supplied)
+BEARING = ["bearing", "--diameter-m", "0.1", "--length-m", "0.05", "--clearance-m", "1e-4",
+           "--n-circ", "48", "--n-axial", "8", "--supply-temperature-c", "45", "--oil-walther",
+           "40", "32", "100", "5.4", "--density-kg-m3", "860", "--speed-hz", "150", "--load-n",
+           "0", "-1500"]
+
+
+@pytest.mark.parametrize("command", ["thermal", "bearing"])
 @pytest.mark.parametrize("args, message", [
     (["--model", "effective", "--bush-htc-w-m2k", "500"],
      "rotordyn: error: --bush-htc-w-m2k: an option of --model thd only (the "
@@ -123,13 +131,14 @@ def test_cli_wall_option_on_the_effective_model_is_refused_naming_it():
     (["--model", "thd", "--effective-factor", "0.5"],
      "rotordyn: error: --effective-factor: an option of --model effective only (the THD film "
      "has no effective temperature: the energy equation gives the field)")])
-def test_cli_other_model_option_is_the_apis_rule_in_flag_names(args, message, capsys):
-    """`rotordyn thermal` refuses an option of the other model by the API's one rule
-    (analysis.thermal.refuse_other_model_options), named as its flags (it kept its own copy
-    of the rule, in other words)."""
+def test_cli_other_model_option_is_the_apis_rule_in_flag_names(command, args, message, capsys):
+    """`rotordyn thermal` and `rotordyn bearing` refuse an option of the other model by the
+    API's one rule (analysis.thermal.refuse_other_model_options), named as their flags (each
+    kept its own copy of the rule)."""
     from rotordyn.cli import main
 
-    assert main(["thermal", str(TURB), "--speed-hz", "150", *args]) == 2
+    argv = ["thermal", str(TURB), "--speed-hz", "150"] if command == "thermal" else BEARING
+    assert main([*argv, *args]) == 2
     assert capsys.readouterr().err.strip() == message
 
 
