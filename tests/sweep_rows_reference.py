@@ -383,6 +383,7 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
     n = hi - lo
     X = np.full((n, len(stations)), np.nan + 0j)
     Y = np.full((n, len(stations)), np.nan + 0j)
+    max_real = np.full(n, np.nan)
     base, speeds, ops = [], [], []
     status, msg = [None] * n, [None] * n
     for k, pid in enumerate(range(lo, hi)):
@@ -409,18 +410,20 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
         res = _core.unbalance_sweep(
             asm.model, hz_to_rad_s(np.array([o[0] for o in run])),
             np.array([o[1] for o in run]), np.array([o[2] for o in run]), np.zeros(0),
-            pt.equilibrium_options(opts), np.zeros((0, 0)), F1, O, False, 0.0, False, False,
-            [], [], 1, True)
+            pt.equilibrium_options(opts), np.zeros((0, 0)), F1, O, False, 0.0, False, True,
+            asm.rotor.xy_pairs(), asm.rotor.rot_pairs(), 1, True)
         Z = np.asarray(res.Y)
         X[k:j + 1], Y[k:j + 1] = Z[:, 0::2], Z[:, 1::2]
+        max_real[k:j + 1] = np.asarray(res.max_real)
         for i, (st, m) in enumerate(zip(res.status, res.message)):
             status[k + i], msg[k + i] = (st if st in pt.STATUS else "error"), m
         k = j + 1
     res = UnbalanceResult(np.asarray(speeds), stations, X, Y, np.asarray(status),
                           tuple(map(tuple, ub)),
                           tuple(opts["operating_speed_hz"]) if "operating_speed_hz" in opts
-                          else None)
+                          else None, max_real_1_per_s=max_real)
     major, minor = res.major_m, res.minor_m
+    solved = np.isin(np.asarray(status, dtype=str), list(pt.CONVERGED))
     peaks = {}
     for j, st in enumerate(stations):
         pk = res.peaks(st)
@@ -443,6 +446,7 @@ def unbalance_line(job, variants, chunk_id, lo, hi, rows):
                          "separation_margin_pct": float(pk.get("separation_margin_pct",
                                                                math.nan))
                          if pk is not None else math.nan,
+                         "point_stable": bool(res.stable[k]) if solved[k] else None,
                          "status": status[k], "message": msg[k]})
 
 

@@ -157,7 +157,7 @@ def unbalance_rows(job, variants, chunk_id, lo, hi, rows):
                 stations=stations, chamber_pressure_pa=pc, config_ay_m=p0.get("config_ay_m"),
                 operating_speed_hz=tuple(opts["operating_speed_hz"])
                 if "operating_speed_hz" in opts else None,
-                method=opts.get("linearization", "perturbation"), check_stability=False,
+                method=opts.get("linearization", "perturbation"), check_stability=True,
                 threads=1), _kw(opts))
         except (RotordynError, ArithmeticError, ValueError) as exc:
             rows += [fail_row(r[0], "error", f"{type(exc).__name__}: {exc}") for r in pts]

@@ -25,6 +25,37 @@ def _parse(item, kinds, field):
 
 
 @limited_blas
+def _check_items(asm, inputs, outputs) -> None:
+    """Every input and output item names something the model has (InputError naming the
+    argument and the item otherwise), checked before the equilibrium is solved."""
+    for item in inputs:
+        item = _parse(item, ("chamber_pressure", "force"), "inputs")
+        if item[0] == "force":
+            if len(item) != 2:
+                raise InputError(f"inputs: expected ('force', station), got {item!r}")
+            try:
+                asm.station_load_matrix(item[1])
+            except InputError as exc:
+                raise InputError(f"inputs: {item!r}: {exc}") from None
+    for item in outputs:
+        item = _parse(item, ("displacement", "velocity", "journal", "sleeve"), "outputs")
+        if len(item) != 2:
+            raise InputError(f"outputs: expected (kind, station or bearing), got {item!r}")
+        kind, where = item
+        if kind in ("displacement", "velocity"):
+            try:
+                asm.station_output_matrix(where)
+            except InputError as exc:
+                raise InputError(f"outputs: {item!r}: {exc}") from None
+        else:
+            bcs = [bc for bc in asm.bearings if bc.index == where]
+            if not bcs:
+                raise InputError(f"outputs: {item!r}: no bearing with index {where!r} "
+                                 f"(bearings: 0..{len(asm.bearings) - 1})")
+            if kind == "sleeve" and not bcs[0].sleeve:
+                raise InputError(f"outputs: bearing {where} has no sleeve")
+
+
 def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
                speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
                config_ay_m: float | None = None, **kw) -> StateSpaceResult:
@@ -42,6 +73,7 @@ def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
         if not isinstance(val, (tuple, list)):
             raise InputError(f"{name}: expected a list of {name}, got {val!r}")
     inputs = (inputs,) if isinstance(inputs, str) else inputs
+    _check_items(assembled(system), inputs, outputs)  # bad items: before the solve
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, **kw)
     if lm.status not in CONVERGED:
         raise ConvergenceError(f"statespace: no equilibrium at this operating point ({lm.status}: "
@@ -71,7 +103,10 @@ def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
         else:
             if len(item) != 2:
                 raise InputError(f"inputs: expected ('force', station), got {item!r}")
-            L = asm.station_load_matrix(item[1])
+            try:
+                L = asm.station_load_matrix(item[1])
+            except InputError as exc:  # name the argument and the item, not a bare "station"
+                raise InputError(f"inputs: {item!r}: {exc}") from None
             bcols += [L[:, 0], L[:, 1]]
             in_names += [f"force_x_n[{item[1]}]", f"force_y_n[{item[1]}]"]
     B = np.vstack([np.zeros((n, len(bcols))), Minv @ np.column_stack(bcols)]) if bcols \
@@ -86,7 +121,10 @@ def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
             raise InputError(f"outputs: expected (kind, station or bearing), got {item!r}")
         kind, where = item
         if kind in ("displacement", "velocity"):
-            Co = asm.station_output_matrix(where)
+            try:
+                Co = asm.station_output_matrix(where)
+            except InputError as exc:
+                raise InputError(f"outputs: {item!r}: {exc}") from None
             z = np.zeros_like(Co)
             rows = np.hstack([Co, z]) if kind == "displacement" else np.hstack([z, Co])
             unit = "m" if kind == "displacement" else "m_s"
@@ -95,7 +133,8 @@ def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
         else:
             bcs = [bc for bc in asm.bearings if bc.index == where]
             if not bcs:
-                raise InputError(f"outputs: no bearing with index {where!r}")
+                raise InputError(f"outputs: {item!r}: no bearing with index {where!r} "
+                                 f"(bearings: 0..{len(asm.bearings) - 1})")
             bc = bcs[0]
             idx = [bc.jx, bc.jy] if kind == "journal" else list(bc.sleeve)
             if not idx:

@@ -5,8 +5,8 @@ schedule p_c(Ω) minimising the unbalance response at ``--stations`` under a sta
 margin and the actuator limits; writes grid.csv, schedule.csv, schedule.png under --out.
 
 ``rotordyn control closed-loop MODEL --speed-hz F --chamber-pressure-pa P ...``: designs a
-feedback law (``--law pd`` tuned on the journal's vertical displacement, ``lqg`` or ``hinf``
-on a modal truncation), prints the linear closed loop (eigenvalues, margins), runs the nonlinear
+feedback law (``--law pd`` tuned on the active bearing's vertical journal displacement, ``lqg``
+or ``hinf`` on a modal truncation, all measuring that journal), prints the linear closed loop (eigenvalues, margins), runs the nonlinear
 transient open and closed loop from a disturbance (or a run-up with ``--run-up-hz``),
 writes summary.json, timeseries.csv and closed_loop.png under --out.
 Exit 2 on bad input (the message names the field), 1 on a failed run.
@@ -93,11 +93,13 @@ def register(sub: argparse._SubParsersAction) -> None:
     c.add_argument("--chamber-pressure-pa", type=float, default=0.05e6,
                    help="base chamber pressure (operating point), Pa")
     c.add_argument("--law", choices=("pd", "lqg", "hinf"), default="pd",
-                   help="feedback law: tuned PD on the vertical journal displacement, LQG, or "
+                   help="feedback law: tuned PD on the active bearing's vertical journal "
+                        "displacement, LQG, or "
                         "H∞ (needs the optional slycot: pip install 'rotordyn[hinf]')")
     c.add_argument("--t-end-s", type=float, default=1.0, help="simulated time, s")
     c.add_argument("--disturbance-c", type=float, default=0.1,
-                   help="initial vertical journal displacement, units of the clearance")
+                   help="initial vertical displacement of the active bearing's journal, units "
+                        "of its clearance")
     c.add_argument("--unbalance", type=float, nargs=3, action="append", default=[],
                    metavar=("STATION", "MASS_KG_M", "PHASE_DEG"),
                    help="rotating unbalance (repeatable; default: none)")
@@ -207,7 +209,7 @@ def run_closed_loop(args) -> int:
     from rotordyn.control.closedloop import closed_loop
     from rotordyn.control.lqr import lqg
     from rotordyn.control.pid import tune_pd
-    from rotordyn.control.plant import plant
+    from rotordyn.control.plant import active_bearing_index, plant
     from rotordyn.control.reduction import modal_truncation
 
     if not args.t_end_s > 0 or not math.isfinite(args.t_end_s):
@@ -238,8 +240,11 @@ def run_closed_loop(args) -> int:
         except InputError as exc:
             raise InputError(f"--unbalance: {exc}") from None
     profile = SpeedProfile.ramp(*args.run_up_hz) if args.run_up_hz else None
+    # the active bearing's journal: the one the transient disturbs and the law acts at (on a
+    # model whose active bearing is not bearings[0], journal 0 is another bearing's)
+    ia = active_bearing_index(system)
     p = plant(system, args.speed_hz, args.chamber_pressure_pa, args.config_ay_m,
-              measurements=[("journal", 0)], actuator=act)
+              measurements=[("journal", ia)], actuator=act)
     if args.law == "pd":
         k, cl = tune_pd(p)
         if args.computation_delay_s:
@@ -261,7 +266,7 @@ def run_closed_loop(args) -> int:
         k = with_pade_delay(k, args.computation_delay_s, args.pade_order)
     ol_lam = p.poles
     asm = assembled(system)
-    c = asm.bearings[0].clearance_m if asm.bearings else 1.0
+    c = asm.bearings[ia].clearance_m if asm.bearings else 1.0
     kw = dict(n_out=args.n_out, actuator=act, unbalances=unbalances)
     t_end = args.t_end_s
     if profile is not None:
@@ -277,20 +282,21 @@ def run_closed_loop(args) -> int:
                        controller=k, **kw)
 
     def dev(tr):
-        return np.hypot(tr.journal_x_m[:, 0] - tr.equilibrium_r[asm.bearings[0].jx],
-                        tr.journal_y_m[:, 0] - tr.equilibrium_r[asm.bearings[0].jy])
+        return np.hypot(tr.journal_x_m[:, ia] - tr.equilibrium_r[asm.bearings[ia].jx],
+                        tr.journal_y_m[:, ia] - tr.equilibrium_r[asm.bearings[ia].jy])
 
     pd.DataFrame({"t_s": cln.t, "speed_hz": cln.speed_hz_t,
-                  "open_loop_journal_x_m": ol.journal_x_m[:, 0],
-                  "open_loop_journal_y_m": ol.journal_y_m[:, 0],
-                  "closed_loop_journal_x_m": cln.journal_x_m[:, 0],
-                  "closed_loop_journal_y_m": cln.journal_y_m[:, 0],
+                  "open_loop_journal_x_m": ol.journal_x_m[:, ia],
+                  "open_loop_journal_y_m": ol.journal_y_m[:, ia],
+                  "closed_loop_journal_x_m": cln.journal_x_m[:, ia],
+                  "closed_loop_journal_y_m": cln.journal_y_m[:, ia],
                   "chamber_pressure_command_pa": cln.chamber_pressure_command_pa,
                   "chamber_pressure_pa": cln.chamber_pressure_actual_pa,
                   "controller_output_pa": cln.controller_output_pa}).to_csv(
         out / "timeseries.csv", index=False)
     last = cln.t >= 0.8 * t_end
-    summary = {"law": args.law, "controller_states": k.n_states,
+    summary = {"law": args.law, "journal_bearing": system.bearings[ia].name or str(ia),
+               "controller_states": k.n_states,
                "computation_delay_s": args.computation_delay_s,
                "pade_order": args.pade_order if args.computation_delay_s else None,
                "hinf_gamma": k.info.get("gamma") if args.law == "hinf" else None,

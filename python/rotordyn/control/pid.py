@@ -55,9 +55,12 @@ def tune_pd(p, *, kp0: float = 1e9, kd0: float = 1e6, ki: float = 0.0, tau_d_s: 
     from rotordyn.results.modes import damping_ratio
 
     as_plant(p)
-    if p.measurements != (("journal", 0),):
-        raise InputError(f"plant.measurements: tune_pd tunes a law on ('journal', 0); expected "
-                         f"a plant measuring [('journal', 0)], got {list(p.measurements)}")
+    meas = tuple(tuple(m) for m in p.measurements)
+    if len(meas) != 1 or meas[0][0] != "journal":
+        raise InputError(f"plant.measurements: tune_pd tunes a law on one journal's "
+                         f"displacement; expected a plant measuring [('journal', b)], got "
+                         f"{list(p.measurements)}")
+    bearing = int(meas[0][1])  # the law reads what the plant measures (any bearing's journal)
     for f, val in (("kp0", kp0), ("kd0", kd0)):
         val = v.in_range(f, val, -MAX_GAIN, MAX_GAIN)
         if abs(val) < 1e-3:
@@ -72,7 +75,8 @@ def tune_pd(p, *, kp0: float = 1e9, kd0: float = 1e6, ki: float = 0.0, tau_d_s: 
     def cost(z):
         if not np.all(np.abs(z) <= MAX_GAIN):
             return np.inf  # the search left the gains' range: not a candidate
-        k = pid(z[0], z[1], ki, tau_d_s=tau_d_s, direction_deg=direction_deg)
+        k = pid(z[0], z[1], ki, tau_d_s=tau_d_s, direction_deg=direction_deg,
+                bearing=bearing)
         Acl = closed_loop_matrix(p, k)
         if not np.all(np.isfinite(Acl)):
             return np.inf
@@ -93,5 +97,5 @@ def tune_pd(p, *, kp0: float = 1e9, kd0: float = 1e6, ki: float = 0.0, tau_d_s: 
     from rotordyn.control.closedloop import closed_loop
 
     k = pid(best[1][0], best[1][1], ki, tau_d_s=tau_d_s, direction_deg=direction_deg,
-            name="pd" if not ki else "pid")
+            bearing=bearing, name="pd" if not ki else "pid")
     return k, closed_loop(p, k)

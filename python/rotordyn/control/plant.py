@@ -54,8 +54,9 @@ class Plant:
 
     @property
     def performance_names(self) -> tuple:
+        b = int(self.info.get("performance_bearing", 0))
         return tuple(f"performance_{n}" for n in
-                     ("journal_x_m[0]", "journal_y_m[0]")[:self.C_perf.shape[0]])
+                     (f"journal_x_m[{b}]", f"journal_y_m[{b}]")[:self.C_perf.shape[0]])
 
     def matrices(self):
         """(A, B, C, D) of the whole plant: inputs [u; d], outputs [y; z] (measurements, then
@@ -124,6 +125,16 @@ class Plant:
         return sig.ZerosPolesGain(z, p_, k)
 
 
+def active_bearing_index(system) -> int:
+    """Index of the (first) active journal bearing in ``system.bearings``: the bearing whose
+    journal the designs weigh (``C_perf``) and that the laws measure by default; 0 for a
+    model without one (statespace refuses the chamber-pressure input there anyway)."""
+    from rotordyn.bearings import ActiveJournalBearing
+
+    return next((i for i, b in enumerate(system.bearings)
+                 if isinstance(b, ActiveJournalBearing)), 0)
+
+
 def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
           config_ay_m: float | None = None, *, measurements=(("journal", 0),),
           actuator: Actuator | None = None, disturbance_stations=(),
@@ -162,12 +173,16 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
     Bd = np.vstack([ss.B[:, 1:], np.zeros((na, ss.B.shape[1] - 1))])
     Cm, names = measurement_matrix(system, meas)
     C = np.hstack([Cm, np.zeros((Cm.shape[0], na))])
-    Cj, _ = measurement_matrix(system, [("journal", 0)])
+    # the performance output is the active bearing's journal, wherever it is in the model
+    # (the compressor_active model has it second: journal 0 there is the plain NDE bearing)
+    ia = active_bearing_index(system)
+    Cj, _ = measurement_matrix(system, [("journal", ia)])
     Cp = np.hstack([Cj, np.zeros((2, na))])
     states = tuple(ss.state_names) + tuple(f"actuator_{i}" for i in range(na))
     return Plant(A, B, C, Bd, Cp, meas, names, states, act, float(speed_hz),
                  float(chamber_pressure_pa), config_ay_m, n2 // 2,
-                 info={"equilibrium_r": np.asarray(ss.linear.equilibrium.r, float),
+                 info={"performance_bearing": ia,
+                       "equilibrium_r": np.asarray(ss.linear.equilibrium.r, float),
                        "equilibrium_status": str(ss.linear.equilibrium.status)},
                  disturbance_names=tuple(str(x) for x in ss.input_names[1:]))
 

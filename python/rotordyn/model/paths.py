@@ -21,8 +21,19 @@ def _fields(obj) -> list[str]:
     return [f.name for f in dataclasses.fields(obj)]
 
 
+# an empty ``thermal.films``: the [thermal] table gives every film its values, and a bearing's
+# own values need an entry of its own (a film by its bearing's name is not made up: its other
+# keys would take the class defaults, not the [thermal] values)
+_NO_FILMS = (" (the model's [thermal] has no [[thermal.film]] entry: add one, bearing = "
+             "\"<the bearing's name>\", to give that bearing's film values of its own, or sweep "
+             "the [thermal] value for every film, e.g. thermal.carry_over)")
+
+
 def _select(seq: tuple, key: str, where: str) -> list[int]:
     """Indices of the elements of tuple ``seq`` addressed by ``key``."""
+    if not seq:  # '*' too: a path that sets nothing would be an axis that varies nothing
+        raise InputError(f"{where}: no element {key!r}: the model has none here"
+                         + (_NO_FILMS if ".films." in f".{where}." else ""))
     if key == "*":
         return list(range(len(seq)))
     if key.lstrip("-").isdigit():

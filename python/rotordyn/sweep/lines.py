@@ -141,6 +141,7 @@ def unbalance_line(job, variants, lo, hi, at, asms):
     F1 = asm.unbalance_load(ub)
     X = np.full((n, len(stations)), np.nan + 0j)
     Y = np.full((n, len(stations)), np.nan + 0j)
+    max_real = np.full(n, np.nan)
     speeds, ops = [], []
     status, msg = [None] * n, [None] * n
     for k, pid in enumerate(range(lo, hi)):
@@ -152,7 +153,8 @@ def unbalance_line(job, variants, lo, hi, at, asms):
             ops.append(None)
             status[k], msg[k] = "error", f"{type(exc).__name__}: {exc}"
     # runs of valid points: one C++ call each (equilibrium continued along the run, cold
-    # after a failure, K_H/D_H, the harmonic solve at each speed)
+    # after a failure, K_H/D_H, the harmonic solve at each speed, the largest Re λ there: above
+    # the threshold of instability the response is no steady orbit, ``point_stable`` says so)
     O = np.concatenate(Cout, axis=0)  # (2 n_out, n): x, y of each output station
     k = 0
     while k < n:
@@ -166,17 +168,19 @@ def unbalance_line(job, variants, lo, hi, at, asms):
         res = _core.unbalance_sweep(
             asm.model, hz_to_rad_s(np.array([o[0] for o in run])),
             np.array([o[1] for o in run]), np.array([o[2] for o in run]), np.zeros(0),
-            pt.equilibrium_options(opts), np.zeros((0, 0)), F1, O, False, 0.0, False, False,
-            [], [], 1, True)
+            pt.equilibrium_options(opts), np.zeros((0, 0)), F1, O, False, 0.0, False, True,
+            asm.rotor.xy_pairs(), asm.rotor.rot_pairs(), 1, True)
         Z = np.asarray(res.Y)
         X[k:j + 1], Y[k:j + 1] = Z[:, 0::2], Z[:, 1::2]
+        max_real[k:j + 1] = np.asarray(res.max_real)
         for i, (st, m) in enumerate(zip(res.status, res.message)):
             status[k + i], msg[k + i] = (st if st in pt.STATUS else "error"), m
         k = j + 1
     res = UnbalanceResult(np.asarray(speeds), stations, X, Y, np.asarray(status),
                           tuple(map(tuple, ub)),
                           tuple(opts["operating_speed_hz"]) if "operating_speed_hz" in opts
-                          else None, point_message=np.asarray(msg, dtype=object))
+                          else None, max_real_1_per_s=max_real,
+                          point_message=np.asarray(msg, dtype=object))
     return [(np.repeat(at + np.arange(n), len(stations)),
              unbalance_columns(res, speeds, stations, status, msg))]
 
@@ -193,10 +197,21 @@ def _peak_column(peak, status):
     return out.ravel()
 
 
+def _stable_column(res, status, ns):
+    """(n·ns,) ``point_stable``: the speed's linear verdict (:attr:`UnbalanceResult.stable`,
+    the stability rows' rule), null where no equilibrium converged (nothing linearised)."""
+    from rotordyn._common.status import CONVERGED
+    failed = np.array([str(x) not in CONVERGED for x in status], dtype=bool)
+    out = np.asarray(res.stable, dtype=bool).astype(object)
+    out[failed] = None
+    return np.repeat(out, ns)
+
+
 def unbalance_columns(res, speeds, stations, status, msg) -> dict:
     """The (speed, station) columns of an unbalance line (flat, speed-major) from its
     :class:`UnbalanceResult`: amplitudes, phases, orbit axes, the peaks' critical speed, AF
-    and separation margin (API 684)."""
+    and separation margin (API 684), and the speed's stability verdict ``point_stable``
+    (``res`` computed with the stability check)."""
     n = len(speeds)
     X, Y = res.x, res.y
     major, minor = res.major_m, res.minor_m
@@ -223,6 +238,7 @@ def unbalance_columns(res, speeds, stations, status, msg) -> dict:
         "minor_m": np.asarray(minor, dtype=float).ravel(), "peak": _peak_column(peak, status),
         "critical_speed_hz": crit.ravel(), "amplification_factor": amp.ravel(),
         "separation_margin_pct": sep.ravel(),
+        "point_stable": _stable_column(res, status, ns),
         "status": np.repeat(np.array(status, dtype=object), ns),
         "message": np.repeat(np.array(msg, dtype=object), ns)}
 

@@ -156,7 +156,7 @@ def _modes_block(k, st, t, ids, asm, bearing=None):
 def unbalance_blocks(job, variants, chunk_id, pids, asms):
     """One row per (speed, station) along each speed line (the innermost axis), each speed at
     its own thermal equilibrium (:func:`rotordyn.unbalance_response` with ``thermal``, no
-    refinement, no stability check)."""
+    refinement, with the stability check: ``point_stable``)."""
     from rotordyn.analysis.thermal_dynamics import thermal_unbalance
     from rotordyn.analysis.unbalance import unbalance_response
     from rotordyn.sweep.lines import unbalance_columns
@@ -180,7 +180,7 @@ def unbalance_blocks(job, variants, chunk_id, pids, asms):
                 stations=stations, chamber_pressure_pa=pc, config_ay_m=p0.get("config_ay_m"),
                 operating_speed_hz=tuple(opts["operating_speed_hz"])
                 if "operating_speed_hz" in opts else None,
-                method=opts.get("linearization", "perturbation"), check_stability=False,
+                method=opts.get("linearization", "perturbation"), check_stability=True,
                 threads=1), _kw(opts))
         except _CATCH as exc:
             blocks.append((k, {"status": "error", "message": f"{type(exc).__name__}: {exc}"}))

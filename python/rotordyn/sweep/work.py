@@ -67,7 +67,7 @@ OUTPUTS = {
     "unbalance": {"station": I64, "amplitude_x_m": F64, "amplitude_y_m": F64,
                   "phase_x_deg": F64, "phase_y_deg": F64, "major_m": F64, "minor_m": F64,
                   "peak": BOOL, "critical_speed_hz": F64, "amplification_factor": F64,
-                  "separation_margin_pct": F64},
+                  "separation_margin_pct": F64, "point_stable": BOOL},
     "waterfall": {"freq_hz": F64, "order": F64, "amplitude_x_m": F64, "amplitude_y_m": F64},
     "run-up": {"revolution": I64, "time_s": F64, "amplitude_x_m": F64, "amplitude_y_m": F64,
                "h_min_m": F64},
