@@ -232,8 +232,8 @@ def test_compressor_on_starved_bearings_is_more_stable():
     the top (p = 0) on 36 × 6 nodes: the flooded films whirl (max Re λ = +17.6 1/s); fed half
     and a quarter of their flooded demand the journals run more eccentric with a smaller
     attitude and max Re λ falls by more than 10 1/s (observed −16.2 and −18.2 1/s here; on
-    72 × 16 nodes +0.8 and −0.5 against +17.0 flooded: the direction holds on every grid
-    tried, the starved verdict sits near the margin and its sign is grid-dependent)."""
+    144 × 32 nodes +3.4 and +4.6 against +16.6 flooded: the fall holds on every grid tried,
+    12–36 1/s, the starved verdict does not converge on these grids, docs/film-physics.md)."""
     f = 150.0
     s0 = _compressor()
     e0 = rd.equilibrium(s0, speed_hz=f)
