@@ -63,6 +63,9 @@ void bind_reynolds(py::module_& m) {
                      "Re_h at which the turbulent corrections start (transition; NaN: none).")
       .def_readwrite("turbulence_full_re", &JournalBearingGeometry::turbulence_full_re,
                      "Re_h at which the turbulent corrections are full (transition; NaN: none).")
+      .def_readwrite("supply_flow_m3_s", &JournalBearingGeometry::supply_flow_m3_s,
+                     "Metered supply to the grooves, m^3/s (jfo only; 0: flooded grooves). "
+                     "Below the flooded demand the film is starved (reynolds_starved.cpp).")
       .def("validate", &JournalBearingGeometry::validate);
 
   m.def(
@@ -121,7 +124,18 @@ void bind_reynolds(py::module_& m) {
       .def_readonly("side_flow_m3_s", &FilmSolution::side_flow_m3_s)
       .def_readonly("h_min_m", &FilmSolution::h_min_m)
       .def_readonly("h_min_angle_deg", &FilmSolution::h_min_angle_deg)
-      .def_readonly("iterations", &FilmSolution::iterations);
+      .def_readonly("iterations", &FilmSolution::iterations)
+      .def_readonly("inlet_fill", &FilmSolution::inlet_fill,
+                    "jfo: the grooves' inlet fill theta_in (1: a full film at the groove)")
+      .def_readonly("groove_pressure_factor", &FilmSolution::groove_pressure_factor,
+                    "jfo: the fraction of pressure_pa the grooves hold (1 flooded)")
+      .def_readonly("starved", &FilmSolution::starved,
+                    "jfo: a metered supply below the flooded demand set the groove state")
+      .def_readonly("full_film_start_deg", &FilmSolution::full_film_start_deg,
+                    "jfo: angle (deg) where the full film starts downstream of the first "
+                    "groove, mid-plane row; NaN if none")
+      .def_readonly("supply_iterations", &FilmSolution::supply_iterations,
+                    "film solves of the metered-supply root (0: flooded)");
 
   py::class_<DynamicCoefficients>(m, "DynamicCoefficients")
       .def_readonly("K", &DynamicCoefficients::K)

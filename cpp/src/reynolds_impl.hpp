@@ -293,6 +293,21 @@ struct ReynoldsSolver::Impl {
   // (A_unmasked x)_i for the system's unknown ordering (x indexed by unknowns).
   double apply_row(const LinearSystem& S, int i, const Eigen::VectorXd& x) const;
   void solve_jfo(LinearSystem& S);       // Elrod–Adams p–θ
+  // Metered supply (reynolds_starved.cpp): the grooves' state s (see JournalBearingGeometry::
+  // supply_flow_m3_s): inlet fill θ_in = min(s, 1), pressure max(s − 1, 0)·pressure_pa.
+  double groove_theta = 1.0;
+  std::vector<double> groove_p0;  // node -> the groove's nominal pressure_pa
+  void set_groove_state(double s);
+  void solve_supplied(LinearSystem& S);  // jfo with the supply: flooded, or the root in s
+  void full_film_start();                // out.full_film_start_deg
+  double supply_s = 2.0;                 // the last solve's groove state (2: flooded)
+  // linearize() of a starved film at the held supply: adds ds·x_s to the frozen-state
+  // unknowns x (x_s = ∂u/∂s at the frozen partition, ds so that the inflow does not change);
+  // returns ds. inflow_derivative: the change of flows()' inlet flow for node changes dp, dth
+  // of pressure and fill and dh of the film (the groove state's own change in dp, dth).
+  double hold_supply(const LinearSystem& S, const double* dh, Eigen::VectorXd& x);
+  double inflow_derivative(const std::vector<double>& dp, const std::vector<double>& dth,
+                           const double* dh) const;
   void fill_jfo(LinearSystem& S);
   // Factorise the p–θ system in S.A: static-pattern LU without pivoting (columns are
   // diagonally dominant) checked by its residual on b, else Eigen's pivoting SparseLU.

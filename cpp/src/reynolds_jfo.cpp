@@ -94,6 +94,19 @@ void ReynoldsSolver::Impl::solve_jfo(LinearSystem& S) {
   solve_reynolds(S);
   const int it0 = out.iterations;
   base_rhs(S, S.rhs);
+  if (groove_theta != 1.0) {
+    // A starved groove (reynolds_starved.cpp): its nodes hold p = 0 and the fill θ_in, so the
+    // Couette flux a groove node sends into its downstream cell is (ωRΔz/2)·h_f·θ_in instead
+    // of the full film's: b_i − (1 − θ_in)·(that flux) (the cell balance of cell_residual).
+    const double d = 1.0 - groove_theta;
+    for (const int g : groove_nodes) theta[g] = groove_theta;
+    const bool fwd = omega >= 0.0;
+    for (int i = 0; i < S.n_unk; ++i) {
+      const int n = S.node_of[i];
+      if (fwd && groove[west(n)]) S.rhs[i] -= S.wphi[i] * d * qE[west(n)];
+      if (!fwd && groove[east(n)]) S.rhs[i] += S.wphi[i] * d * qE[n];
+    }
+  }
   std::vector<char> next(S.n_unk);
   const int max_iter = 100 + S.n_unk / 4;
   for (int it = 1; it <= max_iter; ++it) {

@@ -98,6 +98,9 @@ void JournalBearingGeometry::validate() const {
       throw InputError("turbulence_full_re: expected a finite Re_h > turbulence_onset_re = " +
                        num(turbulence_onset_re) + ", got " + num(turbulence_full_re));
   }
+  if (!(std::isfinite(supply_flow_m3_s) && supply_flow_m3_s >= 0.0 && supply_flow_m3_s <= 1e3))
+    throw InputError("supply_flow_m3_s: expected a metered supply in [0, 1e3] m^3/s (0: flooded "
+                     "grooves), got " + num(supply_flow_m3_s));
   for (std::size_t i = 0; i < pockets.size(); ++i) {
     const Pocket& pk = pockets[i];
     const std::string f = "pockets[" + std::to_string(i) + "].";
@@ -218,9 +221,17 @@ ReynoldsSolver::Impl::Impl(const JournalBearingGeometry& g, const FilmGrid& gr, 
   }
   for (int n = 0; n < n_nodes; ++n)
     if (groove[n]) groove_nodes.push_back(n);
+  groove_p0 = p_fixed;  // the flooded grooves' pressures (set_groove_state scales them)
   if (geo.short_bearing && cav == Cavitation::jfo)
     throw InputError("short_bearing: not with cavitation='jfo' (use 'none', 'gumbel' or "
                      "'reynolds')");
+  if (geo.supply_flow_m3_s > 0.0 && cav != Cavitation::jfo)
+    throw InputError(std::string("supply_flow_m3_s: a metered supply (starved film) needs "
+                                 "cavitation='jfo' (the mass-conserving film), got '") +
+                     cavitation_name(cav) + "'");
+  if (geo.supply_flow_m3_s > 0.0 && !geo.pockets.empty())
+    throw InputError("supply_flow_m3_s: a metered supply (starved film) is not available with "
+                     "pockets (the held-supply linearisation assumes a smooth film)");
   if (cav == Cavitation::jfo && geo.grooves.empty())
     throw InputError("grooves: cavitation='jfo' needs at least one supply groove (without a "
                      "supply the steady mass-conserving film content is undetermined)");

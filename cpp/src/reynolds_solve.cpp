@@ -79,7 +79,9 @@ void ReynoldsSolver::Impl::predict_active(LinearSystem& S) {
     const int Nc = coarse_n_circ, nac = coarse_n_axial, K1c = nac + 1, na = grid.n_axial;
     try {
       if (!coarse) {
-        coarse = std::make_unique<ReynoldsSolver>(geo, FilmGrid{Nc, nac}, Cavitation::reynolds);
+        JournalBearingGeometry gc = geo;  // a Swift–Stieber predictor: no metered supply
+        gc.supply_flow_m3_s = 0.0;
+        coarse = std::make_unique<ReynoldsSolver>(gc, FilmGrid{Nc, nac}, Cavitation::reynolds);
         coarse->set_pressure_only(true);  // only its p_pa is read below
         hc.resize(Nc, K1c);
         hdc.resize(Nc, K1c);
@@ -665,10 +667,11 @@ const FilmSolution& ReynoldsSolver::solve(const RowMatrixXd& h, const RowMatrixX
       s.solve_reynolds(S);
       break;
     case Cavitation::jfo:
-      s.solve_jfo(S);
+      s.solve_supplied(S);
       break;
   }
   s.pressure_only ? s.postprocess_pressure() : s.postprocess();
+  if (s.cav == Cavitation::jfo && !s.pressure_only) s.full_film_start();
   s.solved = true;
   return s.out;
 }
@@ -771,6 +774,12 @@ RowMatrixXd ReynoldsSolver::linearize(const RowMatrixXd& dh, const RowMatrixXd& 
     const Eigen::VectorXd mr = -r;
     Eigen::VectorXd x;
     s.solve_factored(*S, mr, x);
+    if (s.cav == Cavitation::jfo && s.supply_s < 2.0) {
+      // a starved film: the metered supply is held (reynolds_starved.cpp)
+      const double ds = s.hold_supply(*S, dh.data(), x);
+      if (s.supply_s >= 1.0)
+        for (const int g : s.groove_nodes) dpd[g] = ds * s.groove_p0[g];
+    }
     for (int i = 0; i < S->n_unk; ++i)
       if (!S->active[i]) dpd[S->node_of[i]] = x[i];
   }

@@ -139,6 +139,15 @@ struct JournalBearingGeometry {
   /// start and reach their full value, 0 <= onset < full, finite; both NaN (default): none.
   double turbulence_onset_re = std::numeric_limits<double>::quiet_NaN();
   double turbulence_full_re = std::numeric_limits<double>::quiet_NaN();
+  /// Metered oil supply to the groove(s), m³/s (cavitation "jfo" only; reynolds_starved.cpp).
+  /// 0 (default): flooded grooves, each held at its pressure_pa with a full film. > 0: when
+  /// the flooded film draws more than this through its grooves, the film is starved: every
+  /// groove holds the same state s, found by a 1-D root so that the grooves' net inflow
+  /// equals the supply; s in [1, 2): a full film at (s − 1)·pressure_pa; s in [0, 1): p = 0
+  /// and a partial film of fill θ_in = s entering the film (Elrod–Adams: the oil column
+  /// θ_in·h travels as striations until the gap closes to it). At or above the flooded
+  /// demand the film is the flooded one, bit for bit. Finite, >= 0, <= 1e3 m³/s.
+  double supply_flow_m3_s = 0.0;
   /// InputError naming the field and its allowed range.
   void validate() const;
 };
@@ -169,6 +178,19 @@ struct FilmSolution {
   double h_min_m = 0.0;             ///< minimum film thickness over the nodes, m
   double h_min_angle_deg = 0.0;     ///< its angle φ, deg, in [0, 360)
   int iterations = 0;               ///< active-set iterations (1 for none/gumbel)
+  /// jfo films (reynolds_starved.cpp): the grooves' inlet fill θ_in (1: a full film at the
+  /// groove; < 1: a starved film entering as striations) and the fraction of pressure_pa the
+  /// grooves hold (1 flooded; < 1 a metered supply below the flooded demand); starved: true
+  /// when a metered supply (JournalBearingGeometry::supply_flow_m3_s) set the groove state.
+  double inlet_fill = 1.0;
+  double groove_pressure_factor = 1.0;
+  bool starved = false;
+  /// jfo films: the angle φ (deg, [0, 360)) of the first pressurised node (p > 0) on the
+  /// mid-plane row downstream of the first groove column, in the direction of rotation (the
+  /// start of the full film, to the grid's Δφ); NaN if there is none (or not jfo).
+  double full_film_start_deg = std::numeric_limits<double>::quiet_NaN();
+  /// Root iterations of the metered-supply groove state (0: flooded or no supply).
+  int supply_iterations = 0;
 };
 
 /// The finite-volume flows and the viscous dissipation of the last solve (the transport terms

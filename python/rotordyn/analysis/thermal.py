@@ -169,6 +169,12 @@ def system_thermal_equilibrium(system, *, speed_hz: float, oil: Oil | None = Non
     if not idx:
         raise InputError("bearings: the system has no plain, active, tilting-pad or "
                          "fixed-geometry journal bearing for the thermal model")
+    for i in idx:  # the starved film (a metered jfo film) is isothermal only, so far
+        if getattr(system.bearings[i], "supply_flow_m3_s", None):
+            raise InputError(f"bearings[{i}].supply_flow_m3_s: the starved (metered-supply) "
+                             "film is not coupled to the thermal models yet; meter the "
+                             "supply in the thermal options instead (docs/film-physics.md, "
+                             "\"A starved film\")")
     def options(i):
         own = model_.film(system.bearings[i].name) if model_ is not None else None
 

@@ -9,7 +9,7 @@ import numpy as np
 
 from rotordyn._common import validate as v
 from rotordyn.bearings._film import check_film_fields, check_tilt_fields
-from rotordyn.bearings.journal import Groove, JournalBearing
+from rotordyn.bearings.journal import Groove, JournalBearing, check_supply_flow
 from rotordyn.errors import InputError
 
 
@@ -47,7 +47,8 @@ def film_model(b) -> JournalBearing:
                           grooves=b.grooves, turbulence=b.turbulence,
                           density_kg_m3=b.density_kg_m3,
                           turbulence_onset_re=b.turbulence_onset_re,
-                          turbulence_full_re=b.turbulence_full_re)
+                          turbulence_full_re=b.turbulence_full_re,
+                          supply_flow_m3_s=getattr(b, "supply_flow_m3_s", None))
 
 
 
@@ -82,6 +83,10 @@ class FluidFilmBearing:
     # a frozen viscosity per node, Pa·s, (n_circ, n_axial + 1) as a tuple of rows (the THD
     # film's temperature field at its thermal equilibrium); None: viscosity_pa_s everywhere
     viscosity_field_pa_s: tuple | None = None
+    # a metered oil supply to the grooves, m³/s (cavitation = "jfo" with a groove; None:
+    # flooded grooves); below the flooded demand the film is starved (docs/film-physics.md,
+    # "A starved film")
+    supply_flow_m3_s: float | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "grooves", tuple(self.grooves))
@@ -90,6 +95,7 @@ class FluidFilmBearing:
     def check(self, where: str, n_stations: int) -> None:
         check_placed_film(self, where, n_stations)
         check_tilt_fields(self, where)
+        check_supply_flow(self.supply_flow_m3_s, self.cavitation, self.grooves, f"{where}.")
 
     def journal_bearing(self) -> JournalBearing:
         """The standalone film model (forces, coefficients) of this bearing."""

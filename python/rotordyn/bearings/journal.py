@@ -82,6 +82,25 @@ def _velocity(value, name: str) -> float:
     return u
 
 
+MAX_SUPPLY_FLOW_M3_S = 1e3  # the core's bound (reynolds.hpp)
+
+
+def check_supply_flow(value, cavitation: str, grooves, where: str = "") -> float | None:
+    """The metered supply of a journal film, m³/s: None or 0 (flooded grooves) or a finite
+    flow in (0, 1e3] on a ``cavitation="jfo"`` film with at least one groove. Returns None or
+    the flow as a float; InputError naming ``{where}supply_flow_m3_s`` otherwise."""
+    name = f"{where}supply_flow_m3_s"
+    if value is None:
+        return None
+    q = v.in_range(name, value, 0.0, MAX_SUPPLY_FLOW_M3_S)
+    if q > 0.0 and cavitation != "jfo":
+        raise InputError(f"{name}: a metered supply (starved film) needs cavitation = 'jfo' "
+                         f"(the mass-conserving film), got {cavitation!r}")
+    if q > 0.0 and not tuple(grooves):
+        raise InputError(f"{name}: a metered supply needs at least one groove to feed")
+    return q
+
+
 def _float_array(value, name: str) -> np.ndarray:
     try:
         a = np.asarray(value, dtype=float)
@@ -138,6 +157,11 @@ class JournalBearing:
     turbulence_onset_re, turbulence_full_re : optional laminar-to-turbulent transition: the
         Re_h at which the turbulent corrections start and are full (0 <= onset < full; both
         or neither; None: the model acts at every Re_h > 0).
+    supply_flow_m3_s : metered oil supply to the groove(s), m³/s (``cavitation="jfo"`` with
+        a groove only; None or 0: flooded grooves). Below what the flooded film draws, the
+        film is starved: the grooves' pressure falls to 0 and the oil enters as a partial
+        film of fill θ_in < 1 found so that the inflow equals the supply
+        (docs/film-physics.md, "A starved film"). The thermal models do not take it yet.
     """
 
     def __init__(
@@ -155,6 +179,7 @@ class JournalBearing:
         density_kg_m3: float | None = None,
         turbulence_onset_re: float | None = None,
         turbulence_full_re: float | None = None,
+        supply_flow_m3_s: float | None = None,
     ) -> None:
         self.diameter_m = _positive(diameter_m, "diameter_m")
         self.length_m = _positive(length_m, "length_m")
@@ -183,6 +208,8 @@ class JournalBearing:
         for i, g in enumerate(gs):
             if not isinstance(g, Groove):
                 raise InputError(f"grooves[{i}]: expected a rotordyn.Groove, got {g!r}")
+        # a supply is checked first: on a film without a groove it is the field to name
+        self.supply_flow_m3_s = check_supply_flow(supply_flow_m3_s, cavitation, gs)
         if cavitation == "jfo" and not gs:
             raise InputError(
                 "grooves: cavitation='jfo' needs at least one supply groove (without a supply"
@@ -212,6 +239,7 @@ class JournalBearing:
             density_kg_m3=self.density_kg_m3,
             turbulence_onset_re=self.turbulence_onset_re,
             turbulence_full_re=self.turbulence_full_re,
+            supply_flow_m3_s=self.supply_flow_m3_s,
         )
 
     def __getstate__(self) -> dict:
@@ -240,6 +268,8 @@ class JournalBearing:
         g.grooves = [gr.to_core() for gr in self.grooves]
         set_turbulence(g, self.turbulence, self.density_kg_m3, self.turbulence_onset_re,
                        self.turbulence_full_re)
+        if self.supply_flow_m3_s is not None:
+            g.supply_flow_m3_s = self.supply_flow_m3_s
         return g, _core.FilmGrid(self.n_circ, self.n_axial)
 
     def solver(self) -> _core.ReynoldsSolver:
@@ -286,6 +316,10 @@ class JournalBearing:
             h_min_m=float(r.h_min_m),
             h_min_angle_deg=float(r.h_min_angle_deg),
             iterations=int(r.iterations),
+            inlet_fill=float(r.inlet_fill),
+            groove_pressure_factor=float(r.groove_pressure_factor),
+            starved=bool(r.starved),
+            full_film_start_deg=float(r.full_film_start_deg),
         )
 
     def pressure(
@@ -410,6 +444,11 @@ class JournalBearing:
         ``theta_x_rad``, ``theta_y_rad`` (rad; inputs: the result names them
         ``journal_theta_*``), or ``tilt=True``: the journal tilted relative to the bearing (:func:`rotordyn.bearings.tilt_thermal.plain_tilted_thermal_equilibrium`:
         adds the moments, edge film and K4, C4 at the frozen temperature)."""
+        if self.supply_flow_m3_s:
+            raise InputError(
+                "supply_flow_m3_s: the starved (metered-supply) film is not coupled to the "
+                "thermal models yet; pass the supply to thermal_equilibrium(supply_flow_m3_s=...)"
+                " of a bearing without the field (docs/film-physics.md, \"A starved film\")")
         opts = film_thermal_options(model, thd, supply_temperature_c=supply_temperature_c,
                                     supply_flow_m3_s=supply_flow_m3_s, carry_over=carry_over,
                                     effective_factor=effective_factor, tol_k=tol_k)

@@ -19,6 +19,14 @@ class FilmResult:
     h_min_m: float
     h_min_angle_deg: float
     iterations: int
+    # jfo films (docs/film-physics.md, "A starved film"): the grooves' inlet fill θ_in (1: a
+    # full film at the groove), the fraction of the grooves' pressure_pa they hold (1
+    # flooded), whether a metered supply starved the film, and the angle (deg) where the
+    # full film starts downstream of the first groove (NaN: not jfo, or none)
+    inlet_fill: float = 1.0
+    groove_pressure_factor: float = 1.0
+    starved: bool = False
+    full_film_start_deg: float = float("nan")
 
 
 @dataclass(frozen=True, slots=True)
