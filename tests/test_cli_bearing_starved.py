@@ -13,9 +13,9 @@ Models: the compressor's DE bearing (tests/data/models/compressor_plain_thermal.
 L 0.05 m, c 0.1 mm, ISO VG 32 at 45 °C, 150 Hz; not the paper rig) through ``--model-file``
 and built from flags. The least supply that feeds the film (``least_supply_m3_s``,
 bracketed to 1 % by the command) is checked against the film: fed (status ok, exit 0) at
-1.001 × it and starved 2 % below it. The C++ message's own "a supply of at least Q - Q_r" is the demand left at the
-starved iterate's flows: on this bearing (effective model, from 1e-7 m³/s) it named 3.44e-5
-m³/s, which still starves the film (fed from ≈ 9.8e-5)."""
+1.001 × it and starved 2 % below it. The C++ message's own shortfall "Q - Q_r" at the starved
+iterate's flows is an estimate only: on this bearing from 1e-7 m³/s it named 3.44e-5 m³/s
+(effective model; the bracket 7.26e-5) and 1.33e-4 (THD; the bracket 6.77e-5)."""
 
 from __future__ import annotations
 
@@ -36,7 +36,7 @@ MODEL = ["--model-file", PLAIN_THERMAL, "--bearing", "DE bearing", "--n-circ", "
 OIL = ["--supply-temperature-c", "45", "--oil-walther", "40", "32", "100", "5.4",
        "--density-kg-m3", "860", "--carry-over", "0.4"]
 POINT = ["--speed-hz", "150", "--load-n", "0", "-1500"]
-QMIN = re.compile(r"a supply of at least Q - Q_r = ([0-9.eE+-]+) m\^3/s")
+QMIN = re.compile(r"the shortfall at this state, Q - Q_r = ([0-9.eE+-]+) m\^3/s")
 
 
 def _run(capsys, *argv):
@@ -59,8 +59,8 @@ def test_starved_plain_film_is_a_status_record(capsys, model, src):
     assert rec["supply_flow_m3_s"] == 1e-7 and rec["load_n"] == [0.0, -1500.0]
     assert rec["thermal_model"] == model
     assert "k_n_per_m" not in rec and "thermal" not in rec  # nothing of a failed point
-    # the C++ estimate ("a supply of at least Q - Q_r", the demand at the starved iterate's
-    # flows) is kept; the least supply that feeds the film is bracketed by the command
+    # the C++ estimate (the shortfall Q - Q_r at the starved iterate's flows) is kept; the
+    # least supply that feeds the film is bracketed by the command
     assert QMIN.search(rec["message"]) is not None
     qmin = rec["least_supply_m3_s"]
     assert f"the least supply that feeds the film: {qmin:.4g} m^3/s" in rec["message"]

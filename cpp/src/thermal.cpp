@@ -259,10 +259,10 @@ ThermalFilmState heat_balance(const OilModel& oil, const ThermalOptions& opt, do
 std::string starved_message(const std::string& where, double Qf, double Q, double Qr) {
   return where + ": starved: the metered supply Q_f = " + num(Qf) + " m^3/s and all the hot "
          "oil reaching the inlet Q_r = " + num(Qr) + " m^3/s fall short of the flow the film "
-         "draws, Q = " + num(Q) + " m^3/s; at this state it needs a supply of at least Q - Q_r "
-         "= " + num(Q - Qr) + " m^3/s (necessary, not always enough: the flows move with the "
-         "temperature and the journal, and a cooler film draws more; a starved film's reduced "
-         "wetted arc is not modelled)";
+         "draws, Q = " + num(Q) + " m^3/s; the shortfall at this state, Q - Q_r = " +
+         num(Q - Qr) + " m^3/s, estimates the supply it needs (not a bound: the flows move "
+         "with the temperature and the journal); a starved film's reduced wetted arc is not "
+         "modelled";
 }
 
 ThermalEquilibrium thermal_equilibrium(ReynoldsSolver& solver, const OilModel& oil,

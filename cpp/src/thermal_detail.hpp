@@ -67,8 +67,8 @@ inline SupplyMixing supply_mixing(double Q, double Qr, double lam, double metere
 }
 
 /// The message of a starved film (StarvedError): its metered supply Q_f, the flow it draws Q,
-/// the hot flow reaching its inlet Q_r and the supply it needs at this state, Q − Q_r (a
-/// necessary supply: the equilibrium at a larger supply is cooler and can draw more).
+/// the hot flow reaching its inlet Q_r and the shortfall at this state, Q − Q_r (an estimate
+/// of the supply it needs, not a bound: the equilibrium at another supply has other flows).
 std::string starved_message(const std::string& where, double Qf, double Q, double Qr);
 
 /// supply_mixing, with the one starvation that has no continuation: no hot oil at all reaches

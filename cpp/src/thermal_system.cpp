@@ -346,11 +346,11 @@ std::string pad_starved_message(const std::string& where, std::size_t i,
          " m^3/s is shared equally by its " + std::to_string(n) + " pads; this pad's share "
          "Q_f = " + num(f.supply_flow_m3_s) + " m^3/s and the upstream pad's outflow Q_r = " +
          num(Qr) + " m^3/s fall short of the flow it draws, Q = " + num(f.film_flow_m3_s) +
-         " m^3/s; at this state, with equal shares, it needs a bearing supply of at least " +
+         " m^3/s; with equal shares the shortfall at this state estimates a bearing supply of " +
          num(N * need) + " m^3/s (" + std::to_string(n) + " x the largest pad shortfall Q - "
-         "Q_r; necessary, not always enough: the flows move with the temperatures and the "
-         "journal; an unloaded pad's surplus share does not feed a loaded one; a starved "
-         "film's reduced wetted arc is not modelled)";
+         "Q_r; not a bound: the flows move with the temperatures and the journal; an unloaded "
+         "pad's surplus share does not feed a loaded one); a starved film's reduced wetted arc "
+         "is not modelled";
 }
 
 /// Status "starved" on `out` when one of its films' current states is starved (the first, by

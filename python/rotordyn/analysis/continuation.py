@@ -249,7 +249,6 @@ def orbit_continuation(system: System, vary: str, bounds, start, *, unbalances=(
     screens = {"screen_rtol": screen_rtol, "screen_margin": screen_margin}
     if method == "harmonic_balance":
         _screens_apply(screens, False)
-    if method == "harmonic_balance":
         if newton != DEFAULT_NEWTON:
             raise InputError(f"newton: applies only to method='shooting' (the correctors of "
                              f"harmonic balance are Newton on its coefficients), got "

@@ -84,8 +84,12 @@ def _warning_printer(default):
 
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
-    with safe_interrupts():  # Ctrl-C never lands inside an import (a broken module lock)
-        return _main(argv)
+    with safe_interrupts() as guard:  # Ctrl-C never lands inside an import (a broken lock)
+        code = _main(argv)
+    if guard.pending:  # a Ctrl-C deferred out of an import as the work ended
+        print("rotordyn: interrupted", file=sys.stderr)
+        return 130
+    return code
 
 
 def _main(argv: list[str]) -> int:

@@ -125,33 +125,41 @@ def _failed(rec: dict, args: argparse.Namespace, status: str, message: str) -> i
     return 1
 
 
-_DEMAND = re.compile(r"at least Q - Q_r = ([0-9.eE+-]+) m\^3/s")
+_DEMAND = re.compile(r"Q - Q_r = ([0-9.eE+-]+) m\^3/s")
 LEAST_SUPPLY_RTOL = 0.01  # the bracket of the least supply that feeds a starved film
 
 
 def least_feeding_supply(solve, supply: float, message: str) -> float | None:
     """The least metered supply (m³/s) at which ``solve(q)`` (a thermal equilibrium at supply
-    ``q``) is not starved, bracketed to :data:`LEAST_SUPPLY_RTOL` (the fed end returned; None
-    when 40 steps find no fed supply). The C++ message's "at least Q − Q_r" is the demand
-    left at the starved iterate's flows, a necessary supply, not always a sufficient one: a
-    larger supply cools the film, which then draws more (the compressor's DE bearing, effective
-    model, from 1e-7 m³/s: 3.44e-5 named, still starved; fed from about 9.8e-5)."""
+    ``q``) converges fed (status ok), bracketed to :data:`LEAST_SUPPLY_RTOL` between a starved
+    and a fed supply (the fed end returned). None when not determined: 40 steps find no fed
+    supply, or a supply on the way fails otherwise (no equilibrium there: neither end of a
+    bracket). The C++ message's shortfall "Q − Q_r" at the starved iterate's flows is only an
+    estimate, a start for the walk (the compressor's DE bearing from 1e-7 m³/s: effective
+    model 3.44e-5 named, still starved, the bracket 7.26e-5; THD 1.33e-4 named, the bracket
+    6.77e-5)."""
     from rotordyn.errors import StarvedFilmError
 
     def starved(q):
+        """True (starved), False (fed: converged), None (another failure)."""
         try:
             r = solve(q)
         except StarvedFilmError as exc:
             return True, str(exc)
         except ConvergenceError:
-            return False, ""  # not a starvation: the supply is not what fails there
-        return r.status == "starved", getattr(r, "message", "")
+            return None, ""
+        if r.status == "starved":
+            return True, getattr(r, "message", "")
+        return (False if r.status in CONVERGED else None), ""
 
     lo, msg, hi = supply, message, None
-    for _ in range(40):  # walk up from the starved supply: the iterate's demand, else 2×
+    for _ in range(40):  # walk up from the starved supply: the iterate's estimate, else 2×
         m = _DEMAND.search(msg)
-        q = max(2.0 * lo, 1e-12) if m is None else max(float(m.group(1)), 1.001 * lo)
+        est = float(m.group(1)) if m is not None else 0.0
+        q = est if est > 1.05 * lo else max(2.0 * lo, 1e-12)
         bad, msg = starved(q)
+        if bad is None:
+            return None
         if not bad:
             hi = q
             break
@@ -160,7 +168,10 @@ def least_feeding_supply(solve, supply: float, message: str) -> float | None:
         return None
     while hi - lo > LEAST_SUPPLY_RTOL * hi:
         mid = 0.5 * (lo + hi)
-        if starved(mid)[0]:
+        bad = starved(mid)[0]
+        if bad is None:
+            return None
+        if bad:
             lo = mid
         else:
             hi = mid
@@ -176,7 +187,8 @@ def failed_aligned(rec: dict, args: argparse.Namespace, status: str, message: st
     if status == "starved":
         message += ("; the least supply that feeds the film: " + (
             f"{least_supply_m3_s:.4g} m^3/s (bracketed to {100 * LEAST_SUPPLY_RTOL:g} %)"
-            if least_supply_m3_s is not None else "not found"))
+            if least_supply_m3_s is not None else "not determined (no fed equilibrium found "
+            "above it without another failure)"))
         rec["least_supply_m3_s"] = least_supply_m3_s
     rec.update(load_n=list(args.load_n), supply_temperature_c=args.supply_temperature_c,
                supply_flow_m3_s=_or(args.supply_flow_m3_s, 0.0),

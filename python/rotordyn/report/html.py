@@ -392,8 +392,9 @@ def write_html(model: str, path, *, text_lines=(), operating_speed_hz=None,
             sec.append(f"<figure>{svg(m.figure)}<figcaption>{what}: "
                        f"{m.speed_hz:.4g} Hz ({60 * m.speed_hz:.0f} rpm, "
                        f"{html.escape(m.source)}), {m.whirl} mode at {m.freq_hz:.4g} Hz, log "
-                       f"dec {m.log_dec:.3g} ({html.escape(shape_source(m.source, m.whirl))}): whirl "
-                       "orbits along the rotor, normalised to the largest.</figcaption>"
+                       f"dec {m.log_dec:.3g} "
+                       f"({html.escape(shape_source(m.source, m.whirl))}): whirl orbits "
+                       "along the rotor, normalised to the largest.</figcaption>"
                        "</figure>")
         if len(crit) > len(shapes):
             sec.append(f"<p>The first {len(shapes)} of {len(crit)} critical speeds shown.</p>")

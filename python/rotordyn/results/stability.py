@@ -117,9 +117,11 @@ class StabilityResult(Display):
             head += (f" (the {len(self.eigenvalues)} kept; over all "
                      f"{len(self.all_eigenvalues)} roots max Re λ = "
                      f"{self.max_real_1_per_s:.3g} 1/s)")
-        light = self.pad_load_note
-        if light:
-            head += "; " + light.split(":", 1)[0] + " (pad_load_note)"
+        if self.pad_load_note:
+            from rotordyn.results.pad_load import light_pads
+
+            n = len(light_pads(self.linear.equilibrium))
+            head += f"; {n} tilting pad{'s' if n > 1 else ''} near zero load (pad_load_note)"
         return head + ">"
 
     @property
