@@ -76,3 +76,43 @@ def test_starved_plain_film_is_a_status_record(capsys, model, src):
     assert f"({model} model): starved (" in out and "1e-07 m3/s" in out
     assert "Q - Q_r" in out and "no film outputs or coefficients" in out
 
+
+
+class _Fed:
+    status, message = "ok", ""
+
+
+def _fake(least, fail_above=None, estimate=None):
+    """A solve(q) that starves below ``least`` (its message naming ``estimate``), converges
+    at or above it, and fails otherwise above ``fail_above``; counts its calls."""
+    from rotordyn.errors import ConvergenceError, StarvedFilmError
+
+    calls = []
+
+    def solve(q):
+        calls.append(q)
+        if fail_above is not None and q >= fail_above:
+            raise ConvergenceError("no equilibrium")
+        if q < least:
+            est = q if estimate is None else estimate
+            raise StarvedFilmError(f"starved: the shortfall at this state, Q - Q_r = {est:g} "
+                                   "m^3/s, estimates the supply it needs")
+        return _Fed()
+    return solve, calls
+
+
+def test_least_supply_bracket_unit():
+    """The bracket is between a starved and a fed supply: a supply that fails otherwise is
+    neither end (it had been taken as fed, so 'the least supply that feeds the film' could be
+    one with no equilibrium), and an estimate at or below the supply already tried makes the
+    walk double instead of creeping by 0.1 %."""
+    from rotordyn.cli.bearing_thermal import LEAST_SUPPLY_RTOL, least_feeding_supply
+
+    solve, calls = _fake(7.26e-5)  # the estimate stalls at the supply tried: doubling
+    q = least_feeding_supply(solve, 1e-7, "")
+    assert 7.26e-5 <= q <= 7.26e-5 * (1 + 2 * LEAST_SUPPLY_RTOL) and len(calls) < 30
+    solve, _ = _fake(7.26e-5, estimate=1.33e-4)  # an estimate above the least: bisected down
+    q = least_feeding_supply(solve, 1e-7, "Q - Q_r = 1.33e-4 m^3/s")
+    assert 7.26e-5 <= q <= 7.26e-5 * (1 + 2 * LEAST_SUPPLY_RTOL)
+    solve, _ = _fake(7.26e-5, fail_above=5e-5)  # no fed supply without another failure
+    assert least_feeding_supply(solve, 1e-7, "") is None
