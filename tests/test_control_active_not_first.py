@@ -90,3 +90,28 @@ def test_closed_loop_cli_acts_on_the_active_journal(system, tmp_path):
     assert ts.closed_loop_journal_y_m[0] - y0 == pytest.approx(5e-6, abs=1e-9)
     assert ts.open_loop_journal_y_m[0] - y0 == pytest.approx(5e-6, abs=1e-9)
     assert s["closed_loop_status"] == "ok"
+
+
+def test_design_scale_is_the_active_bearings_clearance(system):
+    """The LQR/LQG/H∞ length scale defaults to the performance journal's clearance (0.1 mm
+    here), not the paper rig's 0.3 mm it had been on every model (the journal's weight in Q
+    was then 9× too small against the command); a given clearance_m is used by the LQG's
+    Kalman scaling too (it had been ignored there)."""
+    from rotordyn.control.lqr import default_weights, design_clearance, lqg, lqr
+
+    p = plant(system, F, PC, AY, measurements=[("journal", 1)])
+    assert p.info["performance_clearance_m"] == 1e-4
+    assert design_clearance(p, None) == 1e-4
+    Q, R = default_weights(p)
+    Qc, Rc = default_weights(p, clearance_m=1e-4)
+    Q3, _ = default_weights(p, clearance_m=3e-4)
+    assert np.array_equal(Q, Qc) and np.array_equal(R, Rc)
+    ia = np.flatnonzero(np.abs(p.C_perf).sum(axis=0))[0]
+    assert Q[ia, ia] == pytest.approx(9.0 * Q3[ia, ia], rel=1e-9)
+    K, _ = lqr(p)
+    assert np.array_equal(K, lqr(p, clearance_m=1e-4)[0])
+    # the rig keeps its 0.3 mm (its only bearing is the active one): its designs unchanged
+    rig = plant(rd.models.paper_rig(), 50.0, 0.05e6, -1.85e-3)
+    assert design_clearance(rig, None) == 3e-4
+    k1, k2 = lqg(p), lqg(p, clearance_m=1e-4)
+    assert np.array_equal(k1.A, k2.A) and np.array_equal(k1.B, k2.B)

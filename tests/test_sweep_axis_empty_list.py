@@ -59,3 +59,20 @@ def test_star_over_a_model_without_bearings_refused():
     assert not s.bearings
     with pytest.raises(rd.InputError, match=r"bearings.\*: no element"):
         set_field(s, "bearings.*.clearance_m", 1e-4)
+
+
+def test_a_star_under_a_star_skips_an_empty_list_and_refuses_only_when_all_are():
+    """``bearings.*.grooves.*`` over a model whose first bearing has no grooves sets the
+    second bearing's groove (the empty-list refusal had refused it: review, 2026-12-06);
+    over a model where no bearing has a groove it is refused (an axis that varies nothing)."""
+    from rotordyn.model.paths import get_field, set_field
+
+    s = rd.System.from_toml(MODELS / "compressor_active.toml")
+    assert not s.bearings[0].grooves and s.bearings[1].grooves
+    m = set_field(s, "bearings.*.grooves.*.pressure_pa", 2e5)
+    assert [g.pressure_pa for g in m.bearings[1].grooves] == [2e5] * len(s.bearings[1].grooves)
+    assert get_field(m, "bearings.*.grooves.*.pressure_pa") == [2e5] * len(s.bearings[1].grooves)
+    plain = rd.System.from_toml(MODELS / "compressor_plain.toml")
+    assert not any(b.grooves for b in plain.bearings)
+    with pytest.raises(rd.InputError, match=r"grooves.\*.pressure_pa: no element: every list"):
+        set_field(plain, "bearings.*.grooves.*.pressure_pa", 2e5)

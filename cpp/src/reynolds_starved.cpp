@@ -64,8 +64,10 @@ void ReynoldsSolver::Impl::solve_supplied(LinearSystem& S) {
     return out.inlet_flow_m3_s - qs;
   };
   // Brent (zbrent) on f(s) = Q(s) − Q_s, f(0) = −Q_s < 0 < f(2)
-  const double ftol = 1e-12 * qs, xtol = 1e-15;
+  // the supply to 1e-12, or to the inflow's own round-off (64 ε of the flooded inflow) at a
+  // supply so small that 1e-12 of it is below what the fluxes resolve
   const double eps = std::numeric_limits<double>::epsilon();
+  const double ftol = std::max(1e-12 * qs, 64.0 * eps * qf), xtol = 1e-15;
   double a = 0.0, b = 2.0, fa = -qs, fb = qf - qs;
   double c = a, fc = fa, d = b - a, e = d;
   bool done = false;

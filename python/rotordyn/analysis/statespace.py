@@ -24,7 +24,6 @@ def _parse(item, kinds, field):
     return item
 
 
-@limited_blas
 def _check_items(asm, inputs, outputs) -> None:
     """Every input and output item names something the model has (InputError naming the
     argument and the item otherwise), checked before the equilibrium is solved."""
@@ -56,6 +55,7 @@ def _check_items(asm, inputs, outputs) -> None:
                 raise InputError(f"outputs: bearing {where} has no sleeve")
 
 
+@limited_blas
 def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
                speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
                config_ay_m: float | None = None, **kw) -> StateSpaceResult:

@@ -185,13 +185,15 @@ def tune_pd_schedule(system, speeds_hz, *, chamber_pressure_pa: float = 0.0,
     (each search started from the previous speed's gains), scheduled by
     :func:`gain_schedule` — the gains (k_p, k_d) interpolated linearly."""
     from rotordyn.control.pid import tune_pd
-    from rotordyn.control.plant import plant
+    from rotordyn.control.plant import active_bearing_index, plant
 
     sp = v.vector("speeds_hz", speeds_hz)
     designs, kw = [], dict(tune_kw)
     for f in sp:
+        # tuned on the active bearing's journal wherever it sits (it was journal 0: the plain
+        # NDE bearing's on tests/data/models/compressor_active.toml)
         p = plant(system, float(f), chamber_pressure_pa, config_ay_m,
-                  measurements=[("journal", 0)], actuator=actuator)
+                  measurements=[("journal", active_bearing_index(system))], actuator=actuator)
         k, _ = tune_pd(p, **kw)
         designs.append(k)
         kw.update(kp0=k.info["kp"], kd0=k.info["kd"])

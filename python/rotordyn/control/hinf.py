@@ -27,7 +27,7 @@ import numpy as np
 
 from rotordyn._common import validate as v
 from rotordyn.control._checks import frequencies
-from rotordyn.control.lqr import scale, state_scales
+from rotordyn.control.lqr import design_clearance, scale, state_scales
 from rotordyn.control.plant import as_plant
 from rotordyn.errors import InputError
 from rotordyn.operation.controller import Controller
@@ -45,15 +45,16 @@ def _slycot():
 
 
 def generalized_plant(p, *, disturbance_force_n: float = 1.0, measurement_noise_m: float = 1e-5,
-                      pressure_scale_pa: float = 1e5, clearance_m: float = 3e-4,
+                      pressure_scale_pa: float = 1e5, clearance_m: float | None = None,
                       performance_weight: float = 1.0):
     """The scaled generalized plant of the module docstring: (A, B, C, D, sizes, scales) with
     B = [B₁ | B₂], C = [C₁; C₂], D = [[D₁₁, D₁₂], [D₂₁, D₂₂]]; sizes = (n_w, n_u=1, n_z,
     n_y); scales = (S (state scales), c, p_s)."""
     as_plant(p)
+    clearance_m = design_clearance(p, clearance_m)  # default: the performance journal's
     for field, val in (("disturbance_force_n", disturbance_force_n),
                        ("measurement_noise_m", measurement_noise_m),
-                       ("pressure_scale_pa", pressure_scale_pa), ("clearance_m", clearance_m),
+                       ("pressure_scale_pa", pressure_scale_pa),
                        ("performance_weight", performance_weight)):
         scale(field, val)
     S = state_scales(p, clearance_m=clearance_m)
@@ -100,7 +101,7 @@ def lower_lft_response(A, B, C, D, sizes, K, freqs_hz) -> np.ndarray:
 
 
 def hinf(p, *, disturbance_force_n: float = 1.0, measurement_noise_m: float = 1e-5,
-         pressure_scale_pa: float = 1e5, clearance_m: float = 3e-4,
+         pressure_scale_pa: float = 1e5, clearance_m: float | None = None,
          performance_weight: float = 1.0, gamma_tol: float = 1e-4,
          name: str = "hinf") -> Controller:
     """H∞ output-feedback law on plant ``p`` (full or reduced, with the valve) for the LFT of
@@ -144,6 +145,6 @@ def hinf(p, *, disturbance_force_n: float = 1.0, measurement_noise_m: float = 1e
                          "weights": {"disturbance_force_n": disturbance_force_n,
                                      "measurement_noise_m": measurement_noise_m,
                                      "pressure_scale_pa": pressure_scale_pa,
-                                     "clearance_m": clearance_m,
+                                     "clearance_m": c,
                                      "performance_weight": performance_weight}})
     return k

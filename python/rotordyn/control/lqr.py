@@ -10,7 +10,7 @@ import numpy as np
 from rotordyn._common import validate as v
 from rotordyn.control._checks import keywords
 from rotordyn.control.plant import as_plant
-from rotordyn.errors import ConvergenceError
+from rotordyn.errors import ConvergenceError, InputError
 from rotordyn.operation.controller import Controller
 
 # Ranges of the design scales: beyond them the squares and inverses the Riccati equations are
@@ -45,14 +45,29 @@ def _riccati(where, *args):
     return X
 
 
-def state_scales(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 1e5,
+def design_clearance(p, clearance_m: float | None) -> float:
+    """The design's length scale c (m): ``clearance_m``, or (None) the clearance of the
+    plant's performance journal — the active bearing's, wherever it sits in the model
+    (:func:`rotordyn.control.plant.plant`). It had been the paper rig's 0.3 mm on every
+    model: on a 0.1 mm bearing the journal's weight was 9× too small against the command."""
+    if clearance_m is not None:
+        return scale("clearance_m", clearance_m)
+    c = p.info.get("performance_clearance_m")
+    if c is None:
+        raise InputError("clearance_m: the plant does not carry its bearing's clearance "
+                         "(not built by rotordyn.control.plant.plant); give clearance_m (m)")
+    return scale("clearance_m", c)
+
+
+def state_scales(p, *, clearance_m: float | None = None, pressure_scale_pa: float = 1e5,
                  frequency_hz: float = 100.0) -> np.ndarray:
-    """Typical size of each plant state: c for positions, 2π f c for velocities,
+    """Typical size of each plant state: c for positions (``clearance_m``, default the
+    performance journal's clearance: :func:`design_clearance`), 2π f c for velocities,
     ``pressure_scale_pa`` for the actuator pressure (× its bandwidth for its rate); for a
     reduced plant (x_full = T x_r) the size of a modal coordinate that keeps every physical
     state within its typical size."""
     as_plant(p)
-    scale("clearance_m", clearance_m)
+    clearance_m = design_clearance(p, clearance_m)
     scale("pressure_scale_pa", pressure_scale_pa)
     scale("frequency_hz", frequency_hz)
     n = p.n_mech
@@ -67,7 +82,7 @@ def state_scales(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 1e5
     return s
 
 
-def default_weights(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 1e5,
+def default_weights(p, *, clearance_m: float | None = None, pressure_scale_pa: float = 1e5,
                     state_weight: float = 1.0, regularisation: float = 1e-6):
     """Q = C_perfᵀ C_perf / c² + ε diag(1/s²) (s: :func:`state_scales`, so every state is
     weighted by its typical size and the Riccati equation stays well posed),
@@ -76,7 +91,7 @@ def default_weights(p, *, clearance_m: float = 3e-4, pressure_scale_pa: float = 
     scale("state_weight", state_weight)
     scale("regularisation", regularisation)
     # before c² and 1/p_s² (issue 21, fuzzing: clearance_m = 1e300 was an OverflowError)
-    scale("clearance_m", clearance_m)
+    clearance_m = design_clearance(as_plant(p), clearance_m)
     scale("pressure_scale_pa", pressure_scale_pa)
     Q = state_weight * (p.C_perf.T @ p.C_perf) / clearance_m**2
     s = state_scales(p, clearance_m=clearance_m, pressure_scale_pa=pressure_scale_pa)
@@ -99,7 +114,7 @@ def lqr(p, Q=None, R=None, **kw):
         R = np.atleast_2d(R) if np.ndim(R) == 0 else R
         R = v.psd_matrix("R", R, 1, definite=True)
     # Solved in scaled states x = S x̃ (S: typical state sizes) for conditioning.
-    S = state_scales(p)
+    S = state_scales(p, clearance_m=kw.get("clearance_m"))  # the design's own scale
     As = p.A * (1 / S)[:, None] * S[None, :]
     Bs = p.B / S[:, None]
     Qs = Q * S[:, None] * S[None, :]
@@ -135,7 +150,7 @@ def lqg(p, Q=None, R=None, *, process_noise: float = 1.0, measurement_noise_m: f
     G = p.Bd if p.Bd.shape[1] else p.B * 1e4  # 1e4 Pa of command noise as a stand-in
     Wn = process_noise * disturbance_force_n**2 * np.eye(G.shape[1])
     Vn = measurement_noise_m**2 * np.eye(p.C.shape[0])
-    S = state_scales(p)
+    S = state_scales(p, clearance_m=kw.get("clearance_m"))  # the design's own scale
     As = p.A * (1 / S)[:, None] * S[None, :]
     Gs, Cs = G / S[:, None], p.C * S[None, :]
     Ys = _riccati("lqg (Kalman filter)", As.T, Cs.T, Gs @ Wn @ Gs.T, Vn)

@@ -142,10 +142,14 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
     """Linear plant about the equilibrium at (speed, p_c, a_y) with the actuator's lag
     (Actuator(): a 100 Hz second-order valve; ``Actuator.ideal()`` for none).
     ``equilibrium``: keywords of :func:`rotordyn.equilibrium` (e.g. ``{"warm_start": False}``
-    for a result that does not depend on what this thread solved before)."""
+    for a result that does not depend on what this thread solved before).
+    ``measurements``: default journal 0, as :func:`rotordyn.control.pid.pid`'s ``bearing``
+    (a law and its plant read the same signals); the performance output ``C_perf`` is the
+    active bearing's journal wherever it sits."""
     speed_hz, chamber_pressure_pa, config_ay_m = chk.operating_point(
         system, speed_hz, chamber_pressure_pa, config_ay_m)
     act = chk.actuator(actuator)
+    ia = active_bearing_index(system)
     meas = parse_measurements(measurements)
     measurement_matrix(system, meas)  # a measurement that does not exist: before the solve
     empty = not isinstance(disturbance_stations, (str, bytes, dict, int, np.integer)) \
@@ -175,13 +179,14 @@ def plant(system, speed_hz: float = 50.0, chamber_pressure_pa: float = 0.0,
     C = np.hstack([Cm, np.zeros((Cm.shape[0], na))])
     # the performance output is the active bearing's journal, wherever it is in the model
     # (the compressor_active model has it second: journal 0 there is the plain NDE bearing)
-    ia = active_bearing_index(system)
     Cj, _ = measurement_matrix(system, [("journal", ia)])
     Cp = np.hstack([Cj, np.zeros((2, na))])
     states = tuple(ss.state_names) + tuple(f"actuator_{i}" for i in range(na))
     return Plant(A, B, C, Bd, Cp, meas, names, states, act, float(speed_hz),
                  float(chamber_pressure_pa), config_ay_m, n2 // 2,
                  info={"performance_bearing": ia,
+                       "performance_clearance_m": float(system.bearings[ia].clearance_m)
+                       if system.bearings else None,
                        "equilibrium_r": np.asarray(ss.linear.equilibrium.r, float),
                        "equilibrium_status": str(ss.linear.equilibrium.status)},
                  disturbance_names=tuple(str(x) for x in ss.input_names[1:]))

@@ -29,9 +29,15 @@ _NO_FILMS = (" (the model's [thermal] has no [[thermal.film]] entry: add one, be
              "the [thermal] value for every film, e.g. thermal.carry_over)")
 
 
-def _select(seq: tuple, key: str, where: str) -> list[int]:
-    """Indices of the elements of tuple ``seq`` addressed by ``key``."""
-    if not seq:  # '*' too: a path that sets nothing would be an axis that varies nothing
+def _select(seq: tuple, key: str, where: str, starred: bool = False) -> list[int]:
+    """Indices of the elements of tuple ``seq`` addressed by ``key``. An empty ``seq`` is an
+    InputError ('*' too: a path that sets nothing would be an axis that varies nothing),
+    except for '*' under a parent '*' (``starred``: ``bearings.*.grooves.*`` over a bearing
+    without grooves selects none of its grooves; :func:`set_field` refuses a path whose
+    every selection is empty)."""
+    if not seq and key == "*" and starred:
+        return []
+    if not seq:
         raise InputError(f"{where}: no element {key!r}: the model has none here"
                          + (_NO_FILMS if ".films." in f".{where}." else ""))
     if key == "*":
@@ -88,7 +94,7 @@ def _coerce(old, value, where: str, declared: str = ""):
     return float(value)
 
 
-def _set(obj, parts: list[str], value, where: str):
+def _set(obj, parts: list[str], value, where: str, hits: list, starred: bool = False):
     head, rest = parts[0], parts[1:]
     here = f"{where}.{head}" if where else head
     if not dataclasses.is_dataclass(obj):
@@ -99,16 +105,19 @@ def _set(obj, parts: list[str], value, where: str):
     if isinstance(cur, tuple):
         if not rest:
             raise InputError(f"{here}: a list; address one element (index, name or '*')")
-        idx = _select(cur, rest[0], f"{here}.{rest[0]}")
+        idx = _select(cur, rest[0], f"{here}.{rest[0]}", starred)
+        below = starred or rest[0] == "*"
         new = list(cur)
         for i in idx:
             if len(rest) == 1:
                 new[i] = _coerce(new[i], value, f"{here}.{i}")
+                hits.append(i)
             else:
-                new[i] = _set(new[i], rest[1:], value, f"{here}.{rest[0]}")
+                new[i] = _set(new[i], rest[1:], value, f"{here}.{rest[0]}", hits, below)
         return dataclasses.replace(obj, **{head: tuple(new)})
     if rest:
-        return dataclasses.replace(obj, **{head: _set(cur, rest, value, here)})
+        return dataclasses.replace(obj, **{head: _set(cur, rest, value, here, hits, starred)})
+    hits.append(head)
     return dataclasses.replace(obj, **{head: _coerce(cur, value, here,
                                                      declared_type(obj, head))})
 
@@ -139,8 +148,13 @@ def set_field(system, path: str, value, where: str = "grid"):
     the model's own checks; an InputError names ``where``.path)."""
     if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
         raise InputError(f"{where}.{path}: expected a finite number, got {value!r}")
+    hits: list = []
     try:
-        return _set(system, path.split("."), value, "")
+        out = _set(system, path.split("."), value, "", hits)
+        if not hits:  # every '*' selected an empty list: an axis that would vary nothing
+            raise InputError("no element: every list its '*' selects is empty in this model"
+                             + (_NO_FILMS if ".films." in f".{path}." else ""))
+        return out
     except InputError as exc:  # a combination's fault stays one (a sweep point's row)
         cls = (ClosedFilmError if isinstance(exc, ClosedFilmError) else FieldCombinationError
                if isinstance(exc, FieldCombinationError) else InputError)
@@ -151,15 +165,15 @@ def set_field(system, path: str, value, where: str = "grid"):
 
 def get_field(system, path: str):
     """The current value(s) of dotted ``path`` (a list when ``*`` selects several)."""
-    def get(obj, parts):
+    def get(obj, parts, starred=False):
         if not parts:
             return [obj]
         head, rest = parts[0], parts[1:]
         cur = getattr(obj, head)
         if isinstance(cur, tuple):
             out = []
-            for i in _select(cur, rest[0], head):
-                out += get(cur[i], rest[1:])
+            for i in _select(cur, rest[0], head, starred):
+                out += get(cur[i], rest[1:], starred or rest[0] == "*")
             return out
-        return get(cur, rest)
+        return get(cur, rest, starred)
     return get(system, path.split("."))
