@@ -111,7 +111,10 @@ def ocvirk_starved(theta_in, h_groove, L):
     eps, phe = e / C_RAD, math.atan2(Y, X)
     cs = (1.0 - theta_in * h_groove / C_RAD) / eps
     psi_s = -math.acos(min(1.0, max(-1.0, cs)))
-    g = lambda s: -C_RAD * eps * math.sin(s) / (C_RAD * (1.0 - eps * math.cos(s))) ** 3  # noqa: E731
+
+    def g(s):
+        return -C_RAD * eps * math.sin(s) / (C_RAD * (1.0 - eps * math.cos(s))) ** 3
+
     k = -MU * OMEGA * L**3 / 2.0 * R
     fx = k * quad(lambda s: g(s) * math.cos(s + phe), psi_s, 0.0, epsabs=0, epsrel=1e-12)[0]
     fy = k * quad(lambda s: g(s) * math.sin(s + phe), psi_s, 0.0, epsabs=0, epsrel=1e-12)[0]

@@ -57,3 +57,31 @@ def test_unbalance_rows_carry_the_stability_verdict(tmp_path, thermal):
     assert want.any() and not want.all()  # both sides of the threshold are in the grid
     assert res.counts["unstable"] == int((~u.stable).sum())
     assert (df.status == "ok").all()
+
+
+def test_a_failed_point_has_no_stability_verdict(tmp_path):
+    """A point without an equilibrium (a film of 1e-7 Pa·s cannot carry the pump) has no
+    verdict: ``point_stable`` null (not False, not True) and the point counted failed, not
+    unstable."""
+    spec = tmp_path / "spec.toml"
+    spec.write_text(f'''schema = "rotordyn/sweep/1"
+name = "pump-unbalance-failed"
+model = "{MODEL}"
+analysis = "unbalance"
+
+[grid]
+"bearings.*.viscosity_pa_s" = [1e-7, 0.02]
+speed_hz = [60.0, 80.0]
+
+[options]
+unbalances = [[4, 2e-4, 0.0]]
+stations = [4, 5]
+''')
+    res = run_sweep(str(spec), str(tmp_path / "out"), threads=1, progress=False)
+    df = pd.read_parquet(tmp_path / "out")
+    bad = df[df["bearings.*.viscosity_pa_s"] == 1e-7]
+    good = df[df["bearings.*.viscosity_pa_s"] == 0.02]
+    assert len(bad) == 4 and (bad.status == "no_equilibrium").all()
+    assert bad.point_stable.isna().all()
+    assert (good.status == "ok").all() and good.point_stable.astype(bool).all()
+    assert res.counts == {"ok": 2, "failed": 2, "unstable": 0}
