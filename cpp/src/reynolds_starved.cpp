@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 
+#include "brent_detail.hpp"
 #include "reynolds_impl.hpp"
 #include "rotordyn/errors.hpp"
 
@@ -63,67 +64,24 @@ void ReynoldsSolver::Impl::solve_supplied(LinearSystem& S) {
     s_last = s;
     return out.inlet_flow_m3_s - qs;
   };
-  // Brent (zbrent) on f(s) = Q(s) − Q_s, f(0) = −Q_s < 0 < f(2)
-  // the supply to 1e-12, or to the inflow's own round-off (64 ε of the flooded inflow) at a
-  // supply so small that 1e-12 of it is below what the fluxes resolve
+  // Brent (brent_detail.hpp) on f(s) = Q(s) − Q_s, f(0) = −Q_s < 0 < f(2) (both known: s = 0
+  // passes no oil, s = 2 is the flooded film just solved); the supply to 1e-12, or to the
+  // inflow's own round-off (64 ε of the flooded inflow) at a supply so small that 1e-12 of it
+  // is below what the fluxes resolve
   const double eps = std::numeric_limits<double>::epsilon();
-  const double ftol = std::max(1e-12 * qs, 64.0 * eps * qf), xtol = 1e-15;
-  double a = 0.0, b = 2.0, fa = -qs, fb = qf - qs;
-  double c = a, fc = fa, d = b - a, e = d;
-  bool done = false;
-  for (int it = 0; it < 200; ++it) {
-    if ((fb > 0.0 && fc > 0.0) || (fb < 0.0 && fc < 0.0)) {
-      c = a;
-      fc = fa;
-      d = e = b - a;
-    }
-    if (std::abs(fc) < std::abs(fb)) {
-      a = b;
-      b = c;
-      c = a;
-      fa = fb;
-      fb = fc;
-      fc = fa;
-    }
-    const double tol1 = 2.0 * eps * std::abs(b) + 0.5 * xtol;
-    const double xm = 0.5 * (c - b);
-    if (std::abs(xm) <= tol1 || std::abs(fb) <= ftol) {
-      done = true;
-      break;
-    }
-    if (std::abs(e) >= tol1 && std::abs(fa) > std::abs(fb)) {
-      const double sr = fb / fa;
-      double pp, q;
-      if (a == c) {
-        pp = 2.0 * xm * sr;
-        q = 1.0 - sr;
-      } else {
-        const double qq = fa / fc, r = fb / fc;
-        pp = sr * (2.0 * xm * qq * (qq - r) - (b - a) * (r - 1.0));
-        q = (qq - 1.0) * (r - 1.0) * (sr - 1.0);
-      }
-      if (pp > 0.0) q = -q;
-      pp = std::abs(pp);
-      const double m1 = 3.0 * xm * q - std::abs(tol1 * q), m2 = std::abs(e * q);
-      if (2.0 * pp < std::min(m1, m2)) {
-        e = d;
-        d = pp / q;
-      } else {
-        d = xm;
-        e = d;
-      }
-    } else {
-      d = xm;
-      e = d;
-    }
-    a = b;
-    fa = fb;
-    b += std::abs(d) > tol1 ? d : std::copysign(tol1, xm);
-    fb = eval(b);
+  const double ftol = std::max(1e-12 * qs, 64.0 * eps * qf);
+  auto f = [&](double s) { return s == 0.0 ? -qs : s == 2.0 ? qf - qs : eval(s); };
+  double b = 0.0;
+  try {
+    b = brent_detail::brent(f, 0.0, 2.0, 1e-15, 4.0 * eps, 200, ftol);
+  } catch (const ConvergenceError&) {  // a film solve's own failure: as it is
+    throw;
+  } catch (const ContactError&) {
+    throw;
+  } catch (const std::runtime_error&) {  // the root's iterations exhausted
+    throw ConvergenceError("supply_flow_m3_s: the starved groove state did not converge in "
+                           "200 iterations");
   }
-  if (!done)
-    throw ConvergenceError("supply_flow_m3_s: the starved groove state did not converge in 200 "
-                           "iterations");
   if (s_last != b) eval(b);  // leave the solver at the root
   if (!std::isfinite(out.inlet_flow_m3_s))
     throw ConvergenceError("supply_flow_m3_s: non-finite inflow of the starved film");

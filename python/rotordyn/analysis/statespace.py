@@ -24,18 +24,31 @@ def _parse(item, kinds, field):
     return item
 
 
-def _check_items(asm, inputs, outputs) -> None:
-    """Every input and output item names something the model has (InputError naming the
-    argument and the item otherwise), checked before the equilibrium is solved."""
+def _checked_items(asm, inputs, outputs) -> tuple[list, list]:
+    """The input and output items resolved against the model before the equilibrium is
+    solved (an item the model lacks: InputError naming the argument and the item). Inputs:
+    (item, the active bearings it drives | the station's load matrix); outputs: (kind,
+    station or bearing, the station's output matrix | the state indices). Default outputs:
+    every bearing's journal."""
+    ins = []
     for item in inputs:
         item = _parse(item, ("chamber_pressure", "force"), "inputs")
-        if item[0] == "force":
-            if len(item) != 2:
-                raise InputError(f"inputs: expected ('force', station), got {item!r}")
-            try:
-                asm.station_load_matrix(item[1])
-            except InputError as exc:
-                raise InputError(f"inputs: {item!r}: {exc}") from None
+        if item[0] == "chamber_pressure":
+            bcs = [bc for bc in asm.bearings
+                   if bc.sleeve and (len(item) == 1 or bc.index == item[1])]
+            if not bcs:
+                raise InputError(f"inputs: {item!r} needs an active bearing")
+            ins.append((item, bcs))
+            continue
+        if len(item) != 2:
+            raise InputError(f"inputs: expected ('force', station), got {item!r}")
+        try:
+            ins.append((item, asm.station_load_matrix(item[1])))
+        except InputError as exc:  # name the argument and the item, not a bare "station"
+            raise InputError(f"inputs: {item!r}: {exc}") from None
+    if not outputs:
+        outputs = [("journal", bc.index) for bc in asm.bearings]
+    outs = []
     for item in outputs:
         item = _parse(item, ("displacement", "velocity", "journal", "sleeve"), "outputs")
         if len(item) != 2:
@@ -43,16 +56,19 @@ def _check_items(asm, inputs, outputs) -> None:
         kind, where = item
         if kind in ("displacement", "velocity"):
             try:
-                asm.station_output_matrix(where)
+                outs.append((kind, where, asm.station_output_matrix(where)))
             except InputError as exc:
                 raise InputError(f"outputs: {item!r}: {exc}") from None
-        else:
-            bcs = [bc for bc in asm.bearings if bc.index == where]
-            if not bcs:
-                raise InputError(f"outputs: {item!r}: no bearing with index {where!r} "
-                                 f"(bearings: 0..{len(asm.bearings) - 1})")
-            if kind == "sleeve" and not bcs[0].sleeve:
-                raise InputError(f"outputs: bearing {where} has no sleeve")
+            continue
+        bcs = [bc for bc in asm.bearings if bc.index == where]
+        if not bcs:
+            raise InputError(f"outputs: {item!r}: no bearing with index {where!r} "
+                             f"(bearings: 0..{len(asm.bearings) - 1})")
+        idx = [bcs[0].jx, bcs[0].jy] if kind == "journal" else list(bcs[0].sleeve)
+        if not idx:
+            raise InputError(f"outputs: bearing {where} has no sleeve")
+        outs.append((kind, where, idx))
+    return ins, outs
 
 
 @limited_blas
@@ -73,12 +89,12 @@ def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
         if not isinstance(val, (tuple, list)):
             raise InputError(f"{name}: expected a list of {name}, got {val!r}")
     inputs = (inputs,) if isinstance(inputs, str) else inputs
-    _check_items(assembled(system), inputs, outputs)  # bad items: before the solve
+    asm = assembled(system)
+    ins, outs = _checked_items(asm, inputs, outputs)  # bad items: before the solve
     lm = linearize(system, speed_hz, chamber_pressure_pa, config_ay_m, **kw)
     if lm.status not in CONVERGED:
         raise ConvergenceError(f"statespace: no equilibrium at this operating point ({lm.status}: "
                          f"{lm.equilibrium.message})")
-    asm = assembled(system)
     n = asm.n
     Minv = np.linalg.inv(lm.M)
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ lm.K, -Minv @ lm.D]])
@@ -86,60 +102,30 @@ def statespace(system: System, inputs=("chamber_pressure",), outputs=(), *,
     states = tuple(names + [f"d({s})/dt" for s in names])
 
     bcols, in_names = [], []
-    for item in inputs:
-        item = _parse(item, ("chamber_pressure", "force"), "inputs")
+    for item, what in ins:
         if item[0] == "chamber_pressure":
-            idx = [bc for bc in asm.bearings if bc.sleeve]
-            if len(item) > 1:
-                idx = [bc for bc in asm.bearings if bc.index == item[1] and bc.sleeve]
-            if not idx:
-                raise InputError(f"inputs: {item!r} needs an active bearing")
             f = np.zeros(n)
-            for bc in idx:
+            for bc in what:
                 f[list(bc.sleeve)] = lm.chamber[list(bc.sleeve)]
             bcols.append(f)
             in_names.append("chamber_pressure_pa" if len(item) == 1 else
                             f"chamber_pressure_pa[{item[1]}]")
         else:
-            if len(item) != 2:
-                raise InputError(f"inputs: expected ('force', station), got {item!r}")
-            try:
-                L = asm.station_load_matrix(item[1])
-            except InputError as exc:  # name the argument and the item, not a bare "station"
-                raise InputError(f"inputs: {item!r}: {exc}") from None
-            bcols += [L[:, 0], L[:, 1]]
+            bcols += [what[:, 0], what[:, 1]]
             in_names += [f"force_x_n[{item[1]}]", f"force_y_n[{item[1]}]"]
     B = np.vstack([np.zeros((n, len(bcols))), Minv @ np.column_stack(bcols)]) if bcols \
         else np.zeros((2 * n, 0))
 
-    if not outputs:
-        outputs = [("journal", bc.index) for bc in asm.bearings]
     crows, out_names = [], []
-    for item in outputs:
-        item = _parse(item, ("displacement", "velocity", "journal", "sleeve"), "outputs")
-        if len(item) != 2:
-            raise InputError(f"outputs: expected (kind, station or bearing), got {item!r}")
-        kind, where = item
+    for kind, where, what in outs:
         if kind in ("displacement", "velocity"):
-            try:
-                Co = asm.station_output_matrix(where)
-            except InputError as exc:
-                raise InputError(f"outputs: {item!r}: {exc}") from None
-            z = np.zeros_like(Co)
-            rows = np.hstack([Co, z]) if kind == "displacement" else np.hstack([z, Co])
+            z = np.zeros_like(what)
+            rows = np.hstack([what, z]) if kind == "displacement" else np.hstack([z, what])
             unit = "m" if kind == "displacement" else "m_s"
             crows += list(rows)
             out_names += [f"{kind}_x_{unit}[{where}]", f"{kind}_y_{unit}[{where}]"]
         else:
-            bcs = [bc for bc in asm.bearings if bc.index == where]
-            if not bcs:
-                raise InputError(f"outputs: {item!r}: no bearing with index {where!r} "
-                                 f"(bearings: 0..{len(asm.bearings) - 1})")
-            bc = bcs[0]
-            idx = [bc.jx, bc.jy] if kind == "journal" else list(bc.sleeve)
-            if not idx:
-                raise InputError(f"outputs: bearing {where} has no sleeve")
-            for j, ci in enumerate(idx):
+            for j, ci in enumerate(what):
                 row = np.zeros(2 * n)
                 row[ci] = 1.0
                 crows.append(row)
