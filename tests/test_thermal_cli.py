@@ -126,8 +126,8 @@ def test_a_failed_speed_says_why_on_the_command_line(tmp_path, capsys, system):
     """A speed whose thermal equilibrium raised (the oil law's range ends at 80 degC; the NDE
     film exceeds it at 200 Hz, not at 100 Hz; 85 degC and the DE film before the DE bearing's
     metered supply was raised to a fed 3e-4 m³/s, 2026-12-06): its --json thermal entry is its
-    status and why (it was null) and the text summary gives the reason (it said only "thermal equilibrium
-    failed")."""
+    status and why (it was null) and the text summary gives the reason (it said only "thermal
+    equilibrium failed")."""
     import dataclasses
 
     oil = dataclasses.replace(system.thermal.oil, t_max_c=80.0)

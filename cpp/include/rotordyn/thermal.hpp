@@ -17,7 +17,8 @@
 // a metered Q_f below that demand draws more hot oil, λ_eff = (Q − Q_f)/Q_r, and a film with
 // Q_f + Q_r < Q is starved: StarvedError, thermal_detail.hpp supply_mixing):
 //   T_in = T_s + λ_eff Q_r ΔT / Q_f,  T_max = T_in + ΔT,  T_eff = T_in + k ΔT
-// (k = effective_factor, 0.5: Shigley's average film temperature). The film is isoviscous at μ(T_eff).
+// (k = effective_factor, 0.5: Shigley's average film temperature). The film is isoviscous at
+// μ(T_eff).
 #pragma once
 #include <limits>
 

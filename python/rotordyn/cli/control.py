@@ -7,7 +7,8 @@ margin and the actuator limits; writes grid.csv, schedule.csv, schedule.png unde
 ``rotordyn control closed-loop MODEL --speed-hz F --chamber-pressure-pa P ...``: designs a
 feedback law (``--law pd`` tuned on the active bearing's vertical journal displacement, ``lqg``
 or ``hinf`` on a modal truncation, all measuring that journal), prints the linear closed loop
-(eigenvalues, margins), runs the nonlinear transient open and closed loop from a disturbance (or a run-up with ``--run-up-hz``),
+(eigenvalues, margins), runs the nonlinear transient open and closed loop from a disturbance
+(or a run-up with ``--run-up-hz``),
 writes summary.json, timeseries.csv and closed_loop.png under --out.
 Exit 2 on bad input (the message names the field), 1 on a failed run.
 """

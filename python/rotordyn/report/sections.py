@@ -134,8 +134,7 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
     the backward 1× crossings (:data:`SOURCE_CAMPBELL_BACKWARD`) and backward modes; a
     crossing alone carries its mode's whirl (station −1)."""
     import pandas as pd
-    cross, cross_ld = _crossings(campbell)
-    cross_wh = _crossing_whirls(campbell)
+    cross, cross_ld, cross_wh = _crossings(campbell, whirls=True)
     back, back_ld = backward_crossings(campbell)
     peaks = _peak_groups(unbalance, rtol) if unbalance is not None else []
     used: set[int] = set()
@@ -181,18 +180,15 @@ def critical_speed_table(campbell, unbalance=None, *, rtol: float = MERGE_RTOL) 
     return df
 
 
-def _crossings(campbell) -> tuple[np.ndarray, np.ndarray]:
+def _crossings(campbell, whirls: bool = False) -> tuple:
     """The forward (and planar) 1× crossings (Hz) and the crossing mode's log decrement there
-    (interpolated along the tracked mode)."""
+    (interpolated along the tracked mode); ``whirls``: also each crossing's whirl ("forward"
+    or "planar"), from the same table."""
     if campbell is None:
-        return np.empty(0), np.empty(0)
+        return (np.empty(0), np.empty(0)) + (([],) if whirls else ())
     cs = campbell.critical_speeds()
-    return cs["speed_hz"].to_numpy(dtype=float), cs["log_dec"].to_numpy(dtype=float)
-
-
-def _crossing_whirls(campbell) -> list[str]:
-    """The whirl of each crossing of :func:`_crossings` ("forward" or "planar")."""
-    return [] if campbell is None else [str(w) for w in campbell.critical_speeds()["whirl"]]
+    out = cs["speed_hz"].to_numpy(dtype=float), cs["log_dec"].to_numpy(dtype=float)
+    return out + (([str(w) for w in cs["whirl"]],) if whirls else ())
 
 
 def not_resonance_note(table) -> str:

@@ -117,10 +117,10 @@ class StabilityResult(Display):
             head += (f" (the {len(self.eigenvalues)} kept; over all "
                      f"{len(self.all_eigenvalues)} roots max Re λ = "
                      f"{self.max_real_1_per_s:.3g} 1/s)")
-        if self.pad_load_note:
-            from rotordyn.results.pad_load import light_pads
+        from rotordyn.results.pad_load import light_pads
 
-            n = len(light_pads(self.linear.equilibrium))
+        n = len(light_pads(self.linear.equilibrium)) if self.status in CONVERGED else 0
+        if n:  # the pads pad_load_note names
             head += f"; {n} tilting pad{'s' if n > 1 else ''} near zero load (pad_load_note)"
         return head + ">"
 
